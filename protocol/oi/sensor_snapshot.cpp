@@ -1,0 +1,126 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "sensor_snapshot.h"
+
+#include <bit>
+
+namespace oi {
+
+PacketValue SensorSnapshot::value(int packetId) const
+{
+    PacketValue v;
+    v.info = m_profile->packet(packetId);
+    v.present = v.info && has(packetId);
+    v.value = raw(packetId);
+    return v;
+}
+
+int SensorSnapshot::packetCount() const { return std::popcount(m_present); }
+
+void SensorSnapshot::merge(const SensorSnapshot &newer)
+{
+    for (int id = 0; id <= kMaxPacketId; ++id)
+        if (newer.has(id))
+            set(id, newer.m_values[id]);
+}
+
+std::size_t SensorSnapshot::decode(int packetOrGroupId, std::span<const std::uint8_t> data)
+{
+    const int size = m_profile->replySize(packetOrGroupId);
+    if (size < 0 || data.size() < static_cast<std::size_t>(size))
+        return 0;
+    int first = packetOrGroupId, last = packetOrGroupId;
+    if (const PacketGroup *g = m_profile->group(packetOrGroupId)) {
+        first = g->first;
+        last = g->last;
+    }
+    std::size_t at = 0;
+    for (int id = first; id <= last; ++id) {
+        const PacketInfo *p = m_profile->packet(id);
+        std::int32_t v;
+        if (p->bytes == 1) {
+            v = p->isSigned ? std::int32_t(std::int8_t(data[at])) : std::int32_t(data[at]);
+        } else {
+            const std::uint16_t u = std::uint16_t((data[at] << 8) | data[at + 1]);
+            v = p->isSigned ? std::int32_t(std::int16_t(u)) : std::int32_t(u);
+        }
+        set(id, v);
+        at += p->bytes;
+    }
+    return at;
+}
+
+bool SensorSnapshot::wheelDropCaster() const { return isCreate1() && bits(7, bit::WheelDropCaster); }
+
+bool SensorSnapshot::overcurrent(Overcurrent o) const
+{
+    std::uint8_t mask = 0;
+    switch (o) {
+    case Overcurrent::LeftWheel: mask = bit::OcLeftWheel; break;
+    case Overcurrent::RightWheel: mask = bit::OcRightWheel; break;
+    case Overcurrent::MainBrush: mask = isCreate1() ? 0 : bit::OcMainBrush; break;
+    case Overcurrent::SideBrush: mask = isCreate1() ? 0 : bit::OcSideBrush; break;
+    case Overcurrent::LowSideDriver0: mask = isCreate1() ? bit::OcLowSideDriver0 : 0; break;
+    case Overcurrent::LowSideDriver1: mask = isCreate1() ? bit::OcLowSideDriver1 : 0; break;
+    case Overcurrent::LowSideDriver2: mask = isCreate1() ? bit::OcLowSideDriver2 : 0; break;
+    }
+    return bits(14, mask);
+}
+
+int SensorSnapshot::dirtDetect() const { return isCreate1() ? 0 : raw(15); }
+
+bool SensorSnapshot::button(Button b) const
+{
+    if (isCreate1()) {
+        if (b == Button::Play)
+            return bits(18, bit::ButtonPlay);
+        if (b == Button::Advance)
+            return bits(18, bit::ButtonAdvance);
+        return false;
+    }
+    if (b == Button::Play || b == Button::Advance)
+        return false;
+    return bits(18, std::uint8_t(1u << static_cast<int>(b)));
+}
+
+std::optional<double> SensorSnapshot::batteryPercent() const
+{
+    if (!has(25) || !has(26) || raw(26) <= 0)
+        return std::nullopt;
+    return 100.0 * raw(25) / raw(26);
+}
+
+bool SensorSnapshot::chargingSource(ChargingSource s) const
+{
+    return bits(34, s == ChargingSource::HomeBase ? bit::SourceHomeBase : bit::SourceInternalCharger);
+}
+
+bool SensorSnapshot::cargoBayDigitalInput(int index) const
+{
+    return isCreate1() && index >= 0 && index < 4 && bits(32, std::uint8_t(1u << index));
+}
+
+bool SensorSnapshot::baudRateChangeAsserted() const
+{
+    // ERRATA 6: active low, high by default.
+    return isCreate1() && has(32) && !bits(32, bit::BaudRateChangePin);
+}
+
+int SensorSnapshot::cargoBayAnalog() const { return isCreate1() ? raw(33) : 0; }
+
+std::int32_t SensorSnapshot::leftEncoderCounts() const
+{
+    return raw(m_profile->id == ProfileId::Roomba500 ? 44 : 43);
+}
+
+std::int32_t SensorSnapshot::rightEncoderCounts() const
+{
+    return raw(m_profile->id == ProfileId::Roomba500 ? 43 : 44);
+}
+
+IrCharacter SensorSnapshot::ir(int packetId) const
+{
+    return decodeIrCharacter(*m_profile,
+                             std::uint8_t(has(packetId) ? m_values[packetId] : m_profile->irNone));
+}
+
+} // namespace oi

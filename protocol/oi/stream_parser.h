@@ -1,0 +1,99 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "sensor_snapshot.h"
+
+#include <array>
+#include <cstdint>
+#include <deque>
+#include <functional>
+#include <span>
+#include <vector>
+
+namespace oi {
+
+enum class FrameKind : std::uint8_t { Stream, Reply };
+
+struct ParserCounters {
+    std::uint64_t framesGood = 0;       // stream frames decoded
+    std::uint64_t repliesGood = 0;      // 142 / 149 replies decoded
+    std::uint64_t checksumFailures = 0; // candidate frames whose sum was not 0
+    std::uint64_t lengthMismatches = 0; // n-bytes impossible, or disagreeing with the packets
+    std::uint64_t bytesDiscarded = 0;   // bytes that belonged to no good frame or reply
+    friend bool operator==(const ParserCounters &, const ParserCounters &) = default;
+};
+
+// Incremental parser for what the robot sends: stream frames (opcode 148)
+// and the unframed replies to Sensors (142) and Query List (149).
+//
+// ERRATA 1: the checksum covers the header byte.
+// ERRATA 2: after a bad length or checksum, scanning resumes at the byte
+//   after the failed header, so a real frame after junk or a stray 19 is
+//   never lost.
+// ERRATA 3: replies carry no framing; their length comes from the packet
+//   table, so the caller announces each request with expectReply().
+//
+// The parser keeps a fixed buffer and allocates nothing per byte.
+class StreamParser {
+public:
+    enum class ChecksumMode : std::uint8_t {
+        IncludeHeader,       // what real robots do (ERRATA 1); the default
+        LegacyExcludeHeader, // what two of the documents' examples show
+    };
+    using SnapshotHandler = std::function<void(const SensorSnapshot &, FrameKind)>;
+
+    explicit StreamParser(const RobotProfile &profile = oi::profile(ProfileId::Create2));
+
+    void setProfile(const RobotProfile &profile);
+    const RobotProfile &robotProfile() const { return *m_profile; }
+    void setChecksumMode(ChecksumMode mode) { m_checksumMode = mode; }
+    void setSnapshotHandler(SnapshotHandler handler) { m_handler = std::move(handler); }
+
+    // The packet list the stream was started with. With it, a frame whose
+    // n-bytes or packet ids disagree is refused at once; without it, any
+    // well-formed frame is accepted. Returns false for an id the profile lacks.
+    bool setExpectedStream(std::span<const std::uint8_t> packetIds);
+    void clearExpectedStream();
+
+    // Announces `times` replies to a Sensors or Query List request for these
+    // ids. Bytes that arrive while a reply is pending are read as that reply.
+    // Returns false (and expects nothing) for an id the profile lacks.
+    bool expectReply(std::span<const std::uint8_t> packetIds, std::size_t times = 1);
+    void cancelReplies() { m_replies.clear(); }
+    std::size_t pendingReplies() const;
+
+    void feed(std::span<const std::uint8_t> bytes);
+
+    const ParserCounters &counters() const { return m_counters; }
+    // Bytes held while waiting for the rest of a frame or reply.
+    std::size_t pendingBytes() const { return m_length; }
+    // Forgets buffered bytes, pending replies and counters.
+    void reset();
+
+private:
+    struct PendingReply {
+        std::vector<std::uint8_t> ids;
+        std::size_t bytes = 0;
+        std::size_t times = 0;
+    };
+
+    std::size_t process();
+    bool decodePayload(std::span<const std::uint8_t> payload);
+    void decodeReply(const PendingReply &reply, std::span<const std::uint8_t> data);
+    std::size_t payloadSize(std::span<const std::uint8_t> packetIds) const;
+
+    static constexpr std::size_t kCapacity = 32 * 1024; // fits the largest 149 reply and a frame
+
+    const RobotProfile *m_profile;
+    ChecksumMode m_checksumMode = ChecksumMode::IncludeHeader;
+    SnapshotHandler m_handler;
+    std::vector<std::uint8_t> m_expectedIds;
+    int m_expectedLength = -1; // n-bytes of the expected stream, -1 = any
+    std::deque<PendingReply> m_replies;
+    ParserCounters m_counters;
+    SensorSnapshot m_scratch;
+    std::size_t m_length = 0;
+    std::array<std::uint8_t, kCapacity> m_buffer{};
+};
+
+} // namespace oi

@@ -1,0 +1,401 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "command_catalog.h"
+
+#include "script_assembler.h"
+#include "seven_segment_font.h"
+
+#include <charconv>
+#include <climits>
+
+namespace oi {
+namespace {
+
+using C = Command;
+
+// In the order of the Command enum, so commandSpec() can index it.
+constexpr CommandSpec kSpecs[] = {
+    {C::Reset, 7, "reset", "Reset", "", ""},
+    {C::Start, 128, "start", "Start", "", ""},
+    {C::Baud, 129, "baud", "Baud", "b", "CODE (0..11) | BPS"},
+    {C::Control, 130, "control", "Control", "", ""},
+    {C::Safe, 131, "safe", "Safe", "", ""},
+    {C::Full, 132, "full", "Full", "", ""},
+    {C::Power, 133, "power", "Power", "", ""},
+    {C::Spot, 134, "spot", "Spot", "", ""},
+    {C::Clean, 135, "clean", "Clean", "", ""},
+    {C::Cover, 135, "cover", "Cover", "", ""},
+    {C::Max, 136, "max", "Max", "", ""},
+    {C::Demo, 136, "demo", "Demo", "c", "DEMO (-1..9)"},
+    {C::Drive, 137, "drive", "Drive", "ww", "VELOCITY RADIUS|straight|cw|ccw"},
+    {C::Motors, 138, "motors", "Motors", "b", "MOTOR-BITS"},
+    {C::LowSideDrivers, 138, "low-side-drivers", "Low Side Drivers", "b", "DRIVER-BITS"},
+    {C::Leds, 139, "leds", "LEDs", "bbb", "LED-BITS POWER-COLOR POWER-INTENSITY"},
+    {C::Song, 140, "song", "Song", "*", "SLOT NOTE:DURATION... | SLOT LENGTH NOTE DURATION..."},
+    {C::Play, 141, "play", "Play", "b", "SLOT"},
+    {C::Sensors, 142, "sensors", "Sensors", "b", "PACKET-ID"},
+    {C::SeekDock, 143, "seek-dock", "Seek Dock", "", ""},
+    {C::CoverAndDock, 143, "cover-and-dock", "Cover and Dock", "", ""},
+    {C::PwmMotors, 144, "pwm-motors", "PWM Motors", "ccb", "MAIN-BRUSH SIDE-BRUSH VACUUM"},
+    {C::PwmLowSideDrivers, 144, "pwm-low-side-drivers", "PWM Low Side Drivers", "bbb",
+     "DRIVER-2 DRIVER-1 DRIVER-0"},
+    {C::DriveDirect, 145, "drive-direct", "Drive Direct", "ww", "RIGHT-VELOCITY LEFT-VELOCITY"},
+    {C::DrivePwm, 146, "drive-pwm", "Drive PWM", "ww", "RIGHT-PWM LEFT-PWM"},
+    {C::DigitalOutputs, 147, "digital-outputs", "Digital Outputs", "b", "OUTPUT-BITS"},
+    {C::Stream, 148, "stream", "Stream", "*", "COUNT PACKET-ID..."},
+    {C::QueryList, 149, "query-list", "Query List", "*", "COUNT PACKET-ID..."},
+    {C::PauseResumeStream, 150, "pause-resume-stream", "Pause/Resume Stream", "b", "0|1"},
+    {C::SendIr, 151, "send-ir", "Send IR", "b", "BYTE"},
+    {C::Script, 152, "script", "Script", "*", "\"COMMAND ARGS; ...\" | LENGTH BYTE..."},
+    {C::PlayScript, 153, "play-script", "Play Script", "", ""},
+    {C::ShowScript, 154, "show-script", "Show Script", "", ""},
+    {C::WaitTime, 155, "wait-time", "Wait Time", "b", "TENTHS"},
+    {C::WaitDistance, 156, "wait-distance", "Wait Distance", "w", "MM"},
+    {C::WaitAngle, 157, "wait-angle", "Wait Angle", "w", "DEGREES"},
+    {C::WaitEvent, 158, "wait-event", "Wait Event", "c", "EVENT (1..22, -1..-22, or a name)"},
+    {C::SchedulingLeds, 162, "scheduling-leds", "Scheduling LEDs", "bb",
+     "WEEKDAY-BITS SCHEDULING-BITS"},
+    {C::DigitLedsRaw, 163, "digit-leds-raw", "Digit LEDs Raw", "bbbb", "DIGIT-3 DIGIT-2 DIGIT-1 DIGIT-0"},
+    {C::DigitLedsAscii, 164, "digit-leds-ascii", "Digit LEDs ASCII", "bbbb",
+     "TEXT | CODE-3 CODE-2 CODE-1 CODE-0"},
+    {C::Buttons, 165, "buttons", "Buttons", "b", "BUTTON-BITS"},
+    {C::Schedule, 167, "schedule", "Schedule", "bbbbbbbbbbbbbbb",
+     "off | \"DAY HH:MM, ...\" | DAYS SUN-HOUR SUN-MINUTE ... SAT-MINUTE"},
+    {C::SetDayTime, 168, "set-day-time", "Set Day/Time", "bbb", "DAY HOUR MINUTE | DAY HH:MM"},
+    {C::Stop, 173, "stop", "Stop", "", ""},
+};
+static_assert(std::size(kSpecs) == kCommandCount);
+
+std::string joined(std::span<const std::string> args, char separator = ' ')
+{
+    std::string out;
+    for (const std::string &a : args) {
+        if (!out.empty())
+            out += separator;
+        out += a;
+    }
+    return out;
+}
+
+OiError wrongCount(const CommandSpec &spec, std::size_t got)
+{
+    std::string usage = spec.usage.empty() ? "no arguments" : std::string(spec.usage);
+    return OiError::invalid(std::string(spec.name), "takes " + usage + "; got "
+                                                        + std::to_string(got) + " argument"
+                                                        + (got == 1 ? "" : "s"));
+}
+
+// Parses every argument as a number that fits an int.
+Result<std::vector<int>> numbers(const CommandSpec &spec, std::span<const std::string> args)
+{
+    std::vector<int> out;
+    for (std::size_t i = 0; i < args.size(); ++i) {
+        long long v = 0;
+        if (!parseInteger(args[i], v) || v < INT_MIN || v > INT_MAX)
+            return OiError::invalid(std::string(spec.name) + " argument " + std::to_string(i + 1),
+                                    "'" + args[i] + "' is not a number");
+        out.push_back(static_cast<int>(v));
+    }
+    return out;
+}
+
+// The fixed-layout commands: exactly one number per layout character.
+Result<std::vector<int>> fixedNumbers(const CommandSpec &spec, std::span<const std::string> args)
+{
+    if (args.size() != spec.layout.size())
+        return wrongCount(spec, args.size());
+    return numbers(spec, args);
+}
+
+// COUNT ID... as the document orders stream and query-list bytes.
+Result<std::vector<int>> countedIds(const CommandSpec &spec, std::span<const std::string> args)
+{
+    auto values = numbers(spec, args);
+    if (!values)
+        return values;
+    if (values->empty())
+        return wrongCount(spec, 0);
+    const int count = values->front();
+    if (count < 0 || static_cast<std::size_t>(count) != values->size() - 1) {
+        OiError e = OiError::invalid("number of packets",
+                                     std::to_string(count) + " does not match the "
+                                         + std::to_string(values->size() - 1)
+                                         + " packet ids that follow");
+        e.value = count;
+        return e;
+    }
+    return std::vector<int>(values->begin() + 1, values->end());
+}
+
+EncodeResult encodeSong(const CommandEncoder &encoder, const CommandSpec &spec,
+                        std::span<const std::string> args)
+{
+    if (args.size() < 2)
+        return wrongCount(spec, args.size());
+    long long slot = 0;
+    if (!parseInteger(args[0], slot) || slot < INT_MIN || slot > INT_MAX)
+        return OiError::invalid("song number", "'" + args[0] + "' is not a number");
+    const auto rest = args.subspan(1);
+    auto plain = numbers(spec, rest);
+    if (!plain) {
+        auto song = parseSong(joined(rest));
+        if (!song)
+            return song.error();
+        return encoder.song(static_cast<int>(slot), *song);
+    }
+    // SLOT LENGTH NOTE DURATION ..., in the document's byte order.
+    const std::vector<int> &v = *plain;
+    const std::size_t notes = (v.size() - 1) / 2;
+    if (v.size() % 2 == 0 || v[0] < 0 || static_cast<std::size_t>(v[0]) != notes) {
+        OiError e = OiError::invalid("song length", std::to_string(v[0]) + " does not match the "
+                                                        + std::to_string(v.size() - 1)
+                                                        + " note bytes that follow");
+        e.value = v[0];
+        return e;
+    }
+    Song song;
+    for (std::size_t i = 0; i < notes; ++i) {
+        const int note = v[1 + 2 * i], duration = v[2 + 2 * i];
+        const std::string which = "note " + std::to_string(i + 1);
+        if (note < 0 || note > 255)
+            return OiError::outOfRange(which, note, 0, 255);
+        if (duration < 0 || duration > 255)
+            return OiError::outOfRange(which + " duration", duration, 0, 255);
+        song.notes.push_back({static_cast<std::uint8_t>(note), static_cast<std::uint8_t>(duration)});
+    }
+    return encoder.song(static_cast<int>(slot), song);
+}
+
+EncodeResult encodeSchedule(const CommandEncoder &encoder, const CommandSpec &spec,
+                            std::span<const std::string> args)
+{
+    if (args.size() == spec.layout.size()) {
+        auto v = numbers(spec, args);
+        if (!v)
+            return v.error();
+        return encoder.schedule(v->front(), std::span<const int>(*v).subspan(1));
+    }
+    auto schedule = parseSchedule(joined(args));
+    if (!schedule)
+        return schedule.error();
+    return encoder.schedule(*schedule);
+}
+
+EncodeResult encodeSetDayTime(const CommandEncoder &encoder, const CommandSpec &spec,
+                              std::span<const std::string> args)
+{
+    if (args.size() == 2) {
+        const auto day = parseWeekday(args[0]);
+        if (!day)
+            return OiError::invalid("day", "'" + args[0] + "' is not a day of the week");
+        auto time = parseClockTime(args[1]);
+        if (!time)
+            return time.error();
+        return encoder.setDayTime(static_cast<int>(*day), time->hour, time->minute);
+    }
+    if (args.size() == 3) {
+        std::vector<std::string> copy(args.begin(), args.end());
+        if (const auto day = parseWeekday(copy[0]))
+            copy[0] = std::to_string(static_cast<int>(*day));
+        auto v = fixedNumbers(spec, copy);
+        if (!v)
+            return v.error();
+        return encoder.setDayTime((*v)[0], (*v)[1], (*v)[2]);
+    }
+    return wrongCount(spec, args.size());
+}
+
+EncodeResult encodeScript(const CommandEncoder &encoder, const CommandSpec &spec,
+                          std::span<const std::string> args)
+{
+    if (args.empty())
+        return wrongCount(spec, 0);
+    auto v = numbers(spec, args);
+    if (!v) {
+        auto body = assembleScript(encoder.robotProfile(), joined(args));
+        if (!body)
+            return body.error();
+        return encoder.script(*body);
+    }
+    // LENGTH BYTE ..., with the length counting bytes (ERRATA 11).
+    const int length = v->front();
+    if (length < 0 || static_cast<std::size_t>(length) != v->size() - 1) {
+        OiError e = OiError::invalid("script length", std::to_string(length)
+                                                          + " does not match the "
+                                                          + std::to_string(v->size() - 1)
+                                                          + " bytes that follow");
+        e.value = length;
+        return e;
+    }
+    Bytes body;
+    for (std::size_t i = 1; i < v->size(); ++i) {
+        if ((*v)[i] < 0 || (*v)[i] > 255)
+            return OiError::outOfRange("script byte " + std::to_string(i), (*v)[i], 0, 255);
+        body.push_back(static_cast<std::uint8_t>((*v)[i]));
+    }
+    return encoder.script(body);
+}
+
+} // namespace
+
+bool parseInteger(std::string_view text, long long &out)
+{
+    bool negative = false;
+    if (!text.empty() && (text.front() == '-' || text.front() == '+')) {
+        negative = text.front() == '-';
+        text.remove_prefix(1);
+    }
+    int base = 10;
+    if (text.size() > 2 && text[0] == '0' && (text[1] == 'x' || text[1] == 'X')) {
+        base = 16;
+        text.remove_prefix(2);
+    }
+    if (text.empty() || text.front() == '-' || text.front() == '+')
+        return false;
+    unsigned long long magnitude = 0;
+    const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), magnitude, base);
+    if (ec != std::errc() || end != text.data() + text.size() || magnitude > LLONG_MAX)
+        return false;
+    out = negative ? -static_cast<long long>(magnitude) : static_cast<long long>(magnitude);
+    return true;
+}
+
+std::span<const CommandSpec> allCommandSpecs() { return kSpecs; }
+
+const CommandSpec &commandSpec(Command command) { return kSpecs[static_cast<int>(command)]; }
+
+const CommandSpec *commandSpecByName(std::string_view name)
+{
+    for (const CommandSpec &spec : kSpecs)
+        if (spec.name == name)
+            return &spec;
+    return nullptr;
+}
+
+const CommandSpec *commandSpecForOpcode(const RobotProfile &profile, std::uint8_t opcode)
+{
+    for (const CommandSpec &spec : kSpecs)
+        if (spec.opcode == opcode && profile.has(spec.command))
+            return &spec;
+    return nullptr;
+}
+
+EncodeResult encodeCommand(const CommandEncoder &e, std::string_view name,
+                           std::span<const std::string> args)
+{
+    const CommandSpec *found = commandSpecByName(name);
+    if (!found)
+        return OiError::invalid("command", "'" + std::string(name) + "' is not a command");
+    const CommandSpec &spec = *found;
+
+    // Friendly forms first; each falls back to the document's numbers.
+    std::vector<std::string> a(args.begin(), args.end());
+    switch (spec.command) {
+    case C::Song:
+        return encodeSong(e, spec, a);
+    case C::Schedule:
+        return encodeSchedule(e, spec, a);
+    case C::SetDayTime:
+        return encodeSetDayTime(e, spec, a);
+    case C::Script:
+        return encodeScript(e, spec, a);
+    case C::Stream:
+    case C::QueryList: {
+        auto ids = countedIds(spec, a);
+        if (!ids)
+            return ids.error();
+        return spec.command == C::Stream ? e.stream(*ids) : e.queryList(*ids);
+    }
+    case C::DigitLedsAscii:
+        if (a.size() == 1) {
+            const auto codes = digitAsciiCodes(a[0]);
+            if (a[0].size() > 4)
+                return OiError::invalid("text", "'" + a[0] + "' is longer than the 4 digits");
+            return e.digitLedsAscii(codes[0], codes[1], codes[2], codes[3]);
+        }
+        break;
+    case C::WaitEvent:
+        if (a.size() == 1) {
+            if (const auto event = parseWaitEvent(a[0]))
+                a[0] = std::to_string(*event);
+            else if (long long n = 0; !parseInteger(a[0], n))
+                return OiError::invalid("event", "'" + a[0] + "' is not a wait event");
+        }
+        break;
+    case C::Drive:
+        if (a.size() == 2) {
+            if (a[1] == "straight")
+                a[1] = std::to_string(kRadiusStraight);
+            else if (a[1] == "cw")
+                a[1] = std::to_string(kRadiusTurnInPlaceClockwise);
+            else if (a[1] == "ccw")
+                a[1] = std::to_string(kRadiusTurnInPlaceCounterClockwise);
+        }
+        break;
+    case C::Baud:
+        if (long long rate = 0; a.size() == 1 && parseInteger(a[0], rate) && rate > 11) {
+            const int code = baudCodeFor(static_cast<int>(rate));
+            if (code < 0)
+                return OiError::invalid("baud", a[0] + " is not a rate the robot offers "
+                                                       "(300 .. 115200, or a code 0..11)");
+            a[0] = std::to_string(code);
+        }
+        break;
+    default:
+        break;
+    }
+
+    auto r = fixedNumbers(spec, a);
+    if (!r)
+        return r.error();
+    const std::vector<int> &v = *r;
+    switch (spec.command) {
+    case C::Reset: return e.reset();
+    case C::Start: return e.start();
+    case C::Baud: return e.baud(v[0]);
+    case C::Control: return e.control();
+    case C::Safe: return e.safe();
+    case C::Full: return e.full();
+    case C::Power: return e.power();
+    case C::Spot: return e.spot();
+    case C::Clean: return e.clean();
+    case C::Cover: return e.cover();
+    case C::Max: return e.max();
+    case C::Demo: return e.demo(v[0]);
+    case C::Drive: return e.drive(v[0], v[1]);
+    case C::Motors: return e.motors(v[0]);
+    case C::LowSideDrivers: return e.lowSideDrivers(v[0]);
+    case C::Leds: return e.leds(v[0], v[1], v[2]);
+    case C::Play: return e.play(v[0]);
+    case C::Sensors: return e.sensors(v[0]);
+    case C::SeekDock: return e.seekDock();
+    case C::CoverAndDock: return e.coverAndDock();
+    case C::PwmMotors: return e.pwmMotors(v[0], v[1], v[2]);
+    case C::PwmLowSideDrivers: return e.pwmLowSideDrivers(v[0], v[1], v[2]);
+    case C::DriveDirect: return e.driveDirect(v[0], v[1]);
+    case C::DrivePwm: return e.drivePwm(v[0], v[1]);
+    case C::DigitalOutputs: return e.digitalOutputs(v[0]);
+    case C::PauseResumeStream: return e.pauseResumeStream(v[0]);
+    case C::SendIr: return e.sendIr(v[0]);
+    case C::PlayScript: return e.playScript();
+    case C::ShowScript: return e.showScript();
+    case C::WaitTime: return e.waitTime(v[0]);
+    case C::WaitDistance: return e.waitDistance(v[0]);
+    case C::WaitAngle: return e.waitAngle(v[0]);
+    case C::WaitEvent: return e.waitEvent(v[0]);
+    case C::SchedulingLeds: return e.schedulingLeds(v[0], v[1]);
+    case C::DigitLedsRaw: return e.digitLedsRaw(v[0], v[1], v[2], v[3]);
+    case C::DigitLedsAscii: return e.digitLedsAscii(v[0], v[1], v[2], v[3]);
+    case C::Buttons: return e.buttons(v[0]);
+    case C::Stop: return e.stop();
+    case C::Song:
+    case C::Schedule:
+    case C::SetDayTime:
+    case C::Script:
+    case C::Stream:
+    case C::QueryList:
+        break; // handled above
+    }
+    return OiError::invalid(std::string(spec.name), "has no encoder");
+}
+
+} // namespace oi

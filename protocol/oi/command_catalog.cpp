@@ -286,6 +286,8 @@ EncodeResult encodeCommand(const CommandEncoder &e, std::string_view name,
     if (!found)
         return OiError::invalid("command", "'" + std::string(name) + "' is not a command");
     const CommandSpec &spec = *found;
+    if (auto refused = e.refuse(spec.command))
+        return *refused;
 
     // Friendly forms first; each falls back to the document's numbers.
     std::vector<std::string> a(args.begin(), args.end());

@@ -517,4 +517,21 @@ EncodeResult CommandEncoder::waitEvent(int event) const
     return withOpcode(Command::WaitEvent, {event}); // two's complement for the inverse
 }
 
+Bytes CommandEncoder::stopMotion() const
+{
+    Bytes out = *drive(0, 0);
+    const EncodeResult motorsOff = m_profile->has(Command::Motors) ? motors(0) : lowSideDrivers(0);
+    out.insert(out.end(), motorsOff->begin(), motorsOff->end());
+    return out;
+}
+
+Bytes CommandEncoder::shutdownSequence() const
+{
+    Bytes out = *pauseResumeStream(0);
+    const Bytes stop = stopMotion();
+    out.insert(out.end(), stop.begin(), stop.end());
+    out.push_back(*start()->begin());
+    return out;
+}
+
 } // namespace oi

@@ -83,8 +83,17 @@ public:
     EncodeResult waitAngle(int degrees) const;                      // 157
     EncodeResult waitEvent(int event) const; // 158: 1..22 or -1..-22 for "not" (ERRATA 12)
 
-private:
+    // DESIGN "Stop": Drive 0,0 and every motor (Roomba) or low side driver
+    // (Create) off.
+    Bytes stopMotion() const;
+    // ERRATA 17: what to send when finished: pause the stream, stop motion,
+    // and Start, which leaves the robot in Passive mode to save the battery.
+    Bytes shutdownSequence() const;
+
+    // Why the profile lacks this command, or nothing if it has it.
     std::optional<OiError> refuse(Command command) const;
+
+private:
     EncodeResult simple(Command command) const;
     bool isValidSensorList(std::span<const int> ids, OiError &error) const;
 

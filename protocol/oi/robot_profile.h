@@ -63,6 +63,8 @@ public:
     int songSlots;       // slots 0..songSlots-1
     std::uint8_t irNone; // the IR character value meaning "nothing received"
     int maxStreamPackets;
+    // ERRATA 17: in Passive mode the robot sleeps after this long without activity.
+    static constexpr int kPassiveSleepSeconds = 5 * 60;
 
     bool has(Command c) const { return (m_commands >> static_cast<int>(c)) & 1u; }
 

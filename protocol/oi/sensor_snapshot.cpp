@@ -33,9 +33,18 @@ std::size_t SensorSnapshot::decode(int packetOrGroupId, std::span<const std::uin
         first = g->first;
         last = g->last;
     }
+    // The hot path of the stream parser. The tables list packets in id order,
+    // so the entry after one packet is normally the next id: look up once and
+    // step, falling back to a lookup where the order breaks. The presence bits
+    // are collected locally so they are not reloaded and stored per packet.
+    const std::span<const PacketInfo> table = m_profile->packets();
+    const PacketInfo *const end = table.data() + table.size();
+    const PacketInfo *p = m_profile->packet(first);
+    std::uint64_t present = 0;
     std::size_t at = 0;
-    for (int id = first; id <= last; ++id) {
-        const PacketInfo *p = m_profile->packet(id);
+    for (int id = first; id <= last; ++id, ++p) {
+        if (p == end || p->id != id)
+            p = m_profile->packet(id);
         std::int32_t v;
         if (p->bytes == 1) {
             v = p->isSigned ? std::int32_t(std::int8_t(data[at])) : std::int32_t(data[at]);
@@ -43,9 +52,11 @@ std::size_t SensorSnapshot::decode(int packetOrGroupId, std::span<const std::uin
             const std::uint16_t u = std::uint16_t((data[at] << 8) | data[at + 1]);
             v = p->isSigned ? std::int32_t(std::int16_t(u)) : std::int32_t(u);
         }
-        set(id, v);
+        m_values[id] = v;
+        present |= std::uint64_t{1} << id;
         at += p->bytes;
     }
+    m_present |= present;
     return at;
 }
 

@@ -51,7 +51,9 @@ public:
 
     // The packet list the stream was started with. With it, a frame whose
     // n-bytes or packet ids disagree is refused at once; without it, any
-    // well-formed frame is accepted. Returns false for an id the profile lacks.
+    // well-formed frame is accepted, and a stray 19 holds the frames after it
+    // until its claimed n-bytes have arrived (they are delayed, not lost).
+    // Returns false for an id the profile lacks.
     bool setExpectedStream(std::span<const std::uint8_t> packetIds);
     void clearExpectedStream();
 

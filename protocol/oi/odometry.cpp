@@ -1,0 +1,80 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "odometry.h"
+
+#include <cmath>
+
+namespace oi {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// Into (-pi, pi]: remainder() gives [-pi, pi], and -pi is the same heading as pi.
+double normalizedAngle(double rad)
+{
+    double r = std::remainder(rad, 2 * kPi);
+    if (r <= -kPi)
+        r += 2 * kPi;
+    return r;
+}
+
+} // namespace
+
+void Odometry::reset(Pose start)
+{
+    m_pose = start;
+    m_pose.thetaRad = normalizedAngle(start.thetaRad);
+    m_reference.reset();
+}
+
+void Odometry::setCorrections(FirmwareCorrections corrections)
+{
+    m_corrections = corrections;
+}
+
+int Odometry::encoderDelta(std::int32_t previous, std::int32_t current)
+{
+    // Modulo 65536 read as int16: 65530 -> 5 is +11 (unsigned), 32767 -> -32768
+    // is +1 (signed). Unsigned arithmetic, so no input can overflow.
+    const auto diff = static_cast<std::uint16_t>(static_cast<std::uint32_t>(current)
+                                                 - static_cast<std::uint32_t>(previous));
+    return static_cast<std::int16_t>(diff);
+}
+
+void Odometry::update(const SensorSnapshot &snapshot)
+{
+    const ProfileId profile = snapshot.robotProfile().id;
+    if (profile != ProfileId::Create1 && snapshot.hasEncoders()) {
+        const std::int32_t left = snapshot.leftEncoderCounts();
+        const std::int32_t right = snapshot.rightEncoderCounts();
+        // Counts of another profile mean another robot (or wheel order): re-anchor.
+        if (m_reference && m_reference->profile == profile) {
+            const double leftMm = encoderDelta(m_reference->left, left) * kMmPerEncoderCount;
+            const double rightMm = encoderDelta(m_reference->right, right) * kMmPerEncoderCount;
+            advance((leftMm + rightMm) / 2, (rightMm - leftMm) / kWheelBaseMm);
+        }
+        m_reference = EncoderReference{profile, left, right};
+        return;
+    }
+
+    if (!snapshot.has(19) && !snapshot.has(20))
+        return;
+    // Measure each stretch with one source only: the next encoder frame
+    // re-anchors instead of counting again what 19/20 just reported.
+    m_reference.reset();
+    const double turnDegrees = m_corrections.correctedAngleDegrees(snapshot.angleDegrees());
+    advance(snapshot.distanceMm(), turnDegrees * kPi / 180.0);
+}
+
+void Odometry::advance(double distanceMm, double turnRad)
+{
+    // Midpoint rule: exact for straight lines and turns in place; on an arc it
+    // moves the arc length along the chord, close enough at stream rates.
+    const double heading = m_pose.thetaRad + turnRad / 2;
+    m_pose.xMm += distanceMm * std::cos(heading);
+    m_pose.yMm += distanceMm * std::sin(heading);
+    m_pose.thetaRad = normalizedAngle(m_pose.thetaRad + turnRad);
+    m_pose.travelledMm += distanceMm;
+}
+
+} // namespace oi

@@ -1,0 +1,64 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "firmware_banner.h"
+#include "robot_profile.h"
+#include "sensor_snapshot.h"
+
+#include <cstdint>
+#include <optional>
+
+namespace oi {
+
+struct Pose {
+    double xMm = 0;       // x points forward at the start
+    double yMm = 0;       // y points left at the start
+    double thetaRad = 0;  // counter-clockwise positive, in (-pi, pi]
+    double travelledMm = 0; // signed path length: reversing subtracts
+};
+
+// ERRATA 4.
+inline constexpr double kWheelBaseMm = 235.0;
+inline constexpr double kMmPerEncoderCount = 3.14159265358979323846 * 72.0 / 508.8;
+
+// Dead reckoning for a differential-drive robot from successive sensor frames.
+// Feed each decoded frame once: distance (19) and angle (20) are increments
+// since the last request, so a merged snapshot that repeats them would count
+// the same motion twice.
+class Odometry {
+public:
+    // Starts again from `start`; the next frame with encoders only sets the
+    // reference counts.
+    void reset(Pose start = {});
+    // Applied to the distance/angle fallback only; encoder counts are right on
+    // every firmware.
+    void setCorrections(FirmwareCorrections corrections);
+    const FirmwareCorrections &corrections() const { return m_corrections; }
+
+    // Uses encoder counts (43/44, left/right by profile) when present; the
+    // first frame with encoders only sets the reference. Otherwise falls back
+    // to distance (19) and angle (20). The Create 1 has no encoders and always
+    // falls back. A frame with none of these packets changes nothing.
+    void update(const SensorSnapshot &snapshot);
+    const Pose &pose() const { return m_pose; }
+
+    // Counts moved from `previous` to `current`, across the 16-bit rollover in
+    // either direction, for both the unsigned (Roomba 500) and the signed
+    // (Create 2) encoder packets.
+    static int encoderDelta(std::int32_t previous, std::int32_t current);
+
+private:
+    struct EncoderReference {
+        ProfileId profile;
+        std::int32_t left;
+        std::int32_t right;
+    };
+
+    void advance(double distanceMm, double turnRad);
+
+    Pose m_pose;
+    FirmwareCorrections m_corrections;
+    std::optional<EncoderReference> m_reference;
+};
+
+} // namespace oi

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "schedule.h"
+#include "text_tokens.h"
 
 #include <vector>
 
@@ -57,31 +58,7 @@ int smallNumber(std::string_view text, std::size_t maxDigits)
 
 // '=' joins a day to its time ("wed=15:00"); treating it as a separator lets
 // "wed = 15:00" and "wed 15:00" read the same.
-bool isScheduleSeparator(char c)
-{
-    return isSpace(c) || c == ',' || c == '=';
-}
-
-std::vector<std::string_view> splitSchedule(std::string_view text)
-{
-    std::vector<std::string_view> tokens;
-    std::size_t i = 0;
-    while (i < text.size()) {
-        while (i < text.size() && isScheduleSeparator(text[i]))
-            ++i;
-        const std::size_t start = i;
-        while (i < text.size() && !isScheduleSeparator(text[i]))
-            ++i;
-        if (i > start)
-            tokens.push_back(text.substr(start, i - start));
-    }
-    return tokens;
-}
-
-std::string quoted(std::string_view text)
-{
-    return "\"" + std::string(text) + "\"";
-}
+constexpr std::string_view kScheduleSeparators = " \t\r\n,=";
 
 std::size_t dayIndex(Weekday day)
 {
@@ -169,7 +146,7 @@ Result<CleaningSchedule> parseSchedule(std::string_view text)
     if (equalsIgnoringCase(text, "off"))
         return CleaningSchedule{};
 
-    const std::vector<std::string_view> tokens = splitSchedule(text);
+    const std::vector<std::string_view> tokens = splitTokens(text, kScheduleSeparators);
     CleaningSchedule schedule;
     for (std::size_t i = 0; i < tokens.size(); i += 2) {
         const std::optional<Weekday> day = parseWeekday(tokens[i]);

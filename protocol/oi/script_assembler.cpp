@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "script_assembler.h"
+#include "text_tokens.h"
 
 #include "command_catalog.h"
 #include "song.h"
@@ -8,23 +9,6 @@
 
 namespace oi {
 namespace {
-
-std::vector<std::string> words(std::string_view statement)
-{
-    std::vector<std::string> out;
-    std::size_t i = 0;
-    while (i < statement.size()) {
-        while (i < statement.size() && (statement[i] == ' ' || statement[i] == '\t' || statement[i] == '\r'))
-            ++i;
-        std::size_t end = i;
-        while (end < statement.size() && statement[end] != ' ' && statement[end] != '\t' && statement[end] != '\r')
-            ++end;
-        if (end > i)
-            out.emplace_back(statement.substr(i, end - i));
-        i = end;
-    }
-    return out;
-}
 
 int signed8(std::uint8_t b) { return static_cast<std::int8_t>(b); }
 int signed16(std::uint8_t hi, std::uint8_t lo) { return static_cast<std::int16_t>((hi << 8) | lo); }
@@ -55,30 +39,28 @@ Result<Bytes> assembleScript(const RobotProfile &profile, std::string_view text)
     const CommandEncoder encoder(profile);
     Bytes body;
     int statement = 0;
-    std::size_t start = 0;
-    while (start <= text.size()) {
-        std::size_t end = text.find_first_of(";\n", start);
-        if (end == std::string_view::npos)
-            end = text.size();
-        std::string_view line = text.substr(start, end - start);
-        start = end + 1;
-        if (const auto hash = line.find('#'); hash != std::string_view::npos)
-            line = line.substr(0, hash);
-        const std::vector<std::string> w = words(line);
-        if (w.empty())
-            continue;
-        ++statement;
-        const std::string where = "statement " + std::to_string(statement) + " (" + w[0] + ")";
-        if (w[0] == "script")
-            return OiError::invalid(where, "a script cannot define another script");
-        EncodeResult bytes = encodeCommand(encoder, w[0], std::span(w).subspan(1));
-        if (!bytes) {
-            OiError e = bytes.error();
-            e.message = e.describe();
-            e.field = where;
-            return e;
+    // A comment runs from '#' to the end of its line, ';' included.
+    for (std::string_view line : splitTokens(text, "\n")) {
+        line = line.substr(0, line.find('#'));
+        for (std::string_view command : splitTokens(line, ";")) {
+            std::vector<std::string> w;
+            for (std::string_view word : splitTokens(command, kWhitespace))
+                w.emplace_back(word);
+            if (w.empty())
+                continue;
+            ++statement;
+            const std::string where = "statement " + std::to_string(statement) + " (" + w[0] + ")";
+            if (w[0] == "script")
+                return OiError::invalid(where, "a script cannot define another script");
+            EncodeResult bytes = encodeCommand(encoder, w[0], std::span(w).subspan(1));
+            if (!bytes) {
+                OiError e = bytes.error();
+                e.message = e.describe();
+                e.field = where;
+                return e;
+            }
+            body.insert(body.end(), bytes->begin(), bytes->end());
         }
-        body.insert(body.end(), bytes->begin(), bytes->end());
     }
     if (statement == 0)
         return OiError::invalid("script", "has no commands");

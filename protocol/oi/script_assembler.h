@@ -12,7 +12,8 @@ namespace oi {
 
 // Create 1 scripts as readable text and back. The text is one command a
 // statement, named and argued as on the roomba-ctl command line, statements
-// separated by ';' or new lines, '#' starting a comment:
+// separated by ';' or new lines, '#' at the start of a word starting a comment
+// (inside a word it is a sharp: "song 0 C#4:32"):
 //
 //   drive 300 straight; wait-distance 400; drive 0 0
 //

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "song.h"
+#include "text_tokens.h"
 
 #include <array>
 #include <charconv>
@@ -44,32 +45,6 @@ bool allDigits(std::string_view text)
             return false;
     }
     return true;
-}
-
-bool isSeparator(char c)
-{
-    return c == ' ' || c == ',' || c == '\t' || c == '\n' || c == '\r';
-}
-
-std::vector<std::string_view> splitNotes(std::string_view text)
-{
-    std::vector<std::string_view> tokens;
-    std::size_t i = 0;
-    while (i < text.size()) {
-        while (i < text.size() && isSeparator(text[i]))
-            ++i;
-        const std::size_t start = i;
-        while (i < text.size() && !isSeparator(text[i]))
-            ++i;
-        if (i > start)
-            tokens.push_back(text.substr(start, i - start));
-    }
-    return tokens;
-}
-
-std::string quoted(std::string_view text)
-{
-    return "\"" + std::string(text) + "\"";
 }
 
 } // namespace
@@ -152,7 +127,7 @@ double noteFrequencyHz(int midi)
 
 Result<Song> parseSong(std::string_view text)
 {
-    const std::vector<std::string_view> tokens = splitNotes(text);
+    const std::vector<std::string_view> tokens = splitTokens(text, " ,\t\n\r");
     if (tokens.empty())
         return OiError::invalid("song", "is empty; write notes as NOTE:DURATION, e.g. \"C4:32 D4:16\"");
     if (tokens.size() > static_cast<std::size_t>(kMaxSongNotes))

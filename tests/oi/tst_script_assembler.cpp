@@ -56,7 +56,7 @@ private slots:
     void commentsAndLines()
     {
         const auto r = assembleScript(profile(ProfileId::Create1),
-                                      "# back up a little\n"
+                                      "# back up a little; safe\n"
                                       "drive -100 straight   # slowly\n"
                                       "\n"
                                       "wait-distance -50;;\n"

@@ -10,6 +10,16 @@
 namespace oi {
 namespace {
 
+// '#' starts a comment only at the start of a word: in "C#4" it is a sharp.
+std::string_view withoutComment(std::string_view line)
+{
+    for (std::size_t i = 0; i < line.size(); ++i)
+        if (line[i] == '#' && (i == 0 || kWhitespace.find(line[i - 1]) != std::string_view::npos
+                               || line[i - 1] == ';'))
+            return line.substr(0, i);
+    return line;
+}
+
 int signed8(std::uint8_t b) { return static_cast<std::int8_t>(b); }
 int signed16(std::uint8_t hi, std::uint8_t lo) { return static_cast<std::int16_t>((hi << 8) | lo); }
 
@@ -39,9 +49,9 @@ Result<Bytes> assembleScript(const RobotProfile &profile, std::string_view text)
     const CommandEncoder encoder(profile);
     Bytes body;
     int statement = 0;
-    // A comment runs from '#' to the end of its line, ';' included.
+    // A comment runs to the end of its line, ';' included.
     for (std::string_view line : splitTokens(text, "\n")) {
-        line = line.substr(0, line.find('#'));
+        line = withoutComment(line);
         for (std::string_view command : splitTokens(line, ";")) {
             std::vector<std::string> w;
             for (std::string_view word : splitTokens(command, kWhitespace))

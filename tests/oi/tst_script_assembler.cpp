@@ -28,6 +28,8 @@ private slots:
                                 << "137 1 44 128 0 156 1 144 137 1 44 0 1 157 0 90 153";
         QTest::newRow("song and play") << "create1" << "song 3 C4:16 rest:8 G4:32; play 3"
                                        << "140 3 3 60 16 0 8 67 32 141 3";
+        QTest::newRow("sharp is not a comment") << "create1" << "song 0 C#4:32 F#4:16"
+                                                << "140 0 2 61 32 66 16";
         QTest::newRow("odd rest kept as a number") << "create1" << "song 0 2 200 16 60 8"
                                                    << "140 0 2 200 16 60 8";
         QTest::newRow("stream and query") << "create1" << "stream 2 29 13; query-list 1 6"
@@ -58,6 +60,7 @@ private slots:
         const auto r = assembleScript(profile(ProfileId::Create1),
                                       "# back up a little; safe\n"
                                       "drive -100 straight   # slowly\n"
+                                      "#safe;\n"
                                       "\n"
                                       "wait-distance -50;;\n"
                                       "drive 0 0\n");

@@ -1,0 +1,211 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "mode_panel.h"
+
+#include "command_catalog.h"
+#include "display_palette.h"
+
+#include <QComboBox>
+#include <QGridLayout>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QMessageBox>
+#include <QPushButton>
+#include <QVBoxLayout>
+
+namespace {
+
+// Create 1 demos, -1 (abort) through 9, as the document names them.
+const char *const kDemoNames[] = {"Abort demo", "Cover", "Cover and Dock", "Spot Cover", "Mouse",
+                                  "Drive Figure Eight", "Wimp", "Home", "Tag", "Pachelbel", "Banjo"};
+
+QString modeName(oi::OiMode mode)
+{
+    switch (mode) {
+    case oi::OiMode::Off: return ModePanel::tr("Off");
+    case oi::OiMode::Passive: return ModePanel::tr("Passive");
+    case oi::OiMode::Safe: return ModePanel::tr("Safe");
+    case oi::OiMode::Full: return ModePanel::tr("Full");
+    }
+    return {};
+}
+
+// Why Safe mode fell back to Passive, from what the same frame shows.
+QString safetyReason(const oi::SensorSnapshot &s)
+{
+    QStringList reasons;
+    if (s.cliff(oi::CliffSensor::Left) || s.cliff(oi::CliffSensor::FrontLeft)
+        || s.cliff(oi::CliffSensor::FrontRight) || s.cliff(oi::CliffSensor::Right))
+        reasons << ModePanel::tr("cliff");
+    if (s.wheelDropLeft() || s.wheelDropRight() || s.wheelDropCaster())
+        reasons << ModePanel::tr("wheel drop");
+    if (s.chargingSource(oi::ChargingSource::HomeBase) || s.chargingSource(oi::ChargingSource::InternalCharger))
+        reasons << ModePanel::tr("charger");
+    return reasons.isEmpty() ? ModePanel::tr("a safety condition") : reasons.join(", ");
+}
+
+} // namespace
+
+ModePanel::ModePanel(QWidget *parent) : QWidget(parent)
+{
+    m_confirmFull = [](QWidget *owner) {
+        return QMessageBox::question(owner, tr("Enter Full mode?"),
+                                     tr("Full mode turns off the cliff, wheel-drop and charger "
+                                        "safety stops. The robot will drive off a table edge if "
+                                        "told to. Enter Full mode?"))
+               == QMessageBox::Yes;
+    };
+
+    m_modeLabel = new QLabel(this);
+    m_modeLabel->setObjectName("modeLabel");
+    m_modeLabel->setFont(display::valueFont(font(), 1.4));
+    m_firmwareLabel = new QLabel(this);
+    m_firmwareLabel->setObjectName("firmwareLabel");
+    m_firmwareLabel->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_safetyLabel = new QLabel(this);
+    m_safetyLabel->setObjectName("safetyLabel");
+    m_safetyLabel->setWordWrap(true);
+    m_safetyLabel->setVisible(false);
+
+    auto *modes = new QHBoxLayout;
+    using C = oi::Command;
+    for (auto [name, text, command] : {std::tuple{"start", tr("Start"), C::Start},
+                                       std::tuple{"passive", tr("Passive"), C::Start},
+                                       std::tuple{"safe", tr("Safe"), C::Safe},
+                                       std::tuple{"full", tr("Full"), C::Full},
+                                       std::tuple{"stop", tr("Stop"), C::Stop}})
+        modes->addWidget(addButton(name, text, command));
+
+    auto *system = new QHBoxLayout;
+    system->addWidget(addButton("reset", tr("Reset"), C::Reset));
+    system->addWidget(addButton("power", tr("Power off"), C::Power));
+    system->addStretch();
+
+    auto *cleaning = new QGridLayout;
+    cleaning->addWidget(addButton("clean", tr("Clean"), C::Clean), 0, 0);
+    cleaning->addWidget(addButton("spot", tr("Spot"), C::Spot), 0, 1);
+    cleaning->addWidget(addButton("max", tr("Max"), C::Max), 0, 2);
+    cleaning->addWidget(addButton("seek-dock", tr("Seek Dock"), C::SeekDock), 0, 3);
+    cleaning->addWidget(addButton("cover", tr("Cover"), C::Cover), 1, 0);
+    cleaning->addWidget(addButton("cover-and-dock", tr("Cover and Dock"), C::CoverAndDock), 1, 1);
+    m_demo = new QComboBox(this);
+    m_demo->setObjectName("demoChoice");
+    for (int i = 0; i < 11; ++i)
+        m_demo->addItem(QString("%1  %2").arg(i - 1).arg(tr(kDemoNames[i])), i - 1);
+    m_demo->setCurrentIndex(1);
+    cleaning->addWidget(m_demo, 1, 2);
+    cleaning->addWidget(addButton("demo", tr("Demo"), C::Demo), 1, 3);
+
+    auto *layout = new QVBoxLayout(this);
+    layout->addWidget(m_modeLabel);
+    layout->addLayout(modes);
+    layout->addWidget(m_safetyLabel);
+    layout->addLayout(system);
+    layout->addWidget(m_firmwareLabel);
+    layout->addLayout(cleaning);
+    layout->addStretch();
+
+    showMode(std::nullopt);
+    refreshButtons();
+}
+
+QPushButton *ModePanel::addButton(const QString &name, const QString &text, oi::Command command)
+{
+    auto *b = new QPushButton(text, this);
+    b->setObjectName(name);
+    m_buttons.insert(name, b);
+    m_commands.insert(b, command);
+    connect(b, &QPushButton::clicked, this, [this, command] { request(command); });
+    return b;
+}
+
+QPushButton *ModePanel::button(const QString &name) const { return m_buttons.value(name); }
+
+void ModePanel::setFullModeConfirmation(std::function<bool(QWidget *)> confirm)
+{
+    m_confirmFull = std::move(confirm);
+}
+
+void ModePanel::setProfile(const oi::RobotProfile &profile)
+{
+    m_profile = &profile;
+    refreshButtons();
+}
+
+void ModePanel::refreshButtons()
+{
+    for (auto it = m_commands.cbegin(); it != m_commands.cend(); ++it) {
+        QPushButton *b = it.key();
+        const oi::CommandSpec &spec = oi::commandSpec(it.value());
+        const bool available = m_profile->has(it.value());
+        b->setEnabled(available);
+        const QString opcode = tr("%1 (opcode %2)").arg(QString::fromUtf8(spec.title.data(), spec.title.size()))
+                                   .arg(spec.opcode);
+        b->setToolTip(available ? opcode
+                                : tr("%1 is not available on the %2")
+                                      .arg(opcode, QString::fromUtf8(m_profile->name.data(), m_profile->name.size())));
+    }
+    m_demo->setEnabled(m_profile->has(oi::Command::Demo));
+}
+
+void ModePanel::request(oi::Command command)
+{
+    const oi::CommandEncoder encoder(*m_profile);
+    if (command == oi::Command::Full && !(m_confirmFull && m_confirmFull(this)))
+        return;
+    oi::EncodeResult bytes = command == oi::Command::Demo ? encoder.demo(m_demo->currentData().toInt())
+                                                          : oi::encodeCommand(encoder, oi::commandSpec(command).name, {});
+    if (!bytes)
+        return; // buttons for unavailable commands are disabled; nothing else can fail
+    // Commands that put the robot in Passive on purpose: not a safety drop.
+    m_passiveRequested = command != oi::Command::Safe && command != oi::Command::Full;
+    if (!m_passiveRequested) {
+        m_safetyLabel->clear();
+        m_safetyLabel->setVisible(false);
+    }
+    emit sendRequested(QByteArray(reinterpret_cast<const char *>(bytes->data()), qsizetype(bytes->size())));
+}
+
+void ModePanel::setSnapshot(const oi::SensorSnapshot &snapshot)
+{
+    if (!snapshot.has(35))
+        return;
+    const oi::OiMode mode = snapshot.oiMode();
+    if (m_mode == oi::OiMode::Safe && mode == oi::OiMode::Passive && !m_passiveRequested) {
+        m_safetyLabel->setText(tr("The robot left Safe mode by itself (%1) and is in Passive mode.")
+                                   .arg(safetyReason(snapshot)));
+        m_safetyLabel->setVisible(true);
+    }
+    if (m_mode != mode)
+        m_passiveRequested = false;
+    showMode(mode);
+}
+
+void ModePanel::showMode(std::optional<oi::OiMode> mode)
+{
+    m_mode = mode;
+    m_modeLabel->setText(mode ? tr("Mode: %1").arg(modeName(*mode)) : tr("Mode: unknown"));
+    const QString highlighted = !mode ? QString()
+                                : *mode == oi::OiMode::Passive ? "passive"
+                                : *mode == oi::OiMode::Safe    ? "safe"
+                                : *mode == oi::OiMode::Full    ? "full"
+                                                               : QString();
+    const QColor fill = display::stateColor(display::State::Active, palette());
+    const QColor text = display::textOn(display::State::Active, palette());
+    for (const QString &name : {QString("passive"), QString("safe"), QString("full")}) {
+        QPushButton *b = m_buttons.value(name);
+        b->setStyleSheet(name == highlighted ? QString("QPushButton { background: %1; color: %2; font-weight: bold; }")
+                                                   .arg(fill.name(), text.name())
+                                             : QString());
+    }
+    const QColor alert = display::stateColor(display::State::Alert, palette());
+    m_safetyLabel->setStyleSheet(QString("QLabel { color: %1; font-weight: bold; }").arg(alert.name()));
+}
+
+std::optional<oi::OiMode> ModePanel::highlightedMode() const { return m_mode; }
+
+QString ModePanel::safetyMessage() const { return m_safetyLabel->isHidden() ? QString() : m_safetyLabel->text(); }
+
+void ModePanel::setFirmware(const QString &release)
+{
+    m_firmwareLabel->setText(release.isEmpty() ? QString() : tr("Firmware: %1").arg(release));
+}

@@ -1,0 +1,128 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "connection_bar.h"
+
+#include <QComboBox>
+#include <QLineEdit>
+#include <QPushButton>
+#include <QSignalSpy>
+#include <QTest>
+
+class TestConnectionBar : public QObject {
+    Q_OBJECT
+private:
+    static void choose(ConnectionBar &bar, const char *combo, int data)
+    {
+        auto *c = bar.findChild<QComboBox *>(combo);
+        c->setCurrentIndex(c->findData(data));
+    }
+    static void clickConnect(ConnectionBar &bar)
+    {
+        QTest::mouseClick(bar.findChild<QPushButton *>("connect"), Qt::LeftButton);
+    }
+
+private slots:
+    void virtualRobotByDefault()
+    {
+        ConnectionBar bar;
+        QSignalSpy spy(&bar, &ConnectionBar::connectRequested);
+        clickConnect(bar);
+        QCOMPARE(spy.count(), 1);
+        const auto r = spy.at(0).at(0).value<ConnectionRequest>();
+        QCOMPARE(r.transport, ConnectionRequest::Transport::Virtual);
+        QVERIFY(!r.profile.has_value());
+        QCOMPARE(r.baud, 0);
+    }
+
+    void typedSerialPath()
+    {
+        ConnectionBar bar;
+        choose(bar, "transport", int(ConnectionRequest::Transport::Serial));
+        choose(bar, "profile", int(oi::ProfileId::Create1));
+        choose(bar, "baud", 57600);
+        auto *port = bar.findChild<QComboBox *>("port");
+        port->setEditText("/dev/pts/7");
+        QSignalSpy spy(&bar, &ConnectionBar::connectRequested);
+        clickConnect(bar);
+        QCOMPARE(spy.count(), 1);
+        const auto r = spy.at(0).at(0).value<ConnectionRequest>();
+        QCOMPARE(r.portPath, QString("/dev/pts/7"));
+        QCOMPARE(r.profile, std::optional<oi::ProfileId>(oi::ProfileId::Create1));
+        QCOMPARE(r.baud, 57600);
+    }
+
+    void badInputGivesOneInlineError_data()
+    {
+        QTest::addColumn<int>("transport");
+        QTest::addColumn<QString>("text");
+        QTest::addColumn<QString>("error");
+        QTest::newRow("no serial port") << int(ConnectionRequest::Transport::Serial) << "" << "Choose a serial port";
+        QTest::newRow("tcp without port") << int(ConnectionRequest::Transport::Tcp) << "raspberrypi" << "host:port";
+        QTest::newRow("tcp port too big") << int(ConnectionRequest::Transport::Tcp) << "pi:99999" << "1 to 65535";
+        QTest::newRow("tcp no host") << int(ConnectionRequest::Transport::Tcp) << ":3333" << "host:port";
+    }
+    void badInputGivesOneInlineError()
+    {
+        QFETCH(int, transport);
+        QFETCH(QString, text);
+        QFETCH(QString, error);
+        ConnectionBar bar;
+        choose(bar, "transport", transport);
+        if (transport == int(ConnectionRequest::Transport::Tcp))
+            bar.findChild<QLineEdit *>("tcp")->setText(text);
+        else
+            bar.findChild<QComboBox *>("port")->setEditText(text);
+        QSignalSpy spy(&bar, &ConnectionBar::connectRequested);
+        clickConnect(bar);
+        clickConnect(bar);
+        QCOMPARE(spy.count(), 0);
+        QVERIFY2(bar.errorText().contains(error), qPrintable(bar.errorText()));
+        QCOMPARE(bar.errorText().count(error), 1);
+    }
+
+    void tcpBridge()
+    {
+        ConnectionBar bar;
+        choose(bar, "transport", int(ConnectionRequest::Transport::Tcp));
+        bar.findChild<QLineEdit *>("tcp")->setText("192.168.1.20:3333");
+        QSignalSpy spy(&bar, &ConnectionBar::connectRequested);
+        clickConnect(bar);
+        const auto r = spy.at(0).at(0).value<ConnectionRequest>();
+        QCOMPARE(r.host, QString("192.168.1.20"));
+        QCOMPARE(r.tcpPort, quint16(3333));
+    }
+
+    void requestRoundTrip()
+    {
+        ConnectionRequest r;
+        r.transport = ConnectionRequest::Transport::Tcp;
+        r.host = "pi";
+        r.tcpPort = 4000;
+        r.profile = oi::ProfileId::Roomba500;
+        r.baud = 115200;
+        ConnectionBar bar;
+        bar.setRequest(r);
+        QCOMPARE(bar.request().host, r.host);
+        QCOMPARE(bar.request().tcpPort, r.tcpPort);
+        QCOMPARE(bar.request().profile, r.profile);
+        QCOMPARE(bar.request().baud, r.baud);
+        QCOMPARE(bar.request().transport, r.transport);
+    }
+
+    void connectedState()
+    {
+        ConnectionBar bar;
+        bar.setConnected(true);
+        QVERIFY(!bar.findChild<QPushButton *>("connect")->isEnabled());
+        QVERIFY(bar.findChild<QPushButton *>("disconnect")->isEnabled());
+        QSignalSpy spy(&bar, &ConnectionBar::disconnectRequested);
+        QTest::mouseClick(bar.findChild<QPushButton *>("disconnect"), Qt::LeftButton);
+        QCOMPARE(spy.count(), 1);
+        bar.setConnected(false);
+        QVERIFY(bar.findChild<QPushButton *>("connect")->isEnabled());
+        bar.showError("Port busy");
+        QCOMPARE(bar.errorText(), QString("Port busy"));
+    }
+};
+
+QTEST_MAIN(TestConnectionBar)
+#include "tst_connection_bar.moc"

@@ -1,0 +1,160 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "connection_bar.h"
+
+#include "display_palette.h"
+
+#include <QComboBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QLineEdit>
+#include <QPushButton>
+#include <QSerialPortInfo>
+#include <QToolButton>
+#include <QVBoxLayout>
+
+ConnectionBar::ConnectionBar(QWidget *parent) : QWidget(parent)
+{
+    m_transport = new QComboBox(this);
+    m_transport->setObjectName("transport");
+    m_transport->addItem(tr("Virtual robot"), int(ConnectionRequest::Transport::Virtual));
+    m_transport->addItem(tr("Serial port"), int(ConnectionRequest::Transport::Serial));
+    m_transport->addItem(tr("TCP (ser2net)"), int(ConnectionRequest::Transport::Tcp));
+
+    m_port = new QComboBox(this);
+    m_port->setObjectName("port");
+    m_port->setEditable(true);
+    m_port->setMinimumContentsLength(14);
+    m_port->lineEdit()->setPlaceholderText(tr("/dev/ttyUSB0 or a typed path"));
+    m_refresh = new QToolButton(this);
+    m_refresh->setText(tr("Refresh"));
+    m_refresh->setToolTip(tr("List the serial ports again"));
+    m_tcp = new QLineEdit(this);
+    m_tcp->setObjectName("tcp");
+    m_tcp->setPlaceholderText(tr("host:port, e.g. raspberrypi:3333"));
+
+    m_profile = new QComboBox(this);
+    m_profile->setObjectName("profile");
+    m_profile->addItem(tr("Auto"), -1);
+    for (oi::ProfileId id : oi::allProfiles()) {
+        const std::string_view name = oi::profile(id).name;
+        m_profile->addItem(QString::fromUtf8(name.data(), qsizetype(name.size())), int(id));
+    }
+    m_baud = new QComboBox(this);
+    m_baud->setObjectName("baud");
+    m_baud->addItem(tr("Default baud"), 0);
+    for (int baud : {115200, 57600, 38400, 19200, 9600})
+        m_baud->addItem(QString::number(baud), baud);
+
+    m_connect = new QPushButton(tr("Connect"), this);
+    m_connect->setObjectName("connect");
+    m_disconnect = new QPushButton(tr("Disconnect"), this);
+    m_disconnect->setObjectName("disconnect");
+    m_error = new QLabel(this);
+    m_error->setObjectName("error");
+    m_error->setWordWrap(true);
+    m_error->setHidden(true);
+    const QColor alert = display::stateColor(display::State::Alert, palette());
+    m_error->setStyleSheet(QString("QLabel { color: %1; font-weight: bold; }").arg(alert.name()));
+
+    auto *row = new QHBoxLayout;
+    row->addWidget(m_transport);
+    row->addWidget(m_port, 1);
+    row->addWidget(m_refresh);
+    row->addWidget(m_tcp, 1);
+    row->addWidget(m_profile);
+    row->addWidget(m_baud);
+    row->addWidget(m_connect);
+    row->addWidget(m_disconnect);
+    auto *layout = new QVBoxLayout(this);
+    layout->setContentsMargins(4, 4, 4, 4);
+    layout->addLayout(row);
+    layout->addWidget(m_error);
+
+    connect(m_transport, &QComboBox::currentIndexChanged, this, &ConnectionBar::updateTransportFields);
+    connect(m_refresh, &QToolButton::clicked, this, &ConnectionBar::refreshPorts);
+    connect(m_connect, &QPushButton::clicked, this, &ConnectionBar::tryConnect);
+    connect(m_tcp, &QLineEdit::returnPressed, this, &ConnectionBar::tryConnect);
+    connect(m_disconnect, &QPushButton::clicked, this, &ConnectionBar::disconnectRequested);
+
+    refreshPorts();
+    updateTransportFields();
+    setConnected(false);
+}
+
+void ConnectionBar::refreshPorts()
+{
+    const QString typed = m_port->currentText();
+    m_port->clear();
+    for (const QSerialPortInfo &info : QSerialPortInfo::availablePorts())
+        m_port->addItem(info.systemLocation());
+    m_port->setEditText(typed);
+}
+
+void ConnectionBar::updateTransportFields()
+{
+    const auto t = ConnectionRequest::Transport(m_transport->currentData().toInt());
+    m_port->setVisible(t == ConnectionRequest::Transport::Serial);
+    m_refresh->setVisible(t == ConnectionRequest::Transport::Serial);
+    m_tcp->setVisible(t == ConnectionRequest::Transport::Tcp);
+    m_baud->setEnabled(t != ConnectionRequest::Transport::Virtual);
+}
+
+ConnectionRequest ConnectionBar::request() const
+{
+    ConnectionRequest r;
+    r.transport = ConnectionRequest::Transport(m_transport->currentData().toInt());
+    r.portPath = m_port->currentText().trimmed();
+    const QString tcp = m_tcp->text().trimmed();
+    const qsizetype colon = tcp.lastIndexOf(':');
+    r.host = colon > 0 ? tcp.left(colon) : tcp;
+    r.tcpPort = colon > 0 ? tcp.mid(colon + 1).toUShort() : 0;
+    const int profile = m_profile->currentData().toInt();
+    if (profile >= 0)
+        r.profile = oi::ProfileId(profile);
+    r.baud = m_baud->currentData().toInt();
+    return r;
+}
+
+void ConnectionBar::setRequest(const ConnectionRequest &r)
+{
+    m_transport->setCurrentIndex(m_transport->findData(int(r.transport)));
+    m_port->setEditText(r.portPath);
+    m_tcp->setText(r.host.isEmpty() ? QString() : QString("%1:%2").arg(r.host).arg(r.tcpPort));
+    m_profile->setCurrentIndex(m_profile->findData(r.profile ? int(*r.profile) : -1));
+    const int baud = m_baud->findData(r.baud);
+    m_baud->setCurrentIndex(baud >= 0 ? baud : 0);
+    updateTransportFields();
+}
+
+void ConnectionBar::tryConnect()
+{
+    const ConnectionRequest r = request();
+    m_error->clear();
+    m_error->setHidden(true);
+    if (r.transport == ConnectionRequest::Transport::Serial && r.portPath.isEmpty()) {
+        showError(tr("Choose a serial port or type its path."));
+        return;
+    }
+    if (r.transport == ConnectionRequest::Transport::Tcp && (r.host.isEmpty() || r.tcpPort == 0)) {
+        showError(tr("Type the bridge as host:port with a port from 1 to 65535, e.g. raspberrypi:3333."));
+        return;
+    }
+    emit connectRequested(r);
+}
+
+void ConnectionBar::setConnected(bool connected)
+{
+    m_connect->setEnabled(!connected);
+    m_disconnect->setEnabled(connected);
+    for (QWidget *w : std::initializer_list<QWidget *>{m_transport, m_port, m_refresh, m_tcp, m_profile})
+        w->setEnabled(!connected);
+    m_baud->setEnabled(!connected && request().transport != ConnectionRequest::Transport::Virtual);
+}
+
+void ConnectionBar::showError(const QString &message)
+{
+    m_error->setText(message);
+    m_error->setHidden(message.isEmpty());
+}
+
+QString ConnectionBar::errorText() const { return m_error->isHidden() ? QString() : m_error->text(); }

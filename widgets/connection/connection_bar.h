@@ -1,0 +1,64 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "robot_profile.h"
+
+#include <QString>
+#include <QWidget>
+
+#include <optional>
+
+class QComboBox;
+class QLabel;
+class QLineEdit;
+class QPushButton;
+class QToolButton;
+
+// Where and how to reach the robot, as the user chose it.
+struct ConnectionRequest {
+    enum class Transport { Virtual, Serial, Tcp };
+    Transport transport = Transport::Virtual;
+    QString portPath;                     // serial: a listed port or a typed path (ptys are not listed)
+    QString host;                         // TCP
+    quint16 tcpPort = 0;                  // TCP
+    std::optional<oi::ProfileId> profile; // nullopt: detect automatically
+    int baud = 0;                         // 0: the profile's default
+    friend bool operator==(const ConnectionRequest &, const ConnectionRequest &) = default;
+};
+
+// The connection bar: transport, port, profile, baud, Connect/Disconnect, and
+// one inline error line. It validates what was typed before asking to connect.
+class ConnectionBar : public QWidget {
+    Q_OBJECT
+public:
+    explicit ConnectionBar(QWidget *parent = nullptr);
+
+    ConnectionRequest request() const;
+    void setRequest(const ConnectionRequest &request);
+    void setConnected(bool connected);
+    // Shows `message` inline until the next connect attempt; the same message
+    // twice is shown once.
+    void showError(const QString &message);
+    QString errorText() const;
+    void refreshPorts();
+
+signals:
+    void connectRequested(const ConnectionRequest &request);
+    void disconnectRequested();
+
+private:
+    void tryConnect();
+    void updateTransportFields();
+
+    QComboBox *m_transport = nullptr;
+    QComboBox *m_port = nullptr;
+    QToolButton *m_refresh = nullptr;
+    QLineEdit *m_tcp = nullptr;
+    QComboBox *m_profile = nullptr;
+    QComboBox *m_baud = nullptr;
+    QPushButton *m_connect = nullptr;
+    QPushButton *m_disconnect = nullptr;
+    QLabel *m_error = nullptr;
+};
+
+Q_DECLARE_METATYPE(ConnectionRequest)

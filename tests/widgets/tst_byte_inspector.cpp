@@ -1,0 +1,352 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "byte_inspector.h"
+#include "command_decoder.h"
+#include "rx_frame_scanner.h"
+
+#include <QDir>
+#include <QLabel>
+#include <QLineEdit>
+#include <QPlainTextEdit>
+#include <QPushButton>
+#include <QScrollBar>
+#include <QSignalSpy>
+#include <QTextBlock>
+#include <QTest>
+
+#include <cmath>
+
+namespace {
+
+QByteArray bytesOf(std::initializer_list<int> values)
+{
+    QByteArray out;
+    for (int v : values)
+        out.append(char(v));
+    return out;
+}
+
+QByteArray bytesFromText(const QString &text)
+{
+    QByteArray out;
+    for (const QString &t : text.split(QLatin1Char(' '), Qt::SkipEmptyParts))
+        out.append(char(t.toInt()));
+    return out;
+}
+
+// A stream frame for these id/value bytes, with the checksum that makes
+// the sum of every byte, header included, zero (ERRATA 1).
+QByteArray frame(const QByteArray &payload)
+{
+    QByteArray f;
+    f.append(char(19));
+    f.append(char(payload.size()));
+    f.append(payload);
+    int sum = 0;
+    for (char c : f)
+        sum += static_cast<unsigned char>(c);
+    f.append(char((256 - (sum & 0xFF)) & 0xFF));
+    return f;
+}
+
+} // namespace
+
+class TestByteInspector : public QObject {
+    Q_OBJECT
+private slots:
+    void decodesSentCommands_data()
+    {
+        QTest::addColumn<QString>("bytes");
+        QTest::addColumn<QString>("meaning");
+        QTest::newRow("drive") << "137 255 56 1 244" << "Drive velocity -200 radius 500";
+        QTest::newRow("drive straight") << "137 0 200 128 0" << "Drive velocity 200 radius -32768 (straight)";
+        QTest::newRow("drive spin") << "137 0 100 255 255" << "Drive velocity 100 radius -1 (turn in place clockwise)";
+        QTest::newRow("stream group 100") << "148 1 100" << "Stream 1 packet: group 100 (packets 7..58)";
+        QTest::newRow("stream two") << "148 2 22 23" << "Stream 2 packets: Voltage (22), Current (23)";
+        QTest::newRow("start") << "128" << "Start";
+        QTest::newRow("safe") << "131" << "Safe";
+        QTest::newRow("drive direct") << "145 0 200 255 56" << "Drive Direct right velocity 200 left velocity -200";
+        QTest::newRow("sensors") << "142 22" << "Sensors Voltage (22)";
+        QTest::newRow("baud") << "129 11" << "Baud code 11 (115200 bps)";
+        QTest::newRow("song") << "140 0 2 60 32 62 16" << "Song slot 0, 2 notes: C4/32 D4/16";
+        QTest::newRow("resume") << "150 1" << "Pause/Resume Stream: resume";
+        QTest::newRow("leds") << "139 4 0 255" << "LEDs led bits 4 power color 0 power intensity 255";
+        QTest::newRow("digits") << "164 72 73 33 32" << "Digit LEDs ASCII \"HI! \"";
+        QTest::newRow("day time") << "168 3 15 5" << "Set Day/Time Wednesday 15:05";
+        QTest::newRow("unknown") << "99 1 2" << "not a command of the Roomba 600 / Create 2";
+        QTest::newRow("too short") << "137 1" << "Drive, incomplete: 1 of 4 data bytes";
+    }
+
+    void decodesSentCommands()
+    {
+        QFETCH(QString, bytes);
+        QFETCH(QString, meaning);
+        ByteInspector inspector;
+        inspector.appendTx(bytesFromText(bytes), 12345);
+        QCOMPARE(inspector.entryCount(), 1);
+        QCOMPARE(inspector.lastEntries(1).front(),
+                 QStringLiteral("    12.345  TX  %1  %2").arg(bytes, meaning));
+    }
+
+    void splitsSeveralCommandsInOneWrite()
+    {
+        ByteInspector inspector;
+        inspector.appendTx(bytesOf({128, 131, 137, 0, 0, 0, 0}), 1000);
+        const QStringList entries = inspector.lastEntries(10);
+        QCOMPARE(entries.size(), 3);
+        QVERIFY(entries[0].endsWith(QStringLiteral("TX  128  Start")));
+        QVERIFY(entries[1].endsWith(QStringLiteral("TX  131  Safe")));
+        QVERIFY(entries[2].endsWith(QStringLiteral("TX  137 0 0 0 0  Drive velocity 0 radius 0")));
+        QCOMPARE(inspector.txBytes(), quint64(7));
+    }
+
+    void hexBytes()
+    {
+        ByteInspector inspector;
+        inspector.appendTx(bytesOf({137, 255, 56, 1, 244}), 0);
+        inspector.setShowsHex(true);
+        QVERIFY(inspector.lastEntries(1).front().endsWith(
+            QStringLiteral("TX  89 FF 38 01 F4  Drive velocity -200 radius 500")));
+    }
+
+    void marksStreamFrames()
+    {
+        ByteInspector inspector;
+        // The documents' example: cliff front left signal 537, virtual wall 0.
+        inspector.appendRx(bytesOf({19, 5, 29, 2, 25, 13, 0, 163}), 2000);
+        QCOMPARE(inspector.lastEntries(1).front(),
+                 QStringLiteral("     2.000  RX  19 5 29 2 25 13 0 163  stream frame: "
+                                "Cliff Front Left Signal 537, Virtual Wall 0"));
+    }
+
+    void frameSplitAcrossReadsAndJunkBeforeIt()
+    {
+        ByteInspector inspector;
+        const QByteArray f = frame(bytesOf({22, 0x39, 0xE4, 23, 0xFF, 0x06}));
+        inspector.appendRx(bytesOf({1, 2}) + f.left(3), 10);
+        QCOMPARE(inspector.entryCount(), 1); // the junk; the frame's start is held
+        QVERIFY(inspector.lastEntries(1).front().endsWith(QStringLiteral("RX  1 2  outside any stream frame")));
+        inspector.appendRx(f.mid(3), 25);
+        QCOMPARE(inspector.entryCount(), 2);
+        QVERIFY(inspector.lastEntries(1).front().endsWith(
+            QStringLiteral("stream frame: Voltage 14820 mV, Current -250 mA")));
+        QCOMPARE(inspector.rxBytes(), quint64(2 + f.size()));
+
+        // A bad checksum is no frame.
+        QByteArray bad = frame(bytesOf({22, 0x39, 0xE4}));
+        bad[bad.size() - 1] = char(bad.back() + 1);
+        inspector.appendRx(bad, 40);
+        QVERIFY(inspector.lastEntries(1).front().endsWith(QStringLiteral("outside any stream frame")));
+    }
+
+    void readsRepliesToRequests()
+    {
+        ByteInspector inspector;
+        inspector.appendTx(bytesOf({142, 22}), 100);
+        inspector.appendRx(bytesOf({0x39, 0xE4}), 112);
+        QVERIFY(inspector.lastEntries(1).front().endsWith(QStringLiteral("RX  57 228  reply: Voltage 14820 mV")));
+        inspector.appendTx(bytesOf({149, 2, 21, 24}), 200);
+        inspector.appendRx(bytesOf({2}), 210);
+        inspector.appendRx(bytesOf({23}), 215);
+        QVERIFY(inspector.lastEntries(1).front().endsWith(
+            QStringLiteral("RX  2 23  reply: Charging State 2, Temperature 23 \u00b0C")));
+        // Long after a request, bytes are not taken for its reply.
+        inspector.appendTx(bytesOf({142, 22}), 300);
+        inspector.appendRx(bytesOf({0x39, 0xE4}), 300 + RxFrameScanner::kReplyTimeoutMs + 1);
+        QVERIFY(inspector.lastEntries(1).front().endsWith(QStringLiteral("outside any stream frame")));
+    }
+
+    void showsTheBannerAsText()
+    {
+        ByteInspector inspector;
+        inspector.appendRx(QByteArray("bl-start\r\n"), 0);
+        QVERIFY(inspector.lastEntries(1).front().endsWith(QStringLiteral("text \"bl-start\\r\\n\"")));
+    }
+
+    void keepsABoundedLog()
+    {
+        ByteInspector inspector;
+        QCOMPARE(inspector.maxEntries(), ByteInspector::kDefaultMaxEntries);
+        for (int i = 0; i < 6000; ++i)
+            inspector.appendTx(bytesOf({128}), i);
+        QCOMPARE(inspector.entryCount(), 5000);
+        QCOMPARE(inspector.totalEntries(), quint64(6000));
+        QVERIFY(inspector.lastEntries(5000).front().startsWith(QStringLiteral("     1.000  TX")));
+        inspector.flushView();
+        auto *view = inspector.findChild<QPlainTextEdit *>(QStringLiteral("byteLog"));
+        QVERIFY(view);
+        QCOMPARE(view->document()->blockCount(), 5000);
+        for (int i = 0; i < 100; ++i)
+            inspector.appendTx(bytesOf({131}), 6000 + i);
+        inspector.flushView();
+        QCOMPARE(view->document()->blockCount(), 5000);
+        QVERIFY(view->document()->lastBlock().text().endsWith(QStringLiteral("131  Safe")));
+
+        inspector.setMaxEntries(10);
+        QCOMPARE(inspector.entryCount(), 10);
+        inspector.clear();
+        QCOMPARE(inspector.entryCount(), 0);
+        QCOMPARE(inspector.totalEntries(), quint64(0));
+        QVERIFY(view->document()->isEmpty());
+    }
+
+    void rendersOnATimerNotPerAppend()
+    {
+        ByteInspector inspector;
+        auto *view = inspector.findChild<QPlainTextEdit *>(QStringLiteral("byteLog"));
+        inspector.appendTx(bytesOf({128}), 0);
+        inspector.appendTx(bytesOf({131}), 1);
+        QVERIFY(view->document()->isEmpty()); // nothing drawn yet
+        QTRY_COMPARE(view->document()->blockCount(), 2);
+    }
+
+    void pauseFreezesTheViewButKeepsCounting()
+    {
+        ByteInspector inspector;
+        auto *view = inspector.findChild<QPlainTextEdit *>(QStringLiteral("byteLog"));
+        inspector.appendTx(bytesOf({128}), 0);
+        inspector.flushView();
+        inspector.setPaused(true);
+        inspector.appendTx(bytesOf({131}), 1);
+        inspector.appendTx(bytesOf({132}), 2);
+        inspector.flushView();
+        QCOMPARE(view->document()->blockCount(), 1);
+        QCOMPARE(inspector.entryCount(), 3);
+        QCOMPARE(inspector.totalEntries(), quint64(3));
+        inspector.setPaused(false);
+        QCOMPARE(view->document()->blockCount(), 3);
+        QVERIFY(view->document()->lastBlock().text().endsWith(QStringLiteral("132  Full")));
+    }
+
+    void refusesBadRawInput_data()
+    {
+        QTest::addColumn<QString>("text");
+        QTest::addColumn<QString>("error");
+        QTest::newRow("not a byte") << "300" << "Byte 1: 300 is outside 0..255.";
+        QTest::newRow("not a number") << "abc" << "Byte 1: \u201cabc\u201d is not a number.";
+        QTest::newRow("too short") << "137 1" << "Drive (137) takes 4 data bytes; got 1.";
+        QTest::newRow("negative") << "128 -1" << "Byte 2: -1 is outside 0..255.";
+        QTest::newRow("no opcode") << "99" << "Byte 1: 99 is not an opcode of the Roomba 600 / Create 2.";
+        QTest::newRow("second command short") << "128 145 0" << "Drive Direct (145) takes 4 data bytes; got 1.";
+        QTest::newRow("empty") << "" << "Type the bytes to send, for example 128 131 or 0x80 0x83.";
+        QTest::newRow("too fast") << "137 7 208 0 0" << "Drive (137): velocity: 2000 is outside -500..500";
+        QTest::newRow("stream count") << "148 2 22" << "Stream (148) takes 3 data bytes; got 2.";
+    }
+
+    void refusesBadRawInput()
+    {
+        QFETCH(QString, text);
+        QFETCH(QString, error);
+        ByteInspector inspector;
+        inspector.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&inspector));
+        QSignalSpy spy(&inspector, &ByteInspector::sendRequested);
+        auto *input = inspector.findChild<QLineEdit *>(QStringLiteral("rawInput"));
+        auto *message = inspector.findChild<QLabel *>(QStringLiteral("rawError"));
+        QVERIFY(input && message);
+        QTest::keyClicks(input, text);
+        QTest::keyClick(input, Qt::Key_Return);
+        QCOMPARE(spy.count(), 0);
+        QVERIFY(message->isVisible());
+        QCOMPARE(message->text(), error);
+        QCOMPARE(input->text(), text); // kept for correcting
+        QTest::keyClick(input, Qt::Key_End);
+        QTest::keyClicks(input, QStringLiteral(" "));
+        QVERIFY(!message->isVisible()); // editing clears the message
+    }
+
+    void sendsGoodRawInput_data()
+    {
+        QTest::addColumn<QString>("text");
+        QTest::addColumn<QByteArray>("bytes");
+        QTest::newRow("start safe") << "128 131" << bytesOf({128, 131});
+        QTest::newRow("hex") << "0x80 0x83" << bytesOf({128, 131});
+        QTest::newRow("commas") << "128, 131" << bytesOf({128, 131});
+        QTest::newRow("drive") << "137 255 56 1 244" << bytesOf({137, 255, 56, 1, 244});
+        QTest::newRow("stream") << "148 1 100" << bytesOf({148, 1, 100});
+        QTest::newRow("song") << "140 0 1 60 32" << bytesOf({140, 0, 1, 60, 32});
+    }
+
+    void sendsGoodRawInput()
+    {
+        QFETCH(QString, text);
+        QFETCH(QByteArray, bytes);
+        ByteInspector inspector;
+        inspector.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&inspector));
+        QSignalSpy spy(&inspector, &ByteInspector::sendRequested);
+        auto *input = inspector.findChild<QLineEdit *>(QStringLiteral("rawInput"));
+        auto *send = inspector.findChild<QPushButton *>(QStringLiteral("sendButton"));
+        QTest::keyClicks(input, text);
+        QTest::mouseClick(send, Qt::LeftButton);
+        QCOMPARE(spy.count(), 1);
+        QCOMPARE(spy.front().front().toByteArray(), bytes);
+        QVERIFY(input->text().isEmpty());
+        QVERIFY(inspector.findChild<QLabel *>(QStringLiteral("rawError"))->isHidden());
+    }
+
+    void rawCheckFollowsTheProfile()
+    {
+        ByteInspector inspector;
+        QString error;
+        // 143 is Seek Dock on a Create 2 and Cover and Dock on a Create 1;
+        // 147 (Digital Outputs) exists only on the Create 1.
+        QVERIFY(!inspector.parseRawBytes(QStringLiteral("147 1"), &error));
+        inspector.setProfile(oi::profile(oi::ProfileId::Create1));
+        QCOMPARE(inspector.parseRawBytes(QStringLiteral("147 1"), &error), bytesOf({147, 1}));
+        inspector.appendTx(bytesOf({138, 7}), 0);
+        QVERIFY(inspector.lastEntries(1).front().endsWith(QStringLiteral("Low Side Drivers driver bits 7")));
+    }
+
+    void snapshot()
+    {
+        const QByteArray dir = qgetenv("ROOMBA_WIDGET_SNAPSHOT_DIR");
+        if (dir.isEmpty())
+            QSKIP("set ROOMBA_WIDGET_SNAPSHOT_DIR to write byte_inspector.png");
+        ByteInspector inspector;
+        inspector.resize(900, 600);
+        inspector.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&inspector));
+        qint64 ms = 81'000;
+        inspector.appendTx(bytesOf({7}), ms);
+        inspector.appendRx(QByteArray("bl-start\r\n2015-01-07-2130-L   \r\nbattery-current-zero 252\r\n"), ms += 40);
+        inspector.appendTx(bytesOf({128}), ms += 900);
+        inspector.appendTx(bytesOf({131}), ms += 20);
+        inspector.appendTx(bytesOf({142, 22}), ms += 30);
+        inspector.appendRx(bytesOf({0x39, 0xE4}), ms += 12);
+        inspector.appendTx(bytesOf({148, 4, 7, 22, 23, 46}), ms += 30);
+        for (int i = 0; i < 24; ++i) {
+            ms += 15;
+            const int volts = 14820 - i, amps = -250 - 7 * (i % 5), light = 40 + 60 * i;
+            QByteArray payload = bytesOf({7, i == 9 ? 2 : 0, 22, volts >> 8, volts & 0xFF, 23,
+                                          (amps >> 8) & 0xFF, amps & 0xFF, 46, light >> 8, light & 0xFF});
+            const QByteArray f = frame(payload);
+            if (i == 5) { // a read that splits a frame, and a little line noise
+                inspector.appendRx(bytesOf({0, 255}) + f.left(6), ms);
+                inspector.appendRx(f.mid(6), ms + 2);
+            } else {
+                inspector.appendRx(f, ms);
+            }
+            if (i == 8)
+                inspector.appendTx(bytesOf({137, 255, 56, 1, 244}), ms + 3);
+            if (i == 16)
+                inspector.appendTx(bytesOf({137, 0, 0, 0, 0}), ms + 3);
+        }
+        inspector.appendTx(bytesOf({140, 0, 4, 60, 16, 64, 16, 67, 16, 72, 32}), ms += 20);
+        inspector.appendTx(bytesOf({141, 0}), ms += 20);
+        inspector.appendTx(bytesOf({99, 4}), ms += 20);
+        inspector.flushView();
+        auto *input = inspector.findChild<QLineEdit *>(QStringLiteral("rawInput"));
+        QTest::keyClicks(input, QStringLiteral("137 1"));
+        QTest::keyClick(input, Qt::Key_Return);
+        QCoreApplication::processEvents();
+        QVERIFY(inspector.grab().save(QDir(QString::fromLocal8Bit(dir)).filePath(QStringLiteral("byte_inspector.png"))));
+        // The start of the log, in hexadecimal.
+        inspector.setShowsHex(true);
+        inspector.findChild<QPlainTextEdit *>(QStringLiteral("byteLog"))->verticalScrollBar()->setValue(0);
+        QCoreApplication::processEvents();
+        QVERIFY(inspector.grab().save(QDir(QString::fromLocal8Bit(dir)).filePath(QStringLiteral("byte_inspector_top.png"))));
+    }
+};
+
+QTEST_MAIN(TestByteInspector)
+#include "tst_byte_inspector.moc"

@@ -1,0 +1,280 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "sensor_history.h"
+
+#include <QFile>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include <cmath>
+#include <limits>
+
+using oi::ProfileId;
+using oi::SensorSnapshot;
+
+namespace {
+
+SensorSnapshot snapshotWith(std::initializer_list<std::pair<int, int>> values,
+                            ProfileId profile = ProfileId::Create2)
+{
+    SensorSnapshot s(oi::profile(profile));
+    for (const auto &[id, value] : values)
+        s.set(id, value);
+    return s;
+}
+
+// What a group 100 stream frame carries on a Create 2: every packet 7..58.
+SensorSnapshot group100Snapshot(int seed)
+{
+    SensorSnapshot s(oi::profile(ProfileId::Create2));
+    for (const oi::PacketInfo &info : oi::profile(ProfileId::Create2).packets())
+        s.set(info.id, (seed + info.id) % 200);
+    return s;
+}
+
+QByteArray readAll(const QString &path)
+{
+    QFile f(path);
+    if (!f.open(QIODevice::ReadOnly))
+        return {};
+    return f.readAll();
+}
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+} // namespace
+
+class TestSensorHistory : public QObject {
+    Q_OBJECT
+private slots:
+    void recordsOnlyPresentPackets()
+    {
+        SensorHistory h;
+        QVERIFY(h.isEmpty());
+        QVERIFY(h.append(1.0, snapshotWith({{22, 14800}, {23, -300}})));
+        QCOMPARE(h.sampleCount(22), std::size_t(1));
+        QCOMPARE(h.sampleCount(23), std::size_t(1));
+        QCOMPARE(h.sampleCount(24), std::size_t(0));
+        QCOMPARE(h.sample(23, 0), (SensorHistory::Sample{1.0, -300}));
+        QCOMPARE(h.newestTime(), 1.0);
+        // Groups and unknown ids are not channels.
+        QVERIFY(!h.isChannel(100));
+        QVERIFY(!h.isChannel(3));
+        QVERIFY(!h.isChannel(-1));
+        QVERIFY(h.isChannel(58));
+        QCOMPARE(h.sampleCount(100), std::size_t(0));
+    }
+
+    void refusesTimeGoingBackwards()
+    {
+        SensorHistory h;
+        QVERIFY(h.append(5.0, snapshotWith({{22, 1}})));
+        QVERIFY(!h.append(4.999, snapshotWith({{22, 2}})));
+        QVERIFY(!h.append(std::nan(""), snapshotWith({{22, 3}})));
+        QVERIFY(!h.append(kInf, snapshotWith({{22, 4}})));
+        QVERIFY(h.append(5.0, snapshotWith({{22, 5}}))); // equal times are fine
+        QCOMPARE(h.sampleCount(22), std::size_t(2));
+        QCOMPARE(h.sample(22, 1).value, 5);
+    }
+
+    void wraparoundKeepsTheNewest()
+    {
+        SensorHistory h(oi::profile(ProfileId::Create2), 100);
+        for (int i = 0; i < 250; ++i)
+            QVERIFY(h.append(i * 0.5, snapshotWith({{22, 10000 + i}})));
+        QCOMPARE(h.sampleCount(22), std::size_t(100));
+        QCOMPARE(h.appendCount(22), std::uint64_t(250));
+        for (int k = 0; k < 100; ++k)
+            QCOMPARE(h.sample(22, std::size_t(k)), (SensorHistory::Sample{(150 + k) * 0.5, 10150 + k}));
+        QCOMPARE(h.oldestTime(), 75.0);
+        QCOMPARE(h.newestTime(), 124.5);
+        QCOMPARE(h.sample(22, 100), SensorHistory::Sample{}); // past the end
+    }
+
+    void memoryIsBoundedAndStaysFlat()
+    {
+        const std::size_t capacity = 5000;
+        SensorHistory h(oi::profile(ProfileId::Create2), capacity);
+        QCOMPARE(h.memoryBytes(), std::size_t(0));
+        h.append(0, snapshotWith({{22, 1}, {23, 2}, {45, 3}}));
+        const std::size_t first = h.memoryBytes();
+        QVERIFY(first > 0);
+        QVERIFY(first < 3 * capacity * SensorHistory::kBytesPerSample); // allocated as it fills
+        for (std::size_t i = 1; i < capacity; ++i)
+            h.append(double(i), snapshotWith({{22, 1}, {23, 2}, {45, 3}}));
+        const std::size_t full = 3 * capacity * SensorHistory::kBytesPerSample;
+        QCOMPARE(h.memoryBytes(), full);
+        for (std::size_t i = capacity; i < 3 * capacity; ++i)
+            h.append(double(i), snapshotWith({{22, 1}, {23, 2}, {45, 3}}));
+        QCOMPARE(h.memoryBytes(), full);
+        h.clear();
+        QCOMPARE(h.memoryBytes(), std::size_t(0));
+        QVERIFY(h.isEmpty());
+    }
+
+    void anHourOfGroup100KeepsMemoryFlat()
+    {
+        // Every packet of the Create 2 at the 15 ms stream period for an hour:
+        // once each channel holds its hour, memory no longer grows.
+        SensorHistory h;
+        const auto &packets = oi::profile(ProfileId::Create2).packets();
+        const std::size_t channels = packets.size();
+        QCOMPARE(channels, std::size_t(52));
+        const std::size_t bound = channels * SensorHistory::kDefaultCapacity * SensorHistory::kBytesPerSample;
+        const SensorSnapshot a = group100Snapshot(1), b = group100Snapshot(2);
+        std::size_t i = 0;
+        for (; i < SensorHistory::kDefaultCapacity; ++i)
+            h.append(double(i) * 0.015, i % 2 ? a : b);
+        QCOMPARE(h.memoryBytes(), bound);
+        for (; i < SensorHistory::kDefaultCapacity + 20'000; ++i) {
+            h.append(double(i) * 0.015, i % 2 ? a : b);
+            if (i % 4000 == 0)
+                QCOMPARE(h.memoryBytes(), bound);
+        }
+        QCOMPARE(h.memoryBytes(), bound);
+        for (const oi::PacketInfo &info : packets)
+            QCOMPARE(h.sampleCount(info.id), SensorHistory::kDefaultCapacity);
+        QCOMPARE(h.oldestTime(), 20'000 * 0.015);
+    }
+
+    void rangeQueriesAcrossTheWrap()
+    {
+        SensorHistory h(oi::profile(ProfileId::Create2), 8);
+        for (int i = 0; i < 12; ++i) // holds times 4..11
+            h.append(double(i), snapshotWith({{22, i * 10}}));
+        QCOMPARE(h.lowerBound(22, 5.0), std::size_t(1));
+        QCOMPARE(h.upperBound(22, 5.0), std::size_t(2));
+        QCOMPARE(h.lowerBound(22, 5.5), std::size_t(2));
+        QCOMPARE(h.lowerBound(22, -1.0), std::size_t(0));
+        QCOMPARE(h.upperBound(22, 99.0), std::size_t(8));
+
+        const auto mid = h.samples(22, 5.5, 8.0);
+        QCOMPARE(mid.size(), std::size_t(3));
+        QCOMPARE(mid[0], (SensorHistory::Sample{6.0, 60}));
+        QCOMPARE(mid[2], (SensorHistory::Sample{8.0, 80}));
+        QCOMPARE(h.samples(22, -kInf, kInf).size(), std::size_t(8));
+        QVERIFY(h.samples(22, 0.0, 3.0).empty()); // overwritten
+        QVERIFY(h.samples(22, 20.0, 30.0).empty());
+        QVERIFY(h.samples(22, 8.0, 5.0).empty());
+        QVERIFY(h.samples(23, -kInf, kInf).empty());
+        QCOMPARE(h.samples(22, 11.0, 11.0).size(), std::size_t(1));
+    }
+
+    void revisionAndGeneration()
+    {
+        SensorHistory h;
+        const auto r0 = h.revision(), g0 = h.generation();
+        h.append(0, snapshotWith({{22, 1}}));
+        QVERIFY(h.revision() != r0);
+        QCOMPARE(h.generation(), g0);
+        h.clear();
+        QVERIFY(h.generation() != g0);
+    }
+
+    void profileChangeClears()
+    {
+        SensorHistory h;
+        h.append(1, snapshotWith({{46, 100}}));
+        const auto g = h.generation();
+        h.setProfile(oi::profile(ProfileId::Create2)); // same profile: kept
+        QCOMPARE(h.sampleCount(46), std::size_t(1));
+        QCOMPARE(h.generation(), g);
+        h.setProfile(oi::profile(ProfileId::Create1));
+        QVERIFY(h.isEmpty());
+        QVERIFY(!h.isChannel(46)); // light bumpers are not on the Create 1
+        QVERIFY(h.isChannel(33));
+    }
+
+    void timeFormat()
+    {
+        QCOMPARE(SensorHistory::formatTime(0), QStringLiteral("0"));
+        QCOMPARE(SensorHistory::formatTime(12), QStringLiteral("12"));
+        QCOMPARE(SensorHistory::formatTime(1.5), QStringLiteral("1.5"));
+        QCOMPARE(SensorHistory::formatTime(0.015), QStringLiteral("0.015"));
+        QCOMPARE(SensorHistory::formatTime(3600.000125), QStringLiteral("3600.000125"));
+    }
+
+    void csvAlignsChannelsByTime()
+    {
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        SensorHistory h;
+        h.append(0.0, snapshotWith({{22, 14000}, {8, 0}}));
+        h.append(0.015, snapshotWith({{22, 14010}}));      // no wall sample
+        h.append(0.03, snapshotWith({{22, 14020}, {8, 1}}));
+        h.append(0.045, snapshotWith({{8, 0}}));           // no voltage sample
+        const QString path = dir.filePath(QStringLiteral("all.csv"));
+        QString error;
+        QVERIFY2(h.exportCsv(path, {22, 8}, -kInf, kInf, &error), qPrintable(error));
+        QCOMPARE(readAll(path), QByteArray("time_s,voltage[mV],wall\n"
+                                           "0,14000,0\n"
+                                           "0.015,14010,\n"
+                                           "0.03,14020,1\n"
+                                           "0.045,,0\n"));
+
+        // A time range, and the column order as asked.
+        QVERIFY(h.exportCsv(path, {8, 22}, 0.01, 0.03, &error));
+        QCOMPARE(readAll(path), QByteArray("time_s,wall,voltage[mV]\n"
+                                           "0.015,,14010\n"
+                                           "0.03,1,14020\n"));
+    }
+
+    void csvWithAChannelThatHasNoSamples()
+    {
+        QTemporaryDir dir;
+        SensorHistory h;
+        h.append(1.0, snapshotWith({{23, -250}}));
+        h.append(2.0, snapshotWith({{23, -260}}));
+        const QString path = dir.filePath(QStringLiteral("t.csv"));
+        QVERIFY(h.exportCsv(path, {24, 23}, -kInf, kInf));
+        QCOMPARE(readAll(path), QStringLiteral("time_s,temperature[\u00b0C],current[mA]\n"
+                                               "1,,-250\n"
+                                               "2,,-260\n")
+                                    .toUtf8());
+        // Nothing in range: only the header.
+        QVERIFY(h.exportCsv(path, {23}, 5.0, 6.0));
+        QCOMPARE(readAll(path), QByteArray("time_s,current[mA]\n"));
+    }
+
+    void csvTwoSamplesAtOneTimeGiveOneRow()
+    {
+        QTemporaryDir dir;
+        SensorHistory h;
+        h.append(1.0, snapshotWith({{22, 1}}));
+        h.append(1.0, snapshotWith({{22, 2}, {23, 5}}));
+        const QString path = dir.filePath(QStringLiteral("d.csv"));
+        QVERIFY(h.exportCsv(path, {22, 23}, -kInf, kInf));
+        QCOMPARE(readAll(path), QByteArray("time_s,voltage[mV],current[mA]\n1,2,5\n"));
+    }
+
+    void csvErrors()
+    {
+        QTemporaryDir dir;
+        SensorHistory h;
+        h.append(1.0, snapshotWith({{22, 1}}));
+        QString error;
+        const QString impossible = dir.filePath(QStringLiteral("no/such/folder/x.csv"));
+        QVERIFY(!h.exportCsv(impossible, {22}, -kInf, kInf, &error));
+        QVERIFY(error.contains(impossible));
+        QVERIFY(!QFile::exists(impossible));
+
+        // A refused export leaves an existing file as it was.
+        const QString path = dir.filePath(QStringLiteral("keep.csv"));
+        {
+            QFile f(path);
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            f.write("precious\n");
+        }
+        error.clear();
+        QVERIFY(!h.exportCsv(path, {22, 100}, -kInf, kInf, &error));
+        QVERIFY(error.contains(QStringLiteral("100")));
+        QCOMPARE(readAll(path), QByteArray("precious\n"));
+        error.clear();
+        QVERIFY(!h.exportCsv(path, {}, -kInf, kInf, &error));
+        QVERIFY(!error.isEmpty());
+        QVERIFY(!h.exportCsv(path, {22}, std::nan(""), 1.0)); // no error pointer: no crash
+        QCOMPARE(readAll(path), QByteArray("precious\n"));
+    }
+};
+
+QTEST_MAIN(TestSensorHistory)
+#include "tst_sensor_history.moc"

@@ -1,0 +1,500 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "channel_chooser.h"
+#include "sensor_history.h"
+#include "sensor_plots.h"
+
+#include <QAction>
+#include <QComboBox>
+#include <QDir>
+#include <QFile>
+#include <QLabel>
+#include <QMenu>
+#include <QSignalSpy>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include <algorithm>
+#include <cmath>
+
+using oi::ProfileId;
+using oi::SensorSnapshot;
+
+namespace {
+
+// Samples every 0.1 s from `first` (in tenths): voltage and current always,
+// the wall only on whole seconds.
+void feed(SensorHistory &h, int firstTenth, int count)
+{
+    for (int k = firstTenth; k < firstTenth + count; ++k) {
+        SensorSnapshot s(oi::profile(ProfileId::Create2));
+        s.set(22, 14000 + k);
+        s.set(23, -k);
+        if (k % 10 == 0)
+            s.set(8, (k / 10) % 2);
+        QVERIFY(h.append(k / 10.0, s));
+    }
+}
+
+// Points of a graph whose time lies within the plot's visible range.
+int visiblePoints(QCustomPlot *plot, int graph)
+{
+    const QCPRange r = plot->xAxis->range();
+    auto data = plot->graph(graph)->data();
+    return int(data->findEnd(r.upper, false) - data->findBegin(r.lower, false));
+}
+
+int heldPoints(const SensorHistory &h, int id, const QCPRange &r)
+{
+    return int(h.upperBound(id, r.upper) - h.lowerBound(id, r.lower));
+}
+
+QByteArray readAll(const QString &path)
+{
+    QFile f(path);
+    return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+}
+
+// The tracer's value label, if it is showing.
+QLabel *visibleReadout(QCustomPlot *plot)
+{
+    auto *label = plot->findChild<QLabel *>(QStringLiteral("tracerReadout"));
+    return label && !label->isHidden() ? label : nullptr;
+}
+
+int visibleTracers(QCustomPlot *plot)
+{
+    int n = 0;
+    for (int i = 0; i < plot->itemCount(); ++i)
+        if (auto *tracer = qobject_cast<QCPItemTracer *>(plot->item(i)))
+            n += tracer->visible() ? 1 : 0;
+    return n;
+}
+
+} // namespace
+
+class TestSensorPlots : public QObject {
+    Q_OBJECT
+private slots:
+    void followsTheNewestSample()
+    {
+        SensorHistory h;
+        SensorPlots plots;
+        plots.setHistory(&h);
+        QVERIFY(plots.setChannels(0, {22}));
+        plots.setWindowSeconds(10);
+        feed(h, 0, 1000); // 0 .. 99.9 s
+        plots.refresh();
+        QCOMPARE(plots.timeRange().upper, 99.9);
+        QCOMPARE(plots.timeRange().lower, 89.9);
+        QCustomPlot *plot = plots.plot(0);
+        QCOMPARE(plot->xAxis->range().upper, 99.9);
+        QCOMPARE(plot->graphCount(), 1);
+        QCOMPARE(visiblePoints(plot, 0), heldPoints(h, 22, plot->xAxis->range()));
+        QCOMPARE(visiblePoints(plot, 0), 101);
+        QCOMPARE((plot->graph(0)->data()->constEnd() - 1)->key, 99.9);
+
+        feed(h, 1000, 50); // appended, not reloaded
+        plots.refresh();
+        QCOMPARE(plot->xAxis->range().upper, 104.9);
+        QCOMPARE(visiblePoints(plot, 0), heldPoints(h, 22, plot->xAxis->range()));
+        QCOMPARE((plot->graph(0)->data()->constEnd() - 1)->value, 14000.0 + 1049);
+        // The value axis spans what is visible.
+        QVERIFY(plot->yAxis->range().contains(14000 + 1049));
+        QVERIFY(plot->yAxis->range().contains(14000 + 949));
+        QVERIFY(!plot->yAxis->range().contains(14000 + 900));
+    }
+
+    void fillsTheWindowFromTheLeftAtFirst()
+    {
+        SensorHistory h;
+        SensorPlots plots;
+        plots.setHistory(&h);
+        plots.setChannels(0, {22});
+        plots.setWindowSeconds(10);
+        feed(h, 20, 20); // 2.0 .. 3.9 s
+        plots.refresh();
+        QCOMPARE(plots.timeRange().lower, 2.0);
+        QCOMPARE(plots.timeRange().upper, 12.0);
+        QCOMPARE(visiblePoints(plots.plot(0), 0), 20);
+    }
+
+    void redrawsOnlyWhenSomethingChanged()
+    {
+        SensorHistory h;
+        SensorPlots plots;
+        plots.setHistory(&h);
+        plots.addPlot({23});
+        plots.setChannels(0, {22});
+        feed(h, 0, 100);
+        plots.refresh();
+        QSignalSpy first(plots.plot(0), &QCustomPlot::afterReplot);
+        QSignalSpy second(plots.plot(1), &QCustomPlot::afterReplot);
+        plots.refresh();
+        plots.refresh();
+        QCOMPARE(first.count(), 0);
+        QCOMPARE(second.count(), 0);
+        feed(h, 100, 1);
+        plots.refresh();
+        QCOMPARE(first.count(), 1);
+        QCOMPARE(second.count(), 1);
+    }
+
+    void pauseStopsFollowingAndAllowsPanning()
+    {
+        SensorHistory h;
+        SensorPlots plots;
+        plots.setHistory(&h);
+        plots.setChannels(0, {22});
+        plots.setWindowSeconds(10);
+        feed(h, 0, 300);
+        plots.refresh();
+        const QCPRange before = plots.timeRange();
+        QCOMPARE(plots.plot(0)->interactions(), QCP::Interactions());
+
+        QSignalSpy paused(&plots, &SensorPlots::pausedChanged);
+        plots.setPaused(true);
+        QCOMPARE(paused.count(), 1);
+        QVERIFY(plots.plot(0)->interactions().testFlag(QCP::iRangeDrag));
+        QVERIFY(plots.plot(0)->interactions().testFlag(QCP::iRangeZoom));
+        QCOMPARE(plots.plot(0)->axisRect()->rangeDrag(), Qt::Horizontal);
+        feed(h, 300, 100);
+        plots.refresh();
+        QCOMPARE(plots.timeRange(), before);
+        QCOMPARE(plots.plot(0)->xAxis->range(), before);
+
+        // Panning back to where the plot holds no data loads it.
+        plots.setTimeRange(5.0, 10.0);
+        plots.refresh();
+        QCOMPARE(plots.plot(0)->xAxis->range(), QCPRange(5.0, 10.0));
+        QCOMPARE(visiblePoints(plots.plot(0), 0), heldPoints(h, 22, QCPRange(5.0, 10.0)));
+        QCOMPARE(visiblePoints(plots.plot(0), 0), 51);
+
+        plots.setPaused(false);
+        plots.refresh();
+        QCOMPARE(plots.timeRange().lower, 29.9);
+        QCOMPARE(plots.timeRange().upper, 39.9);
+        QCOMPARE(visiblePoints(plots.plot(0), 0), heldPoints(h, 22, plots.timeRange()));
+        QCOMPARE(plots.plot(0)->interactions(), QCP::Interactions());
+    }
+
+    void dragOnOnePlotMovesTheOthers()
+    {
+        SensorHistory h;
+        SensorPlots plots;
+        plots.setHistory(&h);
+        plots.setChannels(0, {22});
+        plots.addPlot({23});
+        feed(h, 0, 600);
+        plots.refresh();
+        plots.setPaused(true);
+        plots.plot(0)->xAxis->setRange(12.0, 20.0); // what a drag does
+        QCOMPARE(plots.plot(1)->xAxis->range(), QCPRange(12.0, 20.0));
+        QCOMPARE(plots.timeRange(), QCPRange(12.0, 20.0));
+    }
+
+    void windowChoices()
+    {
+        SensorHistory h;
+        SensorPlots plots;
+        plots.setHistory(&h);
+        plots.setChannels(0, {22});
+        feed(h, 0, 7000); // 700 s
+        QSignalSpy changed(&plots, &SensorPlots::windowSecondsChanged);
+        plots.setWindowSeconds(30);
+        plots.refresh();
+        QCOMPARE(plots.timeRange().size(), 30.0);
+        QCOMPARE(plots.timeRange().upper, 699.9);
+        QCOMPARE(visiblePoints(plots.plot(0), 0), heldPoints(h, 22, plots.timeRange()));
+        plots.setWindowSeconds(600);
+        plots.refresh();
+        QCOMPARE(plots.timeRange().size(), 600.0);
+        QCOMPARE(visiblePoints(plots.plot(0), 0), heldPoints(h, 22, plots.timeRange()));
+        QCOMPARE(changed.count(), 2);
+
+        auto *box = plots.findChild<QComboBox *>();
+        QVERIFY(box);
+        QCOMPARE(box->currentData().toDouble(), 600.0);
+        plots.setWindowSeconds(1); // bounded
+        QCOMPARE(plots.windowSeconds(), SensorPlots::kMinWindowSeconds);
+        plots.setWindowSeconds(100000);
+        QCOMPARE(plots.windowSeconds(), SensorPlots::kMaxWindowSeconds);
+        plots.setWindowSeconds(45); // between the choices: gets its own entry
+        QCOMPARE(box->currentData().toDouble(), 45.0);
+        QCOMPARE(box->currentText(), QStringLiteral("45 s"));
+    }
+
+    void channelsPerPlot()
+    {
+        SensorPlots plots;
+        QCOMPARE(plots.plotCount(), 1);
+        QCOMPARE(plots.addPlot({22, 23}), 1);
+        QCOMPARE(plots.plotCount(), 2);
+        QCOMPARE(plots.channels(1), (std::vector<int>{22, 23}));
+        QCOMPARE(plots.plot(1)->graphCount(), 2);
+        QCOMPARE(plots.plot(1)->graph(1)->name(), QStringLiteral("Current [mA]"));
+        QCOMPARE(plots.plot(1)->yAxis->label(), QStringLiteral("")); // mV and mA
+        QVERIFY(plots.setChannels(0, {46, 47, 46}));
+        QCOMPARE(plots.channels(0), (std::vector<int>{46, 47}));
+        QCOMPARE(plots.plot(0)->yAxis->label(), QStringLiteral(""));
+        QVERIFY(plots.setChannels(0, {54, 55}));
+        QCOMPARE(plots.plot(0)->yAxis->label(), QStringLiteral("mA"));
+
+        QVERIFY(!plots.setChannels(0, {100}));       // a group, not a packet
+        QVERIFY(!plots.setChannels(2, {22}));        // no such plot
+        QVERIFY(!plots.setChannels(0, {22, 23, 24, 25, 26, 27, 28, 29, 30}));
+        QCOMPARE(plots.channels(0), (std::vector<int>{54, 55}));
+        QCOMPARE(plots.plottedChannels(), (std::vector<int>{54, 55, 22, 23}));
+
+        // Ticking a channel in the chooser adds it.
+        QAction *voltage = plots.channelChooser(0)->actionFor(22);
+        QVERIFY(voltage && !voltage->isChecked());
+        voltage->trigger();
+        QCOMPARE(plots.channels(0), (std::vector<int>{54, 55, 22}));
+        QVERIFY(voltage->isChecked());
+        auto *battery = qobject_cast<QMenu *>(voltage->parent());
+        QVERIFY(battery);
+        QCOMPARE(battery->title(), QStringLiteral("Battery (1)"));
+        voltage->trigger();
+        QCOMPARE(plots.channels(0), (std::vector<int>{54, 55}));
+
+        QVERIFY(plots.removePlot(1));
+        QCOMPARE(plots.plotCount(), 1);
+        QVERIFY(!plots.removePlot(0)); // the last plot stays
+        QCOMPARE(plots.plottedChannels(), (std::vector<int>{54, 55}));
+    }
+
+    void chooserGroupsCoverEveryPacketOnce()
+    {
+        for (ProfileId id : oi::allProfiles()) {
+            const oi::RobotProfile &profile = oi::profile(id);
+            std::vector<int> seen;
+            const auto groups = ChannelChooser::groups(profile);
+            QVERIFY(groups.size() >= 6);
+            for (const auto &g : groups) {
+                QVERIFY(!g.title.isEmpty());
+                QVERIFY(!g.ids.empty());
+                seen.insert(seen.end(), g.ids.begin(), g.ids.end());
+            }
+            std::sort(seen.begin(), seen.end());
+            std::vector<int> all;
+            for (const oi::PacketInfo &info : profile.packets())
+                all.push_back(info.id);
+            std::sort(all.begin(), all.end());
+            QCOMPARE(seen, all);
+        }
+        const auto create2 = ChannelChooser::groups(oi::profile(ProfileId::Create2));
+        QCOMPARE(create2.front().title, QStringLiteral("Bumps & cliffs"));
+        QCOMPARE(create2[1].title, QStringLiteral("Battery"));
+        QCOMPARE(create2[1].ids, (std::vector<int>{21, 22, 23, 24, 25, 26, 34}));
+    }
+
+    void profileChangeDropsMissingChannels()
+    {
+        SensorPlots plots;
+        QVERIFY(plots.setChannels(0, {22, 46}));
+        plots.setProfile(oi::profile(ProfileId::Create1));
+        QCOMPARE(plots.channels(0), (std::vector<int>{22}));
+        QCOMPARE(plots.plot(0)->graphCount(), 1);
+        QVERIFY(!plots.channelChooser(0)->actionFor(46));
+        QVERIFY(plots.channelChooser(0)->actionFor(33));
+    }
+
+    void exportsTheVisibleRange()
+    {
+        QTemporaryDir dir;
+        SensorHistory h;
+        SensorPlots plots;
+        plots.setHistory(&h);
+        plots.setWindowSeconds(10);
+        plots.setChannels(0, {22});
+        plots.addPlot({8, 22});
+        feed(h, 0, 201); // 0 .. 20 s
+        plots.refresh();
+        QCOMPARE(plots.timeRange(), QCPRange(10.0, 20.0));
+
+        QByteArray expected = "time_s,voltage[mV],wall\n";
+        for (int k = 100; k <= 200; ++k) {
+            expected += QByteArray::number(k / 10.0) + ',' + QByteArray::number(14000 + k) + ',';
+            if (k % 10 == 0)
+                expected += QByteArray::number((k / 10) % 2);
+            expected += '\n';
+        }
+        const QString visible = dir.filePath(QStringLiteral("visible.csv"));
+        QString error;
+        QVERIFY2(plots.exportVisibleCsv(visible, &error), qPrintable(error));
+        QCOMPARE(readAll(visible), expected);
+
+        const QString all = dir.filePath(QStringLiteral("all.csv"));
+        QVERIFY(plots.exportAllCsv(all, &error));
+        QCOMPARE(readAll(all).count('\n'), 1 + 201);
+        QVERIFY(readAll(all).startsWith("time_s,voltage[mV],wall\n0,14000,0\n0.1,14001,\n"));
+
+        QVERIFY(!plots.exportVisibleCsv(dir.filePath(QStringLiteral("no/dir/x.csv")), &error));
+        QVERIFY(error.contains(QStringLiteral("no/dir/x.csv")));
+        SensorPlots empty;
+        QVERIFY(!empty.exportAllCsv(all, &error));
+        QVERIFY(!error.isEmpty());
+    }
+
+    void spaceTogglesPause()
+    {
+        SensorPlots plots;
+        plots.resize(600, 400);
+        plots.show();
+        plots.activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(&plots));
+        plots.setFocus();
+        QSignalSpy spy(&plots, &SensorPlots::pausedChanged);
+        QTest::keyClick(&plots, Qt::Key_Space);
+        QVERIFY(plots.isPaused());
+        QTest::keyClick(&plots, Qt::Key_Space);
+        QVERIFY(!plots.isPaused());
+        QTest::keyClick(&plots, Qt::Key_Space, Qt::ControlModifier);
+        QVERIFY(plots.isPaused());
+        QCOMPARE(spy.count(), 3);
+        // From inside a plot too.
+        plots.plot(0)->setFocus();
+        QTest::keyClick(plots.plot(0), Qt::Key_Space);
+        QVERIFY(!plots.isPaused());
+    }
+
+    void tracerReadsValuesWhilePaused()
+    {
+        SensorHistory h;
+        SensorPlots plots;
+        plots.resize(700, 400);
+        plots.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&plots));
+        plots.setHistory(&h);
+        plots.setWindowSeconds(10);
+        plots.setChannels(0, {22, 23});
+        feed(h, 0, 101);
+        plots.refresh();
+        QCustomPlot *plot = plots.plot(0);
+        plot->replot();
+        const QPointF at(plot->xAxis->coordToPixel(5.0), plot->yAxis->coordToPixel(plot->yAxis->range().center()));
+
+        QMouseEvent live(QEvent::MouseMove, at, plot->mapToGlobal(at), Qt::NoButton, Qt::NoButton, Qt::NoModifier);
+        QCoreApplication::sendEvent(plot, &live);
+        QVERIFY(!visibleReadout(plot)); // no tracer while following
+
+        plots.setPaused(true);
+        QMouseEvent paused(QEvent::MouseMove, at, plot->mapToGlobal(at), Qt::NoButton, Qt::NoButton, Qt::NoModifier);
+        QCoreApplication::sendEvent(plot, &paused);
+        QLabel *readout = visibleReadout(plot);
+        QVERIFY(readout);
+        QVERIFY(readout->text().startsWith(QStringLiteral("t = 5 s<br>")));
+        QVERIFY(readout->text().contains(QStringLiteral("Voltage: 14050 mV<br>")));
+        QVERIFY(readout->text().endsWith(QStringLiteral("Current: -50 mA")));
+        QCOMPARE(visibleTracers(plot), 2);
+        // Inside the plot area.
+        QVERIFY(plot->axisRect()->rect().contains(readout->geometry()));
+
+        QEvent leave(QEvent::Leave);
+        QCoreApplication::sendEvent(plot, &leave);
+        QVERIFY(!visibleReadout(plot));
+        QCOMPARE(visibleTracers(plot), 0);
+    }
+
+    void clearedHistoryEmptiesThePlots()
+    {
+        SensorHistory h;
+        SensorPlots plots;
+        plots.setHistory(&h);
+        plots.setChannels(0, {22});
+        feed(h, 0, 50);
+        plots.refresh();
+        QCOMPARE(plots.plot(0)->graph(0)->dataCount(), 50);
+        h.clear();
+        plots.refresh();
+        QCOMPARE(plots.plot(0)->graph(0)->dataCount(), 0);
+        plots.setHistory(nullptr);
+        plots.refresh();
+        QCOMPARE(plots.plot(0)->graph(0)->dataCount(), 0);
+    }
+
+    // Renders three plots of a realistic drive to PNG, for a person to look at.
+    void snapshot()
+    {
+        const QByteArray dir = qgetenv("ROOMBA_WIDGET_SNAPSHOT_DIR");
+        if (dir.isEmpty())
+            QSKIP("set ROOMBA_WIDGET_SNAPSHOT_DIR to write sensor_plots.png");
+        SensorHistory h;
+        for (int k = 0; k < 66.7 * 180; ++k) {
+            const double t = k * 0.015;
+            SensorSnapshot s(oi::profile(ProfileId::Create2));
+            const bool driving = std::fmod(t, 40.0) > 8.0;
+            s.set(22, int(14900 - t * 1.8 + 6 * std::sin(k * 0.11) + (driving ? -120 : 0)));
+            s.set(23, int((driving ? -1150 : -380) + 60 * std::sin(k * 0.9) + 35 * std::sin(k * 0.13)));
+            s.set(54, int(driving ? 180 + 40 * std::sin(k * 0.05) : 0));
+            s.set(55, int(driving ? 170 + 45 * std::sin(k * 0.07 + 1) : 0));
+            const double wall = std::max(0.0, std::sin(t / 9.0));
+            s.set(46, int(20 + 900 * wall * wall + 10 * std::sin(k * 1.3)));
+            s.set(47, int(15 + 400 * std::pow(std::max(0.0, std::sin(t / 4.0 + 1)), 2)));
+            s.set(48, int(30 + 1600 * std::pow(std::max(0.0, std::sin(t / 6.0 + 2)), 4)));
+            QVERIFY(h.append(t, s));
+        }
+        SensorPlots plots;
+        plots.setHistory(&h);
+        plots.setWindowSeconds(60);
+        plots.setChannels(0, {22});
+        plots.addPlot({23, 54, 55});
+        plots.addPlot({46, 47, 48});
+        plots.resize(900, 600);
+        plots.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&plots));
+        plots.refresh();
+        QCoreApplication::processEvents();
+        QVERIFY(plots.grab().save(QDir(QString::fromLocal8Bit(dir)).filePath(QStringLiteral("sensor_plots.png"))));
+
+        plots.setPaused(true);
+        plots.setTimeRange(120, 150);
+        plots.refresh();
+        QCustomPlot *plot = plots.plot(1);
+        const QPointF at(plot->xAxis->coordToPixel(134.0), plot->height() / 2.0);
+        QMouseEvent move(QEvent::MouseMove, at, plot->mapToGlobal(at), Qt::NoButton, Qt::NoButton, Qt::NoModifier);
+        QCoreApplication::sendEvent(plot, &move);
+        QCoreApplication::processEvents();
+        plot->replot();
+        QVERIFY(plots.grab().save(QDir(QString::fromLocal8Bit(dir)).filePath(QStringLiteral("sensor_plots_paused.png"))));
+
+        // The channel menu and one of its groups.
+        QMenu *menu = plots.channelChooser(1)->menu();
+        menu->popup(plots.mapToGlobal(QPoint(10, 60)));
+        QVERIFY(QTest::qWaitForWindowExposed(menu));
+        QVERIFY(menu->grab().save(QDir(QString::fromLocal8Bit(dir)).filePath(QStringLiteral("channel_menu.png"))));
+        QMenu *battery = menu->actions().at(1)->menu();
+        QVERIFY(battery);
+        battery->popup(plots.mapToGlobal(QPoint(200, 60)));
+        QVERIFY(QTest::qWaitForWindowExposed(battery));
+        QVERIFY(battery->grab().save(QDir(QString::fromLocal8Bit(dir)).filePath(QStringLiteral("channel_menu_battery.png"))));
+        battery->hide();
+        menu->hide();
+
+        // Empty plots on a dark palette: the hints and axes must still read.
+        QPalette dark;
+        dark.setColor(QPalette::Window, QColor(45, 47, 52));
+        dark.setColor(QPalette::Base, QColor(30, 32, 36));
+        dark.setColor(QPalette::AlternateBase, QColor(40, 42, 46));
+        dark.setColor(QPalette::Text, QColor(225, 225, 225));
+        dark.setColor(QPalette::WindowText, QColor(225, 225, 225));
+        dark.setColor(QPalette::Button, QColor(55, 57, 62));
+        dark.setColor(QPalette::ButtonText, QColor(225, 225, 225));
+        dark.setColor(QPalette::Mid, QColor(90, 92, 98));
+        SensorHistory waiting;
+        SensorPlots empty;
+        empty.setPalette(dark);
+        empty.setHistory(&waiting);
+        empty.setChannels(0, {22});
+        empty.addPlot();
+        empty.resize(900, 400);
+        empty.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&empty));
+        empty.refresh();
+        QCoreApplication::processEvents();
+        QVERIFY(empty.grab().save(QDir(QString::fromLocal8Bit(dir)).filePath(QStringLiteral("sensor_plots_empty_dark.png"))));
+    }
+};
+
+QTEST_MAIN(TestSensorPlots)
+#include "tst_sensor_plots.moc"

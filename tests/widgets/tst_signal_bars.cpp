@@ -1,0 +1,163 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "sensor_scenes.h"
+#include "signal_bars.h"
+
+#include <QBarSet>
+#include <QChart>
+#include <QStackedBarSeries>
+#include <QTest>
+#include <QValueAxis>
+
+using namespace oi;
+using namespace sensor_scenes;
+
+namespace {
+
+const QStringList kCliffCategories = {"Cliff L", "Cliff FL", "Cliff FR", "Cliff R"};
+const QStringList kLightBumpCategories = {"Light L",  "Light FL", "Light CL",
+                                          "Light CR", "Light FR", "Light R"};
+
+QList<QBarSet *> barSets(const SignalBars &w)
+{
+    for (QAbstractSeries *series : w.chart()->series())
+        if (auto *bars = qobject_cast<QStackedBarSeries *>(series))
+            return bars->barSets();
+    return {};
+}
+
+} // namespace
+
+class TestSignalBars : public QObject {
+    Q_OBJECT
+private slots:
+    void fixedAxis()
+    {
+        SignalBars w;
+        QCOMPARE(w.valueAxis()->min(), 0.0);
+        QCOMPARE(w.valueAxis()->max(), 4095.0);
+        SensorSnapshot s(profile(ProfileId::Create2));
+        s.set(28, 4095);
+        w.setSnapshot(s);
+        QCOMPARE(w.valueAxis()->max(), 4095.0); // the axis never follows the data
+        QVERIFY(w.minimumSizeHint().width() > 0);
+    }
+
+    void categoriesFollowTheProfile()
+    {
+        SignalBars w;
+        w.setProfile(profile(ProfileId::Create2));
+        QCOMPARE(w.categories(), kCliffCategories + kLightBumpCategories);
+        w.setProfile(profile(ProfileId::Create1));
+        QCOMPARE(w.categories(), kCliffCategories);
+        QCOMPARE(w.barValues().size(), 4);
+        w.setProfile(profile(ProfileId::Roomba500));
+        QCOMPARE(w.categories(), kCliffCategories + kLightBumpCategories);
+        QCOMPARE(w.barValues().size(), 10);
+    }
+
+    void valuesFromTheSnapshot_data()
+    {
+        QTest::addColumn<ProfileId>("id");
+        QTest::newRow("roomba500") << ProfileId::Roomba500;
+        QTest::newRow("create2") << ProfileId::Create2;
+        QTest::newRow("create1") << ProfileId::Create1;
+    }
+    void valuesFromTheSnapshot()
+    {
+        QFETCH(ProfileId, id);
+        SignalBars w;
+        w.setProfile(profile(id));
+        w.setSnapshot(decoded(profile(id), busyValues(profile(id))));
+        QList<qreal> expected = {2610, 2890, 180, 2480};
+        if (id != ProfileId::Create1)
+            expected += QList<qreal>{40, 310, 3620, 1210, 2980, 95};
+        QCOMPARE(w.barValues(), expected);
+        QCOMPARE(w.barValue("Cliff FR"), 180.0);
+        QCOMPARE(w.barValue("Light CL"), id == ProfileId::Create1 ? -1.0 : 3620.0);
+        QCOMPARE(w.barValue("nonsense"), -1.0);
+
+        // A newer snapshot replaces every bar; missing packets read as 0.
+        SensorSnapshot s(profile(id));
+        s.set(31, 4095);
+        w.setSnapshot(s);
+        QCOMPARE(w.barValue("Cliff R"), 4095.0);
+        QCOMPARE(w.barValue("Cliff L"), 0.0);
+        if (id != ProfileId::Create1)
+            QCOMPARE(w.barValue("Light CL"), 0.0);
+    }
+
+    void cliffAndLightBumpBarsDiffer()
+    {
+        SignalBars w;
+        w.setProfile(profile(ProfileId::Create2));
+        w.setSnapshot(decoded(profile(ProfileId::Create2), busyValues(profile(ProfileId::Create2))));
+        const QList<QBarSet *> sets = barSets(w);
+        QCOMPARE(sets.size(), 2);
+        QVERIFY(sets[0]->color() != sets[1]->color());
+        QCOMPARE(sets[0]->color(), w.cliffColour());
+        QCOMPARE(sets[1]->color(), w.lightBumpColour());
+        // Each set carries only its own kind, so bars do not pile up.
+        for (int i = 0; i < 4; ++i)
+            QCOMPARE(sets[1]->at(i), 0.0);
+        for (int i = 4; i < 10; ++i)
+            QCOMPARE(sets[0]->at(i), 0.0);
+
+        // The bars are drawn in those colours: sample the tallest of each kind.
+        w.resize(640, 400);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        const QImage image = w.grab().toImage();
+        auto barPixel = [&](int category, qreal value) {
+            const QPointF at = w.chart()->mapToPosition(QPointF(category, value / 2));
+            return image.pixelColor(w.mapFromScene(w.chart()->mapToScene(at)));
+        };
+        QCOMPARE(barPixel(1, 2890), w.cliffColour());
+        QCOMPARE(barPixel(6, 3620), w.lightBumpColour());
+    }
+
+    void staleGreysTheBars()
+    {
+        SignalBars w;
+        w.setStale(true);
+        QVERIFY(w.isStale());
+        QVERIFY(w.chart()->title().startsWith("STALE"));
+        const QList<QBarSet *> sets = barSets(w);
+        QVERIFY(isGrey(sets[0]->color()));
+        QVERIFY(sets[0]->color() != w.cliffColour());
+        w.setStale(false);
+        QCOMPARE(sets[0]->color(), w.cliffColour());
+        QVERIFY(!w.chart()->title().startsWith("STALE"));
+    }
+
+    void screenshots()
+    {
+        if (qEnvironmentVariableIsEmpty("ROOMBA_SCREENSHOTS"))
+            QSKIP("set ROOMBA_SCREENSHOTS to a folder to save screenshots");
+        const QSize sizes[] = {{480, 480}, {800, 600}, {460, 280}};
+        for (ProfileId id : allProfiles()) {
+            for (QSize size : sizes) {
+                for (bool dark : {false, true}) {
+                    SignalBars w;
+                    w.setPalette(dark ? darkPalette() : lightPalette());
+                    w.setProfile(profile(id));
+                    w.setSnapshot(decoded(profile(id), busyValues(profile(id))));
+                    w.resize(size);
+                    w.show();
+                    QVERIFY(QTest::qWaitForWindowExposed(&w));
+                    const QString name = QStringLiteral("bars_%1_%2x%3_%4")
+                                             .arg(QString::fromUtf8(profile(id).key.data(),
+                                                                    qsizetype(profile(id).key.size())))
+                                             .arg(size.width())
+                                             .arg(size.height())
+                                             .arg(dark ? "dark" : "light");
+                    saveScreenshot(w, name);
+                    w.setStale(true);
+                    saveScreenshot(w, name + "_stale");
+                }
+            }
+        }
+    }
+};
+
+QTEST_MAIN(TestSignalBars)
+#include "tst_signal_bars.moc"

@@ -1,0 +1,126 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "robot_profile.h"
+
+#include <QWidget>
+
+#include <qcustomplot.h>
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+class ChannelChooser;
+class QComboBox;
+class QLabel;
+class QPushButton;
+class QSplitter;
+class SensorHistory;
+
+// Stacked time plots of the sensor history, sharing one time axis.
+//
+// Each plot shows the channels (sensor packets) chosen for it. Live, the time
+// axis follows the newest sample over a window of 10 s .. 10 min. Paused
+// (Space or Ctrl+Space, or the Pause button), the axis stays put and the user
+// can drag and wheel-zoom it and read values with a tracer under the mouse.
+// The visible range or the whole history exports to CSV.
+//
+// The widget only reads the history; it redraws in refresh(), which the
+// application calls from its display timer, and only plots whose data or
+// range changed are redrawn.
+class SensorPlots : public QWidget {
+    Q_OBJECT
+public:
+    static constexpr double kMinWindowSeconds = 10.0;
+    static constexpr double kMaxWindowSeconds = 600.0;
+    static constexpr int kMaxChannelsPerPlot = 8;
+    static constexpr int kMaxPlots = 8;
+
+    explicit SensorPlots(QWidget *parent = nullptr);
+    ~SensorPlots() override;
+
+    // Not owned; the session keeps it alive while it is set.
+    void setHistory(const SensorHistory *history);
+    void setProfile(const oi::RobotProfile &profile);
+    const oi::RobotProfile &robotProfile() const { return *m_profile; }
+
+    int plotCount() const { return int(m_panels.size()); }
+    // Adds a plot at the bottom and returns its index, or -1 at kMaxPlots.
+    int addPlot(const std::vector<int> &channels = {});
+    // Removes a plot; the last remaining plot stays.
+    bool removePlot(int plotIndex);
+    // Shows these packets in the plot. Refuses (returns false, changes
+    // nothing) an index out of range, a packet the profile lacks, or more
+    // than kMaxChannelsPerPlot packets. Duplicates are shown once.
+    bool setChannels(int plotIndex, std::vector<int> ids);
+    std::vector<int> channels(int plotIndex) const;
+    // Every plotted channel once, in plot order: what the exports write.
+    std::vector<int> plottedChannels() const;
+
+    bool isPaused() const { return m_paused; }
+    void setPaused(bool paused);
+    // The live window, bounded to kMinWindowSeconds .. kMaxWindowSeconds.
+    void setWindowSeconds(double seconds);
+    double windowSeconds() const { return m_windowSeconds; }
+
+    // The time range every plot shows. setTimeRange moves it; while live,
+    // the next refresh() puts it back on the newest sample.
+    QCPRange timeRange() const { return m_timeRange; }
+    void setTimeRange(double from, double to);
+
+    // CSV of the plotted channels over the visible range or over everything
+    // the history holds. On failure returns false and says why in `error`.
+    bool exportVisibleCsv(const QString &path, QString *error = nullptr) const;
+    bool exportAllCsv(const QString &path, QString *error = nullptr) const;
+
+    // The plot itself, for tests and screenshots; nullptr out of range.
+    QCustomPlot *plot(int plotIndex) const;
+    ChannelChooser *channelChooser(int plotIndex) const;
+
+public slots:
+    // Brings the plots up to date with the history. Cheap when nothing changed.
+    void refresh();
+
+signals:
+    void pausedChanged(bool paused);
+    void windowSecondsChanged(double seconds);
+
+protected:
+    bool eventFilter(QObject *watched, QEvent *event) override;
+    void changeEvent(QEvent *event) override;
+
+private:
+    struct GraphFeed;
+    struct Panel;
+
+    void rebuildGraphs(Panel &panel);
+    bool updateFeed(GraphFeed &feed, double from, double to);
+    void rescaleValues(Panel &panel);
+    void applyTheme(Panel &panel);
+    void updateHint(Panel &panel);
+    void updateLegend(Panel &panel);
+    void updateAxisLabels();
+    void applyPaused();
+    void syncTimeRange(const QCPRange &range, const QCustomPlot *source);
+    void showTracer(Panel &panel, const QPointF &mouse);
+    void hideTracer(Panel &panel);
+    void onChannelToggled(Panel *panel, int id, bool on);
+    void exportInteractively(bool visibleOnly);
+    int indexOf(const Panel *panel) const;
+
+    const SensorHistory *m_history = nullptr;
+    const oi::RobotProfile *m_profile;
+    std::vector<std::unique_ptr<Panel>> m_panels;
+    QSplitter *m_splitter;
+    QPushButton *m_pauseButton;
+    QComboBox *m_windowBox;
+    QPushButton *m_addButton;
+    QPushButton *m_exportButton;
+    QLabel *m_status;
+    bool m_paused = false;
+    double m_windowSeconds = 60.0;
+    QCPRange m_timeRange{0.0, 60.0};
+    bool m_syncing = false;
+    std::uint64_t m_seenGeneration = ~std::uint64_t{0};
+};

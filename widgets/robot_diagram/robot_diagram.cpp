@@ -1,0 +1,640 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "robot_diagram.h"
+
+#include <QEvent>
+#include <QFontMetricsF>
+#include <QHelpEvent>
+#include <QPainter>
+#include <QPainterPath>
+#include <QToolTip>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numbers>
+
+using display::State;
+
+namespace {
+
+// The scene is 1000 units wide with the robot's centre at the origin; y
+// grows towards the back of the robot. The body's radius of 250 units stands
+// for the real 170 mm. The status chips fill whatever height is left below.
+constexpr qreal kSceneWidthLightBumps = 1000;
+constexpr qreal kSceneWidthPlain = 900;
+constexpr qreal kSceneTopLightBumps = -470; // room for the light-bump bars
+constexpr qreal kSceneTopPlain = -320;
+constexpr qreal kBodyRadius = 250;
+constexpr qreal kBumperInner = 252;
+constexpr qreal kBumperOuter = 282;
+constexpr qreal kBumperOuterBumped = 298;
+constexpr qreal kBumperGapDegrees = 1.5;
+constexpr qreal kBumperRightStart = -12; // degrees, 0 = robot's right, 90 = front
+constexpr qreal kBumperLeftEnd = 192;
+constexpr qreal kLightBumpBase = 306;
+constexpr qreal kLightBumpLength = 122;
+constexpr qreal kLightBumpLabelRadius = 452;
+constexpr qreal kLightBumpHalfWidthDegrees = 7;
+constexpr qreal kCliffLampRadius = 26;
+constexpr QSizeF kCliffLabelSize(98, 58);
+constexpr qreal kChipTop = 272;
+constexpr qreal kChipMinHeight = 80;
+constexpr qreal kChipMaxHeight = 118;
+constexpr qreal kChipGap = 10;
+constexpr qreal kChipRows = 3;
+constexpr qreal kChipBottomMargin = 8;
+constexpr qreal kSceneBottom = kChipTop + kChipRows * (kChipMinHeight + kChipGap);
+constexpr qreal kSignalMax = 4095;
+
+// Left to right across the front, as bits 0..5 of packet 45 run.
+constexpr std::array<qreal, 6> kLightBumperAngles = {168, 136, 104, 76, 44, 12};
+
+QPointF polar(qreal radius, qreal degrees)
+{
+    const qreal a = degrees * std::numbers::pi / 180.0;
+    return {radius * std::cos(a), -radius * std::sin(a)};
+}
+
+QRectF circleRect(qreal radius) { return {-radius, -radius, 2 * radius, 2 * radius}; }
+
+// A ring segment between two radii, from `startDegrees` counter-clockwise
+// through `sweepDegrees`.
+QPainterPath ringSegment(qreal inner, qreal outer, qreal startDegrees, qreal sweepDegrees)
+{
+    QPainterPath path;
+    path.arcMoveTo(circleRect(outer), startDegrees);
+    path.arcTo(circleRect(outer), startDegrees, sweepDegrees);
+    path.arcTo(circleRect(inner), startDegrees + sweepDegrees, -sweepDegrees);
+    path.closeSubpath();
+    return path;
+}
+
+QPointF cliffLampPoint(oi::CliffSensor sensor)
+{
+    switch (sensor) {
+    case oi::CliffSensor::Left: return {-195, -80};
+    case oi::CliffSensor::FrontLeft: return {-80, -205};
+    case oi::CliffSensor::FrontRight: return {80, -205};
+    case oi::CliffSensor::Right: return {195, -80};
+    }
+    return {};
+}
+
+// The number and bar sit beside the lamp, towards the middle of the robot.
+QRectF cliffLabelRect(oi::CliffSensor sensor)
+{
+    QPointF centre;
+    switch (sensor) {
+    case oi::CliffSensor::Left: centre = {-115, -80}; break;
+    case oi::CliffSensor::FrontLeft: centre = {-80, -145}; break;
+    case oi::CliffSensor::FrontRight: centre = {80, -145}; break;
+    case oi::CliffSensor::Right: centre = {115, -80}; break;
+    }
+    return {centre - QPointF(kCliffLabelSize.width() / 2, kCliffLabelSize.height() / 2),
+            kCliffLabelSize};
+}
+
+constexpr std::array<oi::CliffSensor, 4> kCliffs = {
+    oi::CliffSensor::Left, oi::CliffSensor::FrontLeft, oi::CliffSensor::FrontRight,
+    oi::CliffSensor::Right};
+
+constexpr QRectF kWheelLeft(-195, -30, 44, 110);
+constexpr QRectF kWheelRight(151, -30, 44, 110);
+constexpr QPointF kCaster(0, -18); // Create 1, drawn between the cliff labels
+constexpr qreal kCasterRadius = 24;
+constexpr QPointF kOmniReceiver(0, -228);
+constexpr QRectF kWall(316, -10, 18, 160);
+constexpr QRectF kCargoBay(-125, 62, 250, 146);
+
+bool isDark(const QPalette &palette) { return palette.color(QPalette::Window).lightness() < 128; }
+
+// The colour of signal strengths, matching the bars in SignalBars.
+QColor cliffSignalColour(const QPalette &palette)
+{
+    return isDark(palette) ? QColor(70, 200, 200) : QColor(0, 130, 140);
+}
+QColor lightBumpSignalColour(const QPalette &palette)
+{
+    return isDark(palette) ? QColor(110, 160, 245) : QColor(40, 100, 200);
+}
+
+QString signalText(const oi::SensorSnapshot &s, int packetId)
+{
+    return s.has(packetId) ? QString::number(s.raw(packetId)) : QStringLiteral("\u2014");
+}
+
+} // namespace
+
+RobotDiagram::RobotDiagram(QWidget *parent)
+    : QWidget(parent), m_snapshot(*m_profile)
+{
+    setAttribute(Qt::WA_OpaquePaintEvent);
+    setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Expanding);
+}
+
+void RobotDiagram::setProfile(const oi::RobotProfile &profile)
+{
+    if (m_profile == &profile)
+        return;
+    m_profile = &profile;
+    m_snapshot = oi::SensorSnapshot(profile);
+    update();
+}
+
+void RobotDiagram::setSnapshot(const oi::SensorSnapshot &snapshot)
+{
+    m_snapshot = snapshot;
+    update();
+}
+
+void RobotDiagram::setStale(bool stale)
+{
+    if (m_stale == stale)
+        return;
+    m_stale = stale;
+    update();
+}
+
+QSize RobotDiagram::minimumSizeHint() const { return {360, 360}; }
+QSize RobotDiagram::sizeHint() const { return {520, 520}; }
+
+qreal RobotDiagram::sceneTop() const
+{
+    return isCreate1() ? kSceneTopPlain : kSceneTopLightBumps;
+}
+
+qreal RobotDiagram::sceneScale() const
+{
+    const qreal sceneWidth = isCreate1() ? kSceneWidthPlain : kSceneWidthLightBumps;
+    const qreal s = std::min(width() / sceneWidth, height() / (kSceneBottom - sceneTop()));
+    return std::max<qreal>(1e-3, s);
+}
+
+qreal RobotDiagram::topOffset() const
+{
+    // On a tall widget, once the chips are as tall as they get, the drawing
+    // and the chips sit in the middle rather than at the top.
+    const qreal content = kChipTop - sceneTop() + kChipRows * kChipMaxHeight
+                          + (kChipRows - 1) * kChipGap + kChipBottomMargin;
+    return std::max<qreal>(0, (height() - content * sceneScale()) / 2);
+}
+
+QTransform RobotDiagram::sceneToWidget() const
+{
+    const qreal s = sceneScale();
+    QTransform t;
+    t.translate(width() / 2.0, topOffset() - sceneTop() * s);
+    t.scale(s, s);
+    return t;
+}
+
+QPointF RobotDiagram::cliffSensorCentre(oi::CliffSensor sensor) const
+{
+    return sceneToWidget().map(cliffLampPoint(sensor));
+}
+
+QRectF RobotDiagram::cliffSignalRect(oi::CliffSensor sensor) const
+{
+    return sceneToWidget().mapRect(cliffLabelRect(sensor));
+}
+
+QPointF RobotDiagram::bumperCentre(bool left) const
+{
+    // Midway between light bumpers, so the point is bumper and nothing else.
+    return sceneToWidget().map(polar((kBumperInner + kBumperOuter) / 2, left ? 120 : 60));
+}
+
+QRectF RobotDiagram::bumperRect(bool left) const
+{
+    const QPainterPath half = left ? ringSegment(kBumperInner, kBumperOuter, 90, kBumperLeftEnd - 90)
+                                   : ringSegment(kBumperInner, kBumperOuter, kBumperRightStart,
+                                                 90 - kBumperRightStart);
+    return sceneToWidget().mapRect(half.boundingRect());
+}
+
+QPointF RobotDiagram::lightBumperCentre(oi::LightBumper bumper) const
+{
+    return sceneToWidget().map(polar((kBumperInner + kBumperOuter) / 2,
+                                     kLightBumperAngles[static_cast<std::size_t>(bumper)]));
+}
+
+QPointF RobotDiagram::lightBumpSignalPoint(oi::LightBumper bumper, qreal level) const
+{
+    return sceneToWidget().map(polar(kLightBumpBase + kLightBumpLength * std::clamp(level, 0.0, 1.0),
+                                     kLightBumperAngles[static_cast<std::size_t>(bumper)]));
+}
+
+QPointF RobotDiagram::wheelCentre(bool left) const
+{
+    return sceneToWidget().map((left ? kWheelLeft : kWheelRight).center());
+}
+
+QPointF RobotDiagram::casterCentre() const { return sceneToWidget().map(kCaster); }
+
+QPointF RobotDiagram::wallCentre() const { return sceneToWidget().map(kWall.center()); }
+
+QRectF RobotDiagram::robotRect() const { return sceneToWidget().mapRect(circleRect(kBodyRadius)); }
+
+QColor RobotDiagram::fill(State state) const
+{
+    if (!m_stale)
+        return display::stateColor(state, palette());
+    // Greys only, so nothing looks live; what was lit stays apart from what
+    // was not, so the last picture can still be read.
+    if (state == State::Idle) {
+        const int grey = qGray(display::stateColor(State::Idle, palette()).rgb());
+        return QColor(grey, grey, grey);
+    }
+    return isDark(palette()) ? QColor(150, 150, 150) : QColor(118, 118, 118);
+}
+
+QColor RobotDiagram::textColour(State state) const
+{
+    if (!m_stale)
+        return display::textOn(state, palette());
+    return fill(state).lightness() > 140 ? QColor(20, 20, 20) : QColor(250, 250, 250);
+}
+
+QColor RobotDiagram::inkColour() const
+{
+    QColor ink = palette().color(QPalette::WindowText);
+    if (m_stale)
+        ink.setAlpha(150);
+    return ink;
+}
+
+QFont RobotDiagram::sceneFont(qreal pixelSize, bool bold) const
+{
+    QFont f = display::valueFont(font());
+    f.setBold(bold);
+    f.setPixelSize(std::max(1, qRound(pixelSize)));
+    return f;
+}
+
+QList<QList<RobotDiagram::Chip>> RobotDiagram::chipRows() const
+{
+    const oi::SensorSnapshot &s = m_snapshot;
+    const QString none = QStringLiteral("\u2014");
+
+    auto irChip = [&](const QString &caption, int packetId, oi::IrCharacter ir) {
+        if (!s.has(packetId))
+            return Chip{caption, none, State::Idle};
+        const bool received = ir.kind != oi::IrCharacter::Kind::None;
+        return Chip{caption, QString::fromStdString(ir.name()),
+                    received ? State::Active : State::Idle};
+    };
+
+    auto bitNames = [&](int packetId) {
+        QStringList names;
+        for (const oi::BitMeaning &b : m_profile->bits(packetId))
+            if (s.raw(packetId) & b.mask)
+                names << QString::fromUtf8(b.name.data(), qsizetype(b.name.size()));
+        return names;
+    };
+
+    Chip buttons{tr("Buttons"), none, State::Idle};
+    if (s.has(18)) {
+        const QStringList pressed = bitNames(18);
+        if (pressed.isEmpty())
+            buttons.value = tr("none");
+        else
+            buttons = {buttons.caption, pressed.join(" + "), State::Active};
+    }
+
+    Chip virtualWall{tr("Virtual wall"), none, State::Idle};
+    if (s.has(13)) {
+        if (s.virtualWall())
+            virtualWall = {virtualWall.caption, tr("seen"), State::Warning};
+        else
+            virtualWall.value = tr("none");
+    }
+
+    Chip overcurrent{tr("Overcurrent"), none, State::Idle};
+    if (s.has(14)) {
+        const QStringList over = bitNames(14);
+        if (over.isEmpty())
+            overcurrent.value = tr("none");
+        else
+            overcurrent = {overcurrent.caption, over.join(", "), State::Alert};
+    }
+
+    if (isCreate1())
+        return {{irChip(tr("IR"), 17, s.irOmni()), virtualWall}, {buttons}, {overcurrent}};
+
+    // ERRATA 5: 2 is the Create 2's dirty stasis wheel, not "moving".
+    Chip stasis{tr("Stasis"), none, State::Idle};
+    if (s.has(58)) {
+        switch (s.stasis()) {
+        case oi::Stasis::NotProgressing: stasis.value = tr("not moving"); break;
+        case oi::Stasis::Progressing: stasis = {stasis.caption, tr("moving"), State::Active}; break;
+        case oi::Stasis::DirtyWheel:
+            stasis = {stasis.caption, tr("DIRTY WHEEL"), State::Warning};
+            break;
+        case oi::Stasis::Reserved: stasis = {stasis.caption, tr("reserved (3)"), State::Alert}; break;
+        }
+    }
+    return {{irChip(tr("IR omni"), 17, s.irOmni()), irChip(tr("IR left"), 52, s.irLeft()),
+             irChip(tr("IR right"), 53, s.irRight())},
+            {buttons, stasis, virtualWall},
+            {overcurrent}};
+}
+
+QStringList RobotDiagram::statusTexts() const
+{
+    QStringList out;
+    for (const QList<Chip> &row : chipRows())
+        for (const Chip &chip : row)
+            out << chip.caption + ": " + chip.value;
+    return out;
+}
+
+void RobotDiagram::changeEvent(QEvent *event)
+{
+    if (event->type() == QEvent::PaletteChange || event->type() == QEvent::FontChange)
+        update();
+    QWidget::changeEvent(event);
+}
+
+void RobotDiagram::paintEvent(QPaintEvent *)
+{
+    QPainter p(this);
+    p.fillRect(rect(), palette().color(QPalette::Window));
+    p.setRenderHint(QPainter::Antialiasing);
+    p.setRenderHint(QPainter::TextAntialiasing);
+    p.setTransform(sceneToWidget());
+
+    paintLightBumpers(p);
+    paintBody(p);
+    paintBumper(p);
+    paintWheels(p);
+    paintCliffs(p);
+    paintWall(p);
+    paintChips(p);
+    paintStale(p);
+}
+
+void RobotDiagram::paintBody(QPainter &p) const
+{
+    const QColor outline = inkColour();
+    p.setPen(QPen(outline, 5));
+    p.setBrush(palette().color(QPalette::Base));
+    p.drawEllipse(circleRect(kBodyRadius));
+
+    if (isCreate1()) {
+        // The cargo bay, with its connector at the front.
+        p.setPen(QPen(outline, 3));
+        p.setBrush(palette().color(QPalette::Window));
+        p.drawRoundedRect(kCargoBay, 18, 18);
+        p.setPen(inkColour());
+        p.setFont(sceneFont(26, false));
+        p.drawText(kCargoBay.adjusted(0, 40, 0, 0), Qt::AlignHCenter | Qt::AlignTop,
+                   tr("CARGO BAY"));
+        p.setBrush(outline);
+        p.setPen(Qt::NoPen);
+        p.drawRoundedRect(QRectF(-40, kCargoBay.top() + 10, 80, 16), 4, 4);
+    }
+
+    // The omnidirectional IR receiver on top, at the front.
+    const bool ir = m_snapshot.has(17) && m_snapshot.irOmni().kind != oi::IrCharacter::Kind::None;
+    p.setPen(QPen(outline, 3));
+    p.setBrush(fill(ir ? State::Active : State::Idle));
+    p.drawEllipse(kOmniReceiver, 15, 15);
+}
+
+void RobotDiagram::paintBumper(QPainter &p) const
+{
+    const QColor outline = inkColour();
+    auto half = [&](bool left, bool bumped) {
+        const qreal outer = bumped ? kBumperOuterBumped : kBumperOuter;
+        const QPainterPath path =
+            left ? ringSegment(kBumperInner, outer, 90 + kBumperGapDegrees,
+                               kBumperLeftEnd - 90 - kBumperGapDegrees)
+                 : ringSegment(kBumperInner, outer, kBumperRightStart,
+                               90 - kBumperGapDegrees - kBumperRightStart);
+        p.setPen(QPen(outline, 3));
+        p.setBrush(fill(bumped ? State::Alert : State::Idle));
+        p.drawPath(path);
+    };
+    half(true, m_snapshot.bumpLeft());
+    half(false, m_snapshot.bumpRight());
+
+    if (isCreate1())
+        return;
+    // The light bumpers sit in the bumper; a lit one has seen an obstacle.
+    for (std::size_t i = 0; i < kLightBumperAngles.size(); ++i) {
+        const bool on = m_snapshot.lightBumper(static_cast<oi::LightBumper>(i));
+        p.setPen(QPen(outline, 3));
+        p.setBrush(fill(on ? State::Warning : State::Idle));
+        p.drawEllipse(polar((kBumperInner + kBumperOuter) / 2, kLightBumperAngles[i]), 13, 13);
+    }
+}
+
+void RobotDiagram::paintLightBumpers(QPainter &p) const
+{
+    if (isCreate1())
+        return;
+    const QColor signal = m_stale ? fill(State::Idle).darker(140) : lightBumpSignalColour(palette());
+    QColor track = inkColour();
+    track.setAlpha(m_stale ? 60 : 90);
+    p.setFont(sceneFont(32));
+    const QFontMetricsF fm(p.font());
+    for (std::size_t i = 0; i < kLightBumperAngles.size(); ++i) {
+        const auto bumper = static_cast<oi::LightBumper>(i);
+        const qreal angle = kLightBumperAngles[i];
+        const int packetId = 46 + static_cast<int>(i);
+        const bool on = m_snapshot.lightBumper(bumper);
+
+        p.setPen(QPen(track, 3));
+        p.setBrush(Qt::NoBrush);
+        p.drawPath(ringSegment(kLightBumpBase, kLightBumpBase + kLightBumpLength,
+                               angle - kLightBumpHalfWidthDegrees, 2 * kLightBumpHalfWidthDegrees));
+        p.setPen(Qt::NoPen);
+        if (m_snapshot.has(packetId)) {
+            const qreal level = std::clamp(m_snapshot.raw(packetId) / kSignalMax, 0.0, 1.0);
+            p.setBrush(on ? fill(State::Warning) : signal);
+            p.drawPath(ringSegment(kLightBumpBase, kLightBumpBase + kLightBumpLength * level,
+                                   angle - kLightBumpHalfWidthDegrees,
+                                   2 * kLightBumpHalfWidthDegrees));
+        }
+
+        const QString text = signalText(m_snapshot, packetId);
+        const QPointF at = polar(kLightBumpLabelRadius, angle);
+        const QRectF box(at.x() - 60, at.y() - fm.height() / 2, 120, fm.height());
+        p.setPen(on ? fill(State::Warning) : inkColour());
+        p.drawText(box, Qt::AlignCenter, text);
+    }
+}
+
+void RobotDiagram::paintWheels(QPainter &p) const
+{
+    const QColor outline = inkColour();
+    const QColor tyre = m_stale ? fill(State::Idle).darker(130)
+                                : (isDark(palette()) ? QColor(125, 129, 136) : QColor(55, 57, 60));
+    p.setFont(sceneFont(30));
+    auto wheel = [&](const QRectF &r, bool dropped, bool left) {
+        p.setPen(QPen(outline, 3));
+        p.setBrush(dropped ? fill(State::Alert) : tyre);
+        p.drawRoundedRect(r, 10, 10);
+        if (!dropped)
+            return;
+        p.setPen(fill(State::Alert));
+        const QRectF label = left ? QRectF(r.right() + 8, r.center().y() - 20, 100, 40)
+                                  : QRectF(r.left() - 108, r.center().y() - 20, 100, 40);
+        p.drawText(label, (left ? Qt::AlignLeft : Qt::AlignRight) | Qt::AlignVCenter, tr("DROP"));
+    };
+    wheel(kWheelLeft, m_snapshot.wheelDropLeft(), true);
+    wheel(kWheelRight, m_snapshot.wheelDropRight(), false);
+
+    if (isCreate1()) {
+        const bool dropped = m_snapshot.wheelDropCaster();
+        p.setPen(QPen(outline, 3));
+        p.setBrush(dropped ? fill(State::Alert) : tyre);
+        p.drawEllipse(kCaster, kCasterRadius, kCasterRadius);
+        if (dropped) {
+            p.setPen(fill(State::Alert));
+            p.drawText(QRectF(kCaster.x() - 60, kCaster.y() - kCasterRadius - 40, 120, 36),
+                       Qt::AlignCenter, tr("DROP"));
+        }
+    }
+}
+
+void RobotDiagram::paintCliffs(QPainter &p) const
+{
+    const QColor outline = inkColour();
+    const QFont numberFont = sceneFont(38);
+    const QColor signal = m_stale ? fill(State::Idle).darker(140) : cliffSignalColour(palette());
+    QColor track = inkColour();
+    track.setAlpha(m_stale ? 30 : 50);
+    for (oi::CliffSensor sensor : kCliffs) {
+        const bool cliff = m_snapshot.cliff(sensor);
+        p.setPen(QPen(outline, 3));
+        p.setBrush(fill(cliff ? State::Alert : State::Idle));
+        p.drawEllipse(cliffLampPoint(sensor), kCliffLampRadius, kCliffLampRadius);
+
+        const QRectF label = cliffLabelRect(sensor);
+        const int packetId = 28 + static_cast<int>(sensor);
+        const QRectF numberBox(label.left(), label.top(), label.width(), label.height() - 14);
+        p.setFont(numberFont);
+        p.setPen(cliff ? fill(State::Alert) : inkColour());
+        p.drawText(numberBox, Qt::AlignCenter, signalText(m_snapshot, packetId));
+
+        const QRectF bar(label.left() + 6, label.bottom() - 12, label.width() - 12, 10);
+        p.setPen(Qt::NoPen);
+        p.setBrush(track);
+        p.drawRoundedRect(bar, 3, 3);
+        if (m_snapshot.has(packetId)) {
+            const qreal level = std::clamp(m_snapshot.raw(packetId) / kSignalMax, 0.0, 1.0);
+            p.setBrush(signal);
+            p.drawRoundedRect(QRectF(bar.left(), bar.top(), bar.width() * level, bar.height()), 3, 3);
+        }
+    }
+}
+
+void RobotDiagram::paintWall(QPainter &p) const
+{
+    // The wall sensor looks out of the robot's right side.
+    const bool wall = m_snapshot.wall();
+    p.setPen(QPen(inkColour(), 3));
+    p.setBrush(fill(wall ? State::Warning : State::Idle));
+    p.drawRoundedRect(kWall, 5, 5);
+
+    p.setFont(sceneFont(28));
+    p.setPen(wall ? fill(State::Warning) : inkColour());
+    const QRectF text(kWall.right() + 10, kWall.top(), 150, kWall.height());
+    p.drawText(text, Qt::AlignLeft | Qt::AlignVCenter,
+               tr("WALL") + '\n' + signalText(m_snapshot, 27));
+}
+
+qreal RobotDiagram::chipRowHeight() const
+{
+    const qreal bottom = (height() - topOffset()) / sceneScale() + sceneTop() - kChipBottomMargin;
+    return std::clamp((bottom - kChipTop - (kChipRows - 1) * kChipGap) / kChipRows, kChipMinHeight,
+                      kChipMaxHeight);
+}
+
+QList<std::pair<QRectF, RobotDiagram::Chip>> RobotDiagram::placedChips() const
+{
+    // The chips use the widget's whole width, even where the drawing does not.
+    const qreal halfWidth = width() / sceneScale() / 2 - 12;
+    const qreal rowHeight = chipRowHeight();
+    QList<std::pair<QRectF, Chip>> out;
+    qreal top = kChipTop;
+    for (const QList<Chip> &row : chipRows()) {
+        const qreal chipWidth = (2 * halfWidth - kChipGap * qreal(row.size() - 1)) / qreal(row.size());
+        qreal left = -halfWidth;
+        for (const Chip &chip : row) {
+            out.append({QRectF(left, top, chipWidth, rowHeight), chip});
+            left += chipWidth + kChipGap;
+        }
+        top += rowHeight + kChipGap;
+    }
+    return out;
+}
+
+bool RobotDiagram::event(QEvent *event)
+{
+    if (event->type() == QEvent::ToolTip) {
+        // Long values may be shortened on a small widget; the tooltip has them whole.
+        auto *help = static_cast<QHelpEvent *>(event);
+        const QPointF at = sceneToWidget().inverted().map(QPointF(help->pos()));
+        for (const auto &[r, chip] : placedChips()) {
+            if (r.contains(at)) {
+                QToolTip::showText(help->globalPos(), chip.caption + ": " + chip.value, this);
+                return true;
+            }
+        }
+        QToolTip::hideText();
+        event->ignore();
+        return true;
+    }
+    return QWidget::event(event);
+}
+
+void RobotDiagram::paintChips(QPainter &p) const
+{
+    const qreal rowHeight = chipRowHeight();
+    // Captions stay at least 10 px high on the smallest widget.
+    const qreal captionSize = std::max(rowHeight * 0.28, 10.0 / sceneScale());
+    const QFont captionFont = sceneFont(captionSize, false);
+    for (const auto &[r, chip] : placedChips()) {
+        p.setPen(QPen(inkColour(), 2));
+        p.setBrush(fill(chip.state));
+        p.drawRoundedRect(r, 14, 14);
+
+        QColor text = textColour(chip.state);
+        const QRectF inner = r.adjusted(14, 4, -14, -4);
+        const QRectF captionRect(inner.left(), inner.top(), inner.width(), captionSize * 1.25);
+        const QRectF valueRect(inner.left(), captionRect.bottom(), inner.width(),
+                               inner.bottom() - captionRect.bottom());
+        // The value shrinks to fit rather than lose its end, down to a
+        // size that still reads; past that it is elided.
+        QFont valueFont = sceneFont(rowHeight * 0.44);
+        for (qreal size = rowHeight * 0.44; size > rowHeight * 0.25; size -= 2) {
+            valueFont = sceneFont(size);
+            if (QFontMetricsF(valueFont).horizontalAdvance(chip.value) <= inner.width())
+                break;
+        }
+        p.setPen(text);
+        p.setFont(valueFont);
+        p.drawText(valueRect, Qt::AlignCenter,
+                   QFontMetricsF(valueFont).elidedText(chip.value, Qt::ElideRight, inner.width()));
+        text.setAlphaF(0.8);
+        p.setPen(text);
+        p.setFont(captionFont);
+        p.drawText(captionRect, Qt::AlignHCenter | Qt::AlignVCenter,
+                   QFontMetricsF(captionFont).elidedText(chip.caption, Qt::ElideRight, inner.width()));
+    }
+}
+
+void RobotDiagram::paintStale(QPainter &p) const
+{
+    if (!m_stale)
+        return;
+    const QRectF banner(-kBodyRadius + 20, 95, 2 * kBodyRadius - 40, 90);
+    p.setPen(QPen(display::textOn(State::Stale, palette()), 4));
+    p.setBrush(display::stateColor(State::Stale, palette()));
+    p.drawRoundedRect(banner, 16, 16);
+    p.setFont(sceneFont(64));
+    p.setPen(display::textOn(State::Stale, palette()));
+    p.drawText(banner, Qt::AlignCenter, tr("STALE"));
+}

@@ -1,13 +1,23 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// roomba-ctl: the Open Interface core from the command line.
+// roomba-ctl: the Open Interface core, and robots through the link, from the
+// command line.
 
 #include "command_catalog.h"
+#include "profile_probe.h"
+#include "robot_link_thread.h"
 #include "script_assembler.h"
 #include "stream_parser.h"
+#include "transport.h"
+
+#include <QCoreApplication>
+#include <QDateTime>
+#include <QTimer>
 
 #include <cstdio>
 #include <iostream>
 #include <iterator>
+#include <memory>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -39,10 +49,26 @@ Commands:
       List every command the profile has, with its opcode and arguments.
   packets [--profile P]
       Print the profile's packet table and groups.
+  sensors ROBOT [--profile P] [--baud B] [--count N]
+      Connect, start the sensor stream that fits the baud, print N stream
+      frames (default 10) as JSON lines like decode, then one line of link
+      statistics. Closing leaves the robot stopped and in Passive mode.
+  send ROBOT [--profile P] [--baud B] NAME ARGS...
+      Send Start, then one command (as encode makes it). The answers to
+      sensors and query-list are printed as JSON lines like decode.
+        roomba-ctl send --port /dev/ttyUSB0 safe
+        roomba-ctl send --sim sensors 7
   --help, --version
 
+ROBOT is one of:
+  --port PATH        a serial port, USB adapter or pseudo-terminal
+  --tcp HOST:PORT    a serial-over-TCP bridge (ser2net raw mode)
+  --sim              the built-in virtual robot, playing --profile
+Without --profile, sensors and send find the robot's profile (and on a
+serial port, its baud among 115200, 57600 and 19200) by asking it.
+
 Profiles: roomba500, create2 (also roomba600), create1 (also create).
-The default profile is create2.
+The default profile is create2 (encode, decode, --sim).
 )";
 
 struct Options {
@@ -52,6 +78,26 @@ struct Options {
     bool legacyChecksum = false;
     std::string reply;
 };
+
+// One JSON object for a decoded frame or reply: what decode, sensors and
+// send print.
+std::string snapshotJson(const oi::SensorSnapshot &s, oi::FrameKind kind)
+{
+    std::string line = kind == oi::FrameKind::Stream ? R"({"kind":"stream","packets":{)"
+                                                     : R"({"kind":"reply","packets":{)";
+    bool first = true;
+    for (const oi::PacketInfo &p : s.robotProfile().packets()) {
+        if (!s.has(p.id))
+            continue;
+        if (!first)
+            line += ',';
+        first = false;
+        line += '"';
+        line += p.key;
+        line += "\":" + std::to_string(s.raw(p.id));
+    }
+    return line + "}}";
+}
 
 int fail(const std::string &message)
 {
@@ -182,20 +228,7 @@ int decode(const std::vector<std::string> &args, std::size_t from)
                         + std::string(options.profile->name));
     }
     parser.setSnapshotHandler([](const oi::SensorSnapshot &s, oi::FrameKind kind) {
-        std::string line = kind == oi::FrameKind::Stream ? R"({"kind":"stream","packets":{)"
-                                                         : R"({"kind":"reply","packets":{)";
-        bool first = true;
-        for (const oi::PacketInfo &p : s.robotProfile().packets()) {
-            if (!s.has(p.id))
-                continue;
-            if (!first)
-                line += ',';
-            first = false;
-            line += '"';
-            line += p.key;
-            line += "\":" + std::to_string(s.raw(p.id));
-        }
-        std::cout << line << "}}\n";
+        std::cout << snapshotJson(s, kind) << "\n";
     });
     parser.feed(input);
     const oi::ParserCounters &c = parser.counters();
@@ -267,6 +300,294 @@ int listPackets(const std::vector<std::string> &args, std::size_t from)
     return 0;
 }
 
+// --- Talking to a robot: sensors and send ---
+
+constexpr int kFirstFrameTimeoutMs = 20000; // covers probing three bauds, twice
+constexpr int kFrameSilenceMs = 5000;
+constexpr int kReplyTimeoutMs = 1000;
+constexpr int kDrainMs = 80;
+constexpr int kFlushMs = 500;
+
+struct LinkOptions {
+    oilink::LinkSettings settings;
+    int robots = 0;
+    std::optional<oi::ProfileId> profile;
+    int baud = 0;
+    long long count = 10;
+};
+
+std::string toStd(const QString &text)
+{
+    return text.toStdString();
+}
+
+// Reads the ROBOT and link options before the first other argument; returns
+// its index, or -1 after printing an error.
+int parseLinkOptions(const std::vector<std::string> &args, std::size_t from, LinkOptions &o,
+                     bool takesCount, const std::string &command)
+{
+    std::size_t i = from;
+    for (; i < args.size() && args[i].starts_with("--"); ++i) {
+        const std::string &a = args[i];
+        if (a == "--sim") {
+            o.settings.transport = oilink::TransportKind::Virtual;
+            ++o.robots;
+            continue;
+        }
+        const bool known = a == "--port" || a == "--tcp" || a == "--profile" || a == "--baud"
+                           || (takesCount && a == "--count");
+        if (!known) {
+            fail("unknown option '" + a + "'");
+            return -1;
+        }
+        if (i + 1 >= args.size()) {
+            fail(a + " needs a value");
+            return -1;
+        }
+        const std::string &value = args[++i];
+        long long number = 0;
+        if (a == "--port") {
+            o.settings.transport = oilink::TransportKind::Serial;
+            o.settings.portPath = QString::fromStdString(value);
+            ++o.robots;
+        } else if (a == "--tcp") {
+            const std::size_t colon = value.rfind(':');
+            if (colon == std::string::npos || colon == 0
+                || !oi::parseInteger(value.substr(colon + 1), number) || number < 1 || number > 65535) {
+                fail("--tcp needs HOST:PORT, e.g. raspberrypi:3333");
+                return -1;
+            }
+            o.settings.transport = oilink::TransportKind::Tcp;
+            o.settings.host = QString::fromStdString(value.substr(0, colon));
+            o.settings.tcpPort = static_cast<quint16>(number);
+            ++o.robots;
+        } else if (a == "--profile") {
+            if (value == "auto") {
+                o.profile.reset();
+            } else if (const oi::RobotProfile *p = oi::profileByKey(value)) {
+                o.profile = p->id;
+            } else {
+                fail("unknown profile '" + value + "' (roomba500, create2, create1, auto)");
+                return -1;
+            }
+        } else if (a == "--baud") {
+            if (!oi::parseInteger(value, number) || number <= 0 || number > 115200
+                || oi::baudCodeFor(static_cast<int>(number)) < 0) {
+                fail("--baud: '" + value + "' is not a rate the robots know (300 to 115200)");
+                return -1;
+            }
+            o.baud = static_cast<int>(number);
+        } else {
+            if (!oi::parseInteger(value, number) || number < 1) {
+                fail("--count needs a number of frames, 1 or more");
+                return -1;
+            }
+            o.count = number;
+        }
+    }
+    if (o.robots != 1) {
+        fail(command + " needs one of --port PATH, --tcp HOST:PORT or --sim");
+        return -1;
+    }
+    o.settings.baud = o.baud;
+    o.settings.profile = o.profile;
+    if (o.settings.transport == oilink::TransportKind::Virtual) {
+        // The virtual robot plays the profile, so there is nothing to find.
+        o.settings.virtualRobot = o.profile.value_or(oi::ProfileId::Create2);
+        o.settings.profile = o.settings.virtualRobot;
+    }
+    return static_cast<int>(i);
+}
+
+std::string statisticsJson(const oilink::LinkStats &st, const std::string &profileKey, int baud,
+                           const QList<int> &packets)
+{
+    std::string ids;
+    for (int id : packets)
+        ids += (ids.empty() ? "" : ",") + std::to_string(id);
+    // Not printf: QCoreApplication adopts the user's locale, whose decimal
+    // comma would break the JSON.
+    const std::string rate = toStd(QString::number(st.framesPerSecond, 'f', 1));
+    const std::string last = st.lastFrameTime.isValid()
+                                 ? '"' + toStd(st.lastFrameTime.toString(Qt::ISODateWithMs)) + '"'
+                                 : std::string("null");
+    return R"({"statistics":{"profile":")" + profileKey + R"(","baud":)" + std::to_string(baud)
+           + R"(,"packets":[)" + ids + R"(],"frames":)" + std::to_string(st.frames)
+           + R"(,"frames_per_second":)" + rate + R"(,"replies":)" + std::to_string(st.replies)
+           + R"(,"checksum_failures":)" + std::to_string(st.checksumFailures)
+           + R"(,"resyncs":)" + std::to_string(st.resyncs)
+           + R"(,"bytes_discarded":)" + std::to_string(st.bytesDiscarded)
+           + R"(,"bytes_received":)" + std::to_string(st.bytesReceived)
+           + R"(,"bytes_sent":)" + std::to_string(st.bytesSent)
+           + R"(,"reconnects":)" + std::to_string(st.reconnects) + R"(,"last_frame":)" + last + "}}";
+}
+
+int streamSensors(int argc, char **argv, const std::vector<std::string> &args)
+{
+    LinkOptions o;
+    const int at = parseLinkOptions(args, 1, o, true, "sensors");
+    if (at < 0)
+        return 2;
+    if (static_cast<std::size_t>(at) != args.size())
+        return fail("sensors takes no arguments besides its options");
+
+    QCoreApplication app(argc, argv);
+    oilink::RobotLinkThread link;
+    long long received = 0;
+    int status = 0;
+    bool finished = false;
+    std::string profileKey;
+    int baud = 0;
+    QList<int> packets;
+    QTimer silence;
+    silence.setSingleShot(true);
+    const auto finish = [&](int code, const std::string &message) {
+        if (finished)
+            return;
+        finished = true;
+        status = code;
+        if (!message.empty())
+            std::cerr << "roomba-ctl: " << message << "\n";
+        QCoreApplication::exit(code);
+    };
+    QObject::connect(&link, &oilink::RobotLinkThread::snapshot, &app, [&](const oi::SensorSnapshot &s) {
+        if (finished)
+            return;
+        std::cout << snapshotJson(s, oi::FrameKind::Stream) << std::endl;
+        silence.start(kFrameSilenceMs);
+        if (++received >= o.count)
+            finish(0, {});
+    });
+    QObject::connect(&link, &oilink::RobotLinkThread::errorOccurred, &app,
+                     [&](const QString &message) { finish(1, toStd(message)); });
+    QObject::connect(&link, &oilink::RobotLinkThread::streamStarted, &app,
+                     [&](oi::ProfileId id, int rate, const QList<int> &ids) {
+                         profileKey = oi::profile(id).key;
+                         baud = rate;
+                         packets = ids;
+                     });
+    QObject::connect(&silence, &QTimer::timeout, &app, [&] {
+        finish(1, toStd(o.settings.describe()) + ": no data: is the robot on, and is the baud right?");
+    });
+    silence.start(kFirstFrameTimeoutMs);
+    link.open(o.settings);
+    QCoreApplication::exec();
+    link.stop();
+    if (status != 0)
+        return status;
+    std::cout << statisticsJson(link.lastStatistics(), profileKey, baud, packets) << std::endl;
+    return 0;
+}
+
+int sendToRobot(int argc, char **argv, const std::vector<std::string> &args)
+{
+    LinkOptions o;
+    const int at = parseLinkOptions(args, 1, o, false, "send");
+    if (at < 0)
+        return 2;
+    if (static_cast<std::size_t>(at) >= args.size())
+        return fail("send needs a command name; see 'roomba-ctl commands'");
+    const std::string name = args[at];
+    const std::vector<std::string> rest(args.begin() + at + 1, args.end());
+    // Where the profile is known, a bad command never touches the port.
+    if (o.settings.profile) {
+        const oi::EncodeResult bytes = oi::encodeCommand(oi::CommandEncoder(oi::profile(*o.settings.profile)), name, rest);
+        if (!bytes) {
+            std::cerr << "roomba-ctl: " << bytes.error().describe() << "\n";
+            return 1;
+        }
+    }
+
+    QCoreApplication app(argc, argv);
+    const int openBaud = o.baud > 0 ? o.baud
+                         : o.settings.profile ? oi::profile(*o.settings.profile).defaultBaud
+                                              : oilink::ProfileProbe::defaultBauds().front();
+    std::unique_ptr<oilink::Transport> transport(oilink::createTransport(o.settings, openBaud));
+    std::unique_ptr<oilink::ProfileProbe> probe;
+    oi::StreamParser parser;
+    QTimer replyTimeout;
+    replyTimeout.setSingleShot(true);
+    bool draining = false;
+    bool finished = false;
+    int status = 0;
+
+    const auto finish = [&](int code, const std::string &message) {
+        if (finished)
+            return;
+        finished = true;
+        status = code;
+        if (!message.empty())
+            std::cerr << "roomba-ctl: " << message << "\n";
+        QCoreApplication::exit(code);
+    };
+    const auto writeBytes = [&](const oi::Bytes &bytes) {
+        transport->write(QByteArray(reinterpret_cast<const char *>(bytes.data()), static_cast<qsizetype>(bytes.size())));
+    };
+    const auto sendCommand = [&](const oi::RobotProfile &profile) {
+        const oi::EncodeResult bytes = oi::encodeCommand(oi::CommandEncoder(profile), name, rest);
+        if (!bytes) {
+            finish(1, bytes.error().describe());
+            return;
+        }
+        if (!bytes.warning.empty())
+            std::cerr << "roomba-ctl: warning: " << bytes.warning << "\n";
+        const oi::Bytes command = *bytes;
+        const std::uint8_t opcode = command.front();
+        if (opcode != 142 && opcode != 149) {
+            writeBytes({128});
+            writeBytes(command);
+            transport->flush(kFlushMs);
+            finish(0, {});
+            return;
+        }
+        // A reply carries no framing (ERRATA 3): pause any stream an earlier
+        // client left running and let it drain before asking.
+        const std::vector<std::uint8_t> ids(command.begin() + (opcode == 142 ? 1 : 2), command.end());
+        parser.setProfile(profile);
+        parser.expectReply(ids);
+        parser.setSnapshotHandler([&](const oi::SensorSnapshot &s, oi::FrameKind kind) {
+            std::cout << snapshotJson(s, kind) << std::endl;
+            finish(0, {});
+        });
+        draining = true;
+        writeBytes({128, 150, 0});
+        QTimer::singleShot(kDrainMs, &app, [&, command] {
+            draining = false;
+            writeBytes(command);
+            replyTimeout.start(kReplyTimeoutMs);
+        });
+    };
+    QObject::connect(&replyTimeout, &QTimer::timeout, &app,
+                     [&] { finish(1, toStd(transport->describe()) + ": no reply to " + name); });
+    QObject::connect(transport.get(), &oilink::Transport::errorOccurred, &app,
+                     [&](const QString &message) { finish(1, toStd(message)); });
+    QObject::connect(transport.get(), &oilink::Transport::bytesReceived, &app, [&](const QByteArray &bytes) {
+        if (probe && probe->isRunning())
+            probe->feed(bytes);
+        else if (!draining)
+            parser.feed({reinterpret_cast<const std::uint8_t *>(bytes.constData()), static_cast<std::size_t>(bytes.size())});
+    });
+    QObject::connect(transport.get(), &oilink::Transport::opened, &app, [&] {
+        if (o.settings.profile) {
+            sendCommand(oi::profile(*o.settings.profile));
+            return;
+        }
+        probe = std::make_unique<oilink::ProfileProbe>(
+            *transport, o.baud > 0 ? QList<int>{o.baud} : oilink::ProfileProbe::defaultBauds());
+        QObject::connect(probe.get(), &oilink::ProfileProbe::detected, &app,
+                         [&](oi::ProfileId id, int) { sendCommand(oi::profile(id)); });
+        QObject::connect(probe.get(), &oilink::ProfileProbe::failed, &app, [&] {
+            finish(1, toStd(transport->describe()) + ": no data: is the robot on, and is the baud right?");
+        });
+        probe->start();
+    });
+    // From inside the event loop, so that an answer given during open() can end it.
+    QTimer::singleShot(0, &app, [&] { transport->open(); });
+    QCoreApplication::exec();
+    transport->close();
+    return status;
+}
+
 } // namespace
 
 int main(int argc, char **argv)
@@ -293,5 +614,9 @@ int main(int argc, char **argv)
         return listCommands(args, 1);
     if (command == "packets")
         return listPackets(args, 1);
+    if (command == "sensors")
+        return streamSensors(argc, argv, args);
+    if (command == "send")
+        return sendToRobot(argc, argv, args);
     return fail("unknown command '" + command + "'; try --help");
 }

@@ -1,0 +1,292 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "main_window.h"
+
+#include "byte_inspector.h"
+#include "display_palette.h"
+#include "mode_panel.h"
+#include "robot_diagram.h"
+#include "sensor_gauges.h"
+#include "sensor_plots.h"
+#include "signal_bars.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QCloseEvent>
+#include <QDockWidget>
+#include <QLabel>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QSettings>
+#include <QStatusBar>
+
+namespace {
+
+QString profileName(const oi::RobotProfile &p) { return QString::fromUtf8(p.name.data(), qsizetype(p.name.size())); }
+
+ConnectionRequest loadRequest(const QSettings &s)
+{
+    ConnectionRequest r;
+    r.transport = ConnectionRequest::Transport(s.value("connection/transport", 0).toInt());
+    r.portPath = s.value("connection/port").toString();
+    r.host = s.value("connection/host").toString();
+    r.tcpPort = quint16(s.value("connection/tcpPort", 0).toUInt());
+    const int profile = s.value("connection/profile", -1).toInt();
+    if (profile >= 0 && profile <= int(oi::ProfileId::Create1))
+        r.profile = oi::ProfileId(profile);
+    r.baud = s.value("connection/baud", 0).toInt();
+    return r;
+}
+
+void saveRequest(QSettings &s, const ConnectionRequest &r)
+{
+    s.setValue("connection/transport", int(r.transport));
+    s.setValue("connection/port", r.portPath);
+    s.setValue("connection/host", r.host);
+    s.setValue("connection/tcpPort", r.tcpPort);
+    s.setValue("connection/profile", r.profile ? int(*r.profile) : -1);
+    s.setValue("connection/baud", r.baud);
+}
+
+} // namespace
+
+MainWindow::MainWindow(QWidget *parent) : QMainWindow(parent)
+{
+    setWindowTitle(tr("Roomba Dashboard"));
+    setObjectName("mainWindow");
+    setDockNestingEnabled(true);
+
+    m_diagram = new RobotDiagram(this);
+    setCentralWidget(m_diagram);
+
+    m_connectionBar = new ConnectionBar(this);
+    m_modePanel = new ModePanel(this);
+    m_gauges = new SensorGauges(this);
+    m_signalBars = new SignalBars(this);
+    m_plots = new SensorPlots(this);
+    m_plots->setHistory(&m_history);
+    m_inspector = new ByteInspector(this);
+
+    addDock("connectionDock", tr("Connection"), m_connectionBar, Qt::TopDockWidgetArea);
+    addDock("modeDock", tr("Modes"), m_modePanel, Qt::LeftDockWidgetArea);
+    addDock("gaugesDock", tr("Gauges"), m_gauges, Qt::RightDockWidgetArea);
+    addDock("signalsDock", tr("Signals"), m_signalBars, Qt::LeftDockWidgetArea);
+    QDockWidget *plots = addDock("plotsDock", tr("Plots"), m_plots, Qt::BottomDockWidgetArea);
+    QDockWidget *inspector = addDock("inspectorDock", tr("Inspector"), m_inspector, Qt::BottomDockWidgetArea);
+    tabifyDockWidget(plots, inspector);
+    plots->raise();
+    // Start with what a class looks at first: the cliff signals and the battery.
+    if (m_plots->plotCount() == 0)
+        m_plots->addPlot();
+    m_plots->setChannels(0, {28, 29, 30, 31});
+    m_plots->addPlot({22, 23});
+    resizeDocks({findChild<QDockWidget *>("modeDock"), findChild<QDockWidget *>("signalsDock")}, {200, 320},
+                Qt::Vertical);
+    resizeDocks({plots}, {300}, Qt::Vertical);
+
+    buildMenus();
+    buildStatusBar();
+    m_defaultState = saveState();
+
+    m_session.setSnapshotObserver([this](double t, const oi::SensorSnapshot &s) { m_history.append(t, s); });
+    connect(&m_session, &RobotSession::profileChanged, this, &MainWindow::applyProfile);
+    connect(&m_session, &RobotSession::stateChanged, this, &MainWindow::showState);
+    connect(&m_session, &RobotSession::statisticsChanged, this, &MainWindow::showStatistics);
+    connect(&m_session, &RobotSession::errorOccurred, m_connectionBar, &ConnectionBar::showError);
+    connect(&m_session, &RobotSession::firmwareChanged, this, [this](const QString &release) {
+        m_modePanel->setFirmware(release);
+        m_firmwareLabel->setText(tr("Firmware %1").arg(release));
+    });
+    connect(&m_session, &RobotSession::bytesSent, m_inspector, &ByteInspector::appendTx);
+    connect(&m_session, &RobotSession::bytesReceived, m_inspector, &ByteInspector::appendRx);
+    connect(m_inspector, &ByteInspector::sendRequested, &m_session, &RobotSession::send);
+    connect(m_modePanel, &ModePanel::sendRequested, &m_session, &RobotSession::send);
+    connect(m_connectionBar, &ConnectionBar::connectRequested, this, &MainWindow::connectFromBar);
+    connect(m_connectionBar, &ConnectionBar::disconnectRequested, this, [this] {
+        m_session.disconnectFromRobot();
+        m_connectionBar->setConnected(false);
+    });
+
+    m_displayTimer.setInterval(kDisplayIntervalMs);
+    connect(&m_displayTimer, &QTimer::timeout, this, &MainWindow::refreshDisplay);
+    applyProfile(m_session.robotProfile().id);
+    showState(oilink::LinkState::Closed);
+}
+
+MainWindow::~MainWindow() { m_session.closeAndWait(); }
+
+QDockWidget *MainWindow::addDock(const QString &objectName, const QString &title, QWidget *widget,
+                                 Qt::DockWidgetArea area)
+{
+    auto *dock = new QDockWidget(title, this);
+    dock->setObjectName(objectName);
+    dock->setWidget(widget);
+    addDockWidget(area, dock);
+    m_docks << dock;
+    return dock;
+}
+
+void MainWindow::buildMenus()
+{
+    QMenu *file = menuBar()->addMenu(tr("&File"));
+    QAction *quit = file->addAction(tr("&Quit"), this, &QWidget::close);
+    quit->setShortcut(QKeySequence::Quit);
+
+    QMenu *view = menuBar()->addMenu(tr("&View"));
+    for (QDockWidget *dock : m_docks)
+        view->addAction(dock->toggleViewAction());
+    view->addSeparator();
+    view->addAction(tr("&Reset layout"), this, &MainWindow::resetLayout);
+
+    QMenu *help = menuBar()->addMenu(tr("&Help"));
+    help->addAction(tr("&About"), this, [this] {
+        QMessageBox::about(this, tr("About Roomba Dashboard"),
+                           tr("Roomba Dashboard %1\nA dashboard for iRobot robots that speak the Open "
+                              "Interface.\nGPL-3.0-or-later.")
+                               .arg(QApplication::applicationVersion()));
+    });
+}
+
+void MainWindow::buildStatusBar()
+{
+    auto label = [this](const char *name) {
+        auto *l = new QLabel(this);
+        l->setObjectName(name);
+        statusBar()->addPermanentWidget(l);
+        return l;
+    };
+    m_staleLabel = new QLabel(tr("  NO LIVE DATA  "), this);
+    m_staleLabel->setObjectName("staleIndicator");
+    m_staleLabel->setFont(display::valueFont(font(), 1.2));
+    const display::State alert = display::State::Alert;
+    m_staleLabel->setStyleSheet(QString("QLabel { background: %1; color: %2; padding: 2px 8px; }")
+                                    .arg(display::stateColor(alert, palette()).name(),
+                                         display::textOn(alert, palette()).name()));
+    statusBar()->addWidget(m_staleLabel);
+    m_stateLabel = label("linkState");
+    m_profileLabel = label("profile");
+    m_firmwareLabel = label("firmware");
+    m_rateLabel = label("frameRate");
+    m_errorsLabel = label("lineErrors");
+}
+
+void MainWindow::resetLayout()
+{
+    restoreState(m_defaultState);
+    for (QDockWidget *dock : m_docks)
+        dock->show();
+}
+
+oilink::LinkSettings MainWindow::linkSettingsFor(const ConnectionRequest &r)
+{
+    using T = ConnectionRequest::Transport;
+    oilink::LinkSettings s;
+    switch (r.transport) {
+    case T::Virtual:
+        s = oilink::LinkSettings::virtualRobotOf(r.profile.value_or(oi::ProfileId::Create2), r.profile);
+        break;
+    case T::Serial:
+        s = oilink::LinkSettings::serial(r.portPath, r.profile, r.baud);
+        break;
+    case T::Tcp:
+        s = oilink::LinkSettings::tcp(r.host, r.tcpPort, r.profile);
+        s.baud = r.baud;
+        break;
+    }
+    return s;
+}
+
+void MainWindow::start(const std::optional<oilink::LinkSettings> &override)
+{
+    QSettings settings;
+    restoreGeometry(settings.value("window/geometry").toByteArray());
+    restoreState(settings.value("window/state").toByteArray());
+    const ConnectionRequest last = loadRequest(settings);
+    m_connectionBar->setRequest(last);
+    m_displayTimer.start();
+    m_history.clear();
+    m_session.connectTo(override ? *override : linkSettingsFor(last));
+    m_connectionBar->setConnected(true);
+}
+
+void MainWindow::connectFromBar(const ConnectionRequest &request)
+{
+    QSettings settings;
+    saveRequest(settings, request);
+    m_history.clear();
+    m_session.connectTo(linkSettingsFor(request));
+    m_connectionBar->setConnected(true);
+}
+
+void MainWindow::applyProfile(oi::ProfileId id)
+{
+    const oi::RobotProfile &p = oi::profile(id);
+    m_diagram->setProfile(p);
+    m_gauges->setProfile(p);
+    m_signalBars->setProfile(p);
+    m_modePanel->setProfile(p);
+    m_inspector->setProfile(p);
+    if (m_history.robotProfile().id != id) {
+        m_history.setProfile(p);
+        m_plots->setProfile(p);
+    }
+    m_profileLabel->setText(profileName(p));
+}
+
+void MainWindow::refreshDisplay()
+{
+    const bool live = m_session.state() == oilink::LinkState::Streaming;
+    m_diagram->setStale(!live);
+    m_gauges->setStale(!live);
+    m_staleLabel->setVisible(!live);
+    if (m_session.snapshotCount() != m_shownSnapshot) {
+        m_shownSnapshot = m_session.snapshotCount();
+        const oi::SensorSnapshot &s = m_session.latest();
+        m_diagram->setSnapshot(s);
+        m_gauges->setSnapshot(s);
+        m_signalBars->setSnapshot(s);
+        m_modePanel->setSnapshot(s);
+    }
+    m_plots->refresh();
+}
+
+void MainWindow::showState(oilink::LinkState state)
+{
+    m_stateLabel->setText(tr("Link: %1").arg(oilink::linkStateName(state)));
+    if (state == oilink::LinkState::Closed)
+        m_connectionBar->setConnected(m_session.isConnected());
+    refreshDisplay();
+}
+
+void MainWindow::showStatistics(const oilink::LinkStats &stats)
+{
+    m_rateLabel->setText(tr("%1 frames/s").arg(stats.framesPerSecond, 0, 'f', 1));
+    m_errorsLabel->setText(tr("checksum failures %1, resyncs %2").arg(stats.checksumFailures).arg(stats.resyncs));
+}
+
+QString MainWindow::statusText() const
+{
+    QStringList parts;
+    if (!m_staleLabel->isHidden())
+        parts << m_staleLabel->text().trimmed();
+    for (QLabel *l : {m_stateLabel, m_profileLabel, m_firmwareLabel, m_rateLabel, m_errorsLabel})
+        if (!l->text().isEmpty())
+            parts << l->text();
+    return parts.join(" | ");
+}
+
+void MainWindow::saveSettings() const
+{
+    QSettings settings;
+    settings.setValue("window/geometry", saveGeometry());
+    settings.setValue("window/state", saveState());
+    saveRequest(settings, m_connectionBar->request());
+}
+
+void MainWindow::closeEvent(QCloseEvent *event)
+{
+    saveSettings();
+    m_displayTimer.stop();
+    // Leave the robot stopped and in Passive mode (ERRATA 17).
+    m_session.closeAndWait();
+    event->accept();
+}

@@ -1,0 +1,87 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "connection_bar.h"
+#include "link_settings.h"
+#include "robot_session.h"
+#include "sensor_history.h"
+
+#include <QByteArray>
+#include <QMainWindow>
+#include <QTimer>
+
+class ByteInspector;
+class ModePanel;
+class QDockWidget;
+class QLabel;
+class RobotDiagram;
+class SensorGauges;
+class SensorPlots;
+class SignalBars;
+
+// The dashboard window: the robot diagram in the middle and a dock for each
+// other view. A display timer reads the session's latest snapshot, so the
+// widgets repaint at display rate, never once per frame.
+class MainWindow : public QMainWindow {
+    Q_OBJECT
+public:
+    static constexpr int kDisplayIntervalMs = 33;
+
+    explicit MainWindow(QWidget *parent = nullptr);
+    ~MainWindow() override;
+
+    RobotSession &session() { return m_session; }
+    // Restores the saved layout and connection, and connects: to the saved
+    // robot, or on first start to the built-in virtual robot.
+    void start(const std::optional<oilink::LinkSettings> &override = {});
+    void resetLayout();
+
+    static oilink::LinkSettings linkSettingsFor(const ConnectionRequest &request);
+
+    // For tests and screenshots.
+    ConnectionBar *connectionBar() const { return m_connectionBar; }
+    ModePanel *modePanel() const { return m_modePanel; }
+    RobotDiagram *robotDiagram() const { return m_diagram; }
+    SensorGauges *sensorGauges() const { return m_gauges; }
+    SensorPlots *sensorPlots() const { return m_plots; }
+    ByteInspector *byteInspector() const { return m_inspector; }
+    SignalBars *signalBars() const { return m_signalBars; }
+    QString statusText() const;
+    void refreshDisplay(); // what the display timer does
+
+protected:
+    void closeEvent(QCloseEvent *event) override;
+
+private:
+    QDockWidget *addDock(const QString &objectName, const QString &title, QWidget *widget,
+                         Qt::DockWidgetArea area);
+    void buildMenus();
+    void buildStatusBar();
+    void applyProfile(oi::ProfileId profile);
+    void showState(oilink::LinkState state);
+    void showStatistics(const oilink::LinkStats &stats);
+    void saveSettings() const;
+    void connectFromBar(const ConnectionRequest &request);
+
+    RobotSession m_session;
+    SensorHistory m_history;
+    QTimer m_displayTimer;
+    quint64 m_shownSnapshot = ~0ull;
+
+    ConnectionBar *m_connectionBar = nullptr;
+    ModePanel *m_modePanel = nullptr;
+    RobotDiagram *m_diagram = nullptr;
+    SensorGauges *m_gauges = nullptr;
+    SensorPlots *m_plots = nullptr;
+    SignalBars *m_signalBars = nullptr;
+    ByteInspector *m_inspector = nullptr;
+    QList<QDockWidget *> m_docks;
+    QByteArray m_defaultState;
+
+    QLabel *m_stateLabel = nullptr;
+    QLabel *m_profileLabel = nullptr;
+    QLabel *m_firmwareLabel = nullptr;
+    QLabel *m_rateLabel = nullptr;
+    QLabel *m_errorsLabel = nullptr;
+    QLabel *m_staleLabel = nullptr;
+};

@@ -1,0 +1,235 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// roomba-sim: the virtual robot on a pseudo-terminal (or a TCP port), for any
+// Open Interface client to connect to.
+
+#include "firmware_banner.h"
+#include "pty_robot_server.h"
+#include "tcp_robot_server.h"
+
+#include <QCommandLineParser>
+#include <QCoreApplication>
+#include <QFile>
+#include <QFileInfo>
+#include <QHostAddress>
+#include <QSocketNotifier>
+
+#include <cerrno>
+#include <cmath>
+#include <csignal>
+#include <cstdio>
+#include <cstring>
+#include <memory>
+#include <sys/socket.h>
+#include <unistd.h>
+
+namespace {
+
+constexpr int kUsageError = 2;
+constexpr int kRuntimeError = 1;
+
+int g_signalPipe[2] = {-1, -1};
+
+void onSignal(int)
+{
+    const int saved = errno;
+    const char byte = 1;
+    [[maybe_unused]] const ssize_t n = ::write(g_signalPipe[1], &byte, 1);
+    errno = saved;
+}
+
+int fail(int status, const QString &message)
+{
+    std::fprintf(stderr, "roomba-sim: %s\n", qPrintable(message));
+    return status;
+}
+
+// A probability 0..1 from an option, or a message saying why not.
+bool parseRate(const QCommandLineParser &parser, const QString &name, double &out, QString &message)
+{
+    if (!parser.isSet(name))
+        return true;
+    bool ok = false;
+    const QString text = parser.value(name);
+    out = text.toDouble(&ok);
+    if (!ok || !std::isfinite(out) || out < 0 || out > 1) {
+        message = QStringLiteral("--%1: '%2' is not a probability between 0 and 1").arg(name, text);
+        return false;
+    }
+    return true;
+}
+
+// Points `linkPath` at `target`, replacing a symbolic link already there but
+// nothing else.
+bool makeLink(const QString &linkPath, const QString &target, QString &message)
+{
+    const QByteArray path = QFile::encodeName(linkPath);
+    const QFileInfo existing(linkPath);
+    if (existing.isSymLink()) {
+        if (::unlink(path.constData()) != 0) {
+            message = QStringLiteral("--link: cannot replace %1: %2").arg(linkPath, QString::fromLocal8Bit(std::strerror(errno)));
+            return false;
+        }
+    } else if (existing.exists()) {
+        message = QStringLiteral("--link: %1 exists and is not a symbolic link; not replacing it").arg(linkPath);
+        return false;
+    }
+    if (::symlink(QFile::encodeName(target).constData(), path.constData()) != 0) {
+        message = QStringLiteral("--link: cannot create %1: %2").arg(linkPath, QString::fromLocal8Bit(std::strerror(errno)));
+        return false;
+    }
+    return true;
+}
+
+} // namespace
+
+int main(int argc, char *argv[])
+{
+    QCoreApplication app(argc, argv);
+    QCoreApplication::setApplicationName(QStringLiteral("roomba-sim"));
+    QCoreApplication::setApplicationVersion(QStringLiteral(ROOMBA_VERSION));
+
+    QCommandLineParser parser;
+    parser.setApplicationDescription(QStringLiteral(
+        "A virtual iRobot Open Interface robot on a pseudo-terminal.\n"
+        "Prints the device to open (or tcp://ADDRESS:PORT) on the first line of\n"
+        "standard output, then runs until interrupted."));
+    const QCommandLineOption helpOption = parser.addHelpOption();
+    const QCommandLineOption versionOption = parser.addVersionOption();
+    parser.addOptions({
+        {QStringLiteral("profile"), QStringLiteral("Robot: roomba500, create2 (also roomba600) or create1 (also create). Default create2."), QStringLiteral("PROFILE"), QStringLiteral("create2")},
+        {QStringLiteral("firmware"), QStringLiteral("Firmware release printed after Reset (7), e.g. release-3.4.1 (Roomba 500 and Create 2)."), QStringLiteral("RELEASE")},
+        {QStringLiteral("seed"), QStringLiteral("Seed of the fault injection (default 1)."), QStringLiteral("N"), QStringLiteral("1")},
+        {QStringLiteral("corrupt"), QStringLiteral("Probability that a byte the robot sends is replaced by a random one."), QStringLiteral("P")},
+        {QStringLiteral("stray"), QStringLiteral("Probability that a stray 19 is sent before a byte."), QStringLiteral("P")},
+        {QStringLiteral("drop"), QStringLiteral("Probability that a byte the robot sends is lost."), QStringLiteral("P")},
+        {QStringLiteral("tcp"), QStringLiteral("Serve raw bytes on this TCP port instead of a pseudo-terminal (0 picks a free port)."), QStringLiteral("PORT")},
+        {QStringLiteral("bind"), QStringLiteral("Address to listen on with --tcp (default 127.0.0.1)."), QStringLiteral("ADDRESS"), QStringLiteral("127.0.0.1")},
+        {QStringLiteral("link"), QStringLiteral("Also make a symbolic link at PATH to the pseudo-terminal (an existing link is replaced)."), QStringLiteral("PATH")},
+    });
+
+    if (!parser.parse(QCoreApplication::arguments()))
+        return fail(kUsageError, parser.errorText());
+    if (parser.isSet(helpOption)) {
+        std::fputs(qPrintable(parser.helpText()), stdout);
+        return 0;
+    }
+    if (parser.isSet(versionOption)) {
+        std::printf("roomba-sim %s\n", ROOMBA_VERSION);
+        return 0;
+    }
+    if (!parser.positionalArguments().isEmpty())
+        return fail(kUsageError, QStringLiteral("unexpected argument '%1'").arg(parser.positionalArguments().first()));
+
+    const oi::RobotProfile *profile = oi::profileByKey(parser.value(QStringLiteral("profile")).toStdString());
+    if (!profile)
+        return fail(kUsageError, QStringLiteral("--profile: '%1' is not a robot (roomba500, create2, create1)")
+                                     .arg(parser.value(QStringLiteral("profile"))));
+
+    bool ok = false;
+    const std::uint32_t seed = parser.value(QStringLiteral("seed")).toUInt(&ok);
+    if (!ok)
+        return fail(kUsageError, QStringLiteral("--seed: '%1' is not a whole number 0..4294967295")
+                                     .arg(parser.value(QStringLiteral("seed"))));
+
+    sim::FaultRates rates;
+    QString message;
+    if (!parseRate(parser, QStringLiteral("corrupt"), rates.corruptByte, message)
+        || !parseRate(parser, QStringLiteral("stray"), rates.strayHeader, message)
+        || !parseRate(parser, QStringLiteral("drop"), rates.dropByte, message))
+        return fail(kUsageError, message);
+
+    QString firmware;
+    if (parser.isSet(QStringLiteral("firmware"))) {
+        firmware = parser.value(QStringLiteral("firmware"));
+        if (profile->id == oi::ProfileId::Create1)
+            return fail(kUsageError, QStringLiteral("--firmware: the Create has no Reset banner; use it with roomba500 or create2"));
+        if (!oi::parseFirmwareBanner("r3_robot/tags/" + firmware.toStdString() + ":"))
+            return fail(kUsageError, QStringLiteral("--firmware: '%1' is not a release name like release-3.8.2 or release-stm32-3.7.7").arg(firmware));
+    }
+
+    const bool tcp = parser.isSet(QStringLiteral("tcp"));
+    quint16 port = 0;
+    QHostAddress address;
+    if (tcp) {
+        port = parser.value(QStringLiteral("tcp")).toUShort(&ok);
+        if (!ok)
+            return fail(kUsageError, QStringLiteral("--tcp: '%1' is not a port 0..65535").arg(parser.value(QStringLiteral("tcp"))));
+        const QString bind = parser.value(QStringLiteral("bind"));
+        if (bind == QLatin1String("localhost"))
+            address = QHostAddress(QHostAddress::LocalHost);
+        else if (!address.setAddress(bind))
+            return fail(kUsageError, QStringLiteral("--bind: '%1' is not an IP address").arg(bind));
+        if (parser.isSet(QStringLiteral("link")))
+            return fail(kUsageError, QStringLiteral("--link makes a link to the pseudo-terminal; it does not go with --tcp"));
+    } else if (parser.isSet(QStringLiteral("bind"))) {
+        return fail(kUsageError, QStringLiteral("--bind goes with --tcp"));
+    }
+
+    // SIGINT and SIGTERM end the event loop through a pipe, so the handler
+    // does nothing but write a byte.
+    if (::socketpair(AF_UNIX, SOCK_STREAM, 0, g_signalPipe) != 0)
+        return fail(kRuntimeError, QStringLiteral("socketpair: %1").arg(QString::fromLocal8Bit(std::strerror(errno))));
+    QSocketNotifier signalNotifier(g_signalPipe[0], QSocketNotifier::Read);
+    QObject::connect(&signalNotifier, &QSocketNotifier::activated, &app, [] {
+        char byte = 0;
+        [[maybe_unused]] const ssize_t n = ::read(g_signalPipe[0], &byte, 1);
+        QCoreApplication::quit();
+    });
+    struct sigaction action {};
+    action.sa_handler = onSignal;
+    sigemptyset(&action.sa_mask);
+    action.sa_flags = SA_RESTART;
+    sigaction(SIGINT, &action, nullptr);
+    sigaction(SIGTERM, &action, nullptr);
+    std::signal(SIGPIPE, SIG_IGN);
+
+    std::unique_ptr<sim::PtyRobotServer> pty;
+    std::unique_ptr<sim::TcpRobotServer> tcpServer;
+    sim::VirtualRobot *robot = nullptr;
+    QString where;
+    if (tcp) {
+        tcpServer = std::make_unique<sim::TcpRobotServer>(*profile, seed);
+        robot = &tcpServer->robot().robot();
+    } else {
+        pty = std::make_unique<sim::PtyRobotServer>(*profile, seed);
+        robot = &pty->robot().robot();
+    }
+    robot->setFaultRates(rates);
+    if (!firmware.isEmpty())
+        robot->setFirmwareRelease(firmware.toStdString());
+
+    if (tcp) {
+        if (!tcpServer->listen(address, port, &message))
+            return fail(kRuntimeError, QStringLiteral("cannot listen on %1:%2: %3").arg(address.toString()).arg(port).arg(message));
+        const QString host = address.protocol() == QAbstractSocket::IPv6Protocol
+                                 ? QStringLiteral("[%1]").arg(address.toString())
+                                 : address.toString();
+        where = QStringLiteral("tcp://%1:%2").arg(host).arg(tcpServer->serverPort());
+    } else {
+        if (!pty->open(&message))
+            return fail(kRuntimeError, QStringLiteral("cannot create a pseudo-terminal: %1").arg(message));
+        where = pty->slavePath();
+    }
+
+    QString linkPath;
+    if (parser.isSet(QStringLiteral("link"))) {
+        linkPath = parser.value(QStringLiteral("link"));
+        if (!makeLink(linkPath, where, message))
+            return fail(kUsageError, message);
+    }
+
+    std::printf("%s\n", qPrintable(where));
+    std::fflush(stdout);
+    std::fprintf(stderr, "roomba-sim: %.*s on %s%s%s\n", int(profile->name.size()), profile->name.data(), qPrintable(where),
+                 linkPath.isEmpty() ? "" : " via ", qPrintable(linkPath));
+
+    const int status = app.exec();
+
+    if (pty)
+        pty->close();
+    if (tcpServer)
+        tcpServer->close();
+    if (!linkPath.isEmpty() && QFileInfo(linkPath).isSymLink())
+        ::unlink(QFile::encodeName(linkPath).constData());
+    return status;
+}

@@ -1,0 +1,50 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "link_settings.h"
+
+namespace oilink {
+
+QString LinkSettings::describe() const
+{
+    switch (transport) {
+    case TransportKind::Serial:
+        return portPath;
+    case TransportKind::Tcp:
+        return host + QLatin1Char(':') + QString::number(tcpPort);
+    case TransportKind::Virtual:
+        break;
+    }
+    const std::string_view name = oi::profile(virtualRobot).name;
+    return QStringLiteral("virtual ")
+           + QString::fromUtf8(name.data(), static_cast<qsizetype>(name.size()));
+}
+
+LinkSettings LinkSettings::serial(const QString &path, std::optional<oi::ProfileId> profile, int baud)
+{
+    LinkSettings s;
+    s.transport = TransportKind::Serial;
+    s.portPath = path;
+    s.profile = profile;
+    s.baud = baud;
+    return s;
+}
+
+LinkSettings LinkSettings::tcp(const QString &host, quint16 port, std::optional<oi::ProfileId> profile)
+{
+    LinkSettings s;
+    s.transport = TransportKind::Tcp;
+    s.host = host;
+    s.tcpPort = port;
+    s.profile = profile;
+    return s;
+}
+
+LinkSettings LinkSettings::virtualRobotOf(oi::ProfileId robot, std::optional<oi::ProfileId> profile)
+{
+    LinkSettings s;
+    s.transport = TransportKind::Virtual;
+    s.virtualRobot = robot;
+    s.profile = profile;
+    return s;
+}
+
+} // namespace oilink

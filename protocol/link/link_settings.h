@@ -1,0 +1,51 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "robot_profile.h"
+
+#include <QList>
+#include <QMetaType>
+#include <QString>
+
+#include <cstdint>
+#include <optional>
+
+// Not `link`: <unistd.h>, which every Qt header pulls in, declares ::link(),
+// and a namespace may not share its name.
+namespace oilink {
+
+enum class TransportKind : std::uint8_t {
+    Serial,  // a serial port or USB adapter, or a pseudo-terminal such as /dev/pts/5
+    Tcp,     // raw TCP to a serial bridge (ser2net, a Wi-Fi serial module)
+    Virtual, // the built-in virtual robot, in this process
+};
+
+// Everything needed to reach one robot. Plain value; crosses threads.
+struct LinkSettings {
+    TransportKind transport = TransportKind::Virtual;
+    QString portPath;      // Serial: a device path, typed or picked
+    QString host;          // Tcp
+    quint16 tcpPort = 0;   // Tcp
+    // nullopt = Auto: find the profile (and, on a serial port, the baud) by probing.
+    std::optional<oi::ProfileId> profile;
+    int baud = 0;          // 0 = the profile's default
+    QList<int> streamPackets; // empty = the largest set that fits the baud
+    // Which robot the in-process virtual robot plays (TransportKind::Virtual).
+    oi::ProfileId virtualRobot = oi::ProfileId::Create2;
+    std::uint32_t virtualSeed = 1;
+
+    // "/dev/ttyUSB0", "raspberrypi:3333", "virtual Create 2": for messages.
+    QString describe() const;
+
+    static LinkSettings serial(const QString &path, std::optional<oi::ProfileId> profile = {},
+                               int baud = 0);
+    static LinkSettings tcp(const QString &host, quint16 port,
+                            std::optional<oi::ProfileId> profile = {});
+    static LinkSettings virtualRobotOf(oi::ProfileId robot, std::optional<oi::ProfileId> profile);
+
+    friend bool operator==(const LinkSettings &, const LinkSettings &) = default;
+};
+
+} // namespace oilink
+
+Q_DECLARE_METATYPE(oilink::LinkSettings)

@@ -1,0 +1,35 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "link_status.h"
+
+#include "link_settings.h"
+
+#include <QByteArray>
+#include <QList>
+
+namespace oilink {
+
+QString linkStateName(LinkState state)
+{
+    switch (state) {
+    case LinkState::Closed: return QStringLiteral("closed");
+    case LinkState::Connecting: return QStringLiteral("connecting");
+    case LinkState::Streaming: return QStringLiteral("streaming");
+    case LinkState::Stale: return QStringLiteral("stale");
+    case LinkState::Lost: return QStringLiteral("lost");
+    case LinkState::Reconnecting: return QStringLiteral("reconnecting");
+    }
+    return QString();
+}
+
+void registerLinkMetaTypes()
+{
+    qRegisterMetaType<oi::SensorSnapshot>();
+    qRegisterMetaType<oi::ProfileId>();
+    qRegisterMetaType<QList<int>>();
+    qRegisterMetaType<LinkState>();
+    qRegisterMetaType<LinkStats>();
+    qRegisterMetaType<LinkSettings>();
+    qRegisterMetaType<QByteArray>();
+}
+
+} // namespace oilink

@@ -1,0 +1,135 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "profile_probe.h"
+
+#include "transport.h"
+
+namespace oilink {
+
+namespace {
+constexpr int kDrainMs = 80;
+// Generous: a robot answers within a frame time, but a busy machine running
+// the virtual robot in another process may not schedule it at once.
+constexpr int kReplyTimeoutMs = 400;
+// After the expected bytes, wait this long for more: extra bytes mean the
+// answer was garbage.
+constexpr int kQuietMs = 30;
+constexpr int kModeAttempts = 2;
+constexpr std::uint8_t kModeMax = 3;
+constexpr std::uint8_t kBumpBitsUnused = 0xE0;
+
+QByteArray bytes(std::initializer_list<std::uint8_t> values)
+{
+    QByteArray out;
+    for (std::uint8_t v : values)
+        out.append(static_cast<char>(v));
+    return out;
+}
+} // namespace
+
+ProfileProbe::ProfileProbe(Transport &transport, QList<int> bauds, QObject *parent)
+    : QObject(parent), m_transport(transport), m_bauds(std::move(bauds)), m_timer(this)
+{
+    m_timer.setSingleShot(true);
+    connect(&m_timer, &QTimer::timeout, this, &ProfileProbe::onTimeout);
+}
+
+void ProfileProbe::start()
+{
+    m_baudIndex = 0;
+    tryBaud();
+}
+
+void ProfileProbe::cancel()
+{
+    m_timer.stop();
+    m_step = Step::Idle;
+}
+
+void ProfileProbe::tryBaud()
+{
+    if (m_baudIndex >= m_bauds.size()) {
+        m_step = Step::Idle;
+        emit failed();
+        return;
+    }
+    m_baud = m_bauds[m_baudIndex];
+    if (!m_transport.setBaud(m_baud)) {
+        m_baud = 0;
+        m_baudIndex = m_bauds.size(); // one pass only: nothing to change
+    }
+    m_modeAttempts = 0;
+    m_received.clear();
+    m_step = Step::Draining;
+    send(bytes({128, 150, 0}));
+    m_timer.start(kDrainMs);
+}
+
+void ProfileProbe::nextBaud()
+{
+    ++m_baudIndex;
+    tryBaud();
+}
+
+void ProfileProbe::send(const QByteArray &data)
+{
+    if (m_transport.write(data))
+        emit bytesSent(data);
+}
+
+void ProfileProbe::ask(const QByteArray &question, qsizetype expected, Step step)
+{
+    m_received.clear();
+    m_expected = expected;
+    m_settling = false;
+    m_step = step;
+    send(question);
+    m_timer.start(kReplyTimeoutMs);
+}
+
+void ProfileProbe::feed(const QByteArray &data)
+{
+    if (m_step == Step::Idle)
+        return;
+    m_received += data;
+    if (m_step != Step::Draining && !m_settling && m_received.size() >= m_expected) {
+        m_settling = true;
+        m_timer.start(kQuietMs);
+    }
+}
+
+void ProfileProbe::onTimeout()
+{
+    const auto at = [this](qsizetype i) { return static_cast<std::uint8_t>(m_received.at(i)); };
+    switch (m_step) {
+    case Step::Idle:
+        return;
+    case Step::Draining:
+        ask(bytes({149, 2, 35, 7}), 2, Step::AskMode);
+        return;
+    case Step::AskMode: {
+        const bool plausible = m_received.size() == 2 && at(0) >= 1 && at(0) <= kModeMax
+                               && (at(1) & kBumpBitsUnused) == 0;
+        if (plausible) {
+            const oi::PacketGroup *group = oi::profile(oi::ProfileId::Create2).group(101);
+            ask(bytes({142, 101}), group->bytes, Step::AskRoombaGroup);
+        } else if (++m_modeAttempts < kModeAttempts) {
+            ask(bytes({149, 2, 35, 7}), 2, Step::AskMode);
+        } else {
+            nextBaud();
+        }
+        return;
+    }
+    case Step::AskRoombaGroup:
+        finish(m_received.size() == m_expected ? oi::ProfileId::Create2 : oi::ProfileId::Create1);
+        return;
+    }
+}
+
+void ProfileProbe::finish(oi::ProfileId profile)
+{
+    m_step = Step::Idle;
+    m_timer.stop();
+    emit detected(profile, m_baud);
+}
+
+} // namespace oilink

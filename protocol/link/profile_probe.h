@@ -1,0 +1,77 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "link_status.h" // the metatype of oi::ProfileId, which a signal carries
+
+#include "robot_profile.h"
+
+#include <QByteArray>
+#include <QList>
+#include <QObject>
+#include <QTimer>
+
+namespace oilink {
+
+class Transport;
+
+// Finds which robot is on an open transport, and at which baud.
+//
+// At each baud (a serial port tries 115200, 57600 and 19200; TCP and the
+// virtual robot have no baud of their own and get one pass):
+//  1. Start (128) and Pause Stream (150 0), in case an earlier client left a
+//     stream running; after 80 ms of letting it drain, forget what came.
+//  2. Query List 35, 7: exactly two bytes must come back, an OI mode of
+//     1..3 (Start has just made it Passive) and a bumps byte with bits 5..7
+//     clear. Anything else is the wrong baud or no robot; asked twice, so one
+//     corrupted answer on a noisy line does not skip the right baud.
+//  3. Sensors 101 (43..58): the Roomba 500 and Create 2 send its 28 bytes;
+//     the Create has no such group and sends nothing, or something that is
+//     not 28 bytes. That is the Create.
+// The Roomba 500 and the Create 2 answer every question alike (the same
+// commands, packet ids and sizes); they differ only in what packets 43/44
+// mean (ERRATA 4) and in the range of 58, which no answer reveals. The probe
+// says Create 2, the newer and commoner of the two; for a Roomba 500 the
+// user names the profile, which decides which encoder count is which.
+class ProfileProbe : public QObject {
+    Q_OBJECT
+public:
+    // `bauds` is tried in order on a transport with a baud of its own.
+    ProfileProbe(Transport &transport, QList<int> bauds, QObject *parent = nullptr);
+
+    static QList<int> defaultBauds() { return {115200, 57600, 19200}; }
+
+    void start();
+    void cancel();
+    bool isRunning() const { return m_step != Step::Idle; }
+    // Everything the transport receives while the probe runs.
+    void feed(const QByteArray &bytes);
+
+signals:
+    void bytesSent(const QByteArray &bytes);
+    // `baud` is 0 where the transport has no baud of its own.
+    void detected(oi::ProfileId profile, int baud);
+    void failed();
+
+private:
+    enum class Step { Idle, Draining, AskMode, AskRoombaGroup };
+
+    void tryBaud();
+    void nextBaud();
+    void send(const QByteArray &bytes);
+    void ask(const QByteArray &bytes, qsizetype expected, Step step);
+    void onTimeout();
+    void finish(oi::ProfileId profile);
+
+    Transport &m_transport;
+    QList<int> m_bauds;
+    qsizetype m_baudIndex = 0;
+    int m_baud = 0;
+    int m_modeAttempts = 0;
+    Step m_step = Step::Idle;
+    QByteArray m_received;
+    qsizetype m_expected = 0;
+    bool m_settling = false;
+    QTimer m_timer;
+};
+
+} // namespace oilink

@@ -1,0 +1,600 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "robot_link.h"
+
+#include "profile_probe.h"
+#include "stream_packets.h"
+#include "transport.h"
+
+#include "command_encoder.h"
+
+#include <QDateTime>
+
+#include <algorithm>
+
+namespace oilink {
+
+namespace {
+constexpr int kMaxRearmMs = 8000;
+constexpr int kStatsIntervalMs = 1000;
+constexpr int kStatsSoonMs = 100;
+constexpr int kMinRateWindowMs = 100;
+constexpr int kFlushMs = 500;
+// A paused stream has drained once nothing came for this long (frames come
+// every 15 ms).
+constexpr int kQueryQuietMs = 50;
+constexpr int kQueryTimeoutMs = 500;
+constexpr std::uint8_t kOpStart = 128;
+constexpr std::uint8_t kOpPauseResume = 150;
+
+QByteArray toBytes(const oi::Bytes &bytes)
+{
+    return QByteArray(reinterpret_cast<const char *>(bytes.data()), static_cast<qsizetype>(bytes.size()));
+}
+
+QByteArray bytesOf(std::initializer_list<std::uint8_t> values)
+{
+    QByteArray out;
+    for (std::uint8_t v : values)
+        out.append(static_cast<char>(v));
+    return out;
+}
+
+QString fromStd(std::string_view text)
+{
+    return QString::fromUtf8(text.data(), static_cast<qsizetype>(text.size()));
+}
+
+void add(oi::ParserCounters &to, const oi::ParserCounters &from)
+{
+    to.framesGood += from.framesGood;
+    to.repliesGood += from.repliesGood;
+    to.checksumFailures += from.checksumFailures;
+    to.lengthMismatches += from.lengthMismatches;
+    to.bytesDiscarded += from.bytesDiscarded;
+}
+} // namespace
+
+RobotLink::RobotLink(QObject *parent)
+    : QObject(parent), m_watchdog(this), m_noData(this), m_reconnect(this), m_probeRetry(this),
+      m_queryQuiet(this), m_queryTimeout(this), m_statsTick(this), m_statsSoon(this)
+{
+    registerLinkMetaTypes();
+    m_parser.setSnapshotHandler([this](const oi::SensorSnapshot &s, oi::FrameKind kind) {
+        if (kind == oi::FrameKind::Stream)
+            onFrame(s);
+        else
+            onReply(s);
+    });
+    for (QTimer *t : {&m_watchdog, &m_noData, &m_reconnect, &m_probeRetry, &m_queryQuiet,
+                      &m_queryTimeout, &m_statsSoon})
+        t->setSingleShot(true);
+    m_watchdog.setInterval(kStaleAfterMs);
+    m_statsTick.setInterval(kStatsIntervalMs);
+    m_statsSoon.setInterval(kStatsSoonMs);
+    m_queryQuiet.setInterval(kQueryQuietMs);
+    m_queryTimeout.setInterval(kQueryTimeoutMs);
+    connect(&m_watchdog, &QTimer::timeout, this, &RobotLink::onWatchdog);
+    connect(&m_noData, &QTimer::timeout, this, &RobotLink::onNoData);
+    connect(&m_reconnect, &QTimer::timeout, this, &RobotLink::openTransport);
+    connect(&m_probeRetry, &QTimer::timeout, this, &RobotLink::startProbe);
+    connect(&m_queryQuiet, &QTimer::timeout, this, &RobotLink::sendQuery);
+    connect(&m_queryTimeout, &QTimer::timeout, this, &RobotLink::onQueryTimeout);
+    connect(&m_statsTick, &QTimer::timeout, this, &RobotLink::onStatsTick);
+    connect(&m_statsSoon, &QTimer::timeout, this, &RobotLink::emitStatsIfChanged);
+}
+
+RobotLink::~RobotLink()
+{
+    close();
+}
+
+void RobotLink::setTransportFactory(TransportFactory factory)
+{
+    m_factory = std::move(factory);
+}
+
+int RobotLink::baud() const
+{
+    if (m_baud > 0)
+        return m_baud;
+    return m_profile ? m_profile->defaultBaud : 0;
+}
+
+QList<int> RobotLink::streamPackets() const
+{
+    return QList<int>(m_streamIds.begin(), m_streamIds.end());
+}
+
+// --- Opening and closing ---
+
+void RobotLink::open(const LinkSettings &settings)
+{
+    if (m_state != LinkState::Closed)
+        close();
+    m_settings = settings;
+    m_profile = settings.profile ? &oi::profile(*settings.profile) : nullptr;
+    m_baud = settings.baud;
+    m_streamIds.clear();
+    m_parser.reset();
+    m_counterBase = {};
+    m_totals = {};
+    m_lastFrameMs = -1;
+    m_framesPerSecond = 0;
+    m_framesAtRateStart = 0;
+    m_lastEmitted = {};
+    m_reported.clear();
+    m_recovering = false;
+    m_backoffMs = kFirstBackoffMs;
+    m_rateClock.start();
+    m_statsTick.start();
+    setState(LinkState::Connecting);
+    openTransport();
+}
+
+void RobotLink::close()
+{
+    if (m_state == LinkState::Closed)
+        return;
+    for (QTimer *t : {&m_watchdog, &m_noData, &m_reconnect, &m_probeRetry, &m_queryQuiet,
+                      &m_queryTimeout, &m_statsSoon, &m_statsTick})
+        t->stop();
+    m_queries.clear();
+    m_queryPhase = QueryPhase::None;
+    if (m_transport && m_transportOpen) {
+        // ERRATA 17: leave it stopped and in Passive, where it saves its battery.
+        // The bytes are the same on every profile, so this holds even while
+        // the probe has not yet found which one it is.
+        const oi::RobotProfile &profile = m_profile ? *m_profile : oi::profile(oi::ProfileId::Create2);
+        writeBytes(toBytes(oi::CommandEncoder(profile).shutdownSequence()));
+        m_transport->flush(kFlushMs);
+    }
+    dropTransport();
+    // The last window counts too when it is long enough to mean something,
+    // so a short session still reports a rate.
+    if (m_rateClock.isValid() && m_rateClock.elapsed() >= kMinRateWindowMs)
+        updateRate();
+    emitStatsIfChanged();
+    setState(LinkState::Closed);
+}
+
+Transport *RobotLink::makeTransport()
+{
+    if (m_factory)
+        return m_factory(m_settings);
+    return createTransport(m_settings, baud() > 0 ? baud() : ProfileProbe::defaultBauds().front());
+}
+
+void RobotLink::openTransport()
+{
+    if (m_state == LinkState::Closed || m_transport)
+        return;
+    Transport *transport = makeTransport();
+    transport->setParent(this);
+    m_transport = transport;
+    m_transportOpen = false;
+    connect(transport, &Transport::opened, this, &RobotLink::onTransportOpened);
+    connect(transport, &Transport::bytesReceived, this, &RobotLink::onBytes);
+    connect(transport, &Transport::errorOccurred, this, &RobotLink::onTransportError);
+    connect(transport, &Transport::closed, this, &RobotLink::onTransportClosed);
+    // Last: a transport may answer from inside open().
+    transport->open();
+}
+
+// Never deletes the transport at once: this may run inside one of its signals.
+void RobotLink::dropTransport()
+{
+    if (m_probe) {
+        m_probe->cancel();
+        m_probe->deleteLater();
+        m_probe = nullptr;
+    }
+    m_probeRetry.stop();
+    if (m_transport) {
+        disconnect(m_transport, nullptr, this, nullptr);
+        m_transport->close();
+        m_transport->deleteLater();
+        m_transport = nullptr;
+    }
+    m_transportOpen = false;
+    m_streamRequested = false;
+    m_watchdog.stop();
+    m_noData.stop();
+    dropPartialInput();
+}
+
+void RobotLink::scheduleReconnect()
+{
+    m_reconnect.start(m_backoffMs);
+    m_backoffMs = std::min(m_backoffMs * 2, kMaxBackoffMs);
+}
+
+void RobotLink::onTransportOpened()
+{
+    m_transportOpen = true;
+    dropPartialInput();
+    if (m_profile)
+        startStream();
+    else
+        startProbe();
+}
+
+void RobotLink::onTransportError(const QString &message)
+{
+    reportError(message);
+    if (m_transportOpen)
+        return; // closed() follows
+    // Could not open: try again, more slowly each time.
+    dropTransport();
+    setState(LinkState::Reconnecting);
+    scheduleReconnect();
+}
+
+void RobotLink::onTransportClosed()
+{
+    dropTransport();
+    m_queries.clear();
+    m_queryPhase = QueryPhase::None;
+    m_queryQuiet.stop();
+    m_queryTimeout.stop();
+    m_recovering = true;
+    setState(LinkState::Lost);
+    setState(LinkState::Reconnecting);
+    scheduleReconnect();
+}
+
+// --- Finding the robot ---
+
+void RobotLink::startProbe()
+{
+    if (!m_transport || !m_transportOpen)
+        return;
+    if (!m_probe) {
+        const QList<int> bauds = m_settings.baud > 0 ? QList<int>{m_settings.baud} : ProfileProbe::defaultBauds();
+        m_probe = new ProfileProbe(*m_transport, bauds, this);
+        connect(m_probe, &ProfileProbe::bytesSent, this, [this](const QByteArray &bytes) {
+            m_totals.bytesSent += static_cast<quint64>(bytes.size());
+            emit rawBytesSent(bytes);
+        });
+        connect(m_probe, &ProfileProbe::detected, this, [this](oi::ProfileId id, int baud) {
+            m_profile = &oi::profile(id);
+            if (baud > 0)
+                m_baud = baud;
+            m_probe->deleteLater();
+            m_probe = nullptr;
+            m_rearmMs = kNoDataAfterMs;
+            startStream();
+        });
+        connect(m_probe, &ProfileProbe::failed, this, &RobotLink::onProbeFailed);
+    }
+    m_probe->start();
+}
+
+void RobotLink::onProbeFailed()
+{
+    reportError(noDataMessage());
+    // The robot may be switched on later; ask again, less often each time.
+    m_probeRetry.start(m_rearmMs);
+    m_rearmMs = std::min(m_rearmMs * 2, kMaxRearmMs);
+}
+
+QString RobotLink::noDataMessage() const
+{
+    return m_settings.describe() + QStringLiteral(": no data: is the robot on, and is the baud right?");
+}
+
+// --- The stream ---
+
+void RobotLink::startStream()
+{
+    const int rate = baud();
+    m_streamIds = m_settings.streamPackets.isEmpty()
+                      ? chooseStreamPackets(*m_profile, rate)
+                      : std::vector<int>(m_settings.streamPackets.begin(), m_settings.streamPackets.end());
+    const oi::EncodeResult command = streamCommand(*m_profile, m_streamIds, rate);
+    if (!command) {
+        // A packet list that cannot work will not start working: stop here.
+        const QString why = m_streamIds.empty()
+                                ? QStringLiteral("no packet fits in a 15 ms frame at %1 baud").arg(rate)
+                                : fromStd(command.error().describe());
+        reportError(m_settings.describe() + QStringLiteral(": cannot stream: ") + why, false);
+        dropTransport();
+        m_statsTick.stop();
+        setState(LinkState::Closed);
+        return;
+    }
+    m_parser.setProfile(*m_profile);
+    const std::vector<std::uint8_t> ids(m_streamIds.begin(), m_streamIds.end());
+    m_parser.setExpectedStream(ids);
+    m_streamCommand = toBytes(*command);
+    m_frameSinceStreamStart = false;
+    m_rearmMs = kNoDataAfterMs;
+    if (!writeBytes(bytesOf({kOpStart})) || !writeBytes(m_streamCommand))
+        return;
+    m_streamRequested = true;
+    m_noData.start(m_rearmMs);
+    emit streamStarted(m_profile->id, rate, streamPackets());
+}
+
+// Start and Stream again: a robot that was reset, woke up, or was switched
+// on after the port opened streams nothing until it is asked. Start also
+// ends Safe or Full mode, which is wanted: a robot whose data has been
+// missing for a second must not go on driving on commands sent blind.
+void RobotLink::rearmStream()
+{
+    writeBytes(bytesOf({kOpStart}));
+    writeBytes(m_streamCommand);
+}
+
+void RobotLink::onBytes(const QByteArray &bytes)
+{
+    m_totals.bytesReceived += static_cast<quint64>(bytes.size());
+    emit rawBytesReceived(bytes);
+    if (m_probe && m_probe->isRunning()) {
+        m_probe->feed(bytes);
+        return;
+    }
+    if (m_queryPhase == QueryPhase::Pausing)
+        m_queryQuiet.start();
+    const oi::ParserCounters before = m_parser.counters();
+    m_feeding = true;
+    m_parser.feed({reinterpret_cast<const std::uint8_t *>(bytes.constData()), static_cast<std::size_t>(bytes.size())});
+    m_feeding = false;
+    if (m_resetAfterFeed) {
+        m_resetAfterFeed = false;
+        dropPartialInput();
+        return;
+    }
+    const oi::ParserCounters &after = m_parser.counters();
+    if (after.checksumFailures != before.checksumFailures || after.lengthMismatches != before.lengthMismatches
+        || after.bytesDiscarded != before.bytesDiscarded)
+        scheduleStats();
+}
+
+void RobotLink::onFrame(const oi::SensorSnapshot &frame)
+{
+    if (!m_streamRequested)
+        return; // closed by a slot of an earlier frame of the same read
+    m_lastFrameMs = QDateTime::currentMSecsSinceEpoch();
+    m_frameSinceStreamStart = true;
+    if (m_queryPhase == QueryPhase::None)
+        m_watchdog.start();
+    if (m_state != LinkState::Streaming) {
+        if (m_recovering) {
+            ++m_totals.reconnects;
+            m_recovering = false;
+        }
+        m_noData.stop();
+        m_reported.clear();
+        m_backoffMs = kFirstBackoffMs;
+        m_rearmMs = kNoDataAfterMs;
+        setState(LinkState::Streaming);
+    }
+    emit snapshot(frame);
+}
+
+void RobotLink::onWatchdog()
+{
+    if (m_state != LinkState::Streaming)
+        return;
+    setState(LinkState::Stale);
+    m_rearmMs = kNoDataAfterMs;
+    m_noData.start(m_rearmMs);
+}
+
+void RobotLink::onNoData()
+{
+    if (!m_streamRequested)
+        return;
+    if (m_queryPhase != QueryPhase::None) {
+        m_noData.start(m_rearmMs);
+        return;
+    }
+    if (!m_frameSinceStreamStart)
+        reportError(noDataMessage());
+    rearmStream();
+    m_rearmMs = std::min(m_rearmMs * 2, kMaxRearmMs);
+    m_noData.start(m_rearmMs);
+}
+
+// --- Commands and queries ---
+
+void RobotLink::send(const QByteArray &bytes)
+{
+    if (!m_transport || !m_transportOpen) {
+        reportError(QStringLiteral("not connected: the command was not sent"), false);
+        return;
+    }
+    writeBytes(bytes);
+}
+
+bool RobotLink::writeBytes(const QByteArray &bytes)
+{
+    if (!m_transport || !m_transport->write(bytes)) {
+        reportError(m_settings.describe() + QStringLiteral(": write failed"));
+        return false;
+    }
+    m_totals.bytesSent += static_cast<quint64>(bytes.size());
+    emit rawBytesSent(bytes);
+    return true;
+}
+
+void RobotLink::querySensors(const QList<int> &packetIds)
+{
+    if (!m_profile || !m_transport || !m_transportOpen || (m_probe && m_probe->isRunning())) {
+        reportError(QStringLiteral("not connected: the sensor query was not sent"), false);
+        return;
+    }
+    std::vector<std::uint8_t> ids;
+    for (int id : packetIds) {
+        if (!m_profile->isValidSensorId(id)) {
+            reportError(QStringLiteral("sensor query: %1 is not a packet or group of the %2")
+                            .arg(id)
+                            .arg(fromStd(m_profile->name)),
+                        false);
+            return;
+        }
+        ids.push_back(static_cast<std::uint8_t>(id));
+    }
+    if (ids.empty() || ids.size() > 255) {
+        reportError(QStringLiteral("sensor query: ask for 1 to 255 packets"), false);
+        return;
+    }
+    m_queries.push_back(std::move(ids));
+    if (m_queryPhase == QueryPhase::None)
+        startNextQuery();
+}
+
+// A reply carries no framing (ERRATA 3): it must not meet stream bytes, so
+// the stream is paused, allowed to drain, and resumed after the answer.
+void RobotLink::startNextQuery()
+{
+    if (m_queries.empty() || m_queryPhase != QueryPhase::None || !m_transport || !m_transportOpen)
+        return;
+    m_queryTimeout.start();
+    if (m_streamRequested) {
+        m_queryPhase = QueryPhase::Pausing;
+        m_watchdog.stop();
+        writeBytes(bytesOf({kOpPauseResume, 0}));
+        m_queryQuiet.start();
+    } else {
+        sendQuery();
+    }
+}
+
+void RobotLink::sendQuery()
+{
+    if (m_queries.empty() || !m_transport)
+        return;
+    dropPartialInput();
+    const std::vector<std::uint8_t> &ids = m_queries.front();
+    const oi::CommandEncoder encoder(*m_profile);
+    const std::vector<int> asInts(ids.begin(), ids.end());
+    const oi::EncodeResult command = ids.size() == 1 ? encoder.sensors(asInts.front()) : encoder.queryList(asInts);
+    m_parser.expectReply(ids);
+    m_queryPhase = QueryPhase::Waiting;
+    m_queryTimeout.start();
+    writeBytes(toBytes(*command));
+}
+
+void RobotLink::onReply(const oi::SensorSnapshot &reply)
+{
+    if (m_queryPhase != QueryPhase::Waiting || !m_transport)
+        return;
+    emit sensorReply(reply);
+    finishQuery();
+}
+
+void RobotLink::onQueryTimeout()
+{
+    if (m_queryPhase == QueryPhase::Pausing) {
+        reportError(m_settings.describe() + QStringLiteral(": the stream did not pause; the sensor query was not sent"),
+                    false);
+    } else {
+        m_parser.cancelReplies();
+        dropPartialInput();
+        reportError(m_settings.describe() + QStringLiteral(": no reply to the sensor query"), false);
+    }
+    finishQuery();
+}
+
+void RobotLink::finishQuery()
+{
+    if (!m_queries.empty())
+        m_queries.pop_front();
+    m_queryPhase = QueryPhase::None;
+    m_queryQuiet.stop();
+    m_queryTimeout.stop();
+    if (m_streamRequested) {
+        writeBytes(bytesOf({kOpPauseResume, 1}));
+        m_watchdog.start();
+    }
+    // Not at once: this may run inside the parser, which the next query resets.
+    if (!m_queries.empty())
+        QMetaObject::invokeMethod(this, &RobotLink::startNextQuery, Qt::QueuedConnection);
+}
+
+// Forgets bytes held for an unfinished frame, counting them as discarded.
+// Inside the parser's own callback (a slot that closes the link on a
+// snapshot), the parser is reset only once it has returned.
+void RobotLink::dropPartialInput()
+{
+    if (m_feeding) {
+        m_resetAfterFeed = true;
+        return;
+    }
+    add(m_counterBase, m_parser.counters());
+    m_counterBase.bytesDiscarded += m_parser.pendingBytes();
+    m_parser.reset();
+}
+
+// --- State, errors, statistics ---
+
+void RobotLink::setState(LinkState state)
+{
+    if (state == m_state)
+        return;
+    m_state = state;
+    emit stateChanged(state);
+    if (state != LinkState::Closed)
+        scheduleStats();
+}
+
+// Connection trouble repeats itself at every reconnect attempt; the user
+// needs to hear each cause once, until the data flows again.
+void RobotLink::reportError(const QString &message, bool onceUntilStreaming)
+{
+    if (onceUntilStreaming) {
+        if (m_reported.contains(message))
+            return;
+        m_reported.insert(message);
+    }
+    emit errorOccurred(message);
+}
+
+LinkStats RobotLink::currentStatistics() const
+{
+    LinkStats s = m_totals;
+    oi::ParserCounters c = m_counterBase;
+    add(c, m_parser.counters());
+    s.frames = c.framesGood;
+    s.replies = c.repliesGood;
+    s.checksumFailures = c.checksumFailures;
+    s.resyncs = c.lengthMismatches;
+    s.bytesDiscarded = c.bytesDiscarded;
+    s.framesPerSecond = m_framesPerSecond;
+    if (m_lastFrameMs >= 0)
+        s.lastFrameTime = QDateTime::fromMSecsSinceEpoch(m_lastFrameMs, Qt::UTC);
+    return s;
+}
+
+void RobotLink::onStatsTick()
+{
+    updateRate();
+    emitStatsIfChanged();
+}
+
+void RobotLink::updateRate()
+{
+    const qint64 elapsed = m_rateClock.restart();
+    const quint64 frames = currentStatistics().frames;
+    if (elapsed > 0)
+        m_framesPerSecond = static_cast<double>(frames - m_framesAtRateStart) * 1000.0 / static_cast<double>(elapsed);
+    m_framesAtRateStart = frames;
+}
+
+void RobotLink::scheduleStats()
+{
+    if (!m_statsSoon.isActive())
+        m_statsSoon.start();
+}
+
+void RobotLink::emitStatsIfChanged()
+{
+    const LinkStats s = currentStatistics();
+    if (s == m_lastEmitted)
+        return;
+    m_lastEmitted = s;
+    emit statistics(s);
+}
+
+} // namespace oilink

@@ -1,0 +1,167 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "link_settings.h"
+#include "link_status.h"
+
+#include "stream_parser.h"
+
+#include <QByteArray>
+#include <QElapsedTimer>
+#include <QList>
+#include <QObject>
+#include <QSet>
+#include <QString>
+#include <QTimer>
+
+#include <cstdint>
+#include <deque>
+#include <functional>
+#include <vector>
+
+namespace oilink {
+
+class ProfileProbe;
+class Transport;
+
+// One robot on one transport: opens it, finds the profile if asked to,
+// starts the sensor stream that fits the baud, parses what comes back and
+// emits one snapshot per frame. Watches the data (Stale after 100 ms without
+// a good frame), reconnects with backoff when the port goes away, and on
+// close() leaves the robot stopped and in Passive mode.
+//
+// It lives on a worker thread (see RobotLinkThread) but works on any thread
+// with an event loop; everything it emits is a value type.
+class RobotLink : public QObject {
+    Q_OBJECT
+public:
+    // Makes the transport for the settings; the link takes ownership. Called
+    // on the link's thread at every (re)connect.
+    using TransportFactory = std::function<Transport *(const LinkSettings &)>;
+
+    static constexpr int kStaleAfterMs = 100;
+    static constexpr int kNoDataAfterMs = 1000;
+    static constexpr int kFirstBackoffMs = 100;
+    static constexpr int kMaxBackoffMs = 2000;
+
+    explicit RobotLink(QObject *parent = nullptr);
+    ~RobotLink() override;
+
+    // Replaces the built-in transports (tests, other bridges). Before open().
+    void setTransportFactory(TransportFactory factory);
+
+    LinkState state() const { return m_state; }
+    LinkStats currentStatistics() const;
+    const LinkSettings &settings() const { return m_settings; }
+    // The profile asked for or found; nullptr while it is unknown.
+    const oi::RobotProfile *robotProfile() const { return m_profile; }
+    // The baud the stream was sized for.
+    int baud() const;
+    QList<int> streamPackets() const;
+    // The transport in use, or nullptr. Same thread only (tests stage faults
+    // on the virtual robot through it).
+    Transport *transport() const { return m_transport; }
+
+public slots:
+    void open(const oilink::LinkSettings &settings);
+    // Pauses the stream, stops motion, leaves the robot in Passive mode
+    // (CommandEncoder::shutdownSequence), flushes, then closes the port.
+    void close();
+    // Already-encoded commands, as CommandEncoder makes them. Queries whose
+    // replies matter go through querySensors() instead, so that the parser
+    // knows what is coming.
+    void send(const QByteArray &bytes);
+    // Sensors (142) for one id, Query List (149) for several. While the
+    // stream runs it is paused around the query. The answer comes as
+    // sensorReply(), or an error after 500 ms.
+    void querySensors(const QList<int> &packetIds);
+
+signals:
+    void snapshot(const oi::SensorSnapshot &snapshot); // one per stream frame
+    void sensorReply(const oi::SensorSnapshot &reply);
+    void stateChanged(oilink::LinkState state);
+    void statistics(const oilink::LinkStats &stats); // about once a second, and on change
+    // Start and Stream were sent: which profile, at which baud, which packets.
+    void streamStarted(oi::ProfileId profile, int baud, const QList<int> &packets);
+    void rawBytesSent(const QByteArray &bytes);
+    void rawBytesReceived(const QByteArray &bytes);
+    void errorOccurred(const QString &message);
+
+private:
+    enum class QueryPhase { None, Pausing, Waiting };
+
+    void setState(LinkState state);
+    void reportError(const QString &message, bool onceUntilStreaming = true);
+    void openTransport();
+    Transport *makeTransport();
+    void dropTransport();
+    void scheduleReconnect();
+    void onTransportOpened();
+    void onTransportError(const QString &message);
+    void onTransportClosed();
+    void onBytes(const QByteArray &bytes);
+    void startProbe();
+    void onProbeFailed();
+    void startStream();
+    void rearmStream();
+    void onFrame(const oi::SensorSnapshot &frame);
+    void onReply(const oi::SensorSnapshot &reply);
+    void onWatchdog();
+    void onNoData();
+    bool writeBytes(const QByteArray &bytes);
+    void dropPartialInput();
+    void startNextQuery();
+    void sendQuery();
+    void onQueryTimeout();
+    void finishQuery();
+    void onStatsTick();
+    void updateRate();
+    void scheduleStats();
+    void emitStatsIfChanged();
+    QString noDataMessage() const;
+
+    TransportFactory m_factory;
+    LinkSettings m_settings;
+    Transport *m_transport = nullptr;
+    bool m_transportOpen = false;
+    ProfileProbe *m_probe = nullptr;
+
+    const oi::RobotProfile *m_profile = nullptr;
+    int m_baud = 0; // as found by the probe or asked for; 0 = the profile's default
+    std::vector<int> m_streamIds;
+    QByteArray m_streamCommand;
+    bool m_streamRequested = false;
+    bool m_frameSinceStreamStart = false;
+
+    oi::StreamParser m_parser;
+    bool m_feeding = false;
+    bool m_resetAfterFeed = false;
+    oi::ParserCounters m_counterBase; // counts from before the parser's last reset
+
+    LinkState m_state = LinkState::Closed;
+    bool m_recovering = false; // lost the port since the last frame
+    QSet<QString> m_reported;
+
+    QTimer m_watchdog;  // Streaming -> Stale
+    QTimer m_noData;    // nothing since Start/Stream: say so, and ask again
+    int m_rearmMs = kNoDataAfterMs;
+    QTimer m_reconnect;
+    int m_backoffMs = kFirstBackoffMs;
+    QTimer m_probeRetry;
+
+    std::deque<std::vector<std::uint8_t>> m_queries;
+    QueryPhase m_queryPhase = QueryPhase::None;
+    QTimer m_queryQuiet;   // the paused stream has drained
+    QTimer m_queryTimeout;
+
+    LinkStats m_totals; // bytes, reconnects; the frame counts come from the parser
+    qint64 m_lastFrameMs = -1;
+    double m_framesPerSecond = 0;
+    QElapsedTimer m_rateClock;
+    quint64 m_framesAtRateStart = 0;
+    LinkStats m_lastEmitted;
+    QTimer m_statsTick;
+    QTimer m_statsSoon;
+};
+
+} // namespace oilink

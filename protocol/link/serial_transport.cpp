@@ -1,0 +1,134 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "serial_transport.h"
+
+#include <QDeadlineTimer>
+#include <QFileInfo>
+
+namespace oilink {
+
+namespace {
+constexpr int kPathCheckMs = 500;
+}
+
+SerialTransport::SerialTransport(const QString &path, int baud, QObject *parent)
+    : Transport(parent), m_path(path), m_baud(baud), m_port(this), m_pathCheck(this)
+{
+    connect(&m_port, &QSerialPort::readyRead, this, &SerialTransport::onReadyRead);
+    connect(&m_port, &QSerialPort::errorOccurred, this, &SerialTransport::onError);
+    m_pathCheck.setInterval(kPathCheckMs);
+    connect(&m_pathCheck, &QTimer::timeout, this, &SerialTransport::checkPathStillThere);
+}
+
+void SerialTransport::open()
+{
+    if (m_port.isOpen()) {
+        emit opened();
+        return;
+    }
+    m_port.setPortName(m_path);
+    m_port.setBaudRate(m_baud);
+    m_port.setDataBits(QSerialPort::Data8);
+    m_port.setParity(QSerialPort::NoParity);
+    m_port.setStopBits(QSerialPort::OneStop);
+    m_port.setFlowControl(QSerialPort::NoFlowControl);
+    if (!m_port.open(QIODevice::ReadWrite)) {
+        const QString message = openFailure();
+        m_port.clearError();
+        emit errorOccurred(message);
+        return;
+    }
+    m_pathCheck.start();
+    emit opened();
+}
+
+// One message per cause, in words a user can act on.
+QString SerialTransport::openFailure() const
+{
+    const QFileInfo info(m_path);
+    switch (m_port.error()) {
+    case QSerialPort::DeviceNotFoundError:
+        return m_path + QStringLiteral(": no such port");
+    case QSerialPort::PermissionError:
+        // The port reports a lock held by another program and a device
+        // node we may not open with the same code; the node's mode tells
+        // them apart.
+        if (info.exists() && !(info.isReadable() && info.isWritable()))
+            return m_path + QStringLiteral(": permission denied (is your user in the dialout group?)");
+        return m_path + QStringLiteral(": port busy (another program has it open)");
+    default:
+        break;
+    }
+    if (!info.exists())
+        return m_path + QStringLiteral(": no such port");
+    return m_path + QStringLiteral(": cannot open: ") + m_port.errorString();
+}
+
+void SerialTransport::close()
+{
+    m_pathCheck.stop();
+    if (m_port.isOpen())
+        m_port.close();
+    m_port.clearError();
+}
+
+bool SerialTransport::write(const QByteArray &bytes)
+{
+    return m_port.isOpen() && m_port.write(bytes) == bytes.size();
+}
+
+void SerialTransport::flush(int msecs)
+{
+    if (!m_port.isOpen())
+        return;
+    const QDeadlineTimer deadline(msecs);
+    while (m_port.bytesToWrite() > 0 && !deadline.hasExpired()) {
+        if (!m_port.waitForBytesWritten(static_cast<int>(deadline.remainingTime())))
+            break;
+    }
+}
+
+bool SerialTransport::setBaud(int baud)
+{
+    m_baud = baud;
+    return !m_port.isOpen() || m_port.setBaudRate(baud);
+}
+
+void SerialTransport::onReadyRead()
+{
+    const QByteArray bytes = m_port.readAll();
+    if (!bytes.isEmpty())
+        emit bytesReceived(bytes);
+}
+
+void SerialTransport::onError(QSerialPort::SerialPortError error)
+{
+    if (!m_port.isOpen())
+        return; // open() reports its own failure
+    switch (error) {
+    case QSerialPort::ResourceError:
+    case QSerialPort::ReadError:
+    case QSerialPort::WriteError:
+        // A pseudo-terminal whose other end closed reads as EIO, a pulled
+        // USB adapter as a resource error: either way the port is gone.
+        fail(QStringLiteral("the port went away"));
+        break;
+    default:
+        m_port.clearError();
+        break;
+    }
+}
+
+void SerialTransport::checkPathStillThere()
+{
+    if (m_port.isOpen() && !QFileInfo::exists(m_path))
+        fail(QStringLiteral("the port went away"));
+}
+
+void SerialTransport::fail(const QString &reason)
+{
+    close();
+    emit errorOccurred(m_path + QStringLiteral(": ") + reason);
+    emit closed();
+}
+
+} // namespace oilink

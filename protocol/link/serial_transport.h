@@ -1,0 +1,42 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "transport.h"
+
+#include <QSerialPort>
+#include <QTimer>
+
+namespace oilink {
+
+// A serial port at 8N1 with no flow control, as every OI robot talks.
+// The path is used as typed, so pseudo-terminals (/dev/pts/N), which the
+// port enumeration never lists, and symlinks to them work too.
+class SerialTransport : public Transport {
+    Q_OBJECT
+public:
+    SerialTransport(const QString &path, int baud, QObject *parent = nullptr);
+
+    void open() override;
+    void close() override;
+    bool isOpen() const override { return m_port.isOpen(); }
+    bool write(const QByteArray &bytes) override;
+    void flush(int msecs) override;
+    bool setBaud(int baud) override;
+    QString describe() const override { return m_path; }
+
+private:
+    void onError(QSerialPort::SerialPortError error);
+    void onReadyRead();
+    void checkPathStillThere();
+    void fail(const QString &reason);
+    QString openFailure() const;
+
+    QString m_path;
+    int m_baud;
+    QSerialPort m_port;
+    // A USB adapter pulled out may not raise a read error at once; its
+    // device node vanishing is the surer sign.
+    QTimer m_pathCheck;
+};
+
+} // namespace oilink

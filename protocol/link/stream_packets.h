@@ -1,0 +1,34 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "result.h"
+#include "robot_profile.h"
+
+#include <vector>
+
+namespace oilink {
+
+// The packet list to stream from a robot at a baud when the user names none:
+// the first of a short list, best first, that the profile has and whose frame
+// fits the robot's 15 ms slot (ERRATA 18). The fit is computed by the stream
+// encoder, so the rule lives in one place.
+//
+//   100           7..58, everything (Roomba 500, Create 2)
+//   6             7..42, everything a Create has
+//   1, 19, 20, 21, 22, 35
+//                 bumps, walls, cliffs, buttons, odometry, battery, mode
+//   1             7..16
+//   7             bumps and wheel drops
+//
+// Group 100 makes an 84-byte frame, which fits at 57600 too (86); the same
+// packets as 6 + 101 would take a byte more, so that pair never wins.
+// Typical results: Create 2 at 115200 or 57600 gets 100, at 38400 group 6;
+// a Create at 57600 gets 6 (56 of 86); anything at 19200 gets the short
+// list (27 of 28).
+std::vector<int> chooseStreamPackets(const oi::RobotProfile &profile, int baud);
+
+// The Stream (148) command for these packets at this baud, or why not: an
+// id the profile lacks, or a frame too big for the baud.
+oi::EncodeResult streamCommand(const oi::RobotProfile &profile, const std::vector<int> &packetIds, int baud);
+
+} // namespace oilink

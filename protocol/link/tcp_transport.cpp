@@ -1,0 +1,127 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "tcp_transport.h"
+
+#include <QDeadlineTimer>
+
+namespace oilink {
+
+namespace {
+constexpr int kConnectTimeoutMs = 5000;
+}
+
+TcpTransport::TcpTransport(const QString &host, quint16 port, QObject *parent)
+    : Transport(parent), m_host(host), m_port(port), m_socket(this), m_connectTimeout(this)
+{
+    connect(&m_socket, &QTcpSocket::connected, this, &TcpTransport::onConnected);
+    connect(&m_socket, &QTcpSocket::errorOccurred, this, &TcpTransport::onError);
+    connect(&m_socket, &QTcpSocket::disconnected, this, &TcpTransport::onDisconnected);
+    connect(&m_socket, &QTcpSocket::readyRead, this, &TcpTransport::onReadyRead);
+    m_connectTimeout.setSingleShot(true);
+    m_connectTimeout.setInterval(kConnectTimeoutMs);
+    connect(&m_connectTimeout, &QTimer::timeout, this, &TcpTransport::giveUpConnecting);
+}
+
+QString TcpTransport::describe() const
+{
+    return m_host + QLatin1Char(':') + QString::number(m_port);
+}
+
+void TcpTransport::open()
+{
+    if (m_connected) {
+        emit opened();
+        return;
+    }
+    if (m_connecting)
+        return;
+    m_connecting = true;
+    m_connectTimeout.start();
+    m_socket.connectToHost(m_host, m_port);
+}
+
+void TcpTransport::close()
+{
+    m_connectTimeout.stop();
+    m_connecting = false;
+    m_connected = false;
+    m_socket.abort();
+}
+
+bool TcpTransport::write(const QByteArray &bytes)
+{
+    return m_connected && m_socket.write(bytes) == bytes.size();
+}
+
+void TcpTransport::flush(int msecs)
+{
+    if (!m_connected)
+        return;
+    const QDeadlineTimer deadline(msecs);
+    while (m_socket.bytesToWrite() > 0 && !deadline.hasExpired()) {
+        if (!m_socket.waitForBytesWritten(static_cast<int>(deadline.remainingTime())))
+            break;
+    }
+}
+
+void TcpTransport::onConnected()
+{
+    m_connectTimeout.stop();
+    m_connecting = false;
+    m_connected = true;
+    // Frames are small and latency matters more than packing.
+    m_socket.setSocketOption(QAbstractSocket::LowDelayOption, 1);
+    emit opened();
+}
+
+void TcpTransport::onError(QAbstractSocket::SocketError error)
+{
+    if (m_connecting) {
+        QString reason;
+        switch (error) {
+        case QAbstractSocket::ConnectionRefusedError: reason = QStringLiteral("connection refused"); break;
+        case QAbstractSocket::HostNotFoundError: reason = QStringLiteral("no such host"); break;
+        case QAbstractSocket::SocketTimeoutError: reason = QStringLiteral("no answer (timed out)"); break;
+        case QAbstractSocket::NetworkError: reason = QStringLiteral("network unreachable"); break;
+        default: reason = m_socket.errorString(); break;
+        }
+        close();
+        emit errorOccurred(describe() + QStringLiteral(": ") + reason);
+        return;
+    }
+    if (!m_connected)
+        return;
+    const QString message = describe()
+                            + (error == QAbstractSocket::RemoteHostClosedError
+                                   ? QStringLiteral(": the bridge closed the connection")
+                                   : QStringLiteral(": connection lost (") + m_socket.errorString() + ')');
+    close();
+    emit errorOccurred(message);
+    emit closed();
+}
+
+void TcpTransport::onDisconnected()
+{
+    // Only a hang-up that came without an error reaches this.
+    if (!m_connected)
+        return;
+    close();
+    emit errorOccurred(describe() + QStringLiteral(": the bridge closed the connection"));
+    emit closed();
+}
+
+void TcpTransport::onReadyRead()
+{
+    const QByteArray bytes = m_socket.readAll();
+    if (!bytes.isEmpty())
+        emit bytesReceived(bytes);
+}
+
+void TcpTransport::giveUpConnecting()
+{
+    if (!m_connecting)
+        return;
+    close();
+    emit errorOccurred(describe() + QStringLiteral(": no answer (timed out)"));
+}
+
+} // namespace oilink

@@ -1,0 +1,30 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "transport.h"
+
+#include "serial_transport.h"
+#include "tcp_transport.h"
+#include "virtual_transport.h"
+
+namespace oilink {
+
+Transport::~Transport() = default;
+
+bool Transport::setBaud(int)
+{
+    return false;
+}
+
+Transport *createTransport(const LinkSettings &settings, int baud, QObject *parent)
+{
+    switch (settings.transport) {
+    case TransportKind::Serial:
+        return new SerialTransport(settings.portPath, baud, parent);
+    case TransportKind::Tcp:
+        return new TcpTransport(settings.host, settings.tcpPort, parent);
+    case TransportKind::Virtual:
+        break;
+    }
+    return new VirtualTransport(settings.virtualRobot, settings.virtualSeed, parent);
+}
+
+} // namespace oilink

@@ -1,0 +1,48 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "link_settings.h"
+
+#include <QByteArray>
+#include <QObject>
+#include <QString>
+
+namespace oilink {
+
+// A byte pipe to the robot. Lives on the link's thread.
+//
+// open() may report at once (from inside the call) or later: exactly one of
+// opened() or errorOccurred() follows it. Once open, a failure (the port
+// vanished, EOF, the peer hung up) gives errorOccurred() with the reason and
+// then closed(). close() itself emits nothing.
+class Transport : public QObject {
+    Q_OBJECT
+public:
+    using QObject::QObject;
+    ~Transport() override;
+
+    virtual void open() = 0;
+    virtual void close() = 0;
+    virtual bool isOpen() const = 0;
+    // Queues the bytes; false if the transport is not open or refused them.
+    virtual bool write(const QByteArray &bytes) = 0;
+    // Waits up to `msecs` for queued bytes to leave (used before closing).
+    virtual void flush(int msecs) = 0;
+    // Serial ports only: change the line speed, open or not. Others have no
+    // baud of their own and return false.
+    virtual bool setBaud(int baud);
+    // "/dev/ttyUSB0", "host:port": the prefix of this transport's messages.
+    virtual QString describe() const = 0;
+
+signals:
+    void opened();
+    void bytesReceived(const QByteArray &bytes);
+    void errorOccurred(const QString &message);
+    void closed();
+};
+
+// The built-in transport for the settings: a serial port opened at `baud`,
+// a TCP connection, or the in-process virtual robot.
+Transport *createTransport(const LinkSettings &settings, int baud, QObject *parent = nullptr);
+
+} // namespace oilink

@@ -1,0 +1,32 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "packet_encoding.h"
+
+#include <algorithm>
+
+namespace sim {
+
+std::size_t appendPacketData(const oi::SensorSnapshot &values, int packetOrGroupId, oi::Bytes &out)
+{
+    const oi::RobotProfile &profile = values.robotProfile();
+    if (!profile.isValidSensorId(packetOrGroupId))
+        return 0;
+    int first = packetOrGroupId, last = packetOrGroupId;
+    if (const oi::PacketGroup *g = profile.group(packetOrGroupId)) {
+        first = g->first;
+        last = g->last;
+    }
+    const std::size_t before = out.size();
+    for (int id = first; id <= last; ++id) {
+        const oi::PacketInfo *p = profile.packet(id);
+        const bool two = p->bytes == 2;
+        const std::int32_t lo = p->isSigned ? (two ? -32768 : -128) : 0;
+        const std::int32_t hi = p->isSigned ? (two ? 32767 : 127) : (two ? 65535 : 255);
+        const auto v = static_cast<std::uint32_t>(std::clamp(values.raw(id), lo, hi));
+        if (two)
+            out.push_back(static_cast<std::uint8_t>(v >> 8));
+        out.push_back(static_cast<std::uint8_t>(v));
+    }
+    return out.size() - before;
+}
+
+} // namespace sim

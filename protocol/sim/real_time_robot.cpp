@@ -1,0 +1,61 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "real_time_robot.h"
+
+#include <algorithm>
+
+namespace sim {
+
+namespace {
+constexpr int kTickMs = 5;
+// After the process was stopped or starved for a while, the robot catches up
+// at most this much at once, rather than sending a burst of old frames.
+constexpr qint64 kMaxCatchUpNs = 500'000'000;
+} // namespace
+
+RealTimeRobot::RealTimeRobot(const oi::RobotProfile &profile, std::uint32_t seed, QObject *parent)
+    : QObject(parent), m_robot(profile, seed), m_timer(this) // a child, so moveToThread takes it along
+{
+    m_timer.setTimerType(Qt::PreciseTimer);
+    m_timer.setInterval(kTickMs);
+    connect(&m_timer, &QTimer::timeout, this, &RealTimeRobot::tick);
+}
+
+void RealTimeRobot::start()
+{
+    if (m_timer.isActive())
+        return;
+    m_clock.start();
+    m_lastNs = 0;
+    m_timer.start();
+}
+
+void RealTimeRobot::stop() { m_timer.stop(); }
+
+void RealTimeRobot::write(const QByteArray &bytes)
+{
+    // Bring the robot's clock up to now first, so the command lands when it
+    // really arrived.
+    tick();
+    m_robot.receive(std::span(reinterpret_cast<const std::uint8_t *>(bytes.constData()),
+                              std::size_t(bytes.size())));
+    const oi::Bytes out = m_robot.takeOutput();
+    if (!out.empty())
+        emit bytesOut(QByteArray(reinterpret_cast<const char *>(out.data()), qsizetype(out.size())));
+}
+
+void RealTimeRobot::tick()
+{
+    if (m_clock.isValid()) {
+        const qint64 nowNs = m_clock.nsecsElapsed();
+        const qint64 elapsedNs = std::min(nowNs - m_lastNs, kMaxCatchUpNs);
+        // Whole microseconds go to the robot; the rest waits for the next tick.
+        const qint64 us = elapsedNs / 1000;
+        m_lastNs = nowNs - (elapsedNs - us * 1000);
+        m_robot.advance(Microseconds(us));
+    }
+    const oi::Bytes out = m_robot.takeOutput();
+    if (!out.empty())
+        emit bytesOut(QByteArray(reinterpret_cast<const char *>(out.data()), qsizetype(out.size())));
+}
+
+} // namespace sim

@@ -1,0 +1,44 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "virtual_robot.h"
+
+#include <QByteArray>
+#include <QElapsedTimer>
+#include <QObject>
+#include <QTimer>
+
+namespace sim {
+
+// Runs a VirtualRobot in real time on the thread it lives on: a timer
+// advances the robot's clock by the time that really passed, and whatever
+// the robot says is emitted as bytes.
+class RealTimeRobot : public QObject {
+    Q_OBJECT
+public:
+    explicit RealTimeRobot(const oi::RobotProfile &profile, std::uint32_t seed = 1,
+                           QObject *parent = nullptr);
+
+    VirtualRobot &robot() { return m_robot; }
+    const VirtualRobot &robot() const { return m_robot; }
+
+public slots:
+    void start(); // begins ticking (every few ms)
+    void stop();
+    // Bytes from the client. Handled at once, so replies can go out before
+    // the next tick.
+    void write(const QByteArray &bytes);
+
+signals:
+    void bytesOut(const QByteArray &bytes);
+
+private:
+    void tick();
+
+    VirtualRobot m_robot;
+    QTimer m_timer;
+    QElapsedTimer m_clock;
+    qint64 m_lastNs = 0;
+};
+
+} // namespace sim

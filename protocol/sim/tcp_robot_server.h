@@ -1,0 +1,50 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "real_time_robot.h"
+
+#include <QHostAddress>
+#include <QObject>
+#include <QPointer>
+#include <QString>
+
+class QTcpServer;
+class QTcpSocket;
+
+namespace sim {
+
+// A virtual robot on a TCP port, speaking raw bytes as a serial-over-TCP
+// bridge (ser2net and the like) does. One client at a time: while one is
+// connected, others are turned away, as a serial port opened by one
+// program is busy for the rest.
+class TcpRobotServer : public QObject {
+    Q_OBJECT
+public:
+    explicit TcpRobotServer(const oi::RobotProfile &profile, std::uint32_t seed = 1,
+                            QObject *parent = nullptr);
+    ~TcpRobotServer() override;
+
+    // Listens and starts the robot; port 0 picks a free port. On failure
+    // returns false and says why in `error`.
+    bool listen(const QHostAddress &address, quint16 port, QString *error = nullptr);
+    void close();
+    bool isListening() const;
+    QHostAddress serverAddress() const;
+    quint16 serverPort() const;
+    bool clientConnected() const { return !m_client.isNull(); }
+
+    RealTimeRobot &robot() { return m_robot; }
+
+signals:
+    void clientConnectedChanged(bool connected);
+
+private:
+    void acceptClient();
+    void writeToClient(const QByteArray &bytes);
+
+    RealTimeRobot m_robot;
+    QTcpServer *m_server;
+    QPointer<QTcpSocket> m_client;
+};
+
+} // namespace sim

@@ -1,0 +1,1158 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "virtual_robot.h"
+
+#include "body.h"
+#include "command_catalog.h"
+#include "firmware_banner.h"
+#include "packet_encoding.h"
+#include "seven_segment_font.h"
+
+#include <algorithm>
+#include <cmath>
+#include <deque>
+#include <random>
+#include <utility>
+
+namespace sim {
+namespace {
+
+using oi::Command;
+using oi::OiMode;
+using namespace std::chrono_literals;
+
+// The robot's clock: physics and the OI's checks run every millisecond, the
+// stream goes out every 15 ms of that clock.
+constexpr Microseconds kTick = 1ms;
+constexpr Microseconds kStreamPeriod = 15ms;
+constexpr Microseconds kButtonPress = 166'667us; // 165 releases after 1/6 s
+constexpr Microseconds kSleepAfter = std::chrono::seconds(oi::RobotProfile::kPassiveSleepSeconds);
+constexpr long long kWeekMicros = 7LL * 24 * 60 * 60 * 1'000'000;
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kMaxWheelSpeed = 500;   // mm/s
+constexpr double kSpeedStep = 28.5;      // the speed controller's resolution, per the documents
+constexpr double kAcceleration = 1000;   // mm/s², speeding up
+constexpr double kBraking = 2000;        // mm/s², slowing down: the motors brake harder than they pull
+constexpr double kPwmFullScale = 255;    // Drive PWM 255 runs a wheel at about full speed
+constexpr int kMaxScriptBytes = 100;
+constexpr std::size_t kInputBufferBytes = 4096; // bytes beyond this are lost, as on a full UART buffer
+constexpr std::size_t kMaxFrameDataBytes = 255;  // the n-bytes field is one byte
+
+// A 3000 mAh NiMH pack: about 13 V flat and 16.5 V charged.
+constexpr double kCapacityMah = 3000;
+constexpr double kStartChargeMah = 2700;
+constexpr double kFastChargeMa = 1500;
+constexpr double kTrickleChargeMa = 60;
+constexpr double kTrickleFrom = 0.95; // charge fraction where fast charging ends
+constexpr double kIdleMa = 160;
+constexpr double kAsleepMa = 5;
+constexpr double kSpeakerMa = 40;
+constexpr double kWheelOvercurrentMa = 1000;
+
+// Create 2 Appendix B: up to 3.4.0 the angle is sent multiplied by this.
+constexpr double kOldFirmwareAngleFactor = 0.324056;
+constexpr oi::FirmwareVersion kAngleFixedAfter{3, 4, 0};
+
+std::int16_t s16(std::uint8_t hi, std::uint8_t lo) { return std::int16_t(std::uint16_t((hi << 8) | lo)); }
+
+bool isActuator(Command c)
+{
+    switch (c) {
+    case Command::Drive:
+    case Command::DriveDirect:
+    case Command::DrivePwm:
+    case Command::Motors:
+    case Command::LowSideDrivers:
+    case Command::PwmMotors:
+    case Command::PwmLowSideDrivers:
+    case Command::Leds:
+    case Command::Play:
+    case Command::SchedulingLeds:
+    case Command::DigitLedsRaw:
+    case Command::DigitLedsAscii:
+    case Command::DigitalOutputs:
+    case Command::SendIr:
+        return true;
+    default:
+        return false;
+    }
+}
+
+bool isCleaning(Command c)
+{
+    switch (c) {
+    case Command::Spot:
+    case Command::Clean:
+    case Command::Cover:
+    case Command::Max:
+    case Command::Demo:
+    case Command::SeekDock:
+    case Command::CoverAndDock:
+        return true;
+    default:
+        return false;
+    }
+}
+
+// How to read the bytes of an opcode: the profile's command, or, for one the
+// profile lacks, any command with that opcode, so its data bytes are skipped
+// rather than read as commands.
+const oi::CommandSpec *layoutFor(const oi::RobotProfile &profile, std::uint8_t opcode)
+{
+    if (const oi::CommandSpec *spec = oi::commandSpecForOpcode(profile, opcode))
+        return spec;
+    for (const oi::CommandSpec &spec : oi::allCommandSpecs())
+        if (spec.opcode == opcode)
+            return &spec;
+    return nullptr;
+}
+
+// Bytes the command at the front of `q` takes, or 0 while that is not known yet.
+std::size_t commandLength(const oi::RobotProfile &profile, const std::deque<std::uint8_t> &q)
+{
+    const oi::CommandSpec *spec = layoutFor(profile, q.front());
+    if (!spec)
+        return 1;
+    if (spec->layout != "*") {
+        std::size_t n = 1;
+        for (char c : spec->layout)
+            n += c == 'w' ? 2 : 1;
+        return n;
+    }
+    if (spec->command == Command::Song) // [140][slot][notes][note duration]...
+        return q.size() < 3 ? 0 : 3 + 2 * std::size_t(q[2]);
+    return q.size() < 2 ? 0 : 2 + std::size_t(q[1]); // stream, query list, script: [op][n][n bytes]
+}
+
+double quantisedSpeed(double mmPerS)
+{
+    const double q = std::round(mmPerS / kSpeedStep) * kSpeedStep;
+    return std::clamp(q, -kMaxWheelSpeed, kMaxWheelSpeed);
+}
+
+void ramp(double &speed, double target, double seconds)
+{
+    const bool speedingUp = target * speed >= 0 && std::abs(target) > std::abs(speed);
+    const double step = (speedingUp ? kAcceleration : kBraking) * seconds;
+    speed += std::clamp(target - speed, -step, step);
+}
+
+// The reply to Sensors, Query List and stream frames reports distance and
+// angle since the last report: the whole part goes out, the rest stays.
+std::int32_t takeWhole(double &accumulator)
+{
+    const double whole = std::trunc(accumulator);
+    if (whole > 32767 || whole < -32768) {
+        accumulator = 0; // capped, as the documents say, and started again
+        return whole > 0 ? 32767 : -32768;
+    }
+    accumulator -= whole;
+    return std::int32_t(whole);
+}
+
+std::int32_t encoderPacketValue(double wheelMm, bool isSigned)
+{
+    const auto counts = static_cast<std::int64_t>(std::floor(wheelMm / oi::kMmPerEncoderCount));
+    const auto wrapped = static_cast<std::uint16_t>(static_cast<std::uint64_t>(counts) & 0xFFFF);
+    return isSigned ? std::int32_t(std::int16_t(wrapped)) : std::int32_t(wrapped);
+}
+
+std::string bannerFor(const std::string &release)
+{
+    // The welcome text the Roomba-family firmware prints after Reset; clients
+    // look for the release tag in it.
+    return "bl-start\r\n"
+           "STR730\r\n"
+           "bootloader id: #x47186549 82ECCFFF\r\n"
+           "bootloader info rev: #xF000\r\n"
+           "bootloader rev: #x0001\r\n"
+           "2007-05-14-1715-L   \r\n"
+           "Roomba by iRobot!\r\n"
+           "str730\r\n"
+           "2015-08-24-1648-L   \r\n"
+           "battery-current-zero 257\r\n"
+           "\r\n"
+           "r3_robot/tags/"
+           + release
+           + ":6216 CLEAN\r\n"
+             "\r\n"
+             "2015-08-24-1648-L   \r\n"
+             "battery-current-zero 257\r\n";
+}
+
+} // namespace
+
+struct VirtualRobot::State {
+    State(const oi::RobotProfile &p, std::uint32_t seed)
+        : profile(&p), rng(seed), baud(p.defaultBaud), songs(std::size_t(p.songSlots))
+    {
+    }
+
+    const oi::RobotProfile *profile;
+    std::mt19937 rng;
+    World world = World::classroom();
+    oi::Pose pose;
+    Microseconds now{0};
+
+    // The Open Interface.
+    OiMode mode = OiMode::Off;
+    bool asleep = false;
+    int baud;
+    std::string firmwareRelease = "release-3.8.2";
+    double angleFactor = 1; // raw packet 20 units per degree
+    std::string lastSafetyStop;
+    Microseconds lastActivity{0};
+
+    // Serial input, the stored script and what it is waiting for.
+    std::deque<std::uint8_t> serialIn;
+    std::deque<std::uint8_t> scriptIn;
+    bool scriptYield = false; // a script that plays itself again goes on at the next tick
+    oi::Bytes script;
+    oi::Bytes command; // the command being executed, reused
+    struct Wait {
+        Command kind = Command::WaitTime;
+        Microseconds until{0};
+        double target = 0;
+        double progress = 0; // mm or degrees since the wait began
+        int event = 0;
+    };
+    std::optional<Wait> wait;
+
+    // The drive train.
+    double targetLeft = 0, targetRight = 0; // mm/s
+    double speedLeft = 0, speedRight = 0;
+    std::int32_t requestedVelocity = 0, requestedRadius = 0, requestedRight = 0, requestedLeft = 0;
+    bool blocked = false, progressing = false;
+    double wheelLeftMm = 0, wheelRightMm = 0; // what the encoders have counted, unwrapped
+    double distanceMm = 0, angleRaw = 0;      // since they were last reported
+
+    // Brushes and vacuum (Roomba) or low side drivers (Create), in 144's order.
+    std::uint8_t motorBits = 0;
+    std::array<int, 3> motorPwm{};
+    std::array<double, 3> motorDuty{}; // -1..1
+    std::uint8_t digitalOutputs = 0;
+
+    bool leftLifted = false, rightLifted = false, casterLifted = false;
+    std::uint8_t heldButtons = 0, pushedButtons = 0;
+    Microseconds pushedUntil{0};
+
+    Leds leds;
+    std::vector<std::optional<oi::Song>> songs;
+    int songNumber = 0;
+    Microseconds songEndsAt{0};
+    oi::CleaningSchedule schedule;
+    long long clockMicros = 0; // since Sunday 00:00
+
+    double chargeMah = kStartChargeMah;
+    double temperatureC = 24;
+
+    std::vector<std::uint8_t> streamIds;
+    bool streaming = false;
+
+    oi::Bytes output;
+    FaultRates faults;
+    Microseconds stallUntil{0};
+    bool disconnected = false;
+
+    FloorContact floor;
+    bool floorDirty = true;
+
+    bool create1() const { return profile->id == oi::ProfileId::Create1; }
+    bool songPlaying() const { return now < songEndsAt; }
+
+    const FloorContact &floorContact()
+    {
+        if (floorDirty) {
+            floor = senseFloor(world, pose);
+            floorDirty = false;
+        }
+        return floor;
+    }
+    bool wheelDropLeft() { return leftLifted || floorContact().wheelDropLeft; }
+    bool wheelDropRight() { return rightLifted || floorContact().wheelDropRight; }
+    bool wheelDropCaster() { return create1() && (casterLifted || floorContact().wheelDropCaster); }
+    bool onDock() { return floorContact().onDockContacts; }
+    // The charger charges in Passive (and while off or asleep), not in Safe or Full.
+    bool charging() { return onDock() && (mode == OiMode::Passive || mode == OiMode::Off); }
+
+    // --- Output and faults ---
+
+    bool chance(double p) { return p > 0 && rng() < p * 4294967296.0; }
+
+    void emit(std::span<const std::uint8_t> bytes)
+    {
+        if (disconnected || asleep || now < stallUntil)
+            return;
+        for (std::uint8_t b : bytes) {
+            if (chance(faults.strayHeader))
+                output.push_back(19);
+            if (chance(faults.dropByte))
+                continue;
+            if (chance(faults.corruptByte))
+                b = static_cast<std::uint8_t>(rng());
+            output.push_back(b);
+        }
+    }
+
+    // --- Modes ---
+
+    void stopMotion()
+    {
+        targetLeft = targetRight = speedLeft = speedRight = 0;
+        requestedVelocity = requestedRight = requestedLeft = 0;
+        requestedRadius = 0;
+    }
+
+    void stopMotors()
+    {
+        stopMotion();
+        motorBits = 0;
+        motorPwm = {};
+        motorDuty = {};
+    }
+
+    void enterPassive()
+    {
+        if (mode != OiMode::Passive)
+            lastActivity = now; // the sleep timer starts from here
+        stopMotion();
+        mode = OiMode::Passive;
+    }
+
+    void safetyStop(const char *why)
+    {
+        stopMotors();
+        // A script waiting for a distance it can no longer drive would hold
+        // the serial input for ever: the stop ends it.
+        wait.reset();
+        scriptIn.clear();
+        enterPassive();
+        lastSafetyStop = why;
+    }
+
+    void fallAsleep()
+    {
+        stopMotors();
+        songEndsAt = now;
+        streaming = false;
+        wait.reset();
+        scriptIn.clear();
+        serialIn.clear();
+        mode = OiMode::Off;
+        asleep = true;
+    }
+
+    void reset()
+    {
+        stopMotors();
+        mode = OiMode::Off;
+        streaming = false;
+        streamIds.clear();
+        for (auto &s : songs)
+            s.reset();
+        songEndsAt = now;
+        leds = {};
+        digitalOutputs = 0;
+        baud = profile->defaultBaud;
+        wait.reset();
+        scriptIn.clear();
+        const std::string banner = bannerFor(firmwareRelease);
+        emit(std::span(reinterpret_cast<const std::uint8_t *>(banner.data()), banner.size()));
+    }
+
+    // --- Driving ---
+
+    void setWheelTargets(double left, double right)
+    {
+        targetLeft = left;
+        targetRight = right;
+    }
+
+    void drive(int velocity, int radius)
+    {
+        requestedVelocity = velocity;
+        requestedRadius = radius;
+        const double v = std::clamp(velocity, -500, 500);
+        const double half = oi::kWheelBaseMm / 2;
+        double left = v, right = v;
+        // ERRATA 14. A radius of 0 or beyond the documented ±2000 mm is
+        // taken as straight, the nearest thing the robot can do.
+        if (radius == oi::kRadiusTurnInPlaceClockwise) {
+            left = v;
+            right = -v;
+        } else if (radius == oi::kRadiusTurnInPlaceCounterClockwise) {
+            left = -v;
+            right = v;
+        } else if (radius != 0 && std::abs(radius) <= 2000) {
+            right = v * (radius + half) / radius;
+            left = v * (radius - half) / radius;
+            // A tight arc cannot run the outer wheel beyond full speed: keep
+            // the radius and slow down.
+            const double fastest = std::max(std::abs(left), std::abs(right));
+            if (fastest > kMaxWheelSpeed) {
+                left *= kMaxWheelSpeed / fastest;
+                right *= kMaxWheelSpeed / fastest;
+            }
+        }
+        requestedLeft = std::int32_t(std::lround(left));
+        requestedRight = std::int32_t(std::lround(right));
+        setWheelTargets(quantisedSpeed(left), quantisedSpeed(right));
+    }
+
+    void describeWheels(double left, double right)
+    {
+        requestedRight = std::int32_t(std::lround(right));
+        requestedLeft = std::int32_t(std::lround(left));
+        requestedVelocity = std::int32_t(std::lround((left + right) / 2));
+        if (std::abs(right - left) < 0.5)
+            requestedRadius = 32767;
+        else if (std::abs(right + left) < 0.5)
+            requestedRadius = right > left ? oi::kRadiusTurnInPlaceCounterClockwise
+                                           : oi::kRadiusTurnInPlaceClockwise;
+        else
+            requestedRadius = std::int32_t(std::clamp(
+                std::lround(oi::kWheelBaseMm / 2 * (right + left) / (right - left)), -2000L, 2000L));
+    }
+
+    void driveDirect(int right, int left)
+    {
+        const double r = std::clamp(right, -500, 500), l = std::clamp(left, -500, 500);
+        describeWheels(l, r);
+        setWheelTargets(quantisedSpeed(l), quantisedSpeed(r));
+    }
+
+    void drivePwm(int rightPwm, int leftPwm)
+    {
+        // Open loop: no speed controller, so no 28.5 mm/s steps.
+        const double r = std::clamp(rightPwm, -255, 255) * kMaxWheelSpeed / kPwmFullScale;
+        const double l = std::clamp(leftPwm, -255, 255) * kMaxWheelSpeed / kPwmFullScale;
+        describeWheels(l, r);
+        setWheelTargets(l, r);
+    }
+
+    void setMotorBits(std::uint8_t bits)
+    {
+        motorBits = bits;
+        if (create1()) {
+            // Low side drivers 0..2 in bits 0..2; 144 orders them 2, 1, 0.
+            motorDuty = {(bits & 4) ? 1.0 : 0.0, (bits & 2) ? 1.0 : 0.0, (bits & 1) ? 1.0 : 0.0};
+        } else {
+            const double main = (bits & oi::bit::MotorMainBrush)
+                                    ? ((bits & oi::bit::MotorMainBrushOutward) ? -1.0 : 1.0)
+                                    : 0.0;
+            const double side = (bits & oi::bit::MotorSideBrush)
+                                    ? ((bits & oi::bit::MotorSideBrushClockwise) ? -1.0 : 1.0)
+                                    : 0.0;
+            motorDuty = {main, side, (bits & oi::bit::MotorVacuum) ? 1.0 : 0.0};
+        }
+    }
+
+    void setMotorPwm(std::span<const std::uint8_t> data)
+    {
+        if (create1()) {
+            for (int i = 0; i < 3; ++i) {
+                motorPwm[i] = data[i];
+                motorDuty[i] = std::min(data[i], std::uint8_t(128)) / 128.0;
+            }
+        } else {
+            motorPwm = {std::int8_t(data[0]), std::int8_t(data[1]), data[2]};
+            motorDuty = {std::clamp(motorPwm[0], -127, 127) / 127.0,
+                         std::clamp(motorPwm[1], -127, 127) / 127.0,
+                         std::min(motorPwm[2], 127) / 127.0};
+        }
+    }
+
+    // --- Currents and the battery ---
+
+    double wheelCurrentMa(double speed, double target, bool lifted) const
+    {
+        if (speed == 0 && target == 0)
+            return 0;
+        const double direction = speed != 0 ? speed : target;
+        double magnitude = 0;
+        if (lifted)
+            magnitude = 40 + 0.3 * std::abs(speed); // spinning in the air
+        else if (blocked)
+            magnitude = 250 + 2.2 * std::abs(target); // stalled against a wall
+        else
+            magnitude = 70 + 0.8 * std::abs(speed) + 0.15 * std::abs(target - speed);
+        return std::copysign(magnitude, direction);
+    }
+    double leftMotorMa() { return wheelCurrentMa(speedLeft, targetLeft, wheelDropLeft()); }
+    double rightMotorMa() { return wheelCurrentMa(speedRight, targetRight, wheelDropRight()); }
+    double mainBrushMa() const { return create1() ? 0 : 320 * motorDuty[0]; }
+    double sideBrushMa() const { return create1() ? 0 : 95 * motorDuty[1]; }
+
+    // Battery current: negative while discharging.
+    double batteryMa()
+    {
+        if (charging())
+            return chargeMah < kTrickleFrom * kCapacityMah ? kFastChargeMa : kTrickleChargeMa;
+        if (onDock())
+            return 0; // Safe or Full on the dock: the charger carries the load
+        if (asleep)
+            return -kAsleepMa;
+        double load = kIdleMa + std::abs(leftMotorMa()) + std::abs(rightMotorMa());
+        if (create1())
+            load += 250 * (motorDuty[0] + motorDuty[1] + motorDuty[2]);
+        else
+            load += std::abs(mainBrushMa()) + std::abs(sideBrushMa()) + 550 * motorDuty[2];
+        if (songPlaying())
+            load += kSpeakerMa;
+        return -load;
+    }
+
+    oi::ChargingState chargingState()
+    {
+        if (!charging())
+            return oi::ChargingState::NotCharging;
+        return chargeMah < kTrickleFrom * kCapacityMah ? oi::ChargingState::FullCharging
+                                                        : oi::ChargingState::Trickle;
+    }
+
+    // --- Time ---
+
+    void integrate(Microseconds dt)
+    {
+        const double s = std::chrono::duration<double>(dt).count();
+        clockMicros = (clockMicros + dt.count()) % kWeekMicros;
+
+        const double oldLeft = speedLeft, oldRight = speedRight;
+        ramp(speedLeft, targetLeft, s);
+        ramp(speedRight, targetRight, s);
+        const double leftTravel = (oldLeft + speedLeft) / 2 * s;
+        const double rightTravel = (oldRight + speedRight) / 2 * s;
+        if (leftTravel != 0 || rightTravel != 0) {
+            const bool traction = !wheelDropLeft() && !wheelDropRight();
+            const double xBefore = pose.xMm, yBefore = pose.yMm;
+            const BodyMove m = moveBody(world, pose, leftTravel, rightTravel, traction);
+            floorDirty = true;
+            blocked = m.blocked;
+            wheelLeftMm += m.leftMm;
+            wheelRightMm += m.rightMm;
+            const double moved = (m.leftMm + m.rightMm) / 2;
+            const double turnedDeg = (m.rightMm - m.leftMm) / oi::kWheelBaseMm * 180 / kPi;
+            distanceMm += moved;
+            angleRaw += turnedDeg * angleFactor;
+            if (wait && wait->kind == Command::WaitDistance)
+                wait->progress += moved;
+            if (wait && wait->kind == Command::WaitAngle)
+                wait->progress += turnedDeg;
+            const double forward = (pose.xMm - xBefore) * std::cos(pose.thetaRad)
+                                   + (pose.yMm - yBefore) * std::sin(pose.thetaRad);
+            progressing = forward > 1e-6;
+        } else {
+            blocked = false;
+            progressing = false;
+        }
+
+        const double current = batteryMa();
+        chargeMah = std::clamp(chargeMah + current * s / 3600, 0.0, kCapacityMah);
+        const double warmTo = 24 + (current > kTrickleChargeMa ? 9 : 0) + std::abs(current) / 500;
+        temperatureC += (warmTo - temperatureC) * std::min(1.0, s / 600);
+    }
+
+    bool eventHappening(int event)
+    {
+        const int which = std::abs(event);
+        bool on = false;
+        const std::uint8_t buttons = heldButtons | pushedButtons;
+        switch (which) {
+        case 1: on = wheelDropLeft() || wheelDropRight() || wheelDropCaster(); break;
+        case 2: on = wheelDropCaster(); break;
+        case 3: on = wheelDropLeft(); break;
+        case 4: on = wheelDropRight(); break;
+        case 5:
+        case 6:
+        case 7: {
+            const ObstacleContact o = senseObstacles(world, pose);
+            on = which == 5 ? (o.bumpLeft || o.bumpRight) : which == 6 ? o.bumpLeft : o.bumpRight;
+            break;
+        }
+        case 8: on = senseInfrared(world, pose, *profile).virtualWall; break;
+        case 9: on = wallSeen(senseObstacles(world, pose).wallDistanceMm); break;
+        case 10: {
+            const auto &c = floorContact().cliff;
+            on = std::any_of(c.begin(), c.end(), [](bool b) { return b; });
+            break;
+        }
+        case 11:
+        case 12:
+        case 13:
+        case 14: on = floorContact().cliff[std::size_t(which - 11)]; break;
+        case 15: on = onDock(); break;
+        case 16: on = buttons & oi::bit::ButtonAdvance; break;
+        case 17: on = buttons & oi::bit::ButtonPlay; break;
+        case 22: on = mode == OiMode::Passive; break;
+        default: on = false; break; // 18..21: nothing is wired to the cargo bay inputs
+        }
+        return event > 0 ? on : !on;
+    }
+
+    bool waitOver()
+    {
+        switch (wait->kind) {
+        case Command::WaitTime:
+            return now >= wait->until;
+        case Command::WaitDistance:
+        case Command::WaitAngle:
+            return wait->target >= 0 ? wait->progress >= wait->target : wait->progress <= wait->target;
+        default:
+            return eventHappening(wait->event);
+        }
+    }
+
+    void checkSafety()
+    {
+        if (mode != OiMode::Safe)
+            return;
+        if (wheelDropLeft() || wheelDropRight() || wheelDropCaster()) {
+            safetyStop("wheel drop");
+            return;
+        }
+        const auto &cliff = floorContact().cliff;
+        if (std::any_of(cliff.begin(), cliff.end(), [](bool b) { return b; })) {
+            // Forward, or turning tighter than the body's radius either way.
+            const double v = (targetLeft + targetRight) / 2;
+            const double spin = std::abs(targetRight - targetLeft);
+            if (v > 0 || (spin > 0 && std::abs(v) * oi::kWheelBaseMm < kBodyRadiusMm * spin)) {
+                safetyStop("cliff");
+                return;
+            }
+        }
+        if (onDock())
+            safetyStop("charger");
+    }
+
+    void tick()
+    {
+        if (pushedButtons && now >= pushedUntil)
+            pushedButtons = 0;
+        if (asleep)
+            return;
+        checkSafety();
+        if (wait && waitOver())
+            wait.reset();
+        scriptYield = false;
+        pump();
+        if (mode == OiMode::Passive && now - lastActivity >= kSleepAfter) {
+            fallAsleep();
+            return;
+        }
+        if (streaming && now.count() % kStreamPeriod.count() == 0)
+            sendFrame();
+    }
+
+    void advance(Microseconds dt)
+    {
+        const Microseconds end = now + dt;
+        while (now < end) {
+            const Microseconds nextTick = (now / kTick + 1) * kTick;
+            const Microseconds stepEnd = std::min(end, nextTick);
+            integrate(stepEnd - now);
+            now = stepEnd;
+            if (now == nextTick)
+                tick();
+        }
+    }
+
+    // --- Sensors ---
+
+    bool wallSeen(double distance) const { return distance >= 0 && distance <= 45; }
+
+    int wallSignal(double distance) const
+    {
+        if (distance < 0)
+            return 0;
+        const double full = profile->packet(27)->max;
+        return int(std::lround(full / (1 + (distance / 25) * (distance / 25))));
+    }
+
+    static int lightBumpSignal(double distance)
+    {
+        if (distance < 0)
+            return 0;
+        return int(std::lround(4095 / (1 + (distance / 35) * (distance / 35))));
+    }
+
+    // Every packet of the profile as the robot would report it now. Distance
+    // and angle are taken (reset) only when the report carries them.
+    oi::SensorSnapshot readSensors(bool takeDistance, bool takeAngle)
+    {
+        oi::SensorSnapshot s(*profile);
+        for (const oi::PacketInfo &p : profile->packets())
+            s.set(p.id, 0);
+        const FloorContact f = floorContact();
+        const ObstacleContact o = senseObstacles(world, pose);
+        const InfraredView ir = senseInfrared(world, pose, *profile);
+
+        std::int32_t bumps = (o.bumpRight ? oi::bit::BumpRight : 0) | (o.bumpLeft ? oi::bit::BumpLeft : 0)
+                             | (wheelDropRight() ? oi::bit::WheelDropRight : 0)
+                             | (wheelDropLeft() ? oi::bit::WheelDropLeft : 0);
+        if (wheelDropCaster())
+            bumps |= oi::bit::WheelDropCaster;
+        s.set(7, bumps);
+        s.set(8, wallSeen(o.wallDistanceMm) ? 1 : 0);
+        for (int i = 0; i < 4; ++i) {
+            s.set(9 + i, f.cliff[std::size_t(i)] ? 1 : 0);
+            s.set(28 + i, f.cliffSignal[std::size_t(i)]);
+        }
+        s.set(13, ir.virtualWall ? 1 : 0);
+
+        const double left = leftMotorMa(), right = rightMotorMa();
+        std::int32_t overcurrents = 0;
+        if (std::abs(left) > kWheelOvercurrentMa)
+            overcurrents |= oi::bit::OcLeftWheel;
+        if (std::abs(right) > kWheelOvercurrentMa)
+            overcurrents |= oi::bit::OcRightWheel;
+        s.set(14, overcurrents);
+        s.set(17, ir.omni);
+        s.set(18, heldButtons | pushedButtons);
+        if (takeDistance)
+            s.set(19, takeWhole(distanceMm));
+        if (takeAngle)
+            s.set(20, takeWhole(angleRaw));
+        const double current = batteryMa();
+        s.set(21, static_cast<std::int32_t>(chargingState()));
+        const double fraction = chargeMah / kCapacityMah;
+        s.set(22, std::int32_t(std::lround(std::clamp(13100 + 3000 * fraction + 0.25 * current, 0.0, 65535.0))));
+        s.set(23, std::int32_t(std::lround(current)));
+        s.set(24, std::int32_t(std::lround(temperatureC)));
+        s.set(25, std::int32_t(std::lround(chargeMah)));
+        s.set(26, std::int32_t(kCapacityMah));
+        s.set(27, wallSignal(o.wallDistanceMm));
+        if (create1())
+            s.set(32, oi::bit::BaudRateChangePin); // active low: high means not asserted
+        s.set(34, onDock() ? oi::bit::SourceHomeBase : 0);
+        s.set(35, static_cast<std::int32_t>(mode));
+        s.set(36, songNumber);
+        s.set(37, songPlaying() ? 1 : 0);
+        s.set(38, std::int32_t(streamIds.size()));
+        s.set(39, requestedVelocity);
+        s.set(40, requestedRadius);
+        s.set(41, requestedRight);
+        s.set(42, requestedLeft);
+        if (create1())
+            return s;
+
+        // ERRATA 4: which wheel 43 is, and its sign, come from the profile.
+        for (int id : {43, 44}) {
+            const oi::PacketInfo *p = profile->packet(id);
+            const bool isLeft = p->key.starts_with("left");
+            s.set(id, encoderPacketValue(isLeft ? wheelLeftMm : wheelRightMm, p->isSigned));
+        }
+        std::int32_t lightBits = 0;
+        for (int i = 0; i < 6; ++i) {
+            const int signal = lightBumpSignal(o.lightBumpMm[std::size_t(i)]);
+            s.set(46 + i, signal);
+            if (signal >= 400)
+                lightBits |= 1 << i;
+        }
+        s.set(45, lightBits);
+        s.set(52, ir.left);
+        s.set(53, ir.right);
+        s.set(54, std::int32_t(std::lround(left)));
+        s.set(55, std::int32_t(std::lround(right)));
+        s.set(56, std::int32_t(std::lround(mainBrushMa())));
+        s.set(57, std::int32_t(std::lround(sideBrushMa())));
+        s.set(58, progressing ? std::int32_t(oi::Stasis::Progressing) : std::int32_t(oi::Stasis::NotProgressing));
+        return s;
+    }
+
+    bool carries(std::span<const std::uint8_t> ids, int packet) const
+    {
+        return std::any_of(ids.begin(), ids.end(), [&](std::uint8_t id) {
+            if (const oi::PacketGroup *g = profile->group(id))
+                return g->first <= packet && packet <= g->last;
+            return id == packet;
+        });
+    }
+
+    bool allValid(std::span<const std::uint8_t> ids) const
+    {
+        return std::all_of(ids.begin(), ids.end(),
+                           [&](std::uint8_t id) { return profile->isValidSensorId(id); });
+    }
+
+    // ERRATA 3: replies are the packets' bytes, in the order asked, unframed.
+    void reply(std::span<const std::uint8_t> ids)
+    {
+        if (!allValid(ids))
+            return;
+        const oi::SensorSnapshot values = readSensors(carries(ids, 19), carries(ids, 20));
+        oi::Bytes out;
+        for (std::uint8_t id : ids)
+            appendPacketData(values, id, out);
+        emit(out);
+    }
+
+    void sendFrame()
+    {
+        // ERRATA 1: [19][n][id][data]...[checksum], the sum of every byte
+        // from the header on being 0.
+        const oi::SensorSnapshot values = readSensors(carries(streamIds, 19), carries(streamIds, 20));
+        oi::Bytes frame{19, 0};
+        for (std::uint8_t id : streamIds) {
+            frame.push_back(id);
+            appendPacketData(values, id, frame);
+        }
+        frame[1] = static_cast<std::uint8_t>(frame.size() - 2);
+        unsigned sum = 0;
+        for (std::uint8_t b : frame)
+            sum += b;
+        frame.push_back(static_cast<std::uint8_t>(-sum & 0xFF));
+        emit(frame);
+    }
+
+    void startStream(std::span<const std::uint8_t> ids)
+    {
+        if (!allValid(ids))
+            return;
+        std::size_t dataBytes = 0;
+        for (std::uint8_t id : ids)
+            dataBytes += 1 + std::size_t(profile->replySize(id));
+        if (dataBytes > kMaxFrameDataBytes)
+            return; // n-bytes could not say how long the frame is
+        streamIds.assign(ids.begin(), ids.end());
+        streaming = !streamIds.empty();
+    }
+
+    // --- Commands ---
+
+    void pump()
+    {
+        while (!wait) {
+            if (!scriptIn.empty()) {
+                if (scriptYield)
+                    return;
+                const std::size_t n = commandLength(*profile, scriptIn);
+                if (n == 0 || n > scriptIn.size()) {
+                    scriptIn.clear(); // the script ends inside a command
+                    continue;
+                }
+                command.assign(scriptIn.begin(), scriptIn.begin() + std::ptrdiff_t(n));
+                scriptIn.erase(scriptIn.begin(), scriptIn.begin() + std::ptrdiff_t(n));
+                execute(command, true);
+                continue;
+            }
+            if (serialIn.empty())
+                return;
+            const std::size_t n = commandLength(*profile, serialIn);
+            if (n == 0 || n > serialIn.size())
+                return; // the rest has not arrived yet
+            command.assign(serialIn.begin(), serialIn.begin() + std::ptrdiff_t(n));
+            serialIn.erase(serialIn.begin(), serialIn.begin() + std::ptrdiff_t(n));
+            execute(command, false);
+        }
+    }
+
+    void receive(std::span<const std::uint8_t> bytes)
+    {
+        if (disconnected || bytes.empty())
+            return;
+        lastActivity = now;
+        if (asleep) {
+            // Asleep, the robot hears nothing but Start, which wakes it. (A
+            // real one needs a pulse on its BRC pin; here the byte does it.)
+            const auto start = std::find(bytes.begin(), bytes.end(), std::uint8_t(128));
+            if (start == bytes.end())
+                return;
+            asleep = false;
+            bytes = bytes.subspan(std::size_t(start - bytes.begin()));
+        }
+        for (std::uint8_t b : bytes)
+            if (serialIn.size() < kInputBufferBytes)
+                serialIn.push_back(b);
+        pump();
+    }
+
+    void execute(std::span<const std::uint8_t> c, bool fromScript)
+    {
+        const oi::CommandSpec *spec = oi::commandSpecForOpcode(*profile, c[0]);
+        if (!spec)
+            return; // an opcode this robot lacks: its bytes are skipped
+        const Command cmd = spec->command;
+        if (mode == OiMode::Off && cmd != Command::Start && cmd != Command::Baud && cmd != Command::Reset)
+            return;
+        if (mode == OiMode::Passive && isActuator(cmd))
+            return;
+        if (isCleaning(cmd)) {
+            enterPassive(); // the cleaning itself is not simulated
+            return;
+        }
+        switch (cmd) {
+        case Command::Reset:
+            reset();
+            break;
+        case Command::Start:
+            enterPassive();
+            break;
+        case Command::Baud:
+            if (const int rate = oi::baudForCode(c[1]); rate > 0)
+                baud = rate;
+            break;
+        case Command::Control:
+        case Command::Safe:
+        case Command::Full:
+            leds = {}; // entering Safe or Full turns every LED off
+            mode = cmd == Command::Full ? OiMode::Full : OiMode::Safe;
+            break;
+        case Command::Power:
+            fallAsleep();
+            break;
+        case Command::Stop:
+            stopMotors();
+            streaming = false;
+            wait.reset();
+            scriptIn.clear();
+            mode = OiMode::Off;
+            break;
+        case Command::Drive:
+            drive(s16(c[1], c[2]), s16(c[3], c[4]));
+            break;
+        case Command::DriveDirect:
+            driveDirect(s16(c[1], c[2]), s16(c[3], c[4]));
+            break;
+        case Command::DrivePwm:
+            drivePwm(s16(c[1], c[2]), s16(c[3], c[4]));
+            break;
+        case Command::Motors:
+        case Command::LowSideDrivers:
+            setMotorBits(c[1]);
+            break;
+        case Command::PwmMotors:
+        case Command::PwmLowSideDrivers:
+            setMotorPwm(c.subspan(1, 3));
+            break;
+        case Command::DigitalOutputs:
+            digitalOutputs = c[1] & 0x07;
+            break;
+        case Command::SendIr:
+            break; // nothing in this world listens
+        case Command::Leds:
+            leds.bits = c[1];
+            leds.powerColor = c[2];
+            leds.powerIntensity = c[3];
+            break;
+        case Command::SchedulingLeds:
+            leds.weekdayBits = c[1] & 0x7F;
+            leds.schedulingBits = c[2] & 0x1F;
+            break;
+        case Command::DigitLedsRaw:
+            for (int i = 0; i < 4; ++i)
+                leds.digitSegments[std::size_t(i)] = c[std::size_t(1 + i)] & 0x7F;
+            break;
+        case Command::DigitLedsAscii:
+            for (int i = 0; i < 4; ++i)
+                leds.digitSegments[std::size_t(i)] = oi::sevenSegmentForAscii(c[std::size_t(1 + i)]);
+            break;
+        case Command::Buttons:
+            pushedButtons = c[1];
+            pushedUntil = now + kButtonPress;
+            break;
+        case Command::Song:
+            storeSong(c);
+            break;
+        case Command::Play:
+            // The documents: Play does nothing while a song is playing.
+            if (c[1] < songs.size() && songs[c[1]] && !songPlaying()) {
+                songNumber = c[1];
+                songEndsAt = now + Microseconds(std::int64_t(songs[c[1]]->totalDuration64()) * 15625);
+            }
+            break;
+        case Command::Sensors:
+            reply(c.subspan(1, 1));
+            break;
+        case Command::QueryList:
+            reply(c.subspan(2));
+            break;
+        case Command::Stream:
+            startStream(c.subspan(2));
+            break;
+        case Command::PauseResumeStream:
+            if (c[1] == 0)
+                streaming = false;
+            else if (c[1] == 1)
+                streaming = !streamIds.empty();
+            break;
+        case Command::Schedule:
+            if (const auto s = oi::scheduleFromBytes(c.subspan(1, 15)))
+                schedule = *s;
+            break;
+        case Command::SetDayTime:
+            if (c[1] <= 6 && c[2] <= 23 && c[3] <= 59)
+                clockMicros = ((c[1] * 24LL + c[2]) * 60 + c[3]) * 60'000'000LL;
+            break;
+        case Command::Script:
+            // ERRATA 11: the length counts bytes, at most 100; 0 clears.
+            if (c[1] <= kMaxScriptBytes)
+                script.assign(c.begin() + 2, c.end());
+            break;
+        case Command::PlayScript:
+            // The script goes in front of anything not yet read.
+            scriptIn.assign(script.begin(), script.end());
+            if (fromScript)
+                scriptYield = true;
+            break;
+        case Command::ShowScript: {
+            streaming = false; // the Create document: it halts the stream first
+            oi::Bytes out{static_cast<std::uint8_t>(script.size())};
+            out.insert(out.end(), script.begin(), script.end());
+            emit(out);
+            break;
+        }
+        case Command::WaitTime:
+            wait = Wait{Command::WaitTime, now + Microseconds(std::int64_t(c[1]) * 100'000), 0, 0, 0};
+            break;
+        case Command::WaitDistance:
+            distanceMm = 0; // the Create document: it resets the distance packet
+            wait = Wait{Command::WaitDistance, {}, double(s16(c[1], c[2])), 0, 0};
+            break;
+        case Command::WaitAngle:
+            angleRaw = 0;
+            wait = Wait{Command::WaitAngle, {}, double(s16(c[1], c[2])), 0, 0};
+            break;
+        case Command::WaitEvent: {
+            // ERRATA 12: 1..22, or the negative for "not".
+            const int event = std::int8_t(c[1]);
+            if (event != 0 && std::abs(event) <= oi::kWaitEventCount)
+                wait = Wait{Command::WaitEvent, {}, 0, 0, event};
+            break;
+        }
+        default:
+            break;
+        }
+        if (wait && waitOver())
+            wait.reset();
+    }
+
+    void storeSong(std::span<const std::uint8_t> c)
+    {
+        const std::size_t slot = c[1], notes = c[2];
+        if (slot >= songs.size() || notes < 1 || notes > std::size_t(oi::kMaxSongNotes))
+            return;
+        oi::Song song;
+        for (std::size_t i = 0; i < notes; ++i)
+            song.notes.push_back({c[3 + 2 * i], c[4 + 2 * i]});
+        songs[slot] = std::move(song);
+    }
+};
+
+VirtualRobot::VirtualRobot(const oi::RobotProfile &profile, std::uint32_t seed)
+    : m_state(std::make_unique<State>(profile, seed))
+{
+}
+
+VirtualRobot::~VirtualRobot() = default;
+
+const oi::RobotProfile &VirtualRobot::robotProfile() const { return *m_state->profile; }
+
+void VirtualRobot::receive(std::span<const std::uint8_t> bytes) { m_state->receive(bytes); }
+
+oi::Bytes VirtualRobot::takeOutput() { return std::exchange(m_state->output, {}); }
+
+bool VirtualRobot::streaming() const { return m_state->streaming && !m_state->asleep; }
+
+int VirtualRobot::baud() const { return m_state->baud; }
+
+void VirtualRobot::advance(Microseconds dt)
+{
+    if (dt.count() > 0)
+        m_state->advance(dt);
+}
+
+Microseconds VirtualRobot::now() const { return m_state->now; }
+
+void VirtualRobot::setWorld(World world)
+{
+    m_state->world = std::move(world);
+    m_state->floorDirty = true;
+}
+
+const World &VirtualRobot::world() const { return m_state->world; }
+
+void VirtualRobot::placeAt(oi::Pose pose)
+{
+    m_state->pose = pose;
+    m_state->floorDirty = true;
+}
+
+const oi::Pose &VirtualRobot::truePose() const { return m_state->pose; }
+
+void VirtualRobot::setWheelsLifted(bool left, bool right, bool caster)
+{
+    m_state->leftLifted = left;
+    m_state->rightLifted = right;
+    m_state->casterLifted = caster;
+}
+
+void VirtualRobot::pressButtons(std::uint8_t packet18Bits) { m_state->heldButtons = packet18Bits; }
+
+oi::OiMode VirtualRobot::mode() const { return m_state->mode; }
+
+bool VirtualRobot::asleep() const { return m_state->asleep; }
+
+void VirtualRobot::setFirmwareRelease(std::string release)
+{
+    State &s = *m_state;
+    s.firmwareRelease = std::move(release);
+    s.angleFactor = 1;
+    // Create 2 Appendix B: old Roomba-family firmware sends the angle scaled.
+    if (!s.create1())
+        if (const auto info = oi::parseFirmwareBanner("r3_robot/tags/" + s.firmwareRelease + ":"))
+            if (info->version <= kAngleFixedAfter)
+                s.angleFactor = kOldFirmwareAngleFactor;
+}
+
+const VirtualRobot::Leds &VirtualRobot::leds() const { return m_state->leds; }
+
+std::optional<oi::Song> VirtualRobot::song(int slot) const
+{
+    if (slot < 0 || std::size_t(slot) >= m_state->songs.size())
+        return std::nullopt;
+    return m_state->songs[std::size_t(slot)];
+}
+
+bool VirtualRobot::songPlaying() const { return m_state->songPlaying(); }
+
+oi::CleaningSchedule VirtualRobot::schedule() const { return m_state->schedule; }
+
+VirtualRobot::DayTime VirtualRobot::clock() const
+{
+    const long long minutes = m_state->clockMicros / 60'000'000LL;
+    DayTime t;
+    t.day = static_cast<oi::Weekday>(minutes / (24 * 60));
+    t.hour = int(minutes / 60 % 24);
+    t.minute = int(minutes % 60);
+    return t;
+}
+
+std::uint8_t VirtualRobot::motorBits() const { return m_state->motorBits; }
+
+std::array<int, 3> VirtualRobot::motorPwm() const { return m_state->motorPwm; }
+
+std::uint8_t VirtualRobot::digitalOutputs() const { return m_state->digitalOutputs; }
+
+oi::Bytes VirtualRobot::script() const { return m_state->script; }
+
+double VirtualRobot::batteryChargeMah() const { return m_state->chargeMah; }
+
+void VirtualRobot::setBatteryChargeMah(double mah) { m_state->chargeMah = std::clamp(mah, 0.0, kCapacityMah); }
+
+std::string VirtualRobot::lastSafetyStop() const { return m_state->lastSafetyStop; }
+
+void VirtualRobot::setFaultRates(FaultRates rates) { m_state->faults = rates; }
+
+void VirtualRobot::stall(Microseconds duration) { m_state->stallUntil = m_state->now + duration; }
+
+void VirtualRobot::disconnect()
+{
+    m_state->disconnected = true;
+    m_state->output.clear();
+}
+
+void VirtualRobot::reconnect() { m_state->disconnected = false; }
+
+bool VirtualRobot::disconnected() const { return m_state->disconnected; }
+
+} // namespace sim

@@ -1,0 +1,135 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "odometry.h"
+#include "result.h"
+#include "robot_profile.h"
+#include "schedule.h"
+#include "sensor_snapshot.h"
+#include "song.h"
+
+#include <array>
+#include <chrono>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace sim {
+
+using Microseconds = std::chrono::microseconds;
+
+// A line segment on the floor, in mm. +x is the robot's forward at the
+// start pose, +y its left.
+struct Segment {
+    double x1 = 0, y1 = 0, x2 = 0, y2 = 0;
+};
+
+// A rectangle on the floor, in mm.
+struct Area {
+    double xMin = 0, yMin = 0, xMax = 0, yMax = 0;
+};
+
+// The small 2D world the robot drives in.
+struct World {
+    std::vector<Segment> walls;    // bumps, wall signal, light bumpers
+    std::vector<Area> dropOffs;    // no floor here: cliff sensors and wheel drops
+    struct Dock {
+        double x = 0, y = 0, headingRad = 0; // where the contacts are, facing out
+    };
+    std::optional<Dock> dock;      // IR buoys and force field; charging when on it
+    struct VirtualWallBeacon {
+        double x = 0, y = 0, headingRad = 0, rangeMm = 1500;
+    };
+    std::optional<VirtualWallBeacon> virtualWall;
+
+    // A 4 m x 3 m room with a dock, a table edge (drop-off) and a virtual
+    // wall: what the dashboard shows on first start.
+    static World classroom();
+};
+
+// Noise on the line, as probabilities per byte sent by the robot.
+struct FaultRates {
+    double corruptByte = 0; // replace a byte with a random one
+    double strayHeader = 0; // insert a 19 before a byte
+    double dropByte = 0;    // leave a byte out
+};
+
+// The robot's side of the Open Interface for one profile, with its own
+// clock: nothing happens until advance() is called. Bytes from the client go
+// in through receive(); what the robot says comes out of takeOutput().
+class VirtualRobot {
+public:
+    explicit VirtualRobot(const oi::RobotProfile &profile, std::uint32_t seed = 1);
+    ~VirtualRobot();
+    VirtualRobot(const VirtualRobot &) = delete;
+    VirtualRobot &operator=(const VirtualRobot &) = delete;
+
+    const oi::RobotProfile &robotProfile() const;
+
+    // --- The serial line ---
+    void receive(std::span<const std::uint8_t> bytes);
+    oi::Bytes takeOutput();
+    // True while stream frames go out (148 started them, 150 did not pause them).
+    bool streaming() const;
+    // The baud the robot talks at now (changed by opcode 129).
+    int baud() const;
+
+    // --- Time ---
+    void advance(Microseconds dt);
+    Microseconds now() const;
+
+    // --- World and pose ---
+    void setWorld(World world);
+    const World &world() const;
+    void placeAt(oi::Pose pose); // also used by tests to lift it off a cliff
+    const oi::Pose &truePose() const;
+    // Lifts wheels off the floor by hand (wheel drops), beside what the world does.
+    void setWheelsLifted(bool left, bool right, bool caster = false);
+    void pressButtons(std::uint8_t packet18Bits); // held until released with 0
+
+    // --- What the robot shows and stores ---
+    oi::OiMode mode() const;
+    // After 5 minutes of Passive without a byte received, or after Power
+    // (133), the robot sleeps: it hears nothing and says nothing. Start (128)
+    // wakes it; a real one needs a pulse on its BRC pin instead.
+    bool asleep() const;
+    void setFirmwareRelease(std::string release); // e.g. "release-3.4.1"; printed on Reset
+    struct Leds {
+        std::uint8_t bits = 0, powerColor = 0, powerIntensity = 0;
+        std::uint8_t weekdayBits = 0, schedulingBits = 0;
+        std::array<std::uint8_t, 4> digitSegments{}; // digit 3..0, segment bits
+    };
+    const Leds &leds() const;
+    std::optional<oi::Song> song(int slot) const;
+    bool songPlaying() const;
+    oi::CleaningSchedule schedule() const;
+    struct DayTime {
+        oi::Weekday day = oi::Weekday::Sunday;
+        int hour = 0, minute = 0;
+    };
+    DayTime clock() const;
+    std::uint8_t motorBits() const;                // 138 (brushes/vacuum or low side drivers)
+    std::array<int, 3> motorPwm() const;           // 144, as sent
+    std::uint8_t digitalOutputs() const;           // 147 (Create 1)
+    oi::Bytes script() const;                      // 152 body (Create 1)
+    double batteryChargeMah() const;
+    void setBatteryChargeMah(double mah);
+    // Why Safe mode last fell back to Passive ("cliff", "wheel drop", "charger"), or empty.
+    std::string lastSafetyStop() const;
+
+    // --- Faults ---
+    void setFaultRates(FaultRates rates);
+    void stall(Microseconds duration); // says nothing for this long
+    void disconnect();                 // the cable is pulled: nothing in or out until reconnect()
+    void reconnect();
+    bool disconnected() const;
+
+private:
+    struct State;
+    std::unique_ptr<State> m_state;
+};
+
+} // namespace sim

@@ -1,0 +1,182 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The assembled window: connecting to the virtual robot, mode buttons down
+// to the bytes, settings, and a bad port.
+#include "main_window.h"
+#include "mode_panel.h"
+#include "transport.h"
+
+#include <QDockWidget>
+#include <QMutex>
+#include <QPushButton>
+#include <QSettings>
+#include <QStandardPaths>
+#include <QTimer>
+#include <QTest>
+
+namespace {
+
+// Records what the link writes, from the link's thread, and streams
+// group-100 frames back every 15 ms as a Create 2 would, so the link stays
+// streaming and writes nothing of its own.
+struct Recording {
+    QMutex mutex;
+    QList<QByteArray> writes;
+    qsizetype count()
+    {
+        QMutexLocker lock(&mutex);
+        return writes.size();
+    }
+    QList<QByteArray> take()
+    {
+        QMutexLocker lock(&mutex);
+        return std::exchange(writes, {});
+    }
+};
+
+class RecordingTransport : public oilink::Transport {
+public:
+    explicit RecordingTransport(Recording *recording) : m_recording(recording)
+    {
+        QByteArray frame(84, '\0');
+        frame[0] = 19;
+        frame[1] = 81;
+        frame[2] = char(100);
+        frame[83] = char(-(19 + 81 + 100) & 0xFF);
+        m_timer.setInterval(15);
+        connect(&m_timer, &QTimer::timeout, this, [this, frame] { emit bytesReceived(frame); });
+    }
+    void open() override
+    {
+        m_open = true;
+        emit opened();
+        m_timer.start();
+    }
+    void close() override
+    {
+        m_open = false;
+        m_timer.stop();
+    }
+    bool isOpen() const override { return m_open; }
+    bool write(const QByteArray &bytes) override
+    {
+        QMutexLocker lock(&m_recording->mutex);
+        m_recording->writes << bytes;
+        return m_open;
+    }
+    void flush(int) override {}
+    QString describe() const override { return QStringLiteral("/dev/recording"); }
+
+private:
+    Recording *m_recording;
+    bool m_open = false;
+    QTimer m_timer;
+};
+
+QString text(const QByteArray &bytes)
+{
+    QStringList parts;
+    for (char c : bytes)
+        parts << QString::number(static_cast<unsigned char>(c));
+    return parts.join(' ');
+}
+
+} // namespace
+
+class TestMainWindow : public QObject {
+    Q_OBJECT
+private slots:
+    void init()
+    {
+        QStandardPaths::setTestModeEnabled(true);
+        QSettings().clear();
+    }
+
+    void firstStartStreamsFromTheVirtualRobot()
+    {
+        MainWindow window;
+        window.resize(1200, 800);
+        window.show();
+        window.start();
+        QTRY_VERIFY_WITH_TIMEOUT(window.session().snapshotCount() > 10, 10000);
+        QTRY_COMPARE_WITH_TIMEOUT(window.session().state(), oilink::LinkState::Streaming, 10000);
+        window.refreshDisplay();
+        QVERIFY(window.statusText().contains("streaming"));
+        QVERIFY(!window.statusText().contains("NO LIVE DATA"));
+
+        // Safe mode, as the robot reports it back.
+        QTest::mouseClick(window.modePanel()->button("safe"), Qt::LeftButton);
+        QTRY_COMPARE_WITH_TIMEOUT(window.session().latest().oiMode(), oi::OiMode::Safe, 10000);
+        window.refreshDisplay();
+        QCOMPARE(window.modePanel()->highlightedMode(), std::optional<oi::OiMode>(oi::OiMode::Safe));
+
+        QTest::mouseClick(window.connectionBar()->findChild<QPushButton *>("disconnect"), Qt::LeftButton);
+        QTRY_COMPARE_WITH_TIMEOUT(window.session().state(), oilink::LinkState::Closed, 10000);
+        window.refreshDisplay();
+        QVERIFY(window.statusText().contains("NO LIVE DATA"));
+    }
+
+    void modeButtonsSendExactBytes()
+    {
+        Recording recording;
+        MainWindow window;
+        window.session().setTransportFactory(
+            [&recording](const oilink::LinkSettings &) { return new RecordingTransport(&recording); });
+        oilink::LinkSettings settings = oilink::LinkSettings::serial("/dev/recording", oi::ProfileId::Create2);
+        window.show();
+        window.start(settings);
+        // Opening sends Start, then the stream.
+        QTRY_COMPARE_WITH_TIMEOUT(window.session().state(), oilink::LinkState::Streaming, 10000);
+        const QList<QByteArray> opening = recording.take();
+        QCOMPARE(text(opening.first()), QString("128"));
+        window.modePanel()->setFullModeConfirmation([](QWidget *) { return true; });
+        const std::pair<const char *, const char *> buttons[] = {
+            {"safe", "131"}, {"full", "132"}, {"passive", "128"}, {"seek-dock", "143"}, {"stop", "173"}};
+        for (const auto &[name, bytes] : buttons) {
+            QTest::mouseClick(window.modePanel()->button(name), Qt::LeftButton);
+            QTRY_COMPARE_WITH_TIMEOUT(recording.count(), qsizetype(1), 5000);
+            QCOMPARE(text(recording.take().first()), QString(bytes));
+        }
+        // Closing leaves the robot stopped and in Passive mode.
+        window.session().closeAndWait();
+        QCOMPARE(text(recording.take().join()), QString("150 0 137 0 0 0 0 138 0 128"));
+    }
+
+    void settingsRestore()
+    {
+        {
+            MainWindow window;
+            window.show();
+            window.start();
+            window.findChild<QDockWidget *>("inspectorDock")->hide();
+            ConnectionRequest r;
+            r.transport = ConnectionRequest::Transport::Virtual;
+            r.profile = oi::ProfileId::Create1;
+            window.connectionBar()->setRequest(r);
+            window.close();
+        }
+        MainWindow again;
+        again.show();
+        again.start();
+        QVERIFY(again.findChild<QDockWidget *>("inspectorDock")->isHidden());
+        QCOMPARE(again.connectionBar()->request().profile, std::optional<oi::ProfileId>(oi::ProfileId::Create1));
+        QTRY_COMPARE_WITH_TIMEOUT(again.session().robotProfile().id, oi::ProfileId::Create1, 10000);
+        again.resetLayout();
+        QVERIFY(!again.findChild<QDockWidget *>("inspectorDock")->isHidden());
+    }
+
+    void badPortGivesOneClearError()
+    {
+        MainWindow window;
+        window.show();
+        window.start(oilink::LinkSettings::serial("/dev/roomba-does-not-exist", oi::ProfileId::Create2));
+        QTRY_VERIFY_WITH_TIMEOUT(!window.connectionBar()->errorText().isEmpty(), 10000);
+        const QString error = window.connectionBar()->errorText();
+        QVERIFY2(error.contains("/dev/roomba-does-not-exist"), qPrintable(error));
+        QTest::qWait(1500); // reconnect attempts follow; the message stays one line
+        QCOMPARE(window.connectionBar()->errorText().count('\n'), 0);
+        QVERIFY(window.session().snapshotCount() == 0);
+    }
+};
+
+QTEST_MAIN(TestMainWindow)
+#include "tst_main_window.moc"

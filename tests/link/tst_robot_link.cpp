@@ -1,0 +1,444 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// RobotLink against a recording transport: the exact bytes it sends, what it
+// makes of the bytes it gets, and how it behaves when the port fails.
+#include "link_test_support.h"
+
+#include "command_encoder.h"
+#include "robot_link.h"
+#include "stream_packets.h"
+#include "transport.h"
+
+#include <QPointer>
+#include <QSignalSpy>
+#include <QTest>
+
+using oilink::LinkSettings;
+using oilink::LinkState;
+using oilink::RobotLink;
+
+namespace {
+
+// Records every byte the link writes; the test plays the robot by injecting
+// bytes, and pulls the cable with vanish().
+class RecordingTransport : public oilink::Transport {
+    Q_OBJECT
+public:
+    QByteArray written;
+    QString openFailure; // non-empty: open() fails with this message
+    int flushes = 0;
+
+    void open() override
+    {
+        if (!openFailure.isEmpty()) {
+            emit errorOccurred(openFailure);
+            return;
+        }
+        m_open = true;
+        emit opened();
+    }
+    void close() override { m_open = false; }
+    bool isOpen() const override { return m_open; }
+    bool write(const QByteArray &data) override
+    {
+        if (!m_open)
+            return false;
+        written += data;
+        return true;
+    }
+    void flush(int) override { ++flushes; }
+    QString describe() const override { return QStringLiteral("/dev/fake"); }
+
+    void inject(const QByteArray &data) { emit bytesReceived(data); }
+    void vanish()
+    {
+        m_open = false;
+        emit errorOccurred(QStringLiteral("/dev/fake: the port went away"));
+        emit closed();
+    }
+
+private:
+    bool m_open = false;
+};
+
+QList<int> stateList(const QSignalSpy &spy)
+{
+    QList<int> out;
+    for (const QList<QVariant> &args : spy)
+        out.append(static_cast<int>(args.at(0).value<LinkState>()));
+    return out;
+}
+
+QList<int> states(std::initializer_list<LinkState> list)
+{
+    QList<int> out;
+    for (LinkState s : list)
+        out.append(static_cast<int>(s));
+    return out;
+}
+
+int frameBytes(const oi::RobotProfile &profile, const std::vector<int> &ids)
+{
+    int total = 3;
+    for (int id : ids)
+        total += 1 + profile.replySize(id);
+    return total;
+}
+
+const QByteArray kShutdown = bytes({150, 0, 137, 0, 0, 0, 0, 138, 0, 128});
+
+} // namespace
+
+class TestRobotLink : public QObject {
+    Q_OBJECT
+
+    RobotLink *m_link = nullptr;
+    QList<QPointer<RecordingTransport>> m_transports;
+    QStringList m_failures; // open failures for the next transports, in order
+
+    RecordingTransport *current() const { return m_transports.isEmpty() ? nullptr : m_transports.last().data(); }
+
+    LinkSettings create2() const { return LinkSettings::serial(QStringLiteral("/dev/fake"), oi::ProfileId::Create2); }
+
+private slots:
+    void init()
+    {
+        m_transports.clear();
+        m_failures.clear();
+        m_link = new RobotLink;
+        m_link->setTransportFactory([this](const LinkSettings &) {
+            auto *t = new RecordingTransport;
+            if (!m_failures.isEmpty())
+                t->openFailure = m_failures.takeFirst();
+            m_transports.append(t);
+            return t;
+        });
+    }
+    void cleanup()
+    {
+        delete m_link;
+        m_link = nullptr;
+    }
+
+    // ERRATA 18: the largest candidate that fits the baud, computed.
+    void streamChoice_data()
+    {
+        QTest::addColumn<oi::ProfileId>("profile");
+        QTest::addColumn<int>("baud");
+        QTest::addColumn<QList<int>>("packets");
+        const QList<int> shortList{1, 19, 20, 21, 22, 35};
+        QTest::newRow("create2 115200") << oi::ProfileId::Create2 << 115200 << QList<int>{100};
+        QTest::newRow("create2 57600") << oi::ProfileId::Create2 << 57600 << QList<int>{100};
+        QTest::newRow("create2 38400") << oi::ProfileId::Create2 << 38400 << QList<int>{6};
+        QTest::newRow("create1 38400") << oi::ProfileId::Create1 << 38400 << QList<int>{6};
+        QTest::newRow("create2 19200") << oi::ProfileId::Create2 << 19200 << shortList;
+        QTest::newRow("roomba500 115200") << oi::ProfileId::Roomba500 << 115200 << QList<int>{100};
+        QTest::newRow("roomba500 57600") << oi::ProfileId::Roomba500 << 57600 << QList<int>{100};
+        QTest::newRow("create1 115200") << oi::ProfileId::Create1 << 115200 << QList<int>{6};
+        QTest::newRow("create1 57600") << oi::ProfileId::Create1 << 57600 << QList<int>{6};
+        QTest::newRow("create1 19200") << oi::ProfileId::Create1 << 19200 << shortList;
+        QTest::newRow("create2 9600") << oi::ProfileId::Create2 << 9600 << QList<int>{1};
+        QTest::newRow("create2 4800") << oi::ProfileId::Create2 << 4800 << QList<int>{7};
+        QTest::newRow("create2 2400") << oi::ProfileId::Create2 << 2400 << QList<int>{};
+    }
+    void streamChoice()
+    {
+        QFETCH(oi::ProfileId, profile);
+        QFETCH(int, baud);
+        QFETCH(QList<int>, packets);
+        const oi::RobotProfile &p = oi::profile(profile);
+        const std::vector<int> chosen = oilink::chooseStreamPackets(p, baud);
+        QCOMPARE(QList<int>(chosen.begin(), chosen.end()), packets);
+        if (!chosen.empty())
+            QVERIFY(frameBytes(p, chosen) <= oi::maxStreamFrameBytes(baud));
+    }
+
+    void frameSizesBehindTheChoice()
+    {
+        const oi::RobotProfile &c2 = oi::profile(oi::ProfileId::Create2);
+        QCOMPARE(frameBytes(c2, {100}), 84);
+        QCOMPARE(oi::maxStreamFrameBytes(115200), 172);
+        QCOMPARE(frameBytes(c2, {6}), 56);
+        QCOMPARE(frameBytes(c2, {6, 101}), 85);
+        QCOMPARE(oi::maxStreamFrameBytes(57600), 86);
+        QCOMPARE(frameBytes(c2, {1, 19, 20, 21, 22, 35}), 27);
+        QCOMPARE(oi::maxStreamFrameBytes(19200), 28);
+        // Group 100 fits at 57600 as well; the same packets as 6 + 101 take a byte more.
+        QVERIFY(frameBytes(c2, {100}) <= oi::maxStreamFrameBytes(57600));
+        QVERIFY(frameBytes(c2, {100}) > oi::maxStreamFrameBytes(38400));
+        QVERIFY(frameBytes(c2, {6}) <= oi::maxStreamFrameBytes(38400));
+    }
+
+    void openSendsStartThenStream_data()
+    {
+        QTest::addColumn<LinkSettings>("settings");
+        QTest::addColumn<QByteArray>("expected");
+        LinkSettings s = create2();
+        QTest::newRow("create2") << s << bytes({128, 148, 1, 100});
+        s.baud = 38400;
+        QTest::newRow("create2 at 38400") << s << bytes({128, 148, 1, 6});
+        s.baud = 19200;
+        QTest::newRow("create2 at 19200") << s << bytes({128, 148, 6, 1, 19, 20, 21, 22, 35});
+        s = LinkSettings::serial(QStringLiteral("/dev/fake"), oi::ProfileId::Create1);
+        QTest::newRow("create1") << s << bytes({128, 148, 1, 6});
+        s = create2();
+        s.streamPackets = {7, 35};
+        QTest::newRow("chosen packets") << s << bytes({128, 148, 2, 7, 35});
+    }
+    void openSendsStartThenStream()
+    {
+        QFETCH(LinkSettings, settings);
+        QFETCH(QByteArray, expected);
+        QSignalSpy started(m_link, &RobotLink::streamStarted);
+        m_link->open(settings);
+        QVERIFY(current());
+        QCOMPARE(current()->written, expected);
+        QCOMPARE(m_link->state(), LinkState::Connecting);
+        QCOMPARE(started.size(), 1);
+    }
+
+    void closeSendsTheShutdownSequence_data()
+    {
+        QTest::addColumn<oi::ProfileId>("profile");
+        QTest::newRow("create2") << oi::ProfileId::Create2;
+        QTest::newRow("roomba500") << oi::ProfileId::Roomba500;
+        QTest::newRow("create1") << oi::ProfileId::Create1;
+    }
+    void closeSendsTheShutdownSequence()
+    {
+        QFETCH(oi::ProfileId, profile);
+        QSignalSpy stateSpy(m_link, &RobotLink::stateChanged);
+        m_link->open(LinkSettings::serial(QStringLiteral("/dev/fake"), profile));
+        QPointer<RecordingTransport> t = current();
+        t->written.clear();
+        m_link->close();
+        QVERIFY(t);
+        QCOMPARE(t->written, kShutdown);
+        const oi::Bytes expected = oi::CommandEncoder(oi::profile(profile)).shutdownSequence();
+        QCOMPARE(t->written, QByteArray(reinterpret_cast<const char *>(expected.data()), qsizetype(expected.size())));
+        QCOMPARE(t->flushes, 1);
+        QVERIFY(!t->isOpen());
+        QCOMPARE(m_link->state(), LinkState::Closed);
+        QCOMPARE(stateList(stateSpy), states({LinkState::Connecting, LinkState::Closed}));
+        m_link->close(); // a second close sends nothing
+        QVERIFY(!t || t->written == kShutdown);
+    }
+
+    void oversizeStreamIsRefused()
+    {
+        LinkSettings s = create2();
+        s.streamPackets = {100, 100, 100};
+        QSignalSpy errors(m_link, &RobotLink::errorOccurred);
+        m_link->open(s);
+        QCOMPARE(errors.size(), 1);
+        const QString message = errors.at(0).at(0).toString();
+        QVERIFY2(message.contains(QStringLiteral("does not fit in 15 ms")), qPrintable(message));
+        QCOMPARE(m_link->state(), LinkState::Closed);
+        QVERIFY(m_transports.first().isNull() || m_transports.first()->written.isEmpty());
+    }
+
+    void framesBecomeSnapshotsAndStatistics()
+    {
+        QSignalSpy snapshots(m_link, &RobotLink::snapshot);
+        QSignalSpy stats(m_link, &RobotLink::statistics);
+        QSignalSpy received(m_link, &RobotLink::rawBytesReceived);
+        m_link->open(create2());
+        RecordingTransport *t = current();
+        QByteArray corrupt = group100Frame();
+        corrupt[10] = static_cast<char>(corrupt[10] + 1);
+        // Junk, a good frame cut in two, a corrupted frame, a stray 19, a good frame.
+        const QByteArray good = group100Frame(0x03);
+        t->inject(bytes({1, 2}) + good.left(30));
+        t->inject(good.mid(30) + corrupt + bytes({19}) + group100Frame());
+        QCOMPARE(snapshots.size(), 2);
+        const auto first = snapshots.at(0).at(0).value<oi::SensorSnapshot>();
+        QVERIFY(first.bumpLeft() && first.bumpRight());
+        QVERIFY(first.has(58) && first.has(7));
+        QCOMPARE(m_link->state(), LinkState::Streaming);
+        QCOMPARE(received.size(), 2);
+
+        const oilink::LinkStats now = m_link->currentStatistics();
+        QCOMPARE(now.frames, quint64(2));
+        QCOMPARE(now.checksumFailures, quint64(1));
+        QCOMPARE(now.bytesDiscarded, quint64(2 + 84 + 1));
+        QCOMPARE(now.resyncs, quint64(1)); // the stray 19 claimed a length of 19
+        QCOMPARE(now.bytesReceived, quint64(2 + 84 * 3 + 1));
+        QCOMPARE(now.bytesSent, quint64(4));
+        QVERIFY(now.lastFrameTime.isValid());
+        // The failure is reported soon, not only at the next one-second tick.
+        QTRY_VERIFY_WITH_TIMEOUT(!stats.isEmpty(), 5000);
+        QTRY_VERIFY_WITH_TIMEOUT(stats.last().at(0).value<oilink::LinkStats>().checksumFailures == 1, 5000);
+    }
+
+    void staleAfterSilenceThenStreamingAgain()
+    {
+        QSignalSpy stateSpy(m_link, &RobotLink::stateChanged);
+        m_link->open(create2());
+        current()->inject(group100Frame());
+        QCOMPARE(m_link->state(), LinkState::Streaming);
+        QTRY_COMPARE_WITH_TIMEOUT(m_link->state(), LinkState::Stale, 5000);
+        current()->inject(group100Frame());
+        QCOMPARE(m_link->state(), LinkState::Streaming);
+        QCOMPARE(stateList(stateSpy), states({LinkState::Connecting, LinkState::Streaming, LinkState::Stale,
+                                              LinkState::Streaming}));
+    }
+
+    void noDataIsReportedOnceAndStartAndStreamAreRepeated()
+    {
+        QSignalSpy errors(m_link, &RobotLink::errorOccurred);
+        m_link->open(create2());
+        const QByteArray startAndStream = bytes({128, 148, 1, 100});
+        // Re-armed after 1 s, then 2 s: three copies in all.
+        QTRY_COMPARE_WITH_TIMEOUT(current()->written.count(startAndStream), 3, 10000);
+        QCOMPARE(errors.size(), 1);
+        QCOMPARE(errors.at(0).at(0).toString(),
+                 QStringLiteral("/dev/fake: no data: is the robot on, and is the baud right?"));
+        QCOMPARE(m_link->state(), LinkState::Connecting);
+        current()->inject(group100Frame());
+        QCOMPARE(m_link->state(), LinkState::Streaming);
+    }
+
+    void lostPortReconnectsAndResumes()
+    {
+        QSignalSpy stateSpy(m_link, &RobotLink::stateChanged);
+        QSignalSpy errors(m_link, &RobotLink::errorOccurred);
+        m_link->open(create2());
+        current()->inject(group100Frame());
+        current()->inject(group100Frame().left(40)); // cut off by the loss
+        current()->vanish();
+        QCOMPARE(m_link->state(), LinkState::Reconnecting);
+        QTRY_COMPARE_WITH_TIMEOUT(m_transports.size(), 2, 5000);
+        QCOMPARE(current()->written, bytes({128, 148, 1, 100}));
+        current()->inject(group100Frame());
+        QCOMPARE(m_link->state(), LinkState::Streaming);
+        QCOMPARE(stateList(stateSpy), states({LinkState::Connecting, LinkState::Streaming, LinkState::Lost,
+                                              LinkState::Reconnecting, LinkState::Streaming}));
+        QCOMPARE(errors.size(), 1);
+        const oilink::LinkStats s = m_link->currentStatistics();
+        QCOMPARE(s.reconnects, quint32(1));
+        QCOMPARE(s.frames, quint64(2));
+        QCOMPARE(s.bytesDiscarded, quint64(40)); // the cut frame
+    }
+
+    void openFailuresAreReportedOnceWhileRetrying()
+    {
+        m_failures = QStringList(5, QStringLiteral("/dev/fake: no such port"));
+        QSignalSpy errors(m_link, &RobotLink::errorOccurred);
+        m_link->open(create2());
+        QCOMPARE(m_link->state(), LinkState::Reconnecting);
+        // Backoff 100, 200, 400, 800, 1600 ms, then the sixth try opens.
+        QTRY_COMPARE_WITH_TIMEOUT(m_transports.size(), 6, 10000);
+        QTRY_COMPARE_WITH_TIMEOUT(current()->written, bytes({128, 148, 1, 100}), 5000);
+        QCOMPARE(errors.size(), 1);
+        QCOMPARE(errors.at(0).at(0).toString(), QStringLiteral("/dev/fake: no such port"));
+        current()->inject(group100Frame());
+        QCOMPARE(m_link->state(), LinkState::Streaming);
+    }
+
+    void closeWhileReconnectingStops()
+    {
+        m_failures = QStringList(50, QStringLiteral("/dev/fake: no such port"));
+        m_link->open(create2());
+        QTRY_VERIFY_WITH_TIMEOUT(m_transports.size() >= 2, 5000);
+        m_link->close();
+        QCOMPARE(m_link->state(), LinkState::Closed);
+        const qsizetype tries = m_transports.size();
+        QTest::qWait(500);
+        QCOMPARE(m_transports.size(), tries);
+    }
+
+    void sensorQueryPausesAndResumesTheStream()
+    {
+        QSignalSpy replies(m_link, &RobotLink::sensorReply);
+        QSignalSpy snapshots(m_link, &RobotLink::snapshot);
+        m_link->open(create2());
+        RecordingTransport *t = current();
+        t->inject(group100Frame());
+        t->written.clear();
+        m_link->querySensors({7});
+        QCOMPARE(t->written, bytes({150, 0}));
+        t->inject(group100Frame()); // a frame still on its way when the pause went out
+        QTRY_COMPARE_WITH_TIMEOUT(t->written, bytes({150, 0, 142, 7}), 5000);
+        t->inject(bytes({0x02}));
+        QCOMPARE(replies.size(), 1);
+        QVERIFY(replies.at(0).at(0).value<oi::SensorSnapshot>().bumpLeft());
+        QCOMPARE(t->written, bytes({150, 0, 142, 7, 150, 1}));
+        QCOMPARE(snapshots.size(), 2);
+
+        t->written.clear();
+        m_link->querySensors({7, 22});
+        QTRY_COMPARE_WITH_TIMEOUT(t->written, bytes({150, 0, 149, 2, 7, 22}), 5000);
+        t->inject(bytes({0x01, 0x3E}));
+        t->inject(bytes({0x80}));
+        QCOMPARE(replies.size(), 2);
+        const auto reply = replies.at(1).at(0).value<oi::SensorSnapshot>();
+        QVERIFY(reply.bumpRight());
+        QCOMPARE(reply.voltageMv(), 16000);
+        QCOMPARE(m_link->currentStatistics().replies, quint64(2));
+    }
+
+    void unansweredQueryTimesOutAndResumes()
+    {
+        QSignalSpy errors(m_link, &RobotLink::errorOccurred);
+        m_link->open(create2());
+        current()->inject(group100Frame());
+        current()->written.clear();
+        m_link->querySensors({35});
+        QTRY_COMPARE_WITH_TIMEOUT(errors.size(), 1, 5000);
+        QCOMPARE(errors.at(0).at(0).toString(), QStringLiteral("/dev/fake: no reply to the sensor query"));
+        QCOMPARE(current()->written, bytes({150, 0, 142, 35, 150, 1}));
+        current()->inject(group100Frame());
+        QCOMPARE(m_link->state(), LinkState::Streaming);
+    }
+
+    void badQueriesAreRefused()
+    {
+        QSignalSpy errors(m_link, &RobotLink::errorOccurred);
+        m_link->querySensors({7});
+        QCOMPARE(errors.size(), 1);
+        QVERIFY(errors.at(0).at(0).toString().startsWith(QStringLiteral("not connected")));
+        m_link->open(LinkSettings::serial(QStringLiteral("/dev/fake"), oi::ProfileId::Create1));
+        current()->written.clear();
+        m_link->querySensors({43});
+        QCOMPARE(errors.size(), 2);
+        QVERIFY(errors.at(1).at(0).toString().contains(QStringLiteral("43 is not a packet or group of the Create")));
+        QVERIFY(current()->written.isEmpty());
+    }
+
+    void sendWritesEncodedCommands()
+    {
+        QSignalSpy sent(m_link, &RobotLink::rawBytesSent);
+        QSignalSpy errors(m_link, &RobotLink::errorOccurred);
+        m_link->send(bytes({131}));
+        QCOMPARE(errors.size(), 1);
+        QVERIFY(errors.at(0).at(0).toString().startsWith(QStringLiteral("not connected")));
+        m_link->open(create2());
+        current()->written.clear();
+        const oi::Bytes drive = *oi::CommandEncoder(oi::profile(oi::ProfileId::Create2)).drive(-200, 500);
+        const QByteArray driveBytes(reinterpret_cast<const char *>(drive.data()), qsizetype(drive.size()));
+        m_link->send(driveBytes);
+        QCOMPARE(current()->written, bytes({137, 255, 56, 1, 244}));
+        QCOMPARE(sent.last().at(0).toByteArray(), driveBytes);
+    }
+
+    // A slot that closes the link on a snapshot runs inside the parser.
+    void closingFromASnapshotSlotIsSafe()
+    {
+        QSignalSpy snapshots(m_link, &RobotLink::snapshot);
+        QSignalSpy stats(m_link, &RobotLink::statistics);
+        connect(m_link, &RobotLink::snapshot, m_link, &RobotLink::close);
+        m_link->open(create2());
+        QPointer<RecordingTransport> t = current();
+        t->written.clear();
+        t->inject(group100Frame() + group100Frame() + group100Frame());
+        QCOMPARE(snapshots.size(), 1);
+        QCOMPARE(m_link->state(), LinkState::Closed);
+        QVERIFY(t);
+        QCOMPARE(t->written, kShutdown);
+        // The statistics given out on closing count the one frame taken.
+        QVERIFY(!stats.isEmpty());
+        QCOMPARE(stats.last().at(0).value<oilink::LinkStats>().frames, quint64(1));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestRobotLink)
+#include "tst_robot_link.moc"

@@ -1,0 +1,208 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// RobotLink against the in-process virtual robot: snapshots, the watchdog,
+// statistics, finding the profile, and the link on its worker thread.
+#include "real_time_robot.h"
+#include "robot_link.h"
+#include "robot_link_thread.h"
+#include "virtual_transport.h"
+
+#include <QSignalSpy>
+#include <QTest>
+#include <QThread>
+
+#include <array>
+#include <chrono>
+#include <span>
+
+using namespace std::chrono_literals;
+using oilink::LinkSettings;
+using oilink::LinkState;
+using oilink::RobotLink;
+using oilink::RobotLinkThread;
+
+namespace {
+constexpr int kTimeoutMs = 10000;
+
+sim::VirtualRobot &robotOf(const RobotLink &link)
+{
+    auto *transport = qobject_cast<oilink::VirtualTransport *>(link.transport());
+    return transport->robot()->robot();
+}
+
+QByteArray bytes(std::initializer_list<int> values)
+{
+    QByteArray out;
+    for (int v : values)
+        out.append(static_cast<char>(v));
+    return out;
+}
+} // namespace
+
+class TestRobotLinkVirtual : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase() { oilink::registerLinkMetaTypes(); }
+
+    void snapshotsArriveWithStatistics()
+    {
+        RobotLink link;
+        QSignalSpy snapshots(&link, &RobotLink::snapshot);
+        QSignalSpy stats(&link, &RobotLink::statistics);
+        link.open(LinkSettings::virtualRobotOf(oi::ProfileId::Create2, oi::ProfileId::Create2));
+        QTRY_VERIFY_WITH_TIMEOUT(snapshots.size() >= 20, kTimeoutMs);
+        QCOMPARE(link.state(), LinkState::Streaming);
+        QCOMPARE(link.streamPackets(), QList<int>{100});
+        const auto first = snapshots.at(0).at(0).value<oi::SensorSnapshot>();
+        QCOMPARE(first.packetCount(), 52); // 7..58
+        QCOMPARE(first.oiMode(), oi::OiMode::Passive);
+        QVERIFY(first.voltageMv() > 10000);
+        // The first full second gives a rate.
+        QTRY_VERIFY_WITH_TIMEOUT(!stats.isEmpty() && stats.last().at(0).value<oilink::LinkStats>().framesPerSecond > 0,
+                                 kTimeoutMs);
+        const oilink::LinkStats s = stats.last().at(0).value<oilink::LinkStats>();
+        QVERIFY(s.frames > 0);
+        QCOMPARE(s.checksumFailures, quint64(0));
+        QCOMPARE(s.resyncs, quint64(0));
+        QCOMPARE(s.bytesDiscarded, quint64(0));
+        QVERIFY(s.lastFrameTime.isValid());
+    }
+
+    void staleDuringAStallThenStreamingAgain()
+    {
+        RobotLink link;
+        QSignalSpy stateSpy(&link, &RobotLink::stateChanged);
+        link.open(LinkSettings::virtualRobotOf(oi::ProfileId::Create2, oi::ProfileId::Create2));
+        QTRY_COMPARE_WITH_TIMEOUT(link.state(), LinkState::Streaming, kTimeoutMs);
+        robotOf(link).stall(400ms);
+        QTRY_COMPARE_WITH_TIMEOUT(link.state(), LinkState::Stale, kTimeoutMs);
+        QTRY_COMPARE_WITH_TIMEOUT(link.state(), LinkState::Streaming, kTimeoutMs);
+        QVERIFY(stateSpy.size() >= 4); // Connecting, Streaming, Stale, Streaming
+    }
+
+    void sensorQueryWhileStreaming()
+    {
+        RobotLink link;
+        QSignalSpy replies(&link, &RobotLink::sensorReply);
+        QSignalSpy snapshots(&link, &RobotLink::snapshot);
+        QSignalSpy errors(&link, &RobotLink::errorOccurred);
+        link.open(LinkSettings::virtualRobotOf(oi::ProfileId::Create2, oi::ProfileId::Create2));
+        QTRY_COMPARE_WITH_TIMEOUT(link.state(), LinkState::Streaming, kTimeoutMs);
+        link.send(bytes({131})); // Safe
+        link.querySensors({35, 22});
+        QTRY_COMPARE_WITH_TIMEOUT(replies.size(), 1, kTimeoutMs);
+        const auto reply = replies.at(0).at(0).value<oi::SensorSnapshot>();
+        QCOMPARE(reply.oiMode(), oi::OiMode::Safe);
+        QVERIFY(reply.voltageMv() > 10000);
+        QCOMPARE(reply.packetCount(), 2);
+        // The stream resumes, and nothing was lost to the query.
+        const qsizetype before = snapshots.size();
+        QTRY_VERIFY_WITH_TIMEOUT(snapshots.size() > before + 5, kTimeoutMs);
+        QCOMPARE(link.currentStatistics().checksumFailures, quint64(0));
+        QCOMPARE(link.currentStatistics().resyncs, quint64(0));
+        QCOMPARE(errors.size(), 0);
+    }
+
+    // The probe, against each virtual robot.
+    void findsTheProfile_data()
+    {
+        QTest::addColumn<oi::ProfileId>("robot");
+        QTest::addColumn<oi::ProfileId>("found");
+        QTest::addColumn<QList<int>>("packets");
+        QTest::newRow("create2") << oi::ProfileId::Create2 << oi::ProfileId::Create2 << QList<int>{100};
+        // The Roomba 500 answers every question as a Create 2 does; the probe
+        // finds the family, whose stream is the same.
+        QTest::newRow("roomba500") << oi::ProfileId::Roomba500 << oi::ProfileId::Create2 << QList<int>{100};
+        QTest::newRow("create1") << oi::ProfileId::Create1 << oi::ProfileId::Create1 << QList<int>{6};
+    }
+    void findsTheProfile()
+    {
+        QFETCH(oi::ProfileId, robot);
+        QFETCH(oi::ProfileId, found);
+        QFETCH(QList<int>, packets);
+        RobotLink link;
+        QSignalSpy started(&link, &RobotLink::streamStarted);
+        QSignalSpy snapshots(&link, &RobotLink::snapshot);
+        QSignalSpy sent(&link, &RobotLink::rawBytesSent);
+        link.open(LinkSettings::virtualRobotOf(robot, std::nullopt));
+        QCOMPARE(link.robotProfile(), nullptr);
+        QTRY_COMPARE_WITH_TIMEOUT(started.size(), 1, kTimeoutMs);
+        QCOMPARE(started.at(0).at(0).value<oi::ProfileId>(), found);
+        QCOMPARE(started.at(0).at(1).toInt(), oi::profile(found).defaultBaud);
+        QCOMPARE(started.at(0).at(2).value<QList<int>>(), packets);
+        QCOMPARE(sent.at(0).at(0).toByteArray(), bytes({128, 150, 0}));
+        QTRY_VERIFY_WITH_TIMEOUT(snapshots.size() >= 5, kTimeoutMs);
+        QCOMPARE(snapshots.last().at(0).value<oi::SensorSnapshot>().robotProfile().id, found);
+    }
+
+    void closeLeavesTheRobotStoppedInPassive()
+    {
+        RobotLink link;
+        link.open(LinkSettings::virtualRobotOf(oi::ProfileId::Create2, oi::ProfileId::Create2));
+        QTRY_COMPARE_WITH_TIMEOUT(link.state(), LinkState::Streaming, kTimeoutMs);
+        auto *transport = qobject_cast<oilink::VirtualTransport *>(link.transport());
+        QVERIFY(transport);
+        link.send(bytes({131}));                 // Safe
+        link.send(bytes({137, 0, 100, 128, 0})); // Drive 100 mm/s straight
+        link.send(bytes({138, 0x07}));           // every motor on
+        sim::VirtualRobot &robot = transport->robot()->robot();
+        QCOMPARE(robot.mode(), oi::OiMode::Safe);
+        QCOMPARE(robot.motorBits(), std::uint8_t(0x07));
+        link.close();
+        QCOMPARE(robot.mode(), oi::OiMode::Passive);
+        QCOMPARE(robot.motorBits(), std::uint8_t(0));
+        // Drive 0,0 went out: a new link asks for the requested velocity.
+        robot.receive(std::span<const std::uint8_t>(std::array<std::uint8_t, 2>{142, 39}));
+        const oi::Bytes velocity = robot.takeOutput();
+        QCOMPARE(velocity, (oi::Bytes{0, 0}));
+    }
+
+    // The owner helper: the link on its own thread, values across.
+    void onAWorkerThread()
+    {
+        RobotLinkThread link;
+        QSignalSpy snapshots(&link, &RobotLinkThread::snapshot);
+        QSignalSpy replies(&link, &RobotLinkThread::sensorReply);
+        QSignalSpy states(&link, &RobotLinkThread::stateChanged);
+        QThread *deliveredOn = nullptr;
+        QObject context; // destroyed before `link`, and with it the connection
+        connect(&link, &RobotLinkThread::snapshot, &context, [&] { deliveredOn = QThread::currentThread(); });
+        link.open(LinkSettings::virtualRobotOf(oi::ProfileId::Create2, oi::ProfileId::Create2));
+        QTRY_VERIFY_WITH_TIMEOUT(snapshots.size() >= 10, kTimeoutMs);
+        QCOMPARE(deliveredOn, QThread::currentThread());
+        QCOMPARE(link.state(), LinkState::Streaming);
+
+        link.send(bytes({132})); // Full
+        link.querySensors({35});
+        QTRY_COMPARE_WITH_TIMEOUT(replies.size(), 1, kTimeoutMs);
+        QCOMPARE(replies.at(0).at(0).value<oi::SensorSnapshot>().oiMode(), oi::OiMode::Full);
+        QVERIFY(link.workerCpuTime().count() > 0);
+
+        link.closeAndWait();
+        QCOMPARE(link.state(), LinkState::Closed);
+        QCOMPARE(states.last().at(0).value<LinkState>(), LinkState::Closed);
+        QVERIFY(link.lastStatistics().frames >= 10);
+        QVERIFY(link.lastStatistics().bytesSent > 0);
+        link.stop();
+        QVERIFY(!link.isRunning());
+        // Stopped, it refuses politely.
+        QSignalSpy errors(&link, &RobotLinkThread::errorOccurred);
+        link.send(bytes({128}));
+        QCOMPARE(errors.size(), 1);
+    }
+
+    void aStoppedHelperOpensAgain()
+    {
+        RobotLinkThread link;
+        QSignalSpy snapshots(&link, &RobotLinkThread::snapshot);
+        link.open(LinkSettings::virtualRobotOf(oi::ProfileId::Create1, oi::ProfileId::Create1));
+        QTRY_VERIFY_WITH_TIMEOUT(snapshots.size() >= 3, kTimeoutMs);
+        link.stop();
+        snapshots.clear();
+        link.open(LinkSettings::virtualRobotOf(oi::ProfileId::Create2, oi::ProfileId::Create2));
+        QTRY_VERIFY_WITH_TIMEOUT(snapshots.size() >= 3, kTimeoutMs);
+        QCOMPARE(snapshots.last().at(0).value<oi::SensorSnapshot>().robotProfile().id, oi::ProfileId::Create2);
+    }
+};
+
+QTEST_GUILESS_MAIN(TestRobotLinkVirtual)
+#include "tst_robot_link_virtual.moc"

@@ -1,0 +1,193 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// roomba-ctl sensors and send, as a script sees them: against the built-in
+// virtual robot and against roomba-sim on a pseudo-terminal.
+#include <QDeadlineTimer>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QProcess>
+#include <QTest>
+
+#include <csignal>
+#include <sys/prctl.h>
+
+namespace {
+
+constexpr int kTimeoutMs = 20000;
+
+struct Outcome {
+    int status = -1;
+    QStringList lines;
+    QString err;
+};
+
+Outcome run(const QStringList &args)
+{
+    QProcess p;
+    p.start(QStringLiteral(ROOMBA_CTL_PATH), args);
+    if (!p.waitForStarted())
+        return {};
+    p.closeWriteChannel();
+    p.waitForFinished(kTimeoutMs);
+    return {p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1,
+            QString::fromUtf8(p.readAllStandardOutput()).split(QLatin1Char('\n'), Qt::SkipEmptyParts),
+            QString::fromUtf8(p.readAllStandardError())};
+}
+
+QJsonObject json(const QString &line)
+{
+    QJsonParseError error;
+    const QJsonDocument doc = QJsonDocument::fromJson(line.toUtf8(), &error);
+    return error.error == QJsonParseError::NoError ? doc.object() : QJsonObject();
+}
+
+// roomba-sim on a pseudo-terminal, for as long as the test function runs.
+class Sim {
+public:
+    explicit Sim(const QStringList &args)
+    {
+        m_process.setChildProcessModifier([] { ::prctl(PR_SET_PDEATHSIG, SIGTERM); });
+        m_process.setProcessChannelMode(QProcess::ForwardedErrorChannel);
+        m_process.start(QStringLiteral(ROOMBA_SIM_PATH), args);
+        m_process.waitForStarted(kTimeoutMs);
+        const QDeadlineTimer deadline(kTimeoutMs);
+        while (!m_process.canReadLine() && !deadline.hasExpired() && m_process.state() == QProcess::Running)
+            m_process.waitForReadyRead(100);
+        m_path = QString::fromUtf8(m_process.readLine()).trimmed();
+    }
+    ~Sim()
+    {
+        m_process.terminate();
+        if (!m_process.waitForFinished(kTimeoutMs))
+            m_process.kill();
+    }
+    QString path() const { return m_path; }
+
+private:
+    QProcess m_process;
+    QString m_path;
+};
+
+} // namespace
+
+class TestRoombaCtlLink : public QObject {
+    Q_OBJECT
+private slots:
+    void sensorsFromTheVirtualRobot()
+    {
+        const Outcome o = run({QStringLiteral("sensors"), QStringLiteral("--sim"), QStringLiteral("--count"),
+                               QStringLiteral("5")});
+        QCOMPARE(o.status, 0);
+        QCOMPARE(o.err, QString());
+        QCOMPARE(o.lines.size(), 6);
+        for (int i = 0; i < 5; ++i) {
+            const QJsonObject frame = json(o.lines[i]);
+            QCOMPARE(frame[QStringLiteral("kind")].toString(), QStringLiteral("stream"));
+            const QJsonObject packets = frame[QStringLiteral("packets")].toObject();
+            QCOMPARE(packets.size(), 52);
+            QCOMPARE(packets[QStringLiteral("oi_mode")].toInt(), 1);
+        }
+        const QJsonObject stats = json(o.lines[5])[QStringLiteral("statistics")].toObject();
+        QCOMPARE(stats[QStringLiteral("profile")].toString(), QStringLiteral("create2"));
+        QCOMPARE(stats[QStringLiteral("packets")].toArray(), QJsonArray({100}));
+        QVERIFY(stats[QStringLiteral("frames")].toInt() >= 5);
+        QCOMPARE(stats[QStringLiteral("checksum_failures")].toInt(), 0);
+        QVERIFY(stats.contains(QStringLiteral("frames_per_second")));
+        QVERIFY(!stats[QStringLiteral("last_frame")].toString().isEmpty());
+    }
+
+    void sensorsFindTheProfileOnAPty()
+    {
+        Sim sim({QStringLiteral("--profile"), QStringLiteral("create1")});
+        QVERIFY(!sim.path().isEmpty());
+        const Outcome o = run({QStringLiteral("sensors"), QStringLiteral("--port"), sim.path(),
+                               QStringLiteral("--count"), QStringLiteral("3")});
+        QCOMPARE(o.status, 0);
+        QCOMPARE(o.lines.size(), 4);
+        // Group 6 of a Create: 7..42, with the cargo-bay packets.
+        QVERIFY(json(o.lines[0])[QStringLiteral("packets")].toObject().contains(QStringLiteral("cargo_bay_analog_signal")));
+        const QJsonObject stats = json(o.lines[3])[QStringLiteral("statistics")].toObject();
+        QCOMPARE(stats[QStringLiteral("profile")].toString(), QStringLiteral("create1"));
+        QCOMPARE(stats[QStringLiteral("packets")].toArray(), QJsonArray({6}));
+    }
+
+    void sendCommandsAndQueries()
+    {
+        Sim sim({});
+        QVERIFY(!sim.path().isEmpty());
+        const QStringList port{QStringLiteral("--port"), sim.path(), QStringLiteral("--profile"), QStringLiteral("create2")};
+        Outcome o = run(QStringList{QStringLiteral("send")} + port + QStringList{QStringLiteral("safe")});
+        QVERIFY2(o.status == 0, qPrintable(o.err));
+        QCOMPARE(o.err, QString());
+        QVERIFY(o.lines.isEmpty());
+        o = run(QStringList{QStringLiteral("send")} + port + QStringList{QStringLiteral("sensors"), QStringLiteral("35")});
+        QVERIFY2(o.status == 0, qPrintable(o.err));
+        QCOMPARE(o.lines.size(), 1);
+        // Start went out first, so Safe became Passive again.
+        QCOMPARE(json(o.lines[0])[QStringLiteral("kind")].toString(), QStringLiteral("reply"));
+        QCOMPARE(json(o.lines[0])[QStringLiteral("packets")].toObject()[QStringLiteral("oi_mode")].toInt(), 1);
+        // Without --profile the robot is asked what it is.
+        o = run({QStringLiteral("send"), QStringLiteral("--port"), sim.path(), QStringLiteral("query-list"),
+                 QStringLiteral("2"), QStringLiteral("22"), QStringLiteral("7")});
+        QVERIFY2(o.status == 0, qPrintable(o.err));
+        QCOMPARE(o.lines.size(), 1);
+        const QJsonObject packets = json(o.lines[0])[QStringLiteral("packets")].toObject();
+        QVERIFY(packets[QStringLiteral("voltage")].toInt() > 10000);
+        QVERIFY(packets.contains(QStringLiteral("bumps_wheel_drops")));
+    }
+
+    void sendToTheVirtualRobot()
+    {
+        const Outcome o = run({QStringLiteral("send"), QStringLiteral("--sim"), QStringLiteral("--profile"),
+                               QStringLiteral("create1"), QStringLiteral("sensors"), QStringLiteral("32")});
+        QCOMPARE(o.status, 0);
+        QCOMPARE(o.lines.size(), 1);
+        QVERIFY(json(o.lines[0])[QStringLiteral("packets")].toObject().contains(QStringLiteral("cargo_bay_digital_inputs")));
+    }
+
+    void errors_data()
+    {
+        QTest::addColumn<QStringList>("args");
+        QTest::addColumn<int>("status");
+        QTest::addColumn<QString>("message");
+        QTest::newRow("bad argument") << QStringList{"send", "--sim", "drive", "900", "0"} << 1
+                                      << "velocity: 900 is outside -500..500";
+        QTest::newRow("not on the profile") << QStringList{"send", "--sim", "--profile", "create1", "seek-dock"} << 1
+                                            << "Seek Dock (143) is not available on the Create";
+        QTest::newRow("no such port") << QStringList{"sensors", "--port", "/dev/roomba-dashboard-none"} << 1
+                                      << "/dev/roomba-dashboard-none: no such port";
+        QTest::newRow("send, no such port") << QStringList{"send", "--port", "/dev/roomba-dashboard-none", "start"} << 1
+                                            << "/dev/roomba-dashboard-none: no such port";
+        QTest::newRow("no robot") << QStringList{"sensors"} << 2 << "sensors needs one of --port PATH, --tcp HOST:PORT or --sim";
+        QTest::newRow("two robots") << QStringList{"sensors", "--sim", "--port", "/dev/x"} << 2 << "needs one of";
+        QTest::newRow("bad tcp") << QStringList{"sensors", "--tcp", "pi"} << 2 << "--tcp needs HOST:PORT";
+        QTest::newRow("bad baud") << QStringList{"sensors", "--sim", "--baud", "12345"} << 2 << "not a rate the robots know";
+        QTest::newRow("bad count") << QStringList{"sensors", "--sim", "--count", "0"} << 2 << "--count needs";
+        QTest::newRow("no command") << QStringList{"send", "--sim"} << 2 << "send needs a command name";
+        QTest::newRow("refused tcp") << QStringList{"sensors", "--tcp", "127.0.0.1:1"} << 1 << "127.0.0.1:1: connection refused";
+    }
+    void errors()
+    {
+        QFETCH(QStringList, args);
+        QFETCH(int, status);
+        QFETCH(QString, message);
+        const Outcome o = run(args);
+        QCOMPARE(o.status, status);
+        QVERIFY(o.lines.isEmpty());
+        QVERIFY2(o.err.startsWith(QStringLiteral("roomba-ctl: ")) && o.err.contains(message), qPrintable(o.err));
+        QCOMPARE(o.err.count(QLatin1Char('\n')), 1); // one line
+    }
+
+    void helpNamesTheNewCommands()
+    {
+        const Outcome o = run({QStringLiteral("--help")});
+        QCOMPARE(o.status, 0);
+        const QString help = o.lines.join(QLatin1Char('\n'));
+        QVERIFY(help.contains(QStringLiteral("sensors ROBOT")));
+        QVERIFY(help.contains(QStringLiteral("send ROBOT")));
+        QVERIFY(help.contains(QStringLiteral("--tcp HOST:PORT")));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestRoombaCtlLink)
+#include "tst_roomba_ctl_link.moc"

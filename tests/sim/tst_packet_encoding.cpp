@@ -1,0 +1,102 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// appendPacketData must be the exact inverse of SensorSnapshot::decode.
+#include "packet_encoding.h"
+
+#include <QTest>
+
+#include <random>
+
+using namespace oi;
+
+Q_DECLARE_METATYPE(oi::ProfileId)
+
+class TestPacketEncoding : public QObject {
+    Q_OBJECT
+private slots:
+    void roundTrip_data();
+    void roundTrip();
+    void bytesAreBigEndianAndTwosComplement();
+    void outOfRangeValuesSaturate();
+    void unknownIdsWriteNothing();
+};
+
+void TestPacketEncoding::roundTrip_data()
+{
+    QTest::addColumn<ProfileId>("profile");
+    QTest::addColumn<int>("id");
+    for (ProfileId p : allProfiles()) {
+        const RobotProfile &profile = oi::profile(p);
+        for (const PacketInfo &info : profile.packets())
+            QTest::addRow("%s/%d", profile.key.data(), info.id) << p << int(info.id);
+        for (const PacketGroup &g : profile.groups())
+            QTest::addRow("%s/group%d", profile.key.data(), g.id) << p << int(g.id);
+    }
+}
+
+void TestPacketEncoding::roundTrip()
+{
+    QFETCH(ProfileId, profile);
+    QFETCH(int, id);
+    const RobotProfile &p = oi::profile(profile);
+    std::mt19937 rng(std::uint32_t(id) * 7919u + std::uint32_t(profile));
+    for (int round = 0; round < 50; ++round) {
+        SensorSnapshot values(p);
+        for (const PacketInfo &info : p.packets()) {
+            // The whole representable range of the packet's bytes, not just the
+            // documented one: the encoder must not lose bits either way.
+            const bool two = info.bytes == 2;
+            const std::int32_t lo = info.isSigned ? (two ? -32768 : -128) : 0;
+            const std::int32_t hi = info.isSigned ? (two ? 32767 : 127) : (two ? 65535 : 255);
+            values.set(info.id, std::uniform_int_distribution<std::int32_t>(lo, hi)(rng));
+        }
+        Bytes out;
+        const std::size_t written = sim::appendPacketData(values, id, out);
+        QCOMPARE(int(written), p.replySize(id));
+        QCOMPARE(int(out.size()), p.replySize(id));
+        SensorSnapshot decoded(p);
+        QCOMPARE(decoded.decode(id, out), written);
+        int first = id, last = id;
+        if (const PacketGroup *g = p.group(id)) {
+            first = g->first;
+            last = g->last;
+        }
+        for (int packet = first; packet <= last; ++packet)
+            QCOMPARE(decoded.raw(packet), values.raw(packet));
+    }
+}
+
+void TestPacketEncoding::bytesAreBigEndianAndTwosComplement()
+{
+    SensorSnapshot values(profile(ProfileId::Create2));
+    values.set(23, -200);  // current, signed 16-bit
+    values.set(22, 15000); // voltage, unsigned 16-bit
+    values.set(24, -5);    // temperature, signed 8-bit
+    Bytes out;
+    sim::appendPacketData(values, 23, out);
+    sim::appendPacketData(values, 22, out);
+    sim::appendPacketData(values, 24, out);
+    QCOMPARE(out, (Bytes{0xFF, 0x38, 0x3A, 0x98, 0xFB}));
+}
+
+void TestPacketEncoding::outOfRangeValuesSaturate()
+{
+    SensorSnapshot values(profile(ProfileId::Create2));
+    values.set(19, 40000);
+    values.set(7, -3);
+    Bytes out;
+    sim::appendPacketData(values, 19, out);
+    sim::appendPacketData(values, 7, out);
+    QCOMPARE(out, (Bytes{0x7F, 0xFF, 0x00}));
+}
+
+void TestPacketEncoding::unknownIdsWriteNothing()
+{
+    Bytes out;
+    QCOMPARE(sim::appendPacketData(SensorSnapshot(profile(ProfileId::Create1)), 43, out), std::size_t(0));
+    QCOMPARE(sim::appendPacketData(SensorSnapshot(profile(ProfileId::Create1)), 100, out), std::size_t(0));
+    QCOMPARE(sim::appendPacketData(SensorSnapshot(profile(ProfileId::Create2)), 59, out), std::size_t(0));
+    QVERIFY(out.empty());
+}
+
+QTEST_GUILESS_MAIN(TestPacketEncoding)
+#include "tst_packet_encoding.moc"

@@ -1,0 +1,177 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The roomba-sim program as a user runs it: the device on the first line,
+// a client streaming from it, a clean exit on SIGTERM, status 2 for bad
+// arguments.
+#include "command_encoder.h"
+#include "stream_parser.h"
+
+#include <QFileInfo>
+#include <QProcess>
+#include <QTcpSocket>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include <cerrno>
+#include <csignal>
+#include <cstring>
+#include <fcntl.h>
+#include <unistd.h>
+
+using namespace oi;
+
+namespace {
+
+const QString kProgram = QStringLiteral(ROOMBA_SIM_PATH);
+
+QByteArray bytes(const EncodeResult &r)
+{
+    return QByteArray(reinterpret_cast<const char *>(r->data()), qsizetype(r->size()));
+}
+
+// Starts roomba-sim and returns its first line, or an empty string.
+QString startAndReadFirstLine(QProcess &process, const QStringList &arguments)
+{
+    process.start(kProgram, arguments);
+    if (!process.waitForStarted(5000))
+        return {};
+    for (int i = 0; i < 50 && !process.canReadLine(); ++i)
+        process.waitForReadyRead(100);
+    return QString::fromLocal8Bit(process.readLine()).trimmed();
+}
+
+void stopCleanly(QProcess &process, int signal = SIGTERM)
+{
+    ::kill(pid_t(process.processId()), signal);
+    QVERIFY(process.waitForFinished(5000));
+    QCOMPARE(process.exitStatus(), QProcess::NormalExit);
+    QCOMPARE(process.exitCode(), 0);
+}
+
+} // namespace
+
+class TestRoombaSim : public QObject {
+    Q_OBJECT
+private slots:
+    void servesAPseudoTerminal();
+    void servesTcp();
+    void refusesBadArguments_data();
+    void refusesBadArguments();
+    void helpAndVersion();
+};
+
+void TestRoombaSim::servesAPseudoTerminal()
+{
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString link = dir.filePath(QStringLiteral("robot"));
+    QVERIFY(QFile::link(QStringLiteral("/nonexistent"), link)); // an old link is replaced
+
+    QProcess process;
+    const QString device = startAndReadFirstLine(
+        process, {QStringLiteral("--profile"), QStringLiteral("roomba500"), QStringLiteral("--link"), link,
+                  QStringLiteral("--firmware"), QStringLiteral("release-3.4.1")});
+    QVERIFY2(device.startsWith(QStringLiteral("/dev/")), qPrintable(device + process.readAllStandardError()));
+    QCOMPARE(QFileInfo(link).symLinkTarget(), device);
+
+    // Through the link, as a client configured with a fixed path would.
+    const int fd = ::open(QFile::encodeName(link).constData(), O_RDWR | O_NOCTTY | O_NONBLOCK);
+    QVERIFY2(fd >= 0, std::strerror(errno));
+    const RobotProfile &profile = oi::profile(ProfileId::Roomba500);
+    const CommandEncoder encoder(profile);
+    StreamParser parser(profile);
+    std::vector<SensorSnapshot> frames;
+    parser.setSnapshotHandler([&](const SensorSnapshot &s, FrameKind) { frames.push_back(s); });
+    const QByteArray request = bytes(encoder.start()) + bytes(encoder.stream(std::vector<int>{35, 43, 44}));
+    QCOMPARE(::write(fd, request.constData(), std::size_t(request.size())), ssize_t(request.size()));
+    std::uint8_t buffer[1024];
+    for (int i = 0; i < 500 && frames.size() < 10; ++i) {
+        const ssize_t n = ::read(fd, buffer, sizeof buffer);
+        if (n > 0)
+            parser.feed(std::span(buffer, std::size_t(n)));
+        else
+            QTest::qWait(10);
+    }
+    QVERIFY(frames.size() >= 10);
+    QCOMPARE(frames.back().oiMode(), OiMode::Passive);
+    QVERIFY(frames.back().hasEncoders());
+    ::close(fd);
+
+    stopCleanly(process);
+    QVERIFY(!QFileInfo::exists(link) && !QFileInfo(link).isSymLink());
+}
+
+void TestRoombaSim::servesTcp()
+{
+    QProcess process;
+    const QString where = startAndReadFirstLine(process, {QStringLiteral("--tcp"), QStringLiteral("0")});
+    QVERIFY2(where.startsWith(QStringLiteral("tcp://127.0.0.1:")), qPrintable(where));
+    const quint16 port = where.section(':', -1).toUShort();
+    QVERIFY(port != 0);
+
+    const RobotProfile &profile = oi::profile(ProfileId::Create2);
+    const CommandEncoder encoder(profile);
+    StreamParser parser(profile);
+    int frames = 0;
+    parser.setSnapshotHandler([&](const SensorSnapshot &, FrameKind kind) { frames += kind == FrameKind::Stream; });
+    QTcpSocket client;
+    QObject::connect(&client, &QTcpSocket::readyRead, &client, [&] {
+        const QByteArray data = client.readAll();
+        parser.feed(std::span(reinterpret_cast<const std::uint8_t *>(data.constData()), std::size_t(data.size())));
+    });
+    client.connectToHost(QHostAddress::LocalHost, port);
+    QVERIFY(client.waitForConnected(5000));
+    client.write(bytes(encoder.start()) + bytes(encoder.stream(std::vector<int>{100})));
+    QTRY_VERIFY_WITH_TIMEOUT(frames >= 10, 5000);
+    QCOMPARE(parser.counters().checksumFailures, 0u);
+    stopCleanly(process, SIGINT);
+}
+
+void TestRoombaSim::refusesBadArguments_data()
+{
+    QTest::addColumn<QStringList>("arguments");
+    QTest::newRow("unknown option") << QStringList{"--bogus"};
+    QTest::newRow("stray argument") << QStringList{"robot"};
+    QTest::newRow("unknown profile") << QStringList{"--profile", "roomba900"};
+    QTest::newRow("corrupt above 1") << QStringList{"--corrupt", "1.5"};
+    QTest::newRow("stray negative") << QStringList{"--stray", "-0.1"};
+    QTest::newRow("drop not a number") << QStringList{"--drop", "often"};
+    QTest::newRow("seed negative") << QStringList{"--seed", "-1"};
+    QTest::newRow("port too big") << QStringList{"--tcp", "70000"};
+    QTest::newRow("bad bind address") << QStringList{"--tcp", "0", "--bind", "no.where"};
+    QTest::newRow("bind without tcp") << QStringList{"--bind", "127.0.0.1"};
+    QTest::newRow("link with tcp") << QStringList{"--tcp", "0", "--link", "/tmp/x"};
+    QTest::newRow("firmware not a release") << QStringList{"--firmware", "3.8"};
+    QTest::newRow("firmware on create1") << QStringList{"--profile", "create1", "--firmware", "release-3.8.2"};
+    QTest::newRow("missing value") << QStringList{"--seed"};
+}
+
+void TestRoombaSim::refusesBadArguments()
+{
+    QFETCH(QStringList, arguments);
+    QProcess process;
+    process.start(kProgram, arguments);
+    QVERIFY(process.waitForFinished(5000));
+    QCOMPARE(process.exitStatus(), QProcess::NormalExit);
+    QCOMPARE(process.exitCode(), 2);
+    QVERIFY(process.readAllStandardOutput().isEmpty());
+    const QByteArray err = process.readAllStandardError();
+    QVERIFY2(err.startsWith("roomba-sim: "), err.constData());
+    QCOMPARE(err.count('\n'), 1);
+}
+
+void TestRoombaSim::helpAndVersion()
+{
+    QProcess process;
+    process.start(kProgram, {QStringLiteral("--help")});
+    QVERIFY(process.waitForFinished(5000));
+    QCOMPARE(process.exitCode(), 0);
+    const QByteArray help = process.readAllStandardOutput();
+    QVERIFY(help.contains("--profile") && help.contains("--tcp") && help.contains("--link"));
+    process.start(kProgram, {QStringLiteral("--version")});
+    QVERIFY(process.waitForFinished(5000));
+    QCOMPARE(process.exitCode(), 0);
+    QVERIFY(process.readAllStandardOutput().startsWith("roomba-sim "));
+}
+
+QTEST_GUILESS_MAIN(TestRoombaSim)
+#include "tst_roomba_sim.moc"

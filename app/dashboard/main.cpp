@@ -3,6 +3,7 @@
 #include "main_window.h"
 
 #include <QApplication>
+#include <QCommandLineParser>
 #include <QStyleFactory>
 
 int main(int argc, char **argv)
@@ -14,9 +15,22 @@ int main(int argc, char **argv)
     // Fusion draws the same everywhere and takes the system's light or dark palette.
     QApplication::setStyle(QStyleFactory::create("Fusion"));
 
+    QCommandLineParser parser;
+    parser.setApplicationDescription(QApplication::translate(
+        "main", "Dashboard and teleoperation for iRobot robots that speak the Open Interface."));
+    parser.addHelpOption();
+    parser.addVersionOption();
+    const QCommandLineOption sim("sim", QApplication::translate("main", "Connect to the built-in virtual robot, "
+                                                                         "whatever was used last time."));
+    parser.addOption(sim);
+    parser.process(app);
+
     MainWindow window;
     window.resize(1280, 860);
     window.show();
-    window.start();
+    std::optional<oilink::LinkSettings> settings;
+    if (parser.isSet(sim))
+        settings = MainWindow::linkSettingsFor(ConnectionRequest{});
+    window.start(settings);
     return app.exec();
 }

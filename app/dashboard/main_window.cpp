@@ -169,6 +169,12 @@ void MainWindow::buildStatusBar()
     m_errorsLabel = label("lineErrors");
 }
 
+void MainWindow::setHistoryCapacity(std::size_t samples)
+{
+    m_history = SensorHistory(m_session.robotProfile(), samples);
+    m_plots->setHistory(&m_history);
+}
+
 void MainWindow::resetLayout()
 {
     restoreState(m_defaultState);
@@ -235,18 +241,28 @@ void MainWindow::applyProfile(oi::ProfileId id)
 void MainWindow::refreshDisplay()
 {
     const bool live = m_session.state() == oilink::LinkState::Streaming;
-    m_diagram->setStale(!live);
-    m_gauges->setStale(!live);
-    m_staleLabel->setVisible(!live);
+    if (live != m_shownLive || m_staleLabel->isHidden() == !live) {
+        m_shownLive = live;
+        m_diagram->setStale(!live);
+        m_gauges->setStale(!live);
+        m_staleLabel->setVisible(!live);
+    }
+    // Repaint only what changed: a robot at rest streams the same values.
     if (m_session.snapshotCount() != m_shownSnapshot) {
         m_shownSnapshot = m_session.snapshotCount();
         const oi::SensorSnapshot &s = m_session.latest();
-        m_diagram->setSnapshot(s);
-        m_gauges->setSnapshot(s);
-        m_signalBars->setSnapshot(s);
-        m_modePanel->setSnapshot(s);
+        if (!(s == m_shown)) {
+            m_shown = s;
+            m_diagram->setSnapshot(s);
+            m_gauges->setSnapshot(s);
+            m_signalBars->setSnapshot(s);
+            m_modePanel->setSnapshot(s);
+        }
     }
-    m_plots->refresh();
+    // Scrolling plots are the dearest thing on screen; 15 Hz still moves
+    // them smoothly and halves their cost.
+    if (m_plots->isVisible() && ++m_displayTicks % 2 == 0)
+        m_plots->refresh();
 }
 
 void MainWindow::showState(oilink::LinkState state)

@@ -31,6 +31,10 @@ public:
     ~MainWindow() override;
 
     RobotSession &session() { return m_session; }
+    const SensorHistory &history() const { return m_history; }
+    // Samples kept per channel; the default is one hour at 66.7 Hz. Clears
+    // the history. For the benchmark, which fills it in minutes.
+    void setHistoryCapacity(std::size_t samples);
     // Restores the saved layout and connection, and connects: to the saved
     // robot, or on first start to the built-in virtual robot.
     void start(const std::optional<oilink::LinkSettings> &override = {});
@@ -67,6 +71,9 @@ private:
     SensorHistory m_history;
     QTimer m_displayTimer;
     quint64 m_shownSnapshot = ~0ull;
+    oi::SensorSnapshot m_shown; // what the widgets show now
+    bool m_shownLive = false;
+    quint64 m_displayTicks = 0;
 
     ConnectionBar *m_connectionBar = nullptr;
     ModePanel *m_modePanel = nullptr;

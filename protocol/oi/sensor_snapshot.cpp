@@ -16,6 +16,16 @@ PacketValue SensorSnapshot::value(int packetId) const
 
 int SensorSnapshot::packetCount() const { return std::popcount(m_present); }
 
+bool operator==(const SensorSnapshot &a, const SensorSnapshot &b)
+{
+    if (a.m_profile != b.m_profile || a.m_present != b.m_present)
+        return false;
+    for (int id = 0; id <= kMaxPacketId; ++id)
+        if (((a.m_present >> id) & 1u) && a.m_values[id] != b.m_values[id])
+            return false;
+    return true;
+}
+
 void SensorSnapshot::merge(const SensorSnapshot &newer)
 {
     for (int id = 0; id <= kMaxPacketId; ++id)

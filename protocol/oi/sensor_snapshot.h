@@ -62,6 +62,9 @@ public:
         m_present |= std::uint64_t{1} << packetId;
     }
     void clear() { m_present = 0; }
+    // Same profile, same packets present, same values.
+    friend bool operator==(const SensorSnapshot &a, const SensorSnapshot &b);
+
     // Takes every packet `newer` carries; keeps the rest.
     void merge(const SensorSnapshot &newer);
 

@@ -341,8 +341,6 @@ private slots:
 
     void screenshots()
     {
-        if (qEnvironmentVariableIsEmpty("ROOMBA_SCREENSHOTS"))
-            QSKIP("set ROOMBA_SCREENSHOTS to a folder to save screenshots");
         const QSize sizes[] = {{480, 480}, {800, 600}, {360, 360}, {400, 760}, {1200, 420}};
         for (ProfileId id : allProfiles()) {
             for (QSize size : sizes) {

@@ -198,7 +198,8 @@ void ByteInspector::record(Entry entry)
 
 void ByteInspector::scheduleRender()
 {
-    if (!m_renderTimer->isActive())
+    // A hidden log costs nothing to keep; it renders when shown.
+    if (isVisible() && !m_renderTimer->isActive())
         m_renderTimer->start();
 }
 
@@ -247,6 +248,12 @@ void ByteInspector::setShowsHex(bool hex)
     m_hexBox->setChecked(hex);
     m_hexBox->blockSignals(false);
     rebuildView();
+}
+
+void ByteInspector::showEvent(QShowEvent *event)
+{
+    QWidget::showEvent(event);
+    flushView();
 }
 
 void ByteInspector::flushView()

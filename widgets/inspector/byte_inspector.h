@@ -83,6 +83,7 @@ signals:
 
 protected:
     void changeEvent(QEvent *event) override;
+    void showEvent(QShowEvent *event) override;
 
 private:
     enum class Tone : std::uint8_t { Command, Problem, Frame, Text, Other };

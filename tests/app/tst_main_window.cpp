@@ -3,9 +3,16 @@
 // to the bytes, settings, and a bad port.
 #include "main_window.h"
 #include "mode_panel.h"
+#include "real_time_robot.h"
+#include "robot_diagram.h"
 #include "transport.h"
+#include "virtual_transport.h"
 
+#include <QDir>
+#include <cmath>
 #include <QDockWidget>
+#include <QPointer>
+#include <QTemporaryDir>
 #include <QMutex>
 #include <QPushButton>
 #include <QSettings>
@@ -139,6 +146,60 @@ private slots:
         // Closing leaves the robot stopped and in Passive mode.
         window.session().closeAndWait();
         QCOMPARE(text(recording.take().join()), QString("150 0 137 0 0 0 0 138 0 128"));
+    }
+
+    // The virtual robot pushed against a wall, then stopped by Safe mode at
+    // the edge of a drop-off: what the window shows, saved as screenshots
+    // (into ROOMBA_SCREENSHOTS when set).
+    void wallAndCliff()
+    {
+        QPointer<oilink::VirtualTransport> transport;
+        MainWindow window;
+        window.session().setTransportFactory([&transport](const oilink::LinkSettings &) {
+            auto *t = new oilink::VirtualTransport(oi::ProfileId::Create2, 1);
+            transport = t;
+            return t;
+        });
+        window.resize(1400, 900);
+        window.show();
+        window.start(oilink::LinkSettings::virtualRobotOf(oi::ProfileId::Create2, oi::ProfileId::Create2));
+        QTRY_COMPARE_WITH_TIMEOUT(window.session().state(), oilink::LinkState::Streaming, 10000);
+        QVERIFY(transport);
+        const auto placeRobot = [&transport](oi::Pose pose) {
+            QMetaObject::invokeMethod(
+                transport, [t = transport.data(), pose] { t->robot()->robot().placeAt(pose); },
+                Qt::BlockingQueuedConnection);
+        };
+        const oi::CommandEncoder encoder(oi::profile(oi::ProfileId::Create2));
+        const auto send = [&window](const oi::EncodeResult &bytes) {
+            QVERIFY(window.session().send(QByteArray(reinterpret_cast<const char *>(bytes->data()),
+                                                     qsizetype(bytes->size()))));
+        };
+        QTemporaryDir scratch;
+        const QString dir = qEnvironmentVariableIsEmpty("ROOMBA_SCREENSHOTS") ? scratch.path()
+                                                                               : qEnvironmentVariable("ROOMBA_SCREENSHOTS");
+        QDir().mkpath(dir);
+
+        // 30 cm from the front wall, facing it, in Full mode: drive until it bumps.
+        placeRobot({2700, 0, 0, 0});
+        send(encoder.full());
+        send(encoder.drive(150, oi::kRadiusStraight));
+        QTRY_VERIFY_WITH_TIMEOUT(window.session().latest().bumpLeft() && window.session().latest().bumpRight(), 10000);
+        window.refreshDisplay();
+        QVERIFY(window.grab().save(QDir(dir).filePath("dashboard_wall.png")));
+
+        // Facing the stage edge in Safe mode: the robot stops at the cliff and
+        // drops to Passive, and the window says why.
+        send(encoder.drive(0, 0));
+        placeRobot({2600, -300, -M_PI / 2, 0});
+        send(encoder.safe());
+        send(encoder.drive(100, oi::kRadiusStraight));
+        QTRY_COMPARE_WITH_TIMEOUT(window.session().latest().oiMode(), oi::OiMode::Passive, 10000);
+        QTRY_VERIFY_WITH_TIMEOUT((window.refreshDisplay(), window.modePanel()->safetyMessage().contains("cliff")), 5000);
+        const oi::SensorSnapshot &s = window.session().latest();
+        QVERIFY(s.cliff(oi::CliffSensor::FrontLeft) || s.cliff(oi::CliffSensor::FrontRight)
+                || s.cliff(oi::CliffSensor::Left) || s.cliff(oi::CliffSensor::Right));
+        QVERIFY(window.grab().save(QDir(dir).filePath("dashboard_cliff.png")));
     }
 
     void settingsRestore()

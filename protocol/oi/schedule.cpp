@@ -12,22 +12,6 @@ constexpr std::array<std::string_view, 7> kDayNames = {"Sunday",   "Monday", "Tu
 constexpr std::array<std::string_view, 7> kDayShortNames = {"sun", "mon", "tue", "wed", "thu", "fri", "sat"};
 constexpr std::uint8_t kReservedDayBit = 0x80;
 
-char lower(char c)
-{
-    return (c >= 'A' && c <= 'Z') ? static_cast<char>(c - 'A' + 'a') : c;
-}
-
-bool equalsIgnoringCase(std::string_view a, std::string_view b)
-{
-    if (a.size() != b.size())
-        return false;
-    for (std::size_t i = 0; i < a.size(); ++i) {
-        if (lower(a[i]) != lower(b[i]))
-            return false;
-    }
-    return true;
-}
-
 bool isSpace(char c)
 {
     return c == ' ' || c == '\t' || c == '\n' || c == '\r';

@@ -15,22 +15,6 @@ constexpr std::array<const char *, 12> kSharpNames = {"C", "C#", "D", "D#", "E",
 // Semitones above C for the natural letters A..G.
 constexpr std::array<int, 7> kLetterSemitone = {9, 11, 0, 2, 4, 5, 7};
 
-char lower(char c)
-{
-    return (c >= 'A' && c <= 'Z') ? static_cast<char>(c - 'A' + 'a') : c;
-}
-
-bool equalsIgnoringCase(std::string_view a, std::string_view b)
-{
-    if (a.size() != b.size())
-        return false;
-    for (std::size_t i = 0; i < a.size(); ++i) {
-        if (lower(a[i]) != lower(b[i]))
-            return false;
-    }
-    return true;
-}
-
 bool isDigit(char c)
 {
     return c >= '0' && c <= '9';
@@ -83,7 +67,7 @@ std::optional<int> parseMidiNoteName(std::string_view text)
 
     if (text.empty())
         return std::nullopt;
-    const char letter = lower(text.front());
+    const char letter = asciiLower(text.front());
     if (letter < 'a' || letter > 'g')
         return std::nullopt;
     int semitone = kLetterSemitone[static_cast<std::size_t>(letter - 'a')];
@@ -93,7 +77,7 @@ std::optional<int> parseMidiNoteName(std::string_view text)
     if (i < text.size() && text[i] == '#') {
         ++semitone;
         ++i;
-    } else if (i < text.size() && lower(text[i]) == 'b') {
+    } else if (i < text.size() && asciiLower(text[i]) == 'b') {
         --semitone;
         ++i;
     }

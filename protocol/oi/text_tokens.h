@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Splitting the text forms (songs, schedules, scripts) into words.
+// Reading the text forms (songs, schedules, scripts): words and case.
 #pragma once
 
 #include <string>
@@ -22,6 +22,19 @@ inline std::vector<std::string_view> splitTokens(std::string_view text, std::str
         i = end;
     }
     return tokens;
+}
+
+// ASCII only: the text forms are ASCII.
+inline char asciiLower(char c) { return (c >= 'A' && c <= 'Z') ? static_cast<char>(c - 'A' + 'a') : c; }
+
+inline bool equalsIgnoringCase(std::string_view a, std::string_view b)
+{
+    if (a.size() != b.size())
+        return false;
+    for (std::size_t i = 0; i < a.size(); ++i)
+        if (asciiLower(a[i]) != asciiLower(b[i]))
+            return false;
+    return true;
 }
 
 inline constexpr std::string_view kWhitespace = " \t\r\n\v\f";

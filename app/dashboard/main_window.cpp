@@ -3,11 +3,15 @@
 
 #include "byte_inspector.h"
 #include "display_palette.h"
+#include "led_editor.h"
 #include "mode_panel.h"
 #include "robot_diagram.h"
+#include "schedule_editor.h"
+#include "script_editor.h"
 #include "sensor_gauges.h"
 #include "sensor_plots.h"
 #include "signal_bars.h"
+#include "song_composer.h"
 
 #include <QAction>
 #include <QApplication>
@@ -65,6 +69,10 @@ MainWindow::MainWindow(QWidget *parent) : QMainWindow(parent)
     m_plots = new SensorPlots(this);
     m_plots->setHistory(&m_history);
     m_inspector = new ByteInspector(this);
+    m_songs = new SongComposer(this);
+    m_leds = new LedEditor(this);
+    m_schedule = new ScheduleEditor(this);
+    m_script = new ScriptEditor(this);
 
     addDock("connectionDock", tr("Connection"), m_connectionBar, Qt::TopDockWidgetArea);
     addDock("modeDock", tr("Modes"), m_modePanel, Qt::LeftDockWidgetArea);
@@ -73,6 +81,16 @@ MainWindow::MainWindow(QWidget *parent) : QMainWindow(parent)
     QDockWidget *plots = addDock("plotsDock", tr("Plots"), m_plots, Qt::BottomDockWidgetArea);
     QDockWidget *inspector = addDock("inspectorDock", tr("Inspector"), m_inspector, Qt::BottomDockWidgetArea);
     tabifyDockWidget(plots, inspector);
+    // The editors share the bottom with the plots: a hidden tab costs nothing.
+    QDockWidget *below = inspector;
+    for (auto [name, title, widget] : {std::tuple{"songsDock", tr("Songs"), static_cast<QWidget *>(m_songs)},
+                                       std::tuple{"ledsDock", tr("LEDs and digits"), static_cast<QWidget *>(m_leds)},
+                                       std::tuple{"scheduleDock", tr("Schedule"), static_cast<QWidget *>(m_schedule)},
+                                       std::tuple{"scriptDock", tr("Script"), static_cast<QWidget *>(m_script)}}) {
+        QDockWidget *dock = addDock(name, title, widget, Qt::BottomDockWidgetArea);
+        tabifyDockWidget(below, dock);
+        below = dock;
+    }
     plots->raise();
     // Start with what a class looks at first: the cliff signals and the battery.
     if (m_plots->plotCount() == 0)
@@ -100,6 +118,11 @@ MainWindow::MainWindow(QWidget *parent) : QMainWindow(parent)
     connect(&m_session, &RobotSession::bytesReceived, m_inspector, &ByteInspector::appendRx);
     connect(m_inspector, &ByteInspector::sendRequested, &m_session, &RobotSession::send);
     connect(m_modePanel, &ModePanel::sendRequested, &m_session, &RobotSession::send);
+    connect(m_songs, &SongComposer::sendRequested, &m_session, &RobotSession::send);
+    connect(m_leds, &LedEditor::sendRequested, &m_session, &RobotSession::send);
+    connect(m_schedule, &ScheduleEditor::sendRequested, &m_session, &RobotSession::send);
+    connect(m_script, &ScriptEditor::sendRequested, &m_session, &RobotSession::send);
+    connect(&m_session, &RobotSession::bytesReceived, m_script, &ScriptEditor::appendReceived);
     connect(m_connectionBar, &ConnectionBar::connectRequested, this, &MainWindow::connectFromBar);
     connect(m_connectionBar, &ConnectionBar::disconnectRequested, this, [this] {
         m_session.disconnectFromRobot();
@@ -231,6 +254,10 @@ void MainWindow::applyProfile(oi::ProfileId id)
     m_signalBars->setProfile(p);
     m_modePanel->setProfile(p);
     m_inspector->setProfile(p);
+    m_songs->setProfile(p);
+    m_leds->setProfile(p);
+    m_schedule->setProfile(p);
+    m_script->setProfile(p);
     if (m_history.robotProfile().id != id) {
         m_history.setProfile(p);
         m_plots->setProfile(p);
@@ -257,6 +284,7 @@ void MainWindow::refreshDisplay()
             m_gauges->setSnapshot(s);
             m_signalBars->setSnapshot(s);
             m_modePanel->setSnapshot(s);
+            m_songs->setSnapshot(s);
         }
     }
     // Scrolling plots are the dearest thing on screen; 15 Hz still moves

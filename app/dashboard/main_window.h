@@ -11,6 +11,10 @@
 #include <QTimer>
 
 class ByteInspector;
+class LedEditor;
+class ScheduleEditor;
+class ScriptEditor;
+class SongComposer;
 class ModePanel;
 class QDockWidget;
 class QLabel;
@@ -82,6 +86,10 @@ private:
     SensorPlots *m_plots = nullptr;
     SignalBars *m_signalBars = nullptr;
     ByteInspector *m_inspector = nullptr;
+    SongComposer *m_songs = nullptr;
+    LedEditor *m_leds = nullptr;
+    ScheduleEditor *m_schedule = nullptr;
+    ScriptEditor *m_script = nullptr;
     QList<QDockWidget *> m_docks;
     QByteArray m_defaultState;
 

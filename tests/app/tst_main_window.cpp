@@ -5,6 +5,7 @@
 #include "mode_panel.h"
 #include "real_time_robot.h"
 #include "robot_diagram.h"
+#include "schedule_editor.h"
 #include "transport.h"
 #include "virtual_transport.h"
 
@@ -143,6 +144,16 @@ private slots:
             QTRY_COMPARE_WITH_TIMEOUT(recording.count(), qsizetype(1), 5000);
             QCOMPARE(text(recording.take().first()), QString(bytes));
         }
+        // The editors send through the same session.
+        auto *schedule = window.findChild<ScheduleEditor *>();
+        QVERIFY(schedule);
+        oi::CleaningSchedule example;
+        example.days[int(oi::Weekday::Wednesday)] = oi::ClockTime{15, 0};
+        example.days[int(oi::Weekday::Friday)] = oi::ClockTime{10, 36};
+        schedule->setSchedule(example);
+        schedule->sendSchedule();
+        QTRY_COMPARE_WITH_TIMEOUT(recording.count(), qsizetype(1), 5000);
+        QCOMPARE(text(recording.take().first()), QString("167 40 0 0 0 0 0 0 15 0 0 0 10 36 0 0"));
         // Closing leaves the robot stopped and in Passive mode.
         window.session().closeAndWait();
         QCOMPARE(text(recording.take().join()), QString("150 0 137 0 0 0 0 138 0 128"));

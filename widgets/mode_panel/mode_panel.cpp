@@ -2,6 +2,7 @@
 #include "mode_panel.h"
 
 #include "command_catalog.h"
+#include "demo_names.h"
 #include "display_palette.h"
 
 #include <QComboBox>
@@ -13,10 +14,6 @@
 #include <QVBoxLayout>
 
 namespace {
-
-// Create 1 demos, -1 (abort) through 9, as the document names them.
-const char *const kDemoNames[] = {"Abort demo", "Cover", "Cover and Dock", "Spot Cover", "Mouse",
-                                  "Drive Figure Eight", "Wimp", "Home", "Tag", "Pachelbel", "Banjo"};
 
 QString modeName(oi::OiMode mode)
 {
@@ -89,8 +86,8 @@ ModePanel::ModePanel(QWidget *parent) : QWidget(parent)
     cleaning->addWidget(addButton("cover-and-dock", tr("Cover and Dock"), C::CoverAndDock), 1, 1);
     m_demo = new QComboBox(this);
     m_demo->setObjectName("demoChoice");
-    for (int i = 0; i < 11; ++i)
-        m_demo->addItem(QString("%1  %2").arg(i - 1).arg(tr(kDemoNames[i])), i - 1);
+    for (int demo = demos::kAbort; demo <= demos::kLast; ++demo)
+        m_demo->addItem(QString("%1  %2").arg(demo).arg(demos::name(demo)), demo);
     m_demo->setCurrentIndex(1);
     cleaning->addWidget(m_demo, 1, 2);
     cleaning->addWidget(addButton("demo", tr("Demo"), C::Demo), 1, 3);

@@ -1,0 +1,348 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "robot_profile.h"
+#include "script_editor.h"
+#include "script_lines.h"
+
+#include <QComboBox>
+#include <QDir>
+#include <QLabel>
+#include <QPlainTextEdit>
+#include <QPushButton>
+#include <QSignalSpy>
+#include <QTemporaryDir>
+#include <QTest>
+
+namespace {
+
+QString spaced(const QByteArray &bytes)
+{
+    QStringList numbers;
+    for (char b : bytes)
+        numbers << QString::number(quint8(b));
+    return numbers.join(u' ');
+}
+
+QByteArray bytes(std::initializer_list<int> values)
+{
+    QByteArray out;
+    for (int v : values)
+        out.append(char(quint8(v)));
+    return out;
+}
+
+const oi::RobotProfile &create1() { return oi::profile(oi::ProfileId::Create1); }
+
+// The sent messages of a spy, as spaced decimal text.
+QStringList sent(const QSignalSpy &spy)
+{
+    QStringList out;
+    for (const QList<QVariant> &args : spy)
+        out << spaced(args.at(0).toByteArray());
+    return out;
+}
+
+} // namespace
+
+class TestScriptEditor : public QObject {
+    Q_OBJECT
+private slots:
+    void statementLines()
+    {
+        QCOMPARE(script_lines::statementNumber("statement 3 (drive)"), std::optional<int>(3));
+        QCOMPARE(script_lines::statementNumber("statement 12 (leds)"), std::optional<int>(12));
+        QCOMPARE(script_lines::statementNumber("script"), std::nullopt);
+        QCOMPARE(script_lines::statementNumber("statement x"), std::nullopt);
+
+        const QString text = "# heading\n"
+                             "drive 300 0; wait-distance 400\n"
+                             "\n"
+                             "   # only a comment; drive 1 1\n"
+                             "song 0 C#4:32 ; ;\n"
+                             "play-script";
+        QCOMPARE(script_lines::lineOfStatement(text, 1), std::optional<int>(2));
+        QCOMPARE(script_lines::lineOfStatement(text, 2), std::optional<int>(2));
+        QCOMPARE(script_lines::lineOfStatement(text, 3), std::optional<int>(5));
+        QCOMPARE(script_lines::lineOfStatement(text, 4), std::optional<int>(6));
+        QCOMPARE(script_lines::lineOfStatement(text, 5), std::nullopt);
+        QCOMPARE(script_lines::lineOfStatement(text, 0), std::nullopt);
+    }
+
+    void documentExamples_data()
+    {
+        QTest::addColumn<int>("index");
+        QTest::addColumn<QString>("expected");
+        QTest::newRow("drive 40 cm") << 0 << "152 13 137 1 44 128 0 156 1 144 137 0 0 0 0";
+        QTest::newRow("toggle led") << 1 << "152 17 158 5 158 251 139 2 0 0 158 5 158 251 139 0 0 0 153";
+        QTest::newRow("square") << 2 << "152 17 137 1 44 128 0 156 1 144 137 1 44 0 1 157 0 90 153";
+    }
+
+    void documentExamples()
+    {
+        QFETCH(int, index);
+        QFETCH(QString, expected);
+        ScriptEditor editor;
+        editor.setProfile(create1());
+        QCOMPARE(ScriptEditor::exampleTitles().size(), 3);
+        // Load through the combo, as a user would.
+        auto *combo = editor.findChild<QComboBox *>("examples");
+        QVERIFY(combo);
+        QCOMPARE(combo->count(), 4);
+        combo->setCurrentIndex(index + 1);
+        emit combo->activated(index + 1);
+        QCOMPARE(combo->currentIndex(), 0);
+        QVERIFY2(editor.errorText().isEmpty(), qPrintable(editor.errorText()));
+        QSignalSpy spy(&editor, &ScriptEditor::sendRequested);
+        QVERIFY(editor.button("upload")->isEnabled());
+        QTest::mouseClick(editor.button("upload"), Qt::LeftButton);
+        QCOMPARE(sent(spy), QStringList{expected});
+    }
+
+    void typedStatements()
+    {
+        ScriptEditor editor;
+        editor.setProfile(create1());
+        editor.setScriptText("drive 300 0; wait-distance 400 # go\nwait-event -5\nwait-event not-bump\nplay-script");
+        QSignalSpy spy(&editor, &ScriptEditor::sendRequested);
+        QTest::mouseClick(editor.button("upload"), Qt::LeftButton);
+        QCOMPARE(sent(spy), QStringList{"152 13 137 1 44 0 0 156 1 144 158 251 158 251 153"});
+        QCOMPARE(editor.byteCountText(), QString("13 / 100 bytes"));
+        QTest::mouseClick(editor.button("play"), Qt::LeftButton);
+        QCOMPARE(sent(spy).last(), QString("153"));
+    }
+
+    void byteCountFollowsTyping()
+    {
+        ScriptEditor editor;
+        editor.setProfile(create1());
+        QCOMPARE(editor.byteCountText(), QString("0 / 100 bytes"));
+        auto *text = editor.findChild<QPlainTextEdit *>("scriptText");
+        QVERIFY(text);
+        text->setFocus();
+        QTest::keyClicks(text, "drive 100 straight");
+        // Debounced: the count follows after the typing pause.
+        QTRY_COMPARE(editor.byteCountText(), QString("5 / 100 bytes"));
+        QTest::keyClick(text, Qt::Key_Return);
+        QTest::keyClicks(text, "play-script");
+        QTRY_COMPARE(editor.byteCountText(), QString("6 / 100 bytes"));
+    }
+
+    void errorLineReported()
+    {
+        ScriptEditor editor;
+        editor.setProfile(create1());
+        editor.setScriptText("# a comment line\ndrive 300 straight\nwait-distance 400; drive 900 0\ndrive 0 0");
+        QCOMPARE(editor.errorLine(), std::optional<int>(3));
+        QVERIFY2(editor.errorText().startsWith("Line 3: statement 3 (drive)"), qPrintable(editor.errorText()));
+        QVERIFY(editor.errorText().contains("900"));
+        QVERIFY(!editor.button("upload")->isEnabled());
+        auto *text = editor.findChild<QPlainTextEdit *>("scriptText");
+        QCOMPARE(text->extraSelections().size(), 1);
+        QCOMPARE(text->extraSelections().first().cursor.blockNumber(), 2);
+
+        QSignalSpy spy(&editor, &ScriptEditor::sendRequested);
+        QTest::mouseClick(editor.button("upload"), Qt::LeftButton);
+        QCOMPARE(spy.count(), 0);
+
+        editor.setScriptText("# a comment line\ndrive 300 straight\nwait-distance 400; drive 0 0");
+        QCOMPARE(editor.errorLine(), std::nullopt);
+        QVERIFY(editor.errorText().isEmpty());
+        QVERIFY(editor.button("upload")->isEnabled());
+        QVERIFY(text->extraSelections().isEmpty());
+    }
+
+    void tooLongRefused()
+    {
+        ScriptEditor editor;
+        editor.setProfile(create1());
+        // 20 drives of 5 bytes are exactly 100; one more wait-event makes 102,
+        // one play-script makes 101.
+        QString text;
+        for (int i = 0; i < 20; ++i)
+            text += "drive 100 straight\n";
+        editor.setScriptText(text);
+        QCOMPARE(editor.byteCountText(), QString("100 / 100 bytes"));
+        QVERIFY(editor.button("upload")->isEnabled());
+
+        editor.setScriptText(text + "play-script\n");
+        QCOMPARE(editor.byteCountText(), QString("101 / 100 bytes"));
+        QVERIFY(!editor.button("upload")->isEnabled());
+        QVERIFY2(editor.errorText().contains("at most 100"), qPrintable(editor.errorText()));
+        QSignalSpy spy(&editor, &ScriptEditor::sendRequested);
+        QTest::mouseClick(editor.button("upload"), Qt::LeftButton);
+        QCOMPARE(spy.count(), 0);
+    }
+
+    void showScriptMatches()
+    {
+        ScriptEditor editor;
+        editor.setProfile(create1());
+        editor.loadExample(0);
+        QSignalSpy spy(&editor, &ScriptEditor::sendRequested);
+        QTest::mouseClick(editor.button("upload"), Qt::LeftButton);
+        QTest::mouseClick(editor.button("show"), Qt::LeftButton);
+        QCOMPARE(sent(spy), (QStringList{"152 13 137 1 44 128 0 156 1 144 137 0 0 0 0", "154"}));
+        QVERIFY(!editor.button("show")->isEnabled());
+
+        // The reply, split across two reads.
+        editor.appendReceived(bytes({13, 137, 1, 44, 128}));
+        QCOMPARE(spy.count(), 2);
+        editor.appendReceived(bytes({0, 156, 1, 144, 137, 0, 0, 0, 0}));
+        QVERIFY2(editor.showScriptText().contains("matches what was sent"), qPrintable(editor.showScriptText()));
+        QVERIFY(editor.showScriptText().contains("drive 300 straight; wait-distance 400; drive 0 0"));
+        // The stream, halted by Show Script, is resumed.
+        QCOMPARE(sent(spy).last(), QString("150 1"));
+        QVERIFY(editor.button("show")->isEnabled());
+
+        // Bytes after the reply are not read as another reply.
+        editor.appendReceived(bytes({1, 153}));
+        QVERIFY(editor.showScriptText().contains("matches what was sent"));
+        QCOMPARE(spy.count(), 3);
+    }
+
+    void showScriptDiffers()
+    {
+        ScriptEditor editor;
+        editor.setProfile(create1());
+        editor.loadExample(0);
+        QSignalSpy spy(&editor, &ScriptEditor::sendRequested);
+        QTest::mouseClick(editor.button("upload"), Qt::LeftButton);
+        QTest::mouseClick(editor.button("show"), Qt::LeftButton);
+        editor.appendReceived(bytes({3, 157, 0, 90}));
+        const QString result = editor.showScriptText();
+        QVERIFY2(result.contains("differs"), qPrintable(result));
+        QVERIFY(!result.contains("matches"));
+        QVERIFY(result.contains("On the robot: wait-angle 90"));
+        QVERIFY(result.contains("Sent: drive 300 straight; wait-distance 400; drive 0 0"));
+        QCOMPARE(sent(spy).last(), QString("150 1"));
+    }
+
+    void showScriptTimesOut()
+    {
+        ScriptEditor editor;
+        editor.setProfile(create1());
+        QSignalSpy spy(&editor, &ScriptEditor::sendRequested);
+        QTest::mouseClick(editor.button("show"), Qt::LeftButton);
+        editor.appendReceived(bytes({5, 153})); // cut short: 5 announced, 1 came
+        QTest::qWait(600);
+        QVERIFY(editor.showScriptText().contains("Waiting"));
+        QTRY_VERIFY_WITH_TIMEOUT(editor.showScriptText().contains("No reply to Show Script within 1 s"), 2000);
+        QCOMPARE(sent(spy), (QStringList{"154", "150 1"}));
+        QVERIFY(editor.button("show")->isEnabled());
+        // A late reply is ignored.
+        editor.appendReceived(bytes({153, 153, 153, 153}));
+        QVERIFY(editor.showScriptText().contains("No reply"));
+    }
+
+    void profileChangeCancelsReply()
+    {
+        ScriptEditor editor;
+        editor.setProfile(create1());
+        QSignalSpy spy(&editor, &ScriptEditor::sendRequested);
+        QTest::mouseClick(editor.button("show"), Qt::LeftButton);
+        editor.setProfile(oi::profile(oi::ProfileId::Create2));
+        editor.setProfile(create1());
+        editor.appendReceived(bytes({1, 153}));
+        QVERIFY(editor.showScriptText().isEmpty());
+        QCOMPARE(sent(spy), QStringList{"154"});
+        QVERIFY(editor.button("show")->isEnabled());
+    }
+
+    void demos_data()
+    {
+        QTest::addColumn<QString>("name");
+        QTest::addColumn<QString>("label");
+        QTest::addColumn<QString>("expected");
+        QTest::newRow("cover") << "demo-0" << "0  Cover" << "136 0";
+        QTest::newRow("figure eight") << "demo-4" << "4  Drive Figure Eight" << "136 4";
+        QTest::newRow("banjo") << "demo-9" << "9  Banjo" << "136 9";
+        QTest::newRow("abort") << "abort-demo" << "Abort demo" << "136 255";
+    }
+
+    void demos()
+    {
+        QFETCH(QString, name);
+        QFETCH(QString, label);
+        QFETCH(QString, expected);
+        ScriptEditor editor;
+        editor.setProfile(create1());
+        QPushButton *b = editor.button(name);
+        QVERIFY(b);
+        QCOMPARE(b->text(), label);
+        QSignalSpy spy(&editor, &ScriptEditor::sendRequested);
+        QTest::mouseClick(b, Qt::LeftButton);
+        QCOMPARE(sent(spy), QStringList{expected});
+    }
+
+    void disabledOnCreate2()
+    {
+        ScriptEditor editor;
+        editor.setProfile(oi::profile(oi::ProfileId::Create2));
+        QVERIFY2(editor.disabledReason().contains("original Create only"), qPrintable(editor.disabledReason()));
+        QVERIFY(editor.disabledReason().contains("Roomba 600 / Create 2"));
+        QVERIFY(editor.findChild<QLabel *>("disabledReason")->isEnabled());
+        QSignalSpy spy(&editor, &ScriptEditor::sendRequested);
+        for (const char *name : {"upload", "play", "show", "demo-0", "abort-demo"}) {
+            QVERIFY2(!editor.button(name)->isEnabled(), name);
+            QTest::mouseClick(editor.button(name), Qt::LeftButton);
+        }
+        QVERIFY(!editor.findChild<QPlainTextEdit *>("scriptText")->isEnabled());
+        QCOMPARE(spy.count(), 0);
+
+        QCOMPARE(editor.byteCountText(), QString("? / 100 bytes"));
+
+        editor.setProfile(create1());
+        QVERIFY(editor.disabledReason().isEmpty());
+        QVERIFY(editor.button("play")->isEnabled());
+    }
+
+    void screenshot()
+    {
+        ScriptEditor editor;
+        editor.setProfile(create1());
+        editor.loadExample(2);
+        QString text = editor.scriptText();
+        text.replace("wait-angle 90", "wait-angle 90; wait-event bumpp");
+        editor.setScriptText(text);
+        QCOMPARE(editor.errorLine(), std::optional<int>(5));
+        QSignalSpy spy(&editor, &ScriptEditor::sendRequested);
+        editor.resize(editor.sizeHint().expandedTo(QSize(560, 560)));
+        editor.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&editor));
+
+        QTemporaryDir temporary;
+        const QByteArray env = qgetenv("ROOMBA_SCREENSHOTS");
+        const QDir dir(env.isEmpty() ? temporary.path() : QString::fromLocal8Bit(env));
+        QVERIFY(dir.exists());
+        const QImage image = editor.grab().toImage();
+        QVERIFY(!image.isNull());
+        QVERIFY(image.save(dir.filePath("script_editor.png")));
+
+        // With a Show Script reply that differs from the upload.
+        editor.loadExample(0);
+        QTest::mouseClick(editor.button("upload"), Qt::LeftButton);
+        QTest::mouseClick(editor.button("show"), Qt::LeftButton);
+        editor.appendReceived(bytes({8, 137, 1, 44, 128, 0, 156, 1, 144}));
+        QVERIFY(editor.showScriptText().contains("differs"));
+        QVERIFY(editor.errorText().isEmpty());
+        editor.resize(editor.size().expandedTo(editor.sizeHint()));
+        QTest::qWait(50); // let the layout take the longer text in
+        QVERIFY(editor.grab().save(dir.filePath("script_editor_show.png")));
+        // The whole comparison is visible, not cut to its first line.
+        auto *result = editor.findChild<QLabel *>("showScriptResult");
+        QVERIFY(result->height() >= result->heightForWidth(result->width()));
+
+        // On the Create 2: everything greyed, the reason on top.
+        editor.setProfile(oi::profile(oi::ProfileId::Create2));
+        QTest::qWait(50);
+        QVERIFY(editor.grab().save(dir.filePath("script_editor_create2.png")));
+        QVERIFY(editor.findChild<QLabel *>("disabledReason")->isVisible());
+        editor.setProfile(create1());
+
+        // Every button shows its whole label.
+        for (QPushButton *b : editor.findChildren<QPushButton *>())
+            QVERIFY2(b->width() >= b->sizeHint().width(), qPrintable(b->text()));
+    }
+};
+
+QTEST_MAIN(TestScriptEditor)
+#include "tst_script_editor.moc"

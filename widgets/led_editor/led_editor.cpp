@@ -1,0 +1,484 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "led_editor.h"
+
+#include "display_palette.h"
+#include "seven_segment_display.h"
+#include "seven_segment_font.h"
+
+#include <QCheckBox>
+#include <QFontDatabase>
+#include <QGridLayout>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QLineEdit>
+#include <QPushButton>
+#include <QSlider>
+#include <QStringList>
+#include <QVBoxLayout>
+
+namespace {
+
+QString decimal(const oi::Bytes &bytes)
+{
+    QStringList parts;
+    for (std::uint8_t b : bytes)
+        parts << QString::number(b);
+    return parts.join(' ');
+}
+
+QByteArray toByteArray(const oi::Bytes &bytes)
+{
+    return QByteArray(reinterpret_cast<const char *>(bytes.data()), static_cast<qsizetype>(bytes.size()));
+}
+
+QString fromStd(const std::string &text) { return QString::fromStdString(text); }
+
+QLabel *wrappingLabel(const QString &name, QWidget *parent)
+{
+    auto *label = new QLabel(parent);
+    label->setObjectName(name);
+    label->setWordWrap(true);
+    return label;
+}
+
+} // namespace
+
+LedEditor::LedEditor(QWidget *parent) : QWidget(parent)
+{
+    m_liveTimer.setSingleShot(true);
+    m_liveTimer.setTimerType(Qt::PreciseTimer); // the rate limit is a promise to the user
+    m_liveTimer.setInterval(kLiveIntervalMs);
+    connect(&m_liveTimer, &QTimer::timeout, this, &LedEditor::apply);
+
+    m_live = new QCheckBox(tr("Live"), this);
+    m_live->setObjectName("live");
+    m_live->setToolTip(tr("Send changes as you make them, at most every %1 ms").arg(kLiveIntervalMs));
+    m_apply = new QPushButton(tr("Apply"), this);
+    m_apply->setObjectName("apply");
+    m_preview = new QLabel(this);
+    m_preview->setObjectName("bytePreview");
+    m_preview->setFont(QFontDatabase::systemFont(QFontDatabase::FixedFont));
+    m_preview->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_message = wrappingLabel("message", this);
+    connect(m_apply, &QPushButton::clicked, this, &LedEditor::apply);
+    connect(m_live, &QCheckBox::toggled, this, [this](bool live) {
+        if (live)
+            changed(); // what is pending goes out at once
+        else
+            m_liveTimer.stop();
+        refresh();
+    });
+
+    auto *right = new QVBoxLayout;
+    right->addWidget(buildLeds());
+    right->addWidget(buildSchedulingLeds());
+    right->addStretch();
+    auto *columns = new QHBoxLayout;
+    columns->addWidget(buildDigits(), 1);
+    columns->addLayout(right, 1);
+
+    auto *sendRow = new QHBoxLayout;
+    sendRow->addWidget(m_live, 0, Qt::AlignTop);
+    sendRow->addWidget(m_apply, 0, Qt::AlignTop);
+    auto *willSend = new QLabel(tr("Will send:"), this);
+    willSend->setMinimumHeight(m_apply->sizeHint().height());
+    m_preview->setMinimumHeight(m_apply->sizeHint().height());
+    sendRow->addWidget(willSend, 0, Qt::AlignTop);
+    sendRow->addWidget(m_preview, 1, Qt::AlignTop);
+
+    auto *layout = new QVBoxLayout(this);
+    layout->addLayout(columns);
+    layout->addLayout(sendRow);
+    layout->addWidget(m_message);
+
+    setProfile(*m_profile);
+}
+
+QCheckBox *LedEditor::addCheck(const QString &name, const QString &text)
+{
+    auto *box = new QCheckBox(text, this);
+    box->setObjectName(name);
+    return box;
+}
+
+QWidget *LedEditor::buildDigits()
+{
+    m_digitsGroup = new QGroupBox(tr("7-segment display (163, 164)"), this);
+    m_digitsGroup->setObjectName("digitsGroup");
+    m_digitsReason = wrappingLabel("digitsReason", m_digitsGroup);
+    m_digitsContent = new QWidget(m_digitsGroup);
+
+    m_segments = new SevenSegmentDisplay(m_digitsContent);
+    m_segments->setObjectName("segmentEditor");
+    m_segments->setEditable(true);
+    m_segments->setToolTip(tr("Click a segment to switch it on or off"));
+    auto *clear = new QPushButton(tr("Clear"), m_digitsContent);
+    clear->setObjectName("clearSegments");
+    m_rawWarning = wrappingLabel("rawWarning", m_digitsContent);
+    connect(m_segments, &SevenSegmentDisplay::segmentsChanged, this, [this] {
+        m_digitsPending = DigitSource::Raw;
+        changed();
+    });
+    connect(clear, &QPushButton::clicked, this, [this] {
+        m_segments->setMasks({});
+        m_digitsPending = DigitSource::Raw;
+        changed();
+    });
+
+    m_asciiText = new QLineEdit(m_digitsContent);
+    m_asciiText->setObjectName("asciiText");
+    m_asciiText->setMaxLength(4);
+    m_asciiText->setPlaceholderText(tr("up to 4 characters"));
+    m_asciiPreview = new SevenSegmentDisplay(m_digitsContent);
+    m_asciiPreview->setObjectName("asciiPreview");
+    m_asciiPreview->setToolTip(tr("The robot's approximation of the text"));
+    m_asciiMessage = wrappingLabel("asciiMessage", m_digitsContent);
+    connect(m_asciiText, &QLineEdit::textChanged, this, &LedEditor::asciiEdited);
+
+    auto *rawTitle = new QLabel(tr("<b>Segments</b> (Digit LEDs Raw, 163): click to switch"), m_digitsContent);
+    rawTitle->setWordWrap(true);
+    auto *asciiTitle = new QLabel(tr("<b>Text</b> (Digit LEDs ASCII, 164)"), m_digitsContent);
+    auto *asciiCaption = new QLabel(tr("What the robot shows:"), m_digitsContent);
+
+    auto *rawRow = new QHBoxLayout;
+    rawRow->addWidget(m_segments, 1);
+    rawRow->addWidget(clear, 0, Qt::AlignTop);
+    auto *content = new QVBoxLayout(m_digitsContent);
+    content->setContentsMargins(0, 0, 0, 0);
+    content->addWidget(rawTitle);
+    content->addLayout(rawRow);
+    content->addWidget(m_rawWarning);
+    content->addSpacing(8);
+    content->addWidget(asciiTitle);
+    content->addWidget(m_asciiText);
+    content->addWidget(asciiCaption);
+    content->addWidget(m_asciiPreview);
+    content->addWidget(m_asciiMessage);
+    content->addStretch();
+
+    auto *layout = new QVBoxLayout(m_digitsGroup);
+    layout->addWidget(m_digitsReason);
+    layout->addWidget(m_digitsContent);
+    layout->addStretch();
+    return m_digitsGroup;
+}
+
+QWidget *LedEditor::buildLeds()
+{
+    auto *group = new QGroupBox(tr("LEDs (139)"), this);
+    group->setObjectName("ledsGroup");
+    m_debris = addCheck("ledDebris", tr("Debris"));
+    m_spot = addCheck("ledSpot", tr("Spot"));
+    m_dock = addCheck("ledDock", tr("Dock"));
+    m_checkRobot = addCheck("ledCheckRobot", tr("Check Robot"));
+    m_play = addCheck("ledPlay", tr("Play"));
+    m_advance = addCheck("ledAdvance", tr("Advance"));
+
+    m_colour = new QSlider(Qt::Horizontal, group);
+    m_colour->setObjectName("powerColour");
+    m_colour->setRange(0, 255);
+    m_colour->setValue(0);
+    m_colour->setToolTip(tr("0 green … 255 red"));
+    m_intensity = new QSlider(Qt::Horizontal, group);
+    m_intensity->setObjectName("powerIntensity");
+    m_intensity->setRange(0, 255);
+    m_intensity->setValue(128);
+    for (QSlider *slider : {m_colour, m_intensity})
+        slider->setMinimumWidth(120);
+    m_colourValue = new QLabel(group);
+    m_intensityValue = new QLabel(group);
+    for (QLabel *value : {m_colourValue, m_intensityValue}) {
+        value->setMinimumWidth(value->fontMetrics().horizontalAdvance("255") + 4);
+        value->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
+    }
+    m_swatch = new QLabel(group);
+    m_swatch->setObjectName("powerSwatch");
+    m_swatch->setFixedSize(36, 36);
+    m_swatch->setToolTip(tr("The power LED as set"));
+
+    auto *toggles = new QHBoxLayout;
+    for (QCheckBox *box : {m_debris, m_spot, m_dock, m_checkRobot, m_play, m_advance}) {
+        toggles->addWidget(box);
+        connect(box, &QCheckBox::toggled, this, [this] {
+            m_ledsPending = true;
+            changed();
+        });
+    }
+    toggles->addStretch();
+
+    auto *power = new QGridLayout;
+    power->addWidget(new QLabel(tr("Power colour"), group), 0, 0);
+    power->addWidget(new QLabel(tr("green"), group), 0, 1);
+    power->addWidget(m_colour, 0, 2);
+    power->addWidget(new QLabel(tr("red"), group), 0, 3);
+    power->addWidget(m_colourValue, 0, 4);
+    power->addWidget(new QLabel(tr("Intensity"), group), 1, 0);
+    power->addWidget(new QLabel(tr("off"), group), 1, 1);
+    power->addWidget(m_intensity, 1, 2);
+    power->addWidget(new QLabel(tr("full"), group), 1, 3);
+    power->addWidget(m_intensityValue, 1, 4);
+    power->addWidget(m_swatch, 0, 5, 2, 1, Qt::AlignCenter);
+    power->setColumnStretch(2, 1);
+    for (QSlider *slider : {m_colour, m_intensity})
+        connect(slider, &QSlider::valueChanged, this, [this] {
+            m_ledsPending = true;
+            changed();
+        });
+
+    auto *layout = new QVBoxLayout(group);
+    layout->addLayout(toggles);
+    layout->addLayout(power);
+    return group;
+}
+
+QWidget *LedEditor::buildSchedulingLeds()
+{
+    m_schedulingGroup = new QGroupBox(tr("Scheduling LEDs (162)"), this);
+    m_schedulingGroup->setObjectName("schedulingGroup");
+    m_schedulingReason = wrappingLabel("schedulingReason", m_schedulingGroup);
+    m_schedulingContent = new QWidget(m_schedulingGroup);
+
+    auto *days = new QHBoxLayout;
+    for (int day = 0; day < 7; ++day) {
+        const auto name = oi::weekdayName(static_cast<oi::Weekday>(day)).substr(0, 3);
+        m_weekdays[day] = addCheck(QString("weekday%1").arg(day), QString::fromUtf8(name.data(), name.size()));
+        m_weekdays[day]->setParent(m_schedulingContent);
+        days->addWidget(m_weekdays[day]);
+    }
+    days->addStretch();
+    auto *indicators = new QHBoxLayout;
+    m_schedule = addCheck("schedSchedule", tr("Schedule"));
+    m_clock = addCheck("schedClock", tr("Clock"));
+    m_am = addCheck("schedAm", tr("AM"));
+    m_pm = addCheck("schedPm", tr("PM"));
+    m_colon = addCheck("schedColon", tr("Colon"));
+    for (QCheckBox *box : {m_schedule, m_clock, m_am, m_pm, m_colon}) {
+        box->setParent(m_schedulingContent);
+        indicators->addWidget(box);
+    }
+    indicators->addStretch();
+    for (QCheckBox *box : m_schedulingContent->findChildren<QCheckBox *>())
+        connect(box, &QCheckBox::toggled, this, [this] {
+            m_schedulingPending = true;
+            changed();
+        });
+
+    auto *content = new QVBoxLayout(m_schedulingContent);
+    content->setContentsMargins(0, 0, 0, 0);
+    content->addLayout(days);
+    content->addLayout(indicators);
+    auto *layout = new QVBoxLayout(m_schedulingGroup);
+    layout->addWidget(m_schedulingReason);
+    layout->addWidget(m_schedulingContent);
+    return m_schedulingGroup;
+}
+
+void LedEditor::setProfile(const oi::RobotProfile &profile)
+{
+    m_profile = &profile;
+    m_liveTimer.stop();
+    const bool create1 = profile.id == oi::ProfileId::Create1;
+    // ERRATA 15: LEDs the profile lacks are switched off, not just hidden,
+    // so their bits never go out.
+    for (QCheckBox *box : {m_debris, m_spot, m_dock, m_checkRobot, m_play, m_advance}) {
+        const bool shown = (box == m_play || box == m_advance) == create1;
+        box->setVisible(shown);
+        if (!shown) {
+            const QSignalBlocker block(box);
+            box->setChecked(false);
+        }
+    }
+
+    const oi::CommandEncoder encoder(profile);
+    const auto digitsRefused = encoder.refuse(oi::Command::DigitLedsAscii);
+    // Hidden as well as disabled, so nothing on screen looks usable.
+    m_digitsContent->setEnabled(!digitsRefused);
+    m_digitsContent->setVisible(!digitsRefused);
+    m_digitsReason->setVisible(bool(digitsRefused));
+    m_digitsReason->setText(tr("The %1 has no 7-segment display: Digit LEDs Raw (163) and Digit LEDs "
+                               "ASCII (164) are Roomba 500 / Create 2 only.")
+                                .arg(QString::fromUtf8(profile.name.data(), profile.name.size())));
+    // ERRATA 9: the encoder knows where 163 is sent but does nothing.
+    const auto raw = encoder.digitLedsRaw(0, 0, 0, 0);
+    m_rawWarning->setVisible(raw.ok() && !raw.warning.empty());
+    m_rawWarning->setText(tr("⚠ %1. It is sent anyway; use Text (164) to be sure.").arg(fromStd(raw.warning)));
+
+    const auto schedulingRefused = encoder.refuse(oi::Command::SchedulingLeds);
+    m_schedulingContent->setEnabled(!schedulingRefused);
+    m_schedulingContent->setVisible(!schedulingRefused);
+    m_schedulingReason->setVisible(bool(schedulingRefused));
+    if (schedulingRefused)
+        m_schedulingReason->setText(fromStd(schedulingRefused->message) + '.');
+
+    // The new robot has not been told anything yet by this editor.
+    m_ledsPending = false;
+    m_schedulingPending = false;
+    m_digitsPending.reset();
+    m_message->clear();
+    refresh();
+}
+
+bool LedEditor::liveMode() const { return m_live->isChecked(); }
+void LedEditor::setLiveMode(bool live) { m_live->setChecked(live); }
+
+QColor LedEditor::powerLedColor(int colour, int intensity)
+{
+    colour = qBound(0, colour, 255);
+    const qreal scale = qBound(0, intensity, 255) / 255.0;
+    return QColor(qRound(colour * scale), qRound((255 - colour) * scale), 0);
+}
+
+int LedEditor::ledBits() const
+{
+    int bits = 0;
+    const std::pair<QCheckBox *, std::uint8_t> boxes[] = {
+        {m_debris, oi::bit::LedDebris},  {m_spot, oi::bit::LedSpot},  {m_dock, oi::bit::LedDock},
+        {m_checkRobot, oi::bit::LedCheckRobot}, {m_play, oi::bit::LedPlay}, {m_advance, oi::bit::LedAdvance}};
+    for (auto [box, bit] : boxes)
+        if (box->isChecked())
+            bits |= bit;
+    return bits;
+}
+
+int LedEditor::weekdayBits() const
+{
+    int bits = 0;
+    for (int day = 0; day < 7; ++day)
+        if (m_weekdays[day]->isChecked())
+            bits |= 1 << day;
+    return bits;
+}
+
+int LedEditor::schedulingBits() const
+{
+    int bits = 0;
+    const std::pair<QCheckBox *, std::uint8_t> boxes[] = {{m_schedule, oi::bit::SchedSchedule},
+                                                          {m_clock, oi::bit::SchedClock},
+                                                          {m_am, oi::bit::SchedAm},
+                                                          {m_pm, oi::bit::SchedPm},
+                                                          {m_colon, oi::bit::SchedColon}};
+    for (auto [box, bit] : boxes)
+        if (box->isChecked())
+            bits |= bit;
+    return bits;
+}
+
+oi::EncodeResult LedEditor::digitsCommand() const
+{
+    const oi::CommandEncoder encoder(*m_profile);
+    if (m_digitsPending == DigitSource::Raw) {
+        const auto m = m_segments->masks();
+        return encoder.digitLedsRaw(m[0], m[1], m[2], m[3]);
+    }
+    const auto &c = m_asciiCodes;
+    return encoder.digitLedsAscii(c[0], c[1], c[2], c[3]);
+}
+
+std::vector<oi::Bytes> LedEditor::pendingCommands() const
+{
+    const oi::CommandEncoder encoder(*m_profile);
+    std::vector<oi::EncodeResult> results;
+    if (m_ledsPending)
+        results.push_back(encoder.leds(ledBits(), m_colour->value(), m_intensity->value()));
+    if (m_schedulingPending)
+        results.push_back(encoder.schedulingLeds(weekdayBits(), schedulingBits()));
+    if (m_digitsPending)
+        results.push_back(digitsCommand());
+    std::vector<oi::Bytes> out;
+    for (const auto &r : results)
+        if (r.ok())
+            out.push_back(r.value());
+    return out;
+}
+
+QString LedEditor::bytePreview() const { return m_preview->text(); }
+QString LedEditor::message() const { return m_message->text(); }
+
+void LedEditor::asciiEdited()
+{
+    const QString text = m_asciiText->text();
+    QStringList refused, blank;
+    for (QChar ch : text) {
+        const int code = ch.unicode();
+        if (code < 32 || code > 126)
+            refused << QString("'%1' (%2)").arg(ch).arg(code);
+        else if (!oi::isSevenSegmentCharacter(code))
+            blank << QString("'%1'").arg(ch);
+    }
+    if (!refused.isEmpty()) {
+        // Nothing goes out for text the robot cannot take; the last valid
+        // text stays in the preview.
+        if (m_digitsPending == DigitSource::Ascii)
+            m_digitsPending.reset();
+        m_asciiMessage->setText(tr("Not sent: %1 outside ASCII 32..126. Use letters, digits and "
+                                   "punctuation.").arg(refused.join(", ")));
+        refresh();
+        return;
+    }
+    m_asciiCodes = oi::digitAsciiCodes(text.toStdString());
+    std::array<std::uint8_t, 4> shapes{};
+    for (int i = 0; i < 4; ++i)
+        shapes[i] = oi::sevenSegmentForAscii(m_asciiCodes[i]);
+    m_asciiPreview->setMasks(shapes);
+    m_asciiMessage->setText(blank.isEmpty()      ? QString()
+                            : blank.size() == 1 ? tr("%1 shows blank: the robot has no shape for it.").arg(blank[0])
+                                                : tr("%1 show blank: the robot has no shape for them.")
+                                                      .arg(blank.join(", ")));
+    m_digitsPending = DigitSource::Ascii;
+    changed();
+}
+
+void LedEditor::changed()
+{
+    refresh();
+    // Trailing rate limit: the first change starts the timer, later ones
+    // only update the state, and the timer sends whatever is latest.
+    if (liveMode() && !pendingCommands().empty() && !m_liveTimer.isActive())
+        m_liveTimer.start();
+}
+
+void LedEditor::refresh()
+{
+    m_colourValue->setText(QString::number(m_colour->value()));
+    m_intensityValue->setText(QString::number(m_intensity->value()));
+    const QColor swatch = powerLedColor(m_colour->value(), m_intensity->value());
+    m_swatch->setStyleSheet(QString("background-color: %1; border: 1px solid %2; border-radius: 18px;")
+                                .arg(swatch.name(), palette().color(QPalette::Mid).name()));
+
+    const auto commands = pendingCommands();
+    QStringList lines;
+    for (const auto &bytes : commands)
+        lines << decimal(bytes);
+    m_preview->setText(lines.isEmpty() ? tr("nothing (no changes since the last send)") : lines.join('\n'));
+    m_apply->setEnabled(!liveMode() && !commands.empty());
+    m_apply->setToolTip(liveMode() ? tr("Live mode sends changes as you make them")
+                                   : tr("Send the changes shown under \"Will send\""));
+}
+
+void LedEditor::apply()
+{
+    m_liveTimer.stop();
+    const oi::CommandEncoder encoder(*m_profile);
+    QStringList problems;
+    const auto send = [&](const oi::EncodeResult &r) {
+        if (!r.ok()) {
+            problems << fromStd(r.error().describe());
+            return;
+        }
+        if (!r.warning.empty())
+            problems << fromStd(r.warning);
+        emit sendRequested(toByteArray(r.value()));
+    };
+    if (m_ledsPending)
+        send(encoder.leds(ledBits(), m_colour->value(), m_intensity->value()));
+    if (m_schedulingPending)
+        send(encoder.schedulingLeds(weekdayBits(), schedulingBits()));
+    if (m_digitsPending)
+        send(digitsCommand());
+    m_ledsPending = false;
+    m_schedulingPending = false;
+    m_digitsPending.reset();
+    m_message->setText(problems.join('\n'));
+    refresh();
+}

@@ -1,0 +1,82 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "result.h"
+#include "robot_profile.h"
+
+#include <QByteArray>
+#include <QHash>
+#include <QWidget>
+
+#include <optional>
+
+class QComboBox;
+class QLabel;
+class QPushButton;
+class QTimer;
+class ScriptTextEdit;
+
+// Writes, uploads, plays and reads back Create 1 scripts (152, 153, 154), and
+// starts the built-in demos (136). The script is typed one command a line (or
+// separated by ';'), as the core assembler reads it; the byte count and any
+// error, with its line, follow the typing. On other profiles everything is
+// disabled and a line says why.
+class ScriptEditor : public QWidget {
+    Q_OBJECT
+public:
+    explicit ScriptEditor(QWidget *parent = nullptr);
+
+    void setProfile(const oi::RobotProfile &profile);
+
+    void setScriptText(const QString &text);
+    QString scriptText() const;
+    // Assembles now instead of after the typing pause.
+    void reassemble();
+
+    // The three scripts of the Create document, by title.
+    static QStringList exampleTitles();
+    void loadExample(int index);
+
+    QPushButton *button(const QString &name) const; // "upload", "play", "show", "demo-0".."demo-9", "abort-demo"
+    QString byteCountText() const;
+    QString errorText() const;              // empty when the script assembles
+    std::optional<int> errorLine() const;   // 1-based editor line of the error
+    QString showScriptText() const;         // the outcome of the last Show Script
+    QString disabledReason() const;         // empty on the Create 1
+
+public slots:
+    // Raw bytes from the robot; only read while a Show Script reply is due.
+    void appendReceived(const QByteArray &bytes);
+
+signals:
+    void sendRequested(const QByteArray &bytes);
+
+private:
+    QPushButton *addButton(const QString &name, const QString &text);
+    void send(const oi::EncodeResult &bytes);
+    void upload();
+    void showScript();
+    void finishShowScript();
+    void showScriptTimedOut();
+    void showError(const QString &message, std::optional<int> line);
+    void refreshEnabled();
+    QString scriptAsText(const QByteArray &body) const;
+
+    const oi::RobotProfile *m_profile = &oi::profile(oi::ProfileId::Create2);
+    ScriptTextEdit *m_editor = nullptr;
+    QComboBox *m_examples = nullptr;
+    QLabel *m_reason = nullptr;
+    QLabel *m_byteCount = nullptr;
+    QLabel *m_error = nullptr;
+    QLabel *m_showResult = nullptr;
+    QWidget *m_controls = nullptr;
+    QHash<QString, QPushButton *> m_buttons;
+    QTimer *m_debounce = nullptr;
+    QTimer *m_replyTimeout = nullptr;
+
+    std::optional<QByteArray> m_body;  // the assembled script, if it fits
+    std::optional<int> m_errorLine;
+    std::optional<QByteArray> m_uploaded; // the body last sent with 152
+    bool m_awaitingReply = false;
+    QByteArray m_reply;
+};

@@ -1,0 +1,771 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "song_composer.h"
+
+#include "display_palette.h"
+#include "midi_melody.h"
+#include "piano_roll.h"
+#include "rtttl_import.h"
+
+#include <QAudioDevice>
+#include <QAudioFormat>
+#include <QAudioSink>
+#include <QBuffer>
+#include <QComboBox>
+#include <QDir>
+#include <QDoubleSpinBox>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QInputDialog>
+#include <QLabel>
+#include <QMediaDevices>
+#include <QMenu>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QSpinBox>
+#include <QSplitter>
+#include <QTabBar>
+#include <QTableWidget>
+#include <QVBoxLayout>
+
+#include <cmath>
+
+namespace {
+
+enum Column { NoteColumn, Duration64Column, MsColumn };
+
+QString exampleTitle(const QString &name)
+{
+    QString title = name;
+    title.replace('_', ' ');
+    if (!title.isEmpty())
+        title[0] = title[0].toUpper();
+    return title;
+}
+
+} // namespace
+
+SongComposer::SongComposer(QWidget *parent) : QWidget(parent), m_songs(16)
+{
+    buildUi();
+    m_previewAvailable = !QMediaDevices::defaultAudioOutput().isNull();
+    auto *preview = static_cast<QPushButton *>(control("preview"));
+    preview->setEnabled(m_previewAvailable);
+    m_audioStatus->setText(m_previewAvailable
+                               ? tr("Preview plays on %1.").arg(QMediaDevices::defaultAudioOutput().description())
+                               : tr("No audio output device on this computer, so Preview is off. "
+                                    "Export WAV still works."));
+    setProfile(*m_profile);
+}
+
+SongComposer::~SongComposer() { stopPreview(); }
+
+QPushButton *SongComposer::addButton(const QString &name, const QString &text, const QString &tip)
+{
+    auto *b = new QPushButton(text, this);
+    b->setObjectName(name);
+    b->setToolTip(tip);
+    m_controls.insert(name, b);
+    return b;
+}
+
+void SongComposer::buildUi()
+{
+    auto *layout = new QVBoxLayout(this);
+
+    auto *slotRow = new QHBoxLayout;
+    slotRow->addWidget(new QLabel(tr("Song slot:"), this));
+    m_tabs = new QTabBar(this);
+    m_tabs->setObjectName("slotTabs");
+    m_tabs->setExpanding(false);
+    m_tabs->setUsesScrollButtons(true);
+    slotRow->addWidget(m_tabs, 1);
+    layout->addLayout(slotRow);
+
+    // Editing tools for the current slot.
+    auto *editRow = new QHBoxLayout;
+    QPushButton *add = addButton("add", tr("Add note"), tr("Add a note after the selected one"));
+    QPushButton *remove = addButton("remove", tr("Remove note"), tr("Remove the selected note"));
+    m_semitones = new QSpinBox(this);
+    m_semitones->setObjectName("semitones");
+    m_semitones->setRange(-48, 48);
+    m_semitones->setValue(12);
+    m_semitones->setSuffix(tr(" st"));
+    m_semitones->setToolTip(tr("Semitones to transpose by; negative is down"));
+    QPushButton *transpose = addButton("transpose", tr("Transpose"), tr("Move every note by the semitones shown"));
+    m_factor = new QDoubleSpinBox(this);
+    m_factor->setObjectName("durationFactor");
+    m_factor->setRange(0.1, 10.0);
+    m_factor->setSingleStep(0.25);
+    m_factor->setDecimals(2);
+    m_factor->setValue(0.5);
+    m_factor->setPrefix(QStringLiteral("× "));
+    m_factor->setToolTip(tr("Multiply every duration: 2 plays twice as slow, 0.5 twice as fast"));
+    QPushButton *scale = addButton("scale", tr("Scale durations"), m_factor->toolTip());
+    editRow->addWidget(add);
+    editRow->addWidget(remove);
+    editRow->addSpacing(12);
+    editRow->addWidget(m_semitones);
+    editRow->addWidget(transpose);
+    editRow->addSpacing(12);
+    editRow->addWidget(m_factor);
+    editRow->addWidget(scale);
+    editRow->addStretch(1);
+    layout->addLayout(editRow);
+
+    m_table = new QTableWidget(0, 3, this);
+    m_table->setObjectName("noteTable");
+    m_table->setHorizontalHeaderLabels({tr("Note"), tr("1/64 s"), tr("ms")});
+    m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
+    m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
+    m_table->setSelectionMode(QAbstractItemView::SingleSelection);
+    m_table->setToolTip(tr("Note: a name such as C#5, a MIDI number 31..127 or \"rest\". "
+                           "Duration in 1/64 s (0..255) or in milliseconds."));
+    m_table->setMinimumWidth(230);
+    m_roll = new PianoRoll(this);
+    m_roll->setObjectName("pianoRoll");
+    auto *splitter = new QSplitter(Qt::Horizontal, this);
+    splitter->addWidget(m_table);
+    splitter->addWidget(m_roll);
+    splitter->setStretchFactor(1, 1);
+    splitter->setChildrenCollapsible(false);
+    layout->addWidget(splitter, 1);
+
+    auto *statusRow = new QHBoxLayout;
+    m_total = new QLabel(this);
+    m_total->setObjectName("total");
+    m_playing = new QLabel(this);
+    m_playing->setObjectName("playing");
+    m_progress = new QProgressBar(this);
+    m_progress->setObjectName("playProgress");
+    m_progress->setRange(0, 1000);
+    m_progress->setTextVisible(false);
+    m_progress->setMaximumWidth(160);
+    statusRow->addWidget(m_total);
+    statusRow->addStretch(1);
+    statusRow->addWidget(m_playing);
+    statusRow->addWidget(m_progress);
+    layout->addLayout(statusRow);
+
+    auto *robotRow = new QHBoxLayout;
+    QPushButton *upload = addButton("upload", tr("Upload slot"), tr("Send this slot's song to the robot (140)"));
+    QPushButton *uploadAll = addButton("upload-all", tr("Upload all"), tr("Send every slot that has notes (140)"));
+    QPushButton *play = addButton("play", tr("Play"), tr("Play this slot on the robot (141)"));
+    QPushButton *preview = addButton("preview", tr("Preview"), tr("Play this slot on the computer"));
+    m_shape = new QComboBox(this);
+    m_shape->setObjectName("toneShape");
+    m_shape->addItem(tr("Square tone"));
+    m_shape->addItem(tr("Sine tone"));
+    m_shape->setToolTip(tr("How Preview and Export WAV sound; the robot's speaker sounds closer to square"));
+    for (QWidget *w : {static_cast<QWidget *>(upload), static_cast<QWidget *>(uploadAll),
+                       static_cast<QWidget *>(play)})
+        robotRow->addWidget(w);
+    robotRow->addSpacing(12);
+    robotRow->addWidget(preview);
+    robotRow->addWidget(m_shape);
+    robotRow->addStretch(1);
+    layout->addLayout(robotRow);
+
+    auto *fileRow = new QHBoxLayout;
+    QPushButton *load = addButton("load", tr("Load…"), tr("Replace the songs with a song file"));
+    QPushButton *save = addButton("save", tr("Save…"), tr("Save the songs as JSON"));
+    QPushButton *examples = addButton("examples", tr("Examples"), tr("Put an example song in this slot"));
+    auto *menu = new QMenu(examples);
+    for (const QString &name : exampleNames())
+        menu->addAction(exampleTitle(name), this, [this, name] { loadExample(name); });
+    examples->setMenu(menu);
+    QPushButton *rtttl = addButton("rtttl", tr("Import RTTTL…"), tr("Notes from a ring-tone text"));
+    QPushButton *midi = addButton("midi", tr("Import MIDI…"), tr("The melody of a MIDI file"));
+    QPushButton *wav = addButton("wav", tr("Export WAV…"), tr("This slot as a WAV sound file"));
+    for (QWidget *w : {static_cast<QWidget *>(load), static_cast<QWidget *>(save),
+                       static_cast<QWidget *>(examples), static_cast<QWidget *>(rtttl),
+                       static_cast<QWidget *>(midi), static_cast<QWidget *>(wav)})
+        fileRow->addWidget(w);
+    fileRow->addStretch(1);
+    layout->addLayout(fileRow);
+
+    m_message = new QLabel(this);
+    m_message->setObjectName("message");
+    m_message->setWordWrap(true);
+    m_message->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    layout->addWidget(m_message);
+    m_audioStatus = new QLabel(this);
+    m_audioStatus->setObjectName("audioStatus");
+    m_audioStatus->setWordWrap(true);
+    layout->addWidget(m_audioStatus);
+
+    connect(m_tabs, &QTabBar::currentChanged, this, [this] {
+        stopPreview();
+        refresh();
+    });
+    connect(m_table, &QTableWidget::itemChanged, this, &SongComposer::onItemChanged);
+    connect(m_table, &QTableWidget::currentCellChanged, this, [this](int row) {
+        if (!m_refreshing)
+            m_roll->setSelectedNote(row);
+    });
+    connect(m_roll, &PianoRoll::songEdited, this, &SongComposer::onRollEdited);
+    connect(m_roll, &PianoRoll::noteSelected, this, [this](int index) {
+        m_refreshing = true;
+        m_table->setCurrentCell(index, NoteColumn);
+        m_refreshing = false;
+    });
+    connect(m_roll, &PianoRoll::editRefused, this, [this](const QString &why) { showMessage(why, Tone::Error); });
+    connect(add, &QPushButton::clicked, this, &SongComposer::addNote);
+    connect(remove, &QPushButton::clicked, this, &SongComposer::removeNote);
+    connect(transpose, &QPushButton::clicked, this, [this] { transposeCurrent(m_semitones->value()); });
+    connect(scale, &QPushButton::clicked, this, [this] { scaleCurrentDurations(m_factor->value()); });
+    connect(upload, &QPushButton::clicked, this, &SongComposer::uploadCurrentSlot);
+    connect(uploadAll, &QPushButton::clicked, this, &SongComposer::uploadAllSlots);
+    connect(play, &QPushButton::clicked, this, &SongComposer::playCurrentSlot);
+    connect(preview, &QPushButton::clicked, this, &SongComposer::togglePreview);
+    connect(load, &QPushButton::clicked, this, [this] {
+        const QString path = QFileDialog::getOpenFileName(this, tr("Load songs"), QString(),
+                                                          tr("Song files (*.json)"));
+        if (!path.isEmpty())
+            loadSongs(path);
+    });
+    connect(save, &QPushButton::clicked, this, [this] {
+        const QString path = QFileDialog::getSaveFileName(this, tr("Save songs"), QStringLiteral("songs.json"),
+                                                          tr("Song files (*.json)"));
+        if (!path.isEmpty())
+            saveSongs(path);
+    });
+    connect(rtttl, &QPushButton::clicked, this, [this] {
+        bool ok = false;
+        const QString text = QInputDialog::getText(this, tr("Import RTTTL"),
+                                                   tr("Ring tone, e.g. Beep:d=4,o=5,b=120:c,e,g,c6"),
+                                                   QLineEdit::Normal, QString(), &ok);
+        if (ok && !text.trimmed().isEmpty())
+            importRtttl(text);
+    });
+    connect(midi, &QPushButton::clicked, this, [this] {
+        const QString path = QFileDialog::getOpenFileName(this, tr("Import MIDI"), QString(),
+                                                          tr("MIDI files (*.mid *.midi)"));
+        if (!path.isEmpty())
+            importMidi(path);
+    });
+    connect(wav, &QPushButton::clicked, this, [this] {
+        const QString path = QFileDialog::getSaveFileName(
+            this, tr("Export WAV"), QStringLiteral("song-%1.wav").arg(currentSlot()), tr("WAV files (*.wav)"));
+        if (!path.isEmpty())
+            exportWav(path);
+    });
+}
+
+void SongComposer::setProfile(const oi::RobotProfile &profile)
+{
+    m_profile = &profile;
+    refreshTabs();
+    int hidden = 0;
+    for (int slot = slotCount(); slot < m_songs.size(); ++slot)
+        hidden += m_songs.at(slot).notes.empty() ? 0 : 1;
+    if (hidden > 0)
+        showMessage(tr("The %1 has %2 song slots; %3 song(s) in higher slots are kept but hidden.")
+                        .arg(QString::fromUtf8(profile.name.data(), qsizetype(profile.name.size())))
+                        .arg(slotCount())
+                        .arg(hidden),
+                    Tone::Warning);
+    refresh();
+}
+
+void SongComposer::refreshTabs()
+{
+    const QSignalBlocker block(m_tabs);
+    const int keep = m_tabs->currentIndex();
+    while (m_tabs->count() > slotCount())
+        m_tabs->removeTab(m_tabs->count() - 1);
+    while (m_tabs->count() < slotCount())
+        m_tabs->addTab(QString::number(m_tabs->count()));
+    m_tabs->setCurrentIndex(keep >= 0 && keep < slotCount() ? keep : 0);
+    for (int slot = 0; slot < slotCount(); ++slot) {
+        const int n = int(m_songs.at(slot).notes.size());
+        m_tabs->setTabText(slot, n ? tr("%1 (%2)").arg(slot).arg(n) : QString::number(slot));
+        m_tabs->setTabToolTip(slot, n == 1 ? tr("Song %1: 1 note").arg(slot) : tr("Song %1: %2 notes").arg(slot).arg(n));
+    }
+}
+
+int SongComposer::currentSlot() const { return std::max(0, m_tabs->currentIndex()); }
+
+void SongComposer::setCurrentSlot(int slot)
+{
+    if (slot >= 0 && slot < slotCount())
+        m_tabs->setCurrentIndex(slot);
+}
+
+bool SongComposer::setSong(int slot, const oi::Song &song)
+{
+    if (slot < 0 || slot >= slotCount()) {
+        showMessage(tr("Song slot %1 is outside 0..%2 on this robot").arg(slot).arg(slotCount() - 1), Tone::Error);
+        return false;
+    }
+    if (int(song.notes.size()) > oi::kMaxSongNotes) {
+        showMessage(tr("A song holds at most %1 notes, not %2").arg(oi::kMaxSongNotes).arg(song.notes.size()),
+                    Tone::Error);
+        return false;
+    }
+    m_songs[slot] = song;
+    refresh();
+    return true;
+}
+
+void SongComposer::refresh()
+{
+    m_refreshing = true;
+    const oi::Song &song = m_songs.at(currentSlot());
+    const int keepRow = m_table->currentRow();
+    m_table->setRowCount(int(song.notes.size()));
+    for (int row = 0; row < int(song.notes.size()); ++row) {
+        const oi::SongNote &n = song.notes[row];
+        const QStringList cells{noteLabel(n), QString::number(n.duration), durationMs(n.duration)};
+        for (int col = 0; col < 3; ++col) {
+            QTableWidgetItem *item = m_table->item(row, col);
+            if (!item) {
+                item = new QTableWidgetItem;
+                m_table->setItem(row, col, item);
+            }
+            item->setText(cells.at(col));
+            item->setTextAlignment(col == NoteColumn ? (Qt::AlignLeft | Qt::AlignVCenter)
+                                                     : (Qt::AlignRight | Qt::AlignVCenter));
+        }
+    }
+    if (keepRow >= 0 && keepRow < m_table->rowCount())
+        m_table->setCurrentCell(keepRow, m_table->currentColumn() >= 0 ? m_table->currentColumn() : 0);
+    m_roll->setSong(song);
+    m_roll->setSelectedNote(m_table->currentRow());
+    const int count = int(song.notes.size());
+    m_total->setText(tr("Slot %1: %2, %3 s (%4/64 s)")
+                         .arg(currentSlot())
+                         .arg(count == 1 ? tr("1 note") : tr("%1 notes").arg(count))
+                         .arg(song.seconds(), 0, 'f', 2)
+                         .arg(song.totalDuration64()));
+    control("remove")->setEnabled(!song.notes.empty());
+    control("add")->setEnabled(int(song.notes.size()) < oi::kMaxSongNotes);
+    refreshTabs();
+    m_refreshing = false;
+}
+
+void SongComposer::showMessage(const QString &text, Tone tone)
+{
+    QPalette pal = m_message->palette();
+    const QColor colour = tone == Tone::Error     ? display::stateColor(display::State::Alert, palette())
+                          : tone == Tone::Warning ? display::stateColor(display::State::Warning, palette())
+                                                  : palette().color(QPalette::WindowText);
+    pal.setColor(QPalette::WindowText, colour);
+    m_message->setPalette(pal);
+    m_message->setText(text);
+}
+
+QString SongComposer::message() const { return m_message->text(); }
+
+QString SongComposer::playingText() const { return m_playing->text(); }
+
+void SongComposer::onItemChanged(QTableWidgetItem *item)
+{
+    if (m_refreshing)
+        return;
+    const int slot = currentSlot(), row = item->row();
+    oi::Song song = m_songs.at(slot);
+    if (row < 0 || row >= int(song.notes.size()))
+        return;
+    oi::SongNote &note = song.notes[row];
+    const QString text = item->text().trimmed();
+    QString error;
+    if (item->column() == NoteColumn) {
+        const QString lower = text.toLower();
+        const auto midi = oi::parseMidiNoteName(text.toStdString());
+        if (lower == "rest" || lower == "r")
+            note.midi = oi::kRestNote;
+        else if (midi && *midi >= oi::kLowestNote && *midi <= oi::kHighestNote)
+            note.midi = std::uint8_t(*midi);
+        else
+            error = tr("Note %1: \"%2\" is not a note. Use a name from G1 to G9 (e.g. C#5), "
+                       "a MIDI number 31..127, or \"rest\".")
+                        .arg(row + 1)
+                        .arg(text);
+    } else {
+        bool ok = false;
+        const double value = text.toDouble(&ok);
+        const double d64 = item->column() == Duration64Column ? value : value * 64.0 / 1000.0;
+        const long rounded = std::lround(d64);
+        if (!ok || (item->column() == Duration64Column && value != std::floor(value)))
+            error = tr("Note %1: \"%2\" is not a whole number of 1/64 s").arg(row + 1).arg(text);
+        if (!ok && item->column() == MsColumn)
+            error = tr("Note %1: \"%2\" is not a number of milliseconds").arg(row + 1).arg(text);
+        else if (error.isEmpty() && (rounded < 0 || rounded > 255))
+            error = tr("Note %1: %2 is outside 0..255/64 s (0..3984 ms)")
+                        .arg(row + 1)
+                        .arg(item->column() == Duration64Column ? text : text + tr(" ms"));
+        else if (error.isEmpty())
+            note.duration = std::uint8_t(rounded);
+    }
+    if (!error.isEmpty()) {
+        showMessage(error, Tone::Error);
+        refresh(); // puts the old value back
+        return;
+    }
+    m_songs[slot] = song;
+    showMessage(QString(), Tone::Info);
+    refresh();
+}
+
+void SongComposer::onRollEdited(const oi::Song &song)
+{
+    m_songs[currentSlot()] = song;
+    refresh();
+}
+
+void SongComposer::addNote()
+{
+    oi::Song song = m_songs.at(currentSlot());
+    if (int(song.notes.size()) >= oi::kMaxSongNotes) {
+        showMessage(tr("A song holds at most %1 notes").arg(oi::kMaxSongNotes), Tone::Error);
+        return;
+    }
+    const int row = m_table->currentRow();
+    const int at = row >= 0 ? row + 1 : int(song.notes.size());
+    // A new note repeats the one before it, which is what is wanted most often.
+    const oi::SongNote note = at > 0 ? song.notes[at - 1] : oi::SongNote{72, 16};
+    song.notes.insert(song.notes.begin() + at, note);
+    m_songs[currentSlot()] = song;
+    refresh();
+    m_table->setCurrentCell(at, NoteColumn);
+}
+
+void SongComposer::removeNote()
+{
+    oi::Song song = m_songs.at(currentSlot());
+    if (song.notes.empty())
+        return;
+    const int row = m_table->currentRow() >= 0 ? m_table->currentRow() : int(song.notes.size()) - 1;
+    song.notes.erase(song.notes.begin() + row);
+    m_songs[currentSlot()] = song;
+    refresh();
+}
+
+bool SongComposer::transposeCurrent(int semitones)
+{
+    QString error;
+    const auto song = transposed(m_songs.at(currentSlot()), semitones, &error);
+    if (!song) {
+        showMessage(error, Tone::Error);
+        return false;
+    }
+    m_songs[currentSlot()] = *song;
+    showMessage(tr("Transposed slot %1 by %2 semitone(s).").arg(currentSlot()).arg(semitones), Tone::Info);
+    refresh();
+    return true;
+}
+
+bool SongComposer::scaleCurrentDurations(double factor)
+{
+    QString error;
+    const auto song = durationsScaled(m_songs.at(currentSlot()), factor, &error);
+    if (!song) {
+        showMessage(error, Tone::Error);
+        return false;
+    }
+    m_songs[currentSlot()] = *song;
+    showMessage(tr("Durations in slot %1 multiplied by %2.").arg(currentSlot()).arg(factor), Tone::Info);
+    refresh();
+    return true;
+}
+
+bool SongComposer::send(const oi::EncodeResult &result, const QString &what)
+{
+    if (!result) {
+        showMessage(tr("%1 refused: %2").arg(what, QString::fromStdString(result.error().describe())), Tone::Error);
+        return false;
+    }
+    const oi::Bytes &bytes = result.value();
+    emit sendRequested(QByteArray(reinterpret_cast<const char *>(bytes.data()), qsizetype(bytes.size())));
+    if (!result.warning.empty())
+        showMessage(tr("%1 sent. Warning: %2").arg(what, QString::fromStdString(result.warning)), Tone::Warning);
+    else
+        showMessage(tr("%1 sent.").arg(what), Tone::Info);
+    return true;
+}
+
+bool SongComposer::uploadCurrentSlot()
+{
+    const oi::CommandEncoder encoder(*m_profile);
+    const int slot = currentSlot();
+    return send(encoder.song(slot, m_songs.at(slot)), tr("Song %1").arg(slot));
+}
+
+bool SongComposer::uploadAllSlots()
+{
+    const oi::CommandEncoder encoder(*m_profile);
+    // Check every slot first, so nothing is sent when one would be refused.
+    QList<oi::EncodeResult> results;
+    QStringList sent, warnings;
+    for (int slot = 0; slot < slotCount(); ++slot) {
+        if (m_songs.at(slot).notes.empty())
+            continue;
+        oi::EncodeResult r = encoder.song(slot, m_songs.at(slot));
+        if (!r) {
+            showMessage(tr("Song %1 refused: %2").arg(slot).arg(QString::fromStdString(r.error().describe())),
+                        Tone::Error);
+            return false;
+        }
+        sent << QString::number(slot);
+        if (!r.warning.empty())
+            warnings << QString::fromStdString(r.warning);
+        results.append(std::move(r));
+    }
+    if (results.isEmpty()) {
+        showMessage(tr("Nothing to upload: every slot is empty."), Tone::Error);
+        return false;
+    }
+    for (const oi::EncodeResult &r : results)
+        emit sendRequested(QByteArray(reinterpret_cast<const char *>(r->data()), qsizetype(r->size())));
+    const QString done = tr("Uploaded songs %1.").arg(sent.join(QStringLiteral(", ")));
+    if (warnings.isEmpty())
+        showMessage(done, Tone::Info);
+    else
+        showMessage(done + tr(" Warning: ") + warnings.join(QStringLiteral("; ")), Tone::Warning);
+    return true;
+}
+
+bool SongComposer::playCurrentSlot()
+{
+    const oi::CommandEncoder encoder(*m_profile);
+    return send(encoder.play(currentSlot()), tr("Play song %1").arg(currentSlot()));
+}
+
+void SongComposer::setSnapshot(const oi::SensorSnapshot &snapshot)
+{
+    if (!snapshot.has(37)) {
+        m_playing->setText(tr("Playing: unknown (packet 37 not streamed)"));
+        m_progress->setVisible(false);
+        m_roll->setPlayhead(-1);
+        m_wasPlaying = false;
+        return;
+    }
+    const bool playing = snapshot.songPlaying();
+    const int slot = snapshot.has(36) ? snapshot.songNumber() : -1;
+    if (!playing) {
+        m_playing->setText(tr("No song playing"));
+        m_progress->setVisible(false);
+        m_roll->setPlayhead(-1);
+        m_wasPlaying = false;
+        return;
+    }
+    if (!m_wasPlaying || slot != m_playingSlot)
+        m_playClock.start();
+    m_wasPlaying = true;
+    m_playingSlot = slot;
+    // The robot reports only that a song plays; the position is estimated
+    // from the time since it started and this composer's copy of the song.
+    const int total64 = slot >= 0 && slot < m_songs.size() ? m_songs.at(slot).totalDuration64() : 0;
+    const double elapsed = m_playClock.elapsed() / 1000.0, total = total64 / 64.0;
+    m_progress->setVisible(total > 0);
+    if (total > 0) {
+        m_progress->setValue(int(std::min(1.0, elapsed / total) * 1000));
+        m_playing->setText(tr("Playing song %1: %2 of %3 s").arg(slot).arg(std::min(elapsed, total), 0, 'f', 1)
+                               .arg(total, 0, 'f', 1));
+    } else {
+        m_playing->setText(tr("Playing song %1").arg(slot));
+    }
+    m_roll->setPlayhead(slot == currentSlot() ? int(std::min(elapsed, total) * 64) : -1);
+}
+
+bool SongComposer::saveSongs(const QString &path)
+{
+    QString error;
+    if (!writeSongsFile(path, songs(), &error)) {
+        showMessage(error, Tone::Error);
+        return false;
+    }
+    showMessage(tr("Saved %1.").arg(QDir::toNativeSeparators(path)), Tone::Info);
+    return true;
+}
+
+bool SongComposer::loadSongs(const QString &path)
+{
+    QString error;
+    const auto loaded = readSongsFile(path, slotCount(), &error);
+    if (!loaded) {
+        showMessage(error + tr(" The open songs are unchanged."), Tone::Error);
+        return false;
+    }
+    for (int slot = 0; slot < slotCount(); ++slot)
+        m_songs[slot] = loaded->at(slot);
+    showMessage(tr("Loaded %1.").arg(QDir::toNativeSeparators(path)), Tone::Info);
+    refresh();
+    return true;
+}
+
+QStringList SongComposer::exampleNames() const
+{
+    QStringList names;
+    for (const QString &file : QDir(QStringLiteral(":/songs")).entryList({QStringLiteral("*.json")}, QDir::Files))
+        names << QFileInfo(file).completeBaseName();
+    return names;
+}
+
+bool SongComposer::placeSongs(const SongSlots &parts, const QString &what)
+{
+    const int first = currentSlot();
+    if (parts.isEmpty() || first + parts.size() > slotCount()) {
+        showMessage(tr("%1 needs %2 slot(s) but only %3 are left from slot %4 on; nothing was changed.")
+                        .arg(what)
+                        .arg(parts.size())
+                        .arg(slotCount() - first)
+                        .arg(first),
+                    Tone::Error);
+        return false;
+    }
+    for (int i = 0; i < parts.size(); ++i)
+        m_songs[first + i] = parts.at(i);
+    refresh();
+    return true;
+}
+
+bool SongComposer::loadExample(const QString &name)
+{
+    QString error;
+    const auto loaded = readSongsFile(QStringLiteral(":/songs/%1.json").arg(name), oi::kMaxSongNotes, &error);
+    if (!loaded) {
+        showMessage(error, Tone::Error);
+        return false;
+    }
+    SongSlots parts;
+    for (const oi::Song &s : *loaded)
+        if (!s.notes.empty())
+            parts.append(s);
+    if (!placeSongs(parts, exampleTitle(name)))
+        return false;
+    showMessage(tr("%1 is in slot %2.").arg(exampleTitle(name)).arg(currentSlot()), Tone::Info);
+    return true;
+}
+
+bool SongComposer::importRtttl(const QString &text)
+{
+    QString error;
+    const auto tune = parseRtttl(text, &error);
+    if (!tune) {
+        showMessage(error, Tone::Error);
+        return false;
+    }
+    const SongSlots parts = splitIntoSongs(tune->notes);
+    const QString name = tune->name.isEmpty() ? tr("The ring tone") : tune->name;
+    if (!placeSongs(parts, name))
+        return false;
+    showMessage(tr("%1: %2 notes in slot(s) %3..%4.")
+                    .arg(name)
+                    .arg(tune->notes.size())
+                    .arg(currentSlot())
+                    .arg(currentSlot() + parts.size() - 1),
+                Tone::Info);
+    return true;
+}
+
+bool SongComposer::importMidi(const QString &path)
+{
+    QString error;
+    int shortened = 0;
+    const auto notes = melodyFromMidiFile(path, &shortened, &error);
+    if (!notes) {
+        showMessage(error, Tone::Error);
+        return false;
+    }
+    SongSlots parts = splitIntoSongs(*notes);
+    const int room = slotCount() - currentSlot();
+    int dropped = 0;
+    // A whole MIDI melody rarely fits; keep what fits and say what did not.
+    while (parts.size() > room) {
+        dropped += int(parts.last().notes.size());
+        parts.removeLast();
+    }
+    if (!placeSongs(parts, QFileInfo(path).fileName()))
+        return false;
+    QString text = tr("Imported %1 melody notes into slot(s) %2..%3.")
+                       .arg(notes->size() - dropped)
+                       .arg(currentSlot())
+                       .arg(currentSlot() + parts.size() - 1);
+    if (dropped)
+        text += tr(" %1 notes did not fit in the remaining slots and were left out.").arg(dropped);
+    if (shortened)
+        text += tr(" %1 notes longer than 255/64 s were shortened to 255.").arg(shortened);
+    showMessage(text, dropped || shortened ? Tone::Warning : Tone::Info);
+    return true;
+}
+
+ToneShape SongComposer::toneShape() const
+{
+    return m_shape->currentIndex() == 1 ? ToneShape::Sine : ToneShape::Square;
+}
+
+bool SongComposer::exportWav(const QString &path)
+{
+    const oi::Song &song = m_songs.at(currentSlot());
+    if (song.notes.empty()) {
+        showMessage(tr("Slot %1 is empty; there is nothing to export.").arg(currentSlot()), Tone::Error);
+        return false;
+    }
+    QString error;
+    if (!writeSongWav(path, song, toneShape(), &error)) {
+        showMessage(error, Tone::Error);
+        return false;
+    }
+    showMessage(tr("Exported slot %1 to %2.").arg(currentSlot()).arg(QDir::toNativeSeparators(path)), Tone::Info);
+    return true;
+}
+
+void SongComposer::togglePreview()
+{
+    if (m_sink) {
+        stopPreview();
+        return;
+    }
+    const QAudioDevice device = QMediaDevices::defaultAudioOutput();
+    if (device.isNull()) {
+        m_previewAvailable = false;
+        control("preview")->setEnabled(false);
+        m_audioStatus->setText(tr("No audio output device on this computer, so Preview is off."));
+        return;
+    }
+    const oi::Song &song = m_songs.at(currentSlot());
+    if (song.notes.empty()) {
+        showMessage(tr("Slot %1 is empty; there is nothing to preview.").arg(currentSlot()), Tone::Error);
+        return;
+    }
+    QAudioFormat format;
+    format.setSampleRate(kSongSampleRate);
+    format.setChannelCount(1);
+    format.setSampleFormat(QAudioFormat::Int16);
+    if (!device.isFormatSupported(format)) {
+        showMessage(tr("%1 cannot play 16-bit mono sound at %2 Hz; use Export WAV instead.")
+                        .arg(device.description())
+                        .arg(kSongSampleRate),
+                    Tone::Error);
+        return;
+    }
+    m_previewBuffer = new QBuffer(this);
+    m_previewBuffer->setData(songPcm(song, toneShape()));
+    m_previewBuffer->open(QIODevice::ReadOnly);
+    m_sink = new QAudioSink(device, format, this);
+    connect(m_sink, &QAudioSink::stateChanged, this, [this](QAudio::State state) {
+        if (state == QAudio::IdleState || state == QAudio::StoppedState)
+            QMetaObject::invokeMethod(this, &SongComposer::stopPreview, Qt::QueuedConnection);
+    });
+    static_cast<QPushButton *>(control("preview"))->setText(tr("Stop preview"));
+    m_sink->start(m_previewBuffer);
+}
+
+void SongComposer::stopPreview()
+{
+    if (m_sink) {
+        m_sink->disconnect(this);
+        m_sink->stop();
+        m_sink->deleteLater();
+        m_sink = nullptr;
+    }
+    if (m_previewBuffer) {
+        m_previewBuffer->deleteLater();
+        m_previewBuffer = nullptr;
+    }
+    if (auto *b = qobject_cast<QPushButton *>(control("preview")))
+        b->setText(tr("Preview"));
+}

@@ -6,6 +6,7 @@
 #include "real_time_robot.h"
 #include "robot_diagram.h"
 #include "schedule_editor.h"
+#include "script_editor.h"
 #include "transport.h"
 #include "virtual_transport.h"
 
@@ -211,6 +212,39 @@ private slots:
         QVERIFY(s.cliff(oi::CliffSensor::FrontLeft) || s.cliff(oi::CliffSensor::FrontRight)
                 || s.cliff(oi::CliffSensor::Left) || s.cliff(oi::CliffSensor::Right));
         QVERIFY(window.grab().save(QDir(dir).filePath("dashboard_cliff.png")));
+    }
+
+    // A Create script uploaded to the virtual robot runs with its wait, and
+    // Show Script reads back what was sent.
+    void createScriptOnTheVirtualRobot()
+    {
+        MainWindow window;
+        window.show();
+        window.start(oilink::LinkSettings::virtualRobotOf(oi::ProfileId::Create1, oi::ProfileId::Create1));
+        QTRY_COMPARE_WITH_TIMEOUT(window.session().state(), oilink::LinkState::Streaming, 10000);
+        QTRY_COMPARE_WITH_TIMEOUT(window.session().robotProfile().id, oi::ProfileId::Create1, 10000);
+        auto *editor = window.findChild<ScriptEditor *>();
+        QVERIFY(editor);
+        QVERIFY(editor->disabledReason().isEmpty());
+        editor->setScriptText("drive 200 straight\nwait-distance 300\ndrive 0 0");
+        editor->reassemble();
+        QVERIFY2(editor->errorText().isEmpty(), qPrintable(editor->errorText()));
+
+        const oi::EncodeResult safe = oi::CommandEncoder(oi::profile(oi::ProfileId::Create1)).safe();
+        QVERIFY(window.session().send(QByteArray(1, char(safe->front()))));
+        QTRY_COMPARE_WITH_TIMEOUT(window.session().latest().oiMode(), oi::OiMode::Safe, 10000);
+        QTest::mouseClick(editor->button("upload"), Qt::LeftButton);
+        QTest::mouseClick(editor->button("play"), Qt::LeftButton);
+        // It drives, then the wait ends and it stops.
+        QTRY_COMPARE_WITH_TIMEOUT(window.session().latest().requestedVelocity(), 200, 10000);
+        QTRY_COMPARE_WITH_TIMEOUT(window.session().latest().requestedVelocity(), 0, 10000);
+
+        QTest::mouseClick(editor->button("show"), Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(editor->showScriptText().contains("matches what was sent"), 10000);
+        QVERIFY(editor->showScriptText().contains("drive 200 straight; wait-distance 300; drive 0 0"));
+        // And the stream comes back.
+        const quint64 count = window.session().snapshotCount();
+        QTRY_VERIFY_WITH_TIMEOUT(window.session().snapshotCount() > count + 10, 10000);
     }
 
     void settingsRestore()

@@ -172,6 +172,16 @@ private slots:
         QCOMPARE(spy.count(), 0);
     }
 
+    // Clicks Show Script and waits until 154 goes out, after 150 0 has
+    // paused the stream and the line has gone quiet.
+    static void askForScript(ScriptEditor &editor, QSignalSpy &spy)
+    {
+        const qsizetype before = spy.count();
+        QTest::mouseClick(editor.button("show"), Qt::LeftButton);
+        QCOMPARE(sent(spy).mid(before), QStringList{"150 0"});
+        QTRY_COMPARE(sent(spy).last(), QString("154"));
+    }
+
     void showScriptMatches()
     {
         ScriptEditor editor;
@@ -179,13 +189,13 @@ private slots:
         editor.loadExample(0);
         QSignalSpy spy(&editor, &ScriptEditor::sendRequested);
         QTest::mouseClick(editor.button("upload"), Qt::LeftButton);
-        QTest::mouseClick(editor.button("show"), Qt::LeftButton);
-        QCOMPARE(sent(spy), (QStringList{"152 13 137 1 44 128 0 156 1 144 137 0 0 0 0", "154"}));
+        askForScript(editor, spy);
+        QCOMPARE(sent(spy), (QStringList{"152 13 137 1 44 128 0 156 1 144 137 0 0 0 0", "150 0", "154"}));
         QVERIFY(!editor.button("show")->isEnabled());
 
         // The reply, split across two reads.
         editor.appendReceived(bytes({13, 137, 1, 44, 128}));
-        QCOMPARE(spy.count(), 2);
+        QCOMPARE(spy.count(), 3);
         editor.appendReceived(bytes({0, 156, 1, 144, 137, 0, 0, 0, 0}));
         QVERIFY2(editor.showScriptText().contains("matches what was sent"), qPrintable(editor.showScriptText()));
         QVERIFY(editor.showScriptText().contains("drive 300 straight; wait-distance 400; drive 0 0"));
@@ -196,7 +206,7 @@ private slots:
         // Bytes after the reply are not read as another reply.
         editor.appendReceived(bytes({1, 153}));
         QVERIFY(editor.showScriptText().contains("matches what was sent"));
-        QCOMPARE(spy.count(), 3);
+        QCOMPARE(spy.count(), 4);
     }
 
     void showScriptDiffers()
@@ -206,7 +216,7 @@ private slots:
         editor.loadExample(0);
         QSignalSpy spy(&editor, &ScriptEditor::sendRequested);
         QTest::mouseClick(editor.button("upload"), Qt::LeftButton);
-        QTest::mouseClick(editor.button("show"), Qt::LeftButton);
+        askForScript(editor, spy);
         editor.appendReceived(bytes({3, 157, 0, 90}));
         const QString result = editor.showScriptText();
         QVERIFY2(result.contains("differs"), qPrintable(result));
@@ -221,16 +231,35 @@ private slots:
         ScriptEditor editor;
         editor.setProfile(create1());
         QSignalSpy spy(&editor, &ScriptEditor::sendRequested);
-        QTest::mouseClick(editor.button("show"), Qt::LeftButton);
+        askForScript(editor, spy);
         editor.appendReceived(bytes({5, 153})); // cut short: 5 announced, 1 came
         QTest::qWait(600);
         QVERIFY(editor.showScriptText().contains("Waiting"));
         QTRY_VERIFY_WITH_TIMEOUT(editor.showScriptText().contains("No reply to Show Script within 1 s"), 2000);
-        QCOMPARE(sent(spy), (QStringList{"154", "150 1"}));
+        QCOMPARE(sent(spy), (QStringList{"150 0", "154", "150 1"}));
         QVERIFY(editor.button("show")->isEnabled());
         // A late reply is ignored.
         editor.appendReceived(bytes({153, 153, 153, 153}));
         QVERIFY(editor.showScriptText().contains("No reply"));
+    }
+
+    void framesStillArrivingAreNotTheReply()
+    {
+        ScriptEditor editor;
+        editor.setProfile(create1());
+        editor.loadExample(0);
+        QSignalSpy spy(&editor, &ScriptEditor::sendRequested);
+        QTest::mouseClick(editor.button("upload"), Qt::LeftButton);
+        QTest::mouseClick(editor.button("show"), Qt::LeftButton);
+        // A stream frame sent before the pause took effect keeps the wait going.
+        for (int i = 0; i < 5; ++i) {
+            editor.appendReceived(bytes({19, 2, 7, 0, 228}));
+            QTest::qWait(20);
+            QCOMPARE(sent(spy).last(), QString("150 0"));
+        }
+        QTRY_COMPARE(sent(spy).last(), QString("154"));
+        editor.appendReceived(bytes({13, 137, 1, 44, 128, 0, 156, 1, 144, 137, 0, 0, 0, 0}));
+        QVERIFY2(editor.showScriptText().contains("matches what was sent"), qPrintable(editor.showScriptText()));
     }
 
     void profileChangeCancelsReply()
@@ -238,12 +267,12 @@ private slots:
         ScriptEditor editor;
         editor.setProfile(create1());
         QSignalSpy spy(&editor, &ScriptEditor::sendRequested);
-        QTest::mouseClick(editor.button("show"), Qt::LeftButton);
+        askForScript(editor, spy);
         editor.setProfile(oi::profile(oi::ProfileId::Create2));
         editor.setProfile(create1());
         editor.appendReceived(bytes({1, 153}));
         QVERIFY(editor.showScriptText().isEmpty());
-        QCOMPARE(sent(spy), QStringList{"154"});
+        QCOMPARE(sent(spy), (QStringList{"150 0", "154"}));
         QVERIFY(editor.button("show")->isEnabled());
     }
 
@@ -320,7 +349,7 @@ private slots:
         // With a Show Script reply that differs from the upload.
         editor.loadExample(0);
         QTest::mouseClick(editor.button("upload"), Qt::LeftButton);
-        QTest::mouseClick(editor.button("show"), Qt::LeftButton);
+        askForScript(editor, spy);
         editor.appendReceived(bytes({8, 137, 1, 44, 128, 0, 156, 1, 144}));
         QVERIFY(editor.showScriptText().contains("differs"));
         QVERIFY(editor.errorText().isEmpty());

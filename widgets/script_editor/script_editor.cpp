@@ -24,6 +24,8 @@ namespace {
 constexpr int kMaxScriptBytes = 100; // ERRATA 11: the length byte counts bytes, at most 100
 constexpr int kTypingPauseMs = 150;
 constexpr int kReplyTimeoutMs = 1000;
+// Frames come every 15 ms; this long without bytes means the paused stream has drained.
+constexpr int kDrainQuietMs = 60;
 
 struct Example {
     const char *title;
@@ -117,6 +119,10 @@ ScriptEditor::ScriptEditor(QWidget *parent) : QWidget(parent)
     m_replyTimeout->setSingleShot(true);
     m_replyTimeout->setInterval(kReplyTimeoutMs);
     connect(m_replyTimeout, &QTimer::timeout, this, &ScriptEditor::showScriptTimedOut);
+    m_drainTimer = new QTimer(this);
+    m_drainTimer->setSingleShot(true);
+    m_drainTimer->setInterval(kDrainQuietMs);
+    connect(m_drainTimer, &QTimer::timeout, this, &ScriptEditor::askForScript);
 
     addButton("upload", tr("Upload (152)"))->setToolTip(tr("Store the script on the robot"));
     addButton("play", tr("Play (153)"))->setToolTip(tr("Run the stored script"));
@@ -213,6 +219,8 @@ void ScriptEditor::setProfile(const oi::RobotProfile &profile)
     m_profile = &profile;
     // Another robot: what was uploaded and any reply still due belong to the old one.
     m_replyTimeout->stop();
+    m_drainTimer->stop();
+    m_draining = false;
     m_awaitingReply = false;
     m_reply.clear();
     m_uploaded.reset();
@@ -333,17 +341,33 @@ void ScriptEditor::upload()
 
 void ScriptEditor::showScript()
 {
+    // The reply has no framing, so stream frames still on their way would be
+    // read as part of it: pause the stream and let the line go quiet first.
     m_reply.clear();
     m_awaitingReply = true;
-    m_showResult->setText(tr("Waiting for the robot's script…"));
+    m_draining = true;
+    m_showResult->setText(tr("Pausing the stream, then asking for the robot's script…"));
     m_showResult->setVisible(true);
     refreshEnabled();
+    send(oi::CommandEncoder(*m_profile).pauseResumeStream(0));
+    m_drainTimer->start();
+}
+
+void ScriptEditor::askForScript()
+{
+    m_draining = false;
+    m_reply.clear();
+    m_showResult->setText(tr("Waiting for the robot's script…"));
     m_replyTimeout->start();
     send(oi::CommandEncoder(*m_profile).showScript());
 }
 
 void ScriptEditor::appendReceived(const QByteArray &bytes)
 {
+    if (m_draining) {
+        m_drainTimer->start(); // still arriving: wait for a quiet line
+        return;
+    }
     if (!m_awaitingReply)
         return;
     m_reply.append(bytes);

@@ -58,6 +58,7 @@ private:
     void showScript();
     void finishShowScript();
     void showScriptTimedOut();
+    void askForScript();
     void showError(const QString &message, std::optional<int> line);
     void refreshEnabled();
     QString scriptAsText(const QByteArray &body) const;
@@ -73,10 +74,12 @@ private:
     QHash<QString, QPushButton *> m_buttons;
     QTimer *m_debounce = nullptr;
     QTimer *m_replyTimeout = nullptr;
+    QTimer *m_drainTimer = nullptr;
 
     std::optional<QByteArray> m_body;  // the assembled script, if it fits
     std::optional<int> m_errorLine;
     std::optional<QByteArray> m_uploaded; // the body last sent with 152
     bool m_awaitingReply = false;
+    bool m_draining = false; // stream paused, waiting for frames in flight to pass
     QByteArray m_reply;
 };

@@ -76,8 +76,11 @@ MainWindow::MainWindow(QWidget *parent) : QMainWindow(parent)
 
     addDock("connectionDock", tr("Connection"), m_connectionBar, Qt::TopDockWidgetArea);
     addDock("modeDock", tr("Modes"), m_modePanel, Qt::LeftDockWidgetArea);
-    addDock("gaugesDock", tr("Gauges"), m_gauges, Qt::RightDockWidgetArea);
-    addDock("signalsDock", tr("Signals"), m_signalBars, Qt::LeftDockWidgetArea);
+    QDockWidget *gauges = addDock("gaugesDock", tr("Gauges"), m_gauges, Qt::RightDockWidgetArea);
+    // The signal bars share the right with the gauges: on a laptop screen the
+    // left column has room for the modes only once the editors are open below.
+    tabifyDockWidget(gauges, addDock("signalsDock", tr("Signals"), m_signalBars, Qt::RightDockWidgetArea));
+    gauges->raise();
     QDockWidget *plots = addDock("plotsDock", tr("Plots"), m_plots, Qt::BottomDockWidgetArea);
     QDockWidget *inspector = addDock("inspectorDock", tr("Inspector"), m_inspector, Qt::BottomDockWidgetArea);
     tabifyDockWidget(plots, inspector);
@@ -97,9 +100,8 @@ MainWindow::MainWindow(QWidget *parent) : QMainWindow(parent)
         m_plots->addPlot();
     m_plots->setChannels(0, {28, 29, 30, 31});
     m_plots->addPlot({22, 23});
-    resizeDocks({findChild<QDockWidget *>("modeDock"), findChild<QDockWidget *>("signalsDock")}, {200, 320},
-                Qt::Vertical);
     resizeDocks({plots}, {300}, Qt::Vertical);
+    resizeDocks({findChild<QDockWidget *>("modeDock"), gauges}, {420, 480}, Qt::Horizontal);
 
     buildMenus();
     buildStatusBar();

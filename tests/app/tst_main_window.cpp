@@ -212,6 +212,13 @@ private slots:
         QVERIFY(s.cliff(oi::CliffSensor::FrontLeft) || s.cliff(oi::CliffSensor::FrontRight)
                 || s.cliff(oi::CliffSensor::Left) || s.cliff(oi::CliffSensor::Right));
         QVERIFY(window.grab().save(QDir(dir).filePath("dashboard_cliff.png")));
+
+        // Each editor in its tab.
+        for (const char *dock : {"songsDock", "ledsDock", "scheduleDock", "scriptDock", "inspectorDock"}) {
+            window.findChild<QDockWidget *>(dock)->raise();
+            QTest::qWait(100);
+            QVERIFY(window.grab().save(QDir(dir).filePath(QString("dashboard_%1.png").arg(dock))));
+        }
     }
 
     // A Create script uploaded to the virtual robot runs with its wait, and

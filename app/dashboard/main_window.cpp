@@ -3,7 +3,12 @@
 
 #include "byte_inspector.h"
 #include "display_palette.h"
+#include "drive_pad.h"
+#include "gamepad_input.h"
+#include "gamepad_panel.h"
 #include "led_editor.h"
+#include "motors_panel.h"
+#include "odometry_map.h"
 #include "mode_panel.h"
 #include "robot_diagram.h"
 #include "schedule_editor.h"
@@ -16,7 +21,12 @@
 #include <QAction>
 #include <QApplication>
 #include <QCloseEvent>
+#include <QAbstractSpinBox>
 #include <QDockWidget>
+#include <QKeyEvent>
+#include <QLineEdit>
+#include <QPlainTextEdit>
+#include <QTextEdit>
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
@@ -51,6 +61,28 @@ void saveRequest(QSettings &s, const ConnectionRequest &r)
     s.setValue("connection/baud", r.baud);
 }
 
+// Widgets where letters, arrows and Space are typing, not driving.
+bool isTextInput(const QWidget *w)
+{
+    return qobject_cast<const QLineEdit *>(w) || qobject_cast<const QAbstractSpinBox *>(w)
+        || qobject_cast<const QTextEdit *>(w) || qobject_cast<const QPlainTextEdit *>(w);
+}
+
+// W A S D fold onto the arrows; 0 for any other key.
+int driveKey(int key)
+{
+    switch (key) {
+    case Qt::Key_Up: case Qt::Key_W: return Qt::Key_Up;
+    case Qt::Key_Down: case Qt::Key_S: return Qt::Key_Down;
+    case Qt::Key_Left: case Qt::Key_A: return Qt::Key_Left;
+    case Qt::Key_Right: case Qt::Key_D: return Qt::Key_Right;
+    default: return 0;
+    }
+}
+
+// The turn radius for an arc from two keys held together.
+constexpr int kKeyArcRadius = 500;
+
 } // namespace
 
 MainWindow::MainWindow(QWidget *parent) : QMainWindow(parent)
@@ -73,9 +105,19 @@ MainWindow::MainWindow(QWidget *parent) : QMainWindow(parent)
     m_leds = new LedEditor(this);
     m_schedule = new ScheduleEditor(this);
     m_script = new ScriptEditor(this);
+    m_motors = new MotorsPanel(this);
+    m_map = new OdometryMap(this);
+    m_gamepad = new GamepadInput(this);
+    m_gamepadPanel = new GamepadPanel(this);
+    m_gamepadPanel->setInput(m_gamepad);
+    m_drivePad = new DrivePad(this);
 
     addDock("connectionDock", tr("Connection"), m_connectionBar, Qt::TopDockWidgetArea);
-    addDock("modeDock", tr("Modes"), m_modePanel, Qt::LeftDockWidgetArea);
+    QDockWidget *modes = addDock("modeDock", tr("Modes"), m_modePanel, Qt::LeftDockWidgetArea);
+    // A tab beside the modes, not below them: stacked, the two would make the
+    // window taller than a laptop screen. The pad offers Enter Safe itself.
+    tabifyDockWidget(modes, addDock("driveDock", tr("Drive"), m_drivePad, Qt::LeftDockWidgetArea));
+    modes->raise();
     QDockWidget *gauges = addDock("gaugesDock", tr("Gauges"), m_gauges, Qt::RightDockWidgetArea);
     // The signal bars share the right with the gauges: on a laptop screen the
     // left column has room for the modes only once the editors are open below.
@@ -89,7 +131,10 @@ MainWindow::MainWindow(QWidget *parent) : QMainWindow(parent)
     for (auto [name, title, widget] : {std::tuple{"songsDock", tr("Songs"), static_cast<QWidget *>(m_songs)},
                                        std::tuple{"ledsDock", tr("LEDs and digits"), static_cast<QWidget *>(m_leds)},
                                        std::tuple{"scheduleDock", tr("Schedule"), static_cast<QWidget *>(m_schedule)},
-                                       std::tuple{"scriptDock", tr("Script"), static_cast<QWidget *>(m_script)}}) {
+                                       std::tuple{"scriptDock", tr("Script"), static_cast<QWidget *>(m_script)},
+                                       std::tuple{"motorsDock", tr("Motors and outputs"), static_cast<QWidget *>(m_motors)},
+                                       std::tuple{"mapDock", tr("Odometry map"), static_cast<QWidget *>(m_map)},
+                                       std::tuple{"gamepadDock", tr("Gamepad"), static_cast<QWidget *>(m_gamepadPanel)}}) {
         QDockWidget *dock = addDock(name, title, widget, Qt::BottomDockWidgetArea);
         tabifyDockWidget(below, dock);
         below = dock;
@@ -101,13 +146,18 @@ MainWindow::MainWindow(QWidget *parent) : QMainWindow(parent)
     m_plots->setChannels(0, {28, 29, 30, 31});
     m_plots->addPlot({22, 23});
     resizeDocks({plots}, {300}, Qt::Vertical);
-    resizeDocks({findChild<QDockWidget *>("modeDock"), gauges}, {420, 480}, Qt::Horizontal);
+    resizeDocks({modes, gauges}, {420, 480}, Qt::Horizontal);
 
     buildMenus();
     buildStatusBar();
     m_defaultState = saveState();
 
-    m_session.setSnapshotObserver([this](double t, const oi::SensorSnapshot &s) { m_history.append(t, s); });
+    // Every frame once: the history, and the odometry (distance and angle are
+    // increments since the last frame).
+    m_session.setSnapshotObserver([this](double t, const oi::SensorSnapshot &s) {
+        m_history.append(t, s);
+        m_map->addSnapshot(s);
+    });
     connect(&m_session, &RobotSession::profileChanged, this, &MainWindow::applyProfile);
     connect(&m_session, &RobotSession::stateChanged, this, &MainWindow::showState);
     connect(&m_session, &RobotSession::statisticsChanged, this, &MainWindow::showStatistics);
@@ -124,7 +174,27 @@ MainWindow::MainWindow(QWidget *parent) : QMainWindow(parent)
     connect(m_leds, &LedEditor::sendRequested, &m_session, &RobotSession::send);
     connect(m_schedule, &ScheduleEditor::sendRequested, &m_session, &RobotSession::send);
     connect(m_script, &ScriptEditor::sendRequested, &m_session, &RobotSession::send);
+    connect(m_motors, &MotorsPanel::sendRequested, &m_session, &RobotSession::send);
+    // The gamepad drives through the same sending rules as the pad and keys.
+    connect(m_gamepad, &GamepadInput::motionRequested, &m_teleop, &TeleopController::requestMotion);
+    connect(m_gamepad, &GamepadInput::deadManChanged, this, [this](bool held) {
+        if (!held)
+            m_teleop.deadManReleased();
+    });
+    connect(m_gamepad, &GamepadInput::stopAllRequested, &m_teleop, &TeleopController::stopAll);
+    connect(m_gamepad, &GamepadInput::modeRequested, m_modePanel, &ModePanel::request);
     connect(&m_session, &RobotSession::bytesReceived, m_script, &ScriptEditor::appendReceived);
+    connect(m_drivePad, &DrivePad::motionRequested, &m_teleop, &TeleopController::requestMotion);
+    connect(m_drivePad, &DrivePad::safeRequested, &m_teleop, &TeleopController::enterSafe);
+    connect(&m_teleop, &TeleopController::passiveChanged, m_drivePad, &DrivePad::setPassive);
+    connect(&m_teleop, &TeleopController::motionStopped, this, [this] {
+        m_drivePad->resetToCentre();
+        m_driveKeys.clear();
+    });
+    connect(&m_teleop, &TeleopController::motionRefused, this,
+            [this](const QString &reason) { statusBar()->showMessage(reason, 5000); });
+    m_drivePad->setPassive(m_teleop.isPassive());
+    qApp->installEventFilter(this);
     connect(m_connectionBar, &ConnectionBar::connectRequested, this, &MainWindow::connectFromBar);
     connect(m_connectionBar, &ConnectionBar::disconnectRequested, this, [this] {
         m_session.disconnectFromRobot();
@@ -137,7 +207,11 @@ MainWindow::MainWindow(QWidget *parent) : QMainWindow(parent)
     showState(oilink::LinkState::Closed);
 }
 
-MainWindow::~MainWindow() { m_session.closeAndWait(); }
+MainWindow::~MainWindow()
+{
+    qApp->removeEventFilter(this);
+    m_session.closeAndWait();
+}
 
 QDockWidget *MainWindow::addDock(const QString &objectName, const QString &title, QWidget *widget,
                                  Qt::DockWidgetArea area)
@@ -234,8 +308,18 @@ void MainWindow::start(const std::optional<oilink::LinkSettings> &override)
     const ConnectionRequest last = loadRequest(settings);
     m_connectionBar->setRequest(last);
     m_displayTimer.start();
+    connectSession(override ? *override : linkSettingsFor(last));
+}
+
+void MainWindow::connectSession(const oilink::LinkSettings &settings)
+{
     m_history.clear();
-    m_session.connectTo(override ? *override : linkSettingsFor(last));
+    m_map->reset();
+    // The virtual robot lives in the classroom world and starts where the
+    // odometry does, so a class can watch the estimate drift from the room.
+    m_map->setWorld(settings.transport == oilink::TransportKind::Virtual ? std::optional(sim::World::classroom())
+                                                                          : std::nullopt);
+    m_session.connectTo(settings);
     m_connectionBar->setConnected(true);
 }
 
@@ -243,9 +327,7 @@ void MainWindow::connectFromBar(const ConnectionRequest &request)
 {
     QSettings settings;
     saveRequest(settings, request);
-    m_history.clear();
-    m_session.connectTo(linkSettingsFor(request));
-    m_connectionBar->setConnected(true);
+    connectSession(linkSettingsFor(request));
 }
 
 void MainWindow::applyProfile(oi::ProfileId id)
@@ -260,6 +342,9 @@ void MainWindow::applyProfile(oi::ProfileId id)
     m_leds->setProfile(p);
     m_schedule->setProfile(p);
     m_script->setProfile(p);
+    m_motors->setProfile(p);
+    m_map->setProfile(p);
+    m_drivePad->setProfile(p);
     if (m_history.robotProfile().id != id) {
         m_history.setProfile(p);
         m_plots->setProfile(p);
@@ -274,6 +359,8 @@ void MainWindow::refreshDisplay()
         m_shownLive = live;
         m_diagram->setStale(!live);
         m_gauges->setStale(!live);
+        // No driving, and no Enter Safe, without live data to see the robot by.
+        m_drivePad->setEnabled(live);
         m_staleLabel->setVisible(!live);
     }
     // Repaint only what changed: a robot at rest streams the same values.
@@ -289,6 +376,7 @@ void MainWindow::refreshDisplay()
             m_songs->setSnapshot(s);
         }
     }
+    m_teleop.checkMode();
     // Scrolling plots are the dearest thing on screen; 15 Hz still moves
     // them smoothly and halves their cost.
     if (m_plots->isVisible() && ++m_displayTicks % 2 == 0)
@@ -333,6 +421,87 @@ void MainWindow::closeEvent(QCloseEvent *event)
     saveSettings();
     m_displayTimer.stop();
     // Leave the robot stopped and in Passive mode (ERRATA 17).
+    m_teleop.stopBeforeQuit();
     m_session.closeAndWait();
     event->accept();
+}
+
+void MainWindow::changeEvent(QEvent *event)
+{
+    if (event->type() == QEvent::ActivationChange && !isActiveWindow()) {
+        // Key releases now go to another window: forget the held keys.
+        m_driveKeys.clear();
+        m_teleop.focusLost();
+    }
+    QMainWindow::changeEvent(event);
+}
+
+bool MainWindow::eventFilter(QObject *watched, QEvent *event)
+{
+    const QEvent::Type type = event->type();
+    if ((type != QEvent::KeyPress && type != QEvent::KeyRelease) || !watched->isWidgetType()
+        || static_cast<QWidget *>(watched)->window() != this)
+        return QMainWindow::eventFilter(watched, event);
+    auto *key = static_cast<QKeyEvent *>(event);
+    const QWidget *focus = QApplication::focusWidget();
+    // Esc is always Stop All. Space is Stop All too, except where it already
+    // means something: inside the plots dock it pauses the plots, and in a
+    // text field it types a space.
+    const bool stopKey = key->key() == Qt::Key_Escape
+        || (key->key() == Qt::Key_Space && !isTextInput(focus)
+            && !(focus && (focus == m_plots || m_plots->isAncestorOf(focus))));
+    if (stopKey && key->modifiers() == Qt::NoModifier) {
+        if (type == QEvent::KeyPress && !key->isAutoRepeat()) {
+            m_driveKeys.clear();
+            m_teleop.stopAll();
+        }
+        return true;
+    }
+    return handleDriveKey(key) || QMainWindow::eventFilter(watched, event);
+}
+
+bool MainWindow::handleDriveKey(QKeyEvent *event)
+{
+    const int key = driveKey(event->key());
+    if (!key)
+        return false;
+    if (event->type() == QEvent::KeyRelease) {
+        // A held key is always let go, wherever the focus went meanwhile.
+        if (!m_driveKeys.contains(key))
+            return false;
+        if (event->isAutoRepeat())
+            return true;
+        m_driveKeys.remove(key);
+        const MotionCommand command = keyboardCommand();
+        if (command.isStop())
+            m_teleop.deadManReleased();
+        else
+            m_teleop.requestMotion(command);
+        return true;
+    }
+    if (event->isAutoRepeat())
+        return m_driveKeys.contains(key);
+    if ((event->modifiers() & (Qt::ControlModifier | Qt::AltModifier | Qt::MetaModifier))
+        || isTextInput(QApplication::focusWidget()))
+        return false;
+    m_driveKeys.insert(key);
+    m_teleop.requestMotion(keyboardCommand());
+    return true;
+}
+
+MotionCommand MainWindow::keyboardCommand() const
+{
+    const int speed = m_drivePad->speedLimit();
+    const int ahead = int(m_driveKeys.contains(Qt::Key_Up)) - int(m_driveKeys.contains(Qt::Key_Down));
+    const int left = int(m_driveKeys.contains(Qt::Key_Left)) - int(m_driveKeys.contains(Qt::Key_Right));
+    MotionCommand command;
+    if (ahead != 0) {
+        command.velocity = ahead * speed;
+        if (left != 0)
+            command.radius = left * kKeyArcRadius; // positive radius turns left
+    } else if (left != 0) {
+        command.velocity = speed;
+        command.radius = left > 0 ? oi::kRadiusTurnInPlaceCounterClockwise : oi::kRadiusTurnInPlaceClockwise;
+    }
+    return command;
 }

@@ -5,18 +5,26 @@
 #include "link_settings.h"
 #include "robot_session.h"
 #include "sensor_history.h"
+#include "teleop_controller.h"
 
 #include <QByteArray>
 #include <QMainWindow>
+#include <QSet>
 #include <QTimer>
 
 class ByteInspector;
+class DrivePad;
+class GamepadInput;
+class GamepadPanel;
+class MotorsPanel;
+class OdometryMap;
 class LedEditor;
 class ScheduleEditor;
 class ScriptEditor;
 class SongComposer;
 class ModePanel;
 class QDockWidget;
+class QKeyEvent;
 class QLabel;
 class RobotDiagram;
 class SensorGauges;
@@ -54,11 +62,17 @@ public:
     SensorPlots *sensorPlots() const { return m_plots; }
     ByteInspector *byteInspector() const { return m_inspector; }
     SignalBars *signalBars() const { return m_signalBars; }
+    DrivePad *drivePad() const { return m_drivePad; }
+    OdometryMap *odometryMap() const { return m_map; }
+    TeleopController &teleop() { return m_teleop; }
     QString statusText() const;
     void refreshDisplay(); // what the display timer does
 
 protected:
     void closeEvent(QCloseEvent *event) override;
+    void changeEvent(QEvent *event) override;
+    // Drive keys and Stop All for every widget in this window (see the .cpp).
+    bool eventFilter(QObject *watched, QEvent *event) override;
 
 private:
     QDockWidget *addDock(const QString &objectName, const QString &title, QWidget *widget,
@@ -70,8 +84,14 @@ private:
     void showStatistics(const oilink::LinkStats &stats);
     void saveSettings() const;
     void connectFromBar(const ConnectionRequest &request);
+    void connectSession(const oilink::LinkSettings &settings);
+    bool handleDriveKey(QKeyEvent *event);
+    MotionCommand keyboardCommand() const;
 
     RobotSession m_session;
+    // After the session: it is destroyed first and never outlives it.
+    TeleopController m_teleop{m_session};
+    QSet<int> m_driveKeys; // held keys, as Qt::Key values folded to arrows
     SensorHistory m_history;
     QTimer m_displayTimer;
     quint64 m_shownSnapshot = ~0ull;
@@ -88,8 +108,13 @@ private:
     ByteInspector *m_inspector = nullptr;
     SongComposer *m_songs = nullptr;
     LedEditor *m_leds = nullptr;
+    GamepadInput *m_gamepad = nullptr;
+    GamepadPanel *m_gamepadPanel = nullptr;
+    MotorsPanel *m_motors = nullptr;
+    OdometryMap *m_map = nullptr;
     ScheduleEditor *m_schedule = nullptr;
     ScriptEditor *m_script = nullptr;
+    DrivePad *m_drivePad = nullptr;
     QList<QDockWidget *> m_docks;
     QByteArray m_defaultState;
 

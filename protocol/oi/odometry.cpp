@@ -32,6 +32,21 @@ void Odometry::setCorrections(FirmwareCorrections corrections)
     m_corrections = corrections;
 }
 
+bool Odometry::setGeometry(double wheelBaseMm, double mmPerEncoderCount)
+{
+    const auto valid = [](double v) { return std::isfinite(v) && v > 0; };
+    if (!valid(wheelBaseMm) || !valid(mmPerEncoderCount))
+        return false;
+    m_wheelBaseMm = wheelBaseMm;
+    m_mmPerEncoderCount = mmPerEncoderCount;
+    return true;
+}
+
+double Odometry::mmPerEncoderCountFor(double wheelDiameterMm)
+{
+    return kPi * wheelDiameterMm / kEncoderCountsPerRevolution;
+}
+
 int Odometry::encoderDelta(std::int32_t previous, std::int32_t current)
 {
     // Modulo 65536 read as int16: 65530 -> 5 is +11 (unsigned), 32767 -> -32768
@@ -49,9 +64,9 @@ void Odometry::update(const SensorSnapshot &snapshot)
         const std::int32_t right = snapshot.rightEncoderCounts();
         // Counts of another profile mean another robot (or wheel order): re-anchor.
         if (m_reference && m_reference->profile == profile) {
-            const double leftMm = encoderDelta(m_reference->left, left) * kMmPerEncoderCount;
-            const double rightMm = encoderDelta(m_reference->right, right) * kMmPerEncoderCount;
-            advance((leftMm + rightMm) / 2, (rightMm - leftMm) / kWheelBaseMm);
+            const double leftMm = encoderDelta(m_reference->left, left) * m_mmPerEncoderCount;
+            const double rightMm = encoderDelta(m_reference->right, right) * m_mmPerEncoderCount;
+            advance((leftMm + rightMm) / 2, (rightMm - leftMm) / m_wheelBaseMm);
         }
         m_reference = EncoderReference{profile, left, right};
         return;

@@ -19,7 +19,10 @@ struct Pose {
 
 // ERRATA 4.
 inline constexpr double kWheelBaseMm = 235.0;
-inline constexpr double kMmPerEncoderCount = 3.14159265358979323846 * 72.0 / 508.8;
+inline constexpr double kWheelDiameterMm = 72.0;
+inline constexpr double kEncoderCountsPerRevolution = 508.8;
+inline constexpr double kMmPerEncoderCount =
+    3.14159265358979323846 * kWheelDiameterMm / kEncoderCountsPerRevolution;
 
 // Dead reckoning for a differential-drive robot from successive sensor frames.
 // Feed each decoded frame once: distance (19) and angle (20) are increments
@@ -34,6 +37,16 @@ public:
     // every firmware.
     void setCorrections(FirmwareCorrections corrections);
     const FirmwareCorrections &corrections() const { return m_corrections; }
+    // The wheel geometry the encoder counts are turned into motion with: a
+    // robot with worn tyres or another wheel base drifts less once measured.
+    // Both must be finite and positive; otherwise nothing changes and this
+    // returns false. The distance/angle fallback is already in mm and degrees
+    // and ignores the geometry.
+    bool setGeometry(double wheelBaseMm, double mmPerEncoderCount);
+    double wheelBaseMm() const { return m_wheelBaseMm; }
+    double mmPerEncoderCount() const { return m_mmPerEncoderCount; }
+    // Millimetres per count for a wheel of this diameter (508.8 counts a turn).
+    static double mmPerEncoderCountFor(double wheelDiameterMm);
 
     // Uses encoder counts (43/44, left/right by profile) when present; the
     // first frame with encoders only sets the reference. Otherwise falls back
@@ -58,6 +71,8 @@ private:
 
     Pose m_pose;
     FirmwareCorrections m_corrections;
+    double m_wheelBaseMm = kWheelBaseMm;
+    double m_mmPerEncoderCount = kMmPerEncoderCount;
     std::optional<EncoderReference> m_reference;
 };
 

@@ -4,6 +4,7 @@
 #include "main_window.h"
 #include "mode_panel.h"
 #include "real_time_robot.h"
+#include "recording_transport.h"
 #include "robot_diagram.h"
 #include "schedule_editor.h"
 #include "script_editor.h"
@@ -24,70 +25,7 @@
 
 namespace {
 
-// Records what the link writes, from the link's thread, and streams
-// group-100 frames back every 15 ms as a Create 2 would, so the link stays
-// streaming and writes nothing of its own.
-struct Recording {
-    QMutex mutex;
-    QList<QByteArray> writes;
-    qsizetype count()
-    {
-        QMutexLocker lock(&mutex);
-        return writes.size();
-    }
-    QList<QByteArray> take()
-    {
-        QMutexLocker lock(&mutex);
-        return std::exchange(writes, {});
-    }
-};
-
-class RecordingTransport : public oilink::Transport {
-public:
-    explicit RecordingTransport(Recording *recording) : m_recording(recording)
-    {
-        QByteArray frame(84, '\0');
-        frame[0] = 19;
-        frame[1] = 81;
-        frame[2] = char(100);
-        frame[83] = char(-(19 + 81 + 100) & 0xFF);
-        m_timer.setInterval(15);
-        connect(&m_timer, &QTimer::timeout, this, [this, frame] { emit bytesReceived(frame); });
-    }
-    void open() override
-    {
-        m_open = true;
-        emit opened();
-        m_timer.start();
-    }
-    void close() override
-    {
-        m_open = false;
-        m_timer.stop();
-    }
-    bool isOpen() const override { return m_open; }
-    bool write(const QByteArray &bytes) override
-    {
-        QMutexLocker lock(&m_recording->mutex);
-        m_recording->writes << bytes;
-        return m_open;
-    }
-    void flush(int) override {}
-    QString describe() const override { return QStringLiteral("/dev/recording"); }
-
-private:
-    Recording *m_recording;
-    bool m_open = false;
-    QTimer m_timer;
-};
-
-QString text(const QByteArray &bytes)
-{
-    QStringList parts;
-    for (char c : bytes)
-        parts << QString::number(static_cast<unsigned char>(c));
-    return parts.join(' ');
-}
+QString text(const QByteArray &bytes) { return byteText(bytes); }
 
 } // namespace
 

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 using namespace oi;
 
@@ -568,6 +569,44 @@ private slots:
         VERIFY_POSE(odometry.pose(), 0.0, 0.0, -kPi / 2, 0.0, 0.0);
         odometry.reset();
         VERIFY_POSE(odometry.pose(), 0.0, 0.0, 0.0, 0.0, 0.0);
+    }
+    void geometry()
+    {
+        Odometry odometry;
+        QCOMPARE(odometry.wheelBaseMm(), kWheelBaseMm);
+        QCOMPARE(odometry.mmPerEncoderCount(), kMmPerEncoderCount);
+        QVERIFY(near(Odometry::mmPerEncoderCountFor(72.0), 0.444564998149499, 1e-15));
+        QVERIFY(near(Odometry::mmPerEncoderCountFor(144.0), 2 * 0.444564998149499, 1e-15));
+
+        // Twice the wheel base halves the turn: 415 counts a wheel is then
+        // a quarter of the half turn the default geometry gives.
+        EncoderDrive wide(ProfileId::Create2, 0);
+        QVERIFY(wide.odometry().setGeometry(2 * kWheelBaseMm, kMmPerEncoderCount));
+        wide.turnInPlace(415);
+        VERIFY_POSE(wide.pose(), 0.0, 0.0, 1.570165738145039 / 2, 0.0, kTightMm);
+
+        // Twice the wheel diameter doubles the distance.
+        EncoderDrive big(ProfileId::Roomba500, 0);
+        QVERIFY(big.odometry().setGeometry(kWheelBaseMm, Odometry::mmPerEncoderCountFor(144.0)));
+        big.straight(1000);
+        const double d = 2000 * kMmPerEncoderCount;
+        VERIFY_POSE(big.pose(), d, 0.0, 0.0, d, 1e-9);
+
+        // Invalid values change nothing.
+        QVERIFY(!odometry.setGeometry(0, 1));
+        QVERIFY(!odometry.setGeometry(100, -1));
+        QVERIFY(!odometry.setGeometry(std::nan(""), 1));
+        QVERIFY(!odometry.setGeometry(100, std::numeric_limits<double>::infinity()));
+        QCOMPARE(odometry.wheelBaseMm(), kWheelBaseMm);
+        QCOMPARE(odometry.mmPerEncoderCount(), kMmPerEncoderCount);
+
+        // The distance/angle fallback reports mm and degrees and is not scaled.
+        QVERIFY(odometry.setGeometry(470, 1));
+        odometry.update(distanceAngleFrame(ProfileId::Create1, 100, 0));
+        VERIFY_POSE(odometry.pose(), 100.0, 0.0, 0.0, 100.0, kTightMm);
+        // reset() starts over but keeps the measured geometry.
+        odometry.reset();
+        QCOMPARE(odometry.wheelBaseMm(), 470.0);
     }
 };
 

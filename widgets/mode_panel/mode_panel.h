@@ -36,6 +36,9 @@ public:
 
     QPushButton *button(const QString &name) const; // "start", "safe", "full", "demo", ...
     std::optional<oi::OiMode> highlightedMode() const;
+    // Sends a mode or cleaning command as its button would (Full asks first);
+    // for other inputs such as a gamepad's mode buttons.
+    void request(oi::Command command);
     QString safetyMessage() const;
 
 signals:
@@ -43,7 +46,6 @@ signals:
 
 private:
     QPushButton *addButton(const QString &name, const QString &text, oi::Command command);
-    void request(oi::Command command);
     void refreshButtons();
     void showMode(std::optional<oi::OiMode> mode);
 

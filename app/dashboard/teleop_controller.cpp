@@ -1,0 +1,171 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "teleop_controller.h"
+
+#include "command_encoder.h"
+#include "robot_session.h"
+
+namespace {
+QByteArray toBytes(const oi::Bytes &bytes)
+{
+    return QByteArray(reinterpret_cast<const char *>(bytes.data()), qsizetype(bytes.size()));
+}
+} // namespace
+
+TeleopController::TeleopController(RobotSession &session, QObject *parent) : QObject(parent), m_session(session)
+{
+    m_pending.setSingleShot(true);
+    // A coarse timer could hold a command back by several milliseconds.
+    m_pending.setTimerType(Qt::PreciseTimer);
+    connect(&m_pending, &QTimer::timeout, this, &TeleopController::sendPending);
+    connect(&m_session, &RobotSession::stateChanged, this, &TeleopController::onStateChanged);
+    m_state = m_session.state();
+    m_passive = robotIgnoresMotion();
+}
+
+bool TeleopController::isMoving() const
+{
+    return !m_sent.isStop() || (m_pending.isActive() && !m_wanted.isStop());
+}
+
+bool TeleopController::robotIgnoresMotion() const
+{
+    const oi::OiMode mode = m_session.latest().oiMode();
+    return mode == oi::OiMode::Passive || mode == oi::OiMode::Off;
+}
+
+void TeleopController::requestMotion(const MotionCommand &command)
+{
+    m_wanted = command;
+    if (command.isStop()) {
+        m_pending.stop();
+        sendStop(false);
+        return;
+    }
+    checkMode();
+    if (m_passive) {
+        m_pending.stop();
+        return;
+    }
+    // Without fresh data nobody can see what the robot does.
+    if (m_state != oilink::LinkState::Streaming)
+        return;
+    if (m_pending.isActive())
+        return; // the latest request goes out when the timer fires
+    const qint64 since = m_sinceSend.isValid() ? m_sinceSend.elapsed() : kMinIntervalMs;
+    if (since >= kMinIntervalMs)
+        sendPending();
+    else
+        m_pending.start(int(kMinIntervalMs - since));
+}
+
+void TeleopController::sendPending()
+{
+    if (m_wanted.isStop() || m_wanted == m_sent || m_passive || m_state != oilink::LinkState::Streaming)
+        return;
+    sendMotion(m_wanted);
+}
+
+bool TeleopController::sendMotion(const MotionCommand &command)
+{
+    const oi::EncodeResult bytes = command.encode(oi::CommandEncoder(m_session.robotProfile()));
+    if (!bytes) {
+        emit motionRefused(QString::fromStdString(bytes.error().describe()));
+        return false;
+    }
+    if (!m_session.send(toBytes(*bytes)))
+        return false;
+    m_sent = command;
+    m_sinceSend.restart();
+    return true;
+}
+
+void TeleopController::sendStop(bool always)
+{
+    m_pending.stop();
+    const bool moving = !m_sent.isStop();
+    m_wanted = MotionCommand::stop(m_wanted.kind);
+    m_sent = m_wanted;
+    if (!moving && !always)
+        return;
+    if (m_session.send(toBytes(oi::CommandEncoder(m_session.robotProfile()).stopMotion())))
+        m_sinceSend.restart();
+}
+
+void TeleopController::deadManReleased()
+{
+    const bool moving = isMoving();
+    sendStop(false);
+    if (moving)
+        emit motionStopped();
+}
+
+void TeleopController::focusLost()
+{
+    // Key and mouse releases go to whichever window has focus now, so
+    // without this the robot would keep going.
+    sendStop(false);
+    emit motionStopped();
+}
+
+void TeleopController::stopAll()
+{
+    sendStop(true);
+    emit motionStopped();
+}
+
+void TeleopController::stopBeforeQuit()
+{
+    // The session's shutdown sequence stops the robot too; this covers a
+    // command still waiting on the timer.
+    sendStop(false);
+}
+
+void TeleopController::enterSafe()
+{
+    const oi::EncodeResult safe = oi::CommandEncoder(m_session.robotProfile()).safe();
+    if (safe)
+        m_session.send(toBytes(*safe));
+}
+
+void TeleopController::checkMode()
+{
+    const bool passive = robotIgnoresMotion();
+    if (passive == m_passive)
+        return;
+    m_passive = passive;
+    if (passive) {
+        // The robot has already stopped itself; the stop also clears a
+        // command still waiting, and the inputs go back to rest.
+        sendStop(false);
+        emit motionStopped();
+    }
+    emit passiveChanged(passive);
+}
+
+void TeleopController::onStateChanged(oilink::LinkState state)
+{
+    const oilink::LinkState previous = m_state;
+    m_state = state;
+    using S = oilink::LinkState;
+    switch (state) {
+    case S::Stale:
+        // Data stopped while the port is open: stop whatever moves.
+        if (previous == S::Streaming) {
+            sendStop(true);
+            emit motionStopped();
+        }
+        break;
+    case S::Lost:
+    case S::Reconnecting:
+    case S::Closed: {
+        const bool moving = isMoving();
+        sendStop(false);
+        if (moving)
+            emit motionStopped();
+        break;
+    }
+    case S::Connecting:
+    case S::Streaming:
+        break;
+    }
+}

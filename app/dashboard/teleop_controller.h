@@ -1,0 +1,76 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "motion_command.h"
+#include "robot_link_thread.h"
+
+#include <QElapsedTimer>
+#include <QObject>
+#include <QTimer>
+
+class RobotSession;
+
+// The sending rules for motion, in one place, for every input (drive pad,
+// keyboard, gamepad). Lives in the GUI thread next to the session.
+//  - At most one drive command every kMinIntervalMs: requests in between are
+//    coalesced and the latest wins; nothing is sent when nothing changed.
+//  - A stop goes out at once, and the final stop always goes out.
+//  - Stop is the profile's stopMotion(): Drive 0,0 and motors off. It is sent
+//    when the dead-man is released, the window loses focus, data goes stale,
+//    the link drops, and before quitting.
+//  - In Passive (or Off) mode the robot ignores motion, so motion is refused
+//    and passiveChanged(true) lets the input offer Safe mode instead.
+class TeleopController : public QObject {
+    Q_OBJECT
+public:
+    // The robot reads commands on its 15 ms cycle; sending faster only
+    // queues bytes behind the serial line.
+    static constexpr int kMinIntervalMs = 15;
+
+    explicit TeleopController(RobotSession &session, QObject *parent = nullptr);
+
+    // Motion is refused: the robot is in Passive or Off mode.
+    bool isPassive() const { return m_passive; }
+    // Whether motion other than stop was sent (or waits to be sent) since
+    // the last stop.
+    bool isMoving() const;
+    MotionCommand lastSent() const { return m_sent; }
+
+public slots:
+    void requestMotion(const MotionCommand &command);
+    // The operator let go of the pad, the keys or the gamepad's dead-man.
+    void deadManReleased();
+    void focusLost();
+    // Space or Esc: stop, whatever sent the motion.
+    void stopAll();
+    // Before the session closes: stop, then the session's own shutdown.
+    void stopBeforeQuit();
+    void enterSafe();
+    // Reads the robot's mode from the session's latest snapshot; the
+    // display timer calls it. Safe mode dropping to Passive by itself (a
+    // cliff, a wheel drop) ends the motion.
+    void checkMode();
+
+signals:
+    void passiveChanged(bool passive);
+    // The inputs go back to rest: a stop was decided here, not by them.
+    void motionStopped();
+    // A command the profile refused; for the status bar.
+    void motionRefused(const QString &reason);
+
+private:
+    void onStateChanged(oilink::LinkState state);
+    void sendPending();
+    bool sendMotion(const MotionCommand &command);
+    // Sends stopMotion(); with `always`, even when nothing is moving.
+    void sendStop(bool always);
+    bool robotIgnoresMotion() const;
+
+    RobotSession &m_session;
+    QTimer m_pending;
+    QElapsedTimer m_sinceSend;
+    MotionCommand m_wanted;
+    MotionCommand m_sent;
+    bool m_passive = false;
+    oilink::LinkState m_state = oilink::LinkState::Closed;
+};

@@ -1,0 +1,321 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "odometry_map.h"
+
+#include <QDir>
+#include <QDoubleSpinBox>
+#include <QLabel>
+#include <QPushButton>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QWheelEvent>
+
+#include <cmath>
+#include <memory>
+
+using oi::ProfileId;
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// Encoder counts as the profile's packets carry them: Roomba 500 unsigned,
+// Create 2 signed, both modulo 65536. Packet numbers spelled out so a swapped
+// wheel shows: the Roomba 500 sends right in 43, the Create 2 left in 43.
+oi::SensorSnapshot encoderFrame(ProfileId id, long long left, long long right)
+{
+    const auto wire = [id](long long counts) {
+        const auto bits = static_cast<std::uint16_t>(((counts % 65536) + 65536) % 65536);
+        return id == ProfileId::Roomba500 ? std::int32_t(bits) : std::int32_t(std::int16_t(bits));
+    };
+    oi::SensorSnapshot frame(oi::profile(id));
+    const bool roomba500 = id == ProfileId::Roomba500;
+    frame.set(roomba500 ? 44 : 43, wire(left));
+    frame.set(roomba500 ? 43 : 44, wire(right));
+    return frame;
+}
+
+// Feeds `frames` frames, each moving the wheels by `left`/`right` counts,
+// after a first frame at zero that only sets the reference.
+void drive(OdometryMap &map, ProfileId id, int frames, int left, int right)
+{
+    map.addSnapshot(encoderFrame(id, 0, 0));
+    for (int i = 1; i <= frames; ++i)
+        map.addSnapshot(encoderFrame(id, 1LL * i * left, 1LL * i * right));
+}
+
+bool near(double a, double b, double tolerance = 1e-9) { return std::abs(a - b) <= tolerance; }
+
+QColor pixelAt(const QImage &image, QPointF widgetPoint, qreal ratio)
+{
+    return image.pixelColor((widgetPoint * ratio).toPoint());
+}
+
+} // namespace
+
+class TestOdometryMap : public QObject {
+    Q_OBJECT
+
+    std::unique_ptr<OdometryMap> m_map;
+
+private slots:
+    void init()
+    {
+        m_map = std::make_unique<OdometryMap>();
+        m_map->resize(800, 600);
+        m_map->show();
+        QVERIFY(QTest::qWaitForWindowExposed(m_map.get()));
+    }
+    void cleanup() { m_map.reset(); }
+
+    void startsAtOrigin()
+    {
+        QCOMPARE(m_map->pose().xMm, 0.0);
+        QCOMPARE(m_map->trail().size(), 1);
+        QCOMPARE(m_map->wheelBaseMm(), oi::kWheelBaseMm);
+        QCOMPARE(m_map->wheelDiameterMm(), 72.0);
+    }
+
+    void straightDrive_data()
+    {
+        QTest::addColumn<ProfileId>("profile");
+        QTest::newRow("create2") << ProfileId::Create2;
+        QTest::newRow("roomba500") << ProfileId::Roomba500;
+    }
+    void straightDrive()
+    {
+        QFETCH(ProfileId, profile);
+        m_map->setProfile(oi::profile(profile));
+        drive(*m_map, profile, 10, 20, 20);
+        const double d = 200 * oi::kMmPerEncoderCount;
+        QVERIFY2(near(m_map->pose().xMm, d), qPrintable(QString::number(m_map->pose().xMm, 'g', 17)));
+        QCOMPARE(m_map->pose().yMm, 0.0);
+        QCOMPARE(m_map->pose().thetaRad, 0.0);
+        QVERIFY(near(m_map->pose().travelledMm, d));
+        // The start point and one point a moving frame; the first frame only
+        // set the reference.
+        QCOMPARE(m_map->trail().size(), 11);
+        QVERIFY(near(m_map->trail().last().x(), d));
+        QVERIFY(near(m_map->trail().at(5).x(), 100 * oi::kMmPerEncoderCount));
+        QVERIFY2(m_map->poseText().startsWith("x 89 mm   y 0 mm   θ 0.0°"), qPrintable(m_map->poseText()));
+    }
+
+    void framesWithoutMotionAddNothing()
+    {
+        m_map->addSnapshot(encoderFrame(ProfileId::Create2, 5, 5));
+        m_map->addSnapshot(encoderFrame(ProfileId::Create2, 5, 5));
+        oi::SensorSnapshot bumpsOnly;
+        bumpsOnly.set(7, 1);
+        m_map->addSnapshot(bumpsOnly);
+        QCOMPARE(m_map->trail().size(), 1);
+    }
+
+    void trailIsBounded()
+    {
+        drive(*m_map, ProfileId::Create2, OdometryMap::kMaxTrailPoints + 5, 1, 1);
+        QCOMPARE(m_map->trail().size(), OdometryMap::kMaxTrailPoints);
+        QVERIFY(near(m_map->trail().last().x(), (OdometryMap::kMaxTrailPoints + 5) * oi::kMmPerEncoderCount, 1e-6));
+        // The oldest points went first.
+        QVERIFY(near(m_map->trail().first().x(), 6 * oi::kMmPerEncoderCount, 1e-9));
+    }
+
+    void resetClearsTrailAndOdometry()
+    {
+        drive(*m_map, ProfileId::Create2, 10, 20, 20);
+        QTest::mouseClick(m_map->findChild<QPushButton *>("reset"), Qt::LeftButton);
+        QCOMPARE(m_map->trail().size(), 1);
+        QCOMPARE(m_map->pose().xMm, 0.0);
+        QCOMPARE(m_map->pose().travelledMm, 0.0);
+        // The next frame only sets the reference again.
+        m_map->addSnapshot(encoderFrame(ProfileId::Create2, 1000, 1000));
+        QCOMPARE(m_map->pose().xMm, 0.0);
+        m_map->addSnapshot(encoderFrame(ProfileId::Create2, 1010, 1010));
+        QVERIFY(near(m_map->pose().xMm, 10 * oi::kMmPerEncoderCount));
+        QCOMPARE(m_map->trail().size(), 2);
+    }
+
+    void wheelBaseChangesTheTurn()
+    {
+        drive(*m_map, ProfileId::Create2, 10, -40, 40);
+        const double theta = m_map->pose().thetaRad;
+        QVERIFY(near(theta, 2 * 400 * oi::kMmPerEncoderCount / oi::kWheelBaseMm, 1e-12));
+
+        m_map->reset();
+        m_map->findChild<QDoubleSpinBox *>("wheelBase")->setValue(2 * oi::kWheelBaseMm);
+        QCOMPARE(m_map->wheelBaseMm(), 2 * oi::kWheelBaseMm);
+        drive(*m_map, ProfileId::Create2, 10, -40, 40);
+        QVERIFY2(near(m_map->pose().thetaRad, theta / 2, 1e-12),
+                 qPrintable(QString::number(m_map->pose().thetaRad, 'g', 17)));
+    }
+
+    void wheelDiameterChangesTheDistance()
+    {
+        m_map->setWheelDiameterMm(144);
+        QCOMPARE(m_map->findChild<QDoubleSpinBox *>("wheelDiameter")->value(), 144.0);
+        drive(*m_map, ProfileId::Create2, 10, 20, 20);
+        QVERIFY(near(m_map->pose().xMm, 2 * 200 * oi::kMmPerEncoderCount, 1e-9));
+    }
+
+    void create1HasNoGeometry()
+    {
+        m_map->setProfile(oi::profile(ProfileId::Create1));
+        QVERIFY(!m_map->findChild<QDoubleSpinBox *>("wheelBase")->isEnabled());
+        QVERIFY(!m_map->findChild<QDoubleSpinBox *>("wheelDiameter")->isEnabled());
+        oi::SensorSnapshot frame(oi::profile(ProfileId::Create1));
+        frame.set(19, 100);
+        frame.set(20, 0);
+        m_map->addSnapshot(frame);
+        QCOMPARE(m_map->pose().xMm, 100.0);
+        QCOMPARE(m_map->trail().size(), 2);
+    }
+
+    void zoom()
+    {
+        const double start = m_map->scale();
+        const auto spanPx = [this] {
+            return m_map->widgetPointFor({1000, 0}).x() - m_map->widgetPointFor({0, 0}).x();
+        };
+        QVERIFY(near(spanPx(), 1000 * start));
+        QTest::mouseClick(m_map->findChild<QPushButton *>("zoomIn"), Qt::LeftButton);
+        QVERIFY(near(m_map->scale(), start * 1.25));
+        QVERIFY(near(spanPx(), 1250 * start));
+        QTest::mouseClick(m_map->findChild<QPushButton *>("zoomOut"), Qt::LeftButton);
+        QTest::mouseClick(m_map->findChild<QPushButton *>("zoomOut"), Qt::LeftButton);
+        QVERIFY(near(m_map->scale(), start / 1.25));
+
+        // The wheel zooms about the cursor: the floor point under it stays.
+        const QPointF cursor = m_map->mapRect().center() + QPointF(100, 50);
+        const QPointF c = QRectF(m_map->mapRect()).center();
+        const double s = m_map->scale();
+        const QPointF floor(m_map->viewCentreMm().x() + (cursor.x() - c.x()) / s,
+                            m_map->viewCentreMm().y() - (cursor.y() - c.y()) / s);
+        QWheelEvent wheel(cursor, m_map->mapToGlobal(cursor), QPoint(), QPoint(0, 120), Qt::NoButton,
+                          Qt::NoModifier, Qt::NoScrollPhase, false);
+        QApplication::sendEvent(m_map.get(), &wheel);
+        QVERIFY(near(m_map->scale(), s * 1.25));
+        const QPointF after = m_map->widgetPointFor(floor);
+        QVERIFY(near(after.x(), cursor.x(), 1e-6) && near(after.y(), cursor.y(), 1e-6));
+
+        m_map->setScale(1e6);
+        QCOMPARE(m_map->scale(), OdometryMap::kMaxScale);
+    }
+
+    void dragPans()
+    {
+        const QPointF before = m_map->viewCentreMm();
+        const QPoint from = m_map->mapRect().center();
+        QTest::mousePress(m_map.get(), Qt::LeftButton, Qt::NoModifier, from);
+        QTest::mouseMove(m_map.get(), from + QPoint(50, 20));
+        QTest::mouseRelease(m_map.get(), Qt::LeftButton, Qt::NoModifier, from + QPoint(50, 20));
+        // Dragging right and down shows what lies left (-x) and up (+y).
+        QVERIFY(near(m_map->viewCentreMm().x(), before.x() - 50 / m_map->scale(), 1e-6));
+        QVERIFY(near(m_map->viewCentreMm().y(), before.y() + 20 / m_map->scale(), 1e-6));
+    }
+
+    void drawsWorldAndTruePose()
+    {
+        m_map->setViewCentreMm({1000, 0});
+        const sim::World world = sim::World::classroom();
+        QVERIFY(!world.walls.empty());
+        const sim::Segment &wall = world.walls.front();
+        // A point a third of the way along the wall, off the grid lines.
+        const QPointF wallMm(wall.x1 + (wall.x2 - wall.x1) / 3 + 7, wall.y1 + (wall.y2 - wall.y1) / 3 + 7);
+        const QPointF trueMm(1730, 830);
+
+        const qreal ratio = m_map->devicePixelRatioF();
+        const QImage empty = m_map->grab().toImage();
+        const QPointF wallPx = m_map->widgetPointFor(wallMm);
+        const QPointF truePx = m_map->widgetPointFor(trueMm);
+        QVERIFY(m_map->mapRect().contains(wallPx.toPoint()));
+        QVERIFY(m_map->mapRect().contains(truePx.toPoint()));
+
+        m_map->setWorld(world);
+        const QImage withWorld = m_map->grab().toImage();
+        QVERIFY(pixelAt(withWorld, wallPx, ratio) != pixelAt(empty, wallPx, ratio));
+        if (!world.dropOffs.empty()) {
+            const sim::Area &a = world.dropOffs.front();
+            const QPointF inside = m_map->widgetPointFor({(a.xMin + a.xMax) / 2 + 3, (a.yMin + a.yMax) / 2 + 3});
+            if (m_map->mapRect().contains(inside.toPoint()))
+                QVERIFY(pixelAt(withWorld, inside, ratio) != pixelAt(empty, inside, ratio));
+        }
+
+        // The robot is drawn 340 mm across: check a point inside its outline.
+        const QPointF ring = m_map->widgetPointFor(trueMm + QPointF(0, -170));
+        QCOMPARE(pixelAt(withWorld, ring, ratio), m_map->palette().color(QPalette::Base));
+        oi::Pose truth;
+        truth.xMm = trueMm.x();
+        truth.yMm = trueMm.y();
+        truth.thetaRad = kPi / 2;
+        m_map->setTruePose(truth);
+        const QImage withTruth = m_map->grab().toImage();
+        QVERIFY(pixelAt(withTruth, ring, ratio) != pixelAt(withWorld, ring, ratio));
+        QVERIFY2(m_map->poseText().contains("drift 1919 mm"), qPrintable(m_map->poseText()));
+
+        m_map->setWorld(std::nullopt);
+        m_map->setTruePose(std::nullopt);
+        const QImage cleared = m_map->grab().toImage();
+        QCOMPARE(pixelAt(cleared, wallPx, ratio), pixelAt(empty, wallPx, ratio));
+        QCOMPARE(pixelAt(cleared, ring, ratio), pixelAt(empty, ring, ratio));
+    }
+
+    void poseLabelFollowsOnDisplayTimer()
+    {
+        drive(*m_map, ProfileId::Create2, 10, 20, 20);
+        QLabel *label = m_map->findChild<QLabel *>("poseLabel");
+        QTRY_COMPARE(label->text(), m_map->poseText());
+        QVERIFY(label->text().startsWith("x 89 mm"));
+    }
+
+    void screenshots()
+    {
+        QTemporaryDir temporary;
+        const QString dir = qEnvironmentVariableIsSet("ROOMBA_SCREENSHOTS")
+                                ? qEnvironmentVariable("ROOMBA_SCREENSHOTS")
+                                : temporary.path();
+        QVERIFY(QDir().mkpath(dir));
+        m_map->setWorld(sim::World::classroom());
+        for (auto [id, file] : {std::pair{ProfileId::Create2, "odometry_map_create2.png"},
+                                std::pair{ProfileId::Create1, "odometry_map_create1.png"}}) {
+            m_map->setProfile(oi::profile(id));
+            oi::Pose truth;
+            if (id == ProfileId::Create2) {
+                // A square-ish path whose left wheel reads 2% short.
+                long long left = 0, right = 0;
+                m_map->addSnapshot(encoderFrame(id, left, right));
+                for (int leg = 0; leg < 4; ++leg) {
+                    for (int i = 0; i < 100; ++i) {
+                        left += 20 * 98 / 100;
+                        right += 20;
+                        m_map->addSnapshot(encoderFrame(id, left, right));
+                    }
+                    for (int i = 0; i < 21; ++i) {
+                        left -= 20;
+                        right += 20;
+                        m_map->addSnapshot(encoderFrame(id, left, right));
+                    }
+                }
+                truth.xMm = 20;
+                truth.yMm = -10;
+            } else {
+                for (int i = 0; i < 60; ++i) {
+                    oi::SensorSnapshot frame(oi::profile(id));
+                    frame.set(19, 25);
+                    frame.set(20, i % 2);
+                    m_map->addSnapshot(frame);
+                }
+                truth.xMm = 1500;
+                truth.yMm = 100;
+                truth.thetaRad = 0.4;
+            }
+            m_map->setTruePose(truth);
+            QTRY_COMPARE(m_map->findChild<QLabel *>("poseLabel")->text(), m_map->poseText());
+            QCoreApplication::sendPostedEvents(); // the label's new width
+            const QImage image = m_map->grab().toImage();
+            const QString path = QDir(dir).filePath(file);
+            QVERIFY(image.save(path));
+            qInfo("screenshot: %s", qPrintable(path));
+        }
+    }
+};
+
+QTEST_MAIN(TestOdometryMap)
+#include "tst_odometry_map.moc"

@@ -1,0 +1,349 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "drive_pad.h"
+
+#include "command_encoder.h"
+
+#include <QComboBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QMouseEvent>
+#include <QPainter>
+#include <QPainterPath>
+#include <QPushButton>
+#include <QSlider>
+#include <QStandardItemModel>
+#include <QVBoxLayout>
+
+#include <algorithm>
+#include <cmath>
+
+// The round area itself: paints the zones, the knob and the command, and
+// turns mouse positions into knob positions for the pad.
+class DrivePadArea : public QWidget {
+public:
+    static constexpr int kMargin = 8;
+
+    explicit DrivePadArea(DrivePad *pad) : QWidget(pad), m_pad(pad)
+    {
+        setObjectName("drivePadArea");
+        setMinimumSize(150, 150);
+        setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Expanding);
+        // Clicking the pad takes the focus out of text fields, so the drive
+        // keys work from here.
+        setFocusPolicy(Qt::StrongFocus);
+        // Touch arrives as synthesized mouse events.
+        setAttribute(Qt::WA_AcceptTouchEvents, false);
+    }
+
+    // A stop decided elsewhere ends the drag: only a new press drives again.
+    void cancelDrag() { m_dragging = false; }
+
+    double radius() const { return std::max(10.0, std::min(width(), height()) / 2.0 - kMargin - fontMetrics().height()); }
+    QPointF centre() const { return QPointF(width() / 2.0, radius() + kMargin); }
+
+    QPointF knobAt(QPointF pos) const
+    {
+        QPointF k((pos.x() - centre().x()) / radius(), (centre().y() - pos.y()) / radius());
+        const double r = std::hypot(k.x(), k.y());
+        return r > 1.0 ? k / r : k;
+    }
+    QPointF pointFor(QPointF knob) const
+    {
+        return centre() + QPointF(knob.x() * radius(), -knob.y() * radius());
+    }
+
+protected:
+    void mousePressEvent(QMouseEvent *event) override
+    {
+        if (event->button() != Qt::LeftButton)
+            return;
+        m_dragging = true;
+        m_pad->moveKnob(knobAt(event->position()));
+    }
+    void mouseMoveEvent(QMouseEvent *event) override
+    {
+        if (m_dragging && (event->buttons() & Qt::LeftButton))
+            m_pad->moveKnob(knobAt(event->position()));
+    }
+    void mouseReleaseEvent(QMouseEvent *event) override
+    {
+        if (event->button() != Qt::LeftButton || !m_dragging)
+            return;
+        m_dragging = false;
+        m_pad->release();
+    }
+    void changeEvent(QEvent *event) override
+    {
+        // A pad disabled mid-drag (Passive mode) must not resume on the next move.
+        if (event->type() == QEvent::EnabledChange && !isEnabled())
+            m_dragging = false;
+        QWidget::changeEvent(event);
+    }
+    void paintEvent(QPaintEvent *) override
+    {
+        QPainter p(this);
+        p.setRenderHint(QPainter::Antialiasing);
+        const QPalette &pal = palette();
+        const QPointF c = centre();
+        const double r = radius();
+        const QColor base = pal.color(isEnabled() ? QPalette::Active : QPalette::Disabled, QPalette::Base);
+        const QColor line = pal.color(isEnabled() ? QPalette::Active : QPalette::Disabled, QPalette::Mid);
+        const QColor accent = pal.color(isEnabled() ? QPalette::Active : QPalette::Disabled, QPalette::Highlight);
+
+        p.setPen(QPen(line, 1.5));
+        p.setBrush(base);
+        p.drawEllipse(c, r, r);
+
+        // The straight (vertical) and turn-in-place (horizontal) zones.
+        const QRectF box(c.x() - r, c.y() - r, 2 * r, 2 * r);
+        QColor zone = accent;
+        zone.setAlpha(35);
+        p.setPen(Qt::NoPen);
+        p.setBrush(zone);
+        const double z = DrivePad::kZoneDegrees;
+        for (double middle : {90.0, 270.0, 0.0, 180.0}) {
+            QPainterPath wedge(c);
+            wedge.arcTo(box, middle - z, 2 * z);
+            wedge.closeSubpath();
+            p.drawPath(wedge);
+        }
+        p.setPen(QPen(line, 1, Qt::DashLine));
+        p.setBrush(Qt::NoBrush);
+        p.drawEllipse(c, r * DrivePad::kDeadZone, r * DrivePad::kDeadZone);
+        p.drawLine(QPointF(c.x() - r, c.y()), QPointF(c.x() + r, c.y()));
+        p.drawLine(QPointF(c.x(), c.y() - r), QPointF(c.x(), c.y() + r));
+
+        const QPointF knob = pointFor(m_pad->knob());
+        const bool moving = !m_pad->currentCommand().isStop();
+        p.setPen(QPen(accent, 2));
+        if (moving)
+            p.drawLine(c, knob);
+        p.setBrush(moving ? accent : pal.color(QPalette::Button));
+        p.setPen(QPen(line, 1.5));
+        const double knobRadius = std::max(8.0, r * 0.12);
+        p.drawEllipse(knob, knobRadius, knobRadius);
+
+        p.setPen(pal.color(isEnabled() ? QPalette::Active : QPalette::Disabled, QPalette::WindowText));
+        const QRectF text(0, c.y() + r + 2, width(), fontMetrics().height() + 4);
+        p.drawText(text, Qt::AlignHCenter | Qt::AlignTop, DrivePad::describe(m_pad->currentCommand()));
+    }
+
+private:
+    DrivePad *m_pad;
+    bool m_dragging = false;
+};
+
+DrivePad::DrivePad(QWidget *parent) : QWidget(parent)
+{
+    m_mapping = new QComboBox(this);
+    m_mapping->setObjectName("mapping");
+    m_mapping->addItem(tr("Drive (137): speed and radius"), int(Mapping::Drive));
+    m_mapping->addItem(tr("Drive Direct (145): each wheel"), int(Mapping::DriveDirect));
+    m_mapping->addItem(tr("Drive PWM (146): each wheel, raw power"), int(Mapping::DrivePwm));
+    connect(m_mapping, &QComboBox::currentIndexChanged, this, [this] {
+        // A new mapping must not keep the robot going on the old one's terms.
+        resetToCentre();
+        emit motionRequested(m_command);
+    });
+
+    m_speed = new QSlider(Qt::Horizontal, this);
+    m_speed->setObjectName("speedLimit");
+    m_speed->setRange(10, kMaxSpeedLimit);
+    m_speed->setSingleStep(10);
+    m_speed->setPageStep(50);
+    m_speed->setValue(kDefaultSpeedLimit);
+    m_speedLabel = new QLabel(this);
+    m_speedLabel->setMinimumWidth(m_speedLabel->fontMetrics().horizontalAdvance("500 mm/s "));
+    connect(m_speed, &QSlider::valueChanged, this, [this](int value) {
+        m_speedLabel->setText(tr("%1 mm/s").arg(value));
+        if (!m_command.isStop())
+            updateCommand(m_knob);
+    });
+    m_speedLabel->setText(tr("%1 mm/s").arg(m_speed->value()));
+
+    m_passiveBar = new QWidget(this);
+    m_passiveLabel = new QLabel(tr("Passive mode: enter Safe to drive"), m_passiveBar);
+    m_passiveLabel->setWordWrap(true);
+    m_enterSafe = new QPushButton(tr("Enter Safe"), m_passiveBar);
+    m_enterSafe->setObjectName("enterSafe");
+    connect(m_enterSafe, &QPushButton::clicked, this, &DrivePad::safeRequested);
+    auto *passiveRow = new QHBoxLayout(m_passiveBar);
+    passiveRow->setContentsMargins(0, 0, 0, 0);
+    passiveRow->addWidget(m_passiveLabel, 1);
+    passiveRow->addWidget(m_enterSafe);
+    m_passiveBar->hide();
+
+    m_area = new DrivePadArea(this);
+
+    auto *speedRow = new QHBoxLayout;
+    speedRow->addWidget(new QLabel(tr("Speed limit"), this));
+    speedRow->addWidget(m_speed, 1);
+    speedRow->addWidget(m_speedLabel);
+
+    auto *layout = new QVBoxLayout(this);
+    layout->setContentsMargins(4, 4, 4, 4);
+    layout->setSpacing(4);
+    layout->addWidget(m_mapping);
+    layout->addLayout(speedRow);
+    layout->addWidget(m_passiveBar);
+    layout->addWidget(m_area, 1);
+    setProfile(*m_profile);
+}
+
+void DrivePad::setProfile(const oi::RobotProfile &profile)
+{
+    m_profile = &profile;
+    auto *model = qobject_cast<QStandardItemModel *>(m_mapping->model());
+    for (Mapping m : {Mapping::Drive, Mapping::DriveDirect, Mapping::DrivePwm}) {
+        QStandardItem *item = model->item(int(m));
+        item->setEnabled(isMappingAvailable(m));
+        item->setToolTip(mappingDisabledReason(m));
+    }
+    if (!isMappingAvailable(mapping()))
+        setMapping(Mapping::Drive);
+}
+
+bool DrivePad::isMappingAvailable(Mapping mapping) const { return mappingDisabledReason(mapping).isEmpty(); }
+
+QString DrivePad::mappingDisabledReason(Mapping mapping) const
+{
+    const oi::Command command = mapping == Mapping::DrivePwm      ? oi::Command::DrivePwm
+                                : mapping == Mapping::DriveDirect ? oi::Command::DriveDirect
+                                                                  : oi::Command::Drive;
+    if (const auto refused = oi::CommandEncoder(*m_profile).refuse(command))
+        return QString::fromStdString(refused->describe());
+    return {};
+}
+
+DrivePad::Mapping DrivePad::mapping() const { return Mapping(m_mapping->currentData().toInt()); }
+void DrivePad::setMapping(Mapping mapping) { m_mapping->setCurrentIndex(int(mapping)); }
+int DrivePad::speedLimit() const { return m_speed->value(); }
+void DrivePad::setSpeedLimit(int mmPerSecond) { m_speed->setValue(mmPerSecond); }
+
+void DrivePad::setPassive(bool passive)
+{
+    if (passive == m_passive)
+        return;
+    m_passive = passive;
+    m_passiveBar->setVisible(passive);
+    m_area->setEnabled(!passive);
+    if (passive)
+        resetToCentre();
+}
+
+void DrivePad::resetToCentre()
+{
+    static_cast<DrivePadArea *>(m_area)->cancelDrag();
+    m_knob = {};
+    m_command = MotionCommand::stop(MotionCommand::Kind(int(mapping())));
+    m_area->update();
+}
+
+QPointF DrivePad::knobAt(QPoint areaPos) const { return static_cast<DrivePadArea *>(m_area)->knobAt(areaPos); }
+QPoint DrivePad::areaPointFor(QPointF knob) const
+{
+    return static_cast<DrivePadArea *>(m_area)->pointFor(knob).toPoint();
+}
+
+void DrivePad::moveKnob(QPointF knob)
+{
+    if (m_passive)
+        return;
+    updateCommand(knob);
+}
+
+void DrivePad::release()
+{
+    resetToCentre();
+    emit motionRequested(m_command);
+}
+
+void DrivePad::updateCommand(QPointF knob)
+{
+    m_knob = knob;
+    const MotionCommand command = commandAt(knob);
+    m_area->update();
+    if (command == m_command)
+        return;
+    m_command = command;
+    emit motionRequested(m_command);
+}
+
+MotionCommand DrivePad::commandAt(QPointF knob) const
+{
+    const auto kind = MotionCommand::Kind(int(mapping()));
+    const double r = std::min(1.0, std::hypot(knob.x(), knob.y()));
+    if (r < kDeadZone)
+        return MotionCommand::stop(kind);
+    const double x = knob.x() / std::max(1.0, std::hypot(knob.x(), knob.y()));
+    const double y = knob.y() / std::max(1.0, std::hypot(knob.x(), knob.y()));
+    const int limit = speedLimit();
+
+    if (kind == MotionCommand::Kind::Drive) {
+        MotionCommand c;
+        const int speed = int(std::lround(limit * r));
+        if (speed == 0)
+            return c;
+        const double angle = std::abs(std::atan2(x, y)) * 180.0 / M_PI; // 0 ahead, 180 behind
+        if (angle <= kZoneDegrees) {
+            c.velocity = speed;
+        } else if (angle >= 180.0 - kZoneDegrees) {
+            c.velocity = -speed;
+        } else if (std::abs(angle - 90.0) <= kZoneDegrees) {
+            // ERRATA 14: ±1 turns in place; the velocity sets how fast.
+            c.velocity = speed;
+            c.radius = x > 0 ? oi::kRadiusTurnInPlaceClockwise : oi::kRadiusTurnInPlaceCounterClockwise;
+        } else {
+            // Tighter circles towards the horizontal: 2000 mm at the edge of
+            // the straight zone down to 40 mm at the turn-in-place zone.
+            const bool forward = angle < 90.0;
+            const double a = forward ? angle : 180.0 - angle;
+            const double t = (a - kZoneDegrees) / (90.0 - 2 * kZoneDegrees);
+            const int radius = int(std::lround(kMaxArcRadius * std::pow(double(kMinArcRadius) / kMaxArcRadius, t)));
+            c.velocity = forward ? speed : -speed;
+            c.radius = x < 0 ? radius : -radius; // positive turns left
+        }
+        return c;
+    }
+
+    // Each wheel: forward plus or minus the turn, scaled back into the limit.
+    double right = limit * (y - x);
+    double left = limit * (y + x);
+    const double peak = std::max(std::abs(right), std::abs(left));
+    if (peak > limit) {
+        right *= limit / peak;
+        left *= limit / peak;
+    }
+    MotionCommand c{kind};
+    if (kind == MotionCommand::Kind::DrivePwm) {
+        right = right * kMaxPwm / kMaxSpeedLimit;
+        left = left * kMaxPwm / kMaxSpeedLimit;
+    }
+    c.right = int(std::lround(right));
+    c.left = int(std::lround(left));
+    return c;
+}
+
+QString DrivePad::describe(const MotionCommand &c)
+{
+    if (c.isStop())
+        return tr("Stopped");
+    switch (c.kind) {
+    case MotionCommand::Kind::DriveDirect:
+        return tr("Drive Direct: right %1, left %2 mm/s").arg(c.right).arg(c.left);
+    case MotionCommand::Kind::DrivePwm:
+        return tr("Drive PWM: right %1, left %2").arg(c.right).arg(c.left);
+    case MotionCommand::Kind::Drive:
+        break;
+    }
+    QString radius;
+    if (c.radius == oi::kRadiusStraight || c.radius == oi::kRadiusStraightAlt)
+        radius = tr("straight");
+    else if (c.radius == oi::kRadiusTurnInPlaceClockwise)
+        radius = tr("turn in place, clockwise");
+    else if (c.radius == oi::kRadiusTurnInPlaceCounterClockwise)
+        radius = tr("turn in place, anticlockwise");
+    else
+        radius = tr("radius %1 mm").arg(c.radius);
+    return tr("Drive %1 mm/s, %2").arg(c.velocity).arg(radius);
+}

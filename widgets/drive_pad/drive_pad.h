@@ -1,0 +1,85 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "motion_command.h"
+#include "robot_profile.h"
+
+#include <QPointF>
+#include <QWidget>
+
+class QComboBox;
+class QLabel;
+class QPushButton;
+class QSlider;
+class QWidget;
+
+// A round pad the operator drags with the mouse (or a finger, through mouse
+// synthesis). The distance from the centre sets the speed, scaled to the
+// speed limit; the angle sets the turn. Letting go, or the dead zone in the
+// middle, means stop. The pad only asks: motionRequested() carries every
+// change, and the session's sending rules decide what reaches the robot.
+class DrivePad : public QWidget {
+    Q_OBJECT
+public:
+    enum class Mapping { Drive, DriveDirect, DrivePwm };
+
+    static constexpr int kDefaultSpeedLimit = 200; // mm/s
+    static constexpr int kMaxSpeedLimit = 500;
+    static constexpr double kDeadZone = 0.12;       // of the pad's radius
+    static constexpr double kZoneDegrees = 10.0;    // straight and turn-in-place zones
+    static constexpr int kMaxArcRadius = 2000;      // mm, the Drive command's limit
+    static constexpr int kMinArcRadius = 40;
+    static constexpr int kMaxPwm = 255;
+
+    explicit DrivePad(QWidget *parent = nullptr);
+
+    void setProfile(const oi::RobotProfile &profile);
+    // Passive (or Off) mode: the robot ignores motion, so the pad refuses it
+    // and offers Safe mode instead.
+    void setPassive(bool passive);
+    bool isPassive() const { return m_passive; }
+    // Back to the centre without asking for anything: the stop was decided
+    // elsewhere (mode change, Stop All, focus loss).
+    void resetToCentre();
+
+    Mapping mapping() const;
+    void setMapping(Mapping mapping);
+    int speedLimit() const;
+    void setSpeedLimit(int mmPerSecond);
+    bool isMappingAvailable(Mapping mapping) const;
+    QString mappingDisabledReason(Mapping mapping) const;
+
+    // What a knob at `knob` (the pad's unit disc, x right, y forward) asks
+    // for under the current mapping and speed limit.
+    MotionCommand commandAt(QPointF knob) const;
+    MotionCommand currentCommand() const { return m_command; }
+    QPointF knob() const { return m_knob; }
+    // The round area that takes the mouse; for tests and the benchmark.
+    QWidget *padArea() const { return m_area; }
+    // The knob position under a point of padArea(), and back.
+    QPointF knobAt(QPoint areaPos) const;
+    QPoint areaPointFor(QPointF knob) const;
+    static QString describe(const MotionCommand &command);
+
+signals:
+    void motionRequested(const MotionCommand &command);
+    void safeRequested();
+
+private:
+    friend class DrivePadArea;
+    void moveKnob(QPointF knob);
+    void release();
+    void updateCommand(QPointF knob);
+
+    const oi::RobotProfile *m_profile = &oi::profile(oi::ProfileId::Create2);
+    QComboBox *m_mapping = nullptr;
+    QSlider *m_speed = nullptr;
+    QLabel *m_speedLabel = nullptr;
+    QWidget *m_area = nullptr;
+    QWidget *m_passiveBar = nullptr;
+    QLabel *m_passiveLabel = nullptr;
+    QPushButton *m_enterSafe = nullptr;
+    QPointF m_knob;
+    MotionCommand m_command;
+    bool m_passive = false;
+};

@@ -1,0 +1,316 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "motors_panel.h"
+
+#include "command_catalog.h"
+#include "display_palette.h"
+
+#include <QCheckBox>
+#include <QGridLayout>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QPushButton>
+#include <QSignalBlocker>
+#include <QSlider>
+#include <QSpinBox>
+#include <QVBoxLayout>
+
+namespace {
+
+QString fromView(std::string_view text) { return QString::fromUtf8(text.data(), qsizetype(text.size())); }
+
+QString commandTitle(oi::Command command)
+{
+    const oi::CommandSpec &spec = oi::commandSpec(command);
+    return QString("%1 (%2)").arg(fromView(spec.title)).arg(spec.opcode);
+}
+
+int bitIf(const QCheckBox *box, int bit) { return box->isChecked() ? bit : 0; }
+
+} // namespace
+
+MotorsPanel::MotorsPanel(QWidget *parent) : QWidget(parent)
+{
+    // Roomba 500/600: brushes and vacuum.
+    m_motorsGroup = group("motorsGroup", tr("Brushes and vacuum — Motors (138)"));
+    m_mainBrush = checkBox("mainBrush", tr("Main brush"));
+    m_mainBrushOutward = checkBox("mainBrushOutward", tr("Outward"));
+    m_sideBrush = checkBox("sideBrush", tr("Side brush"));
+    m_sideBrushClockwise = checkBox("sideBrushClockwise", tr("Clockwise"));
+    m_vacuum = checkBox("vacuum", tr("Vacuum"));
+    auto *motors = new QGridLayout(m_motorsGroup);
+    motors->addWidget(m_mainBrush, 0, 0);
+    motors->addWidget(m_mainBrushOutward, 0, 1);
+    motors->addWidget(m_sideBrush, 1, 0);
+    motors->addWidget(m_sideBrushClockwise, 1, 1);
+    motors->addWidget(m_vacuum, 2, 0);
+    // Check boxes only as wide as their text, so a click beside it does nothing.
+    motors->setColumnStretch(2, 1);
+    for (QCheckBox *box : {m_mainBrush, m_mainBrushOutward, m_sideBrush, m_sideBrushClockwise, m_vacuum})
+        connect(box, &QCheckBox::toggled, this, &MotorsPanel::sendMotors);
+
+    m_pwmMotorsGroup = group("pwmMotorsGroup", tr("Duty cycle — PWM Motors (144)"));
+    auto *pwm = new QGridLayout(m_pwmMotorsGroup);
+    m_mainBrushDuty = dutySlider("mainBrushDuty", -127, 127);
+    m_sideBrushDuty = dutySlider("sideBrushDuty", -127, 127);
+    m_vacuumDuty = dutySlider("vacuumDuty", 0, 127);
+    int row = 0;
+    for (auto [text, slider] : {std::pair{tr("Main brush"), m_mainBrushDuty},
+                                std::pair{tr("Side brush"), m_sideBrushDuty},
+                                std::pair{tr("Vacuum"), m_vacuumDuty}}) {
+        pwm->addWidget(new QLabel(text, m_pwmMotorsGroup), row, 0);
+        pwm->addWidget(slider, row, 1);
+        pwm->addWidget(findChild<QLabel *>(slider->objectName() + "Value"), row, 2);
+        connect(slider, &QSlider::valueChanged, this, &MotorsPanel::sendPwmMotors);
+        ++row;
+    }
+    auto *pwmNote = new QLabel(tr("Brushes -127..127 (negative turns them the other way), "
+                                  "vacuum 0..127; 127 is full power."),
+                               m_pwmMotorsGroup);
+    pwmNote->setWordWrap(true);
+    pwm->addWidget(pwmNote, row, 0, 1, 3);
+
+    // The robot releases a pressed button by itself after 1/6 s.
+    m_buttonsGroup = group("buttonsGroup", tr("Press a button — Buttons (165)"));
+    auto *buttons = new QGridLayout(m_buttonsGroup);
+    const std::array<std::tuple<const char *, QString, int>, 8> buttonBits{{
+        {"buttonClean", tr("Clean"), oi::bit::ButtonClean},
+        {"buttonSpot", tr("Spot"), oi::bit::ButtonSpot},
+        {"buttonDock", tr("Dock"), oi::bit::ButtonDock},
+        {"buttonMinute", tr("Minute"), oi::bit::ButtonMinute},
+        {"buttonHour", tr("Hour"), oi::bit::ButtonHour},
+        {"buttonDay", tr("Day"), oi::bit::ButtonDay},
+        {"buttonSchedule", tr("Schedule"), oi::bit::ButtonSchedule},
+        {"buttonClock", tr("Clock"), oi::bit::ButtonClock},
+    }};
+    for (std::size_t i = 0; i < buttonBits.size(); ++i) {
+        const auto &[name, text, bits] = buttonBits[i];
+        auto *b = new QPushButton(text, m_buttonsGroup);
+        b->setObjectName(name);
+        const int pressed = bits;
+        connect(b, &QPushButton::clicked, this,
+                [this, pressed] { send(oi::CommandEncoder(*m_profile).buttons(pressed)); });
+        buttons->addWidget(b, int(i / 4), int(i % 4));
+    }
+
+    // Create: low side drivers, digital outputs and the IR output.
+    m_lowSideGroup = group("lowSideGroup", tr("Low side drivers — Low Side Drivers (138)"));
+    auto *lowSide = new QHBoxLayout(m_lowSideGroup);
+    for (int i = 0; i < 3; ++i) {
+        m_lowSide[i] = checkBox(QString("lowSide%1").arg(i), tr("LD%1").arg(i));
+        lowSide->addWidget(m_lowSide[i]);
+        connect(m_lowSide[i], &QCheckBox::toggled, this, &MotorsPanel::sendLowSideDrivers);
+    }
+    lowSide->addStretch();
+
+    m_pwmLowSideGroup = group("pwmLowSideGroup", tr("Duty cycle — PWM Low Side Drivers (144)"));
+    auto *pwmLowSide = new QGridLayout(m_pwmLowSideGroup);
+    // Top to bottom in the command's byte order: LD2, LD1, LD0.
+    for (int i = 2; i >= 0; --i) {
+        m_lowSideDuty[i] = dutySlider(QString("lowSide%1Duty").arg(i), 0, 128);
+        const int r = 2 - i;
+        pwmLowSide->addWidget(new QLabel(tr("LD%1").arg(i), m_pwmLowSideGroup), r, 0);
+        pwmLowSide->addWidget(m_lowSideDuty[i], r, 1);
+        pwmLowSide->addWidget(findChild<QLabel *>(m_lowSideDuty[i]->objectName() + "Value"), r, 2);
+        connect(m_lowSideDuty[i], &QSlider::valueChanged, this, &MotorsPanel::sendPwmLowSideDrivers);
+    }
+    auto *lowSideNote = new QLabel(tr("0..128; 128 is 100%."), m_pwmLowSideGroup);
+    pwmLowSide->addWidget(lowSideNote, 3, 0, 1, 3);
+
+    m_digitalOutputsGroup = group("digitalOutputsGroup", tr("Cargo bay — Digital Outputs (147)"));
+    auto *outputs = new QHBoxLayout(m_digitalOutputsGroup);
+    for (int i = 0; i < 3; ++i) {
+        m_digitalOutputs[i] = checkBox(QString("digitalOutput%1").arg(i), tr("Output %1").arg(i));
+        outputs->addWidget(m_digitalOutputs[i]);
+        connect(m_digitalOutputs[i], &QCheckBox::toggled, this, &MotorsPanel::sendDigitalOutputs);
+    }
+    outputs->addStretch();
+
+    m_sendIrGroup = group("sendIrGroup", tr("IR output — Send IR (151)"));
+    auto *ir = new QHBoxLayout(m_sendIrGroup);
+    m_irByte = new QSpinBox(m_sendIrGroup);
+    m_irByte->setObjectName("irByte");
+    m_irByte->setRange(0, 255);
+    auto *sendIr = new QPushButton(tr("Send IR"), m_sendIrGroup);
+    sendIr->setObjectName("sendIr");
+    connect(sendIr, &QPushButton::clicked, this,
+            [this] { send(oi::CommandEncoder(*m_profile).sendIr(m_irByte->value())); });
+    ir->addWidget(new QLabel(tr("Byte"), m_sendIrGroup));
+    ir->addWidget(m_irByte);
+    ir->addWidget(sendIr);
+    ir->addStretch();
+
+    m_allOff = new QPushButton(tr("All off"), this);
+    m_allOff->setObjectName("allOff");
+    connect(m_allOff, &QPushButton::clicked, this, &MotorsPanel::allOff);
+
+    m_unavailable = new QLabel(this);
+    m_unavailable->setObjectName("unavailable");
+    m_unavailable->setWordWrap(true);
+    m_lastSent = new QLabel(this);
+    m_lastSent->setObjectName("lastSent");
+    m_lastSent->setFont(display::valueFont(font(), 1.2));
+    m_lastSent->setTextInteractionFlags(Qt::TextSelectableByMouse);
+
+    auto *bottom = new QHBoxLayout;
+    bottom->addWidget(m_allOff);
+    bottom->addWidget(m_lastSent, 1);
+
+    auto *layout = new QVBoxLayout(this);
+    for (QGroupBox *g : {m_motorsGroup, m_pwmMotorsGroup, m_buttonsGroup, m_lowSideGroup,
+                         m_pwmLowSideGroup, m_digitalOutputsGroup, m_sendIrGroup})
+        layout->addWidget(g);
+    layout->addLayout(bottom);
+    layout->addWidget(m_unavailable);
+    layout->addStretch();
+
+    m_lastSent->setText(tr("Last sent: —"));
+    refreshGroups();
+}
+
+QGroupBox *MotorsPanel::group(const QString &name, const QString &title)
+{
+    auto *g = new QGroupBox(title, this);
+    g->setObjectName(name);
+    return g;
+}
+
+QCheckBox *MotorsPanel::checkBox(const QString &name, const QString &text)
+{
+    auto *box = new QCheckBox(text, this);
+    box->setObjectName(name);
+    return box;
+}
+
+QSlider *MotorsPanel::dutySlider(const QString &name, int min, int max)
+{
+    auto *slider = new QSlider(Qt::Horizontal, this);
+    slider->setObjectName(name);
+    slider->setRange(min, max);
+    slider->setMinimumWidth(160);
+    // One command when the handle is let go, not one per pixel dragged.
+    slider->setTracking(false);
+    auto *value = new QLabel("0", this);
+    value->setObjectName(name + "Value");
+    value->setMinimumWidth(value->fontMetrics().horizontalAdvance("-128") + 4);
+    value->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
+    const auto show = [value](int v) { value->setText(QString::number(v)); };
+    connect(slider, &QSlider::sliderMoved, value, show);
+    connect(slider, &QSlider::valueChanged, value, show);
+    return slider;
+}
+
+void MotorsPanel::setProfile(const oi::RobotProfile &profile)
+{
+    m_profile = &profile;
+    clearControls();
+    refreshGroups();
+}
+
+void MotorsPanel::refreshGroups()
+{
+    using C = oi::Command;
+    QStringList missing;
+    for (auto [g, command] : {std::pair{m_motorsGroup, C::Motors}, std::pair{m_pwmMotorsGroup, C::PwmMotors},
+                              std::pair{m_buttonsGroup, C::Buttons}, std::pair{m_lowSideGroup, C::LowSideDrivers},
+                              std::pair{m_pwmLowSideGroup, C::PwmLowSideDrivers},
+                              std::pair{m_digitalOutputsGroup, C::DigitalOutputs},
+                              std::pair{m_sendIrGroup, C::SendIr}}) {
+        const bool available = m_profile->has(command);
+        g->setVisible(available);
+        g->setEnabled(available);
+        if (!available)
+            missing << commandTitle(command);
+    }
+    m_unavailable->setText(missing.isEmpty() ? QString()
+                                             : tr("Not on the %1, so not shown: %2.")
+                                                   .arg(fromView(m_profile->name), missing.join(", ")));
+    m_unavailable->setVisible(!missing.isEmpty());
+    m_allOff->setEnabled(m_profile->has(C::Motors) || m_profile->has(C::LowSideDrivers));
+}
+
+void MotorsPanel::clearControls()
+{
+    for (QCheckBox *box : findChildren<QCheckBox *>()) {
+        const QSignalBlocker block(box);
+        box->setChecked(false);
+    }
+    for (QSlider *slider : findChildren<QSlider *>()) {
+        const QSignalBlocker block(slider);
+        slider->setValue(0);
+        findChild<QLabel *>(slider->objectName() + "Value")->setText("0");
+    }
+}
+
+void MotorsPanel::sendMotors()
+{
+    namespace bit = oi::bit;
+    const int bits = bitIf(m_mainBrush, bit::MotorMainBrush) | bitIf(m_mainBrushOutward, bit::MotorMainBrushOutward)
+                     | bitIf(m_sideBrush, bit::MotorSideBrush)
+                     | bitIf(m_sideBrushClockwise, bit::MotorSideBrushClockwise) | bitIf(m_vacuum, bit::MotorVacuum);
+    send(oi::CommandEncoder(*m_profile).motors(bits));
+}
+
+void MotorsPanel::sendPwmMotors()
+{
+    send(oi::CommandEncoder(*m_profile).pwmMotors(m_mainBrushDuty->value(), m_sideBrushDuty->value(),
+                                                 m_vacuumDuty->value()));
+}
+
+void MotorsPanel::sendLowSideDrivers()
+{
+    int bits = 0;
+    for (int i = 0; i < 3; ++i)
+        bits |= bitIf(m_lowSide[i], 1 << i);
+    send(oi::CommandEncoder(*m_profile).lowSideDrivers(bits));
+}
+
+void MotorsPanel::sendPwmLowSideDrivers()
+{
+    send(oi::CommandEncoder(*m_profile).pwmLowSideDrivers(m_lowSideDuty[2]->value(), m_lowSideDuty[1]->value(),
+                                                         m_lowSideDuty[0]->value()));
+}
+
+void MotorsPanel::sendDigitalOutputs()
+{
+    int bits = 0;
+    for (int i = 0; i < 3; ++i)
+        bits |= bitIf(m_digitalOutputs[i], 1 << i);
+    send(oi::CommandEncoder(*m_profile).digitalOutputs(bits));
+}
+
+void MotorsPanel::allOff()
+{
+    const oi::CommandEncoder encoder(*m_profile);
+    const bool roomba = m_profile->has(oi::Command::Motors);
+    if (!roomba && !m_profile->has(oi::Command::LowSideDrivers))
+        return;
+    oi::Bytes bytes = roomba ? *encoder.motors(0) : *encoder.lowSideDrivers(0);
+    const oi::EncodeResult pwm = roomba ? encoder.pwmMotors(0, 0, 0) : encoder.pwmLowSideDrivers(0, 0, 0);
+    if (pwm)
+        bytes.insert(bytes.end(), pwm->begin(), pwm->end());
+    clearControls();
+    send(bytes);
+}
+
+void MotorsPanel::send(const oi::EncodeResult &bytes)
+{
+    // Controls for commands the profile lacks are hidden and every control's
+    // range is the command's range, so nothing here can be refused.
+    if (bytes)
+        send(*bytes);
+}
+
+void MotorsPanel::send(const oi::Bytes &bytes)
+{
+    QStringList text;
+    for (std::uint8_t b : bytes)
+        text << QString::number(b);
+    m_lastSent->setText(tr("Last sent: %1").arg(text.join(' ')));
+    m_lastSent->setProperty("bytes", text.join(' '));
+    emit sendRequested(QByteArray(reinterpret_cast<const char *>(bytes.data()), qsizetype(bytes.size())));
+}
+
+QString MotorsPanel::lastSentText() const { return m_lastSent->property("bytes").toString(); }
+
+QString MotorsPanel::unavailableText() const { return m_unavailable->isHidden() ? QString() : m_unavailable->text(); }

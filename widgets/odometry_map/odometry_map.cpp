@@ -1,0 +1,430 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "odometry_map.h"
+
+#include "display_palette.h"
+
+#include <QDoubleSpinBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QMouseEvent>
+#include <QPainter>
+#include <QPainterPath>
+#include <QPushButton>
+#include <QTimer>
+#include <QVBoxLayout>
+#include <QWheelEvent>
+
+#include <cmath>
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kRobotDiameterMm = 340;
+constexpr double kZoomStep = 1.25;
+
+} // namespace
+
+OdometryMap::OdometryMap(QWidget *parent) : QWidget(parent)
+{
+    setMinimumSize(360, 280);
+    setMouseTracking(false);
+
+    m_controls = new QWidget(this);
+    m_controls->setObjectName("controls");
+    m_controls->setAutoFillBackground(true);
+    auto *controls = new QHBoxLayout(m_controls);
+    controls->setContentsMargins(4, 4, 4, 4);
+
+    const auto addButton = [this, controls](const char *name, const QString &text, const QString &tip) {
+        auto *b = new QPushButton(text, m_controls);
+        b->setObjectName(name);
+        b->setToolTip(tip);
+        controls->addWidget(b);
+        return b;
+    };
+    connect(addButton("zoomIn", "+", tr("Zoom in")), &QPushButton::clicked, this, &OdometryMap::zoomIn);
+    connect(addButton("zoomOut", "−", tr("Zoom out")), &QPushButton::clicked, this, &OdometryMap::zoomOut);
+    connect(addButton("centre", tr("Centre"), tr("Centre the map on the robot")), &QPushButton::clicked, this,
+            &OdometryMap::centreOnRobot);
+    connect(addButton("reset", tr("Reset"), tr("Clear the trail and start the odometry again at the origin")),
+            &QPushButton::clicked, this, &OdometryMap::reset);
+
+    m_wheelBase = new QDoubleSpinBox(m_controls);
+    m_wheelBase->setObjectName("wheelBase");
+    m_wheelBase->setRange(100, 600);
+    m_wheelBase->setDecimals(1);
+    m_wheelBase->setSuffix(" mm");
+    m_wheelBase->setValue(oi::kWheelBaseMm);
+    m_wheelBase->setToolTip(tr("Distance between the wheels' contact points"));
+    m_wheelDiameter = new QDoubleSpinBox(m_controls);
+    m_wheelDiameter->setObjectName("wheelDiameter");
+    m_wheelDiameter->setRange(20, 200);
+    m_wheelDiameter->setDecimals(2);
+    m_wheelDiameter->setSuffix(" mm");
+    m_wheelDiameter->setValue(kDefaultWheelDiameterMm);
+    m_wheelDiameter->setToolTip(tr("Wheel diameter; 508.8 encoder counts are one turn"));
+    controls->addSpacing(8);
+    controls->addWidget(new QLabel(tr("Wheel base"), m_controls));
+    controls->addWidget(m_wheelBase);
+    controls->addWidget(new QLabel(tr("Wheel Ø"), m_controls));
+    controls->addWidget(m_wheelDiameter);
+    controls->addStretch();
+    connect(m_wheelBase, &QDoubleSpinBox::valueChanged, this, &OdometryMap::applyGeometry);
+    connect(m_wheelDiameter, &QDoubleSpinBox::valueChanged, this, &OdometryMap::applyGeometry);
+
+    m_poseLabel = new QLabel(this);
+    m_poseLabel->setObjectName("poseLabel");
+    m_poseLabel->setFont(display::valueFont(font(), 1.2));
+    m_poseLabel->setAutoFillBackground(true);
+    m_poseLabel->setContentsMargins(6, 2, 6, 2);
+
+    auto *layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(m_controls);
+    layout->addStretch();
+    layout->addWidget(m_poseLabel, 0, Qt::AlignLeft);
+
+    m_displayTimer = new QTimer(this);
+    m_displayTimer->setInterval(33);
+    connect(m_displayTimer, &QTimer::timeout, this, [this] {
+        if (m_dirty)
+            refresh();
+    });
+    m_displayTimer->start();
+
+    reset();
+}
+
+void OdometryMap::setProfile(const oi::RobotProfile &profile)
+{
+    if (m_profile == &profile)
+        return;
+    m_profile = &profile;
+    // The Create 1 has no encoders: it reports distance and angle itself.
+    const bool encoders = profile.id != oi::ProfileId::Create1;
+    for (QDoubleSpinBox *box : {m_wheelBase, m_wheelDiameter}) {
+        box->setEnabled(encoders);
+        box->setToolTip(encoders ? box->toolTip()
+                                 : tr("The %1 has no wheel encoders; it reports distance and angle itself")
+                                       .arg(QString::fromUtf8(profile.name.data(), qsizetype(profile.name.size()))));
+    }
+    reset();
+}
+
+void OdometryMap::addSnapshot(const oi::SensorSnapshot &snapshot)
+{
+    const oi::Pose before = m_odometry.pose();
+    m_odometry.update(snapshot);
+    const oi::Pose &after = m_odometry.pose();
+    if (after.xMm != before.xMm || after.yMm != before.yMm || after.thetaRad != before.thetaRad) {
+        appendTrailPoint();
+        m_dirty = true;
+    }
+}
+
+void OdometryMap::appendTrailPoint()
+{
+    const oi::Pose &p = m_odometry.pose();
+    const QPointF point(p.xMm, p.yMm);
+    // A turn in place moves nothing on the floor.
+    if (!m_trail.isEmpty() && m_trail.constLast() == point)
+        return;
+    if (m_trail.size() >= kMaxTrailPoints)
+        m_trail.removeFirst();
+    m_trail.append(point);
+}
+
+void OdometryMap::reset()
+{
+    m_odometry.reset();
+    m_trail.clear();
+    appendTrailPoint();
+    refresh();
+}
+
+void OdometryMap::setTruePose(std::optional<oi::Pose> pose)
+{
+    m_truePose = pose;
+    m_dirty = true;
+}
+
+void OdometryMap::setWorld(std::optional<sim::World> world)
+{
+    m_world = std::move(world);
+    update();
+}
+
+void OdometryMap::setWheelBaseMm(double mm) { m_wheelBase->setValue(mm); }
+void OdometryMap::setWheelDiameterMm(double mm) { m_wheelDiameter->setValue(mm); }
+double OdometryMap::wheelBaseMm() const { return m_odometry.wheelBaseMm(); }
+double OdometryMap::wheelDiameterMm() const { return m_wheelDiameter->value(); }
+
+void OdometryMap::applyGeometry()
+{
+    // The spin boxes' ranges keep both positive, so this cannot be refused.
+    m_odometry.setGeometry(m_wheelBase->value(), oi::Odometry::mmPerEncoderCountFor(m_wheelDiameter->value()));
+}
+
+void OdometryMap::setScale(double pixelsPerMm)
+{
+    m_scale = std::clamp(pixelsPerMm, kMinScale, kMaxScale);
+    update();
+}
+
+void OdometryMap::setViewCentreMm(QPointF mm)
+{
+    m_centreMm = mm;
+    update();
+}
+
+void OdometryMap::zoomIn() { zoomBy(kZoomStep, QRectF(mapRect()).center()); }
+void OdometryMap::zoomOut() { zoomBy(1 / kZoomStep, QRectF(mapRect()).center()); }
+
+void OdometryMap::zoomBy(double factor, QPointF anchorWidget)
+{
+    // Keep the floor point under the anchor where it is.
+    const QPointF c = QRectF(mapRect()).center();
+    const QPointF anchorMm(m_centreMm.x() + (anchorWidget.x() - c.x()) / m_scale,
+                           m_centreMm.y() - (anchorWidget.y() - c.y()) / m_scale);
+    m_scale = std::clamp(m_scale * factor, kMinScale, kMaxScale);
+    m_centreMm = QPointF(anchorMm.x() - (anchorWidget.x() - c.x()) / m_scale,
+                         anchorMm.y() + (anchorWidget.y() - c.y()) / m_scale);
+    update();
+}
+
+void OdometryMap::centreOnRobot() { setViewCentreMm(QPointF(pose().xMm, pose().yMm)); }
+
+QRect OdometryMap::mapRect() const
+{
+    const int top = m_controls->isVisible() ? m_controls->geometry().bottom() + 1 : 0;
+    return QRect(0, top, width(), height() - top);
+}
+
+QPointF OdometryMap::widgetPointFor(QPointF mm) const
+{
+    // +x (forward at the start) to the right, +y (left) up.
+    const QPointF c = QRectF(mapRect()).center();
+    return QPointF(c.x() + (mm.x() - m_centreMm.x()) * m_scale, c.y() - (mm.y() - m_centreMm.y()) * m_scale);
+}
+
+QString OdometryMap::poseText() const
+{
+    const oi::Pose &p = pose();
+    QString text = tr("x %1 mm   y %2 mm   θ %3°")
+                       .arg(p.xMm, 0, 'f', 0)
+                       .arg(p.yMm, 0, 'f', 0)
+                       .arg(p.thetaRad * 180 / kPi, 0, 'f', 1);
+    if (m_truePose)
+        text += tr("   drift %1 mm").arg(std::hypot(p.xMm - m_truePose->xMm, p.yMm - m_truePose->yMm), 0, 'f', 0);
+    return text;
+}
+
+void OdometryMap::refresh()
+{
+    m_dirty = false;
+    m_poseLabel->setText(poseText());
+    update();
+}
+
+double OdometryMap::gridSpacingMm() const
+{
+    // 1, 2 or 5 times a power of ten, at least 40 pixels apart.
+    const double minimum = 40 / m_scale;
+    double power = std::pow(10.0, std::floor(std::log10(minimum)));
+    for (double step : {1.0, 2.0, 5.0, 10.0})
+        if (step * power >= minimum)
+            return step * power;
+    return 10 * power;
+}
+
+void OdometryMap::paintEvent(QPaintEvent *)
+{
+    QPainter painter(this);
+    const QRect area = mapRect();
+    painter.fillRect(area, palette().base());
+    painter.setClipRect(area);
+    painter.setRenderHint(QPainter::Antialiasing);
+
+    paintGrid(painter, area);
+    if (m_world)
+        paintWorld(painter);
+
+    if (m_trail.size() > 1) {
+        QPolygonF line;
+        line.reserve(m_trail.size());
+        for (const QPointF &p : m_trail)
+            line << widgetPointFor(p);
+        painter.setPen(QPen(palette().color(QPalette::Highlight), 2));
+        painter.drawPolyline(line);
+    }
+    if (m_truePose) {
+        const QColor truth = display::stateColor(display::State::Active, palette());
+        painter.setPen(QPen(truth, 1, Qt::DashLine));
+        painter.drawLine(widgetPointFor({m_truePose->xMm, m_truePose->yMm}), widgetPointFor({pose().xMm, pose().yMm}));
+        paintRobot(painter, *m_truePose, truth, true);
+    }
+    paintRobot(painter, pose(), palette().color(QPalette::Highlight), false);
+    paintScaleBar(painter, area);
+
+    // Legend, top right.
+    painter.setClipping(false);
+    QStringList legend{tr("odometry")};
+    QList<QColor> colours{palette().color(QPalette::Highlight)};
+    if (m_truePose) {
+        legend << tr("true pose");
+        colours << display::stateColor(display::State::Active, palette());
+    }
+    const QFontMetrics fm(font());
+    int y = area.top() + fm.height() + 10; // below the x labels
+    for (qsizetype i = 0; i < legend.size(); ++i) {
+        const int w = fm.horizontalAdvance(legend[i]);
+        const QRect text(area.right() - 8 - w, y, w, fm.height());
+        painter.fillRect(text.adjusted(-20, -2, 4, 2), palette().base());
+        painter.fillRect(QRect(text.left() - 16, text.center().y() - 4, 10, 8), colours[i]);
+        painter.setPen(palette().color(QPalette::Text));
+        painter.drawText(text, Qt::AlignLeft | Qt::AlignVCenter, legend[i]);
+        y += fm.height() + 4;
+    }
+}
+
+void OdometryMap::paintGrid(QPainter &painter, const QRect &area) const
+{
+    const double spacing = gridSpacingMm();
+    const QPointF c = QRectF(area).center();
+    const double xMin = m_centreMm.x() - (c.x() - area.left()) / m_scale;
+    const double xMax = m_centreMm.x() + (area.right() - c.x()) / m_scale;
+    const double yMin = m_centreMm.y() - (area.bottom() - c.y()) / m_scale;
+    const double yMax = m_centreMm.y() + (c.y() - area.top()) / m_scale;
+
+    QColor minor = palette().color(QPalette::Text);
+    minor.setAlpha(35);
+    QColor axis = palette().color(QPalette::Text);
+    axis.setAlpha(110);
+    const QFontMetrics fm(font());
+    for (double x = std::ceil(xMin / spacing) * spacing; x <= xMax; x += spacing) {
+        const double px = widgetPointFor({x, 0}).x();
+        painter.setPen(QPen(std::abs(x) < spacing / 2 ? axis : minor, 1));
+        painter.drawLine(QPointF(px, area.top()), QPointF(px, area.bottom()));
+        painter.setPen(axis);
+        // Along the top: the pose text and the scale bar sit at the bottom.
+        painter.drawText(QPointF(px + 3, area.top() + fm.ascent() + 2), QString::number(x, 'f', 0));
+    }
+    for (double y = std::ceil(yMin / spacing) * spacing; y <= yMax; y += spacing) {
+        const double py = widgetPointFor({0, y}).y();
+        painter.setPen(QPen(std::abs(y) < spacing / 2 ? axis : minor, 1));
+        painter.drawLine(QPointF(area.left(), py), QPointF(area.right(), py));
+        painter.setPen(axis);
+        painter.drawText(QPointF(area.left() + 3, py - 3), QString::number(y, 'f', 0));
+    }
+}
+
+void OdometryMap::paintWorld(QPainter &painter) const
+{
+    const sim::World &world = *m_world;
+    const QColor drop = display::stateColor(display::State::Alert, palette());
+    QColor dropFill = drop;
+    dropFill.setAlpha(70);
+    for (const sim::Area &a : world.dropOffs) {
+        const QRectF r = QRectF(widgetPointFor({a.xMin, a.yMax}), widgetPointFor({a.xMax, a.yMin})).normalized();
+        painter.fillRect(r, QBrush(dropFill));
+        painter.fillRect(r, QBrush(drop, Qt::BDiagPattern));
+        painter.setPen(QPen(drop, 2));
+        painter.drawRect(r);
+    }
+    painter.setPen(QPen(palette().color(QPalette::Text), 4, Qt::SolidLine, Qt::SquareCap));
+    for (const sim::Segment &s : world.walls)
+        painter.drawLine(widgetPointFor({s.x1, s.y1}), widgetPointFor({s.x2, s.y2}));
+
+    if (world.virtualWall) {
+        const auto &v = *world.virtualWall;
+        const QColor beam = display::stateColor(display::State::Stale, palette());
+        const QPointF from = widgetPointFor({v.x, v.y});
+        const QPointF to = widgetPointFor({v.x + v.rangeMm * std::cos(v.headingRad),
+                                           v.y + v.rangeMm * std::sin(v.headingRad)});
+        painter.setPen(QPen(beam, 3, Qt::DashLine));
+        painter.drawLine(from, to);
+        painter.setBrush(beam);
+        painter.setPen(Qt::NoPen);
+        painter.drawEllipse(from, 6, 6);
+        painter.setBrush(Qt::NoBrush);
+    }
+    if (world.dock) {
+        const auto &d = *world.dock;
+        const QColor dock = display::stateColor(display::State::Warning, palette());
+        // A base 300 mm wide behind the contacts, facing out along its heading.
+        const double half = 150, depth = 120;
+        const double c = std::cos(d.headingRad), s = std::sin(d.headingRad);
+        const auto at = [&](double back, double side) {
+            return widgetPointFor({d.x - back * c - side * s, d.y - back * s + side * c});
+        };
+        QPolygonF base{at(0, -half), at(0, half), at(depth, half), at(depth, -half)};
+        painter.setPen(QPen(dock.darker(130), 1.5));
+        painter.setBrush(dock);
+        painter.drawPolygon(base);
+        painter.setBrush(Qt::NoBrush);
+        painter.setPen(QPen(dock, 2));
+        painter.drawLine(at(0, 0), at(-200, 0));
+        painter.setPen(palette().color(QPalette::Text));
+        painter.drawText(at(depth, half) + QPointF(4, 0), tr("dock"));
+    }
+}
+
+void OdometryMap::paintRobot(QPainter &painter, const oi::Pose &pose, const QColor &colour, bool outline) const
+{
+    const QPointF centre = widgetPointFor({pose.xMm, pose.yMm});
+    const double radius = std::max(8.0, kRobotDiameterMm / 2 * m_scale);
+    QColor fill = colour;
+    fill.setAlpha(outline ? 0 : 70);
+    painter.setBrush(fill);
+    painter.setPen(QPen(colour, 2, outline ? Qt::DashLine : Qt::SolidLine));
+    painter.drawEllipse(centre, radius, radius);
+    painter.setBrush(Qt::NoBrush);
+    painter.setPen(QPen(colour, 2.5));
+    painter.drawLine(centre, centre + QPointF(radius * std::cos(pose.thetaRad), -radius * std::sin(pose.thetaRad)));
+}
+
+void OdometryMap::paintScaleBar(QPainter &painter, const QRect &area) const
+{
+    const double spacing = gridSpacingMm();
+    const double px = spacing * m_scale;
+    const QPointF right(area.right() - 12, area.bottom() - 12);
+    const QPointF left = right - QPointF(px, 0);
+    painter.setPen(QPen(palette().color(QPalette::Text), 2));
+    painter.drawLine(left, right);
+    painter.drawLine(left, left - QPointF(0, 5));
+    painter.drawLine(right, right - QPointF(0, 5));
+    const QString text = spacing >= 1000 ? tr("%1 m").arg(spacing / 1000) : tr("%1 mm").arg(spacing);
+    painter.drawText(QRectF(left.x(), left.y() - 22, px, 16), Qt::AlignCenter, text);
+}
+
+void OdometryMap::wheelEvent(QWheelEvent *event)
+{
+    const int steps = event->angleDelta().y();
+    if (steps == 0)
+        return;
+    zoomBy(std::pow(kZoomStep, steps / 120.0), event->position());
+    event->accept();
+}
+
+void OdometryMap::mousePressEvent(QMouseEvent *event)
+{
+    if (event->button() == Qt::LeftButton && mapRect().contains(event->position().toPoint())) {
+        m_dragFrom = event->position();
+        setCursor(Qt::ClosedHandCursor);
+    }
+}
+
+void OdometryMap::mouseMoveEvent(QMouseEvent *event)
+{
+    if (!m_dragFrom)
+        return;
+    const QPointF delta = event->position() - *m_dragFrom;
+    m_dragFrom = event->position();
+    setViewCentreMm(m_centreMm + QPointF(-delta.x() / m_scale, delta.y() / m_scale));
+}
+
+void OdometryMap::mouseReleaseEvent(QMouseEvent *)
+{
+    m_dragFrom.reset();
+    unsetCursor();
+}

@@ -1,0 +1,108 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "odometry.h"
+#include "robot_profile.h"
+#include "sensor_snapshot.h"
+#include "virtual_robot.h" // sim::World, a value type; nothing here runs the robot
+
+#include <QList>
+#include <QPointF>
+#include <QWidget>
+
+#include <optional>
+
+class QDoubleSpinBox;
+class QLabel;
+class QPushButton;
+class QTimer;
+
+// Where the robot thinks it is: dead reckoning from each decoded frame,
+// drawn as a trail on a millimetre grid. With the virtual robot, its true
+// pose and room can be drawn too, so a class can watch odometry drift from
+// the truth. Wheel base and wheel diameter can be measured and set; they
+// change the integration from then on. Zoom with the wheel or the buttons,
+// pan by dragging. Repaints from a display timer, not once per frame.
+class OdometryMap : public QWidget {
+    Q_OBJECT
+public:
+    static constexpr int kMaxTrailPoints = 20000;
+    static constexpr double kDefaultWheelDiameterMm = oi::kWheelDiameterMm;
+    static constexpr double kMinScale = 0.005; // pixels per mm
+    static constexpr double kMaxScale = 5.0;
+
+    explicit OdometryMap(QWidget *parent = nullptr);
+
+    // Another robot starts over from the origin.
+    void setProfile(const oi::RobotProfile &profile);
+    const oi::RobotProfile &robotProfile() const { return *m_profile; }
+
+    // Feed each decoded frame once (packets 19/20 are increments).
+    void addSnapshot(const oi::SensorSnapshot &snapshot);
+    const oi::Pose &pose() const { return m_odometry.pose(); }
+    // Positions in mm, oldest first, at most kMaxTrailPoints; starts with the start pose.
+    const QList<QPointF> &trail() const { return m_trail; }
+
+    void setTruePose(std::optional<oi::Pose> pose);
+    void setWorld(std::optional<sim::World> world);
+
+    void setWheelBaseMm(double mm);
+    void setWheelDiameterMm(double mm);
+    double wheelBaseMm() const;
+    double wheelDiameterMm() const;
+
+    // Pixels per millimetre.
+    double scale() const { return m_scale; }
+    void setScale(double pixelsPerMm);
+    // The floor point shown at the centre of the map, in mm.
+    QPointF viewCentreMm() const { return m_centreMm; }
+    void setViewCentreMm(QPointF mm);
+    // Where a floor point (mm) is drawn, in this widget's coordinates.
+    QPointF widgetPointFor(QPointF mm) const;
+    QRect mapRect() const;
+
+    // "x 120 mm  y -35 mm  θ 12.5°", and the distance from the true pose if known.
+    QString poseText() const;
+
+public slots:
+    void zoomIn();
+    void zoomOut();
+    void centreOnRobot();
+    // Clears the trail and starts the odometry again from the origin.
+    void reset();
+
+protected:
+    void paintEvent(QPaintEvent *event) override;
+    void wheelEvent(QWheelEvent *event) override;
+    void mousePressEvent(QMouseEvent *event) override;
+    void mouseMoveEvent(QMouseEvent *event) override;
+    void mouseReleaseEvent(QMouseEvent *event) override;
+
+private:
+    void zoomBy(double factor, QPointF anchorWidget);
+    void applyGeometry();
+    void appendTrailPoint();
+    void refresh();
+    void paintGrid(QPainter &painter, const QRect &area) const;
+    void paintWorld(QPainter &painter) const;
+    void paintRobot(QPainter &painter, const oi::Pose &pose, const QColor &colour, bool outline) const;
+    void paintScaleBar(QPainter &painter, const QRect &area) const;
+    double gridSpacingMm() const;
+
+    const oi::RobotProfile *m_profile = &oi::profile(oi::ProfileId::Create2);
+    oi::Odometry m_odometry;
+    QList<QPointF> m_trail;
+    std::optional<oi::Pose> m_truePose;
+    std::optional<sim::World> m_world;
+
+    double m_scale = 0.1;
+    QPointF m_centreMm{1000, 0};
+    std::optional<QPointF> m_dragFrom;
+    bool m_dirty = false;
+
+    QWidget *m_controls = nullptr;
+    QDoubleSpinBox *m_wheelBase = nullptr;
+    QDoubleSpinBox *m_wheelDiameter = nullptr;
+    QLabel *m_poseLabel = nullptr;
+    QTimer *m_displayTimer = nullptr;
+};

@@ -152,7 +152,8 @@ private slots:
         QVERIFY(window.grab().save(QDir(dir).filePath("dashboard_cliff.png")));
 
         // Each editor in its tab.
-        for (const char *dock : {"songsDock", "ledsDock", "scheduleDock", "scriptDock", "inspectorDock"}) {
+        for (const char *dock : {"songsDock", "ledsDock", "scheduleDock", "scriptDock", "inspectorDock", "motorsDock",
+                                 "mapDock", "gamepadDock", "driveDock"}) {
             window.findChild<QDockWidget *>(dock)->raise();
             QTest::qWait(100);
             QVERIFY(window.grab().save(QDir(dir).filePath(QString("dashboard_%1.png").arg(dock))));

@@ -175,6 +175,9 @@ MainWindow::MainWindow(QWidget *parent) : QMainWindow(parent)
     connect(m_schedule, &ScheduleEditor::sendRequested, &m_session, &RobotSession::send);
     connect(m_script, &ScriptEditor::sendRequested, &m_session, &RobotSession::send);
     connect(m_motors, &MotorsPanel::sendRequested, &m_session, &RobotSession::send);
+    connect(&m_session, &RobotSession::virtualRobotPose, this, [this](double x, double y, double theta) {
+        m_map->setTruePose(oi::Pose{x, y, theta, 0});
+    });
     // The gamepad drives through the same sending rules as the pad and keys.
     connect(m_gamepad, &GamepadInput::motionRequested, &m_teleop, &TeleopController::requestMotion);
     connect(m_gamepad, &GamepadInput::deadManChanged, this, [this](bool held) {
@@ -319,6 +322,7 @@ void MainWindow::connectSession(const oilink::LinkSettings &settings)
     // odometry does, so a class can watch the estimate drift from the room.
     m_map->setWorld(settings.transport == oilink::TransportKind::Virtual ? std::optional(sim::World::classroom())
                                                                           : std::nullopt);
+    m_map->setTruePose(std::nullopt);
     m_session.connectTo(settings);
     m_connectionBar->setConnected(true);
 }
@@ -379,8 +383,12 @@ void MainWindow::refreshDisplay()
     m_teleop.checkMode();
     // Scrolling plots are the dearest thing on screen; 15 Hz still moves
     // them smoothly and halves their cost.
-    if (m_plots->isVisible() && ++m_displayTicks % 2 == 0)
+    ++m_displayTicks;
+    if (m_plots->isVisible() && m_displayTicks % 2 == 0)
         m_plots->refresh();
+    // Where the virtual robot really is, so the map shows the odometry drift.
+    if (m_map->isVisible() && m_session.settings().transport == oilink::TransportKind::Virtual && m_displayTicks % 3 == 0)
+        m_session.requestVirtualRobotPose();
 }
 
 void MainWindow::showState(oilink::LinkState state)

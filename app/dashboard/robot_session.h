@@ -48,6 +48,9 @@ public:
     QString firmwareRelease() const { return m_firmware; }
     const oi::FirmwareCorrections &corrections() const { return m_corrections; }
 
+    // The in-process virtual robot's true pose, answered by virtualRobotPose().
+    void requestVirtualRobotPose() { m_link.requestVirtualRobotPose(); }
+
     // Called for every snapshot, with secondsSinceConnect(): the history.
     void setSnapshotObserver(std::function<void(double, const oi::SensorSnapshot &)> observer);
 
@@ -57,6 +60,7 @@ signals:
     void profileChanged(oi::ProfileId profile);
     void firmwareChanged(const QString &release);
     void errorOccurred(const QString &message);
+    void virtualRobotPose(double xMm, double yMm, double thetaRad);
     void bytesSent(const QByteArray &bytes, qint64 msecs);
     void bytesReceived(const QByteArray &bytes, qint64 msecs);
 

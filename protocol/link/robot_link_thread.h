@@ -47,6 +47,9 @@ public slots:
     void closeAndWait();
     void send(const QByteArray &bytes);
     void querySensors(const QList<int> &packetIds);
+    // On the in-process virtual robot: asks where it really is; the answer
+    // comes as virtualRobotPose(). Nothing happens on other transports.
+    void requestVirtualRobotPose();
 
 signals:
     void snapshot(const oi::SensorSnapshot &snapshot);
@@ -57,6 +60,7 @@ signals:
     void rawBytesSent(const QByteArray &bytes);
     void rawBytesReceived(const QByteArray &bytes);
     void errorOccurred(const QString &message);
+    void virtualRobotPose(double xMm, double yMm, double thetaRad);
 
 private:
     void deliverPending();

@@ -6,6 +6,7 @@
 #include "real_time_robot.h"
 #include "recording_transport.h"
 #include "robot_diagram.h"
+#include "odometry_map.h"
 #include "schedule_editor.h"
 #include "script_editor.h"
 #include "transport.h"
@@ -150,6 +151,10 @@ private slots:
         QVERIFY(s.cliff(oi::CliffSensor::FrontLeft) || s.cliff(oi::CliffSensor::FrontRight)
                 || s.cliff(oi::CliffSensor::Left) || s.cliff(oi::CliffSensor::Right));
         QVERIFY(window.grab().save(QDir(dir).filePath("dashboard_cliff.png")));
+
+        // The map shows the virtual robot's true pose beside the odometry.
+        window.findChild<QDockWidget *>("mapDock")->raise();
+        QTRY_VERIFY_WITH_TIMEOUT(window.odometryMap()->poseText().contains("drift"), 5000);
 
         // Each editor in its tab.
         for (const char *dock : {"songsDock", "ledsDock", "scheduleDock", "scriptDock", "inspectorDock", "motorsDock",

@@ -1,13 +1,31 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // roomba-dashboard: the desktop dashboard.
+#include "command_line.h"
 #include "main_window.h"
 
 #include <QApplication>
-#include <QCommandLineParser>
 #include <QStyleFactory>
+
+#include <cstdio>
 
 int main(int argc, char **argv)
 {
+    // Read the arguments before a window system is needed, so --help and a
+    // bad argument work anywhere.
+    QStringList arguments;
+    for (int i = 0; i < argc; ++i)
+        arguments << QString::fromLocal8Bit(argv[i]);
+    const DashboardCommandLine line = DashboardCommandLine::parse(arguments);
+    if (!line.error.isEmpty()) {
+        std::fprintf(stderr, "roomba-dashboard: %s\n", qPrintable(line.error));
+        return 2;
+    }
+    if (line.showHelp || line.showVersion) {
+        std::printf("%s", qPrintable(line.showHelp ? DashboardCommandLine::usage()
+                                                   : QString("roomba-dashboard %1\n").arg(ROOMBA_VERSION)));
+        return 0;
+    }
+
     QApplication app(argc, argv);
     QApplication::setOrganizationName("RoombaDashboard");
     QApplication::setApplicationName("roomba-dashboard");
@@ -15,22 +33,9 @@ int main(int argc, char **argv)
     // Fusion draws the same everywhere and takes the system's light or dark palette.
     QApplication::setStyle(QStyleFactory::create("Fusion"));
 
-    QCommandLineParser parser;
-    parser.setApplicationDescription(QApplication::translate(
-        "main", "Dashboard and teleoperation for iRobot robots that speak the Open Interface."));
-    parser.addHelpOption();
-    parser.addVersionOption();
-    const QCommandLineOption sim("sim", QApplication::translate("main", "Connect to the built-in virtual robot, "
-                                                                         "whatever was used last time."));
-    parser.addOption(sim);
-    parser.process(app);
-
     MainWindow window;
     window.resize(1280, 860);
     window.show();
-    std::optional<oilink::LinkSettings> settings;
-    if (parser.isSet(sim))
-        settings = MainWindow::linkSettingsFor(ConnectionRequest{});
-    window.start(settings);
+    window.start(line.connection);
     return app.exec();
 }

@@ -1,0 +1,100 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "command_line.h"
+
+#include "robot_profile.h"
+
+#include <QCoreApplication>
+
+namespace {
+QString tr(const char *text) { return QCoreApplication::translate("DashboardCommandLine", text); }
+} // namespace
+
+QString DashboardCommandLine::usage()
+{
+    return tr("Usage: roomba-dashboard [--sim | --port PATH | --tcp HOST:PORT] [--profile P] [--baud N]\n"
+              "\n"
+              "  --sim              the built-in virtual robot\n"
+              "  --port PATH        a serial port, USB adapter or pseudo-terminal\n"
+              "  --tcp HOST:PORT    a serial-over-TCP bridge such as ser2net\n"
+              "  --profile P        roomba500, create2 (also roomba600), create1 (also create) or auto\n"
+              "  --baud N           the line speed; the profile's default when left out\n"
+              "  --help, --version\n"
+              "\n"
+              "Without a connection option the dashboard reconnects to what was used last,\n"
+              "or on first start to the virtual robot.\n");
+}
+
+DashboardCommandLine DashboardCommandLine::parse(const QStringList &arguments)
+{
+    DashboardCommandLine line;
+    enum class Target { Saved, Sim, Port, Tcp } target = Target::Saved;
+    QString port, host;
+    quint16 tcpPort = 0;
+    std::optional<oi::ProfileId> profile;
+    int baud = 0;
+    const auto fail = [&line](const QString &message) {
+        line.error = message;
+        return line;
+    };
+    for (qsizetype i = 1; i < arguments.size(); ++i) {
+        const QString &a = arguments[i];
+        const bool takesValue = a == "--port" || a == "--tcp" || a == "--profile" || a == "--baud";
+        if (takesValue && i + 1 >= arguments.size())
+            return fail(tr("%1 needs a value; see --help").arg(a));
+        const QString value = takesValue ? arguments[++i] : QString();
+        if (a == "--help" || a == "-h") {
+            line.showHelp = true;
+        } else if (a == "--version") {
+            line.showVersion = true;
+        } else if (a == "--sim" || a == "--port" || a == "--tcp") {
+            if (target != Target::Saved)
+                return fail(tr("choose one of --sim, --port and --tcp"));
+            if (a == "--sim") {
+                target = Target::Sim;
+            } else if (a == "--port") {
+                target = Target::Port;
+                port = value;
+            } else {
+                target = Target::Tcp;
+                const qsizetype colon = value.lastIndexOf(':');
+                bool ok = false;
+                const uint number = colon > 0 ? value.mid(colon + 1).toUInt(&ok) : 0;
+                if (!ok || number == 0 || number > 65535)
+                    return fail(tr("--tcp needs HOST:PORT with a port from 1 to 65535, not '%1'").arg(value));
+                host = value.left(colon);
+                tcpPort = quint16(number);
+            }
+        } else if (a == "--profile") {
+            if (value != "auto") {
+                const oi::RobotProfile *p = oi::profileByKey(value.toStdString());
+                if (!p)
+                    return fail(tr("unknown profile '%1' (roomba500, create2, create1 or auto)").arg(value));
+                profile = p->id;
+            }
+        } else if (a == "--baud") {
+            bool ok = false;
+            baud = value.toInt(&ok);
+            if (!ok || oi::baudCodeFor(baud) < 0)
+                return fail(tr("--baud %1 is not a rate the robot offers (300 .. 115200)").arg(value));
+        } else {
+            return fail(tr("unknown argument '%1'; see --help").arg(a));
+        }
+    }
+    switch (target) {
+    case Target::Saved:
+        if (profile || baud)
+            return fail(tr("--profile and --baud go with --sim, --port or --tcp"));
+        break;
+    case Target::Sim:
+        line.connection = oilink::LinkSettings::virtualRobotOf(profile.value_or(oi::ProfileId::Create2), profile);
+        break;
+    case Target::Port:
+        line.connection = oilink::LinkSettings::serial(port, profile, baud);
+        break;
+    case Target::Tcp:
+        line.connection = oilink::LinkSettings::tcp(host, tcpPort, profile);
+        line.connection->baud = baud;
+        break;
+    }
+    return line;
+}

@@ -1,0 +1,21 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "link_settings.h"
+
+#include <QString>
+#include <QStringList>
+
+#include <optional>
+
+// What roomba-dashboard was asked to connect to on its command line:
+//   [--sim | --port PATH | --tcp HOST:PORT] [--profile P] [--baud N]
+struct DashboardCommandLine {
+    std::optional<oilink::LinkSettings> connection; // nullopt: the saved connection
+    bool showHelp = false;
+    bool showVersion = false;
+    QString error; // one line for the user; empty when the arguments are good
+
+    static DashboardCommandLine parse(const QStringList &arguments); // arguments[0] is the program
+    static QString usage();
+};

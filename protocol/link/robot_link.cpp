@@ -23,20 +23,21 @@ constexpr int kFlushMs = 500;
 // every 15 ms).
 constexpr int kQueryQuietMs = 50;
 constexpr int kQueryTimeoutMs = 500;
-constexpr std::uint8_t kOpStart = 128;
-constexpr std::uint8_t kOpPauseResume = 150;
 
 QByteArray toBytes(const oi::Bytes &bytes)
 {
     return QByteArray(reinterpret_cast<const char *>(bytes.data()), static_cast<qsizetype>(bytes.size()));
 }
 
-QByteArray bytesOf(std::initializer_list<std::uint8_t> values)
+// Start and Pause/Resume Stream exist on every profile, so any encoder makes them.
+QByteArray startBytes()
 {
-    QByteArray out;
-    for (std::uint8_t v : values)
-        out.append(static_cast<char>(v));
-    return out;
+    return toBytes(*oi::CommandEncoder(oi::profile(oi::ProfileId::Create2)).start());
+}
+
+QByteArray streamStateBytes(bool running)
+{
+    return toBytes(*oi::CommandEncoder(oi::profile(oi::ProfileId::Create2)).pauseResumeStream(running ? 1 : 0));
 }
 
 QString fromStd(std::string_view text)
@@ -308,7 +309,7 @@ void RobotLink::startStream()
     m_streamCommand = toBytes(*command);
     m_frameSinceStreamStart = false;
     m_rearmMs = kNoDataAfterMs;
-    if (!writeBytes(bytesOf({kOpStart})) || !writeBytes(m_streamCommand))
+    if (!writeBytes(startBytes()) || !writeBytes(m_streamCommand))
         return;
     m_streamRequested = true;
     m_noData.start(m_rearmMs);
@@ -321,7 +322,7 @@ void RobotLink::startStream()
 // missing for a second must not go on driving on commands sent blind.
 void RobotLink::rearmStream()
 {
-    writeBytes(bytesOf({kOpStart}));
+    writeBytes(startBytes());
     writeBytes(m_streamCommand);
 }
 
@@ -454,7 +455,7 @@ void RobotLink::startNextQuery()
     if (m_streamRequested) {
         m_queryPhase = QueryPhase::Pausing;
         m_watchdog.stop();
-        writeBytes(bytesOf({kOpPauseResume, 0}));
+        writeBytes(streamStateBytes(false));
         m_queryQuiet.start();
     } else {
         sendQuery();
@@ -505,7 +506,7 @@ void RobotLink::finishQuery()
     m_queryQuiet.stop();
     m_queryTimeout.stop();
     if (m_streamRequested) {
-        writeBytes(bytesOf({kOpPauseResume, 1}));
+        writeBytes(streamStateBytes(true));
         m_watchdog.start();
     }
     // Not at once: this may run inside the parser, which the next query resets.

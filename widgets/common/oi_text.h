@@ -1,0 +1,22 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "ir_character.h"
+#include "robot_profile.h"
+
+#include <QString>
+
+#include <string_view>
+
+// The Open Interface tables' names as the user reads them: in the language
+// the program runs in. The tables themselves stay English (roomba-ctl, files).
+namespace oitext {
+
+QString fromView(std::string_view text); // untranslated
+QString packetName(const oi::PacketInfo &info);   // "Cliff Left" -> "Abgrund links"
+QString bitName(const oi::BitMeaning &bit);
+QString infraredName(const oi::IrCharacter &ir);  // composed from translated parts
+// "Cliff Left [mm]" or just the name when the packet has no unit.
+QString packetLabel(const oi::PacketInfo &info);
+
+} // namespace oitext

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "link_settings.h"
 
+#include <QFileInfo>
+
 namespace oilink {
 
 QString LinkSettings::describe() const
@@ -10,6 +12,8 @@ QString LinkSettings::describe() const
         return portPath;
     case TransportKind::Tcp:
         return host + QLatin1Char(':') + QString::number(tcpPort);
+    case TransportKind::Replay:
+        return QStringLiteral("replay of ") + QFileInfo(replayPath).fileName();
     case TransportKind::Virtual:
         break;
     }
@@ -44,6 +48,17 @@ LinkSettings LinkSettings::virtualRobotOf(oi::ProfileId robot, std::optional<oi:
     s.transport = TransportKind::Virtual;
     s.virtualRobot = robot;
     s.profile = profile;
+    return s;
+}
+
+LinkSettings LinkSettings::replayOf(const QString &path, oi::ProfileId profile, int baud, const QList<int> &packets)
+{
+    LinkSettings s;
+    s.transport = TransportKind::Replay;
+    s.replayPath = path;
+    s.profile = profile;
+    s.baud = baud;
+    s.streamPackets = packets;
     return s;
 }
 

@@ -18,6 +18,7 @@ enum class TransportKind : std::uint8_t {
     Serial,  // a serial port or USB adapter, or a pseudo-terminal such as /dev/pts/5
     Tcp,     // raw TCP to a serial bridge (ser2net, a Wi-Fi serial module)
     Virtual, // the built-in virtual robot, in this process
+    Replay,  // a recording played back (see recording_file.h)
 };
 
 // Everything needed to reach one robot. Plain value; crosses threads.
@@ -26,6 +27,7 @@ struct LinkSettings {
     QString portPath;      // Serial: a device path, typed or picked
     QString host;          // Tcp
     quint16 tcpPort = 0;   // Tcp
+    QString replayPath;    // Replay
     // nullopt = Auto: find the profile (and, on a serial port, the baud) by probing.
     std::optional<oi::ProfileId> profile;
     int baud = 0;          // 0 = the profile's default
@@ -42,6 +44,8 @@ struct LinkSettings {
     static LinkSettings tcp(const QString &host, quint16 port,
                             std::optional<oi::ProfileId> profile = {});
     static LinkSettings virtualRobotOf(oi::ProfileId robot, std::optional<oi::ProfileId> profile);
+    // A replay is read with the profile, baud and packets it was recorded with.
+    static LinkSettings replayOf(const QString &path, oi::ProfileId profile, int baud, const QList<int> &packets);
 
     friend bool operator==(const LinkSettings &, const LinkSettings &) = default;
 };

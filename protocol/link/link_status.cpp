@@ -2,6 +2,7 @@
 #include "link_status.h"
 
 #include "link_settings.h"
+#include "replay_transport.h"
 
 #include <QByteArray>
 #include <QList>
@@ -30,6 +31,9 @@ void registerLinkMetaTypes()
     qRegisterMetaType<LinkStats>();
     qRegisterMetaType<LinkSettings>();
     qRegisterMetaType<QByteArray>();
+    qRegisterMetaType<RecordingStatus>();
+    qRegisterMetaType<ReplayCommand>();
+    qRegisterMetaType<ReplayStatus>();
 }
 
 } // namespace oilink

@@ -38,8 +38,19 @@ struct LinkStats {
     friend bool operator==(const LinkStats &, const LinkStats &) = default;
 };
 
+// A recording of the link's bytes (RobotLink::startRecording).
+struct RecordingStatus {
+    bool active = false;
+    QString path;
+    qint64 bytesWritten = 0;
+    QString error; // why it stopped, when it stopped on its own
+
+    friend bool operator==(const RecordingStatus &, const RecordingStatus &) = default;
+};
+
 // Registers every value type that crosses the link's thread boundary:
-// SensorSnapshot, ProfileId, LinkState, LinkStats, LinkSettings. Safe to
+// SensorSnapshot, ProfileId, LinkState, LinkStats, LinkSettings, and the
+// recording and replay types. Safe to
 // call often.
 void registerLinkMetaTypes();
 
@@ -49,3 +60,4 @@ Q_DECLARE_METATYPE(oi::SensorSnapshot)
 Q_DECLARE_METATYPE(oi::ProfileId)
 Q_DECLARE_METATYPE(oilink::LinkState)
 Q_DECLARE_METATYPE(oilink::LinkStats)
+Q_DECLARE_METATYPE(oilink::RecordingStatus)

@@ -7,7 +7,9 @@
 
 #include "command_encoder.h"
 
+#include <QCoreApplication>
 #include <QDateTime>
+#include <QJsonObject>
 
 #include <algorithm>
 
@@ -57,7 +59,8 @@ void add(oi::ParserCounters &to, const oi::ParserCounters &from)
 
 RobotLink::RobotLink(QObject *parent)
     : QObject(parent), m_watchdog(this), m_noData(this), m_reconnect(this), m_probeRetry(this),
-      m_queryQuiet(this), m_queryTimeout(this), m_statsTick(this), m_statsSoon(this)
+      m_queryQuiet(this), m_queryTimeout(this), m_statsTick(this), m_statsSoon(this),
+      m_recordingFlush(this)
 {
     registerLinkMetaTypes();
     m_parser.setSnapshotHandler([this](const oi::SensorSnapshot &s, oi::FrameKind kind) {
@@ -82,11 +85,20 @@ RobotLink::RobotLink(QObject *parent)
     connect(&m_queryTimeout, &QTimer::timeout, this, &RobotLink::onQueryTimeout);
     connect(&m_statsTick, &QTimer::timeout, this, &RobotLink::onStatsTick);
     connect(&m_statsSoon, &QTimer::timeout, this, &RobotLink::emitStatsIfChanged);
+    // A quiet line still reaches the disk within a second.
+    m_recordingFlush.setInterval(recording::kFlushIntervalMs);
+    connect(&m_recordingFlush, &QTimer::timeout, this, [this] {
+        if (m_recorder && !m_recorder->flush())
+            stopRecording();
+        else
+            emitRecordingStatus();
+    });
 }
 
 RobotLink::~RobotLink()
 {
     close();
+    stopRecording();
 }
 
 void RobotLink::setTransportFactory(TransportFactory factory)
@@ -155,6 +167,7 @@ void RobotLink::close()
     if (m_rateClock.isValid() && m_rateClock.elapsed() >= kMinRateWindowMs)
         updateRate();
     emitStatsIfChanged();
+    stopRecording();
     setState(LinkState::Closed);
 }
 
@@ -177,6 +190,8 @@ void RobotLink::openTransport()
     connect(transport, &Transport::bytesReceived, this, &RobotLink::onBytes);
     connect(transport, &Transport::errorOccurred, this, &RobotLink::onTransportError);
     connect(transport, &Transport::closed, this, &RobotLink::onTransportClosed);
+    if (auto *replay = qobject_cast<ReplayTransport *>(transport))
+        connect(replay, &ReplayTransport::replayStatus, this, &RobotLink::replayStatus);
     // Last: a transport may answer from inside open().
     transport->open();
 }
@@ -254,6 +269,7 @@ void RobotLink::startProbe()
         m_probe = new ProfileProbe(*m_transport, bauds, this);
         connect(m_probe, &ProfileProbe::bytesSent, this, [this](const QByteArray &bytes) {
             m_totals.bytesSent += static_cast<quint64>(bytes.size());
+            record(recording::RecordKind::Sent, bytes);
             emit rawBytesSent(bytes);
         });
         connect(m_probe, &ProfileProbe::detected, this, [this](oi::ProfileId id, int baud) {
@@ -313,6 +329,8 @@ void RobotLink::startStream()
         return;
     m_streamRequested = true;
     m_noData.start(m_rearmMs);
+    if (m_recorder)
+        m_recorder->appendStreamStarted(m_profile->id, rate, streamPackets());
     emit streamStarted(m_profile->id, rate, streamPackets());
 }
 
@@ -329,6 +347,7 @@ void RobotLink::rearmStream()
 void RobotLink::onBytes(const QByteArray &bytes)
 {
     m_totals.bytesReceived += static_cast<quint64>(bytes.size());
+    record(recording::RecordKind::Received, bytes);
     emit rawBytesReceived(bytes);
     if (m_probe && m_probe->isRunning()) {
         m_probe->feed(bytes);
@@ -415,6 +434,7 @@ bool RobotLink::writeBytes(const QByteArray &bytes)
         return false;
     }
     m_totals.bytesSent += static_cast<quint64>(bytes.size());
+    record(recording::RecordKind::Sent, bytes);
     emit rawBytesSent(bytes);
     return true;
 }
@@ -596,6 +616,58 @@ void RobotLink::emitStatsIfChanged()
         return;
     m_lastEmitted = s;
     emit statistics(s);
+}
+
+// --- Recording and replay ---
+
+void RobotLink::startRecording(const QString &path)
+{
+    stopRecording();
+    auto writer = std::make_unique<RecordingWriter>();
+    QJsonObject header{{QStringLiteral("program"), QStringLiteral("%1 %2").arg(QCoreApplication::applicationName(),
+                                                                             QCoreApplication::applicationVersion())},
+                       {QStringLiteral("link"), m_settings.describe()}};
+    if (!writer->open(path, header)) {
+        emit recordingStatus({false, path, 0, writer->errorString()});
+        return;
+    }
+    m_recorder = std::move(writer);
+    // Started mid-stream: say now what the stream is, so the file reads alone.
+    if (m_streamRequested && m_profile)
+        m_recorder->appendStreamStarted(m_profile->id, baud(), streamPackets());
+    m_recordingFlush.start();
+    emitRecordingStatus();
+}
+
+void RobotLink::stopRecording()
+{
+    if (!m_recorder)
+        return;
+    m_recordingFlush.stop();
+    const QString error = m_recorder->errorString();
+    m_recorder->close();
+    const RecordingStatus last{false, m_recorder->path(), m_recorder->bytesWritten(), error};
+    m_recorder.reset();
+    emit recordingStatus(last);
+}
+
+void RobotLink::record(recording::RecordKind kind, const QByteArray &bytes)
+{
+    // A full disk ends the recording, never the link.
+    if (m_recorder && !m_recorder->append(kind, bytes))
+        stopRecording();
+}
+
+void RobotLink::emitRecordingStatus(const QString &error)
+{
+    if (m_recorder)
+        emit recordingStatus({true, m_recorder->path(), m_recorder->bytesWritten(), error});
+}
+
+void RobotLink::controlReplay(const ReplayCommand &command)
+{
+    if (auto *replay = qobject_cast<ReplayTransport *>(m_transport))
+        replay->control(command);
 }
 
 } // namespace oilink

@@ -3,6 +3,8 @@
 
 #include "link_settings.h"
 #include "link_status.h"
+#include "recording_file.h"
+#include "replay_transport.h"
 
 #include "stream_parser.h"
 
@@ -17,6 +19,7 @@
 #include <cstdint>
 #include <deque>
 #include <functional>
+#include <memory>
 #include <vector>
 
 namespace oilink {
@@ -75,6 +78,12 @@ public slots:
     // stream runs it is paused around the query. The answer comes as
     // sensorReply(), or an error after 500 ms.
     void querySensors(const QList<int> &packetIds);
+    // Records every byte both ways, from now until stopRecording() or
+    // close(), across reconnects. Reports through recordingStatus().
+    void startRecording(const QString &path);
+    void stopRecording();
+    // Play, pause, speed, seek, step: for a replay; ignored otherwise.
+    void controlReplay(const oilink::ReplayCommand &command);
 
 signals:
     void snapshot(const oi::SensorSnapshot &snapshot); // one per stream frame
@@ -86,6 +95,8 @@ signals:
     void rawBytesSent(const QByteArray &bytes);
     void rawBytesReceived(const QByteArray &bytes);
     void errorOccurred(const QString &message);
+    void recordingStatus(const oilink::RecordingStatus &status);
+    void replayStatus(const oilink::ReplayStatus &status);
 
 private:
     enum class QueryPhase { None, Pausing, Waiting };
@@ -119,6 +130,8 @@ private:
     void scheduleStats();
     void emitStatsIfChanged();
     QString noDataMessage() const;
+    void record(recording::RecordKind kind, const QByteArray &bytes);
+    void emitRecordingStatus(const QString &error = {});
 
     TransportFactory m_factory;
     LinkSettings m_settings;
@@ -162,6 +175,9 @@ private:
     LinkStats m_lastEmitted;
     QTimer m_statsTick;
     QTimer m_statsSoon;
+
+    std::unique_ptr<RecordingWriter> m_recorder;
+    QTimer m_recordingFlush;
 };
 
 } // namespace oilink

@@ -50,6 +50,8 @@ void RobotLinkThread::start()
     connect(link, &RobotLink::rawBytesSent, this, &RobotLinkThread::rawBytesSent);
     connect(link, &RobotLink::rawBytesReceived, this, &RobotLinkThread::rawBytesReceived);
     connect(link, &RobotLink::errorOccurred, this, &RobotLinkThread::errorOccurred);
+    connect(link, &RobotLink::recordingStatus, this, &RobotLinkThread::recordingStatus);
+    connect(link, &RobotLink::replayStatus, this, &RobotLinkThread::replayStatus);
     m_thread.start();
 }
 
@@ -116,6 +118,25 @@ void RobotLinkThread::requestVirtualRobotPose()
             }
         },
         Qt::QueuedConnection);
+}
+
+void RobotLinkThread::startRecording(const QString &path)
+{
+    start();
+    QMetaObject::invokeMethod(m_link, [link = m_link.data(), path] { link->startRecording(path); }, Qt::QueuedConnection);
+}
+
+void RobotLinkThread::stopRecording()
+{
+    if (m_link && m_thread.isRunning())
+        QMetaObject::invokeMethod(m_link, &RobotLink::stopRecording, Qt::QueuedConnection);
+}
+
+void RobotLinkThread::controlReplay(const ReplayCommand &command)
+{
+    if (m_link && m_thread.isRunning())
+        QMetaObject::invokeMethod(m_link, [link = m_link.data(), command] { link->controlReplay(command); },
+                                  Qt::QueuedConnection);
 }
 
 // The link's last signals are queued for this object; hand them out now,

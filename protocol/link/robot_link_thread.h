@@ -50,6 +50,9 @@ public slots:
     // On the in-process virtual robot: asks where it really is; the answer
     // comes as virtualRobotPose(). Nothing happens on other transports.
     void requestVirtualRobotPose();
+    void startRecording(const QString &path);
+    void stopRecording();
+    void controlReplay(const oilink::ReplayCommand &command);
 
 signals:
     void snapshot(const oi::SensorSnapshot &snapshot);
@@ -61,6 +64,8 @@ signals:
     void rawBytesReceived(const QByteArray &bytes);
     void errorOccurred(const QString &message);
     void virtualRobotPose(double xMm, double yMm, double thetaRad);
+    void recordingStatus(const oilink::RecordingStatus &status);
+    void replayStatus(const oilink::ReplayStatus &status);
 
 private:
     void deliverPending();

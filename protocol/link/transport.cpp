@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "transport.h"
 
+#include "replay_transport.h"
 #include "serial_transport.h"
 #include "tcp_transport.h"
 #include "virtual_transport.h"
@@ -21,6 +22,8 @@ Transport *createTransport(const LinkSettings &settings, int baud, QObject *pare
         return new SerialTransport(settings.portPath, baud, parent);
     case TransportKind::Tcp:
         return new TcpTransport(settings.host, settings.tcpPort, parent);
+    case TransportKind::Replay:
+        return new ReplayTransport(settings.replayPath, parent);
     case TransportKind::Virtual:
         break;
     }

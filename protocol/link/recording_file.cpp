@@ -1,0 +1,322 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "recording_file.h"
+
+#include "stream_parser.h"
+
+#include <QDateTime>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QtEndian>
+
+#include <algorithm>
+#include <cstring>
+#include <span>
+
+namespace oilink {
+
+namespace {
+constexpr int kVersionSize = 2;
+constexpr int kHeaderLengthSize = 4;
+constexpr int kMaxHeaderBytes = 1 << 20;
+// kind (1) + time in microseconds (8) + length (2), then the payload, then CRC (2).
+constexpr int kRecordHeadSize = 11;
+constexpr int kCrcSize = 2;
+
+template <typename T>
+void appendLittleEndian(QByteArray &out, T value)
+{
+    char bytes[sizeof(T)];
+    qToLittleEndian(value, bytes);
+    out.append(bytes, sizeof(T));
+}
+
+template <typename T>
+T readLittleEndian(const char *at)
+{
+    return qFromLittleEndian<T>(at);
+}
+
+std::span<const std::uint8_t> asSpan(const QByteArray &bytes, qsizetype from, qsizetype to)
+{
+    return {reinterpret_cast<const std::uint8_t *>(bytes.constData()) + from, static_cast<std::size_t>(to - from)};
+}
+
+QString fromStd(std::string_view text)
+{
+    return QString::fromUtf8(text.data(), static_cast<qsizetype>(text.size()));
+}
+} // namespace
+
+// --- Writing ---
+
+RecordingWriter::~RecordingWriter()
+{
+    close();
+}
+
+bool RecordingWriter::fail(const QString &what)
+{
+    m_error = QStringLiteral("%1: %2: %3").arg(m_file.fileName(), what, m_file.errorString());
+    m_file.close();
+    return false;
+}
+
+bool RecordingWriter::open(const QString &path, QJsonObject header)
+{
+    close();
+    m_error.clear();
+    m_written = 0;
+    m_file.setFileName(path);
+    if (!m_file.open(QIODevice::WriteOnly | QIODevice::Truncate))
+        return fail(QStringLiteral("cannot create the recording"));
+    header.insert(QStringLiteral("format"), QStringLiteral("Roomba Dashboard recording"));
+    header.insert(QStringLiteral("version"), recording::kVersion);
+    header.insert(QStringLiteral("started"), QDateTime::currentDateTimeUtc().toString(Qt::ISODateWithMs));
+    const QByteArray json = QJsonDocument(header).toJson(QJsonDocument::Compact);
+    QByteArray head(recording::kMagic, recording::kMagicSize);
+    appendLittleEndian<quint16>(head, recording::kVersion);
+    appendLittleEndian<quint32>(head, static_cast<quint32>(json.size()));
+    head += json;
+    if (m_file.write(head) != head.size())
+        return fail(QStringLiteral("cannot write"));
+    m_written = head.size();
+    m_clock.start();
+    m_lastFlushMs = 0;
+    return flush();
+}
+
+bool RecordingWriter::append(recording::RecordKind kind, const QByteArray &bytes)
+{
+    if (!m_file.isOpen())
+        return false;
+    const qint64 timeUs = m_clock.nsecsElapsed() / 1000;
+    for (qsizetype from = 0; from < bytes.size() || (from == 0 && bytes.isEmpty()); from += recording::kMaxPayload) {
+        const QByteArray payload = bytes.mid(from, recording::kMaxPayload);
+        QByteArray record;
+        record.reserve(kRecordHeadSize + payload.size() + kCrcSize);
+        record.append(static_cast<char>(kind));
+        appendLittleEndian<qint64>(record, timeUs);
+        appendLittleEndian<quint16>(record, static_cast<quint16>(payload.size()));
+        record += payload;
+        appendLittleEndian<quint16>(record, qChecksum(record));
+        if (m_file.write(record) != record.size())
+            return fail(QStringLiteral("cannot write"));
+        m_written += record.size();
+        if (bytes.isEmpty())
+            break;
+    }
+    // The caller's timer flushes a quiet line; a busy one flushes here.
+    if (m_clock.elapsed() - m_lastFlushMs >= recording::kFlushIntervalMs)
+        return flush();
+    return true;
+}
+
+bool RecordingWriter::appendStreamStarted(oi::ProfileId profile, int baud, const QList<int> &packets)
+{
+    QJsonArray ids;
+    for (int id : packets)
+        ids.append(id);
+    const QJsonObject info{{QStringLiteral("profile"), fromStd(oi::profile(profile).key)},
+                           {QStringLiteral("baud"), baud},
+                           {QStringLiteral("packets"), ids}};
+    return append(recording::RecordKind::StreamStarted, QJsonDocument(info).toJson(QJsonDocument::Compact));
+}
+
+bool RecordingWriter::flush()
+{
+    if (!m_file.isOpen())
+        return false;
+    m_lastFlushMs = m_clock.elapsed();
+    if (!m_file.flush())
+        return fail(QStringLiteral("cannot write"));
+    return true;
+}
+
+void RecordingWriter::close()
+{
+    if (m_file.isOpen()) {
+        m_file.flush();
+        m_file.close();
+    }
+}
+
+// --- Reading ---
+
+QString RecordingDamage::describe() const
+{
+    return QStringLiteral("%1 at byte %2 (record %3, after %4 s)")
+        .arg(reason)
+        .arg(byteOffset)
+        .arg(recordIndex)
+        .arg(static_cast<double>(timeUs) / 1e6, 0, 'f', 3);
+}
+
+std::optional<Recording> Recording::load(const QString &path, QString *error)
+{
+    auto refuse = [&](const QString &why) -> std::optional<Recording> {
+        if (error)
+            *error = QStringLiteral("%1: %2").arg(path, why);
+        return std::nullopt;
+    };
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly))
+        return refuse(file.errorString());
+    const QByteArray data = file.readAll();
+    const qsizetype prefix = recording::kMagicSize + kVersionSize + kHeaderLengthSize;
+    if (data.size() < prefix || !data.startsWith(QByteArray(recording::kMagic, recording::kMagicSize)))
+        return refuse(QStringLiteral("not a Roomba Dashboard recording"));
+    const auto version = readLittleEndian<quint16>(data.constData() + recording::kMagicSize);
+    if (version != recording::kVersion)
+        return refuse(QStringLiteral("recording format version %1; this program reads version %2")
+                          .arg(version)
+                          .arg(recording::kVersion));
+    const auto headerBytes = readLittleEndian<quint32>(data.constData() + recording::kMagicSize + kVersionSize);
+    if (headerBytes > kMaxHeaderBytes || prefix + static_cast<qsizetype>(headerBytes) > data.size())
+        return refuse(QStringLiteral("the header is truncated"));
+    QJsonParseError jsonError;
+    const QJsonDocument header = QJsonDocument::fromJson(data.mid(prefix, headerBytes), &jsonError);
+    if (!header.isObject())
+        return refuse(QStringLiteral("the header is not valid JSON: %1").arg(jsonError.errorString()));
+
+    Recording r;
+    r.m_header = header.object();
+    qsizetype at = prefix + headerBytes;
+    qint64 lastTimeUs = 0;
+    auto damaged = [&](const QString &reason) {
+        r.m_damage = RecordingDamage{at, r.m_records, lastTimeUs, reason};
+    };
+    while (at < data.size()) {
+        if (data.size() - at < kRecordHeadSize + kCrcSize) {
+            damaged(QStringLiteral("truncated record"));
+            break;
+        }
+        const char *head = data.constData() + at;
+        const auto kind = static_cast<recording::RecordKind>(static_cast<quint8>(head[0]));
+        const auto timeUs = readLittleEndian<qint64>(head + 1);
+        const auto length = readLittleEndian<quint16>(head + 9);
+        if (data.size() - at < kRecordHeadSize + length + kCrcSize) {
+            damaged(QStringLiteral("truncated record"));
+            break;
+        }
+        const QByteArrayView covered(head, kRecordHeadSize + length);
+        if (readLittleEndian<quint16>(head + kRecordHeadSize + length) != qChecksum(covered)) {
+            damaged(QStringLiteral("checksum mismatch"));
+            break;
+        }
+        if (timeUs < lastTimeUs) {
+            damaged(QStringLiteral("time runs backwards"));
+            break;
+        }
+        const QByteArray payload(head + kRecordHeadSize, length);
+        switch (kind) {
+        case recording::RecordKind::Received:
+            r.m_received += payload;
+            r.m_chunks.push_back({timeUs, r.m_received.size()});
+            break;
+        case recording::RecordKind::Sent:
+            r.m_sentBytes += length;
+            break;
+        case recording::RecordKind::StreamStarted: {
+            if (r.m_stream.profile)
+                break; // the first stream decides how the whole file is read
+            const QJsonObject info = QJsonDocument::fromJson(payload).object();
+            const std::string key = info.value(QStringLiteral("profile")).toString().toStdString();
+            r.m_stream.profile = oi::profileByKey(key);
+            r.m_stream.baud = info.value(QStringLiteral("baud")).toInt();
+            for (const QJsonValue id : info.value(QStringLiteral("packets")).toArray())
+                r.m_stream.packets << id.toInt();
+            if (!r.m_stream.profile || r.m_stream.packets.isEmpty()) {
+                r.m_stream = {};
+                damaged(QStringLiteral("unreadable stream description"));
+            }
+            break;
+        }
+        default:
+            damaged(QStringLiteral("unknown record type 0x%1").arg(static_cast<quint8>(head[0]), 2, 16, QLatin1Char('0')));
+            break;
+        }
+        if (r.m_damage)
+            break;
+        lastTimeUs = timeUs;
+        at += kRecordHeadSize + length + kCrcSize;
+        ++r.m_records;
+    }
+    r.m_durationUs = lastTimeUs;
+    if (!r.m_stream.profile) {
+        if (r.m_damage)
+            return refuse(QStringLiteral("damaged before the stream started: %1").arg(r.m_damage->describe()));
+        return refuse(QStringLiteral("the recording holds no sensor stream"));
+    }
+    r.indexFrames();
+    return r;
+}
+
+// Feeds the parser one byte at a time so that each frame's end is known
+// exactly; seeking and stepping land on these ends.
+void Recording::indexFrames()
+{
+    oi::StreamParser parser(*m_stream.profile);
+    const std::vector<std::uint8_t> ids(m_stream.packets.begin(), m_stream.packets.end());
+    parser.setExpectedStream(ids);
+    qsizetype offset = 0;
+    std::size_t chunk = 0;
+    parser.setSnapshotHandler([&](const oi::SensorSnapshot &, oi::FrameKind kind) {
+        if (kind == oi::FrameKind::Stream)
+            m_frames.push_back({m_chunks[chunk].timeUs, offset + 1});
+    });
+    for (; offset < m_received.size(); ++offset) {
+        while (m_chunks[chunk].end <= offset)
+            ++chunk;
+        parser.feed(asSpan(m_received, offset, offset + 1));
+    }
+}
+
+void Recording::forEachSnapshot(const std::function<void(qint64, const oi::SensorSnapshot &)> &visit) const
+{
+    oi::StreamParser parser(*m_stream.profile);
+    const std::vector<std::uint8_t> ids(m_stream.packets.begin(), m_stream.packets.end());
+    parser.setExpectedStream(ids);
+    std::size_t frame = 0;
+    parser.setSnapshotHandler([&](const oi::SensorSnapshot &snapshot, oi::FrameKind kind) {
+        if (kind == oi::FrameKind::Stream && frame < m_frames.size())
+            visit(m_frames[frame++].timeUs, snapshot);
+    });
+    // Frame by frame, so that the times line up with the index.
+    qsizetype from = 0;
+    for (const Frame &f : m_frames) {
+        parser.feed(asSpan(m_received, from, f.end));
+        from = f.end;
+    }
+}
+
+void Recording::writeCsv(QTextStream &out) const
+{
+    std::vector<const oi::PacketInfo *> columns;
+    for (int id : m_stream.packets) {
+        const oi::PacketInfo *info = m_stream.profile->packet(id);
+        if (info) {
+            columns.push_back(info);
+            continue;
+        }
+        // A group: its member packets, in order.
+        if (const oi::PacketGroup *g = m_stream.profile->group(id))
+            for (int member = g->first; member <= g->last; ++member)
+                if (const oi::PacketInfo *m = m_stream.profile->packet(member))
+                    columns.push_back(m);
+    }
+    out << "time_s";
+    for (const oi::PacketInfo *info : columns)
+        out << ',' << fromStd(info->key);
+    out << '\n';
+    forEachSnapshot([&](qint64 timeUs, const oi::SensorSnapshot &s) {
+        out << QString::number(static_cast<double>(timeUs) / 1e6, 'f', 6);
+        for (const oi::PacketInfo *info : columns) {
+            out << ',';
+            if (s.has(info->id))
+                out << s.raw(info->id);
+        }
+        out << '\n';
+    });
+}
+
+} // namespace oilink

@@ -1,0 +1,135 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "robot_profile.h"
+#include "sensor_snapshot.h"
+
+#include <QByteArray>
+#include <QElapsedTimer>
+#include <QFile>
+#include <QJsonObject>
+#include <QList>
+#include <QString>
+#include <QTextStream>
+
+#include <functional>
+#include <optional>
+#include <vector>
+
+namespace oilink {
+
+// A recording of every byte on a robot link, with timestamps. The format is
+// described in recording_format.md; in short: a magic, a version, a JSON
+// header, then records of (kind, microseconds, length, bytes, CRC-16).
+namespace recording {
+inline constexpr char kMagic[] = "OIRECORD"; // 8 bytes, no terminator in the file
+inline constexpr int kMagicSize = 8;
+inline constexpr quint16 kVersion = 1;
+inline constexpr int kMaxPayload = 0xFFFF;
+inline constexpr int kFlushIntervalMs = 1000;
+inline constexpr char kFileSuffix[] = "oirec";
+
+enum class RecordKind : quint8 {
+    Received = 'R',      // bytes from the robot
+    Sent = 'T',          // bytes to the robot
+    StreamStarted = 'S', // JSON: {"profile": "create2", "baud": 115200, "packets": [..]}
+};
+} // namespace recording
+
+// Appends records to a recording file as they happen. Not QSaveFile: a
+// recording must survive a crash, so the file is written in place and
+// flushed at least once a second (by the caller's timer or by append()).
+class RecordingWriter {
+public:
+    RecordingWriter() = default;
+    ~RecordingWriter();
+    RecordingWriter(const RecordingWriter &) = delete;
+    RecordingWriter &operator=(const RecordingWriter &) = delete;
+
+    // Creates (or replaces) the file and writes the header. `header` gains
+    // "format", "version" and "started". False with errorString() on failure.
+    bool open(const QString &path, QJsonObject header);
+    bool isOpen() const { return m_file.isOpen(); }
+    // Time runs from open(). Payloads longer than 64 KiB are split.
+    bool append(recording::RecordKind kind, const QByteArray &bytes);
+    bool appendStreamStarted(oi::ProfileId profile, int baud, const QList<int> &packets);
+    // Pushes what is buffered to the operating system.
+    bool flush();
+    void close();
+    QString errorString() const { return m_error; }
+    QString path() const { return m_file.fileName(); }
+    qint64 bytesWritten() const { return m_written; }
+
+private:
+    bool fail(const QString &what);
+
+    QFile m_file;
+    QElapsedTimer m_clock;
+    qint64 m_lastFlushMs = 0;
+    qint64 m_written = 0;
+    QString m_error;
+};
+
+// Where a damaged recording stops being readable.
+struct RecordingDamage {
+    qint64 byteOffset = 0; // in the file
+    int recordIndex = 0;   // the first unreadable record, counting from 0
+    qint64 timeUs = 0;     // time of the last good record
+    QString reason;        // "checksum mismatch", "truncated record", ...
+    QString describe() const;
+};
+
+// A recording read into memory, with an index of its stream frames. A damaged
+// file loads up to the damage, which damage() reports.
+class Recording {
+public:
+    struct Chunk {
+        qint64 timeUs = 0;
+        qsizetype end = 0; // received bytes [previous end, end)
+    };
+    struct Frame {
+        qint64 timeUs = 0; // of the chunk holding the frame's last byte
+        qsizetype end = 0; // offset in receivedBytes() just after the frame
+    };
+    struct StreamInfo {
+        const oi::RobotProfile *profile = nullptr;
+        int baud = 0;
+        QList<int> packets;
+    };
+
+    // nullopt with `error` set when the file cannot be used at all: missing,
+    // not a recording, a newer version, or no stream in it.
+    static std::optional<Recording> load(const QString &path, QString *error);
+
+    const QJsonObject &header() const { return m_header; }
+    const StreamInfo &stream() const { return m_stream; }
+    const oi::RobotProfile &robotProfile() const { return *m_stream.profile; }
+    const QByteArray &receivedBytes() const { return m_received; }
+    const std::vector<Chunk> &chunks() const { return m_chunks; }
+    const std::vector<Frame> &frames() const { return m_frames; }
+    qint64 durationUs() const { return m_durationUs; }
+    qint64 bytesSent() const { return m_sentBytes; }
+    int recordCount() const { return m_records; }
+    const std::optional<RecordingDamage> &damage() const { return m_damage; }
+
+    // Decodes every stream frame in order, as the link would.
+    void forEachSnapshot(const std::function<void(qint64 timeUs, const oi::SensorSnapshot &)> &visit) const;
+    // One row per frame: time_s, then one column per packet of the stream.
+    // Bit fields and signed values are written as the decoded numbers.
+    void writeCsv(QTextStream &out) const;
+
+private:
+    void indexFrames();
+
+    QJsonObject m_header;
+    StreamInfo m_stream;
+    QByteArray m_received;
+    std::vector<Chunk> m_chunks;
+    std::vector<Frame> m_frames;
+    qint64 m_durationUs = 0;
+    qint64 m_sentBytes = 0;
+    int m_records = 0;
+    std::optional<RecordingDamage> m_damage;
+};
+
+} // namespace oilink

@@ -1,0 +1,100 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "recording_file.h"
+#include "transport.h"
+
+#include <QElapsedTimer>
+#include <QMetaType>
+#include <QTimer>
+
+#include <optional>
+
+namespace oilink {
+
+// What the user asks of a replay. Speed is 0.25 to 10.
+struct ReplayCommand {
+    enum class Kind : quint8 { Play, Pause, SetSpeed, Seek, Step };
+    Kind kind = Kind::Play;
+    double speed = 1.0; // SetSpeed
+    qint64 timeUs = 0;  // Seek
+    int frames = 1;     // Step: +1 next frame, -1 previous
+
+    static ReplayCommand play() { return {Kind::Play}; }
+    static ReplayCommand pause() { return {Kind::Pause}; }
+    static ReplayCommand setSpeed(double speed) { return {Kind::SetSpeed, speed}; }
+    static ReplayCommand seek(qint64 timeUs) { return {Kind::Seek, 1.0, timeUs}; }
+    static ReplayCommand step(int frames) { return {Kind::Step, 1.0, 0, frames}; }
+};
+
+// Where a replay is. Sent on every command and a few times a second while it plays.
+struct ReplayStatus {
+    QString path;
+    qint64 positionUs = 0;
+    qint64 durationUs = 0;
+    int frame = -1; // the last frame delivered, -1 before the first
+    int frameCount = 0;
+    bool playing = false;
+    bool finished = false; // played to the end (or to the damage)
+    double speed = 1.0;
+    QString damage; // empty for an intact recording
+
+    friend bool operator==(const ReplayStatus &, const ReplayStatus &) = default;
+};
+
+inline constexpr double kMinReplaySpeed = 0.25;
+inline constexpr double kMaxReplaySpeed = 10.0;
+
+// A recording played back as if it were the robot: received bytes come out
+// at their recorded times (scaled by the speed), always ending on a frame
+// boundary so that pausing, seeking and stepping never split a frame. What
+// the link writes is accepted and dropped: there is no robot to answer.
+class ReplayTransport : public Transport {
+    Q_OBJECT
+public:
+    static constexpr int kTickMs = 10;
+    static constexpr int kStatusEveryMs = 100;
+
+    explicit ReplayTransport(const QString &path, QObject *parent = nullptr);
+    ~ReplayTransport() override;
+
+    void open() override; // loads the file and starts playing
+    void close() override;
+    bool isOpen() const override { return m_open; }
+    bool write(const QByteArray &bytes) override;
+    void flush(int) override {}
+    QString describe() const override;
+
+    void control(const ReplayCommand &command);
+    ReplayStatus status() const;
+
+signals:
+    void replayStatus(const oilink::ReplayStatus &status);
+
+private:
+    void tick();
+    void play();
+    void pause();
+    void seek(qint64 timeUs);
+    void showFrame(int frame);
+    void deliverThrough(qsizetype end);
+    void emitStatus();
+
+    QString m_path;
+    std::optional<Recording> m_recording;
+    bool m_open = false;
+    bool m_playing = false;
+    bool m_finished = false;
+    double m_speed = 1.0;
+    qint64 m_positionUs = 0;
+    qsizetype m_delivered = 0; // received bytes handed to the link so far
+    int m_nextFrame = 0;
+    QTimer m_tick;
+    QElapsedTimer m_sinceTick;
+    QElapsedTimer m_sinceStatus;
+};
+
+} // namespace oilink
+
+Q_DECLARE_METATYPE(oilink::ReplayCommand)
+Q_DECLARE_METATYPE(oilink::ReplayStatus)

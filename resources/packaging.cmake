@@ -1,0 +1,31 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
+# CPack: `cpack -G DEB` in the build directory makes roomba-dashboard_<version>_<arch>.deb
+# from the install rules. Included from the top-level CMakeLists.txt, after
+# every install rule.
+set(CPACK_PACKAGE_NAME roomba-dashboard)
+set(CPACK_PACKAGE_VENDOR "Roomba Dashboard developers")
+set(CPACK_PACKAGE_DESCRIPTION_SUMMARY "${PROJECT_DESCRIPTION}")
+set(CPACK_PACKAGE_DESCRIPTION
+    "A Qt 6 dashboard for iRobot robots that speak the Open Interface (Roomba 500, \
+Roomba 600 / Create 2, original Create), over a serial port or a TCP bridge: \
+live sensors, gauges and plots, driving from a drive pad, keyboard or gamepad, \
+and editors for songs, LEDs, schedule and Create scripts. Includes roomba-sim, \
+a virtual robot on a pseudo-terminal or TCP, and the roomba-ctl command-line tool.")
+set(CPACK_RESOURCE_FILE_LICENSE "${PROJECT_SOURCE_DIR}/LICENSE")
+set(CPACK_PACKAGING_INSTALL_PREFIX /usr)
+# The build is RelWithDebInfo; users get the binaries without debug info.
+set(CPACK_STRIP_FILES ON)
+
+set(ROOMBA_PACKAGE_MAINTAINER "Roomba Dashboard developers <roomba-dashboard@users.noreply.github.com>"
+    CACHE STRING "Maintainer field of the .deb (Name <email>)")
+set(CPACK_DEBIAN_PACKAGE_MAINTAINER "${ROOMBA_PACKAGE_MAINTAINER}")
+set(CPACK_DEBIAN_PACKAGE_SECTION science)
+set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)
+# dpkg-shlibdeps works out the Qt, QCustomPlot, SDL and libsmf libraries
+# (Debian's libqt6gui6 carries the xcb platform plugin). Qt's Wayland plugin is
+# loaded at run time and named by no linked library; without it the window
+# runs under XWayland, so recommend it rather than depend on it.
+set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
+set(CPACK_DEBIAN_PACKAGE_RECOMMENDS "qt6-wayland")
+
+include(CPack)

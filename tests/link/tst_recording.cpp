@@ -1,0 +1,372 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Recordings: the file format, flushing, record-then-replay, damaged files,
+// seeking and stepping, and the CSV export.
+#include "recording_file.h"
+#include "replay_transport.h"
+#include "robot_link.h"
+
+#include "stream_parser.h"
+
+#include <QFile>
+#include <QSignalSpy>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QtEndian>
+
+using oilink::LinkSettings;
+using oilink::LinkState;
+using oilink::Recording;
+using oilink::RecordingWriter;
+using oilink::ReplayCommand;
+using oilink::ReplayStatus;
+using oilink::ReplayTransport;
+using oilink::RobotLink;
+using oilink::recording::RecordKind;
+
+namespace {
+constexpr int kTimeoutMs = 15000;
+constexpr int kFrames = 60;
+
+QList<oi::SensorSnapshot> snapshotsOf(const QSignalSpy &spy)
+{
+    QList<oi::SensorSnapshot> out;
+    for (const QList<QVariant> &args : spy)
+        out << args.at(0).value<oi::SensorSnapshot>();
+    return out;
+}
+
+// Records the virtual Create 2 for kFrames frames; returns the snapshots the
+// link emitted while it recorded.
+QList<oi::SensorSnapshot> recordVirtualRobot(const QString &path)
+{
+    RobotLink link;
+    QSignalSpy snapshots(&link, &RobotLink::snapshot);
+    link.open(LinkSettings::virtualRobotOf(oi::ProfileId::Create2, oi::ProfileId::Create2));
+    link.startRecording(path);
+    if (!QTest::qWaitFor([&] { return snapshots.size() >= kFrames; }, kTimeoutMs))
+        return {};
+    link.close(); // stops the recording after the stop bytes
+    return snapshotsOf(snapshots);
+}
+
+Recording load(const QString &path)
+{
+    QString error;
+    std::optional<Recording> r = Recording::load(path, &error);
+    if (!r)
+        qFatal("cannot load %s: %s", qPrintable(path), qPrintable(error));
+    return *r;
+}
+
+QByteArray fileBytes(const QString &path)
+{
+    QFile f(path);
+    return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+}
+
+void writeFile(const QString &path, const QByteArray &bytes)
+{
+    QFile f(path);
+    QVERIFY(f.open(QIODevice::WriteOnly | QIODevice::Truncate));
+    QCOMPARE(f.write(bytes), bytes.size());
+}
+
+// Where the first record starts: after magic, version, header length, header.
+qsizetype firstRecordOffset(const QByteArray &file)
+{
+    return 14 + qFromLittleEndian<quint32>(file.constData() + 10);
+}
+
+QList<oi::SensorSnapshot> parse(const Recording &r, const QByteArray &bytes)
+{
+    QList<oi::SensorSnapshot> out;
+    oi::StreamParser parser(r.robotProfile());
+    parser.setSnapshotHandler([&](const oi::SensorSnapshot &s, oi::FrameKind) { out << s; });
+    parser.feed({reinterpret_cast<const std::uint8_t *>(bytes.constData()), static_cast<std::size_t>(bytes.size())});
+    return out;
+}
+
+QList<oi::SensorSnapshot> allSnapshots(const Recording &r)
+{
+    QList<oi::SensorSnapshot> out;
+    r.forEachSnapshot([&](qint64, const oi::SensorSnapshot &s) { out << s; });
+    return out;
+}
+} // namespace
+
+class TestRecording : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase() { oilink::registerLinkMetaTypes(); }
+
+    void writerAndReaderAgree()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath("a.oirec");
+        RecordingWriter writer;
+        QVERIFY2(writer.open(path, {{"link", "test"}}), qPrintable(writer.errorString()));
+        QVERIFY(writer.append(RecordKind::Sent, QByteArray("\x80\x83", 2)));
+        QVERIFY(writer.appendStreamStarted(oi::ProfileId::Create2, 115200, {7}));
+        // One Stream frame for packet 7 (bumps = 3), split over two records.
+        QVERIFY(writer.append(RecordKind::Received, QByteArray("\x13\x02\x07", 3)));
+        QVERIFY(writer.append(RecordKind::Received, QByteArray("\x03\xE1", 2)));
+        writer.close();
+
+        const Recording r = load(path);
+        QCOMPARE(r.header().value("link").toString(), QString("test"));
+        QCOMPARE(r.header().value("version").toInt(), 1);
+        QCOMPARE(r.robotProfile().id, oi::ProfileId::Create2);
+        QCOMPARE(r.stream().baud, 115200);
+        QCOMPARE(r.stream().packets, QList<int>{7});
+        QCOMPARE(r.recordCount(), 4);
+        QCOMPARE(r.bytesSent(), 2);
+        QCOMPARE(r.receivedBytes(), QByteArray("\x13\x02\x07\x03\xE1", 5));
+        QCOMPARE(r.frames().size(), std::size_t(1));
+        QCOMPARE(r.frames()[0].end, qsizetype(5));
+        QVERIFY(!r.damage());
+        const QList<oi::SensorSnapshot> s = allSnapshots(r);
+        QCOMPARE(s.size(), 1);
+        QCOMPARE(s[0].raw(7), 3);
+    }
+
+    void longPayloadsAreSplit()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath("long.oirec");
+        RecordingWriter writer;
+        QVERIFY(writer.open(path, {}));
+        QVERIFY(writer.appendStreamStarted(oi::ProfileId::Create2, 115200, {7}));
+        QVERIFY(writer.append(RecordKind::Received, QByteArray(70000, 'x')));
+        writer.close();
+        const Recording r = load(path);
+        QCOMPARE(r.receivedBytes().size(), 70000);
+        QCOMPARE(r.recordCount(), 3);
+    }
+
+    void flushedWhileRecording()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath("live.oirec");
+        RobotLink link;
+        QSignalSpy status(&link, &RobotLink::recordingStatus);
+        link.open(LinkSettings::virtualRobotOf(oi::ProfileId::Create2, oi::ProfileId::Create2));
+        link.startRecording(path);
+        QVERIFY(!status.isEmpty());
+        QVERIFY(status.last().at(0).value<oilink::RecordingStatus>().active);
+        // Without closing anything, frames reach the disk: what a crash would leave.
+        QTRY_VERIFY_WITH_TIMEOUT(fileBytes(path).size() > 2000, kTimeoutMs);
+        QString error;
+        const std::optional<Recording> partial = Recording::load(path, &error);
+        QVERIFY2(partial, qPrintable(error));
+        QVERIFY(!partial->frames().empty());
+        link.stopRecording();
+        QVERIFY(!status.last().at(0).value<oilink::RecordingStatus>().active);
+        QVERIFY(status.last().at(0).value<oilink::RecordingStatus>().error.isEmpty());
+    }
+
+    void unwritablePathIsReported()
+    {
+        RobotLink link;
+        QSignalSpy status(&link, &RobotLink::recordingStatus);
+        link.startRecording("/nonexistent-dir/x.oirec");
+        QCOMPARE(status.size(), 1);
+        const auto s = status.at(0).at(0).value<oilink::RecordingStatus>();
+        QVERIFY(!s.active);
+        QVERIFY2(s.error.contains("cannot create the recording"), qPrintable(s.error));
+    }
+
+    void recordThenReplayGivesIdenticalSnapshots()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath("run.oirec");
+        const QList<oi::SensorSnapshot> live = recordVirtualRobot(path);
+        QVERIFY(live.size() >= kFrames);
+        const Recording r = load(path);
+        QCOMPARE(int(r.frames().size()), live.size());
+        QVERIFY(r.bytesSent() > 0);
+
+        RobotLink replay;
+        QSignalSpy snapshots(&replay, &RobotLink::snapshot);
+        QSignalSpy statuses(&replay, &RobotLink::replayStatus);
+        replay.open(LinkSettings::replayOf(path, r.robotProfile().id, r.stream().baud, r.stream().packets));
+        replay.controlReplay(ReplayCommand::setSpeed(10));
+        QTRY_VERIFY_WITH_TIMEOUT(!statuses.isEmpty() && statuses.last().at(0).value<ReplayStatus>().finished,
+                                 kTimeoutMs);
+        QCOMPARE(snapshotsOf(snapshots), live);
+        const ReplayStatus last = statuses.last().at(0).value<ReplayStatus>();
+        QCOMPARE(last.frame, live.size() - 1);
+        QCOMPARE(last.frameCount, live.size());
+        QVERIFY(last.damage.isEmpty());
+    }
+
+    void seekAndStepLandOnWholeFrames()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath("run.oirec");
+        QVERIFY(!recordVirtualRobot(path).isEmpty());
+        const Recording r = load(path);
+        const QList<oi::SensorSnapshot> all = allSnapshots(r);
+        QVERIFY(all.size() >= kFrames);
+
+        ReplayTransport replay(path);
+        QByteArray delivered;
+        connect(&replay, &oilink::Transport::bytesReceived, [&](const QByteArray &b) { delivered += b; });
+        replay.open();
+        replay.control(ReplayCommand::pause());
+        const int middle = all.size() / 2;
+        delivered.clear();
+        replay.control(ReplayCommand::seek(r.frames()[middle].timeUs));
+        QCOMPARE(parse(r, delivered), QList<oi::SensorSnapshot>{all[middle]});
+        QCOMPARE(replay.status().frame, middle);
+        QCOMPARE(replay.status().positionUs, r.frames()[middle].timeUs);
+
+        delivered.clear();
+        replay.control(ReplayCommand::step(1));
+        QCOMPARE(parse(r, delivered), QList<oi::SensorSnapshot>{all[middle + 1]});
+        delivered.clear();
+        replay.control(ReplayCommand::step(-1));
+        QCOMPARE(parse(r, delivered), QList<oi::SensorSnapshot>{all[middle]});
+        QVERIFY(!replay.status().playing);
+
+        // Stepping stops at the ends rather than wrapping.
+        replay.control(ReplayCommand::step(-10000));
+        QCOMPARE(replay.status().frame, 0);
+        replay.control(ReplayCommand::step(10000));
+        QCOMPARE(replay.status().frame, all.size() - 1);
+    }
+
+    void speedStaysWithinItsRange()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath("run.oirec");
+        QVERIFY(!recordVirtualRobot(path).isEmpty());
+        ReplayTransport replay(path);
+        replay.open();
+        replay.control(ReplayCommand::setSpeed(0.25));
+        QCOMPARE(replay.status().speed, 0.25);
+        replay.control(ReplayCommand::setSpeed(10));
+        QCOMPARE(replay.status().speed, 10.0);
+        replay.control(ReplayCommand::setSpeed(20));
+        QCOMPARE(replay.status().speed, 10.0);
+        replay.control(ReplayCommand::setSpeed(0.1));
+        QCOMPARE(replay.status().speed, 10.0);
+    }
+
+    void truncatedRecordingReplaysUpToTheDamage()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath("run.oirec");
+        QVERIFY(!recordVirtualRobot(path).isEmpty());
+        const QByteArray whole = fileBytes(path);
+        const Recording intact = load(path);
+        const QString cut = dir.filePath("cut.oirec");
+        writeFile(cut, whole.left(whole.size() * 2 / 3));
+
+        const Recording r = load(cut);
+        QVERIFY(r.damage());
+        QCOMPARE(r.damage()->reason, QString("truncated record"));
+        QVERIFY(r.damage()->byteOffset < whole.size() * 2 / 3);
+        QVERIFY(r.frames().size() > 10);
+        QVERIFY(r.frames().size() < intact.frames().size());
+        // What remains is exactly the start of the intact recording.
+        const QList<oi::SensorSnapshot> head = allSnapshots(r);
+        QCOMPARE(head, allSnapshots(intact).mid(0, head.size()));
+
+        RobotLink replay;
+        QSignalSpy snapshots(&replay, &RobotLink::snapshot);
+        QSignalSpy statuses(&replay, &RobotLink::replayStatus);
+        replay.open(LinkSettings::replayOf(cut, r.robotProfile().id, r.stream().baud, r.stream().packets));
+        replay.controlReplay(ReplayCommand::setSpeed(10));
+        QTRY_VERIFY_WITH_TIMEOUT(!statuses.isEmpty() && statuses.last().at(0).value<ReplayStatus>().finished,
+                                 kTimeoutMs);
+        QCOMPARE(snapshots.size(), head.size());
+        const QString damage = statuses.last().at(0).value<ReplayStatus>().damage;
+        QVERIFY2(damage.contains(QString("at byte %1").arg(r.damage()->byteOffset)), qPrintable(damage));
+    }
+
+    void corruptedRecordIsFound()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath("run.oirec");
+        QVERIFY(!recordVirtualRobot(path).isEmpty());
+        QByteArray bytes = fileBytes(path);
+        const qsizetype flipped = firstRecordOffset(bytes) + (bytes.size() - firstRecordOffset(bytes)) / 2;
+        bytes[flipped] = static_cast<char>(bytes[flipped] ^ 0x5A);
+        const QString bad = dir.filePath("bad.oirec");
+        writeFile(bad, bytes);
+
+        const Recording r = load(bad);
+        QVERIFY(r.damage());
+        QVERIFY2(r.damage()->reason == "checksum mismatch" || r.damage()->reason.startsWith("unknown record type")
+                     || r.damage()->reason == "truncated record",
+                 qPrintable(r.damage()->reason));
+        // The damaged record starts at or before the flipped byte, and within one record of it.
+        QVERIFY(r.damage()->byteOffset <= flipped);
+        QVERIFY(flipped - r.damage()->byteOffset < 11 + 0xFFFF + 2);
+        QVERIFY(!r.frames().empty());
+    }
+
+    void unusableFilesAreRefusedWithAReason_data()
+    {
+        QTest::addColumn<QByteArray>("content");
+        QTest::addColumn<QString>("reason");
+        QTest::newRow("empty") << QByteArray() << "not a Roomba Dashboard recording";
+        QTest::newRow("text") << QByteArray("time,wall\n0,1\n") << "not a Roomba Dashboard recording";
+        QByteArray v2("OIRECORD\x02\x00\x02\x00\x00\x00{}", 16);
+        QTest::newRow("newer version") << v2 << "version 2";
+        QByteArray cutHeader("OIRECORD\x01\x00\xFF\x00\x00\x00{", 15);
+        QTest::newRow("truncated header") << cutHeader << "header is truncated";
+        QByteArray badJson("OIRECORD\x01\x00\x02\x00\x00\x00{x", 16);
+        QTest::newRow("bad header") << badJson << "not valid JSON";
+        QByteArray noStream("OIRECORD\x01\x00\x02\x00\x00\x00{}", 16);
+        QTest::newRow("no stream") << noStream << "no sensor stream";
+    }
+
+    void unusableFilesAreRefusedWithAReason()
+    {
+        QFETCH(QByteArray, content);
+        QFETCH(QString, reason);
+        QTemporaryDir dir;
+        const QString path = dir.filePath("x.oirec");
+        writeFile(path, content);
+        QString error;
+        QVERIFY(!Recording::load(path, &error));
+        QVERIFY2(error.contains(reason), qPrintable(error));
+        QVERIFY(error.startsWith(path));
+        // A replay of it fails to open with the same reason.
+        ReplayTransport replay(path);
+        QSignalSpy errors(&replay, &oilink::Transport::errorOccurred);
+        replay.open();
+        QCOMPARE(errors.size(), 1);
+        QCOMPARE(errors.at(0).at(0).toString(), error);
+        QVERIFY(!replay.isOpen());
+    }
+
+    void csvHasOneRowPerFrame()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath("run.oirec");
+        QVERIFY(!recordVirtualRobot(path).isEmpty());
+        const Recording r = load(path);
+        QString csv;
+        QTextStream out(&csv);
+        r.writeCsv(out);
+        out.flush();
+        const QStringList lines = csv.split('\n', Qt::SkipEmptyParts);
+        QCOMPARE(lines.size(), int(r.frames().size()) + 1);
+        const QStringList columns = lines[0].split(',');
+        QCOMPARE(columns.first(), QString("time_s"));
+        QCOMPARE(columns.size(), 1 + 52); // group 100: packets 7..58
+        QCOMPARE(columns[1], QString("bumps_wheel_drops"));
+        const int voltage = columns.indexOf("voltage");
+        QVERIFY(voltage > 0);
+        const QList<oi::SensorSnapshot> all = allSnapshots(r);
+        const QStringList row = lines[5].split(',');
+        QCOMPARE(row.size(), columns.size());
+        QCOMPARE(row[voltage].toInt(), all[4].raw(22));
+        QCOMPARE(row[0].toDouble(), double(r.frames()[4].timeUs) / 1e6);
+    }
+};
+
+QTEST_GUILESS_MAIN(TestRecording)
+#include "tst_recording.moc"

@@ -1,7 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "command_line.h"
 
+#include "recording_file.h"
 #include "robot_profile.h"
+#include "language_switcher.h"
+
+#include <QDir>
+#include <QFileInfo>
 
 #include <QCoreApplication>
 
@@ -11,24 +16,33 @@ QString tr(const char *text) { return QCoreApplication::translate("DashboardComm
 
 QString DashboardCommandLine::usage()
 {
-    return tr("Usage: roomba-dashboard [--sim | --port PATH | --tcp HOST:PORT] [--profile P] [--baud N]\n"
+    QStringList codes;
+    for (const UiLanguage &l : uiLanguages())
+        codes << l.code;
+    return tr("Usage: roomba-dashboard [--sim | --port PATH | --tcp HOST:PORT | --replay FILE]\n"
+              "                        [--profile P] [--baud N] [--record FILE] [--lang CODE]\n"
               "\n"
               "  --sim              the built-in virtual robot\n"
               "  --port PATH        a serial port, USB adapter or pseudo-terminal\n"
               "  --tcp HOST:PORT    a serial-over-TCP bridge such as ser2net\n"
+              "  --replay FILE      play back a recording (.oirec) as if it were the robot\n"
               "  --profile P        roomba500, create2 (also roomba600), create1 (also create) or auto\n"
               "  --baud N           the line speed; the profile's default when left out\n"
+              "  --record FILE      record every byte to and from the robot into FILE\n"
+              "  --lang CODE        the language of the window: %1\n"
               "  --help, --version\n"
               "\n"
               "Without a connection option the dashboard reconnects to what was used last,\n"
-              "or on first start to the virtual robot.\n");
+              "or on first start to the virtual robot. Without --lang it speaks the language\n"
+              "chosen in its View menu, or the system's.\n")
+        .arg(codes.join(QLatin1String(", ")));
 }
 
 DashboardCommandLine DashboardCommandLine::parse(const QStringList &arguments)
 {
     DashboardCommandLine line;
-    enum class Target { Saved, Sim, Port, Tcp } target = Target::Saved;
-    QString port, host;
+    enum class Target { Saved, Sim, Port, Tcp, Replay } target = Target::Saved;
+    QString port, host, replayPath;
     quint16 tcpPort = 0;
     std::optional<oi::ProfileId> profile;
     int baud = 0;
@@ -38,7 +52,8 @@ DashboardCommandLine DashboardCommandLine::parse(const QStringList &arguments)
     };
     for (qsizetype i = 1; i < arguments.size(); ++i) {
         const QString &a = arguments[i];
-        const bool takesValue = a == "--port" || a == "--tcp" || a == "--profile" || a == "--baud";
+        const bool takesValue = a == "--port" || a == "--tcp" || a == "--replay" || a == "--profile"
+                                || a == "--baud" || a == "--record" || a == "--lang";
         if (takesValue && i + 1 >= arguments.size())
             return fail(tr("%1 needs a value; see --help").arg(a));
         const QString value = takesValue ? arguments[++i] : QString();
@@ -46,11 +61,14 @@ DashboardCommandLine DashboardCommandLine::parse(const QStringList &arguments)
             line.showHelp = true;
         } else if (a == "--version") {
             line.showVersion = true;
-        } else if (a == "--sim" || a == "--port" || a == "--tcp") {
+        } else if (a == "--sim" || a == "--port" || a == "--tcp" || a == "--replay") {
             if (target != Target::Saved)
-                return fail(tr("choose one of --sim, --port and --tcp"));
+                return fail(tr("choose one of --sim, --port, --tcp and --replay"));
             if (a == "--sim") {
                 target = Target::Sim;
+            } else if (a == "--replay") {
+                target = Target::Replay;
+                replayPath = value;
             } else if (a == "--port") {
                 target = Target::Port;
                 port = value;
@@ -76,6 +94,18 @@ DashboardCommandLine DashboardCommandLine::parse(const QStringList &arguments)
             baud = value.toInt(&ok);
             if (!ok || oi::baudCodeFor(baud) < 0)
                 return fail(tr("--baud %1 is not a rate the robot offers (300 .. 115200)").arg(value));
+        } else if (a == "--record") {
+            if (!QFileInfo(value).absoluteDir().exists())
+                return fail(tr("--record: the folder of '%1' does not exist").arg(value));
+            line.recordPath = value;
+        } else if (a == "--lang") {
+            if (!isUiLanguage(value)) {
+                QStringList codes;
+                for (const UiLanguage &l : uiLanguages())
+                    codes << l.code;
+                return fail(tr("unknown language '%1' (%2)").arg(value, codes.join(QLatin1String(", "))));
+            }
+            line.language = value;
         } else {
             return fail(tr("unknown argument '%1'; see --help").arg(a));
         }
@@ -95,6 +125,19 @@ DashboardCommandLine DashboardCommandLine::parse(const QStringList &arguments)
         line.connection = oilink::LinkSettings::tcp(host, tcpPort, profile);
         line.connection->baud = baud;
         break;
+    case Target::Replay: {
+        if (profile || baud)
+            return fail(tr("--replay reads the profile and baud from the recording; leave out --profile and --baud"));
+        if (!line.recordPath.isEmpty())
+            return fail(tr("--record records a robot; a replay is already a recording"));
+        QString why;
+        const std::optional<oilink::Recording> recording = oilink::Recording::load(replayPath, &why);
+        if (!recording)
+            return fail(tr("cannot replay %1").arg(why));
+        line.connection = oilink::LinkSettings::replayOf(replayPath, recording->robotProfile().id,
+                                                         recording->stream().baud, recording->stream().packets);
+        break;
+    }
     }
     return line;
 }

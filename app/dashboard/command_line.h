@@ -8,10 +8,13 @@
 
 #include <optional>
 
-// What roomba-dashboard was asked to connect to on its command line:
-//   [--sim | --port PATH | --tcp HOST:PORT] [--profile P] [--baud N]
+// What roomba-dashboard was asked to do on its command line:
+//   [--sim | --port PATH | --tcp HOST:PORT | --replay FILE] [--profile P]
+//   [--baud N] [--record FILE] [--lang CODE]
 struct DashboardCommandLine {
     std::optional<oilink::LinkSettings> connection; // nullopt: the saved connection
+    QString recordPath; // record the link's bytes from the start
+    QString language;   // a code from uiLanguages(); empty: the saved choice
     bool showHelp = false;
     bool showVersion = false;
     QString error; // one line for the user; empty when the arguments are good

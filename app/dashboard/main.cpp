@@ -33,9 +33,16 @@ int main(int argc, char **argv)
     // Fusion draws the same everywhere and takes the system's light or dark palette.
     QApplication::setStyle(QStyleFactory::create("Fusion"));
 
+    // Wayland matches the window to its menu entry and icon by this name.
+    QGuiApplication::setDesktopFileName("io.github.roombadashboard.RoombaDashboard");
+
     MainWindow window;
+    if (!line.language.isEmpty())
+        window.setLanguage(line.language, false);
     window.resize(1280, 860);
     window.show();
     window.start(line.connection);
+    if (!line.recordPath.isEmpty())
+        window.startRecording(line.recordPath);
     return app.exec();
 }

@@ -3,13 +3,16 @@
 
 #include "byte_inspector.h"
 #include "display_palette.h"
+#include "oi_text.h"
 #include "drive_pad.h"
 #include "gamepad_input.h"
 #include "gamepad_panel.h"
 #include "led_editor.h"
 #include "motors_panel.h"
-#include "odometry_map.h"
 #include "mode_panel.h"
+#include "odometry_map.h"
+#include "recording_file.h"
+#include "replay_bar.h"
 #include "robot_diagram.h"
 #include "schedule_editor.h"
 #include "script_editor.h"
@@ -19,6 +22,15 @@
 #include "song_composer.h"
 
 #include <QAction>
+#include <QActionGroup>
+#include <QDateTime>
+#include <QDir>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QSaveFile>
+#include <QStandardPaths>
+#include <QTextStream>
+#include <QToolBar>
 #include <QApplication>
 #include <QCloseEvent>
 #include <QAbstractSpinBox>
@@ -34,8 +46,6 @@
 #include <QStatusBar>
 
 namespace {
-
-QString profileName(const oi::RobotProfile &p) { return QString::fromUtf8(p.name.data(), qsizetype(p.name.size())); }
 
 ConnectionRequest loadRequest(const QSettings &s)
 {
@@ -87,7 +97,7 @@ constexpr int kKeyArcRadius = 500;
 
 MainWindow::MainWindow(QWidget *parent) : QMainWindow(parent)
 {
-    setWindowTitle(tr("Roomba Dashboard"));
+    m_language.apply(QSettings().value("language").toString());
     setObjectName("mainWindow");
     setDockNestingEnabled(true);
 
@@ -112,29 +122,29 @@ MainWindow::MainWindow(QWidget *parent) : QMainWindow(parent)
     m_gamepadPanel->setInput(m_gamepad);
     m_drivePad = new DrivePad(this);
 
-    addDock("connectionDock", tr("Connection"), m_connectionBar, Qt::TopDockWidgetArea);
-    QDockWidget *modes = addDock("modeDock", tr("Modes"), m_modePanel, Qt::LeftDockWidgetArea);
+    addDock("connectionDock", QT_TR_NOOP("Connection"), m_connectionBar, Qt::TopDockWidgetArea);
+    QDockWidget *modes = addDock("modeDock", QT_TR_NOOP("Modes"), m_modePanel, Qt::LeftDockWidgetArea);
     // A tab beside the modes, not below them: stacked, the two would make the
     // window taller than a laptop screen. The pad offers Enter Safe itself.
-    tabifyDockWidget(modes, addDock("driveDock", tr("Drive"), m_drivePad, Qt::LeftDockWidgetArea));
+    tabifyDockWidget(modes, addDock("driveDock", QT_TR_NOOP("Drive"), m_drivePad, Qt::LeftDockWidgetArea));
     modes->raise();
-    QDockWidget *gauges = addDock("gaugesDock", tr("Gauges"), m_gauges, Qt::RightDockWidgetArea);
+    QDockWidget *gauges = addDock("gaugesDock", QT_TR_NOOP("Gauges"), m_gauges, Qt::RightDockWidgetArea);
     // The signal bars share the right with the gauges: on a laptop screen the
     // left column has room for the modes only once the editors are open below.
-    tabifyDockWidget(gauges, addDock("signalsDock", tr("Signals"), m_signalBars, Qt::RightDockWidgetArea));
+    tabifyDockWidget(gauges, addDock("signalsDock", QT_TR_NOOP("Signals"), m_signalBars, Qt::RightDockWidgetArea));
     gauges->raise();
-    QDockWidget *plots = addDock("plotsDock", tr("Plots"), m_plots, Qt::BottomDockWidgetArea);
-    QDockWidget *inspector = addDock("inspectorDock", tr("Inspector"), m_inspector, Qt::BottomDockWidgetArea);
+    QDockWidget *plots = addDock("plotsDock", QT_TR_NOOP("Plots"), m_plots, Qt::BottomDockWidgetArea);
+    QDockWidget *inspector = addDock("inspectorDock", QT_TR_NOOP("Inspector"), m_inspector, Qt::BottomDockWidgetArea);
     tabifyDockWidget(plots, inspector);
     // The editors share the bottom with the plots: a hidden tab costs nothing.
     QDockWidget *below = inspector;
-    for (auto [name, title, widget] : {std::tuple{"songsDock", tr("Songs"), static_cast<QWidget *>(m_songs)},
-                                       std::tuple{"ledsDock", tr("LEDs and digits"), static_cast<QWidget *>(m_leds)},
-                                       std::tuple{"scheduleDock", tr("Schedule"), static_cast<QWidget *>(m_schedule)},
-                                       std::tuple{"scriptDock", tr("Script"), static_cast<QWidget *>(m_script)},
-                                       std::tuple{"motorsDock", tr("Motors and outputs"), static_cast<QWidget *>(m_motors)},
-                                       std::tuple{"mapDock", tr("Odometry map"), static_cast<QWidget *>(m_map)},
-                                       std::tuple{"gamepadDock", tr("Gamepad"), static_cast<QWidget *>(m_gamepadPanel)}}) {
+    for (auto [name, title, widget] : {std::tuple{"songsDock", QT_TR_NOOP("Songs"), static_cast<QWidget *>(m_songs)},
+                                       std::tuple{"ledsDock", QT_TR_NOOP("LEDs and digits"), static_cast<QWidget *>(m_leds)},
+                                       std::tuple{"scheduleDock", QT_TR_NOOP("Schedule"), static_cast<QWidget *>(m_schedule)},
+                                       std::tuple{"scriptDock", QT_TR_NOOP("Script"), static_cast<QWidget *>(m_script)},
+                                       std::tuple{"motorsDock", QT_TR_NOOP("Motors and outputs"), static_cast<QWidget *>(m_motors)},
+                                       std::tuple{"mapDock", QT_TR_NOOP("Odometry map"), static_cast<QWidget *>(m_map)},
+                                       std::tuple{"gamepadDock", QT_TR_NOOP("Gamepad"), static_cast<QWidget *>(m_gamepadPanel)}}) {
         QDockWidget *dock = addDock(name, title, widget, Qt::BottomDockWidgetArea);
         tabifyDockWidget(below, dock);
         below = dock;
@@ -148,8 +158,10 @@ MainWindow::MainWindow(QWidget *parent) : QMainWindow(parent)
     resizeDocks({plots}, {300}, Qt::Vertical);
     resizeDocks({modes, gauges}, {420, 480}, Qt::Horizontal);
 
+    buildActions();
     buildMenus();
     buildStatusBar();
+    retranslateUi();
     m_defaultState = saveState();
 
     // Every frame once: the history, and the odometry (distance and angle are
@@ -164,8 +176,19 @@ MainWindow::MainWindow(QWidget *parent) : QMainWindow(parent)
     connect(&m_session, &RobotSession::errorOccurred, m_connectionBar, &ConnectionBar::showError);
     connect(&m_session, &RobotSession::firmwareChanged, this, [this](const QString &release) {
         m_modePanel->setFirmware(release);
+        m_firmware = release;
         m_firmwareLabel->setText(tr("Firmware %1").arg(release));
     });
+    connect(&m_session, &RobotSession::recordingStatus, this, &MainWindow::showRecording);
+    connect(&m_session, &RobotSession::replayStatus, this, &MainWindow::showReplay);
+    connect(m_replayBar, &ReplayBar::playRequested, this, [this] { m_session.controlReplay(oilink::ReplayCommand::play()); });
+    connect(m_replayBar, &ReplayBar::pauseRequested, this, [this] { m_session.controlReplay(oilink::ReplayCommand::pause()); });
+    connect(m_replayBar, &ReplayBar::stepRequested, this,
+            [this](int frames) { m_session.controlReplay(oilink::ReplayCommand::step(frames)); });
+    connect(m_replayBar, &ReplayBar::speedChosen, this,
+            [this](double speed) { m_session.controlReplay(oilink::ReplayCommand::setSpeed(speed)); });
+    connect(m_replayBar, &ReplayBar::seekRequested, this,
+            [this](qint64 us) { m_session.controlReplay(oilink::ReplayCommand::seek(us)); });
     connect(&m_session, &RobotSession::bytesSent, m_inspector, &ByteInspector::appendTx);
     connect(&m_session, &RobotSession::bytesReceived, m_inspector, &ByteInspector::appendRx);
     connect(m_inspector, &ByteInspector::sendRequested, &m_session, &RobotSession::send);
@@ -216,36 +239,260 @@ MainWindow::~MainWindow()
     m_session.closeAndWait();
 }
 
-QDockWidget *MainWindow::addDock(const QString &objectName, const QString &title, QWidget *widget,
+QDockWidget *MainWindow::addDock(const QString &objectName, const char *title, QWidget *widget,
                                  Qt::DockWidgetArea area)
 {
-    auto *dock = new QDockWidget(title, this);
+    auto *dock = new QDockWidget(this);
     dock->setObjectName(objectName);
     dock->setWidget(widget);
     addDockWidget(area, dock);
     m_docks << dock;
+    m_dockTitles << title;
     return dock;
 }
 
-void MainWindow::buildMenus()
+void MainWindow::buildActions()
 {
-    QMenu *file = menuBar()->addMenu(tr("&File"));
-    QAction *quit = file->addAction(tr("&Quit"), this, &QWidget::close);
-    quit->setShortcut(QKeySequence::Quit);
-
-    QMenu *view = menuBar()->addMenu(tr("&View"));
-    for (QDockWidget *dock : m_docks)
-        view->addAction(dock->toggleViewAction());
-    view->addSeparator();
-    view->addAction(tr("&Reset layout"), this, &MainWindow::resetLayout);
-
-    QMenu *help = menuBar()->addMenu(tr("&Help"));
-    help->addAction(tr("&About"), this, [this] {
+    m_recordAction = new QAction(this);
+    m_recordAction->setObjectName("recordAction");
+    m_recordAction->setCheckable(true);
+    m_recordAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_R));
+    connect(m_recordAction, &QAction::triggered, this, &MainWindow::chooseRecordingFile);
+    m_openRecordingAction = new QAction(this);
+    m_openRecordingAction->setObjectName("openRecordingAction");
+    m_openRecordingAction->setShortcut(QKeySequence::Open);
+    connect(m_openRecordingAction, &QAction::triggered, this, &MainWindow::chooseRecordingToOpen);
+    m_exportCsvAction = new QAction(this);
+    m_exportCsvAction->setObjectName("exportCsvAction");
+    connect(m_exportCsvAction, &QAction::triggered, this, &MainWindow::chooseRecordingToExport);
+    m_quitAction = new QAction(this);
+    m_quitAction->setShortcut(QKeySequence::Quit);
+    connect(m_quitAction, &QAction::triggered, this, &QWidget::close);
+    m_resetLayoutAction = new QAction(this);
+    connect(m_resetLayoutAction, &QAction::triggered, this, &MainWindow::resetLayout);
+    m_aboutAction = new QAction(this);
+    connect(m_aboutAction, &QAction::triggered, this, [this] {
         QMessageBox::about(this, tr("About Roomba Dashboard"),
                            tr("Roomba Dashboard %1\nA dashboard for iRobot robots that speak the Open "
                               "Interface.\nGPL-3.0-or-later.")
                                .arg(QApplication::applicationVersion()));
     });
+
+    // Languages are named in their own words, so nobody is lost in a foreign menu.
+    m_languageGroup = new QActionGroup(this);
+    m_systemLanguageAction = m_languageGroup->addAction(QString());
+    m_systemLanguageAction->setData(QString());
+    for (const UiLanguage &l : uiLanguages())
+        m_languageGroup->addAction(l.nativeName)->setData(l.code);
+    const QString saved = QSettings().value("language").toString();
+    for (QAction *a : m_languageGroup->actions()) {
+        a->setCheckable(true);
+        a->setChecked(a->data().toString() == saved);
+    }
+    connect(m_languageGroup, &QActionGroup::triggered, this,
+            [this](QAction *a) { setLanguage(a->data().toString()); });
+
+    m_recordingBar = addToolBar(QString());
+    m_recordingBar->setObjectName("recordingToolBar");
+    m_recordingBar->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
+    m_recordingBar->addAction(m_recordAction);
+    m_recordingBar->addAction(m_openRecordingAction);
+    m_replayBar = new ReplayBar(this);
+    m_replayBar->setObjectName("replayBar");
+    m_recordingBar->addWidget(m_replayBar)->setVisible(false);
+}
+
+void MainWindow::buildMenus()
+{
+    m_fileMenu = menuBar()->addMenu(QString());
+    m_fileMenu->addAction(m_recordAction);
+    m_fileMenu->addAction(m_openRecordingAction);
+    m_fileMenu->addAction(m_exportCsvAction);
+    m_fileMenu->addSeparator();
+    m_fileMenu->addAction(m_quitAction);
+
+    m_viewMenu = menuBar()->addMenu(QString());
+    for (QDockWidget *dock : m_docks)
+        m_viewMenu->addAction(dock->toggleViewAction());
+    m_viewMenu->addAction(m_recordingBar->toggleViewAction());
+    m_viewMenu->addSeparator();
+    m_languageMenu = m_viewMenu->addMenu(QString());
+    m_languageMenu->setObjectName("languageMenu");
+    m_languageMenu->addActions(m_languageGroup->actions());
+    m_languageMenu->insertSeparator(m_languageGroup->actions().value(1));
+    m_viewMenu->addAction(m_resetLayoutAction);
+
+    m_helpMenu = menuBar()->addMenu(QString());
+    m_helpMenu->addAction(m_aboutAction);
+}
+
+void MainWindow::retranslateUi()
+{
+    setWindowTitle(tr("Roomba Dashboard"));
+    for (qsizetype i = 0; i < m_docks.size(); ++i)
+        m_docks[i]->setWindowTitle(tr(m_dockTitles[i]));
+    m_fileMenu->setTitle(tr("&File"));
+    m_recordAction->setText(tr("&Record"));
+    m_recordAction->setToolTip(tr("Record every byte to and from the robot into a file"));
+    m_openRecordingAction->setText(tr("&Open recording…"));
+    m_openRecordingAction->setToolTip(tr("Replay a recording in place of the robot"));
+    m_exportCsvAction->setText(tr("&Export recording as CSV…"));
+    m_quitAction->setText(tr("&Quit"));
+    m_viewMenu->setTitle(tr("&View"));
+    m_recordingBar->setWindowTitle(tr("Recording and replay"));
+    m_languageMenu->setTitle(tr("&Language"));
+    m_systemLanguageAction->setText(tr("System default"));
+    m_resetLayoutAction->setText(tr("&Reset layout"));
+    m_helpMenu->setTitle(tr("&Help"));
+    m_aboutAction->setText(tr("&About"));
+    m_profileLabel->setText(oitext::fromView(m_session.robotProfile().name));
+    if (!m_firmware.isEmpty())
+        m_firmwareLabel->setText(tr("Firmware %1").arg(m_firmware));
+    showState(m_shownState);
+    showStatistics(m_shownStats);
+    showRecording(m_session.recording());
+}
+
+void MainWindow::setLanguage(const QString &code, bool remember)
+{
+    if (remember)
+        QSettings().setValue("language", code);
+    for (QAction *a : m_languageGroup->actions())
+        a->setChecked(a->data().toString() == code);
+    m_language.apply(code);
+    // Installing a translator posts LanguageChange; deliver it now, so every
+    // widget speaks the new language before this returns.
+    QCoreApplication::sendPostedEvents(nullptr, QEvent::LanguageChange);
+}
+
+void MainWindow::startRecording(const QString &path)
+{
+    m_session.startRecording(path);
+}
+
+void MainWindow::stopRecording()
+{
+    m_session.stopRecording();
+}
+
+bool MainWindow::openRecording(const QString &path, QString *error)
+{
+    QString why;
+    const std::optional<oilink::Recording> recording = oilink::Recording::load(path, &why);
+    if (!recording) {
+        if (error)
+            *error = why;
+        return false;
+    }
+    if (m_session.recording().active)
+        stopRecording();
+    connectSession(oilink::LinkSettings::replayOf(path, recording->robotProfile().id, recording->stream().baud,
+                                                  recording->stream().packets));
+    return true;
+}
+
+QString MainWindow::exportRecordingCsv(const QString &recordingPath, const QString &csvPath)
+{
+    QString why;
+    const std::optional<oilink::Recording> recording = oilink::Recording::load(recordingPath, &why);
+    if (!recording)
+        return why;
+    QSaveFile file(csvPath);
+    if (!file.open(QIODevice::WriteOnly | QIODevice::Text))
+        return QStringLiteral("%1: %2").arg(csvPath, file.errorString());
+    QTextStream out(&file);
+    recording->writeCsv(out);
+    out.flush();
+    if (!file.commit())
+        return QStringLiteral("%1: %2").arg(csvPath, file.errorString());
+    return QString();
+}
+
+void MainWindow::chooseRecordingFile(bool start)
+{
+    if (!start) {
+        stopRecording();
+        return;
+    }
+    m_recordAction->setChecked(false); // until the link says it records
+    const QString suggested = QDir(QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation))
+                                  .filePath(QStringLiteral("roomba-%1.%2")
+                                                .arg(QDateTime::currentDateTime().toString("yyyyMMdd-HHmmss"),
+                                                     oilink::recording::kFileSuffix));
+    const QString path = QFileDialog::getSaveFileName(this, tr("Record to"), suggested,
+                                                      tr("Roomba Dashboard recordings (*.oirec)"));
+    if (!path.isEmpty())
+        startRecording(path);
+}
+
+void MainWindow::chooseRecordingToOpen()
+{
+    const QString path = QFileDialog::getOpenFileName(this, tr("Open recording"), QString(),
+                                                      tr("Roomba Dashboard recordings (*.oirec);;All files (*)"));
+    if (path.isEmpty())
+        return;
+    QString error;
+    if (!openRecording(path, &error))
+        QMessageBox::warning(this, tr("Open recording"), tr("This file cannot be replayed.\n\n%1").arg(error));
+}
+
+void MainWindow::chooseRecordingToExport()
+{
+    const QString from = QFileDialog::getOpenFileName(this, tr("Export recording as CSV"), QString(),
+                                                      tr("Roomba Dashboard recordings (*.oirec);;All files (*)"));
+    if (from.isEmpty())
+        return;
+    const QString to = QFileDialog::getSaveFileName(this, tr("Save CSV as"),
+                                                    QFileInfo(from).path() + '/' + QFileInfo(from).completeBaseName() + ".csv",
+                                                    tr("CSV files (*.csv)"));
+    if (to.isEmpty())
+        return;
+    const QString error = exportRecordingCsv(from, to);
+    if (!error.isEmpty())
+        QMessageBox::warning(this, tr("Export recording as CSV"), tr("Nothing was written.\n\n%1").arg(error));
+    else
+        statusBar()->showMessage(tr("Wrote %1").arg(QDir::toNativeSeparators(to)), 5000);
+}
+
+void MainWindow::showRecording(const oilink::RecordingStatus &status)
+{
+    m_recordAction->setChecked(status.active);
+    m_recordingLabel->setVisible(status.active);
+    m_recordingLabel->setText(tr("● REC %1 kB %2")
+                                  .arg(status.bytesWritten / 1024)
+                                  .arg(QFileInfo(status.path).fileName()));
+    m_recordingLabel->setToolTip(status.path);
+    if (!status.error.isEmpty())
+        m_connectionBar->showError(tr("Recording stopped: %1").arg(status.error));
+}
+
+void MainWindow::showReplay(const oilink::ReplayStatus &status)
+{
+    ReplayBar::Position p;
+    p.positionUs = status.positionUs;
+    p.durationUs = status.durationUs;
+    p.frame = status.frame;
+    p.frameCount = status.frameCount;
+    p.playing = status.playing;
+    p.finished = status.finished;
+    p.speed = status.speed;
+    p.fileName = QFileInfo(status.path).fileName();
+    p.damage = status.damage;
+    m_replayBar->setPosition(p);
+}
+
+QString MainWindow::linkStateText(oilink::LinkState state) const
+{
+    using S = oilink::LinkState;
+    switch (state) {
+    case S::Closed: return tr("closed");
+    case S::Connecting: return tr("connecting");
+    case S::Streaming: return tr("streaming");
+    case S::Stale: return tr("stale");
+    case S::Lost: return tr("lost");
+    case S::Reconnecting: return tr("reconnecting");
+    }
+    return QString();
 }
 
 void MainWindow::buildStatusBar()
@@ -256,7 +503,7 @@ void MainWindow::buildStatusBar()
         statusBar()->addPermanentWidget(l);
         return l;
     };
-    m_staleLabel = new QLabel(tr("  NO LIVE DATA  "), this);
+    m_staleLabel = new QLabel(this);
     m_staleLabel->setObjectName("staleIndicator");
     m_staleLabel->setFont(display::valueFont(font(), 1.2));
     const display::State alert = display::State::Alert;
@@ -269,6 +516,10 @@ void MainWindow::buildStatusBar()
     m_firmwareLabel = label("firmware");
     m_rateLabel = label("frameRate");
     m_errorsLabel = label("lineErrors");
+    m_recordingLabel = label("recording");
+    m_recordingLabel->setVisible(false);
+    m_recordingLabel->setStyleSheet(QString("QLabel { color: %1; font-weight: bold; }")
+                                        .arg(display::stateColor(alert, palette()).name()));
 }
 
 void MainWindow::setHistoryCapacity(std::size_t samples)
@@ -325,6 +576,16 @@ void MainWindow::connectSession(const oilink::LinkSettings &settings)
     m_map->setTruePose(std::nullopt);
     m_session.connectTo(settings);
     m_connectionBar->setConnected(true);
+    // The replay controls belong to a replay only.
+    const bool replay = settings.transport == oilink::TransportKind::Replay;
+    for (QAction *a : m_recordingBar->actions())
+        if (m_recordingBar->widgetForAction(a) == m_replayBar)
+            a->setVisible(replay);
+    m_recordAction->setEnabled(!replay);
+    if (replay)
+        m_recordingBar->show();
+    m_liveFlagOutdated = true; // its text depends on the source
+    refreshDisplay();
 }
 
 void MainWindow::connectFromBar(const ConnectionRequest &request)
@@ -353,19 +614,23 @@ void MainWindow::applyProfile(oi::ProfileId id)
         m_history.setProfile(p);
         m_plots->setProfile(p);
     }
-    m_profileLabel->setText(profileName(p));
+    m_profileLabel->setText(oitext::fromView(p.name));
 }
 
 void MainWindow::refreshDisplay()
 {
     const bool live = m_session.state() == oilink::LinkState::Streaming;
-    if (live != m_shownLive || m_staleLabel->isHidden() == !live) {
+    if (live != m_shownLive || m_liveFlagOutdated) {
         m_shownLive = live;
+        m_liveFlagOutdated = false;
         m_diagram->setStale(!live);
         m_gauges->setStale(!live);
-        // No driving, and no Enter Safe, without live data to see the robot by.
-        m_drivePad->setEnabled(live);
-        m_staleLabel->setVisible(!live);
+        // No driving, and no Enter Safe, without live data to see the robot
+        // by; a replay has no robot to drive.
+        const bool replay = m_session.isReplay();
+        m_drivePad->setEnabled(live && !replay);
+        m_staleLabel->setText(replay ? tr("  REPLAY, NOT LIVE  ") : tr("  NO LIVE DATA  "));
+        m_staleLabel->setVisible(!live || replay);
     }
     // Repaint only what changed: a robot at rest streams the same values.
     if (m_session.snapshotCount() != m_shownSnapshot) {
@@ -393,7 +658,8 @@ void MainWindow::refreshDisplay()
 
 void MainWindow::showState(oilink::LinkState state)
 {
-    m_stateLabel->setText(tr("Link: %1").arg(oilink::linkStateName(state)));
+    m_shownState = state;
+    m_stateLabel->setText(tr("Link: %1").arg(linkStateText(state)));
     if (state == oilink::LinkState::Closed)
         m_connectionBar->setConnected(m_session.isConnected());
     refreshDisplay();
@@ -401,6 +667,7 @@ void MainWindow::showState(oilink::LinkState state)
 
 void MainWindow::showStatistics(const oilink::LinkStats &stats)
 {
+    m_shownStats = stats;
     m_rateLabel->setText(tr("%1 frames/s").arg(stats.framesPerSecond, 0, 'f', 1));
     m_errorsLabel->setText(tr("checksum failures %1, resyncs %2").arg(stats.checksumFailures).arg(stats.resyncs));
 }
@@ -436,6 +703,11 @@ void MainWindow::closeEvent(QCloseEvent *event)
 
 void MainWindow::changeEvent(QEvent *event)
 {
+    if (event->type() == QEvent::LanguageChange && m_fileMenu) {
+        retranslateUi();
+        m_liveFlagOutdated = true;
+        refreshDisplay();
+    }
     if (event->type() == QEvent::ActivationChange && !isActiveWindow()) {
         // Key releases now go to another window: forget the held keys.
         m_driveKeys.clear();

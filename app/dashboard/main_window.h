@@ -6,6 +6,7 @@
 #include "robot_session.h"
 #include "sensor_history.h"
 #include "teleop_controller.h"
+#include "language_switcher.h"
 
 #include <QByteArray>
 #include <QMainWindow>
@@ -23,6 +24,11 @@ class ScheduleEditor;
 class ScriptEditor;
 class SongComposer;
 class ModePanel;
+class QAction;
+class QActionGroup;
+class QMenu;
+class QToolBar;
+class ReplayBar;
 class QDockWidget;
 class QKeyEvent;
 class QLabel;
@@ -54,6 +60,19 @@ public:
 
     static oilink::LinkSettings linkSettingsFor(const ConnectionRequest &request);
 
+    // Recording the link, and replaying a recording in place of the robot.
+    void startRecording(const QString &path);
+    void stopRecording();
+    // False, with the reason in `error`, for a file that cannot be replayed.
+    bool openRecording(const QString &path, QString *error = nullptr);
+    // Writes one CSV row per frame of a recording; returns an error or "".
+    static QString exportRecordingCsv(const QString &recordingPath, const QString &csvPath);
+
+    // "de", "es", "en", or "" to follow the system. Applies at once; `remember`
+    // keeps the choice for the next start (the View menu does, --lang not).
+    void setLanguage(const QString &code, bool remember = true);
+    QString language() const { return m_language.current(); }
+
     // For tests and screenshots.
     ConnectionBar *connectionBar() const { return m_connectionBar; }
     ModePanel *modePanel() const { return m_modePanel; }
@@ -64,6 +83,10 @@ public:
     SignalBars *signalBars() const { return m_signalBars; }
     DrivePad *drivePad() const { return m_drivePad; }
     OdometryMap *odometryMap() const { return m_map; }
+    ReplayBar *replayBar() const { return m_replayBar; }
+    QToolBar *recordingToolBar() const { return m_recordingBar; }
+    QAction *recordAction() const { return m_recordAction; }
+    QMenu *languageMenu() const { return m_languageMenu; }
     TeleopController &teleop() { return m_teleop; }
     QString statusText() const;
     void refreshDisplay(); // what the display timer does
@@ -75,10 +98,18 @@ protected:
     bool eventFilter(QObject *watched, QEvent *event) override;
 
 private:
-    QDockWidget *addDock(const QString &objectName, const QString &title, QWidget *widget,
+    QDockWidget *addDock(const QString &objectName, const char *title, QWidget *widget,
                          Qt::DockWidgetArea area);
+    void buildActions();
     void buildMenus();
     void buildStatusBar();
+    void retranslateUi();
+    void showRecording(const oilink::RecordingStatus &status);
+    void showReplay(const oilink::ReplayStatus &status);
+    void chooseRecordingFile(bool start);
+    void chooseRecordingToOpen();
+    void chooseRecordingToExport();
+    QString linkStateText(oilink::LinkState state) const;
     void applyProfile(oi::ProfileId profile);
     void showState(oilink::LinkState state);
     void showStatistics(const oilink::LinkStats &stats);
@@ -88,6 +119,7 @@ private:
     bool handleDriveKey(QKeyEvent *event);
     MotionCommand keyboardCommand() const;
 
+    LanguageSwitcher m_language; // before the widgets: they are built translated
     RobotSession m_session;
     // After the session: it is destroyed first and never outlives it.
     TeleopController m_teleop{m_session};
@@ -97,6 +129,7 @@ private:
     quint64 m_shownSnapshot = ~0ull;
     oi::SensorSnapshot m_shown; // what the widgets show now
     bool m_shownLive = false;
+    bool m_liveFlagOutdated = true;
     quint64 m_displayTicks = 0;
 
     ConnectionBar *m_connectionBar = nullptr;
@@ -116,7 +149,27 @@ private:
     ScriptEditor *m_script = nullptr;
     DrivePad *m_drivePad = nullptr;
     QList<QDockWidget *> m_docks;
+    QList<const char *> m_dockTitles; // untranslated, one per dock
     QByteArray m_defaultState;
+
+    QMenu *m_fileMenu = nullptr;
+    QMenu *m_viewMenu = nullptr;
+    QMenu *m_languageMenu = nullptr;
+    QMenu *m_helpMenu = nullptr;
+    QAction *m_recordAction = nullptr;
+    QAction *m_openRecordingAction = nullptr;
+    QAction *m_exportCsvAction = nullptr;
+    QAction *m_quitAction = nullptr;
+    QAction *m_resetLayoutAction = nullptr;
+    QAction *m_aboutAction = nullptr;
+    QAction *m_systemLanguageAction = nullptr;
+    QActionGroup *m_languageGroup = nullptr;
+    QToolBar *m_recordingBar = nullptr;
+    ReplayBar *m_replayBar = nullptr;
+    QLabel *m_recordingLabel = nullptr;
+    oilink::LinkState m_shownState = oilink::LinkState::Closed;
+    oilink::LinkStats m_shownStats;
+    QString m_firmware;
 
     QLabel *m_stateLabel = nullptr;
     QLabel *m_profileLabel = nullptr;

@@ -26,6 +26,11 @@ RobotSession::RobotSession(QObject *parent) : QObject(parent)
     connect(&m_link, &oilink::RobotLinkThread::virtualRobotPose, this, &RobotSession::virtualRobotPose);
     connect(&m_link, &oilink::RobotLinkThread::rawBytesSent, this, &RobotSession::onBytesSent);
     connect(&m_link, &oilink::RobotLinkThread::rawBytesReceived, this, &RobotSession::onBytesReceived);
+    connect(&m_link, &oilink::RobotLinkThread::recordingStatus, this, [this](const oilink::RecordingStatus &s) {
+        m_recording = s;
+        emit recordingStatus(s);
+    });
+    connect(&m_link, &oilink::RobotLinkThread::replayStatus, this, &RobotSession::replayStatus);
 }
 
 RobotSession::~RobotSession() { closeAndWait(); }

@@ -51,6 +51,15 @@ public:
     // The in-process virtual robot's true pose, answered by virtualRobotPose().
     void requestVirtualRobotPose() { m_link.requestVirtualRobotPose(); }
 
+    // Records every byte of the link into a file, across reconnects, until
+    // stopRecording() or a disconnect. Reported through recordingStatus().
+    void startRecording(const QString &path) { m_link.startRecording(path); }
+    void stopRecording() { m_link.stopRecording(); }
+    const oilink::RecordingStatus &recording() const { return m_recording; }
+    // For a replay: play, pause, speed, seek, step.
+    void controlReplay(const oilink::ReplayCommand &command) { m_link.controlReplay(command); }
+    bool isReplay() const { return m_connected && m_settings.transport == oilink::TransportKind::Replay; }
+
     // Called for every snapshot, with secondsSinceConnect(): the history.
     void setSnapshotObserver(std::function<void(double, const oi::SensorSnapshot &)> observer);
 
@@ -63,6 +72,8 @@ signals:
     void virtualRobotPose(double xMm, double yMm, double thetaRad);
     void bytesSent(const QByteArray &bytes, qint64 msecs);
     void bytesReceived(const QByteArray &bytes, qint64 msecs);
+    void recordingStatus(const oilink::RecordingStatus &status);
+    void replayStatus(const oilink::ReplayStatus &status);
 
 private:
     void onSnapshot(const oi::SensorSnapshot &snapshot);
@@ -78,6 +89,7 @@ private:
     quint64 m_snapshotCount = 0;
     oilink::LinkState m_state = oilink::LinkState::Closed;
     oilink::LinkStats m_stats;
+    oilink::RecordingStatus m_recording;
     QElapsedTimer m_clock;
     QString m_firmware;
     oi::FirmwareCorrections m_corrections;

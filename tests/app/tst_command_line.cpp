@@ -1,5 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "command_line.h"
+#include "recording_file.h"
+
+#include <QTemporaryDir>
 
 #include <QProcess>
 #include <QTest>
@@ -36,15 +39,51 @@ private slots:
         QCOMPARE(tcp.connection->tcpPort, quint16(3333));
         QVERIFY(!tcp.connection->profile);
 
+        const auto recorded = parse("--sim --record /tmp/run.oirec --lang de");
+        QVERIFY(recorded.error.isEmpty());
+        QCOMPARE(recorded.recordPath, QString("/tmp/run.oirec"));
+        QCOMPARE(recorded.language, QString("de"));
+        QCOMPARE(parse("--lang es").language, QString("es"));
+        QVERIFY(!parse("--lang es").connection);
+
         QVERIFY(parse("--help").showHelp);
         QVERIFY(parse("--version").showVersion);
+    }
+
+    void replay()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath("run.oirec");
+        oilink::RecordingWriter writer;
+        QVERIFY(writer.open(path, {}));
+        QVERIFY(writer.appendStreamStarted(oi::ProfileId::Create1, 57600, {6}));
+        writer.close();
+        const auto line = parse("--replay " + path);
+        QVERIFY2(line.error.isEmpty(), qPrintable(line.error));
+        QCOMPARE(line.connection->transport, oilink::TransportKind::Replay);
+        QCOMPARE(line.connection->replayPath, path);
+        // The recording decides how it is read.
+        QCOMPARE(line.connection->profile, std::optional<oi::ProfileId>(oi::ProfileId::Create1));
+        QCOMPARE(line.connection->baud, 57600);
+        QCOMPARE(line.connection->streamPackets, QList<int>{6});
+
+        const auto missing = parse("--replay " + dir.filePath("nothing.oirec"));
+        QVERIFY2(missing.error.startsWith("cannot replay " + dir.filePath("nothing.oirec")), qPrintable(missing.error));
+        QVERIFY(!missing.connection);
+        QVERIFY(parse("--replay " + path + " --profile create2").error.contains("leave out --profile"));
+        QVERIFY(parse("--replay " + path + " --record /tmp/x.oirec").error.contains("already a recording"));
     }
 
     void badArguments_data()
     {
         QTest::addColumn<QString>("args");
         QTest::addColumn<QString>("message");
-        QTest::newRow("two targets") << "--sim --port /dev/ttyUSB0" << "choose one of --sim, --port and --tcp";
+        QTest::newRow("two targets") << "--sim --port /dev/ttyUSB0" << "choose one of --sim, --port, --tcp and --replay";
+        QTest::newRow("sim and replay") << "--sim --replay x.oirec" << "choose one of";
+        QTest::newRow("replay without file") << "--replay" << "--replay needs a value";
+        QTest::newRow("record into nowhere") << "--sim --record /no/such/dir/x.oirec" << "does not exist";
+        QTest::newRow("unknown language") << "--lang fr" << "unknown language 'fr' (en, de, es)";
+        QTest::newRow("language without code") << "--lang" << "--lang needs a value";
         QTest::newRow("no value") << "--port" << "--port needs a value";
         QTest::newRow("tcp without port") << "--tcp pi" << "--tcp needs HOST:PORT";
         QTest::newRow("tcp port too big") << "--tcp pi:70000" << "from 1 to 65535";
@@ -72,7 +111,14 @@ private slots:
         p.start(ROOMBA_DASHBOARD_PATH, {"--help"});
         QVERIFY(p.waitForFinished(30000));
         QCOMPARE(p.exitCode(), 0);
-        QVERIFY(p.readAllStandardOutput().startsWith("Usage: roomba-dashboard"));
+        const QByteArray usage = p.readAllStandardOutput();
+        QVERIFY(usage.startsWith("Usage: roomba-dashboard"));
+        for (const char *option : {"--replay FILE", "--record FILE", "--lang CODE"})
+            QVERIFY2(usage.contains(option), option);
+        p.start(ROOMBA_DASHBOARD_PATH, {"--lang", "xx"});
+        QVERIFY(p.waitForFinished(30000));
+        QCOMPARE(p.exitCode(), 2);
+        QVERIFY(p.readAllStandardError().startsWith("roomba-dashboard: unknown language 'xx'"));
     }
 };
 

@@ -7,6 +7,9 @@
 #include "recording_transport.h"
 #include "robot_diagram.h"
 #include "odometry_map.h"
+#include "pseudo_translation.h"
+#include "recording_file.h"
+#include "replay_bar.h"
 #include "schedule_editor.h"
 #include "script_editor.h"
 #include "transport.h"
@@ -15,6 +18,9 @@
 #include <QDir>
 #include <cmath>
 #include <QDockWidget>
+#include <QMenu>
+#include <QToolBar>
+#include <QToolButton>
 #include <QPointer>
 #include <QTemporaryDir>
 #include <QMutex>
@@ -232,6 +238,129 @@ private slots:
         QTest::qWait(1500); // reconnect attempts follow; the message stays one line
         QCOMPARE(window.connectionBar()->errorText().count('\n'), 0);
         QVERIFY(window.session().snapshotCount() == 0);
+    }
+
+    void recordThenReplayInTheWindow()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath("class.oirec");
+        MainWindow window;
+        window.show();
+        window.start(oilink::LinkSettings::virtualRobotOf(oi::ProfileId::Create2, oi::ProfileId::Create2));
+        QTRY_COMPARE_WITH_TIMEOUT(window.session().state(), oilink::LinkState::Streaming, 10000);
+        window.startRecording(path);
+        QTRY_VERIFY_WITH_TIMEOUT(window.session().recording().active, 10000);
+        QVERIFY(window.recordAction()->isChecked());
+        QTRY_VERIFY_WITH_TIMEOUT(window.session().recording().bytesWritten > 20000, 20000);
+        window.stopRecording();
+        QTRY_VERIFY_WITH_TIMEOUT(!window.session().recording().active, 10000);
+        QVERIFY(!window.recordAction()->isChecked());
+
+        QString error;
+        QVERIFY(!window.openRecording(dir.filePath("missing.oirec"), &error));
+        QVERIFY2(error.contains("missing.oirec"), qPrintable(error));
+        QVERIFY(window.openRecording(path, &error));
+        QVERIFY(window.replayBar()->isVisible());
+        QVERIFY(!window.recordAction()->isEnabled());
+        QTRY_VERIFY_WITH_TIMEOUT(window.replayBar()->position().frameCount > 50, 10000);
+        QTRY_VERIFY_WITH_TIMEOUT(window.session().snapshotCount() > 5, 10000);
+        window.refreshDisplay();
+        QVERIFY2(window.statusText().contains("REPLAY"), qPrintable(window.statusText()));
+
+        // Pause, then a frame forward and back with the bar's own buttons.
+        auto *playPause = window.replayBar()->findChild<QToolButton *>("replayPlayPause");
+        QTRY_VERIFY_WITH_TIMEOUT(window.replayBar()->position().playing, 10000);
+        QTest::mouseClick(playPause, Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(!window.replayBar()->position().playing, 10000);
+        const int paused = window.replayBar()->position().frame;
+        QTest::mouseClick(window.replayBar()->findChild<QToolButton *>("replayStepForward"), Qt::LeftButton);
+        QTRY_COMPARE_WITH_TIMEOUT(window.replayBar()->position().frame, paused + 1, 10000);
+        const quint64 before = window.session().snapshotCount();
+        QTest::mouseClick(window.replayBar()->findChild<QToolButton *>("replayStepBack"), Qt::LeftButton);
+        QTRY_COMPARE_WITH_TIMEOUT(window.replayBar()->position().frame, paused, 10000);
+        QTRY_COMPARE_WITH_TIMEOUT(window.session().snapshotCount(), before + 1, 10000);
+
+        // The same recording as CSV: a header and one row per frame.
+        const QString csv = dir.filePath("class.csv");
+        QCOMPARE(MainWindow::exportRecordingCsv(path, csv), QString());
+        QFile file(csv);
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        const QList<QByteArray> lines = file.readAll().split('\n');
+        QVERIFY(lines.first().startsWith("time_s,bumps_wheel_drops"));
+        QCOMPARE(lines.size() - 2, window.replayBar()->position().frameCount); // header, trailing newline
+        // A bad source leaves no file behind.
+        const QString none = dir.filePath("none.csv");
+        QVERIFY(!MainWindow::exportRecordingCsv(dir.filePath("missing.oirec"), none).isEmpty());
+        QVERIFY(!QFile::exists(none));
+    }
+
+    void languageSwitchesOnTheSpot()
+    {
+        MainWindow window;
+        window.show();
+        window.start(oilink::LinkSettings::virtualRobotOf(oi::ProfileId::Create2, oi::ProfileId::Create2));
+        QTRY_COMPARE_WITH_TIMEOUT(window.session().state(), oilink::LinkState::Streaming, 10000);
+        auto *modes = window.findChild<QDockWidget *>("modeDock");
+        QCOMPARE(modes->windowTitle(), QString("Modes"));
+
+        // From the View menu, as a user does it.
+        QAction *deutsch = nullptr;
+        for (QAction *a : window.languageMenu()->actions())
+            if (a->data().toString() == "de")
+                deutsch = a;
+        QVERIFY(deutsch);
+        deutsch->trigger();
+        QCOMPARE(window.language(), QString("de"));
+        QCOMPARE(modes->windowTitle(), QString("Modi"));
+        QVERIFY(deutsch->isChecked());
+        QCOMPARE(QSettings().value("language").toString(), QString("de"));
+        window.refreshDisplay();
+        QVERIFY2(!window.statusText().contains("streaming"), qPrintable(window.statusText()));
+
+        window.setLanguage("es");
+        QCOMPARE(window.language(), QString("es"));
+        QCOMPARE(modes->windowTitle(), QString("Modos"));
+
+        window.setLanguage("en");
+        QCOMPARE(modes->windowTitle(), QString("Modes"));
+        window.refreshDisplay();
+        QVERIFY(window.statusText().contains("streaming"));
+        window.setLanguage(QString()); // the system's, which is English here
+    }
+
+    // Every text in the whole window goes through a translator and is set
+    // again when the language changes.
+    void everyVisibleTextIsTranslatable()
+    {
+        MainWindow window;
+        window.resize(1400, 950);
+        window.show();
+        window.start(oilink::LinkSettings::virtualRobotOf(oi::ProfileId::Create2, oi::ProfileId::Create2));
+        QTRY_VERIFY_WITH_TIMEOUT(window.session().snapshotCount() > 10, 10000);
+        window.refreshDisplay();
+        // Brand names, languages in their own words, and the example songs'
+        // titles, which are the files' content.
+        const QStringList never{"Roomba 600 / Create 2", "Roomba 500", "Create", "English", "Deutsch", "Español",
+                                "C major scale", "Charge fanfare", "Happy birthday", "Ode to joy"};
+        QStringList missed;
+        {
+            ScopedPseudoTranslation pseudo;
+            QApplication::processEvents();
+            window.refreshDisplay();
+            for (QDockWidget *dock : window.findChildren<QDockWidget *>()) {
+                dock->show();
+                dock->raise();
+                QApplication::processEvents();
+                missed += untranslatedTexts(dock, never);
+            }
+            missed += untranslatedTexts(window.recordingToolBar(), never);
+            for (QMenu *menu : window.findChildren<QMenu *>())
+                for (QAction *a : menu->actions())
+                    if (!a->isSeparator() && !never.contains(a->text()) && looksUntranslated(a->text()))
+                        missed << "menu action: " + a->text();
+        }
+        missed.removeDuplicates();
+        QVERIFY2(missed.isEmpty(), qPrintable(missed.join('\n')));
     }
 };
 

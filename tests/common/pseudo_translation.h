@@ -64,6 +64,9 @@ inline QStringList untranslatedTexts(QWidget *root, const QStringList &allowed =
     for (QWidget *w : widgets) {
         if (!w->isVisibleTo(root) && w != root)
             continue;
+        // Qt's own parts (a dock's float and close buttons) follow Qt's translations.
+        if (w->objectName().startsWith(QLatin1String("qt_")))
+            continue;
         check(w, w->toolTip());
         check(w, w->accessibleName());
         if (auto *label = qobject_cast<QLabel *>(w))

@@ -1,0 +1,3569 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
+<TS version="2.1" language="de">
+<context>
+    <name>BitName</name>
+    <message>
+        <source>Advance</source>
+        <translation>Advance</translation>
+    </message>
+    <message>
+        <source>Baud Rate Change (active low)</source>
+        <translation>Baudratenwechsel (low-aktiv)</translation>
+    </message>
+    <message>
+        <source>Bump Left</source>
+        <translation>Stoß links</translation>
+    </message>
+    <message>
+        <source>Bump Right</source>
+        <translation>Stoß rechts</translation>
+    </message>
+    <message>
+        <source>Center Left</source>
+        <translation>Mitte links</translation>
+    </message>
+    <message>
+        <source>Center Right</source>
+        <translation>Mitte rechts</translation>
+    </message>
+    <message>
+        <source>Clean</source>
+        <translation>Clean</translation>
+    </message>
+    <message>
+        <source>Clock</source>
+        <translation>Uhr</translation>
+    </message>
+    <message>
+        <source>Day</source>
+        <translation>Tag</translation>
+    </message>
+    <message>
+        <source>Digital Input 0</source>
+        <translation>Digitaleingang 0</translation>
+    </message>
+    <message>
+        <source>Digital Input 1</source>
+        <translation>Digitaleingang 1</translation>
+    </message>
+    <message>
+        <source>Digital Input 2</source>
+        <translation>Digitaleingang 2</translation>
+    </message>
+    <message>
+        <source>Digital Input 3</source>
+        <translation>Digitaleingang 3</translation>
+    </message>
+    <message>
+        <source>Dock</source>
+        <translation>Dock</translation>
+    </message>
+    <message>
+        <source>Front Left</source>
+        <translation>Vorne links</translation>
+    </message>
+    <message>
+        <source>Front Right</source>
+        <translation>Vorne rechts</translation>
+    </message>
+    <message>
+        <source>Home Base</source>
+        <translation>Ladestation</translation>
+    </message>
+    <message>
+        <source>Hour</source>
+        <translation>Stunde</translation>
+    </message>
+    <message>
+        <source>Internal Charger</source>
+        <translation>Internes Ladegerät</translation>
+    </message>
+    <message>
+        <source>Left</source>
+        <translation>Links</translation>
+    </message>
+    <message>
+        <source>Left Wheel</source>
+        <translation>Linkes Rad</translation>
+    </message>
+    <message>
+        <source>Low Side Driver 0</source>
+        <translation>Low-Side-Treiber 0</translation>
+    </message>
+    <message>
+        <source>Low Side Driver 1</source>
+        <translation>Low-Side-Treiber 1</translation>
+    </message>
+    <message>
+        <source>Low Side Driver 2</source>
+        <translation>Low-Side-Treiber 2</translation>
+    </message>
+    <message>
+        <source>Main Brush</source>
+        <translation>Hauptbürste</translation>
+    </message>
+    <message>
+        <source>Minute</source>
+        <translation>Minute</translation>
+    </message>
+    <message>
+        <source>Play</source>
+        <translation>Play</translation>
+    </message>
+    <message>
+        <source>Right</source>
+        <translation>Rechts</translation>
+    </message>
+    <message>
+        <source>Right Wheel</source>
+        <translation>Rechtes Rad</translation>
+    </message>
+    <message>
+        <source>Schedule</source>
+        <translation>Zeitplan</translation>
+    </message>
+    <message>
+        <source>Side Brush</source>
+        <translation>Seitenbürste</translation>
+    </message>
+    <message>
+        <source>Spot</source>
+        <translation>Spot</translation>
+    </message>
+    <message>
+        <source>Wheel Drop Caster</source>
+        <translation>Radabsenkung Stützrad</translation>
+    </message>
+    <message>
+        <source>Wheel Drop Left</source>
+        <translation>Radabsenkung links</translation>
+    </message>
+    <message>
+        <source>Wheel Drop Right</source>
+        <translation>Radabsenkung rechts</translation>
+    </message>
+</context>
+<context>
+    <name>ByteInspector</name>
+    <message>
+        <source>Resume</source>
+        <translation>Fortsetzen</translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation>Pause</translation>
+    </message>
+    <message>
+        <source>Stop scrolling new bytes into view; they are still recorded</source>
+        <translation>Neue Bytes nicht mehr ins Bild scrollen; sie werden weiter aufgezeichnet</translation>
+    </message>
+    <message>
+        <source>Clear</source>
+        <translation>Leeren</translation>
+    </message>
+    <message>
+        <source>Forget every entry and reset the counts</source>
+        <translation>Alle Einträge verwerfen und die Zähler zurücksetzen</translation>
+    </message>
+    <message>
+        <source>Hex</source>
+        <translation>Hex</translation>
+    </message>
+    <message>
+        <source>Show bytes in hexadecimal instead of decimal</source>
+        <translation>Bytes hexadezimal statt dezimal anzeigen</translation>
+    </message>
+    <message>
+        <source>Byte log</source>
+        <translation>Byte-Protokoll</translation>
+    </message>
+    <message>
+        <source>Raw bytes to send, e.g. 128 131 or 0x80 0x83</source>
+        <translation>Zu sendende Rohbytes, z. B. 128 131 oder 0x80 0x83</translation>
+    </message>
+    <message>
+        <source>Raw bytes to send</source>
+        <translation>Zu sendende Rohbytes</translation>
+    </message>
+    <message>
+        <source>Send</source>
+        <translation>Senden</translation>
+    </message>
+    <message>
+        <source>Check the bytes and send them to the robot</source>
+        <translation>Bytes prüfen und an den Roboter senden</translation>
+    </message>
+    <message numerus="yes">
+        <source>%Ln entry · TX %1 B · RX %2 B</source>
+        <translation>
+            <numerusform>%Ln Eintrag · TX %1 B · RX %2 B</numerusform>
+            <numerusform>%Ln Einträge · TX %1 B · RX %2 B</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%Ln entries · TX %1 B · RX %2 B</source>
+        <translation>
+            <numerusform>%Ln Eintrag · TX %1 B · RX %2 B</numerusform>
+            <numerusform>%Ln Einträge · TX %1 B · RX %2 B</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source> · paused, %Ln new</source>
+        <translation>
+            <numerusform> · angehalten, %Ln neuer</numerusform>
+            <numerusform> · angehalten, %Ln neue</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source> · paused</source>
+        <translation> · angehalten</translation>
+    </message>
+</context>
+<context>
+    <name>ChannelChooser</name>
+    <message>
+        <source>Bumps &amp; cliffs</source>
+        <translation>Stöße &amp; Abgründe</translation>
+    </message>
+    <message>
+        <source>Battery</source>
+        <translation>Akku</translation>
+    </message>
+    <message>
+        <source>Motion</source>
+        <translation>Bewegung</translation>
+    </message>
+    <message>
+        <source>Light bumpers</source>
+        <translation>Lichtstoßfänger</translation>
+    </message>
+    <message>
+        <source>Motors &amp; dirt</source>
+        <translation>Motoren &amp; Schmutz</translation>
+    </message>
+    <message>
+        <source>Cargo bay</source>
+        <translation>Laderaum</translation>
+    </message>
+    <message>
+        <source>IR, buttons &amp; mode</source>
+        <translation>IR, Tasten &amp; Modus</translation>
+    </message>
+    <message>
+        <source>Unused</source>
+        <translation>Unbenutzt</translation>
+    </message>
+    <message>
+        <source>Choose channels</source>
+        <translation>Kanäle wählen</translation>
+    </message>
+    <message>
+        <source>Choose the sensor packets this plot shows</source>
+        <translation>Sensorpakete wählen, die dieses Diagramm zeigt</translation>
+    </message>
+    <message numerus="yes">
+        <source>Channels (%n)</source>
+        <translation>
+            <numerusform>Kanäle (%n)</numerusform>
+            <numerusform>Kanäle (%n)</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>CommandDecoder</name>
+    <message>
+        <source> (straight)</source>
+        <translation> (geradeaus)</translation>
+    </message>
+    <message>
+        <source> (turn in place clockwise)</source>
+        <translation> (auf der Stelle drehen, im Uhrzeigersinn)</translation>
+    </message>
+    <message>
+        <source> (turn in place counter-clockwise)</source>
+        <translation> (auf der Stelle drehen, gegen den Uhrzeigersinn)</translation>
+    </message>
+    <message>
+        <source>group %1 (packets %2..%3)</source>
+        <translation>Gruppe %1 (Pakete %2..%3)</translation>
+    </message>
+    <message>
+        <source>packet %1 (not on the %2)</source>
+        <translation>Paket %1 (nicht beim %2)</translation>
+    </message>
+    <message>
+        <source>not a command of the %1</source>
+        <translation>kein Befehl des %1</translation>
+    </message>
+    <message>
+        <source>%1, incomplete: its count byte is missing</source>
+        <translation>%1, unvollständig: das Anzahlbyte fehlt</translation>
+    </message>
+    <message>
+        <source>%1, incomplete: %2 of %3 data bytes</source>
+        <translation>%1, unvollständig: %2 von %3 Datenbytes</translation>
+    </message>
+    <message>
+        <source>rest</source>
+        <translation>Pause</translation>
+    </message>
+    <message>
+        <source>%1 slot %2, %3%4</source>
+        <translation>%1 Platz %2, %3%4</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n byte</source>
+        <translation>
+            <numerusform>%n Byte</numerusform>
+            <numerusform>%n Bytes</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n bytes</source>
+        <translation>
+            <numerusform>%n Byte</numerusform>
+            <numerusform>%n Bytes</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1 code %2%3</source>
+        <translation>%1 Code %2%3</translation>
+    </message>
+    <message>
+        <source>%1 velocity %2 radius %3%4</source>
+        <translation>%1 Geschwindigkeit %2 Radius %3%4</translation>
+    </message>
+    <message>
+        <source>pause</source>
+        <translation>anhalten</translation>
+    </message>
+    <message>
+        <source>resume</source>
+        <translation>fortsetzen</translation>
+    </message>
+    <message>
+        <source>state %1</source>
+        <translation>Zustand %1</translation>
+    </message>
+    <message>
+        <source>%1 off</source>
+        <translation>%1 aus</translation>
+    </message>
+    <message>
+        <source>Type the bytes to send, for example 128 131 or 0x80 0x83.</source>
+        <translation>Geben Sie die zu sendenden Bytes ein, zum Beispiel 128 131 oder 0x80 0x83.</translation>
+    </message>
+    <message>
+        <source>Byte %1: “%2” is not a number.</source>
+        <translation>Byte %1: „%2“ ist keine Zahl.</translation>
+    </message>
+    <message>
+        <source>Byte %1: %2 is outside 0..255.</source>
+        <translation>Byte %1: %2 liegt außerhalb von 0..255.</translation>
+    </message>
+    <message>
+        <source>Byte %1: %2 is not an opcode of the %3.</source>
+        <translation>Byte %1: %2 ist kein Opcode des %3.</translation>
+    </message>
+    <message>
+        <source>%1 needs its song number and length bytes.</source>
+        <translation>%1 braucht die Bytes für Liednummer und Länge.</translation>
+    </message>
+    <message>
+        <source>%1 needs its count byte.</source>
+        <translation>%1 braucht das Anzahlbyte.</translation>
+    </message>
+    <message>
+        <source>%1 takes %2 data bytes; got %3.</source>
+        <translation>%1 erwartet %2 Datenbytes, erhalten: %3.</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>%1: these bytes do not form the command the robot expects.</source>
+        <translation>%1: Diese Bytes ergeben nicht den Befehl, den der Roboter erwartet.</translation>
+    </message>
+</context>
+<context>
+    <name>ConnectionBar</name>
+    <message>
+        <source>Virtual robot</source>
+        <translation>Virtueller Roboter</translation>
+    </message>
+    <message>
+        <source>Serial port</source>
+        <translation>Serieller Port</translation>
+    </message>
+    <message>
+        <source>TCP (ser2net)</source>
+        <translation>TCP (ser2net)</translation>
+    </message>
+    <message>
+        <source>Transport</source>
+        <translation>Verbindungsart</translation>
+    </message>
+    <message>
+        <source>/dev/ttyUSB0 or a typed path</source>
+        <translation>/dev/ttyUSB0 oder ein eingegebener Pfad</translation>
+    </message>
+    <message>
+        <source>List the serial ports again</source>
+        <translation>Serielle Ports neu auflisten</translation>
+    </message>
+    <message>
+        <source>host:port, e.g. raspberrypi:3333</source>
+        <translation>host:port, z. B. raspberrypi:3333</translation>
+    </message>
+    <message>
+        <source>TCP bridge</source>
+        <translation>TCP-Brücke</translation>
+    </message>
+    <message>
+        <source>Auto</source>
+        <translation>Auto</translation>
+    </message>
+    <message>
+        <source>Robot profile</source>
+        <translation>Roboterprofil</translation>
+    </message>
+    <message>
+        <source>Default baud</source>
+        <translation>Standard-Baudrate</translation>
+    </message>
+    <message>
+        <source>Baud rate</source>
+        <translation>Baudrate</translation>
+    </message>
+    <message>
+        <source>Connect</source>
+        <translation>Verbinden</translation>
+    </message>
+    <message>
+        <source>Disconnect</source>
+        <translation>Trennen</translation>
+    </message>
+    <message>
+        <source>Choose a serial port or type its path.</source>
+        <translation>Wählen Sie einen seriellen Port oder geben Sie seinen Pfad ein.</translation>
+    </message>
+    <message>
+        <source>Type the bridge as host:port with a port from 1 to 65535, e.g. raspberrypi:3333.</source>
+        <translation>Geben Sie die Brücke als host:port mit einem Port von 1 bis 65535 ein, z. B. raspberrypi:3333.</translation>
+    </message>
+</context>
+<context>
+    <name>DashboardCommandLine</name>
+    <message>
+        <source>Usage: roomba-dashboard [--sim | --port PATH | --tcp HOST:PORT | --replay FILE]
+                        [--profile P] [--baud N] [--record FILE] [--lang CODE]
+
+  --sim              the built-in virtual robot
+  --port PATH        a serial port, USB adapter or pseudo-terminal
+  --tcp HOST:PORT    a serial-over-TCP bridge such as ser2net
+  --replay FILE      play back a recording (.oirec) as if it were the robot
+  --profile P        roomba500, create2 (also roomba600), create1 (also create) or auto
+  --baud N           the line speed; the profile&apos;s default when left out
+  --record FILE      record every byte to and from the robot into FILE
+  --lang CODE        the language of the window: %1
+  --help, --version
+
+Without a connection option the dashboard reconnects to what was used last,
+or on first start to the virtual robot. Without --lang it speaks the language
+chosen in its View menu, or the system&apos;s.
+</source>
+        <translation>Aufruf: roomba-dashboard [--sim | --port PFAD | --tcp HOST:PORT | --replay DATEI]
+                         [--profile P] [--baud N] [--record DATEI] [--lang CODE]
+
+  --sim              der eingebaute virtuelle Roboter
+  --port PFAD        ein serieller Port, USB-Adapter oder Pseudo-Terminal
+  --tcp HOST:PORT    eine Seriell-über-TCP-Brücke wie ser2net
+  --replay DATEI     eine Aufzeichnung (.oirec) abspielen, als wäre sie der Roboter
+  --profile P        roomba500, create2 (auch roomba600), create1 (auch create) oder auto
+  --baud N           die Leitungsgeschwindigkeit; ohne Angabe die Vorgabe des Profils
+  --record DATEI     jedes Byte zum und vom Roboter in DATEI aufzeichnen
+  --lang CODE        die Sprache des Fensters: %1
+  --help, --version
+
+Ohne Verbindungsoption verbindet sich das Dashboard wieder mit der zuletzt
+verwendeten Verbindung, beim ersten Start mit dem virtuellen Roboter. Ohne --lang
+verwendet es die im Menü „Ansicht“ gewählte Sprache oder die des Systems.
+</translation>
+    </message>
+    <message>
+        <source>%1 needs a value; see --help</source>
+        <translation>%1 braucht einen Wert; siehe --help</translation>
+    </message>
+    <message>
+        <source>choose one of --sim, --port, --tcp and --replay</source>
+        <translation>nur eine der Optionen --sim, --port, --tcp und --replay angeben</translation>
+    </message>
+    <message>
+        <source>--tcp needs HOST:PORT with a port from 1 to 65535, not &apos;%1&apos;</source>
+        <translation>--tcp braucht HOST:PORT mit einem Port von 1 bis 65535, nicht „%1“</translation>
+    </message>
+    <message>
+        <source>unknown profile &apos;%1&apos; (roomba500, create2, create1 or auto)</source>
+        <translation>unbekanntes Profil „%1“ (roomba500, create2, create1 oder auto)</translation>
+    </message>
+    <message>
+        <source>--baud %1 is not a rate the robot offers (300 .. 115200)</source>
+        <translation>--baud %1 ist keine Baudrate, die der Roboter unterstützt (300 .. 115200)</translation>
+    </message>
+    <message>
+        <source>--record: the folder of &apos;%1&apos; does not exist</source>
+        <translation>--record: der Ordner von „%1“ existiert nicht</translation>
+    </message>
+    <message>
+        <source>unknown language &apos;%1&apos; (%2)</source>
+        <translation>unbekannte Sprache „%1“ (%2)</translation>
+    </message>
+    <message>
+        <source>unknown argument &apos;%1&apos;; see --help</source>
+        <translation>unbekanntes Argument „%1“; siehe --help</translation>
+    </message>
+    <message>
+        <source>--profile and --baud go with --sim, --port or --tcp</source>
+        <translation>--profile und --baud gelten nur zusammen mit --sim, --port oder --tcp</translation>
+    </message>
+    <message>
+        <source>--replay reads the profile and baud from the recording; leave out --profile and --baud</source>
+        <translation>--replay liest Profil und Baudrate aus der Aufzeichnung; --profile und --baud weglassen</translation>
+    </message>
+    <message>
+        <source>--record records a robot; a replay is already a recording</source>
+        <translation>--record zeichnet einen Roboter auf; eine Wiedergabe ist bereits eine Aufzeichnung</translation>
+    </message>
+    <message>
+        <source>cannot replay %1</source>
+        <translation>%1 kann nicht wiedergegeben werden</translation>
+    </message>
+</context>
+<context>
+    <name>Demos</name>
+    <message>
+        <source>Abort demo</source>
+        <translation>Demo abbrechen</translation>
+    </message>
+    <message>
+        <source>Cover</source>
+        <translation>Flächenabdeckung</translation>
+    </message>
+    <message>
+        <source>Cover and Dock</source>
+        <translation>Flächenabdeckung und Andocken</translation>
+    </message>
+    <message>
+        <source>Spot Cover</source>
+        <translation>Spot-Abdeckung</translation>
+    </message>
+    <message>
+        <source>Mouse</source>
+        <translation>Maus</translation>
+    </message>
+    <message>
+        <source>Drive Figure Eight</source>
+        <translation>Acht fahren</translation>
+    </message>
+    <message>
+        <source>Wimp</source>
+        <translation>Angsthase</translation>
+    </message>
+    <message>
+        <source>Home</source>
+        <translation>Heimkehr</translation>
+    </message>
+    <message>
+        <source>Tag</source>
+        <translation>Fangen</translation>
+    </message>
+    <message>
+        <source>Pachelbel</source>
+        <translation>Pachelbel</translation>
+    </message>
+    <message>
+        <source>Banjo</source>
+        <translation>Banjo</translation>
+    </message>
+</context>
+<context>
+    <name>DrivePad</name>
+    <message>
+        <source>%1 mm/s</source>
+        <translation>%1 mm/s</translation>
+    </message>
+    <message>
+        <source>Drive (137): speed and radius</source>
+        <translation>Drive (137): Geschwindigkeit und Radius</translation>
+    </message>
+    <message>
+        <source>Drive Direct (145): each wheel</source>
+        <translation>Drive Direct (145): jedes Rad einzeln</translation>
+    </message>
+    <message>
+        <source>Drive PWM (146): each wheel, raw power</source>
+        <translation>Drive PWM (146): jedes Rad, Rohleistung</translation>
+    </message>
+    <message>
+        <source>Speed limit</source>
+        <translation>Tempolimit</translation>
+    </message>
+    <message>
+        <source>Passive mode: enter Safe to drive</source>
+        <translation>Modus Passive: zum Fahren Safe aktivieren</translation>
+    </message>
+    <message>
+        <source>Enter Safe</source>
+        <translation>Safe aktivieren</translation>
+    </message>
+    <message>
+        <source>Drive pad</source>
+        <translation>Fahrsteuerung</translation>
+    </message>
+    <message>
+        <source>Drive Direct (145) is not available on the %1</source>
+        <translation>Drive Direct (145) ist beim %1 nicht verfügbar</translation>
+    </message>
+    <message>
+        <source>Drive PWM (146) is not available on the %1</source>
+        <translation>Drive PWM (146) ist beim %1 nicht verfügbar</translation>
+    </message>
+    <message>
+        <source>Drive (137) is not available on the %1</source>
+        <translation>Drive (137) ist beim %1 nicht verfügbar</translation>
+    </message>
+    <message>
+        <source>Stopped</source>
+        <translation>Angehalten</translation>
+    </message>
+    <message>
+        <source>Drive Direct: right %1, left %2 mm/s</source>
+        <translation>Drive Direct: rechts %1, links %2 mm/s</translation>
+    </message>
+    <message>
+        <source>Drive PWM: right %1, left %2</source>
+        <translation>Drive PWM: rechts %1, links %2</translation>
+    </message>
+    <message>
+        <source>straight</source>
+        <translation>geradeaus</translation>
+    </message>
+    <message>
+        <source>turn in place, clockwise</source>
+        <translation>auf der Stelle drehen, im Uhrzeigersinn</translation>
+    </message>
+    <message>
+        <source>turn in place, anticlockwise</source>
+        <translation>auf der Stelle drehen, gegen den Uhrzeigersinn</translation>
+    </message>
+    <message>
+        <source>radius %1 mm</source>
+        <translation>Radius %1 mm</translation>
+    </message>
+    <message>
+        <source>Drive %1 mm/s, %2</source>
+        <translation>Drive %1 mm/s, %2</translation>
+    </message>
+    <message>
+        <source>Right wheel %1 mm/s, left wheel %2 mm/s</source>
+        <translation>Rechtes Rad %1 mm/s, linkes Rad %2 mm/s</translation>
+    </message>
+    <message>
+        <source>Right wheel power %1, left wheel power %2</source>
+        <translation>Leistung rechtes Rad %1, linkes Rad %2</translation>
+    </message>
+    <message>
+        <source>Turning in place clockwise, %1 mm/s</source>
+        <translation>Dreht auf der Stelle im Uhrzeigersinn, %1 mm/s</translation>
+    </message>
+    <message>
+        <source>Turning in place anticlockwise, %1 mm/s</source>
+        <translation>Dreht auf der Stelle gegen den Uhrzeigersinn, %1 mm/s</translation>
+    </message>
+    <message>
+        <source>Forward %1 mm/s</source>
+        <translation>Vorwärts %1 mm/s</translation>
+    </message>
+    <message>
+        <source>Backward %1 mm/s</source>
+        <translation>Rückwärts %1 mm/s</translation>
+    </message>
+    <message>
+        <source>%1, straight</source>
+        <translation>%1, geradeaus</translation>
+    </message>
+    <message>
+        <source>%1, turning left (radius %2 mm)</source>
+        <translation>%1, Linkskurve (Radius %2 mm)</translation>
+    </message>
+    <message>
+        <source>%1, turning right (radius %2 mm)</source>
+        <translation>%1, Rechtskurve (Radius %2 mm)</translation>
+    </message>
+</context>
+<context>
+    <name>GamepadInput</name>
+    <message>
+        <source>Back</source>
+        <translation>Back</translation>
+    </message>
+    <message>
+        <source>Guide</source>
+        <translation>Guide</translation>
+    </message>
+    <message>
+        <source>Start</source>
+        <translation>Start</translation>
+    </message>
+    <message>
+        <source>Left stick press</source>
+        <translation>Linker Stick gedrückt</translation>
+    </message>
+    <message>
+        <source>Right stick press</source>
+        <translation>Rechter Stick gedrückt</translation>
+    </message>
+    <message>
+        <source>D-pad up</source>
+        <translation>Steuerkreuz oben</translation>
+    </message>
+    <message>
+        <source>D-pad down</source>
+        <translation>Steuerkreuz unten</translation>
+    </message>
+    <message>
+        <source>D-pad left</source>
+        <translation>Steuerkreuz links</translation>
+    </message>
+    <message>
+        <source>D-pad right</source>
+        <translation>Steuerkreuz rechts</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>keine</translation>
+    </message>
+    <message>
+        <source>button %1</source>
+        <translation>Taste %1</translation>
+    </message>
+    <message>
+        <source>Passive (128)</source>
+        <translation>Passive (128)</translation>
+    </message>
+    <message>
+        <source>Safe (131)</source>
+        <translation>Safe (131)</translation>
+    </message>
+    <message>
+        <source>Full (132)</source>
+        <translation>Full (132)</translation>
+    </message>
+    <message>
+        <source>command %1</source>
+        <translation>Befehl %1</translation>
+    </message>
+    <message>
+        <source>Gamepad</source>
+        <translation>Gamepad</translation>
+    </message>
+</context>
+<context>
+    <name>GamepadPanel</name>
+    <message>
+        <source>Would send:</source>
+        <translation>Würde senden:</translation>
+    </message>
+    <message>
+        <source>Left stick</source>
+        <translation>Linker Stick</translation>
+    </message>
+    <message>
+        <source>Drive Direct: right %1 mm/s, left %2 mm/s</source>
+        <translation>Drive Direct: rechts %1 mm/s, links %2 mm/s</translation>
+    </message>
+    <message>
+        <source>Drive PWM: right %1, left %2</source>
+        <translation>Drive PWM: rechts %1, links %2</translation>
+    </message>
+    <message>
+        <source>Stop: Drive 0 mm/s</source>
+        <translation>Stopp: Drive 0 mm/s</translation>
+    </message>
+    <message>
+        <source>Forward: Drive %1 mm/s, straight</source>
+        <translation>Vorwärts: Drive %1 mm/s, geradeaus</translation>
+    </message>
+    <message>
+        <source>Reverse: Drive %1 mm/s, straight</source>
+        <translation>Rückwärts: Drive %1 mm/s, geradeaus</translation>
+    </message>
+    <message>
+        <source>Spin clockwise: Drive %1 mm/s, radius -1</source>
+        <translation>Drehen im Uhrzeigersinn: Drive %1 mm/s, Radius -1</translation>
+    </message>
+    <message>
+        <source>Spin counter-clockwise: Drive %1 mm/s, radius 1</source>
+        <translation>Drehen gegen den Uhrzeigersinn: Drive %1 mm/s, Radius 1</translation>
+    </message>
+    <message>
+        <source>Forward, arcing right</source>
+        <translation>Vorwärts, Bogen nach rechts</translation>
+    </message>
+    <message>
+        <source>Forward, arcing left</source>
+        <translation>Vorwärts, Bogen nach links</translation>
+    </message>
+    <message>
+        <source>Reverse, arcing right</source>
+        <translation>Rückwärts, Bogen nach rechts</translation>
+    </message>
+    <message>
+        <source>Reverse, arcing left</source>
+        <translation>Rückwärts, Bogen nach links</translation>
+    </message>
+    <message>
+        <source>%1: Drive %2 mm/s, radius %3 mm</source>
+        <translation>%1: Drive %2 mm/s, Radius %3 mm</translation>
+    </message>
+    <message>
+        <source>Gamepads unavailable: %1</source>
+        <translation>Gamepads nicht verfügbar: %1</translation>
+    </message>
+    <message>
+        <source>No gamepad connected — plug one in to drive with it</source>
+        <translation>Kein Gamepad verbunden – zum Fahren eines anschließen</translation>
+    </message>
+    <message>
+        <source>Dead-man (%1) held: driving</source>
+        <translation>Totmannschalter (%1) gehalten: Fahrt</translation>
+    </message>
+    <message>
+        <source>Dead-man (%1) released: hold it to drive</source>
+        <translation>Totmannschalter (%1) losgelassen: zum Fahren gedrückt halten</translation>
+    </message>
+    <message>
+        <source>%1% right, %2% forward</source>
+        <translation>%1% rechts, %2% vorwärts</translation>
+    </message>
+    <message>
+        <source>Speed limit %1 mm/s · deadband %2% · expo %3</source>
+        <translation>Tempolimit %1 mm/s · Totzone %2% · Expo %3</translation>
+    </message>
+    <message>
+        <source>Hold %1 to drive</source>
+        <translation>Zum Fahren %1 gedrückt halten</translation>
+    </message>
+    <message>
+        <source>%1: Stop All</source>
+        <translation>%1: Alles stoppen</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>InfraredName</name>
+    <message>
+        <source>Arc Forward Left</source>
+        <translation>Bogen vorwärts links</translation>
+    </message>
+    <message>
+        <source>Arc Forward Right</source>
+        <translation>Bogen vorwärts rechts</translation>
+    </message>
+    <message>
+        <source>Arc Left</source>
+        <translation>Bogen links</translation>
+    </message>
+    <message>
+        <source>Arc Right</source>
+        <translation>Bogen rechts</translation>
+    </message>
+    <message>
+        <source>Dock (reserved)</source>
+        <translation>Dock (reserviert)</translation>
+    </message>
+    <message>
+        <source>Download</source>
+        <translation>Download</translation>
+    </message>
+    <message>
+        <source>Drive Stop</source>
+        <translation>Fahrt stoppen</translation>
+    </message>
+    <message>
+        <source>Fence</source>
+        <translation>Zaun</translation>
+    </message>
+    <message>
+        <source>Force Field</source>
+        <translation>Kraftfeld</translation>
+    </message>
+    <message>
+        <source>Forward</source>
+        <translation>Vorwärts</translation>
+    </message>
+    <message>
+        <source>Green Buoy</source>
+        <translation>Grüne Boje</translation>
+    </message>
+    <message>
+        <source>Large / Clean</source>
+        <translation>Groß / Clean</translation>
+    </message>
+    <message>
+        <source>Left</source>
+        <translation>Links</translation>
+    </message>
+    <message>
+        <source>Max</source>
+        <translation>Max</translation>
+    </message>
+    <message>
+        <source>Medium</source>
+        <translation>Mittel</translation>
+    </message>
+    <message>
+        <source>None</source>
+        <translation>Keins</translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation>Pause</translation>
+    </message>
+    <message>
+        <source>Power</source>
+        <translation>Ein/Aus</translation>
+    </message>
+    <message>
+        <source>Red Buoy</source>
+        <translation>Rote Boje</translation>
+    </message>
+    <message>
+        <source>Right</source>
+        <translation>Rechts</translation>
+    </message>
+    <message>
+        <source>Seek Dock</source>
+        <translation>Dock suchen</translation>
+    </message>
+    <message>
+        <source>Send All</source>
+        <translation>Alle senden</translation>
+    </message>
+    <message>
+        <source>Small</source>
+        <translation>Klein</translation>
+    </message>
+    <message>
+        <source>Spot</source>
+        <translation>Spot</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>Stopp</translation>
+    </message>
+    <message>
+        <source>Virtual Wall</source>
+        <translation>Virtuelle Wand</translation>
+    </message>
+    <message>
+        <source> and </source>
+        <translation> und </translation>
+    </message>
+    <message>
+        <source>Lighthouse (unbound) %1</source>
+        <translation>Leuchtturm (ungebunden) %1</translation>
+    </message>
+    <message>
+        <source>Lighthouse %1 %2</source>
+        <translation>Leuchtturm %1 %2</translation>
+    </message>
+    <message>
+        <source>IR %1</source>
+        <translation>IR %1</translation>
+    </message>
+</context>
+<context>
+    <name>LedEditor</name>
+    <message>
+        <source>Live</source>
+        <translation>Live</translation>
+    </message>
+    <message>
+        <source>Send changes as you make them, at most every %1 ms</source>
+        <translation>Änderungen sofort senden, höchstens alle %1 ms</translation>
+    </message>
+    <message>
+        <source>Apply</source>
+        <translation>Anwenden</translation>
+    </message>
+    <message>
+        <source>Will send:</source>
+        <translation>Wird gesendet:</translation>
+    </message>
+    <message>
+        <source>7-segment display (163, 164)</source>
+        <translation>7-Segment-Anzeige (163, 164)</translation>
+    </message>
+    <message>
+        <source>Click a segment to switch it on or off</source>
+        <translation>Segment anklicken, um es ein- oder auszuschalten</translation>
+    </message>
+    <message>
+        <source>Segment editor</source>
+        <translation>Segment-Editor</translation>
+    </message>
+    <message>
+        <source>Clear</source>
+        <translation>Leeren</translation>
+    </message>
+    <message>
+        <source>Switch every segment off</source>
+        <translation>Alle Segmente ausschalten</translation>
+    </message>
+    <message>
+        <source>up to 4 characters</source>
+        <translation>bis zu 4 Zeichen</translation>
+    </message>
+    <message>
+        <source>Text for the display</source>
+        <translation>Text für die Anzeige</translation>
+    </message>
+    <message>
+        <source>The robot&apos;s approximation of the text</source>
+        <translation>Der Text, wie der Roboter ihn annähernd darstellt</translation>
+    </message>
+    <message>
+        <source>What the robot shows</source>
+        <translation>Was der Roboter anzeigt</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Segments&lt;/b&gt; (Digit LEDs Raw, 163): click to switch</source>
+        <translation>&lt;b&gt;Segmente&lt;/b&gt; (Digit LEDs Raw, 163): zum Umschalten klicken</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Text&lt;/b&gt; (Digit LEDs ASCII, 164)</source>
+        <translation>&lt;b&gt;Text&lt;/b&gt; (Digit LEDs ASCII, 164)</translation>
+    </message>
+    <message>
+        <source>What the robot shows:</source>
+        <translation>Was der Roboter anzeigt:</translation>
+    </message>
+    <message>
+        <source>LEDs (139)</source>
+        <translation>LEDs (139)</translation>
+    </message>
+    <message>
+        <source>Debris</source>
+        <translation>Schmutz</translation>
+    </message>
+    <message>
+        <source>Spot</source>
+        <translation>Spot</translation>
+    </message>
+    <message>
+        <source>Dock</source>
+        <translation>Dock</translation>
+    </message>
+    <message>
+        <source>Check Robot</source>
+        <translation>Roboter prüfen</translation>
+    </message>
+    <message>
+        <source>Play</source>
+        <translation>Play</translation>
+    </message>
+    <message>
+        <source>Advance</source>
+        <translation>Advance</translation>
+    </message>
+    <message>
+        <source>0 green … 255 red</source>
+        <translation>0 grün … 255 rot</translation>
+    </message>
+    <message>
+        <source>Power colour</source>
+        <translation>Power-Farbe</translation>
+    </message>
+    <message>
+        <source>Intensity</source>
+        <translation>Helligkeit</translation>
+    </message>
+    <message>
+        <source>The power LED as set</source>
+        <translation>Die Power-LED wie eingestellt</translation>
+    </message>
+    <message>
+        <source>Power LED</source>
+        <translation>Power-LED</translation>
+    </message>
+    <message>
+        <source>green</source>
+        <translation>grün</translation>
+    </message>
+    <message>
+        <source>red</source>
+        <translation>rot</translation>
+    </message>
+    <message>
+        <source>off</source>
+        <translation>aus</translation>
+    </message>
+    <message>
+        <source>full</source>
+        <translation>voll</translation>
+    </message>
+    <message>
+        <source>Scheduling LEDs (162)</source>
+        <translation>Zeitplan-LEDs (162)</translation>
+    </message>
+    <message>
+        <source>Sun</source>
+        <translation>So</translation>
+    </message>
+    <message>
+        <source>Mon</source>
+        <translation>Mo</translation>
+    </message>
+    <message>
+        <source>Tue</source>
+        <translation>Di</translation>
+    </message>
+    <message>
+        <source>Wed</source>
+        <translation>Mi</translation>
+    </message>
+    <message>
+        <source>Thu</source>
+        <translation>Do</translation>
+    </message>
+    <message>
+        <source>Fri</source>
+        <translation>Fr</translation>
+    </message>
+    <message>
+        <source>Sat</source>
+        <translation>Sa</translation>
+    </message>
+    <message>
+        <source>Schedule</source>
+        <translation>Zeitplan</translation>
+    </message>
+    <message>
+        <source>Clock</source>
+        <translation>Uhr</translation>
+    </message>
+    <message>
+        <source>AM</source>
+        <translation>AM</translation>
+    </message>
+    <message>
+        <source>PM</source>
+        <translation>PM</translation>
+    </message>
+    <message>
+        <source>Colon</source>
+        <translation>Doppelpunkt</translation>
+    </message>
+    <message>
+        <source>The %1 has no 7-segment display: Digit LEDs Raw (163) and Digit LEDs ASCII (164) are Roomba 500 / Create 2 only.</source>
+        <translation>Der %1 hat keine 7-Segment-Anzeige: Digit LEDs Raw (163) und Digit LEDs ASCII (164) gibt es nur bei Roomba 500 / Create 2.</translation>
+    </message>
+    <message>
+        <source>⚠ %1. It is sent anyway; use Text (164) to be sure.</source>
+        <translation>⚠ %1. Es wird trotzdem gesendet; verwenden Sie zur Sicherheit Text (164).</translation>
+    </message>
+    <message>
+        <source>%1.</source>
+        <translation>%1.</translation>
+    </message>
+    <message>
+        <source>Not sent: %1 outside ASCII 32..126. Use letters, digits and punctuation.</source>
+        <translation>Nicht gesendet: %1 außerhalb von ASCII 32..126. Verwenden Sie Buchstaben, Ziffern und Satzzeichen.</translation>
+    </message>
+    <message>
+        <source>%1 shows blank: the robot has no shape for it.</source>
+        <translation>%1 bleibt leer: Der Roboter hat dafür keine Form.</translation>
+    </message>
+    <message>
+        <source>%1 show blank: the robot has no shape for them.</source>
+        <translation>%1 bleiben leer: Der Roboter hat dafür keine Form.</translation>
+    </message>
+    <message>
+        <source>Colour %1 of 255 (green to red), intensity %2 of 255</source>
+        <translation>Farbe %1 von 255 (grün bis rot), Helligkeit %2 von 255</translation>
+    </message>
+    <message>
+        <source>nothing (no changes since the last send)</source>
+        <translation>nichts (keine Änderungen seit dem letzten Senden)</translation>
+    </message>
+    <message>
+        <source>Live mode sends changes as you make them</source>
+        <translation>Im Live-Modus werden Änderungen sofort gesendet</translation>
+    </message>
+    <message>
+        <source>Send the changes shown under &quot;Will send&quot;</source>
+        <translation>Die unter „Wird gesendet“ angezeigten Änderungen senden</translation>
+    </message>
+</context>
+<context>
+    <name>MainWindow</name>
+    <message>
+        <source>Connection</source>
+        <translation>Verbindung</translation>
+    </message>
+    <message>
+        <source>Modes</source>
+        <translation>Modi</translation>
+    </message>
+    <message>
+        <source>Drive</source>
+        <translation>Fahren</translation>
+    </message>
+    <message>
+        <source>Gauges</source>
+        <translation>Messanzeigen</translation>
+    </message>
+    <message>
+        <source>Signals</source>
+        <translation>Signale</translation>
+    </message>
+    <message>
+        <source>Plots</source>
+        <translation>Diagramme</translation>
+    </message>
+    <message>
+        <source>Inspector</source>
+        <translation>Inspektor</translation>
+    </message>
+    <message>
+        <source>Songs</source>
+        <translation>Lieder</translation>
+    </message>
+    <message>
+        <source>LEDs and digits</source>
+        <translation>LEDs und Ziffern</translation>
+    </message>
+    <message>
+        <source>Schedule</source>
+        <translation>Zeitplan</translation>
+    </message>
+    <message>
+        <source>Script</source>
+        <translation>Skript</translation>
+    </message>
+    <message>
+        <source>Motors and outputs</source>
+        <translation>Motoren und Ausgänge</translation>
+    </message>
+    <message>
+        <source>Odometry map</source>
+        <translation>Odometriekarte</translation>
+    </message>
+    <message>
+        <source>Gamepad</source>
+        <translation>Gamepad</translation>
+    </message>
+    <message>
+        <source>Firmware %1</source>
+        <translation>Firmware %1</translation>
+    </message>
+    <message>
+        <source>About Roomba Dashboard</source>
+        <translation>Über Roomba Dashboard</translation>
+    </message>
+    <message>
+        <source>Roomba Dashboard %1
+A dashboard for iRobot robots that speak the Open Interface.
+GPL-3.0-or-later.</source>
+        <translation>Roomba Dashboard %1
+Ein Dashboard für iRobot-Roboter, die das Open Interface sprechen.
+GPL-3.0-or-later.</translation>
+    </message>
+    <message>
+        <source>Roomba Dashboard</source>
+        <translation>Roomba Dashboard</translation>
+    </message>
+    <message>
+        <source>&amp;File</source>
+        <translation>&amp;Datei</translation>
+    </message>
+    <message>
+        <source>&amp;Record</source>
+        <translation>&amp;Aufzeichnen</translation>
+    </message>
+    <message>
+        <source>Record every byte to and from the robot into a file</source>
+        <translation>Jedes Byte zum und vom Roboter in eine Datei aufzeichnen</translation>
+    </message>
+    <message>
+        <source>&amp;Open recording…</source>
+        <translation>Aufzeichnung ö&amp;ffnen…</translation>
+    </message>
+    <message>
+        <source>Replay a recording in place of the robot</source>
+        <translation>Eine Aufzeichnung anstelle des Roboters wiedergeben</translation>
+    </message>
+    <message>
+        <source>&amp;Export recording as CSV…</source>
+        <translation>Aufzeichnung als CSV &amp;exportieren…</translation>
+    </message>
+    <message>
+        <source>&amp;Quit</source>
+        <translation>&amp;Beenden</translation>
+    </message>
+    <message>
+        <source>&amp;View</source>
+        <translation>&amp;Ansicht</translation>
+    </message>
+    <message>
+        <source>Recording and replay</source>
+        <translation>Aufzeichnung und Wiedergabe</translation>
+    </message>
+    <message>
+        <source>&amp;Language</source>
+        <translation>&amp;Sprache</translation>
+    </message>
+    <message>
+        <source>System default</source>
+        <translation>Systemstandard</translation>
+    </message>
+    <message>
+        <source>&amp;Reset layout</source>
+        <translation>Layout &amp;zurücksetzen</translation>
+    </message>
+    <message>
+        <source>&amp;Help</source>
+        <translation>&amp;Hilfe</translation>
+    </message>
+    <message>
+        <source>&amp;About</source>
+        <translation>&amp;Über</translation>
+    </message>
+    <message>
+        <source>Record to</source>
+        <translation>Aufzeichnen nach</translation>
+    </message>
+    <message>
+        <source>Roomba Dashboard recordings (*.oirec)</source>
+        <translation>Roomba-Dashboard-Aufzeichnungen (*.oirec)</translation>
+    </message>
+    <message>
+        <source>Open recording</source>
+        <translation>Aufzeichnung öffnen</translation>
+    </message>
+    <message>
+        <source>Roomba Dashboard recordings (*.oirec);;All files (*)</source>
+        <translation>Roomba-Dashboard-Aufzeichnungen (*.oirec);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>This file cannot be replayed.
+
+%1</source>
+        <translation>Diese Datei kann nicht wiedergegeben werden.
+
+%1</translation>
+    </message>
+    <message>
+        <source>Export recording as CSV</source>
+        <translation>Aufzeichnung als CSV exportieren</translation>
+    </message>
+    <message>
+        <source>Save CSV as</source>
+        <translation>CSV speichern unter</translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv)</source>
+        <translation>CSV-Dateien (*.csv)</translation>
+    </message>
+    <message>
+        <source>Nothing was written.
+
+%1</source>
+        <translation>Es wurde nichts geschrieben.
+
+%1</translation>
+    </message>
+    <message>
+        <source>Wrote %1</source>
+        <translation>%1 geschrieben</translation>
+    </message>
+    <message>
+        <source>● REC %1 kB %2</source>
+        <translation>● REC %1 kB %2</translation>
+    </message>
+    <message>
+        <source>Recording stopped: %1</source>
+        <translation>Aufzeichnung beendet: %1</translation>
+    </message>
+    <message>
+        <source>closed</source>
+        <translation>geschlossen</translation>
+    </message>
+    <message>
+        <source>connecting</source>
+        <translation>verbindet</translation>
+    </message>
+    <message>
+        <source>streaming</source>
+        <translation>Datenstrom läuft</translation>
+    </message>
+    <message>
+        <source>stale</source>
+        <translation>veraltet</translation>
+    </message>
+    <message>
+        <source>lost</source>
+        <translation>verloren</translation>
+    </message>
+    <message>
+        <source>reconnecting</source>
+        <translation>verbindet neu</translation>
+    </message>
+    <message>
+        <source>  REPLAY, NOT LIVE  </source>
+        <translation>  WIEDERGABE, NICHT LIVE  </translation>
+    </message>
+    <message>
+        <source>  NO LIVE DATA  </source>
+        <translation>  KEINE LIVE-DATEN  </translation>
+    </message>
+    <message>
+        <source>Link: %1</source>
+        <translation>Verbindung: %1</translation>
+    </message>
+    <message>
+        <source>%1 frames/s</source>
+        <translation>%1 Frames/s</translation>
+    </message>
+    <message>
+        <source>checksum failures %1, resyncs %2</source>
+        <translation>Prüfsummenfehler %1, Neusynchronisierungen %2</translation>
+    </message>
+</context>
+<context>
+    <name>MidiMelody</name>
+    <message>
+        <source>Could not import %1: %2</source>
+        <translation>%1 konnte nicht importiert werden: %2</translation>
+    </message>
+    <message>
+        <source>no such file</source>
+        <translation>Datei nicht gefunden</translation>
+    </message>
+    <message>
+        <source>not a readable Standard MIDI File</source>
+        <translation>keine lesbare Standard-MIDI-Datei</translation>
+    </message>
+    <message>
+        <source>it has no notes</source>
+        <translation>sie enthält keine Noten</translation>
+    </message>
+    <message>
+        <source>its notes are all shorter than 1/64 s</source>
+        <translation>alle ihre Noten sind kürzer als 1/64 s</translation>
+    </message>
+</context>
+<context>
+    <name>ModePanel</name>
+    <message>
+        <source>Off</source>
+        <translation>Aus</translation>
+    </message>
+    <message>
+        <source>Passive</source>
+        <translation>Passive</translation>
+    </message>
+    <message>
+        <source>Safe</source>
+        <translation>Safe</translation>
+    </message>
+    <message>
+        <source>Full</source>
+        <translation>Full</translation>
+    </message>
+    <message>
+        <source>cliff</source>
+        <translation>Abgrund</translation>
+    </message>
+    <message>
+        <source>wheel drop</source>
+        <translation>Radabsenkung</translation>
+    </message>
+    <message>
+        <source>charger</source>
+        <translation>Ladegerät</translation>
+    </message>
+    <message>
+        <source>a safety condition</source>
+        <translation>eine Sicherheitsbedingung</translation>
+    </message>
+    <message>
+        <source>, </source>
+        <translation>, </translation>
+    </message>
+    <message>
+        <source>Enter Full mode?</source>
+        <translation>In den Modus Full wechseln?</translation>
+    </message>
+    <message>
+        <source>Full mode turns off the cliff, wheel-drop and charger safety stops. The robot will drive off a table edge if told to. Enter Full mode?</source>
+        <translation>Der Modus Full schaltet die Sicherheitsstopps für Abgrund, Radabsenkung und Ladegerät ab. Der Roboter fährt auf Befehl auch über eine Tischkante. In den Modus Full wechseln?</translation>
+    </message>
+    <message>
+        <source>Start</source>
+        <translation>Start</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>Stopp</translation>
+    </message>
+    <message>
+        <source>Reset</source>
+        <translation>Reset</translation>
+    </message>
+    <message>
+        <source>Power off</source>
+        <translation>Ausschalten</translation>
+    </message>
+    <message>
+        <source>Clean</source>
+        <translation>Reinigen</translation>
+    </message>
+    <message>
+        <source>Spot</source>
+        <translation>Spot</translation>
+    </message>
+    <message>
+        <source>Max</source>
+        <translation>Max</translation>
+    </message>
+    <message>
+        <source>Seek Dock</source>
+        <translation>Dock suchen</translation>
+    </message>
+    <message>
+        <source>Cover</source>
+        <translation>Flächenabdeckung</translation>
+    </message>
+    <message>
+        <source>Cover and Dock</source>
+        <translation>Flächenabdeckung und Andocken</translation>
+    </message>
+    <message>
+        <source>Demo</source>
+        <translation>Demo</translation>
+    </message>
+    <message>
+        <source>Demo to run</source>
+        <translation>Auszuführende Demo</translation>
+    </message>
+    <message>
+        <source>%1 (opcode %2)</source>
+        <translation>%1 (Opcode %2)</translation>
+    </message>
+    <message>
+        <source>%1 is not available on the %2</source>
+        <translation>%1 ist beim %2 nicht verfügbar</translation>
+    </message>
+    <message>
+        <source>Mode: %1</source>
+        <translation>Modus: %1</translation>
+    </message>
+    <message>
+        <source>Mode: unknown</source>
+        <translation>Modus: unbekannt</translation>
+    </message>
+    <message>
+        <source>The robot left Safe mode by itself (%1) and is in Passive mode.</source>
+        <translation>Der Roboter hat den Modus Safe von selbst verlassen (%1) und ist jetzt im Modus Passive.</translation>
+    </message>
+    <message>
+        <source>Firmware: %1</source>
+        <translation>Firmware: %1</translation>
+    </message>
+</context>
+<context>
+    <name>MotorsPanel</name>
+    <message>
+        <source>Motors</source>
+        <translation>Motors</translation>
+    </message>
+    <message>
+        <source>PWM Motors</source>
+        <translation>PWM Motors</translation>
+    </message>
+    <message>
+        <source>Buttons</source>
+        <translation>Buttons</translation>
+    </message>
+    <message>
+        <source>Low Side Drivers</source>
+        <translation>Low Side Drivers</translation>
+    </message>
+    <message>
+        <source>PWM Low Side Drivers</source>
+        <translation>PWM Low Side Drivers</translation>
+    </message>
+    <message>
+        <source>Digital Outputs</source>
+        <translation>Digital Outputs</translation>
+    </message>
+    <message>
+        <source>Send IR</source>
+        <translation>Send IR</translation>
+    </message>
+    <message>
+        <source>Clean</source>
+        <translation>Clean</translation>
+    </message>
+    <message>
+        <source>Spot</source>
+        <translation>Spot</translation>
+    </message>
+    <message>
+        <source>Dock</source>
+        <translation>Dock</translation>
+    </message>
+    <message>
+        <source>Minute</source>
+        <translation>Minute</translation>
+    </message>
+    <message>
+        <source>Hour</source>
+        <translation>Stunde</translation>
+    </message>
+    <message>
+        <source>Day</source>
+        <translation>Tag</translation>
+    </message>
+    <message>
+        <source>Schedule</source>
+        <translation>Zeitplan</translation>
+    </message>
+    <message>
+        <source>Clock</source>
+        <translation>Uhr</translation>
+    </message>
+    <message>
+        <source>Brushes and vacuum — Motors (138)</source>
+        <translation>Bürsten und Sauger — Motors (138)</translation>
+    </message>
+    <message>
+        <source>Main brush</source>
+        <translation>Hauptbürste</translation>
+    </message>
+    <message>
+        <source>Outward</source>
+        <translation>Nach außen</translation>
+    </message>
+    <message>
+        <source>Side brush</source>
+        <translation>Seitenbürste</translation>
+    </message>
+    <message>
+        <source>Clockwise</source>
+        <translation>Im Uhrzeigersinn</translation>
+    </message>
+    <message>
+        <source>Vacuum</source>
+        <translation>Sauger</translation>
+    </message>
+    <message>
+        <source>Duty cycle — PWM Motors (144)</source>
+        <translation>Tastverhältnis — PWM Motors (144)</translation>
+    </message>
+    <message>
+        <source>Brushes -127..127 (negative turns them the other way), vacuum 0..127; 127 is full power.</source>
+        <translation>Bürsten -127..127 (negativ dreht sie andersherum), Sauger 0..127; 127 ist volle Leistung.</translation>
+    </message>
+    <message>
+        <source>Press a button — Buttons (165)</source>
+        <translation>Taste drücken — Buttons (165)</translation>
+    </message>
+    <message>
+        <source>Low side drivers — Low Side Drivers (138)</source>
+        <translation>Low-Side-Treiber — Low Side Drivers (138)</translation>
+    </message>
+    <message>
+        <source>Duty cycle — PWM Low Side Drivers (144)</source>
+        <translation>Tastverhältnis — PWM Low Side Drivers (144)</translation>
+    </message>
+    <message>
+        <source>LD%1</source>
+        <translation>LD%1</translation>
+    </message>
+    <message>
+        <source>0..128; 128 is 100%.</source>
+        <translation>0..128; 128 entspricht 100 %.</translation>
+    </message>
+    <message>
+        <source>Cargo bay — Digital Outputs (147)</source>
+        <translation>Laderaum — Digital Outputs (147)</translation>
+    </message>
+    <message>
+        <source>Output %1</source>
+        <translation>Ausgang %1</translation>
+    </message>
+    <message>
+        <source>IR output — Send IR (151)</source>
+        <translation>IR-Ausgang — Send IR (151)</translation>
+    </message>
+    <message>
+        <source>Byte</source>
+        <translation>Byte</translation>
+    </message>
+    <message>
+        <source>All off</source>
+        <translation>Alles aus</translation>
+    </message>
+    <message>
+        <source>Not on the %1, so not shown: %2.</source>
+        <translation>Beim %1 nicht vorhanden, daher ausgeblendet: %2.</translation>
+    </message>
+    <message>
+        <source>Last sent: —</source>
+        <translation>Zuletzt gesendet: —</translation>
+    </message>
+    <message>
+        <source>Last sent: %1</source>
+        <translation>Zuletzt gesendet: %1</translation>
+    </message>
+</context>
+<context>
+    <name>OdometryMap</name>
+    <message>
+        <source>Zoom in</source>
+        <translation>Vergrößern</translation>
+    </message>
+    <message>
+        <source>Zoom out</source>
+        <translation>Verkleinern</translation>
+    </message>
+    <message>
+        <source>Centre</source>
+        <translation>Zentrieren</translation>
+    </message>
+    <message>
+        <source>Centre the map on the robot</source>
+        <translation>Karte auf den Roboter zentrieren</translation>
+    </message>
+    <message>
+        <source>Reset</source>
+        <translation>Zurücksetzen</translation>
+    </message>
+    <message>
+        <source>Clear the trail and start the odometry again at the origin</source>
+        <translation>Spur löschen und die Odometrie im Ursprung neu beginnen</translation>
+    </message>
+    <message>
+        <source>Wheel base</source>
+        <translation>Radabstand</translation>
+    </message>
+    <message>
+        <source>Wheel Ø</source>
+        <translation>Rad-Ø</translation>
+    </message>
+    <message>
+        <source>Odometry map</source>
+        <translation>Odometriekarte</translation>
+    </message>
+    <message>
+        <source>The %1 has no wheel encoders; it reports distance and angle itself</source>
+        <translation>Der %1 hat keine Radencoder; er meldet Strecke und Winkel selbst</translation>
+    </message>
+    <message>
+        <source>Distance between the wheels&apos; contact points</source>
+        <translation>Abstand zwischen den Aufstandspunkten der Räder</translation>
+    </message>
+    <message>
+        <source>Wheel diameter; 508.8 encoder counts are one turn</source>
+        <translation>Raddurchmesser; 508,8 Encoderschritte sind eine Umdrehung</translation>
+    </message>
+    <message>
+        <source>x %1 mm   y %2 mm   θ %3°</source>
+        <translation>x %1 mm   y %2 mm   θ %3°</translation>
+    </message>
+    <message>
+        <source>   drift %1 mm</source>
+        <translation>   Drift %1 mm</translation>
+    </message>
+    <message>
+        <source>Robot at x %1 mm, y %2 mm, heading %3 degrees</source>
+        <translation>Roboter bei x %1 mm, y %2 mm, Ausrichtung %3 Grad</translation>
+    </message>
+    <message>
+        <source>; %1 mm from the true pose</source>
+        <translation>; %1 mm von der wahren Pose entfernt</translation>
+    </message>
+    <message>
+        <source>odometry</source>
+        <translation>Odometrie</translation>
+    </message>
+    <message>
+        <source>true pose</source>
+        <translation>wahre Pose</translation>
+    </message>
+    <message>
+        <source>dock</source>
+        <translation>Ladestation</translation>
+    </message>
+    <message>
+        <source>%1 m</source>
+        <translation>%1 m</translation>
+    </message>
+    <message>
+        <source>%1 mm</source>
+        <translation>%1 mm</translation>
+    </message>
+</context>
+<context>
+    <name>PacketName</name>
+    <message>
+        <source>Angle</source>
+        <translation>Winkel</translation>
+    </message>
+    <message>
+        <source>Battery Capacity</source>
+        <translation>Akkukapazität</translation>
+    </message>
+    <message>
+        <source>Battery Charge</source>
+        <translation>Akkuladung</translation>
+    </message>
+    <message>
+        <source>Bumps and Wheel Drops</source>
+        <translation>Stöße und Radabsenkungen</translation>
+    </message>
+    <message>
+        <source>Buttons</source>
+        <translation>Tasten</translation>
+    </message>
+    <message>
+        <source>Cargo Bay Analog Signal</source>
+        <translation>Laderaum-Analogsignal</translation>
+    </message>
+    <message>
+        <source>Cargo Bay Digital Inputs</source>
+        <translation>Laderaum-Digitaleingänge</translation>
+    </message>
+    <message>
+        <source>Charging Sources Available</source>
+        <translation>Verfügbare Ladequellen</translation>
+    </message>
+    <message>
+        <source>Charging State</source>
+        <translation>Ladezustand</translation>
+    </message>
+    <message>
+        <source>Cliff Front Left</source>
+        <translation>Abgrund vorne links</translation>
+    </message>
+    <message>
+        <source>Cliff Front Left Signal</source>
+        <translation>Abgrundsignal vorne links</translation>
+    </message>
+    <message>
+        <source>Cliff Front Right</source>
+        <translation>Abgrund vorne rechts</translation>
+    </message>
+    <message>
+        <source>Cliff Front Right Signal</source>
+        <translation>Abgrundsignal vorne rechts</translation>
+    </message>
+    <message>
+        <source>Cliff Left</source>
+        <translation>Abgrund links</translation>
+    </message>
+    <message>
+        <source>Cliff Left Signal</source>
+        <translation>Abgrundsignal links</translation>
+    </message>
+    <message>
+        <source>Cliff Right</source>
+        <translation>Abgrund rechts</translation>
+    </message>
+    <message>
+        <source>Cliff Right Signal</source>
+        <translation>Abgrundsignal rechts</translation>
+    </message>
+    <message>
+        <source>Current</source>
+        <translation>Strom</translation>
+    </message>
+    <message>
+        <source>Dirt Detect</source>
+        <translation>Schmutzerkennung</translation>
+    </message>
+    <message>
+        <source>Distance</source>
+        <translation>Strecke</translation>
+    </message>
+    <message>
+        <source>Infrared Character Left</source>
+        <translation>Infrarotzeichen links</translation>
+    </message>
+    <message>
+        <source>Infrared Character Right</source>
+        <translation>Infrarotzeichen rechts</translation>
+    </message>
+    <message>
+        <source>Left Encoder Counts</source>
+        <translation>Encoderzähler links</translation>
+    </message>
+    <message>
+        <source>Left Motor Current</source>
+        <translation>Motorstrom links</translation>
+    </message>
+    <message>
+        <source>Light Bump Center Left Signal</source>
+        <translation>Lichtstoßfängersignal Mitte links</translation>
+    </message>
+    <message>
+        <source>Light Bump Center Right Signal</source>
+        <translation>Lichtstoßfängersignal Mitte rechts</translation>
+    </message>
+    <message>
+        <source>Light Bump Front Left Signal</source>
+        <translation>Lichtstoßfängersignal vorne links</translation>
+    </message>
+    <message>
+        <source>Light Bump Front Right Signal</source>
+        <translation>Lichtstoßfängersignal vorne rechts</translation>
+    </message>
+    <message>
+        <source>Light Bump Left Signal</source>
+        <translation>Lichtstoßfängersignal links</translation>
+    </message>
+    <message>
+        <source>Light Bump Right Signal</source>
+        <translation>Lichtstoßfängersignal rechts</translation>
+    </message>
+    <message>
+        <source>Light Bumper</source>
+        <translation>Lichtstoßfänger</translation>
+    </message>
+    <message>
+        <source>Main Brush Motor Current</source>
+        <translation>Hauptbürsten-Motorstrom</translation>
+    </message>
+    <message>
+        <source>Number of Stream Packets</source>
+        <translation>Anzahl Datenstrompakete</translation>
+    </message>
+    <message>
+        <source>OI Mode</source>
+        <translation>OI-Modus</translation>
+    </message>
+    <message>
+        <source>Overcurrents</source>
+        <translation>Überströme</translation>
+    </message>
+    <message>
+        <source>Requested Left Velocity</source>
+        <translation>Angeforderte Geschwindigkeit links</translation>
+    </message>
+    <message>
+        <source>Requested Radius</source>
+        <translation>Angeforderter Radius</translation>
+    </message>
+    <message>
+        <source>Requested Right Velocity</source>
+        <translation>Angeforderte Geschwindigkeit rechts</translation>
+    </message>
+    <message>
+        <source>Requested Velocity</source>
+        <translation>Angeforderte Geschwindigkeit</translation>
+    </message>
+    <message>
+        <source>Right Encoder Counts</source>
+        <translation>Encoderzähler rechts</translation>
+    </message>
+    <message>
+        <source>Right Motor Current</source>
+        <translation>Motorstrom rechts</translation>
+    </message>
+    <message>
+        <source>Side Brush Motor Current</source>
+        <translation>Seitenbürsten-Motorstrom</translation>
+    </message>
+    <message>
+        <source>Song Number</source>
+        <translation>Liednummer</translation>
+    </message>
+    <message>
+        <source>Song Playing</source>
+        <translation>Lied wird gespielt</translation>
+    </message>
+    <message>
+        <source>Stasis</source>
+        <translation>Stasis</translation>
+    </message>
+    <message>
+        <source>Temperature</source>
+        <translation>Temperatur</translation>
+    </message>
+    <message>
+        <source>Unused</source>
+        <translation>Unbenutzt</translation>
+    </message>
+    <message>
+        <source>Virtual Wall</source>
+        <translation>Virtuelle Wand</translation>
+    </message>
+    <message>
+        <source>Voltage</source>
+        <translation>Spannung</translation>
+    </message>
+    <message>
+        <source>Wall</source>
+        <translation>Wand</translation>
+    </message>
+    <message>
+        <source>Wall Signal</source>
+        <translation>Wandsignal</translation>
+    </message>
+</context>
+<context>
+    <name>PianoRoll</name>
+    <message>
+        <source>rest</source>
+        <translation>Pause</translation>
+    </message>
+    <message>
+        <source>Click to add a note, drag a note to move it, drag its right edge to lengthen it</source>
+        <translation>Klicken fügt eine Note hinzu, Ziehen verschiebt eine Note, Ziehen am rechten Rand verlängert sie</translation>
+    </message>
+    <message>
+        <source>Piano roll</source>
+        <translation>Pianorolle</translation>
+    </message>
+    <message>
+        <source>1 note, %1 s.</source>
+        <translation>1 Note, %1 s.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n notes, %1 s.</source>
+        <translation>
+            <numerusform>%n Note, %1 s.</numerusform>
+            <numerusform>%n Noten, %1 s.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Selected: note %1, %2, %3/64 s.</source>
+        <translation>Ausgewählt: Note %1, %2, %3/64 s.</translation>
+    </message>
+    <message>
+        <source>Left and Right select a note, Up and Down change its pitch, Shift+Left and Shift+Right its length, Insert adds a note, Delete removes one.</source>
+        <translation>Links und Rechts wählen eine Note, Auf und Ab ändern ihre Tonhöhe, Umschalt+Links und Umschalt+Rechts ihre Länge, Einfg fügt eine Note ein, Entf entfernt eine.</translation>
+    </message>
+    <message>
+        <source>A song holds at most %1 notes; remove one first</source>
+        <translation>Ein Lied fasst höchstens %1 Noten; entfernen Sie zuerst eine</translation>
+    </message>
+</context>
+<context>
+    <name>ReplayBar</name>
+    <message>
+        <source>One frame back</source>
+        <translation>Ein Frame zurück</translation>
+    </message>
+    <message>
+        <source>One frame forward</source>
+        <translation>Ein Frame vor</translation>
+    </message>
+    <message>
+        <source>Replay speed</source>
+        <translation>Wiedergabegeschwindigkeit</translation>
+    </message>
+    <message>
+        <source>Position in the recording</source>
+        <translation>Position in der Aufzeichnung</translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation>Pause</translation>
+    </message>
+    <message>
+        <source>Play</source>
+        <translation>Abspielen</translation>
+    </message>
+    <message>
+        <source>%1 / %2, frame %3 of %4</source>
+        <translation>%1 / %2, Frame %3 von %4</translation>
+    </message>
+    <message>
+        <source>Damaged: replays up to %1</source>
+        <translation>Beschädigt: Wiedergabe bis %1</translation>
+    </message>
+</context>
+<context>
+    <name>RobotDiagram</name>
+    <message>
+        <source>Robot sensor diagram</source>
+        <translation>Sensordiagramm des Roboters</translation>
+    </message>
+    <message>
+        <source>Data is stale</source>
+        <translation>Daten sind veraltet</translation>
+    </message>
+    <message>
+        <source>Bump left</source>
+        <translation>Stoß links</translation>
+    </message>
+    <message>
+        <source>Bump right</source>
+        <translation>Stoß rechts</translation>
+    </message>
+    <message>
+        <source>Wheel drop left</source>
+        <translation>Radabsenkung links</translation>
+    </message>
+    <message>
+        <source>Wheel drop right</source>
+        <translation>Radabsenkung rechts</translation>
+    </message>
+    <message>
+        <source>Caster wheel drop</source>
+        <translation>Radabsenkung Stützrad</translation>
+    </message>
+    <message>
+        <source>Cliff left</source>
+        <translation>Abgrund links</translation>
+    </message>
+    <message>
+        <source>Cliff front left</source>
+        <translation>Abgrund vorne links</translation>
+    </message>
+    <message>
+        <source>Cliff front right</source>
+        <translation>Abgrund vorne rechts</translation>
+    </message>
+    <message>
+        <source>Cliff right</source>
+        <translation>Abgrund rechts</translation>
+    </message>
+    <message>
+        <source>Wall</source>
+        <translation>Wand</translation>
+    </message>
+    <message>
+        <source>Light bumper %1</source>
+        <translation>Lichtstoßfänger %1</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>No sensor data</source>
+        <translation>Keine Sensordaten</translation>
+    </message>
+    <message>
+        <source>Nothing detected</source>
+        <translation>Nichts erkannt</translation>
+    </message>
+    <message>
+        <source>; </source>
+        <translation>; </translation>
+    </message>
+    <message>
+        <source>Buttons</source>
+        <translation>Tasten</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>keine</translation>
+    </message>
+    <message>
+        <source>Virtual wall</source>
+        <translation>Virtuelle Wand</translation>
+    </message>
+    <message>
+        <source>seen</source>
+        <translation>erkannt</translation>
+    </message>
+    <message>
+        <source>Overcurrent</source>
+        <translation>Überstrom</translation>
+    </message>
+    <message>
+        <source>IR</source>
+        <translation>IR</translation>
+    </message>
+    <message>
+        <source>Stasis</source>
+        <translation>Stasis</translation>
+    </message>
+    <message>
+        <source>not moving</source>
+        <translation>steht</translation>
+    </message>
+    <message>
+        <source>moving</source>
+        <translation>fährt</translation>
+    </message>
+    <message>
+        <source>DIRTY WHEEL</source>
+        <translation>RAD VERSCHMUTZT</translation>
+    </message>
+    <message>
+        <source>reserved (3)</source>
+        <translation>reserviert (3)</translation>
+    </message>
+    <message>
+        <source>IR omni</source>
+        <translation>IR rundum</translation>
+    </message>
+    <message>
+        <source>IR left</source>
+        <translation>IR links</translation>
+    </message>
+    <message>
+        <source>IR right</source>
+        <translation>IR rechts</translation>
+    </message>
+    <message>
+        <source>CARGO BAY</source>
+        <translation>LADERAUM</translation>
+    </message>
+    <message>
+        <source>DROP</source>
+        <translation>UNTEN</translation>
+    </message>
+    <message>
+        <source>WALL</source>
+        <translation>WAND</translation>
+    </message>
+    <message>
+        <source>STALE</source>
+        <translation>VERALTET</translation>
+    </message>
+</context>
+<context>
+    <name>RtttlImport</name>
+    <message>
+        <source>RTTTL: %1</source>
+        <translation>RTTTL: %1</translation>
+    </message>
+    <message>
+        <source>expected NAME:DEFAULTS:NOTES, e.g. &quot;Beep:d=4,o=5,b=120:c,e,g&quot;</source>
+        <translation>erwartet NAME:VORGABEN:NOTEN, z. B. „Beep:d=4,o=5,b=120:c,e,g“</translation>
+    </message>
+    <message>
+        <source>default &quot;%1&quot; is not KEY=NUMBER</source>
+        <translation>Vorgabe „%1“ hat nicht die Form SCHLÜSSEL=ZAHL</translation>
+    </message>
+    <message>
+        <source>default &quot;%1&quot; is not valid (d: 1..32, o: 4..7, b: 1..900)</source>
+        <translation>Vorgabe „%1“ ist ungültig (d: 1..32, o: 4..7, b: 1..900)</translation>
+    </message>
+    <message>
+        <source>the tune has no notes</source>
+        <translation>die Melodie enthält keine Noten</translation>
+    </message>
+    <message>
+        <source>note %1 &quot;%2&quot;: %3</source>
+        <translation>Note %1 „%2“: %3</translation>
+    </message>
+    <message>
+        <source>duration must be 1, 2, 4, 8, 16 or 32</source>
+        <translation>Dauer muss 1, 2, 4, 8, 16 oder 32 sein</translation>
+    </message>
+    <message>
+        <source>no note letter</source>
+        <translation>kein Notenbuchstabe</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a note (a..g, h) or pause (p)</source>
+        <translation>„%1“ ist weder Note (a..g, h) noch Pause (p)</translation>
+    </message>
+    <message>
+        <source>octave must be 4..7</source>
+        <translation>Oktave muss 4..7 sein</translation>
+    </message>
+    <message>
+        <source>unexpected &quot;%1&quot;</source>
+        <translation>unerwartetes „%1“</translation>
+    </message>
+    <message>
+        <source>lasts %1/64 s at %2 beats per minute; a note lasts 1..255</source>
+        <translation>dauert %1/64 s bei %2 Schlägen pro Minute; eine Note dauert 1..255</translation>
+    </message>
+</context>
+<context>
+    <name>RxFrameScanner</name>
+    <message>
+        <source>text &quot;%1&quot;</source>
+        <translation>Text „%1“</translation>
+    </message>
+    <message>
+        <source>outside any stream frame</source>
+        <translation>außerhalb eines Datenstrom-Frames</translation>
+    </message>
+    <message>
+        <source>stream frame: %1</source>
+        <translation>Datenstrom-Frame: %1</translation>
+    </message>
+    <message>
+        <source>reply: %1</source>
+        <translation>Antwort: %1</translation>
+    </message>
+</context>
+<context>
+    <name>ScheduleEditor</name>
+    <message>
+        <source>Sunday</source>
+        <translation>Sonntag</translation>
+    </message>
+    <message>
+        <source>Monday</source>
+        <translation>Montag</translation>
+    </message>
+    <message>
+        <source>Tuesday</source>
+        <translation>Dienstag</translation>
+    </message>
+    <message>
+        <source>Wednesday</source>
+        <translation>Mittwoch</translation>
+    </message>
+    <message>
+        <source>Thursday</source>
+        <translation>Donnerstag</translation>
+    </message>
+    <message>
+        <source>Friday</source>
+        <translation>Freitag</translation>
+    </message>
+    <message>
+        <source>Saturday</source>
+        <translation>Samstag</translation>
+    </message>
+    <message>
+        <source>Weekly cleaning schedule (167)</source>
+        <translation>Wöchentlicher Reinigungsplan (167)</translation>
+    </message>
+    <message>
+        <source>Cleaning time on %1</source>
+        <translation>Reinigungszeit am %1</translation>
+    </message>
+    <message>
+        <source>Send Schedule</source>
+        <translation>Zeitplan senden</translation>
+    </message>
+    <message>
+        <source>Disable all</source>
+        <translation>Alle deaktivieren</translation>
+    </message>
+    <message>
+        <source>Clear every day and send a schedule with no cleaning</source>
+        <translation>Alle Tage leeren und einen Zeitplan ohne Reinigung senden</translation>
+    </message>
+    <message>
+        <source>Nothing sent yet. The robot cannot report its schedule, so this shows what was last sent from here.</source>
+        <translation>Noch nichts gesendet. Der Roboter kann seinen Zeitplan nicht melden; hier steht daher, was zuletzt von hier gesendet wurde.</translation>
+    </message>
+    <message>
+        <source>Last sent: %1 at %2</source>
+        <translation>Zuletzt gesendet: %1 um %2</translation>
+    </message>
+    <message>
+        <source>Presets</source>
+        <translation>Vorlagen</translation>
+    </message>
+    <message>
+        <source>Saved presets</source>
+        <translation>Gespeicherte Vorlagen</translation>
+    </message>
+    <message>
+        <source>Load</source>
+        <translation>Laden</translation>
+    </message>
+    <message>
+        <source>Delete</source>
+        <translation>Löschen</translation>
+    </message>
+    <message>
+        <source>Preset name</source>
+        <translation>Vorlagenname</translation>
+    </message>
+    <message>
+        <source>Save</source>
+        <translation>Speichern</translation>
+    </message>
+    <message>
+        <source>Save the grid under this name</source>
+        <translation>Raster unter diesem Namen speichern</translation>
+    </message>
+    <message>
+        <source>Robot clock (168)</source>
+        <translation>Roboteruhr (168)</translation>
+    </message>
+    <message>
+        <source>Set from this computer&apos;s clock</source>
+        <translation>Von der Uhr dieses Computers übernehmen</translation>
+    </message>
+    <message>
+        <source>Day for the robot clock</source>
+        <translation>Tag für die Roboteruhr</translation>
+    </message>
+    <message>
+        <source>Time for the robot clock</source>
+        <translation>Uhrzeit für die Roboteruhr</translation>
+    </message>
+    <message>
+        <source>Set Day/Time</source>
+        <translation>Tag/Uhrzeit setzen</translation>
+    </message>
+    <message>
+        <source>The %1 has no cleaning schedule or clock: Schedule (167) and Set Day/Time (168) are Roomba 500 / Create 2 only.</source>
+        <translation>Der %1 hat keinen Reinigungsplan und keine Uhr: Schedule (167) und Set Day/Time (168) gibt es nur bei Roomba 500 / Create 2.</translation>
+    </message>
+    <message>
+        <source>Will send: %1</source>
+        <translation>Wird gesendet: %1</translation>
+    </message>
+    <message>
+        <source>Not sent: %1</source>
+        <translation>Nicht gesendet: %1</translation>
+    </message>
+    <message>
+        <source>Sent: no scheduled cleaning.</source>
+        <translation>Gesendet: keine geplante Reinigung.</translation>
+    </message>
+    <message>
+        <source>Schedule sent.</source>
+        <translation>Zeitplan gesendet.</translation>
+    </message>
+    <message>
+        <source>Robot clock set to %1 %2.</source>
+        <translation>Roboteruhr auf %1 %2 gestellt.</translation>
+    </message>
+    <message>
+        <source>Not saved: give the preset a name.</source>
+        <translation>Nicht gespeichert: Geben Sie der Vorlage einen Namen.</translation>
+    </message>
+    <message>
+        <source>Preset &quot;%1&quot; replaced.</source>
+        <translation>Vorlage „%1“ ersetzt.</translation>
+    </message>
+    <message>
+        <source>Preset &quot;%1&quot; saved.</source>
+        <translation>Vorlage „%1“ gespeichert.</translation>
+    </message>
+    <message>
+        <source>No preset named &quot;%1&quot;.</source>
+        <translation>Keine Vorlage namens „%1“.</translation>
+    </message>
+    <message>
+        <source>Preset &quot;%1&quot; is damaged: %2</source>
+        <translation>Vorlage „%1“ ist beschädigt: %2</translation>
+    </message>
+    <message>
+        <source>Preset &quot;%1&quot; loaded; press Send Schedule to send it.</source>
+        <translation>Vorlage „%1“ geladen; zum Senden auf „Zeitplan senden“ klicken.</translation>
+    </message>
+    <message>
+        <source>Preset &quot;%1&quot; deleted.</source>
+        <translation>Vorlage „%1“ gelöscht.</translation>
+    </message>
+</context>
+<context>
+    <name>ScriptEditor</name>
+    <message>
+        <source>Drive 40 cm and stop</source>
+        <translation>40 cm fahren und anhalten</translation>
+    </message>
+    <message>
+        <source>Toggle LED on bump</source>
+        <translation>LED bei Stoß umschalten</translation>
+    </message>
+    <message>
+        <source>Drive in a square</source>
+        <translation>Im Quadrat fahren</translation>
+    </message>
+    <message>
+        <source>Load an example…</source>
+        <translation>Beispiel laden…</translation>
+    </message>
+    <message>
+        <source>Example scripts</source>
+        <translation>Beispielskripte</translation>
+    </message>
+    <message>
+        <source>One command a line, e.g.
+%1</source>
+        <translation>Ein Befehl pro Zeile, z. B.
+%1</translation>
+    </message>
+    <message>
+        <source>Script</source>
+        <translation>Skript</translation>
+    </message>
+    <message>
+        <source>Upload (152)</source>
+        <translation>Hochladen (152)</translation>
+    </message>
+    <message>
+        <source>Play (153)</source>
+        <translation>Abspielen (153)</translation>
+    </message>
+    <message>
+        <source>Run the stored script</source>
+        <translation>Gespeichertes Skript ausführen</translation>
+    </message>
+    <message>
+        <source>Show Script (154)</source>
+        <translation>Skript anzeigen (154)</translation>
+    </message>
+    <message>
+        <source>Read the stored script back and compare it with what was uploaded</source>
+        <translation>Gespeichertes Skript zurücklesen und mit dem Hochgeladenen vergleichen</translation>
+    </message>
+    <message>
+        <source>Demos (136)</source>
+        <translation>Demos (136)</translation>
+    </message>
+    <message>
+        <source>%1  %2</source>
+        <translation>%1  %2</translation>
+    </message>
+    <message>
+        <source>Scripts and demos are for the original Create only: %1.</source>
+        <translation>Skripte und Demos gibt es nur beim ursprünglichen Create: %1.</translation>
+    </message>
+    <message>
+        <source>? / %1 bytes</source>
+        <translation>? / %1 Bytes</translation>
+    </message>
+    <message>
+        <source>0 / %1 bytes</source>
+        <translation>0 / %1 Bytes</translation>
+    </message>
+    <message>
+        <source>Line %1: %2</source>
+        <translation>Zeile %1: %2</translation>
+    </message>
+    <message>
+        <source>%1 / %2 bytes</source>
+        <translation>%1 / %2 Bytes</translation>
+    </message>
+    <message>
+        <source>The script is %1 bytes; the robot stores at most %2. Remove %3 bytes to upload it.</source>
+        <translation>Das Skript hat %1 Bytes; der Roboter speichert höchstens %2. Entfernen Sie %3 Bytes, um es hochzuladen.</translation>
+    </message>
+    <message>
+        <source>%1. %2</source>
+        <translation>%1. %2</translation>
+    </message>
+    <message>
+        <source>Store the script on the robot (152)</source>
+        <translation>Skript auf dem Roboter speichern (152)</translation>
+    </message>
+    <message>
+        <source>Fix the script before uploading it</source>
+        <translation>Skript vor dem Hochladen korrigieren</translation>
+    </message>
+    <message>
+        <source>Pausing the stream, then asking for the robot&apos;s script…</source>
+        <translation>Datenstrom wird angehalten, dann wird das Skript des Roboters abgefragt…</translation>
+    </message>
+    <message>
+        <source>Waiting for the robot&apos;s script…</source>
+        <translation>Warte auf das Skript des Roboters…</translation>
+    </message>
+    <message>
+        <source>(empty)</source>
+        <translation>(leer)</translation>
+    </message>
+    <message>
+        <source>%1 (not readable: %2)</source>
+        <translation>%1 (nicht lesbar: %2)</translation>
+    </message>
+    <message>
+        <source>The robot&apos;s script matches what was sent: %1</source>
+        <translation>Das Skript des Roboters stimmt mit dem Gesendeten überein: %1</translation>
+    </message>
+    <message>
+        <source>The robot&apos;s script differs from what was sent.
+On the robot: %1
+Sent: %2</source>
+        <translation>Das Skript des Roboters weicht vom Gesendeten ab.
+Auf dem Roboter: %1
+Gesendet: %2</translation>
+    </message>
+    <message>
+        <source>nothing uploaded yet</source>
+        <translation>noch nichts hochgeladen</translation>
+    </message>
+    <message>
+        <source>No reply to Show Script within %1 s. Is the robot connected and awake?</source>
+        <translation>Keine Antwort auf Show Script innerhalb von %1 s. Ist der Roboter verbunden und wach?</translation>
+    </message>
+</context>
+<context>
+    <name>SensorGauges</name>
+    <message>
+        <source>STALE — no fresh data from the robot</source>
+        <translation>VERALTET — keine neuen Daten vom Roboter</translation>
+    </message>
+    <message>
+        <source>Battery</source>
+        <translation>Akku</translation>
+    </message>
+    <message>
+        <source>Drive</source>
+        <translation>Antrieb</translation>
+    </message>
+    <message>
+        <source>Motors and dirt</source>
+        <translation>Motoren und Schmutz</translation>
+    </message>
+    <message>
+        <source>Cargo bay</source>
+        <translation>Laderaum</translation>
+    </message>
+    <message>
+        <source>Charge</source>
+        <translation>Ladung</translation>
+    </message>
+    <message>
+        <source>Current</source>
+        <translation>Strom</translation>
+    </message>
+    <message>
+        <source>Temperature</source>
+        <translation>Temperatur</translation>
+    </message>
+    <message>
+        <source>Charging</source>
+        <translation>Laden</translation>
+    </message>
+    <message>
+        <source>Charging sources</source>
+        <translation>Ladequellen</translation>
+    </message>
+    <message>
+        <source>Requested velocity</source>
+        <translation>Angeforderte Geschwindigkeit</translation>
+    </message>
+    <message>
+        <source>Requested radius</source>
+        <translation>Angeforderter Radius</translation>
+    </message>
+    <message>
+        <source>Left wheel motor</source>
+        <translation>Linker Radmotor</translation>
+    </message>
+    <message>
+        <source>Right wheel motor</source>
+        <translation>Rechter Radmotor</translation>
+    </message>
+    <message>
+        <source>Main brush motor</source>
+        <translation>Hauptbürstenmotor</translation>
+    </message>
+    <message>
+        <source>Side brush motor</source>
+        <translation>Seitenbürstenmotor</translation>
+    </message>
+    <message>
+        <source>Dirt detect</source>
+        <translation>Schmutzerkennung</translation>
+    </message>
+    <message>
+        <source>Analog input</source>
+        <translation>Analogeingang</translation>
+    </message>
+    <message>
+        <source>Baud rate change</source>
+        <translation>Baudratenwechsel</translation>
+    </message>
+    <message>
+        <source>Digital input %1</source>
+        <translation>Digitaleingang %1</translation>
+    </message>
+    <message>
+        <source>%1 of %2 mAh</source>
+        <translation>%1 von %2 mAh</translation>
+    </message>
+    <message>
+        <source>discharging</source>
+        <translation>entlädt</translation>
+    </message>
+    <message>
+        <source>charging</source>
+        <translation>lädt</translation>
+    </message>
+    <message>
+        <source>no current</source>
+        <translation>kein Strom</translation>
+    </message>
+    <message>
+        <source>Not charging</source>
+        <translation>Lädt nicht</translation>
+    </message>
+    <message>
+        <source>Reconditioning</source>
+        <translation>Rekonditionierung</translation>
+    </message>
+    <message>
+        <source>Full charging</source>
+        <translation>Vollladung</translation>
+    </message>
+    <message>
+        <source>Trickle charging</source>
+        <translation>Erhaltungsladung</translation>
+    </message>
+    <message>
+        <source>Waiting</source>
+        <translation>Wartet</translation>
+    </message>
+    <message>
+        <source>Charging fault</source>
+        <translation>Ladefehler</translation>
+    </message>
+    <message>
+        <source>Unknown (%1)</source>
+        <translation>Unbekannt (%1)</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>keine</translation>
+    </message>
+    <message>
+        <source> + </source>
+        <translation> + </translation>
+    </message>
+    <message>
+        <source>forward</source>
+        <translation>vorwärts</translation>
+    </message>
+    <message>
+        <source>backward</source>
+        <translation>rückwärts</translation>
+    </message>
+    <message>
+        <source>stopped</source>
+        <translation>angehalten</translation>
+    </message>
+    <message>
+        <source>straight</source>
+        <translation>geradeaus</translation>
+    </message>
+    <message>
+        <source>radius %1</source>
+        <translation>Radius %1</translation>
+    </message>
+    <message>
+        <source>turn in place cw</source>
+        <translation>auf der Stelle im UZS</translation>
+    </message>
+    <message>
+        <source>radius -1</source>
+        <translation>Radius -1</translation>
+    </message>
+    <message>
+        <source>turn in place ccw</source>
+        <translation>auf der Stelle gegen UZS</translation>
+    </message>
+    <message>
+        <source>radius 1</source>
+        <translation>Radius 1</translation>
+    </message>
+    <message>
+        <source>turning left</source>
+        <translation>Linkskurve</translation>
+    </message>
+    <message>
+        <source>turning right</source>
+        <translation>Rechtskurve</translation>
+    </message>
+    <message>
+        <source>%1 V on pin 4</source>
+        <translation>%1 V an Pin 4</translation>
+    </message>
+    <message>
+        <source>high</source>
+        <translation>High</translation>
+    </message>
+    <message>
+        <source>low</source>
+        <translation>Low</translation>
+    </message>
+    <message>
+        <source>pin %1</source>
+        <translation>Pin %1</translation>
+    </message>
+    <message>
+        <source>asserted (low)</source>
+        <translation>aktiv (Low)</translation>
+    </message>
+    <message>
+        <source>idle (high)</source>
+        <translation>inaktiv (High)</translation>
+    </message>
+</context>
+<context>
+    <name>SensorHistory</name>
+    <message>
+        <source>No channels to export.</source>
+        <translation>Keine Kanäle zum Exportieren.</translation>
+    </message>
+    <message>
+        <source>The time range to export is not a number.</source>
+        <translation>Der zu exportierende Zeitbereich ist keine Zahl.</translation>
+    </message>
+    <message>
+        <source>Packet %1 is not a sensor packet of the %2.</source>
+        <translation>Paket %1 ist kein Sensorpaket des %2.</translation>
+    </message>
+    <message>
+        <source>Cannot write %1: %2</source>
+        <translation>%1 kann nicht geschrieben werden: %2</translation>
+    </message>
+    <message>
+        <source>Cannot save %1: %2</source>
+        <translation>%1 kann nicht gespeichert werden: %2</translation>
+    </message>
+</context>
+<context>
+    <name>SensorPlots</name>
+    <message>
+        <source>%1 min</source>
+        <translation>%1 min</translation>
+    </message>
+    <message>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <source>Pause or resume following the newest sample (Space)</source>
+        <translation>Mitlaufen mit dem neuesten Messwert anhalten oder fortsetzen (Leertaste)</translation>
+    </message>
+    <message>
+        <source>How much time the plots show</source>
+        <translation>Zeitspanne, die die Diagramme zeigen</translation>
+    </message>
+    <message>
+        <source>&amp;Window</source>
+        <translation>&amp;Zeitfenster</translation>
+    </message>
+    <message>
+        <source>Add plot</source>
+        <translation>Diagramm hinzufügen</translation>
+    </message>
+    <message>
+        <source>Add another plot below the others</source>
+        <translation>Weiteres Diagramm unter den anderen hinzufügen</translation>
+    </message>
+    <message>
+        <source>Export CSV</source>
+        <translation>CSV exportieren</translation>
+    </message>
+    <message>
+        <source>Write the plotted channels to a CSV file</source>
+        <translation>Dargestellte Kanäle in eine CSV-Datei schreiben</translation>
+    </message>
+    <message>
+        <source>Visible range…</source>
+        <translation>Sichtbarer Bereich…</translation>
+    </message>
+    <message>
+        <source>Whole history…</source>
+        <translation>Gesamter Verlauf…</translation>
+    </message>
+    <message>
+        <source>Remove this plot</source>
+        <translation>Dieses Diagramm entfernen</translation>
+    </message>
+    <message>
+        <source>Sensor plot</source>
+        <translation>Sensordiagramm</translation>
+    </message>
+    <message>
+        <source>Choose the channels to plot with the button above</source>
+        <translation>Wählen Sie die Kanäle mit der Schaltfläche oben</translation>
+    </message>
+    <message>
+        <source>No samples in this time range</source>
+        <translation>Keine Messwerte in diesem Zeitbereich</translation>
+    </message>
+    <message>
+        <source>Waiting for samples</source>
+        <translation>Warte auf Messwerte</translation>
+    </message>
+    <message>
+        <source>No channels chosen</source>
+        <translation>Keine Kanäle gewählt</translation>
+    </message>
+    <message>
+        <source>Channels: %1</source>
+        <translation>Kanäle: %1</translation>
+    </message>
+    <message>
+        <source>, </source>
+        <translation>, </translation>
+    </message>
+    <message>
+        <source>%1. %2</source>
+        <translation>%1. %2</translation>
+    </message>
+    <message>
+        <source>Time (s)</source>
+        <translation>Zeit (s)</translation>
+    </message>
+    <message>
+        <source>Resume</source>
+        <translation>Fortsetzen</translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation>Pause</translation>
+    </message>
+    <message>
+        <source>Paused: drag to pan, wheel to zoom, Space resumes</source>
+        <translation>Angehalten: Ziehen verschiebt, Mausrad zoomt, Leertaste setzt fort</translation>
+    </message>
+    <message>
+        <source>Live</source>
+        <translation>Live</translation>
+    </message>
+    <message>
+        <source>t = %1 s</source>
+        <translation>t = %1 s</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>There is no sensor history to export.</source>
+        <translation>Es gibt keinen Sensorverlauf zum Exportieren.</translation>
+    </message>
+    <message>
+        <source>No channels are plotted.</source>
+        <translation>Es werden keine Kanäle dargestellt.</translation>
+    </message>
+    <message>
+        <source>Export the visible range</source>
+        <translation>Sichtbaren Bereich exportieren</translation>
+    </message>
+    <message>
+        <source>Export the whole history</source>
+        <translation>Gesamten Verlauf exportieren</translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv);;All files (*)</source>
+        <translation>CSV-Dateien (*.csv);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>Export failed</source>
+        <translation>Export fehlgeschlagen</translation>
+    </message>
+</context>
+<context>
+    <name>SevenSegmentDisplay</name>
+    <message>
+        <source>digit %1 dark</source>
+        <translation>Ziffer %1 dunkel</translation>
+    </message>
+    <message>
+        <source>digit %1 segments %2</source>
+        <translation>Ziffer %1 Segmente %2</translation>
+    </message>
+    <message>
+        <source>Lit: %1.</source>
+        <translation>Leuchtet: %1.</translation>
+    </message>
+    <message>
+        <source>Arrow keys choose a segment, Space switches it.</source>
+        <translation>Pfeiltasten wählen ein Segment, die Leertaste schaltet es um.</translation>
+    </message>
+</context>
+<context>
+    <name>SignalBars</name>
+    <message>
+        <source>L</source>
+        <translation>L</translation>
+    </message>
+    <message>
+        <source>FL</source>
+        <translation>VL</translation>
+    </message>
+    <message>
+        <source>FR</source>
+        <translation>VR</translation>
+    </message>
+    <message>
+        <source>R</source>
+        <translation>R</translation>
+    </message>
+    <message>
+        <source>CL</source>
+        <translation>ML</translation>
+    </message>
+    <message>
+        <source>CR</source>
+        <translation>MR</translation>
+    </message>
+    <message>
+        <source>Cliff</source>
+        <translation>Abgrund</translation>
+    </message>
+    <message>
+        <source>Light bump</source>
+        <translation>Lichtstoßfänger</translation>
+    </message>
+    <message>
+        <source>Signal bars</source>
+        <translation>Signalbalken</translation>
+    </message>
+    <message>
+        <source>cliff</source>
+        <comment>under a bar</comment>
+        <translation>Abgrund</translation>
+    </message>
+    <message>
+        <source>Light</source>
+        <translation>Licht</translation>
+    </message>
+    <message>
+        <source>light</source>
+        <comment>under a bar</comment>
+        <translation>Licht</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>, </source>
+        <translation>, </translation>
+    </message>
+    <message>
+        <source>Stale: %1</source>
+        <translation>Veraltet: %1</translation>
+    </message>
+    <message>
+        <source>Cliff and light-bump signals</source>
+        <translation>Abgrund- und Lichtstoßfängersignale</translation>
+    </message>
+    <message>
+        <source>Cliff signals</source>
+        <translation>Abgrundsignale</translation>
+    </message>
+    <message>
+        <source>STALE — %1</source>
+        <translation>VERALTET — %1</translation>
+    </message>
+</context>
+<context>
+    <name>SongComposer</name>
+    <message>
+        <source>Song slot:</source>
+        <translation>Liedplatz:</translation>
+    </message>
+    <message>
+        <source>Song slots</source>
+        <translation>Liedplätze</translation>
+    </message>
+    <message>
+        <source>Add note</source>
+        <translation>Note hinzufügen</translation>
+    </message>
+    <message>
+        <source>Add a note after the selected one</source>
+        <translation>Eine Note nach der ausgewählten einfügen</translation>
+    </message>
+    <message>
+        <source>Remove note</source>
+        <translation>Note entfernen</translation>
+    </message>
+    <message>
+        <source>Remove the selected note</source>
+        <translation>Ausgewählte Note entfernen</translation>
+    </message>
+    <message>
+        <source> st</source>
+        <translation> HT</translation>
+    </message>
+    <message>
+        <source>Semitones to transpose by; negative is down</source>
+        <translation>Halbtöne zum Transponieren; negativ ist abwärts</translation>
+    </message>
+    <message>
+        <source>Semitones</source>
+        <translation>Halbtöne</translation>
+    </message>
+    <message>
+        <source>Transpose</source>
+        <translation>Transponieren</translation>
+    </message>
+    <message>
+        <source>Move every note by the semitones shown</source>
+        <translation>Alle Noten um die angezeigten Halbtöne verschieben</translation>
+    </message>
+    <message>
+        <source>Multiply every duration: 2 plays twice as slow, 0.5 twice as fast</source>
+        <translation>Alle Dauern multiplizieren: 2 spielt halb so schnell, 0,5 doppelt so schnell</translation>
+    </message>
+    <message>
+        <source>Duration factor</source>
+        <translation>Dauerfaktor</translation>
+    </message>
+    <message>
+        <source>Scale durations</source>
+        <translation>Dauern skalieren</translation>
+    </message>
+    <message>
+        <source>Note</source>
+        <translation>Note</translation>
+    </message>
+    <message>
+        <source>1/64 s</source>
+        <translation>1/64 s</translation>
+    </message>
+    <message>
+        <source>ms</source>
+        <translation>ms</translation>
+    </message>
+    <message>
+        <source>Note: a name such as C#5, a MIDI number 31..127 or &quot;rest&quot;. Duration in 1/64 s (0..255) or in milliseconds.</source>
+        <translation>Note: ein Name wie C#5, eine MIDI-Nummer 31..127 oder „Pause“. Dauer in 1/64 s (0..255) oder in Millisekunden.</translation>
+    </message>
+    <message>
+        <source>Notes</source>
+        <translation>Noten</translation>
+    </message>
+    <message>
+        <source>One row a note: the note, its duration in 1/64 s and in ms. Arrow keys move, F2 or typing edits a cell.</source>
+        <translation>Eine Zeile pro Note: die Note, ihre Dauer in 1/64 s und in ms. Pfeiltasten bewegen, F2 oder Tippen bearbeitet eine Zelle.</translation>
+    </message>
+    <message>
+        <source>Upload slot</source>
+        <translation>Platz hochladen</translation>
+    </message>
+    <message>
+        <source>Send this slot&apos;s song to the robot (140)</source>
+        <translation>Das Lied dieses Platzes an den Roboter senden (140)</translation>
+    </message>
+    <message>
+        <source>Upload all</source>
+        <translation>Alle hochladen</translation>
+    </message>
+    <message>
+        <source>Send every slot that has notes (140)</source>
+        <translation>Alle Plätze mit Noten senden (140)</translation>
+    </message>
+    <message>
+        <source>Play</source>
+        <translation>Abspielen</translation>
+    </message>
+    <message>
+        <source>Play this slot on the robot (141)</source>
+        <translation>Diesen Platz auf dem Roboter abspielen (141)</translation>
+    </message>
+    <message>
+        <source>Stop preview</source>
+        <translation>Vorschau stoppen</translation>
+    </message>
+    <message>
+        <source>Preview</source>
+        <translation>Vorschau</translation>
+    </message>
+    <message>
+        <source>Play this slot on the computer</source>
+        <translation>Diesen Platz auf dem Computer abspielen</translation>
+    </message>
+    <message>
+        <source>Square tone</source>
+        <translation>Rechteckton</translation>
+    </message>
+    <message>
+        <source>Sine tone</source>
+        <translation>Sinuston</translation>
+    </message>
+    <message>
+        <source>How Preview and Export WAV sound; the robot&apos;s speaker sounds closer to square</source>
+        <translation>Klang von Vorschau und WAV-Export; der Lautsprecher des Roboters klingt eher nach Rechteck</translation>
+    </message>
+    <message>
+        <source>Tone for Preview and Export WAV</source>
+        <translation>Klang für Vorschau und WAV-Export</translation>
+    </message>
+    <message>
+        <source>Load…</source>
+        <translation>Laden…</translation>
+    </message>
+    <message>
+        <source>Replace the songs with a song file</source>
+        <translation>Lieder durch eine Lieddatei ersetzen</translation>
+    </message>
+    <message>
+        <source>Save…</source>
+        <translation>Speichern…</translation>
+    </message>
+    <message>
+        <source>Save the songs as JSON</source>
+        <translation>Lieder als JSON speichern</translation>
+    </message>
+    <message>
+        <source>Examples</source>
+        <translation>Beispiele</translation>
+    </message>
+    <message>
+        <source>Put an example song in this slot</source>
+        <translation>Ein Beispiellied in diesen Platz legen</translation>
+    </message>
+    <message>
+        <source>Import RTTTL…</source>
+        <translation>RTTTL importieren…</translation>
+    </message>
+    <message>
+        <source>Notes from a ring-tone text</source>
+        <translation>Noten aus einem Klingelton-Text</translation>
+    </message>
+    <message>
+        <source>Import MIDI…</source>
+        <translation>MIDI importieren…</translation>
+    </message>
+    <message>
+        <source>The melody of a MIDI file</source>
+        <translation>Die Melodie einer MIDI-Datei</translation>
+    </message>
+    <message>
+        <source>Export WAV…</source>
+        <translation>WAV exportieren…</translation>
+    </message>
+    <message>
+        <source>This slot as a WAV sound file</source>
+        <translation>Dieser Platz als WAV-Audiodatei</translation>
+    </message>
+    <message>
+        <source>Preview plays on %1.</source>
+        <translation>Die Vorschau spielt über %1.</translation>
+    </message>
+    <message>
+        <source>No audio output device on this computer, so Preview is off. Export WAV still works.</source>
+        <translation>Dieser Computer hat kein Audioausgabegerät, daher ist die Vorschau aus. WAV-Export funktioniert trotzdem.</translation>
+    </message>
+    <message>
+        <source>Load songs</source>
+        <translation>Lieder laden</translation>
+    </message>
+    <message>
+        <source>Song files (*.json)</source>
+        <translation>Lieddateien (*.json)</translation>
+    </message>
+    <message>
+        <source>Save songs</source>
+        <translation>Lieder speichern</translation>
+    </message>
+    <message>
+        <source>Import RTTTL</source>
+        <translation>RTTTL importieren</translation>
+    </message>
+    <message>
+        <source>Ring tone, e.g. Beep:d=4,o=5,b=120:c,e,g,c6</source>
+        <translation>Klingelton, z. B. Beep:d=4,o=5,b=120:c,e,g,c6</translation>
+    </message>
+    <message>
+        <source>Import MIDI</source>
+        <translation>MIDI importieren</translation>
+    </message>
+    <message>
+        <source>MIDI files (*.mid *.midi)</source>
+        <translation>MIDI-Dateien (*.mid *.midi)</translation>
+    </message>
+    <message>
+        <source>Export WAV</source>
+        <translation>WAV exportieren</translation>
+    </message>
+    <message>
+        <source>WAV files (*.wav)</source>
+        <translation>WAV-Dateien (*.wav)</translation>
+    </message>
+    <message>
+        <source>The %1 has %2 song slots; %3 song(s) in higher slots are kept but hidden.</source>
+        <translation>Der %1 hat %2 Liedplätze; %3 Lied(er) in höheren Plätzen bleiben erhalten, werden aber ausgeblendet.</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <source>Song %1: 1 note</source>
+        <translation>Lied %1: 1 Note</translation>
+    </message>
+    <message numerus="yes">
+        <source>Song %1: %n notes</source>
+        <translation>
+            <numerusform>Lied %1: %n Note</numerusform>
+            <numerusform>Lied %1: %n Noten</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Song slot %1 is outside 0..%2 on this robot</source>
+        <translation>Liedplatz %1 liegt bei diesem Roboter außerhalb von 0..%2</translation>
+    </message>
+    <message>
+        <source>A song holds at most %1 notes, not %2</source>
+        <translation>Ein Lied fasst höchstens %1 Noten, nicht %2</translation>
+    </message>
+    <message>
+        <source>Slot %1: %2, %3 s (%4/64 s)</source>
+        <translation>Platz %1: %2, %3 s (%4/64 s)</translation>
+    </message>
+    <message>
+        <source>1 note</source>
+        <translation>1 Note</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n notes</source>
+        <translation>
+            <numerusform>%n Note</numerusform>
+            <numerusform>%n Noten</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Note %1: &quot;%2&quot; is not a note. Use a name from G1 to G9 (e.g. C#5), a MIDI number 31..127, or &quot;rest&quot;.</source>
+        <translation>Note %1: „%2“ ist keine Note. Verwenden Sie einen Namen von G1 bis G9 (z. B. C#5), eine MIDI-Nummer 31..127 oder „Pause“.</translation>
+    </message>
+    <message>
+        <source>Note %1: &quot;%2&quot; is not a whole number of 1/64 s</source>
+        <translation>Note %1: „%2“ ist keine ganze Zahl von 1/64 s</translation>
+    </message>
+    <message>
+        <source>Note %1: &quot;%2&quot; is not a number of milliseconds</source>
+        <translation>Note %1: „%2“ ist keine Zahl von Millisekunden</translation>
+    </message>
+    <message>
+        <source>Note %1: %2 is outside 0..255/64 s (0..3984 ms)</source>
+        <translation>Note %1: %2 liegt außerhalb von 0..255/64 s (0..3984 ms)</translation>
+    </message>
+    <message>
+        <source> ms</source>
+        <translation> ms</translation>
+    </message>
+    <message>
+        <source>A song holds at most %1 notes</source>
+        <translation>Ein Lied fasst höchstens %1 Noten</translation>
+    </message>
+    <message>
+        <source>Transposed slot %1 by %2 semitone(s).</source>
+        <translation>Platz %1 um %2 Halbtöne transponiert.</translation>
+    </message>
+    <message>
+        <source>Durations in slot %1 multiplied by %2.</source>
+        <translation>Dauern in Platz %1 mit %2 multipliziert.</translation>
+    </message>
+    <message>
+        <source>%1 refused: %2</source>
+        <translation>%1 abgelehnt: %2</translation>
+    </message>
+    <message>
+        <source>%1 sent. Warning: %2</source>
+        <translation>%1 gesendet. Warnung: %2</translation>
+    </message>
+    <message>
+        <source>%1 sent.</source>
+        <translation>%1 gesendet.</translation>
+    </message>
+    <message>
+        <source>Song %1</source>
+        <translation>Lied %1</translation>
+    </message>
+    <message>
+        <source>Song %1 refused: %2</source>
+        <translation>Lied %1 abgelehnt: %2</translation>
+    </message>
+    <message>
+        <source>Nothing to upload: every slot is empty.</source>
+        <translation>Nichts hochzuladen: Alle Plätze sind leer.</translation>
+    </message>
+    <message>
+        <source>Uploaded songs %1.</source>
+        <translation>Lieder %1 hochgeladen.</translation>
+    </message>
+    <message>
+        <source> Warning: </source>
+        <translation> Warnung: </translation>
+    </message>
+    <message>
+        <source>Play song %1</source>
+        <translation>Lied %1 abspielen</translation>
+    </message>
+    <message>
+        <source>Playing: unknown (packet 37 not streamed)</source>
+        <translation>Wiedergabe: unbekannt (Paket 37 nicht im Datenstrom)</translation>
+    </message>
+    <message>
+        <source>No song playing</source>
+        <translation>Kein Lied wird gespielt</translation>
+    </message>
+    <message>
+        <source>Playing song %1: %2 of %3 s</source>
+        <translation>Spiele Lied %1: %2 von %3 s</translation>
+    </message>
+    <message>
+        <source>Playing song %1</source>
+        <translation>Spiele Lied %1</translation>
+    </message>
+    <message>
+        <source>Saved %1.</source>
+        <translation>%1 gespeichert.</translation>
+    </message>
+    <message>
+        <source> The open songs are unchanged.</source>
+        <translation> Die geöffneten Lieder sind unverändert.</translation>
+    </message>
+    <message>
+        <source>Loaded %1.</source>
+        <translation>%1 geladen.</translation>
+    </message>
+    <message>
+        <source>%1 needs %2 slot(s) but only %3 are left from slot %4 on; nothing was changed.</source>
+        <translation>%1 braucht %2 Platz/Plätze, ab Platz %4 sind aber nur %3 frei; nichts wurde geändert.</translation>
+    </message>
+    <message>
+        <source>%1 is in slot %2.</source>
+        <translation>%1 liegt in Platz %2.</translation>
+    </message>
+    <message>
+        <source>The ring tone</source>
+        <translation>Der Klingelton</translation>
+    </message>
+    <message>
+        <source>%1: %2 notes in slot(s) %3..%4.</source>
+        <translation>%1: %2 Noten in Platz/Plätzen %3..%4.</translation>
+    </message>
+    <message>
+        <source>Imported %1 melody notes into slot(s) %2..%3.</source>
+        <translation>%1 Melodienoten in Platz/Plätze %2..%3 importiert.</translation>
+    </message>
+    <message>
+        <source> %1 notes did not fit in the remaining slots and were left out.</source>
+        <translation> %1 Noten passten nicht in die restlichen Plätze und wurden weggelassen.</translation>
+    </message>
+    <message>
+        <source> %1 notes longer than 255/64 s were shortened to 255.</source>
+        <translation> %1 Noten, die länger als 255/64 s waren, wurden auf 255 gekürzt.</translation>
+    </message>
+    <message>
+        <source>Slot %1 is empty; there is nothing to export.</source>
+        <translation>Platz %1 ist leer; es gibt nichts zu exportieren.</translation>
+    </message>
+    <message>
+        <source>Exported slot %1 to %2.</source>
+        <translation>Platz %1 nach %2 exportiert.</translation>
+    </message>
+    <message>
+        <source>No audio output device on this computer, so Preview is off.</source>
+        <translation>Dieser Computer hat kein Audioausgabegerät, daher ist die Vorschau aus.</translation>
+    </message>
+    <message>
+        <source>Slot %1 is empty; there is nothing to preview.</source>
+        <translation>Platz %1 ist leer; es gibt nichts vorzuspielen.</translation>
+    </message>
+    <message>
+        <source>%1 cannot play 16-bit mono sound at %2 Hz; use Export WAV instead.</source>
+        <translation>%1 kann keinen 16-Bit-Mono-Ton mit %2 Hz abspielen; verwenden Sie stattdessen den WAV-Export.</translation>
+    </message>
+</context>
+<context>
+    <name>SongFiles</name>
+    <message>
+        <source>Not a JSON file: %1 at offset %2</source>
+        <translation>Keine JSON-Datei: %1 an Position %2</translation>
+    </message>
+    <message>
+        <source>Not a song file: the top level is not an object</source>
+        <translation>Keine Lieddatei: Die oberste Ebene ist kein Objekt</translation>
+    </message>
+    <message>
+        <source>Not a song file: &quot;format&quot; is not &quot;%1&quot;</source>
+        <translation>Keine Lieddatei: „format“ ist nicht „%1“</translation>
+    </message>
+    <message>
+        <source>Song file version %1 is not supported; only version %2 is</source>
+        <translation>Lieddatei-Version %1 wird nicht unterstützt, nur Version %2</translation>
+    </message>
+    <message>
+        <source>Song file has no &quot;songs&quot; list</source>
+        <translation>Lieddatei hat keine „songs“-Liste</translation>
+    </message>
+    <message>
+        <source>Song %1: slot %2 is outside 0..%3 for this robot</source>
+        <translation>Lied %1: Platz %2 liegt für diesen Roboter außerhalb von 0..%3</translation>
+    </message>
+    <message>
+        <source>Song %1: slot %2 appears twice</source>
+        <translation>Lied %1: Platz %2 kommt doppelt vor</translation>
+    </message>
+    <message>
+        <source>Song in slot %1 has no &quot;notes&quot; list</source>
+        <translation>Lied in Platz %1 hat keine „notes“-Liste</translation>
+    </message>
+    <message>
+        <source>Song in slot %1 has %2 notes; a song has 1..%3</source>
+        <translation>Lied in Platz %1 hat %2 Noten; ein Lied hat 1..%3</translation>
+    </message>
+    <message>
+        <source>Slot %1, note %2: expected [note 0..127, duration 0..255], got %3</source>
+        <translation>Platz %1, Note %2: erwartet [Note 0..127, Dauer 0..255], erhalten: %3</translation>
+    </message>
+    <message>
+        <source>Could not save %1: %2</source>
+        <translation>%1 konnte nicht gespeichert werden: %2</translation>
+    </message>
+    <message>
+        <source>Could not open %1: %2</source>
+        <translation>%1 konnte nicht geöffnet werden: %2</translation>
+    </message>
+    <message>
+        <source>Cannot transpose by %1: note %2 (%3) would become %4, outside %5..%6</source>
+        <translation>Transponieren um %1 nicht möglich: Note %2 (%3) würde zu %4, außerhalb von %5..%6</translation>
+    </message>
+    <message>
+        <source>Cannot scale durations by %1: note %2 would last %3/64 s; durations must stay within 1..255</source>
+        <translation>Dauern können nicht mit %1 skaliert werden: Note %2 würde %3/64 s dauern; Dauern müssen im Bereich 1..255 bleiben</translation>
+    </message>
+    <message>
+        <source>rest</source>
+        <translation>Pause</translation>
+    </message>
+</context>
+<context>
+    <name>SongWave</name>
+    <message>
+        <source>Could not save %1: %2</source>
+        <translation>%1 konnte nicht gespeichert werden: %2</translation>
+    </message>
+</context>
+<context>
+    <name>ValueGauge</name>
+    <message>
+        <source>OUT OF RANGE</source>
+        <translation>AUSSER BEREICH</translation>
+    </message>
+    <message>
+        <source>%1, %2</source>
+        <translation>%1, %2</translation>
+    </message>
+    <message>
+        <source>%1, out of range</source>
+        <translation>%1, außerhalb des Bereichs</translation>
+    </message>
+    <message>
+        <source>%1, stale</source>
+        <translation>%1, veraltet</translation>
+    </message>
+</context>
+</TS>

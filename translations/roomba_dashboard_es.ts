@@ -1,0 +1,3569 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
+<TS version="2.1" language="es">
+<context>
+    <name>BitName</name>
+    <message>
+        <source>Advance</source>
+        <translation>Avanzar</translation>
+    </message>
+    <message>
+        <source>Baud Rate Change (active low)</source>
+        <translation>Cambio de velocidad en baudios (activo bajo)</translation>
+    </message>
+    <message>
+        <source>Bump Left</source>
+        <translation>Parachoques izquierdo</translation>
+    </message>
+    <message>
+        <source>Bump Right</source>
+        <translation>Parachoques derecho</translation>
+    </message>
+    <message>
+        <source>Center Left</source>
+        <translation>Central izquierdo</translation>
+    </message>
+    <message>
+        <source>Center Right</source>
+        <translation>Central derecho</translation>
+    </message>
+    <message>
+        <source>Clean</source>
+        <translation>Limpiar</translation>
+    </message>
+    <message>
+        <source>Clock</source>
+        <translation>Reloj</translation>
+    </message>
+    <message>
+        <source>Day</source>
+        <translation>Día</translation>
+    </message>
+    <message>
+        <source>Digital Input 0</source>
+        <translation>Entrada digital 0</translation>
+    </message>
+    <message>
+        <source>Digital Input 1</source>
+        <translation>Entrada digital 1</translation>
+    </message>
+    <message>
+        <source>Digital Input 2</source>
+        <translation>Entrada digital 2</translation>
+    </message>
+    <message>
+        <source>Digital Input 3</source>
+        <translation>Entrada digital 3</translation>
+    </message>
+    <message>
+        <source>Dock</source>
+        <translation>Base</translation>
+    </message>
+    <message>
+        <source>Front Left</source>
+        <translation>Delantero izquierdo</translation>
+    </message>
+    <message>
+        <source>Front Right</source>
+        <translation>Delantero derecho</translation>
+    </message>
+    <message>
+        <source>Home Base</source>
+        <translation>Base de carga</translation>
+    </message>
+    <message>
+        <source>Hour</source>
+        <translation>Hora</translation>
+    </message>
+    <message>
+        <source>Internal Charger</source>
+        <translation>Cargador interno</translation>
+    </message>
+    <message>
+        <source>Left</source>
+        <translation>Izquierdo</translation>
+    </message>
+    <message>
+        <source>Left Wheel</source>
+        <translation>Rueda izquierda</translation>
+    </message>
+    <message>
+        <source>Low Side Driver 0</source>
+        <translation>Controlador de lado bajo 0</translation>
+    </message>
+    <message>
+        <source>Low Side Driver 1</source>
+        <translation>Controlador de lado bajo 1</translation>
+    </message>
+    <message>
+        <source>Low Side Driver 2</source>
+        <translation>Controlador de lado bajo 2</translation>
+    </message>
+    <message>
+        <source>Main Brush</source>
+        <translation>Cepillo principal</translation>
+    </message>
+    <message>
+        <source>Minute</source>
+        <translation>Minuto</translation>
+    </message>
+    <message>
+        <source>Play</source>
+        <translation>Reproducir</translation>
+    </message>
+    <message>
+        <source>Right</source>
+        <translation>Derecho</translation>
+    </message>
+    <message>
+        <source>Right Wheel</source>
+        <translation>Rueda derecha</translation>
+    </message>
+    <message>
+        <source>Schedule</source>
+        <translation>Programación</translation>
+    </message>
+    <message>
+        <source>Side Brush</source>
+        <translation>Cepillo lateral</translation>
+    </message>
+    <message>
+        <source>Spot</source>
+        <translation>Spot</translation>
+    </message>
+    <message>
+        <source>Wheel Drop Caster</source>
+        <translation>Caída de rueda loca</translation>
+    </message>
+    <message>
+        <source>Wheel Drop Left</source>
+        <translation>Caída de rueda izquierda</translation>
+    </message>
+    <message>
+        <source>Wheel Drop Right</source>
+        <translation>Caída de rueda derecha</translation>
+    </message>
+</context>
+<context>
+    <name>ByteInspector</name>
+    <message>
+        <source>Resume</source>
+        <translation>Reanudar</translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation>Pausa</translation>
+    </message>
+    <message>
+        <source>Stop scrolling new bytes into view; they are still recorded</source>
+        <translation>Deja de desplazar los bytes nuevos a la vista; se siguen registrando</translation>
+    </message>
+    <message>
+        <source>Clear</source>
+        <translation>Borrar</translation>
+    </message>
+    <message>
+        <source>Forget every entry and reset the counts</source>
+        <translation>Olvida todas las entradas y pone a cero los contadores</translation>
+    </message>
+    <message>
+        <source>Hex</source>
+        <translation>Hex</translation>
+    </message>
+    <message>
+        <source>Show bytes in hexadecimal instead of decimal</source>
+        <translation>Muestra los bytes en hexadecimal en lugar de decimal</translation>
+    </message>
+    <message>
+        <source>Byte log</source>
+        <translation>Registro de bytes</translation>
+    </message>
+    <message>
+        <source>Raw bytes to send, e.g. 128 131 or 0x80 0x83</source>
+        <translation>Bytes sin procesar para enviar, p. ej. 128 131 o 0x80 0x83</translation>
+    </message>
+    <message>
+        <source>Raw bytes to send</source>
+        <translation>Bytes sin procesar para enviar</translation>
+    </message>
+    <message>
+        <source>Send</source>
+        <translation>Enviar</translation>
+    </message>
+    <message>
+        <source>Check the bytes and send them to the robot</source>
+        <translation>Comprueba los bytes y los envía al robot</translation>
+    </message>
+    <message numerus="yes">
+        <source>%Ln entry · TX %1 B · RX %2 B</source>
+        <translation>
+            <numerusform>%Ln entrada · TX %1 B · RX %2 B</numerusform>
+            <numerusform>%Ln entradas · TX %1 B · RX %2 B</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%Ln entries · TX %1 B · RX %2 B</source>
+        <translation>
+            <numerusform>%Ln entrada · TX %1 B · RX %2 B</numerusform>
+            <numerusform>%Ln entradas · TX %1 B · RX %2 B</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source> · paused, %Ln new</source>
+        <translation>
+            <numerusform> · en pausa, %Ln nueva</numerusform>
+            <numerusform> · en pausa, %Ln nuevas</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source> · paused</source>
+        <translation> · en pausa</translation>
+    </message>
+</context>
+<context>
+    <name>ChannelChooser</name>
+    <message>
+        <source>Bumps &amp; cliffs</source>
+        <translation>Choques y desniveles</translation>
+    </message>
+    <message>
+        <source>Battery</source>
+        <translation>Batería</translation>
+    </message>
+    <message>
+        <source>Motion</source>
+        <translation>Movimiento</translation>
+    </message>
+    <message>
+        <source>Light bumpers</source>
+        <translation>Parachoques de luz</translation>
+    </message>
+    <message>
+        <source>Motors &amp; dirt</source>
+        <translation>Motores y suciedad</translation>
+    </message>
+    <message>
+        <source>Cargo bay</source>
+        <translation>Bahía de carga</translation>
+    </message>
+    <message>
+        <source>IR, buttons &amp; mode</source>
+        <translation>IR, botones y modo</translation>
+    </message>
+    <message>
+        <source>Unused</source>
+        <translation>Sin uso</translation>
+    </message>
+    <message>
+        <source>Choose channels</source>
+        <translation>Elegir canales</translation>
+    </message>
+    <message>
+        <source>Choose the sensor packets this plot shows</source>
+        <translation>Elige los paquetes de sensores que muestra esta gráfica</translation>
+    </message>
+    <message numerus="yes">
+        <source>Channels (%n)</source>
+        <translation>
+            <numerusform>Canales (%n)</numerusform>
+            <numerusform>Canales (%n)</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>CommandDecoder</name>
+    <message>
+        <source> (straight)</source>
+        <translation> (recto)</translation>
+    </message>
+    <message>
+        <source> (turn in place clockwise)</source>
+        <translation> (giro sobre sí mismo en sentido horario)</translation>
+    </message>
+    <message>
+        <source> (turn in place counter-clockwise)</source>
+        <translation> (giro sobre sí mismo en sentido antihorario)</translation>
+    </message>
+    <message>
+        <source>group %1 (packets %2..%3)</source>
+        <translation>grupo %1 (paquetes %2..%3)</translation>
+    </message>
+    <message>
+        <source>packet %1 (not on the %2)</source>
+        <translation>paquete %1 (no existe en el %2)</translation>
+    </message>
+    <message>
+        <source>not a command of the %1</source>
+        <translation>no es un comando del %1</translation>
+    </message>
+    <message>
+        <source>%1, incomplete: its count byte is missing</source>
+        <translation>%1, incompleto: falta su byte de recuento</translation>
+    </message>
+    <message>
+        <source>%1, incomplete: %2 of %3 data bytes</source>
+        <translation>%1, incompleto: %2 de %3 bytes de datos</translation>
+    </message>
+    <message>
+        <source>rest</source>
+        <translation>silencio</translation>
+    </message>
+    <message>
+        <source>%1 slot %2, %3%4</source>
+        <translation>%1 ranura %2, %3%4</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n byte</source>
+        <translation>
+            <numerusform>%n byte</numerusform>
+            <numerusform>%n bytes</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n bytes</source>
+        <translation>
+            <numerusform>%n byte</numerusform>
+            <numerusform>%n bytes</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1 code %2%3</source>
+        <translation>%1 código %2%3</translation>
+    </message>
+    <message>
+        <source>%1 velocity %2 radius %3%4</source>
+        <translation>%1 velocidad %2 radio %3%4</translation>
+    </message>
+    <message>
+        <source>pause</source>
+        <translation>pausa</translation>
+    </message>
+    <message>
+        <source>resume</source>
+        <translation>reanudar</translation>
+    </message>
+    <message>
+        <source>state %1</source>
+        <translation>estado %1</translation>
+    </message>
+    <message>
+        <source>%1 off</source>
+        <translation>%1 desactivado</translation>
+    </message>
+    <message>
+        <source>Type the bytes to send, for example 128 131 or 0x80 0x83.</source>
+        <translation>Escriba los bytes que desea enviar, por ejemplo 128 131 o 0x80 0x83.</translation>
+    </message>
+    <message>
+        <source>Byte %1: “%2” is not a number.</source>
+        <translation>Byte %1: «%2» no es un número.</translation>
+    </message>
+    <message>
+        <source>Byte %1: %2 is outside 0..255.</source>
+        <translation>Byte %1: %2 está fuera de 0..255.</translation>
+    </message>
+    <message>
+        <source>Byte %1: %2 is not an opcode of the %3.</source>
+        <translation>Byte %1: %2 no es un código de operación del %3.</translation>
+    </message>
+    <message>
+        <source>%1 needs its song number and length bytes.</source>
+        <translation>%1 necesita sus bytes de número de canción y longitud.</translation>
+    </message>
+    <message>
+        <source>%1 needs its count byte.</source>
+        <translation>%1 necesita su byte de recuento.</translation>
+    </message>
+    <message>
+        <source>%1 takes %2 data bytes; got %3.</source>
+        <translation>%1 lleva %2 bytes de datos; se recibieron %3.</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>%1: these bytes do not form the command the robot expects.</source>
+        <translation>%1: estos bytes no forman el comando que espera el robot.</translation>
+    </message>
+</context>
+<context>
+    <name>ConnectionBar</name>
+    <message>
+        <source>Virtual robot</source>
+        <translation>Robot virtual</translation>
+    </message>
+    <message>
+        <source>Serial port</source>
+        <translation>Puerto serie</translation>
+    </message>
+    <message>
+        <source>TCP (ser2net)</source>
+        <translation>TCP (ser2net)</translation>
+    </message>
+    <message>
+        <source>Transport</source>
+        <translation>Transporte</translation>
+    </message>
+    <message>
+        <source>/dev/ttyUSB0 or a typed path</source>
+        <translation>/dev/ttyUSB0 o una ruta escrita</translation>
+    </message>
+    <message>
+        <source>List the serial ports again</source>
+        <translation>Volver a listar los puertos serie</translation>
+    </message>
+    <message>
+        <source>host:port, e.g. raspberrypi:3333</source>
+        <translation>host:puerto, p. ej. raspberrypi:3333</translation>
+    </message>
+    <message>
+        <source>TCP bridge</source>
+        <translation>Puente TCP</translation>
+    </message>
+    <message>
+        <source>Auto</source>
+        <translation>Auto</translation>
+    </message>
+    <message>
+        <source>Robot profile</source>
+        <translation>Perfil del robot</translation>
+    </message>
+    <message>
+        <source>Default baud</source>
+        <translation>Baudios por defecto</translation>
+    </message>
+    <message>
+        <source>Baud rate</source>
+        <translation>Velocidad en baudios</translation>
+    </message>
+    <message>
+        <source>Connect</source>
+        <translation>Conectar</translation>
+    </message>
+    <message>
+        <source>Disconnect</source>
+        <translation>Desconectar</translation>
+    </message>
+    <message>
+        <source>Choose a serial port or type its path.</source>
+        <translation>Elija un puerto serie o escriba su ruta.</translation>
+    </message>
+    <message>
+        <source>Type the bridge as host:port with a port from 1 to 65535, e.g. raspberrypi:3333.</source>
+        <translation>Escriba el puente como host:puerto con un puerto de 1 a 65535, p. ej. raspberrypi:3333.</translation>
+    </message>
+</context>
+<context>
+    <name>DashboardCommandLine</name>
+    <message>
+        <source>Usage: roomba-dashboard [--sim | --port PATH | --tcp HOST:PORT | --replay FILE]
+                        [--profile P] [--baud N] [--record FILE] [--lang CODE]
+
+  --sim              the built-in virtual robot
+  --port PATH        a serial port, USB adapter or pseudo-terminal
+  --tcp HOST:PORT    a serial-over-TCP bridge such as ser2net
+  --replay FILE      play back a recording (.oirec) as if it were the robot
+  --profile P        roomba500, create2 (also roomba600), create1 (also create) or auto
+  --baud N           the line speed; the profile&apos;s default when left out
+  --record FILE      record every byte to and from the robot into FILE
+  --lang CODE        the language of the window: %1
+  --help, --version
+
+Without a connection option the dashboard reconnects to what was used last,
+or on first start to the virtual robot. Without --lang it speaks the language
+chosen in its View menu, or the system&apos;s.
+</source>
+        <translation>Uso: roomba-dashboard [--sim | --port RUTA | --tcp HOST:PUERTO | --replay ARCHIVO]
+                      [--profile P] [--baud N] [--record ARCHIVO] [--lang CÓDIGO]
+
+  --sim              el robot virtual integrado
+  --port RUTA        un puerto serie, adaptador USB o pseudoterminal
+  --tcp HOST:PUERTO  un puente serie sobre TCP como ser2net
+  --replay ARCHIVO   reproduce una grabación (.oirec) como si fuera el robot
+  --profile P        roomba500, create2 (también roomba600), create1 (también create) o auto
+  --baud N           la velocidad de la línea; si se omite, la del perfil
+  --record ARCHIVO   graba en ARCHIVO cada byte enviado al robot y recibido de él
+  --lang CÓDIGO      el idioma de la ventana: %1
+  --help, --version
+
+Sin opción de conexión, el panel se vuelve a conectar a lo último que se usó,
+o en el primer inicio al robot virtual. Sin --lang usa el idioma elegido
+en su menú Ver, o el del sistema.
+</translation>
+    </message>
+    <message>
+        <source>%1 needs a value; see --help</source>
+        <translation>%1 necesita un valor; consulte --help</translation>
+    </message>
+    <message>
+        <source>choose one of --sim, --port, --tcp and --replay</source>
+        <translation>elija solo una de --sim, --port, --tcp y --replay</translation>
+    </message>
+    <message>
+        <source>--tcp needs HOST:PORT with a port from 1 to 65535, not &apos;%1&apos;</source>
+        <translation>--tcp necesita HOST:PUERTO con un puerto de 1 a 65535, no '%1'</translation>
+    </message>
+    <message>
+        <source>unknown profile &apos;%1&apos; (roomba500, create2, create1 or auto)</source>
+        <translation>perfil desconocido '%1' (roomba500, create2, create1 o auto)</translation>
+    </message>
+    <message>
+        <source>--baud %1 is not a rate the robot offers (300 .. 115200)</source>
+        <translation>--baud %1 no es una velocidad que ofrezca el robot (300 .. 115200)</translation>
+    </message>
+    <message>
+        <source>--record: the folder of &apos;%1&apos; does not exist</source>
+        <translation>--record: la carpeta de '%1' no existe</translation>
+    </message>
+    <message>
+        <source>unknown language &apos;%1&apos; (%2)</source>
+        <translation>idioma desconocido '%1' (%2)</translation>
+    </message>
+    <message>
+        <source>unknown argument &apos;%1&apos;; see --help</source>
+        <translation>argumento desconocido '%1'; consulte --help</translation>
+    </message>
+    <message>
+        <source>--profile and --baud go with --sim, --port or --tcp</source>
+        <translation>--profile y --baud se usan con --sim, --port o --tcp</translation>
+    </message>
+    <message>
+        <source>--replay reads the profile and baud from the recording; leave out --profile and --baud</source>
+        <translation>--replay lee el perfil y los baudios de la grabación; omita --profile y --baud</translation>
+    </message>
+    <message>
+        <source>--record records a robot; a replay is already a recording</source>
+        <translation>--record graba un robot; una reproducción ya es una grabación</translation>
+    </message>
+    <message>
+        <source>cannot replay %1</source>
+        <translation>no se puede reproducir %1</translation>
+    </message>
+</context>
+<context>
+    <name>Demos</name>
+    <message>
+        <source>Abort demo</source>
+        <translation>Cancelar demo</translation>
+    </message>
+    <message>
+        <source>Cover</source>
+        <translation>Cubrir</translation>
+    </message>
+    <message>
+        <source>Cover and Dock</source>
+        <translation>Cubrir y volver a la base</translation>
+    </message>
+    <message>
+        <source>Spot Cover</source>
+        <translation>Cubrir zona</translation>
+    </message>
+    <message>
+        <source>Mouse</source>
+        <translation>Ratón</translation>
+    </message>
+    <message>
+        <source>Drive Figure Eight</source>
+        <translation>Conducir en ocho</translation>
+    </message>
+    <message>
+        <source>Wimp</source>
+        <translation>Miedica</translation>
+    </message>
+    <message>
+        <source>Home</source>
+        <translation>Casa</translation>
+    </message>
+    <message>
+        <source>Tag</source>
+        <translation>Pilla-pilla</translation>
+    </message>
+    <message>
+        <source>Pachelbel</source>
+        <translation>Pachelbel</translation>
+    </message>
+    <message>
+        <source>Banjo</source>
+        <translation>Banjo</translation>
+    </message>
+</context>
+<context>
+    <name>DrivePad</name>
+    <message>
+        <source>%1 mm/s</source>
+        <translation>%1 mm/s</translation>
+    </message>
+    <message>
+        <source>Drive (137): speed and radius</source>
+        <translation>Drive (137): velocidad y radio</translation>
+    </message>
+    <message>
+        <source>Drive Direct (145): each wheel</source>
+        <translation>Drive Direct (145): cada rueda</translation>
+    </message>
+    <message>
+        <source>Drive PWM (146): each wheel, raw power</source>
+        <translation>Drive PWM (146): cada rueda, potencia directa</translation>
+    </message>
+    <message>
+        <source>Speed limit</source>
+        <translation>Límite de velocidad</translation>
+    </message>
+    <message>
+        <source>Passive mode: enter Safe to drive</source>
+        <translation>Modo Passive: pase a Safe para conducir</translation>
+    </message>
+    <message>
+        <source>Enter Safe</source>
+        <translation>Pasar a Safe</translation>
+    </message>
+    <message>
+        <source>Drive pad</source>
+        <translation>Panel de conducción</translation>
+    </message>
+    <message>
+        <source>Drive Direct (145) is not available on the %1</source>
+        <translation>Drive Direct (145) no está disponible en el %1</translation>
+    </message>
+    <message>
+        <source>Drive PWM (146) is not available on the %1</source>
+        <translation>Drive PWM (146) no está disponible en el %1</translation>
+    </message>
+    <message>
+        <source>Drive (137) is not available on the %1</source>
+        <translation>Drive (137) no está disponible en el %1</translation>
+    </message>
+    <message>
+        <source>Stopped</source>
+        <translation>Detenido</translation>
+    </message>
+    <message>
+        <source>Drive Direct: right %1, left %2 mm/s</source>
+        <translation>Drive Direct: derecha %1, izquierda %2 mm/s</translation>
+    </message>
+    <message>
+        <source>Drive PWM: right %1, left %2</source>
+        <translation>Drive PWM: derecha %1, izquierda %2</translation>
+    </message>
+    <message>
+        <source>straight</source>
+        <translation>recto</translation>
+    </message>
+    <message>
+        <source>turn in place, clockwise</source>
+        <translation>giro sobre sí mismo, sentido horario</translation>
+    </message>
+    <message>
+        <source>turn in place, anticlockwise</source>
+        <translation>giro sobre sí mismo, sentido antihorario</translation>
+    </message>
+    <message>
+        <source>radius %1 mm</source>
+        <translation>radio %1 mm</translation>
+    </message>
+    <message>
+        <source>Drive %1 mm/s, %2</source>
+        <translation>Conducir a %1 mm/s, %2</translation>
+    </message>
+    <message>
+        <source>Right wheel %1 mm/s, left wheel %2 mm/s</source>
+        <translation>Rueda derecha %1 mm/s, rueda izquierda %2 mm/s</translation>
+    </message>
+    <message>
+        <source>Right wheel power %1, left wheel power %2</source>
+        <translation>Potencia rueda derecha %1, rueda izquierda %2</translation>
+    </message>
+    <message>
+        <source>Turning in place clockwise, %1 mm/s</source>
+        <translation>Girando sobre sí mismo en sentido horario, %1 mm/s</translation>
+    </message>
+    <message>
+        <source>Turning in place anticlockwise, %1 mm/s</source>
+        <translation>Girando sobre sí mismo en sentido antihorario, %1 mm/s</translation>
+    </message>
+    <message>
+        <source>Forward %1 mm/s</source>
+        <translation>Adelante %1 mm/s</translation>
+    </message>
+    <message>
+        <source>Backward %1 mm/s</source>
+        <translation>Atrás %1 mm/s</translation>
+    </message>
+    <message>
+        <source>%1, straight</source>
+        <translation>%1, recto</translation>
+    </message>
+    <message>
+        <source>%1, turning left (radius %2 mm)</source>
+        <translation>%1, girando a la izquierda (radio %2 mm)</translation>
+    </message>
+    <message>
+        <source>%1, turning right (radius %2 mm)</source>
+        <translation>%1, girando a la derecha (radio %2 mm)</translation>
+    </message>
+</context>
+<context>
+    <name>GamepadInput</name>
+    <message>
+        <source>Back</source>
+        <translation>Back</translation>
+    </message>
+    <message>
+        <source>Guide</source>
+        <translation>Guide</translation>
+    </message>
+    <message>
+        <source>Start</source>
+        <translation>Start</translation>
+    </message>
+    <message>
+        <source>Left stick press</source>
+        <translation>Pulsar stick izquierdo</translation>
+    </message>
+    <message>
+        <source>Right stick press</source>
+        <translation>Pulsar stick derecho</translation>
+    </message>
+    <message>
+        <source>D-pad up</source>
+        <translation>Cruceta arriba</translation>
+    </message>
+    <message>
+        <source>D-pad down</source>
+        <translation>Cruceta abajo</translation>
+    </message>
+    <message>
+        <source>D-pad left</source>
+        <translation>Cruceta izquierda</translation>
+    </message>
+    <message>
+        <source>D-pad right</source>
+        <translation>Cruceta derecha</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>ninguno</translation>
+    </message>
+    <message>
+        <source>button %1</source>
+        <translation>botón %1</translation>
+    </message>
+    <message>
+        <source>Passive (128)</source>
+        <translation>Passive (128)</translation>
+    </message>
+    <message>
+        <source>Safe (131)</source>
+        <translation>Safe (131)</translation>
+    </message>
+    <message>
+        <source>Full (132)</source>
+        <translation>Full (132)</translation>
+    </message>
+    <message>
+        <source>command %1</source>
+        <translation>comando %1</translation>
+    </message>
+    <message>
+        <source>Gamepad</source>
+        <translation>Mando</translation>
+    </message>
+</context>
+<context>
+    <name>GamepadPanel</name>
+    <message>
+        <source>Would send:</source>
+        <translation>Enviaría:</translation>
+    </message>
+    <message>
+        <source>Left stick</source>
+        <translation>Stick izquierdo</translation>
+    </message>
+    <message>
+        <source>Drive Direct: right %1 mm/s, left %2 mm/s</source>
+        <translation>Drive Direct: derecha %1 mm/s, izquierda %2 mm/s</translation>
+    </message>
+    <message>
+        <source>Drive PWM: right %1, left %2</source>
+        <translation>Drive PWM: derecha %1, izquierda %2</translation>
+    </message>
+    <message>
+        <source>Stop: Drive 0 mm/s</source>
+        <translation>Parar: Drive 0 mm/s</translation>
+    </message>
+    <message>
+        <source>Forward: Drive %1 mm/s, straight</source>
+        <translation>Adelante: Drive %1 mm/s, recto</translation>
+    </message>
+    <message>
+        <source>Reverse: Drive %1 mm/s, straight</source>
+        <translation>Atrás: Drive %1 mm/s, recto</translation>
+    </message>
+    <message>
+        <source>Spin clockwise: Drive %1 mm/s, radius -1</source>
+        <translation>Girar en sentido horario: Drive %1 mm/s, radio -1</translation>
+    </message>
+    <message>
+        <source>Spin counter-clockwise: Drive %1 mm/s, radius 1</source>
+        <translation>Girar en sentido antihorario: Drive %1 mm/s, radio 1</translation>
+    </message>
+    <message>
+        <source>Forward, arcing right</source>
+        <translation>Adelante, en curva a la derecha</translation>
+    </message>
+    <message>
+        <source>Forward, arcing left</source>
+        <translation>Adelante, en curva a la izquierda</translation>
+    </message>
+    <message>
+        <source>Reverse, arcing right</source>
+        <translation>Atrás, en curva a la derecha</translation>
+    </message>
+    <message>
+        <source>Reverse, arcing left</source>
+        <translation>Atrás, en curva a la izquierda</translation>
+    </message>
+    <message>
+        <source>%1: Drive %2 mm/s, radius %3 mm</source>
+        <translation>%1: Drive %2 mm/s, radio %3 mm</translation>
+    </message>
+    <message>
+        <source>Gamepads unavailable: %1</source>
+        <translation>Mandos no disponibles: %1</translation>
+    </message>
+    <message>
+        <source>No gamepad connected — plug one in to drive with it</source>
+        <translation>No hay ningún mando conectado: conecte uno para conducir con él</translation>
+    </message>
+    <message>
+        <source>Dead-man (%1) held: driving</source>
+        <translation>Botón de hombre muerto (%1) pulsado: conduciendo</translation>
+    </message>
+    <message>
+        <source>Dead-man (%1) released: hold it to drive</source>
+        <translation>Botón de hombre muerto (%1) suelto: manténgalo pulsado para conducir</translation>
+    </message>
+    <message>
+        <source>%1% right, %2% forward</source>
+        <translation>%1% derecha, %2% adelante</translation>
+    </message>
+    <message>
+        <source>Speed limit %1 mm/s · deadband %2% · expo %3</source>
+        <translation>Límite de velocidad %1 mm/s · zona muerta %2% · expo %3</translation>
+    </message>
+    <message>
+        <source>Hold %1 to drive</source>
+        <translation>Mantenga %1 para conducir</translation>
+    </message>
+    <message>
+        <source>%1: Stop All</source>
+        <translation>%1: Parar todo</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>InfraredName</name>
+    <message>
+        <source>Arc Forward Left</source>
+        <translation>Arco adelante izquierda</translation>
+    </message>
+    <message>
+        <source>Arc Forward Right</source>
+        <translation>Arco adelante derecha</translation>
+    </message>
+    <message>
+        <source>Arc Left</source>
+        <translation>Arco izquierda</translation>
+    </message>
+    <message>
+        <source>Arc Right</source>
+        <translation>Arco derecha</translation>
+    </message>
+    <message>
+        <source>Dock (reserved)</source>
+        <translation>Base (reservado)</translation>
+    </message>
+    <message>
+        <source>Download</source>
+        <translation>Descargar</translation>
+    </message>
+    <message>
+        <source>Drive Stop</source>
+        <translation>Parar conducción</translation>
+    </message>
+    <message>
+        <source>Fence</source>
+        <translation>Valla</translation>
+    </message>
+    <message>
+        <source>Force Field</source>
+        <translation>Campo de fuerza</translation>
+    </message>
+    <message>
+        <source>Forward</source>
+        <translation>Adelante</translation>
+    </message>
+    <message>
+        <source>Green Buoy</source>
+        <translation>Boya verde</translation>
+    </message>
+    <message>
+        <source>Large / Clean</source>
+        <translation>Grande / Limpiar</translation>
+    </message>
+    <message>
+        <source>Left</source>
+        <translation>Izquierda</translation>
+    </message>
+    <message>
+        <source>Max</source>
+        <translation>Máx.</translation>
+    </message>
+    <message>
+        <source>Medium</source>
+        <translation>Mediano</translation>
+    </message>
+    <message>
+        <source>None</source>
+        <translation>Ninguno</translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation>Pausa</translation>
+    </message>
+    <message>
+        <source>Power</source>
+        <translation>Encendido</translation>
+    </message>
+    <message>
+        <source>Red Buoy</source>
+        <translation>Boya roja</translation>
+    </message>
+    <message>
+        <source>Right</source>
+        <translation>Derecha</translation>
+    </message>
+    <message>
+        <source>Seek Dock</source>
+        <translation>Buscar base</translation>
+    </message>
+    <message>
+        <source>Send All</source>
+        <translation>Enviar todo</translation>
+    </message>
+    <message>
+        <source>Small</source>
+        <translation>Pequeño</translation>
+    </message>
+    <message>
+        <source>Spot</source>
+        <translation>Spot</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>Parar</translation>
+    </message>
+    <message>
+        <source>Virtual Wall</source>
+        <translation>Pared virtual</translation>
+    </message>
+    <message>
+        <source> and </source>
+        <translation> y </translation>
+    </message>
+    <message>
+        <source>Lighthouse (unbound) %1</source>
+        <translation>Faro (sin asignar) %1</translation>
+    </message>
+    <message>
+        <source>Lighthouse %1 %2</source>
+        <translation>Faro %1 %2</translation>
+    </message>
+    <message>
+        <source>IR %1</source>
+        <translation>IR %1</translation>
+    </message>
+</context>
+<context>
+    <name>LedEditor</name>
+    <message>
+        <source>Live</source>
+        <translation>En vivo</translation>
+    </message>
+    <message>
+        <source>Send changes as you make them, at most every %1 ms</source>
+        <translation>Envía los cambios según los hace, como mucho cada %1 ms</translation>
+    </message>
+    <message>
+        <source>Apply</source>
+        <translation>Aplicar</translation>
+    </message>
+    <message>
+        <source>Will send:</source>
+        <translation>Enviará:</translation>
+    </message>
+    <message>
+        <source>7-segment display (163, 164)</source>
+        <translation>Pantalla de 7 segmentos (163, 164)</translation>
+    </message>
+    <message>
+        <source>Click a segment to switch it on or off</source>
+        <translation>Haga clic en un segmento para encenderlo o apagarlo</translation>
+    </message>
+    <message>
+        <source>Segment editor</source>
+        <translation>Editor de segmentos</translation>
+    </message>
+    <message>
+        <source>Clear</source>
+        <translation>Borrar</translation>
+    </message>
+    <message>
+        <source>Switch every segment off</source>
+        <translation>Apaga todos los segmentos</translation>
+    </message>
+    <message>
+        <source>up to 4 characters</source>
+        <translation>hasta 4 caracteres</translation>
+    </message>
+    <message>
+        <source>Text for the display</source>
+        <translation>Texto para la pantalla</translation>
+    </message>
+    <message>
+        <source>The robot&apos;s approximation of the text</source>
+        <translation>La aproximación del texto que hace el robot</translation>
+    </message>
+    <message>
+        <source>What the robot shows</source>
+        <translation>Lo que muestra el robot</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Segments&lt;/b&gt; (Digit LEDs Raw, 163): click to switch</source>
+        <translation>&lt;b&gt;Segmentos&lt;/b&gt; (Digit LEDs Raw, 163): clic para cambiar</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Text&lt;/b&gt; (Digit LEDs ASCII, 164)</source>
+        <translation>&lt;b&gt;Texto&lt;/b&gt; (Digit LEDs ASCII, 164)</translation>
+    </message>
+    <message>
+        <source>What the robot shows:</source>
+        <translation>Lo que muestra el robot:</translation>
+    </message>
+    <message>
+        <source>LEDs (139)</source>
+        <translation>LED (139)</translation>
+    </message>
+    <message>
+        <source>Debris</source>
+        <translation>Suciedad</translation>
+    </message>
+    <message>
+        <source>Spot</source>
+        <translation>Spot</translation>
+    </message>
+    <message>
+        <source>Dock</source>
+        <translation>Base</translation>
+    </message>
+    <message>
+        <source>Check Robot</source>
+        <translation>Revisar robot</translation>
+    </message>
+    <message>
+        <source>Play</source>
+        <translation>Reproducir</translation>
+    </message>
+    <message>
+        <source>Advance</source>
+        <translation>Avanzar</translation>
+    </message>
+    <message>
+        <source>0 green … 255 red</source>
+        <translation>0 verde … 255 rojo</translation>
+    </message>
+    <message>
+        <source>Power colour</source>
+        <translation>Color de encendido</translation>
+    </message>
+    <message>
+        <source>Intensity</source>
+        <translation>Intensidad</translation>
+    </message>
+    <message>
+        <source>The power LED as set</source>
+        <translation>El LED de encendido tal como está configurado</translation>
+    </message>
+    <message>
+        <source>Power LED</source>
+        <translation>LED de encendido</translation>
+    </message>
+    <message>
+        <source>green</source>
+        <translation>verde</translation>
+    </message>
+    <message>
+        <source>red</source>
+        <translation>rojo</translation>
+    </message>
+    <message>
+        <source>off</source>
+        <translation>apagado</translation>
+    </message>
+    <message>
+        <source>full</source>
+        <translation>máximo</translation>
+    </message>
+    <message>
+        <source>Scheduling LEDs (162)</source>
+        <translation>LED de programación (162)</translation>
+    </message>
+    <message>
+        <source>Sun</source>
+        <translation>Dom</translation>
+    </message>
+    <message>
+        <source>Mon</source>
+        <translation>Lun</translation>
+    </message>
+    <message>
+        <source>Tue</source>
+        <translation>Mar</translation>
+    </message>
+    <message>
+        <source>Wed</source>
+        <translation>Mié</translation>
+    </message>
+    <message>
+        <source>Thu</source>
+        <translation>Jue</translation>
+    </message>
+    <message>
+        <source>Fri</source>
+        <translation>Vie</translation>
+    </message>
+    <message>
+        <source>Sat</source>
+        <translation>Sáb</translation>
+    </message>
+    <message>
+        <source>Schedule</source>
+        <translation>Programación</translation>
+    </message>
+    <message>
+        <source>Clock</source>
+        <translation>Reloj</translation>
+    </message>
+    <message>
+        <source>AM</source>
+        <translation>AM</translation>
+    </message>
+    <message>
+        <source>PM</source>
+        <translation>PM</translation>
+    </message>
+    <message>
+        <source>Colon</source>
+        <translation>Dos puntos</translation>
+    </message>
+    <message>
+        <source>The %1 has no 7-segment display: Digit LEDs Raw (163) and Digit LEDs ASCII (164) are Roomba 500 / Create 2 only.</source>
+        <translation>El %1 no tiene pantalla de 7 segmentos: Digit LEDs Raw (163) y Digit LEDs ASCII (164) son solo para Roomba 500 / Create 2.</translation>
+    </message>
+    <message>
+        <source>⚠ %1. It is sent anyway; use Text (164) to be sure.</source>
+        <translation>⚠ %1. Se envía de todos modos; use Texto (164) para asegurarse.</translation>
+    </message>
+    <message>
+        <source>%1.</source>
+        <translation>%1.</translation>
+    </message>
+    <message>
+        <source>Not sent: %1 outside ASCII 32..126. Use letters, digits and punctuation.</source>
+        <translation>No enviado: %1 fuera de ASCII 32..126. Use letras, dígitos y signos de puntuación.</translation>
+    </message>
+    <message>
+        <source>%1 shows blank: the robot has no shape for it.</source>
+        <translation>%1 se muestra en blanco: el robot no tiene forma para ese carácter.</translation>
+    </message>
+    <message>
+        <source>%1 show blank: the robot has no shape for them.</source>
+        <translation>%1 se muestran en blanco: el robot no tiene forma para esos caracteres.</translation>
+    </message>
+    <message>
+        <source>Colour %1 of 255 (green to red), intensity %2 of 255</source>
+        <translation>Color %1 de 255 (de verde a rojo), intensidad %2 de 255</translation>
+    </message>
+    <message>
+        <source>nothing (no changes since the last send)</source>
+        <translation>nada (sin cambios desde el último envío)</translation>
+    </message>
+    <message>
+        <source>Live mode sends changes as you make them</source>
+        <translation>El modo en vivo envía los cambios según los hace</translation>
+    </message>
+    <message>
+        <source>Send the changes shown under &quot;Will send&quot;</source>
+        <translation>Envía los cambios que aparecen en «Enviará»</translation>
+    </message>
+</context>
+<context>
+    <name>MainWindow</name>
+    <message>
+        <source>Connection</source>
+        <translation>Conexión</translation>
+    </message>
+    <message>
+        <source>Modes</source>
+        <translation>Modos</translation>
+    </message>
+    <message>
+        <source>Drive</source>
+        <translation>Conducir</translation>
+    </message>
+    <message>
+        <source>Gauges</source>
+        <translation>Indicadores</translation>
+    </message>
+    <message>
+        <source>Signals</source>
+        <translation>Señales</translation>
+    </message>
+    <message>
+        <source>Plots</source>
+        <translation>Gráficas</translation>
+    </message>
+    <message>
+        <source>Inspector</source>
+        <translation>Inspector</translation>
+    </message>
+    <message>
+        <source>Songs</source>
+        <translation>Canciones</translation>
+    </message>
+    <message>
+        <source>LEDs and digits</source>
+        <translation>LED y dígitos</translation>
+    </message>
+    <message>
+        <source>Schedule</source>
+        <translation>Programación</translation>
+    </message>
+    <message>
+        <source>Script</source>
+        <translation>Script</translation>
+    </message>
+    <message>
+        <source>Motors and outputs</source>
+        <translation>Motores y salidas</translation>
+    </message>
+    <message>
+        <source>Odometry map</source>
+        <translation>Mapa de odometría</translation>
+    </message>
+    <message>
+        <source>Gamepad</source>
+        <translation>Mando</translation>
+    </message>
+    <message>
+        <source>Firmware %1</source>
+        <translation>Firmware %1</translation>
+    </message>
+    <message>
+        <source>About Roomba Dashboard</source>
+        <translation>Acerca de Roomba Dashboard</translation>
+    </message>
+    <message>
+        <source>Roomba Dashboard %1
+A dashboard for iRobot robots that speak the Open Interface.
+GPL-3.0-or-later.</source>
+        <translation>Roomba Dashboard %1
+Un panel de control para robots iRobot que hablan el Open Interface.
+GPL-3.0-or-later.</translation>
+    </message>
+    <message>
+        <source>Roomba Dashboard</source>
+        <translation>Roomba Dashboard</translation>
+    </message>
+    <message>
+        <source>&amp;File</source>
+        <translation>&amp;Archivo</translation>
+    </message>
+    <message>
+        <source>&amp;Record</source>
+        <translation>&amp;Grabar</translation>
+    </message>
+    <message>
+        <source>Record every byte to and from the robot into a file</source>
+        <translation>Graba en un archivo cada byte enviado al robot y recibido de él</translation>
+    </message>
+    <message>
+        <source>&amp;Open recording…</source>
+        <translation>A&amp;brir grabación…</translation>
+    </message>
+    <message>
+        <source>Replay a recording in place of the robot</source>
+        <translation>Reproduce una grabación en lugar del robot</translation>
+    </message>
+    <message>
+        <source>&amp;Export recording as CSV…</source>
+        <translation>&amp;Exportar grabación como CSV…</translation>
+    </message>
+    <message>
+        <source>&amp;Quit</source>
+        <translation>&amp;Salir</translation>
+    </message>
+    <message>
+        <source>&amp;View</source>
+        <translation>&amp;Ver</translation>
+    </message>
+    <message>
+        <source>Recording and replay</source>
+        <translation>Grabación y reproducción</translation>
+    </message>
+    <message>
+        <source>&amp;Language</source>
+        <translation>&amp;Idioma</translation>
+    </message>
+    <message>
+        <source>System default</source>
+        <translation>Predeterminado del sistema</translation>
+    </message>
+    <message>
+        <source>&amp;Reset layout</source>
+        <translation>&amp;Restablecer disposición</translation>
+    </message>
+    <message>
+        <source>&amp;Help</source>
+        <translation>Ay&amp;uda</translation>
+    </message>
+    <message>
+        <source>&amp;About</source>
+        <translation>&amp;Acerca de</translation>
+    </message>
+    <message>
+        <source>Record to</source>
+        <translation>Grabar en</translation>
+    </message>
+    <message>
+        <source>Roomba Dashboard recordings (*.oirec)</source>
+        <translation>Grabaciones de Roomba Dashboard (*.oirec)</translation>
+    </message>
+    <message>
+        <source>Open recording</source>
+        <translation>Abrir grabación</translation>
+    </message>
+    <message>
+        <source>Roomba Dashboard recordings (*.oirec);;All files (*)</source>
+        <translation>Grabaciones de Roomba Dashboard (*.oirec);;Todos los archivos (*)</translation>
+    </message>
+    <message>
+        <source>This file cannot be replayed.
+
+%1</source>
+        <translation>Este archivo no se puede reproducir.
+
+%1</translation>
+    </message>
+    <message>
+        <source>Export recording as CSV</source>
+        <translation>Exportar grabación como CSV</translation>
+    </message>
+    <message>
+        <source>Save CSV as</source>
+        <translation>Guardar CSV como</translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv)</source>
+        <translation>Archivos CSV (*.csv)</translation>
+    </message>
+    <message>
+        <source>Nothing was written.
+
+%1</source>
+        <translation>No se escribió nada.
+
+%1</translation>
+    </message>
+    <message>
+        <source>Wrote %1</source>
+        <translation>Se escribió %1</translation>
+    </message>
+    <message>
+        <source>● REC %1 kB %2</source>
+        <translation>● REC %1 kB %2</translation>
+    </message>
+    <message>
+        <source>Recording stopped: %1</source>
+        <translation>Grabación detenida: %1</translation>
+    </message>
+    <message>
+        <source>closed</source>
+        <translation>cerrado</translation>
+    </message>
+    <message>
+        <source>connecting</source>
+        <translation>conectando</translation>
+    </message>
+    <message>
+        <source>streaming</source>
+        <translation>transmitiendo</translation>
+    </message>
+    <message>
+        <source>stale</source>
+        <translation>obsoleto</translation>
+    </message>
+    <message>
+        <source>lost</source>
+        <translation>perdido</translation>
+    </message>
+    <message>
+        <source>reconnecting</source>
+        <translation>reconectando</translation>
+    </message>
+    <message>
+        <source>  REPLAY, NOT LIVE  </source>
+        <translation>  REPRODUCCIÓN, NO EN VIVO  </translation>
+    </message>
+    <message>
+        <source>  NO LIVE DATA  </source>
+        <translation>  SIN DATOS EN VIVO  </translation>
+    </message>
+    <message>
+        <source>Link: %1</source>
+        <translation>Enlace: %1</translation>
+    </message>
+    <message>
+        <source>%1 frames/s</source>
+        <translation>%1 tramas/s</translation>
+    </message>
+    <message>
+        <source>checksum failures %1, resyncs %2</source>
+        <translation>fallos de suma de comprobación %1, resincronizaciones %2</translation>
+    </message>
+</context>
+<context>
+    <name>MidiMelody</name>
+    <message>
+        <source>Could not import %1: %2</source>
+        <translation>No se pudo importar %1: %2</translation>
+    </message>
+    <message>
+        <source>no such file</source>
+        <translation>el archivo no existe</translation>
+    </message>
+    <message>
+        <source>not a readable Standard MIDI File</source>
+        <translation>no es un archivo MIDI estándar legible</translation>
+    </message>
+    <message>
+        <source>it has no notes</source>
+        <translation>no tiene notas</translation>
+    </message>
+    <message>
+        <source>its notes are all shorter than 1/64 s</source>
+        <translation>todas sus notas duran menos de 1/64 s</translation>
+    </message>
+</context>
+<context>
+    <name>ModePanel</name>
+    <message>
+        <source>Off</source>
+        <translation>Apagado</translation>
+    </message>
+    <message>
+        <source>Passive</source>
+        <translation>Passive</translation>
+    </message>
+    <message>
+        <source>Safe</source>
+        <translation>Safe</translation>
+    </message>
+    <message>
+        <source>Full</source>
+        <translation>Full</translation>
+    </message>
+    <message>
+        <source>cliff</source>
+        <translation>desnivel</translation>
+    </message>
+    <message>
+        <source>wheel drop</source>
+        <translation>caída de rueda</translation>
+    </message>
+    <message>
+        <source>charger</source>
+        <translation>cargador</translation>
+    </message>
+    <message>
+        <source>a safety condition</source>
+        <translation>una condición de seguridad</translation>
+    </message>
+    <message>
+        <source>, </source>
+        <translation>, </translation>
+    </message>
+    <message>
+        <source>Enter Full mode?</source>
+        <translation>¿Pasar al modo Full?</translation>
+    </message>
+    <message>
+        <source>Full mode turns off the cliff, wheel-drop and charger safety stops. The robot will drive off a table edge if told to. Enter Full mode?</source>
+        <translation>El modo Full desactiva las paradas de seguridad por desnivel, caída de rueda y cargador. El robot se caerá por el borde de una mesa si se le ordena. ¿Pasar al modo Full?</translation>
+    </message>
+    <message>
+        <source>Start</source>
+        <translation>Iniciar</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>Detener</translation>
+    </message>
+    <message>
+        <source>Reset</source>
+        <translation>Reiniciar</translation>
+    </message>
+    <message>
+        <source>Power off</source>
+        <translation>Apagar</translation>
+    </message>
+    <message>
+        <source>Clean</source>
+        <translation>Limpiar</translation>
+    </message>
+    <message>
+        <source>Spot</source>
+        <translation>Spot</translation>
+    </message>
+    <message>
+        <source>Max</source>
+        <translation>Máx.</translation>
+    </message>
+    <message>
+        <source>Seek Dock</source>
+        <translation>Buscar base</translation>
+    </message>
+    <message>
+        <source>Cover</source>
+        <translation>Cubrir</translation>
+    </message>
+    <message>
+        <source>Cover and Dock</source>
+        <translation>Cubrir y volver a la base</translation>
+    </message>
+    <message>
+        <source>Demo</source>
+        <translation>Demo</translation>
+    </message>
+    <message>
+        <source>Demo to run</source>
+        <translation>Demo que se ejecutará</translation>
+    </message>
+    <message>
+        <source>%1 (opcode %2)</source>
+        <translation>%1 (código de operación %2)</translation>
+    </message>
+    <message>
+        <source>%1 is not available on the %2</source>
+        <translation>%1 no está disponible en el %2</translation>
+    </message>
+    <message>
+        <source>Mode: %1</source>
+        <translation>Modo: %1</translation>
+    </message>
+    <message>
+        <source>Mode: unknown</source>
+        <translation>Modo: desconocido</translation>
+    </message>
+    <message>
+        <source>The robot left Safe mode by itself (%1) and is in Passive mode.</source>
+        <translation>El robot salió solo del modo Safe (%1) y está en modo Passive.</translation>
+    </message>
+    <message>
+        <source>Firmware: %1</source>
+        <translation>Firmware: %1</translation>
+    </message>
+</context>
+<context>
+    <name>MotorsPanel</name>
+    <message>
+        <source>Motors</source>
+        <translation>Motores</translation>
+    </message>
+    <message>
+        <source>PWM Motors</source>
+        <translation>Motores PWM</translation>
+    </message>
+    <message>
+        <source>Buttons</source>
+        <translation>Botones</translation>
+    </message>
+    <message>
+        <source>Low Side Drivers</source>
+        <translation>Controladores de lado bajo</translation>
+    </message>
+    <message>
+        <source>PWM Low Side Drivers</source>
+        <translation>Controladores de lado bajo PWM</translation>
+    </message>
+    <message>
+        <source>Digital Outputs</source>
+        <translation>Salidas digitales</translation>
+    </message>
+    <message>
+        <source>Send IR</source>
+        <translation>Enviar IR</translation>
+    </message>
+    <message>
+        <source>Clean</source>
+        <translation>Limpiar</translation>
+    </message>
+    <message>
+        <source>Spot</source>
+        <translation>Spot</translation>
+    </message>
+    <message>
+        <source>Dock</source>
+        <translation>Base</translation>
+    </message>
+    <message>
+        <source>Minute</source>
+        <translation>Minuto</translation>
+    </message>
+    <message>
+        <source>Hour</source>
+        <translation>Hora</translation>
+    </message>
+    <message>
+        <source>Day</source>
+        <translation>Día</translation>
+    </message>
+    <message>
+        <source>Schedule</source>
+        <translation>Programación</translation>
+    </message>
+    <message>
+        <source>Clock</source>
+        <translation>Reloj</translation>
+    </message>
+    <message>
+        <source>Brushes and vacuum — Motors (138)</source>
+        <translation>Cepillos y aspiración — Motores (138)</translation>
+    </message>
+    <message>
+        <source>Main brush</source>
+        <translation>Cepillo principal</translation>
+    </message>
+    <message>
+        <source>Outward</source>
+        <translation>Hacia fuera</translation>
+    </message>
+    <message>
+        <source>Side brush</source>
+        <translation>Cepillo lateral</translation>
+    </message>
+    <message>
+        <source>Clockwise</source>
+        <translation>Sentido horario</translation>
+    </message>
+    <message>
+        <source>Vacuum</source>
+        <translation>Aspiración</translation>
+    </message>
+    <message>
+        <source>Duty cycle — PWM Motors (144)</source>
+        <translation>Ciclo de trabajo — Motores PWM (144)</translation>
+    </message>
+    <message>
+        <source>Brushes -127..127 (negative turns them the other way), vacuum 0..127; 127 is full power.</source>
+        <translation>Cepillos -127..127 (negativo los gira al revés), aspiración 0..127; 127 es la potencia máxima.</translation>
+    </message>
+    <message>
+        <source>Press a button — Buttons (165)</source>
+        <translation>Pulsar un botón — Botones (165)</translation>
+    </message>
+    <message>
+        <source>Low side drivers — Low Side Drivers (138)</source>
+        <translation>Controladores de lado bajo — Controladores de lado bajo (138)</translation>
+    </message>
+    <message>
+        <source>Duty cycle — PWM Low Side Drivers (144)</source>
+        <translation>Ciclo de trabajo — Controladores de lado bajo PWM (144)</translation>
+    </message>
+    <message>
+        <source>LD%1</source>
+        <translation>LD%1</translation>
+    </message>
+    <message>
+        <source>0..128; 128 is 100%.</source>
+        <translation>0..128; 128 es el 100 %.</translation>
+    </message>
+    <message>
+        <source>Cargo bay — Digital Outputs (147)</source>
+        <translation>Bahía de carga — Salidas digitales (147)</translation>
+    </message>
+    <message>
+        <source>Output %1</source>
+        <translation>Salida %1</translation>
+    </message>
+    <message>
+        <source>IR output — Send IR (151)</source>
+        <translation>Salida IR — Enviar IR (151)</translation>
+    </message>
+    <message>
+        <source>Byte</source>
+        <translation>Byte</translation>
+    </message>
+    <message>
+        <source>All off</source>
+        <translation>Apagar todo</translation>
+    </message>
+    <message>
+        <source>Not on the %1, so not shown: %2.</source>
+        <translation>No existen en el %1, por lo que no se muestran: %2.</translation>
+    </message>
+    <message>
+        <source>Last sent: —</source>
+        <translation>Último envío: —</translation>
+    </message>
+    <message>
+        <source>Last sent: %1</source>
+        <translation>Último envío: %1</translation>
+    </message>
+</context>
+<context>
+    <name>OdometryMap</name>
+    <message>
+        <source>Zoom in</source>
+        <translation>Acercar</translation>
+    </message>
+    <message>
+        <source>Zoom out</source>
+        <translation>Alejar</translation>
+    </message>
+    <message>
+        <source>Centre</source>
+        <translation>Centrar</translation>
+    </message>
+    <message>
+        <source>Centre the map on the robot</source>
+        <translation>Centra el mapa en el robot</translation>
+    </message>
+    <message>
+        <source>Reset</source>
+        <translation>Reiniciar</translation>
+    </message>
+    <message>
+        <source>Clear the trail and start the odometry again at the origin</source>
+        <translation>Borra el rastro y reinicia la odometría en el origen</translation>
+    </message>
+    <message>
+        <source>Wheel base</source>
+        <translation>Distancia entre ruedas</translation>
+    </message>
+    <message>
+        <source>Wheel Ø</source>
+        <translation>Ø de rueda</translation>
+    </message>
+    <message>
+        <source>Odometry map</source>
+        <translation>Mapa de odometría</translation>
+    </message>
+    <message>
+        <source>The %1 has no wheel encoders; it reports distance and angle itself</source>
+        <translation>El %1 no tiene codificadores de rueda; informa él mismo de la distancia y el ángulo</translation>
+    </message>
+    <message>
+        <source>Distance between the wheels&apos; contact points</source>
+        <translation>Distancia entre los puntos de contacto de las ruedas</translation>
+    </message>
+    <message>
+        <source>Wheel diameter; 508.8 encoder counts are one turn</source>
+        <translation>Diámetro de rueda; 508.8 cuentas del codificador son una vuelta</translation>
+    </message>
+    <message>
+        <source>x %1 mm   y %2 mm   θ %3°</source>
+        <translation>x %1 mm   y %2 mm   θ %3°</translation>
+    </message>
+    <message>
+        <source>   drift %1 mm</source>
+        <translation>   deriva %1 mm</translation>
+    </message>
+    <message>
+        <source>Robot at x %1 mm, y %2 mm, heading %3 degrees</source>
+        <translation>Robot en x %1 mm, y %2 mm, rumbo %3 grados</translation>
+    </message>
+    <message>
+        <source>; %1 mm from the true pose</source>
+        <translation>; a %1 mm de la pose real</translation>
+    </message>
+    <message>
+        <source>odometry</source>
+        <translation>odometría</translation>
+    </message>
+    <message>
+        <source>true pose</source>
+        <translation>pose real</translation>
+    </message>
+    <message>
+        <source>dock</source>
+        <translation>base</translation>
+    </message>
+    <message>
+        <source>%1 m</source>
+        <translation>%1 m</translation>
+    </message>
+    <message>
+        <source>%1 mm</source>
+        <translation>%1 mm</translation>
+    </message>
+</context>
+<context>
+    <name>PacketName</name>
+    <message>
+        <source>Angle</source>
+        <translation>Ángulo</translation>
+    </message>
+    <message>
+        <source>Battery Capacity</source>
+        <translation>Capacidad de la batería</translation>
+    </message>
+    <message>
+        <source>Battery Charge</source>
+        <translation>Carga de la batería</translation>
+    </message>
+    <message>
+        <source>Bumps and Wheel Drops</source>
+        <translation>Choques y caídas de rueda</translation>
+    </message>
+    <message>
+        <source>Buttons</source>
+        <translation>Botones</translation>
+    </message>
+    <message>
+        <source>Cargo Bay Analog Signal</source>
+        <translation>Señal analógica de la bahía de carga</translation>
+    </message>
+    <message>
+        <source>Cargo Bay Digital Inputs</source>
+        <translation>Entradas digitales de la bahía de carga</translation>
+    </message>
+    <message>
+        <source>Charging Sources Available</source>
+        <translation>Fuentes de carga disponibles</translation>
+    </message>
+    <message>
+        <source>Charging State</source>
+        <translation>Estado de carga</translation>
+    </message>
+    <message>
+        <source>Cliff Front Left</source>
+        <translation>Desnivel delantero izquierdo</translation>
+    </message>
+    <message>
+        <source>Cliff Front Left Signal</source>
+        <translation>Señal de desnivel delantero izquierdo</translation>
+    </message>
+    <message>
+        <source>Cliff Front Right</source>
+        <translation>Desnivel delantero derecho</translation>
+    </message>
+    <message>
+        <source>Cliff Front Right Signal</source>
+        <translation>Señal de desnivel delantero derecho</translation>
+    </message>
+    <message>
+        <source>Cliff Left</source>
+        <translation>Desnivel izquierdo</translation>
+    </message>
+    <message>
+        <source>Cliff Left Signal</source>
+        <translation>Señal de desnivel izquierdo</translation>
+    </message>
+    <message>
+        <source>Cliff Right</source>
+        <translation>Desnivel derecho</translation>
+    </message>
+    <message>
+        <source>Cliff Right Signal</source>
+        <translation>Señal de desnivel derecho</translation>
+    </message>
+    <message>
+        <source>Current</source>
+        <translation>Corriente</translation>
+    </message>
+    <message>
+        <source>Dirt Detect</source>
+        <translation>Detección de suciedad</translation>
+    </message>
+    <message>
+        <source>Distance</source>
+        <translation>Distancia</translation>
+    </message>
+    <message>
+        <source>Infrared Character Left</source>
+        <translation>Carácter infrarrojo izquierdo</translation>
+    </message>
+    <message>
+        <source>Infrared Character Right</source>
+        <translation>Carácter infrarrojo derecho</translation>
+    </message>
+    <message>
+        <source>Left Encoder Counts</source>
+        <translation>Cuentas del codificador izquierdo</translation>
+    </message>
+    <message>
+        <source>Left Motor Current</source>
+        <translation>Corriente del motor izquierdo</translation>
+    </message>
+    <message>
+        <source>Light Bump Center Left Signal</source>
+        <translation>Señal del parachoques de luz central izquierdo</translation>
+    </message>
+    <message>
+        <source>Light Bump Center Right Signal</source>
+        <translation>Señal del parachoques de luz central derecho</translation>
+    </message>
+    <message>
+        <source>Light Bump Front Left Signal</source>
+        <translation>Señal del parachoques de luz delantero izquierdo</translation>
+    </message>
+    <message>
+        <source>Light Bump Front Right Signal</source>
+        <translation>Señal del parachoques de luz delantero derecho</translation>
+    </message>
+    <message>
+        <source>Light Bump Left Signal</source>
+        <translation>Señal del parachoques de luz izquierdo</translation>
+    </message>
+    <message>
+        <source>Light Bump Right Signal</source>
+        <translation>Señal del parachoques de luz derecho</translation>
+    </message>
+    <message>
+        <source>Light Bumper</source>
+        <translation>Parachoques de luz</translation>
+    </message>
+    <message>
+        <source>Main Brush Motor Current</source>
+        <translation>Corriente del motor del cepillo principal</translation>
+    </message>
+    <message>
+        <source>Number of Stream Packets</source>
+        <translation>Número de paquetes del flujo de datos</translation>
+    </message>
+    <message>
+        <source>OI Mode</source>
+        <translation>Modo OI</translation>
+    </message>
+    <message>
+        <source>Overcurrents</source>
+        <translation>Sobrecorrientes</translation>
+    </message>
+    <message>
+        <source>Requested Left Velocity</source>
+        <translation>Velocidad izquierda solicitada</translation>
+    </message>
+    <message>
+        <source>Requested Radius</source>
+        <translation>Radio solicitado</translation>
+    </message>
+    <message>
+        <source>Requested Right Velocity</source>
+        <translation>Velocidad derecha solicitada</translation>
+    </message>
+    <message>
+        <source>Requested Velocity</source>
+        <translation>Velocidad solicitada</translation>
+    </message>
+    <message>
+        <source>Right Encoder Counts</source>
+        <translation>Cuentas del codificador derecho</translation>
+    </message>
+    <message>
+        <source>Right Motor Current</source>
+        <translation>Corriente del motor derecho</translation>
+    </message>
+    <message>
+        <source>Side Brush Motor Current</source>
+        <translation>Corriente del motor del cepillo lateral</translation>
+    </message>
+    <message>
+        <source>Song Number</source>
+        <translation>Número de canción</translation>
+    </message>
+    <message>
+        <source>Song Playing</source>
+        <translation>Canción en reproducción</translation>
+    </message>
+    <message>
+        <source>Stasis</source>
+        <translation>Estasis</translation>
+    </message>
+    <message>
+        <source>Temperature</source>
+        <translation>Temperatura</translation>
+    </message>
+    <message>
+        <source>Unused</source>
+        <translation>Sin uso</translation>
+    </message>
+    <message>
+        <source>Virtual Wall</source>
+        <translation>Pared virtual</translation>
+    </message>
+    <message>
+        <source>Voltage</source>
+        <translation>Tensión</translation>
+    </message>
+    <message>
+        <source>Wall</source>
+        <translation>Pared</translation>
+    </message>
+    <message>
+        <source>Wall Signal</source>
+        <translation>Señal de pared</translation>
+    </message>
+</context>
+<context>
+    <name>PianoRoll</name>
+    <message>
+        <source>rest</source>
+        <translation>silencio</translation>
+    </message>
+    <message>
+        <source>Click to add a note, drag a note to move it, drag its right edge to lengthen it</source>
+        <translation>Haga clic para añadir una nota, arrastre una nota para moverla, arrastre su borde derecho para alargarla</translation>
+    </message>
+    <message>
+        <source>Piano roll</source>
+        <translation>Rollo de piano</translation>
+    </message>
+    <message>
+        <source>1 note, %1 s.</source>
+        <translation>1 nota, %1 s.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n notes, %1 s.</source>
+        <translation>
+            <numerusform>%n nota, %1 s.</numerusform>
+            <numerusform>%n notas, %1 s.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Selected: note %1, %2, %3/64 s.</source>
+        <translation>Seleccionada: nota %1, %2, %3/64 s.</translation>
+    </message>
+    <message>
+        <source>Left and Right select a note, Up and Down change its pitch, Shift+Left and Shift+Right its length, Insert adds a note, Delete removes one.</source>
+        <translation>Izquierda y Derecha seleccionan una nota, Arriba y Abajo cambian su tono, Mayús+Izquierda y Mayús+Derecha su duración, Insert añade una nota y Supr la elimina.</translation>
+    </message>
+    <message>
+        <source>A song holds at most %1 notes; remove one first</source>
+        <translation>Una canción admite como máximo %1 notas; elimine una primero</translation>
+    </message>
+</context>
+<context>
+    <name>ReplayBar</name>
+    <message>
+        <source>One frame back</source>
+        <translation>Una trama atrás</translation>
+    </message>
+    <message>
+        <source>One frame forward</source>
+        <translation>Una trama adelante</translation>
+    </message>
+    <message>
+        <source>Replay speed</source>
+        <translation>Velocidad de reproducción</translation>
+    </message>
+    <message>
+        <source>Position in the recording</source>
+        <translation>Posición en la grabación</translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation>Pausa</translation>
+    </message>
+    <message>
+        <source>Play</source>
+        <translation>Reproducir</translation>
+    </message>
+    <message>
+        <source>%1 / %2, frame %3 of %4</source>
+        <translation>%1 / %2, trama %3 de %4</translation>
+    </message>
+    <message>
+        <source>Damaged: replays up to %1</source>
+        <translation>Dañada: se reproduce hasta %1</translation>
+    </message>
+</context>
+<context>
+    <name>RobotDiagram</name>
+    <message>
+        <source>Robot sensor diagram</source>
+        <translation>Diagrama de sensores del robot</translation>
+    </message>
+    <message>
+        <source>Data is stale</source>
+        <translation>Los datos están obsoletos</translation>
+    </message>
+    <message>
+        <source>Bump left</source>
+        <translation>Parachoques izquierdo</translation>
+    </message>
+    <message>
+        <source>Bump right</source>
+        <translation>Parachoques derecho</translation>
+    </message>
+    <message>
+        <source>Wheel drop left</source>
+        <translation>Caída de rueda izquierda</translation>
+    </message>
+    <message>
+        <source>Wheel drop right</source>
+        <translation>Caída de rueda derecha</translation>
+    </message>
+    <message>
+        <source>Caster wheel drop</source>
+        <translation>Caída de rueda loca</translation>
+    </message>
+    <message>
+        <source>Cliff left</source>
+        <translation>Desnivel izquierdo</translation>
+    </message>
+    <message>
+        <source>Cliff front left</source>
+        <translation>Desnivel delantero izquierdo</translation>
+    </message>
+    <message>
+        <source>Cliff front right</source>
+        <translation>Desnivel delantero derecho</translation>
+    </message>
+    <message>
+        <source>Cliff right</source>
+        <translation>Desnivel derecho</translation>
+    </message>
+    <message>
+        <source>Wall</source>
+        <translation>Pared</translation>
+    </message>
+    <message>
+        <source>Light bumper %1</source>
+        <translation>Parachoques de luz %1</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>No sensor data</source>
+        <translation>Sin datos de sensores</translation>
+    </message>
+    <message>
+        <source>Nothing detected</source>
+        <translation>Nada detectado</translation>
+    </message>
+    <message>
+        <source>; </source>
+        <translation>; </translation>
+    </message>
+    <message>
+        <source>Buttons</source>
+        <translation>Botones</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>ninguno</translation>
+    </message>
+    <message>
+        <source>Virtual wall</source>
+        <translation>Pared virtual</translation>
+    </message>
+    <message>
+        <source>seen</source>
+        <translation>detectada</translation>
+    </message>
+    <message>
+        <source>Overcurrent</source>
+        <translation>Sobrecorriente</translation>
+    </message>
+    <message>
+        <source>IR</source>
+        <translation>IR</translation>
+    </message>
+    <message>
+        <source>Stasis</source>
+        <translation>Estasis</translation>
+    </message>
+    <message>
+        <source>not moving</source>
+        <translation>sin movimiento</translation>
+    </message>
+    <message>
+        <source>moving</source>
+        <translation>en movimiento</translation>
+    </message>
+    <message>
+        <source>DIRTY WHEEL</source>
+        <translation>RUEDA SUCIA</translation>
+    </message>
+    <message>
+        <source>reserved (3)</source>
+        <translation>reservado (3)</translation>
+    </message>
+    <message>
+        <source>IR omni</source>
+        <translation>IR omni</translation>
+    </message>
+    <message>
+        <source>IR left</source>
+        <translation>IR izquierdo</translation>
+    </message>
+    <message>
+        <source>IR right</source>
+        <translation>IR derecho</translation>
+    </message>
+    <message>
+        <source>CARGO BAY</source>
+        <translation>BAHÍA DE CARGA</translation>
+    </message>
+    <message>
+        <source>DROP</source>
+        <translation>CAÍDA</translation>
+    </message>
+    <message>
+        <source>WALL</source>
+        <translation>PARED</translation>
+    </message>
+    <message>
+        <source>STALE</source>
+        <translation>OBSOLETO</translation>
+    </message>
+</context>
+<context>
+    <name>RtttlImport</name>
+    <message>
+        <source>RTTTL: %1</source>
+        <translation>RTTTL: %1</translation>
+    </message>
+    <message>
+        <source>expected NAME:DEFAULTS:NOTES, e.g. &quot;Beep:d=4,o=5,b=120:c,e,g&quot;</source>
+        <translation>se esperaba NOMBRE:VALORES:NOTAS, p. ej. "Beep:d=4,o=5,b=120:c,e,g"</translation>
+    </message>
+    <message>
+        <source>default &quot;%1&quot; is not KEY=NUMBER</source>
+        <translation>el valor predeterminado "%1" no es CLAVE=NÚMERO</translation>
+    </message>
+    <message>
+        <source>default &quot;%1&quot; is not valid (d: 1..32, o: 4..7, b: 1..900)</source>
+        <translation>el valor predeterminado "%1" no es válido (d: 1..32, o: 4..7, b: 1..900)</translation>
+    </message>
+    <message>
+        <source>the tune has no notes</source>
+        <translation>la melodía no tiene notas</translation>
+    </message>
+    <message>
+        <source>note %1 &quot;%2&quot;: %3</source>
+        <translation>nota %1 "%2": %3</translation>
+    </message>
+    <message>
+        <source>duration must be 1, 2, 4, 8, 16 or 32</source>
+        <translation>la duración debe ser 1, 2, 4, 8, 16 o 32</translation>
+    </message>
+    <message>
+        <source>no note letter</source>
+        <translation>falta la letra de la nota</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a note (a..g, h) or pause (p)</source>
+        <translation>"%1" no es una nota (a..g, h) ni una pausa (p)</translation>
+    </message>
+    <message>
+        <source>octave must be 4..7</source>
+        <translation>la octava debe ser 4..7</translation>
+    </message>
+    <message>
+        <source>unexpected &quot;%1&quot;</source>
+        <translation>"%1" inesperado</translation>
+    </message>
+    <message>
+        <source>lasts %1/64 s at %2 beats per minute; a note lasts 1..255</source>
+        <translation>dura %1/64 s a %2 pulsos por minuto; una nota dura 1..255</translation>
+    </message>
+</context>
+<context>
+    <name>RxFrameScanner</name>
+    <message>
+        <source>text &quot;%1&quot;</source>
+        <translation>texto "%1"</translation>
+    </message>
+    <message>
+        <source>outside any stream frame</source>
+        <translation>fuera de toda trama del flujo de datos</translation>
+    </message>
+    <message>
+        <source>stream frame: %1</source>
+        <translation>trama del flujo de datos: %1</translation>
+    </message>
+    <message>
+        <source>reply: %1</source>
+        <translation>respuesta: %1</translation>
+    </message>
+</context>
+<context>
+    <name>ScheduleEditor</name>
+    <message>
+        <source>Sunday</source>
+        <translation>Domingo</translation>
+    </message>
+    <message>
+        <source>Monday</source>
+        <translation>Lunes</translation>
+    </message>
+    <message>
+        <source>Tuesday</source>
+        <translation>Martes</translation>
+    </message>
+    <message>
+        <source>Wednesday</source>
+        <translation>Miércoles</translation>
+    </message>
+    <message>
+        <source>Thursday</source>
+        <translation>Jueves</translation>
+    </message>
+    <message>
+        <source>Friday</source>
+        <translation>Viernes</translation>
+    </message>
+    <message>
+        <source>Saturday</source>
+        <translation>Sábado</translation>
+    </message>
+    <message>
+        <source>Weekly cleaning schedule (167)</source>
+        <translation>Programación semanal de limpieza (167)</translation>
+    </message>
+    <message>
+        <source>Cleaning time on %1</source>
+        <translation>Hora de limpieza: %1</translation>
+    </message>
+    <message>
+        <source>Send Schedule</source>
+        <translation>Enviar programación</translation>
+    </message>
+    <message>
+        <source>Disable all</source>
+        <translation>Desactivar todo</translation>
+    </message>
+    <message>
+        <source>Clear every day and send a schedule with no cleaning</source>
+        <translation>Borra todos los días y envía una programación sin limpiezas</translation>
+    </message>
+    <message>
+        <source>Nothing sent yet. The robot cannot report its schedule, so this shows what was last sent from here.</source>
+        <translation>Aún no se ha enviado nada. El robot no puede informar de su programación, así que aquí se muestra lo último que se envió desde este equipo.</translation>
+    </message>
+    <message>
+        <source>Last sent: %1 at %2</source>
+        <translation>Último envío: %1 a las %2</translation>
+    </message>
+    <message>
+        <source>Presets</source>
+        <translation>Preajustes</translation>
+    </message>
+    <message>
+        <source>Saved presets</source>
+        <translation>Preajustes guardados</translation>
+    </message>
+    <message>
+        <source>Load</source>
+        <translation>Cargar</translation>
+    </message>
+    <message>
+        <source>Delete</source>
+        <translation>Eliminar</translation>
+    </message>
+    <message>
+        <source>Preset name</source>
+        <translation>Nombre del preajuste</translation>
+    </message>
+    <message>
+        <source>Save</source>
+        <translation>Guardar</translation>
+    </message>
+    <message>
+        <source>Save the grid under this name</source>
+        <translation>Guarda la cuadrícula con este nombre</translation>
+    </message>
+    <message>
+        <source>Robot clock (168)</source>
+        <translation>Reloj del robot (168)</translation>
+    </message>
+    <message>
+        <source>Set from this computer&apos;s clock</source>
+        <translation>Tomar del reloj de este equipo</translation>
+    </message>
+    <message>
+        <source>Day for the robot clock</source>
+        <translation>Día para el reloj del robot</translation>
+    </message>
+    <message>
+        <source>Time for the robot clock</source>
+        <translation>Hora para el reloj del robot</translation>
+    </message>
+    <message>
+        <source>Set Day/Time</source>
+        <translation>Ajustar día/hora</translation>
+    </message>
+    <message>
+        <source>The %1 has no cleaning schedule or clock: Schedule (167) and Set Day/Time (168) are Roomba 500 / Create 2 only.</source>
+        <translation>El %1 no tiene programación de limpieza ni reloj: Schedule (167) y Set Day/Time (168) son solo para Roomba 500 / Create 2.</translation>
+    </message>
+    <message>
+        <source>Will send: %1</source>
+        <translation>Enviará: %1</translation>
+    </message>
+    <message>
+        <source>Not sent: %1</source>
+        <translation>No enviado: %1</translation>
+    </message>
+    <message>
+        <source>Sent: no scheduled cleaning.</source>
+        <translation>Enviado: ninguna limpieza programada.</translation>
+    </message>
+    <message>
+        <source>Schedule sent.</source>
+        <translation>Programación enviada.</translation>
+    </message>
+    <message>
+        <source>Robot clock set to %1 %2.</source>
+        <translation>Reloj del robot ajustado a %1 %2.</translation>
+    </message>
+    <message>
+        <source>Not saved: give the preset a name.</source>
+        <translation>No guardado: asigne un nombre al preajuste.</translation>
+    </message>
+    <message>
+        <source>Preset &quot;%1&quot; replaced.</source>
+        <translation>Preajuste "%1" reemplazado.</translation>
+    </message>
+    <message>
+        <source>Preset &quot;%1&quot; saved.</source>
+        <translation>Preajuste "%1" guardado.</translation>
+    </message>
+    <message>
+        <source>No preset named &quot;%1&quot;.</source>
+        <translation>No hay ningún preajuste llamado "%1".</translation>
+    </message>
+    <message>
+        <source>Preset &quot;%1&quot; is damaged: %2</source>
+        <translation>El preajuste "%1" está dañado: %2</translation>
+    </message>
+    <message>
+        <source>Preset &quot;%1&quot; loaded; press Send Schedule to send it.</source>
+        <translation>Preajuste "%1" cargado; pulse Enviar programación para enviarlo.</translation>
+    </message>
+    <message>
+        <source>Preset &quot;%1&quot; deleted.</source>
+        <translation>Preajuste "%1" eliminado.</translation>
+    </message>
+</context>
+<context>
+    <name>ScriptEditor</name>
+    <message>
+        <source>Drive 40 cm and stop</source>
+        <translation>Conducir 40 cm y parar</translation>
+    </message>
+    <message>
+        <source>Toggle LED on bump</source>
+        <translation>Cambiar LED al chocar</translation>
+    </message>
+    <message>
+        <source>Drive in a square</source>
+        <translation>Conducir en cuadrado</translation>
+    </message>
+    <message>
+        <source>Load an example…</source>
+        <translation>Cargar un ejemplo…</translation>
+    </message>
+    <message>
+        <source>Example scripts</source>
+        <translation>Scripts de ejemplo</translation>
+    </message>
+    <message>
+        <source>One command a line, e.g.
+%1</source>
+        <translation>Un comando por línea, p. ej.
+%1</translation>
+    </message>
+    <message>
+        <source>Script</source>
+        <translation>Script</translation>
+    </message>
+    <message>
+        <source>Upload (152)</source>
+        <translation>Subir (152)</translation>
+    </message>
+    <message>
+        <source>Play (153)</source>
+        <translation>Ejecutar (153)</translation>
+    </message>
+    <message>
+        <source>Run the stored script</source>
+        <translation>Ejecuta el script almacenado</translation>
+    </message>
+    <message>
+        <source>Show Script (154)</source>
+        <translation>Mostrar script (154)</translation>
+    </message>
+    <message>
+        <source>Read the stored script back and compare it with what was uploaded</source>
+        <translation>Lee el script almacenado y lo compara con lo que se subió</translation>
+    </message>
+    <message>
+        <source>Demos (136)</source>
+        <translation>Demos (136)</translation>
+    </message>
+    <message>
+        <source>%1  %2</source>
+        <translation>%1  %2</translation>
+    </message>
+    <message>
+        <source>Scripts and demos are for the original Create only: %1.</source>
+        <translation>Los scripts y las demos son solo para el Create original: %1.</translation>
+    </message>
+    <message>
+        <source>? / %1 bytes</source>
+        <translation>? / %1 bytes</translation>
+    </message>
+    <message>
+        <source>0 / %1 bytes</source>
+        <translation>0 / %1 bytes</translation>
+    </message>
+    <message>
+        <source>Line %1: %2</source>
+        <translation>Línea %1: %2</translation>
+    </message>
+    <message>
+        <source>%1 / %2 bytes</source>
+        <translation>%1 / %2 bytes</translation>
+    </message>
+    <message>
+        <source>The script is %1 bytes; the robot stores at most %2. Remove %3 bytes to upload it.</source>
+        <translation>El script ocupa %1 bytes; el robot almacena como máximo %2. Quite %3 bytes para subirlo.</translation>
+    </message>
+    <message>
+        <source>%1. %2</source>
+        <translation>%1. %2</translation>
+    </message>
+    <message>
+        <source>Store the script on the robot (152)</source>
+        <translation>Almacena el script en el robot (152)</translation>
+    </message>
+    <message>
+        <source>Fix the script before uploading it</source>
+        <translation>Corrija el script antes de subirlo</translation>
+    </message>
+    <message>
+        <source>Pausing the stream, then asking for the robot&apos;s script…</source>
+        <translation>Pausando el flujo de datos y pidiendo después el script del robot…</translation>
+    </message>
+    <message>
+        <source>Waiting for the robot&apos;s script…</source>
+        <translation>Esperando el script del robot…</translation>
+    </message>
+    <message>
+        <source>(empty)</source>
+        <translation>(vacío)</translation>
+    </message>
+    <message>
+        <source>%1 (not readable: %2)</source>
+        <translation>%1 (no legible: %2)</translation>
+    </message>
+    <message>
+        <source>The robot&apos;s script matches what was sent: %1</source>
+        <translation>El script del robot coincide con lo enviado: %1</translation>
+    </message>
+    <message>
+        <source>The robot&apos;s script differs from what was sent.
+On the robot: %1
+Sent: %2</source>
+        <translation>El script del robot difiere de lo enviado.
+En el robot: %1
+Enviado: %2</translation>
+    </message>
+    <message>
+        <source>nothing uploaded yet</source>
+        <translation>aún no se ha subido nada</translation>
+    </message>
+    <message>
+        <source>No reply to Show Script within %1 s. Is the robot connected and awake?</source>
+        <translation>Sin respuesta a Mostrar script en %1 s. ¿Está el robot conectado y activo?</translation>
+    </message>
+</context>
+<context>
+    <name>SensorGauges</name>
+    <message>
+        <source>STALE — no fresh data from the robot</source>
+        <translation>OBSOLETO — no hay datos recientes del robot</translation>
+    </message>
+    <message>
+        <source>Battery</source>
+        <translation>Batería</translation>
+    </message>
+    <message>
+        <source>Drive</source>
+        <translation>Conducción</translation>
+    </message>
+    <message>
+        <source>Motors and dirt</source>
+        <translation>Motores y suciedad</translation>
+    </message>
+    <message>
+        <source>Cargo bay</source>
+        <translation>Bahía de carga</translation>
+    </message>
+    <message>
+        <source>Charge</source>
+        <translation>Carga</translation>
+    </message>
+    <message>
+        <source>Current</source>
+        <translation>Corriente</translation>
+    </message>
+    <message>
+        <source>Temperature</source>
+        <translation>Temperatura</translation>
+    </message>
+    <message>
+        <source>Charging</source>
+        <translation>Carga</translation>
+    </message>
+    <message>
+        <source>Charging sources</source>
+        <translation>Fuentes de carga</translation>
+    </message>
+    <message>
+        <source>Requested velocity</source>
+        <translation>Velocidad solicitada</translation>
+    </message>
+    <message>
+        <source>Requested radius</source>
+        <translation>Radio solicitado</translation>
+    </message>
+    <message>
+        <source>Left wheel motor</source>
+        <translation>Motor rueda izquierda</translation>
+    </message>
+    <message>
+        <source>Right wheel motor</source>
+        <translation>Motor rueda derecha</translation>
+    </message>
+    <message>
+        <source>Main brush motor</source>
+        <translation>Motor cepillo principal</translation>
+    </message>
+    <message>
+        <source>Side brush motor</source>
+        <translation>Motor cepillo lateral</translation>
+    </message>
+    <message>
+        <source>Dirt detect</source>
+        <translation>Detección de suciedad</translation>
+    </message>
+    <message>
+        <source>Analog input</source>
+        <translation>Entrada analógica</translation>
+    </message>
+    <message>
+        <source>Baud rate change</source>
+        <translation>Cambio de baudios</translation>
+    </message>
+    <message>
+        <source>Digital input %1</source>
+        <translation>Entrada digital %1</translation>
+    </message>
+    <message>
+        <source>%1 of %2 mAh</source>
+        <translation>%1 de %2 mAh</translation>
+    </message>
+    <message>
+        <source>discharging</source>
+        <translation>descargando</translation>
+    </message>
+    <message>
+        <source>charging</source>
+        <translation>cargando</translation>
+    </message>
+    <message>
+        <source>no current</source>
+        <translation>sin corriente</translation>
+    </message>
+    <message>
+        <source>Not charging</source>
+        <translation>Sin cargar</translation>
+    </message>
+    <message>
+        <source>Reconditioning</source>
+        <translation>Reacondicionando</translation>
+    </message>
+    <message>
+        <source>Full charging</source>
+        <translation>Carga completa</translation>
+    </message>
+    <message>
+        <source>Trickle charging</source>
+        <translation>Carga de mantenimiento</translation>
+    </message>
+    <message>
+        <source>Waiting</source>
+        <translation>En espera</translation>
+    </message>
+    <message>
+        <source>Charging fault</source>
+        <translation>Fallo de carga</translation>
+    </message>
+    <message>
+        <source>Unknown (%1)</source>
+        <translation>Desconocido (%1)</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>ninguna</translation>
+    </message>
+    <message>
+        <source> + </source>
+        <translation> + </translation>
+    </message>
+    <message>
+        <source>forward</source>
+        <translation>adelante</translation>
+    </message>
+    <message>
+        <source>backward</source>
+        <translation>atrás</translation>
+    </message>
+    <message>
+        <source>stopped</source>
+        <translation>detenido</translation>
+    </message>
+    <message>
+        <source>straight</source>
+        <translation>recto</translation>
+    </message>
+    <message>
+        <source>radius %1</source>
+        <translation>radio %1</translation>
+    </message>
+    <message>
+        <source>turn in place cw</source>
+        <translation>giro en el sitio, horario</translation>
+    </message>
+    <message>
+        <source>radius -1</source>
+        <translation>radio -1</translation>
+    </message>
+    <message>
+        <source>turn in place ccw</source>
+        <translation>giro en el sitio, antihorario</translation>
+    </message>
+    <message>
+        <source>radius 1</source>
+        <translation>radio 1</translation>
+    </message>
+    <message>
+        <source>turning left</source>
+        <translation>girando a la izquierda</translation>
+    </message>
+    <message>
+        <source>turning right</source>
+        <translation>girando a la derecha</translation>
+    </message>
+    <message>
+        <source>%1 V on pin 4</source>
+        <translation>%1 V en el pin 4</translation>
+    </message>
+    <message>
+        <source>high</source>
+        <translation>alto</translation>
+    </message>
+    <message>
+        <source>low</source>
+        <translation>bajo</translation>
+    </message>
+    <message>
+        <source>pin %1</source>
+        <translation>pin %1</translation>
+    </message>
+    <message>
+        <source>asserted (low)</source>
+        <translation>activa (baja)</translation>
+    </message>
+    <message>
+        <source>idle (high)</source>
+        <translation>inactiva (alta)</translation>
+    </message>
+</context>
+<context>
+    <name>SensorHistory</name>
+    <message>
+        <source>No channels to export.</source>
+        <translation>No hay canales para exportar.</translation>
+    </message>
+    <message>
+        <source>The time range to export is not a number.</source>
+        <translation>El intervalo de tiempo para exportar no es un número.</translation>
+    </message>
+    <message>
+        <source>Packet %1 is not a sensor packet of the %2.</source>
+        <translation>El paquete %1 no es un paquete de sensores del %2.</translation>
+    </message>
+    <message>
+        <source>Cannot write %1: %2</source>
+        <translation>No se puede escribir %1: %2</translation>
+    </message>
+    <message>
+        <source>Cannot save %1: %2</source>
+        <translation>No se puede guardar %1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>SensorPlots</name>
+    <message>
+        <source>%1 min</source>
+        <translation>%1 min</translation>
+    </message>
+    <message>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <source>Pause or resume following the newest sample (Space)</source>
+        <translation>Pausa o reanuda el seguimiento de la muestra más reciente (barra espaciadora)</translation>
+    </message>
+    <message>
+        <source>How much time the plots show</source>
+        <translation>Cuánto tiempo muestran las gráficas</translation>
+    </message>
+    <message>
+        <source>&amp;Window</source>
+        <translation>&amp;Ventana</translation>
+    </message>
+    <message>
+        <source>Add plot</source>
+        <translation>Añadir gráfica</translation>
+    </message>
+    <message>
+        <source>Add another plot below the others</source>
+        <translation>Añade otra gráfica debajo de las demás</translation>
+    </message>
+    <message>
+        <source>Export CSV</source>
+        <translation>Exportar CSV</translation>
+    </message>
+    <message>
+        <source>Write the plotted channels to a CSV file</source>
+        <translation>Escribe los canales representados en un archivo CSV</translation>
+    </message>
+    <message>
+        <source>Visible range…</source>
+        <translation>Intervalo visible…</translation>
+    </message>
+    <message>
+        <source>Whole history…</source>
+        <translation>Todo el historial…</translation>
+    </message>
+    <message>
+        <source>Remove this plot</source>
+        <translation>Quitar esta gráfica</translation>
+    </message>
+    <message>
+        <source>Sensor plot</source>
+        <translation>Gráfica de sensores</translation>
+    </message>
+    <message>
+        <source>Choose the channels to plot with the button above</source>
+        <translation>Elija los canales que desea representar con el botón de arriba</translation>
+    </message>
+    <message>
+        <source>No samples in this time range</source>
+        <translation>No hay muestras en este intervalo de tiempo</translation>
+    </message>
+    <message>
+        <source>Waiting for samples</source>
+        <translation>Esperando muestras</translation>
+    </message>
+    <message>
+        <source>No channels chosen</source>
+        <translation>Ningún canal elegido</translation>
+    </message>
+    <message>
+        <source>Channels: %1</source>
+        <translation>Canales: %1</translation>
+    </message>
+    <message>
+        <source>, </source>
+        <translation>, </translation>
+    </message>
+    <message>
+        <source>%1. %2</source>
+        <translation>%1. %2</translation>
+    </message>
+    <message>
+        <source>Time (s)</source>
+        <translation>Tiempo (s)</translation>
+    </message>
+    <message>
+        <source>Resume</source>
+        <translation>Reanudar</translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation>Pausa</translation>
+    </message>
+    <message>
+        <source>Paused: drag to pan, wheel to zoom, Space resumes</source>
+        <translation>En pausa: arrastre para desplazar, rueda para ampliar, barra espaciadora para reanudar</translation>
+    </message>
+    <message>
+        <source>Live</source>
+        <translation>En vivo</translation>
+    </message>
+    <message>
+        <source>t = %1 s</source>
+        <translation>t = %1 s</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>There is no sensor history to export.</source>
+        <translation>No hay historial de sensores para exportar.</translation>
+    </message>
+    <message>
+        <source>No channels are plotted.</source>
+        <translation>No se representa ningún canal.</translation>
+    </message>
+    <message>
+        <source>Export the visible range</source>
+        <translation>Exportar el intervalo visible</translation>
+    </message>
+    <message>
+        <source>Export the whole history</source>
+        <translation>Exportar todo el historial</translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv);;All files (*)</source>
+        <translation>Archivos CSV (*.csv);;Todos los archivos (*)</translation>
+    </message>
+    <message>
+        <source>Export failed</source>
+        <translation>Error al exportar</translation>
+    </message>
+</context>
+<context>
+    <name>SevenSegmentDisplay</name>
+    <message>
+        <source>digit %1 dark</source>
+        <translation>dígito %1 apagado</translation>
+    </message>
+    <message>
+        <source>digit %1 segments %2</source>
+        <translation>dígito %1 segmentos %2</translation>
+    </message>
+    <message>
+        <source>Lit: %1.</source>
+        <translation>Encendidos: %1.</translation>
+    </message>
+    <message>
+        <source>Arrow keys choose a segment, Space switches it.</source>
+        <translation>Las flechas eligen un segmento y la barra espaciadora lo cambia.</translation>
+    </message>
+</context>
+<context>
+    <name>SignalBars</name>
+    <message>
+        <source>L</source>
+        <translation>I</translation>
+    </message>
+    <message>
+        <source>FL</source>
+        <translation>DI</translation>
+    </message>
+    <message>
+        <source>FR</source>
+        <translation>DD</translation>
+    </message>
+    <message>
+        <source>R</source>
+        <translation>D</translation>
+    </message>
+    <message>
+        <source>CL</source>
+        <translation>CI</translation>
+    </message>
+    <message>
+        <source>CR</source>
+        <translation>CD</translation>
+    </message>
+    <message>
+        <source>Cliff</source>
+        <translation>Desnivel</translation>
+    </message>
+    <message>
+        <source>Light bump</source>
+        <translation>Parachoques de luz</translation>
+    </message>
+    <message>
+        <source>Signal bars</source>
+        <translation>Barras de señal</translation>
+    </message>
+    <message>
+        <source>cliff</source>
+        <comment>under a bar</comment>
+        <translation>desnivel</translation>
+    </message>
+    <message>
+        <source>Light</source>
+        <translation>Luz</translation>
+    </message>
+    <message>
+        <source>light</source>
+        <comment>under a bar</comment>
+        <translation>luz</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>, </source>
+        <translation>, </translation>
+    </message>
+    <message>
+        <source>Stale: %1</source>
+        <translation>Obsoleto: %1</translation>
+    </message>
+    <message>
+        <source>Cliff and light-bump signals</source>
+        <translation>Señales de desnivel y de parachoques de luz</translation>
+    </message>
+    <message>
+        <source>Cliff signals</source>
+        <translation>Señales de desnivel</translation>
+    </message>
+    <message>
+        <source>STALE — %1</source>
+        <translation>OBSOLETO — %1</translation>
+    </message>
+</context>
+<context>
+    <name>SongComposer</name>
+    <message>
+        <source>Song slot:</source>
+        <translation>Ranura de canción:</translation>
+    </message>
+    <message>
+        <source>Song slots</source>
+        <translation>Ranuras de canción</translation>
+    </message>
+    <message>
+        <source>Add note</source>
+        <translation>Añadir nota</translation>
+    </message>
+    <message>
+        <source>Add a note after the selected one</source>
+        <translation>Añade una nota después de la seleccionada</translation>
+    </message>
+    <message>
+        <source>Remove note</source>
+        <translation>Quitar nota</translation>
+    </message>
+    <message>
+        <source>Remove the selected note</source>
+        <translation>Quita la nota seleccionada</translation>
+    </message>
+    <message>
+        <source> st</source>
+        <translation> st</translation>
+    </message>
+    <message>
+        <source>Semitones to transpose by; negative is down</source>
+        <translation>Semitonos que transponer; negativo es hacia abajo</translation>
+    </message>
+    <message>
+        <source>Semitones</source>
+        <translation>Semitonos</translation>
+    </message>
+    <message>
+        <source>Transpose</source>
+        <translation>Transponer</translation>
+    </message>
+    <message>
+        <source>Move every note by the semitones shown</source>
+        <translation>Mueve todas las notas los semitonos indicados</translation>
+    </message>
+    <message>
+        <source>Multiply every duration: 2 plays twice as slow, 0.5 twice as fast</source>
+        <translation>Multiplica todas las duraciones: 2 suena el doble de lento, 0.5 el doble de rápido</translation>
+    </message>
+    <message>
+        <source>Duration factor</source>
+        <translation>Factor de duración</translation>
+    </message>
+    <message>
+        <source>Scale durations</source>
+        <translation>Escalar duraciones</translation>
+    </message>
+    <message>
+        <source>Note</source>
+        <translation>Nota</translation>
+    </message>
+    <message>
+        <source>1/64 s</source>
+        <translation>1/64 s</translation>
+    </message>
+    <message>
+        <source>ms</source>
+        <translation>ms</translation>
+    </message>
+    <message>
+        <source>Note: a name such as C#5, a MIDI number 31..127 or &quot;rest&quot;. Duration in 1/64 s (0..255) or in milliseconds.</source>
+        <translation>Nota: un nombre como C#5, un número MIDI 31..127 o "silencio". Duración en 1/64 s (0..255) o en milisegundos.</translation>
+    </message>
+    <message>
+        <source>Notes</source>
+        <translation>Notas</translation>
+    </message>
+    <message>
+        <source>One row a note: the note, its duration in 1/64 s and in ms. Arrow keys move, F2 or typing edits a cell.</source>
+        <translation>Una fila por nota: la nota, su duración en 1/64 s y en ms. Las flechas mueven; F2 o escribir edita una celda.</translation>
+    </message>
+    <message>
+        <source>Upload slot</source>
+        <translation>Subir ranura</translation>
+    </message>
+    <message>
+        <source>Send this slot&apos;s song to the robot (140)</source>
+        <translation>Envía al robot la canción de esta ranura (140)</translation>
+    </message>
+    <message>
+        <source>Upload all</source>
+        <translation>Subir todas</translation>
+    </message>
+    <message>
+        <source>Send every slot that has notes (140)</source>
+        <translation>Envía todas las ranuras que tienen notas (140)</translation>
+    </message>
+    <message>
+        <source>Play</source>
+        <translation>Reproducir</translation>
+    </message>
+    <message>
+        <source>Play this slot on the robot (141)</source>
+        <translation>Reproduce esta ranura en el robot (141)</translation>
+    </message>
+    <message>
+        <source>Stop preview</source>
+        <translation>Detener vista previa</translation>
+    </message>
+    <message>
+        <source>Preview</source>
+        <translation>Vista previa</translation>
+    </message>
+    <message>
+        <source>Play this slot on the computer</source>
+        <translation>Reproduce esta ranura en el equipo</translation>
+    </message>
+    <message>
+        <source>Square tone</source>
+        <translation>Onda cuadrada</translation>
+    </message>
+    <message>
+        <source>Sine tone</source>
+        <translation>Onda sinusoidal</translation>
+    </message>
+    <message>
+        <source>How Preview and Export WAV sound; the robot&apos;s speaker sounds closer to square</source>
+        <translation>Cómo suenan Vista previa y Exportar WAV; el altavoz del robot se parece más a la onda cuadrada</translation>
+    </message>
+    <message>
+        <source>Tone for Preview and Export WAV</source>
+        <translation>Tono para Vista previa y Exportar WAV</translation>
+    </message>
+    <message>
+        <source>Load…</source>
+        <translation>Cargar…</translation>
+    </message>
+    <message>
+        <source>Replace the songs with a song file</source>
+        <translation>Sustituye las canciones por un archivo de canciones</translation>
+    </message>
+    <message>
+        <source>Save…</source>
+        <translation>Guardar…</translation>
+    </message>
+    <message>
+        <source>Save the songs as JSON</source>
+        <translation>Guarda las canciones como JSON</translation>
+    </message>
+    <message>
+        <source>Examples</source>
+        <translation>Ejemplos</translation>
+    </message>
+    <message>
+        <source>Put an example song in this slot</source>
+        <translation>Pone una canción de ejemplo en esta ranura</translation>
+    </message>
+    <message>
+        <source>Import RTTTL…</source>
+        <translation>Importar RTTTL…</translation>
+    </message>
+    <message>
+        <source>Notes from a ring-tone text</source>
+        <translation>Notas de un texto de tono de llamada</translation>
+    </message>
+    <message>
+        <source>Import MIDI…</source>
+        <translation>Importar MIDI…</translation>
+    </message>
+    <message>
+        <source>The melody of a MIDI file</source>
+        <translation>La melodía de un archivo MIDI</translation>
+    </message>
+    <message>
+        <source>Export WAV…</source>
+        <translation>Exportar WAV…</translation>
+    </message>
+    <message>
+        <source>This slot as a WAV sound file</source>
+        <translation>Esta ranura como archivo de sonido WAV</translation>
+    </message>
+    <message>
+        <source>Preview plays on %1.</source>
+        <translation>La vista previa suena en %1.</translation>
+    </message>
+    <message>
+        <source>No audio output device on this computer, so Preview is off. Export WAV still works.</source>
+        <translation>Este equipo no tiene dispositivo de salida de audio, así que Vista previa está desactivada. Exportar WAV sigue funcionando.</translation>
+    </message>
+    <message>
+        <source>Load songs</source>
+        <translation>Cargar canciones</translation>
+    </message>
+    <message>
+        <source>Song files (*.json)</source>
+        <translation>Archivos de canciones (*.json)</translation>
+    </message>
+    <message>
+        <source>Save songs</source>
+        <translation>Guardar canciones</translation>
+    </message>
+    <message>
+        <source>Import RTTTL</source>
+        <translation>Importar RTTTL</translation>
+    </message>
+    <message>
+        <source>Ring tone, e.g. Beep:d=4,o=5,b=120:c,e,g,c6</source>
+        <translation>Tono de llamada, p. ej. Beep:d=4,o=5,b=120:c,e,g,c6</translation>
+    </message>
+    <message>
+        <source>Import MIDI</source>
+        <translation>Importar MIDI</translation>
+    </message>
+    <message>
+        <source>MIDI files (*.mid *.midi)</source>
+        <translation>Archivos MIDI (*.mid *.midi)</translation>
+    </message>
+    <message>
+        <source>Export WAV</source>
+        <translation>Exportar WAV</translation>
+    </message>
+    <message>
+        <source>WAV files (*.wav)</source>
+        <translation>Archivos WAV (*.wav)</translation>
+    </message>
+    <message>
+        <source>The %1 has %2 song slots; %3 song(s) in higher slots are kept but hidden.</source>
+        <translation>El %1 tiene %2 ranuras de canción; %3 canción(es) en ranuras superiores se conservan pero quedan ocultas.</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <source>Song %1: 1 note</source>
+        <translation>Canción %1: 1 nota</translation>
+    </message>
+    <message numerus="yes">
+        <source>Song %1: %n notes</source>
+        <translation>
+            <numerusform>Canción %1: %n nota</numerusform>
+            <numerusform>Canción %1: %n notas</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Song slot %1 is outside 0..%2 on this robot</source>
+        <translation>La ranura de canción %1 está fuera de 0..%2 en este robot</translation>
+    </message>
+    <message>
+        <source>A song holds at most %1 notes, not %2</source>
+        <translation>Una canción admite como máximo %1 notas, no %2</translation>
+    </message>
+    <message>
+        <source>Slot %1: %2, %3 s (%4/64 s)</source>
+        <translation>Ranura %1: %2, %3 s (%4/64 s)</translation>
+    </message>
+    <message>
+        <source>1 note</source>
+        <translation>1 nota</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n notes</source>
+        <translation>
+            <numerusform>%n nota</numerusform>
+            <numerusform>%n notas</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Note %1: &quot;%2&quot; is not a note. Use a name from G1 to G9 (e.g. C#5), a MIDI number 31..127, or &quot;rest&quot;.</source>
+        <translation>Nota %1: "%2" no es una nota. Use un nombre de G1 a G9 (p. ej. C#5), un número MIDI 31..127 o "silencio".</translation>
+    </message>
+    <message>
+        <source>Note %1: &quot;%2&quot; is not a whole number of 1/64 s</source>
+        <translation>Nota %1: "%2" no es un número entero de 1/64 s</translation>
+    </message>
+    <message>
+        <source>Note %1: &quot;%2&quot; is not a number of milliseconds</source>
+        <translation>Nota %1: "%2" no es un número de milisegundos</translation>
+    </message>
+    <message>
+        <source>Note %1: %2 is outside 0..255/64 s (0..3984 ms)</source>
+        <translation>Nota %1: %2 está fuera de 0..255/64 s (0..3984 ms)</translation>
+    </message>
+    <message>
+        <source> ms</source>
+        <translation> ms</translation>
+    </message>
+    <message>
+        <source>A song holds at most %1 notes</source>
+        <translation>Una canción admite como máximo %1 notas</translation>
+    </message>
+    <message>
+        <source>Transposed slot %1 by %2 semitone(s).</source>
+        <translation>Ranura %1 transpuesta %2 semitono(s).</translation>
+    </message>
+    <message>
+        <source>Durations in slot %1 multiplied by %2.</source>
+        <translation>Duraciones de la ranura %1 multiplicadas por %2.</translation>
+    </message>
+    <message>
+        <source>%1 refused: %2</source>
+        <translation>%1 rechazado: %2</translation>
+    </message>
+    <message>
+        <source>%1 sent. Warning: %2</source>
+        <translation>%1 enviado. Advertencia: %2</translation>
+    </message>
+    <message>
+        <source>%1 sent.</source>
+        <translation>%1 enviado.</translation>
+    </message>
+    <message>
+        <source>Song %1</source>
+        <translation>Canción %1</translation>
+    </message>
+    <message>
+        <source>Song %1 refused: %2</source>
+        <translation>Canción %1 rechazada: %2</translation>
+    </message>
+    <message>
+        <source>Nothing to upload: every slot is empty.</source>
+        <translation>Nada que subir: todas las ranuras están vacías.</translation>
+    </message>
+    <message>
+        <source>Uploaded songs %1.</source>
+        <translation>Canciones subidas: %1.</translation>
+    </message>
+    <message>
+        <source> Warning: </source>
+        <translation> Advertencia: </translation>
+    </message>
+    <message>
+        <source>Play song %1</source>
+        <translation>Reproducir canción %1</translation>
+    </message>
+    <message>
+        <source>Playing: unknown (packet 37 not streamed)</source>
+        <translation>Reproduciendo: desconocido (el paquete 37 no está en el flujo de datos)</translation>
+    </message>
+    <message>
+        <source>No song playing</source>
+        <translation>Ninguna canción en reproducción</translation>
+    </message>
+    <message>
+        <source>Playing song %1: %2 of %3 s</source>
+        <translation>Reproduciendo canción %1: %2 de %3 s</translation>
+    </message>
+    <message>
+        <source>Playing song %1</source>
+        <translation>Reproduciendo canción %1</translation>
+    </message>
+    <message>
+        <source>Saved %1.</source>
+        <translation>Se guardó %1.</translation>
+    </message>
+    <message>
+        <source> The open songs are unchanged.</source>
+        <translation> Las canciones abiertas no han cambiado.</translation>
+    </message>
+    <message>
+        <source>Loaded %1.</source>
+        <translation>Se cargó %1.</translation>
+    </message>
+    <message>
+        <source>%1 needs %2 slot(s) but only %3 are left from slot %4 on; nothing was changed.</source>
+        <translation>%1 necesita %2 ranura(s), pero solo quedan %3 a partir de la ranura %4; no se cambió nada.</translation>
+    </message>
+    <message>
+        <source>%1 is in slot %2.</source>
+        <translation>%1 está en la ranura %2.</translation>
+    </message>
+    <message>
+        <source>The ring tone</source>
+        <translation>El tono de llamada</translation>
+    </message>
+    <message>
+        <source>%1: %2 notes in slot(s) %3..%4.</source>
+        <translation>%1: %2 notas en la(s) ranura(s) %3..%4.</translation>
+    </message>
+    <message>
+        <source>Imported %1 melody notes into slot(s) %2..%3.</source>
+        <translation>Se importaron %1 notas de la melodía en la(s) ranura(s) %2..%3.</translation>
+    </message>
+    <message>
+        <source> %1 notes did not fit in the remaining slots and were left out.</source>
+        <translation> %1 notas no cabían en las ranuras restantes y se omitieron.</translation>
+    </message>
+    <message>
+        <source> %1 notes longer than 255/64 s were shortened to 255.</source>
+        <translation> %1 notas de más de 255/64 s se acortaron a 255.</translation>
+    </message>
+    <message>
+        <source>Slot %1 is empty; there is nothing to export.</source>
+        <translation>La ranura %1 está vacía; no hay nada que exportar.</translation>
+    </message>
+    <message>
+        <source>Exported slot %1 to %2.</source>
+        <translation>Ranura %1 exportada a %2.</translation>
+    </message>
+    <message>
+        <source>No audio output device on this computer, so Preview is off.</source>
+        <translation>Este equipo no tiene dispositivo de salida de audio, así que Vista previa está desactivada.</translation>
+    </message>
+    <message>
+        <source>Slot %1 is empty; there is nothing to preview.</source>
+        <translation>La ranura %1 está vacía; no hay nada que previsualizar.</translation>
+    </message>
+    <message>
+        <source>%1 cannot play 16-bit mono sound at %2 Hz; use Export WAV instead.</source>
+        <translation>%1 no puede reproducir sonido mono de 16 bits a %2 Hz; use Exportar WAV en su lugar.</translation>
+    </message>
+</context>
+<context>
+    <name>SongFiles</name>
+    <message>
+        <source>Not a JSON file: %1 at offset %2</source>
+        <translation>No es un archivo JSON: %1 en el desplazamiento %2</translation>
+    </message>
+    <message>
+        <source>Not a song file: the top level is not an object</source>
+        <translation>No es un archivo de canciones: el nivel superior no es un objeto</translation>
+    </message>
+    <message>
+        <source>Not a song file: &quot;format&quot; is not &quot;%1&quot;</source>
+        <translation>No es un archivo de canciones: "format" no es "%1"</translation>
+    </message>
+    <message>
+        <source>Song file version %1 is not supported; only version %2 is</source>
+        <translation>La versión %1 del archivo de canciones no es compatible; solo lo es la versión %2</translation>
+    </message>
+    <message>
+        <source>Song file has no &quot;songs&quot; list</source>
+        <translation>El archivo de canciones no tiene lista "songs"</translation>
+    </message>
+    <message>
+        <source>Song %1: slot %2 is outside 0..%3 for this robot</source>
+        <translation>Canción %1: la ranura %2 está fuera de 0..%3 para este robot</translation>
+    </message>
+    <message>
+        <source>Song %1: slot %2 appears twice</source>
+        <translation>Canción %1: la ranura %2 aparece dos veces</translation>
+    </message>
+    <message>
+        <source>Song in slot %1 has no &quot;notes&quot; list</source>
+        <translation>La canción de la ranura %1 no tiene lista "notes"</translation>
+    </message>
+    <message>
+        <source>Song in slot %1 has %2 notes; a song has 1..%3</source>
+        <translation>La canción de la ranura %1 tiene %2 notas; una canción tiene 1..%3</translation>
+    </message>
+    <message>
+        <source>Slot %1, note %2: expected [note 0..127, duration 0..255], got %3</source>
+        <translation>Ranura %1, nota %2: se esperaba [nota 0..127, duración 0..255], se obtuvo %3</translation>
+    </message>
+    <message>
+        <source>Could not save %1: %2</source>
+        <translation>No se pudo guardar %1: %2</translation>
+    </message>
+    <message>
+        <source>Could not open %1: %2</source>
+        <translation>No se pudo abrir %1: %2</translation>
+    </message>
+    <message>
+        <source>Cannot transpose by %1: note %2 (%3) would become %4, outside %5..%6</source>
+        <translation>No se puede transponer %1: la nota %2 (%3) pasaría a ser %4, fuera de %5..%6</translation>
+    </message>
+    <message>
+        <source>Cannot scale durations by %1: note %2 would last %3/64 s; durations must stay within 1..255</source>
+        <translation>No se pueden escalar las duraciones por %1: la nota %2 duraría %3/64 s; las duraciones deben estar entre 1..255</translation>
+    </message>
+    <message>
+        <source>rest</source>
+        <translation>silencio</translation>
+    </message>
+</context>
+<context>
+    <name>SongWave</name>
+    <message>
+        <source>Could not save %1: %2</source>
+        <translation>No se pudo guardar %1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>ValueGauge</name>
+    <message>
+        <source>OUT OF RANGE</source>
+        <translation>FUERA DE RANGO</translation>
+    </message>
+    <message>
+        <source>%1, %2</source>
+        <translation>%1, %2</translation>
+    </message>
+    <message>
+        <source>%1, out of range</source>
+        <translation>%1, fuera de rango</translation>
+    </message>
+    <message>
+        <source>%1, stale</source>
+        <translation>%1, obsoleto</translation>
+    </message>
+</context>
+</TS>

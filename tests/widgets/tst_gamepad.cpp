@@ -2,6 +2,8 @@
 #include "gamepad_input.h"
 #include "gamepad_panel.h"
 
+#include "pseudo_translation.h"
+
 #define SDL_MAIN_HANDLED
 #include <SDL.h>
 
@@ -350,6 +352,68 @@ private slots:
         QCOMPARE(panel.commandText(), QStringLiteral("Stop: Drive 0 mm/s"));
         input.poll();
         QCOMPARE(motion.count(), 2);
+    }
+
+    void translatesOnTheSpot()
+    {
+        VirtualPad pad;
+        GamepadInput input;
+        QVERIFY(input.hasGamepad());
+        GamepadPanel panel;
+        panel.setInput(&input);
+        panel.resize(460, 220);
+        panel.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&panel));
+        pad.setButton(SDL_CONTROLLER_BUTTON_RIGHTSHOULDER, true);
+        pad.setStick(0, -32768);
+        input.poll();
+        QVERIFY(input.isDeadManHeld());
+        // The pad's name comes from the device and stays as it is.
+        const QStringList allowed{QStringLiteral("Test Pad")};
+        {
+            ScopedPseudoTranslation pseudo;
+            QCoreApplication::processEvents();
+            const QStringList untranslated = untranslatedTexts(&panel, allowed);
+            QVERIFY2(untranslated.isEmpty(), qPrintable(untranslated.join('\n')));
+            QVERIFY(panel.commandText().startsWith(kPseudoOpen));
+            QVERIFY(panel.deadManText().startsWith(kPseudoOpen));
+            saveScreenshot(panel, QStringLiteral("gamepad_panel_pseudo"));
+        }
+        QCoreApplication::processEvents();
+        QVERIFY2(panel.deadManText().startsWith(QStringLiteral("Dead-man (RB) held")), qPrintable(panel.deadManText()));
+        QCOMPARE(panel.statusText(), QStringLiteral("Test Pad"));
+
+        // Without a pad, the message saying so follows the language too.
+        pad.detach();
+        input.poll();
+        {
+            ScopedPseudoTranslation pseudo;
+            QCoreApplication::processEvents();
+            const QStringList untranslated = untranslatedTexts(&panel);
+            QVERIFY2(untranslated.isEmpty(), qPrintable(untranslated.join('\n')));
+        }
+        QCoreApplication::processEvents();
+        QCOMPARE(panel.statusText(), QStringLiteral("No gamepad connected — plug one in to drive with it"));
+    }
+
+    // The panel has nothing to press; its painted stick speaks for itself.
+    void stickViewIsAccessible()
+    {
+        VirtualPad pad;
+        GamepadInput input;
+        GamepadPanel panel;
+        panel.setInput(&input);
+        panel.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&panel));
+        QWidget *stick = panel.findChild<QWidget *>(QStringLiteral("stickView"));
+        QCOMPARE(stick->accessibleName(), QStringLiteral("Left stick"));
+        QCOMPARE(stick->accessibleDescription(), QStringLiteral("0% right, 0% forward"));
+        pad.setStick(32767, -32768);
+        input.poll();
+        QCOMPARE(stick->accessibleDescription(), QStringLiteral("100% right, 100% forward"));
+        // Nothing in the panel takes the focus from the keyboard.
+        for (QWidget *w : panel.findChildren<QWidget *>())
+            QVERIFY2(!(w->focusPolicy() & Qt::TabFocus), qPrintable(w->objectName()));
     }
 
     void describeCommands()

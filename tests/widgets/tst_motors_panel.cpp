@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "motors_panel.h"
 
+#include "pseudo_translation.h"
+
+#include <QApplication>
 #include <QCheckBox>
 #include <QDir>
 #include <QGroupBox>
@@ -24,6 +27,30 @@ QByteArray bytes(std::initializer_list<int> values)
     for (int v : values)
         out.append(char(v));
     return out;
+}
+
+// The widgets Tab visits, once round, starting at `first`.
+QList<QWidget *> tabCycle(QWidget *window, QWidget *first)
+{
+    window->activateWindow();
+    first->setFocus(Qt::TabFocusReason);
+    QList<QWidget *> visited{QApplication::focusWidget()};
+    for (int i = 0; i < 100; ++i) {
+        QTest::keyClick(QApplication::focusWidget(), Qt::Key_Tab);
+        QWidget *focus = QApplication::focusWidget();
+        if (!focus || focus == visited.first())
+            break;
+        visited << focus;
+    }
+    return visited;
+}
+
+// Reading order: the next row down, or further right on the same row.
+bool comesAfter(QWidget *root, QWidget *a, QWidget *b)
+{
+    const QPoint ca = a->mapTo(root, a->rect().center());
+    const QPoint cb = b->mapTo(root, b->rect().center());
+    return cb.y() > ca.y() + 2 || (std::abs(cb.y() - ca.y()) <= 2 && cb.x() > ca.x());
 }
 
 } // namespace
@@ -306,6 +333,81 @@ private slots:
         m_panel->setProfile(oi::profile(oi::ProfileId::Create2));
         QCOMPARE(m_sent->count(), 1);
         QVERIFY(!child<QCheckBox>("vacuum")->isChecked());
+    }
+
+    void translatesOnTheSpot()
+    {
+        usePanel(oi::ProfileId::Create2);
+        click(child<QCheckBox>("vacuum"));
+        child<QSlider>("mainBrushDuty")->setValue(-64);
+        const QStringList allowed;
+        {
+            ScopedPseudoTranslation pseudo;
+            QCoreApplication::processEvents();
+            QStringList untranslated = untranslatedTexts(m_panel.get(), allowed);
+            QVERIFY2(untranslated.isEmpty(), qPrintable(untranslated.join('\n')));
+            QVERIFY(child<QCheckBox>("vacuum")->isChecked());
+
+            // The Create 1's groups, and the note naming what it lacks.
+            usePanel(oi::ProfileId::Create1);
+            click(child<QCheckBox>("lowSide1"));
+            QCoreApplication::processEvents();
+            untranslated = untranslatedTexts(m_panel.get(), allowed);
+            QVERIFY2(untranslated.isEmpty(), qPrintable(untranslated.join('\n')));
+            QVERIFY(m_panel->unavailableText().startsWith(kPseudoOpen));
+            if (qEnvironmentVariableIsSet("ROOMBA_SCREENSHOTS")) {
+                m_panel->adjustSize();
+                QVERIFY(m_panel->grab().save(QDir(qEnvironmentVariable("ROOMBA_SCREENSHOTS"))
+                                                 .filePath("motors_panel_pseudo.png")));
+            }
+        }
+        QCoreApplication::processEvents();
+        QCOMPARE(child<QCheckBox>("lowSide1")->text(), QStringLiteral("LD1"));
+        QCOMPARE(child<QGroupBox>("sendIrGroup")->title(), QStringLiteral("IR output — Send IR (151)"));
+        QCOMPARE(child<QLabel>("lastSent")->text(), QStringLiteral("Last sent: 138 2"));
+        QVERIFY2(m_panel->unavailableText().startsWith(QStringLiteral("Not on the Create, so not shown: Motors (138)")),
+                 qPrintable(m_panel->unavailableText()));
+    }
+
+    void keyboardReachesEveryControl_data()
+    {
+        QTest::addColumn<oi::ProfileId>("id");
+        QTest::newRow("Create 2") << oi::ProfileId::Create2;
+        QTest::newRow("Create") << oi::ProfileId::Create1;
+        QTest::newRow("Roomba 500") << oi::ProfileId::Roomba500;
+    }
+    void keyboardReachesEveryControl()
+    {
+        QFETCH(oi::ProfileId, id);
+        usePanel(id);
+        QList<QWidget *> controls;
+        for (QWidget *w : m_panel->findChildren<QWidget *>())
+            if (w->isVisibleTo(m_panel.get()) && w->isEnabled() && (w->focusPolicy() & Qt::TabFocus)
+                && !w->focusProxy() && !qobject_cast<QGroupBox *>(w))
+                controls << w;
+        QVERIFY(!controls.isEmpty());
+        const QList<QWidget *> cycle = tabCycle(m_panel.get(), controls.first());
+        for (QWidget *w : controls)
+            QVERIFY2(cycle.contains(w), qPrintable(w->objectName() + " is not reached with Tab"));
+        QCOMPARE(cycle.size(), controls.size());
+        // Tab follows the reading order, wherever the cycle starts.
+        qsizetype start = 0;
+        for (qsizetype i = 1; i < cycle.size(); ++i)
+            if (comesAfter(m_panel.get(), cycle[i], cycle[start]))
+                start = i;
+        for (qsizetype i = 1; i < cycle.size(); ++i) {
+            QWidget *a = cycle[(start + i - 1) % cycle.size()];
+            QWidget *b = cycle[(start + i) % cycle.size()];
+            QVERIFY2(comesAfter(m_panel.get(), a, b),
+                     qPrintable(QStringLiteral("%1 before %2").arg(a->objectName(), b->objectName())));
+        }
+        // Space presses a focused button, as a click would.
+        QWidget *allOff = child<QWidget>("allOff");
+        if (allOff->isEnabled()) {
+            allOff->setFocus(Qt::TabFocusReason);
+            QTest::keyClick(allOff, Qt::Key_Space);
+            QCOMPARE(m_sent->count(), 1);
+        }
     }
 
     void screenshots()

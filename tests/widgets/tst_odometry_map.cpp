@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "odometry_map.h"
 
+#include "pseudo_translation.h"
+
+#include <QApplication>
 #include <QDir>
 #include <QDoubleSpinBox>
 #include <QLabel>
@@ -48,6 +51,22 @@ bool near(double a, double b, double tolerance = 1e-9) { return std::abs(a - b) 
 QColor pixelAt(const QImage &image, QPointF widgetPoint, qreal ratio)
 {
     return image.pixelColor((widgetPoint * ratio).toPoint());
+}
+
+// The widgets Tab visits, once round, starting at `first`.
+QList<QWidget *> tabCycle(QWidget *window, QWidget *first)
+{
+    window->activateWindow();
+    first->setFocus(Qt::TabFocusReason);
+    QList<QWidget *> visited{QApplication::focusWidget()};
+    for (int i = 0; i < 30; ++i) {
+        QTest::keyClick(QApplication::focusWidget(), Qt::Key_Tab);
+        QWidget *focus = QApplication::focusWidget();
+        if (!focus || focus == visited.first())
+            break;
+        visited << focus;
+    }
+    return visited;
 }
 
 } // namespace
@@ -263,6 +282,72 @@ private slots:
         QLabel *label = m_map->findChild<QLabel *>("poseLabel");
         QTRY_COMPARE(label->text(), m_map->poseText());
         QVERIFY(label->text().startsWith("x 89 mm"));
+    }
+
+    void translatesOnTheSpot()
+    {
+        m_map->setWorld(sim::World::classroom());
+        drive(*m_map, ProfileId::Create2, 10, 20, 20);
+        m_map->setTruePose(oi::Pose{100, 20, 0});
+        QLabel *pose = m_map->findChild<QLabel *>("poseLabel");
+        QTRY_COMPARE(pose->text(), m_map->poseText());
+        {
+            ScopedPseudoTranslation pseudo;
+            QCoreApplication::processEvents();
+            QStringList untranslated = untranslatedTexts(m_map.get());
+            QVERIFY2(untranslated.isEmpty(), qPrintable(untranslated.join('\n')));
+            QVERIFY(pose->text().startsWith(kPseudoOpen));
+            QVERIFY(m_map->accessibleDescription().startsWith(kPseudoOpen));
+
+            // The Create 1's tool tips name its missing encoders.
+            m_map->setProfile(oi::profile(ProfileId::Create1));
+            untranslated = untranslatedTexts(m_map.get());
+            QVERIFY2(untranslated.isEmpty(), qPrintable(untranslated.join('\n')));
+            QCoreApplication::sendPostedEvents(); // the pose label's new width
+            if (qEnvironmentVariableIsSet("ROOMBA_SCREENSHOTS"))
+                QVERIFY(m_map->grab().save(QDir(qEnvironmentVariable("ROOMBA_SCREENSHOTS")).filePath("odometry_map_pseudo.png")));
+        }
+        QCoreApplication::processEvents();
+        QCOMPARE(m_map->findChild<QPushButton *>("centre")->text(), QStringLiteral("Centre"));
+        QCOMPARE(m_map->findChild<QPushButton *>("zoomIn")->accessibleName(), QStringLiteral("Zoom in"));
+        QCOMPARE(m_map->accessibleName(), QStringLiteral("Odometry map"));
+        QVERIFY(m_map->findChild<QDoubleSpinBox *>("wheelBase")->toolTip().startsWith(QStringLiteral("The Create has")));
+    }
+
+    void keyboardReachesEveryControl()
+    {
+        const QStringList order{"zoomIn", "zoomOut", "centre", "reset", "wheelBase", "wheelDiameter"};
+        QList<QWidget *> expected;
+        for (const QString &name : order)
+            expected << m_map->findChild<QWidget *>(name);
+        QCOMPARE(tabCycle(m_map.get(), expected.first()), expected);
+        // Visual order: left to right along the tool bar.
+        for (qsizetype i = 1; i < expected.size(); ++i)
+            QVERIFY(expected[i]->mapTo(m_map.get(), QPoint()).x() > expected[i - 1]->mapTo(m_map.get(), QPoint()).x());
+
+        // The buttons work from the keyboard: zoom and centre without a mouse.
+        const double scale = m_map->scale();
+        QTest::keyClick(expected[0], Qt::Key_Space);
+        QVERIFY(m_map->scale() > scale);
+        QTest::keyClick(expected[1], Qt::Key_Space);
+        QTest::keyClick(expected[1], Qt::Key_Space);
+        QVERIFY(m_map->scale() < scale);
+        drive(*m_map, ProfileId::Create2, 10, 20, 20);
+        QTest::keyClick(expected[2], Qt::Key_Space);
+        QCOMPARE(m_map->viewCentreMm(), QPointF(m_map->pose().xMm, m_map->pose().yMm));
+    }
+
+    void describesThePose()
+    {
+        for (const char *name : {"zoomIn", "zoomOut"})
+            QVERIFY(!m_map->findChild<QWidget *>(name)->accessibleName().isEmpty());
+        QCOMPARE(m_map->accessibleName(), QStringLiteral("Odometry map"));
+        QCOMPARE(m_map->accessibleDescription(), QStringLiteral("Robot at x 0 mm, y 0 mm, heading 0 degrees"));
+        drive(*m_map, ProfileId::Create2, 10, 20, 20);
+        QTRY_COMPARE(m_map->accessibleDescription(), QStringLiteral("Robot at x 89 mm, y 0 mm, heading 0 degrees"));
+        m_map->setTruePose(oi::Pose{100, 0, 0});
+        QTRY_VERIFY(m_map->accessibleDescription().endsWith(QStringLiteral(" mm from the true pose")));
+        QCOMPARE(m_map->accessibleDescription(), m_map->spokenPose());
     }
 
     void screenshots()

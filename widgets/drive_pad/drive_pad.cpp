@@ -4,6 +4,7 @@
 #include "command_encoder.h"
 
 #include <QComboBox>
+#include <QEvent>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QMouseEvent>
@@ -125,7 +126,10 @@ protected:
 
         p.setPen(pal.color(isEnabled() ? QPalette::Active : QPalette::Disabled, QPalette::WindowText));
         const QRectF text(0, c.y() + r + 2, width(), fontMetrics().height() + 4);
-        p.drawText(text, Qt::AlignHCenter | Qt::AlignTop, DrivePad::describe(m_pad->currentCommand()));
+        // A narrow pad shortens the readout rather than cutting it at the edges.
+        const QString readout = fontMetrics().elidedText(DrivePad::describe(m_pad->currentCommand()), Qt::ElideRight,
+                                                         width());
+        p.drawText(text, Qt::AlignHCenter | Qt::AlignTop, readout);
     }
 
 private:
@@ -135,11 +139,11 @@ private:
 
 DrivePad::DrivePad(QWidget *parent) : QWidget(parent)
 {
+    // Texts come from retranslateUi(); the item data says which mapping.
     m_mapping = new QComboBox(this);
     m_mapping->setObjectName("mapping");
-    m_mapping->addItem(tr("Drive (137): speed and radius"), int(Mapping::Drive));
-    m_mapping->addItem(tr("Drive Direct (145): each wheel"), int(Mapping::DriveDirect));
-    m_mapping->addItem(tr("Drive PWM (146): each wheel, raw power"), int(Mapping::DrivePwm));
+    for (Mapping m : {Mapping::Drive, Mapping::DriveDirect, Mapping::DrivePwm})
+        m_mapping->addItem(QString(), int(m));
     connect(m_mapping, &QComboBox::currentIndexChanged, this, [this] {
         // A new mapping must not keep the robot going on the old one's terms.
         resetToCentre();
@@ -153,18 +157,17 @@ DrivePad::DrivePad(QWidget *parent) : QWidget(parent)
     m_speed->setPageStep(50);
     m_speed->setValue(kDefaultSpeedLimit);
     m_speedLabel = new QLabel(this);
-    m_speedLabel->setMinimumWidth(m_speedLabel->fontMetrics().horizontalAdvance("500 mm/s "));
+    m_speedLabel->setObjectName("speedLimitValue");
     connect(m_speed, &QSlider::valueChanged, this, [this](int value) {
         m_speedLabel->setText(tr("%1 mm/s").arg(value));
         if (!m_command.isStop())
             updateCommand(m_knob);
     });
-    m_speedLabel->setText(tr("%1 mm/s").arg(m_speed->value()));
 
     m_passiveBar = new QWidget(this);
-    m_passiveLabel = new QLabel(tr("Passive mode: enter Safe to drive"), m_passiveBar);
+    m_passiveLabel = new QLabel(m_passiveBar);
     m_passiveLabel->setWordWrap(true);
-    m_enterSafe = new QPushButton(tr("Enter Safe"), m_passiveBar);
+    m_enterSafe = new QPushButton(m_passiveBar);
     m_enterSafe->setObjectName("enterSafe");
     connect(m_enterSafe, &QPushButton::clicked, this, &DrivePad::safeRequested);
     auto *passiveRow = new QHBoxLayout(m_passiveBar);
@@ -175,8 +178,10 @@ DrivePad::DrivePad(QWidget *parent) : QWidget(parent)
 
     m_area = new DrivePadArea(this);
 
+    m_speedTitle = new QLabel(this);
+    m_speedTitle->setBuddy(m_speed); // names the slider for screen readers
     auto *speedRow = new QHBoxLayout;
-    speedRow->addWidget(new QLabel(tr("Speed limit"), this));
+    speedRow->addWidget(m_speedTitle);
     speedRow->addWidget(m_speed, 1);
     speedRow->addWidget(m_speedLabel);
 
@@ -187,7 +192,42 @@ DrivePad::DrivePad(QWidget *parent) : QWidget(parent)
     layout->addLayout(speedRow);
     layout->addWidget(m_passiveBar);
     layout->addWidget(m_area, 1);
-    setProfile(*m_profile);
+    retranslateUi();
+}
+
+void DrivePad::retranslateUi()
+{
+    m_mapping->setItemText(int(Mapping::Drive), tr("Drive (137): speed and radius"));
+    m_mapping->setItemText(int(Mapping::DriveDirect), tr("Drive Direct (145): each wheel"));
+    m_mapping->setItemText(int(Mapping::DrivePwm), tr("Drive PWM (146): each wheel, raw power"));
+    m_speedTitle->setText(tr("Speed limit"));
+    m_speedLabel->setText(tr("%1 mm/s").arg(m_speed->value()));
+    // Room for the widest value, so the slider does not jump while dragging.
+    m_speedLabel->setMinimumWidth(m_speedLabel->fontMetrics().horizontalAdvance(tr("%1 mm/s").arg(kMaxSpeedLimit))
+                                  + m_speedLabel->fontMetrics().averageCharWidth());
+    m_passiveLabel->setText(tr("Passive mode: enter Safe to drive"));
+    m_enterSafe->setText(tr("Enter Safe"));
+    m_area->setAccessibleName(tr("Drive pad"));
+    setProfile(*m_profile); // the items' tool tips
+    updateAccessibleDescription();
+    m_area->update();
+}
+
+void DrivePad::changeEvent(QEvent *event)
+{
+    if (event->type() == QEvent::LanguageChange)
+        retranslateUi();
+    QWidget::changeEvent(event);
+}
+
+void DrivePad::updateAccessibleDescription()
+{
+    QString text = spokenDescription(m_command);
+    if (m_passive)
+        text = tr("Passive mode: enter Safe to drive");
+    // Only a change is announced, so set it only when it differs.
+    if (m_area->accessibleDescription() != text)
+        m_area->setAccessibleDescription(text);
 }
 
 void DrivePad::setProfile(const oi::RobotProfile &profile)
@@ -210,9 +250,15 @@ QString DrivePad::mappingDisabledReason(Mapping mapping) const
     const oi::Command command = mapping == Mapping::DrivePwm      ? oi::Command::DrivePwm
                                 : mapping == Mapping::DriveDirect ? oi::Command::DriveDirect
                                                                   : oi::Command::Drive;
-    if (const auto refused = oi::CommandEncoder(*m_profile).refuse(command))
-        return QString::fromStdString(refused->describe());
-    return {};
+    if (!oi::CommandEncoder(*m_profile).refuse(command))
+        return {};
+    const QString robot = QString::fromUtf8(m_profile->name.data(), qsizetype(m_profile->name.size()));
+    switch (mapping) {
+    case Mapping::DriveDirect: return tr("Drive Direct (145) is not available on the %1").arg(robot);
+    case Mapping::DrivePwm: return tr("Drive PWM (146) is not available on the %1").arg(robot);
+    case Mapping::Drive: break;
+    }
+    return tr("Drive (137) is not available on the %1").arg(robot);
 }
 
 DrivePad::Mapping DrivePad::mapping() const { return Mapping(m_mapping->currentData().toInt()); }
@@ -229,6 +275,7 @@ void DrivePad::setPassive(bool passive)
     m_area->setEnabled(!passive);
     if (passive)
         resetToCentre();
+    updateAccessibleDescription();
 }
 
 void DrivePad::resetToCentre()
@@ -236,6 +283,7 @@ void DrivePad::resetToCentre()
     static_cast<DrivePadArea *>(m_area)->cancelDrag();
     m_knob = {};
     m_command = MotionCommand::stop(MotionCommand::Kind(int(mapping())));
+    updateAccessibleDescription();
     m_area->update();
 }
 
@@ -266,6 +314,7 @@ void DrivePad::updateCommand(QPointF knob)
     if (command == m_command)
         return;
     m_command = command;
+    updateAccessibleDescription();
     emit motionRequested(m_command);
 }
 
@@ -346,4 +395,30 @@ QString DrivePad::describe(const MotionCommand &c)
     else
         radius = tr("radius %1 mm").arg(c.radius);
     return tr("Drive %1 mm/s, %2").arg(c.velocity).arg(radius);
+}
+
+QString DrivePad::spokenDescription(const MotionCommand &c)
+{
+    if (c.isStop())
+        return tr("Stopped");
+    switch (c.kind) {
+    case MotionCommand::Kind::DriveDirect:
+        return tr("Right wheel %1 mm/s, left wheel %2 mm/s").arg(c.right).arg(c.left);
+    case MotionCommand::Kind::DrivePwm:
+        return tr("Right wheel power %1, left wheel power %2").arg(c.right).arg(c.left);
+    case MotionCommand::Kind::Drive:
+        break;
+    }
+    if (c.radius == oi::kRadiusTurnInPlaceClockwise)
+        return tr("Turning in place clockwise, %1 mm/s").arg(c.velocity);
+    if (c.radius == oi::kRadiusTurnInPlaceCounterClockwise)
+        return tr("Turning in place anticlockwise, %1 mm/s").arg(c.velocity);
+    const QString way = c.velocity > 0 ? tr("Forward %1 mm/s").arg(c.velocity)
+                                       : tr("Backward %1 mm/s").arg(-c.velocity);
+    if (c.radius == oi::kRadiusStraight || c.radius == oi::kRadiusStraightAlt)
+        return tr("%1, straight").arg(way);
+    // A positive radius puts the turn's centre on the robot's left.
+    return (c.radius > 0 ? tr("%1, turning left (radius %2 mm)") : tr("%1, turning right (radius %2 mm)"))
+        .arg(way)
+        .arg(std::abs(c.radius));
 }

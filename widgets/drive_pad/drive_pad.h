@@ -60,13 +60,20 @@ public:
     QPointF knobAt(QPoint areaPos) const;
     QPoint areaPointFor(QPointF knob) const;
     static QString describe(const MotionCommand &command);
+    // The command in words for a screen reader: "Forward 200 mm/s, turning left".
+    static QString spokenDescription(const MotionCommand &command);
 
 signals:
     void motionRequested(const MotionCommand &command);
     void safeRequested();
 
+protected:
+    void changeEvent(QEvent *event) override;
+
 private:
     friend class DrivePadArea;
+    void retranslateUi();
+    void updateAccessibleDescription();
     void moveKnob(QPointF knob);
     void release();
     void updateCommand(QPointF knob);
@@ -75,6 +82,7 @@ private:
     QComboBox *m_mapping = nullptr;
     QSlider *m_speed = nullptr;
     QLabel *m_speedLabel = nullptr;
+    QLabel *m_speedTitle = nullptr;
     QWidget *m_area = nullptr;
     QWidget *m_passiveBar = nullptr;
     QLabel *m_passiveLabel = nullptr;

@@ -3,6 +3,7 @@
 
 #include "gamepad_input.h"
 
+#include <QEvent>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QPainter>
@@ -88,7 +89,8 @@ GamepadPanel::GamepadPanel(QWidget *parent) : QWidget(parent)
 
     auto *text = new QVBoxLayout;
     text->addWidget(m_deadMan);
-    text->addWidget(new QLabel(tr("Would send:"), m_details));
+    m_commandTitle = new QLabel(m_details);
+    text->addWidget(m_commandTitle);
     text->addWidget(m_command);
     text->addWidget(m_shaping);
     text->addStretch();
@@ -105,7 +107,21 @@ GamepadPanel::GamepadPanel(QWidget *parent) : QWidget(parent)
     layout->addWidget(m_status);
     layout->addWidget(m_details);
     layout->addStretch();
+    retranslateUi();
+}
+
+void GamepadPanel::retranslateUi()
+{
+    m_commandTitle->setText(tr("Would send:"));
+    m_stick->setAccessibleName(tr("Left stick"));
     refresh();
+}
+
+void GamepadPanel::changeEvent(QEvent *event)
+{
+    if (event->type() == QEvent::LanguageChange)
+        retranslateUi();
+    QWidget::changeEvent(event);
 }
 
 void GamepadPanel::setInput(GamepadInput *input)
@@ -184,8 +200,14 @@ void GamepadPanel::refresh()
     m_deadMan->setPalette(pal);
 
     m_command->setText(describe(input ? input->command() : MotionCommand::stop()));
-    m_stick->setState(input ? input->stick() : QPointF(),
-                  input ? input->deadband() : GamepadInput::kDefaultDeadband, held);
+    const QPointF stick = input ? input->stick() : QPointF();
+    m_stick->setState(stick, input ? input->deadband() : GamepadInput::kDefaultDeadband, held);
+    // Only a change is announced, so set it only when it differs.
+    const QString stickText = tr("%1% right, %2% forward")
+                                  .arg(qRound(stick.x() * 100))
+                                  .arg(qRound(stick.y() * 100));
+    if (m_stick->accessibleDescription() != stickText)
+        m_stick->setAccessibleDescription(stickText);
     if (input) {
         m_shaping->setText(tr("Speed limit %1 mm/s · deadband %2% · expo %3")
                                .arg(input->speedLimit())

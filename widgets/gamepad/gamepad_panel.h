@@ -28,7 +28,11 @@ public:
     // "Forward, arcing right: Drive 68 mm/s, radius -250 mm", "Stop: Drive 0 mm/s", ...
     static QString describe(const MotionCommand &command);
 
+protected:
+    void changeEvent(QEvent *event) override;
+
 private:
+    void retranslateUi();
     void refresh();
 
     QPointer<GamepadInput> m_input;
@@ -36,6 +40,7 @@ private:
     QWidget *m_details = nullptr;
     StickView *m_stick = nullptr;
     QLabel *m_deadMan = nullptr;
+    QLabel *m_commandTitle = nullptr;
     QLabel *m_command = nullptr;
     QLabel *m_shaping = nullptr;
     QLabel *m_mapping = nullptr;

@@ -5,6 +5,8 @@
 #include "display_palette.h"
 
 #include <QCheckBox>
+#include <QCoreApplication>
+#include <QEvent>
 #include <QGridLayout>
 #include <QGroupBox>
 #include <QHBoxLayout>
@@ -19,25 +21,61 @@ namespace {
 
 QString fromView(std::string_view text) { return QString::fromUtf8(text.data(), qsizetype(text.size())); }
 
+// The commands this panel uses, named as the user reads them.
+struct CommandName {
+    oi::Command command;
+    const char *title;
+};
+constexpr CommandName kCommandNames[] = {
+    {oi::Command::Motors, QT_TRANSLATE_NOOP("MotorsPanel", "Motors")},
+    {oi::Command::PwmMotors, QT_TRANSLATE_NOOP("MotorsPanel", "PWM Motors")},
+    {oi::Command::Buttons, QT_TRANSLATE_NOOP("MotorsPanel", "Buttons")},
+    {oi::Command::LowSideDrivers, QT_TRANSLATE_NOOP("MotorsPanel", "Low Side Drivers")},
+    {oi::Command::PwmLowSideDrivers, QT_TRANSLATE_NOOP("MotorsPanel", "PWM Low Side Drivers")},
+    {oi::Command::DigitalOutputs, QT_TRANSLATE_NOOP("MotorsPanel", "Digital Outputs")},
+    {oi::Command::SendIr, QT_TRANSLATE_NOOP("MotorsPanel", "Send IR")},
+};
+
 QString commandTitle(oi::Command command)
 {
-    const oi::CommandSpec &spec = oi::commandSpec(command);
-    return QString("%1 (%2)").arg(fromView(spec.title)).arg(spec.opcode);
+    const int opcode = oi::commandSpec(command).opcode;
+    for (const CommandName &name : kCommandNames)
+        if (name.command == command)
+            return QStringLiteral("%1 (%2)").arg(QCoreApplication::translate("MotorsPanel", name.title)).arg(opcode);
+    return QString::number(opcode);
 }
+
+// The buttons command's buttons, left to right and top to bottom.
+struct ButtonBit {
+    const char *objectName;
+    const char *text;
+    int bits;
+};
+constexpr ButtonBit kButtonBits[] = {
+    {"buttonClean", QT_TRANSLATE_NOOP("MotorsPanel", "Clean"), oi::bit::ButtonClean},
+    {"buttonSpot", QT_TRANSLATE_NOOP("MotorsPanel", "Spot"), oi::bit::ButtonSpot},
+    {"buttonDock", QT_TRANSLATE_NOOP("MotorsPanel", "Dock"), oi::bit::ButtonDock},
+    {"buttonMinute", QT_TRANSLATE_NOOP("MotorsPanel", "Minute"), oi::bit::ButtonMinute},
+    {"buttonHour", QT_TRANSLATE_NOOP("MotorsPanel", "Hour"), oi::bit::ButtonHour},
+    {"buttonDay", QT_TRANSLATE_NOOP("MotorsPanel", "Day"), oi::bit::ButtonDay},
+    {"buttonSchedule", QT_TRANSLATE_NOOP("MotorsPanel", "Schedule"), oi::bit::ButtonSchedule},
+    {"buttonClock", QT_TRANSLATE_NOOP("MotorsPanel", "Clock"), oi::bit::ButtonClock},
+};
 
 int bitIf(const QCheckBox *box, int bit) { return box->isChecked() ? bit : 0; }
 
 } // namespace
 
+// Every text is set in retranslateUi(), so a language switch applies at once.
 MotorsPanel::MotorsPanel(QWidget *parent) : QWidget(parent)
 {
     // Roomba 500/600: brushes and vacuum.
-    m_motorsGroup = group("motorsGroup", tr("Brushes and vacuum — Motors (138)"));
-    m_mainBrush = checkBox("mainBrush", tr("Main brush"));
-    m_mainBrushOutward = checkBox("mainBrushOutward", tr("Outward"));
-    m_sideBrush = checkBox("sideBrush", tr("Side brush"));
-    m_sideBrushClockwise = checkBox("sideBrushClockwise", tr("Clockwise"));
-    m_vacuum = checkBox("vacuum", tr("Vacuum"));
+    m_motorsGroup = group("motorsGroup");
+    m_mainBrush = checkBox("mainBrush");
+    m_mainBrushOutward = checkBox("mainBrushOutward");
+    m_sideBrush = checkBox("sideBrush");
+    m_sideBrushClockwise = checkBox("sideBrushClockwise");
+    m_vacuum = checkBox("vacuum");
     auto *motors = new QGridLayout(m_motorsGroup);
     motors->addWidget(m_mainBrush, 0, 0);
     motors->addWidget(m_mainBrushOutward, 0, 1);
@@ -49,98 +87,87 @@ MotorsPanel::MotorsPanel(QWidget *parent) : QWidget(parent)
     for (QCheckBox *box : {m_mainBrush, m_mainBrushOutward, m_sideBrush, m_sideBrushClockwise, m_vacuum})
         connect(box, &QCheckBox::toggled, this, &MotorsPanel::sendMotors);
 
-    m_pwmMotorsGroup = group("pwmMotorsGroup", tr("Duty cycle — PWM Motors (144)"));
+    m_pwmMotorsGroup = group("pwmMotorsGroup");
     auto *pwm = new QGridLayout(m_pwmMotorsGroup);
     m_mainBrushDuty = dutySlider("mainBrushDuty", -127, 127);
     m_sideBrushDuty = dutySlider("sideBrushDuty", -127, 127);
     m_vacuumDuty = dutySlider("vacuumDuty", 0, 127);
     int row = 0;
-    for (auto [text, slider] : {std::pair{tr("Main brush"), m_mainBrushDuty},
-                                std::pair{tr("Side brush"), m_sideBrushDuty},
-                                std::pair{tr("Vacuum"), m_vacuumDuty}}) {
-        pwm->addWidget(new QLabel(text, m_pwmMotorsGroup), row, 0);
+    for (QSlider *slider : {m_mainBrushDuty, m_sideBrushDuty, m_vacuumDuty}) {
+        m_pwmTitles[row] = dutyTitle(slider);
+        pwm->addWidget(m_pwmTitles[row], row, 0);
         pwm->addWidget(slider, row, 1);
         pwm->addWidget(findChild<QLabel *>(slider->objectName() + "Value"), row, 2);
         connect(slider, &QSlider::valueChanged, this, &MotorsPanel::sendPwmMotors);
         ++row;
     }
-    auto *pwmNote = new QLabel(tr("Brushes -127..127 (negative turns them the other way), "
-                                  "vacuum 0..127; 127 is full power."),
-                               m_pwmMotorsGroup);
-    pwmNote->setWordWrap(true);
-    pwm->addWidget(pwmNote, row, 0, 1, 3);
+    m_pwmNote = new QLabel(m_pwmMotorsGroup);
+    m_pwmNote->setWordWrap(true);
+    pwm->addWidget(m_pwmNote, row, 0, 1, 3);
 
     // The robot releases a pressed button by itself after 1/6 s.
-    m_buttonsGroup = group("buttonsGroup", tr("Press a button — Buttons (165)"));
+    m_buttonsGroup = group("buttonsGroup");
     auto *buttons = new QGridLayout(m_buttonsGroup);
-    const std::array<std::tuple<const char *, QString, int>, 8> buttonBits{{
-        {"buttonClean", tr("Clean"), oi::bit::ButtonClean},
-        {"buttonSpot", tr("Spot"), oi::bit::ButtonSpot},
-        {"buttonDock", tr("Dock"), oi::bit::ButtonDock},
-        {"buttonMinute", tr("Minute"), oi::bit::ButtonMinute},
-        {"buttonHour", tr("Hour"), oi::bit::ButtonHour},
-        {"buttonDay", tr("Day"), oi::bit::ButtonDay},
-        {"buttonSchedule", tr("Schedule"), oi::bit::ButtonSchedule},
-        {"buttonClock", tr("Clock"), oi::bit::ButtonClock},
-    }};
-    for (std::size_t i = 0; i < buttonBits.size(); ++i) {
-        const auto &[name, text, bits] = buttonBits[i];
-        auto *b = new QPushButton(text, m_buttonsGroup);
-        b->setObjectName(name);
-        const int pressed = bits;
+    for (std::size_t i = 0; i < std::size(kButtonBits); ++i) {
+        auto *b = new QPushButton(m_buttonsGroup);
+        b->setObjectName(kButtonBits[i].objectName);
+        const int pressed = kButtonBits[i].bits;
         connect(b, &QPushButton::clicked, this,
                 [this, pressed] { send(oi::CommandEncoder(*m_profile).buttons(pressed)); });
         buttons->addWidget(b, int(i / 4), int(i % 4));
     }
 
     // Create: low side drivers, digital outputs and the IR output.
-    m_lowSideGroup = group("lowSideGroup", tr("Low side drivers — Low Side Drivers (138)"));
+    m_lowSideGroup = group("lowSideGroup");
     auto *lowSide = new QHBoxLayout(m_lowSideGroup);
     for (int i = 0; i < 3; ++i) {
-        m_lowSide[i] = checkBox(QString("lowSide%1").arg(i), tr("LD%1").arg(i));
+        m_lowSide[i] = checkBox(QString("lowSide%1").arg(i));
         lowSide->addWidget(m_lowSide[i]);
         connect(m_lowSide[i], &QCheckBox::toggled, this, &MotorsPanel::sendLowSideDrivers);
     }
     lowSide->addStretch();
 
-    m_pwmLowSideGroup = group("pwmLowSideGroup", tr("Duty cycle — PWM Low Side Drivers (144)"));
+    m_pwmLowSideGroup = group("pwmLowSideGroup");
     auto *pwmLowSide = new QGridLayout(m_pwmLowSideGroup);
     // Top to bottom in the command's byte order: LD2, LD1, LD0.
     for (int i = 2; i >= 0; --i) {
         m_lowSideDuty[i] = dutySlider(QString("lowSide%1Duty").arg(i), 0, 128);
+        m_lowSideTitles[i] = dutyTitle(m_lowSideDuty[i]);
         const int r = 2 - i;
-        pwmLowSide->addWidget(new QLabel(tr("LD%1").arg(i), m_pwmLowSideGroup), r, 0);
+        pwmLowSide->addWidget(m_lowSideTitles[i], r, 0);
         pwmLowSide->addWidget(m_lowSideDuty[i], r, 1);
         pwmLowSide->addWidget(findChild<QLabel *>(m_lowSideDuty[i]->objectName() + "Value"), r, 2);
         connect(m_lowSideDuty[i], &QSlider::valueChanged, this, &MotorsPanel::sendPwmLowSideDrivers);
     }
-    auto *lowSideNote = new QLabel(tr("0..128; 128 is 100%."), m_pwmLowSideGroup);
-    pwmLowSide->addWidget(lowSideNote, 3, 0, 1, 3);
+    m_lowSideNote = new QLabel(m_pwmLowSideGroup);
+    pwmLowSide->addWidget(m_lowSideNote, 3, 0, 1, 3);
 
-    m_digitalOutputsGroup = group("digitalOutputsGroup", tr("Cargo bay — Digital Outputs (147)"));
+    m_digitalOutputsGroup = group("digitalOutputsGroup");
     auto *outputs = new QHBoxLayout(m_digitalOutputsGroup);
     for (int i = 0; i < 3; ++i) {
-        m_digitalOutputs[i] = checkBox(QString("digitalOutput%1").arg(i), tr("Output %1").arg(i));
+        m_digitalOutputs[i] = checkBox(QString("digitalOutput%1").arg(i));
         outputs->addWidget(m_digitalOutputs[i]);
         connect(m_digitalOutputs[i], &QCheckBox::toggled, this, &MotorsPanel::sendDigitalOutputs);
     }
     outputs->addStretch();
 
-    m_sendIrGroup = group("sendIrGroup", tr("IR output — Send IR (151)"));
+    m_sendIrGroup = group("sendIrGroup");
     auto *ir = new QHBoxLayout(m_sendIrGroup);
+    m_irByteTitle = new QLabel(m_sendIrGroup);
     m_irByte = new QSpinBox(m_sendIrGroup);
     m_irByte->setObjectName("irByte");
     m_irByte->setRange(0, 255);
-    auto *sendIr = new QPushButton(tr("Send IR"), m_sendIrGroup);
-    sendIr->setObjectName("sendIr");
-    connect(sendIr, &QPushButton::clicked, this,
+    m_irByteTitle->setBuddy(m_irByte);
+    m_sendIr = new QPushButton(m_sendIrGroup);
+    m_sendIr->setObjectName("sendIr");
+    connect(m_sendIr, &QPushButton::clicked, this,
             [this] { send(oi::CommandEncoder(*m_profile).sendIr(m_irByte->value())); });
-    ir->addWidget(new QLabel(tr("Byte"), m_sendIrGroup));
+    ir->addWidget(m_irByteTitle);
     ir->addWidget(m_irByte);
-    ir->addWidget(sendIr);
+    ir->addWidget(m_sendIr);
     ir->addStretch();
 
-    m_allOff = new QPushButton(tr("All off"), this);
+    m_allOff = new QPushButton(this);
     m_allOff->setObjectName("allOff");
     connect(m_allOff, &QPushButton::clicked, this, &MotorsPanel::allOff);
 
@@ -164,22 +191,77 @@ MotorsPanel::MotorsPanel(QWidget *parent) : QWidget(parent)
     layout->addWidget(m_unavailable);
     layout->addStretch();
 
-    m_lastSent->setText(tr("Last sent: —"));
+    retranslateUi();
+}
+
+void MotorsPanel::retranslateUi()
+{
+    m_motorsGroup->setTitle(tr("Brushes and vacuum — Motors (138)"));
+    m_mainBrush->setText(tr("Main brush"));
+    m_mainBrushOutward->setText(tr("Outward"));
+    m_sideBrush->setText(tr("Side brush"));
+    m_sideBrushClockwise->setText(tr("Clockwise"));
+    m_vacuum->setText(tr("Vacuum"));
+
+    m_pwmMotorsGroup->setTitle(tr("Duty cycle — PWM Motors (144)"));
+    m_pwmTitles[0]->setText(tr("Main brush"));
+    m_pwmTitles[1]->setText(tr("Side brush"));
+    m_pwmTitles[2]->setText(tr("Vacuum"));
+    m_pwmNote->setText(tr("Brushes -127..127 (negative turns them the other way), "
+                          "vacuum 0..127; 127 is full power."));
+
+    m_buttonsGroup->setTitle(tr("Press a button — Buttons (165)"));
+    for (const ButtonBit &b : kButtonBits)
+        findChild<QPushButton *>(b.objectName)->setText(tr(b.text));
+
+    m_lowSideGroup->setTitle(tr("Low side drivers — Low Side Drivers (138)"));
+    m_pwmLowSideGroup->setTitle(tr("Duty cycle — PWM Low Side Drivers (144)"));
+    for (int i = 0; i < 3; ++i) {
+        m_lowSide[i]->setText(tr("LD%1").arg(i));
+        m_lowSideTitles[i]->setText(tr("LD%1").arg(i));
+    }
+    m_lowSideNote->setText(tr("0..128; 128 is 100%."));
+
+    m_digitalOutputsGroup->setTitle(tr("Cargo bay — Digital Outputs (147)"));
+    for (int i = 0; i < 3; ++i)
+        m_digitalOutputs[i]->setText(tr("Output %1").arg(i));
+
+    m_sendIrGroup->setTitle(tr("IR output — Send IR (151)"));
+    m_irByteTitle->setText(tr("Byte"));
+    m_sendIr->setText(tr("Send IR"));
+    m_allOff->setText(tr("All off"));
+
+    showLastSent();
     refreshGroups();
 }
 
-QGroupBox *MotorsPanel::group(const QString &name, const QString &title)
+void MotorsPanel::changeEvent(QEvent *event)
 {
-    auto *g = new QGroupBox(title, this);
+    if (event->type() == QEvent::LanguageChange)
+        retranslateUi();
+    QWidget::changeEvent(event);
+}
+
+QGroupBox *MotorsPanel::group(const QString &name)
+{
+    auto *g = new QGroupBox(this);
     g->setObjectName(name);
     return g;
 }
 
-QCheckBox *MotorsPanel::checkBox(const QString &name, const QString &text)
+QCheckBox *MotorsPanel::checkBox(const QString &name)
 {
-    auto *box = new QCheckBox(text, this);
+    auto *box = new QCheckBox(this);
     box->setObjectName(name);
     return box;
+}
+
+QLabel *MotorsPanel::dutyTitle(QSlider *slider)
+{
+    auto *title = new QLabel(this);
+    title->setObjectName(slider->objectName() + "Title");
+    title->setBuddy(slider); // names the slider for screen readers
+    return title;
 }
 
 QSlider *MotorsPanel::dutySlider(const QString &name, int min, int max)
@@ -306,9 +388,15 @@ void MotorsPanel::send(const oi::Bytes &bytes)
     QStringList text;
     for (std::uint8_t b : bytes)
         text << QString::number(b);
-    m_lastSent->setText(tr("Last sent: %1").arg(text.join(' ')));
     m_lastSent->setProperty("bytes", text.join(' '));
+    showLastSent();
     emit sendRequested(QByteArray(reinterpret_cast<const char *>(bytes.data()), qsizetype(bytes.size())));
+}
+
+void MotorsPanel::showLastSent()
+{
+    const QString bytes = lastSentText();
+    m_lastSent->setText(bytes.isEmpty() ? tr("Last sent: —") : tr("Last sent: %1").arg(bytes));
 }
 
 QString MotorsPanel::lastSentText() const { return m_lastSent->property("bytes").toString(); }

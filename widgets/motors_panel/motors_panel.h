@@ -42,10 +42,15 @@ public slots:
     // Brushes and vacuum (or low side drivers) off and their duty at 0.
     void allOff();
 
+protected:
+    void changeEvent(QEvent *event) override;
+
 private:
-    QGroupBox *group(const QString &name, const QString &title);
-    QCheckBox *checkBox(const QString &name, const QString &text);
+    void retranslateUi();
+    QGroupBox *group(const QString &name);
+    QCheckBox *checkBox(const QString &name);
     QSlider *dutySlider(const QString &name, int min, int max);
+    QLabel *dutyTitle(QSlider *slider);
     void sendMotors();
     void sendPwmMotors();
     void sendLowSideDrivers();
@@ -54,6 +59,7 @@ private:
     void send(const oi::EncodeResult &bytes);
     void send(const oi::Bytes &bytes);
     void refreshGroups();
+    void showLastSent();
     void clearControls();
 
     const oi::RobotProfile *m_profile = &oi::profile(oi::ProfileId::Create2);
@@ -69,6 +75,8 @@ private:
     QSlider *m_mainBrushDuty = nullptr;
     QSlider *m_sideBrushDuty = nullptr;
     QSlider *m_vacuumDuty = nullptr;
+    std::array<QLabel *, 3> m_pwmTitles{}; // main brush, side brush, vacuum
+    QLabel *m_pwmNote = nullptr;
 
     QGroupBox *m_buttonsGroup = nullptr;
 
@@ -77,12 +85,16 @@ private:
 
     QGroupBox *m_pwmLowSideGroup = nullptr;
     std::array<QSlider *, 3> m_lowSideDuty{}; // LD0..LD2
+    std::array<QLabel *, 3> m_lowSideTitles{}; // LD0..LD2
+    QLabel *m_lowSideNote = nullptr;
 
     QGroupBox *m_digitalOutputsGroup = nullptr;
     std::array<QCheckBox *, 3> m_digitalOutputs{};
 
     QGroupBox *m_sendIrGroup = nullptr;
     QSpinBox *m_irByte = nullptr;
+    QLabel *m_irByteTitle = nullptr;
+    QPushButton *m_sendIr = nullptr;
 
     QPushButton *m_allOff = nullptr;
     QLabel *m_unavailable = nullptr;

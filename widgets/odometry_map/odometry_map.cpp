@@ -4,6 +4,7 @@
 #include "display_palette.h"
 
 #include <QDoubleSpinBox>
+#include <QEvent>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QMouseEvent>
@@ -35,19 +36,24 @@ OdometryMap::OdometryMap(QWidget *parent) : QWidget(parent)
     auto *controls = new QHBoxLayout(m_controls);
     controls->setContentsMargins(4, 4, 4, 4);
 
-    const auto addButton = [this, controls](const char *name, const QString &text, const QString &tip) {
+    const auto addButton = [this, controls](const char *name, const QString &text) {
         auto *b = new QPushButton(text, m_controls);
         b->setObjectName(name);
-        b->setToolTip(tip);
         controls->addWidget(b);
         return b;
     };
-    connect(addButton("zoomIn", "+", tr("Zoom in")), &QPushButton::clicked, this, &OdometryMap::zoomIn);
-    connect(addButton("zoomOut", "−", tr("Zoom out")), &QPushButton::clicked, this, &OdometryMap::zoomOut);
-    connect(addButton("centre", tr("Centre"), tr("Centre the map on the robot")), &QPushButton::clicked, this,
-            &OdometryMap::centreOnRobot);
-    connect(addButton("reset", tr("Reset"), tr("Clear the trail and start the odometry again at the origin")),
-            &QPushButton::clicked, this, &OdometryMap::reset);
+    // Symbols, not words: their names and tool tips come from retranslateUi().
+    m_zoomIn = addButton("zoomIn", QStringLiteral("+"));
+    m_zoomOut = addButton("zoomOut", QStringLiteral("−"));
+    // Square symbol buttons leave the bar's width to the translated words.
+    for (QPushButton *b : {m_zoomIn, m_zoomOut})
+        b->setFixedWidth(b->sizeHint().height() * 3 / 2);
+    m_centre = addButton("centre", QString());
+    m_reset = addButton("reset", QString());
+    connect(m_zoomIn, &QPushButton::clicked, this, &OdometryMap::zoomIn);
+    connect(m_zoomOut, &QPushButton::clicked, this, &OdometryMap::zoomOut);
+    connect(m_centre, &QPushButton::clicked, this, &OdometryMap::centreOnRobot);
+    connect(m_reset, &QPushButton::clicked, this, &OdometryMap::reset);
 
     m_wheelBase = new QDoubleSpinBox(m_controls);
     m_wheelBase->setObjectName("wheelBase");
@@ -55,18 +61,20 @@ OdometryMap::OdometryMap(QWidget *parent) : QWidget(parent)
     m_wheelBase->setDecimals(1);
     m_wheelBase->setSuffix(" mm");
     m_wheelBase->setValue(oi::kWheelBaseMm);
-    m_wheelBase->setToolTip(tr("Distance between the wheels' contact points"));
     m_wheelDiameter = new QDoubleSpinBox(m_controls);
     m_wheelDiameter->setObjectName("wheelDiameter");
     m_wheelDiameter->setRange(20, 200);
     m_wheelDiameter->setDecimals(2);
     m_wheelDiameter->setSuffix(" mm");
     m_wheelDiameter->setValue(kDefaultWheelDiameterMm);
-    m_wheelDiameter->setToolTip(tr("Wheel diameter; 508.8 encoder counts are one turn"));
+    m_wheelBaseTitle = new QLabel(m_controls);
+    m_wheelBaseTitle->setBuddy(m_wheelBase);
+    m_wheelDiameterTitle = new QLabel(m_controls);
+    m_wheelDiameterTitle->setBuddy(m_wheelDiameter);
     controls->addSpacing(8);
-    controls->addWidget(new QLabel(tr("Wheel base"), m_controls));
+    controls->addWidget(m_wheelBaseTitle);
     controls->addWidget(m_wheelBase);
-    controls->addWidget(new QLabel(tr("Wheel Ø"), m_controls));
+    controls->addWidget(m_wheelDiameterTitle);
     controls->addWidget(m_wheelDiameter);
     controls->addStretch();
     connect(m_wheelBase, &QDoubleSpinBox::valueChanged, this, &OdometryMap::applyGeometry);
@@ -92,7 +100,46 @@ OdometryMap::OdometryMap(QWidget *parent) : QWidget(parent)
     });
     m_displayTimer->start();
 
+    retranslateUi();
     reset();
+}
+
+void OdometryMap::retranslateUi()
+{
+    m_zoomIn->setToolTip(tr("Zoom in"));
+    m_zoomIn->setAccessibleName(tr("Zoom in"));
+    m_zoomOut->setToolTip(tr("Zoom out"));
+    m_zoomOut->setAccessibleName(tr("Zoom out"));
+    m_centre->setText(tr("Centre"));
+    m_centre->setToolTip(tr("Centre the map on the robot"));
+    m_reset->setText(tr("Reset"));
+    m_reset->setToolTip(tr("Clear the trail and start the odometry again at the origin"));
+    m_wheelBaseTitle->setText(tr("Wheel base"));
+    m_wheelDiameterTitle->setText(tr("Wheel Ø"));
+    updateGeometryTips();
+    setAccessibleName(tr("Odometry map"));
+    refresh(); // the pose text, its description and the painted labels
+}
+
+void OdometryMap::changeEvent(QEvent *event)
+{
+    if (event->type() == QEvent::LanguageChange)
+        retranslateUi();
+    QWidget::changeEvent(event);
+}
+
+void OdometryMap::updateGeometryTips()
+{
+    // The Create 1 has no encoders: it reports distance and angle itself.
+    if (m_profile->id == oi::ProfileId::Create1) {
+        const QString tip = tr("The %1 has no wheel encoders; it reports distance and angle itself")
+                                .arg(QString::fromUtf8(m_profile->name.data(), qsizetype(m_profile->name.size())));
+        m_wheelBase->setToolTip(tip);
+        m_wheelDiameter->setToolTip(tip);
+    } else {
+        m_wheelBase->setToolTip(tr("Distance between the wheels' contact points"));
+        m_wheelDiameter->setToolTip(tr("Wheel diameter; 508.8 encoder counts are one turn"));
+    }
 }
 
 void OdometryMap::setProfile(const oi::RobotProfile &profile)
@@ -100,14 +147,10 @@ void OdometryMap::setProfile(const oi::RobotProfile &profile)
     if (m_profile == &profile)
         return;
     m_profile = &profile;
-    // The Create 1 has no encoders: it reports distance and angle itself.
     const bool encoders = profile.id != oi::ProfileId::Create1;
-    for (QDoubleSpinBox *box : {m_wheelBase, m_wheelDiameter}) {
+    for (QDoubleSpinBox *box : {m_wheelBase, m_wheelDiameter})
         box->setEnabled(encoders);
-        box->setToolTip(encoders ? box->toolTip()
-                                 : tr("The %1 has no wheel encoders; it reports distance and angle itself")
-                                       .arg(QString::fromUtf8(profile.name.data(), qsizetype(profile.name.size()))));
-    }
+    updateGeometryTips();
     reset();
 }
 
@@ -219,10 +262,26 @@ QString OdometryMap::poseText() const
     return text;
 }
 
+QString OdometryMap::spokenPose() const
+{
+    const oi::Pose &p = pose();
+    QString text = tr("Robot at x %1 mm, y %2 mm, heading %3 degrees")
+                       .arg(p.xMm, 0, 'f', 0)
+                       .arg(p.yMm, 0, 'f', 0)
+                       .arg(p.thetaRad * 180 / kPi, 0, 'f', 0);
+    if (m_truePose)
+        text += tr("; %1 mm from the true pose").arg(std::hypot(p.xMm - m_truePose->xMm, p.yMm - m_truePose->yMm), 0, 'f', 0);
+    return text;
+}
+
 void OdometryMap::refresh()
 {
     m_dirty = false;
     m_poseLabel->setText(poseText());
+    // Only a change is announced, so set it only when it differs.
+    const QString spoken = spokenPose();
+    if (accessibleDescription() != spoken)
+        setAccessibleDescription(spoken);
     update();
 }
 
@@ -275,12 +334,15 @@ void OdometryMap::paintEvent(QPaintEvent *)
         colours << display::stateColor(display::State::Active, palette());
     }
     const QFontMetrics fm(font());
-    int y = area.top() + fm.height() + 10; // below the x labels
+    // Sizes follow the font, so the legend grows with it.
+    const int gap = fm.averageCharWidth();
+    const int swatch = fm.ascent() * 2 / 3;
+    int y = area.top() + 2 * fm.height(); // below the x labels
     for (qsizetype i = 0; i < legend.size(); ++i) {
         const int w = fm.horizontalAdvance(legend[i]);
-        const QRect text(area.right() - 8 - w, y, w, fm.height());
-        painter.fillRect(text.adjusted(-20, -2, 4, 2), palette().base());
-        painter.fillRect(QRect(text.left() - 16, text.center().y() - 4, 10, 8), colours[i]);
+        const QRect text(area.right() - gap - w, y, w, fm.height());
+        painter.fillRect(text.adjusted(-2 * gap - swatch, -2, gap / 2, 2), palette().base());
+        painter.fillRect(QRect(text.left() - gap - swatch, text.center().y() - swatch / 2, swatch, swatch), colours[i]);
         painter.setPen(palette().color(QPalette::Text));
         painter.drawText(text, Qt::AlignLeft | Qt::AlignVCenter, legend[i]);
         y += fm.height() + 4;
@@ -394,7 +456,10 @@ void OdometryMap::paintScaleBar(QPainter &painter, const QRect &area) const
     painter.drawLine(left, left - QPointF(0, 5));
     painter.drawLine(right, right - QPointF(0, 5));
     const QString text = spacing >= 1000 ? tr("%1 m").arg(spacing / 1000) : tr("%1 mm").arg(spacing);
-    painter.drawText(QRectF(left.x(), left.y() - 22, px, 16), Qt::AlignCenter, text);
+    // Centred over the bar, one line high above its ticks.
+    const QFontMetricsF fm(font());
+    const double w = std::max(px, fm.horizontalAdvance(text));
+    painter.drawText(QRectF(right.x() - w, left.y() - 6 - fm.height(), w, fm.height()), Qt::AlignCenter, text);
 }
 
 void OdometryMap::wheelEvent(QWheelEvent *event)

@@ -63,6 +63,8 @@ public:
 
     // "x 120 mm  y -35 mm  θ 12.5°", and the distance from the true pose if known.
     QString poseText() const;
+    // The pose in words for a screen reader; the map's accessible description.
+    QString spokenPose() const;
 
 public slots:
     void zoomIn();
@@ -72,6 +74,7 @@ public slots:
     void reset();
 
 protected:
+    void changeEvent(QEvent *event) override;
     void paintEvent(QPaintEvent *event) override;
     void wheelEvent(QWheelEvent *event) override;
     void mousePressEvent(QMouseEvent *event) override;
@@ -79,6 +82,8 @@ protected:
     void mouseReleaseEvent(QMouseEvent *event) override;
 
 private:
+    void retranslateUi();
+    void updateGeometryTips();
     void zoomBy(double factor, QPointF anchorWidget);
     void applyGeometry();
     void appendTrailPoint();
@@ -103,6 +108,12 @@ private:
     QWidget *m_controls = nullptr;
     QDoubleSpinBox *m_wheelBase = nullptr;
     QDoubleSpinBox *m_wheelDiameter = nullptr;
+    QLabel *m_wheelBaseTitle = nullptr;
+    QLabel *m_wheelDiameterTitle = nullptr;
+    QPushButton *m_zoomIn = nullptr;
+    QPushButton *m_zoomOut = nullptr;
+    QPushButton *m_centre = nullptr;
+    QPushButton *m_reset = nullptr;
     QLabel *m_poseLabel = nullptr;
     QTimer *m_displayTimer = nullptr;
 };

@@ -453,6 +453,10 @@
         <source>Type the bridge as host:port with a port from 1 to 65535, e.g. raspberrypi:3333.</source>
         <translation>Geben Sie die Brücke als host:port mit einem Port von 1 bis 65535 ein, z. B. raspberrypi:3333.</translation>
     </message>
+    <message>
+        <source>Refresh</source>
+        <translation>Aktualisieren</translation>
+    </message>
 </context>
 <context>
     <name>DashboardCommandLine</name>
@@ -1445,6 +1449,14 @@ GPL-3.0-or-later.</translation>
         <source>checksum failures %1, resyncs %2</source>
         <translation>Prüfsummenfehler %1, Neusynchronisierungen %2</translation>
     </message>
+    <message>
+        <source>&amp;Next pane</source>
+        <translation>&amp;Nächster Bereich</translation>
+    </message>
+    <message>
+        <source>&amp;Previous pane</source>
+        <translation>&amp;Vorheriger Bereich</translation>
+    </message>
 </context>
 <context>
     <name>MidiMelody</name>
@@ -2027,6 +2039,14 @@ GPL-3.0-or-later.</translation>
     <message>
         <source>Wall Signal</source>
         <translation>Wandsignal</translation>
+    </message>
+    <message>
+        <source>Infrared Character Omni</source>
+        <translation>Infrarotzeichen rundum</translation>
+    </message>
+    <message>
+        <source>Infrared Byte</source>
+        <translation>Infrarot-Byte</translation>
     </message>
 </context>
 <context>
@@ -2809,6 +2829,10 @@ Gesendet: %2</translation>
         <source>idle (high)</source>
         <translation>inaktiv (High)</translation>
     </message>
+    <message>
+        <source>Voltage</source>
+        <translation>Spannung</translation>
+    </message>
 </context>
 <context>
     <name>SensorHistory</name>
@@ -2928,10 +2952,6 @@ Gesendet: %2</translation>
         <translation>Pause</translation>
     </message>
     <message>
-        <source>Paused: drag to pan, wheel to zoom, Space resumes</source>
-        <translation>Angehalten: Ziehen verschiebt, Mausrad zoomt, Leertaste setzt fort</translation>
-    </message>
-    <message>
         <source>Live</source>
         <translation>Live</translation>
     </message>
@@ -2966,6 +2986,10 @@ Gesendet: %2</translation>
     <message>
         <source>Export failed</source>
         <translation>Export fehlgeschlagen</translation>
+    </message>
+    <message>
+        <source>Paused: drag or arrows pan, wheel or +/- zoom, Space resumes</source>
+        <translation>Angehalten: Ziehen oder Pfeiltasten verschieben, Mausrad oder +/- zoomt, Leertaste setzt fort</translation>
     </message>
 </context>
 <context>

@@ -453,6 +453,10 @@
         <source>Type the bridge as host:port with a port from 1 to 65535, e.g. raspberrypi:3333.</source>
         <translation>Escriba el puente como host:puerto con un puerto de 1 a 65535, p. ej. raspberrypi:3333.</translation>
     </message>
+    <message>
+        <source>Refresh</source>
+        <translation>Actualizar</translation>
+    </message>
 </context>
 <context>
     <name>DashboardCommandLine</name>
@@ -502,11 +506,11 @@ en su menú Ver, o el del sistema.
     </message>
     <message>
         <source>--tcp needs HOST:PORT with a port from 1 to 65535, not &apos;%1&apos;</source>
-        <translation>--tcp necesita HOST:PUERTO con un puerto de 1 a 65535, no '%1'</translation>
+        <translation>--tcp necesita HOST:PUERTO con un puerto de 1 a 65535, no &apos;%1&apos;</translation>
     </message>
     <message>
         <source>unknown profile &apos;%1&apos; (roomba500, create2, create1 or auto)</source>
-        <translation>perfil desconocido '%1' (roomba500, create2, create1 o auto)</translation>
+        <translation>perfil desconocido &apos;%1&apos; (roomba500, create2, create1 o auto)</translation>
     </message>
     <message>
         <source>--baud %1 is not a rate the robot offers (300 .. 115200)</source>
@@ -514,15 +518,15 @@ en su menú Ver, o el del sistema.
     </message>
     <message>
         <source>--record: the folder of &apos;%1&apos; does not exist</source>
-        <translation>--record: la carpeta de '%1' no existe</translation>
+        <translation>--record: la carpeta de &apos;%1&apos; no existe</translation>
     </message>
     <message>
         <source>unknown language &apos;%1&apos; (%2)</source>
-        <translation>idioma desconocido '%1' (%2)</translation>
+        <translation>idioma desconocido &apos;%1&apos; (%2)</translation>
     </message>
     <message>
         <source>unknown argument &apos;%1&apos;; see --help</source>
-        <translation>argumento desconocido '%1'; consulte --help</translation>
+        <translation>argumento desconocido &apos;%1&apos;; consulte --help</translation>
     </message>
     <message>
         <source>--profile and --baud go with --sim, --port or --tcp</source>
@@ -1445,6 +1449,14 @@ GPL-3.0-or-later.</translation>
         <source>checksum failures %1, resyncs %2</source>
         <translation>fallos de suma de comprobación %1, resincronizaciones %2</translation>
     </message>
+    <message>
+        <source>&amp;Next pane</source>
+        <translation>Panel &amp;siguiente</translation>
+    </message>
+    <message>
+        <source>&amp;Previous pane</source>
+        <translation>Panel an&amp;terior</translation>
+    </message>
 </context>
 <context>
     <name>MidiMelody</name>
@@ -2028,6 +2040,14 @@ GPL-3.0-or-later.</translation>
         <source>Wall Signal</source>
         <translation>Señal de pared</translation>
     </message>
+    <message>
+        <source>Infrared Character Omni</source>
+        <translation>Carácter infrarrojo omnidireccional</translation>
+    </message>
+    <message>
+        <source>Infrared Byte</source>
+        <translation>Byte infrarrojo</translation>
+    </message>
 </context>
 <context>
     <name>PianoRoll</name>
@@ -2253,15 +2273,15 @@ GPL-3.0-or-later.</translation>
     </message>
     <message>
         <source>expected NAME:DEFAULTS:NOTES, e.g. &quot;Beep:d=4,o=5,b=120:c,e,g&quot;</source>
-        <translation>se esperaba NOMBRE:VALORES:NOTAS, p. ej. "Beep:d=4,o=5,b=120:c,e,g"</translation>
+        <translation>se esperaba NOMBRE:VALORES:NOTAS, p. ej. &quot;Beep:d=4,o=5,b=120:c,e,g&quot;</translation>
     </message>
     <message>
         <source>default &quot;%1&quot; is not KEY=NUMBER</source>
-        <translation>el valor predeterminado "%1" no es CLAVE=NÚMERO</translation>
+        <translation>el valor predeterminado &quot;%1&quot; no es CLAVE=NÚMERO</translation>
     </message>
     <message>
         <source>default &quot;%1&quot; is not valid (d: 1..32, o: 4..7, b: 1..900)</source>
-        <translation>el valor predeterminado "%1" no es válido (d: 1..32, o: 4..7, b: 1..900)</translation>
+        <translation>el valor predeterminado &quot;%1&quot; no es válido (d: 1..32, o: 4..7, b: 1..900)</translation>
     </message>
     <message>
         <source>the tune has no notes</source>
@@ -2269,7 +2289,7 @@ GPL-3.0-or-later.</translation>
     </message>
     <message>
         <source>note %1 &quot;%2&quot;: %3</source>
-        <translation>nota %1 "%2": %3</translation>
+        <translation>nota %1 &quot;%2&quot;: %3</translation>
     </message>
     <message>
         <source>duration must be 1, 2, 4, 8, 16 or 32</source>
@@ -2281,7 +2301,7 @@ GPL-3.0-or-later.</translation>
     </message>
     <message>
         <source>&quot;%1&quot; is not a note (a..g, h) or pause (p)</source>
-        <translation>"%1" no es una nota (a..g, h) ni una pausa (p)</translation>
+        <translation>&quot;%1&quot; no es una nota (a..g, h) ni una pausa (p)</translation>
     </message>
     <message>
         <source>octave must be 4..7</source>
@@ -2289,7 +2309,7 @@ GPL-3.0-or-later.</translation>
     </message>
     <message>
         <source>unexpected &quot;%1&quot;</source>
-        <translation>"%1" inesperado</translation>
+        <translation>&quot;%1&quot; inesperado</translation>
     </message>
     <message>
         <source>lasts %1/64 s at %2 beats per minute; a note lasts 1..255</source>
@@ -2300,7 +2320,7 @@ GPL-3.0-or-later.</translation>
     <name>RxFrameScanner</name>
     <message>
         <source>text &quot;%1&quot;</source>
-        <translation>texto "%1"</translation>
+        <translation>texto &quot;%1&quot;</translation>
     </message>
     <message>
         <source>outside any stream frame</source>
@@ -2451,27 +2471,27 @@ GPL-3.0-or-later.</translation>
     </message>
     <message>
         <source>Preset &quot;%1&quot; replaced.</source>
-        <translation>Preajuste "%1" reemplazado.</translation>
+        <translation>Preajuste &quot;%1&quot; reemplazado.</translation>
     </message>
     <message>
         <source>Preset &quot;%1&quot; saved.</source>
-        <translation>Preajuste "%1" guardado.</translation>
+        <translation>Preajuste &quot;%1&quot; guardado.</translation>
     </message>
     <message>
         <source>No preset named &quot;%1&quot;.</source>
-        <translation>No hay ningún preajuste llamado "%1".</translation>
+        <translation>No hay ningún preajuste llamado &quot;%1&quot;.</translation>
     </message>
     <message>
         <source>Preset &quot;%1&quot; is damaged: %2</source>
-        <translation>El preajuste "%1" está dañado: %2</translation>
+        <translation>El preajuste &quot;%1&quot; está dañado: %2</translation>
     </message>
     <message>
         <source>Preset &quot;%1&quot; loaded; press Send Schedule to send it.</source>
-        <translation>Preajuste "%1" cargado; pulse Enviar programación para enviarlo.</translation>
+        <translation>Preajuste &quot;%1&quot; cargado; pulse Enviar programación para enviarlo.</translation>
     </message>
     <message>
         <source>Preset &quot;%1&quot; deleted.</source>
-        <translation>Preajuste "%1" eliminado.</translation>
+        <translation>Preajuste &quot;%1&quot; eliminado.</translation>
     </message>
 </context>
 <context>
@@ -2809,6 +2829,10 @@ Enviado: %2</translation>
         <source>idle (high)</source>
         <translation>inactiva (alta)</translation>
     </message>
+    <message>
+        <source>Voltage</source>
+        <translation>Tensión</translation>
+    </message>
 </context>
 <context>
     <name>SensorHistory</name>
@@ -2928,10 +2952,6 @@ Enviado: %2</translation>
         <translation>Pausa</translation>
     </message>
     <message>
-        <source>Paused: drag to pan, wheel to zoom, Space resumes</source>
-        <translation>En pausa: arrastre para desplazar, rueda para ampliar, barra espaciadora para reanudar</translation>
-    </message>
-    <message>
         <source>Live</source>
         <translation>En vivo</translation>
     </message>
@@ -2966,6 +2986,10 @@ Enviado: %2</translation>
     <message>
         <source>Export failed</source>
         <translation>Error al exportar</translation>
+    </message>
+    <message>
+        <source>Paused: drag or arrows pan, wheel or +/- zoom, Space resumes</source>
+        <translation>En pausa: arrastre o flechas para desplazar, rueda o +/- para ampliar, barra espaciadora para continuar</translation>
     </message>
 </context>
 <context>
@@ -3136,7 +3160,7 @@ Enviado: %2</translation>
     </message>
     <message>
         <source>Note: a name such as C#5, a MIDI number 31..127 or &quot;rest&quot;. Duration in 1/64 s (0..255) or in milliseconds.</source>
-        <translation>Nota: un nombre como C#5, un número MIDI 31..127 o "silencio". Duración en 1/64 s (0..255) o en milisegundos.</translation>
+        <translation>Nota: un nombre como C#5, un número MIDI 31..127 o &quot;silencio&quot;. Duración en 1/64 s (0..255) o en milisegundos.</translation>
     </message>
     <message>
         <source>Notes</source>
@@ -3334,15 +3358,15 @@ Enviado: %2</translation>
     </message>
     <message>
         <source>Note %1: &quot;%2&quot; is not a note. Use a name from G1 to G9 (e.g. C#5), a MIDI number 31..127, or &quot;rest&quot;.</source>
-        <translation>Nota %1: "%2" no es una nota. Use un nombre de G1 a G9 (p. ej. C#5), un número MIDI 31..127 o "silencio".</translation>
+        <translation>Nota %1: &quot;%2&quot; no es una nota. Use un nombre de G1 a G9 (p. ej. C#5), un número MIDI 31..127 o &quot;silencio&quot;.</translation>
     </message>
     <message>
         <source>Note %1: &quot;%2&quot; is not a whole number of 1/64 s</source>
-        <translation>Nota %1: "%2" no es un número entero de 1/64 s</translation>
+        <translation>Nota %1: &quot;%2&quot; no es un número entero de 1/64 s</translation>
     </message>
     <message>
         <source>Note %1: &quot;%2&quot; is not a number of milliseconds</source>
-        <translation>Nota %1: "%2" no es un número de milisegundos</translation>
+        <translation>Nota %1: &quot;%2&quot; no es un número de milisegundos</translation>
     </message>
     <message>
         <source>Note %1: %2 is outside 0..255/64 s (0..3984 ms)</source>
@@ -3489,7 +3513,7 @@ Enviado: %2</translation>
     </message>
     <message>
         <source>Not a song file: &quot;format&quot; is not &quot;%1&quot;</source>
-        <translation>No es un archivo de canciones: "format" no es "%1"</translation>
+        <translation>No es un archivo de canciones: &quot;format&quot; no es &quot;%1&quot;</translation>
     </message>
     <message>
         <source>Song file version %1 is not supported; only version %2 is</source>
@@ -3497,7 +3521,7 @@ Enviado: %2</translation>
     </message>
     <message>
         <source>Song file has no &quot;songs&quot; list</source>
-        <translation>El archivo de canciones no tiene lista "songs"</translation>
+        <translation>El archivo de canciones no tiene lista &quot;songs&quot;</translation>
     </message>
     <message>
         <source>Song %1: slot %2 is outside 0..%3 for this robot</source>
@@ -3509,7 +3533,7 @@ Enviado: %2</translation>
     </message>
     <message>
         <source>Song in slot %1 has no &quot;notes&quot; list</source>
-        <translation>La canción de la ranura %1 no tiene lista "notes"</translation>
+        <translation>La canción de la ranura %1 no tiene lista &quot;notes&quot;</translation>
     </message>
     <message>
         <source>Song in slot %1 has %2 notes; a song has 1..%3</source>

@@ -270,6 +270,13 @@ void MainWindow::buildActions()
     connect(m_quitAction, &QAction::triggered, this, &QWidget::close);
     m_resetLayoutAction = new QAction(this);
     connect(m_resetLayoutAction, &QAction::triggered, this, &MainWindow::resetLayout);
+    m_nextDockAction = new QAction(this);
+    m_nextDockAction->setShortcut(QKeySequence(Qt::Key_F6));
+    connect(m_nextDockAction, &QAction::triggered, this, [this] { focusNextDock(1); });
+    m_previousDockAction = new QAction(this);
+    m_previousDockAction->setShortcut(QKeySequence(Qt::SHIFT | Qt::Key_F6));
+    connect(m_previousDockAction, &QAction::triggered, this, [this] { focusNextDock(-1); });
+    addActions({m_nextDockAction, m_previousDockAction}); // work without the menu open
     m_aboutAction = new QAction(this);
     connect(m_aboutAction, &QAction::triggered, this, [this] {
         QMessageBox::about(this, tr("About Roomba Dashboard"),
@@ -316,6 +323,8 @@ void MainWindow::buildMenus()
         m_viewMenu->addAction(dock->toggleViewAction());
     m_viewMenu->addAction(m_recordingBar->toggleViewAction());
     m_viewMenu->addSeparator();
+    m_viewMenu->addAction(m_nextDockAction);
+    m_viewMenu->addAction(m_previousDockAction);
     m_languageMenu = m_viewMenu->addMenu(QString());
     m_languageMenu->setObjectName("languageMenu");
     m_languageMenu->addActions(m_languageGroup->actions());
@@ -343,6 +352,8 @@ void MainWindow::retranslateUi()
     m_languageMenu->setTitle(tr("&Language"));
     m_systemLanguageAction->setText(tr("System default"));
     m_resetLayoutAction->setText(tr("&Reset layout"));
+    m_nextDockAction->setText(tr("&Next pane"));
+    m_previousDockAction->setText(tr("&Previous pane"));
     m_helpMenu->setTitle(tr("&Help"));
     m_aboutAction->setText(tr("&About"));
     m_profileLabel->setText(oitext::fromView(m_session.robotProfile().name));
@@ -533,6 +544,39 @@ void MainWindow::resetLayout()
     restoreState(m_defaultState);
     for (QDockWidget *dock : m_docks)
         dock->show();
+}
+
+QDockWidget *MainWindow::focusNextDock(int direction)
+{
+    QList<QDockWidget *> open;
+    for (QDockWidget *dock : m_docks)
+        if (dock->toggleViewAction()->isChecked())
+            open << dock;
+    if (open.isEmpty())
+        return nullptr;
+    const QWidget *focus = QApplication::focusWidget();
+    qsizetype current = -1;
+    for (qsizetype i = 0; i < open.size(); ++i)
+        if (focus && (open[i] == focus || open[i]->isAncestorOf(focus)))
+            current = i;
+    const qsizetype count = open.size();
+    const qsizetype next = current < 0 ? (direction > 0 ? 0 : count - 1) : ((current + direction) % count + count) % count;
+    QDockWidget *dock = open[next];
+    dock->raise(); // a tabbed dock comes to the front
+    // The first control that Tab would reach inside it; else the dock's widget.
+    QWidget *target = dock->widget();
+    for (QWidget *w = dock->widget()->nextInFocusChain(); w && w != dock->widget(); w = w->nextInFocusChain()) {
+        if (!dock->isAncestorOf(w))
+            continue;
+        if ((w->focusPolicy() & Qt::TabFocus) && w->isVisible() && w->isEnabled()) {
+            target = w;
+            break;
+        }
+    }
+    if (target == dock->widget() && target->focusPolicy() == Qt::NoFocus)
+        target->setFocusPolicy(Qt::TabFocus);
+    target->setFocus(Qt::ShortcutFocusReason);
+    return dock;
 }
 
 oilink::LinkSettings MainWindow::linkSettingsFor(const ConnectionRequest &r)

@@ -57,6 +57,9 @@ public:
     // robot, or on first start to the built-in virtual robot.
     void start(const std::optional<oilink::LinkSettings> &override = {});
     void resetLayout();
+    // F6 and Shift+F6: the keyboard moves from dock to dock (+1 or -1),
+    // raising a tabbed one. Returns the dock that now has the focus.
+    QDockWidget *focusNextDock(int direction);
 
     static oilink::LinkSettings linkSettingsFor(const ConnectionRequest &request);
 
@@ -162,6 +165,8 @@ private:
     QAction *m_quitAction = nullptr;
     QAction *m_resetLayoutAction = nullptr;
     QAction *m_aboutAction = nullptr;
+    QAction *m_nextDockAction = nullptr;
+    QAction *m_previousDockAction = nullptr;
     QAction *m_systemLanguageAction = nullptr;
     QActionGroup *m_languageGroup = nullptr;
     QToolBar *m_recordingBar = nullptr;

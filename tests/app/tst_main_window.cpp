@@ -22,6 +22,7 @@
 #include <QToolBar>
 #include <QToolButton>
 #include <QPointer>
+#include <QSet>
 #include <QTemporaryDir>
 #include <QMutex>
 #include <QPushButton>
@@ -326,6 +327,39 @@ private slots:
         window.refreshDisplay();
         QVERIFY(window.statusText().contains("streaming"));
         window.setLanguage(QString()); // the system's, which is English here
+    }
+
+    void f6VisitsEveryDock()
+    {
+        MainWindow window;
+        window.resize(1400, 950);
+        window.show();
+        window.activateWindow();
+        window.start(oilink::LinkSettings::virtualRobotOf(oi::ProfileId::Create2, oi::ProfileId::Create2));
+        QTRY_COMPARE_WITH_TIMEOUT(window.session().state(), oilink::LinkState::Streaming, 10000);
+        const QList<QDockWidget *> docks = window.findChildren<QDockWidget *>();
+        QSet<QDockWidget *> visited;
+        for (int i = 0; i < docks.size(); ++i) {
+            QWidget *focus = QApplication::focusWidget() ? QApplication::focusWidget() : &window;
+            QTest::keyClick(focus, Qt::Key_F6);
+            QDockWidget *dock = nullptr;
+            for (QDockWidget *d : docks)
+                if (d->isAncestorOf(QApplication::focusWidget()))
+                    dock = d;
+            QVERIFY2(dock, qPrintable(QString("F6 press %1 left the focus outside every dock").arg(i + 1)));
+            QVERIFY2(dock->isVisible(), qPrintable(dock->objectName()));
+            visited << dock;
+        }
+        QCOMPARE(visited.size(), docks.size());
+        // Shift+F6 goes back the same way.
+        QDockWidget *last = nullptr;
+        for (QDockWidget *d : docks)
+            if (d->isAncestorOf(QApplication::focusWidget()))
+                last = d;
+        QTest::keyClick(QApplication::focusWidget(), Qt::Key_F6, Qt::ShiftModifier);
+        QVERIFY(!last->isAncestorOf(QApplication::focusWidget()));
+        QTest::keyClick(QApplication::focusWidget(), Qt::Key_F6);
+        QVERIFY(last->isAncestorOf(QApplication::focusWidget()));
     }
 
     // Every text in the whole window goes through a translator and is set

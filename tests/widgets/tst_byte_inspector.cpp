@@ -1,8 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "byte_inspector.h"
 #include "command_decoder.h"
+#include "pseudo_translation.h"
+#include "sensor_scenes.h"
 #include "rx_frame_scanner.h"
 
+#include <QApplication>
+#include <QCheckBox>
 #include <QDir>
 #include <QLabel>
 #include <QLineEdit>
@@ -13,6 +17,7 @@
 #include <QTextBlock>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QToolButton>
 
 #include <cmath>
 
@@ -362,6 +367,74 @@ private slots:
         inspector.findChild<QPlainTextEdit *>(QStringLiteral("byteLog"))->verticalScrollBar()->setValue(0);
         QCoreApplication::processEvents();
         QVERIFY(inspector.grab().save(QDir(QString::fromLocal8Bit(dir)).filePath(QStringLiteral("byte_inspector_top.png"))));
+    }
+
+    void translatesOnTheSpot()
+    {
+        ByteInspector inspector;
+        inspector.show();
+        inspector.appendTx(bytesOf({128, 131}), 1000);
+        inspector.flushView();
+        inspector.setPaused(true);
+        inspector.appendTx(bytesOf({132}), 1100);
+        auto *input = inspector.findChild<QLineEdit *>(QStringLiteral("rawInput"));
+        QTest::keyClicks(input, QStringLiteral("300"));
+        QTest::keyClick(input, Qt::Key_Return); // an error to say again
+        {
+            ScopedPseudoTranslation pseudo;
+            QCoreApplication::processEvents();
+            const QStringList left = untranslatedTexts(&inspector);
+            QVERIFY2(left.isEmpty(), qPrintable(left.join('\n')));
+        }
+        QCoreApplication::processEvents();
+        QCOMPARE(inspector.findChild<QToolButton *>(QStringLiteral("pauseButton"))->text(), QString("Resume"));
+        QCOMPARE(inspector.findChild<QLabel *>(QStringLiteral("rawError"))->text(),
+                 QString("Byte 1: 300 is outside 0..255."));
+        QCOMPARE(inspector.findChild<QLabel *>(QStringLiteral("status"))->text(),
+                 QString("3 entries \u00b7 TX 3 B \u00b7 RX 0 B \u00b7 paused, 1 new"));
+    }
+
+    void keyboardReachesEveryControl()
+    {
+        ByteInspector inspector;
+        inspector.show();
+        inspector.activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(&inspector));
+        auto *pause = inspector.findChild<QWidget *>(QStringLiteral("pauseButton"));
+        pause->setFocus(Qt::TabFocusReason);
+        QStringList visited;
+        while (QWidget *w = QApplication::focusWidget()) {
+            if (visited.contains(w->objectName()) || visited.size() > 20)
+                break;
+            visited << w->objectName();
+            QTest::keyClick(w, Qt::Key_Tab);
+        }
+        // Top to bottom, left to right, as laid out.
+        QCOMPARE(visited, QStringList({"pauseButton", "clearButton", "hexBox", "byteLog", "rawInput", "sendButton"}));
+        // Space works the focused controls.
+        QTest::keyClick(pause, Qt::Key_Space);
+        QVERIFY(inspector.isPaused());
+        auto *hex = inspector.findChild<QCheckBox *>(QStringLiteral("hexBox"));
+        hex->setFocus();
+        QTest::keyClick(hex, Qt::Key_Space);
+        QVERIFY(inspector.showsHex());
+        for (const char *name : {"byteLog", "rawInput"})
+            QVERIFY2(!inspector.findChild<QWidget *>(name)->accessibleName().isEmpty(), name);
+    }
+
+    void screenshots()
+    {
+        ByteInspector inspector;
+        inspector.resize(640, 360);
+        inspector.show();
+        inspector.appendTx(bytesOf({128, 131, 137, 255, 56, 1, 244}), 1000);
+        inspector.appendRx(frame(bytesOf({22, 0x3A, 0x98, 7, 1})), 1015);
+        inspector.appendRx(QByteArray("bat-min 12\r\n"), 1030);
+        inspector.flushView();
+        sensor_scenes::saveScreenshot(inspector, "byte_inspector");
+        ScopedPseudoTranslation pseudo; // longer texts, as translations are
+        QCoreApplication::processEvents();
+        sensor_scenes::saveScreenshot(inspector, "byte_inspector_pseudo");
     }
 };
 

@@ -1,11 +1,15 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "connection_bar.h"
+#include "pseudo_translation.h"
+#include "sensor_scenes.h"
 
+#include <QApplication>
 #include <QComboBox>
 #include <QLineEdit>
 #include <QPushButton>
 #include <QSignalSpy>
 #include <QTest>
+#include <QToolButton>
 
 class TestConnectionBar : public QObject {
     Q_OBJECT
@@ -121,6 +125,79 @@ private slots:
         QVERIFY(bar.findChild<QPushButton *>("connect")->isEnabled());
         bar.showError("Port busy");
         QCOMPARE(bar.errorText(), QString("Port busy"));
+    }
+
+    void translatesOnTheSpot()
+    {
+        ConnectionBar bar;
+        choose(bar, "transport", int(ConnectionRequest::Transport::Serial));
+        choose(bar, "baud", 57600);
+        bar.findChild<QComboBox *>("port")->setEditText(QString());
+        clickConnect(bar); // no port: the bar's own error
+        bar.show();
+        QStringList brands; // robot names are never translated
+        for (oi::ProfileId id : oi::allProfiles())
+            brands << QString::fromUtf8(oi::profile(id).name.data(), qsizetype(oi::profile(id).name.size()));
+        {
+            ScopedPseudoTranslation pseudo;
+            QCoreApplication::processEvents();
+            const QStringList left = untranslatedTexts(&bar, brands);
+            QVERIFY2(left.isEmpty(), qPrintable(left.join('\n')));
+            QVERIFY(bar.errorText().contains(kPseudoOpen));
+            // The choices survive: same item, same data.
+            QCOMPARE(bar.request().transport, ConnectionRequest::Transport::Serial);
+            QCOMPARE(bar.request().baud, 57600);
+        }
+        QCoreApplication::processEvents();
+        QCOMPARE(bar.findChild<QPushButton *>("connect")->text(), QString("Connect"));
+        QCOMPARE(bar.errorText(), QString("Choose a serial port or type its path."));
+        QCOMPARE(bar.findChild<QComboBox *>("transport")->currentText(), QString("Serial port"));
+    }
+
+    void keyboardReachesEveryControl()
+    {
+        ConnectionBar bar;
+        choose(bar, "transport", int(ConnectionRequest::Transport::Serial));
+        bar.show();
+        bar.activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(&bar));
+        auto *transport = bar.findChild<QComboBox *>("transport");
+        transport->setFocus(Qt::TabFocusReason);
+        QStringList visited;
+        while (QWidget *w = QApplication::focusWidget()) {
+            // The editable port combo's line edit takes focus on its behalf.
+            QWidget *control = w->parentWidget() && w->parentWidget() != &bar ? w->parentWidget() : w;
+            if (visited.contains(control->objectName()) || visited.size() > 20)
+                break;
+            visited << control->objectName();
+            QTest::keyClick(w, Qt::Key_Tab);
+        }
+        // Left to right as laid out; Disconnect is disabled until connected.
+        QCOMPARE(visited, QStringList({"transport", "port", "refresh", "profile", "baud", "connect"}));
+        // Every control has a name a screen reader can say.
+        for (const char *name : {"transport", "port", "tcp", "profile", "baud"})
+            QVERIFY2(!bar.findChild<QWidget *>(name)->accessibleName().isEmpty(), name);
+        // Enter in the TCP field connects.
+        choose(bar, "transport", int(ConnectionRequest::Transport::Tcp));
+        auto *tcp = bar.findChild<QLineEdit *>("tcp");
+        tcp->setFocus();
+        QSignalSpy spy(&bar, &ConnectionBar::connectRequested);
+        QTest::keyClicks(tcp, "pi:3333");
+        QTest::keyClick(tcp, Qt::Key_Return);
+        QCOMPARE(spy.count(), 1);
+    }
+
+    void screenshots()
+    {
+        ConnectionBar bar;
+        choose(bar, "transport", int(ConnectionRequest::Transport::Serial));
+        clickConnect(bar);
+        bar.resize(900, bar.sizeHint().height());
+        bar.show();
+        sensor_scenes::saveScreenshot(bar, "connection_bar");
+        ScopedPseudoTranslation pseudo; // longer texts, as translations are
+        QCoreApplication::processEvents();
+        sensor_scenes::saveScreenshot(bar, "connection_bar_pseudo");
     }
 };
 

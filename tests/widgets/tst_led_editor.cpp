@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "led_editor.h"
+#include "pseudo_translation.h"
 #include "sensor_scenes.h"
 #include "seven_segment_display.h"
 #include "seven_segment_font.h"
 
+#include <QApplication>
 #include <QCheckBox>
 #include <QGroupBox>
 #include <QLabel>
@@ -26,6 +28,22 @@ QByteArray bytes(std::initializer_list<int> values)
 }
 
 QByteArray sent(const QSignalSpy &spy, int index) { return spy.at(index).at(0).toByteArray(); }
+
+// The object names of the widgets Tab visits from `first`, each once, in order.
+QStringList tabChain(QWidget *first, int presses)
+{
+    first->setFocus(Qt::TabFocusReason);
+    QStringList visited;
+    for (int i = 0; i < presses; ++i) {
+        QWidget *focus = QApplication::focusWidget();
+        if (!focus)
+            break;
+        if (!visited.contains(focus->objectName()))
+            visited << focus->objectName();
+        QTest::keyClick(focus, Qt::Key_Tab);
+    }
+    return visited;
+}
 
 } // namespace
 
@@ -370,6 +388,102 @@ private slots:
         QCOMPARE(LedEditor::powerLedColor(128, 255), QColor(128, 127, 0));
         QCOMPARE(LedEditor::powerLedColor(255, 0), QColor(0, 0, 0));
         QCOMPARE(LedEditor::powerLedColor(0, 51), QColor(0, 51, 0));
+    }
+
+    void translatesOnTheSpot()
+    {
+        LedEditor editor;
+        editor.setProfile(profile(ProfileId::Create2));
+        child<QLineEdit>(editor, "asciiText")->setText("Hi*5");
+        child<QCheckBox>(editor, "weekday2")->setChecked(true);
+        show(editor);
+        const auto masks = child<SevenSegmentDisplay>(editor, "segmentEditor")->masks();
+        const QString preview = editor.bytePreview();
+        // Nothing here is a brand name or unit; numbers and bytes have no letters.
+        const QStringList allowed;
+        {
+            ScopedPseudoTranslation pseudo;
+            QCoreApplication::processEvents();
+            const QStringList untranslated = untranslatedTexts(&editor, allowed);
+            QVERIFY2(untranslated.isEmpty(), qPrintable(untranslated.join('\n')));
+            // Layout requests climb one level of nesting per pass of the event loop.
+            for (int pass = 0; pass < 5; ++pass)
+                QCoreApplication::processEvents();
+            editor.resize(editor.sizeHint().expandedTo(editor.size())); // room for the longer texts
+            sensor_scenes::saveScreenshot(editor, "led_editor_pseudo");
+            QVERIFY(child<SevenSegmentDisplay>(editor, "segmentEditor")->accessibleDescription().contains(kPseudoOpen));
+            // The user's settings survive the switch.
+            QCOMPARE(child<QLineEdit>(editor, "asciiText")->text(), QString("Hi*5"));
+            QVERIFY(child<QCheckBox>(editor, "weekday2")->isChecked());
+            QVERIFY(child<SevenSegmentDisplay>(editor, "segmentEditor")->masks() == masks);
+            QCOMPARE(editor.bytePreview(), preview);
+        }
+        QCoreApplication::processEvents();
+        QCOMPARE(child<QPushButton>(editor, "apply")->text(), QString("Apply"));
+        QCOMPARE(child<QGroupBox>(editor, "ledsGroup")->title(), QString("LEDs (139)"));
+        QCOMPARE(child<QLabel>(editor, "asciiMessage")->text(), QString("'*' shows blank: the robot has no shape for it."));
+    }
+
+    void customWidgetsAreNamedForScreenReaders()
+    {
+        LedEditor editor;
+        for (const char *name : {"segmentEditor", "asciiPreview", "powerSwatch"}) {
+            auto *w = child<QWidget>(editor, name);
+            QVERIFY2(!w->accessibleName().isEmpty(), name);
+            QVERIFY2(!w->accessibleDescription().isEmpty(), name);
+        }
+        // The preview's description says what it shows, and follows the text.
+        const QString before = child<SevenSegmentDisplay>(editor, "asciiPreview")->accessibleDescription();
+        child<QLineEdit>(editor, "asciiText")->setText("8");
+        const QString after = child<SevenSegmentDisplay>(editor, "asciiPreview")->accessibleDescription();
+        QVERIFY2(after != before, qPrintable(after));
+        QVERIFY2(after.contains("digit 1 segments ABCDEFG"), qPrintable(after));
+        child<QSlider>(editor, "powerColour")->setValue(200);
+        QVERIFY(child<QLabel>(editor, "powerSwatch")->accessibleDescription().contains("200"));
+    }
+
+    void tabReachesEveryControlInOrder()
+    {
+        LedEditor editor;
+        editor.setProfile(profile(ProfileId::Create2));
+        show(editor);
+        editor.activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(&editor));
+        child<QCheckBox>(editor, "ledSpot")->setChecked(true); // so Apply has something to send
+        QStringList expected{"segmentEditor", "clearSegments", "asciiText", "ledDebris", "ledSpot", "ledDock",
+                             "ledCheckRobot", "powerColour", "powerIntensity"};
+        for (int day = 0; day < 7; ++day)
+            expected << QString("weekday%1").arg(day);
+        expected << "schedSchedule" << "schedClock" << "schedAm" << "schedPm" << "schedColon" << "live" << "apply";
+        QCOMPARE(tabChain(child<QWidget>(editor, "segmentEditor"), expected.size() + 1), expected);
+    }
+
+    void segmentEditorWorksFromTheKeyboard()
+    {
+        LedEditor editor;
+        show(editor);
+        auto *segments = child<SevenSegmentDisplay>(editor, "segmentEditor");
+        QCOMPARE(segments->focusPolicy(), Qt::StrongFocus);
+        segments->setFocus();
+        QSignalSpy spy(&editor, &LedEditor::sendRequested);
+        QTest::keyClick(segments, Qt::Key_Space); // digit 3, segment A
+        QTest::keyClick(segments, Qt::Key_Right);
+        QTest::keyClick(segments, Qt::Key_Space); // and B
+        QTest::keyClick(segments, Qt::Key_Down);
+        QTest::keyClick(segments, Qt::Key_Space); // next digit, B
+        QTest::keyClick(segments, Qt::Key_Left);
+        QTest::keyClick(segments, Qt::Key_Left);
+        QTest::keyClick(segments, Qt::Key_Space); // back to the first digit's last segment, G
+        const std::array<std::uint8_t, 4> expected{segment::A | segment::B | segment::G, segment::B, 0, 0};
+        QVERIFY(segments->masks() == expected);
+        QVERIFY2(segments->accessibleDescription().contains("digit 1 segments ABG"),
+                 qPrintable(segments->accessibleDescription()));
+        QCOMPARE(editor.bytePreview(), QString("163 67 2 0 0"));
+        // Space on the focused Apply button sends it.
+        child<QPushButton>(editor, "apply")->setFocus();
+        QTest::keyClick(child<QPushButton>(editor, "apply"), Qt::Key_Space);
+        QCOMPARE(spy.count(), 1);
+        QCOMPARE(sent(spy, 0), bytes({163, 67, 2, 0, 0}));
     }
 
     void screenshots_data()

@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "mode_panel.h"
+#include "pseudo_translation.h"
+#include "sensor_scenes.h"
 
+#include <QApplication>
 #include <QComboBox>
 #include <QLabel>
 #include <QPushButton>
@@ -27,6 +30,23 @@ SensorSnapshot modeSnapshot(const RobotProfile &p, OiMode mode)
         s.set(id, 0);
     s.set(34, 0);
     return s;
+}
+
+// The widgets Tab visits from `first` until focus comes round again.
+QList<QWidget *> tabWalk(QWidget *window, QWidget *first)
+{
+    window->activateWindow();
+    if (!QTest::qWaitForWindowActive(window))
+        return {};
+    first->setFocus(Qt::TabFocusReason);
+    QList<QWidget *> seen;
+    while (QWidget *w = QApplication::focusWidget()) {
+        if (seen.contains(w) || seen.size() > 100)
+            break;
+        seen << w;
+        QTest::keyClick(w, Qt::Key_Tab);
+    }
+    return seen;
 }
 
 } // namespace
@@ -179,6 +199,78 @@ private slots:
         ModePanel panel;
         panel.setFirmware("release-3.4.1");
         QCOMPARE(panel.findChild<QLabel *>("firmwareLabel")->text(), QString("Firmware: release-3.4.1"));
+    }
+
+    void translatesOnTheSpot()
+    {
+        const RobotProfile &p = profile(ProfileId::Create2);
+        ModePanel panel;
+        panel.setProfile(profile(ProfileId::Create1)); // some buttons disabled, with a reason
+        panel.setFirmware("release-3.4.1");
+        panel.setSnapshot(modeSnapshot(p, OiMode::Safe));
+        SensorSnapshot dropped = modeSnapshot(p, OiMode::Passive);
+        dropped.set(10, 1);
+        panel.setSnapshot(dropped);
+        panel.show();
+        {
+            ScopedPseudoTranslation pseudo;
+            QCoreApplication::processEvents();
+            const QStringList left = untranslatedTexts(&panel);
+            QVERIFY2(left.isEmpty(), qPrintable(left.join('\n')));
+            QVERIFY(panel.safetyMessage().contains(kPseudoOpen));
+            QCOMPARE(panel.findChild<QComboBox *>("demoChoice")->currentData().toInt(), 0);
+        }
+        QCoreApplication::processEvents();
+        QCOMPARE(panel.button("seek-dock")->text(), QString("Seek Dock"));
+        QCOMPARE(panel.findChild<QLabel *>("modeLabel")->text(), QString("Mode: Passive"));
+        QVERIFY(panel.safetyMessage().startsWith("The robot left Safe mode by itself (cliff)"));
+        QVERIFY(panel.button("stop")->toolTip().contains("is not available on the Create"));
+    }
+
+    void keyboardReachesEveryControl()
+    {
+        ModePanel panel;
+        panel.show();
+        // Tab visits every enabled control in reading order (rows left to right).
+        for (const char *key : {"create1", "create2"}) {
+            panel.setProfile(*profileByKey(key));
+            QStringList expected;
+            for (const char *name : {"start", "passive", "safe", "full", "stop", "reset", "power", "clean", "spot",
+                                     "max", "seek-dock", "cover", "cover-and-dock", "demoChoice", "demo"}) {
+                QWidget *w = panel.findChild<QWidget *>(name);
+                QVERIFY2(w, name);
+                QVERIFY2(w->focusPolicy() & Qt::TabFocus, name);
+                if (w->isEnabled())
+                    expected << name;
+            }
+            QStringList visited;
+            for (QWidget *w : tabWalk(&panel, panel.findChild<QWidget *>(expected.first())))
+                visited << w->objectName();
+            QCOMPARE(visited, expected);
+        }
+        // Space on the focused button sends its command.
+        QSignalSpy spy(&panel, &ModePanel::sendRequested);
+        panel.button("safe")->setFocus();
+        QTest::keyClick(panel.button("safe"), Qt::Key_Space);
+        QCOMPARE(spy.count(), 1);
+        QCOMPARE(bytesText(spy.at(0)), QString("131"));
+    }
+
+    void screenshots()
+    {
+        const RobotProfile &p = profile(ProfileId::Create2);
+        ModePanel panel;
+        panel.setFirmware("release-3.4.1");
+        panel.setSnapshot(modeSnapshot(p, OiMode::Safe));
+        SensorSnapshot dropped = modeSnapshot(p, OiMode::Passive);
+        dropped.set(10, 1);
+        panel.setSnapshot(dropped);
+        panel.show();
+        sensor_scenes::saveScreenshot(panel, "mode_panel");
+        ScopedPseudoTranslation pseudo; // longer texts, as translations are
+        QCoreApplication::processEvents();
+        panel.adjustSize();
+        sensor_scenes::saveScreenshot(panel, "mode_panel_pseudo");
     }
 };
 

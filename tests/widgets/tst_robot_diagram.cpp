@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "display_palette.h"
+#include "pseudo_translation.h"
 #include "robot_diagram.h"
 #include "sensor_scenes.h"
 
@@ -339,6 +340,46 @@ private slots:
             QVERIFY2(text.endsWith(QStringLiteral("\u2014")), qPrintable(text));
     }
 
+    void translatesOnTheSpot()
+    {
+        RobotDiagram w;
+        show(w, ProfileId::Create2, busyValues(profile(ProfileId::Create2)));
+        w.show();
+        {
+            ScopedPseudoTranslation pseudo;
+            QCoreApplication::processEvents();
+            const QStringList left = untranslatedTexts(&w);
+            QVERIFY2(left.isEmpty(), qPrintable(left.join('\n')));
+            // Painted chips and the spoken summary follow the language too.
+            for (const QString &text : w.statusTexts())
+                QVERIFY2(!looksUntranslated(text), qPrintable(text));
+            QVERIFY2(!looksUntranslated(w.accessibleDescription()), qPrintable(w.accessibleDescription()));
+            QVERIFY2(w.statusTexts().first().contains(QString(kPseudoOpen) + "Red Buoy" + kPseudoClose),
+                     qPrintable(w.statusTexts().first()));
+        }
+        QCoreApplication::processEvents();
+        QCOMPARE(w.statusTexts().first(), QString("IR omni: Red Buoy and Force Field"));
+        QCOMPARE(w.accessibleName(), QString("Robot sensor diagram"));
+    }
+
+    void accessibleDescriptionFollowsTheData()
+    {
+        RobotDiagram w;
+        QVERIFY(!w.accessibleName().isEmpty());
+        QCOMPARE(w.accessibleDescription(), QString("No sensor data"));
+        show(w, ProfileId::Create1, quietValues(profile(ProfileId::Create1)));
+        QCOMPARE(w.accessibleDescription(), QString("Nothing detected"));
+        std::map<int, int> values = quietValues(profile(ProfileId::Create2));
+        show(w, ProfileId::Create2, values);
+        QCOMPARE(w.accessibleDescription(), QString("Stasis: moving"));
+        values[7] = bit::BumpLeft;
+        values[11] = 1; // cliff front right
+        show(w, ProfileId::Create2, values);
+        QCOMPARE(w.accessibleDescription(), QString("Bump left; Cliff front right; Stasis: moving"));
+        w.setStale(true);
+        QVERIFY(w.accessibleDescription().startsWith("Data is stale; Bump left"));
+    }
+
     void screenshots()
     {
         const QSize sizes[] = {{480, 480}, {800, 600}, {360, 360}, {400, 760}, {1200, 420}};
@@ -360,6 +401,13 @@ private slots:
                 }
             }
         }
+        // Longer texts, as translations are, still fit their boxes.
+        RobotDiagram w;
+        show(w, ProfileId::Create1, busyValues(profile(ProfileId::Create1)), {360, 360});
+        w.setStale(true);
+        ScopedPseudoTranslation pseudo;
+        QCoreApplication::processEvents();
+        saveScreenshot(w, "diagram_create1_360x360_pseudo");
     }
 };
 

@@ -1,8 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+#include "pseudo_translation.h"
 #include "schedule_editor.h"
 #include "sensor_scenes.h"
 
+#include <QApplication>
 #include <QCheckBox>
+#include <QGroupBox>
 #include <QComboBox>
 #include <QLabel>
 #include <QLineEdit>
@@ -274,6 +277,116 @@ private slots:
         QVERIFY(!child<QLabel>(editor, "reason")->isVisible());
         editor.sendChosenDayTime();
         QCOMPARE(spy.count(), 1);
+    }
+
+    void translatesOnTheSpot()
+    {
+        ScheduleEditor editor;
+        editor.setClock(saturdayEvening);
+        editor.savePreset("School days"); // a name the user chose: never translated
+        show(editor);
+        plan(editor, 3, QTime(15, 0));
+        child<QPushButton>(editor, "sendSchedule")->click();
+        const oi::CleaningSchedule before = editor.schedule();
+        const QStringList allowed{"School days"};
+        {
+            ScopedPseudoTranslation pseudo;
+            QCoreApplication::processEvents();
+            const QStringList untranslated = untranslatedTexts(&editor, allowed);
+            QVERIFY2(untranslated.isEmpty(), qPrintable(untranslated.join('\n')));
+            // Layout requests climb one level of nesting per pass of the event loop.
+            for (int pass = 0; pass < 5; ++pass)
+                QCoreApplication::processEvents();
+            editor.resize(editor.sizeHint().expandedTo(editor.size())); // room for the longer texts
+            sensor_scenes::saveScreenshot(editor, "schedule_editor_pseudo");
+            // The sentence is new, the facts in it are not.
+            QVERIFY2(editor.lastSent().contains("wed 15:00 at 18:30"), qPrintable(editor.lastSent()));
+            QVERIFY(editor.schedule().days == before.days);
+            QCOMPARE(editor.schedulePreview(), QString("167 8 0 0 0 0 0 0 15 0 0 0 0 0 0 0"));
+            QCOMPARE(child<QComboBox>(editor, "presetList")->currentText(), QString("School days"));
+        }
+        QCoreApplication::processEvents();
+        QCOMPARE(child<QPushButton>(editor, "sendSchedule")->text(), QString("Send Schedule"));
+        QCOMPARE(child<QCheckBox>(editor, "day3")->text(), QString("Wednesday"));
+        QCOMPARE(editor.lastSent(), QString("Last sent: wed 15:00 at 18:30"));
+        QCOMPARE(editor.message(), QString("Schedule sent."));
+    }
+
+    void clockDayKeepsItsChoiceAcrossLanguages()
+    {
+        ScheduleEditor editor;
+        editor.setChosenDayTime(Weekday::Thursday, QTime(9, 30));
+        auto *day = child<QComboBox>(editor, "clockDay");
+        {
+            ScopedPseudoTranslation pseudo;
+            QCoreApplication::processEvents();
+            QCOMPARE(day->currentIndex(), 4);
+            QCOMPARE(day->currentData().toInt(), 4);
+            QVERIFY(day->currentText().contains(kPseudoOpen));
+        }
+        QCoreApplication::processEvents();
+        QCOMPARE(day->currentText(), QString("Thursday"));
+        QCOMPARE(editor.clockPreview(), QString("168 4 9 30"));
+    }
+
+    void controlsWithoutLabelsHaveAccessibleNames()
+    {
+        ScheduleEditor editor;
+        for (int day = 0; day < 7; ++day)
+            QVERIFY(!child<QTimeEdit>(editor, QString("time%1").arg(day))->accessibleName().isEmpty());
+        for (const char *name : {"presetList", "presetName", "clockDay", "clockTime"})
+            QVERIFY2(!child<QWidget>(editor, name)->accessibleName().isEmpty(), name);
+    }
+
+    void tabReachesEveryControlInOrder()
+    {
+        ScheduleEditor editor;
+        editor.savePreset("Weekdays"); // so Load and Delete are enabled
+        for (int day = 0; day < 7; ++day)
+            child<QCheckBox>(editor, QString("day%1").arg(day))->setChecked(true); // times enabled
+        show(editor);
+        editor.activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(&editor));
+        QStringList expected;
+        for (int day = 0; day < 7; ++day)
+            expected << QString("day%1").arg(day) << QString("time%1").arg(day);
+        expected << "sendSchedule" << "disableAll" << "presetList" << "loadPreset" << "deletePreset"
+                 << "presetName" << "savePreset" << "setFromComputer" << "clockDay" << "clockTime" << "setDayTime";
+        child<QCheckBox>(editor, "day0")->setFocus(Qt::TabFocusReason);
+        QStringList visited;
+        // Tab also steps through the hour and minute of a time before leaving it.
+        for (int i = 0; i <= 2 * expected.size(); ++i) {
+            QWidget *focus = QApplication::focusWidget();
+            QVERIFY(focus);
+            if (!visited.contains(focus->objectName()))
+                visited << focus->objectName();
+            QTest::keyClick(focus, Qt::Key_Tab);
+        }
+        QCOMPARE(visited.join(' '), expected.join(' '));
+    }
+
+    void scheduleFromTheKeyboard()
+    {
+        ScheduleEditor editor;
+        editor.setClock(saturdayEvening);
+        show(editor);
+        editor.activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(&editor));
+        QSignalSpy spy(&editor, &ScheduleEditor::sendRequested);
+        auto *monday = child<QCheckBox>(editor, "day1");
+        monday->setFocus(Qt::TabFocusReason);
+        QTest::keyClick(monday, Qt::Key_Space);
+        QVERIFY(monday->isChecked());
+        QTest::keyClick(monday, Qt::Key_Tab);
+        auto *time = child<QTimeEdit>(editor, "time1");
+        QCOMPARE(QApplication::focusWidget(), time);
+        QTest::keyClick(time, Qt::Key_Up); // the hour section comes first
+        QCOMPARE(time->time(), QTime(1, 0));
+        auto *send = child<QPushButton>(editor, "sendSchedule");
+        send->setFocus(Qt::TabFocusReason);
+        QTest::keyClick(send, Qt::Key_Space);
+        QCOMPARE(spy.count(), 1);
+        QCOMPARE(spy.at(0).at(0).toByteArray(), bytes({167, 2, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}));
     }
 
     void screenshots_data()

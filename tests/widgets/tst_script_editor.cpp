@@ -1,8 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+#include "pseudo_translation.h"
+#include "sensor_scenes.h"
 #include "robot_profile.h"
 #include "script_editor.h"
 #include "script_lines.h"
 
+#include <QApplication>
 #include <QComboBox>
 #include <QDir>
 #include <QLabel>
@@ -322,6 +325,106 @@ private slots:
         editor.setProfile(create1());
         QVERIFY(editor.disabledReason().isEmpty());
         QVERIFY(editor.button("play")->isEnabled());
+    }
+
+    void translatesOnTheSpot()
+    {
+        ScriptEditor editor;
+        editor.setProfile(create1());
+        const QString script = "drive 300 straight\nbogus 1\n";
+        editor.setScriptText(script);
+        editor.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&editor));
+        QCOMPARE(editor.errorLine(), std::optional<int>(2));
+        const QStringList allowed; // script keywords live only in the user's text
+        {
+            ScopedPseudoTranslation pseudo;
+            QCoreApplication::processEvents();
+            const QStringList untranslated = untranslatedTexts(&editor, allowed);
+            QVERIFY2(untranslated.isEmpty(), qPrintable(untranslated.join('\n')));
+            // Layout requests climb one level of nesting per pass of the event loop.
+            for (int pass = 0; pass < 5; ++pass)
+                QCoreApplication::processEvents();
+            editor.resize(editor.sizeHint().expandedTo(editor.size())); // room for the longer texts
+            sensor_scenes::saveScreenshot(editor, "script_editor_pseudo");
+            // The framing of the error is translated; the line stays marked.
+            QVERIFY2(editor.errorText().startsWith(kPseudoOpen + QString("Line 2: ")), qPrintable(editor.errorText()));
+            QCOMPARE(editor.errorLine(), std::optional<int>(2));
+            QCOMPARE(editor.scriptText(), script);
+            QVERIFY(editor.findChild<QPlainTextEdit *>("scriptText")->placeholderText().contains(kPseudoOpen));
+            // Example titles are translated in place; the first entry is still the prompt.
+            auto *examples = editor.findChild<QComboBox *>("examples");
+            QCOMPARE(examples->count(), 1 + int(ScriptEditor::exampleTitles().size()));
+            QCOMPARE(examples->currentIndex(), 0);
+        }
+        QCoreApplication::processEvents();
+        QCOMPARE(editor.button("upload")->text(), QString("Upload (152)"));
+        QVERIFY2(editor.errorText().startsWith("Line 2: "), qPrintable(editor.errorText()));
+        QCOMPARE(editor.scriptText(), script);
+
+        editor.setProfile(oi::profile(oi::ProfileId::Create2));
+        {
+            ScopedPseudoTranslation pseudo;
+            QCoreApplication::processEvents();
+            QVERIFY2(editor.disabledReason().startsWith(kPseudoOpen), qPrintable(editor.disabledReason()));
+        }
+    }
+
+    void editorIsNamedForScreenReaders()
+    {
+        ScriptEditor editor;
+        editor.setProfile(create1());
+        editor.setScriptText("drive 100 straight");
+        auto *text = editor.findChild<QPlainTextEdit *>("scriptText");
+        QVERIFY(!text->accessibleName().isEmpty());
+        QCOMPARE(text->accessibleDescription(), QString("5 / 100 bytes"));
+        editor.setScriptText("drive 100 straight\nbogus");
+        QVERIFY2(text->accessibleDescription().contains("Line 2"), qPrintable(text->accessibleDescription()));
+    }
+
+    void tabReachesEveryControlInOrder()
+    {
+        ScriptEditor editor;
+        editor.setProfile(create1());
+        editor.setScriptText("drive 100 straight"); // so Upload is enabled
+        editor.show();
+        editor.activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(&editor));
+        QStringList expected{"examples", "scriptText", "upload", "play", "show"};
+        for (int demo = 0; demo <= 9; ++demo)
+            expected << QString("demo-%1").arg(demo);
+        expected << "abort-demo";
+        editor.findChild<QComboBox *>("examples")->setFocus(Qt::TabFocusReason);
+        QStringList visited;
+        for (int i = 0; i <= expected.size(); ++i) {
+            QWidget *focus = QApplication::focusWidget();
+            QVERIFY(focus);
+            if (!visited.contains(focus->objectName()))
+                visited << focus->objectName();
+            QTest::keyClick(focus, Qt::Key_Tab);
+        }
+        QCOMPARE(visited, expected);
+    }
+
+    void scriptFromTheKeyboard()
+    {
+        ScriptEditor editor;
+        editor.setProfile(create1());
+        editor.show();
+        editor.activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(&editor));
+        auto *text = editor.findChild<QPlainTextEdit *>("scriptText");
+        text->setFocus(Qt::TabFocusReason);
+        QTest::keyClicks(text, "drive 0 0");
+        editor.reassemble();
+        QCOMPARE(editor.byteCountText(), QString("5 / 100 bytes"));
+        // Tab leaves the editor instead of typing a tab character.
+        QTest::keyClick(text, Qt::Key_Tab);
+        QCOMPARE(editor.scriptText(), QString("drive 0 0"));
+        QCOMPARE(QApplication::focusWidget(), editor.button("upload"));
+        QSignalSpy spy(&editor, &ScriptEditor::sendRequested);
+        QTest::keyClick(editor.button("upload"), Qt::Key_Space);
+        QCOMPARE(sent(spy), QStringList{"152 5 137 0 0 0 0"});
     }
 
     void screenshot()

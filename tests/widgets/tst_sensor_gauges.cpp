@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "display_palette.h"
+#include "pseudo_translation.h"
 #include "sensor_gauges.h"
 #include "sensor_scenes.h"
 #include "value_gauge.h"
@@ -307,6 +308,57 @@ private slots:
         // Every shown gauge keeps the width it needs to be read.
         for (const QString &key : w.shownGaugeKeys())
             QVERIFY2(w.gauge(key)->width() >= w.gauge(key)->minimumSizeHint().width(), qPrintable(key));
+    }
+
+    void translatesOnTheSpot_data()
+    {
+        QTest::addColumn<ProfileId>("id");
+        QTest::newRow("create2") << ProfileId::Create2;
+        QTest::newRow("create1") << ProfileId::Create1;
+    }
+    void translatesOnTheSpot()
+    {
+        QFETCH(ProfileId, id);
+        SensorGauges w;
+        std::map<int, int> values = busyValues(profile(id));
+        values[39] = 600; // out of range, so the flag shows
+        show(w, id, values);
+        w.setStale(true);
+        w.resize(800, 600);
+        w.show();
+        const QString englishCharging = w.gaugeText("charging_state");
+        {
+            ScopedPseudoTranslation pseudo;
+            QCoreApplication::processEvents();
+            const QStringList left = untranslatedTexts(&w);
+            QVERIFY2(left.isEmpty(), qPrintable(left.join('\n')));
+            // Values painted by the gauges follow at once, from the last snapshot.
+            QVERIFY2(w.gaugeText("charging_state").contains(kPseudoOpen), qPrintable(w.gaugeText("charging_state")));
+            QVERIFY(w.gauge("requested_velocity")->accessibleDescription().contains(kPseudoOpen));
+        }
+        QCoreApplication::processEvents();
+        QCOMPARE(w.findChildren<QLabel *>("heading").first()->text(), QString("Battery"));
+        QCOMPARE(w.gaugeText("charging_state"), englishCharging);
+        QCOMPARE(w.findChild<QLabel *>("staleBanner")->text(), QString("STALE \u2014 no fresh data from the robot"));
+    }
+
+    void gaugesHaveAccessibleText()
+    {
+        SensorGauges w;
+        std::map<int, int> values = busyValues(profile(ProfileId::Create2));
+        values[39] = 600;
+        show(w, ProfileId::Create2, values);
+        for (const QString &key : w.shownGaugeKeys()) {
+            QVERIFY2(!w.gauge(key)->accessibleName().isEmpty(), qPrintable(key));
+            QVERIFY2(!w.gauge(key)->accessibleDescription().isEmpty(), qPrintable(key));
+        }
+        QCOMPARE(w.gauge("voltage")->accessibleName(), QString("Voltage"));
+        QCOMPARE(w.gauge("voltage")->accessibleDescription(), QString("15.12 V"));
+        QVERIFY2(w.gauge("requested_velocity")->accessibleDescription().endsWith(", out of range"),
+                 qPrintable(w.gauge("requested_velocity")->accessibleDescription()));
+        values[22] = 14000;
+        show(w, ProfileId::Create2, values);
+        QCOMPARE(w.gauge("voltage")->accessibleDescription(), QString("14.00 V"));
     }
 
     void screenshots()

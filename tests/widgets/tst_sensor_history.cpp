@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+#include "pseudo_translation.h"
 #include "sensor_history.h"
 
 #include <QFile>
@@ -273,6 +274,27 @@ private slots:
         QVERIFY(!error.isEmpty());
         QVERIFY(!h.exportCsv(path, {22}, std::nan(""), 1.0)); // no error pointer: no crash
         QCOMPARE(readAll(path), QByteArray("precious\n"));
+    }
+
+    void translatesOnTheSpot()
+    {
+        QTemporaryDir dir;
+        SensorHistory h;
+        h.append(1.0, snapshotWith({{22, 1}}));
+        const QString path = dir.filePath(QStringLiteral("v.csv"));
+        QString error;
+        {
+            ScopedPseudoTranslation pseudo;
+            QVERIFY(!h.exportCsv(path, {22, 100}, -kInf, kInf, &error));
+            QVERIFY2(!looksUntranslated(error), qPrintable(error));
+            QVERIFY(!h.exportCsv(path, {}, -kInf, kInf, &error));
+            QVERIFY2(!looksUntranslated(error), qPrintable(error));
+            // The file keeps its English keys, whatever the language.
+            QVERIFY(h.exportCsv(path, {22}, -kInf, kInf, &error));
+            QVERIFY(readAll(path).startsWith("time_s,voltage[mV]\n"));
+        }
+        QVERIFY(!h.exportCsv(path, {}, -kInf, kInf, &error));
+        QCOMPARE(error, QString("No channels to export."));
     }
 };
 

@@ -1,9 +1,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "channel_chooser.h"
+#include "pseudo_translation.h"
 #include "sensor_history.h"
 #include "sensor_plots.h"
 
 #include <QAction>
+#include <QApplication>
+#include <QPushButton>
+#include <QToolButton>
 #include <QComboBox>
 #include <QDir>
 #include <QFile>
@@ -495,6 +499,100 @@ private slots:
         empty.refresh();
         QCoreApplication::processEvents();
         QVERIFY(empty.grab().save(QDir(QString::fromLocal8Bit(dir)).filePath(QStringLiteral("sensor_plots_empty_dark.png"))));
+    }
+
+    void translatesOnTheSpot()
+    {
+        SensorHistory h;
+        SensorPlots plots;
+        plots.resize(800, 500);
+        plots.setHistory(&h);
+        plots.setChannels(0, {22, 23});
+        plots.addPlot({}); // empty: shows its hint
+        feed(h, 0, 50);
+        plots.refresh();
+        plots.setPaused(true);
+        plots.show();
+        {
+            ScopedPseudoTranslation pseudo;
+            QCoreApplication::processEvents();
+            QStringList left = untranslatedTexts(&plots);
+            // Texts QCustomPlot and the menus draw themselves.
+            QStringList shown = {plots.plot(1)->xAxis->label(), plots.plot(0)->graph(0)->name(),
+                                 plots.plot(0)->accessibleDescription()};
+            for (QAction *a : plots.channelChooser(0)->menu()->actions())
+                shown << a->text();
+            for (QAction *a : plots.findChild<QPushButton *>("export")->menu()->actions())
+                shown << a->text();
+            for (int i = 0; i < plots.plot(1)->itemCount(); ++i)
+                if (auto *text = qobject_cast<QCPItemText *>(plots.plot(1)->item(i)))
+                    shown << text->text();
+            for (const QString &text : shown)
+                if (looksUntranslated(text))
+                    left << text;
+            QVERIFY2(left.isEmpty(), qPrintable(left.join('\n')));
+            QCOMPARE(plots.channels(0), std::vector<int>({22, 23}));
+            QVERIFY(plots.isPaused());
+        }
+        QCoreApplication::processEvents();
+        QCOMPARE(plots.findChild<QPushButton *>("addPlot")->text(), QString("Add plot"));
+        QCOMPARE(plots.findChild<QPushButton *>("pause")->text(), QString("Resume"));
+        QCOMPARE(plots.channelChooser(0)->text(), QString("Channels (2)"));
+        QCOMPARE(plots.plot(0)->graph(0)->name(), QString("Voltage [mV]"));
+        QCOMPARE(plots.plot(0)->graph(0)->dataCount() > 0, true); // data loaded again
+    }
+
+    void keyboardReachesEveryControl()
+    {
+        SensorHistory h;
+        SensorPlots plots;
+        plots.resize(800, 500);
+        plots.setHistory(&h);
+        plots.setChannels(0, {22});
+        plots.addPlot({23});
+        feed(h, 0, 200);
+        plots.refresh();
+        plots.show();
+        plots.activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(&plots));
+        QList<QWidget *> expected = {plots.findChild<QWidget *>("pause"), plots.findChild<QWidget *>("window"),
+                                     plots.findChild<QWidget *>("addPlot"), plots.findChild<QWidget *>("export")};
+        for (int i = 0; i < plots.plotCount(); ++i) {
+            QWidget *frame = plots.plot(i)->parentWidget();
+            expected << plots.channelChooser(i) << frame->findChild<QToolButton *>() << plots.plot(i);
+        }
+        expected.first()->setFocus(Qt::TabFocusReason);
+        QList<QWidget *> visited;
+        while (QWidget *w = QApplication::focusWidget()) {
+            if (visited.contains(w) || visited.size() > 30)
+                break;
+            visited << w;
+            QTest::keyClick(w, Qt::Key_Tab);
+        }
+        auto names = [](const QList<QWidget *> &list) {
+            QStringList out;
+            for (QWidget *w : list)
+                out << QString::fromLatin1(w->metaObject()->className()) + ' ' + w->objectName();
+            return out.join(", ");
+        };
+        QVERIFY2(visited == expected, qPrintable(names(visited) + "\nexpected: " + names(expected))); // reading order
+        for (int i = 0; i < plots.plotCount(); ++i) {
+            QVERIFY(!plots.plot(i)->accessibleName().isEmpty());
+            QVERIFY(!plots.plot(i)->accessibleDescription().isEmpty());
+        }
+        // Paused, the arrows pan and +/- zoom the shared time axis.
+        QCustomPlot *plot = plots.plot(1);
+        plot->setFocus();
+        QTest::keyClick(plot, Qt::Key_Space);
+        QVERIFY(plots.isPaused());
+        const QCPRange before = plots.timeRange();
+        QTest::keyClick(plot, Qt::Key_Left);
+        QVERIFY(plots.timeRange().upper < before.upper);
+        QCOMPARE(plots.plot(0)->xAxis->range().upper, plots.timeRange().upper);
+        QTest::keyClick(plot, Qt::Key_Plus);
+        QVERIFY(plots.timeRange().size() < before.size());
+        QTest::keyClick(plot, Qt::Key_Minus);
+        QVERIFY(qAbs(plots.timeRange().size() - before.size()) < 1e-9);
     }
 };
 

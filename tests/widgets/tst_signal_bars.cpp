@@ -1,8 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+#include "pseudo_translation.h"
 #include "sensor_scenes.h"
 #include "signal_bars.h"
 
+#include <QBarCategoryAxis>
 #include <QBarSet>
+#include <QLegend>
+#include <QLegendMarker>
 #include <QChart>
 #include <QStackedBarSeries>
 #include <QTest>
@@ -127,6 +131,50 @@ private slots:
         w.setStale(false);
         QCOMPARE(sets[0]->color(), w.cliffColour());
         QVERIFY(!w.chart()->title().startsWith("STALE"));
+    }
+
+    void translatesOnTheSpot()
+    {
+        SignalBars w;
+        w.setProfile(profile(ProfileId::Create2));
+        w.setSnapshot(decoded(profile(ProfileId::Create2), busyValues(profile(ProfileId::Create2))));
+        w.setStale(true);
+        w.show();
+        const QList<qreal> values = w.barValues();
+        {
+            ScopedPseudoTranslation pseudo;
+            QCoreApplication::processEvents();
+            QStringList left = untranslatedTexts(&w);
+            // The chart draws its own texts; check them too.
+            QStringList shown = {w.chart()->title(), w.accessibleDescription()};
+            shown += w.categories();
+            for (QAbstractAxis *axis : w.chart()->axes(Qt::Horizontal))
+                shown += qobject_cast<QBarCategoryAxis *>(axis)->categories();
+            for (QLegendMarker *marker : w.chart()->legend()->markers())
+                shown << marker->label();
+            for (const QString &text : shown)
+                if (looksUntranslated(text))
+                    left << text;
+            QVERIFY2(left.isEmpty(), qPrintable(left.join('\n')));
+            QCOMPARE(w.barValues(), values); // the bars keep their heights
+        }
+        QCoreApplication::processEvents();
+        QCOMPARE(w.categories(), kCliffCategories + kLightBumpCategories);
+        QCOMPARE(w.chart()->title(), QString("STALE \u2014 Cliff and light-bump signals"));
+    }
+
+    void accessibleTextFollowsTheSignals()
+    {
+        SignalBars w;
+        w.setProfile(profile(ProfileId::Create1));
+        QCOMPARE(w.accessibleName(), QString("Signal bars"));
+        SensorSnapshot s(profile(ProfileId::Create1));
+        s.set(28, 2610);
+        s.set(31, 12);
+        w.setSnapshot(s);
+        QCOMPARE(w.accessibleDescription(), QString("Cliff L: 2610, Cliff FL: 0, Cliff FR: 0, Cliff R: 12"));
+        w.setStale(true);
+        QVERIFY(w.accessibleDescription().startsWith("Stale: Cliff L: 2610"));
     }
 
     void screenshots()

@@ -1,9 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "piano_roll.h"
+#include "pseudo_translation.h"
+#include "sensor_scenes.h"
 #include "rtttl_import.h"
 #include "song_composer.h"
 #include "song_wave.h"
 
+#include <QApplication>
 #include <QAudioDevice>
 #include <QDir>
 #include <QFile>
@@ -580,6 +583,156 @@ private slots:
         QTest::mouseClick(roll, Qt::LeftButton, {}, roll->pointFor(67, 200).toPoint());
         QCOMPARE(composer.song(0), full);
         QVERIFY(composer.message().contains("at most 16"));
+    }
+
+    void translatesOnTheSpot()
+    {
+        SongComposer composer;
+        const Song song = songOf({{60, 32}, {0, 16}, {64, 32}}); // with a rest
+        composer.setSong(0, song);
+        SensorSnapshot s;
+        s.set(36, 0);
+        s.set(37, 1);
+        composer.setSnapshot(s);
+        composer.resize(1000, 640);
+        composer.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&composer));
+        composer.noteTable()->setCurrentCell(2, 0);
+        const QStringList allowed; // the note names are in the table, which is the user's
+        {
+            ScopedPseudoTranslation pseudo;
+            QCoreApplication::processEvents();
+            const QStringList untranslated = untranslatedTexts(&composer, allowed);
+            QVERIFY2(untranslated.isEmpty(), qPrintable(untranslated.join('\n')));
+            // Layout requests climb one level of nesting per pass of the event loop.
+            for (int pass = 0; pass < 5; ++pass)
+                QCoreApplication::processEvents();
+            composer.resize(composer.sizeHint().expandedTo(composer.size())); // room for the longer texts
+            sensor_scenes::saveScreenshot(composer, "song_composer_pseudo");
+            QCOMPARE(composer.song(0), song);
+            QCOMPARE(composer.noteTable()->rowCount(), 3);
+            QCOMPARE(composer.noteTable()->item(0, 0)->text(), QString("C4"));
+            QCOMPARE(composer.noteTable()->item(1, 0)->text(), kPseudoOpen + QString("rest") + kPseudoClose);
+            QCOMPARE(composer.noteTable()->currentRow(), 2);
+            QVERIFY2(composer.playingText().startsWith(kPseudoOpen + QString("Playing song 0")),
+                     qPrintable(composer.playingText()));
+            QVERIFY(composer.slotTabs()->tabToolTip(0).contains(kPseudoOpen));
+            const QString header = composer.noteTable()->model()->headerData(0, Qt::Horizontal).toString();
+            QVERIFY2(header.contains(kPseudoOpen), qPrintable(header));
+            QVERIFY(composer.pianoRoll()->accessibleDescription().contains(kPseudoOpen));
+        }
+        QCoreApplication::processEvents();
+        QCOMPARE(static_cast<QPushButton *>(composer.control("upload"))->text(), QString("Upload slot"));
+        QCOMPARE(composer.noteTable()->item(1, 0)->text(), QString("rest"));
+        QCOMPARE(composer.song(0), song);
+        QCOMPARE(composer.slotTabs()->tabToolTip(0), QString("Song 0: 3 notes"));
+    }
+
+    void fileErrorsAreTranslated()
+    {
+        SongComposer composer;
+        ScopedPseudoTranslation pseudo;
+        QVERIFY(!composer.loadSongs("/nonexistent/songs.json"));
+        QVERIFY2(composer.message().startsWith(kPseudoOpen + QString("Could not open")), qPrintable(composer.message()));
+        QVERIFY(!composer.importRtttl("nonsense"));
+        QVERIFY2(composer.message().startsWith(kPseudoOpen + QString("RTTTL: ")), qPrintable(composer.message()));
+    }
+
+    void pianoRollIsNamedForScreenReaders()
+    {
+        SongComposer composer;
+        PianoRoll *roll = composer.pianoRoll();
+        QVERIFY(!roll->accessibleName().isEmpty());
+        QVERIFY2(roll->accessibleDescription().startsWith("0 notes"), qPrintable(roll->accessibleDescription()));
+        composer.setSong(0, songOf({{60, 32}, {62, 16}}));
+        composer.noteTable()->setCurrentCell(1, 0);
+        QVERIFY2(roll->accessibleDescription().startsWith("2 notes, 0.75 s. Selected: note 2, D4, 16/64 s."),
+                 qPrintable(roll->accessibleDescription()));
+        QVERIFY(!composer.noteTable()->accessibleName().isEmpty());
+    }
+
+    void tabReachesEveryControlInOrder()
+    {
+        SongComposer composer;
+        composer.setSong(0, songOf({{60, 32}})); // so Remove is enabled
+        composer.resize(1000, 640);
+        composer.show();
+        composer.activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(&composer));
+        QStringList expected{"slotTabs", "add", "remove", "semitones", "transpose", "durationFactor", "scale",
+                             "noteTable", "pianoRoll", "upload", "upload-all", "play"};
+        if (composer.previewAvailable())
+            expected << "preview";
+        expected << "toneShape" << "load" << "save" << "examples" << "rtttl" << "midi" << "wav";
+        composer.slotTabs()->setFocus(Qt::TabFocusReason);
+        QStringList visited;
+        for (int i = 0; i <= expected.size(); ++i) {
+            QWidget *focus = QApplication::focusWidget();
+            QVERIFY(focus);
+            if (!visited.contains(focus->objectName()))
+                visited << focus->objectName();
+            QTest::keyClick(focus, Qt::Key_Tab);
+        }
+        QCOMPARE(visited, expected);
+    }
+
+    void pianoRollFromTheKeyboard()
+    {
+        SongComposer composer;
+        composer.setSong(0, songOf({{60, 32}, {64, 32}}));
+        composer.resize(1000, 640);
+        composer.show();
+        composer.activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(&composer));
+        PianoRoll *roll = composer.pianoRoll();
+        roll->setFocus(Qt::TabFocusReason);
+        QTest::keyClick(roll, Qt::Key_Right); // selects the first note
+        QCOMPARE(roll->selectedNote(), 0);
+        QCOMPARE(composer.noteTable()->currentRow(), 0);
+        QTest::keyClick(roll, Qt::Key_Up);
+        QTest::keyClick(roll, Qt::Key_Up, Qt::ShiftModifier); // an octave
+        QTest::keyClick(roll, Qt::Key_Right, Qt::ShiftModifier); // longer by 4/64 s
+        QCOMPARE(composer.song(0), songOf({{73, 36}, {64, 32}}));
+        QCOMPARE(composer.noteTable()->item(0, 0)->text(), QString("C#5"));
+        QTest::keyClick(roll, Qt::Key_Right);
+        QTest::keyClick(roll, Qt::Key_Insert); // repeats the selected note after it
+        QCOMPARE(composer.song(0), songOf({{73, 36}, {64, 32}, {64, 32}}));
+        QCOMPARE(roll->selectedNote(), 2);
+        QTest::keyClick(roll, Qt::Key_Down);
+        QTest::keyClick(roll, Qt::Key_Left);
+        QTest::keyClick(roll, Qt::Key_Delete);
+        QCOMPARE(composer.song(0), songOf({{73, 36}, {63, 32}}));
+        QCOMPARE(composer.noteTable()->rowCount(), 2);
+    }
+
+    void noteListFromTheKeyboard()
+    {
+        SongComposer composer;
+        composer.setSong(0, songOf({{60, 32}, {64, 32}}));
+        composer.show();
+        composer.activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(&composer));
+        QTableWidget *table = composer.noteTable();
+        table->setFocus(Qt::TabFocusReason);
+        table->setCurrentCell(0, 0);
+        QTest::keyClick(table, Qt::Key_Down);
+        QCOMPARE(table->currentRow(), 1);
+        QTest::keyClick(table, Qt::Key_F2); // edit the note name
+        QWidget *editor = QApplication::focusWidget();
+        QVERIFY(editor && editor != table);
+        QTest::keyClick(editor, Qt::Key_A, Qt::ControlModifier);
+        QTest::keyClicks(editor, "D5");
+        QTest::keyClick(editor, Qt::Key_Return);
+        QCoreApplication::processEvents(); // the delegate commits on a queued call
+        QCOMPARE(composer.song(0), songOf({{60, 32}, {74, 32}}));
+        QTest::keyClick(table, Qt::Key_Right); // to the duration
+        QTest::keyClick(table, Qt::Key_F2);
+        editor = QApplication::focusWidget();
+        QTest::keyClick(editor, Qt::Key_A, Qt::ControlModifier);
+        QTest::keyClicks(editor, "8");
+        QTest::keyClick(editor, Qt::Key_Return);
+        QCoreApplication::processEvents();
+        QCOMPARE(composer.song(0), songOf({{60, 32}, {74, 8}}));
     }
 
     void screenshot()

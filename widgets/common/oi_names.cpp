@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The names the Open Interface tables use, marked for translation so that
-// lupdate finds them. tst_oi_text fails when a table gains a name missing here.
+// lupdate finds them. tst_translations fails when a table gains a name
+// missing here.
 #include <QtGlobal>
 
 namespace {
@@ -25,7 +26,9 @@ namespace {
     QT_TRANSLATE_NOOP("PacketName", "Current"),
     QT_TRANSLATE_NOOP("PacketName", "Dirt Detect"),
     QT_TRANSLATE_NOOP("PacketName", "Distance"),
+    QT_TRANSLATE_NOOP("PacketName", "Infrared Byte"),
     QT_TRANSLATE_NOOP("PacketName", "Infrared Character Left"),
+    QT_TRANSLATE_NOOP("PacketName", "Infrared Character Omni"),
     QT_TRANSLATE_NOOP("PacketName", "Infrared Character Right"),
     QT_TRANSLATE_NOOP("PacketName", "Left Encoder Counts"),
     QT_TRANSLATE_NOOP("PacketName", "Left Motor Current"),

@@ -4,6 +4,7 @@
 #include "display_palette.h"
 
 #include <QComboBox>
+#include <QEvent>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLineEdit>
@@ -16,38 +17,35 @@ ConnectionBar::ConnectionBar(QWidget *parent) : QWidget(parent)
 {
     m_transport = new QComboBox(this);
     m_transport->setObjectName("transport");
-    m_transport->addItem(tr("Virtual robot"), int(ConnectionRequest::Transport::Virtual));
-    m_transport->addItem(tr("Serial port"), int(ConnectionRequest::Transport::Serial));
-    m_transport->addItem(tr("TCP (ser2net)"), int(ConnectionRequest::Transport::Tcp));
+    for (auto t : {ConnectionRequest::Transport::Virtual, ConnectionRequest::Transport::Serial,
+                   ConnectionRequest::Transport::Tcp})
+        m_transport->addItem(QString(), int(t));
 
     m_port = new QComboBox(this);
     m_port->setObjectName("port");
     m_port->setEditable(true);
     m_port->setMinimumContentsLength(14);
-    m_port->lineEdit()->setPlaceholderText(tr("/dev/ttyUSB0 or a typed path"));
     m_refresh = new QToolButton(this);
-    m_refresh->setText(tr("Refresh"));
-    m_refresh->setToolTip(tr("List the serial ports again"));
+    m_refresh->setObjectName("refresh");
     m_tcp = new QLineEdit(this);
     m_tcp->setObjectName("tcp");
-    m_tcp->setPlaceholderText(tr("host:port, e.g. raspberrypi:3333"));
 
     m_profile = new QComboBox(this);
     m_profile->setObjectName("profile");
-    m_profile->addItem(tr("Auto"), -1);
+    m_profile->addItem(QString(), -1);
     for (oi::ProfileId id : oi::allProfiles()) {
         const std::string_view name = oi::profile(id).name;
         m_profile->addItem(QString::fromUtf8(name.data(), qsizetype(name.size())), int(id));
     }
     m_baud = new QComboBox(this);
     m_baud->setObjectName("baud");
-    m_baud->addItem(tr("Default baud"), 0);
+    m_baud->addItem(QString(), 0);
     for (int baud : {115200, 57600, 38400, 19200, 9600})
         m_baud->addItem(QString::number(baud), baud);
 
-    m_connect = new QPushButton(tr("Connect"), this);
+    m_connect = new QPushButton(this);
     m_connect->setObjectName("connect");
-    m_disconnect = new QPushButton(tr("Disconnect"), this);
+    m_disconnect = new QPushButton(this);
     m_disconnect->setObjectName("disconnect");
     m_error = new QLabel(this);
     m_error->setObjectName("error");
@@ -70,6 +68,10 @@ ConnectionBar::ConnectionBar(QWidget *parent) : QWidget(parent)
     layout->addLayout(row);
     layout->addWidget(m_error);
 
+    // Item texts change with the language; the combos follow their width.
+    for (QComboBox *combo : {m_transport, m_profile, m_baud})
+        combo->setSizeAdjustPolicy(QComboBox::AdjustToContents);
+
     connect(m_transport, &QComboBox::currentIndexChanged, this, &ConnectionBar::updateTransportFields);
     connect(m_refresh, &QToolButton::clicked, this, &ConnectionBar::refreshPorts);
     connect(m_connect, &QPushButton::clicked, this, &ConnectionBar::tryConnect);
@@ -79,6 +81,45 @@ ConnectionBar::ConnectionBar(QWidget *parent) : QWidget(parent)
     refreshPorts();
     updateTransportFields();
     setConnected(false);
+    retranslateUi();
+}
+
+void ConnectionBar::retranslateUi()
+{
+    // Item texts change in place, so the current choice and its data stay.
+    m_transport->setItemText(0, tr("Virtual robot"));
+    m_transport->setItemText(1, tr("Serial port"));
+    m_transport->setItemText(2, tr("TCP (ser2net)"));
+    m_transport->setAccessibleName(tr("Transport"));
+    m_port->lineEdit()->setPlaceholderText(tr("/dev/ttyUSB0 or a typed path"));
+    m_port->setAccessibleName(tr("Serial port"));
+    m_refresh->setText(tr("Refresh"));
+    m_refresh->setToolTip(tr("List the serial ports again"));
+    m_tcp->setPlaceholderText(tr("host:port, e.g. raspberrypi:3333"));
+    m_tcp->setAccessibleName(tr("TCP bridge"));
+    m_profile->setItemText(0, tr("Auto"));
+    m_profile->setAccessibleName(tr("Robot profile"));
+    m_baud->setItemText(0, tr("Default baud"));
+    m_baud->setAccessibleName(tr("Baud rate"));
+    m_connect->setText(tr("Connect"));
+    m_disconnect->setText(tr("Disconnect"));
+    if (m_ownError != OwnError::None)
+        showOwnError(m_ownError);
+}
+
+void ConnectionBar::changeEvent(QEvent *e)
+{
+    if (e->type() == QEvent::LanguageChange)
+        retranslateUi();
+    QWidget::changeEvent(e);
+}
+
+void ConnectionBar::showOwnError(OwnError error)
+{
+    showError(error == OwnError::NoPort ? tr("Choose a serial port or type its path.")
+                                        : tr("Type the bridge as host:port with a port from 1 to 65535, "
+                                             "e.g. raspberrypi:3333."));
+    m_ownError = error;
 }
 
 void ConnectionBar::refreshPorts()
@@ -129,14 +170,13 @@ void ConnectionBar::setRequest(const ConnectionRequest &r)
 void ConnectionBar::tryConnect()
 {
     const ConnectionRequest r = request();
-    m_error->clear();
-    m_error->setHidden(true);
+    showError(QString());
     if (r.transport == ConnectionRequest::Transport::Serial && r.portPath.isEmpty()) {
-        showError(tr("Choose a serial port or type its path."));
+        showOwnError(OwnError::NoPort);
         return;
     }
     if (r.transport == ConnectionRequest::Transport::Tcp && (r.host.isEmpty() || r.tcpPort == 0)) {
-        showError(tr("Type the bridge as host:port with a port from 1 to 65535, e.g. raspberrypi:3333."));
+        showOwnError(OwnError::BadBridge);
         return;
     }
     emit connectRequested(r);
@@ -153,6 +193,7 @@ void ConnectionBar::setConnected(bool connected)
 
 void ConnectionBar::showError(const QString &message)
 {
+    m_ownError = OwnError::None; // messages from elsewhere come translated already
     m_error->setText(message);
     m_error->setHidden(message.isEmpty());
 }

@@ -46,7 +46,14 @@ signals:
     void connectRequested(const ConnectionRequest &request);
     void disconnectRequested();
 
+protected:
+    void changeEvent(QEvent *e) override;
+
 private:
+    // Errors this bar finds itself; it can say them again in a new language.
+    enum class OwnError { None, NoPort, BadBridge };
+    void retranslateUi();
+    void showOwnError(OwnError error);
     void tryConnect();
     void updateTransportFields();
 
@@ -59,6 +66,7 @@ private:
     QPushButton *m_connect = nullptr;
     QPushButton *m_disconnect = nullptr;
     QLabel *m_error = nullptr;
+    OwnError m_ownError = OwnError::None;
 };
 
 Q_DECLARE_METATYPE(ConnectionRequest)

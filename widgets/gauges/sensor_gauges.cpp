@@ -2,6 +2,7 @@
 #include "sensor_gauges.h"
 
 #include "display_palette.h"
+#include "oi_text.h"
 #include "value_gauge.h"
 
 #include <QEvent>
@@ -20,9 +21,8 @@ namespace {
 
 const QString kDash = QStringLiteral("\u2014");
 
-QString text(std::string_view s) { return QString::fromUtf8(s.data(), qsizetype(s.size())); }
-
-QString unitOf(const oi::SensorSnapshot &s, int packetId) { return text(s.value(packetId).unit()); }
+// Units are printed as the specification writes them, untranslated.
+QString unitOf(const oi::SensorSnapshot &s, int packetId) { return oitext::fromView(s.value(packetId).unit()); }
 
 // Which packet a gauge shows, and what the packet must be called on the
 // profile for the gauge to apply (packets 15, 32 and 33 mean different
@@ -62,9 +62,9 @@ constexpr int kMinGaugeWidth = 135;
 
 } // namespace
 
-SensorGauges::SensorGauges(QWidget *parent) : QWidget(parent)
+SensorGauges::SensorGauges(QWidget *parent) : QWidget(parent), m_snapshot(*m_profile)
 {
-    m_banner = new QLabel(tr("STALE \u2014 no fresh data from the robot"), this);
+    m_banner = new QLabel(this);
     m_banner->setObjectName("staleBanner");
     m_banner->setAlignment(Qt::AlignCenter);
     m_banner->setFont(display::valueFont(font(), 1.3));
@@ -96,45 +96,75 @@ SensorGauges::SensorGauges(QWidget *parent) : QWidget(parent)
     layout->addWidget(m_banner);
     layout->addWidget(m_scroll, 1);
 
-    auto section = [this](const QString &heading, QStringList keys) {
-        auto *label = new QLabel(heading, m_content);
+    auto section = [this](QStringList keys) {
+        auto *label = new QLabel(m_content);
         label->setObjectName("heading");
         label->setFont(display::valueFont(font(), 1.15));
         m_sections.append({label, keys});
     };
-    section(tr("Battery"), {"battery", "voltage", "current", "temperature", "charging_state",
-                            "charging_sources"});
-    section(tr("Drive"), {"requested_velocity", "requested_radius"});
-    section(tr("Motors and dirt"), {"left_motor_current", "right_motor_current",
-                                    "main_brush_current", "side_brush_current", "dirt_detect"});
-    section(tr("Cargo bay"), {"cargo_bay_analog", "digital_input_0", "digital_input_1",
-                              "digital_input_2", "digital_input_3", "baud_rate_change"});
+    section({"battery", "voltage", "current", "temperature", "charging_state", "charging_sources"});
+    section({"requested_velocity", "requested_radius"});
+    section({"left_motor_current", "right_motor_current", "main_brush_current", "side_brush_current",
+             "dirt_detect"});
+    section({"cargo_bay_analog", "digital_input_0", "digital_input_1", "digital_input_2", "digital_input_3",
+             "baud_rate_change"});
 
-    addGauge("battery", tr("Charge"))->setRange(0, 100);
-    addGauge("voltage", tr("Voltage"));
-    addGauge("current", tr("Current"));
-    addGauge("temperature", tr("Temperature"));
-    addGauge("charging_state", tr("Charging"));
-    addGauge("charging_sources", tr("Charging sources"));
-    addGauge("requested_velocity", tr("Requested velocity"))->setRange(-500, 500);
-    addGauge("requested_radius", tr("Requested radius"));
-    addGauge("left_motor_current", tr("Left wheel motor"));
-    addGauge("right_motor_current", tr("Right wheel motor"));
-    addGauge("main_brush_current", tr("Main brush motor"));
-    addGauge("side_brush_current", tr("Side brush motor"));
-    addGauge("dirt_detect", tr("Dirt detect"))->setRange(0, 255);
-    addGauge("cargo_bay_analog", tr("Analog input"))->setRange(0, 1023);
-    for (int i = 0; i < 4; ++i)
-        addGauge(QStringLiteral("digital_input_%1").arg(i), tr("Digital input %1").arg(i));
-    addGauge("baud_rate_change", tr("Baud rate change"));
+    for (const GaugePacket &g : kGaugePackets)
+        addGauge(QString::fromLatin1(g.key));
+    m_gauges.value("battery")->setRange(0, 100);
+    m_gauges.value("requested_velocity")->setRange(-500, 500);
+    m_gauges.value("dirt_detect")->setRange(0, 255);
+    m_gauges.value("cargo_bay_analog")->setRange(0, 1023);
 
     refreshBanner();
     setProfile(*m_profile);
+    retranslateUi();
 }
 
-ValueGauge *SensorGauges::addGauge(const QString &key, const QString &title)
+void SensorGauges::retranslateUi()
 {
-    auto *g = new ValueGauge(title, m_content);
+    m_banner->setText(tr("STALE \u2014 no fresh data from the robot"));
+    const QString headings[] = {tr("Battery"), tr("Drive"), tr("Motors and dirt"), tr("Cargo bay")};
+    for (qsizetype i = 0; i < m_sections.size(); ++i)
+        m_sections[i].heading->setText(headings[i]);
+    refreshTitles();
+    setSnapshot(m_snapshot); // values and details in the new language
+}
+
+void SensorGauges::refreshTitles()
+{
+    const std::pair<const char *, QString> titles[] = {
+        {"battery", tr("Charge")},
+        {"voltage", tr("Voltage")},
+        {"current", tr("Current")},
+        {"temperature", tr("Temperature")},
+        {"charging_state", tr("Charging")},
+        {"charging_sources", tr("Charging sources")},
+        {"requested_velocity", tr("Requested velocity")},
+        {"requested_radius", tr("Requested radius")},
+        {"left_motor_current", tr("Left wheel motor")},
+        {"right_motor_current", tr("Right wheel motor")},
+        {"main_brush_current", tr("Main brush motor")},
+        {"side_brush_current", tr("Side brush motor")},
+        {"dirt_detect", tr("Dirt detect")},
+        {"cargo_bay_analog", tr("Analog input")},
+        {"baud_rate_change", tr("Baud rate change")}};
+    for (const auto &[key, title] : titles)
+        m_gauges.value(key)->setTitle(title);
+    for (int i = 0; i < 4; ++i)
+        m_gauges.value(QStringLiteral("digital_input_%1").arg(i))->setTitle(tr("Digital input %1").arg(i));
+    // The cargo-bay inputs take the profile's names for their bits.
+    const auto bits = m_profile->bits(32);
+    for (std::size_t i = 0; i < bits.size() && i < 5; ++i) {
+        const QString key = i < 4 ? QStringLiteral("digital_input_%1").arg(i)
+                                  : QStringLiteral("baud_rate_change");
+        m_gauges.value(key)->setTitle(oitext::bitName(bits[i]));
+    }
+}
+
+ValueGauge *SensorGauges::addGauge(const QString &key)
+{
+    auto *g = new ValueGauge(QString(), m_content);
     g->setObjectName(key);
     m_gauges.insert(key, g);
     return g;
@@ -192,13 +222,7 @@ bool SensorGauges::isGaugeOutOfRange(const QString &key) const
 void SensorGauges::setProfile(const oi::RobotProfile &profile)
 {
     m_profile = &profile;
-    // The cargo-bay inputs take the profile's names for their bits.
-    const auto bits = profile.bits(32);
-    for (std::size_t i = 0; i < bits.size() && i < 5; ++i) {
-        const QString key = i < 4 ? QStringLiteral("digital_input_%1").arg(i)
-                                  : QStringLiteral("baud_rate_change");
-        m_gauges.value(key)->setTitle(text(bits[i].name));
-    }
+    refreshTitles();
     // Gauges the profile lacks keep nothing from the previous robot.
     for (auto it = m_gauges.cbegin(); it != m_gauges.cend(); ++it) {
         if (gaugeApplies(it.key()))
@@ -269,6 +293,8 @@ bool SensorGauges::eventFilter(QObject *watched, QEvent *event)
 void SensorGauges::changeEvent(QEvent *event)
 {
     QWidget::changeEvent(event);
+    if (event->type() == QEvent::LanguageChange)
+        retranslateUi();
     if (event->type() == QEvent::PaletteChange)
         refreshBanner();
 }
@@ -293,6 +319,7 @@ void SensorGauges::setStale(bool stale)
 
 void SensorGauges::setSnapshot(const oi::SensorSnapshot &snapshot)
 {
+    m_snapshot = snapshot;
     showBattery(snapshot);
     showDrive(snapshot);
     if (gaugeApplies("left_motor_current"))
@@ -376,8 +403,8 @@ void SensorGauges::showBattery(const oi::SensorSnapshot &s)
     QStringList available;
     for (const oi::BitMeaning &b : m_profile->bits(34))
         if (s.raw(34) & b.mask)
-            available << text(b.name);
-    sources->setValue(!s.has(34) ? kDash : available.isEmpty() ? tr("none") : available.join(" + "));
+            available << oitext::bitName(b);
+    sources->setValue(!s.has(34) ? kDash : available.isEmpty() ? tr("none") : available.join(tr(" + ")));
     sources->setState(available.isEmpty() ? State::Idle : State::Active);
     sources->setOutOfRange(s.value(34).outOfRange());
 }

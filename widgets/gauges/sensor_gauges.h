@@ -60,7 +60,9 @@ private:
         QStringList keys;
     };
 
-    ValueGauge *addGauge(const QString &key, const QString &title);
+    void retranslateUi();
+    void refreshTitles();
+    ValueGauge *addGauge(const QString &key);
     bool gaugeApplies(const QString &key) const;
     int columnsForWidth(int width) const;
     void relayout();
@@ -78,6 +80,7 @@ private:
     QWidget *m_content = nullptr;
     QGridLayout *m_grid = nullptr;
     QLabel *m_banner = nullptr;
+    oi::SensorSnapshot m_snapshot; // the last shown, to show again in a new language
     int m_columns = 0;
     bool m_stale = false;
 };

@@ -189,14 +189,13 @@ ValueGauge::ValueGauge(const QString &title, QWidget *parent) : QFrame(parent)
     setSizePolicy(QSizePolicy::Preferred, QSizePolicy::Fixed);
     setMinimumWidth(120);
 
-    m_title = new ElidedLabel(title, this);
-    m_title->setToolTip(title);
+    m_title = new ElidedLabel(this);
     m_title->setObjectName("title");
     m_value = new ValueLine(this);
     m_value->setObjectName("value");
     m_detail = new ElidedLabel(this);
     m_detail->setObjectName("detail");
-    m_flag = new QLabel(tr("OUT OF RANGE"), this);
+    m_flag = new QLabel(this);
     m_flag->setObjectName("outOfRange");
     m_flag->setFont(display::valueFont(font(), 1.0));
     m_flag->hide();
@@ -220,17 +219,41 @@ ValueGauge::ValueGauge(const QString &title, QWidget *parent) : QFrame(parent)
     // Keeps the detail row's height when it is empty.
     m_detail->setMinimumHeight(m_flag->sizeHint().height());
     refreshColours();
+    setTitle(title);
+    retranslateUi();
+}
+
+void ValueGauge::retranslateUi()
+{
+    m_flag->setText(tr("OUT OF RANGE"));
+    updateDescription();
+    update();
+}
+
+void ValueGauge::updateDescription()
+{
+    QString text = this->text();
+    if (!detailText().isEmpty())
+        text = tr("%1, %2").arg(text, detailText());
+    if (m_outOfRange)
+        text = tr("%1, out of range").arg(text);
+    if (m_stale)
+        text = tr("%1, stale").arg(text);
+    if (accessibleDescription() != text)
+        setAccessibleDescription(text);
 }
 
 void ValueGauge::setValue(const QString &value, const QString &unit)
 {
     m_value->set(value, unit);
+    updateDescription();
 }
 
 void ValueGauge::setDetail(const QString &detail)
 {
     m_detail->setText(detail);
     setToolTip(detail);
+    updateDescription();
 }
 
 void ValueGauge::setRange(double min, double max)
@@ -268,6 +291,7 @@ void ValueGauge::setOutOfRange(bool outOfRange)
     m_outOfRange = outOfRange;
     m_flag->setVisible(outOfRange);
     m_detail->setVisible(!outOfRange);
+    updateDescription();
     update();
 }
 
@@ -276,6 +300,7 @@ void ValueGauge::setStale(bool stale)
     if (m_stale == stale)
         return;
     m_stale = stale;
+    updateDescription();
     refreshColours();
 }
 
@@ -283,6 +308,7 @@ void ValueGauge::setTitle(const QString &title)
 {
     m_title->setText(title);
     m_title->setToolTip(title);
+    setAccessibleName(title);
 }
 
 QString ValueGauge::title() const { return m_title->text(); }
@@ -339,6 +365,8 @@ void ValueGauge::refreshColours()
 void ValueGauge::changeEvent(QEvent *event)
 {
     QFrame::changeEvent(event);
+    if (event->type() == QEvent::LanguageChange)
+        retranslateUi();
     if (event->type() == QEvent::PaletteChange)
         refreshColours();
     if (event->type() == QEvent::FontChange) {

@@ -52,6 +52,9 @@ protected:
     void changeEvent(QEvent *event) override;
 
 private:
+    void retranslateUi();
+    // The value, detail and flags in words, for screen readers.
+    void updateDescription();
     void refreshColours();
 
     QLabel *m_title = nullptr;

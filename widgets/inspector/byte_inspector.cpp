@@ -20,6 +20,7 @@
 #include <QVBoxLayout>
 
 #include <algorithm>
+#include <climits>
 #include <span>
 
 namespace {
@@ -42,26 +43,26 @@ ByteInspector::ByteInspector(QWidget *parent)
     : QWidget(parent), m_renderTimer(new QTimer(this))
 {
     m_pauseButton = new QToolButton(this);
+    m_pauseButton->setObjectName(QStringLiteral("pauseButton"));
     m_pauseButton->setCheckable(true);
-    m_pauseButton->setText(tr("Pause"));
-    m_pauseButton->setToolTip(tr("Stop scrolling new bytes into view; they are still recorded"));
     connect(m_pauseButton, &QToolButton::toggled, this, &ByteInspector::setPaused);
 
     m_clearButton = new QToolButton(this);
-    m_clearButton->setText(tr("Clear"));
-    m_clearButton->setToolTip(tr("Forget every entry and reset the counts"));
+    m_clearButton->setObjectName(QStringLiteral("clearButton"));
     connect(m_clearButton, &QToolButton::clicked, this, &ByteInspector::clear);
 
-    m_hexBox = new QCheckBox(tr("Hex"), this);
-    m_hexBox->setToolTip(tr("Show bytes in hexadecimal instead of decimal"));
+    m_hexBox = new QCheckBox(this);
+    m_hexBox->setObjectName(QStringLiteral("hexBox"));
     connect(m_hexBox, &QCheckBox::toggled, this, &ByteInspector::setShowsHex);
 
     m_status = new QLabel(this);
+    m_status->setObjectName(QStringLiteral("status"));
     m_status->setTextInteractionFlags(Qt::TextSelectableByMouse);
 
     m_view = new QPlainTextEdit(this);
     m_view->setObjectName(QStringLiteral("byteLog"));
     m_view->setReadOnly(true);
+    m_view->setTabChangesFocus(true); // a log: Tab moves on to the send field
     m_view->setUndoRedoEnabled(false);
     m_view->setMaximumBlockCount(m_maxEntries);
     m_view->setLineWrapMode(QPlainTextEdit::WidgetWidth);
@@ -70,15 +71,13 @@ ByteInspector::ByteInspector(QWidget *parent)
 
     m_rawInput = new QLineEdit(this);
     m_rawInput->setObjectName(QStringLiteral("rawInput"));
-    m_rawInput->setPlaceholderText(tr("Raw bytes to send, e.g. 128 131 or 0x80 0x83"));
     m_rawInput->setFont(QFontDatabase::systemFont(QFontDatabase::FixedFont));
     m_rawInput->setClearButtonEnabled(true);
     connect(m_rawInput, &QLineEdit::returnPressed, this, &ByteInspector::submitRaw);
     connect(m_rawInput, &QLineEdit::textEdited, this, [this] { showError(QString()); });
 
-    m_sendButton = new QPushButton(tr("Send"), this);
+    m_sendButton = new QPushButton(this);
     m_sendButton->setObjectName(QStringLiteral("sendButton"));
-    m_sendButton->setToolTip(tr("Check the bytes and send them to the robot"));
     connect(m_sendButton, &QPushButton::clicked, this, &ByteInspector::submitRaw);
 
     m_rawError = new QLabel(this);
@@ -112,6 +111,28 @@ ByteInspector::ByteInspector(QWidget *parent)
     m_renderTimer->setInterval(kRenderIntervalMs);
     connect(m_renderTimer, &QTimer::timeout, this, &ByteInspector::flushView);
     showError(QString());
+    retranslateUi();
+}
+
+void ByteInspector::retranslateUi()
+{
+    m_pauseButton->setText(m_paused ? tr("Resume") : tr("Pause"));
+    m_pauseButton->setToolTip(tr("Stop scrolling new bytes into view; they are still recorded"));
+    m_clearButton->setText(tr("Clear"));
+    m_clearButton->setToolTip(tr("Forget every entry and reset the counts"));
+    m_hexBox->setText(tr("Hex"));
+    m_hexBox->setToolTip(tr("Show bytes in hexadecimal instead of decimal"));
+    m_view->setAccessibleName(tr("Byte log"));
+    m_rawInput->setPlaceholderText(tr("Raw bytes to send, e.g. 128 131 or 0x80 0x83"));
+    m_rawInput->setAccessibleName(tr("Raw bytes to send"));
+    m_sendButton->setText(tr("Send"));
+    m_sendButton->setToolTip(tr("Check the bytes and send them to the robot"));
+    // The last refusal, said again in the new language.
+    if (!m_rawError->isHidden()) {
+        QString error;
+        parseRawBytes(m_rejected, &error);
+        showError(error);
+    }
     updateStatus();
 }
 
@@ -357,11 +378,13 @@ void ByteInspector::renderEntries(std::size_t first, std::size_t end)
 void ByteInspector::updateStatus()
 {
     const QLocale locale;
-    QString status = tr("%1 entries \u00b7 TX %2 B \u00b7 RX %3 B")
-                         .arg(locale.toString(m_totalEntries), locale.toString(m_txBytes),
-                              locale.toString(m_rxBytes));
+    const int entries = int(std::min<quint64>(m_totalEntries, INT_MAX));
+    // Both sources, so English reads "1 entry" without a translation file.
+    QString status = (entries == 1 ? tr("%Ln entry \u00b7 TX %1 B \u00b7 RX %2 B", nullptr, entries)
+                                   : tr("%Ln entries \u00b7 TX %1 B \u00b7 RX %2 B", nullptr, entries))
+                         .arg(locale.toString(m_txBytes), locale.toString(m_rxBytes));
     if (m_paused && m_unrendered > 0)
-        status += tr(" \u00b7 paused, %1 new").arg(locale.toString(qulonglong(m_unrendered)));
+        status += tr(" \u00b7 paused, %Ln new", nullptr, int(std::min<std::size_t>(m_unrendered, INT_MAX)));
     else if (m_paused)
         status += tr(" \u00b7 paused");
     m_status->setText(status);
@@ -372,6 +395,7 @@ void ByteInspector::submitRaw()
     QString error;
     const std::optional<QByteArray> bytes = parseRawBytes(m_rawInput->text(), &error);
     if (!bytes) {
+        m_rejected = m_rawInput->text();
         showError(error);
         m_rawInput->setFocus();
         return;
@@ -392,6 +416,8 @@ void ByteInspector::showError(const QString &message)
 void ByteInspector::changeEvent(QEvent *event)
 {
     QWidget::changeEvent(event);
+    if (event->type() == QEvent::LanguageChange)
+        retranslateUi();
     if (event->type() == QEvent::PaletteChange) {
         rebuildView();
         showError(m_rawError->text());

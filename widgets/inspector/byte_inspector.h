@@ -95,6 +95,7 @@ private:
         QString meaning;
     };
 
+    void retranslateUi();
     void record(Entry entry);
     void scheduleRender();
     void rebuildView();
@@ -125,5 +126,6 @@ private:
     QLineEdit *m_rawInput;
     QPushButton *m_sendButton;
     QLabel *m_rawError;
+    QString m_rejected; // the input behind the error shown
     QTimer *m_renderTimer;
 };

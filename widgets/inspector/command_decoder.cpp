@@ -2,21 +2,18 @@
 #include "command_decoder.h"
 
 #include "command_encoder.h"
+#include "oi_text.h"
 #include "schedule.h"
 #include "script_assembler.h"
 #include "song.h"
 
+#include <QCoreApplication>
 #include <QRegularExpression>
 #include <QStringList>
 
 #include <string>
 
 namespace {
-
-QString fromView(std::string_view text)
-{
-    return QString::fromUtf8(text.data(), qsizetype(text.size()));
-}
 
 std::size_t dataBytes(std::string_view layout)
 {
@@ -82,28 +79,27 @@ QStringList fieldNames(const oi::CommandSpec &spec)
 QString radiusNote(int radius)
 {
     if (radius == oi::kRadiusStraight || radius == oi::kRadiusStraightAlt || radius == -32768)
-        return QStringLiteral(" (straight)");
+        return QCoreApplication::translate("CommandDecoder", " (straight)");
     if (radius == oi::kRadiusTurnInPlaceClockwise)
-        return QStringLiteral(" (turn in place clockwise)");
+        return QCoreApplication::translate("CommandDecoder", " (turn in place clockwise)");
     if (radius == oi::kRadiusTurnInPlaceCounterClockwise)
-        return QStringLiteral(" (turn in place counter-clockwise)");
+        return QCoreApplication::translate("CommandDecoder", " (turn in place counter-clockwise)");
     return {};
 }
 
-QString plural(std::size_t n, const char *one, const char *many)
-{
-    return QStringLiteral("%1 %2").arg(n).arg(QLatin1String(n == 1 ? one : many));
-}
+// English needs no translation file to say "1 note" but "2 notes"; other
+// languages give their own plural forms for both sources.
+QString countText(std::size_t n, const QString &one, const QString &many) { return n == 1 ? one : many; }
 
 } // namespace
 
 QString CommandDecoder::packetLabel(int id) const
 {
     if (const oi::PacketInfo *info = m_profile->packet(id))
-        return QStringLiteral("%1 (%2)").arg(fromView(info->name)).arg(id);
+        return QStringLiteral("%1 (%2)").arg(oitext::packetName(*info)).arg(id);
     if (const oi::PacketGroup *g = m_profile->group(id))
-        return QStringLiteral("group %1 (packets %2..%3)").arg(id).arg(g->first).arg(g->last);
-    return QStringLiteral("packet %1 (not on the %2)").arg(id).arg(fromView(m_profile->name));
+        return QCoreApplication::translate("CommandDecoder", "group %1 (packets %2..%3)").arg(id).arg(g->first).arg(g->last);
+    return QCoreApplication::translate("CommandDecoder", "packet %1 (not on the %2)").arg(id).arg(oitext::fromView(m_profile->name));
 }
 
 std::optional<std::size_t> CommandDecoder::commandLength(const oi::CommandSpec &spec,
@@ -135,19 +131,19 @@ CommandDecoder::Decoded CommandDecoder::decodeOne(std::span<const std::uint8_t> 
         return d;
     d.spec = oi::commandSpecForOpcode(*m_profile, bytes[0]);
     if (!d.spec) {
-        d.meaning = QStringLiteral("not a command of the %1").arg(fromView(m_profile->name));
+        d.meaning = QCoreApplication::translate("CommandDecoder", "not a command of the %1").arg(oitext::fromView(m_profile->name));
         return d;
     }
-    const QString title = fromView(d.spec->title);
+    const QString title = oitext::fromView(d.spec->title);
     const std::optional<std::size_t> length = commandLength(*d.spec, bytes);
     if (!length) {
         d.status = Status::Incomplete;
-        d.meaning = QStringLiteral("%1, incomplete: its count byte is missing").arg(title);
+        d.meaning = QCoreApplication::translate("CommandDecoder", "%1, incomplete: its count byte is missing").arg(title);
         return d;
     }
     if (*length > bytes.size()) {
         d.status = Status::Incomplete;
-        d.meaning = QStringLiteral("%1, incomplete: %2 of %3 data bytes")
+        d.meaning = QCoreApplication::translate("CommandDecoder", "%1, incomplete: %2 of %3 data bytes")
                         .arg(title)
                         .arg(bytes.size() - 1)
                         .arg(*length - 1);
@@ -174,20 +170,21 @@ std::vector<CommandDecoder::Decoded> CommandDecoder::decode(std::span<const std:
 QString CommandDecoder::describe(const oi::CommandSpec &spec, std::span<const std::uint8_t> data) const
 {
     using C = oi::Command;
-    const QString title = fromView(spec.title);
+    const QString title = oitext::fromView(spec.title);
     switch (spec.command) {
     case C::Song: {
         QStringList notes;
         for (std::size_t i = 2; i + 1 < data.size(); i += 2) {
             const oi::SongNote note{data[i], data[i + 1]};
-            const QString name = note.isRest() ? QStringLiteral("rest")
+            const QString name = note.isRest() ? QCoreApplication::translate("CommandDecoder", "rest")
                                                : QString::fromStdString(oi::midiNoteName(note.midi));
             notes << QStringLiteral("%1/%2").arg(name).arg(note.duration);
         }
-        return QStringLiteral("%1 slot %2, %3%4")
+        return QCoreApplication::translate("CommandDecoder", "%1 slot %2, %3%4")
             .arg(title)
             .arg(data[0])
-            .arg(plural(data[1], "note", "notes"))
+            .arg(countText(data[1], QCoreApplication::translate("CommandDecoder", "%n note", nullptr, data[1]),
+                           QCoreApplication::translate("CommandDecoder", "%n notes", nullptr, data[1])))
             .arg(notes.isEmpty() ? QString() : QStringLiteral(": ") + notes.join(QLatin1Char(' ')));
     }
     case C::Stream:
@@ -196,14 +193,16 @@ QString CommandDecoder::describe(const oi::CommandSpec &spec, std::span<const st
         for (std::size_t i = 1; i < data.size(); ++i)
             ids << packetLabel(data[i]);
         return QStringLiteral("%1 %2%3")
-            .arg(title, plural(data[0], "packet", "packets"))
+            .arg(title, countText(data[0], QCoreApplication::translate("CommandDecoder", "%n packet", nullptr, data[0]),
+                                  QCoreApplication::translate("CommandDecoder", "%n packets", nullptr, data[0])))
             .arg(ids.isEmpty() ? QString() : QStringLiteral(": ") + ids.join(QStringLiteral(", ")));
     }
     case C::Script: {
         const auto body = data.subspan(1);
         const auto text = oi::disassembleScript(*m_profile, body);
         return QStringLiteral("%1 %2%3")
-            .arg(title, plural(body.size(), "byte", "bytes"))
+            .arg(title, countText(body.size(), QCoreApplication::translate("CommandDecoder", "%n byte", nullptr, int(body.size())),
+                                  QCoreApplication::translate("CommandDecoder", "%n bytes", nullptr, int(body.size()))))
             .arg(text && !text->empty() ? QStringLiteral(": ") + QString::fromStdString(*text) : QString());
     }
     default:
@@ -214,20 +213,20 @@ QString CommandDecoder::describe(const oi::CommandSpec &spec, std::span<const st
     switch (spec.command) {
     case C::Baud: {
         const int baud = oi::baudForCode(v[0]);
-        return QStringLiteral("%1 code %2%3")
+        return QCoreApplication::translate("CommandDecoder", "%1 code %2%3")
             .arg(title)
             .arg(v[0])
             .arg(baud > 0 ? QStringLiteral(" (%1 bps)").arg(baud) : QString());
     }
     case C::Drive:
-        return QStringLiteral("%1 velocity %2 radius %3%4").arg(title).arg(v[0]).arg(v[1]).arg(radiusNote(v[1]));
+        return QCoreApplication::translate("CommandDecoder", "%1 velocity %2 radius %3%4").arg(title).arg(v[0]).arg(v[1]).arg(radiusNote(v[1]));
     case C::Sensors:
         return QStringLiteral("%1 %2").arg(title, packetLabel(v[0]));
     case C::PauseResumeStream:
         return QStringLiteral("%1: %2")
-            .arg(title, v[0] == 0   ? QStringLiteral("pause")
-                        : v[0] == 1 ? QStringLiteral("resume")
-                                    : QStringLiteral("state %1").arg(v[0]));
+            .arg(title, v[0] == 0   ? QCoreApplication::translate("CommandDecoder", "pause")
+                        : v[0] == 1 ? QCoreApplication::translate("CommandDecoder", "resume")
+                                    : QCoreApplication::translate("CommandDecoder", "state %1").arg(v[0]));
     case C::DigitLedsAscii: {
         QString text;
         for (int c : v)
@@ -236,12 +235,12 @@ QString CommandDecoder::describe(const oi::CommandSpec &spec, std::span<const st
     }
     case C::Schedule: {
         if ((v[0] & 0x7F) == 0)
-            return QStringLiteral("%1 off").arg(title);
+            return QCoreApplication::translate("CommandDecoder", "%1 off").arg(title);
         QStringList days;
         for (int day = 0; day < 7; ++day)
             if (v[0] & (1 << day))
                 days << QStringLiteral("%1 %2:%3")
-                            .arg(fromView(oi::weekdayShortName(oi::Weekday(day))))
+                            .arg(oitext::fromView(oi::weekdayShortName(oi::Weekday(day))))
                             .arg(v[1 + 2 * day])
                             .arg(v[2 + 2 * day], 2, 10, QLatin1Char('0'));
         return QStringLiteral("%1 %2").arg(title, days.join(QStringLiteral(", ")));
@@ -249,7 +248,7 @@ QString CommandDecoder::describe(const oi::CommandSpec &spec, std::span<const st
     case C::SetDayTime:
         if (v[0] >= 0 && v[0] <= 6)
             return QStringLiteral("%1 %2 %3:%4")
-                .arg(title, fromView(oi::weekdayName(oi::Weekday(v[0]))))
+                .arg(title, oitext::fromView(oi::weekdayName(oi::Weekday(v[0]))))
                 .arg(v[1])
                 .arg(v[2], 2, 10, QLatin1Char('0'));
         break;
@@ -277,15 +276,15 @@ std::optional<QByteArray> CommandDecoder::parseRaw(const QString &text, QString 
     static const QRegularExpression separators(QStringLiteral("[\\s,]+"));
     const QStringList tokens = text.split(separators, Qt::SkipEmptyParts);
     if (tokens.isEmpty())
-        return fail(QStringLiteral("Type the bytes to send, for example 128 131 or 0x80 0x83."));
+        return fail(QCoreApplication::translate("CommandDecoder", "Type the bytes to send, for example 128 131 or 0x80 0x83."));
 
     QByteArray bytes;
     for (qsizetype i = 0; i < tokens.size(); ++i) {
         long long value = 0;
         if (!oi::parseInteger(tokens[i].toStdString(), value))
-            return fail(QStringLiteral("Byte %1: \u201c%2\u201d is not a number.").arg(i + 1).arg(tokens[i]));
+            return fail(QCoreApplication::translate("CommandDecoder", "Byte %1: \u201c%2\u201d is not a number.").arg(i + 1).arg(tokens[i]));
         if (value < 0 || value > 255)
-            return fail(QStringLiteral("Byte %1: %2 is outside 0..255.").arg(i + 1).arg(tokens[i]));
+            return fail(QCoreApplication::translate("CommandDecoder", "Byte %1: %2 is outside 0..255.").arg(i + 1).arg(tokens[i]));
         bytes.append(char(value));
     }
 
@@ -297,18 +296,18 @@ std::optional<QByteArray> CommandDecoder::parseRaw(const QString &text, QString 
         const auto rest = all.subspan(at);
         const oi::CommandSpec *spec = oi::commandSpecForOpcode(*m_profile, rest[0]);
         if (!spec)
-            return fail(QStringLiteral("Byte %1: %2 is not an opcode of the %3.")
+            return fail(QCoreApplication::translate("CommandDecoder", "Byte %1: %2 is not an opcode of the %3.")
                             .arg(at + 1)
                             .arg(rest[0])
-                            .arg(fromView(m_profile->name)));
-        const QString title = QStringLiteral("%1 (%2)").arg(fromView(spec->title)).arg(spec->opcode);
+                            .arg(oitext::fromView(m_profile->name)));
+        const QString title = QStringLiteral("%1 (%2)").arg(oitext::fromView(spec->title)).arg(spec->opcode);
         const std::optional<std::size_t> length = commandLength(*spec, rest);
         if (!length)
             return fail(spec->command == oi::Command::Song
-                            ? QStringLiteral("%1 needs its song number and length bytes.").arg(title)
-                            : QStringLiteral("%1 needs its count byte.").arg(title));
+                            ? QCoreApplication::translate("CommandDecoder", "%1 needs its song number and length bytes.").arg(title)
+                            : QCoreApplication::translate("CommandDecoder", "%1 needs its count byte.").arg(title));
         if (*length > rest.size())
-            return fail(QStringLiteral("%1 takes %2 data bytes; got %3.")
+            return fail(QCoreApplication::translate("CommandDecoder", "%1 takes %2 data bytes; got %3.")
                             .arg(title)
                             .arg(*length - 1)
                             .arg(rest.size() - 1));
@@ -325,10 +324,10 @@ std::optional<QByteArray> CommandDecoder::parseRaw(const QString &text, QString 
         }
         const oi::EncodeResult encoded = oi::encodeCommand(encoder, spec->name, args);
         if (!encoded)
-            return fail(QStringLiteral("%1: %2").arg(title, QString::fromStdString(encoded.error().describe())));
+            return fail(QCoreApplication::translate("CommandDecoder", "%1: %2").arg(title, QString::fromStdString(encoded.error().describe())));
         if (!std::equal(encoded->begin(), encoded->end(), rest.begin(), rest.begin() + std::ptrdiff_t(*length))
             || encoded->size() != *length)
-            return fail(QStringLiteral("%1: these bytes do not form the command the robot expects.").arg(title));
+            return fail(QCoreApplication::translate("CommandDecoder", "%1: these bytes do not form the command the robot expects.").arg(title));
         at += *length;
     }
     return bytes;

@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "rx_frame_scanner.h"
 
+#include "oi_text.h"
 #include "sensor_snapshot.h"
 
+#include <QCoreApplication>
 #include <QStringList>
 
 namespace {
@@ -11,11 +13,6 @@ constexpr std::uint8_t kStreamHeader = 19;
 // Groups up to this size list their values; bigger ones (100 has 52
 // packets) just say what they are, to keep a line readable.
 constexpr int kMaxListedGroupPackets = 8;
-
-QString fromView(std::string_view text)
-{
-    return QString::fromUtf8(text.data(), qsizetype(text.size()));
-}
 
 bool isText(std::span<const std::uint8_t> bytes)
 {
@@ -38,7 +35,7 @@ std::size_t describeOne(const oi::RobotProfile &profile, int id, std::span<const
     int first = id, last = id;
     if (const oi::PacketGroup *g = profile.group(id)) {
         if (g->last - g->first + 1 > kMaxListedGroupPackets) {
-            out << QStringLiteral("group %1 (%2 packets)").arg(id).arg(g->last - g->first + 1);
+            out << QCoreApplication::translate("RxFrameScanner", "group %1 (%n packets)", nullptr, g->last - g->first + 1).arg(id);
             return used;
         }
         first = g->first;
@@ -48,9 +45,9 @@ std::size_t describeOne(const oi::RobotProfile &profile, int id, std::span<const
         const oi::PacketValue v = snapshot.value(p);
         if (!v.present || !v.info)
             continue;
-        QString text = QStringLiteral("%1 %2").arg(fromView(v.info->name)).arg(v.value);
+        QString text = QStringLiteral("%1 %2").arg(oitext::packetName(*v.info)).arg(v.value);
         if (!v.info->unit.empty())
-            text += QLatin1Char(' ') + fromView(v.info->unit);
+            text += QLatin1Char(' ') + oitext::fromView(v.info->unit);
         out << text;
     }
     return used;
@@ -131,10 +128,10 @@ RxFrameScanner::Piece RxFrameScanner::otherPiece(std::span<const std::uint8_t> b
         text.replace(QLatin1Char('\r'), QStringLiteral("\\r"));
         text.replace(QLatin1Char('\n'), QStringLiteral("\\n"));
         text.replace(QLatin1Char('\t'), QStringLiteral("\\t"));
-        piece.meaning = QStringLiteral("text \"%1\"").arg(text);
+        piece.meaning = QCoreApplication::translate("RxFrameScanner", "text \"%1\"").arg(text);
     } else {
         piece.kind = Kind::Bytes;
-        piece.meaning = QStringLiteral("outside any stream frame");
+        piece.meaning = QCoreApplication::translate("RxFrameScanner", "outside any stream frame");
     }
     return piece;
 }
@@ -169,7 +166,7 @@ std::vector<RxFrameScanner::Piece> RxFrameScanner::feed(std::span<const std::uin
                 const std::size_t used = describeOne(*m_profile, payload[at], payload.subspan(at + 1), values);
                 at += 1 + used;
             }
-            piece.meaning = QStringLiteral("stream frame: %1").arg(values.join(QStringLiteral(", ")));
+            piece.meaning = QCoreApplication::translate("RxFrameScanner", "stream frame: %1").arg(values.join(QStringLiteral(", ")));
             pieces.push_back(std::move(piece));
             i += length;
             otherFrom = i;
@@ -187,7 +184,7 @@ std::vector<RxFrameScanner::Piece> RxFrameScanner::feed(std::span<const std::uin
             std::size_t at = 0;
             for (std::uint8_t id : reply.ids)
                 at += describeOne(*m_profile, id, data.subspan(i + at, reply.bytes - at), values);
-            piece.meaning = QStringLiteral("reply: %1").arg(values.join(QStringLiteral(", ")));
+            piece.meaning = QCoreApplication::translate("RxFrameScanner", "reply: %1").arg(values.join(QStringLiteral(", ")));
             pieces.push_back(std::move(piece));
             i += reply.bytes;
             otherFrom = i;

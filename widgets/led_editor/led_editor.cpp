@@ -6,6 +6,7 @@
 #include "seven_segment_font.h"
 
 #include <QCheckBox>
+#include <QEvent>
 #include <QFontDatabase>
 #include <QGridLayout>
 #include <QGroupBox>
@@ -51,10 +52,9 @@ LedEditor::LedEditor(QWidget *parent) : QWidget(parent)
     m_liveTimer.setInterval(kLiveIntervalMs);
     connect(&m_liveTimer, &QTimer::timeout, this, &LedEditor::apply);
 
-    m_live = new QCheckBox(tr("Live"), this);
+    m_live = new QCheckBox(this);
     m_live->setObjectName("live");
-    m_live->setToolTip(tr("Send changes as you make them, at most every %1 ms").arg(kLiveIntervalMs));
-    m_apply = new QPushButton(tr("Apply"), this);
+    m_apply = new QPushButton(this);
     m_apply->setObjectName("apply");
     m_preview = new QLabel(this);
     m_preview->setObjectName("bytePreview");
@@ -81,10 +81,10 @@ LedEditor::LedEditor(QWidget *parent) : QWidget(parent)
     auto *sendRow = new QHBoxLayout;
     sendRow->addWidget(m_live, 0, Qt::AlignTop);
     sendRow->addWidget(m_apply, 0, Qt::AlignTop);
-    auto *willSend = new QLabel(tr("Will send:"), this);
-    willSend->setMinimumHeight(m_apply->sizeHint().height());
+    m_willSend = new QLabel(this);
+    m_willSend->setMinimumHeight(m_apply->sizeHint().height());
     m_preview->setMinimumHeight(m_apply->sizeHint().height());
-    sendRow->addWidget(willSend, 0, Qt::AlignTop);
+    sendRow->addWidget(m_willSend, 0, Qt::AlignTop);
     sendRow->addWidget(m_preview, 1, Qt::AlignTop);
 
     auto *layout = new QVBoxLayout(this);
@@ -92,19 +92,100 @@ LedEditor::LedEditor(QWidget *parent) : QWidget(parent)
     layout->addLayout(sendRow);
     layout->addWidget(m_message);
 
-    setProfile(*m_profile);
+    // Tab follows the screen: digits, LEDs, scheduling LEDs, then sending.
+    QList<QWidget *> order{m_segments, m_clear, m_asciiText, m_debris, m_spot, m_dock, m_checkRobot, m_play,
+                           m_advance, m_colour, m_intensity};
+    for (QCheckBox *day : m_weekdays)
+        order << day;
+    order << m_schedule << m_clock << m_am << m_pm << m_colon << m_live << m_apply;
+    for (int i = 1; i < order.size(); ++i)
+        setTabOrder(order[i - 1], order[i]);
+
+    setProfile(*m_profile); // also sets every text
 }
 
-QCheckBox *LedEditor::addCheck(const QString &name, const QString &text)
+void LedEditor::changeEvent(QEvent *event)
 {
-    auto *box = new QCheckBox(text, this);
+    if (event->type() == QEvent::LanguageChange)
+        retranslateUi();
+    QWidget::changeEvent(event);
+}
+
+void LedEditor::retranslateUi()
+{
+    m_live->setText(tr("Live"));
+    m_live->setToolTip(tr("Send changes as you make them, at most every %1 ms").arg(kLiveIntervalMs));
+    m_apply->setText(tr("Apply"));
+    m_willSend->setText(tr("Will send:"));
+
+    m_digitsGroup->setTitle(tr("7-segment display (163, 164)"));
+    m_segments->setToolTip(tr("Click a segment to switch it on or off"));
+    m_segments->setAccessibleName(tr("Segment editor"));
+    m_clear->setText(tr("Clear"));
+    m_clear->setToolTip(tr("Switch every segment off"));
+    m_asciiText->setPlaceholderText(tr("up to 4 characters"));
+    m_asciiText->setAccessibleName(tr("Text for the display"));
+    m_asciiPreview->setToolTip(tr("The robot's approximation of the text"));
+    m_asciiPreview->setAccessibleName(tr("What the robot shows"));
+    m_rawTitle->setText(tr("<b>Segments</b> (Digit LEDs Raw, 163): click to switch"));
+    m_asciiTitle->setText(tr("<b>Text</b> (Digit LEDs ASCII, 164)"));
+    m_asciiCaption->setText(tr("What the robot shows:"));
+    bool refused = false;
+    m_asciiMessage->setText(asciiProblem(m_asciiText->text(), &refused));
+
+    m_ledsGroup->setTitle(tr("LEDs (139)"));
+    m_debris->setText(tr("Debris"));
+    m_spot->setText(tr("Spot"));
+    m_dock->setText(tr("Dock"));
+    m_checkRobot->setText(tr("Check Robot"));
+    m_play->setText(tr("Play"));
+    m_advance->setText(tr("Advance"));
+    m_colour->setToolTip(tr("0 green … 255 red"));
+    m_colour->setAccessibleName(tr("Power colour"));
+    m_intensity->setAccessibleName(tr("Intensity"));
+    m_swatch->setToolTip(tr("The power LED as set"));
+    m_swatch->setAccessibleName(tr("Power LED"));
+    m_colourLabel->setText(tr("Power colour"));
+    m_greenLabel->setText(tr("green"));
+    m_redLabel->setText(tr("red"));
+    m_intensityLabel->setText(tr("Intensity"));
+    m_offLabel->setText(tr("off"));
+    m_fullLabel->setText(tr("full"));
+
+    m_schedulingGroup->setTitle(tr("Scheduling LEDs (162)"));
+    static const char *const kDays[] = {QT_TR_NOOP("Sun"), QT_TR_NOOP("Mon"), QT_TR_NOOP("Tue"), QT_TR_NOOP("Wed"),
+                                        QT_TR_NOOP("Thu"), QT_TR_NOOP("Fri"), QT_TR_NOOP("Sat")};
+    for (int day = 0; day < 7; ++day)
+        m_weekdays[day]->setText(tr(kDays[day]));
+    m_schedule->setText(tr("Schedule"));
+    m_clock->setText(tr("Clock"));
+    m_am->setText(tr("AM"));
+    m_pm->setText(tr("PM"));
+    m_colon->setText(tr("Colon"));
+
+    // The profile's name is a brand; only the sentence around it is translated.
+    const QString robot = QString::fromUtf8(m_profile->name.data(), m_profile->name.size());
+    m_digitsReason->setText(tr("The %1 has no 7-segment display: Digit LEDs Raw (163) and Digit LEDs "
+                               "ASCII (164) are Roomba 500 / Create 2 only.")
+                                .arg(robot));
+    const oi::CommandEncoder encoder(*m_profile);
+    m_rawWarning->setText(tr("⚠ %1. It is sent anyway; use Text (164) to be sure.")
+                              .arg(fromStd(encoder.digitLedsRaw(0, 0, 0, 0).warning)));
+    if (const auto refusedScheduling = encoder.refuse(oi::Command::SchedulingLeds))
+        m_schedulingReason->setText(tr("%1.").arg(fromStd(refusedScheduling->message)));
+    refresh();
+}
+
+QCheckBox *LedEditor::addCheck(const QString &name, QWidget *parent)
+{
+    auto *box = new QCheckBox(parent);
     box->setObjectName(name);
     return box;
 }
 
 QWidget *LedEditor::buildDigits()
 {
-    m_digitsGroup = new QGroupBox(tr("7-segment display (163, 164)"), this);
+    m_digitsGroup = new QGroupBox(this);
     m_digitsGroup->setObjectName("digitsGroup");
     m_digitsReason = wrappingLabel("digitsReason", m_digitsGroup);
     m_digitsContent = new QWidget(m_digitsGroup);
@@ -112,15 +193,14 @@ QWidget *LedEditor::buildDigits()
     m_segments = new SevenSegmentDisplay(m_digitsContent);
     m_segments->setObjectName("segmentEditor");
     m_segments->setEditable(true);
-    m_segments->setToolTip(tr("Click a segment to switch it on or off"));
-    auto *clear = new QPushButton(tr("Clear"), m_digitsContent);
-    clear->setObjectName("clearSegments");
+    m_clear = new QPushButton(m_digitsContent);
+    m_clear->setObjectName("clearSegments");
     m_rawWarning = wrappingLabel("rawWarning", m_digitsContent);
     connect(m_segments, &SevenSegmentDisplay::segmentsChanged, this, [this] {
         m_digitsPending = DigitSource::Raw;
         changed();
     });
-    connect(clear, &QPushButton::clicked, this, [this] {
+    connect(m_clear, &QPushButton::clicked, this, [this] {
         m_segments->setMasks({});
         m_digitsPending = DigitSource::Raw;
         changed();
@@ -129,30 +209,28 @@ QWidget *LedEditor::buildDigits()
     m_asciiText = new QLineEdit(m_digitsContent);
     m_asciiText->setObjectName("asciiText");
     m_asciiText->setMaxLength(4);
-    m_asciiText->setPlaceholderText(tr("up to 4 characters"));
     m_asciiPreview = new SevenSegmentDisplay(m_digitsContent);
     m_asciiPreview->setObjectName("asciiPreview");
-    m_asciiPreview->setToolTip(tr("The robot's approximation of the text"));
     m_asciiMessage = wrappingLabel("asciiMessage", m_digitsContent);
     connect(m_asciiText, &QLineEdit::textChanged, this, &LedEditor::asciiEdited);
 
-    auto *rawTitle = new QLabel(tr("<b>Segments</b> (Digit LEDs Raw, 163): click to switch"), m_digitsContent);
-    rawTitle->setWordWrap(true);
-    auto *asciiTitle = new QLabel(tr("<b>Text</b> (Digit LEDs ASCII, 164)"), m_digitsContent);
-    auto *asciiCaption = new QLabel(tr("What the robot shows:"), m_digitsContent);
+    m_rawTitle = new QLabel(m_digitsContent);
+    m_rawTitle->setWordWrap(true);
+    m_asciiTitle = new QLabel(m_digitsContent);
+    m_asciiCaption = new QLabel(m_digitsContent);
 
     auto *rawRow = new QHBoxLayout;
     rawRow->addWidget(m_segments, 1);
-    rawRow->addWidget(clear, 0, Qt::AlignTop);
+    rawRow->addWidget(m_clear, 0, Qt::AlignTop);
     auto *content = new QVBoxLayout(m_digitsContent);
     content->setContentsMargins(0, 0, 0, 0);
-    content->addWidget(rawTitle);
+    content->addWidget(m_rawTitle);
     content->addLayout(rawRow);
     content->addWidget(m_rawWarning);
     content->addSpacing(8);
-    content->addWidget(asciiTitle);
+    content->addWidget(m_asciiTitle);
     content->addWidget(m_asciiText);
-    content->addWidget(asciiCaption);
+    content->addWidget(m_asciiCaption);
     content->addWidget(m_asciiPreview);
     content->addWidget(m_asciiMessage);
     content->addStretch();
@@ -166,20 +244,19 @@ QWidget *LedEditor::buildDigits()
 
 QWidget *LedEditor::buildLeds()
 {
-    auto *group = new QGroupBox(tr("LEDs (139)"), this);
+    auto *group = m_ledsGroup = new QGroupBox(this);
     group->setObjectName("ledsGroup");
-    m_debris = addCheck("ledDebris", tr("Debris"));
-    m_spot = addCheck("ledSpot", tr("Spot"));
-    m_dock = addCheck("ledDock", tr("Dock"));
-    m_checkRobot = addCheck("ledCheckRobot", tr("Check Robot"));
-    m_play = addCheck("ledPlay", tr("Play"));
-    m_advance = addCheck("ledAdvance", tr("Advance"));
+    m_debris = addCheck("ledDebris", group);
+    m_spot = addCheck("ledSpot", group);
+    m_dock = addCheck("ledDock", group);
+    m_checkRobot = addCheck("ledCheckRobot", group);
+    m_play = addCheck("ledPlay", group);
+    m_advance = addCheck("ledAdvance", group);
 
     m_colour = new QSlider(Qt::Horizontal, group);
     m_colour->setObjectName("powerColour");
     m_colour->setRange(0, 255);
     m_colour->setValue(0);
-    m_colour->setToolTip(tr("0 green … 255 red"));
     m_intensity = new QSlider(Qt::Horizontal, group);
     m_intensity->setObjectName("powerIntensity");
     m_intensity->setRange(0, 255);
@@ -195,7 +272,6 @@ QWidget *LedEditor::buildLeds()
     m_swatch = new QLabel(group);
     m_swatch->setObjectName("powerSwatch");
     m_swatch->setFixedSize(36, 36);
-    m_swatch->setToolTip(tr("The power LED as set"));
 
     auto *toggles = new QHBoxLayout;
     for (QCheckBox *box : {m_debris, m_spot, m_dock, m_checkRobot, m_play, m_advance}) {
@@ -207,16 +283,22 @@ QWidget *LedEditor::buildLeds()
     }
     toggles->addStretch();
 
+    m_colourLabel = new QLabel(group);
+    m_greenLabel = new QLabel(group);
+    m_redLabel = new QLabel(group);
+    m_intensityLabel = new QLabel(group);
+    m_offLabel = new QLabel(group);
+    m_fullLabel = new QLabel(group);
     auto *power = new QGridLayout;
-    power->addWidget(new QLabel(tr("Power colour"), group), 0, 0);
-    power->addWidget(new QLabel(tr("green"), group), 0, 1);
+    power->addWidget(m_colourLabel, 0, 0);
+    power->addWidget(m_greenLabel, 0, 1);
     power->addWidget(m_colour, 0, 2);
-    power->addWidget(new QLabel(tr("red"), group), 0, 3);
+    power->addWidget(m_redLabel, 0, 3);
     power->addWidget(m_colourValue, 0, 4);
-    power->addWidget(new QLabel(tr("Intensity"), group), 1, 0);
-    power->addWidget(new QLabel(tr("off"), group), 1, 1);
+    power->addWidget(m_intensityLabel, 1, 0);
+    power->addWidget(m_offLabel, 1, 1);
     power->addWidget(m_intensity, 1, 2);
-    power->addWidget(new QLabel(tr("full"), group), 1, 3);
+    power->addWidget(m_fullLabel, 1, 3);
     power->addWidget(m_intensityValue, 1, 4);
     power->addWidget(m_swatch, 0, 5, 2, 1, Qt::AlignCenter);
     power->setColumnStretch(2, 1);
@@ -234,29 +316,25 @@ QWidget *LedEditor::buildLeds()
 
 QWidget *LedEditor::buildSchedulingLeds()
 {
-    m_schedulingGroup = new QGroupBox(tr("Scheduling LEDs (162)"), this);
+    m_schedulingGroup = new QGroupBox(this);
     m_schedulingGroup->setObjectName("schedulingGroup");
     m_schedulingReason = wrappingLabel("schedulingReason", m_schedulingGroup);
     m_schedulingContent = new QWidget(m_schedulingGroup);
 
     auto *days = new QHBoxLayout;
     for (int day = 0; day < 7; ++day) {
-        const auto name = oi::weekdayName(static_cast<oi::Weekday>(day)).substr(0, 3);
-        m_weekdays[day] = addCheck(QString("weekday%1").arg(day), QString::fromUtf8(name.data(), name.size()));
-        m_weekdays[day]->setParent(m_schedulingContent);
+        m_weekdays[day] = addCheck(QString("weekday%1").arg(day), m_schedulingContent);
         days->addWidget(m_weekdays[day]);
     }
     days->addStretch();
     auto *indicators = new QHBoxLayout;
-    m_schedule = addCheck("schedSchedule", tr("Schedule"));
-    m_clock = addCheck("schedClock", tr("Clock"));
-    m_am = addCheck("schedAm", tr("AM"));
-    m_pm = addCheck("schedPm", tr("PM"));
-    m_colon = addCheck("schedColon", tr("Colon"));
-    for (QCheckBox *box : {m_schedule, m_clock, m_am, m_pm, m_colon}) {
-        box->setParent(m_schedulingContent);
+    m_schedule = addCheck("schedSchedule", m_schedulingContent);
+    m_clock = addCheck("schedClock", m_schedulingContent);
+    m_am = addCheck("schedAm", m_schedulingContent);
+    m_pm = addCheck("schedPm", m_schedulingContent);
+    m_colon = addCheck("schedColon", m_schedulingContent);
+    for (QCheckBox *box : {m_schedule, m_clock, m_am, m_pm, m_colon})
         indicators->addWidget(box);
-    }
     indicators->addStretch();
     for (QCheckBox *box : m_schedulingContent->findChildren<QCheckBox *>())
         connect(box, &QCheckBox::toggled, this, [this] {
@@ -296,27 +374,21 @@ void LedEditor::setProfile(const oi::RobotProfile &profile)
     m_digitsContent->setEnabled(!digitsRefused);
     m_digitsContent->setVisible(!digitsRefused);
     m_digitsReason->setVisible(bool(digitsRefused));
-    m_digitsReason->setText(tr("The %1 has no 7-segment display: Digit LEDs Raw (163) and Digit LEDs "
-                               "ASCII (164) are Roomba 500 / Create 2 only.")
-                                .arg(QString::fromUtf8(profile.name.data(), profile.name.size())));
     // ERRATA 9: the encoder knows where 163 is sent but does nothing.
     const auto raw = encoder.digitLedsRaw(0, 0, 0, 0);
     m_rawWarning->setVisible(raw.ok() && !raw.warning.empty());
-    m_rawWarning->setText(tr("⚠ %1. It is sent anyway; use Text (164) to be sure.").arg(fromStd(raw.warning)));
 
     const auto schedulingRefused = encoder.refuse(oi::Command::SchedulingLeds);
     m_schedulingContent->setEnabled(!schedulingRefused);
     m_schedulingContent->setVisible(!schedulingRefused);
     m_schedulingReason->setVisible(bool(schedulingRefused));
-    if (schedulingRefused)
-        m_schedulingReason->setText(fromStd(schedulingRefused->message) + '.');
 
     // The new robot has not been told anything yet by this editor.
     m_ledsPending = false;
     m_schedulingPending = false;
     m_digitsPending.reset();
     m_message->clear();
-    refresh();
+    retranslateUi(); // the reasons name the profile
 }
 
 bool LedEditor::liveMode() const { return m_live->isChecked(); }
@@ -395,24 +467,36 @@ std::vector<oi::Bytes> LedEditor::pendingCommands() const
 QString LedEditor::bytePreview() const { return m_preview->text(); }
 QString LedEditor::message() const { return m_message->text(); }
 
-void LedEditor::asciiEdited()
+QString LedEditor::asciiProblem(const QString &text, bool *refused) const
 {
-    const QString text = m_asciiText->text();
-    QStringList refused, blank;
+    QStringList outside, blank;
     for (QChar ch : text) {
         const int code = ch.unicode();
         if (code < 32 || code > 126)
-            refused << QString("'%1' (%2)").arg(ch).arg(code);
+            outside << QString("'%1' (%2)").arg(ch).arg(code);
         else if (!oi::isSevenSegmentCharacter(code))
             blank << QString("'%1'").arg(ch);
     }
-    if (!refused.isEmpty()) {
+    *refused = !outside.isEmpty();
+    if (*refused)
+        return tr("Not sent: %1 outside ASCII 32..126. Use letters, digits and punctuation.")
+            .arg(outside.join(", "));
+    if (blank.isEmpty())
+        return {};
+    return blank.size() == 1 ? tr("%1 shows blank: the robot has no shape for it.").arg(blank[0])
+                             : tr("%1 show blank: the robot has no shape for them.").arg(blank.join(", "));
+}
+
+void LedEditor::asciiEdited()
+{
+    const QString text = m_asciiText->text();
+    bool refused = false;
+    m_asciiMessage->setText(asciiProblem(text, &refused));
+    if (refused) {
         // Nothing goes out for text the robot cannot take; the last valid
         // text stays in the preview.
         if (m_digitsPending == DigitSource::Ascii)
             m_digitsPending.reset();
-        m_asciiMessage->setText(tr("Not sent: %1 outside ASCII 32..126. Use letters, digits and "
-                                   "punctuation.").arg(refused.join(", ")));
         refresh();
         return;
     }
@@ -421,10 +505,6 @@ void LedEditor::asciiEdited()
     for (int i = 0; i < 4; ++i)
         shapes[i] = oi::sevenSegmentForAscii(m_asciiCodes[i]);
     m_asciiPreview->setMasks(shapes);
-    m_asciiMessage->setText(blank.isEmpty()      ? QString()
-                            : blank.size() == 1 ? tr("%1 shows blank: the robot has no shape for it.").arg(blank[0])
-                                                : tr("%1 show blank: the robot has no shape for them.")
-                                                      .arg(blank.join(", ")));
     m_digitsPending = DigitSource::Ascii;
     changed();
 }
@@ -445,6 +525,8 @@ void LedEditor::refresh()
     const QColor swatch = powerLedColor(m_colour->value(), m_intensity->value());
     m_swatch->setStyleSheet(QString("background-color: %1; border: 1px solid %2; border-radius: 18px;")
                                 .arg(swatch.name(), palette().color(QPalette::Mid).name()));
+    m_swatch->setAccessibleDescription(
+        tr("Colour %1 of 255 (green to red), intensity %2 of 255").arg(m_colour->value()).arg(m_intensity->value()));
 
     const auto commands = pendingCommands();
     QStringList lines;

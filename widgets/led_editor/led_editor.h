@@ -52,6 +52,9 @@ public:
     // intensity (0..255).
     static QColor powerLedColor(int colour, int intensity);
 
+protected:
+    void changeEvent(QEvent *event) override;
+
 public slots:
     // Sends every pending command, then clears them.
     void apply();
@@ -65,9 +68,11 @@ private:
     QWidget *buildDigits();
     QWidget *buildLeds();
     QWidget *buildSchedulingLeds();
-    QCheckBox *addCheck(const QString &name, const QString &text);
+    QCheckBox *addCheck(const QString &name, QWidget *parent);
+    void retranslateUi();
     void changed();
     void asciiEdited();
+    QString asciiProblem(const QString &text, bool *refused) const;
     void refresh();
     int ledBits() const;
     int weekdayBits() const;
@@ -89,6 +94,18 @@ private:
     QLineEdit *m_asciiText = nullptr;
     SevenSegmentDisplay *m_asciiPreview = nullptr;
     QLabel *m_asciiMessage = nullptr;
+    QPushButton *m_clear = nullptr;
+    QLabel *m_rawTitle = nullptr;
+    QLabel *m_asciiTitle = nullptr;
+    QLabel *m_asciiCaption = nullptr;
+
+    QGroupBox *m_ledsGroup = nullptr;
+    QLabel *m_colourLabel = nullptr;
+    QLabel *m_greenLabel = nullptr;
+    QLabel *m_redLabel = nullptr;
+    QLabel *m_intensityLabel = nullptr;
+    QLabel *m_offLabel = nullptr;
+    QLabel *m_fullLabel = nullptr;
 
     QCheckBox *m_debris = nullptr;
     QCheckBox *m_spot = nullptr;
@@ -114,6 +131,7 @@ private:
 
     QCheckBox *m_live = nullptr;
     QPushButton *m_apply = nullptr;
+    QLabel *m_willSend = nullptr;
     QLabel *m_preview = nullptr;
     QLabel *m_message = nullptr;
 };

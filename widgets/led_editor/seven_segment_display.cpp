@@ -1,8 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "seven_segment_display.h"
 
+#include <QEvent>
+#include <QKeyEvent>
 #include <QMouseEvent>
 #include <QPainter>
+#include <QStringList>
 
 #include <limits>
 
@@ -29,12 +32,16 @@ QPolygonF bar(QPointF a, QPointF b, qreal t)
 SevenSegmentDisplay::SevenSegmentDisplay(QWidget *parent) : QWidget(parent)
 {
     setSizePolicy(QSizePolicy::Preferred, QSizePolicy::Fixed);
+    updateDescription();
 }
 
 void SevenSegmentDisplay::setEditable(bool editable)
 {
     m_editable = editable;
     setCursor(editable ? Qt::PointingHandCursor : Qt::ArrowCursor);
+    // Only an editor is something to operate; a preview stays out of the Tab chain.
+    setFocusPolicy(editable ? Qt::StrongFocus : Qt::NoFocus);
+    updateDescription();
 }
 
 void SevenSegmentDisplay::setMasks(const std::array<std::uint8_t, 4> &masks)
@@ -42,11 +49,51 @@ void SevenSegmentDisplay::setMasks(const std::array<std::uint8_t, 4> &masks)
     if (masks == m_masks)
         return;
     m_masks = masks;
+    updateDescription();
     update();
 }
 
-QSize SevenSegmentDisplay::sizeHint() const { return {220, 84}; }
-QSize SevenSegmentDisplay::minimumSizeHint() const { return {160, 84}; }
+QString SevenSegmentDisplay::describeMasks() const
+{
+    static const char *const kLetters = "ABCDEFG";
+    QStringList digits;
+    for (int position = 0; position < kDigits; ++position) {
+        QString lit;
+        for (int s = 0; s < kSegments; ++s)
+            if ((m_masks[position] >> s) & 1)
+                lit += QLatin1Char(kLetters[s]);
+        digits << (lit.isEmpty() ? tr("digit %1 dark").arg(position + 1)
+                                 : tr("digit %1 segments %2").arg(position + 1).arg(lit));
+    }
+    return digits.join(QStringLiteral("; "));
+}
+
+void SevenSegmentDisplay::updateDescription()
+{
+    QString text = tr("Lit: %1.").arg(describeMasks());
+    if (m_editable)
+        text += QLatin1Char(' ') + tr("Arrow keys choose a segment, Space switches it.");
+    setAccessibleDescription(text);
+}
+
+void SevenSegmentDisplay::changeEvent(QEvent *event)
+{
+    if (event->type() == QEvent::LanguageChange)
+        updateDescription();
+    QWidget::changeEvent(event);
+}
+
+// Scales with the font, so the digits stay in proportion on any screen.
+QSize SevenSegmentDisplay::sizeHint() const
+{
+    const int h = fontMetrics().height() * 5;
+    return {h * 220 / 84, h};
+}
+QSize SevenSegmentDisplay::minimumSizeHint() const
+{
+    const int h = fontMetrics().height() * 5;
+    return {h * 160 / 84, h};
+}
 
 QRectF SevenSegmentDisplay::digitCell(int position) const
 {
@@ -96,6 +143,41 @@ void SevenSegmentDisplay::paintEvent(QPaintEvent *)
             p.setBrush((m_masks[position] >> s) & 1 ? lit : unlit);
             p.drawPolygon(segmentShape(position, s));
         }
+    if (m_editable && hasFocus()) {
+        // The keyboard's segment, framed around it so its own colour stays visible.
+        const QRectF box = segmentShape(m_current / kSegments, m_current % kSegments).boundingRect();
+        const qreal pad = qMin(box.width(), box.height()) * 0.35;
+        p.setBrush(Qt::NoBrush);
+        p.setPen(QPen(palette().color(QPalette::Highlight), 1.5, Qt::DashLine));
+        p.drawRoundedRect(box.adjusted(-pad, -pad, pad, pad), 2, 2);
+    }
+}
+
+void SevenSegmentDisplay::toggle(int position, int segmentBit)
+{
+    m_masks[position] ^= static_cast<std::uint8_t>(1u << segmentBit);
+    updateDescription();
+    update();
+    emit segmentsChanged(m_masks);
+}
+
+void SevenSegmentDisplay::keyPressEvent(QKeyEvent *event)
+{
+    if (!m_editable) {
+        QWidget::keyPressEvent(event);
+        return;
+    }
+    constexpr int kAll = kDigits * kSegments;
+    switch (event->key()) {
+    case Qt::Key_Right: m_current = (m_current + 1) % kAll; break;
+    case Qt::Key_Left: m_current = (m_current + kAll - 1) % kAll; break;
+    // Up and Down jump a whole digit, keeping the segment.
+    case Qt::Key_Down: m_current = (m_current + kSegments) % kAll; break;
+    case Qt::Key_Up: m_current = (m_current + kAll - kSegments) % kAll; break;
+    case Qt::Key_Space: toggle(m_current / kSegments, m_current % kSegments); return;
+    default: QWidget::keyPressEvent(event); return;
+    }
+    update();
 }
 
 void SevenSegmentDisplay::mousePressEvent(QMouseEvent *event)
@@ -125,7 +207,6 @@ void SevenSegmentDisplay::mousePressEvent(QMouseEvent *event)
         }
     if (bestPosition < 0)
         return;
-    m_masks[bestPosition] ^= static_cast<std::uint8_t>(1u << bestSegment);
-    update();
-    emit segmentsChanged(m_masks);
+    m_current = bestPosition * kSegments + bestSegment;
+    toggle(bestPosition, bestSegment);
 }

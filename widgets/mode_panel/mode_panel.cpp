@@ -6,6 +6,7 @@
 #include "display_palette.h"
 
 #include <QComboBox>
+#include <QEvent>
 #include <QGridLayout>
 #include <QHBoxLayout>
 #include <QLabel>
@@ -37,7 +38,7 @@ QString safetyReason(const oi::SensorSnapshot &s)
         reasons << ModePanel::tr("wheel drop");
     if (s.chargingSource(oi::ChargingSource::HomeBase) || s.chargingSource(oi::ChargingSource::InternalCharger))
         reasons << ModePanel::tr("charger");
-    return reasons.isEmpty() ? ModePanel::tr("a safety condition") : reasons.join(", ");
+    return reasons.isEmpty() ? ModePanel::tr("a safety condition") : reasons.join(ModePanel::tr(", "));
 }
 
 } // namespace
@@ -65,32 +66,31 @@ ModePanel::ModePanel(QWidget *parent) : QWidget(parent)
 
     auto *modes = new QHBoxLayout;
     using C = oi::Command;
-    for (auto [name, text, command] : {std::tuple{"start", tr("Start"), C::Start},
-                                       std::tuple{"passive", tr("Passive"), C::Start},
-                                       std::tuple{"safe", tr("Safe"), C::Safe},
-                                       std::tuple{"full", tr("Full"), C::Full},
-                                       std::tuple{"stop", tr("Stop"), C::Stop}})
-        modes->addWidget(addButton(name, text, command));
+    for (auto [name, command] : {std::pair{"start", C::Start}, std::pair{"passive", C::Start},
+                                 std::pair{"safe", C::Safe}, std::pair{"full", C::Full},
+                                 std::pair{"stop", C::Stop}})
+        modes->addWidget(addButton(name, command));
 
     auto *system = new QHBoxLayout;
-    system->addWidget(addButton("reset", tr("Reset"), C::Reset));
-    system->addWidget(addButton("power", tr("Power off"), C::Power));
+    system->addWidget(addButton("reset", C::Reset));
+    system->addWidget(addButton("power", C::Power));
     system->addStretch();
 
     auto *cleaning = new QGridLayout;
-    cleaning->addWidget(addButton("clean", tr("Clean"), C::Clean), 0, 0);
-    cleaning->addWidget(addButton("spot", tr("Spot"), C::Spot), 0, 1);
-    cleaning->addWidget(addButton("max", tr("Max"), C::Max), 0, 2);
-    cleaning->addWidget(addButton("seek-dock", tr("Seek Dock"), C::SeekDock), 0, 3);
-    cleaning->addWidget(addButton("cover", tr("Cover"), C::Cover), 1, 0);
-    cleaning->addWidget(addButton("cover-and-dock", tr("Cover and Dock"), C::CoverAndDock), 1, 1);
+    cleaning->addWidget(addButton("clean", C::Clean), 0, 0);
+    cleaning->addWidget(addButton("spot", C::Spot), 0, 1);
+    cleaning->addWidget(addButton("max", C::Max), 0, 2);
+    cleaning->addWidget(addButton("seek-dock", C::SeekDock), 0, 3);
+    cleaning->addWidget(addButton("cover", C::Cover), 1, 0);
+    cleaning->addWidget(addButton("cover-and-dock", C::CoverAndDock), 1, 1);
     m_demo = new QComboBox(this);
     m_demo->setObjectName("demoChoice");
     for (int demo = demos::kAbort; demo <= demos::kLast; ++demo)
-        m_demo->addItem(QString("%1  %2").arg(demo).arg(demos::name(demo)), demo);
+        m_demo->addItem(QString(), demo);
     m_demo->setCurrentIndex(1);
+    m_demo->setSizeAdjustPolicy(QComboBox::AdjustToContents); // names change with the language
     cleaning->addWidget(m_demo, 1, 2);
-    cleaning->addWidget(addButton("demo", tr("Demo"), C::Demo), 1, 3);
+    cleaning->addWidget(addButton("demo", C::Demo), 1, 3);
 
     auto *layout = new QVBoxLayout(this);
     layout->addWidget(m_modeLabel);
@@ -101,13 +101,43 @@ ModePanel::ModePanel(QWidget *parent) : QWidget(parent)
     layout->addLayout(cleaning);
     layout->addStretch();
 
-    showMode(std::nullopt);
-    refreshButtons();
+    // Created row by row, so Tab already follows the layout.
+    retranslateUi();
 }
 
-QPushButton *ModePanel::addButton(const QString &name, const QString &text, oi::Command command)
+void ModePanel::retranslateUi()
 {
-    auto *b = new QPushButton(text, this);
+    const std::pair<const char *, QString> texts[] = {
+        {"start", tr("Start")},       {"passive", tr("Passive")}, {"safe", tr("Safe")},
+        {"full", tr("Full")},         {"stop", tr("Stop")},       {"reset", tr("Reset")},
+        {"power", tr("Power off")},   {"clean", tr("Clean")},     {"spot", tr("Spot")},
+        {"max", tr("Max")},           {"seek-dock", tr("Seek Dock")}, {"cover", tr("Cover")},
+        {"cover-and-dock", tr("Cover and Dock")}, {"demo", tr("Demo")}};
+    for (const auto &[name, text] : texts)
+        m_buttons.value(name)->setText(text);
+    for (int i = 0; i < m_demo->count(); ++i) {
+        const int demo = m_demo->itemData(i).toInt();
+        m_demo->setItemText(i, QStringLiteral("%1  %2").arg(demo).arg(demos::name(demo)));
+    }
+    m_demo->setToolTip(tr("Demo to run"));
+    m_demo->setAccessibleName(tr("Demo"));
+    showMode(m_mode);
+    refreshButtons();
+    if (m_safetyDropFrame)
+        m_safetyLabel->setText(safetyText(*m_safetyDropFrame));
+    setFirmware(m_firmware);
+}
+
+void ModePanel::changeEvent(QEvent *e)
+{
+    if (e->type() == QEvent::LanguageChange)
+        retranslateUi();
+    QWidget::changeEvent(e);
+}
+
+QPushButton *ModePanel::addButton(const QString &name, oi::Command command)
+{
+    auto *b = new QPushButton(this);
     b->setObjectName(name);
     m_buttons.insert(name, b);
     m_commands.insert(b, command);
@@ -135,6 +165,7 @@ void ModePanel::refreshButtons()
         const oi::CommandSpec &spec = oi::commandSpec(it.value());
         const bool available = m_profile->has(it.value());
         b->setEnabled(available);
+        // The document's command title stays as printed: it names the protocol command.
         const QString opcode = tr("%1 (opcode %2)").arg(QString::fromUtf8(spec.title.data(), spec.title.size()))
                                    .arg(spec.opcode);
         b->setToolTip(available ? opcode
@@ -156,6 +187,7 @@ void ModePanel::request(oi::Command command)
     // Commands that put the robot in Passive on purpose: not a safety drop.
     m_passiveRequested = command != oi::Command::Safe && command != oi::Command::Full;
     if (!m_passiveRequested) {
+        m_safetyDropFrame.reset();
         m_safetyLabel->clear();
         m_safetyLabel->setVisible(false);
     }
@@ -168,8 +200,8 @@ void ModePanel::setSnapshot(const oi::SensorSnapshot &snapshot)
         return;
     const oi::OiMode mode = snapshot.oiMode();
     if (m_mode == oi::OiMode::Safe && mode == oi::OiMode::Passive && !m_passiveRequested) {
-        m_safetyLabel->setText(tr("The robot left Safe mode by itself (%1) and is in Passive mode.")
-                                   .arg(safetyReason(snapshot)));
+        m_safetyDropFrame = snapshot;
+        m_safetyLabel->setText(safetyText(snapshot));
         m_safetyLabel->setVisible(true);
     }
     if (m_mode != mode)
@@ -202,7 +234,13 @@ std::optional<oi::OiMode> ModePanel::highlightedMode() const { return m_mode; }
 
 QString ModePanel::safetyMessage() const { return m_safetyLabel->isHidden() ? QString() : m_safetyLabel->text(); }
 
+QString ModePanel::safetyText(const oi::SensorSnapshot &snapshot) const
+{
+    return tr("The robot left Safe mode by itself (%1) and is in Passive mode.").arg(safetyReason(snapshot));
+}
+
 void ModePanel::setFirmware(const QString &release)
 {
+    m_firmware = release;
     m_firmwareLabel->setText(release.isEmpty() ? QString() : tr("Firmware: %1").arg(release));
 }

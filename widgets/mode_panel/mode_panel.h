@@ -44,8 +44,13 @@ public:
 signals:
     void sendRequested(const QByteArray &bytes);
 
+protected:
+    void changeEvent(QEvent *e) override;
+
 private:
-    QPushButton *addButton(const QString &name, const QString &text, oi::Command command);
+    void retranslateUi();
+    QString safetyText(const oi::SensorSnapshot &snapshot) const;
+    QPushButton *addButton(const QString &name, oi::Command command);
     void refreshButtons();
     void showMode(std::optional<oi::OiMode> mode);
 
@@ -58,5 +63,7 @@ private:
     QLabel *m_safetyLabel = nullptr;
     std::optional<oi::OiMode> m_mode;
     bool m_passiveRequested = false;
+    QString m_firmware;
+    std::optional<oi::SensorSnapshot> m_safetyDropFrame; // the frame that explains the drop shown
     std::function<bool(QWidget *)> m_confirmFull;
 };

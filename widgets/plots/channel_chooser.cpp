@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "channel_chooser.h"
 
+#include "oi_text.h"
+
 #include <QAction>
 #include <QEvent>
 #include <QMenu>
@@ -9,11 +11,6 @@
 #include <algorithm>
 
 namespace {
-
-QString fromView(std::string_view text)
-{
-    return QString::fromUtf8(text.data(), qsizetype(text.size()));
-}
 
 enum class Kind { BumpsCliffs, Battery, Motion, LightBumpers, Motors, CargoBay, IrButtonsMode, Unused };
 
@@ -40,17 +37,18 @@ Kind kindOf(const oi::PacketInfo &info)
     }
 }
 
+// Plain titles; the menu doubles any '&' itself.
 QString titleOf(Kind kind)
 {
     switch (kind) {
-    case Kind::BumpsCliffs: return QStringLiteral("Bumps && cliffs");
-    case Kind::Battery: return QStringLiteral("Battery");
-    case Kind::Motion: return QStringLiteral("Motion");
-    case Kind::LightBumpers: return QStringLiteral("Light bumpers");
-    case Kind::Motors: return QStringLiteral("Motors && dirt");
-    case Kind::CargoBay: return QStringLiteral("Cargo bay");
-    case Kind::IrButtonsMode: return QStringLiteral("IR, buttons && mode");
-    case Kind::Unused: return QStringLiteral("Unused");
+    case Kind::BumpsCliffs: return ChannelChooser::tr("Bumps & cliffs");
+    case Kind::Battery: return ChannelChooser::tr("Battery");
+    case Kind::Motion: return ChannelChooser::tr("Motion");
+    case Kind::LightBumpers: return ChannelChooser::tr("Light bumpers");
+    case Kind::Motors: return ChannelChooser::tr("Motors & dirt");
+    case Kind::CargoBay: return ChannelChooser::tr("Cargo bay");
+    case Kind::IrButtonsMode: return ChannelChooser::tr("IR, buttons & mode");
+    case Kind::Unused: return ChannelChooser::tr("Unused");
     }
     return {};
 }
@@ -64,8 +62,7 @@ std::vector<ChannelChooser::ChannelGroup> ChannelChooser::groups(const oi::Robot
     std::vector<ChannelGroup> out;
     for (Kind kind : order) {
         ChannelGroup g;
-        // Menu titles use && for a literal ampersand; the group title does not.
-        g.title = titleOf(kind).replace(QStringLiteral("&&"), QStringLiteral("&"));
+        g.title = titleOf(kind);
         for (const oi::PacketInfo &info : profile.packets())
             if (kindOf(info) == kind)
                 g.ids.push_back(info.id);
@@ -78,8 +75,7 @@ std::vector<ChannelChooser::ChannelGroup> ChannelChooser::groups(const oi::Robot
 
 QString ChannelChooser::channelLabel(const oi::PacketInfo &info)
 {
-    const QString name = fromView(info.name);
-    return info.unit.empty() ? name : QStringLiteral("%1 [%2]").arg(name, fromView(info.unit));
+    return oitext::packetLabel(info);
 }
 
 ChannelChooser::ChannelChooser(QWidget *parent)
@@ -87,6 +83,14 @@ ChannelChooser::ChannelChooser(QWidget *parent)
 {
     setMenu(m_menu);
     rebuildMenu();
+}
+
+void ChannelChooser::changeEvent(QEvent *event)
+{
+    // The menu is built from translated names; build it again in the new language.
+    if (event->type() == QEvent::LanguageChange)
+        rebuildMenu();
+    QPushButton::changeEvent(event);
 }
 
 void ChannelChooser::setProfile(const oi::RobotProfile &profile)
@@ -170,7 +174,7 @@ void ChannelChooser::updateChecks()
         setText(tr("Choose channels"));
         setToolTip(tr("Choose the sensor packets this plot shows"));
     } else {
-        setText(tr("Channels (%1)").arg(names.size()));
+        setText(tr("Channels (%n)", nullptr, int(names.size())));
         setToolTip(names.join(QLatin1Char('\n')));
     }
 }

@@ -46,6 +46,7 @@ signals:
     void channelToggled(int packetId, bool on);
 
 protected:
+    void changeEvent(QEvent *event) override;
     bool eventFilter(QObject *watched, QEvent *event) override;
 
 private:

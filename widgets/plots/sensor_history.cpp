@@ -2,6 +2,7 @@
 #include "sensor_history.h"
 
 #include <QByteArray>
+#include <QCoreApplication>
 #include <QSaveFile>
 
 #include <algorithm>
@@ -198,19 +199,19 @@ bool SensorHistory::exportCsv(const QString &path, const std::vector<int> &chann
         return false;
     };
     if (channels.empty())
-        return fail(QStringLiteral("No channels to export."));
+        return fail(QCoreApplication::translate("SensorHistory", "No channels to export."));
     if (std::isnan(t0) || std::isnan(t1))
-        return fail(QStringLiteral("The time range to export is not a number."));
+        return fail(QCoreApplication::translate("SensorHistory", "The time range to export is not a number."));
     for (int id : channels)
         if (!isChannel(id))
-            return fail(QStringLiteral("Packet %1 is not a sensor packet of the %2.")
+            return fail(QCoreApplication::translate("SensorHistory", "Packet %1 is not a sensor packet of the %2.")
                             .arg(id)
                             .arg(QString::fromUtf8(m_profile->name.data(),
                                                    qsizetype(m_profile->name.size()))));
 
     QSaveFile file(path);
     if (!file.open(QIODevice::WriteOnly))
-        return fail(QStringLiteral("Cannot write %1: %2").arg(path, file.errorString()));
+        return fail(QCoreApplication::translate("SensorHistory", "Cannot write %1: %2").arg(path, file.errorString()));
 
     QByteArray buffer;
     buffer.reserve(kWriteChunk + 1024);
@@ -264,13 +265,13 @@ bool SensorHistory::exportCsv(const QString &path, const std::vector<int> &chann
         buffer += '\n';
         if (buffer.size() >= kWriteChunk) {
             if (file.write(buffer) != buffer.size())
-                return fail(QStringLiteral("Cannot write %1: %2").arg(path, file.errorString()));
+                return fail(QCoreApplication::translate("SensorHistory", "Cannot write %1: %2").arg(path, file.errorString()));
             buffer.clear();
         }
     }
     if (file.write(buffer) != buffer.size())
-        return fail(QStringLiteral("Cannot write %1: %2").arg(path, file.errorString()));
+        return fail(QCoreApplication::translate("SensorHistory", "Cannot write %1: %2").arg(path, file.errorString()));
     if (!file.commit())
-        return fail(QStringLiteral("Cannot save %1: %2").arg(path, file.errorString()));
+        return fail(QCoreApplication::translate("SensorHistory", "Cannot save %1: %2").arg(path, file.errorString()));
     return true;
 }

@@ -3,12 +3,14 @@
 
 #include "channel_chooser.h"
 #include "display_palette.h"
+#include "oi_text.h"
 #include "sensor_history.h"
 
 #include <QComboBox>
 #include <QEvent>
 #include <QFileDialog>
 #include <QHBoxLayout>
+#include <QKeyEvent>
 #include <QLabel>
 #include <QMenu>
 #include <QMessageBox>
@@ -40,16 +42,11 @@ const double kWindowChoices[] = {10, 20, 30, 60, 120, 300, 600};
 constexpr double kMinTimeSpan = 0.1;
 constexpr double kMaxTimeSpan = 4 * 3600.0;
 
-QString fromView(std::string_view text)
-{
-    return QString::fromUtf8(text.data(), qsizetype(text.size()));
-}
-
 QString windowLabel(double seconds)
 {
     if (seconds >= 60 && std::fmod(seconds, 60.0) == 0)
-        return QObject::tr("%1 min").arg(seconds / 60);
-    return QObject::tr("%1 s").arg(seconds);
+        return SensorPlots::tr("%1 min").arg(seconds / 60);
+    return SensorPlots::tr("%1 s").arg(seconds);
 }
 
 // Bit fields and states hold their value until the next sample; drawing
@@ -87,42 +84,43 @@ struct SensorPlots::Panel {
 SensorPlots::SensorPlots(QWidget *parent)
     : QWidget(parent), m_profile(&oi::profile(oi::ProfileId::Create2))
 {
-    setFocusPolicy(Qt::StrongFocus);
+    // Clicks give the panel focus for Space; Tab stops only on its controls.
+    setFocusPolicy(Qt::ClickFocus);
 
     m_pauseButton = new QPushButton(this);
+    m_pauseButton->setObjectName(QStringLiteral("pause"));
     m_pauseButton->setCheckable(true);
-    m_pauseButton->setToolTip(tr("Pause or resume following the newest sample (Space)"));
     connect(m_pauseButton, &QPushButton::toggled, this, &SensorPlots::setPaused);
 
     m_windowBox = new QComboBox(this);
+    m_windowBox->setObjectName(QStringLiteral("window"));
     for (double s : kWindowChoices)
         m_windowBox->addItem(windowLabel(s), s);
     m_windowBox->setCurrentIndex(m_windowBox->findData(m_windowSeconds));
-    m_windowBox->setToolTip(tr("How much time the plots show"));
     connect(m_windowBox, &QComboBox::activated, this,
             [this](int index) { setWindowSeconds(m_windowBox->itemData(index).toDouble()); });
-    auto *windowLabelWidget = new QLabel(tr("Window"), this);
-    windowLabelWidget->setBuddy(m_windowBox);
+    m_windowLabel = new QLabel(this);
+    m_windowLabel->setBuddy(m_windowBox);
 
     m_status = new QLabel(this);
     m_status->setMargin(3);
 
-    m_addButton = new QPushButton(tr("Add plot"), this);
-    m_addButton->setToolTip(tr("Add another plot below the others"));
+    m_addButton = new QPushButton(this);
+    m_addButton->setObjectName(QStringLiteral("addPlot"));
     connect(m_addButton, &QPushButton::clicked, this, [this] { addPlot(); });
 
-    m_exportButton = new QPushButton(tr("Export CSV"), this);
+    m_exportButton = new QPushButton(this);
+    m_exportButton->setObjectName(QStringLiteral("export"));
     auto *exportMenu = new QMenu(m_exportButton);
-    exportMenu->addAction(tr("Visible range…"), this, [this] { exportInteractively(true); });
-    exportMenu->addAction(tr("Whole history…"), this, [this] { exportInteractively(false); });
+    m_exportVisible = exportMenu->addAction(QString(), this, [this] { exportInteractively(true); });
+    m_exportAll = exportMenu->addAction(QString(), this, [this] { exportInteractively(false); });
     m_exportButton->setMenu(exportMenu);
-    m_exportButton->setToolTip(tr("Write the plotted channels to a CSV file"));
 
     auto *bar = new QHBoxLayout;
     bar->setContentsMargins(0, 0, 0, 0);
     bar->addWidget(m_pauseButton);
     bar->addSpacing(8);
-    bar->addWidget(windowLabelWidget);
+    bar->addWidget(m_windowLabel);
     bar->addWidget(m_windowBox);
     bar->addSpacing(8);
     bar->addWidget(m_status);
@@ -147,7 +145,31 @@ SensorPlots::SensorPlots(QWidget *parent)
     }
 
     addPlot();
+    retranslateUi();
+}
+
+void SensorPlots::retranslateUi()
+{
+    m_pauseButton->setToolTip(tr("Pause or resume following the newest sample (Space)"));
+    for (int i = 0; i < m_windowBox->count(); ++i)
+        m_windowBox->setItemText(i, windowLabel(m_windowBox->itemData(i).toDouble()));
+    m_windowBox->setToolTip(tr("How much time the plots show"));
+    m_windowLabel->setText(tr("&Window"));
+    m_addButton->setText(tr("Add plot"));
+    m_addButton->setToolTip(tr("Add another plot below the others"));
+    m_exportButton->setText(tr("Export CSV"));
+    m_exportButton->setToolTip(tr("Write the plotted channels to a CSV file"));
+    m_exportVisible->setText(tr("Visible range…"));
+    m_exportAll->setText(tr("Whole history…"));
+    for (auto &panel : m_panels) {
+        panel->remove->setToolTip(tr("Remove this plot"));
+        panel->remove->setAccessibleName(tr("Remove this plot"));
+        panel->plot->setAccessibleName(tr("Sensor plot"));
+        rebuildGraphs(*panel); // graph names, legend and hint
+    }
+    updateAxisLabels();
     applyPaused();
+    refresh();
 }
 
 SensorPlots::~SensorPlots() = default;
@@ -196,11 +218,14 @@ int SensorPlots::addPlot(const std::vector<int> &channels)
     p->remove->setText(QStringLiteral("\u2715"));
     p->remove->setAutoRaise(true);
     p->remove->setToolTip(tr("Remove this plot"));
+    p->remove->setAccessibleName(tr("Remove this plot"));
     connect(p->remove, &QToolButton::clicked, this, [this, p] { removePlot(indexOf(p)); });
 
     p->plot = new QCustomPlot(p->frame);
     p->plot->setMinimumHeight(110);
-    p->plot->setFocusPolicy(Qt::ClickFocus);
+    // Reachable with Tab: paused, the arrow keys pan and +/- zoom.
+    p->plot->setFocusPolicy(Qt::StrongFocus);
+    p->plot->setAccessibleName(tr("Sensor plot"));
     p->plot->setNoAntialiasingOnDrag(true);
     // Scrolling redraws the axes 30 times a second; crisp pixel lines for the
     // frame cost far less than antialiased ones and look the same.
@@ -569,6 +594,7 @@ void SensorPlots::updateHint(Panel &panel)
     }
     panel.hint->setText(hint);
     panel.hint->setVisible(!hint.isEmpty());
+    updatePlotDescription(panel);
 }
 
 void SensorPlots::updateLegend(Panel &panel)
@@ -579,6 +605,19 @@ void SensorPlots::updateLegend(Panel &panel)
                      .arg(kSeriesColors[i].name(),
                           ChannelChooser::channelLabel(*m_profile->packet(panel.channels[i])).toHtmlEscaped());
     panel.legend->setText(items.join(QStringLiteral(" &nbsp; ")));
+    updatePlotDescription(panel);
+}
+
+void SensorPlots::updatePlotDescription(Panel &panel)
+{
+    QStringList names;
+    for (int id : panel.channels)
+        names << ChannelChooser::channelLabel(*m_profile->packet(id));
+    QString text = names.isEmpty() ? tr("No channels chosen") : tr("Channels: %1").arg(names.join(tr(", ")));
+    if (panel.hint->visible() && !panel.hint->text().isEmpty())
+        text = tr("%1. %2").arg(text, panel.hint->text());
+    if (panel.plot->accessibleDescription() != text)
+        panel.plot->setAccessibleDescription(text);
 }
 
 void SensorPlots::updateAxisLabels()
@@ -590,9 +629,9 @@ void SensorPlots::updateAxisLabels()
         // The value axis carries a unit only where every channel shares it.
         QString unit;
         if (!panel.channels.empty()) {
-            unit = fromView(m_profile->packet(panel.channels.front())->unit);
+            unit = oitext::fromView(m_profile->packet(panel.channels.front())->unit);
             for (int id : panel.channels)
-                if (fromView(m_profile->packet(id)->unit) != unit)
+                if (oitext::fromView(m_profile->packet(id)->unit) != unit)
                     unit.clear();
         }
         panel.plot->yAxis->setLabel(unit);
@@ -659,7 +698,7 @@ void SensorPlots::applyPaused()
     m_pauseButton->setText(m_paused ? tr("Resume") : tr("Pause"));
     const display::State state = m_paused ? display::State::Warning : display::State::Active;
     const QPalette pal = palette();
-    m_status->setText(m_paused ? tr("Paused: drag to pan, wheel to zoom, Space resumes")
+    m_status->setText(m_paused ? tr("Paused: drag or arrows pan, wheel or +/- zoom, Space resumes")
                                : tr("Live"));
     m_status->setStyleSheet(QStringLiteral("QLabel { background: %1; color: %2; border-radius: 3px; }")
                                 .arg(display::stateColor(state, pal).name(),
@@ -693,9 +732,9 @@ void SensorPlots::showTracer(Panel &panel, const QPointF &mouse)
             timeShown = true;
         }
         const oi::PacketInfo *info = m_profile->packet(feed.channel);
-        QString line = QStringLiteral("%1: %2").arg(fromView(info->name)).arg(qRound64(feed.tracer->position->value()));
+        QString line = tr("%1: %2").arg(oitext::packetName(*info)).arg(qRound64(feed.tracer->position->value()));
         if (!info->unit.empty())
-            line += QLatin1Char(' ') + fromView(info->unit);
+            line += QLatin1Char(' ') + oitext::fromView(info->unit);
         lines << QStringLiteral("<span style=\"color:%1\">&#9632;</span> %2")
                      .arg(kSeriesColors[i].name(), line.toHtmlEscaped());
     }
@@ -804,6 +843,26 @@ void SensorPlots::exportInteractively(bool visibleOnly)
 
 bool SensorPlots::eventFilter(QObject *watched, QEvent *event)
 {
+    if (event->type() == QEvent::KeyPress && m_paused) {
+        // The keyboard's pan and zoom, as drag and wheel do with the mouse.
+        const int key = static_cast<QKeyEvent *>(event)->key();
+        const double span = m_timeRange.size();
+        const double centre = m_timeRange.center();
+        QCPRange range = m_timeRange;
+        if (key == Qt::Key_Left || key == Qt::Key_Right) {
+            const double step = (key == Qt::Key_Left ? -0.1 : 0.1) * span;
+            range = QCPRange(m_timeRange.lower + step, m_timeRange.upper + step);
+        } else if (key == Qt::Key_Plus || key == Qt::Key_Equal) {
+            range = QCPRange(centre - span / 4, centre + span / 4);
+        } else if (key == Qt::Key_Minus) {
+            range = QCPRange(centre - span, centre + span);
+        } else {
+            return QWidget::eventFilter(watched, event);
+        }
+        syncTimeRange(range, nullptr);
+        refresh();
+        return true;
+    }
     if (event->type() == QEvent::Leave)
         for (auto &panel : m_panels)
             if (panel->plot == watched)
@@ -814,6 +873,8 @@ bool SensorPlots::eventFilter(QObject *watched, QEvent *event)
 void SensorPlots::changeEvent(QEvent *event)
 {
     QWidget::changeEvent(event);
+    if (event->type() == QEvent::LanguageChange)
+        retranslateUi();
     if (event->type() == QEvent::PaletteChange || event->type() == QEvent::FontChange) {
         for (auto &panel : m_panels)
             applyTheme(*panel);

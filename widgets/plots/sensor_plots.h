@@ -12,6 +12,7 @@
 #include <vector>
 
 class ChannelChooser;
+class QAction;
 class QComboBox;
 class QLabel;
 class QPushButton;
@@ -23,7 +24,8 @@ class SensorHistory;
 // Each plot shows the channels (sensor packets) chosen for it. Live, the time
 // axis follows the newest sample over a window of 10 s .. 10 min. Paused
 // (Space or Ctrl+Space, or the Pause button), the axis stays put and the user
-// can drag and wheel-zoom it and read values with a tracer under the mouse.
+// can drag and wheel-zoom it (or, on a focused plot, pan with the arrow keys
+// and zoom with +/-) and read values with a tracer under the mouse.
 // The visible range or the whole history exports to CSV.
 //
 // The widget only reads the history; it redraws in refresh(), which the
@@ -94,12 +96,15 @@ private:
     struct GraphFeed;
     struct Panel;
 
+    void retranslateUi();
     void rebuildGraphs(Panel &panel);
     bool updateFeed(GraphFeed &feed, double from, double to);
     void rescaleValues(Panel &panel);
     void applyTheme(Panel &panel);
     void updateHint(Panel &panel);
     void updateLegend(Panel &panel);
+    // The plot's channels and hint in words, for screen readers.
+    void updatePlotDescription(Panel &panel);
     void updateAxisLabels();
     void applyPaused();
     void syncTimeRange(const QCPRange &range, const QCustomPlot *source);
@@ -115,8 +120,11 @@ private:
     QSplitter *m_splitter;
     QPushButton *m_pauseButton;
     QComboBox *m_windowBox;
+    QLabel *m_windowLabel;
     QPushButton *m_addButton;
     QPushButton *m_exportButton;
+    QAction *m_exportVisible;
+    QAction *m_exportAll;
     QLabel *m_status;
     bool m_paused = false;
     double m_windowSeconds = 60.0;

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "robot_diagram.h"
 
+#include "oi_text.h"
+
 #include <QEvent>
 #include <QFontMetricsF>
 #include <QHelpEvent>
@@ -130,6 +132,57 @@ RobotDiagram::RobotDiagram(QWidget *parent)
 {
     setAttribute(Qt::WA_OpaquePaintEvent);
     setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Expanding);
+    retranslateUi();
+}
+
+void RobotDiagram::retranslateUi()
+{
+    setAccessibleName(tr("Robot sensor diagram"));
+    updateDescription();
+    update();
+}
+
+void RobotDiagram::updateDescription()
+{
+    const QString text = stateSummary();
+    if (accessibleDescription() != text)
+        setAccessibleDescription(text);
+}
+
+QString RobotDiagram::stateSummary() const
+{
+    const oi::SensorSnapshot &s = m_snapshot;
+    QStringList parts;
+    if (m_stale)
+        parts << tr("Data is stale");
+    if (s.bumpLeft())
+        parts << tr("Bump left");
+    if (s.bumpRight())
+        parts << tr("Bump right");
+    if (s.wheelDropLeft())
+        parts << tr("Wheel drop left");
+    if (s.wheelDropRight())
+        parts << tr("Wheel drop right");
+    if (isCreate1() && s.wheelDropCaster())
+        parts << tr("Caster wheel drop");
+    const QString cliffNames[] = {tr("Cliff left"), tr("Cliff front left"), tr("Cliff front right"),
+                                  tr("Cliff right")};
+    for (oi::CliffSensor sensor : kCliffs)
+        if (s.cliff(sensor))
+            parts << cliffNames[static_cast<int>(sensor)];
+    if (s.wall())
+        parts << tr("Wall");
+    if (!isCreate1() && s.has(45))
+        for (const oi::BitMeaning &b : m_profile->bits(45))
+            if (s.raw(45) & b.mask)
+                parts << tr("Light bumper %1").arg(oitext::bitName(b));
+    for (const QList<Chip> &row : chipRows())
+        for (const Chip &chip : row)
+            if (chip.state != State::Idle)
+                parts << tr("%1: %2").arg(chip.caption, chip.value);
+    if (parts.isEmpty())
+        return s.packetCount() == 0 ? tr("No sensor data") : tr("Nothing detected");
+    return parts.join(tr("; "));
 }
 
 void RobotDiagram::setProfile(const oi::RobotProfile &profile)
@@ -138,12 +191,14 @@ void RobotDiagram::setProfile(const oi::RobotProfile &profile)
         return;
     m_profile = &profile;
     m_snapshot = oi::SensorSnapshot(profile);
+    updateDescription();
     update();
 }
 
 void RobotDiagram::setSnapshot(const oi::SensorSnapshot &snapshot)
 {
     m_snapshot = snapshot;
+    updateDescription();
     update();
 }
 
@@ -152,6 +207,7 @@ void RobotDiagram::setStale(bool stale)
     if (m_stale == stale)
         return;
     m_stale = stale;
+    updateDescription();
     update();
 }
 
@@ -271,6 +327,18 @@ QFont RobotDiagram::sceneFont(qreal pixelSize, bool bold) const
     return f;
 }
 
+QFont RobotDiagram::fittingFont(qreal pixelSize, const QString &text, qreal width) const
+{
+    // Translated words differ in length; shrink to fit rather than run out of the box.
+    QFont f = sceneFont(pixelSize);
+    qreal widest = 0;
+    for (const QString &line : text.split('\n'))
+        widest = std::max(widest, QFontMetricsF(f).horizontalAdvance(line));
+    if (widest > width)
+        f = sceneFont(std::max(pixelSize * 0.6, pixelSize * width / widest));
+    return f;
+}
+
 QList<QList<RobotDiagram::Chip>> RobotDiagram::chipRows() const
 {
     const oi::SensorSnapshot &s = m_snapshot;
@@ -280,7 +348,7 @@ QList<QList<RobotDiagram::Chip>> RobotDiagram::chipRows() const
         if (!s.has(packetId))
             return Chip{caption, none, State::Idle};
         const bool received = ir.kind != oi::IrCharacter::Kind::None;
-        return Chip{caption, QString::fromStdString(ir.name()),
+        return Chip{caption, oitext::infraredName(ir),
                     received ? State::Active : State::Idle};
     };
 
@@ -288,7 +356,7 @@ QList<QList<RobotDiagram::Chip>> RobotDiagram::chipRows() const
         QStringList names;
         for (const oi::BitMeaning &b : m_profile->bits(packetId))
             if (s.raw(packetId) & b.mask)
-                names << QString::fromUtf8(b.name.data(), qsizetype(b.name.size()));
+                names << oitext::bitName(b);
         return names;
     };
 
@@ -344,13 +412,15 @@ QStringList RobotDiagram::statusTexts() const
     QStringList out;
     for (const QList<Chip> &row : chipRows())
         for (const Chip &chip : row)
-            out << chip.caption + ": " + chip.value;
+            out << tr("%1: %2").arg(chip.caption, chip.value);
     return out;
 }
 
 void RobotDiagram::changeEvent(QEvent *event)
 {
-    if (event->type() == QEvent::PaletteChange || event->type() == QEvent::FontChange)
+    if (event->type() == QEvent::LanguageChange)
+        retranslateUi();
+    else if (event->type() == QEvent::PaletteChange || event->type() == QEvent::FontChange)
         update();
     QWidget::changeEvent(event);
 }
@@ -470,7 +540,7 @@ void RobotDiagram::paintWheels(QPainter &p) const
     const QColor outline = inkColour();
     const QColor tyre = m_stale ? fill(State::Idle).darker(130)
                                 : (isDark(palette()) ? QColor(125, 129, 136) : QColor(55, 57, 60));
-    p.setFont(sceneFont(30));
+    p.setFont(fittingFont(30, tr("DROP"), 100));
     auto wheel = [&](const QRectF &r, bool dropped, bool left) {
         p.setPen(QPen(outline, 3));
         p.setBrush(dropped ? fill(State::Alert) : tyre);
@@ -538,11 +608,13 @@ void RobotDiagram::paintWall(QPainter &p) const
     p.setBrush(fill(wall ? State::Warning : State::Idle));
     p.drawRoundedRect(kWall, 5, 5);
 
-    p.setFont(sceneFont(28));
+    // The label gets the room up to the widget's right edge, at most 150 units.
+    const qreal room = std::min<qreal>(150, width() / sceneScale() / 2 - kWall.right() - 14);
+    const QString label = tr("WALL") + '\n' + signalText(m_snapshot, 27);
+    p.setFont(fittingFont(28, label, room));
     p.setPen(wall ? fill(State::Warning) : inkColour());
-    const QRectF text(kWall.right() + 10, kWall.top(), 150, kWall.height());
-    p.drawText(text, Qt::AlignLeft | Qt::AlignVCenter,
-               tr("WALL") + '\n' + signalText(m_snapshot, 27));
+    const QRectF text(kWall.right() + 10, kWall.top(), room, kWall.height());
+    p.drawText(text, Qt::AlignLeft | Qt::AlignVCenter, label);
 }
 
 qreal RobotDiagram::chipRowHeight() const
@@ -579,7 +651,7 @@ bool RobotDiagram::event(QEvent *event)
         const QPointF at = sceneToWidget().inverted().map(QPointF(help->pos()));
         for (const auto &[r, chip] : placedChips()) {
             if (r.contains(at)) {
-                QToolTip::showText(help->globalPos(), chip.caption + ": " + chip.value, this);
+                QToolTip::showText(help->globalPos(), tr("%1: %2").arg(chip.caption, chip.value), this);
                 return true;
             }
         }
@@ -634,7 +706,7 @@ void RobotDiagram::paintStale(QPainter &p) const
     p.setPen(QPen(display::textOn(State::Stale, palette()), 4));
     p.setBrush(display::stateColor(State::Stale, palette()));
     p.drawRoundedRect(banner, 16, 16);
-    p.setFont(sceneFont(64));
+    p.setFont(fittingFont(64, tr("STALE"), banner.width() - 30));
     p.setPen(display::textOn(State::Stale, palette()));
     p.drawText(banner, Qt::AlignCenter, tr("STALE"));
 }

@@ -64,6 +64,11 @@ private:
         display::State state = display::State::Idle;
     };
 
+    void retranslateUi();
+    // What the drawing shows, in words, for screen readers.
+    QString stateSummary() const;
+    void updateDescription();
+
     // Scene units (about 1.47 per mm of robot) to widget pixels.
     QTransform sceneToWidget() const;
     qreal sceneScale() const;
@@ -77,6 +82,8 @@ private:
     QColor textColour(display::State state) const;
     QColor inkColour() const;
     QFont sceneFont(qreal pixelSize, bool bold = true) const;
+    // A bold scene font of about `pixelSize`, smaller where `text` is wider than `width`.
+    QFont fittingFont(qreal pixelSize, const QString &text, qreal width) const;
 
     void paintBody(QPainter &p) const;
     void paintBumper(QPainter &p) const;

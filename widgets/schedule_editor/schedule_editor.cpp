@@ -5,6 +5,8 @@
 
 #include <QCheckBox>
 #include <QComboBox>
+#include <QCoreApplication>
+#include <QEvent>
 #include <QFontDatabase>
 #include <QGridLayout>
 #include <QGroupBox>
@@ -32,7 +34,14 @@ QString decimal(const oi::Bytes &bytes)
 
 QString fromView(std::string_view text) { return QString::fromUtf8(text.data(), qsizetype(text.size())); }
 
-QString dayName(int day) { return fromView(oi::weekdayName(static_cast<oi::Weekday>(day))); }
+const char *const kDayNames[] = {
+    QT_TRANSLATE_NOOP("ScheduleEditor", "Sunday"),   QT_TRANSLATE_NOOP("ScheduleEditor", "Monday"),
+    QT_TRANSLATE_NOOP("ScheduleEditor", "Tuesday"),  QT_TRANSLATE_NOOP("ScheduleEditor", "Wednesday"),
+    QT_TRANSLATE_NOOP("ScheduleEditor", "Thursday"), QT_TRANSLATE_NOOP("ScheduleEditor", "Friday"),
+    QT_TRANSLATE_NOOP("ScheduleEditor", "Saturday")};
+
+// The robot's day 0..6 (Sunday first) in the user's language.
+QString dayName(int day) { return QCoreApplication::translate("ScheduleEditor", kDayNames[day]); }
 
 // The user's 12/24-hour habit, without the seconds the robot does not keep.
 QString shortTimeFormat()
@@ -74,10 +83,10 @@ ScheduleEditor::ScheduleEditor(QWidget *parent) : QWidget(parent)
     m_content = new QWidget(this);
 
     // The weekly grid.
-    auto *weekly = new QGroupBox(tr("Weekly cleaning schedule (167)"), m_content);
+    auto *weekly = m_weekly = new QGroupBox(m_content);
     auto *grid = new QGridLayout;
     for (int day = 0; day < 7; ++day) {
-        m_days[day] = new QCheckBox(dayName(day), weekly);
+        m_days[day] = new QCheckBox(weekly);
         m_days[day]->setObjectName(QString("day%1").arg(day));
         m_times[day] = timeEdit(QString("time%1").arg(day), weekly);
         m_times[day]->setEnabled(false);
@@ -88,19 +97,16 @@ ScheduleEditor::ScheduleEditor(QWidget *parent) : QWidget(parent)
         connect(m_days[day], &QCheckBox::toggled, this, &ScheduleEditor::refresh);
         connect(m_times[day], &QTimeEdit::timeChanged, this, &ScheduleEditor::refresh);
     }
-    auto *sendButton = new QPushButton(tr("Send Schedule"), weekly);
+    auto *sendButton = m_sendSchedule = new QPushButton(weekly);
     sendButton->setObjectName("sendSchedule");
-    auto *disableButton = new QPushButton(tr("Disable all"), weekly);
+    auto *disableButton = m_disableAll = new QPushButton(weekly);
     disableButton->setObjectName("disableAll");
-    disableButton->setToolTip(tr("Clear every day and send a schedule with no cleaning"));
     connect(sendButton, &QPushButton::clicked, this, &ScheduleEditor::sendSchedule);
     connect(disableButton, &QPushButton::clicked, this, &ScheduleEditor::disableAll);
     m_schedulePreview = previewLabel("schedulePreview", weekly);
     m_lastSent = new QLabel(weekly);
     m_lastSent->setObjectName("lastSent");
     m_lastSent->setWordWrap(true);
-    m_lastSent->setText(tr("Nothing sent yet. The robot cannot report its schedule, so this "
-                           "shows what was last sent from here."));
     auto *sendRow = new QHBoxLayout;
     sendRow->addWidget(sendButton);
     sendRow->addWidget(disableButton);
@@ -112,20 +118,18 @@ ScheduleEditor::ScheduleEditor(QWidget *parent) : QWidget(parent)
     weeklyLayout->addWidget(m_lastSent);
 
     // Presets of the grid.
-    auto *presets = new QGroupBox(tr("Presets"), m_content);
+    auto *presets = m_presetBox = new QGroupBox(m_content);
     m_presets = new QComboBox(presets);
     m_presets->setObjectName("presetList");
     m_presets->setSizeAdjustPolicy(QComboBox::AdjustToContents);
-    m_loadPreset = new QPushButton(tr("Load"), presets);
+    m_loadPreset = new QPushButton(presets);
     m_loadPreset->setObjectName("loadPreset");
-    m_deletePreset = new QPushButton(tr("Delete"), presets);
+    m_deletePreset = new QPushButton(presets);
     m_deletePreset->setObjectName("deletePreset");
     m_presetName = new QLineEdit(presets);
     m_presetName->setObjectName("presetName");
-    m_presetName->setPlaceholderText(tr("Preset name"));
-    auto *saveButton = new QPushButton(tr("Save"), presets);
+    auto *saveButton = m_savePreset = new QPushButton(presets);
     saveButton->setObjectName("savePreset");
-    saveButton->setToolTip(tr("Save the grid under this name"));
     connect(m_loadPreset, &QPushButton::clicked, this, [this] { loadPreset(m_presets->currentText()); });
     connect(m_deletePreset, &QPushButton::clicked, this, [this] { deletePreset(m_presets->currentText()); });
     connect(saveButton, &QPushButton::clicked, this, [this] { savePreset(m_presetName->text()); });
@@ -140,15 +144,16 @@ ScheduleEditor::ScheduleEditor(QWidget *parent) : QWidget(parent)
     presetLayout->setRowStretch(2, 1);
 
     // The robot's clock.
-    auto *clock = new QGroupBox(tr("Robot clock (168)"), m_content);
-    auto *fromComputer = new QPushButton(tr("Set from this computer's clock"), clock);
+    auto *clock = m_clockBox = new QGroupBox(m_content);
+    auto *fromComputer = m_fromComputer = new QPushButton(clock);
     fromComputer->setObjectName("setFromComputer");
     m_clockDay = new QComboBox(clock);
     m_clockDay->setObjectName("clockDay");
+    m_clockDay->setSizeAdjustPolicy(QComboBox::AdjustToContents); // its texts change with the language
     for (int day = 0; day < 7; ++day)
-        m_clockDay->addItem(dayName(day), day);
+        m_clockDay->addItem(QString(), day);
     m_clockTime = timeEdit("clockTime", clock);
-    auto *setChosen = new QPushButton(tr("Set Day/Time"), clock);
+    auto *setChosen = m_setChosen = new QPushButton(clock);
     setChosen->setObjectName("setDayTime");
     m_clockPreview = previewLabel("clockPreview", clock);
     connect(fromComputer, &QPushButton::clicked, this, &ScheduleEditor::setDayTimeFromComputer);
@@ -185,7 +190,59 @@ ScheduleEditor::ScheduleEditor(QWidget *parent) : QWidget(parent)
     layout->addWidget(m_content);
 
     refreshPresets();
-    setProfile(*m_profile);
+    setProfile(*m_profile); // also sets every text
+}
+
+void ScheduleEditor::changeEvent(QEvent *event)
+{
+    if (event->type() == QEvent::LanguageChange)
+        retranslateUi();
+    QWidget::changeEvent(event);
+}
+
+void ScheduleEditor::retranslateUi()
+{
+    m_weekly->setTitle(tr("Weekly cleaning schedule (167)"));
+    for (int day = 0; day < 7; ++day) {
+        m_days[day]->setText(dayName(day));
+        m_times[day]->setAccessibleName(tr("Cleaning time on %1").arg(dayName(day)));
+        m_clockDay->setItemText(day, dayName(day)); // index and data stay
+    }
+    m_sendSchedule->setText(tr("Send Schedule"));
+    m_disableAll->setText(tr("Disable all"));
+    m_disableAll->setToolTip(tr("Clear every day and send a schedule with no cleaning"));
+    m_lastSent->setText(m_lastSentAt.isEmpty()
+                            ? tr("Nothing sent yet. The robot cannot report its schedule, so this "
+                                 "shows what was last sent from here.")
+                            : tr("Last sent: %1 at %2").arg(m_lastSentSchedule, m_lastSentAt));
+
+    m_presetBox->setTitle(tr("Presets"));
+    m_presets->setAccessibleName(tr("Saved presets"));
+    m_loadPreset->setText(tr("Load"));
+    m_deletePreset->setText(tr("Delete"));
+    m_presetName->setPlaceholderText(tr("Preset name"));
+    m_presetName->setAccessibleName(tr("Preset name"));
+    m_savePreset->setText(tr("Save"));
+    m_savePreset->setToolTip(tr("Save the grid under this name"));
+
+    m_clockBox->setTitle(tr("Robot clock (168)"));
+    m_fromComputer->setText(tr("Set from this computer's clock"));
+    m_clockDay->setAccessibleName(tr("Day for the robot clock"));
+    m_clockTime->setAccessibleName(tr("Time for the robot clock"));
+    m_setChosen->setText(tr("Set Day/Time"));
+
+    m_reason->setText(tr("The %1 has no cleaning schedule or clock: Schedule (167) and "
+                         "Set Day/Time (168) are Roomba 500 / Create 2 only.")
+                          .arg(fromView(m_profile->name)));
+    if (m_messageText)
+        m_message->setText(m_messageText());
+    refresh();
+}
+
+void ScheduleEditor::showMessage(std::function<QString()> text)
+{
+    m_messageText = std::move(text);
+    m_message->setText(m_messageText());
 }
 
 void ScheduleEditor::setProfile(const oi::RobotProfile &profile)
@@ -195,11 +252,7 @@ void ScheduleEditor::setProfile(const oi::RobotProfile &profile)
     const auto refused = encoder.refuse(oi::Command::Schedule);
     m_content->setEnabled(!refused);
     m_reason->setVisible(bool(refused));
-    if (refused)
-        m_reason->setText(tr("The %1 has no cleaning schedule or clock: Schedule (167) and "
-                             "Set Day/Time (168) are Roomba 500 / Create 2 only.")
-                              .arg(fromView(profile.name)));
-    refresh();
+    retranslateUi(); // the reason names the profile
 }
 
 void ScheduleEditor::setClock(std::function<QDateTime()> clock) { m_clock = std::move(clock); }
@@ -236,21 +289,24 @@ void ScheduleEditor::refresh()
     const oi::CommandEncoder encoder(*m_profile);
     const auto bytes = encoder.schedule(schedule());
     // Where the profile lacks the commands the reason above says why.
-    m_schedulePreview->setText(bytes.ok() ? tr("Will send: %1").arg(decimal(*bytes)) : QString());
+    m_scheduleBytes = bytes.ok() ? decimal(*bytes) : QString();
+    m_schedulePreview->setText(bytes.ok() ? tr("Will send: %1").arg(m_scheduleBytes) : QString());
     const QTime t = m_clockTime->time();
     const auto clock = encoder.setDayTime(m_clockDay->currentIndex(), t.hour(), t.minute());
-    m_clockPreview->setText(clock.ok() ? tr("Will send: %1").arg(decimal(*clock)) : QString());
+    m_clockBytes = clock.ok() ? decimal(*clock) : QString();
+    m_clockPreview->setText(clock.ok() ? tr("Will send: %1").arg(m_clockBytes) : QString());
 }
 
-QString ScheduleEditor::schedulePreview() const { return m_schedulePreview->text().remove(tr("Will send: ")); }
-QString ScheduleEditor::clockPreview() const { return m_clockPreview->text().remove(tr("Will send: ")); }
+QString ScheduleEditor::schedulePreview() const { return m_scheduleBytes; }
+QString ScheduleEditor::clockPreview() const { return m_clockBytes; }
 QString ScheduleEditor::lastSent() const { return m_lastSent->text(); }
 QString ScheduleEditor::message() const { return m_message->text(); }
 
 bool ScheduleEditor::send(const oi::EncodeResult &result)
 {
     if (!result.ok()) {
-        m_message->setText(tr("Not sent: %1").arg(QString::fromStdString(result.error().describe())));
+        const QString why = QString::fromStdString(result.error().describe()); // the protocol's words
+        showMessage([why] { return tr("Not sent: %1").arg(why); });
         return false;
     }
     const auto &bytes = result.value();
@@ -263,15 +319,18 @@ void ScheduleEditor::sendSchedule()
     const oi::CleaningSchedule s = schedule();
     if (!send(oi::CommandEncoder(*m_profile).schedule(s)))
         return;
-    const QString when = shortTime(m_clock().time());
-    m_lastSent->setText(tr("Last sent: %1 at %2").arg(QString::fromStdString(oi::formatSchedule(s)), when));
-    m_message->setText(s.isOff() ? tr("Sent: no scheduled cleaning.") : tr("Schedule sent."));
+    m_lastSentSchedule = QString::fromStdString(oi::formatSchedule(s));
+    m_lastSentAt = shortTime(m_clock().time());
+    m_lastSent->setText(tr("Last sent: %1 at %2").arg(m_lastSentSchedule, m_lastSentAt));
+    const bool off = s.isOff();
+    showMessage([off] { return off ? tr("Sent: no scheduled cleaning.") : tr("Schedule sent."); });
 }
 
 void ScheduleEditor::disableAll()
 {
     if (auto refused = oi::CommandEncoder(*m_profile).refuse(oi::Command::Schedule)) {
-        m_message->setText(tr("Not sent: %1").arg(QString::fromStdString(refused->describe())));
+        const QString why = QString::fromStdString(refused->describe());
+        showMessage([why] { return tr("Not sent: %1").arg(why); });
         return;
     }
     setSchedule(oi::CleaningSchedule{});
@@ -281,8 +340,9 @@ void ScheduleEditor::disableAll()
 void ScheduleEditor::sendDayTime(int day, int hour, int minute)
 {
     if (send(oi::CommandEncoder(*m_profile).setDayTime(day, hour, minute)))
-        m_message->setText(tr("Robot clock set to %1 %2.")
-                               .arg(dayName(day), shortTime(QTime(hour, minute))));
+        showMessage([=] {
+            return tr("Robot clock set to %1 %2.").arg(dayName(day), shortTime(QTime(hour, minute)));
+        });
 }
 
 void ScheduleEditor::setDayTimeFromComputer()
@@ -319,7 +379,7 @@ bool ScheduleEditor::savePreset(const QString &name)
 {
     const QString trimmed = name.trimmed();
     if (trimmed.isEmpty()) {
-        m_message->setText(tr("Not saved: give the preset a name."));
+        showMessage([] { return tr("Not saved: give the preset a name."); });
         return false;
     }
     QSettings settings;
@@ -329,7 +389,9 @@ bool ScheduleEditor::savePreset(const QString &name)
     settings.setValue(kPresetsKey, map);
     refreshPresets();
     m_presets->setCurrentIndex(m_presets->findText(trimmed));
-    m_message->setText(replaced ? tr("Preset \"%1\" replaced.").arg(trimmed) : tr("Preset \"%1\" saved.").arg(trimmed));
+    showMessage([=] {
+        return (replaced ? tr("Preset \"%1\" replaced.") : tr("Preset \"%1\" saved.")).arg(trimmed);
+    });
     return true;
 }
 
@@ -337,13 +399,14 @@ bool ScheduleEditor::loadPreset(const QString &name)
 {
     const QVariantMap map = QSettings().value(kPresetsKey).toMap();
     if (!map.contains(name)) {
-        m_message->setText(tr("No preset named \"%1\".").arg(name));
+        showMessage([=] { return tr("No preset named \"%1\".").arg(name); });
         return false;
     }
     const auto parsed = oi::parseSchedule(map.value(name).toString().toStdString());
     if (!parsed.ok()) {
         // A damaged preset leaves the grid as it was.
-        m_message->setText(tr("Preset \"%1\" is damaged: %2").arg(name, QString::fromStdString(parsed.error().describe())));
+        const QString why = QString::fromStdString(parsed.error().describe());
+        showMessage([=] { return tr("Preset \"%1\" is damaged: %2").arg(name, why); });
         return false;
     }
     setSchedule(parsed.value());
@@ -356,11 +419,11 @@ bool ScheduleEditor::deletePreset(const QString &name)
     QSettings settings;
     QVariantMap map = settings.value(kPresetsKey).toMap();
     if (!map.remove(name)) {
-        m_message->setText(tr("No preset named \"%1\".").arg(name));
+        showMessage([=] { return tr("No preset named \"%1\".").arg(name); });
         return false;
     }
     settings.setValue(kPresetsKey, map);
     refreshPresets();
-    m_message->setText(tr("Preset \"%1\" deleted.").arg(name));
+    showMessage([=] { return tr("Preset \"%1\" deleted.").arg(name); });
     return true;
 }

@@ -13,6 +13,7 @@
 
 class QCheckBox;
 class QComboBox;
+class QGroupBox;
 class QLabel;
 class QLineEdit;
 class QPushButton;
@@ -58,7 +59,13 @@ public slots:
 signals:
     void sendRequested(const QByteArray &bytes);
 
+protected:
+    void changeEvent(QEvent *event) override;
+
 private:
+    void retranslateUi();
+    // Messages are kept as a way to write them, so they follow a language switch.
+    void showMessage(std::function<QString()> text);
     void refresh();
     void refreshPresets();
     bool send(const oi::EncodeResult &result);
@@ -81,4 +88,20 @@ private:
     QTimeEdit *m_clockTime = nullptr;
     QLabel *m_clockPreview = nullptr;
     QLabel *m_message = nullptr;
+    QGroupBox *m_weekly = nullptr;
+    QGroupBox *m_presetBox = nullptr;
+    QGroupBox *m_clockBox = nullptr;
+    QPushButton *m_sendSchedule = nullptr;
+    QPushButton *m_disableAll = nullptr;
+    QPushButton *m_savePreset = nullptr;
+    QPushButton *m_fromComputer = nullptr;
+    QPushButton *m_setChosen = nullptr;
+
+    // What was last sent and when, kept as data so the sentence can be
+    // written again in another language.
+    QString m_lastSentSchedule;
+    QString m_lastSentAt;
+    std::function<QString()> m_messageText;
+    QString m_scheduleBytes; // what the previews show, without their sentence
+    QString m_clockBytes;
 };

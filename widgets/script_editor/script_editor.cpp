@@ -9,6 +9,7 @@
 #include "script_text_edit.h"
 
 #include <QComboBox>
+#include <QEvent>
 #include <QFontDatabase>
 #include <QGridLayout>
 #include <QGroupBox>
@@ -76,9 +77,10 @@ ScriptEditor::ScriptEditor(QWidget *parent) : QWidget(parent)
 
     m_examples = new QComboBox(m_controls);
     m_examples->setObjectName("examples");
-    m_examples->addItem(tr("Load an example…"));
-    for (const QString &title : exampleTitles())
-        m_examples->addItem(title);
+    m_examples->setSizeAdjustPolicy(QComboBox::AdjustToContents); // its texts change with the language
+    m_examples->addItem(QString());
+    for (int i = 0; i < exampleTitles().size(); ++i)
+        m_examples->addItem(QString());
     connect(m_examples, &QComboBox::activated, this, [this](int index) {
         if (index > 0)
             loadExample(index - 1);
@@ -92,7 +94,8 @@ ScriptEditor::ScriptEditor(QWidget *parent) : QWidget(parent)
     m_editor = new ScriptTextEdit(m_controls);
     m_editor->setObjectName("scriptText");
     m_editor->setFont(QFontDatabase::systemFont(QFontDatabase::FixedFont));
-    m_editor->setPlaceholderText(tr("One command a line, e.g.\ndrive 300 straight\nwait-distance 400\ndrive 0 0"));
+    // Scripts need no tab characters, so Tab moves on for keyboard users.
+    m_editor->setTabChangesFocus(true);
     m_editor->setLineWrapMode(QPlainTextEdit::NoWrap);
     m_editor->setMinimumHeight(10 * m_editor->fontMetrics().lineSpacing());
 
@@ -124,25 +127,24 @@ ScriptEditor::ScriptEditor(QWidget *parent) : QWidget(parent)
     m_drainTimer->setInterval(kDrainQuietMs);
     connect(m_drainTimer, &QTimer::timeout, this, &ScriptEditor::askForScript);
 
-    addButton("upload", tr("Upload (152)"))->setToolTip(tr("Store the script on the robot"));
-    addButton("play", tr("Play (153)"))->setToolTip(tr("Run the stored script"));
-    addButton("show", tr("Show Script (154)"))
-        ->setToolTip(tr("Read the stored script back and compare it with what was uploaded"));
+    addButton("upload", QString());
+    addButton("play", QString());
+    addButton("show", QString());
     connect(button("upload"), &QPushButton::clicked, this, &ScriptEditor::upload);
     connect(button("play"), &QPushButton::clicked, this,
             [this] { send(oi::CommandEncoder(*m_profile).playScript()); });
     connect(button("show"), &QPushButton::clicked, this, &ScriptEditor::showScript);
 
-    auto *demoBox = new QGroupBox(tr("Demos (136)"), m_controls);
+    auto *demoBox = m_demoBox = new QGroupBox(m_controls);
     auto *demoGrid = new QGridLayout(demoBox);
     constexpr int kColumns = 5;
     for (int demo = demos::kFirst; demo <= demos::kLast; ++demo) {
-        QPushButton *b = addButton(QString("demo-%1").arg(demo), QString("%1  %2").arg(demo).arg(demos::name(demo)));
+        QPushButton *b = addButton(QString("demo-%1").arg(demo), QString());
         b->setParent(demoBox);
         connect(b, &QPushButton::clicked, this, [this, demo] { send(oi::CommandEncoder(*m_profile).demo(demo)); });
         demoGrid->addWidget(b, demo / kColumns, demo % kColumns);
     }
-    QPushButton *abort = addButton("abort-demo", demos::name(demos::kAbort));
+    QPushButton *abort = addButton("abort-demo", QString());
     abort->setParent(demoBox);
     connect(abort, &QPushButton::clicked, this,
             [this] { send(oi::CommandEncoder(*m_profile).demo(demos::kAbort)); });
@@ -173,7 +175,38 @@ ScriptEditor::ScriptEditor(QWidget *parent) : QWidget(parent)
     layout->addWidget(m_controls, 1);
 
     m_showResult->setVisible(false);
-    setProfile(*m_profile);
+    setProfile(*m_profile); // also sets every text
+}
+
+void ScriptEditor::changeEvent(QEvent *event)
+{
+    if (event->type() == QEvent::LanguageChange)
+        retranslateUi();
+    QWidget::changeEvent(event);
+}
+
+void ScriptEditor::retranslateUi()
+{
+    m_examples->setItemText(0, tr("Load an example…"));
+    const QStringList titles = exampleTitles();
+    for (int i = 0; i < titles.size(); ++i)
+        m_examples->setItemText(i + 1, titles[i]);
+    m_examples->setAccessibleName(tr("Example scripts"));
+    // The script keywords stay as they are: the assembler reads them.
+    m_editor->setPlaceholderText(tr("One command a line, e.g.\n%1").arg("drive 300 straight\nwait-distance 400\ndrive 0 0"));
+    m_editor->setAccessibleName(tr("Script"));
+    button("upload")->setText(tr("Upload (152)"));
+    button("play")->setText(tr("Play (153)"));
+    button("play")->setToolTip(tr("Run the stored script"));
+    button("show")->setText(tr("Show Script (154)"));
+    button("show")->setToolTip(tr("Read the stored script back and compare it with what was uploaded"));
+    m_demoBox->setTitle(tr("Demos (136)"));
+    for (int demo = demos::kFirst; demo <= demos::kLast; ++demo)
+        button(QString("demo-%1").arg(demo))->setText(tr("%1  %2").arg(demo).arg(demos::name(demo)));
+    button("abort-demo")->setText(demos::name(demos::kAbort));
+    if (!m_refusal.isEmpty())
+        m_reason->setText(tr("Scripts and demos are for the original Create only: %1.").arg(m_refusal));
+    reassemble(); // the byte count, the error and the upload tool tip
 }
 
 QPushButton *ScriptEditor::addButton(const QString &name, const QString &text)
@@ -228,16 +261,16 @@ void ScriptEditor::setProfile(const oi::RobotProfile &profile)
     m_showResult->setVisible(false);
     const oi::CommandEncoder encoder(profile);
     if (auto refusal = encoder.refuse(oi::Command::Script)) {
-        m_reason->setText(tr("Scripts and demos are for the original Create only: %1.")
-                              .arg(fromStd(refusal->message)));
+        m_refusal = fromStd(refusal->message);
         m_reason->setVisible(true);
         m_controls->setEnabled(false);
     } else {
+        m_refusal.clear();
         m_reason->clear();
         m_reason->setVisible(false);
         m_controls->setEnabled(true);
     }
-    reassemble();
+    retranslateUi(); // the reason names the profile; also reassembles
 }
 
 void ScriptEditor::reassemble()
@@ -308,6 +341,10 @@ void ScriptEditor::showError(const QString &message, std::optional<int> line)
 
 void ScriptEditor::refreshEnabled()
 {
+    // A screen reader hears the byte count and any error with the script.
+    m_editor->setAccessibleDescription(m_error->text().isEmpty()
+                                           ? m_byteCount->text()
+                                           : tr("%1. %2").arg(m_byteCount->text(), m_error->text()));
     const bool create = m_controls->isEnabled();
     button("upload")->setEnabled(create && m_body.has_value());
     button("upload")->setToolTip(m_body ? tr("Store the script on the robot (152)")

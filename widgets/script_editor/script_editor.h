@@ -11,6 +11,7 @@
 #include <optional>
 
 class QComboBox;
+class QGroupBox;
 class QLabel;
 class QPushButton;
 class QTimer;
@@ -51,7 +52,11 @@ public slots:
 signals:
     void sendRequested(const QByteArray &bytes);
 
+protected:
+    void changeEvent(QEvent *event) override;
+
 private:
+    void retranslateUi();
     QPushButton *addButton(const QString &name, const QString &text);
     void send(const oi::EncodeResult &bytes);
     void upload();
@@ -71,6 +76,8 @@ private:
     QLabel *m_error = nullptr;
     QLabel *m_showResult = nullptr;
     QWidget *m_controls = nullptr;
+    QGroupBox *m_demoBox = nullptr;
+    QString m_refusal; // why the profile has no scripts, from the encoder
     QHash<QString, QPushButton *> m_buttons;
     QTimer *m_debounce = nullptr;
     QTimer *m_replyTimeout = nullptr;

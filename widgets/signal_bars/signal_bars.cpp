@@ -20,8 +20,14 @@ constexpr qreal kSignalMax = 4095;
 constexpr int kCliffSignalFirst = 28;     // packets 28..31
 constexpr int kLightBumpSignalFirst = 46; // packets 46..51
 
-const char *const kCliffPositions[kCliffCount] = {"L", "FL", "FR", "R"};
-const char *const kLightBumpPositions[kLightBumpCount] = {"L", "FL", "CL", "CR", "FR", "R"};
+// Short positions under the bars: Left, Front Left, Center Left, ...
+const char *const kCliffPositions[kCliffCount] = {
+    QT_TRANSLATE_NOOP("SignalBars", "L"), QT_TRANSLATE_NOOP("SignalBars", "FL"),
+    QT_TRANSLATE_NOOP("SignalBars", "FR"), QT_TRANSLATE_NOOP("SignalBars", "R")};
+const char *const kLightBumpPositions[kLightBumpCount] = {
+    QT_TRANSLATE_NOOP("SignalBars", "L"),  QT_TRANSLATE_NOOP("SignalBars", "FL"),
+    QT_TRANSLATE_NOOP("SignalBars", "CL"), QT_TRANSLATE_NOOP("SignalBars", "CR"),
+    QT_TRANSLATE_NOOP("SignalBars", "FR"), QT_TRANSLATE_NOOP("SignalBars", "R")};
 
 bool isDark(const QPalette &palette) { return palette.color(QPalette::Window).lightness() < 128; }
 
@@ -47,8 +53,8 @@ SignalBars::SignalBars(QWidget *parent) : QChartView(parent)
     chart->setBackgroundRoundness(0);
     chart->setMargins(QMargins(4, 4, 4, 4));
 
-    m_cliffs = new QBarSet(tr("Cliff"));
-    m_lightBumps = new QBarSet(tr("Light bump"));
+    m_cliffs = new QBarSet(QString());
+    m_lightBumps = new QBarSet(QString());
     m_series = new QStackedBarSeries;
     m_series->append(m_cliffs);
     m_series->append(m_lightBumps);
@@ -75,6 +81,50 @@ SignalBars::SignalBars(QWidget *parent) : QChartView(parent)
     applyFonts();
     applyPalette();
     setProfile(*m_profile);
+    retranslateUi();
+}
+
+void SignalBars::retranslateUi()
+{
+    m_cliffs->setLabel(tr("Cliff"));
+    m_lightBumps->setLabel(tr("Light bump"));
+    refreshCategories();
+    applyPalette(); // the title
+    setAccessibleName(tr("Signal bars"));
+    updateDescription();
+}
+
+void SignalBars::refreshCategories()
+{
+    // The position, with the kind in small type under it, fits ten bars in a
+    // narrow chart; the colours and the legend tell the kinds apart too.
+    m_categories.clear();
+    QStringList labels;
+    auto add = [&](const QString &kind, const QString &smallKind, const char *position) {
+        const QString shortPosition = tr(position);
+        m_categories << kind + ' ' + shortPosition;
+        labels << QStringLiteral("<center><b>%1</b><br><small>%2</small></center>").arg(shortPosition, smallKind);
+    };
+    for (const char *position : kCliffPositions)
+        add(tr("Cliff"), tr("cliff", "under a bar"), position);
+    if (hasLightBumpers())
+        for (const char *position : kLightBumpPositions)
+            add(tr("Light"), tr("light", "under a bar"), position);
+    m_axisX->setCategories(labels);
+}
+
+void SignalBars::updateDescription()
+{
+    // The signals as a list a screen reader can read out: "Cliff L 2610, ...".
+    QStringList parts;
+    const QList<qreal> values = barValues();
+    for (qsizetype i = 0; i < m_categories.size(); ++i)
+        parts << tr("%1: %2").arg(m_categories.at(i)).arg(values.at(i));
+    QString text = parts.join(tr(", "));
+    if (m_stale)
+        text = tr("Stale: %1").arg(text);
+    if (accessibleDescription() != text)
+        setAccessibleDescription(text);
 }
 
 QSize SignalBars::minimumSizeHint() const
@@ -87,21 +137,7 @@ QSize SignalBars::sizeHint() const { return {560, 360}; }
 void SignalBars::setProfile(const oi::RobotProfile &profile)
 {
     m_profile = &profile;
-    // The position, with the kind in small type under it, fits ten bars in a
-    // narrow chart; the colours and the legend tell the kinds apart too.
-    m_categories.clear();
-    QStringList labels;
-    auto add = [&](const QString &kind, const char *position) {
-        m_categories << kind + ' ' + QLatin1String(position);
-        labels << QStringLiteral("<center><b>%1</b><br><small>%2</small></center>")
-                      .arg(QLatin1String(position), kind.toLower());
-    };
-    for (const char *position : kCliffPositions)
-        add(tr("Cliff"), position);
-    if (hasLightBumpers())
-        for (const char *position : kLightBumpPositions)
-            add(tr("Light"), position);
-    m_axisX->setCategories(labels);
+    refreshCategories();
     const QStringList &names = m_categories;
 
     // Each set is zero where the other has its bars.
@@ -115,6 +151,7 @@ void SignalBars::setProfile(const oi::RobotProfile &profile)
     if (markers.size() == 2)
         markers.at(1)->setVisible(hasLightBumpers());
     applyPalette(); // the title names what is shown
+    updateDescription();
     updateGeometry();
 }
 
@@ -126,12 +163,11 @@ void SignalBars::setSnapshot(const oi::SensorSnapshot &snapshot)
     };
     for (int i = 0; i < kCliffCount; ++i)
         show(m_cliffs, i, snapshot.has(kCliffSignalFirst + i) ? snapshot.raw(kCliffSignalFirst + i) : 0);
-    if (!hasLightBumpers())
-        return;
-    for (int i = 0; i < kLightBumpCount; ++i) {
+    for (int i = 0; hasLightBumpers() && i < kLightBumpCount; ++i) {
         const int id = kLightBumpSignalFirst + i;
         show(m_lightBumps, kCliffCount + i, snapshot.has(id) ? snapshot.raw(id) : 0);
     }
+    updateDescription();
 }
 
 void SignalBars::setStale(bool stale)
@@ -140,6 +176,7 @@ void SignalBars::setStale(bool stale)
         return;
     m_stale = stale;
     applyPalette();
+    updateDescription();
 }
 
 QStringList SignalBars::categories() const { return m_categories; }
@@ -218,7 +255,9 @@ void SignalBars::applyPalette()
 void SignalBars::changeEvent(QEvent *event)
 {
     QChartView::changeEvent(event);
-    if (event->type() == QEvent::PaletteChange)
+    if (event->type() == QEvent::LanguageChange)
+        retranslateUi();
+    else if (event->type() == QEvent::PaletteChange)
         applyPalette();
     else if (event->type() == QEvent::FontChange)
         applyFonts();

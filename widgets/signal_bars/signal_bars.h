@@ -49,6 +49,10 @@ protected:
 
 private:
     bool hasLightBumpers() const { return m_profile->id != oi::ProfileId::Create1; }
+    void retranslateUi();
+    void refreshCategories();
+    // The signals in words, for screen readers.
+    void updateDescription();
     void applyPalette();
     void applyFonts();
 

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "midi_melody.h"
 
+#include <QCoreApplication>
 #include <QFile>
 
 #include <smf.h>
@@ -25,15 +26,15 @@ std::optional<QList<oi::SongNote>> melodyFromMidiFile(const QString &path, int *
 {
     auto fail = [error, &path](const QString &why) {
         if (error)
-            *error = QStringLiteral("Could not import %1: %2").arg(path, why);
+            *error = QCoreApplication::translate("MidiMelody", "Could not import %1: %2").arg(path, why);
         return std::nullopt;
     };
     if (!QFile::exists(path))
-        return fail(QStringLiteral("no such file"));
+        return fail(QCoreApplication::translate("MidiMelody", "no such file"));
     std::unique_ptr<smf_t, decltype(&smf_delete)> smf(smf_load(QFile::encodeName(path).constData()),
                                                       &smf_delete);
     if (!smf)
-        return fail(QStringLiteral("not a readable Standard MIDI File"));
+        return fail(QCoreApplication::translate("MidiMelody", "not a readable Standard MIDI File"));
 
     std::vector<HeardNote> heard;
     while (smf_event_t *event = smf_get_next_event(smf.get())) {
@@ -57,7 +58,7 @@ std::optional<QList<oi::SongNote>> melodyFromMidiFile(const QString &path, int *
         }
     }
     if (heard.empty())
-        return fail(QStringLiteral("it has no notes"));
+        return fail(QCoreApplication::translate("MidiMelody", "it has no notes"));
     const double songEnd = smf_get_length_seconds(smf.get());
     for (HeardNote &n : heard)
         if (n.end < 0)
@@ -109,6 +110,6 @@ std::optional<QList<oi::SongNote>> melodyFromMidiFile(const QString &path, int *
     if (shortened)
         *shortened = cut;
     if (notes.isEmpty())
-        return fail(QStringLiteral("its notes are all shorter than 1/64 s"));
+        return fail(QCoreApplication::translate("MidiMelody", "its notes are all shorter than 1/64 s"));
     return notes;
 }

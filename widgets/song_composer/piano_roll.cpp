@@ -3,6 +3,9 @@
 
 #include "display_palette.h"
 
+#include <QCoreApplication>
+#include <QEvent>
+#include <QKeyEvent>
 #include <QMouseEvent>
 #include <QPainter>
 
@@ -16,14 +19,130 @@ bool isBlackKey(int midi)
     return k == 1 || k == 3 || k == 6 || k == 8 || k == 10;
 }
 QString pitchName(int midi) { return QString::fromStdString(oi::midiNoteName(midi)); }
+QString restName() { return QCoreApplication::translate("PianoRoll", "rest"); }
 } // namespace
 
 PianoRoll::PianoRoll(QWidget *parent) : QWidget(parent)
 {
     setMouseTracking(true);
-    setFocusPolicy(Qt::ClickFocus);
-    setToolTip(tr("Click to add a note, drag a note to move it, drag its right edge to lengthen it"));
+    setFocusPolicy(Qt::StrongFocus);
     fitView();
+    retranslateUi();
+}
+
+void PianoRoll::changeEvent(QEvent *event)
+{
+    if (event->type() == QEvent::LanguageChange)
+        retranslateUi();
+    QWidget::changeEvent(event);
+}
+
+void PianoRoll::retranslateUi()
+{
+    setToolTip(tr("Click to add a note, drag a note to move it, drag its right edge to lengthen it"));
+    setAccessibleName(tr("Piano roll"));
+    updateDescription();
+    update(); // the rest lane's name is painted
+}
+
+int PianoRoll::gutterWidth() const
+{
+    const QFontMetrics fm = fontMetrics();
+    return std::max(fm.horizontalAdvance(QStringLiteral("C#10")), fm.horizontalAdvance(restName())) + 8;
+}
+
+QSize PianoRoll::sizeHint() const
+{
+    const int line = fontMetrics().height();
+    return {gutterWidth() + 30 * line, 18 * line};
+}
+
+QSize PianoRoll::minimumSizeHint() const
+{
+    const int line = fontMetrics().height();
+    return {gutterWidth() + 12 * line, 10 * line};
+}
+
+void PianoRoll::updateDescription()
+{
+    const int count = int(m_song.notes.size());
+    QString text = count == 1 ? tr("1 note, %1 s.").arg(m_song.seconds(), 0, 'f', 2)
+                              : tr("%n notes, %1 s.", nullptr, count).arg(m_song.seconds(), 0, 'f', 2);
+    if (m_selected >= 0) {
+        const oi::SongNote &n = m_song.notes[m_selected];
+        text += QLatin1Char(' ') + tr("Selected: note %1, %2, %3/64 s.")
+                                       .arg(m_selected + 1)
+                                       .arg(n.isRest() ? restName() : pitchName(n.midi))
+                                       .arg(n.duration);
+    }
+    text += QLatin1Char(' ') + tr("Left and Right select a note, Up and Down change its pitch, Shift+Left and "
+                                  "Shift+Right its length, Insert adds a note, Delete removes one.");
+    setAccessibleDescription(text);
+}
+
+void PianoRoll::select(int index)
+{
+    setSelectedNote(index);
+    emit noteSelected(m_selected);
+}
+
+void PianoRoll::keyPressEvent(QKeyEvent *event)
+{
+    const int count = int(m_song.notes.size());
+    const bool shift = event->modifiers() & Qt::ShiftModifier;
+    oi::Song song = m_song;
+    oi::SongNote *note = m_selected >= 0 ? &song.notes[m_selected] : nullptr;
+    switch (event->key()) {
+    case Qt::Key_Left:
+    case Qt::Key_Right: {
+        const int step = event->key() == Qt::Key_Left ? -1 : 1;
+        if (shift && note) {
+            // A sixteenth of a second at a time: single 1/64 s steps are too fine to hear.
+            note->duration = std::uint8_t(std::clamp(note->duration + 4 * step, 1, 255));
+            commit(song);
+        } else if (count > 0) {
+            select(m_selected < 0 ? (step > 0 ? 0 : count - 1) : std::clamp(m_selected + step, 0, count - 1));
+        }
+        break;
+    }
+    case Qt::Key_Up:
+    case Qt::Key_Down: {
+        if (!note || note->isRest())
+            break;
+        const int step = (event->key() == Qt::Key_Up ? 1 : -1) * (shift ? 12 : 1);
+        const int midi = note->midi + step;
+        if (midi < oi::kLowestNote || midi > oi::kHighestNote)
+            break;
+        note->midi = std::uint8_t(midi);
+        commit(song);
+        break;
+    }
+    case Qt::Key_Insert: {
+        if (count >= oi::kMaxSongNotes) {
+            emit editRefused(tr("A song holds at most %1 notes; remove one first").arg(oi::kMaxSongNotes));
+            break;
+        }
+        const int at = m_selected >= 0 ? m_selected + 1 : count;
+        const oi::SongNote added = at > 0 ? song.notes[at - 1] : oi::SongNote{72, std::uint8_t(m_newDuration)};
+        song.notes.insert(song.notes.begin() + at, added);
+        commit(song);
+        select(at); // after the owner has the new note in its list
+        break;
+    }
+    case Qt::Key_Delete: {
+        if (!note)
+            break;
+        const int next = std::min(m_selected, int(song.notes.size()) - 2);
+        song.notes.erase(song.notes.begin() + m_selected);
+        commit(song);
+        select(next);
+        break;
+    }
+    default:
+        QWidget::keyPressEvent(event);
+        return;
+    }
+    update();
 }
 
 void PianoRoll::setSong(const oi::Song &song)
@@ -34,12 +153,14 @@ void PianoRoll::setSong(const oi::Song &song)
     // The view keeps still while a drag is under way so the note stays under the pointer.
     if (m_drag == Drag::None)
         fitView();
+    updateDescription();
     update();
 }
 
 void PianoRoll::setSelectedNote(int index)
 {
     m_selected = index >= 0 && index < int(m_song.notes.size()) ? index : -1;
+    updateDescription();
     update();
 }
 
@@ -77,9 +198,9 @@ void PianoRoll::fitView()
 
 double PianoRoll::rowHeight() const { return std::max(3.0, (height() - 1.0) / rowCount()); }
 
-double PianoRoll::pixelsPer64() const { return std::max(0.5, (width() - kGutter - 4.0) / m_timeSpan); }
+double PianoRoll::pixelsPer64() const { return std::max(0.5, (width() - gutterWidth() - 4.0) / m_timeSpan); }
 
-double PianoRoll::timeAt(double x) const { return (x - kGutter) / pixelsPer64(); }
+double PianoRoll::timeAt(double x) const { return (x - gutterWidth()) / pixelsPer64(); }
 
 int PianoRoll::pitchAt(double y) const
 {
@@ -101,7 +222,7 @@ QPointF PianoRoll::pointFor(int midi, int time64) const
 {
     const bool rest = midi < oi::kLowestNote || midi > oi::kHighestNote;
     const int row = rest ? rowCount() - 1 : m_high - midi;
-    return {kGutter + time64 * pixelsPer64(), (row + 0.5) * rowHeight()};
+    return {gutterWidth() + time64 * pixelsPer64(), (row + 0.5) * rowHeight()};
 }
 
 QRectF PianoRoll::noteRect(int index) const
@@ -132,6 +253,7 @@ void PianoRoll::commit(const oi::Song &song)
     if (song == m_song)
         return;
     m_song = song;
+    updateDescription();
     update();
     emit songEdited(m_song);
 }
@@ -141,7 +263,7 @@ void PianoRoll::mousePressEvent(QMouseEvent *event)
     if (event->button() != Qt::LeftButton)
         return;
     const QPointF p = event->position();
-    if (p.x() < kGutter)
+    if (p.x() < gutterWidth())
         return;
     bool edge = false;
     const int hit = noteAt(p, &edge);
@@ -232,29 +354,29 @@ void PianoRoll::paintEvent(QPaintEvent *)
     painter.setFont(small);
     const QColor shade = pal.color(QPalette::AlternateBase).darker(104);
     for (int row = 0; row < rowCount(); ++row) {
-        const QRectF band(kGutter, row * h, width() - kGutter, h);
+        const QRectF band(gutterWidth(), row * h, width() - gutterWidth(), h);
         const bool rest = row == rowCount() - 1;
         const int midi = m_high - row;
         if (rest || isBlackKey(midi))
             painter.fillRect(band, shade);
-        const QRectF label(0, row * h, kGutter - 4, h);
+        const QRectF label(0, row * h, gutterWidth() - 4, h);
         if (rest || midi % 12 == 0 || h >= small.pointSizeF() * 1.9) {
             painter.setPen(pal.color(QPalette::Text));
-            painter.drawText(label, Qt::AlignRight | Qt::AlignVCenter, rest ? tr("rest") : pitchName(midi));
+            painter.drawText(label, Qt::AlignRight | Qt::AlignVCenter, rest ? restName() : pitchName(midi));
         }
         if (rest || midi % 12 == 0) {
             painter.setPen(QPen(pal.color(QPalette::Mid), 1));
-            painter.drawLine(QPointF(kGutter, row * h), QPointF(width(), row * h));
+            painter.drawLine(QPointF(gutterWidth(), row * h), QPointF(width(), row * h));
         }
     }
     // Beats every quarter second, stronger lines every second.
     for (int t = 0; t <= m_timeSpan; t += 16) {
-        const double x = kGutter + t * px;
+        const double x = gutterWidth() + t * px;
         painter.setPen(QPen(t % 64 == 0 ? pal.color(QPalette::Mid) : pal.color(QPalette::Midlight), 1));
         painter.drawLine(QPointF(x, 0), QPointF(x, height()));
     }
     painter.setPen(pal.color(QPalette::Mid));
-    painter.drawLine(QPointF(kGutter, 0), QPointF(kGutter, height()));
+    painter.drawLine(QPointF(gutterWidth(), 0), QPointF(gutterWidth(), height()));
 
     for (int i = 0; i < int(m_song.notes.size()); ++i) {
         const QRectF r = noteRect(i).adjusted(0.5, 0.5, -0.5, -0.5);
@@ -265,14 +387,14 @@ void PianoRoll::paintEvent(QPaintEvent *)
         painter.setPen(QPen(pal.color(QPalette::Text), 1));
         painter.setBrush(display::stateColor(state, pal));
         painter.drawRoundedRect(r, 2, 2);
-        const QString name = rest ? tr("rest") : pitchName(m_song.notes[i].midi);
+        const QString name = rest ? restName() : pitchName(m_song.notes[i].midi);
         if (painter.fontMetrics().horizontalAdvance(name) + 4 < r.width() && h >= 8) {
             painter.setPen(display::textOn(state, pal));
             painter.drawText(r.adjusted(2, 0, 0, 0), Qt::AlignLeft | Qt::AlignVCenter, name);
         }
     }
     if (m_playhead >= 0) {
-        const double x = kGutter + m_playhead * px;
+        const double x = gutterWidth() + m_playhead * px;
         painter.setPen(QPen(display::stateColor(display::State::Alert, pal), 2));
         painter.drawLine(QPointF(x, 0), QPointF(x, height()));
     }

@@ -8,6 +8,9 @@
 // One song drawn as pitch (rows, rests in the bottom lane) against time.
 // Click an empty place to add a note there, drag a note to change its pitch
 // or its place in the order, drag its right edge to change its duration.
+// From the keyboard: Left/Right select a note, Up/Down change its pitch
+// (with Shift by an octave), Shift+Left/Right its duration, Insert adds a
+// note after it and Delete removes it.
 // Every edit is reported with songEdited(); the owner passes the song back
 // with setSong(), so the roll never holds a different song from the list.
 class PianoRoll : public QWidget {
@@ -32,8 +35,10 @@ public:
     int lowestShownNote() const { return m_low; }
     int highestShownNote() const { return m_high; }
 
-    QSize sizeHint() const override { return {520, 300}; }
-    QSize minimumSizeHint() const override { return {240, 160}; }
+    QSize sizeHint() const override;
+    QSize minimumSizeHint() const override;
+    // Width of the pitch names on the left, from the font.
+    int gutterWidth() const;
 
 signals:
     void songEdited(const oi::Song &song);
@@ -45,6 +50,8 @@ protected:
     void mousePressEvent(QMouseEvent *event) override;
     void mouseMoveEvent(QMouseEvent *event) override;
     void mouseReleaseEvent(QMouseEvent *event) override;
+    void keyPressEvent(QKeyEvent *event) override;
+    void changeEvent(QEvent *event) override;
 
 private:
     enum class Drag { None, Move, Resize };
@@ -58,8 +65,10 @@ private:
     int noteStart(int index) const;
     int noteAt(const QPointF &p, bool *onRightEdge) const;
     void commit(const oi::Song &song);
+    void retranslateUi();
+    void select(int index);
+    void updateDescription();
 
-    static constexpr int kGutter = 40;
     oi::Song m_song;
     int m_low = 60;
     int m_high = 76;

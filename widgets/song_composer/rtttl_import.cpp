@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "rtttl_import.h"
 
+#include <QCoreApplication>
 #include <QStringList>
 
 #include <cmath>
@@ -32,12 +33,12 @@ std::optional<RtttlTune> parseRtttl(const QString &text, QString *error)
 {
     auto fail = [error](const QString &why) {
         if (error)
-            *error = QStringLiteral("RTTTL: ") + why;
+            *error = QCoreApplication::translate("RtttlImport", "RTTTL: %1").arg(why);
         return std::nullopt;
     };
     const QStringList sections = text.trimmed().split(':');
     if (sections.size() != 3)
-        return fail(QStringLiteral("expected NAME:DEFAULTS:NOTES, e.g. \"Beep:d=4,o=5,b=120:c,e,g\""));
+        return fail(QCoreApplication::translate("RtttlImport", "expected NAME:DEFAULTS:NOTES, e.g. \"Beep:d=4,o=5,b=120:c,e,g\""));
 
     RtttlTune tune;
     tune.name = sections.at(0).trimmed();
@@ -49,7 +50,7 @@ std::optional<RtttlTune> parseRtttl(const QString &text, QString *error)
         const int value = eq > 0 ? item.mid(eq + 1).trimmed().toInt(&ok) : 0;
         const QString key = item.left(eq).trimmed();
         if (!ok)
-            return fail(QStringLiteral("default \"%1\" is not KEY=NUMBER").arg(raw.trimmed()));
+            return fail(QCoreApplication::translate("RtttlImport", "default \"%1\" is not KEY=NUMBER").arg(raw.trimmed()));
         if (key == "d" && validDuration(value))
             defDuration = value;
         else if (key == "o" && validOctave(value))
@@ -57,13 +58,13 @@ std::optional<RtttlTune> parseRtttl(const QString &text, QString *error)
         else if (key == "b" && value >= 1 && value <= 900)
             bpm = value;
         else
-            return fail(QStringLiteral("default \"%1\" is not valid (d: 1..32, o: 4..7, b: 1..900)")
+            return fail(QCoreApplication::translate("RtttlImport", "default \"%1\" is not valid (d: 1..32, o: 4..7, b: 1..900)")
                             .arg(raw.trimmed()));
     }
 
     const QStringList items = sections.at(2).split(',', Qt::SkipEmptyParts);
     if (items.isEmpty())
-        return fail(QStringLiteral("the tune has no notes"));
+        return fail(QCoreApplication::translate("RtttlImport", "the tune has no notes"));
     for (qsizetype i = 0; i < items.size(); ++i) {
         const QString item = items.at(i).trimmed().toLower();
         qsizetype pos = 0;
@@ -76,20 +77,20 @@ std::optional<RtttlTune> parseRtttl(const QString &text, QString *error)
             return digits ? v : -1;
         };
         auto bad = [&](const QString &why) {
-            return fail(QStringLiteral("note %1 \"%2\": %3").arg(i + 1).arg(items.at(i).trimmed(), why));
+            return fail(QCoreApplication::translate("RtttlImport", "note %1 \"%2\": %3").arg(i + 1).arg(items.at(i).trimmed(), why));
         };
         int duration = readNumber();
         if (duration == -1)
             duration = defDuration;
         else if (!validDuration(duration))
-            return bad(QStringLiteral("duration must be 1, 2, 4, 8, 16 or 32"));
+            return bad(QCoreApplication::translate("RtttlImport", "duration must be 1, 2, 4, 8, 16 or 32"));
         if (pos >= item.size())
-            return bad(QStringLiteral("no note letter"));
+            return bad(QCoreApplication::translate("RtttlImport", "no note letter"));
         const QChar letter = item.at(pos++);
         const bool pause = letter == 'p';
         int semitone = pause ? 0 : letterSemitone(letter);
         if (semitone < 0)
-            return bad(QStringLiteral("\"%1\" is not a note (a..g, h) or pause (p)").arg(letter));
+            return bad(QCoreApplication::translate("RtttlImport", "\"%1\" is not a note (a..g, h) or pause (p)").arg(letter));
         if (pos < item.size() && item.at(pos) == '#') {
             ++semitone;
             ++pos;
@@ -103,13 +104,13 @@ std::optional<RtttlTune> parseRtttl(const QString &text, QString *error)
         if (octave == -1)
             octave = defOctave;
         else if (!validOctave(octave))
-            return bad(QStringLiteral("octave must be 4..7"));
+            return bad(QCoreApplication::translate("RtttlImport", "octave must be 4..7"));
         if (pos < item.size() && item.at(pos) == '.') {
             dotted = true;
             ++pos;
         }
         if (pos != item.size())
-            return bad(QStringLiteral("unexpected \"%1\"").arg(item.mid(pos)));
+            return bad(QCoreApplication::translate("RtttlImport", "unexpected \"%1\"").arg(item.mid(pos)));
 
         // A whole note lasts four beats.
         double seconds = 60.0 / bpm * 4.0 / duration;
@@ -117,7 +118,7 @@ std::optional<RtttlTune> parseRtttl(const QString &text, QString *error)
             seconds *= 1.5;
         const long d64 = std::lround(seconds * 64.0);
         if (d64 < 1 || d64 > 255)
-            return bad(QStringLiteral("lasts %1/64 s at %2 beats per minute; a note lasts 1..255").arg(d64).arg(bpm));
+            return bad(QCoreApplication::translate("RtttlImport", "lasts %1/64 s at %2 beats per minute; a note lasts 1..255").arg(d64).arg(bpm));
         const int midi = pause ? oi::kRestNote : 12 * (octave + 1) + semitone;
         tune.notes.append({std::uint8_t(midi), std::uint8_t(d64)});
     }

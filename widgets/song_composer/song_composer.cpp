@@ -12,6 +12,7 @@
 #include <QBuffer>
 #include <QComboBox>
 #include <QDir>
+#include <QEvent>
 #include <QDoubleSpinBox>
 #include <QFileDialog>
 #include <QFileInfo>
@@ -52,20 +53,77 @@ SongComposer::SongComposer(QWidget *parent) : QWidget(parent), m_songs(16)
     m_previewAvailable = !QMediaDevices::defaultAudioOutput().isNull();
     auto *preview = static_cast<QPushButton *>(control("preview"));
     preview->setEnabled(m_previewAvailable);
+    retranslateUi();
+    setProfile(*m_profile);
+}
+
+void SongComposer::changeEvent(QEvent *event)
+{
+    if (event->type() == QEvent::LanguageChange)
+        retranslateUi();
+    QWidget::changeEvent(event);
+}
+
+void SongComposer::setButtonText(const QString &name, const QString &text, const QString &tip)
+{
+    auto *b = static_cast<QPushButton *>(control(name));
+    b->setText(text);
+    b->setToolTip(tip);
+}
+
+void SongComposer::retranslateUi()
+{
+    m_slotLabel->setText(tr("Song slot:"));
+    m_tabs->setAccessibleName(tr("Song slots"));
+    setButtonText("add", tr("Add note"), tr("Add a note after the selected one"));
+    setButtonText("remove", tr("Remove note"), tr("Remove the selected note"));
+    m_semitones->setSuffix(tr(" st"));
+    m_semitones->setToolTip(tr("Semitones to transpose by; negative is down"));
+    m_semitones->setAccessibleName(tr("Semitones"));
+    setButtonText("transpose", tr("Transpose"), tr("Move every note by the semitones shown"));
+    m_factor->setToolTip(tr("Multiply every duration: 2 plays twice as slow, 0.5 twice as fast"));
+    m_factor->setAccessibleName(tr("Duration factor"));
+    setButtonText("scale", tr("Scale durations"), m_factor->toolTip());
+    m_table->setHorizontalHeaderLabels({tr("Note"), tr("1/64 s"), tr("ms")});
+    m_table->setToolTip(tr("Note: a name such as C#5, a MIDI number 31..127 or \"rest\". "
+                           "Duration in 1/64 s (0..255) or in milliseconds."));
+    m_table->setAccessibleName(tr("Notes"));
+    m_table->setAccessibleDescription(tr("One row a note: the note, its duration in 1/64 s and in ms. "
+                                         "Arrow keys move, F2 or typing edits a cell."));
+    setButtonText("upload", tr("Upload slot"), tr("Send this slot's song to the robot (140)"));
+    setButtonText("upload-all", tr("Upload all"), tr("Send every slot that has notes (140)"));
+    setButtonText("play", tr("Play"), tr("Play this slot on the robot (141)"));
+    setButtonText("preview", m_sink ? tr("Stop preview") : tr("Preview"), tr("Play this slot on the computer"));
+    m_shape->setItemText(0, tr("Square tone"));
+    m_shape->setItemText(1, tr("Sine tone"));
+    m_shape->setToolTip(tr("How Preview and Export WAV sound; the robot's speaker sounds closer to square"));
+    m_shape->setAccessibleName(tr("Tone for Preview and Export WAV"));
+    setButtonText("load", tr("Load…"), tr("Replace the songs with a song file"));
+    setButtonText("save", tr("Save…"), tr("Save the songs as JSON"));
+    setButtonText("examples", tr("Examples"), tr("Put an example song in this slot"));
+    setButtonText("rtttl", tr("Import RTTTL…"), tr("Notes from a ring-tone text"));
+    setButtonText("midi", tr("Import MIDI…"), tr("The melody of a MIDI file"));
+    setButtonText("wav", tr("Export WAV…"), tr("This slot as a WAV sound file"));
     m_audioStatus->setText(m_previewAvailable
                                ? tr("Preview plays on %1.").arg(QMediaDevices::defaultAudioOutput().description())
                                : tr("No audio output device on this computer, so Preview is off. "
                                     "Export WAV still works."));
-    setProfile(*m_profile);
+    refreshPlaying();
+    refresh(); // the totals, the tab texts and the word for rests in the list
 }
 
-SongComposer::~SongComposer() { stopPreview(); }
-
-QPushButton *SongComposer::addButton(const QString &name, const QString &text, const QString &tip)
+SongComposer::~SongComposer()
 {
-    auto *b = new QPushButton(text, this);
+    // A cell still being edited is committed while the children go away;
+    // by then there is no composer to take it.
+    disconnect(m_table, nullptr, this, nullptr);
+    stopPreview();
+}
+
+QPushButton *SongComposer::addButton(const QString &name)
+{
+    auto *b = new QPushButton(this);
     b->setObjectName(name);
-    b->setToolTip(tip);
     m_controls.insert(name, b);
     return b;
 }
@@ -75,7 +133,8 @@ void SongComposer::buildUi()
     auto *layout = new QVBoxLayout(this);
 
     auto *slotRow = new QHBoxLayout;
-    slotRow->addWidget(new QLabel(tr("Song slot:"), this));
+    m_slotLabel = new QLabel(this);
+    slotRow->addWidget(m_slotLabel);
     m_tabs = new QTabBar(this);
     m_tabs->setObjectName("slotTabs");
     m_tabs->setExpanding(false);
@@ -85,15 +144,13 @@ void SongComposer::buildUi()
 
     // Editing tools for the current slot.
     auto *editRow = new QHBoxLayout;
-    QPushButton *add = addButton("add", tr("Add note"), tr("Add a note after the selected one"));
-    QPushButton *remove = addButton("remove", tr("Remove note"), tr("Remove the selected note"));
+    QPushButton *add = addButton("add");
+    QPushButton *remove = addButton("remove");
     m_semitones = new QSpinBox(this);
     m_semitones->setObjectName("semitones");
     m_semitones->setRange(-48, 48);
     m_semitones->setValue(12);
-    m_semitones->setSuffix(tr(" st"));
-    m_semitones->setToolTip(tr("Semitones to transpose by; negative is down"));
-    QPushButton *transpose = addButton("transpose", tr("Transpose"), tr("Move every note by the semitones shown"));
+    QPushButton *transpose = addButton("transpose");
     m_factor = new QDoubleSpinBox(this);
     m_factor->setObjectName("durationFactor");
     m_factor->setRange(0.1, 10.0);
@@ -101,8 +158,7 @@ void SongComposer::buildUi()
     m_factor->setDecimals(2);
     m_factor->setValue(0.5);
     m_factor->setPrefix(QStringLiteral("× "));
-    m_factor->setToolTip(tr("Multiply every duration: 2 plays twice as slow, 0.5 twice as fast"));
-    QPushButton *scale = addButton("scale", tr("Scale durations"), m_factor->toolTip());
+    QPushButton *scale = addButton("scale");
     editRow->addWidget(add);
     editRow->addWidget(remove);
     editRow->addSpacing(12);
@@ -116,13 +172,12 @@ void SongComposer::buildUi()
 
     m_table = new QTableWidget(0, 3, this);
     m_table->setObjectName("noteTable");
-    m_table->setHorizontalHeaderLabels({tr("Note"), tr("1/64 s"), tr("ms")});
     m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
     m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
     m_table->setSelectionMode(QAbstractItemView::SingleSelection);
-    m_table->setToolTip(tr("Note: a name such as C#5, a MIDI number 31..127 or \"rest\". "
-                           "Duration in 1/64 s (0..255) or in milliseconds."));
-    m_table->setMinimumWidth(230);
+    // Tab leaves the list; the arrow keys move between cells.
+    m_table->setTabKeyNavigation(false);
+    m_table->setMinimumWidth(m_table->fontMetrics().horizontalAdvance(QLatin1Char('M')) * 18);
     m_roll = new PianoRoll(this);
     m_roll->setObjectName("pianoRoll");
     auto *splitter = new QSplitter(Qt::Horizontal, this);
@@ -149,15 +204,15 @@ void SongComposer::buildUi()
     layout->addLayout(statusRow);
 
     auto *robotRow = new QHBoxLayout;
-    QPushButton *upload = addButton("upload", tr("Upload slot"), tr("Send this slot's song to the robot (140)"));
-    QPushButton *uploadAll = addButton("upload-all", tr("Upload all"), tr("Send every slot that has notes (140)"));
-    QPushButton *play = addButton("play", tr("Play"), tr("Play this slot on the robot (141)"));
-    QPushButton *preview = addButton("preview", tr("Preview"), tr("Play this slot on the computer"));
+    QPushButton *upload = addButton("upload");
+    QPushButton *uploadAll = addButton("upload-all");
+    QPushButton *play = addButton("play");
+    QPushButton *preview = addButton("preview");
     m_shape = new QComboBox(this);
     m_shape->setObjectName("toneShape");
-    m_shape->addItem(tr("Square tone"));
-    m_shape->addItem(tr("Sine tone"));
-    m_shape->setToolTip(tr("How Preview and Export WAV sound; the robot's speaker sounds closer to square"));
+    m_shape->setSizeAdjustPolicy(QComboBox::AdjustToContents); // its texts change with the language
+    m_shape->addItem(QString());
+    m_shape->addItem(QString());
     for (QWidget *w : {static_cast<QWidget *>(upload), static_cast<QWidget *>(uploadAll),
                        static_cast<QWidget *>(play)})
         robotRow->addWidget(w);
@@ -168,16 +223,16 @@ void SongComposer::buildUi()
     layout->addLayout(robotRow);
 
     auto *fileRow = new QHBoxLayout;
-    QPushButton *load = addButton("load", tr("Load…"), tr("Replace the songs with a song file"));
-    QPushButton *save = addButton("save", tr("Save…"), tr("Save the songs as JSON"));
-    QPushButton *examples = addButton("examples", tr("Examples"), tr("Put an example song in this slot"));
+    QPushButton *load = addButton("load");
+    QPushButton *save = addButton("save");
+    QPushButton *examples = addButton("examples");
     auto *menu = new QMenu(examples);
     for (const QString &name : exampleNames())
         menu->addAction(exampleTitle(name), this, [this, name] { loadExample(name); });
     examples->setMenu(menu);
-    QPushButton *rtttl = addButton("rtttl", tr("Import RTTTL…"), tr("Notes from a ring-tone text"));
-    QPushButton *midi = addButton("midi", tr("Import MIDI…"), tr("The melody of a MIDI file"));
-    QPushButton *wav = addButton("wav", tr("Export WAV…"), tr("This slot as a WAV sound file"));
+    QPushButton *rtttl = addButton("rtttl");
+    QPushButton *midi = addButton("midi");
+    QPushButton *wav = addButton("wav");
     for (QWidget *w : {static_cast<QWidget *>(load), static_cast<QWidget *>(save),
                        static_cast<QWidget *>(examples), static_cast<QWidget *>(rtttl),
                        static_cast<QWidget *>(midi), static_cast<QWidget *>(wav)})
@@ -281,7 +336,7 @@ void SongComposer::refreshTabs()
     for (int slot = 0; slot < slotCount(); ++slot) {
         const int n = int(m_songs.at(slot).notes.size());
         m_tabs->setTabText(slot, n ? tr("%1 (%2)").arg(slot).arg(n) : QString::number(slot));
-        m_tabs->setTabToolTip(slot, n == 1 ? tr("Song %1: 1 note").arg(slot) : tr("Song %1: %2 notes").arg(slot).arg(n));
+        m_tabs->setTabToolTip(slot, n == 1 ? tr("Song %1: 1 note").arg(slot) : tr("Song %1: %n notes", nullptr, n).arg(slot));
     }
 }
 
@@ -336,7 +391,7 @@ void SongComposer::refresh()
     const int count = int(song.notes.size());
     m_total->setText(tr("Slot %1: %2, %3 s (%4/64 s)")
                          .arg(currentSlot())
-                         .arg(count == 1 ? tr("1 note") : tr("%1 notes").arg(count))
+                         .arg(count == 1 ? tr("1 note") : tr("%n notes", nullptr, count))
                          .arg(song.seconds(), 0, 'f', 2)
                          .arg(song.totalDuration64()));
     control("remove")->setEnabled(!song.notes.empty());
@@ -374,7 +429,8 @@ void SongComposer::onItemChanged(QTableWidgetItem *item)
     if (item->column() == NoteColumn) {
         const QString lower = text.toLower();
         const auto midi = oi::parseMidiNoteName(text.toStdString());
-        if (lower == "rest" || lower == "r")
+        // The word shown for rests is accepted in the user's language too.
+        if (lower == "rest" || lower == "r" || lower == noteLabel(oi::SongNote{oi::kRestNote, 0}).toLower())
             note.midi = oi::kRestNote;
         else if (midi && *midi >= oi::kLowestNote && *midi <= oi::kHighestNote)
             note.midi = std::uint8_t(*midi);
@@ -536,38 +592,48 @@ bool SongComposer::playCurrentSlot()
 void SongComposer::setSnapshot(const oi::SensorSnapshot &snapshot)
 {
     if (!snapshot.has(37)) {
-        m_playing->setText(tr("Playing: unknown (packet 37 not streamed)"));
-        m_progress->setVisible(false);
-        m_roll->setPlayhead(-1);
+        m_playState = PlayState::Unknown;
         m_wasPlaying = false;
+        refreshPlaying();
         return;
     }
-    const bool playing = snapshot.songPlaying();
+    if (!snapshot.songPlaying()) {
+        m_playState = PlayState::Stopped;
+        m_wasPlaying = false;
+        refreshPlaying();
+        return;
+    }
     const int slot = snapshot.has(36) ? snapshot.songNumber() : -1;
-    if (!playing) {
-        m_playing->setText(tr("No song playing"));
-        m_progress->setVisible(false);
-        m_roll->setPlayhead(-1);
-        m_wasPlaying = false;
-        return;
-    }
     if (!m_wasPlaying || slot != m_playingSlot)
         m_playClock.start();
     m_wasPlaying = true;
     m_playingSlot = slot;
+    m_playState = PlayState::Playing;
     // The robot reports only that a song plays; the position is estimated
     // from the time since it started and this composer's copy of the song.
+    m_playedSeconds = m_playClock.elapsed() / 1000.0;
+    refreshPlaying();
+}
+
+void SongComposer::refreshPlaying()
+{
+    const int slot = m_playingSlot;
     const int total64 = slot >= 0 && slot < m_songs.size() ? m_songs.at(slot).totalDuration64() : 0;
-    const double elapsed = m_playClock.elapsed() / 1000.0, total = total64 / 64.0;
-    m_progress->setVisible(total > 0);
-    if (total > 0) {
-        m_progress->setValue(int(std::min(1.0, elapsed / total) * 1000));
-        m_playing->setText(tr("Playing song %1: %2 of %3 s").arg(slot).arg(std::min(elapsed, total), 0, 'f', 1)
-                               .arg(total, 0, 'f', 1));
-    } else {
-        m_playing->setText(tr("Playing song %1").arg(slot));
+    const double total = total64 / 64.0, played = std::min(m_playedSeconds, total);
+    switch (m_playState) {
+    case PlayState::NoSnapshot: m_playing->clear(); break;
+    case PlayState::Unknown: m_playing->setText(tr("Playing: unknown (packet 37 not streamed)")); break;
+    case PlayState::Stopped: m_playing->setText(tr("No song playing")); break;
+    case PlayState::Playing:
+        m_playing->setText(total > 0 ? tr("Playing song %1: %2 of %3 s").arg(slot).arg(played, 0, 'f', 1).arg(total, 0, 'f', 1)
+                                     : tr("Playing song %1").arg(slot));
+        break;
     }
-    m_roll->setPlayhead(slot == currentSlot() ? int(std::min(elapsed, total) * 64) : -1);
+    const bool playing = m_playState == PlayState::Playing;
+    m_progress->setVisible(playing && total > 0);
+    if (playing && total > 0)
+        m_progress->setValue(int(played / total * 1000));
+    m_roll->setPlayhead(playing && slot == currentSlot() ? int(played * 64) : -1);
 }
 
 bool SongComposer::saveSongs(const QString &path)

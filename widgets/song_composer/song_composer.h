@@ -82,9 +82,16 @@ public:
 signals:
     void sendRequested(const QByteArray &bytes);
 
+protected:
+    void changeEvent(QEvent *event) override;
+
 private:
     enum class Tone { Info, Warning, Error };
+    // What packets 36 and 37 last said, kept so the line can be rewritten.
+    enum class PlayState { NoSnapshot, Unknown, Stopped, Playing };
     void buildUi();
+    void retranslateUi();
+    void refreshPlaying();
     void showMessage(const QString &text, Tone tone);
     void refresh();
     void refreshTabs();
@@ -97,7 +104,8 @@ private:
     void togglePreview();
     void stopPreview();
     ToneShape toneShape() const;
-    QPushButton *addButton(const QString &name, const QString &text, const QString &tip);
+    QPushButton *addButton(const QString &name);
+    void setButtonText(const QString &name, const QString &text, const QString &tip);
 
     const oi::RobotProfile *m_profile = &oi::profile(oi::ProfileId::Create2);
     SongSlots m_songs; // all 16 possible slots; those past the profile's are kept but hidden
@@ -110,12 +118,15 @@ private:
     QDoubleSpinBox *m_factor = nullptr;
     QComboBox *m_shape = nullptr;
     QLabel *m_total = nullptr;
+    QLabel *m_slotLabel = nullptr;
     QLabel *m_message = nullptr;
     QLabel *m_playing = nullptr;
     QLabel *m_audioStatus = nullptr;
     QProgressBar *m_progress = nullptr;
     QHash<QString, QWidget *> m_controls;
 
+    PlayState m_playState = PlayState::NoSnapshot;
+    double m_playedSeconds = 0;
     bool m_wasPlaying = false;
     int m_playingSlot = -1;
     QElapsedTimer m_playClock;

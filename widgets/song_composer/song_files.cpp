@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "song_files.h"
 
+#include <QCoreApplication>
 #include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -49,20 +50,20 @@ std::optional<SongSlots> songsFromJson(const QByteArray &json, int slotCount, QS
     QJsonParseError parseError;
     const QJsonDocument doc = QJsonDocument::fromJson(json, &parseError);
     if (parseError.error != QJsonParseError::NoError)
-        return fail(QStringLiteral("Not a JSON file: %1 at offset %2")
+        return fail(QCoreApplication::translate("SongFiles", "Not a JSON file: %1 at offset %2")
                         .arg(parseError.errorString())
                         .arg(parseError.offset));
     if (!doc.isObject())
-        return fail(QStringLiteral("Not a song file: the top level is not an object"));
+        return fail(QCoreApplication::translate("SongFiles", "Not a song file: the top level is not an object"));
     const QJsonObject root = doc.object();
     if (root.value("format").toString() != QLatin1String(kSongFileFormat))
-        return fail(QStringLiteral("Not a song file: \"format\" is not \"%1\"").arg(kSongFileFormat));
+        return fail(QCoreApplication::translate("SongFiles", "Not a song file: \"format\" is not \"%1\"").arg(kSongFileFormat));
     if (!root.value("version").isDouble() || root.value("version").toDouble() != kSongFileVersion)
-        return fail(QStringLiteral("Song file version %1 is not supported; only version %2 is")
+        return fail(QCoreApplication::translate("SongFiles", "Song file version %1 is not supported; only version %2 is")
                         .arg(root.value("version").toVariant().toString())
                         .arg(kSongFileVersion));
     if (!root.value("songs").isArray())
-        return fail(QStringLiteral("Song file has no \"songs\" list"));
+        return fail(QCoreApplication::translate("SongFiles", "Song file has no \"songs\" list"));
 
     SongSlots songs(slotCount);
     QList<bool> seen(slotCount, false);
@@ -71,18 +72,18 @@ std::optional<SongSlots> songsFromJson(const QByteArray &json, int slotCount, QS
         const QJsonObject entry = list.at(i).toObject();
         const auto slot = wholeNumber(entry.value("slot"), 0, slotCount - 1);
         if (!slot)
-            return fail(QStringLiteral("Song %1: slot %2 is outside 0..%3 for this robot")
+            return fail(QCoreApplication::translate("SongFiles", "Song %1: slot %2 is outside 0..%3 for this robot")
                             .arg(i)
                             .arg(entry.value("slot").toVariant().toString())
                             .arg(slotCount - 1));
         if (seen[*slot])
-            return fail(QStringLiteral("Song %1: slot %2 appears twice").arg(i).arg(*slot));
+            return fail(QCoreApplication::translate("SongFiles", "Song %1: slot %2 appears twice").arg(i).arg(*slot));
         seen[*slot] = true;
         if (!entry.value("notes").isArray())
-            return fail(QStringLiteral("Song in slot %1 has no \"notes\" list").arg(*slot));
+            return fail(QCoreApplication::translate("SongFiles", "Song in slot %1 has no \"notes\" list").arg(*slot));
         const QJsonArray notes = entry.value("notes").toArray();
         if (notes.isEmpty() || notes.size() > oi::kMaxSongNotes)
-            return fail(QStringLiteral("Song in slot %1 has %2 notes; a song has 1..%3")
+            return fail(QCoreApplication::translate("SongFiles", "Song in slot %1 has %2 notes; a song has 1..%3")
                             .arg(*slot)
                             .arg(notes.size())
                             .arg(oi::kMaxSongNotes));
@@ -92,7 +93,7 @@ std::optional<SongSlots> songsFromJson(const QByteArray &json, int slotCount, QS
             const auto midi = pair.size() == 2 ? wholeNumber(pair.at(0), 0, 127) : std::nullopt;
             const auto duration = pair.size() == 2 ? wholeNumber(pair.at(1), 0, 255) : std::nullopt;
             if (!midi || !duration)
-                return fail(QStringLiteral("Slot %1, note %2: expected [note 0..127, duration 0..255], got %3")
+                return fail(QCoreApplication::translate("SongFiles", "Slot %1, note %2: expected [note 0..127, duration 0..255], got %3")
                                 .arg(*slot)
                                 .arg(k + 1)
                                 .arg(QString::fromUtf8(QJsonDocument(pair).toJson(QJsonDocument::Compact))));
@@ -108,7 +109,7 @@ bool writeSongsFile(const QString &path, const SongSlots &songs, QString *error)
     QSaveFile file(path);
     if (!file.open(QIODevice::WriteOnly) || file.write(songsToJson(songs)) < 0 || !file.commit()) {
         if (error)
-            *error = QStringLiteral("Could not save %1: %2").arg(path, file.errorString());
+            *error = QCoreApplication::translate("SongFiles", "Could not save %1: %2").arg(path, file.errorString());
         return false;
     }
     return true;
@@ -119,7 +120,7 @@ std::optional<SongSlots> readSongsFile(const QString &path, int slotCount, QStri
     QFile file(path);
     if (!file.open(QIODevice::ReadOnly)) {
         if (error)
-            *error = QStringLiteral("Could not open %1: %2").arg(path, file.errorString());
+            *error = QCoreApplication::translate("SongFiles", "Could not open %1: %2").arg(path, file.errorString());
         return std::nullopt;
     }
     return songsFromJson(file.readAll(), slotCount, error);
@@ -135,7 +136,7 @@ std::optional<oi::Song> transposed(const oi::Song &song, int semitones, QString 
         const int moved = n.midi + semitones;
         if (moved < oi::kLowestNote || moved > oi::kHighestNote) {
             if (error)
-                *error = QStringLiteral("Cannot transpose by %1: note %2 (%3) would become %4, outside %5..%6")
+                *error = QCoreApplication::translate("SongFiles", "Cannot transpose by %1: note %2 (%3) would become %4, outside %5..%6")
                              .arg(semitones)
                              .arg(i + 1)
                              .arg(noteLabel(n))
@@ -157,7 +158,7 @@ std::optional<oi::Song> durationsScaled(const oi::Song &song, double factor, QSt
         const long scaled = std::lround(n.duration * factor);
         if (scaled < 0 || scaled > 255 || (n.duration > 0 && scaled == 0)) {
             if (error)
-                *error = QStringLiteral("Cannot scale durations by %1: note %2 would last %3/64 s; "
+                *error = QCoreApplication::translate("SongFiles", "Cannot scale durations by %1: note %2 would last %3/64 s; "
                                         "durations must stay within 1..255")
                              .arg(factor)
                              .arg(i + 1)
@@ -183,7 +184,7 @@ SongSlots splitIntoSongs(const QList<oi::SongNote> &notes)
 
 QString noteLabel(const oi::SongNote &note)
 {
-    return note.isRest() ? QStringLiteral("rest") : QString::fromStdString(oi::midiNoteName(note.midi));
+    return note.isRest() ? QCoreApplication::translate("SongFiles", "rest") : QString::fromStdString(oi::midiNoteName(note.midi));
 }
 
 QString durationMs(int duration64)

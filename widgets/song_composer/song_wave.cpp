@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "song_wave.h"
 
+#include <QCoreApplication>
 #include <QSaveFile>
 
 #include <cmath>
@@ -78,7 +79,7 @@ bool writeSongWav(const QString &path, const oi::Song &song, ToneShape shape, QS
     QSaveFile file(path);
     if (!file.open(QIODevice::WriteOnly) || file.write(songWav(song, shape)) < 0 || !file.commit()) {
         if (error)
-            *error = QStringLiteral("Could not save %1: %2").arg(path, file.errorString());
+            *error = QCoreApplication::translate("SongWave", "Could not save %1: %2").arg(path, file.errorString());
         return false;
     }
     return true;

@@ -3,6 +3,7 @@
 // executable: noise on the line, stalls, the robot going away and coming
 // back, and the bytes a close leaves on the line.
 #include "link_test_support.h"
+#include "sim_process.h"
 
 #include "robot_link_thread.h"
 
@@ -28,54 +29,6 @@ using oilink::RobotLinkThread;
 namespace {
 
 constexpr int kTimeoutMs = 10000;
-
-// One roomba-sim process; the first line it prints says where it is.
-class SimProcess {
-public:
-    SimProcess() = default;
-    SimProcess(const SimProcess &) = delete;
-    SimProcess &operator=(const SimProcess &) = delete;
-    ~SimProcess() { stop(); }
-
-    bool start(const QStringList &args)
-    {
-        m_process.setProgram(QStringLiteral(ROOMBA_SIM_PATH));
-        m_process.setArguments(args);
-        m_process.setProcessChannelMode(QProcess::ForwardedErrorChannel);
-        // Should this test die, the robot goes with it.
-        m_process.setChildProcessModifier([] { ::prctl(PR_SET_PDEATHSIG, SIGTERM); });
-        m_process.start();
-        if (!m_process.waitForStarted(kTimeoutMs))
-            return false;
-        const QDeadlineTimer deadline(kTimeoutMs);
-        while (!m_process.canReadLine() && !deadline.hasExpired()
-               && m_process.state() == QProcess::Running)
-            m_process.waitForReadyRead(100);
-        m_where = QString::fromUtf8(m_process.readLine()).trimmed();
-        return !m_where.isEmpty();
-    }
-    QString where() const { return m_where; }
-    quint16 tcpPort() const { return static_cast<quint16>(m_where.section(QLatin1Char(':'), -1).toUInt()); }
-    void signal(int number) { ::kill(static_cast<pid_t>(m_process.processId()), number); }
-    void kill()
-    {
-        m_process.kill();
-        m_process.waitForFinished(kTimeoutMs);
-    }
-    void stop()
-    {
-        if (m_process.state() == QProcess::NotRunning)
-            return;
-        signal(SIGCONT);
-        m_process.terminate();
-        if (!m_process.waitForFinished(kTimeoutMs))
-            kill();
-    }
-
-private:
-    QProcess m_process;
-    QString m_where;
-};
 
 // A pseudo-terminal whose master side the test holds, playing the robot.
 class PtyPair {

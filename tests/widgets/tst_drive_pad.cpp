@@ -4,6 +4,7 @@
 // the session (mouse, keys, stops) is in tests/app/tst_teleop.cpp.
 #include "drive_pad.h"
 
+#include "keyboard_focus.h"
 #include "pseudo_translation.h"
 
 #include <QApplication>
@@ -12,26 +13,6 @@
 #include <QPushButton>
 #include <QSlider>
 #include <QTest>
-
-namespace {
-
-// The widgets Tab visits, once round, starting at `first`.
-QList<QWidget *> tabCycle(QWidget *window, QWidget *first)
-{
-    window->activateWindow();
-    first->setFocus(Qt::TabFocusReason);
-    QList<QWidget *> visited{QApplication::focusWidget()};
-    for (int i = 0; i < 20; ++i) {
-        QTest::keyClick(QApplication::focusWidget(), Qt::Key_Tab);
-        QWidget *focus = QApplication::focusWidget();
-        if (!focus || focus == visited.first())
-            break;
-        visited << focus;
-    }
-    return visited;
-}
-
-} // namespace
 
 class TestDrivePad : public QObject {
     Q_OBJECT

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "motors_panel.h"
 
+#include "keyboard_focus.h"
 #include "pseudo_translation.h"
 
 #include <QApplication>
@@ -27,22 +28,6 @@ QByteArray bytes(std::initializer_list<int> values)
     for (int v : values)
         out.append(char(v));
     return out;
-}
-
-// The widgets Tab visits, once round, starting at `first`.
-QList<QWidget *> tabCycle(QWidget *window, QWidget *first)
-{
-    window->activateWindow();
-    first->setFocus(Qt::TabFocusReason);
-    QList<QWidget *> visited{QApplication::focusWidget()};
-    for (int i = 0; i < 100; ++i) {
-        QTest::keyClick(QApplication::focusWidget(), Qt::Key_Tab);
-        QWidget *focus = QApplication::focusWidget();
-        if (!focus || focus == visited.first())
-            break;
-        visited << focus;
-    }
-    return visited;
 }
 
 // Reading order: the next row down, or further right on the same row.

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "odometry_map.h"
 
+#include "keyboard_focus.h"
 #include "pseudo_translation.h"
 
 #include <QApplication>
@@ -51,22 +52,6 @@ bool near(double a, double b, double tolerance = 1e-9) { return std::abs(a - b) 
 QColor pixelAt(const QImage &image, QPointF widgetPoint, qreal ratio)
 {
     return image.pixelColor((widgetPoint * ratio).toPoint());
-}
-
-// The widgets Tab visits, once round, starting at `first`.
-QList<QWidget *> tabCycle(QWidget *window, QWidget *first)
-{
-    window->activateWindow();
-    first->setFocus(Qt::TabFocusReason);
-    QList<QWidget *> visited{QApplication::focusWidget()};
-    for (int i = 0; i < 30; ++i) {
-        QTest::keyClick(QApplication::focusWidget(), Qt::Key_Tab);
-        QWidget *focus = QApplication::focusWidget();
-        if (!focus || focus == visited.first())
-            break;
-        visited << focus;
-    }
-    return visited;
 }
 
 } // namespace

@@ -4,6 +4,7 @@
 
 #include "command_catalog.h"
 #include "profile_probe.h"
+#include "recording_file.h"
 #include "robot_link_thread.h"
 #include "script_assembler.h"
 #include "stream_parser.h"
@@ -58,6 +59,10 @@ Commands:
       sensors and query-list are printed as JSON lines like decode.
         roomba-ctl send --port /dev/ttyUSB0 safe
         roomba-ctl send --sim sensors 7
+  csv RECORDING
+      Print a recording (.oirec, from the dashboard or its --record) as CSV:
+      time_s, then one column per packet, one row per stream frame. A damaged
+      recording prints up to the damage and says where it is on stderr.
   --help, --version
 
 ROBOT is one of:
@@ -588,6 +593,26 @@ int sendToRobot(int argc, char **argv, const std::vector<std::string> &args)
     return status;
 }
 
+int recordingCsv(const std::vector<std::string> &args, std::size_t from)
+{
+    if (args.size() != from + 1)
+        return fail("csv needs one recording file");
+    QString error;
+    const std::optional<oilink::Recording> recording =
+        oilink::Recording::load(QString::fromStdString(args[from]), &error);
+    if (!recording)
+        return fail(error.toStdString());
+    QTextStream out(stdout);
+    recording->writeCsv(out);
+    out.flush();
+    if (recording->damage()) {
+        std::cerr << "roomba-ctl: " << args[from] << ": damaged: " << recording->damage()->describe().toStdString()
+                  << "\n";
+        return 1;
+    }
+    return 0;
+}
+
 } // namespace
 
 int main(int argc, char **argv)
@@ -618,5 +643,7 @@ int main(int argc, char **argv)
         return streamSensors(argc, argv, args);
     if (command == "send")
         return sendToRobot(argc, argv, args);
+    if (command == "csv")
+        return recordingCsv(args, 1);
     return fail("unknown command '" + command + "'; try --help");
 }

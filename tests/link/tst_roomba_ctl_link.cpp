@@ -1,7 +1,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // roomba-ctl sensors and send, as a script sees them: against the built-in
 // virtual robot and against roomba-sim on a pseudo-terminal.
+#include "recording_file.h"
+#include "robot_link.h"
+
 #include <QDeadlineTimer>
+#include <QFile>
+#include <QSignalSpy>
+#include <QTemporaryDir>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -186,6 +192,49 @@ private slots:
         QVERIFY(help.contains(QStringLiteral("sensors ROBOT")));
         QVERIFY(help.contains(QStringLiteral("send ROBOT")));
         QVERIFY(help.contains(QStringLiteral("--tcp HOST:PORT")));
+    }
+
+    void csvOfARecording()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath("run.oirec");
+        {
+            oilink::RobotLink link;
+            QSignalSpy snapshots(&link, &oilink::RobotLink::snapshot);
+            link.open(oilink::LinkSettings::virtualRobotOf(oi::ProfileId::Create1, oi::ProfileId::Create1));
+            link.startRecording(path);
+            QTRY_VERIFY_WITH_TIMEOUT(snapshots.size() >= 20, 10000);
+            link.close();
+        }
+        QString error;
+        const std::optional<oilink::Recording> recording = oilink::Recording::load(path, &error);
+        QVERIFY2(recording, qPrintable(error));
+
+        const Outcome whole = run({"csv", path});
+        QCOMPARE(whole.status, 0);
+        const QStringList &lines = whole.lines;
+        QCOMPARE(lines.size(), int(recording->frames().size()) + 1);
+        QVERIFY(lines[0].startsWith("time_s,bumps_wheel_drops,wall"));
+        QVERIFY(whole.err.isEmpty());
+
+        // Cut in the middle of a record: the rows before it, and where the damage is.
+        QFile file(path);
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        const QByteArray bytes = file.readAll();
+        const QString cut = dir.filePath("cut.oirec");
+        QFile out(cut);
+        QVERIFY(out.open(QIODevice::WriteOnly));
+        out.write(bytes.left(bytes.size() / 2));
+        out.close();
+        const Outcome damaged = run({"csv", cut});
+        QCOMPARE(damaged.status, 1);
+        QVERIFY2(damaged.err.contains("damaged: truncated record at byte"), qPrintable(damaged.err));
+        QVERIFY(damaged.lines.size() >= 2);
+        QVERIFY(damaged.lines.size() < lines.size());
+
+        const Outcome missing = run({"csv", dir.filePath("none.oirec")});
+        QCOMPARE(missing.status, 2);
+        QVERIFY(missing.err.startsWith("roomba-ctl: " + dir.filePath("none.oirec")));
     }
 };
 

@@ -1216,6 +1216,17 @@ verwendet es die im Menü „Ansicht“ gewählte Sprache oder die des Systems.
     </message>
 </context>
 <context>
+    <name>LinkSettings</name>
+    <message>
+        <source>replay of %1</source>
+        <translation>Wiedergabe von %1</translation>
+    </message>
+    <message>
+        <source>virtual %1</source>
+        <translation>virtueller %1</translation>
+    </message>
+</context>
+<context>
     <name>MainWindow</name>
     <message>
         <source>Connection</source>
@@ -2085,6 +2096,65 @@ GPL-3.0-or-later.</translation>
     <message>
         <source>A song holds at most %1 notes; remove one first</source>
         <translation>Ein Lied fasst höchstens %1 Noten; entfernen Sie zuerst eine</translation>
+    </message>
+</context>
+<context>
+    <name>Recording</name>
+    <message>
+        <source>cannot create the recording</source>
+        <translation>Aufzeichnung kann nicht angelegt werden</translation>
+    </message>
+    <message>
+        <source>cannot write</source>
+        <translation>Schreiben nicht möglich</translation>
+    </message>
+    <message>
+        <source>%1 at byte %2 (record %3, after %4 s)</source>
+        <translation>%1 bei Byte %2 (Eintrag %3, nach %4 s)</translation>
+    </message>
+    <message>
+        <source>not a Roomba Dashboard recording</source>
+        <translation>keine Aufzeichnung von Roomba Dashboard</translation>
+    </message>
+    <message>
+        <source>recording format version %1; this program reads version %2</source>
+        <translation>Aufzeichnungsformat Version %1; dieses Programm liest Version %2</translation>
+    </message>
+    <message>
+        <source>the header is truncated</source>
+        <translation>der Kopf ist abgeschnitten</translation>
+    </message>
+    <message>
+        <source>the header is not valid JSON: %1</source>
+        <translation>der Kopf ist kein gültiges JSON: %1</translation>
+    </message>
+    <message>
+        <source>truncated record</source>
+        <translation>abgeschnittener Eintrag</translation>
+    </message>
+    <message>
+        <source>checksum mismatch</source>
+        <translation>Prüfsumme falsch</translation>
+    </message>
+    <message>
+        <source>time runs backwards</source>
+        <translation>die Zeit läuft rückwärts</translation>
+    </message>
+    <message>
+        <source>unreadable stream description</source>
+        <translation>unlesbare Beschreibung des Datenstroms</translation>
+    </message>
+    <message>
+        <source>unknown record type 0x%1</source>
+        <translation>unbekannter Eintragstyp 0x%1</translation>
+    </message>
+    <message>
+        <source>damaged before the stream started: %1</source>
+        <translation>beschädigt, bevor der Datenstrom begann: %1</translation>
+    </message>
+    <message>
+        <source>the recording holds no sensor stream</source>
+        <translation>die Aufzeichnung enthält keinen Sensordatenstrom</translation>
     </message>
 </context>
 <context>
@@ -3588,6 +3658,128 @@ Gesendet: %2</translation>
     <message>
         <source>%1, stale</source>
         <translation>%1, veraltet</translation>
+    </message>
+</context>
+<context>
+    <name>oilink::ReplayTransport</name>
+    <message>
+        <source>replay of %1</source>
+        <translation>Wiedergabe von %1</translation>
+    </message>
+</context>
+<context>
+    <name>oilink::RobotLink</name>
+    <message>
+        <source>%1: no data: is the robot on, and is the baud right?</source>
+        <translation>%1: keine Daten: Ist der Roboter eingeschaltet und stimmt die Baudrate?</translation>
+    </message>
+    <message>
+        <source>no packet fits in a 15 ms frame at %1 baud</source>
+        <translation>bei %1 Baud passt kein Paket in einen 15-ms-Frame</translation>
+    </message>
+    <message>
+        <source>%1: cannot stream: %2</source>
+        <translation>%1: Datenstrom nicht möglich: %2</translation>
+    </message>
+    <message>
+        <source>not connected: the command was not sent</source>
+        <translation>nicht verbunden: der Befehl wurde nicht gesendet</translation>
+    </message>
+    <message>
+        <source>%1: write failed</source>
+        <translation>%1: Schreiben fehlgeschlagen</translation>
+    </message>
+    <message>
+        <source>not connected: the sensor query was not sent</source>
+        <translation>nicht verbunden: die Sensorabfrage wurde nicht gesendet</translation>
+    </message>
+    <message>
+        <source>sensor query: %1 is not a packet or group of the %2</source>
+        <translation>Sensorabfrage: %1 ist kein Paket und keine Gruppe des %2</translation>
+    </message>
+    <message>
+        <source>sensor query: ask for 1 to 255 packets</source>
+        <translation>Sensorabfrage: 1 bis 255 Pakete anfordern</translation>
+    </message>
+    <message>
+        <source>%1: the stream did not pause; the sensor query was not sent</source>
+        <translation>%1: der Datenstrom hielt nicht an; die Sensorabfrage wurde nicht gesendet</translation>
+    </message>
+    <message>
+        <source>%1: no reply to the sensor query</source>
+        <translation>%1: keine Antwort auf die Sensorabfrage</translation>
+    </message>
+</context>
+<context>
+    <name>oilink::RobotLinkThread</name>
+    <message>
+        <source>not connected: the command was not sent</source>
+        <translation>nicht verbunden: der Befehl wurde nicht gesendet</translation>
+    </message>
+    <message>
+        <source>not connected: the sensor query was not sent</source>
+        <translation>nicht verbunden: die Sensorabfrage wurde nicht gesendet</translation>
+    </message>
+</context>
+<context>
+    <name>oilink::SerialTransport</name>
+    <message>
+        <source>%1: no such port</source>
+        <translation>%1: Anschluss nicht vorhanden</translation>
+    </message>
+    <message>
+        <source>%1: permission denied (is your user in the dialout group?)</source>
+        <translation>%1: Zugriff verweigert (ist Ihr Benutzer in der Gruppe dialout?)</translation>
+    </message>
+    <message>
+        <source>%1: port busy (another program has it open)</source>
+        <translation>%1: Anschluss belegt (ein anderes Programm hat ihn geöffnet)</translation>
+    </message>
+    <message>
+        <source>%1: cannot open: %2</source>
+        <translation>%1: kann nicht geöffnet werden: %2</translation>
+    </message>
+    <message>
+        <source>the port went away</source>
+        <translation>der Anschluss ist verschwunden</translation>
+    </message>
+</context>
+<context>
+    <name>oilink::TcpTransport</name>
+    <message>
+        <source>connection refused</source>
+        <translation>Verbindung abgelehnt</translation>
+    </message>
+    <message>
+        <source>no such host</source>
+        <translation>Rechner nicht gefunden</translation>
+    </message>
+    <message>
+        <source>no answer (timed out)</source>
+        <translation>keine Antwort (Zeitüberschreitung)</translation>
+    </message>
+    <message>
+        <source>network unreachable</source>
+        <translation>Netzwerk nicht erreichbar</translation>
+    </message>
+    <message>
+        <source>%1: the bridge closed the connection</source>
+        <translation>%1: die Brücke hat die Verbindung geschlossen</translation>
+    </message>
+    <message>
+        <source>%1: connection lost (%2)</source>
+        <translation>%1: Verbindung verloren (%2)</translation>
+    </message>
+    <message>
+        <source>%1: no answer (timed out)</source>
+        <translation>%1: keine Antwort (Zeitüberschreitung)</translation>
+    </message>
+</context>
+<context>
+    <name>oilink::VirtualTransport</name>
+    <message>
+        <source>virtual %1</source>
+        <translation>virtueller %1</translation>
     </message>
 </context>
 </TS>

@@ -1216,6 +1216,17 @@ en su menú Ver, o el del sistema.
     </message>
 </context>
 <context>
+    <name>LinkSettings</name>
+    <message>
+        <source>replay of %1</source>
+        <translation>reproducción de %1</translation>
+    </message>
+    <message>
+        <source>virtual %1</source>
+        <translation>%1 virtual</translation>
+    </message>
+</context>
+<context>
     <name>MainWindow</name>
     <message>
         <source>Connection</source>
@@ -2085,6 +2096,65 @@ GPL-3.0-or-later.</translation>
     <message>
         <source>A song holds at most %1 notes; remove one first</source>
         <translation>Una canción admite como máximo %1 notas; elimine una primero</translation>
+    </message>
+</context>
+<context>
+    <name>Recording</name>
+    <message>
+        <source>cannot create the recording</source>
+        <translation>no se puede crear la grabación</translation>
+    </message>
+    <message>
+        <source>cannot write</source>
+        <translation>no se puede escribir</translation>
+    </message>
+    <message>
+        <source>%1 at byte %2 (record %3, after %4 s)</source>
+        <translation>%1 en el byte %2 (registro %3, tras %4 s)</translation>
+    </message>
+    <message>
+        <source>not a Roomba Dashboard recording</source>
+        <translation>no es una grabación de Roomba Dashboard</translation>
+    </message>
+    <message>
+        <source>recording format version %1; this program reads version %2</source>
+        <translation>formato de grabación versión %1; este programa lee la versión %2</translation>
+    </message>
+    <message>
+        <source>the header is truncated</source>
+        <translation>la cabecera está truncada</translation>
+    </message>
+    <message>
+        <source>the header is not valid JSON: %1</source>
+        <translation>la cabecera no es JSON válido: %1</translation>
+    </message>
+    <message>
+        <source>truncated record</source>
+        <translation>registro truncado</translation>
+    </message>
+    <message>
+        <source>checksum mismatch</source>
+        <translation>suma de comprobación incorrecta</translation>
+    </message>
+    <message>
+        <source>time runs backwards</source>
+        <translation>el tiempo retrocede</translation>
+    </message>
+    <message>
+        <source>unreadable stream description</source>
+        <translation>descripción del flujo de datos ilegible</translation>
+    </message>
+    <message>
+        <source>unknown record type 0x%1</source>
+        <translation>tipo de registro desconocido 0x%1</translation>
+    </message>
+    <message>
+        <source>damaged before the stream started: %1</source>
+        <translation>dañada antes de que empezara el flujo de datos: %1</translation>
+    </message>
+    <message>
+        <source>the recording holds no sensor stream</source>
+        <translation>la grabación no contiene ningún flujo de sensores</translation>
     </message>
 </context>
 <context>
@@ -3588,6 +3658,128 @@ Enviado: %2</translation>
     <message>
         <source>%1, stale</source>
         <translation>%1, obsoleto</translation>
+    </message>
+</context>
+<context>
+    <name>oilink::ReplayTransport</name>
+    <message>
+        <source>replay of %1</source>
+        <translation>reproducción de %1</translation>
+    </message>
+</context>
+<context>
+    <name>oilink::RobotLink</name>
+    <message>
+        <source>%1: no data: is the robot on, and is the baud right?</source>
+        <translation>%1: sin datos: ¿está encendido el robot y es correcta la velocidad en baudios?</translation>
+    </message>
+    <message>
+        <source>no packet fits in a 15 ms frame at %1 baud</source>
+        <translation>ningún paquete cabe en una trama de 15 ms a %1 baudios</translation>
+    </message>
+    <message>
+        <source>%1: cannot stream: %2</source>
+        <translation>%1: no se puede transmitir: %2</translation>
+    </message>
+    <message>
+        <source>not connected: the command was not sent</source>
+        <translation>sin conexión: la orden no se envió</translation>
+    </message>
+    <message>
+        <source>%1: write failed</source>
+        <translation>%1: error de escritura</translation>
+    </message>
+    <message>
+        <source>not connected: the sensor query was not sent</source>
+        <translation>sin conexión: la consulta de sensores no se envió</translation>
+    </message>
+    <message>
+        <source>sensor query: %1 is not a packet or group of the %2</source>
+        <translation>consulta de sensores: %1 no es un paquete ni un grupo del %2</translation>
+    </message>
+    <message>
+        <source>sensor query: ask for 1 to 255 packets</source>
+        <translation>consulta de sensores: pida de 1 a 255 paquetes</translation>
+    </message>
+    <message>
+        <source>%1: the stream did not pause; the sensor query was not sent</source>
+        <translation>%1: el flujo de datos no se pausó; la consulta de sensores no se envió</translation>
+    </message>
+    <message>
+        <source>%1: no reply to the sensor query</source>
+        <translation>%1: sin respuesta a la consulta de sensores</translation>
+    </message>
+</context>
+<context>
+    <name>oilink::RobotLinkThread</name>
+    <message>
+        <source>not connected: the command was not sent</source>
+        <translation>sin conexión: la orden no se envió</translation>
+    </message>
+    <message>
+        <source>not connected: the sensor query was not sent</source>
+        <translation>sin conexión: la consulta de sensores no se envió</translation>
+    </message>
+</context>
+<context>
+    <name>oilink::SerialTransport</name>
+    <message>
+        <source>%1: no such port</source>
+        <translation>%1: no existe el puerto</translation>
+    </message>
+    <message>
+        <source>%1: permission denied (is your user in the dialout group?)</source>
+        <translation>%1: permiso denegado (¿está su usuario en el grupo dialout?)</translation>
+    </message>
+    <message>
+        <source>%1: port busy (another program has it open)</source>
+        <translation>%1: puerto ocupado (otro programa lo tiene abierto)</translation>
+    </message>
+    <message>
+        <source>%1: cannot open: %2</source>
+        <translation>%1: no se puede abrir: %2</translation>
+    </message>
+    <message>
+        <source>the port went away</source>
+        <translation>el puerto ha desaparecido</translation>
+    </message>
+</context>
+<context>
+    <name>oilink::TcpTransport</name>
+    <message>
+        <source>connection refused</source>
+        <translation>conexión rechazada</translation>
+    </message>
+    <message>
+        <source>no such host</source>
+        <translation>no existe el equipo</translation>
+    </message>
+    <message>
+        <source>no answer (timed out)</source>
+        <translation>sin respuesta (tiempo agotado)</translation>
+    </message>
+    <message>
+        <source>network unreachable</source>
+        <translation>red inaccesible</translation>
+    </message>
+    <message>
+        <source>%1: the bridge closed the connection</source>
+        <translation>%1: el puente cerró la conexión</translation>
+    </message>
+    <message>
+        <source>%1: connection lost (%2)</source>
+        <translation>%1: conexión perdida (%2)</translation>
+    </message>
+    <message>
+        <source>%1: no answer (timed out)</source>
+        <translation>%1: sin respuesta (tiempo agotado)</translation>
+    </message>
+</context>
+<context>
+    <name>oilink::VirtualTransport</name>
+    <message>
+        <source>virtual %1</source>
+        <translation>%1 virtual</translation>
     </message>
 </context>
 </TS>

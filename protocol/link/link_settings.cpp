@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "link_settings.h"
 
+#include <QCoreApplication>
 #include <QFileInfo>
 
 namespace oilink {
@@ -13,13 +14,13 @@ QString LinkSettings::describe() const
     case TransportKind::Tcp:
         return host + QLatin1Char(':') + QString::number(tcpPort);
     case TransportKind::Replay:
-        return QStringLiteral("replay of ") + QFileInfo(replayPath).fileName();
+        return QCoreApplication::translate("LinkSettings", "replay of %1").arg(QFileInfo(replayPath).fileName());
     case TransportKind::Virtual:
         break;
     }
     const std::string_view name = oi::profile(virtualRobot).name;
-    return QStringLiteral("virtual ")
-           + QString::fromUtf8(name.data(), static_cast<qsizetype>(name.size()));
+    return QCoreApplication::translate("LinkSettings", "virtual %1")
+        .arg(QString::fromUtf8(name.data(), static_cast<qsizetype>(name.size())));
 }
 
 LinkSettings LinkSettings::serial(const QString &path, std::optional<oi::ProfileId> profile, int baud)

@@ -3,6 +3,7 @@
 
 #include "stream_parser.h"
 
+#include <QCoreApplication>
 #include <QDateTime>
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -68,7 +69,7 @@ bool RecordingWriter::open(const QString &path, QJsonObject header)
     m_written = 0;
     m_file.setFileName(path);
     if (!m_file.open(QIODevice::WriteOnly | QIODevice::Truncate))
-        return fail(QStringLiteral("cannot create the recording"));
+        return fail(QCoreApplication::translate("Recording", "cannot create the recording"));
     header.insert(QStringLiteral("format"), QStringLiteral("Roomba Dashboard recording"));
     header.insert(QStringLiteral("version"), recording::kVersion);
     header.insert(QStringLiteral("started"), QDateTime::currentDateTimeUtc().toString(Qt::ISODateWithMs));
@@ -78,7 +79,7 @@ bool RecordingWriter::open(const QString &path, QJsonObject header)
     appendLittleEndian<quint32>(head, static_cast<quint32>(json.size()));
     head += json;
     if (m_file.write(head) != head.size())
-        return fail(QStringLiteral("cannot write"));
+        return fail(QCoreApplication::translate("Recording", "cannot write"));
     m_written = head.size();
     m_clock.start();
     m_lastFlushMs = 0;
@@ -100,7 +101,7 @@ bool RecordingWriter::append(recording::RecordKind kind, const QByteArray &bytes
         record += payload;
         appendLittleEndian<quint16>(record, qChecksum(record));
         if (m_file.write(record) != record.size())
-            return fail(QStringLiteral("cannot write"));
+            return fail(QCoreApplication::translate("Recording", "cannot write"));
         m_written += record.size();
         if (bytes.isEmpty())
             break;
@@ -128,7 +129,7 @@ bool RecordingWriter::flush()
         return false;
     m_lastFlushMs = m_clock.elapsed();
     if (!m_file.flush())
-        return fail(QStringLiteral("cannot write"));
+        return fail(QCoreApplication::translate("Recording", "cannot write"));
     return true;
 }
 
@@ -144,7 +145,7 @@ void RecordingWriter::close()
 
 QString RecordingDamage::describe() const
 {
-    return QStringLiteral("%1 at byte %2 (record %3, after %4 s)")
+    return QCoreApplication::translate("Recording", "%1 at byte %2 (record %3, after %4 s)")
         .arg(reason)
         .arg(byteOffset)
         .arg(recordIndex)
@@ -164,19 +165,19 @@ std::optional<Recording> Recording::load(const QString &path, QString *error)
     const QByteArray data = file.readAll();
     const qsizetype prefix = recording::kMagicSize + kVersionSize + kHeaderLengthSize;
     if (data.size() < prefix || !data.startsWith(QByteArray(recording::kMagic, recording::kMagicSize)))
-        return refuse(QStringLiteral("not a Roomba Dashboard recording"));
+        return refuse(QCoreApplication::translate("Recording", "not a Roomba Dashboard recording"));
     const auto version = readLittleEndian<quint16>(data.constData() + recording::kMagicSize);
     if (version != recording::kVersion)
-        return refuse(QStringLiteral("recording format version %1; this program reads version %2")
+        return refuse(QCoreApplication::translate("Recording", "recording format version %1; this program reads version %2")
                           .arg(version)
                           .arg(recording::kVersion));
     const auto headerBytes = readLittleEndian<quint32>(data.constData() + recording::kMagicSize + kVersionSize);
     if (headerBytes > kMaxHeaderBytes || prefix + static_cast<qsizetype>(headerBytes) > data.size())
-        return refuse(QStringLiteral("the header is truncated"));
+        return refuse(QCoreApplication::translate("Recording", "the header is truncated"));
     QJsonParseError jsonError;
     const QJsonDocument header = QJsonDocument::fromJson(data.mid(prefix, headerBytes), &jsonError);
     if (!header.isObject())
-        return refuse(QStringLiteral("the header is not valid JSON: %1").arg(jsonError.errorString()));
+        return refuse(QCoreApplication::translate("Recording", "the header is not valid JSON: %1").arg(jsonError.errorString()));
 
     Recording r;
     r.m_header = header.object();
@@ -187,7 +188,7 @@ std::optional<Recording> Recording::load(const QString &path, QString *error)
     };
     while (at < data.size()) {
         if (data.size() - at < kRecordHeadSize + kCrcSize) {
-            damaged(QStringLiteral("truncated record"));
+            damaged(QCoreApplication::translate("Recording", "truncated record"));
             break;
         }
         const char *head = data.constData() + at;
@@ -195,16 +196,16 @@ std::optional<Recording> Recording::load(const QString &path, QString *error)
         const auto timeUs = readLittleEndian<qint64>(head + 1);
         const auto length = readLittleEndian<quint16>(head + 9);
         if (data.size() - at < kRecordHeadSize + length + kCrcSize) {
-            damaged(QStringLiteral("truncated record"));
+            damaged(QCoreApplication::translate("Recording", "truncated record"));
             break;
         }
         const QByteArrayView covered(head, kRecordHeadSize + length);
         if (readLittleEndian<quint16>(head + kRecordHeadSize + length) != qChecksum(covered)) {
-            damaged(QStringLiteral("checksum mismatch"));
+            damaged(QCoreApplication::translate("Recording", "checksum mismatch"));
             break;
         }
         if (timeUs < lastTimeUs) {
-            damaged(QStringLiteral("time runs backwards"));
+            damaged(QCoreApplication::translate("Recording", "time runs backwards"));
             break;
         }
         const QByteArray payload(head + kRecordHeadSize, length);
@@ -227,12 +228,12 @@ std::optional<Recording> Recording::load(const QString &path, QString *error)
                 r.m_stream.packets << id.toInt();
             if (!r.m_stream.profile || r.m_stream.packets.isEmpty()) {
                 r.m_stream = {};
-                damaged(QStringLiteral("unreadable stream description"));
+                damaged(QCoreApplication::translate("Recording", "unreadable stream description"));
             }
             break;
         }
         default:
-            damaged(QStringLiteral("unknown record type 0x%1").arg(static_cast<quint8>(head[0]), 2, 16, QLatin1Char('0')));
+            damaged(QCoreApplication::translate("Recording", "unknown record type 0x%1").arg(static_cast<quint8>(head[0]), 2, 16, QLatin1Char('0')));
             break;
         }
         if (r.m_damage)
@@ -244,8 +245,8 @@ std::optional<Recording> Recording::load(const QString &path, QString *error)
     r.m_durationUs = lastTimeUs;
     if (!r.m_stream.profile) {
         if (r.m_damage)
-            return refuse(QStringLiteral("damaged before the stream started: %1").arg(r.m_damage->describe()));
-        return refuse(QStringLiteral("the recording holds no sensor stream"));
+            return refuse(QCoreApplication::translate("Recording", "damaged before the stream started: %1").arg(r.m_damage->describe()));
+        return refuse(QCoreApplication::translate("Recording", "the recording holds no sensor stream"));
     }
     r.indexFrames();
     return r;

@@ -19,7 +19,7 @@ ReplayTransport::~ReplayTransport() = default;
 
 QString ReplayTransport::describe() const
 {
-    return QStringLiteral("replay of %1").arg(QFileInfo(m_path).fileName());
+    return tr("replay of %1").arg(QFileInfo(m_path).fileName());
 }
 
 void ReplayTransport::open()

@@ -296,7 +296,7 @@ void RobotLink::onProbeFailed()
 
 QString RobotLink::noDataMessage() const
 {
-    return m_settings.describe() + QStringLiteral(": no data: is the robot on, and is the baud right?");
+    return tr("%1: no data: is the robot on, and is the baud right?").arg(m_settings.describe());
 }
 
 // --- The stream ---
@@ -311,9 +311,9 @@ void RobotLink::startStream()
     if (!command) {
         // A packet list that cannot work will not start working: stop here.
         const QString why = m_streamIds.empty()
-                                ? QStringLiteral("no packet fits in a 15 ms frame at %1 baud").arg(rate)
+                                ? tr("no packet fits in a 15 ms frame at %1 baud").arg(rate)
                                 : fromStd(command.error().describe());
-        reportError(m_settings.describe() + QStringLiteral(": cannot stream: ") + why, false);
+        reportError(tr("%1: cannot stream: %2").arg(m_settings.describe(), why), false);
         dropTransport();
         m_statsTick.stop();
         setState(LinkState::Closed);
@@ -421,7 +421,7 @@ void RobotLink::onNoData()
 void RobotLink::send(const QByteArray &bytes)
 {
     if (!m_transport || !m_transportOpen) {
-        reportError(QStringLiteral("not connected: the command was not sent"), false);
+        reportError(tr("not connected: the command was not sent"), false);
         return;
     }
     writeBytes(bytes);
@@ -430,7 +430,7 @@ void RobotLink::send(const QByteArray &bytes)
 bool RobotLink::writeBytes(const QByteArray &bytes)
 {
     if (!m_transport || !m_transport->write(bytes)) {
-        reportError(m_settings.describe() + QStringLiteral(": write failed"));
+        reportError(tr("%1: write failed").arg(m_settings.describe()));
         return false;
     }
     m_totals.bytesSent += static_cast<quint64>(bytes.size());
@@ -442,13 +442,13 @@ bool RobotLink::writeBytes(const QByteArray &bytes)
 void RobotLink::querySensors(const QList<int> &packetIds)
 {
     if (!m_profile || !m_transport || !m_transportOpen || (m_probe && m_probe->isRunning())) {
-        reportError(QStringLiteral("not connected: the sensor query was not sent"), false);
+        reportError(tr("not connected: the sensor query was not sent"), false);
         return;
     }
     std::vector<std::uint8_t> ids;
     for (int id : packetIds) {
         if (!m_profile->isValidSensorId(id)) {
-            reportError(QStringLiteral("sensor query: %1 is not a packet or group of the %2")
+            reportError(tr("sensor query: %1 is not a packet or group of the %2")
                             .arg(id)
                             .arg(fromStd(m_profile->name)),
                         false);
@@ -457,7 +457,7 @@ void RobotLink::querySensors(const QList<int> &packetIds)
         ids.push_back(static_cast<std::uint8_t>(id));
     }
     if (ids.empty() || ids.size() > 255) {
-        reportError(QStringLiteral("sensor query: ask for 1 to 255 packets"), false);
+        reportError(tr("sensor query: ask for 1 to 255 packets"), false);
         return;
     }
     m_queries.push_back(std::move(ids));
@@ -508,12 +508,12 @@ void RobotLink::onReply(const oi::SensorSnapshot &reply)
 void RobotLink::onQueryTimeout()
 {
     if (m_queryPhase == QueryPhase::Pausing) {
-        reportError(m_settings.describe() + QStringLiteral(": the stream did not pause; the sensor query was not sent"),
+        reportError(tr("%1: the stream did not pause; the sensor query was not sent").arg(m_settings.describe()),
                     false);
     } else {
         m_parser.cancelReplies();
         dropPartialInput();
-        reportError(m_settings.describe() + QStringLiteral(": no reply to the sensor query"), false);
+        reportError(tr("%1: no reply to the sensor query").arg(m_settings.describe()), false);
     }
     finishQuery();
 }

@@ -90,7 +90,7 @@ void RobotLinkThread::send(const QByteArray &bytes)
     if (m_link && m_thread.isRunning())
         QMetaObject::invokeMethod(m_link, [link = m_link.data(), bytes] { link->send(bytes); }, Qt::QueuedConnection);
     else
-        emit errorOccurred(QStringLiteral("not connected: the command was not sent"));
+        emit errorOccurred(tr("not connected: the command was not sent"));
 }
 
 void RobotLinkThread::querySensors(const QList<int> &packetIds)
@@ -99,7 +99,7 @@ void RobotLinkThread::querySensors(const QList<int> &packetIds)
         QMetaObject::invokeMethod(m_link, [link = m_link.data(), packetIds] { link->querySensors(packetIds); },
                                   Qt::QueuedConnection);
     else
-        emit errorOccurred(QStringLiteral("not connected: the sensor query was not sent"));
+        emit errorOccurred(tr("not connected: the sensor query was not sent"));
 }
 
 void RobotLinkThread::requestVirtualRobotPose()

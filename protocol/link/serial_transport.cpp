@@ -47,20 +47,20 @@ QString SerialTransport::openFailure() const
     const QFileInfo info(m_path);
     switch (m_port.error()) {
     case QSerialPort::DeviceNotFoundError:
-        return m_path + QStringLiteral(": no such port");
+        return tr("%1: no such port").arg(m_path);
     case QSerialPort::PermissionError:
         // The port reports a lock held by another program and a device
         // node we may not open with the same code; the node's mode tells
         // them apart.
         if (info.exists() && !(info.isReadable() && info.isWritable()))
-            return m_path + QStringLiteral(": permission denied (is your user in the dialout group?)");
-        return m_path + QStringLiteral(": port busy (another program has it open)");
+            return tr("%1: permission denied (is your user in the dialout group?)").arg(m_path);
+        return tr("%1: port busy (another program has it open)").arg(m_path);
     default:
         break;
     }
     if (!info.exists())
-        return m_path + QStringLiteral(": no such port");
-    return m_path + QStringLiteral(": cannot open: ") + m_port.errorString();
+        return tr("%1: no such port").arg(m_path);
+    return tr("%1: cannot open: %2").arg(m_path, m_port.errorString());
 }
 
 void SerialTransport::close()
@@ -110,7 +110,7 @@ void SerialTransport::onError(QSerialPort::SerialPortError error)
     case QSerialPort::WriteError:
         // A pseudo-terminal whose other end closed reads as EIO, a pulled
         // USB adapter as a resource error: either way the port is gone.
-        fail(QStringLiteral("the port went away"));
+        fail(tr("the port went away"));
         break;
     default:
         m_port.clearError();
@@ -121,7 +121,7 @@ void SerialTransport::onError(QSerialPort::SerialPortError error)
 void SerialTransport::checkPathStillThere()
 {
     if (m_port.isOpen() && !QFileInfo::exists(m_path))
-        fail(QStringLiteral("the port went away"));
+        fail(tr("the port went away"));
 }
 
 void SerialTransport::fail(const QString &reason)

@@ -78,10 +78,10 @@ void TcpTransport::onError(QAbstractSocket::SocketError error)
     if (m_connecting) {
         QString reason;
         switch (error) {
-        case QAbstractSocket::ConnectionRefusedError: reason = QStringLiteral("connection refused"); break;
-        case QAbstractSocket::HostNotFoundError: reason = QStringLiteral("no such host"); break;
-        case QAbstractSocket::SocketTimeoutError: reason = QStringLiteral("no answer (timed out)"); break;
-        case QAbstractSocket::NetworkError: reason = QStringLiteral("network unreachable"); break;
+        case QAbstractSocket::ConnectionRefusedError: reason = tr("connection refused"); break;
+        case QAbstractSocket::HostNotFoundError: reason = tr("no such host"); break;
+        case QAbstractSocket::SocketTimeoutError: reason = tr("no answer (timed out)"); break;
+        case QAbstractSocket::NetworkError: reason = tr("network unreachable"); break;
         default: reason = m_socket.errorString(); break;
         }
         close();
@@ -90,10 +90,9 @@ void TcpTransport::onError(QAbstractSocket::SocketError error)
     }
     if (!m_connected)
         return;
-    const QString message = describe()
-                            + (error == QAbstractSocket::RemoteHostClosedError
-                                   ? QStringLiteral(": the bridge closed the connection")
-                                   : QStringLiteral(": connection lost (") + m_socket.errorString() + ')');
+    const QString message = error == QAbstractSocket::RemoteHostClosedError
+                                ? tr("%1: the bridge closed the connection").arg(describe())
+                                : tr("%1: connection lost (%2)").arg(describe(), m_socket.errorString());
     close();
     emit errorOccurred(message);
     emit closed();
@@ -105,7 +104,7 @@ void TcpTransport::onDisconnected()
     if (!m_connected)
         return;
     close();
-    emit errorOccurred(describe() + QStringLiteral(": the bridge closed the connection"));
+    emit errorOccurred(tr("%1: the bridge closed the connection").arg(describe()));
     emit closed();
 }
 
@@ -121,7 +120,7 @@ void TcpTransport::giveUpConnecting()
     if (!m_connecting)
         return;
     close();
-    emit errorOccurred(describe() + QStringLiteral(": no answer (timed out)"));
+    emit errorOccurred(tr("%1: no answer (timed out)").arg(describe()));
 }
 
 } // namespace oilink

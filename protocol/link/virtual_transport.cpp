@@ -15,7 +15,7 @@ VirtualTransport::~VirtualTransport() = default;
 QString VirtualTransport::describe() const
 {
     const std::string_view name = oi::profile(m_profile).name;
-    return QStringLiteral("virtual ") + QString::fromUtf8(name.data(), static_cast<qsizetype>(name.size()));
+    return tr("virtual %1").arg(QString::fromUtf8(name.data(), static_cast<qsizetype>(name.size())));
 }
 
 void VirtualTransport::open()

@@ -329,6 +329,18 @@ private slots:
         window.setLanguage(QString()); // the system's, which is English here
     }
 
+    void linkErrorsSpeakTheLanguage()
+    {
+        MainWindow window;
+        window.show();
+        window.setLanguage("de");
+        window.start(oilink::LinkSettings::serial("/dev/roomba-does-not-exist", oi::ProfileId::Create2));
+        QTRY_VERIFY_WITH_TIMEOUT(!window.connectionBar()->errorText().isEmpty(), 10000);
+        const QString error = window.connectionBar()->errorText();
+        QVERIFY2(error.contains("/dev/roomba-does-not-exist: Anschluss nicht vorhanden"), qPrintable(error));
+        window.setLanguage(QString());
+    }
+
     void f6VisitsEveryDock()
     {
         MainWindow window;

@@ -598,6 +598,9 @@ private slots:
         composer.show();
         QVERIFY(QTest::qWaitForWindowExposed(&composer));
         composer.noteTable()->setCurrentCell(2, 0);
+        QVERIFY(composer.transposeCurrent(2));
+        QVERIFY(composer.transposeCurrent(-2));
+        QCOMPARE(composer.message(), QString("Transposed slot 0 by -2 semitone(s)."));
         const QStringList allowed; // the note names are in the table, which is the user's
         {
             ScopedPseudoTranslation pseudo;
@@ -620,12 +623,15 @@ private slots:
             const QString header = composer.noteTable()->model()->headerData(0, Qt::Horizontal).toString();
             QVERIFY2(header.contains(kPseudoOpen), qPrintable(header));
             QVERIFY(composer.pianoRoll()->accessibleDescription().contains(kPseudoOpen));
+            // The last message is written again in the new language.
+            QCOMPARE(composer.message(), kPseudoOpen + QString("Transposed slot 0 by -2 semitone(s).") + kPseudoClose);
         }
         QCoreApplication::processEvents();
         QCOMPARE(static_cast<QPushButton *>(composer.control("upload"))->text(), QString("Upload slot"));
         QCOMPARE(composer.noteTable()->item(1, 0)->text(), QString("rest"));
         QCOMPARE(composer.song(0), song);
         QCOMPARE(composer.slotTabs()->tabToolTip(0), QString("Song 0: 3 notes"));
+        QCOMPARE(composer.message(), QString("Transposed slot 0 by -2 semitone(s)."));
     }
 
     void fileErrorsAreTranslated()

@@ -73,6 +73,8 @@ void SongComposer::setButtonText(const QString &name, const QString &text, const
 
 void SongComposer::retranslateUi()
 {
+    if (m_messageText)
+        showMessage(m_messageText, m_messageTone);
     m_slotLabel->setText(tr("Song slot:"));
     m_tabs->setAccessibleName(tr("Song slots"));
     setButtonText("add", tr("Add note"), tr("Add a note after the selected one"));
@@ -265,7 +267,7 @@ void SongComposer::buildUi()
         m_table->setCurrentCell(index, NoteColumn);
         m_refreshing = false;
     });
-    connect(m_roll, &PianoRoll::editRefused, this, [this](const QString &why) { showMessage(why, Tone::Error); });
+    connect(m_roll, &PianoRoll::editRefused, this, [this](const QString &why) { showMessage([=, this] { return QString(why); }, Tone::Error); });
     connect(add, &QPushButton::clicked, this, &SongComposer::addNote);
     connect(remove, &QPushButton::clicked, this, &SongComposer::removeNote);
     connect(transpose, &QPushButton::clicked, this, [this] { transposeCurrent(m_semitones->value()); });
@@ -316,11 +318,10 @@ void SongComposer::setProfile(const oi::RobotProfile &profile)
     for (int slot = slotCount(); slot < m_songs.size(); ++slot)
         hidden += m_songs.at(slot).notes.empty() ? 0 : 1;
     if (hidden > 0)
-        showMessage(tr("The %1 has %2 song slots; %3 song(s) in higher slots are kept but hidden.")
+        showMessage([=, this] { return QString(tr("The %1 has %2 song slots; %3 song(s) in higher slots are kept but hidden.")
                         .arg(QString::fromUtf8(profile.name.data(), qsizetype(profile.name.size())))
                         .arg(slotCount())
-                        .arg(hidden),
-                    Tone::Warning);
+                        .arg(hidden)); }, Tone::Warning);
     refresh();
 }
 
@@ -351,12 +352,11 @@ void SongComposer::setCurrentSlot(int slot)
 bool SongComposer::setSong(int slot, const oi::Song &song)
 {
     if (slot < 0 || slot >= slotCount()) {
-        showMessage(tr("Song slot %1 is outside 0..%2 on this robot").arg(slot).arg(slotCount() - 1), Tone::Error);
+        showMessage([=, this] { return QString(tr("Song slot %1 is outside 0..%2 on this robot").arg(slot).arg(slotCount() - 1)); }, Tone::Error);
         return false;
     }
     if (int(song.notes.size()) > oi::kMaxSongNotes) {
-        showMessage(tr("A song holds at most %1 notes, not %2").arg(oi::kMaxSongNotes).arg(song.notes.size()),
-                    Tone::Error);
+        showMessage([=, this] { return QString(tr("A song holds at most %1 notes, not %2").arg(oi::kMaxSongNotes).arg(song.notes.size())); }, Tone::Error);
         return false;
     }
     m_songs[slot] = song;
@@ -400,15 +400,17 @@ void SongComposer::refresh()
     m_refreshing = false;
 }
 
-void SongComposer::showMessage(const QString &text, Tone tone)
+void SongComposer::showMessage(std::function<QString()> text, Tone tone)
 {
+    m_messageText = std::move(text);
+    m_messageTone = tone;
     QPalette pal = m_message->palette();
     const QColor colour = tone == Tone::Error     ? display::stateColor(display::State::Alert, palette())
                           : tone == Tone::Warning ? display::stateColor(display::State::Warning, palette())
                                                   : palette().color(QPalette::WindowText);
     pal.setColor(QPalette::WindowText, colour);
     m_message->setPalette(pal);
-    m_message->setText(text);
+    m_message->setText(m_messageText ? m_messageText() : QString());
 }
 
 QString SongComposer::message() const { return m_message->text(); }
@@ -456,12 +458,12 @@ void SongComposer::onItemChanged(QTableWidgetItem *item)
             note.duration = std::uint8_t(rounded);
     }
     if (!error.isEmpty()) {
-        showMessage(error, Tone::Error);
+        showMessage([=, this] { return QString(error); }, Tone::Error);
         refresh(); // puts the old value back
         return;
     }
     m_songs[slot] = song;
-    showMessage(QString(), Tone::Info);
+    showMessage({}, Tone::Info);
     refresh();
 }
 
@@ -475,7 +477,7 @@ void SongComposer::addNote()
 {
     oi::Song song = m_songs.at(currentSlot());
     if (int(song.notes.size()) >= oi::kMaxSongNotes) {
-        showMessage(tr("A song holds at most %1 notes").arg(oi::kMaxSongNotes), Tone::Error);
+        showMessage([=, this] { return QString(tr("A song holds at most %1 notes").arg(oi::kMaxSongNotes)); }, Tone::Error);
         return;
     }
     const int row = m_table->currentRow();
@@ -504,11 +506,11 @@ bool SongComposer::transposeCurrent(int semitones)
     QString error;
     const auto song = transposed(m_songs.at(currentSlot()), semitones, &error);
     if (!song) {
-        showMessage(error, Tone::Error);
+        showMessage([=, this] { return QString(error); }, Tone::Error);
         return false;
     }
     m_songs[currentSlot()] = *song;
-    showMessage(tr("Transposed slot %1 by %2 semitone(s).").arg(currentSlot()).arg(semitones), Tone::Info);
+    showMessage([=, this] { return QString(tr("Transposed slot %1 by %2 semitone(s).").arg(currentSlot()).arg(semitones)); }, Tone::Info);
     refresh();
     return true;
 }
@@ -518,11 +520,11 @@ bool SongComposer::scaleCurrentDurations(double factor)
     QString error;
     const auto song = durationsScaled(m_songs.at(currentSlot()), factor, &error);
     if (!song) {
-        showMessage(error, Tone::Error);
+        showMessage([=, this] { return QString(error); }, Tone::Error);
         return false;
     }
     m_songs[currentSlot()] = *song;
-    showMessage(tr("Durations in slot %1 multiplied by %2.").arg(currentSlot()).arg(factor), Tone::Info);
+    showMessage([=, this] { return QString(tr("Durations in slot %1 multiplied by %2.").arg(currentSlot()).arg(factor)); }, Tone::Info);
     refresh();
     return true;
 }
@@ -530,15 +532,15 @@ bool SongComposer::scaleCurrentDurations(double factor)
 bool SongComposer::send(const oi::EncodeResult &result, const QString &what)
 {
     if (!result) {
-        showMessage(tr("%1 refused: %2").arg(what, QString::fromStdString(result.error().describe())), Tone::Error);
+        showMessage([=, this] { return QString(tr("%1 refused: %2").arg(what, QString::fromStdString(result.error().describe()))); }, Tone::Error);
         return false;
     }
     const oi::Bytes &bytes = result.value();
     emit sendRequested(QByteArray(reinterpret_cast<const char *>(bytes.data()), qsizetype(bytes.size())));
     if (!result.warning.empty())
-        showMessage(tr("%1 sent. Warning: %2").arg(what, QString::fromStdString(result.warning)), Tone::Warning);
+        showMessage([=, this] { return QString(tr("%1 sent. Warning: %2").arg(what, QString::fromStdString(result.warning))); }, Tone::Warning);
     else
-        showMessage(tr("%1 sent.").arg(what), Tone::Info);
+        showMessage([=, this] { return QString(tr("%1 sent.").arg(what)); }, Tone::Info);
     return true;
 }
 
@@ -560,8 +562,7 @@ bool SongComposer::uploadAllSlots()
             continue;
         oi::EncodeResult r = encoder.song(slot, m_songs.at(slot));
         if (!r) {
-            showMessage(tr("Song %1 refused: %2").arg(slot).arg(QString::fromStdString(r.error().describe())),
-                        Tone::Error);
+            showMessage([=, this] { return QString(tr("Song %1 refused: %2").arg(slot).arg(QString::fromStdString(r.error().describe()))); }, Tone::Error);
             return false;
         }
         sent << QString::number(slot);
@@ -570,16 +571,16 @@ bool SongComposer::uploadAllSlots()
         results.append(std::move(r));
     }
     if (results.isEmpty()) {
-        showMessage(tr("Nothing to upload: every slot is empty."), Tone::Error);
+        showMessage([=, this] { return QString(tr("Nothing to upload: every slot is empty.")); }, Tone::Error);
         return false;
     }
     for (const oi::EncodeResult &r : results)
         emit sendRequested(QByteArray(reinterpret_cast<const char *>(r->data()), qsizetype(r->size())));
     const QString done = tr("Uploaded songs %1.").arg(sent.join(QStringLiteral(", ")));
     if (warnings.isEmpty())
-        showMessage(done, Tone::Info);
+        showMessage([=, this] { return QString(done); }, Tone::Info);
     else
-        showMessage(done + tr(" Warning: ") + warnings.join(QStringLiteral("; ")), Tone::Warning);
+        showMessage([=, this] { return QString(done + tr(" Warning: ") + warnings.join(QStringLiteral("; "))); }, Tone::Warning);
     return true;
 }
 
@@ -640,10 +641,10 @@ bool SongComposer::saveSongs(const QString &path)
 {
     QString error;
     if (!writeSongsFile(path, songs(), &error)) {
-        showMessage(error, Tone::Error);
+        showMessage([=, this] { return QString(error); }, Tone::Error);
         return false;
     }
-    showMessage(tr("Saved %1.").arg(QDir::toNativeSeparators(path)), Tone::Info);
+    showMessage([=, this] { return QString(tr("Saved %1.").arg(QDir::toNativeSeparators(path))); }, Tone::Info);
     return true;
 }
 
@@ -652,12 +653,12 @@ bool SongComposer::loadSongs(const QString &path)
     QString error;
     const auto loaded = readSongsFile(path, slotCount(), &error);
     if (!loaded) {
-        showMessage(error + tr(" The open songs are unchanged."), Tone::Error);
+        showMessage([=, this] { return QString(error + tr(" The open songs are unchanged.")); }, Tone::Error);
         return false;
     }
     for (int slot = 0; slot < slotCount(); ++slot)
         m_songs[slot] = loaded->at(slot);
-    showMessage(tr("Loaded %1.").arg(QDir::toNativeSeparators(path)), Tone::Info);
+    showMessage([=, this] { return QString(tr("Loaded %1.").arg(QDir::toNativeSeparators(path))); }, Tone::Info);
     refresh();
     return true;
 }
@@ -674,12 +675,11 @@ bool SongComposer::placeSongs(const SongSlots &parts, const QString &what)
 {
     const int first = currentSlot();
     if (parts.isEmpty() || first + parts.size() > slotCount()) {
-        showMessage(tr("%1 needs %2 slot(s) but only %3 are left from slot %4 on; nothing was changed.")
+        showMessage([=, this] { return QString(tr("%1 needs %2 slot(s) but only %3 are left from slot %4 on; nothing was changed.")
                         .arg(what)
                         .arg(parts.size())
                         .arg(slotCount() - first)
-                        .arg(first),
-                    Tone::Error);
+                        .arg(first)); }, Tone::Error);
         return false;
     }
     for (int i = 0; i < parts.size(); ++i)
@@ -693,7 +693,7 @@ bool SongComposer::loadExample(const QString &name)
     QString error;
     const auto loaded = readSongsFile(QStringLiteral(":/songs/%1.json").arg(name), oi::kMaxSongNotes, &error);
     if (!loaded) {
-        showMessage(error, Tone::Error);
+        showMessage([=, this] { return QString(error); }, Tone::Error);
         return false;
     }
     SongSlots parts;
@@ -702,7 +702,7 @@ bool SongComposer::loadExample(const QString &name)
             parts.append(s);
     if (!placeSongs(parts, exampleTitle(name)))
         return false;
-    showMessage(tr("%1 is in slot %2.").arg(exampleTitle(name)).arg(currentSlot()), Tone::Info);
+    showMessage([=, this] { return QString(tr("%1 is in slot %2.").arg(exampleTitle(name)).arg(currentSlot())); }, Tone::Info);
     return true;
 }
 
@@ -711,19 +711,18 @@ bool SongComposer::importRtttl(const QString &text)
     QString error;
     const auto tune = parseRtttl(text, &error);
     if (!tune) {
-        showMessage(error, Tone::Error);
+        showMessage([=, this] { return QString(error); }, Tone::Error);
         return false;
     }
     const SongSlots parts = splitIntoSongs(tune->notes);
     const QString name = tune->name.isEmpty() ? tr("The ring tone") : tune->name;
     if (!placeSongs(parts, name))
         return false;
-    showMessage(tr("%1: %2 notes in slot(s) %3..%4.")
+    showMessage([=, this] { return QString(tr("%1: %2 notes in slot(s) %3..%4.")
                     .arg(name)
                     .arg(tune->notes.size())
                     .arg(currentSlot())
-                    .arg(currentSlot() + parts.size() - 1),
-                Tone::Info);
+                    .arg(currentSlot() + parts.size() - 1)); }, Tone::Info);
     return true;
 }
 
@@ -733,7 +732,7 @@ bool SongComposer::importMidi(const QString &path)
     int shortened = 0;
     const auto notes = melodyFromMidiFile(path, &shortened, &error);
     if (!notes) {
-        showMessage(error, Tone::Error);
+        showMessage([=, this] { return QString(error); }, Tone::Error);
         return false;
     }
     SongSlots parts = splitIntoSongs(*notes);
@@ -754,7 +753,7 @@ bool SongComposer::importMidi(const QString &path)
         text += tr(" %1 notes did not fit in the remaining slots and were left out.").arg(dropped);
     if (shortened)
         text += tr(" %1 notes longer than 255/64 s were shortened to 255.").arg(shortened);
-    showMessage(text, dropped || shortened ? Tone::Warning : Tone::Info);
+    showMessage([=, this] { return QString(text); }, dropped || shortened ? Tone::Warning : Tone::Info);
     return true;
 }
 
@@ -767,15 +766,15 @@ bool SongComposer::exportWav(const QString &path)
 {
     const oi::Song &song = m_songs.at(currentSlot());
     if (song.notes.empty()) {
-        showMessage(tr("Slot %1 is empty; there is nothing to export.").arg(currentSlot()), Tone::Error);
+        showMessage([=, this] { return QString(tr("Slot %1 is empty; there is nothing to export.").arg(currentSlot())); }, Tone::Error);
         return false;
     }
     QString error;
     if (!writeSongWav(path, song, toneShape(), &error)) {
-        showMessage(error, Tone::Error);
+        showMessage([=, this] { return QString(error); }, Tone::Error);
         return false;
     }
-    showMessage(tr("Exported slot %1 to %2.").arg(currentSlot()).arg(QDir::toNativeSeparators(path)), Tone::Info);
+    showMessage([=, this] { return QString(tr("Exported slot %1 to %2.").arg(currentSlot()).arg(QDir::toNativeSeparators(path))); }, Tone::Info);
     return true;
 }
 
@@ -794,7 +793,7 @@ void SongComposer::togglePreview()
     }
     const oi::Song &song = m_songs.at(currentSlot());
     if (song.notes.empty()) {
-        showMessage(tr("Slot %1 is empty; there is nothing to preview.").arg(currentSlot()), Tone::Error);
+        showMessage([=, this] { return QString(tr("Slot %1 is empty; there is nothing to preview.").arg(currentSlot())); }, Tone::Error);
         return;
     }
     QAudioFormat format;
@@ -802,10 +801,9 @@ void SongComposer::togglePreview()
     format.setChannelCount(1);
     format.setSampleFormat(QAudioFormat::Int16);
     if (!device.isFormatSupported(format)) {
-        showMessage(tr("%1 cannot play 16-bit mono sound at %2 Hz; use Export WAV instead.")
+        showMessage([=, this] { return QString(tr("%1 cannot play 16-bit mono sound at %2 Hz; use Export WAV instead.")
                         .arg(device.description())
-                        .arg(kSongSampleRate),
-                    Tone::Error);
+                        .arg(kSongSampleRate)); }, Tone::Error);
         return;
     }
     m_previewBuffer = new QBuffer(this);

@@ -11,6 +11,8 @@
 #include <QHash>
 #include <QWidget>
 
+#include <functional>
+
 class PianoRoll;
 class QAudioSink;
 class QBuffer;
@@ -92,7 +94,8 @@ private:
     void buildUi();
     void retranslateUi();
     void refreshPlaying();
-    void showMessage(const QString &text, Tone tone);
+    // Kept as a way to write it, so the message follows a language switch.
+    void showMessage(std::function<QString()> text, Tone tone);
     void refresh();
     void refreshTabs();
     void onItemChanged(QTableWidgetItem *item);
@@ -120,6 +123,8 @@ private:
     QLabel *m_total = nullptr;
     QLabel *m_slotLabel = nullptr;
     QLabel *m_message = nullptr;
+    std::function<QString()> m_messageText;
+    Tone m_messageTone = Tone::Info;
     QLabel *m_playing = nullptr;
     QLabel *m_audioStatus = nullptr;
     QProgressBar *m_progress = nullptr;

@@ -267,7 +267,8 @@ void SongComposer::buildUi()
         m_table->setCurrentCell(index, NoteColumn);
         m_refreshing = false;
     });
-    connect(m_roll, &PianoRoll::editRefused, this, [this](const QString &why) { showMessage([=, this] { return QString(why); }, Tone::Error); });
+    connect(m_roll, &PianoRoll::editRefused, this,
+        [this](const QString& why) { showMessage([=, this] { return QString(why); }, Tone::Error); });
     connect(add, &QPushButton::clicked, this, &SongComposer::addNote);
     connect(remove, &QPushButton::clicked, this, &SongComposer::removeNote);
     connect(transpose, &QPushButton::clicked, this, [this] { transposeCurrent(m_semitones->value()); });
@@ -318,10 +319,14 @@ void SongComposer::setProfile(const oi::RobotProfile &profile)
     for (int slot = slotCount(); slot < m_songs.size(); ++slot)
         hidden += m_songs.at(slot).notes.empty() ? 0 : 1;
     if (hidden > 0)
-        showMessage([=, this] { return QString(tr("The %1 has %2 song slots; %3 song(s) in higher slots are kept but hidden.")
-                        .arg(QString::fromUtf8(profile.name.data(), qsizetype(profile.name.size())))
-                        .arg(slotCount())
-                        .arg(hidden)); }, Tone::Warning);
+        showMessage(
+            [=, this] {
+                return QString(tr("The %1 has %2 song slots; %3 song(s) in higher slots are kept but hidden.")
+                                   .arg(QString::fromUtf8(profile.name.data(), qsizetype(profile.name.size())))
+                                   .arg(slotCount())
+                                   .arg(hidden));
+            },
+            Tone::Warning);
     refresh();
 }
 
@@ -337,7 +342,8 @@ void SongComposer::refreshTabs()
     for (int slot = 0; slot < slotCount(); ++slot) {
         const int n = int(m_songs.at(slot).notes.size());
         m_tabs->setTabText(slot, n ? tr("%1 (%2)").arg(slot).arg(n) : QString::number(slot));
-        m_tabs->setTabToolTip(slot, n == 1 ? tr("Song %1: 1 note").arg(slot) : tr("Song %1: %n notes", nullptr, n).arg(slot));
+        m_tabs->setTabToolTip(
+            slot, n == 1 ? tr("Song %1: 1 note").arg(slot) : tr("Song %1: %n notes", nullptr, n).arg(slot));
     }
 }
 
@@ -352,11 +358,20 @@ void SongComposer::setCurrentSlot(int slot)
 bool SongComposer::setSong(int slot, const oi::Song &song)
 {
     if (slot < 0 || slot >= slotCount()) {
-        showMessage([=, this] { return QString(tr("Song slot %1 is outside 0..%2 on this robot").arg(slot).arg(slotCount() - 1)); }, Tone::Error);
+        showMessage(
+            [=, this] {
+                return QString(tr("Song slot %1 is outside 0..%2 on this robot").arg(slot).arg(slotCount() - 1));
+            },
+            Tone::Error);
         return false;
     }
     if (int(song.notes.size()) > oi::kMaxSongNotes) {
-        showMessage([=, this] { return QString(tr("A song holds at most %1 notes, not %2").arg(oi::kMaxSongNotes).arg(song.notes.size())); }, Tone::Error);
+        showMessage(
+            [=, this] {
+                return QString(
+                    tr("A song holds at most %1 notes, not %2").arg(oi::kMaxSongNotes).arg(song.notes.size()));
+            },
+            Tone::Error);
         return false;
     }
     m_songs[slot] = song;
@@ -477,7 +492,8 @@ void SongComposer::addNote()
 {
     oi::Song song = m_songs.at(currentSlot());
     if (int(song.notes.size()) >= oi::kMaxSongNotes) {
-        showMessage([=, this] { return QString(tr("A song holds at most %1 notes").arg(oi::kMaxSongNotes)); }, Tone::Error);
+        showMessage(
+            [=, this] { return QString(tr("A song holds at most %1 notes").arg(oi::kMaxSongNotes)); }, Tone::Error);
         return;
     }
     const int row = m_table->currentRow();
@@ -510,7 +526,9 @@ bool SongComposer::transposeCurrent(int semitones)
         return false;
     }
     m_songs[currentSlot()] = *song;
-    showMessage([=, this] { return QString(tr("Transposed slot %1 by %2 semitone(s).").arg(currentSlot()).arg(semitones)); }, Tone::Info);
+    showMessage(
+        [=, this] { return QString(tr("Transposed slot %1 by %2 semitone(s).").arg(currentSlot()).arg(semitones)); },
+        Tone::Info);
     refresh();
     return true;
 }
@@ -524,7 +542,9 @@ bool SongComposer::scaleCurrentDurations(double factor)
         return false;
     }
     m_songs[currentSlot()] = *song;
-    showMessage([=, this] { return QString(tr("Durations in slot %1 multiplied by %2.").arg(currentSlot()).arg(factor)); }, Tone::Info);
+    showMessage(
+        [=, this] { return QString(tr("Durations in slot %1 multiplied by %2.").arg(currentSlot()).arg(factor)); },
+        Tone::Info);
     refresh();
     return true;
 }
@@ -532,13 +552,19 @@ bool SongComposer::scaleCurrentDurations(double factor)
 bool SongComposer::send(const oi::EncodeResult &result, const QString &what)
 {
     if (!result) {
-        showMessage([=, this] { return QString(tr("%1 refused: %2").arg(what, QString::fromStdString(result.error().describe()))); }, Tone::Error);
+        showMessage(
+            [=, this] {
+                return QString(tr("%1 refused: %2").arg(what, QString::fromStdString(result.error().describe())));
+            },
+            Tone::Error);
         return false;
     }
     const oi::Bytes &bytes = result.value();
     emit sendRequested(QByteArray(reinterpret_cast<const char *>(bytes.data()), qsizetype(bytes.size())));
     if (!result.warning.empty())
-        showMessage([=, this] { return QString(tr("%1 sent. Warning: %2").arg(what, QString::fromStdString(result.warning))); }, Tone::Warning);
+        showMessage(
+            [=, this] { return QString(tr("%1 sent. Warning: %2").arg(what, QString::fromStdString(result.warning))); },
+            Tone::Warning);
     else
         showMessage([=, this] { return QString(tr("%1 sent.").arg(what)); }, Tone::Info);
     return true;
@@ -562,7 +588,12 @@ bool SongComposer::uploadAllSlots()
             continue;
         oi::EncodeResult r = encoder.song(slot, m_songs.at(slot));
         if (!r) {
-            showMessage([=, this] { return QString(tr("Song %1 refused: %2").arg(slot).arg(QString::fromStdString(r.error().describe()))); }, Tone::Error);
+            showMessage(
+                [=, this] {
+                    return QString(
+                        tr("Song %1 refused: %2").arg(slot).arg(QString::fromStdString(r.error().describe())));
+                },
+                Tone::Error);
             return false;
         }
         sent << QString::number(slot);
@@ -580,7 +611,8 @@ bool SongComposer::uploadAllSlots()
     if (warnings.isEmpty())
         showMessage([=, this] { return QString(done); }, Tone::Info);
     else
-        showMessage([=, this] { return QString(done + tr(" Warning: ") + warnings.join(QStringLiteral("; "))); }, Tone::Warning);
+        showMessage([=, this] { return QString(done + tr(" Warning: ") + warnings.join(QStringLiteral("; "))); },
+            Tone::Warning);
     return true;
 }
 
@@ -626,8 +658,9 @@ void SongComposer::refreshPlaying()
     case PlayState::Unknown: m_playing->setText(tr("Playing: unknown (packet 37 not streamed)")); break;
     case PlayState::Stopped: m_playing->setText(tr("No song playing")); break;
     case PlayState::Playing:
-        m_playing->setText(total > 0 ? tr("Playing song %1: %2 of %3 s").arg(slot).arg(played, 0, 'f', 1).arg(total, 0, 'f', 1)
-                                     : tr("Playing song %1").arg(slot));
+        m_playing->setText(total > 0
+                ? tr("Playing song %1: %2 of %3 s").arg(slot).arg(played, 0, 'f', 1).arg(total, 0, 'f', 1)
+                : tr("Playing song %1").arg(slot));
         break;
     }
     const bool playing = m_playState == PlayState::Playing;
@@ -675,11 +708,15 @@ bool SongComposer::placeSongs(const SongSlots &parts, const QString &what)
 {
     const int first = currentSlot();
     if (parts.isEmpty() || first + parts.size() > slotCount()) {
-        showMessage([=, this] { return QString(tr("%1 needs %2 slot(s) but only %3 are left from slot %4 on; nothing was changed.")
-                        .arg(what)
-                        .arg(parts.size())
-                        .arg(slotCount() - first)
-                        .arg(first)); }, Tone::Error);
+        showMessage(
+            [=, this] {
+                return QString(tr("%1 needs %2 slot(s) but only %3 are left from slot %4 on; nothing was changed.")
+                                   .arg(what)
+                                   .arg(parts.size())
+                                   .arg(slotCount() - first)
+                                   .arg(first));
+            },
+            Tone::Error);
         return false;
     }
     for (int i = 0; i < parts.size(); ++i)
@@ -702,7 +739,8 @@ bool SongComposer::loadExample(const QString &name)
             parts.append(s);
     if (!placeSongs(parts, exampleTitle(name)))
         return false;
-    showMessage([=, this] { return QString(tr("%1 is in slot %2.").arg(exampleTitle(name)).arg(currentSlot())); }, Tone::Info);
+    showMessage(
+        [=, this] { return QString(tr("%1 is in slot %2.").arg(exampleTitle(name)).arg(currentSlot())); }, Tone::Info);
     return true;
 }
 
@@ -766,7 +804,9 @@ bool SongComposer::exportWav(const QString &path)
 {
     const oi::Song &song = m_songs.at(currentSlot());
     if (song.notes.empty()) {
-        showMessage([=, this] { return QString(tr("Slot %1 is empty; there is nothing to export.").arg(currentSlot())); }, Tone::Error);
+        showMessage(
+            [=, this] { return QString(tr("Slot %1 is empty; there is nothing to export.").arg(currentSlot())); },
+            Tone::Error);
         return false;
     }
     QString error;
@@ -774,7 +814,11 @@ bool SongComposer::exportWav(const QString &path)
         showMessage([=, this] { return QString(error); }, Tone::Error);
         return false;
     }
-    showMessage([=, this] { return QString(tr("Exported slot %1 to %2.").arg(currentSlot()).arg(QDir::toNativeSeparators(path))); }, Tone::Info);
+    showMessage(
+        [=, this] {
+            return QString(tr("Exported slot %1 to %2.").arg(currentSlot()).arg(QDir::toNativeSeparators(path)));
+        },
+        Tone::Info);
     return true;
 }
 
@@ -793,7 +837,9 @@ void SongComposer::togglePreview()
     }
     const oi::Song &song = m_songs.at(currentSlot());
     if (song.notes.empty()) {
-        showMessage([=, this] { return QString(tr("Slot %1 is empty; there is nothing to preview.").arg(currentSlot())); }, Tone::Error);
+        showMessage(
+            [=, this] { return QString(tr("Slot %1 is empty; there is nothing to preview.").arg(currentSlot())); },
+            Tone::Error);
         return;
     }
     QAudioFormat format;

@@ -3774,6 +3774,10 @@ Gesendet: %2</translation>
         <source>%1: no answer (timed out)</source>
         <translation>%1: keine Antwort (Zeitüberschreitung)</translation>
     </message>
+    <message>
+        <source>%1: the bridge closed the connection: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>oilink::VirtualTransport</name>

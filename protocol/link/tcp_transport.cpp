@@ -3,6 +3,8 @@
 
 #include <QDeadlineTimer>
 
+#include <algorithm>
+
 namespace oilink {
 
 namespace {
@@ -35,6 +37,7 @@ void TcpTransport::open()
     if (m_connecting)
         return;
     m_connecting = true;
+    m_lastReceived.clear();
     m_connectTimeout.start();
     m_socket.connectToHost(m_host, m_port);
 }
@@ -90,8 +93,10 @@ void TcpTransport::onError(QAbstractSocket::SocketError error)
     }
     if (!m_connected)
         return;
+    if (m_socket.bytesAvailable() > 0)
+        onReadyRead(); // the last words before the hang-up
     const QString message = error == QAbstractSocket::RemoteHostClosedError
-                                ? tr("%1: the bridge closed the connection").arg(describe())
+                                ? closedByBridge()
                                 : tr("%1: connection lost (%2)").arg(describe(), m_socket.errorString());
     close();
     emit errorOccurred(message);
@@ -103,16 +108,34 @@ void TcpTransport::onDisconnected()
     // Only a hang-up that came without an error reaches this.
     if (!m_connected)
         return;
+    const QString message = closedByBridge();
     close();
-    emit errorOccurred(tr("%1: the bridge closed the connection").arg(describe()));
+    emit errorOccurred(message);
     emit closed();
+}
+
+// ser2net says in words why it gives up ("Device open failure: ...") just
+// before it hangs up; a robot's stream is binary and is left out.
+QString TcpTransport::closedByBridge() const
+{
+    const QByteArray text = m_lastReceived.trimmed();
+    const bool printable = std::all_of(text.begin(), text.end(), [](char c) {
+        return (c >= 0x20 && c < 0x7F) || c == '\r' || c == '\n' || c == '\t';
+    });
+    const QByteArray line = text.split('\n').last().trimmed();
+    if (!printable || line.size() < 4)
+        return tr("%1: the bridge closed the connection").arg(describe());
+    return tr("%1: the bridge closed the connection: %2").arg(describe(), QString::fromLatin1(line));
 }
 
 void TcpTransport::onReadyRead()
 {
     const QByteArray bytes = m_socket.readAll();
-    if (!bytes.isEmpty())
-        emit bytesReceived(bytes);
+    if (bytes.isEmpty())
+        return;
+    constexpr qsizetype kKeep = 256;
+    m_lastReceived = bytes.size() >= kKeep ? bytes.right(kKeep) : (m_lastReceived + bytes).right(kKeep);
+    emit bytesReceived(bytes);
 }
 
 void TcpTransport::giveUpConnecting()

@@ -28,6 +28,7 @@ private:
     void onDisconnected();
     void onReadyRead();
     void giveUpConnecting();
+    QString closedByBridge() const;
 
     QString m_host;
     quint16 m_port;
@@ -35,6 +36,7 @@ private:
     QTimer m_connectTimeout;
     bool m_connecting = false;
     bool m_connected = false;
+    QByteArray m_lastReceived; // a bridge may say why it hangs up
 };
 
 } // namespace oilink

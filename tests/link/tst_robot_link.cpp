@@ -10,6 +10,8 @@
 
 #include <QPointer>
 #include <QSignalSpy>
+#include <QTcpServer>
+#include <QTcpSocket>
 #include <QTest>
 
 using oilink::LinkSettings;
@@ -437,6 +439,37 @@ private slots:
         // The statistics given out on closing count the one frame taken.
         QVERIFY(!stats.isEmpty());
         QCOMPARE(stats.last().at(0).value<oilink::LinkStats>().frames, quint64(1));
+    }
+
+    // A bridge that cannot open its serial device says so, then hangs up.
+    void bridgeReasonIsKept_data()
+    {
+        QTest::addColumn<QByteArray>("lastWords");
+        QTest::addColumn<QString>("expectedEnd");
+        QTest::newRow("ser2net text") << QByteArray("Device open failure: No such file or directory\r\n")
+                                      << ": the bridge closed the connection: Device open failure: No such file or directory";
+        QTest::newRow("robot bytes") << QByteArray("\x13\x02\x07\x00\xE4", 5) << ": the bridge closed the connection";
+    }
+    void bridgeReasonIsKept()
+    {
+        QFETCH(QByteArray, lastWords);
+        QFETCH(QString, expectedEnd);
+        QTcpServer bridge;
+        QVERIFY(bridge.listen(QHostAddress::LocalHost));
+        connect(&bridge, &QTcpServer::newConnection, &bridge, [&] {
+            QTcpSocket *peer = bridge.nextPendingConnection();
+            peer->write(lastWords);
+            peer->flush();
+            peer->disconnectFromHost();
+        });
+        oilink::RobotLink link;
+        QSignalSpy errors(&link, &oilink::RobotLink::errorOccurred);
+        link.open(oilink::LinkSettings::tcp("127.0.0.1", bridge.serverPort(), oi::ProfileId::Create2));
+        QTRY_VERIFY_WITH_TIMEOUT(!errors.isEmpty(), 10000);
+        const QString message = errors.first().at(0).toString();
+        QVERIFY2(message.endsWith(expectedEnd), qPrintable(message));
+        QVERIFY(message.startsWith(QString("127.0.0.1:%1").arg(bridge.serverPort())));
+        link.close();
     }
 };
 

@@ -3776,7 +3776,7 @@ Gesendet: %2</translation>
     </message>
     <message>
         <source>%1: the bridge closed the connection: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: die Brücke hat die Verbindung geschlossen: %2</translation>
     </message>
 </context>
 <context>

@@ -3776,7 +3776,7 @@ Enviado: %2</translation>
     </message>
     <message>
         <source>%1: the bridge closed the connection: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: el puente cerró la conexión: %2</translation>
     </message>
 </context>
 <context>

@@ -1,0 +1,79 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// How long an hour's recording takes to write, to open for replay (the frame
+// index), and to export as CSV. An hour of Create 2 streaming group 100 at
+// 66.7 frames/s is 240,000 frames; the frames are synthetic, the file real.
+#include "recording_file.h"
+
+#include "packet_encoding.h"
+
+#include <QElapsedTimer>
+#include <QFile>
+#include <QTemporaryDir>
+#include <QTextStream>
+
+#include <cstdio>
+#include <cstdlib>
+
+int main(int argc, char **argv)
+{
+    const int frames = argc > 1 ? std::atoi(argv[1]) : 240000;
+    const oi::RobotProfile &profile = oi::profile(oi::ProfileId::Create2);
+    oi::SensorSnapshot values(profile);
+    for (const oi::PacketInfo &p : profile.packets())
+        values.set(p.id, p.min > 0 ? p.min : 0);
+
+    QTemporaryDir dir;
+    const QString path = dir.filePath("hour.oirec");
+    oilink::RecordingWriter writer;
+    if (!writer.open(path, {})) {
+        std::fprintf(stderr, "%s\n", qPrintable(writer.errorString()));
+        return 1;
+    }
+    writer.appendStreamStarted(profile.id, 115200, {100});
+    QElapsedTimer clock;
+    clock.start();
+    for (int i = 0; i < frames; ++i) {
+        values.set(22, 14000 + i % 2000); // voltage
+        values.set(19, i % 7 - 3);        // distance
+        oi::Bytes frame{19, 0, 100};
+        sim::appendPacketData(values, 100, frame);
+        frame[1] = static_cast<std::uint8_t>(frame.size() - 2);
+        unsigned sum = 0;
+        for (std::uint8_t b : frame)
+            sum += b;
+        frame.push_back(static_cast<std::uint8_t>((256 - (sum & 0xFF)) & 0xFF));
+        if (!writer.append(oilink::recording::RecordKind::Received,
+                           QByteArray(reinterpret_cast<const char *>(frame.data()), qsizetype(frame.size())))) {
+            std::fprintf(stderr, "%s\n", qPrintable(writer.errorString()));
+            return 1;
+        }
+    }
+    writer.close();
+    const double writeS = clock.nsecsElapsed() / 1e9;
+    const double megabytes = QFile(path).size() / 1e6;
+
+    clock.restart();
+    QString error;
+    const std::optional<oilink::Recording> recording = oilink::Recording::load(path, &error);
+    const double loadS = clock.nsecsElapsed() / 1e9;
+    if (!recording || int(recording->frames().size()) != frames) {
+        std::fprintf(stderr, "load failed or lost frames: %s (%zu of %d)\n", qPrintable(error),
+                     recording ? recording->frames().size() : 0, frames);
+        return 1;
+    }
+
+    clock.restart();
+    QFile csv(dir.filePath("hour.csv"));
+    if (!csv.open(QIODevice::WriteOnly))
+        return 1;
+    QTextStream out(&csv);
+    recording->writeCsv(out);
+    out.flush();
+    const double csvS = clock.nsecsElapsed() / 1e9;
+
+    std::printf("frames %d, recording %.1f MB\n", frames, megabytes);
+    std::printf("write   %.2f s (%.0f frames/s)\n", writeS, frames / writeS);
+    std::printf("open    %.2f s (load and index every frame, %.1f MB/s)\n", loadS, megabytes / loadS);
+    std::printf("csv     %.2f s (%.1f MB of CSV)\n", csvS, csv.size() / 1e6);
+    return 0;
+}

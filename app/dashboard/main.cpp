@@ -4,6 +4,7 @@
 #include "main_window.h"
 
 #include <QApplication>
+#include <QIcon>
 #include <QStyleFactory>
 
 #include <cstdio>
@@ -35,6 +36,9 @@ int main(int argc, char **argv)
 
     // Wayland matches the window to its menu entry and icon by this name.
     QGuiApplication::setDesktopFileName("io.github.roombadashboard.RoombaDashboard");
+    // Installed, the icon theme has it (share/icons/hicolor); from a build tree
+    // the window simply has none.
+    QApplication::setWindowIcon(QIcon::fromTheme("io.github.roombadashboard.RoombaDashboard"));
 
     MainWindow window;
     if (!line.language.isEmpty())

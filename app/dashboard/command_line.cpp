@@ -9,10 +9,28 @@
 #include <QFileInfo>
 
 #include <QCoreApplication>
+#include <QTranslator>
 
 namespace {
-QString tr(const char *text) { return QCoreApplication::translate("DashboardCommandLine", text); }
+// The command line is read before QApplication exists, when no translator
+// can be installed; main() lends it one.
+const QTranslator *g_translator = nullptr;
+
+QString tr(const char *text)
+{
+    if (g_translator) {
+        const QString translated = g_translator->translate("DashboardCommandLine", text);
+        if (!translated.isEmpty())
+            return translated;
+    }
+    return QCoreApplication::translate("DashboardCommandLine", text);
+}
 } // namespace
+
+void DashboardCommandLine::setTranslator(const QTranslator *translator)
+{
+    g_translator = translator;
+}
 
 QString DashboardCommandLine::usage()
 {

@@ -6,6 +6,8 @@
 #include <QString>
 #include <QStringList>
 
+class QTranslator;
+
 #include <optional>
 
 // What roomba-dashboard was asked to do on its command line:
@@ -21,4 +23,7 @@ struct DashboardCommandLine {
 
     static DashboardCommandLine parse(const QStringList &arguments); // arguments[0] is the program
     static QString usage();
+    // Messages and usage in this translator's language; nullptr for English
+    // (or whatever the application has installed).
+    static void setTranslator(const QTranslator *translator);
 };

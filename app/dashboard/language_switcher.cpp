@@ -38,6 +38,11 @@ QString systemUiLanguage()
     return QStringLiteral("en");
 }
 
+bool loadUiTranslation(QTranslator &translator, const QString &code)
+{
+    return translator.load(kTranslationPrefix + code);
+}
+
 LanguageSwitcher::~LanguageSwitcher()
 {
     removeTranslators();
@@ -61,7 +66,7 @@ QString LanguageSwitcher::apply(const QString &code)
         return m_current;
     if (m_qt.load(QStringLiteral("qtbase_") + language, QLibraryInfo::path(QLibraryInfo::TranslationsPath)))
         m_qtInstalled = QCoreApplication::installTranslator(&m_qt);
-    if (m_dashboard.load(kTranslationPrefix + language))
+    if (loadUiTranslation(m_dashboard, language))
         m_dashboardInstalled = QCoreApplication::installTranslator(&m_dashboard);
     if (m_dashboardInstalled)
         m_current = language;

@@ -20,6 +20,9 @@ bool isUiLanguage(const QString &code);
 // else English.
 QString systemUiLanguage();
 
+// Loads the dashboard's own catalogue for `code` (not "en") into `translator`.
+bool loadUiTranslation(QTranslator &translator, const QString &code);
+
 class LanguageSwitcher {
 public:
     LanguageSwitcher() = default;

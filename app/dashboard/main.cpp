@@ -1,10 +1,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // roomba-dashboard: the desktop dashboard.
 #include "command_line.h"
+#include "language_switcher.h"
 #include "main_window.h"
 
 #include <QApplication>
 #include <QIcon>
+#include <QSettings>
+#include <QTranslator>
 #include <QStyleFactory>
 
 #include <cstdio>
@@ -16,6 +19,18 @@ int main(int argc, char **argv)
     QStringList arguments;
     for (int i = 0; i < argc; ++i)
         arguments << QString::fromLocal8Bit(argv[i]);
+    QCoreApplication::setOrganizationName("RoombaDashboard");
+    QCoreApplication::setApplicationName("roomba-dashboard");
+    // Errors and --help in the language the window would speak.
+    QString language = QSettings().value("language").toString();
+    const qsizetype lang = arguments.indexOf("--lang");
+    if (lang > 0 && lang + 1 < arguments.size() && isUiLanguage(arguments[lang + 1]))
+        language = arguments[lang + 1];
+    if (!isUiLanguage(language))
+        language = systemUiLanguage();
+    QTranslator commandLineTranslator;
+    if (language != QLatin1String("en") && loadUiTranslation(commandLineTranslator, language))
+        DashboardCommandLine::setTranslator(&commandLineTranslator);
     const DashboardCommandLine line = DashboardCommandLine::parse(arguments);
     if (!line.error.isEmpty()) {
         std::fprintf(stderr, "roomba-dashboard: %s\n", qPrintable(line.error));
@@ -28,8 +43,6 @@ int main(int argc, char **argv)
     }
 
     QApplication app(argc, argv);
-    QApplication::setOrganizationName("RoombaDashboard");
-    QApplication::setApplicationName("roomba-dashboard");
     QApplication::setApplicationVersion(ROOMBA_VERSION);
     // Fusion draws the same everywhere and takes the system's light or dark palette.
     QApplication::setStyle(QStyleFactory::create("Fusion"));

@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "command_line.h"
+#include "language_switcher.h"
 #include "recording_file.h"
 
 #include <QTemporaryDir>
+#include <QTranslator>
 
 #include <QProcess>
 #include <QTest>
@@ -74,6 +76,20 @@ private slots:
         QVERIFY(parse("--replay " + path + " --record /tmp/x.oirec").error.contains("already a recording"));
     }
 
+    void translatedMessages()
+    {
+        QTranslator german;
+        QVERIFY(loadUiTranslation(german, "de"));
+        DashboardCommandLine::setTranslator(&german);
+        const QString error = parse("--fly").error;
+        const QString usage = DashboardCommandLine::usage();
+        DashboardCommandLine::setTranslator(nullptr);
+        QCOMPARE(error, QString::fromUtf8("unbekanntes Argument „--fly“; siehe --help"));
+        QVERIFY2(!usage.startsWith("Usage:"), qPrintable(usage));
+        QVERIFY(usage.contains("--replay"));
+        QCOMPARE(parse("--fly").error, QString("unknown argument '--fly'; see --help"));
+    }
+
     void badArguments_data()
     {
         QTest::addColumn<QString>("args");
@@ -103,7 +119,14 @@ private slots:
 
     void executable()
     {
+        // A clean settings folder and an English system, whatever this machine has.
+        QTemporaryDir config;
+        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+        env.insert("XDG_CONFIG_HOME", config.path());
+        env.insert("LC_ALL", "C.UTF-8");
+        env.insert("LANGUAGE", "");
         QProcess p;
+        p.setProcessEnvironment(env);
         p.start(ROOMBA_DASHBOARD_PATH, {"--tcp", "pi"});
         QVERIFY(p.waitForFinished(30000));
         QCOMPARE(p.exitCode(), 2);
@@ -119,6 +142,16 @@ private slots:
         QVERIFY(p.waitForFinished(30000));
         QCOMPARE(p.exitCode(), 2);
         QVERIFY(p.readAllStandardError().startsWith("roomba-dashboard: unknown language 'xx'"));
+        // Asked for German, the errors and the usage are German too.
+        p.start(ROOMBA_DASHBOARD_PATH, {"--lang", "de", "--fly"});
+        QVERIFY(p.waitForFinished(30000));
+        QCOMPARE(p.exitCode(), 2);
+        const QString german = QString::fromUtf8(p.readAllStandardError());
+        QVERIFY2(german.startsWith(QString::fromUtf8("roomba-dashboard: unbekanntes Argument „--fly“")), qPrintable(german));
+        p.start(ROOMBA_DASHBOARD_PATH, {"--lang", "es", "--help"});
+        QVERIFY(p.waitForFinished(30000));
+        QCOMPARE(p.exitCode(), 0);
+        QVERIFY(!p.readAllStandardOutput().startsWith("Usage:"));
     }
 };
 

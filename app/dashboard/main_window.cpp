@@ -479,6 +479,14 @@ void MainWindow::showRecording(const oilink::RecordingStatus &status)
 
 void MainWindow::showReplay(const oilink::ReplayStatus &status)
 {
+    // The history and the odometry run forward in the recording's time; after
+    // a jump back (a seek, a step back, playing again from the end) they start
+    // afresh rather than draw time running backwards.
+    if (status.positionUs < m_replayShownUs) {
+        m_history.clear();
+        m_map->reset();
+    }
+    m_replayShownUs = status.positionUs;
     ReplayBar::Position p;
     p.positionUs = status.positionUs;
     p.durationUs = status.durationUs;
@@ -618,6 +626,7 @@ void MainWindow::connectSession(const oilink::LinkSettings &settings)
     m_map->setWorld(settings.transport == oilink::TransportKind::Virtual ? std::optional(sim::World::classroom())
                                                                           : std::nullopt);
     m_map->setTruePose(std::nullopt);
+    m_replayShownUs = 0;
     m_session.connectTo(settings);
     m_connectionBar->setConnected(true);
     // The replay controls belong to a replay only.

@@ -175,6 +175,7 @@ private:
     oilink::LinkState m_shownState = oilink::LinkState::Closed;
     oilink::LinkStats m_shownStats;
     QString m_firmware;
+    qint64 m_replayShownUs = 0; // where the replay was at its last report
 
     QLabel *m_stateLabel = nullptr;
     QLabel *m_profileLabel = nullptr;

@@ -3,6 +3,8 @@
 
 #include "command_catalog.h"
 
+#include <algorithm>
+
 namespace {
 constexpr qsizetype kMaxBannerBytes = 8192;
 }
@@ -30,7 +32,11 @@ RobotSession::RobotSession(QObject *parent) : QObject(parent)
         m_recording = s;
         emit recordingStatus(s);
     });
-    connect(&m_link, &oilink::RobotLinkThread::replayStatus, this, &RobotSession::replayStatus);
+    connect(&m_link, &oilink::RobotLinkThread::replayStatus, this, [this](const oilink::ReplayStatus &s) {
+        m_replay = s;
+        m_sinceReplayStatus.start();
+        emit replayStatus(s);
+    });
 }
 
 RobotSession::~RobotSession() { closeAndWait(); }
@@ -51,6 +57,8 @@ void RobotSession::connectTo(const oilink::LinkSettings &settings)
         m_link.close();
     m_settings = settings;
     m_connected = true;
+    m_replay = {};
+    m_sinceReplayStatus.invalidate();
     m_latest = oi::SensorSnapshot(*m_profile);
     m_snapshotCount = 0;
     m_clock.restart();
@@ -80,7 +88,14 @@ bool RobotSession::send(const QByteArray &bytes)
     return true;
 }
 
-double RobotSession::secondsSinceConnect() const { return m_clock.nsecsElapsed() / 1e9; }
+double RobotSession::secondsSinceConnect() const
+{
+    if (!isReplay() || !m_sinceReplayStatus.isValid())
+        return m_clock.nsecsElapsed() / 1e9;
+    // Between the replay's reports its clock runs on at its speed.
+    const double sinceReport = m_replay.playing ? m_sinceReplayStatus.nsecsElapsed() / 1e9 * m_replay.speed : 0.0;
+    return std::min(m_replay.positionUs / 1e6 + sinceReport, m_replay.durationUs / 1e6);
+}
 
 void RobotSession::onStreamStarted(oi::ProfileId profile)
 {

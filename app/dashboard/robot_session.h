@@ -41,7 +41,8 @@ public:
     const oi::SensorSnapshot &latest() const { return m_latest; }
     // Counts snapshots, so a display timer can skip work when nothing changed.
     quint64 snapshotCount() const { return m_snapshotCount; }
-    // Seconds since connectTo(); the time axis of the history.
+    // Seconds since connectTo(), or for a replay the recording's own time
+    // (at any speed): the time axis of the history.
     double secondsSinceConnect() const;
     oilink::LinkState state() const { return m_state; }
     const oilink::LinkStats &statistics() const { return m_stats; }
@@ -90,6 +91,8 @@ private:
     oilink::LinkState m_state = oilink::LinkState::Closed;
     oilink::LinkStats m_stats;
     oilink::RecordingStatus m_recording;
+    oilink::ReplayStatus m_replay; // the last word from a replay
+    QElapsedTimer m_sinceReplayStatus;
     QElapsedTimer m_clock;
     QString m_firmware;
     oi::FirmwareCorrections m_corrections;

@@ -111,14 +111,17 @@ void ReplayTransport::seek(qint64 timeUs)
 }
 
 // Hands the link frame `frame` alone: from the end of the one before it.
+// The new position is announced first, so that the frame's snapshot arrives
+// after it and is placed at the frame's time.
 void ReplayTransport::showFrame(int frame)
 {
     const auto &frames = m_recording->frames();
     m_delivered = frame > 0 ? frames[frame - 1].end : 0;
-    deliverThrough(frames[frame].end);
     m_nextFrame = frame + 1;
     m_positionUs = frames[frame].timeUs;
     m_finished = false;
+    emitStatus();
+    deliverThrough(frames[frame].end);
 }
 
 void ReplayTransport::deliverThrough(qsizetype end)
@@ -140,10 +143,12 @@ void ReplayTransport::tick()
     int last = m_nextFrame - 1;
     while (last + 1 < static_cast<int>(frames.size()) && frames[last + 1].timeUs <= m_positionUs)
         ++last;
-    if (last >= m_nextFrame) {
+    const bool newFrames = last >= m_nextFrame;
+    m_nextFrame = last + 1;
+    if (!m_sinceStatus.isValid() || m_sinceStatus.elapsed() >= kStatusEveryMs)
+        emitStatus(); // before the frames it counts
+    if (newFrames)
         deliverThrough(frames[last].end);
-        m_nextFrame = last + 1;
-    }
     if (m_positionUs >= m_recording->durationUs()) {
         // Whatever followed the last frame (a reply, a banner) comes too.
         deliverThrough(m_recording->receivedBytes().size());
@@ -151,10 +156,7 @@ void ReplayTransport::tick()
         m_finished = true;
         pause();
         emitStatus();
-        return;
     }
-    if (!m_sinceStatus.isValid() || m_sinceStatus.elapsed() >= kStatusEveryMs)
-        emitStatus();
 }
 
 ReplayStatus ReplayTransport::status() const

@@ -27,7 +27,8 @@ struct ReplayCommand {
     static ReplayCommand step(int frames) { return {Kind::Step, 1.0, 0, frames}; }
 };
 
-// Where a replay is. Sent on every command and a few times a second while it plays.
+// Where a replay is. Sent on every command and a few times a second while it
+// plays, always before the bytes of the frames it counts.
 struct ReplayStatus {
     QString path;
     qint64 positionUs = 0;

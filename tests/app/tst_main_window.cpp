@@ -15,6 +15,7 @@
 #include "transport.h"
 #include "virtual_transport.h"
 
+#include <QComboBox>
 #include <QDir>
 #include <cmath>
 #include <QDockWidget>
@@ -280,6 +281,23 @@ private slots:
         QTest::mouseClick(window.replayBar()->findChild<QToolButton *>("replayStepBack"), Qt::LeftButton);
         QTRY_COMPARE_WITH_TIMEOUT(window.replayBar()->position().frame, paused, 10000);
         QTRY_COMPARE_WITH_TIMEOUT(window.session().snapshotCount(), before + 1, 10000);
+
+        // At ten times the speed the history still runs on the recording's clock.
+        auto *speed = window.replayBar()->findChild<QComboBox *>("replaySpeed");
+        const int tenfold = speed->findData(10.0);
+        QVERIFY(tenfold >= 0);
+        speed->setCurrentIndex(tenfold);
+        emit speed->activated(tenfold);
+        QTest::mouseClick(playPause, Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(window.replayBar()->position().finished, 20000);
+        QCOMPARE(window.replayBar()->position().speed, 10.0);
+        const double duration = window.replayBar()->position().durationUs / 1e6;
+        QVERIFY2(std::abs(window.history().newestTime() - duration) < 0.15,
+                 qPrintable(QString("newest sample at %1 s, recording %2 s long").arg(window.history().newestTime()).arg(duration)));
+        // A step back starts the history afresh instead of running time backwards.
+        QTest::mouseClick(window.replayBar()->findChild<QToolButton *>("replayStepBack"), Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(window.history().newestTime() < duration - 0.001, 10000);
+        QVERIFY(window.history().oldestTime() >= window.history().newestTime() - 0.05);
 
         // The same recording as CSV: a header and one row per frame.
         const QString csv = dir.filePath("class.csv");

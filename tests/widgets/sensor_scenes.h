@@ -7,6 +7,7 @@
 #include <QColor>
 #include <QCoreApplication>
 #include <QDir>
+#include <QSize>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QImage>
@@ -169,6 +170,16 @@ inline void saveScreenshot(QWidget &widget, const QString &name)
     const QPixmap shot = widget.grab();
     QVERIFY(!shot.isNull());
     QVERIFY(shot.save(QDir(dir).filePath(name + ".png")));
+}
+
+// "gauges_create2_480x480_dark": what a scene's screenshot is called.
+inline QString sceneName(const QString &widget, const oi::RobotProfile &profile, QSize size, bool dark)
+{
+    return QStringLiteral("%1_%2_%3x%4_%5")
+        .arg(widget, QString::fromUtf8(profile.key.data(), qsizetype(profile.key.size())))
+        .arg(size.width())
+        .arg(size.height())
+        .arg(dark ? "dark" : "light");
 }
 
 inline bool isGrey(const QColor &c)

@@ -389,12 +389,7 @@ private slots:
                     RobotDiagram w;
                     show(w, id, busyValues(profile(id)), size);
                     w.setPalette(dark ? darkPalette() : lightPalette());
-                    const QString name = QStringLiteral("diagram_%1_%2x%3_%4")
-                                             .arg(QString::fromUtf8(profile(id).key.data(),
-                                                                    qsizetype(profile(id).key.size())))
-                                             .arg(size.width())
-                                             .arg(size.height())
-                                             .arg(dark ? "dark" : "light");
+                    const QString name = sceneName("diagram", profile(id), size, dark);
                     saveScreenshot(w, name);
                     w.setStale(true);
                     saveScreenshot(w, name + "_stale");

@@ -190,12 +190,7 @@ private slots:
                     w.resize(size);
                     w.show();
                     QVERIFY(QTest::qWaitForWindowExposed(&w));
-                    const QString name = QStringLiteral("bars_%1_%2x%3_%4")
-                                             .arg(QString::fromUtf8(profile(id).key.data(),
-                                                                    qsizetype(profile(id).key.size())))
-                                             .arg(size.width())
-                                             .arg(size.height())
-                                             .arg(dark ? "dark" : "light");
+                    const QString name = sceneName("bars", profile(id), size, dark);
                     saveScreenshot(w, name);
                     w.setStale(true);
                     saveScreenshot(w, name + "_stale");

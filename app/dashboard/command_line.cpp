@@ -27,6 +27,17 @@ QString tr(const char *text)
 }
 } // namespace
 
+namespace {
+// "en, de, es"
+QString languageCodes()
+{
+    QStringList codes;
+    for (const UiLanguage &l : uiLanguages())
+        codes << l.code;
+    return codes.join(QLatin1String(", "));
+}
+} // namespace
+
 void DashboardCommandLine::setTranslator(const QTranslator *translator)
 {
     g_translator = translator;
@@ -34,9 +45,6 @@ void DashboardCommandLine::setTranslator(const QTranslator *translator)
 
 QString DashboardCommandLine::usage()
 {
-    QStringList codes;
-    for (const UiLanguage &l : uiLanguages())
-        codes << l.code;
     return tr("Usage: roomba-dashboard [--sim | --port PATH | --tcp HOST:PORT | --replay FILE]\n"
               "                        [--profile P] [--baud N] [--record FILE] [--lang CODE]\n"
               "\n"
@@ -53,7 +61,7 @@ QString DashboardCommandLine::usage()
               "Without a connection option the dashboard reconnects to what was used last,\n"
               "or on first start to the virtual robot. Without --lang it speaks the language\n"
               "chosen in its View menu, or the system's.\n")
-        .arg(codes.join(QLatin1String(", ")));
+        .arg(languageCodes());
 }
 
 DashboardCommandLine DashboardCommandLine::parse(const QStringList &arguments)
@@ -117,12 +125,8 @@ DashboardCommandLine DashboardCommandLine::parse(const QStringList &arguments)
                 return fail(tr("--record: the folder of '%1' does not exist").arg(value));
             line.recordPath = value;
         } else if (a == "--lang") {
-            if (!isUiLanguage(value)) {
-                QStringList codes;
-                for (const UiLanguage &l : uiLanguages())
-                    codes << l.code;
-                return fail(tr("unknown language '%1' (%2)").arg(value, codes.join(QLatin1String(", "))));
-            }
+            if (!isUiLanguage(value))
+                return fail(tr("unknown language '%1' (%2)").arg(value, languageCodes()));
             line.language = value;
         } else {
             return fail(tr("unknown argument '%1'; see --help").arg(a));

@@ -306,7 +306,8 @@ void MainWindow::buildActions()
     m_recordingBar->addAction(m_openRecordingAction);
     m_replayBar = new ReplayBar(this);
     m_replayBar->setObjectName("replayBar");
-    m_recordingBar->addWidget(m_replayBar)->setVisible(false);
+    m_replayBarAction = m_recordingBar->addWidget(m_replayBar);
+    m_replayBarAction->setVisible(false);
 }
 
 void MainWindow::buildMenus()
@@ -631,9 +632,7 @@ void MainWindow::connectSession(const oilink::LinkSettings &settings)
     m_connectionBar->setConnected(true);
     // The replay controls belong to a replay only.
     const bool replay = settings.transport == oilink::TransportKind::Replay;
-    for (QAction *a : m_recordingBar->actions())
-        if (m_recordingBar->widgetForAction(a) == m_replayBar)
-            a->setVisible(replay);
+    m_replayBarAction->setVisible(replay);
     m_recordAction->setEnabled(!replay);
     if (replay)
         m_recordingBar->show();

@@ -171,6 +171,7 @@ private:
     QActionGroup *m_languageGroup = nullptr;
     QToolBar *m_recordingBar = nullptr;
     ReplayBar *m_replayBar = nullptr;
+    QAction *m_replayBarAction = nullptr; // shows and hides the replay bar
     QLabel *m_recordingLabel = nullptr;
     oilink::LinkState m_shownState = oilink::LinkState::Closed;
     oilink::LinkStats m_shownStats;

@@ -137,7 +137,9 @@ void ReplayTransport::tick()
 {
     if (!m_playing)
         return;
-    m_positionUs += static_cast<qint64>(static_cast<double>(m_sinceTick.nsecsElapsed()) / 1000.0 * m_speed);
+    // Never past the end: a report beyond it would make the end look like a jump back.
+    m_positionUs = std::min(m_recording->durationUs(),
+                            m_positionUs + static_cast<qint64>(m_sinceTick.nsecsElapsed() / 1000.0 * m_speed));
     m_sinceTick.start();
     const auto &frames = m_recording->frames();
     int last = m_nextFrame - 1;
@@ -152,7 +154,6 @@ void ReplayTransport::tick()
     if (m_positionUs >= m_recording->durationUs()) {
         // Whatever followed the last frame (a reply, a banner) comes too.
         deliverThrough(m_recording->receivedBytes().size());
-        m_positionUs = m_recording->durationUs();
         m_finished = true;
         pause();
         emitStatus();

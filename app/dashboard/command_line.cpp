@@ -45,10 +45,10 @@ void DashboardCommandLine::setTranslator(const QTranslator *translator)
 
 QString DashboardCommandLine::usage()
 {
-    return tr("Usage: roomba-dashboard [--sim | --port PATH | --tcp HOST:PORT | --replay FILE]\n"
+    return tr("Usage: roomba-dashboard [--sim [N] | --port PATH | --tcp HOST:PORT | --replay FILE]\n"
               "                        [--profile P] [--baud N] [--record FILE] [--lang CODE]\n"
               "\n"
-              "  --sim              the built-in virtual robot\n"
+              "  --sim [N]          the built-in virtual robot, or N of them (up to %2) in one room\n"
               "  --port PATH        a serial port, USB adapter or pseudo-terminal\n"
               "  --tcp HOST:PORT    a serial-over-TCP bridge such as ser2net\n"
               "  --replay FILE      play back a recording (.oirec) as if it were the robot\n"
@@ -58,10 +58,13 @@ QString DashboardCommandLine::usage()
               "  --lang CODE        the language of the window: %1\n"
               "  --help, --version\n"
               "\n"
-              "Without a connection option the dashboard reconnects to what was used last,\n"
-              "or on first start to the virtual robot. Without --lang it speaks the language\n"
-              "chosen in its View menu, or the system's.\n")
-        .arg(languageCodes());
+              "Without a connection option the dashboard reconnects the robots it had last,\n"
+              "or on first start the virtual robot; with one, it holds just that robot (or\n"
+              "those virtual robots) and keeps the saved list for next time. Shift+Esc stops\n"
+              "every robot. Without --lang it speaks the language chosen in its View menu,\n"
+              "or the system's.\n")
+        .arg(languageCodes())
+        .arg(kMaxVirtualRobots);
 }
 
 DashboardCommandLine DashboardCommandLine::parse(const QStringList &arguments)
@@ -92,6 +95,15 @@ DashboardCommandLine DashboardCommandLine::parse(const QStringList &arguments)
                 return fail(tr("choose one of --sim, --port, --tcp and --replay"));
             if (a == "--sim") {
                 target = Target::Sim;
+                // An optional count: --sim 3.
+                bool isCount = false;
+                const int count = i + 1 < arguments.size() ? arguments[i + 1].toInt(&isCount) : 0;
+                if (isCount) {
+                    if (count < 1 || count > kMaxVirtualRobots)
+                        return fail(tr("--sim takes 1 to %1 robots, not %2").arg(kMaxVirtualRobots).arg(count));
+                    line.robotCount = count;
+                    ++i;
+                }
             } else if (a == "--replay") {
                 target = Target::Replay;
                 replayPath = value;

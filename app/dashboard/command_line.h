@@ -11,10 +11,13 @@ class QTranslator;
 #include <optional>
 
 // What roomba-dashboard was asked to do on its command line:
-//   [--sim | --port PATH | --tcp HOST:PORT | --replay FILE] [--profile P]
+//   [--sim [N] | --port PATH | --tcp HOST:PORT | --replay FILE] [--profile P]
 //   [--baud N] [--record FILE] [--lang CODE]
 struct DashboardCommandLine {
-    std::optional<oilink::LinkSettings> connection; // nullopt: the saved connection
+    static constexpr int kMaxVirtualRobots = 30;
+
+    std::optional<oilink::LinkSettings> connection; // nullopt: the saved robots
+    int robotCount = 1; // --sim N: this many virtual robots, in one room
     QString recordPath; // record the link's bytes from the start
     QString language;   // a code from uiLanguages(); empty: the saved choice
     bool showHelp = false;

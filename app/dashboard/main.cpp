@@ -3,6 +3,7 @@
 #include "command_line.h"
 #include "language_switcher.h"
 #include "main_window.h"
+#include "termination_signals.h"
 
 #include <QApplication>
 #include <QIcon>
@@ -54,11 +55,18 @@ int main(int argc, char **argv)
     QApplication::setWindowIcon(QIcon::fromTheme("io.github.roombadashboard.RoombaDashboard"));
 
     MainWindow window;
+    // Killed or hung up: stop every robot and leave it in Passive, as closing
+    // the window does, then end.
+    TerminationSignals termination;
+    QObject::connect(&termination, &TerminationSignals::requested, &app, [&window](int signal) {
+        window.close();
+        QCoreApplication::exit(TerminationSignals::exitStatusFor(signal));
+    });
     if (!line.language.isEmpty())
         window.setLanguage(line.language, false);
     window.resize(1280, 860);
     window.show();
-    window.start(line.connection);
+    window.start(line.connection, line.robotCount);
     if (!line.recordPath.isEmpty())
         window.startRecording(line.recordPath);
     return app.exec();

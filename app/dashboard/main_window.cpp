@@ -2,18 +2,25 @@
 #include "main_window.h"
 
 #include "byte_inspector.h"
+#include "connection_bar.h"
+#include "connection_request.h"
 #include "display_palette.h"
-#include "oi_text.h"
+#include "dock_layout.h"
 #include "drive_pad.h"
 #include "gamepad_input.h"
 #include "gamepad_panel.h"
+#include "keyboard_driving.h"
 #include "led_editor.h"
-#include "motors_panel.h"
 #include "mode_panel.h"
+#include "motors_panel.h"
 #include "odometry_map.h"
-#include "recording_file.h"
+#include "oi_text.h"
+#include "recording_actions.h"
 #include "replay_bar.h"
 #include "robot_diagram.h"
+#include "robot_list.h"
+#include "robot_status_bar.h"
+#include "saved_robots.h"
 #include "schedule_editor.h"
 #include "script_editor.h"
 #include "sensor_gauges.h"
@@ -23,34 +30,28 @@
 
 #include <QAction>
 #include <QActionGroup>
-#include <QDateTime>
-#include <QDir>
-#include <QFileDialog>
-#include <QFileInfo>
-#include <QSaveFile>
-#include <QStandardPaths>
-#include <QTextStream>
-#include <QToolBar>
 #include <QApplication>
 #include <QCloseEvent>
-#include <QAbstractSpinBox>
 #include <QDockWidget>
-#include <QKeyEvent>
-#include <QLineEdit>
-#include <QPlainTextEdit>
-#include <QTextEdit>
-#include <QLabel>
+#include <QFileInfo>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QPushButton>
 #include <QSettings>
 #include <QStatusBar>
+#include <QToolBar>
 
 namespace {
+// The robot cards change slowly (mode, battery, link): four times a second.
+constexpr int kCardTicks = 8;
 
-ConnectionRequest loadRequest(const QSettings &s)
+// The connection kept by versions that held a single robot.
+std::optional<oilink::LinkSettings> singleSavedConnection(const QSettings &s)
 {
+    if (!s.contains("connection/transport"))
+        return std::nullopt;
     ConnectionRequest r;
-    r.transport = ConnectionRequest::Transport(s.value("connection/transport", 0).toInt());
+    r.transport = ConnectionRequest::Transport(std::clamp(s.value("connection/transport").toInt(), 0, 2));
     r.portPath = s.value("connection/port").toString();
     r.host = s.value("connection/host").toString();
     r.tcpPort = quint16(s.value("connection/tcpPort", 0).toUInt());
@@ -58,41 +59,8 @@ ConnectionRequest loadRequest(const QSettings &s)
     if (profile >= 0 && profile <= int(oi::ProfileId::Create1))
         r.profile = oi::ProfileId(profile);
     r.baud = s.value("connection/baud", 0).toInt();
-    return r;
+    return connection::linkSettingsFor(r);
 }
-
-void saveRequest(QSettings &s, const ConnectionRequest &r)
-{
-    s.setValue("connection/transport", int(r.transport));
-    s.setValue("connection/port", r.portPath);
-    s.setValue("connection/host", r.host);
-    s.setValue("connection/tcpPort", r.tcpPort);
-    s.setValue("connection/profile", r.profile ? int(*r.profile) : -1);
-    s.setValue("connection/baud", r.baud);
-}
-
-// Widgets where letters, arrows and Space are typing, not driving.
-bool isTextInput(const QWidget *w)
-{
-    return qobject_cast<const QLineEdit *>(w) || qobject_cast<const QAbstractSpinBox *>(w)
-        || qobject_cast<const QTextEdit *>(w) || qobject_cast<const QPlainTextEdit *>(w);
-}
-
-// W A S D fold onto the arrows; 0 for any other key.
-int driveKey(int key)
-{
-    switch (key) {
-    case Qt::Key_Up: case Qt::Key_W: return Qt::Key_Up;
-    case Qt::Key_Down: case Qt::Key_S: return Qt::Key_Down;
-    case Qt::Key_Left: case Qt::Key_A: return Qt::Key_Left;
-    case Qt::Key_Right: case Qt::Key_D: return Qt::Key_Right;
-    default: return 0;
-    }
-}
-
-// The turn radius for an arc from two keys held together.
-constexpr int kKeyArcRadius = 500;
-
 } // namespace
 
 MainWindow::MainWindow(QWidget *parent) : QMainWindow(parent)
@@ -103,13 +71,38 @@ MainWindow::MainWindow(QWidget *parent) : QMainWindow(parent)
 
     m_diagram = new RobotDiagram(this);
     setCentralWidget(m_diagram);
+    m_layout = new DockLayout(this);
+    m_status = new RobotStatusBar(statusBar());
+    m_recording = new RecordingActions(m_fleet, this);
+    connect(m_recording, &RecordingActions::message, this, [this](const QString &m) { statusBar()->showMessage(m, 5000); });
+    buildDocks();
+    buildRobotBar();
+    buildActions();
+    buildMenus();
+    retranslateUi();
+    m_layout->keepAsDefault();
+    wireInputs();
 
+    connect(&m_fleet, &RobotFleet::robotAdded, this, &MainWindow::onRobotAdded);
+    connect(&m_fleet, &RobotFleet::robotRemoved, this, [this] { refreshRobotCards(); });
+    connect(&m_fleet, &RobotFleet::selectionChanged, this, [this](RobotSession *robot) { showSelected(robot); });
+
+    m_displayTimer.setInterval(kDisplayIntervalMs);
+    connect(&m_displayTimer, &QTimer::timeout, this, &MainWindow::refreshDisplay);
+}
+
+MainWindow::~MainWindow()
+{
+    m_fleet.closeAllAndWait();
+}
+
+void MainWindow::buildDocks()
+{
     m_connectionBar = new ConnectionBar(this);
     m_modePanel = new ModePanel(this);
     m_gauges = new SensorGauges(this);
     m_signalBars = new SignalBars(this);
     m_plots = new SensorPlots(this);
-    m_plots->setHistory(&m_history);
     m_inspector = new ByteInspector(this);
     m_songs = new SongComposer(this);
     m_leds = new LedEditor(this);
@@ -122,19 +115,20 @@ MainWindow::MainWindow(QWidget *parent) : QMainWindow(parent)
     m_gamepadPanel->setInput(m_gamepad);
     m_drivePad = new DrivePad(this);
 
-    addDock("connectionDock", QT_TR_NOOP("Connection"), m_connectionBar, Qt::TopDockWidgetArea);
-    QDockWidget *modes = addDock("modeDock", QT_TR_NOOP("Modes"), m_modePanel, Qt::LeftDockWidgetArea);
+    DockLayout &l = *m_layout;
+    l.addDock("connectionDock", QT_TR_NOOP("Connection"), m_connectionBar, Qt::TopDockWidgetArea, true);
+    QDockWidget *modes = l.addDock("modeDock", QT_TR_NOOP("Modes"), m_modePanel, Qt::LeftDockWidgetArea, true);
     // A tab beside the modes, not below them: stacked, the two would make the
     // window taller than a laptop screen. The pad offers Enter Safe itself.
-    tabifyDockWidget(modes, addDock("driveDock", QT_TR_NOOP("Drive"), m_drivePad, Qt::LeftDockWidgetArea));
+    tabifyDockWidget(modes, l.addDock("driveDock", QT_TR_NOOP("Drive"), m_drivePad, Qt::LeftDockWidgetArea, true));
     modes->raise();
-    QDockWidget *gauges = addDock("gaugesDock", QT_TR_NOOP("Gauges"), m_gauges, Qt::RightDockWidgetArea);
+    QDockWidget *gauges = l.addDock("gaugesDock", QT_TR_NOOP("Gauges"), m_gauges, Qt::RightDockWidgetArea);
     // The signal bars share the right with the gauges: on a laptop screen the
     // left column has room for the modes only once the editors are open below.
-    tabifyDockWidget(gauges, addDock("signalsDock", QT_TR_NOOP("Signals"), m_signalBars, Qt::RightDockWidgetArea));
+    tabifyDockWidget(gauges, l.addDock("signalsDock", QT_TR_NOOP("Signals"), m_signalBars, Qt::RightDockWidgetArea));
     gauges->raise();
-    QDockWidget *plots = addDock("plotsDock", QT_TR_NOOP("Plots"), m_plots, Qt::BottomDockWidgetArea);
-    QDockWidget *inspector = addDock("inspectorDock", QT_TR_NOOP("Inspector"), m_inspector, Qt::BottomDockWidgetArea);
+    QDockWidget *plots = l.addDock("plotsDock", QT_TR_NOOP("Plots"), m_plots, Qt::BottomDockWidgetArea);
+    QDockWidget *inspector = l.addDock("inspectorDock", QT_TR_NOOP("Inspector"), m_inspector, Qt::BottomDockWidgetArea);
     tabifyDockWidget(plots, inspector);
     // The editors share the bottom with the plots: a hidden tab costs nothing.
     QDockWidget *below = inspector;
@@ -145,7 +139,8 @@ MainWindow::MainWindow(QWidget *parent) : QMainWindow(parent)
                                        std::tuple{"motorsDock", QT_TR_NOOP("Motors and outputs"), static_cast<QWidget *>(m_motors)},
                                        std::tuple{"mapDock", QT_TR_NOOP("Odometry map"), static_cast<QWidget *>(m_map)},
                                        std::tuple{"gamepadDock", QT_TR_NOOP("Gamepad"), static_cast<QWidget *>(m_gamepadPanel)}}) {
-        QDockWidget *dock = addDock(name, title, widget, Qt::BottomDockWidgetArea);
+        const bool acts = widget != m_map;
+        QDockWidget *dock = l.addDock(name, title, widget, Qt::BottomDockWidgetArea, acts);
         tabifyDockWidget(below, dock);
         below = dock;
     }
@@ -157,114 +152,209 @@ MainWindow::MainWindow(QWidget *parent) : QMainWindow(parent)
     m_plots->addPlot({22, 23});
     resizeDocks({plots}, {300}, Qt::Vertical);
     resizeDocks({modes, gauges}, {420, 480}, Qt::Horizontal);
+}
 
-    buildActions();
-    buildMenus();
-    buildStatusBar();
-    retranslateUi();
-    m_defaultState = saveState();
+void MainWindow::buildRobotBar()
+{
+    m_robotBar = new QToolBar(this);
+    m_robotBar->setObjectName("robotToolBar");
+    m_robotBar->setMovable(false);
+    m_robotBar->setFloatable(false);
+    // Always there: Stop all must never be hidden by a stray click.
+    m_robotBar->toggleViewAction()->setVisible(false);
+    m_robotBar->setContextMenuPolicy(Qt::PreventContextMenu);
+    m_robotList = new RobotList(m_robotBar);
+    m_robotList->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Preferred);
+    m_robotBar->addWidget(m_robotList);
+    m_stopAll = new QPushButton(m_robotBar);
+    m_stopAll->setObjectName("stopAllButton");
+    m_stopAll->setFont(display::valueFont(font(), 1.3));
+    m_stopAll->setMinimumHeight(48);
+    const display::State alert = display::State::Alert;
+    m_stopAll->setStyleSheet(QString("QPushButton { background: %1; color: %2; padding: 6px 16px; border-radius: 6px; }"
+                                     "QPushButton:pressed { background: %2; color: %1; }")
+                                 .arg(display::stateColor(alert, palette()).name(), display::textOn(alert, palette()).name()));
+    m_robotBar->addWidget(m_stopAll);
+    addToolBar(Qt::TopToolBarArea, m_robotBar);
+    addToolBarBreak(Qt::TopToolBarArea);
+    connect(m_stopAll, &QPushButton::clicked, &m_fleet, &RobotFleet::stopAll);
 
-    // Every frame once: the history, and the odometry (distance and angle are
-    // increments since the last frame).
-    m_session.setSnapshotObserver([this](double t, const oi::SensorSnapshot &s) {
-        m_history.append(t, s);
-        m_map->addSnapshot(s);
+    connect(m_robotList, &RobotList::selectRequested, this, [this](int index) {
+        if (index >= 0 && index < m_fleet.count())
+            m_fleet.select(m_fleet.robots()[index]);
     });
-    connect(&m_session, &RobotSession::profileChanged, this, &MainWindow::applyProfile);
-    connect(&m_session, &RobotSession::stateChanged, this, &MainWindow::showState);
-    connect(&m_session, &RobotSession::statisticsChanged, this, &MainWindow::showStatistics);
-    connect(&m_session, &RobotSession::errorOccurred, m_connectionBar, &ConnectionBar::showError);
-    connect(&m_session, &RobotSession::firmwareChanged, this, [this](const QString &release) {
-        m_modePanel->setFirmware(release);
-        m_firmware = release;
-        m_firmwareLabel->setText(tr("Firmware %1").arg(release));
+    connect(m_robotList, &RobotList::addRequested, this, [this](RobotList::AddKind kind) { addRobot(int(kind)); });
+    connect(m_robotList, &RobotList::renameRequested, this, [this](int index, const QString &name) {
+        if (index >= 0 && index < m_fleet.count())
+            m_fleet.robots()[index]->setName(m_fleet.uniqueName(name));
     });
-    connect(&m_session, &RobotSession::recordingStatus, this, &MainWindow::showRecording);
-    connect(&m_session, &RobotSession::replayStatus, this, &MainWindow::showReplay);
-    connect(m_replayBar, &ReplayBar::playRequested, this, [this] { m_session.controlReplay(oilink::ReplayCommand::play()); });
-    connect(m_replayBar, &ReplayBar::pauseRequested, this, [this] { m_session.controlReplay(oilink::ReplayCommand::pause()); });
+    connect(m_robotList, &RobotList::removeRequested, this, [this](int index) {
+        if (index >= 0 && index < m_fleet.count())
+            m_fleet.removeRobot(m_fleet.robots()[index]);
+    });
+}
+
+void MainWindow::addRobot(int kind)
+{
+    switch (RobotList::AddKind(kind)) {
+    case RobotList::AddKind::VirtualRobot: {
+        // Each virtual robot its own seed, so no two drift alike.
+        oilink::LinkSettings settings = oilink::LinkSettings::virtualRobotOf(oi::ProfileId::Create2, std::nullopt);
+        settings.virtualSeed = std::uint32_t(m_fleet.count() + 1);
+        m_fleet.select(m_fleet.addRobot(settings));
+        break;
+    }
+    case RobotList::AddKind::Connection: {
+        // Not connected yet: the connection bar, now showing it, says where.
+        RobotSession *robot = m_fleet.addRobot(oilink::LinkSettings::serial(QString()), {}, false);
+        m_fleet.select(robot);
+        m_connectionBar->setFocus(Qt::OtherFocusReason);
+        m_layout->docks().first()->raise();
+        break;
+    }
+    case RobotList::AddKind::Recording:
+        m_recording->openAction()->trigger();
+        break;
+    }
+}
+
+void MainWindow::onRobotAdded(RobotSession *robot)
+{
+    connect(robot, &RobotSession::identityChanged, this, [this, robot] {
+        refreshRobotCards();
+        if (robot == m_fleet.selected())
+            showSelected(robot);
+    });
+    refreshRobotCards();
+    // A second robot: the docks that act on one now say which.
+    if (m_fleet.selected())
+        m_layout->retitle(m_fleet.count() > 1 ? m_fleet.selected()->name() : QString());
+}
+
+void MainWindow::wireInputs()
+{
+    // Every user action goes to the selected robot's model.
+    const auto send = [this](const QByteArray &bytes) { session().send(bytes); };
+    connect(m_inspector, &ByteInspector::sendRequested, this, send);
+    connect(m_modePanel, &ModePanel::sendRequested, this, send);
+    connect(m_songs, &SongComposer::sendRequested, this, send);
+    connect(m_leds, &LedEditor::sendRequested, this, send);
+    connect(m_schedule, &ScheduleEditor::sendRequested, this, send);
+    connect(m_script, &ScriptEditor::sendRequested, this, send);
+    connect(m_motors, &MotorsPanel::sendRequested, this, send);
+    connect(m_script, &ScriptEditor::showScriptRequested, this, [this] { session().showScript(); });
+    connect(m_replayBar, &ReplayBar::playRequested, this, [this] { session().controlReplay(oilink::ReplayCommand::play()); });
+    connect(m_replayBar, &ReplayBar::pauseRequested, this, [this] { session().controlReplay(oilink::ReplayCommand::pause()); });
     connect(m_replayBar, &ReplayBar::stepRequested, this,
-            [this](int frames) { m_session.controlReplay(oilink::ReplayCommand::step(frames)); });
+            [this](int frames) { session().controlReplay(oilink::ReplayCommand::step(frames)); });
     connect(m_replayBar, &ReplayBar::speedChosen, this,
-            [this](double speed) { m_session.controlReplay(oilink::ReplayCommand::setSpeed(speed)); });
+            [this](double speed) { session().controlReplay(oilink::ReplayCommand::setSpeed(speed)); });
     connect(m_replayBar, &ReplayBar::seekRequested, this,
-            [this](qint64 us) { m_session.controlReplay(oilink::ReplayCommand::seek(us)); });
-    connect(&m_session, &RobotSession::bytesSent, m_inspector, &ByteInspector::appendTx);
-    connect(&m_session, &RobotSession::bytesReceived, m_inspector, &ByteInspector::appendRx);
-    connect(m_inspector, &ByteInspector::sendRequested, &m_session, &RobotSession::send);
-    connect(m_modePanel, &ModePanel::sendRequested, &m_session, &RobotSession::send);
-    connect(m_songs, &SongComposer::sendRequested, &m_session, &RobotSession::send);
-    connect(m_leds, &LedEditor::sendRequested, &m_session, &RobotSession::send);
-    connect(m_schedule, &ScheduleEditor::sendRequested, &m_session, &RobotSession::send);
-    connect(m_script, &ScriptEditor::sendRequested, &m_session, &RobotSession::send);
-    connect(m_motors, &MotorsPanel::sendRequested, &m_session, &RobotSession::send);
-    connect(&m_session, &RobotSession::virtualRobotPose, this, [this](double x, double y, double theta) {
-        m_map->setTruePose(oi::Pose{x, y, theta, 0});
-    });
-    // The gamepad drives through the same sending rules as the pad and keys.
-    connect(m_gamepad, &GamepadInput::motionRequested, &m_teleop, &TeleopController::requestMotion);
+            [this](qint64 us) { session().controlReplay(oilink::ReplayCommand::seek(us)); });
+
+    // Pad, keys and gamepad drive through the selected robot's sending rules.
+    connect(m_drivePad, &DrivePad::motionRequested, this, [this](const MotionCommand &c) { teleop().requestMotion(c); });
+    connect(m_drivePad, &DrivePad::safeRequested, this, [this] { teleop().enterSafe(); });
+    connect(m_gamepad, &GamepadInput::motionRequested, this, [this](const MotionCommand &c) { teleop().requestMotion(c); });
     connect(m_gamepad, &GamepadInput::deadManChanged, this, [this](bool held) {
         if (!held)
-            m_teleop.deadManReleased();
+            teleop().deadManReleased();
     });
-    connect(m_gamepad, &GamepadInput::stopAllRequested, &m_teleop, &TeleopController::stopAll);
+    connect(m_gamepad, &GamepadInput::stopAllRequested, &m_fleet, &RobotFleet::stopAll);
     connect(m_gamepad, &GamepadInput::modeRequested, m_modePanel, &ModePanel::request);
-    connect(&m_session, &RobotSession::bytesReceived, m_script, &ScriptEditor::appendReceived);
-    connect(m_drivePad, &DrivePad::motionRequested, &m_teleop, &TeleopController::requestMotion);
-    connect(m_drivePad, &DrivePad::safeRequested, &m_teleop, &TeleopController::enterSafe);
-    connect(&m_teleop, &TeleopController::passiveChanged, m_drivePad, &DrivePad::setPassive);
-    connect(&m_teleop, &TeleopController::motionStopped, this, [this] {
-        m_drivePad->resetToCentre();
-        m_driveKeys.clear();
+    m_keyboard = new KeyboardDriving(this, m_plots, this);
+    m_keyboard->setTarget([this] { return m_fleet.selected() ? &teleop() : nullptr; },
+                          [this] { return m_drivePad->speedLimit(); });
+    connect(m_keyboard, &KeyboardDriving::stopAllRequested, &m_fleet, &RobotFleet::stopAll);
+
+    connect(m_connectionBar, &ConnectionBar::connectRequested, this, [this](const ConnectionRequest &request) {
+        session().connectTo(connection::linkSettingsFor(request));
+        m_connectionBar->setConnected(true);
+        m_shownSnapshot = ~0ull;
+        m_liveFlagOutdated = true;
+        showSelected(&session());
     });
-    connect(&m_teleop, &TeleopController::motionRefused, this,
-            [this](const QString &reason) { statusBar()->showMessage(reason, 5000); });
-    m_drivePad->setPassive(m_teleop.isPassive());
-    qApp->installEventFilter(this);
-    connect(m_connectionBar, &ConnectionBar::connectRequested, this, &MainWindow::connectFromBar);
     connect(m_connectionBar, &ConnectionBar::disconnectRequested, this, [this] {
-        m_session.disconnectFromRobot();
+        session().disconnectFromRobot();
         m_connectionBar->setConnected(false);
     });
-
-    m_displayTimer.setInterval(kDisplayIntervalMs);
-    connect(&m_displayTimer, &QTimer::timeout, this, &MainWindow::refreshDisplay);
-    applyProfile(m_session.robotProfile().id);
-    showState(oilink::LinkState::Closed);
 }
 
-MainWindow::~MainWindow()
+void MainWindow::showSelected(RobotSession *robot)
 {
-    qApp->removeEventFilter(this);
-    m_session.closeAndWait();
-}
+    if (!robot)
+        return;
+    for (const QMetaObject::Connection &c : std::as_const(m_selectedConnections))
+        disconnect(c);
+    m_selectedConnections.clear();
+    TeleopController *teleop = &robot->teleop();
+    m_selectedConnections = {
+        connect(robot, &RobotSession::profileChanged, this, &MainWindow::applyProfile),
+        connect(robot, &RobotSession::stateChanged, this, &MainWindow::showState),
+        connect(robot, &RobotSession::statisticsChanged, m_status, &RobotStatusBar::showStatistics),
+        connect(robot, &RobotSession::errorOccurred, m_connectionBar, &ConnectionBar::showError),
+        connect(robot, &RobotSession::firmwareChanged, this, [this](const QString &release) {
+            m_modePanel->setFirmware(release);
+            m_status->showFirmware(release);
+        }),
+        connect(robot, &RobotSession::recordingStatus, this, [this](const oilink::RecordingStatus &status) {
+            m_status->showRecording(status);
+            m_recording->showSelectedRobot();
+            if (!status.error.isEmpty())
+                m_connectionBar->showError(tr("Recording stopped: %1").arg(status.error));
+        }),
+        connect(robot, &RobotSession::replayStatus, this, &MainWindow::showReplay),
+        connect(robot, &RobotSession::bytesSent, m_inspector, &ByteInspector::appendTx),
+        connect(robot, &RobotSession::bytesReceived, m_inspector, &ByteInspector::appendRx),
+        connect(robot, &RobotSession::scriptShown, m_script, &ScriptEditor::showScriptReply),
+        connect(robot, &RobotSession::scriptFailed, m_script, &ScriptEditor::showScriptFailed),
+        connect(robot, &RobotSession::virtualRobotPose, this, [this](double x, double y, double theta) {
+            m_map->setTruePose(oi::Pose{x, y, theta, 0});
+        }),
+        connect(teleop, &TeleopController::passiveChanged, m_drivePad, &DrivePad::setPassive),
+        connect(teleop, &TeleopController::motionStopped, this, [this] {
+            m_drivePad->resetToCentre();
+            m_keyboard->releaseAll();
+        }),
+        connect(teleop, &TeleopController::motionRefused, this,
+                [this](const QString &reason) { statusBar()->showMessage(reason, 5000); }),
+    };
 
-QDockWidget *MainWindow::addDock(const QString &objectName, const char *title, QWidget *widget,
-                                 Qt::DockWidgetArea area)
-{
-    auto *dock = new QDockWidget(this);
-    dock->setObjectName(objectName);
-    dock->setWidget(widget);
-    addDockWidget(area, dock);
-    m_docks << dock;
-    m_dockTitles << title;
-    return dock;
+    m_plots->setHistory(&robot->history());
+    m_map->setOdometry(&robot->odometry());
+    // The virtual robot lives in the classroom world and starts where the
+    // odometry does, so a class can watch the estimate drift from the room.
+    const bool virtualRobot = robot->settings().transport == oilink::TransportKind::Virtual;
+    m_map->setWorld(virtualRobot ? std::optional(sim::World::classroom()) : std::nullopt);
+    m_map->setTruePose(std::nullopt);
+    m_inspector->clear();
+    applyProfile(robot->robotProfile().id);
+    m_modePanel->setFirmware(robot->firmwareRelease());
+    m_drivePad->setPassive(teleop->isPassive());
+    m_drivePad->resetToCentre();
+    m_keyboard->releaseAll();
+
+    m_connectionBar->setRequest(connection::requestFor(robot->settings()));
+    m_connectionBar->setConnected(robot->isConnected());
+    m_status->showRobot(*robot, m_fleet.count() > 1);
+    m_recording->showSelectedRobot();
+    const bool replay = robot->isReplay();
+    m_replayBarAction->setVisible(replay);
+    if (replay) {
+        m_recordingBar->show();
+        showReplay(robot->replay());
+    }
+    m_layout->retitle(m_fleet.count() > 1 ? robot->name() : QString());
+    setWindowTitle(m_fleet.count() > 1 ? tr("%1 — Roomba Dashboard").arg(robot->name()) : tr("Roomba Dashboard"));
+    m_robotList->setSelected(int(m_fleet.indexOf(robot)));
+    m_shownSnapshot = ~0ull;
+    m_liveFlagOutdated = true;
+    refreshRobotCards();
+    refreshDisplay();
 }
 
 void MainWindow::buildActions()
 {
-    m_recordAction = new QAction(this);
-    m_recordAction->setObjectName("recordAction");
-    m_recordAction->setCheckable(true);
-    m_recordAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_R));
-    connect(m_recordAction, &QAction::triggered, this, &MainWindow::chooseRecordingFile);
-    m_openRecordingAction = new QAction(this);
-    m_openRecordingAction->setObjectName("openRecordingAction");
-    m_openRecordingAction->setShortcut(QKeySequence::Open);
-    connect(m_openRecordingAction, &QAction::triggered, this, &MainWindow::chooseRecordingToOpen);
-    m_exportCsvAction = new QAction(this);
-    m_exportCsvAction->setObjectName("exportCsvAction");
-    connect(m_exportCsvAction, &QAction::triggered, this, &MainWindow::chooseRecordingToExport);
     m_quitAction = new QAction(this);
     m_quitAction->setShortcut(QKeySequence::Quit);
     connect(m_quitAction, &QAction::triggered, this, &QWidget::close);
@@ -277,6 +367,11 @@ void MainWindow::buildActions()
     m_previousDockAction->setShortcut(QKeySequence(Qt::SHIFT | Qt::Key_F6));
     connect(m_previousDockAction, &QAction::triggered, this, [this] { focusNextDock(-1); });
     addActions({m_nextDockAction, m_previousDockAction}); // work without the menu open
+    // Shift+Esc is read by the keyboard driving, before any shortcut; the
+    // menu names it.
+    m_stopAllAction = new QAction(this);
+    m_stopAllAction->setObjectName("stopAllAction");
+    connect(m_stopAllAction, &QAction::triggered, &m_fleet, &RobotFleet::stopAll);
     m_aboutAction = new QAction(this);
     connect(m_aboutAction, &QAction::triggered, this, [this] {
         QMessageBox::about(this, tr("About Roomba Dashboard"),
@@ -302,8 +397,8 @@ void MainWindow::buildActions()
     m_recordingBar = addToolBar(QString());
     m_recordingBar->setObjectName("recordingToolBar");
     m_recordingBar->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
-    m_recordingBar->addAction(m_recordAction);
-    m_recordingBar->addAction(m_openRecordingAction);
+    m_recordingBar->addAction(m_recording->recordAction());
+    m_recordingBar->addAction(m_recording->openAction());
     m_replayBar = new ReplayBar(this);
     m_replayBar->setObjectName("replayBar");
     m_replayBarAction = m_recordingBar->addWidget(m_replayBar);
@@ -313,14 +408,16 @@ void MainWindow::buildActions()
 void MainWindow::buildMenus()
 {
     m_fileMenu = menuBar()->addMenu(QString());
-    m_fileMenu->addAction(m_recordAction);
-    m_fileMenu->addAction(m_openRecordingAction);
-    m_fileMenu->addAction(m_exportCsvAction);
+    m_fileMenu->addAction(m_recording->recordAction());
+    m_fileMenu->addAction(m_recording->openAction());
+    m_fileMenu->addAction(m_recording->exportCsvAction());
+    m_fileMenu->addSeparator();
+    m_fileMenu->addAction(m_stopAllAction);
     m_fileMenu->addSeparator();
     m_fileMenu->addAction(m_quitAction);
 
     m_viewMenu = menuBar()->addMenu(QString());
-    for (QDockWidget *dock : m_docks)
+    for (QDockWidget *dock : m_layout->docks())
         m_viewMenu->addAction(dock->toggleViewAction());
     m_viewMenu->addAction(m_recordingBar->toggleViewAction());
     m_viewMenu->addSeparator();
@@ -338,15 +435,18 @@ void MainWindow::buildMenus()
 
 void MainWindow::retranslateUi()
 {
-    setWindowTitle(tr("Roomba Dashboard"));
-    for (qsizetype i = 0; i < m_docks.size(); ++i)
-        m_docks[i]->setWindowTitle(tr(m_dockTitles[i]));
+    setWindowTitle(m_fleet.count() > 1 && m_fleet.selected()
+                       ? tr("%1 — Roomba Dashboard").arg(m_fleet.selected()->name())
+                       : tr("Roomba Dashboard"));
+    m_layout->retitle(m_fleet.count() > 1 && m_fleet.selected() ? m_fleet.selected()->name() : QString());
     m_fileMenu->setTitle(tr("&File"));
-    m_recordAction->setText(tr("&Record"));
-    m_recordAction->setToolTip(tr("Record every byte to and from the robot into a file"));
-    m_openRecordingAction->setText(tr("&Open recording…"));
-    m_openRecordingAction->setToolTip(tr("Replay a recording in place of the robot"));
-    m_exportCsvAction->setText(tr("&Export recording as CSV…"));
+    m_recording->retranslate();
+    m_stopAllAction->setText(tr("&Stop all robots\tShift+Esc"));
+    m_stopAll->setText(tr("STOP ALL  (Shift+Esc)"));
+    m_stopAll->setToolTip(tr("Stop every robot in the window at once, whichever is selected.\n"
+                             "Space or Esc stops the selected robot."));
+    m_stopAll->setAccessibleName(tr("Stop all robots"));
+    m_robotBar->setWindowTitle(tr("Robots"));
     m_quitAction->setText(tr("&Quit"));
     m_viewMenu->setTitle(tr("&View"));
     m_recordingBar->setWindowTitle(tr("Recording and replay"));
@@ -357,12 +457,10 @@ void MainWindow::retranslateUi()
     m_previousDockAction->setText(tr("&Previous pane"));
     m_helpMenu->setTitle(tr("&Help"));
     m_aboutAction->setText(tr("&About"));
-    m_profileLabel->setText(oitext::fromView(m_session.robotProfile().name));
-    if (!m_firmware.isEmpty())
-        m_firmwareLabel->setText(tr("Firmware %1").arg(m_firmware));
-    showState(m_shownState);
-    showStatistics(m_shownStats);
-    showRecording(m_session.recording());
+    m_status->retranslate();
+    if (m_fleet.selected())
+        m_status->showProfile(oitext::fromView(session().robotProfile().name));
+    refreshRobotCards();
 }
 
 void MainWindow::setLanguage(const QString &code, bool remember)
@@ -377,117 +475,33 @@ void MainWindow::setLanguage(const QString &code, bool remember)
     QCoreApplication::sendPostedEvents(nullptr, QEvent::LanguageChange);
 }
 
+QAction *MainWindow::recordAction() const
+{
+    return m_recording->recordAction();
+}
+
 void MainWindow::startRecording(const QString &path)
 {
-    m_session.startRecording(path);
+    session().startRecording(path);
 }
 
 void MainWindow::stopRecording()
 {
-    m_session.stopRecording();
+    session().stopRecording();
 }
 
 bool MainWindow::openRecording(const QString &path, QString *error)
 {
-    QString why;
-    const std::optional<oilink::Recording> recording = oilink::Recording::load(path, &why);
-    if (!recording) {
-        if (error)
-            *error = why;
-        return false;
-    }
-    if (m_session.recording().active)
-        stopRecording();
-    connectSession(oilink::LinkSettings::replayOf(path, recording->robotProfile().id, recording->stream().baud,
-                                                  recording->stream().packets));
-    return true;
+    return m_recording->openRecording(path, error);
 }
 
 QString MainWindow::exportRecordingCsv(const QString &recordingPath, const QString &csvPath)
 {
-    QString why;
-    const std::optional<oilink::Recording> recording = oilink::Recording::load(recordingPath, &why);
-    if (!recording)
-        return why;
-    QSaveFile file(csvPath);
-    if (!file.open(QIODevice::WriteOnly | QIODevice::Text))
-        return QStringLiteral("%1: %2").arg(csvPath, file.errorString());
-    QTextStream out(&file);
-    recording->writeCsv(out);
-    out.flush();
-    if (!file.commit())
-        return QStringLiteral("%1: %2").arg(csvPath, file.errorString());
-    return QString();
-}
-
-void MainWindow::chooseRecordingFile(bool start)
-{
-    if (!start) {
-        stopRecording();
-        return;
-    }
-    m_recordAction->setChecked(false); // until the link says it records
-    const QString suggested = QDir(QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation))
-                                  .filePath(QStringLiteral("roomba-%1.%2")
-                                                .arg(QDateTime::currentDateTime().toString("yyyyMMdd-HHmmss"),
-                                                     oilink::recording::kFileSuffix));
-    const QString path = QFileDialog::getSaveFileName(this, tr("Record to"), suggested,
-                                                      tr("Roomba Dashboard recordings (*.oirec)"));
-    if (!path.isEmpty())
-        startRecording(path);
-}
-
-void MainWindow::chooseRecordingToOpen()
-{
-    const QString path = QFileDialog::getOpenFileName(this, tr("Open recording"), QString(),
-                                                      tr("Roomba Dashboard recordings (*.oirec);;All files (*)"));
-    if (path.isEmpty())
-        return;
-    QString error;
-    if (!openRecording(path, &error))
-        QMessageBox::warning(this, tr("Open recording"), tr("This file cannot be replayed.\n\n%1").arg(error));
-}
-
-void MainWindow::chooseRecordingToExport()
-{
-    const QString from = QFileDialog::getOpenFileName(this, tr("Export recording as CSV"), QString(),
-                                                      tr("Roomba Dashboard recordings (*.oirec);;All files (*)"));
-    if (from.isEmpty())
-        return;
-    const QString to = QFileDialog::getSaveFileName(this, tr("Save CSV as"),
-                                                    QFileInfo(from).path() + '/' + QFileInfo(from).completeBaseName() + ".csv",
-                                                    tr("CSV files (*.csv)"));
-    if (to.isEmpty())
-        return;
-    const QString error = exportRecordingCsv(from, to);
-    if (!error.isEmpty())
-        QMessageBox::warning(this, tr("Export recording as CSV"), tr("Nothing was written.\n\n%1").arg(error));
-    else
-        statusBar()->showMessage(tr("Wrote %1").arg(QDir::toNativeSeparators(to)), 5000);
-}
-
-void MainWindow::showRecording(const oilink::RecordingStatus &status)
-{
-    m_recordAction->setChecked(status.active);
-    m_recordingLabel->setVisible(status.active);
-    m_recordingLabel->setText(tr("● REC %1 kB %2")
-                                  .arg(status.bytesWritten / 1024)
-                                  .arg(QFileInfo(status.path).fileName()));
-    m_recordingLabel->setToolTip(status.path);
-    if (!status.error.isEmpty())
-        m_connectionBar->showError(tr("Recording stopped: %1").arg(status.error));
+    return RecordingActions::exportRecordingCsv(recordingPath, csvPath);
 }
 
 void MainWindow::showReplay(const oilink::ReplayStatus &status)
 {
-    // The history and the odometry run forward in the recording's time; after
-    // a jump back (a seek, a step back, playing again from the end) they start
-    // afresh rather than draw time running backwards.
-    if (status.positionUs < m_replayShownUs) {
-        m_history.clear();
-        m_map->reset();
-    }
-    m_replayShownUs = status.positionUs;
     ReplayBar::Position p;
     p.positionUs = status.positionUs;
     p.durationUs = status.durationUs;
@@ -501,150 +515,46 @@ void MainWindow::showReplay(const oilink::ReplayStatus &status)
     m_replayBar->setPosition(p);
 }
 
-QString MainWindow::linkStateText(oilink::LinkState state) const
-{
-    using S = oilink::LinkState;
-    switch (state) {
-    case S::Closed: return tr("closed");
-    case S::Connecting: return tr("connecting");
-    case S::Streaming: return tr("streaming");
-    case S::Stale: return tr("stale");
-    case S::Lost: return tr("lost");
-    case S::Reconnecting: return tr("reconnecting");
-    }
-    return QString();
-}
-
-void MainWindow::buildStatusBar()
-{
-    auto label = [this](const char *name) {
-        auto *l = new QLabel(this);
-        l->setObjectName(name);
-        statusBar()->addPermanentWidget(l);
-        return l;
-    };
-    m_staleLabel = new QLabel(this);
-    m_staleLabel->setObjectName("staleIndicator");
-    m_staleLabel->setFont(display::valueFont(font(), 1.2));
-    const display::State alert = display::State::Alert;
-    m_staleLabel->setStyleSheet(QString("QLabel { background: %1; color: %2; padding: 2px 8px; }")
-                                    .arg(display::stateColor(alert, palette()).name(),
-                                         display::textOn(alert, palette()).name()));
-    statusBar()->addWidget(m_staleLabel);
-    m_stateLabel = label("linkState");
-    m_profileLabel = label("profile");
-    m_firmwareLabel = label("firmware");
-    m_rateLabel = label("frameRate");
-    m_errorsLabel = label("lineErrors");
-    m_recordingLabel = label("recording");
-    m_recordingLabel->setVisible(false);
-    m_recordingLabel->setStyleSheet(QString("QLabel { color: %1; font-weight: bold; }")
-                                        .arg(display::stateColor(alert, palette()).name()));
-}
-
 void MainWindow::setHistoryCapacity(std::size_t samples)
 {
-    m_history = SensorHistory(m_session.robotProfile(), samples);
-    m_plots->setHistory(&m_history);
+    for (RobotSession *robot : m_fleet.robots())
+        robot->setHistoryCapacity(samples);
+    m_plots->setHistory(&session().history());
 }
 
 void MainWindow::resetLayout()
 {
-    restoreState(m_defaultState);
-    for (QDockWidget *dock : m_docks)
-        dock->show();
+    m_layout->resetLayout();
 }
 
 QDockWidget *MainWindow::focusNextDock(int direction)
 {
-    QList<QDockWidget *> open;
-    for (QDockWidget *dock : m_docks)
-        if (dock->toggleViewAction()->isChecked())
-            open << dock;
-    if (open.isEmpty())
-        return nullptr;
-    const QWidget *focus = QApplication::focusWidget();
-    qsizetype current = -1;
-    for (qsizetype i = 0; i < open.size(); ++i)
-        if (focus && (open[i] == focus || open[i]->isAncestorOf(focus)))
-            current = i;
-    const qsizetype count = open.size();
-    const qsizetype next = current < 0 ? (direction > 0 ? 0 : count - 1) : ((current + direction) % count + count) % count;
-    QDockWidget *dock = open[next];
-    dock->raise(); // a tabbed dock comes to the front
-    // The first control that Tab would reach inside it; else the dock's widget.
-    QWidget *target = dock->widget();
-    for (QWidget *w = dock->widget()->nextInFocusChain(); w && w != dock->widget(); w = w->nextInFocusChain()) {
-        if (!dock->isAncestorOf(w))
-            continue;
-        if ((w->focusPolicy() & Qt::TabFocus) && w->isVisible() && w->isEnabled()) {
-            target = w;
-            break;
-        }
-    }
-    if (target == dock->widget() && target->focusPolicy() == Qt::NoFocus)
-        target->setFocusPolicy(Qt::TabFocus);
-    target->setFocus(Qt::ShortcutFocusReason);
-    return dock;
+    return m_layout->focusNextDock(direction);
 }
 
-oilink::LinkSettings MainWindow::linkSettingsFor(const ConnectionRequest &r)
-{
-    using T = ConnectionRequest::Transport;
-    oilink::LinkSettings s;
-    switch (r.transport) {
-    case T::Virtual:
-        s = oilink::LinkSettings::virtualRobotOf(r.profile.value_or(oi::ProfileId::Create2), r.profile);
-        break;
-    case T::Serial:
-        s = oilink::LinkSettings::serial(r.portPath, r.profile, r.baud);
-        break;
-    case T::Tcp:
-        s = oilink::LinkSettings::tcp(r.host, r.tcpPort, r.profile);
-        s.baud = r.baud;
-        break;
-    }
-    return s;
-}
-
-void MainWindow::start(const std::optional<oilink::LinkSettings> &override)
+void MainWindow::start(const std::optional<oilink::LinkSettings> &override, int count)
 {
     QSettings settings;
     restoreGeometry(settings.value("window/geometry").toByteArray());
     restoreState(settings.value("window/state").toByteArray());
-    const ConnectionRequest last = loadRequest(settings);
-    m_connectionBar->setRequest(last);
+    if (override) {
+        m_keepSavedRobots = true;
+        for (int i = 0; i < count; ++i) {
+            oilink::LinkSettings robot = *override;
+            robot.virtualSeed = std::uint32_t(i + 1);
+            m_fleet.addRobot(robot);
+        }
+    } else {
+        QList<SavedRobot> saved = loadSavedRobots(settings);
+        if (saved.isEmpty()) {
+            // A single robot kept by an earlier version, or on first start the virtual robot.
+            const auto single = singleSavedConnection(settings);
+            saved << SavedRobot{{}, {}, single.value_or(oilink::LinkSettings::virtualRobotOf(oi::ProfileId::Create2, {})), true};
+        }
+        m_fleet.restore(saved);
+    }
+    showSelected(m_fleet.selected());
     m_displayTimer.start();
-    connectSession(override ? *override : linkSettingsFor(last));
-}
-
-void MainWindow::connectSession(const oilink::LinkSettings &settings)
-{
-    m_history.clear();
-    m_map->reset();
-    // The virtual robot lives in the classroom world and starts where the
-    // odometry does, so a class can watch the estimate drift from the room.
-    m_map->setWorld(settings.transport == oilink::TransportKind::Virtual ? std::optional(sim::World::classroom())
-                                                                          : std::nullopt);
-    m_map->setTruePose(std::nullopt);
-    m_replayShownUs = 0;
-    m_session.connectTo(settings);
-    m_connectionBar->setConnected(true);
-    // The replay controls belong to a replay only.
-    const bool replay = settings.transport == oilink::TransportKind::Replay;
-    m_replayBarAction->setVisible(replay);
-    m_recordAction->setEnabled(!replay);
-    if (replay)
-        m_recordingBar->show();
-    m_liveFlagOutdated = true; // its text depends on the source
-    refreshDisplay();
-}
-
-void MainWindow::connectFromBar(const ConnectionRequest &request)
-{
-    QSettings settings;
-    saveRequest(settings, request);
-    connectSession(linkSettingsFor(request));
 }
 
 void MainWindow::applyProfile(oi::ProfileId id)
@@ -662,16 +572,41 @@ void MainWindow::applyProfile(oi::ProfileId id)
     m_motors->setProfile(p);
     m_map->setProfile(p);
     m_drivePad->setProfile(p);
-    if (m_history.robotProfile().id != id) {
-        m_history.setProfile(p);
-        m_plots->setProfile(p);
+    m_plots->setProfile(p);
+    m_status->showProfile(oitext::fromView(p.name));
+    m_shownSnapshot = ~0ull;
+}
+
+void MainWindow::refreshRobotCards()
+{
+    QList<RobotCardValues> cards;
+    for (const RobotSession *robot : m_fleet.robots()) {
+        RobotCardValues c;
+        c.name = robot->name();
+        c.colour = robot->colour();
+        c.profile = oitext::fromView(robot->robotProfile().name);
+        c.live = robot->isLive();
+        if (robot->isReplay())
+            c.profile = tr("Recording of %1").arg(c.profile);
+        if (robot->snapshotCount() > 0) {
+            c.mode = oitext::modeName(robot->latest().oiMode());
+            if (const auto percent = robot->latest().batteryPercent())
+                c.batteryPercent = int(std::lround(*percent));
+        }
+        c.link = robot->isConnected() ? RobotStatusBar::linkStateText(robot->state()) : tr("not connected");
+        cards << c;
     }
-    m_profileLabel->setText(oitext::fromView(p.name));
+    m_robotList->setCards(cards);
+    if (m_fleet.selected())
+        m_robotList->setSelected(int(m_fleet.indexOf(m_fleet.selected())));
 }
 
 void MainWindow::refreshDisplay()
 {
-    const bool live = m_session.state() == oilink::LinkState::Streaming;
+    if (!m_fleet.selected())
+        return;
+    RobotSession &robot = session();
+    const bool live = robot.isLive();
     if (live != m_shownLive || m_liveFlagOutdated) {
         m_shownLive = live;
         m_liveFlagOutdated = false;
@@ -679,15 +614,13 @@ void MainWindow::refreshDisplay()
         m_gauges->setStale(!live);
         // No driving, and no Enter Safe, without live data to see the robot
         // by; a replay has no robot to drive.
-        const bool replay = m_session.isReplay();
-        m_drivePad->setEnabled(live && !replay);
-        m_staleLabel->setText(replay ? tr("  REPLAY, NOT LIVE  ") : tr("  NO LIVE DATA  "));
-        m_staleLabel->setVisible(!live || replay);
+        m_drivePad->setEnabled(live && !robot.isReplay());
+        m_status->showLive(live, robot.isReplay());
     }
     // Repaint only what changed: a robot at rest streams the same values.
-    if (m_session.snapshotCount() != m_shownSnapshot) {
-        m_shownSnapshot = m_session.snapshotCount();
-        const oi::SensorSnapshot &s = m_session.latest();
+    if (robot.snapshotCount() != m_shownSnapshot) {
+        m_shownSnapshot = robot.snapshotCount();
+        const oi::SensorSnapshot &s = robot.latest();
         if (!(s == m_shown)) {
             m_shown = s;
             m_diagram->setSnapshot(s);
@@ -697,42 +630,29 @@ void MainWindow::refreshDisplay()
             m_songs->setSnapshot(s);
         }
     }
-    m_teleop.checkMode();
+    ++m_displayTicks;
     // Scrolling plots are the dearest thing on screen; 15 Hz still moves
     // them smoothly and halves their cost.
-    ++m_displayTicks;
     if (m_plots->isVisible() && m_displayTicks % 2 == 0)
         m_plots->refresh();
     // Where the virtual robot really is, so the map shows the odometry drift.
-    if (m_map->isVisible() && m_session.settings().transport == oilink::TransportKind::Virtual && m_displayTicks % 3 == 0)
-        m_session.requestVirtualRobotPose();
+    if (m_map->isVisible() && robot.settings().transport == oilink::TransportKind::Virtual && m_displayTicks % 3 == 0)
+        robot.requestVirtualRobotPose();
+    if (m_displayTicks % kCardTicks == 0)
+        refreshRobotCards();
 }
 
 void MainWindow::showState(oilink::LinkState state)
 {
-    m_shownState = state;
-    m_stateLabel->setText(tr("Link: %1").arg(linkStateText(state)));
+    m_status->showState(state);
     if (state == oilink::LinkState::Closed)
-        m_connectionBar->setConnected(m_session.isConnected());
+        m_connectionBar->setConnected(session().isConnected());
     refreshDisplay();
-}
-
-void MainWindow::showStatistics(const oilink::LinkStats &stats)
-{
-    m_shownStats = stats;
-    m_rateLabel->setText(tr("%1 frames/s").arg(stats.framesPerSecond, 0, 'f', 1));
-    m_errorsLabel->setText(tr("checksum failures %1, resyncs %2").arg(stats.checksumFailures).arg(stats.resyncs));
 }
 
 QString MainWindow::statusText() const
 {
-    QStringList parts;
-    if (!m_staleLabel->isHidden())
-        parts << m_staleLabel->text().trimmed();
-    for (QLabel *l : {m_stateLabel, m_profileLabel, m_firmwareLabel, m_rateLabel, m_errorsLabel})
-        if (!l->text().isEmpty())
-            parts << l->text();
-    return parts.join(" | ");
+    return m_status->text();
 }
 
 void MainWindow::saveSettings() const
@@ -740,16 +660,22 @@ void MainWindow::saveSettings() const
     QSettings settings;
     settings.setValue("window/geometry", saveGeometry());
     settings.setValue("window/state", saveState());
-    saveRequest(settings, m_connectionBar->request());
+    if (m_keepSavedRobots)
+        return;
+    // A recording is a file to open again, not a robot to reconnect to.
+    QList<SavedRobot> robots;
+    for (const SavedRobot &r : m_fleet.saved())
+        if (r.link.transport != oilink::TransportKind::Replay)
+            robots << r;
+    saveRobots(settings, robots);
 }
 
 void MainWindow::closeEvent(QCloseEvent *event)
 {
     saveSettings();
     m_displayTimer.stop();
-    // Leave the robot stopped and in Passive mode (ERRATA 17).
-    m_teleop.stopBeforeQuit();
-    m_session.closeAndWait();
+    // Every robot stopped and left in Passive mode (ERRATA 17).
+    m_fleet.closeAllAndWait();
     event->accept();
 }
 
@@ -760,80 +686,10 @@ void MainWindow::changeEvent(QEvent *event)
         m_liveFlagOutdated = true;
         refreshDisplay();
     }
-    if (event->type() == QEvent::ActivationChange && !isActiveWindow()) {
+    if (event->type() == QEvent::ActivationChange && !isActiveWindow() && m_fleet.selected()) {
         // Key releases now go to another window: forget the held keys.
-        m_driveKeys.clear();
-        m_teleop.focusLost();
+        m_keyboard->releaseAll();
+        teleop().focusLost();
     }
     QMainWindow::changeEvent(event);
-}
-
-bool MainWindow::eventFilter(QObject *watched, QEvent *event)
-{
-    const QEvent::Type type = event->type();
-    if ((type != QEvent::KeyPress && type != QEvent::KeyRelease) || !watched->isWidgetType()
-        || static_cast<QWidget *>(watched)->window() != this)
-        return QMainWindow::eventFilter(watched, event);
-    auto *key = static_cast<QKeyEvent *>(event);
-    const QWidget *focus = QApplication::focusWidget();
-    // Esc is always Stop All. Space is Stop All too, except where it already
-    // means something: inside the plots dock it pauses the plots, and in a
-    // text field it types a space.
-    const bool stopKey = key->key() == Qt::Key_Escape
-        || (key->key() == Qt::Key_Space && !isTextInput(focus)
-            && !(focus && (focus == m_plots || m_plots->isAncestorOf(focus))));
-    if (stopKey && key->modifiers() == Qt::NoModifier) {
-        if (type == QEvent::KeyPress && !key->isAutoRepeat()) {
-            m_driveKeys.clear();
-            m_teleop.stopAll();
-        }
-        return true;
-    }
-    return handleDriveKey(key) || QMainWindow::eventFilter(watched, event);
-}
-
-bool MainWindow::handleDriveKey(QKeyEvent *event)
-{
-    const int key = driveKey(event->key());
-    if (!key)
-        return false;
-    if (event->type() == QEvent::KeyRelease) {
-        // A held key is always let go, wherever the focus went meanwhile.
-        if (!m_driveKeys.contains(key))
-            return false;
-        if (event->isAutoRepeat())
-            return true;
-        m_driveKeys.remove(key);
-        const MotionCommand command = keyboardCommand();
-        if (command.isStop())
-            m_teleop.deadManReleased();
-        else
-            m_teleop.requestMotion(command);
-        return true;
-    }
-    if (event->isAutoRepeat())
-        return m_driveKeys.contains(key);
-    if ((event->modifiers() & (Qt::ControlModifier | Qt::AltModifier | Qt::MetaModifier))
-        || isTextInput(QApplication::focusWidget()))
-        return false;
-    m_driveKeys.insert(key);
-    m_teleop.requestMotion(keyboardCommand());
-    return true;
-}
-
-MotionCommand MainWindow::keyboardCommand() const
-{
-    const int speed = m_drivePad->speedLimit();
-    const int ahead = int(m_driveKeys.contains(Qt::Key_Up)) - int(m_driveKeys.contains(Qt::Key_Down));
-    const int left = int(m_driveKeys.contains(Qt::Key_Left)) - int(m_driveKeys.contains(Qt::Key_Right));
-    MotionCommand command;
-    if (ahead != 0) {
-        command.velocity = ahead * speed;
-        if (left != 0)
-            command.radius = left * kKeyArcRadius; // positive radius turns left
-    } else if (left != 0) {
-        command.velocity = speed;
-        command.radius = left > 0 ? oi::kRadiusTurnInPlaceCounterClockwise : oi::kRadiusTurnInPlaceClockwise;
-    }
-    return command;
 }

@@ -1,45 +1,52 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
-#include "connection_bar.h"
-#include "link_settings.h"
-#include "robot_session.h"
-#include "sensor_history.h"
-#include "teleop_controller.h"
 #include "language_switcher.h"
+#include "link_settings.h"
+#include "robot_card.h"
+#include "robot_fleet.h"
+#include "robot_session.h"
 
-#include <QByteArray>
 #include <QMainWindow>
-#include <QSet>
 #include <QTimer>
 
+#include <optional>
+
 class ByteInspector;
+class ConnectionBar;
+class DockLayout;
 class DrivePad;
 class GamepadInput;
 class GamepadPanel;
+class KeyboardDriving;
+class LedEditor;
+class ModePanel;
 class MotorsPanel;
 class OdometryMap;
-class LedEditor;
-class ScheduleEditor;
-class ScriptEditor;
-class SongComposer;
-class ModePanel;
 class QAction;
 class QActionGroup;
-class QMenu;
-class QToolBar;
-class ReplayBar;
 class QDockWidget;
-class QKeyEvent;
 class QLabel;
+class QMenu;
+class QPushButton;
+class QToolBar;
+class RecordingActions;
+class ReplayBar;
 class RobotDiagram;
+class RobotList;
+class RobotStatusBar;
+class ScheduleEditor;
+class ScriptEditor;
 class SensorGauges;
 class SensorPlots;
 class SignalBars;
+class SongComposer;
 
-// The dashboard window: the robot diagram in the middle and a dock for each
-// other view. A display timer reads the session's latest snapshot, so the
-// widgets repaint at display rate, never once per frame.
+// The dashboard window: the robot list and Stop all above, the robot diagram
+// in the middle, a dock for each other view. Every dock shows the selected
+// robot; driving, the editors and recording act on it. The window wires; the
+// robots' models decide. A display timer reads the selected robot's latest
+// snapshot, so the widgets repaint at display rate, never once per frame.
 class MainWindow : public QMainWindow {
     Q_OBJECT
 public:
@@ -48,27 +55,27 @@ public:
     explicit MainWindow(QWidget *parent = nullptr);
     ~MainWindow() override;
 
-    RobotSession &session() { return m_session; }
-    const SensorHistory &history() const { return m_history; }
-    // Samples kept per channel; the default is one hour at 66.7 Hz. Clears
-    // the history. For the benchmark, which fills it in minutes.
+    RobotFleet &fleet() { return m_fleet; }
+    // The selected robot.
+    RobotSession &session() { return *m_fleet.selected(); }
+    TeleopController &teleop() { return session().teleop(); }
+    const SensorHistory &history() { return session().history(); }
+    // Samples kept per channel for every robot; clears the histories. For the
+    // benchmark, which fills them in minutes.
     void setHistoryCapacity(std::size_t samples);
-    // Restores the saved layout and connection, and connects: to the saved
-    // robot, or on first start to the built-in virtual robot.
-    void start(const std::optional<oilink::LinkSettings> &override = {});
+
+    // Restores the layout and the saved robots and connects them; on first
+    // start, the built-in virtual robot. A connection from the command line
+    // replaces the saved robots for this run (`count` virtual robots for
+    // --sim N), and the saved list is kept for next time.
+    void start(const std::optional<oilink::LinkSettings> &override = {}, int count = 1);
     void resetLayout();
-    // F6 and Shift+F6: the keyboard moves from dock to dock (+1 or -1),
-    // raising a tabbed one. Returns the dock that now has the focus.
     QDockWidget *focusNextDock(int direction);
 
-    static oilink::LinkSettings linkSettingsFor(const ConnectionRequest &request);
-
-    // Recording the link, and replaying a recording in place of the robot.
+    // Recording the selected robot, and replaying a recording as a robot.
     void startRecording(const QString &path);
     void stopRecording();
-    // False, with the reason in `error`, for a file that cannot be replayed.
     bool openRecording(const QString &path, QString *error = nullptr);
-    // Writes one CSV row per frame of a recording; returns an error or "".
     static QString exportRecordingCsv(const QString &recordingPath, const QString &csvPath);
 
     // "de", "es", "en", or "" to follow the system. Applies at once; `remember`
@@ -87,53 +94,44 @@ public:
     DrivePad *drivePad() const { return m_drivePad; }
     OdometryMap *odometryMap() const { return m_map; }
     ReplayBar *replayBar() const { return m_replayBar; }
+    RobotList *robotList() const { return m_robotList; }
+    QPushButton *stopAllButton() const { return m_stopAll; }
     QToolBar *recordingToolBar() const { return m_recordingBar; }
-    QAction *recordAction() const { return m_recordAction; }
+    QAction *recordAction() const;
     QMenu *languageMenu() const { return m_languageMenu; }
-    TeleopController &teleop() { return m_teleop; }
     QString statusText() const;
     void refreshDisplay(); // what the display timer does
 
 protected:
     void closeEvent(QCloseEvent *event) override;
     void changeEvent(QEvent *event) override;
-    // Drive keys and Stop All for every widget in this window (see the .cpp).
-    bool eventFilter(QObject *watched, QEvent *event) override;
 
 private:
-    QDockWidget *addDock(const QString &objectName, const char *title, QWidget *widget,
-                         Qt::DockWidgetArea area);
+    void buildDocks();
     void buildActions();
     void buildMenus();
-    void buildStatusBar();
+    void buildRobotBar();
+    void wireInputs();
     void retranslateUi();
-    void showRecording(const oilink::RecordingStatus &status);
-    void showReplay(const oilink::ReplayStatus &status);
-    void chooseRecordingFile(bool start);
-    void chooseRecordingToOpen();
-    void chooseRecordingToExport();
-    QString linkStateText(oilink::LinkState state) const;
+    void onRobotAdded(RobotSession *robot);
+    void showSelected(RobotSession *robot);
+    void addRobot(int kind);
     void applyProfile(oi::ProfileId profile);
     void showState(oilink::LinkState state);
-    void showStatistics(const oilink::LinkStats &stats);
+    void showReplay(const oilink::ReplayStatus &status);
+    void refreshRobotCards();
     void saveSettings() const;
-    void connectFromBar(const ConnectionRequest &request);
-    void connectSession(const oilink::LinkSettings &settings);
-    bool handleDriveKey(QKeyEvent *event);
-    MotionCommand keyboardCommand() const;
 
     LanguageSwitcher m_language; // before the widgets: they are built translated
-    RobotSession m_session;
-    // After the session: it is destroyed first and never outlives it.
-    TeleopController m_teleop{m_session};
-    QSet<int> m_driveKeys; // held keys, as Qt::Key values folded to arrows
-    SensorHistory m_history;
+    RobotFleet m_fleet;
+    bool m_keepSavedRobots = false; // the robots came from the command line
     QTimer m_displayTimer;
     quint64 m_shownSnapshot = ~0ull;
     oi::SensorSnapshot m_shown; // what the widgets show now
     bool m_shownLive = false;
     bool m_liveFlagOutdated = true;
     quint64 m_displayTicks = 0;
+    QList<QMetaObject::Connection> m_selectedConnections;
 
     ConnectionBar *m_connectionBar = nullptr;
     ModePanel *m_modePanel = nullptr;
@@ -151,37 +149,28 @@ private:
     ScheduleEditor *m_schedule = nullptr;
     ScriptEditor *m_script = nullptr;
     DrivePad *m_drivePad = nullptr;
-    QList<QDockWidget *> m_docks;
-    QList<const char *> m_dockTitles; // untranslated, one per dock
-    QByteArray m_defaultState;
+    RobotList *m_robotList = nullptr;
+    QPushButton *m_stopAll = nullptr;
+    QToolBar *m_robotBar = nullptr;
+
+    DockLayout *m_layout = nullptr;
+    KeyboardDriving *m_keyboard = nullptr;
+    RobotStatusBar *m_status = nullptr;
+    RecordingActions *m_recording = nullptr;
 
     QMenu *m_fileMenu = nullptr;
     QMenu *m_viewMenu = nullptr;
     QMenu *m_languageMenu = nullptr;
     QMenu *m_helpMenu = nullptr;
-    QAction *m_recordAction = nullptr;
-    QAction *m_openRecordingAction = nullptr;
-    QAction *m_exportCsvAction = nullptr;
     QAction *m_quitAction = nullptr;
     QAction *m_resetLayoutAction = nullptr;
     QAction *m_aboutAction = nullptr;
     QAction *m_nextDockAction = nullptr;
     QAction *m_previousDockAction = nullptr;
+    QAction *m_stopAllAction = nullptr;
     QAction *m_systemLanguageAction = nullptr;
     QActionGroup *m_languageGroup = nullptr;
     QToolBar *m_recordingBar = nullptr;
     ReplayBar *m_replayBar = nullptr;
     QAction *m_replayBarAction = nullptr; // shows and hides the replay bar
-    QLabel *m_recordingLabel = nullptr;
-    oilink::LinkState m_shownState = oilink::LinkState::Closed;
-    oilink::LinkStats m_shownStats;
-    QString m_firmware;
-    qint64 m_replayShownUs = 0; // where the replay was at its last report
-
-    QLabel *m_stateLabel = nullptr;
-    QLabel *m_profileLabel = nullptr;
-    QLabel *m_firmwareLabel = nullptr;
-    QLabel *m_rateLabel = nullptr;
-    QLabel *m_errorsLabel = nullptr;
-    QLabel *m_staleLabel = nullptr;
 };

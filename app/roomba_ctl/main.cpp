@@ -8,6 +8,7 @@
 #include "robot_link_thread.h"
 #include "script_assembler.h"
 #include "stream_parser.h"
+#include "termination_signals.h"
 #include "transport.h"
 
 #include <QCoreApplication>
@@ -455,6 +456,10 @@ int streamSensors(int argc, char **argv, const std::vector<std::string> &args)
             std::cerr << "roomba-ctl: " << message << "\n";
         QCoreApplication::exit(code);
     };
+    // Killed or hung up: the link still stops the robot and leaves it in Passive.
+    TerminationSignals termination;
+    QObject::connect(&termination, &TerminationSignals::requested, &app,
+                     [&](int signal) { finish(TerminationSignals::exitStatusFor(signal), {}); });
     QObject::connect(&link, &oilink::RobotLinkThread::snapshot, &app, [&](const oi::SensorSnapshot &s) {
         if (finished)
             return;
@@ -525,6 +530,9 @@ int sendToRobot(int argc, char **argv, const std::vector<std::string> &args)
             std::cerr << "roomba-ctl: " << message << "\n";
         QCoreApplication::exit(code);
     };
+    TerminationSignals termination;
+    QObject::connect(&termination, &TerminationSignals::requested, &app,
+                     [&](int signal) { finish(TerminationSignals::exitStatusFor(signal), {}); });
     const auto writeBytes = [&](const oi::Bytes &bytes) {
         transport->write(QByteArray(reinterpret_cast<const char *>(bytes.data()), static_cast<qsizetype>(bytes.size())));
     };

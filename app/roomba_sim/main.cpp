@@ -5,37 +5,25 @@
 #include "firmware_banner.h"
 #include "pty_robot_server.h"
 #include "tcp_robot_server.h"
+#include "termination_signals.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
 #include <QFile>
 #include <QFileInfo>
 #include <QHostAddress>
-#include <QSocketNotifier>
 
 #include <cerrno>
 #include <cmath>
-#include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <memory>
-#include <sys/socket.h>
 #include <unistd.h>
 
 namespace {
 
 constexpr int kUsageError = 2;
 constexpr int kRuntimeError = 1;
-
-int g_signalPipe[2] = {-1, -1};
-
-void onSignal(int)
-{
-    const int saved = errno;
-    const char byte = 1;
-    [[maybe_unused]] const ssize_t n = ::write(g_signalPipe[1], &byte, 1);
-    errno = saved;
-}
 
 int fail(int status, const QString &message)
 {
@@ -165,23 +153,9 @@ int main(int argc, char *argv[])
         return fail(kUsageError, QStringLiteral("--bind goes with --tcp"));
     }
 
-    // SIGINT and SIGTERM end the event loop through a pipe, so the handler
-    // does nothing but write a byte.
-    if (::socketpair(AF_UNIX, SOCK_STREAM, 0, g_signalPipe) != 0)
-        return fail(kRuntimeError, QStringLiteral("socketpair: %1").arg(QString::fromLocal8Bit(std::strerror(errno))));
-    QSocketNotifier signalNotifier(g_signalPipe[0], QSocketNotifier::Read);
-    QObject::connect(&signalNotifier, &QSocketNotifier::activated, &app, [] {
-        char byte = 0;
-        [[maybe_unused]] const ssize_t n = ::read(g_signalPipe[0], &byte, 1);
-        QCoreApplication::quit();
-    });
-    struct sigaction action {};
-    action.sa_handler = onSignal;
-    sigemptyset(&action.sa_mask);
-    action.sa_flags = SA_RESTART;
-    sigaction(SIGINT, &action, nullptr);
-    sigaction(SIGTERM, &action, nullptr);
-    std::signal(SIGPIPE, SIG_IGN);
+    // SIGTERM, SIGHUP and SIGINT end the event loop; the servers close below.
+    TerminationSignals termination;
+    QObject::connect(&termination, &TerminationSignals::requested, &app, [] { QCoreApplication::quit(); });
 
     std::unique_ptr<sim::PtyRobotServer> pty;
     std::unique_ptr<sim::TcpRobotServer> tcpServer;

@@ -124,12 +124,28 @@ void ReplayTransport::showFrame(int frame)
     deliverThrough(frames[frame].end);
 }
 
+// Frame by frame, each at its recorded time, so that the link stamps every
+// snapshot with the time the robot sent it, at any speed.
 void ReplayTransport::deliverThrough(qsizetype end)
+{
+    // The link may close this transport from a slot of any delivery.
+    const auto &frames = m_recording->frames();
+    auto first = std::upper_bound(frames.begin(), frames.end(), m_delivered,
+                                  [](qsizetype at, const Recording::Frame &f) { return at < f.end; });
+    for (auto i = first - frames.begin(); m_recording && i < qsizetype(m_recording->frames().size())
+                                          && m_recording->frames()[i].end <= end; ++i)
+        deliver(m_recording->frames()[i].end, m_recording->frames()[i].timeUs);
+    if (m_recording)
+        deliver(end, m_positionUs);
+}
+
+void ReplayTransport::deliver(qsizetype end, qint64 timeUs)
 {
     if (end <= m_delivered)
         return;
     const QByteArray bytes = m_recording->receivedBytes().mid(m_delivered, end - m_delivered);
     m_delivered = end;
+    m_readTimeUs = timeUs;
     emit bytesReceived(bytes);
 }
 

@@ -65,6 +65,8 @@ public:
     bool write(const QByteArray &bytes) override;
     void flush(int) override {}
     QString describe() const override;
+    // The recorded time of the frame being delivered.
+    qint64 readTimeUs() const override { return m_readTimeUs; }
 
     void control(const ReplayCommand &command);
     ReplayStatus status() const;
@@ -79,6 +81,7 @@ private:
     void seek(qint64 timeUs);
     void showFrame(int frame);
     void deliverThrough(qsizetype end);
+    void deliver(qsizetype end, qint64 timeUs);
     void emitStatus();
 
     QString m_path;
@@ -88,6 +91,7 @@ private:
     bool m_finished = false;
     double m_speed = 1.0;
     qint64 m_positionUs = 0;
+    qint64 m_readTimeUs = 0; // of the bytes being delivered
     qsizetype m_delivered = 0; // received bytes handed to the link so far
     int m_nextFrame = 0;
     QTimer m_tick;

@@ -138,6 +138,7 @@ void RobotLink::open(const LinkSettings &settings)
     m_reported.clear();
     m_recovering = false;
     m_backoffMs = kFirstBackoffMs;
+    m_sinceOpen.start();
     m_rateClock.start();
     m_statsTick.start();
     setState(LinkState::Connecting);
@@ -355,6 +356,10 @@ void RobotLink::onBytes(const QByteArray &bytes)
     }
     if (m_queryPhase == QueryPhase::Pausing)
         m_queryQuiet.start();
+    if (takeScriptReply(bytes))
+        return;
+    const qint64 recordedUs = m_transport ? m_transport->readTimeUs() : -1;
+    m_readSeconds = recordedUs >= 0 ? static_cast<double>(recordedUs) / 1e6 : m_sinceOpen.nsecsElapsed() / 1e9;
     const oi::ParserCounters before = m_parser.counters();
     m_feeding = true;
     m_parser.feed({reinterpret_cast<const std::uint8_t *>(bytes.constData()), static_cast<std::size_t>(bytes.size())});
@@ -389,7 +394,7 @@ void RobotLink::onFrame(const oi::SensorSnapshot &frame)
         m_rearmMs = kNoDataAfterMs;
         setState(LinkState::Streaming);
     }
-    emit snapshot(frame);
+    emit snapshot(frame, m_readSeconds);
 }
 
 void RobotLink::onWatchdog()
@@ -460,7 +465,25 @@ void RobotLink::querySensors(const QList<int> &packetIds)
         reportError(tr("sensor query: ask for 1 to 255 packets"), false);
         return;
     }
-    m_queries.push_back(std::move(ids));
+    enqueue(Request{false, std::move(ids)});
+}
+
+void RobotLink::showScript()
+{
+    if (!m_profile || !m_transport || !m_transportOpen || (m_probe && m_probe->isRunning())) {
+        emit scriptFailed(tr("not connected: Show Script was not sent"));
+        return;
+    }
+    if (!m_profile->has(oi::Command::ShowScript)) {
+        emit scriptFailed(tr("the %1 has no scripts").arg(fromStd(m_profile->name)));
+        return;
+    }
+    enqueue(Request{true, {}});
+}
+
+void RobotLink::enqueue(Request request)
+{
+    m_queries.push_back(std::move(request));
     if (m_queryPhase == QueryPhase::None)
         startNextQuery();
 }
@@ -487,11 +510,16 @@ void RobotLink::sendQuery()
     if (m_queries.empty() || !m_transport)
         return;
     dropPartialInput();
-    const std::vector<std::uint8_t> &ids = m_queries.front();
+    const Request &request = m_queries.front();
     const oi::CommandEncoder encoder(*m_profile);
-    const std::vector<int> asInts(ids.begin(), ids.end());
-    const oi::EncodeResult command = ids.size() == 1 ? encoder.sensors(asInts.front()) : encoder.queryList(asInts);
-    m_parser.expectReply(ids);
+    const std::vector<int> asInts(request.packetIds.begin(), request.packetIds.end());
+    const oi::EncodeResult command = request.script      ? encoder.showScript()
+                                     : asInts.size() == 1 ? encoder.sensors(asInts.front())
+                                                          : encoder.queryList(asInts);
+    if (request.script)
+        m_scriptReply.clear();
+    else
+        m_parser.expectReply(request.packetIds);
     m_queryPhase = QueryPhase::Waiting;
     m_queryTimeout.start();
     writeBytes(toBytes(*command));
@@ -505,11 +533,30 @@ void RobotLink::onReply(const oi::SensorSnapshot &reply)
     finishQuery();
 }
 
+// Show Script's reply is a length byte and that many bytes; the parser does
+// not know it, so it is read here. True when the bytes were taken.
+bool RobotLink::takeScriptReply(const QByteArray &bytes)
+{
+    if (m_queryPhase != QueryPhase::Waiting || m_queries.empty() || !m_queries.front().script)
+        return false;
+    m_scriptReply += bytes;
+    const qsizetype length = static_cast<std::uint8_t>(m_scriptReply.front());
+    if (m_scriptReply.size() >= length + 1) {
+        emit scriptReply(m_scriptReply.mid(1, length));
+        m_scriptReply.clear();
+        finishQuery();
+    }
+    return true;
+}
+
 void RobotLink::onQueryTimeout()
 {
     if (m_queryPhase == QueryPhase::Pausing) {
         reportError(tr("%1: the stream did not pause; the sensor query was not sent").arg(m_settings.describe()),
                     false);
+    } else if (!m_queries.empty() && m_queries.front().script) {
+        m_scriptReply.clear();
+        emit scriptFailed(tr("%1: no reply to Show Script").arg(m_settings.describe()));
     } else {
         m_parser.cancelReplies();
         dropPartialInput();

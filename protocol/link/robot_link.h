@@ -78,6 +78,11 @@ public slots:
     // stream runs it is paused around the query. The answer comes as
     // sensorReply(), or an error after 500 ms.
     void querySensors(const QList<int> &packetIds);
+    // Show Script (154, Create only): the script the robot holds, as
+    // scriptReply() with the script's bytes (without the length byte), or an
+    // error after 500 ms. Queued with the sensor queries, so that it too never
+    // meets stream bytes.
+    void showScript();
     // Records every byte both ways, from now until stopRecording() or
     // close(), across reconnects. Reports through recordingStatus().
     void startRecording(const QString &path);
@@ -86,8 +91,12 @@ public slots:
     void controlReplay(const oilink::ReplayCommand &command);
 
 signals:
-    void snapshot(const oi::SensorSnapshot &snapshot); // one per stream frame
+    // One per stream frame, with the time it was read: seconds since open()
+    // on this thread's clock, or the recording's own time in a replay.
+    void snapshot(const oi::SensorSnapshot &snapshot, double readSeconds);
     void sensorReply(const oi::SensorSnapshot &reply);
+    void scriptReply(const QByteArray &script);
+    void scriptFailed(const QString &message); // no reply, no link, or no scripts on this robot
     void stateChanged(oilink::LinkState state);
     void statistics(const oilink::LinkStats &stats); // about once a second, and on change
     // Start and Stream were sent: which profile, at which baud, which packets.
@@ -100,6 +109,12 @@ signals:
 
 private:
     enum class QueryPhase { None, Pausing, Waiting };
+    // A request whose reply has no framing: Sensors / Query List (the parser
+    // reads those), or Show Script (read here: a length byte, then the script).
+    struct Request {
+        bool script = false;
+        std::vector<std::uint8_t> packetIds;
+    };
 
     void setState(LinkState state);
     void reportError(const QString &message, bool onceUntilStreaming = true);
@@ -117,6 +132,8 @@ private:
     void rearmStream();
     void onFrame(const oi::SensorSnapshot &frame);
     void onReply(const oi::SensorSnapshot &reply);
+    void enqueue(Request request);
+    bool takeScriptReply(const QByteArray &bytes);
     void onWatchdog();
     void onNoData();
     bool writeBytes(const QByteArray &bytes);
@@ -162,13 +179,16 @@ private:
     int m_backoffMs = kFirstBackoffMs;
     QTimer m_probeRetry;
 
-    std::deque<std::vector<std::uint8_t>> m_queries;
+    std::deque<Request> m_queries;
+    QByteArray m_scriptReply; // Show Script's reply as it arrives
     QueryPhase m_queryPhase = QueryPhase::None;
     QTimer m_queryQuiet;   // the paused stream has drained
     QTimer m_queryTimeout;
 
     LinkStats m_totals; // bytes, reconnects; the frame counts come from the parser
     qint64 m_lastFrameMs = -1;
+    QElapsedTimer m_sinceOpen;  // the clock live frames are stamped with
+    double m_readSeconds = 0;   // when the bytes being parsed were read
     double m_framesPerSecond = 0;
     QElapsedTimer m_rateClock;
     quint64 m_framesAtRateStart = 0;

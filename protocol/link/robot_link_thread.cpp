@@ -38,6 +38,8 @@ void RobotLinkThread::start()
 
     connect(link, &RobotLink::snapshot, this, &RobotLinkThread::snapshot);
     connect(link, &RobotLink::sensorReply, this, &RobotLinkThread::sensorReply);
+    connect(link, &RobotLink::scriptReply, this, &RobotLinkThread::scriptReply);
+    connect(link, &RobotLink::scriptFailed, this, &RobotLinkThread::scriptFailed);
     connect(link, &RobotLink::stateChanged, this, [this](LinkState state) {
         m_state = state;
         emit stateChanged(state);
@@ -100,6 +102,14 @@ void RobotLinkThread::querySensors(const QList<int> &packetIds)
                                   Qt::QueuedConnection);
     else
         emit errorOccurred(tr("not connected: the sensor query was not sent"));
+}
+
+void RobotLinkThread::showScript()
+{
+    if (m_link && m_thread.isRunning())
+        QMetaObject::invokeMethod(m_link, [link = m_link.data()] { link->showScript(); }, Qt::QueuedConnection);
+    else
+        emit scriptFailed(tr("not connected: Show Script was not sent"));
 }
 
 void RobotLinkThread::requestVirtualRobotPose()

@@ -47,6 +47,7 @@ public slots:
     void closeAndWait();
     void send(const QByteArray &bytes);
     void querySensors(const QList<int> &packetIds);
+    void showScript();
     // On the in-process virtual robot: asks where it really is; the answer
     // comes as virtualRobotPose(). Nothing happens on other transports.
     void requestVirtualRobotPose();
@@ -55,8 +56,10 @@ public slots:
     void controlReplay(const oilink::ReplayCommand &command);
 
 signals:
-    void snapshot(const oi::SensorSnapshot &snapshot);
+    void snapshot(const oi::SensorSnapshot &snapshot, double readSeconds);
     void sensorReply(const oi::SensorSnapshot &reply);
+    void scriptReply(const QByteArray &script);
+    void scriptFailed(const QString &message);
     void stateChanged(oilink::LinkState state);
     void statistics(const oilink::LinkStats &stats);
     void streamStarted(oi::ProfileId profile, int baud, const QList<int> &packets);

@@ -15,6 +15,11 @@ bool Transport::setBaud(int)
     return false;
 }
 
+qint64 Transport::readTimeUs() const
+{
+    return -1;
+}
+
 Transport *createTransport(const LinkSettings &settings, int baud, QObject *parent)
 {
     switch (settings.transport) {

@@ -31,6 +31,10 @@ public:
     // Serial ports only: change the line speed, open or not. Others have no
     // baud of their own and return false.
     virtual bool setBaud(int baud);
+    // The time of the bytes bytesReceived() is delivering, in microseconds,
+    // for a transport that keeps its own clock (a replay: the recording's
+    // time); -1 for a live one, whose bytes the link stamps as they arrive.
+    virtual qint64 readTimeUs() const;
     // "/dev/ttyUSB0", "host:port": the prefix of this transport's messages.
     virtual QString describe() const = 0;
 

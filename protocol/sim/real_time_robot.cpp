@@ -36,6 +36,7 @@ void RealTimeRobot::write(const QByteArray &bytes)
     // Bring the robot's clock up to now first, so the command lands when it
     // really arrived.
     tick();
+    emit bytesIn(bytes);
     m_robot.receive(std::span(reinterpret_cast<const std::uint8_t *>(bytes.constData()),
                               std::size_t(bytes.size())));
     const oi::Bytes out = m_robot.takeOutput();

@@ -31,6 +31,8 @@ public slots:
 
 signals:
     void bytesOut(const QByteArray &bytes);
+    // What the client sent, as it arrived: for tests that watch the robot's side.
+    void bytesIn(const QByteArray &bytes);
 
 private:
     void tick();

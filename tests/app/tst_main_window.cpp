@@ -75,7 +75,7 @@ private slots:
     {
         Recording recording;
         MainWindow window;
-        window.session().setTransportFactory(
+        window.fleet().setTransportFactory(
             [&recording](const oilink::LinkSettings &) { return new RecordingTransport(&recording); });
         oilink::LinkSettings settings = oilink::LinkSettings::serial("/dev/recording", oi::ProfileId::Create2);
         window.show();
@@ -114,7 +114,7 @@ private slots:
     {
         QPointer<oilink::VirtualTransport> transport;
         MainWindow window;
-        window.session().setTransportFactory([&transport](const oilink::LinkSettings &) {
+        window.fleet().setTransportFactory([&transport](const oilink::LinkSettings &) {
             auto *t = new oilink::VirtualTransport(oi::ProfileId::Create2, 1);
             transport = t;
             return t;

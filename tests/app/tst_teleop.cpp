@@ -57,7 +57,7 @@ struct Rig {
     explicit Rig(oi::OiMode mode = oi::OiMode::Safe)
     {
         recording.mode = int(mode);
-        window.session().setTransportFactory(
+        window.fleet().setTransportFactory(
             [this](const oilink::LinkSettings &) { return new RecordingTransport(&recording); });
         window.resize(1280, 860);
         window.show();

@@ -80,7 +80,7 @@ int main(int argc, char **argv)
     Recording recording;
     recording.mode = int(oi::OiMode::Safe);
     MainWindow window;
-    window.session().setTransportFactory(
+    window.fleet().setTransportFactory(
         [&recording](const oilink::LinkSettings &) { return new RecordingTransport(&recording); });
     window.resize(1280, 860);
     window.show();

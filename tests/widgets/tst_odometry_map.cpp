@@ -40,11 +40,11 @@ oi::SensorSnapshot encoderFrame(ProfileId id, long long left, long long right)
 
 // Feeds `frames` frames, each moving the wheels by `left`/`right` counts,
 // after a first frame at zero that only sets the reference.
-void drive(OdometryMap &map, ProfileId id, int frames, int left, int right)
+void drive(RobotOdometry &odometry, ProfileId id, int frames, int left, int right)
 {
-    map.addSnapshot(encoderFrame(id, 0, 0));
+    odometry.update(encoderFrame(id, 0, 0));
     for (int i = 1; i <= frames; ++i)
-        map.addSnapshot(encoderFrame(id, 1LL * i * left, 1LL * i * right));
+        odometry.update(encoderFrame(id, 1LL * i * left, 1LL * i * right));
 }
 
 bool near(double a, double b, double tolerance = 1e-9) { return std::abs(a - b) <= tolerance; }
@@ -59,17 +59,25 @@ QColor pixelAt(const QImage &image, QPointF widgetPoint, qreal ratio)
 class TestOdometryMap : public QObject {
     Q_OBJECT
 
+    // The robot's model owns the odometry; the map shows it.
+    std::unique_ptr<RobotOdometry> m_odometry;
     std::unique_ptr<OdometryMap> m_map;
 
 private slots:
     void init()
     {
+        m_odometry = std::make_unique<RobotOdometry>();
         m_map = std::make_unique<OdometryMap>();
+        m_map->setOdometry(m_odometry.get());
         m_map->resize(800, 600);
         m_map->show();
         QVERIFY(QTest::qWaitForWindowExposed(m_map.get()));
     }
-    void cleanup() { m_map.reset(); }
+    void cleanup()
+    {
+        m_map.reset();
+        m_odometry.reset();
+    }
 
     void startsAtOrigin()
     {
@@ -89,7 +97,7 @@ private slots:
     {
         QFETCH(ProfileId, profile);
         m_map->setProfile(oi::profile(profile));
-        drive(*m_map, profile, 10, 20, 20);
+        drive(*m_odometry, profile, 10, 20, 20);
         const double d = 200 * oi::kMmPerEncoderCount;
         QVERIFY2(near(m_map->pose().xMm, d), qPrintable(QString::number(m_map->pose().xMm, 'g', 17)));
         QCOMPARE(m_map->pose().yMm, 0.0);
@@ -105,17 +113,17 @@ private slots:
 
     void framesWithoutMotionAddNothing()
     {
-        m_map->addSnapshot(encoderFrame(ProfileId::Create2, 5, 5));
-        m_map->addSnapshot(encoderFrame(ProfileId::Create2, 5, 5));
+        m_odometry->update(encoderFrame(ProfileId::Create2, 5, 5));
+        m_odometry->update(encoderFrame(ProfileId::Create2, 5, 5));
         oi::SensorSnapshot bumpsOnly;
         bumpsOnly.set(7, 1);
-        m_map->addSnapshot(bumpsOnly);
+        m_odometry->update(bumpsOnly);
         QCOMPARE(m_map->trail().size(), 1);
     }
 
     void trailIsBounded()
     {
-        drive(*m_map, ProfileId::Create2, OdometryMap::kMaxTrailPoints + 5, 1, 1);
+        drive(*m_odometry, ProfileId::Create2, OdometryMap::kMaxTrailPoints + 5, 1, 1);
         QCOMPARE(m_map->trail().size(), OdometryMap::kMaxTrailPoints);
         QVERIFY(near(m_map->trail().last().x(), (OdometryMap::kMaxTrailPoints + 5) * oi::kMmPerEncoderCount, 1e-6));
         // The oldest points went first.
@@ -124,29 +132,29 @@ private slots:
 
     void resetClearsTrailAndOdometry()
     {
-        drive(*m_map, ProfileId::Create2, 10, 20, 20);
+        drive(*m_odometry, ProfileId::Create2, 10, 20, 20);
         QTest::mouseClick(m_map->findChild<QPushButton *>("reset"), Qt::LeftButton);
         QCOMPARE(m_map->trail().size(), 1);
         QCOMPARE(m_map->pose().xMm, 0.0);
         QCOMPARE(m_map->pose().travelledMm, 0.0);
         // The next frame only sets the reference again.
-        m_map->addSnapshot(encoderFrame(ProfileId::Create2, 1000, 1000));
+        m_odometry->update(encoderFrame(ProfileId::Create2, 1000, 1000));
         QCOMPARE(m_map->pose().xMm, 0.0);
-        m_map->addSnapshot(encoderFrame(ProfileId::Create2, 1010, 1010));
+        m_odometry->update(encoderFrame(ProfileId::Create2, 1010, 1010));
         QVERIFY(near(m_map->pose().xMm, 10 * oi::kMmPerEncoderCount));
         QCOMPARE(m_map->trail().size(), 2);
     }
 
     void wheelBaseChangesTheTurn()
     {
-        drive(*m_map, ProfileId::Create2, 10, -40, 40);
+        drive(*m_odometry, ProfileId::Create2, 10, -40, 40);
         const double theta = m_map->pose().thetaRad;
         QVERIFY(near(theta, 2 * 400 * oi::kMmPerEncoderCount / oi::kWheelBaseMm, 1e-12));
 
         m_map->reset();
         m_map->findChild<QDoubleSpinBox *>("wheelBase")->setValue(2 * oi::kWheelBaseMm);
         QCOMPARE(m_map->wheelBaseMm(), 2 * oi::kWheelBaseMm);
-        drive(*m_map, ProfileId::Create2, 10, -40, 40);
+        drive(*m_odometry, ProfileId::Create2, 10, -40, 40);
         QVERIFY2(near(m_map->pose().thetaRad, theta / 2, 1e-12),
                  qPrintable(QString::number(m_map->pose().thetaRad, 'g', 17)));
     }
@@ -155,7 +163,7 @@ private slots:
     {
         m_map->setWheelDiameterMm(144);
         QCOMPARE(m_map->findChild<QDoubleSpinBox *>("wheelDiameter")->value(), 144.0);
-        drive(*m_map, ProfileId::Create2, 10, 20, 20);
+        drive(*m_odometry, ProfileId::Create2, 10, 20, 20);
         QVERIFY(near(m_map->pose().xMm, 2 * 200 * oi::kMmPerEncoderCount, 1e-9));
     }
 
@@ -167,7 +175,7 @@ private slots:
         oi::SensorSnapshot frame(oi::profile(ProfileId::Create1));
         frame.set(19, 100);
         frame.set(20, 0);
-        m_map->addSnapshot(frame);
+        m_odometry->update(frame);
         QCOMPARE(m_map->pose().xMm, 100.0);
         QCOMPARE(m_map->trail().size(), 2);
     }
@@ -263,7 +271,7 @@ private slots:
 
     void poseLabelFollowsOnDisplayTimer()
     {
-        drive(*m_map, ProfileId::Create2, 10, 20, 20);
+        drive(*m_odometry, ProfileId::Create2, 10, 20, 20);
         QLabel *label = m_map->findChild<QLabel *>("poseLabel");
         QTRY_COMPARE(label->text(), m_map->poseText());
         QVERIFY(label->text().startsWith("x 89 mm"));
@@ -272,7 +280,7 @@ private slots:
     void translatesOnTheSpot()
     {
         m_map->setWorld(sim::World::classroom());
-        drive(*m_map, ProfileId::Create2, 10, 20, 20);
+        drive(*m_odometry, ProfileId::Create2, 10, 20, 20);
         m_map->setTruePose(oi::Pose{100, 20, 0});
         QLabel *pose = m_map->findChild<QLabel *>("poseLabel");
         QTRY_COMPARE(pose->text(), m_map->poseText());
@@ -317,7 +325,7 @@ private slots:
         QTest::keyClick(expected[1], Qt::Key_Space);
         QTest::keyClick(expected[1], Qt::Key_Space);
         QVERIFY(m_map->scale() < scale);
-        drive(*m_map, ProfileId::Create2, 10, 20, 20);
+        drive(*m_odometry, ProfileId::Create2, 10, 20, 20);
         QTest::keyClick(expected[2], Qt::Key_Space);
         QCOMPARE(m_map->viewCentreMm(), QPointF(m_map->pose().xMm, m_map->pose().yMm));
     }
@@ -328,7 +336,7 @@ private slots:
             QVERIFY(!m_map->findChild<QWidget *>(name)->accessibleName().isEmpty());
         QCOMPARE(m_map->accessibleName(), QStringLiteral("Odometry map"));
         QCOMPARE(m_map->accessibleDescription(), QStringLiteral("Robot at x 0 mm, y 0 mm, heading 0 degrees"));
-        drive(*m_map, ProfileId::Create2, 10, 20, 20);
+        drive(*m_odometry, ProfileId::Create2, 10, 20, 20);
         QTRY_COMPARE(m_map->accessibleDescription(), QStringLiteral("Robot at x 89 mm, y 0 mm, heading 0 degrees"));
         m_map->setTruePose(oi::Pose{100, 0, 0});
         QTRY_VERIFY(m_map->accessibleDescription().endsWith(QStringLiteral(" mm from the true pose")));
@@ -346,21 +354,22 @@ private slots:
         for (auto [id, file] : {std::pair{ProfileId::Create2, "odometry_map_create2.png"},
                                 std::pair{ProfileId::Create1, "odometry_map_create1.png"}}) {
             m_map->setProfile(oi::profile(id));
+            m_map->reset(); // another robot starts at the origin
             oi::Pose truth;
             if (id == ProfileId::Create2) {
                 // A square-ish path whose left wheel reads 2% short.
                 long long left = 0, right = 0;
-                m_map->addSnapshot(encoderFrame(id, left, right));
+                m_odometry->update(encoderFrame(id, left, right));
                 for (int leg = 0; leg < 4; ++leg) {
                     for (int i = 0; i < 100; ++i) {
                         left += 20 * 98 / 100;
                         right += 20;
-                        m_map->addSnapshot(encoderFrame(id, left, right));
+                        m_odometry->update(encoderFrame(id, left, right));
                     }
                     for (int i = 0; i < 21; ++i) {
                         left -= 20;
                         right += 20;
-                        m_map->addSnapshot(encoderFrame(id, left, right));
+                        m_odometry->update(encoderFrame(id, left, right));
                     }
                 }
                 truth.xMm = 20;
@@ -370,7 +379,7 @@ private slots:
                     oi::SensorSnapshot frame(oi::profile(id));
                     frame.set(19, 25);
                     frame.set(20, i % 2);
-                    m_map->addSnapshot(frame);
+                    m_odometry->update(frame);
                 }
                 truth.xMm = 1500;
                 truth.yMm = 100;

@@ -68,4 +68,15 @@ QString infraredName(const oi::IrCharacter &ir)
     return QCoreApplication::translate("InfraredName", "IR %1").arg(ir.value);
 }
 
+QString modeName(oi::OiMode mode)
+{
+    switch (mode) {
+    case oi::OiMode::Off: return QCoreApplication::translate("ModePanel", "Off");
+    case oi::OiMode::Passive: return QCoreApplication::translate("ModePanel", "Passive");
+    case oi::OiMode::Safe: return QCoreApplication::translate("ModePanel", "Safe");
+    case oi::OiMode::Full: return QCoreApplication::translate("ModePanel", "Full");
+    }
+    return {};
+}
+
 } // namespace oitext

@@ -3,6 +3,7 @@
 
 #include "ir_character.h"
 #include "robot_profile.h"
+#include "sensor_snapshot.h"
 
 #include <QString>
 
@@ -18,5 +19,7 @@ QString bitName(const oi::BitMeaning &bit);
 QString infraredName(const oi::IrCharacter &ir);  // composed from translated parts
 // "Cliff Left [mm]" or just the name when the packet has no unit.
 QString packetLabel(const oi::PacketInfo &info);
+// "Passive", "Safe", ... in the words the mode panel uses.
+QString modeName(oi::OiMode mode);
 
 } // namespace oitext

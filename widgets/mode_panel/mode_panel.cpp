@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "mode_panel.h"
 
+#include "oi_text.h"
+
 #include "command_catalog.h"
 #include "demo_names.h"
 #include "display_palette.h"
@@ -15,17 +17,6 @@
 #include <QVBoxLayout>
 
 namespace {
-
-QString modeName(oi::OiMode mode)
-{
-    switch (mode) {
-    case oi::OiMode::Off: return ModePanel::tr("Off");
-    case oi::OiMode::Passive: return ModePanel::tr("Passive");
-    case oi::OiMode::Safe: return ModePanel::tr("Safe");
-    case oi::OiMode::Full: return ModePanel::tr("Full");
-    }
-    return {};
-}
 
 // Why Safe mode fell back to Passive, from what the same frame shows.
 QString safetyReason(const oi::SensorSnapshot &s)
@@ -212,7 +203,7 @@ void ModePanel::setSnapshot(const oi::SensorSnapshot &snapshot)
 void ModePanel::showMode(std::optional<oi::OiMode> mode)
 {
     m_mode = mode;
-    m_modeLabel->setText(mode ? tr("Mode: %1").arg(modeName(*mode)) : tr("Mode: unknown"));
+    m_modeLabel->setText(mode ? tr("Mode: %1").arg(oitext::modeName(*mode)) : tr("Mode: unknown"));
     const QString highlighted = !mode ? QString()
                                 : *mode == oi::OiMode::Passive ? "passive"
                                 : *mode == oi::OiMode::Safe    ? "safe"

@@ -95,13 +95,12 @@ OdometryMap::OdometryMap(QWidget *parent) : QWidget(parent)
     m_displayTimer = new QTimer(this);
     m_displayTimer->setInterval(33);
     connect(m_displayTimer, &QTimer::timeout, this, [this] {
-        if (m_dirty)
+        if (m_dirty || (m_odometry && m_odometry->revision() != m_shownRevision))
             refresh();
     });
     m_displayTimer->start();
 
     retranslateUi();
-    reset();
 }
 
 void OdometryMap::retranslateUi()
@@ -151,37 +150,25 @@ void OdometryMap::setProfile(const oi::RobotProfile &profile)
     for (QDoubleSpinBox *box : {m_wheelBase, m_wheelDiameter})
         box->setEnabled(encoders);
     updateGeometryTips();
-    reset();
+    refresh();
 }
 
-void OdometryMap::addSnapshot(const oi::SensorSnapshot &snapshot)
+void OdometryMap::setOdometry(RobotOdometry *odometry)
 {
-    const oi::Pose before = m_odometry.pose();
-    m_odometry.update(snapshot);
-    const oi::Pose &after = m_odometry.pose();
-    if (after.xMm != before.xMm || after.yMm != before.yMm || after.thetaRad != before.thetaRad) {
-        appendTrailPoint();
-        m_dirty = true;
+    m_odometry = odometry;
+    if (odometry) {
+        const QSignalBlocker base(m_wheelBase);
+        const QSignalBlocker diameter(m_wheelDiameter);
+        m_wheelBase->setValue(odometry->wheelBaseMm());
+        m_wheelDiameter->setValue(odometry->wheelDiameterMm());
     }
-}
-
-void OdometryMap::appendTrailPoint()
-{
-    const oi::Pose &p = m_odometry.pose();
-    const QPointF point(p.xMm, p.yMm);
-    // A turn in place moves nothing on the floor.
-    if (!m_trail.isEmpty() && m_trail.constLast() == point)
-        return;
-    if (m_trail.size() >= kMaxTrailPoints)
-        m_trail.removeFirst();
-    m_trail.append(point);
+    refresh();
 }
 
 void OdometryMap::reset()
 {
-    m_odometry.reset();
-    m_trail.clear();
-    appendTrailPoint();
+    if (m_odometry)
+        m_odometry->reset();
     refresh();
 }
 
@@ -199,13 +186,14 @@ void OdometryMap::setWorld(std::optional<sim::World> world)
 
 void OdometryMap::setWheelBaseMm(double mm) { m_wheelBase->setValue(mm); }
 void OdometryMap::setWheelDiameterMm(double mm) { m_wheelDiameter->setValue(mm); }
-double OdometryMap::wheelBaseMm() const { return m_odometry.wheelBaseMm(); }
+double OdometryMap::wheelBaseMm() const { return m_wheelBase->value(); }
 double OdometryMap::wheelDiameterMm() const { return m_wheelDiameter->value(); }
 
 void OdometryMap::applyGeometry()
 {
     // The spin boxes' ranges keep both positive, so this cannot be refused.
-    m_odometry.setGeometry(m_wheelBase->value(), oi::Odometry::mmPerEncoderCountFor(m_wheelDiameter->value()));
+    if (m_odometry)
+        m_odometry->setGeometry(m_wheelBase->value(), m_wheelDiameter->value());
 }
 
 void OdometryMap::setScale(double pixelsPerMm)
@@ -277,6 +265,7 @@ QString OdometryMap::spokenPose() const
 void OdometryMap::refresh()
 {
     m_dirty = false;
+    m_shownRevision = m_odometry ? m_odometry->revision() : ~0ull;
     m_poseLabel->setText(poseText());
     // Only a change is announced, so set it only when it differs.
     const QString spoken = spokenPose();
@@ -308,10 +297,11 @@ void OdometryMap::paintEvent(QPaintEvent *)
     if (m_world)
         paintWorld(painter);
 
-    if (m_trail.size() > 1) {
+    const QList<QPointF> trail = this->trail();
+    if (trail.size() > 1) {
         QPolygonF line;
-        line.reserve(m_trail.size());
-        for (const QPointF &p : m_trail)
+        line.reserve(trail.size());
+        for (const QPointF &p : trail)
             line << widgetPointFor(p);
         painter.setPen(QPen(palette().color(QPalette::Highlight), 2));
         painter.drawPolyline(line);

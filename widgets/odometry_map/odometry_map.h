@@ -2,6 +2,7 @@
 #pragma once
 
 #include "odometry.h"
+#include "robot_odometry.h"
 #include "robot_profile.h"
 #include "sensor_snapshot.h"
 #include "virtual_robot.h" // sim::World, a value type; nothing here runs the robot
@@ -17,31 +18,32 @@ class QLabel;
 class QPushButton;
 class QTimer;
 
-// Where the robot thinks it is: dead reckoning from each decoded frame,
-// drawn as a trail on a millimetre grid. With the virtual robot, its true
-// pose and room can be drawn too, so a class can watch odometry drift from
-// the truth. Wheel base and wheel diameter can be measured and set; they
+// Where the robot thinks it is: its model's odometry, drawn as a trail on a
+// millimetre grid. With the virtual robot, its true pose and room can be
+// drawn too, so a class can watch odometry drift from the truth. Wheel base
+// and wheel diameter can be measured and set on the robot's odometry; they
 // change the integration from then on. Zoom with the wheel or the buttons,
-// pan by dragging. Repaints from a display timer, not once per frame.
+// pan by dragging. Repaints from a display timer when the robot moved, not
+// once per frame.
 class OdometryMap : public QWidget {
     Q_OBJECT
 public:
-    static constexpr int kMaxTrailPoints = 20000;
+    static constexpr int kMaxTrailPoints = RobotOdometry::kMaxTrailPoints;
     static constexpr double kDefaultWheelDiameterMm = oi::kWheelDiameterMm;
     static constexpr double kMinScale = 0.005; // pixels per mm
     static constexpr double kMaxScale = 5.0;
 
     explicit OdometryMap(QWidget *parent = nullptr);
 
-    // Another robot starts over from the origin.
+    // The robot's profile: the Create 1 has no encoders to measure.
     void setProfile(const oi::RobotProfile &profile);
     const oi::RobotProfile &robotProfile() const { return *m_profile; }
 
-    // Feed each decoded frame once (packets 19/20 are increments).
-    void addSnapshot(const oi::SensorSnapshot &snapshot);
-    const oi::Pose &pose() const { return m_odometry.pose(); }
+    // The odometry shown, owned by the robot's model; nullptr shows none.
+    void setOdometry(RobotOdometry *odometry);
+    oi::Pose pose() const { return m_odometry ? m_odometry->pose() : oi::Pose{}; }
     // Positions in mm, oldest first, at most kMaxTrailPoints; starts with the start pose.
-    const QList<QPointF> &trail() const { return m_trail; }
+    QList<QPointF> trail() const { return m_odometry ? m_odometry->trail() : QList<QPointF>{}; }
 
     void setTruePose(std::optional<oi::Pose> pose);
     void setWorld(std::optional<sim::World> world);
@@ -70,7 +72,7 @@ public slots:
     void zoomIn();
     void zoomOut();
     void centreOnRobot();
-    // Clears the trail and starts the odometry again from the origin.
+    // Clears the robot's trail and starts its odometry again from the origin.
     void reset();
 
 protected:
@@ -86,7 +88,6 @@ private:
     void updateGeometryTips();
     void zoomBy(double factor, QPointF anchorWidget);
     void applyGeometry();
-    void appendTrailPoint();
     void refresh();
     void paintGrid(QPainter &painter, const QRect &area) const;
     void paintWorld(QPainter &painter) const;
@@ -95,8 +96,8 @@ private:
     double gridSpacingMm() const;
 
     const oi::RobotProfile *m_profile = &oi::profile(oi::ProfileId::Create2);
-    oi::Odometry m_odometry;
-    QList<QPointF> m_trail;
+    RobotOdometry *m_odometry = nullptr;
+    quint64 m_shownRevision = ~0ull;
     std::optional<oi::Pose> m_truePose;
     std::optional<sim::World> m_world;
 

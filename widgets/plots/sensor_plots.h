@@ -44,6 +44,7 @@ public:
 
     // Not owned; the session keeps it alive while it is set.
     void setHistory(const SensorHistory *history);
+    const SensorHistory *history() const { return m_history; }
     void setProfile(const oi::RobotProfile &profile);
     const oi::RobotProfile &robotProfile() const { return *m_profile; }
 

@@ -24,9 +24,6 @@ namespace {
 
 constexpr int kMaxScriptBytes = 100; // ERRATA 11: the length byte counts bytes, at most 100
 constexpr int kTypingPauseMs = 150;
-constexpr int kReplyTimeoutMs = 1000;
-// Frames come every 15 ms; this long without bytes means the paused stream has drained.
-constexpr int kDrainQuietMs = 60;
 
 struct Example {
     const char *title;
@@ -118,14 +115,6 @@ ScriptEditor::ScriptEditor(QWidget *parent) : QWidget(parent)
     connect(m_debounce, &QTimer::timeout, this, &ScriptEditor::reassemble);
     connect(m_editor, &QPlainTextEdit::textChanged, m_debounce, qOverload<>(&QTimer::start));
 
-    m_replyTimeout = new QTimer(this);
-    m_replyTimeout->setSingleShot(true);
-    m_replyTimeout->setInterval(kReplyTimeoutMs);
-    connect(m_replyTimeout, &QTimer::timeout, this, &ScriptEditor::showScriptTimedOut);
-    m_drainTimer = new QTimer(this);
-    m_drainTimer->setSingleShot(true);
-    m_drainTimer->setInterval(kDrainQuietMs);
-    connect(m_drainTimer, &QTimer::timeout, this, &ScriptEditor::askForScript);
 
     addButton("upload", QString());
     addButton("play", QString());
@@ -251,11 +240,7 @@ void ScriptEditor::setProfile(const oi::RobotProfile &profile)
 {
     m_profile = &profile;
     // Another robot: what was uploaded and any reply still due belong to the old one.
-    m_replyTimeout->stop();
-    m_drainTimer->stop();
-    m_draining = false;
     m_awaitingReply = false;
-    m_reply.clear();
     m_uploaded.reset();
     m_showResult->clear();
     m_showResult->setVisible(false);
@@ -378,40 +363,11 @@ void ScriptEditor::upload()
 
 void ScriptEditor::showScript()
 {
-    // The reply has no framing, so stream frames still on their way would be
-    // read as part of it: pause the stream and let the line go quiet first.
-    m_reply.clear();
     m_awaitingReply = true;
-    m_draining = true;
-    m_showResult->setText(tr("Pausing the stream, then asking for the robot's script…"));
+    m_showResult->setText(tr("Asking for the robot's script…"));
     m_showResult->setVisible(true);
     refreshEnabled();
-    send(oi::CommandEncoder(*m_profile).pauseResumeStream(0));
-    m_drainTimer->start();
-}
-
-void ScriptEditor::askForScript()
-{
-    m_draining = false;
-    m_reply.clear();
-    m_showResult->setText(tr("Waiting for the robot's script…"));
-    m_replyTimeout->start();
-    send(oi::CommandEncoder(*m_profile).showScript());
-}
-
-void ScriptEditor::appendReceived(const QByteArray &bytes)
-{
-    if (m_draining) {
-        m_drainTimer->start(); // still arriving: wait for a quiet line
-        return;
-    }
-    if (!m_awaitingReply)
-        return;
-    m_reply.append(bytes);
-    // The reply is [length] then that many bytes; it may come in pieces.
-    if (m_reply.isEmpty() || m_reply.size() < 1 + qsizetype(quint8(m_reply[0])))
-        return;
-    finishShowScript();
+    emit showScriptRequested();
 }
 
 QString ScriptEditor::scriptAsText(const QByteArray &body) const
@@ -428,13 +384,11 @@ QString ScriptEditor::scriptAsText(const QByteArray &body) const
     return tr("%1 (not readable: %2)").arg(numbers.join(u' '), fromStd(text.error().describe()));
 }
 
-void ScriptEditor::finishShowScript()
+void ScriptEditor::showScriptReply(const QByteArray &body)
 {
-    m_replyTimeout->stop();
+    if (!m_awaitingReply)
+        return;
     m_awaitingReply = false;
-    const QByteArray body = m_reply.mid(1, quint8(m_reply[0]));
-    m_reply.clear();
-
     if (m_uploaded && body == *m_uploaded) {
         m_showResult->setText(tr("The robot's script matches what was sent: %1").arg(scriptAsText(body)));
     } else {
@@ -443,18 +397,13 @@ void ScriptEditor::finishShowScript()
                                        m_uploaded ? scriptAsText(*m_uploaded) : tr("nothing uploaded yet")));
     }
     refreshEnabled();
-    // Show Script halts the sensor stream on the robot; Pause/Resume Stream
-    // (150 1) restarts it with the packets last requested.
-    send(oi::CommandEncoder(*m_profile).pauseResumeStream(1));
 }
 
-void ScriptEditor::showScriptTimedOut()
+void ScriptEditor::showScriptFailed(const QString &reason)
 {
+    if (!m_awaitingReply)
+        return;
     m_awaitingReply = false;
-    m_reply.clear();
-    m_showResult->setText(tr("No reply to Show Script within %1 s. Is the robot connected and awake?")
-                              .arg(kReplyTimeoutMs / 1000));
+    m_showResult->setText(tr("No script came back: %1").arg(reason));
     refreshEnabled();
-    // The robot may have halted its stream even though no reply came back.
-    send(oi::CommandEncoder(*m_profile).pauseResumeStream(1));
 }

@@ -46,11 +46,15 @@ public:
     QString disabledReason() const;         // empty on the Create 1
 
 public slots:
-    // Raw bytes from the robot; only read while a Show Script reply is due.
-    void appendReceived(const QByteArray &bytes);
+    // The robot's answer to showScriptRequested(): the script's bytes, or why
+    // there is none.
+    void showScriptReply(const QByteArray &script);
+    void showScriptFailed(const QString &reason);
 
 signals:
     void sendRequested(const QByteArray &bytes);
+    // Show Script (154): the robot's link asks, around its own stream.
+    void showScriptRequested();
 
 protected:
     void changeEvent(QEvent *event) override;
@@ -61,9 +65,6 @@ private:
     void send(const oi::EncodeResult &bytes);
     void upload();
     void showScript();
-    void finishShowScript();
-    void showScriptTimedOut();
-    void askForScript();
     void showError(const QString &message, std::optional<int> line);
     void refreshEnabled();
     QString scriptAsText(const QByteArray &body) const;
@@ -80,13 +81,9 @@ private:
     QString m_refusal; // why the profile has no scripts, from the encoder
     QHash<QString, QPushButton *> m_buttons;
     QTimer *m_debounce = nullptr;
-    QTimer *m_replyTimeout = nullptr;
-    QTimer *m_drainTimer = nullptr;
 
     std::optional<QByteArray> m_body;  // the assembled script, if it fits
     std::optional<int> m_errorLine;
     std::optional<QByteArray> m_uploaded; // the body last sent with 152
     bool m_awaitingReply = false;
-    bool m_draining = false; // stream paused, waiting for frames in flight to pass
-    QByteArray m_reply;
 };

@@ -3,51 +3,79 @@
 
 #include "firmware_banner.h"
 #include "robot_link_thread.h"
+#include "robot_odometry.h"
+#include "sensor_history.h"
 #include "sensor_snapshot.h"
+#include "teleop_controller.h"
 
 #include <QByteArray>
-#include <QElapsedTimer>
+#include <QColor>
 #include <QObject>
 #include <QString>
 
-#include <functional>
-
-// The robot as the GUI thread sees it: the latest value of every packet, the
-// profile, the link's state and statistics, the firmware, and a hook for the
-// history. Widgets read it from the display timer; user actions come back
-// through send(), never straight to the link.
+// One robot, everything that belongs to it, on the GUI thread: its link (on a
+// worker thread), profile, firmware and the corrections that firmware needs,
+// the latest value of every packet, its history, its odometry, its teleop
+// controller with every safety rule, and its recording. Several can exist at
+// once. Widgets show one session and send commands to it; they never hold
+// robot state of their own.
 class RobotSession : public QObject {
     Q_OBJECT
 public:
     explicit RobotSession(QObject *parent = nullptr);
     ~RobotSession() override;
 
-    // Tests put a recording transport here. Before the first connectTo().
+    // How the robot list, the map and the status bar tell robots apart.
+    QString name() const { return m_name; }
+    void setName(const QString &name);
+    QColor colour() const { return m_colour; }
+    void setColour(const QColor &colour);
+
+    // Makes the transports (tests put a recording transport here). Before
+    // the first connectTo().
     void setTransportFactory(oilink::RobotLink::TransportFactory factory);
 
     void connectTo(const oilink::LinkSettings &settings);
     void disconnectFromRobot();
-    // Leaves the robot stopped and in Passive mode and waits for the port to
-    // close: for quitting.
+    // Stops the robot, leaves it in Passive mode and waits for the port to
+    // close: for quitting, by the window or by a signal.
     void closeAndWait();
     bool isConnected() const { return m_connected; }
+    // Where the robot is (or was, or will be) connected.
     const oilink::LinkSettings &settings() const { return m_settings; }
+    // Where a robot that is not connected would connect; connects nothing.
+    void setSettings(const oilink::LinkSettings &settings);
 
     // Sends already-encoded, validated bytes while the link is up. Returns false
     // (and sends nothing) when there is no link.
     bool send(const QByteArray &bytes);
+    // Requests whose replies carry no framing go through the link's queue,
+    // which pauses and resumes its own stream around them: Sensors (142) or
+    // Query List (149), answered by sensorReply(); Show Script (154),
+    // answered by scriptShown(). A failure comes as errorOccurred().
+    void querySensors(const QList<int> &packetIds) { m_link.querySensors(packetIds); }
+    void showScript() { m_link.showScript(); }
 
     const oi::RobotProfile &robotProfile() const { return *m_profile; }
     const oi::SensorSnapshot &latest() const { return m_latest; }
     // Counts snapshots, so a display timer can skip work when nothing changed.
     quint64 snapshotCount() const { return m_snapshotCount; }
-    // Seconds since connectTo(), or for a replay the recording's own time
-    // (at any speed): the time axis of the history.
-    double secondsSinceConnect() const;
     oilink::LinkState state() const { return m_state; }
+    bool isLive() const { return m_state == oilink::LinkState::Streaming; }
     const oilink::LinkStats &statistics() const { return m_stats; }
     QString firmwareRelease() const { return m_firmware; }
     const oi::FirmwareCorrections &corrections() const { return m_corrections; }
+
+    // Every packet of every frame, on the link's clock (the recording's in a replay).
+    const SensorHistory &history() const { return m_history; }
+    // Samples kept per channel; clears the history.
+    void setHistoryCapacity(std::size_t samples);
+    // Dead reckoning with this robot's firmware corrections applied.
+    RobotOdometry &odometry() { return m_odometry; }
+    const RobotOdometry &odometry() const { return m_odometry; }
+    // Motion and its sending rules: dead-man, focus, stale data, link loss,
+    // Safe dropping to Passive by itself.
+    TeleopController &teleop() { return m_teleop; }
 
     // The in-process virtual robot's true pose, answered by virtualRobotPose().
     void requestVirtualRobotPose() { m_link.requestVirtualRobotPose(); }
@@ -60,11 +88,10 @@ public:
     // For a replay: play, pause, speed, seek, step.
     void controlReplay(const oilink::ReplayCommand &command) { m_link.controlReplay(command); }
     bool isReplay() const { return m_connected && m_settings.transport == oilink::TransportKind::Replay; }
-
-    // Called for every snapshot, with secondsSinceConnect(): the history.
-    void setSnapshotObserver(std::function<void(double, const oi::SensorSnapshot &)> observer);
+    const oilink::ReplayStatus &replay() const { return m_replay; }
 
 signals:
+    void identityChanged();
     void stateChanged(oilink::LinkState state);
     void statisticsChanged(const oilink::LinkStats &stats);
     void profileChanged(oi::ProfileId profile);
@@ -73,15 +100,24 @@ signals:
     void virtualRobotPose(double xMm, double yMm, double thetaRad);
     void bytesSent(const QByteArray &bytes, qint64 msecs);
     void bytesReceived(const QByteArray &bytes, qint64 msecs);
+    void sensorReply(const oi::SensorSnapshot &reply);
+    void scriptShown(const QByteArray &script);
+    void scriptFailed(const QString &message);
     void recordingStatus(const oilink::RecordingStatus &status);
     void replayStatus(const oilink::ReplayStatus &status);
+    // The history and odometry started afresh (a new connection, a jump back in a replay).
+    void historyReset();
 
 private:
-    void onSnapshot(const oi::SensorSnapshot &snapshot);
+    void onSnapshot(const oi::SensorSnapshot &snapshot, double readSeconds);
     void onStreamStarted(oi::ProfileId profile);
     void onBytesSent(const QByteArray &bytes);
     void onBytesReceived(const QByteArray &bytes);
+    void onReplayStatus(const oilink::ReplayStatus &status);
+    void resetHistory();
 
+    QString m_name;
+    QColor m_colour;
     oilink::RobotLinkThread m_link;
     oilink::LinkSettings m_settings;
     bool m_connected = false;
@@ -92,13 +128,14 @@ private:
     oilink::LinkStats m_stats;
     oilink::RecordingStatus m_recording;
     oilink::ReplayStatus m_replay; // the last word from a replay
-    QElapsedTimer m_sinceReplayStatus;
-    QElapsedTimer m_clock;
     QString m_firmware;
     oi::FirmwareCorrections m_corrections;
     // After a Reset the robot prints a banner; collect it (bounded) until the
     // version shows up.
     bool m_awaitingBanner = false;
     QByteArray m_bannerText;
-    std::function<void(double, const oi::SensorSnapshot &)> m_observer;
+    SensorHistory m_history;
+    RobotOdometry m_odometry;
+    // Last: it reads the members above, and is destroyed first.
+    TeleopController m_teleop{*this};
 };

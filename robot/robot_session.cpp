@@ -3,7 +3,7 @@
 
 #include "command_catalog.h"
 
-#include <algorithm>
+#include <QDateTime>
 
 namespace {
 constexpr qsizetype kMaxBannerBytes = 8192;
@@ -12,7 +12,6 @@ constexpr qsizetype kMaxBannerBytes = 8192;
 RobotSession::RobotSession(QObject *parent) : QObject(parent)
 {
     oilink::registerLinkMetaTypes();
-    m_clock.start();
     connect(&m_link, &oilink::RobotLinkThread::snapshot, this, &RobotSession::onSnapshot);
     connect(&m_link, &oilink::RobotLinkThread::streamStarted, this,
             [this](oi::ProfileId profile, int, const QList<int> &) { onStreamStarted(profile); });
@@ -28,27 +27,37 @@ RobotSession::RobotSession(QObject *parent) : QObject(parent)
     connect(&m_link, &oilink::RobotLinkThread::virtualRobotPose, this, &RobotSession::virtualRobotPose);
     connect(&m_link, &oilink::RobotLinkThread::rawBytesSent, this, &RobotSession::onBytesSent);
     connect(&m_link, &oilink::RobotLinkThread::rawBytesReceived, this, &RobotSession::onBytesReceived);
+    connect(&m_link, &oilink::RobotLinkThread::sensorReply, this, &RobotSession::sensorReply);
+    connect(&m_link, &oilink::RobotLinkThread::scriptReply, this, &RobotSession::scriptShown);
+    connect(&m_link, &oilink::RobotLinkThread::scriptFailed, this, &RobotSession::scriptFailed);
     connect(&m_link, &oilink::RobotLinkThread::recordingStatus, this, [this](const oilink::RecordingStatus &s) {
         m_recording = s;
         emit recordingStatus(s);
     });
-    connect(&m_link, &oilink::RobotLinkThread::replayStatus, this, [this](const oilink::ReplayStatus &s) {
-        m_replay = s;
-        m_sinceReplayStatus.start();
-        emit replayStatus(s);
-    });
+    connect(&m_link, &oilink::RobotLinkThread::replayStatus, this, &RobotSession::onReplayStatus);
 }
 
 RobotSession::~RobotSession() { closeAndWait(); }
 
+void RobotSession::setName(const QString &name)
+{
+    if (name == m_name)
+        return;
+    m_name = name;
+    emit identityChanged();
+}
+
+void RobotSession::setColour(const QColor &colour)
+{
+    if (colour == m_colour)
+        return;
+    m_colour = colour;
+    emit identityChanged();
+}
+
 void RobotSession::setTransportFactory(oilink::RobotLink::TransportFactory factory)
 {
     m_link.setTransportFactory(std::move(factory));
-}
-
-void RobotSession::setSnapshotObserver(std::function<void(double, const oi::SensorSnapshot &)> observer)
-{
-    m_observer = std::move(observer);
 }
 
 void RobotSession::connectTo(const oilink::LinkSettings &settings)
@@ -58,11 +67,16 @@ void RobotSession::connectTo(const oilink::LinkSettings &settings)
     m_settings = settings;
     m_connected = true;
     m_replay = {};
-    m_sinceReplayStatus.invalidate();
     m_latest = oi::SensorSnapshot(*m_profile);
     m_snapshotCount = 0;
-    m_clock.restart();
+    resetHistory();
     m_link.open(settings);
+}
+
+void RobotSession::setSettings(const oilink::LinkSettings &settings)
+{
+    if (!m_connected)
+        m_settings = settings;
 }
 
 void RobotSession::disconnectFromRobot()
@@ -75,6 +89,10 @@ void RobotSession::disconnectFromRobot()
 
 void RobotSession::closeAndWait()
 {
+    // A command still waiting on the teleop timer must not go out after the
+    // shutdown sequence; the link's close() then stops the robot and leaves it
+    // in Passive (ERRATA 17).
+    m_teleop.stopBeforeQuit();
     if (m_link.isRunning())
         m_link.closeAndWait();
     m_connected = false;
@@ -88,13 +106,17 @@ bool RobotSession::send(const QByteArray &bytes)
     return true;
 }
 
-double RobotSession::secondsSinceConnect() const
+void RobotSession::setHistoryCapacity(std::size_t samples)
 {
-    if (!isReplay() || !m_sinceReplayStatus.isValid())
-        return m_clock.nsecsElapsed() / 1e9;
-    // Between the replay's reports its clock runs on at its speed.
-    const double sinceReport = m_replay.playing ? m_sinceReplayStatus.nsecsElapsed() / 1e9 * m_replay.speed : 0.0;
-    return std::min(m_replay.positionUs / 1e6 + sinceReport, m_replay.durationUs / 1e6);
+    m_history = SensorHistory(*m_profile, samples);
+    emit historyReset();
+}
+
+void RobotSession::resetHistory()
+{
+    m_history.clear();
+    m_odometry.reset();
+    emit historyReset();
 }
 
 void RobotSession::onStreamStarted(oi::ProfileId profile)
@@ -103,17 +125,34 @@ void RobotSession::onStreamStarted(oi::ProfileId profile)
         return;
     m_profile = &oi::profile(profile);
     m_latest = oi::SensorSnapshot(*m_profile);
+    // The same packet id can mean another thing on another profile (ERRATA 4).
+    m_history.setProfile(*m_profile);
+    m_odometry.reset();
     emit profileChanged(profile);
 }
 
-void RobotSession::onSnapshot(const oi::SensorSnapshot &snapshot)
+void RobotSession::onSnapshot(const oi::SensorSnapshot &snapshot, double readSeconds)
 {
     if (snapshot.robotProfile().id != m_profile->id)
         onStreamStarted(snapshot.robotProfile().id);
     m_latest.merge(snapshot);
     ++m_snapshotCount;
-    if (m_observer)
-        m_observer(secondsSinceConnect(), snapshot);
+    // Every frame once: distance and angle are increments since the last one.
+    m_history.append(readSeconds, snapshot);
+    m_odometry.update(snapshot);
+    // Safe dropping to Passive by itself (a cliff, a wheel drop) ends the motion.
+    m_teleop.checkMode();
+}
+
+void RobotSession::onReplayStatus(const oilink::ReplayStatus &status)
+{
+    // The history and the odometry run forward in the recording's time; after
+    // a jump back (a seek, a step back, playing again from the end) they start
+    // afresh rather than draw time running backwards.
+    if (status.positionUs < m_replay.positionUs)
+        resetHistory();
+    m_replay = status;
+    emit replayStatus(status);
 }
 
 void RobotSession::onBytesSent(const QByteArray &bytes)
@@ -136,6 +175,7 @@ void RobotSession::onBytesReceived(const QByteArray &bytes)
             m_awaitingBanner = false;
             m_firmware = QString::fromStdString(info->release);
             m_corrections = info->corrections;
+            m_odometry.setCorrections(m_corrections);
             emit firmwareChanged(m_firmware);
         }
     }

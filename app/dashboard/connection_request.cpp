@@ -1,0 +1,55 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "connection_request.h"
+
+namespace connection {
+
+oilink::LinkSettings linkSettingsFor(const ConnectionRequest &r)
+{
+    using T = ConnectionRequest::Transport;
+    oilink::LinkSettings s;
+    switch (r.transport) {
+    case T::Virtual:
+        s = oilink::LinkSettings::virtualRobotOf(r.profile.value_or(oi::ProfileId::Create2), r.profile);
+        break;
+    case T::Serial:
+        s = oilink::LinkSettings::serial(r.portPath, r.profile, r.baud);
+        break;
+    case T::Tcp:
+        s = oilink::LinkSettings::tcp(r.host, r.tcpPort, r.profile);
+        s.baud = r.baud;
+        break;
+    }
+    return s;
+}
+
+ConnectionRequest requestFor(const oilink::LinkSettings &s)
+{
+    using T = ConnectionRequest::Transport;
+    ConnectionRequest r;
+    r.profile = s.profile;
+    r.baud = s.baud;
+    switch (s.transport) {
+    case oilink::TransportKind::Serial:
+        r.transport = T::Serial;
+        r.portPath = s.portPath;
+        break;
+    case oilink::TransportKind::Tcp:
+        r.transport = T::Tcp;
+        r.host = s.host;
+        r.tcpPort = s.tcpPort;
+        break;
+    case oilink::TransportKind::Virtual:
+        r.transport = T::Virtual;
+        // Auto on the virtual robot plays a Create 2 (see linkSettingsFor).
+        if (!s.profile && s.virtualRobot != oi::ProfileId::Create2)
+            r.profile = s.virtualRobot;
+        break;
+    case oilink::TransportKind::Replay:
+        r.transport = T::Virtual;
+        r.baud = 0;
+        break;
+    }
+    return r;
+}
+
+} // namespace connection

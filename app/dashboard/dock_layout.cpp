@@ -1,0 +1,76 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "dock_layout.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QCoreApplication>
+#include <QDockWidget>
+#include <QMainWindow>
+
+DockLayout::DockLayout(QMainWindow *window) : QObject(window), m_window(window) {}
+
+QDockWidget *DockLayout::addDock(const QString &objectName, const char *title, QWidget *widget,
+                                 Qt::DockWidgetArea area, bool actsOnRobot)
+{
+    auto *dock = new QDockWidget(m_window);
+    dock->setObjectName(objectName);
+    dock->setWidget(widget);
+    m_window->addDockWidget(area, dock);
+    m_docks << dock;
+    m_titles << Dock{dock, title, actsOnRobot};
+    return dock;
+}
+
+void DockLayout::keepAsDefault()
+{
+    m_default = m_window->saveState();
+}
+
+void DockLayout::resetLayout()
+{
+    m_window->restoreState(m_default);
+    for (QDockWidget *dock : m_docks)
+        dock->show();
+}
+
+void DockLayout::retitle(const QString &robotName)
+{
+    for (const Dock &d : m_titles) {
+        // The titles are marked in MainWindow's context, where they are made.
+        const QString title = QCoreApplication::translate("MainWindow", d.title);
+        d.dock->setWindowTitle(d.actsOnRobot && !robotName.isEmpty() ? tr("%1 — %2").arg(title, robotName) : title);
+    }
+}
+
+QDockWidget *DockLayout::focusNextDock(int direction)
+{
+    QList<QDockWidget *> open;
+    for (QDockWidget *dock : m_docks)
+        if (dock->toggleViewAction()->isChecked())
+            open << dock;
+    if (open.isEmpty())
+        return nullptr;
+    const QWidget *focus = QApplication::focusWidget();
+    qsizetype current = -1;
+    for (qsizetype i = 0; i < open.size(); ++i)
+        if (focus && (open[i] == focus || open[i]->isAncestorOf(focus)))
+            current = i;
+    const qsizetype count = open.size();
+    const qsizetype next = current < 0 ? (direction > 0 ? 0 : count - 1) : ((current + direction) % count + count) % count;
+    QDockWidget *dock = open[next];
+    dock->raise(); // a tabbed dock comes to the front
+    // The first control that Tab would reach inside it; else the dock's widget.
+    QWidget *target = dock->widget();
+    for (QWidget *w = dock->widget()->nextInFocusChain(); w && w != dock->widget(); w = w->nextInFocusChain()) {
+        if (!dock->isAncestorOf(w))
+            continue;
+        if ((w->focusPolicy() & Qt::TabFocus) && w->isVisible() && w->isEnabled()) {
+            target = w;
+            break;
+        }
+    }
+    if (target == dock->widget() && target->focusPolicy() == Qt::NoFocus)
+        target->setFocusPolicy(Qt::TabFocus);
+    target->setFocus(Qt::ShortcutFocusReason);
+    return dock;
+}

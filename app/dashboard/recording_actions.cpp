@@ -1,0 +1,134 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "recording_actions.h"
+
+#include "recording_file.h"
+#include "robot_fleet.h"
+#include "robot_session.h"
+
+#include <QAction>
+#include <QDateTime>
+#include <QDir>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QMessageBox>
+#include <QSaveFile>
+#include <QStandardPaths>
+#include <QTextStream>
+
+RecordingActions::RecordingActions(RobotFleet &fleet, QWidget *dialogParent)
+    : QObject(dialogParent), m_fleet(fleet), m_dialogParent(dialogParent)
+{
+    m_record = new QAction(this);
+    m_record->setObjectName("recordAction");
+    m_record->setCheckable(true);
+    m_record->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_R));
+    connect(m_record, &QAction::triggered, this, &RecordingActions::chooseRecordingFile);
+    m_open = new QAction(this);
+    m_open->setObjectName("openRecordingAction");
+    m_open->setShortcut(QKeySequence::Open);
+    connect(m_open, &QAction::triggered, this, &RecordingActions::chooseRecordingToOpen);
+    m_exportCsv = new QAction(this);
+    m_exportCsv->setObjectName("exportCsvAction");
+    connect(m_exportCsv, &QAction::triggered, this, &RecordingActions::chooseRecordingToExport);
+}
+
+void RecordingActions::retranslate()
+{
+    m_record->setText(tr("&Record"));
+    m_record->setToolTip(tr("Record every byte to and from the selected robot into a file"));
+    m_open->setText(tr("&Open recording…"));
+    m_open->setToolTip(tr("Replay a recording as a robot of its own"));
+    m_exportCsv->setText(tr("&Export recording as CSV…"));
+}
+
+void RecordingActions::showSelectedRobot()
+{
+    const RobotSession *robot = m_fleet.selected();
+    m_record->setEnabled(robot && !robot->isReplay());
+    m_record->setChecked(robot && robot->recording().active);
+}
+
+bool RecordingActions::openRecording(const QString &path, QString *error)
+{
+    QString why;
+    const std::optional<oilink::Recording> recording = oilink::Recording::load(path, &why);
+    if (!recording) {
+        if (error)
+            *error = why;
+        return false;
+    }
+    RobotSession *robot = m_fleet.addRobot(
+        oilink::LinkSettings::replayOf(path, recording->robotProfile().id, recording->stream().baud,
+                                       recording->stream().packets),
+        QFileInfo(path).completeBaseName());
+    m_fleet.select(robot);
+    return true;
+}
+
+QString RecordingActions::exportRecordingCsv(const QString &recordingPath, const QString &csvPath)
+{
+    QString why;
+    const std::optional<oilink::Recording> recording = oilink::Recording::load(recordingPath, &why);
+    if (!recording)
+        return why;
+    QSaveFile file(csvPath);
+    if (!file.open(QIODevice::WriteOnly | QIODevice::Text))
+        return QStringLiteral("%1: %2").arg(csvPath, file.errorString());
+    QTextStream out(&file);
+    recording->writeCsv(out);
+    out.flush();
+    if (!file.commit())
+        return QStringLiteral("%1: %2").arg(csvPath, file.errorString());
+    return QString();
+}
+
+void RecordingActions::chooseRecordingFile(bool start)
+{
+    RobotSession *robot = m_fleet.selected();
+    if (!robot)
+        return;
+    if (!start) {
+        robot->stopRecording();
+        return;
+    }
+    m_record->setChecked(false); // until the link says it records
+    const QString suggested = QDir(QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation))
+                                  .filePath(QStringLiteral("%1-%2.%3")
+                                                .arg(robot->name().simplified().replace(' ', '-'),
+                                                     QDateTime::currentDateTime().toString("yyyyMMdd-HHmmss"),
+                                                     oilink::recording::kFileSuffix));
+    const QString path = QFileDialog::getSaveFileName(m_dialogParent, tr("Record %1 to").arg(robot->name()), suggested,
+                                                      tr("Roomba Dashboard recordings (*.oirec)"));
+    // The selection may have changed while the dialog was open.
+    if (!path.isEmpty() && m_fleet.indexOf(robot) >= 0)
+        robot->startRecording(path);
+}
+
+void RecordingActions::chooseRecordingToOpen()
+{
+    const QString path = QFileDialog::getOpenFileName(m_dialogParent, tr("Open recording"), QString(),
+                                                      tr("Roomba Dashboard recordings (*.oirec);;All files (*)"));
+    if (path.isEmpty())
+        return;
+    QString error;
+    if (!openRecording(path, &error))
+        QMessageBox::warning(m_dialogParent, tr("Open recording"), tr("This file cannot be replayed.\n\n%1").arg(error));
+}
+
+void RecordingActions::chooseRecordingToExport()
+{
+    const QString from = QFileDialog::getOpenFileName(m_dialogParent, tr("Export recording as CSV"), QString(),
+                                                      tr("Roomba Dashboard recordings (*.oirec);;All files (*)"));
+    if (from.isEmpty())
+        return;
+    const QString to = QFileDialog::getSaveFileName(m_dialogParent, tr("Save CSV as"),
+                                                    QFileInfo(from).path() + '/' + QFileInfo(from).completeBaseName() + ".csv",
+                                                    tr("CSV files (*.csv)"));
+    if (to.isEmpty())
+        return;
+    const QString error = exportRecordingCsv(from, to);
+    if (!error.isEmpty())
+        QMessageBox::warning(m_dialogParent, tr("Export recording as CSV"), tr("Nothing was written.\n\n%1").arg(error));
+    else
+        emit message(tr("Wrote %1").arg(QDir::toNativeSeparators(to)));
+}

@@ -1,0 +1,129 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "robot_status_bar.h"
+
+#include "display_palette.h"
+#include "oi_text.h"
+#include "robot_session.h"
+
+#include <QFileInfo>
+#include <QLabel>
+#include <QStatusBar>
+
+RobotStatusBar::RobotStatusBar(QStatusBar *bar) : QObject(bar), m_bar(bar)
+{
+    auto label = [this](const char *name) {
+        auto *l = new QLabel(m_bar);
+        l->setObjectName(name);
+        m_bar->addPermanentWidget(l);
+        return l;
+    };
+    m_robot = new QLabel(m_bar);
+    m_robot->setObjectName("selectedRobot");
+    m_bar->addWidget(m_robot);
+    m_stale = new QLabel(m_bar);
+    m_stale->setObjectName("staleIndicator");
+    m_stale->setFont(display::valueFont(m_bar->font(), 1.2));
+    const display::State alert = display::State::Alert;
+    m_stale->setStyleSheet(QString("QLabel { background: %1; color: %2; padding: 2px 8px; }")
+                               .arg(display::stateColor(alert, m_bar->palette()).name(),
+                                    display::textOn(alert, m_bar->palette()).name()));
+    m_bar->addWidget(m_stale);
+    m_state = label("linkState");
+    m_profile = label("profile");
+    m_firmware = label("firmware");
+    m_rate = label("frameRate");
+    m_errors = label("lineErrors");
+    m_recording = label("recording");
+    m_recording->setVisible(false);
+    m_recording->setStyleSheet(QString("QLabel { color: %1; font-weight: bold; }")
+                                   .arg(display::stateColor(alert, m_bar->palette()).name()));
+}
+
+void RobotStatusBar::showRobot(const RobotSession &robot, bool nameIt)
+{
+    m_robot->setVisible(nameIt);
+    m_robot->setText(robot.name());
+    m_robot->setStyleSheet(QString("QLabel { border-left: 8px solid %1; padding-left: 4px; font-weight: bold; }")
+                               .arg(robot.colour().name()));
+    m_firmwareRelease = robot.firmwareRelease();
+    showProfile(oitext::fromView(robot.robotProfile().name));
+    showState(robot.state());
+    showStatistics(robot.statistics());
+    showRecording(robot.recording());
+    showFirmware(robot.firmwareRelease());
+}
+
+QString RobotStatusBar::linkStateText(oilink::LinkState state)
+{
+    using S = oilink::LinkState;
+    switch (state) {
+    case S::Closed: return tr("closed");
+    case S::Connecting: return tr("connecting");
+    case S::Streaming: return tr("streaming");
+    case S::Stale: return tr("stale");
+    case S::Lost: return tr("lost");
+    case S::Reconnecting: return tr("reconnecting");
+    }
+    return QString();
+}
+
+void RobotStatusBar::showState(oilink::LinkState state)
+{
+    m_shownState = state;
+    m_state->setText(tr("Link: %1").arg(linkStateText(state)));
+}
+
+void RobotStatusBar::showStatistics(const oilink::LinkStats &stats)
+{
+    m_shownStats = stats;
+    m_rate->setText(tr("%1 frames/s").arg(stats.framesPerSecond, 0, 'f', 1));
+    m_errors->setText(tr("checksum failures %1, resyncs %2").arg(stats.checksumFailures).arg(stats.resyncs));
+}
+
+void RobotStatusBar::showFirmware(const QString &release)
+{
+    m_firmwareRelease = release;
+    m_firmware->setText(release.isEmpty() ? QString() : tr("Firmware %1").arg(release));
+}
+
+void RobotStatusBar::showProfile(const QString &name)
+{
+    m_profile->setText(name);
+}
+
+void RobotStatusBar::showRecording(const oilink::RecordingStatus &status)
+{
+    m_shownRecording = status;
+    m_recording->setVisible(status.active);
+    m_recording->setText(tr("● REC %1 kB %2").arg(status.bytesWritten / 1024).arg(QFileInfo(status.path).fileName()));
+    m_recording->setToolTip(status.path);
+}
+
+void RobotStatusBar::showLive(bool live, bool replay)
+{
+    m_live = live;
+    m_replay = replay;
+    m_stale->setText(replay ? tr("  REPLAY, NOT LIVE  ") : tr("  NO LIVE DATA  "));
+    m_stale->setVisible(!live || replay);
+}
+
+void RobotStatusBar::retranslate()
+{
+    showState(m_shownState);
+    showStatistics(m_shownStats);
+    showRecording(m_shownRecording);
+    showFirmware(m_firmwareRelease);
+    showLive(m_live, m_replay);
+}
+
+QString RobotStatusBar::text() const
+{
+    QStringList parts;
+    for (QLabel *l : {m_robot, m_stale})
+        if (!l->isHidden() && !l->text().trimmed().isEmpty())
+            parts << l->text().trimmed();
+    for (QLabel *l : {m_state, m_profile, m_firmware, m_rate, m_errors})
+        if (!l->text().isEmpty())
+            parts << l->text();
+    return parts.join(" | ");
+}

@@ -1,0 +1,53 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "link_status.h"
+
+#include <QObject>
+#include <QString>
+
+class QLabel;
+class QStatusBar;
+class RobotSession;
+
+// The status bar's view of the selected robot: which robot it is, the link,
+// profile, firmware, frame rate, line errors, recording, and a hard-to-miss
+// flag when no live data arrives.
+class RobotStatusBar : public QObject {
+    Q_OBJECT
+public:
+    explicit RobotStatusBar(QStatusBar *bar);
+
+    // Reads everything from `robot` now; later changes come through the show* calls.
+    void showRobot(const RobotSession &robot, bool nameIt);
+    void showState(oilink::LinkState state);
+    void showStatistics(const oilink::LinkStats &stats);
+    void showFirmware(const QString &release);
+    void showProfile(const QString &name);
+    void showRecording(const oilink::RecordingStatus &status);
+    // No live data: "NO LIVE DATA", or for a replay "REPLAY, NOT LIVE".
+    void showLive(bool live, bool replay);
+    void retranslate();
+    // Every label shown, joined: for tests and screen readers.
+    QString text() const;
+    // "streaming", "lost", ...
+    static QString linkStateText(oilink::LinkState state);
+
+private:
+
+    QStatusBar *m_bar;
+    QLabel *m_robot = nullptr;
+    QLabel *m_stale = nullptr;
+    QLabel *m_state = nullptr;
+    QLabel *m_profile = nullptr;
+    QLabel *m_firmware = nullptr;
+    QLabel *m_rate = nullptr;
+    QLabel *m_errors = nullptr;
+    QLabel *m_recording = nullptr;
+    oilink::LinkState m_shownState = oilink::LinkState::Closed;
+    oilink::LinkStats m_shownStats;
+    oilink::RecordingStatus m_shownRecording;
+    QString m_firmwareRelease;
+    bool m_live = false;
+    bool m_replay = false;
+};

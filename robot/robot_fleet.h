@@ -1,0 +1,61 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "robot_link.h"
+#include "saved_robots.h"
+
+#include <QList>
+#include <QObject>
+
+#include <memory>
+#include <vector>
+
+class RobotSession;
+
+// The robots of one window, each a RobotSession with its own name and
+// colour, and which of them is selected. Stop all reaches every robot,
+// whatever is selected. There is always at least one robot.
+class RobotFleet : public QObject {
+    Q_OBJECT
+public:
+    explicit RobotFleet(QObject *parent = nullptr);
+    ~RobotFleet() override;
+
+    // Makes the transports of every robot added from now on (tests).
+    void setTransportFactory(oilink::RobotLink::TransportFactory factory);
+
+    // A new robot, named and coloured apart from the others; an empty name
+    // gets "Robot N". Connects it when `connect` is set. Not selected.
+    RobotSession *addRobot(const oilink::LinkSettings &settings, const QString &name = {}, bool connect = true);
+    // Stops it, leaves it in Passive and closes it; the last robot stays.
+    bool removeRobot(RobotSession *robot);
+
+    const QList<RobotSession *> &robots() const { return m_robots; }
+    qsizetype count() const { return m_robots.size(); }
+    qsizetype indexOf(const RobotSession *robot) const;
+    RobotSession *selected() const { return m_selected; }
+    void select(RobotSession *robot);
+
+    // Drive 0,0 and motors off on every connected robot, at once.
+    void stopAll();
+    // Stop, Passive, close, for every robot: before the program ends.
+    void closeAllAndWait();
+
+    // What is kept between runs, and the robots made from it.
+    QList<SavedRobot> saved() const;
+    void restore(const QList<SavedRobot> &robots);
+
+    QString uniqueName(const QString &wanted) const;
+
+signals:
+    void robotAdded(RobotSession *robot);
+    void robotRemoved(RobotSession *robot);
+    void selectionChanged(RobotSession *robot, RobotSession *previous);
+
+private:
+    QColor nextColour() const;
+
+    oilink::RobotLink::TransportFactory m_factory;
+    QList<RobotSession *> m_robots;
+    RobotSession *m_selected = nullptr;
+};

@@ -1,0 +1,54 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "robot_odometry.h"
+
+#include <cmath>
+
+RobotOdometry::RobotOdometry()
+{
+    appendTrailPoint();
+}
+
+void RobotOdometry::update(const oi::SensorSnapshot &frame)
+{
+    const oi::Pose before = m_odometry.pose();
+    m_odometry.update(frame);
+    const oi::Pose &after = m_odometry.pose();
+    if (after.xMm != before.xMm || after.yMm != before.yMm || after.thetaRad != before.thetaRad) {
+        appendTrailPoint();
+        ++m_revision;
+    }
+}
+
+void RobotOdometry::reset()
+{
+    m_odometry.reset();
+    m_trail.clear();
+    appendTrailPoint();
+    ++m_revision;
+}
+
+void RobotOdometry::setCorrections(const oi::FirmwareCorrections &corrections)
+{
+    m_odometry.setCorrections(corrections);
+}
+
+bool RobotOdometry::setGeometry(double wheelBaseMm, double wheelDiameterMm)
+{
+    if (!std::isfinite(wheelDiameterMm) || wheelDiameterMm <= 0
+        || !m_odometry.setGeometry(wheelBaseMm, oi::Odometry::mmPerEncoderCountFor(wheelDiameterMm)))
+        return false;
+    m_wheelDiameterMm = wheelDiameterMm;
+    ++m_revision;
+    return true;
+}
+
+void RobotOdometry::appendTrailPoint()
+{
+    const oi::Pose &p = m_odometry.pose();
+    const QPointF point(p.xMm, p.yMm);
+    if (!m_trail.isEmpty() && m_trail.constLast() == point)
+        return;
+    if (m_trail.size() >= kMaxTrailPoints)
+        m_trail.removeFirst();
+    m_trail.append(point);
+}

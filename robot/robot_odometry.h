@@ -1,0 +1,49 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "firmware_banner.h"
+#include "odometry.h"
+#include "sensor_snapshot.h"
+
+#include <QList>
+#include <QPointF>
+
+// Where one robot thinks it is: dead reckoning from each of its stream frames
+// with its own wheel geometry and its firmware's corrections (ERRATA 16), and
+// the trail of positions the map draws. A value class owned by the robot's
+// model; the map only reads it.
+class RobotOdometry {
+public:
+    static constexpr int kMaxTrailPoints = 20000;
+
+    RobotOdometry();
+
+    // Feed each decoded frame once: packets 19 and 20 are increments.
+    void update(const oi::SensorSnapshot &frame);
+    // Starts again from the origin, with an empty trail.
+    void reset();
+
+    // Applied to the distance/angle fallback (packets 19 and 20).
+    void setCorrections(const oi::FirmwareCorrections &corrections);
+    const oi::FirmwareCorrections &corrections() const { return m_odometry.corrections(); }
+
+    // A measured wheel base and wheel diameter, from now on. Both must be
+    // finite and positive; otherwise nothing changes and this returns false.
+    bool setGeometry(double wheelBaseMm, double wheelDiameterMm);
+    double wheelBaseMm() const { return m_odometry.wheelBaseMm(); }
+    double wheelDiameterMm() const { return m_wheelDiameterMm; }
+
+    const oi::Pose &pose() const { return m_odometry.pose(); }
+    // Positions in mm, oldest first, at most kMaxTrailPoints; starts with the start pose.
+    const QList<QPointF> &trail() const { return m_trail; }
+    // Bumped by every change, so a view can skip a repaint when nothing moved.
+    quint64 revision() const { return m_revision; }
+
+private:
+    void appendTrailPoint();
+
+    oi::Odometry m_odometry;
+    double m_wheelDiameterMm = oi::kWheelDiameterMm;
+    QList<QPointF> m_trail;
+    quint64 m_revision = 0;
+};

@@ -1,0 +1,73 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "saved_robots.h"
+
+#include <QSettings>
+
+namespace {
+constexpr auto kArray = "robots";
+
+std::optional<oi::ProfileId> profileFrom(const QVariant &value, bool *ok)
+{
+    const int id = value.isValid() ? value.toInt() : -1;
+    *ok = id >= -1 && id <= int(oi::ProfileId::Create1);
+    if (id < 0 || !*ok)
+        return std::nullopt;
+    return oi::ProfileId(id);
+}
+} // namespace
+
+QList<SavedRobot> loadSavedRobots(QSettings &settings)
+{
+    QList<SavedRobot> robots;
+    const int count = settings.beginReadArray(kArray);
+    for (int i = 0; i < count; ++i) {
+        settings.setArrayIndex(i);
+        SavedRobot r;
+        r.name = settings.value("name").toString();
+        r.colour = QColor(settings.value("colour").toString());
+        r.connected = settings.value("connected", true).toBool();
+        const int transport = settings.value("transport", -1).toInt();
+        if (transport < int(oilink::TransportKind::Serial) || transport > int(oilink::TransportKind::Replay))
+            continue;
+        r.link.transport = oilink::TransportKind(transport);
+        r.link.portPath = settings.value("port").toString();
+        r.link.host = settings.value("host").toString();
+        r.link.tcpPort = quint16(settings.value("tcpPort", 0).toUInt());
+        r.link.replayPath = settings.value("replay").toString();
+        r.link.baud = settings.value("baud", 0).toInt();
+        bool profileOk = false;
+        r.link.profile = profileFrom(settings.value("profile"), &profileOk);
+        bool virtualOk = false;
+        const auto virtualRobot = profileFrom(settings.value("virtualRobot", int(oi::ProfileId::Create2)), &virtualOk);
+        if (!profileOk || !virtualOk || !virtualRobot || r.link.baud < 0)
+            continue;
+        r.link.virtualRobot = *virtualRobot;
+        r.link.virtualSeed = settings.value("virtualSeed", 1).toUInt();
+        robots << r;
+    }
+    settings.endArray();
+    return robots;
+}
+
+void saveRobots(QSettings &settings, const QList<SavedRobot> &robots)
+{
+    settings.remove(kArray);
+    settings.beginWriteArray(kArray, int(robots.size()));
+    for (int i = 0; i < robots.size(); ++i) {
+        const SavedRobot &r = robots[i];
+        settings.setArrayIndex(i);
+        settings.setValue("name", r.name);
+        settings.setValue("colour", r.colour.isValid() ? r.colour.name() : QString());
+        settings.setValue("connected", r.connected);
+        settings.setValue("transport", int(r.link.transport));
+        settings.setValue("port", r.link.portPath);
+        settings.setValue("host", r.link.host);
+        settings.setValue("tcpPort", r.link.tcpPort);
+        settings.setValue("replay", r.link.replayPath);
+        settings.setValue("baud", r.link.baud);
+        settings.setValue("profile", r.link.profile ? int(*r.link.profile) : -1);
+        settings.setValue("virtualRobot", int(r.link.virtualRobot));
+        settings.setValue("virtualSeed", r.link.virtualSeed);
+    }
+    settings.endArray();
+}

@@ -1,0 +1,24 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "link_settings.h"
+
+#include <QColor>
+#include <QList>
+#include <QString>
+
+class QSettings;
+
+// One robot of the window's list as it is kept between runs.
+struct SavedRobot {
+    QString name;
+    QColor colour;
+    oilink::LinkSettings link;
+    bool connected = true; // connect at start
+    friend bool operator==(const SavedRobot &, const SavedRobot &) = default;
+};
+
+// The "robots" array of the settings. Entries that cannot be read (an
+// unknown transport, a profile out of range) are left out, never guessed.
+QList<SavedRobot> loadSavedRobots(QSettings &settings);
+void saveRobots(QSettings &settings, const QList<SavedRobot> &robots);

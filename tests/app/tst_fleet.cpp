@@ -1,0 +1,257 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Several robots in one window: driving the selected one, Stop all, the
+// robot list, and the list kept between runs.
+#include "command_encoder.h"
+#include "drive_pad.h"
+#include "main_window.h"
+#include "recording_transport.h"
+#include "robot_list.h"
+#include "saved_robots.h"
+#include "transport.h"
+#include "sensor_plots.h"
+
+#include <QDockWidget>
+#include <QLineEdit>
+#include <QMenu>
+#include <QPushButton>
+#include <QSettings>
+#include <QStandardPaths>
+#include <QTest>
+#include <QToolButton>
+
+#include <map>
+
+namespace {
+
+QString toText(const oi::Bytes &b)
+{
+    return byteText(QByteArray(reinterpret_cast<const char *>(b.data()), qsizetype(b.size())));
+}
+
+QStringList texts(const QList<QByteArray> &writes)
+{
+    QStringList out;
+    for (const QByteArray &w : writes)
+        out << byteText(w);
+    return out;
+}
+
+const oi::CommandEncoder &create2()
+{
+    static const oi::CommandEncoder encoder(oi::profile(oi::ProfileId::Create2));
+    return encoder;
+}
+
+// A window whose robots stream in Safe mode on recording transports, one per
+// port path, so each robot's bytes can be read apart.
+struct FleetRig {
+    std::map<QString, Recording> recordings;
+    MainWindow window;
+
+    FleetRig()
+    {
+        for (const char *port : {"/dev/robotA", "/dev/robotB", "/dev/robotC"})
+            recordings[port].mode = int(oi::OiMode::Safe);
+        window.fleet().setTransportFactory([this](const oilink::LinkSettings &s) -> oilink::Transport * {
+            if (const auto r = recordings.find(s.portPath); r != recordings.end())
+                return new RecordingTransport(&r->second);
+            return oilink::createTransport(s, oi::profile(oi::ProfileId::Create2).defaultBaud);
+        });
+        window.resize(1400, 900);
+    }
+    Recording &of(const char *port) { return recordings.at(port); }
+    // Starts with the saved robots A and B.
+    void startWithTwo()
+    {
+        QSettings settings;
+        saveRobots(settings, {SavedRobot{"Ada", {}, oilink::LinkSettings::serial("/dev/robotA", oi::ProfileId::Create2), true},
+                              SavedRobot{"Bea", {}, oilink::LinkSettings::serial("/dev/robotB", oi::ProfileId::Create2), true}});
+        window.show();
+        window.activateWindow();
+        window.start();
+    }
+    bool streaming()
+    {
+        return QTest::qWaitFor([this] {
+            for (RobotSession *r : window.fleet().robots())
+                if (!r->isLive() || r->latest().oiMode() != oi::OiMode::Safe)
+                    return false;
+            return true;
+        }, 10000);
+    }
+    RobotSession *robot(int i) { return window.fleet().robots().value(i); }
+};
+
+} // namespace
+
+class TestFleet : public QObject {
+    Q_OBJECT
+private slots:
+    void init()
+    {
+        QStandardPaths::setTestModeEnabled(true);
+        QSettings().clear();
+    }
+
+    void savedRobotsAreRestoredAndConnected()
+    {
+        FleetRig rig;
+        rig.startWithTwo();
+        QCOMPARE(rig.window.fleet().count(), 2);
+        QCOMPARE(rig.robot(0)->name(), QString("Ada"));
+        QCOMPARE(rig.robot(1)->name(), QString("Bea"));
+        QVERIFY(rig.robot(0)->colour() != rig.robot(1)->colour());
+        QVERIFY(rig.streaming());
+        QCOMPARE(rig.window.fleet().selected(), rig.robot(0));
+        QCOMPARE(rig.window.robotList()->count(), 2);
+        QVERIFY(rig.window.robotList()->card(0)->isChecked());
+        QVERIFY(rig.window.statusText().contains("Ada"));
+    }
+
+    // The keys drive the selected robot only; Stop all (Shift+Esc, or the
+    // button) stops both. Exact bytes on both transports: the other robot
+    // gets nothing but the stop.
+    void drivingTheSelectedRobotLeavesTheOtherStill()
+    {
+        FleetRig rig;
+        rig.startWithTwo();
+        QVERIFY(rig.streaming());
+        QVERIFY(QTest::qWaitForWindowActive(&rig.window));
+        rig.window.refreshDisplay();
+        rig.window.findChild<QDockWidget *>("driveDock")->raise();
+        rig.window.drivePad()->padArea()->setFocus();
+        rig.of("/dev/robotA").take();
+        rig.of("/dev/robotB").take();
+
+        QTest::keyPress(rig.window.drivePad()->padArea(), Qt::Key_Up);
+        QTRY_VERIFY_WITH_TIMEOUT(rig.of("/dev/robotA").count() >= 1, 5000);
+        const int speed = rig.window.drivePad()->speedLimit();
+        QCOMPARE(texts(rig.of("/dev/robotA").take()), QStringList{toText(*create2().drive(speed, oi::kRadiusStraight))});
+
+        QTest::keyClick(rig.window.drivePad()->padArea(), Qt::Key_Escape, Qt::ShiftModifier);
+        const QString stop = toText(create2().stopMotion());
+        QTRY_VERIFY_WITH_TIMEOUT(rig.of("/dev/robotB").count() >= 1, 5000);
+        QTRY_VERIFY_WITH_TIMEOUT(rig.of("/dev/robotA").count() >= 1, 5000);
+        QCOMPARE(texts(rig.of("/dev/robotB").take()), QStringList{stop});
+        QCOMPARE(texts(rig.of("/dev/robotA").take()), QStringList{stop});
+        QTest::keyRelease(rig.window.drivePad()->padArea(), Qt::Key_Up);
+
+        // The button does the same, with nothing moving.
+        QTest::mouseClick(rig.window.stopAllButton(), Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(rig.of("/dev/robotA").count() >= 1 && rig.of("/dev/robotB").count() >= 1, 5000);
+        QCOMPARE(texts(rig.of("/dev/robotA").take()), QStringList{stop});
+        QCOMPARE(texts(rig.of("/dev/robotB").take()), QStringList{stop});
+    }
+
+    void selectingARobotSwitchesEveryDock()
+    {
+        FleetRig rig;
+        rig.startWithTwo();
+        QVERIFY(rig.streaming());
+        QVERIFY(QTest::qWaitForWindowActive(&rig.window));
+        QTest::mouseClick(rig.window.robotList()->card(1), Qt::LeftButton);
+        QCOMPARE(rig.window.fleet().selected(), rig.robot(1));
+        QVERIFY(rig.window.statusText().contains("Bea"));
+        QVERIFY(rig.window.findChild<QDockWidget *>("driveDock")->windowTitle().contains("Bea"));
+        QCOMPARE(rig.window.sensorPlots()->history(), &rig.robot(1)->history());
+
+        rig.window.refreshDisplay();
+        rig.window.findChild<QDockWidget *>("driveDock")->raise();
+        rig.window.drivePad()->padArea()->setFocus();
+        rig.of("/dev/robotA").take();
+        rig.of("/dev/robotB").take();
+        QTest::keyPress(rig.window.drivePad()->padArea(), Qt::Key_Up);
+        QTRY_VERIFY_WITH_TIMEOUT(rig.of("/dev/robotB").count() >= 1, 5000);
+        const int speed = rig.window.drivePad()->speedLimit();
+        QCOMPARE(texts(rig.of("/dev/robotB").take()), QStringList{toText(*create2().drive(speed, oi::kRadiusStraight))});
+
+        // Switching while driving stops the robot left behind; then Stop all
+        // proves nothing else reached the first robot.
+        QTest::mouseClick(rig.window.robotList()->card(0), Qt::LeftButton);
+        QCOMPARE(rig.window.fleet().selected(), rig.robot(0));
+        QTRY_VERIFY_WITH_TIMEOUT(rig.of("/dev/robotB").count() >= 1, 5000);
+        const QString stop = toText(create2().stopMotion());
+        QCOMPARE(texts(rig.of("/dev/robotB").take()), QStringList{stop});
+        rig.window.fleet().stopAll();
+        QTRY_VERIFY_WITH_TIMEOUT(rig.of("/dev/robotA").count() >= 1, 5000);
+        QCOMPARE(texts(rig.of("/dev/robotA").take()), QStringList{stop});
+    }
+
+    void addRenameAndRemoveAreKept()
+    {
+        {
+            FleetRig rig;
+            rig.window.show();
+            rig.window.start(); // first start: one virtual robot
+            QCOMPARE(rig.window.fleet().count(), 1);
+            QCOMPARE(rig.robot(0)->settings().transport, oilink::TransportKind::Virtual);
+            rig.window.robotList()->addMenu()->actions().at(0)->trigger(); // Virtual robot
+            QCOMPARE(rig.window.fleet().count(), 2);
+            QCOMPARE(rig.window.fleet().selected(), rig.robot(1));
+            QTRY_VERIFY_WITH_TIMEOUT(rig.robot(1)->isLive(), 10000);
+
+            rig.window.robotList()->beginRename(1);
+            QLineEdit *editor = rig.window.robotList()->renameEditor();
+            QVERIFY(editor->isVisible());
+            editor->setText("Table 4");
+            QTest::keyClick(editor, Qt::Key_Return);
+            QCOMPARE(rig.robot(1)->name(), QString("Table 4"));
+            QTRY_COMPARE(rig.window.robotList()->card(1)->values().name, QString("Table 4"));
+            rig.window.close();
+        }
+        {
+            FleetRig rig;
+            rig.window.show();
+            rig.window.start();
+            QCOMPARE(rig.window.fleet().count(), 2);
+            QCOMPARE(rig.robot(1)->name(), QString("Table 4"));
+            QCOMPARE(rig.robot(1)->settings().transport, oilink::TransportKind::Virtual);
+            QVERIFY(rig.robot(0)->settings().virtualSeed != rig.robot(1)->settings().virtualSeed);
+            rig.window.close();
+        }
+    }
+
+    void removingARobotLeavesItStoppedInPassive()
+    {
+        FleetRig rig;
+        rig.startWithTwo();
+        QVERIFY(rig.streaming());
+        QTest::mouseClick(rig.window.robotList()->card(1), Qt::LeftButton);
+        rig.of("/dev/robotB").take();
+        QTest::mouseClick(rig.window.robotList()->removeButton(), Qt::LeftButton);
+        QCOMPARE(rig.window.fleet().count(), 1);
+        QCOMPARE(rig.window.fleet().selected(), rig.robot(0));
+        const QStringList writes = texts(rig.of("/dev/robotB").take());
+        QVERIFY(!writes.isEmpty());
+        QCOMPARE(writes.last(), toText(create2().shutdownSequence()));
+        // The last robot stays.
+        QVERIFY(!rig.window.robotList()->removeButton()->isEnabled());
+    }
+
+    // --sim 3: three virtual robots, each its own seed and colour.
+    void threeVirtualRobots()
+    {
+        MainWindow window;
+        window.resize(1600, 1000);
+        window.show();
+        window.start(oilink::LinkSettings::virtualRobotOf(oi::ProfileId::Create2, std::nullopt), 3);
+        QCOMPARE(window.fleet().count(), 3);
+        QTRY_VERIFY_WITH_TIMEOUT(window.fleet().robots()[0]->isLive() && window.fleet().robots()[1]->isLive()
+                                     && window.fleet().robots()[2]->isLive(),
+                                 10000);
+        QSet<QString> names;
+        QSet<std::uint32_t> seeds;
+        for (RobotSession *r : window.fleet().robots()) {
+            names << r->name();
+            seeds << r->settings().virtualSeed;
+        }
+        QCOMPARE(names.size(), 3);
+        QCOMPARE(seeds.size(), 3);
+        // Not kept: the command line chose them for this run.
+        window.close();
+        QCOMPARE(loadSavedRobots(*std::make_unique<QSettings>()).size(), 0);
+    }
+};
+
+QTEST_MAIN(TestFleet)
+#include "tst_fleet.moc"

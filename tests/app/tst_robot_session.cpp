@@ -1,0 +1,213 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// One robot's model: requests through the link's queue, firmware corrections
+// applied to its odometry, and its history on the link's clock.
+#include "command_encoder.h"
+#include "recording_transport.h"
+#include "robot_session.h"
+#include "transport.h"
+
+#include <QSignalSpy>
+#include <QTest>
+
+#include <atomic>
+#include <numbers>
+
+namespace {
+
+QByteArray toBytes(const oi::Bytes &b)
+{
+    return QByteArray(reinterpret_cast<const char *>(b.data()), qsizetype(b.size()));
+}
+
+// A Create 2 that streams distance (19) and angle (20) only when the test says,
+// and prints a firmware banner after Reset (7). Lives on the link's thread.
+class BannerRobot : public oilink::Transport {
+public:
+    explicit BannerRobot(std::string release) : m_release(std::move(release)) {}
+    void open() override
+    {
+        m_open = true;
+        emit opened();
+    }
+    void close() override { m_open = false; }
+    bool isOpen() const override { return m_open; }
+    bool write(const QByteArray &bytes) override
+    {
+        // The banner comes after the Reset has gone out, as from a robot.
+        if (bytes == QByteArray(1, char(7)))
+            QMetaObject::invokeMethod(this, [this] {
+                emit bytesReceived(QByteArray::fromStdString("bl-start\r\n2015-01-01\r\nr3_robot/tags/" + m_release
+                                                             + ":4975 CLEAN\r\nbattery-current-zero 252\r\n"));
+            }, Qt::QueuedConnection);
+        return m_open;
+    }
+    void flush(int) override {}
+    QString describe() const override { return QStringLiteral("/dev/banner-robot"); }
+
+    // [19][6][19 d d][20 a a][checksum]
+    void sendMotion(int distanceMm, int angleRaw)
+    {
+        QByteArray f;
+        f.append(char(19)).append(char(6));
+        f.append(char(19)).append(char((distanceMm >> 8) & 0xFF)).append(char(distanceMm & 0xFF));
+        f.append(char(20)).append(char((angleRaw >> 8) & 0xFF)).append(char(angleRaw & 0xFF));
+        unsigned sum = 0;
+        for (char c : f)
+            sum += static_cast<unsigned char>(c);
+        f.append(char(-sum & 0xFF));
+        emit bytesReceived(f);
+    }
+
+private:
+    std::string m_release;
+    bool m_open = false;
+};
+
+double degrees(double radians)
+{
+    return radians * 180.0 / std::numbers::pi;
+}
+
+} // namespace
+
+class TestRobotSession : public QObject {
+    Q_OBJECT
+
+private slots:
+    // Show Script goes through the link's queue: the link pauses and resumes
+    // its own stream, so it neither marks the data stale nor sends Start (which
+    // would drop the robot out of Safe mode) while it waits for the reply.
+    void showScriptKeepsTheRobotInSafeMode()
+    {
+        RobotSession robot;
+        robot.connectTo(oilink::LinkSettings::virtualRobotOf(oi::ProfileId::Create1, oi::ProfileId::Create1));
+        QTRY_VERIFY_WITH_TIMEOUT(robot.isLive(), 5000);
+        const oi::CommandEncoder encoder(oi::profile(oi::ProfileId::Create1));
+        robot.send(toBytes(*encoder.safe()));
+        QTRY_COMPARE_WITH_TIMEOUT(robot.latest().oiMode(), oi::OiMode::Safe, 5000);
+        const std::vector<std::uint8_t> script{137, 0, 0, 0, 0, 156, 1, 144};
+        QSignalSpy sent(&robot, &RobotSession::bytesSent);
+        robot.send(toBytes(*encoder.script(script)));
+        QVERIFY(sent.wait(5000));
+        sent.clear();
+
+        QSignalSpy states(&robot, &RobotSession::stateChanged);
+        QSignalSpy shown(&robot, &RobotSession::scriptShown);
+        robot.showScript();
+        QVERIFY(shown.wait(5000));
+        QCOMPARE(shown.at(0).at(0).toByteArray(), QByteArray(reinterpret_cast<const char *>(script.data()), qsizetype(script.size())));
+        // The stream comes back, and the robot is still in Safe mode.
+        const quint64 after = robot.snapshotCount();
+        QTRY_VERIFY_WITH_TIMEOUT(robot.snapshotCount() > after + 3, 5000);
+        QCOMPARE(robot.latest().oiMode(), oi::OiMode::Safe);
+        for (const QList<QVariant> &s : states)
+            QVERIFY2(s.at(0).value<oilink::LinkState>() == oilink::LinkState::Streaming, "the link left Streaming");
+        QStringList bytesSent;
+        for (const QList<QVariant> &s : sent)
+            bytesSent << byteText(s.at(0).toByteArray());
+        QCOMPARE(bytesSent, (QStringList{"150 0", "154", "150 1"}));
+    }
+
+    void showScriptOnARobotWithoutScriptsSaysSo()
+    {
+        RobotSession robot;
+        robot.connectTo(oilink::LinkSettings::virtualRobotOf(oi::ProfileId::Create2, oi::ProfileId::Create2));
+        QTRY_VERIFY_WITH_TIMEOUT(robot.isLive(), 5000);
+        QSignalSpy failed(&robot, &RobotSession::scriptFailed);
+        QSignalSpy sent(&robot, &RobotSession::bytesSent);
+        robot.showScript();
+        QVERIFY(failed.wait(5000));
+        QVERIFY2(failed.at(0).at(0).toString().contains("no scripts"), qPrintable(failed.at(0).at(0).toString()));
+        QCOMPARE(sent.count(), 0);
+    }
+
+    void sensorQueryGoesThroughTheLink()
+    {
+        RobotSession robot;
+        robot.connectTo(oilink::LinkSettings::virtualRobotOf(oi::ProfileId::Create2, oi::ProfileId::Create2));
+        QTRY_VERIFY_WITH_TIMEOUT(robot.isLive(), 5000);
+        QSignalSpy replies(&robot, &RobotSession::sensorReply);
+        robot.querySensors({22, 25});
+        QVERIFY(replies.wait(5000));
+        const auto reply = replies.at(0).at(0).value<oi::SensorSnapshot>();
+        QVERIFY(reply.has(22));
+        QVERIFY(reply.has(25));
+        QVERIFY(reply.voltageMv() > 10000);
+    }
+
+    // ERRATA 16: up to 3.4.0 the angle packet counts in units of 0.324°. A
+    // 90° turn reads 29 raw; once the banner names the firmware, it reads 90°.
+    void firmwareCorrectionsChangeTheOdometry()
+    {
+        std::atomic<BannerRobot *> transport{nullptr};
+        RobotSession robot;
+        robot.setTransportFactory([&transport](const oilink::LinkSettings &) {
+            auto *t = new BannerRobot("release-3.4.0");
+            transport = t;
+            return t;
+        });
+        oilink::LinkSettings settings = oilink::LinkSettings::serial("/dev/banner-robot", oi::ProfileId::Create2);
+        settings.streamPackets = {19, 20};
+        robot.connectTo(settings);
+        QTRY_VERIFY_WITH_TIMEOUT(transport.load() && transport.load()->isOpen(), 5000);
+        const auto turn = [&](int rawAngle) {
+            const quint64 before = robot.snapshotCount();
+            QMetaObject::invokeMethod(transport.load(), [t = transport.load(), rawAngle] { t->sendMotion(0, rawAngle); });
+            QTRY_VERIFY_WITH_TIMEOUT(robot.snapshotCount() > before, 5000);
+        };
+        turn(29);
+        QCOMPARE(degrees(robot.odometry().pose().thetaRad), 29.0);
+        QVERIFY(!robot.odometry().corrections().angleDivisor);
+
+        QSignalSpy firmware(&robot, &RobotSession::firmwareChanged);
+        robot.send(QByteArray(1, char(7)));
+        QVERIFY(firmware.wait(5000));
+        QCOMPARE(firmware.at(0).at(0).toString(), QString("release-3.4.0"));
+        QVERIFY(robot.odometry().corrections().angleDivisor);
+        robot.odometry().reset();
+        turn(29);
+        QVERIFY2(std::abs(degrees(robot.odometry().pose().thetaRad) - 29 / 0.324056) < 1e-6,
+                 qPrintable(QString::number(degrees(robot.odometry().pose().thetaRad))));
+    }
+
+    // Frames carry the time the link read them: the history's clock.
+    void historyRunsOnTheLinkClock()
+    {
+        RobotSession robot;
+        robot.connectTo(oilink::LinkSettings::virtualRobotOf(oi::ProfileId::Create2, oi::ProfileId::Create2));
+        QTRY_VERIFY_WITH_TIMEOUT(robot.snapshotCount() >= 10, 5000);
+        const SensorHistory &h = robot.history();
+        QVERIFY(h.sampleCount(7) >= 10);
+        double previous = -1;
+        for (std::size_t i = 0; i < h.sampleCount(7); ++i) {
+            QVERIFY(h.sample(7, i).time >= previous);
+            previous = h.sample(7, i).time;
+        }
+        QVERIFY(previous > 0);
+        QVERIFY(previous < 60);
+    }
+
+    // Closing stops the robot and leaves it in Passive, from the model.
+    void closingStopsAndLeavesPassive()
+    {
+        Recording recording;
+        recording.mode = 2;
+        RobotSession robot;
+        robot.setTransportFactory([&recording](const oilink::LinkSettings &) { return new RecordingTransport(&recording); });
+        robot.connectTo(oilink::LinkSettings::serial("/dev/recording", oi::ProfileId::Create2));
+        QTRY_VERIFY_WITH_TIMEOUT(robot.isLive(), 5000);
+        robot.teleop().requestMotion(MotionCommand{MotionCommand::Kind::Drive, 200, oi::kRadiusStraight});
+        QTRY_VERIFY_WITH_TIMEOUT(robot.teleop().isMoving(), 5000);
+        recording.take();
+        robot.closeAndWait();
+        QStringList writes;
+        for (const QByteArray &w : recording.take())
+            writes << byteText(w);
+        const oi::CommandEncoder encoder(oi::profile(oi::ProfileId::Create2));
+        QVERIFY2(!writes.isEmpty(), "nothing was sent on close");
+        QCOMPARE(writes.last(), byteText(toBytes(encoder.shutdownSequence())));
+    }
+};
+
+QTEST_MAIN(TestRobotSession)
+#include "tst_robot_session.moc"

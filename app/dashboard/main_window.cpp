@@ -220,6 +220,8 @@ void MainWindow::addRobot(int kind)
 
 void MainWindow::onRobotAdded(RobotSession *robot)
 {
+    if (m_historyCapacity)
+        robot->setHistoryCapacity(*m_historyCapacity);
     connect(robot, &RobotSession::identityChanged, this, [this, robot] {
         refreshRobotCards();
         if (robot == m_fleet.selected())
@@ -517,9 +519,11 @@ void MainWindow::showReplay(const oilink::ReplayStatus &status)
 
 void MainWindow::setHistoryCapacity(std::size_t samples)
 {
+    m_historyCapacity = samples;
     for (RobotSession *robot : m_fleet.robots())
         robot->setHistoryCapacity(samples);
-    m_plots->setHistory(&session().history());
+    if (m_fleet.selected())
+        m_plots->setHistory(&session().history());
 }
 
 void MainWindow::resetLayout()

@@ -125,6 +125,7 @@ private:
     LanguageSwitcher m_language; // before the widgets: they are built translated
     RobotFleet m_fleet;
     bool m_keepSavedRobots = false; // the robots came from the command line
+    std::optional<std::size_t> m_historyCapacity; // for new robots too
     QTimer m_displayTimer;
     quint64 m_shownSnapshot = ~0ull;
     oi::SensorSnapshot m_shown; // what the widgets show now

@@ -2,6 +2,7 @@
 // The assembled window: connecting to the virtual robot, mode buttons down
 // to the bytes, settings, and a bad port.
 #include "main_window.h"
+#include "connection_bar.h"
 #include "mode_panel.h"
 #include "real_time_robot.h"
 #include "recording_transport.h"
@@ -216,7 +217,8 @@ private slots:
             ConnectionRequest r;
             r.transport = ConnectionRequest::Transport::Virtual;
             r.profile = oi::ProfileId::Create1;
-            window.connectionBar()->setRequest(r);
+            // The robot is reconnected there, and that is what is kept.
+            emit window.connectionBar()->connectRequested(r);
             window.close();
         }
         MainWindow again;

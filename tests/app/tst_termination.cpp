@@ -34,11 +34,12 @@ struct PtyRobot {
     bool streamRequested() const { return received.contains(char(148)); }
 };
 
-void startChild(QProcess &process, const QString &program, const QStringList &args)
+void startChild(QProcess &process, const QString &program, const QStringList &args,
+                QProcess::ProcessChannelMode channels = QProcess::ForwardedErrorChannel)
 {
     process.setProgram(program);
     process.setArguments(args);
-    process.setProcessChannelMode(QProcess::ForwardedChannels);
+    process.setProcessChannelMode(channels);
     QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
     env.insert("QT_QPA_PLATFORM", "offscreen");
     // Settings of its own, so the test leaves the user's alone.
@@ -74,7 +75,7 @@ private slots:
         if (program == "dashboard")
             startChild(process, ROOMBA_DASHBOARD_PATH, {"--port", robot.server.slavePath(), "--profile", "create2"});
         else
-            startChild(process, ROOMBA_CTL_PATH, {"sensors", robot.server.slavePath(), "--profile", "create2",
+            startChild(process, ROOMBA_CTL_PATH, {"sensors", "--port", robot.server.slavePath(), "--profile", "create2",
                                                   "--count", "1000000"});
         QVERIFY(process.waitForStarted(10000));
         QTRY_VERIFY_WITH_TIMEOUT(robot.streamRequested(), 20000);
@@ -99,7 +100,8 @@ private slots:
         QProcess sim;
         startChild(sim, ROOMBA_SIM_PATH, {});
         QVERIFY(sim.waitForStarted(10000));
-        QTRY_VERIFY_WITH_TIMEOUT(sim.canReadLine() || (sim.waitForReadyRead(100) && sim.canReadLine()), 10000);
+        // Its first line says where the robot is: it is up.
+        QTRY_VERIFY_WITH_TIMEOUT(sim.canReadLine(), 10000);
         ::kill(pid_t(sim.processId()), SIGHUP);
         QVERIFY(sim.waitForFinished(10000));
         QCOMPARE(sim.exitStatus(), QProcess::NormalExit);

@@ -110,7 +110,7 @@ int main(int argc, char **argv)
         }
         dock->close();
     }
-    window.start(MainWindow::linkSettingsFor(ConnectionRequest{}));
+    window.start(oilink::LinkSettings::virtualRobotOf(oi::ProfileId::Create2, std::nullopt));
 
     std::printf("bench_dashboard: platform %s, %d s, %s, virtual Create 2 streaming group 100\n",
                 qPrintable(QApplication::platformName()), seconds,

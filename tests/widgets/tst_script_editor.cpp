@@ -422,8 +422,8 @@ private slots:
         // With a Show Script reply that differs from the upload.
         editor.loadExample(0);
         QTest::mouseClick(editor.button("upload"), Qt::LeftButton);
-        askForScript(editor, spy);
-        editor.appendReceived(bytes({8, 137, 1, 44, 128, 0, 156, 1, 144}));
+        askForScript(editor);
+        editor.showScriptReply(bytes({137, 1, 44, 128, 0, 156, 1, 144}));
         QVERIFY(editor.showScriptText().contains("differs"));
         QVERIFY(editor.errorText().isEmpty());
         editor.resize(editor.size().expandedTo(editor.sizeHint()));

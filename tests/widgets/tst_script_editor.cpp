@@ -14,6 +14,7 @@
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QTimer>
 
 namespace {
 
@@ -177,6 +178,16 @@ private slots:
 
     // Clicks Show Script and waits until 154 goes out, after 150 0 has
     // paused the stream and the line has gone quiet.
+    // The editor's single-shot timer with this interval: the reply timeout
+    // (1000 ms) or the wait for a quiet line (60 ms).
+    static QTimer *timerOf(ScriptEditor &editor, int intervalMs)
+    {
+        for (QTimer *t : editor.findChildren<QTimer *>(Qt::FindDirectChildrenOnly))
+            if (t->interval() == intervalMs && t->isSingleShot())
+                return t;
+        return nullptr;
+    }
+
     static void askForScript(ScriptEditor &editor, QSignalSpy &spy)
     {
         const qsizetype before = spy.count();
@@ -236,7 +247,10 @@ private slots:
         QSignalSpy spy(&editor, &ScriptEditor::sendRequested);
         askForScript(editor, spy);
         editor.appendReceived(bytes({5, 153})); // cut short: 5 announced, 1 came
-        QTest::qWait(600);
+        // Still waiting, on a one-second timeout that has not run out.
+        QTimer *timeout = timerOf(editor, 1000);
+        QVERIFY(timeout);
+        QVERIFY(timeout->isActive());
         QVERIFY(editor.showScriptText().contains("Waiting"));
         QTRY_VERIFY_WITH_TIMEOUT(editor.showScriptText().contains("No reply to Show Script within 1 s"), 2000);
         QCOMPARE(sent(spy), (QStringList{"150 0", "154", "150 1"}));
@@ -254,11 +268,16 @@ private slots:
         QSignalSpy spy(&editor, &ScriptEditor::sendRequested);
         QTest::mouseClick(editor.button("upload"), Qt::LeftButton);
         QTest::mouseClick(editor.button("show"), Qt::LeftButton);
-        // A stream frame sent before the pause took effect keeps the wait going.
+        // A stream frame sent before the pause took effect keeps the wait
+        // going: each one starts the 60 ms wait for a quiet line again.
+        QTimer *quiet = timerOf(editor, 60);
+        QVERIFY(quiet);
         for (int i = 0; i < 5; ++i) {
+            QTRY_VERIFY_WITH_TIMEOUT(quiet->remainingTime() < 45 || sent(spy).last() != "150 0", 140);
+            const int left = quiet->remainingTime();
             editor.appendReceived(bytes({19, 2, 7, 0, 228}));
-            QTest::qWait(20);
             QCOMPARE(sent(spy).last(), QString("150 0"));
+            QVERIFY2(quiet->remainingTime() > left, qPrintable(QString::number(quiet->remainingTime())));
         }
         QTRY_COMPARE(sent(spy).last(), QString("154"));
         editor.appendReceived(bytes({13, 137, 1, 44, 128, 0, 156, 1, 144, 137, 0, 0, 0, 0}));
@@ -457,15 +476,15 @@ private slots:
         QVERIFY(editor.showScriptText().contains("differs"));
         QVERIFY(editor.errorText().isEmpty());
         editor.resize(editor.size().expandedTo(editor.sizeHint()));
-        QTest::qWait(50); // let the layout take the longer text in
-        QVERIFY(editor.grab().save(dir.filePath("script_editor_show.png")));
-        // The whole comparison is visible, not cut to its first line.
+        // The whole comparison is visible, not cut to its first line, once
+        // the layout has taken the longer text in.
         auto *result = editor.findChild<QLabel *>("showScriptResult");
-        QVERIFY(result->height() >= result->heightForWidth(result->width()));
+        QTRY_VERIFY(result->height() >= result->heightForWidth(result->width()));
+        QVERIFY(editor.grab().save(dir.filePath("script_editor_show.png")));
 
         // On the Create 2: everything greyed, the reason on top.
         editor.setProfile(oi::profile(oi::ProfileId::Create2));
-        QTest::qWait(50);
+        QCoreApplication::processEvents(); // the layout requests the change posted
         QVERIFY(editor.grab().save(dir.filePath("script_editor_create2.png")));
         QVERIFY(editor.findChild<QLabel *>("disabledReason")->isVisible());
         editor.setProfile(create1());

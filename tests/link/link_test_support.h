@@ -1,11 +1,14 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Frames for the link tests.
+// Frames and counted transports for the link tests.
 #pragma once
 
+#include "robot_link.h"
 #include "stream_frames.h"
+#include "transport.h"
 
 #include <QByteArray>
 
+#include <atomic>
 #include <cstdint>
 
 // Counts the intact group-100 frames in raw line bytes by trying every
@@ -28,4 +31,17 @@ inline int countIntactGroup100Frames(const QByteArray &raw)
         }
     }
     return count;
+}
+
+// The link's own transports, counted: it makes one at every attempt to
+// connect, so a test sees retries happen without waiting for them. For
+// settings with a profile (the baud is then known).
+inline oilink::RobotLink::TransportFactory countedTransports(std::atomic<int> &made)
+{
+    return [&made](const oilink::LinkSettings &settings) {
+        ++made;
+        const int baud = settings.baud > 0 ? settings.baud
+                                           : oi::profile(settings.profile.value_or(oi::ProfileId::Create2)).defaultBaud;
+        return oilink::createTransport(settings, baud);
+    };
 }

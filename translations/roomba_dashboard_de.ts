@@ -219,6 +219,22 @@
         <source> · paused</source>
         <translation> · angehalten</translation>
     </message>
+    <message>
+        <source>Clock time</source>
+        <translation>Uhrzeit</translation>
+    </message>
+    <message>
+        <source>Since connect</source>
+        <translation>Seit Verbindung</translation>
+    </message>
+    <message>
+        <source>Time format</source>
+        <translation>Zeitformat</translation>
+    </message>
+    <message>
+        <source>Show each entry&apos;s time of day, or the seconds since the link was opened</source>
+        <translation>Zu jedem Eintrag die Uhrzeit zeigen oder die Sekunden seit dem Öffnen der Verbindung</translation>
+    </message>
 </context>
 <context>
     <name>ChannelChooser</name>
@@ -2058,6 +2074,44 @@ GPL-3.0-or-later.</translation>
     <message>
         <source>Infrared Byte</source>
         <translation>Infrarot-Byte</translation>
+    </message>
+</context>
+<context>
+    <name>PacketTable</name>
+    <message>
+        <source>Packets</source>
+        <translation>Pakete</translation>
+    </message>
+    <message>
+        <source>Plot</source>
+        <translation>Plotten</translation>
+    </message>
+    <message>
+        <source>Plot the chosen packet (or double-click its row)</source>
+        <translation>Das gewählte Paket plotten (oder seine Zeile doppelklicken)</translation>
+    </message>
+</context>
+<context>
+    <name>PacketTableModel</name>
+    <message>
+        <source>Id</source>
+        <translation>Nr.</translation>
+    </message>
+    <message>
+        <source>Packet</source>
+        <translation>Paket</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation>Wert</translation>
+    </message>
+    <message>
+        <source>Raw</source>
+        <translation>Roh</translation>
+    </message>
+    <message>
+        <source>Rate</source>
+        <translation>Rate</translation>
     </message>
 </context>
 <context>

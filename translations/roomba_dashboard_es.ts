@@ -219,6 +219,22 @@
         <source> · paused</source>
         <translation> · en pausa</translation>
     </message>
+    <message>
+        <source>Clock time</source>
+        <translation>Hora del reloj</translation>
+    </message>
+    <message>
+        <source>Since connect</source>
+        <translation>Desde la conexión</translation>
+    </message>
+    <message>
+        <source>Time format</source>
+        <translation>Formato de hora</translation>
+    </message>
+    <message>
+        <source>Show each entry&apos;s time of day, or the seconds since the link was opened</source>
+        <translation>Mostrar la hora de cada entrada, o los segundos desde que se abrió el enlace</translation>
+    </message>
 </context>
 <context>
     <name>ChannelChooser</name>
@@ -2058,6 +2074,44 @@ GPL-3.0-or-later.</translation>
     <message>
         <source>Infrared Byte</source>
         <translation>Byte infrarrojo</translation>
+    </message>
+</context>
+<context>
+    <name>PacketTable</name>
+    <message>
+        <source>Packets</source>
+        <translation>Paquetes</translation>
+    </message>
+    <message>
+        <source>Plot</source>
+        <translation>Graficar</translation>
+    </message>
+    <message>
+        <source>Plot the chosen packet (or double-click its row)</source>
+        <translation>Graficar el paquete elegido (o hacer doble clic en su fila)</translation>
+    </message>
+</context>
+<context>
+    <name>PacketTableModel</name>
+    <message>
+        <source>Id</source>
+        <translation>Id</translation>
+    </message>
+    <message>
+        <source>Packet</source>
+        <translation>Paquete</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation>Valor</translation>
+    </message>
+    <message>
+        <source>Raw</source>
+        <translation>Bruto</translation>
+    </message>
+    <message>
+        <source>Rate</source>
+        <translation>Frecuencia</translation>
     </message>
 </context>
 <context>

@@ -1,44 +1,15 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Bytes and frames for the link tests.
+// Frames and counted transports for the link tests.
 #pragma once
+
+#include "robot_link.h"
+#include "stream_frames.h"
+#include "transport.h"
 
 #include <QByteArray>
 
+#include <atomic>
 #include <cstdint>
-#include <initializer_list>
-
-inline QByteArray bytes(std::initializer_list<int> values)
-{
-    QByteArray out;
-    for (int v : values)
-        out.append(static_cast<char>(v));
-    return out;
-}
-
-// A stream frame around `payload` (ids and data): [19][n][payload][checksum],
-// the checksum covering the header (ERRATA 1).
-inline QByteArray streamFrame(const QByteArray &payload)
-{
-    QByteArray frame;
-    frame.append(char(19));
-    frame.append(static_cast<char>(payload.size()));
-    frame += payload;
-    unsigned sum = 0;
-    for (char c : frame)
-        sum += static_cast<std::uint8_t>(c);
-    frame.append(static_cast<char>(-sum & 0xFF));
-    return frame;
-}
-
-// A group-100 frame (packets 7..58, 80 data bytes) as a Create 2 streams it,
-// every value 0 but the first byte, packet 7 (bumps and wheel drops).
-inline QByteArray group100Frame(std::uint8_t bumps = 0)
-{
-    QByteArray payload(81, '\0');
-    payload[0] = static_cast<char>(100);
-    payload[1] = static_cast<char>(bumps);
-    return streamFrame(payload);
-}
 
 // Counts the intact group-100 frames in raw line bytes by trying every
 // offset: a header, n = 81, id 100 and a zero sum. Independent of the
@@ -60,4 +31,17 @@ inline int countIntactGroup100Frames(const QByteArray &raw)
         }
     }
     return count;
+}
+
+// The link's own transports, counted: it makes one at every attempt to
+// connect, so a test sees retries happen without waiting for them. For
+// settings with a profile (the baud is then known).
+inline oilink::RobotLink::TransportFactory countedTransports(std::atomic<int> &made)
+{
+    return [&made](const oilink::LinkSettings &settings) {
+        ++made;
+        const int baud = settings.baud > 0 ? settings.baud
+                                           : oi::profile(settings.profile.value_or(oi::ProfileId::Create2)).defaultBaud;
+        return oilink::createTransport(settings, baud);
+    };
 }

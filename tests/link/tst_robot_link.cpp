@@ -2,6 +2,7 @@
 // RobotLink against a recording transport: the exact bytes it sends, what it
 // makes of the bytes it gets, and how it behaves when the port fails.
 #include "link_test_support.h"
+#include "recording_transport.h"
 
 #include "command_encoder.h"
 #include "robot_link.h"
@@ -13,54 +14,13 @@
 #include <QTcpServer>
 #include <QTcpSocket>
 #include <QTest>
+#include <QTimer>
 
 using oilink::LinkSettings;
 using oilink::LinkState;
 using oilink::RobotLink;
 
 namespace {
-
-// Records every byte the link writes; the test plays the robot by injecting
-// bytes, and pulls the cable with vanish().
-class RecordingTransport : public oilink::Transport {
-    Q_OBJECT
-public:
-    QByteArray written;
-    QString openFailure; // non-empty: open() fails with this message
-    int flushes = 0;
-
-    void open() override
-    {
-        if (!openFailure.isEmpty()) {
-            emit errorOccurred(openFailure);
-            return;
-        }
-        m_open = true;
-        emit opened();
-    }
-    void close() override { m_open = false; }
-    bool isOpen() const override { return m_open; }
-    bool write(const QByteArray &data) override
-    {
-        if (!m_open)
-            return false;
-        written += data;
-        return true;
-    }
-    void flush(int) override { ++flushes; }
-    QString describe() const override { return QStringLiteral("/dev/fake"); }
-
-    void inject(const QByteArray &data) { emit bytesReceived(data); }
-    void vanish()
-    {
-        m_open = false;
-        emit errorOccurred(QStringLiteral("/dev/fake: the port went away"));
-        emit closed();
-    }
-
-private:
-    bool m_open = false;
-};
 
 QList<int> stateList(const QSignalSpy &spy)
 {
@@ -99,7 +59,7 @@ class TestRobotLink : public QObject {
 
     RecordingTransport *current() const { return m_transports.isEmpty() ? nullptr : m_transports.last().data(); }
 
-    LinkSettings create2() const { return LinkSettings::serial(QStringLiteral("/dev/fake"), oi::ProfileId::Create2); }
+    LinkSettings create2() const { return LinkSettings::serial(QStringLiteral("/dev/recording"), oi::ProfileId::Create2); }
 
 private slots:
     void init()
@@ -108,9 +68,9 @@ private slots:
         m_failures.clear();
         m_link = new RobotLink;
         m_link->setTransportFactory([this](const LinkSettings &) {
-            auto *t = new RecordingTransport;
+            auto *t = new RecordingTransport(RecordingTransport::Robot::Silent);
             if (!m_failures.isEmpty())
-                t->openFailure = m_failures.takeFirst();
+                t->failOpenWith(m_failures.takeFirst());
             m_transports.append(t);
             return t;
         });
@@ -180,7 +140,7 @@ private slots:
         QTest::newRow("create2 at 38400") << s << bytes({128, 148, 1, 6});
         s.baud = 19200;
         QTest::newRow("create2 at 19200") << s << bytes({128, 148, 6, 1, 19, 20, 21, 22, 35});
-        s = LinkSettings::serial(QStringLiteral("/dev/fake"), oi::ProfileId::Create1);
+        s = LinkSettings::serial(QStringLiteral("/dev/recording"), oi::ProfileId::Create1);
         QTest::newRow("create1") << s << bytes({128, 148, 1, 6});
         s = create2();
         s.streamPackets = {7, 35};
@@ -193,7 +153,7 @@ private slots:
         QSignalSpy started(m_link, &RobotLink::streamStarted);
         m_link->open(settings);
         QVERIFY(current());
-        QCOMPARE(current()->written, expected);
+        QCOMPARE(current()->written(), expected);
         QCOMPARE(m_link->state(), LinkState::Connecting);
         QCOMPARE(started.size(), 1);
     }
@@ -209,20 +169,20 @@ private slots:
     {
         QFETCH(oi::ProfileId, profile);
         QSignalSpy stateSpy(m_link, &RobotLink::stateChanged);
-        m_link->open(LinkSettings::serial(QStringLiteral("/dev/fake"), profile));
+        m_link->open(LinkSettings::serial(QStringLiteral("/dev/recording"), profile));
         QPointer<RecordingTransport> t = current();
-        t->written.clear();
+        t->clearWritten();
         m_link->close();
         QVERIFY(t);
-        QCOMPARE(t->written, kShutdown);
+        QCOMPARE(t->written(), kShutdown);
         const oi::Bytes expected = oi::CommandEncoder(oi::profile(profile)).shutdownSequence();
-        QCOMPARE(t->written, QByteArray(reinterpret_cast<const char *>(expected.data()), qsizetype(expected.size())));
-        QCOMPARE(t->flushes, 1);
+        QCOMPARE(t->written(), QByteArray(reinterpret_cast<const char *>(expected.data()), qsizetype(expected.size())));
+        QCOMPARE(t->flushes(), 1);
         QVERIFY(!t->isOpen());
         QCOMPARE(m_link->state(), LinkState::Closed);
         QCOMPARE(stateList(stateSpy), states({LinkState::Connecting, LinkState::Closed}));
         m_link->close(); // a second close sends nothing
-        QVERIFY(!t || t->written == kShutdown);
+        QVERIFY(!t || t->written() == kShutdown);
     }
 
     void oversizeStreamIsRefused()
@@ -235,7 +195,7 @@ private slots:
         const QString message = errors.at(0).at(0).toString();
         QVERIFY2(message.contains(QStringLiteral("does not fit in 15 ms")), qPrintable(message));
         QCOMPARE(m_link->state(), LinkState::Closed);
-        QVERIFY(m_transports.first().isNull() || m_transports.first()->written.isEmpty());
+        QVERIFY(m_transports.first().isNull() || m_transports.first()->written().isEmpty());
     }
 
     void framesBecomeSnapshotsAndStatistics()
@@ -290,10 +250,10 @@ private slots:
         m_link->open(create2());
         const QByteArray startAndStream = bytes({128, 148, 1, 100});
         // Re-armed after 1 s, then 2 s: three copies in all.
-        QTRY_COMPARE_WITH_TIMEOUT(current()->written.count(startAndStream), 3, 10000);
+        QTRY_COMPARE_WITH_TIMEOUT(current()->written().count(startAndStream), 3, 10000);
         QCOMPARE(errors.size(), 1);
         QCOMPARE(errors.at(0).at(0).toString(),
-                 QStringLiteral("/dev/fake: no data: is the robot on, and is the baud right?"));
+                 QStringLiteral("/dev/recording: no data: is the robot on, and is the baud right?"));
         QCOMPARE(m_link->state(), LinkState::Connecting);
         current()->inject(group100Frame());
         QCOMPARE(m_link->state(), LinkState::Streaming);
@@ -309,7 +269,7 @@ private slots:
         current()->vanish();
         QCOMPARE(m_link->state(), LinkState::Reconnecting);
         QTRY_COMPARE_WITH_TIMEOUT(m_transports.size(), 2, 5000);
-        QCOMPARE(current()->written, bytes({128, 148, 1, 100}));
+        QCOMPARE(current()->written(), bytes({128, 148, 1, 100}));
         current()->inject(group100Frame());
         QCOMPARE(m_link->state(), LinkState::Streaming);
         QCOMPARE(stateList(stateSpy), states({LinkState::Connecting, LinkState::Streaming, LinkState::Lost,
@@ -323,28 +283,34 @@ private slots:
 
     void openFailuresAreReportedOnceWhileRetrying()
     {
-        m_failures = QStringList(5, QStringLiteral("/dev/fake: no such port"));
+        m_failures = QStringList(5, QStringLiteral("/dev/recording: no such port"));
         QSignalSpy errors(m_link, &RobotLink::errorOccurred);
         m_link->open(create2());
         QCOMPARE(m_link->state(), LinkState::Reconnecting);
         // Backoff 100, 200, 400, 800, 1600 ms, then the sixth try opens.
         QTRY_COMPARE_WITH_TIMEOUT(m_transports.size(), 6, 10000);
-        QTRY_COMPARE_WITH_TIMEOUT(current()->written, bytes({128, 148, 1, 100}), 5000);
+        QTRY_COMPARE_WITH_TIMEOUT(current()->written(), bytes({128, 148, 1, 100}), 5000);
         QCOMPARE(errors.size(), 1);
-        QCOMPARE(errors.at(0).at(0).toString(), QStringLiteral("/dev/fake: no such port"));
+        QCOMPARE(errors.at(0).at(0).toString(), QStringLiteral("/dev/recording: no such port"));
         current()->inject(group100Frame());
         QCOMPARE(m_link->state(), LinkState::Streaming);
     }
 
     void closeWhileReconnectingStops()
     {
-        m_failures = QStringList(50, QStringLiteral("/dev/fake: no such port"));
+        m_failures = QStringList(50, QStringLiteral("/dev/recording: no such port"));
         m_link->open(create2());
         QTRY_VERIFY_WITH_TIMEOUT(m_transports.size() >= 2, 5000);
         m_link->close();
         QCOMPARE(m_link->state(), LinkState::Closed);
         const qsizetype tries = m_transports.size();
-        QTest::qWait(500);
+        // Nothing is left to try again: every timer of the link has stopped,
+        // the reconnect timer among them.
+        const QList<QTimer *> timers = m_link->findChildren<QTimer *>(Qt::FindDirectChildrenOnly);
+        QVERIFY(!timers.isEmpty());
+        for (const QTimer *timer : timers)
+            QVERIFY2(!timer->isActive(), qPrintable(QString::number(timer->interval())));
+        QCoreApplication::processEvents();
         QCOMPARE(m_transports.size(), tries);
     }
 
@@ -355,20 +321,20 @@ private slots:
         m_link->open(create2());
         RecordingTransport *t = current();
         t->inject(group100Frame());
-        t->written.clear();
+        t->clearWritten();
         m_link->querySensors({7});
-        QCOMPARE(t->written, bytes({150, 0}));
+        QCOMPARE(t->written(), bytes({150, 0}));
         t->inject(group100Frame()); // a frame still on its way when the pause went out
-        QTRY_COMPARE_WITH_TIMEOUT(t->written, bytes({150, 0, 142, 7}), 5000);
+        QTRY_COMPARE_WITH_TIMEOUT(t->written(), bytes({150, 0, 142, 7}), 5000);
         t->inject(bytes({0x02}));
         QCOMPARE(replies.size(), 1);
         QVERIFY(replies.at(0).at(0).value<oi::SensorSnapshot>().bumpLeft());
-        QCOMPARE(t->written, bytes({150, 0, 142, 7, 150, 1}));
+        QCOMPARE(t->written(), bytes({150, 0, 142, 7, 150, 1}));
         QCOMPARE(snapshots.size(), 2);
 
-        t->written.clear();
+        t->clearWritten();
         m_link->querySensors({7, 22});
-        QTRY_COMPARE_WITH_TIMEOUT(t->written, bytes({150, 0, 149, 2, 7, 22}), 5000);
+        QTRY_COMPARE_WITH_TIMEOUT(t->written(), bytes({150, 0, 149, 2, 7, 22}), 5000);
         t->inject(bytes({0x01, 0x3E}));
         t->inject(bytes({0x80}));
         QCOMPARE(replies.size(), 2);
@@ -383,11 +349,11 @@ private slots:
         QSignalSpy errors(m_link, &RobotLink::errorOccurred);
         m_link->open(create2());
         current()->inject(group100Frame());
-        current()->written.clear();
+        current()->clearWritten();
         m_link->querySensors({35});
         QTRY_COMPARE_WITH_TIMEOUT(errors.size(), 1, 5000);
-        QCOMPARE(errors.at(0).at(0).toString(), QStringLiteral("/dev/fake: no reply to the sensor query"));
-        QCOMPARE(current()->written, bytes({150, 0, 142, 35, 150, 1}));
+        QCOMPARE(errors.at(0).at(0).toString(), QStringLiteral("/dev/recording: no reply to the sensor query"));
+        QCOMPARE(current()->written(), bytes({150, 0, 142, 35, 150, 1}));
         current()->inject(group100Frame());
         QCOMPARE(m_link->state(), LinkState::Streaming);
     }
@@ -398,12 +364,12 @@ private slots:
         m_link->querySensors({7});
         QCOMPARE(errors.size(), 1);
         QVERIFY(errors.at(0).at(0).toString().startsWith(QStringLiteral("not connected")));
-        m_link->open(LinkSettings::serial(QStringLiteral("/dev/fake"), oi::ProfileId::Create1));
-        current()->written.clear();
+        m_link->open(LinkSettings::serial(QStringLiteral("/dev/recording"), oi::ProfileId::Create1));
+        current()->clearWritten();
         m_link->querySensors({43});
         QCOMPARE(errors.size(), 2);
         QVERIFY(errors.at(1).at(0).toString().contains(QStringLiteral("43 is not a packet or group of the Create")));
-        QVERIFY(current()->written.isEmpty());
+        QVERIFY(current()->written().isEmpty());
     }
 
     void sendWritesEncodedCommands()
@@ -414,11 +380,11 @@ private slots:
         QCOMPARE(errors.size(), 1);
         QVERIFY(errors.at(0).at(0).toString().startsWith(QStringLiteral("not connected")));
         m_link->open(create2());
-        current()->written.clear();
+        current()->clearWritten();
         const oi::Bytes drive = *oi::CommandEncoder(oi::profile(oi::ProfileId::Create2)).drive(-200, 500);
         const QByteArray driveBytes(reinterpret_cast<const char *>(drive.data()), qsizetype(drive.size()));
         m_link->send(driveBytes);
-        QCOMPARE(current()->written, bytes({137, 255, 56, 1, 244}));
+        QCOMPARE(current()->written(), bytes({137, 255, 56, 1, 244}));
         QCOMPARE(sent.last().at(0).toByteArray(), driveBytes);
     }
 
@@ -430,12 +396,12 @@ private slots:
         connect(m_link, &RobotLink::snapshot, m_link, &RobotLink::close);
         m_link->open(create2());
         QPointer<RecordingTransport> t = current();
-        t->written.clear();
+        t->clearWritten();
         t->inject(group100Frame() + group100Frame() + group100Frame());
         QCOMPARE(snapshots.size(), 1);
         QCOMPARE(m_link->state(), LinkState::Closed);
         QVERIFY(t);
-        QCOMPARE(t->written, kShutdown);
+        QCOMPARE(t->written(), kShutdown);
         // The statistics given out on closing count the one frame taken.
         QVERIFY(!stats.isEmpty());
         QCOMPARE(stats.last().at(0).value<oilink::LinkStats>().frames, quint64(1));

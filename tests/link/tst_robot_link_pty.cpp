@@ -14,6 +14,8 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include <atomic>
+#include <cerrno>
 #include <csignal>
 #include <fcntl.h>
 #include <poll.h>
@@ -62,6 +64,26 @@ public:
             if (n > 0)
                 out.append(buf, n);
         }
+        return out;
+    }
+    // Everything still on the line once the other side has hung up; a
+    // closed port can send nothing more.
+    QByteArray readToHangup(int timeoutMs = kTimeoutMs)
+    {
+        QByteArray out;
+        const QDeadlineTimer deadline(timeoutMs);
+        while (!deadline.hasExpired()) {
+            pollfd p{m_master, POLLIN, 0};
+            if (::poll(&p, 1, 50) <= 0)
+                continue;
+            char buf[256];
+            const ssize_t n = ::read(m_master, buf, sizeof buf);
+            if (n > 0)
+                out.append(buf, n);
+            else if (n < 0 && errno == EIO)
+                return out; // no slave open: hung up, and nothing left
+        }
+        out.append("(no hangup)");
         return out;
     }
     void write(const QByteArray &data) { [[maybe_unused]] const ssize_t n = ::write(m_master, data.constData(), size_t(data.size())); }
@@ -231,7 +253,9 @@ private slots:
         const QString path = dir.filePath(QStringLiteral("roomba"));
         SimProcess first;
         QVERIFY(first.start({QStringLiteral("--link"), path}));
+        std::atomic<int> attempts{0};
         RobotLinkThread link;
+        link.setTransportFactory(countedTransports(attempts));
         Recorder r(link);
         link.open(create2At(path));
         QTRY_COMPARE_WITH_TIMEOUT(link.state(), LinkState::Streaming, kTimeoutMs);
@@ -243,7 +267,8 @@ private slots:
         QTRY_COMPARE_WITH_TIMEOUT(link.state(), LinkState::Reconnecting, kTimeoutMs);
         QVERIFY(r.sawState(LinkState::Lost));
         // Several attempts fail while nothing is there.
-        QTest::qWait(1000);
+        const int lost = attempts;
+        QTRY_VERIFY_WITH_TIMEOUT(attempts >= lost + 3, kTimeoutMs);
         QCOMPARE(link.state(), LinkState::Reconnecting);
 
         SimProcess second;
@@ -274,7 +299,7 @@ private slots:
         QTRY_COMPARE_WITH_TIMEOUT(r.snapshots.size(), 2, kTimeoutMs);
         link.closeAndWait();
         QCOMPARE(pty.read(10), bytes({150, 0, 137, 0, 0, 0, 0, 138, 0, 128}));
-        QCOMPARE(pty.read(1, 200), QByteArray()); // and nothing after
+        QCOMPARE(pty.readToHangup(), QByteArray()); // and nothing after, up to the close of the port
     }
 
     void streamsOverTcpAndReconnects()
@@ -283,14 +308,18 @@ private slots:
         QVERIFY(first.start({QStringLiteral("--tcp"), QStringLiteral("0")}));
         QVERIFY(first.where().startsWith(QStringLiteral("tcp://")));
         const quint16 port = first.tcpPort();
+        std::atomic<int> attempts{0};
         RobotLinkThread link;
+        link.setTransportFactory(countedTransports(attempts));
         Recorder r(link);
         link.open(LinkSettings::tcp(QStringLiteral("127.0.0.1"), port, oi::ProfileId::Create2));
         QTRY_VERIFY_WITH_TIMEOUT(r.snapshots.size() >= 10, kTimeoutMs);
 
         first.kill();
         QTRY_COMPARE_WITH_TIMEOUT(link.state(), LinkState::Reconnecting, kTimeoutMs);
-        QTest::qWait(700);
+        // A few attempts are refused before the robot is back.
+        const int lost = attempts;
+        QTRY_VERIFY_WITH_TIMEOUT(attempts >= lost + 2, kTimeoutMs);
         SimProcess second;
         QVERIFY(second.start({QStringLiteral("--tcp"), QString::number(port)}));
         const qsizetype before = r.snapshots.size();
@@ -304,12 +333,17 @@ private slots:
 
     void missingPortIsOneMessage()
     {
+        std::atomic<int> attempts{0};
         RobotLinkThread link;
+        link.setTransportFactory(countedTransports(attempts));
         Recorder r(link);
         link.open(create2At(QStringLiteral("/dev/roomba-dashboard-no-such-port")));
         QTRY_COMPARE_WITH_TIMEOUT(r.errors.size(), 1, kTimeoutMs);
         QCOMPARE(r.errors.at(0).at(0).toString(), QStringLiteral("/dev/roomba-dashboard-no-such-port: no such port"));
-        QTest::qWait(1000); // several more attempts
+        // Several more attempts; each one's error was sent before the next
+        // attempt began, so it has reached this thread once events are taken.
+        QTRY_VERIFY_WITH_TIMEOUT(attempts >= 5, kTimeoutMs);
+        QCoreApplication::processEvents();
         QCOMPARE(r.errors.size(), 1);
         QCOMPARE(link.state(), LinkState::Reconnecting);
     }

@@ -3,6 +3,7 @@
 // roomba-sim pseudo-terminal: streaming, commands, and recovery when ser2net
 // restarts. The test functions run in order and share one robot, one bridge
 // and one link.
+#include "link_test_support.h"
 #include "sim_process.h"
 
 #include "command_encoder.h"
@@ -18,6 +19,7 @@
 #include <QTest>
 
 #include <array>
+#include <atomic>
 #include <memory>
 
 using oilink::LinkSettings;
@@ -182,6 +184,7 @@ private:
     SimProcess m_sim;
     Ser2netProcess m_ser2net;
     quint16 m_port = 0;
+    std::atomic<int> m_attempts{0}; // transports the link made: one per attempt to connect
     std::unique_ptr<RobotLinkThread> m_link;
 
     QList<LinkState> m_states;
@@ -216,6 +219,8 @@ void TestSer2net::initTestCase()
                                                .arg(m_ser2net.log())));
 
     m_link = std::make_unique<RobotLinkThread>();
+    m_attempts = 0;
+    m_link->setTransportFactory(countedTransports(m_attempts));
     connect(m_link.get(), &RobotLinkThread::stateChanged, this, [this](LinkState s) { m_states.append(s); });
     connect(m_link.get(), &RobotLinkThread::errorOccurred, this, [this](const QString &e) { m_errors.append(e); });
     connect(m_link.get(), &RobotLinkThread::streamStarted, this,
@@ -267,8 +272,11 @@ void TestSer2net::recoversWhenSer2netRestarts()
     QTRY_COMPARE_WITH_TIMEOUT(m_link->state(), LinkState::Reconnecting, kTimeoutMs);
     QVERIFY(sawState(LinkState::Lost));
     QVERIFY2(m_errors.contains(bridgeMessage(QStringLiteral("the bridge closed the connection"))), qPrintable(errors()));
-    // Several attempts are refused while nothing listens.
-    QTest::qWait(1500);
+    // Several attempts are refused while nothing listens; each one's error
+    // was sent before the next attempt began.
+    const int lost = m_attempts;
+    QTRY_VERIFY_WITH_TIMEOUT(m_attempts >= lost + 4, kTimeoutMs);
+    QCoreApplication::processEvents();
     QCOMPARE(m_link->state(), LinkState::Reconnecting);
     QVERIFY2(m_errors.contains(bridgeMessage(QStringLiteral("connection refused"))), qPrintable(errors()));
 

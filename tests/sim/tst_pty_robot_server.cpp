@@ -18,21 +18,25 @@ using namespace oi;
 
 namespace {
 
-// Reads what the robot sends until `done` holds or five seconds pass.
-bool readUntil(int fd, StreamParser &parser, const std::function<bool()> &done)
+// Reads what the robot sends until `done` holds or five seconds pass; the
+// robot runs on this thread's event loop meanwhile. Keeps the raw bytes in
+// `raw` when given.
+bool readUntil(int fd, StreamParser &parser, const std::function<bool()> &done, QByteArray *raw = nullptr)
 {
-    std::uint8_t buffer[1024];
-    for (int i = 0; i < 500 && !done(); ++i) {
-        for (;;) {
-            const ssize_t n = ::read(fd, buffer, sizeof buffer);
-            if (n <= 0)
-                break;
-            parser.feed(std::span(buffer, std::size_t(n)));
-        }
-        if (!done())
-            QTest::qWait(10);
-    }
-    return done();
+    return QTest::qWaitFor(
+        [&] {
+            std::uint8_t buffer[1024];
+            for (;;) {
+                const ssize_t n = ::read(fd, buffer, sizeof buffer);
+                if (n <= 0)
+                    break;
+                parser.feed(std::span(buffer, std::size_t(n)));
+                if (raw)
+                    raw->append(reinterpret_cast<const char *>(buffer), n);
+            }
+            return done();
+        },
+        5000);
 }
 
 bool writeAll(int fd, const Bytes &bytes)
@@ -81,17 +85,28 @@ void TestPtyRobotServer::streamsToAClientThatComesBack()
         QVERIFY(server.clientConnected());
 
         // And a query is answered. Replies are not framed (ERRATA 3), so the
-        // stream pauses first and what is still on the line is let go.
-        QVERIFY(writeAll(fd, encoder.pauseResumeStream(0).value()));
-        QTest::qWait(100);
-        std::uint8_t junk[4096];
-        while (::read(fd, junk, sizeof junk) > 0) {
-        }
-        parser.reset();
+        // query goes with a pause of the stream: the robot answers after it
+        // stopped streaming, and its two bytes, which are no frame, follow
+        // the last whole frame on the line.
         const std::uint8_t id = 26;
-        parser.expectReply(std::span(&id, 1));
-        QVERIFY(writeAll(fd, encoder.sensors(id).value()));
-        QVERIFY(readUntil(fd, parser, [&] { return !replies.empty(); }));
+        Bytes pauseAndAsk = encoder.pauseResumeStream(0).value();
+        const Bytes ask = encoder.sensors(id).value();
+        pauseAndAsk.insert(pauseAndAsk.end(), ask.begin(), ask.end());
+        const std::uint64_t discarded = parser.counters().bytesDiscarded;
+        QByteArray raw;
+        QVERIFY(writeAll(fd, pauseAndAsk));
+        QVERIFY(readUntil(fd, parser, [&] { return parser.counters().bytesDiscarded >= discarded + 2; }, &raw));
+        QCOMPARE(parser.counters().bytesDiscarded, discarded + 2);
+        QCOMPARE(parser.pendingBytes(), std::size_t(0)); // no frame after the reply
+        StreamParser replyParser(profile);
+        replyParser.setSnapshotHandler([&](const SensorSnapshot &s, FrameKind kind) {
+            if (kind == FrameKind::Reply)
+                replies.push_back(s);
+        });
+        replyParser.expectReply(std::span(&id, 1));
+        const QByteArray reply = raw.right(2);
+        replyParser.feed(std::span(reinterpret_cast<const std::uint8_t *>(reply.constData()), std::size_t(reply.size())));
+        QCOMPARE(replies.size(), std::size_t(1));
         QCOMPARE(replies.back().batteryCapacityMah(), 3000);
         QVERIFY(writeAll(fd, encoder.pauseResumeStream(1).value()));
 

@@ -5,6 +5,7 @@
 #include "command_encoder.h"
 #include "stream_parser.h"
 
+#include <QDeadlineTimer>
 #include <QFileInfo>
 #include <QProcess>
 #include <QTcpSocket>
@@ -15,6 +16,7 @@
 #include <csignal>
 #include <cstring>
 #include <fcntl.h>
+#include <poll.h>
 #include <unistd.h>
 
 using namespace oi;
@@ -83,13 +85,16 @@ void TestRoombaSim::servesAPseudoTerminal()
     parser.setSnapshotHandler([&](const SensorSnapshot &s, FrameKind) { frames.push_back(s); });
     const QByteArray request = bytes(encoder.start()) + bytes(encoder.stream(std::vector<int>{35, 43, 44}));
     QCOMPARE(::write(fd, request.constData(), std::size_t(request.size())), ssize_t(request.size()));
+    // Blocks until the robot, another process, writes; five seconds at most.
     std::uint8_t buffer[1024];
-    for (int i = 0; i < 500 && frames.size() < 10; ++i) {
+    const QDeadlineTimer deadline(5000);
+    while (frames.size() < 10 && !deadline.hasExpired()) {
+        pollfd ready{fd, POLLIN, 0};
+        if (::poll(&ready, 1, int(deadline.remainingTime())) <= 0)
+            continue;
         const ssize_t n = ::read(fd, buffer, sizeof buffer);
         if (n > 0)
             parser.feed(std::span(buffer, std::size_t(n)));
-        else
-            QTest::qWait(10);
     }
     QVERIFY(frames.size() >= 10);
     QCOMPARE(frames.back().oiMode(), OiMode::Passive);

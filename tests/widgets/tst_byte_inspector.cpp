@@ -7,6 +7,8 @@
 
 #include <QApplication>
 #include <QCheckBox>
+#include <QComboBox>
+#include <QDateTime>
 #include <QDir>
 #include <QLabel>
 #include <QLineEdit>
@@ -14,9 +16,11 @@
 #include <QPushButton>
 #include <QScrollBar>
 #include <QSignalSpy>
+#include <QTableView>
 #include <QTextBlock>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QTimer>
 #include <QToolButton>
 
 #include <cmath>
@@ -87,6 +91,7 @@ private slots:
         QFETCH(QString, bytes);
         QFETCH(QString, meaning);
         ByteInspector inspector;
+        inspector.setConnectedAt(0);
         inspector.appendTx(bytesFromText(bytes), 12345);
         QCOMPARE(inspector.entryCount(), 1);
         QCOMPARE(inspector.lastEntries(1).front(),
@@ -117,6 +122,7 @@ private slots:
     void marksStreamFrames()
     {
         ByteInspector inspector;
+        inspector.setConnectedAt(0);
         // The documents' example: cliff front left signal 537, virtual wall 0.
         inspector.appendRx(bytesOf({19, 5, 29, 2, 25, 13, 0, 163}), 2000);
         QCOMPARE(inspector.lastEntries(1).front(),
@@ -203,6 +209,7 @@ private slots:
         inspector.appendTx(bytesOf({128}), 0);
         inspector.appendTx(bytesOf({131}), 1);
         QVERIFY(view->document()->isEmpty()); // nothing drawn yet
+        QVERIFY(inspector.findChild<QTimer *>(QStringLiteral("renderTimer"))->isActive());
         QTRY_COMPARE(view->document()->blockCount(), 2);
     }
 
@@ -210,10 +217,13 @@ private slots:
     {
         ByteInspector inspector;
         auto *view = inspector.findChild<QPlainTextEdit *>(QStringLiteral("byteLog"));
+        auto *render = inspector.findChild<QTimer *>(QStringLiteral("renderTimer"));
+        QVERIFY(render);
         inspector.appendTx(bytesOf({128}), 0);
         inspector.appendTx(bytesOf({131}), 1);
-        QTest::qWait(3 * ByteInspector::kRenderIntervalMs);
-        QVERIFY(view->document()->isEmpty()); // hidden: nothing laid out
+        // Hidden: nothing laid out, and nothing scheduled to be.
+        QVERIFY(!render->isActive());
+        QVERIFY(view->document()->isEmpty());
         QCOMPARE(inspector.entryCount(), 2); // but kept
         inspector.show();
         QCOMPARE(view->document()->blockCount(), 2);
@@ -235,6 +245,180 @@ private slots:
         inspector.setPaused(false);
         QCOMPARE(view->document()->blockCount(), 3);
         QVERIFY(view->document()->lastBlock().text().endsWith(QStringLiteral("132  Full")));
+    }
+
+    void timesReadAsClockTimeOrSinceConnect()
+    {
+        ByteInspector inspector;
+        auto *view = inspector.findChild<QPlainTextEdit *>(QStringLiteral("byteLog"));
+        const qint64 at = QDateTime(QDate(2026, 11, 23), QTime(14, 3, 12, 345)).toMSecsSinceEpoch();
+        // Until the connect time is given, times count from the first entry.
+        inspector.appendTx(bytesOf({128}), at - 500);
+        inspector.appendTx(bytesOf({131}), at);
+        QCOMPARE(inspector.timeFormat(), ByteInspector::TimeFormat::SinceConnect);
+        QCOMPARE(inspector.lastEntries(2),
+                 QStringList({"     0.000  TX  128  Start", "     0.500  TX  131  Safe"}));
+        inspector.setConnectedAt(at - 12'000);
+        QCOMPARE(inspector.lastEntries(1).front(), QStringLiteral("    12.000  TX  131  Safe"));
+        inspector.flushView();
+        QCOMPARE(view->document()->lastBlock().text(), QStringLiteral("    12.000  TX  131  Safe"));
+
+        // The choice in the bar shows the time of day, in the log as well.
+        auto *choice = inspector.findChild<QComboBox *>(QStringLiteral("timeFormat"));
+        QVERIFY(choice);
+        choice->setCurrentIndex(choice->findData(int(ByteInspector::TimeFormat::ClockTime)));
+        QCOMPARE(inspector.timeFormat(), ByteInspector::TimeFormat::ClockTime);
+        QCOMPARE(inspector.lastEntries(2),
+                 QStringList({"14:03:11.845  TX  128  Start", "14:03:12.345  TX  131  Safe"}));
+        QCOMPARE(view->document()->lastBlock().text(), QStringLiteral("14:03:12.345  TX  131  Safe"));
+        inspector.setTimeFormat(ByteInspector::TimeFormat::SinceConnect);
+        QCOMPARE(choice->currentData().toInt(), int(ByteInspector::TimeFormat::SinceConnect));
+        QCOMPARE(view->document()->lastBlock().text(), QStringLiteral("    12.000  TX  131  Safe"));
+    }
+
+    void packetTableShowsEachPacket()
+    {
+        ByteInspector inspector;
+        inspector.show();
+        PacketTable *table = inspector.packetTable();
+        PacketTableModel *model = table->model();
+        const oi::RobotProfile &create2 = oi::profile(oi::ProfileId::Create2);
+        const oi::SensorSnapshot s = sensor_scenes::decoded(create2, sensor_scenes::quietValues(create2));
+        // 68 frames, 15 ms apart: 67 in the first whole second after the first.
+        for (int i = 0; i <= 67; ++i)
+            inspector.addSnapshot(i * 0.015, s);
+        table->refresh();
+        QCOMPARE(model->rowCount(), 58 - 7 + 1); // group 100: packets 7..58
+        QCOMPARE(model->packetIdAt(0), 7);
+        const int voltage = model->rowOfPacket(22);
+        const int current = model->rowOfPacket(23);
+        QVERIFY(voltage >= 0 && current >= 0);
+        const auto cell = [model](int row, int column) { return model->index(row, column).data().toString(); };
+        QCOMPARE(cell(voltage, PacketTableModel::IdColumn), QStringLiteral("22"));
+        QCOMPARE(cell(voltage, PacketTableModel::NameColumn), QStringLiteral("Voltage"));
+        QCOMPARE(cell(voltage, PacketTableModel::ValueColumn), QStringLiteral("15120 mV"));
+        QCOMPARE(cell(voltage, PacketTableModel::RawColumn), QStringLiteral("59 16"));
+        QCOMPARE(cell(current, PacketTableModel::ValueColumn), QStringLiteral("-210 mA"));
+        QCOMPARE(cell(current, PacketTableModel::RawColumn), QStringLiteral("255 46"));
+        QCOMPARE(cell(model->rowOfPacket(35), PacketTableModel::RawColumn), QStringLiteral("2")); // one byte
+        QVERIFY(qAbs(model->rate(22) - 67 / 1.005) < 1e-9);
+        QCOMPARE(cell(voltage, PacketTableModel::RateColumn), QStringLiteral("66.7 Hz"));
+        // The header says what each column is.
+        QCOMPARE(model->headerData(PacketTableModel::RateColumn, Qt::Horizontal).toString(), QStringLiteral("Rate"));
+
+        // The hex choice of the log applies to the raw bytes too.
+        inspector.setShowsHex(true);
+        QCOMPARE(cell(voltage, PacketTableModel::RawColumn), QStringLiteral("3B 10"));
+        QCOMPARE(cell(current, PacketTableModel::RawColumn), QStringLiteral("FF 2E"));
+
+        // A packet that stops coming drops to 0 Hz at the next window.
+        oi::SensorSnapshot onlyMode(create2);
+        onlyMode.set(35, 3);
+        for (int i = 68; i <= 136; ++i)
+            inspector.addSnapshot(i * 0.015, onlyMode);
+        table->refresh();
+        QCOMPARE(model->rate(22), 0.0);
+        QVERIFY(qAbs(model->rate(35) - 67.0 / 1.005) < 1e-9);
+        QCOMPARE(cell(model->rowOfPacket(35), PacketTableModel::ValueColumn), QStringLiteral("3"));
+        QCOMPARE(cell(voltage, PacketTableModel::ValueColumn), QStringLiteral("15120 mV")); // the last one kept
+
+        // Another robot's packets are other packets: the table starts again.
+        inspector.setProfile(oi::profile(oi::ProfileId::Create1));
+        QCOMPARE(model->rowCount(), 0);
+    }
+
+    void packetTableInsertsRowsOnceAndUpdatesCells()
+    {
+        ByteInspector inspector;
+        inspector.show();
+        PacketTable *table = inspector.packetTable();
+        PacketTableModel *model = table->model();
+        const oi::RobotProfile &create2 = oi::profile(oi::ProfileId::Create2);
+        std::map<int, int> values = sensor_scenes::quietValues(create2);
+        QSignalSpy inserted(model, &QAbstractItemModel::rowsInserted);
+        QSignalSpy reset(model, &QAbstractItemModel::modelReset);
+        QSignalSpy layout(model, &QAbstractItemModel::layoutChanged);
+        QSignalSpy changed(model, &QAbstractItemModel::dataChanged);
+
+        // A reply with two packets, then the stream with all of them.
+        oi::SensorSnapshot reply(create2);
+        reply.set(22, 15000);
+        reply.set(25, 2000);
+        inspector.addSnapshot(0, reply);
+        QTRY_COMPARE(model->rowCount(), 2); // at display rate, from the table's own timer
+        QCOMPARE(inserted.size(), 2);
+        for (int i = 1; i <= 300; ++i) {
+            values[22] = 15000 - i;
+            inspector.addSnapshot(i * 0.015, sensor_scenes::decoded(create2, values));
+            if (i % 3 == 0)
+                table->refresh(); // a display tick every third frame
+        }
+        QCOMPARE(model->rowCount(), 52);
+        QCOMPARE(inserted.size(), 2 + 50); // each packet's row once
+        QCOMPARE(reset.size(), 0);
+        QCOMPARE(layout.size(), 0);
+        // Only the changed cells: the voltage row, and the rates once a second.
+        QCOMPARE(changed.size(), 100);
+        for (const QList<QVariant> &args : std::as_const(changed)) {
+            const QModelIndex top = args.at(0).toModelIndex(), bottom = args.at(1).toModelIndex();
+            QVERIFY(top.column() == PacketTableModel::ValueColumn && bottom.column() == PacketTableModel::RateColumn);
+        }
+        QCOMPARE(model->index(model->rowOfPacket(22), PacketTableModel::ValueColumn).data().toString(),
+                 QStringLiteral("14700 mV"));
+        // A refresh with nothing new says nothing.
+        changed.clear();
+        table->refresh();
+        QCOMPARE(changed.size(), 0);
+    }
+
+    void hiddenPacketTableTakesNothing()
+    {
+        ByteInspector inspector;
+        PacketTable *table = inspector.packetTable();
+        auto *refresh = table->findChild<QTimer *>(QStringLiteral("refreshTimer"));
+        QVERIFY(refresh);
+        const oi::RobotProfile &create2 = oi::profile(oi::ProfileId::Create2);
+        const oi::SensorSnapshot s = sensor_scenes::decoded(create2, sensor_scenes::quietValues(create2));
+        for (int i = 0; i < 100; ++i)
+            inspector.addSnapshot(i * 0.015, s);
+        QVERIFY(!refresh->isActive()); // no display tick scheduled
+        table->refresh();
+        QCOMPARE(table->model()->rowCount(), 0); // and nothing kept for one
+        inspector.show();
+        inspector.addSnapshot(2.0, s);
+        QVERIFY(refresh->isActive());
+        QTRY_COMPARE(table->model()->rowCount(), 52);
+    }
+
+    void plotButtonAndDoubleClickAskForAPlot()
+    {
+        ByteInspector inspector;
+        inspector.resize(1000, 500);
+        inspector.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&inspector));
+        QSignalSpy plot(&inspector, &ByteInspector::plotRequested);
+        const oi::RobotProfile &create2 = oi::profile(oi::ProfileId::Create2);
+        inspector.addSnapshot(0, sensor_scenes::decoded(create2, sensor_scenes::quietValues(create2)));
+        inspector.packetTable()->refresh();
+        auto *view = inspector.findChild<QTableView *>(QStringLiteral("packetTable"));
+        auto *button = inspector.findChild<QPushButton *>(QStringLiteral("plotButton"));
+        QVERIFY(view && button);
+        QVERIFY(!button->isEnabled()); // no packet chosen yet
+        const int row = inspector.packetTable()->model()->rowOfPacket(22);
+        view->selectRow(row);
+        QVERIFY(button->isEnabled());
+        QTest::mouseClick(button, Qt::LeftButton);
+        QCOMPARE(plot.size(), 1);
+        QCOMPARE(plot.last().at(0).toInt(), 22);
+
+        const int cliff = inspector.packetTable()->model()->rowOfPacket(29);
+        view->scrollTo(view->model()->index(cliff, PacketTableModel::NameColumn));
+        const QRect cell = view->visualRect(view->model()->index(cliff, PacketTableModel::NameColumn));
+        QTest::mouseClick(view->viewport(), Qt::LeftButton, {}, cell.center());
+        QCOMPARE(plot.size(), 1); // one click chooses
+        QTest::mouseDClick(view->viewport(), Qt::LeftButton, {}, cell.center());
+        QCOMPARE(plot.size(), 2);
+        QCOMPARE(plot.last().at(0).toInt(), 29);
     }
 
     void refusesBadRawInput_data()
@@ -325,7 +509,7 @@ private slots:
         if (dir.isEmpty())
             dir = scratch.path().toLocal8Bit();
         ByteInspector inspector;
-        inspector.resize(900, 600);
+        inspector.resize(1200, 600);
         inspector.show();
         QVERIFY(QTest::qWaitForWindowExposed(&inspector));
         qint64 ms = 81'000;
@@ -353,6 +537,11 @@ private slots:
             if (i == 16)
                 inspector.appendTx(bytesOf({137, 0, 0, 0, 0}), ms + 3);
         }
+        const oi::RobotProfile &create2 = oi::profile(oi::ProfileId::Create2);
+        const oi::SensorSnapshot busy = sensor_scenes::decoded(create2, sensor_scenes::busyValues(create2));
+        for (int i = 0; i <= 80; ++i)
+            inspector.addSnapshot(i * 0.015, busy);
+        inspector.packetTable()->refresh();
         inspector.appendTx(bytesOf({140, 0, 4, 60, 16, 64, 16, 67, 16, 72, 32}), ms += 20);
         inspector.appendTx(bytesOf({141, 0}), ms += 20);
         inspector.appendTx(bytesOf({99, 4}), ms += 20);
@@ -380,12 +569,26 @@ private slots:
         auto *input = inspector.findChild<QLineEdit *>(QStringLiteral("rawInput"));
         QTest::keyClicks(input, QStringLiteral("300"));
         QTest::keyClick(input, Qt::Key_Return); // an error to say again
+        const oi::RobotProfile &create2 = oi::profile(oi::ProfileId::Create2);
+        inspector.addSnapshot(0, sensor_scenes::decoded(create2, sensor_scenes::quietValues(create2)));
+        inspector.packetTable()->refresh();
+        const PacketTableModel *model = inspector.packetTable()->model();
+        const QModelIndex voltageName = model->index(model->rowOfPacket(22), PacketTableModel::NameColumn);
+        QSignalSpy headers(model, &QAbstractItemModel::headerDataChanged);
         {
             ScopedPseudoTranslation pseudo;
             QCoreApplication::processEvents();
             const QStringList left = untranslatedTexts(&inspector);
             QVERIFY2(left.isEmpty(), qPrintable(left.join('\n')));
+            // The table's headers and packet names too, and its views are told.
+            QVERIFY(!headers.isEmpty());
+            for (int c = 0; c < PacketTableModel::ColumnCount; ++c) {
+                const QString header = model->headerData(c, Qt::Horizontal).toString();
+                QVERIFY2(!looksUntranslated(header), qPrintable(header));
+            }
+            QVERIFY2(!looksUntranslated(voltageName.data().toString()), qPrintable(voltageName.data().toString()));
         }
+        QCOMPARE(voltageName.data().toString(), QStringLiteral("Voltage"));
         QCoreApplication::processEvents();
         QCOMPARE(inspector.findChild<QToolButton *>(QStringLiteral("pauseButton"))->text(), QString("Resume"));
         QCOMPARE(inspector.findChild<QLabel *>(QStringLiteral("rawError"))->text(),
@@ -410,7 +613,8 @@ private slots:
             QTest::keyClick(w, Qt::Key_Tab);
         }
         // Top to bottom, left to right, as laid out.
-        QCOMPARE(visited, QStringList({"pauseButton", "clearButton", "hexBox", "byteLog", "rawInput", "sendButton"}));
+        QCOMPARE(visited, QStringList({"pauseButton", "clearButton", "hexBox", "timeFormat", "byteLog", "packetTable",
+                                       "rawInput", "sendButton"}));
         // Space works the focused controls.
         QTest::keyClick(pause, Qt::Key_Space);
         QVERIFY(inspector.isPaused());
@@ -418,7 +622,7 @@ private slots:
         hex->setFocus();
         QTest::keyClick(hex, Qt::Key_Space);
         QVERIFY(inspector.showsHex());
-        for (const char *name : {"byteLog", "rawInput"})
+        for (const char *name : {"byteLog", "packetTable", "timeFormat", "rawInput"})
             QVERIFY2(!inspector.findChild<QWidget *>(name)->accessibleName().isEmpty(), name);
     }
 
@@ -430,6 +634,9 @@ private slots:
         inspector.appendTx(bytesOf({128, 131, 137, 255, 56, 1, 244}), 1000);
         inspector.appendRx(frame(bytesOf({22, 0x3A, 0x98, 7, 1})), 1015);
         inspector.appendRx(QByteArray("bat-min 12\r\n"), 1030);
+        const oi::RobotProfile &create2 = oi::profile(oi::ProfileId::Create2);
+        inspector.addSnapshot(0, sensor_scenes::decoded(create2, sensor_scenes::quietValues(create2)));
+        inspector.packetTable()->refresh();
         inspector.flushView();
         sensor_scenes::saveScreenshot(inspector, "byte_inspector");
         ScopedPseudoTranslation pseudo; // longer texts, as translations are

@@ -5,6 +5,7 @@
 
 #include <QApplication>
 #include <QComboBox>
+#include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
 #include <QSignalSpy>
@@ -125,6 +126,97 @@ private slots:
         QVERIFY(bar.findChild<QPushButton *>("connect")->isEnabled());
         bar.showError("Port busy");
         QCOMPARE(bar.errorText(), QString("Port busy"));
+    }
+
+    void errorClearsWhenTheLinkRecovers()
+    {
+        // The adapter is pulled out and plugged back in: the link streams
+        // again, and the bar stops saying what went wrong.
+        ConnectionBar bar;
+        bar.show();
+        bar.showConnected({ConnectionRequest::Transport::Serial, "/dev/ttyUSB0", {}, 0, oi::ProfileId::Create2, 0});
+        auto *error = bar.findChild<QLabel *>("error");
+        QVERIFY(error);
+        bar.showError("/dev/ttyUSB0: the port went away");
+        bar.showError("/dev/ttyUSB0: no such port");
+        QVERIFY(error->isVisible());
+        QCOMPARE(bar.errorText(), QString("/dev/ttyUSB0: no such port"));
+        bar.clearError();
+        QVERIFY(!error->isVisible());
+        QCOMPARE(bar.errorText(), QString());
+        // Still connected; the next fault is shown again.
+        QVERIFY(bar.findChild<QPushButton *>("disconnect")->isEnabled());
+        bar.showError("/dev/ttyUSB0: no such port");
+        QVERIFY(error->isVisible());
+
+        // An error of the bar's own is gone for good too, in any language.
+        bar.setConnected(false);
+        choose(bar, "transport", int(ConnectionRequest::Transport::Tcp));
+        bar.findChild<QLineEdit *>("tcp")->setText("pi");
+        clickConnect(bar);
+        QVERIFY(!bar.errorText().isEmpty());
+        bar.clearError();
+        {
+            ScopedPseudoTranslation pseudo;
+            QCoreApplication::processEvents();
+            QCOMPARE(bar.errorText(), QString());
+        }
+    }
+
+    void showsWhatIsConnected_data()
+    {
+        QTest::addColumn<int>("transport");
+        QTest::addColumn<QString>("shownTransport");
+        QTest::addColumn<QString>("where");
+        QTest::newRow("serial") << int(ConnectionRequest::Transport::Serial) << "Serial port" << "/dev/pts/7";
+        QTest::newRow("tcp") << int(ConnectionRequest::Transport::Tcp) << "TCP (ser2net)" << "raspberrypi:3333";
+        QTest::newRow("virtual") << int(ConnectionRequest::Transport::Virtual) << "Virtual robot" << "";
+    }
+
+    void showsWhatIsConnected()
+    {
+        QFETCH(int, transport);
+        QFETCH(QString, shownTransport);
+        QFETCH(QString, where);
+        // The last choice was a virtual Create 2 over TCP; the command line
+        // (--port, --tcp) opened something else.
+        ConnectionBar bar;
+        bar.show();
+        ConnectionRequest last;
+        last.transport = transport == int(ConnectionRequest::Transport::Virtual) ? ConnectionRequest::Transport::Serial
+                                                                                 : ConnectionRequest::Transport::Virtual;
+        last.portPath = "/dev/ttyUSB3";
+        last.profile = oi::ProfileId::Create2;
+        bar.setRequest(last);
+
+        ConnectionRequest actual;
+        actual.transport = ConnectionRequest::Transport(transport);
+        if (actual.transport == ConnectionRequest::Transport::Serial)
+            actual.portPath = where;
+        if (actual.transport == ConnectionRequest::Transport::Tcp) {
+            actual.host = where.section(':', 0, 0);
+            actual.tcpPort = quint16(where.section(':', 1).toUInt());
+        }
+        actual.profile = oi::ProfileId::Create1;
+        actual.baud = actual.transport == ConnectionRequest::Transport::Virtual ? 0 : 57600;
+        bar.showConnected(actual);
+
+        QCOMPARE(bar.request(), actual);
+        auto *transportBox = bar.findChild<QComboBox *>("transport");
+        QCOMPARE(transportBox->currentText(), shownTransport);
+        auto *port = bar.findChild<QComboBox *>("port");
+        auto *tcp = bar.findChild<QLineEdit *>("tcp");
+        QCOMPARE(port->isVisible(), actual.transport == ConnectionRequest::Transport::Serial);
+        QCOMPARE(tcp->isVisible(), actual.transport == ConnectionRequest::Transport::Tcp);
+        if (port->isVisible())
+            QCOMPARE(port->currentText(), where);
+        if (tcp->isVisible())
+            QCOMPARE(tcp->text(), where);
+        QCOMPARE(bar.findChild<QComboBox *>("profile")->currentText(), QString("Create"));
+        // Locked while connected: what it shows is what is connected.
+        QVERIFY(!transportBox->isEnabled());
+        QVERIFY(!bar.findChild<QPushButton *>("connect")->isEnabled());
+        QVERIFY(bar.findChild<QPushButton *>("disconnect")->isEnabled());
     }
 
     void translatesOnTheSpot()

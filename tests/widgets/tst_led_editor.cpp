@@ -336,12 +336,12 @@ private slots:
         for (int v = 1; v <= 40; ++v)
             colour->setValue(v * 5);
         QCOMPARE(spy.count(), 0); // coalesced, not one send per change
-        QTest::qWait(LedEditor::kLiveIntervalMs * 3);
-        QCOMPARE(spy.count(), 1);
+        QVERIFY(editor.msUntilLiveSend() >= 0);
+        QTRY_COMPARE(spy.count(), 1);
         QCOMPARE(sent(spy, 0), bytes({139, 0, 200, 128}));
 
-        // Nothing more goes out while nothing changes.
-        QTest::qWait(LedEditor::kLiveIntervalMs * 2);
+        // Nothing more goes out while nothing changes: no send is pending.
+        QCOMPARE(editor.msUntilLiveSend(), -1);
         QCOMPARE(spy.count(), 1);
 
         child<QSlider>(editor, "powerIntensity")->setValue(10);
@@ -349,10 +349,11 @@ private slots:
         QTRY_COMPARE(spy.count(), 2);
         QCOMPARE(sent(spy, 1), bytes({139, 1, 200, 10}));
 
-        // Leaving live mode stops sending.
+        // Leaving live mode stops sending: a change schedules nothing.
         editor.setLiveMode(false);
         colour->setValue(7);
-        QTest::qWait(LedEditor::kLiveIntervalMs * 2);
+        QCOMPARE(editor.msUntilLiveSend(), -1);
+        QCoreApplication::processEvents();
         QCOMPARE(spy.count(), 2);
     }
 
@@ -369,7 +370,8 @@ private slots:
         intensity->setValue(1);
         const int first = editor.msUntilLiveSend();
         QVERIFY2(first > 0 && first <= LedEditor::kLiveIntervalMs, qPrintable(QString::number(first)));
-        QTest::qWait(LedEditor::kLiveIntervalMs / 2);
+        // Part of the wait goes by.
+        QTRY_VERIFY(!spy.isEmpty() || editor.msUntilLiveSend() <= first / 2);
         if (spy.isEmpty()) { // not yet sent: the next change must not restart the wait
             intensity->setValue(2);
             QVERIFY2(editor.msUntilLiveSend() <= first, qPrintable(QString::number(editor.msUntilLiveSend())));

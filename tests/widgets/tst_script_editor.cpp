@@ -14,6 +14,7 @@
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QTimer>
 
 namespace {
 
@@ -175,8 +176,6 @@ private slots:
         QCOMPARE(spy.count(), 0);
     }
 
-    // Clicks Show Script and waits until 154 goes out, after 150 0 has
-    // paused the stream and the line has gone quiet.
     // Show Script is asked of the robot's link, which pauses its own stream
     // around it; the editor shows what comes back.
     static void askForScript(ScriptEditor &editor)
@@ -427,15 +426,15 @@ private slots:
         QVERIFY(editor.showScriptText().contains("differs"));
         QVERIFY(editor.errorText().isEmpty());
         editor.resize(editor.size().expandedTo(editor.sizeHint()));
-        QTest::qWait(50); // let the layout take the longer text in
-        QVERIFY(editor.grab().save(dir.filePath("script_editor_show.png")));
-        // The whole comparison is visible, not cut to its first line.
+        // The whole comparison is visible, not cut to its first line, once
+        // the layout has taken the longer text in.
         auto *result = editor.findChild<QLabel *>("showScriptResult");
-        QVERIFY(result->height() >= result->heightForWidth(result->width()));
+        QTRY_VERIFY(result->height() >= result->heightForWidth(result->width()));
+        QVERIFY(editor.grab().save(dir.filePath("script_editor_show.png")));
 
         // On the Create 2: everything greyed, the reason on top.
         editor.setProfile(oi::profile(oi::ProfileId::Create2));
-        QTest::qWait(50);
+        QCoreApplication::processEvents(); // the layout requests the change posted
         QVERIFY(editor.grab().save(dir.filePath("script_editor_create2.png")));
         QVERIFY(editor.findChild<QLabel *>("disabledReason")->isVisible());
         editor.setProfile(create1());

@@ -310,6 +310,57 @@ private slots:
             QVERIFY2(w.gauge(key)->width() >= w.gauge(key)->minimumSizeHint().width(), qPrintable(key));
     }
 
+    // The window's gauges dock, about 390 pixels wide, cut captions to
+    // "Requested velo…" and details to "2699 of 3000 m…".
+    void captionsAreNeverCutOff_data()
+    {
+        QTest::addColumn<ProfileId>("id");
+        QTest::addColumn<int>("width");
+        QTest::addColumn<bool>("oneLine");
+        for (ProfileId id : allProfiles()) {
+            const QString name = QString::fromUtf8(profile(id).key.data(), qsizetype(profile(id).key.size()));
+            for (int width : {390, 480, 620, 900})
+                QTest::addRow("%s %d", qPrintable(name), width) << id << width << true;
+            // Narrower than any column of whole captions: they wrap.
+            QTest::addRow("%s 170", qPrintable(name)) << id << 170 << false;
+        }
+    }
+    void captionsAreNeverCutOff()
+    {
+        QFETCH(ProfileId, id);
+        QFETCH(int, width);
+        QFETCH(bool, oneLine);
+        SensorGauges w;
+        std::map<int, int> values = busyValues(profile(id));
+        values[25] = 2699;
+        values[26] = 3000;
+        show(w, id, values);
+        w.resize(width, 600);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QTRY_VERIFY(w.gauge("battery")->findChild<QLabel *>("title")->width() > 0);
+        for (const QString &key : w.shownGaugeKeys()) {
+            for (const char *part : {"title", "detail"}) {
+                const auto *label = w.gauge(key)->findChild<QLabel *>(part);
+                QVERIFY(label);
+                if (label->isHidden() || label->text().isEmpty())
+                    continue;
+                const QString what = QStringLiteral("%1 %2: \"%3\" in %4 px").arg(key, part, label->text()).arg(label->width());
+                // All of it shows: on one line where the dock is wide enough
+                // (for captions of up to 24 characters; longer ones, such as
+                // "Baud Rate Change (active low)", may wrap), else wrapped onto
+                // lines the gauge has room for.
+                QTRY_VERIFY2(label->height() >= label->heightForWidth(label->width()), qPrintable(what));
+                if (oneLine && label->text().size() <= 24)
+                    QVERIFY2(label->fontMetrics().horizontalAdvance(label->text()) <= label->contentsRect().width(),
+                             qPrintable(what));
+            }
+        }
+        QCOMPARE(w.gauge("battery")->detailText(), QString("2699 of 3000 mAh"));
+        if (width == 390 && id == ProfileId::Create2)
+            saveScreenshot(w, "gauges_create2_390x600");
+    }
+
     void translatesOnTheSpot_data()
     {
         QTest::addColumn<ProfileId>("id");

@@ -167,6 +167,12 @@ void ConnectionBar::setRequest(const ConnectionRequest &r)
     updateTransportFields();
 }
 
+void ConnectionBar::showConnected(const ConnectionRequest &request)
+{
+    setRequest(request);
+    setConnected(true);
+}
+
 void ConnectionBar::tryConnect()
 {
     const ConnectionRequest r = request();

@@ -34,11 +34,17 @@ public:
     explicit ConnectionBar(QWidget *parent = nullptr);
 
     ConnectionRequest request() const;
+    // The choice to offer, e.g. the last connection.
     void setRequest(const ConnectionRequest &request);
     void setConnected(bool connected);
-    // Shows `message` inline until the next connect attempt; the same message
-    // twice is shown once.
+    // What the link was actually opened with (a command line may differ
+    // from the last choice): the fields show it, locked while connected.
+    void showConnected(const ConnectionRequest &request);
+    // Shows `message` inline until the next connect attempt or clearError();
+    // the same message twice is shown once.
     void showError(const QString &message);
+    // Takes the error away, as when the link streams again after a fault.
+    void clearError() { showError(QString()); }
     QString errorText() const;
     void refreshPorts();
 

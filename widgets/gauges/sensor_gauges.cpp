@@ -59,6 +59,8 @@ constexpr GaugePacket kGaugePackets[] = {
 constexpr int kCargoBayPins[] = {17, 5, 18, 6, 15};
 
 constexpr int kMinGaugeWidth = 135;
+// Wider captions wrap rather than take a column from every section.
+constexpr int kMaxCaptionChars = 24;
 
 } // namespace
 
@@ -160,6 +162,21 @@ void SensorGauges::refreshTitles()
                                   : QStringLiteral("baud_rate_change");
         m_gauges.value(key)->setTitle(oitext::bitName(bits[i]));
     }
+
+    // Columns as wide as the widest title, and the longest detail, need;
+    // past a limit (long translations) captions wrap instead.
+    const ValueGauge *any = m_gauges.value("battery");
+    int width = any->widthForCaption(batteryDetail(8888, 8888));
+    for (const QString &key : shownGaugeKeys())
+        width = std::max(width, m_gauges.value(key)->widthForCaption(m_gauges.value(key)->title()));
+    m_captionWidth = std::min(width, fontMetrics().averageCharWidth() * kMaxCaptionChars);
+    if (m_columns > 0 && columnsForWidth(m_scroll->width()) != m_columns)
+        relayout();
+}
+
+QString SensorGauges::batteryDetail(int chargeMah, int capacityMah) const
+{
+    return tr("%1 of %2 mAh").arg(chargeMah).arg(capacityMah);
 }
 
 ValueGauge *SensorGauges::addGauge(const QString &key)
@@ -240,12 +257,12 @@ void SensorGauges::setProfile(const oi::RobotProfile &profile)
 
 int SensorGauges::columnsForWidth(int w) const
 {
-    const int minWidth = std::max(kMinGaugeWidth, fontMetrics().averageCharWidth() * 16);
+    const int minWidth = std::max({kMinGaugeWidth, fontMetrics().averageCharWidth() * 16, m_captionWidth});
     const int spacing = m_grid->horizontalSpacing();
     const int usable = w - 16 - m_scroll->verticalScrollBar()->sizeHint().width();
     const int fit = std::clamp((usable + spacing) / (minWidth + spacing), 1, 6);
-    // Sections hold six, five and two gauges: three or six columns fill
-    // their rows, and wider gauges show long values whole.
+    // Sections hold six, five and two gauges: two, three or six columns
+    // fill their rows best, and wider gauges show long values whole.
     return fit >= 6 ? 6 : fit >= 3 ? 3 : fit;
 }
 
@@ -340,9 +357,8 @@ void SensorGauges::showBattery(const oi::SensorSnapshot &s)
         battery->setBarValue(std::nullopt);
         battery->setState(State::Idle);
     }
-    battery->setDetail(s.has(25) && s.has(26)
-                           ? tr("%1 of %2 mAh").arg(s.batteryChargeMah()).arg(s.batteryCapacityMah())
-                           : QString());
+    battery->setDetail(s.has(25) && s.has(26) ? batteryDetail(s.batteryChargeMah(), s.batteryCapacityMah())
+                                              : QString());
     battery->setOutOfRange(s.value(25).outOfRange() || s.value(26).outOfRange());
 
     ValueGauge *voltage = m_gauges.value("voltage");

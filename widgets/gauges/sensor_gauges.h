@@ -62,6 +62,7 @@ private:
 
     void retranslateUi();
     void refreshTitles();
+    QString batteryDetail(int chargeMah, int capacityMah) const;
     ValueGauge *addGauge(const QString &key);
     bool gaugeApplies(const QString &key) const;
     int columnsForWidth(int width) const;
@@ -82,5 +83,6 @@ private:
     QLabel *m_banner = nullptr;
     oi::SensorSnapshot m_snapshot; // the last shown, to show again in a new language
     int m_columns = 0;
+    int m_captionWidth = 0; // what the widest caption needs
     bool m_stale = false;
 };

@@ -130,11 +130,18 @@ protected:
         QPainter p(this);
         p.setRenderHint(QPainter::TextAntialiasing);
         const qreal natural = naturalWidth();
-        const qreal factor = natural > width() ? std::max(0.55, width() / natural) : 1.0;
+        qreal factor = natural > width() ? std::max(kMinFactor, width() / natural) : 1.0;
         QFont valueFont = m_valueFont;
         QFont unitFont = m_unitFont;
-        valueFont.setPointSizeF(valueFont.pointSizeF() * factor);
-        unitFont.setPointSizeF(unitFont.pointSizeF() * factor);
+        // Text does not scale exactly with its point size (sizes round to
+        // whole pixels): shrink a little more until it fits.
+        for (;;) {
+            valueFont.setPointSizeF(m_valueFont.pointSizeF() * factor);
+            unitFont.setPointSizeF(m_unitFont.pointSizeF() * factor);
+            if (factor <= kMinFactor || scaledWidth(valueFont, unitFont) <= width())
+                break;
+            factor = std::max(kMinFactor, factor - 0.03);
+        }
         const QFontMetricsF vm(valueFont);
         const QFontMetricsF um(unitFont);
         // Both sit on the baseline of the full-size value.
@@ -152,7 +159,15 @@ protected:
     }
 
 private:
+    static constexpr qreal kMinFactor = 0.55;
     static qreal gap(const QFontMetricsF &unitMetrics) { return unitMetrics.horizontalAdvance(' '); }
+
+    qreal scaledWidth(const QFont &valueFont, const QFont &unitFont) const
+    {
+        const QFontMetricsF um(unitFont);
+        const qreal unitWidth = m_unit.isEmpty() ? 0 : um.horizontalAdvance(m_unit) + gap(um);
+        return QFontMetricsF(valueFont).horizontalAdvance(m_value) + unitWidth;
+    }
 
     qreal naturalWidth() const { return naturalWidth(m_value, m_unit); }
     qreal naturalWidth(const QString &value, const QString &unit) const
@@ -166,34 +181,30 @@ private:
     QFont m_unitFont;
 };
 
-// A caption that is elided, not clipped, in a narrow gauge.
-class ElidedLabel : public QLabel {
-public:
-    using QLabel::QLabel;
-
-    QSize minimumSizeHint() const override { return {0, QLabel::minimumSizeHint().height()}; }
-
-protected:
-    void paintEvent(QPaintEvent *) override
-    {
-        QPainter p(this);
-        p.setPen(palette().color(QPalette::WindowText));
-        const QRect r = contentsRect();
-        p.drawText(r, int(alignment()), fontMetrics().elidedText(text(), Qt::ElideRight, r.width()));
-    }
-};
+namespace {
+// Captions wrap onto a second line rather than being cut off in a narrow
+// gauge.
+QLabel *captionLabel(QWidget *parent)
+{
+    auto *label = new QLabel(parent);
+    label->setWordWrap(true);
+    label->setTextFormat(Qt::PlainText);
+    return label;
+}
+} // namespace
 
 ValueGauge::ValueGauge(const QString &title, QWidget *parent) : QFrame(parent)
 {
     setObjectName("gauge");
-    setSizePolicy(QSizePolicy::Preferred, QSizePolicy::Fixed);
+    // As tall as a wrapped caption needs, not only as the size hint says.
+    setSizePolicy(QSizePolicy::Preferred, QSizePolicy::Minimum);
     setMinimumWidth(120);
 
-    m_title = new ElidedLabel(this);
+    m_title = captionLabel(this);
     m_title->setObjectName("title");
     m_value = new ValueLine(this);
     m_value->setObjectName("value");
-    m_detail = new ElidedLabel(this);
+    m_detail = captionLabel(this);
     m_detail->setObjectName("detail");
     m_flag = new QLabel(this);
     m_flag->setObjectName("outOfRange");
@@ -312,6 +323,12 @@ void ValueGauge::setTitle(const QString &title)
 }
 
 QString ValueGauge::title() const { return m_title->text(); }
+
+int ValueGauge::widthForCaption(const QString &caption) const
+{
+    const QMargins m = layout()->contentsMargins();
+    return m.left() + m_title->fontMetrics().horizontalAdvance(caption) + m.right() + 2;
+}
 QString ValueGauge::valueText() const { return m_value->m_value; }
 QString ValueGauge::unitText() const { return m_value->m_unit; }
 QString ValueGauge::detailText() const { return m_detail->text(); }

@@ -36,6 +36,8 @@ public:
     void setStale(bool stale);
 
     QString title() const;
+    // The width at which `caption` fits on one line as the title or detail.
+    int widthForCaption(const QString &caption) const;
     QString valueText() const;
     QString unitText() const;
     QString detailText() const;

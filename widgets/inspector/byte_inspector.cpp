@@ -4,6 +4,8 @@
 #include "display_palette.h"
 
 #include <QCheckBox>
+#include <QComboBox>
+#include <QDateTime>
 #include <QEvent>
 #include <QFontDatabase>
 #include <QHBoxLayout>
@@ -13,6 +15,7 @@
 #include <QPlainTextEdit>
 #include <QPushButton>
 #include <QScrollBar>
+#include <QSplitter>
 #include <QTextBlock>
 #include <QTextCursor>
 #include <QTimer>
@@ -55,11 +58,23 @@ ByteInspector::ByteInspector(QWidget *parent)
     m_hexBox->setObjectName(QStringLiteral("hexBox"));
     connect(m_hexBox, &QCheckBox::toggled, this, &ByteInspector::setShowsHex);
 
+    m_timeBox = new QComboBox(this);
+    m_timeBox->setObjectName(QStringLiteral("timeFormat"));
+    m_timeBox->addItem(QString(), int(TimeFormat::ClockTime));
+    m_timeBox->addItem(QString(), int(TimeFormat::SinceConnect));
+    m_timeBox->setCurrentIndex(m_timeBox->findData(int(m_timeFormat)));
+    m_timeBox->setSizeAdjustPolicy(QComboBox::AdjustToContents);
+    connect(m_timeBox, &QComboBox::currentIndexChanged, this,
+            [this] { setTimeFormat(TimeFormat(m_timeBox->currentData().toInt())); });
+
     m_status = new QLabel(this);
     m_status->setObjectName(QStringLiteral("status"));
     m_status->setTextInteractionFlags(Qt::TextSelectableByMouse);
 
-    m_view = new QPlainTextEdit(this);
+    m_splitter = new QSplitter(Qt::Horizontal, this);
+    m_splitter->setObjectName(QStringLiteral("splitter"));
+    m_splitter->setChildrenCollapsible(false);
+    m_view = new QPlainTextEdit(m_splitter);
     m_view->setObjectName(QStringLiteral("byteLog"));
     m_view->setReadOnly(true);
     m_view->setTabChangesFocus(true); // a log: Tab moves on to the send field
@@ -68,6 +83,15 @@ ByteInspector::ByteInspector(QWidget *parent)
     m_view->setLineWrapMode(QPlainTextEdit::WidgetWidth);
     m_view->setWordWrapMode(QTextOption::WrapAtWordBoundaryOrAnywhere);
     m_view->setFont(QFontDatabase::systemFont(QFontDatabase::FixedFont));
+
+    m_packets = new PacketTable(m_splitter);
+    m_packets->setObjectName(QStringLiteral("packets"));
+    connect(m_packets, &PacketTable::plotRequested, this, &ByteInspector::plotRequested);
+    m_splitter->addWidget(m_view);
+    m_splitter->addWidget(m_packets);
+    // The log, with its long meanings, takes the larger share.
+    m_splitter->setStretchFactor(0, 3);
+    m_splitter->setStretchFactor(1, 2);
 
     m_rawInput = new QLineEdit(this);
     m_rawInput->setObjectName(QStringLiteral("rawInput"));
@@ -91,6 +115,7 @@ ByteInspector::ByteInspector(QWidget *parent)
     bar->addWidget(m_clearButton);
     bar->addSpacing(8);
     bar->addWidget(m_hexBox);
+    bar->addWidget(m_timeBox);
     bar->addSpacing(8);
     bar->addWidget(m_status, 1);
 
@@ -103,10 +128,11 @@ ByteInspector::ByteInspector(QWidget *parent)
     layout->setContentsMargins(4, 4, 4, 4);
     layout->setSpacing(4);
     layout->addLayout(bar);
-    layout->addWidget(m_view, 1);
+    layout->addWidget(m_splitter, 1);
     layout->addLayout(send);
     layout->addWidget(m_rawError);
 
+    m_renderTimer->setObjectName(QStringLiteral("renderTimer"));
     m_renderTimer->setSingleShot(true);
     m_renderTimer->setInterval(kRenderIntervalMs);
     connect(m_renderTimer, &QTimer::timeout, this, &ByteInspector::flushView);
@@ -122,6 +148,10 @@ void ByteInspector::retranslateUi()
     m_clearButton->setToolTip(tr("Forget every entry and reset the counts"));
     m_hexBox->setText(tr("Hex"));
     m_hexBox->setToolTip(tr("Show bytes in hexadecimal instead of decimal"));
+    m_timeBox->setItemText(m_timeBox->findData(int(TimeFormat::ClockTime)), tr("Clock time"));
+    m_timeBox->setItemText(m_timeBox->findData(int(TimeFormat::SinceConnect)), tr("Since connect"));
+    m_timeBox->setAccessibleName(tr("Time format"));
+    m_timeBox->setToolTip(tr("Show each entry's time of day, or the seconds since the link was opened"));
     m_view->setAccessibleName(tr("Byte log"));
     m_rawInput->setPlaceholderText(tr("Raw bytes to send, e.g. 128 131 or 0x80 0x83"));
     m_rawInput->setAccessibleName(tr("Raw bytes to send"));
@@ -140,6 +170,32 @@ void ByteInspector::setProfile(const oi::RobotProfile &profile)
 {
     m_decoder.setProfile(profile);
     m_scanner.setProfile(profile);
+    m_packets->setProfile(profile);
+}
+
+void ByteInspector::setTimeFormat(TimeFormat format)
+{
+    if (format == m_timeFormat)
+        return;
+    m_timeFormat = format;
+    m_timeBox->blockSignals(true);
+    m_timeBox->setCurrentIndex(m_timeBox->findData(int(format)));
+    m_timeBox->blockSignals(false);
+    rebuildView();
+}
+
+void ByteInspector::setConnectedAt(qint64 msecs)
+{
+    if (m_connectedAt == msecs)
+        return;
+    m_connectedAt = msecs;
+    if (m_timeFormat == TimeFormat::SinceConnect)
+        rebuildView();
+}
+
+void ByteInspector::addSnapshot(double seconds, const oi::SensorSnapshot &snapshot)
+{
+    m_packets->addSnapshot(seconds, snapshot);
 }
 
 void ByteInspector::setMaxEntries(int count)
@@ -209,6 +265,8 @@ void ByteInspector::appendRx(const QByteArray &bytes, qint64 msecs)
 
 void ByteInspector::record(Entry entry)
 {
+    if (!m_connectedAt)
+        m_connectedAt = entry.msecs;
     m_entries.push_back(std::move(entry));
     ++m_totalEntries;
     ++m_unrendered;
@@ -234,6 +292,7 @@ void ByteInspector::clear()
     m_scanner.reset();
     m_view->clear();
     m_renderedCount = 0;
+    m_packets->clear();
     updateStatus();
 }
 
@@ -268,6 +327,7 @@ void ByteInspector::setShowsHex(bool hex)
     m_hexBox->blockSignals(true);
     m_hexBox->setChecked(hex);
     m_hexBox->blockSignals(false);
+    m_packets->setShowsHex(hex);
     rebuildView();
 }
 
@@ -309,10 +369,17 @@ QString ByteInspector::bytesText(const QByteArray &bytes) const
     return text;
 }
 
+QString ByteInspector::timeText(qint64 msecs) const
+{
+    if (m_timeFormat == TimeFormat::ClockTime)
+        return QDateTime::fromMSecsSinceEpoch(msecs).time().toString(QStringLiteral("hh:mm:ss.zzz"));
+    return QStringLiteral("%1").arg(QString::number(double(msecs - m_connectedAt.value_or(msecs)) / 1000.0, 'f', 3), 10);
+}
+
 QString ByteInspector::entryText(const Entry &entry) const
 {
     return QStringLiteral("%1  %2  %3  %4")
-        .arg(QString::number(double(entry.msecs) / 1000.0, 'f', 3), 10)
+        .arg(timeText(entry.msecs))
         .arg(entry.direction == Direction::Tx ? QStringLiteral("TX") : QStringLiteral("RX"))
         .arg(bytesText(entry.bytes), entry.meaning);
 }
@@ -356,8 +423,7 @@ void ByteInspector::renderEntries(std::size_t first, std::size_t end)
         else
             cursor.insertBlock(band);
         const bool tx = e.direction == Direction::Tx;
-        cursor.insertText(QStringLiteral("%1  ").arg(QString::number(double(e.msecs) / 1000.0, 'f', 3), 10),
-                          timeFormat);
+        cursor.insertText(timeText(e.msecs) + QStringLiteral("  "), timeFormat);
         cursor.insertText(tx ? QStringLiteral("TX") : QStringLiteral("RX"), tx ? txTag : rxTag);
         cursor.insertText(QStringLiteral("  ") + bytesText(e.bytes) + QStringLiteral("  "), bytesFormat);
         const QTextCharFormat *meaning = tx ? &txFormat : &rxFormat;

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "command_decoder.h"
+#include "packet_table.h"
 #include "robot_profile.h"
 #include "rx_frame_scanner.h"
 
@@ -13,10 +14,12 @@
 #include <optional>
 
 class QCheckBox;
+class QComboBox;
 class QLabel;
 class QLineEdit;
 class QPlainTextEdit;
 class QPushButton;
+class QSplitter;
 class QTimer;
 class QToolButton;
 
@@ -29,6 +32,9 @@ class QToolButton;
 // brought up to date on a timer, several entries at a time. The log keeps
 // the newest maxEntries() entries and drops older ones.
 //
+// Beside the log, a packet table shows each sensor packet's last value and
+// rate from the snapshots it is given, with a button to plot it.
+//
 // A field below sends raw bytes: they are checked first (bytes 0..255, whole
 // commands of the profile, values the encoder accepts) and go out through
 // sendRequested(), never straight to a port.
@@ -36,6 +42,9 @@ class ByteInspector : public QWidget {
     Q_OBJECT
 public:
     enum class Direction : std::uint8_t { Tx, Rx };
+    // How entry times read: the local clock ("14:03:12.345") or seconds
+    // since the link was opened ("12.345").
+    enum class TimeFormat : std::uint8_t { ClockTime, SinceConnect };
     static constexpr int kDefaultMaxEntries = 5000;
     // 25 Hz: smooth to read, and well under the display rate.
     static constexpr int kRenderIntervalMs = 40;
@@ -64,6 +73,15 @@ public:
     bool showsHex() const { return m_hex; }
     void setShowsHex(bool hex);
 
+    TimeFormat timeFormat() const { return m_timeFormat; }
+    void setTimeFormat(TimeFormat format);
+    // When the link was opened (milliseconds since the epoch, as entries
+    // are stamped); times since connect count from it. Until it is given,
+    // they count from the first entry.
+    void setConnectedAt(qint64 msecs);
+
+    PacketTable *packetTable() const { return m_packets; }
+
     // The check the send field applies: the bytes, or nullopt and why.
     std::optional<QByteArray> parseRawBytes(const QString &text, QString *error) const
     {
@@ -75,11 +93,17 @@ public:
 public slots:
     void appendTx(const QByteArray &bytes, qint64 msecs);
     void appendRx(const QByteArray &bytes, qint64 msecs);
+    // One stream frame's packets for the packet table, received at `seconds`
+    // on any steady clock; call it for every frame. Costs nothing while the
+    // table is hidden.
+    void addSnapshot(double seconds, const oi::SensorSnapshot &snapshot);
     void clear();
 
 signals:
     // Checked raw bytes the user asked to send.
     void sendRequested(const QByteArray &bytes);
+    // The user asked for a plot of this packet.
+    void plotRequested(int packetId);
 
 protected:
     void changeEvent(QEvent *event) override;
@@ -104,6 +128,7 @@ private:
     void submitRaw();
     void showError(const QString &message);
     QString bytesText(const QByteArray &bytes) const;
+    QString timeText(qint64 msecs) const;
     QString entryText(const Entry &entry) const;
 
     CommandDecoder m_decoder;
@@ -117,12 +142,17 @@ private:
     quint64 m_rxBytes = 0;
     bool m_paused = false;
     bool m_hex = false;
+    TimeFormat m_timeFormat = TimeFormat::SinceConnect;
+    std::optional<qint64> m_connectedAt;
 
     QToolButton *m_pauseButton;
     QToolButton *m_clearButton;
     QCheckBox *m_hexBox;
+    QComboBox *m_timeBox;
     QLabel *m_status;
+    QSplitter *m_splitter;
     QPlainTextEdit *m_view;
+    PacketTable *m_packets;
     QLineEdit *m_rawInput;
     QPushButton *m_sendButton;
     QLabel *m_rawError;

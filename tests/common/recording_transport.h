@@ -1,0 +1,156 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+// A transport that records every write the link makes, with a steady-clock
+// time for each, and plays the robot's side of the line:
+// - Robot::Streaming sends a group-100 frame every 15 ms, as a Create 2
+//   would, with an OI mode the test chooses; the test can hold the frames
+//   back to make the data go stale. For tests of the whole window, where the
+//   link runs on its own thread.
+// - Robot::Silent sends only what the test injects, fails to open when told
+//   to, and can vanish as an unplugged adapter does. For tests of the link.
+// Writes may come from the link's thread; the Recording is safe to read from
+// the test's thread.
+#include "stream_frames.h"
+#include "transport.h"
+
+#include <QByteArray>
+#include <QList>
+#include <QMutex>
+#include <QStringList>
+#include <QTimer>
+
+#include <atomic>
+#include <chrono>
+#include <memory>
+#include <utility>
+
+struct Recording {
+    using Clock = std::chrono::steady_clock;
+
+    QMutex mutex;
+    QList<QByteArray> writes;
+    QList<Clock::time_point> times;
+    // The OI mode (packet 35) the streamed frames report: 0 Off .. 3 Full.
+    std::atomic<int> mode{0};
+    // False holds the streamed frames back.
+    std::atomic<bool> streaming{true};
+    std::atomic<int> flushes{0};
+
+    qsizetype count()
+    {
+        QMutexLocker lock(&mutex);
+        return writes.size();
+    }
+    // Every byte written so far, in order.
+    QByteArray written()
+    {
+        QMutexLocker lock(&mutex);
+        return writes.join();
+    }
+    QList<QByteArray> take()
+    {
+        QMutexLocker lock(&mutex);
+        times.clear();
+        return std::exchange(writes, {});
+    }
+    QList<std::pair<QByteArray, Clock::time_point>> takeTimed()
+    {
+        QMutexLocker lock(&mutex);
+        QList<std::pair<QByteArray, Clock::time_point>> out;
+        for (qsizetype i = 0; i < writes.size(); ++i)
+            out.append({writes[i], times[i]});
+        writes.clear();
+        times.clear();
+        return out;
+    }
+};
+
+class RecordingTransport : public oilink::Transport {
+public:
+    enum class Robot { Streaming, Silent };
+
+    // Records into `recording`, which the test keeps; transports made at
+    // each reconnect can share it.
+    explicit RecordingTransport(Recording *recording, Robot robot = Robot::Streaming)
+        : m_recording(recording), m_robot(robot)
+    {
+        m_timer.setInterval(15);
+        connect(&m_timer, &QTimer::timeout, this, [this] {
+            if (m_recording->streaming)
+                emit bytesReceived(group100Frame(0, m_recording->mode));
+        });
+    }
+    // Records into a recording of its own.
+    explicit RecordingTransport(Robot robot = Robot::Silent)
+        : RecordingTransport(nullptr, robot)
+    {
+        m_own = std::make_unique<Recording>();
+        m_recording = m_own.get();
+    }
+
+    Recording &recording() { return *m_recording; }
+    QByteArray written() { return m_recording->written(); }
+    void clearWritten() { m_recording->take(); }
+    int flushes() const { return m_recording->flushes; }
+
+    // The next open() fails with this message.
+    void failOpenWith(const QString &message) { m_openFailure = message; }
+    // The robot says these bytes.
+    void inject(const QByteArray &data) { emit bytesReceived(data); }
+    // The adapter is pulled out.
+    void vanish()
+    {
+        m_open = false;
+        m_timer.stop();
+        emit errorOccurred(QStringLiteral("%1: the port went away").arg(describe()));
+        emit closed();
+    }
+
+    void open() override
+    {
+        if (!m_openFailure.isEmpty()) {
+            emit errorOccurred(m_openFailure);
+            return;
+        }
+        m_open = true;
+        emit opened();
+        if (m_robot == Robot::Streaming)
+            m_timer.start();
+    }
+    void close() override
+    {
+        m_open = false;
+        m_timer.stop();
+    }
+    bool isOpen() const override { return m_open; }
+    bool write(const QByteArray &bytes) override
+    {
+        if (!m_open)
+            return false;
+        const auto now = Recording::Clock::now();
+        QMutexLocker lock(&m_recording->mutex);
+        m_recording->writes << bytes;
+        m_recording->times << now;
+        return true;
+    }
+    void flush(int) override { ++m_recording->flushes; }
+    QString describe() const override { return QStringLiteral("/dev/recording"); }
+
+private:
+    std::unique_ptr<Recording> m_own;
+    Recording *m_recording;
+    Robot m_robot;
+    QString m_openFailure;
+    bool m_open = false;
+    QTimer m_timer;
+};
+
+// "137 0 0 0 0": bytes as the documents write them.
+inline QString byteText(const QByteArray &bytes)
+{
+    QStringList parts;
+    for (char c : bytes)
+        parts << QString::number(static_cast<unsigned char>(c));
+    return parts.join(' ');
+}

@@ -66,6 +66,7 @@ void RobotSession::connectTo(const oilink::LinkSettings &settings)
         m_link.close();
     m_settings = settings;
     m_connected = true;
+    m_connectedAtMs = QDateTime::currentMSecsSinceEpoch();
     m_replay = {};
     m_latest = oi::SensorSnapshot(*m_profile);
     m_snapshotCount = 0;
@@ -142,6 +143,7 @@ void RobotSession::onSnapshot(const oi::SensorSnapshot &snapshot, double readSec
     m_odometry.update(snapshot);
     // Safe dropping to Passive by itself (a cliff, a wheel drop) ends the motion.
     m_teleop.checkMode();
+    emit frameReceived(readSeconds, snapshot);
 }
 
 void RobotSession::onReplayStatus(const oilink::ReplayStatus &status)

@@ -41,6 +41,8 @@ public:
     // close: for quitting, by the window or by a signal.
     void closeAndWait();
     bool isConnected() const { return m_connected; }
+    // When connectTo() was last called, in ms since the epoch (as bytes are stamped).
+    qint64 connectedAtMs() const { return m_connectedAtMs; }
     // Where the robot is (or was, or will be) connected.
     const oilink::LinkSettings &settings() const { return m_settings; }
     // Where a robot that is not connected would connect; connects nothing.
@@ -92,6 +94,8 @@ public:
 
 signals:
     void identityChanged();
+    // Every stream frame once, with the time the link read it.
+    void frameReceived(double readSeconds, const oi::SensorSnapshot &frame);
     void stateChanged(oilink::LinkState state);
     void statisticsChanged(const oilink::LinkStats &stats);
     void profileChanged(oi::ProfileId profile);
@@ -121,6 +125,7 @@ private:
     oilink::RobotLinkThread m_link;
     oilink::LinkSettings m_settings;
     bool m_connected = false;
+    qint64 m_connectedAtMs = 0;
     const oi::RobotProfile *m_profile = &oi::profile(oi::ProfileId::Create2);
     oi::SensorSnapshot m_latest;
     quint64 m_snapshotCount = 0;

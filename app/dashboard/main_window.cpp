@@ -245,6 +245,10 @@ void MainWindow::wireInputs()
     connect(m_script, &ScriptEditor::sendRequested, this, send);
     connect(m_motors, &MotorsPanel::sendRequested, this, send);
     connect(m_script, &ScriptEditor::showScriptRequested, this, [this] { session().showScript(); });
+    connect(m_inspector, &ByteInspector::plotRequested, this, [this](int packetId) {
+        m_plots->addPlot({packetId});
+        findChild<QDockWidget *>("plotsDock")->raise();
+    });
     connect(m_replayBar, &ReplayBar::playRequested, this, [this] { session().controlReplay(oilink::ReplayCommand::play()); });
     connect(m_replayBar, &ReplayBar::pauseRequested, this, [this] { session().controlReplay(oilink::ReplayCommand::pause()); });
     connect(m_replayBar, &ReplayBar::stepRequested, this,
@@ -308,6 +312,7 @@ void MainWindow::showSelected(RobotSession *robot)
         connect(robot, &RobotSession::replayStatus, this, &MainWindow::showReplay),
         connect(robot, &RobotSession::bytesSent, m_inspector, &ByteInspector::appendTx),
         connect(robot, &RobotSession::bytesReceived, m_inspector, &ByteInspector::appendRx),
+        connect(robot, &RobotSession::frameReceived, m_inspector, &ByteInspector::addSnapshot),
         connect(robot, &RobotSession::scriptShown, m_script, &ScriptEditor::showScriptReply),
         connect(robot, &RobotSession::scriptFailed, m_script, &ScriptEditor::showScriptFailed),
         connect(robot, &RobotSession::virtualRobotPose, this, [this](double x, double y, double theta) {
@@ -330,14 +335,21 @@ void MainWindow::showSelected(RobotSession *robot)
     m_map->setWorld(virtualRobot ? std::optional(sim::World::classroom()) : std::nullopt);
     m_map->setTruePose(std::nullopt);
     m_inspector->clear();
+    m_inspector->setConnectedAt(robot->connectedAtMs());
     applyProfile(robot->robotProfile().id);
     m_modePanel->setFirmware(robot->firmwareRelease());
     m_drivePad->setPassive(teleop->isPassive());
     m_drivePad->resetToCentre();
     m_keyboard->releaseAll();
 
-    m_connectionBar->setRequest(connection::requestFor(robot->settings()));
-    m_connectionBar->setConnected(robot->isConnected());
+    // What is connected, not what was chosen last; a replay keeps the choice.
+    if (robot->isConnected() && !robot->isReplay()) {
+        m_connectionBar->showConnected(connection::requestFor(robot->settings()));
+    } else {
+        m_connectionBar->setRequest(connection::requestFor(robot->settings()));
+        m_connectionBar->setConnected(robot->isConnected());
+    }
+    m_connectionBar->clearError();
     m_status->showRobot(*robot, m_fleet.count() > 1);
     m_recording->showSelectedRobot();
     const bool replay = robot->isReplay();
@@ -649,6 +661,9 @@ void MainWindow::refreshDisplay()
 void MainWindow::showState(oilink::LinkState state)
 {
     m_status->showState(state);
+    // An error from a fault is over once the robot streams again.
+    if (state == oilink::LinkState::Streaming)
+        m_connectionBar->clearError();
     if (state == oilink::LinkState::Closed)
         m_connectionBar->setConnected(session().isConnected());
     refreshDisplay();

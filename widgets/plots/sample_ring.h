@@ -67,10 +67,10 @@ private:
         return p >= m_buffer.size() ? p - m_buffer.size() : p;
     }
 
-    void grow(std::size_t slots)
+    void grow(std::size_t allocation)
     {
         // Allocated exactly, so bytes() is what the ring holds.
-        std::vector<T> bigger(slots);
+        std::vector<T> bigger(allocation);
         for (std::size_t i = 0; i < m_size; ++i)
             bigger[i] = (*this)[i];
         m_buffer = std::move(bigger);

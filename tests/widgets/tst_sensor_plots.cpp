@@ -62,15 +62,24 @@ void showWide(SensorPlots &plots)
     QVERIFY(QTest::qWaitForWindowExposed(&plots));
 }
 
-// A shown panel of one plot of `channels`, reading its own history.
+// A shown panel of one plot of `channels`, reading its own history, on a
+// clock the test moves.
 struct Scene {
     SensorHistory history;
     SensorPlots plots;
+    qint64 nowMs = 0;
     explicit Scene(std::vector<int> channels)
     {
+        plots.setClock([this] { return nowMs; });
         showWide(plots);
         plots.setHistory(&history);
         QVERIFY(plots.setChannels(0, std::move(channels)));
+    }
+    // A display timer's tick later.
+    void refresh()
+    {
+        nowMs += 33;
+        plots.refresh();
     }
 };
 
@@ -145,18 +154,16 @@ private slots:
 
     void redrawsOnlyWhenSomethingChanged()
     {
-        SensorHistory h;
-        SensorPlots plots;
-        showWide(plots);
-        plots.setHistory(&h);
+        Scene scene({22});
+        SensorHistory &h = scene.history;
+        SensorPlots &plots = scene.plots;
         plots.addPlot({23});
-        plots.setChannels(0, {22});
         feed(h, 0, 100); // 0 .. 9.9 s in a 60 s window
-        plots.refresh();
+        scene.refresh();
         const SensorPlots::DrawCounts first = plots.drawCounts(0), second = plots.drawCounts(1);
         QVERIFY(first.full > 0);
-        plots.refresh();
-        plots.refresh();
+        scene.refresh();
+        scene.refresh();
         QCOMPARE(plots.drawCounts(0).full, first.full);
         QCOMPARE(plots.drawCounts(0).traces, first.traces);
         QCOMPARE(plots.drawCounts(1).full, second.full);
@@ -164,7 +171,7 @@ private slots:
 
         // A sample in a new column, inside both axes: the traces alone.
         feed(h, 100, 1);
-        plots.refresh();
+        scene.refresh();
         QCOMPARE(plots.drawCounts(0).full, first.full);
         QCOMPARE(plots.drawCounts(0).traces, first.traces + 1);
         QCOMPARE(plots.drawCounts(1).full, second.full);
@@ -176,7 +183,7 @@ private slots:
         same.set(22, 14100);
         same.set(23, -100);
         QVERIFY(h.append(10.001, same));
-        plots.refresh();
+        scene.refresh();
         QCOMPARE(plots.drawCounts(0).traces, first.traces + 1);
         QCOMPARE(plots.drawCounts(1).traces, second.traces + 1);
 
@@ -185,7 +192,7 @@ private slots:
         high.set(22, 20000);
         high.set(23, -100);
         QVERIFY(h.append(10.2, high));
-        plots.refresh();
+        scene.refresh();
         QCOMPARE(plots.drawCounts(0).full, first.full + 1);
         QVERIFY(plots.plot(0)->yAxis->range().contains(20000));
         QCOMPARE(plots.drawCounts(1).full, second.full);
@@ -198,17 +205,40 @@ private slots:
         SensorHistory &h = scene.history;
         SensorPlots &plots = scene.plots;
         feed(h, 0, 100);
-        plots.refresh();
+        scene.refresh();
         const SensorPlots::DrawCounts before = plots.drawCounts(0);
         plots.hide();
         feed(h, 100, 100);
-        plots.refresh();
+        scene.refresh();
         QCOMPARE(plots.drawCounts(0).full, before.full);
         QCOMPARE(plots.drawCounts(0).traces, before.traces);
         QCOMPARE((plots.plot(0)->graph(0)->data()->constEnd() - 1)->key, 9.9);
+        scene.nowMs += 1000;
         plots.show();
         QTRY_COMPARE((plots.plot(0)->graph(0)->data()->constEnd() - 1)->key, 19.9);
         QVERIFY(plots.drawCounts(0).full + plots.drawCounts(0).traces > before.full + before.traces);
+    }
+
+    void redrawsAtMostOncePerScreenRefresh()
+    {
+        Scene scene({22});
+        feed(scene.history, 0, 100);
+        scene.refresh();
+        const SensorPlots::DrawCounts before = scene.plots.drawCounts(0);
+        // Called again within the same millisecond: the data is taken, the
+        // drawing waits.
+        feed(scene.history, 100, 1);
+        scene.plots.refresh();
+        QCOMPARE(scene.plots.drawCounts(0).traces, before.traces);
+        QCOMPARE((scene.plots.plot(0)->graph(0)->data()->constEnd() - 1)->key, 10.0);
+        scene.nowMs += 5;
+        scene.plots.refresh();
+        QCOMPARE(scene.plots.drawCounts(0).traces, before.traces);
+        // A screen refresh later it is drawn, with no further refresh called.
+        scene.nowMs += 20;
+        QTRY_COMPARE(scene.plots.drawCounts(0).traces, before.traces + 1);
+        scene.refresh();
+        QCOMPARE(scene.plots.drawCounts(0).traces, before.traces + 1);
     }
 
     void liveAxisMovesInSteps()
@@ -218,16 +248,16 @@ private slots:
         SensorPlots &plots = scene.plots;
         plots.setWindowSeconds(20); // steps of one second
         feed(h, 0, 301);            // 0 .. 30 s
-        plots.refresh();
+        scene.refresh();
         QCOMPARE(plots.timeRange(), QCPRange(10.0, 30.0));
         const SensorPlots::DrawCounts before = plots.drawCounts(0);
         feed(h, 301, 9); // to 30.9 s: the axis moves one step, once
         for (int i = 0; i < 3; ++i)
-            plots.refresh();
+            scene.refresh();
         QCOMPARE(plots.timeRange(), QCPRange(11.0, 31.0));
         QCOMPARE(plots.drawCounts(0).full, before.full + 1);
         feed(h, 310, 1); // 31.0 s: still inside the step
-        plots.refresh();
+        scene.refresh();
         QCOMPARE(plots.timeRange(), QCPRange(11.0, 31.0));
         QCOMPARE(plots.drawCounts(0).full, before.full + 1);
     }

@@ -8,6 +8,7 @@
 #include "trace_columns.h"
 
 #include <QComboBox>
+#include <QElapsedTimer>
 #include <QEvent>
 #include <QFileDialog>
 #include <QHBoxLayout>
@@ -16,6 +17,7 @@
 #include <QMenu>
 #include <QMessageBox>
 #include <QPushButton>
+#include <QScreen>
 #include <QShortcut>
 #include <QShowEvent>
 #include <QSplitter>
@@ -89,12 +91,19 @@ struct SensorPlots::Panel {
     std::vector<int> channels;
     std::vector<GraphFeed> feeds;
     bool dirty = true;
+    // Changed since it was last drawn; whole: the axes or items too.
+    bool pending = false;
+    bool pendingWhole = false;
+    qint64 drawnAtMs = std::numeric_limits<qint64>::min() / 2;
     DrawCounts draws;
 };
 
 SensorPlots::SensorPlots(QWidget *parent)
     : QWidget(parent), m_profile(&oi::profile(oi::ProfileId::Create2))
 {
+    setClock({});
+    m_deferredDraw.setSingleShot(true);
+    connect(&m_deferredDraw, &QTimer::timeout, this, &SensorPlots::refresh);
     // Clicks give the panel focus for Space; Tab stops only on its controls.
     setFocusPolicy(Qt::ClickFocus);
 
@@ -473,6 +482,8 @@ void SensorPlots::refresh()
         if (live != m_timeRange)
             syncTimeRange(live, nullptr);
     }
+    const qint64 now = m_clock();
+    const qint64 minInterval = minRedrawMs();
     for (auto &panel : m_panels) {
         // Hidden: nothing now; showEvent() brings it up to date.
         if (!panel->plot->isVisible())
@@ -481,19 +492,48 @@ void SensorPlots::refresh()
         bool changed = panel->dirty;
         for (GraphFeed &feed : panel->feeds)
             changed |= updateFeed(feed, m_timeRange.lower, m_timeRange.upper, columnSeconds);
-        if (!changed)
+        if (changed) {
+            panel->pendingWhole |= panel->dirty;
+            panel->pendingWhole |= rescaleValues(*panel);
+            panel->pendingWhole |= updateHint(*panel);
+            panel->pending = true;
+            panel->dirty = false;
+        }
+        if (!panel->pending)
             continue;
-        bool whole = panel->dirty;
-        whole |= rescaleValues(*panel);
-        whole |= updateHint(*panel);
-        if (whole) {
+        // Faster than the screen shows it would be drawn for nothing; the
+        // next refresh draws it.
+        if (now - panel->drawnAtMs < minInterval) {
+            if (!m_deferredDraw.isActive())
+                m_deferredDraw.start(int(minInterval - (now - panel->drawnAtMs)));
+            continue;
+        }
+        if (panel->pendingWhole) {
             panel->plot->replot(); // counted by afterReplot
         } else {
             panel->plot->layer(kTracesLayer)->replot();
             ++panel->draws.traces;
         }
-        panel->dirty = false;
+        panel->pending = panel->pendingWhole = false;
+        panel->drawnAtMs = now;
     }
+}
+
+qint64 SensorPlots::minRedrawMs() const
+{
+    const QScreen *shown = screen();
+    const double hz = shown && shown->refreshRate() > 1 ? shown->refreshRate() : 60.0;
+    return qint64(std::floor(1000.0 / hz));
+}
+
+void SensorPlots::setClock(std::function<qint64()> clock)
+{
+    if (!clock) {
+        auto steady = std::make_shared<QElapsedTimer>();
+        steady->start();
+        clock = [steady] { return steady->elapsed(); };
+    }
+    m_clock = std::move(clock);
 }
 
 void SensorPlots::showEvent(QShowEvent *event)

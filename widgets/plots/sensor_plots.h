@@ -3,11 +3,13 @@
 
 #include "robot_profile.h"
 
+#include <QTimer>
 #include <QWidget>
 
 #include <qcustomplot.h>
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -34,7 +36,7 @@ class SensorHistory;
 // column's minimum and maximum), the traces sit on their own buffered layer
 // so that new samples redraw them alone over the cached axes and grid, and
 // a plot is redrawn only when a column was added or its newest column
-// changed. Live, the time axis moves in steps of a twentieth of the window,
+// changed, and at most once per refresh of its screen. Live, the time axis moves in steps of a twentieth of the window,
 // not every frame, so the axes are drawn again a few times a minute. A
 // hidden plot costs nothing and catches up when shown; a paused one is
 // redrawn only when the user moves it.
@@ -94,6 +96,10 @@ public:
     };
     DrawCounts drawCounts(int plotIndex) const;
 
+    // The clock the redraw rate is measured on, in milliseconds; a steady
+    // clock unless a test gives its own.
+    void setClock(std::function<qint64()> clock);
+
     // The plot itself, for tests and screenshots; nullptr out of range.
     QCustomPlot *plot(int plotIndex) const;
     ChannelChooser *channelChooser(int plotIndex) const;
@@ -121,6 +127,8 @@ private:
     QCPRange liveTimeRange() const;
     // Pixel columns of the plot's data area.
     int columnCount(const Panel &panel) const;
+    // The shortest time between two redraws of a plot: one screen refresh.
+    qint64 minRedrawMs() const;
     // Each returns whether it changed what the axes or items show.
     bool rescaleValues(Panel &panel);
     void applyTheme(Panel &panel);
@@ -154,4 +162,7 @@ private:
     QCPRange m_timeRange{0.0, 60.0};
     bool m_syncing = false;
     std::uint64_t m_seenGeneration = ~std::uint64_t{0};
+    std::function<qint64()> m_clock;
+    // Draws what a refresh had to put off, should no refresh follow.
+    QTimer m_deferredDraw;
 };

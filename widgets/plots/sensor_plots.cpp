@@ -251,9 +251,13 @@ int SensorPlots::addPlot(const std::vector<int> &channels)
     // frame cost far less than antialiased ones and look the same.
     p->plot->setNotAntialiasedElements(QCP::aeAxes | QCP::aeGrid | QCP::aeSubGrid);
     p->plot->installEventFilter(this);
-    // The traces on a buffered layer of their own, between the grid and the
-    // axes: new samples redraw that layer alone over the cached rest.
-    p->plot->addLayer(kTracesLayer, p->plot->layer(QStringLiteral("main")), QCustomPlot::limAbove);
+    // The traces on a buffered layer of their own, on top: new samples
+    // redraw that layer alone over the cached axes and grid. Everything else
+    // shares the one buffer below (the overlay, unused here, would cost a
+    // third), so a frame composes two pixmaps, as it did with one layer.
+    QCPLayer *overlay = p->plot->layer(QStringLiteral("overlay"));
+    overlay->setMode(QCPLayer::lmLogical);
+    p->plot->addLayer(kTracesLayer, overlay, QCustomPlot::limAbove);
     p->plot->layer(kTracesLayer)->setMode(QCPLayer::lmBuffered);
     connect(p->plot, &QCustomPlot::afterReplot, this, [p] { ++p->draws.full; });
     p->plot->axisRect()->setRangeDrag(Qt::Horizontal);
@@ -683,6 +687,7 @@ void SensorPlots::rebuildGraphs(Panel &panel)
         // Tied to its graph when first shown: tying it to an empty graph
         // makes QCustomPlot complain.
         feed.tracer = new QCPItemTracer(panel.plot);
+        feed.tracer->setLayer(kTracesLayer); // over its line
         feed.tracer->setInterpolating(false);
         feed.tracer->setStyle(QCPItemTracer::tsCircle);
         feed.tracer->setSize(8);

@@ -3,6 +3,7 @@
 #include "pseudo_translation.h"
 #include "sensor_history.h"
 #include "sensor_plots.h"
+#include "trace_columns.h"
 
 #include <QAction>
 #include <QApplication>
@@ -52,6 +53,36 @@ int heldPoints(const SensorHistory &h, int id, const QCPRange &r)
     return int(h.upperBound(id, r.upper) - h.lowerBound(id, r.lower));
 }
 
+// A plot draws only while it is shown; wide enough that 10 samples a
+// second never share a pixel column.
+void showWide(SensorPlots &plots)
+{
+    plots.resize(900, 500);
+    plots.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&plots));
+}
+
+// A shown panel of one plot of `channels`, reading its own history, on a
+// clock the test moves.
+struct Scene {
+    SensorHistory history;
+    SensorPlots plots;
+    qint64 nowMs = 0;
+    explicit Scene(std::vector<int> channels)
+    {
+        plots.setClock([this] { return nowMs; });
+        showWide(plots);
+        plots.setHistory(&history);
+        QVERIFY(plots.setChannels(0, std::move(channels)));
+    }
+    // A display timer's tick later.
+    void refresh()
+    {
+        nowMs += 33;
+        plots.refresh();
+    }
+};
+
 QByteArray readAll(const QString &path)
 {
     QFile f(path);
@@ -81,25 +112,25 @@ class TestSensorPlots : public QObject {
 private slots:
     void followsTheNewestSample()
     {
-        SensorHistory h;
-        SensorPlots plots;
-        plots.setHistory(&h);
-        QVERIFY(plots.setChannels(0, {22}));
+        Scene scene({22});
+        SensorHistory &h = scene.history;
+        SensorPlots &plots = scene.plots;
         plots.setWindowSeconds(10);
         feed(h, 0, 1000); // 0 .. 99.9 s
         plots.refresh();
-        QCOMPARE(plots.timeRange().upper, 99.9);
-        QCOMPARE(plots.timeRange().lower, 89.9);
+        // The right edge is the next step (half a second here) at or after the newest sample.
+        QCOMPARE(plots.timeRange().upper, 100.0);
+        QCOMPARE(plots.timeRange().lower, 90.0);
         QCustomPlot *plot = plots.plot(0);
-        QCOMPARE(plot->xAxis->range().upper, 99.9);
+        QCOMPARE(plot->xAxis->range().upper, 100.0);
         QCOMPARE(plot->graphCount(), 1);
         QCOMPARE(visiblePoints(plot, 0), heldPoints(h, 22, plot->xAxis->range()));
-        QCOMPARE(visiblePoints(plot, 0), 101);
+        QCOMPARE(visiblePoints(plot, 0), 100);
         QCOMPARE((plot->graph(0)->data()->constEnd() - 1)->key, 99.9);
 
         feed(h, 1000, 50); // appended, not reloaded
         plots.refresh();
-        QCOMPARE(plot->xAxis->range().upper, 104.9);
+        QCOMPARE(plot->xAxis->range().upper, 105.0);
         QCOMPARE(visiblePoints(plot, 0), heldPoints(h, 22, plot->xAxis->range()));
         QCOMPARE((plot->graph(0)->data()->constEnd() - 1)->value, 14000.0 + 1049);
         // The value axis spans what is visible.
@@ -110,10 +141,9 @@ private slots:
 
     void fillsTheWindowFromTheLeftAtFirst()
     {
-        SensorHistory h;
-        SensorPlots plots;
-        plots.setHistory(&h);
-        plots.setChannels(0, {22});
+        Scene scene({22});
+        SensorHistory &h = scene.history;
+        SensorPlots &plots = scene.plots;
         plots.setWindowSeconds(10);
         feed(h, 20, 20); // 2.0 .. 3.9 s
         plots.refresh();
@@ -124,31 +154,165 @@ private slots:
 
     void redrawsOnlyWhenSomethingChanged()
     {
-        SensorHistory h;
-        SensorPlots plots;
-        plots.setHistory(&h);
+        Scene scene({22});
+        SensorHistory &h = scene.history;
+        SensorPlots &plots = scene.plots;
         plots.addPlot({23});
-        plots.setChannels(0, {22});
-        feed(h, 0, 100);
-        plots.refresh();
-        QSignalSpy first(plots.plot(0), &QCustomPlot::afterReplot);
-        QSignalSpy second(plots.plot(1), &QCustomPlot::afterReplot);
-        plots.refresh();
-        plots.refresh();
-        QCOMPARE(first.count(), 0);
-        QCOMPARE(second.count(), 0);
+        feed(h, 0, 100); // 0 .. 9.9 s in a 60 s window
+        scene.refresh();
+        const SensorPlots::DrawCounts first = plots.drawCounts(0), second = plots.drawCounts(1);
+        QVERIFY(first.full > 0);
+        scene.refresh();
+        scene.refresh();
+        QCOMPARE(plots.drawCounts(0).full, first.full);
+        QCOMPARE(plots.drawCounts(0).traces, first.traces);
+        QCOMPARE(plots.drawCounts(1).full, second.full);
+        QCOMPARE(plots.drawCounts(1).traces, second.traces);
+
+        // A sample in a new column, inside both axes: the traces alone.
         feed(h, 100, 1);
-        plots.refresh();
-        QCOMPARE(first.count(), 1);
-        QCOMPARE(second.count(), 1);
+        scene.refresh();
+        QCOMPARE(plots.drawCounts(0).full, first.full);
+        QCOMPARE(plots.drawCounts(0).traces, first.traces + 1);
+        QCOMPARE(plots.drawCounts(1).full, second.full);
+        QCOMPARE(plots.drawCounts(1).traces, second.traces + 1);
+        QCOMPARE((plots.plot(0)->graph(0)->data()->constEnd() - 1)->value, 14100.0);
+
+        // A sample in the same column that is no new extreme: nothing.
+        SensorSnapshot same(oi::profile(ProfileId::Create2));
+        same.set(22, 14100);
+        same.set(23, -100);
+        QVERIFY(h.append(10.001, same));
+        scene.refresh();
+        QCOMPARE(plots.drawCounts(0).traces, first.traces + 1);
+        QCOMPARE(plots.drawCounts(1).traces, second.traces + 1);
+
+        // A value beyond the value axis: that plot is drawn whole.
+        SensorSnapshot high(oi::profile(ProfileId::Create2));
+        high.set(22, 20000);
+        high.set(23, -100);
+        QVERIFY(h.append(10.2, high));
+        scene.refresh();
+        QCOMPARE(plots.drawCounts(0).full, first.full + 1);
+        QVERIFY(plots.plot(0)->yAxis->range().contains(20000));
+        QCOMPARE(plots.drawCounts(1).full, second.full);
+        QCOMPARE(plots.drawCounts(1).traces, second.traces + 2);
+    }
+
+    void hiddenPlotsCostNothingAndCatchUp()
+    {
+        Scene scene({22});
+        SensorHistory &h = scene.history;
+        SensorPlots &plots = scene.plots;
+        feed(h, 0, 100);
+        scene.refresh();
+        const SensorPlots::DrawCounts before = plots.drawCounts(0);
+        plots.hide();
+        feed(h, 100, 100);
+        scene.refresh();
+        QCOMPARE(plots.drawCounts(0).full, before.full);
+        QCOMPARE(plots.drawCounts(0).traces, before.traces);
+        QCOMPARE((plots.plot(0)->graph(0)->data()->constEnd() - 1)->key, 9.9);
+        scene.nowMs += 1000;
+        plots.show();
+        QTRY_COMPARE((plots.plot(0)->graph(0)->data()->constEnd() - 1)->key, 19.9);
+        QVERIFY(plots.drawCounts(0).full + plots.drawCounts(0).traces > before.full + before.traces);
+    }
+
+    void redrawsAtMostOncePerScreenRefresh()
+    {
+        Scene scene({22});
+        feed(scene.history, 0, 100);
+        scene.refresh();
+        const SensorPlots::DrawCounts before = scene.plots.drawCounts(0);
+        // Called again within the same millisecond: the data is taken, the
+        // drawing waits.
+        feed(scene.history, 100, 1);
+        scene.plots.refresh();
+        QCOMPARE(scene.plots.drawCounts(0).traces, before.traces);
+        QCOMPARE((scene.plots.plot(0)->graph(0)->data()->constEnd() - 1)->key, 10.0);
+        scene.nowMs += 5;
+        scene.plots.refresh();
+        QCOMPARE(scene.plots.drawCounts(0).traces, before.traces);
+        // A screen refresh later it is drawn, with no further refresh called.
+        scene.nowMs += 20;
+        QTRY_COMPARE(scene.plots.drawCounts(0).traces, before.traces + 1);
+        scene.refresh();
+        QCOMPARE(scene.plots.drawCounts(0).traces, before.traces + 1);
+    }
+
+    void liveAxisMovesInSteps()
+    {
+        Scene scene({22});
+        SensorHistory &h = scene.history;
+        SensorPlots &plots = scene.plots;
+        plots.setWindowSeconds(20); // steps of one second
+        feed(h, 0, 301);            // 0 .. 30 s
+        scene.refresh();
+        QCOMPARE(plots.timeRange(), QCPRange(10.0, 30.0));
+        const SensorPlots::DrawCounts before = plots.drawCounts(0);
+        feed(h, 301, 9); // to 30.9 s: the axis moves one step, once
+        for (int i = 0; i < 3; ++i)
+            scene.refresh();
+        QCOMPARE(plots.timeRange(), QCPRange(11.0, 31.0));
+        QCOMPARE(plots.drawCounts(0).full, before.full + 1);
+        feed(h, 310, 1); // 31.0 s: still inside the step
+        scene.refresh();
+        QCOMPARE(plots.timeRange(), QCPRange(11.0, 31.0));
+        QCOMPARE(plots.drawCounts(0).full, before.full + 1);
+    }
+
+    void tracesHoldTwoPointsAColumnAndKeepTheirExtremes()
+    {
+        // A second of 1 kHz samples in columns of 10 ms: a spike one sample
+        // wide and a dip survive.
+        TraceColumns columns(0.010);
+        for (int k = 0; k < 1000; ++k) {
+            int value = k % 7;
+            if (k == 333)
+                value = 900;
+            if (k == 777)
+                value = -50;
+            columns.add({k * 0.001 + 0.0005, value});
+        }
+        QCOMPARE(columns.columns().size(), std::size_t(100));
+        QCOMPARE(columns.pointCount(), std::size_t(200));
+        int highest = 0, lowest = 0;
+        double highestAt = 0;
+        columns.pointsFrom(0, [&](const SensorHistory::Sample &s) {
+            if (s.value > highest) {
+                highest = s.value;
+                highestAt = s.time;
+            }
+            lowest = std::min(lowest, s.value);
+        });
+        QCOMPARE(highest, 900);
+        QCOMPARE(highestAt, 0.3335);
+        QCOMPARE(lowest, -50);
+        // Points come in time order.
+        double last = -1;
+        columns.pointsFrom(0, [&](const SensorHistory::Sample &s) {
+            QVERIFY(s.time >= last);
+            last = s.time;
+        });
+        // Only a new column or a new extreme changes the points.
+        columns.takeChanged();
+        QVERIFY(!columns.add({0.9999, 3}));
+        QCOMPARE(columns.takeChanged(), columns.columns().size());
+        QVERIFY(columns.add({0.99995, 100}));
+        QCOMPARE(columns.takeChanged(), std::size_t(99));
+        QVERIFY(columns.add({1.0001, 1}));
+        QCOMPARE(columns.takeChanged(), std::size_t(100));
+        columns.dropBefore(0.5);
+        QCOMPARE(columns.columns().front().index, 50);
+        QCOMPARE(columns.columns().size(), std::size_t(51));
     }
 
     void pauseStopsFollowingAndAllowsPanning()
     {
-        SensorHistory h;
-        SensorPlots plots;
-        plots.setHistory(&h);
-        plots.setChannels(0, {22});
+        Scene scene({22});
+        SensorHistory &h = scene.history;
+        SensorPlots &plots = scene.plots;
         plots.setWindowSeconds(10);
         feed(h, 0, 300);
         plots.refresh();
@@ -175,8 +339,8 @@ private slots:
 
         plots.setPaused(false);
         plots.refresh();
-        QCOMPARE(plots.timeRange().lower, 29.9);
-        QCOMPARE(plots.timeRange().upper, 39.9);
+        QCOMPARE(plots.timeRange().lower, 30.0);
+        QCOMPARE(plots.timeRange().upper, 40.0);
         QCOMPARE(visiblePoints(plots.plot(0), 0), heldPoints(h, 22, plots.timeRange()));
         QCOMPARE(plots.plot(0)->interactions(), QCP::Interactions());
     }
@@ -198,21 +362,35 @@ private slots:
 
     void windowChoices()
     {
-        SensorHistory h;
-        SensorPlots plots;
-        plots.setHistory(&h);
-        plots.setChannels(0, {22});
+        Scene scene({22});
+        SensorHistory &h = scene.history;
+        SensorPlots &plots = scene.plots;
         feed(h, 0, 7000); // 700 s
         QSignalSpy changed(&plots, &SensorPlots::windowSecondsChanged);
         plots.setWindowSeconds(30);
         plots.refresh();
         QCOMPARE(plots.timeRange().size(), 30.0);
-        QCOMPARE(plots.timeRange().upper, 699.9);
+        QCOMPARE(plots.timeRange().upper, 700.5); // steps of 1.5 s
         QCOMPARE(visiblePoints(plots.plot(0), 0), heldPoints(h, 22, plots.timeRange()));
         plots.setWindowSeconds(600);
         plots.refresh();
         QCOMPARE(plots.timeRange().size(), 600.0);
-        QCOMPARE(visiblePoints(plots.plot(0), 0), heldPoints(h, 22, plots.timeRange()));
+        // 6000 samples on fewer pixel columns: at most two points a column,
+        // and the first and last values still drawn.
+        QCustomPlot *plot = plots.plot(0);
+        const int columns = int(plot->axisRect()->width());
+        QVERIFY(heldPoints(h, 22, plots.timeRange()) > 2 * columns);
+        QVERIFY(visiblePoints(plot, 0) <= 2 * columns + 2);
+        QVERIFY(visiblePoints(plot, 0) > columns / 2);
+        bool found = false;
+        const QCPRange values = plot->graph(0)->getValueRange(found, QCP::sdBoth, plots.timeRange());
+        QVERIFY(found);
+        const auto shown = h.samples(22, plots.timeRange().lower, plots.timeRange().upper);
+        // The voltage rises by one a sample: the view's first column may
+        // start a few samples before it.
+        const double perColumn = 600.0 / columns / 0.1;
+        QVERIFY(std::abs(values.lower - shown.front().value) <= perColumn + 1);
+        QCOMPARE(values.upper, double(shown.back().value));
         QCOMPARE(changed.count(), 2);
 
         auto *box = plots.findChild<QComboBox *>();
@@ -402,10 +580,9 @@ private slots:
 
     void clearedHistoryEmptiesThePlots()
     {
-        SensorHistory h;
-        SensorPlots plots;
-        plots.setHistory(&h);
-        plots.setChannels(0, {22});
+        Scene scene({22});
+        SensorHistory &h = scene.history;
+        SensorPlots &plots = scene.plots;
         feed(h, 0, 50);
         plots.refresh();
         QCOMPARE(plots.plot(0)->graph(0)->dataCount(), 50);

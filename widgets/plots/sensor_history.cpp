@@ -6,14 +6,12 @@
 #include <QSaveFile>
 
 #include <algorithm>
+#include <iterator>
 #include <cmath>
 #include <limits>
 
 namespace {
 
-// A channel's first allocation; it then doubles up to the capacity, so a
-// short session holds little memory.
-constexpr std::size_t kFirstBlock = 1024;
 // Export writes in pieces of about this size rather than building the whole
 // file (an hour of every channel is tens of megabytes) in memory.
 constexpr qsizetype kWriteChunk = 64 * 1024;
@@ -30,11 +28,39 @@ QByteArray timeText(double t)
     return text;
 }
 
+template <typename T>
+bool fits(std::int32_t value)
+{
+    return value >= std::numeric_limits<T>::min() && value <= std::numeric_limits<T>::max();
+}
+
 } // namespace
+
+std::size_t SensorHistory::Channel::size() const
+{
+    return std::visit([](const auto &ring) { return ring.size(); }, values);
+}
+
+std::int32_t SensorHistory::Channel::value(std::size_t index) const
+{
+    return std::visit([index](const auto &ring) { return std::int32_t(ring[index]); }, values);
+}
+
+std::uint64_t SensorHistory::Channel::frameOf(std::size_t index) const
+{
+    const std::uint64_t seq = appended - size() + index;
+    // A stream is one run; a packet that came and went has a few.
+    auto run = runs.begin();
+    if (runs.size() > 1)
+        run = std::prev(std::upper_bound(runs.begin(), runs.end(), seq,
+                                         [](std::uint64_t s, const Run &r) { return s < r.sample; }));
+    return run->frame + (seq - run->sample);
+}
 
 SensorHistory::SensorHistory(const oi::RobotProfile &profile, std::size_t capacity)
     : m_profile(&profile), m_capacity(std::max<std::size_t>(capacity, 1))
 {
+    resetChannels();
 }
 
 void SensorHistory::setProfile(const oi::RobotProfile &profile)
@@ -43,6 +69,28 @@ void SensorHistory::setProfile(const oi::RobotProfile &profile)
         return;
     m_profile = &profile;
     clear();
+}
+
+void SensorHistory::resetChannels()
+{
+    for (std::size_t id = 0; id < m_channels.size(); ++id) {
+        Channel &c = m_channels[id];
+        c = Channel{}; // gives the memory back, not just the samples
+        // The narrowest type that holds the packet table's range.
+        const oi::PacketInfo *info = m_profile->packet(int(id));
+        if (!info)
+            continue;
+        if (info->min >= 0 && info->max <= 255)
+            c.values = SampleRing<std::uint8_t>();
+        else if (info->min >= -128 && info->max <= 127)
+            c.values = SampleRing<std::int8_t>();
+        else if (info->min >= 0 && info->max <= 65535)
+            c.values = SampleRing<std::uint16_t>();
+        else if (info->min >= -32768 && info->max <= 32767)
+            c.values = SampleRing<std::int16_t>();
+        else
+            c.values = SampleRing<std::int32_t>();
+    }
 }
 
 bool SensorHistory::isChannel(int packetId) const
@@ -55,44 +103,142 @@ const SensorHistory::Channel *SensorHistory::channel(int packetId) const
     return isChannel(packetId) ? &m_channels[static_cast<std::size_t>(packetId)] : nullptr;
 }
 
-void SensorHistory::push(Channel &c, double t, std::int32_t value)
+template <typename ValueOf>
+void SensorHistory::storeFrame(double t, std::uint64_t present, ValueOf valueOf)
 {
-    if (c.size() < m_capacity) {
-        if (c.size() == c.times.capacity()) {
-            // Reserve exactly, never past the capacity, so memoryBytes() is
-            // the bound the header promises.
-            const std::size_t grown =
-                std::min(m_capacity, std::max(kFirstBlock, c.times.capacity() * 2));
-            c.times.reserve(grown);
-            c.values.reserve(grown);
-        }
-        c.times.push_back(t);
-        c.values.push_back(value);
-    } else {
-        c.times[c.start] = t;
-        c.values[c.start] = value;
-        c.start = c.start + 1 == m_capacity ? 0 : c.start + 1;
+    if (present == 0)
+        return;
+    if (m_times.size() == m_capacity)
+        dropOldestFrame();
+    const std::uint64_t frame = m_firstFrame + m_times.size();
+    m_times.push(t, m_capacity);
+    for (const oi::PacketInfo &info : m_profile->packets()) {
+        if (!((present >> info.id) & 1u))
+            continue;
+        Channel &c = m_channels[info.id];
+        const std::int32_t value = valueOf(info.id);
+        const bool narrow = std::visit(
+            [value](const auto &ring) { return fits<typename std::decay_t<decltype(ring)>::value_type>(value); },
+            c.values);
+        if (!narrow) // a value the packet table does not allow: kept whole all the same
+            c.values = std::visit([this](const auto &ring) { return ring.template convertedTo<std::int32_t>(m_capacity); },
+                                  c.values);
+        std::visit([&](auto &ring) { ring.push(typename std::decay_t<decltype(ring)>::value_type(value), m_capacity); },
+                   c.values);
+        if (!c.runs.empty() && c.runs.back().frame + c.runs.back().count == frame)
+            ++c.runs.back().count;
+        else
+            c.runs.push_back({frame, c.appended, 1});
+        ++c.appended;
     }
-    ++c.appended;
+}
+
+void SensorHistory::dropOldestFrame()
+{
+    const std::uint64_t frame = m_firstFrame;
+    m_times.popFront();
+    ++m_firstFrame;
+    for (const oi::PacketInfo &info : m_profile->packets()) {
+        Channel &c = m_channels[info.id];
+        if (c.runs.empty() || c.runs.front().frame != frame)
+            continue;
+        std::visit([](auto &ring) { ring.popFront(); }, c.values);
+        Run &run = c.runs.front();
+        ++run.frame;
+        ++run.sample;
+        if (--run.count == 0)
+            c.runs.pop_front();
+    }
 }
 
 bool SensorHistory::append(double t, const oi::SensorSnapshot &snapshot)
 {
     if (!std::isfinite(t) || (m_appendCount > 0 && t < m_newestTime))
         return false;
-    for (const oi::PacketInfo &info : m_profile->packets())
-        if (snapshot.has(info.id))
-            push(m_channels[info.id], t, snapshot.raw(info.id));
+    if (m_reduced) {
+        foldIntoBlock(t, snapshot);
+    } else {
+        std::uint64_t present = 0;
+        for (const oi::PacketInfo &info : m_profile->packets())
+            if (snapshot.has(info.id))
+                present |= std::uint64_t{1} << info.id;
+        storeFrame(t, present, [&snapshot](int id) { return snapshot.raw(id); });
+    }
     m_newestTime = t;
     ++m_appendCount;
     ++m_revision;
     return true;
 }
 
+void SensorHistory::foldIntoBlock(double t, const oi::SensorSnapshot &snapshot)
+{
+    Block &b = m_block;
+    if (b.frames == 0) {
+        b.firstTime = t;
+        b.present = 0;
+    }
+    for (const oi::PacketInfo &info : m_profile->packets()) {
+        if (!snapshot.has(info.id))
+            continue;
+        const std::int32_t v = snapshot.raw(info.id);
+        const std::uint64_t bit = std::uint64_t{1} << info.id;
+        Block::Extremes &e = b.extremes[info.id];
+        if (!(b.present & bit)) {
+            e = {v, v, b.frames, b.frames};
+            b.present |= bit;
+            continue;
+        }
+        if (v < e.min) {
+            e.min = v;
+            e.minAt = b.frames;
+        }
+        if (v > e.max) {
+            e.max = v;
+            e.maxAt = b.frames;
+        }
+    }
+    b.lastTime = t;
+    if (++b.frames == kReducedBlockFrames)
+        storeBlock();
+}
+
+void SensorHistory::storeBlock()
+{
+    Block &b = m_block;
+    if (b.frames == 1) {
+        storeFrame(b.firstTime, b.present, [&b](int id) { return b.extremes[id].min; });
+    } else if (b.frames > 1) {
+        auto earlier = [&b](int id) {
+            const Block::Extremes &e = b.extremes[id];
+            return e.minAt <= e.maxAt ? e.min : e.max;
+        };
+        auto later = [&b](int id) {
+            const Block::Extremes &e = b.extremes[id];
+            return e.minAt <= e.maxAt ? e.max : e.min;
+        };
+        storeFrame(b.firstTime, b.present, earlier);
+        storeFrame(b.lastTime, b.present, later);
+    }
+    b.frames = 0;
+}
+
+void SensorHistory::setReducedRate(bool reduced)
+{
+    if (reduced == m_reduced)
+        return;
+    if (!reduced && m_block.frames > 0) {
+        storeBlock();
+        ++m_revision;
+    }
+    m_reduced = reduced;
+}
+
 void SensorHistory::clear()
 {
-    for (Channel &c : m_channels)
-        c = Channel{}; // gives the memory back, not just the samples
+    resetChannels();
+    m_times.release();
+    m_firstFrame = 0;
+    m_block.frames = 0;
     m_newestTime = 0.0;
     m_appendCount = 0;
     ++m_revision;
@@ -101,13 +247,8 @@ void SensorHistory::clear()
 
 double SensorHistory::oldestTime() const
 {
-    double oldest = std::numeric_limits<double>::infinity();
-    for (const oi::PacketInfo &info : m_profile->packets()) {
-        const Channel &c = m_channels[info.id];
-        if (c.size() > 0)
-            oldest = std::min(oldest, c.times[c.start]);
-    }
-    return std::isfinite(oldest) ? oldest : 0.0;
+    // Every frame held has at least one sample.
+    return m_times.empty() ? 0.0 : m_times.front();
 }
 
 std::size_t SensorHistory::sampleCount(int packetId) const
@@ -127,8 +268,7 @@ SensorHistory::Sample SensorHistory::sample(int packetId, std::size_t index) con
     const Channel *c = channel(packetId);
     if (!c || index >= c->size())
         return {};
-    const std::size_t p = c->physical(index, m_capacity);
-    return {c->times[p], c->values[p]};
+    return {timeOfFrame(c->frameOf(index)), c->value(index)};
 }
 
 std::size_t SensorHistory::lowerBound(int packetId, double t) const
@@ -139,7 +279,7 @@ std::size_t SensorHistory::lowerBound(int packetId, double t) const
     std::size_t lo = 0, hi = c->size();
     while (lo < hi) {
         const std::size_t mid = lo + (hi - lo) / 2;
-        if (c->times[c->physical(mid, m_capacity)] < t)
+        if (timeOfFrame(c->frameOf(mid)) < t)
             lo = mid + 1;
         else
             hi = mid;
@@ -155,7 +295,7 @@ std::size_t SensorHistory::upperBound(int packetId, double t) const
     std::size_t lo = 0, hi = c->size();
     while (lo < hi) {
         const std::size_t mid = lo + (hi - lo) / 2;
-        if (c->times[c->physical(mid, m_capacity)] <= t)
+        if (timeOfFrame(c->frameOf(mid)) <= t)
             lo = mid + 1;
         else
             hi = mid;
@@ -165,26 +305,44 @@ std::size_t SensorHistory::upperBound(int packetId, double t) const
 
 std::vector<SensorHistory::Sample> SensorHistory::samples(int packetId, double t0, double t1) const
 {
+    if (!(t0 <= t1))
+        return {};
+    return samplesAt(packetId, lowerBound(packetId, t0), upperBound(packetId, t1));
+}
+
+std::vector<SensorHistory::Sample> SensorHistory::samplesAt(int packetId, std::size_t first,
+                                                            std::size_t end) const
+{
     std::vector<Sample> out;
     const Channel *c = channel(packetId);
-    if (!c || !(t0 <= t1))
+    if (!c)
         return out;
-    const std::size_t first = lowerBound(packetId, t0), end = upperBound(packetId, t1);
+    end = std::min(end, c->size());
     if (end <= first)
         return out;
     out.reserve(end - first);
-    for (std::size_t i = first; i < end; ++i) {
-        const std::size_t p = c->physical(i, m_capacity);
-        out.push_back({c->times[p], c->values[p]});
-    }
+    // Walks the runs alongside rather than searching them for every sample.
+    const std::uint64_t base = c->appended - c->size();
+    auto run = c->runs.begin();
+    std::visit(
+        [&](const auto &ring) {
+            for (std::size_t i = first; i < end; ++i) {
+                const std::uint64_t seq = base + i;
+                while (seq >= run->sample + run->count)
+                    ++run;
+                out.push_back({timeOfFrame(run->frame + (seq - run->sample)), std::int32_t(ring[i])});
+            }
+        },
+        c->values);
     return out;
 }
 
 std::size_t SensorHistory::memoryBytes() const
 {
-    std::size_t bytes = 0;
+    std::size_t bytes = m_times.bytes();
     for (const Channel &c : m_channels)
-        bytes += c.times.capacity() * sizeof(double) + c.values.capacity() * sizeof(std::int32_t);
+        bytes += std::visit([](const auto &ring) { return ring.bytes(); }, c.values)
+            + c.runs.size() * sizeof(Run);
     return bytes;
 }
 

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "robot_profile.h"
+#include "sample_ring.h"
 #include "sensor_snapshot.h"
 
 #include <QString>
@@ -9,19 +10,32 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <deque>
+#include <variant>
 #include <vector>
 
 // The recent values of every sensor packet, for plots and CSV export.
 //
-// One ring buffer per channel (a channel is a single packet, id 7..58, of the
-// profile), each holding up to capacity() samples of (time in seconds, value).
-// A channel allocates on its first sample and grows until it holds
-// capacity() samples; from then on the oldest sample is overwritten, so memory
-// stays bounded however long the session runs. Times must not decrease, which
-// lets every range query be a binary search.
+// Stored by frame: every append() with at least one packet is a frame, and
+// the frames share one column of times. A channel (a single packet, id
+// 7..58, of the profile) keeps its values in the narrowest type the packet
+// table allows (one byte for bit fields and states, two for signals; a value
+// outside the table's type widens that channel to four bytes, so nothing is
+// lost), plus runs of the frames it was present in, which for a stream is a
+// single run. One hour of group 100 at 66.7 Hz is then about 21 MB.
 //
-// A plain value class: no Qt objects, no signals. The session owns it and
-// widgets read it from the GUI thread.
+// The history holds the newest capacity() frames; older frames drop off with
+// their values, so memory stays bounded however long the session runs.
+// Times must not decrease, which lets every range query be a binary search.
+//
+// At a reduced rate (a robot nobody is looking at) every kReducedBlockFrames
+// frames are kept as two: at the first and the last frame's time, each
+// packet's minimum and maximum over the block, in the order they came, so
+// a spike is never lost. Back at the full rate, new frames are kept whole
+// again; what was reduced stays reduced.
+//
+// A plain value class on Qt Core and the standard library: no Qt objects,
+// no signals. The session owns it and widgets read it from the GUI thread.
 class SensorHistory {
 public:
     struct Sample {
@@ -30,9 +44,10 @@ public:
         friend bool operator==(const Sample &, const Sample &) = default;
     };
 
-    // One hour at the 15 ms stream period (66.7 Hz).
+    // One hour at the 15 ms stream period (66.7 Hz), in frames.
     static constexpr std::size_t kDefaultCapacity = 240'120;
-    static constexpr std::size_t kBytesPerSample = sizeof(double) + sizeof(std::int32_t);
+    // At a reduced rate, this many frames become two.
+    static constexpr int kReducedBlockFrames = 10;
 
     explicit SensorHistory(const oi::RobotProfile &profile = oi::profile(oi::ProfileId::Create2),
                            std::size_t capacity = kDefaultCapacity);
@@ -41,6 +56,7 @@ public:
     // can mean another thing there (ERRATA 4, packets 43 and 44).
     void setProfile(const oi::RobotProfile &profile);
     const oi::RobotProfile &robotProfile() const { return *m_profile; }
+    // Frames held at the most; no channel holds more samples than this.
     std::size_t capacity() const { return m_capacity; }
 
     // Records every packet `snapshot` carries at time `t` (seconds). Refuses
@@ -49,17 +65,24 @@ public:
     bool append(double t, const oi::SensorSnapshot &snapshot);
     void clear();
 
+    // The reduced rate, for a robot that is not selected. Leaving it stores
+    // the frames of the block in progress at once.
+    void setReducedRate(bool reduced);
+    bool isReducedRate() const { return m_reduced; }
+
     // Whether `packetId` is a channel: a single packet of the profile.
     bool isChannel(int packetId) const;
     bool isEmpty() const { return m_appendCount == 0; }
     // Newest time appended since the last clear; 0 when empty.
     double newestTime() const { return m_newestTime; }
-    // Oldest time any channel still holds; 0 when empty.
+    // Oldest time any channel still holds; 0 when none does.
     double oldestTime() const;
+    // Frames held now (at most capacity()).
+    std::size_t frameCount() const { return m_times.size(); }
 
     // Samples the channel holds now (at most capacity()).
     std::size_t sampleCount(int packetId) const;
-    // Samples ever appended to the channel since the last clear. Readers that
+    // Samples ever stored in the channel since the last clear. Readers that
     // keep a copy compare it to see how many samples are new.
     std::uint64_t appendCount(int packetId) const;
     // Sample `index` of the channel, 0 being the oldest held.
@@ -70,14 +93,16 @@ public:
     std::size_t upperBound(int packetId, double t) const;
     // The samples with t0 <= time <= t1, oldest first.
     std::vector<Sample> samples(int packetId, double t0, double t1) const;
+    // The samples with index first <= i < end, oldest first.
+    std::vector<Sample> samplesAt(int packetId, std::size_t first, std::size_t end) const;
 
     // Bumped by every append and clear, so a reader can skip work when
     // nothing changed. generation() changes only on clear.
     std::uint64_t revision() const { return m_revision; }
     std::uint64_t generation() const { return m_generation; }
 
-    // Bytes the sample buffers hold: at most
-    // channels x capacity() x kBytesPerSample.
+    // Bytes the history has allocated for its frames: the time column, the
+    // channels' values and their runs.
     std::size_t memoryBytes() const;
 
     // Writes the channels' samples with t0 <= time <= t1 as CSV, with
@@ -93,26 +118,54 @@ public:
     static QString formatTime(double t);
 
 private:
+    // Consecutive frames a channel was present in.
+    struct Run {
+        std::uint64_t frame = 0;  // sequence number of the first frame
+        std::uint64_t sample = 0; // the channel's sequence number of its first sample
+        std::uint64_t count = 0;
+    };
+    using Values = std::variant<SampleRing<std::int8_t>, SampleRing<std::uint8_t>,
+                                SampleRing<std::int16_t>, SampleRing<std::uint16_t>,
+                                SampleRing<std::int32_t>>;
     struct Channel {
-        std::vector<double> times;
-        std::vector<std::int32_t> values;
-        std::size_t start = 0; // physical index of the oldest sample once full
+        Values values;
+        std::deque<Run> runs; // cover exactly the samples held, oldest first
         std::uint64_t appended = 0;
 
-        std::size_t size() const { return times.size(); }
-        std::size_t physical(std::size_t index, std::size_t capacity) const
-        {
-            const std::size_t p = start + index;
-            return p >= capacity ? p - capacity : p;
-        }
+        std::size_t size() const;
+        std::int32_t value(std::size_t index) const;
+        // Sequence number of the frame that holds sample `index`.
+        std::uint64_t frameOf(std::size_t index) const;
+    };
+    // The frames of a block at the reduced rate, folded as they come.
+    struct Block {
+        struct Extremes {
+            std::int32_t min = 0, max = 0;
+            int minAt = 0, maxAt = 0; // frame of the block each came in
+        };
+        int frames = 0;
+        double firstTime = 0.0, lastTime = 0.0;
+        std::uint64_t present = 0; // bit per packet id
+        std::array<Extremes, oi::kMaxPacketId + 1> extremes{};
     };
 
     const Channel *channel(int packetId) const;
-    void push(Channel &c, double t, std::int32_t value);
+    double timeOfFrame(std::uint64_t frame) const { return m_times[std::size_t(frame - m_firstFrame)]; }
+    // Stores one frame of packet values; `value(id)` is read for each id in `present`.
+    template <typename ValueOf>
+    void storeFrame(double t, std::uint64_t present, ValueOf value);
+    void dropOldestFrame();
+    void foldIntoBlock(double t, const oi::SensorSnapshot &snapshot);
+    void storeBlock();
+    void resetChannels();
 
     const oi::RobotProfile *m_profile;
     std::size_t m_capacity;
+    SampleRing<double> m_times;
+    std::uint64_t m_firstFrame = 0; // sequence number of m_times[0]
     std::array<Channel, oi::kMaxPacketId + 1> m_channels;
+    bool m_reduced = false;
+    Block m_block;
     double m_newestTime = 0.0;
     std::uint64_t m_appendCount = 0;
     std::uint64_t m_revision = 0;

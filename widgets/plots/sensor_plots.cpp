@@ -5,8 +5,10 @@
 #include "display_palette.h"
 #include "oi_text.h"
 #include "sensor_history.h"
+#include "trace_columns.h"
 
 #include <QComboBox>
+#include <QElapsedTimer>
 #include <QEvent>
 #include <QFileDialog>
 #include <QHBoxLayout>
@@ -15,7 +17,9 @@
 #include <QMenu>
 #include <QMessageBox>
 #include <QPushButton>
+#include <QScreen>
 #include <QShortcut>
+#include <QShowEvent>
 #include <QSplitter>
 #include <QToolButton>
 #include <QVBoxLayout>
@@ -42,6 +46,13 @@ const double kWindowChoices[] = {10, 20, 30, 60, 120, 300, 600};
 constexpr double kMinTimeSpan = 0.1;
 constexpr double kMaxTimeSpan = 4 * 3600.0;
 
+// The layer the traces are drawn on, apart from the axes and the grid.
+const QString kTracesLayer = QStringLiteral("traces");
+
+// The value axis is fitted again when the data leaves it or fills less than
+// this part of it, not on every change.
+constexpr double kMinValueFill = 0.5;
+
 QString windowLabel(double seconds)
 {
     if (seconds >= 60 && std::fmod(seconds, 60.0) == 0)
@@ -63,6 +74,7 @@ struct SensorPlots::GraphFeed {
     // Loaded up to the newest sample, so new samples can be appended.
     bool live = false;
     std::uint64_t loadedAppends = 0;
+    TraceColumns columns;
     // The time span whose samples the graph holds in full.
     double loadedFrom = 0.0;
     double loadedTo = 0.0;
@@ -79,11 +91,19 @@ struct SensorPlots::Panel {
     std::vector<int> channels;
     std::vector<GraphFeed> feeds;
     bool dirty = true;
+    // Changed since it was last drawn; whole: the axes or items too.
+    bool pending = false;
+    bool pendingWhole = false;
+    qint64 drawnAtMs = std::numeric_limits<qint64>::min() / 2;
+    DrawCounts draws;
 };
 
 SensorPlots::SensorPlots(QWidget *parent)
     : QWidget(parent), m_profile(&oi::profile(oi::ProfileId::Create2))
 {
+    setClock({});
+    m_deferredDraw.setSingleShot(true);
+    connect(&m_deferredDraw, &QTimer::timeout, this, &SensorPlots::refresh);
     // Clicks give the panel focus for Space; Tab stops only on its controls.
     setFocusPolicy(Qt::ClickFocus);
 
@@ -231,6 +251,15 @@ int SensorPlots::addPlot(const std::vector<int> &channels)
     // frame cost far less than antialiased ones and look the same.
     p->plot->setNotAntialiasedElements(QCP::aeAxes | QCP::aeGrid | QCP::aeSubGrid);
     p->plot->installEventFilter(this);
+    // The traces on a buffered layer of their own, on top: new samples
+    // redraw that layer alone over the cached axes and grid. Everything else
+    // shares the one buffer below (the overlay, unused here, would cost a
+    // third), so a frame composes two pixmaps, as it did with one layer.
+    QCPLayer *overlay = p->plot->layer(QStringLiteral("overlay"));
+    overlay->setMode(QCPLayer::lmLogical);
+    p->plot->addLayer(kTracesLayer, overlay, QCustomPlot::limAbove);
+    p->plot->layer(kTracesLayer)->setMode(QCPLayer::lmBuffered);
+    connect(p->plot, &QCustomPlot::afterReplot, this, [p] { ++p->draws.full; });
     p->plot->axisRect()->setRangeDrag(Qt::Horizontal);
     p->plot->axisRect()->setRangeZoom(Qt::Horizontal);
     // Channels are named in the header row, where a legend cannot hide data.
@@ -420,6 +449,28 @@ void SensorPlots::syncTimeRange(const QCPRange &requested, const QCustomPlot *so
     m_syncing = false;
 }
 
+QCPRange SensorPlots::liveTimeRange() const
+{
+    if (!m_history || m_history->isEmpty())
+        return QCPRange(0.0, m_windowSeconds);
+    // Fill the window from the left until it is full, then move on in steps
+    // so the axes stay put between them.
+    const double oldest = m_history->oldestTime(), newest = m_history->newestTime();
+    if (newest - oldest <= m_windowSeconds)
+        return QCPRange(oldest, oldest + m_windowSeconds);
+    const double step = m_windowSeconds * kLiveStepFraction;
+    const double upper = std::ceil(newest / step) * step;
+    return QCPRange(upper - m_windowSeconds, upper);
+}
+
+int SensorPlots::columnCount(const Panel &panel) const
+{
+    // The side margins are fixed (applyTheme), so this holds before the
+    // first layout too.
+    const QMargins margins = panel.plot->axisRect()->margins();
+    return std::max(1, panel.plot->width() - margins.left() - margins.right());
+}
+
 void SensorPlots::refresh()
 {
     if (m_history && m_history->generation() != m_seenGeneration) {
@@ -431,28 +482,77 @@ void SensorPlots::refresh()
         }
     }
     if (!m_paused) {
-        // Fill the window from the left until it is full, then scroll.
-        double from = 0.0;
-        if (m_history && !m_history->isEmpty())
-            from = std::max(m_history->newestTime() - m_windowSeconds, m_history->oldestTime());
-        const QCPRange live(from, from + m_windowSeconds);
+        const QCPRange live = liveTimeRange();
         if (live != m_timeRange)
             syncTimeRange(live, nullptr);
     }
+    const qint64 now = m_clock();
+    const qint64 minInterval = minRedrawMs();
     for (auto &panel : m_panels) {
+        // Hidden: nothing now; showEvent() brings it up to date.
+        if (!panel->plot->isVisible())
+            continue;
+        const double columnSeconds = m_timeRange.size() / columnCount(*panel);
         bool changed = panel->dirty;
         for (GraphFeed &feed : panel->feeds)
-            changed |= updateFeed(feed, m_timeRange.lower, m_timeRange.upper);
-        if (!changed)
+            changed |= updateFeed(feed, m_timeRange.lower, m_timeRange.upper, columnSeconds);
+        if (changed) {
+            panel->pendingWhole |= panel->dirty;
+            panel->pendingWhole |= rescaleValues(*panel);
+            panel->pendingWhole |= updateHint(*panel);
+            panel->pending = true;
+            panel->dirty = false;
+        }
+        if (!panel->pending)
             continue;
-        rescaleValues(*panel);
-        updateHint(*panel);
-        panel->plot->replot();
-        panel->dirty = false;
+        // Faster than the screen shows it would be drawn for nothing; the
+        // next refresh draws it.
+        if (now - panel->drawnAtMs < minInterval) {
+            if (!m_deferredDraw.isActive())
+                m_deferredDraw.start(int(minInterval - (now - panel->drawnAtMs)));
+            continue;
+        }
+        if (panel->pendingWhole) {
+            panel->plot->replot(); // counted by afterReplot
+        } else {
+            panel->plot->layer(kTracesLayer)->replot();
+            ++panel->draws.traces;
+        }
+        panel->pending = panel->pendingWhole = false;
+        panel->drawnAtMs = now;
     }
 }
 
-bool SensorPlots::updateFeed(GraphFeed &feed, double from, double to)
+qint64 SensorPlots::minRedrawMs() const
+{
+    const QScreen *shown = screen();
+    const double hz = shown && shown->refreshRate() > 1 ? shown->refreshRate() : 60.0;
+    return qint64(std::floor(1000.0 / hz));
+}
+
+void SensorPlots::setClock(std::function<qint64()> clock)
+{
+    if (!clock) {
+        auto steady = std::make_shared<QElapsedTimer>();
+        steady->start();
+        clock = [steady] { return steady->elapsed(); };
+    }
+    m_clock = std::move(clock);
+}
+
+void SensorPlots::showEvent(QShowEvent *event)
+{
+    QWidget::showEvent(event);
+    // Catch up with what came while hidden, once the plots are laid out.
+    QMetaObject::invokeMethod(this, &SensorPlots::refresh, Qt::QueuedConnection);
+}
+
+SensorPlots::DrawCounts SensorPlots::drawCounts(int plotIndex) const
+{
+    return plotIndex >= 0 && plotIndex < plotCount() ? m_panels[std::size_t(plotIndex)]->draws : DrawCounts{};
+}
+
+bool SensorPlots::updateFeed(GraphFeed &feed, double from, double to, double columnSeconds)
 {
     QSharedPointer<QCPGraphDataContainer> data = feed.graph->data();
     if (!m_history || !m_history->isChannel(feed.channel)) {
@@ -466,6 +566,25 @@ bool SensorPlots::updateFeed(GraphFeed &feed, double from, double to)
     const std::size_t held = h.sampleCount(feed.channel);
     const double span = to - from;
 
+    // Puts the columns that changed into the graph.
+    auto show = [&] {
+        const std::size_t first = feed.columns.takeChanged();
+        const auto &columns = feed.columns.columns();
+        if (first == 0) {
+            data->clear();
+        } else {
+            // Everything after the newest unchanged column's last point.
+            const TraceColumns::Column &kept = columns[first - 1];
+            data->removeAfter(std::max(kept.min.time, kept.max.time));
+        }
+        QVector<QCPGraphData> points;
+        points.reserve(qsizetype(2 * (columns.size() - first)));
+        feed.columns.pointsFrom(first, [&points](const SensorHistory::Sample &s) {
+            points.append(QCPGraphData(s.time, s.value));
+        });
+        data->add(points, true);
+    };
+
     auto reload = [&](double lo, double hi, bool live) {
         std::size_t first = h.lowerBound(feed.channel, lo);
         std::size_t end = h.upperBound(feed.channel, hi);
@@ -474,13 +593,10 @@ bool SensorPlots::updateFeed(GraphFeed &feed, double from, double to)
             --first;
         if (end < held)
             ++end;
-        QVector<QCPGraphData> points;
-        points.reserve(qsizetype(end > first ? end - first : 0));
-        for (std::size_t i = first; i < end; ++i) {
-            const SensorHistory::Sample s = h.sample(feed.channel, i);
-            points.append(QCPGraphData(s.time, s.value));
-        }
-        data->set(points, true);
+        feed.columns.reset(columnSeconds);
+        for (const SensorHistory::Sample &s : h.samplesAt(feed.channel, first, end))
+            feed.columns.add(s);
+        show();
         feed.valid = true;
         feed.live = live;
         feed.loadedAppends = appended;
@@ -489,32 +605,31 @@ bool SensorPlots::updateFeed(GraphFeed &feed, double from, double to)
         return true;
     };
 
+    const bool sameColumns = feed.columns.columnSeconds() == columnSeconds;
     if (m_paused) {
-        if (feed.valid && from >= feed.loadedFrom && to <= feed.loadedTo)
+        if (feed.valid && sameColumns && from >= feed.loadedFrom && to <= feed.loadedTo)
             return false;
         // A span either side, so small pans need no reload.
         return reload(from - span, to + span, false);
     }
 
-    // Live: keep half a window before the view for a smooth scroll.
+    // Live: keep half a window before the view for a smooth step.
     const double keepFrom = from - span / 2;
     const std::uint64_t fresh = appended - feed.loadedAppends;
-    if (!feed.valid || !feed.live || from < feed.loadedFrom || fresh > held)
+    if (!feed.valid || !feed.live || !sameColumns || from < feed.loadedFrom || fresh > held)
         return reload(keepFrom, std::numeric_limits<double>::infinity(), true);
     bool changed = false;
     if (fresh > 0) {
-        QVector<QCPGraphData> points;
-        points.reserve(qsizetype(fresh));
-        for (std::size_t i = held - std::size_t(fresh); i < held; ++i) {
-            const SensorHistory::Sample s = h.sample(feed.channel, i);
-            points.append(QCPGraphData(s.time, s.value));
-        }
-        data->add(points, true);
+        for (const SensorHistory::Sample &s : h.samplesAt(feed.channel, held - std::size_t(fresh), held))
+            changed |= feed.columns.add(s);
         feed.loadedAppends = appended;
-        changed = true;
+        if (changed)
+            show();
     }
-    // Trim in steps of a quarter window rather than every frame.
+    // Trim in steps of a quarter window rather than every frame; what goes
+    // is out of sight.
     if (keepFrom > feed.loadedFrom + span / 4) {
+        feed.columns.dropBefore(keepFrom);
         data->removeBefore(keepFrom);
         feed.loadedFrom = keepFrom;
     }
@@ -522,7 +637,7 @@ bool SensorPlots::updateFeed(GraphFeed &feed, double from, double to)
     return changed;
 }
 
-void SensorPlots::rescaleValues(Panel &panel)
+bool SensorPlots::rescaleValues(Panel &panel)
 {
     QCPRange values;
     bool any = false;
@@ -538,11 +653,18 @@ void SensorPlots::rescaleValues(Panel &panel)
         any = true;
     }
     if (!any)
-        return;
+        return false;
     if (values.size() == 0) // a flat line sits in the middle, not on an edge
         values = QCPRange(values.lower - 1, values.upper + 1);
+    const QCPRange shown = panel.plot->yAxis->range();
+    // Kept while the data stays inside and fills enough of it: the axes are
+    // then not drawn again.
+    if (shown.contains(values.lower) && shown.contains(values.upper)
+        && values.size() >= shown.size() * kMinValueFill)
+        return false;
     const double margin = values.size() * 0.08;
     panel.plot->yAxis->setRange(values.lower - margin, values.upper + margin);
+    return true;
 }
 
 void SensorPlots::rebuildGraphs(Panel &panel)
@@ -558,12 +680,14 @@ void SensorPlots::rebuildGraphs(Panel &panel)
         GraphFeed feed;
         feed.channel = panel.channels[i];
         feed.graph = panel.plot->addGraph();
+        feed.graph->setLayer(kTracesLayer);
         feed.graph->setName(ChannelChooser::channelLabel(*info));
         feed.graph->setPen(QPen(kSeriesColors[i], 1.6));
         feed.graph->setLineStyle(isStepChannel(*info) ? QCPGraph::lsStepLeft : QCPGraph::lsLine);
         // Tied to its graph when first shown: tying it to an empty graph
         // makes QCustomPlot complain.
         feed.tracer = new QCPItemTracer(panel.plot);
+        feed.tracer->setLayer(kTracesLayer); // over its line
         feed.tracer->setInterpolating(false);
         feed.tracer->setStyle(QCPItemTracer::tsCircle);
         feed.tracer->setSize(8);
@@ -577,7 +701,7 @@ void SensorPlots::rebuildGraphs(Panel &panel)
     updateHint(panel);
 }
 
-void SensorPlots::updateHint(Panel &panel)
+bool SensorPlots::updateHint(Panel &panel)
 {
     QString hint;
     if (panel.feeds.empty()) {
@@ -592,9 +716,12 @@ void SensorPlots::updateHint(Panel &panel)
             hint = m_history && !m_history->isEmpty() ? tr("No samples in this time range")
                                                        : tr("Waiting for samples");
     }
+    if (hint == panel.hint->text() && panel.hint->visible() == !hint.isEmpty())
+        return false;
     panel.hint->setText(hint);
     panel.hint->setVisible(!hint.isEmpty());
     updatePlotDescription(panel);
+    return true;
 }
 
 void SensorPlots::updateLegend(Panel &panel)

@@ -3,11 +3,13 @@
 
 #include "robot_profile.h"
 
+#include <QTimer>
 #include <QWidget>
 
 #include <qcustomplot.h>
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -29,8 +31,15 @@ class SensorHistory;
 // The visible range or the whole history exports to CSV.
 //
 // The widget only reads the history; it redraws in refresh(), which the
-// application calls from its display timer, and only plots whose data or
-// range changed are redrawn.
+// application calls from its display timer. What it draws costs what
+// changes: each trace holds at most two points per pixel column (the
+// column's minimum and maximum), the traces sit on their own buffered layer
+// so that new samples redraw them alone over the cached axes and grid, and
+// a plot is redrawn only when a column was added or its newest column
+// changed, and at most once per refresh of its screen. Live, the time axis moves in steps of a twentieth of the window,
+// not every frame, so the axes are drawn again a few times a minute. A
+// hidden plot costs nothing and catches up when shown; a paused one is
+// redrawn only when the user moves it.
 class SensorPlots : public QWidget {
     Q_OBJECT
 public:
@@ -77,6 +86,21 @@ public:
     bool exportVisibleCsv(const QString &path, QString *error = nullptr) const;
     bool exportAllCsv(const QString &path, QString *error = nullptr) const;
 
+    // Live, the time axis moves on in steps of this part of the window.
+    static constexpr double kLiveStepFraction = 1.0 / 20;
+
+    // How often a plot was drawn whole (axes, grid and traces) and how often
+    // its traces alone, since it was added: for tests and benchmarks.
+    struct DrawCounts {
+        std::uint64_t full = 0;
+        std::uint64_t traces = 0;
+    };
+    DrawCounts drawCounts(int plotIndex) const;
+
+    // The clock the redraw rate is measured on, in milliseconds; a steady
+    // clock unless a test gives its own.
+    void setClock(std::function<qint64()> clock);
+
     // The plot itself, for tests and screenshots; nullptr out of range.
     QCustomPlot *plot(int plotIndex) const;
     ChannelChooser *channelChooser(int plotIndex) const;
@@ -92,6 +116,7 @@ signals:
 protected:
     bool eventFilter(QObject *watched, QEvent *event) override;
     void changeEvent(QEvent *event) override;
+    void showEvent(QShowEvent *event) override;
 
 private:
     struct GraphFeed;
@@ -99,10 +124,16 @@ private:
 
     void retranslateUi();
     void rebuildGraphs(Panel &panel);
-    bool updateFeed(GraphFeed &feed, double from, double to);
-    void rescaleValues(Panel &panel);
+    bool updateFeed(GraphFeed &feed, double from, double to, double columnSeconds);
+    QCPRange liveTimeRange() const;
+    // Pixel columns of the plot's data area.
+    int columnCount(const Panel &panel) const;
+    // The shortest time between two redraws of a plot: one screen refresh.
+    qint64 minRedrawMs() const;
+    // Each returns whether it changed what the axes or items show.
+    bool rescaleValues(Panel &panel);
     void applyTheme(Panel &panel);
-    void updateHint(Panel &panel);
+    bool updateHint(Panel &panel);
     void updateLegend(Panel &panel);
     // The plot's channels and hint in words, for screen readers.
     void updatePlotDescription(Panel &panel);
@@ -132,4 +163,7 @@ private:
     QCPRange m_timeRange{0.0, 60.0};
     bool m_syncing = false;
     std::uint64_t m_seenGeneration = ~std::uint64_t{0};
+    std::function<qint64()> m_clock;
+    // Draws what a refresh had to put off, should no refresh follow.
+    QTimer m_deferredDraw;
 };

@@ -66,6 +66,7 @@ RobotSession *RobotFleet::addRobot(const oilink::LinkSettings &settings, const Q
     m_robots << robot;
     if (!m_selected)
         m_selected = robot;
+    robot->setHistoryFullRate(robot == m_selected);
     emit robotAdded(robot);
     if (connect)
         robot->connectTo(settings);
@@ -100,8 +101,11 @@ void RobotFleet::select(RobotSession *robot)
     RobotSession *previous = m_selected;
     m_selected = robot;
     // Whatever drove the robot left behind is now steering another one.
-    if (previous)
+    if (previous) {
         previous->teleop().deadManReleased();
+        previous->setHistoryFullRate(false);
+    }
+    robot->setHistoryFullRate(true);
     emit selectionChanged(robot, previous);
 }
 

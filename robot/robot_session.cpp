@@ -109,7 +109,9 @@ bool RobotSession::send(const QByteArray &bytes)
 
 void RobotSession::setHistoryCapacity(std::size_t samples)
 {
+    const bool reduced = m_history.isReducedRate();
     m_history = SensorHistory(*m_profile, samples);
+    m_history.setReducedRate(reduced);
     emit historyReset();
 }
 

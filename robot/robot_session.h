@@ -72,6 +72,9 @@ public:
     const SensorHistory &history() const { return m_history; }
     // Samples kept per channel; clears the history.
     void setHistoryCapacity(std::size_t samples);
+    // A robot nobody is looking at keeps its history at a reduced rate (each
+    // block's extremes kept); the selected one at the full rate.
+    void setHistoryFullRate(bool full) { m_history.setReducedRate(!full); }
     // Dead reckoning with this robot's firmware corrections applied.
     RobotOdometry &odometry() { return m_odometry; }
     const RobotOdometry &odometry() const { return m_odometry; }

@@ -154,6 +154,9 @@ private slots:
         QVERIFY(rig.window.statusText().contains("Bea"));
         QVERIFY(rig.window.findChild<QDockWidget *>("driveDock")->windowTitle().contains("Bea"));
         QCOMPARE(rig.window.sensorPlots()->history(), &rig.robot(1)->history());
+        // The robot nobody looks at keeps a lighter history.
+        QVERIFY(!rig.robot(1)->history().isReducedRate());
+        QVERIFY(rig.robot(0)->history().isReducedRate());
 
         rig.window.refreshDisplay();
         rig.window.findChild<QDockWidget *>("driveDock")->raise();

@@ -2,7 +2,7 @@
 // One robot's model: requests through the link's queue, firmware corrections
 // applied to its odometry, and its history on the link's clock.
 #include "command_encoder.h"
-#include "recording_transport.h"
+#include "recording_transport.h" // tests/common
 #include "robot_session.h"
 #include "transport.h"
 

@@ -76,13 +76,31 @@ std::optional<double> rayToSegment(Vec2 origin, Vec2 dir, const Segment &s)
     return t;
 }
 
-// Distance along a ray to the nearest wall within `range`, or -1.
-double rayDistance(const World &world, Vec2 origin, double directionRad, double range)
+// Where a ray (unit `dir`) enters a disc, if it does ahead of its origin.
+std::optional<double> rayToDisc(Vec2 origin, Vec2 dir, const Disc &d)
+{
+    const Vec2 oc = minus(origin, Vec2{d.x, d.y});
+    const double b = oc.x * dir.x + oc.y * dir.y;
+    const double c = oc.x * oc.x + oc.y * oc.y - d.radiusMm * d.radiusMm;
+    const double disc = b * b - c;
+    if (disc < 0)
+        return std::nullopt;
+    const double t = -b - std::sqrt(disc);
+    if (t < 0)
+        return std::nullopt; // behind, or the origin is inside it
+    return t;
+}
+
+// Distance along a ray to the nearest wall or robot within `range`, or -1.
+double rayDistance(const World &world, std::span<const Disc> others, Vec2 origin, double directionRad, double range)
 {
     const Vec2 dir{std::cos(directionRad), std::sin(directionRad)};
     double best = std::numeric_limits<double>::infinity();
     for (const Segment &w : world.walls)
         if (const auto t = rayToSegment(origin, dir, w))
+            best = std::min(best, *t);
+    for (const Disc &d : others)
+        if (const auto t = rayToDisc(origin, dir, d))
             best = std::min(best, *t);
     return best <= range ? best : -1;
 }
@@ -170,28 +188,33 @@ FloorContact senseFloor(const World &world, const oi::Pose &pose)
     return f;
 }
 
-ObstacleContact senseObstacles(const World &world, const oi::Pose &pose)
+ObstacleContact senseObstacles(const World &world, const oi::Pose &pose, std::span<const Disc> others)
 {
     ObstacleContact o;
     const Vec2 centre{pose.xMm, pose.yMm};
-    for (const Segment &w : world.walls) {
-        Vec2 q;
-        if (distanceToSegment(centre, w, &q) > kBodyRadiusMm + kBumpContactMm)
-            continue;
-        // The bumper wraps the front half; where it is pressed decides the
-        // side, and a hit near the middle presses both switches.
+    // The bumper wraps the front half; where it is pressed (q) decides the
+    // side, and a hit near the middle presses both switches.
+    const auto press = [&](Vec2 q) {
         const double bearing = normalizedAngle(std::atan2(q.y - centre.y, q.x - centre.x) - pose.thetaRad);
         if (std::abs(bearing) > kPi / 2)
-            continue;
+            return;
         if (bearing > deg(-10))
             o.bumpLeft = true;
         if (bearing < deg(10))
             o.bumpRight = true;
+    };
+    for (const Segment &w : world.walls) {
+        Vec2 q;
+        if (distanceToSegment(centre, w, &q) <= kBodyRadiusMm + kBumpContactMm)
+            press(q);
     }
-    o.wallDistanceMm = rayDistance(world, rimPoint(pose, kWallSensorBearing),
+    for (const Disc &d : others)
+        if (length(minus(Vec2{d.x, d.y}, centre)) <= kBodyRadiusMm + d.radiusMm + kBumpContactMm)
+            press({d.x, d.y});
+    o.wallDistanceMm = rayDistance(world, others, rimPoint(pose, kWallSensorBearing),
                                    pose.thetaRad - kPi / 2, kWallSensorRangeMm);
     for (int i = 0; i < 6; ++i)
-        o.lightBumpMm[i] = rayDistance(world, rimPoint(pose, kLightBumperBearing[i]),
+        o.lightBumpMm[i] = rayDistance(world, others, rimPoint(pose, kLightBumperBearing[i]),
                                        pose.thetaRad + kLightBumperBearing[i], kLightBumperRangeMm);
     return o;
 }
@@ -277,7 +300,8 @@ InfraredView senseInfrared(const World &world, const oi::Pose &pose, const oi::R
     return view;
 }
 
-BodyMove moveBody(const World &world, oi::Pose &pose, double leftMm, double rightMm, bool traction)
+BodyMove moveBody(const World &world, oi::Pose &pose, double leftMm, double rightMm, bool traction,
+                  std::span<const Disc> others)
 {
     BodyMove move{leftMm, rightMm, false};
     if (!traction)
@@ -306,6 +330,12 @@ BodyMove moveBody(const World &world, oi::Pose &pose, double leftMm, double righ
             move.blocked = true;
             break;
         }
+    }
+    for (const Disc &d : others) {
+        const Vec2 c{d.x, d.y};
+        const double after = length(minus(to, c));
+        if (after < kBodyRadiusMm + d.radiusMm && after < length(minus(from, c)) - 1e-9)
+            move.blocked = true;
     }
     if (move.blocked) {
         next.xMm = pose.xMm;

@@ -54,6 +54,9 @@ struct ObstacleContact {
     bool bumpLeft = false, bumpRight = false;
     double wallDistanceMm = -1;               // from the wall sensor, -1 when nothing in range
     std::array<double, 6> lightBumpMm{};      // by oi::LightBumper, -1 when nothing in range
+    // How squarely each light bumper looks at what it sees: 1 head-on,
+    // towards 0 at a glancing angle, which sends less light back.
+    std::array<double, 6> lightBumpFacing{};
 };
 ObstacleContact senseObstacles(const World &world, const oi::Pose &pose, std::span<const Disc> others = {});
 

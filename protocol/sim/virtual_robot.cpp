@@ -682,11 +682,12 @@ struct VirtualRobot::State {
         return int(std::lround(full / (1 + (distance / 25) * (distance / 25))));
     }
 
-    static int lightBumpSignal(double distance)
+    // A surface seen at a slant sends back less of the light.
+    static int lightBumpSignal(double distance, double facing)
     {
         if (distance < 0)
             return 0;
-        return int(std::lround(4095 / (1 + (distance / 35) * (distance / 35))));
+        return int(std::lround(4095 * (0.3 + 0.7 * facing) / (1 + (distance / 35) * (distance / 35))));
     }
 
     // Every packet of the profile as the robot would report it now. Distance
@@ -757,7 +758,7 @@ struct VirtualRobot::State {
         }
         std::int32_t lightBits = 0;
         for (int i = 0; i < 6; ++i) {
-            const int signal = lightBumpSignal(o.lightBumpMm[std::size_t(i)]);
+            const int signal = lightBumpSignal(o.lightBumpMm[std::size_t(i)], o.lightBumpFacing[std::size_t(i)]);
             s.set(46 + i, signal);
             if (signal >= 400)
                 lightBits |= 1 << i;

@@ -20,6 +20,7 @@
 #include "sensor_plots.h"
 #include "signal_bars.h"
 #include "song_composer.h"
+#include "transport_factory.h"
 
 #include <QAction>
 #include <QActionGroup>
@@ -99,6 +100,7 @@ MainWindow::MainWindow(QWidget *parent) : QMainWindow(parent)
 {
     m_language.apply(QSettings().value("language").toString());
     setObjectName("mainWindow");
+    m_session.setTransportFactory(transports::transportFactory(m_room, m_roomRobot));
     setDockNestingEnabled(true);
 
     m_diagram = new RobotDiagram(this);
@@ -198,9 +200,11 @@ MainWindow::MainWindow(QWidget *parent) : QMainWindow(parent)
     connect(m_schedule, &ScheduleEditor::sendRequested, &m_session, &RobotSession::send);
     connect(m_script, &ScriptEditor::sendRequested, &m_session, &RobotSession::send);
     connect(m_motors, &MotorsPanel::sendRequested, &m_session, &RobotSession::send);
-    connect(&m_session, &RobotSession::virtualRobotPose, this, [this](double x, double y, double theta) {
-        m_map->setTruePose(oi::Pose{x, y, theta, 0});
-    });
+    // A hand in the room: the map asks, the room moves the robot.
+    connect(m_map, &OdometryMap::robotMoveRequested, this,
+            [this](int robot, const oi::Pose &pose) { m_room->moveRobot(robot, pose); });
+    connect(m_map, &OdometryMap::robotLiftRequested, this,
+            [this](int robot, bool lifted) { m_room->setLifted(robot, lifted); });
     // The gamepad drives through the same sending rules as the pad and keys.
     connect(m_gamepad, &GamepadInput::motionRequested, &m_teleop, &TeleopController::requestMotion);
     connect(m_gamepad, &GamepadInput::deadManChanged, this, [this](bool held) {
@@ -621,12 +625,15 @@ void MainWindow::start(const std::optional<oilink::LinkSettings> &override)
 void MainWindow::connectSession(const oilink::LinkSettings &settings)
 {
     m_history.clear();
+    // The virtual robot lives in the room and the odometry starts where it
+    // is, so a class can watch the estimate drift from the room.
+    const bool inRoom = settings.transport == oilink::TransportKind::Virtual;
+    const auto robot = m_room->robot(m_roomRobot);
+    m_map->setOdometryStart(inRoom && robot ? robot->pose : oi::Pose{});
     m_map->reset();
-    // The virtual robot lives in the classroom world and starts where the
-    // odometry does, so a class can watch the estimate drift from the room.
-    m_map->setWorld(settings.transport == oilink::TransportKind::Virtual ? std::optional(sim::World::classroom())
-                                                                          : std::nullopt);
-    m_map->setTruePose(std::nullopt);
+    m_map->setWorld(inRoom ? std::optional(m_room->world()) : std::nullopt);
+    m_map->setTruePoses({});
+    m_map->setSelectedRobot(m_roomRobot);
     m_replayShownUs = 0;
     m_session.connectTo(settings);
     m_connectionBar->setConnected(true);
@@ -705,7 +712,8 @@ void MainWindow::refreshDisplay()
         m_plots->refresh();
     // Where the virtual robot really is, so the map shows the odometry drift.
     if (m_map->isVisible() && m_session.settings().transport == oilink::TransportKind::Virtual && m_displayTicks % 3 == 0)
-        m_session.requestVirtualRobotPose();
+        if (const auto robot = m_room->robot(m_roomRobot))
+            m_map->setTruePoses({{robot->id, robot->pose, {}, robot->lifted}});
 }
 
 void MainWindow::showState(oilink::LinkState state)

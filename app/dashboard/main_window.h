@@ -4,6 +4,7 @@
 #include "connection_bar.h"
 #include "link_settings.h"
 #include "robot_session.h"
+#include "room.h"
 #include "sensor_history.h"
 #include "teleop_controller.h"
 #include "language_switcher.h"
@@ -49,6 +50,9 @@ public:
     ~MainWindow() override;
 
     RobotSession &session() { return m_session; }
+    // The room the virtual robot drives in, and which robot of it is this window's.
+    const std::shared_ptr<sim::Room> &room() const { return m_room; }
+    sim::RobotId roomRobot() const { return m_roomRobot; }
     const SensorHistory &history() const { return m_history; }
     // Samples kept per channel; the default is one hour at 66.7 Hz. Clears
     // the history. For the benchmark, which fills it in minutes.
@@ -123,6 +127,8 @@ private:
     MotionCommand keyboardCommand() const;
 
     LanguageSwitcher m_language; // before the widgets: they are built translated
+    std::shared_ptr<sim::Room> m_room = std::make_shared<sim::Room>(sim::World::classroom());
+    sim::RobotId m_roomRobot = m_room->placeNewRobot();
     RobotSession m_session;
     // After the session: it is destroyed first and never outlives it.
     TeleopController m_teleop{m_session};

@@ -1,9 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "robot_link_thread.h"
 
-#include "real_time_robot.h"
-#include "virtual_transport.h"
-
 #include <QCoreApplication>
 
 #include <sys/resource.h>
@@ -100,24 +97,6 @@ void RobotLinkThread::querySensors(const QList<int> &packetIds)
                                   Qt::QueuedConnection);
     else
         emit errorOccurred(tr("not connected: the sensor query was not sent"));
-}
-
-void RobotLinkThread::requestVirtualRobotPose()
-{
-    if (!m_link || !m_thread.isRunning())
-        return;
-    QMetaObject::invokeMethod(
-        m_link,
-        [this, link = m_link.data()] {
-            // On the link's thread, where the transport and its robot live.
-            if (auto *virtualRobot = qobject_cast<VirtualTransport *>(link->transport());
-                virtualRobot && virtualRobot->robot()) {
-                const oi::Pose pose = virtualRobot->robot()->robot().truePose();
-                QMetaObject::invokeMethod(this, [this, pose] { emit virtualRobotPose(pose.xMm, pose.yMm, pose.thetaRad); },
-                                          Qt::QueuedConnection);
-            }
-        },
-        Qt::QueuedConnection);
 }
 
 void RobotLinkThread::startRecording(const QString &path)

@@ -4,6 +4,7 @@
 #include "real_time_robot.h"
 #include "robot_link.h"
 #include "robot_link_thread.h"
+#include "transport_factory.h"
 #include "virtual_transport.h"
 
 #include <QSignalSpy>
@@ -25,7 +26,7 @@ constexpr int kTimeoutMs = 10000;
 
 sim::VirtualRobot &robotOf(const RobotLink &link)
 {
-    auto *transport = qobject_cast<oilink::VirtualTransport *>(link.transport());
+    auto *transport = qobject_cast<sim::VirtualTransport *>(link.transport());
     return transport->robot()->robot();
 }
 
@@ -46,6 +47,7 @@ private slots:
     void snapshotsArriveWithStatistics()
     {
         RobotLink link;
+        link.setTransportFactory(transports::transportFactory());
         QSignalSpy snapshots(&link, &RobotLink::snapshot);
         QSignalSpy stats(&link, &RobotLink::statistics);
         link.open(LinkSettings::virtualRobotOf(oi::ProfileId::Create2, oi::ProfileId::Create2));
@@ -70,6 +72,7 @@ private slots:
     void staleDuringAStallThenStreamingAgain()
     {
         RobotLink link;
+        link.setTransportFactory(transports::transportFactory());
         QSignalSpy stateSpy(&link, &RobotLink::stateChanged);
         link.open(LinkSettings::virtualRobotOf(oi::ProfileId::Create2, oi::ProfileId::Create2));
         QTRY_COMPARE_WITH_TIMEOUT(link.state(), LinkState::Streaming, kTimeoutMs);
@@ -82,6 +85,7 @@ private slots:
     void sensorQueryWhileStreaming()
     {
         RobotLink link;
+        link.setTransportFactory(transports::transportFactory());
         QSignalSpy replies(&link, &RobotLink::sensorReply);
         QSignalSpy snapshots(&link, &RobotLink::snapshot);
         QSignalSpy errors(&link, &RobotLink::errorOccurred);
@@ -120,6 +124,7 @@ private slots:
         QFETCH(oi::ProfileId, found);
         QFETCH(QList<int>, packets);
         RobotLink link;
+        link.setTransportFactory(transports::transportFactory());
         QSignalSpy started(&link, &RobotLink::streamStarted);
         QSignalSpy snapshots(&link, &RobotLink::snapshot);
         QSignalSpy sent(&link, &RobotLink::rawBytesSent);
@@ -137,9 +142,10 @@ private slots:
     void closeLeavesTheRobotStoppedInPassive()
     {
         RobotLink link;
+        link.setTransportFactory(transports::transportFactory());
         link.open(LinkSettings::virtualRobotOf(oi::ProfileId::Create2, oi::ProfileId::Create2));
         QTRY_COMPARE_WITH_TIMEOUT(link.state(), LinkState::Streaming, kTimeoutMs);
-        auto *transport = qobject_cast<oilink::VirtualTransport *>(link.transport());
+        auto *transport = qobject_cast<sim::VirtualTransport *>(link.transport());
         QVERIFY(transport);
         link.send(bytes({131}));                 // Safe
         link.send(bytes({137, 0, 100, 128, 0})); // Drive 100 mm/s straight
@@ -160,6 +166,7 @@ private slots:
     void onAWorkerThread()
     {
         RobotLinkThread link;
+        link.setTransportFactory(transports::transportFactory());
         QSignalSpy snapshots(&link, &RobotLinkThread::snapshot);
         QSignalSpy replies(&link, &RobotLinkThread::sensorReply);
         QSignalSpy states(&link, &RobotLinkThread::stateChanged);
@@ -193,6 +200,7 @@ private slots:
     void aStoppedHelperOpensAgain()
     {
         RobotLinkThread link;
+        link.setTransportFactory(transports::transportFactory());
         QSignalSpy snapshots(&link, &RobotLinkThread::snapshot);
         link.open(LinkSettings::virtualRobotOf(oi::ProfileId::Create1, oi::ProfileId::Create1));
         QTRY_VERIFY_WITH_TIMEOUT(snapshots.size() >= 3, kTimeoutMs);

@@ -19,7 +19,10 @@ constexpr double kPi = 3.14159265358979323846;
 constexpr int kVersion = 1;
 const QString kFormat = QStringLiteral("roomba-room");
 
-QString tr(const char *text) { return QCoreApplication::translate("RoomFile", text); }
+// The messages' context for translators.
+struct RoomFile {
+    Q_DECLARE_TR_FUNCTIONS(RoomFile)
+};
 
 double toRad(double deg) { return deg * kPi / 180; }
 double toDeg(double rad) { return rad * 180 / kPi; }
@@ -32,9 +35,9 @@ public:
         if (!allowOnly(root, {"format", "version", "name", "start", "walls", "drop_offs", "dock", "virtual_wall"}, {}))
             return std::nullopt;
         if (root.value("format").toString() != kFormat)
-            return fail(tr("\"format\" must be \"%1\"").arg(kFormat));
+            return fail(RoomFile::tr("\"format\" must be \"%1\"").arg(kFormat));
         if (root.value("version").toInt(-1) != kVersion)
-            return fail(tr("\"version\" %1 is not one this program reads (it reads %2)")
+            return fail(RoomFile::tr("\"version\" %1 is not one this program reads (it reads %2)")
                             .arg(root.value("version").toVariant().toString())
                             .arg(kVersion));
         World w;
@@ -50,7 +53,7 @@ public:
             if (list.isUndefined())
                 continue;
             if (!list.isArray())
-                return fail(tr("\"%1\" must be a list").arg(key));
+                return fail(RoomFile::tr("\"%1\" must be a list").arg(key));
             const QJsonArray items = list.toArray();
             for (qsizetype i = 0; i < items.size(); ++i) {
                 const QString where = QStringLiteral("%1[%2]").arg(key).arg(i);
@@ -59,11 +62,11 @@ public:
                     return std::nullopt;
                 if (QLatin1String(key) == QLatin1String("walls")) {
                     if (v[0] == v[2] && v[1] == v[3])
-                        return fail(tr("%1: a wall must have some length").arg(where));
+                        return fail(RoomFile::tr("%1: a wall must have some length").arg(where));
                     w.walls.push_back({v[0], v[1], v[2], v[3]});
                 } else {
                     if (!(v[0] < v[2] && v[1] < v[3]))
-                        return fail(tr("%1: x_min must be below x_max and y_min below y_max").arg(where));
+                        return fail(RoomFile::tr("%1: x_min must be below x_max and y_min below y_max").arg(where));
                     w.dropOffs.push_back({v[0], v[1], v[2], v[3]});
                 }
             }
@@ -81,7 +84,7 @@ public:
                 return std::nullopt;
             b.headingRad = toRad(b.headingRad);
             if (b.rangeMm <= 0)
-                return fail(tr("virtual_wall: \"range_mm\" must be above 0, not %1").arg(b.rangeMm));
+                return fail(RoomFile::tr("virtual_wall: \"range_mm\" must be above 0, not %1").arg(b.rangeMm));
             w.virtualWall = b;
         }
         return w;
@@ -100,8 +103,8 @@ private:
     {
         for (const QString &key : o.keys())
             if (!allowed.contains(key)) {
-                fail(where.isEmpty() ? tr("unknown key \"%1\"").arg(key)
-                                     : tr("%1: unknown key \"%2\"").arg(where, key));
+                fail(where.isEmpty() ? RoomFile::tr("unknown key \"%1\"").arg(key)
+                                     : RoomFile::tr("%1: unknown key \"%2\"").arg(where, key));
                 return false;
             }
         return true;
@@ -110,7 +113,7 @@ private:
     bool number(const QJsonValue &v, const QString &where, double &out)
     {
         if (!v.isDouble() || !std::isfinite(v.toDouble())) {
-            fail(tr("%1 must be a number").arg(where));
+            fail(RoomFile::tr("%1 must be a number").arg(where));
             return false;
         }
         out = v.toDouble();
@@ -121,7 +124,7 @@ private:
     {
         const QJsonArray a = v.toArray();
         if (!v.isArray() || a.size() != count) {
-            fail(tr("%1 must be a list of %2 numbers").arg(where).arg(count));
+            fail(RoomFile::tr("%1 must be a list of %2 numbers").arg(where).arg(count));
             return false;
         }
         for (int i = 0; i < count; ++i)
@@ -135,7 +138,7 @@ private:
                double *rangeMm = nullptr)
     {
         if (!v.isObject()) {
-            fail(tr("\"%1\" must be an object with x_mm, y_mm and heading_deg").arg(where));
+            fail(RoomFile::tr("\"%1\" must be an object with x_mm, y_mm and heading_deg").arg(where));
             return false;
         }
         const QJsonObject o = v.toObject();
@@ -147,7 +150,7 @@ private:
         double *targets[] = {&x, &y, &headingDeg, rangeMm};
         for (qsizetype i = 0; i < keys.size(); ++i) {
             if (!o.contains(keys[i])) {
-                fail(tr("%1: \"%2\" is missing").arg(where, keys[i]));
+                fail(RoomFile::tr("%1: \"%2\" is missing").arg(where, keys[i]));
                 return false;
             }
             if (!number(o.value(keys[i]), QStringLiteral("%1.%2").arg(where, keys[i]), *targets[i]))
@@ -162,7 +165,7 @@ QString lineAndColumn(const QByteArray &text, int offset)
     const QByteArray before = text.left(offset);
     const qsizetype line = before.count('\n') + 1;
     const qsizetype column = offset - (before.lastIndexOf('\n') + 1) + 1;
-    return tr("line %1, column %2").arg(line).arg(column);
+    return RoomFile::tr("line %1, column %2").arg(line).arg(column);
 }
 
 QString number(double v) { return QString::number(v, 'g', QLocale::FloatingPointShortest); }
@@ -180,11 +183,11 @@ std::optional<World> roomFromJson(const QByteArray &json, QString *error)
     QJsonParseError parse{};
     const QJsonDocument doc = QJsonDocument::fromJson(json, &parse);
     if (parse.error != QJsonParseError::NoError) {
-        setError(error, tr("not JSON at %1: %2").arg(lineAndColumn(json, parse.offset), parse.errorString()));
+        setError(error, RoomFile::tr("not JSON at %1: %2").arg(lineAndColumn(json, parse.offset), parse.errorString()));
         return std::nullopt;
     }
     if (!doc.isObject()) {
-        setError(error, tr("a room file holds one JSON object"));
+        setError(error, RoomFile::tr("a room file holds one JSON object"));
         return std::nullopt;
     }
     RoomReader reader;
@@ -198,13 +201,13 @@ std::optional<World> loadRoomFile(const QString &path, QString *error)
 {
     QFile file(path);
     if (!file.open(QIODevice::ReadOnly)) {
-        setError(error, tr("%1: cannot read: %2").arg(path, file.errorString()));
+        setError(error, RoomFile::tr("%1: cannot read: %2").arg(path, file.errorString()));
         return std::nullopt;
     }
     QString why;
     std::optional<World> world = roomFromJson(file.readAll(), &why);
     if (!world)
-        setError(error, tr("%1: %2").arg(QFileInfo(path).fileName(), why));
+        setError(error, RoomFile::tr("%1: %2").arg(QFileInfo(path).fileName(), why));
     return world;
 }
 
@@ -247,12 +250,12 @@ bool saveRoomFile(const QString &path, const World &world, QString *error)
 {
     QSaveFile file(path);
     if (!file.open(QIODevice::WriteOnly)) {
-        setError(error, tr("%1: cannot write: %2").arg(path, file.errorString()));
+        setError(error, RoomFile::tr("%1: cannot write: %2").arg(path, file.errorString()));
         return false;
     }
     file.write(roomToJson(world));
     if (!file.commit()) {
-        setError(error, tr("%1: cannot write: %2").arg(path, file.errorString()));
+        setError(error, RoomFile::tr("%1: cannot write: %2").arg(path, file.errorString()));
         return false;
     }
     return true;

@@ -210,6 +210,39 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(snapshots.size() >= 3, kTimeoutMs);
         QCOMPARE(snapshots.last().at(0).value<oi::SensorSnapshot>().robotProfile().id, oi::ProfileId::Create2);
     }
+
+    // Two robots of one room, each on its own link thread: one drives into
+    // the other, and both bumpers say so through their links; the room,
+    // read on this thread, has them side by side.
+    void twoRobotsInOneRoomEachOnItsThread()
+    {
+        auto room = std::make_shared<sim::Room>(sim::World{});
+        const sim::RobotId mover = room->addRobotAt({0, 0, 0, 0});
+        const sim::RobotId standing = room->addRobotAt({600, 0, 0, 0});
+        RobotLinkThread first, second;
+        first.setTransportFactory(transports::transportFactory(room, mover));
+        second.setTransportFactory(transports::transportFactory(room, standing));
+        oi::SensorSnapshot firstLatest, secondLatest;
+        connect(&first, &RobotLinkThread::snapshot, this, [&](const oi::SensorSnapshot &s) { firstLatest = s; });
+        connect(&second, &RobotLinkThread::snapshot, this, [&](const oi::SensorSnapshot &s) { secondLatest = s; });
+        first.open(LinkSettings::virtualRobotOf(oi::ProfileId::Create2, oi::ProfileId::Create2));
+        second.open(LinkSettings::virtualRobotOf(oi::ProfileId::Create2, oi::ProfileId::Create2));
+        QTRY_COMPARE_WITH_TIMEOUT(first.state(), LinkState::Streaming, kTimeoutMs);
+        QTRY_COMPARE_WITH_TIMEOUT(second.state(), LinkState::Streaming, kTimeoutMs);
+        first.send(bytes({132}));                 // Full
+        first.send(bytes({137, 0, 200, 128, 0})); // Drive 200 mm/s straight
+        QTRY_VERIFY_WITH_TIMEOUT(firstLatest.bumpLeft() && firstLatest.bumpRight(), kTimeoutMs);
+        // Struck from behind: the bumper wraps only the front half.
+        QTRY_VERIFY_WITH_TIMEOUT(room->robot(mover)->pose.xMm > 600 - 2 * sim::kBodyRadiusMm - 2, kTimeoutMs);
+        QVERIFY(!secondLatest.bumpLeft() && !secondLatest.bumpRight());
+        const std::vector<sim::RobotInRoom> robots = room->robots();
+        QCOMPARE(robots.size(), std::size_t(2));
+        QVERIFY(robots[1].pose.xMm - robots[0].pose.xMm >= 2 * sim::kBodyRadiusMm - 1);
+        QCOMPARE(robots[1].pose.xMm, 600.0);
+        first.send(bytes({137, 0, 0, 0, 0}));
+        first.stop();
+        second.stop();
+    }
 };
 
 QTEST_GUILESS_MAIN(TestRobotLinkVirtual)

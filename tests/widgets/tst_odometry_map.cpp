@@ -249,6 +249,10 @@ private slots:
         QVERIFY2(std::abs(first.hue() - OdometryMap::robotColour(0).hue()) < 15, qPrintable(first.name()));
         QVERIFY2(std::abs(third.hue() - QColor(Qt::magenta).hue()) < 15, qPrintable(third.name()));
         QVERIFY(OdometryMap::robotColour(0) != OdometryMap::robotColour(1));
+        if (qEnvironmentVariableIsSet("ROOMBA_SCREENSHOTS")) {
+            m_map->setWorld(sim::World::classroom());
+            QVERIFY(m_map->grab().save(QDir(qEnvironmentVariable("ROOMBA_SCREENSHOTS")).filePath("odometry_map_robots.png")));
+        }
     }
 
     // Touching the room: carry, turn and lift a robot; the map only asks.

@@ -63,6 +63,7 @@ RobotSession *RobotFleet::addRobot(const oilink::LinkSettings &settings, const Q
     robot->setColour(nextColour());
     if (m_factory)
         robot->setTransportFactory(m_factory);
+    robot->setSettings(settings); // robotAdded() may prepare for them
     m_robots << robot;
     if (!m_selected)
         m_selected = robot;

@@ -23,6 +23,7 @@ public:
 
     // Makes the transports of every robot added from now on (tests).
     void setTransportFactory(oilink::RobotLink::TransportFactory factory);
+    bool hasTransportFactory() const { return bool(m_factory); }
 
     // A new robot, named and coloured apart from the others; an empty name
     // gets "Robot N". Connects it when `connect` is set. Not selected.

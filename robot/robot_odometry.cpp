@@ -19,9 +19,15 @@ void RobotOdometry::update(const oi::SensorSnapshot &frame)
     }
 }
 
+void RobotOdometry::setStart(const oi::Pose &start)
+{
+    m_start = start;
+    m_start.travelledMm = 0;
+}
+
 void RobotOdometry::reset()
 {
-    m_odometry.reset();
+    m_odometry.reset(m_start);
     m_trail.clear();
     appendTrailPoint();
     ++m_revision;

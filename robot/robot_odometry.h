@@ -20,8 +20,12 @@ public:
 
     // Feed each decoded frame once: packets 19 and 20 are increments.
     void update(const oi::SensorSnapshot &frame);
-    // Starts again from the origin, with an empty trail.
+    // Starts again from the start pose (the origin unless set), with an empty trail.
     void reset();
+    // Where reset() starts: a virtual robot's place in its room, so the
+    // estimate starts from the truth.
+    void setStart(const oi::Pose &start);
+    const oi::Pose &start() const { return m_start; }
 
     // Applied to the distance/angle fallback (packets 19 and 20).
     void setCorrections(const oi::FirmwareCorrections &corrections);
@@ -43,6 +47,7 @@ private:
     void appendTrailPoint();
 
     oi::Odometry m_odometry;
+    oi::Pose m_start;
     double m_wheelDiameterMm = oi::kWheelDiameterMm;
     QList<QPointF> m_trail;
     quint64 m_revision = 0;

@@ -24,7 +24,6 @@ RobotSession::RobotSession(QObject *parent) : QObject(parent)
         emit statisticsChanged(stats);
     });
     connect(&m_link, &oilink::RobotLinkThread::errorOccurred, this, &RobotSession::errorOccurred);
-    connect(&m_link, &oilink::RobotLinkThread::virtualRobotPose, this, &RobotSession::virtualRobotPose);
     connect(&m_link, &oilink::RobotLinkThread::rawBytesSent, this, &RobotSession::onBytesSent);
     connect(&m_link, &oilink::RobotLinkThread::rawBytesReceived, this, &RobotSession::onBytesReceived);
     connect(&m_link, &oilink::RobotLinkThread::sensorReply, this, &RobotSession::sensorReply);

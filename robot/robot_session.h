@@ -82,9 +82,6 @@ public:
     // Safe dropping to Passive by itself.
     TeleopController &teleop() { return m_teleop; }
 
-    // The in-process virtual robot's true pose, answered by virtualRobotPose().
-    void requestVirtualRobotPose() { m_link.requestVirtualRobotPose(); }
-
     // Records every byte of the link into a file, across reconnects, until
     // stopRecording() or a disconnect. Reported through recordingStatus().
     void startRecording(const QString &path) { m_link.startRecording(path); }
@@ -104,7 +101,6 @@ signals:
     void profileChanged(oi::ProfileId profile);
     void firmwareChanged(const QString &release);
     void errorOccurred(const QString &message);
-    void virtualRobotPose(double xMm, double yMm, double thetaRad);
     void bytesSent(const QByteArray &bytes, qint64 msecs);
     void bytesReceived(const QByteArray &bytes, qint64 msecs);
     void sensorReply(const oi::SensorSnapshot &reply);

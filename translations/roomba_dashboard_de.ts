@@ -2390,6 +2390,81 @@ GPL-3.0-or-later.</translation>
     </message>
 </context>
 <context>
+    <name>RoomFile</name>
+    <message>
+        <source>&quot;format&quot; must be &quot;%1&quot;</source>
+        <translation>&quot;format&quot; muss &quot;%1&quot; sein</translation>
+    </message>
+    <message>
+        <source>&quot;version&quot; %1 is not one this program reads (it reads %2)</source>
+        <translation>&quot;version&quot; %1 kann dieses Programm nicht lesen (es liest %2)</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; must be a list</source>
+        <translation>&quot;%1&quot; muss eine Liste sein</translation>
+    </message>
+    <message>
+        <source>%1: a wall must have some length</source>
+        <translation>%1: eine Wand muss eine Länge haben</translation>
+    </message>
+    <message>
+        <source>%1: x_min must be below x_max and y_min below y_max</source>
+        <translation>%1: x_min muss kleiner als x_max und y_min kleiner als y_max sein</translation>
+    </message>
+    <message>
+        <source>virtual_wall: &quot;range_mm&quot; must be above 0, not %1</source>
+        <translation>virtual_wall: &quot;range_mm&quot; muss größer als 0 sein, nicht %1</translation>
+    </message>
+    <message>
+        <source>unknown key &quot;%1&quot;</source>
+        <translation>unbekannter Schlüssel &quot;%1&quot;</translation>
+    </message>
+    <message>
+        <source>%1: unknown key &quot;%2&quot;</source>
+        <translation>%1: unbekannter Schlüssel &quot;%2&quot;</translation>
+    </message>
+    <message>
+        <source>%1 must be a number</source>
+        <translation>%1 muss eine Zahl sein</translation>
+    </message>
+    <message>
+        <source>%1 must be a list of %2 numbers</source>
+        <translation>%1 muss eine Liste mit %2 Zahlen sein</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; must be an object with x_mm, y_mm and heading_deg</source>
+        <translation>&quot;%1&quot; muss ein Objekt mit x_mm, y_mm und heading_deg sein</translation>
+    </message>
+    <message>
+        <source>%1: &quot;%2&quot; is missing</source>
+        <translation>%1: &quot;%2&quot; fehlt</translation>
+    </message>
+    <message>
+        <source>line %1, column %2</source>
+        <translation>Zeile %1, Spalte %2</translation>
+    </message>
+    <message>
+        <source>not JSON at %1: %2</source>
+        <translation>kein JSON in %1: %2</translation>
+    </message>
+    <message>
+        <source>a room file holds one JSON object</source>
+        <translation>eine Raumdatei enthält ein JSON-Objekt</translation>
+    </message>
+    <message>
+        <source>%1: cannot read: %2</source>
+        <translation>%1: nicht lesbar: %2</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>%1: cannot write: %2</source>
+        <translation>%1: nicht schreibbar: %2</translation>
+    </message>
+</context>
+<context>
     <name>RtttlImport</name>
     <message>
         <source>RTTTL: %1</source>
@@ -3763,6 +3838,10 @@ Gesendet: %2</translation>
         <source>%1: no reply to the sensor query</source>
         <translation>%1: keine Antwort auf die Sensorabfrage</translation>
     </message>
+    <message>
+        <source>%1: no transport for this kind of connection</source>
+        <translation>%1: für diese Art Verbindung gibt es keinen Transport</translation>
+    </message>
 </context>
 <context>
     <name>oilink::RobotLinkThread</name>
@@ -3831,13 +3910,6 @@ Gesendet: %2</translation>
     <message>
         <source>%1: the bridge closed the connection: %2</source>
         <translation>%1: die Brücke hat die Verbindung geschlossen: %2</translation>
-    </message>
-</context>
-<context>
-    <name>oilink::VirtualTransport</name>
-    <message>
-        <source>virtual %1</source>
-        <translation>virtueller %1</translation>
     </message>
 </context>
 </TS>

@@ -2390,6 +2390,81 @@ GPL-3.0-or-later.</translation>
     </message>
 </context>
 <context>
+    <name>RoomFile</name>
+    <message>
+        <source>&quot;format&quot; must be &quot;%1&quot;</source>
+        <translation>&quot;format&quot; debe ser &quot;%1&quot;</translation>
+    </message>
+    <message>
+        <source>&quot;version&quot; %1 is not one this program reads (it reads %2)</source>
+        <translation>este programa no lee la &quot;version&quot; %1 (lee la %2)</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; must be a list</source>
+        <translation>&quot;%1&quot; debe ser una lista</translation>
+    </message>
+    <message>
+        <source>%1: a wall must have some length</source>
+        <translation>%1: una pared debe tener alguna longitud</translation>
+    </message>
+    <message>
+        <source>%1: x_min must be below x_max and y_min below y_max</source>
+        <translation>%1: x_min debe ser menor que x_max e y_min menor que y_max</translation>
+    </message>
+    <message>
+        <source>virtual_wall: &quot;range_mm&quot; must be above 0, not %1</source>
+        <translation>virtual_wall: &quot;range_mm&quot; debe ser mayor que 0, no %1</translation>
+    </message>
+    <message>
+        <source>unknown key &quot;%1&quot;</source>
+        <translation>clave desconocida &quot;%1&quot;</translation>
+    </message>
+    <message>
+        <source>%1: unknown key &quot;%2&quot;</source>
+        <translation>%1: clave desconocida &quot;%2&quot;</translation>
+    </message>
+    <message>
+        <source>%1 must be a number</source>
+        <translation>%1 debe ser un número</translation>
+    </message>
+    <message>
+        <source>%1 must be a list of %2 numbers</source>
+        <translation>%1 debe ser una lista de %2 números</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; must be an object with x_mm, y_mm and heading_deg</source>
+        <translation>&quot;%1&quot; debe ser un objeto con x_mm, y_mm y heading_deg</translation>
+    </message>
+    <message>
+        <source>%1: &quot;%2&quot; is missing</source>
+        <translation>%1: falta &quot;%2&quot;</translation>
+    </message>
+    <message>
+        <source>line %1, column %2</source>
+        <translation>línea %1, columna %2</translation>
+    </message>
+    <message>
+        <source>not JSON at %1: %2</source>
+        <translation>no es JSON en %1: %2</translation>
+    </message>
+    <message>
+        <source>a room file holds one JSON object</source>
+        <translation>un archivo de sala contiene un objeto JSON</translation>
+    </message>
+    <message>
+        <source>%1: cannot read: %2</source>
+        <translation>%1: no se puede leer: %2</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>%1: cannot write: %2</source>
+        <translation>%1: no se puede escribir: %2</translation>
+    </message>
+</context>
+<context>
     <name>RtttlImport</name>
     <message>
         <source>RTTTL: %1</source>
@@ -3763,6 +3838,10 @@ Enviado: %2</translation>
         <source>%1: no reply to the sensor query</source>
         <translation>%1: sin respuesta a la consulta de sensores</translation>
     </message>
+    <message>
+        <source>%1: no transport for this kind of connection</source>
+        <translation>%1: no hay transporte para este tipo de conexión</translation>
+    </message>
 </context>
 <context>
     <name>oilink::RobotLinkThread</name>
@@ -3831,13 +3910,6 @@ Enviado: %2</translation>
     <message>
         <source>%1: the bridge closed the connection: %2</source>
         <translation>%1: el puente cerró la conexión: %2</translation>
-    </message>
-</context>
-<context>
-    <name>oilink::VirtualTransport</name>
-    <message>
-        <source>virtual %1</source>
-        <translation>%1 virtual</translation>
     </message>
 </context>
 </TS>

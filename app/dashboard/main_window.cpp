@@ -27,6 +27,7 @@
 #include "sensor_plots.h"
 #include "signal_bars.h"
 #include "song_composer.h"
+#include "transport_factory.h"
 
 #include <QAction>
 #include <QActionGroup>
@@ -63,7 +64,8 @@ std::optional<oilink::LinkSettings> singleSavedConnection(const QSettings &s)
 }
 } // namespace
 
-MainWindow::MainWindow(QWidget *parent) : QMainWindow(parent)
+MainWindow::MainWindow(QWidget *parent)
+    : QMainWindow(parent), m_room(std::make_shared<sim::Room>(sim::World::classroom()))
 {
     m_language.apply(QSettings().value("language").toString());
     setObjectName("mainWindow");
@@ -84,7 +86,11 @@ MainWindow::MainWindow(QWidget *parent) : QMainWindow(parent)
     wireInputs();
 
     connect(&m_fleet, &RobotFleet::robotAdded, this, &MainWindow::onRobotAdded);
-    connect(&m_fleet, &RobotFleet::robotRemoved, this, [this] { refreshRobotCards(); });
+    connect(&m_fleet, &RobotFleet::robotRemoved, this, [this](RobotSession *robot) {
+        if (const auto place = m_roomPlaces.take(robot); place && *place >= 0)
+            m_room->removeRobot(*place);
+        refreshRobotCards();
+    });
     connect(&m_fleet, &RobotFleet::selectionChanged, this, [this](RobotSession *robot) { showSelected(robot); });
 
     m_displayTimer.setInterval(kDisplayIntervalMs);
@@ -220,6 +226,14 @@ void MainWindow::addRobot(int kind)
 
 void MainWindow::onRobotAdded(RobotSession *robot)
 {
+    // Every transport the window knows; a virtual robot drives in the room.
+    auto place = std::make_shared<std::atomic<sim::RobotId>>(-1);
+    m_roomPlaces.insert(robot, place);
+    if (!m_fleet.hasTransportFactory())
+        robot->setTransportFactory([room = m_room, place](const oilink::LinkSettings &s) {
+            return transports::createTransport(s, s.baud, room, *place);
+        });
+    placeInRoom(robot, robot->settings());
     if (m_historyCapacity)
         robot->setHistoryCapacity(*m_historyCapacity);
     connect(robot, &RobotSession::identityChanged, this, [this, robot] {
@@ -245,6 +259,11 @@ void MainWindow::wireInputs()
     connect(m_script, &ScriptEditor::sendRequested, this, send);
     connect(m_motors, &MotorsPanel::sendRequested, this, send);
     connect(m_script, &ScriptEditor::showScriptRequested, this, [this] { session().showScript(); });
+    // A hand in the room: the map asks, the room moves the robot.
+    connect(m_map, &OdometryMap::robotMoveRequested, this,
+            [this](int robot, const oi::Pose &pose) { m_room->moveRobot(robot, pose); });
+    connect(m_map, &OdometryMap::robotLiftRequested, this,
+            [this](int robot, bool lifted) { m_room->setLifted(robot, lifted); });
     connect(m_inspector, &ByteInspector::plotRequested, this, [this](int packetId) {
         m_plots->addPlot({packetId});
         findChild<QDockWidget *>("plotsDock")->raise();
@@ -274,7 +293,9 @@ void MainWindow::wireInputs()
     connect(m_keyboard, &KeyboardDriving::stopAllRequested, &m_fleet, &RobotFleet::stopAll);
 
     connect(m_connectionBar, &ConnectionBar::connectRequested, this, [this](const ConnectionRequest &request) {
-        session().connectTo(connection::linkSettingsFor(request));
+        const oilink::LinkSettings settings = connection::linkSettingsFor(request);
+        placeInRoom(&session(), settings);
+        session().connectTo(settings);
         m_connectionBar->setConnected(true);
         m_shownSnapshot = ~0ull;
         m_liveFlagOutdated = true;
@@ -315,9 +336,6 @@ void MainWindow::showSelected(RobotSession *robot)
         connect(robot, &RobotSession::frameReceived, m_inspector, &ByteInspector::addSnapshot),
         connect(robot, &RobotSession::scriptShown, m_script, &ScriptEditor::showScriptReply),
         connect(robot, &RobotSession::scriptFailed, m_script, &ScriptEditor::showScriptFailed),
-        connect(robot, &RobotSession::virtualRobotPose, this, [this](double x, double y, double theta) {
-            m_map->setTruePose(oi::Pose{x, y, theta, 0});
-        }),
         connect(teleop, &TeleopController::passiveChanged, m_drivePad, &DrivePad::setPassive),
         connect(teleop, &TeleopController::motionStopped, this, [this] {
             m_drivePad->resetToCentre();
@@ -331,9 +349,8 @@ void MainWindow::showSelected(RobotSession *robot)
     m_map->setOdometry(&robot->odometry());
     // The virtual robot lives in the classroom world and starts where the
     // odometry does, so a class can watch the estimate drift from the room.
-    const bool virtualRobot = robot->settings().transport == oilink::TransportKind::Virtual;
-    m_map->setWorld(virtualRobot ? std::optional(sim::World::classroom()) : std::nullopt);
-    m_map->setTruePose(std::nullopt);
+    m_shownWorldVersion = 0;
+    showRoom();
     m_inspector->clear();
     m_inspector->setConnectedAt(robot->connectedAtMs());
     applyProfile(robot->robotProfile().id);
@@ -365,6 +382,56 @@ void MainWindow::showSelected(RobotSession *robot)
     m_liveFlagOutdated = true;
     refreshRobotCards();
     refreshDisplay();
+}
+
+sim::RobotId MainWindow::roomRobot() const
+{
+    const auto place = m_roomPlaces.value(m_fleet.selected());
+    return place ? place->load() : -1;
+}
+
+void MainWindow::placeInRoom(RobotSession *robot, const oilink::LinkSettings &settings)
+{
+    const auto place = m_roomPlaces.value(robot);
+    if (!place)
+        return;
+    const bool inRoom = settings.transport == oilink::TransportKind::Virtual;
+    if (inRoom && *place < 0)
+        *place = m_room->placeNewRobot();
+    if (!inRoom && *place >= 0)
+        m_room->removeRobot(place->exchange(-1));
+    const auto where = inRoom ? m_room->robot(*place) : std::nullopt;
+    robot->odometry().setStart(where ? where->pose : oi::Pose{});
+}
+
+// The room's floor and every virtual robot in it, in its robot's colour; the
+// selected one highlighted. Nothing for a robot that is not virtual.
+void MainWindow::showRoom()
+{
+    const sim::RobotId selected = roomRobot();
+    if (selected < 0) {
+        if (m_shownWorldVersion != ~0ull) {
+            m_map->setWorld(std::nullopt);
+            m_map->setTruePoses({});
+            m_map->setSelectedRobot(std::nullopt);
+            m_shownWorldVersion = ~0ull;
+        }
+        return;
+    }
+    if (m_room->worldVersion() != m_shownWorldVersion) {
+        m_shownWorldVersion = m_room->worldVersion();
+        m_map->setWorld(m_room->world());
+    }
+    QList<OdometryMap::TruePose> poses;
+    for (const sim::RobotInRoom &r : m_room->robots()) {
+        QColor colour;
+        for (auto it = m_roomPlaces.cbegin(); it != m_roomPlaces.cend(); ++it)
+            if (it.value()->load() == r.id)
+                colour = it.key()->colour();
+        poses.append({r.id, r.pose, colour, r.lifted});
+    }
+    m_map->setTruePoses(poses);
+    m_map->setSelectedRobot(selected);
 }
 
 void MainWindow::buildActions()
@@ -651,9 +718,9 @@ void MainWindow::refreshDisplay()
     // them smoothly and halves their cost.
     if (m_plots->isVisible() && m_displayTicks % 2 == 0)
         m_plots->refresh();
-    // Where the virtual robot really is, so the map shows the odometry drift.
-    if (m_map->isVisible() && robot.settings().transport == oilink::TransportKind::Virtual && m_displayTicks % 3 == 0)
-        robot.requestVirtualRobotPose();
+    // Where the virtual robots really are, so the map shows the odometry drift.
+    if (m_map->isVisible() && m_displayTicks % 3 == 0)
+        showRoom();
     if (m_displayTicks % kCardTicks == 0)
         refreshRobotCards();
 }

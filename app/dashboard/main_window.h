@@ -6,10 +6,14 @@
 #include "robot_card.h"
 #include "robot_fleet.h"
 #include "robot_session.h"
+#include "room.h"
 
+#include <QHash>
 #include <QMainWindow>
 #include <QTimer>
 
+#include <atomic>
+#include <memory>
 #include <optional>
 
 class ByteInspector;
@@ -59,6 +63,10 @@ public:
     // The selected robot.
     RobotSession &session() { return *m_fleet.selected(); }
     TeleopController &teleop() { return session().teleop(); }
+    // The room every virtual robot of the window drives in, and the selected
+    // robot's place in it (-1 when it is not a virtual robot).
+    const std::shared_ptr<sim::Room> &room() const { return m_room; }
+    sim::RobotId roomRobot() const;
     const SensorHistory &history() { return session().history(); }
     // Samples kept per channel for every robot; clears the histories. For the
     // benchmark, which fills them in minutes.
@@ -114,6 +122,10 @@ private:
     void wireInputs();
     void retranslateUi();
     void onRobotAdded(RobotSession *robot);
+    // A virtual robot gets a free spot in the room and starts its odometry
+    // there; any other gives its spot back.
+    void placeInRoom(RobotSession *robot, const oilink::LinkSettings &settings);
+    void showRoom();
     void showSelected(RobotSession *robot);
     void addRobot(int kind);
     void applyProfile(oi::ProfileId profile);
@@ -133,6 +145,10 @@ private:
     bool m_liveFlagOutdated = true;
     quint64 m_displayTicks = 0;
     QList<QMetaObject::Connection> m_selectedConnections;
+    std::shared_ptr<sim::Room> m_room;
+    quint64 m_shownWorldVersion = 0;
+    // Each robot's place in the room, read by its transport factory on the link thread.
+    QHash<const RobotSession *, std::shared_ptr<std::atomic<sim::RobotId>>> m_roomPlaces;
 
     ConnectionBar *m_connectionBar = nullptr;
     ModePanel *m_modePanel = nullptr;

@@ -10,6 +10,7 @@
 #include "stream_parser.h"
 #include "termination_signals.h"
 #include "transport.h"
+#include "transport_factory.h"
 
 #include <QCoreApplication>
 #include <QDateTime>
@@ -439,6 +440,7 @@ int streamSensors(int argc, char **argv, const std::vector<std::string> &args)
 
     QCoreApplication app(argc, argv);
     oilink::RobotLinkThread link;
+    link.setTransportFactory(transports::transportFactory());
     long long received = 0;
     int status = 0;
     bool finished = false;
@@ -512,7 +514,7 @@ int sendToRobot(int argc, char **argv, const std::vector<std::string> &args)
     const int openBaud = o.baud > 0 ? o.baud
                          : o.settings.profile ? oi::profile(*o.settings.profile).defaultBaud
                                               : oilink::ProfileProbe::defaultBauds().front();
-    std::unique_ptr<oilink::Transport> transport(oilink::createTransport(o.settings, openBaud));
+    std::unique_ptr<oilink::Transport> transport(transports::createTransport(o.settings, openBaud));
     std::unique_ptr<oilink::ProfileProbe> probe;
     oi::StreamParser parser;
     QTimer replyTimeout;

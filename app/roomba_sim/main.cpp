@@ -4,6 +4,7 @@
 
 #include "firmware_banner.h"
 #include "pty_robot_server.h"
+#include "room_file.h"
 #include "tcp_robot_server.h"
 #include "termination_signals.h"
 
@@ -93,6 +94,7 @@ int main(int argc, char *argv[])
         {QStringLiteral("tcp"), QStringLiteral("Serve raw bytes on this TCP port instead of a pseudo-terminal (0 picks a free port)."), QStringLiteral("PORT")},
         {QStringLiteral("bind"), QStringLiteral("Address to listen on with --tcp (default 127.0.0.1)."), QStringLiteral("ADDRESS"), QStringLiteral("127.0.0.1")},
         {QStringLiteral("link"), QStringLiteral("Also make a symbolic link at PATH to the pseudo-terminal (an existing link is replaced)."), QStringLiteral("PATH")},
+        {QStringLiteral("room"), QStringLiteral("The room the robot drives in: a room file (see protocol/sim/room_format.md). Default the classroom."), QStringLiteral("FILE")},
     });
 
     if (!parser.parse(QCoreApplication::arguments()))
@@ -135,6 +137,14 @@ int main(int argc, char *argv[])
             return fail(kUsageError, QStringLiteral("--firmware: '%1' is not a release name like release-3.8.2 or release-stm32-3.7.7").arg(firmware));
     }
 
+    sim::World world = sim::World::classroom();
+    if (parser.isSet(QStringLiteral("room"))) {
+        const std::optional<sim::World> loaded = sim::loadRoomFile(parser.value(QStringLiteral("room")), &message);
+        if (!loaded)
+            return fail(kUsageError, QStringLiteral("--room: %1").arg(message));
+        world = *loaded;
+    }
+
     const bool tcp = parser.isSet(QStringLiteral("tcp"));
     quint16 port = 0;
     QHostAddress address;
@@ -168,6 +178,9 @@ int main(int argc, char *argv[])
         pty = std::make_unique<sim::PtyRobotServer>(*profile, seed);
         robot = &pty->robot().robot();
     }
+    // The robot stands at the room's start.
+    const auto room = std::make_shared<sim::Room>(world);
+    robot->joinRoom(room, room->placeNewRobot());
     robot->setFaultRates(rates);
     if (!firmware.isEmpty())
         robot->setFirmwareRelease(firmware.toStdString());

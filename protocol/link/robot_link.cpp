@@ -174,9 +174,9 @@ void RobotLink::close()
 
 Transport *RobotLink::makeTransport()
 {
-    if (m_factory)
-        return m_factory(m_settings);
-    return createTransport(m_settings, baud() > 0 ? baud() : ProfileProbe::defaultBauds().front());
+    LinkSettings settings = m_settings;
+    settings.baud = baud() > 0 ? baud() : ProfileProbe::defaultBauds().front();
+    return m_factory ? m_factory(settings) : createTransport(settings, settings.baud);
 }
 
 void RobotLink::openTransport()
@@ -184,6 +184,13 @@ void RobotLink::openTransport()
     if (m_state == LinkState::Closed || m_transport)
         return;
     Transport *transport = makeTransport();
+    if (!transport) {
+        // A configuration this link cannot serve will not start working.
+        reportError(tr("%1: no transport for this kind of connection").arg(m_settings.describe()), false);
+        m_statsTick.stop();
+        setState(LinkState::Closed);
+        return;
+    }
     transport->setParent(this);
     m_transport = transport;
     m_transportOpen = false;

@@ -39,7 +39,8 @@ class RobotLink : public QObject {
     Q_OBJECT
 public:
     // Makes the transport for the settings; the link takes ownership. Called
-    // on the link's thread at every (re)connect.
+    // on the link's thread at every (re)connect, with the baud to open at
+    // in the settings. transports::transportFactory() knows every kind.
     using TransportFactory = std::function<Transport *(const LinkSettings &)>;
 
     static constexpr int kStaleAfterMs = 100;
@@ -50,7 +51,8 @@ public:
     explicit RobotLink(QObject *parent = nullptr);
     ~RobotLink() override;
 
-    // Replaces the built-in transports (tests, other bridges). Before open().
+    // Replaces the link's own transports (serial, TCP, replay), which know
+    // no virtual robot. Before open().
     void setTransportFactory(TransportFactory factory);
 
     LinkState state() const { return m_state; }

@@ -1,9 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "robot_link_thread.h"
 
-#include "real_time_robot.h"
-#include "virtual_transport.h"
-
 #include <QCoreApplication>
 
 #include <sys/resource.h>
@@ -110,24 +107,6 @@ void RobotLinkThread::showScript()
         QMetaObject::invokeMethod(m_link, [link = m_link.data()] { link->showScript(); }, Qt::QueuedConnection);
     else
         emit scriptFailed(tr("not connected: Show Script was not sent"));
-}
-
-void RobotLinkThread::requestVirtualRobotPose()
-{
-    if (!m_link || !m_thread.isRunning())
-        return;
-    QMetaObject::invokeMethod(
-        m_link,
-        [this, link = m_link.data()] {
-            // On the link's thread, where the transport and its robot live.
-            if (auto *virtualRobot = qobject_cast<VirtualTransport *>(link->transport());
-                virtualRobot && virtualRobot->robot()) {
-                const oi::Pose pose = virtualRobot->robot()->robot().truePose();
-                QMetaObject::invokeMethod(this, [this, pose] { emit virtualRobotPose(pose.xMm, pose.yMm, pose.thetaRad); },
-                                          Qt::QueuedConnection);
-            }
-        },
-        Qt::QueuedConnection);
 }
 
 void RobotLinkThread::startRecording(const QString &path)

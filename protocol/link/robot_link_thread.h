@@ -21,7 +21,8 @@ public:
     explicit RobotLinkThread(QObject *parent = nullptr);
     ~RobotLinkThread() override; // stop()
 
-    // Replaces the built-in transports; called on the worker thread. Before start().
+    // Replaces the link's own transports (see RobotLink::setTransportFactory);
+    // called on the worker thread. Before start().
     void setTransportFactory(RobotLink::TransportFactory factory);
 
     // Starts the worker thread (open() does it too). Idempotent.
@@ -48,9 +49,6 @@ public slots:
     void send(const QByteArray &bytes);
     void querySensors(const QList<int> &packetIds);
     void showScript();
-    // On the in-process virtual robot: asks where it really is; the answer
-    // comes as virtualRobotPose(). Nothing happens on other transports.
-    void requestVirtualRobotPose();
     void startRecording(const QString &path);
     void stopRecording();
     void controlReplay(const oilink::ReplayCommand &command);
@@ -66,7 +64,6 @@ signals:
     void rawBytesSent(const QByteArray &bytes);
     void rawBytesReceived(const QByteArray &bytes);
     void errorOccurred(const QString &message);
-    void virtualRobotPose(double xMm, double yMm, double thetaRad);
     void recordingStatus(const oilink::RecordingStatus &status);
     void replayStatus(const oilink::ReplayStatus &status);
 

@@ -4,7 +4,6 @@
 #include "replay_transport.h"
 #include "serial_transport.h"
 #include "tcp_transport.h"
-#include "virtual_transport.h"
 
 namespace oilink {
 
@@ -30,9 +29,9 @@ Transport *createTransport(const LinkSettings &settings, int baud, QObject *pare
     case TransportKind::Replay:
         return new ReplayTransport(settings.replayPath, parent);
     case TransportKind::Virtual:
-        break;
+        break; // the link does not know the simulator (transport_factory.h does)
     }
-    return new VirtualTransport(settings.virtualRobot, settings.virtualSeed, parent);
+    return nullptr;
 }
 
 } // namespace oilink

@@ -45,8 +45,10 @@ signals:
     void closed();
 };
 
-// The built-in transport for the settings: a serial port opened at `baud`,
-// a TCP connection, or the in-process virtual robot.
+// The link's own transport for the settings: a serial port opened at `baud`,
+// a TCP connection or a replay. nullptr for a virtual robot, which the
+// link does not know: transports::createTransport (transport_factory.h)
+// knows every kind.
 Transport *createTransport(const LinkSettings &settings, int baud, QObject *parent = nullptr);
 
 } // namespace oilink

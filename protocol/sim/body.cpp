@@ -32,6 +32,9 @@ constexpr double kCliffInsetMm = 15;
 // a little from one another, as real ones do.
 constexpr int kCliffFloorSignal[4] = {2650, 2480, 2390, 2720};
 constexpr int kCliffDropSignal[4] = {18, 25, 31, 12};
+// Half the width of the spot a cliff sensor lights: over this much either
+// side of an edge its signal falls from the floor's to the drop's.
+constexpr double kCliffSpotMm = 6;
 
 constexpr double kCasterForwardMm = 130; // the Create's front caster
 
@@ -76,15 +79,47 @@ std::optional<double> rayToSegment(Vec2 origin, Vec2 dir, const Segment &s)
     return t;
 }
 
-// Distance along a ray to the nearest wall within `range`, or -1.
-double rayDistance(const World &world, Vec2 origin, double directionRad, double range)
+// Where a ray (unit `dir`) enters a disc, if it does ahead of its origin.
+std::optional<double> rayToDisc(Vec2 origin, Vec2 dir, const Disc &d)
+{
+    const Vec2 oc = minus(origin, Vec2{d.x, d.y});
+    const double b = oc.x * dir.x + oc.y * dir.y;
+    const double c = oc.x * oc.x + oc.y * oc.y - d.radiusMm * d.radiusMm;
+    const double disc = b * b - c;
+    if (disc < 0)
+        return std::nullopt;
+    const double t = -b - std::sqrt(disc);
+    if (t < 0)
+        return std::nullopt; // behind, or the origin is inside it
+    return t;
+}
+
+// What a ray meets first within its range: how far (-1 for nothing), and
+// how squarely (the cosine between the ray and the surface's normal).
+struct RayHit {
+    double distance = -1;
+    double facing = 0;
+};
+
+RayHit castRay(const World &world, std::span<const Disc> others, Vec2 origin, double directionRad, double range)
 {
     const Vec2 dir{std::cos(directionRad), std::sin(directionRad)};
     double best = std::numeric_limits<double>::infinity();
+    Vec2 normal{};
     for (const Segment &w : world.walls)
-        if (const auto t = rayToSegment(origin, dir, w))
-            best = std::min(best, *t);
-    return best <= range ? best : -1;
+        if (const auto t = rayToSegment(origin, dir, w); t && *t < best) {
+            best = *t;
+            const Vec2 e{w.x2 - w.x1, w.y2 - w.y1};
+            normal = {-e.y / length(e), e.x / length(e)};
+        }
+    for (const Disc &d : others)
+        if (const auto t = rayToDisc(origin, dir, d); t && *t < best) {
+            best = *t;
+            normal = {(origin.x + *t * dir.x - d.x) / d.radiusMm, (origin.y + *t * dir.y - d.y) / d.radiusMm};
+        }
+    if (best > range)
+        return {};
+    return {best, std::abs(dir.x * normal.x + dir.y * normal.y)};
 }
 
 // A gentle pattern of the floor's brightness, so cliff signals are not flat.
@@ -94,6 +129,21 @@ bool overDropOff(const World &world, Vec2 p)
 {
     return std::any_of(world.dropOffs.begin(), world.dropOffs.end(),
                        [p](const Area &a) { return isInside(a, p); });
+}
+
+// How far `p` is from the nearest edge of a drop: positive over the floor,
+// negative out over the drop.
+double floorMarginMm(const World &world, Vec2 p)
+{
+    double margin = std::numeric_limits<double>::infinity();
+    for (const Area &a : world.dropOffs) {
+        if (isInside(a, p))
+            return -std::min({p.x - a.xMin, a.xMax - p.x, p.y - a.yMin, a.yMax - p.y});
+        const double dx = std::max({a.xMin - p.x, 0.0, p.x - a.xMax});
+        const double dy = std::max({a.yMin - p.y, 0.0, p.y - a.yMax});
+        margin = std::min(margin, std::hypot(dx, dy));
+    }
+    return margin;
 }
 
 bool withinAngle(double rad, double lo, double hi) { return rad >= lo && rad <= hi; }
@@ -152,10 +202,13 @@ FloorContact senseFloor(const World &world, const oi::Pose &pose)
     FloorContact f;
     for (int i = 0; i < 4; ++i) {
         const Vec2 p = rimPoint(pose, kCliffBearing[i], kCliffInsetMm);
-        f.cliff[i] = overDropOff(world, p);
-        const int signal = (f.cliff[i] ? kCliffDropSignal[i] : kCliffFloorSignal[i])
-                           + floorTexture(p) / (f.cliff[i] ? 6 : 1);
-        f.cliffSignal[i] = std::clamp(signal, 0, 4095);
+        const double margin = floorMarginMm(world, p);
+        f.cliff[i] = margin < 0;
+        // The part of the sensor's spot still on the floor.
+        const double lit = std::clamp((margin + kCliffSpotMm) / (2 * kCliffSpotMm), 0.0, 1.0);
+        const double floor = kCliffFloorSignal[i] + floorTexture(p);
+        const double drop = kCliffDropSignal[i] + floorTexture(p) / 6;
+        f.cliffSignal[i] = std::clamp(int(std::lround(drop + lit * (floor - drop))), 0, 4095);
     }
     f.wheelDropLeft = overDropOff(world, bodyPoint(pose, 0, oi::kWheelBaseMm / 2));
     f.wheelDropRight = overDropOff(world, bodyPoint(pose, 0, -oi::kWheelBaseMm / 2));
@@ -170,29 +223,38 @@ FloorContact senseFloor(const World &world, const oi::Pose &pose)
     return f;
 }
 
-ObstacleContact senseObstacles(const World &world, const oi::Pose &pose)
+ObstacleContact senseObstacles(const World &world, const oi::Pose &pose, std::span<const Disc> others)
 {
     ObstacleContact o;
     const Vec2 centre{pose.xMm, pose.yMm};
-    for (const Segment &w : world.walls) {
-        Vec2 q;
-        if (distanceToSegment(centre, w, &q) > kBodyRadiusMm + kBumpContactMm)
-            continue;
-        // The bumper wraps the front half; where it is pressed decides the
-        // side, and a hit near the middle presses both switches.
+    // The bumper wraps the front half; where it is pressed (q) decides the
+    // side, and a hit near the middle presses both switches.
+    const auto press = [&](Vec2 q) {
         const double bearing = normalizedAngle(std::atan2(q.y - centre.y, q.x - centre.x) - pose.thetaRad);
         if (std::abs(bearing) > kPi / 2)
-            continue;
+            return;
         if (bearing > deg(-10))
             o.bumpLeft = true;
         if (bearing < deg(10))
             o.bumpRight = true;
+    };
+    for (const Segment &w : world.walls) {
+        Vec2 q;
+        if (distanceToSegment(centre, w, &q) <= kBodyRadiusMm + kBumpContactMm)
+            press(q);
     }
-    o.wallDistanceMm = rayDistance(world, rimPoint(pose, kWallSensorBearing),
-                                   pose.thetaRad - kPi / 2, kWallSensorRangeMm);
-    for (int i = 0; i < 6; ++i)
-        o.lightBumpMm[i] = rayDistance(world, rimPoint(pose, kLightBumperBearing[i]),
-                                       pose.thetaRad + kLightBumperBearing[i], kLightBumperRangeMm);
+    for (const Disc &d : others)
+        if (length(minus(Vec2{d.x, d.y}, centre)) <= kBodyRadiusMm + d.radiusMm + kBumpContactMm)
+            press({d.x, d.y});
+    o.wallDistanceMm = castRay(world, others, rimPoint(pose, kWallSensorBearing), pose.thetaRad - kPi / 2,
+                               kWallSensorRangeMm)
+                           .distance;
+    for (int i = 0; i < 6; ++i) {
+        const RayHit hit = castRay(world, others, rimPoint(pose, kLightBumperBearing[i]),
+                                   pose.thetaRad + kLightBumperBearing[i], kLightBumperRangeMm);
+        o.lightBumpMm[i] = hit.distance;
+        o.lightBumpFacing[i] = hit.facing;
+    }
     return o;
 }
 
@@ -277,7 +339,8 @@ InfraredView senseInfrared(const World &world, const oi::Pose &pose, const oi::R
     return view;
 }
 
-BodyMove moveBody(const World &world, oi::Pose &pose, double leftMm, double rightMm, bool traction)
+BodyMove moveBody(const World &world, oi::Pose &pose, double leftMm, double rightMm, bool traction,
+                  std::span<const Disc> others)
 {
     BodyMove move{leftMm, rightMm, false};
     if (!traction)
@@ -306,6 +369,12 @@ BodyMove moveBody(const World &world, oi::Pose &pose, double leftMm, double righ
             move.blocked = true;
             break;
         }
+    }
+    for (const Disc &d : others) {
+        const Vec2 c{d.x, d.y};
+        const double after = length(minus(to, c));
+        if (after < kBodyRadiusMm + d.radiusMm && after < length(minus(from, c)) - 1e-9)
+            move.blocked = true;
     }
     if (move.blocked) {
         next.xMm = pose.xMm;

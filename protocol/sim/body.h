@@ -1,10 +1,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
-#include "virtual_robot.h"
+#include "odometry.h"
+#include "robot_profile.h"
+#include "world.h"
 
 #include <array>
 #include <cstdint>
+#include <span>
 
 // The robot's body in its world: where its sensors sit, what they see, and
 // how the wheels move it. Plain functions of the world and a pose, so the
@@ -18,6 +21,12 @@ inline constexpr double kBumpContactMm = 1.0;
 
 struct Vec2 {
     double x = 0, y = 0;
+};
+
+// Another robot's body as this one's bumper, light bumpers and wheels meet
+// it: a disc on the floor.
+struct Disc {
+    double x = 0, y = 0, radiusMm = kBodyRadiusMm;
 };
 
 // A point given in the robot's frame (x forward, y left), in the world.
@@ -39,13 +48,17 @@ struct FloorContact {
 };
 FloorContact senseFloor(const World &world, const oi::Pose &pose);
 
-// What the bumper, the wall sensor and the light bumpers report.
+// What the bumper, the wall sensor and the light bumpers report; other
+// robots (`others`) are met as walls are.
 struct ObstacleContact {
     bool bumpLeft = false, bumpRight = false;
     double wallDistanceMm = -1;               // from the wall sensor, -1 when nothing in range
     std::array<double, 6> lightBumpMm{};      // by oi::LightBumper, -1 when nothing in range
+    // How squarely each light bumper looks at what it sees: 1 head-on,
+    // towards 0 at a glancing angle, which sends less light back.
+    std::array<double, 6> lightBumpFacing{};
 };
-ObstacleContact senseObstacles(const World &world, const oi::Pose &pose);
+ObstacleContact senseObstacles(const World &world, const oi::Pose &pose, std::span<const Disc> others = {});
 
 // Infrared the receivers see: the dock's beams and the virtual wall.
 struct InfraredView {
@@ -60,10 +73,11 @@ struct BodyMove {
     bool blocked = false;           // a wall stopped the body moving on
 };
 // Moves the body by the wheels' travel (differential drive on
-// oi::kWheelBaseMm). A wall in the way stops the translation and leaves the
+// oi::kWheelBaseMm). A wall or another robot in the way stops the translation and leaves the
 // turn: the wheels stall against it, so their travel is what the body did.
 // Without traction (a drive wheel hanging in the air) the body stays where it
 // is and the wheels spin freely.
-BodyMove moveBody(const World &world, oi::Pose &pose, double leftMm, double rightMm, bool traction);
+BodyMove moveBody(const World &world, oi::Pose &pose, double leftMm, double rightMm, bool traction,
+                  std::span<const Disc> others = {});
 
 } // namespace sim

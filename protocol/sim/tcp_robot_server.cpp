@@ -6,6 +6,10 @@
 
 namespace sim {
 
+namespace {
+constexpr int kCloseWaitMs = 500;
+}
+
 TcpRobotServer::TcpRobotServer(const oi::RobotProfile &profile, std::uint32_t seed, QObject *parent)
     : QObject(parent), m_robot(profile, seed, this), m_server(new QTcpServer(this))
 {
@@ -31,8 +35,12 @@ void TcpRobotServer::close()
     m_robot.stop();
     m_server->close();
     if (m_client) {
+        // What the robot said goes out, then an orderly end of the
+        // connection, so the client sees the peer close rather than a reset.
         m_client->disconnect(this);
-        m_client->abort();
+        m_client->disconnectFromHost();
+        if (m_client->state() != QAbstractSocket::UnconnectedState)
+            m_client->waitForDisconnected(kCloseWaitMs);
         m_client->deleteLater();
         m_client = nullptr;
         emit clientConnectedChanged(false);

@@ -257,6 +257,11 @@ struct VirtualRobot::State {
     FloorContact floor;
     bool floorDirty = true;
 
+    // A room shared with other robots (joinRoom), or none.
+    std::shared_ptr<Room> room;
+    RobotId roomId = 0;
+    RoomView roomView;
+
     bool create1() const { return profile->id == oi::ProfileId::Create1; }
     bool songPlaying() const { return now < songEndsAt; }
 
@@ -268,9 +273,16 @@ struct VirtualRobot::State {
         }
         return floor;
     }
-    bool wheelDropLeft() { return leftLifted || floorContact().wheelDropLeft; }
-    bool wheelDropRight() { return rightLifted || floorContact().wheelDropRight; }
-    bool wheelDropCaster() { return create1() && (casterLifted || floorContact().wheelDropCaster); }
+    bool wheelDropLeft() { return leftLifted || roomView.lifted || floorContact().wheelDropLeft; }
+    bool wheelDropRight() { return rightLifted || roomView.lifted || floorContact().wheelDropRight; }
+    bool wheelDropCaster() { return create1() && (casterLifted || roomView.lifted || floorContact().wheelDropCaster); }
+    ObstacleContact obstacles() const { return senseObstacles(world, pose, roomView.others); }
+
+    void stepInRoom()
+    {
+        if (room && room->step(roomId, pose, world, roomView))
+            floorDirty = true;
+    }
     bool onDock() { return floorContact().onDockContacts; }
     // The charger charges in Passive (and while off or asleep), not in Safe or Full.
     bool charging() { return onDock() && (mode == OiMode::Passive || mode == OiMode::Off); }
@@ -525,7 +537,7 @@ struct VirtualRobot::State {
         if (leftTravel != 0 || rightTravel != 0) {
             const bool traction = !wheelDropLeft() && !wheelDropRight();
             const double xBefore = pose.xMm, yBefore = pose.yMm;
-            const BodyMove m = moveBody(world, pose, leftTravel, rightTravel, traction);
+            const BodyMove m = moveBody(world, pose, leftTravel, rightTravel, traction, roomView.others);
             floorDirty = true;
             blocked = m.blocked;
             wheelLeftMm += m.leftMm;
@@ -565,12 +577,12 @@ struct VirtualRobot::State {
         case 5:
         case 6:
         case 7: {
-            const ObstacleContact o = senseObstacles(world, pose);
+            const ObstacleContact o = obstacles();
             on = which == 5 ? (o.bumpLeft || o.bumpRight) : which == 6 ? o.bumpLeft : o.bumpRight;
             break;
         }
         case 8: on = senseInfrared(world, pose, *profile).virtualWall; break;
-        case 9: on = wallSeen(senseObstacles(world, pose).wallDistanceMm); break;
+        case 9: on = wallSeen(obstacles().wallDistanceMm); break;
         case 10: {
             const auto &c = floorContact().cliff;
             on = std::any_of(c.begin(), c.end(), [](bool b) { return b; });
@@ -649,11 +661,13 @@ struct VirtualRobot::State {
         while (now < end) {
             const Microseconds nextTick = (now / kTick + 1) * kTick;
             const Microseconds stepEnd = std::min(end, nextTick);
+            stepInRoom();
             integrate(stepEnd - now);
             now = stepEnd;
             if (now == nextTick)
                 tick();
         }
+        stepInRoom(); // the room hears where the last step ended
     }
 
     // --- Sensors ---
@@ -668,11 +682,12 @@ struct VirtualRobot::State {
         return int(std::lround(full / (1 + (distance / 25) * (distance / 25))));
     }
 
-    static int lightBumpSignal(double distance)
+    // A surface seen at a slant sends back less of the light.
+    static int lightBumpSignal(double distance, double facing)
     {
         if (distance < 0)
             return 0;
-        return int(std::lround(4095 / (1 + (distance / 35) * (distance / 35))));
+        return int(std::lround(4095 * (0.3 + 0.7 * facing) / (1 + (distance / 35) * (distance / 35))));
     }
 
     // Every packet of the profile as the robot would report it now. Distance
@@ -683,7 +698,7 @@ struct VirtualRobot::State {
         for (const oi::PacketInfo &p : profile->packets())
             s.set(p.id, 0);
         const FloorContact f = floorContact();
-        const ObstacleContact o = senseObstacles(world, pose);
+        const ObstacleContact o = obstacles();
         const InfraredView ir = senseInfrared(world, pose, *profile);
 
         std::int32_t bumps = (o.bumpRight ? oi::bit::BumpRight : 0) | (o.bumpLeft ? oi::bit::BumpLeft : 0)
@@ -743,7 +758,7 @@ struct VirtualRobot::State {
         }
         std::int32_t lightBits = 0;
         for (int i = 0; i < 6; ++i) {
-            const int signal = lightBumpSignal(o.lightBumpMm[std::size_t(i)]);
+            const int signal = lightBumpSignal(o.lightBumpMm[std::size_t(i)], o.lightBumpFacing[std::size_t(i)]);
             s.set(46 + i, signal);
             if (signal >= 400)
                 lightBits |= 1 << i;
@@ -1078,6 +1093,15 @@ void VirtualRobot::placeAt(oi::Pose pose)
 }
 
 const oi::Pose &VirtualRobot::truePose() const { return m_state->pose; }
+
+void VirtualRobot::joinRoom(std::shared_ptr<Room> room, RobotId id)
+{
+    State &s = *m_state;
+    s.room = std::move(room);
+    s.roomId = id;
+    s.roomView = {};
+    s.stepInRoom();
+}
 
 void VirtualRobot::setWheelsLifted(bool left, bool right, bool caster)
 {

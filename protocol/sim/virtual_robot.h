@@ -3,10 +3,12 @@
 
 #include "odometry.h"
 #include "result.h"
+#include "room.h"
 #include "robot_profile.h"
 #include "schedule.h"
 #include "sensor_snapshot.h"
 #include "song.h"
+#include "world.h"
 
 #include <array>
 #include <chrono>
@@ -20,35 +22,6 @@
 namespace sim {
 
 using Microseconds = std::chrono::microseconds;
-
-// A line segment on the floor, in mm. +x is the robot's forward at the
-// start pose, +y its left.
-struct Segment {
-    double x1 = 0, y1 = 0, x2 = 0, y2 = 0;
-};
-
-// A rectangle on the floor, in mm.
-struct Area {
-    double xMin = 0, yMin = 0, xMax = 0, yMax = 0;
-};
-
-// The small 2D world the robot drives in.
-struct World {
-    std::vector<Segment> walls;    // bumps, wall signal, light bumpers
-    std::vector<Area> dropOffs;    // no floor here: cliff sensors and wheel drops
-    struct Dock {
-        double x = 0, y = 0, headingRad = 0; // where the contacts are, facing out
-    };
-    std::optional<Dock> dock;      // IR buoys and force field; charging when on it
-    struct VirtualWallBeacon {
-        double x = 0, y = 0, headingRad = 0, rangeMm = 1500;
-    };
-    std::optional<VirtualWallBeacon> virtualWall;
-
-    // A 4 m x 3 m room with a dock, a table edge (drop-off) and a virtual
-    // wall: what the dashboard shows on first start.
-    static World classroom();
-};
 
 // Noise on the line, as probabilities per byte sent by the robot.
 struct FaultRates {
@@ -86,6 +59,12 @@ public:
     const World &world() const;
     void placeAt(oi::Pose pose); // also used by tests to lift it off a cliff
     const oi::Pose &truePose() const;
+    // From now on the robot is robot `id` of `room`, which others may share:
+    // at every millisecond of its clock it takes the room's floor (instead of
+    // setWorld's), meets the other robots as bodies, writes its pose there
+    // and takes a hand move or lift made through the room. It starts where
+    // the room has it. The room must already hold `id`.
+    void joinRoom(std::shared_ptr<Room> room, RobotId id);
     // Lifts wheels off the floor by hand (wheel drops), beside what the world does.
     void setWheelsLifted(bool left, bool right, bool caster = false);
     void pressButtons(std::uint8_t packet18Bits); // held until released with 0

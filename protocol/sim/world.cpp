@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "virtual_robot.h"
+#include "world.h"
 
 namespace sim {
 
@@ -9,6 +9,7 @@ World World::classroom()
     // drive a metre square before it meets anything.
     constexpr double kBack = -1000, kFront = 3000, kRight = -1500, kLeft = 1500;
     World w;
+    w.name = "Classroom";
     w.walls = {
         {kBack, kRight, kFront, kRight}, // the four walls of the room
         {kFront, kRight, kFront, kLeft},

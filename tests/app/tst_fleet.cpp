@@ -7,7 +7,7 @@
 #include "recording_transport.h"
 #include "robot_list.h"
 #include "saved_robots.h"
-#include "transport.h"
+#include "transport_factory.h"
 #include "sensor_plots.h"
 
 #include <QDockWidget>
@@ -55,7 +55,7 @@ struct FleetRig {
         window.fleet().setTransportFactory([this](const oilink::LinkSettings &s) -> oilink::Transport * {
             if (const auto r = recordings.find(s.portPath); r != recordings.end())
                 return new RecordingTransport(&r->second);
-            return oilink::createTransport(s, oi::profile(oi::ProfileId::Create2).defaultBaud);
+            return transports::createTransport(s, oi::profile(oi::ProfileId::Create2).defaultBaud);
         });
         window.resize(1400, 900);
     }

@@ -4,7 +4,6 @@
 #include "main_window.h"
 #include "connection_bar.h"
 #include "mode_panel.h"
-#include "real_time_robot.h"
 #include "recording_transport.h"
 #include "robot_diagram.h"
 #include "odometry_map.h"
@@ -14,7 +13,6 @@
 #include "schedule_editor.h"
 #include "script_editor.h"
 #include "transport.h"
-#include "virtual_transport.h"
 
 #include <QComboBox>
 #include <QDir>
@@ -113,23 +111,14 @@ private slots:
     // (into ROOMBA_SCREENSHOTS when set).
     void wallAndCliff()
     {
-        QPointer<oilink::VirtualTransport> transport;
         MainWindow window;
-        window.fleet().setTransportFactory([&transport](const oilink::LinkSettings &) {
-            auto *t = new oilink::VirtualTransport(oi::ProfileId::Create2, 1);
-            transport = t;
-            return t;
-        });
         window.resize(1400, 900);
         window.show();
         window.start(oilink::LinkSettings::virtualRobotOf(oi::ProfileId::Create2, oi::ProfileId::Create2));
         QTRY_COMPARE_WITH_TIMEOUT(window.session().state(), oilink::LinkState::Streaming, 10000);
-        QVERIFY(transport);
-        const auto placeRobot = [&transport](oi::Pose pose) {
-            QMetaObject::invokeMethod(
-                transport, [t = transport.data(), pose] { t->robot()->robot().placeAt(pose); },
-                Qt::BlockingQueuedConnection);
-        };
+        // Put down by hand in the window's room; the robot's thread takes
+        // it before the next command reaches it.
+        const auto placeRobot = [&window](oi::Pose pose) { window.room()->moveRobot(window.roomRobot(), pose); };
         const oi::CommandEncoder encoder(oi::profile(oi::ProfileId::Create2));
         const auto send = [&window](const oi::EncodeResult &bytes) {
             QVERIFY(window.session().send(QByteArray(reinterpret_cast<const char *>(bytes->data()),

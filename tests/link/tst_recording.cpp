@@ -4,6 +4,7 @@
 #include "recording_file.h"
 #include "replay_transport.h"
 #include "robot_link.h"
+#include "transport_factory.h"
 
 #include "stream_parser.h"
 
@@ -40,6 +41,7 @@ QList<oi::SensorSnapshot> snapshotsOf(const QSignalSpy &spy)
 QList<oi::SensorSnapshot> recordVirtualRobot(const QString &path)
 {
     RobotLink link;
+    link.setTransportFactory(transports::transportFactory());
     QSignalSpy snapshots(&link, &RobotLink::snapshot);
     link.open(LinkSettings::virtualRobotOf(oi::ProfileId::Create2, oi::ProfileId::Create2));
     link.startRecording(path);
@@ -148,6 +150,7 @@ private slots:
         QTemporaryDir dir;
         const QString path = dir.filePath("live.oirec");
         RobotLink link;
+        link.setTransportFactory(transports::transportFactory());
         QSignalSpy status(&link, &RobotLink::recordingStatus);
         link.open(LinkSettings::virtualRobotOf(oi::ProfileId::Create2, oi::ProfileId::Create2));
         link.startRecording(path);
@@ -167,6 +170,7 @@ private slots:
     void unwritablePathIsReported()
     {
         RobotLink link;
+        link.setTransportFactory(transports::transportFactory());
         QSignalSpy status(&link, &RobotLink::recordingStatus);
         link.startRecording("/nonexistent-dir/x.oirec");
         QCOMPARE(status.size(), 1);

@@ -437,6 +437,21 @@ private slots:
         QVERIFY(message.startsWith(QString("127.0.0.1:%1").arg(bridge.serverPort())));
         link.close();
     }
+
+    // The link knows no simulator: asked for a virtual robot without a
+    // transport factory, it says so once and closes.
+    void aVirtualRobotNeedsAFactory()
+    {
+        oilink::RobotLink link;
+        QSignalSpy errors(&link, &oilink::RobotLink::errorOccurred);
+        QSignalSpy states(&link, &oilink::RobotLink::stateChanged);
+        link.open(oilink::LinkSettings::virtualRobotOf(oi::ProfileId::Create2, oi::ProfileId::Create2));
+        QCOMPARE(link.state(), oilink::LinkState::Closed);
+        QCOMPARE(errors.size(), 1);
+        QCOMPARE(errors.first().at(0).toString(), QString("virtual Roomba 600 / Create 2: no transport for this kind of connection"));
+        QCOMPARE(states.last().at(0).value<oilink::LinkState>(), oilink::LinkState::Closed);
+        QVERIFY(!link.transport());
+    }
 };
 
 QTEST_GUILESS_MAIN(TestRobotLink)

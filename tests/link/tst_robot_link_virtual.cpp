@@ -4,6 +4,7 @@
 #include "real_time_robot.h"
 #include "robot_link.h"
 #include "robot_link_thread.h"
+#include "transport_factory.h"
 #include "virtual_transport.h"
 
 #include <QSignalSpy>
@@ -25,7 +26,7 @@ constexpr int kTimeoutMs = 10000;
 
 sim::VirtualRobot &robotOf(const RobotLink &link)
 {
-    auto *transport = qobject_cast<oilink::VirtualTransport *>(link.transport());
+    auto *transport = qobject_cast<sim::VirtualTransport *>(link.transport());
     return transport->robot()->robot();
 }
 
@@ -46,6 +47,7 @@ private slots:
     void snapshotsArriveWithStatistics()
     {
         RobotLink link;
+        link.setTransportFactory(transports::transportFactory());
         QSignalSpy snapshots(&link, &RobotLink::snapshot);
         QSignalSpy stats(&link, &RobotLink::statistics);
         link.open(LinkSettings::virtualRobotOf(oi::ProfileId::Create2, oi::ProfileId::Create2));
@@ -70,6 +72,7 @@ private slots:
     void staleDuringAStallThenStreamingAgain()
     {
         RobotLink link;
+        link.setTransportFactory(transports::transportFactory());
         QSignalSpy stateSpy(&link, &RobotLink::stateChanged);
         link.open(LinkSettings::virtualRobotOf(oi::ProfileId::Create2, oi::ProfileId::Create2));
         QTRY_COMPARE_WITH_TIMEOUT(link.state(), LinkState::Streaming, kTimeoutMs);
@@ -82,6 +85,7 @@ private slots:
     void sensorQueryWhileStreaming()
     {
         RobotLink link;
+        link.setTransportFactory(transports::transportFactory());
         QSignalSpy replies(&link, &RobotLink::sensorReply);
         QSignalSpy snapshots(&link, &RobotLink::snapshot);
         QSignalSpy errors(&link, &RobotLink::errorOccurred);
@@ -120,6 +124,7 @@ private slots:
         QFETCH(oi::ProfileId, found);
         QFETCH(QList<int>, packets);
         RobotLink link;
+        link.setTransportFactory(transports::transportFactory());
         QSignalSpy started(&link, &RobotLink::streamStarted);
         QSignalSpy snapshots(&link, &RobotLink::snapshot);
         QSignalSpy sent(&link, &RobotLink::rawBytesSent);
@@ -137,9 +142,10 @@ private slots:
     void closeLeavesTheRobotStoppedInPassive()
     {
         RobotLink link;
+        link.setTransportFactory(transports::transportFactory());
         link.open(LinkSettings::virtualRobotOf(oi::ProfileId::Create2, oi::ProfileId::Create2));
         QTRY_COMPARE_WITH_TIMEOUT(link.state(), LinkState::Streaming, kTimeoutMs);
-        auto *transport = qobject_cast<oilink::VirtualTransport *>(link.transport());
+        auto *transport = qobject_cast<sim::VirtualTransport *>(link.transport());
         QVERIFY(transport);
         link.send(bytes({131}));                 // Safe
         link.send(bytes({137, 0, 100, 128, 0})); // Drive 100 mm/s straight
@@ -160,6 +166,7 @@ private slots:
     void onAWorkerThread()
     {
         RobotLinkThread link;
+        link.setTransportFactory(transports::transportFactory());
         QSignalSpy snapshots(&link, &RobotLinkThread::snapshot);
         QSignalSpy replies(&link, &RobotLinkThread::sensorReply);
         QSignalSpy states(&link, &RobotLinkThread::stateChanged);
@@ -193,6 +200,7 @@ private slots:
     void aStoppedHelperOpensAgain()
     {
         RobotLinkThread link;
+        link.setTransportFactory(transports::transportFactory());
         QSignalSpy snapshots(&link, &RobotLinkThread::snapshot);
         link.open(LinkSettings::virtualRobotOf(oi::ProfileId::Create1, oi::ProfileId::Create1));
         QTRY_VERIFY_WITH_TIMEOUT(snapshots.size() >= 3, kTimeoutMs);
@@ -201,6 +209,39 @@ private slots:
         link.open(LinkSettings::virtualRobotOf(oi::ProfileId::Create2, oi::ProfileId::Create2));
         QTRY_VERIFY_WITH_TIMEOUT(snapshots.size() >= 3, kTimeoutMs);
         QCOMPARE(snapshots.last().at(0).value<oi::SensorSnapshot>().robotProfile().id, oi::ProfileId::Create2);
+    }
+
+    // Two robots of one room, each on its own link thread: one drives into
+    // the other, and both bumpers say so through their links; the room,
+    // read on this thread, has them side by side.
+    void twoRobotsInOneRoomEachOnItsThread()
+    {
+        auto room = std::make_shared<sim::Room>(sim::World{});
+        const sim::RobotId mover = room->addRobotAt({0, 0, 0, 0});
+        const sim::RobotId standing = room->addRobotAt({600, 0, 0, 0});
+        RobotLinkThread first, second;
+        first.setTransportFactory(transports::transportFactory(room, mover));
+        second.setTransportFactory(transports::transportFactory(room, standing));
+        oi::SensorSnapshot firstLatest, secondLatest;
+        connect(&first, &RobotLinkThread::snapshot, this, [&](const oi::SensorSnapshot &s) { firstLatest = s; });
+        connect(&second, &RobotLinkThread::snapshot, this, [&](const oi::SensorSnapshot &s) { secondLatest = s; });
+        first.open(LinkSettings::virtualRobotOf(oi::ProfileId::Create2, oi::ProfileId::Create2));
+        second.open(LinkSettings::virtualRobotOf(oi::ProfileId::Create2, oi::ProfileId::Create2));
+        QTRY_COMPARE_WITH_TIMEOUT(first.state(), LinkState::Streaming, kTimeoutMs);
+        QTRY_COMPARE_WITH_TIMEOUT(second.state(), LinkState::Streaming, kTimeoutMs);
+        first.send(bytes({132}));                 // Full
+        first.send(bytes({137, 0, 200, 128, 0})); // Drive 200 mm/s straight
+        QTRY_VERIFY_WITH_TIMEOUT(firstLatest.bumpLeft() && firstLatest.bumpRight(), kTimeoutMs);
+        // Struck from behind: the bumper wraps only the front half.
+        QTRY_VERIFY_WITH_TIMEOUT(room->robot(mover)->pose.xMm > 600 - 2 * sim::kBodyRadiusMm - 2, kTimeoutMs);
+        QVERIFY(!secondLatest.bumpLeft() && !secondLatest.bumpRight());
+        const std::vector<sim::RobotInRoom> robots = room->robots();
+        QCOMPARE(robots.size(), std::size_t(2));
+        QVERIFY(robots[1].pose.xMm - robots[0].pose.xMm >= 2 * sim::kBodyRadiusMm - 1);
+        QCOMPARE(robots[1].pose.xMm, 600.0);
+        first.send(bytes({137, 0, 0, 0, 0}));
+        first.stop();
+        second.stop();
     }
 };
 

@@ -3,6 +3,7 @@
 // virtual robot and against roomba-sim on a pseudo-terminal.
 #include "recording_file.h"
 #include "robot_link.h"
+#include "transport_factory.h"
 
 #include <QDeadlineTimer>
 #include <QFile>
@@ -200,6 +201,7 @@ private slots:
         const QString path = dir.filePath("run.oirec");
         {
             oilink::RobotLink link;
+            link.setTransportFactory(transports::transportFactory());
             QSignalSpy snapshots(&link, &oilink::RobotLink::snapshot);
             link.open(oilink::LinkSettings::virtualRobotOf(oi::ProfileId::Create1, oi::ProfileId::Create1));
             link.startRecording(path);

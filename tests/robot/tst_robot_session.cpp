@@ -5,6 +5,7 @@
 #include "recording_transport.h" // tests/common
 #include "robot_session.h"
 #include "transport.h"
+#include "transport_factory.h"
 
 #include <QSignalSpy>
 #include <QTest>
@@ -80,6 +81,7 @@ private slots:
     void showScriptKeepsTheRobotInSafeMode()
     {
         RobotSession robot;
+        robot.setTransportFactory(transports::transportFactory());
         robot.connectTo(oilink::LinkSettings::virtualRobotOf(oi::ProfileId::Create1, oi::ProfileId::Create1));
         QTRY_VERIFY_WITH_TIMEOUT(robot.isLive(), 5000);
         const oi::CommandEncoder encoder(oi::profile(oi::ProfileId::Create1));
@@ -111,6 +113,7 @@ private slots:
     void showScriptOnARobotWithoutScriptsSaysSo()
     {
         RobotSession robot;
+        robot.setTransportFactory(transports::transportFactory());
         robot.connectTo(oilink::LinkSettings::virtualRobotOf(oi::ProfileId::Create2, oi::ProfileId::Create2));
         QTRY_VERIFY_WITH_TIMEOUT(robot.isLive(), 5000);
         QSignalSpy failed(&robot, &RobotSession::scriptFailed);
@@ -124,6 +127,7 @@ private slots:
     void sensorQueryGoesThroughTheLink()
     {
         RobotSession robot;
+        robot.setTransportFactory(transports::transportFactory());
         robot.connectTo(oilink::LinkSettings::virtualRobotOf(oi::ProfileId::Create2, oi::ProfileId::Create2));
         QTRY_VERIFY_WITH_TIMEOUT(robot.isLive(), 5000);
         QSignalSpy replies(&robot, &RobotSession::sensorReply);
@@ -174,6 +178,7 @@ private slots:
     void historyRunsOnTheLinkClock()
     {
         RobotSession robot;
+        robot.setTransportFactory(transports::transportFactory());
         robot.connectTo(oilink::LinkSettings::virtualRobotOf(oi::ProfileId::Create2, oi::ProfileId::Create2));
         QTRY_VERIFY_WITH_TIMEOUT(robot.snapshotCount() >= 10, 5000);
         const SensorHistory &h = robot.history();

@@ -59,6 +59,8 @@ private slots:
     void refusesBadArguments_data();
     void refusesBadArguments();
     void helpAndVersion();
+    void refusesABadRoom();
+    void servesARoomAndEndsOnHangUp();
 };
 
 void TestRoombaSim::servesAPseudoTerminal()
@@ -148,6 +150,7 @@ void TestRoombaSim::refusesBadArguments_data()
     QTest::newRow("firmware not a release") << QStringList{"--firmware", "3.8"};
     QTest::newRow("firmware on create1") << QStringList{"--profile", "create1", "--firmware", "release-3.8.2"};
     QTest::newRow("missing value") << QStringList{"--seed"};
+    QTest::newRow("room not there") << QStringList{"--room", "/nonexistent/room.json"};
 }
 
 void TestRoombaSim::refusesBadArguments()
@@ -176,6 +179,52 @@ void TestRoombaSim::helpAndVersion()
     QVERIFY(process.waitForFinished(5000));
     QCOMPARE(process.exitCode(), 0);
     QVERIFY(process.readAllStandardOutput().startsWith("roomba-sim "));
+}
+
+void TestRoombaSim::refusesABadRoom()
+{
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("bad.json"));
+    QFile file(path);
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write(R"({"format": "roomba-room", "version": 1, "wals": []})");
+    file.close();
+    QProcess process;
+    process.start(kProgram, {QStringLiteral("--room"), path});
+    QVERIFY(process.waitForFinished(5000));
+    QCOMPARE(process.exitCode(), 2);
+    const QByteArray err = process.readAllStandardError();
+    QCOMPARE(err, QByteArray("roomba-sim: --room: bad.json: unknown key \"wals\"\n"));
+}
+
+// In the corridor the robot starts beside a wall, which its wall sensor
+// sees; a hang-up ends the program cleanly and the client sees the end.
+void TestRoombaSim::servesARoomAndEndsOnHangUp()
+{
+    QProcess process;
+    const QString where = startAndReadFirstLine(
+        process, {QStringLiteral("--tcp"), QStringLiteral("0"), QStringLiteral("--room"),
+                  QStringLiteral(ROOMBA_ROOMS_DIR "/corridor.json")});
+    QVERIFY2(where.startsWith(QStringLiteral("tcp://")), qPrintable(where + process.readAllStandardError()));
+    const RobotProfile &profile = oi::profile(ProfileId::Create2);
+    const CommandEncoder encoder(profile);
+    StreamParser parser(profile);
+    std::optional<SensorSnapshot> wall;
+    parser.setSnapshotHandler([&](const SensorSnapshot &s, FrameKind) { wall = s; });
+    QTcpSocket client;
+    QObject::connect(&client, &QTcpSocket::readyRead, &client, [&] {
+        const QByteArray data = client.readAll();
+        parser.feed(std::span(reinterpret_cast<const std::uint8_t *>(data.constData()), std::size_t(data.size())));
+    });
+    client.connectToHost(QHostAddress::LocalHost, where.section(':', -1).toUShort());
+    QVERIFY(client.waitForConnected(5000));
+    const std::uint8_t ids[] = {27};
+    parser.expectReply(ids);
+    client.write(bytes(encoder.start()) + bytes(encoder.sensors(27)));
+    QTRY_VERIFY_WITH_TIMEOUT(wall.has_value(), 5000);
+    QVERIFY(wall->wallSignal() > 0);
+    stopCleanly(process, SIGHUP);
+    QTRY_COMPARE_WITH_TIMEOUT(client.state(), QAbstractSocket::UnconnectedState, 5000);
 }
 
 QTEST_GUILESS_MAIN(TestRoombaSim)

@@ -9,6 +9,7 @@
 #include <QDoubleSpinBox>
 #include <QLabel>
 #include <QPushButton>
+#include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QWheelEvent>
@@ -45,6 +46,13 @@ void drive(RobotOdometry &odometry, ProfileId id, int frames, int left, int righ
     odometry.update(encoderFrame(id, 0, 0));
     for (int i = 1; i <= frames; ++i)
         odometry.update(encoderFrame(id, 1LL * i * left, 1LL * i * right));
+}
+
+// One virtual robot, selected: the map's odometry belongs to it.
+void showTruth(OdometryMap &map, std::optional<oi::Pose> pose)
+{
+    map.setTruePoses(pose ? QList<OdometryMap::TruePose>{{7, *pose, {}, false}} : QList<OdometryMap::TruePose>{});
+    map.setSelectedRobot(7);
 }
 
 bool near(double a, double b, double tolerance = 1e-9) { return std::abs(a - b) <= tolerance; }
@@ -223,6 +231,90 @@ private slots:
         QVERIFY(near(m_map->viewCentreMm().y(), before.y() + 20 / m_map->scale(), 1e-6));
     }
 
+    // Several robots, each in its colour; the selected one carries a halo,
+    // and its true pose is the one the drift is measured from.
+    void drawsSeveralRobotsTheSelectedHighlighted()
+    {
+        m_map->setViewCentreMm({0, 0});
+        const QList<OdometryMap::TruePose> robots{{1, oi::Pose{-800, 0, 0}, {}, false},
+                                                  {2, oi::Pose{800, 0, kPi}, {}, false},
+                                                  {3, oi::Pose{0, 900, 0}, Qt::magenta, true}};
+        m_map->setTruePoses(robots);
+        QCOMPARE(m_map->truePoses().size(), 3);
+        QVERIFY(!m_map->selectedTruePose());
+        const qreal ratio = m_map->devicePixelRatioF();
+        // Just outside robot 2's outline, where the halo is drawn.
+        const QPointF haloAt = m_map->widgetPointFor({800, 170}) + QPointF(0, -4);
+        const QColor before = pixelAt(m_map->grab().toImage(), haloAt, ratio);
+        m_map->setSelectedRobot(2);
+        QCOMPARE(m_map->selectedTruePose()->xMm, 800.0);
+        QTRY_VERIFY(pixelAt(m_map->grab().toImage(), haloAt, ratio) != before);
+        QVERIFY2(m_map->poseText().contains("drift 800 mm"), qPrintable(m_map->poseText()));
+        // Each robot in its own colour (hue; the line is smoothed): on its heading line.
+        const QImage image = m_map->grab().toImage();
+        const QColor first = pixelAt(image, m_map->widgetPointFor({-800 + 85, 0}), ratio);
+        const QColor third = pixelAt(image, m_map->widgetPointFor({85, 900}), ratio);
+        QVERIFY2(std::abs(first.hue() - OdometryMap::robotColour(0).hue()) < 15, qPrintable(first.name()));
+        QVERIFY2(std::abs(third.hue() - QColor(Qt::magenta).hue()) < 15, qPrintable(third.name()));
+        QVERIFY(OdometryMap::robotColour(0) != OdometryMap::robotColour(1));
+        if (qEnvironmentVariableIsSet("ROOMBA_SCREENSHOTS")) {
+            m_map->setWorld(sim::World::classroom());
+            QVERIFY(m_map->grab().save(QDir(qEnvironmentVariable("ROOMBA_SCREENSHOTS")).filePath("odometry_map_robots.png")));
+        }
+    }
+
+    // Touching the room: carry, turn and lift a robot; the map only asks.
+    void touchingARobotAsksTheRoom()
+    {
+        m_map->setViewCentreMm({0, 0});
+        m_map->setTruePoses({{4, oi::Pose{200, 100, 0}, {}, false}});
+        QSignalSpy moves(m_map.get(), &OdometryMap::robotMoveRequested);
+        QSignalSpy lifts(m_map.get(), &OdometryMap::robotLiftRequested);
+        const QPointF viewBefore = m_map->viewCentreMm();
+
+        // Carried by a point off its centre: the robot keeps its offset.
+        const QPoint grab = m_map->widgetPointFor({250, 100}).toPoint();
+        const QPoint drop = grab + QPoint(40, -20);
+        QTest::mousePress(m_map.get(), Qt::LeftButton, Qt::NoModifier, grab);
+        QTest::mouseMove(m_map.get(), drop);
+        QTest::mouseRelease(m_map.get(), Qt::LeftButton, Qt::NoModifier, drop);
+        QCOMPARE(moves.size(), 1);
+        QCOMPARE(moves[0][0].toInt(), 4);
+        const auto carried = moves[0][1].value<oi::Pose>();
+        QVERIFY(near(carried.xMm, 200 + 40 / m_map->scale(), 1 / m_map->scale()));
+        QVERIFY(near(carried.yMm, 100 + 20 / m_map->scale(), 1 / m_map->scale()));
+        QCOMPARE(carried.thetaRad, 0.0);
+        QCOMPARE(m_map->viewCentreMm(), viewBefore); // not a pan
+
+        // With Shift it turns to face the pointer: straight up is +y.
+        const QPoint centre = m_map->widgetPointFor({200, 100}).toPoint();
+        QTest::mousePress(m_map.get(), Qt::LeftButton, Qt::ShiftModifier, centre + QPoint(5, 0));
+        QTest::mouseMove(m_map.get(), centre + QPoint(0, -30));
+        QTest::mouseRelease(m_map.get(), Qt::LeftButton, Qt::ShiftModifier, centre + QPoint(0, -30));
+        QCOMPARE(moves.size(), 2);
+        const auto turned = moves[1][1].value<oi::Pose>();
+        QVERIFY(near(turned.thetaRad, kPi / 2, 1e-6));
+        QCOMPARE(turned.xMm, 200.0);
+
+        // A double-click lifts it; on a lifted robot it puts it down.
+        QTest::mouseDClick(m_map.get(), Qt::LeftButton, Qt::NoModifier, centre);
+        QCOMPARE(lifts.size(), 1);
+        QCOMPARE(lifts[0][0].toInt(), 4);
+        QCOMPARE(lifts[0][1].toBool(), true);
+        m_map->setTruePoses({{4, oi::Pose{200, 100, 0}, {}, true}});
+        QTest::mouseDClick(m_map.get(), Qt::LeftButton, Qt::NoModifier, centre);
+        QCOMPARE(lifts.size(), 2);
+        QCOMPARE(lifts[1][1].toBool(), false);
+
+        // Off the robot, a drag pans as before and asks nothing.
+        const QPoint empty = m_map->widgetPointFor({-1500, -1000}).toPoint();
+        QTest::mousePress(m_map.get(), Qt::LeftButton, Qt::NoModifier, empty);
+        QTest::mouseMove(m_map.get(), empty + QPoint(30, 0));
+        QTest::mouseRelease(m_map.get(), Qt::LeftButton, Qt::NoModifier, empty + QPoint(30, 0));
+        QCOMPARE(moves.size(), 2);
+        QVERIFY(m_map->viewCentreMm() != viewBefore);
+    }
+
     void drawsWorldAndTruePose()
     {
         m_map->setViewCentreMm({1000, 0});
@@ -257,13 +349,13 @@ private slots:
         truth.xMm = trueMm.x();
         truth.yMm = trueMm.y();
         truth.thetaRad = kPi / 2;
-        m_map->setTruePose(truth);
+        showTruth(*m_map, truth);
         const QImage withTruth = m_map->grab().toImage();
         QVERIFY(pixelAt(withTruth, ring, ratio) != pixelAt(withWorld, ring, ratio));
         QVERIFY2(m_map->poseText().contains("drift 1919 mm"), qPrintable(m_map->poseText()));
 
         m_map->setWorld(std::nullopt);
-        m_map->setTruePose(std::nullopt);
+        showTruth(*m_map, std::nullopt);
         const QImage cleared = m_map->grab().toImage();
         QCOMPARE(pixelAt(cleared, wallPx, ratio), pixelAt(empty, wallPx, ratio));
         QCOMPARE(pixelAt(cleared, ring, ratio), pixelAt(empty, ring, ratio));
@@ -281,7 +373,7 @@ private slots:
     {
         m_map->setWorld(sim::World::classroom());
         drive(*m_odometry, ProfileId::Create2, 10, 20, 20);
-        m_map->setTruePose(oi::Pose{100, 20, 0});
+        showTruth(*m_map, oi::Pose{100, 20, 0});
         QLabel *pose = m_map->findChild<QLabel *>("poseLabel");
         QTRY_COMPARE(pose->text(), m_map->poseText());
         {
@@ -338,7 +430,7 @@ private slots:
         QCOMPARE(m_map->accessibleDescription(), QStringLiteral("Robot at x 0 mm, y 0 mm, heading 0 degrees"));
         drive(*m_odometry, ProfileId::Create2, 10, 20, 20);
         QTRY_COMPARE(m_map->accessibleDescription(), QStringLiteral("Robot at x 89 mm, y 0 mm, heading 0 degrees"));
-        m_map->setTruePose(oi::Pose{100, 0, 0});
+        showTruth(*m_map, oi::Pose{100, 0, 0});
         QTRY_VERIFY(m_map->accessibleDescription().endsWith(QStringLiteral(" mm from the true pose")));
         QCOMPARE(m_map->accessibleDescription(), m_map->spokenPose());
     }
@@ -385,7 +477,7 @@ private slots:
                 truth.yMm = 100;
                 truth.thetaRad = 0.4;
             }
-            m_map->setTruePose(truth);
+            showTruth(*m_map, truth);
             QTRY_COMPARE(m_map->findChild<QLabel *>("poseLabel")->text(), m_map->poseText());
             QCoreApplication::sendPostedEvents(); // the label's new width
             const QImage image = m_map->grab().toImage();

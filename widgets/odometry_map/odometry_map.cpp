@@ -15,6 +15,7 @@
 #include <QVBoxLayout>
 #include <QWheelEvent>
 
+#include <algorithm>
 #include <cmath>
 
 namespace {
@@ -172,10 +173,47 @@ void OdometryMap::reset()
     refresh();
 }
 
-void OdometryMap::setTruePose(std::optional<oi::Pose> pose)
+void OdometryMap::setTruePoses(const QList<TruePose> &poses)
 {
-    m_truePose = pose;
+    const auto same = [](const TruePose &a, const TruePose &b) {
+        return a.robot == b.robot && a.pose.xMm == b.pose.xMm && a.pose.yMm == b.pose.yMm
+               && a.pose.thetaRad == b.pose.thetaRad && a.colour == b.colour && a.lifted == b.lifted;
+    };
+    // A robot at rest costs no repaint.
+    if (std::equal(poses.begin(), poses.end(), m_truePoses.begin(), m_truePoses.end(), same))
+        return;
+    m_truePoses = poses;
     m_dirty = true;
+}
+
+void OdometryMap::setSelectedRobot(std::optional<int> robot)
+{
+    m_selected = robot;
+    m_dirty = true;
+}
+
+std::optional<oi::Pose> OdometryMap::selectedTruePose() const
+{
+    for (const TruePose &t : m_truePoses)
+        if (m_selected == t.robot)
+            return t.pose;
+    return std::nullopt;
+}
+
+QColor OdometryMap::robotColour(int index)
+{
+    // Apart from one another and from the trail's highlight blue, on light
+    // and dark bases alike.
+    static const QColor colours[] = {QColor(0x2e, 0x9e, 0x44), QColor(0xd9, 0x6c, 0x06), QColor(0x9c, 0x3f, 0xc4),
+                                     QColor(0x00, 0x97, 0xa7), QColor(0xd8, 0x1b, 0x60), QColor(0x8d, 0x6e, 0x63)};
+    const int n = int(std::size(colours));
+    return colours[((index % n) + n) % n];
+}
+
+QColor OdometryMap::truePoseColour(qsizetype index) const
+{
+    const QColor &chosen = m_truePoses[index].colour;
+    return chosen.isValid() ? chosen : robotColour(int(index));
 }
 
 void OdometryMap::setWorld(std::optional<sim::World> world)
@@ -215,8 +253,7 @@ void OdometryMap::zoomBy(double factor, QPointF anchorWidget)
 {
     // Keep the floor point under the anchor where it is.
     const QPointF c = QRectF(mapRect()).center();
-    const QPointF anchorMm(m_centreMm.x() + (anchorWidget.x() - c.x()) / m_scale,
-                           m_centreMm.y() - (anchorWidget.y() - c.y()) / m_scale);
+    const QPointF anchorMm = floorPointFor(anchorWidget);
     m_scale = std::clamp(m_scale * factor, kMinScale, kMaxScale);
     m_centreMm = QPointF(anchorMm.x() - (anchorWidget.x() - c.x()) / m_scale,
                          anchorMm.y() + (anchorWidget.y() - c.y()) / m_scale);
@@ -245,8 +282,8 @@ QString OdometryMap::poseText() const
                        .arg(p.xMm, 0, 'f', 0)
                        .arg(p.yMm, 0, 'f', 0)
                        .arg(p.thetaRad * 180 / kPi, 0, 'f', 1);
-    if (m_truePose)
-        text += tr("   drift %1 mm").arg(std::hypot(p.xMm - m_truePose->xMm, p.yMm - m_truePose->yMm), 0, 'f', 0);
+    if (const auto truth = selectedTruePose())
+        text += tr("   drift %1 mm").arg(std::hypot(p.xMm - truth->xMm, p.yMm - truth->yMm), 0, 'f', 0);
     return text;
 }
 
@@ -257,8 +294,8 @@ QString OdometryMap::spokenPose() const
                        .arg(p.xMm, 0, 'f', 0)
                        .arg(p.yMm, 0, 'f', 0)
                        .arg(p.thetaRad * 180 / kPi, 0, 'f', 0);
-    if (m_truePose)
-        text += tr("; %1 mm from the true pose").arg(std::hypot(p.xMm - m_truePose->xMm, p.yMm - m_truePose->yMm), 0, 'f', 0);
+    if (const auto truth = selectedTruePose())
+        text += tr("; %1 mm from the true pose").arg(std::hypot(p.xMm - truth->xMm, p.yMm - truth->yMm), 0, 'f', 0);
     return text;
 }
 
@@ -306,12 +343,7 @@ void OdometryMap::paintEvent(QPaintEvent *)
         painter.setPen(QPen(palette().color(QPalette::Highlight), 2));
         painter.drawPolyline(line);
     }
-    if (m_truePose) {
-        const QColor truth = display::stateColor(display::State::Active, palette());
-        painter.setPen(QPen(truth, 1, Qt::DashLine));
-        painter.drawLine(widgetPointFor({m_truePose->xMm, m_truePose->yMm}), widgetPointFor({pose().xMm, pose().yMm}));
-        paintRobot(painter, *m_truePose, truth, true);
-    }
+    paintTruePoses(painter);
     paintRobot(painter, pose(), palette().color(QPalette::Highlight), false);
     paintScaleBar(painter, area);
 
@@ -319,9 +351,14 @@ void OdometryMap::paintEvent(QPaintEvent *)
     painter.setClipping(false);
     QStringList legend{tr("odometry")};
     QList<QColor> colours{palette().color(QPalette::Highlight)};
-    if (m_truePose) {
+    if (!m_truePoses.isEmpty()) {
         legend << tr("true pose");
-        colours << display::stateColor(display::State::Active, palette());
+        // The selected robot's colour, or the first robot's.
+        qsizetype index = 0;
+        for (qsizetype i = 0; i < m_truePoses.size(); ++i)
+            if (m_truePoses[i].robot == m_selected)
+                index = i;
+        colours << truePoseColour(index);
     }
     const QFontMetrics fm(font());
     // Sizes follow the font, so the legend grows with it.
@@ -421,6 +458,42 @@ void OdometryMap::paintWorld(QPainter &painter) const
     }
 }
 
+void OdometryMap::paintTruePoses(QPainter &painter) const
+{
+    const QFontMetrics fm(font());
+    for (qsizetype i = 0; i < m_truePoses.size(); ++i) {
+        const TruePose &t = m_truePoses[i];
+        const QColor colour = truePoseColour(i);
+        const QPointF centre = widgetPointFor({t.pose.xMm, t.pose.yMm});
+        const double radius = std::max(8.0, kRobotDiameterMm / 2 * m_scale);
+        if (t.lifted) {
+            // Held up: its shadow on the floor below and to the right.
+            QColor shadow = palette().color(QPalette::Text);
+            shadow.setAlpha(60);
+            painter.setPen(Qt::NoPen);
+            painter.setBrush(shadow);
+            painter.drawEllipse(centre + QPointF(radius / 4, radius / 4), radius, radius);
+            painter.setBrush(Qt::NoBrush);
+        }
+        const bool selected = m_selected == t.robot;
+        if (selected) {
+            painter.setPen(QPen(colour, 1, Qt::DashLine));
+            painter.drawLine(centre, widgetPointFor({pose().xMm, pose().yMm}));
+            // A halo marks the robot this map's odometry belongs to.
+            QColor halo = colour;
+            halo.setAlpha(90);
+            painter.setPen(QPen(halo, 6));
+            painter.drawEllipse(centre, radius + 4, radius + 4);
+        }
+        paintRobot(painter, t.pose, colour, true);
+        if (m_truePoses.size() > 1) {
+            const QString number = QString::number(t.robot);
+            painter.setPen(palette().color(QPalette::Text));
+            painter.drawText(centre + QPointF(radius + 4, -radius), number);
+        }
+    }
+}
+
 void OdometryMap::paintRobot(QPainter &painter, const oi::Pose &pose, const QColor &colour, bool outline) const
 {
     const QPointF centre = widgetPointFor({pose.xMm, pose.yMm});
@@ -461,9 +534,39 @@ void OdometryMap::wheelEvent(QWheelEvent *event)
     event->accept();
 }
 
+QPointF OdometryMap::floorPointFor(QPointF widgetPoint) const
+{
+    const QPointF c = QRectF(mapRect()).center();
+    return QPointF(m_centreMm.x() + (widgetPoint.x() - c.x()) / m_scale,
+                   m_centreMm.y() - (widgetPoint.y() - c.y()) / m_scale);
+}
+
+const OdometryMap::TruePose *OdometryMap::truePoseAt(QPointF widgetPoint) const
+{
+    const double radius = std::max(8.0, kRobotDiameterMm / 2 * m_scale);
+    // The last drawn is on top.
+    for (qsizetype i = m_truePoses.size() - 1; i >= 0; --i) {
+        const QPointF d = widgetPointFor({m_truePoses[i].pose.xMm, m_truePoses[i].pose.yMm}) - widgetPoint;
+        if (std::hypot(d.x(), d.y()) <= radius)
+            return &m_truePoses[i];
+    }
+    return nullptr;
+}
+
 void OdometryMap::mousePressEvent(QMouseEvent *event)
 {
-    if (event->button() == Qt::LeftButton && mapRect().contains(event->position().toPoint())) {
+    if (!mapRect().contains(event->position().toPoint()))
+        return;
+    const bool turn = event->button() == Qt::RightButton
+                      || (event->button() == Qt::LeftButton && (event->modifiers() & Qt::ShiftModifier));
+    if (event->button() == Qt::LeftButton || turn) {
+        if (const TruePose *t = truePoseAt(event->position())) {
+            m_hold = Hold{t->robot, t->pose, floorPointFor(event->position()) - QPointF(t->pose.xMm, t->pose.yMm), turn};
+            setCursor(turn ? Qt::SizeAllCursor : Qt::ClosedHandCursor);
+            return;
+        }
+    }
+    if (event->button() == Qt::LeftButton) {
         m_dragFrom = event->position();
         setCursor(Qt::ClosedHandCursor);
     }
@@ -471,6 +574,18 @@ void OdometryMap::mousePressEvent(QMouseEvent *event)
 
 void OdometryMap::mouseMoveEvent(QMouseEvent *event)
 {
+    if (m_hold) {
+        const QPointF at = floorPointFor(event->position());
+        if (m_hold->turning) {
+            // It faces the pointer.
+            m_hold->pose.thetaRad = std::atan2(at.y() - m_hold->pose.yMm, at.x() - m_hold->pose.xMm);
+        } else {
+            m_hold->pose.xMm = at.x() - m_hold->grabOffsetMm.x();
+            m_hold->pose.yMm = at.y() - m_hold->grabOffsetMm.y();
+        }
+        emit robotMoveRequested(m_hold->robot, m_hold->pose);
+        return;
+    }
     if (!m_dragFrom)
         return;
     const QPointF delta = event->position() - *m_dragFrom;
@@ -481,5 +596,14 @@ void OdometryMap::mouseMoveEvent(QMouseEvent *event)
 void OdometryMap::mouseReleaseEvent(QMouseEvent *)
 {
     m_dragFrom.reset();
+    m_hold.reset();
     unsetCursor();
+}
+
+void OdometryMap::mouseDoubleClickEvent(QMouseEvent *event)
+{
+    if (event->button() != Qt::LeftButton)
+        return;
+    if (const TruePose *t = truePoseAt(event->position()))
+        emit robotLiftRequested(t->robot, !t->lifted);
 }

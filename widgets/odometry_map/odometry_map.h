@@ -5,8 +5,9 @@
 #include "robot_odometry.h"
 #include "robot_profile.h"
 #include "sensor_snapshot.h"
-#include "virtual_robot.h" // sim::World, a value type; nothing here runs the robot
+#include "world.h" // the floor as plain values; no robot
 
+#include <QColor>
 #include <QList>
 #include <QPointF>
 #include <QWidget>
@@ -19,12 +20,19 @@ class QPushButton;
 class QTimer;
 
 // Where the robot thinks it is: its model's odometry, drawn as a trail on a
-// millimetre grid. With the virtual robot, its true pose and room can be
-// drawn too, so a class can watch odometry drift from the truth. Wheel base
-// and wheel diameter can be measured and set on the robot's odometry; they
-// change the integration from then on. Zoom with the wheel or the buttons,
-// pan by dragging. Repaints from a display timer when the robot moved, not
-// once per frame.
+// millimetre grid. With virtual robots, their room and true poses can be
+// drawn too (several robots, each in its colour, the selected one
+// highlighted), so a class can watch odometry drift from the truth. Wheel
+// base and wheel diameter can be measured and set on the robot's odometry;
+// they change the integration from then on. Zoom with the wheel or the
+// buttons, pan by dragging. Repaints from a display timer when something
+// moved, not once per frame.
+//
+// A virtual robot can be touched: drag it to carry it elsewhere, drag it
+// with Shift (or the right button) to turn it, double-click it to lift it
+// or put it down. The map only asks (robotMoveRequested, robotLiftRequested);
+// whoever owns the room moves the robot, and the map shows it when the
+// true poses come back.
 class OdometryMap : public QWidget {
     Q_OBJECT
 public:
@@ -45,7 +53,25 @@ public:
     // Positions in mm, oldest first, at most kMaxTrailPoints; starts with the start pose.
     QList<QPointF> trail() const { return m_odometry ? m_odometry->trail() : QList<QPointF>{}; }
 
-    void setTruePose(std::optional<oi::Pose> pose);
+    // Where a virtual robot really is.
+    struct TruePose {
+        int robot = 0;      // the room's robot id
+        oi::Pose pose;
+        QColor colour;      // invalid: robotColour() of its place in the list
+        bool lifted = false;
+    };
+    // Every robot in the room; repaints on the display timer when they moved.
+    void setTruePoses(const QList<TruePose> &poses);
+    const QList<TruePose> &truePoses() const { return m_truePoses; }
+    // The robot this map's odometry belongs to: highlighted, and the drift
+    // is measured from it. nullopt: none of them.
+    void setSelectedRobot(std::optional<int> robot);
+    std::optional<int> selectedRobot() const { return m_selected; }
+    // The true pose of the selected robot, if it is in the list.
+    std::optional<oi::Pose> selectedTruePose() const;
+    // Distinct colours for robots on the map, by index.
+    static QColor robotColour(int index);
+
     void setWorld(std::optional<sim::World> world);
 
     void setWheelBaseMm(double mm);
@@ -68,11 +94,17 @@ public:
     // The pose in words for a screen reader; the map's accessible description.
     QString spokenPose() const;
 
+signals:
+    // Put robot `robot` down at `pose` (carried or turned by hand).
+    void robotMoveRequested(int robot, const oi::Pose &pose);
+    // Hold robot `robot` up (its wheels drop) or put it back down.
+    void robotLiftRequested(int robot, bool lifted);
+
 public slots:
     void zoomIn();
     void zoomOut();
     void centreOnRobot();
-    // Clears the robot's trail and starts its odometry again from the origin.
+    // Clears the robot's trail and starts its odometry again from its start.
     void reset();
 
 protected:
@@ -82,6 +114,7 @@ protected:
     void mousePressEvent(QMouseEvent *event) override;
     void mouseMoveEvent(QMouseEvent *event) override;
     void mouseReleaseEvent(QMouseEvent *event) override;
+    void mouseDoubleClickEvent(QMouseEvent *event) override;
 
 private:
     void retranslateUi();
@@ -91,19 +124,33 @@ private:
     void refresh();
     void paintGrid(QPainter &painter, const QRect &area) const;
     void paintWorld(QPainter &painter) const;
+    void paintTruePoses(QPainter &painter) const;
+    QColor truePoseColour(qsizetype index) const;
     void paintRobot(QPainter &painter, const oi::Pose &pose, const QColor &colour, bool outline) const;
     void paintScaleBar(QPainter &painter, const QRect &area) const;
     double gridSpacingMm() const;
+    QPointF floorPointFor(QPointF widgetPoint) const;
+    // The true pose under a widget point, if a robot is drawn there.
+    const TruePose *truePoseAt(QPointF widgetPoint) const;
 
     const oi::RobotProfile *m_profile = &oi::profile(oi::ProfileId::Create2);
     RobotOdometry *m_odometry = nullptr;
     quint64 m_shownRevision = ~0ull;
-    std::optional<oi::Pose> m_truePose;
+    QList<TruePose> m_truePoses;
+    std::optional<int> m_selected;
     std::optional<sim::World> m_world;
 
     double m_scale = 0.1;
     QPointF m_centreMm{1000, 0};
     std::optional<QPointF> m_dragFrom;
+    // A robot held by the pointer: carried, or turned about its centre.
+    struct Hold {
+        int robot = 0;
+        oi::Pose pose;
+        QPointF grabOffsetMm; // from the robot's centre to where it was grabbed
+        bool turning = false;
+    };
+    std::optional<Hold> m_hold;
     bool m_dirty = false;
 
     QWidget *m_controls = nullptr;

@@ -3,28 +3,33 @@
 
 #include "real_time_robot.h"
 
-namespace oilink {
+namespace sim {
 
-VirtualTransport::VirtualTransport(oi::ProfileId robot, std::uint32_t seed, QObject *parent)
-    : Transport(parent), m_profile(robot), m_seed(seed)
+VirtualTransport::VirtualTransport(oi::ProfileId robot, std::uint32_t seed, std::shared_ptr<Room> room, RobotId id,
+                                   QObject *parent)
+    : oilink::Transport(parent), m_profile(robot), m_seed(seed), m_room(std::move(room)), m_id(id)
 {
+    if (!m_room) {
+        m_room = std::make_shared<Room>(World::classroom());
+        m_id = m_room->placeNewRobot();
+    }
 }
 
 VirtualTransport::~VirtualTransport() = default;
 
 QString VirtualTransport::describe() const
 {
-    const std::string_view name = oi::profile(m_profile).name;
-    return tr("virtual %1").arg(QString::fromUtf8(name.data(), static_cast<qsizetype>(name.size())));
+    return oilink::LinkSettings::virtualRobotOf(m_profile, std::nullopt).describe();
 }
 
 void VirtualTransport::open()
 {
     if (!m_robot) {
-        m_robot = std::make_unique<sim::RealTimeRobot>(oi::profile(m_profile), m_seed);
+        m_robot = std::make_unique<RealTimeRobot>(oi::profile(m_profile), m_seed);
+        m_robot->robot().joinRoom(m_room, m_id);
         // Queued even on the same thread: a reply must reach the link after
         // the write that asked for it has returned, as on a real line.
-        connect(m_robot.get(), &sim::RealTimeRobot::bytesOut, this,
+        connect(m_robot.get(), &RealTimeRobot::bytesOut, this,
                 [this](const QByteArray &bytes) {
                     if (m_open)
                         emit bytesReceived(bytes);
@@ -51,4 +56,4 @@ bool VirtualTransport::write(const QByteArray &bytes)
     return true;
 }
 
-} // namespace oilink
+} // namespace sim

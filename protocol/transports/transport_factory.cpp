@@ -1,0 +1,23 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "transport_factory.h"
+
+#include "virtual_transport.h"
+
+namespace transports {
+
+oilink::Transport *createTransport(const oilink::LinkSettings &settings, int baud, std::shared_ptr<sim::Room> room,
+                                   sim::RobotId robot, QObject *parent)
+{
+    if (settings.transport == oilink::TransportKind::Virtual)
+        return new sim::VirtualTransport(settings.virtualRobot, settings.virtualSeed, std::move(room), robot, parent);
+    return oilink::createTransport(settings, baud, parent);
+}
+
+oilink::RobotLink::TransportFactory transportFactory(std::shared_ptr<sim::Room> room, sim::RobotId robot)
+{
+    return [room = std::move(room), robot](const oilink::LinkSettings &settings) {
+        return createTransport(settings, settings.baud, room, robot);
+    };
+}
+
+} // namespace transports

@@ -1,0 +1,50 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "room.h"
+#include "transport.h"
+
+#include "robot_profile.h"
+
+#include <cstdint>
+#include <memory>
+
+namespace sim {
+
+class RealTimeRobot;
+
+// A virtual robot in this process and on this thread, as a transport for
+// RobotLink: no port, no baud, the same bytes a real robot would send. The
+// robot is robot `id` of a room that other robots may share (see room.h);
+// made anew at every (re)connect, it carries on from where the room has it.
+class VirtualTransport : public oilink::Transport {
+    Q_OBJECT
+public:
+    // Without a room, the robot gets a classroom of its own.
+    VirtualTransport(oi::ProfileId robot, std::uint32_t seed, std::shared_ptr<Room> room = {}, RobotId id = 0,
+                     QObject *parent = nullptr);
+    ~VirtualTransport() override;
+
+    void open() override;
+    void close() override;
+    bool isOpen() const override { return m_open; }
+    bool write(const QByteArray &bytes) override;
+    void flush(int) override {}
+    QString describe() const override;
+
+    const std::shared_ptr<Room> &room() const { return m_room; }
+    RobotId robotId() const { return m_id; }
+    // The robot itself, for tests and demonstrations that stage faults;
+    // nullptr until the first open(). Same thread only.
+    RealTimeRobot *robot() const { return m_robot.get(); }
+
+private:
+    oi::ProfileId m_profile;
+    std::uint32_t m_seed;
+    std::shared_ptr<Room> m_room;
+    RobotId m_id;
+    std::unique_ptr<RealTimeRobot> m_robot;
+    bool m_open = false;
+};
+
+} // namespace sim

@@ -1,0 +1,217 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Several virtual robots in one room: free spots, bumping into one another,
+// hands that move and lift them, and poses read from another thread.
+#include "command_encoder.h"
+#include "room.h"
+#include "sensor_snapshot.h"
+#include "stream_parser.h"
+#include "virtual_robot.h"
+
+#include <QTest>
+
+#include <atomic>
+#include <cmath>
+#include <memory>
+#include <thread>
+
+using namespace std::chrono_literals;
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// A robot of a room, driven by bytes; its sensors are read back by asking.
+struct Member {
+    Member(const std::shared_ptr<sim::Room> &room, sim::RobotId id, oi::ProfileId profile = oi::ProfileId::Create2)
+        : robot(oi::profile(profile)), encoder(oi::profile(profile)), parser(oi::profile(profile))
+    {
+        robot.joinRoom(room, id);
+        parser.setSnapshotHandler([this](const oi::SensorSnapshot &s, oi::FrameKind) { last = s; });
+    }
+    void send(const oi::EncodeResult &bytes) { robot.receive(*bytes); }
+    oi::SensorSnapshot sensors(int group)
+    {
+        robot.takeOutput();
+        const std::uint8_t ids[] = {std::uint8_t(group)};
+        parser.expectReply(ids);
+        send(encoder.sensors(group));
+        const oi::Bytes reply = robot.takeOutput();
+        parser.feed(reply);
+        return last;
+    }
+    sim::VirtualRobot robot;
+    oi::CommandEncoder encoder;
+    oi::StreamParser parser;
+    oi::SensorSnapshot last;
+};
+
+double distance(const oi::Pose &a, const oi::Pose &b) { return std::hypot(a.xMm - b.xMm, a.yMm - b.yMm); }
+
+sim::World emptyFloor()
+{
+    sim::World w;
+    w.name = "empty";
+    return w;
+}
+
+} // namespace
+
+class TestRoom : public QObject {
+    Q_OBJECT
+private slots:
+    void newRobotsGetFreeSpots()
+    {
+        sim::Room room(sim::World::classroom());
+        const sim::World world = room.world();
+        std::vector<sim::RobotInRoom> placed;
+        for (int i = 0; i < 4; ++i) {
+            const sim::RobotId id = room.placeNewRobot();
+            placed.push_back(*room.robot(id));
+        }
+        // The first at the start, the others apart from it and from one another.
+        QCOMPARE(placed[0].pose.xMm, world.startX);
+        QCOMPARE(placed[0].pose.yMm, world.startY);
+        for (std::size_t i = 0; i < placed.size(); ++i) {
+            QCOMPARE(placed[i].pose.thetaRad, world.startHeadingRad);
+            for (std::size_t j = i + 1; j < placed.size(); ++j)
+                QVERIFY2(distance(placed[i].pose, placed[j].pose) >= 2 * sim::kBodyRadiusMm + 100,
+                         qPrintable(QString("robots %1 and %2 too close").arg(i).arg(j)));
+            for (const sim::Segment &w : world.walls)
+                QVERIFY(sim::distanceToSegment({placed[i].pose.xMm, placed[i].pose.yMm}, w) > sim::kBodyRadiusMm);
+        }
+        QCOMPARE(room.robots().size(), std::size_t(4));
+        room.removeRobot(placed[1].id);
+        QCOMPARE(room.robots().size(), std::size_t(3));
+        QVERIFY(!room.robot(placed[1].id));
+        // Its spot is free again: the next robot goes there.
+        const sim::RobotId again = room.placeNewRobot();
+        QCOMPARE(distance(room.robot(again)->pose, placed[1].pose), 0.0);
+    }
+
+    void robotsDrivenAtEachOtherBump()
+    {
+        auto room = std::make_shared<sim::Room>(emptyFloor());
+        const sim::RobotId westId = room->addRobotAt({0, 0, 0, 0});
+        const sim::RobotId eastId = room->addRobotAt({1000, 150, kPi, 0});
+        Member west(room, westId), east(room, eastId);
+        for (Member *m : {&west, &east}) {
+            m->send(m->encoder.start());
+            m->send(m->encoder.full());
+            m->send(m->encoder.drive(200, oi::kRadiusStraight));
+        }
+        // Both drive on, a millisecond each in turn, as two threads would.
+        bool westSawEast = false;
+        for (int ms = 0; ms < 4000; ++ms) {
+            west.robot.advance(1ms);
+            east.robot.advance(1ms);
+            QVERIFY2(distance(west.robot.truePose(), east.robot.truePose()) >= 2 * sim::kBodyRadiusMm - 1,
+                     "the bodies overlap");
+            if (ms % 50 == 0 && distance(west.robot.truePose(), east.robot.truePose()) > 2 * sim::kBodyRadiusMm + 20)
+                for (int i = 0; i < 6; ++i)
+                    westSawEast = westSawEast || west.sensors(106).lightBumpSignal(oi::LightBumper(i)) > 0;
+        }
+        // The light bumpers saw the other robot coming, like a wall.
+        QVERIFY(westSawEast);
+        // They met in the middle and push against each other's bumpers.
+        QVERIFY(distance(west.robot.truePose(), east.robot.truePose()) < 2 * sim::kBodyRadiusMm + 2);
+        const oi::SensorSnapshot w = west.sensors(7), e = east.sensors(7);
+        // Each came in 150 mm to the other's left: both left bumpers, no right.
+        QVERIFY(w.bumpLeft() && !w.bumpRight());
+        QVERIFY(e.bumpLeft() && !e.bumpRight());
+        // The room knows where both are.
+        QCOMPARE(room->robot(westId)->pose.xMm, west.robot.truePose().xMm);
+        QCOMPARE(room->robot(eastId)->pose.xMm, east.robot.truePose().xMm);
+    }
+
+    void aHandMovesAndLiftsARobot()
+    {
+        auto room = std::make_shared<sim::Room>(emptyFloor());
+        const sim::RobotId id = room->addRobotAt({100, 200, 0.5, 0});
+        Member m(room, id);
+        // It starts where the room has it.
+        QCOMPARE(m.robot.truePose().xMm, 100.0);
+        QCOMPARE(m.robot.truePose().thetaRad, 0.5);
+        room->moveRobot(id, {-400, 50, -1.0, 0});
+        m.robot.advance(1ms);
+        QCOMPARE(m.robot.truePose().xMm, -400.0);
+        QCOMPARE(m.robot.truePose().yMm, 50.0);
+        QCOMPARE(m.robot.truePose().thetaRad, -1.0);
+
+        m.send(m.encoder.start());
+        QCOMPARE(m.sensors(7).wheelDropLeft(), false);
+        room->setLifted(id, true);
+        m.robot.advance(1ms);
+        const oi::SensorSnapshot lifted = m.sensors(7);
+        QVERIFY(lifted.wheelDropLeft());
+        QVERIFY(lifted.wheelDropRight());
+        QVERIFY(room->robot(id)->lifted);
+        room->setLifted(id, false);
+        m.robot.advance(1ms);
+        QVERIFY(!m.sensors(7).wheelDropLeft());
+    }
+
+    void aLiftedRobotIsNoObstacle()
+    {
+        auto room = std::make_shared<sim::Room>(emptyFloor());
+        const sim::RobotId a = room->addRobotAt({0, 0, 0, 0});
+        const sim::RobotId b = room->addRobotAt({340, 0, kPi, 0}); // touching
+        Member first(room, a);
+        first.send(first.encoder.start());
+        first.robot.advance(1ms);
+        QVERIFY(first.sensors(7).bumpLeft());
+        room->setLifted(b, true);
+        first.robot.advance(1ms);
+        QVERIFY(!first.sensors(7).bumpLeft());
+    }
+
+    void aNewFloorReachesTheRobots()
+    {
+        auto room = std::make_shared<sim::Room>(emptyFloor());
+        Member m(room, room->addRobotAt({0, 0, 0, 0}));
+        m.send(m.encoder.start());
+        m.robot.advance(1ms);
+        QVERIFY(!m.sensors(7).bumpRight());
+        sim::World walled = emptyFloor();
+        walled.walls.push_back({170.5, -500, 170.5, 500});
+        room->setWorld(walled);
+        m.robot.advance(1ms);
+        QCOMPARE(m.robot.world(), walled);
+        const oi::SensorSnapshot s = m.sensors(7);
+        QVERIFY(s.bumpLeft() && s.bumpRight());
+    }
+
+    // The robot runs on a thread of its own, as each link does; this thread
+    // reads the room as the display timer would.
+    void posesAreReadFromAnotherThread()
+    {
+        auto room = std::make_shared<sim::Room>(emptyFloor());
+        const sim::RobotId id = room->placeNewRobot();
+        const sim::RobotId other = room->addRobotAt({0, 1000, 0, 0});
+        std::atomic<bool> stop = false;
+        std::thread driver([&] {
+            Member m(room, id);
+            m.send(m.encoder.start());
+            m.send(m.encoder.full());
+            m.send(m.encoder.drive(300, oi::kRadiusStraight));
+            while (!stop)
+                m.robot.advance(1ms);
+        });
+        double lastX = 0;
+        QTRY_VERIFY_WITH_TIMEOUT((lastX = room->robot(id)->pose.xMm) > 200, 10000);
+        // Each copy is whole and moves only forward; the other robot stays put.
+        for (int i = 0; i < 200; ++i) {
+            const std::vector<sim::RobotInRoom> robots = room->robots();
+            QCOMPARE(robots.size(), std::size_t(2));
+            QVERIFY(robots[0].pose.xMm >= lastX);
+            QCOMPARE(robots[0].pose.yMm, 0.0);
+            lastX = robots[0].pose.xMm;
+            QCOMPARE(robots[1].id, other);
+            QCOMPARE(robots[1].pose.yMm, 1000.0);
+        }
+        stop = true;
+        driver.join();
+    }
+};
+
+QTEST_APPLESS_MAIN(TestRoom)
+#include "tst_room.moc"

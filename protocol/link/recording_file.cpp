@@ -154,15 +154,22 @@ QString RecordingDamage::describe() const
 
 std::optional<Recording> Recording::load(const QString &path, QString *error)
 {
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly)) {
+        if (error)
+            *error = QStringLiteral("%1: %2").arg(path, file.errorString());
+        return std::nullopt;
+    }
+    return fromBytes(file.readAll(), path, error);
+}
+
+std::optional<Recording> Recording::fromBytes(const QByteArray &data, const QString &path, QString *error)
+{
     auto refuse = [&](const QString &why) -> std::optional<Recording> {
         if (error)
             *error = QStringLiteral("%1: %2").arg(path, why);
         return std::nullopt;
     };
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly))
-        return refuse(file.errorString());
-    const QByteArray data = file.readAll();
     const qsizetype prefix = recording::kMagicSize + kVersionSize + kHeaderLengthSize;
     if (data.size() < prefix || !data.startsWith(QByteArray(recording::kMagic, recording::kMagicSize)))
         return refuse(QCoreApplication::translate("Recording", "not a Roomba Dashboard recording"));

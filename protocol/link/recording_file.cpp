@@ -231,9 +231,14 @@ std::optional<Recording> Recording::fromBytes(const QByteArray &data, const QStr
             const std::string key = info.value(QStringLiteral("profile")).toString().toStdString();
             r.m_stream.profile = oi::profileByKey(key);
             r.m_stream.baud = info.value(QStringLiteral("baud")).toInt();
-            for (const QJsonValue id : info.value(QStringLiteral("packets")).toArray())
-                r.m_stream.packets << id.toInt();
-            if (!r.m_stream.profile || r.m_stream.packets.isEmpty()) {
+            bool packetsKnown = r.m_stream.profile != nullptr;
+            for (const QJsonValue id : info.value(QStringLiteral("packets")).toArray()) {
+                // Ids go to the parser as bytes: 300 must not be read as 44.
+                const int packet = id.toInt(-1);
+                r.m_stream.packets << packet;
+                packetsKnown = packetsKnown && r.m_stream.profile->isValidSensorId(packet);
+            }
+            if (!packetsKnown || r.m_stream.packets.isEmpty()) {
                 r.m_stream = {};
                 damaged(QCoreApplication::translate("Recording", "unreadable stream description"));
             }

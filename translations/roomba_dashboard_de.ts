@@ -3192,6 +3192,29 @@ Gesendet: %2</translation>
     </message>
 </context>
 <context>
+    <name>SettingsFile</name>
+    <message>
+        <source>file damaged</source>
+        <translation>Datei beschädigt</translation>
+    </message>
+    <message>
+        <source>file unreadable</source>
+        <translation>Datei nicht lesbar</translation>
+    </message>
+    <message>
+        <source>settings version %1, not %2</source>
+        <translation>Einstellungsversion %1, nicht %2</translation>
+    </message>
+    <message>
+        <source>Settings not loaded (%1) and not kept aside: %2</source>
+        <translation>Einstellungen nicht geladen (%1) und nicht beiseitegelegt: %2</translation>
+    </message>
+    <message>
+        <source>Settings reset to defaults: %1; kept as %2</source>
+        <translation>Einstellungen auf Standardwerte zurückgesetzt: %1; aufbewahrt als %2</translation>
+    </message>
+</context>
+<context>
     <name>SevenSegmentDisplay</name>
     <message>
         <source>digit %1 dark</source>

@@ -3192,6 +3192,29 @@ Enviado: %2</translation>
     </message>
 </context>
 <context>
+    <name>SettingsFile</name>
+    <message>
+        <source>file damaged</source>
+        <translation>archivo dañado</translation>
+    </message>
+    <message>
+        <source>file unreadable</source>
+        <translation>archivo ilegible</translation>
+    </message>
+    <message>
+        <source>settings version %1, not %2</source>
+        <translation>versión de ajustes %1, no %2</translation>
+    </message>
+    <message>
+        <source>Settings not loaded (%1) and not kept aside: %2</source>
+        <translation>Ajustes no cargados (%1) ni apartados: %2</translation>
+    </message>
+    <message>
+        <source>Settings reset to defaults: %1; kept as %2</source>
+        <translation>Ajustes restablecidos a los valores predeterminados: %1; guardado como %2</translation>
+    </message>
+</context>
+<context>
     <name>SevenSegmentDisplay</name>
     <message>
         <source>digit %1 dark</source>

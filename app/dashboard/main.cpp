@@ -3,6 +3,7 @@
 #include "command_line.h"
 #include "language_switcher.h"
 #include "main_window.h"
+#include "settings_file.h"
 #include "termination_signals.h"
 
 #include <QApplication>
@@ -44,6 +45,7 @@ int main(int argc, char **argv)
     }
 
     QApplication app(argc, argv);
+    SettingsFile::checkAtStart(); // a damaged or foreign settings file is kept aside, not read
     QApplication::setApplicationVersion(ROOMBA_VERSION);
     // Fusion draws the same everywhere and takes the system's light or dark palette.
     QApplication::setStyle(QStyleFactory::create("Fusion"));

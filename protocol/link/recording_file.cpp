@@ -154,15 +154,22 @@ QString RecordingDamage::describe() const
 
 std::optional<Recording> Recording::load(const QString &path, QString *error)
 {
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly)) {
+        if (error)
+            *error = QStringLiteral("%1: %2").arg(path, file.errorString());
+        return std::nullopt;
+    }
+    return fromBytes(file.readAll(), path, error);
+}
+
+std::optional<Recording> Recording::fromBytes(const QByteArray &data, const QString &path, QString *error)
+{
     auto refuse = [&](const QString &why) -> std::optional<Recording> {
         if (error)
             *error = QStringLiteral("%1: %2").arg(path, why);
         return std::nullopt;
     };
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly))
-        return refuse(file.errorString());
-    const QByteArray data = file.readAll();
     const qsizetype prefix = recording::kMagicSize + kVersionSize + kHeaderLengthSize;
     if (data.size() < prefix || !data.startsWith(QByteArray(recording::kMagic, recording::kMagicSize)))
         return refuse(QCoreApplication::translate("Recording", "not a Roomba Dashboard recording"));
@@ -224,9 +231,14 @@ std::optional<Recording> Recording::load(const QString &path, QString *error)
             const std::string key = info.value(QStringLiteral("profile")).toString().toStdString();
             r.m_stream.profile = oi::profileByKey(key);
             r.m_stream.baud = info.value(QStringLiteral("baud")).toInt();
-            for (const QJsonValue id : info.value(QStringLiteral("packets")).toArray())
-                r.m_stream.packets << id.toInt();
-            if (!r.m_stream.profile || r.m_stream.packets.isEmpty()) {
+            bool packetsKnown = r.m_stream.profile != nullptr;
+            for (const QJsonValue id : info.value(QStringLiteral("packets")).toArray()) {
+                // Ids go to the parser as bytes: 300 must not be read as 44.
+                const int packet = id.toInt(-1);
+                r.m_stream.packets << packet;
+                packetsKnown = packetsKnown && r.m_stream.profile->isValidSensorId(packet);
+            }
+            if (!packetsKnown || r.m_stream.packets.isEmpty()) {
                 r.m_stream = {};
                 damaged(QCoreApplication::translate("Recording", "unreadable stream description"));
             }

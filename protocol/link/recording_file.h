@@ -100,6 +100,8 @@ public:
     // nullopt with `error` set when the file cannot be used at all: missing,
     // not a recording, a newer version, or no stream in it.
     static std::optional<Recording> load(const QString &path, QString *error);
+    // The same from the file's bytes; `path` only names the file in `error`.
+    static std::optional<Recording> fromBytes(const QByteArray &data, const QString &path, QString *error);
 
     const QJsonObject &header() const { return m_header; }
     const StreamInfo &stream() const { return m_stream; }

@@ -232,6 +232,9 @@ EncodeResult encodeScript(const CommandEncoder &encoder, const CommandSpec &spec
             return OiError::outOfRange("script byte " + std::to_string(i), (*v)[i], 0, 255);
         body.push_back(static_cast<std::uint8_t>((*v)[i]));
     }
+    // Bytes given as numbers must still be whole commands of the robot.
+    if (const auto text = disassembleScript(encoder.robotProfile(), body); !text)
+        return text.error();
     return encoder.script(body);
 }
 

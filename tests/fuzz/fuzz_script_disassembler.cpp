@@ -5,16 +5,8 @@
 #include "script_round_trip.h"
 
 #include <cstdint>
-#include <cstdio>
-#include <cstdlib>
-#include <string>
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size)
 {
-    const std::string failure = fuzz::checkScriptInput({data, size});
-    if (!failure.empty()) {
-        std::fprintf(stderr, "invariant violated: %s\n", failure.c_str());
-        std::abort();
-    }
-    return 0;
+    return fuzz::abortOnFailure(fuzz::checkScriptInput({data, size}));
 }

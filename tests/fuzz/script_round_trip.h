@@ -3,6 +3,7 @@
 // tests/oi/tst_fuzz_regressions.cpp so a saved input replays exactly.
 #pragma once
 
+#include "fuzz_target.h"
 #include "script_assembler.h"
 
 #include <algorithm>
@@ -27,9 +28,7 @@ inline std::string checkScriptInput(std::span<const std::uint8_t> input)
 {
     if (input.empty())
         return {};
-    static constexpr oi::ProfileId kProfiles[] = {oi::ProfileId::Create1, oi::ProfileId::Roomba500,
-                                                  oi::ProfileId::Create2};
-    const oi::RobotProfile &profile = oi::profile(kProfiles[input[0] % 3]);
+    const oi::RobotProfile &profile = profileOfByte(input[0]);
     const std::span<const std::uint8_t> body = input.subspan(1);
     auto failure = [&](std::string_view what, std::string_view text) {
         return std::string(profile.key) + ": " + std::string(what) + "; text: " + std::string(text);

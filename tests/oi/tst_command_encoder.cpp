@@ -221,6 +221,9 @@ void TestCommandEncoder::badArguments_data()
     QTest::newRow("script nested") << "create1" << "script \"script 1 153\"" << "statement 1 (script)" << "cannot define another script";
     QTest::newRow("script empty") << "create1" << "script \"# nothing\"" << "script" << "has no commands";
     QTest::newRow("script length mismatch") << "create1" << "script 3 153" << "script length" << "does not match";
+    // Found by fuzz_command_text: bytes given as numbers went out unchecked.
+    QTest::newRow("script bytes not opcodes") << "create1" << "script 2 7 8" << "byte 0" << "7 is not an opcode of the Create";
+    QTest::newRow("script command cut short") << "create1" << "script 2 137 1" << "byte 0" << "Drive needs 4 data bytes";
     QTest::newRow("not a number") << "create2" << "drive abc 0" << "drive argument 1" << "'abc' is not a number";
     QTest::newRow("too few") << "create2" << "drive 1" << "drive" << "takes VELOCITY";
     QTest::newRow("too many") << "create2" << "start 1" << "start" << "takes no arguments";

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Inputs the fuzzers in tests/fuzz once failed on, replayed through the same
 // check the fuzzer runs, so each stays fixed.
+#include "../fuzz/command_text_round_trip.h"
 #include "../fuzz/script_round_trip.h"
 
 #include <QByteArray>
@@ -26,10 +27,36 @@ private slots:
     void scriptRoundTrip()
     {
         QFETCH(QByteArray, input);
-        const std::span<const std::uint8_t> bytes(reinterpret_cast<const std::uint8_t *>(input.constData()),
-                                                  static_cast<std::size_t>(input.size()));
-        const std::string failure = fuzz::checkScriptInput(bytes);
+        const std::string failure = fuzz::checkScriptInput(asBytes(input));
         QVERIFY2(failure.empty(), failure.c_str());
+    }
+
+    void commandTextRoundTrip_data()
+    {
+        QTest::addColumn<QByteArray>("input");
+        // Byte 0 picks the profile (0, Create 1), then the command name and
+        // its arguments, one a line. "script 0" is an empty script (it clears
+        // the stored one), whose empty body has no text to encode again.
+        QTest::newRow("empty script") << QByteArray::fromHex("00") + QByteArray("script\n0");
+        // The bytes of "script LENGTH BYTE..." went out unchecked, though
+        // they were no commands of the Create.
+        QTest::newRow("script of bytes that are no commands")
+            << QByteArray::fromHex("00") + QByteArray("script\n2\n7\n8");
+        QTest::newRow("drive straight") << QByteArray::fromHex("02") + QByteArray("drive\n-200\nstraight");
+        QTest::newRow("song with a sharp") << QByteArray::fromHex("01") + QByteArray("song\n3\nC#4:32\nrest:16");
+        QTest::newRow("schedule") << QByteArray::fromHex("02") + QByteArray("schedule\nwed 15:00, fri 10:36");
+    }
+    void commandTextRoundTrip()
+    {
+        QFETCH(QByteArray, input);
+        const std::string failure = fuzz::checkCommandTextInput(asBytes(input));
+        QVERIFY2(failure.empty(), failure.c_str());
+    }
+
+private:
+    static std::span<const std::uint8_t> asBytes(const QByteArray &input)
+    {
+        return {reinterpret_cast<const std::uint8_t *>(input.constData()), static_cast<std::size_t>(input.size())};
     }
 };
 

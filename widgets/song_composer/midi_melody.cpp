@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "midi_melody.h"
+#include "midi_file_check.h"
 
 #include <QCoreApplication>
 #include <QFile>
@@ -8,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -29,9 +31,13 @@ std::optional<QList<oi::SongNote>> melodyFromMidiFile(const QString &path, int *
             *error = QCoreApplication::translate("MidiMelody", "Could not import %1: %2").arg(path, why);
         return std::nullopt;
     };
-    if (!QFile::exists(path))
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly))
         return fail(QCoreApplication::translate("MidiMelody", "no such file"));
-    std::unique_ptr<smf_t, decltype(&smf_delete)> smf(smf_load(QFile::encodeName(path).constData()),
+    const QByteArray bytes = file.readAll();
+    if (!isWellFormedMidiFile(bytes) || bytes.size() > std::numeric_limits<int>::max())
+        return fail(QCoreApplication::translate("MidiMelody", "not a readable Standard MIDI File"));
+    std::unique_ptr<smf_t, decltype(&smf_delete)> smf(smf_load_from_memory(bytes.constData(), int(bytes.size())),
                                                       &smf_delete);
     if (!smf)
         return fail(QCoreApplication::translate("MidiMelody", "not a readable Standard MIDI File"));

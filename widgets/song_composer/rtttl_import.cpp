@@ -4,6 +4,7 @@
 #include <QCoreApplication>
 #include <QStringList>
 
+#include <algorithm>
 #include <cmath>
 
 namespace {
@@ -68,10 +69,11 @@ std::optional<RtttlTune> parseRtttl(const QString &text, QString *error)
     for (qsizetype i = 0; i < items.size(); ++i) {
         const QString item = items.at(i).trimmed().toLower();
         qsizetype pos = 0;
+        // Past 999 a number is no duration or octave; stop there, before it overflows.
         auto readNumber = [&]() {
             int v = 0, digits = 0;
             while (pos < item.size() && item.at(pos).isDigit()) {
-                v = v * 10 + item.at(pos++).digitValue();
+                v = std::min(v * 10 + item.at(pos++).digitValue(), 1000);
                 ++digits;
             }
             return digits ? v : -1;

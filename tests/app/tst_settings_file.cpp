@@ -1,0 +1,116 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// A settings file that is damaged or from another version is kept aside
+// under a new name, never read and never overwritten; the dashboard starts
+// with defaults and says so once.
+#include "settings_file.h"
+
+#include <QDir>
+#include <QFile>
+#include <QFileInfo>
+#include <QSettings>
+#include <QStandardPaths>
+#include <QTest>
+
+class TestSettingsFile : public QObject {
+    Q_OBJECT
+private:
+    QString m_path;
+
+    void writeFile(const QByteArray &content)
+    {
+        QVERIFY(QDir().mkpath(QFileInfo(m_path).path()));
+        QFile f(m_path);
+        QVERIFY(f.open(QIODevice::WriteOnly | QIODevice::Truncate));
+        f.write(content);
+    }
+    QByteArray fileContent(const QString &path)
+    {
+        QFile f(path);
+        return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+    }
+    QStringList keptAside() const
+    {
+        const QFileInfo info(m_path);
+        return QDir(info.path()).entryList({info.fileName() + ".bad-*"}, QDir::Files);
+    }
+
+private slots:
+    void initTestCase()
+    {
+        QStandardPaths::setTestModeEnabled(true); // ~/.qttest, not the user's settings
+        QCoreApplication::setOrganizationName("RoombaDashboardTest");
+        QCoreApplication::setApplicationName("tst_settings_file");
+        m_path = QSettings().fileName();
+    }
+    void init()
+    {
+        QDir dir(QFileInfo(m_path).path());
+        for (const QString &name : dir.entryList({QFileInfo(m_path).fileName() + "*"}, QDir::Files))
+            QVERIFY(dir.remove(name));
+    }
+
+    void noFileIsNoNews()
+    {
+        const SettingsFile::Check check = SettingsFile::check();
+        QVERIFY(check.notice.isEmpty());
+        QVERIFY(keptAside().isEmpty());
+    }
+
+    void aGoodFileIsKeptAndGainsTheVersion()
+    {
+        writeFile("[General]\nlanguage=de\n");
+        QVERIFY(SettingsFile::check().notice.isEmpty());
+        QSettings settings;
+        QCOMPARE(settings.value("language").toString(), QString("de"));
+        QCOMPARE(settings.value(SettingsFile::kVersionKey).toInt(), SettingsFile::kVersion);
+        QVERIFY(keptAside().isEmpty());
+    }
+
+    void badFileIsKeptAsideOnce_data()
+    {
+        QTest::addColumn<QByteArray>("content");
+        QTest::addColumn<QString>("reason");
+        QTest::newRow("damaged") << QByteArray("[General\nlanguage=de\n\x00\xff garbage", 24) << "damaged";
+        QByteArray noise;
+        for (int i = 0; i < 300; ++i)
+            noise.append(char((i * 7919 + 13) % 256)); // any bytes, a NUL among them
+        QTest::newRow("not text") << noise << "damaged";
+        QTest::newRow("another version") << QByteArray("[General]\nsettingsVersion=7\nlanguage=es\n")
+                                         << "settings version 7, not 1";
+    }
+    void badFileIsKeptAsideOnce()
+    {
+        QFETCH(QByteArray, content);
+        QFETCH(QString, reason);
+        writeFile(content);
+        const SettingsFile::Check check = SettingsFile::check();
+        QVERIFY2(check.notice.contains(reason), qPrintable(check.notice));
+        QVERIFY2(check.notice.contains(QFileInfo(check.keptAs).fileName()), qPrintable(check.notice));
+        // The bad file is where the notice says, byte for byte.
+        QCOMPARE(keptAside(), QStringList{QFileInfo(check.keptAs).fileName()});
+        QCOMPARE(fileContent(check.keptAs), content);
+        // Defaults now, in a file of this version; said once only.
+        QSettings settings;
+        QVERIFY(!settings.contains("language"));
+        QCOMPARE(settings.value(SettingsFile::kVersionKey).toInt(), SettingsFile::kVersion);
+        settings.sync();
+        QVERIFY(SettingsFile::check().notice.isEmpty());
+        QCOMPARE(keptAside().size(), 1);
+    }
+
+    void twoBadFilesInOneSecondAreBothKept()
+    {
+        writeFile("[General]\nsettingsVersion=2\n");
+        const QString first = SettingsFile::check().keptAs;
+        writeFile("[General]\nsettingsVersion=3\n");
+        const QString second = SettingsFile::check().keptAs;
+        QVERIFY(!first.isEmpty());
+        QVERIFY(!second.isEmpty());
+        QVERIFY(first != second);
+        QCOMPARE(fileContent(first), QByteArray("[General]\nsettingsVersion=2\n"));
+        QCOMPARE(fileContent(second), QByteArray("[General]\nsettingsVersion=3\n"));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestSettingsFile)
+#include "tst_settings_file.moc"

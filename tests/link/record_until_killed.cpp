@@ -5,6 +5,7 @@
 //
 //   record_until_killed FILE
 #include "robot_link_thread.h"
+#include "transport_factory.h"
 
 #include <QCoreApplication>
 
@@ -19,6 +20,7 @@ int main(int argc, char **argv)
     }
     oilink::registerLinkMetaTypes();
     oilink::RobotLinkThread link;
+    link.setTransportFactory(transports::transportFactory());
     long long frames = 0;
     QObject::connect(&link, &oilink::RobotLinkThread::snapshot, &app, [&] {
         std::printf("frames %lld\n", ++frames);

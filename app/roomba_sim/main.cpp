@@ -105,6 +105,7 @@ int main(int argc, char *argv[])
         {QStringLiteral("tcp"), QStringLiteral("Serve raw bytes on this TCP port instead of a pseudo-terminal (0 picks a free port)."), QStringLiteral("PORT")},
         {QStringLiteral("bind"), QStringLiteral("Address to listen on with --tcp (default 127.0.0.1)."), QStringLiteral("ADDRESS"), QStringLiteral("127.0.0.1")},
         {QStringLiteral("link"), QStringLiteral("Also make a symbolic link at PATH to the pseudo-terminal (an existing link is replaced)."), QStringLiteral("PATH")},
+        {QStringLiteral("on-dock"), QStringLiteral("Start with the robot on its dock (charging in Passive; Safe mode will not drive there).")},
     });
 
     if (!parser.parse(QCoreApplication::arguments()))
@@ -195,6 +196,11 @@ int main(int argc, char *argv[])
         robot = &pty->robot().robot();
     }
     robot->setFaultRates(rates);
+    if (parser.isSet(QStringLiteral("on-dock"))) {
+        // Nose first onto the contacts, facing the way the dock does not.
+        const sim::World::Dock dock = *robot->world().dock;
+        robot->placeAt(oi::Pose{dock.x, dock.y, dock.headingRad + std::acos(-1.0)});
+    }
     if (!firmware.isEmpty())
         robot->setFirmwareRelease(firmware.toStdString());
 

@@ -60,7 +60,8 @@ void ProfileProbe::tryBaud()
     m_modeAttempts = 0;
     m_received.clear();
     m_step = Step::Draining;
-    send(bytes({128, 150, 0}));
+    m_startSent = m_startPolicy == StartPolicy::Always;
+    send(m_startSent ? bytes({128, 150, 0}) : bytes({150, 0}));
     m_timer.start(kDrainMs);
 }
 
@@ -110,8 +111,14 @@ void ProfileProbe::onTimeout()
         const bool plausible = m_received.size() == 2 && at(0) >= 1 && at(0) <= kModeMax
                                && (at(1) & kBumpBitsUnused) == 0;
         if (plausible) {
+            m_mode = static_cast<oi::OiMode>(at(0));
             const oi::PacketGroup *group = oi::profile(oi::ProfileId::Create2).group(101);
             ask(bytes({142, 101}), group->bytes, Step::AskRoombaGroup);
+        } else if (!m_startSent && m_startPolicy == StartPolicy::IfSilent) {
+            // Silent: Off mode, or the wrong baud. Start opens the interface.
+            m_startSent = true;
+            send(bytes({128}));
+            ask(bytes({149, 2, 35, 7}), 2, Step::AskMode);
         } else if (++m_modeAttempts < kModeAttempts) {
             ask(bytes({149, 2, 35, 7}), 2, Step::AskMode);
         } else {

@@ -4,6 +4,7 @@
 #include "link_status.h" // the metatype of oi::ProfileId, which a signal carries
 
 #include "robot_profile.h"
+#include "sensor_snapshot.h"
 
 #include <QByteArray>
 #include <QList>
@@ -40,6 +41,16 @@ public:
 
     static QList<int> defaultBauds() { return {115200, 57600, 19200}; }
 
+    enum class StartPolicy : std::uint8_t {
+        Always,   // Start goes out first at every baud, as above (the default)
+        IfSilent, // asked first without Start, which would drop Safe or Full
+                  // to Passive; Start goes out only when nothing answers
+        Never,    // a robot in Off mode is not found
+    };
+    void setStartPolicy(StartPolicy policy) { m_startPolicy = policy; }
+    // The OI mode the robot answered with, once detected.
+    oi::OiMode modeFound() const { return m_mode; }
+
     void start();
     void cancel();
     bool isRunning() const { return m_step != Step::Idle; }
@@ -71,6 +82,9 @@ private:
     QByteArray m_received;
     qsizetype m_expected = 0;
     bool m_settling = false;
+    StartPolicy m_startPolicy = StartPolicy::Always;
+    bool m_startSent = false;
+    oi::OiMode m_mode = oi::OiMode::Off;
     QTimer m_timer;
 };
 

@@ -2,7 +2,9 @@
 #include "virtual_robot.h"
 
 #include "body.h"
+#include "brc_pin.h"
 #include "command_catalog.h"
+#include "command_modes.h"
 #include "firmware_banner.h"
 #include "packet_encoding.h"
 #include "seven_segment_font.h"
@@ -54,29 +56,6 @@ constexpr double kOldFirmwareAngleFactor = 0.324056;
 constexpr oi::FirmwareVersion kAngleFixedAfter{3, 4, 0};
 
 std::int16_t s16(std::uint8_t hi, std::uint8_t lo) { return std::int16_t(std::uint16_t((hi << 8) | lo)); }
-
-bool isActuator(Command c)
-{
-    switch (c) {
-    case Command::Drive:
-    case Command::DriveDirect:
-    case Command::DrivePwm:
-    case Command::Motors:
-    case Command::LowSideDrivers:
-    case Command::PwmMotors:
-    case Command::PwmLowSideDrivers:
-    case Command::Leds:
-    case Command::Play:
-    case Command::SchedulingLeds:
-    case Command::DigitLedsRaw:
-    case Command::DigitLedsAscii:
-    case Command::DigitalOutputs:
-    case Command::SendIr:
-        return true;
-    default:
-        return false;
-    }
-}
 
 bool isCleaning(Command c)
 {
@@ -197,6 +176,7 @@ struct VirtualRobot::State {
     // The Open Interface.
     OiMode mode = OiMode::Off;
     bool asleep = false;
+    BrcPin brc;
     int baud;
     std::string firmwareRelease = "release-3.8.2";
     double angleFactor = 1; // raw packet 20 units per degree
@@ -328,6 +308,30 @@ struct VirtualRobot::State {
         scriptIn.clear();
         enterPassive();
         lastSafetyStop = why;
+    }
+
+    bool sleepsWhenIdle() const { return profile->id == oi::ProfileId::Create2; }
+
+    bool wakesOnDock() const
+    {
+        const auto info = oi::parseFirmwareBanner("r3_robot/tags/" + firmwareRelease + ":");
+        return !info || oi::wakesByBrcOnDock(*info);
+    }
+
+    void setBrcLow(bool low)
+    {
+        const BrcPin::Event event = brc.set(low, now);
+        if (event == BrcPin::Event::None || disconnected)
+            return;
+        if (event == BrcPin::Event::PulseAndBaud19200)
+            baud = 19200;
+        if (asleep && onDock() && !wakesOnDock())
+            return;
+        if (asleep) {
+            asleep = false;
+            mode = OiMode::Off;
+        }
+        lastActivity = now;
     }
 
     void fallAsleep()
@@ -635,7 +639,7 @@ struct VirtualRobot::State {
             wait.reset();
         scriptYield = false;
         pump();
-        if (mode == OiMode::Passive && now - lastActivity >= kSleepAfter) {
+        if (sleepsWhenIdle() && mode == OiMode::Passive && now - lastActivity >= kSleepAfter) {
             fallAsleep();
             return;
         }
@@ -848,18 +852,8 @@ struct VirtualRobot::State {
 
     void receive(std::span<const std::uint8_t> bytes)
     {
-        if (disconnected || bytes.empty())
+        if (disconnected || asleep || bytes.empty())
             return;
-        lastActivity = now;
-        if (asleep) {
-            // Asleep, the robot hears nothing but Start, which wakes it. (A
-            // real one needs a pulse on its BRC pin; here the byte does it.)
-            const auto start = std::find(bytes.begin(), bytes.end(), std::uint8_t(128));
-            if (start == bytes.end())
-                return;
-            asleep = false;
-            bytes = bytes.subspan(std::size_t(start - bytes.begin()));
-        }
         for (std::uint8_t b : bytes)
             if (serialIn.size() < kInputBufferBytes)
                 serialIn.push_back(b);
@@ -872,9 +866,9 @@ struct VirtualRobot::State {
         if (!spec)
             return; // an opcode this robot lacks: its bytes are skipped
         const Command cmd = spec->command;
-        if (mode == OiMode::Off && cmd != Command::Start && cmd != Command::Baud && cmd != Command::Reset)
+        if (mode == OiMode::Off && !oi::availableWhenOff(cmd))
             return;
-        if (mode == OiMode::Passive && isActuator(cmd))
+        if (mode == OiMode::Passive && oi::needsSafeOrFull(cmd))
             return;
         if (isCleaning(cmd)) {
             enterPassive(); // the cleaning itself is not simulated
@@ -1091,6 +1085,8 @@ void VirtualRobot::pressButtons(std::uint8_t packet18Bits) { m_state->heldButton
 oi::OiMode VirtualRobot::mode() const { return m_state->mode; }
 
 bool VirtualRobot::asleep() const { return m_state->asleep; }
+
+void VirtualRobot::setBrcLow(bool low) { m_state->setBrcLow(low); }
 
 void VirtualRobot::setFirmwareRelease(std::string release)
 {

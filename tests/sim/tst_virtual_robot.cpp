@@ -483,7 +483,12 @@ void TestVirtualRobot::powerPutsTheRobotToSleep()
     b.send(b.encoder.sensors(35));
     QVERIFY(b.raw.empty());
     b.send(b.encoder.start());
+    QVERIFY(b.robot.asleep()); // Start does not wake it: the BRC pin does
+    b.robot.setBrcLow(true);
+    b.run(100ms);
+    b.robot.setBrcLow(false);
     QVERIFY(!b.robot.asleep());
+    b.send(b.encoder.start());
     QCOMPARE(b.value(35), int(OiMode::Passive));
 }
 
@@ -574,14 +579,28 @@ void TestVirtualRobot::sleepsAfterFiveMinutesOfPassiveInactivity()
     QVERIFY(b.raw.empty()); // no frames
     b.send(b.encoder.sensors(35));
     QVERIFY(b.raw.empty()); // and no replies
-    // This robot wakes on Start.
+    // Start does not wake it; a pulse on the BRC pin does, into Off mode.
     b.send(b.encoder.start());
+    QVERIFY(b.robot.asleep());
+    b.robot.setBrcLow(true);
     QVERIFY(!b.robot.asleep());
+    b.run(1s);
+    b.robot.setBrcLow(false);
+    QCOMPARE(b.robot.mode(), OiMode::Off);
+    b.send(b.encoder.start());
     QCOMPARE(b.value(35), int(OiMode::Passive));
 
-    // Any command restarts the count.
+    // Commands do not restart the count; a BRC pulse does.
     b.run(200s);
     b.value(35);
+    b.run(100s);
+    QVERIFY(b.robot.asleep());
+    b.robot.setBrcLow(true);
+    b.robot.setBrcLow(false);
+    b.send(b.encoder.start());
+    b.run(200s);
+    b.robot.setBrcLow(true);
+    b.robot.setBrcLow(false);
     b.run(200s);
     QVERIFY(!b.robot.asleep());
     b.run(101s);

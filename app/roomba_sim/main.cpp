@@ -2,6 +2,7 @@
 // roomba-sim: the virtual robot on a pseudo-terminal (or a TCP port), for any
 // Open Interface client to connect to.
 
+#include "brc_control_server.h"
 #include "firmware_banner.h"
 #include "pty_robot_server.h"
 #include "tcp_robot_server.h"
@@ -92,7 +93,11 @@ int main(int argc, char *argv[])
     parser.setApplicationDescription(QStringLiteral(
         "A virtual iRobot Open Interface robot on a pseudo-terminal.\n"
         "Prints the device to open (or tcp://ADDRESS:PORT) on the first line of\n"
-        "standard output, then runs until interrupted."));
+        "standard output, then runs until interrupted.\n"
+        "A pseudo-terminal has no modem lines, so the robot's BRC pin (which wakes\n"
+        "it, keeps it awake and sets 19200 baud) is a local socket beside it,\n"
+        "/tmp/roomba-sim-brc-pts-N for /dev/pts/N: each byte 'L' pulls the pin low,\n"
+        "'H' lets it go. The dashboard and roomba-ctl use it as the RTS/DTR line."));
     const QCommandLineOption helpOption = parser.addHelpOption();
     const QCommandLineOption versionOption = parser.addVersionOption();
     parser.addOptions({
@@ -105,6 +110,8 @@ int main(int argc, char *argv[])
         {QStringLiteral("tcp"), QStringLiteral("Serve raw bytes on this TCP port instead of a pseudo-terminal (0 picks a free port)."), QStringLiteral("PORT")},
         {QStringLiteral("bind"), QStringLiteral("Address to listen on with --tcp (default 127.0.0.1)."), QStringLiteral("ADDRESS"), QStringLiteral("127.0.0.1")},
         {QStringLiteral("link"), QStringLiteral("Also make a symbolic link at PATH to the pseudo-terminal (an existing link is replaced)."), QStringLiteral("PATH")},
+        {QStringLiteral("asleep"), QStringLiteral("Start asleep, as after Power (133): deaf to bytes until a BRC pulse.")},
+        {QStringLiteral("speed"), QStringLiteral("Run the robot's clock N times faster than real time (default 1), e.g. to watch it sleep."), QStringLiteral("N"), QStringLiteral("1")},
         {QStringLiteral("on-dock"), QStringLiteral("Start with the robot on its dock (charging in Passive; Safe mode will not drive there).")},
     });
 
@@ -148,6 +155,10 @@ int main(int argc, char *argv[])
             return fail(kUsageError, QStringLiteral("--firmware: '%1' is not a release name like release-3.8.2 or release-stm32-3.7.7").arg(firmware));
     }
 
+    const double speed = parser.value(QStringLiteral("speed")).toDouble(&ok);
+    if (!ok || !std::isfinite(speed) || speed < 0.01 || speed > 1000)
+        return fail(kUsageError, QStringLiteral("--speed: '%1' is not a factor from 0.01 to 1000").arg(parser.value(QStringLiteral("speed"))));
+
     const bool tcp = parser.isSet(QStringLiteral("tcp"));
     quint16 port = 0;
     QHostAddress address;
@@ -186,15 +197,18 @@ int main(int argc, char *argv[])
 
     std::unique_ptr<sim::PtyRobotServer> pty;
     std::unique_ptr<sim::TcpRobotServer> tcpServer;
-    sim::VirtualRobot *robot = nullptr;
+    std::unique_ptr<sim::BrcControlServer> brcControl;
+    sim::RealTimeRobot *realTime = nullptr;
     QString where;
     if (tcp) {
         tcpServer = std::make_unique<sim::TcpRobotServer>(*profile, seed);
-        robot = &tcpServer->robot().robot();
+        realTime = &tcpServer->robot();
     } else {
         pty = std::make_unique<sim::PtyRobotServer>(*profile, seed);
-        robot = &pty->robot().robot();
+        realTime = &pty->robot();
     }
+    realTime->setTimeScale(speed);
+    sim::VirtualRobot *robot = &realTime->robot();
     robot->setFaultRates(rates);
     if (parser.isSet(QStringLiteral("on-dock"))) {
         // Nose first onto the contacts, facing the way the dock does not.
@@ -203,6 +217,12 @@ int main(int argc, char *argv[])
     }
     if (!firmware.isEmpty())
         robot->setFirmwareRelease(firmware.toStdString());
+    if (parser.isSet(QStringLiteral("asleep"))) {
+        const std::uint8_t startAndPower[] = {128, 133};
+        robot->receive(startAndPower);
+        if (!robot->asleep())
+            return fail(kUsageError, QStringLiteral("--asleep: the Create has no Power command to sleep by; use it with roomba500 or create2"));
+    }
 
     if (tcp) {
         if (!tcpServer->listen(address, port, &message))
@@ -215,6 +235,9 @@ int main(int argc, char *argv[])
         if (!pty->open(&message))
             return fail(kRuntimeError, QStringLiteral("cannot create a pseudo-terminal: %1").arg(message));
         where = pty->slavePath();
+        brcControl = std::make_unique<sim::BrcControlServer>(pty->robot());
+        if (!brcControl->listen(where, &message))
+            return fail(kRuntimeError, QStringLiteral("cannot make the BRC control socket: %1").arg(message));
     }
 
     QString linkPath;
@@ -231,6 +254,8 @@ int main(int argc, char *argv[])
 
     const int status = app.exec();
 
+    if (brcControl)
+        brcControl->close();
     if (pty)
         pty->close();
     if (tcpServer)

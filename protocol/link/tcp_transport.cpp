@@ -28,6 +28,13 @@ QString TcpTransport::describe() const
     return m_host + QLatin1Char(':') + QString::number(m_port);
 }
 
+QString TcpTransport::brcUnavailable() const
+{
+    return tr("%1: raw TCP carries no modem lines, so it cannot wake the robot or keep it awake "
+              "(a bridge in RFC 2217 mode can)")
+        .arg(describe());
+}
+
 void TcpTransport::open()
 {
     if (m_connected) {

@@ -21,6 +21,7 @@ public:
     bool write(const QByteArray &bytes) override;
     void flush(int msecs) override;
     QString describe() const override;
+    QString brcUnavailable() const override;
 
 private:
     void onConnected();

@@ -15,11 +15,25 @@ bool Transport::setBaud(int)
     return false;
 }
 
+bool Transport::setBrcLow(bool)
+{
+    return false;
+}
+
+QString Transport::brcUnavailable() const
+{
+    return tr("%1 cannot reach the robot's BRC pin").arg(describe());
+}
+
 Transport *createTransport(const LinkSettings &settings, int baud, QObject *parent)
 {
     switch (settings.transport) {
     case TransportKind::Serial:
-        return new SerialTransport(settings.portPath, baud, parent);
+    {
+        auto *serial = new SerialTransport(settings.portPath, baud, parent);
+        serial->setBrcLine(settings.brcLine, settings.brcAssertedIsLow);
+        return serial;
+    }
     case TransportKind::Tcp:
         return new TcpTransport(settings.host, settings.tcpPort, parent);
     case TransportKind::Replay:

@@ -31,6 +31,11 @@ public:
     // Serial ports only: change the line speed, open or not. Others have no
     // baud of their own and return false.
     virtual bool setBaud(int baud);
+    // The robot's BRC pin (Baud Rate Change, also its wake-up line): pulled
+    // low or let go. False where this transport cannot reach it; then
+    // brcUnavailable() says why.
+    virtual bool setBrcLow(bool low);
+    virtual QString brcUnavailable() const;
     // "/dev/ttyUSB0", "host:port": the prefix of this transport's messages.
     virtual QString describe() const = 0;
 

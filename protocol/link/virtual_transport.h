@@ -28,6 +28,7 @@ public:
     bool write(const QByteArray &bytes) override;
     void flush(int) override {}
     QString describe() const override;
+    bool setBrcLow(bool low) override;
 
     // The robot itself, for tests and demonstrations that stage faults;
     // nullptr until the first open(). Same thread only.

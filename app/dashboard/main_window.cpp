@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "main_window.h"
 
+#include "connection_checkup.h"
+#include "doctor_details.h"
 #include "byte_inspector.h"
 #include "display_palette.h"
 #include "oi_text.h"
@@ -179,6 +181,7 @@ MainWindow::MainWindow(QWidget *parent) : QMainWindow(parent)
         m_firmware = release;
         m_firmwareLabel->setText(tr("Firmware %1").arg(release));
     });
+    m_checkup = new ConnectionCheckup(m_session, *m_doctorDetails, ConnectionCheckup::askWithDialog(this), this);
     connect(&m_session, &RobotSession::recordingStatus, this, &MainWindow::showRecording);
     connect(&m_session, &RobotSession::replayStatus, this, &MainWindow::showReplay);
     connect(m_replayBar, &ReplayBar::playRequested, this, [this] { m_session.controlReplay(oilink::ReplayCommand::play()); });
@@ -531,6 +534,8 @@ void MainWindow::buildStatusBar()
                                     .arg(display::stateColor(alert, palette()).name(),
                                          display::textOn(alert, palette()).name()));
     statusBar()->addWidget(m_staleLabel);
+    m_doctorDetails = new DoctorDetails(this);
+    statusBar()->addWidget(m_doctorDetails, 1);
     m_stateLabel = label("linkState");
     m_profileLabel = label("profile");
     m_firmwareLabel = label("firmware");

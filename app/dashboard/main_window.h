@@ -13,6 +13,8 @@
 #include <QSet>
 #include <QTimer>
 
+class ConnectionCheckup;
+class DoctorDetails;
 class ByteInspector;
 class DrivePad;
 class GamepadInput;
@@ -184,4 +186,6 @@ private:
     QLabel *m_rateLabel = nullptr;
     QLabel *m_errorsLabel = nullptr;
     QLabel *m_staleLabel = nullptr;
+    DoctorDetails *m_doctorDetails = nullptr; // what the connection check found
+    ConnectionCheckup *m_checkup = nullptr;
 };

@@ -4,6 +4,7 @@
 
 #include "command_catalog.h"
 #include "command_sender.h"
+#include "connection_doctor.h"
 #include "profile_probe.h"
 #include "recording_file.h"
 #include "robot_link_thread.h"
@@ -68,6 +69,12 @@ Commands:
         roomba-ctl send --port /dev/ttyUSB0 safe
         roomba-ctl send --port /dev/ttyUSB0 drive 200 straight
         roomba-ctl send --sim sensors 7
+  doctor ROBOT [--profile P] [--baud B]
+      Find out why a robot gives no valid data, and print what was tried:
+      each baud with and without Start, a BRC pulse to wake it, the three
+      pulses for 19200 baud, then which robot answers. Exit status 0 when
+      all is well, 1 with the cause on the last line.
+        roomba-ctl doctor --port /dev/ttyUSB0
   csv RECORDING
       Print a recording (.oirec, from the dashboard or its --record) as CSV:
       time_s, then one column per packet, one row per stream frame. A damaged
@@ -546,6 +553,42 @@ int sendToRobot(int argc, char **argv, const std::vector<std::string> &args)
     return status;
 }
 
+int runDoctor(int argc, char **argv, const std::vector<std::string> &args)
+{
+    LinkOptions o;
+    const int at = parseLinkOptions(args, 1, o, false, "doctor");
+    if (at < 0)
+        return 2;
+    if (static_cast<std::size_t>(at) != args.size())
+        return fail("doctor takes no arguments besides its options");
+    QCoreApplication app(argc, argv);
+    const QList<int> bauds = oilink::ConnectionDoctor::candidateBauds(
+        o.baud > 0 ? o.baud : o.profile ? oi::profile(*o.profile).defaultBaud : 0);
+    std::unique_ptr<oilink::Transport> transport(oilink::createTransport(o.settings, bauds.front()));
+    oilink::ConnectionDoctor doctor(*transport, o.profile, o.baud);
+    int status = 0;
+    QObject::connect(transport.get(), &oilink::Transport::bytesReceived, &doctor, &oilink::ConnectionDoctor::feed);
+    QObject::connect(transport.get(), &oilink::Transport::opened, &doctor, &oilink::ConnectionDoctor::start);
+    QObject::connect(transport.get(), &oilink::Transport::errorOccurred, &app, [&](const QString &message) {
+        std::cout << toStd(message) << std::endl;
+        status = 1;
+        QCoreApplication::exit(1);
+    });
+    QObject::connect(&doctor, &oilink::ConnectionDoctor::stepDone, &app,
+                     [](const QString &step) { std::cout << "  " << toStd(step) << std::endl; });
+    QObject::connect(&doctor, &oilink::ConnectionDoctor::finished, &app,
+                     [&](const oilink::ConnectionDoctor::Report &report) {
+                         std::cout << toStd(report.summary) << std::endl;
+                         status = report.finding == oilink::ConnectionDoctor::Finding::Healthy ? 0 : 1;
+                         QCoreApplication::exit(status);
+                     });
+    std::cout << "Checking " << toStd(o.settings.describe()) << ":" << std::endl;
+    QTimer::singleShot(0, &app, [&] { transport->open(); });
+    QCoreApplication::exec();
+    transport->close();
+    return status;
+}
+
 int recordingCsv(const std::vector<std::string> &args, std::size_t from)
 {
     if (args.size() != from + 1)
@@ -596,6 +639,8 @@ int main(int argc, char **argv)
         return streamSensors(argc, argv, args);
     if (command == "send")
         return sendToRobot(argc, argv, args);
+    if (command == "doctor")
+        return runDoctor(argc, argv, args);
     if (command == "csv")
         return recordingCsv(args, 1);
     return fail("unknown command '" + command + "'; try --help");

@@ -11,6 +11,9 @@
 #include <QObject>
 #include <QTimer>
 
+#include <cstdint>
+#include <initializer_list>
+
 namespace oilink {
 
 class Transport;
@@ -40,6 +43,20 @@ public:
     ProfileProbe(Transport &transport, QList<int> bauds, QObject *parent = nullptr);
 
     static QList<int> defaultBauds() { return {115200, 57600, 19200}; }
+
+    // Shared with the connection doctor, which asks the same questions.
+    static constexpr int kDrainMs = 80;
+    // Generous: a robot answers within a frame time, but a busy machine
+    // running the virtual robot in another process may not schedule it at once.
+    static constexpr int kReplyTimeoutMs = 400;
+    // After the expected bytes, wait this long for more: extra bytes mean
+    // the answer was garbage.
+    static constexpr int kQuietMs = 30;
+    static QByteArray bytesOf(std::initializer_list<std::uint8_t> values);
+    // Query List 35 (OI mode), 7 (bumps and wheel drops).
+    static QByteArray modeQuestion() { return bytesOf({149, 2, 35, 7}); }
+    // Exactly two bytes: a mode of 1..3 and a bumps byte with bits 5..7 clear.
+    static bool isModeAnswer(const QByteArray &answer);
 
     enum class StartPolicy : std::uint8_t {
         Always,   // Start goes out first at every baud, as above (the default)

@@ -218,6 +218,27 @@ private slots:
         QVERIFY2(o.err.contains(QStringLiteral("warning: the robot is on its dock: Safe mode ignores drive")), qPrintable(o.err));
     }
 
+    void doctorWakesASleepingRobot()
+    {
+        Sim sim({QStringLiteral("--asleep")});
+        QVERIFY(!sim.path().isEmpty());
+        const Outcome o = run({QStringLiteral("doctor"), QStringLiteral("--port"), sim.path(), QStringLiteral("--profile"),
+                               QStringLiteral("create2")});
+        QCOMPARE(o.status, 1);
+        QVERIFY2(o.lines.first().startsWith(QStringLiteral("Checking ")), qPrintable(o.lines.join('\n')));
+        QVERIFY2(o.lines.contains(QStringLiteral("  Pulsed the BRC pin to wake the robot.")), qPrintable(o.lines.join('\n')));
+        QCOMPARE(o.lines.last(), QStringLiteral("The robot was asleep; a BRC pulse woke it."));
+    }
+
+    void doctorOnAHealthyRobot()
+    {
+        const Outcome o = run({QStringLiteral("doctor"), QStringLiteral("--sim"), QStringLiteral("--profile"),
+                               QStringLiteral("create1")});
+        QCOMPARE(o.status, 0);
+        QVERIFY2(o.lines.last().startsWith(QStringLiteral("The robot answers at virtual Create as a Create")),
+                 qPrintable(o.lines.join('\n')));
+    }
+
     void sendToTheVirtualRobot()
     {
         const Outcome o = run({QStringLiteral("send"), QStringLiteral("--sim"), QStringLiteral("--profile"),

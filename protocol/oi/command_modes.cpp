@@ -28,7 +28,7 @@ bool needsSafeOrFull(Command command)
 
 bool availableWhenOff(Command command)
 {
-    return command == Command::Start || command == Command::Reset || command == Command::Baud;
+    return command == Command::Start || command == Command::Reset;
 }
 
 } // namespace oi

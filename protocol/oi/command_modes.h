@@ -9,8 +9,8 @@ namespace oi {
 // Play, digital outputs and Send IR. In Passive mode the robot ignores them.
 bool needsSafeOrFull(Command command);
 
-// Commands the robot takes in any mode, Off included: Start and Reset
-// (Baud too, on the robots that leave Off mode for it).
+// Commands the robot takes in any mode, Off included: Start and Reset.
+// (Baud is "available in Passive, Safe, or Full" only.)
 bool availableWhenOff(Command command);
 
 } // namespace oi

@@ -310,6 +310,11 @@ struct VirtualRobot::State {
         lastSafetyStop = why;
     }
 
+    bool clockOrScheduleHeld() const
+    {
+        return ((heldButtons | pushedButtons) & (oi::bit::ButtonSchedule | oi::bit::ButtonClock)) != 0;
+    }
+
     bool sleepsWhenIdle() const { return profile->id == oi::ProfileId::Create2; }
 
     bool wakesOnDock() const
@@ -374,7 +379,7 @@ struct VirtualRobot::State {
 
     void drive(int velocity, int radius)
     {
-        requestedVelocity = velocity;
+        requestedVelocity = std::clamp(velocity, -500, 500); // packet 39's range
         requestedRadius = radius;
         const double v = std::clamp(velocity, -500, 500);
         const double half = oi::kWheelBaseMm / 2;
@@ -398,30 +403,16 @@ struct VirtualRobot::State {
                 right *= kMaxWheelSpeed / fastest;
             }
         }
-        requestedLeft = std::int32_t(std::lround(left));
-        requestedRight = std::int32_t(std::lround(right));
+        // 41 and 42 report Drive Direct only: Drive leaves them as they were.
         setWheelTargets(quantisedSpeed(left), quantisedSpeed(right));
-    }
-
-    void describeWheels(double left, double right)
-    {
-        requestedRight = std::int32_t(std::lround(right));
-        requestedLeft = std::int32_t(std::lround(left));
-        requestedVelocity = std::int32_t(std::lround((left + right) / 2));
-        if (std::abs(right - left) < 0.5)
-            requestedRadius = 32767;
-        else if (std::abs(right + left) < 0.5)
-            requestedRadius = right > left ? oi::kRadiusTurnInPlaceCounterClockwise
-                                           : oi::kRadiusTurnInPlaceClockwise;
-        else
-            requestedRadius = std::int32_t(std::clamp(
-                std::lround(oi::kWheelBaseMm / 2 * (right + left) / (right - left)), -2000L, 2000L));
     }
 
     void driveDirect(int right, int left)
     {
         const double r = std::clamp(right, -500, 500), l = std::clamp(left, -500, 500);
-        describeWheels(l, r);
+        // 39 and 40 report Drive only: Drive Direct leaves them as they were.
+        requestedRight = std::int32_t(r);
+        requestedLeft = std::int32_t(l);
         setWheelTargets(quantisedSpeed(l), quantisedSpeed(r));
     }
 
@@ -430,8 +421,7 @@ struct VirtualRobot::State {
         // Open loop: no speed controller, so no 28.5 mm/s steps.
         const double r = std::clamp(rightPwm, -255, 255) * kMaxWheelSpeed / kPwmFullScale;
         const double l = std::clamp(leftPwm, -255, 255) * kMaxWheelSpeed / kPwmFullScale;
-        describeWheels(l, r);
-        setWheelTargets(l, r);
+        setWheelTargets(l, r); // no requested velocity or radius: PWM asks for none
     }
 
     void setMotorBits(std::uint8_t bits)
@@ -888,11 +878,13 @@ struct VirtualRobot::State {
         case Command::Control:
         case Command::Safe:
         case Command::Full:
-            leds = {}; // entering Safe or Full turns every LED off
+            if (cmd != Command::Full)
+                leds = {}; // the documents: Safe turns every LED off; Full does not say so
             mode = cmd == Command::Full ? OiMode::Full : OiMode::Safe;
             break;
         case Command::Power:
             fallAsleep();
+            mode = OiMode::Passive; // "Changes mode to: Passive"
             break;
         case Command::Stop:
             stopMotors();
@@ -948,8 +940,9 @@ struct VirtualRobot::State {
             storeSong(c);
             break;
         case Command::Play:
-            // The documents: Play does nothing while a song is playing.
-            if (c[1] < songs.size() && songs[c[1]] && !songPlaying()) {
+            // The Create's document: Play does nothing while a song is
+            // playing. The Roomba models start the new song.
+            if (c[1] < songs.size() && songs[c[1]] && !(create1() && songPlaying())) {
                 songNumber = c[1];
                 songEndsAt = now + Microseconds(std::int64_t(songs[c[1]]->totalDuration64()) * 15625);
             }
@@ -970,10 +963,14 @@ struct VirtualRobot::State {
                 streaming = !streamIds.empty();
             break;
         case Command::Schedule:
+            if (clockOrScheduleHeld())
+                break; // the documents: ignored while either button is pressed
             if (const auto s = oi::scheduleFromBytes(c.subspan(1, 15)))
                 schedule = *s;
             break;
         case Command::SetDayTime:
+            if (clockOrScheduleHeld())
+                break;
             if (c[1] <= 6 && c[2] <= 23 && c[3] <= 59)
                 clockMicros = ((c[1] * 24LL + c[2]) * 60 + c[3]) * 60'000'000LL;
             break;

@@ -292,8 +292,8 @@ void TestVirtualRobot::offIgnoresAllButStartBaudReset()
     QCOMPARE(b.robot.truePose().xMm, 0.0);
     QVERIFY(b.raw.empty());
 
-    b.send(b.encoder.baud(10));
-    QCOMPARE(b.robot.baud(), 57600);
+    b.send(b.encoder.baud(5)); // Baud is for Passive, Safe and Full only
+    QCOMPARE(b.robot.baud(), profileOf(profile).defaultBaud);
     b.send(b.encoder.start());
     QCOMPARE(b.robot.mode(), OiMode::Passive);
     QCOMPARE(b.value(35), int(OiMode::Passive));
@@ -1237,11 +1237,14 @@ void TestVirtualRobot::songs()
     QVERIFY(b.frames.back().songPlaying());
     QCOMPARE(b.frames.back().songNumber(), slot);
     QVERIFY(b.robot.songPlaying());
-    // Play does nothing while a song plays: it does not start over.
+    // On the Create, Play does nothing while a song plays: it does not
+    // start over. The Roomba models start it again.
     b.send(b.encoder.play(slot));
     b.run(75ms);
-    QVERIFY(!b.frames.back().songPlaying());
-    QVERIFY(!b.robot.songPlaying());
+    const bool again = profile != ProfileId::Create1;
+    QCOMPARE(b.frames.back().songPlaying(), again);
+    QCOMPARE(b.robot.songPlaying(), again);
+    b.run(1500ms);
     // An empty slot does not play.
     b.send(b.encoder.play(0));
     b.run(30ms);
@@ -1267,8 +1270,10 @@ void TestVirtualRobot::ledsAndDisplay()
     QCOMPARE(b.robot.leds().digitSegments,
              (std::array<std::uint8_t, 4>{sevenSegmentForAscii('H'), sevenSegmentForAscii('i'),
                                           sevenSegmentForAscii(' '), sevenSegmentForAscii('7')}));
-    // Full mode turns the LEDs off as it starts.
+    // Full mode leaves the LEDs as they are; Safe turns them off as it starts.
     b.send(b.encoder.full());
+    QCOMPARE(b.robot.leds().bits, std::uint8_t(bit::LedCheckRobot | bit::LedDock));
+    b.send(b.encoder.safe());
     QCOMPARE(b.robot.leds().bits, std::uint8_t(0));
 
     Bench c(profileOf(ProfileId::Create1));

@@ -32,6 +32,8 @@ private slots:
         details->finish(QStringLiteral("The robot was asleep; a BRC pulse woke it."));
         QCOMPARE(line->text(), QStringLiteral("The robot was asleep; a BRC pulse woke it."));
         QVERIFY(button->isEnabled());
+        // A status bar may cut the line: the tooltip has all of it, and the steps.
+        QVERIFY(line->toolTip().startsWith(QStringLiteral("The robot was asleep; a BRC pulse woke it.\n\nAt 115200 baud")));
         sensor_scenes::saveScreenshot(window, QStringLiteral("doctor_line"));
 
         QTest::mouseClick(button, Qt::LeftButton);

@@ -45,7 +45,8 @@ void DoctorDetails::finish(const QString &summary)
 {
     m_summary = summary;
     m_line->setText(summary);
-    m_line->setToolTip(m_steps.join(QLatin1Char('\n')));
+    // The status bar may cut the line short: the whole of it, and the steps.
+    m_line->setToolTip((QStringList{summary, QString()} + m_steps).join(QLatin1Char('\n')));
     m_detailsButton->setEnabled(true);
     if (m_viewSummary)
         m_viewSummary->setText(summary);

@@ -30,8 +30,7 @@ QString TcpTransport::describe() const
 
 QString TcpTransport::brcUnavailable() const
 {
-    return tr("%1: raw TCP carries no modem lines, so it cannot wake the robot or keep it awake "
-              "(a bridge in RFC 2217 mode can)")
+    return tr("%1: raw TCP carries no modem lines, so it cannot wake the robot or keep it awake")
         .arg(describe());
 }
 

@@ -27,6 +27,7 @@ using namespace std::chrono_literals;
 constexpr Microseconds kTick = 1ms;
 constexpr Microseconds kStreamPeriod = 15ms;
 constexpr Microseconds kButtonPress = 166'667us; // 165 releases after 1/6 s
+constexpr Microseconds kBaudSettle = 100ms;
 constexpr Microseconds kSleepAfter = std::chrono::seconds(oi::RobotProfile::kPassiveSleepSeconds);
 constexpr long long kWeekMicros = 7LL * 24 * 60 * 60 * 1'000'000;
 
@@ -178,6 +179,7 @@ struct VirtualRobot::State {
     bool asleep = false;
     BrcPin brc;
     int baud;
+    Microseconds baudSettlesAt{0};
     std::string firmwareRelease = "release-3.8.2";
     double angleFactor = 1; // raw packet 20 units per degree
     std::string lastSafetyStop;
@@ -795,6 +797,10 @@ struct VirtualRobot::State {
         for (std::uint8_t b : frame)
             sum += b;
         frame.push_back(static_cast<std::uint8_t>(-sum & 0xFF));
+        // ERRATA 18: a frame longer than 15 ms at this baud runs into the
+        // next one and arrives damaged.
+        if (int(frame.size()) > oi::maxStreamFrameBytes(baud))
+            frame.back() = static_cast<std::uint8_t>(~frame.back());
         emit(frame);
     }
 
@@ -842,7 +848,7 @@ struct VirtualRobot::State {
 
     void receive(std::span<const std::uint8_t> bytes)
     {
-        if (disconnected || asleep || bytes.empty())
+        if (disconnected || asleep || bytes.empty() || now < baudSettlesAt)
             return;
         for (std::uint8_t b : bytes)
             if (serialIn.size() < kInputBufferBytes)
@@ -872,8 +878,13 @@ struct VirtualRobot::State {
             enterPassive();
             break;
         case Command::Baud:
-            if (const int rate = oi::baudForCode(c[1]); rate > 0)
+            if (const int rate = oi::baudForCode(c[1]); rate > 0) {
                 baud = rate;
+                // The documents: wait 100 ms before sending more; what comes
+                // sooner may be lost.
+                baudSettlesAt = now + kBaudSettle;
+                serialIn.clear();
+            }
             break;
         case Command::Control:
         case Command::Safe:

@@ -61,8 +61,11 @@ private slots:
     {
         SimLineTransport line(oi::ProfileId::Create2, {});
         // Left streaming at 57600 by an earlier client.
-        const std::uint8_t setup[] = {128, 129, 10, 148, 1, 35};
-        line.robot().receive(setup);
+        const std::uint8_t toBaud[] = {128, 129, 10};
+        const std::uint8_t stream[] = {148, 1, 35};
+        line.robot().receive(toBaud);
+        line.robot().advance(std::chrono::milliseconds(100)); // what comes sooner may be lost
+        line.robot().receive(stream);
         QCOMPARE(line.robot().baud(), 57600);
         const auto r = diagnose(line, oi::ProfileId::Create2);
         QVERIFY2(r.finding == Finding::WrongBaud, qPrintable(explain(r)));

@@ -54,6 +54,45 @@ private slots:
         QCOMPARE(r.robot.baud(), 9600);
     }
 
+    void bytesWithin100msOfBaudMayBeLost()
+    {
+        Robot r(ProfileId::Create2);
+        r.send(r.encoder.start());
+        const Bytes baudThenSafe{129, 10, 131};
+        r.robot.receive(baudThenSafe);
+        QCOMPARE(r.robot.baud(), 57600);
+        r.robot.advance(99ms);
+        r.send(r.encoder.safe());
+        QCOMPARE(r.robot.mode(), OiMode::Passive); // both Safes were lost
+        r.robot.advance(1ms);
+        r.send(r.encoder.safe());
+        QCOMPARE(r.robot.mode(), OiMode::Safe);
+    }
+
+    void aFrameTooLongForTheBaudArrivesDamaged()
+    {
+        Robot r(ProfileId::Create2);
+        r.send(r.encoder.start());
+        r.send(r.encoder.stream(std::vector<int>{100})); // 84 bytes: fits 57600 (86), not 38400 (57)
+        int good = 0, bad = 0;
+        StreamParser parser(profile(ProfileId::Create2));
+        parser.setSnapshotHandler([&](const SensorSnapshot &, FrameKind) { ++good; });
+        const auto listen = [&] {
+            r.robot.advance(150ms);
+            parser.feed(r.robot.takeOutput());
+            bad = int(parser.counters().checksumFailures);
+        };
+        r.robot.receive(Bytes{129, 10});
+        listen();
+        QVERIFY(good >= 9);
+        QCOMPARE(bad, 0);
+        r.robot.receive(Bytes{129, 9}); // 38400
+        good = 0;
+        listen();
+        QCOMPARE(good, 0);
+        QVERIFY(bad >= 9);
+    }
+
     void powerLeavesItInPassive()
     {
         Robot r(ProfileId::Roomba500);

@@ -623,6 +623,7 @@ void TestVirtualRobot::baudChangesTheRate()
     b.send(b.encoder.start());
     b.send(b.encoder.baud(11));
     QCOMPARE(b.robot.baud(), 115200);
+    b.run(100ms); // the documents: wait 100 ms after Baud
     b.send(Bytes{129, 12}); // no such code: ignored
     QCOMPARE(b.robot.baud(), 115200);
     b.send(b.encoder.baud(5));

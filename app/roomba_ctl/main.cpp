@@ -83,7 +83,9 @@ Commands:
 
 ROBOT is one of:
   --port PATH        a serial port, USB adapter or pseudo-terminal
-  --tcp HOST:PORT    a serial-over-TCP bridge (ser2net raw mode)
+  --tcp HOST:PORT    a serial-over-TCP bridge (ser2net raw mode); add
+                     --rfc2217 for a bridge in telnet mode with RFC 2217,
+                     through which the robot's BRC pin (RTS) can be pulsed
   --sim              the built-in virtual robot, playing --profile
 Without --profile, sensors and send find the robot's profile (and on a
 serial port, its baud among 115200, 57600 and 19200) by asking it.
@@ -354,6 +356,10 @@ int parseLinkOptions(const std::vector<std::string> &args, std::size_t from, Lin
             ++o.robots;
             continue;
         }
+        if (a == "--rfc2217") {
+            o.settings.tcpRfc2217 = true;
+            continue;
+        }
         if (a == "--no-mode-change" && command == "send") {
             o.changeMode = false;
             continue;
@@ -408,6 +414,10 @@ int parseLinkOptions(const std::vector<std::string> &args, std::size_t from, Lin
             }
             o.count = number;
         }
+    }
+    if (o.settings.tcpRfc2217 && o.settings.transport != oilink::TransportKind::Tcp) {
+        fail("--rfc2217 goes with --tcp");
+        return -1;
     }
     if (o.robots != 1) {
         fail(command + " needs one of --port PATH, --tcp HOST:PORT or --sim");

@@ -108,6 +108,7 @@ int main(int argc, char *argv[])
         {QStringLiteral("stray"), QStringLiteral("Probability that a stray 19 is sent before a byte."), QStringLiteral("P")},
         {QStringLiteral("drop"), QStringLiteral("Probability that a byte the robot sends is lost."), QStringLiteral("P")},
         {QStringLiteral("tcp"), QStringLiteral("Serve raw bytes on this TCP port instead of a pseudo-terminal (0 picks a free port)."), QStringLiteral("PORT")},
+        {QStringLiteral("rfc2217"), QStringLiteral("With --tcp: speak RFC 2217 (as ser2net in telnet mode does), so that RTS or DTR asserted pulls the robot's BRC pin low.")},
         {QStringLiteral("bind"), QStringLiteral("Address to listen on with --tcp (default 127.0.0.1)."), QStringLiteral("ADDRESS"), QStringLiteral("127.0.0.1")},
         {QStringLiteral("link"), QStringLiteral("Also make a symbolic link at PATH to the pseudo-terminal (an existing link is replaced)."), QStringLiteral("PATH")},
         {QStringLiteral("asleep"), QStringLiteral("Start asleep, as after Power (133): deaf to bytes until a BRC pulse.")},
@@ -173,8 +174,8 @@ int main(int argc, char *argv[])
             return fail(kUsageError, QStringLiteral("--bind: '%1' is not an IP address").arg(bind));
         if (parser.isSet(QStringLiteral("link")))
             return fail(kUsageError, QStringLiteral("--link makes a link to the pseudo-terminal; it does not go with --tcp"));
-    } else if (parser.isSet(QStringLiteral("bind"))) {
-        return fail(kUsageError, QStringLiteral("--bind goes with --tcp"));
+    } else if (parser.isSet(QStringLiteral("bind")) || parser.isSet(QStringLiteral("rfc2217"))) {
+        return fail(kUsageError, QStringLiteral("--%1 goes with --tcp").arg(parser.isSet(QStringLiteral("bind")) ? QStringLiteral("bind") : QStringLiteral("rfc2217")));
     }
 
     // SIGINT and SIGTERM end the event loop through a pipe, so the handler
@@ -202,6 +203,7 @@ int main(int argc, char *argv[])
     QString where;
     if (tcp) {
         tcpServer = std::make_unique<sim::TcpRobotServer>(*profile, seed);
+        tcpServer->setRfc2217(parser.isSet(QStringLiteral("rfc2217")));
         realTime = &tcpServer->robot();
     } else {
         pty = std::make_unique<sim::PtyRobotServer>(*profile, seed);

@@ -30,6 +30,7 @@ struct LinkSettings {
     QString portPath;      // Serial: a device path, typed or picked
     QString host;          // Tcp
     quint16 tcpPort = 0;   // Tcp
+    bool tcpRfc2217 = false; // Tcp: the bridge speaks RFC 2217 (ser2net telnet mode), so BRC is in reach
     QString replayPath;    // Replay
     // nullopt = Auto: find the profile (and, on a serial port, the baud) by probing.
     std::optional<oi::ProfileId> profile;

@@ -35,7 +35,11 @@ Transport *createTransport(const LinkSettings &settings, int baud, QObject *pare
         return serial;
     }
     case TransportKind::Tcp:
-        return new TcpTransport(settings.host, settings.tcpPort, parent);
+    {
+        auto *tcp = new TcpTransport(settings.host, settings.tcpPort, parent);
+        tcp->setRfc2217(settings.tcpRfc2217, settings.brcLine, settings.brcAssertedIsLow);
+        return tcp;
+    }
     case TransportKind::Replay:
         return new ReplayTransport(settings.replayPath, parent);
     case TransportKind::Virtual:

@@ -475,6 +475,25 @@
     </message>
 </context>
 <context>
+    <name>ConnectionCheckup</name>
+    <message>
+        <source>Which robot is this?</source>
+        <translation>Welcher Roboter ist das?</translation>
+    </message>
+    <message>
+        <source>The robot on %1 is a Roomba 500 or a Create 2: they answer alike, but count their wheels differently. Which is it? The answer is kept for this port.</source>
+        <translation>Der Roboter an %1 ist ein Roomba 500 oder ein Create 2: Beide antworten gleich, zählen ihre Räder aber verschieden. Welcher ist es? Die Antwort wird für diesen Anschluss gespeichert.</translation>
+    </message>
+    <message>
+        <source>Roomba 500</source>
+        <translation>Roomba 500</translation>
+    </message>
+    <message>
+        <source>Roomba 600 / Create 2</source>
+        <translation>Roomba 600 / Create 2</translation>
+    </message>
+</context>
+<context>
     <name>DashboardCommandLine</name>
     <message>
         <source>Usage: roomba-dashboard [--sim | --port PATH | --tcp HOST:PORT | --replay FILE]
@@ -606,6 +625,33 @@ verwendet es die im Menü „Ansicht“ gewählte Sprache oder die des Systems.
     <message>
         <source>Banjo</source>
         <translation>Banjo</translation>
+    </message>
+</context>
+<context>
+    <name>DoctorDetails</name>
+    <message>
+        <source>Details…</source>
+        <translation>Details …</translation>
+    </message>
+    <message>
+        <source>Connection check details</source>
+        <translation>Details der Verbindungsprüfung</translation>
+    </message>
+    <message>
+        <source>Checking the connection…</source>
+        <translation>Verbindung wird geprüft …</translation>
+    </message>
+    <message>
+        <source>Connection check</source>
+        <translation>Verbindungsprüfung</translation>
+    </message>
+    <message>
+        <source>What was tried</source>
+        <translation>Was versucht wurde</translation>
+    </message>
+    <message>
+        <source>What was tried:</source>
+        <translation>Was versucht wurde:</translation>
     </message>
 </context>
 <context>
@@ -3813,6 +3859,96 @@ Gesendet: %2</translation>
     </message>
 </context>
 <context>
+    <name>oilink::ConnectionDoctor</name>
+    <message>
+        <source>%1 baud</source>
+        <translation>%1 Baud</translation>
+    </message>
+    <message>
+        <source>At %1 it answers.</source>
+        <translation>Bei %1 antwortet er.</translation>
+    </message>
+    <message>
+        <source>At %1 it answers after Start (it was in Off mode).</source>
+        <translation>Bei %1 antwortet er nach Start (er war im Modus Aus).</translation>
+    </message>
+    <message numerus="yes">
+        <source>At %1: %n byte(s) that make no sense.</source>
+        <translation>
+            <numerusform>Bei %1: %n Byte, das keinen Sinn ergibt.</numerusform>
+            <numerusform>Bei %1: %n Bytes, die keinen Sinn ergeben.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>At %1: nothing comes back, with or without Start.</source>
+        <translation>Bei %1: keine Antwort, weder mit noch ohne Start.</translation>
+    </message>
+    <message>
+        <source>Bytes come back, but at no baud do they make sense: a noisy cable, or a device that is not an Open Interface robot.</source>
+        <translation>Es kommen Bytes zurück, aber bei keiner Baudrate ergeben sie Sinn: ein gestörtes Kabel oder ein Gerät, das kein Open-Interface-Roboter ist.</translation>
+    </message>
+    <message>
+        <source>Nothing comes back: is the robot on and the cable plugged in? (A sleeping robot cannot be woken over this connection.)</source>
+        <translation>Keine Antwort: Ist der Roboter eingeschaltet und das Kabel eingesteckt? (Ein schlafender Roboter lässt sich über diese Verbindung nicht wecken.)</translation>
+    </message>
+    <message>
+        <source>Pulsed the BRC pin to wake the robot.</source>
+        <translation>Den BRC-Pin gepulst, um den Roboter zu wecken.</translation>
+    </message>
+    <message>
+        <source>At %1 it answers after the pulse.</source>
+        <translation>Bei %1 antwortet er nach dem Impuls.</translation>
+    </message>
+    <message>
+        <source>Pulsed the BRC pin three times for 19200 baud.</source>
+        <translation>Den BRC-Pin dreimal gepulst für 19200 Baud.</translation>
+    </message>
+    <message>
+        <source>At 19200 baud it answers after the three pulses.</source>
+        <translation>Bei 19200 Baud antwortet er nach den drei Impulsen.</translation>
+    </message>
+    <message>
+        <source>Still silent after BRC pulses: the robot is off or unplugged, or asleep on its dock with firmware before release-3.8.2 / release-stm32-3.7.7, which does not wake by BRC there (lift it off the dock, or press Clean).</source>
+        <translation>Auch nach BRC-Impulsen still: Der Roboter ist aus oder nicht angeschlossen, oder er schläft auf seiner Ladestation mit einer Firmware vor release-3.8.2 / release-stm32-3.7.7, die dort nicht per BRC aufwacht (von der Station heben oder Clean drücken).</translation>
+    </message>
+    <message>
+        <source>It answers Sensors 101: a Roomba 500 or a Create 2 (they answer alike).</source>
+        <translation>Er beantwortet Sensors 101: ein Roomba 500 oder ein Create 2 (beide antworten gleich).</translation>
+    </message>
+    <message>
+        <source>It has no packet group 101: a Create.</source>
+        <translation>Er hat keine Paketgruppe 101: ein Create.</translation>
+    </message>
+    <message>
+        <source>The robot was asleep; a BRC pulse woke it.</source>
+        <translation>Der Roboter schlief; ein BRC-Impuls hat ihn geweckt.</translation>
+    </message>
+    <message>
+        <source>The robot talks at 19200 baud after three BRC pulses; set the baud to 19200.</source>
+        <translation>Der Roboter spricht nach drei BRC-Impulsen mit 19200 Baud; Baudrate auf 19200 stellen.</translation>
+    </message>
+    <message>
+        <source>Wrong baud: the robot answers at %1 baud, not %2.</source>
+        <translation>Falsche Baudrate: Der Roboter antwortet mit %1 Baud, nicht mit %2.</translation>
+    </message>
+    <message>
+        <source>The robot answers as a %1, not as the %2 the connection names.</source>
+        <translation>Der Roboter antwortet als %1, nicht als der %2, den die Verbindung nennt.</translation>
+    </message>
+    <message>
+        <source>Roomba 500 or Create 2</source>
+        <translation>Roomba 500 oder Create 2</translation>
+    </message>
+    <message>
+        <source>A Roomba 500 or a Create 2: they answer alike, and their encoders differ. Say which it is.</source>
+        <translation>Ein Roomba 500 oder ein Create 2: Beide antworten gleich, ihre Encoder unterscheiden sich. Bitte angeben, welcher es ist.</translation>
+    </message>
+    <message>
+        <source>The robot answers at %1 as a %2.</source>
+        <translation>Der Roboter antwortet bei %1 als %2.</translation>
+    </message>
+</context>
+<context>
     <name>oilink::ReplayTransport</name>
     <message>
         <source>replay of %1</source>
@@ -3865,6 +4001,10 @@ Gesendet: %2</translation>
         <source>%1: no transport for this kind of connection</source>
         <translation>%1: für diese Art Verbindung gibt es keinen Transport</translation>
     </message>
+    <message>
+        <source>(If it is asleep: %1.)</source>
+        <translation>(Falls er schläft: %1.)</translation>
+    </message>
 </context>
 <context>
     <name>oilink::RobotLinkThread</name>
@@ -3898,6 +4038,14 @@ Gesendet: %2</translation>
     <message>
         <source>the port went away</source>
         <translation>der Anschluss ist verschwunden</translation>
+    </message>
+    <message>
+        <source>%1: no line is set for the BRC pin (RTS or DTR)</source>
+        <translation>%1: Für den BRC-Pin ist keine Leitung eingestellt (RTS oder DTR)</translation>
+    </message>
+    <message>
+        <source>%1: the port has no RTS or DTR line to pulse the BRC pin with</source>
+        <translation>%1: Der Anschluss hat keine RTS- oder DTR-Leitung, um den BRC-Pin zu pulsen</translation>
     </message>
 </context>
 <context>
@@ -3933,6 +4081,21 @@ Gesendet: %2</translation>
     <message>
         <source>%1: the bridge closed the connection: %2</source>
         <translation>%1: die Brücke hat die Verbindung geschlossen: %2</translation>
+    </message>
+    <message>
+        <source>%1: raw TCP carries no modem lines, so it cannot wake the robot or keep it awake</source>
+        <translation>%1: Rohes TCP überträgt keine Modemleitungen, kann den Roboter also weder wecken noch wach halten</translation>
+    </message>
+    <message>
+        <source>%1: no line is set for the BRC pin (RTS or DTR)</source>
+        <translation>%1: Für den BRC-Pin ist keine Leitung eingestellt (RTS oder DTR)</translation>
+    </message>
+</context>
+<context>
+    <name>oilink::Transport</name>
+    <message>
+        <source>%1 cannot reach the robot&apos;s BRC pin</source>
+        <translation>%1 erreicht den BRC-Pin des Roboters nicht</translation>
     </message>
 </context>
 </TS>

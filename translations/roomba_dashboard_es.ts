@@ -475,6 +475,25 @@
     </message>
 </context>
 <context>
+    <name>ConnectionCheckup</name>
+    <message>
+        <source>Which robot is this?</source>
+        <translation>¿Qué robot es este?</translation>
+    </message>
+    <message>
+        <source>The robot on %1 is a Roomba 500 or a Create 2: they answer alike, but count their wheels differently. Which is it? The answer is kept for this port.</source>
+        <translation>El robot en %1 es un Roomba 500 o un Create 2: responden igual, pero cuentan sus ruedas de forma distinta. ¿Cuál es? La respuesta se guarda para este puerto.</translation>
+    </message>
+    <message>
+        <source>Roomba 500</source>
+        <translation>Roomba 500</translation>
+    </message>
+    <message>
+        <source>Roomba 600 / Create 2</source>
+        <translation>Roomba 600 / Create 2</translation>
+    </message>
+</context>
+<context>
     <name>DashboardCommandLine</name>
     <message>
         <source>Usage: roomba-dashboard [--sim | --port PATH | --tcp HOST:PORT | --replay FILE]
@@ -606,6 +625,33 @@ en su menú Ver, o el del sistema.
     <message>
         <source>Banjo</source>
         <translation>Banjo</translation>
+    </message>
+</context>
+<context>
+    <name>DoctorDetails</name>
+    <message>
+        <source>Details…</source>
+        <translation>Detalles…</translation>
+    </message>
+    <message>
+        <source>Connection check details</source>
+        <translation>Detalles de la comprobación de la conexión</translation>
+    </message>
+    <message>
+        <source>Checking the connection…</source>
+        <translation>Comprobando la conexión…</translation>
+    </message>
+    <message>
+        <source>Connection check</source>
+        <translation>Comprobación de la conexión</translation>
+    </message>
+    <message>
+        <source>What was tried</source>
+        <translation>Lo que se probó</translation>
+    </message>
+    <message>
+        <source>What was tried:</source>
+        <translation>Lo que se probó:</translation>
     </message>
 </context>
 <context>
@@ -3813,6 +3859,96 @@ Enviado: %2</translation>
     </message>
 </context>
 <context>
+    <name>oilink::ConnectionDoctor</name>
+    <message>
+        <source>%1 baud</source>
+        <translation>%1 baudios</translation>
+    </message>
+    <message>
+        <source>At %1 it answers.</source>
+        <translation>A %1 responde.</translation>
+    </message>
+    <message>
+        <source>At %1 it answers after Start (it was in Off mode).</source>
+        <translation>A %1 responde tras Start (estaba en modo apagado).</translation>
+    </message>
+    <message numerus="yes">
+        <source>At %1: %n byte(s) that make no sense.</source>
+        <translation>
+            <numerusform>A %1: %n byte sin sentido.</numerusform>
+            <numerusform>A %1: %n bytes sin sentido.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>At %1: nothing comes back, with or without Start.</source>
+        <translation>A %1: no vuelve nada, con o sin Start.</translation>
+    </message>
+    <message>
+        <source>Bytes come back, but at no baud do they make sense: a noisy cable, or a device that is not an Open Interface robot.</source>
+        <translation>Vuelven bytes, pero a ninguna velocidad tienen sentido: un cable con ruido o un dispositivo que no es un robot Open Interface.</translation>
+    </message>
+    <message>
+        <source>Nothing comes back: is the robot on and the cable plugged in? (A sleeping robot cannot be woken over this connection.)</source>
+        <translation>No vuelve nada: ¿está el robot encendido y el cable conectado? (Un robot dormido no se puede despertar por esta conexión.)</translation>
+    </message>
+    <message>
+        <source>Pulsed the BRC pin to wake the robot.</source>
+        <translation>Se pulsó el pin BRC para despertar al robot.</translation>
+    </message>
+    <message>
+        <source>At %1 it answers after the pulse.</source>
+        <translation>A %1 responde tras el pulso.</translation>
+    </message>
+    <message>
+        <source>Pulsed the BRC pin three times for 19200 baud.</source>
+        <translation>Se pulsó el pin BRC tres veces para 19200 baudios.</translation>
+    </message>
+    <message>
+        <source>At 19200 baud it answers after the three pulses.</source>
+        <translation>A 19200 baudios responde tras los tres pulsos.</translation>
+    </message>
+    <message>
+        <source>Still silent after BRC pulses: the robot is off or unplugged, or asleep on its dock with firmware before release-3.8.2 / release-stm32-3.7.7, which does not wake by BRC there (lift it off the dock, or press Clean).</source>
+        <translation>Sigue en silencio tras los pulsos BRC: el robot está apagado o desconectado, o duerme en su base con un firmware anterior a release-3.8.2 / release-stm32-3.7.7, que allí no despierta por BRC (sáquelo de la base o pulse Clean).</translation>
+    </message>
+    <message>
+        <source>It answers Sensors 101: a Roomba 500 or a Create 2 (they answer alike).</source>
+        <translation>Responde a Sensors 101: un Roomba 500 o un Create 2 (responden igual).</translation>
+    </message>
+    <message>
+        <source>It has no packet group 101: a Create.</source>
+        <translation>No tiene el grupo de paquetes 101: un Create.</translation>
+    </message>
+    <message>
+        <source>The robot was asleep; a BRC pulse woke it.</source>
+        <translation>El robot dormía; un pulso BRC lo despertó.</translation>
+    </message>
+    <message>
+        <source>The robot talks at 19200 baud after three BRC pulses; set the baud to 19200.</source>
+        <translation>El robot habla a 19200 baudios tras tres pulsos BRC; ajuste la velocidad a 19200.</translation>
+    </message>
+    <message>
+        <source>Wrong baud: the robot answers at %1 baud, not %2.</source>
+        <translation>Velocidad errónea: el robot responde a %1 baudios, no a %2.</translation>
+    </message>
+    <message>
+        <source>The robot answers as a %1, not as the %2 the connection names.</source>
+        <translation>El robot responde como %1, no como el %2 que indica la conexión.</translation>
+    </message>
+    <message>
+        <source>Roomba 500 or Create 2</source>
+        <translation>Roomba 500 o Create 2</translation>
+    </message>
+    <message>
+        <source>A Roomba 500 or a Create 2: they answer alike, and their encoders differ. Say which it is.</source>
+        <translation>Un Roomba 500 o un Create 2: responden igual y sus codificadores difieren. Indique cuál es.</translation>
+    </message>
+    <message>
+        <source>The robot answers at %1 as a %2.</source>
+        <translation>El robot responde a %1 como %2.</translation>
+    </message>
+</context>
+<context>
     <name>oilink::ReplayTransport</name>
     <message>
         <source>replay of %1</source>
@@ -3865,6 +4001,10 @@ Enviado: %2</translation>
         <source>%1: no transport for this kind of connection</source>
         <translation>%1: no hay transporte para este tipo de conexión</translation>
     </message>
+    <message>
+        <source>(If it is asleep: %1.)</source>
+        <translation>(Si está dormido: %1.)</translation>
+    </message>
 </context>
 <context>
     <name>oilink::RobotLinkThread</name>
@@ -3898,6 +4038,14 @@ Enviado: %2</translation>
     <message>
         <source>the port went away</source>
         <translation>el puerto ha desaparecido</translation>
+    </message>
+    <message>
+        <source>%1: no line is set for the BRC pin (RTS or DTR)</source>
+        <translation>%1: no hay línea configurada para el pin BRC (RTS o DTR)</translation>
+    </message>
+    <message>
+        <source>%1: the port has no RTS or DTR line to pulse the BRC pin with</source>
+        <translation>%1: el puerto no tiene línea RTS ni DTR para pulsar el pin BRC</translation>
     </message>
 </context>
 <context>
@@ -3933,6 +4081,21 @@ Enviado: %2</translation>
     <message>
         <source>%1: the bridge closed the connection: %2</source>
         <translation>%1: el puente cerró la conexión: %2</translation>
+    </message>
+    <message>
+        <source>%1: raw TCP carries no modem lines, so it cannot wake the robot or keep it awake</source>
+        <translation>%1: el TCP sin procesar no lleva líneas de módem, así que no puede despertar al robot ni mantenerlo despierto</translation>
+    </message>
+    <message>
+        <source>%1: no line is set for the BRC pin (RTS or DTR)</source>
+        <translation>%1: no hay línea configurada para el pin BRC (RTS o DTR)</translation>
+    </message>
+</context>
+<context>
+    <name>oilink::Transport</name>
+    <message>
+        <source>%1 cannot reach the robot&apos;s BRC pin</source>
+        <translation>%1 no llega al pin BRC del robot</translation>
     </message>
 </context>
 </TS>

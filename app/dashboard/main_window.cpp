@@ -2,6 +2,8 @@
 #include "main_window.h"
 
 #include "byte_inspector.h"
+#include "connection_checkup.h"
+#include "doctor_details.h"
 #include "connection_bar.h"
 #include "connection_request.h"
 #include "display_palette.h"
@@ -75,6 +77,8 @@ MainWindow::MainWindow(QWidget *parent)
     setCentralWidget(m_diagram);
     m_layout = new DockLayout(this);
     m_status = new RobotStatusBar(statusBar());
+    m_doctorDetails = new DoctorDetails(this);
+    statusBar()->addWidget(m_doctorDetails, 1);
     m_recording = new RecordingActions(m_fleet, this);
     connect(m_recording, &RecordingActions::message, this, [this](const QString &m) { statusBar()->showMessage(m, 5000); });
     buildDocks();
@@ -234,6 +238,8 @@ void MainWindow::onRobotAdded(RobotSession *robot)
             return transports::createTransport(s, s.baud, room, *place);
         });
     placeInRoom(robot, robot->settings());
+    // A robot that sends nothing is examined: asleep, wrong baud, another profile.
+    new ConnectionCheckup(*robot, *m_doctorDetails, ConnectionCheckup::askWithDialog(this), robot);
     if (m_historyCapacity)
         robot->setHistoryCapacity(*m_historyCapacity);
     connect(robot, &RobotSession::identityChanged, this, [this, robot] {

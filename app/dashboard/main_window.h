@@ -17,6 +17,7 @@
 #include <optional>
 
 class ByteInspector;
+class DoctorDetails;
 class ConnectionBar;
 class DockLayout;
 class DrivePad;
@@ -174,6 +175,7 @@ private:
     KeyboardDriving *m_keyboard = nullptr;
     RobotStatusBar *m_status = nullptr;
     RecordingActions *m_recording = nullptr;
+    DoctorDetails *m_doctorDetails = nullptr; // what the last connection check found
 
     QMenu *m_fileMenu = nullptr;
     QMenu *m_viewMenu = nullptr;

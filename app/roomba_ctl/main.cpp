@@ -3,6 +3,8 @@
 // command line.
 
 #include "command_catalog.h"
+#include "command_sender.h"
+#include "connection_doctor.h"
 #include "profile_probe.h"
 #include "recording_file.h"
 #include "robot_link_thread.h"
@@ -56,11 +58,25 @@ Commands:
       Connect, start the sensor stream that fits the baud, print N stream
       frames (default 10) as JSON lines like decode, then one line of link
       statistics. Closing leaves the robot stopped and in Passive mode.
-  send ROBOT [--profile P] [--baud B] NAME ARGS...
-      Send Start, then one command (as encode makes it). The answers to
+  send ROBOT [--profile P] [--baud B] [--no-mode-change] NAME ARGS...
+      Send one command (as encode makes it) so that the robot carries it
+      out: the robot is asked for its mode first; Start goes out only if it
+      is silent (Off mode), and a command that works only in Safe or Full
+      mode (drive, motors, LEDs, play...) enters Safe from Passive. A
+      warning says when the robot will ignore the command as things are
+      (a wheel dropped, on the dock, a song playing). The answers to
       sensors and query-list are printed as JSON lines like decode.
+        --no-mode-change   never send Start or Safe; refuse a command the
+                           robot's mode would ignore
         roomba-ctl send --port /dev/ttyUSB0 safe
+        roomba-ctl send --port /dev/ttyUSB0 drive 200 straight
         roomba-ctl send --sim sensors 7
+  doctor ROBOT [--profile P] [--baud B]
+      Find out why a robot gives no valid data, and print what was tried:
+      each baud with and without Start, a BRC pulse to wake it, the three
+      pulses for 19200 baud, then which robot answers. Exit status 0 when
+      all is well, 1 with the cause on the last line.
+        roomba-ctl doctor --port /dev/ttyUSB0
   csv RECORDING
       Print a recording (.oirec, from the dashboard or its --record) as CSV:
       time_s, then one column per packet, one row per stream frame. A damaged
@@ -69,7 +85,9 @@ Commands:
 
 ROBOT is one of:
   --port PATH        a serial port, USB adapter or pseudo-terminal
-  --tcp HOST:PORT    a serial-over-TCP bridge (ser2net raw mode)
+  --tcp HOST:PORT    a serial-over-TCP bridge (ser2net raw mode); add
+                     --rfc2217 for a bridge in telnet mode with RFC 2217,
+                     through which the robot's BRC pin (RTS) can be pulsed
   --sim              the built-in virtual robot, playing --profile
 Without --profile, sensors and send find the robot's profile (and on a
 serial port, its baud among 115200, 57600 and 19200) by asking it.
@@ -238,6 +256,7 @@ int decode(const std::vector<std::string> &args, std::size_t from)
         std::cout << snapshotJson(s, kind) << "\n";
     });
     parser.feed(input);
+    parser.finish();
     const oi::ParserCounters &c = parser.counters();
     std::cout << R"({"counters":{"frames_good":)" << c.framesGood << R"(,"replies_good":)"
               << c.repliesGood << R"(,"checksum_failures":)" << c.checksumFailures
@@ -311,9 +330,6 @@ int listPackets(const std::vector<std::string> &args, std::size_t from)
 
 constexpr int kFirstFrameTimeoutMs = 20000; // covers probing three bauds, twice
 constexpr int kFrameSilenceMs = 5000;
-constexpr int kReplyTimeoutMs = 1000;
-constexpr int kDrainMs = 80;
-constexpr int kFlushMs = 500;
 
 struct LinkOptions {
     oilink::LinkSettings settings;
@@ -321,6 +337,7 @@ struct LinkOptions {
     std::optional<oi::ProfileId> profile;
     int baud = 0;
     long long count = 10;
+    bool changeMode = true;
 };
 
 std::string toStd(const QString &text)
@@ -339,6 +356,14 @@ int parseLinkOptions(const std::vector<std::string> &args, std::size_t from, Lin
         if (a == "--sim") {
             o.settings.transport = oilink::TransportKind::Virtual;
             ++o.robots;
+            continue;
+        }
+        if (a == "--rfc2217") {
+            o.settings.tcpRfc2217 = true;
+            continue;
+        }
+        if (a == "--no-mode-change" && command == "send") {
+            o.changeMode = false;
             continue;
         }
         const bool known = a == "--port" || a == "--tcp" || a == "--profile" || a == "--baud"
@@ -391,6 +416,10 @@ int parseLinkOptions(const std::vector<std::string> &args, std::size_t from, Lin
             }
             o.count = number;
         }
+    }
+    if (o.settings.tcpRfc2217 && o.settings.transport != oilink::TransportKind::Tcp) {
+        fail("--rfc2217 goes with --tcp");
+        return -1;
     }
     if (o.robots != 1) {
         fail(command + " needs one of --port PATH, --tcp HOST:PORT or --sim");
@@ -499,11 +528,16 @@ int sendToRobot(int argc, char **argv, const std::vector<std::string> &args)
         return 2;
     if (static_cast<std::size_t>(at) >= args.size())
         return fail("send needs a command name; see 'roomba-ctl commands'");
-    const std::string name = args[at];
-    const std::vector<std::string> rest(args.begin() + at + 1, args.end());
+    CommandSender::Order order;
+    order.name = args[at];
+    order.args.assign(args.begin() + at + 1, args.end());
+    order.profile = o.settings.profile;
+    order.bauds = o.baud > 0 ? QList<int>{o.baud} : oilink::ProfileProbe::defaultBauds();
+    order.changeMode = o.changeMode;
     // Where the profile is known, a bad command never touches the port.
-    if (o.settings.profile) {
-        const oi::EncodeResult bytes = oi::encodeCommand(oi::CommandEncoder(oi::profile(*o.settings.profile)), name, rest);
+    if (order.profile) {
+        const oi::EncodeResult bytes =
+            oi::encodeCommand(oi::CommandEncoder(oi::profile(*order.profile)), order.name, order.args);
         if (!bytes) {
             std::cerr << "roomba-ctl: " << bytes.error().describe() << "\n";
             return 1;
@@ -512,91 +546,65 @@ int sendToRobot(int argc, char **argv, const std::vector<std::string> &args)
 
     QCoreApplication app(argc, argv);
     const int openBaud = o.baud > 0 ? o.baud
-                         : o.settings.profile ? oi::profile(*o.settings.profile).defaultBaud
-                                              : oilink::ProfileProbe::defaultBauds().front();
+                         : order.profile ? oi::profile(*order.profile).defaultBaud
+                                         : order.bauds.front();
     std::unique_ptr<oilink::Transport> transport(transports::createTransport(o.settings, openBaud));
-    std::unique_ptr<oilink::ProfileProbe> probe;
-    oi::StreamParser parser;
-    QTimer replyTimeout;
-    replyTimeout.setSingleShot(true);
-    bool draining = false;
-    bool finished = false;
+    CommandSender sender(*transport, order);
     int status = 0;
-
-    const auto finish = [&](int code, const std::string &message) {
-        if (finished)
-            return;
-        finished = true;
+    QObject::connect(&sender, &CommandSender::replied, &app, [](const oi::SensorSnapshot &s, oi::FrameKind kind) {
+        std::cout << snapshotJson(s, kind) << std::endl;
+    });
+    QObject::connect(&sender, &CommandSender::warning, &app,
+                     [](const QString &text) { std::cerr << "roomba-ctl: warning: " << toStd(text) << "\n"; });
+    QObject::connect(&sender, &CommandSender::note, &app,
+                     [](const QString &text) { std::cerr << "roomba-ctl: " << toStd(text) << "\n"; });
+    QObject::connect(&sender, &CommandSender::finished, &app, [&](int code, const QString &error) {
         status = code;
-        if (!message.empty())
-            std::cerr << "roomba-ctl: " << message << "\n";
+        if (!error.isEmpty())
+            std::cerr << "roomba-ctl: " << toStd(error) << "\n";
         QCoreApplication::exit(code);
-    };
+    });
     TerminationSignals termination;
-    QObject::connect(&termination, &TerminationSignals::requested, &app,
-                     [&](int signal) { finish(TerminationSignals::exitStatusFor(signal), {}); });
-    const auto writeBytes = [&](const oi::Bytes &bytes) {
-        transport->write(QByteArray(reinterpret_cast<const char *>(bytes.data()), static_cast<qsizetype>(bytes.size())));
-    };
-    const auto sendCommand = [&](const oi::RobotProfile &profile) {
-        const oi::EncodeResult bytes = oi::encodeCommand(oi::CommandEncoder(profile), name, rest);
-        if (!bytes) {
-            finish(1, bytes.error().describe());
-            return;
-        }
-        if (!bytes.warning.empty())
-            std::cerr << "roomba-ctl: warning: " << bytes.warning << "\n";
-        const oi::Bytes command = *bytes;
-        const std::uint8_t opcode = command.front();
-        if (opcode != 142 && opcode != 149) {
-            writeBytes({128});
-            writeBytes(command);
-            transport->flush(kFlushMs);
-            finish(0, {});
-            return;
-        }
-        // A reply carries no framing (ERRATA 3): pause any stream an earlier
-        // client left running and let it drain before asking.
-        const std::vector<std::uint8_t> ids(command.begin() + (opcode == 142 ? 1 : 2), command.end());
-        parser.setProfile(profile);
-        parser.expectReply(ids);
-        parser.setSnapshotHandler([&](const oi::SensorSnapshot &s, oi::FrameKind kind) {
-            std::cout << snapshotJson(s, kind) << std::endl;
-            finish(0, {});
-        });
-        draining = true;
-        writeBytes({128, 150, 0});
-        QTimer::singleShot(kDrainMs, &app, [&, command] {
-            draining = false;
-            writeBytes(command);
-            replyTimeout.start(kReplyTimeoutMs);
-        });
-    };
-    QObject::connect(&replyTimeout, &QTimer::timeout, &app,
-                     [&] { finish(1, toStd(transport->describe()) + ": no reply to " + name); });
-    QObject::connect(transport.get(), &oilink::Transport::errorOccurred, &app,
-                     [&](const QString &message) { finish(1, toStd(message)); });
-    QObject::connect(transport.get(), &oilink::Transport::bytesReceived, &app, [&](const QByteArray &bytes) {
-        if (probe && probe->isRunning())
-            probe->feed(bytes);
-        else if (!draining)
-            parser.feed({reinterpret_cast<const std::uint8_t *>(bytes.constData()), static_cast<std::size_t>(bytes.size())});
+    QObject::connect(&termination, &TerminationSignals::requested, &app, [&](int signal) {
+        status = TerminationSignals::exitStatusFor(signal);
+        QCoreApplication::exit(status);
     });
-    QObject::connect(transport.get(), &oilink::Transport::opened, &app, [&] {
-        if (o.settings.profile) {
-            sendCommand(oi::profile(*o.settings.profile));
-            return;
-        }
-        probe = std::make_unique<oilink::ProfileProbe>(
-            *transport, o.baud > 0 ? QList<int>{o.baud} : oilink::ProfileProbe::defaultBauds());
-        QObject::connect(probe.get(), &oilink::ProfileProbe::detected, &app,
-                         [&](oi::ProfileId id, int) { sendCommand(oi::profile(id)); });
-        QObject::connect(probe.get(), &oilink::ProfileProbe::failed, &app, [&] {
-            finish(1, toStd(transport->describe()) + ": no data: is the robot on, and is the baud right?");
-        });
-        probe->start();
+    sender.start();
+    QCoreApplication::exec();
+    transport->close();
+    return status;
+}
+
+int runDoctor(int argc, char **argv, const std::vector<std::string> &args)
+{
+    LinkOptions o;
+    const int at = parseLinkOptions(args, 1, o, false, "doctor");
+    if (at < 0)
+        return 2;
+    if (static_cast<std::size_t>(at) != args.size())
+        return fail("doctor takes no arguments besides its options");
+    QCoreApplication app(argc, argv);
+    const QList<int> bauds = oilink::ConnectionDoctor::candidateBauds(
+        o.baud > 0 ? o.baud : o.profile ? oi::profile(*o.profile).defaultBaud : 0);
+    std::unique_ptr<oilink::Transport> transport(transports::createTransport(o.settings, bauds.front()));
+    oilink::ConnectionDoctor doctor(*transport, o.profile, o.baud);
+    int status = 0;
+    QObject::connect(transport.get(), &oilink::Transport::bytesReceived, &doctor, &oilink::ConnectionDoctor::feed);
+    QObject::connect(transport.get(), &oilink::Transport::opened, &doctor, &oilink::ConnectionDoctor::start);
+    QObject::connect(transport.get(), &oilink::Transport::errorOccurred, &app, [&](const QString &message) {
+        std::cout << toStd(message) << std::endl;
+        status = 1;
+        QCoreApplication::exit(1);
     });
-    // From inside the event loop, so that an answer given during open() can end it.
+    QObject::connect(&doctor, &oilink::ConnectionDoctor::stepDone, &app,
+                     [](const QString &step) { std::cout << "  " << toStd(step) << std::endl; });
+    QObject::connect(&doctor, &oilink::ConnectionDoctor::finished, &app,
+                     [&](const oilink::ConnectionDoctor::Report &report) {
+                         std::cout << toStd(report.summary) << std::endl;
+                         status = report.finding == oilink::ConnectionDoctor::Finding::Healthy ? 0 : 1;
+                         QCoreApplication::exit(status);
+                     });
+    std::cout << "Checking " << toStd(o.settings.describe()) << ":" << std::endl;
     QTimer::singleShot(0, &app, [&] { transport->open(); });
     QCoreApplication::exec();
     transport->close();
@@ -653,6 +661,8 @@ int main(int argc, char **argv)
         return streamSensors(argc, argv, args);
     if (command == "send")
         return sendToRobot(argc, argv, args);
+    if (command == "doctor")
+        return runDoctor(argc, argv, args);
     if (command == "csv")
         return recordingCsv(args, 1);
     return fail("unknown command '" + command + "'; try --help");

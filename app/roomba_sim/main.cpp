@@ -2,6 +2,7 @@
 // roomba-sim: the virtual robot on a pseudo-terminal (or a TCP port), for any
 // Open Interface client to connect to.
 
+#include "brc_control_server.h"
 #include "firmware_banner.h"
 #include "pty_robot_server.h"
 #include "room_file.h"
@@ -81,7 +82,11 @@ int main(int argc, char *argv[])
     parser.setApplicationDescription(QStringLiteral(
         "A virtual iRobot Open Interface robot on a pseudo-terminal.\n"
         "Prints the device to open (or tcp://ADDRESS:PORT) on the first line of\n"
-        "standard output, then runs until interrupted."));
+        "standard output, then runs until interrupted.\n"
+        "A pseudo-terminal has no modem lines, so the robot's BRC pin (which wakes\n"
+        "it, keeps it awake and sets 19200 baud) is a local socket beside it,\n"
+        "/tmp/roomba-sim-brc-pts-N for /dev/pts/N: each byte 'L' pulls the pin low,\n"
+        "'H' lets it go. The dashboard and roomba-ctl use it as the RTS/DTR line."));
     const QCommandLineOption helpOption = parser.addHelpOption();
     const QCommandLineOption versionOption = parser.addVersionOption();
     parser.addOptions({
@@ -92,9 +97,13 @@ int main(int argc, char *argv[])
         {QStringLiteral("stray"), QStringLiteral("Probability that a stray 19 is sent before a byte."), QStringLiteral("P")},
         {QStringLiteral("drop"), QStringLiteral("Probability that a byte the robot sends is lost."), QStringLiteral("P")},
         {QStringLiteral("tcp"), QStringLiteral("Serve raw bytes on this TCP port instead of a pseudo-terminal (0 picks a free port)."), QStringLiteral("PORT")},
+        {QStringLiteral("rfc2217"), QStringLiteral("With --tcp: speak RFC 2217 (as ser2net in telnet mode does), so that RTS or DTR asserted pulls the robot's BRC pin low.")},
         {QStringLiteral("bind"), QStringLiteral("Address to listen on with --tcp (default 127.0.0.1)."), QStringLiteral("ADDRESS"), QStringLiteral("127.0.0.1")},
         {QStringLiteral("link"), QStringLiteral("Also make a symbolic link at PATH to the pseudo-terminal (an existing link is replaced)."), QStringLiteral("PATH")},
         {QStringLiteral("room"), QStringLiteral("The room the robot drives in: a room file (see protocol/sim/room_format.md). Default the classroom."), QStringLiteral("FILE")},
+        {QStringLiteral("asleep"), QStringLiteral("Start asleep, as after Power (133): deaf to bytes until a BRC pulse.")},
+        {QStringLiteral("speed"), QStringLiteral("Run the robot's clock N times faster than real time (default 1), e.g. to watch it sleep."), QStringLiteral("N"), QStringLiteral("1")},
+        {QStringLiteral("on-dock"), QStringLiteral("Start with the robot on its dock (charging in Passive; Safe mode will not drive there).")},
     });
 
     if (!parser.parse(QCoreApplication::arguments()))
@@ -144,6 +153,9 @@ int main(int argc, char *argv[])
             return fail(kUsageError, QStringLiteral("--room: %1").arg(message));
         world = *loaded;
     }
+    const double speed = parser.value(QStringLiteral("speed")).toDouble(&ok);
+    if (!ok || !std::isfinite(speed) || speed < 0.01 || speed > 1000)
+        return fail(kUsageError, QStringLiteral("--speed: '%1' is not a factor from 0.01 to 1000").arg(parser.value(QStringLiteral("speed"))));
 
     const bool tcp = parser.isSet(QStringLiteral("tcp"));
     quint16 port = 0;
@@ -159,8 +171,8 @@ int main(int argc, char *argv[])
             return fail(kUsageError, QStringLiteral("--bind: '%1' is not an IP address").arg(bind));
         if (parser.isSet(QStringLiteral("link")))
             return fail(kUsageError, QStringLiteral("--link makes a link to the pseudo-terminal; it does not go with --tcp"));
-    } else if (parser.isSet(QStringLiteral("bind"))) {
-        return fail(kUsageError, QStringLiteral("--bind goes with --tcp"));
+    } else if (parser.isSet(QStringLiteral("bind")) || parser.isSet(QStringLiteral("rfc2217"))) {
+        return fail(kUsageError, QStringLiteral("--%1 goes with --tcp").arg(parser.isSet(QStringLiteral("bind")) ? QStringLiteral("bind") : QStringLiteral("rfc2217")));
     }
 
     // SIGTERM, SIGHUP and SIGINT end the event loop; the servers close below.
@@ -169,21 +181,36 @@ int main(int argc, char *argv[])
 
     std::unique_ptr<sim::PtyRobotServer> pty;
     std::unique_ptr<sim::TcpRobotServer> tcpServer;
-    sim::VirtualRobot *robot = nullptr;
+    std::unique_ptr<sim::BrcControlServer> brcControl;
+    sim::RealTimeRobot *realTime = nullptr;
     QString where;
     if (tcp) {
         tcpServer = std::make_unique<sim::TcpRobotServer>(*profile, seed);
-        robot = &tcpServer->robot().robot();
+        tcpServer->setRfc2217(parser.isSet(QStringLiteral("rfc2217")));
+        realTime = &tcpServer->robot();
     } else {
         pty = std::make_unique<sim::PtyRobotServer>(*profile, seed);
-        robot = &pty->robot().robot();
+        realTime = &pty->robot();
     }
+    realTime->setTimeScale(speed);
+    sim::VirtualRobot *robot = &realTime->robot();
     // The robot stands at the room's start.
     const auto room = std::make_shared<sim::Room>(world);
     robot->joinRoom(room, room->placeNewRobot());
     robot->setFaultRates(rates);
+    if (parser.isSet(QStringLiteral("on-dock"))) {
+        // Nose first onto the contacts, facing the way the dock does not.
+        const sim::World::Dock dock = *robot->world().dock;
+        robot->placeAt(oi::Pose{dock.x, dock.y, dock.headingRad + std::acos(-1.0)});
+    }
     if (!firmware.isEmpty())
         robot->setFirmwareRelease(firmware.toStdString());
+    if (parser.isSet(QStringLiteral("asleep"))) {
+        const std::uint8_t startAndPower[] = {128, 133};
+        robot->receive(startAndPower);
+        if (!robot->asleep())
+            return fail(kUsageError, QStringLiteral("--asleep: the Create has no Power command to sleep by; use it with roomba500 or create2"));
+    }
 
     if (tcp) {
         if (!tcpServer->listen(address, port, &message))
@@ -196,6 +223,9 @@ int main(int argc, char *argv[])
         if (!pty->open(&message))
             return fail(kRuntimeError, QStringLiteral("cannot create a pseudo-terminal: %1").arg(message));
         where = pty->slavePath();
+        brcControl = std::make_unique<sim::BrcControlServer>(pty->robot());
+        if (!brcControl->listen(where, &message))
+            return fail(kRuntimeError, QStringLiteral("cannot make the BRC control socket: %1").arg(message));
     }
 
     QString linkPath;
@@ -212,6 +242,8 @@ int main(int argc, char *argv[])
 
     const int status = app.exec();
 
+    if (brcControl)
+        brcControl->close();
     if (pty)
         pty->close();
     if (tcpServer)

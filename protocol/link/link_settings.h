@@ -21,12 +21,16 @@ enum class TransportKind : std::uint8_t {
     Replay,  // a recording played back (see recording_file.h)
 };
 
+// Which modem line of a serial adapter is wired to the robot's BRC pin.
+enum class BrcLine : std::uint8_t { None, Rts, Dtr };
+
 // Everything needed to reach one robot. Plain value; crosses threads.
 struct LinkSettings {
     TransportKind transport = TransportKind::Virtual;
     QString portPath;      // Serial: a device path, typed or picked
     QString host;          // Tcp
     quint16 tcpPort = 0;   // Tcp
+    bool tcpRfc2217 = false; // Tcp: the bridge speaks RFC 2217 (ser2net telnet mode), so BRC is in reach
     QString replayPath;    // Replay
     // nullopt = Auto: find the profile (and, on a serial port, the baud) by probing.
     std::optional<oi::ProfileId> profile;
@@ -35,6 +39,13 @@ struct LinkSettings {
     // Which robot the in-process virtual robot plays (TransportKind::Virtual).
     oi::ProfileId virtualRobot = oi::ProfileId::Create2;
     std::uint32_t virtualSeed = 1;
+    // The BRC pin: a serial adapter's line, and whether asserting that line
+    // pulls BRC low (as on FTDI-style TTL cables) or lets it go.
+    BrcLine brcLine = BrcLine::Rts;
+    bool brcAssertedIsLow = true;
+    // In Passive, a BRC pulse this often keeps a Create 2 from sleeping
+    // (its document: within 5 minutes); 0 turns it off.
+    int keepAwakeMs = 60'000;
 
     // "/dev/ttyUSB0", "raspberrypi:3333", "virtual Create 2": for messages.
     QString describe() const;

@@ -6,25 +6,26 @@
 namespace oilink {
 
 namespace {
-constexpr int kDrainMs = 80;
-// Generous: a robot answers within a frame time, but a busy machine running
-// the virtual robot in another process may not schedule it at once.
-constexpr int kReplyTimeoutMs = 400;
-// After the expected bytes, wait this long for more: extra bytes mean the
-// answer was garbage.
-constexpr int kQuietMs = 30;
 constexpr int kModeAttempts = 2;
 constexpr std::uint8_t kModeMax = 3;
 constexpr std::uint8_t kBumpBitsUnused = 0xE0;
 
-QByteArray bytes(std::initializer_list<std::uint8_t> values)
+QByteArray bytes(std::initializer_list<std::uint8_t> values) { return ProfileProbe::bytesOf(values); }
+} // namespace
+
+QByteArray ProfileProbe::bytesOf(std::initializer_list<std::uint8_t> values)
 {
     QByteArray out;
     for (std::uint8_t v : values)
         out.append(static_cast<char>(v));
     return out;
 }
-} // namespace
+
+bool ProfileProbe::isModeAnswer(const QByteArray &answer)
+{
+    const auto at = [&](qsizetype i) { return static_cast<std::uint8_t>(answer.at(i)); };
+    return answer.size() == 2 && at(0) >= 1 && at(0) <= kModeMax && (at(1) & kBumpBitsUnused) == 0;
+}
 
 ProfileProbe::ProfileProbe(Transport &transport, QList<int> bauds, QObject *parent)
     : QObject(parent), m_transport(transport), m_bauds(std::move(bauds)), m_timer(this)
@@ -60,7 +61,8 @@ void ProfileProbe::tryBaud()
     m_modeAttempts = 0;
     m_received.clear();
     m_step = Step::Draining;
-    send(bytes({128, 150, 0}));
+    m_startSent = m_startPolicy == StartPolicy::Always;
+    send(m_startSent ? bytes({128, 150, 0}) : bytes({150, 0}));
     m_timer.start(kDrainMs);
 }
 
@@ -99,21 +101,24 @@ void ProfileProbe::feed(const QByteArray &data)
 
 void ProfileProbe::onTimeout()
 {
-    const auto at = [this](qsizetype i) { return static_cast<std::uint8_t>(m_received.at(i)); };
     switch (m_step) {
     case Step::Idle:
         return;
     case Step::Draining:
-        ask(bytes({149, 2, 35, 7}), 2, Step::AskMode);
+        ask(modeQuestion(), 2, Step::AskMode);
         return;
     case Step::AskMode: {
-        const bool plausible = m_received.size() == 2 && at(0) >= 1 && at(0) <= kModeMax
-                               && (at(1) & kBumpBitsUnused) == 0;
-        if (plausible) {
+        if (isModeAnswer(m_received)) {
+            m_mode = static_cast<oi::OiMode>(m_received.at(0));
             const oi::PacketGroup *group = oi::profile(oi::ProfileId::Create2).group(101);
             ask(bytes({142, 101}), group->bytes, Step::AskRoombaGroup);
+        } else if (!m_startSent && m_startPolicy == StartPolicy::IfSilent) {
+            // Silent: Off mode, or the wrong baud. Start opens the interface.
+            m_startSent = true;
+            send(bytes({128}));
+            ask(modeQuestion(), 2, Step::AskMode);
         } else if (++m_modeAttempts < kModeAttempts) {
-            ask(bytes({149, 2, 35, 7}), 2, Step::AskMode);
+            ask(modeQuestion(), 2, Step::AskMode);
         } else {
             nextBaud();
         }

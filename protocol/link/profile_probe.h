@@ -4,11 +4,15 @@
 #include "link_status.h" // the metatype of oi::ProfileId, which a signal carries
 
 #include "robot_profile.h"
+#include "sensor_snapshot.h"
 
 #include <QByteArray>
 #include <QList>
 #include <QObject>
 #include <QTimer>
+
+#include <cstdint>
+#include <initializer_list>
 
 namespace oilink {
 
@@ -39,6 +43,30 @@ public:
     ProfileProbe(Transport &transport, QList<int> bauds, QObject *parent = nullptr);
 
     static QList<int> defaultBauds() { return {115200, 57600, 19200}; }
+
+    // Shared with the connection doctor, which asks the same questions.
+    static constexpr int kDrainMs = 80;
+    // Generous: a robot answers within a frame time, but a busy machine
+    // running the virtual robot in another process may not schedule it at once.
+    static constexpr int kReplyTimeoutMs = 400;
+    // After the expected bytes, wait this long for more: extra bytes mean
+    // the answer was garbage.
+    static constexpr int kQuietMs = 30;
+    static QByteArray bytesOf(std::initializer_list<std::uint8_t> values);
+    // Query List 35 (OI mode), 7 (bumps and wheel drops).
+    static QByteArray modeQuestion() { return bytesOf({149, 2, 35, 7}); }
+    // Exactly two bytes: a mode of 1..3 and a bumps byte with bits 5..7 clear.
+    static bool isModeAnswer(const QByteArray &answer);
+
+    enum class StartPolicy : std::uint8_t {
+        Always,   // Start goes out first at every baud, as above (the default)
+        IfSilent, // asked first without Start, which would drop Safe or Full
+                  // to Passive; Start goes out only when nothing answers
+        Never,    // a robot in Off mode is not found
+    };
+    void setStartPolicy(StartPolicy policy) { m_startPolicy = policy; }
+    // The OI mode the robot answered with, once detected.
+    oi::OiMode modeFound() const { return m_mode; }
 
     void start();
     void cancel();
@@ -71,6 +99,9 @@ private:
     QByteArray m_received;
     qsizetype m_expected = 0;
     bool m_settling = false;
+    StartPolicy m_startPolicy = StartPolicy::Always;
+    bool m_startSent = false;
+    oi::OiMode m_mode = oi::OiMode::Off;
     QTimer m_timer;
 };
 

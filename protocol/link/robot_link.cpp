@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "robot_link.h"
 
+#include "brc_pulser.h"
+
 #include "profile_probe.h"
 #include "stream_packets.h"
 #include "transport.h"
@@ -63,6 +65,7 @@ RobotLink::RobotLink(QObject *parent)
       m_recordingFlush(this)
 {
     registerLinkMetaTypes();
+    m_brc = new BrcPulser(this);
     m_parser.setSnapshotHandler([this](const oi::SensorSnapshot &s, oi::FrameKind kind) {
         if (kind == oi::FrameKind::Stream)
             onFrame(s);
@@ -194,6 +197,7 @@ void RobotLink::openTransport()
     transport->setParent(this);
     m_transport = transport;
     m_transportOpen = false;
+    m_brc->setTransport(transport);
     connect(transport, &Transport::opened, this, &RobotLink::onTransportOpened);
     connect(transport, &Transport::bytesReceived, this, &RobotLink::onBytes);
     connect(transport, &Transport::errorOccurred, this, &RobotLink::onTransportError);
@@ -213,6 +217,7 @@ void RobotLink::dropTransport()
         m_probe = nullptr;
     }
     m_probeRetry.stop();
+    m_brc->setTransport(nullptr);
     if (m_transport) {
         disconnect(m_transport, nullptr, this, nullptr);
         m_transport->close();
@@ -235,6 +240,9 @@ void RobotLink::scheduleReconnect()
 void RobotLink::onTransportOpened()
 {
     m_transportOpen = true;
+    // A sleeping robot hears nothing until its BRC pin is pulsed.
+    m_brc->wake();
+    m_brc->setKeepAwake(m_settings.keepAwakeMs);
     dropPartialInput();
     if (m_profile)
         startStream();
@@ -304,7 +312,10 @@ void RobotLink::onProbeFailed()
 
 QString RobotLink::noDataMessage() const
 {
-    return tr("%1: no data: is the robot on, and is the baud right?").arg(m_settings.describe());
+    const QString message = tr("%1: no data: is the robot on, and is the baud right?").arg(m_settings.describe());
+    if (m_transport && !m_brc->canPulse())
+        return message + QLatin1Char(' ') + tr("(If it is asleep: %1.)").arg(m_transport->brcUnavailable());
+    return message;
 }
 
 // --- The stream ---
@@ -388,6 +399,8 @@ void RobotLink::onFrame(const oi::SensorSnapshot &frame)
         return; // closed by a slot of an earlier frame of the same read
     m_lastFrameMs = QDateTime::currentMSecsSinceEpoch();
     m_frameSinceStreamStart = true;
+    if (frame.has(35))
+        m_brc->noteMode(frame.oiMode());
     if (m_queryPhase == QueryPhase::None)
         m_watchdog.start();
     if (m_state != LinkState::Streaming) {

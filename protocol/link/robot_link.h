@@ -24,6 +24,8 @@
 
 namespace oilink {
 
+class BrcPulser;
+
 class ProfileProbe;
 class Transport;
 
@@ -157,6 +159,7 @@ private:
     Transport *m_transport = nullptr;
     bool m_transportOpen = false;
     ProfileProbe *m_probe = nullptr;
+    BrcPulser *m_brc = nullptr; // wakes the robot and keeps it awake
 
     const oi::RobotProfile *m_profile = nullptr;
     int m_baud = 0; // as found by the probe or asked for; 0 = the profile's default

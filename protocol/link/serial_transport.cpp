@@ -66,6 +66,7 @@ QString SerialTransport::openFailure() const
 void SerialTransport::close()
 {
     m_pathCheck.stop();
+    m_ptyBrc.reset();
     if (m_port.isOpen())
         m_port.close();
     m_port.clearError();
@@ -93,6 +94,34 @@ bool SerialTransport::setBaud(int baud)
     return !m_port.isOpen() || m_port.setBaudRate(baud);
 }
 
+void SerialTransport::setBrcLine(BrcLine line, bool assertedIsLow)
+{
+    m_brcLine = line;
+    m_brcAssertedIsLow = assertedIsLow;
+}
+
+bool SerialTransport::setBrcLow(bool low)
+{
+    if (!m_port.isOpen() || m_brcLine == BrcLine::None)
+        return false;
+    const bool asserted = low == m_brcAssertedIsLow;
+    const bool set = m_brcLine == BrcLine::Rts ? m_port.setRequestToSend(asserted)
+                                               : m_port.setDataTerminalReady(asserted);
+    m_port.clearError();
+    if (set)
+        return true;
+    if (!m_ptyBrc)
+        m_ptyBrc = std::make_unique<PtyBrcChannel>(m_path);
+    return m_ptyBrc->setLow(low);
+}
+
+QString SerialTransport::brcUnavailable() const
+{
+    if (m_brcLine == BrcLine::None)
+        return tr("%1: no line is set for the BRC pin (RTS or DTR)").arg(m_path);
+    return tr("%1: the port has no RTS or DTR line to pulse the BRC pin with").arg(m_path);
+}
+
 void SerialTransport::onReadyRead()
 {
     const QByteArray bytes = m_port.readAll();
@@ -102,7 +131,8 @@ void SerialTransport::onReadyRead()
 
 void SerialTransport::onError(QSerialPort::SerialPortError error)
 {
-    if (!m_port.isOpen())
+    // clearError() reports NoError: nothing to do, and no loop.
+    if (!m_port.isOpen() || error == QSerialPort::NoError)
         return; // open() reports its own failure
     switch (error) {
     case QSerialPort::ResourceError:

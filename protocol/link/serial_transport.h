@@ -1,7 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "pty_brc_channel.h"
 #include "transport.h"
+
+#include <memory>
 
 #include <QSerialPort>
 #include <QTimer>
@@ -22,6 +25,9 @@ public:
     bool write(const QByteArray &bytes) override;
     void flush(int msecs) override;
     bool setBaud(int baud) override;
+    void setBrcLine(BrcLine line, bool assertedIsLow);
+    bool setBrcLow(bool low) override;
+    QString brcUnavailable() const override;
     QString describe() const override { return m_path; }
 
 private:
@@ -33,6 +39,11 @@ private:
 
     QString m_path;
     int m_baud;
+    BrcLine m_brcLine = BrcLine::Rts;
+    bool m_brcAssertedIsLow = true;
+    // A pseudo-terminal has no modem lines: roomba-sim takes the pin's
+    // level through a control socket instead.
+    std::unique_ptr<PtyBrcChannel> m_ptyBrc;
     QSerialPort m_port;
     // A USB adapter pulled out may not raise a read error at once; its
     // device node vanishing is the surer sign.

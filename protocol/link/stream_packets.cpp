@@ -11,6 +11,7 @@ namespace {
 const std::initializer_list<std::initializer_list<int>> kCandidates = {
     {100},
     {6},
+    {1, 43, 44, 21, 22, 35},
     {1, 19, 20, 21, 22, 35},
     {1},
     {7},

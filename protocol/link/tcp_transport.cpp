@@ -28,6 +28,14 @@ QString TcpTransport::describe() const
     return m_host + QLatin1Char(':') + QString::number(m_port);
 }
 
+QString TcpTransport::brcUnavailable() const
+{
+    if (m_rfc2217)
+        return tr("%1: no line is set for the BRC pin (RTS or DTR)").arg(describe());
+    return tr("%1: raw TCP carries no modem lines, so it cannot wake the robot or keep it awake")
+        .arg(describe());
+}
+
 void TcpTransport::open()
 {
     if (m_connected) {
@@ -50,9 +58,40 @@ void TcpTransport::close()
     m_socket.abort();
 }
 
+namespace {
+QByteArray toQt(const rfc2217::Bytes &bytes)
+{
+    return QByteArray(reinterpret_cast<const char *>(bytes.data()), qsizetype(bytes.size()));
+}
+} // namespace
+
+void TcpTransport::setRfc2217(bool on, BrcLine line, bool assertedIsLow)
+{
+    m_rfc2217 = on;
+    m_brcLine = line;
+    m_brcAssertedIsLow = assertedIsLow;
+}
+
 bool TcpTransport::write(const QByteArray &bytes)
 {
-    return m_connected && m_socket.write(bytes) == bytes.size();
+    if (!m_connected)
+        return false;
+    if (!m_rfc2217)
+        return m_socket.write(bytes) == bytes.size();
+    const QByteArray wire =
+        toQt(rfc2217::escape(reinterpret_cast<const std::uint8_t *>(bytes.constData()), std::size_t(bytes.size())));
+    return m_socket.write(wire) == wire.size();
+}
+
+bool TcpTransport::setBrcLow(bool low)
+{
+    if (!m_connected || !m_rfc2217 || m_brcLine == BrcLine::None)
+        return false;
+    const bool asserted = low == m_brcAssertedIsLow;
+    const std::uint8_t value = m_brcLine == BrcLine::Rts ? (asserted ? rfc2217::kRtsOn : rfc2217::kRtsOff)
+                                                         : (asserted ? rfc2217::kDtrOn : rfc2217::kDtrOff);
+    const QByteArray command = toQt(rfc2217::setControl(value));
+    return m_socket.write(command) == command.size();
 }
 
 void TcpTransport::flush(int msecs)
@@ -73,6 +112,10 @@ void TcpTransport::onConnected()
     m_connected = true;
     // Frames are small and latency matters more than packing.
     m_socket.setSocketOption(QAbstractSocket::LowDelayOption, 1);
+    if (m_rfc2217) {
+        m_telnet = std::make_unique<rfc2217::Decoder>();
+        m_socket.write(toQt(rfc2217::willComPort()));
+    }
     emit opened();
 }
 
@@ -130,7 +173,9 @@ QString TcpTransport::closedByBridge() const
 
 void TcpTransport::onReadyRead()
 {
-    const QByteArray bytes = m_socket.readAll();
+    QByteArray bytes = m_socket.readAll();
+    if (m_telnet)
+        bytes = toQt(m_telnet->feed(reinterpret_cast<const std::uint8_t *>(bytes.constData()), std::size_t(bytes.size())));
     if (bytes.isEmpty())
         return;
     constexpr qsizetype kKeep = 256;

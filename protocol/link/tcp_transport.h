@@ -1,15 +1,21 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "rfc2217.h"
 #include "transport.h"
+
+#include <memory>
 
 #include <QTcpSocket>
 #include <QTimer>
 
 namespace oilink {
 
-// Raw TCP to a serial bridge (ser2net in raw mode, a Wi-Fi serial module):
-// the bytes on the socket are the bytes on the robot's serial line.
+// TCP to a serial bridge. Raw (ser2net in raw mode, a Wi-Fi serial module):
+// the bytes on the socket are the bytes on the robot's serial line, and no
+// modem line can be reached. RFC 2217 (ser2net in telnet mode with
+// rfc2217): the same bytes inside Telnet, and the BRC pin through the
+// bridge's RTS or DTR line.
 class TcpTransport : public Transport {
     Q_OBJECT
 public:
@@ -21,6 +27,10 @@ public:
     bool write(const QByteArray &bytes) override;
     void flush(int msecs) override;
     QString describe() const override;
+    QString brcUnavailable() const override;
+    bool setBrcLow(bool low) override;
+    // Before open(): speak RFC 2217, with BRC on this line of the bridge.
+    void setRfc2217(bool on, BrcLine line = BrcLine::Rts, bool assertedIsLow = true);
 
 private:
     void onConnected();
@@ -37,6 +47,10 @@ private:
     bool m_connecting = false;
     bool m_connected = false;
     QByteArray m_lastReceived; // a bridge may say why it hangs up
+    bool m_rfc2217 = false;
+    BrcLine m_brcLine = BrcLine::Rts;
+    bool m_brcAssertedIsLow = true;
+    std::unique_ptr<rfc2217::Decoder> m_telnet;
 };
 
 } // namespace oilink

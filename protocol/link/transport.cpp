@@ -19,13 +19,31 @@ qint64 Transport::readTimeUs() const
     return -1;
 }
 
+bool Transport::setBrcLow(bool)
+{
+    return false;
+}
+
+QString Transport::brcUnavailable() const
+{
+    return tr("%1 cannot reach the robot's BRC pin").arg(describe());
+}
+
 Transport *createTransport(const LinkSettings &settings, int baud, QObject *parent)
 {
     switch (settings.transport) {
     case TransportKind::Serial:
-        return new SerialTransport(settings.portPath, baud, parent);
+    {
+        auto *serial = new SerialTransport(settings.portPath, baud, parent);
+        serial->setBrcLine(settings.brcLine, settings.brcAssertedIsLow);
+        return serial;
+    }
     case TransportKind::Tcp:
-        return new TcpTransport(settings.host, settings.tcpPort, parent);
+    {
+        auto *tcp = new TcpTransport(settings.host, settings.tcpPort, parent);
+        tcp->setRfc2217(settings.tcpRfc2217, settings.brcLine, settings.brcAssertedIsLow);
+        return tcp;
+    }
     case TransportKind::Replay:
         return new ReplayTransport(settings.replayPath, parent);
     case TransportKind::Virtual:

@@ -35,6 +35,11 @@ public:
     // for a transport that keeps its own clock (a replay: the recording's
     // time); -1 for a live one, whose bytes the link stamps as they arrive.
     virtual qint64 readTimeUs() const;
+    // The robot's BRC pin (Baud Rate Change, also its wake-up line): pulled
+    // low or let go. False where this transport cannot reach it; then
+    // brcUnavailable() says why.
+    virtual bool setBrcLow(bool low);
+    virtual QString brcUnavailable() const;
     // "/dev/ttyUSB0", "host:port": the prefix of this transport's messages.
     virtual QString describe() const = 0;
 

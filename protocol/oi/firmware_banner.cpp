@@ -124,4 +124,10 @@ std::optional<FirmwareInfo> parseFirmwareBanner(std::string_view text)
     return std::nullopt;
 }
 
+bool wakesByBrcOnDock(const FirmwareInfo &firmware)
+{
+    const bool stm32 = firmware.release.find("stm32") != std::string::npos;
+    return firmware.version >= (stm32 ? FirmwareVersion{3, 7, 7} : FirmwareVersion{3, 8, 2});
+}
+
 } // namespace oi

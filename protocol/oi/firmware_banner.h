@@ -46,4 +46,8 @@ std::optional<FirmwareInfo> parseFirmwareBanner(std::string_view text);
 
 FirmwareCorrections correctionsFor(FirmwareVersion version);
 
+// Create 2 document, Power Saving: a sleeping robot on its dock wakes by a
+// BRC pulse only from release-3.8.2 / release-stm32-3.7.7 on.
+bool wakesByBrcOnDock(const FirmwareInfo &firmware);
+
 } // namespace oi

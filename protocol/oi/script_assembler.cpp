@@ -139,6 +139,16 @@ Result<std::string> disassembleScript(const RobotProfile &profile, std::span<con
                 for (std::uint8_t b : data)
                     statement += " " + std::to_string(b);
         }
+        // Never print what the assembler would refuse or read otherwise.
+        const Bytes original(body.begin() + std::ptrdiff_t(offset), body.begin() + std::ptrdiff_t(at));
+        std::vector<std::string> words;
+        for (std::string_view word : splitTokens(statement, kWhitespace))
+            words.emplace_back(word);
+        const EncodeResult again = encodeCommand(CommandEncoder(profile), words[0], std::span(words).subspan(1));
+        if (!again)
+            return OiError::invalid(where, std::string(spec->title) + ": " + again.error().describe());
+        if (*again != original)
+            return OiError::invalid(where, std::string(spec->title) + " is not a command the script language can say");
         if (!text.empty())
             text += "; ";
         text += statement;

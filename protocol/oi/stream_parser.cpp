@@ -88,6 +88,21 @@ void StreamParser::feed(std::span<const std::uint8_t> bytes)
     }
 }
 
+void StreamParser::finish()
+{
+    while (m_length > 0 && m_replies.empty()) {
+        // process() left the buffer at the header of a frame that never
+        // completed (or at a lone header byte): give that header up.
+        ++m_counters.bytesDiscarded;
+        std::size_t used = 1;
+        std::memmove(m_buffer.data(), m_buffer.data() + used, m_length - used);
+        m_length -= used;
+        used = process();
+        std::memmove(m_buffer.data(), m_buffer.data() + used, m_length - used);
+        m_length -= used;
+    }
+}
+
 // Consumes what it can from the buffer; returns how many bytes it used.
 std::size_t StreamParser::process()
 {

@@ -65,6 +65,11 @@ public:
     std::size_t pendingReplies() const;
 
     void feed(std::span<const std::uint8_t> bytes);
+    // The end of the input: no more bytes will come. A frame still waiting
+    // for its rest was a stray 19, so the bytes held behind it are scanned
+    // again from the byte after it, and frames among them come out. What is
+    // left is discarded; an unfinished reply stays pending.
+    void finish();
 
     const ParserCounters &counters() const { return m_counters; }
     // Bytes held while waiting for the rest of a frame or reply.

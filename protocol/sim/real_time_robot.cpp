@@ -44,6 +44,12 @@ void RealTimeRobot::write(const QByteArray &bytes)
         emit bytesOut(QByteArray(reinterpret_cast<const char *>(out.data()), qsizetype(out.size())));
 }
 
+void RealTimeRobot::setBrcLow(bool low)
+{
+    tick();
+    m_robot.setBrcLow(low);
+}
+
 void RealTimeRobot::tick()
 {
     if (m_clock.isValid()) {
@@ -52,7 +58,7 @@ void RealTimeRobot::tick()
         // Whole microseconds go to the robot; the rest waits for the next tick.
         const qint64 us = elapsedNs / 1000;
         m_lastNs = nowNs - (elapsedNs - us * 1000);
-        m_robot.advance(Microseconds(us));
+        m_robot.advance(Microseconds(qint64(double(us) * m_timeScale)));
     }
     const oi::Bytes out = m_robot.takeOutput();
     if (!out.empty())

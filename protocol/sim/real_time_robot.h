@@ -28,6 +28,13 @@ public slots:
     // Bytes from the client. Handled at once, so replies can go out before
     // the next tick.
     void write(const QByteArray &bytes);
+    // The BRC pin's level, at the moment it really changed.
+    void setBrcLow(bool low);
+
+public:
+    // The robot's clock runs this many times faster than the real one
+    // (1 by default), so that tests can watch minutes go by in seconds.
+    void setTimeScale(double scale) { m_timeScale = scale; }
 
 signals:
     void bytesOut(const QByteArray &bytes);
@@ -41,6 +48,7 @@ private:
     QTimer m_timer;
     QElapsedTimer m_clock;
     qint64 m_lastNs = 0;
+    double m_timeScale = 1;
 };
 
 } // namespace sim

@@ -63,7 +63,29 @@ void TcpRobotServer::acceptClient()
         }
         m_client = socket;
         socket->setSocketOption(QAbstractSocket::LowDelayOption, 1);
-        connect(socket, &QTcpSocket::readyRead, this, [this, socket] { m_robot.write(socket->readAll()); });
+        m_telnet = {};
+        connect(socket, &QTcpSocket::readyRead, this, [this, socket] {
+            const QByteArray bytes = socket->readAll();
+            if (!m_rfc2217) {
+                m_robot.write(bytes);
+                return;
+            }
+            const rfc2217::Bytes data = m_telnet.feed(
+                reinterpret_cast<const std::uint8_t *>(bytes.constData()), std::size_t(bytes.size()),
+                [this, socket](std::uint8_t command, std::uint8_t value) {
+                    if (command != rfc2217::kSetControl)
+                        return;
+                    if (value == rfc2217::kRtsOn || value == rfc2217::kDtrOn)
+                        m_robot.setBrcLow(true);
+                    else if (value == rfc2217::kRtsOff || value == rfc2217::kDtrOff)
+                        m_robot.setBrcLow(false);
+                    const rfc2217::Bytes answer =
+                        rfc2217::setControl(value, rfc2217::kSetControl + rfc2217::kServerOffset);
+                    socket->write(reinterpret_cast<const char *>(answer.data()), qsizetype(answer.size()));
+                });
+            if (!data.empty())
+                m_robot.write(QByteArray(reinterpret_cast<const char *>(data.data()), qsizetype(data.size())));
+        });
         connect(socket, &QTcpSocket::disconnected, this, [this, socket] {
             if (m_client == socket) {
                 m_client = nullptr;
@@ -80,9 +102,16 @@ void TcpRobotServer::writeToClient(const QByteArray &bytes)
     // A client that stops reading loses bytes rather than growing the buffer
     // without bound, as on a real line.
     constexpr qint64 kMaxQueuedBytes = 64 * 1024;
-    if (m_client && m_client->state() == QAbstractSocket::ConnectedState
-        && m_client->bytesToWrite() < kMaxQueuedBytes)
+    if (!m_client || m_client->state() != QAbstractSocket::ConnectedState
+        || m_client->bytesToWrite() >= kMaxQueuedBytes)
+        return;
+    if (!m_rfc2217) {
         m_client->write(bytes);
+        return;
+    }
+    const rfc2217::Bytes wire =
+        rfc2217::escape(reinterpret_cast<const std::uint8_t *>(bytes.constData()), std::size_t(bytes.size()));
+    m_client->write(reinterpret_cast<const char *>(wire.data()), qsizetype(wire.size()));
 }
 
 } // namespace sim

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "real_time_robot.h"
+#include "rfc2217.h"
 
 #include <QHostAddress>
 #include <QObject>
@@ -34,6 +35,9 @@ public:
     bool clientConnected() const { return !m_client.isNull(); }
 
     RealTimeRobot &robot() { return m_robot; }
+    // Speak RFC 2217 instead of raw bytes (before listen()): RTS or DTR
+    // asserted pulls the robot's BRC pin low, as on an FTDI cable.
+    void setRfc2217(bool on) { m_rfc2217 = on; }
 
 signals:
     void clientConnectedChanged(bool connected);
@@ -45,6 +49,8 @@ private:
     RealTimeRobot m_robot;
     QTcpServer *m_server;
     QPointer<QTcpSocket> m_client;
+    bool m_rfc2217 = false;
+    rfc2217::Decoder m_telnet;
 };
 
 } // namespace sim

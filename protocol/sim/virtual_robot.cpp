@@ -2,7 +2,9 @@
 #include "virtual_robot.h"
 
 #include "body.h"
+#include "brc_pin.h"
 #include "command_catalog.h"
+#include "command_modes.h"
 #include "firmware_banner.h"
 #include "packet_encoding.h"
 #include "seven_segment_font.h"
@@ -25,6 +27,7 @@ using namespace std::chrono_literals;
 constexpr Microseconds kTick = 1ms;
 constexpr Microseconds kStreamPeriod = 15ms;
 constexpr Microseconds kButtonPress = 166'667us; // 165 releases after 1/6 s
+constexpr Microseconds kBaudSettle = 100ms;
 constexpr Microseconds kSleepAfter = std::chrono::seconds(oi::RobotProfile::kPassiveSleepSeconds);
 constexpr long long kWeekMicros = 7LL * 24 * 60 * 60 * 1'000'000;
 
@@ -54,29 +57,6 @@ constexpr double kOldFirmwareAngleFactor = 0.324056;
 constexpr oi::FirmwareVersion kAngleFixedAfter{3, 4, 0};
 
 std::int16_t s16(std::uint8_t hi, std::uint8_t lo) { return std::int16_t(std::uint16_t((hi << 8) | lo)); }
-
-bool isActuator(Command c)
-{
-    switch (c) {
-    case Command::Drive:
-    case Command::DriveDirect:
-    case Command::DrivePwm:
-    case Command::Motors:
-    case Command::LowSideDrivers:
-    case Command::PwmMotors:
-    case Command::PwmLowSideDrivers:
-    case Command::Leds:
-    case Command::Play:
-    case Command::SchedulingLeds:
-    case Command::DigitLedsRaw:
-    case Command::DigitLedsAscii:
-    case Command::DigitalOutputs:
-    case Command::SendIr:
-        return true;
-    default:
-        return false;
-    }
-}
 
 bool isCleaning(Command c)
 {
@@ -197,7 +177,9 @@ struct VirtualRobot::State {
     // The Open Interface.
     OiMode mode = OiMode::Off;
     bool asleep = false;
+    BrcPin brc;
     int baud;
+    Microseconds baudSettlesAt{0};
     std::string firmwareRelease = "release-3.8.2";
     double angleFactor = 1; // raw packet 20 units per degree
     std::string lastSafetyStop;
@@ -342,6 +324,35 @@ struct VirtualRobot::State {
         lastSafetyStop = why;
     }
 
+    bool clockOrScheduleHeld() const
+    {
+        return ((heldButtons | pushedButtons) & (oi::bit::ButtonSchedule | oi::bit::ButtonClock)) != 0;
+    }
+
+    bool sleepsWhenIdle() const { return profile->id == oi::ProfileId::Create2; }
+
+    bool wakesOnDock() const
+    {
+        const auto info = oi::parseFirmwareBanner("r3_robot/tags/" + firmwareRelease + ":");
+        return !info || oi::wakesByBrcOnDock(*info);
+    }
+
+    void setBrcLow(bool low)
+    {
+        const BrcPin::Event event = brc.set(low, now);
+        if (event == BrcPin::Event::None || disconnected)
+            return;
+        if (event == BrcPin::Event::PulseAndBaud19200)
+            baud = 19200;
+        if (asleep && onDock() && !wakesOnDock())
+            return;
+        if (asleep) {
+            asleep = false;
+            mode = OiMode::Off;
+        }
+        lastActivity = now;
+    }
+
     void fallAsleep()
     {
         stopMotors();
@@ -382,7 +393,7 @@ struct VirtualRobot::State {
 
     void drive(int velocity, int radius)
     {
-        requestedVelocity = velocity;
+        requestedVelocity = std::clamp(velocity, -500, 500); // packet 39's range
         requestedRadius = radius;
         const double v = std::clamp(velocity, -500, 500);
         const double half = oi::kWheelBaseMm / 2;
@@ -406,30 +417,16 @@ struct VirtualRobot::State {
                 right *= kMaxWheelSpeed / fastest;
             }
         }
-        requestedLeft = std::int32_t(std::lround(left));
-        requestedRight = std::int32_t(std::lround(right));
+        // 41 and 42 report Drive Direct only: Drive leaves them as they were.
         setWheelTargets(quantisedSpeed(left), quantisedSpeed(right));
-    }
-
-    void describeWheels(double left, double right)
-    {
-        requestedRight = std::int32_t(std::lround(right));
-        requestedLeft = std::int32_t(std::lround(left));
-        requestedVelocity = std::int32_t(std::lround((left + right) / 2));
-        if (std::abs(right - left) < 0.5)
-            requestedRadius = 32767;
-        else if (std::abs(right + left) < 0.5)
-            requestedRadius = right > left ? oi::kRadiusTurnInPlaceCounterClockwise
-                                           : oi::kRadiusTurnInPlaceClockwise;
-        else
-            requestedRadius = std::int32_t(std::clamp(
-                std::lround(oi::kWheelBaseMm / 2 * (right + left) / (right - left)), -2000L, 2000L));
     }
 
     void driveDirect(int right, int left)
     {
         const double r = std::clamp(right, -500, 500), l = std::clamp(left, -500, 500);
-        describeWheels(l, r);
+        // 39 and 40 report Drive only: Drive Direct leaves them as they were.
+        requestedRight = std::int32_t(r);
+        requestedLeft = std::int32_t(l);
         setWheelTargets(quantisedSpeed(l), quantisedSpeed(r));
     }
 
@@ -438,8 +435,7 @@ struct VirtualRobot::State {
         // Open loop: no speed controller, so no 28.5 mm/s steps.
         const double r = std::clamp(rightPwm, -255, 255) * kMaxWheelSpeed / kPwmFullScale;
         const double l = std::clamp(leftPwm, -255, 255) * kMaxWheelSpeed / kPwmFullScale;
-        describeWheels(l, r);
-        setWheelTargets(l, r);
+        setWheelTargets(l, r); // no requested velocity or radius: PWM asks for none
     }
 
     void setMotorBits(std::uint8_t bits)
@@ -647,7 +643,7 @@ struct VirtualRobot::State {
             wait.reset();
         scriptYield = false;
         pump();
-        if (mode == OiMode::Passive && now - lastActivity >= kSleepAfter) {
+        if (sleepsWhenIdle() && mode == OiMode::Passive && now - lastActivity >= kSleepAfter) {
             fallAsleep();
             return;
         }
@@ -816,6 +812,10 @@ struct VirtualRobot::State {
         for (std::uint8_t b : frame)
             sum += b;
         frame.push_back(static_cast<std::uint8_t>(-sum & 0xFF));
+        // ERRATA 18: a frame longer than 15 ms at this baud runs into the
+        // next one and arrives damaged.
+        if (int(frame.size()) > oi::maxStreamFrameBytes(baud))
+            frame.back() = static_cast<std::uint8_t>(~frame.back());
         emit(frame);
     }
 
@@ -863,18 +863,8 @@ struct VirtualRobot::State {
 
     void receive(std::span<const std::uint8_t> bytes)
     {
-        if (disconnected || bytes.empty())
+        if (disconnected || asleep || bytes.empty() || now < baudSettlesAt)
             return;
-        lastActivity = now;
-        if (asleep) {
-            // Asleep, the robot hears nothing but Start, which wakes it. (A
-            // real one needs a pulse on its BRC pin; here the byte does it.)
-            const auto start = std::find(bytes.begin(), bytes.end(), std::uint8_t(128));
-            if (start == bytes.end())
-                return;
-            asleep = false;
-            bytes = bytes.subspan(std::size_t(start - bytes.begin()));
-        }
         for (std::uint8_t b : bytes)
             if (serialIn.size() < kInputBufferBytes)
                 serialIn.push_back(b);
@@ -887,9 +877,9 @@ struct VirtualRobot::State {
         if (!spec)
             return; // an opcode this robot lacks: its bytes are skipped
         const Command cmd = spec->command;
-        if (mode == OiMode::Off && cmd != Command::Start && cmd != Command::Baud && cmd != Command::Reset)
+        if (mode == OiMode::Off && !oi::availableWhenOff(cmd))
             return;
-        if (mode == OiMode::Passive && isActuator(cmd))
+        if (mode == OiMode::Passive && oi::needsSafeOrFull(cmd))
             return;
         if (isCleaning(cmd)) {
             enterPassive(); // the cleaning itself is not simulated
@@ -903,17 +893,24 @@ struct VirtualRobot::State {
             enterPassive();
             break;
         case Command::Baud:
-            if (const int rate = oi::baudForCode(c[1]); rate > 0)
+            if (const int rate = oi::baudForCode(c[1]); rate > 0) {
                 baud = rate;
+                // The documents: wait 100 ms before sending more; what comes
+                // sooner may be lost.
+                baudSettlesAt = now + kBaudSettle;
+                serialIn.clear();
+            }
             break;
         case Command::Control:
         case Command::Safe:
         case Command::Full:
-            leds = {}; // entering Safe or Full turns every LED off
+            if (cmd != Command::Full)
+                leds = {}; // the documents: Safe turns every LED off; Full does not say so
             mode = cmd == Command::Full ? OiMode::Full : OiMode::Safe;
             break;
         case Command::Power:
             fallAsleep();
+            mode = OiMode::Passive; // "Changes mode to: Passive"
             break;
         case Command::Stop:
             stopMotors();
@@ -969,8 +966,9 @@ struct VirtualRobot::State {
             storeSong(c);
             break;
         case Command::Play:
-            // The documents: Play does nothing while a song is playing.
-            if (c[1] < songs.size() && songs[c[1]] && !songPlaying()) {
+            // The Create's document: Play does nothing while a song is
+            // playing. The Roomba models start the new song.
+            if (c[1] < songs.size() && songs[c[1]] && !(create1() && songPlaying())) {
                 songNumber = c[1];
                 songEndsAt = now + Microseconds(std::int64_t(songs[c[1]]->totalDuration64()) * 15625);
             }
@@ -991,10 +989,14 @@ struct VirtualRobot::State {
                 streaming = !streamIds.empty();
             break;
         case Command::Schedule:
+            if (clockOrScheduleHeld())
+                break; // the documents: ignored while either button is pressed
             if (const auto s = oi::scheduleFromBytes(c.subspan(1, 15)))
                 schedule = *s;
             break;
         case Command::SetDayTime:
+            if (clockOrScheduleHeld())
+                break;
             if (c[1] <= 6 && c[2] <= 23 && c[3] <= 59)
                 clockMicros = ((c[1] * 24LL + c[2]) * 60 + c[3]) * 60'000'000LL;
             break;
@@ -1115,6 +1117,8 @@ void VirtualRobot::pressButtons(std::uint8_t packet18Bits) { m_state->heldButton
 oi::OiMode VirtualRobot::mode() const { return m_state->mode; }
 
 bool VirtualRobot::asleep() const { return m_state->asleep; }
+
+void VirtualRobot::setBrcLow(bool low) { m_state->setBrcLow(low); }
 
 void VirtualRobot::setFirmwareRelease(std::string release)
 {

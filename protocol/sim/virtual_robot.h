@@ -71,10 +71,15 @@ public:
 
     // --- What the robot shows and stores ---
     oi::OiMode mode() const;
-    // After 5 minutes of Passive without a byte received, or after Power
-    // (133), the robot sleeps: it hears nothing and says nothing. Start (128)
-    // wakes it; a real one needs a pulse on its BRC pin instead.
+    // A Create 2 / Roomba 600 sleeps after 5 minutes in Passive without a
+    // BRC pulse (its document's "Power Saving"); any of them sleeps after
+    // Power (133). Asleep it hears nothing and says nothing, Start included.
     bool asleep() const;
+    // The Baud Rate Change pin: low while `low`. A pulse low wakes a sleeping
+    // robot (in Off mode, waiting for Start), except on its dock before
+    // release-3.8.2 / release-stm32-3.7.7, and in Passive restarts the sleep
+    // count. Three pulses of 50-500 ms set 19200 baud.
+    void setBrcLow(bool low);
     void setFirmwareRelease(std::string release); // e.g. "release-3.4.1"; printed on Reset
     struct Leds {
         std::uint8_t bits = 0, powerColor = 0, powerIntensity = 0;

@@ -48,6 +48,14 @@ void VirtualTransport::close()
         m_robot->stop();
 }
 
+bool VirtualTransport::setBrcLow(bool low)
+{
+    if (!m_open)
+        return false;
+    m_robot->setBrcLow(low);
+    return true;
+}
+
 bool VirtualTransport::write(const QByteArray &bytes)
 {
     if (!m_open)

@@ -29,6 +29,7 @@ public:
     void close() override;
     bool isOpen() const override { return m_open; }
     bool write(const QByteArray &bytes) override;
+    bool setBrcLow(bool low) override;
     void flush(int) override {}
     QString describe() const override;
 

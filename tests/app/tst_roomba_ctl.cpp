@@ -125,8 +125,24 @@ private slots:
         QCOMPARE(counters["frames_good"].toInt(), 2);
         QCOMPARE(counters["checksum_failures"].toInt(), 1);
         QCOMPARE(counters["length_mismatches"].toInt(), 0);
-        QCOMPARE(counters["bytes_discarded"].toInt(), 2 + 8);
-        QCOMPARE(counters["bytes_pending"].toInt(), 3);
+        // The cut frame at the end is scanned again and given up.
+        QCOMPARE(counters["bytes_discarded"].toInt(), 2 + 8 + 3);
+        QCOMPARE(counters["bytes_pending"].toInt(), 0);
+    }
+
+    void decodeKeepsTheLastFramesBehindAStray19()
+    {
+        // A stray 19 whose "length" (48) runs past the end of the file.
+        const QByteArray frame = QByteArray::fromHex("13051d02190d00a3");
+        const Outcome o = run({"decode"}, QByteArray::fromHex("1330") + frame + frame);
+        QCOMPARE(o.status, 0);
+        const QStringList lines = o.out.split('\n', Qt::SkipEmptyParts);
+        QCOMPARE(lines.size(), 3);
+        QCOMPARE(json(lines[1])["packets"].toObject()["cliff_front_left_signal"].toInt(), 537);
+        const QJsonObject counters = json(lines[2])["counters"].toObject();
+        QCOMPARE(counters["frames_good"].toInt(), 2);
+        QCOMPARE(counters["bytes_discarded"].toInt(), 2);
+        QCOMPARE(counters["bytes_pending"].toInt(), 0);
     }
 
     void decodeReplies()

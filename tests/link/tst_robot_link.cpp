@@ -88,11 +88,13 @@ private slots:
         QTest::addColumn<int>("baud");
         QTest::addColumn<QList<int>>("packets");
         const QList<int> shortList{1, 19, 20, 21, 22, 35};
+        const QList<int> encoderList{1, 43, 44, 21, 22, 35};
         QTest::newRow("create2 115200") << oi::ProfileId::Create2 << 115200 << QList<int>{100};
         QTest::newRow("create2 57600") << oi::ProfileId::Create2 << 57600 << QList<int>{100};
         QTest::newRow("create2 38400") << oi::ProfileId::Create2 << 38400 << QList<int>{6};
         QTest::newRow("create1 38400") << oi::ProfileId::Create1 << 38400 << QList<int>{6};
-        QTest::newRow("create2 19200") << oi::ProfileId::Create2 << 19200 << shortList;
+        QTest::newRow("create2 19200") << oi::ProfileId::Create2 << 19200 << encoderList;
+        QTest::newRow("roomba500 19200") << oi::ProfileId::Roomba500 << 19200 << encoderList;
         QTest::newRow("roomba500 115200") << oi::ProfileId::Roomba500 << 115200 << QList<int>{100};
         QTest::newRow("roomba500 57600") << oi::ProfileId::Roomba500 << 57600 << QList<int>{100};
         QTest::newRow("create1 115200") << oi::ProfileId::Create1 << 115200 << QList<int>{6};
@@ -123,6 +125,7 @@ private slots:
         QCOMPARE(frameBytes(c2, {6, 101}), 85);
         QCOMPARE(oi::maxStreamFrameBytes(57600), 86);
         QCOMPARE(frameBytes(c2, {1, 19, 20, 21, 22, 35}), 27);
+        QCOMPARE(frameBytes(c2, {1, 43, 44, 21, 22, 35}), 27);
         QCOMPARE(oi::maxStreamFrameBytes(19200), 28);
         // Group 100 fits at 57600 as well; the same packets as 6 + 101 take a byte more.
         QVERIFY(frameBytes(c2, {100}) <= oi::maxStreamFrameBytes(57600));
@@ -139,7 +142,7 @@ private slots:
         s.baud = 38400;
         QTest::newRow("create2 at 38400") << s << bytes({128, 148, 1, 6});
         s.baud = 19200;
-        QTest::newRow("create2 at 19200") << s << bytes({128, 148, 6, 1, 19, 20, 21, 22, 35});
+        QTest::newRow("create2 at 19200") << s << bytes({128, 148, 6, 1, 43, 44, 21, 22, 35});
         s = LinkSettings::serial(QStringLiteral("/dev/recording"), oi::ProfileId::Create1);
         QTest::newRow("create1") << s << bytes({128, 148, 1, 6});
         s = create2();
@@ -253,7 +256,8 @@ private slots:
         QTRY_COMPARE_WITH_TIMEOUT(current()->written().count(startAndStream), 3, 10000);
         QCOMPARE(errors.size(), 1);
         QCOMPARE(errors.at(0).at(0).toString(),
-                 QStringLiteral("/dev/recording: no data: is the robot on, and is the baud right?"));
+                 QStringLiteral("/dev/recording: no data: is the robot on, and is the baud right? "
+                                "(If it is asleep: /dev/recording cannot reach the robot's BRC pin.)"));
         QCOMPARE(m_link->state(), LinkState::Connecting);
         current()->inject(group100Frame());
         QCOMPARE(m_link->state(), LinkState::Streaming);

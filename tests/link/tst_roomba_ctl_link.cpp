@@ -130,9 +130,9 @@ private slots:
         o = run(QStringList{QStringLiteral("send")} + port + QStringList{QStringLiteral("sensors"), QStringLiteral("35")});
         QVERIFY2(o.status == 0, qPrintable(o.err));
         QCOMPARE(o.lines.size(), 1);
-        // Start went out first, so Safe became Passive again.
+        // Start goes out only to a silent robot, so Safe stays Safe.
         QCOMPARE(json(o.lines[0])[QStringLiteral("kind")].toString(), QStringLiteral("reply"));
-        QCOMPARE(json(o.lines[0])[QStringLiteral("packets")].toObject()[QStringLiteral("oi_mode")].toInt(), 1);
+        QCOMPARE(json(o.lines[0])[QStringLiteral("packets")].toObject()[QStringLiteral("oi_mode")].toInt(), 2);
         // Without --profile the robot is asked what it is.
         o = run({QStringLiteral("send"), QStringLiteral("--port"), sim.path(), QStringLiteral("query-list"),
                  QStringLiteral("2"), QStringLiteral("22"), QStringLiteral("7")});
@@ -141,6 +141,103 @@ private slots:
         const QJsonObject packets = json(o.lines[0])[QStringLiteral("packets")].toObject();
         QVERIFY(packets[QStringLiteral("voltage")].toInt() > 10000);
         QVERIFY(packets.contains(QStringLiteral("bumps_wheel_drops")));
+    }
+
+    void sendSafeThenDrive()
+    {
+        Sim sim({});
+        QVERIFY(!sim.path().isEmpty());
+        const auto send = [&](const QStringList &command) {
+            return run(QStringList{QStringLiteral("send"), QStringLiteral("--port"), sim.path()} + command);
+        };
+        Outcome o = send({QStringLiteral("safe")});
+        QVERIFY2(o.status == 0, qPrintable(o.err));
+        o = send({QStringLiteral("drive"), QStringLiteral("200"), QStringLiteral("straight")});
+        QVERIFY2(o.status == 0, qPrintable(o.err));
+        QCOMPARE(o.err, QString()); // already in Safe: nothing to say
+        // Still Safe, asked to drive at 200 mm/s, and the wheels have turned.
+        int distance = 0;
+        for (int i = 0; i < 10 && distance <= 0; ++i) {
+            o = send({QStringLiteral("query-list"), QStringLiteral("3"), QStringLiteral("35"), QStringLiteral("39"), QStringLiteral("19")});
+            QVERIFY2(o.status == 0, qPrintable(o.err));
+            const QJsonObject packets = json(o.lines.value(0))[QStringLiteral("packets")].toObject();
+            QCOMPARE(packets[QStringLiteral("oi_mode")].toInt(), 2);
+            QCOMPARE(packets[QStringLiteral("requested_velocity")].toInt(), 200);
+            distance = packets[QStringLiteral("distance")].toInt();
+        }
+        QVERIFY(distance > 0);
+    }
+
+    void sendEntersSafeForDriving()
+    {
+        Sim sim({});
+        QVERIFY(!sim.path().isEmpty());
+        const QStringList port{QStringLiteral("send"), QStringLiteral("--port"), sim.path(), QStringLiteral("--profile"),
+                               QStringLiteral("create2")};
+        // The robot starts in Off mode: silent, so Start goes out.
+        Outcome o = run(port + QStringList{QStringLiteral("sensors"), QStringLiteral("35")});
+        QVERIFY2(o.status == 0, qPrintable(o.err));
+        QCOMPARE(json(o.lines.value(0))[QStringLiteral("packets")].toObject()[QStringLiteral("oi_mode")].toInt(), 1);
+        // Passive: without mode changes the drive is refused and nothing moves.
+        o = run(port + QStringList{QStringLiteral("--no-mode-change"), QStringLiteral("drive-direct"),
+                                   QStringLiteral("100"), QStringLiteral("100")});
+        QCOMPARE(o.status, 1);
+        QVERIFY2(o.err.contains(QStringLiteral("drive-direct works only in Safe or Full mode, and the robot is in Passive mode")),
+                 qPrintable(o.err));
+        o = run(port + QStringList{QStringLiteral("query-list"), QStringLiteral("2"), QStringLiteral("35"), QStringLiteral("41")});
+        QCOMPARE(json(o.lines.value(0))[QStringLiteral("packets")].toObject()[QStringLiteral("oi_mode")].toInt(), 1);
+        QCOMPARE(json(o.lines.value(0))[QStringLiteral("packets")].toObject()[QStringLiteral("requested_right_velocity")].toInt(), 0);
+        // With them, Safe is entered and said so.
+        o = run(port + QStringList{QStringLiteral("drive-direct"), QStringLiteral("100"), QStringLiteral("100")});
+        QVERIFY2(o.status == 0, qPrintable(o.err));
+        QVERIFY2(o.err.contains(QStringLiteral("entered Safe mode for drive-direct")), qPrintable(o.err));
+        o = run(port + QStringList{QStringLiteral("query-list"), QStringLiteral("2"), QStringLiteral("35"), QStringLiteral("41")});
+        QCOMPARE(json(o.lines.value(0))[QStringLiteral("packets")].toObject()[QStringLiteral("oi_mode")].toInt(), 2);
+        QCOMPARE(json(o.lines.value(0))[QStringLiteral("packets")].toObject()[QStringLiteral("requested_right_velocity")].toInt(), 100);
+        // Full stays Full.
+        QCOMPARE(run(port + QStringList{QStringLiteral("full")}).status, 0);
+        o = run(port + QStringList{QStringLiteral("leds"), QStringLiteral("4"), QStringLiteral("0"), QStringLiteral("128")});
+        QCOMPARE(o.status, 0);
+        QCOMPARE(o.err, QString());
+        o = run(port + QStringList{QStringLiteral("sensors"), QStringLiteral("35")});
+        QCOMPARE(json(o.lines.value(0))[QStringLiteral("packets")].toObject()[QStringLiteral("oi_mode")].toInt(), 3);
+        // Stopped (Off mode) and told not to change modes: no answer, and it says why.
+        QCOMPARE(run(port + QStringList{QStringLiteral("stop")}).status, 0);
+        o = run(port + QStringList{QStringLiteral("--no-mode-change"), QStringLiteral("sensors"), QStringLiteral("35")});
+        QCOMPARE(o.status, 1);
+        QVERIFY2(o.err.contains(QStringLiteral("may be in Off mode")), qPrintable(o.err));
+    }
+
+    void sendWarnsWhenTheRobotWillIgnoreIt()
+    {
+        // Safe mode will not drive on the dock.
+        Sim sim({QStringLiteral("--on-dock")});
+        QVERIFY(!sim.path().isEmpty());
+        const Outcome o = run({QStringLiteral("send"), QStringLiteral("--port"), sim.path(), QStringLiteral("drive"),
+                               QStringLiteral("100"), QStringLiteral("straight")});
+        QCOMPARE(o.status, 0);
+        QVERIFY2(o.err.contains(QStringLiteral("warning: the robot is on its dock: Safe mode ignores drive")), qPrintable(o.err));
+    }
+
+    void doctorWakesASleepingRobot()
+    {
+        Sim sim({QStringLiteral("--asleep")});
+        QVERIFY(!sim.path().isEmpty());
+        const Outcome o = run({QStringLiteral("doctor"), QStringLiteral("--port"), sim.path(), QStringLiteral("--profile"),
+                               QStringLiteral("create2")});
+        QCOMPARE(o.status, 1);
+        QVERIFY2(o.lines.first().startsWith(QStringLiteral("Checking ")), qPrintable(o.lines.join('\n')));
+        QVERIFY2(o.lines.contains(QStringLiteral("  Pulsed the BRC pin to wake the robot.")), qPrintable(o.lines.join('\n')));
+        QCOMPARE(o.lines.last(), QStringLiteral("The robot was asleep; a BRC pulse woke it."));
+    }
+
+    void doctorOnAHealthyRobot()
+    {
+        const Outcome o = run({QStringLiteral("doctor"), QStringLiteral("--sim"), QStringLiteral("--profile"),
+                               QStringLiteral("create1")});
+        QCOMPARE(o.status, 0);
+        QVERIFY2(o.lines.last().startsWith(QStringLiteral("The robot answers at virtual Create as a Create")),
+                 qPrintable(o.lines.join('\n')));
     }
 
     void sendToTheVirtualRobot()

@@ -4,6 +4,9 @@
 
 #include <QTest>
 
+#include <iterator>
+#include <random>
+
 using namespace oi;
 using namespace oi_test;
 
@@ -103,6 +106,35 @@ private slots:
         QTest::newRow("cut stream") << "create1" << "148 3 7 8" << "Stream needs 4 data bytes; 3 remain";
         QTest::newRow("nested script") << "create1" << "152 1 153" << "cannot define another script";
         QTest::newRow("create opcode on roomba") << "create2" << "153" << "153 is not an opcode of the Roomba 600 / Create 2";
+        // Whole commands that encode would refuse are not printed either.
+        QTest::newRow("drive too fast") << "create1" << "137 3 132 128 0" << "byte 0: Drive: velocity: 900 is outside -500..500";
+        QTest::newRow("radius too wide") << "create1" << "137 0 100 11 184" << "byte 0: Drive: radius";
+        QTest::newRow("wait event 0") << "create1" << "155 10 158 0" << "byte 2: Wait Event:";
+        QTest::newRow("song of no notes") << "create1" << "140 0 0" << "byte 0: Song:";
+        QTest::newRow("stream of no packet") << "create1" << "148 1 99" << "byte 0: Stream:";
+    }
+
+    // Whatever bytes come in, the text that comes out assembles to them.
+    void disassemblyAlwaysAssemblesBack()
+    {
+        std::mt19937 rng(14);
+        const std::uint8_t opcodes[] = {128, 131, 132, 134, 135, 136, 137, 138, 139, 140, 141, 142, 143, 144,
+                                        145, 147, 148, 149, 150, 151, 153, 155, 156, 157, 158};
+        int printed = 0;
+        for (int round = 0; round < 20000; ++round) {
+            Bytes body{opcodes[rng() % std::size(opcodes)]};
+            const std::size_t extra = rng() % 8;
+            for (std::size_t i = 0; i < extra; ++i)
+                body.push_back(std::uint8_t(rng() % 4 == 0 ? rng() % 4 : rng()));
+            const auto text = disassembleScript(profile(ProfileId::Create1), body);
+            if (!text.ok())
+                continue;
+            ++printed;
+            const auto again = assembleScript(profile(ProfileId::Create1), *text);
+            QVERIFY2(again.ok(), text->c_str());
+            QVERIFY2(*again == body, text->c_str());
+        }
+        QVERIFY(printed > 1000);
     }
     void disassembleErrors()
     {

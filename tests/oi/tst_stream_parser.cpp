@@ -292,6 +292,37 @@ private slots:
         QCOMPARE(none.counters.lengthMismatches, 1u);
     }
 
+    void finishScansWhatAStray19Held()
+    {
+        // A stray 19 claims 48 bytes; the two frames behind it are fewer, so
+        // feeding alone holds them. At the end of the input they come out.
+        StreamParser parser(profile(ProfileId::Create2));
+        Bytes input{7, 19, 48};
+        for (int i = 0; i < 2; ++i) {
+            const Bytes frame = frameFor(537 + i, 0, 15000);
+            input.insert(input.end(), frame.begin(), frame.end());
+        }
+        input.push_back(19); // and a lone header at the very end
+        Run run = feedInPieces(parser, input, {});
+        QCOMPARE(int(run.frames.size()), 0);
+        QVERIFY(parser.pendingBytes() > 0);
+        parser.finish();
+        QCOMPARE(parser.pendingBytes(), std::size_t(0));
+        QCOMPARE(parser.counters().framesGood, 2u);
+        QCOMPARE(parser.counters().bytesDiscarded, 1u + 2u + 1u); // 7, the stray 19 48, the lone 19
+        QCOMPARE(int(run.frames.size()), 2);
+        QCOMPARE(run.frames[1], (Values{{13, 0}, {22, 15000}, {29, 538}}));
+
+        // An unfinished reply is not a stray 19: it stays pending.
+        StreamParser replies(profile(ProfileId::Create2));
+        const std::uint8_t ids[] = {22};
+        QVERIFY(replies.expectReply(ids));
+        replies.feed(bytesFrom("19"));
+        replies.finish();
+        QCOMPARE(replies.pendingBytes(), std::size_t(1));
+        QCOMPARE(replies.pendingReplies(), std::size_t(1));
+    }
+
     void resetForgetsEverything()
     {
         StreamParser parser(profile(ProfileId::Create2));

@@ -292,8 +292,8 @@ void TestVirtualRobot::offIgnoresAllButStartBaudReset()
     QCOMPARE(b.robot.truePose().xMm, 0.0);
     QVERIFY(b.raw.empty());
 
-    b.send(b.encoder.baud(10));
-    QCOMPARE(b.robot.baud(), 57600);
+    b.send(b.encoder.baud(5)); // Baud is for Passive, Safe and Full only
+    QCOMPARE(b.robot.baud(), profileOf(profile).defaultBaud);
     b.send(b.encoder.start());
     QCOMPARE(b.robot.mode(), OiMode::Passive);
     QCOMPARE(b.value(35), int(OiMode::Passive));
@@ -483,7 +483,12 @@ void TestVirtualRobot::powerPutsTheRobotToSleep()
     b.send(b.encoder.sensors(35));
     QVERIFY(b.raw.empty());
     b.send(b.encoder.start());
+    QVERIFY(b.robot.asleep()); // Start does not wake it: the BRC pin does
+    b.robot.setBrcLow(true);
+    b.run(100ms);
+    b.robot.setBrcLow(false);
     QVERIFY(!b.robot.asleep());
+    b.send(b.encoder.start());
     QCOMPARE(b.value(35), int(OiMode::Passive));
 }
 
@@ -574,14 +579,28 @@ void TestVirtualRobot::sleepsAfterFiveMinutesOfPassiveInactivity()
     QVERIFY(b.raw.empty()); // no frames
     b.send(b.encoder.sensors(35));
     QVERIFY(b.raw.empty()); // and no replies
-    // This robot wakes on Start.
+    // Start does not wake it; a pulse on the BRC pin does, into Off mode.
     b.send(b.encoder.start());
+    QVERIFY(b.robot.asleep());
+    b.robot.setBrcLow(true);
     QVERIFY(!b.robot.asleep());
+    b.run(1s);
+    b.robot.setBrcLow(false);
+    QCOMPARE(b.robot.mode(), OiMode::Off);
+    b.send(b.encoder.start());
     QCOMPARE(b.value(35), int(OiMode::Passive));
 
-    // Any command restarts the count.
+    // Commands do not restart the count; a BRC pulse does.
     b.run(200s);
     b.value(35);
+    b.run(100s);
+    QVERIFY(b.robot.asleep());
+    b.robot.setBrcLow(true);
+    b.robot.setBrcLow(false);
+    b.send(b.encoder.start());
+    b.run(200s);
+    b.robot.setBrcLow(true);
+    b.robot.setBrcLow(false);
     b.run(200s);
     QVERIFY(!b.robot.asleep());
     b.run(101s);
@@ -604,6 +623,7 @@ void TestVirtualRobot::baudChangesTheRate()
     b.send(b.encoder.start());
     b.send(b.encoder.baud(11));
     QCOMPARE(b.robot.baud(), 115200);
+    b.run(100ms); // the documents: wait 100 ms after Baud
     b.send(Bytes{129, 12}); // no such code: ignored
     QCOMPARE(b.robot.baud(), 115200);
     b.send(b.encoder.baud(5));
@@ -1218,11 +1238,14 @@ void TestVirtualRobot::songs()
     QVERIFY(b.frames.back().songPlaying());
     QCOMPARE(b.frames.back().songNumber(), slot);
     QVERIFY(b.robot.songPlaying());
-    // Play does nothing while a song plays: it does not start over.
+    // On the Create, Play does nothing while a song plays: it does not
+    // start over. The Roomba models start it again.
     b.send(b.encoder.play(slot));
     b.run(75ms);
-    QVERIFY(!b.frames.back().songPlaying());
-    QVERIFY(!b.robot.songPlaying());
+    const bool again = profile != ProfileId::Create1;
+    QCOMPARE(b.frames.back().songPlaying(), again);
+    QCOMPARE(b.robot.songPlaying(), again);
+    b.run(1500ms);
     // An empty slot does not play.
     b.send(b.encoder.play(0));
     b.run(30ms);
@@ -1248,8 +1271,10 @@ void TestVirtualRobot::ledsAndDisplay()
     QCOMPARE(b.robot.leds().digitSegments,
              (std::array<std::uint8_t, 4>{sevenSegmentForAscii('H'), sevenSegmentForAscii('i'),
                                           sevenSegmentForAscii(' '), sevenSegmentForAscii('7')}));
-    // Full mode turns the LEDs off as it starts.
+    // Full mode leaves the LEDs as they are; Safe turns them off as it starts.
     b.send(b.encoder.full());
+    QCOMPARE(b.robot.leds().bits, std::uint8_t(bit::LedCheckRobot | bit::LedDock));
+    b.send(b.encoder.safe());
     QCOMPARE(b.robot.leds().bits, std::uint8_t(0));
 
     Bench c(profileOf(ProfileId::Create1));

@@ -1,0 +1,171 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "connection_checkup.h"
+
+#include "transport_factory.h"
+
+#include "doctor_details.h"
+#include "profile_probe.h"
+#include "robot_session.h"
+#include "transport.h"
+
+#include <QMessageBox>
+#include <QPushButton>
+#include <QSettings>
+#include <QTimer>
+
+namespace {
+QString settingsKey(const QString &port)
+{
+    return QStringLiteral("connection/profileOfPort/") + QString(port).replace(QLatin1Char('/'), QLatin1Char('_'));
+}
+} // namespace
+
+ConnectionCheckup::ConnectionCheckup(RobotSession &session, DoctorDetails &details, AskWhich askWhich,
+                                     QObject *parent)
+    : QObject(parent), m_session(session), m_details(details), m_askWhich(std::move(askWhich))
+{
+    connect(&m_session, &RobotSession::errorOccurred, this, &ConnectionCheckup::onLinkError);
+    connect(&m_session, &RobotSession::profileChanged, this, [this](oi::ProfileId found) {
+        QTimer::singleShot(0, this, [this, found] { onProfileFound(found); }); // not inside the session's signal
+    });
+    connect(&m_session, &RobotSession::stateChanged, this, [this](oilink::LinkState state) {
+        // Data flows: the finding is old news, and a later silence is checked again.
+        if (state == oilink::LinkState::Streaming && !isRunning()) {
+            m_details.clear();
+            m_checkedThisConnection = false;
+        }
+    });
+}
+
+ConnectionCheckup::~ConnectionCheckup() = default;
+
+// In Auto the link takes a Roomba-family robot for a Create 2 (they answer
+// alike); the remembered answer, or the user, decides instead.
+void ConnectionCheckup::onProfileFound(oi::ProfileId found)
+{
+    const oilink::LinkSettings s = m_session.settings();
+    const bool hasPort = s.transport == oilink::TransportKind::Serial || s.transport == oilink::TransportKind::Tcp;
+    if (s.profile || found == oi::ProfileId::Create1 || !hasPort || m_asking)
+        return;
+    const QString port = s.describe();
+    std::optional<oi::ProfileId> which = rememberedProfile(port);
+    if (!which && m_askWhich) {
+        m_asking = true;
+        which = m_askWhich(port);
+        m_asking = false;
+    }
+    if (!which)
+        return;
+    rememberProfile(port, *which);
+    if (*which == found)
+        return;
+    oilink::LinkSettings named = s;
+    named.profile = which;
+    m_session.disconnectFromRobot();
+    m_session.connectTo(named);
+}
+
+std::optional<oi::ProfileId> ConnectionCheckup::rememberedProfile(const QString &port)
+{
+    const QString key = QSettings().value(settingsKey(port)).toString();
+    if (const oi::RobotProfile *p = oi::profileByKey(key.toStdString()))
+        return p->id;
+    return std::nullopt;
+}
+
+void ConnectionCheckup::rememberProfile(const QString &port, oi::ProfileId profile)
+{
+    QSettings().setValue(settingsKey(port), QString::fromUtf8(oi::profile(profile).key.data(),
+                                                              qsizetype(oi::profile(profile).key.size())));
+}
+
+// "No data" while connecting and no frame yet: check once per connection.
+void ConnectionCheckup::onLinkError()
+{
+    const oilink::LinkSettings &s = m_session.settings();
+    if (isRunning() || m_checkedThisConnection || m_session.state() == oilink::LinkState::Streaming
+        || m_session.statistics().frames > 0 || s.transport == oilink::TransportKind::Replay)
+        return;
+    m_checkedThisConnection = true;
+    // From the event loop: the session is inside a signal.
+    QTimer::singleShot(0, this, &ConnectionCheckup::run);
+}
+
+void ConnectionCheckup::run()
+{
+    if (isRunning())
+        return;
+    m_settings = m_session.settings();
+    m_session.closeAndWait(); // the doctor needs the port to itself
+    m_details.start();
+    const int baud = m_settings.baud > 0 ? m_settings.baud : oilink::ProfileProbe::defaultBauds().front();
+    m_transport.reset(transports::createTransport(m_settings, baud));
+    m_doctor = std::make_unique<oilink::ConnectionDoctor>(*m_transport, m_settings.profile, m_settings.baud);
+    connect(m_transport.get(), &oilink::Transport::bytesReceived, m_doctor.get(), &oilink::ConnectionDoctor::feed);
+    connect(m_transport.get(), &oilink::Transport::opened, m_doctor.get(), &oilink::ConnectionDoctor::start);
+    connect(m_transport.get(), &oilink::Transport::errorOccurred, this, [this](const QString &message) {
+        oilink::ConnectionDoctor::Report report;
+        report.finding = oilink::ConnectionDoctor::Finding::NothingComesBack;
+        report.summary = message;
+        onFinished(report);
+    });
+    connect(m_doctor.get(), &oilink::ConnectionDoctor::stepDone, &m_details, &DoctorDetails::addStep);
+    connect(m_doctor.get(), &oilink::ConnectionDoctor::finished, this, &ConnectionCheckup::onFinished);
+    m_transport->open();
+}
+
+void ConnectionCheckup::onFinished(const oilink::ConnectionDoctor::Report &report)
+{
+    using F = oilink::ConnectionDoctor::Finding;
+    m_details.finish(report.summary);
+    m_transport->close();
+    m_doctor.release()->deleteLater();
+    m_transport.release()->deleteLater();
+    emit finished(report);
+
+    oilink::LinkSettings next = m_settings;
+    if (report.baud > 0 && m_settings.transport == oilink::TransportKind::Serial)
+        next.baud = report.baud;
+    switch (report.finding) {
+    case F::NothingComesBack:
+    case F::AsleepDidNotWake:
+    case F::GarbledAtEveryBaud:
+        return; // nothing to connect with: the line says what to do
+    case F::OtherProfile:
+        next.profile.reset(); // let the link find it
+        break;
+    case F::RoombaOrCreate2: {
+        const QString port = m_settings.describe();
+        std::optional<oi::ProfileId> which = rememberedProfile(port);
+        if (!which && m_askWhich)
+            which = m_askWhich(port);
+        if (!which)
+            return;
+        rememberProfile(port, *which);
+        next.profile = which;
+        break;
+    }
+    default:
+        break;
+    }
+    m_session.connectTo(next);
+}
+
+ConnectionCheckup::AskWhich ConnectionCheckup::askWithDialog(QWidget *parent)
+{
+    return [parent](const QString &port) -> std::optional<oi::ProfileId> {
+        QMessageBox box(QMessageBox::Question, tr("Which robot is this?"),
+                        tr("The robot on %1 is a Roomba 500 or a Create 2: they answer alike, but count their "
+                           "wheels differently. Which is it? The answer is kept for this port.")
+                            .arg(port),
+                        QMessageBox::Cancel, parent);
+        QPushButton *roomba = box.addButton(tr("Roomba 500"), QMessageBox::AcceptRole);
+        QPushButton *create = box.addButton(tr("Roomba 600 / Create 2"), QMessageBox::AcceptRole);
+        box.exec();
+        if (box.clickedButton() == roomba)
+            return oi::ProfileId::Roomba500;
+        if (box.clickedButton() == create)
+            return oi::ProfileId::Create2;
+        return std::nullopt;
+    };
+}

@@ -1,0 +1,95 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "brc_pulser.h"
+
+#include "transport.h"
+
+#include <algorithm>
+
+namespace oilink {
+
+namespace {
+// The Create 2 document's example: low for one second, every minute. A
+// second is also too long to be read as one of the three baud pulses.
+constexpr int kKeepAwakePulseMs = 1000;
+} // namespace
+
+BrcPulser::BrcPulser(QObject *parent) : QObject(parent), m_step(this), m_keepAwake(this)
+{
+    m_step.setSingleShot(true);
+    m_step.setTimerType(Qt::PreciseTimer);
+    connect(&m_step, &QTimer::timeout, this, &BrcPulser::runNextStep);
+    connect(&m_keepAwake, &QTimer::timeout, this, &BrcPulser::keepAwake);
+}
+
+void BrcPulser::setTransport(Transport *transport)
+{
+    if (m_transport && m_step.isActive())
+        m_transport->setBrcLow(false); // never leave the pin held low
+    m_transport = transport;
+    m_steps.clear();
+    m_step.stop();
+    m_keepAwake.stop();
+    m_probed = false;
+    m_mode = oi::OiMode::Passive;
+}
+
+bool BrcPulser::canPulse() const
+{
+    return m_transport && (m_probed ? m_canPulse : m_transport->setBrcLow(false));
+}
+
+bool BrcPulser::wake() { return queuePulses(1, kWakePulseMs, 0); }
+
+bool BrcPulser::pulseForBaud19200() { return queuePulses(3, kBaudPulseMs, kBaudGapMs); }
+
+void BrcPulser::setKeepAwake(int periodMs)
+{
+    m_keepAwake.stop();
+    if (periodMs > 0)
+        m_keepAwake.start(periodMs);
+}
+
+void BrcPulser::keepAwake()
+{
+    if (m_mode == oi::OiMode::Safe || m_mode == oi::OiMode::Full || !m_steps.empty())
+        return;
+    // Short enough to let go well before the next one.
+    queuePulses(1, std::min(kKeepAwakePulseMs, m_keepAwake.interval() / 4), 0);
+}
+
+bool BrcPulser::queuePulses(int count, int widthMs, int gapMs)
+{
+    if (!m_transport)
+        return false;
+    if (!m_probed) {
+        // Letting the pin go is harmless and tells whether it can be reached.
+        m_canPulse = m_transport->setBrcLow(false);
+        m_probed = true;
+    }
+    if (!m_canPulse)
+        return false;
+    for (int i = 0; i < count; ++i) {
+        m_steps.push_back({true, widthMs});
+        m_steps.push_back({false, i + 1 < count ? gapMs : 0});
+    }
+    if (!m_step.isActive())
+        runNextStep();
+    return true;
+}
+
+void BrcPulser::runNextStep()
+{
+    while (!m_steps.empty() && m_transport) {
+        const Step step = m_steps.front();
+        m_steps.pop_front();
+        m_transport->setBrcLow(step.low);
+        if (!step.low)
+            emit pulsed();
+        if (step.holdMs > 0) {
+            m_step.start(step.holdMs);
+            return;
+        }
+    }
+}
+
+} // namespace oilink

@@ -1,0 +1,64 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "sensor_snapshot.h"
+
+#include <QObject>
+#include <QPointer>
+#include <QTimer>
+
+#include <deque>
+
+namespace oilink {
+
+class Transport;
+
+// Pulses on the robot's BRC pin through a transport (Transport::setBrcLow):
+// one to wake a sleeping robot, one now and then to keep a Create 2 in
+// Passive from sleeping (its document: within 5 minutes), or three for
+// 19200 baud. Pulses are queued and never overlap.
+class BrcPulser : public QObject {
+    Q_OBJECT
+public:
+    static constexpr int kWakePulseMs = 100;
+    static constexpr int kBaudPulseMs = 100; // the documents: 50 to 500 ms
+    static constexpr int kBaudGapMs = 100;
+
+    explicit BrcPulser(QObject *parent = nullptr);
+
+    // The transport to pulse through, or nullptr; stops the keep-awake.
+    void setTransport(Transport *transport);
+    // False (and nothing queued) where the transport cannot reach the pin.
+    bool canPulse() const;
+
+    bool wake();
+    bool pulseForBaud19200();
+    // Every `periodMs` in Passive (or where the mode is not known), a pulse
+    // of up to a second; 0 turns it off.
+    void setKeepAwake(int periodMs);
+    // The robot's mode as last seen: no keep-awake pulses in Safe or Full,
+    // where the robot never sleeps.
+    void noteMode(oi::OiMode mode) { m_mode = mode; }
+
+signals:
+    void pulsed(); // a pulse ended
+
+private:
+    struct Step {
+        bool low;
+        int holdMs;
+    };
+    bool queuePulses(int count, int widthMs, int gapMs);
+    void runNextStep();
+    void keepAwake();
+
+    QPointer<Transport> m_transport;
+    std::deque<Step> m_steps;
+    QTimer m_step;
+    QTimer m_keepAwake;
+    oi::OiMode m_mode = oi::OiMode::Passive;
+    bool m_probed = false;
+    bool m_canPulse = false;
+};
+
+} // namespace oilink

@@ -1,0 +1,259 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "connection_doctor.h"
+
+#include "brc_pulser.h"
+#include "profile_probe.h"
+#include "transport.h"
+
+namespace oilink {
+
+namespace {
+constexpr int kDrainMs = ProfileProbe::kDrainMs;
+constexpr int kReplyTimeoutMs = ProfileProbe::kReplyTimeoutMs;
+constexpr int kQuietMs = ProfileProbe::kQuietMs;
+// After a wake pulse a real robot needs a moment before it listens.
+constexpr int kAfterWakeMs = 300;
+constexpr int kAfterBaudPulsesMs = 200;
+constexpr int kRoombaGroup = 101;
+
+QByteArray bytes(std::initializer_list<std::uint8_t> values) { return ProfileProbe::bytesOf(values); }
+
+QString profileName(oi::ProfileId id)
+{
+    const std::string_view name = oi::profile(id).name;
+    return QString::fromUtf8(name.data(), qsizetype(name.size()));
+}
+} // namespace
+
+ConnectionDoctor::ConnectionDoctor(Transport &transport, std::optional<oi::ProfileId> profile, int baud,
+                                   QObject *parent)
+    : QObject(parent), m_transport(transport), m_askedProfile(profile), m_askedBaud(baud),
+      m_pulser(new BrcPulser(this)), m_timer(this)
+{
+    qRegisterMetaType<oilink::ConnectionDoctor::Report>();
+    m_timer.setSingleShot(true);
+    connect(&m_timer, &QTimer::timeout, this, [this] {
+        if (auto then = std::exchange(m_onTimer, nullptr))
+            then();
+    });
+}
+
+ConnectionDoctor::~ConnectionDoctor() = default;
+
+QList<int> ConnectionDoctor::candidateBauds(int asked)
+{
+    QList<int> bauds;
+    if (asked > 0)
+        bauds.append(asked);
+    for (int b : ProfileProbe::defaultBauds())
+        if (!bauds.contains(b))
+            bauds.append(b);
+    return bauds;
+}
+
+void ConnectionDoctor::start()
+{
+    m_running = true;
+    m_report = {};
+    m_garbledAt.clear();
+    const int asked = m_askedBaud > 0 ? m_askedBaud : m_askedProfile ? oi::profile(*m_askedProfile).defaultBaud : 0;
+    m_bauds = candidateBauds(asked);
+    m_hasBaud = m_transport.setBaud(m_bauds.front());
+    if (!m_hasBaud)
+        m_bauds = {0};
+    m_pulser->setTransport(&m_transport);
+    tryBaud(0);
+}
+
+void ConnectionDoctor::feed(const QByteArray &data)
+{
+    if (!m_listening)
+        return;
+    m_heard += data.size();
+    m_received += data;
+    if (m_expected > 0 && m_received.size() >= m_expected && m_timer.remainingTime() > kQuietMs)
+        m_timer.start(kQuietMs); // extra bytes in this time mean garbage
+}
+
+void ConnectionDoctor::after(int ms, std::function<void()> then)
+{
+    m_onTimer = std::move(then);
+    m_timer.start(ms);
+}
+
+void ConnectionDoctor::ask(const QByteArray &question, qsizetype expected, Answer then)
+{
+    m_received.clear();
+    m_expected = expected;
+    m_listening = true;
+    m_transport.write(question);
+    after(kReplyTimeoutMs, [this, then = std::move(then)] {
+        m_listening = false;
+        then(m_received);
+    });
+}
+
+QString ConnectionDoctor::baudName(int baud) const
+{
+    return baud > 0 ? tr("%1 baud").arg(baud) : m_transport.describe();
+}
+
+// Pause any stream, let it drain, and ask for the mode; with Start first
+// when asked to.
+void ConnectionDoctor::askMode(bool withStart, std::function<void(bool)> then)
+{
+    m_transport.write(withStart ? bytes({128, 150, 0}) : bytes({150, 0}));
+    m_listening = true;
+    m_expected = 0;
+    after(kDrainMs, [this, then = std::move(then)] {
+        ask(ProfileProbe::modeQuestion(), 2,
+            [then](const QByteArray &answer) { then(ProfileProbe::isModeAnswer(answer)); });
+    });
+}
+
+void ConnectionDoctor::tryBaud(qsizetype index)
+{
+    if (index >= m_bauds.size()) {
+        afterSilence();
+        return;
+    }
+    const int baud = m_bauds[index];
+    if (baud > 0)
+        m_transport.setBaud(baud);
+    m_heard = 0;
+    askMode(false, [this, index, baud](bool answeredPlain) {
+        if (answeredPlain) {
+            step(tr("At %1 it answers.").arg(baudName(baud)));
+            answered(baud, Finding::Healthy);
+            return;
+        }
+        askMode(true, [this, index, baud](bool answeredAfterStart) {
+            if (answeredAfterStart) {
+                step(tr("At %1 it answers after Start (it was in Off mode).").arg(baudName(baud)));
+                answered(baud, Finding::Healthy);
+                return;
+            }
+            const qsizetype got = m_heard;
+            if (got > 0) {
+                m_garbledAt.append(baud);
+                step(tr("At %1: %n byte(s) that make no sense.", nullptr, int(got)).arg(baudName(baud)));
+            } else {
+                step(tr("At %1: nothing comes back, with or without Start.").arg(baudName(baud)));
+            }
+            tryBaud(index + 1);
+        });
+    });
+}
+
+void ConnectionDoctor::afterSilence()
+{
+    if (!m_pulser->wake()) {
+        step(m_transport.brcUnavailable() + QLatin1Char('.'));
+        if (!m_garbledAt.isEmpty())
+            conclude(Finding::GarbledAtEveryBaud,
+                     tr("Bytes come back, but at no baud do they make sense: a noisy cable, or a device "
+                        "that is not an Open Interface robot."));
+        else
+            conclude(Finding::NothingComesBack,
+                     tr("Nothing comes back: is the robot on and the cable plugged in? (A sleeping robot "
+                        "cannot be woken over this connection.)"));
+        return;
+    }
+    step(tr("Pulsed the BRC pin to wake the robot."));
+    after(kAfterWakeMs, [this] { afterWakePulse(0); });
+}
+
+void ConnectionDoctor::afterWakePulse(qsizetype index)
+{
+    if (index < m_bauds.size()) {
+        const int baud = m_bauds[index];
+        if (baud > 0)
+            m_transport.setBaud(baud);
+        askMode(true, [this, index, baud](bool ok) {
+            if (ok) {
+                step(tr("At %1 it answers after the pulse.").arg(baudName(baud)));
+                answered(baud, Finding::WokeAfterPulse);
+            } else {
+                afterWakePulse(index + 1);
+            }
+        });
+        return;
+    }
+    if (!m_hasBaud) {
+        concludeSilent();
+        return;
+    }
+    m_pulser->pulseForBaud19200();
+    step(tr("Pulsed the BRC pin three times for 19200 baud."));
+    const int wait = 3 * (BrcPulser::kBaudPulseMs + BrcPulser::kBaudGapMs) + kAfterBaudPulsesMs;
+    after(wait, [this] {
+        m_transport.setBaud(19200);
+        askMode(true, [this](bool ok) {
+            if (ok) {
+                step(tr("At 19200 baud it answers after the three pulses."));
+                answered(19200, Finding::Baud19200AfterPulses);
+                return;
+            }
+            concludeSilent();
+        });
+    });
+}
+
+void ConnectionDoctor::concludeSilent()
+{
+    conclude(Finding::AsleepDidNotWake,
+             tr("Still silent after BRC pulses: the robot is off or unplugged, or asleep on its dock "
+                "with firmware before release-3.8.2 / release-stm32-3.7.7, which does not wake by BRC "
+                "there (lift it off the dock, or press Clean)."));
+}
+
+void ConnectionDoctor::answered(int baud, Finding cause)
+{
+    m_report.baud = baud;
+    const oi::PacketGroup *group = oi::profile(oi::ProfileId::Create2).group(kRoombaGroup);
+    ask(bytes({142, std::uint8_t(kRoombaGroup)}), group->bytes, [this, baud, cause, group](const QByteArray &answer) {
+        const bool roomba = answer.size() == group->bytes;
+        const oi::ProfileId found = roomba ? oi::ProfileId::Create2 : oi::ProfileId::Create1;
+        m_report.profile = found;
+        step(roomba ? tr("It answers Sensors 101: a Roomba 500 or a Create 2 (they answer alike).")
+                    : tr("It has no packet group 101: a Create."));
+        const int askedBaud = m_askedBaud > 0 ? m_askedBaud : m_askedProfile ? oi::profile(*m_askedProfile).defaultBaud : 0;
+        if (cause == Finding::WokeAfterPulse) {
+            conclude(cause, tr("The robot was asleep; a BRC pulse woke it."));
+        } else if (cause == Finding::Baud19200AfterPulses) {
+            conclude(cause, tr("The robot talks at 19200 baud after three BRC pulses; set the baud to 19200."));
+        } else if (m_hasBaud && askedBaud > 0 && baud != askedBaud) {
+            conclude(Finding::WrongBaud, tr("Wrong baud: the robot answers at %1 baud, not %2.").arg(baud).arg(askedBaud));
+        } else if (m_askedProfile && (*m_askedProfile == oi::ProfileId::Create1) == roomba) {
+            conclude(Finding::OtherProfile, tr("The robot answers as a %1, not as the %2 the connection names.")
+                                                .arg(roomba ? tr("Roomba 500 or Create 2") : profileName(found),
+                                                     profileName(*m_askedProfile)));
+        } else if (!m_askedProfile && roomba) {
+            conclude(Finding::RoombaOrCreate2, tr("A Roomba 500 or a Create 2: they answer alike, and their "
+                                                  "encoders differ. Say which it is."));
+        } else {
+            conclude(Finding::Healthy, tr("The robot answers at %1 as a %2.")
+                                           .arg(baudName(baud), profileName(m_askedProfile.value_or(found))));
+        }
+    });
+}
+
+void ConnectionDoctor::conclude(Finding finding, const QString &summary)
+{
+    m_running = false;
+    m_timer.stop();
+    m_onTimer = nullptr;
+    m_listening = false;
+    m_pulser->setTransport(nullptr);
+    m_report.finding = finding;
+    m_report.summary = summary;
+    emit finished(m_report);
+}
+
+void ConnectionDoctor::step(const QString &text)
+{
+    m_report.steps.append(text);
+    emit stepDone(text);
+}
+
+} // namespace oilink

@@ -1,0 +1,104 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "link_status.h" // the metatype of oi::ProfileId
+
+#include "robot_profile.h"
+
+#include <QByteArray>
+#include <QList>
+#include <QObject>
+#include <QString>
+#include <QTimer>
+
+#include <functional>
+#include <optional>
+
+namespace oilink {
+
+class BrcPulser;
+class Transport;
+
+// Why a link gets no valid data, found by trying, one step at a time, on an
+// open transport the doctor has to itself:
+//  1. at each baud (the one asked for first; a transport without a baud of
+//     its own has one pass), Query List 35, 7 without Start, then after
+//     Start: an answer names the baud; bytes that make no sense mean a
+//     wrong baud;
+//  2. silent everywhere: a BRC pulse (a sleeping robot wakes), then the
+//     three pulses for 19200 baud;
+//  3. once it answers, Sensors 101 tells a Create from a Roomba 500 /
+//     Create 2, which answer alike: which of those two only the user knows.
+class ConnectionDoctor : public QObject {
+    Q_OBJECT
+public:
+    enum class Finding {
+        Healthy,            // answers at the baud and as the profile asked for
+        NothingComesBack,   // not a byte, and the BRC pin is out of reach
+        AsleepDidNotWake,   // silent even after a BRC pulse: off, unplugged, or on the dock with old firmware
+        WrongBaud,          // answers at another baud
+        GarbledAtEveryBaud, // bytes, but no baud makes sense of them
+        Baud19200AfterPulses, // silent until the three BRC pulses, then talks at 19200
+        WokeAfterPulse,     // was asleep; a BRC pulse woke it
+        OtherProfile,       // answers as another robot than the one asked for
+        RoombaOrCreate2,    // a Roomba 500 or a Create 2: ask the user which
+    };
+    Q_ENUM(Finding)
+
+    struct Report {
+        Finding finding = Finding::NothingComesBack;
+        QString summary;        // one line, for a status bar
+        QStringList steps;      // what was tried and what came of it
+        int baud = 0;           // where it answered; 0 where the transport has no baud or nothing answered
+        std::optional<oi::ProfileId> profile; // Create 1 or Create 2 (the Roomba family) as found
+    };
+
+    // `profile` and `baud` as the link was set up (nullopt / 0 = Auto).
+    ConnectionDoctor(Transport &transport, std::optional<oi::ProfileId> profile, int baud,
+                     QObject *parent = nullptr);
+    ~ConnectionDoctor() override;
+
+    static QList<int> candidateBauds(int asked);
+    // The transport must be open.
+    void start();
+    // Everything the transport receives while the doctor runs.
+    void feed(const QByteArray &bytes);
+
+signals:
+    void stepDone(const QString &step);
+    void finished(const oilink::ConnectionDoctor::Report &report);
+
+private:
+    using Answer = std::function<void(const QByteArray &)>;
+    void ask(const QByteArray &question, qsizetype expected, Answer then);
+    void after(int ms, std::function<void()> then);
+    void tryBaud(qsizetype index);
+    void askMode(bool withStart, std::function<void(bool answered)> then);
+    void afterSilence();
+    void afterWakePulse(qsizetype index);
+    void answered(int baud, Finding cause);
+    void conclude(Finding finding, const QString &summary);
+    void concludeSilent();
+    void step(const QString &text);
+    QString baudName(int baud) const;
+
+    Transport &m_transport;
+    std::optional<oi::ProfileId> m_askedProfile;
+    int m_askedBaud;
+    bool m_hasBaud = true;
+    QList<int> m_bauds;
+    QList<int> m_garbledAt;
+    BrcPulser *m_pulser;
+    QTimer m_timer;
+    QByteArray m_received;
+    qsizetype m_expected = 0;
+    qsizetype m_heard = 0; // bytes heard at the baud being tried
+    bool m_listening = false;
+    std::function<void()> m_onTimer;
+    Report m_report;
+    bool m_running = false;
+};
+
+} // namespace oilink
+
+Q_DECLARE_METATYPE(oilink::ConnectionDoctor::Report)

@@ -1,0 +1,174 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The link and the robot's BRC pin: a sleeping Create 2 woken by the link
+// and kept awake, through the in-process virtual robot and over a
+// pseudo-terminal (roomba-sim's control socket standing in for RTS).
+#include "sim_process.h"
+
+#include "brc_pulser.h"
+#include "real_time_robot.h"
+#include "rfc2217.h"
+#include "robot_link.h"
+#include "tcp_robot_server.h"
+#include "tcp_transport.h"
+#include "virtual_transport.h"
+
+#include <QSignalSpy>
+#include <QTest>
+
+using namespace std::chrono_literals;
+
+namespace {
+constexpr int kTimeoutMs = 20000;
+// Ten minutes of 15 ms stream frames.
+constexpr int kTenMinutesOfFrames = 10 * 60 * 1000 / 15;
+} // namespace
+
+class TestBrcWake : public QObject {
+    Q_OBJECT
+
+    // A link to a sleeping robot whose clock runs 100 times as fast: woken,
+    // and with a pulse every real second (100 robot seconds) kept awake and
+    // in Passive through ten of its minutes of frames.
+    void staysAwakeForTenMinutes(oilink::LinkSettings settings)
+    {
+        oilink::RobotLink link;
+        int frames = 0, notPassive = 0;
+        connect(&link, &oilink::RobotLink::snapshot, this, [&](const oi::SensorSnapshot &s) {
+            ++frames;
+            notPassive += s.oiMode() != oi::OiMode::Passive;
+        });
+        settings.streamPackets = {35};
+        settings.keepAwakeMs = 1000;
+        link.open(settings);
+        QTRY_VERIFY_WITH_TIMEOUT(frames > 0, kTimeoutMs);
+        QTRY_VERIFY_WITH_TIMEOUT(frames >= kTenMinutesOfFrames, 60000);
+        QCOMPARE(notPassive, 0);
+        QCOMPARE(link.state(), oilink::LinkState::Streaming);
+        link.close();
+    }
+
+private slots:
+    void pulsesReachTheVirtualRobot()
+    {
+        sim::VirtualTransport transport(oi::ProfileId::Create2, 1);
+        transport.open();
+        sim::VirtualRobot &robot = transport.robot()->robot();
+        const std::uint8_t startAndPower[] = {128, 133};
+        robot.receive(startAndPower);
+        QVERIFY(robot.asleep());
+        oilink::BrcPulser pulser;
+        pulser.setTransport(&transport);
+        QVERIFY(pulser.canPulse());
+        QSignalSpy pulsed(&pulser, &oilink::BrcPulser::pulsed);
+        QVERIFY(pulser.wake());
+        QVERIFY(!robot.asleep()); // woken as the pin fell
+        QTRY_COMPARE_WITH_TIMEOUT(pulsed.size(), 1, kTimeoutMs);
+
+        // Three pulses of 100 ms: 19200 baud.
+        QCOMPARE(robot.baud(), 115200);
+        QVERIFY(pulser.pulseForBaud19200());
+        QTRY_COMPARE_WITH_TIMEOUT(pulsed.size(), 4, kTimeoutMs);
+        QCOMPARE(robot.baud(), 19200);
+    }
+
+    void rfc2217CarriesEveryByte()
+    {
+        rfc2217::Bytes data;
+        for (int b = 0; b < 256; ++b)
+            data.push_back(std::uint8_t(b));
+        rfc2217::Bytes wire = rfc2217::escape(data.data(), data.size());
+        QCOMPARE(wire.size(), data.size() + 1); // 0xFF doubled
+        const rfc2217::Bytes control = rfc2217::setControl(rfc2217::kRtsOn);
+        wire.insert(wire.begin() + 100, control.begin(), control.end());
+        const rfc2217::Bytes will = rfc2217::willComPort();
+        wire.insert(wire.begin(), will.begin(), will.end());
+        // Fed a byte at a time: commands come out, the data goes through.
+        rfc2217::Decoder decoder;
+        rfc2217::Bytes out;
+        std::vector<int> values;
+        for (std::uint8_t b : wire) {
+            const rfc2217::Bytes got = decoder.feed(&b, 1, [&](std::uint8_t command, std::uint8_t value) {
+                QCOMPARE(command, rfc2217::kSetControl);
+                values.push_back(value);
+            });
+            out.insert(out.end(), got.begin(), got.end());
+        }
+        QVERIFY(out == data);
+        QCOMPARE(values, std::vector<int>{rfc2217::kRtsOn});
+    }
+
+    void rawTcpSaysItCannot()
+    {
+        oilink::TcpTransport transport(QStringLiteral("127.0.0.1"), 1);
+        oilink::BrcPulser pulser;
+        pulser.setTransport(&transport);
+        QVERIFY(!pulser.canPulse());
+        QVERIFY(!pulser.wake());
+        QVERIFY(transport.brcUnavailable().contains(QStringLiteral("raw TCP carries no modem lines")));
+    }
+
+    // roomba-sim's robot asleep, its clock 100 times as fast: the link wakes
+    // it, and pulses every real second (100 robot seconds) keep it awake
+    // through ten of its minutes.
+    void theLinkWakesARobotOnAPtyAndKeepsItAwake()
+    {
+        SimProcess sim;
+        QVERIFY(sim.start({QStringLiteral("--asleep"), QStringLiteral("--speed"), QStringLiteral("100")}));
+        staysAwakeForTenMinutes(oilink::LinkSettings::serial(sim.where(), oi::ProfileId::Create2));
+    }
+
+    // Over TCP the pulses need RFC 2217: the bridge's RTS line carries them.
+    void rfc2217WakesARobotOverTcpAndKeepsItAwake()
+    {
+        sim::TcpRobotServer server(oi::profile(oi::ProfileId::Create2));
+        server.setRfc2217(true);
+        QVERIFY(server.listen(QHostAddress::LocalHost, 0));
+        server.robot().setTimeScale(100);
+        const std::uint8_t startAndPower[] = {128, 133};
+        server.robot().robot().receive(startAndPower);
+        QVERIFY(server.robot().robot().asleep());
+        oilink::LinkSettings settings =
+            oilink::LinkSettings::tcp(QStringLiteral("127.0.0.1"), server.serverPort(), oi::ProfileId::Create2);
+        settings.tcpRfc2217 = true;
+        staysAwakeForTenMinutes(settings);
+    }
+
+    void rawTcpCannotWakeIt()
+    {
+        sim::TcpRobotServer server(oi::profile(oi::ProfileId::Create2));
+        QVERIFY(server.listen(QHostAddress::LocalHost, 0));
+        const std::uint8_t startAndPower[] = {128, 133};
+        server.robot().robot().receive(startAndPower);
+        oilink::RobotLink link;
+        QSignalSpy errors(&link, &oilink::RobotLink::errorOccurred);
+        link.open(oilink::LinkSettings::tcp(QStringLiteral("127.0.0.1"), server.serverPort(), oi::ProfileId::Create2));
+        QTRY_VERIFY_WITH_TIMEOUT(!errors.isEmpty(), kTimeoutMs);
+        QVERIFY2(errors.first().first().toString().contains(
+                     QStringLiteral("raw TCP carries no modem lines, so it cannot wake the robot")),
+                 qPrintable(errors.first().first().toString()));
+        QVERIFY(server.robot().robot().asleep());
+        link.close();
+    }
+
+    // The same robot without the keep-awake pulses falls asleep: the
+    // stream stops and the link says there is no data.
+    void withoutKeepAwakeItSleeps()
+    {
+        SimProcess sim;
+        QVERIFY(sim.start({QStringLiteral("--asleep"), QStringLiteral("--speed"), QStringLiteral("100")}));
+        oilink::RobotLink link;
+        QSignalSpy states(&link, &oilink::RobotLink::stateChanged);
+        int frames = 0;
+        connect(&link, &oilink::RobotLink::snapshot, this, [&](const oi::SensorSnapshot &) { ++frames; });
+        oilink::LinkSettings settings = oilink::LinkSettings::serial(sim.where(), oi::ProfileId::Create2);
+        settings.streamPackets = {35};
+        settings.keepAwakeMs = 0;
+        link.open(settings);
+        QTRY_VERIFY_WITH_TIMEOUT(frames > 0, kTimeoutMs);
+        QTRY_COMPARE_WITH_TIMEOUT(link.state(), oilink::LinkState::Stale, kTimeoutMs);
+        link.close();
+    }
+};
+
+QTEST_GUILESS_MAIN(TestBrcWake)
+#include "tst_brc_wake.moc"

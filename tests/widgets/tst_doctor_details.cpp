@@ -1,0 +1,54 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "doctor_details.h"
+#include "sensor_scenes.h"
+
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QListWidget>
+#include <QPushButton>
+#include <QTest>
+
+class TestDoctorDetails : public QObject {
+    Q_OBJECT
+private slots:
+    void oneLineAndWhatWasTried()
+    {
+        QWidget window;
+        auto *details = new DoctorDetails(&window);
+        auto *layout = new QHBoxLayout(&window);
+        layout->addWidget(details, 1); // as in the status bar
+        window.resize(720, 60);
+        window.show();
+        QVERIFY(!details->isVisible()); // nothing to say yet
+        details->start();
+        QVERIFY(details->isVisible());
+        auto *line = details->findChild<QLabel *>("doctorSummary");
+        auto *button = details->findChild<QPushButton *>("doctorDetailsButton");
+        QCOMPARE(line->text(), QStringLiteral("Checking the connection…"));
+        QVERIFY(!button->isEnabled());
+        details->addStep(QStringLiteral("At 115200 baud: nothing comes back, with or without Start."));
+        details->addStep(QStringLiteral("Pulsed the BRC pin to wake the robot."));
+        details->addStep(QStringLiteral("At 115200 baud it answers after the pulse."));
+        details->finish(QStringLiteral("The robot was asleep; a BRC pulse woke it."));
+        QCOMPARE(line->text(), QStringLiteral("The robot was asleep; a BRC pulse woke it."));
+        QVERIFY(button->isEnabled());
+        // A status bar may cut the line: the tooltip has all of it, and the steps.
+        QVERIFY(line->toolTip().startsWith(QStringLiteral("The robot was asleep; a BRC pulse woke it.\n\nAt 115200 baud")));
+        sensor_scenes::saveScreenshot(window, QStringLiteral("doctor_line"));
+
+        QTest::mouseClick(button, Qt::LeftButton);
+        QWidget *view = details->detailsView();
+        QTRY_VERIFY(view->isVisible());
+        auto *steps = view->findChild<QListWidget *>();
+        QCOMPARE(steps->count(), 3);
+        QCOMPARE(steps->item(1)->text(), QStringLiteral("Pulsed the BRC pin to wake the robot."));
+        sensor_scenes::saveScreenshot(*view, QStringLiteral("doctor_details"));
+
+        details->clear();
+        QVERIFY(!details->isVisible());
+        QVERIFY(details->steps().isEmpty());
+    }
+};
+
+QTEST_MAIN(TestDoctorDetails)
+#include "tst_doctor_details.moc"

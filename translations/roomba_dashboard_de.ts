@@ -496,42 +496,6 @@
 <context>
     <name>DashboardCommandLine</name>
     <message>
-        <source>Usage: roomba-dashboard [--sim | --port PATH | --tcp HOST:PORT | --replay FILE]
-                        [--profile P] [--baud N] [--record FILE] [--lang CODE]
-
-  --sim              the built-in virtual robot
-  --port PATH        a serial port, USB adapter or pseudo-terminal
-  --tcp HOST:PORT    a serial-over-TCP bridge such as ser2net
-  --replay FILE      play back a recording (.oirec) as if it were the robot
-  --profile P        roomba500, create2 (also roomba600), create1 (also create) or auto
-  --baud N           the line speed; the profile&apos;s default when left out
-  --record FILE      record every byte to and from the robot into FILE
-  --lang CODE        the language of the window: %1
-  --help, --version
-
-Without a connection option the dashboard reconnects to what was used last,
-or on first start to the virtual robot. Without --lang it speaks the language
-chosen in its View menu, or the system&apos;s.
-</source>
-        <translation>Aufruf: roomba-dashboard [--sim | --port PFAD | --tcp HOST:PORT | --replay DATEI]
-                         [--profile P] [--baud N] [--record DATEI] [--lang CODE]
-
-  --sim              der eingebaute virtuelle Roboter
-  --port PFAD        ein serieller Port, USB-Adapter oder Pseudo-Terminal
-  --tcp HOST:PORT    eine Seriell-über-TCP-Brücke wie ser2net
-  --replay DATEI     eine Aufzeichnung (.oirec) abspielen, als wäre sie der Roboter
-  --profile P        roomba500, create2 (auch roomba600), create1 (auch create) oder auto
-  --baud N           die Leitungsgeschwindigkeit; ohne Angabe die Vorgabe des Profils
-  --record DATEI     jedes Byte zum und vom Roboter in DATEI aufzeichnen
-  --lang CODE        die Sprache des Fensters: %1
-  --help, --version
-
-Ohne Verbindungsoption verbindet sich das Dashboard wieder mit der zuletzt
-verwendeten Verbindung, beim ersten Start mit dem virtuellen Roboter. Ohne --lang
-verwendet es die im Menü „Ansicht“ gewählte Sprache oder die des Systems.
-</translation>
-    </message>
-    <message>
         <source>%1 needs a value; see --help</source>
         <translation>%1 braucht einen Wert; siehe --help</translation>
     </message>
@@ -579,6 +543,51 @@ verwendet es die im Menü „Ansicht“ gewählte Sprache oder die des Systems.
         <source>cannot replay %1</source>
         <translation>%1 kann nicht wiedergegeben werden</translation>
     </message>
+    <message>
+        <source>Usage: roomba-dashboard [--sim [N] | --port PATH | --tcp HOST:PORT | --replay FILE]
+                        [--profile P] [--baud N] [--record FILE] [--lang CODE]
+
+  --sim [N]          the built-in virtual robot, or N of them (up to %2) in one room
+  --port PATH        a serial port, USB adapter or pseudo-terminal
+  --tcp HOST:PORT    a serial-over-TCP bridge such as ser2net
+  --replay FILE      play back a recording (.oirec) as if it were the robot
+  --profile P        roomba500, create2 (also roomba600), create1 (also create) or auto
+  --baud N           the line speed; the profile&apos;s default when left out
+  --record FILE      record every byte to and from the robot into FILE
+  --lang CODE        the language of the window: %1
+  --help, --version
+
+Without a connection option the dashboard reconnects the robots it had last,
+or on first start the virtual robot; with one, it holds just that robot (or
+those virtual robots) and keeps the saved list for next time. Shift+Esc stops
+every robot. Without --lang it speaks the language chosen in its View menu,
+or the system&apos;s.
+</source>
+        <translation>Aufruf: roomba-dashboard [--sim [N] | --port PFAD | --tcp HOST:PORT | --replay DATEI]
+                         [--profile P] [--baud N] [--record DATEI] [--lang CODE]
+
+  --sim [N]          der eingebaute virtuelle Roboter, oder N davon (bis %2) in einem Raum
+  --port PFAD        ein serieller Port, USB-Adapter oder Pseudo-Terminal
+  --tcp HOST:PORT    eine Seriell-über-TCP-Brücke wie ser2net
+  --replay DATEI     eine Aufzeichnung (.oirec) abspielen, als wäre sie der Roboter
+  --profile P        roomba500, create2 (auch roomba600), create1 (auch create) oder auto
+  --baud N           die Leitungsgeschwindigkeit; ohne Angabe die Vorgabe des Profils
+  --record DATEI     jedes Byte zum und vom Roboter in DATEI aufzeichnen
+  --lang CODE        die Sprache des Fensters: %1
+  --help, --version
+
+Ohne Verbindungsoption verbindet sich das Dashboard wieder mit den zuletzt
+verwendeten Robotern, beim ersten Start mit dem virtuellen Roboter; mit einer
+hält es nur diesen Roboter (oder diese virtuellen Roboter) und behält die
+gespeicherte Liste für das nächste Mal. Umschalt+Esc hält jeden Roboter an.
+Ohne --lang verwendet es die im Menü „Ansicht“ gewählte Sprache oder die des
+Systems.
+</translation>
+    </message>
+    <message>
+        <source>--sim takes 1 to %1 robots, not %2</source>
+        <translation>--sim nimmt 1 bis %1 Roboter, nicht %2</translation>
+    </message>
 </context>
 <context>
     <name>Demos</name>
@@ -625,6 +634,13 @@ verwendet es die im Menü „Ansicht“ gewählte Sprache oder die des Systems.
     <message>
         <source>Banjo</source>
         <translation>Banjo</translation>
+    </message>
+</context>
+<context>
+    <name>DockLayout</name>
+    <message>
+        <source>%1 — %2</source>
+        <translation>%1 — %2</translation>
     </message>
 </context>
 <context>
@@ -1347,10 +1363,6 @@ verwendet es die im Menü „Ansicht“ gewählte Sprache oder die des Systems.
         <translation>Gamepad</translation>
     </message>
     <message>
-        <source>Firmware %1</source>
-        <translation>Firmware %1</translation>
-    </message>
-    <message>
         <source>About Roomba Dashboard</source>
         <translation>Über Roomba Dashboard</translation>
     </message>
@@ -1369,26 +1381,6 @@ GPL-3.0-or-later.</translation>
     <message>
         <source>&amp;File</source>
         <translation>&amp;Datei</translation>
-    </message>
-    <message>
-        <source>&amp;Record</source>
-        <translation>&amp;Aufzeichnen</translation>
-    </message>
-    <message>
-        <source>Record every byte to and from the robot into a file</source>
-        <translation>Jedes Byte zum und vom Roboter in eine Datei aufzeichnen</translation>
-    </message>
-    <message>
-        <source>&amp;Open recording…</source>
-        <translation>Aufzeichnung ö&amp;ffnen…</translation>
-    </message>
-    <message>
-        <source>Replay a recording in place of the robot</source>
-        <translation>Eine Aufzeichnung anstelle des Roboters wiedergeben</translation>
-    </message>
-    <message>
-        <source>&amp;Export recording as CSV…</source>
-        <translation>Aufzeichnung als CSV &amp;exportieren…</translation>
     </message>
     <message>
         <source>&amp;Quit</source>
@@ -1423,104 +1415,8 @@ GPL-3.0-or-later.</translation>
         <translation>&amp;Über</translation>
     </message>
     <message>
-        <source>Record to</source>
-        <translation>Aufzeichnen nach</translation>
-    </message>
-    <message>
-        <source>Roomba Dashboard recordings (*.oirec)</source>
-        <translation>Roomba-Dashboard-Aufzeichnungen (*.oirec)</translation>
-    </message>
-    <message>
-        <source>Open recording</source>
-        <translation>Aufzeichnung öffnen</translation>
-    </message>
-    <message>
-        <source>Roomba Dashboard recordings (*.oirec);;All files (*)</source>
-        <translation>Roomba-Dashboard-Aufzeichnungen (*.oirec);;Alle Dateien (*)</translation>
-    </message>
-    <message>
-        <source>This file cannot be replayed.
-
-%1</source>
-        <translation>Diese Datei kann nicht wiedergegeben werden.
-
-%1</translation>
-    </message>
-    <message>
-        <source>Export recording as CSV</source>
-        <translation>Aufzeichnung als CSV exportieren</translation>
-    </message>
-    <message>
-        <source>Save CSV as</source>
-        <translation>CSV speichern unter</translation>
-    </message>
-    <message>
-        <source>CSV files (*.csv)</source>
-        <translation>CSV-Dateien (*.csv)</translation>
-    </message>
-    <message>
-        <source>Nothing was written.
-
-%1</source>
-        <translation>Es wurde nichts geschrieben.
-
-%1</translation>
-    </message>
-    <message>
-        <source>Wrote %1</source>
-        <translation>%1 geschrieben</translation>
-    </message>
-    <message>
-        <source>● REC %1 kB %2</source>
-        <translation>● REC %1 kB %2</translation>
-    </message>
-    <message>
         <source>Recording stopped: %1</source>
         <translation>Aufzeichnung beendet: %1</translation>
-    </message>
-    <message>
-        <source>closed</source>
-        <translation>geschlossen</translation>
-    </message>
-    <message>
-        <source>connecting</source>
-        <translation>verbindet</translation>
-    </message>
-    <message>
-        <source>streaming</source>
-        <translation>Datenstrom läuft</translation>
-    </message>
-    <message>
-        <source>stale</source>
-        <translation>veraltet</translation>
-    </message>
-    <message>
-        <source>lost</source>
-        <translation>verloren</translation>
-    </message>
-    <message>
-        <source>reconnecting</source>
-        <translation>verbindet neu</translation>
-    </message>
-    <message>
-        <source>  REPLAY, NOT LIVE  </source>
-        <translation>  WIEDERGABE, NICHT LIVE  </translation>
-    </message>
-    <message>
-        <source>  NO LIVE DATA  </source>
-        <translation>  KEINE LIVE-DATEN  </translation>
-    </message>
-    <message>
-        <source>Link: %1</source>
-        <translation>Verbindung: %1</translation>
-    </message>
-    <message>
-        <source>%1 frames/s</source>
-        <translation>%1 Frames/s</translation>
-    </message>
-    <message>
-        <source>checksum failures %1, resyncs %2</source>
-        <translation>Prüfsummenfehler %1, Neusynchronisierungen %2</translation>
     </message>
     <message>
         <source>&amp;Next pane</source>
@@ -1529,6 +1425,40 @@ GPL-3.0-or-later.</translation>
     <message>
         <source>&amp;Previous pane</source>
         <translation>&amp;Vorheriger Bereich</translation>
+    </message>
+    <message>
+        <source>%1 — Roomba Dashboard</source>
+        <translation>%1 — Roomba Dashboard</translation>
+    </message>
+    <message>
+        <source>&amp;Stop all robots	Shift+Esc</source>
+        <translation>Alle Roboter an&amp;halten	Umschalt+Esc</translation>
+    </message>
+    <message>
+        <source>STOP ALL  (Shift+Esc)</source>
+        <translation>ALLE STOPP  (Umschalt+Esc)</translation>
+    </message>
+    <message>
+        <source>Stop every robot in the window at once, whichever is selected.
+Space or Esc stops the selected robot.</source>
+        <translation>Hält jeden Roboter im Fenster sofort an, egal welcher ausgewählt ist.
+Leertaste oder Esc hält den ausgewählten Roboter an.</translation>
+    </message>
+    <message>
+        <source>Stop all robots</source>
+        <translation>Alle Roboter anhalten</translation>
+    </message>
+    <message>
+        <source>Robots</source>
+        <translation>Roboter</translation>
+    </message>
+    <message>
+        <source>Recording of %1</source>
+        <translation>Aufzeichnung eines %1</translation>
+    </message>
+    <message>
+        <source>not connected</source>
+        <translation>nicht verbunden</translation>
     </message>
 </context>
 <context>
@@ -2258,6 +2188,77 @@ GPL-3.0-or-later.</translation>
     </message>
 </context>
 <context>
+    <name>RecordingActions</name>
+    <message>
+        <source>&amp;Record</source>
+        <translation>&amp;Aufzeichnen</translation>
+    </message>
+    <message>
+        <source>Record every byte to and from the selected robot into a file</source>
+        <translation>Jedes Byte zum und vom ausgewählten Roboter in eine Datei aufzeichnen</translation>
+    </message>
+    <message>
+        <source>&amp;Open recording…</source>
+        <translation>Aufzeichnung ö&amp;ffnen…</translation>
+    </message>
+    <message>
+        <source>Replay a recording as a robot of its own</source>
+        <translation>Eine Aufzeichnung als eigenen Roboter wiedergeben</translation>
+    </message>
+    <message>
+        <source>&amp;Export recording as CSV…</source>
+        <translation>Aufzeichnung als CSV &amp;exportieren…</translation>
+    </message>
+    <message>
+        <source>Record %1 to</source>
+        <translation>%1 aufzeichnen nach</translation>
+    </message>
+    <message>
+        <source>Roomba Dashboard recordings (*.oirec)</source>
+        <translation>Roomba-Dashboard-Aufzeichnungen (*.oirec)</translation>
+    </message>
+    <message>
+        <source>Open recording</source>
+        <translation>Aufzeichnung öffnen</translation>
+    </message>
+    <message>
+        <source>Roomba Dashboard recordings (*.oirec);;All files (*)</source>
+        <translation>Roomba-Dashboard-Aufzeichnungen (*.oirec);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>This file cannot be replayed.
+
+%1</source>
+        <translation>Diese Datei kann nicht wiedergegeben werden.
+
+%1</translation>
+    </message>
+    <message>
+        <source>Export recording as CSV</source>
+        <translation>Aufzeichnung als CSV exportieren</translation>
+    </message>
+    <message>
+        <source>Save CSV as</source>
+        <translation>CSV speichern unter</translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv)</source>
+        <translation>CSV-Dateien (*.csv)</translation>
+    </message>
+    <message>
+        <source>Nothing was written.
+
+%1</source>
+        <translation>Es wurde nichts geschrieben.
+
+%1</translation>
+    </message>
+    <message>
+        <source>Wrote %1</source>
+        <translation>%1 geschrieben</translation>
+    </message>
+</context>
+<context>
     <name>ReplayBar</name>
     <message>
         <source>One frame back</source>
@@ -2290,6 +2291,31 @@ GPL-3.0-or-later.</translation>
     <message>
         <source>Damaged: replays up to %1</source>
         <translation>Beschädigt: Wiedergabe bis %1</translation>
+    </message>
+</context>
+<context>
+    <name>RobotCard</name>
+    <message>
+        <source>%1 %</source>
+        <translation>%1 %</translation>
+    </message>
+    <message>
+        <source>Robot %1</source>
+        <translation>Roboter %1</translation>
+    </message>
+    <message>
+        <source>%1, link %2</source>
+        <translation>%1, Verbindung %2</translation>
+    </message>
+    <message>
+        <source>%1
+%2
+Link: %3
+Double-click to rename</source>
+        <translation>%1
+%2
+Verbindung: %3
+Doppelklick zum Umbenennen</translation>
     </message>
 </context>
 <context>
@@ -2433,6 +2459,111 @@ GPL-3.0-or-later.</translation>
     <message>
         <source>STALE</source>
         <translation>VERALTET</translation>
+    </message>
+</context>
+<context>
+    <name>RobotFleet</name>
+    <message>
+        <source>Robot</source>
+        <translation>Roboter</translation>
+    </message>
+</context>
+<context>
+    <name>RobotList</name>
+    <message>
+        <source>Add robot</source>
+        <translation>Roboter hinzufügen</translation>
+    </message>
+    <message>
+        <source>Add a robot to the window: a virtual one, a serial port or TCP bridge, or a recording</source>
+        <translation>Einen Roboter zum Fenster hinzufügen: einen virtuellen, einen seriellen Port oder eine TCP-Brücke, oder eine Aufzeichnung</translation>
+    </message>
+    <message>
+        <source>Virtual robot</source>
+        <translation>Virtueller Roboter</translation>
+    </message>
+    <message>
+        <source>Serial port or TCP bridge…</source>
+        <translation>Serieller Port oder TCP-Brücke…</translation>
+    </message>
+    <message>
+        <source>Recording…</source>
+        <translation>Aufzeichnung…</translation>
+    </message>
+    <message>
+        <source>Rename</source>
+        <translation>Umbenennen</translation>
+    </message>
+    <message>
+        <source>Rename the selected robot (or double-click its card)</source>
+        <translation>Den ausgewählten Roboter umbenennen (oder seine Karte doppelklicken)</translation>
+    </message>
+    <message>
+        <source>Remove</source>
+        <translation>Entfernen</translation>
+    </message>
+    <message>
+        <source>Stop the selected robot, leave it in Passive and remove it from the window</source>
+        <translation>Den ausgewählten Roboter anhalten, in Passiv lassen und aus dem Fenster entfernen</translation>
+    </message>
+    <message>
+        <source>Robot name</source>
+        <translation>Name des Roboters</translation>
+    </message>
+</context>
+<context>
+    <name>RobotStatusBar</name>
+    <message>
+        <source>closed</source>
+        <translation>geschlossen</translation>
+    </message>
+    <message>
+        <source>connecting</source>
+        <translation>verbindet</translation>
+    </message>
+    <message>
+        <source>streaming</source>
+        <translation>Datenstrom läuft</translation>
+    </message>
+    <message>
+        <source>stale</source>
+        <translation>veraltet</translation>
+    </message>
+    <message>
+        <source>lost</source>
+        <translation>verloren</translation>
+    </message>
+    <message>
+        <source>reconnecting</source>
+        <translation>verbindet neu</translation>
+    </message>
+    <message>
+        <source>Link: %1</source>
+        <translation>Verbindung: %1</translation>
+    </message>
+    <message>
+        <source>%1 frames/s</source>
+        <translation>%1 Frames/s</translation>
+    </message>
+    <message>
+        <source>checksum failures %1, resyncs %2</source>
+        <translation>Prüfsummenfehler %1, Neusynchronisierungen %2</translation>
+    </message>
+    <message>
+        <source>Firmware %1</source>
+        <translation>Firmware %1</translation>
+    </message>
+    <message>
+        <source>● REC %1 kB %2</source>
+        <translation>● REC %1 kB %2</translation>
+    </message>
+    <message>
+        <source>  REPLAY, NOT LIVE  </source>
+        <translation>  WIEDERGABE, NICHT LIVE  </translation>
+    </message>
+    <message>
+        <source>  NO LIVE DATA  </source>
+        <translation>  KEINE LIVE-DATEN  </translation>
     </message>
 </context>
 <context>
@@ -2836,14 +2967,6 @@ GPL-3.0-or-later.</translation>
         <translation>Skript vor dem Hochladen korrigieren</translation>
     </message>
     <message>
-        <source>Pausing the stream, then asking for the robot&apos;s script…</source>
-        <translation>Datenstrom wird angehalten, dann wird das Skript des Roboters abgefragt…</translation>
-    </message>
-    <message>
-        <source>Waiting for the robot&apos;s script…</source>
-        <translation>Warte auf das Skript des Roboters…</translation>
-    </message>
-    <message>
         <source>(empty)</source>
         <translation>(leer)</translation>
     </message>
@@ -2868,8 +2991,12 @@ Gesendet: %2</translation>
         <translation>noch nichts hochgeladen</translation>
     </message>
     <message>
-        <source>No reply to Show Script within %1 s. Is the robot connected and awake?</source>
-        <translation>Keine Antwort auf Show Script innerhalb von %1 s. Ist der Roboter verbunden und wach?</translation>
+        <source>Asking for the robot&apos;s script…</source>
+        <translation>Frage den Roboter nach seinem Skript…</translation>
+    </message>
+    <message>
+        <source>No script came back: %1</source>
+        <translation>Kein Skript kam zurück: %1</translation>
     </message>
 </context>
 <context>
@@ -4005,6 +4132,18 @@ Gesendet: %2</translation>
         <source>(If it is asleep: %1.)</source>
         <translation>(Falls er schläft: %1.)</translation>
     </message>
+    <message>
+        <source>not connected: Show Script was not sent</source>
+        <translation>nicht verbunden: Show Script wurde nicht gesendet</translation>
+    </message>
+    <message>
+        <source>the %1 has no scripts</source>
+        <translation>der %1 hat keine Skripte</translation>
+    </message>
+    <message>
+        <source>%1: no reply to Show Script</source>
+        <translation>%1: keine Antwort auf Show Script</translation>
+    </message>
 </context>
 <context>
     <name>oilink::RobotLinkThread</name>
@@ -4015,6 +4154,10 @@ Gesendet: %2</translation>
     <message>
         <source>not connected: the sensor query was not sent</source>
         <translation>nicht verbunden: die Sensorabfrage wurde nicht gesendet</translation>
+    </message>
+    <message>
+        <source>not connected: Show Script was not sent</source>
+        <translation>nicht verbunden: Show Script wurde nicht gesendet</translation>
     </message>
 </context>
 <context>

@@ -496,42 +496,6 @@
 <context>
     <name>DashboardCommandLine</name>
     <message>
-        <source>Usage: roomba-dashboard [--sim | --port PATH | --tcp HOST:PORT | --replay FILE]
-                        [--profile P] [--baud N] [--record FILE] [--lang CODE]
-
-  --sim              the built-in virtual robot
-  --port PATH        a serial port, USB adapter or pseudo-terminal
-  --tcp HOST:PORT    a serial-over-TCP bridge such as ser2net
-  --replay FILE      play back a recording (.oirec) as if it were the robot
-  --profile P        roomba500, create2 (also roomba600), create1 (also create) or auto
-  --baud N           the line speed; the profile&apos;s default when left out
-  --record FILE      record every byte to and from the robot into FILE
-  --lang CODE        the language of the window: %1
-  --help, --version
-
-Without a connection option the dashboard reconnects to what was used last,
-or on first start to the virtual robot. Without --lang it speaks the language
-chosen in its View menu, or the system&apos;s.
-</source>
-        <translation>Uso: roomba-dashboard [--sim | --port RUTA | --tcp HOST:PUERTO | --replay ARCHIVO]
-                      [--profile P] [--baud N] [--record ARCHIVO] [--lang CÓDIGO]
-
-  --sim              el robot virtual integrado
-  --port RUTA        un puerto serie, adaptador USB o pseudoterminal
-  --tcp HOST:PUERTO  un puente serie sobre TCP como ser2net
-  --replay ARCHIVO   reproduce una grabación (.oirec) como si fuera el robot
-  --profile P        roomba500, create2 (también roomba600), create1 (también create) o auto
-  --baud N           la velocidad de la línea; si se omite, la del perfil
-  --record ARCHIVO   graba en ARCHIVO cada byte enviado al robot y recibido de él
-  --lang CÓDIGO      el idioma de la ventana: %1
-  --help, --version
-
-Sin opción de conexión, el panel se vuelve a conectar a lo último que se usó,
-o en el primer inicio al robot virtual. Sin --lang usa el idioma elegido
-en su menú Ver, o el del sistema.
-</translation>
-    </message>
-    <message>
         <source>%1 needs a value; see --help</source>
         <translation>%1 necesita un valor; consulte --help</translation>
     </message>
@@ -579,6 +543,50 @@ en su menú Ver, o el del sistema.
         <source>cannot replay %1</source>
         <translation>no se puede reproducir %1</translation>
     </message>
+    <message>
+        <source>Usage: roomba-dashboard [--sim [N] | --port PATH | --tcp HOST:PORT | --replay FILE]
+                        [--profile P] [--baud N] [--record FILE] [--lang CODE]
+
+  --sim [N]          the built-in virtual robot, or N of them (up to %2) in one room
+  --port PATH        a serial port, USB adapter or pseudo-terminal
+  --tcp HOST:PORT    a serial-over-TCP bridge such as ser2net
+  --replay FILE      play back a recording (.oirec) as if it were the robot
+  --profile P        roomba500, create2 (also roomba600), create1 (also create) or auto
+  --baud N           the line speed; the profile&apos;s default when left out
+  --record FILE      record every byte to and from the robot into FILE
+  --lang CODE        the language of the window: %1
+  --help, --version
+
+Without a connection option the dashboard reconnects the robots it had last,
+or on first start the virtual robot; with one, it holds just that robot (or
+those virtual robots) and keeps the saved list for next time. Shift+Esc stops
+every robot. Without --lang it speaks the language chosen in its View menu,
+or the system&apos;s.
+</source>
+        <translation>Uso: roomba-dashboard [--sim [N] | --port RUTA | --tcp HOST:PUERTO | --replay ARCHIVO]
+                      [--profile P] [--baud N] [--record ARCHIVO] [--lang CÓDIGO]
+
+  --sim [N]          el robot virtual integrado, o N de ellos (hasta %2) en una sala
+  --port RUTA        un puerto serie, adaptador USB o pseudoterminal
+  --tcp HOST:PUERTO  un puente serie sobre TCP como ser2net
+  --replay ARCHIVO   reproduce una grabación (.oirec) como si fuera el robot
+  --profile P        roomba500, create2 (también roomba600), create1 (también create) o auto
+  --baud N           la velocidad de la línea; si se omite, la del perfil
+  --record ARCHIVO   graba en ARCHIVO cada byte enviado al robot y recibido de él
+  --lang CÓDIGO      el idioma de la ventana: %1
+  --help, --version
+
+Sin opción de conexión, el panel vuelve a conectar los robots que tenía,
+o en el primer inicio el robot virtual; con una, tiene solo ese robot (o esos
+robots virtuales) y guarda la lista para la próxima vez. Mayús+Esc detiene
+todos los robots. Sin --lang usa el idioma elegido en su menú Ver, o el del
+sistema.
+</translation>
+    </message>
+    <message>
+        <source>--sim takes 1 to %1 robots, not %2</source>
+        <translation>--sim admite de 1 a %1 robots, no %2</translation>
+    </message>
 </context>
 <context>
     <name>Demos</name>
@@ -625,6 +633,13 @@ en su menú Ver, o el del sistema.
     <message>
         <source>Banjo</source>
         <translation>Banjo</translation>
+    </message>
+</context>
+<context>
+    <name>DockLayout</name>
+    <message>
+        <source>%1 — %2</source>
+        <translation>%1 — %2</translation>
     </message>
 </context>
 <context>
@@ -1347,10 +1362,6 @@ en su menú Ver, o el del sistema.
         <translation>Mando</translation>
     </message>
     <message>
-        <source>Firmware %1</source>
-        <translation>Firmware %1</translation>
-    </message>
-    <message>
         <source>About Roomba Dashboard</source>
         <translation>Acerca de Roomba Dashboard</translation>
     </message>
@@ -1369,26 +1380,6 @@ GPL-3.0-or-later.</translation>
     <message>
         <source>&amp;File</source>
         <translation>&amp;Archivo</translation>
-    </message>
-    <message>
-        <source>&amp;Record</source>
-        <translation>&amp;Grabar</translation>
-    </message>
-    <message>
-        <source>Record every byte to and from the robot into a file</source>
-        <translation>Graba en un archivo cada byte enviado al robot y recibido de él</translation>
-    </message>
-    <message>
-        <source>&amp;Open recording…</source>
-        <translation>A&amp;brir grabación…</translation>
-    </message>
-    <message>
-        <source>Replay a recording in place of the robot</source>
-        <translation>Reproduce una grabación en lugar del robot</translation>
-    </message>
-    <message>
-        <source>&amp;Export recording as CSV…</source>
-        <translation>&amp;Exportar grabación como CSV…</translation>
     </message>
     <message>
         <source>&amp;Quit</source>
@@ -1423,104 +1414,8 @@ GPL-3.0-or-later.</translation>
         <translation>&amp;Acerca de</translation>
     </message>
     <message>
-        <source>Record to</source>
-        <translation>Grabar en</translation>
-    </message>
-    <message>
-        <source>Roomba Dashboard recordings (*.oirec)</source>
-        <translation>Grabaciones de Roomba Dashboard (*.oirec)</translation>
-    </message>
-    <message>
-        <source>Open recording</source>
-        <translation>Abrir grabación</translation>
-    </message>
-    <message>
-        <source>Roomba Dashboard recordings (*.oirec);;All files (*)</source>
-        <translation>Grabaciones de Roomba Dashboard (*.oirec);;Todos los archivos (*)</translation>
-    </message>
-    <message>
-        <source>This file cannot be replayed.
-
-%1</source>
-        <translation>Este archivo no se puede reproducir.
-
-%1</translation>
-    </message>
-    <message>
-        <source>Export recording as CSV</source>
-        <translation>Exportar grabación como CSV</translation>
-    </message>
-    <message>
-        <source>Save CSV as</source>
-        <translation>Guardar CSV como</translation>
-    </message>
-    <message>
-        <source>CSV files (*.csv)</source>
-        <translation>Archivos CSV (*.csv)</translation>
-    </message>
-    <message>
-        <source>Nothing was written.
-
-%1</source>
-        <translation>No se escribió nada.
-
-%1</translation>
-    </message>
-    <message>
-        <source>Wrote %1</source>
-        <translation>Se escribió %1</translation>
-    </message>
-    <message>
-        <source>● REC %1 kB %2</source>
-        <translation>● REC %1 kB %2</translation>
-    </message>
-    <message>
         <source>Recording stopped: %1</source>
         <translation>Grabación detenida: %1</translation>
-    </message>
-    <message>
-        <source>closed</source>
-        <translation>cerrado</translation>
-    </message>
-    <message>
-        <source>connecting</source>
-        <translation>conectando</translation>
-    </message>
-    <message>
-        <source>streaming</source>
-        <translation>transmitiendo</translation>
-    </message>
-    <message>
-        <source>stale</source>
-        <translation>obsoleto</translation>
-    </message>
-    <message>
-        <source>lost</source>
-        <translation>perdido</translation>
-    </message>
-    <message>
-        <source>reconnecting</source>
-        <translation>reconectando</translation>
-    </message>
-    <message>
-        <source>  REPLAY, NOT LIVE  </source>
-        <translation>  REPRODUCCIÓN, NO EN VIVO  </translation>
-    </message>
-    <message>
-        <source>  NO LIVE DATA  </source>
-        <translation>  SIN DATOS EN VIVO  </translation>
-    </message>
-    <message>
-        <source>Link: %1</source>
-        <translation>Enlace: %1</translation>
-    </message>
-    <message>
-        <source>%1 frames/s</source>
-        <translation>%1 tramas/s</translation>
-    </message>
-    <message>
-        <source>checksum failures %1, resyncs %2</source>
-        <translation>fallos de suma de comprobación %1, resincronizaciones %2</translation>
     </message>
     <message>
         <source>&amp;Next pane</source>
@@ -1529,6 +1424,40 @@ GPL-3.0-or-later.</translation>
     <message>
         <source>&amp;Previous pane</source>
         <translation>Panel an&amp;terior</translation>
+    </message>
+    <message>
+        <source>%1 — Roomba Dashboard</source>
+        <translation>%1 — Roomba Dashboard</translation>
+    </message>
+    <message>
+        <source>&amp;Stop all robots	Shift+Esc</source>
+        <translation>&amp;Detener todos los robots	Mayús+Esc</translation>
+    </message>
+    <message>
+        <source>STOP ALL  (Shift+Esc)</source>
+        <translation>DETENER TODOS  (Mayús+Esc)</translation>
+    </message>
+    <message>
+        <source>Stop every robot in the window at once, whichever is selected.
+Space or Esc stops the selected robot.</source>
+        <translation>Detiene a la vez todos los robots de la ventana, esté seleccionado el que esté.
+Espacio o Esc detiene el robot seleccionado.</translation>
+    </message>
+    <message>
+        <source>Stop all robots</source>
+        <translation>Detener todos los robots</translation>
+    </message>
+    <message>
+        <source>Robots</source>
+        <translation>Robots</translation>
+    </message>
+    <message>
+        <source>Recording of %1</source>
+        <translation>Grabación de un %1</translation>
+    </message>
+    <message>
+        <source>not connected</source>
+        <translation>sin conexión</translation>
     </message>
 </context>
 <context>
@@ -2258,6 +2187,77 @@ GPL-3.0-or-later.</translation>
     </message>
 </context>
 <context>
+    <name>RecordingActions</name>
+    <message>
+        <source>&amp;Record</source>
+        <translation>&amp;Grabar</translation>
+    </message>
+    <message>
+        <source>Record every byte to and from the selected robot into a file</source>
+        <translation>Graba en un archivo cada byte enviado al robot seleccionado y recibido de él</translation>
+    </message>
+    <message>
+        <source>&amp;Open recording…</source>
+        <translation>A&amp;brir grabación…</translation>
+    </message>
+    <message>
+        <source>Replay a recording as a robot of its own</source>
+        <translation>Reproduce una grabación como un robot más</translation>
+    </message>
+    <message>
+        <source>&amp;Export recording as CSV…</source>
+        <translation>&amp;Exportar grabación como CSV…</translation>
+    </message>
+    <message>
+        <source>Record %1 to</source>
+        <translation>Grabar %1 en</translation>
+    </message>
+    <message>
+        <source>Roomba Dashboard recordings (*.oirec)</source>
+        <translation>Grabaciones de Roomba Dashboard (*.oirec)</translation>
+    </message>
+    <message>
+        <source>Open recording</source>
+        <translation>Abrir grabación</translation>
+    </message>
+    <message>
+        <source>Roomba Dashboard recordings (*.oirec);;All files (*)</source>
+        <translation>Grabaciones de Roomba Dashboard (*.oirec);;Todos los archivos (*)</translation>
+    </message>
+    <message>
+        <source>This file cannot be replayed.
+
+%1</source>
+        <translation>Este archivo no se puede reproducir.
+
+%1</translation>
+    </message>
+    <message>
+        <source>Export recording as CSV</source>
+        <translation>Exportar grabación como CSV</translation>
+    </message>
+    <message>
+        <source>Save CSV as</source>
+        <translation>Guardar CSV como</translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv)</source>
+        <translation>Archivos CSV (*.csv)</translation>
+    </message>
+    <message>
+        <source>Nothing was written.
+
+%1</source>
+        <translation>No se escribió nada.
+
+%1</translation>
+    </message>
+    <message>
+        <source>Wrote %1</source>
+        <translation>Se escribió %1</translation>
+    </message>
+</context>
+<context>
     <name>ReplayBar</name>
     <message>
         <source>One frame back</source>
@@ -2290,6 +2290,31 @@ GPL-3.0-or-later.</translation>
     <message>
         <source>Damaged: replays up to %1</source>
         <translation>Dañada: se reproduce hasta %1</translation>
+    </message>
+</context>
+<context>
+    <name>RobotCard</name>
+    <message>
+        <source>%1 %</source>
+        <translation>%1 %</translation>
+    </message>
+    <message>
+        <source>Robot %1</source>
+        <translation>Robot %1</translation>
+    </message>
+    <message>
+        <source>%1, link %2</source>
+        <translation>%1, enlace %2</translation>
+    </message>
+    <message>
+        <source>%1
+%2
+Link: %3
+Double-click to rename</source>
+        <translation>%1
+%2
+Enlace: %3
+Doble clic para renombrar</translation>
     </message>
 </context>
 <context>
@@ -2433,6 +2458,111 @@ GPL-3.0-or-later.</translation>
     <message>
         <source>STALE</source>
         <translation>OBSOLETO</translation>
+    </message>
+</context>
+<context>
+    <name>RobotFleet</name>
+    <message>
+        <source>Robot</source>
+        <translation>Robot</translation>
+    </message>
+</context>
+<context>
+    <name>RobotList</name>
+    <message>
+        <source>Add robot</source>
+        <translation>Añadir robot</translation>
+    </message>
+    <message>
+        <source>Add a robot to the window: a virtual one, a serial port or TCP bridge, or a recording</source>
+        <translation>Añade un robot a la ventana: uno virtual, un puerto serie o puente TCP, o una grabación</translation>
+    </message>
+    <message>
+        <source>Virtual robot</source>
+        <translation>Robot virtual</translation>
+    </message>
+    <message>
+        <source>Serial port or TCP bridge…</source>
+        <translation>Puerto serie o puente TCP…</translation>
+    </message>
+    <message>
+        <source>Recording…</source>
+        <translation>Grabación…</translation>
+    </message>
+    <message>
+        <source>Rename</source>
+        <translation>Renombrar</translation>
+    </message>
+    <message>
+        <source>Rename the selected robot (or double-click its card)</source>
+        <translation>Renombra el robot seleccionado (o haz doble clic en su tarjeta)</translation>
+    </message>
+    <message>
+        <source>Remove</source>
+        <translation>Quitar</translation>
+    </message>
+    <message>
+        <source>Stop the selected robot, leave it in Passive and remove it from the window</source>
+        <translation>Detiene el robot seleccionado, lo deja en Pasivo y lo quita de la ventana</translation>
+    </message>
+    <message>
+        <source>Robot name</source>
+        <translation>Nombre del robot</translation>
+    </message>
+</context>
+<context>
+    <name>RobotStatusBar</name>
+    <message>
+        <source>closed</source>
+        <translation>cerrado</translation>
+    </message>
+    <message>
+        <source>connecting</source>
+        <translation>conectando</translation>
+    </message>
+    <message>
+        <source>streaming</source>
+        <translation>transmitiendo</translation>
+    </message>
+    <message>
+        <source>stale</source>
+        <translation>obsoleto</translation>
+    </message>
+    <message>
+        <source>lost</source>
+        <translation>perdido</translation>
+    </message>
+    <message>
+        <source>reconnecting</source>
+        <translation>reconectando</translation>
+    </message>
+    <message>
+        <source>Link: %1</source>
+        <translation>Enlace: %1</translation>
+    </message>
+    <message>
+        <source>%1 frames/s</source>
+        <translation>%1 tramas/s</translation>
+    </message>
+    <message>
+        <source>checksum failures %1, resyncs %2</source>
+        <translation>fallos de suma de comprobación %1, resincronizaciones %2</translation>
+    </message>
+    <message>
+        <source>Firmware %1</source>
+        <translation>Firmware %1</translation>
+    </message>
+    <message>
+        <source>● REC %1 kB %2</source>
+        <translation>● REC %1 kB %2</translation>
+    </message>
+    <message>
+        <source>  REPLAY, NOT LIVE  </source>
+        <translation>  REPRODUCCIÓN, NO EN VIVO  </translation>
+    </message>
+    <message>
+        <source>  NO LIVE DATA  </source>
+        <translation>  SIN DATOS EN VIVO  </translation>
     </message>
 </context>
 <context>
@@ -2836,14 +2966,6 @@ GPL-3.0-or-later.</translation>
         <translation>Corrija el script antes de subirlo</translation>
     </message>
     <message>
-        <source>Pausing the stream, then asking for the robot&apos;s script…</source>
-        <translation>Pausando el flujo de datos y pidiendo después el script del robot…</translation>
-    </message>
-    <message>
-        <source>Waiting for the robot&apos;s script…</source>
-        <translation>Esperando el script del robot…</translation>
-    </message>
-    <message>
         <source>(empty)</source>
         <translation>(vacío)</translation>
     </message>
@@ -2868,8 +2990,12 @@ Enviado: %2</translation>
         <translation>aún no se ha subido nada</translation>
     </message>
     <message>
-        <source>No reply to Show Script within %1 s. Is the robot connected and awake?</source>
-        <translation>Sin respuesta a Mostrar script en %1 s. ¿Está el robot conectado y activo?</translation>
+        <source>Asking for the robot&apos;s script…</source>
+        <translation>Pidiendo al robot su script…</translation>
+    </message>
+    <message>
+        <source>No script came back: %1</source>
+        <translation>No volvió ningún script: %1</translation>
     </message>
 </context>
 <context>
@@ -4005,6 +4131,18 @@ Enviado: %2</translation>
         <source>(If it is asleep: %1.)</source>
         <translation>(Si está dormido: %1.)</translation>
     </message>
+    <message>
+        <source>not connected: Show Script was not sent</source>
+        <translation>sin conexión: Show Script no se envió</translation>
+    </message>
+    <message>
+        <source>the %1 has no scripts</source>
+        <translation>el %1 no tiene scripts</translation>
+    </message>
+    <message>
+        <source>%1: no reply to Show Script</source>
+        <translation>%1: sin respuesta a Show Script</translation>
+    </message>
 </context>
 <context>
     <name>oilink::RobotLinkThread</name>
@@ -4015,6 +4153,10 @@ Enviado: %2</translation>
     <message>
         <source>not connected: the sensor query was not sent</source>
         <translation>sin conexión: la consulta de sensores no se envió</translation>
+    </message>
+    <message>
+        <source>not connected: Show Script was not sent</source>
+        <translation>sin conexión: Show Script no se envió</translation>
     </message>
 </context>
 <context>

@@ -23,11 +23,12 @@ void RobotCard::setValues(const RobotCardValues &values)
 {
     if (values == m_values)
         return;
-    const bool resize = values.name != m_values.name || values.profile != m_values.profile;
+    const QString oldDetail = detailText();
+    const bool resize = values.name != m_values.name || values.link != m_values.link;
     m_values = values;
     setText(values.name);
     updateAccessibleText();
-    if (resize)
+    if (resize || detailText().size() != oldDetail.size())
         updateGeometry();
     update();
 }
@@ -57,7 +58,7 @@ QSize RobotCard::sizeHint() const
     const int lines = big.height() + 2 * small.height();
     const int width = std::max({big.horizontalAdvance(m_values.name), small.horizontalAdvance(detailText()),
                                 small.horizontalAdvance(m_values.link), 12 * small.averageCharWidth()});
-    return {kColourBar + 3 * kPadding + width, lines + 2 * kPadding};
+    return {kColourBar + 4 * kPadding + width + 4, lines + 2 * kPadding};
 }
 
 QSize RobotCard::minimumSizeHint() const

@@ -35,6 +35,8 @@ public:
     // the last stop.
     bool isMoving() const;
     MotionCommand lastSent() const { return m_sent; }
+    // A command waits for the rate limit's timer.
+    bool hasPendingMotion() const { return m_pending.isActive(); }
 
 public slots:
     void requestMotion(const MotionCommand &command);

@@ -80,6 +80,21 @@ struct FleetRig {
         }, 10000);
     }
     RobotSession *robot(int i) { return window.fleet().robots().value(i); }
+    // Forgets what both robots were sent, then holds Up on the drive pad.
+    void driveUp()
+    {
+        window.refreshDisplay();
+        window.findChild<QDockWidget *>("driveDock")->raise();
+        window.drivePad()->padArea()->setFocus();
+        of("/dev/robotA").take();
+        of("/dev/robotB").take();
+        QTest::keyPress(window.drivePad()->padArea(), Qt::Key_Up);
+    }
+    // What Up sends: straight ahead at the pad's speed limit.
+    QString driveAhead() const
+    {
+        return toText(*create2().drive(window.drivePad()->speedLimit(), oi::kRadiusStraight));
+    }
 };
 
 } // namespace
@@ -117,16 +132,10 @@ private slots:
         rig.startWithTwo();
         QVERIFY(rig.streaming());
         QVERIFY(QTest::qWaitForWindowActive(&rig.window));
-        rig.window.refreshDisplay();
-        rig.window.findChild<QDockWidget *>("driveDock")->raise();
-        rig.window.drivePad()->padArea()->setFocus();
-        rig.of("/dev/robotA").take();
-        rig.of("/dev/robotB").take();
+        rig.driveUp();
 
-        QTest::keyPress(rig.window.drivePad()->padArea(), Qt::Key_Up);
         QTRY_VERIFY_WITH_TIMEOUT(rig.of("/dev/robotA").count() >= 1, 5000);
-        const int speed = rig.window.drivePad()->speedLimit();
-        QCOMPARE(texts(rig.of("/dev/robotA").take()), QStringList{toText(*create2().drive(speed, oi::kRadiusStraight))});
+        QCOMPARE(texts(rig.of("/dev/robotA").take()), QStringList{rig.driveAhead()});
 
         QTest::keyClick(rig.window.drivePad()->padArea(), Qt::Key_Escape, Qt::ShiftModifier);
         const QString stop = toText(create2().stopMotion());
@@ -158,15 +167,9 @@ private slots:
         QVERIFY(!rig.robot(1)->history().isReducedRate());
         QVERIFY(rig.robot(0)->history().isReducedRate());
 
-        rig.window.refreshDisplay();
-        rig.window.findChild<QDockWidget *>("driveDock")->raise();
-        rig.window.drivePad()->padArea()->setFocus();
-        rig.of("/dev/robotA").take();
-        rig.of("/dev/robotB").take();
-        QTest::keyPress(rig.window.drivePad()->padArea(), Qt::Key_Up);
+        rig.driveUp();
         QTRY_VERIFY_WITH_TIMEOUT(rig.of("/dev/robotB").count() >= 1, 5000);
-        const int speed = rig.window.drivePad()->speedLimit();
-        QCOMPARE(texts(rig.of("/dev/robotB").take()), QStringList{toText(*create2().drive(speed, oi::kRadiusStraight))});
+        QCOMPARE(texts(rig.of("/dev/robotB").take()), QStringList{rig.driveAhead()});
 
         // Switching while driving stops the robot left behind; then Stop all
         // proves nothing else reached the first robot.

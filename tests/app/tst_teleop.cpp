@@ -73,7 +73,7 @@ struct Rig {
                             && int(window.session().latest().oiMode()) == recording.mode; }, 10000);
         window.refreshDisplay();
         window.findChild<QDockWidget *>("driveDock")->raise();
-        QTest::qWait(20);
+        QTest::qWaitFor([this] { return area()->isVisible(); }, 2000);
         pad()->padArea()->setFocus();
         if (!area()->isVisible() || (!pad()->isPassive() && QApplication::focusWidget() != area()))
             return false;
@@ -84,17 +84,39 @@ struct Rig {
     QWidget *area() const { return window.drivePad()->padArea(); }
     QPoint at(QPointF knob) const { return pad()->areaPointFor(knob); }
     QPointF knobAt(QPointF knob) const { return pad()->knobAt(at(knob)); }
-    // Waits for exactly one more write and returns it.
+    // Waits for exactly one more write and returns it, with anything else
+    // written before the barrier (see nothingMore()).
     QString next()
     {
         if (!QTest::qWaitFor([this] { return recording.count() >= 1; }, 5000))
             return QStringLiteral("(nothing written)");
-        QTest::qWait(30); // anything after it would show up as a second write
-        const QList<QByteArray> writes = recording.take();
         QStringList out;
-        for (const QByteArray &w : writes)
+        for (const QByteArray &w : sentSoFar())
             out << byteText(w);
         return out.join(" | ");
+    }
+    // True when nothing more was sent: no command waits on the teleop's
+    // timer, and a marker sent now through the same queue to the link is the
+    // first thing the robot's side sees.
+    bool nothingMore()
+    {
+        return !window.teleop().hasPendingMotion() && sentSoFar().isEmpty();
+    }
+    // Everything written before a marker sent now, in order; the marker is
+    // not among them.
+    QList<QByteArray> sentSoFar()
+    {
+        const QByteArray marker("\xff\xfe barrier", 10);
+        window.session().send(marker);
+        QList<QByteArray> writes;
+        const bool seen = QTest::qWaitFor([&] {
+            writes += recording.take();
+            return writes.contains(marker);
+        }, 5000);
+        if (!seen)
+            return {QByteArray("(no barrier)")};
+        writes.resize(writes.indexOf(marker));
+        return writes;
     }
 };
 
@@ -203,8 +225,7 @@ private slots:
             QApplication::sendEvent(target, &release);
             QApplication::sendEvent(target, &press);
         }
-        QTest::qWait(40);
-        QCOMPARE(rig.recording.count(), qsizetype(0));
+        QVERIFY(rig.nothingMore());
         // Up and left together: an arc to the left; left alone turns in place.
         QTest::keyPress(target, Qt::Key_A);
         QCOMPARE(rig.next(), driveBytes(200, 500));
@@ -231,8 +252,7 @@ private slots:
         QCOMPARE(rig.next(), kStop);
         // The held key was forgotten: letting go sends nothing more.
         QTest::keyRelease(rig.area(), Qt::Key_W);
-        QTest::qWait(40);
-        QCOMPARE(rig.recording.count(), qsizetype(0));
+        QVERIFY(rig.nothingMore());
 
         // Space stops from the pad, even with nothing moving...
         QTest::keyClick(rig.area(), Qt::Key_Space);
@@ -248,8 +268,7 @@ private slots:
         QVERIFY(QTest::qWaitFor([&] { return plots->isAncestorOf(QApplication::focusWidget()); }, 2000));
         const bool paused = plots->isPaused();
         QTest::keyClick(QApplication::focusWidget(), Qt::Key_Space);
-        QTest::qWait(40);
-        QCOMPARE(rig.recording.count(), qsizetype(0));
+        QVERIFY(rig.nothingMore());
         QCOMPARE(plots->isPaused(), !paused);
     }
 
@@ -270,8 +289,7 @@ private slots:
         QCOMPARE(rig.pad()->knob(), QPointF());
         // The drag ended with the focus: a move without a new press sends nothing.
         QTest::mouseMove(rig.area(), rig.at({0, 0.3}));
-        QTest::qWait(40);
-        QCOMPARE(rig.recording.count(), qsizetype(0));
+        QVERIFY(rig.nothingMore());
         QTest::mouseRelease(rig.area(), Qt::LeftButton, {}, rig.at({0, 0.3}));
     }
 
@@ -295,8 +313,9 @@ private slots:
             QTest::mouseMove(rig.area(), rig.at(last));
         }
         const qint64 burstMs = clock.elapsed();
-        QTest::qWait(60);
-        const QList<QByteArray> writes = rig.recording.take();
+        // The last position goes out when the rate limit lets it.
+        QTRY_VERIFY(!rig.window.teleop().hasPendingMotion());
+        const QList<QByteArray> writes = rig.sentSoFar();
         QVERIFY2(burstMs < 110, qPrintable(QString("the burst took %1 ms").arg(burstMs)));
         qInfo("%lld drive commands for 100 moves in %lld ms", qlonglong(writes.size()), burstMs);
         QVERIFY2(writes.size() >= 2 && writes.size() <= 8, qPrintable(QString::number(writes.size())));
@@ -329,8 +348,7 @@ private slots:
         QTest::mouseRelease(rig.area(), Qt::LeftButton, {}, rig.at({0.3, 0.6}));
         QTest::keyPress(rig.area(), Qt::Key_Up);
         QTest::keyRelease(rig.area(), Qt::Key_Up);
-        QTest::qWait(60);
-        QCOMPARE(rig.recording.count(), qsizetype(0));
+        QVERIFY(rig.nothingMore());
 
         QTest::mouseClick(enterSafe, Qt::LeftButton);
         QCOMPARE(rig.next(), QString("131"));
@@ -354,8 +372,7 @@ private slots:
         QCOMPARE(rig.next(), kStop);
         QCOMPARE(rig.pad()->knob(), QPointF());
         QTest::mouseRelease(rig.area(), Qt::LeftButton, {}, rig.at({0.3, 0.6}));
-        QTest::qWait(40);
-        QCOMPARE(rig.recording.count(), qsizetype(0));
+        QVERIFY(rig.nothingMore());
     }
 
     void staleDataStops()
@@ -373,8 +390,7 @@ private slots:
         // No motion goes out while the data is stale.
         QTest::mouseRelease(rig.area(), Qt::LeftButton, {}, rig.at({0, 0.5}));
         QTest::mousePress(rig.area(), Qt::LeftButton, {}, rig.at({0, 0.5}));
-        QTest::qWait(40);
-        QCOMPARE(rig.recording.count(), qsizetype(0));
+        QVERIFY(rig.nothingMore());
         QTest::mouseRelease(rig.area(), Qt::LeftButton, {}, rig.at({0, 0.5}));
     }
 
@@ -395,8 +411,7 @@ private slots:
         QCOMPARE(rig.window.tabifiedDockWidgets(drive), QList<QDockWidget *>{rig.window.findChild<QDockWidget *>("modeDock")});
 
         drive->raise();
-        QTest::qWait(50);
-        QVERIFY(rig.area()->isVisible());
+        QTRY_VERIFY(rig.area()->isVisible());
         QVERIFY2(std::min(rig.area()->width(), rig.area()->height()) >= 200,
                  qPrintable(QString("%1x%2").arg(rig.area()->width()).arg(rig.area()->height())));
         QTest::mousePress(rig.area(), Qt::LeftButton, {}, rig.at({0.35, 0.6}));

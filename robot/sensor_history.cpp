@@ -271,7 +271,10 @@ SensorHistory::Sample SensorHistory::sample(int packetId, std::size_t index) con
     return {timeOfFrame(c->frameOf(index)), c->value(index)};
 }
 
-std::size_t SensorHistory::lowerBound(int packetId, double t) const
+// The index of the channel's first sample whose time is not `before` t: a
+// binary search, since times never decrease.
+template <typename Before>
+std::size_t SensorHistory::firstNotBefore(int packetId, Before before) const
 {
     const Channel *c = channel(packetId);
     if (!c)
@@ -279,7 +282,7 @@ std::size_t SensorHistory::lowerBound(int packetId, double t) const
     std::size_t lo = 0, hi = c->size();
     while (lo < hi) {
         const std::size_t mid = lo + (hi - lo) / 2;
-        if (timeOfFrame(c->frameOf(mid)) < t)
+        if (before(timeOfFrame(c->frameOf(mid))))
             lo = mid + 1;
         else
             hi = mid;
@@ -287,20 +290,14 @@ std::size_t SensorHistory::lowerBound(int packetId, double t) const
     return lo;
 }
 
+std::size_t SensorHistory::lowerBound(int packetId, double t) const
+{
+    return firstNotBefore(packetId, [t](double time) { return time < t; });
+}
+
 std::size_t SensorHistory::upperBound(int packetId, double t) const
 {
-    const Channel *c = channel(packetId);
-    if (!c)
-        return 0;
-    std::size_t lo = 0, hi = c->size();
-    while (lo < hi) {
-        const std::size_t mid = lo + (hi - lo) / 2;
-        if (timeOfFrame(c->frameOf(mid)) <= t)
-            lo = mid + 1;
-        else
-            hi = mid;
-    }
-    return lo;
+    return firstNotBefore(packetId, [t](double time) { return time <= t; });
 }
 
 std::vector<SensorHistory::Sample> SensorHistory::samples(int packetId, double t0, double t1) const

@@ -150,6 +150,8 @@ private:
     };
 
     const Channel *channel(int packetId) const;
+    template <typename Before>
+    std::size_t firstNotBefore(int packetId, Before before) const;
     double timeOfFrame(std::uint64_t frame) const { return m_times[std::size_t(frame - m_firstFrame)]; }
     // Stores one frame of packet values; `value(id)` is read for each id in `present`.
     template <typename ValueOf>

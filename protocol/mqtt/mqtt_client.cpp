@@ -1,0 +1,212 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "mqtt_client.h"
+
+#include <QCoreApplication>
+#include <QFileInfo>
+#include <QMetaObject>
+
+#include <mosquitto.h>
+
+#include <mutex>
+
+namespace mqtt {
+
+namespace {
+
+void initLibraryOnce()
+{
+    static std::once_flag once;
+    std::call_once(once, [] { mosquitto_lib_init(); });
+}
+
+QString tr(const char *text)
+{
+    return QCoreApplication::translate("mqtt::MqttClient", text);
+}
+
+QString connackText(int rc)
+{
+    switch (rc) {
+    case 1:
+        return tr("the broker does not speak this protocol version");
+    case 2:
+        return tr("the broker refused the client id");
+    case 3:
+        return tr("the broker is unavailable");
+    case 4:
+        return tr("wrong user name or password");
+    case 5:
+        return tr("not authorised");
+    default:
+        return QString::fromUtf8(mosquitto_connack_string(rc));
+    }
+}
+
+} // namespace
+
+MqttClient::MqttClient(QString clientId, QObject *parent)
+    : QObject(parent), m_clientId(std::move(clientId))
+{
+    initLibraryOnce();
+    m_retry.setSingleShot(true);
+    connect(&m_retry, &QTimer::timeout, this, &MqttClient::tryConnecting);
+}
+
+MqttClient::~MqttClient()
+{
+    disconnectFromBroker();
+}
+
+bool MqttClient::fail(const QString &message)
+{
+    emit errorOccurred(message);
+    return false;
+}
+
+bool MqttClient::connectToBroker(const BrokerAddress &address)
+{
+    disconnectFromBroker();
+    m_address = address;
+    m_mosq = mosquitto_new(m_clientId.toUtf8().constData(), true, this);
+    if (!m_mosq)
+        return fail(tr("Cannot create an MQTT client: out of memory or a bad client id."));
+    mosquitto_int_option(m_mosq, MOSQ_OPT_PROTOCOL_VERSION, MQTT_PROTOCOL_V311);
+    mosquitto_connect_callback_set(m_mosq, &MqttClient::onConnect);
+    mosquitto_disconnect_callback_set(m_mosq, &MqttClient::onDisconnect);
+    mosquitto_message_callback_set(m_mosq, &MqttClient::onMessage);
+    mosquitto_reconnect_delay_set(m_mosq, kFirstRetryMs / 1000, kLastRetryMs / 1000, true);
+
+    if (!address.username.isEmpty()
+        && mosquitto_username_pw_set(m_mosq, address.username.toUtf8().constData(),
+                                     address.password.isEmpty() ? nullptr : address.password.toUtf8().constData())
+               != MOSQ_ERR_SUCCESS)
+        return fail(tr("The broker user name is not valid."));
+    if (address.tls || !address.caFile.isEmpty()) {
+        for (const QString &file : {address.caFile, address.certFile, address.keyFile})
+            if (!file.isEmpty() && !QFileInfo(file).isReadable())
+                return fail(tr("Cannot read the TLS file %1.").arg(file));
+        const QByteArray ca = address.caFile.toLocal8Bit(), cert = address.certFile.toLocal8Bit(),
+                         key = address.keyFile.toLocal8Bit();
+        // Without a CA file, the system's trusted certificates.
+        const int rc = address.caFile.isEmpty()
+                           ? mosquitto_int_option(m_mosq, MOSQ_OPT_TLS_USE_OS_CERTS, 1)
+                           : mosquitto_tls_set(m_mosq, ca.constData(), nullptr,
+                                               cert.isEmpty() ? nullptr : cert.constData(),
+                                               key.isEmpty() ? nullptr : key.constData(), nullptr);
+        if (rc != MOSQ_ERR_SUCCESS)
+            return fail(tr("The TLS settings were refused: %1").arg(QString::fromUtf8(mosquitto_strerror(rc))));
+    }
+    if (!m_will.topic.isEmpty()
+        && mosquitto_will_set(m_mosq, m_will.topic.toUtf8().constData(), int(m_will.payload.size()),
+                              m_will.payload.constData(), 1, m_will.retain)
+               != MOSQ_ERR_SUCCESS)
+        return fail(tr("The last-will topic %1 is not valid.").arg(m_will.topic));
+
+    m_retryDelayMs = kFirstRetryMs;
+    tryConnecting();
+    return true;
+}
+
+// Until the first connection starts, a refused or unreachable broker is tried
+// again here; after it, libmosquitto's network thread reconnects by itself.
+void MqttClient::tryConnecting()
+{
+    if (!m_mosq || m_loopRunning)
+        return;
+    if (mosquitto_connect_async(m_mosq, m_address.host.toUtf8().constData(), m_address.port, m_keepAliveSeconds)
+        != MOSQ_ERR_SUCCESS) {
+        m_retry.start(m_retryDelayMs);
+        m_retryDelayMs = std::min(m_retryDelayMs * 2, kLastRetryMs);
+        return;
+    }
+    const int rc = mosquitto_loop_start(m_mosq);
+    if (rc != MOSQ_ERR_SUCCESS) {
+        emit errorOccurred(tr("Cannot start the MQTT network thread: %1").arg(QString::fromUtf8(mosquitto_strerror(rc))));
+        return;
+    }
+    m_loopRunning = true;
+}
+
+void MqttClient::disconnectFromBroker()
+{
+    if (!m_mosq)
+        return;
+    const bool wasConnected = m_connected;
+    m_retry.stop();
+    mosquitto_disconnect(m_mosq);
+    if (m_loopRunning)
+        mosquitto_loop_stop(m_mosq, true);
+    m_loopRunning = false;
+    mosquitto_destroy(m_mosq);
+    m_mosq = nullptr;
+    m_connected = false;
+    if (wasConnected)
+        emit disconnected(QString());
+}
+
+void MqttClient::subscribe(const QString &topicFilter, int qos)
+{
+    for (const auto &s : std::as_const(m_subscriptions))
+        if (s.first == topicFilter)
+            return;
+    m_subscriptions.append({topicFilter, qos});
+    if (m_connected)
+        mosquitto_subscribe(m_mosq, nullptr, topicFilter.toUtf8().constData(), qos);
+}
+
+bool MqttClient::publish(const QString &topic, const QByteArray &payload, int qos, bool retain)
+{
+    if (!m_mosq || (!m_connected && qos == 0))
+        return false;
+    return mosquitto_publish(m_mosq, nullptr, topic.toUtf8().constData(), int(payload.size()),
+                             payload.constData(), qos, retain)
+           == MOSQ_ERR_SUCCESS;
+}
+
+// The callbacks run on libmosquitto's network thread: hand over to ours.
+void MqttClient::onConnect(mosquitto *, void *self, int rc)
+{
+    auto *client = static_cast<MqttClient *>(self);
+    QMetaObject::invokeMethod(client, [client, rc] { client->handleConnected(rc); }, Qt::QueuedConnection);
+}
+
+void MqttClient::onDisconnect(mosquitto *, void *self, int rc)
+{
+    auto *client = static_cast<MqttClient *>(self);
+    QMetaObject::invokeMethod(client, [client, rc] { client->handleDisconnected(rc); }, Qt::QueuedConnection);
+}
+
+void MqttClient::onMessage(mosquitto *, void *self, const mosquitto_message *message)
+{
+    auto *client = static_cast<MqttClient *>(self);
+    const QString topic = QString::fromUtf8(message->topic);
+    const QByteArray payload(static_cast<const char *>(message->payload), message->payloadlen);
+    const bool retained = message->retain;
+    QMetaObject::invokeMethod(
+        client, [client, topic, payload, retained] { emit client->messageReceived(topic, payload, retained); },
+        Qt::QueuedConnection);
+}
+
+void MqttClient::handleConnected(int rc)
+{
+    if (!m_mosq)
+        return;
+    if (rc != 0) {
+        emit errorOccurred(tr("%1 refused the connection: %2").arg(m_address.displayUrl(), connackText(rc)));
+        return;
+    }
+    m_connected = true;
+    for (const auto &s : std::as_const(m_subscriptions))
+        mosquitto_subscribe(m_mosq, nullptr, s.first.toUtf8().constData(), s.second);
+    emit connected();
+}
+
+void MqttClient::handleDisconnected(int rc)
+{
+    if (!m_mosq || !m_connected)
+        return;
+    m_connected = false;
+    emit disconnected(rc == 0 ? QString() : tr("lost the connection to %1").arg(m_address.displayUrl()));
+}
+
+} // namespace mqtt

@@ -1,0 +1,90 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "broker_address.h"
+
+#include <QByteArray>
+#include <QObject>
+#include <QString>
+#include <QStringList>
+#include <QTimer>
+
+struct mosquitto;
+struct mosquitto_message;
+
+namespace mqtt {
+
+// A last will: what the broker publishes for this client when it goes away
+// without saying goodbye.
+struct LastWill {
+    QString topic;
+    QByteArray payload;
+    bool retain = true;
+};
+
+// One connection to an MQTT broker, through libmosquitto. The library's own
+// network thread does the socket work and reconnects with exponential backoff
+// (1 s, doubling, up to 30 s); this object reports everything on the thread
+// that owns it. Subscriptions are made again after every reconnect.
+class MqttClient : public QObject {
+    Q_OBJECT
+public:
+    explicit MqttClient(QString clientId, QObject *parent = nullptr);
+    ~MqttClient() override;
+
+    QString clientId() const { return m_clientId; }
+
+    // Before connectToBroker. The will is sent at QoS 1.
+    void setLastWill(const LastWill &will) { m_will = will; }
+    // Keepalive in seconds: how soon the broker notices a client that died
+    // (about 1.5 times this). Default 5.
+    void setKeepAliveSeconds(int seconds) { m_keepAliveSeconds = seconds; }
+
+    // Starts connecting, and keeps reconnecting until disconnectFromBroker.
+    // Returns false, with errorOccurred, for settings the library refuses
+    // (a TLS file that cannot be read, for example).
+    bool connectToBroker(const BrokerAddress &address);
+    // Says goodbye to the broker (so no will is published), waits for the
+    // network thread to end, and stays disconnected.
+    void disconnectFromBroker();
+    bool isConnected() const { return m_connected; }
+    BrokerAddress address() const { return m_address; }
+
+    // Kept and made again after each reconnect. Wildcards + and # allowed.
+    void subscribe(const QString &topicFilter, int qos = 0);
+    // Queued for sending; false if the library refuses it (not connected
+    // and QoS 0, payload too large, bad topic).
+    bool publish(const QString &topic, const QByteArray &payload, int qos = 0, bool retain = false);
+
+signals:
+    void connected();
+    // `reason` is empty after disconnectFromBroker.
+    void disconnected(const QString &reason);
+    void messageReceived(const QString &topic, const QByteArray &payload, bool retained);
+    // Settings refused, or the broker refused the login.
+    void errorOccurred(const QString &message);
+
+private:
+    static void onConnect(mosquitto *, void *self, int rc);
+    static void onDisconnect(mosquitto *, void *self, int rc);
+    static void onMessage(mosquitto *, void *self, const mosquitto_message *message);
+
+    void tryConnecting();
+    void handleConnected(int rc);
+    void handleDisconnected(int rc);
+    bool fail(const QString &message);
+
+    QString m_clientId;
+    LastWill m_will;
+    int m_keepAliveSeconds = 5;
+    BrokerAddress m_address;
+    mosquitto *m_mosq = nullptr;
+    bool m_connected = false;
+    bool m_loopRunning = false;
+    static constexpr int kFirstRetryMs = 1000, kLastRetryMs = 30000;
+    QTimer m_retry;
+    int m_retryDelayMs = kFirstRetryMs;
+    QList<QPair<QString, int>> m_subscriptions;
+};
+
+} // namespace mqtt

@@ -3,16 +3,14 @@
 
 #include "command_catalog.h"
 #include "command_modes.h"
-#include "transport.h"
+#include "robot_link.h"
+
+#include <QTimer>
 
 namespace {
 
-constexpr int kDrainMs = 80;
-constexpr int kStateTimeoutMs = 400;
-constexpr int kReplyTimeoutMs = 1000;
-constexpr int kFlushMs = 500;
 // Mode, song playing, bumps and wheel drops, the four cliffs, charging sources.
-constexpr std::uint8_t kStateIds[] = {35, 37, 7, 9, 10, 11, 12, 34};
+const QList<int> kStateIds{35, 37, 7, 9, 10, 11, 12, 34};
 
 bool isMotion(oi::Command c)
 {
@@ -23,60 +21,45 @@ QString fromStd(const std::string &text) { return QString::fromStdString(text); 
 
 } // namespace
 
-CommandSender::CommandSender(oilink::Transport &transport, Order order, QObject *parent)
-    : QObject(parent), m_transport(transport), m_order(std::move(order)), m_timer(this)
+CommandSender::CommandSender(oilink::RobotLink &link, Order order, QObject *parent)
+    : QObject(parent), m_link(link), m_order(std::move(order))
 {
-    m_timer.setSingleShot(true);
-    connect(&m_timer, &QTimer::timeout, this, &CommandSender::onTimeout);
-    connect(&m_transport, &oilink::Transport::opened, this, &CommandSender::onOpened);
-    connect(&m_transport, &oilink::Transport::bytesReceived, this, &CommandSender::onBytes);
-    connect(&m_transport, &oilink::Transport::errorOccurred, this,
-            [this](const QString &message) { finish(1, message); });
-    m_parser.setSnapshotHandler([this](const oi::SensorSnapshot &s, oi::FrameKind kind) {
-        if (m_phase == Phase::AskingState) {
-            // Not from inside the parser: deciding resets it.
-            m_timer.stop();
-            m_phase = Phase::Idle;
-            QMetaObject::invokeMethod(this, [this, s] { decide(s); }, Qt::QueuedConnection);
-        } else if (m_phase == Phase::AwaitingReply) {
-            emit replied(s, kind);
-            finish(0);
-        }
+    m_order.settings.streaming = false;
+    m_order.settings.startIfSilent = m_order.changeMode;
+    connect(&m_link, &oilink::RobotLink::requestsReady, this, [this](oi::ProfileId id, int) { useProfile(id); });
+    connect(&m_link, &oilink::RobotLink::sensorReply, this, &CommandSender::onReply);
+    connect(&m_link, &oilink::RobotLink::sensorQueryFailed, this, &CommandSender::onQueryFailed);
+    connect(&m_link, &oilink::RobotLink::errorOccurred, this, &CommandSender::onLinkError);
+    connect(&m_link, &oilink::RobotLink::stateChanged, this, [this](oilink::LinkState state) {
+        if (state == oilink::LinkState::Lost)
+            finish(1, QStringLiteral("%1: the connection was lost").arg(m_order.settings.describe()));
     });
 }
-
-CommandSender::~CommandSender() = default;
 
 void CommandSender::start()
 {
     // From inside the event loop, so that an answer given during open() can end it.
-    QTimer::singleShot(0, this, [this] { m_transport.open(); });
+    QTimer::singleShot(0, this, [this] { m_link.open(m_order.settings); });
 }
 
-void CommandSender::onOpened()
+// Before the profile is known, an error means the robot cannot be reached;
+// after it, a failed query is handled by onQueryFailed.
+void CommandSender::onLinkError(const QString &message)
 {
-    if (m_order.profile) {
-        useProfile(*m_order.profile);
+    if (m_phase != Phase::Opening)
         return;
-    }
-    m_phase = Phase::Probing;
-    m_probe = std::make_unique<oilink::ProfileProbe>(m_transport, m_order.bauds);
-    m_probe->setStartPolicy(m_order.changeMode ? oilink::ProfileProbe::StartPolicy::IfSilent
-                                               : oilink::ProfileProbe::StartPolicy::Never);
-    connect(m_probe.get(), &oilink::ProfileProbe::detected, this,
-            [this](oi::ProfileId id, int) { useProfile(id); });
-    connect(m_probe.get(), &oilink::ProfileProbe::failed, this, [this] {
-        finish(1, m_order.changeMode
-                      ? QStringLiteral("%1: no data: is the robot on, and is the baud right?").arg(m_transport.describe())
-                      : QStringLiteral("%1: no answer: is the robot on, and is the baud right? (In Off mode it answers "
-                           "only after Start, which --no-mode-change leaves out.)")
-                            .arg(m_transport.describe()));
-    });
-    m_probe->start();
+    if (!m_order.changeMode && message.contains(QStringLiteral("no data")))
+        finish(1, QStringLiteral("%1: no answer: is the robot on, and is the baud right? (In Off mode it answers "
+                                 "only after Start, which --no-mode-change leaves out.)")
+                      .arg(m_order.settings.describe()));
+    else
+        finish(1, message);
 }
 
 void CommandSender::useProfile(oi::ProfileId id)
 {
+    if (m_phase != Phase::Opening)
+        return;
     m_profile = &oi::profile(id);
     const oi::EncodeResult bytes = oi::encodeCommand(oi::CommandEncoder(*m_profile), m_order.name, m_order.args);
     if (!bytes) {
@@ -86,7 +69,6 @@ void CommandSender::useProfile(oi::ProfileId id)
     if (!bytes.warning.empty())
         emit warning(fromStd(bytes.warning));
     m_command = *bytes;
-    m_parser.setProfile(*m_profile);
     const oi::CommandSpec *spec = oi::commandSpecForOpcode(*m_profile, m_command.front());
     if (spec && oi::availableWhenOff(spec->command))
         sendCommand(); // works in every mode: nothing to ask
@@ -94,48 +76,44 @@ void CommandSender::useProfile(oi::ProfileId id)
         askState();
 }
 
-// An earlier client may have left a stream running: pause it and let it
-// drain, since a reply carries no framing (ERRATA 3).
 void CommandSender::askState()
 {
-    m_phase = Phase::Draining;
-    write({150, 0});
-    m_timer.start(kDrainMs);
+    m_phase = Phase::AskingState;
+    m_link.querySensors(kStateIds);
 }
 
-void CommandSender::onTimeout()
+void CommandSender::onReply(const oi::SensorSnapshot &reply)
 {
-    switch (m_phase) {
-    case Phase::Draining: {
-        m_phase = Phase::AskingState;
-        m_parser.reset();
-        m_parser.expectReply(kStateIds);
-        const std::vector<int> ids(std::begin(kStateIds), std::end(kStateIds));
-        write(*oi::CommandEncoder(*m_profile).queryList(ids));
-        m_timer.start(kStateTimeoutMs);
+    if (m_phase == Phase::AskingState) {
+        m_phase = Phase::Opening; // until decided
+        // Not from inside the link's parser: deciding may ask again.
+        QMetaObject::invokeMethod(this, [this, reply] { decide(reply); }, Qt::QueuedConnection);
+    } else if (m_phase == Phase::AwaitingReply) {
+        emit replied(reply);
+        finish(0);
+    }
+}
+
+void CommandSender::onQueryFailed()
+{
+    if (m_phase == Phase::AwaitingReply) {
+        finish(1, QStringLiteral("%1: no reply to %2").arg(m_order.settings.describe(), fromStd(m_order.name)));
         return;
     }
-    case Phase::AskingState:
-        if (!m_startSent && m_order.changeMode) {
-            // Silent: Off mode, which only Start leaves.
-            m_startSent = true;
-            write({128});
-            m_phase = Phase::Draining;
-            onTimeout();
-            return;
-        }
-        finish(1, m_order.changeMode
-                      ? QStringLiteral("%1: no answer: is the robot on, and is the baud right?").arg(m_transport.describe())
-                      : QStringLiteral("%1: no answer: the robot may be in Off mode, which only Start leaves "
-                           "(leave out --no-mode-change)")
-                            .arg(m_transport.describe()));
+    if (m_phase != Phase::AskingState)
         return;
-    case Phase::AwaitingReply:
-        finish(1, QStringLiteral("%1: no reply to %2").arg(m_transport.describe(), fromStd(m_order.name)));
-        return;
-    default:
+    if (!m_startSent && m_order.changeMode) {
+        // Silent: Off mode, which only Start leaves.
+        m_startSent = true;
+        send({128});
+        askState();
         return;
     }
+    finish(1, m_order.changeMode
+                  ? QStringLiteral("%1: no answer: is the robot on, and is the baud right?").arg(m_order.settings.describe())
+                  : QStringLiteral("%1: no answer: the robot may be in Off mode, which only Start leaves "
+                                   "(leave out --no-mode-change)")
+                        .arg(m_order.settings.describe()));
 }
 
 void CommandSender::decide(const oi::SensorSnapshot &state)
@@ -151,7 +129,7 @@ void CommandSender::decide(const oi::SensorSnapshot &state)
                           .arg(name));
             return;
         }
-        write({131});
+        send({131});
         mode = oi::OiMode::Safe;
         emit note(QStringLiteral("the robot was in Passive mode: entered Safe mode for %1").arg(name));
     }
@@ -175,32 +153,18 @@ void CommandSender::sendCommand()
 {
     const std::uint8_t opcode = m_command.front();
     if (opcode != 142 && opcode != 149) {
-        write(m_command);
-        m_transport.flush(kFlushMs);
-        finish(0);
+        send(m_command);
+        finish(0); // the caller closes the link, which sends what is queued first
         return;
     }
-    const std::vector<std::uint8_t> ids(m_command.begin() + (opcode == 142 ? 1 : 2), m_command.end());
-    m_parser.reset();
-    m_parser.expectReply(ids);
     m_phase = Phase::AwaitingReply;
-    write(m_command);
-    m_timer.start(kReplyTimeoutMs);
+    const auto from = m_command.begin() + (opcode == 142 ? 1 : 2);
+    m_link.querySensors(QList<int>(from, m_command.end()));
 }
 
-void CommandSender::onBytes(const QByteArray &bytes)
+void CommandSender::send(const oi::Bytes &bytes)
 {
-    if (m_probe && m_probe->isRunning()) {
-        m_probe->feed(bytes);
-        return;
-    }
-    if (m_phase == Phase::AskingState || m_phase == Phase::AwaitingReply)
-        m_parser.feed({reinterpret_cast<const std::uint8_t *>(bytes.constData()), std::size_t(bytes.size())});
-}
-
-void CommandSender::write(const oi::Bytes &bytes)
-{
-    m_transport.write(QByteArray(reinterpret_cast<const char *>(bytes.data()), qsizetype(bytes.size())));
+    m_link.send(QByteArray(reinterpret_cast<const char *>(bytes.data()), qsizetype(bytes.size())));
 }
 
 void CommandSender::finish(int status, const QString &error)
@@ -208,8 +172,5 @@ void CommandSender::finish(int status, const QString &error)
     if (m_phase == Phase::Done)
         return;
     m_phase = Phase::Done;
-    m_timer.stop();
-    if (m_probe)
-        m_probe->cancel();
     emit finished(status, error);
 }

@@ -7,6 +7,7 @@
 #include "connection_doctor.h"
 #include "profile_probe.h"
 #include "recording_file.h"
+#include "robot_link.h"
 #include "robot_link_thread.h"
 #include "script_assembler.h"
 #include "stream_parser.h"
@@ -531,13 +532,12 @@ int sendToRobot(int argc, char **argv, const std::vector<std::string> &args)
     CommandSender::Order order;
     order.name = args[at];
     order.args.assign(args.begin() + at + 1, args.end());
-    order.profile = o.settings.profile;
-    order.bauds = o.baud > 0 ? QList<int>{o.baud} : oilink::ProfileProbe::defaultBauds();
+    order.settings = o.settings;
     order.changeMode = o.changeMode;
     // Where the profile is known, a bad command never touches the port.
-    if (order.profile) {
+    if (order.settings.profile) {
         const oi::EncodeResult bytes =
-            oi::encodeCommand(oi::CommandEncoder(oi::profile(*order.profile)), order.name, order.args);
+            oi::encodeCommand(oi::CommandEncoder(oi::profile(*order.settings.profile)), order.name, order.args);
         if (!bytes) {
             std::cerr << "roomba-ctl: " << bytes.error().describe() << "\n";
             return 1;
@@ -545,14 +545,13 @@ int sendToRobot(int argc, char **argv, const std::vector<std::string> &args)
     }
 
     QCoreApplication app(argc, argv);
-    const int openBaud = o.baud > 0 ? o.baud
-                         : order.profile ? oi::profile(*order.profile).defaultBaud
-                                         : order.bauds.front();
-    std::unique_ptr<oilink::Transport> transport(transports::createTransport(o.settings, openBaud));
-    CommandSender sender(*transport, order);
+    oilink::registerLinkMetaTypes();
+    oilink::RobotLink link;
+    link.setTransportFactory(transports::transportFactory());
+    CommandSender sender(link, order);
     int status = 0;
-    QObject::connect(&sender, &CommandSender::replied, &app, [](const oi::SensorSnapshot &s, oi::FrameKind kind) {
-        std::cout << snapshotJson(s, kind) << std::endl;
+    QObject::connect(&sender, &CommandSender::replied, &app, [](const oi::SensorSnapshot &s) {
+        std::cout << snapshotJson(s, oi::FrameKind::Reply) << std::endl;
     });
     QObject::connect(&sender, &CommandSender::warning, &app,
                      [](const QString &text) { std::cerr << "roomba-ctl: warning: " << toStd(text) << "\n"; });
@@ -571,7 +570,7 @@ int sendToRobot(int argc, char **argv, const std::vector<std::string> &args)
     });
     sender.start();
     QCoreApplication::exec();
-    transport->close();
+    link.close();
     return status;
 }
 

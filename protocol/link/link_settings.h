@@ -46,6 +46,13 @@ struct LinkSettings {
     // In Passive, a BRC pulse this often keeps a Create 2 from sleeping
     // (its document: within 5 minutes); 0 turns it off.
     int keepAwakeMs = 60'000;
+    // false: the link only sends commands and asks for sensors (roomba-ctl
+    // send). It sends no Start and starts no stream, and close() leaves the
+    // robot as its commands left it.
+    bool streaming = true;
+    // Without streaming: whether finding the profile may send Start to a
+    // silent robot (which leaves Safe or Full mode).
+    bool startIfSilent = true;
 
     // "/dev/ttyUSB0", "raspberrypi:3333", "virtual Create 2": for messages.
     QString describe() const;

@@ -157,7 +157,9 @@ void RobotLink::close()
         t->stop();
     m_queries.clear();
     m_queryPhase = QueryPhase::None;
-    if (m_transport && m_transportOpen) {
+    if (m_transport && m_transportOpen && !m_settings.streaming) {
+        m_transport->flush(kFlushMs); // what was sent is carried out
+    } else if (m_transport && m_transportOpen) {
         // ERRATA 17: leave it stopped and in Passive, where it saves its battery.
         // The bytes are the same on every profile, so this holds even while
         // the probe has not yet found which one it is.
@@ -245,7 +247,7 @@ void RobotLink::onTransportOpened()
     m_brc->setKeepAwake(m_settings.keepAwakeMs);
     dropPartialInput();
     if (m_profile)
-        startStream();
+        useProfile();
     else
         startProbe();
 }
@@ -283,6 +285,10 @@ void RobotLink::startProbe()
     if (!m_probe) {
         const QList<int> bauds = m_settings.baud > 0 ? QList<int>{m_settings.baud} : ProfileProbe::defaultBauds();
         m_probe = new ProfileProbe(*m_transport, bauds, this);
+        if (!m_settings.streaming && !m_settings.startIfSilent)
+            m_probe->setStartPolicy(ProfileProbe::StartPolicy::Never);
+        else if (!m_settings.streaming)
+            m_probe->setStartPolicy(ProfileProbe::StartPolicy::IfSilent);
         connect(m_probe, &ProfileProbe::bytesSent, this, [this](const QByteArray &bytes) {
             m_totals.bytesSent += static_cast<quint64>(bytes.size());
             record(recording::RecordKind::Sent, bytes);
@@ -295,7 +301,7 @@ void RobotLink::startProbe()
             m_probe->deleteLater();
             m_probe = nullptr;
             m_rearmMs = kNoDataAfterMs;
-            startStream();
+            useProfile();
         });
         connect(m_probe, &ProfileProbe::failed, this, &RobotLink::onProbeFailed);
     }
@@ -319,6 +325,16 @@ QString RobotLink::noDataMessage() const
 }
 
 // --- The stream ---
+
+void RobotLink::useProfile()
+{
+    if (m_settings.streaming) {
+        startStream();
+        return;
+    }
+    m_parser.setProfile(*m_profile);
+    emit requestsReady(m_profile->id, baud());
+}
 
 void RobotLink::startStream()
 {
@@ -515,7 +531,8 @@ void RobotLink::startNextQuery()
     if (m_queries.empty() || m_queryPhase != QueryPhase::None || !m_transport || !m_transportOpen)
         return;
     m_queryTimeout.start();
-    if (m_streamRequested) {
+    // Without streaming, a stream an earlier client left running is paused too.
+    if (m_streamRequested || !m_settings.streaming) {
         m_queryPhase = QueryPhase::Pausing;
         m_watchdog.stop();
         writeBytes(streamStateBytes(false));
@@ -572,15 +589,19 @@ bool RobotLink::takeScriptReply(const QByteArray &bytes)
 void RobotLink::onQueryTimeout()
 {
     if (m_queryPhase == QueryPhase::Pausing) {
-        reportError(tr("%1: the stream did not pause; the sensor query was not sent").arg(m_settings.describe()),
-                    false);
+        const QString message = tr("%1: the stream did not pause; the sensor query was not sent").arg(m_settings.describe());
+        reportError(message, false);
+        if (!m_queries.empty() && !m_queries.front().script)
+            emit sensorQueryFailed(message);
     } else if (!m_queries.empty() && m_queries.front().script) {
         m_scriptReply.clear();
         emit scriptFailed(tr("%1: no reply to Show Script").arg(m_settings.describe()));
     } else {
         m_parser.cancelReplies();
         dropPartialInput();
-        reportError(tr("%1: no reply to the sensor query").arg(m_settings.describe()), false);
+        const QString message = tr("%1: no reply to the sensor query").arg(m_settings.describe());
+        reportError(message, false);
+        emit sensorQueryFailed(message);
     }
     finishQuery();
 }

@@ -105,6 +105,11 @@ signals:
     void statistics(const oilink::LinkStats &stats); // about once a second, and on change
     // Start and Stream were sent: which profile, at which baud, which packets.
     void streamStarted(oi::ProfileId profile, int baud, const QList<int> &packets);
+    // Without streaming (LinkSettings::streaming): the profile is known and
+    // commands and sensor queries can go.
+    void requestsReady(oi::ProfileId profile, int baud);
+    // A Sensors or Query List request got no answer (errorOccurred says so too).
+    void sensorQueryFailed(const QString &message);
     void rawBytesSent(const QByteArray &bytes);
     void rawBytesReceived(const QByteArray &bytes);
     void errorOccurred(const QString &message);
@@ -132,6 +137,7 @@ private:
     void onBytes(const QByteArray &bytes);
     void startProbe();
     void onProbeFailed();
+    void useProfile();
     void startStream();
     void rearmStream();
     void onFrame(const oi::SensorSnapshot &frame);

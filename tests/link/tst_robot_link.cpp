@@ -362,6 +362,42 @@ private slots:
         QCOMPARE(m_link->state(), LinkState::Streaming);
     }
 
+    // roomba-ctl send: no Start, no stream, nothing on close; a query
+    // pauses a stream an earlier client may have left running, and does not
+    // resume it.
+    void withoutStreamingTheLinkOnlySendsAndAsks()
+    {
+        LinkSettings settings = create2();
+        settings.streaming = false;
+        QSignalSpy ready(m_link, &RobotLink::requestsReady);
+        QSignalSpy replies(m_link, &RobotLink::sensorReply);
+        QSignalSpy failed(m_link, &RobotLink::sensorQueryFailed);
+        m_link->open(settings);
+        QPointer<RecordingTransport> t = current();
+        QCOMPARE(ready.size(), 1);
+        QCOMPARE(ready.at(0).at(0).value<oi::ProfileId>(), oi::ProfileId::Create2);
+        QCOMPARE(t->written(), QByteArray());
+
+        m_link->querySensors({7});
+        QCOMPARE(t->written(), bytes({150, 0}));
+        QTRY_COMPARE_WITH_TIMEOUT(t->written(), bytes({150, 0, 142, 7}), 5000);
+        t->inject(bytes({0x01}));
+        QCOMPARE(replies.size(), 1);
+        QVERIFY(replies.at(0).at(0).value<oi::SensorSnapshot>().bumpRight());
+        QCOMPARE(t->written(), bytes({150, 0, 142, 7})); // not resumed
+
+        m_link->querySensors({35});
+        QTRY_COMPARE_WITH_TIMEOUT(failed.size(), 1, 5000);
+        QCOMPARE(failed.at(0).at(0).toString(), QStringLiteral("/dev/recording: no reply to the sensor query"));
+
+        t->clearWritten();
+        m_link->send(bytes({137, 0, 200, 128, 0}));
+        m_link->close();
+        QVERIFY(t);
+        QCOMPARE(t->written(), bytes({137, 0, 200, 128, 0})); // no shutdown: the robot drives on
+        QCOMPARE(t->flushes(), 1);
+    }
+
     void badQueriesAreRefused()
     {
         QSignalSpy errors(m_link, &RobotLink::errorOccurred);

@@ -165,7 +165,9 @@ void RobotSession::onBytesSent(const QByteArray &bytes)
         m_awaitingBanner = true;
         m_bannerText.clear();
     }
-    emit bytesSent(bytes, QDateTime::currentMSecsSinceEpoch());
+    const qint64 now = QDateTime::currentMSecsSinceEpoch();
+    m_recentBytes.append(true, bytes, now);
+    emit bytesSent(bytes, now);
 }
 
 void RobotSession::onBytesReceived(const QByteArray &bytes)
@@ -182,5 +184,7 @@ void RobotSession::onBytesReceived(const QByteArray &bytes)
             emit firmwareChanged(m_firmware);
         }
     }
-    emit bytesReceived(bytes, QDateTime::currentMSecsSinceEpoch());
+    const qint64 now = QDateTime::currentMSecsSinceEpoch();
+    m_recentBytes.append(false, bytes, now);
+    emit bytesReceived(bytes, now);
 }

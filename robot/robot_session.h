@@ -2,6 +2,7 @@
 #pragma once
 
 #include "firmware_banner.h"
+#include "recent_bytes.h"
 #include "robot_link_thread.h"
 #include "robot_odometry.h"
 #include "sensor_history.h"
@@ -43,6 +44,8 @@ public:
     bool isConnected() const { return m_connected; }
     // When connectTo() was last called, in ms since the epoch (as bytes are stamped).
     qint64 connectedAtMs() const { return m_connectedAtMs; }
+    // The last bytes each way, for the inspector when this robot is selected.
+    const RecentBytes &recentBytes() const { return m_recentBytes; }
     // Where the robot is (or was, or will be) connected.
     const oilink::LinkSettings &settings() const { return m_settings; }
     // Where a robot that is not connected would connect; connects nothing.
@@ -139,6 +142,7 @@ private:
     bool m_awaitingBanner = false;
     QByteArray m_bannerText;
     SensorHistory m_history;
+    RecentBytes m_recentBytes;
     RobotOdometry m_odometry;
     // Last: it reads the members above, and is destroyed first.
     TeleopController m_teleop{*this};

@@ -357,9 +357,12 @@ void MainWindow::showSelected(RobotSession *robot)
     // odometry does, so a class can watch the estimate drift from the room.
     m_shownWorldVersion = 0;
     showRoom();
+    applyProfile(robot->robotProfile().id);
+    // The robot's own recent bytes, not the last robot's.
     m_inspector->clear();
     m_inspector->setConnectedAt(robot->connectedAtMs());
-    applyProfile(robot->robotProfile().id);
+    for (const RecentBytes::Chunk &chunk : robot->recentBytes().chunks())
+        chunk.sent ? m_inspector->appendTx(chunk.bytes, chunk.msecs) : m_inspector->appendRx(chunk.bytes, chunk.msecs);
     m_modePanel->setFirmware(robot->firmwareRelease());
     m_drivePad->setPassive(teleop->isPassive());
     m_drivePad->resetToCentre();

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Several robots in one window: driving the selected one, Stop all, the
 // robot list, and the list kept between runs.
+#include "byte_inspector.h"
 #include "command_encoder.h"
 #include "drive_pad.h"
 #include "main_window.h"
@@ -163,6 +164,11 @@ private slots:
         QVERIFY(rig.window.statusText().contains("Bea"));
         QVERIFY(rig.window.findChild<QDockWidget *>("driveDock")->windowTitle().contains("Bea"));
         QCOMPARE(rig.window.sensorPlots()->history(), &rig.robot(1)->history());
+        // The inspector shows the selected robot's own recent bytes.
+        const RecentBytes &recent = rig.robot(1)->recentBytes();
+        QVERIFY(recent.size() > 0);
+        QCOMPARE(qint64(rig.window.byteInspector()->txBytes() + rig.window.byteInspector()->rxBytes()),
+                 qint64(recent.size()));
         // The robot nobody looks at keeps a lighter history.
         QVERIFY(!rig.robot(1)->history().isReducedRate());
         QVERIFY(rig.robot(0)->history().isReducedRate());

@@ -77,8 +77,6 @@ MainWindow::MainWindow(QWidget *parent)
     setCentralWidget(m_diagram);
     m_layout = new DockLayout(this);
     m_status = new RobotStatusBar(statusBar());
-    m_doctorDetails = new DoctorDetails(this);
-    statusBar()->addWidget(m_doctorDetails, 1);
     m_recording = new RecordingActions(m_fleet, this);
     connect(m_recording, &RecordingActions::message, this, [this](const QString &m) { statusBar()->showMessage(m, 5000); });
     buildDocks();
@@ -239,7 +237,14 @@ void MainWindow::onRobotAdded(RobotSession *robot)
         });
     placeInRoom(robot, robot->settings());
     // A robot that sends nothing is examined: asleep, wrong baud, another profile.
-    new ConnectionCheckup(*robot, *m_doctorDetails, ConnectionCheckup::askWithDialog(this), robot);
+    // Each robot's check has its own line in the status bar, shown while it is selected.
+    auto *details = new DoctorDetails(this);
+    details->setShownRobot(false);
+    statusBar()->addWidget(details, 1);
+    m_doctorDetails.insert(robot, details);
+    // Not through the window: it may be mid-destruction when the robot goes.
+    connect(robot, &QObject::destroyed, details, &QObject::deleteLater);
+    new ConnectionCheckup(*robot, *details, ConnectionCheckup::askWithDialog(this), robot);
     if (m_historyCapacity)
         robot->setHistoryCapacity(*m_historyCapacity);
     connect(robot, &RobotSession::identityChanged, this, [this, robot] {
@@ -358,6 +363,9 @@ void MainWindow::showSelected(RobotSession *robot)
     m_shownWorldVersion = 0;
     showRoom();
     applyProfile(robot->robotProfile().id);
+    m_doctorDetails.removeIf([](const auto &entry) { return entry.value().isNull(); }); // removed robots
+    for (auto it = m_doctorDetails.cbegin(); it != m_doctorDetails.cend(); ++it)
+        it.value()->setShownRobot(it.key() == robot);
     // The robot's own recent bytes, not the last robot's.
     m_inspector->clear();
     m_inspector->setConnectedAt(robot->connectedAtMs());

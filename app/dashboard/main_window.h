@@ -10,6 +10,7 @@
 
 #include <QHash>
 #include <QMainWindow>
+#include <QPointer>
 #include <QTimer>
 
 #include <atomic>
@@ -175,7 +176,7 @@ private:
     KeyboardDriving *m_keyboard = nullptr;
     RobotStatusBar *m_status = nullptr;
     RecordingActions *m_recording = nullptr;
-    DoctorDetails *m_doctorDetails = nullptr; // what the last connection check found
+    QHash<const RobotSession *, QPointer<DoctorDetails>> m_doctorDetails; // what each robot's last connection check found
 
     QMenu *m_fileMenu = nullptr;
     QMenu *m_viewMenu = nullptr;

@@ -48,6 +48,32 @@ private slots:
         QVERIFY(!details->isVisible());
         QVERIFY(details->steps().isEmpty());
     }
+
+    // One line per robot: only the selected robot's shows, and it keeps
+    // its finding while another robot is selected.
+    void shownOnlyForTheSelectedRobot()
+    {
+        QWidget window;
+        auto *layout = new QHBoxLayout(&window);
+        auto *first = new DoctorDetails(&window);
+        auto *second = new DoctorDetails(&window);
+        layout->addWidget(first, 1);
+        layout->addWidget(second, 1);
+        window.show();
+        second->setShownRobot(false);
+        first->finish(QStringLiteral("Nothing comes back."));
+        second->finish(QStringLiteral("The robot was asleep."));
+        QVERIFY(first->isVisible());
+        QVERIFY(!second->isVisible());
+
+        first->setShownRobot(false);
+        second->setShownRobot(true);
+        QVERIFY(!first->isVisible());
+        QVERIFY(second->isVisible());
+        QCOMPARE(first->summary(), QStringLiteral("Nothing comes back."));
+        second->clear();
+        QVERIFY(!second->isVisible()); // nothing to say
+    }
 };
 
 QTEST_MAIN(TestDoctorDetails)

@@ -30,7 +30,8 @@ void DoctorDetails::start()
     m_summary.clear();
     m_line->setText(tr("Checking the connection…"));
     m_detailsButton->setEnabled(false);
-    setVisible(true);
+    m_hasNews = true;
+    updateVisibility();
 }
 
 void DoctorDetails::addStep(const QString &step)
@@ -50,7 +51,8 @@ void DoctorDetails::finish(const QString &summary)
     m_detailsButton->setEnabled(true);
     if (m_viewSummary)
         m_viewSummary->setText(summary);
-    setVisible(true);
+    m_hasNews = true;
+    updateVisibility();
 }
 
 void DoctorDetails::clear()
@@ -58,7 +60,19 @@ void DoctorDetails::clear()
     m_steps.clear();
     m_summary.clear();
     m_line->clear();
-    setVisible(false);
+    m_hasNews = false;
+    updateVisibility();
+}
+
+void DoctorDetails::setShownRobot(bool shown)
+{
+    m_shownRobot = shown;
+    updateVisibility();
+}
+
+void DoctorDetails::updateVisibility()
+{
+    setVisible(m_shownRobot && m_hasNews);
 }
 
 QWidget *DoctorDetails::detailsView()

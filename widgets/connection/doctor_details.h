@@ -19,6 +19,9 @@ public:
     void addStep(const QString &step);
     void finish(const QString &summary);
     void clear();                      // hidden until the next check
+    // Whether its robot is the one the window shows: it is visible only
+    // then, and only with something to say.
+    void setShownRobot(bool shown);
 
     QString summary() const { return m_summary; }
     QStringList steps() const { return m_steps; }
@@ -27,6 +30,7 @@ public:
 
 private:
     void showDetails();
+    void updateVisibility();
 
     QLabel *m_line;
     QPushButton *m_detailsButton;
@@ -35,4 +39,6 @@ private:
     QListWidget *m_viewSteps = nullptr;
     QString m_summary;
     QStringList m_steps;
+    bool m_shownRobot = true;
+    bool m_hasNews = false;
 };

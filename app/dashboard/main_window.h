@@ -36,6 +36,7 @@ class QMenu;
 class QPushButton;
 class QToolBar;
 class RecordingActions;
+class RoomActions;
 class ReplayBar;
 class RobotDiagram;
 class RobotList;
@@ -67,6 +68,7 @@ public:
     // The room every virtual robot of the window drives in, and the selected
     // robot's place in it (-1 when it is not a virtual robot).
     const std::shared_ptr<sim::Room> &room() const { return m_room; }
+    RoomActions *roomActions() const { return m_roomActions; }
     sim::RobotId roomRobot() const;
     const SensorHistory &history() { return session().history(); }
     // Samples kept per channel for every robot; clears the histories. For the
@@ -175,6 +177,7 @@ private:
     KeyboardDriving *m_keyboard = nullptr;
     RobotStatusBar *m_status = nullptr;
     RecordingActions *m_recording = nullptr;
+    RoomActions *m_roomActions = nullptr; // the room as a document: files and edits
     DoctorDetails *m_doctorDetails = nullptr; // what the last connection check found
 
     QMenu *m_fileMenu = nullptr;

@@ -697,6 +697,9 @@ void OdometryMap::paintSelection(QPainter &painter) const
     case sim::WorldPart::Wall: {
         const sim::Segment &s = world.walls[std::size_t(item.index)];
         painter.drawLine(widgetPointFor({s.x1, s.y1}), widgetPointFor({s.x2, s.y2}));
+        // The wall itself in the highlight colour, so it stands out from its neighbours.
+        painter.setPen(QPen(palette().color(QPalette::Highlight), 6, Qt::SolidLine, Qt::RoundCap));
+        painter.drawLine(widgetPointFor({s.x1, s.y1}), widgetPointFor({s.x2, s.y2}));
         break;
     }
     case sim::WorldPart::DropOff: {
@@ -754,7 +757,11 @@ void OdometryMap::paintEditBanner(QPainter &painter, const QRect &area) const
     const QFont bold = display::valueFont(font(), 1.15);
     const QFontMetrics fm(bold);
     const int pad = fm.averageCharWidth();
-    const QRect box(area.left() + 8, area.top() + fm.height() + 8, fm.horizontalAdvance(text) + 2 * pad, fm.height() + pad);
+    // At the foot of the map, between the pose and the scale bar, clear of
+    // the room's far corners where walls are often taken.
+    const int w = fm.horizontalAdvance(text) + 2 * pad, h = fm.height() + pad;
+    const int left = std::max(m_poseLabel->geometry().right() + 8, area.center().x() - w / 2);
+    const QRect box(std::min(left, std::max(8, area.right() - 8 - w)), area.bottom() - 8 - h, w, h);
     painter.setPen(Qt::NoPen);
     painter.setBrush(frame);
     painter.drawRoundedRect(box, 4, 4);

@@ -298,6 +298,10 @@ private slots:
             QVERIFY(m_map->grab().save(QDir(qEnvironmentVariable("ROOMBA_SCREENSHOTS")).filePath("room_edit_stage_edge.png")));
             click(at(-770, 0));
             QVERIFY(m_map->grab().save(QDir(qEnvironmentVariable("ROOMBA_SCREENSHOTS")).filePath("room_edit_dock.png")));
+            std::unique_ptr<QMenu> menu(m_map->contextMenuAt(at(2000, 1000)));
+            menu->popup(m_map->mapToGlobal(at(2000, 1000)));
+            QVERIFY(QTest::qWaitForWindowExposed(menu.get()));
+            QVERIFY(menu->grab().save(QDir(qEnvironmentVariable("ROOMBA_SCREENSHOTS")).filePath("room_edit_menu.png")));
         }
     }
 };

@@ -751,7 +751,7 @@ void OdometryMap::paintEditBanner(QPainter &painter, const QRect &area) const
     painter.setBrush(Qt::NoBrush);
     painter.drawRect(QRectF(area).adjusted(2, 2, -2, -2));
     const QString text = m_selectedItem
-                             ? tr("Editing %1: drag it or its handles · Delete removes it · Esc lets go")
+                             ? tr("Editing %1: drag it or its handles · Delete removes it")
                                    .arg(itemName(m_selectedItem->part))
                              : tr("Editing the room: click a thing to select it · right-click to add");
     const QFont bold = display::valueFont(font(), 1.15);

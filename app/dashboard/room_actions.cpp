@@ -105,7 +105,7 @@ bool RoomActions::openRoom(const QString &path, QString *error)
     std::optional<sim::World> world = sim::loadRoomFile(path, error);
     if (!world)
         return false;
-    m_room->setWorld(std::move(*world));
+    m_room->setWorldAndPlaceRobots(std::move(*world));
     // A new room is a new document: the old one's steps do not apply to it.
     m_undoStack->clear();
     QSettings().setValue(kSettingsKey, path);

@@ -33,7 +33,7 @@ public:
     QUndoStack *undoStack() const { return m_undoStack; }
 
     // Replaces the floor with the room in `path` (a file or a shipped
-    // ":/rooms/…" one); the robots stay where they are. False, with the
+    // ":/rooms/…" one) and puts the robots down at its start. False, with the
     // reason in `error`, for a file that is not a room: the room is left
     // as it was.
     bool openRoom(const QString &path, QString *error = nullptr);

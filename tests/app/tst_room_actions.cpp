@@ -85,8 +85,12 @@ private slots:
             if (a->objectName() == "room_corridor")
                 corridor = a;
         QVERIFY(corridor);
+        const sim::RobotId robot = room->addRobotAt({0, 0, 0, 0});
         corridor->trigger();
         QCOMPARE(QString::fromStdString(room->world().name), QStringLiteral("Corridor"));
+        // The robot is put down at the room's start.
+        QCOMPARE(room->robot(robot)->pose.xMm, room->world().startX);
+        QCOMPARE(room->robot(robot)->pose.yMm, room->world().startY);
         QCOMPARE(messages.size(), 1);
     }
 

@@ -183,6 +183,33 @@ private slots:
         QVERIFY(s.bumpLeft() && s.bumpRight());
     }
 
+    // A room opened from a file: the robots are put down at its start and
+    // free spots beside it, and each takes its new pose at its next step.
+    void aNewRoomPutsTheRobotsDownAfresh()
+    {
+        auto room = std::make_shared<sim::Room>(emptyFloor());
+        const sim::RobotId a = room->addRobotAt({0, 0, 0, 0});
+        const sim::RobotId b = room->addRobotAt({600, 0, 0, 0});
+        Member first(room, a);
+        sim::World corridor = emptyFloor();
+        // A box whose bottom wall runs through where both stood.
+        corridor.walls = {{-2000, 0, 4000, 0}, {4000, 0, 4000, 2000}, {4000, 2000, -2000, 2000}, {-2000, 2000, -2000, 0}};
+        corridor.startX = 1000;
+        corridor.startY = 800;
+        corridor.startHeadingRad = 0.5;
+        room->setWorldAndPlaceRobots(corridor);
+        QCOMPARE(room->world(), corridor);
+        const oi::Pose pa = room->robot(a)->pose, pb = room->robot(b)->pose;
+        QCOMPARE(pa.xMm, 1000.0);
+        QCOMPARE(pa.yMm, 800.0);
+        QCOMPARE(pa.thetaRad, 0.5);
+        QVERIFY(distance(pa, pb) >= 2 * sim::kBodyRadiusMm + 150);
+        QVERIFY(pb.yMm > sim::kBodyRadiusMm); // on the start's side of the wall
+        first.robot.advance(1ms);
+        QCOMPARE(first.robot.truePose().xMm, 1000.0);
+        QCOMPARE(first.robot.world(), corridor);
+    }
+
     // Carried by hand over the stage edge while it drives forward in Safe
     // mode: the cliff signals fall and the robot drops to Passive, as it
     // would on the real stage. Standing still, it only sees the edge.

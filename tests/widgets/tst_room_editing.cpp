@@ -133,6 +133,17 @@ private slots:
         QCOMPARE(m_edits->size(), 0);
     }
 
+    void theCursorShowsWhatCanBeTaken()
+    {
+        m_map->setEditing(true);
+        QTest::mouseMove(m_map.get(), at(500, 0));
+        QCOMPARE(m_map->cursor().shape(), Qt::OpenHandCursor);
+        QTest::mouseMove(m_map.get(), at(1000, 0));
+        QCOMPARE(m_map->cursor().shape(), Qt::CrossCursor); // an end
+        QTest::mouseMove(m_map.get(), at(-500, -700));
+        QCOMPARE(m_map->cursor().shape(), Qt::ArrowCursor);
+    }
+
     void draggingAWallsEndAndTheWholeWall()
     {
         m_map->setEditing(true);

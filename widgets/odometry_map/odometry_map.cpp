@@ -248,6 +248,7 @@ void OdometryMap::setEditing(bool editing)
         return;
     m_editing = editing;
     m_itemHold.reset();
+    setMouseTracking(editing); // the cursor shows what can be taken
     if (!editing)
         m_selectedItem.reset();
     {
@@ -635,6 +636,14 @@ void OdometryMap::mousePressEvent(QMouseEvent *event)
 
 void OdometryMap::mouseMoveEvent(QMouseEvent *event)
 {
+    if (m_editing && m_world && !m_itemHold && !m_hold && !m_dragFrom) {
+        const auto grip = WorldGrip::at(*m_world, floorPointFor(event->position()), gripToleranceMm(), m_selectedItem);
+        if (!grip)
+            unsetCursor();
+        else
+            setCursor(grip->handle == WorldGrip::Handle::Body ? Qt::OpenHandCursor : Qt::CrossCursor);
+        return;
+    }
     if (m_itemHold) {
         sim::WorldEdit edit = m_itemHold->grip.dragged(m_itemHold->start, m_itemHold->fromMm,
                                                        floorPointFor(event->position()), m_itemHold->turning);
@@ -700,12 +709,17 @@ void OdometryMap::paintSelection(QPainter &painter) const
         // The wall itself in the highlight colour, so it stands out from its neighbours.
         painter.setPen(QPen(palette().color(QPalette::Highlight), 6, Qt::SolidLine, Qt::RoundCap));
         painter.drawLine(widgetPointFor({s.x1, s.y1}), widgetPointFor({s.x2, s.y2}));
+        paintLengthLabel(painter, widgetPointFor({(s.x1 + s.x2) / 2, (s.y1 + s.y2) / 2}),
+                         tr("%1 m").arg(std::hypot(s.x2 - s.x1, s.y2 - s.y1) / 1000, 0, 'f', 2));
         break;
     }
     case sim::WorldPart::DropOff: {
         const sim::Area &a = world.dropOffs[std::size_t(item.index)];
         painter.setPen(QPen(halo, 10, Qt::SolidLine, Qt::SquareCap, Qt::MiterJoin));
-        painter.drawRect(QRectF(widgetPointFor({a.xMin, a.yMax}), widgetPointFor({a.xMax, a.yMin})).normalized());
+        const QRectF r = QRectF(widgetPointFor({a.xMin, a.yMax}), widgetPointFor({a.xMax, a.yMin})).normalized();
+        painter.drawRect(r);
+        paintLengthLabel(painter, r.center(),
+                         tr("%1 × %2 m").arg((a.xMax - a.xMin) / 1000, 0, 'f', 2).arg((a.yMax - a.yMin) / 1000, 0, 'f', 2));
         break;
     }
     case sim::WorldPart::Dock: {
@@ -741,6 +755,23 @@ void OdometryMap::paintSelection(QPainter &painter) const
             painter.drawRect(square);
     }
     painter.setBrush(Qt::NoBrush);
+}
+
+void OdometryMap::paintLengthLabel(QPainter &painter, QPointF centre, const QString &text) const
+{
+    // On a plate of the base colour, so it reads over walls and hatching.
+    const QFont bold = display::valueFont(font(), 1.1);
+    const QFontMetricsF fm(bold);
+    const QRectF box(centre.x() - fm.horizontalAdvance(text) / 2 - 4, centre.y() + 8, fm.horizontalAdvance(text) + 8,
+                     fm.height() + 2);
+    painter.setPen(QPen(palette().color(QPalette::Highlight), 1.5));
+    painter.setBrush(palette().color(QPalette::Base));
+    painter.drawRoundedRect(box, 3, 3);
+    painter.setBrush(Qt::NoBrush);
+    painter.setFont(bold);
+    painter.setPen(palette().color(QPalette::Text));
+    painter.drawText(box, Qt::AlignCenter, text);
+    painter.setFont(font());
 }
 
 void OdometryMap::paintEditBanner(QPainter &painter, const QRect &area) const

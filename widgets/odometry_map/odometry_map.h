@@ -154,6 +154,7 @@ private:
     void paintWorld(QPainter &painter) const;
     void paintSelection(QPainter &painter) const;
     void paintEditBanner(QPainter &painter, const QRect &area) const;
+    void paintLengthLabel(QPainter &painter, QPointF centre, const QString &text) const;
     bool pressOnWorld(QMouseEvent *event);
     void requestAdd(sim::WorldPart part, QPointF floorPoint);
     QString itemName(sim::WorldPart part) const;

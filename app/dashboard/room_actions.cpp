@@ -88,11 +88,11 @@ RoomActions::RoomActions(std::shared_ptr<sim::Room> room, QWidget *dialogParent)
 
 void RoomActions::retranslate()
 {
-    m_open->setText(tr("Open &room…"));
+    m_open->setText(tr("O&pen room…"));
     m_open->setToolTip(tr("Put the virtual robots in a room from a file"));
-    m_saveAs->setText(tr("&Save room as…"));
+    m_saveAs->setText(tr("Sa&ve room as…"));
     m_saveAs->setToolTip(tr("Write the virtual robots' room, as edited on the map, to a file"));
-    m_shipped->setTitle(tr("Rooms"));
+    m_shipped->setTitle(tr("E&xample rooms"));
     const QList<QAction *> actions = m_shipped->actions();
     for (qsizetype i = 0; i < actions.size(); ++i)
         actions[i]->setText(tr(kShippedRooms[i].title));

@@ -242,6 +242,17 @@ private slots:
             const QDir dir(qEnvironmentVariable("ROOMBA_SCREENSHOTS"));
             QVERIFY(window.grab().save(dir.filePath("room_robot_by_moved_wall_window.png")));
             QVERIFY(map->grab().save(dir.filePath("room_robot_by_moved_wall.png")));
+            // The File menu with the rooms, and the shipped rooms beside it.
+            QMenu *file = qobject_cast<QMenu *>(window.roomActions()->openAction()->associatedObjects().value(0));
+            QVERIFY(file);
+            file->popup(window.mapToGlobal(QPoint(0, 0)));
+            QVERIFY(QTest::qWaitForWindowExposed(file));
+            QVERIFY(file->grab().save(dir.filePath("room_file_menu.png")));
+            file->close();
+            window.roomActions()->shippedMenu()->popup(window.mapToGlobal(QPoint(0, 0)));
+            QVERIFY(QTest::qWaitForWindowExposed(window.roomActions()->shippedMenu()));
+            QVERIFY(window.roomActions()->shippedMenu()->grab().save(dir.filePath("room_shipped_menu.png")));
+            window.roomActions()->shippedMenu()->close();
         }
 
         // One drag, one Undo.

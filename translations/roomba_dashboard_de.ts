@@ -1836,6 +1836,66 @@ Leertaste oder Esc hält den ausgewählten Roboter an.</translation>
         <source>%1 mm</source>
         <translation>%1 mm</translation>
     </message>
+    <message>
+        <source>Edit room</source>
+        <translation>Raum bearbeiten</translation>
+    </message>
+    <message>
+        <source>Move, add and delete the walls, stage edges, the dock and the virtual wall</source>
+        <translation>Wände, Bühnenkanten, die Ladestation und die virtuelle Wand verschieben, hinzufügen und löschen</translation>
+    </message>
+    <message>
+        <source>%1 × %2 m</source>
+        <translation>%1 × %2 m</translation>
+    </message>
+    <message>
+        <source>Editing %1: drag it or its handles · Delete removes it</source>
+        <translation>Bearbeiten: %1 · ziehen, auch an den Griffen · Entf löscht</translation>
+    </message>
+    <message>
+        <source>Editing the room: click a thing to select it · right-click to add</source>
+        <translation>Raum bearbeiten: zum Auswählen anklicken · Rechtsklick fügt hinzu</translation>
+    </message>
+    <message>
+        <source>the wall</source>
+        <translation>die Wand</translation>
+    </message>
+    <message>
+        <source>the stage edge</source>
+        <translation>die Bühnenkante</translation>
+    </message>
+    <message>
+        <source>the dock</source>
+        <translation>die Ladestation</translation>
+    </message>
+    <message>
+        <source>the virtual wall</source>
+        <translation>die virtuelle Wand</translation>
+    </message>
+    <message>
+        <source>Add wall here</source>
+        <translation>Wand hier hinzufügen</translation>
+    </message>
+    <message>
+        <source>Add stage edge here</source>
+        <translation>Bühnenkante hier hinzufügen</translation>
+    </message>
+    <message>
+        <source>Move the virtual wall here</source>
+        <translation>Virtuelle Wand hierher versetzen</translation>
+    </message>
+    <message>
+        <source>Add virtual wall here</source>
+        <translation>Virtuelle Wand hier hinzufügen</translation>
+    </message>
+    <message>
+        <source>Put the dock here</source>
+        <translation>Ladestation hierher stellen</translation>
+    </message>
+    <message>
+        <source>Delete %1</source>
+        <translation>Löschen: %1</translation>
+    </message>
 </context>
 <context>
     <name>PacketName</name>
@@ -2564,6 +2624,97 @@ Doppelklick zum Umbenennen</translation>
     <message>
         <source>  NO LIVE DATA  </source>
         <translation>  KEINE LIVE-DATEN  </translation>
+    </message>
+</context>
+<context>
+    <name>RoomActions</name>
+    <message>
+        <source>Classroom</source>
+        <translation>Klassenzimmer</translation>
+    </message>
+    <message>
+        <source>Empty floor</source>
+        <translation>Leerer Boden</translation>
+    </message>
+    <message>
+        <source>Table top</source>
+        <translation>Tischplatte</translation>
+    </message>
+    <message>
+        <source>Corridor</source>
+        <translation>Flur</translation>
+    </message>
+    <message>
+        <source>Dock corner</source>
+        <translation>Ecke mit Ladestation</translation>
+    </message>
+    <message>
+        <source>O&amp;pen room…</source>
+        <translation>&amp;Raum öffnen…</translation>
+    </message>
+    <message>
+        <source>Put the virtual robots in a room from a file</source>
+        <translation>Die virtuellen Roboter in einen Raum aus einer Datei stellen</translation>
+    </message>
+    <message>
+        <source>Sa&amp;ve room as…</source>
+        <translation>Raum speichern &amp;unter…</translation>
+    </message>
+    <message>
+        <source>Write the virtual robots&apos; room, as edited on the map, to a file</source>
+        <translation>Den Raum der virtuellen Roboter, wie er auf der Karte bearbeitet wurde, in eine Datei schreiben</translation>
+    </message>
+    <message>
+        <source>E&amp;xample rooms</source>
+        <translation>Bei&amp;spielräume</translation>
+    </message>
+    <message>
+        <source>&amp;Undo room edit</source>
+        <translation>Raumänderung &amp;rückgängig</translation>
+    </message>
+    <message>
+        <source>Re&amp;do room edit</source>
+        <translation>Raumänderung &amp;wiederholen</translation>
+    </message>
+    <message>
+        <source>The room of last time could not be opened: %1</source>
+        <translation>Der Raum vom letzten Mal konnte nicht geöffnet werden: %1</translation>
+    </message>
+    <message>
+        <source>Room opened: %1</source>
+        <translation>Raum geöffnet: %1</translation>
+    </message>
+    <message>
+        <source>Open room</source>
+        <translation>Raum öffnen</translation>
+    </message>
+    <message>
+        <source>This room could not be opened; the room stays as it was.
+
+%1</source>
+        <translation>Dieser Raum konnte nicht geöffnet werden; der Raum bleibt, wie er war.
+
+%1</translation>
+    </message>
+    <message>
+        <source>Rooms (*.json);;All files (*)</source>
+        <translation>Räume (*.json);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>Save room as</source>
+        <translation>Raum speichern unter</translation>
+    </message>
+    <message>
+        <source>Room saved to %1</source>
+        <translation>Raum gespeichert in %1</translation>
+    </message>
+    <message>
+        <source>The room could not be saved.
+
+%1</source>
+        <translation>Der Raum konnte nicht gespeichert werden.
+
+%1</translation>
     </message>
 </context>
 <context>

@@ -1835,6 +1835,66 @@ Espacio o Esc detiene el robot seleccionado.</translation>
         <source>%1 mm</source>
         <translation>%1 mm</translation>
     </message>
+    <message>
+        <source>Edit room</source>
+        <translation>Editar sala</translation>
+    </message>
+    <message>
+        <source>Move, add and delete the walls, stage edges, the dock and the virtual wall</source>
+        <translation>Mover, añadir y borrar las paredes, los bordes del escenario, la base y la pared virtual</translation>
+    </message>
+    <message>
+        <source>%1 × %2 m</source>
+        <translation>%1 × %2 m</translation>
+    </message>
+    <message>
+        <source>Editing %1: drag it or its handles · Delete removes it</source>
+        <translation>Editando %1: arrastre el objeto o sus asas · Supr lo borra</translation>
+    </message>
+    <message>
+        <source>Editing the room: click a thing to select it · right-click to add</source>
+        <translation>Editando la sala: haga clic en un objeto para elegirlo · clic derecho para añadir</translation>
+    </message>
+    <message>
+        <source>the wall</source>
+        <translation>la pared</translation>
+    </message>
+    <message>
+        <source>the stage edge</source>
+        <translation>el borde del escenario</translation>
+    </message>
+    <message>
+        <source>the dock</source>
+        <translation>la base</translation>
+    </message>
+    <message>
+        <source>the virtual wall</source>
+        <translation>la pared virtual</translation>
+    </message>
+    <message>
+        <source>Add wall here</source>
+        <translation>Añadir pared aquí</translation>
+    </message>
+    <message>
+        <source>Add stage edge here</source>
+        <translation>Añadir borde de escenario aquí</translation>
+    </message>
+    <message>
+        <source>Move the virtual wall here</source>
+        <translation>Mover la pared virtual aquí</translation>
+    </message>
+    <message>
+        <source>Add virtual wall here</source>
+        <translation>Añadir pared virtual aquí</translation>
+    </message>
+    <message>
+        <source>Put the dock here</source>
+        <translation>Poner la base aquí</translation>
+    </message>
+    <message>
+        <source>Delete %1</source>
+        <translation>Borrar %1</translation>
+    </message>
 </context>
 <context>
     <name>PacketName</name>
@@ -2563,6 +2623,97 @@ Doble clic para renombrar</translation>
     <message>
         <source>  NO LIVE DATA  </source>
         <translation>  SIN DATOS EN VIVO  </translation>
+    </message>
+</context>
+<context>
+    <name>RoomActions</name>
+    <message>
+        <source>Classroom</source>
+        <translation>Aula</translation>
+    </message>
+    <message>
+        <source>Empty floor</source>
+        <translation>Suelo vacío</translation>
+    </message>
+    <message>
+        <source>Table top</source>
+        <translation>Tablero de mesa</translation>
+    </message>
+    <message>
+        <source>Corridor</source>
+        <translation>Pasillo</translation>
+    </message>
+    <message>
+        <source>Dock corner</source>
+        <translation>Rincón de la base</translation>
+    </message>
+    <message>
+        <source>O&amp;pen room…</source>
+        <translation>Abrir sa&amp;la…</translation>
+    </message>
+    <message>
+        <source>Put the virtual robots in a room from a file</source>
+        <translation>Poner los robots virtuales en una sala de un archivo</translation>
+    </message>
+    <message>
+        <source>Sa&amp;ve room as…</source>
+        <translation>G&amp;uardar sala como…</translation>
+    </message>
+    <message>
+        <source>Write the virtual robots&apos; room, as edited on the map, to a file</source>
+        <translation>Escribir en un archivo la sala de los robots virtuales, tal como se editó en el mapa</translation>
+    </message>
+    <message>
+        <source>E&amp;xample rooms</source>
+        <translation>Salas de e&amp;jemplo</translation>
+    </message>
+    <message>
+        <source>&amp;Undo room edit</source>
+        <translation>&amp;Deshacer cambio de sala</translation>
+    </message>
+    <message>
+        <source>Re&amp;do room edit</source>
+        <translation>Re&amp;hacer cambio de sala</translation>
+    </message>
+    <message>
+        <source>The room of last time could not be opened: %1</source>
+        <translation>No se pudo abrir la sala de la última vez: %1</translation>
+    </message>
+    <message>
+        <source>Room opened: %1</source>
+        <translation>Sala abierta: %1</translation>
+    </message>
+    <message>
+        <source>Open room</source>
+        <translation>Abrir sala</translation>
+    </message>
+    <message>
+        <source>This room could not be opened; the room stays as it was.
+
+%1</source>
+        <translation>No se pudo abrir esta sala; la sala queda como estaba.
+
+%1</translation>
+    </message>
+    <message>
+        <source>Rooms (*.json);;All files (*)</source>
+        <translation>Salas (*.json);;Todos los archivos (*)</translation>
+    </message>
+    <message>
+        <source>Save room as</source>
+        <translation>Guardar sala como</translation>
+    </message>
+    <message>
+        <source>Room saved to %1</source>
+        <translation>Sala guardada en %1</translation>
+    </message>
+    <message>
+        <source>The room could not be saved.
+
+%1</source>
+        <translation>No se pudo guardar la sala.
+
+%1</translation>
     </message>
 </context>
 <context>

@@ -18,6 +18,7 @@
 #include "odometry_map.h"
 #include "oi_text.h"
 #include "recording_actions.h"
+#include "room_actions.h"
 #include "replay_bar.h"
 #include "robot_diagram.h"
 #include "robot_list.h"
@@ -79,6 +80,8 @@ MainWindow::MainWindow(QWidget *parent)
     m_status = new RobotStatusBar(statusBar());
     m_recording = new RecordingActions(m_fleet, this);
     connect(m_recording, &RecordingActions::message, this, [this](const QString &m) { statusBar()->showMessage(m, 5000); });
+    m_roomActions = new RoomActions(m_room, this);
+    connect(m_roomActions, &RoomActions::message, this, [this](const QString &m) { statusBar()->showMessage(m, 5000); });
     buildDocks();
     buildRobotBar();
     buildActions();
@@ -86,6 +89,7 @@ MainWindow::MainWindow(QWidget *parent)
     retranslateUi();
     m_layout->keepAsDefault();
     wireInputs();
+    m_roomActions->restoreLastRoom();
 
     connect(&m_fleet, &RobotFleet::robotAdded, this, &MainWindow::onRobotAdded);
     connect(&m_fleet, &RobotFleet::robotRemoved, this, [this](RobotSession *robot) {
@@ -275,6 +279,9 @@ void MainWindow::wireInputs()
             [this](int robot, const oi::Pose &pose) { m_room->moveRobot(robot, pose); });
     connect(m_map, &OdometryMap::robotLiftRequested, this,
             [this](int robot, bool lifted) { m_room->setLifted(robot, lifted); });
+    // The room's floor edited on the map, a step Undo can take back.
+    connect(m_map, &OdometryMap::worldEditRequested, m_roomActions, &RoomActions::edit);
+    m_map->addActions({m_roomActions->undoAction(), m_roomActions->redoAction()});
     connect(m_inspector, &ByteInspector::plotRequested, this, [this](int packetId) {
         m_plots->addPlot({packetId});
         findChild<QDockWidget *>("plotsDock")->raise();
@@ -510,6 +517,10 @@ void MainWindow::buildMenus()
     m_fileMenu->addAction(m_recording->openAction());
     m_fileMenu->addAction(m_recording->exportCsvAction());
     m_fileMenu->addSeparator();
+    m_fileMenu->addAction(m_roomActions->openAction());
+    m_fileMenu->addMenu(m_roomActions->shippedMenu());
+    m_fileMenu->addAction(m_roomActions->saveAsAction());
+    m_fileMenu->addSeparator();
     m_fileMenu->addAction(m_stopAllAction);
     m_fileMenu->addSeparator();
     m_fileMenu->addAction(m_quitAction);
@@ -539,6 +550,7 @@ void MainWindow::retranslateUi()
     m_layout->retitle(m_fleet.count() > 1 && m_fleet.selected() ? m_fleet.selected()->name() : QString());
     m_fileMenu->setTitle(tr("&File"));
     m_recording->retranslate();
+    m_roomActions->retranslate();
     m_stopAllAction->setText(tr("&Stop all robots\tShift+Esc"));
     m_stopAll->setText(tr("STOP ALL  (Shift+Esc)"));
     m_stopAll->setToolTip(tr("Stop every robot in the window at once, whichever is selected.\n"

@@ -37,6 +37,7 @@ class QMenu;
 class QPushButton;
 class QToolBar;
 class RecordingActions;
+class RoomActions;
 class ReplayBar;
 class RobotDiagram;
 class RobotList;
@@ -68,6 +69,7 @@ public:
     // The room every virtual robot of the window drives in, and the selected
     // robot's place in it (-1 when it is not a virtual robot).
     const std::shared_ptr<sim::Room> &room() const { return m_room; }
+    RoomActions *roomActions() const { return m_roomActions; }
     sim::RobotId roomRobot() const;
     const SensorHistory &history() { return session().history(); }
     // Samples kept per channel for every robot; clears the histories. For the
@@ -177,6 +179,7 @@ private:
     RobotStatusBar *m_status = nullptr;
     RecordingActions *m_recording = nullptr;
     QHash<const RobotSession *, QPointer<DoctorDetails>> m_doctorDetails; // what each robot's last connection check found
+    RoomActions *m_roomActions = nullptr; // the room as a document: files and edits
 
     QMenu *m_fileMenu = nullptr;
     QMenu *m_viewMenu = nullptr;

@@ -74,6 +74,28 @@ bool Room::isFree(double x, double y) const
 RobotId Room::placeNewRobot()
 {
     std::lock_guard lock(m_mutex);
+    return add(freeSpot());
+}
+
+void Room::setWorldAndPlaceRobots(World world)
+{
+    std::lock_guard lock(m_mutex);
+    m_world = std::move(world);
+    ++m_worldVersion;
+    // One by one, each kept clear of those already put down.
+    std::vector<Entry> robots;
+    robots.swap(m_robots);
+    for (Entry &e : robots) {
+        const double travelled = e.robot.pose.travelledMm;
+        e.robot.pose = freeSpot();
+        e.robot.pose.travelledMm = travelled;
+        e.moveSerial = m_nextMoveSerial++;
+        m_robots.push_back(e);
+    }
+}
+
+oi::Pose Room::freeSpot() const
+{
     const double sx = m_world.startX, sy = m_world.startY;
     oi::Pose pose{sx, sy, m_world.startHeadingRad, 0};
     if (!isFree(sx, sy)) {
@@ -104,7 +126,7 @@ RobotId Room::placeNewRobot()
                 }
             }
     }
-    return add(pose);
+    return pose;
 }
 
 RobotId Room::addRobotAt(oi::Pose pose)

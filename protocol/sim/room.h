@@ -51,6 +51,11 @@ public:
     World world() const;
     // The robots take the new floor at their next step and stay where they are.
     void setWorld(World world);
+    // A new floor with every robot put down afresh: the first at the new
+    // world's start, the others at free spots in sight of it, as
+    // placeNewRobot does. For a room opened from a file, where the old
+    // spots may be inside a wall.
+    void setWorldAndPlaceRobots(World world);
     // Counts changes of the floor, so a view redraws it only when it changed.
     std::uint64_t worldVersion() const;
 
@@ -87,6 +92,7 @@ private:
         std::uint64_t moveSerial = 0;
     };
     RobotId add(oi::Pose pose); // with the lock held
+    oi::Pose freeSpot() const;  // with the lock held
     Entry *find(RobotId id);
     const Entry *find(RobotId id) const;
     bool isFree(double x, double y) const;

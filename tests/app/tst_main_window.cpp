@@ -2,6 +2,7 @@
 // The assembled window: connecting to the virtual robot, mode buttons down
 // to the bytes, settings, and a bad port.
 #include "main_window.h"
+#include "room_actions.h"
 #include "connection_bar.h"
 #include "mode_panel.h"
 #include "recording_transport.h"
@@ -195,6 +196,69 @@ private slots:
         // And the stream comes back.
         const quint64 count = window.session().snapshotCount();
         QTRY_VERIFY_WITH_TIMEOUT(window.session().snapshotCount() > count + 10, 10000);
+    }
+
+    // The teacher moves a wall on the map toward the virtual robot: the room
+    // changes for the robot at once and its light bumpers see the wall; Undo
+    // puts the wall back. Screenshots into ROOMBA_SCREENSHOTS when set.
+    void editingTheRoomOnTheMap()
+    {
+        MainWindow window;
+        window.resize(1400, 900);
+        window.show();
+        window.start(oilink::LinkSettings::virtualRobotOf(oi::ProfileId::Create2, oi::ProfileId::Create2));
+        QTRY_COMPARE_WITH_TIMEOUT(window.session().state(), oilink::LinkState::Streaming, 10000);
+        // Facing the classroom's left wall (y = 1500) from 600 mm: out of the light bumpers' reach.
+        window.room()->moveRobot(window.roomRobot(), {500, 900, M_PI / 2, 0});
+        QTRY_COMPARE_WITH_TIMEOUT(window.session().latest().lightBumpSignal(oi::LightBumper::CenterLeft), 0, 5000);
+
+        window.findChild<QDockWidget *>("mapDock")->raise();
+        OdometryMap *map = window.odometryMap();
+        QTRY_VERIFY(map->isVisible());
+        map->setScale(0.12);
+        map->setViewCentreMm({1000, 300});
+        window.refreshDisplay();
+        QVERIFY(map->world());
+        QTest::mouseClick(map->findChild<QPushButton *>("editRoom"), Qt::LeftButton);
+        QVERIFY(map->isEditing());
+
+        // Take the wall by its middle and bring it 250 mm nearer.
+        const QPoint from = map->widgetPointFor({1000, 1500}).toPoint();
+        const QPoint to = map->widgetPointFor({1000, 1250}).toPoint();
+        QVERIFY(map->mapRect().contains(from));
+        QTest::mousePress(map, Qt::LeftButton, Qt::NoModifier, from);
+        QTest::mouseMove(map, (from + to) / 2);
+        QTest::mouseMove(map, to);
+        QTest::mouseRelease(map, Qt::LeftButton, Qt::NoModifier, to);
+        const sim::Segment moved = window.room()->world().walls[2];
+        QCOMPARE(moved.y1, 1250.0);
+        QCOMPARE(moved.y2, 1250.0);
+        QTRY_VERIFY_WITH_TIMEOUT(window.session().latest().lightBumpSignal(oi::LightBumper::CenterLeft) > 0, 5000);
+        QVERIFY(window.session().latest().lightBumpSignal(oi::LightBumper::CenterRight) > 0);
+        window.refreshDisplay();
+        QTRY_COMPARE(map->world()->walls[2], moved);
+        QCOMPARE(map->selectedItem(), (sim::WorldItem{sim::WorldPart::Wall, 2}));
+        if (qEnvironmentVariableIsSet("ROOMBA_SCREENSHOTS")) {
+            const QDir dir(qEnvironmentVariable("ROOMBA_SCREENSHOTS"));
+            QVERIFY(window.grab().save(dir.filePath("room_robot_by_moved_wall_window.png")));
+            QVERIFY(map->grab().save(dir.filePath("room_robot_by_moved_wall.png")));
+            // The File menu with the rooms, and the shipped rooms beside it.
+            QMenu *file = qobject_cast<QMenu *>(window.roomActions()->openAction()->associatedObjects().value(0));
+            QVERIFY(file);
+            file->popup(window.mapToGlobal(QPoint(0, 0)));
+            QVERIFY(QTest::qWaitForWindowExposed(file));
+            QVERIFY(file->grab().save(dir.filePath("room_file_menu.png")));
+            file->close();
+            window.roomActions()->shippedMenu()->popup(window.mapToGlobal(QPoint(0, 0)));
+            QVERIFY(QTest::qWaitForWindowExposed(window.roomActions()->shippedMenu()));
+            QVERIFY(window.roomActions()->shippedMenu()->grab().save(dir.filePath("room_shipped_menu.png")));
+            window.roomActions()->shippedMenu()->close();
+        }
+
+        // One drag, one Undo.
+        window.roomActions()->undoAction()->trigger();
+        QCOMPARE(window.room()->world(), sim::World::classroom());
+        QTRY_COMPARE_WITH_TIMEOUT(window.session().latest().lightBumpSignal(oi::LightBumper::CenterLeft), 0, 5000);
     }
 
     void settingsRestore()

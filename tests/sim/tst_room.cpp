@@ -1,14 +1,17 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Several virtual robots in one room: free spots, bumping into one another,
-// hands that move and lift them, and poses read from another thread.
+// hands that move, turn and lift them (over a stage edge, toward a wall),
+// a dock moved on the floor, and poses read from another thread.
 #include "command_encoder.h"
 #include "room.h"
 #include "sensor_snapshot.h"
 #include "stream_parser.h"
 #include "virtual_robot.h"
+#include "world_edit.h"
 
 #include <QTest>
 
+#include <array>
 #include <atomic>
 #include <cmath>
 #include <memory>
@@ -178,6 +181,125 @@ private slots:
         QCOMPARE(m.robot.world(), walled);
         const oi::SensorSnapshot s = m.sensors(7);
         QVERIFY(s.bumpLeft() && s.bumpRight());
+    }
+
+    // A room opened from a file: the robots are put down at its start and
+    // free spots beside it, and each takes its new pose at its next step.
+    void aNewRoomPutsTheRobotsDownAfresh()
+    {
+        auto room = std::make_shared<sim::Room>(emptyFloor());
+        const sim::RobotId a = room->addRobotAt({0, 0, 0, 0});
+        const sim::RobotId b = room->addRobotAt({600, 0, 0, 0});
+        Member first(room, a);
+        sim::World corridor = emptyFloor();
+        // A box whose bottom wall runs through where both stood.
+        corridor.walls = {{-2000, 0, 4000, 0}, {4000, 0, 4000, 2000}, {4000, 2000, -2000, 2000}, {-2000, 2000, -2000, 0}};
+        corridor.startX = 1000;
+        corridor.startY = 800;
+        corridor.startHeadingRad = 0.5;
+        room->setWorldAndPlaceRobots(corridor);
+        QCOMPARE(room->world(), corridor);
+        const oi::Pose pa = room->robot(a)->pose, pb = room->robot(b)->pose;
+        QCOMPARE(pa.xMm, 1000.0);
+        QCOMPARE(pa.yMm, 800.0);
+        QCOMPARE(pa.thetaRad, 0.5);
+        QVERIFY(distance(pa, pb) >= 2 * sim::kBodyRadiusMm + 150);
+        QVERIFY(pb.yMm > sim::kBodyRadiusMm); // on the start's side of the wall
+        first.robot.advance(1ms);
+        QCOMPARE(first.robot.truePose().xMm, 1000.0);
+        QCOMPARE(first.robot.world(), corridor);
+    }
+
+    // Carried by hand over the stage edge while it drives forward in Safe
+    // mode: the cliff signals fall and the robot drops to Passive, as it
+    // would on the real stage. Standing still, it only sees the edge.
+    void draggedOverTheStageEdge()
+    {
+        sim::World stage = emptyFloor();
+        stage.dropOffs = {{500, -1000, 1500, 1000}}; // the edge runs along x = 500
+        for (const bool driving : {false, true}) {
+            auto room = std::make_shared<sim::Room>(stage);
+            const sim::RobotId id = room->addRobotAt({0, 0, 0, 0});
+            Member m(room, id);
+            m.send(m.encoder.start());
+            m.send(m.encoder.safe());
+            if (driving)
+                m.send(m.encoder.drive(20, oi::kRadiusStraight));
+            m.robot.advance(15ms);
+            const oi::SensorSnapshot before = m.sensors(6);
+            QCOMPARE(before.oiMode(), oi::OiMode::Safe);
+            QVERIFY(before.cliffSignal(oi::CliffSensor::FrontLeft) > 2000);
+            QVERIFY(!before.cliff(oi::CliffSensor::FrontRight));
+
+            room->moveRobot(id, {420, 0, 0, 0}); // the front sensors out over the edge
+            m.robot.advance(15ms);
+            const oi::SensorSnapshot after = m.sensors(100);
+            QVERIFY(after.cliff(oi::CliffSensor::FrontLeft) && after.cliff(oi::CliffSensor::FrontRight));
+            QVERIFY(after.cliffSignal(oi::CliffSensor::FrontLeft) < 100);
+            QVERIFY(after.cliffSignal(oi::CliffSensor::FrontRight) < 100);
+            QCOMPARE(after.oiMode(), driving ? oi::OiMode::Passive : oi::OiMode::Safe);
+            if (driving)
+                QCOMPARE(QString::fromStdString(m.robot.lastSafetyStop()), QStringLiteral("cliff"));
+        }
+    }
+
+    // Turned by hand toward a wall on its left, the light bumpers see it one
+    // after the other, from the left-hand one round to the right-hand one.
+    void turnedTowardAWallTheLightBumpersRiseInOrder()
+    {
+        sim::World w = emptyFloor();
+        w.walls = {{-2000, 400, 2000, 400}};
+        auto room = std::make_shared<sim::Room>(w);
+        const sim::RobotId id = room->addRobotAt({0, 0, -kPi / 3, 0});
+        Member m(room, id);
+        m.send(m.encoder.start());
+        m.robot.advance(1ms);
+        std::array<int, 6> firstSeenAt;
+        firstSeenAt.fill(1000);
+        for (int deg = -60; deg <= 180; deg += 2) {
+            room->moveRobot(id, {0, 0, deg * kPi / 180, 0});
+            m.robot.advance(1ms);
+            const oi::SensorSnapshot s = m.sensors(106);
+            for (int i = 0; i < 6; ++i)
+                if (s.lightBumpSignal(oi::LightBumper(i)) > 0 && firstSeenAt[std::size_t(i)] == 1000)
+                    firstSeenAt[std::size_t(i)] = deg;
+        }
+        // Facing away at the start: none sees it.
+        QCOMPARE(firstSeenAt[0] > -60, true);
+        for (std::size_t i = 1; i < 6; ++i)
+            QVERIFY2(firstSeenAt[i - 1] < firstSeenAt[i],
+                     qPrintable(QStringLiteral("light bumper %1 at %2°, %3 at %4°")
+                                    .arg(i - 1).arg(firstSeenAt[i - 1]).arg(i).arg(firstSeenAt[i])));
+        QVERIFY(firstSeenAt[5] < 1000);
+    }
+
+    // The dock moved and turned on the floor: its beams reach the robot where
+    // the dock now faces, and not where it used to.
+    void theDocksBeamsFollowTheDock()
+    {
+        sim::World w = emptyFloor();
+        w.dock = sim::World::Dock{0, 0, 0};
+        auto room = std::make_shared<sim::Room>(w);
+        Member m(room, room->addRobotAt({1000, 0, kPi, 0}));
+        m.send(m.encoder.start());
+        m.robot.advance(1ms);
+        const int redAndGreen = 168 | 164, none = 0; // the Roomba characters, both buoys
+        QCOMPARE(m.sensors(17).raw(17), redAndGreen);
+
+        const auto edit = [&room, &m](const sim::World::Dock &dock) {
+            sim::WorldEdit e = sim::WorldEdit::put({sim::WorldPart::Dock, 0}, room->world());
+            e.dock = dock;
+            sim::World edited = room->world();
+            QVERIFY(sim::applyEdit(edited, e));
+            room->setWorld(edited);
+            m.robot.advance(1ms);
+        };
+        edit({0, 0, kPi}); // turned away
+        QCOMPARE(m.sensors(17).raw(17), none);
+        edit({1000, -800, kPi / 2}); // beside the robot, facing it
+        QCOMPARE(m.sensors(17).raw(17), redAndGreen);
+        edit({1000, -3000, kPi / 2}); // out of the buoys' reach
+        QCOMPARE(m.sensors(17).raw(17), none);
     }
 
     // The robot runs on a thread of its own, as each link does; this thread

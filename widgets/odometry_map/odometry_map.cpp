@@ -6,7 +6,10 @@
 #include <QDoubleSpinBox>
 #include <QEvent>
 #include <QHBoxLayout>
+#include <QContextMenuEvent>
+#include <QKeyEvent>
 #include <QLabel>
+#include <QMenu>
 #include <QMouseEvent>
 #include <QPainter>
 #include <QPainterPath>
@@ -23,6 +26,10 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kRobotDiameterMm = 340;
 constexpr double kZoomStep = 1.25;
+// How near the pointer must come to a wall or a handle, in pixels: big
+// enough for a finger-sized touchpad tap.
+constexpr double kGripPx = 9;
+constexpr double kHandlePx = 15; // a handle's side
 
 } // namespace
 
@@ -30,6 +37,7 @@ OdometryMap::OdometryMap(QWidget *parent) : QWidget(parent)
 {
     setMinimumSize(360, 280);
     setMouseTracking(false);
+    setFocusPolicy(Qt::ClickFocus); // Delete and Esc reach the selection
 
     m_controls = new QWidget(this);
     m_controls->setObjectName("controls");
@@ -51,6 +59,10 @@ OdometryMap::OdometryMap(QWidget *parent) : QWidget(parent)
         b->setFixedWidth(b->sizeHint().height() * 3 / 2);
     m_centre = addButton("centre", QString());
     m_reset = addButton("reset", QString());
+    m_edit = addButton("editRoom", QString());
+    m_edit->setCheckable(true);
+    m_edit->setVisible(false); // until there is a room to edit
+    connect(m_edit, &QPushButton::toggled, this, &OdometryMap::setEditing);
     connect(m_zoomIn, &QPushButton::clicked, this, &OdometryMap::zoomIn);
     connect(m_zoomOut, &QPushButton::clicked, this, &OdometryMap::zoomOut);
     connect(m_centre, &QPushButton::clicked, this, &OdometryMap::centreOnRobot);
@@ -114,6 +126,8 @@ void OdometryMap::retranslateUi()
     m_centre->setToolTip(tr("Centre the map on the robot"));
     m_reset->setText(tr("Reset"));
     m_reset->setToolTip(tr("Clear the trail and start the odometry again at the origin"));
+    m_edit->setText(tr("Edit room"));
+    m_edit->setToolTip(tr("Move, add and delete the walls, stage edges, the dock and the virtual wall"));
     m_wheelBaseTitle->setText(tr("Wheel base"));
     m_wheelDiameterTitle->setText(tr("Wheel Ø"));
     updateGeometryTips();
@@ -219,8 +233,41 @@ QColor OdometryMap::truePoseColour(qsizetype index) const
 void OdometryMap::setWorld(std::optional<sim::World> world)
 {
     m_world = std::move(world);
+    m_edit->setVisible(m_world.has_value());
+    if (!m_world)
+        setEditing(false);
+    else if (m_selectedItem && !sim::contains(*m_world, *m_selectedItem))
+        m_selectedItem.reset();
     update();
 }
+
+void OdometryMap::setEditing(bool editing)
+{
+    editing = editing && m_world;
+    if (m_editing == editing)
+        return;
+    m_editing = editing;
+    m_itemHold.reset();
+    setMouseTracking(editing); // the cursor shows what can be taken
+    if (!editing)
+        m_selectedItem.reset();
+    {
+        const QSignalBlocker blocker(m_edit);
+        m_edit->setChecked(editing);
+    }
+    update();
+    emit editingChanged(editing);
+}
+
+void OdometryMap::setSelectedItem(std::optional<sim::WorldItem> item)
+{
+    if (item && !(m_world && sim::contains(*m_world, *item)))
+        item.reset();
+    m_selectedItem = item;
+    update();
+}
+
+double OdometryMap::gripToleranceMm() const { return kGripPx / m_scale; }
 
 void OdometryMap::setWheelBaseMm(double mm) { m_wheelBase->setValue(mm); }
 void OdometryMap::setWheelDiameterMm(double mm) { m_wheelDiameter->setValue(mm); }
@@ -333,6 +380,8 @@ void OdometryMap::paintEvent(QPaintEvent *)
     paintGrid(painter, area);
     if (m_world)
         paintWorld(painter);
+    if (m_world && m_editing)
+        paintSelection(painter);
 
     const QList<QPointF> trail = this->trail();
     if (trail.size() > 1) {
@@ -374,6 +423,8 @@ void OdometryMap::paintEvent(QPaintEvent *)
         painter.drawText(text, Qt::AlignLeft | Qt::AlignVCenter, legend[i]);
         y += fm.height() + 4;
     }
+    if (m_editing)
+        paintEditBanner(painter, area);
 }
 
 void OdometryMap::paintGrid(QPainter &painter, const QRect &area) const
@@ -423,6 +474,15 @@ void OdometryMap::paintWorld(QPainter &painter) const
     painter.setPen(QPen(palette().color(QPalette::Text), 4, Qt::SolidLine, Qt::SquareCap));
     for (const sim::Segment &s : world.walls)
         painter.drawLine(widgetPointFor({s.x1, s.y1}), widgetPointFor({s.x2, s.y2}));
+    if (m_editing) {
+        // Every wall's ends can be taken: show where.
+        painter.setPen(Qt::NoPen);
+        painter.setBrush(palette().color(QPalette::Text));
+        for (const sim::Segment &s : world.walls)
+            for (const QPointF end : {QPointF(s.x1, s.y1), QPointF(s.x2, s.y2)})
+                painter.drawEllipse(widgetPointFor(end), 5, 5);
+        painter.setBrush(Qt::NoBrush);
+    }
 
     if (world.virtualWall) {
         const auto &v = *world.virtualWall;
@@ -557,6 +617,8 @@ void OdometryMap::mousePressEvent(QMouseEvent *event)
 {
     if (!mapRect().contains(event->position().toPoint()))
         return;
+    if (m_editing && m_world && event->button() == Qt::LeftButton && pressOnWorld(event))
+        return;
     const bool turn = event->button() == Qt::RightButton
                       || (event->button() == Qt::LeftButton && (event->modifiers() & Qt::ShiftModifier));
     if (event->button() == Qt::LeftButton || turn) {
@@ -574,6 +636,25 @@ void OdometryMap::mousePressEvent(QMouseEvent *event)
 
 void OdometryMap::mouseMoveEvent(QMouseEvent *event)
 {
+    if (m_editing && m_world && !m_itemHold && !m_hold && !m_dragFrom) {
+        const auto grip = WorldGrip::at(*m_world, floorPointFor(event->position()), gripToleranceMm(), m_selectedItem);
+        if (!grip)
+            unsetCursor();
+        else
+            setCursor(grip->handle == WorldGrip::Handle::Body ? Qt::OpenHandCursor : Qt::CrossCursor);
+        return;
+    }
+    if (m_itemHold) {
+        sim::WorldEdit edit = m_itemHold->grip.dragged(m_itemHold->start, m_itemHold->fromMm,
+                                                       floorPointFor(event->position()), m_itemHold->turning);
+        edit.gesture = m_itemHold->last.gesture;
+        // Snapped: most pointer steps ask for the same floor again.
+        if (!(edit == m_itemHold->last)) {
+            m_itemHold->last = edit;
+            emit worldEditRequested(edit);
+        }
+        return;
+    }
     if (m_hold) {
         const QPointF at = floorPointFor(event->position());
         if (m_hold->turning) {
@@ -597,6 +678,7 @@ void OdometryMap::mouseReleaseEvent(QMouseEvent *)
 {
     m_dragFrom.reset();
     m_hold.reset();
+    m_itemHold.reset();
     unsetCursor();
 }
 
@@ -606,4 +688,240 @@ void OdometryMap::mouseDoubleClickEvent(QMouseEvent *event)
         return;
     if (const TruePose *t = truePoseAt(event->position()))
         emit robotLiftRequested(t->robot, !t->lifted);
+}
+
+// --- Editing the room ---
+
+void OdometryMap::paintSelection(QPainter &painter) const
+{
+    if (!m_selectedItem || !sim::contains(*m_world, *m_selectedItem))
+        return;
+    const sim::World &world = *m_world;
+    const sim::WorldItem item = *m_selectedItem;
+    QColor halo = palette().color(QPalette::Highlight);
+    halo.setAlpha(110);
+    painter.setBrush(Qt::NoBrush);
+    painter.setPen(QPen(halo, 16, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
+    switch (item.part) {
+    case sim::WorldPart::Wall: {
+        const sim::Segment &s = world.walls[std::size_t(item.index)];
+        painter.drawLine(widgetPointFor({s.x1, s.y1}), widgetPointFor({s.x2, s.y2}));
+        // The wall itself in the highlight colour, so it stands out from its neighbours.
+        painter.setPen(QPen(palette().color(QPalette::Highlight), 6, Qt::SolidLine, Qt::RoundCap));
+        painter.drawLine(widgetPointFor({s.x1, s.y1}), widgetPointFor({s.x2, s.y2}));
+        paintLengthLabel(painter, widgetPointFor({(s.x1 + s.x2) / 2, (s.y1 + s.y2) / 2}),
+                         tr("%1 m").arg(std::hypot(s.x2 - s.x1, s.y2 - s.y1) / 1000, 0, 'f', 2));
+        break;
+    }
+    case sim::WorldPart::DropOff: {
+        const sim::Area &a = world.dropOffs[std::size_t(item.index)];
+        painter.setPen(QPen(halo, 10, Qt::SolidLine, Qt::SquareCap, Qt::MiterJoin));
+        const QRectF r = QRectF(widgetPointFor({a.xMin, a.yMax}), widgetPointFor({a.xMax, a.yMin})).normalized();
+        painter.drawRect(r);
+        paintLengthLabel(painter, r.center(),
+                         tr("%1 × %2 m").arg((a.xMax - a.xMin) / 1000, 0, 'f', 2).arg((a.yMax - a.yMin) / 1000, 0, 'f', 2));
+        break;
+    }
+    case sim::WorldPart::Dock: {
+        const auto &d = *world.dock;
+        const double r = std::max(14.0, 200 * m_scale);
+        painter.drawEllipse(widgetPointFor({d.x - 60 * std::cos(d.headingRad), d.y - 60 * std::sin(d.headingRad)}), r, r);
+        break;
+    }
+    case sim::WorldPart::VirtualWall: {
+        const auto &v = *world.virtualWall;
+        painter.drawLine(widgetPointFor({v.x, v.y}), widgetPointFor({v.x + v.rangeMm * std::cos(v.headingRad),
+                                                                      v.y + v.rangeMm * std::sin(v.headingRad)}));
+        break;
+    }
+    }
+    // Handles: squares in the highlight colour, ringed so they show on any floor.
+    const QList<std::pair<WorldGrip::Handle, QPointF>> handles = WorldGrip::handles(world, item);
+    for (const auto &[handle, where] : handles) {
+        const QPointF c = widgetPointFor(where);
+        if (handle == WorldGrip::Handle::Aim) {
+            // The heading handle hangs from a thin line so it reads as "turn me".
+            const QPointF from = item.part == sim::WorldPart::Dock ? widgetPointFor({world.dock->x, world.dock->y})
+                                                                   : widgetPointFor({world.virtualWall->x, world.virtualWall->y});
+            painter.setPen(QPen(palette().color(QPalette::Highlight), 2, Qt::DotLine));
+            painter.drawLine(from, c);
+        }
+        painter.setPen(QPen(palette().color(QPalette::Base), 2));
+        painter.setBrush(palette().color(QPalette::Highlight));
+        const QRectF square(c - QPointF(kHandlePx / 2, kHandlePx / 2), QSizeF(kHandlePx, kHandlePx));
+        if (handle == WorldGrip::Handle::Aim)
+            painter.drawEllipse(square);
+        else
+            painter.drawRect(square);
+    }
+    painter.setBrush(Qt::NoBrush);
+}
+
+void OdometryMap::paintLengthLabel(QPainter &painter, QPointF centre, const QString &text) const
+{
+    // On a plate of the base colour, so it reads over walls and hatching.
+    const QFont bold = display::valueFont(font(), 1.1);
+    const QFontMetricsF fm(bold);
+    const QRectF box(centre.x() - fm.horizontalAdvance(text) / 2 - 4, centre.y() + 8, fm.horizontalAdvance(text) + 8,
+                     fm.height() + 2);
+    painter.setPen(QPen(palette().color(QPalette::Highlight), 1.5));
+    painter.setBrush(palette().color(QPalette::Base));
+    painter.drawRoundedRect(box, 3, 3);
+    painter.setBrush(Qt::NoBrush);
+    painter.setFont(bold);
+    painter.setPen(palette().color(QPalette::Text));
+    painter.drawText(box, Qt::AlignCenter, text);
+    painter.setFont(font());
+}
+
+void OdometryMap::paintEditBanner(QPainter &painter, const QRect &area) const
+{
+    // A frame round the map says the floor is open to the hand, from the back of the room.
+    const QColor frame = palette().color(QPalette::Highlight);
+    painter.setPen(QPen(frame, 4));
+    painter.setBrush(Qt::NoBrush);
+    painter.drawRect(QRectF(area).adjusted(2, 2, -2, -2));
+    const QString text = m_selectedItem
+                             ? tr("Editing %1: drag it or its handles · Delete removes it")
+                                   .arg(itemName(m_selectedItem->part))
+                             : tr("Editing the room: click a thing to select it · right-click to add");
+    const QFont bold = display::valueFont(font(), 1.15);
+    const QFontMetrics fm(bold);
+    const int pad = fm.averageCharWidth();
+    // At the foot of the map, between the pose and the scale bar, clear of
+    // the room's far corners where walls are often taken.
+    const int w = fm.horizontalAdvance(text) + 2 * pad, h = fm.height() + pad;
+    const int left = std::max(m_poseLabel->geometry().right() + 8, area.center().x() - w / 2);
+    const QRect box(std::min(left, std::max(8, area.right() - 8 - w)), area.bottom() - 8 - h, w, h);
+    painter.setPen(Qt::NoPen);
+    painter.setBrush(frame);
+    painter.drawRoundedRect(box, 4, 4);
+    painter.setBrush(Qt::NoBrush);
+    painter.setFont(bold);
+    painter.setPen(palette().color(QPalette::HighlightedText));
+    painter.drawText(box, Qt::AlignCenter, text);
+    painter.setFont(font());
+}
+
+QString OdometryMap::itemName(sim::WorldPart part) const
+{
+    switch (part) {
+    case sim::WorldPart::Wall: return tr("the wall");
+    case sim::WorldPart::DropOff: return tr("the stage edge");
+    case sim::WorldPart::Dock: return tr("the dock");
+    case sim::WorldPart::VirtualWall: return tr("the virtual wall");
+    }
+    return QString();
+}
+
+bool OdometryMap::pressOnWorld(QMouseEvent *event)
+{
+    const QPointF at = floorPointFor(event->position());
+    const std::optional<WorldGrip> grip = WorldGrip::at(*m_world, at, gripToleranceMm(), m_selectedItem);
+    // The selected thing's handles come before a robot standing on them;
+    // anything else comes after the robots.
+    const bool onHandle = grip && grip->item == m_selectedItem && grip->handle != WorldGrip::Handle::Body;
+    if (!onHandle && truePoseAt(event->position()))
+        return false;
+    if (!grip) {
+        setSelectedItem(std::nullopt);
+        return false;
+    }
+    setSelectedItem(grip->item);
+    const bool turn = (event->modifiers() & Qt::ShiftModifier) != 0;
+    m_itemHold = ItemHold{*grip, *m_world, at, turn, sim::WorldEdit::put(grip->item, *m_world)};
+    m_itemHold->last.gesture = ++m_lastGesture;
+    setCursor(grip->handle == WorldGrip::Handle::Body && !turn ? Qt::ClosedHandCursor : Qt::CrossCursor);
+    return true;
+}
+
+void OdometryMap::requestAdd(sim::WorldPart part, QPointF floorPoint)
+{
+    if (!m_world)
+        return;
+    sim::WorldEdit edit = addedAt(*m_world, part, floorPoint);
+    edit.gesture = ++m_lastGesture;
+    // The new one will be last in its list: selected once the floor comes back.
+    const int index = part == sim::WorldPart::Wall      ? int(m_world->walls.size())
+                      : part == sim::WorldPart::DropOff ? int(m_world->dropOffs.size())
+                                                        : 0;
+    emit worldEditRequested(edit);
+    m_selectedItem = sim::WorldItem{part, index};
+    update();
+}
+
+void OdometryMap::keyPressEvent(QKeyEvent *event)
+{
+    if (m_editing && m_selectedItem && (event->key() == Qt::Key_Delete || event->key() == Qt::Key_Backspace)) {
+        sim::WorldEdit edit = sim::WorldEdit::remove(*m_selectedItem);
+        edit.gesture = ++m_lastGesture;
+        m_selectedItem.reset();
+        m_itemHold.reset();
+        emit worldEditRequested(edit);
+        update();
+        return;
+    }
+    if (m_editing && m_selectedItem && event->key() == Qt::Key_Escape) {
+        setSelectedItem(std::nullopt);
+        return;
+    }
+    QWidget::keyPressEvent(event);
+}
+
+QMenu *OdometryMap::contextMenuAt(QPoint at)
+{
+    if (!m_world)
+        return nullptr;
+    auto *menu = new QMenu(this);
+    QAction *edit = menu->addAction(tr("Edit room"));
+    edit->setObjectName("editRoomAction");
+    edit->setCheckable(true);
+    edit->setChecked(m_editing);
+    connect(edit, &QAction::toggled, this, &OdometryMap::setEditing);
+    if (!m_editing)
+        return menu;
+    const QPointF floor = floorPointFor(at);
+    menu->addSeparator();
+    const auto add = [this, menu, floor](const char *name, const QString &text, sim::WorldPart part) {
+        QAction *a = menu->addAction(text);
+        a->setObjectName(name);
+        connect(a, &QAction::triggered, this, [this, part, floor] { requestAdd(part, floor); });
+    };
+    add("addWallAction", tr("Add wall here"), sim::WorldPart::Wall);
+    add("addDropOffAction", tr("Add stage edge here"), sim::WorldPart::DropOff);
+    add("putVirtualWallAction", m_world->virtualWall ? tr("Move the virtual wall here") : tr("Add virtual wall here"),
+        sim::WorldPart::VirtualWall);
+    add("putDockAction", tr("Put the dock here"), sim::WorldPart::Dock);
+    if (const auto grip = WorldGrip::at(*m_world, floor, gripToleranceMm(), m_selectedItem)) {
+        setSelectedItem(grip->item);
+        menu->addSeparator();
+        QAction *remove = menu->addAction(tr("Delete %1").arg(itemName(grip->item.part)));
+        remove->setObjectName("deleteItemAction");
+        remove->setShortcut(QKeySequence::Delete);
+        const sim::WorldItem item = grip->item;
+        connect(remove, &QAction::triggered, this, [this, item] {
+            sim::WorldEdit edit = sim::WorldEdit::remove(item);
+            edit.gesture = ++m_lastGesture;
+            m_selectedItem.reset();
+            emit worldEditRequested(edit);
+            update();
+        });
+    }
+    // Whatever the owner of the room added (Undo, Redo).
+    if (!actions().isEmpty()) {
+        menu->addSeparator();
+        menu->addActions(actions());
+    }
+    return menu;
+}
+
+void OdometryMap::contextMenuEvent(QContextMenuEvent *event)
+{
+    // The right button turning a robot is not a call for the menu.
+    if (m_hold || truePoseAt(event->pos()))
+        return;
+    if (QMenu *menu = contextMenuAt(event->pos())) {
+        menu->exec(event->globalPos());
+        delete menu;
+    }
 }

@@ -6,6 +6,7 @@
 #include "robot_profile.h"
 #include "sensor_snapshot.h"
 #include "world.h" // the floor as plain values; no robot
+#include "world_grip.h"
 
 #include <QColor>
 #include <QList>
@@ -16,6 +17,7 @@
 
 class QDoubleSpinBox;
 class QLabel;
+class QMenu;
 class QPushButton;
 class QTimer;
 
@@ -33,6 +35,14 @@ class QTimer;
 // or put it down. The map only asks (robotMoveRequested, robotLiftRequested);
 // whoever owns the room moves the robot, and the map shows it when the
 // true poses come back.
+//
+// The room itself can be edited (the Edit room button or the context menu):
+// click a wall, a stage edge (drop-off), the dock or the virtual wall to
+// select it, drag it or its handles (a wall's ends, a stage edge's corners,
+// the heading of the dock and of the virtual wall's beam; Shift turns the
+// dock), Delete removes it, and the context menu adds new ones where it was
+// opened. Again the map only asks (worldEditRequested) and draws the floor
+// it is given; it keeps only what is selected.
 class OdometryMap : public QWidget {
     Q_OBJECT
 public:
@@ -73,6 +83,17 @@ public:
     static QColor robotColour(int index);
 
     void setWorld(std::optional<sim::World> world);
+    const std::optional<sim::World> &world() const { return m_world; }
+
+    // Edit mode, offered while a room is shown.
+    void setEditing(bool editing);
+    bool isEditing() const { return m_editing; }
+    // The thing on the floor selected for editing.
+    std::optional<sim::WorldItem> selectedItem() const { return m_selectedItem; }
+    void setSelectedItem(std::optional<sim::WorldItem> item);
+    // The context menu as it would pop up at widget point `at`; the caller
+    // owns it. nullptr when there is nothing to offer (no room shown).
+    QMenu *contextMenuAt(QPoint at);
 
     void setWheelBaseMm(double mm);
     void setWheelDiameterMm(double mm);
@@ -99,6 +120,11 @@ signals:
     void robotMoveRequested(int robot, const oi::Pose &pose);
     // Hold robot `robot` up (its wheels drop) or put it back down.
     void robotLiftRequested(int robot, bool lifted);
+    // Change the floor: move, add or remove a wall, a stage edge, the dock
+    // or the virtual wall. Every step of a drag asks again, with one
+    // `gesture` number for the whole drag.
+    void worldEditRequested(const sim::WorldEdit &edit);
+    void editingChanged(bool editing);
 
 public slots:
     void zoomIn();
@@ -115,6 +141,8 @@ protected:
     void mouseMoveEvent(QMouseEvent *event) override;
     void mouseReleaseEvent(QMouseEvent *event) override;
     void mouseDoubleClickEvent(QMouseEvent *event) override;
+    void keyPressEvent(QKeyEvent *event) override;
+    void contextMenuEvent(QContextMenuEvent *event) override;
 
 private:
     void retranslateUi();
@@ -124,6 +152,13 @@ private:
     void refresh();
     void paintGrid(QPainter &painter, const QRect &area) const;
     void paintWorld(QPainter &painter) const;
+    void paintSelection(QPainter &painter) const;
+    void paintEditBanner(QPainter &painter, const QRect &area) const;
+    void paintLengthLabel(QPainter &painter, QPointF centre, const QString &text) const;
+    bool pressOnWorld(QMouseEvent *event);
+    void requestAdd(sim::WorldPart part, QPointF floorPoint);
+    QString itemName(sim::WorldPart part) const;
+    double gripToleranceMm() const;
     void paintTruePoses(QPainter &painter) const;
     QColor truePoseColour(qsizetype index) const;
     void paintRobot(QPainter &painter, const oi::Pose &pose, const QColor &colour, bool outline) const;
@@ -151,6 +186,18 @@ private:
         bool turning = false;
     };
     std::optional<Hold> m_hold;
+    // A thing on the floor held by the pointer, and the floor when it was taken.
+    struct ItemHold {
+        WorldGrip grip;
+        sim::World start;
+        QPointF fromMm;
+        bool turning = false;
+        sim::WorldEdit last;
+    };
+    std::optional<ItemHold> m_itemHold;
+    bool m_editing = false;
+    std::optional<sim::WorldItem> m_selectedItem;
+    std::uint64_t m_lastGesture = 0;
     bool m_dirty = false;
 
     QWidget *m_controls = nullptr;
@@ -162,6 +209,9 @@ private:
     QPushButton *m_zoomOut = nullptr;
     QPushButton *m_centre = nullptr;
     QPushButton *m_reset = nullptr;
+    QPushButton *m_edit = nullptr;
     QLabel *m_poseLabel = nullptr;
     QTimer *m_displayTimer = nullptr;
 };
+
+Q_DECLARE_METATYPE(sim::WorldEdit)

@@ -19,14 +19,6 @@ namespace {
 
 using Clock = Recording::Clock;
 
-void spin(int ms)
-{
-    QElapsedTimer t;
-    t.start();
-    while (t.elapsed() < ms)
-        QCoreApplication::processEvents(QEventLoop::AllEvents, 1);
-}
-
 int intOption(const QStringList &args, const QString &name, int fallback)
 {
     const qsizetype i = args.indexOf(name);
@@ -72,7 +64,7 @@ int main(int argc, char *argv[])
     std::vector<double> samples;
     int lost = 0;
     for (int round = 0; round < rounds; ++round) {
-        spin(100);
+        QTest::qWait(100);
         const Clock::time_point sent = Clock::now();
         teacher.client.publish(mqtt::topics::stopAll(), json({{"client", "teacher"}}), 1);
         std::vector<std::optional<Clock::time_point>> seen(rigs.size());

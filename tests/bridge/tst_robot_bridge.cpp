@@ -41,9 +41,10 @@ private slots:
     {
         MosquittoBroker broker;
         QVERIFY2(broker.start(), qPrintable(broker.error()));
-        BridgeRig rig(QStringLiteral("r1"), addressOf(broker), BridgeRig::Robot::Virtual);
+        // Before the rig: the session may deliver a last frame while it closes.
         QList<QJsonObject> frames;
-        connect(&rig.session, &RobotSession::frameReceived, this,
+        BridgeRig rig(QStringLiteral("r1"), addressOf(broker), BridgeRig::Robot::Virtual);
+        connect(&rig.session, &RobotSession::frameReceived, &rig.session,
                 [&](double, const oi::SensorSnapshot &f) { frames << oilink::snapshotToJson(f); });
         ConsoleClient watcher(QStringLiteral("watcher"), addressOf(broker), {topics::telemetry(QStringLiteral("r1"))});
         QVERIFY(watcher.waitForState(QStringLiteral("r1"), true));

@@ -10,6 +10,7 @@
 #include "robot_link.h"
 #include "robot_link_thread.h"
 #include "script_assembler.h"
+#include "snapshot_json.h"
 #include "stream_parser.h"
 #include "termination_signals.h"
 #include "transport.h"
@@ -17,6 +18,9 @@
 
 #include <QCoreApplication>
 #include <QDateTime>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QTimer>
 
 #include <cstdio>
@@ -105,24 +109,14 @@ struct Options {
     std::string reply;
 };
 
-// One JSON object for a decoded frame or reply: what decode, sensors and
+// One JSON line for a decoded frame or reply, {"kind": ..., "packets": {...}}
+// with the packets as snapshotToJson writes them: what decode, sensors and
 // send print.
 std::string snapshotJson(const oi::SensorSnapshot &s, oi::FrameKind kind)
 {
-    std::string line = kind == oi::FrameKind::Stream ? R"({"kind":"stream","packets":{)"
-                                                     : R"({"kind":"reply","packets":{)";
-    bool first = true;
-    for (const oi::PacketInfo &p : s.robotProfile().packets()) {
-        if (!s.has(p.id))
-            continue;
-        if (!first)
-            line += ',';
-        first = false;
-        line += '"';
-        line += p.key;
-        line += "\":" + std::to_string(s.raw(p.id));
-    }
-    return line + "}}";
+    const QJsonObject line{{"kind", kind == oi::FrameKind::Stream ? "stream" : "reply"},
+                           {"packets", oilink::snapshotToJson(s)}};
+    return QJsonDocument(line).toJson(QJsonDocument::Compact).toStdString();
 }
 
 int fail(const std::string &message)
@@ -439,24 +433,14 @@ int parseLinkOptions(const std::vector<std::string> &args, std::size_t from, Lin
 std::string statisticsJson(const oilink::LinkStats &st, const std::string &profileKey, int baud,
                            const QList<int> &packets)
 {
-    std::string ids;
+    QJsonObject o = oilink::statisticsToJson(st);
+    o.insert(QLatin1String("profile"), QString::fromStdString(profileKey));
+    o.insert(QLatin1String("baud"), baud);
+    QJsonArray ids;
     for (int id : packets)
-        ids += (ids.empty() ? "" : ",") + std::to_string(id);
-    // Not printf: QCoreApplication adopts the user's locale, whose decimal
-    // comma would break the JSON.
-    const std::string rate = toStd(QString::number(st.framesPerSecond, 'f', 1));
-    const std::string last = st.lastFrameTime.isValid()
-                                 ? '"' + toStd(st.lastFrameTime.toString(Qt::ISODateWithMs)) + '"'
-                                 : std::string("null");
-    return R"({"statistics":{"profile":")" + profileKey + R"(","baud":)" + std::to_string(baud)
-           + R"(,"packets":[)" + ids + R"(],"frames":)" + std::to_string(st.frames)
-           + R"(,"frames_per_second":)" + rate + R"(,"replies":)" + std::to_string(st.replies)
-           + R"(,"checksum_failures":)" + std::to_string(st.checksumFailures)
-           + R"(,"resyncs":)" + std::to_string(st.resyncs)
-           + R"(,"bytes_discarded":)" + std::to_string(st.bytesDiscarded)
-           + R"(,"bytes_received":)" + std::to_string(st.bytesReceived)
-           + R"(,"bytes_sent":)" + std::to_string(st.bytesSent)
-           + R"(,"reconnects":)" + std::to_string(st.reconnects) + R"(,"last_frame":)" + last + "}}";
+        ids.append(id);
+    o.insert(QLatin1String("packets"), ids);
+    return QJsonDocument(QJsonObject{{"statistics", o}}).toJson(QJsonDocument::Compact).toStdString();
 }
 
 int streamSensors(int argc, char **argv, const std::vector<std::string> &args)

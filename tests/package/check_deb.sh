@@ -29,6 +29,9 @@ has() { grep -qx "\./$1" <<<"$contents" || fail "$1 is not in the package"; }
 has usr/bin/roomba-dashboard
 has usr/bin/roomba-sim
 has usr/bin/roomba-ctl
+has usr/bin/roomba-bridge
+has "usr/lib/systemd/system/roomba-bridge@.service"
+for f in mosquitto.conf acl roomba-bridge.conf; do has "usr/share/roomba-dashboard/mqtt/$f"; done
 has "usr/share/applications/$app_id.desktop"
 has "usr/share/icons/hicolor/scalable/apps/$app_id.svg"
 has "usr/share/metainfo/$app_id.metainfo.xml"
@@ -61,4 +64,9 @@ release=$(grep -o '<release version="[^"]*"' "$share/metainfo/$app_id.metainfo.x
 # The packaged (stripped) program still runs; --version needs no display.
 out=$("$tmp/root/usr/bin/roomba-dashboard" --version)
 [ "$out" = "roomba-dashboard $version" ] || fail "packaged roomba-dashboard --version says '$out'"
+out=$("$tmp/root/usr/bin/roomba-bridge" --version)
+[ "$out" = "roomba-bridge $version" ] || fail "packaged roomba-bridge --version says '$out'"
+unit=$tmp/root/usr/lib/systemd/system/roomba-bridge@.service
+exec_start=$(sed -n 's/^ExecStart=\([^ ]*\).*/\1/p' "$unit")
+[ -x "$tmp/root$exec_start" ] || fail "the unit's ExecStart=$exec_start is not a packaged program"
 echo "PASS"

@@ -1,0 +1,163 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "bridge_config.h"
+
+#include "fleet_topics.h"
+
+#include <QFile>
+#include <QHash>
+
+#include <cmath>
+
+namespace {
+
+bool isYes(const QString &v)
+{
+    return v == QLatin1String("true") || v == QLatin1String("yes") || v == QLatin1String("on") || v == QLatin1String("1");
+}
+bool isNo(const QString &v)
+{
+    return v == QLatin1String("false") || v == QLatin1String("no") || v == QLatin1String("off") || v == QLatin1String("0");
+}
+
+} // namespace
+
+const QStringList &BridgeConfig::keys()
+{
+    static const QStringList k{
+        QStringLiteral("broker"),   QStringLiteral("name"),          QStringLiteral("sim"),
+        QStringLiteral("port"),     QStringLiteral("tcp"),           QStringLiteral("profile"),
+        QStringLiteral("username"), QStringLiteral("password"),      QStringLiteral("password-file"),
+        QStringLiteral("cafile"),   QStringLiteral("certfile"),      QStringLiteral("keyfile"),
+        QStringLiteral("rate"),
+    };
+    return k;
+}
+
+std::optional<QList<BridgeConfig::Setting>> BridgeConfig::readFile(const QString &path, QString *error)
+{
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly | QIODevice::Text)) {
+        *error = QStringLiteral("%1: cannot read it: %2").arg(path, file.errorString());
+        return std::nullopt;
+    }
+    QList<Setting> settings;
+    int lineNumber = 0;
+    while (!file.atEnd()) {
+        ++lineNumber;
+        const QString line = QString::fromUtf8(file.readLine()).trimmed();
+        if (line.isEmpty() || line.startsWith(QLatin1Char('#')))
+            continue;
+        const QString where = QStringLiteral("%1:%2").arg(path).arg(lineNumber);
+        const qsizetype eq = line.indexOf(QLatin1Char('='));
+        if (eq < 0) {
+            *error = QStringLiteral("%1: '%2' is not a 'key = value' line").arg(where, line.left(60));
+            return std::nullopt;
+        }
+        const QString key = line.left(eq).trimmed();
+        if (!keys().contains(key)) {
+            *error = QStringLiteral("%1: '%2' is not a setting (%3)").arg(where, key, keys().join(QStringLiteral(", ")));
+            return std::nullopt;
+        }
+        settings.append({key, line.mid(eq + 1).trimmed(), where});
+    }
+    return settings;
+}
+
+std::optional<BridgeConfig> BridgeConfig::fromSettings(const QList<Setting> &settings, QString *error)
+{
+    QHash<QString, Setting> last;
+    for (const Setting &s : settings)
+        last.insert(s.key, s);
+    auto fail = [&](const QString &key, const QString &why) {
+        const Setting &s = last[key];
+        *error = QStringLiteral("%1: %2: %3").arg(s.where, key, why);
+        return std::nullopt;
+    };
+    auto value = [&](const char *key) { return last.value(QLatin1String(key)).value; };
+    auto has = [&](const char *key) { return last.contains(QLatin1String(key)); };
+
+    BridgeConfig c;
+    if (!has("name"))
+        return *error = QStringLiteral("say which robot this is: --name NAME (or name = NAME in the config file)"),
+               std::nullopt;
+    c.name = value("name");
+    if (!mqtt::topics::isValidName(c.name) || c.name == QLatin1String("fleet"))
+        return fail(QStringLiteral("name"), QStringLiteral("'%1' is not a robot name: 1 to 64 letters, digits, '-' or '_', and not 'fleet'").arg(c.name));
+
+    if (has("broker")) {
+        QString why;
+        const std::optional<mqtt::BrokerAddress> broker = mqtt::BrokerAddress::fromUrl(value("broker"), &why);
+        if (!broker)
+            return fail(QStringLiteral("broker"), why);
+        c.broker = *broker;
+    }
+    if (has("username"))
+        c.broker.username = value("username");
+    if (has("password"))
+        c.broker.password = value("password");
+    if (has("password-file")) {
+        QFile f(value("password-file"));
+        if (!f.open(QIODevice::ReadOnly | QIODevice::Text))
+            return fail(QStringLiteral("password-file"), QStringLiteral("cannot read %1: %2").arg(f.fileName(), f.errorString()));
+        c.broker.password = QString::fromUtf8(f.readLine()).trimmed();
+    }
+    for (const auto &[key, field] : {std::pair{"cafile", &mqtt::BrokerAddress::caFile},
+                                     std::pair{"certfile", &mqtt::BrokerAddress::certFile},
+                                     std::pair{"keyfile", &mqtt::BrokerAddress::keyFile}}) {
+        if (!has(key))
+            continue;
+        if (!QFile::exists(value(key)))
+            return fail(QString::fromLatin1(key), QStringLiteral("%1 does not exist").arg(value(key)));
+        c.broker.*field = value(key);
+        c.broker.tls = true;
+    }
+    if (c.broker.certFile.isEmpty() != c.broker.keyFile.isEmpty())
+        return fail(c.broker.certFile.isEmpty() ? QStringLiteral("keyfile") : QStringLiteral("certfile"),
+                    QStringLiteral("a client certificate needs both certfile and keyfile"));
+
+    std::optional<oi::ProfileId> profile;
+    if (has("profile")) {
+        const oi::RobotProfile *p = oi::profileByKey(value("profile").toStdString());
+        if (!p)
+            return fail(QStringLiteral("profile"), QStringLiteral("'%1' is not a robot (roomba500, create2, create1)").arg(value("profile")));
+        profile = p->id;
+    }
+
+    QStringList where;
+    if (has("sim")) {
+        if (!isYes(value("sim")) && !isNo(value("sim")))
+            return fail(QStringLiteral("sim"), QStringLiteral("'%1' is not yes or no").arg(value("sim")));
+        if (isYes(value("sim")))
+            where << QStringLiteral("sim");
+    }
+    if (has("port"))
+        where << QStringLiteral("port");
+    if (has("tcp"))
+        where << QStringLiteral("tcp");
+    if (where.isEmpty())
+        return *error = QStringLiteral("say where the robot is: --sim, --port PATH or --tcp HOST:PORT"), std::nullopt;
+    if (where.size() > 1)
+        return fail(where.last(), QStringLiteral("give only one of sim, port and tcp (also set: %1)").arg(where.first()));
+    if (where.first() == QLatin1String("sim")) {
+        const oi::ProfileId robot = profile.value_or(oi::ProfileId::Create2);
+        c.link = oilink::LinkSettings::virtualRobotOf(robot, robot);
+    } else if (where.first() == QLatin1String("port")) {
+        c.link = oilink::LinkSettings::serial(value("port"), profile);
+    } else {
+        const QString tcp = value("tcp");
+        const qsizetype colon = tcp.lastIndexOf(QLatin1Char(':'));
+        bool ok = false;
+        const uint port = colon > 0 ? tcp.mid(colon + 1).toUInt(&ok) : 0;
+        if (!ok || port < 1 || port > 65535)
+            return fail(QStringLiteral("tcp"), QStringLiteral("'%1' is not HOST:PORT with a port from 1 to 65535").arg(tcp));
+        c.link = oilink::LinkSettings::tcp(tcp.left(colon), quint16(port), profile);
+    }
+
+    if (has("rate")) {
+        bool ok = false;
+        c.telemetryRateHz = value("rate").toDouble(&ok);
+        if (!ok || !std::isfinite(c.telemetryRateHz) || c.telemetryRateHz < 0 || c.telemetryRateHz > 1000)
+            return fail(QStringLiteral("rate"), QStringLiteral("'%1' is not a rate from 0 (every frame) to 1000 per second").arg(value("rate")));
+    }
+    return c;
+}

@@ -1,0 +1,36 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "broker_address.h"
+#include "link_settings.h"
+
+#include <QList>
+#include <QString>
+
+#include <optional>
+
+// Everything roomba-bridge needs to know, from its command line and the
+// config file it names (`key = value` lines, '#' starts a comment; the keys
+// are the long options' names: see resources/mqtt/roomba-bridge.conf). An
+// option on the command line wins over the same key in the file.
+struct BridgeConfig {
+    QString name;
+    mqtt::BrokerAddress broker;
+    oilink::LinkSettings link;
+    double telemetryRateHz = 0; // 0: every frame
+
+    // One value and where it came from ("--rate", "r1.conf:4"), for errors.
+    struct Setting {
+        QString key;
+        QString value;
+        QString where;
+    };
+    // The keys a file may set, each also a long option.
+    static const QStringList &keys();
+    // The settings of a config file, or nothing and `error` naming the file,
+    // the line and what is wrong with it.
+    static std::optional<QList<Setting>> readFile(const QString &path, QString *error);
+    // A config from settings read in order (a later one wins), or nothing
+    // and `error` naming the setting at fault.
+    static std::optional<BridgeConfig> fromSettings(const QList<Setting> &settings, QString *error);
+};

@@ -1,0 +1,86 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "control_lease.h"
+
+#include <algorithm>
+
+SteadyLeaseClock::SteadyLeaseClock(QObject *parent) : LeaseClock(parent)
+{
+    m_elapsed.start();
+    m_timer.setSingleShot(true);
+    // A coarse timer may fire up to 5% late: 15 ms on 300.
+    m_timer.setTimerType(Qt::PreciseTimer);
+    connect(&m_timer, &QTimer::timeout, this, &LeaseClock::alarm);
+}
+
+void SteadyLeaseClock::wakeAt(qint64 atMs)
+{
+    m_timer.start(int(std::max<qint64>(0, atMs - nowMs())));
+}
+
+ControlLease::ControlLease(LeaseClock &clock, QObject *parent) : QObject(parent), m_clock(clock)
+{
+    connect(&m_clock, &LeaseClock::alarm, this, &ControlLease::onAlarm);
+}
+
+bool ControlLease::take(const QString &client)
+{
+    if (!m_holder.isEmpty() && m_holder != client)
+        return false;
+    grant(client);
+    return true;
+}
+
+bool ControlLease::keep(const QString &client)
+{
+    if (!isHeldBy(client))
+        return false;
+    m_lastBeatMs = m_clock.nowMs();
+    m_clock.wakeAt(m_lastBeatMs + kHeartbeatTimeoutMs);
+    return true;
+}
+
+bool ControlLease::release(const QString &client)
+{
+    if (!isHeldBy(client))
+        return false;
+    free();
+    return true;
+}
+
+QString ControlLease::takeOver(const QString &client)
+{
+    const QString former = m_holder;
+    grant(client);
+    return former;
+}
+
+QString ControlLease::free()
+{
+    const QString former = m_holder;
+    m_clock.cancel();
+    if (former.isEmpty())
+        return former;
+    m_holder.clear();
+    emit holderChanged(m_holder);
+    return former;
+}
+
+void ControlLease::grant(const QString &client)
+{
+    const bool changed = m_holder != client;
+    m_holder = client;
+    keep(client); // taking control is the first heartbeat
+    if (changed)
+        emit holderChanged(m_holder);
+}
+
+void ControlLease::onAlarm()
+{
+    if (m_holder.isEmpty())
+        return;
+    if (m_clock.nowMs() - m_lastBeatMs < kHeartbeatTimeoutMs) {
+        m_clock.wakeAt(m_lastBeatMs + kHeartbeatTimeoutMs);
+        return;
+    }
+    emit expired(free());
+}

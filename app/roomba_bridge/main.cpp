@@ -1,0 +1,115 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// roomba-bridge: one robot on an MQTT broker (docs/mqtt.md). Owns the
+// robot's link and its safety rules; publishes state, telemetry and link
+// statistics; takes commands from the client that holds control.
+
+#include "bridge_config.h"
+#include "robot_bridge.h"
+#include "robot_session.h"
+#include "termination_signals.h"
+#include "transport_factory.h"
+
+#include <QCommandLineParser>
+#include <QCoreApplication>
+
+#include <cstdio>
+
+namespace {
+
+constexpr int kUsageError = 2;
+
+int fail(const QString &message)
+{
+    std::fprintf(stderr, "roomba-bridge: %s\n", qPrintable(message));
+    return kUsageError;
+}
+
+} // namespace
+
+int main(int argc, char *argv[])
+{
+    QCoreApplication app(argc, argv);
+    QCoreApplication::setApplicationName(QStringLiteral("roomba-bridge"));
+    QCoreApplication::setApplicationVersion(QStringLiteral(ROOMBA_VERSION));
+
+    QCommandLineParser parser;
+    parser.setApplicationDescription(QStringLiteral(
+        "One robot on an MQTT broker: its state (retained), telemetry and link statistics\n"
+        "under roomba/NAME/, commands from the client that holds control, stop all.\n"
+        "Topics and messages: docs/mqtt.md. Logs one line per event (category\n"
+        "roomba.bridge; QT_LOGGING_RULES applies)."));
+    const QCommandLineOption helpOption = parser.addHelpOption();
+    const QCommandLineOption versionOption = parser.addVersionOption();
+    const QCommandLineOption configOption(QStringLiteral("config"),
+                                          QStringLiteral("Read settings from FILE (key = value; the keys are these options' names). Options given here win."),
+                                          QStringLiteral("FILE"));
+    parser.addOption(configOption);
+    parser.addOptions({
+        {QStringLiteral("broker"), QStringLiteral("The broker: mqtt://HOST:PORT or mqtts://HOST:PORT (default mqtt://127.0.0.1:1883)."), QStringLiteral("URL")},
+        {QStringLiteral("name"), QStringLiteral("The robot's name in the topics: 1 to 64 letters, digits, '-' or '_'."), QStringLiteral("NAME")},
+        {QStringLiteral("sim"), QStringLiteral("Drive a virtual robot in this process.")},
+        {QStringLiteral("port"), QStringLiteral("The robot's serial port, e.g. /dev/ttyUSB0."), QStringLiteral("PATH")},
+        {QStringLiteral("tcp"), QStringLiteral("A serial-over-TCP bridge (ser2net) at HOST:PORT."), QStringLiteral("HOST:PORT")},
+        {QStringLiteral("profile"), QStringLiteral("Robot: roomba500, create2 (also roomba600) or create1. Default: found by asking the robot (create2 with --sim)."), QStringLiteral("PROFILE")},
+        {QStringLiteral("username"), QStringLiteral("The broker account."), QStringLiteral("USER")},
+        {QStringLiteral("password-file"), QStringLiteral("Read the account's password from the first line of FILE."), QStringLiteral("FILE")},
+        {QStringLiteral("cafile"), QStringLiteral("TLS: the CA certificate (PEM) the broker's certificate is checked against."), QStringLiteral("FILE")},
+        {QStringLiteral("certfile"), QStringLiteral("TLS: this bridge's certificate (PEM), with --keyfile."), QStringLiteral("FILE")},
+        {QStringLiteral("keyfile"), QStringLiteral("TLS: this bridge's private key (PEM)."), QStringLiteral("FILE")},
+        {QStringLiteral("rate"), QStringLiteral("Telemetry messages per second (default 0: one per frame, about 66)."), QStringLiteral("HZ")},
+    });
+    if (!parser.parse(QCoreApplication::arguments()))
+        return fail(parser.errorText());
+    if (parser.isSet(helpOption)) {
+        std::fputs(qPrintable(parser.helpText()), stdout);
+        return 0;
+    }
+    if (parser.isSet(versionOption)) {
+        std::printf("roomba-bridge %s\n", ROOMBA_VERSION);
+        return 0;
+    }
+    if (!parser.positionalArguments().isEmpty())
+        return fail(QStringLiteral("unexpected argument '%1'").arg(parser.positionalArguments().first()));
+
+    QString error;
+    QList<BridgeConfig::Setting> settings;
+    if (parser.isSet(configOption)) {
+        const auto fromFile = BridgeConfig::readFile(parser.value(configOption), &error);
+        if (!fromFile)
+            return fail(error);
+        settings = *fromFile;
+    }
+    for (const QString &key : BridgeConfig::keys()) {
+        if (key == QLatin1String("password") || !parser.isSet(key))
+            continue; // a password on the command line would show in ps
+        settings.append({key, key == QLatin1String("sim") ? QStringLiteral("yes") : parser.value(key),
+                         QStringLiteral("--%1").arg(key)});
+    }
+    const std::optional<BridgeConfig> config = BridgeConfig::fromSettings(settings, &error);
+    if (!config)
+        return fail(error);
+
+    RobotSession robot;
+    robot.setName(config->name);
+    robot.setTransportFactory(transports::transportFactory());
+    mqtt::MqttClient broker(QStringLiteral("roomba-bridge-%1").arg(config->name));
+    broker.setLastWill(RobotBridge::lastWill(config->name));
+    SteadyLeaseClock clock;
+    RobotBridge bridge(robot, broker, clock, {config->name, config->telemetryRateHz});
+
+    TerminationSignals termination;
+    QObject::connect(&termination, &TerminationSignals::requested, &app, [&](int signalNumber) {
+        qCInfo(lcBridge, "signal %d: stopping", signalNumber);
+        bridge.shutDown();
+        broker.disconnectFromBroker();
+        app.exit(TerminationSignals::exitStatusFor(signalNumber));
+    });
+
+    qCInfo(lcBridge, "robot %s on %s, broker %s", qPrintable(config->name), qPrintable(config->link.describe()),
+           qPrintable(config->broker.displayUrl()));
+    bridge.start();
+    robot.connectTo(config->link);
+    if (!broker.connectToBroker(config->broker))
+        return 1; // errorOccurred has said why
+    return app.exec();
+}

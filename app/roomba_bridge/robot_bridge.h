@@ -1,0 +1,76 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "command_request.h"
+#include "control_lease.h"
+#include "mqtt_client.h"
+#include "sensor_snapshot.h"
+
+#include <QJsonObject>
+#include <QLoggingCategory>
+#include <QObject>
+#include <QTimer>
+
+class RobotSession;
+
+Q_DECLARE_LOGGING_CATEGORY(lcBridge)
+
+// One robot on the broker (docs/mqtt.md): publishes its state (retained),
+// telemetry and link statistics, takes commands and control messages from
+// clients, and answers each on the client's reply topic. The session owns
+// the link and the robot's safety rules; this adds the network's: one
+// controller at a time with a heartbeat, stop all, and the robot stopped
+// while the broker is gone.
+class RobotBridge : public QObject {
+    Q_OBJECT
+public:
+    struct Options {
+        QString name;               // the robot's name in the topics
+        double telemetryRateHz = 0; // 0: every frame
+    };
+
+    RobotBridge(RobotSession &robot, mqtt::MqttClient &broker, LeaseClock &clock, Options options,
+                QObject *parent = nullptr);
+
+    // The state the broker publishes when the bridge dies: set it on the
+    // client before it connects.
+    static mqtt::LastWill lastWill(const QString &name);
+
+    // Subscribes and starts publishing; connect the client afterwards.
+    void start();
+    // Stops the robot and leaves it in Passive, frees control and
+    // publishes the offline state; the client may disconnect afterwards.
+    void shutDown();
+
+    QString controller() const { return m_lease.holder(); }
+    QJsonObject state() const;
+
+private:
+    void onMessage(const QString &topic, const QByteArray &payload);
+    void onBrokerConnected();
+    void onBrokerLost(const QString &reason);
+    void onFrame(const oi::SensorSnapshot &frame);
+    void handleCommand(const QString &client, const QByteArray &payload);
+    void handleControl(const QString &client, const QByteArray &payload, bool takeover);
+    void stopAll();
+    // The command's bytes are validated; motion goes through the teleop
+    // rules, the rest straight to the robot. Returns the error, or empty.
+    QString sendValidated(const QString &command, const QByteArray &bytes);
+    // Drive 0,0 and motors off, through the teleop rules.
+    void stopRobot();
+    void reply(const QString &client, QJsonObject answer);
+    void replyControl(const QString &client, bool ok, const QString &error = {});
+    void publishState(bool always = false);
+    void publishTelemetry(const oi::SensorSnapshot &frame);
+    void publishStats();
+
+    RobotSession &m_robot;
+    mqtt::MqttClient &m_broker;
+    ControlLease m_lease;
+    Options m_options;
+    QTimer m_telemetryTimer;
+    QTimer m_statsTimer;
+    bool m_frameWaiting = false;
+    bool m_shutDown = false;
+    QJsonObject m_publishedState;
+};

@@ -1,0 +1,100 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The sample broker rules (resources/mqtt/acl) on a real mosquitto, with a
+// bridge in this process: a spectator watches but cannot drive, a student
+// cannot take over or stop the fleet, the teacher can, and an unknown
+// client is refused.
+
+#include "bridge_rig.h"
+
+#include <QFile>
+
+using namespace mqtt;
+
+class TestBridgeAccess : public QObject {
+    Q_OBJECT
+
+    std::unique_ptr<MosquittoBroker> m_broker;
+
+    BrokerAddress as(const QString &user) const { return addressOf(*m_broker, user, user + QStringLiteral("-pw")); }
+
+private slots:
+    void init()
+    {
+        m_broker = std::make_unique<MosquittoBroker>(
+            QStringLiteral("allow_anonymous false\npassword_file %DIR%/passwords\nacl_file %DIR%/acl\n"));
+        QFile acl(QStringLiteral(ROOMBA_MQTT_DIR "/acl"));
+        QVERIFY(acl.open(QIODevice::ReadOnly));
+        m_broker->writeFile(QStringLiteral("acl"), acl.readAll());
+        for (const char *user : {"bridge", "teacher", "spectator", "alice", "bob"})
+            QVERIFY(m_broker->addUser(QString::fromLatin1(user), QString::fromLatin1(user) + QStringLiteral("-pw")));
+        QVERIFY2(m_broker->start(), qPrintable(m_broker->error()));
+    }
+    void cleanup() { m_broker.reset(); }
+
+    void unknownClientIsRefused()
+    {
+        for (const auto &[user, password] : {std::pair{"mallory", "mallory-pw"}, std::pair{"alice", "wrong"}, std::pair{"", ""}}) {
+            ConsoleClient intruder(QString::fromLatin1(user), addressOf(*m_broker, QString::fromLatin1(user), QString::fromLatin1(password)));
+            QTRY_VERIFY_WITH_TIMEOUT(intruder.errors.count() >= 1, 5000);
+            QVERIFY2(intruder.errors[0][0].toString().contains(QLatin1String("not authorised")),
+                     qPrintable(intruder.errors[0][0].toString()));
+            QCOMPARE(intruder.up.count(), 0);
+        }
+    }
+
+    void spectatorWatchesButCannotDrive()
+    {
+        BridgeRig rig(QStringLiteral("r1"), as(QStringLiteral("bridge")));
+        QVERIFY(rig.streaming());
+        ConsoleClient spectator(QStringLiteral("spectator"), as(QStringLiteral("spectator")),
+                                {topics::telemetry(QStringLiteral("r1"))});
+        ConsoleClient alice(QStringLiteral("alice"), as(QStringLiteral("alice")));
+        QVERIFY(spectator.waitForState(QStringLiteral("r1"), true));
+        QTRY_VERIFY_WITH_TIMEOUT(!spectator.on(topics::telemetry(QStringLiteral("r1"))).isEmpty(), 5000);
+        QVERIFY(alice.waitForState(QStringLiteral("r1"), true));
+
+        // The broker drops what the spectator sends: control, and even stop.
+        spectator.client.publish(topics::control(QStringLiteral("r1"), QStringLiteral("spectator")), json({{"action", "take"}}), 1);
+        spectator.client.publish(topics::command(QStringLiteral("r1"), QStringLiteral("spectator")),
+                                 json({{"id", "s1"}, {"command", "stop"}}), 1);
+        spectator.client.publish(topics::stopAll(), json({{"client", "spectator"}}), 1);
+        const qsizetype before = rig.recording.count();
+        // Behind them, alice takes control and is answered; the spectator never was.
+        QCOMPARE(alice.control(QStringLiteral("r1"), "take").value(QLatin1String("controller")).toString(), QStringLiteral("alice"));
+        QCOMPARE(rig.bridge.controller(), QStringLiteral("alice"));
+        QCOMPARE(rig.recording.count(), before);
+    }
+
+    void studentCannotTakeOverOrStopAll()
+    {
+        BridgeRig rig(QStringLiteral("r1"), as(QStringLiteral("bridge")));
+        QVERIFY(rig.streaming());
+        ConsoleClient alice(QStringLiteral("alice"), as(QStringLiteral("alice"))), bob(QStringLiteral("bob"), as(QStringLiteral("bob")));
+        ConsoleClient teacher(QStringLiteral("teacher"), as(QStringLiteral("teacher")));
+        QVERIFY(alice.waitForState(QStringLiteral("r1"), true));
+        QVERIFY(bob.connected());
+        QVERIFY(teacher.connected());
+        QCOMPARE(alice.control(QStringLiteral("r1"), "take").value(QLatin1String("ok")), QJsonValue(true));
+        const qsizetype before = rig.recording.count();
+
+        // Bob tries to take over, speak for alice, and stop the fleet; then
+        // asks for control in his own name: the only one the bridge hears.
+        bob.client.publish(topics::takeover(QStringLiteral("r1"), QStringLiteral("bob")), json({{"action", "take"}}), 1);
+        bob.client.publish(topics::control(QStringLiteral("r1"), QStringLiteral("alice")), json({{"action", "release"}}), 1);
+        bob.client.publish(topics::stopAll(), json({{"client", "bob"}}), 1);
+        const QJsonObject r = bob.control(QStringLiteral("r1"), "take");
+        QCOMPARE(r.value(QLatin1String("error")).toString(), QStringLiteral("alice has control"));
+        QCOMPARE(rig.bridge.controller(), QStringLiteral("alice"));
+        QCOMPARE(rig.recording.count(), before); // no stop went out
+
+        // The teacher may do both.
+        QCOMPARE(teacher.ask(topics::takeover(QStringLiteral("r1"), QStringLiteral("teacher")), {{"action", "take"}})
+                     .value(QLatin1String("controller")).toString(), QStringLiteral("teacher"));
+        teacher.client.publish(topics::stopAll(), json({{"client", "teacher"}}), 1);
+        QTRY_COMPARE(rig.bridge.controller(), QString());
+        QTRY_VERIFY(rig.recording.written().endsWith(rig.stopBytes()));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestBridgeAccess)
+#include "tst_bridge_access.moc"

@@ -1,0 +1,244 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// A bridge in this process against a real mosquitto: telemetry as the robot
+// sent it, commands validated before a byte goes out, one controller with a
+// heartbeat, stop all, and the broker going away and coming back.
+
+#include "bridge_rig.h"
+#include "snapshot_json.h"
+
+using namespace mqtt;
+
+class TestRobotBridge : public QObject {
+    Q_OBJECT
+
+private:
+    // Every byte the robot got after `from` writes.
+    static QByteArray writtenSince(Recording &r, qsizetype from)
+    {
+        QMutexLocker lock(&r.mutex);
+        return r.writes.mid(from).join();
+    }
+    // Alice takes control of r1 and drives it; true once its bytes went out.
+    static bool aliceDrives(ConsoleClient &alice, BridgeRig &rig)
+    {
+        if (!alice.waitForState(QStringLiteral("r1"), true)
+            || !alice.control(QStringLiteral("r1"), "take").value(QLatin1String("ok")).toBool()
+            || !alice.command(QStringLiteral("r1"), QStringLiteral("1"), QStringLiteral("drive"), {200, "straight"})
+                    .value(QLatin1String("ok")).toBool())
+            return false;
+        const QByteArray drive = toBytes(*oi::CommandEncoder(rig.session.robotProfile()).drive(200, oi::kRadiusStraight));
+        return QTest::qWaitFor([&] { return rig.recording.written().endsWith(drive); }, 5000);
+    }
+
+private slots:
+    void initTestCase()
+    {
+        oilink::registerLinkMetaTypes();
+        QLoggingCategory::setFilterRules(QStringLiteral("roomba.bridge.info=false"));
+    }
+
+    void telemetryCarriesEveryPacketAsTheRobotSentIt()
+    {
+        MosquittoBroker broker;
+        QVERIFY2(broker.start(), qPrintable(broker.error()));
+        // Before the rig: the session may deliver a last frame while it closes.
+        QList<QJsonObject> frames;
+        BridgeRig rig(QStringLiteral("r1"), addressOf(broker), BridgeRig::Robot::Virtual);
+        connect(&rig.session, &RobotSession::frameReceived, &rig.session,
+                [&](double, const oi::SensorSnapshot &f) { frames << oilink::snapshotToJson(f); });
+        ConsoleClient watcher(QStringLiteral("watcher"), addressOf(broker), {topics::telemetry(QStringLiteral("r1"))});
+        QVERIFY(watcher.waitForState(QStringLiteral("r1"), true));
+        QTRY_VERIFY_WITH_TIMEOUT(watcher.on(topics::telemetry(QStringLiteral("r1"))).size() >= 20, 10000);
+
+        const QList<QJsonObject> telemetry = watcher.on(topics::telemetry(QStringLiteral("r1")));
+        int matched = 0;
+        for (QJsonObject t : telemetry) {
+            QVERIFY(t.value(QLatin1String("timestamp")).toDouble() > 1.7e9);
+            t.remove(QLatin1String("timestamp"));
+            // Every packet the link streams, each under its decode key.
+            QCOMPARE(t.keys(), frames.last().keys());
+            matched += frames.contains(t);
+        }
+        // Each message is one frame, value for value (a frame or two may
+        // have come before the watcher subscribed, none is made up).
+        QCOMPARE(matched, telemetry.size());
+        QVERIFY(frames.last().size() >= 40);
+        QVERIFY(telemetry.last().value(QLatin1String("voltage")).toInt() > 12000);
+
+        const QJsonObject state = watcher.lastState(QStringLiteral("r1"));
+        QCOMPARE(state.value(QLatin1String("profile")).toString(), QStringLiteral("create2"));
+        QCOMPARE(state.value(QLatin1String("link")).toString(), QStringLiteral("streaming"));
+        QCOMPARE(state.value(QLatin1String("mode")).toString(), QStringLiteral("passive"));
+        QVERIFY(state.value(QLatin1String("controller")).isNull());
+        QVERIFY(state.value(QLatin1String("battery_percent")).toDouble() > 0);
+    }
+
+    void badCommandsGetAnErrorAndReachTheRobotAsNothing()
+    {
+        MosquittoBroker broker;
+        QVERIFY2(broker.start(), qPrintable(broker.error()));
+        BridgeRig rig(QStringLiteral("r1"), addressOf(broker));
+        QVERIFY(rig.streaming());
+        ConsoleClient alice(QStringLiteral("alice"), addressOf(broker));
+        QVERIFY(alice.waitForState(QStringLiteral("r1"), true));
+        QCOMPARE(alice.control(QStringLiteral("r1"), "take").value(QLatin1String("ok")), QJsonValue(true));
+        const qsizetype before = rig.recording.count();
+
+        struct Bad {
+            QJsonObject message;
+            QString error;
+        };
+        const Bad bad[] = {
+            {{{"id", "1"}, {"command", "drive"}, {"args", QJsonArray{900, "straight"}}}, "velocity"},
+            {{{"id", "2"}, {"command", "drive"}, {"args", QJsonArray{100}}}, "argument"},
+            {{{"id", "3"}, {"command", "drive"}, {"args", QJsonArray{100, "sideways"}}}, "sideways"},
+            {{{"id", "4"}, {"command", "fly"}}, "fly"},
+            {{{"id", "5"}, {"command", "leds"}, {"args", QJsonArray{1, 2.5, 3}}}, "2.5"},
+            {{{"id", "6"}, {"command", "baud"}, {"args", QJsonArray{11}}}, "stream"},
+            {{{"id", "7"}, {"command", "drive"}, {"args", QJsonArray{100, true}}}, "argument 2"},
+        };
+        for (const Bad &b : bad) {
+            const QJsonObject reply = alice.ask(topics::command(QStringLiteral("r1"), QStringLiteral("alice")), b.message);
+            QCOMPARE(reply.value(QLatin1String("id")), b.message.value(QLatin1String("id")));
+            QCOMPARE(reply.value(QLatin1String("ok")), QJsonValue(false));
+            QVERIFY2(reply.value(QLatin1String("error")).toString().contains(b.error),
+                     qPrintable(reply.value(QLatin1String("error")).toString()));
+        }
+        // Not JSON at all: answered too, without an id to echo.
+        alice.client.publish(topics::command(QStringLiteral("r1"), QStringLiteral("alice")), "drive 100 0", 1);
+        QTRY_VERIFY(alice.on(topics::reply(QStringLiteral("r1"), QStringLiteral("alice"))).last()
+                        .value(QLatin1String("error")).toString().startsWith(QLatin1String("not JSON")));
+
+        // A good command behind them: its bytes are the first the robot gets.
+        const QJsonObject ok = alice.command(QStringLiteral("r1"), QStringLiteral("8"), QStringLiteral("leds"), {8, 0, 255});
+        QCOMPARE(ok.value(QLatin1String("ok")), QJsonValue(true));
+        const QByteArray leds = toBytes(*oi::CommandEncoder(rig.session.robotProfile()).leds(8, 0, 255));
+        QTRY_VERIFY(!writtenSince(rig.recording, before).isEmpty());
+        QCOMPARE(byteText(writtenSince(rig.recording, before)), byteText(leds));
+    }
+
+    void motionWithoutControlIsRefusedWithItsHolder()
+    {
+        MosquittoBroker broker;
+        QVERIFY2(broker.start(), qPrintable(broker.error()));
+        BridgeRig rig(QStringLiteral("r1"), addressOf(broker));
+        QVERIFY(rig.streaming());
+        ConsoleClient alice(QStringLiteral("alice"), addressOf(broker)), bob(QStringLiteral("bob"), addressOf(broker));
+        QVERIFY(alice.waitForState(QStringLiteral("r1"), true));
+        QVERIFY(bob.connected());
+
+        QJsonObject r = bob.command(QStringLiteral("r1"), QStringLiteral("1"), QStringLiteral("drive"), {100, "straight"});
+        QCOMPARE(r.value(QLatin1String("error")).toString(), QStringLiteral("nobody has control: take it first"));
+        QCOMPARE(alice.control(QStringLiteral("r1"), "take").value(QLatin1String("controller")).toString(), QStringLiteral("alice"));
+        r = bob.control(QStringLiteral("r1"), "take");
+        QCOMPARE(r.value(QLatin1String("ok")), QJsonValue(false));
+        QCOMPARE(r.value(QLatin1String("error")).toString(), QStringLiteral("alice has control"));
+        r = bob.command(QStringLiteral("r1"), QStringLiteral("2"), QStringLiteral("drive"), {100, "straight"});
+        QCOMPARE(r.value(QLatin1String("ok")), QJsonValue(false));
+        QCOMPARE(r.value(QLatin1String("error")).toString(), QStringLiteral("alice has control"));
+        QCOMPARE(r.value(QLatin1String("controller")).toString(), QStringLiteral("alice"));
+        QTRY_COMPARE(alice.lastState(QStringLiteral("r1")).value(QLatin1String("controller")).toString(), QStringLiteral("alice"));
+
+        // Stop, though, from anyone.
+        const qsizetype before = rig.recording.count();
+        QCOMPARE(bob.command(QStringLiteral("r1"), QStringLiteral("3"), QStringLiteral("stop")).value(QLatin1String("ok")), QJsonValue(true));
+        QTRY_COMPARE(byteText(writtenSince(rig.recording, before)), byteText(rig.stopBytes()));
+
+        // Released: the robot stops and control is free for bob.
+        QCOMPARE(alice.control(QStringLiteral("r1"), "release").value(QLatin1String("ok")), QJsonValue(true));
+        QCOMPARE(bob.control(QStringLiteral("r1"), "take").value(QLatin1String("ok")), QJsonValue(true));
+    }
+
+    void heartbeatStopsAndTheRobotStopsWithin300Ms()
+    {
+        MosquittoBroker broker;
+        QVERIFY2(broker.start(), qPrintable(broker.error()));
+        BridgeRig rig(QStringLiteral("r1"), addressOf(broker));
+        QVERIFY(rig.streaming());
+        ConsoleClient alice(QStringLiteral("alice"), addressOf(broker));
+        QVERIFY(aliceDrives(alice, rig));
+
+        // Heartbeats keep it: 250 ms apart, each within the 300.
+        for (int i = 0; i < 3; ++i) {
+            rig.clock.advance(250);
+            QCOMPARE(alice.control(QStringLiteral("r1"), "keep").value(QLatin1String("ok")), QJsonValue(true));
+        }
+        const qsizetype before = rig.recording.count();
+        rig.clock.advance(299);
+        QCOMPARE(rig.bridge.controller(), QStringLiteral("alice"));
+        rig.clock.advance(1); // 300 ms since the last heartbeat
+        QCOMPARE(rig.bridge.controller(), QString());
+        QTRY_COMPARE(byteText(writtenSince(rig.recording, before)), byteText(rig.stopBytes()));
+        // Alice is told, and the state says nobody has control.
+        QTRY_VERIFY(alice.on(topics::reply(QStringLiteral("r1"), QStringLiteral("alice"))).last()
+                        .value(QLatin1String("error")).toString().contains(QLatin1String("no heartbeat")));
+        QTRY_VERIFY(alice.lastState(QStringLiteral("r1")).value(QLatin1String("controller")).isNull());
+        QCOMPARE(alice.control(QStringLiteral("r1"), "keep").value(QLatin1String("error")).toString(),
+                 QStringLiteral("nobody has control: take it first"));
+    }
+
+    void takeoverAndStopAll()
+    {
+        MosquittoBroker broker;
+        QVERIFY2(broker.start(), qPrintable(broker.error()));
+        std::vector<std::unique_ptr<BridgeRig>> rigs;
+        const QStringList names{QStringLiteral("r1"), QStringLiteral("r2"), QStringLiteral("r3")};
+        for (const QString &n : names)
+            rigs.push_back(std::make_unique<BridgeRig>(n, addressOf(broker)));
+        ConsoleClient alice(QStringLiteral("alice"), addressOf(broker)), teacher(QStringLiteral("teacher"), addressOf(broker));
+        QVERIFY(teacher.connected());
+        for (qsizetype i = 0; i < names.size(); ++i) {
+            QVERIFY(rigs[i]->streaming());
+            QVERIFY(alice.waitForState(names[i], true));
+            QCOMPARE(alice.control(names[i], "take").value(QLatin1String("ok")), QJsonValue(true));
+        }
+
+        // The teacher takes r1 from alice, who is told.
+        const QJsonObject r = teacher.ask(topics::takeover(QStringLiteral("r1"), QStringLiteral("teacher")), {{"action", "take"}});
+        QCOMPARE(r.value(QLatin1String("controller")).toString(), QStringLiteral("teacher"));
+        QTRY_COMPARE(alice.on(topics::reply(QStringLiteral("r1"), QStringLiteral("alice"))).last()
+                         .value(QLatin1String("error")).toString(), QStringLiteral("teacher took control"));
+
+        // Stop all: every robot stops, whoever holds control.
+        std::vector<qsizetype> before;
+        for (auto &rig : rigs)
+            before.push_back(rig->recording.count());
+        teacher.client.publish(topics::stopAll(), json({{"client", "teacher"}}), 1);
+        for (std::size_t i = 0; i < rigs.size(); ++i) {
+            QTRY_COMPARE(byteText(writtenSince(rigs[i]->recording, before[i])), byteText(rigs[i]->stopBytes()));
+            QCOMPARE(rigs[i]->bridge.controller(), QString());
+        }
+    }
+
+    void brokerGoneRobotStoppedTelemetryResumes()
+    {
+        MosquittoBroker broker;
+        QVERIFY2(broker.start(), qPrintable(broker.error()));
+        BridgeRig rig(QStringLiteral("r1"), addressOf(broker));
+        QVERIFY(rig.streaming());
+        {
+            ConsoleClient alice(QStringLiteral("alice"), addressOf(broker));
+            QVERIFY(aliceDrives(alice, rig));
+        }
+        const qsizetype before = rig.recording.count();
+
+        QSignalSpy down(&rig.client, &MqttClient::disconnected), up(&rig.client, &MqttClient::connected);
+        broker.kill();
+        QTRY_COMPARE_WITH_TIMEOUT(down.count(), 1, 5000);
+        QTRY_COMPARE(byteText(writtenSince(rig.recording, before)), byteText(rig.stopBytes()));
+        QCOMPARE(rig.bridge.controller(), QString());
+
+        QVERIFY2(broker.start(), qPrintable(broker.error()));
+        QTRY_VERIFY_WITH_TIMEOUT(up.count() >= 1, 20000);
+        ConsoleClient alice(QStringLiteral("alice"), addressOf(broker), {topics::telemetry(QStringLiteral("r1"))});
+        QVERIFY(alice.waitForState(QStringLiteral("r1"), true));
+        QTRY_VERIFY_WITH_TIMEOUT(alice.on(topics::telemetry(QStringLiteral("r1"))).size() >= 3, 5000);
+        // Still stopped: the old controller must take control again first.
+        const QJsonObject r = alice.command(QStringLiteral("r1"), QStringLiteral("2"), QStringLiteral("drive"), {200, "straight"});
+        QCOMPARE(r.value(QLatin1String("error")).toString(), QStringLiteral("nobody has control: take it first"));
+        QCOMPARE(byteText(writtenSince(rig.recording, before)), byteText(rig.stopBytes()));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestRobotBridge)
+#include "tst_robot_bridge.moc"

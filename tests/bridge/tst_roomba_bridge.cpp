@@ -1,0 +1,113 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The roomba-bridge program: its config file and options (a bad one names
+// itself and exits with status 2), its last will when it is killed, and its
+// goodbye on SIGTERM.
+
+#include "bridge_rig.h"
+
+#include <QProcess>
+#include <QTemporaryDir>
+
+using namespace mqtt;
+
+class TestRoombaBridge : public QObject {
+    Q_OBJECT
+
+    QTemporaryDir m_dir;
+
+    QString writeConfig(const QString &name, const QByteArray &text)
+    {
+        QFile f(m_dir.filePath(name));
+        f.open(QIODevice::WriteOnly);
+        f.write(text);
+        return f.fileName();
+    }
+    static void start(QProcess &p, const QStringList &args)
+    {
+        p.start(QStringLiteral(ROOMBA_BRIDGE_PATH), args);
+        QVERIFY(p.waitForStarted());
+    }
+
+private slots:
+    void badSettingsNameThemselves_data()
+    {
+        QTest::addColumn<QStringList>("args");
+        QTest::addColumn<QByteArray>("config"); // written to bad.conf and given with --config
+        QTest::addColumn<QString>("message");
+        QTest::newRow("unknown key") << QStringList{} << QByteArray("name = r1\nsim = yes\nspeed = 3\n")
+                                     << "bad.conf:3: 'speed' is not a setting";
+        QTest::newRow("not key = value") << QStringList{} << QByteArray("# comment\nname r1\n")
+                                         << "bad.conf:2: 'name r1' is not a 'key = value' line";
+        QTest::newRow("bad rate in the file") << QStringList{} << QByteArray("name = r1\nsim = yes\nrate = fast\n")
+                                              << "bad.conf:3: rate: 'fast' is not a rate";
+        QTest::newRow("the command line wins") << QStringList{"--rate", "-1"} << QByteArray("name = r1\nsim = yes\nrate = 5\n")
+                                               << "--rate: rate: '-1' is not a rate";
+        QTest::newRow("bad broker") << QStringList{"--name", "r1", "--sim", "--broker", "http://x"} << QByteArray()
+                                    << "--broker: broker:";
+        QTest::newRow("bad name") << QStringList{"--name", "r 1", "--sim"} << QByteArray() << "'r 1' is not a robot name";
+        QTest::newRow("fleet") << QStringList{"--name", "fleet", "--sim"} << QByteArray() << "'fleet' is not a robot name";
+        QTest::newRow("no name") << QStringList{"--sim"} << QByteArray() << "--name NAME";
+        QTest::newRow("no robot") << QStringList{"--name", "r1"} << QByteArray() << "--sim, --port PATH or --tcp HOST:PORT";
+        QTest::newRow("two robots") << QStringList{"--name", "r1", "--port", "/dev/ttyUSB0"} << QByteArray("sim = yes\n")
+                                    << "give only one of sim, port and tcp";
+        QTest::newRow("bad tcp") << QStringList{"--name", "r1", "--tcp", "pi"} << QByteArray() << "'pi' is not HOST:PORT";
+        QTest::newRow("bad profile") << QStringList{"--name", "r1", "--sim", "--profile", "dyson"} << QByteArray()
+                                     << "'dyson' is not a robot";
+        QTest::newRow("missing CA") << QStringList{"--name", "r1", "--sim", "--cafile", "/nonexistent/ca.crt"} << QByteArray()
+                                    << "cafile: /nonexistent/ca.crt does not exist";
+        QTest::newRow("missing config") << QStringList{"--config", "/nonexistent/r1.conf"} << QByteArray()
+                                        << "/nonexistent/r1.conf: cannot read it";
+    }
+    void badSettingsNameThemselves()
+    {
+        QFETCH(QStringList, args);
+        QFETCH(QByteArray, config);
+        QFETCH(QString, message);
+        if (!config.isEmpty())
+            args << QStringLiteral("--config") << writeConfig(QStringLiteral("bad.conf"), config);
+        QProcess p;
+        start(p, args);
+        QVERIFY(p.waitForFinished(10000));
+        const QString err = QString::fromUtf8(p.readAllStandardError());
+        QCOMPARE(p.exitCode(), 2);
+        QVERIFY2(err.contains(message), qPrintable(err));
+    }
+
+    void killedBridgeShowsOffline()
+    {
+        MosquittoBroker broker;
+        QVERIFY2(broker.start(), qPrintable(broker.error()));
+        ConsoleClient watcher(QStringLiteral("watcher"), addressOf(broker));
+        QProcess bridge;
+        start(bridge, {QStringLiteral("--config"), writeConfig(QStringLiteral("r7.conf"), "name = r7\nsim = yes\nbroker = " + broker.url().toUtf8() + "\n")});
+        QVERIFY(watcher.waitForState(QStringLiteral("r7"), true));
+        QCOMPARE(watcher.lastState(QStringLiteral("r7")).value(QLatin1String("profile")).toString(), QStringLiteral("create2"));
+        bridge.kill();
+        QVERIFY(watcher.waitForState(QStringLiteral("r7"), false));
+        QCOMPARE(watcher.lastState(QStringLiteral("r7")), QJsonObject({{"online", false}, {"name", "r7"}}));
+    }
+
+    void sigtermStopsTheRobotAndSaysGoodbye()
+    {
+        MosquittoBroker broker;
+        QVERIFY2(broker.start(), qPrintable(broker.error()));
+        ConsoleClient watcher(QStringLiteral("watcher"), addressOf(broker));
+        QProcess bridge;
+        start(bridge, {QStringLiteral("--broker"), broker.url(), QStringLiteral("--name"), QStringLiteral("r8"), QStringLiteral("--sim")});
+        QVERIFY(watcher.waitForState(QStringLiteral("r8"), true));
+        QTRY_COMPARE_WITH_TIMEOUT(watcher.lastState(QStringLiteral("r8")).value(QLatin1String("link")).toString(),
+                                  QStringLiteral("streaming"), 10000);
+        bridge.terminate();
+        QVERIFY(bridge.waitForFinished(10000));
+        QCOMPARE(bridge.exitStatus(), QProcess::NormalExit);
+        QCOMPARE(bridge.exitCode(), 128 + 15);
+        const QString log = QString::fromUtf8(bridge.readAllStandardError());
+        QVERIFY2(log.contains(QLatin1String("roomba.bridge: signal 15: stopping")), qPrintable(log));
+        QVERIFY2(log.contains(QLatin1String("stopped in Passive")), qPrintable(log));
+        // The offline state it published before it said goodbye.
+        QVERIFY(watcher.waitForState(QStringLiteral("r8"), false));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestRoombaBridge)
+#include "tst_roomba_bridge.moc"

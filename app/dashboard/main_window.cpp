@@ -754,10 +754,11 @@ void MainWindow::saveSettings() const
     settings.setValue("window/state", saveState());
     if (m_keepSavedRobots)
         return;
-    // A recording is a file to open again, not a robot to reconnect to.
+    // A recording is a file to open again, not a robot to reconnect to; a
+    // robot on the broker comes back when its bridge publishes.
     QList<SavedRobot> robots;
     for (const SavedRobot &r : m_fleet.saved())
-        if (r.link.transport != oilink::TransportKind::Replay)
+        if (r.link.transport != oilink::TransportKind::Replay && r.link.transport != oilink::TransportKind::Network)
             robots << r;
     saveRobots(settings, robots);
 }

@@ -46,8 +46,7 @@ NetworkTransport::NetworkTransport(FleetDirectory *directory, QString robot, con
 {
     m_heartbeat.setInterval(kHeartbeatMs);
     connect(&m_heartbeat, &QTimer::timeout, this, [this] {
-        if (m_directory)
-            m_directory->publishControl(m_robot, QStringLiteral("keep"));
+        publishControl(QStringLiteral("keep"));
     });
     m_idleRelease.setSingleShot(true);
     m_idleRelease.setInterval(kReleaseIdleMs);
@@ -177,7 +176,7 @@ void NetworkTransport::takeControl()
 {
     if (m_inControl || !m_directory)
         return;
-    m_directory->publishControl(m_robot, QStringLiteral("take"));
+    publishControl(QStringLiteral("take"));
     m_inControl = true;
     m_heartbeat.start();
 }
@@ -189,8 +188,15 @@ void NetworkTransport::releaseControl()
         return;
     m_heartbeat.stop();
     m_inControl = false;
-    if (m_directory)
-        m_directory->publishControl(m_robot, QStringLiteral("release"));
+    publishControl(QStringLiteral("release"));
+}
+
+void NetworkTransport::publishControl(const QString &action)
+{
+    if (!m_directory)
+        return;
+    m_directory->publishControl(m_robot, action);
+    m_controlSent << action;
 }
 
 void NetworkTransport::onReply(const QString &robot, const QJsonObject &reply)
@@ -198,6 +204,12 @@ void NetworkTransport::onReply(const QString &robot, const QJsonObject &reply)
     if (robot != m_robot)
         return;
     if (reply.value(QStringLiteral("id")).toString() == QLatin1String("control")) {
+        // The bridge answers each control message in order; the answer to a
+        // release that crossed a new take says nothing about the take. An
+        // answer to nothing of ours is a takeover.
+        const QString answered = m_controlSent.isEmpty() ? QString() : m_controlSent.takeFirst();
+        if (answered == QLatin1String("release"))
+            return;
         const QString controller = reply.value(QStringLiteral("controller")).toString();
         if (m_inControl && controller != m_directory->clientName()) {
             // Taken over, or refused: no heartbeat for what is not ours.

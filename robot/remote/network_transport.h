@@ -51,6 +51,7 @@ private:
     void takeControl();
     void releaseControl();
     void publishCommand(const QString &command, const QJsonArray &args);
+    void publishControl(const QString &action);
     void report(const QString &message);
 
     QPointer<FleetDirectory> m_directory;
@@ -63,6 +64,7 @@ private:
     bool m_inControl = false;
     bool m_moving = false;
     quint64 m_nextId = 1;
+    QStringList m_controlSent; // not answered yet, oldest first
     QTimer m_heartbeat;
     QTimer m_idleRelease;
     QList<QMetaObject::Connection> m_connections;

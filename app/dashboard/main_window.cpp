@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "main_window.h"
 
+#include "broker_dialog.h"
 #include "byte_inspector.h"
 #include "connection_checkup.h"
 #include "doctor_details.h"
@@ -9,12 +10,15 @@
 #include "display_palette.h"
 #include "dock_layout.h"
 #include "drive_pad.h"
+#include "fleet_console.h"
+#include "fleet_view.h"
 #include "gamepad_input.h"
 #include "gamepad_panel.h"
 #include "keyboard_driving.h"
 #include "led_editor.h"
 #include "mode_panel.h"
 #include "motors_panel.h"
+#include "network_transport.h"
 #include "odometry_map.h"
 #include "oi_text.h"
 #include "recording_actions.h"
@@ -22,6 +26,7 @@
 #include "robot_diagram.h"
 #include "robot_list.h"
 #include "robot_status_bar.h"
+#include "saved_brokers.h"
 #include "saved_robots.h"
 #include "schedule_editor.h"
 #include "script_editor.h"
@@ -42,6 +47,7 @@
 #include <QPushButton>
 #include <QSettings>
 #include <QStatusBar>
+#include <QTabWidget>
 #include <QToolBar>
 
 namespace {
@@ -73,8 +79,16 @@ MainWindow::MainWindow(QWidget *parent)
     setObjectName("mainWindow");
     setDockNestingEnabled(true);
 
-    m_diagram = new RobotDiagram(this);
-    setCentralWidget(m_diagram);
+    // The selected robot, and beside it the whole classroom on a broker.
+    m_central = new QTabWidget(this);
+    m_central->setObjectName("centralTabs");
+    m_diagram = new RobotDiagram(m_central);
+    m_fleetView = new FleetView(m_central);
+    m_fleetView->setObjectName("fleetView");
+    m_central->addTab(m_diagram, QString());
+    m_central->addTab(m_fleetView, QString());
+    setCentralWidget(m_central);
+    m_console = new FleetConsole(m_fleet, *m_fleetView, this);
     m_layout = new DockLayout(this);
     m_status = new RobotStatusBar(statusBar());
     m_doctorDetails = new DoctorDetails(this);
@@ -234,7 +248,11 @@ void MainWindow::onRobotAdded(RobotSession *robot)
     auto place = std::make_shared<std::atomic<sim::RobotId>>(-1);
     m_roomPlaces.insert(robot, place);
     if (!m_fleet.hasTransportFactory())
-        robot->setTransportFactory([room = m_room, place](const oilink::LinkSettings &s) {
+        robot->setTransportFactory([room = m_room, place, directory = &m_console->directory()](
+                                       const oilink::LinkSettings &s) -> oilink::Transport * {
+            if (s.transport == oilink::TransportKind::Network)
+                return new NetworkTransport(directory, s.networkRobot,
+                                            oi::profile(s.profile.value_or(oi::ProfileId::Create2)));
             return transports::createTransport(s, s.baud, room, *place);
         });
     placeInRoom(robot, robot->settings());
@@ -456,6 +474,17 @@ void MainWindow::buildActions()
     addActions({m_nextDockAction, m_previousDockAction}); // work without the menu open
     // Shift+Esc is read by the keyboard driving, before any shortcut; the
     // menu names it.
+    m_connectBrokerAction = new QAction(this);
+    m_connectBrokerAction->setObjectName("connectBrokerAction");
+    connect(m_connectBrokerAction, &QAction::triggered, this, &MainWindow::askForBroker);
+    m_disconnectBrokerAction = new QAction(this);
+    m_disconnectBrokerAction->setEnabled(false);
+    connect(m_disconnectBrokerAction, &QAction::triggered, this, [this] {
+        m_console->disconnectFromBroker();
+        m_disconnectBrokerAction->setEnabled(false);
+    });
+    connect(m_console, &FleetConsole::message, this, [this](const QString &m) { statusBar()->showMessage(m, 8000); });
+
     m_stopAllAction = new QAction(this);
     m_stopAllAction->setObjectName("stopAllAction");
     connect(m_stopAllAction, &QAction::triggered, &m_fleet, &RobotFleet::stopAll);
@@ -499,6 +528,9 @@ void MainWindow::buildMenus()
     m_fileMenu->addAction(m_recording->openAction());
     m_fileMenu->addAction(m_recording->exportCsvAction());
     m_fileMenu->addSeparator();
+    m_fileMenu->addAction(m_connectBrokerAction);
+    m_fileMenu->addAction(m_disconnectBrokerAction);
+    m_fileMenu->addSeparator();
     m_fileMenu->addAction(m_stopAllAction);
     m_fileMenu->addSeparator();
     m_fileMenu->addAction(m_quitAction);
@@ -529,6 +561,10 @@ void MainWindow::retranslateUi()
     m_fileMenu->setTitle(tr("&File"));
     m_recording->retranslate();
     m_stopAllAction->setText(tr("&Stop all robots\tShift+Esc"));
+    m_connectBrokerAction->setText(tr("Connect to &broker…"));
+    m_disconnectBrokerAction->setText(tr("&Disconnect from broker"));
+    m_central->setTabText(0, tr("Robot"));
+    m_central->setTabText(1, tr("Fleet"));
     m_stopAll->setText(tr("STOP ALL  (Shift+Esc)"));
     m_stopAll->setToolTip(tr("Stop every robot in the window at once, whichever is selected.\n"
                              "Space or Esc stops the selected robot."));
@@ -745,6 +781,24 @@ void MainWindow::showState(oilink::LinkState state)
 QString MainWindow::statusText() const
 {
     return m_status->text();
+}
+
+void MainWindow::askForBroker()
+{
+    QSettings settings;
+    BrokerDialog dialog(loadSavedBrokers(settings), this);
+    if (dialog.exec() != QDialog::Accepted)
+        return;
+    saveBrokers(settings, withRecentBroker(loadSavedBrokers(settings), dialog.broker()));
+    connectToBroker(dialog.broker().address);
+}
+
+bool MainWindow::connectToBroker(const mqtt::BrokerAddress &address)
+{
+    const bool ok = m_console->connectToBroker(address);
+    m_disconnectBrokerAction->setEnabled(true);
+    m_central->setCurrentWidget(m_fleetView);
+    return ok;
 }
 
 void MainWindow::saveSettings() const

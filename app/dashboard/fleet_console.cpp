@@ -80,8 +80,10 @@ void FleetConsole::refresh()
 {
     if (m_directory.hasBroker())
         m_view.setBrokerText(m_directory.isConnected()
-                                 ? tr("%1 · %n robot(s) · as %2", nullptr, int(m_directory.names().size()))
-                                       .arg(m_directory.broker().displayUrl(), m_directory.clientName())
+                                 ? tr("%1 · robots: %2 · speaking as %3")
+                                       .arg(m_directory.broker().displayUrl())
+                                       .arg(m_directory.names().size())
+                                       .arg(m_directory.clientName())
                                  : tr("%1 · connecting…").arg(m_directory.broker().displayUrl()),
                              m_directory.isConnected());
     else

@@ -47,7 +47,6 @@
 #include <QPushButton>
 #include <QSettings>
 #include <QStatusBar>
-#include <QTabWidget>
 #include <QToolBar>
 
 namespace {
@@ -79,15 +78,14 @@ MainWindow::MainWindow(QWidget *parent)
     setObjectName("mainWindow");
     setDockNestingEnabled(true);
 
-    // The selected robot, and beside it the whole classroom on a broker.
-    m_central = new QTabWidget(this);
-    m_central->setObjectName("centralTabs");
-    m_diagram = new RobotDiagram(m_central);
-    m_fleetView = new FleetView(m_central);
+    m_diagram = new RobotDiagram(this);
+    setCentralWidget(m_diagram);
+    // The whole classroom on a broker, in a window of its own: it can go to
+    // the projector while the dashboard stays on the laptop.
+    m_fleetView = new FleetView(this);
+    m_fleetView->setWindowFlag(Qt::Window);
     m_fleetView->setObjectName("fleetView");
-    m_central->addTab(m_diagram, QString());
-    m_central->addTab(m_fleetView, QString());
-    setCentralWidget(m_central);
+    m_fleetView->resize(1280, 800);
     m_console = new FleetConsole(m_fleet, *m_fleetView, this);
     m_layout = new DockLayout(this);
     m_status = new RobotStatusBar(statusBar());
@@ -483,6 +481,12 @@ void MainWindow::buildActions()
         m_console->disconnectFromBroker();
         m_disconnectBrokerAction->setEnabled(false);
     });
+    m_fleetViewAction = new QAction(this);
+    m_fleetViewAction->setObjectName("fleetViewAction");
+    m_fleetViewAction->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_F));
+    connect(m_fleetViewAction, &QAction::triggered, this, &MainWindow::showFleetView);
+    addAction(m_fleetViewAction);
+    connect(m_fleetView, &FleetView::connectRequested, this, &MainWindow::askForBroker);
     connect(m_console, &FleetConsole::message, this, [this](const QString &m) { statusBar()->showMessage(m, 8000); });
 
     m_stopAllAction = new QAction(this);
@@ -539,6 +543,7 @@ void MainWindow::buildMenus()
     for (QDockWidget *dock : m_layout->docks())
         m_viewMenu->addAction(dock->toggleViewAction());
     m_viewMenu->addAction(m_recordingBar->toggleViewAction());
+    m_viewMenu->addAction(m_fleetViewAction);
     m_viewMenu->addSeparator();
     m_viewMenu->addAction(m_nextDockAction);
     m_viewMenu->addAction(m_previousDockAction);
@@ -563,8 +568,8 @@ void MainWindow::retranslateUi()
     m_stopAllAction->setText(tr("&Stop all robots\tShift+Esc"));
     m_connectBrokerAction->setText(tr("Connect to &broker…"));
     m_disconnectBrokerAction->setText(tr("&Disconnect from broker"));
-    m_central->setTabText(0, tr("Robot"));
-    m_central->setTabText(1, tr("Fleet"));
+    m_fleetViewAction->setText(tr("&Fleet view\tCtrl+Shift+F"));
+    m_fleetView->setWindowTitle(tr("Fleet view — Roomba Dashboard"));
     m_stopAll->setText(tr("STOP ALL  (Shift+Esc)"));
     m_stopAll->setToolTip(tr("Stop every robot in the window at once, whichever is selected.\n"
                              "Space or Esc stops the selected robot."));
@@ -797,8 +802,15 @@ bool MainWindow::connectToBroker(const mqtt::BrokerAddress &address)
 {
     const bool ok = m_console->connectToBroker(address);
     m_disconnectBrokerAction->setEnabled(true);
-    m_central->setCurrentWidget(m_fleetView);
+    showFleetView();
     return ok;
+}
+
+void MainWindow::showFleetView()
+{
+    m_fleetView->show();
+    m_fleetView->raise();
+    m_fleetView->activateWindow();
 }
 
 void MainWindow::saveSettings() const

@@ -37,7 +37,6 @@ class QDockWidget;
 class QLabel;
 class QMenu;
 class QPushButton;
-class QTabWidget;
 class QToolBar;
 class RecordingActions;
 class ReplayBar;
@@ -97,7 +96,7 @@ public:
     bool connectToBroker(const mqtt::BrokerAddress &address);
     FleetConsole *fleetConsole() const { return m_console; }
     FleetView *fleetView() const { return m_fleetView; }
-    QTabWidget *centralTabs() const { return m_central; }
+    void showFleetView();
 
     // "de", "es", "en", or "" to follow the system. Applies at once; `remember`
     // keeps the choice for the next start (the View menu does, --lang not).
@@ -163,7 +162,6 @@ private:
     // Each robot's place in the room, read by its transport factory on the link thread.
     QHash<const RobotSession *, std::shared_ptr<std::atomic<sim::RobotId>>> m_roomPlaces;
 
-    QTabWidget *m_central = nullptr;
     FleetView *m_fleetView = nullptr;
     FleetConsole *m_console = nullptr; // a child: robots' transports use it until the fleet is closed
     ConnectionBar *m_connectionBar = nullptr;
@@ -204,6 +202,7 @@ private:
     QAction *m_stopAllAction = nullptr;
     QAction *m_connectBrokerAction = nullptr;
     QAction *m_disconnectBrokerAction = nullptr;
+    QAction *m_fleetViewAction = nullptr;
     QAction *m_systemLanguageAction = nullptr;
     QActionGroup *m_languageGroup = nullptr;
     QToolBar *m_recordingBar = nullptr;

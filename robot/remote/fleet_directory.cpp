@@ -16,7 +16,12 @@ FleetDirectory::FleetDirectory(QObject *parent) : QObject(parent)
     oilink::registerLinkMetaTypes();
 }
 
-FleetDirectory::~FleetDirectory() { disconnectFromBroker(); }
+FleetDirectory::~FleetDirectory()
+{
+    // Those who listen may be gone already (the window's widgets).
+    blockSignals(true);
+    disconnectFromBroker();
+}
 
 QString FleetDirectory::clientNameFor(const mqtt::BrokerAddress &address)
 {

@@ -52,7 +52,7 @@ private slots:
         QCOMPARE(t1->statusText(), QStringLiteral("ONLINE"));
         QCOMPARE(t1->modeText(), QStringLiteral("Safe · battery 89 %"));
         QCOMPARE(t1->hazardText(), QStringLiteral("BUMP left"));
-        QCOMPARE(t1->linkText(), QStringLiteral("link streaming · 66 frames/s"));
+        QCOMPARE(t1->linkText(), QStringLiteral("link streaming · 66/s"));
         QCOMPARE(t1->controlText(), QStringLiteral("driven by alice"));
         QCOMPARE(view.tile("robot-2")->hazardText(), QStringLiteral("CLIFF ×2 · WHEEL DROP"));
         QCOMPARE(view.tile("robot-3")->statusText(), QStringLiteral("OFFLINE"));

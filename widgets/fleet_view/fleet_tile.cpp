@@ -9,8 +9,8 @@
 
 namespace {
 constexpr int kPadding = 10;
-constexpr qreal kNameScale = 1.7;
-constexpr qreal kLineScale = 1.25;
+constexpr qreal kNameScale = 2.1;
+constexpr qreal kLineScale = 1.55;
 } // namespace
 
 FleetTile::FleetTile(QWidget *parent) : QAbstractButton(parent)
@@ -62,7 +62,7 @@ QString FleetTile::hazardText() const
 QString FleetTile::linkText() const
 {
     const QString link = m_values.link.isEmpty() ? tr("link not known") : tr("link %1").arg(m_values.link);
-    return m_values.framesPerSecond ? tr("%1 · %2 frames/s").arg(link).arg(*m_values.framesPerSecond) : link;
+    return m_values.framesPerSecond ? tr("%1 · %2/s").arg(link).arg(*m_values.framesPerSecond) : link;
 }
 
 QString FleetTile::controlText() const
@@ -82,7 +82,7 @@ QSize FleetTile::sizeHint() const
 {
     const QFontMetrics big(display::valueFont(font(), kNameScale));
     const QFontMetrics line(display::valueFont(font(), kLineScale));
-    const int width = std::max(22 * line.averageCharWidth(), big.horizontalAdvance(QStringLiteral("robot-10 OFFLINE")));
+    const int width = std::max(26 * line.averageCharWidth(), big.horizontalAdvance(QStringLiteral("robot-10 OFFLINE")));
     return {width + 2 * kPadding, big.height() + 4 * (line.height() + 4) + 3 * kPadding};
 }
 

@@ -6,6 +6,7 @@
 #include <QEvent>
 #include <QGridLayout>
 #include <QLabel>
+#include <QPushButton>
 #include <QScrollArea>
 #include <QVBoxLayout>
 
@@ -20,7 +21,13 @@ FleetView::FleetView(QWidget *parent) : QWidget(parent)
     m_broker->setObjectName("fleetBroker");
     m_broker->setFont(display::valueFont(font(), 1.2));
     m_broker->setTextFormat(Qt::PlainText);
-    layout->addWidget(m_broker);
+    m_connect = new QPushButton(this);
+    m_connect->setObjectName("fleetConnect");
+    connect(m_connect, &QPushButton::clicked, this, &FleetView::connectRequested);
+    auto *header = new QHBoxLayout;
+    header->addWidget(m_broker, 1);
+    header->addWidget(m_connect);
+    layout->addLayout(header);
     m_empty = new QLabel(this);
     m_empty->setObjectName("fleetEmpty");
     m_empty->setWordWrap(true);
@@ -45,9 +52,10 @@ FleetView::FleetView(QWidget *parent) : QWidget(parent)
 void FleetView::retranslateUi()
 {
     setAccessibleName(tr("Fleet view"));
+    m_connect->setText(tr("Connect to broker…"));
     m_broker->setText(m_brokerText.isEmpty() ? tr("Not connected to a broker") : m_brokerText);
     m_empty->setText(m_brokerText.isEmpty()
-                         ? tr("File → Connect to broker… shows every robot whose bridge publishes there.")
+                         ? tr("Connect to a broker to see every robot whose bridge publishes there.")
                          : tr("No robot on this broker yet. Each appears as its bridge starts."));
 }
 

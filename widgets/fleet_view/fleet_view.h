@@ -8,6 +8,7 @@
 
 class QGridLayout;
 class QLabel;
+class QPushButton;
 class QScrollArea;
 
 // Every robot on the broker, a large tile each, as many columns as fit:
@@ -44,6 +45,7 @@ private:
 
     QLabel *m_broker = nullptr;
     QLabel *m_empty = nullptr;
+    QPushButton *m_connect = nullptr;
     QScrollArea *m_scroll = nullptr;
     QWidget *m_canvas = nullptr;
     QGridLayout *m_grid = nullptr;

@@ -13,8 +13,8 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QList>
-#include <QSignalSpy>
-#include <QTest>
+#include <QEventLoop>
+#include <QTimer>
 
 class FakeBridge : public QObject {
 public:
@@ -40,12 +40,16 @@ public:
     // Connects and waits until the broker has taken the subscriptions.
     bool start(int port)
     {
-        QSignalSpy up(&m_client, &mqtt::MqttClient::connected);
+        QEventLoop wait;
+        connect(&m_client, &mqtt::MqttClient::connected, &wait, &QEventLoop::quit);
+        QTimer::singleShot(5000, &wait, &QEventLoop::quit);
         mqtt::BrokerAddress address;
         address.port = port;
         if (!m_client.connectToBroker(address))
             return false;
-        return up.count() > 0 || up.wait(5000);
+        if (!m_client.isConnected())
+            wait.exec();
+        return m_client.isConnected();
     }
 
     QJsonObject state(const QString &mode = QStringLiteral("safe"), double battery = 87.5) const

@@ -315,7 +315,12 @@ void MainWindow::wireInputs()
     connect(m_keyboard, &KeyboardDriving::stopAllRequested, &m_fleet, &RobotFleet::stopAll);
 
     connect(m_connectionBar, &ConnectionBar::connectRequested, this, [this](const ConnectionRequest &request) {
-        const oilink::LinkSettings settings = connection::linkSettingsFor(request);
+        // The bar cannot name a robot on the broker: unchanged, it reconnects it.
+        const oilink::LinkSettings &current = session().settings();
+        const oilink::LinkSettings settings =
+            current.transport == oilink::TransportKind::Network && request == connection::requestFor(current)
+                ? current
+                : connection::linkSettingsFor(request);
         placeInRoom(&session(), settings);
         session().connectTo(settings);
         m_connectionBar->setConnected(true);

@@ -74,10 +74,24 @@ void FleetDirectory::disconnectFromBroker()
 
 bool FleetDirectory::isConnected() const { return m_client && m_client->isConnected(); }
 
-const RemoteRobot *FleetDirectory::robot(const QString &name) const
+const RemoteRobot *FleetDirectory::robot(const QString &name)
 {
-    const auto it = m_robots.constFind(name);
-    return it == m_robots.cend() ? nullptr : &*it;
+    const auto it = m_robots.find(name);
+    if (it == m_robots.end())
+        return nullptr;
+    if (!it->unreadTelemetry.isEmpty())
+        readTelemetry(name, *it, std::exchange(it->unreadTelemetry, QByteArray()));
+    return &*it;
+}
+
+void FleetDirectory::follow(const QString &name, bool on)
+{
+    QMetaObject::invokeMethod(this, [this, name, on] {
+        int &n = m_followers[name];
+        n = std::max(0, n + (on ? 1 : -1));
+        if (n == 0)
+            m_followers.remove(name);
+    });
 }
 
 void FleetDirectory::onMessage(const QString &topic, const QByteArray &payload)
@@ -86,29 +100,32 @@ void FleetDirectory::onMessage(const QString &topic, const QByteArray &payload)
     const auto parsed = mqtt::topics::parse(topic);
     if (!parsed)
         return;
-    QJsonParseError parseError;
-    const QJsonDocument doc = QJsonDocument::fromJson(payload, &parseError);
-    const QString kind = topic.section(QLatin1Char('/'), 2, 2);
-    if (!doc.isObject()) {
-        reportBad(parsed->robot, kind,
-                  parseError.error != QJsonParseError::NoError
-                      ? tr("%1: %2 is not JSON: %3").arg(parsed->robot, kind, parseError.errorString())
-                      : tr("%1: %2 is not a JSON object").arg(parsed->robot, kind));
+    if (parsed->kind == Kind::Telemetry) {
+        const auto it = m_robots.find(parsed->robot);
+        if (it == m_robots.end())
+            return; // its state comes first (it is retained); until then it is nobody
+        ++it->telemetryCount;
+        if (m_followers.contains(parsed->robot)) {
+            it->unreadTelemetry.clear();
+            readTelemetry(parsed->robot, *it, payload);
+        } else {
+            it->unreadTelemetry = payload;
+        }
         return;
     }
+    const auto doc = jsonObject(parsed->robot, topic.section(QLatin1Char('/'), 2, 2), payload);
+    if (!doc)
+        return;
     switch (parsed->kind) {
     case Kind::State:
-        onState(parsed->robot, doc.object());
-        break;
-    case Kind::Telemetry:
-        onTelemetry(parsed->robot, doc.object());
+        onState(parsed->robot, *doc);
         break;
     case Kind::Stats:
-        onStats(parsed->robot, doc.object());
+        onStats(parsed->robot, *doc);
         break;
     case Kind::Reply:
         if (parsed->client == m_clientName)
-            emit replyReceived(parsed->robot, doc.object());
+            emit replyReceived(parsed->robot, *doc);
         break;
     default:
         break;
@@ -148,21 +165,35 @@ void FleetDirectory::onState(const QString &name, const QJsonObject &object)
     emit robotChanged(name);
 }
 
-void FleetDirectory::onTelemetry(const QString &name, const QJsonObject &object)
+std::optional<QJsonObject> FleetDirectory::jsonObject(const QString &name, const QString &kind, const QByteArray &payload)
 {
-    const auto it = m_robots.find(name);
-    if (it == m_robots.end())
-        return; // its state comes first (it is retained); until then it is nobody
+    QJsonParseError parseError;
+    const QJsonDocument doc = QJsonDocument::fromJson(payload, &parseError);
+    if (doc.isObject())
+        return doc.object();
+    reportBad(name, kind,
+              parseError.error != QJsonParseError::NoError
+                  ? tr("%1: %2 is not JSON: %3").arg(name, kind, parseError.errorString())
+                  : tr("%1: %2 is not a JSON object").arg(name, kind));
+    return std::nullopt;
+}
+
+void FleetDirectory::readTelemetry(const QString &name, RemoteRobot &robot, const QByteArray &payload)
+{
+    const QString kind = QStringLiteral("telemetry");
+    const auto object = jsonObject(name, kind, payload);
+    if (!object)
+        return;
     QString error;
-    const auto frame = oilink::snapshotFromJson(object, *it->profile, &error);
+    const auto frame = oilink::snapshotFromJson(*object, *robot.profile, &error);
     if (!frame) {
-        reportBad(name, QStringLiteral("telemetry"), tr("%1: telemetry: %2").arg(name, error));
+        reportBad(name, kind, tr("%1: telemetry: %2").arg(name, error));
         return;
     }
-    m_reported.remove(name + QStringLiteral("/telemetry"));
-    it->latest.merge(*frame);
-    ++it->telemetryCount;
-    emit telemetryReceived(name, *frame);
+    m_reported.remove(name + QLatin1Char('/') + kind);
+    robot.latest.merge(*frame);
+    if (m_followers.contains(name))
+        emit telemetryReceived(name, *frame);
 }
 
 void FleetDirectory::onStats(const QString &name, const QJsonObject &object)

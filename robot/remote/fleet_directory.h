@@ -5,6 +5,7 @@
 #include "remote_robot.h"
 
 #include <QJsonObject>
+#include <QHash>
 #include <QMap>
 #include <QObject>
 #include <QSet>
@@ -12,6 +13,7 @@
 #include <QStringList>
 
 #include <memory>
+#include <optional>
 
 namespace mqtt {
 class MqttClient;
@@ -47,7 +49,15 @@ public:
 
     // In the order they appeared.
     const QStringList &names() const { return m_names; }
-    const RemoteRobot *robot(const QString &name) const;
+    // Reads its latest telemetry first, if it has not been read.
+    const RemoteRobot *robot(const QString &name);
+
+    // A followed robot's telemetry is read as it comes, every message, and
+    // given to telemetryReceived(); the others' only when robot() is asked
+    // (a few times a second for the tiles), so thirty robots streaming cost
+    // little. A network transport follows its robot while it is open.
+    // Counted; thread-safe.
+    void follow(const QString &name, bool on);
 
     // Every bridge on the broker stops its robot, whoever holds control.
     bool stopAll();
@@ -61,6 +71,7 @@ signals:
     void robotAppeared(const QString &name);
     // Its state or statistics changed (telemetry comes as telemetryReceived).
     void robotChanged(const QString &name);
+    // Every telemetry message of a followed robot.
     void telemetryReceived(const QString &name, const oi::SensorSnapshot &frame);
     // The bridge's answer to a command or control message of this console.
     void replyReceived(const QString &name, const QJsonObject &reply);
@@ -71,7 +82,8 @@ signals:
 private:
     void onMessage(const QString &topic, const QByteArray &payload);
     void onState(const QString &name, const QJsonObject &object);
-    void onTelemetry(const QString &name, const QJsonObject &object);
+    std::optional<QJsonObject> jsonObject(const QString &name, const QString &kind, const QByteArray &payload);
+    void readTelemetry(const QString &name, RemoteRobot &robot, const QByteArray &payload);
     void onStats(const QString &name, const QJsonObject &object);
     void publishJson(const QString &topic, const QJsonObject &object, int qos);
     // Each kind of bad message once per robot until a good one comes.
@@ -83,4 +95,5 @@ private:
     QStringList m_names;
     QMap<QString, RemoteRobot> m_robots;
     QSet<QString> m_reported;
+    QHash<QString, int> m_followers;
 };

@@ -69,6 +69,7 @@ void NetworkTransport::open()
     // Queued: the directory lives on the GUI thread.
     m_connections << connect(m_directory, &FleetDirectory::telemetryReceived, this, &NetworkTransport::onTelemetry)
                   << connect(m_directory, &FleetDirectory::replyReceived, this, &NetworkTransport::onReply);
+    m_directory->follow(m_robot, true);
     m_open = true;
     emit opened();
 }
@@ -78,6 +79,8 @@ void NetworkTransport::close()
     if (!m_open)
         return;
     releaseControl();
+    if (m_directory)
+        m_directory->follow(m_robot, false);
     for (const auto &c : std::as_const(m_connections))
         disconnect(c);
     m_connections.clear();

@@ -5,6 +5,7 @@
 #include "robot_profile.h"
 #include "sensor_snapshot.h"
 
+#include <QByteArray>
 #include <QJsonObject>
 #include <QString>
 
@@ -36,7 +37,8 @@ struct RemoteRobot {
     RemoteRobotState state;
     const oi::RobotProfile *profile = &oi::profile(oi::ProfileId::Create2);
     oi::SensorSnapshot latest{oi::profile(oi::ProfileId::Create2)};
-    quint64 telemetryCount = 0;
+    quint64 telemetryCount = 0; // messages received, read or not
+    QByteArray unreadTelemetry; // the latest message, read when someone looks
     oilink::LinkStats stats;
     bool hasStats = false;
 };

@@ -90,12 +90,11 @@ private slots:
         QCOMPARE(r1->profile->id, oi::ProfileId::Create2);
         QVERIFY(r1->state.controller.isEmpty());
 
-        QSignalSpy frames(&directory, &FleetDirectory::telemetryReceived);
         bridge.publishTelemetry(telemetry(0x03, 1));
-        QTRY_COMPARE_WITH_TIMEOUT(frames.count(), 1, 5000);
-        QCOMPARE(r1->latest.raw(7), 0x03);
+        QTRY_COMPARE_WITH_TIMEOUT(r1->telemetryCount, 1u, 5000);
+        // Read when asked for.
+        QCOMPARE(directory.robot("r1")->latest.raw(7), 0x03);
         QCOMPARE(r1->latest.raw(9), 1);
-        QCOMPARE(r1->telemetryCount, 1u);
 
         QSignalSpy changed(&directory, &FleetDirectory::robotChanged);
         bridge.publishStats({{"frames", 1234}, {"frames_per_second", 66.5}, {"checksum_failures", 2}});
@@ -125,6 +124,7 @@ private slots:
         QSignalSpy frames(&directory, &FleetDirectory::telemetryReceived);
         QVERIFY(directory.connectToBroker(addressOf(broker)));
         QTRY_COMPARE_WITH_TIMEOUT(appeared.count(), 1, 5000);
+        directory.follow("r1", true); // every message read as it comes
         bridge.publishTelemetry(telemetry(0x01, 0));
         QTRY_COMPARE_WITH_TIMEOUT(frames.count(), 1, 5000);
         const RemoteRobotState before = directory.robot("r1")->state;
@@ -183,6 +183,37 @@ private slots:
         QVERIFY(s.controller.isEmpty());
     }
 
+    // A followed robot's every message comes as a frame; another robot's
+    // waits, unread, until someone asks for it.
+    void onlyFollowedRobotsAreReadAsTheyCome()
+    {
+        MosquittoBroker broker;
+        QVERIFY2(broker.start(), qPrintable(broker.error()));
+        FakeBridge r1(QStringLiteral("r1")), r2(QStringLiteral("r2"));
+        QVERIFY(r1.start(broker.port()) && r2.start(broker.port()));
+        r1.publishState();
+        r2.publishState();
+        FleetDirectory directory;
+        QSignalSpy frames(&directory, &FleetDirectory::telemetryReceived);
+        QVERIFY(directory.connectToBroker(addressOf(broker)));
+        QTRY_COMPARE_WITH_TIMEOUT(directory.names().size(), 2, 5000);
+        directory.follow("r1", true);
+        r2.publishTelemetry(telemetry(0x02, 0));
+        QTRY_COMPARE_WITH_TIMEOUT(directory.robot("r2")->telemetryCount, 1u, 5000);
+        r1.publishTelemetry(telemetry(0x01, 0));
+        QTRY_COMPARE_WITH_TIMEOUT(frames.count(), 1, 5000);
+        QCOMPARE(frames[0][0].toString(), QStringLiteral("r1"));
+        QCOMPARE(frames[0][1].value<oi::SensorSnapshot>().raw(7), 0x01);
+        QCOMPARE(directory.robot("r2")->latest.raw(7), 0x02); // read now
+        // Followed no more: its messages wait too.
+        directory.follow("r1", false);
+        r1.publishTelemetry(telemetry(0x03, 0));
+        r2.publishTelemetry(telemetry(0x00, 0));
+        QTRY_COMPARE_WITH_TIMEOUT(directory.robot("r2")->latest.raw(7), 0, 5000);
+        QTRY_COMPARE_WITH_TIMEOUT(directory.robot("r1")->latest.raw(7), 0x03, 5000);
+        QCOMPARE(frames.count(), 1);
+    }
+
     void tenBridgesOneConsoleStopAll()
     {
         MosquittoBroker broker;
@@ -194,14 +225,14 @@ private slots:
             bridges.back()->publishState();
         }
         FleetDirectory directory;
-        QSignalSpy frames(&directory, &FleetDirectory::telemetryReceived);
         QVERIFY(directory.connectToBroker(addressOf(broker)));
         QTRY_COMPARE_WITH_TIMEOUT(directory.names().size(), 10, 5000);
         for (const auto &b : bridges)
-            b->publishTelemetry(telemetry(0, 0));
-        QTRY_COMPARE_WITH_TIMEOUT(frames.count(), 10, 5000);
+            b->publishTelemetry(telemetry(b->robot() == "robot-4" ? 0x01 : 0, 0));
         for (const auto &b : bridges)
-            QCOMPARE(directory.robot(b->robot())->telemetryCount, 1u);
+            QTRY_COMPARE_WITH_TIMEOUT(directory.robot(b->robot())->telemetryCount, 1u, 5000);
+        QCOMPARE(directory.robot("robot-4")->latest.raw(7), 0x01);
+        QCOMPARE(directory.robot("robot-5")->latest.raw(7), 0);
 
         QVERIFY(directory.stopAll());
         for (const auto &b : bridges) {

@@ -10,6 +10,7 @@
 #include <QJsonDocument>
 #include <QJsonParseError>
 #include <QMetaObject>
+#include <QMutexLocker>
 
 FleetDirectory::FleetDirectory(QObject *parent) : QObject(parent)
 {
@@ -44,7 +45,11 @@ bool FleetDirectory::connectToBroker(const mqtt::BrokerAddress &address)
     m_robots.clear();
     m_reported.clear();
     m_address = address;
-    m_clientName = clientNameFor(address);
+    {
+        // Read by network transports on their link threads.
+        const QMutexLocker lock(&m_clientNameLock);
+        m_clientName = clientNameFor(address);
+    }
     // The broker refuses a second client with the same id by dropping the
     // first; a console's id is its name plus what tells two windows apart.
     m_client = std::make_unique<mqtt::MqttClient>(
@@ -231,6 +236,12 @@ bool FleetDirectory::stopAll()
     return m_client->publish(mqtt::topics::stopAll(), QJsonDocument(payload).toJson(QJsonDocument::Compact), 1);
 }
 
+QString FleetDirectory::clientName() const
+{
+    const QMutexLocker lock(&m_clientNameLock);
+    return m_clientName;
+}
+
 void FleetDirectory::publishJson(const QString &topic, const QJsonObject &object, int qos)
 {
     const QByteArray payload = QJsonDocument(object).toJson(QJsonDocument::Compact);
@@ -243,10 +254,10 @@ void FleetDirectory::publishJson(const QString &topic, const QJsonObject &object
 
 void FleetDirectory::publishCommand(const QString &robot, const QJsonObject &command)
 {
-    publishJson(mqtt::topics::command(robot, m_clientName), command, 1);
+    publishJson(mqtt::topics::command(robot, clientName()), command, 1);
 }
 
 void FleetDirectory::publishControl(const QString &robot, const QString &action)
 {
-    publishJson(mqtt::topics::control(robot, m_clientName), QJsonObject{{QStringLiteral("action"), action}}, 1);
+    publishJson(mqtt::topics::control(robot, clientName()), QJsonObject{{QStringLiteral("action"), action}}, 1);
 }

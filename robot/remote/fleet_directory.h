@@ -7,6 +7,7 @@
 #include <QJsonObject>
 #include <QHash>
 #include <QMap>
+#include <QMutex>
 #include <QObject>
 #include <QSet>
 #include <QString>
@@ -45,7 +46,7 @@ public:
     bool isConnected() const;
     bool hasBroker() const { return bool(m_client); }
     mqtt::BrokerAddress broker() const { return m_address; }
-    QString clientName() const { return m_clientName; }
+    QString clientName() const; // thread-safe
 
     // In the order they appeared.
     const QStringList &names() const { return m_names; }
@@ -91,6 +92,7 @@ private:
 
     std::unique_ptr<mqtt::MqttClient> m_client;
     mqtt::BrokerAddress m_address;
+    mutable QMutex m_clientNameLock;
     QString m_clientName;
     QStringList m_names;
     QMap<QString, RemoteRobot> m_robots;

@@ -50,7 +50,9 @@ BrokerDialog::BrokerDialog(const QList<SavedBroker> &recent, QWidget *parent) : 
     auto *browse = new QPushButton(tr("&Browse…"), this);
     caRow->addWidget(m_caFile, 1);
     caRow->addWidget(browse);
-    form->addRow(tr("&CA file:"), caRow);
+    auto *caLabel = new QLabel(tr("&CA file:"), this);
+    caLabel->setBuddy(m_caFile); // a row of a layout has none by itself
+    form->addRow(caLabel, caRow);
     m_problem = new QLabel(this);
     m_problem->setObjectName("brokerProblem");
     m_problem->setWordWrap(true);

@@ -115,6 +115,7 @@ void RobotFleet::stopAll()
     for (RobotSession *r : m_robots)
         if (r->isConnected())
             r->teleop().stopAll();
+    emit stoppedAll();
 }
 
 void RobotFleet::closeAllAndWait()

@@ -37,7 +37,8 @@ public:
     RobotSession *selected() const { return m_selected; }
     void select(RobotSession *robot);
 
-    // Drive 0,0 and motors off on every connected robot, at once.
+    // Drive 0,0 and motors off on every connected robot, at once; then
+    // stoppedAll(), for the robots the fleet does not hold (a broker's).
     void stopAll();
     // Stop, Passive, close, for every robot: before the program ends.
     void closeAllAndWait();
@@ -52,6 +53,7 @@ signals:
     void robotAdded(RobotSession *robot);
     void robotRemoved(RobotSession *robot);
     void selectionChanged(RobotSession *robot, RobotSession *previous);
+    void stoppedAll();
 
 private:
     QColor nextColour() const;

@@ -145,6 +145,81 @@
     </message>
 </context>
 <context>
+    <name>BrokerDialog</name>
+    <message>
+        <source>Connect to broker</source>
+        <translation>Mit Broker verbinden</translation>
+    </message>
+    <message>
+        <source>&amp;Host:</source>
+        <translation>&amp;Host:</translation>
+    </message>
+    <message>
+        <source>&amp;Port:</source>
+        <translation>&amp;Port:</translation>
+    </message>
+    <message>
+        <source>anonymous</source>
+        <translation>anonym</translation>
+    </message>
+    <message>
+        <source>&amp;User:</source>
+        <translation>&amp;Benutzer:</translation>
+    </message>
+    <message>
+        <source>Pass&amp;word:</source>
+        <translation>Pass&amp;wort:</translation>
+    </message>
+    <message>
+        <source>&amp;Remember the password (kept in plain text in the settings)</source>
+        <translation>Passwort &amp;merken (im Klartext in den Einstellungen)</translation>
+    </message>
+    <message>
+        <source>&amp;TLS</source>
+        <translation>&amp;TLS</translation>
+    </message>
+    <message>
+        <source>the system&apos;s certificates</source>
+        <translation>die Zertifikate des Systems</translation>
+    </message>
+    <message>
+        <source>&amp;Browse…</source>
+        <translation>&amp;Durchsuchen…</translation>
+    </message>
+    <message>
+        <source>&amp;CA file:</source>
+        <translation>&amp;CA-Datei:</translation>
+    </message>
+    <message>
+        <source>Connect</source>
+        <translation>Verbinden</translation>
+    </message>
+    <message>
+        <source>CA certificate</source>
+        <translation>CA-Zertifikat</translation>
+    </message>
+    <message>
+        <source>Certificates (*.pem *.crt);;All files (*)</source>
+        <translation>Zertifikate (*.pem *.crt);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>Enter the broker&apos;s host name or address.</source>
+        <translation>Geben Sie den Hostnamen oder die Adresse des Brokers ein.</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a host name.</source>
+        <translation>„%1“ ist kein Hostname.</translation>
+    </message>
+    <message>
+        <source>A password needs a user name.</source>
+        <translation>Ein Passwort braucht einen Benutzernamen.</translation>
+    </message>
+    <message>
+        <source>The CA file %1 cannot be read.</source>
+        <translation>Die CA-Datei %1 kann nicht gelesen werden.</translation>
+    </message>
+</context>
+<context>
     <name>ByteInspector</name>
     <message>
         <source>Resume</source>
@@ -786,6 +861,136 @@ Systems.
     </message>
 </context>
 <context>
+    <name>FleetConsole</name>
+    <message>
+        <source>%1 · robots: %2 · speaking as %3</source>
+        <translation>%1 · Roboter: %2 · spricht als %3</translation>
+    </message>
+    <message>
+        <source>%1 · connecting…</source>
+        <translation>%1 · verbinde…</translation>
+    </message>
+</context>
+<context>
+    <name>FleetDirectory</name>
+    <message>
+        <source>%1: %2 is not JSON: %3</source>
+        <translation>%1: %2 ist kein JSON: %3</translation>
+    </message>
+    <message>
+        <source>%1: %2 is not a JSON object</source>
+        <translation>%1: %2 ist kein JSON-Objekt</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>%1: telemetry: %2</source>
+        <translation>%1: Telemetrie: %2</translation>
+    </message>
+    <message>
+        <source>%1: stats: %2</source>
+        <translation>%1: Statistik: %2</translation>
+    </message>
+</context>
+<context>
+    <name>FleetTile</name>
+    <message>
+        <source>ONLINE</source>
+        <translation>ONLINE</translation>
+    </message>
+    <message>
+        <source>OFFLINE</source>
+        <translation>OFFLINE</translation>
+    </message>
+    <message>
+        <source>mode not known</source>
+        <translation>Modus unbekannt</translation>
+    </message>
+    <message>
+        <source>%1 · battery %2 %</source>
+        <translation>%1 · Akku %2 %</translation>
+    </message>
+    <message>
+        <source>BUMP both</source>
+        <translation>STOSS beide</translation>
+    </message>
+    <message>
+        <source>BUMP left</source>
+        <translation>STOSS links</translation>
+    </message>
+    <message>
+        <source>BUMP right</source>
+        <translation>STOSS rechts</translation>
+    </message>
+    <message>
+        <source>CLIFF ×%1</source>
+        <translation>ABGRUND ×%1</translation>
+    </message>
+    <message>
+        <source>WHEEL DROP</source>
+        <translation>RAD HÄNGT</translation>
+    </message>
+    <message>
+        <source>no bump, no cliff</source>
+        <translation>kein Stoß, kein Abgrund</translation>
+    </message>
+    <message>
+        <source>link not known</source>
+        <translation>Verbindung unbekannt</translation>
+    </message>
+    <message>
+        <source>link %1</source>
+        <translation>Verbindung %1</translation>
+    </message>
+    <message>
+        <source>%1 · %2/s</source>
+        <translation>%1 · %2/s</translation>
+    </message>
+    <message>
+        <source>nobody in control</source>
+        <translation>niemand steuert</translation>
+    </message>
+    <message>
+        <source>driven by %1</source>
+        <translation>gesteuert von %1</translation>
+    </message>
+    <message>
+        <source>Robot %1, %2</source>
+        <translation>Roboter %1, %2</translation>
+    </message>
+    <message>
+        <source>%1
+Click to select this robot: every dock shows it</source>
+        <translation>%1
+Klicken wählt diesen Roboter: jedes Dock zeigt ihn</translation>
+    </message>
+</context>
+<context>
+    <name>FleetView</name>
+    <message>
+        <source>Fleet view</source>
+        <translation>Flottenansicht</translation>
+    </message>
+    <message>
+        <source>Connect to broker…</source>
+        <translation>Mit Broker verbinden…</translation>
+    </message>
+    <message>
+        <source>Not connected to a broker</source>
+        <translation>Mit keinem Broker verbunden</translation>
+    </message>
+    <message>
+        <source>Connect to a broker to see every robot whose bridge publishes there.</source>
+        <translation>Verbinden Sie sich mit einem Broker, um jeden Roboter zu sehen, dessen Bridge dort veröffentlicht.</translation>
+    </message>
+    <message>
+        <source>No robot on this broker yet. Each appears as its bridge starts.</source>
+        <translation>Noch kein Roboter auf diesem Broker. Jeder erscheint, sobald seine Bridge startet.</translation>
+    </message>
+</context>
+<context>
     <name>GamepadInput</name>
     <message>
         <source>Back</source>
@@ -1303,6 +1508,10 @@ Systems.
         <source>virtual %1</source>
         <translation>virtueller %1</translation>
     </message>
+    <message>
+        <source>%1 on the broker</source>
+        <translation>%1 am Broker</translation>
+    </message>
 </context>
 <context>
     <name>MainWindow</name>
@@ -1459,6 +1668,22 @@ Leertaste oder Esc hält den ausgewählten Roboter an.</translation>
     <message>
         <source>not connected</source>
         <translation>nicht verbunden</translation>
+    </message>
+    <message>
+        <source>Connect to &amp;broker…</source>
+        <translation>Mit &amp;Broker verbinden…</translation>
+    </message>
+    <message>
+        <source>&amp;Disconnect from broker</source>
+        <translation>Vom Broker &amp;trennen</translation>
+    </message>
+    <message>
+        <source>&amp;Fleet view	Ctrl+Shift+F</source>
+        <translation>&amp;Flottenansicht	Strg+Umschalt+F</translation>
+    </message>
+    <message>
+        <source>Fleet view — Roomba Dashboard</source>
+        <translation>Flottenansicht — Roomba Dashboard</translation>
     </message>
 </context>
 <context>
@@ -1748,6 +1973,37 @@ Leertaste oder Esc hält den ausgewählten Roboter an.</translation>
     <message>
         <source>Last sent: %1</source>
         <translation>Zuletzt gesendet: %1</translation>
+    </message>
+</context>
+<context>
+    <name>NetworkTransport</name>
+    <message>
+        <source>%1 on the broker</source>
+        <translation>%1 am Broker</translation>
+    </message>
+    <message>
+        <source>%1: not connected to a broker</source>
+        <translation>%1: mit keinem Broker verbunden</translation>
+    </message>
+    <message>
+        <source>%1: these bytes are no command the bridge takes: %2</source>
+        <translation>%1: diese Bytes sind kein Befehl, den die Bridge annimmt: %2</translation>
+    </message>
+    <message>
+        <source>%1: control was not given</source>
+        <translation>%1: Steuerung wurde nicht erteilt</translation>
+    </message>
+    <message>
+        <source>%1: %2 has control</source>
+        <translation>%1: %2 hat die Steuerung</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>%1: the bridge does not publish packet %2, so the query cannot be answered</source>
+        <translation>%1: die Bridge veröffentlicht Paket %2 nicht, daher kann die Abfrage nicht beantwortet werden</translation>
     </message>
 </context>
 <context>
@@ -2316,6 +2572,21 @@ Leertaste oder Esc hält den ausgewählten Roboter an.</translation>
     <message>
         <source>Wrote %1</source>
         <translation>%1 geschrieben</translation>
+    </message>
+</context>
+<context>
+    <name>RemoteRobot</name>
+    <message>
+        <source>state: &quot;%1&quot; must be a string</source>
+        <translation>Zustand: „%1“ muss eine Zeichenkette sein</translation>
+    </message>
+    <message>
+        <source>state: &quot;online&quot; must be true or false</source>
+        <translation>Zustand: „online“ muss true oder false sein</translation>
+    </message>
+    <message>
+        <source>state: &quot;battery_percent&quot; must be a number</source>
+        <translation>Zustand: „battery_percent“ muss eine Zahl sein</translation>
     </message>
 </context>
 <context>
@@ -4134,6 +4405,17 @@ Gesendet: %2</translation>
     <message>
         <source>%1, stale</source>
         <translation>%1, veraltet</translation>
+    </message>
+</context>
+<context>
+    <name>oilink</name>
+    <message>
+        <source>%1 must be a whole number from %2 to %3, not %4.</source>
+        <translation>%1 muss eine ganze Zahl von %2 bis %3 sein, nicht %4.</translation>
+    </message>
+    <message>
+        <source>%1 must be a number of at least 0.</source>
+        <translation>%1 muss eine Zahl von mindestens 0 sein.</translation>
     </message>
 </context>
 <context>

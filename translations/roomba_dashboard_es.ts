@@ -145,6 +145,81 @@
     </message>
 </context>
 <context>
+    <name>BrokerDialog</name>
+    <message>
+        <source>Connect to broker</source>
+        <translation>Conectar con el bróker</translation>
+    </message>
+    <message>
+        <source>&amp;Host:</source>
+        <translation>&amp;Host:</translation>
+    </message>
+    <message>
+        <source>&amp;Port:</source>
+        <translation>&amp;Puerto:</translation>
+    </message>
+    <message>
+        <source>anonymous</source>
+        <translation>anónimo</translation>
+    </message>
+    <message>
+        <source>&amp;User:</source>
+        <translation>&amp;Usuario:</translation>
+    </message>
+    <message>
+        <source>Pass&amp;word:</source>
+        <translation>Contra&amp;seña:</translation>
+    </message>
+    <message>
+        <source>&amp;Remember the password (kept in plain text in the settings)</source>
+        <translation>&amp;Recordar la contraseña (guardada en texto plano en la configuración)</translation>
+    </message>
+    <message>
+        <source>&amp;TLS</source>
+        <translation>&amp;TLS</translation>
+    </message>
+    <message>
+        <source>the system&apos;s certificates</source>
+        <translation>los certificados del sistema</translation>
+    </message>
+    <message>
+        <source>&amp;Browse…</source>
+        <translation>&amp;Examinar…</translation>
+    </message>
+    <message>
+        <source>&amp;CA file:</source>
+        <translation>Archivo &amp;CA:</translation>
+    </message>
+    <message>
+        <source>Connect</source>
+        <translation>Conectar</translation>
+    </message>
+    <message>
+        <source>CA certificate</source>
+        <translation>Certificado CA</translation>
+    </message>
+    <message>
+        <source>Certificates (*.pem *.crt);;All files (*)</source>
+        <translation>Certificados (*.pem *.crt);;Todos los archivos (*)</translation>
+    </message>
+    <message>
+        <source>Enter the broker&apos;s host name or address.</source>
+        <translation>Introduzca el nombre de host o la dirección del bróker.</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a host name.</source>
+        <translation>«%1» no es un nombre de host.</translation>
+    </message>
+    <message>
+        <source>A password needs a user name.</source>
+        <translation>Una contraseña necesita un nombre de usuario.</translation>
+    </message>
+    <message>
+        <source>The CA file %1 cannot be read.</source>
+        <translation>No se puede leer el archivo CA %1.</translation>
+    </message>
+</context>
+<context>
     <name>ByteInspector</name>
     <message>
         <source>Resume</source>
@@ -785,6 +860,136 @@ sistema.
     </message>
 </context>
 <context>
+    <name>FleetConsole</name>
+    <message>
+        <source>%1 · robots: %2 · speaking as %3</source>
+        <translation>%1 · robots: %2 · habla como %3</translation>
+    </message>
+    <message>
+        <source>%1 · connecting…</source>
+        <translation>%1 · conectando…</translation>
+    </message>
+</context>
+<context>
+    <name>FleetDirectory</name>
+    <message>
+        <source>%1: %2 is not JSON: %3</source>
+        <translation>%1: %2 no es JSON: %3</translation>
+    </message>
+    <message>
+        <source>%1: %2 is not a JSON object</source>
+        <translation>%1: %2 no es un objeto JSON</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>%1: telemetry: %2</source>
+        <translation>%1: telemetría: %2</translation>
+    </message>
+    <message>
+        <source>%1: stats: %2</source>
+        <translation>%1: estadísticas: %2</translation>
+    </message>
+</context>
+<context>
+    <name>FleetTile</name>
+    <message>
+        <source>ONLINE</source>
+        <translation>EN LÍNEA</translation>
+    </message>
+    <message>
+        <source>OFFLINE</source>
+        <translation>SIN CONEXIÓN</translation>
+    </message>
+    <message>
+        <source>mode not known</source>
+        <translation>modo desconocido</translation>
+    </message>
+    <message>
+        <source>%1 · battery %2 %</source>
+        <translation>%1 · batería %2 %</translation>
+    </message>
+    <message>
+        <source>BUMP both</source>
+        <translation>CHOQUE ambos</translation>
+    </message>
+    <message>
+        <source>BUMP left</source>
+        <translation>CHOQUE izquierda</translation>
+    </message>
+    <message>
+        <source>BUMP right</source>
+        <translation>CHOQUE derecha</translation>
+    </message>
+    <message>
+        <source>CLIFF ×%1</source>
+        <translation>PRECIPICIO ×%1</translation>
+    </message>
+    <message>
+        <source>WHEEL DROP</source>
+        <translation>RUEDA CAÍDA</translation>
+    </message>
+    <message>
+        <source>no bump, no cliff</source>
+        <translation>sin choque, sin precipicio</translation>
+    </message>
+    <message>
+        <source>link not known</source>
+        <translation>enlace desconocido</translation>
+    </message>
+    <message>
+        <source>link %1</source>
+        <translation>enlace %1</translation>
+    </message>
+    <message>
+        <source>%1 · %2/s</source>
+        <translation>%1 · %2/s</translation>
+    </message>
+    <message>
+        <source>nobody in control</source>
+        <translation>nadie lo controla</translation>
+    </message>
+    <message>
+        <source>driven by %1</source>
+        <translation>conducido por %1</translation>
+    </message>
+    <message>
+        <source>Robot %1, %2</source>
+        <translation>Robot %1, %2</translation>
+    </message>
+    <message>
+        <source>%1
+Click to select this robot: every dock shows it</source>
+        <translation>%1
+Haga clic para seleccionar este robot: todos los paneles lo muestran</translation>
+    </message>
+</context>
+<context>
+    <name>FleetView</name>
+    <message>
+        <source>Fleet view</source>
+        <translation>Vista de la flota</translation>
+    </message>
+    <message>
+        <source>Connect to broker…</source>
+        <translation>Conectar con el bróker…</translation>
+    </message>
+    <message>
+        <source>Not connected to a broker</source>
+        <translation>Sin conexión con un bróker</translation>
+    </message>
+    <message>
+        <source>Connect to a broker to see every robot whose bridge publishes there.</source>
+        <translation>Conéctese a un bróker para ver cada robot cuyo puente publica allí.</translation>
+    </message>
+    <message>
+        <source>No robot on this broker yet. Each appears as its bridge starts.</source>
+        <translation>Aún no hay robots en este bróker. Cada uno aparece cuando arranca su puente.</translation>
+    </message>
+</context>
+<context>
     <name>GamepadInput</name>
     <message>
         <source>Back</source>
@@ -1302,6 +1507,10 @@ sistema.
         <source>virtual %1</source>
         <translation>%1 virtual</translation>
     </message>
+    <message>
+        <source>%1 on the broker</source>
+        <translation>%1 en el bróker</translation>
+    </message>
 </context>
 <context>
     <name>MainWindow</name>
@@ -1458,6 +1667,22 @@ Espacio o Esc detiene el robot seleccionado.</translation>
     <message>
         <source>not connected</source>
         <translation>sin conexión</translation>
+    </message>
+    <message>
+        <source>Connect to &amp;broker…</source>
+        <translation>Conectar con el &amp;bróker…</translation>
+    </message>
+    <message>
+        <source>&amp;Disconnect from broker</source>
+        <translation>&amp;Desconectar del bróker</translation>
+    </message>
+    <message>
+        <source>&amp;Fleet view	Ctrl+Shift+F</source>
+        <translation>Vista de la &amp;flota	Ctrl+Mayús+F</translation>
+    </message>
+    <message>
+        <source>Fleet view — Roomba Dashboard</source>
+        <translation>Vista de la flota — Roomba Dashboard</translation>
     </message>
 </context>
 <context>
@@ -1747,6 +1972,37 @@ Espacio o Esc detiene el robot seleccionado.</translation>
     <message>
         <source>Last sent: %1</source>
         <translation>Último envío: %1</translation>
+    </message>
+</context>
+<context>
+    <name>NetworkTransport</name>
+    <message>
+        <source>%1 on the broker</source>
+        <translation>%1 en el bróker</translation>
+    </message>
+    <message>
+        <source>%1: not connected to a broker</source>
+        <translation>%1: sin conexión con un bróker</translation>
+    </message>
+    <message>
+        <source>%1: these bytes are no command the bridge takes: %2</source>
+        <translation>%1: estos bytes no son una orden que el puente acepte: %2</translation>
+    </message>
+    <message>
+        <source>%1: control was not given</source>
+        <translation>%1: no se concedió el control</translation>
+    </message>
+    <message>
+        <source>%1: %2 has control</source>
+        <translation>%1: %2 tiene el control</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>%1: the bridge does not publish packet %2, so the query cannot be answered</source>
+        <translation>%1: el puente no publica el paquete %2, así que la consulta no puede responderse</translation>
     </message>
 </context>
 <context>
@@ -2315,6 +2571,21 @@ Espacio o Esc detiene el robot seleccionado.</translation>
     <message>
         <source>Wrote %1</source>
         <translation>Se escribió %1</translation>
+    </message>
+</context>
+<context>
+    <name>RemoteRobot</name>
+    <message>
+        <source>state: &quot;%1&quot; must be a string</source>
+        <translation>estado: «%1» debe ser una cadena</translation>
+    </message>
+    <message>
+        <source>state: &quot;online&quot; must be true or false</source>
+        <translation>estado: «online» debe ser true o false</translation>
+    </message>
+    <message>
+        <source>state: &quot;battery_percent&quot; must be a number</source>
+        <translation>estado: «battery_percent» debe ser un número</translation>
     </message>
 </context>
 <context>
@@ -4133,6 +4404,17 @@ Enviado: %2</translation>
     <message>
         <source>%1, stale</source>
         <translation>%1, obsoleto</translation>
+    </message>
+</context>
+<context>
+    <name>oilink</name>
+    <message>
+        <source>%1 must be a whole number from %2 to %3, not %4.</source>
+        <translation>%1 debe ser un número entero de %2 a %3, no %4.</translation>
+    </message>
+    <message>
+        <source>%1 must be a number of at least 0.</source>
+        <translation>%1 debe ser un número de al menos 0.</translation>
     </message>
 </context>
 <context>

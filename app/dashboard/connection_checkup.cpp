@@ -84,7 +84,8 @@ void ConnectionCheckup::onLinkError()
 {
     const oilink::LinkSettings &s = m_session.settings();
     if (isRunning() || m_checkedThisConnection || m_session.state() == oilink::LinkState::Streaming
-        || m_session.statistics().frames > 0 || s.transport == oilink::TransportKind::Replay)
+        || m_session.statistics().frames > 0 || s.transport == oilink::TransportKind::Replay
+        || s.transport == oilink::TransportKind::Network)
         return;
     m_checkedThisConnection = true;
     // From the event loop: the session is inside a signal.

@@ -45,6 +45,7 @@ ConnectionRequest requestFor(const oilink::LinkSettings &s)
             r.profile = s.virtualRobot;
         break;
     case oilink::TransportKind::Replay:
+    case oilink::TransportKind::Network:
         r.transport = T::Virtual;
         r.baud = 0;
         break;

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "main_window.h"
 
+#include "broker_dialog.h"
 #include "byte_inspector.h"
 #include "connection_checkup.h"
 #include "doctor_details.h"
@@ -9,12 +10,15 @@
 #include "display_palette.h"
 #include "dock_layout.h"
 #include "drive_pad.h"
+#include "fleet_console.h"
+#include "fleet_view.h"
 #include "gamepad_input.h"
 #include "gamepad_panel.h"
 #include "keyboard_driving.h"
 #include "led_editor.h"
 #include "mode_panel.h"
 #include "motors_panel.h"
+#include "network_transport.h"
 #include "odometry_map.h"
 #include "oi_text.h"
 #include "recording_actions.h"
@@ -23,6 +27,7 @@
 #include "robot_diagram.h"
 #include "robot_list.h"
 #include "robot_status_bar.h"
+#include "saved_brokers.h"
 #include "saved_robots.h"
 #include "schedule_editor.h"
 #include "script_editor.h"
@@ -76,6 +81,13 @@ MainWindow::MainWindow(QWidget *parent)
 
     m_diagram = new RobotDiagram(this);
     setCentralWidget(m_diagram);
+    // The whole classroom on a broker, in a window of its own: it can go to
+    // the projector while the dashboard stays on the laptop.
+    m_fleetView = new FleetView(this);
+    m_fleetView->setWindowFlag(Qt::Window);
+    m_fleetView->setObjectName("fleetView");
+    m_fleetView->resize(1280, 800);
+    m_console = new FleetConsole(m_fleet, *m_fleetView, this);
     m_layout = new DockLayout(this);
     m_status = new RobotStatusBar(statusBar());
     m_recording = new RecordingActions(m_fleet, this);
@@ -236,7 +248,11 @@ void MainWindow::onRobotAdded(RobotSession *robot)
     auto place = std::make_shared<std::atomic<sim::RobotId>>(-1);
     m_roomPlaces.insert(robot, place);
     if (!m_fleet.hasTransportFactory())
-        robot->setTransportFactory([room = m_room, place](const oilink::LinkSettings &s) {
+        robot->setTransportFactory([room = m_room, place, directory = &m_console->directory()](
+                                       const oilink::LinkSettings &s) -> oilink::Transport * {
+            if (s.transport == oilink::TransportKind::Network)
+                return new NetworkTransport(directory, s.networkRobot,
+                                            oi::profile(s.profile.value_or(oi::ProfileId::Create2)));
             return transports::createTransport(s, s.baud, room, *place);
         });
     placeInRoom(robot, robot->settings());
@@ -311,7 +327,12 @@ void MainWindow::wireInputs()
     connect(m_keyboard, &KeyboardDriving::stopAllRequested, &m_fleet, &RobotFleet::stopAll);
 
     connect(m_connectionBar, &ConnectionBar::connectRequested, this, [this](const ConnectionRequest &request) {
-        const oilink::LinkSettings settings = connection::linkSettingsFor(request);
+        // The bar cannot name a robot on the broker: unchanged, it reconnects it.
+        const oilink::LinkSettings &current = session().settings();
+        const oilink::LinkSettings settings =
+            current.transport == oilink::TransportKind::Network && request == connection::requestFor(current)
+                ? current
+                : connection::linkSettingsFor(request);
         placeInRoom(&session(), settings);
         session().connectTo(settings);
         m_connectionBar->setConnected(true);
@@ -474,6 +495,23 @@ void MainWindow::buildActions()
     addActions({m_nextDockAction, m_previousDockAction}); // work without the menu open
     // Shift+Esc is read by the keyboard driving, before any shortcut; the
     // menu names it.
+    m_connectBrokerAction = new QAction(this);
+    m_connectBrokerAction->setObjectName("connectBrokerAction");
+    connect(m_connectBrokerAction, &QAction::triggered, this, &MainWindow::askForBroker);
+    m_disconnectBrokerAction = new QAction(this);
+    m_disconnectBrokerAction->setEnabled(false);
+    connect(m_disconnectBrokerAction, &QAction::triggered, this, [this] {
+        m_console->disconnectFromBroker();
+        m_disconnectBrokerAction->setEnabled(false);
+    });
+    m_fleetViewAction = new QAction(this);
+    m_fleetViewAction->setObjectName("fleetViewAction");
+    m_fleetViewAction->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_F));
+    connect(m_fleetViewAction, &QAction::triggered, this, &MainWindow::showFleetView);
+    addAction(m_fleetViewAction);
+    connect(m_fleetView, &FleetView::connectRequested, this, &MainWindow::askForBroker);
+    connect(m_console, &FleetConsole::message, this, [this](const QString &m) { statusBar()->showMessage(m, 8000); });
+
     m_stopAllAction = new QAction(this);
     m_stopAllAction->setObjectName("stopAllAction");
     connect(m_stopAllAction, &QAction::triggered, &m_fleet, &RobotFleet::stopAll);
@@ -521,6 +559,9 @@ void MainWindow::buildMenus()
     m_fileMenu->addMenu(m_roomActions->shippedMenu());
     m_fileMenu->addAction(m_roomActions->saveAsAction());
     m_fileMenu->addSeparator();
+    m_fileMenu->addAction(m_connectBrokerAction);
+    m_fileMenu->addAction(m_disconnectBrokerAction);
+    m_fileMenu->addSeparator();
     m_fileMenu->addAction(m_stopAllAction);
     m_fileMenu->addSeparator();
     m_fileMenu->addAction(m_quitAction);
@@ -529,6 +570,7 @@ void MainWindow::buildMenus()
     for (QDockWidget *dock : m_layout->docks())
         m_viewMenu->addAction(dock->toggleViewAction());
     m_viewMenu->addAction(m_recordingBar->toggleViewAction());
+    m_viewMenu->addAction(m_fleetViewAction);
     m_viewMenu->addSeparator();
     m_viewMenu->addAction(m_nextDockAction);
     m_viewMenu->addAction(m_previousDockAction);
@@ -552,6 +594,10 @@ void MainWindow::retranslateUi()
     m_recording->retranslate();
     m_roomActions->retranslate();
     m_stopAllAction->setText(tr("&Stop all robots\tShift+Esc"));
+    m_connectBrokerAction->setText(tr("Connect to &broker…"));
+    m_disconnectBrokerAction->setText(tr("&Disconnect from broker"));
+    m_fleetViewAction->setText(tr("&Fleet view\tCtrl+Shift+F"));
+    m_fleetView->setWindowTitle(tr("Fleet view — Roomba Dashboard"));
     m_stopAll->setText(tr("STOP ALL  (Shift+Esc)"));
     m_stopAll->setToolTip(tr("Stop every robot in the window at once, whichever is selected.\n"
                              "Space or Esc stops the selected robot."));
@@ -770,6 +816,31 @@ QString MainWindow::statusText() const
     return m_status->text();
 }
 
+void MainWindow::askForBroker()
+{
+    QSettings settings;
+    BrokerDialog dialog(loadSavedBrokers(settings), this);
+    if (dialog.exec() != QDialog::Accepted)
+        return;
+    saveBrokers(settings, withRecentBroker(loadSavedBrokers(settings), dialog.broker()));
+    connectToBroker(dialog.broker().address);
+}
+
+bool MainWindow::connectToBroker(const mqtt::BrokerAddress &address)
+{
+    const bool ok = m_console->connectToBroker(address);
+    m_disconnectBrokerAction->setEnabled(true);
+    showFleetView();
+    return ok;
+}
+
+void MainWindow::showFleetView()
+{
+    m_fleetView->show();
+    m_fleetView->raise();
+    m_fleetView->activateWindow();
+}
+
 void MainWindow::saveSettings() const
 {
     QSettings settings;
@@ -777,10 +848,11 @@ void MainWindow::saveSettings() const
     settings.setValue("window/state", saveState());
     if (m_keepSavedRobots)
         return;
-    // A recording is a file to open again, not a robot to reconnect to.
+    // A recording is a file to open again, not a robot to reconnect to; a
+    // robot on the broker comes back when its bridge publishes.
     QList<SavedRobot> robots;
     for (const SavedRobot &r : m_fleet.saved())
-        if (r.link.transport != oilink::TransportKind::Replay)
+        if (r.link.transport != oilink::TransportKind::Replay && r.link.transport != oilink::TransportKind::Network)
             robots << r;
     saveRobots(settings, robots);
 }

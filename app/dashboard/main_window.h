@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "broker_address.h"
 #include "language_switcher.h"
 #include "link_settings.h"
 #include "robot_card.h"
@@ -22,6 +23,8 @@ class DoctorDetails;
 class ConnectionBar;
 class DockLayout;
 class DrivePad;
+class FleetConsole;
+class FleetView;
 class GamepadInput;
 class GamepadPanel;
 class KeyboardDriving;
@@ -90,6 +93,14 @@ public:
     bool openRecording(const QString &path, QString *error = nullptr);
     static QString exportRecordingCsv(const QString &recordingPath, const QString &csvPath);
 
+    // The fleet console: every robot on a broker, in the Fleet tab. The
+    // dialog keeps the brokers used in the settings.
+    void askForBroker();
+    bool connectToBroker(const mqtt::BrokerAddress &address);
+    FleetConsole *fleetConsole() const { return m_console; }
+    FleetView *fleetView() const { return m_fleetView; }
+    void showFleetView();
+
     // "de", "es", "en", or "" to follow the system. Applies at once; `remember`
     // keeps the choice for the next start (the View menu does, --lang not).
     void setLanguage(const QString &code, bool remember = true);
@@ -154,6 +165,8 @@ private:
     // Each robot's place in the room, read by its transport factory on the link thread.
     QHash<const RobotSession *, std::shared_ptr<std::atomic<sim::RobotId>>> m_roomPlaces;
 
+    FleetView *m_fleetView = nullptr;
+    FleetConsole *m_console = nullptr; // a child: robots' transports use it until the fleet is closed
     ConnectionBar *m_connectionBar = nullptr;
     ModePanel *m_modePanel = nullptr;
     RobotDiagram *m_diagram = nullptr;
@@ -191,6 +204,9 @@ private:
     QAction *m_nextDockAction = nullptr;
     QAction *m_previousDockAction = nullptr;
     QAction *m_stopAllAction = nullptr;
+    QAction *m_connectBrokerAction = nullptr;
+    QAction *m_disconnectBrokerAction = nullptr;
+    QAction *m_fleetViewAction = nullptr;
     QAction *m_systemLanguageAction = nullptr;
     QActionGroup *m_languageGroup = nullptr;
     QToolBar *m_recordingBar = nullptr;

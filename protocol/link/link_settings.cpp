@@ -15,12 +15,24 @@ QString LinkSettings::describe() const
         return host + QLatin1Char(':') + QString::number(tcpPort);
     case TransportKind::Replay:
         return QCoreApplication::translate("LinkSettings", "replay of %1").arg(QFileInfo(replayPath).fileName());
+    case TransportKind::Network:
+        return QCoreApplication::translate("LinkSettings", "%1 on the broker").arg(networkRobot);
     case TransportKind::Virtual:
         break;
     }
     const std::string_view name = oi::profile(virtualRobot).name;
     return QCoreApplication::translate("LinkSettings", "virtual %1")
         .arg(QString::fromUtf8(name.data(), static_cast<qsizetype>(name.size())));
+}
+
+LinkSettings LinkSettings::networkRobotOf(const QString &name, oi::ProfileId profile)
+{
+    LinkSettings s;
+    s.transport = TransportKind::Network;
+    s.networkRobot = name;
+    s.profile = profile;
+    s.keepAwakeMs = 0; // the bridge keeps its robot awake
+    return s;
 }
 
 LinkSettings LinkSettings::serial(const QString &path, std::optional<oi::ProfileId> profile, int baud)

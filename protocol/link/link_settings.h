@@ -19,6 +19,7 @@ enum class TransportKind : std::uint8_t {
     Tcp,     // raw TCP to a serial bridge (ser2net, a Wi-Fi serial module)
     Virtual, // the built-in virtual robot, in this process
     Replay,  // a recording played back (see recording_file.h)
+    Network, // a robot beside a roomba-bridge, through an MQTT broker (docs/mqtt.md)
 };
 
 // Which modem line of a serial adapter is wired to the robot's BRC pin.
@@ -32,6 +33,7 @@ struct LinkSettings {
     quint16 tcpPort = 0;   // Tcp
     bool tcpRfc2217 = false; // Tcp: the bridge speaks RFC 2217 (ser2net telnet mode), so BRC is in reach
     QString replayPath;    // Replay
+    QString networkRobot;  // Network: the robot's name on the broker
     // nullopt = Auto: find the profile (and, on a serial port, the baud) by probing.
     std::optional<oi::ProfileId> profile;
     int baud = 0;          // 0 = the profile's default
@@ -63,6 +65,8 @@ struct LinkSettings {
                             std::optional<oi::ProfileId> profile = {});
     static LinkSettings virtualRobotOf(oi::ProfileId robot, std::optional<oi::ProfileId> profile);
     // A replay is read with the profile, baud and packets it was recorded with.
+    // A robot on the broker, read from its telemetry; its bridge found the profile.
+    static LinkSettings networkRobotOf(const QString &name, oi::ProfileId profile);
     static LinkSettings replayOf(const QString &path, oi::ProfileId profile, int baud, const QList<int> &packets);
 
     friend bool operator==(const LinkSettings &, const LinkSettings &) = default;

@@ -47,7 +47,8 @@ Transport *createTransport(const LinkSettings &settings, int baud, QObject *pare
     case TransportKind::Replay:
         return new ReplayTransport(settings.replayPath, parent);
     case TransportKind::Virtual:
-        break; // the link does not know the simulator (transport_factory.h does)
+    case TransportKind::Network:
+        break; // the link knows neither the simulator nor the broker (transport_factory.h, network_transport.h)
     }
     return nullptr;
 }

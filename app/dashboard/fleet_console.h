@@ -1,0 +1,49 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "fleet_directory.h"
+#include "fleet_tile.h"
+
+#include <QObject>
+#include <QTimer>
+
+class FleetView;
+class RobotFleet;
+class RobotSession;
+
+// The fleet console: the broker's robots (FleetDirectory) shown in the
+// fleet view, a click making that robot the selected one (it joins the
+// window's robots as a network robot), and Stop all reaching the broker.
+// The tiles are refreshed from a timer a few times a second, never once per
+// message; each repaints only when one of its values changed.
+class FleetConsole : public QObject {
+    Q_OBJECT
+public:
+    static constexpr int kRefreshMs = 250;
+
+    FleetConsole(RobotFleet &fleet, FleetView &view, QObject *parent = nullptr);
+
+    FleetDirectory &directory() { return m_directory; }
+    bool connectToBroker(const mqtt::BrokerAddress &address);
+    void disconnectFromBroker();
+
+    // The window's robot for `name` on the broker, made when first asked.
+    RobotSession *robotFor(const QString &name);
+    void select(const QString &name);
+    // What a tile shows of one robot.
+    static FleetTileValues tileValues(const QString &name, const RemoteRobot &robot);
+
+    void refresh(); // what the timer does
+
+signals:
+    // For the status bar: bad messages, a refused login, a refused command.
+    void message(const QString &text);
+
+private:
+    void showSelection();
+
+    RobotFleet &m_fleet;
+    FleetView &m_view;
+    FleetDirectory m_directory;
+    QTimer m_refresh;
+};

@@ -1,0 +1,101 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "broker_address.h"
+#include "remote_robot.h"
+
+#include <QJsonObject>
+#include <QHash>
+#include <QMap>
+#include <QMutex>
+#include <QObject>
+#include <QSet>
+#include <QString>
+#include <QStringList>
+
+#include <memory>
+#include <optional>
+
+namespace mqtt {
+class MqttClient;
+}
+
+// Every robot that publishes on one broker, as the fleet console knows it:
+// one entry per robot name, made when its retained state arrives, with its
+// latest state, packet values and link statistics. A robot whose bridge
+// dies stays, offline (its last will). Also the console's voice on the
+// broker: commands, control and Stop all go out through it.
+//
+// Lives on the GUI thread. Network transports on link threads connect to
+// telemetryReceived() and replyReceived() (queued) and publish through
+// publish(), which may be called from any thread.
+class FleetDirectory : public QObject {
+    Q_OBJECT
+public:
+    explicit FleetDirectory(QObject *parent = nullptr);
+    ~FleetDirectory() override;
+
+    // The name the console speaks as (the CLIENT of docs/mqtt.md): the
+    // broker user name, or "dashboard-HOST-PID".
+    static QString clientNameFor(const mqtt::BrokerAddress &address);
+
+    // Forgets every robot and connects, reconnecting until disconnect().
+    // False, with errorOccurred(), for settings the library refuses.
+    bool connectToBroker(const mqtt::BrokerAddress &address);
+    void disconnectFromBroker();
+    bool isConnected() const;
+    bool hasBroker() const { return bool(m_client); }
+    mqtt::BrokerAddress broker() const { return m_address; }
+    QString clientName() const; // thread-safe
+
+    // In the order they appeared.
+    const QStringList &names() const { return m_names; }
+    // Reads its latest telemetry first, if it has not been read.
+    const RemoteRobot *robot(const QString &name);
+
+    // A followed robot's telemetry is read as it comes, every message, and
+    // given to telemetryReceived(); the others' only when robot() is asked
+    // (a few times a second for the tiles), so thirty robots streaming cost
+    // little. A network transport follows its robot while it is open.
+    // Counted; thread-safe.
+    void follow(const QString &name, bool on);
+
+    // Every bridge on the broker stops its robot, whoever holds control.
+    bool stopAll();
+    // A command or control message from this console for `robot`
+    // (docs/mqtt.md: Commands, Control). Thread-safe.
+    void publishCommand(const QString &robot, const QJsonObject &command);
+    void publishControl(const QString &robot, const QString &action);
+
+signals:
+    void connectionChanged(bool connected);
+    void robotAppeared(const QString &name);
+    // Its state or statistics changed (telemetry comes as telemetryReceived).
+    void robotChanged(const QString &name);
+    // Every telemetry message of a followed robot.
+    void telemetryReceived(const QString &name, const oi::SensorSnapshot &frame);
+    // The bridge's answer to a command or control message of this console.
+    void replyReceived(const QString &name, const QJsonObject &reply);
+    // Bad messages from the network (they change nothing), a broker that
+    // refuses the login.
+    void errorOccurred(const QString &message);
+
+private:
+    void onMessage(const QString &topic, const QByteArray &payload);
+    void onState(const QString &name, const QJsonObject &object);
+    std::optional<QJsonObject> jsonObject(const QString &name, const QString &kind, const QByteArray &payload);
+    void readTelemetry(const QString &name, RemoteRobot &robot, const QByteArray &payload);
+    void onStats(const QString &name, const QJsonObject &object);
+    void publishJson(const QString &topic, const QJsonObject &object, int qos);
+    // Each kind of bad message once per robot until a good one comes.
+    void reportBad(const QString &name, const QString &kind, const QString &message);
+
+    std::unique_ptr<mqtt::MqttClient> m_client;
+    mqtt::BrokerAddress m_address;
+    mutable QMutex m_clientNameLock;
+    QString m_clientName;
+    QStringList m_names;
+    QMap<QString, RemoteRobot> m_robots;
+    QSet<QString> m_reported;
+    QHash<QString, int> m_followers;
+};

@@ -1,0 +1,44 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "link_status.h"
+#include "robot_profile.h"
+#include "sensor_snapshot.h"
+
+#include <QByteArray>
+#include <QJsonObject>
+#include <QString>
+
+#include <optional>
+
+// What a bridge says about its robot in `roomba/NAME/state` (docs/mqtt.md).
+struct RemoteRobotState {
+    bool online = false;
+    QString name;
+    QString profileKey;  // "create2", ...; empty until the bridge knows
+    QString firmware;
+    QString mode;        // "off", "passive", "safe", "full"
+    double batteryPercent = -1; // -1: not known
+    QString link;        // "streaming", "connecting", "stale", "lost"
+    QString controller;  // empty: nobody holds control
+
+    friend bool operator==(const RemoteRobotState &, const RemoteRobotState &) = default;
+};
+
+// Reads a state message. The last will carries only "online" and "name";
+// the other keys may be missing and read as not known. A key of the wrong
+// type gives nothing and `error` names it.
+std::optional<RemoteRobotState> remoteStateFromJson(const QJsonObject &object, QString *error);
+
+// One robot on the broker as the console knows it: its latest state, the
+// latest value of every packet its telemetry carried, its bridge's link
+// statistics.
+struct RemoteRobot {
+    RemoteRobotState state;
+    const oi::RobotProfile *profile = &oi::profile(oi::ProfileId::Create2);
+    oi::SensorSnapshot latest{oi::profile(oi::ProfileId::Create2)};
+    quint64 telemetryCount = 0; // messages received, read or not
+    QByteArray unreadTelemetry; // the latest message, read when someone looks
+    oilink::LinkStats stats;
+    bool hasStats = false;
+};

@@ -1,0 +1,175 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The fleet console in the window, against a real mosquitto and a dozen
+// fake bridges: every robot gets a live tile, a killed bridge's tile goes
+// offline, a click makes that robot the selected one, and Stop all reaches
+// every bridge as well as the local robot. Screenshots of the fleet view go
+// into ROOMBA_SCREENSHOTS when set.
+
+#include "command_encoder.h"
+#include "fake_bridge.h"
+#include "fleet_console.h"
+#include "fleet_view.h"
+#include "main_window.h"
+#include "mosquitto_broker.h"
+#include "snapshot_json.h"
+
+#include <QDir>
+#include <QProcess>
+#include <QPushButton>
+#include <QSettings>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QTimer>
+
+#include <memory>
+#include <vector>
+
+namespace {
+
+QJsonObject telemetry(int bumps, std::initializer_list<int> cliffs, int mode = 2)
+{
+    oi::SensorSnapshot s(oi::profile(oi::ProfileId::Create2));
+    s.set(7, bumps);
+    for (int id : {9, 10, 11, 12})
+        s.set(id, 0);
+    for (int id : cliffs)
+        s.set(id, 1);
+    s.set(35, mode);
+    s.set(22, 15600);
+    return oilink::snapshotToJson(s);
+}
+
+} // namespace
+
+class TestFleetConsole : public QObject {
+    Q_OBJECT
+
+private slots:
+    void init()
+    {
+        QStandardPaths::setTestModeEnabled(true);
+        QSettings().clear();
+    }
+
+    void aClassroomOnOneBroker()
+    {
+        MosquittoBroker broker;
+        QVERIFY2(broker.start(), qPrintable(broker.error()));
+        std::vector<std::unique_ptr<FakeBridge>> bridges;
+        for (int i = 1; i <= 12; ++i) {
+            bridges.push_back(std::make_unique<FakeBridge>(QStringLiteral("robot-%1").arg(i)));
+            FakeBridge &b = *bridges.back();
+            QVERIFY(b.start(broker.port()));
+            QJsonObject state = b.state(i % 4 == 0 ? "full" : "safe", 95 - 6 * i);
+            if (i == 3)
+                state["controller"] = "alice";
+            if (i >= 11)
+                state = {{"online", false}, {"name", b.robot()}};
+            b.publishState(state);
+        }
+
+        MainWindow window;
+        window.resize(1600, 1000);
+        window.show();
+        window.start();
+        QTRY_COMPARE_WITH_TIMEOUT(window.session().state(), oilink::LinkState::Streaming, 10000);
+        RobotSession *local = window.fleet().selected();
+        QVERIFY(window.connectToBroker(*mqtt::BrokerAddress::fromUrl(broker.url(), nullptr)));
+        FleetView &view = *window.fleetView();
+        QVERIFY(view.isVisible());
+        QVERIFY(view.isWindow());
+        QTRY_COMPARE_WITH_TIMEOUT(view.tiles().size(), 12, 5000);
+
+        // Telemetry and stats: one bumped, one at a cliff, every tile live.
+        for (const auto &b : bridges) {
+            const int n = b->robot().section('-', 1).toInt();
+            if (n >= 11)
+                continue;
+            b->publishTelemetry(telemetry(n == 2 ? 0x02 : 0, n == 5 ? std::initializer_list<int>{9, 10}
+                                                                     : std::initializer_list<int>{}));
+            b->publishStats({{"frames", 1000 * n}, {"frames_per_second", 66.4}});
+        }
+        QTRY_VERIFY_WITH_TIMEOUT(view.tile("robot-2")->values().bumpLeft, 5000);
+        QTRY_COMPARE_WITH_TIMEOUT(view.tile("robot-5")->values().cliffs, 2, 5000);
+        QTRY_VERIFY_WITH_TIMEOUT(view.tile("robot-10")->values().framesPerSecond == 66, 5000);
+        for (int i = 1; i <= 10; ++i) {
+            const FleetTile *t = view.tile(QStringLiteral("robot-%1").arg(i));
+            QVERIFY(t->values().online);
+            QVERIFY(t->values().linkHealthy);
+        }
+        QCOMPARE(view.tile("robot-3")->controlText(), QStringLiteral("driven by alice"));
+        QVERIFY(!view.tile("robot-11")->values().online);
+
+        // A bridge that is killed: its tile goes offline (its last will).
+        QProcess dying;
+        dying.start("/usr/bin/stdbuf", {"-oL", "/usr/bin/mosquitto_sub", "-d", "-p", QString::number(broker.port()), "-h",
+                                        "127.0.0.1", "-t", "x", "--will-topic", "roomba/robot-13/state",
+                                        "--will-payload", R"({"online":false,"name":"robot-13"})", "--will-retain"});
+        QVERIFY(dying.waitForStarted());
+        QByteArray said;
+        QTRY_VERIFY_WITH_TIMEOUT((said += dying.readAllStandardOutput()).contains("CONNACK"), 5000);
+        bridges.front()->publishRaw("roomba/robot-13/state",
+                                    R"({"online":true,"name":"robot-13","mode":"passive","link":"streaming","battery_percent":40})",
+                                    true);
+        QTRY_VERIFY_WITH_TIMEOUT(view.tile("robot-13") && view.tile("robot-13")->values().online, 5000);
+        dying.kill();
+        dying.waitForFinished();
+        QTRY_VERIFY_WITH_TIMEOUT(!view.tile("robot-13")->values().online, 10000);
+        QCOMPARE(view.tile("robot-13")->statusText(), QStringLiteral("OFFLINE"));
+
+        QTemporaryDir scratch;
+        const QString dir = qEnvironmentVariableIsEmpty("ROOMBA_SCREENSHOTS") ? scratch.path()
+                                                                               : qEnvironmentVariable("ROOMBA_SCREENSHOTS");
+        QDir().mkpath(dir);
+        view.resize(1600, 1000);
+        QTRY_VERIFY(view.columns() >= 4);
+        QVERIFY(view.grab().save(QDir(dir).filePath("fleet_1600x1000.png")));
+        view.resize(1920, 1080);
+        QTRY_VERIFY(view.columns() >= 5);
+        QVERIFY(view.grab().save(QDir(dir).filePath("fleet_1920x1080.png")));
+
+        // A click on a tile: that robot joins the window's robots, selected,
+        // and the docks show it from its telemetry.
+        FakeBridge &one = *bridges.front();
+        QTimer stream;
+        connect(&stream, &QTimer::timeout, &one, [&one] { one.publishTelemetry(telemetry(0x01, {})); });
+        stream.start(15);
+        QTest::mouseClick(view.tile("robot-1"), Qt::LeftButton);
+        QCOMPARE(window.fleet().count(), 2);
+        RobotSession *remote = window.fleet().selected();
+        QCOMPARE(remote->settings().transport, oilink::TransportKind::Network);
+        QCOMPARE(remote->name(), QStringLiteral("robot-1"));
+        QVERIFY(view.tile("robot-1")->isChecked());
+        QTRY_VERIFY_WITH_TIMEOUT(remote->isLive() && remote->latest().raw(7) == 0x01, 5000);
+        window.refreshDisplay();
+        QVERIFY(window.statusText().contains("robot-1"));
+        // A second click finds the same robot.
+        QTest::mouseClick(view.tile("robot-1"), Qt::LeftButton);
+        QCOMPARE(window.fleet().count(), 2);
+        QVERIFY(view.grab().save(QDir(dir).filePath("fleet_selected.png")));
+        QVERIFY(window.grab().save(QDir(dir).filePath("dashboard_network_robot.png")));
+
+        // The local robot drives; Stop all stops it and every bridge.
+        window.fleet().select(local);
+        MotionCommand forward;
+        forward.velocity = 150;
+        const oi::EncodeResult safe = oi::CommandEncoder(local->robotProfile()).safe();
+        QVERIFY(local->send(QByteArray(reinterpret_cast<const char *>(safe->data()), qsizetype(safe->size()))));
+        QTRY_VERIFY_WITH_TIMEOUT(local->latest().raw(35) == 2, 5000);
+        local->teleop().requestMotion(forward);
+        QTRY_COMPARE_WITH_TIMEOUT(local->latest().raw(39), 150, 5000);
+        QTest::mouseClick(window.stopAllButton(), Qt::LeftButton);
+        for (const auto &b : bridges) {
+            QTRY_VERIFY_WITH_TIMEOUT(!b->receivedOn(mqtt::topics::Kind::StopAll).isEmpty(), 5000);
+            QCOMPARE(b->receivedOn(mqtt::topics::Kind::StopAll).first().payload.value("client").toString(),
+                     window.fleetConsole()->directory().clientName());
+        }
+        QTRY_COMPARE_WITH_TIMEOUT(local->latest().raw(39), 0, 5000);
+        QVERIFY(!local->teleop().isMoving());
+        stream.stop();
+    }
+};
+
+QTEST_MAIN(TestFleetConsole)
+#include "tst_fleet_console.moc"

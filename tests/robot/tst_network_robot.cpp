@@ -1,0 +1,165 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// A robot on the broker as a RobotSession: its telemetry comes in as stream
+// frames, driving takes control, keeps it with a heartbeat and gives it back
+// after the stop, and a sensor query the bridge cannot answer fails with a
+// message. Against a real mosquitto and a fake bridge.
+
+#include "fake_bridge.h"
+#include "fleet_directory.h"
+#include "mosquitto_broker.h"
+#include "network_transport.h"
+#include "robot_session.h"
+#include "snapshot_json.h"
+
+#include <QJsonArray>
+#include <QSignalSpy>
+#include <QTest>
+#include <QTimer>
+
+class TestNetworkRobot : public QObject {
+    Q_OBJECT
+
+private:
+    struct Rig {
+        MosquittoBroker broker;
+        FakeBridge bridge{QStringLiteral("r1")};
+        FleetDirectory directory;
+        RobotSession session;
+        QTimer telemetry; // the bridge's stream, every 15 ms
+        oi::SensorSnapshot values{oi::profile(oi::ProfileId::Create2)};
+
+        bool start()
+        {
+            if (!broker.start() || !bridge.start(broker.port()))
+                return false;
+            bridge.publishState();
+            QSignalSpy appeared(&directory, &FleetDirectory::robotAppeared);
+            directory.connectToBroker(*mqtt::BrokerAddress::fromUrl(broker.url(), nullptr));
+            if (!appeared.wait(5000))
+                return false;
+            values.set(7, 0);
+            values.set(35, 2); // Safe: motion is allowed
+            values.set(22, 15000);
+            QObject::connect(&telemetry, &QTimer::timeout, &bridge,
+                             [this] { bridge.publishTelemetry(oilink::snapshotToJson(values)); });
+            telemetry.start(15);
+            session.setTransportFactory([d = &directory](const oilink::LinkSettings &s) -> oilink::Transport * {
+                return new NetworkTransport(d, s.networkRobot, oi::profile(*s.profile));
+            });
+            session.connectTo(oilink::LinkSettings::networkRobotOf(QStringLiteral("r1"), oi::ProfileId::Create2));
+            return QTest::qWaitFor([this] { return session.isLive(); }, 5000);
+        }
+    };
+
+private slots:
+    void telemetryComesInAsFrames()
+    {
+        Rig rig;
+        QVERIFY2(rig.start(), qPrintable(rig.broker.error()));
+        QSignalSpy frames(&rig.session, &RobotSession::frameReceived);
+        rig.values.set(7, 0x03); // both bumpers
+        rig.values.set(9, 1);
+        QTRY_VERIFY_WITH_TIMEOUT(rig.session.latest().raw(7) == 0x03, 5000);
+        QCOMPARE(rig.session.latest().raw(9), 1);
+        QCOMPARE(rig.session.latest().raw(22), 15000);
+        QCOMPARE(rig.session.robotProfile().id, oi::ProfileId::Create2);
+        QVERIFY(frames.count() > 0);
+        QCOMPARE(rig.session.statistics().checksumFailures, 0u);
+        // Nothing was sent to the robot by looking at it: Start and Stream stay here.
+        QVERIFY(rig.bridge.receivedOn(mqtt::topics::Kind::Command).isEmpty());
+        QVERIFY(rig.bridge.receivedOn(mqtt::topics::Kind::Control).isEmpty());
+    }
+
+    void drivingTakesControlAndGivesItBack()
+    {
+        Rig rig;
+        QVERIFY2(rig.start(), qPrintable(rig.broker.error()));
+        MotionCommand forward;
+        forward.velocity = 200;
+        rig.session.teleop().requestMotion(forward);
+        QTRY_COMPARE_WITH_TIMEOUT(rig.bridge.controller(), rig.directory.clientName(), 5000);
+        QTRY_COMPARE_WITH_TIMEOUT(rig.bridge.receivedOn(mqtt::topics::Kind::Command).size(), 1, 5000);
+        const auto drive = rig.bridge.receivedOn(mqtt::topics::Kind::Command).first();
+        QCOMPARE(drive.topic, mqtt::topics::command("r1", rig.directory.clientName()));
+        QCOMPARE(drive.payload.value("command").toString(), QStringLiteral("drive"));
+        QCOMPARE(drive.payload.value("args").toArray(), QJsonArray({200, "straight"}));
+        // Control was taken before the command.
+        QCOMPARE(rig.bridge.received().first().payload.value("action").toString(), QStringLiteral("take"));
+
+        // The heartbeat keeps it while driving.
+        QTRY_VERIFY_WITH_TIMEOUT(rig.bridge.receivedOn(mqtt::topics::Kind::Control).size() >= 4, 5000);
+        for (const auto &m : rig.bridge.receivedOn(mqtt::topics::Kind::Control).mid(1))
+            QCOMPARE(m.payload.value("action").toString(), QStringLiteral("keep"));
+
+        rig.session.teleop().deadManReleased();
+        QTRY_VERIFY_WITH_TIMEOUT(rig.bridge.controller().isEmpty(), 5000);
+        const auto commands = rig.bridge.receivedOn(mqtt::topics::Kind::Command);
+        QCOMPARE(commands.last().payload.value("command").toString(), QStringLiteral("stop"));
+        QCOMPARE(rig.bridge.receivedOn(mqtt::topics::Kind::Control).last().payload.value("action").toString(),
+                 QStringLiteral("release"));
+        // No heartbeat after the release: the next control message is a take.
+        const qsizetype controls = rig.bridge.receivedOn(mqtt::topics::Kind::Control).size();
+        rig.session.teleop().requestMotion(forward);
+        QTRY_VERIFY_WITH_TIMEOUT(rig.bridge.receivedOn(mqtt::topics::Kind::Control).size() > controls, 5000);
+        QCOMPARE(rig.bridge.receivedOn(mqtt::topics::Kind::Control)[controls].payload.value("action").toString(),
+                 QStringLiteral("take"));
+        rig.session.teleop().deadManReleased();
+        QTRY_VERIFY_WITH_TIMEOUT(rig.bridge.controller().isEmpty(), 5000);
+    }
+
+    void anotherControllerRefusesTheDrive()
+    {
+        Rig rig;
+        QVERIFY2(rig.start(), qPrintable(rig.broker.error()));
+        // alice drives r1 already.
+        mqtt::MqttClient alice(QStringLiteral("alice"));
+        QSignalSpy up(&alice, &mqtt::MqttClient::connected);
+        alice.connectToBroker(*mqtt::BrokerAddress::fromUrl(rig.broker.url(), nullptr));
+        QVERIFY(up.wait(5000));
+        alice.publish(mqtt::topics::control("r1", "alice"), R"({"action":"take"})", 1);
+        QTRY_COMPARE_WITH_TIMEOUT(rig.bridge.controller(), QStringLiteral("alice"), 5000);
+
+        QSignalSpy errors(&rig.directory, &FleetDirectory::errorOccurred);
+        MotionCommand forward;
+        forward.velocity = 100;
+        rig.session.teleop().requestMotion(forward);
+        QTRY_VERIFY_WITH_TIMEOUT(!errors.isEmpty(), 5000);
+        QVERIFY2(errors.first()[0].toString().contains("alice has control"), qPrintable(errors.first()[0].toString()));
+        QCOMPARE(rig.bridge.controller(), QStringLiteral("alice"));
+    }
+
+    void sensorQueries()
+    {
+        Rig rig;
+        QVERIFY2(rig.start(), qPrintable(rig.broker.error()));
+        rig.values.set(7, 0x02);
+        QTRY_VERIFY_WITH_TIMEOUT(rig.session.latest().raw(7) == 0x02, 5000);
+        // What the telemetry carries is answered from it...
+        QSignalSpy replies(&rig.session, &RobotSession::sensorReply);
+        rig.session.querySensors({7});
+        QTRY_COMPARE_WITH_TIMEOUT(replies.count(), 1, 5000);
+        QCOMPARE(replies[0][0].value<oi::SensorSnapshot>().raw(7), 0x02);
+        // ...what it does not carry fails, with a reason.
+        QSignalSpy directoryErrors(&rig.directory, &FleetDirectory::errorOccurred);
+        QSignalSpy linkErrors(&rig.session, &RobotSession::errorOccurred);
+        rig.session.querySensors({43});
+        QTRY_VERIFY_WITH_TIMEOUT(!directoryErrors.isEmpty() && !linkErrors.isEmpty(), 5000);
+        QVERIFY2(directoryErrors[0][0].toString().contains("packet 43"), qPrintable(directoryErrors[0][0].toString()));
+        QVERIFY2(linkErrors[0][0].toString().contains("no reply"), qPrintable(linkErrors[0][0].toString()));
+        QCOMPARE(replies.count(), 1);
+    }
+
+    void aSilentBridgeGoesStale()
+    {
+        Rig rig;
+        QVERIFY2(rig.start(), qPrintable(rig.broker.error()));
+        QSignalSpy states(&rig.session, &RobotSession::stateChanged);
+        rig.telemetry.stop();
+        QTRY_COMPARE_WITH_TIMEOUT(rig.session.state(), oilink::LinkState::Stale, 5000);
+        rig.telemetry.start(15);
+        QTRY_COMPARE_WITH_TIMEOUT(rig.session.state(), oilink::LinkState::Streaming, 5000);
+    }
+};
+
+QTEST_GUILESS_MAIN(TestNetworkRobot)
+#include "tst_network_robot.moc"

@@ -1,0 +1,146 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The fleet view: a tile per robot with its few values, as many columns as
+// fit, a click that asks for the robot, repaints only for a changed tile,
+// and every text translated.
+
+#include "fleet_view.h"
+#include "pseudo_translation.h"
+
+#include <QDir>
+#include <QSignalSpy>
+#include <QTest>
+
+namespace {
+
+FleetTileValues robot(int n)
+{
+    FleetTileValues v;
+    v.name = QStringLiteral("robot-%1").arg(n);
+    v.online = true;
+    v.mode = QStringLiteral("Safe");
+    v.batteryPercent = 90 - n;
+    v.link = QStringLiteral("streaming");
+    v.linkHealthy = true;
+    v.framesPerSecond = 66;
+    return v;
+}
+
+} // namespace
+
+class TestFleetView : public QObject {
+    Q_OBJECT
+
+private slots:
+    void tilesShowTheirValues()
+    {
+        FleetView view;
+        FleetTileValues bumped = robot(1);
+        bumped.bumpLeft = true;
+        bumped.controller = QStringLiteral("alice");
+        FleetTileValues cliff = robot(2);
+        cliff.cliffs = 2;
+        cliff.wheelDrop = true;
+        FleetTileValues offline = robot(3);
+        offline.online = false;
+        offline.link = QStringLiteral("lost");
+        offline.linkHealthy = false;
+        offline.framesPerSecond.reset();
+        view.setTiles({bumped, cliff, offline});
+        QCOMPARE(view.tiles().size(), 3);
+
+        const FleetTile *t1 = view.tile("robot-1");
+        QCOMPARE(t1->statusText(), QStringLiteral("ONLINE"));
+        QCOMPARE(t1->modeText(), QStringLiteral("Safe · battery 89 %"));
+        QCOMPARE(t1->hazardText(), QStringLiteral("BUMP left"));
+        QCOMPARE(t1->linkText(), QStringLiteral("link streaming · 66/s"));
+        QCOMPARE(t1->controlText(), QStringLiteral("driven by alice"));
+        QCOMPARE(view.tile("robot-2")->hazardText(), QStringLiteral("CLIFF ×2 · WHEEL DROP"));
+        QCOMPARE(view.tile("robot-3")->statusText(), QStringLiteral("OFFLINE"));
+        QCOMPARE(view.tile("robot-3")->linkText(), QStringLiteral("link lost"));
+        QCOMPARE(view.tile("robot-3")->controlText(), QStringLiteral("nobody in control"));
+        QVERIFY(t1->accessibleDescription().contains("BUMP left"));
+
+        // A robot that comes later gets a tile after the others; values update in place.
+        bumped.bumpLeft = false;
+        view.setTiles({bumped, cliff, offline, robot(4)});
+        QCOMPARE(view.tiles().size(), 4);
+        QCOMPARE(view.tiles().last()->values().name, QStringLiteral("robot-4"));
+        QCOMPARE(view.tile("robot-1")->hazardText(), QStringLiteral("no bump, no cliff"));
+    }
+
+    void clickAsksForTheRobot()
+    {
+        FleetView view;
+        view.resize(1200, 700);
+        view.setTiles({robot(1), robot(2)});
+        view.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&view));
+        QSignalSpy clicked(&view, &FleetView::robotClicked);
+        QTest::mouseClick(view.tile("robot-2"), Qt::LeftButton);
+        QCOMPARE(clicked.count(), 1);
+        QCOMPARE(clicked[0][0].toString(), QStringLiteral("robot-2"));
+        view.setSelected("robot-2");
+        QVERIFY(view.tile("robot-2")->isChecked());
+        QVERIFY(!view.tile("robot-1")->isChecked());
+    }
+
+    void asManyColumnsAsFit()
+    {
+        FleetView view;
+        QList<FleetTileValues> tiles;
+        for (int i = 1; i <= 30; ++i)
+            tiles << robot(i);
+        view.setTiles(tiles);
+        view.resize(1600, 1000);
+        view.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&view));
+        const int wide = view.columns();
+        const int tileWidth = view.tiles().first()->width();
+        QVERIFY2(wide >= 3 && wide * tileWidth <= 1600, qPrintable(QString::number(wide)));
+        view.resize(700, 1000);
+        QTRY_VERIFY(view.columns() < wide);
+        QVERIFY(view.columns() >= 1);
+    }
+
+    // Only the tile whose values changed repaints: robot-2 changes, and by
+    // the time it has repainted, robot-1 (given the same values) has not.
+    void onlyAChangedTileRepaints()
+    {
+        FleetView view;
+        view.resize(1200, 700);
+        view.setTiles({robot(1), robot(2)});
+        view.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&view));
+        FleetTile *same = view.tile("robot-1");
+        FleetTile *changed = view.tile("robot-2");
+        QTRY_VERIFY(same->paintCount() > 0 && changed->paintCount() > 0);
+        const int samePaints = same->paintCount(), changedPaints = changed->paintCount();
+        FleetTileValues bumped = robot(2);
+        bumped.bumpRight = true;
+        view.setTiles({robot(1), bumped});
+        QTRY_VERIFY(changed->paintCount() > changedPaints);
+        QCOMPARE(same->paintCount(), samePaints);
+    }
+
+    void everyTextTranslated()
+    {
+        FleetView empty;
+        FleetView view;
+        FleetTileValues v = robot(1);
+        v.bumpLeft = v.bumpRight = true;
+        v.controller = QStringLiteral("alice");
+        view.setTiles({v});
+        view.setBrokerText(QStringLiteral("mqtt://pi:1883"), true);
+        ScopedPseudoTranslation pseudo;
+        QCoreApplication::processEvents();
+        const QStringList allowed{QStringLiteral("robot-1"), QStringLiteral("mqtt://pi:1883")};
+        QStringList untranslated = untranslatedTexts(&view, allowed) + untranslatedTexts(&empty, allowed);
+        QVERIFY2(untranslated.isEmpty(), qPrintable(untranslated.join('\n')));
+        const FleetTile *t = view.tile("robot-1");
+        for (const QString &s : {t->statusText(), t->hazardText(), t->linkText(), t->controlText()})
+            QVERIFY2(s.contains(kPseudoOpen), qPrintable(s));
+    }
+};
+
+QTEST_MAIN(TestFleetView)
+#include "tst_fleet_view.moc"

@@ -1,0 +1,56 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "fleet_tile.h"
+
+#include <QList>
+#include <QWidget>
+
+class QGridLayout;
+class QLabel;
+class QPushButton;
+class QScrollArea;
+
+// Every robot on the broker, a large tile each, as many columns as fit:
+// a whole classroom on a projector. Clicking a tile asks to select that
+// robot. It takes plain values; the console decides what they say.
+class FleetView : public QWidget {
+    Q_OBJECT
+public:
+    explicit FleetView(QWidget *parent = nullptr);
+
+    // Adds tiles for new names and updates the others (in the given order
+    // for new ones); a tile repaints only when its values change.
+    void setTiles(const QList<FleetTileValues> &tiles);
+    // The broker line above the tiles: where, and whether connected.
+    void setBrokerText(const QString &text, bool connected);
+    // Checks the tile of the selected robot (none for an empty name).
+    void setSelected(const QString &name);
+
+    FleetTile *tile(const QString &name) const;
+    const QList<FleetTile *> &tiles() const { return m_tiles; }
+    int columns() const { return m_columns; }
+
+signals:
+    void robotClicked(const QString &name);
+    void connectRequested();
+
+protected:
+    bool eventFilter(QObject *watched, QEvent *event) override;
+    void changeEvent(QEvent *event) override;
+
+private:
+    void relayout(bool force = false);
+    void retranslateUi();
+
+    QLabel *m_broker = nullptr;
+    QLabel *m_empty = nullptr;
+    QPushButton *m_connect = nullptr;
+    QScrollArea *m_scroll = nullptr;
+    QWidget *m_canvas = nullptr;
+    QGridLayout *m_grid = nullptr;
+    QList<FleetTile *> m_tiles;
+    int m_columns = 0;
+    QString m_brokerText;
+    bool m_connected = false;
+};

@@ -237,7 +237,8 @@ private slots:
         const qreal scale = w.robotRect().width() / 500; // the body is 500 scene units across
         const QColor ring = w.palette().color(QPalette::Highlight);
         for (const QString part : {"cliff_front_left", "bump_right", "wall", "ir_receiver", "light_bump_right"}) {
-            const QPointF onRing = *w.partCentre(part) + QPointF(46 * scale, 0);
+            const qreal radius = part.startsWith("cliff") ? 36 : 46;
+            const QPointF onRing = *w.partCentre(part) + QPointF(radius * scale, 0);
             w.setHighlightedParts({});
             QVERIFY2(colourAt(w.grab().toImage(), onRing) != ring, qPrintable(part));
             w.setHighlightedParts({part});

@@ -437,10 +437,10 @@ void RobotDiagram::paintEvent(QPaintEvent *)
     paintBody(p);
     paintBumper(p);
     paintWheels(p);
+    paintHighlights(p); // under the cliff sensors' numbers and the wall's label
     paintCliffs(p);
     paintWall(p);
     paintChips(p);
-    paintHighlights(p);
     paintStale(p);
 }
 
@@ -495,7 +495,10 @@ void RobotDiagram::paintHighlights(QPainter &p) const
         const auto centre = scenePartCentre(part);
         if (!centre)
             continue;
-        const qreal radius = part.startsWith(QLatin1String("wheel")) ? 78 : 46;
+        // Round the lamp, clear of the cliff signal's number below it.
+        const qreal radius = part.startsWith(QLatin1String("wheel")) ? 78
+                             : part.startsWith(QLatin1String("cliff")) ? kCliffLampRadius + 10
+                                                                         : 46;
         p.setBrush(Qt::NoBrush);
         p.setPen(QPen(inkColour(), 16));
         p.drawEllipse(*centre, radius, radius);

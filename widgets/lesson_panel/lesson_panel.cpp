@@ -14,6 +14,7 @@
 #include <QLabel>
 #include <QListWidget>
 #include <QPushButton>
+#include <QScrollArea>
 #include <QSignalBlocker>
 #include <QVBoxLayout>
 
@@ -53,7 +54,14 @@ LessonPanel::LessonPanel(QWidget *parent) : QWidget(parent)
     m_steps = new QListWidget(this);
     m_steps->setObjectName("lessonSteps");
     m_steps->setWordWrap(true);
+    m_steps->setMinimumHeight(fontMetrics().height() * 4);
     m_view = new LessonStepView(this);
+    // In a short dock the step scrolls rather than making the window taller.
+    m_viewScroll = new QScrollArea(this);
+    m_viewScroll->setWidget(m_view);
+    m_viewScroll->setWidgetResizable(true);
+    m_viewScroll->setFrameShape(QFrame::NoFrame);
+    m_view->setMinimumHeight(m_view->minimumSizeHint().height());
 
     auto *bar = new QHBoxLayout;
     bar->addWidget(m_chooser, 1);
@@ -71,7 +79,7 @@ LessonPanel::LessonPanel(QWidget *parent) : QWidget(parent)
     side->setMaximumWidth(fontMetrics().averageCharWidth() * 34);
     auto *body = new QHBoxLayout;
     body->addWidget(side, 1);
-    body->addWidget(m_view, 4);
+    body->addWidget(m_viewScroll, 4);
     auto *layout = new QVBoxLayout(this);
     layout->addLayout(bar);
     layout->addWidget(m_error);
@@ -239,7 +247,7 @@ void LessonPanel::showCurrentStep()
 {
     const Lesson &lesson = m_runner.lesson();
     const int step = m_runner.currentStep();
-    m_view->setVisible(m_runner.isRunning());
+    m_viewScroll->setVisible(m_runner.isRunning());
     if (m_runner.isRunning() && step < lesson.steps.size())
         m_view->setStep(&lesson.steps[step], step, int(lesson.steps.size()));
     else

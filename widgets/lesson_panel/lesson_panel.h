@@ -14,6 +14,7 @@ class QComboBox;
 class QLabel;
 class QListWidget;
 class QPushButton;
+class QScrollArea;
 class RobotSession;
 
 // The lesson panel: a chooser of the shipped lessons and lesson files, the
@@ -91,4 +92,5 @@ private:
     QLabel *m_summary;
     QListWidget *m_steps;
     LessonStepView *m_view;
+    QScrollArea *m_viewScroll;
 };

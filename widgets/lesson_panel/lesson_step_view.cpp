@@ -115,6 +115,9 @@ void LessonStepView::applyScale()
     goal.setBold(true);
     m_goal->setFont(goal);
     m_progress->setFixedHeight(int(18 * m_scale));
+    QFont plots = font();
+    plots.setPointSizeF(font().pointSizeF() * std::max(1.0, m_scale * 0.7));
+    m_plots->setFont(plots);
     for (ValueGauge *g : std::as_const(m_readouts)) {
         QFont f = font();
         f.setPointSizeF(font().pointSizeF() * m_scale);

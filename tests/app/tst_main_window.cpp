@@ -39,6 +39,15 @@ namespace {
 
 QString text(const QByteArray &bytes) { return byteText(bytes); }
 
+// ROOMBA_SCREENSHOTS when set, else `scratch`.
+QString screenshotDir(const QTemporaryDir &scratch)
+{
+    const QString dir = qEnvironmentVariableIsEmpty("ROOMBA_SCREENSHOTS") ? scratch.path()
+                                                                           : qEnvironmentVariable("ROOMBA_SCREENSHOTS");
+    QDir().mkpath(dir);
+    return dir;
+}
+
 } // namespace
 
 class TestMainWindow : public QObject {
@@ -129,9 +138,7 @@ private slots:
                                                      qsizetype(bytes->size()))));
         };
         QTemporaryDir scratch;
-        const QString dir = qEnvironmentVariableIsEmpty("ROOMBA_SCREENSHOTS") ? scratch.path()
-                                                                               : qEnvironmentVariable("ROOMBA_SCREENSHOTS");
-        QDir().mkpath(dir);
+        const QString dir = screenshotDir(scratch);
 
         // 30 cm from the front wall, facing it, in Full mode: drive until it bumps.
         placeRobot({2700, 0, 0, 0});
@@ -179,9 +186,7 @@ private slots:
         window.start(oilink::LinkSettings::virtualRobotOf(oi::ProfileId::Create2, oi::ProfileId::Create2));
         QTRY_COMPARE_WITH_TIMEOUT(window.session().state(), oilink::LinkState::Streaming, 10000);
         QTemporaryDir scratch;
-        const QString dir = qEnvironmentVariableIsEmpty("ROOMBA_SCREENSHOTS") ? scratch.path()
-                                                                               : qEnvironmentVariable("ROOMBA_SCREENSHOTS");
-        QDir().mkpath(dir);
+        const QString dir = screenshotDir(scratch);
 
         LessonPanel *lessons = window.lessonPanel();
         window.findChild<QDockWidget *>("lessonDock")->raise();

@@ -105,6 +105,7 @@ LessonPanel::LessonPanel(QWidget *parent) : QWidget(parent)
 
 void LessonPanel::setRobot(RobotSession *robot, TruePose truePose)
 {
+    const bool another = robot != m_robot;
     disconnect(m_frames);
     disconnect(m_gone);
     m_robot = robot;
@@ -117,7 +118,7 @@ void LessonPanel::setRobot(RobotSession *robot, TruePose truePose)
     } else {
         m_view->setHistory(nullptr);
     }
-    if (m_runner.isRunning()) // the steps' references start again on this robot
+    if (another && m_runner.isRunning()) // the step starts again on this robot
         m_runner.goToStep(m_runner.currentStep());
     updateNotice();
 }

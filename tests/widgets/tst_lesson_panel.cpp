@@ -165,6 +165,9 @@ private slots:
         panel.resize(1400, 900);
         panel.show();
         for (const QString &path : lesson::shippedLessonPaths()) {
+            // The virtual robot starts in sight of its dock, which would pass
+            // the IR lesson's first step before the picture is taken.
+            const QSignalBlocker holdFrames(&robot);
             QVERIFY(panel.openLesson(path));
             QCOMPARE(panel.runner().currentStep(), 0);
             panel.refresh();

@@ -1499,6 +1499,402 @@ Klicken wählt diesen Roboter: jedes Dock zeigt ihn</translation>
     </message>
 </context>
 <context>
+    <name>Lesson</name>
+    <message>
+        <source>Battery and current while driving</source>
+        <translation>Akku und Strom beim Fahren</translation>
+    </message>
+    <message>
+        <source>Where the energy goes: the battery&apos;s voltage, charge and current, standing and driving.</source>
+        <translation>Wohin die Energie geht: Spannung, Ladung und Strom des Akkus, im Stand und beim Fahren.</translation>
+    </message>
+    <message>
+        <source>The battery reports its voltage, its charge and the current flowing in or out of it. A negative current flows out of the battery. Keep the robot still, off the dock: the current stays small, above -400 mA, for two seconds.</source>
+        <translation>Der Akku meldet seine Spannung, seine Ladung und den Strom, der hinein- oder herausfließt. Ein negativer Strom fließt aus dem Akku heraus. Lass den Roboter still stehen, nicht auf dem Dock: Der Strom bleibt zwei Sekunden lang klein, über -400 mA.</translation>
+    </message>
+    <message>
+        <source>Now drive. The wheel motors draw current from the battery, so the current goes further below zero. Keep driving until the current stays under -400 mA for two seconds.</source>
+        <translation>Jetzt fahren. Die Radmotoren ziehen Strom aus dem Akku, deshalb sinkt der Strom weiter unter null. Fahre, bis der Strom zwei Sekunden lang unter -400 mA bleibt.</translation>
+    </message>
+    <message>
+        <source>Stop the robot. The motors stop drawing and the current comes back to what the robot needs to stand still: above -400 mA for two seconds. The voltage rises a little too.</source>
+        <translation>Halte den Roboter an. Die Motoren ziehen keinen Strom mehr, und der Strom geht auf das zurück, was der Roboter im Stand braucht: zwei Sekunden lang über -400 mA. Auch die Spannung steigt ein wenig.</translation>
+    </message>
+    <message>
+        <source>Bumpers and wheel drops</source>
+        <translation>Stoßfänger und Radabsenkung</translation>
+    </message>
+    <message>
+        <source>The switches that tell the robot it has hit something or lost the floor.</source>
+        <translation>Die Schalter, die dem Roboter sagen, dass er angestoßen ist oder den Boden verloren hat.</translation>
+    </message>
+    <message>
+        <source>The bumper is one piece, but behind it sit two switches, one on the left and one on the right. Press the left half of the bumper gently. On the virtual robot, drag it on the map until its left front touches a wall.</source>
+        <translation>Der Stoßfänger ist ein Teil, aber dahinter sitzen zwei Schalter, einer links und einer rechts. Drücke vorsichtig auf die linke Hälfte des Stoßfängers. Beim virtuellen Roboter ziehst du ihn auf der Karte, bis seine linke Vorderseite eine Wand berührt.</translation>
+    </message>
+    <message>
+        <source>Now press the right half of the bumper. Watch packet 7: the left bumper is one bit, the right bumper another.</source>
+        <translation>Drücke jetzt auf die rechte Hälfte des Stoßfängers. Achte auf Paket 7: Der linke Stoßfänger ist ein Bit, der rechte ein anderes.</translation>
+    </message>
+    <message>
+        <source>Press the middle of the bumper, or drive straight into a wall: both switches close at once, and the robot knows the obstacle is straight ahead.</source>
+        <translation>Drücke auf die Mitte des Stoßfängers oder fahre gerade gegen eine Wand: Beide Schalter schließen zugleich, und der Roboter weiß, dass das Hindernis genau vor ihm ist.</translation>
+    </message>
+    <message>
+        <source>Lift the robot a little off the floor. Each drive wheel drops down on its spring and closes a switch. Lift it until both wheels hang. On the virtual robot, double-click it on the map.</source>
+        <translation>Heb den Roboter ein wenig vom Boden. Jedes Antriebsrad senkt sich an seiner Feder ab und schließt einen Schalter. Heb ihn, bis beide Räder hängen. Beim virtuellen Roboter doppelklickst du ihn auf der Karte.</translation>
+    </message>
+    <message>
+        <source>Put the robot back down, away from any wall. Every switch opens again: packet 7 reads 0 for a whole second.</source>
+        <translation>Setz den Roboter wieder ab, weg von jeder Wand. Alle Schalter öffnen wieder: Paket 7 zeigt eine ganze Sekunde lang 0.</translation>
+    </message>
+    <message>
+        <source>Cliff sensors</source>
+        <translation>Abgrundsensoren</translation>
+    </message>
+    <message>
+        <source>Four infrared eyes under the bumper that keep the robot from falling down the stairs.</source>
+        <translation>Vier Infrarotaugen unter dem Stoßfänger, die den Roboter davor bewahren, die Treppe hinunterzufallen.</translation>
+    </message>
+    <message>
+        <source>Under the front of the robot, four cliff sensors shine infrared light at the floor and measure how much comes back. On the floor each signal is high. Keep the robot on the floor and watch the front signals stay above 1000 for two seconds.</source>
+        <translation>Vorn unter dem Roboter leuchten vier Abgrundsensoren mit Infrarotlicht auf den Boden und messen, wie viel zurückkommt. Auf dem Boden ist jedes Signal hoch. Lass den Roboter auf dem Boden und sieh zu, wie die vorderen Signale zwei Sekunden lang über 1000 bleiben.</translation>
+    </message>
+    <message>
+        <source>Drive slowly towards the edge of a table or a step, in Safe mode, or lift the front of the robot a little. On the virtual robot, the stage edge is in the front right corner of the classroom. When a front sensor loses the floor, the robot sets its cliff flag and, in Safe mode, stops.</source>
+        <translation>Fahre im Safe-Modus langsam auf die Kante eines Tisches oder einer Stufe zu, oder heb die Vorderseite des Roboters ein wenig an. Beim virtuellen Roboter ist die Bühnenkante in der vorderen rechten Ecke des Klassenzimmers. Verliert ein vorderer Sensor den Boden, setzt der Roboter sein Abgrund-Flag und hält im Safe-Modus an.</translation>
+    </message>
+    <message>
+        <source>Look at the signal behind the flag: over the edge almost no light comes back. Hold the robot a little further over the edge, so that a front signal stays under 500 for half a second.</source>
+        <translation>Sieh dir das Signal hinter dem Flag an: Über der Kante kommt fast kein Licht zurück. Halte den Roboter ein wenig weiter über die Kante, sodass ein vorderes Signal eine halbe Sekunde lang unter 500 bleibt.</translation>
+    </message>
+    <message>
+        <source>Carry the robot back onto the floor, away from the edge. The flags clear and the signals rise again: both front signals above 1000 for one second.</source>
+        <translation>Trag den Roboter zurück auf den Boden, weg von der Kante. Die Flags gehen aus und die Signale steigen wieder: beide vorderen Signale eine Sekunde lang über 1000.</translation>
+    </message>
+    <message>
+        <source>Encoders, distance and angle</source>
+        <translation>Encoder, Strecke und Winkel</translation>
+    </message>
+    <message>
+        <source>How the robot knows how far it drove and which way it points, and how wrong it gets.</source>
+        <translation>Wie der Roboter weiß, wie weit er gefahren ist und wohin er zeigt, und wie sehr er sich dabei irrt.</translation>
+    </message>
+    <message>
+        <source>Each drive wheel turns an encoder that counts its steps. The dashboard adds up the steps of both wheels to work out how far the robot went: odometry. Drive straight ahead for one metre.</source>
+        <translation>Jedes Antriebsrad dreht einen Encoder, der seine Schritte zählt. Das Dashboard zählt die Schritte beider Räder zusammen und berechnet daraus, wie weit der Roboter gefahren ist: Odometrie. Fahre einen Meter geradeaus.</translation>
+    </message>
+    <message>
+        <source>Now turn on the spot, a quarter turn: 90 degrees. When one wheel goes forward and the other back, the difference between them is the angle. On the virtual robot, compare odometry with the way the robot truly points.</source>
+        <translation>Dreh dich jetzt auf der Stelle, eine Vierteldrehung: 90 Grad. Läuft ein Rad vorwärts und das andere rückwärts, ergibt ihr Unterschied den Winkel. Vergleiche beim virtuellen Roboter die Odometrie mit der Richtung, in die der Roboter wirklich zeigt.</translation>
+    </message>
+    <message>
+        <source>Turn a whole circle, 360 degrees. Small errors add up: watch how far the odometry and the true turn drift apart.</source>
+        <translation>Dreh eine ganze Runde, 360 Grad. Kleine Fehler summieren sich: Sieh zu, wie weit Odometrie und wahre Drehung auseinanderlaufen.</translation>
+    </message>
+    <message>
+        <source>IR from the dock and the virtual wall</source>
+        <translation>IR vom Dock und von der virtuellen Wand</translation>
+    </message>
+    <message>
+        <source>Invisible beams that lead the robot home and keep it out.</source>
+        <translation>Unsichtbare Strahlen, die den Roboter nach Hause führen und ihn fernhalten.</translation>
+    </message>
+    <message>
+        <source>The IR receiver at the front of the robot picks up infrared beams. The dock sends out two buoys, red and green, and a short force field. Place the robot a metre in front of the dock, facing it, until the receiver sees the dock.</source>
+        <translation>Der IR-Empfänger vorn am Roboter empfängt Infrarotstrahlen. Das Dock sendet zwei Bojen aus, rot und grün, und ein kurzes Kraftfeld. Stell den Roboter einen Meter vor das Dock, mit Blick darauf, bis der Empfänger das Dock sieht.</translation>
+    </message>
+    <message>
+        <source>A virtual wall sends a beam that the robot will not cross. Bring the robot into the beam of the virtual wall: the virtual wall flag, packet 13, turns on. In the virtual classroom, the virtual wall stands on the front wall.</source>
+        <translation>Eine virtuelle Wand sendet einen Strahl, den der Roboter nicht überquert. Bring den Roboter in den Strahl der virtuellen Wand: Das Flag für die virtuelle Wand, Paket 13, geht an. Im virtuellen Klassenzimmer steht die virtuelle Wand an der vorderen Wand.</translation>
+    </message>
+    <message>
+        <source>Drive the robot onto the dock, nose first, following the buoys. When its contacts touch the dock, the home base shows up as a charging source.</source>
+        <translation>Fahre den Roboter mit der Nase voran auf das Dock und folge dabei den Bojen. Berühren seine Kontakte das Dock, erscheint die Ladestation als Ladequelle.</translation>
+    </message>
+    <message>
+        <source>Light bumpers and wall following</source>
+        <translation>Lichtstoßfänger und Wandfolgen</translation>
+    </message>
+    <message>
+        <source>Seeing a wall before touching it, and keeping beside it.</source>
+        <translation>Eine Wand sehen, bevor man sie berührt, und neben ihr bleiben.</translation>
+    </message>
+    <message>
+        <source>Six light bumpers look out through the window of the bumper. Each one shines infrared light and measures what a wall sends back. Move the robot slowly towards a wall, facing it, until the centre left signal is above 1000.</source>
+        <translation>Sechs Lichtstoßfänger schauen durch das Fenster des Stoßfängers. Jeder leuchtet mit Infrarotlicht und misst, was eine Wand zurückwirft. Bewege den Roboter langsam auf eine Wand zu, mit Blick darauf, bis das Signal Mitte links über 1000 liegt.</translation>
+    </message>
+    <message>
+        <source>Each light bumper also has an on/off flag in packet 45, set when its signal is strong. Come close enough that the centre left and centre right flags are on together.</source>
+        <translation>Jeder Lichtstoßfänger hat auch ein Ein/Aus-Flag in Paket 45, das bei starkem Signal gesetzt wird. Komm so nah heran, dass die Flags Mitte links und Mitte rechts zugleich an sind.</translation>
+    </message>
+    <message>
+        <source>The wall sensor on the right side looks sideways. Turn the robot so that the wall is on its right and drive along it, a few centimetres away. Keep the wall signal above 30 for three seconds.</source>
+        <translation>Der Wandsensor auf der rechten Seite schaut zur Seite. Dreh den Roboter so, dass die Wand rechts von ihm ist, und fahre ein paar Zentimeter entfernt an ihr entlang. Halte das Wandsignal drei Sekunden lang über 30.</translation>
+    </message>
+    <message>
+        <source>Come closer to the wall, about four centimetres: the robot decides that a wall is there and sets the wall flag, packet 8. Keep it on for one second.</source>
+        <translation>Komm näher an die Wand, etwa vier Zentimeter: Der Roboter entscheidet, dass dort eine Wand ist, und setzt das Wand-Flag, Paket 8. Halte es eine Sekunde lang an.</translation>
+    </message>
+</context>
+<context>
+    <name>LessonFile</name>
+    <message>
+        <source>must be &quot;%1&quot;</source>
+        <translation>muss &quot;%1&quot; sein</translation>
+    </message>
+    <message>
+        <source>%1 is not a version this program reads (it reads %2)</source>
+        <translation>%1 ist keine Version, die dieses Programm liest (es liest %2)</translation>
+    </message>
+    <message>
+        <source>%1 is not a robot (roomba500, create2 or create1)</source>
+        <translation>%1 ist kein Roboter (roomba500, create2 oder create1)</translation>
+    </message>
+    <message>
+        <source>must be a list of at least one step</source>
+        <translation>muss eine Liste mit mindestens einem Schritt sein</translation>
+    </message>
+    <message>
+        <source>has more than %1 steps</source>
+        <translation>hat mehr als %1 Schritte</translation>
+    </message>
+    <message>
+        <source>step %1</source>
+        <translation>Schritt %1</translation>
+    </message>
+    <message>
+        <source>must be an object</source>
+        <translation>muss ein Objekt sein</translation>
+    </message>
+    <message>
+        <source>%1 is not a part of the robot diagram (%2)</source>
+        <translation>%1 ist kein Teil der Roboterzeichnung (%2)</translation>
+    </message>
+    <message>
+        <source>%1 is not a packet key</source>
+        <translation>%1 ist kein Paketschlüssel</translation>
+    </message>
+    <message>
+        <source>is missing or not an object</source>
+        <translation>fehlt oder ist kein Objekt</translation>
+    </message>
+    <message>
+        <source>needs exactly one of &quot;packet&quot;, &quot;drive_mm&quot;, &quot;turn_degrees&quot;, &quot;any&quot; or &quot;all&quot;</source>
+        <translation>braucht genau eines von &quot;packet&quot;, &quot;drive_mm&quot;, &quot;turn_degrees&quot;, &quot;any&quot; oder &quot;all&quot;</translation>
+    </message>
+    <message>
+        <source>must be a list of at least two goals</source>
+        <translation>muss eine Liste mit mindestens zwei Zielen sein</translation>
+    </message>
+    <message>
+        <source>needs &quot;bit&quot;, &quot;above&quot;, &quot;below&quot;, &quot;equals&quot; or &quot;ir&quot; with &quot;packet&quot;</source>
+        <translation>braucht &quot;bit&quot;, &quot;above&quot;, &quot;below&quot;, &quot;equals&quot; oder &quot;ir&quot; zu &quot;packet&quot;</translation>
+    </message>
+    <message>
+        <source>%1 is not a bit of %2</source>
+        <translation>%1 ist kein Bit von %2</translation>
+    </message>
+    <message>
+        <source>%1 is not an IR kind (dock, virtual_wall or any)</source>
+        <translation>%1 ist keine IR-Art (dock, virtual_wall oder any)</translation>
+    </message>
+    <message>
+        <source>needs an IR packet (ir_omni, ir_left or ir_right)</source>
+        <translation>braucht ein IR-Paket (ir_omni, ir_left oder ir_right)</translation>
+    </message>
+    <message>
+        <source>is not a field of a lesson file</source>
+        <translation>ist kein Feld einer Lektionsdatei</translation>
+    </message>
+    <message>
+        <source>must be a text that is not empty</source>
+        <translation>muss ein nicht leerer Text sein</translation>
+    </message>
+    <message>
+        <source>must be a list of texts</source>
+        <translation>muss eine Liste von Texten sein</translation>
+    </message>
+    <message>
+        <source>%1 must be a number from %2 to %3</source>
+        <translation>%1 muss eine Zahl von %2 bis %3 sein</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; %2</source>
+        <translation>&quot;%1&quot; %2</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>%1, &quot;%2&quot; %3</source>
+        <translation>%1, &quot;%2&quot; %3</translation>
+    </message>
+    <message>
+        <source>line %1: %2</source>
+        <translation>Zeile %1: %2</translation>
+    </message>
+    <message>
+        <source>not a JSON object</source>
+        <translation>kein JSON-Objekt</translation>
+    </message>
+    <message>
+        <source>%1: larger than a lesson file can be (1 MB)</source>
+        <translation>%1: größer, als eine Lektionsdatei sein kann (1 MB)</translation>
+    </message>
+</context>
+<context>
+    <name>LessonPanel</name>
+    <message>
+        <source>This lesson cannot be opened: %1</source>
+        <translation>Diese Lektion lässt sich nicht öffnen: %1</translation>
+    </message>
+    <message>
+        <source>Open lesson</source>
+        <translation>Lektion öffnen</translation>
+    </message>
+    <message>
+        <source>Lessons (*.json);;All files (*)</source>
+        <translation>Lektionen (*.json);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>Choose a lesson…</source>
+        <translation>Lektion wählen…</translation>
+    </message>
+    <message>
+        <source>Choose a lesson above, or open a lesson file. Each step says what to do and turns green when the robot shows it was done.</source>
+        <translation>Wähle oben eine Lektion oder öffne eine Lektionsdatei. Jeder Schritt sagt, was zu tun ist, und wird grün, wenn der Roboter zeigt, dass es getan ist.</translation>
+    </message>
+    <message>
+        <source>Lesson complete: every step is done. Well done!</source>
+        <translation>Lektion geschafft: Alle Schritte sind erledigt. Gut gemacht!</translation>
+    </message>
+    <message>
+        <source>This lesson needs a robot this one is not (%1): some goals cannot be met.</source>
+        <translation>Diese Lektion braucht einen anderen Roboter (%1): Manche Ziele sind nicht erreichbar.</translation>
+    </message>
+    <message>
+        <source>No robot is selected: the goals are checked on the selected robot&apos;s data.</source>
+        <translation>Kein Roboter ausgewählt: Die Ziele werden an den Daten des ausgewählten Roboters geprüft.</translation>
+    </message>
+    <message>
+        <source>Open lesson file…</source>
+        <translation>Lektionsdatei öffnen…</translation>
+    </message>
+    <message>
+        <source>◀ Back</source>
+        <translation>◀ Zurück</translation>
+    </message>
+    <message>
+        <source>Skip ▶</source>
+        <translation>Überspringen ▶</translation>
+    </message>
+    <message>
+        <source>Restart</source>
+        <translation>Neu beginnen</translation>
+    </message>
+    <message>
+        <source>Lesson</source>
+        <translation>Lektion</translation>
+    </message>
+    <message>
+        <source>Lesson steps</source>
+        <translation>Schritte der Lektion</translation>
+    </message>
+</context>
+<context>
+    <name>LessonStepView</name>
+    <message>
+        <source>Step %1 of %2</source>
+        <translation>Schritt %1 von %2</translation>
+    </message>
+    <message>
+        <source>Goal: %1</source>
+        <translation>Ziel: %1</translation>
+    </message>
+    <message>
+        <source>only on the virtual robot</source>
+        <translation>nur beim virtuellen Roboter</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>keine</translation>
+    </message>
+    <message>
+        <source> or </source>
+        <translation> oder </translation>
+    </message>
+    <message>
+        <source> and </source>
+        <translation> und </translation>
+    </message>
+    <message>
+        <source>drive %1 mm</source>
+        <translation>%1 mm fahren</translation>
+    </message>
+    <message>
+        <source>turn %1°</source>
+        <translation>%1° drehen</translation>
+    </message>
+    <message>
+        <source>%1 (this robot has no such sensor)</source>
+        <translation>%1 (dieser Roboter hat keinen solchen Sensor)</translation>
+    </message>
+    <message>
+        <source>%1 on</source>
+        <translation>%1 an</translation>
+    </message>
+    <message>
+        <source>%1 between %2 and %3</source>
+        <translation>%1 zwischen %2 und %3</translation>
+    </message>
+    <message>
+        <source>%1 above %2</source>
+        <translation>%1 über %2</translation>
+    </message>
+    <message>
+        <source>%1 below %2</source>
+        <translation>%1 unter %2</translation>
+    </message>
+    <message>
+        <source>%1 = %2</source>
+        <translation>%1 = %2</translation>
+    </message>
+    <message>
+        <source>%1 sees the dock</source>
+        <translation>%1 sieht das Dock</translation>
+    </message>
+    <message>
+        <source>%1 sees a virtual wall</source>
+        <translation>%1 sieht eine virtuelle Wand</translation>
+    </message>
+    <message>
+        <source>%1 sees any IR</source>
+        <translation>%1 sieht irgendein IR</translation>
+    </message>
+    <message>
+        <source>%1 for %2 s</source>
+        <translation>%1 für %2 s</translation>
+    </message>
+    <message>
+        <source>Driven, by odometry</source>
+        <translation>Gefahren, laut Odometrie</translation>
+    </message>
+    <message>
+        <source>Turned, by odometry</source>
+        <translation>Gedreht, laut Odometrie</translation>
+    </message>
+    <message>
+        <source>Driven, true</source>
+        <translation>Gefahren, wirklich</translation>
+    </message>
+    <message>
+        <source>Turned, true</source>
+        <translation>Gedreht, wirklich</translation>
+    </message>
+</context>
+<context>
     <name>LinkSettings</name>
     <message>
         <source>replay of %1</source>
@@ -1684,6 +2080,10 @@ Leertaste oder Esc hält den ausgewählten Roboter an.</translation>
     <message>
         <source>Fleet view — Roomba Dashboard</source>
         <translation>Flottenansicht — Roomba Dashboard</translation>
+    </message>
+    <message>
+        <source>Lesson</source>
+        <translation>Lektion</translation>
     </message>
 </context>
 <context>
@@ -2442,6 +2842,40 @@ Leertaste oder Esc hält den ausgewählten Roboter an.</translation>
     <message>
         <source>A song holds at most %1 notes; remove one first</source>
         <translation>Ein Lied fasst höchstens %1 Noten; entfernen Sie zuerst eine</translation>
+    </message>
+</context>
+<context>
+    <name>ProjectorMode</name>
+    <message>
+        <source>&amp;Projector view</source>
+        <translation>&amp;Projektoransicht</translation>
+    </message>
+    <message>
+        <source>Large type, high contrast, the selected robot or the lesson alone (F11)</source>
+        <translation>Große Schrift, hoher Kontrast, nur der ausgewählte Roboter oder die Lektion (F11)</translation>
+    </message>
+</context>
+<context>
+    <name>ProjectorView</name>
+    <message>
+        <source>battery %1 %</source>
+        <translation>Akku %1 %</translation>
+    </message>
+    <message>
+        <source>NO LIVE DATA</source>
+        <translation>KEINE LIVE-DATEN</translation>
+    </message>
+    <message>
+        <source>lesson complete</source>
+        <translation>Lektion geschafft</translation>
+    </message>
+    <message>
+        <source>F11: leave the projector view · Esc: stop the robot and leave</source>
+        <translation>F11: Projektoransicht verlassen · Esc: Roboter anhalten und verlassen</translation>
+    </message>
+    <message>
+        <source>Projector view</source>
+        <translation>Projektoransicht</translation>
     </message>
 </context>
 <context>

@@ -1498,6 +1498,402 @@ Haga clic para seleccionar este robot: todos los paneles lo muestran</translatio
     </message>
 </context>
 <context>
+    <name>Lesson</name>
+    <message>
+        <source>Battery and current while driving</source>
+        <translation>Batería y corriente al conducir</translation>
+    </message>
+    <message>
+        <source>Where the energy goes: the battery&apos;s voltage, charge and current, standing and driving.</source>
+        <translation>Adónde va la energía: tensión, carga y corriente de la batería, parado y en marcha.</translation>
+    </message>
+    <message>
+        <source>The battery reports its voltage, its charge and the current flowing in or out of it. A negative current flows out of the battery. Keep the robot still, off the dock: the current stays small, above -400 mA, for two seconds.</source>
+        <translation>La batería informa de su tensión, su carga y la corriente que entra o sale de ella. Una corriente negativa sale de la batería. Deja el robot quieto, fuera de la base: la corriente se mantiene pequeña, por encima de -400 mA, durante dos segundos.</translation>
+    </message>
+    <message>
+        <source>Now drive. The wheel motors draw current from the battery, so the current goes further below zero. Keep driving until the current stays under -400 mA for two seconds.</source>
+        <translation>Ahora conduce. Los motores de las ruedas toman corriente de la batería, así que la corriente baja más por debajo de cero. Sigue conduciendo hasta que la corriente se mantenga por debajo de -400 mA durante dos segundos.</translation>
+    </message>
+    <message>
+        <source>Stop the robot. The motors stop drawing and the current comes back to what the robot needs to stand still: above -400 mA for two seconds. The voltage rises a little too.</source>
+        <translation>Detén el robot. Los motores dejan de consumir y la corriente vuelve a lo que el robot necesita parado: por encima de -400 mA durante dos segundos. La tensión también sube un poco.</translation>
+    </message>
+    <message>
+        <source>Bumpers and wheel drops</source>
+        <translation>Parachoques y caída de ruedas</translation>
+    </message>
+    <message>
+        <source>The switches that tell the robot it has hit something or lost the floor.</source>
+        <translation>Los interruptores que avisan al robot de que ha chocado o ha perdido el suelo.</translation>
+    </message>
+    <message>
+        <source>The bumper is one piece, but behind it sit two switches, one on the left and one on the right. Press the left half of the bumper gently. On the virtual robot, drag it on the map until its left front touches a wall.</source>
+        <translation>El parachoques es una sola pieza, pero detrás hay dos interruptores, uno a la izquierda y otro a la derecha. Pulsa con suavidad la mitad izquierda del parachoques. Con el robot virtual, arrástralo en el mapa hasta que su parte delantera izquierda toque una pared.</translation>
+    </message>
+    <message>
+        <source>Now press the right half of the bumper. Watch packet 7: the left bumper is one bit, the right bumper another.</source>
+        <translation>Ahora pulsa la mitad derecha del parachoques. Observa el paquete 7: el parachoques izquierdo es un bit y el derecho, otro.</translation>
+    </message>
+    <message>
+        <source>Press the middle of the bumper, or drive straight into a wall: both switches close at once, and the robot knows the obstacle is straight ahead.</source>
+        <translation>Pulsa el centro del parachoques o conduce recto contra una pared: los dos interruptores se cierran a la vez y el robot sabe que el obstáculo está justo delante.</translation>
+    </message>
+    <message>
+        <source>Lift the robot a little off the floor. Each drive wheel drops down on its spring and closes a switch. Lift it until both wheels hang. On the virtual robot, double-click it on the map.</source>
+        <translation>Levanta un poco el robot del suelo. Cada rueda motriz baja con su muelle y cierra un interruptor. Levántalo hasta que cuelguen las dos ruedas. Con el robot virtual, haz doble clic sobre él en el mapa.</translation>
+    </message>
+    <message>
+        <source>Put the robot back down, away from any wall. Every switch opens again: packet 7 reads 0 for a whole second.</source>
+        <translation>Vuelve a dejar el robot en el suelo, lejos de las paredes. Todos los interruptores se abren de nuevo: el paquete 7 marca 0 durante un segundo entero.</translation>
+    </message>
+    <message>
+        <source>Cliff sensors</source>
+        <translation>Sensores de desnivel</translation>
+    </message>
+    <message>
+        <source>Four infrared eyes under the bumper that keep the robot from falling down the stairs.</source>
+        <translation>Cuatro ojos infrarrojos bajo el parachoques que evitan que el robot se caiga por las escaleras.</translation>
+    </message>
+    <message>
+        <source>Under the front of the robot, four cliff sensors shine infrared light at the floor and measure how much comes back. On the floor each signal is high. Keep the robot on the floor and watch the front signals stay above 1000 for two seconds.</source>
+        <translation>Bajo la parte delantera del robot, cuatro sensores de desnivel iluminan el suelo con luz infrarroja y miden cuánta vuelve. Sobre el suelo cada señal es alta. Deja el robot en el suelo y observa cómo las señales delanteras se mantienen por encima de 1000 durante dos segundos.</translation>
+    </message>
+    <message>
+        <source>Drive slowly towards the edge of a table or a step, in Safe mode, or lift the front of the robot a little. On the virtual robot, the stage edge is in the front right corner of the classroom. When a front sensor loses the floor, the robot sets its cliff flag and, in Safe mode, stops.</source>
+        <translation>Conduce despacio hacia el borde de una mesa o de un escalón, en modo Safe, o levanta un poco la parte delantera del robot. Con el robot virtual, el borde del escenario está en la esquina delantera derecha del aula. Cuando un sensor delantero pierde el suelo, el robot activa su indicador de desnivel y, en modo Safe, se detiene.</translation>
+    </message>
+    <message>
+        <source>Look at the signal behind the flag: over the edge almost no light comes back. Hold the robot a little further over the edge, so that a front signal stays under 500 for half a second.</source>
+        <translation>Mira la señal que hay detrás del indicador: sobre el borde casi no vuelve luz. Sostén el robot un poco más allá del borde, de modo que una señal delantera se mantenga por debajo de 500 durante medio segundo.</translation>
+    </message>
+    <message>
+        <source>Carry the robot back onto the floor, away from the edge. The flags clear and the signals rise again: both front signals above 1000 for one second.</source>
+        <translation>Lleva el robot de vuelta al suelo, lejos del borde. Los indicadores se apagan y las señales vuelven a subir: las dos señales delanteras por encima de 1000 durante un segundo.</translation>
+    </message>
+    <message>
+        <source>Encoders, distance and angle</source>
+        <translation>Codificadores, distancia y ángulo</translation>
+    </message>
+    <message>
+        <source>How the robot knows how far it drove and which way it points, and how wrong it gets.</source>
+        <translation>Cómo sabe el robot cuánto ha avanzado y hacia dónde apunta, y cuánto se equivoca.</translation>
+    </message>
+    <message>
+        <source>Each drive wheel turns an encoder that counts its steps. The dashboard adds up the steps of both wheels to work out how far the robot went: odometry. Drive straight ahead for one metre.</source>
+        <translation>Cada rueda motriz gira un codificador que cuenta sus pasos. El panel suma los pasos de las dos ruedas para calcular cuánto ha avanzado el robot: la odometría. Conduce recto un metro.</translation>
+    </message>
+    <message>
+        <source>Now turn on the spot, a quarter turn: 90 degrees. When one wheel goes forward and the other back, the difference between them is the angle. On the virtual robot, compare odometry with the way the robot truly points.</source>
+        <translation>Ahora gira sobre el sitio un cuarto de vuelta: 90 grados. Cuando una rueda va hacia delante y la otra hacia atrás, la diferencia entre ellas es el ángulo. Con el robot virtual, compara la odometría con la dirección a la que apunta de verdad el robot.</translation>
+    </message>
+    <message>
+        <source>Turn a whole circle, 360 degrees. Small errors add up: watch how far the odometry and the true turn drift apart.</source>
+        <translation>Da una vuelta entera, 360 grados. Los errores pequeños se acumulan: observa cuánto se separan la odometría y el giro real.</translation>
+    </message>
+    <message>
+        <source>IR from the dock and the virtual wall</source>
+        <translation>IR de la base y de la pared virtual</translation>
+    </message>
+    <message>
+        <source>Invisible beams that lead the robot home and keep it out.</source>
+        <translation>Haces invisibles que llevan al robot a casa y lo mantienen fuera.</translation>
+    </message>
+    <message>
+        <source>The IR receiver at the front of the robot picks up infrared beams. The dock sends out two buoys, red and green, and a short force field. Place the robot a metre in front of the dock, facing it, until the receiver sees the dock.</source>
+        <translation>El receptor IR de la parte delantera del robot capta haces infrarrojos. La base emite dos boyas, roja y verde, y un campo de fuerza corto. Coloca el robot a un metro delante de la base, mirando hacia ella, hasta que el receptor vea la base.</translation>
+    </message>
+    <message>
+        <source>A virtual wall sends a beam that the robot will not cross. Bring the robot into the beam of the virtual wall: the virtual wall flag, packet 13, turns on. In the virtual classroom, the virtual wall stands on the front wall.</source>
+        <translation>Una pared virtual emite un haz que el robot no cruza. Lleva el robot al haz de la pared virtual: se activa el indicador de pared virtual, el paquete 13. En el aula virtual, la pared virtual está en la pared delantera.</translation>
+    </message>
+    <message>
+        <source>Drive the robot onto the dock, nose first, following the buoys. When its contacts touch the dock, the home base shows up as a charging source.</source>
+        <translation>Conduce el robot hasta la base, de frente, siguiendo las boyas. Cuando sus contactos tocan la base, la base de carga aparece como fuente de carga.</translation>
+    </message>
+    <message>
+        <source>Light bumpers and wall following</source>
+        <translation>Parachoques de luz y seguimiento de paredes</translation>
+    </message>
+    <message>
+        <source>Seeing a wall before touching it, and keeping beside it.</source>
+        <translation>Ver una pared antes de tocarla y mantenerse a su lado.</translation>
+    </message>
+    <message>
+        <source>Six light bumpers look out through the window of the bumper. Each one shines infrared light and measures what a wall sends back. Move the robot slowly towards a wall, facing it, until the centre left signal is above 1000.</source>
+        <translation>Seis parachoques de luz miran a través de la ventana del parachoques. Cada uno emite luz infrarroja y mide lo que devuelve una pared. Acerca el robot despacio a una pared, mirando hacia ella, hasta que la señal central izquierda supere 1000.</translation>
+    </message>
+    <message>
+        <source>Each light bumper also has an on/off flag in packet 45, set when its signal is strong. Come close enough that the centre left and centre right flags are on together.</source>
+        <translation>Cada parachoques de luz tiene además un indicador de encendido y apagado en el paquete 45, que se activa cuando su señal es fuerte. Acércate lo suficiente para que los indicadores central izquierdo y central derecho estén activos a la vez.</translation>
+    </message>
+    <message>
+        <source>The wall sensor on the right side looks sideways. Turn the robot so that the wall is on its right and drive along it, a few centimetres away. Keep the wall signal above 30 for three seconds.</source>
+        <translation>El sensor de pared del lado derecho mira hacia un lado. Gira el robot para que la pared quede a su derecha y conduce a lo largo de ella, a unos centímetros. Mantén la señal de pared por encima de 30 durante tres segundos.</translation>
+    </message>
+    <message>
+        <source>Come closer to the wall, about four centimetres: the robot decides that a wall is there and sets the wall flag, packet 8. Keep it on for one second.</source>
+        <translation>Acércate más a la pared, unos cuatro centímetros: el robot decide que hay una pared y activa el indicador de pared, el paquete 8. Mantenlo activo durante un segundo.</translation>
+    </message>
+</context>
+<context>
+    <name>LessonFile</name>
+    <message>
+        <source>must be &quot;%1&quot;</source>
+        <translation>debe ser &quot;%1&quot;</translation>
+    </message>
+    <message>
+        <source>%1 is not a version this program reads (it reads %2)</source>
+        <translation>%1 no es una versión que este programa lea (lee la %2)</translation>
+    </message>
+    <message>
+        <source>%1 is not a robot (roomba500, create2 or create1)</source>
+        <translation>%1 no es un robot (roomba500, create2 o create1)</translation>
+    </message>
+    <message>
+        <source>must be a list of at least one step</source>
+        <translation>debe ser una lista con al menos un paso</translation>
+    </message>
+    <message>
+        <source>has more than %1 steps</source>
+        <translation>tiene más de %1 pasos</translation>
+    </message>
+    <message>
+        <source>step %1</source>
+        <translation>paso %1</translation>
+    </message>
+    <message>
+        <source>must be an object</source>
+        <translation>debe ser un objeto</translation>
+    </message>
+    <message>
+        <source>%1 is not a part of the robot diagram (%2)</source>
+        <translation>%1 no es una parte del dibujo del robot (%2)</translation>
+    </message>
+    <message>
+        <source>%1 is not a packet key</source>
+        <translation>%1 no es una clave de paquete</translation>
+    </message>
+    <message>
+        <source>is missing or not an object</source>
+        <translation>falta o no es un objeto</translation>
+    </message>
+    <message>
+        <source>needs exactly one of &quot;packet&quot;, &quot;drive_mm&quot;, &quot;turn_degrees&quot;, &quot;any&quot; or &quot;all&quot;</source>
+        <translation>necesita exactamente uno de &quot;packet&quot;, &quot;drive_mm&quot;, &quot;turn_degrees&quot;, &quot;any&quot; o &quot;all&quot;</translation>
+    </message>
+    <message>
+        <source>must be a list of at least two goals</source>
+        <translation>debe ser una lista con al menos dos objetivos</translation>
+    </message>
+    <message>
+        <source>needs &quot;bit&quot;, &quot;above&quot;, &quot;below&quot;, &quot;equals&quot; or &quot;ir&quot; with &quot;packet&quot;</source>
+        <translation>necesita &quot;bit&quot;, &quot;above&quot;, &quot;below&quot;, &quot;equals&quot; o &quot;ir&quot; junto a &quot;packet&quot;</translation>
+    </message>
+    <message>
+        <source>%1 is not a bit of %2</source>
+        <translation>%1 no es un bit de %2</translation>
+    </message>
+    <message>
+        <source>%1 is not an IR kind (dock, virtual_wall or any)</source>
+        <translation>%1 no es un tipo de IR (dock, virtual_wall o any)</translation>
+    </message>
+    <message>
+        <source>needs an IR packet (ir_omni, ir_left or ir_right)</source>
+        <translation>necesita un paquete IR (ir_omni, ir_left o ir_right)</translation>
+    </message>
+    <message>
+        <source>is not a field of a lesson file</source>
+        <translation>no es un campo de un archivo de lección</translation>
+    </message>
+    <message>
+        <source>must be a text that is not empty</source>
+        <translation>debe ser un texto no vacío</translation>
+    </message>
+    <message>
+        <source>must be a list of texts</source>
+        <translation>debe ser una lista de textos</translation>
+    </message>
+    <message>
+        <source>%1 must be a number from %2 to %3</source>
+        <translation>%1 debe ser un número de %2 a %3</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; %2</source>
+        <translation>&quot;%1&quot; %2</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>%1, &quot;%2&quot; %3</source>
+        <translation>%1, &quot;%2&quot; %3</translation>
+    </message>
+    <message>
+        <source>line %1: %2</source>
+        <translation>línea %1: %2</translation>
+    </message>
+    <message>
+        <source>not a JSON object</source>
+        <translation>no es un objeto JSON</translation>
+    </message>
+    <message>
+        <source>%1: larger than a lesson file can be (1 MB)</source>
+        <translation>%1: más grande de lo que puede ser un archivo de lección (1 MB)</translation>
+    </message>
+</context>
+<context>
+    <name>LessonPanel</name>
+    <message>
+        <source>This lesson cannot be opened: %1</source>
+        <translation>No se puede abrir esta lección: %1</translation>
+    </message>
+    <message>
+        <source>Open lesson</source>
+        <translation>Abrir lección</translation>
+    </message>
+    <message>
+        <source>Lessons (*.json);;All files (*)</source>
+        <translation>Lecciones (*.json);;Todos los archivos (*)</translation>
+    </message>
+    <message>
+        <source>Choose a lesson…</source>
+        <translation>Elige una lección…</translation>
+    </message>
+    <message>
+        <source>Choose a lesson above, or open a lesson file. Each step says what to do and turns green when the robot shows it was done.</source>
+        <translation>Elige una lección arriba o abre un archivo de lección. Cada paso dice qué hacer y se pone verde cuando el robot muestra que se ha hecho.</translation>
+    </message>
+    <message>
+        <source>Lesson complete: every step is done. Well done!</source>
+        <translation>Lección completada: todos los pasos están hechos. ¡Bien hecho!</translation>
+    </message>
+    <message>
+        <source>This lesson needs a robot this one is not (%1): some goals cannot be met.</source>
+        <translation>Esta lección necesita otro robot (%1): algunos objetivos no se pueden cumplir.</translation>
+    </message>
+    <message>
+        <source>No robot is selected: the goals are checked on the selected robot&apos;s data.</source>
+        <translation>No hay ningún robot seleccionado: los objetivos se comprueban con los datos del robot seleccionado.</translation>
+    </message>
+    <message>
+        <source>Open lesson file…</source>
+        <translation>Abrir archivo de lección…</translation>
+    </message>
+    <message>
+        <source>◀ Back</source>
+        <translation>◀ Atrás</translation>
+    </message>
+    <message>
+        <source>Skip ▶</source>
+        <translation>Saltar ▶</translation>
+    </message>
+    <message>
+        <source>Restart</source>
+        <translation>Reiniciar</translation>
+    </message>
+    <message>
+        <source>Lesson</source>
+        <translation>Lección</translation>
+    </message>
+    <message>
+        <source>Lesson steps</source>
+        <translation>Pasos de la lección</translation>
+    </message>
+</context>
+<context>
+    <name>LessonStepView</name>
+    <message>
+        <source>Step %1 of %2</source>
+        <translation>Paso %1 de %2</translation>
+    </message>
+    <message>
+        <source>Goal: %1</source>
+        <translation>Objetivo: %1</translation>
+    </message>
+    <message>
+        <source>only on the virtual robot</source>
+        <translation>solo con el robot virtual</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>ninguno</translation>
+    </message>
+    <message>
+        <source> or </source>
+        <translation> o </translation>
+    </message>
+    <message>
+        <source> and </source>
+        <translation> y </translation>
+    </message>
+    <message>
+        <source>drive %1 mm</source>
+        <translation>avanzar %1 mm</translation>
+    </message>
+    <message>
+        <source>turn %1°</source>
+        <translation>girar %1°</translation>
+    </message>
+    <message>
+        <source>%1 (this robot has no such sensor)</source>
+        <translation>%1 (este robot no tiene ese sensor)</translation>
+    </message>
+    <message>
+        <source>%1 on</source>
+        <translation>%1 activo</translation>
+    </message>
+    <message>
+        <source>%1 between %2 and %3</source>
+        <translation>%1 entre %2 y %3</translation>
+    </message>
+    <message>
+        <source>%1 above %2</source>
+        <translation>%1 por encima de %2</translation>
+    </message>
+    <message>
+        <source>%1 below %2</source>
+        <translation>%1 por debajo de %2</translation>
+    </message>
+    <message>
+        <source>%1 = %2</source>
+        <translation>%1 = %2</translation>
+    </message>
+    <message>
+        <source>%1 sees the dock</source>
+        <translation>%1 ve la base</translation>
+    </message>
+    <message>
+        <source>%1 sees a virtual wall</source>
+        <translation>%1 ve una pared virtual</translation>
+    </message>
+    <message>
+        <source>%1 sees any IR</source>
+        <translation>%1 ve cualquier IR</translation>
+    </message>
+    <message>
+        <source>%1 for %2 s</source>
+        <translation>%1 durante %2 s</translation>
+    </message>
+    <message>
+        <source>Driven, by odometry</source>
+        <translation>Recorrido, según la odometría</translation>
+    </message>
+    <message>
+        <source>Turned, by odometry</source>
+        <translation>Girado, según la odometría</translation>
+    </message>
+    <message>
+        <source>Driven, true</source>
+        <translation>Recorrido, real</translation>
+    </message>
+    <message>
+        <source>Turned, true</source>
+        <translation>Girado, real</translation>
+    </message>
+</context>
+<context>
     <name>LinkSettings</name>
     <message>
         <source>replay of %1</source>
@@ -1683,6 +2079,10 @@ Espacio o Esc detiene el robot seleccionado.</translation>
     <message>
         <source>Fleet view — Roomba Dashboard</source>
         <translation>Vista de la flota — Roomba Dashboard</translation>
+    </message>
+    <message>
+        <source>Lesson</source>
+        <translation>Lección</translation>
     </message>
 </context>
 <context>
@@ -2441,6 +2841,40 @@ Espacio o Esc detiene el robot seleccionado.</translation>
     <message>
         <source>A song holds at most %1 notes; remove one first</source>
         <translation>Una canción admite como máximo %1 notas; elimine una primero</translation>
+    </message>
+</context>
+<context>
+    <name>ProjectorMode</name>
+    <message>
+        <source>&amp;Projector view</source>
+        <translation>Vista de &amp;proyector</translation>
+    </message>
+    <message>
+        <source>Large type, high contrast, the selected robot or the lesson alone (F11)</source>
+        <translation>Letra grande, alto contraste, solo el robot seleccionado o la lección (F11)</translation>
+    </message>
+</context>
+<context>
+    <name>ProjectorView</name>
+    <message>
+        <source>battery %1 %</source>
+        <translation>batería %1 %</translation>
+    </message>
+    <message>
+        <source>NO LIVE DATA</source>
+        <translation>SIN DATOS EN VIVO</translation>
+    </message>
+    <message>
+        <source>lesson complete</source>
+        <translation>lección completada</translation>
+    </message>
+    <message>
+        <source>F11: leave the projector view · Esc: stop the robot and leave</source>
+        <translation>F11: salir de la vista de proyector · Esc: detener el robot y salir</translation>
+    </message>
+    <message>
+        <source>Projector view</source>
+        <translation>Vista de proyector</translation>
     </message>
 </context>
 <context>

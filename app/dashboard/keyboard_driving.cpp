@@ -78,6 +78,8 @@ bool KeyboardDriving::eventFilter(QObject *watched, QEvent *event)
             m_held.clear();
             if (teleop)
                 teleop->stopAll();
+            if (key->key() == Qt::Key_Escape)
+                emit escapePressed();
         }
         return true;
     }

@@ -33,6 +33,8 @@ public:
 
 signals:
     void stopAllRequested();
+    // Esc stopped the selected robot; a full-screen view also leaves on it.
+    void escapePressed();
 
 protected:
     bool eventFilter(QObject *watched, QEvent *event) override;

@@ -16,11 +16,14 @@
 #include "gamepad_panel.h"
 #include "keyboard_driving.h"
 #include "led_editor.h"
+#include "lesson_panel.h"
 #include "mode_panel.h"
 #include "motors_panel.h"
 #include "network_transport.h"
 #include "odometry_map.h"
 #include "oi_text.h"
+#include "projector_mode.h"
+#include "projector_view.h"
 #include "recording_actions.h"
 #include "room_actions.h"
 #include "replay_bar.h"
@@ -138,6 +141,9 @@ void MainWindow::buildDocks()
     m_gamepadPanel = new GamepadPanel(this);
     m_gamepadPanel->setInput(m_gamepad);
     m_drivePad = new DrivePad(this);
+    m_lessons = new LessonPanel(this);
+    m_projector = new ProjectorMode(this, &m_lessons->runner());
+    connect(m_lessons, &LessonPanel::lessonChanged, m_projector->view(), &ProjectorView::lessonChanged);
 
     DockLayout &l = *m_layout;
     l.addDock("connectionDock", QT_TR_NOOP("Connection"), m_connectionBar, Qt::TopDockWidgetArea, true);
@@ -162,7 +168,8 @@ void MainWindow::buildDocks()
                                        std::tuple{"scriptDock", QT_TR_NOOP("Script"), static_cast<QWidget *>(m_script)},
                                        std::tuple{"motorsDock", QT_TR_NOOP("Motors and outputs"), static_cast<QWidget *>(m_motors)},
                                        std::tuple{"mapDock", QT_TR_NOOP("Odometry map"), static_cast<QWidget *>(m_map)},
-                                       std::tuple{"gamepadDock", QT_TR_NOOP("Gamepad"), static_cast<QWidget *>(m_gamepadPanel)}}) {
+                                       std::tuple{"gamepadDock", QT_TR_NOOP("Gamepad"), static_cast<QWidget *>(m_gamepadPanel)},
+                                       std::tuple{"lessonDock", QT_TR_NOOP("Lesson"), static_cast<QWidget *>(m_lessons)}}) {
         const bool acts = widget != m_map;
         QDockWidget *dock = l.addDock(name, title, widget, Qt::BottomDockWidgetArea, acts);
         tabifyDockWidget(below, dock);
@@ -325,6 +332,7 @@ void MainWindow::wireInputs()
     m_keyboard->setTarget([this] { return m_fleet.selected() ? &teleop() : nullptr; },
                           [this] { return m_drivePad->speedLimit(); });
     connect(m_keyboard, &KeyboardDriving::stopAllRequested, &m_fleet, &RobotFleet::stopAll);
+    connect(m_keyboard, &KeyboardDriving::escapePressed, this, [this] { setProjectorView(false); });
 
     connect(m_connectionBar, &ConnectionBar::connectRequested, this, [this](const ConnectionRequest &request) {
         // The bar cannot name a robot on the broker: unchanged, it reconnects it.
@@ -354,6 +362,7 @@ void MainWindow::showSelected(RobotSession *robot)
         disconnect(c);
     m_selectedConnections.clear();
     TeleopController *teleop = &robot->teleop();
+    m_lessons->setRobot(robot, [this, robot] { return truePose(robot); });
     m_selectedConnections = {
         connect(robot, &RobotSession::profileChanged, this, &MainWindow::applyProfile),
         connect(robot, &RobotSession::stateChanged, this, &MainWindow::showState),
@@ -572,6 +581,7 @@ void MainWindow::buildMenus()
     m_viewMenu->addAction(m_recordingBar->toggleViewAction());
     m_viewMenu->addAction(m_fleetViewAction);
     m_viewMenu->addSeparator();
+    m_viewMenu->addAction(m_projector->action());
     m_viewMenu->addAction(m_nextDockAction);
     m_viewMenu->addAction(m_previousDockAction);
     m_languageMenu = m_viewMenu->addMenu(QString());
@@ -611,6 +621,7 @@ void MainWindow::retranslateUi()
     m_resetLayoutAction->setText(tr("&Reset layout"));
     m_nextDockAction->setText(tr("&Next pane"));
     m_previousDockAction->setText(tr("&Previous pane"));
+    m_projector->retranslate();
     m_helpMenu->setTitle(tr("&Help"));
     m_aboutAction->setText(tr("&About"));
     m_status->retranslate();
@@ -731,6 +742,7 @@ void MainWindow::applyProfile(oi::ProfileId id)
     m_map->setProfile(p);
     m_drivePad->setProfile(p);
     m_plots->setProfile(p);
+    m_projector->view()->setRobot(session().name(), p, &session().history());
     m_status->showProfile(oitext::fromView(p.name));
     m_shownSnapshot = ~0ull;
 }
@@ -798,7 +810,25 @@ void MainWindow::refreshDisplay()
         showRoom();
     if (m_displayTicks % kCardTicks == 0)
         refreshRobotCards();
+    if (m_displayTicks % 2 == 0) {
+        m_lessons->refresh();
+        m_projector->view()->refresh(robot.latest(), live);
+    }
 }
+
+std::optional<oi::Pose> MainWindow::truePose(const RobotSession *robot) const
+{
+    const auto place = m_roomPlaces.value(robot);
+    if (!place || *place < 0)
+        return std::nullopt;
+    const auto where = m_room->robot(*place);
+    return where ? std::optional(where->pose) : std::nullopt;
+}
+
+ProjectorView *MainWindow::projectorView() const { return m_projector->view(); }
+QAction *MainWindow::projectorAction() const { return m_projector->action(); }
+void MainWindow::setProjectorView(bool on) { m_projector->setOn(on); }
+bool MainWindow::isProjectorView() const { return m_projector->isOn(); }
 
 void MainWindow::showState(oilink::LinkState state)
 {

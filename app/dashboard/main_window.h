@@ -29,9 +29,12 @@ class GamepadInput;
 class GamepadPanel;
 class KeyboardDriving;
 class LedEditor;
+class LessonPanel;
 class ModePanel;
 class MotorsPanel;
 class OdometryMap;
+class ProjectorMode;
+class ProjectorView;
 class QAction;
 class QActionGroup;
 class QDockWidget;
@@ -118,6 +121,12 @@ public:
     OdometryMap *odometryMap() const { return m_map; }
     ReplayBar *replayBar() const { return m_replayBar; }
     RobotList *robotList() const { return m_robotList; }
+    LessonPanel *lessonPanel() const { return m_lessons; }
+    ProjectorView *projectorView() const;
+    QAction *projectorAction() const;
+    // The projector view: the selected robot or the lesson, full screen (F11).
+    void setProjectorView(bool on);
+    bool isProjectorView() const;
     QPushButton *stopAllButton() const { return m_stopAll; }
     QToolBar *recordingToolBar() const { return m_recordingBar; }
     QAction *recordAction() const;
@@ -140,6 +149,8 @@ private:
     // A virtual robot gets a free spot in the room and starts its odometry
     // there; any other gives its spot back.
     void placeInRoom(RobotSession *robot, const oilink::LinkSettings &settings);
+    // Where a virtual robot truly is in the room; nullopt for any other.
+    std::optional<oi::Pose> truePose(const RobotSession *robot) const;
     void showRoom();
     void showSelected(RobotSession *robot);
     void addRobot(int kind);
@@ -183,6 +194,8 @@ private:
     ScheduleEditor *m_schedule = nullptr;
     ScriptEditor *m_script = nullptr;
     DrivePad *m_drivePad = nullptr;
+    LessonPanel *m_lessons = nullptr;
+    ProjectorMode *m_projector = nullptr;
     RobotList *m_robotList = nullptr;
     QPushButton *m_stopAll = nullptr;
     QToolBar *m_robotBar = nullptr;

@@ -5,6 +5,9 @@
 #include "room_actions.h"
 #include "connection_bar.h"
 #include "mode_panel.h"
+#include "lesson_panel.h"
+#include "lesson_step_view.h"
+#include "projector_view.h"
 #include "recording_transport.h"
 #include "robot_diagram.h"
 #include "odometry_map.h"
@@ -36,6 +39,15 @@
 namespace {
 
 QString text(const QByteArray &bytes) { return byteText(bytes); }
+
+// ROOMBA_SCREENSHOTS when set, else `scratch`.
+QString screenshotDir(const QTemporaryDir &scratch)
+{
+    const QString dir = qEnvironmentVariableIsEmpty("ROOMBA_SCREENSHOTS") ? scratch.path()
+                                                                           : qEnvironmentVariable("ROOMBA_SCREENSHOTS");
+    QDir().mkpath(dir);
+    return dir;
+}
 
 } // namespace
 
@@ -127,9 +139,7 @@ private slots:
                                                      qsizetype(bytes->size()))));
         };
         QTemporaryDir scratch;
-        const QString dir = qEnvironmentVariableIsEmpty("ROOMBA_SCREENSHOTS") ? scratch.path()
-                                                                               : qEnvironmentVariable("ROOMBA_SCREENSHOTS");
-        QDir().mkpath(dir);
+        const QString dir = screenshotDir(scratch);
 
         // 30 cm from the front wall, facing it, in Full mode: drive until it bumps.
         placeRobot({2700, 0, 0, 0});
@@ -163,6 +173,62 @@ private slots:
             QTRY_VERIFY(window.findChild<QDockWidget *>(dock)->widget()->isVisible());
             QVERIFY(window.grab().save(QDir(dir).filePath(QString("dashboard_%1.png").arg(dock))));
         }
+    }
+
+    // A lesson in the window on the virtual robot: its goal met by driving,
+    // the true pose beside odometry, and the projector view at 1920x1080
+    // with the lesson and with the robot alone (screenshots into
+    // ROOMBA_SCREENSHOTS when set).
+    void lessonAndProjectorView()
+    {
+        MainWindow window;
+        window.resize(1920, 1080);
+        window.show();
+        window.start(oilink::LinkSettings::virtualRobotOf(oi::ProfileId::Create2, oi::ProfileId::Create2));
+        QTRY_COMPARE_WITH_TIMEOUT(window.session().state(), oilink::LinkState::Streaming, 10000);
+        QTemporaryDir scratch;
+        const QString dir = screenshotDir(scratch);
+
+        LessonPanel *lessons = window.lessonPanel();
+        window.findChild<QDockWidget *>("lessonDock")->raise();
+        QVERIFY(lessons->openLesson(":/lessons/encoders_distance_angle.json"));
+        const oi::CommandEncoder encoder(oi::profile(oi::ProfileId::Create2));
+        const auto send = [&window](const oi::EncodeResult &bytes) {
+            QVERIFY(window.session().send(QByteArray(reinterpret_cast<const char *>(bytes->data()),
+                                                     qsizetype(bytes->size()))));
+        };
+        window.room()->moveRobot(window.roomRobot(), {0, 0, 0, 0});
+        send(encoder.safe());
+        send(encoder.drive(400, oi::kRadiusStraight));
+        QTRY_COMPARE_WITH_TIMEOUT(lessons->runner().currentStep(), 1, 10000);
+        send(encoder.drive(200, oi::kRadiusTurnInPlaceCounterClockwise));
+        QTRY_VERIFY_WITH_TIMEOUT(lessons->runner().turnedDegrees() > 30, 10000);
+        send(encoder.drive(0, 0));
+        QVERIFY(lessons->runner().trueTurnedDegrees()); // the room's truth, on the virtual robot
+        QTRY_VERIFY_WITH_TIMEOUT((window.refreshDisplay(), window.refreshDisplay(),
+                                  !lessons->stepView()->readoutText("true_turned_deg").startsWith("—")), 5000);
+        QVERIFY(window.grab().save(QDir(dir).filePath("dashboard_lesson.png")));
+
+        // The projector view: the lesson's step and its views, full screen.
+        window.projectorAction()->trigger();
+        QVERIFY(window.isProjectorView());
+        ProjectorView *projector = window.projectorView();
+        QCOMPARE(projector->stepView()->headingText(), QString("Step 2 of 3"));
+        QTRY_COMPARE(projector->size(), window.size());
+        window.refreshDisplay();
+        window.refreshDisplay();
+        QVERIFY(projector->headerText().contains("Encoders, distance and angle"));
+        QVERIFY(projector->grab().save(QDir(dir).filePath("projector_lesson.png")));
+
+        // Without a lesson: the robot alone.
+        lessons->closeLesson();
+        QCOMPARE(projector->stepView()->headingText(), QString());
+        window.refreshDisplay();
+        window.refreshDisplay();
+        QVERIFY(!projector->stepView()->readoutText("voltage").isEmpty());
+        QVERIFY(projector->grab().save(QDir(dir).filePath("projector_robot.png")));
+        window.projectorAction()->trigger();
+        QVERIFY(!window.isProjectorView());
     }
 
     // A Create script uploaded to the virtual robot runs with its wait, and

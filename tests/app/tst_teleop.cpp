@@ -4,6 +4,7 @@
 // the rate limit.
 #include "drive_pad.h"
 #include "main_window.h"
+#include "projector_view.h"
 #include "recording_transport.h"
 #include "sensor_plots.h"
 
@@ -270,6 +271,41 @@ private slots:
         QTest::keyClick(QApplication::focusWidget(), Qt::Key_Space);
         QVERIFY(rig.nothingMore());
         QCOMPARE(plots->isPaused(), !paused);
+    }
+
+    // F11 puts the window in the projector view and takes it out again; in
+    // it the keys still drive, Space and Esc still stop, and Esc leaves it.
+    void projectorViewKeepsTheStopKeys()
+    {
+        Rig rig;
+        QVERIFY(rig.ready());
+        QTest::keyClick(rig.area(), Qt::Key_F11);
+        QVERIFY(rig.window.isProjectorView());
+        QVERIFY(rig.window.projectorView()->isVisible());
+        QCOMPARE(QApplication::focusWidget(), rig.window.projectorView());
+        rig.sentSoFar(); // whatever entering full screen caused
+        QWidget *view = rig.window.projectorView();
+        QTest::keyPress(view, Qt::Key_W);
+        QCOMPARE(rig.next(), driveBytes(200, oi::kRadiusStraight));
+        QTest::keyClick(view, Qt::Key_Space);
+        QCOMPARE(rig.next(), kStop);
+        QVERIFY(rig.window.isProjectorView()); // Space stops and stays
+        QTest::keyRelease(view, Qt::Key_W);
+
+        QTest::keyClick(view, Qt::Key_F11);
+        QVERIFY(!rig.window.isProjectorView());
+        QVERIFY(!(rig.window.windowState() & Qt::WindowFullScreen));
+        QTest::keyClick(rig.window.drivePad()->padArea(), Qt::Key_F11);
+        QVERIFY(rig.window.isProjectorView());
+        QVERIFY(rig.window.windowState() & Qt::WindowFullScreen);
+        rig.sentSoFar();
+        QTest::keyPress(view, Qt::Key_W);
+        QCOMPARE(rig.next(), driveBytes(200, oi::kRadiusStraight));
+        QTest::keyClick(view, Qt::Key_Escape);
+        QCOMPARE(rig.next(), kStop);
+        QVERIFY(!rig.window.isProjectorView());
+        QVERIFY(!rig.window.projectorAction()->isChecked());
+        QTest::keyRelease(view, Qt::Key_W);
     }
 
     void focusLossStops()

@@ -38,6 +38,7 @@ has "usr/share/metainfo/$app_id.metainfo.xml"
 grep -q '^\./usr/share/roomba-dashboard/songs/.*\.json$' <<<"$contents" \
     || fail "no example songs in usr/share/roomba-dashboard/songs"
 has usr/share/roomba-dashboard/rooms/table_top.json
+has usr/share/roomba-dashboard/lessons/cliff_sensors.json
 
 field() { dpkg-deb -f "$deb" "$1"; }
 [ "$(field Package)" = roomba-dashboard ] || fail "Package is '$(field Package)'"

@@ -229,6 +229,26 @@ private slots:
         QCOMPARE(colourAt(image, w.casterCentre()) == stateColour(w, State::Alert), create1);
     }
 
+    // A lesson points at parts with a ring in the highlight colour.
+    void highlightRingsTheParts()
+    {
+        RobotDiagram w;
+        show(w, ProfileId::Create2, quietValues(profile(ProfileId::Create2)));
+        const qreal scale = w.robotRect().width() / 500; // the body is 500 scene units across
+        const QColor ring = w.palette().color(QPalette::Highlight);
+        for (const QString part : {"cliff_front_left", "bump_right", "wall", "ir_receiver", "light_bump_right"}) {
+            const qreal radius = part.startsWith("cliff") ? 36 : 46;
+            const QPointF onRing = *w.partCentre(part) + QPointF(radius * scale, 0);
+            w.setHighlightedParts({});
+            QVERIFY2(colourAt(w.grab().toImage(), onRing) != ring, qPrintable(part));
+            w.setHighlightedParts({part});
+            QVERIFY2(colourAt(w.grab().toImage(), onRing) == ring, qPrintable(part));
+        }
+        QVERIFY(!w.partCentre("nose"));
+        w.setProfile(profile(ProfileId::Create1));
+        QVERIFY(!w.partCentre("light_bump_right")); // the Create has none
+    }
+
     void wallSensor()
     {
         RobotDiagram w;

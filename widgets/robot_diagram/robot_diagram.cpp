@@ -437,10 +437,74 @@ void RobotDiagram::paintEvent(QPaintEvent *)
     paintBody(p);
     paintBumper(p);
     paintWheels(p);
+    paintHighlights(p); // under the cliff sensors' numbers and the wall's label
     paintCliffs(p);
     paintWall(p);
     paintChips(p);
     paintStale(p);
+}
+
+void RobotDiagram::setHighlightedParts(const QStringList &parts)
+{
+    if (parts == m_highlighted)
+        return;
+    m_highlighted = parts;
+    update();
+}
+
+std::optional<QPointF> RobotDiagram::partCentre(const QString &part) const
+{
+    if (const auto centre = scenePartCentre(part))
+        return sceneToWidget().map(*centre);
+    return std::nullopt;
+}
+
+std::optional<QPointF> RobotDiagram::scenePartCentre(const QString &part) const
+{
+    const qreal bumperMid = (kBumperInner + kBumperOuter) / 2;
+    if (part == QLatin1String("bump_left") || part == QLatin1String("bump_right"))
+        return polar(bumperMid, part == QLatin1String("bump_left") ? 120 : 60);
+    if (part == QLatin1String("wheel_left"))
+        return kWheelLeft.center();
+    if (part == QLatin1String("wheel_right"))
+        return kWheelRight.center();
+    if (part == QLatin1String("caster"))
+        return isCreate1() ? std::optional(kCaster) : std::nullopt;
+    if (part == QLatin1String("wall"))
+        return kWall.center();
+    if (part == QLatin1String("ir_receiver"))
+        return kOmniReceiver;
+    static const char *const cliffs[] = {"cliff_left", "cliff_front_left", "cliff_front_right", "cliff_right"};
+    for (int i = 0; i < 4; ++i)
+        if (part == QLatin1String(cliffs[i]))
+            return cliffLampPoint(oi::CliffSensor(i));
+    static const char *const lights[] = {"light_bump_left", "light_bump_front_left", "light_bump_center_left",
+                                         "light_bump_center_right", "light_bump_front_right", "light_bump_right"};
+    for (int i = 0; i < 6; ++i)
+        if (part == QLatin1String(lights[i]))
+            return isCreate1() ? std::nullopt : std::optional(polar(bumperMid, kLightBumperAngles[std::size_t(i)]));
+    return std::nullopt;
+}
+
+// A thick ring in the palette's highlight colour, with a thin outline so it
+// stands out on light and dark fills alike.
+void RobotDiagram::paintHighlights(QPainter &p) const
+{
+    const QColor ring = palette().color(QPalette::Highlight);
+    for (const QString &part : m_highlighted) {
+        const auto centre = scenePartCentre(part);
+        if (!centre)
+            continue;
+        // Round the lamp, clear of the cliff signal's number below it.
+        const qreal radius = part.startsWith(QLatin1String("wheel")) ? 78
+                             : part.startsWith(QLatin1String("cliff")) ? kCliffLampRadius + 10
+                                                                         : 46;
+        p.setBrush(Qt::NoBrush);
+        p.setPen(QPen(inkColour(), 16));
+        p.drawEllipse(*centre, radius, radius);
+        p.setPen(QPen(ring, 10));
+        p.drawEllipse(*centre, radius, radius);
+    }
 }
 
 void RobotDiagram::paintBody(QPainter &p) const

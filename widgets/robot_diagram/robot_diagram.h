@@ -9,6 +9,8 @@
 #include <QTransform>
 #include <QWidget>
 
+#include <optional>
+
 #include <utility>
 
 class QPainter;
@@ -31,6 +33,15 @@ public:
     // Stale data is drawn in grey under a STALE banner.
     void setStale(bool stale);
     bool isStale() const { return m_stale; }
+    // Rings drawn round these parts, to point a class at them: "bump_left",
+    // "bump_right", "wheel_left", "wheel_right", "caster", "cliff_left",
+    // "cliff_front_left", "cliff_front_right", "cliff_right", "wall",
+    // "light_bump_left" .. "light_bump_right", "ir_receiver". Unknown names
+    // and parts this profile lacks are left out.
+    void setHighlightedParts(const QStringList &parts);
+    QStringList highlightedParts() const { return m_highlighted; }
+    // Where a highlighted part's ring is drawn, in widget coordinates.
+    std::optional<QPointF> partCentre(const QString &part) const;
 
     QSize minimumSizeHint() const override;
     QSize sizeHint() const override;
@@ -93,10 +104,13 @@ private:
     void paintWall(QPainter &p) const;
     void paintChips(QPainter &p) const;
     void paintStale(QPainter &p) const;
+    void paintHighlights(QPainter &p) const;
+    std::optional<QPointF> scenePartCentre(const QString &part) const;
 
     bool isCreate1() const { return m_profile->id == oi::ProfileId::Create1; }
 
     const oi::RobotProfile *m_profile = &oi::profile(oi::ProfileId::Create2);
     oi::SensorSnapshot m_snapshot;
     bool m_stale = false;
+    QStringList m_highlighted;
 };

@@ -1,0 +1,308 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "lesson_panel.h"
+
+#include "lesson_file.h"
+#include "lesson_step_view.h"
+#include "robot_session.h"
+#include "shipped_lessons.h"
+
+#include <QComboBox>
+#include <QEvent>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QListWidget>
+#include <QPushButton>
+#include <QScrollArea>
+#include <QSignalBlocker>
+#include <QVBoxLayout>
+
+namespace {
+
+// A step in the list: its number and the first sentence of its text.
+QString stepCaption(int index, const QString &text)
+{
+    QString first = text.section(QLatin1Char('.'), 0, 0);
+    if (first.size() > 60)
+        first = first.left(57) + QStringLiteral("…");
+    return QStringLiteral("%1. %2").arg(index + 1).arg(first);
+}
+
+} // namespace
+
+LessonPanel::LessonPanel(QWidget *parent) : QWidget(parent)
+{
+    m_chooser = new QComboBox(this);
+    m_chooser->setObjectName("lessonChooser");
+    m_chooser->setSizeAdjustPolicy(QComboBox::AdjustToContents);
+    m_openButton = new QPushButton(this);
+    m_backButton = new QPushButton(this);
+    m_skipButton = new QPushButton(this);
+    m_restartButton = new QPushButton(this);
+    m_error = new QLabel(this);
+    m_error->setObjectName("lessonError");
+    m_error->setWordWrap(true);
+    m_error->setTextFormat(Qt::PlainText);
+    m_error->setStyleSheet(QStringLiteral("QLabel { color: #b71c1c; font-weight: bold; }"));
+    m_error->hide();
+    m_notice = new QLabel(this);
+    m_notice->setWordWrap(true);
+    m_notice->hide();
+    m_summary = new QLabel(this);
+    m_summary->setWordWrap(true);
+    m_steps = new QListWidget(this);
+    m_steps->setObjectName("lessonSteps");
+    m_steps->setWordWrap(true);
+    m_steps->setMinimumHeight(fontMetrics().height() * 4);
+    m_view = new LessonStepView(this);
+    // In a short dock the step scrolls rather than making the window taller.
+    m_viewScroll = new QScrollArea(this);
+    m_viewScroll->setWidget(m_view);
+    m_viewScroll->setWidgetResizable(true);
+    m_viewScroll->setFrameShape(QFrame::NoFrame);
+    m_view->setMinimumHeight(m_view->minimumSizeHint().height());
+
+    auto *bar = new QHBoxLayout;
+    bar->addWidget(m_chooser, 1);
+    bar->addWidget(m_openButton);
+    bar->addSpacing(12);
+    bar->addWidget(m_backButton);
+    bar->addWidget(m_skipButton);
+    bar->addWidget(m_restartButton);
+    auto *side = new QWidget(this);
+    auto *sideLayout = new QVBoxLayout(side);
+    sideLayout->setContentsMargins(0, 0, 0, 0);
+    sideLayout->addWidget(m_summary);
+    sideLayout->addWidget(m_steps, 1);
+    // The steps in a column as wide as about 30 characters; the step's view takes the rest.
+    side->setMaximumWidth(fontMetrics().averageCharWidth() * 34);
+    auto *body = new QHBoxLayout;
+    body->addWidget(side, 1);
+    body->addWidget(m_viewScroll, 4);
+    auto *layout = new QVBoxLayout(this);
+    layout->addLayout(bar);
+    layout->addWidget(m_error);
+    layout->addWidget(m_notice);
+    layout->addLayout(body, 1);
+
+    connect(m_chooser, &QComboBox::activated, this, &LessonPanel::onChosen);
+    connect(m_openButton, &QPushButton::clicked, this, &LessonPanel::openLessonFile);
+    connect(m_backButton, &QPushButton::clicked, this, &LessonPanel::previousStep);
+    connect(m_skipButton, &QPushButton::clicked, this, &LessonPanel::nextStep);
+    connect(m_restartButton, &QPushButton::clicked, this, &LessonPanel::restart);
+    connect(m_steps, &QListWidget::itemActivated, this,
+            [this](QListWidgetItem *item) { m_runner.goToStep(m_steps->row(item)); });
+    connect(&m_runner, &LessonRunner::stepChanged, this, [this] {
+        showSteps();
+        showCurrentStep();
+        emit lessonChanged();
+    });
+
+    retranslateUi();
+    closeLesson();
+}
+
+void LessonPanel::setRobot(RobotSession *robot, TruePose truePose)
+{
+    const bool another = robot != m_robot;
+    disconnect(m_frames);
+    disconnect(m_gone);
+    m_robot = robot;
+    m_truePose = std::move(truePose);
+    if (robot) {
+        m_frames = connect(robot, &RobotSession::frameReceived, this, &LessonPanel::onFrame);
+        m_gone = connect(robot, &QObject::destroyed, this, [this] { setRobot(nullptr); });
+        m_view->setProfile(robot->robotProfile());
+        m_view->setHistory(&robot->history());
+    } else {
+        m_view->setHistory(nullptr);
+    }
+    if (another && m_runner.isRunning()) // the step starts again on this robot
+        m_runner.goToStep(m_runner.currentStep());
+    updateNotice();
+}
+
+void LessonPanel::onFrame(double seconds, const oi::SensorSnapshot &frame)
+{
+    if (!m_runner.isRunning() || !m_robot)
+        return;
+    if (&frame.robotProfile() != &m_view->profile()) { // the robot said what it is
+        m_view->setProfile(frame.robotProfile());
+        updateNotice();
+    }
+    LessonFrame f;
+    f.seconds = seconds;
+    f.snapshot = frame;
+    f.odometry = m_robot->odometry().pose();
+    if (m_truePose)
+        f.truePose = m_truePose();
+    m_runner.update(f);
+}
+
+bool LessonPanel::openLesson(const QString &path, QString *error)
+{
+    QString why;
+    const std::optional<Lesson> lesson = loadLessonFile(path, &why);
+    if (!lesson) {
+        showError(tr("This lesson cannot be opened: %1").arg(why));
+        fillChooser(); // back to the lesson that runs
+        if (error)
+            *error = why;
+        return false;
+    }
+    m_path = path;
+    if (!path.startsWith(QLatin1Char(':')) && !m_openedFiles.contains(path))
+        m_openedFiles << path;
+    showError(QString());
+    const oi::RobotProfile &profile = m_robot ? m_robot->robotProfile() : oi::profile(oi::ProfileId::Create2);
+    m_view->setProfile(profile);
+    m_runner.start(*lesson, profile);
+    fillChooser();
+    updateNotice();
+    return true;
+}
+
+void LessonPanel::openLessonFile()
+{
+    const QString path = QFileDialog::getOpenFileName(this, tr("Open lesson"), QString(),
+                                                      tr("Lessons (*.json);;All files (*)"));
+    if (!path.isEmpty())
+        openLesson(path);
+}
+
+void LessonPanel::restart() { m_runner.goToStep(0); }
+void LessonPanel::nextStep() { m_runner.goToStep(m_runner.currentStep() + 1); }
+void LessonPanel::previousStep() { m_runner.goToStep(m_runner.currentStep() - 1); }
+
+void LessonPanel::closeLesson()
+{
+    m_runner.stop();
+    m_path.clear();
+    fillChooser();
+    showSteps();
+    showCurrentStep();
+    updateNotice();
+    emit lessonChanged();
+}
+
+void LessonPanel::onChosen(int index)
+{
+    const QString path = m_chooser->itemData(index).toString();
+    if (path.isEmpty())
+        closeLesson();
+    else if (path != m_path)
+        openLesson(path);
+}
+
+void LessonPanel::fillChooser()
+{
+    const QSignalBlocker block(m_chooser);
+    m_chooser->clear();
+    m_chooser->addItem(tr("Choose a lesson…"), QString());
+    QStringList paths = lesson::shippedLessonPaths();
+    paths += m_openedFiles;
+    for (const QString &path : std::as_const(paths)) {
+        const std::optional<Lesson> l = loadLessonFile(path);
+        if (!l)
+            continue;
+        const QString title = lesson::translated(l->title);
+        m_chooser->addItem(path.startsWith(QLatin1Char(':'))
+                               ? title
+                               : QStringLiteral("%1 (%2)").arg(title, QFileInfo(path).fileName()),
+                           path);
+    }
+    m_chooser->setCurrentIndex(std::max(0, m_chooser->findData(m_path)));
+}
+
+void LessonPanel::showSteps()
+{
+    const bool running = m_runner.isRunning();
+    const Lesson &lesson = m_runner.lesson();
+    m_steps->clear();
+    m_steps->setVisible(running);
+    m_summary->setText(running ? lesson::translated(lesson.summary)
+                               : tr("Choose a lesson above, or open a lesson file. Each step says what to do "
+                                    "and turns green when the robot shows it was done."));
+    for (int i = 0; running && i < lesson.steps.size(); ++i) {
+        auto *item = new QListWidgetItem(stepCaption(i, lesson::translated(lesson.steps[i].text)), m_steps);
+        QFont f = item->font();
+        if (m_runner.isStepDone(i)) {
+            item->setText(QStringLiteral("✔ ") + item->text());
+            item->setBackground(QColor(0x1b, 0x5e, 0x20));
+            item->setForeground(Qt::white);
+        } else if (i == m_runner.currentStep()) {
+            item->setText(QStringLiteral("▶ ") + item->text());
+            f.setBold(true);
+        }
+        item->setFont(f);
+    }
+    if (running && m_runner.currentStep() < m_steps->count())
+        m_steps->setCurrentRow(m_runner.currentStep());
+    m_backButton->setEnabled(running && m_runner.currentStep() > 0);
+    m_skipButton->setEnabled(running && !m_runner.isFinished());
+    m_restartButton->setEnabled(running);
+}
+
+void LessonPanel::showCurrentStep()
+{
+    const Lesson &lesson = m_runner.lesson();
+    const int step = m_runner.currentStep();
+    m_viewScroll->setVisible(m_runner.isRunning());
+    if (m_runner.isRunning() && step < lesson.steps.size())
+        m_view->setStep(&lesson.steps[step], step, int(lesson.steps.size()));
+    else
+        m_view->setStep(nullptr, 0, 0);
+    updateNotice();
+}
+
+void LessonPanel::refresh()
+{
+    if (!isVisible() || !m_runner.isRunning())
+        return;
+    const bool live = m_robot && m_robot->isLive();
+    m_view->refresh(m_robot ? m_robot->latest() : oi::SensorSnapshot(), !live, &m_runner);
+}
+
+void LessonPanel::showError(const QString &message)
+{
+    m_error->setText(message);
+    m_error->setVisible(!message.isEmpty());
+}
+
+QString LessonPanel::errorText() const { return m_error->isHidden() ? QString() : m_error->text(); }
+QString LessonPanel::noticeText() const { return m_notice->isHidden() ? QString() : m_notice->text(); }
+
+void LessonPanel::updateNotice()
+{
+    QString notice;
+    if (m_runner.isFinished())
+        notice = tr("Lesson complete: every step is done. Well done!");
+    else if (m_runner.isRunning() && m_robot && !m_runner.lesson().suits(m_robot->robotProfile()))
+        notice = tr("This lesson needs a robot this one is not (%1): some goals cannot be met.")
+                     .arg(m_runner.lesson().profiles.join(QStringLiteral(", ")));
+    else if (m_runner.isRunning() && !m_robot)
+        notice = tr("No robot is selected: the goals are checked on the selected robot's data.");
+    m_notice->setText(notice);
+    m_notice->setVisible(!notice.isEmpty());
+}
+
+void LessonPanel::changeEvent(QEvent *event)
+{
+    if (event->type() == QEvent::LanguageChange)
+        retranslateUi();
+    QWidget::changeEvent(event);
+}
+
+void LessonPanel::retranslateUi()
+{
+    m_openButton->setText(tr("Open lesson file…"));
+    m_backButton->setText(tr("◀ Back"));
+    m_skipButton->setText(tr("Skip ▶"));
+    m_restartButton->setText(tr("Restart"));
+    m_chooser->setAccessibleName(tr("Lesson"));
+    m_steps->setAccessibleName(tr("Lesson steps"));
+    fillChooser();
+    showSteps();
+    updateNotice();
+}

@@ -1,0 +1,78 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "lesson.h"
+#include "sensor_snapshot.h"
+
+#include <QHash>
+#include <QWidget>
+
+class LessonRunner;
+class QHBoxLayout;
+class QLabel;
+class QProgressBar;
+class RobotDiagram;
+class SensorHistory;
+class SensorPlots;
+class ValueGauge;
+
+// One lesson step as the class sees it: "Step 2 of 5", the step's text in
+// large type, its goal and how far it has got, the robot diagram with the
+// parts that matter ringed, a plot of the step's channels and a readout of
+// its values. The lesson panel shows it at desk size, the projector view
+// larger; without a step it shows the robot alone (the diagram, and the
+// readouts it is given).
+class LessonStepView : public QWidget {
+    Q_OBJECT
+public:
+    explicit LessonStepView(QWidget *parent = nullptr);
+
+    void setProfile(const oi::RobotProfile &profile);
+    const oi::RobotProfile &profile() const { return *m_profile; }
+    // Not owned; the session keeps it alive while it is set.
+    void setHistory(const SensorHistory *history);
+    // Shows step `index` of `count`; nullptr shows the robot alone with `readouts`.
+    void setStep(const LessonStep *step, int index, int count, const QStringList &readouts = {});
+    // Text size, 1 at a desk; the projector view makes it larger.
+    void setScale(qreal scale);
+    // From the display timer: the robot's latest values, and the runner for
+    // the goal's progress and the pose readouts (nullptr: none).
+    void refresh(const oi::SensorSnapshot &latest, bool stale, const LessonRunner *runner);
+
+    // What is shown, for tests and the projector.
+    QString headingText() const;
+    QString stepText() const;
+    QString goalText() const;
+    int progressPercent() const;
+    QStringList readoutKeys() const { return m_readoutKeys; }
+    QString readoutText(const QString &key) const;
+    RobotDiagram *diagram() const { return m_diagram; }
+    SensorPlots *plots() const { return m_plots; }
+
+    // A goal in words: "Bump Left on", "Cliff Front Left Signal below 500 for 0.5 s".
+    static QString describeGoal(const LessonGoal &goal, const oi::RobotProfile &profile);
+
+protected:
+    void changeEvent(QEvent *event) override;
+
+private:
+    void retranslateUi();
+    void applyScale();
+    void rebuildReadouts();
+    void showStep();
+
+    const oi::RobotProfile *m_profile;
+    const LessonStep *m_step = nullptr;
+    int m_index = 0;
+    int m_count = 0;
+    qreal m_scale = 1;
+    QStringList m_readoutKeys;
+    QLabel *m_heading;
+    QLabel *m_text;
+    QLabel *m_goal;
+    QProgressBar *m_progress;
+    RobotDiagram *m_diagram;
+    SensorPlots *m_plots;
+    QHBoxLayout *m_readoutRow;
+    QHash<QString, ValueGauge *> m_readouts;
+};

@@ -1,0 +1,154 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "projector_view.h"
+
+#include "lesson_runner.h"
+#include "lesson_step_view.h"
+#include "oi_text.h"
+#include "shipped_lessons.h"
+
+#include <QEvent>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QVBoxLayout>
+
+namespace {
+
+// Type at the back of a classroom: about this many times the desktop's size.
+constexpr qreal kScale = 2.2;
+
+} // namespace
+
+QStringList ProjectorView::robotReadouts()
+{
+    return {"voltage", "current", "requested_velocity", "wall_signal"};
+}
+
+ProjectorView::ProjectorView(QWidget *parent) : QWidget(parent)
+{
+    setObjectName("projectorView");
+    setAutoFillBackground(true);
+    setFocusPolicy(Qt::StrongFocus);
+    m_header = new QLabel(this);
+    m_header->setObjectName("projectorHeader");
+    m_hint = new QLabel(this);
+    m_hint->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
+    m_view = new LessonStepView(this);
+    m_view->setScale(kScale);
+
+    auto *top = new QHBoxLayout;
+    top->addWidget(m_header, 1);
+    top->addWidget(m_hint);
+    auto *layout = new QVBoxLayout(this);
+    layout->setContentsMargins(24, 16, 24, 16);
+    layout->addLayout(top);
+    layout->addWidget(m_view, 1);
+
+    applyPalette();
+    retranslateUi();
+    hide();
+    parent->installEventFilter(this);
+}
+
+void ProjectorView::applyPalette()
+{
+    // High contrast: white on black, yellow to point at things.
+    QPalette p = palette();
+    for (auto group : {QPalette::Active, QPalette::Inactive}) {
+        p.setColor(group, QPalette::Window, Qt::black);
+        p.setColor(group, QPalette::WindowText, Qt::white);
+        p.setColor(group, QPalette::Base, QColor(0x10, 0x10, 0x10));
+        p.setColor(group, QPalette::AlternateBase, QColor(0x20, 0x20, 0x20));
+        p.setColor(group, QPalette::Text, Qt::white);
+        p.setColor(group, QPalette::Button, QColor(0x30, 0x30, 0x30));
+        p.setColor(group, QPalette::ButtonText, Qt::white);
+        p.setColor(group, QPalette::Highlight, QColor(0xff, 0xd6, 0x00));
+        p.setColor(group, QPalette::HighlightedText, Qt::black);
+        p.setColor(group, QPalette::Mid, QColor(0x80, 0x80, 0x80));
+    }
+    setPalette(p);
+    QFont header = font();
+    header.setPointSizeF(font().pointSizeF() * 1.6 * kScale);
+    header.setBold(true);
+    m_header->setFont(header);
+    QFont hint = font();
+    hint.setPointSizeF(font().pointSizeF() * 1.5);
+    m_hint->setFont(hint);
+}
+
+void ProjectorView::setRobot(const QString &name, const oi::RobotProfile &profile, const SensorHistory *history)
+{
+    m_robotName = name;
+    m_view->setProfile(profile);
+    m_view->setHistory(history);
+    showHeader();
+}
+
+void ProjectorView::setLesson(const LessonRunner *runner)
+{
+    m_runner = runner;
+    lessonChanged();
+}
+
+void ProjectorView::lessonChanged()
+{
+    const bool stepShown = m_runner && m_runner->isRunning() && !m_runner->isFinished();
+    if (stepShown) {
+        const Lesson &lesson = m_runner->lesson();
+        m_view->setStep(&lesson.steps[m_runner->currentStep()], m_runner->currentStep(), int(lesson.steps.size()));
+    } else {
+        m_view->setStep(nullptr, 0, 0, robotReadouts());
+    }
+    showHeader();
+}
+
+void ProjectorView::refresh(const oi::SensorSnapshot &latest, bool live)
+{
+    m_latest = latest;
+    m_live = live;
+    if (!isVisible())
+        return;
+    m_view->refresh(latest, !live, m_runner);
+    showHeader();
+}
+
+void ProjectorView::showHeader()
+{
+    QStringList parts;
+    if (m_runner && m_runner->isRunning())
+        parts << lesson::translated(m_runner->lesson().title);
+    if (!m_robotName.isEmpty())
+        parts << m_robotName;
+    if (m_latest.has(35))
+        parts << oitext::modeName(m_latest.oiMode());
+    if (const auto battery = m_latest.batteryPercent())
+        parts << tr("battery %1 %").arg(qRound(*battery));
+    if (!m_live)
+        parts << tr("NO LIVE DATA");
+    if (m_runner && m_runner->isFinished())
+        parts << tr("lesson complete");
+    m_header->setText(parts.join(QStringLiteral(" · ")));
+}
+
+QString ProjectorView::headerText() const { return m_header->text(); }
+
+bool ProjectorView::eventFilter(QObject *watched, QEvent *event)
+{
+    // Cover the whole window, whatever its size.
+    if (watched == parentWidget() && (event->type() == QEvent::Resize || event->type() == QEvent::Show))
+        setGeometry(parentWidget()->rect());
+    return QWidget::eventFilter(watched, event);
+}
+
+void ProjectorView::changeEvent(QEvent *event)
+{
+    if (event->type() == QEvent::LanguageChange)
+        retranslateUi();
+    QWidget::changeEvent(event);
+}
+
+void ProjectorView::retranslateUi()
+{
+    m_hint->setText(tr("F11: leave the projector view · Esc: stop the robot and leave"));
+    setAccessibleName(tr("Projector view"));
+    showHeader();
+}

@@ -1,0 +1,51 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "sensor_snapshot.h"
+
+#include <QWidget>
+
+class LessonRunner;
+class LessonStepView;
+class QLabel;
+class SensorHistory;
+
+// The view for the front of a classroom: white on black, large type, the
+// selected robot and nothing else, or the lesson's current step and its
+// views. It covers its parent window whole (the window goes full screen
+// around it), so the window's keys, Esc and Space included, keep working.
+class ProjectorView : public QWidget {
+    Q_OBJECT
+public:
+    // The readouts shown without a lesson.
+    static QStringList robotReadouts();
+
+    explicit ProjectorView(QWidget *parent);
+
+    void setRobot(const QString &name, const oi::RobotProfile &profile, const SensorHistory *history);
+    // The lesson to show (nullptr: the robot alone); call lessonChanged() when its step moves.
+    void setLesson(const LessonRunner *runner);
+    void lessonChanged();
+    // From the display timer.
+    void refresh(const oi::SensorSnapshot &latest, bool live);
+
+    QString headerText() const;
+    LessonStepView *stepView() const { return m_view; }
+
+protected:
+    bool eventFilter(QObject *watched, QEvent *event) override;
+    void changeEvent(QEvent *event) override;
+
+private:
+    void retranslateUi();
+    void applyPalette();
+    void showHeader();
+
+    QString m_robotName;
+    const LessonRunner *m_runner = nullptr;
+    oi::SensorSnapshot m_latest;
+    bool m_live = false;
+    QLabel *m_header;
+    QLabel *m_hint;
+    LessonStepView *m_view;
+};

@@ -99,9 +99,23 @@ OdometryMap::OdometryMap(QWidget *parent) : QWidget(parent)
         if (m_dirty || (m_odometry && m_odometry->revision() != m_shownRevision))
             refresh();
     });
-    m_displayTimer->start();
 
     retranslateUi();
+}
+
+// The display timer runs only while the map is on screen: a map in a hidden
+// or tabbed-away dock costs no wake-ups, and catches up when shown.
+void OdometryMap::showEvent(QShowEvent *event)
+{
+    QWidget::showEvent(event);
+    m_displayTimer->start();
+    refresh();
+}
+
+void OdometryMap::hideEvent(QHideEvent *event)
+{
+    QWidget::hideEvent(event);
+    m_displayTimer->stop();
 }
 
 void OdometryMap::retranslateUi()

@@ -16,6 +16,7 @@
 #include "mode_panel.h"
 #include "motors_panel.h"
 #include "odometry_map.h"
+#include "on_screen.h"
 #include "oi_text.h"
 #include "recording_actions.h"
 #include "replay_bar.h"
@@ -722,10 +723,10 @@ void MainWindow::refreshDisplay()
     ++m_displayTicks;
     // Scrolling plots are the dearest thing on screen; 15 Hz still moves
     // them smoothly and halves their cost.
-    if (m_plots->isVisible() && m_displayTicks % 2 == 0)
+    if (isOnScreen(m_plots) && m_displayTicks % 2 == 0)
         m_plots->refresh();
     // Where the virtual robots really are, so the map shows the odometry drift.
-    if (m_map->isVisible() && m_displayTicks % 3 == 0)
+    if (isOnScreen(m_map) && m_displayTicks % 3 == 0)
         showRoom();
     if (m_displayTicks % kCardTicks == 0)
         refreshRobotCards();

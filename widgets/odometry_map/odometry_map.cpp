@@ -2,6 +2,7 @@
 #include "odometry_map.h"
 
 #include "display_palette.h"
+#include "on_screen.h"
 
 #include <QDoubleSpinBox>
 #include <QEvent>
@@ -96,6 +97,8 @@ OdometryMap::OdometryMap(QWidget *parent) : QWidget(parent)
     m_displayTimer = new QTimer(this);
     m_displayTimer->setInterval(33);
     connect(m_displayTimer, &QTimer::timeout, this, [this] {
+        if (!isOnScreen(this))
+            return; // tabbed away: caught up when its tab comes up
         if (m_dirty || (m_odometry && m_odometry->revision() != m_shownRevision))
             refresh();
     });

@@ -165,11 +165,10 @@ DashboardCommandLine DashboardCommandLine::parse(const QStringList &arguments)
         if (!line.recordPath.isEmpty())
             return fail(tr("--record records a robot; a replay is already a recording"));
         QString why;
-        const std::optional<oilink::Recording> recording = oilink::Recording::load(replayPath, &why);
-        if (!recording)
+        const std::optional<oilink::Recording::StreamInfo> stream = oilink::Recording::readStream(replayPath, &why);
+        if (!stream)
             return fail(tr("cannot replay %1").arg(why));
-        line.connection = oilink::LinkSettings::replayOf(replayPath, recording->robotProfile().id,
-                                                         recording->stream().baud, recording->stream().packets);
+        line.connection = oilink::LinkSettings::replayOf(replayPath, stream->profile->id, stream->baud, stream->packets);
         break;
     }
     }

@@ -6,6 +6,7 @@
 #include <QCoreApplication>
 #include <QDockWidget>
 #include <QMainWindow>
+#include <QShowEvent>
 
 DockLayout::DockLayout(QMainWindow *window) : QObject(window), m_window(window) {}
 
@@ -16,6 +17,15 @@ QDockWidget *DockLayout::addDock(const QString &objectName, const char *title, Q
     dock->setObjectName(objectName);
     dock->setWidget(widget);
     m_window->addDockWidget(area, dock);
+    // A dock whose tab comes up was "visible" all along to Qt, so its view
+    // gets no show event of its own; it gets one here, to catch up with
+    // what it left undrawn while tabbed away (see isOnScreen()).
+    connect(dock, &QDockWidget::visibilityChanged, widget, [widget](bool visible) {
+        if (visible && widget->isVisible()) {
+            QShowEvent shown;
+            QCoreApplication::sendEvent(widget, &shown);
+        }
+    });
     m_docks << dock;
     m_titles << Dock{dock, title, actsOnRobot};
     return dock;

@@ -21,6 +21,7 @@
 #include "motors_panel.h"
 #include "network_transport.h"
 #include "odometry_map.h"
+#include "on_screen.h"
 #include "oi_text.h"
 #include "projector_mode.h"
 #include "projector_view.h"
@@ -803,10 +804,10 @@ void MainWindow::refreshDisplay()
     ++m_displayTicks;
     // Scrolling plots are the dearest thing on screen; 15 Hz still moves
     // them smoothly and halves their cost.
-    if (m_plots->isVisible() && m_displayTicks % 2 == 0)
+    if (isOnScreen(m_plots) && m_displayTicks % 2 == 0)
         m_plots->refresh();
     // Where the virtual robots really are, so the map shows the odometry drift.
-    if (m_map->isVisible() && m_displayTicks % 3 == 0)
+    if (isOnScreen(m_map) && m_displayTicks % 3 == 0)
         showRoom();
     if (m_displayTicks % kCardTicks == 0)
         refreshRobotCards();

@@ -51,15 +51,15 @@ void RecordingActions::showSelectedRobot()
 bool RecordingActions::openRecording(const QString &path, QString *error)
 {
     QString why;
-    const std::optional<oilink::Recording> recording = oilink::Recording::load(path, &why);
-    if (!recording) {
+    // The stream's description only: the replay reads the whole file once, on the link's thread.
+    const std::optional<oilink::Recording::StreamInfo> stream = oilink::Recording::readStream(path, &why);
+    if (!stream) {
         if (error)
             *error = why;
         return false;
     }
     RobotSession *robot = m_fleet.addRobot(
-        oilink::LinkSettings::replayOf(path, recording->robotProfile().id, recording->stream().baud,
-                                       recording->stream().packets),
+        oilink::LinkSettings::replayOf(path, stream->profile->id, stream->baud, stream->packets),
         QFileInfo(path).completeBaseName());
     m_fleet.select(robot);
     return true;

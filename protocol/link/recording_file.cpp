@@ -163,7 +163,35 @@ std::optional<Recording> Recording::load(const QString &path, QString *error)
     return fromBytes(file.readAll(), path, error);
 }
 
+std::optional<Recording::StreamInfo> Recording::readStream(const QString &path, QString *error)
+{
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly)) {
+        if (error)
+            *error = QStringLiteral("%1: %2").arg(path, file.errorString());
+        return std::nullopt;
+    }
+    // The description is the first record or nearly: a small start of the
+    // file holds it; the whole file only when it does not.
+    constexpr qint64 kStart = 64 * 1024;
+    QByteArray data = file.read(kStart);
+    std::optional<Recording> r = parse(data, path, error, true);
+    if (!r && !file.atEnd()) {
+        data += file.readAll();
+        r = parse(data, path, error, true);
+    }
+    if (!r)
+        return std::nullopt;
+    return r->m_stream;
+}
+
 std::optional<Recording> Recording::fromBytes(const QByteArray &data, const QString &path, QString *error)
+{
+    return parse(data, path, error, false);
+}
+
+std::optional<Recording> Recording::parse(const QByteArray &data, const QString &path, QString *error,
+                                          bool streamOnly)
 {
     auto refuse = [&](const QString &why) -> std::optional<Recording> {
         if (error)
@@ -215,10 +243,12 @@ std::optional<Recording> Recording::fromBytes(const QByteArray &data, const QStr
             damaged(QCoreApplication::translate("Recording", "time runs backwards"));
             break;
         }
-        const QByteArray payload(head + kRecordHeadSize, length);
+        const char *payload = head + kRecordHeadSize;
         switch (kind) {
         case recording::RecordKind::Received:
-            r.m_received += payload;
+            if (r.m_received.isEmpty())
+                r.m_received.reserve(data.size() - at); // the bytes cannot outgrow the file
+            r.m_received.append(payload, length);
             r.m_chunks.push_back({timeUs, r.m_received.size()});
             break;
         case recording::RecordKind::Sent:
@@ -227,7 +257,7 @@ std::optional<Recording> Recording::fromBytes(const QByteArray &data, const QStr
         case recording::RecordKind::StreamStarted: {
             if (r.m_stream.profile)
                 break; // the first stream decides how the whole file is read
-            const QJsonObject info = QJsonDocument::fromJson(payload).object();
+            const QJsonObject info = QJsonDocument::fromJson(QByteArray(payload, length)).object();
             const std::string key = info.value(QStringLiteral("profile")).toString().toStdString();
             r.m_stream.profile = oi::profileByKey(key);
             r.m_stream.baud = info.value(QStringLiteral("baud")).toInt();
@@ -248,7 +278,7 @@ std::optional<Recording> Recording::fromBytes(const QByteArray &data, const QStr
             damaged(QCoreApplication::translate("Recording", "unknown record type 0x%1").arg(static_cast<quint8>(head[0]), 2, 16, QLatin1Char('0')));
             break;
         }
-        if (r.m_damage)
+        if (r.m_damage || (streamOnly && r.m_stream.profile))
             break;
         lastTimeUs = timeUs;
         at += kRecordHeadSize + length + kCrcSize;
@@ -260,27 +290,27 @@ std::optional<Recording> Recording::fromBytes(const QByteArray &data, const QStr
             return refuse(QCoreApplication::translate("Recording", "damaged before the stream started: %1").arg(r.m_damage->describe()));
         return refuse(QCoreApplication::translate("Recording", "the recording holds no sensor stream"));
     }
-    r.indexFrames();
+    if (!streamOnly)
+        r.indexFrames();
     return r;
 }
 
-// Feeds the parser one byte at a time so that each frame's end is known
-// exactly; seeking and stepping land on these ends.
+// Feeds the parser chunk by chunk; the parser says where in the bytes each
+// frame ends, exactly, and seeking and stepping land on these ends.
 void Recording::indexFrames()
 {
     oi::StreamParser parser(*m_stream.profile);
     const std::vector<std::uint8_t> ids(m_stream.packets.begin(), m_stream.packets.end());
     parser.setExpectedStream(ids);
-    qsizetype offset = 0;
     std::size_t chunk = 0;
     parser.setSnapshotHandler([&](const oi::SensorSnapshot &, oi::FrameKind kind) {
         if (kind == oi::FrameKind::Stream)
-            m_frames.push_back({m_chunks[chunk].timeUs, offset + 1});
+            m_frames.push_back({m_chunks[chunk].timeUs, static_cast<qsizetype>(parser.frameEndOffset())});
     });
-    for (; offset < m_received.size(); ++offset) {
-        while (m_chunks[chunk].end <= offset)
-            ++chunk;
-        parser.feed(asSpan(m_received, offset, offset + 1));
+    qsizetype from = 0;
+    for (; chunk < m_chunks.size(); ++chunk) {
+        parser.feed(asSpan(m_received, from, m_chunks[chunk].end));
+        from = m_chunks[chunk].end;
     }
 }
 

@@ -102,6 +102,10 @@ public:
     static std::optional<Recording> load(const QString &path, QString *error);
     // The same from the file's bytes; `path` only names the file in `error`.
     static std::optional<Recording> fromBytes(const QByteArray &data, const QString &path, QString *error);
+    // What the stream is, read from the file's start alone (a replay is
+    // set up with it; the replay then loads the whole file once). The same
+    // errors as load() up to the stream's description.
+    static std::optional<StreamInfo> readStream(const QString &path, QString *error);
 
     const QJsonObject &header() const { return m_header; }
     const StreamInfo &stream() const { return m_stream; }
@@ -121,6 +125,9 @@ public:
     void writeCsv(QTextStream &out) const;
 
 private:
+    // Stops after the stream's description when `streamOnly`: no frames then.
+    static std::optional<Recording> parse(const QByteArray &data, const QString &path, QString *error,
+                                          bool streamOnly);
     void indexFrames();
 
     QJsonObject m_header;

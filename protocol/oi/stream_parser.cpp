@@ -68,6 +68,8 @@ std::size_t StreamParser::pendingReplies() const
 void StreamParser::reset()
 {
     m_length = 0;
+    m_fed = 0;
+    m_frameEnd = 0;
     m_replies.clear();
     m_counters = {};
 }
@@ -78,6 +80,7 @@ void StreamParser::feed(std::span<const std::uint8_t> bytes)
         const std::size_t take = std::min(bytes.size(), kCapacity - m_length);
         std::memcpy(m_buffer.data() + m_length, bytes.data(), take);
         m_length += take;
+        m_fed += take;
         bytes = bytes.subspan(take);
 
         const std::size_t used = process();
@@ -114,6 +117,7 @@ std::size_t StreamParser::process()
             PendingReply &reply = m_replies.front();
             if (avail < reply.bytes)
                 break;
+            m_frameEnd = m_fed - m_length + pos + reply.bytes;
             decodeReply(reply, {buf + pos, reply.bytes});
             ++m_counters.repliesGood;
             pos += reply.bytes;
@@ -163,6 +167,7 @@ std::size_t StreamParser::process()
             continue;
         }
         ++m_counters.framesGood;
+        m_frameEnd = m_fed - m_length + pos + frameSize;
         if (m_handler)
             m_handler(m_scratch, FrameKind::Stream);
         pos += frameSize;

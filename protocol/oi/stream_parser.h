@@ -71,6 +71,12 @@ public:
     // left is discarded; an unfinished reply stays pending.
     void finish();
 
+    // While a handler runs: how many bytes fed (since construction or
+    // reset()) end with the frame or reply it is given, so that a reader of
+    // a long run of bytes knows where each frame ends without feeding them
+    // one at a time.
+    std::uint64_t frameEndOffset() const { return m_frameEnd; }
+
     const ParserCounters &counters() const { return m_counters; }
     // Bytes held while waiting for the rest of a frame or reply.
     std::size_t pendingBytes() const { return m_length; }
@@ -100,6 +106,8 @@ private:
     ParserCounters m_counters;
     SensorSnapshot m_scratch;
     std::size_t m_length = 0;
+    std::uint64_t m_fed = 0;      // bytes fed; the buffer holds the last m_length of them
+    std::uint64_t m_frameEnd = 0; // see frameEndOffset()
     std::array<std::uint8_t, kCapacity> m_buffer{};
 };
 

@@ -11,6 +11,9 @@
 #include "recording_transport.h"
 #include "robot_diagram.h"
 #include "odometry_map.h"
+#include "on_screen.h"
+#include "byte_inspector.h"
+#include "sensor_plots.h"
 #include "pseudo_translation.h"
 #include "recording_file.h"
 #include "replay_bar.h"
@@ -29,6 +32,7 @@
 #include <QSet>
 #include <QTemporaryDir>
 #include <QMutex>
+#include <QPlainTextEdit>
 #include <QPushButton>
 #include <QSettings>
 #include <QStandardPaths>
@@ -82,6 +86,30 @@ private slots:
         QTRY_COMPARE_WITH_TIMEOUT(window.session().state(), oilink::LinkState::Closed, 10000);
         window.refreshDisplay();
         QVERIFY(window.statusText().contains("NO LIVE DATA"));
+    }
+
+    void tabbedAwayInspectorDrawsWhenItsTabComesUp()
+    {
+        MainWindow window;
+        window.resize(1400, 900);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        window.start(oilink::LinkSettings::virtualRobotOf(oi::ProfileId::Create2, oi::ProfileId::Create2));
+        QTRY_VERIFY_WITH_TIMEOUT(window.session().snapshotCount() > 10, 10000);
+        // Behind the plots' tab: visible to Qt, nothing of it on screen. It
+        // keeps what came and lays out none of it.
+        ByteInspector *inspector = window.byteInspector();
+        auto *log = inspector->findChild<QPlainTextEdit *>();
+        QVERIFY(inspector->isVisible());
+        QVERIFY(!isOnScreen(inspector));
+        QVERIFY(isOnScreen(window.sensorPlots()));
+        QVERIFY(!inspector->lastEntries(1).isEmpty());
+        QVERIFY(log->document()->isEmpty());
+        // Its tab comes up: it shows what it kept.
+        window.findChild<QDockWidget *>("inspectorDock")->raise();
+        QTRY_VERIFY(isOnScreen(inspector));
+        QTRY_VERIFY(log->document()->blockCount() > 10);
+        QVERIFY(!isOnScreen(window.sensorPlots()));
     }
 
     void modeButtonsSendExactBytes()

@@ -74,9 +74,10 @@ struct Rig {
                             && int(window.session().latest().oiMode()) == recording.mode; }, 10000);
         window.refreshDisplay();
         window.findChild<QDockWidget *>("driveDock")->raise();
-        QTest::qWaitFor([this] { return area()->isVisible(); }, 2000);
+        if (!QTest::qWaitFor([this] { return area()->isVisible(); }, 2000))
+            return false;
         pad()->padArea()->setFocus();
-        if (!area()->isVisible() || (!pad()->isPassive() && QApplication::focusWidget() != area()))
+        if (!pad()->isPassive() && QApplication::focusWidget() != area())
             return false;
         recording.take(); // Start and the stream request
         return streaming;

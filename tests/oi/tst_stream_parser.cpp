@@ -154,6 +154,44 @@ private slots:
         }
     }
 
+    void frameEndsInTheBytesFed()
+    {
+        // Junk, frames and a reply fed in any pieces: each handler call knows
+        // the offset just after its frame, counted over everything fed.
+        Bytes input = bytesFrom("7 7");
+        std::vector<std::uint64_t> expected;
+        for (int i = 0; i < 20; ++i) {
+            const Bytes f = frameFor(1000 + i, 1, 14000);
+            input.insert(input.end(), f.begin(), f.end());
+            expected.push_back(input.size());
+            input.push_back(std::uint8_t(i % 5)); // junk between frames
+        }
+        for (const std::vector<std::size_t> &splits : {std::vector<std::size_t>{}, {1}, {3, 7}, {64}}) {
+            StreamParser parser(profile(ProfileId::Create2));
+            parser.setExpectedStream(kStreamIds);
+            std::vector<std::uint64_t> ends;
+            parser.setSnapshotHandler([&](const SensorSnapshot &, FrameKind) { ends.push_back(parser.frameEndOffset()); });
+            std::size_t at = 0, i = 0;
+            while (at < input.size()) {
+                const std::size_t n = splits.empty() ? input.size() : std::min(splits[i++ % splits.size()], input.size() - at);
+                parser.feed(std::span(input).subspan(at, n));
+                at += n;
+            }
+            QCOMPARE(ends, expected);
+            // A reply's end too, after the frames.
+            const std::uint8_t query[] = {13};
+            QVERIFY(parser.expectReply(query));
+            parser.feed(bytesFrom("9 9"));
+            QCOMPARE(ends.back(), std::uint64_t(input.size() + 1));
+            // reset() counts from zero again.
+            parser.reset();
+            parser.setExpectedStream(kStreamIds);
+            const Bytes f = frameFor(5, 0, 14000);
+            parser.feed(f);
+            QCOMPARE(ends.back(), std::uint64_t(f.size()));
+        }
+    }
+
     void strayHeadersBeforeAndInsideFrames()
     {
         // A frame whose data holds 19s, then stray 19s before frames.

@@ -12,6 +12,7 @@
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QTimer>
 #include <QWheelEvent>
 
 #include <cmath>
@@ -367,6 +368,20 @@ private slots:
         QLabel *label = m_map->findChild<QLabel *>("poseLabel");
         QTRY_COMPARE(label->text(), m_map->poseText());
         QVERIFY(label->text().startsWith("x 89 mm"));
+    }
+
+    void hiddenMapRunsNoDisplayTimer()
+    {
+        auto *timer = m_map->findChild<QTimer *>();
+        QVERIFY(timer);
+        QVERIFY(timer->isActive());
+        m_map->hide();
+        QVERIFY(!timer->isActive());
+        // Shown again, it catches up at once with what happened meanwhile.
+        drive(*m_odometry, ProfileId::Create2, 10, 20, 20);
+        m_map->show();
+        QVERIFY(timer->isActive());
+        QCOMPARE(m_map->findChild<QLabel *>("poseLabel")->text(), m_map->poseText());
     }
 
     void translatesOnTheSpot()

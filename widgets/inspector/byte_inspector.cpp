@@ -2,6 +2,7 @@
 #include "byte_inspector.h"
 
 #include "display_palette.h"
+#include "on_screen.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -278,7 +279,7 @@ void ByteInspector::record(Entry entry)
 void ByteInspector::scheduleRender()
 {
     // A hidden log costs nothing to keep; it renders when shown.
-    if (isVisible() && !m_renderTimer->isActive())
+    if (isOnScreen(this) && !m_renderTimer->isActive())
         m_renderTimer->start();
 }
 

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "packet_table.h"
 
+#include "on_screen.h"
+
 #include <QEvent>
 #include <QFontMetrics>
 #include <QHeaderView>
@@ -77,7 +79,7 @@ void PacketTable::retranslateUi()
 void PacketTable::addSnapshot(double seconds, const oi::SensorSnapshot &snapshot)
 {
     // Hidden, the table keeps nothing: shown again, it starts afresh.
-    if (!isVisible())
+    if (!isOnScreen(this))
         return;
     m_model->addSnapshot(seconds, snapshot);
     if (!m_refreshTimer->isActive())

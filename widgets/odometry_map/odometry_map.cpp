@@ -2,6 +2,7 @@
 #include "odometry_map.h"
 
 #include "display_palette.h"
+#include "on_screen.h"
 
 #include <QDoubleSpinBox>
 #include <QEvent>
@@ -108,12 +109,28 @@ OdometryMap::OdometryMap(QWidget *parent) : QWidget(parent)
     m_displayTimer = new QTimer(this);
     m_displayTimer->setInterval(33);
     connect(m_displayTimer, &QTimer::timeout, this, [this] {
+        if (!isOnScreen(this))
+            return; // tabbed away: caught up when its tab comes up
         if (m_dirty || (m_odometry && m_odometry->revision() != m_shownRevision))
             refresh();
     });
-    m_displayTimer->start();
 
     retranslateUi();
+}
+
+// The display timer runs only while the map is on screen: a map in a hidden
+// or tabbed-away dock costs no wake-ups, and catches up when shown.
+void OdometryMap::showEvent(QShowEvent *event)
+{
+    QWidget::showEvent(event);
+    m_displayTimer->start();
+    refresh();
+}
+
+void OdometryMap::hideEvent(QHideEvent *event)
+{
+    QWidget::hideEvent(event);
+    m_displayTimer->stop();
 }
 
 void OdometryMap::retranslateUi()

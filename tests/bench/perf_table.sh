@@ -1,0 +1,111 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
+# The performance table in one command: runs the benchmarks and prints today's
+# figure beside each target.
+#
+#   tests/bench/perf_table.sh [--build DIR] [--seconds S] [--build-times]
+#
+# --build DIR    the build directory with the benchmarks (default: build)
+# --seconds S    how long each dashboard run lasts (default 600: the table's
+#                "10 minutes after start"; shorter runs are noisier)
+# --build-times  also time README's first command (configure and build the
+#                window, without ccache) and the ordinary build and tests of
+#                .ci/run in fresh build directories: many minutes on 2 cores
+#
+# The dashboard runs under Xvfb at 1600x1000 (bench_dashboard --xvfb). While
+# the 30-robot run goes on, bench_teleop_latency measures input to wire, so
+# that figure is "busy". Load from other programs skews every figure: the
+# load average is printed with the table.
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+
+build=build
+seconds=600
+build_times=0
+while [ $# -gt 0 ]; do
+    case "$1" in
+        --build) build="$2"; shift 2 ;;
+        --seconds) seconds="$2"; shift 2 ;;
+        --build-times) build_times=1; shift ;;
+        *) echo "usage: $0 [--build DIR] [--seconds S] [--build-times]" >&2; exit 2 ;;
+    esac
+done
+
+bench="$build/tests/bench"
+for b in bench_dashboard bench_recording bench_history_memory bench_teleop_latency; do
+    if [ ! -x "$bench/$b" ]; then
+        echo "$bench/$b is missing: cmake --build $build --target $b" >&2
+        exit 2
+    fi
+done
+
+log=$(mktemp -d)
+trap 'rm -rf "$log"' EXIT
+
+field() { # field FILE REGEX: the first capture group of the last matching line
+    sed -nE "s/$2/\1/p" "$1" | tail -1
+}
+
+echo "Running: one robot (default docks, then every dock), 30 robots with the teleop benchmark beside,"
+echo "the recording and history benchmarks; about $((seconds * 3 / 60 + 3)) minutes."
+
+"$bench/bench_dashboard" --xvfb --seconds "$seconds" > "$log/one.txt"
+"$bench/bench_dashboard" --xvfb --seconds "$seconds" --every-dock > "$log/every.txt"
+
+"$bench/bench_dashboard" --xvfb --seconds "$seconds" --fleet > "$log/fleet.txt" &
+fleet_pid=$!
+# Input to wire while 30 robots stream and draw: after they have started.
+sleep $((seconds < 60 ? seconds / 3 : 30))
+QT_QPA_PLATFORM=offscreen "$bench/bench_teleop_latency" > "$log/teleop_busy.txt"
+wait "$fleet_pid"
+QT_QPA_PLATFORM=offscreen "$bench/bench_teleop_latency" > "$log/teleop_quiet.txt"
+
+"$bench/bench_recording" > "$log/recording.txt"
+"$bench/bench_history_memory" --minutes 60 --robots 30 > "$log/history.txt"
+
+cpu_one=$(field "$log/one.txt" '^result:.* cpu ([0-9.]+) %.*')
+cpu_every=$(field "$log/every.txt" '^result:.* cpu ([0-9.]+) %.*')
+cpu_fleet=$(field "$log/fleet.txt" '^result:.* cpu ([0-9.]+) %.*')
+start_one=$(field "$log/one.txt" '^result:.* first live frame ([0-9-]+) ms.*')
+start_fleet=$(field "$log/fleet.txt" '^result:.* first live frame ([0-9-]+) ms.*')
+rss_fleet=$(field "$log/fleet.txt" '^result:.* rss ([0-9.]+) MiB.*')
+history30=$(field "$log/history.txt" '^30 robots .*: ([0-9.]+) MiB in all, RSS ([0-9.]+) MiB.*')
+history30_rss=$(field "$log/history.txt" '^30 robots .*RSS ([0-9.]+) MiB.*')
+open_s=$(field "$log/recording.txt" '^open +([0-9.]+) s.*')
+seek=$(field "$log/recording.txt" '^seek .*p99 ([0-9.]+) ms.*')
+teleop_busy=$(grep -E 'p99' "$log/teleop_busy.txt" | sed -nE 's/.*p99 +([0-9.]+) ms.*/\1/p' | sort -n | tail -1)
+teleop_quiet=$(grep -E 'p99' "$log/teleop_quiet.txt" | sed -nE 's/.*p99 +([0-9.]+) ms.*/\1/p' | sort -n | tail -1)
+
+row() { printf '| %-58s | %-26s | %-22s |\n' "$1" "$2" "$3"; }
+echo
+echo "Figures after ${seconds} s runs under Xvfb 1600x1000; load average $(cut -d' ' -f1-3 /proc/loadavg)"
+row "figure" "today" "target"
+row "----" "----" "----"
+row "one robot, default docks, CPU of one core" "${cpu_one} %" "<= 3 %"
+row "one robot, every dock open and visible, CPU" "${cpu_every} %" "<= 6 %"
+row "30 robots in one window, every dock of one open, CPU" "${cpu_fleet} %" "<= 15 %"
+row "30 robots: window RSS after the run" "${rss_fleet} MiB" "-"
+row "30 robots: histories after an hour (bench_history_memory)" "${history30} MiB, RSS ${history30_rss} MiB" "<= 1.5 GB"
+row "open a one-hour recording for replay" "${open_s} s, read once" "<= 0.3 s, read once"
+row "seek in a one-hour recording, to the frame's bytes (p99)" "${seek} ms" "<= 50 ms"
+row "input to bytes on the wire, p99, quiet" "${teleop_quiet} ms" "-"
+row "input to bytes on the wire, p99, 30 robots running" "${teleop_busy} ms" "<= 2 ms busy"
+row "start-up to the first live frame, one robot" "${start_one} ms" "-"
+row "start-up to the first live frame, 30 saved robots" "${start_fleet} ms" "<= 250 ms"
+
+if [ "$build_times" = 1 ]; then
+    fresh=$(mktemp -d)
+    start=$SECONDS
+    cmake -S . -B "$fresh/window" -G Ninja > /dev/null
+    cmake --build "$fresh/window" --target roomba-dashboard > /dev/null
+    window_s=$((SECONDS - start))
+    start=$SECONDS
+    cmake -S . -B "$fresh/all" -G Ninja > /dev/null
+    cmake --build "$fresh/all" > /dev/null
+    QT_QPA_PLATFORM=offscreen ctest --test-dir "$fresh/all" -j "$(nproc)" --timeout 600 > "$log/ctest.txt" \
+        || echo "ctest failed: see the tests' output with ctest --test-dir $fresh/all --rerun-failed"
+    tests_s=$((SECONDS - start))
+    row "README's first command: build to the window (no ccache)" "${window_s} s" "<= 240 s"
+    row "ordinary build and tests (no ccache)" "${tests_s} s" "<= 420 s"
+    rm -rf "$fresh"
+fi

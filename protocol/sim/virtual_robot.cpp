@@ -28,14 +28,18 @@ constexpr Microseconds kTick = 1ms;
 constexpr Microseconds kStreamPeriod = 15ms;
 constexpr Microseconds kButtonPress = 166'667us; // 165 releases after 1/6 s
 constexpr Microseconds kBaudSettle = 100ms;
+// The documents: Start from Off beeps once (Roomba 500, Create 2); Stop plays
+// a song on its way out (Create 2). Their lengths are not documented.
+constexpr Microseconds kStartBeep = 125ms;
+constexpr Microseconds kStopSong = 1s;
 constexpr Microseconds kSleepAfter = std::chrono::seconds(oi::RobotProfile::kPassiveSleepSeconds);
 constexpr long long kWeekMicros = 7LL * 24 * 60 * 60 * 1'000'000;
 
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kMaxWheelSpeed = 500;   // mm/s
 constexpr double kSpeedStep = 28.5;      // the speed controller's resolution, per the documents
-constexpr double kAcceleration = 1000;   // mm/s², speeding up
-constexpr double kBraking = 2000;        // mm/s², slowing down: the motors brake harder than they pull
+constexpr double kAcceleration = 8000;   // mm/s², speeding up: full speed in about 60 ms
+constexpr double kBraking = 12000;       // mm/s², slowing down: the motors brake harder than they pull
 constexpr double kPwmFullScale = 255;    // Drive PWM 255 runs a wheel at about full speed
 constexpr int kMaxScriptBytes = 100;
 constexpr std::size_t kInputBufferBytes = 4096; // bytes beyond this are lost, as on a full UART buffer
@@ -189,6 +193,10 @@ struct VirtualRobot::State {
     std::deque<std::uint8_t> serialIn;
     std::deque<std::uint8_t> scriptIn;
     bool scriptYield = false; // a script that plays itself again goes on at the next tick
+    // A script that plays itself again while serial bytes wait: the document
+    // loads it into the serial input queue, behind what already waits there,
+    // so a client can still stop a looping script.
+    bool scriptBehindSerial = false;
     oi::Bytes script;
     oi::Bytes command; // the command being executed, reused
     struct Wait {
@@ -319,7 +327,7 @@ struct VirtualRobot::State {
         // A script waiting for a distance it can no longer drive would hold
         // the serial input for ever: the stop ends it.
         wait.reset();
-        scriptIn.clear();
+        endScript();
         enterPassive();
         lastSafetyStop = why;
     }
@@ -353,13 +361,19 @@ struct VirtualRobot::State {
         lastActivity = now;
     }
 
+    void endScript()
+    {
+        scriptIn.clear();
+        scriptBehindSerial = false;
+    }
+
     void fallAsleep()
     {
         stopMotors();
         songEndsAt = now;
         streaming = false;
         wait.reset();
-        scriptIn.clear();
+        endScript();
         serialIn.clear();
         mode = OiMode::Off;
         asleep = true;
@@ -378,7 +392,7 @@ struct VirtualRobot::State {
         digitalOutputs = 0;
         baud = profile->defaultBaud;
         wait.reset();
-        scriptIn.clear();
+        endScript();
         const std::string banner = bannerFor(firmwareRelease);
         emit(std::span(reinterpret_cast<const std::uint8_t *>(banner.data()), banner.size()));
     }
@@ -850,11 +864,17 @@ struct VirtualRobot::State {
                 execute(command, true);
                 continue;
             }
-            if (serialIn.empty())
+            const std::size_t n = serialIn.empty() ? 0 : commandLength(*profile, serialIn);
+            if (n == 0 || n > serialIn.size()) {
+                // The rest has not arrived yet; a looping script waiting
+                // behind the serial bytes goes on at the next tick.
+                if (scriptBehindSerial) {
+                    scriptBehindSerial = false;
+                    scriptIn.assign(script.begin(), script.end());
+                    scriptYield = true;
+                }
                 return;
-            const std::size_t n = commandLength(*profile, serialIn);
-            if (n == 0 || n > serialIn.size())
-                return; // the rest has not arrived yet
+            }
             command.assign(serialIn.begin(), serialIn.begin() + std::ptrdiff_t(n));
             serialIn.erase(serialIn.begin(), serialIn.begin() + std::ptrdiff_t(n));
             execute(command, false);
@@ -890,6 +910,8 @@ struct VirtualRobot::State {
             reset();
             break;
         case Command::Start:
+            if (mode == OiMode::Off && !create1())
+                songEndsAt = std::max(songEndsAt, now + kStartBeep);
             enterPassive();
             break;
         case Command::Baud:
@@ -916,8 +938,9 @@ struct VirtualRobot::State {
             stopMotors();
             streaming = false;
             wait.reset();
-            scriptIn.clear();
+            endScript();
             mode = OiMode::Off;
+            songEndsAt = now + kStopSong;
             break;
         case Command::Drive:
             drive(s16(c[1], c[2]), s16(c[3], c[4]));
@@ -1006,7 +1029,11 @@ struct VirtualRobot::State {
                 script.assign(c.begin() + 2, c.end());
             break;
         case Command::PlayScript:
-            // The script goes in front of anything not yet read.
+            if (fromScript && !serialIn.empty()) {
+                scriptBehindSerial = true; // played again once the waiting bytes are read
+                break;
+            }
+            // Sent by a client, the script goes in front of anything not yet read.
             scriptIn.assign(script.begin(), script.end());
             if (fromScript)
                 scriptYield = true;

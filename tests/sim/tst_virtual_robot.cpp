@@ -259,6 +259,9 @@ private slots:
     void buttons();
     void scriptDrivesFortyCentimetresAndStops();
     void scriptWaitsForABump();
+    void squareScriptTurnsRightAngles();
+    void shutdownStopsALoopingScript();
+    void startBeepsAndStopPlaysASong();
     void showScriptRepliesAndHaltsTheStream();
 
     // Sensor traffic.
@@ -325,6 +328,7 @@ void TestVirtualRobot::passiveIgnoresActuators()
     Bench b(p);
     b.robot.setWorld(emptyWorld());
     b.send(b.encoder.start());
+    b.run(150ms); // the Start beep is over
     // Storing a song is allowed in Passive; playing it is not.
     b.send(b.encoder.song(0, Song{{{60, 32}, {64, 32}}}));
     QVERIFY(b.robot.song(0).has_value());
@@ -1231,7 +1235,7 @@ void TestVirtualRobot::songs()
     QVERIFY(!b.robot.song(slot - 1).has_value());
     QVERIFY(!b.robot.song(p.songSlots).has_value());
     b.send(b.encoder.stream(std::vector<int>{36, 37}));
-    b.run(30ms);
+    b.run(150ms); // the Start beep is over
     QVERIFY(!b.frames.back().songPlaying());
     b.send(b.encoder.play(slot));
     b.run(1440ms);
@@ -1250,6 +1254,30 @@ void TestVirtualRobot::songs()
     b.send(b.encoder.play(0));
     b.run(30ms);
     QVERIFY(!b.frames.back().songPlaying());
+}
+
+// The documents: Start from Off beeps once (Roomba 500, Create 2), and Stop
+// plays a song as the Create 2 leaves the OI; packet 37 says so.
+void TestVirtualRobot::startBeepsAndStopPlaysASong()
+{
+    for (ProfileId id : {ProfileId::Roomba500, ProfileId::Create2, ProfileId::Create1}) {
+        Bench b(profileOf(id));
+        b.send(b.encoder.start());
+        const bool beeps = id != ProfileId::Create1;
+        QCOMPARE(b.value(37), beeps ? 1 : 0);
+        b.run(150ms);
+        QCOMPARE(b.value(37), 0);
+        b.send(b.encoder.start()); // from Passive: no beep
+        QCOMPARE(b.value(37), 0);
+    }
+    Bench b(profileOf(ProfileId::Create2));
+    b.startSafe();
+    b.run(150ms);
+    b.send(b.encoder.stop());
+    QCOMPARE(b.robot.mode(), OiMode::Off);
+    QVERIFY(b.robot.songPlaying()); // heard, not read: the robot no longer answers
+    b.run(1100ms);
+    QVERIFY(!b.robot.songPlaying());
 }
 
 void TestVirtualRobot::ledsAndDisplay()
@@ -1378,6 +1406,60 @@ void TestVirtualRobot::scriptDrivesFortyCentimetresAndStops()
     b.run(1s);
     QCOMPARE(b.robot.truePose().xMm, x);
     QCOMPARE(b.value(39), 0);
+}
+
+// The Create document's "Drive in a square", byte for byte, on an empty floor.
+void playSquare(Bench &b)
+{
+    b.robot.setWorld(emptyWorld());
+    b.send(Bytes{152, 17, 137, 1, 44, 128, 0, 156, 1, 144, 137, 1, 44, 0, 1, 157, 0, 90, 153});
+    b.send(b.encoder.playScript());
+}
+
+// The wheels reach their speed in a few tens of milliseconds, so the
+// document's square turns right angles rather than overshooting each corner.
+void TestVirtualRobot::squareScriptTurnsRightAngles()
+{
+    const RobotProfile &p = profileOf(ProfileId::Create1);
+    Bench b(p);
+    b.startSafe();
+    playSquare(b);
+    std::vector<double> legs; // the heading of each straight leg, in degrees
+    double last = b.robot.truePose().thetaRad;
+    int still = 0;
+    for (int i = 0; i < 2000 && legs.size() < 5; ++i) {
+        b.run(10ms);
+        const double theta = b.robot.truePose().thetaRad;
+        still = std::abs(theta - last) < 1e-9 ? still + 1 : 0;
+        last = theta;
+        if (still == 20) // 200 ms without turning: a straight leg
+            legs.push_back(theta * 180 / kPi);
+    }
+    QCOMPARE(legs.size(), std::size_t(5));
+    for (std::size_t i = 1; i < legs.size(); ++i) {
+        const double corner = std::remainder(legs[i] - legs[i - 1], 360.0);
+        QVERIFY2(std::abs(corner - 90) <= 5, qPrintable(QStringLiteral("corner %1: %2°").arg(i).arg(corner)));
+    }
+}
+
+// A script that plays itself again is loaded behind the serial bytes that
+// wait (the document: "into the serial input queue"), so the shutdown
+// sequence a client sends on quitting still stops the robot.
+void TestVirtualRobot::shutdownStopsALoopingScript()
+{
+    const RobotProfile &p = profileOf(ProfileId::Create1);
+    Bench b(p);
+    b.startFull();
+    playSquare(b);
+    b.run(3s);
+    QVERIFY(b.robot.truePose().travelledMm > 400);
+    b.send(b.encoder.shutdownSequence());
+    b.run(3s); // to the end of the loop the script was in
+    QCOMPARE(b.robot.mode(), OiMode::Passive);
+    const oi::Pose stopped = b.robot.truePose();
+    b.run(3s);
+    QCOMPARE(b.robot.truePose().xMm, stopped.xMm);
+    QCOMPARE(b.robot.truePose().thetaRad, stopped.thetaRad);
 }
 
 void TestVirtualRobot::scriptWaitsForABump()

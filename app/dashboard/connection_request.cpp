@@ -18,6 +18,8 @@ oilink::LinkSettings linkSettingsFor(const ConnectionRequest &r)
         s = oilink::LinkSettings::tcp(r.host, r.tcpPort, r.profile);
         s.baud = r.baud;
         break;
+    case T::Current:
+        break; // the window keeps the robot's own settings
     }
     return s;
 }
@@ -46,7 +48,7 @@ ConnectionRequest requestFor(const oilink::LinkSettings &s)
         break;
     case oilink::TransportKind::Replay:
     case oilink::TransportKind::Network:
-        r.transport = T::Virtual;
+        r.transport = T::Current;
         r.baud = 0;
         break;
     }

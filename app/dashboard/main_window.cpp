@@ -336,12 +336,10 @@ void MainWindow::wireInputs()
     connect(m_keyboard, &KeyboardDriving::escapePressed, this, [this] { setProjectorView(false); });
 
     connect(m_connectionBar, &ConnectionBar::connectRequested, this, [this](const ConnectionRequest &request) {
-        // The bar cannot name a robot on the broker: unchanged, it reconnects it.
-        const oilink::LinkSettings &current = session().settings();
-        const oilink::LinkSettings settings =
-            current.transport == oilink::TransportKind::Network && request == connection::requestFor(current)
-                ? current
-                : connection::linkSettingsFor(request);
+        // The bar cannot name a robot on the broker or a recording: it reconnects it.
+        const oilink::LinkSettings settings = request.transport == ConnectionRequest::Transport::Current
+                                                  ? session().settings()
+                                                  : connection::linkSettingsFor(request);
         placeInRoom(&session(), settings);
         session().connectTo(settings);
         m_connectionBar->setConnected(true);
@@ -414,8 +412,11 @@ void MainWindow::showSelected(RobotSession *robot)
     m_drivePad->resetToCentre();
     m_keyboard->releaseAll();
 
-    // What is connected, not what was chosen last; a replay keeps the choice.
-    if (robot->isConnected() && !robot->isReplay()) {
+    // What is connected, not what was chosen last.
+    const oilink::TransportKind kind = robot->settings().transport;
+    if (kind == oilink::TransportKind::Network || kind == oilink::TransportKind::Replay) {
+        m_connectionBar->showCurrent(robot->settings().describe(), robot->isConnected());
+    } else if (robot->isConnected()) {
         m_connectionBar->showConnected(connection::requestFor(robot->settings()));
     } else {
         m_connectionBar->setRequest(connection::requestFor(robot->settings()));
@@ -509,6 +510,7 @@ void MainWindow::buildActions()
     m_connectBrokerAction->setObjectName("connectBrokerAction");
     connect(m_connectBrokerAction, &QAction::triggered, this, &MainWindow::askForBroker);
     m_disconnectBrokerAction = new QAction(this);
+    m_disconnectBrokerAction->setObjectName("disconnectBrokerAction");
     m_disconnectBrokerAction->setEnabled(false);
     connect(m_disconnectBrokerAction, &QAction::triggered, this, [this] {
         m_console->disconnectFromBroker();
@@ -722,9 +724,21 @@ void MainWindow::start(const std::optional<oilink::LinkSettings> &override, int 
             saved << SavedRobot{{}, {}, single.value_or(oilink::LinkSettings::virtualRobotOf(oi::ProfileId::Create2, {})), true};
         }
         m_fleet.restore(saved);
+        reconnectToLastBroker(settings);
     }
     showSelected(m_fleet.selected());
     m_displayTimer.start();
+}
+
+// Only where nothing needs asking: no login, or a password kept on purpose.
+void MainWindow::reconnectToLastBroker(QSettings &settings)
+{
+    const QList<SavedBroker> brokers = loadSavedBrokers(settings);
+    if (!settings.value("brokers/connectedAtQuit").toBool() || brokers.isEmpty())
+        return;
+    const mqtt::BrokerAddress &last = brokers.first().address;
+    if (last.username.isEmpty() || !last.password.isEmpty())
+        connectToBroker(last);
 }
 
 void MainWindow::applyProfile(oi::ProfileId id)
@@ -877,6 +891,8 @@ void MainWindow::saveSettings() const
     QSettings settings;
     settings.setValue("window/geometry", saveGeometry());
     settings.setValue("window/state", saveState());
+    // Connected to a broker at quit: connected again at the next start.
+    settings.setValue("brokers/connectedAtQuit", m_disconnectBrokerAction->isEnabled());
     if (m_keepSavedRobots)
         return;
     // A recording is a file to open again, not a robot to reconnect to; a

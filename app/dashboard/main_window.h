@@ -20,6 +20,7 @@
 
 class ByteInspector;
 class DoctorDetails;
+class QSettings;
 class ConnectionBar;
 class DockLayout;
 class DrivePad;
@@ -139,6 +140,7 @@ protected:
     void changeEvent(QEvent *event) override;
 
 private:
+    void reconnectToLastBroker(QSettings &settings);
     void buildDocks();
     void buildActions();
     void buildMenus();

@@ -8,6 +8,9 @@
 
 #include <QJsonArray>
 #include <QMetaObject>
+#include <QTimer>
+
+#include <utility>
 
 namespace {
 
@@ -117,8 +120,18 @@ bool NetworkTransport::write(const QByteArray &bytes)
         onlyStops = onlyStops && (isStop(statements.last()) || c == QLatin1String("start"));
     }
     bool stopped = false;
+    if (statements.size() == 1 && statements.first() == QStringList{QStringLiteral("start")}) {
+        m_startPending = true;
+        QTimer::singleShot(0, this, [this] {
+            if (std::exchange(m_startPending, false))
+                forward({QStringLiteral("start")}); // Passive, asked for by the user
+        });
+        return true;
+    }
     for (const QStringList &words : std::as_const(statements)) {
         const QString &c = words.first();
+        if (c == QLatin1String("stream") || c == QLatin1String("baud"))
+            m_startPending = false; // the Start before it was the link's own
         if (c == QLatin1String("start") || c == QLatin1String("baud")) {
             continue; // the bridge's link decides its mode on connecting, and its baud
         } else if (c == QLatin1String("stream")) {

@@ -63,6 +63,9 @@ private:
     oi::SensorSnapshot m_latest;
     bool m_inControl = false;
     bool m_moving = false;
+    // Start alone may be the link's own (Stream follows at once) or the
+    // user's Passive: decided once the link has written what follows it.
+    bool m_startPending = false;
     quint64 m_nextId = 1;
     QStringList m_controlSent; // not answered yet, oldest first
     QTimer m_heartbeat;

@@ -11,8 +11,10 @@
 #include "fleet_view.h"
 #include "main_window.h"
 #include "mosquitto_broker.h"
+#include "saved_brokers.h"
 #include "snapshot_json.h"
 
+#include <QAction>
 #include <QDir>
 #include <QProcess>
 #include <QPushButton>
@@ -50,6 +52,47 @@ private slots:
     {
         QStandardPaths::setTestModeEnabled(true);
         QSettings().clear();
+    }
+
+    // Connected to a broker at quit: connected again at the next start,
+    // where no password needs asking for.
+    void reconnectsToTheLastBrokerAtStart()
+    {
+        MosquittoBroker broker;
+        QVERIFY2(broker.start(), qPrintable(broker.error()));
+        FakeBridge bridge(QStringLiteral("r1"));
+        QVERIFY(bridge.start(broker.port()));
+        bridge.publishState(bridge.state("safe", 80));
+        const mqtt::BrokerAddress address = *mqtt::BrokerAddress::fromUrl(broker.url(), nullptr);
+        {
+            QSettings settings;
+            saveBrokers(settings, {SavedBroker{address, false}});
+        }
+        {
+            MainWindow window;
+            window.start();
+            QVERIFY(window.fleetView()->tiles().isEmpty()); // not connected before
+            QVERIFY(window.connectToBroker(address));
+            QTRY_COMPARE_WITH_TIMEOUT(window.fleetView()->tiles().size(), 1, 5000);
+            window.close();
+        }
+        MainWindow again;
+        again.start();
+        QTRY_COMPARE_WITH_TIMEOUT(again.fleetView()->tiles().size(), 1, 5000);
+        again.close();
+
+        // A login whose password was not kept is not tried.
+        mqtt::BrokerAddress withLogin = address;
+        withLogin.username = QStringLiteral("teacher");
+        {
+            QSettings settings;
+            saveBrokers(settings, {SavedBroker{withLogin, false}});
+        }
+        MainWindow asking;
+        asking.start();
+        QVERIFY(!asking.findChild<QAction *>("disconnectBrokerAction")->isEnabled());
+        QVERIFY(asking.fleetView()->tiles().isEmpty());
+        asking.close();
     }
 
     void aClassroomOnOneBroker()

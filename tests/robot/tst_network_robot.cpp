@@ -107,6 +107,19 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(rig.bridge.controller().isEmpty(), 5000);
     }
 
+    // Passive (Start alone, from the mode panel) goes to the bridge as a
+    // command; the Start the link writes before its Stream stays here.
+    void passiveGoesToTheBridge()
+    {
+        Rig rig;
+        QVERIFY2(rig.start(), qPrintable(rig.broker.error()));
+        QVERIFY(rig.bridge.receivedOn(mqtt::topics::Kind::Command).isEmpty());
+        QVERIFY(rig.session.send(QByteArray(1, char(128))));
+        QTRY_COMPARE_WITH_TIMEOUT(rig.bridge.receivedOn(mqtt::topics::Kind::Command).size(), 1, 5000);
+        QCOMPARE(rig.bridge.receivedOn(mqtt::topics::Kind::Command).first().payload.value("command").toString(),
+                 QStringLiteral("start"));
+    }
+
     void anotherControllerRefusesTheDrive()
     {
         Rig rig;

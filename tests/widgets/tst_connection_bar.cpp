@@ -38,6 +38,31 @@ private slots:
         QCOMPARE(r.baud, 0);
     }
 
+    // A robot on a broker (or a recording) is named as it is, not as a
+    // virtual robot, and Connect reconnects it; choosing another kind of
+    // connection takes its entry away.
+    void showsARobotTheBarCannotChoose()
+    {
+        ConnectionBar bar;
+        bar.show();
+        bar.showCurrent(QStringLiteral("r1 on the broker"), true);
+        auto *transport = bar.findChild<QComboBox *>("transport");
+        QCOMPARE(transport->currentText(), QStringLiteral("r1 on the broker"));
+        QVERIFY(!bar.findChild<QComboBox *>("profile")->isVisible());
+        QVERIFY(!bar.findChild<QComboBox *>("baud")->isVisible());
+        QVERIFY(!transport->isEnabled()); // locked while connected
+        bar.setConnected(false);
+        QSignalSpy spy(&bar, &ConnectionBar::connectRequested);
+        clickConnect(bar);
+        QCOMPARE(spy.count(), 1);
+        QCOMPARE(spy.at(0).at(0).value<ConnectionRequest>().transport, ConnectionRequest::Transport::Current);
+
+        bar.setRequest(ConnectionRequest{});
+        QCOMPARE(transport->count(), 3);
+        QCOMPARE(transport->currentText(), QStringLiteral("Virtual robot"));
+        QVERIFY(bar.findChild<QComboBox *>("profile")->isVisible());
+    }
+
     void typedSerialPath()
     {
         ConnectionBar bar;

@@ -137,7 +137,22 @@ void ConnectionBar::updateTransportFields()
     m_port->setVisible(t == ConnectionRequest::Transport::Serial);
     m_refresh->setVisible(t == ConnectionRequest::Transport::Serial);
     m_tcp->setVisible(t == ConnectionRequest::Transport::Tcp);
+    m_profile->setVisible(t != ConnectionRequest::Transport::Current);
+    m_baud->setVisible(t != ConnectionRequest::Transport::Current);
     m_baud->setEnabled(t != ConnectionRequest::Transport::Virtual);
+}
+
+void ConnectionBar::showCurrent(const QString &description, bool connected)
+{
+    int at = m_transport->findData(int(ConnectionRequest::Transport::Current));
+    if (at < 0) {
+        m_transport->addItem(QString(), int(ConnectionRequest::Transport::Current));
+        at = m_transport->count() - 1;
+    }
+    m_transport->setItemText(at, description);
+    m_transport->setCurrentIndex(at);
+    updateTransportFields();
+    setConnected(connected);
 }
 
 ConnectionRequest ConnectionBar::request() const
@@ -158,6 +173,10 @@ ConnectionRequest ConnectionBar::request() const
 
 void ConnectionBar::setRequest(const ConnectionRequest &r)
 {
+    // The current robot's own entry goes once another kind is chosen for it.
+    if (const int current = m_transport->findData(int(ConnectionRequest::Transport::Current));
+        current >= 0 && r.transport != ConnectionRequest::Transport::Current)
+        m_transport->removeItem(current);
     m_transport->setCurrentIndex(m_transport->findData(int(r.transport)));
     m_port->setEditText(r.portPath);
     m_tcp->setText(r.host.isEmpty() ? QString() : QString("%1:%2").arg(r.host).arg(r.tcpPort));

@@ -16,7 +16,9 @@ class QToolButton;
 
 // Where and how to reach the robot, as the user chose it.
 struct ConnectionRequest {
-    enum class Transport { Virtual, Serial, Tcp };
+    // Current: the robot as it is connected, which the bar cannot choose
+    // itself (a robot on a broker, a recording); connecting reconnects it.
+    enum class Transport { Virtual, Serial, Tcp, Current };
     Transport transport = Transport::Virtual;
     QString portPath;                     // serial: a listed port or a typed path (ptys are not listed)
     QString host;                         // TCP
@@ -40,6 +42,9 @@ public:
     // What the link was actually opened with (a command line may differ
     // from the last choice): the fields show it, locked while connected.
     void showConnected(const ConnectionRequest &request);
+    // A robot the bar cannot choose, named by `description` ("r1 on the
+    // broker"): offered as the transport, with no port, profile or baud.
+    void showCurrent(const QString &description, bool connected);
     // Shows `message` inline until the next connect attempt or clearError();
     // the same message twice is shown once.
     void showError(const QString &message);

@@ -64,7 +64,7 @@ int main(int argc, char *argv[])
     std::vector<double> samples;
     int lost = 0;
     for (int round = 0; round < rounds; ++round) {
-        QTest::qWait(100);
+        QTest::qWait(100); // rounds apart: the last round's replies and states settle first
         const Clock::time_point sent = Clock::now();
         teacher.client.publish(mqtt::topics::stopAll(), json({{"client", "teacher"}}), 1);
         std::vector<std::optional<Clock::time_point>> seen(rigs.size());

@@ -11,7 +11,6 @@
 #include <QTcpServer>
 #include <QTcpSocket>
 #include <QTemporaryDir>
-#include <QThread>
 
 class MosquittoBroker {
 public:
@@ -77,20 +76,21 @@ public:
             m_error = QStringLiteral("%1 did not start: %2").arg(program(), m_process.errorString());
             return false;
         }
+        // mosquitto says "running" once its listeners are open.
         const QDeadlineTimer deadline(10000);
-        while (!deadline.hasExpired()) {
+        QByteArray said;
+        while (!said.contains(" running") && m_process.waitForReadyRead(int(deadline.remainingTime())))
+            said += m_process.readAll();
+        if (said.contains(" running")) {
             QTcpSocket s;
             s.connectToHost(QHostAddress::LocalHost, quint16(m_port));
-            if (s.waitForConnected(200))
+            if (s.waitForConnected(int(deadline.remainingTime())))
                 return true;
-            if (m_process.state() == QProcess::NotRunning)
-                break;
-            QThread::msleep(20);
         }
-        m_process.waitForReadyRead(100);
+        said += m_process.readAll();
         m_error = QStringLiteral("mosquitto did not listen on port %1: %2")
                       .arg(m_port)
-                      .arg(QString::fromLocal8Bit(m_process.readAll()));
+                      .arg(QString::fromLocal8Bit(said));
         stop();
         return false;
     }

@@ -61,6 +61,7 @@ ConnectionBar::ConnectionBar(QWidget *parent) : QWidget(parent)
     row->addWidget(m_tcp, 1);
     row->addWidget(m_profile);
     row->addWidget(m_baud);
+    row->addStretch(); // takes the room when no port or bridge field shows
     row->addWidget(m_connect);
     row->addWidget(m_disconnect);
     auto *layout = new QVBoxLayout(this);

@@ -53,8 +53,10 @@ void BrcPulser::keepAwake()
 {
     if (m_mode == oi::OiMode::Safe || m_mode == oi::OiMode::Full || !m_steps.empty())
         return;
-    // Short enough to let go well before the next one.
-    queuePulses(1, std::min(kKeepAwakePulseMs, m_keepAwake.interval() / 4), 0);
+    // Short enough to let go well before the next one, and never as long as
+    // a baud pulse (50 to 500 ms).
+    const int widthMs = std::min(kKeepAwakePulseMs, m_keepAwake.interval() / 4);
+    queuePulses(1, widthMs > 500 ? widthMs : kWakePulseMs, 0);
 }
 
 bool BrcPulser::queuePulses(int count, int widthMs, int gapMs)

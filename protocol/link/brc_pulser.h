@@ -20,7 +20,9 @@ class Transport;
 class BrcPulser : public QObject {
     Q_OBJECT
 public:
-    static constexpr int kWakePulseMs = 100;
+    // Shorter than the 50 ms that counts toward the three baud pulses, so a
+    // link opened three times in a row does not put the robot on 19200.
+    static constexpr int kWakePulseMs = 20;
     static constexpr int kBaudPulseMs = 100; // the documents: 50 to 500 ms
     static constexpr int kBaudGapMs = 100;
 

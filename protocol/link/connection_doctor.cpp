@@ -150,9 +150,7 @@ void ConnectionDoctor::afterSilence()
     if (!m_pulser->wake()) {
         step(m_transport.brcUnavailable() + QLatin1Char('.'));
         if (!m_garbledAt.isEmpty())
-            conclude(Finding::GarbledAtEveryBaud,
-                     tr("Bytes come back, but at no baud do they make sense: a noisy cable, or a device "
-                        "that is not an Open Interface robot."));
+            concludeGarbled();
         else
             conclude(Finding::NothingComesBack,
                      tr("Nothing comes back: is the robot on and the cable plugged in? (A sleeping robot "
@@ -199,8 +197,26 @@ void ConnectionDoctor::afterWakePulse(qsizetype index)
     });
 }
 
+void ConnectionDoctor::concludeGarbled()
+{
+    if (m_hasBaud)
+        conclude(Finding::GarbledAtEveryBaud,
+                 tr("Bytes come back, but at no baud do they make sense: a noisy cable, or a device "
+                    "that is not an Open Interface robot."));
+    else
+        conclude(Finding::GarbledAtEveryBaud,
+                 tr("Bytes come back, but they make no sense. This connection cannot change the "
+                    "bridge's rate: the robot may talk at another baud than the bridge's serial port "
+                    "(set the bridge to the robot's rate, or use its RFC 2217 telnet mode so that "
+                    "each rate can be tried), or the device is not an Open Interface robot."));
+}
+
 void ConnectionDoctor::concludeSilent()
 {
+    if (!m_garbledAt.isEmpty()) {
+        concludeGarbled(); // it was never silent, only not making sense
+        return;
+    }
     conclude(Finding::AsleepDidNotWake,
              tr("Still silent after BRC pulses: the robot is off or unplugged, or asleep on its dock "
                 "with firmware before release-3.8.2 / release-stm32-3.7.7, which does not wake by BRC "

@@ -79,6 +79,7 @@ private:
     void answered(int baud, Finding cause);
     void conclude(Finding finding, const QString &summary);
     void concludeSilent();
+    void concludeGarbled();
     void step(const QString &text);
     QString baudName(int baud) const;
 

@@ -94,6 +94,14 @@ bool TcpTransport::setBrcLow(bool low)
     return m_socket.write(command) == command.size();
 }
 
+bool TcpTransport::setBaud(int baud)
+{
+    if (!m_connected || !m_rfc2217 || baud <= 0)
+        return false;
+    const QByteArray command = toQt(rfc2217::setBaudRate(std::uint32_t(baud)));
+    return m_socket.write(command) == command.size();
+}
+
 void TcpTransport::flush(int msecs)
 {
     if (!m_connected)

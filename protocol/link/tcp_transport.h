@@ -29,6 +29,9 @@ public:
     QString describe() const override;
     QString brcUnavailable() const override;
     bool setBrcLow(bool low) override;
+    // Over RFC 2217 the bridge's serial side takes the rate (SET-BAUDRATE);
+    // raw TCP has no rate of its own.
+    bool setBaud(int baud) override;
     // Before open(): speak RFC 2217, with BRC on this line of the bridge.
     void setRfc2217(bool on, BrcLine line = BrcLine::Rts, bool assertedIsLow = true);
 

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
-// RFC 2217, the Telnet Com Port Control Option, as far as the robot's BRC
-// pin needs it: serial data inside Telnet (0xFF doubled), and SET-CONTROL
-// for the RTS and DTR lines. ser2net speaks it in telnet mode; the link
+// RFC 2217, the Telnet Com Port Control Option, as far as the robot needs
+// it: serial data inside Telnet (0xFF doubled), SET-CONTROL for the RTS and
+// DTR lines (the BRC pin), and SET-BAUDRATE for the line's rate. ser2net speaks it in telnet mode; the link
 // pulses BRC through it and roomba-sim's TCP server takes it. Standard
 // library only, so the link and the virtual robot share one copy.
 
@@ -17,6 +17,7 @@ using Bytes = std::vector<std::uint8_t>;
 
 inline constexpr std::uint8_t kIac = 255, kSb = 250, kSe = 240, kWill = 251, kDo = 253;
 inline constexpr std::uint8_t kComPortOption = 44;
+inline constexpr std::uint8_t kSetBaudRate = 1;     // client to server
 inline constexpr std::uint8_t kSetControl = 5;      // client to server
 inline constexpr std::uint8_t kServerOffset = 100;  // the server's answers: 105 for SET-CONTROL
 inline constexpr std::uint8_t kDtrOn = 8, kDtrOff = 9, kRtsOn = 11, kRtsOff = 12;
@@ -29,6 +30,30 @@ inline Bytes doComPort() { return {kIac, kDo, kComPortOption}; }
 inline Bytes setControl(std::uint8_t value, std::uint8_t command = kSetControl)
 {
     return {kIac, kSb, kComPortOption, command, value, kIac, kSe};
+}
+
+// SET-BAUDRATE `baud` (0 asks for the current rate), four bytes in network
+// order, any 0xFF among them doubled; a server answers with kSetBaudRate +
+// kServerOffset and the rate it now uses.
+inline Bytes setBaudRate(std::uint32_t baud, std::uint8_t command = kSetBaudRate)
+{
+    Bytes out{kIac, kSb, kComPortOption, command};
+    for (int shift = 24; shift >= 0; shift -= 8) {
+        const auto b = std::uint8_t(baud >> shift);
+        out.push_back(b);
+        if (b == kIac)
+            out.push_back(kIac);
+    }
+    out.insert(out.end(), {kIac, kSe});
+    return out;
+}
+
+// The rate in a SET-BAUDRATE value; 0 where the value is not four bytes.
+inline std::uint32_t baudRateOf(const Bytes &value)
+{
+    if (value.size() != 4)
+        return 0;
+    return std::uint32_t(value[0]) << 24 | std::uint32_t(value[1]) << 16 | std::uint32_t(value[2]) << 8 | value[3];
 }
 
 // Serial data for the wire: every 0xFF doubled.
@@ -46,10 +71,10 @@ inline Bytes escape(const std::uint8_t *data, std::size_t size)
 
 // Telnet from the wire back to serial data, across reads: commands are taken
 // out, and each Com Port Option subnegotiation is handed to `onControl` as
-// (command, value).
+// (command, value bytes).
 class Decoder {
 public:
-    using Control = std::function<void(std::uint8_t command, std::uint8_t value)>;
+    using Control = std::function<void(std::uint8_t command, const Bytes &value)>;
 
     Bytes feed(const std::uint8_t *data, std::size_t size, const Control &onControl = {})
     {
@@ -87,8 +112,8 @@ public:
                 break;
             case State::SubIac:
                 if (b == kSe) {
-                    if (m_sub.size() >= 3 && m_sub[0] == kComPortOption && onControl)
-                        onControl(m_sub[1], m_sub[2]);
+                    if (m_sub.size() >= 2 && m_sub[0] == kComPortOption && onControl)
+                        onControl(m_sub[1], Bytes(m_sub.begin() + 2, m_sub.end()));
                     m_state = State::Data;
                 } else {
                     m_sub.push_back(b); // a doubled 0xFF inside

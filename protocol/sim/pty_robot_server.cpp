@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "pty_robot_server.h"
 
+#include "serial_line.h"
+
 #include <QSocketNotifier>
 
 #include <cerrno>
@@ -15,6 +17,31 @@ namespace sim {
 
 namespace {
 constexpr int kClientPollMs = 20;
+
+// The termios speeds a client can choose, and the robot's rates among them
+// (14400 and 28800 have none, so no client can follow the robot there).
+constexpr struct {
+    speed_t speed;
+    int baud;
+} kSpeeds[] = {{B300, 300},     {B600, 600},     {B1200, 1200},   {B2400, 2400},
+               {B4800, 4800},   {B9600, 9600},   {B19200, 19200}, {B38400, 38400},
+               {B57600, 57600}, {B115200, 115200}};
+
+int baudOfSpeed(speed_t speed)
+{
+    for (const auto &s : kSpeeds)
+        if (s.speed == speed)
+            return s.baud;
+    return 0;
+}
+
+speed_t speedOfBaud(int baud)
+{
+    for (const auto &s : kSpeeds)
+        if (s.baud == baud)
+            return s.speed;
+    return B115200;
+}
 
 QString systemError(const char *what)
 {
@@ -59,9 +86,9 @@ bool PtyRobotServer::open(QString *error)
     if (flags < 0 || fcntl(m_master, F_SETFL, flags | O_NONBLOCK) != 0)
         return fail("fcntl");
 
-    // Raw bytes both ways: no echo, no line editing, no CR/LF translation.
-    // The settings live with the pair, so a client that does not set them
-    // itself still gets a clean line. Opening and closing the slave once puts
+    // Raw bytes both ways at the robot's rate: no echo, no line editing, no
+    // CR/LF translation. The settings live with the pair, so a client that
+    // does not set them itself still gets a clean line. Opening and closing the slave once puts
     // the master into the hung-up state, so a client's first open is seen
     // the same way as a reopen, and nothing is written before anyone listens.
     const int slave = ::open(name, O_RDWR | O_NOCTTY | O_NONBLOCK);
@@ -70,6 +97,7 @@ bool PtyRobotServer::open(QString *error)
     termios tio{};
     if (tcgetattr(slave, &tio) == 0) {
         cfmakeraw(&tio);
+        cfsetspeed(&tio, speedOfBaud(m_robot.robot().baud()));
         tcsetattr(slave, TCSANOW, &tio);
     }
     ::close(slave);
@@ -93,6 +121,15 @@ void PtyRobotServer::close()
     m_master = -1;
     m_slavePath.clear();
     setClientConnected(false);
+}
+
+int PtyRobotServer::clientBaud() const
+{
+    // The master reads the slave's settings: the rate the client chose.
+    termios tio{};
+    if (m_master < 0 || tcgetattr(m_master, &tio) != 0)
+        return 0;
+    return baudOfSpeed(cfgetospeed(&tio));
 }
 
 void PtyRobotServer::setClientConnected(bool connected)
@@ -123,7 +160,8 @@ void PtyRobotServer::readFromClient()
     for (;;) {
         const ssize_t n = ::read(m_master, buffer, sizeof buffer);
         if (n > 0) {
-            m_robot.write(QByteArray(buffer, qsizetype(n)));
+            const SerialLine line{m_robot.robot().baud(), clientBaud()};
+            m_robot.write(line.heardByRobot(QByteArray(buffer, qsizetype(n))));
             continue;
         }
         if (n < 0 && errno == EINTR)
@@ -143,8 +181,9 @@ void PtyRobotServer::writeToClient(const QByteArray &bytes)
 {
     if (m_master < 0 || !m_clientConnected)
         return;
-    const char *data = bytes.constData();
-    qsizetype left = bytes.size();
+    const QByteArray heard = SerialLine{m_robot.robot().baud(), clientBaud()}.heardByClient(bytes);
+    const char *data = heard.constData();
+    qsizetype left = heard.size();
     while (left > 0) {
         const ssize_t n = ::write(m_master, data, std::size_t(left));
         if (n < 0 && errno == EINTR)

@@ -15,7 +15,9 @@ namespace sim {
 // slavePath() as if it were the robot's serial port. The robot runs in real
 // time whether or not a client has the port open, and what it says while
 // nobody listens is lost, as on a real cable. Clients may close and reopen
-// the port as often as they like.
+// the port as often as they like. The line has the rate the client set on
+// the port: after Baud (129) a client that stays at the old rate hears junk
+// and is not heard, as on a real cable.
 class PtyRobotServer : public QObject {
     Q_OBJECT
 public:
@@ -33,6 +35,9 @@ public:
     QString slavePath() const { return m_slavePath; }
     // True while a client has the slave side open.
     bool clientConnected() const { return m_clientConnected; }
+    // The rate the client set on its side of the port; 0 for one the robot
+    // has no rate for.
+    int clientBaud() const;
 
     RealTimeRobot &robot() { return m_robot; }
 

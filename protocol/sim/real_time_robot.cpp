@@ -33,6 +33,8 @@ void RealTimeRobot::stop() { m_timer.stop(); }
 
 void RealTimeRobot::write(const QByteArray &bytes)
 {
+    if (bytes.isEmpty())
+        return;
     // Bring the robot's clock up to now first, so the command lands when it
     // really arrived.
     tick();

@@ -18,6 +18,11 @@ namespace sim {
 // bridge (ser2net and the like) does. One client at a time: while one is
 // connected, others are turned away, as a serial port opened by one
 // program is busy for the rest.
+//
+// The bridge's serial side has a rate of its own, the robot's default to
+// begin with. Raw TCP cannot change it, so after Baud (129) the client hears
+// junk and is not heard until the robot is back at that rate; over RFC 2217
+// the client sets it with SET-BAUDRATE, as ser2net in telnet mode allows.
 class TcpRobotServer : public QObject {
     Q_OBJECT
 public:
@@ -38,6 +43,10 @@ public:
     // Speak RFC 2217 instead of raw bytes (before listen()): RTS or DTR
     // asserted pulls the robot's BRC pin low, as on an FTDI cable.
     void setRfc2217(bool on) { m_rfc2217 = on; }
+    // The rate of the bridge's serial side now, and the one it is set to
+    // again for each connection.
+    int lineBaud() const { return m_lineBaud; }
+    void setLineBaud(int baud) { m_configuredBaud = m_lineBaud = baud; }
 
 signals:
     void clientConnectedChanged(bool connected);
@@ -45,11 +54,15 @@ signals:
 private:
     void acceptClient();
     void writeToClient(const QByteArray &bytes);
+    void readFromClient(QTcpSocket *socket);
+    void comPortControl(QTcpSocket *socket, std::uint8_t command, const rfc2217::Bytes &value);
 
     RealTimeRobot m_robot;
     QTcpServer *m_server;
     QPointer<QTcpSocket> m_client;
     bool m_rfc2217 = false;
+    int m_configuredBaud;
+    int m_lineBaud;
     rfc2217::Decoder m_telnet;
 };
 

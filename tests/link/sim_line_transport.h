@@ -5,6 +5,7 @@
 #pragma once
 
 #include "real_time_robot.h"
+#include "serial_line.h"
 #include "transport.h"
 
 #include <memory>
@@ -21,16 +22,8 @@ public:
         : Transport(parent), m_robot(std::make_unique<sim::RealTimeRobot>(oi::profile(id))), m_line(line)
     {
         connect(m_robot.get(), &sim::RealTimeRobot::bytesOut, this, [this](const QByteArray &bytes) {
-            if (!m_open || m_baud > m_line.maxBaud)
-                return;
-            if (m_baud == robot().baud()) {
-                emit bytesReceived(bytes);
-                return;
-            }
-            QByteArray junk = bytes; // another rate: every byte arrives as something else
-            for (char &c : junk)
-                c = char(std::uint8_t(c) | 0x80);
-            emit bytesReceived(junk);
+            if (m_open && m_baud <= m_line.maxBaud)
+                emit bytesReceived(serialLine().heardByClient(bytes));
         }, Qt::QueuedConnection);
         m_robot->start();
     }
@@ -48,8 +41,8 @@ public:
     {
         if (!m_open)
             return false;
-        if (m_baud == robot().baud() && m_baud <= m_line.maxBaud)
-            m_robot->write(bytes);
+        if (m_baud <= m_line.maxBaud)
+            m_robot->write(serialLine().heardByRobot(bytes));
         return true;
     }
     void flush(int) override {}
@@ -69,6 +62,8 @@ public:
     QString describe() const override { return QStringLiteral("test line"); }
 
 private:
+    sim::SerialLine serialLine() { return {robot().baud(), m_baud}; }
+
     std::unique_ptr<sim::RealTimeRobot> m_robot;
     Line m_line;
     int m_baud = 115200;

@@ -71,6 +71,27 @@ private slots:
         QCOMPARE(robot.baud(), 19200);
     }
 
+    // The documents count any three pulses of 50 to 500 ms as the sequence
+    // for 19200 baud, so a wake pulse (a link opened three times in a row) or
+    // a keep-awake pulse must never be one of those.
+    void wakeAndKeepAwakePulsesLeaveTheBaud()
+    {
+        sim::VirtualTransport transport(oi::ProfileId::Create2, 1);
+        transport.open();
+        sim::VirtualRobot &robot = transport.robot()->robot();
+        oilink::BrcPulser pulser;
+        pulser.setTransport(&transport);
+        QSignalSpy pulsed(&pulser, &oilink::BrcPulser::pulsed);
+        for (int i = 0; i < 3; ++i)
+            QVERIFY(pulser.wake());
+        QTRY_COMPARE_WITH_TIMEOUT(pulsed.size(), 3, kTimeoutMs);
+        QCOMPARE(robot.baud(), 115200);
+        // A keep-awake every 400 ms would have pulsed for 100 ms.
+        pulser.setKeepAwake(400);
+        QTRY_VERIFY_WITH_TIMEOUT(pulsed.size() >= 6, kTimeoutMs);
+        QCOMPARE(robot.baud(), 115200);
+    }
+
     void rfc2217CarriesEveryByte()
     {
         rfc2217::Bytes data;
@@ -80,21 +101,32 @@ private slots:
         QCOMPARE(wire.size(), data.size() + 1); // 0xFF doubled
         const rfc2217::Bytes control = rfc2217::setControl(rfc2217::kRtsOn);
         wire.insert(wire.begin() + 100, control.begin(), control.end());
+        // A rate with 0xFF among its four bytes: doubled inside the subnegotiation.
+        const rfc2217::Bytes rate = rfc2217::setBaudRate(0x0001C2FF);
+        QCOMPARE(rate.size(), std::size_t(3 + 1 + 5 + 2));
+        wire.insert(wire.begin() + 200, rate.begin(), rate.end());
         const rfc2217::Bytes will = rfc2217::willComPort();
         wire.insert(wire.begin(), will.begin(), will.end());
         // Fed a byte at a time: commands come out, the data goes through.
         rfc2217::Decoder decoder;
         rfc2217::Bytes out;
         std::vector<int> values;
+        std::vector<std::uint32_t> rates;
         for (std::uint8_t b : wire) {
-            const rfc2217::Bytes got = decoder.feed(&b, 1, [&](std::uint8_t command, std::uint8_t value) {
+            const rfc2217::Bytes got = decoder.feed(&b, 1, [&](std::uint8_t command, const rfc2217::Bytes &value) {
+                if (command == rfc2217::kSetBaudRate) {
+                    rates.push_back(rfc2217::baudRateOf(value));
+                    return;
+                }
                 QCOMPARE(command, rfc2217::kSetControl);
-                values.push_back(value);
+                QCOMPARE(value.size(), std::size_t(1));
+                values.push_back(value[0]);
             });
             out.insert(out.end(), got.begin(), got.end());
         }
         QVERIFY(out == data);
         QCOMPARE(values, std::vector<int>{rfc2217::kRtsOn});
+        QCOMPARE(rates, std::vector<std::uint32_t>{0x0001C2FF});
     }
 
     void rawTcpSaysItCannot()

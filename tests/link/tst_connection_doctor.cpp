@@ -3,6 +3,8 @@
 #include "sim_line_transport.h"
 
 #include "connection_doctor.h"
+#include "tcp_robot_server.h"
+#include "tcp_transport.h"
 
 #include <QSignalSpy>
 #include <QTest>
@@ -16,16 +18,45 @@ constexpr int kTimeoutMs = 30000;
 const std::uint8_t kStart[] = {128};
 const std::uint8_t kStartAndPower[] = {128, 133};
 
-ConnectionDoctor::Report diagnose(SimLineTransport &line, std::optional<oi::ProfileId> profile, int baud = 0)
+// The doctor on an open transport, to its report.
+ConnectionDoctor::Report runDoctor(Transport &transport, std::optional<oi::ProfileId> profile, int baud)
 {
-    line.open();
-    ConnectionDoctor doctor(line, profile, baud);
-    QObject::connect(&line, &Transport::bytesReceived, &doctor, &ConnectionDoctor::feed);
+    ConnectionDoctor doctor(transport, profile, baud);
+    QObject::connect(&transport, &Transport::bytesReceived, &doctor, &ConnectionDoctor::feed);
     QSignalSpy done(&doctor, &ConnectionDoctor::finished);
     doctor.start();
     if (!done.wait(kTimeoutMs))
         return {};
     return done.first().first().value<ConnectionDoctor::Report>();
+}
+
+ConnectionDoctor::Report diagnose(SimLineTransport &line, std::optional<oi::ProfileId> profile, int baud = 0)
+{
+    line.open();
+    return runDoctor(line, profile, baud);
+}
+
+// The doctor over TCP to roomba-sim's server, whose robot an earlier client
+// left streaming at 57600 baud while the bridge's line is at 115200.
+ConnectionDoctor::Report diagnoseOverTcp(bool rfc2217)
+{
+    sim::TcpRobotServer server(oi::profile(oi::ProfileId::Create2));
+    server.setRfc2217(rfc2217);
+    if (!server.listen(QHostAddress::LocalHost, 0))
+        return {};
+    sim::VirtualRobot &robot = server.robot().robot();
+    const std::uint8_t toBaud[] = {128, 129, 10};
+    const std::uint8_t stream[] = {148, 1, 35};
+    robot.receive(toBaud);
+    robot.advance(std::chrono::milliseconds(100));
+    robot.receive(stream);
+    TcpTransport transport(QStringLiteral("127.0.0.1"), server.serverPort());
+    transport.setRfc2217(rfc2217, BrcLine::Rts, true);
+    QSignalSpy opened(&transport, &Transport::opened);
+    transport.open();
+    if (!opened.wait(kTimeoutMs))
+        return {};
+    return runDoctor(transport, oi::ProfileId::Create2, 0);
 }
 
 QString explain(const ConnectionDoctor::Report &r)
@@ -55,6 +86,22 @@ private slots:
         QVERIFY2(r.finding == Finding::NothingComesBack, qPrintable(explain(r)));
         QCOMPARE(r.steps.size(), 4); // three bauds and the pin out of reach
         QVERIFY(r.steps.last().contains(QStringLiteral("no BRC pin")));
+    }
+
+    // Over RFC 2217 the doctor sets the bridge's rate, as on a serial port.
+    void wrongBaudOverRfc2217()
+    {
+        const auto r = diagnoseOverTcp(true);
+        QVERIFY2(r.finding == Finding::WrongBaud, qPrintable(explain(r)));
+        QCOMPARE(r.baud, 57600);
+    }
+
+    // Raw TCP cannot change the bridge's rate: junk, and the doctor says so.
+    void wrongBaudOverRawTcp()
+    {
+        const auto r = diagnoseOverTcp(false);
+        QVERIFY2(r.finding == Finding::GarbledAtEveryBaud, qPrintable(explain(r)));
+        QVERIFY2(r.summary.contains(QStringLiteral("cannot change the bridge's rate")), qPrintable(r.summary));
     }
 
     void wrongBaudNamesTheOneThatAnswers()

@@ -12,6 +12,7 @@
 #include <cstring>
 #include <functional>
 #include <fcntl.h>
+#include <termios.h>
 #include <unistd.h>
 
 using namespace oi;
@@ -51,6 +52,7 @@ class TestPtyRobotServer : public QObject {
 private slots:
     void streamsToAClientThatComesBack();
     void closeRemovesTheDevice();
+    void theLineHasTheClientsRate();
 };
 
 void TestPtyRobotServer::streamsToAClientThatComesBack()
@@ -125,6 +127,64 @@ void TestPtyRobotServer::closeRemovesTheDevice()
     QVERIFY(!server.isOpen());
     QVERIFY(server.slavePath().isEmpty());
     QTRY_VERIFY_WITH_TIMEOUT(!QFile::exists(path), 5000);
+}
+
+// After Baud (129) the robot talks at the new rate. A client that stays at
+// the old one hears junk and is not heard; once it sets the same rate on its
+// port, frames come again.
+void TestPtyRobotServer::theLineHasTheClientsRate()
+{
+    const RobotProfile &profile = oi::profile(ProfileId::Create2);
+    sim::PtyRobotServer server(profile);
+    QVERIFY(server.open());
+    const CommandEncoder encoder(profile);
+    const int fd = ::open(QFile::encodeName(server.slavePath()).constData(), O_RDWR | O_NOCTTY | O_NONBLOCK);
+    QVERIFY2(fd >= 0, std::strerror(errno));
+    // A client that sets no rate gets the robot's.
+    termios tio{};
+    QCOMPARE(tcgetattr(fd, &tio), 0);
+    QCOMPARE(cfgetospeed(&tio), speed_t(B115200));
+    QTRY_VERIFY_WITH_TIMEOUT(server.clientConnected(), 5000);
+    QCOMPARE(server.clientBaud(), 115200);
+
+    StreamParser parser(profile);
+    std::vector<OiMode> modes;
+    parser.setSnapshotHandler([&](const SensorSnapshot &s, FrameKind kind) {
+        if (kind == FrameKind::Stream)
+            modes.push_back(s.oiMode());
+    });
+    Bytes start = encoder.start().value();
+    const Bytes stream = encoder.stream(std::vector<int>{35}).value();
+    start.insert(start.end(), stream.begin(), stream.end());
+    QVERIFY(writeAll(fd, start));
+    QVERIFY(readUntil(fd, parser, [&] { return modes.size() >= 5; }));
+
+    // To 19200; the client stays at 115200.
+    QVERIFY(writeAll(fd, encoder.baud(oi::baudCodeFor(19200)).value()));
+    QTRY_COMPARE_WITH_TIMEOUT(server.robot().robot().baud(), 19200, 5000);
+    std::size_t framesBefore = modes.size();
+    QByteArray junk;
+    // Ten frames' time of junk: the robot's 100 ms to settle are over.
+    QVERIFY(readUntil(fd, parser, [&] { return junk.size() >= 50; }, &junk));
+    QVERIFY(modes.size() <= framesBefore + 1); // at most one frame that was on its way
+    framesBefore = modes.size();
+    // Safe at the old rate is not heard.
+    QVERIFY(writeAll(fd, encoder.safe().value()));
+    junk.clear();
+    QVERIFY(readUntil(fd, parser, [&] { return junk.size() >= 50; }, &junk));
+    QCOMPARE(modes.size(), framesBefore);
+    QCOMPARE(server.robot().robot().mode(), OiMode::Passive);
+
+    // The client follows: frames again, still Passive; then Safe is heard.
+    cfsetspeed(&tio, B19200);
+    QCOMPARE(tcsetattr(fd, TCSANOW, &tio), 0);
+    QCOMPARE(server.clientBaud(), 19200);
+    parser.reset();
+    QVERIFY(readUntil(fd, parser, [&] { return modes.size() >= framesBefore + 5; }));
+    QCOMPARE(modes.back(), OiMode::Passive);
+    QVERIFY(writeAll(fd, encoder.safe().value()));
+    QVERIFY(readUntil(fd, parser, [&] { return modes.back() == OiMode::Safe; }));
+    ::close(fd);
 }
 
 QTEST_GUILESS_MAIN(TestPtyRobotServer)

@@ -2,11 +2,13 @@
 #include "real_time_robot.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace sim {
 
 namespace {
-constexpr int kTickMs = 5;
+// The robot wakes when its next stream frame is due, and at least this often.
+constexpr int kMaxTickMs = 15;
 // After the process was stopped or starved for a while, the robot catches up
 // at most this much at once, rather than sending a burst of old frames.
 constexpr qint64 kMaxCatchUpNs = 500'000'000;
@@ -16,20 +18,25 @@ RealTimeRobot::RealTimeRobot(const oi::RobotProfile &profile, std::uint32_t seed
     : QObject(parent), m_robot(profile, seed), m_timer(this) // a child, so moveToThread takes it along
 {
     m_timer.setTimerType(Qt::PreciseTimer);
-    m_timer.setInterval(kTickMs);
+    m_timer.setSingleShot(true);
     connect(&m_timer, &QTimer::timeout, this, &RealTimeRobot::tick);
 }
 
 void RealTimeRobot::start()
 {
-    if (m_timer.isActive())
+    if (m_running)
         return;
     m_clock.start();
     m_lastNs = 0;
-    m_timer.start();
+    m_running = true;
+    tick();
 }
 
-void RealTimeRobot::stop() { m_timer.stop(); }
+void RealTimeRobot::stop()
+{
+    m_running = false;
+    m_timer.stop();
+}
 
 void RealTimeRobot::write(const QByteArray &bytes)
 {
@@ -63,6 +70,13 @@ void RealTimeRobot::tick()
         m_robot.advance(Microseconds(qint64(double(us) * m_timeScale)));
     }
     const oi::Bytes out = m_robot.takeOutput();
+    if (m_running) {
+        // Nothing the client can see happens between frames (replies go out
+        // from write()), so the thread sleeps until the next one is due
+        // rather than waking every few milliseconds.
+        const double untilMs = double(m_robot.untilNextFrame().count()) / 1000.0 / m_timeScale;
+        m_timer.start(std::clamp(int(std::ceil(untilMs)), 1, kMaxTickMs));
+    }
     if (!out.empty())
         emit bytesOut(QByteArray(reinterpret_cast<const char *>(out.data()), qsizetype(out.size())));
 }

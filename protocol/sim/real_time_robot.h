@@ -11,8 +11,9 @@
 namespace sim {
 
 // Runs a VirtualRobot in real time on the thread it lives on: a timer
-// advances the robot's clock by the time that really passed, and whatever
-// the robot says is emitted as bytes.
+// advances the robot's clock by the time that really passed, waking when
+// the next stream frame is due, and whatever the robot says is emitted as
+// bytes.
 class RealTimeRobot : public QObject {
     Q_OBJECT
 public:
@@ -23,7 +24,7 @@ public:
     const VirtualRobot &robot() const { return m_robot; }
 
 public slots:
-    void start(); // begins ticking (every few ms)
+    void start(); // begins ticking
     void stop();
     // Bytes from the client. Handled at once, so replies can go out before
     // the next tick.
@@ -48,6 +49,7 @@ private:
     QTimer m_timer;
     QElapsedTimer m_clock;
     qint64 m_lastNs = 0;
+    bool m_running = false;
     double m_timeScale = 1;
 };
 

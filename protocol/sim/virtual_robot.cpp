@@ -25,7 +25,7 @@ using namespace std::chrono_literals;
 // The robot's clock: physics and the OI's checks run every millisecond, the
 // stream goes out every 15 ms of that clock.
 constexpr Microseconds kTick = 1ms;
-constexpr Microseconds kStreamPeriod = 15ms;
+constexpr Microseconds kStreamPeriod = VirtualRobot::kStreamPeriod;
 constexpr Microseconds kButtonPress = 166'667us; // 165 releases after 1/6 s
 constexpr Microseconds kBaudSettle = 100ms;
 // The documents: Start from Off beeps once (Roomba 500, Create 2); Stop plays

@@ -53,6 +53,11 @@ public:
     // --- Time ---
     void advance(Microseconds dt);
     Microseconds now() const;
+    // Stream frames go out when the clock reaches a multiple of this.
+    static constexpr Microseconds kStreamPeriod{15'000};
+    // How long until the robot next says something of its own accord (a
+    // stream frame); replies go out as the question comes in.
+    Microseconds untilNextFrame() const { return kStreamPeriod - now() % kStreamPeriod; }
 
     // --- World and pose ---
     void setWorld(World world);

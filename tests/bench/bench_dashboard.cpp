@@ -6,7 +6,7 @@
 // (tests/bench/perf_table.sh).
 //
 //   bench_dashboard [--seconds N] [--history-seconds S] [--hide DOCK]...
-//                   [--robots N] [--every-dock] [--fleet] [--xvfb]
+//                   [--robots N] [--every-dock] [--fleet] [--paints] [--xvfb]
 //
 // --hide closes a dock by object name (plotsDock, inspectorDock, ...), to
 // see what each view costs.
@@ -20,6 +20,8 @@
 // --fleet: a classroom in one window, 30 robots, each one's card in the robot
 // list, and the selected robot with every dock open (--robots 30
 // --every-dock). The MQTT fleet console is not measured here.
+// --paints: at the end, which widgets were painted how often and over how
+// many pixels a second: where drawing time goes.
 // --xvfb: runs itself again under xvfb-run on a 1600x1000 screen with the xcb
 // platform; otherwise set QT_QPA_PLATFORM (offscreen) yourself.
 #include "main_window.h"
@@ -30,6 +32,7 @@
 #include <QDockWidget>
 #include <QElapsedTimer>
 #include <QFile>
+#include <QPaintEvent>
 #include <QSettings>
 #include <QStandardPaths>
 #include <QStyleFactory>
@@ -40,6 +43,8 @@
 
 #include <cstdio>
 #include <cstring>
+#include <algorithm>
+#include <map>
 #include <vector>
 
 namespace {
@@ -81,6 +86,41 @@ private:
     MainWindow *m_window;
     QElapsedTimer *m_clock;
 };
+
+// Counts paint events by widget class (and object name, where it has one).
+class PaintCounter : public QObject {
+public:
+    struct Count {
+        std::uint64_t paints = 0;
+        double pixels = 0;
+    };
+    std::map<QString, Count> counts;
+
+protected:
+    bool eventFilter(QObject *watched, QEvent *event) override
+    {
+        if (event->type() == QEvent::Paint && watched->isWidgetType()) {
+            QString name = QString::fromLatin1(watched->metaObject()->className());
+            if (!watched->objectName().isEmpty())
+                name += QLatin1Char(' ') + watched->objectName();
+            Count &c = counts[name];
+            ++c.paints;
+            const QRect r = static_cast<QPaintEvent *>(event)->rect();
+            c.pixels += double(r.width()) * r.height();
+        }
+        return QObject::eventFilter(watched, event);
+    }
+};
+
+void printPaints(const PaintCounter &counter, double seconds)
+{
+    std::vector<std::pair<QString, PaintCounter::Count>> rows(counter.counts.begin(), counter.counts.end());
+    std::sort(rows.begin(), rows.end(), [](const auto &a, const auto &b) { return a.second.pixels > b.second.pixels; });
+    std::printf("paints per second, by widget (most pixels first):\n");
+    for (std::size_t i = 0; i < rows.size() && i < 25; ++i)
+        std::printf("  %8.2f paints/s %10.0f px/s  %s\n", rows[i].second.paints / seconds,
+                    rows[i].second.pixels / seconds, qPrintable(rows[i].first));
+}
 
 // Runs this benchmark again under xvfb-run, without --xvfb. Returns only on failure.
 int runUnderXvfb(int argc, char **argv)
@@ -129,6 +169,7 @@ int main(int argc, char **argv)
     int seconds = 600;
     int robots = 1;
     bool everyDock = false;
+    bool paints = false;
     double historySeconds = 0;
     QStringList hidden;
     const QStringList args = app.arguments();
@@ -136,6 +177,8 @@ int main(int argc, char **argv)
         const bool hasValue = i + 1 < args.size();
         if (args[i] == "--every-dock") {
             everyDock = true;
+        } else if (args[i] == "--paints") {
+            paints = true;
         } else if (args[i] == "--fleet") {
             everyDock = true;
             robots = 30;
@@ -235,8 +278,13 @@ int main(int argc, char **argv)
             app.quit();
         }
     });
+    PaintCounter paintCounter;
+    if (paints)
+        app.installEventFilter(&paintCounter);
     sampler.start();
     const int status = app.exec();
     window.session().closeAndWait();
+    if (paints)
+        printPaints(paintCounter, clock.elapsed() / 1000.0);
     return status;
 }

@@ -20,7 +20,8 @@ class QTimer;
 // asks for a stop once and then nothing. Other buttons can ask for Stop All or
 // a mode change.
 //
-// SDL is polled every 10 ms on the thread that owns this object. SDL has one
+// SDL is polled every 10 ms on the thread that owns this object (every
+// 250 ms while no pad is plugged in). SDL has one
 // event queue per program, so keep one GamepadInput at a time.
 class GamepadInput : public QObject {
     Q_OBJECT

@@ -6,6 +6,7 @@
 #include "oi_text.h"
 #include "sensor_history.h"
 #include "trace_columns.h"
+#include "trace_plot.h"
 
 #include <QComboBox>
 #include <QElapsedTimer>
@@ -30,6 +31,9 @@
 
 namespace {
 
+// A feed whose drawn line has not changed since the plot was drawn.
+constexpr double kUnchanged = std::numeric_limits<double>::infinity();
+
 // Line colours for the channels of one plot. Not state colours, so they are
 // not in the display palette; mid-tone hues that read on light and dark
 // backgrounds alike.
@@ -46,8 +50,6 @@ const double kWindowChoices[] = {10, 20, 30, 60, 120, 300, 600};
 constexpr double kMinTimeSpan = 0.1;
 constexpr double kMaxTimeSpan = 4 * 3600.0;
 
-// The layer the traces are drawn on, apart from the axes and the grid.
-const QString kTracesLayer = QStringLiteral("traces");
 
 // The value axis is fitted again when the data leaves it or fills less than
 // this part of it, not on every change.
@@ -78,6 +80,8 @@ struct SensorPlots::GraphFeed {
     // The time span whose samples the graph holds in full.
     double loadedFrom = 0.0;
     double loadedTo = 0.0;
+    // The earliest time whose drawn line changed since the plot was drawn.
+    double changedFrom = kUnchanged;
 };
 
 struct SensorPlots::Panel {
@@ -85,7 +89,7 @@ struct SensorPlots::Panel {
     ChannelChooser *chooser = nullptr;
     QLabel *legend = nullptr;
     QToolButton *remove = nullptr;
-    QCustomPlot *plot = nullptr;
+    TracePlot *plot = nullptr;
     QLabel *readout = nullptr; // the tracer's values, beside the mouse
     QCPItemText *hint = nullptr;
     std::vector<int> channels;
@@ -241,7 +245,7 @@ int SensorPlots::addPlot(const std::vector<int> &channels)
     p->remove->setAccessibleName(tr("Remove this plot"));
     connect(p->remove, &QToolButton::clicked, this, [this, p] { removePlot(indexOf(p)); });
 
-    p->plot = new QCustomPlot(p->frame);
+    p->plot = new TracePlot(p->frame);
     p->plot->setMinimumHeight(110);
     // Reachable with Tab: paused, the arrow keys pan and +/- zoom.
     p->plot->setFocusPolicy(Qt::StrongFocus);
@@ -251,14 +255,6 @@ int SensorPlots::addPlot(const std::vector<int> &channels)
     // frame cost far less than antialiased ones and look the same.
     p->plot->setNotAntialiasedElements(QCP::aeAxes | QCP::aeGrid | QCP::aeSubGrid);
     p->plot->installEventFilter(this);
-    // The traces on a buffered layer of their own, on top: new samples
-    // redraw that layer alone over the cached axes and grid. Everything else
-    // shares the one buffer below (the overlay, unused here, would cost a
-    // third), so a frame composes two pixmaps, as it did with one layer.
-    QCPLayer *overlay = p->plot->layer(QStringLiteral("overlay"));
-    overlay->setMode(QCPLayer::lmLogical);
-    p->plot->addLayer(kTracesLayer, overlay, QCustomPlot::limAbove);
-    p->plot->layer(kTracesLayer)->setMode(QCPLayer::lmBuffered);
     connect(p->plot, &QCustomPlot::afterReplot, this, [p] { ++p->draws.full; });
     p->plot->axisRect()->setRangeDrag(Qt::Horizontal);
     p->plot->axisRect()->setRangeZoom(Qt::Horizontal);
@@ -515,12 +511,35 @@ void SensorPlots::refresh()
         if (panel->pendingWhole) {
             panel->plot->replot(); // counted by afterReplot
         } else {
-            panel->plot->layer(kTracesLayer)->replot();
+            panel->plot->replotTraces(changedTracesRect(*panel));
             ++panel->draws.traces;
         }
         panel->pending = panel->pendingWhole = false;
         panel->drawnAtMs = now;
+        for (GraphFeed &feed : panel->feeds)
+            feed.changedFrom = kUnchanged;
     }
+}
+
+QRect SensorPlots::changedTracesRect(const Panel &panel) const
+{
+    double from = kUnchanged;
+    for (const GraphFeed &feed : panel.feeds)
+        from = std::min(from, feed.changedFrom);
+    // The data area, and a few pixels round it for the pen; from the first
+    // changed point to the newest sample.
+    constexpr int kPen = 3;
+    QRect area = panel.plot->axisRect()->rect().adjusted(-kPen, -kPen, kPen, kPen);
+    if (from == kUnchanged)
+        return {};
+    if (std::isfinite(from)) {
+        const QCPAxis *time = panel.plot->xAxis;
+        const double left = time->coordToPixel(from) - kPen;
+        const double right = m_history ? time->coordToPixel(m_history->newestTime()) + kPen : area.right();
+        area.setLeft(std::max(area.left(), int(std::floor(left))));
+        area.setRight(std::min(area.right(), int(std::ceil(right))));
+    }
+    return area.intersected(panel.plot->rect());
 }
 
 qint64 SensorPlots::minRedrawMs() const
@@ -558,6 +577,8 @@ bool SensorPlots::updateFeed(GraphFeed &feed, double from, double to, double col
     if (!m_history || !m_history->isChannel(feed.channel)) {
         const bool hadData = !data->isEmpty();
         data->clear();
+        if (hadData)
+            feed.changedFrom = -std::numeric_limits<double>::infinity();
         feed.valid = false;
         return hadData;
     }
@@ -572,10 +593,14 @@ bool SensorPlots::updateFeed(GraphFeed &feed, double from, double to, double col
         const auto &columns = feed.columns.columns();
         if (first == 0) {
             data->clear();
+            feed.changedFrom = -std::numeric_limits<double>::infinity();
         } else {
             // Everything after the newest unchanged column's last point.
             const TraceColumns::Column &kept = columns[first - 1];
-            data->removeAfter(std::max(kept.min.time, kept.max.time));
+            const double keptUntil = std::max(kept.min.time, kept.max.time);
+            data->removeAfter(keptUntil);
+            // The line on from that point is drawn anew.
+            feed.changedFrom = std::min(feed.changedFrom, keptUntil);
         }
         QVector<QCPGraphData> points;
         points.reserve(qsizetype(2 * (columns.size() - first)));
@@ -680,14 +705,14 @@ void SensorPlots::rebuildGraphs(Panel &panel)
         GraphFeed feed;
         feed.channel = panel.channels[i];
         feed.graph = panel.plot->addGraph();
-        feed.graph->setLayer(kTracesLayer);
+        feed.graph->setLayer(panel.plot->tracesLayer());
         feed.graph->setName(ChannelChooser::channelLabel(*info));
         feed.graph->setPen(QPen(kSeriesColors[i], 1.6));
         feed.graph->setLineStyle(isStepChannel(*info) ? QCPGraph::lsStepLeft : QCPGraph::lsLine);
         // Tied to its graph when first shown: tying it to an empty graph
         // makes QCustomPlot complain.
         feed.tracer = new QCPItemTracer(panel.plot);
-        feed.tracer->setLayer(kTracesLayer); // over its line
+        feed.tracer->setLayer(panel.plot->tracesLayer()); // over its line
         feed.tracer->setInterpolating(false);
         feed.tracer->setStyle(QCPItemTracer::tsCircle);
         feed.tracer->setSize(8);

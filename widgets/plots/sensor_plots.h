@@ -126,6 +126,8 @@ private:
     void rebuildGraphs(Panel &panel);
     bool updateFeed(GraphFeed &feed, double from, double to, double columnSeconds);
     QCPRange liveTimeRange() const;
+    // The part of the plot where the traces changed since it was drawn.
+    QRect changedTracesRect(const Panel &panel) const;
     // Pixel columns of the plot's data area.
     int columnCount(const Panel &panel) const;
     // The shortest time between two redraws of a plot: one screen refresh.

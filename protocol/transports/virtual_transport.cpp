@@ -27,14 +27,7 @@ void VirtualTransport::open()
     if (!m_robot) {
         m_robot = std::make_unique<RealTimeRobot>(oi::profile(m_profile), m_seed);
         m_robot->robot().joinRoom(m_room, m_id);
-        // Queued even on the same thread: a reply must reach the link after
-        // the write that asked for it has returned, as on a real line.
-        connect(m_robot.get(), &RealTimeRobot::bytesOut, this,
-                [this](const QByteArray &bytes) {
-                    if (m_open)
-                        emit bytesReceived(bytes);
-                },
-                Qt::QueuedConnection);
+        connect(m_robot.get(), &RealTimeRobot::bytesOut, this, &VirtualTransport::robotSaid);
     }
     m_open = true;
     m_robot->start();
@@ -48,11 +41,32 @@ void VirtualTransport::close()
         m_robot->stop();
 }
 
+void VirtualTransport::robotSaid(const QByteArray &bytes)
+{
+    if (!m_open)
+        return;
+    // What the robot says while the link writes to it (a reply) must reach
+    // the link after that write has returned, as on a real line; what it says
+    // on its own (a stream frame) goes at once, after anything still queued.
+    if (m_writing || m_queued > 0) {
+        ++m_queued;
+        QMetaObject::invokeMethod(this, [this, bytes] {
+            --m_queued;
+            if (m_open)
+                emit bytesReceived(bytes);
+        }, Qt::QueuedConnection);
+        return;
+    }
+    emit bytesReceived(bytes);
+}
+
 bool VirtualTransport::setBrcLow(bool low)
 {
     if (!m_open)
         return false;
+    m_writing = true;
     m_robot->setBrcLow(low);
+    m_writing = false;
     return true;
 }
 
@@ -60,7 +74,9 @@ bool VirtualTransport::write(const QByteArray &bytes)
 {
     if (!m_open)
         return false;
+    m_writing = true;
     m_robot->write(bytes);
+    m_writing = false;
     return true;
 }
 

@@ -40,12 +40,17 @@ public:
     RealTimeRobot *robot() const { return m_robot.get(); }
 
 private:
+    void robotSaid(const QByteArray &bytes);
+
     oi::ProfileId m_profile;
     std::uint32_t m_seed;
     std::shared_ptr<Room> m_room;
     RobotId m_id;
     std::unique_ptr<RealTimeRobot> m_robot;
+
     bool m_open = false;
+    bool m_writing = false;
+    int m_queued = 0; // replies on their way to the link
 };
 
 } // namespace sim

@@ -199,6 +199,40 @@ private slots:
         QCOMPARE(plots.drawCounts(1).traces, second.traces + 2);
     }
 
+    // New samples redraw the traces only where they changed; what is on the
+    // screen then is what a whole redraw would show, line and steps alike.
+    void tracesDrawnInPartLookAsDrawnWhole()
+    {
+        Scene scene({22, 8});
+        auto sample = [&](int k) {
+            SensorSnapshot s(oi::profile(ProfileId::Create2));
+            s.set(22, 14000 + (k * 37) % 100); // within the value axis once it is set
+            s.set(8, (k / 7) % 2);
+            QVERIFY(scene.history.append(k / 10.0, s));
+        };
+        for (int k = 0; k < 100; ++k)
+            sample(k);
+        scene.refresh();
+        QCustomPlot *plot = scene.plots.plot(0);
+        const QImage before = plot->grab().toImage();
+        const SensorPlots::DrawCounts drawn = scene.plots.drawCounts(0);
+        for (int k = 100; k < 140; ++k) {
+            sample(k);
+            scene.refresh();
+        }
+        QCOMPARE(scene.plots.drawCounts(0).full, drawn.full);
+        QVERIFY(scene.plots.drawCounts(0).traces >= drawn.traces + 30);
+        const QImage inPart = plot->grab().toImage();
+        QVERIFY(inPart != before);
+        plot->replot();
+        const QImage whole = plot->grab().toImage();
+        int differing = 0;
+        for (int y = 0; y < whole.height(); ++y)
+            for (int x = 0; x < whole.width(); ++x)
+                differing += inPart.pixel(x, y) != whole.pixel(x, y);
+        QCOMPARE(differing, 0);
+    }
+
     void hiddenPlotsCostNothingAndCatchUp()
     {
         Scene scene({22});

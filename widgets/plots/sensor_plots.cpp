@@ -704,8 +704,7 @@ void SensorPlots::rebuildGraphs(Panel &panel)
         const oi::PacketInfo *info = m_profile->packet(panel.channels[i]);
         GraphFeed feed;
         feed.channel = panel.channels[i];
-        feed.graph = panel.plot->addGraph();
-        feed.graph->setLayer(panel.plot->tracesLayer());
+        feed.graph = panel.plot->addTrace();
         feed.graph->setName(ChannelChooser::channelLabel(*info));
         feed.graph->setPen(QPen(kSeriesColors[i], 1.6));
         feed.graph->setLineStyle(isStepChannel(*info) ? QCPGraph::lsStepLeft : QCPGraph::lsLine);

@@ -105,8 +105,8 @@ protected:
                 name += QLatin1Char(' ') + watched->objectName();
             Count &c = counts[name];
             ++c.paints;
-            const QRect r = static_cast<QPaintEvent *>(event)->rect();
-            c.pixels += double(r.width()) * r.height();
+            for (const QRect &r : static_cast<QPaintEvent *>(event)->region())
+                c.pixels += double(r.width()) * r.height();
         }
         return QObject::eventFilter(watched, event);
     }

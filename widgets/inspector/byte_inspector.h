@@ -46,8 +46,10 @@ public:
     // since the link was opened ("12.345").
     enum class TimeFormat : std::uint8_t { ClockTime, SinceConnect };
     static constexpr int kDefaultMaxEntries = 5000;
-    // 25 Hz: smooth to read, and well under the display rate.
-    static constexpr int kRenderIntervalMs = 40;
+    // 10 Hz: the stream brings 67 entries a second, more than anyone reads
+    // as they pass; ten updates a second keep the log live, and each one
+    // scrolls and lays out the whole view.
+    static constexpr int kRenderIntervalMs = 100;
 
     explicit ByteInspector(QWidget *parent = nullptr);
 

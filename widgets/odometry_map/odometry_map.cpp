@@ -219,6 +219,8 @@ void OdometryMap::setTruePoses(const QList<TruePose> &poses)
 
 void OdometryMap::setSelectedRobot(std::optional<int> robot)
 {
+    if (robot == m_selected)
+        return; // set on every display tick: the same one costs no repaint
     m_selected = robot;
     m_dirty = true;
 }

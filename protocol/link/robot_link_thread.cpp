@@ -2,20 +2,129 @@
 #include "robot_link_thread.h"
 
 #include <QCoreApplication>
+#include <QHash>
+#include <QThreadStorage>
+#include <QTimer>
 
 #include <sys/resource.h>
 
 namespace oilink {
 
+// One per thread that has RobotLinkThreads: a timer that hands out what
+// every one of them queued, so their frames cost that thread one wake-up
+// each kDeliveryMs however many robots stream. Lives while any of them does.
+class FrameDelivery : public QObject {
+public:
+    static void add(RobotLinkThread *link)
+    {
+        FrameDelivery *&delivery = s_byThread.localData();
+        if (!delivery)
+            delivery = new FrameDelivery;
+        delivery->m_links.append(link);
+    }
+    // A link thread started: hand out its frames.
+    static void started()
+    {
+        if (FrameDelivery *delivery = s_byThread.localData(); delivery && !delivery->m_timer.isActive())
+            delivery->m_timer.start();
+    }
+    static void remove(RobotLinkThread *link)
+    {
+        FrameDelivery *&delivery = s_byThread.localData();
+        if (!delivery)
+            return;
+        delivery->m_links.removeOne(link);
+        if (delivery->m_links.isEmpty()) {
+            delete delivery;
+            delivery = nullptr;
+        }
+    }
+
+private:
+    FrameDelivery()
+    {
+        m_timer.setInterval(RobotLinkThread::kDeliveryMs);
+        m_timer.setTimerType(Qt::PreciseTimer);
+        connect(&m_timer, &QTimer::timeout, this, [this] {
+            // A copy: a handler may open or close robots.
+            const QList<QPointer<RobotLinkThread>> links(m_links.cbegin(), m_links.cend());
+            bool running = false;
+            for (const QPointer<RobotLinkThread> &link : links) {
+                if (!link)
+                    continue;
+                link->deliverQueued();
+                running |= link->isRunning();
+            }
+            if (!running)
+                m_timer.stop(); // nothing can come until a link starts again
+        });
+    }
+
+    static QThreadStorage<FrameDelivery *> s_byThread;
+    QTimer m_timer;
+    QList<RobotLinkThread *> m_links;
+};
+
+QThreadStorage<FrameDelivery *> FrameDelivery::s_byThread;
+
 RobotLinkThread::RobotLinkThread(QObject *parent) : QObject(parent)
 {
     registerLinkMetaTypes();
     m_thread.setObjectName(QStringLiteral("robot link"));
+    FrameDelivery::add(this);
 }
 
 RobotLinkThread::~RobotLinkThread()
 {
     stop();
+    FrameDelivery::remove(this);
+}
+
+void RobotLinkThread::queue(Queued item)
+{
+    QMutexLocker lock(&m_queueMutex);
+    m_queue.push_back(std::move(item));
+    ++m_queuedCount;
+}
+
+void RobotLinkThread::deliverQueued(quint64 upTo)
+{
+    std::vector<Queued> items;
+    {
+        QMutexLocker lock(&m_queueMutex);
+        const quint64 first = m_queuedCount - m_queue.size(); // the number of m_queue.front()
+        const std::size_t take = std::size_t(std::min<quint64>(m_queue.size(), upTo > first ? upTo - first : 0));
+        items.assign(std::make_move_iterator(m_queue.begin()), std::make_move_iterator(m_queue.begin() + take));
+        m_queue.erase(m_queue.begin(), m_queue.begin() + take);
+    }
+    for (const Queued &item : items) {
+        if (item.snapshot)
+            emit snapshot(*item.snapshot, item.readSeconds);
+        else
+            emit rawBytesReceived(item.bytes);
+    }
+}
+
+template <typename... Args, typename Handler>
+void RobotLinkThread::relay(RobotLink *link, void (RobotLink::*signal)(Args...), Handler handler)
+{
+    connect(
+        link, signal, link,
+        [this, handler](Args... args) {
+            quint64 upTo;
+            {
+                QMutexLocker lock(&m_queueMutex);
+                upTo = m_queuedCount;
+            }
+            QMetaObject::invokeMethod(
+                this,
+                [this, handler, upTo, args...] {
+                    deliverQueued(upTo);
+                    handler(args...);
+                },
+                Qt::QueuedConnection);
+        },
+        Qt::DirectConnection);
 }
 
 void RobotLinkThread::setTransportFactory(RobotLink::TransportFactory factory)
@@ -33,25 +142,35 @@ void RobotLinkThread::start()
     connect(&m_thread, &QThread::finished, link, &QObject::deleteLater);
     m_link = link;
 
-    connect(link, &RobotLink::snapshot, this, &RobotLinkThread::snapshot);
-    connect(link, &RobotLink::sensorReply, this, &RobotLinkThread::sensorReply);
-    connect(link, &RobotLink::scriptReply, this, &RobotLinkThread::scriptReply);
-    connect(link, &RobotLink::scriptFailed, this, &RobotLinkThread::scriptFailed);
-    connect(link, &RobotLink::stateChanged, this, [this](LinkState state) {
+    connect(
+        link, &RobotLink::snapshot, link,
+        [this](const oi::SensorSnapshot &frame, double readSeconds) {
+            queue({frame, readSeconds, {}});
+        },
+        Qt::DirectConnection);
+    connect(
+        link, &RobotLink::rawBytesReceived, link,
+        [this](const QByteArray &bytes) { queue({std::nullopt, 0, bytes}); }, Qt::DirectConnection);
+    relay(link, &RobotLink::sensorReply, [this](const oi::SensorSnapshot &r) { emit sensorReply(r); });
+    relay(link, &RobotLink::scriptReply, [this](const QByteArray &b) { emit scriptReply(b); });
+    relay(link, &RobotLink::scriptFailed, [this](const QString &m) { emit scriptFailed(m); });
+    relay(link, &RobotLink::stateChanged, [this](LinkState state) {
         m_state = state;
         emit stateChanged(state);
     });
-    connect(link, &RobotLink::statistics, this, [this](const LinkStats &stats) {
+    relay(link, &RobotLink::statistics, [this](const LinkStats &stats) {
         m_stats = stats;
         emit statistics(stats);
     });
-    connect(link, &RobotLink::streamStarted, this, &RobotLinkThread::streamStarted);
-    connect(link, &RobotLink::rawBytesSent, this, &RobotLinkThread::rawBytesSent);
-    connect(link, &RobotLink::rawBytesReceived, this, &RobotLinkThread::rawBytesReceived);
-    connect(link, &RobotLink::errorOccurred, this, &RobotLinkThread::errorOccurred);
-    connect(link, &RobotLink::recordingStatus, this, &RobotLinkThread::recordingStatus);
-    connect(link, &RobotLink::replayStatus, this, &RobotLinkThread::replayStatus);
+    relay(link, &RobotLink::streamStarted, [this](oi::ProfileId profile, int baud, const QList<int> &packets) {
+        emit streamStarted(profile, baud, packets);
+    });
+    relay(link, &RobotLink::rawBytesSent, [this](const QByteArray &b) { emit rawBytesSent(b); });
+    relay(link, &RobotLink::errorOccurred, [this](const QString &m) { emit errorOccurred(m); });
+    relay(link, &RobotLink::recordingStatus, [this](const RecordingStatus &st) { emit recordingStatus(st); });
+    relay(link, &RobotLink::replayStatus, [this](const ReplayStatus &st) { emit replayStatus(st); });
     m_thread.start();
+    FrameDelivery::started();
 }
 
 void RobotLinkThread::stop()
@@ -133,6 +252,7 @@ void RobotLinkThread::controlReplay(const ReplayCommand &command)
 void RobotLinkThread::deliverPending()
 {
     QCoreApplication::sendPostedEvents(this, QEvent::MetaCall);
+    deliverQueued();
 }
 
 std::chrono::microseconds RobotLinkThread::workerCpuTime() const

@@ -3,11 +3,14 @@
 
 #include "robot_link.h"
 
+#include <QMutex>
 #include <QObject>
 #include <QPointer>
 #include <QThread>
 
 #include <chrono>
+#include <optional>
+#include <vector>
 
 namespace oilink {
 
@@ -15,9 +18,17 @@ namespace oilink {
 // it: every call is a queued invocation, every signal arrives queued and is
 // re-emitted here. The link and its transport are created and destroyed on
 // the worker thread.
+//
+// Stream frames and the bytes they came in are not posted one by one: the
+// worker queues them, and one timer on this object's thread hands out what
+// every link on it queued, kDeliveryMs apart. Thirty robots streaming at
+// 66.7 Hz then wake that thread 40 times a second, not 4000. Every other
+// signal hands out the frames queued before it first, so the order holds.
 class RobotLinkThread : public QObject {
     Q_OBJECT
 public:
+    static constexpr int kDeliveryMs = 25;
+
     explicit RobotLinkThread(QObject *parent = nullptr);
     ~RobotLinkThread() override; // stop()
 
@@ -68,13 +79,32 @@ signals:
     void replayStatus(const oilink::ReplayStatus &status);
 
 private:
+    friend class FrameDelivery;
+    // Frames and received bytes, in the order the link said them.
+    struct Queued {
+        std::optional<oi::SensorSnapshot> snapshot; // or else bytes
+        double readSeconds = 0;
+        QByteArray bytes;
+    };
+
     void deliverPending();
+    // On the worker thread.
+    void queue(Queued item);
+    // Emits what was queued, up to the item numbered `upTo`.
+    void deliverQueued(quint64 upTo = ~quint64{0});
+    // Re-emits a link signal here, after the frames queued before it.
+    template <typename... Args, typename Handler>
+    void relay(RobotLink *link, void (RobotLink::*signal)(Args...), Handler handler);
 
     QThread m_thread;
     QPointer<RobotLink> m_link;
     RobotLink::TransportFactory m_factory;
     LinkState m_state = LinkState::Closed;
     LinkStats m_stats;
+    QMutex m_queueMutex;
+    std::vector<Queued> m_queue;
+    quint64 m_queuedCount = 0;    // items ever queued (under the mutex)
+    quint64 m_deliveredCount = 0; // items ever handed out (this thread only)
 };
 
 } // namespace oilink

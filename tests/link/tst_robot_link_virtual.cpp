@@ -197,6 +197,41 @@ private slots:
         QCOMPARE(errors.size(), 1);
     }
 
+    // Frames are handed out in batches on a timer, other signals at once;
+    // the order the link said them in still holds: no frame before the link
+    // streams or after it closed, every frame before the reply asked for
+    // after it, and each frame's bytes before the frame.
+    void framesKeepTheirPlaceAmongTheSignals()
+    {
+        RobotLinkThread link;
+        link.setTransportFactory(transports::transportFactory());
+        QStringList said;
+        QObject context;
+        connect(&link, &RobotLinkThread::stateChanged, &context,
+                [&](LinkState s) { said << QStringLiteral("state %1").arg(int(s)); });
+        connect(&link, &RobotLinkThread::snapshot, &context, [&] { said << QStringLiteral("frame"); });
+        connect(&link, &RobotLinkThread::rawBytesReceived, &context, [&] { said << QStringLiteral("bytes"); });
+        connect(&link, &RobotLinkThread::sensorReply, &context, [&] { said << QStringLiteral("reply"); });
+        link.open(LinkSettings::virtualRobotOf(oi::ProfileId::Create2, oi::ProfileId::Create2));
+        QTRY_VERIFY_WITH_TIMEOUT(said.count(QStringLiteral("frame")) >= 20, kTimeoutMs);
+        const qsizetype framesBeforeAsking = said.count(QStringLiteral("frame"));
+        link.querySensors({35});
+        QTRY_VERIFY_WITH_TIMEOUT(said.contains(QStringLiteral("reply")), kTimeoutMs);
+        link.closeAndWait();
+        link.stop();
+
+        const QString streaming = QStringLiteral("state %1").arg(int(LinkState::Streaming));
+        const QString closed = QStringLiteral("state %1").arg(int(LinkState::Closed));
+        QVERIFY(said.indexOf(streaming) >= 0);
+        QVERIFY(said.indexOf(streaming) < said.indexOf(QStringLiteral("frame")));
+        QVERIFY(said.lastIndexOf(QStringLiteral("frame")) < said.lastIndexOf(closed));
+        QVERIFY(said.mid(0, said.indexOf(QStringLiteral("reply"))).count(QStringLiteral("frame")) >= framesBeforeAsking);
+        // Each frame came in bytes that were handed out before it.
+        for (qsizetype i = 0; i < said.size(); ++i)
+            if (said[i] == QStringLiteral("frame"))
+                QVERIFY(said.mid(0, i).contains(QStringLiteral("bytes")));
+    }
+
     void aStoppedHelperOpensAgain()
     {
         RobotLinkThread link;

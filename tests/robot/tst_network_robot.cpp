@@ -47,7 +47,8 @@ private:
                 return new NetworkTransport(d, s.networkRobot, oi::profile(*s.profile));
             });
             session.connectTo(oilink::LinkSettings::networkRobotOf(QStringLiteral("r1"), oi::ProfileId::Create2));
-            return QTest::qWaitFor([this] { return session.isLive(); }, 5000);
+            // Live, and the first frame in: the robot's mode is known.
+            return QTest::qWaitFor([this] { return session.isLive() && session.snapshotCount() > 0; }, 5000);
         }
     };
 

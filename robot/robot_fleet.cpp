@@ -4,6 +4,7 @@
 #include "robot_session.h"
 
 #include <QColor>
+#include <QTimer>
 
 namespace {
 // Distinct on a light or dark background and for the common colour-vision
@@ -141,8 +142,20 @@ QList<SavedRobot> RobotFleet::saved() const
 void RobotFleet::restore(const QList<SavedRobot> &robots)
 {
     for (const SavedRobot &s : robots) {
-        RobotSession *r = addRobot(s.link, s.name, s.connected);
+        const bool first = m_robots.isEmpty(); // and so selected
+        RobotSession *r = addRobot(s.link, s.name, s.connected && first);
         if (s.colour.isValid())
             r->setColour(s.colour);
+        if (s.connected && !first)
+            m_waiting << r;
     }
+    if (!m_waiting.isEmpty())
+        QTimer::singleShot(kRestoreOthersMs, this, &RobotFleet::connectWaiting);
+}
+
+void RobotFleet::connectWaiting()
+{
+    for (const QPointer<RobotSession> &r : std::exchange(m_waiting, {}))
+        if (r && !r->isConnected())
+            r->connectTo(r->settings());
 }

@@ -6,6 +6,7 @@
 
 #include <QList>
 #include <QObject>
+#include <QPointer>
 
 #include <memory>
 #include <vector>
@@ -43,9 +44,15 @@ public:
     // Stop, Passive, close, for every robot: before the program ends.
     void closeAllAndWait();
 
-    // What is kept between runs, and the robots made from it.
+    // What is kept between runs, and the robots made from it. The selected
+    // robot connects at once; the others wait for connectWaiting() (the
+    // window calls it once the first live frame is on screen) or for
+    // kRestoreOthersMs, so thirty saved robots do not hold up that picture.
+    static constexpr int kRestoreOthersMs = 1000;
     QList<SavedRobot> saved() const;
     void restore(const QList<SavedRobot> &robots);
+    bool hasRobotsWaiting() const { return !m_waiting.isEmpty(); }
+    void connectWaiting();
 
     QString uniqueName(const QString &wanted) const;
 
@@ -61,4 +68,5 @@ private:
     oilink::RobotLink::TransportFactory m_factory;
     QList<RobotSession *> m_robots;
     RobotSession *m_selected = nullptr;
+    QList<QPointer<RobotSession>> m_waiting; // restored, to connect soon
 };

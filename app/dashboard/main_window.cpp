@@ -814,6 +814,10 @@ void MainWindow::refreshDisplay()
             m_modePanel->setSnapshot(s);
             m_songs->setSnapshot(s);
         }
+        // The first live frame is about to be painted: the other saved
+        // robots connect after it.
+        if (m_shownSnapshot > 0 && m_fleet.hasRobotsWaiting())
+            QTimer::singleShot(0, &m_fleet, &RobotFleet::connectWaiting);
     }
     ++m_displayTicks;
     // Scrolling plots are the dearest thing on screen; 15 Hz still moves

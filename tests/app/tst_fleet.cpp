@@ -17,6 +17,7 @@
 #include <QPushButton>
 #include <QSettings>
 #include <QStandardPaths>
+#include <QSignalSpy>
 #include <QTest>
 #include <QToolButton>
 
@@ -122,6 +123,28 @@ private slots:
         QCOMPARE(rig.window.robotList()->count(), 2);
         QVERIFY(rig.window.robotList()->card(0)->isChecked());
         QVERIFY(rig.window.statusText().contains("Ada"));
+    }
+
+    // The selected robot connects first; the others once its first frame
+    // is on screen, so they do not hold up that picture.
+    void theOthersConnectAfterTheSelectedRobotsFirstFrame()
+    {
+        FleetRig rig;
+        rig.startWithTwo();
+        QVERIFY(rig.robot(0)->isConnected());
+        QVERIFY(!rig.robot(1)->isConnected());
+        QVERIFY(rig.window.fleet().hasRobotsWaiting());
+        // What the first robot had shown when the second one connected.
+        quint64 framesShown = 0;
+        QObject context;
+        connect(rig.robot(1), &RobotSession::stateChanged, &context, [&](oilink::LinkState state) {
+            if (state != oilink::LinkState::Closed && framesShown == 0)
+                framesShown = rig.robot(0)->snapshotCount();
+        });
+        QTRY_VERIFY_WITH_TIMEOUT(rig.robot(1)->isConnected(), 10000);
+        QVERIFY(!rig.window.fleet().hasRobotsWaiting());
+        QVERIFY(rig.streaming());
+        QVERIFY(framesShown > 0);
     }
 
     // The keys drive the selected robot only; Stop all (Shift+Esc, or the

@@ -23,6 +23,14 @@ TcpTransport::TcpTransport(const QString &host, quint16 port, QObject *parent)
     connect(&m_connectTimeout, &QTimer::timeout, this, &TcpTransport::giveUpConnecting);
 }
 
+TcpTransport::~TcpTransport()
+{
+    // The socket outlives the members declared after it, and a connected
+    // socket says it disconnected as it is destroyed: not to this any more.
+    m_socket.disconnect(this);
+    m_socket.abort();
+}
+
 QString TcpTransport::describe() const
 {
     return m_host + QLatin1Char(':') + QString::number(m_port);

@@ -20,6 +20,7 @@ class TcpTransport : public Transport {
     Q_OBJECT
 public:
     TcpTransport(const QString &host, quint16 port, QObject *parent = nullptr);
+    ~TcpTransport() override;
 
     void open() override;
     void close() override;

@@ -152,6 +152,9 @@ void CommandSender::decide(const oi::SensorSnapshot &state)
 void CommandSender::sendCommand()
 {
     const std::uint8_t opcode = m_command.front();
+    if (opcode == 129 && m_command.size() == 2) // the port stays at its rate; the robot does not
+        emit note(QStringLiteral("the robot now talks at %1 baud: give the next command --baud %1")
+                      .arg(oi::baudForCode(m_command[1])));
     if (opcode != 142 && opcode != 149) {
         send(m_command);
         finish(0); // the caller closes the link, which sends what is queued first

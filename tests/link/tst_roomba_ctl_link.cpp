@@ -168,6 +168,25 @@ private slots:
         QVERIFY(distance > 0);
     }
 
+    // After Baud the port is still at the old rate, as on a real robot: the
+    // next command hears nothing unless it is given the new one.
+    void baudNeedsTheNewRateNextTime()
+    {
+        Sim sim({});
+        QVERIFY(!sim.path().isEmpty());
+        const QStringList port{QStringLiteral("send"), QStringLiteral("--port"), sim.path(), QStringLiteral("--profile"),
+                               QStringLiteral("create2")};
+        Outcome o = run(port + QStringList{QStringLiteral("baud"), QStringLiteral("19200")});
+        QVERIFY2(o.status == 0, qPrintable(o.err));
+        QVERIFY2(o.err.contains(QStringLiteral("give the next command --baud 19200")), qPrintable(o.err));
+        o = run(port + QStringList{QStringLiteral("sensors"), QStringLiteral("35")});
+        QCOMPARE(o.status, 1);
+        o = run(port + QStringList{QStringLiteral("--baud"), QStringLiteral("19200"), QStringLiteral("sensors"),
+                                   QStringLiteral("35")});
+        QVERIFY2(o.status == 0, qPrintable(o.err));
+        QCOMPARE(json(o.lines.value(0))[QStringLiteral("packets")].toObject()[QStringLiteral("oi_mode")].toInt(), 1);
+    }
+
     void sendEntersSafeForDriving()
     {
         Sim sim({});

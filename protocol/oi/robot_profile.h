@@ -65,6 +65,15 @@ public:
     int maxStreamPackets;
     // ERRATA 17: in Passive mode the robot sleeps after this long without activity.
     static constexpr int kPassiveSleepSeconds = 5 * 60;
+    // ERRATA 17: a robot woken by a BRC pulse listens this long after the
+    // pulse has ended (the documents give no figure).
+    static constexpr int kWakeMs = 300;
+    // The documents' "Serial Port Settings": the three BRC pulses for 19200
+    // baud come 2 s after the robot was switched on or woke.
+    static constexpr int kBaudPulsesAfterWakeMs = 2000;
+    // ERRATA 17: the Roomba 500 and the Create 2 / 600 sleep; the Create 1
+    // never does, and its BRC pin only changes the baud.
+    bool sleepsInPassive() const { return id != ProfileId::Create1; }
 
     bool has(Command c) const { return (m_commands >> static_cast<int>(c)) & 1u; }
 

@@ -33,6 +33,7 @@ constexpr Microseconds kBaudSettle = 100ms;
 constexpr Microseconds kStartBeep = 125ms;
 constexpr Microseconds kStopSong = 1s;
 constexpr Microseconds kSleepAfter = std::chrono::seconds(oi::RobotProfile::kPassiveSleepSeconds);
+constexpr Microseconds kWake = std::chrono::milliseconds(oi::RobotProfile::kWakeMs);
 constexpr long long kWeekMicros = 7LL * 24 * 60 * 60 * 1'000'000;
 
 constexpr double kPi = 3.14159265358979323846;
@@ -181,6 +182,8 @@ struct VirtualRobot::State {
     // The Open Interface.
     OiMode mode = OiMode::Off;
     bool asleep = false;
+    bool waking = false;         // a BRC pulse fell while asleep: it wakes as the pin rises
+    Microseconds listensFrom{0}; // woken, it loses bytes that come sooner
     BrcPin brc;
     int baud;
     Microseconds baudSettlesAt{0};
@@ -337,7 +340,7 @@ struct VirtualRobot::State {
         return ((heldButtons | pushedButtons) & (oi::bit::ButtonSchedule | oi::bit::ButtonClock)) != 0;
     }
 
-    bool sleepsWhenIdle() const { return profile->id == oi::ProfileId::Create2; }
+    bool sleepsWhenIdle() const { return profile->sleepsInPassive(); }
 
     bool wakesOnDock() const
     {
@@ -350,15 +353,24 @@ struct VirtualRobot::State {
         const BrcPin::Event event = brc.set(low, now);
         if (event == BrcPin::Event::None || disconnected)
             return;
-        if (event == BrcPin::Event::PulseAndBaud19200)
-            baud = 19200;
-        if (asleep && onDock() && !wakesOnDock())
-            return;
         if (asleep) {
-            asleep = false;
-            mode = OiMode::Off;
+            // Asleep it counts no baud pulses: a pulse it can feel wakes it
+            // as it ends, and it listens a moment later.
+            if (event == BrcPin::Event::Fell) {
+                waking = !onDock() || wakesOnDock();
+            } else if (waking) {
+                asleep = waking = false;
+                mode = OiMode::Off;
+                listensFrom = now + kWake;
+                brc.wokeAt(now);
+                lastActivity = now;
+            }
+            return;
         }
-        lastActivity = now;
+        if (event == BrcPin::Event::RoseForBaud19200)
+            baud = 19200;
+        if (event == BrcPin::Event::Fell)
+            lastActivity = now; // in Passive, restarts the count to sleep
     }
 
     void endScript()
@@ -377,6 +389,7 @@ struct VirtualRobot::State {
         serialIn.clear();
         mode = OiMode::Off;
         asleep = true;
+        waking = false;
     }
 
     void reset()
@@ -747,7 +760,7 @@ struct VirtualRobot::State {
         s.set(26, std::int32_t(kCapacityMah));
         s.set(27, wallSignal(o.wallDistanceMm));
         if (create1())
-            s.set(32, oi::bit::BaudRateChangePin); // active low: high means not asserted
+            s.set(32, brc.low() ? 0 : oi::bit::BaudRateChangePin); // active low
         s.set(34, onDock() ? oi::bit::SourceHomeBase : 0);
         s.set(35, static_cast<std::int32_t>(mode));
         s.set(36, songNumber);
@@ -883,7 +896,7 @@ struct VirtualRobot::State {
 
     void receive(std::span<const std::uint8_t> bytes)
     {
-        if (disconnected || asleep || bytes.empty() || now < baudSettlesAt)
+        if (disconnected || asleep || bytes.empty() || now < baudSettlesAt || now < listensFrom)
             return;
         for (std::uint8_t b : bytes)
             if (serialIn.size() < kInputBufferBytes)

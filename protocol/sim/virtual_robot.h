@@ -76,14 +76,18 @@ public:
 
     // --- What the robot shows and stores ---
     oi::OiMode mode() const;
-    // A Create 2 / Roomba 600 sleeps after 5 minutes in Passive without a
-    // BRC pulse (its document's "Power Saving"); any of them sleeps after
-    // Power (133). Asleep it hears nothing and says nothing, Start included.
+    // A Roomba 500 or Create 2 / Roomba 600 sleeps after 5 minutes in
+    // Passive without a BRC pulse (the Create 2 document's "Power Saving";
+    // ERRATA 17); either sleeps after Power (133). The Create never sleeps.
+    // Asleep it hears nothing and says nothing, Start included.
     bool asleep() const;
-    // The Baud Rate Change pin: low while `low`. A pulse low wakes a sleeping
-    // robot (in Off mode, waiting for Start), except on its dock before
-    // release-3.8.2 / release-stm32-3.7.7, and in Passive restarts the sleep
-    // count. Three pulses of 50-500 ms set 19200 baud.
+    // The Baud Rate Change pin: low while `low`. A pulse wakes a sleeping
+    // robot as it ends (into Off mode, waiting for Start), except on its dock
+    // before release-3.8.2 / release-stm32-3.7.7; bytes sent before the pulse
+    // ended and RobotProfile::kWakeMs after it are lost. Awake, a pulse in
+    // Passive restarts the count to sleep. Three pulses of 50-500 ms, from
+    // 2 s after waking (or power-on), set 19200 baud. The Create shows the
+    // pin in packet 32, active low.
     void setBrcLow(bool low);
     void setFirmwareRelease(std::string release); // e.g. "release-3.4.1"; printed on Reset
     struct Leds {

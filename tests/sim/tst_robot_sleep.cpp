@@ -34,37 +34,55 @@ struct Robot {
     }
     void send(const EncodeResult &r) { robot.receive(must(r)); }
     // Whether the robot answers Sensors 35 now.
-    bool answers()
+    bool answers() { return !ask(35).empty(); }
+    Bytes ask(int packet)
     {
         robot.takeOutput();
-        send(encoder.sensors(35));
-        return !robot.takeOutput().empty();
+        send(encoder.sensors(packet));
+        return robot.takeOutput();
+    }
+    void sleep()
+    {
+        send(encoder.power());
+        QVERIFY(robot.asleep());
+    }
+    void placeOnDock()
+    {
+        const World::Dock dock = *robot.world().dock;
+        robot.placeAt(Pose{dock.x, dock.y, dock.headingRad + 3.14159265358979323846});
     }
     VirtualRobot robot;
     CommandEncoder encoder;
 };
+
+constexpr Microseconds kWake = std::chrono::milliseconds(RobotProfile::kWakeMs);
 
 } // namespace
 
 class TestRobotSleep : public QObject {
     Q_OBJECT
 private slots:
-    void onlyTheCreate2SleepsWhenIdle_data()
+    // ERRATA 17: the Create 2 document's note on waking names Roomba 500
+    // firmware too; the Create never sleeps.
+    void theRoombasSleepWhenIdleTheCreateNever_data()
     {
         QTest::addColumn<int>("profile");
         QTest::addColumn<bool>("sleeps");
         QTest::newRow("create2") << int(ProfileId::Create2) << true;
-        QTest::newRow("roomba500") << int(ProfileId::Roomba500) << false;
+        QTest::newRow("roomba500") << int(ProfileId::Roomba500) << true;
         QTest::newRow("create1") << int(ProfileId::Create1) << false;
     }
-    void onlyTheCreate2SleepsWhenIdle()
+    void theRoombasSleepWhenIdleTheCreateNever()
     {
         QFETCH(int, profile);
         QFETCH(bool, sleeps);
         Robot r{ProfileId(profile)};
-        r.robot.advance(301s);
+        r.robot.advance(299s);
+        QVERIFY(!r.robot.asleep());
+        r.robot.advance(2s);
         QCOMPARE(r.robot.asleep(), sleeps);
         QCOMPARE(r.answers(), !sleeps);
+        QCOMPARE(oi::profile(ProfileId(profile)).sleepsInPassive(), sleeps);
     }
 
     void asleepItIgnoresEveryByte()
@@ -83,12 +101,63 @@ private slots:
     {
         Robot r(ProfileId::Create2);
         r.robot.advance(301s);
-        pulse(r.robot, 100ms);
+        r.robot.setBrcLow(true);
+        r.robot.advance(100ms);
+        QVERIFY(r.robot.asleep()); // it wakes as the pulse ends
+        r.robot.setBrcLow(false);
         QVERIFY(!r.robot.asleep());
         QCOMPARE(r.robot.mode(), OiMode::Off);
+        r.robot.advance(kWake);
         QVERIFY(!r.answers()); // Off mode: Start first
         r.send(r.encoder.start());
         QVERIFY(r.answers());
+    }
+
+    // ERRATA 17: a robot woken by a BRC pulse hears nothing before the
+    // pulse has ended and it has had time to wake.
+    void aStartSentWhileItWakesIsLost_data()
+    {
+        QTest::addColumn<int>("startAfterUs"); // after the pin fell; the pulse lasts 20 ms
+        QTest::addColumn<bool>("heard");
+        QTest::newRow("inside the pulse") << 10'000 << false;
+        QTest::newRow("as the pulse ends") << 20'000 << false;
+        QTest::newRow("before it has woken") << 20'000 + int(kWake.count()) - 1 << false;
+        QTest::newRow("once it has woken") << 20'000 + int(kWake.count()) << true;
+    }
+    void aStartSentWhileItWakesIsLost()
+    {
+        QFETCH(int, startAfterUs);
+        QFETCH(bool, heard);
+        Robot r(ProfileId::Create2);
+        r.sleep();
+        const Microseconds fell = r.robot.now();
+        r.robot.setBrcLow(true);
+        const auto at = [&](Microseconds t) { r.robot.advance(fell + t - r.robot.now()); };
+        const Microseconds startAt{startAfterUs};
+        if (startAt < 20ms) {
+            at(startAt);
+            r.send(r.encoder.start());
+        }
+        at(20ms);
+        r.robot.setBrcLow(false);
+        if (startAt >= 20ms) {
+            at(startAt);
+            r.send(r.encoder.start());
+        }
+        QVERIFY(!r.robot.asleep());
+        QCOMPARE(r.robot.mode(), heard ? OiMode::Passive : OiMode::Off);
+        QCOMPARE(r.answers(), heard);
+    }
+
+    // The Create shows its BRC pin in packet 32, bit 4, active low.
+    void theCreateShowsTheBrcPinInPacket32()
+    {
+        Robot r(ProfileId::Create1);
+        QCOMPARE(r.ask(32), Bytes{bit::BaudRateChangePin});
+        r.robot.setBrcLow(true);
+        QCOMPARE(r.ask(32), Bytes{0});
+        r.robot.setBrcLow(false);
+        QCOMPARE(r.ask(32), Bytes{bit::BaudRateChangePin});
     }
 
     void pulsesKeepItAwake()
@@ -124,10 +193,8 @@ private slots:
         QFETCH(bool, wakes);
         Robot r(ProfileId::Create2);
         r.robot.setFirmwareRelease(release.toStdString());
-        const World::Dock dock = *r.robot.world().dock;
-        r.robot.placeAt(Pose{dock.x, dock.y, dock.headingRad + 3.14159265358979323846});
-        r.send(r.encoder.power());
-        QVERIFY(r.robot.asleep());
+        r.placeOnDock();
+        r.sleep();
         pulse(r.robot, 200ms);
         QCOMPARE(r.robot.asleep(), !wakes);
         // Off the dock every release wakes.
@@ -140,26 +207,30 @@ private slots:
 
     void threePulsesSet19200Baud_data()
     {
+        QTest::addColumn<int>("afterMs"); // since power-on
         QTest::addColumn<int>("widthMs");
         QTest::addColumn<int>("gapMs");
         QTest::addColumn<int>("pulses");
         QTest::addColumn<int>("baud");
-        QTest::newRow("three of 100 ms") << 100 << 200 << 3 << 19200;
-        QTest::newRow("three of 50 ms") << 50 << 50 << 3 << 19200;
-        QTest::newRow("three of 500 ms") << 500 << 500 << 3 << 19200;
-        QTest::newRow("two") << 100 << 200 << 2 << 115200;
-        QTest::newRow("too short") << 20 << 200 << 3 << 115200;
-        QTest::newRow("too long") << 800 << 200 << 3 << 115200;
-        QTest::newRow("too far apart") << 100 << 3000 << 3 << 115200;
+        QTest::newRow("three of 100 ms") << 2000 << 100 << 200 << 3 << 19200;
+        QTest::newRow("three of 50 ms") << 2000 << 50 << 50 << 3 << 19200;
+        QTest::newRow("three of 500 ms") << 2000 << 500 << 500 << 3 << 19200;
+        QTest::newRow("two") << 2000 << 100 << 200 << 2 << 115200;
+        QTest::newRow("too short") << 2000 << 20 << 200 << 3 << 115200;
+        QTest::newRow("too long") << 2000 << 800 << 200 << 3 << 115200;
+        QTest::newRow("too far apart") << 2000 << 100 << 3000 << 3 << 115200;
+        // The documents: wait 2 s after turning the robot on.
+        QTest::newRow("the first too soon") << 1800 << 100 << 100 << 3 << 115200;
     }
     void threePulsesSet19200Baud()
     {
+        QFETCH(int, afterMs);
         QFETCH(int, widthMs);
         QFETCH(int, gapMs);
         QFETCH(int, pulses);
         QFETCH(int, baud);
         VirtualRobot robot(profile(ProfileId::Create2));
-        robot.advance(2s);
+        robot.advance(std::chrono::milliseconds(afterMs));
         for (int i = 0; i < pulses; ++i) {
             pulse(robot, std::chrono::milliseconds(widthMs));
             robot.advance(std::chrono::milliseconds(gapMs));
@@ -167,13 +238,48 @@ private slots:
         QCOMPARE(robot.baud(), baud);
     }
 
+    // Asleep, the first pulse only wakes the robot (where it can wake); the
+    // three for 19200 baud count from 2 s after that.
+    void asleepTheFirstPulseOnlyWakesIt_data()
+    {
+        QTest::addColumn<bool>("onDockWithOldFirmware");
+        QTest::addColumn<int>("thenAfterMs"); // the three pulses, after the first ended
+        QTest::addColumn<bool>("asleep");
+        QTest::addColumn<int>("baud");
+        QTest::newRow("three more, 2 s after waking") << false << 2000 << false << 19200;
+        QTest::newRow("three more, too soon") << false << 100 << false << 115200;
+        QTest::newRow("on its dock, old firmware") << true << 2000 << true << 115200;
+    }
+    void asleepTheFirstPulseOnlyWakesIt()
+    {
+        QFETCH(bool, onDockWithOldFirmware);
+        QFETCH(int, thenAfterMs);
+        QFETCH(bool, asleep);
+        QFETCH(int, baud);
+        Robot r(ProfileId::Create2);
+        r.robot.advance(10s);
+        if (onDockWithOldFirmware) {
+            r.robot.setFirmwareRelease("release-3.8.1");
+            r.placeOnDock();
+        }
+        r.sleep();
+        pulse(r.robot, 100ms);
+        r.robot.advance(std::chrono::milliseconds(thenAfterMs));
+        for (int i = 0; i < 3; ++i) {
+            pulse(r.robot, 100ms);
+            r.robot.advance(100ms);
+        }
+        QCOMPARE(r.robot.asleep(), asleep);
+        QCOMPARE(r.robot.baud(), baud);
+    }
+
     void thePinCountsEdgesNotLevels()
     {
         BrcPin pin;
         QCOMPARE(pin.set(false, 0us), BrcPin::Event::None);
-        QCOMPARE(pin.set(true, 1ms), BrcPin::Event::Pulse);
+        QCOMPARE(pin.set(true, 1ms), BrcPin::Event::Fell);
         QCOMPARE(pin.set(true, 2ms), BrcPin::Event::None);
-        QCOMPARE(pin.set(false, 101ms), BrcPin::Event::None);
+        QCOMPARE(pin.set(false, 101ms), BrcPin::Event::Rose);
         QVERIFY(!pin.low());
     }
 };

@@ -38,7 +38,13 @@ bool BrcPulser::canPulse() const
     return m_transport && (m_probed ? m_canPulse : m_transport->setBrcLow(false));
 }
 
-bool BrcPulser::wake() { return queuePulses(1, kWakePulseMs, 0); }
+bool BrcPulser::wake()
+{
+    if (!queuePulses(1, kWakePulseMs, 0, kWakeMs))
+        return false;
+    m_steps.push_back({Step::Awake, 0});
+    return true;
+}
 
 bool BrcPulser::pulseForBaud19200() { return queuePulses(3, kBaudPulseMs, kBaudGapMs); }
 
@@ -59,7 +65,7 @@ void BrcPulser::keepAwake()
     queuePulses(1, widthMs > 500 ? widthMs : kWakePulseMs, 0);
 }
 
-bool BrcPulser::queuePulses(int count, int widthMs, int gapMs)
+bool BrcPulser::queuePulses(int count, int widthMs, int gapMs, int holdAfterMs)
 {
     if (!m_transport)
         return false;
@@ -71,8 +77,8 @@ bool BrcPulser::queuePulses(int count, int widthMs, int gapMs)
     if (!m_canPulse)
         return false;
     for (int i = 0; i < count; ++i) {
-        m_steps.push_back({true, widthMs});
-        m_steps.push_back({false, i + 1 < count ? gapMs : 0});
+        m_steps.push_back({Step::Low, widthMs});
+        m_steps.push_back({Step::High, i + 1 < count ? gapMs : holdAfterMs});
     }
     if (!m_step.isActive())
         runNextStep();
@@ -84,9 +90,13 @@ void BrcPulser::runNextStep()
     while (!m_steps.empty() && m_transport) {
         const Step step = m_steps.front();
         m_steps.pop_front();
-        m_transport->setBrcLow(step.low);
-        if (!step.low)
-            emit pulsed();
+        if (step.kind == Step::Awake) {
+            emit awake();
+        } else {
+            m_transport->setBrcLow(step.kind == Step::Low);
+            if (step.kind == Step::High)
+                emit pulsed();
+        }
         if (step.holdMs > 0) {
             m_step.start(step.holdMs);
             return;

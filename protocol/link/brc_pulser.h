@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "robot_profile.h"
 #include "sensor_snapshot.h"
 
 #include <QObject>
@@ -14,9 +15,9 @@ namespace oilink {
 class Transport;
 
 // Pulses on the robot's BRC pin through a transport (Transport::setBrcLow):
-// one to wake a sleeping robot, one now and then to keep a Create 2 in
-// Passive from sleeping (its document: within 5 minutes), or three for
-// 19200 baud. Pulses are queued and never overlap.
+// one to wake a sleeping robot, one now and then to keep a Roomba 500 or
+// Create 2 in Passive from sleeping (the Create 2 document: within 5
+// minutes), or three for 19200 baud. Pulses are queued and never overlap.
 class BrcPulser : public QObject {
     Q_OBJECT
 public:
@@ -25,6 +26,8 @@ public:
     static constexpr int kWakePulseMs = 20;
     static constexpr int kBaudPulseMs = 100; // the documents: 50 to 500 ms
     static constexpr int kBaudGapMs = 100;
+    // After a wake pulse, the robot's time to wake (ERRATA 17).
+    static constexpr int kWakeMs = oi::RobotProfile::kWakeMs;
 
     explicit BrcPulser(QObject *parent = nullptr);
 
@@ -33,6 +36,8 @@ public:
     // False (and nothing queued) where the transport cannot reach the pin.
     bool canPulse() const;
 
+    // A wake pulse; awake() follows once the robot has had time to wake.
+    // False (and no awake()) where the pin is out of reach.
     bool wake();
     bool pulseForBaud19200();
     // Every `periodMs` in Passive (or where the mode is not known), a pulse
@@ -44,13 +49,14 @@ public:
 
 signals:
     void pulsed(); // a pulse ended
+    void awake();  // kWakeMs after a wake pulse ended: the robot listens
 
 private:
     struct Step {
-        bool low;
+        enum Kind { Low, High, Awake } kind;
         int holdMs;
     };
-    bool queuePulses(int count, int widthMs, int gapMs);
+    bool queuePulses(int count, int widthMs, int gapMs, int holdAfterMs = 0);
     void runNextStep();
     void keepAwake();
 

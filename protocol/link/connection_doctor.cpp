@@ -5,15 +5,18 @@
 #include "profile_probe.h"
 #include "transport.h"
 
+#include <algorithm>
+
 namespace oilink {
 
 namespace {
 constexpr int kDrainMs = ProfileProbe::kDrainMs;
 constexpr int kReplyTimeoutMs = ProfileProbe::kReplyTimeoutMs;
 constexpr int kQuietMs = ProfileProbe::kQuietMs;
-// After a wake pulse a real robot needs a moment before it listens.
-constexpr int kAfterWakeMs = 300;
 constexpr int kAfterBaudPulsesMs = 200;
+// The documents: the three baud pulses come 2 s after the robot woke, which
+// it did as the wake pulse ended, BrcPulser::kWakeMs before awake().
+constexpr int kBaudPulsesAfterAwakeMs = oi::RobotProfile::kBaudPulsesAfterWakeMs - BrcPulser::kWakeMs;
 constexpr int kRoombaGroup = 101;
 
 QByteArray bytes(std::initializer_list<std::uint8_t> values) { return ProfileProbe::bytesOf(values); }
@@ -31,7 +34,12 @@ ConnectionDoctor::ConnectionDoctor(Transport &transport, std::optional<oi::Profi
       m_pulser(new BrcPulser(this)), m_timer(this)
 {
     qRegisterMetaType<oilink::ConnectionDoctor::Report>();
+    connect(m_pulser, &BrcPulser::awake, this, [this] {
+        m_sinceAwake.start();
+        afterWakePulse(0);
+    });
     m_timer.setSingleShot(true);
+    m_timer.setTimerType(Qt::PreciseTimer); // never early: the robot counts the 2 s before the baud pulses
     connect(&m_timer, &QTimer::timeout, this, [this] {
         if (auto then = std::exchange(m_onTimer, nullptr))
             then();
@@ -158,7 +166,7 @@ void ConnectionDoctor::afterSilence()
         return;
     }
     step(tr("Pulsed the BRC pin to wake the robot."));
-    after(kAfterWakeMs, [this] { afterWakePulse(0); });
+    // afterWakePulse() follows BrcPulser::awake().
 }
 
 void ConnectionDoctor::afterWakePulse(qsizetype index)
@@ -181,8 +189,14 @@ void ConnectionDoctor::afterWakePulse(qsizetype index)
         concludeSilent();
         return;
     }
+    const qint64 untilBaudPulses = std::max<qint64>(0, kBaudPulsesAfterAwakeMs - m_sinceAwake.elapsed());
+    after(int(untilBaudPulses), [this] { pulseForBaud19200(); });
+}
+
+void ConnectionDoctor::pulseForBaud19200()
+{
     m_pulser->pulseForBaud19200();
-    step(tr("Pulsed the BRC pin three times for 19200 baud."));
+    step(tr("2 s after the wake pulse, pulsed the BRC pin three times for 19200 baud."));
     const int wait = 3 * (BrcPulser::kBaudPulseMs + BrcPulser::kBaudGapMs) + kAfterBaudPulsesMs;
     after(wait, [this] {
         m_transport.setBaud(19200);
@@ -235,9 +249,10 @@ void ConnectionDoctor::answered(int baud, Finding cause)
                     : tr("It has no packet group 101: a Create."));
         const int askedBaud = m_askedBaud > 0 ? m_askedBaud : m_askedProfile ? oi::profile(*m_askedProfile).defaultBaud : 0;
         if (cause == Finding::WokeAfterPulse) {
-            conclude(cause, tr("The robot was asleep; a BRC pulse woke it."));
+            conclude(cause, baud > 0 ? tr("The robot was asleep; a BRC pulse woke it, and it talks at %1 baud.").arg(baud)
+                                     : tr("The robot was asleep; a BRC pulse woke it."));
         } else if (cause == Finding::Baud19200AfterPulses) {
-            conclude(cause, tr("The robot talks at 19200 baud after three BRC pulses; set the baud to 19200."));
+            conclude(cause, tr("After three BRC pulses the robot now talks at 19200 baud: set the baud to 19200."));
         } else if (m_hasBaud && askedBaud > 0 && baud != askedBaud) {
             conclude(Finding::WrongBaud, tr("Wrong baud: the robot answers at %1 baud, not %2.").arg(baud).arg(askedBaud));
         } else if (m_askedProfile && (*m_askedProfile == oi::ProfileId::Create1) == roomba) {

@@ -6,6 +6,7 @@
 #include "robot_profile.h"
 
 #include <QByteArray>
+#include <QElapsedTimer>
 #include <QList>
 #include <QObject>
 #include <QString>
@@ -25,8 +26,9 @@ class Transport;
 //     its own has one pass), Query List 35, 7 without Start, then after
 //     Start: an answer names the baud; bytes that make no sense mean a
 //     wrong baud;
-//  2. silent everywhere: a BRC pulse (a sleeping robot wakes), then the
-//     three pulses for 19200 baud;
+//  2. silent everywhere: a BRC pulse (a sleeping robot wakes), each baud
+//     again once it has had time to wake, then, 2 s after it woke (the
+//     documents), the three pulses for 19200 baud;
 //  3. once it answers, Sensors 101 tells a Create from a Roomba 500 /
 //     Create 2, which answer alike: which of those two only the user knows.
 class ConnectionDoctor : public QObject {
@@ -76,6 +78,7 @@ private:
     void askMode(bool withStart, std::function<void(bool answered)> then);
     void afterSilence();
     void afterWakePulse(qsizetype index);
+    void pulseForBaud19200();
     void answered(int baud, Finding cause);
     void conclude(Finding finding, const QString &summary);
     void concludeSilent();
@@ -91,6 +94,7 @@ private:
     QList<int> m_garbledAt;
     BrcPulser *m_pulser;
     QTimer m_timer;
+    QElapsedTimer m_sinceAwake; // since the woken robot listens
     QByteArray m_received;
     qsizetype m_expected = 0;
     qsizetype m_heard = 0; // bytes heard at the baud being tried

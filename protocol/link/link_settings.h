@@ -45,8 +45,9 @@ struct LinkSettings {
     // pulls BRC low (as on FTDI-style TTL cables) or lets it go.
     BrcLine brcLine = BrcLine::Rts;
     bool brcAssertedIsLow = true;
-    // In Passive, a BRC pulse this often keeps a Create 2 from sleeping
-    // (its document: within 5 minutes); 0 turns it off.
+    // In Passive, a BRC pulse this often keeps a Roomba 500 or Create 2
+    // from sleeping (the Create 2 document: within 5 minutes); 0 turns it
+    // off. Never sent to the Create, which does not sleep.
     int keepAwakeMs = 60'000;
     // false: the link only sends commands and asks for sensors (roomba-ctl
     // send). It sends no Start and starts no stream, and close() leaves the

@@ -66,6 +66,7 @@ RobotLink::RobotLink(QObject *parent)
 {
     registerLinkMetaTypes();
     m_brc = new BrcPulser(this);
+    connect(m_brc, &BrcPulser::awake, this, &RobotLink::greetRobot);
     m_parser.setSnapshotHandler([this](const oi::SensorSnapshot &s, oi::FrameKind kind) {
         if (kind == oi::FrameKind::Stream)
             onFrame(s);
@@ -242,10 +243,21 @@ void RobotLink::scheduleReconnect()
 void RobotLink::onTransportOpened()
 {
     m_transportOpen = true;
-    // A sleeping robot hears nothing until its BRC pin is pulsed.
-    m_brc->wake();
-    m_brc->setKeepAwake(m_settings.keepAwakeMs);
     dropPartialInput();
+    // A sleeping robot hears nothing until its BRC pin is pulsed, and then
+    // only once it has had time to wake (ERRATA 17): Start, and anything
+    // else, waits for that. Where the pin is out of reach there is nothing
+    // to wait for.
+    const bool maySleep = (!m_profile || m_profile->sleepsInPassive()) && !m_transport->robotKnownAwake();
+    if (maySleep && m_brc->wake())
+        return; // greetRobot() follows BrcPulser::awake()
+    greetRobot();
+}
+
+void RobotLink::greetRobot()
+{
+    if (!m_transport || !m_transportOpen)
+        return;
     if (m_profile)
         useProfile();
     else
@@ -328,6 +340,8 @@ QString RobotLink::noDataMessage() const
 
 void RobotLink::useProfile()
 {
+    // The Create never sleeps, and its BRC pin only changes its baud.
+    m_brc->setKeepAwake(m_profile->sleepsInPassive() ? m_settings.keepAwakeMs : 0);
     if (m_settings.streaming) {
         startStream();
         return;

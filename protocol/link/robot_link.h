@@ -132,6 +132,7 @@ private:
     void dropTransport();
     void scheduleReconnect();
     void onTransportOpened();
+    void greetRobot();
     void onTransportError(const QString &message);
     void onTransportClosed();
     void onBytes(const QByteArray &bytes);
@@ -165,7 +166,7 @@ private:
     Transport *m_transport = nullptr;
     bool m_transportOpen = false;
     ProfileProbe *m_probe = nullptr;
-    BrcPulser *m_brc = nullptr; // wakes the robot and keeps it awake
+    BrcPulser *m_brc = nullptr; // wakes the robot and keeps it awake (if it sleeps)
 
     const oi::RobotProfile *m_profile = nullptr;
     int m_baud = 0; // as found by the probe or asked for; 0 = the profile's default

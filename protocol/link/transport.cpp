@@ -24,6 +24,11 @@ bool Transport::setBrcLow(bool)
     return false;
 }
 
+bool Transport::robotKnownAwake() const
+{
+    return false;
+}
+
 QString Transport::brcUnavailable() const
 {
     return tr("%1 cannot reach the robot's BRC pin").arg(describe());

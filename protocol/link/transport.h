@@ -40,6 +40,9 @@ public:
     // brcUnavailable() says why.
     virtual bool setBrcLow(bool low);
     virtual QString brcUnavailable() const;
+    // True where the transport sees the robot itself and it is awake (the
+    // in-process virtual robot): no wake pulse to send and wait for.
+    virtual bool robotKnownAwake() const;
     // "/dev/ttyUSB0", "host:port": the prefix of this transport's messages.
     virtual QString describe() const = 0;
 

@@ -70,6 +70,11 @@ bool VirtualTransport::setBrcLow(bool low)
     return true;
 }
 
+bool VirtualTransport::robotKnownAwake() const
+{
+    return m_open && !m_robot->robot().asleep();
+}
+
 bool VirtualTransport::write(const QByteArray &bytes)
 {
     if (!m_open)

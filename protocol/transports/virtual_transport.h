@@ -30,6 +30,7 @@ public:
     bool isOpen() const override { return m_open; }
     bool write(const QByteArray &bytes) override;
     bool setBrcLow(bool low) override;
+    bool robotKnownAwake() const override;
     void flush(int) override {}
     QString describe() const override;
 

@@ -55,11 +55,14 @@ public:
     {
         if (!m_open || !m_line.brcInReach)
             return false;
+        pinPulledLow += low;
         m_robot->setBrcLow(low);
         return true;
     }
     QString brcUnavailable() const override { return QStringLiteral("test line: no BRC pin"); }
     QString describe() const override { return QStringLiteral("test line"); }
+
+    int pinPulledLow = 0; // how often the BRC pin was pulled low
 
 private:
     sim::SerialLine serialLine() { return {robot().baud(), m_baud}; }

@@ -2,6 +2,7 @@
 // The link and the robot's BRC pin: a sleeping Create 2 woken by the link
 // and kept awake, through the in-process virtual robot and over a
 // pseudo-terminal (roomba-sim's control socket standing in for RTS).
+#include "sim_line_transport.h"
 #include "sim_process.h"
 
 #include "brc_pulser.h"
@@ -21,6 +22,14 @@ namespace {
 constexpr int kTimeoutMs = 20000;
 // Ten minutes of 15 ms stream frames.
 constexpr int kTenMinutesOfFrames = 10 * 60 * 1000 / 15;
+const std::uint8_t kStartAndPower[] = {128, 133};
+
+oilink::LinkSettings testLine(std::optional<oi::ProfileId> profile)
+{
+    oilink::LinkSettings settings = oilink::LinkSettings::serial(QStringLiteral("test line"), profile);
+    settings.streamPackets = {35};
+    return settings;
+}
 } // namespace
 
 class TestBrcWake : public QObject {
@@ -60,11 +69,16 @@ private slots:
         pulser.setTransport(&transport);
         QVERIFY(pulser.canPulse());
         QSignalSpy pulsed(&pulser, &oilink::BrcPulser::pulsed);
+        QSignalSpy awake(&pulser, &oilink::BrcPulser::awake);
         QVERIFY(pulser.wake());
-        QVERIFY(!robot.asleep()); // woken as the pin fell
+        QVERIFY(robot.asleep()); // it wakes as the pulse ends
         QTRY_COMPARE_WITH_TIMEOUT(pulsed.size(), 1, kTimeoutMs);
+        QVERIFY(!robot.asleep());
+        QVERIFY(awake.isEmpty()); // the robot's time to wake is still running
+        QTRY_COMPARE_WITH_TIMEOUT(awake.size(), 1, kTimeoutMs);
 
-        // Three pulses of 100 ms: 19200 baud.
+        // Three pulses of 100 ms, 2 s after waking: 19200 baud.
+        robot.advance(2s);
         QCOMPARE(robot.baud(), 115200);
         QVERIFY(pulser.pulseForBaud19200());
         QTRY_COMPARE_WITH_TIMEOUT(pulsed.size(), 4, kTimeoutMs);
@@ -90,6 +104,103 @@ private slots:
         pulser.setKeepAwake(400);
         QTRY_VERIFY_WITH_TIMEOUT(pulsed.size() >= 6, kTimeoutMs);
         QCOMPARE(robot.baud(), 115200);
+    }
+
+    // ERRATA 17: the link sends Start (and anything else) once the robot it
+    // woke listens, whether the profile is named or found by the probe. A
+    // Start sent sooner is lost (tst_robot_sleep), and the link would report
+    // no data and send Start again.
+    void theLinksStartReachesARobotItWoke_data()
+    {
+        QTest::addColumn<bool>("named");
+        QTest::addColumn<int>("starts"); // Start bytes sent before the first frame
+        QTest::newRow("named profile") << true << 1;
+        QTest::newRow("found by the probe") << false << 2; // the probe's and the stream's
+    }
+    void theLinksStartReachesARobotItWoke()
+    {
+        QFETCH(bool, named);
+        QFETCH(int, starts);
+        oilink::RobotLink link;
+        SimLineTransport *line = nullptr;
+        link.setTransportFactory([&](const oilink::LinkSettings &) {
+            line = new SimLineTransport(oi::ProfileId::Create2, {});
+            line->robot().receive(kStartAndPower);
+            return line;
+        });
+        QStringList errors;
+        connect(&link, &oilink::RobotLink::errorOccurred, this, [&](const QString &e) { errors << e; });
+        int startsSent = 0;
+        connect(&link, &oilink::RobotLink::rawBytesSent, this,
+                [&](const QByteArray &bytes) { startsSent += int(bytes.count(char(128))); });
+        std::optional<oi::SensorSnapshot> first;
+        int startsBeforeFirst = 0;
+        QStringList errorsBeforeFirst;
+        connect(&link, &oilink::RobotLink::snapshot, this, [&](const oi::SensorSnapshot &s) {
+            if (first)
+                return;
+            first = s;
+            startsBeforeFirst = startsSent;
+            errorsBeforeFirst = errors;
+        });
+        link.open(testLine(named ? std::optional(oi::ProfileId::Create2) : std::nullopt));
+        QVERIFY(line && line->robot().asleep());
+        QTRY_VERIFY_WITH_TIMEOUT(first.has_value(), kTimeoutMs);
+        QVERIFY2(errorsBeforeFirst.isEmpty(), qPrintable(errorsBeforeFirst.join(QStringLiteral(" | "))));
+        QCOMPARE(startsBeforeFirst, starts);
+        QCOMPARE(first->oiMode(), oi::OiMode::Passive);
+        QCOMPARE(line->pinPulledLow, 1);
+        link.close();
+    }
+
+    // The in-process robot is seen awake: no wake pulse to wait for, so the
+    // stream is asked for as the link opens.
+    void anAwakeInProcessRobotIsNotWaitedFor()
+    {
+        oilink::RobotLink link;
+        link.setTransportFactory([](const oilink::LinkSettings &s) {
+            return new sim::VirtualTransport(s.virtualRobot, s.virtualSeed);
+        });
+        QSignalSpy started(&link, &oilink::RobotLink::streamStarted);
+        link.open(oilink::LinkSettings::virtualRobotOf(oi::ProfileId::Create2, oi::ProfileId::Create2));
+        QCOMPARE(started.size(), 1);
+        link.close();
+    }
+
+    // ERRATA 17: keep-awake pulses go to the robots that sleep; the Create
+    // never sleeps, and its BRC pin would only change its baud.
+    void keepAwakeOnlyForRobotsThatSleep_data()
+    {
+        QTest::addColumn<int>("profile");
+        QTest::addColumn<bool>("pulsed");
+        QTest::newRow("create2") << int(oi::ProfileId::Create2) << true;
+        QTest::newRow("roomba500") << int(oi::ProfileId::Roomba500) << true;
+        QTest::newRow("create1") << int(oi::ProfileId::Create1) << false;
+    }
+    void keepAwakeOnlyForRobotsThatSleep()
+    {
+        QFETCH(int, profile);
+        QFETCH(bool, pulsed);
+        const auto id = oi::ProfileId(profile);
+        oilink::RobotLink link;
+        SimLineTransport *line = nullptr;
+        link.setTransportFactory([&](const oilink::LinkSettings &s) {
+            line = new SimLineTransport(id, {});
+            line->setBaud(s.baud);
+            return line;
+        });
+        int frames = 0;
+        connect(&link, &oilink::RobotLink::snapshot, this, [&] { ++frames; });
+        oilink::LinkSettings settings = testLine(id);
+        settings.keepAwakeMs = 100;
+        link.open(settings);
+        // 600 ms of frames: six keep-awake periods.
+        QTRY_VERIFY_WITH_TIMEOUT(frames >= 40, kTimeoutMs);
+        if (pulsed)
+            QVERIFY2(line->pinPulledLow >= 4, qPrintable(QString::number(line->pinPulledLow)));
+        else
+            QCOMPARE(line->pinPulledLow, 0);
+        link.close();
     }
 
     void rfc2217CarriesEveryByte()

@@ -121,14 +121,21 @@ private slots:
         QVERIFY2(r.steps.first().contains(QStringLiteral("make no sense")), qPrintable(explain(r)));
     }
 
-    void answersAt19200AfterThreePulses()
+    // Asleep, behind an adapter that cannot go above 19200 baud: the wake
+    // pulse wakes it, and the three pulses, 2 s later as the documents say,
+    // put it on 19200 (the robot counts none sooner).
+    void asleepThenAt19200AfterThreePulses()
     {
-        // An adapter that cannot go above 19200 baud.
         SimLineTransport line(oi::ProfileId::Create2, {19200, true});
+        line.robot().receive(kStartAndPower);
         const auto r = diagnose(line, oi::ProfileId::Create2);
         QVERIFY2(r.finding == Finding::Baud19200AfterPulses, qPrintable(explain(r)));
         QCOMPARE(r.baud, 19200);
         QCOMPARE(line.robot().baud(), 19200);
+        QVERIFY(!line.robot().asleep());
+        QVERIFY2(r.steps.contains(QStringLiteral("2 s after the wake pulse, pulsed the BRC pin three times for 19200 baud.")),
+                 qPrintable(explain(r)));
+        QCOMPARE(r.summary, QStringLiteral("After three BRC pulses the robot now talks at 19200 baud: set the baud to 19200."));
     }
 
     void asleepAndWokeAfterAPulse()
@@ -139,6 +146,7 @@ private slots:
         const auto r = diagnose(line, oi::ProfileId::Create2);
         QVERIFY2(r.finding == Finding::WokeAfterPulse, qPrintable(explain(r)));
         QVERIFY(!line.robot().asleep());
+        QCOMPARE(r.summary, QStringLiteral("The robot was asleep; a BRC pulse woke it, and it talks at 115200 baud."));
     }
 
     void asleepOnTheDockWithOldFirmware()

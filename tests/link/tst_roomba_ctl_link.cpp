@@ -247,7 +247,7 @@ private slots:
         QCOMPARE(o.status, 1);
         QVERIFY2(o.lines.first().startsWith(QStringLiteral("Checking ")), qPrintable(o.lines.join('\n')));
         QVERIFY2(o.lines.contains(QStringLiteral("  Pulsed the BRC pin to wake the robot.")), qPrintable(o.lines.join('\n')));
-        QCOMPARE(o.lines.last(), QStringLiteral("The robot was asleep; a BRC pulse woke it."));
+        QCOMPARE(o.lines.last(), QStringLiteral("The robot was asleep; a BRC pulse woke it, and it talks at 115200 baud."));
     }
 
     void doctorOnAHealthyRobot()

@@ -4894,8 +4894,8 @@ Gesendet: %2</translation>
         <translation>Bei %1 antwortet er nach dem Impuls.</translation>
     </message>
     <message>
-        <source>Pulsed the BRC pin three times for 19200 baud.</source>
-        <translation>Den BRC-Pin dreimal gepulst für 19200 Baud.</translation>
+        <source>2 s after the wake pulse, pulsed the BRC pin three times for 19200 baud.</source>
+        <translation>2 s nach dem Weckimpuls den BRC-Pin dreimal gepulst für 19200 Baud.</translation>
     </message>
     <message>
         <source>At 19200 baud it answers after the three pulses.</source>
@@ -4918,8 +4918,12 @@ Gesendet: %2</translation>
         <translation>Der Roboter schlief; ein BRC-Impuls hat ihn geweckt.</translation>
     </message>
     <message>
-        <source>The robot talks at 19200 baud after three BRC pulses; set the baud to 19200.</source>
-        <translation>Der Roboter spricht nach drei BRC-Impulsen mit 19200 Baud; Baudrate auf 19200 stellen.</translation>
+        <source>The robot was asleep; a BRC pulse woke it, and it talks at %1 baud.</source>
+        <translation>Der Roboter schlief; ein BRC-Impuls hat ihn geweckt, und er spricht mit %1 Baud.</translation>
+    </message>
+    <message>
+        <source>After three BRC pulses the robot now talks at 19200 baud: set the baud to 19200.</source>
+        <translation>Nach drei BRC-Impulsen spricht der Roboter jetzt mit 19200 Baud: Baudrate auf 19200 stellen.</translation>
     </message>
     <message>
         <source>Wrong baud: the robot answers at %1 baud, not %2.</source>

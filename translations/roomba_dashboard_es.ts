@@ -4893,8 +4893,8 @@ Enviado: %2</translation>
         <translation>A %1 responde tras el pulso.</translation>
     </message>
     <message>
-        <source>Pulsed the BRC pin three times for 19200 baud.</source>
-        <translation>Se pulsó el pin BRC tres veces para 19200 baudios.</translation>
+        <source>2 s after the wake pulse, pulsed the BRC pin three times for 19200 baud.</source>
+        <translation>2 s después del pulso de despertar, se pulsó el pin BRC tres veces para 19200 baudios.</translation>
     </message>
     <message>
         <source>At 19200 baud it answers after the three pulses.</source>
@@ -4917,8 +4917,12 @@ Enviado: %2</translation>
         <translation>El robot dormía; un pulso BRC lo despertó.</translation>
     </message>
     <message>
-        <source>The robot talks at 19200 baud after three BRC pulses; set the baud to 19200.</source>
-        <translation>El robot habla a 19200 baudios tras tres pulsos BRC; ajuste la velocidad a 19200.</translation>
+        <source>The robot was asleep; a BRC pulse woke it, and it talks at %1 baud.</source>
+        <translation>El robot dormía; un pulso BRC lo despertó, y habla a %1 baudios.</translation>
+    </message>
+    <message>
+        <source>After three BRC pulses the robot now talks at 19200 baud: set the baud to 19200.</source>
+        <translation>Tras tres pulsos BRC el robot habla ahora a 19200 baudios: ajuste la velocidad a 19200.</translation>
     </message>
     <message>
         <source>Wrong baud: the robot answers at %1 baud, not %2.</source>

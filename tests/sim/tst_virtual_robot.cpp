@@ -492,6 +492,7 @@ void TestVirtualRobot::powerPutsTheRobotToSleep()
     b.run(100ms);
     b.robot.setBrcLow(false);
     QVERIFY(!b.robot.asleep());
+    b.run(std::chrono::milliseconds(RobotProfile::kWakeMs)); // it listens once it has woken
     b.send(b.encoder.start());
     QCOMPARE(b.value(35), int(OiMode::Passive));
 }
@@ -587,10 +588,12 @@ void TestVirtualRobot::sleepsAfterFiveMinutesOfPassiveInactivity()
     b.send(b.encoder.start());
     QVERIFY(b.robot.asleep());
     b.robot.setBrcLow(true);
-    QVERIFY(!b.robot.asleep());
     b.run(1s);
+    QVERIFY(b.robot.asleep()); // it wakes as the pulse ends
     b.robot.setBrcLow(false);
+    QVERIFY(!b.robot.asleep());
     QCOMPARE(b.robot.mode(), OiMode::Off);
+    b.run(std::chrono::milliseconds(RobotProfile::kWakeMs));
     b.send(b.encoder.start());
     QCOMPARE(b.value(35), int(OiMode::Passive));
 
@@ -601,6 +604,7 @@ void TestVirtualRobot::sleepsAfterFiveMinutesOfPassiveInactivity()
     QVERIFY(b.robot.asleep());
     b.robot.setBrcLow(true);
     b.robot.setBrcLow(false);
+    b.run(std::chrono::milliseconds(RobotProfile::kWakeMs));
     b.send(b.encoder.start());
     b.run(200s);
     b.robot.setBrcLow(true);

@@ -402,6 +402,17 @@ private slots:
                  QString("150 0 137 0 0 0 0 138 0 128"));
     }
 
+    // The Roomba 500 sleeps like the Create 2; the Create never sleeps.
+    // (The virtual robot's sleep, waking and baud pulses: tst_robot_sleep;
+    // the link and the doctor: tst_brc_wake, tst_connection_doctor.)
+    void row17_whoSleeps()
+    {
+        QVERIFY(profile(ProfileId::Create2).sleepsInPassive());
+        QVERIFY(profile(ProfileId::Roomba500).sleepsInPassive());
+        QVERIFY(!profile(ProfileId::Create1).sleepsInPassive());
+        QCOMPARE(RobotProfile::kBaudPulsesAfterWakeMs, 2000);
+    }
+
     void row18_streamSizeLimit()
     {
         QCOMPARE(maxStreamFrameBytes(115200), 172);

@@ -145,6 +145,25 @@
     </message>
 </context>
 <context>
+    <name>BrokerActions</name>
+    <message>
+        <source>Connect to &amp;broker…</source>
+        <translation>Mit &amp;Broker verbinden…</translation>
+    </message>
+    <message>
+        <source>&amp;Disconnect from broker</source>
+        <translation>Vom Broker &amp;trennen</translation>
+    </message>
+    <message>
+        <source>&amp;Fleet view	Ctrl+Shift+F</source>
+        <translation>&amp;Flottenansicht	Strg+Umschalt+F</translation>
+    </message>
+    <message>
+        <source>Fleet view — Roomba Dashboard</source>
+        <translation>Flottenansicht — Roomba Dashboard</translation>
+    </message>
+</context>
+<context>
     <name>BrokerDialog</name>
     <message>
         <source>Connect to broker</source>
@@ -717,6 +736,18 @@ Systems.
         <source>%1 — %2</source>
         <translation>%1 — %2</translation>
     </message>
+    <message>
+        <source>&amp;Reset layout</source>
+        <translation>Layout &amp;zurücksetzen</translation>
+    </message>
+    <message>
+        <source>&amp;Next pane</source>
+        <translation>&amp;Nächster Bereich</translation>
+    </message>
+    <message>
+        <source>&amp;Previous pane</source>
+        <translation>&amp;Vorheriger Bereich</translation>
+    </message>
 </context>
 <context>
     <name>DoctorDetails</name>
@@ -1273,6 +1304,17 @@ Klicken wählt diesen Roboter: jedes Dock zeigt ihn</translation>
     <message>
         <source>IR %1</source>
         <translation>IR %1</translation>
+    </message>
+</context>
+<context>
+    <name>LanguageMenu</name>
+    <message>
+        <source>&amp;Language</source>
+        <translation>&amp;Sprache</translation>
+    </message>
+    <message>
+        <source>System default</source>
+        <translation>Systemstandard</translation>
     </message>
 </context>
 <context>
@@ -1996,22 +2038,6 @@ GPL-3.0-or-later.</translation>
         <translation>&amp;Ansicht</translation>
     </message>
     <message>
-        <source>Recording and replay</source>
-        <translation>Aufzeichnung und Wiedergabe</translation>
-    </message>
-    <message>
-        <source>&amp;Language</source>
-        <translation>&amp;Sprache</translation>
-    </message>
-    <message>
-        <source>System default</source>
-        <translation>Systemstandard</translation>
-    </message>
-    <message>
-        <source>&amp;Reset layout</source>
-        <translation>Layout &amp;zurücksetzen</translation>
-    </message>
-    <message>
         <source>&amp;Help</source>
         <translation>&amp;Hilfe</translation>
     </message>
@@ -2020,66 +2046,8 @@ GPL-3.0-or-later.</translation>
         <translation>&amp;Über</translation>
     </message>
     <message>
-        <source>Recording stopped: %1</source>
-        <translation>Aufzeichnung beendet: %1</translation>
-    </message>
-    <message>
-        <source>&amp;Next pane</source>
-        <translation>&amp;Nächster Bereich</translation>
-    </message>
-    <message>
-        <source>&amp;Previous pane</source>
-        <translation>&amp;Vorheriger Bereich</translation>
-    </message>
-    <message>
         <source>%1 — Roomba Dashboard</source>
         <translation>%1 — Roomba Dashboard</translation>
-    </message>
-    <message>
-        <source>&amp;Stop all robots	Shift+Esc</source>
-        <translation>Alle Roboter an&amp;halten	Umschalt+Esc</translation>
-    </message>
-    <message>
-        <source>STOP ALL  (Shift+Esc)</source>
-        <translation>ALLE STOPP  (Umschalt+Esc)</translation>
-    </message>
-    <message>
-        <source>Stop every robot in the window at once, whichever is selected.
-Space or Esc stops the selected robot.</source>
-        <translation>Hält jeden Roboter im Fenster sofort an, egal welcher ausgewählt ist.
-Leertaste oder Esc hält den ausgewählten Roboter an.</translation>
-    </message>
-    <message>
-        <source>Stop all robots</source>
-        <translation>Alle Roboter anhalten</translation>
-    </message>
-    <message>
-        <source>Robots</source>
-        <translation>Roboter</translation>
-    </message>
-    <message>
-        <source>Recording of %1</source>
-        <translation>Aufzeichnung eines %1</translation>
-    </message>
-    <message>
-        <source>not connected</source>
-        <translation>nicht verbunden</translation>
-    </message>
-    <message>
-        <source>Connect to &amp;broker…</source>
-        <translation>Mit &amp;Broker verbinden…</translation>
-    </message>
-    <message>
-        <source>&amp;Disconnect from broker</source>
-        <translation>Vom Broker &amp;trennen</translation>
-    </message>
-    <message>
-        <source>&amp;Fleet view	Ctrl+Shift+F</source>
-        <translation>&amp;Flottenansicht	Strg+Umschalt+F</translation>
-    </message>
-    <message>
-        <source>Fleet view — Roomba Dashboard</source>
-        <translation>Flottenansicht — Roomba Dashboard</translation>
     </message>
     <message>
         <source>Lesson</source>
@@ -3007,6 +2975,10 @@ Leertaste oder Esc hält den ausgewählten Roboter an.</translation>
         <source>Wrote %1</source>
         <translation>%1 geschrieben</translation>
     </message>
+    <message>
+        <source>Recording and replay</source>
+        <translation>Aufzeichnung und Wiedergabe</translation>
+    </message>
 </context>
 <context>
     <name>RemoteRobot</name>
@@ -3056,6 +3028,39 @@ Leertaste oder Esc hält den ausgewählten Roboter an.</translation>
     <message>
         <source>Damaged: replays up to %1</source>
         <translation>Beschädigt: Wiedergabe bis %1</translation>
+    </message>
+</context>
+<context>
+    <name>RobotBar</name>
+    <message>
+        <source>STOP ALL  (Shift+Esc)</source>
+        <translation>ALLE STOPP  (Umschalt+Esc)</translation>
+    </message>
+    <message>
+        <source>Stop every robot in the window at once, whichever is selected.
+Space or Esc stops the selected robot.</source>
+        <translation>Hält jeden Roboter im Fenster sofort an, egal welcher ausgewählt ist.
+Leertaste oder Esc hält den ausgewählten Roboter an.</translation>
+    </message>
+    <message>
+        <source>Stop all robots</source>
+        <translation>Alle Roboter anhalten</translation>
+    </message>
+    <message>
+        <source>Robots</source>
+        <translation>Roboter</translation>
+    </message>
+    <message>
+        <source>Recording of %1</source>
+        <translation>Aufzeichnung eines %1</translation>
+    </message>
+    <message>
+        <source>not connected</source>
+        <translation>nicht verbunden</translation>
+    </message>
+    <message>
+        <source>&amp;Stop all robots	Shift+Esc</source>
+        <translation>Alle Roboter an&amp;halten	Umschalt+Esc</translation>
     </message>
 </context>
 <context>
@@ -3853,6 +3858,13 @@ Gesendet: %2</translation>
     <message>
         <source>No script came back: %1</source>
         <translation>Kein Skript kam zurück: %1</translation>
+    </message>
+</context>
+<context>
+    <name>SelectedRobotView</name>
+    <message>
+        <source>Recording stopped: %1</source>
+        <translation>Aufzeichnung beendet: %1</translation>
     </message>
 </context>
 <context>

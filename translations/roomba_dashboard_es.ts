@@ -145,6 +145,25 @@
     </message>
 </context>
 <context>
+    <name>BrokerActions</name>
+    <message>
+        <source>Connect to &amp;broker…</source>
+        <translation>Conectar con el &amp;bróker…</translation>
+    </message>
+    <message>
+        <source>&amp;Disconnect from broker</source>
+        <translation>&amp;Desconectar del bróker</translation>
+    </message>
+    <message>
+        <source>&amp;Fleet view	Ctrl+Shift+F</source>
+        <translation>Vista de la &amp;flota	Ctrl+Mayús+F</translation>
+    </message>
+    <message>
+        <source>Fleet view — Roomba Dashboard</source>
+        <translation>Vista de la flota — Roomba Dashboard</translation>
+    </message>
+</context>
+<context>
     <name>BrokerDialog</name>
     <message>
         <source>Connect to broker</source>
@@ -716,6 +735,18 @@ sistema.
         <source>%1 — %2</source>
         <translation>%1 — %2</translation>
     </message>
+    <message>
+        <source>&amp;Reset layout</source>
+        <translation>&amp;Restablecer disposición</translation>
+    </message>
+    <message>
+        <source>&amp;Next pane</source>
+        <translation>Panel &amp;siguiente</translation>
+    </message>
+    <message>
+        <source>&amp;Previous pane</source>
+        <translation>Panel an&amp;terior</translation>
+    </message>
 </context>
 <context>
     <name>DoctorDetails</name>
@@ -1272,6 +1303,17 @@ Haga clic para seleccionar este robot: todos los paneles lo muestran</translatio
     <message>
         <source>IR %1</source>
         <translation>IR %1</translation>
+    </message>
+</context>
+<context>
+    <name>LanguageMenu</name>
+    <message>
+        <source>&amp;Language</source>
+        <translation>&amp;Idioma</translation>
+    </message>
+    <message>
+        <source>System default</source>
+        <translation>Predeterminado del sistema</translation>
     </message>
 </context>
 <context>
@@ -1995,22 +2037,6 @@ GPL-3.0-or-later.</translation>
         <translation>&amp;Ver</translation>
     </message>
     <message>
-        <source>Recording and replay</source>
-        <translation>Grabación y reproducción</translation>
-    </message>
-    <message>
-        <source>&amp;Language</source>
-        <translation>&amp;Idioma</translation>
-    </message>
-    <message>
-        <source>System default</source>
-        <translation>Predeterminado del sistema</translation>
-    </message>
-    <message>
-        <source>&amp;Reset layout</source>
-        <translation>&amp;Restablecer disposición</translation>
-    </message>
-    <message>
         <source>&amp;Help</source>
         <translation>Ay&amp;uda</translation>
     </message>
@@ -2019,66 +2045,8 @@ GPL-3.0-or-later.</translation>
         <translation>&amp;Acerca de</translation>
     </message>
     <message>
-        <source>Recording stopped: %1</source>
-        <translation>Grabación detenida: %1</translation>
-    </message>
-    <message>
-        <source>&amp;Next pane</source>
-        <translation>Panel &amp;siguiente</translation>
-    </message>
-    <message>
-        <source>&amp;Previous pane</source>
-        <translation>Panel an&amp;terior</translation>
-    </message>
-    <message>
         <source>%1 — Roomba Dashboard</source>
         <translation>%1 — Roomba Dashboard</translation>
-    </message>
-    <message>
-        <source>&amp;Stop all robots	Shift+Esc</source>
-        <translation>&amp;Detener todos los robots	Mayús+Esc</translation>
-    </message>
-    <message>
-        <source>STOP ALL  (Shift+Esc)</source>
-        <translation>DETENER TODOS  (Mayús+Esc)</translation>
-    </message>
-    <message>
-        <source>Stop every robot in the window at once, whichever is selected.
-Space or Esc stops the selected robot.</source>
-        <translation>Detiene a la vez todos los robots de la ventana, esté seleccionado el que esté.
-Espacio o Esc detiene el robot seleccionado.</translation>
-    </message>
-    <message>
-        <source>Stop all robots</source>
-        <translation>Detener todos los robots</translation>
-    </message>
-    <message>
-        <source>Robots</source>
-        <translation>Robots</translation>
-    </message>
-    <message>
-        <source>Recording of %1</source>
-        <translation>Grabación de un %1</translation>
-    </message>
-    <message>
-        <source>not connected</source>
-        <translation>sin conexión</translation>
-    </message>
-    <message>
-        <source>Connect to &amp;broker…</source>
-        <translation>Conectar con el &amp;bróker…</translation>
-    </message>
-    <message>
-        <source>&amp;Disconnect from broker</source>
-        <translation>&amp;Desconectar del bróker</translation>
-    </message>
-    <message>
-        <source>&amp;Fleet view	Ctrl+Shift+F</source>
-        <translation>Vista de la &amp;flota	Ctrl+Mayús+F</translation>
-    </message>
-    <message>
-        <source>Fleet view — Roomba Dashboard</source>
-        <translation>Vista de la flota — Roomba Dashboard</translation>
     </message>
     <message>
         <source>Lesson</source>
@@ -3006,6 +2974,10 @@ Espacio o Esc detiene el robot seleccionado.</translation>
         <source>Wrote %1</source>
         <translation>Se escribió %1</translation>
     </message>
+    <message>
+        <source>Recording and replay</source>
+        <translation>Grabación y reproducción</translation>
+    </message>
 </context>
 <context>
     <name>RemoteRobot</name>
@@ -3055,6 +3027,39 @@ Espacio o Esc detiene el robot seleccionado.</translation>
     <message>
         <source>Damaged: replays up to %1</source>
         <translation>Dañada: se reproduce hasta %1</translation>
+    </message>
+</context>
+<context>
+    <name>RobotBar</name>
+    <message>
+        <source>STOP ALL  (Shift+Esc)</source>
+        <translation>DETENER TODOS  (Mayús+Esc)</translation>
+    </message>
+    <message>
+        <source>Stop every robot in the window at once, whichever is selected.
+Space or Esc stops the selected robot.</source>
+        <translation>Detiene a la vez todos los robots de la ventana, esté seleccionado el que esté.
+Espacio o Esc detiene el robot seleccionado.</translation>
+    </message>
+    <message>
+        <source>Stop all robots</source>
+        <translation>Detener todos los robots</translation>
+    </message>
+    <message>
+        <source>Robots</source>
+        <translation>Robots</translation>
+    </message>
+    <message>
+        <source>Recording of %1</source>
+        <translation>Grabación de un %1</translation>
+    </message>
+    <message>
+        <source>not connected</source>
+        <translation>sin conexión</translation>
+    </message>
+    <message>
+        <source>&amp;Stop all robots	Shift+Esc</source>
+        <translation>&amp;Detener todos los robots	Mayús+Esc</translation>
     </message>
 </context>
 <context>
@@ -3852,6 +3857,13 @@ Enviado: %2</translation>
     <message>
         <source>No script came back: %1</source>
         <translation>No volvió ningún script: %1</translation>
+    </message>
+</context>
+<context>
+    <name>SelectedRobotView</name>
+    <message>
+        <source>Recording stopped: %1</source>
+        <translation>Grabación detenida: %1</translation>
     </message>
 </context>
 <context>

@@ -8,7 +8,25 @@
 #include <QMainWindow>
 #include <QShowEvent>
 
-DockLayout::DockLayout(QMainWindow *window) : QObject(window), m_window(window) {}
+DockLayout::DockLayout(QMainWindow *window) : QObject(window), m_window(window)
+{
+    m_resetAction = new QAction(this);
+    connect(m_resetAction, &QAction::triggered, this, &DockLayout::resetLayout);
+    m_nextAction = new QAction(this);
+    m_nextAction->setShortcut(QKeySequence(Qt::Key_F6));
+    connect(m_nextAction, &QAction::triggered, this, [this] { focusNextDock(1); });
+    m_previousAction = new QAction(this);
+    m_previousAction->setShortcut(QKeySequence(Qt::SHIFT | Qt::Key_F6));
+    connect(m_previousAction, &QAction::triggered, this, [this] { focusNextDock(-1); });
+    window->addActions({m_nextAction, m_previousAction}); // work without the menu open
+}
+
+void DockLayout::retranslate()
+{
+    m_resetAction->setText(tr("&Reset layout"));
+    m_nextAction->setText(tr("&Next pane"));
+    m_previousAction->setText(tr("&Previous pane"));
+}
 
 QDockWidget *DockLayout::addDock(const QString &objectName, const char *title, QWidget *widget,
                                  Qt::DockWidgetArea area, bool actsOnRobot)

@@ -5,13 +5,15 @@
 #include <QList>
 #include <QObject>
 
+class QAction;
 class QDockWidget;
 class QMainWindow;
 class QWidget;
 
 // The window's docks: made, titled (in the current language, naming the
 // selected robot on the docks that act on it), laid out by default, reset,
-// and visited from the keyboard with F6 and Shift+F6.
+// and visited from the keyboard with F6 and Shift+F6 (View → Next pane,
+// Previous pane, Reset layout).
 class DockLayout : public QObject {
     Q_OBJECT
 public:
@@ -22,6 +24,9 @@ public:
     QDockWidget *addDock(const QString &objectName, const char *title, QWidget *widget, Qt::DockWidgetArea area,
                          bool actsOnRobot = false);
     const QList<QDockWidget *> &docks() const { return m_docks; }
+    QAction *resetAction() const { return m_resetAction; }
+    QAction *nextAction() const { return m_nextAction; }
+    QAction *previousAction() const { return m_previousAction; }
 
     // After every dock is added and arranged: what Reset layout goes back to.
     void keepAsDefault();
@@ -33,6 +38,7 @@ public:
     // Titles in the current language; `robotName` is added to the acting
     // docks' titles when not empty.
     void retitle(const QString &robotName);
+    void retranslate();
 
 private:
     struct Dock {
@@ -44,4 +50,7 @@ private:
     QList<QDockWidget *> m_docks;
     QList<Dock> m_titles;
     QByteArray m_default;
+    QAction *m_resetAction;
+    QAction *m_nextAction;
+    QAction *m_previousAction;
 };

@@ -2,6 +2,7 @@
 #include "recording_actions.h"
 
 #include "recording_file.h"
+#include "replay_bar.h"
 #include "robot_fleet.h"
 #include "robot_session.h"
 
@@ -14,6 +15,7 @@
 #include <QSaveFile>
 #include <QStandardPaths>
 #include <QTextStream>
+#include <QToolBar>
 
 RecordingActions::RecordingActions(RobotFleet &fleet, QWidget *dialogParent)
     : QObject(dialogParent), m_fleet(fleet), m_dialogParent(dialogParent)
@@ -30,6 +32,28 @@ RecordingActions::RecordingActions(RobotFleet &fleet, QWidget *dialogParent)
     m_exportCsv = new QAction(this);
     m_exportCsv->setObjectName("exportCsvAction");
     connect(m_exportCsv, &QAction::triggered, this, &RecordingActions::chooseRecordingToExport);
+
+    m_toolBar = new QToolBar(dialogParent);
+    m_toolBar->setObjectName("recordingToolBar");
+    m_toolBar->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
+    m_toolBar->addAction(m_record);
+    m_toolBar->addAction(m_open);
+    m_replayBar = new ReplayBar(m_toolBar);
+    m_replayBar->setObjectName("replayBar");
+    m_replayBarAction = m_toolBar->addWidget(m_replayBar);
+    m_replayBarAction->setVisible(false);
+    const auto control = [this](const oilink::ReplayCommand &command) {
+        if (RobotSession *robot = m_fleet.selected())
+            robot->controlReplay(command);
+    };
+    connect(m_replayBar, &ReplayBar::playRequested, this, [control] { control(oilink::ReplayCommand::play()); });
+    connect(m_replayBar, &ReplayBar::pauseRequested, this, [control] { control(oilink::ReplayCommand::pause()); });
+    connect(m_replayBar, &ReplayBar::stepRequested, this,
+            [control](int frames) { control(oilink::ReplayCommand::step(frames)); });
+    connect(m_replayBar, &ReplayBar::speedChosen, this,
+            [control](double speed) { control(oilink::ReplayCommand::setSpeed(speed)); });
+    connect(m_replayBar, &ReplayBar::seekRequested, this,
+            [control](qint64 us) { control(oilink::ReplayCommand::seek(us)); });
 }
 
 void RecordingActions::retranslate()
@@ -39,6 +63,7 @@ void RecordingActions::retranslate()
     m_open->setText(tr("&Open recording…"));
     m_open->setToolTip(tr("Replay a recording as a robot of its own"));
     m_exportCsv->setText(tr("&Export recording as CSV…"));
+    m_toolBar->setWindowTitle(tr("Recording and replay"));
 }
 
 void RecordingActions::showSelectedRobot()
@@ -46,6 +71,27 @@ void RecordingActions::showSelectedRobot()
     const RobotSession *robot = m_fleet.selected();
     m_record->setEnabled(robot && !robot->isReplay());
     m_record->setChecked(robot && robot->recording().active);
+    const bool replay = robot && robot->isReplay();
+    m_replayBarAction->setVisible(replay);
+    if (replay) {
+        m_toolBar->show();
+        showReplay(robot->replay());
+    }
+}
+
+void RecordingActions::showReplay(const oilink::ReplayStatus &status)
+{
+    ReplayBar::Position p;
+    p.positionUs = status.positionUs;
+    p.durationUs = status.durationUs;
+    p.frame = status.frame;
+    p.frameCount = status.frameCount;
+    p.playing = status.playing;
+    p.finished = status.finished;
+    p.speed = status.speed;
+    p.fileName = QFileInfo(status.path).fileName();
+    p.damage = status.damage;
+    m_replayBar->setPosition(p);
 }
 
 bool RecordingActions::openRecording(const QString &path, QString *error)

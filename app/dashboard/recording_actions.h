@@ -1,16 +1,22 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "replay_transport.h"
+
 #include <QObject>
 #include <QString>
 
 class QAction;
+class QToolBar;
 class QWidget;
+class ReplayBar;
 class RobotFleet;
 
 // File → Record, Open recording… and Export recording as CSV…: the dialogs,
 // and what each does to the robots. Recording acts on the selected robot; a
-// recording opens as a robot of its own in the list.
+// recording opens as a robot of its own in the list. The Recording and
+// replay toolbar holds Record, Open and, while a replay is selected, the
+// replay bar, whose buttons play, pause, step and seek that replay.
 class RecordingActions : public QObject {
     Q_OBJECT
 public:
@@ -19,6 +25,8 @@ public:
     QAction *recordAction() const { return m_record; }
     QAction *openAction() const { return m_open; }
     QAction *exportCsvAction() const { return m_exportCsv; }
+    QToolBar *toolBar() const { return m_toolBar; }
+    ReplayBar *replayBar() const { return m_replayBar; }
 
     // A new robot replaying `path`, selected. False, with the reason in
     // `error`, for a file that cannot be replayed; nothing changes then.
@@ -26,8 +34,10 @@ public:
     // Writes one CSV row per frame of a recording; returns an error or "".
     static QString exportRecordingCsv(const QString &recordingPath, const QString &csvPath);
 
-    // Record follows the selected robot: checked while it records, off for a replay.
+    // Record follows the selected robot: checked while it records, off for a
+    // replay; the replay bar shows while a replay is selected.
     void showSelectedRobot();
+    void showReplay(const oilink::ReplayStatus &status);
     void retranslate();
 
 signals:
@@ -43,4 +53,7 @@ private:
     QAction *m_record = nullptr;
     QAction *m_open = nullptr;
     QAction *m_exportCsv = nullptr;
+    QToolBar *m_toolBar = nullptr;
+    ReplayBar *m_replayBar = nullptr;
+    QAction *m_replayBarAction = nullptr; // shows and hides the replay bar
 };

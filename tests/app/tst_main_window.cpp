@@ -2,6 +2,7 @@
 // The assembled window: connecting to the virtual robot, mode buttons down
 // to the bytes, settings, and a bad port.
 #include "main_window.h"
+#include "recording_actions.h"
 #include "room_actions.h"
 #include "connection_bar.h"
 #include "mode_panel.h"
@@ -451,7 +452,7 @@ private slots:
 
         // The same recording as CSV: a header and one row per frame.
         const QString csv = dir.filePath("class.csv");
-        QCOMPARE(MainWindow::exportRecordingCsv(path, csv), QString());
+        QCOMPARE(RecordingActions::exportRecordingCsv(path, csv), QString());
         QFile file(csv);
         QVERIFY(file.open(QIODevice::ReadOnly));
         const QList<QByteArray> lines = file.readAll().split('\n');
@@ -459,7 +460,7 @@ private slots:
         QCOMPARE(lines.size() - 2, window.replayBar()->position().frameCount); // header, trailing newline
         // A bad source leaves no file behind.
         const QString none = dir.filePath("none.csv");
-        QVERIFY(!MainWindow::exportRecordingCsv(dir.filePath("missing.oirec"), none).isEmpty());
+        QVERIFY(!RecordingActions::exportRecordingCsv(dir.filePath("missing.oirec"), none).isEmpty());
         QVERIFY(!QFile::exists(none));
     }
 

@@ -1,8 +1,15 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The room as a document: open and save round-trip, a bad file leaves the
 // room as it was, the shipped rooms, the last room at the next start, and
-// edits from the map with Undo.
+// edits from the map with Undo. The window's robots in the room, and the
+// robots the window starts with, each without a window.
 #include "room_actions.h"
+
+#include "fleet_directory.h"
+#include "restored_robots.h"
+#include "robot_fleet.h"
+#include "robot_session.h"
+#include "room_robots.h"
 
 #include "room_file.h"
 
@@ -149,6 +156,63 @@ private slots:
         // Opening a room starts afresh.
         QVERIFY(actions.openRoom(":/rooms/empty_floor.json"));
         QCOMPARE(actions.undoStack()->count(), 0);
+    }
+
+    // A virtual robot is put down in the room and its odometry starts where
+    // it stands; connected elsewhere, it gives its spot back; removed, too.
+    void virtualRobotsTakeAPlaceInTheRoom()
+    {
+        auto room = std::make_shared<sim::Room>(sim::World::classroom());
+        RobotFleet fleet;
+        FleetDirectory directory;
+        RoomRobots robots(room, fleet, directory);
+        RobotSession *first = fleet.addRobot(oilink::LinkSettings::virtualRobotOf(oi::ProfileId::Create2, {}), {}, false);
+        RobotSession *second = fleet.addRobot(oilink::LinkSettings::virtualRobotOf(oi::ProfileId::Create1, {}), {}, false);
+        QVERIFY(robots.placeOf(first) >= 0);
+        QVERIFY(robots.placeOf(second) >= 0);
+        QVERIFY(robots.placeOf(first) != robots.placeOf(second));
+        QCOMPARE(room->robots().size(), std::size_t(2));
+        const std::optional<oi::Pose> where = robots.truePose(second);
+        QVERIFY(where);
+        QCOMPARE(second->odometry().start().xMm, where->xMm);
+        QCOMPARE(second->odometry().start().yMm, where->yMm);
+
+        robots.place(second, oilink::LinkSettings::serial("/dev/ttyUSB0"));
+        QCOMPARE(robots.placeOf(second), -1);
+        QVERIFY(!robots.truePose(second));
+        QCOMPARE(room->robots().size(), std::size_t(1));
+
+        QVERIFY(fleet.removeRobot(first));
+        QCOMPARE(robots.placeOf(first), -1);
+        QVERIFY(room->robots().empty());
+    }
+
+    // First start: the virtual robot. A settings file from the single-robot
+    // versions: that robot. Recordings and broker robots are not kept.
+    void theRobotsTheWindowStartsWith()
+    {
+        QSettings settings;
+        QList<SavedRobot> first = robotsToRestore(settings);
+        QCOMPARE(first.size(), 1);
+        QCOMPARE(first[0].link.transport, oilink::TransportKind::Virtual);
+
+        settings.setValue("connection/transport", 2); // TCP, as those versions numbered it
+        settings.setValue("connection/host", "raspberrypi");
+        settings.setValue("connection/tcpPort", 3333);
+        settings.setValue("connection/profile", int(oi::ProfileId::Roomba500));
+        const QList<SavedRobot> single = robotsToRestore(settings);
+        QCOMPARE(single.size(), 1);
+        QCOMPARE(single[0].link.transport, oilink::TransportKind::Tcp);
+        QCOMPARE(single[0].link.host, QString("raspberrypi"));
+        QCOMPARE(single[0].link.tcpPort, quint16(3333));
+        QCOMPARE(single[0].link.profile, std::optional(oi::ProfileId::Roomba500));
+
+        QList<SavedRobot> all = single;
+        all << SavedRobot{"replay", {}, oilink::LinkSettings::replayOf("run.oirec", oi::ProfileId::Create2, 115200, {}), false}
+            << SavedRobot{"r1", {}, oilink::LinkSettings::networkRobotOf("r1", oi::ProfileId::Create2), false};
+        const QList<SavedRobot> kept = robotsToKeep(all);
+        QCOMPARE(kept.size(), 1);
+        QCOMPARE(kept[0].link.host, QString("raspberrypi"));
     }
 };
 

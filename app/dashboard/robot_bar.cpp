@@ -1,0 +1,99 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "robot_bar.h"
+
+#include "display_palette.h"
+#include "oi_text.h"
+#include "robot_fleet.h"
+#include "robot_session.h"
+#include "robot_status_bar.h"
+
+#include <QAction>
+#include <QMainWindow>
+#include <QPushButton>
+#include <QToolBar>
+
+#include <cmath>
+
+RobotBar::RobotBar(RobotFleet &fleet, QMainWindow *window) : QObject(window), m_fleet(fleet)
+{
+    m_bar = new QToolBar(window);
+    m_bar->setObjectName("robotToolBar");
+    m_bar->setMovable(false);
+    m_bar->setFloatable(false);
+    // Always there: Stop all must never be hidden by a stray click.
+    m_bar->toggleViewAction()->setVisible(false);
+    m_bar->setContextMenuPolicy(Qt::PreventContextMenu);
+    m_list = new RobotList(m_bar);
+    m_list->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Preferred);
+    m_bar->addWidget(m_list);
+    m_stopAll = new QPushButton(m_bar);
+    m_stopAll->setObjectName("stopAllButton");
+    m_stopAll->setFont(display::valueFont(window->font(), 1.3));
+    m_stopAll->setMinimumHeight(48);
+    const display::State alert = display::State::Alert;
+    const QPalette palette = window->palette();
+    m_stopAll->setStyleSheet(QString("QPushButton { background: %1; color: %2; padding: 6px 16px; border-radius: 6px; }"
+                                     "QPushButton:pressed { background: %2; color: %1; }")
+                                 .arg(display::stateColor(alert, palette).name(), display::textOn(alert, palette).name()));
+    m_bar->addWidget(m_stopAll);
+    window->addToolBar(Qt::TopToolBarArea, m_bar);
+    window->addToolBarBreak(Qt::TopToolBarArea);
+    connect(m_stopAll, &QPushButton::clicked, &m_fleet, &RobotFleet::stopAll);
+    // Shift+Esc is read by the keyboard driving, before any shortcut; the
+    // menu names it.
+    m_stopAllAction = new QAction(this);
+    m_stopAllAction->setObjectName("stopAllAction");
+    connect(m_stopAllAction, &QAction::triggered, &m_fleet, &RobotFleet::stopAll);
+
+    const auto robotAt = [this](int index) {
+        return index >= 0 && index < m_fleet.count() ? m_fleet.robots()[index] : nullptr;
+    };
+    connect(m_list, &RobotList::selectRequested, this, [this, robotAt](int index) {
+        if (RobotSession *robot = robotAt(index))
+            m_fleet.select(robot);
+    });
+    connect(m_list, &RobotList::addRequested, this, &RobotBar::addRequested);
+    connect(m_list, &RobotList::renameRequested, this, [this, robotAt](int index, const QString &name) {
+        if (RobotSession *robot = robotAt(index))
+            robot->setName(m_fleet.uniqueName(name));
+    });
+    connect(m_list, &RobotList::removeRequested, this, [this, robotAt](int index) {
+        if (RobotSession *robot = robotAt(index))
+            m_fleet.removeRobot(robot);
+    });
+}
+
+void RobotBar::retranslate()
+{
+    m_stopAll->setText(tr("STOP ALL  (Shift+Esc)"));
+    m_stopAll->setToolTip(tr("Stop every robot in the window at once, whichever is selected.\n"
+                             "Space or Esc stops the selected robot."));
+    m_stopAll->setAccessibleName(tr("Stop all robots"));
+    m_bar->setWindowTitle(tr("Robots"));
+    m_stopAllAction->setText(tr("&Stop all robots\tShift+Esc"));
+    refresh();
+}
+
+void RobotBar::refresh()
+{
+    QList<RobotCardValues> cards;
+    for (const RobotSession *robot : m_fleet.robots()) {
+        RobotCardValues c;
+        c.name = robot->name();
+        c.colour = robot->colour();
+        c.profile = oitext::fromView(robot->robotProfile().name);
+        c.live = robot->isLive();
+        if (robot->isReplay())
+            c.profile = tr("Recording of %1").arg(c.profile);
+        if (robot->snapshotCount() > 0) {
+            c.mode = oitext::modeName(robot->latest().oiMode());
+            if (const auto percent = robot->latest().batteryPercent())
+                c.batteryPercent = int(std::lround(*percent));
+        }
+        c.link = robot->isConnected() ? RobotStatusBar::linkStateText(robot->state()) : tr("not connected");
+        cards << c;
+    }
+    m_list->setCards(cards);
+    if (m_fleet.selected())
+        m_list->setSelected(int(m_fleet.indexOf(m_fleet.selected())));
+}

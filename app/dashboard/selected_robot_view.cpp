@@ -1,0 +1,227 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "selected_robot_view.h"
+
+#include "byte_inspector.h"
+#include "connection_bar.h"
+#include "connection_checkup.h"
+#include "connection_request.h"
+#include "doctor_details.h"
+#include "drive_pad.h"
+#include "keyboard_driving.h"
+#include "led_editor.h"
+#include "lesson_panel.h"
+#include "mode_panel.h"
+#include "motors_panel.h"
+#include "odometry_map.h"
+#include "oi_text.h"
+#include "on_screen.h"
+#include "projector_view.h"
+#include "recording_actions.h"
+#include "robot_bar.h"
+#include "robot_diagram.h"
+#include "robot_fleet.h"
+#include "robot_session.h"
+#include "robot_status_bar.h"
+#include "room_robots.h"
+#include "schedule_editor.h"
+#include "script_editor.h"
+#include "sensor_gauges.h"
+#include "sensor_plots.h"
+#include "signal_bars.h"
+#include "song_composer.h"
+
+#include <QStatusBar>
+#include <QTimer>
+
+namespace {
+// The robot cards change slowly (mode, battery, link): four times a second.
+constexpr int kCardTicks = 8;
+} // namespace
+
+SelectedRobotView::SelectedRobotView(RobotFleet &fleet, RoomRobots &room, const DashboardViews &views,
+                                     QObject *parent)
+    : QObject(parent), m_fleet(fleet), m_room(room), m_views(views)
+{
+}
+
+RobotSession &SelectedRobotView::session() const
+{
+    return *m_fleet.selected();
+}
+
+void SelectedRobotView::addConnectionCheckup(RobotSession *robot, QStatusBar *statusBar, QWidget *dialogParent)
+{
+    auto *details = new DoctorDetails(statusBar);
+    details->setShownRobot(false);
+    statusBar->addWidget(details, 1);
+    m_doctorDetails.insert(robot, details);
+    // Not through the window: it may be mid-destruction when the robot goes.
+    connect(robot, &QObject::destroyed, details, &QObject::deleteLater);
+    new ConnectionCheckup(*robot, *details, ConnectionCheckup::askWithDialog(dialogParent), robot);
+}
+
+void SelectedRobotView::show(RobotSession *robot)
+{
+    if (!robot)
+        return;
+    const DashboardViews &v = m_views;
+    for (const QMetaObject::Connection &c : std::as_const(m_selectedConnections))
+        disconnect(c);
+    m_selectedConnections.clear();
+    TeleopController *teleop = &robot->teleop();
+    v.lessons->setRobot(robot, [this, robot] { return m_room.truePose(robot); });
+    m_selectedConnections = {
+        connect(robot, &RobotSession::profileChanged, this, &SelectedRobotView::applyProfile),
+        connect(robot, &RobotSession::stateChanged, this, &SelectedRobotView::showState),
+        connect(robot, &RobotSession::statisticsChanged, v.status, &RobotStatusBar::showStatistics),
+        connect(robot, &RobotSession::errorOccurred, v.connectionBar, &ConnectionBar::showError),
+        connect(robot, &RobotSession::firmwareChanged, this, [v](const QString &release) {
+            v.modePanel->setFirmware(release);
+            v.status->showFirmware(release);
+        }),
+        connect(robot, &RobotSession::recordingStatus, this, [v](const oilink::RecordingStatus &status) {
+            v.status->showRecording(status);
+            v.recording->showSelectedRobot();
+            if (!status.error.isEmpty())
+                v.connectionBar->showError(tr("Recording stopped: %1").arg(status.error));
+        }),
+        connect(robot, &RobotSession::replayStatus, v.recording, &RecordingActions::showReplay),
+        connect(robot, &RobotSession::bytesSent, v.inspector, &ByteInspector::appendTx),
+        connect(robot, &RobotSession::bytesReceived, v.inspector, &ByteInspector::appendRx),
+        connect(robot, &RobotSession::frameReceived, v.inspector, &ByteInspector::addSnapshot),
+        connect(robot, &RobotSession::scriptShown, v.script, &ScriptEditor::showScriptReply),
+        connect(robot, &RobotSession::scriptFailed, v.script, &ScriptEditor::showScriptFailed),
+        connect(teleop, &TeleopController::passiveChanged, v.drivePad, &DrivePad::setPassive),
+        connect(teleop, &TeleopController::motionStopped, this, [v] {
+            v.drivePad->resetToCentre();
+            v.keyboard->releaseAll();
+        }),
+        connect(teleop, &TeleopController::motionRefused, this, &SelectedRobotView::message),
+    };
+
+    v.plots->setHistory(&robot->history());
+    v.map->setOdometry(&robot->odometry());
+    // The virtual robot lives in the classroom world and starts where the
+    // odometry does, so a class can watch the estimate drift from the room.
+    m_room.floorShownNoMore();
+    m_room.showOn(*v.map, robot);
+    applyProfile(robot->robotProfile().id);
+    m_doctorDetails.removeIf([](const auto &entry) { return entry.value().isNull(); }); // removed robots
+    for (auto it = m_doctorDetails.cbegin(); it != m_doctorDetails.cend(); ++it)
+        it.value()->setShownRobot(it.key() == robot);
+    // The robot's own recent bytes, not the last robot's.
+    v.inspector->clear();
+    v.inspector->setConnectedAt(robot->connectedAtMs());
+    for (const RecentBytes::Chunk &chunk : robot->recentBytes().chunks())
+        chunk.sent ? v.inspector->appendTx(chunk.bytes, chunk.msecs) : v.inspector->appendRx(chunk.bytes, chunk.msecs);
+    v.modePanel->setFirmware(robot->firmwareRelease());
+    v.drivePad->setPassive(teleop->isPassive());
+    v.drivePad->resetToCentre();
+    v.keyboard->releaseAll();
+
+    // What is connected, not what was chosen last.
+    const oilink::TransportKind kind = robot->settings().transport;
+    if (kind == oilink::TransportKind::Network || kind == oilink::TransportKind::Replay) {
+        v.connectionBar->showCurrent(robot->settings().describe(), robot->isConnected());
+    } else if (robot->isConnected()) {
+        v.connectionBar->showConnected(connection::requestFor(robot->settings()));
+    } else {
+        v.connectionBar->setRequest(connection::requestFor(robot->settings()));
+        v.connectionBar->setConnected(robot->isConnected());
+    }
+    v.connectionBar->clearError();
+    v.status->showRobot(*robot, m_fleet.count() > 1);
+    v.recording->showSelectedRobot();
+    forgetShown();
+    v.robotBar->refresh();
+    refresh();
+}
+
+void SelectedRobotView::applyProfile(oi::ProfileId id)
+{
+    const DashboardViews &v = m_views;
+    const oi::RobotProfile &p = oi::profile(id);
+    v.diagram->setProfile(p);
+    v.gauges->setProfile(p);
+    v.signalBars->setProfile(p);
+    v.modePanel->setProfile(p);
+    v.inspector->setProfile(p);
+    v.songs->setProfile(p);
+    v.leds->setProfile(p);
+    v.schedule->setProfile(p);
+    v.script->setProfile(p);
+    v.motors->setProfile(p);
+    v.map->setProfile(p);
+    v.drivePad->setProfile(p);
+    v.plots->setProfile(p);
+    v.projector->setRobot(session().name(), p, &session().history());
+    v.status->showProfile(oitext::fromView(p.name));
+    m_shownSnapshot = ~0ull;
+}
+
+void SelectedRobotView::showState(oilink::LinkState state)
+{
+    m_views.status->showState(state);
+    // An error from a fault is over once the robot streams again.
+    if (state == oilink::LinkState::Streaming)
+        m_views.connectionBar->clearError();
+    if (state == oilink::LinkState::Closed)
+        m_views.connectionBar->setConnected(session().isConnected());
+    refresh();
+}
+
+void SelectedRobotView::forgetShown()
+{
+    m_shownSnapshot = ~0ull;
+    m_liveFlagOutdated = true;
+}
+
+void SelectedRobotView::refresh()
+{
+    if (!m_fleet.selected())
+        return;
+    const DashboardViews &v = m_views;
+    RobotSession &robot = session();
+    const bool live = robot.isLive();
+    if (live != m_shownLive || m_liveFlagOutdated) {
+        m_shownLive = live;
+        m_liveFlagOutdated = false;
+        v.diagram->setStale(!live);
+        v.gauges->setStale(!live);
+        // No driving, and no Enter Safe, without live data to see the robot
+        // by; a replay has no robot to drive.
+        v.drivePad->setEnabled(live && !robot.isReplay());
+        v.status->showLive(live, robot.isReplay());
+    }
+    // Repaint only what changed: a robot at rest streams the same values.
+    if (robot.snapshotCount() != m_shownSnapshot) {
+        m_shownSnapshot = robot.snapshotCount();
+        const oi::SensorSnapshot &s = robot.latest();
+        if (!(s == m_shown)) {
+            m_shown = s;
+            v.diagram->setSnapshot(s);
+            v.gauges->setSnapshot(s);
+            v.signalBars->setSnapshot(s);
+            v.modePanel->setSnapshot(s);
+            v.songs->setSnapshot(s);
+        }
+        // The first live frame is about to be painted: the other saved
+        // robots connect after it.
+        if (m_shownSnapshot > 0 && m_fleet.hasRobotsWaiting())
+            QTimer::singleShot(0, &m_fleet, &RobotFleet::connectWaiting);
+    }
+    ++m_displayTicks;
+    // Scrolling plots are the dearest thing on screen; 15 Hz still moves
+    // them smoothly and halves their cost.
+    if (isOnScreen(v.plots) && m_displayTicks % 2 == 0)
+        v.plots->refresh();
+    // Where the virtual robots really are, so the map shows the odometry drift.
+    if (isOnScreen(v.map) && m_displayTicks % 3 == 0)
+        m_room.showOn(*v.map, &robot);
+    if (m_displayTicks % kCardTicks == 0)
+        v.robotBar->refresh();
+    if (m_displayTicks % 2 == 0) {
+        v.lessons->refresh();
+        v.projector->refresh(robot.latest(), live);
+    }
+}

@@ -1,0 +1,105 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "link_status.h"
+#include "robot_profile.h"
+#include "sensor_snapshot.h"
+
+#include <QHash>
+#include <QList>
+#include <QObject>
+#include <QPointer>
+
+class ByteInspector;
+class ConnectionBar;
+class DoctorDetails;
+class DrivePad;
+class KeyboardDriving;
+class LedEditor;
+class LessonPanel;
+class ModePanel;
+class MotorsPanel;
+class OdometryMap;
+class ProjectorView;
+class QStatusBar;
+class QWidget;
+class RecordingActions;
+class RobotBar;
+class RobotDiagram;
+class RobotFleet;
+class RobotSession;
+class RobotStatusBar;
+class RoomRobots;
+class ScheduleEditor;
+class ScriptEditor;
+class SensorGauges;
+class SensorPlots;
+class SignalBars;
+class SongComposer;
+
+// Every view of the window that shows the selected robot.
+struct DashboardViews {
+    ConnectionBar *connectionBar = nullptr;
+    ModePanel *modePanel = nullptr;
+    RobotDiagram *diagram = nullptr;
+    SensorGauges *gauges = nullptr;
+    SensorPlots *plots = nullptr;
+    SignalBars *signalBars = nullptr;
+    ByteInspector *inspector = nullptr;
+    SongComposer *songs = nullptr;
+    LedEditor *leds = nullptr;
+    ScheduleEditor *schedule = nullptr;
+    ScriptEditor *script = nullptr;
+    MotorsPanel *motors = nullptr;
+    OdometryMap *map = nullptr;
+    DrivePad *drivePad = nullptr;
+    LessonPanel *lessons = nullptr;
+    ProjectorView *projector = nullptr;
+    KeyboardDriving *keyboard = nullptr;
+    RobotStatusBar *status = nullptr;
+    RecordingActions *recording = nullptr;
+    RobotBar *robotBar = nullptr;
+};
+
+// The selected robot on every view: what each shows when a robot is
+// selected, its signals while it stays selected, and what the display timer
+// reads from its model (about 30 times a second, never once per frame; each
+// view repaints only when what it shows changed).
+class SelectedRobotView : public QObject {
+    Q_OBJECT
+public:
+    static constexpr int kDisplayIntervalMs = 33;
+
+    SelectedRobotView(RobotFleet &fleet, RoomRobots &room, const DashboardViews &views, QObject *parent = nullptr);
+
+    // A robot that sends nothing is examined (asleep, wrong baud, another
+    // profile); each robot's findings have their own line in `statusBar`,
+    // shown while it is selected. Questions go to a dialog over `dialogParent`.
+    void addConnectionCheckup(RobotSession *robot, QStatusBar *statusBar, QWidget *dialogParent);
+    // Every view shows `robot` from now on.
+    void show(RobotSession *robot);
+    void applyProfile(oi::ProfileId profile);
+    void showState(oilink::LinkState state);
+    // What the display timer does.
+    void refresh();
+    // The next refresh() redraws even what looks unchanged (a new connection, a new language).
+    void forgetShown();
+
+signals:
+    // For the status bar, a few seconds.
+    void message(const QString &text);
+
+private:
+    RobotSession &session() const;
+
+    RobotFleet &m_fleet;
+    RoomRobots &m_room;
+    DashboardViews m_views;
+    QList<QMetaObject::Connection> m_selectedConnections;
+    QHash<const RobotSession *, QPointer<DoctorDetails>> m_doctorDetails; // what each robot's last connection check found
+    quint64 m_shownSnapshot = ~0ull;
+    oi::SensorSnapshot m_shown; // what the views show now
+    bool m_shownLive = false;
+    bool m_liveFlagOutdated = true;
+    quint64 m_displayTicks = 0;
+};

@@ -3,7 +3,7 @@
 
 namespace oi {
 
-bool needsSafeOrFull(Command command)
+bool ignoredInPassive(Command command)
 {
     switch (command) {
     case Command::Drive:
@@ -24,6 +24,19 @@ bool needsSafeOrFull(Command command)
     default:
         return false;
     }
+}
+
+bool needsSafeOrFull(Command command)
+{
+    return ignoredInPassive(command) || command == Command::PlayScript;
+}
+
+std::string_view whyNotInPassive(Command command)
+{
+    if (command == Command::PlayScript)
+        return "in Passive mode the Create ignores the script's Drive, so a wait there never ends and the waiting "
+               "robot hears nothing more";
+    return "the robot ignores it in Passive mode";
 }
 
 bool availableWhenOff(Command command)

@@ -899,7 +899,7 @@ struct VirtualRobot::State {
         const Command cmd = spec->command;
         if (mode == OiMode::Off && !oi::availableWhenOff(cmd))
             return;
-        if (mode == OiMode::Passive && oi::needsSafeOrFull(cmd))
+        if (mode == OiMode::Passive && oi::ignoredInPassive(cmd))
             return;
         if (isCleaning(cmd)) {
             enterPassive(); // the cleaning itself is not simulated

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // One test per row of ../shared/spec/ERRATA.md, named after the row.
+#include "command_modes.h"
 #include "odometry.h"
 #include "oi_test_support.h"
 #include "script_assembler.h"
@@ -398,8 +399,9 @@ private slots:
         // Stop the stream, stop motion, and Start: the robot is left in Passive.
         QCOMPARE(textFrom(CommandEncoder(profile(ProfileId::Create2)).shutdownSequence()),
                  QString("150 0 137 0 0 0 0 138 0 128"));
+        // The Create also ends a script first (row 20).
         QCOMPARE(textFrom(CommandEncoder(profile(ProfileId::Create1)).shutdownSequence()),
-                 QString("150 0 137 0 0 0 0 138 0 128"));
+                 QString("150 0 152 0 137 0 0 0 0 138 0 128"));
     }
 
     void row18_streamSizeLimit()
@@ -421,6 +423,22 @@ private slots:
         const int two6[] = {6, 6};
         QVERIFY(create1.stream(one6).ok());
         QVERIFY(!create1.stream(two6).ok());
+    }
+
+    void row20_aWaitingCreateHearsNothing()
+    {
+        // The Create plays a script in Passive, where it ignores the script's
+        // Drive; this program sends Play Script only in Safe or Full.
+        QVERIFY(!ignoredInPassive(Command::PlayScript));
+        QVERIFY(needsSafeOrFull(Command::PlayScript));
+        QVERIFY(!needsSafeOrFull(Command::Script));
+        QVERIFY(!whyNotInPassive(Command::PlayScript).empty());
+        // Leaving a Create ends its script: an empty Script before the stop
+        // and the final Passive. The Roombas have no scripts.
+        QCOMPARE(textFrom(CommandEncoder(profile(ProfileId::Create1)).endScript()), QString("152 0"));
+        QCOMPARE(textFrom(CommandEncoder(profile(ProfileId::Create1)).shutdownSequence()).left(11), QString("150 0 152 0"));
+        for (ProfileId id : {ProfileId::Roomba500, ProfileId::Create2})
+            QVERIFY(CommandEncoder(profile(id)).endScript().empty());
     }
 };
 

@@ -261,6 +261,7 @@ private slots:
     void scriptWaitsForABump();
     void squareScriptTurnsRightAngles();
     void shutdownStopsALoopingScript();
+    void scriptPlayedInPassiveLeavesTheRobotDeaf();
     void startBeepsAndStopPlaysASong();
     void showScriptRepliesAndHaltsTheStream();
 
@@ -1460,6 +1461,39 @@ void TestVirtualRobot::shutdownStopsALoopingScript()
     b.run(3s);
     QCOMPARE(b.robot.truePose().xMm, stopped.xMm);
     QCOMPARE(b.robot.truePose().thetaRad, stopped.thetaRad);
+    // The script ended rather than starting again in Passive, where its
+    // Wait Distance would never end: the robot still hears.
+    const std::optional<SensorSnapshot> mode = b.tryQuery({35});
+    QVERIFY2(mode, "the robot no longer answers: the script went on in Passive");
+    QCOMPARE(mode->oiMode(), OiMode::Passive);
+    QCOMPARE(b.robot.script(), Bytes{});
+}
+
+// ERRATA 20: the Create plays a script in Passive, ignores its Drive there,
+// and so waits for ever for a distance, hearing nothing meanwhile.
+void TestVirtualRobot::scriptPlayedInPassiveLeavesTheRobotDeaf()
+{
+    const RobotProfile &p = profileOf(ProfileId::Create1);
+    Bench b(p);
+    b.robot.setWorld(emptyWorld());
+    b.send(b.encoder.start());
+    b.send(Bytes{152, 13, 137, 1, 44, 128, 0, 156, 1, 144, 137, 0, 0, 0, 0}); // "Drive 40 cm and stop"
+    b.send(b.encoder.playScript());
+    b.run(5s);
+    QCOMPARE(b.robot.truePose().travelledMm, 0.0);
+    QCOMPARE(b.tryQuery({35}), std::nullopt);
+    b.send(b.encoder.shutdownSequence());
+    b.run(5s);
+    QCOMPARE(b.tryQuery({35}), std::nullopt);
+    // In Safe the same script drives its 40 cm, ends, and the robot answers.
+    Bench safe(p);
+    safe.robot.setWorld(emptyWorld());
+    safe.startSafe();
+    safe.send(Bytes{152, 13, 137, 1, 44, 128, 0, 156, 1, 144, 137, 0, 0, 0, 0});
+    safe.send(safe.encoder.playScript());
+    safe.run(3s);
+    QVERIFY(safe.robot.truePose().travelledMm >= 400);
+    QVERIFY(safe.tryQuery({35}));
 }
 
 void TestVirtualRobot::scriptWaitsForABump()

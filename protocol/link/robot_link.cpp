@@ -161,8 +161,8 @@ void RobotLink::close()
         m_transport->flush(kFlushMs); // what was sent is carried out
     } else if (m_transport && m_transportOpen) {
         // ERRATA 17: leave it stopped and in Passive, where it saves its battery.
-        // The bytes are the same on every profile, so this holds even while
-        // the probe has not yet found which one it is.
+        // Before the probe has found the profile, the Roomba's bytes: a
+        // Create is probed only after it answered, with no script played.
         const oi::RobotProfile &profile = m_profile ? *m_profile : oi::profile(oi::ProfileId::Create2);
         writeBytes(toBytes(oi::CommandEncoder(profile).shutdownSequence()));
         m_transport->flush(kFlushMs);
@@ -246,10 +246,14 @@ void RobotLink::onTransportOpened()
     m_brc->wake();
     m_brc->setKeepAwake(m_settings.keepAwakeMs);
     dropPartialInput();
-    if (m_profile)
+    if (m_profile) {
+        // A bridge in RFC 2217 mode takes its serial rate from us, as the
+        // probe sets it; without this it stays at whatever rate it last had.
+        m_transport->setBaud(baud());
         useProfile();
-    else
+    } else {
         startProbe();
+    }
 }
 
 void RobotLink::onTransportError(const QString &message)
@@ -463,6 +467,10 @@ void RobotLink::send(const QByteArray &bytes)
 {
     if (!m_transport || !m_transportOpen) {
         reportError(tr("not connected: the command was not sent"), false);
+        return;
+    }
+    if (const QString why = m_settings.whyNoBaudChange(); !why.isEmpty() && LinkSettings::holdsBaudCommand(bytes)) {
+        reportError(why, false);
         return;
     }
     writeBytes(bytes);

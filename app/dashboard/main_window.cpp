@@ -384,6 +384,7 @@ void MainWindow::showSelected(RobotSession *robot)
         connect(robot, &RobotSession::scriptShown, m_script, &ScriptEditor::showScriptReply),
         connect(robot, &RobotSession::scriptFailed, m_script, &ScriptEditor::showScriptFailed),
         connect(teleop, &TeleopController::passiveChanged, m_drivePad, &DrivePad::setPassive),
+        connect(teleop, &TeleopController::passiveChanged, m_script, &ScriptEditor::setPassive),
         connect(teleop, &TeleopController::motionStopped, this, [this] {
             m_drivePad->resetToCentre();
             m_keyboard->releaseAll();
@@ -409,6 +410,7 @@ void MainWindow::showSelected(RobotSession *robot)
         chunk.sent ? m_inspector->appendTx(chunk.bytes, chunk.msecs) : m_inspector->appendRx(chunk.bytes, chunk.msecs);
     m_modePanel->setFirmware(robot->firmwareRelease());
     m_drivePad->setPassive(teleop->isPassive());
+    m_script->setPassive(teleop->isPassive());
     m_drivePad->resetToCentre();
     m_keyboard->releaseAll();
 

@@ -229,7 +229,8 @@ struct VirtualRobot::State {
     Leds leds;
     std::vector<std::optional<oi::Song>> songs;
     int songNumber = 0;
-    Microseconds songEndsAt{0};
+    Microseconds songEndsAt{0};  // a song started by Play (141): packet 37 reads 1
+    Microseconds soundEndsAt{0}; // the robot's own sounds too: the Start beep, the Stop song
     oi::CleaningSchedule schedule;
     long long clockMicros = 0; // since Sunday 00:00
 
@@ -253,7 +254,9 @@ struct VirtualRobot::State {
     RoomView roomView;
 
     bool create1() const { return profile->id == oi::ProfileId::Create1; }
+    // Packet 37: "1 if an OI song is playing"; the robot's own beeps are not OI songs.
     bool songPlaying() const { return now < songEndsAt; }
+    bool sounding() const { return songPlaying() || now < soundEndsAt; }
 
     const FloorContact &floorContact()
     {
@@ -519,7 +522,7 @@ struct VirtualRobot::State {
             load += 250 * (motorDuty[0] + motorDuty[1] + motorDuty[2]);
         else
             load += std::abs(mainBrushMa()) + std::abs(sideBrushMa()) + 550 * motorDuty[2];
-        if (songPlaying())
+        if (sounding())
             load += kSpeakerMa;
         return -load;
     }
@@ -911,7 +914,7 @@ struct VirtualRobot::State {
             break;
         case Command::Start:
             if (mode == OiMode::Off && !create1())
-                songEndsAt = std::max(songEndsAt, now + kStartBeep);
+                soundEndsAt = now + kStartBeep;
             enterPassive();
             break;
         case Command::Baud:
@@ -940,7 +943,7 @@ struct VirtualRobot::State {
             wait.reset();
             endScript();
             mode = OiMode::Off;
-            songEndsAt = now + kStopSong;
+            soundEndsAt = now + kStopSong;
             break;
         case Command::Drive:
             drive(s16(c[1], c[2]), s16(c[3], c[4]));
@@ -1169,6 +1172,7 @@ std::optional<oi::Song> VirtualRobot::song(int slot) const
 }
 
 bool VirtualRobot::songPlaying() const { return m_state->songPlaying(); }
+bool VirtualRobot::sounding() const { return m_state->sounding(); }
 
 oi::CleaningSchedule VirtualRobot::schedule() const { return m_state->schedule; }
 

@@ -263,6 +263,7 @@ private slots:
     void shutdownStopsALoopingScript();
     void scriptPlayedInPassiveLeavesTheRobotDeaf();
     void startBeepsAndStopPlaysASong();
+    void onlyPlaySetsSongPlaying();
     void showScriptRepliesAndHaltsTheStream();
 
     // Sensor traffic.
@@ -1258,27 +1259,46 @@ void TestVirtualRobot::songs()
 }
 
 // The documents: Start from Off beeps once (Roomba 500, Create 2), and Stop
-// plays a song as the Create 2 leaves the OI; packet 37 says so.
+// plays a song as the Create 2 leaves the OI. Packet 37 is "1 if an OI song
+// is playing": neither is one, so it reads 0 through both.
 void TestVirtualRobot::startBeepsAndStopPlaysASong()
 {
     for (ProfileId id : {ProfileId::Roomba500, ProfileId::Create2, ProfileId::Create1}) {
         Bench b(profileOf(id));
         b.send(b.encoder.start());
         const bool beeps = id != ProfileId::Create1;
-        QCOMPARE(b.value(37), beeps ? 1 : 0);
+        QCOMPARE(b.robot.sounding(), beeps);
+        QCOMPARE(b.value(37), 0);
         b.run(150ms);
-        QCOMPARE(b.value(37), 0);
+        QVERIFY(!b.robot.sounding());
         b.send(b.encoder.start()); // from Passive: no beep
-        QCOMPARE(b.value(37), 0);
+        QVERIFY(!b.robot.sounding());
     }
     Bench b(profileOf(ProfileId::Create2));
     b.startSafe();
     b.run(150ms);
     b.send(b.encoder.stop());
     QCOMPARE(b.robot.mode(), OiMode::Off);
-    QVERIFY(b.robot.songPlaying()); // heard, not read: the robot no longer answers
-    b.run(1100ms);
+    QVERIFY(b.robot.sounding()); // heard, not read: the robot no longer answers
     QVERIFY(!b.robot.songPlaying());
+    b.run(1100ms);
+    QVERIFY(!b.robot.sounding());
+}
+
+// Packet 37 reads 1 only for a song started by Play (141), on every model.
+void TestVirtualRobot::onlyPlaySetsSongPlaying()
+{
+    for (ProfileId id : {ProfileId::Roomba500, ProfileId::Create2, ProfileId::Create1}) {
+        Bench b(profileOf(id));
+        b.send(b.encoder.start());
+        QCOMPARE(b.value(37), 0);
+        b.send(b.encoder.safe());
+        b.send(b.encoder.song(0, Song{{{60, 32}}})); // half a second
+        b.send(b.encoder.play(0));
+        QCOMPARE(b.value(37), 1);
+        b.run(600ms);
+        QCOMPARE(b.value(37), 0);
+    }
 }
 
 void TestVirtualRobot::ledsAndDisplay()

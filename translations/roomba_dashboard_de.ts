@@ -1462,8 +1462,8 @@ Klicken wählt diesen Roboter: jedes Dock zeigt ihn</translation>
         <translation>Der %1 hat keine 7-Segment-Anzeige: Digit LEDs Raw (163) und Digit LEDs ASCII (164) gibt es nur bei Roomba 500 / Create 2.</translation>
     </message>
     <message>
-        <source>⚠ %1. It is sent anyway; use Text (164) to be sure.</source>
-        <translation>⚠ %1. Es wird trotzdem gesendet; verwenden Sie zur Sicherheit Text (164).</translation>
+        <source>⚠ Digit LEDs Raw (163) does not work in current Create 2 and Roomba 500/600 firmware. It is sent anyway; use Text (164) to be sure.</source>
+        <translation>⚠ Digit LEDs Raw (163) funktioniert mit der aktuellen Firmware von Create 2 und Roomba 500/600 nicht. Es wird trotzdem gesendet; verwenden Sie zur Sicherheit Text (164).</translation>
     </message>
     <message>
         <source>%1.</source>

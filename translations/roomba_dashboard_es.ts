@@ -1461,8 +1461,8 @@ Haga clic para seleccionar este robot: todos los paneles lo muestran</translatio
         <translation>El %1 no tiene pantalla de 7 segmentos: Digit LEDs Raw (163) y Digit LEDs ASCII (164) son solo para Roomba 500 / Create 2.</translation>
     </message>
     <message>
-        <source>⚠ %1. It is sent anyway; use Text (164) to be sure.</source>
-        <translation>⚠ %1. Se envía de todos modos; use Texto (164) para asegurarse.</translation>
+        <source>⚠ Digit LEDs Raw (163) does not work in current Create 2 and Roomba 500/600 firmware. It is sent anyway; use Text (164) to be sure.</source>
+        <translation>⚠ Digit LEDs Raw (163) no funciona con el firmware actual de Create 2 y Roomba 500/600. Se envía de todos modos; use Texto (164) para asegurarse.</translation>
     </message>
     <message>
         <source>%1.</source>

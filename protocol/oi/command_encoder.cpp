@@ -310,9 +310,9 @@ EncodeResult CommandEncoder::digitLedsRaw(int digit3, int digit2, int digit1, in
                            {"digit 1", digit1, 0, 255}, {"digit 0", digit0, 0, 255}}))
         return *e;
     EncodeResult result = withOpcode(Command::DigitLedsRaw, {digit3, digit2, digit1, digit0});
-    // ERRATA 9: sent as asked, but the user should know it may do nothing.
-    if (m_profile->id == ProfileId::Create2)
-        result.warning = "Digit LEDs Raw (163) does not work in current Create 2 firmware";
+    // ERRATA 9: sent as asked, but the user should know it may do nothing,
+    // on every model that has it.
+    result.warning = "Digit LEDs Raw (163) does not work in current Create 2 and Roomba 500/600 firmware";
     return result;
 }
 

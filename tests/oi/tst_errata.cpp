@@ -193,6 +193,13 @@ private slots:
         QCOMPARE(profile(ProfileId::Create1).packet(15)->key, std::string_view("unused_15"));
         roomba.set(15, 77);
         QCOMPARE(roomba.dirtDetect(), 77);
+        // Unused bytes are always 0: "Range: 0" for 16 on every model, and 15 on the Create.
+        for (ProfileId id : {ProfileId::Roomba500, ProfileId::Create2, ProfileId::Create1}) {
+            QCOMPARE(profile(id).packet(16)->min, 0);
+            QCOMPARE(profile(id).packet(16)->max, 0);
+        }
+        QCOMPARE(profile(ProfileId::Create1).packet(15)->max, 0);
+        QCOMPARE(profile(ProfileId::Create2).packet(15)->max, 255);
         // 17: 255 is "no IR byte" on the Create, 0 on the Roombas.
         s.set(17, 255);
         QCOMPARE(s.irOmni().kind, IrCharacter::Kind::None);

@@ -109,7 +109,8 @@ void CommandSender::onQueryFailed()
     if (m_phase != Phase::AskingState)
         return;
     if (!m_startSent && m_order.changeMode) {
-        // Silent: Off mode, which only Start leaves.
+        // Silent: Off mode, which only Start leaves (or a Create's script
+        // waiting, which the link ends before Start).
         m_startSent = true;
         send({128});
         askState();

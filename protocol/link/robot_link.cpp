@@ -7,7 +7,9 @@
 #include "stream_packets.h"
 #include "transport.h"
 
+#include "command_catalog.h"
 #include "command_encoder.h"
+#include "command_modes.h"
 
 #include <QCoreApplication>
 #include <QDateTime>
@@ -33,11 +35,18 @@ QByteArray toBytes(const oi::Bytes &bytes)
     return QByteArray(reinterpret_cast<const char *>(bytes.data()), static_cast<qsizetype>(bytes.size()));
 }
 
-// Start and Pause/Resume Stream exist on every profile, so any encoder makes them.
-QByteArray startBytes()
+// Start, which leaves Safe or Full: on a Create after ending a script that
+// may be running, which would otherwise play on in Passive, where its Drive
+// is ignored and its waits never end (ERRATA 20).
+QByteArray startBytes(const oi::RobotProfile &profile)
 {
-    return toBytes(*oi::CommandEncoder(oi::profile(oi::ProfileId::Create2)).start());
+    const oi::CommandEncoder encoder(profile);
+    oi::Bytes out = encoder.endScript();
+    out.push_back(*encoder.start()->begin());
+    return toBytes(out);
 }
+
+// Pause/Resume Stream exists on every profile, so any encoder makes it.
 
 QByteArray streamStateBytes(bool running)
 {
@@ -364,7 +373,7 @@ void RobotLink::startStream()
     m_streamCommand = toBytes(*command);
     m_frameSinceStreamStart = false;
     m_rearmMs = kNoDataAfterMs;
-    if (!writeBytes(startBytes()) || !writeBytes(m_streamCommand))
+    if (!writeBytes(startBytes(*m_profile)) || !writeBytes(m_streamCommand))
         return;
     m_streamRequested = true;
     m_noData.start(m_rearmMs);
@@ -379,7 +388,7 @@ void RobotLink::startStream()
 // missing for a second must not go on driving on commands sent blind.
 void RobotLink::rearmStream()
 {
-    writeBytes(startBytes());
+    writeBytes(startBytes(*m_profile));
     writeBytes(m_streamCommand);
 }
 
@@ -472,6 +481,16 @@ void RobotLink::send(const QByteArray &bytes)
     if (const QString why = m_settings.whyNoBaudChange(); !why.isEmpty() && LinkSettings::holdsBaudCommand(bytes)) {
         reportError(why, false);
         return;
+    }
+    // Start or cleaning, from any command path: a Create ends its script
+    // first, or the script would go on in Passive, deaf (ERRATA 20).
+    if (m_profile && !bytes.isEmpty()) {
+        const oi::CommandSpec *spec = oi::commandSpecForOpcode(*m_profile, std::uint8_t(bytes.front()));
+        if (spec && oi::entersPassive(spec->command)) {
+            const oi::Bytes endScript = oi::CommandEncoder(*m_profile).endScript();
+            if (!endScript.empty() && !writeBytes(toBytes(endScript)))
+                return;
+        }
     }
     writeBytes(bytes);
 }

@@ -39,6 +39,27 @@ std::string_view whyNotInPassive(Command command)
     return "the robot ignores it in Passive mode";
 }
 
+bool startsCleaning(Command command)
+{
+    switch (command) {
+    case Command::Spot:
+    case Command::Clean:
+    case Command::Cover:
+    case Command::Max:
+    case Command::Demo:
+    case Command::SeekDock:
+    case Command::CoverAndDock:
+        return true;
+    default:
+        return false;
+    }
+}
+
+bool entersPassive(Command command)
+{
+    return command == Command::Start || startsCleaning(command);
+}
+
 bool availableWhenOff(Command command)
 {
     return command == Command::Start || command == Command::Reset;

@@ -19,6 +19,14 @@ bool needsSafeOrFull(Command command);
 // Why a command that needsSafeOrFull is not sent in Passive, for messages.
 std::string_view whyNotInPassive(Command command);
 
+// The cleaning and demo commands, which the robot carries out itself, in
+// Passive mode.
+bool startsCleaning(Command command);
+// Commands that leave Safe or Full for Passive ("Changes mode to: Passive"):
+// Start and startsCleaning. A Create leaving that way must first end any
+// script it may be playing (ERRATA 20).
+bool entersPassive(Command command);
+
 // Commands the robot takes in any mode, Off included: Start and Reset.
 // (Baud is "available in Passive, Safe, or Full" only.)
 bool availableWhenOff(Command command);

@@ -62,22 +62,6 @@ constexpr oi::FirmwareVersion kAngleFixedAfter{3, 4, 0};
 
 std::int16_t s16(std::uint8_t hi, std::uint8_t lo) { return std::int16_t(std::uint16_t((hi << 8) | lo)); }
 
-bool isCleaning(Command c)
-{
-    switch (c) {
-    case Command::Spot:
-    case Command::Clean:
-    case Command::Cover:
-    case Command::Max:
-    case Command::Demo:
-    case Command::SeekDock:
-    case Command::CoverAndDock:
-        return true;
-    default:
-        return false;
-    }
-}
-
 // How to read the bytes of an opcode: the profile's command, or, for one the
 // profile lacks, any command with that opcode, so its data bytes are skipped
 // rather than read as commands.
@@ -904,7 +888,7 @@ struct VirtualRobot::State {
             return;
         if (mode == OiMode::Passive && oi::ignoredInPassive(cmd))
             return;
-        if (isCleaning(cmd)) {
+        if (oi::startsCleaning(cmd)) {
             enterPassive(); // the cleaning itself is not simulated
             return;
         }

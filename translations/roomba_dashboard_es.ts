@@ -1907,6 +1907,10 @@ Haga clic para seleccionar este robot: todos los paneles lo muestran</translatio
         <source>%1 on the broker</source>
         <translation>%1 en el bróker</translation>
     </message>
+    <message>
+        <source>%1: Baud is not sent over raw TCP: the bridge&apos;s serial rate cannot follow, and the robot would talk at a rate the bridge does not. Set the serial port&apos;s rate in ser2net&apos;s config instead (for example 115200 to 19200 on the robot&apos;s port line), then reconnect with the new rate; or use the bridge in RFC 2217 (telnet) mode, where the rate follows</source>
+        <translation>%1: Baud no se envía por TCP sin procesar: la velocidad serie del puente no puede seguirla, y el robot hablaría a una velocidad que el puente no habla. Cambie en su lugar la velocidad del puerto serie en la configuración de ser2net (por ejemplo, 115200 por 19200 en la línea del puerto del robot) y vuelva a conectar con la nueva velocidad; o use el puente en modo RFC 2217 (telnet), donde la velocidad sigue</translation>
+    </message>
 </context>
 <context>
     <name>MainWindow</name>

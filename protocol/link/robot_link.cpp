@@ -47,7 +47,6 @@ QByteArray startBytes(const oi::RobotProfile &profile)
 }
 
 // Pause/Resume Stream exists on every profile, so any encoder makes it.
-
 QByteArray streamStateBytes(bool running)
 {
     return toBytes(*oi::CommandEncoder(oi::profile(oi::ProfileId::Create2)).pauseResumeStream(running ? 1 : 0));
@@ -170,8 +169,8 @@ void RobotLink::close()
         m_transport->flush(kFlushMs); // what was sent is carried out
     } else if (m_transport && m_transportOpen) {
         // ERRATA 17: leave it stopped and in Passive, where it saves its battery.
-        // Before the probe has found the profile, the Roomba's bytes: a
-        // Create is probed only after it answered, with no script played.
+        // Until the probe has found the profile, the Roomba's bytes, which
+        // every robot takes; a Create's script is ended once it is known.
         const oi::RobotProfile &profile = m_profile ? *m_profile : oi::profile(oi::ProfileId::Create2);
         writeBytes(toBytes(oi::CommandEncoder(profile).shutdownSequence()));
         m_transport->flush(kFlushMs);

@@ -109,6 +109,11 @@ void TeleopController::focusLost()
 
 void TeleopController::stopAll()
 {
+    // Stop all also ends a Create's script, which would otherwise drive on
+    // after the stop (ERRATA 20).
+    const oi::Bytes endScript = oi::CommandEncoder(m_session.robotProfile()).endScript();
+    if (!endScript.empty())
+        m_session.send(toBytes(endScript));
     sendStop(true);
     emit motionStopped();
 }

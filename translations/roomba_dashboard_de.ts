@@ -1504,8 +1504,8 @@ Klicken wählt diesen Roboter: jedes Dock zeigt ihn</translation>
         <translation>Der %1 hat keine 7-Segment-Anzeige: Digit LEDs Raw (163) und Digit LEDs ASCII (164) gibt es nur bei Roomba 500 / Create 2.</translation>
     </message>
     <message>
-        <source>⚠ %1. It is sent anyway; use Text (164) to be sure.</source>
-        <translation>⚠ %1. Es wird trotzdem gesendet; verwenden Sie zur Sicherheit Text (164).</translation>
+        <source>⚠ Digit LEDs Raw (163) does not work in current Create 2 and Roomba 500/600 firmware. It is sent anyway; use Text (164) to be sure.</source>
+        <translation>⚠ Digit LEDs Raw (163) funktioniert mit der aktuellen Firmware von Create 2 und Roomba 500/600 nicht. Es wird trotzdem gesendet; verwenden Sie zur Sicherheit Text (164).</translation>
     </message>
     <message>
         <source>%1.</source>
@@ -1949,6 +1949,10 @@ Klicken wählt diesen Roboter: jedes Dock zeigt ihn</translation>
     <message>
         <source>%1 on the broker</source>
         <translation>%1 am Broker</translation>
+    </message>
+    <message>
+        <source>%1: Baud is not sent over raw TCP: the bridge&apos;s serial rate cannot follow, and the robot would talk at a rate the bridge does not. Set the serial port&apos;s rate in ser2net&apos;s config instead (for example 115200 to 19200 on the robot&apos;s port line), then reconnect with the new rate; or use the bridge in RFC 2217 (telnet) mode, where the rate follows</source>
+        <translation>%1: Baud wird über rohes TCP nicht gesendet: die serielle Rate der Brücke kann nicht folgen, und der Roboter spräche mit einer Rate, die die Brücke nicht spricht. Stellen Sie stattdessen die Rate des seriellen Ports in der Konfiguration von ser2net ein (zum Beispiel 115200 zu 19200 in der Zeile des Roboterports) und verbinden Sie sich dann mit der neuen Rate neu; oder betreiben Sie die Brücke im RFC-2217-Modus (Telnet), in dem die Rate folgt</translation>
     </message>
 </context>
 <context>

@@ -1503,8 +1503,8 @@ Haga clic para seleccionar este robot: todos los paneles lo muestran</translatio
         <translation>El %1 no tiene pantalla de 7 segmentos: Digit LEDs Raw (163) y Digit LEDs ASCII (164) son solo para Roomba 500 / Create 2.</translation>
     </message>
     <message>
-        <source>⚠ %1. It is sent anyway; use Text (164) to be sure.</source>
-        <translation>⚠ %1. Se envía de todos modos; use Texto (164) para asegurarse.</translation>
+        <source>⚠ Digit LEDs Raw (163) does not work in current Create 2 and Roomba 500/600 firmware. It is sent anyway; use Text (164) to be sure.</source>
+        <translation>⚠ Digit LEDs Raw (163) no funciona con el firmware actual de Create 2 y Roomba 500/600. Se envía de todos modos; use Texto (164) para asegurarse.</translation>
     </message>
     <message>
         <source>%1.</source>
@@ -1948,6 +1948,10 @@ Haga clic para seleccionar este robot: todos los paneles lo muestran</translatio
     <message>
         <source>%1 on the broker</source>
         <translation>%1 en el bróker</translation>
+    </message>
+    <message>
+        <source>%1: Baud is not sent over raw TCP: the bridge&apos;s serial rate cannot follow, and the robot would talk at a rate the bridge does not. Set the serial port&apos;s rate in ser2net&apos;s config instead (for example 115200 to 19200 on the robot&apos;s port line), then reconnect with the new rate; or use the bridge in RFC 2217 (telnet) mode, where the rate follows</source>
+        <translation>%1: Baud no se envía por TCP sin procesar: la velocidad serie del puente no puede seguirla, y el robot hablaría a una velocidad que el puente no habla. Cambie en su lugar la velocidad del puerto serie en la configuración de ser2net (por ejemplo, 115200 por 19200 en la línea del puerto del robot) y vuelva a conectar con la nueva velocidad; o use el puente en modo RFC 2217 (telnet), donde la velocidad sigue</translation>
     </message>
 </context>
 <context>

@@ -92,6 +92,7 @@ void SelectedRobotView::show(RobotSession *robot)
         connect(robot, &RobotSession::scriptShown, v.script, &ScriptEditor::showScriptReply),
         connect(robot, &RobotSession::scriptFailed, v.script, &ScriptEditor::showScriptFailed),
         connect(teleop, &TeleopController::passiveChanged, v.drivePad, &DrivePad::setPassive),
+        connect(teleop, &TeleopController::passiveChanged, v.script, &ScriptEditor::setPassive),
         connect(teleop, &TeleopController::motionStopped, this, [v] {
             v.drivePad->resetToCentre();
             v.keyboard->releaseAll();
@@ -116,6 +117,7 @@ void SelectedRobotView::show(RobotSession *robot)
         chunk.sent ? v.inspector->appendTx(chunk.bytes, chunk.msecs) : v.inspector->appendRx(chunk.bytes, chunk.msecs);
     v.modePanel->setFirmware(robot->firmwareRelease());
     v.drivePad->setPassive(teleop->isPassive());
+    v.script->setPassive(teleop->isPassive());
     v.drivePad->resetToCentre();
     v.keyboard->releaseAll();
 

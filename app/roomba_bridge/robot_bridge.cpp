@@ -272,7 +272,9 @@ QString RobotBridge::sendValidated(const QString &command, const QByteArray &byt
     if (oi::needsSafeOrFull(c)) {
         m_robot.teleop().checkMode();
         if (m_robot.teleop().isPassive())
-            return QStringLiteral("the robot is in Passive mode and ignores %1: send safe (or full) first").arg(command);
+            return QStringLiteral("the robot is in Passive mode, and %1 is sent only in Safe or Full (%2): send safe "
+                                  "(or full) first")
+                .arg(command, QString::fromUtf8(oi::whyNotInPassive(c).data(), qsizetype(oi::whyNotInPassive(c).size())));
     }
     if (isMotion(c)) {
         // Nobody can see what the robot does without fresh data.

@@ -69,6 +69,12 @@ void CommandSender::useProfile(oi::ProfileId id)
     if (!bytes.warning.empty())
         emit warning(fromStd(bytes.warning));
     m_command = *bytes;
+    if (const QString why = m_order.settings.whyNoBaudChange();
+        !why.isEmpty() && oilink::LinkSettings::holdsBaudCommand(QByteArray(reinterpret_cast<const char *>(m_command.data()),
+                                                                             qsizetype(m_command.size())))) {
+        finish(1, why);
+        return;
+    }
     const oi::CommandSpec *spec = oi::commandSpecForOpcode(*m_profile, m_command.front());
     if (spec && oi::availableWhenOff(spec->command))
         sendCommand(); // works in every mode: nothing to ask
@@ -103,7 +109,8 @@ void CommandSender::onQueryFailed()
     if (m_phase != Phase::AskingState)
         return;
     if (!m_startSent && m_order.changeMode) {
-        // Silent: Off mode, which only Start leaves.
+        // Silent: Off mode, which only Start leaves (or a Create's script
+        // waiting, which the link ends before Start).
         m_startSent = true;
         send({128});
         askState();
@@ -124,9 +131,9 @@ void CommandSender::decide(const oi::SensorSnapshot &state)
     oi::OiMode mode = state.oiMode();
     if (oi::needsSafeOrFull(command) && mode == oi::OiMode::Passive) {
         if (!m_order.changeMode) {
-            finish(1, QStringLiteral("%1 works only in Safe or Full mode, and the robot is in Passive mode: send safe "
-                         "first, or leave out --no-mode-change")
-                          .arg(name));
+            finish(1, QStringLiteral("%1 works only in Safe or Full mode, and the robot is in Passive mode (%2): "
+                                     "send safe first, or leave out --no-mode-change")
+                          .arg(name, fromStd(std::string(oi::whyNotInPassive(command)))));
             return;
         }
         send({131});

@@ -67,7 +67,9 @@ Commands:
       Send one command (as encode makes it) so that the robot carries it
       out: the robot is asked for its mode first; Start goes out only if it
       is silent (Off mode), and a command that works only in Safe or Full
-      mode (drive, motors, LEDs, play...) enters Safe from Passive. A
+      mode (drive, motors, LEDs, play, play-script...) enters Safe from
+      Passive. Baud is refused over raw TCP, where the bridge's rate cannot
+      follow (use --rfc2217, or change ser2net's config). A
       warning says when the robot will ignore the command as things are
       (a wheel dropped, on the dock, a song playing). The answers to
       sensors and query-list are printed as JSON lines like decode.

@@ -25,6 +25,28 @@ QString LinkSettings::describe() const
         .arg(QString::fromUtf8(name.data(), static_cast<qsizetype>(name.size())));
 }
 
+QString LinkSettings::whyNoBaudChange() const
+{
+    if (transport != TransportKind::Tcp || tcpRfc2217)
+        return {};
+    return QCoreApplication::translate(
+               "LinkSettings",
+               "%1: Baud is not sent over raw TCP: the bridge's serial rate cannot follow, and the robot would talk "
+               "at a rate the bridge does not. Set the serial port's rate in ser2net's config instead (for example "
+               "115200 to 19200 on the robot's port line), then reconnect with the new rate; or use the bridge in "
+               "RFC 2217 (telnet) mode, where the rate follows")
+        .arg(describe());
+}
+
+bool LinkSettings::holdsBaudCommand(const QByteArray &bytes)
+{
+    constexpr char kBaud = char(129), kStart = char(128);
+    qsizetype at = 0;
+    while (at < bytes.size() && bytes[at] == kStart)
+        ++at;
+    return bytes.size() >= at + 2 && bytes[at] == kBaud;
+}
+
 LinkSettings LinkSettings::networkRobotOf(const QString &name, oi::ProfileId profile)
 {
     LinkSettings s;

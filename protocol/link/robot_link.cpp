@@ -7,7 +7,9 @@
 #include "stream_packets.h"
 #include "transport.h"
 
+#include "command_catalog.h"
 #include "command_encoder.h"
+#include "command_modes.h"
 
 #include <QCoreApplication>
 #include <QDateTime>
@@ -33,12 +35,18 @@ QByteArray toBytes(const oi::Bytes &bytes)
     return QByteArray(reinterpret_cast<const char *>(bytes.data()), static_cast<qsizetype>(bytes.size()));
 }
 
-// Start and Pause/Resume Stream exist on every profile, so any encoder makes them.
-QByteArray startBytes()
+// Start, which leaves Safe or Full: on a Create after ending a script that
+// may be running, which would otherwise play on in Passive, where its Drive
+// is ignored and its waits never end (ERRATA 20).
+QByteArray startBytes(const oi::RobotProfile &profile)
 {
-    return toBytes(*oi::CommandEncoder(oi::profile(oi::ProfileId::Create2)).start());
+    const oi::CommandEncoder encoder(profile);
+    oi::Bytes out = encoder.endScript();
+    out.push_back(*encoder.start()->begin());
+    return toBytes(out);
 }
 
+// Pause/Resume Stream exists on every profile, so any encoder makes it.
 QByteArray streamStateBytes(bool running)
 {
     return toBytes(*oi::CommandEncoder(oi::profile(oi::ProfileId::Create2)).pauseResumeStream(running ? 1 : 0));
@@ -162,8 +170,8 @@ void RobotLink::close()
         m_transport->flush(kFlushMs); // what was sent is carried out
     } else if (m_transport && m_transportOpen) {
         // ERRATA 17: leave it stopped and in Passive, where it saves its battery.
-        // The bytes are the same on every profile, so this holds even while
-        // the probe has not yet found which one it is.
+        // Until the probe has found the profile, the Roomba's bytes, which
+        // every robot takes; a Create's script is ended once it is known.
         const oi::RobotProfile &profile = m_profile ? *m_profile : oi::profile(oi::ProfileId::Create2);
         writeBytes(toBytes(oi::CommandEncoder(profile).shutdownSequence()));
         m_transport->flush(kFlushMs);
@@ -258,10 +266,14 @@ void RobotLink::greetRobot()
 {
     if (!m_transport || !m_transportOpen)
         return;
-    if (m_profile)
+    if (m_profile) {
+        // A bridge in RFC 2217 mode takes its serial rate from us, as the
+        // probe sets it; without this it stays at whatever rate it last had.
+        m_transport->setBaud(baud());
         useProfile();
-    else
+    } else {
         startProbe();
+    }
 }
 
 void RobotLink::onTransportError(const QString &message)
@@ -374,7 +386,7 @@ void RobotLink::startStream()
     m_streamCommand = toBytes(*command);
     m_frameSinceStreamStart = false;
     m_rearmMs = kNoDataAfterMs;
-    if (!writeBytes(startBytes()) || !writeBytes(m_streamCommand))
+    if (!writeBytes(startBytes(*m_profile)) || !writeBytes(m_streamCommand))
         return;
     m_streamRequested = true;
     m_noData.start(m_rearmMs);
@@ -389,7 +401,7 @@ void RobotLink::startStream()
 // missing for a second must not go on driving on commands sent blind.
 void RobotLink::rearmStream()
 {
-    writeBytes(startBytes());
+    writeBytes(startBytes(*m_profile));
     writeBytes(m_streamCommand);
 }
 
@@ -478,6 +490,20 @@ void RobotLink::send(const QByteArray &bytes)
     if (!m_transport || !m_transportOpen) {
         reportError(tr("not connected: the command was not sent"), false);
         return;
+    }
+    if (const QString why = m_settings.whyNoBaudChange(); !why.isEmpty() && LinkSettings::holdsBaudCommand(bytes)) {
+        reportError(why, false);
+        return;
+    }
+    // Start or cleaning, from any command path: a Create ends its script
+    // first, or the script would go on in Passive, deaf (ERRATA 20).
+    if (m_profile && !bytes.isEmpty()) {
+        const oi::CommandSpec *spec = oi::commandSpecForOpcode(*m_profile, std::uint8_t(bytes.front()));
+        if (spec && oi::entersPassive(spec->command)) {
+            const oi::Bytes endScript = oi::CommandEncoder(*m_profile).endScript();
+            if (!endScript.empty() && !writeBytes(toBytes(endScript)))
+                return;
+        }
     }
     writeBytes(bytes);
 }

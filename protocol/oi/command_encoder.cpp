@@ -310,9 +310,9 @@ EncodeResult CommandEncoder::digitLedsRaw(int digit3, int digit2, int digit1, in
                            {"digit 1", digit1, 0, 255}, {"digit 0", digit0, 0, 255}}))
         return *e;
     EncodeResult result = withOpcode(Command::DigitLedsRaw, {digit3, digit2, digit1, digit0});
-    // ERRATA 9: sent as asked, but the user should know it may do nothing.
-    if (m_profile->id == ProfileId::Create2)
-        result.warning = "Digit LEDs Raw (163) does not work in current Create 2 firmware";
+    // ERRATA 9: sent as asked, but the user should know it may do nothing,
+    // on every model that has it.
+    result.warning = "Digit LEDs Raw (163) does not work in current Create 2 and Roomba 500/600 firmware";
     return result;
 }
 
@@ -525,11 +525,26 @@ Bytes CommandEncoder::stopMotion() const
     return out;
 }
 
+// A waiting Create reads nothing more until its wait ends (ERRATA 20), so
+// whatever we send queues behind the rest of the script, which goes on in the
+// mode it started in and so can end its waits. At its end a looping script's
+// Play Script (153) loads the stored script behind the bytes waiting there;
+// an empty Script (152 0, "Specify a length of 0 to clear the current
+// script") among those bytes leaves it nothing to load. Without it the script
+// would start again after our Passive, where its Drive is ignored and its
+// next Wait Distance never ends: a robot deaf until its battery is pulled.
+Bytes CommandEncoder::endScript() const
+{
+    if (!m_profile->has(Command::Script))
+        return {};
+    return *script({});
+}
+
 Bytes CommandEncoder::shutdownSequence() const
 {
     Bytes out = *pauseResumeStream(0);
-    const Bytes stop = stopMotion();
-    out.insert(out.end(), stop.begin(), stop.end());
+    for (const Bytes &part : {endScript(), stopMotion()})
+        out.insert(out.end(), part.begin(), part.end());
     out.push_back(*start()->begin());
     return out;
 }

@@ -86,8 +86,13 @@ public:
     // DESIGN "Stop": Drive 0,0 and every motor (Roomba) or low side driver
     // (Create) off.
     Bytes stopMotion() const;
-    // ERRATA 17: what to send when finished: pause the stream, stop motion,
-    // and Start, which leaves the robot in Passive mode to save the battery.
+    // ERRATA 20: on the Create, an empty Script (152 0), so that a looping
+    // script's last Play Script loads nothing and the script ends; nothing
+    // on the other profiles, which have no scripts.
+    Bytes endScript() const;
+    // ERRATA 17 and 20: what to send when finished: pause the stream, end a
+    // script, stop motion, and Start, which leaves the robot in Passive mode
+    // to save the battery.
     Bytes shutdownSequence() const;
 
     // Why the profile lacks this command, or nothing if it has it.

@@ -19,7 +19,7 @@ constexpr std::int32_t kS16Min = -32768, kS16Max = 32767, kU16Max = 65535;
         {12, "cliff_right", "Cliff Right", 1, false, 0, 1, ""},                                 \
         {13, "virtual_wall", "Virtual Wall", 1, false, 0, 1, ""},                               \
         {14, "overcurrents", "Overcurrents", 1, false, 0, 31, ""}, dirt15,                      \
-        {16, "unused_16", "Unused", 1, false, 0, 255, ""},                                      \
+        {16, "unused_16", "Unused", 1, false, 0, 0, ""}, /* ERRATA 6: "Range: 0", always 0 */   \
         {17, "ir_omni", ir17name, 1, false, 0, 255, ""},                                        \
         {18, "buttons", "Buttons", 1, false, 0, buttonsMax, ""},                                \
         {19, "distance", "Distance", 2, true, kS16Min, kS16Max, "mm"},                          \
@@ -85,9 +85,9 @@ const PacketInfo kCreate2Packets[] = {
 };
 
 const PacketInfo kCreate1Packets[] = {
-    // ERRATA 6: 15 unused, 17 is the single IR byte, 18 has Play and Advance,
-    // 32 and 33 are the cargo-bay inputs.
-    OI_COMMON_PACKETS((PacketInfo{15, "unused_15", "Unused", 1, false, 0, 255, ""}),
+    // ERRATA 6: 15 unused (always 0, as 16 is), 17 is the single IR byte, 18
+    // has Play and Advance, 32 and 33 are the cargo-bay inputs.
+    OI_COMMON_PACKETS((PacketInfo{15, "unused_15", "Unused", 1, false, 0, 0, ""}),
                       "Infrared Byte", 5, 31, 4095,
                       (PacketInfo{32, "cargo_bay_digital_inputs", "Cargo Bay Digital Inputs", 1,
                                   false, 0, 31, ""}),

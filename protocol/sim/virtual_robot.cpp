@@ -63,22 +63,6 @@ constexpr oi::FirmwareVersion kAngleFixedAfter{3, 4, 0};
 
 std::int16_t s16(std::uint8_t hi, std::uint8_t lo) { return std::int16_t(std::uint16_t((hi << 8) | lo)); }
 
-bool isCleaning(Command c)
-{
-    switch (c) {
-    case Command::Spot:
-    case Command::Clean:
-    case Command::Cover:
-    case Command::Max:
-    case Command::Demo:
-    case Command::SeekDock:
-    case Command::CoverAndDock:
-        return true;
-    default:
-        return false;
-    }
-}
-
 // How to read the bytes of an opcode: the profile's command, or, for one the
 // profile lacks, any command with that opcode, so its data bytes are skipped
 // rather than read as commands.
@@ -232,7 +216,8 @@ struct VirtualRobot::State {
     Leds leds;
     std::vector<std::optional<oi::Song>> songs;
     int songNumber = 0;
-    Microseconds songEndsAt{0};
+    Microseconds songEndsAt{0};  // a song started by Play (141): packet 37 reads 1
+    Microseconds soundEndsAt{0}; // the robot's own sounds too: the Start beep, the Stop song
     oi::CleaningSchedule schedule;
     long long clockMicros = 0; // since Sunday 00:00
 
@@ -256,7 +241,9 @@ struct VirtualRobot::State {
     RoomView roomView;
 
     bool create1() const { return profile->id == oi::ProfileId::Create1; }
+    // Packet 37: "1 if an OI song is playing"; the robot's own beeps are not OI songs.
     bool songPlaying() const { return now < songEndsAt; }
+    bool sounding() const { return songPlaying() || now < soundEndsAt; }
 
     const FloorContact &floorContact()
     {
@@ -532,7 +519,7 @@ struct VirtualRobot::State {
             load += 250 * (motorDuty[0] + motorDuty[1] + motorDuty[2]);
         else
             load += std::abs(mainBrushMa()) + std::abs(sideBrushMa()) + 550 * motorDuty[2];
-        if (songPlaying())
+        if (sounding())
             load += kSpeakerMa;
         return -load;
     }
@@ -912,9 +899,9 @@ struct VirtualRobot::State {
         const Command cmd = spec->command;
         if (mode == OiMode::Off && !oi::availableWhenOff(cmd))
             return;
-        if (mode == OiMode::Passive && oi::needsSafeOrFull(cmd))
+        if (mode == OiMode::Passive && oi::ignoredInPassive(cmd))
             return;
-        if (isCleaning(cmd)) {
+        if (oi::startsCleaning(cmd)) {
             enterPassive(); // the cleaning itself is not simulated
             return;
         }
@@ -924,7 +911,7 @@ struct VirtualRobot::State {
             break;
         case Command::Start:
             if (mode == OiMode::Off && !create1())
-                songEndsAt = std::max(songEndsAt, now + kStartBeep);
+                soundEndsAt = now + kStartBeep;
             enterPassive();
             break;
         case Command::Baud:
@@ -953,7 +940,7 @@ struct VirtualRobot::State {
             wait.reset();
             endScript();
             mode = OiMode::Off;
-            songEndsAt = now + kStopSong;
+            soundEndsAt = now + kStopSong;
             break;
         case Command::Drive:
             drive(s16(c[1], c[2]), s16(c[3], c[4]));
@@ -1182,6 +1169,7 @@ std::optional<oi::Song> VirtualRobot::song(int slot) const
 }
 
 bool VirtualRobot::songPlaying() const { return m_state->songPlaying(); }
+bool VirtualRobot::sounding() const { return m_state->sounding(); }
 
 oi::CleaningSchedule VirtualRobot::schedule() const { return m_state->schedule; }
 

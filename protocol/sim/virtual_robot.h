@@ -97,7 +97,8 @@ public:
     };
     const Leds &leds() const;
     std::optional<oi::Song> song(int slot) const;
-    bool songPlaying() const;
+    bool songPlaying() const; // packet 37: a song started by Play (141)
+    bool sounding() const;    // anything from the speaker: a song, the Start beep, the Stop song
     oi::CleaningSchedule schedule() const;
     struct DayTime {
         oi::Weekday day = oi::Weekday::Sunday;

@@ -37,7 +37,7 @@ inline QJsonObject objectOf(const QByteArray &payload) { return QJsonDocument::f
 inline QByteArray toBytes(const oi::Bytes &b) { return QByteArray(reinterpret_cast<const char *>(b.data()), qsizetype(b.size())); }
 
 struct BridgeRig {
-    enum class Robot { Recording, Virtual };
+    enum class Robot { Recording, Virtual, VirtualCreate1 };
 
     Recording recording;
     RobotSession session;
@@ -54,8 +54,9 @@ struct BridgeRig {
                 [this](const oilink::LinkSettings &) { return new RecordingTransport(&recording); });
             session.connectTo(oilink::LinkSettings::serial(QStringLiteral("/dev/recording"), oi::ProfileId::Create2));
         } else {
+            const oi::ProfileId id = robot == Robot::Virtual ? oi::ProfileId::Create2 : oi::ProfileId::Create1;
             session.setTransportFactory(transports::transportFactory());
-            session.connectTo(oilink::LinkSettings::virtualRobotOf(oi::ProfileId::Create2, oi::ProfileId::Create2));
+            session.connectTo(oilink::LinkSettings::virtualRobotOf(id, id));
         }
         client.setLastWill(RobotBridge::lastWill(name));
         bridge.start();

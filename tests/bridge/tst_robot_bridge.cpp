@@ -117,6 +117,32 @@ private slots:
         QCOMPARE(byteText(writtenSince(rig.recording, before)), byteText(leds));
     }
 
+    // ERRATA 20: Play Script in Passive is refused with the reason, as
+    // motion is; in Safe the Create plays the script and drives.
+    void playScriptNeedsSafeOrFull()
+    {
+        MosquittoBroker broker;
+        QVERIFY2(broker.start(), qPrintable(broker.error()));
+        BridgeRig rig(QStringLiteral("r1"), addressOf(broker), BridgeRig::Robot::VirtualCreate1);
+        QVERIFY(rig.streaming());
+        ConsoleClient alice(QStringLiteral("alice"), addressOf(broker));
+        QVERIFY(alice.waitForState(QStringLiteral("r1"), true));
+        QCOMPARE(alice.control(QStringLiteral("r1"), "take").value(QLatin1String("ok")), QJsonValue(true));
+        const QString r1 = QStringLiteral("r1");
+        QCOMPARE(alice.command(r1, "1", "script", {"drive 300 straight; wait-distance 100; drive 0 0"})
+                     .value(QLatin1String("ok")), QJsonValue(true));
+        QJsonObject r = alice.command(r1, "2", "play-script");
+        QCOMPARE(r.value(QLatin1String("ok")), QJsonValue(false));
+        QVERIFY2(r.value(QLatin1String("error")).toString().contains(
+                     QLatin1String("play-script is sent only in Safe or Full (in Passive mode the Create ignores the script's Drive")),
+                 qPrintable(r.value(QLatin1String("error")).toString()));
+        QCOMPARE(alice.command(r1, "3", "safe").value(QLatin1String("ok")), QJsonValue(true));
+        QTRY_COMPARE_WITH_TIMEOUT(rig.session.latest().oiMode(), oi::OiMode::Safe, 5000);
+        QCOMPARE(alice.command(r1, "4", "play-script").value(QLatin1String("ok")), QJsonValue(true));
+        QTRY_COMPARE_WITH_TIMEOUT(rig.session.latest().requestedVelocity(), 300, 5000);
+        QTRY_COMPARE_WITH_TIMEOUT(rig.session.latest().requestedVelocity(), 0, 5000); // the script ran to its end
+    }
+
     void motionWithoutControlIsRefusedWithItsHolder()
     {
         MosquittoBroker broker;

@@ -144,7 +144,8 @@ private slots:
         s.baud = 19200;
         QTest::newRow("create2 at 19200") << s << bytes({128, 148, 6, 1, 43, 44, 21, 22, 35});
         s = LinkSettings::serial(QStringLiteral("/dev/recording"), oi::ProfileId::Create1);
-        QTest::newRow("create1") << s << bytes({128, 148, 1, 6});
+        // Start on a Create ends a script first (ERRATA 20).
+        QTest::newRow("create1") << s << bytes({152, 0, 128, 148, 1, 6});
         s = create2();
         s.streamPackets = {7, 35};
         QTest::newRow("chosen packets") << s << bytes({128, 148, 2, 7, 35});
@@ -159,6 +160,32 @@ private slots:
         QCOMPARE(current()->written(), expected);
         QCOMPARE(m_link->state(), LinkState::Connecting);
         QCOMPARE(started.size(), 1);
+    }
+
+    // Over raw TCP the bridge's rate cannot follow a Baud command, so none
+    // goes out, from any command path; over RFC 2217 it can.
+    void baudOverRawTcpIsRefused()
+    {
+        LinkSettings raw = LinkSettings::tcp(QStringLiteral("pi"), 3333, oi::ProfileId::Create2);
+        QSignalSpy errors(m_link, &RobotLink::errorOccurred);
+        m_link->open(raw);
+        QVERIFY(current());
+        current()->clearWritten();
+        m_link->send(bytes({129, 11}));
+        m_link->send(bytes({128, 129, 11}));
+        QCOMPARE(current()->written(), QByteArray());
+        QCOMPARE(errors.size(), 2);
+        const QString message = errors.at(0).at(0).toString();
+        QVERIFY2(message.startsWith(QStringLiteral("pi:3333: Baud is not sent over raw TCP")) && message.contains(QStringLiteral("ser2net's config")),
+                 qPrintable(message));
+        m_link->send(bytes({139, 0, 0, 0})); // other commands go out
+        QCOMPARE(current()->written(), bytes({139, 0, 0, 0}));
+
+        raw.tcpRfc2217 = true;
+        m_link->open(raw);
+        current()->clearWritten();
+        m_link->send(bytes({129, 11}));
+        QCOMPARE(current()->written(), bytes({129, 11}));
     }
 
     void closeSendsTheShutdownSequence_data()
@@ -177,15 +204,18 @@ private slots:
         t->clearWritten();
         m_link->close();
         QVERIFY(t);
-        QCOMPARE(t->written(), kShutdown);
+        // The Create ends a script first (ERRATA 20).
+        QCOMPARE(t->written(), profile == oi::ProfileId::Create1 ? bytes({150, 0, 152, 0, 137, 0, 0, 0, 0, 138, 0, 128})
+                                                                 : kShutdown);
         const oi::Bytes expected = oi::CommandEncoder(oi::profile(profile)).shutdownSequence();
         QCOMPARE(t->written(), QByteArray(reinterpret_cast<const char *>(expected.data()), qsizetype(expected.size())));
         QCOMPARE(t->flushes(), 1);
         QVERIFY(!t->isOpen());
         QCOMPARE(m_link->state(), LinkState::Closed);
         QCOMPARE(stateList(stateSpy), states({LinkState::Connecting, LinkState::Closed}));
+        const QByteArray once = t->written();
         m_link->close(); // a second close sends nothing
-        QVERIFY(!t || t->written() == kShutdown);
+        QVERIFY(!t || t->written() == once);
     }
 
     void oversizeStreamIsRefused()

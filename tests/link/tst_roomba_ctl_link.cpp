@@ -75,6 +75,31 @@ private:
     QString m_path;
 };
 
+// The robot's answer to a query of its mode and requested velocity, or an
+// empty object. A Create busy with a script hears nothing until its wait
+// ends, so a few tries are allowed, each one bounded by the query's timeout.
+QJsonObject answer(const QStringList &send, const QStringList &options)
+{
+    for (int attempt = 0; attempt < 8; ++attempt) {
+        const Outcome o = run(send + options + QStringList{QStringLiteral("query-list"), QStringLiteral("2"),
+                                                           QStringLiteral("35"), QStringLiteral("39")});
+        if (o.status == 0)
+            return json(o.lines.value(0))[QStringLiteral("packets")].toObject();
+    }
+    return {};
+}
+
+// How roomba-ctl reaches a roomba-sim: its pty, or its TCP port.
+QStringList robotArgs(const Sim &sim, const QStringList &simArgs)
+{
+    if (!simArgs.contains(QStringLiteral("--tcp")))
+        return {QStringLiteral("--port"), sim.path()};
+    QStringList args{QStringLiteral("--tcp"), sim.path().mid(QStringLiteral("tcp://").size())};
+    if (simArgs.contains(QStringLiteral("--rfc2217")))
+        args << QStringLiteral("--rfc2217");
+    return args;
+}
+
 } // namespace
 
 class TestRoombaCtlLink : public QObject {
@@ -185,6 +210,122 @@ private slots:
                                    QStringLiteral("35")});
         QVERIFY2(o.status == 0, qPrintable(o.err));
         QCOMPARE(json(o.lines.value(0))[QStringLiteral("packets")].toObject()[QStringLiteral("oi_mode")].toInt(), 1);
+    }
+
+    // ERRATA 20: played in Passive, a Create ignores the script's Drive, waits
+    // for its distance for ever and hears nothing more. send enters Safe
+    // first, or, without mode changes, refuses and says why.
+    void playScriptEntersSafe()
+    {
+        Sim sim({QStringLiteral("--profile"), QStringLiteral("create1")});
+        QVERIFY(!sim.path().isEmpty());
+        const QStringList port{QStringLiteral("send"), QStringLiteral("--port"), sim.path(), QStringLiteral("--profile"),
+                               QStringLiteral("create1")};
+        Outcome o = run(port + QStringList{QStringLiteral("script"),
+                                           QStringLiteral("drive 300 straight; wait-distance 100; drive 0 0")});
+        QVERIFY2(o.status == 0, qPrintable(o.err));
+        o = run(port + QStringList{QStringLiteral("--no-mode-change"), QStringLiteral("play-script")});
+        QCOMPARE(o.status, 1);
+        QVERIFY2(o.err.contains(QStringLiteral("play-script works only in Safe or Full mode, and the robot is in Passive "
+                                               "mode (in Passive mode the Create ignores the script's Drive, so a wait "
+                                               "there never ends")),
+                 qPrintable(o.err));
+        o = run(port + QStringList{QStringLiteral("play-script")});
+        QVERIFY2(o.status == 0, qPrintable(o.err));
+        QVERIFY2(o.err.contains(QStringLiteral("entered Safe mode for play-script")), qPrintable(o.err));
+        // The script drives its 10 cm and stops; the robot answers again.
+        const QJsonObject packets = answer(port, {});
+        QVERIFY2(!packets.isEmpty(), "the robot no longer answers");
+        QCOMPARE(packets[QStringLiteral("requested_velocity")].toInt(), 0);
+    }
+
+    // After any baud command, the next command that names the new rate is
+    // answered: on a pty and over RFC 2217 the link sets the rate; over raw
+    // TCP the bridge's rate cannot follow, so Baud is refused and says what
+    // to change instead.
+    void baudOverEachTransport_data()
+    {
+        QTest::addColumn<QStringList>("simArgs");
+        QTest::addColumn<bool>("accepted");
+        QTest::newRow("pty") << QStringList{} << true;
+        QTest::newRow("raw tcp") << QStringList{QStringLiteral("--tcp"), QStringLiteral("0")} << false;
+        QTest::newRow("rfc2217") << QStringList{QStringLiteral("--tcp"), QStringLiteral("0"), QStringLiteral("--rfc2217")}
+                                 << true;
+    }
+    void baudOverEachTransport()
+    {
+        QFETCH(QStringList, simArgs);
+        QFETCH(bool, accepted);
+        Sim sim(simArgs);
+        QVERIFY(!sim.path().isEmpty());
+        const QStringList robot = robotArgs(sim, simArgs) + QStringList{QStringLiteral("--profile"), QStringLiteral("create2")};
+        Outcome o = run(QStringList{QStringLiteral("send")} + robot + QStringList{QStringLiteral("baud"), QStringLiteral("19200")});
+        if (accepted) {
+            QVERIFY2(o.status == 0, qPrintable(o.err));
+            QVERIFY2(o.err.contains(QStringLiteral("give the next command --baud 19200")), qPrintable(o.err));
+        } else {
+            QCOMPARE(o.status, 1);
+            QVERIFY2(o.err.contains(QStringLiteral("Baud is not sent over raw TCP")) && o.err.contains(QStringLiteral("ser2net's config")),
+                     qPrintable(o.err));
+        }
+        const QStringList next = robot + QStringList{QStringLiteral("--baud"), QString::number(accepted ? 19200 : 115200)};
+        QVERIFY2(!answer(QStringList{QStringLiteral("send")} + next, {}).isEmpty(), "no answer at the new rate");
+        // A stream at that rate, which closes leaving the robot in Passive.
+        o = run(QStringList{QStringLiteral("sensors")} + next + QStringList{QStringLiteral("--count"), QStringLiteral("2")});
+        QVERIFY2(o.status == 0, qPrintable(o.err));
+        QCOMPARE(json(o.lines.value(2))[QStringLiteral("statistics")].toObject()[QStringLiteral("baud")].toInt(),
+                 accepted ? 19200 : 115200);
+    }
+
+    // Whatever roomba-ctl is asked, the robot still answers afterwards (given
+    // the rate it was last told).
+    void everySequenceLeavesTheRobotListening_data()
+    {
+        QTest::addColumn<QString>("profile");
+        QTest::addColumn<QList<QStringList>>("steps");
+        QTest::addColumn<int>("baud");
+        const QString square = QStringLiteral("drive 300 straight; wait-distance 400; drive 300 ccw; wait-angle 90; play-script");
+        const QString forty = QStringLiteral("drive 300 straight; wait-distance 400; drive 0 0");
+        using L = QList<QStringList>;
+        QTest::newRow("create1: play-script in Passive")
+            << "create1" << L{{"send", "start"}, {"send", "script", forty}, {"send", "play-script"}} << 0;
+        QTest::newRow("create1: looping script, then a stream closes")
+            << "create1" << L{{"send", "full"}, {"send", "script", square}, {"send", "play-script"}, {"sensors", "--count", "2"}} << 0;
+        QTest::newRow("create1: looping script, then start")
+            << "create1" << L{{"send", "script", square}, {"send", "play-script"}, {"send", "start"}} << 0;
+        QTest::newRow("create1: looping script, then cover")
+            << "create1" << L{{"send", "script", square}, {"send", "play-script"}, {"send", "cover"}} << 0;
+        QTest::newRow("create1: cover, spot, cover-and-dock")
+            << "create1" << L{{"send", "cover"}, {"send", "spot"}, {"send", "cover-and-dock"}} << 0;
+        for (const char *p : {"create1", "create2", "roomba500"}) {
+            QTest::addRow("%s: full, drive, stream closes", p)
+                << p << L{{"send", "full"}, {"send", "drive", "100", "straight"}, {"sensors", "--count", "2"}} << 0;
+            QTest::addRow("%s: baud 19200, then its rate", p) << p << L{{"send", "baud", "19200"}} << 19200;
+        }
+        for (const char *p : {"create2", "roomba500"}) {
+            QTest::addRow("%s: clean, spot, seek-dock", p)
+                << p << L{{"send", "clean"}, {"send", "spot"}, {"send", "seek-dock"}} << 0;
+            QTest::addRow("%s: stop", p) << p << L{{"send", "safe"}, {"send", "stop"}} << 0;
+        }
+    }
+    void everySequenceLeavesTheRobotListening()
+    {
+        QFETCH(QString, profile);
+        QFETCH(QList<QStringList>, steps);
+        QFETCH(int, baud);
+        Sim sim({QStringLiteral("--profile"), profile});
+        QVERIFY(!sim.path().isEmpty());
+        const QStringList robot{QStringLiteral("--port"), sim.path(), QStringLiteral("--profile"), profile};
+        for (const QStringList &step : steps) {
+            const Outcome o = run(QStringList{step.first()} + robot + step.mid(1));
+            // A step may find the robot busy with its script; what counts is the end.
+            if (o.status != 0)
+                qInfo("%s: %s", qPrintable(step.join(u' ')), qPrintable(o.err.trimmed()));
+        }
+        QStringList last = QStringList{QStringLiteral("send")} + robot;
+        if (baud > 0)
+            last << QStringLiteral("--baud") << QString::number(baud);
+        QVERIFY2(!answer(last, {}).isEmpty(), "the robot no longer answers");
     }
 
     void sendEntersSafeForDriving()

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // One test per row of ../shared/spec/ERRATA.md, named after the row.
+#include "command_modes.h"
 #include "odometry.h"
 #include "oi_test_support.h"
 #include "script_assembler.h"
@@ -192,6 +193,13 @@ private slots:
         QCOMPARE(profile(ProfileId::Create1).packet(15)->key, std::string_view("unused_15"));
         roomba.set(15, 77);
         QCOMPARE(roomba.dirtDetect(), 77);
+        // Unused bytes are always 0: "Range: 0" for 16 on every model, and 15 on the Create.
+        for (ProfileId id : {ProfileId::Roomba500, ProfileId::Create2, ProfileId::Create1}) {
+            QCOMPARE(profile(id).packet(16)->min, 0);
+            QCOMPARE(profile(id).packet(16)->max, 0);
+        }
+        QCOMPARE(profile(ProfileId::Create1).packet(15)->max, 0);
+        QCOMPARE(profile(ProfileId::Create2).packet(15)->max, 255);
         // 17: 255 is "no IR byte" on the Create, 0 on the Roombas.
         s.set(17, 255);
         QCOMPARE(s.irOmni().kind, IrCharacter::Kind::None);
@@ -270,7 +278,9 @@ private slots:
         }
         QCOMPARE(textFrom(*encodeLine("create2", "reset")), QString("7"));
         QCOMPARE(textFrom(*encodeLine("roomba500", "stop")), QString("173"));
+        // 163 is sent, with a warning, on both profiles that have it.
         QVERIFY(!encodeLine("create2", "digit-leds-raw 0 0 0 0").warning.empty());
+        QVERIFY(!encodeLine("roomba500", "digit-leds-raw 0 0 0 0").warning.empty());
     }
 
     void row10_create1OnlyCommands()
@@ -398,8 +408,9 @@ private slots:
         // Stop the stream, stop motion, and Start: the robot is left in Passive.
         QCOMPARE(textFrom(CommandEncoder(profile(ProfileId::Create2)).shutdownSequence()),
                  QString("150 0 137 0 0 0 0 138 0 128"));
+        // The Create also ends a script first (row 20).
         QCOMPARE(textFrom(CommandEncoder(profile(ProfileId::Create1)).shutdownSequence()),
-                 QString("150 0 137 0 0 0 0 138 0 128"));
+                 QString("150 0 152 0 137 0 0 0 0 138 0 128"));
     }
 
     // The Roomba 500 sleeps like the Create 2; the Create never sleeps.
@@ -432,6 +443,22 @@ private slots:
         const int two6[] = {6, 6};
         QVERIFY(create1.stream(one6).ok());
         QVERIFY(!create1.stream(two6).ok());
+    }
+
+    void row20_aWaitingCreateHearsNothing()
+    {
+        // The Create plays a script in Passive, where it ignores the script's
+        // Drive; this program sends Play Script only in Safe or Full.
+        QVERIFY(!ignoredInPassive(Command::PlayScript));
+        QVERIFY(needsSafeOrFull(Command::PlayScript));
+        QVERIFY(!needsSafeOrFull(Command::Script));
+        QVERIFY(!whyNotInPassive(Command::PlayScript).empty());
+        // Leaving a Create ends its script: an empty Script before the stop
+        // and the final Passive. The Roombas have no scripts.
+        QCOMPARE(textFrom(CommandEncoder(profile(ProfileId::Create1)).endScript()), QString("152 0"));
+        QCOMPARE(textFrom(CommandEncoder(profile(ProfileId::Create1)).shutdownSequence()).left(11), QString("150 0 152 0"));
+        for (ProfileId id : {ProfileId::Roomba500, ProfileId::Create2})
+            QVERIFY(CommandEncoder(profile(id)).endScript().empty());
     }
 };
 

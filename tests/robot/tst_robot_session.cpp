@@ -212,6 +212,41 @@ private slots:
         QVERIFY2(!writes.isEmpty(), "nothing was sent on close");
         QCOMPARE(writes.last(), byteText(toBytes(encoder.shutdownSequence())));
     }
+
+    // ERRATA 20: leaving a Create's Safe or Full mode (Stop all, Start from
+    // any command path) first ends a script that may be running, so a
+    // looping script stops and the robot still hears.
+    void leavingACreateEndsItsScript()
+    {
+        RobotSession robot;
+        robot.setTransportFactory(transports::transportFactory());
+        robot.connectTo(oilink::LinkSettings::virtualRobotOf(oi::ProfileId::Create1, oi::ProfileId::Create1));
+        QTRY_VERIFY_WITH_TIMEOUT(robot.isLive(), 5000);
+        // The document's "Drive in a square", which plays itself again, in Full.
+        robot.send(QByteArray(1, char(132)));
+        const oi::Bytes square{152, 17, 137, 1, 44, 128, 0, 156, 1, 144, 137, 1, 44, 0, 1, 157, 0, 90, 153};
+        robot.send(toBytes(square));
+        robot.send(QByteArray(1, char(153)));
+        QTRY_VERIFY_WITH_TIMEOUT(robot.latest().requestedVelocity() == 300, 5000);
+
+        QSignalSpy sent(&robot, &RobotSession::bytesSent);
+        robot.teleop().stopAll();
+        robot.send(QByteArray(1, char(128))); // Passive
+        QTRY_COMPARE_WITH_TIMEOUT(sent.size(), 4, 5000);
+        QStringList bytesSent;
+        for (const QList<QVariant> &s : sent)
+            bytesSent << byteText(s.at(0).toByteArray());
+        QCOMPARE(bytesSent, (QStringList{"152 0", "137 0 0 0 0 138 0", "152 0", "128"}));
+        // Once the loop it was in ends, the robot is in Passive, stopped and listening.
+        QTRY_VERIFY_WITH_TIMEOUT(robot.latest().oiMode() == oi::OiMode::Passive, 10000);
+        QCOMPARE(robot.latest().requestedVelocity(), 0);
+        QSignalSpy shown(&robot, &RobotSession::scriptShown);
+        QSignalSpy failed(&robot, &RobotSession::scriptFailed);
+        robot.showScript();
+        QTRY_VERIFY_WITH_TIMEOUT(shown.size() + failed.size() > 0, 5000);
+        QCOMPARE(failed.size(), 0);
+        QCOMPARE(shown.at(0).at(0).toByteArray(), QByteArray()); // the empty script
+    }
 };
 
 QTEST_MAIN(TestRobotSession)

@@ -261,7 +261,9 @@ private slots:
     void scriptWaitsForABump();
     void squareScriptTurnsRightAngles();
     void shutdownStopsALoopingScript();
+    void scriptPlayedInPassiveLeavesTheRobotDeaf();
     void startBeepsAndStopPlaysASong();
+    void onlyPlaySetsSongPlaying();
     void showScriptRepliesAndHaltsTheStream();
 
     // Sensor traffic.
@@ -1261,27 +1263,46 @@ void TestVirtualRobot::songs()
 }
 
 // The documents: Start from Off beeps once (Roomba 500, Create 2), and Stop
-// plays a song as the Create 2 leaves the OI; packet 37 says so.
+// plays a song as the Create 2 leaves the OI. Packet 37 is "1 if an OI song
+// is playing": neither is one, so it reads 0 through both.
 void TestVirtualRobot::startBeepsAndStopPlaysASong()
 {
     for (ProfileId id : {ProfileId::Roomba500, ProfileId::Create2, ProfileId::Create1}) {
         Bench b(profileOf(id));
         b.send(b.encoder.start());
         const bool beeps = id != ProfileId::Create1;
-        QCOMPARE(b.value(37), beeps ? 1 : 0);
+        QCOMPARE(b.robot.sounding(), beeps);
+        QCOMPARE(b.value(37), 0);
         b.run(150ms);
-        QCOMPARE(b.value(37), 0);
+        QVERIFY(!b.robot.sounding());
         b.send(b.encoder.start()); // from Passive: no beep
-        QCOMPARE(b.value(37), 0);
+        QVERIFY(!b.robot.sounding());
     }
     Bench b(profileOf(ProfileId::Create2));
     b.startSafe();
     b.run(150ms);
     b.send(b.encoder.stop());
     QCOMPARE(b.robot.mode(), OiMode::Off);
-    QVERIFY(b.robot.songPlaying()); // heard, not read: the robot no longer answers
-    b.run(1100ms);
+    QVERIFY(b.robot.sounding()); // heard, not read: the robot no longer answers
     QVERIFY(!b.robot.songPlaying());
+    b.run(1100ms);
+    QVERIFY(!b.robot.sounding());
+}
+
+// Packet 37 reads 1 only for a song started by Play (141), on every model.
+void TestVirtualRobot::onlyPlaySetsSongPlaying()
+{
+    for (ProfileId id : {ProfileId::Roomba500, ProfileId::Create2, ProfileId::Create1}) {
+        Bench b(profileOf(id));
+        b.send(b.encoder.start());
+        QCOMPARE(b.value(37), 0);
+        b.send(b.encoder.safe());
+        b.send(b.encoder.song(0, Song{{{60, 32}}})); // half a second
+        b.send(b.encoder.play(0));
+        QCOMPARE(b.value(37), 1);
+        b.run(600ms);
+        QCOMPARE(b.value(37), 0);
+    }
 }
 
 void TestVirtualRobot::ledsAndDisplay()
@@ -1464,6 +1485,39 @@ void TestVirtualRobot::shutdownStopsALoopingScript()
     b.run(3s);
     QCOMPARE(b.robot.truePose().xMm, stopped.xMm);
     QCOMPARE(b.robot.truePose().thetaRad, stopped.thetaRad);
+    // The script ended rather than starting again in Passive, where its
+    // Wait Distance would never end: the robot still hears.
+    const std::optional<SensorSnapshot> mode = b.tryQuery({35});
+    QVERIFY2(mode, "the robot no longer answers: the script went on in Passive");
+    QCOMPARE(mode->oiMode(), OiMode::Passive);
+    QCOMPARE(b.robot.script(), Bytes{});
+}
+
+// ERRATA 20: the Create plays a script in Passive, ignores its Drive there,
+// and so waits for ever for a distance, hearing nothing meanwhile.
+void TestVirtualRobot::scriptPlayedInPassiveLeavesTheRobotDeaf()
+{
+    const RobotProfile &p = profileOf(ProfileId::Create1);
+    Bench b(p);
+    b.robot.setWorld(emptyWorld());
+    b.send(b.encoder.start());
+    b.send(Bytes{152, 13, 137, 1, 44, 128, 0, 156, 1, 144, 137, 0, 0, 0, 0}); // "Drive 40 cm and stop"
+    b.send(b.encoder.playScript());
+    b.run(5s);
+    QCOMPARE(b.robot.truePose().travelledMm, 0.0);
+    QCOMPARE(b.tryQuery({35}), std::nullopt);
+    b.send(b.encoder.shutdownSequence());
+    b.run(5s);
+    QCOMPARE(b.tryQuery({35}), std::nullopt);
+    // In Safe the same script drives its 40 cm, ends, and the robot answers.
+    Bench safe(p);
+    safe.robot.setWorld(emptyWorld());
+    safe.startSafe();
+    safe.send(Bytes{152, 13, 137, 1, 44, 128, 0, 156, 1, 144, 137, 0, 0, 0, 0});
+    safe.send(safe.encoder.playScript());
+    safe.run(3s);
+    QVERIFY(safe.robot.truePose().travelledMm >= 400);
+    QVERIFY(safe.tryQuery({35}));
 }
 
 void TestVirtualRobot::scriptWaitsForABump()

@@ -263,14 +263,16 @@ private slots:
         QCOMPARE(sent(spy, 0), bytes({163, 127, 127, 127, 127}));
     }
 
-    void rawWarningOnCreate2Only()
+    void rawWarningOnCreate2AndRoomba500()
     {
         LedEditor editor;
-        editor.setProfile(profile(ProfileId::Create2));
         auto *warning = child<QLabel>(editor, "rawWarning");
-        QVERIFY(warning->isVisibleTo(&editor));
-        QVERIFY(warning->text().contains("does not work in current Create 2 firmware"));
-        editor.setProfile(profile(ProfileId::Roomba500));
+        for (ProfileId id : {ProfileId::Create2, ProfileId::Roomba500}) {
+            editor.setProfile(profile(id));
+            QVERIFY(warning->isVisibleTo(&editor));
+            QVERIFY(warning->text().contains("does not work in current Create 2 and Roomba 500/600 firmware"));
+        }
+        editor.setProfile(profile(ProfileId::Create1));
         QVERIFY(!warning->isVisibleTo(&editor));
     }
 

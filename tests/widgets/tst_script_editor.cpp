@@ -4,6 +4,8 @@
 #include "robot_profile.h"
 #include "script_editor.h"
 #include "script_lines.h"
+#include "virtual_robot.h"
+#include "world.h"
 
 #include <QApplication>
 #include <QComboBox>
@@ -272,6 +274,44 @@ private slots:
         QSignalSpy spy(&editor, &ScriptEditor::sendRequested);
         QTest::mouseClick(b, Qt::LeftButton);
         QCOMPARE(sent(spy), QStringList{expected});
+    }
+
+    // ERRATA 20: played in Passive, the script's Drive is ignored, its Wait
+    // Distance never ends and the robot hears nothing more. The editor
+    // enters Safe first, so the robot drives its 40 cm and answers again.
+    void playInPassiveEntersSafeFirst_data()
+    {
+        QTest::addColumn<bool>("passive");
+        QTest::addColumn<QStringList>("expected");
+        QTest::newRow("passive") << true << QStringList{"131", "153"};
+        QTest::newRow("safe") << false << QStringList{"153"};
+    }
+    void playInPassiveEntersSafeFirst()
+    {
+        QFETCH(bool, passive);
+        QFETCH(QStringList, expected);
+        sim::VirtualRobot robot(create1());
+        robot.setWorld(sim::World{});
+        const auto give = [&robot](const QByteArray &b) {
+            robot.receive(std::span(reinterpret_cast<const std::uint8_t *>(b.constData()), std::size_t(b.size())));
+        };
+        give(bytes({128, passive ? 128 : 131}));
+        ScriptEditor editor;
+        editor.setProfile(create1());
+        editor.setPassive(passive);
+        editor.loadExample(0); // "Drive 40 cm and stop"
+        QSignalSpy spy(&editor, &ScriptEditor::sendRequested);
+        QTest::mouseClick(editor.button("upload"), Qt::LeftButton);
+        QTest::mouseClick(editor.button("play"), Qt::LeftButton);
+        QCOMPARE(sent(spy).mid(1), expected);
+        for (const QList<QVariant> &args : spy)
+            give(args.at(0).toByteArray());
+        robot.advance(std::chrono::seconds(3));
+        QVERIFY2(robot.truePose().travelledMm >= 400, qPrintable(QString::number(robot.truePose().travelledMm)));
+        (void)robot.takeOutput();
+        give(bytes({142, 35})); // Sensors: OI mode
+        const oi::Bytes reply = robot.takeOutput();
+        QCOMPARE(spaced(QByteArray(reinterpret_cast<const char *>(reply.data()), qsizetype(reply.size()))), QString("2"));
     }
 
     void disabledOnCreate2()

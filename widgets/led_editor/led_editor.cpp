@@ -169,8 +169,9 @@ void LedEditor::retranslateUi()
                                "ASCII (164) are Roomba 500 / Create 2 only.")
                                 .arg(robot));
     const oi::CommandEncoder encoder(*m_profile);
-    m_rawWarning->setText(tr("⚠ %1. It is sent anyway; use Text (164) to be sure.")
-                              .arg(fromStd(encoder.digitLedsRaw(0, 0, 0, 0).warning)));
+    // Shown where the encoder warns (ERRATA 9), in words of its own so that it translates whole.
+    m_rawWarning->setText(tr("⚠ Digit LEDs Raw (163) does not work in current Create 2 and Roomba 500/600 firmware. "
+                             "It is sent anyway; use Text (164) to be sure."));
     if (const auto refusedScheduling = encoder.refuse(oi::Command::SchedulingLeds))
         m_schedulingReason->setText(tr("%1.").arg(fromStd(refusedScheduling->message)));
     refresh();

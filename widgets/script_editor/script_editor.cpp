@@ -120,8 +120,7 @@ ScriptEditor::ScriptEditor(QWidget *parent) : QWidget(parent)
     addButton("play", QString());
     addButton("show", QString());
     connect(button("upload"), &QPushButton::clicked, this, &ScriptEditor::upload);
-    connect(button("play"), &QPushButton::clicked, this,
-            [this] { send(oi::CommandEncoder(*m_profile).playScript()); });
+    connect(button("play"), &QPushButton::clicked, this, &ScriptEditor::play);
     connect(button("show"), &QPushButton::clicked, this, &ScriptEditor::showScript);
 
     auto *demoBox = m_demoBox = new QGroupBox(m_controls);
@@ -359,6 +358,19 @@ void ScriptEditor::upload()
     }
     m_uploaded = body;
     send(bytes);
+}
+
+void ScriptEditor::setPassive(bool passive)
+{
+    m_passive = passive;
+}
+
+void ScriptEditor::play()
+{
+    const oi::CommandEncoder encoder(*m_profile);
+    if (m_passive)
+        send(encoder.safe());
+    send(encoder.playScript());
 }
 
 void ScriptEditor::showScript()

@@ -50,6 +50,10 @@ public slots:
     // there is none.
     void showScriptReply(const QByteArray &script);
     void showScriptFailed(const QString &reason);
+    // Whether the robot is in Passive (or Off) mode: Play then enters Safe
+    // first, since a script played in Passive cannot drive, so its waits
+    // never end and the robot hears nothing more (ERRATA 20).
+    void setPassive(bool passive);
 
 signals:
     void sendRequested(const QByteArray &bytes);
@@ -64,6 +68,7 @@ private:
     QPushButton *addButton(const QString &name, const QString &text);
     void send(const oi::EncodeResult &bytes);
     void upload();
+    void play();
     void showScript();
     void showError(const QString &message, std::optional<int> line);
     void refreshEnabled();
@@ -71,6 +76,7 @@ private:
 
     const oi::RobotProfile *m_profile = &oi::profile(oi::ProfileId::Create2);
     ScriptTextEdit *m_editor = nullptr;
+    bool m_passive = false;
     QComboBox *m_examples = nullptr;
     QLabel *m_reason = nullptr;
     QLabel *m_byteCount = nullptr;

@@ -32,6 +32,7 @@ public:
     bool setBrcLow(bool low) override;
     void flush(int) override {}
     QString describe() const override;
+    std::optional<oi::ProfileId> knownRobot() const override { return m_profile; }
 
     const std::shared_ptr<Room> &room() const { return m_room; }
     RobotId robotId() const { return m_id; }

@@ -62,6 +62,10 @@ public:
     // Whether `detected` means "a Roomba 500 or a Create 2" rather than a
     // certain answer.
     static bool isRoombaOrCreate2(oi::ProfileId detected) { return detected != oi::ProfileId::Create1; }
+    // Whether the answer to a packet or group reads differently on a Roomba
+    // 500 and a Create 2: the encoder counts 43 and 44, alone or in a group
+    // (100, 101). Such an answer is not given while the profile is assumed.
+    static bool dependsOnRoombaOrCreate2(int packetOrGroupId);
 
     enum class StartPolicy : std::uint8_t {
         Always,   // Start goes out first at every baud, as above (the default)

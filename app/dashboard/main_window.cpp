@@ -275,6 +275,7 @@ void MainWindow::onRobotAdded(RobotSession *robot)
     new ConnectionCheckup(*robot, *details, ConnectionCheckup::askWithDialog(this), robot);
     if (m_historyCapacity)
         robot->setHistoryCapacity(*m_historyCapacity);
+    connect(robot, &RobotSession::identifiedChanged, this, &MainWindow::refreshRobotCards);
     connect(robot, &RobotSession::identityChanged, this, [this, robot] {
         refreshRobotCards();
         if (robot == m_fleet.selected())
@@ -769,7 +770,8 @@ void MainWindow::refreshRobotCards()
         RobotCardValues c;
         c.name = robot->name();
         c.colour = robot->colour();
-        c.profile = oitext::fromView(robot->robotProfile().name);
+        c.profile = robot->isIdentified() ? oitext::fromView(robot->robotProfile().name)
+                                          : tr("Roomba 500 or Create 2? (not yet identified)");
         c.live = robot->isLive();
         if (robot->isReplay())
             c.profile = tr("Recording of %1").arg(c.profile);

@@ -18,6 +18,9 @@
 #include <QDockWidget>
 #include <QLineEdit>
 #include <QMenu>
+#include <QMessageBox>
+#include <QTimer>
+#include <QApplication>
 #include <QPushButton>
 #include <QSettings>
 #include <QStandardPaths>
@@ -375,6 +378,41 @@ private slots:
         turnClockwise(again.session);
         // Counter-clockwise is positive: clockwise goes below zero.
         QTRY_VERIFY_WITH_TIMEOUT(again.session.odometry().pose().thetaRad < -0.3, 10000);
+    }
+
+    // The window asks with a dialog that says what the two robots are and
+    // what the choice decides; the answer is the saved robot's profile.
+    void theWindowAsksWhichRobotItIs()
+    {
+        Roomba500OnTcp robot;
+        QSettings settings;
+        saveRobots(settings, {SavedRobot{"Rosa", {}, robot.unnamed(), true}});
+        MainWindow window;
+        window.show();
+        QString asked, cardWhileAsked;
+        QTimer answer;
+        answer.setInterval(20);
+        connect(&answer, &QTimer::timeout, &window, [&] {
+            auto *box = qobject_cast<QMessageBox *>(QApplication::activeModalWidget());
+            if (!box)
+                return;
+            asked = box->text();
+            cardWhileAsked = window.robotList()->card(0)->values().profile;
+            for (QAbstractButton *button : box->buttons())
+                if (button->text() == QLatin1String("Roomba 500"))
+                    button->click();
+        });
+        answer.start();
+        window.start();
+        QTRY_VERIFY_WITH_TIMEOUT(!asked.isEmpty(), 10000);
+        QVERIFY2(asked.contains("Rosa on 127.0.0.1:") && asked.contains("Create 2") && asked.contains("wheel counts"),
+                 qPrintable(asked));
+        QVERIFY2(cardWhileAsked.contains("not yet identified"), qPrintable(cardWhileAsked));
+        RobotSession *rosa = window.fleet().robots().first();
+        QTRY_COMPARE(rosa->robotProfile().id, oi::ProfileId::Roomba500);
+        QVERIFY(rosa->isIdentified());
+        QCOMPARE(window.fleet().saved().first().link.profile, oi::ProfileId::Roomba500);
+        QTRY_COMPARE(window.robotList()->card(0)->values().profile, QString("Roomba 500"));
     }
 };
 

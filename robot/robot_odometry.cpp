@@ -10,6 +10,8 @@ RobotOdometry::RobotOdometry()
 
 void RobotOdometry::update(const oi::SensorSnapshot &frame)
 {
+    if (!m_identified)
+        return;
     const oi::Pose before = m_odometry.pose();
     m_odometry.update(frame);
     const oi::Pose &after = m_odometry.pose();
@@ -31,6 +33,15 @@ void RobotOdometry::reset()
     m_trail.clear();
     appendTrailPoint();
     ++m_revision;
+}
+
+void RobotOdometry::setIdentified(bool identified)
+{
+    if (identified == m_identified)
+        return;
+    m_identified = identified;
+    // Counts read before now were not integrated: start afresh from them.
+    reset();
 }
 
 void RobotOdometry::setCorrections(const oi::FirmwareCorrections &corrections)

@@ -37,6 +37,13 @@ public:
     double wheelBaseMm() const { return m_odometry.wheelBaseMm(); }
     double wheelDiameterMm() const { return m_wheelDiameterMm; }
 
+    // Whether the robot's profile is known, so that its encoder counts are
+    // read the right way round (ERRATA 4). While it is not (a Roomba 500 or
+    // a Create 2 nobody has named yet), update() moves nothing and the map
+    // says so, rather than draw a path that may be mirrored.
+    void setIdentified(bool identified);
+    bool isIdentified() const { return m_identified; }
+
     const oi::Pose &pose() const { return m_odometry.pose(); }
     // Positions in mm, oldest first, at most kMaxTrailPoints; starts with the start pose.
     const QList<QPointF> &trail() const { return m_trail; }
@@ -51,4 +58,5 @@ private:
     double m_wheelDiameterMm = oi::kWheelDiameterMm;
     QList<QPointF> m_trail;
     quint64 m_revision = 0;
+    bool m_identified = true;
 };

@@ -15,6 +15,7 @@ RobotSession::RobotSession(QObject *parent) : QObject(parent)
     connect(&m_link, &oilink::RobotLinkThread::snapshot, this, &RobotSession::onSnapshot);
     connect(&m_link, &oilink::RobotLinkThread::streamStarted, this,
             [this](oi::ProfileId profile, int, const QList<int> &) { onStreamStarted(profile); });
+    connect(&m_link, &oilink::RobotLinkThread::profileAssumed, this, &RobotSession::onProfileAssumed);
     connect(&m_link, &oilink::RobotLinkThread::stateChanged, this, [this](oilink::LinkState state) {
         m_state = state;
         emit stateChanged(state);
@@ -70,6 +71,7 @@ void RobotSession::connectTo(const oilink::LinkSettings &settings)
     m_latest = oi::SensorSnapshot(*m_profile);
     m_snapshotCount = 0;
     resetHistory();
+    setProfileAssumed(false);
     m_link.open(settings);
 }
 
@@ -131,6 +133,34 @@ void RobotSession::onStreamStarted(oi::ProfileId profile)
     m_history.setProfile(*m_profile);
     m_odometry.reset();
     emit profileChanged(profile);
+}
+
+void RobotSession::onProfileAssumed(oi::ProfileId assumed)
+{
+    // Named since the link was opened (identifyAs() with the profile it reads).
+    if (m_settings.profile)
+        return;
+    setProfileAssumed(true);
+    emit profileAssumed(assumed);
+}
+
+void RobotSession::setProfileAssumed(bool assumed)
+{
+    if (assumed == m_profileAssumed)
+        return;
+    m_profileAssumed = assumed;
+    m_odometry.setIdentified(!assumed);
+    emit identifiedChanged(!assumed);
+}
+
+void RobotSession::identifyAs(oi::ProfileId profile)
+{
+    m_settings.profile = profile;
+    if (m_connected && (!m_profileAssumed || profile != m_profile->id)) {
+        connectTo(m_settings);
+        return;
+    }
+    setProfileAssumed(false);
 }
 
 void RobotSession::onSnapshot(const oi::SensorSnapshot &snapshot, double readSeconds)

@@ -62,6 +62,14 @@ public:
     void showScript() { m_link.showScript(); }
 
     const oi::RobotProfile &robotProfile() const { return *m_profile; }
+    // False while the link has found a Roomba 500 or a Create 2 (they answer
+    // alike) and nobody has said which: robotProfile() is then Create 2 by
+    // assumption, and the odometry, which depends on it, waits.
+    bool isIdentified() const { return !m_profileAssumed; }
+    // Says which robot it is (after profileAssumed()): from now on the link
+    // reads it with that profile, named in settings(), so a saved robot
+    // keeps it. Connects again if the link read it as the other one.
+    void identifyAs(oi::ProfileId profile);
     const oi::SensorSnapshot &latest() const { return m_latest; }
     // Counts snapshots, so a display timer can skip work when nothing changed.
     quint64 snapshotCount() const { return m_snapshotCount; }
@@ -102,6 +110,11 @@ signals:
     void stateChanged(oilink::LinkState state);
     void statisticsChanged(const oilink::LinkStats &stats);
     void profileChanged(oi::ProfileId profile);
+    // The link found a Roomba 500 or a Create 2 and cannot tell which; see
+    // isIdentified() and identifyAs().
+    void profileAssumed(oi::ProfileId assumed);
+    // isIdentified() changed.
+    void identifiedChanged(bool identified);
     void firmwareChanged(const QString &release);
     void errorOccurred(const QString &message);
     void bytesSent(const QByteArray &bytes, qint64 msecs);
@@ -117,6 +130,8 @@ signals:
 private:
     void onSnapshot(const oi::SensorSnapshot &snapshot, double readSeconds);
     void onStreamStarted(oi::ProfileId profile);
+    void onProfileAssumed(oi::ProfileId assumed);
+    void setProfileAssumed(bool assumed);
     void onBytesSent(const QByteArray &bytes);
     void onBytesReceived(const QByteArray &bytes);
     void onReplayStatus(const oilink::ReplayStatus &status);
@@ -129,6 +144,7 @@ private:
     bool m_connected = false;
     qint64 m_connectedAtMs = 0;
     const oi::RobotProfile *m_profile = &oi::profile(oi::ProfileId::Create2);
+    bool m_profileAssumed = false;
     oi::SensorSnapshot m_latest;
     quint64 m_snapshotCount = 0;
     oilink::LinkState m_state = oilink::LinkState::Closed;

@@ -575,16 +575,28 @@
         <translation>Welcher Roboter ist das?</translation>
     </message>
     <message>
-        <source>The robot on %1 is a Roomba 500 or a Create 2: they answer alike, but count their wheels differently. Which is it? The answer is kept for this port.</source>
-        <translation>Der Roboter an %1 ist ein Roomba 500 oder ein Create 2: Beide antworten gleich, zählen ihre Räder aber verschieden. Welcher ist es? Die Antwort wird für diesen Anschluss gespeichert.</translation>
-    </message>
-    <message>
         <source>Roomba 500</source>
         <translation>Roomba 500</translation>
     </message>
     <message>
-        <source>Roomba 600 / Create 2</source>
-        <translation>Roomba 600 / Create 2</translation>
+        <source>%1 on %2</source>
+        <translation>%1 an %2</translation>
+    </message>
+    <message>
+        <source>%1 is a Roomba 500 or a Create 2, and the two answer every question alike.
+
+The Roomba 500 is the cleaning robot of the 500 series. The Create 2 is iRobot&apos;s educational robot, built on the Roomba 600 (a Roomba 600 counts as a Create 2).
+
+The choice decides how the wheel counts are read: the wrong one mirrors every turn on the map. Until you choose, the map draws no path for this robot. The answer is kept for this robot; the profile in the connection bar changes it later.</source>
+        <translation>%1 ist ein Roomba 500 oder ein Create 2, und beide antworten auf jede Frage gleich.
+
+Der Roomba 500 ist der Staubsaugerroboter der 500er-Serie. Der Create 2 ist der Lernroboter von iRobot, gebaut auf dem Roomba 600 (ein Roomba 600 gilt als Create 2).
+
+Die Wahl entscheidet, wie die Radzähler gelesen werden: Die falsche spiegelt jede Drehung auf der Karte. Bis Sie wählen, zeichnet die Karte für diesen Roboter keinen Weg. Die Antwort wird für diesen Roboter gespeichert; das Profil in der Verbindungsleiste ändert sie später.</translation>
+    </message>
+    <message>
+        <source>Create 2 / Roomba 600</source>
+        <translation>Create 2 / Roomba 600</translation>
     </message>
 </context>
 <context>
@@ -2057,6 +2069,10 @@ GPL-3.0-or-later.</translation>
         <source>Lesson</source>
         <translation>Lektion</translation>
     </message>
+    <message>
+        <source>Roomba 500 or Create 2? (not yet identified)</source>
+        <translation>Roomba 500 oder Create 2? (noch nicht bestimmt)</translation>
+    </message>
 </context>
 <context>
     <name>MidiMelody</name>
@@ -2523,6 +2539,10 @@ GPL-3.0-or-later.</translation>
     <message>
         <source>Delete %1</source>
         <translation>Löschen: %1</translation>
+    </message>
+    <message>
+        <source>Robot not yet identified: a Roomba 500 or a Create 2? Until it is named, its wheel counts may read mirrored, so no path is drawn.</source>
+        <translation>Roboter noch nicht bestimmt: ein Roomba 500 oder ein Create 2? Bis er benannt ist, können seine Radzähler gespiegelt gelesen werden, darum wird kein Weg gezeichnet.</translation>
     </message>
 </context>
 <context>

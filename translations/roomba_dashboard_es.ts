@@ -575,16 +575,28 @@
         <translation>¿Qué robot es este?</translation>
     </message>
     <message>
-        <source>The robot on %1 is a Roomba 500 or a Create 2: they answer alike, but count their wheels differently. Which is it? The answer is kept for this port.</source>
-        <translation>El robot en %1 es un Roomba 500 o un Create 2: responden igual, pero cuentan sus ruedas de forma distinta. ¿Cuál es? La respuesta se guarda para este puerto.</translation>
-    </message>
-    <message>
         <source>Roomba 500</source>
         <translation>Roomba 500</translation>
     </message>
     <message>
-        <source>Roomba 600 / Create 2</source>
-        <translation>Roomba 600 / Create 2</translation>
+        <source>%1 on %2</source>
+        <translation>%1 en %2</translation>
+    </message>
+    <message>
+        <source>%1 is a Roomba 500 or a Create 2, and the two answer every question alike.
+
+The Roomba 500 is the cleaning robot of the 500 series. The Create 2 is iRobot&apos;s educational robot, built on the Roomba 600 (a Roomba 600 counts as a Create 2).
+
+The choice decides how the wheel counts are read: the wrong one mirrors every turn on the map. Until you choose, the map draws no path for this robot. The answer is kept for this robot; the profile in the connection bar changes it later.</source>
+        <translation>%1 es un Roomba 500 o un Create 2, y los dos responden igual a cada pregunta.
+
+El Roomba 500 es el robot aspirador de la serie 500. El Create 2 es el robot educativo de iRobot, construido sobre el Roomba 600 (un Roomba 600 cuenta como Create 2).
+
+La elección decide cómo se leen los contadores de las ruedas: la equivocada refleja cada giro en el mapa. Hasta que elija, el mapa no dibuja ningún recorrido para este robot. La respuesta se guarda para este robot; el perfil de la barra de conexión la cambia más tarde.</translation>
+    </message>
+    <message>
+        <source>Create 2 / Roomba 600</source>
+        <translation>Create 2 / Roomba 600</translation>
     </message>
 </context>
 <context>
@@ -2056,6 +2068,10 @@ GPL-3.0-or-later.</translation>
         <source>Lesson</source>
         <translation>Lección</translation>
     </message>
+    <message>
+        <source>Roomba 500 or Create 2? (not yet identified)</source>
+        <translation>¿Roomba 500 o Create 2? (aún sin identificar)</translation>
+    </message>
 </context>
 <context>
     <name>MidiMelody</name>
@@ -2522,6 +2538,10 @@ GPL-3.0-or-later.</translation>
     <message>
         <source>Delete %1</source>
         <translation>Borrar %1</translation>
+    </message>
+    <message>
+        <source>Robot not yet identified: a Roomba 500 or a Create 2? Until it is named, its wheel counts may read mirrored, so no path is drawn.</source>
+        <translation>Robot aún sin identificar: ¿un Roomba 500 o un Create 2? Hasta que se indique, sus contadores de rueda pueden leerse al revés, así que no se dibuja ningún recorrido.</translation>
     </message>
 </context>
 <context>

@@ -25,8 +25,8 @@ ConnectionCheckup::ConnectionCheckup(RobotSession &session, DoctorDetails &detai
     : QObject(parent), m_session(session), m_details(details), m_askWhich(std::move(askWhich))
 {
     connect(&m_session, &RobotSession::errorOccurred, this, &ConnectionCheckup::onLinkError);
-    connect(&m_session, &RobotSession::profileChanged, this, [this](oi::ProfileId found) {
-        QTimer::singleShot(0, this, [this, found] { onProfileFound(found); }); // not inside the session's signal
+    connect(&m_session, &RobotSession::profileAssumed, this, [this] {
+        QTimer::singleShot(0, this, &ConnectionCheckup::identify); // not inside the session's signal
     });
     connect(&m_session, &RobotSession::stateChanged, this, [this](oilink::LinkState state) {
         // Data flows: the finding is old news, and a later silence is checked again.
@@ -34,6 +34,11 @@ ConnectionCheckup::ConnectionCheckup(RobotSession &session, DoctorDetails &detai
             m_details.clear();
             m_checkedThisConnection = false;
         }
+        // A profile named for this port is the answer from now on.
+        const oilink::LinkSettings &s = m_session.settings();
+        if (state == oilink::LinkState::Streaming && s.profile && *s.profile != oi::ProfileId::Create1
+            && (s.transport == oilink::TransportKind::Serial || s.transport == oilink::TransportKind::Tcp))
+            rememberProfile(s.describe(), *s.profile);
     });
 }
 
@@ -41,28 +46,26 @@ ConnectionCheckup::~ConnectionCheckup() = default;
 
 // In Auto the link takes a Roomba-family robot for a Create 2 (they answer
 // alike); the remembered answer, or the user, decides instead.
-void ConnectionCheckup::onProfileFound(oi::ProfileId found)
+void ConnectionCheckup::identify()
 {
-    const oilink::LinkSettings s = m_session.settings();
-    const bool hasPort = s.transport == oilink::TransportKind::Serial || s.transport == oilink::TransportKind::Tcp;
-    if (s.profile || found == oi::ProfileId::Create1 || !hasPort || m_asking)
+    if (m_session.isIdentified() || m_asking)
         return;
-    const QString port = s.describe();
+    if (const std::optional<oi::ProfileId> which = whichRobot(m_session.settings()))
+        m_session.identifyAs(*which);
+}
+
+std::optional<oi::ProfileId> ConnectionCheckup::whichRobot(const oilink::LinkSettings &settings)
+{
+    const QString port = settings.describe();
     std::optional<oi::ProfileId> which = rememberedProfile(port);
     if (!which && m_askWhich) {
         m_asking = true;
-        which = m_askWhich(port);
+        which = m_askWhich(m_session.name().isEmpty() ? port : tr("%1 on %2").arg(m_session.name(), port));
         m_asking = false;
     }
-    if (!which)
-        return;
-    rememberProfile(port, *which);
-    if (*which == found)
-        return;
-    oilink::LinkSettings named = s;
-    named.profile = which;
-    m_session.disconnectFromRobot();
-    m_session.connectTo(named);
+    if (which)
+        rememberProfile(port, *which);
+    return which;
 }
 
 std::optional<oi::ProfileId> ConnectionCheckup::rememberedProfile(const QString &port)
@@ -136,13 +139,9 @@ void ConnectionCheckup::onFinished(const oilink::ConnectionDoctor::Report &repor
         next.profile.reset(); // let the link find it
         break;
     case F::RoombaOrCreate2: {
-        const QString port = m_settings.describe();
-        std::optional<oi::ProfileId> which = rememberedProfile(port);
-        if (!which && m_askWhich)
-            which = m_askWhich(port);
+        const std::optional<oi::ProfileId> which = whichRobot(m_settings);
         if (!which)
             return;
-        rememberProfile(port, *which);
         next.profile = which;
         break;
     }
@@ -154,14 +153,18 @@ void ConnectionCheckup::onFinished(const oilink::ConnectionDoctor::Report &repor
 
 ConnectionCheckup::AskWhich ConnectionCheckup::askWithDialog(QWidget *parent)
 {
-    return [parent](const QString &port) -> std::optional<oi::ProfileId> {
+    return [parent](const QString &robot) -> std::optional<oi::ProfileId> {
         QMessageBox box(QMessageBox::Question, tr("Which robot is this?"),
-                        tr("The robot on %1 is a Roomba 500 or a Create 2: they answer alike, but count their "
-                           "wheels differently. Which is it? The answer is kept for this port.")
-                            .arg(port),
+                        tr("%1 is a Roomba 500 or a Create 2, and the two answer every question alike.\n\n"
+                           "The Roomba 500 is the cleaning robot of the 500 series. The Create 2 is iRobot's "
+                           "educational robot, built on the Roomba 600 (a Roomba 600 counts as a Create 2).\n\n"
+                           "The choice decides how the wheel counts are read: the wrong one mirrors every turn "
+                           "on the map. Until you choose, the map draws no path for this robot. The answer is "
+                           "kept for this robot; the profile in the connection bar changes it later.")
+                            .arg(robot),
                         QMessageBox::Cancel, parent);
         QPushButton *roomba = box.addButton(tr("Roomba 500"), QMessageBox::AcceptRole);
-        QPushButton *create = box.addButton(tr("Roomba 600 / Create 2"), QMessageBox::AcceptRole);
+        QPushButton *create = box.addButton(tr("Create 2 / Roomba 600"), QMessageBox::AcceptRole);
         box.exec();
         if (box.clickedButton() == roomba)
             return oi::ProfileId::Roomba500;

@@ -17,14 +17,20 @@ class RobotSession;
 
 // When a session's link gets no valid data, finds out why: closes the link,
 // runs the connection doctor on a transport of its own, shows the finding
-// (DoctorDetails), and connects again with what works. A robot that may be
-// a Roomba 500 or a Create 2 is asked about, once per port: the answer is
-// kept, and Create 2 is never picked for it silently.
+// (DoctorDetails), and connects again with what works.
+//
+// A robot that may be a Roomba 500 or a Create 2 (the link's probe, or the
+// doctor, cannot tell them apart) is asked about once per port or bridge:
+// the answer is kept in the settings, the session reads the robot with it
+// (and a saved robot keeps it as its profile), and Create 2 is never picked
+// for it silently. A profile named in the connection bar is kept for the
+// port too, which is how an answer is changed later.
 class ConnectionCheckup : public QObject {
     Q_OBJECT
 public:
-    // Asks the user which of the two robots it is; nullopt if they do not say.
-    using AskWhich = std::function<std::optional<oi::ProfileId>(const QString &port)>;
+    // Asks the user which of the two robots it is; nullopt if they do not
+    // say. `robot` names it and its port ("Robot 1 on /dev/ttyUSB0").
+    using AskWhich = std::function<std::optional<oi::ProfileId>(const QString &robot)>;
 
     // Asks with a message box over `parent`.
     static AskWhich askWithDialog(QWidget *parent);
@@ -46,7 +52,9 @@ signals:
 private:
     void onLinkError();
     void onFinished(const oilink::ConnectionDoctor::Report &report);
-    void onProfileFound(oi::ProfileId found);
+    void identify();
+    // The remembered answer for the session's port, or the user's (then kept).
+    std::optional<oi::ProfileId> whichRobot(const oilink::LinkSettings &settings);
 
     RobotSession &m_session;
     DoctorDetails &m_details;

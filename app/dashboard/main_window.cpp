@@ -186,6 +186,7 @@ void MainWindow::onRobotAdded(RobotSession *robot)
     m_view->addConnectionCheckup(robot, statusBar(), this);
     if (m_historyCapacity)
         robot->setHistoryCapacity(*m_historyCapacity);
+    connect(robot, &RobotSession::identifiedChanged, m_robotBar, &RobotBar::refresh);
     connect(robot, &RobotSession::identityChanged, this, [this, robot] {
         m_robotBar->refresh();
         if (robot == m_fleet.selected())

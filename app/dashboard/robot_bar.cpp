@@ -81,7 +81,8 @@ void RobotBar::refresh()
         RobotCardValues c;
         c.name = robot->name();
         c.colour = robot->colour();
-        c.profile = oitext::fromView(robot->robotProfile().name);
+        c.profile = robot->isIdentified() ? oitext::fromView(robot->robotProfile().name)
+                                          : tr("Roomba 500 or Create 2? (not yet identified)");
         c.live = robot->isLive();
         if (robot->isReplay())
             c.profile = tr("Recording of %1").arg(c.profile);

@@ -50,7 +50,7 @@ int main(int argc, char *argv[])
         {QStringLiteral("sim"), QStringLiteral("Drive a virtual robot in this process.")},
         {QStringLiteral("port"), QStringLiteral("The robot's serial port, e.g. /dev/ttyUSB0."), QStringLiteral("PATH")},
         {QStringLiteral("tcp"), QStringLiteral("A serial-over-TCP bridge (ser2net) at HOST:PORT."), QStringLiteral("HOST:PORT")},
-        {QStringLiteral("profile"), QStringLiteral("Robot: roomba500, create2 (also roomba600) or create1. Default: found by asking the robot (create2 with --sim)."), QStringLiteral("PROFILE")},
+        {QStringLiteral("profile"), QStringLiteral("Robot: roomba500, create2 (also roomba600) or create1. Needed for a Roomba 500 or a Create 2, which answer alike; a Create is found by asking it (create2 with --sim)."), QStringLiteral("PROFILE")},
         {QStringLiteral("username"), QStringLiteral("The broker account."), QStringLiteral("USER")},
         {QStringLiteral("password-file"), QStringLiteral("Read the account's password from the first line of FILE."), QStringLiteral("FILE")},
         {QStringLiteral("cafile"), QStringLiteral("TLS: the CA certificate (PEM) the broker's certificate is checked against."), QStringLiteral("FILE")},
@@ -107,6 +107,18 @@ int main(int argc, char *argv[])
 
     qCInfo(lcBridge, "robot %s on %s, broker %s", qPrintable(config->name), qPrintable(config->link.describe()),
            qPrintable(config->broker.displayUrl()));
+    // Unattended, the bridge does not guess which of the two it is: their
+    // encoder counts read the other way round (ERRATA 4). A Create, which
+    // the probe tells apart, needs no setting.
+    QObject::connect(&robot, &RobotSession::profileAssumed, &app, [&] {
+        fail(QStringLiteral("%1 answers as a Roomba 500 or a Create 2, which no question tells apart, and the two "
+                            "read their wheel encoders the other way round. Name the robot in the config "
+                            "(profile = roomba500 or profile = create2) or with --profile; not starting.")
+                 .arg(config->link.describe()));
+        bridge.shutDown();
+        broker.disconnectFromBroker();
+        app.exit(kUsageError);
+    });
     bridge.start();
     robot.connectTo(config->link);
     if (!broker.connectToBroker(config->broker))

@@ -3,9 +3,13 @@
 
 #include "command_catalog.h"
 #include "command_modes.h"
+#include "profile_probe.h"
 #include "robot_link.h"
 
+#include <QStringList>
 #include <QTimer>
+
+#include <algorithm>
 
 namespace {
 
@@ -34,6 +38,26 @@ CommandSender::CommandSender(oilink::RobotLink &link, Order order, QObject *pare
         if (state == oilink::LinkState::Lost)
             finish(1, QStringLiteral("%1: the connection was lost").arg(m_order.settings.describe()));
     });
+}
+
+QString CommandSender::roombaOrCreate2Note(const QString &where, bool assumed)
+{
+    return QStringLiteral("%1 answers as a Roomba 500 or a Create 2, which no question tells apart%2. The two "
+                          "read the wheel encoders (packets 43 and 44) the other way round: name the robot with "
+                          "--profile roomba500 or --profile create2.")
+        .arg(where, assumed ? QStringLiteral("; assumed create2") : QString());
+}
+
+QString CommandSender::mirroredAnswerRefusal(const QString &where, const QList<int> &ids)
+{
+    QStringList dependent;
+    for (int id : ids)
+        if (oilink::ProfileProbe::dependsOnRoombaOrCreate2(id))
+            dependent << QString::number(id);
+    return QStringLiteral("%1 answers as a Roomba 500 or a Create 2, which no question tells apart, and the "
+                          "answer to %2 (wheel encoders) reads differently on the two: not asked, rather than "
+                          "printed possibly mirrored. Name the robot with --profile roomba500 or --profile create2.")
+        .arg(where, dependent.join(QStringLiteral(", ")));
 }
 
 void CommandSender::start()
@@ -74,6 +98,15 @@ void CommandSender::useProfile(oi::ProfileId id)
                                                                              qsizetype(m_command.size())))) {
         finish(1, why);
         return;
+    }
+    if (m_link.isProfileAssumed()) {
+        const bool query = m_command.front() == 142 || m_command.front() == 149;
+        const QList<int> asked(m_command.begin() + (m_command.front() == 142 ? 1 : 2), m_command.end());
+        if (query && std::any_of(asked.begin(), asked.end(), &oilink::ProfileProbe::dependsOnRoombaOrCreate2)) {
+            finish(1, mirroredAnswerRefusal(m_order.settings.describe(), asked));
+            return;
+        }
+        emit note(roombaOrCreate2Note(m_order.settings.describe(), true));
     }
     const oi::CommandSpec *spec = oi::commandSpecForOpcode(*m_profile, m_command.front());
     if (spec && oi::availableWhenOff(spec->command))

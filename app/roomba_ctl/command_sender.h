@@ -33,6 +33,14 @@ class RobotLink;
 class CommandSender : public QObject {
     Q_OBJECT
 public:
+    // For a robot found as "a Roomba 500 or a Create 2" without --profile
+    // (RobotLink::profileAssumed): that Create 2 was `assumed`, and how to
+    // name the right one. `where` is the robot's port or bridge.
+    static QString roombaOrCreate2Note(const QString &where, bool assumed);
+    // Why an answer that reads differently on the two (encoders 43/44, the
+    // groups holding them) is not given.
+    static QString mirroredAnswerRefusal(const QString &where, const QList<int> &ids);
+
     struct Order {
         std::string name;
         std::vector<std::string> args;

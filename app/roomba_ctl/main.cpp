@@ -97,7 +97,11 @@ ROBOT is one of:
                      through which the robot's BRC pin (RTS) can be pulsed
   --sim              the built-in virtual robot, playing --profile
 Without --profile, sensors and send find the robot's profile (and on a
-serial port, its baud among 115200, 57600 and 19200) by asking it.
+serial port, its baud among 115200, 57600 and 19200) by asking it. A Roomba
+500 and a Create 2 answer alike but read their wheel encoders (43, 44) the
+other way round: found without --profile, they are taken for a create2 and
+say so on standard error; sensors leaves 43 and 44 out, and send refuses to
+ask for them (or for groups 100 and 101). Name the robot with --profile.
 
 Profiles: roomba500, create2 (also roomba600), create1 (also create).
 The default profile is create2 (encode, decode, --sim).
@@ -433,10 +437,12 @@ int parseLinkOptions(const std::vector<std::string> &args, std::size_t from, Lin
 }
 
 std::string statisticsJson(const oilink::LinkStats &st, const std::string &profileKey, int baud,
-                           const QList<int> &packets)
+                           const QList<int> &packets, bool profileAssumed)
 {
     QJsonObject o = oilink::statisticsToJson(st);
     o.insert(QLatin1String("profile"), QString::fromStdString(profileKey));
+    if (profileAssumed)
+        o.insert(QLatin1String("profileAssumed"), true); // a Roomba 500 or a Create 2, not named
     o.insert(QLatin1String("baud"), baud);
     QJsonArray ids;
     for (int id : packets)
@@ -478,10 +484,22 @@ int streamSensors(int argc, char **argv, const std::vector<std::string> &args)
     TerminationSignals termination;
     QObject::connect(&termination, &TerminationSignals::requested, &app,
                      [&](int signal) { finish(TerminationSignals::exitStatusFor(signal), {}); });
+    // A Roomba 500 or a Create 2 found without --profile: said so, and
+    // its encoder counts, which may read mirrored, are left out.
+    bool assumed = false;
+    QObject::connect(&link, &oilink::RobotLinkThread::profileAssumed, &app, [&] {
+        assumed = true;
+        std::cerr << "roomba-ctl: " << toStd(CommandSender::roombaOrCreate2Note(o.settings.describe(), true))
+                  << " Until then packets 43 and 44 are left out.\n";
+    });
     QObject::connect(&link, &oilink::RobotLinkThread::snapshot, &app, [&](const oi::SensorSnapshot &s) {
         if (finished)
             return;
-        std::cout << snapshotJson(s, oi::FrameKind::Stream) << std::endl;
+        oi::SensorSnapshot shown = s;
+        for (int id : {43, 44})
+            if (assumed)
+                shown.remove(id);
+        std::cout << snapshotJson(shown, oi::FrameKind::Stream) << std::endl;
         silence.start(kFrameSilenceMs);
         if (++received >= o.count)
             finish(0, {});
@@ -503,7 +521,7 @@ int streamSensors(int argc, char **argv, const std::vector<std::string> &args)
     link.stop();
     if (status != 0)
         return status;
-    std::cout << statisticsJson(link.lastStatistics(), profileKey, baud, packets) << std::endl;
+    std::cout << statisticsJson(link.lastStatistics(), profileKey, baud, packets, assumed) << std::endl;
     return 0;
 }
 
@@ -586,6 +604,9 @@ int runDoctor(int argc, char **argv, const std::vector<std::string> &args)
     QObject::connect(&doctor, &oilink::ConnectionDoctor::finished, &app,
                      [&](const oilink::ConnectionDoctor::Report &report) {
                          std::cout << toStd(report.summary) << std::endl;
+                         if (report.finding == oilink::ConnectionDoctor::Finding::RoombaOrCreate2)
+                             std::cerr << "roomba-ctl: " << toStd(CommandSender::roombaOrCreate2Note(o.settings.describe(), false))
+                                       << "\n";
                          status = report.finding == oilink::ConnectionDoctor::Finding::Healthy ? 0 : 1;
                          QCoreApplication::exit(status);
                      });

@@ -27,6 +27,15 @@ bool ProfileProbe::isModeAnswer(const QByteArray &answer)
     return answer.size() == 2 && at(0) >= 1 && at(0) <= kModeMax && (at(1) & kBumpBitsUnused) == 0;
 }
 
+bool ProfileProbe::dependsOnRoombaOrCreate2(int id)
+{
+    constexpr int kRightOrLeftEncoder = 43, kLeftOrRightEncoder = 44; // ERRATA 4
+    if (id == kRightOrLeftEncoder || id == kLeftOrRightEncoder)
+        return true;
+    const oi::PacketGroup *group = oi::profile(oi::ProfileId::Create2).group(id);
+    return group && group->first <= kLeftOrRightEncoder && group->last >= kRightOrLeftEncoder;
+}
+
 ProfileProbe::ProfileProbe(Transport &transport, QList<int> bauds, QObject *parent)
     : QObject(parent), m_transport(transport), m_bauds(std::move(bauds)), m_timer(this)
 {

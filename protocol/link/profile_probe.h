@@ -34,8 +34,10 @@ class Transport;
 // The Roomba 500 and the Create 2 answer every question alike (the same
 // commands, packet ids and sizes); they differ only in what packets 43/44
 // mean (ERRATA 4) and in the range of 58, which no answer reveals. The probe
-// says Create 2, the newer and commoner of the two; for a Roomba 500 the
-// user names the profile, which decides which encoder count is which.
+// says Create 2, the newer and commoner of the two, and isRoombaOrCreate2()
+// of that answer is true: it stands for the family, and whoever uses it
+// must have the profile named (remembered, or asked) before trusting which
+// encoder count is which.
 class ProfileProbe : public QObject {
     Q_OBJECT
 public:
@@ -57,6 +59,13 @@ public:
     static QByteArray modeQuestion() { return bytesOf({149, 2, 35, 7}); }
     // Exactly two bytes: a mode of 1..3 and a bumps byte with bits 5..7 clear.
     static bool isModeAnswer(const QByteArray &answer);
+    // Whether `detected` means "a Roomba 500 or a Create 2" rather than a
+    // certain answer.
+    static bool isRoombaOrCreate2(oi::ProfileId detected) { return detected != oi::ProfileId::Create1; }
+    // Whether the answer to a packet or group reads differently on a Roomba
+    // 500 and a Create 2: the encoder counts 43 and 44, alone or in a group
+    // (100, 101). Such an answer is not given while the profile is assumed.
+    static bool dependsOnRoombaOrCreate2(int packetOrGroupId);
 
     enum class StartPolicy : std::uint8_t {
         Always,   // Start goes out first at every baud, as above (the default)

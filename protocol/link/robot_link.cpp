@@ -138,6 +138,7 @@ void RobotLink::open(const LinkSettings &settings)
         close();
     m_settings = settings;
     m_profile = settings.profile ? &oi::profile(*settings.profile) : nullptr;
+    m_profileAssumed = false;
     m_baud = settings.baud;
     m_streamIds.clear();
     m_parser.reset();
@@ -306,6 +307,12 @@ void RobotLink::startProbe()
 {
     if (!m_transport || !m_transportOpen)
         return;
+    if (const std::optional<oi::ProfileId> known = m_transport->knownRobot()) {
+        // It says what it is: nothing to ask, and nothing to assume.
+        m_profile = &oi::profile(*known);
+        useProfile();
+        return;
+    }
     if (!m_probe) {
         const QList<int> bauds = m_settings.baud > 0 ? QList<int>{m_settings.baud} : ProfileProbe::defaultBauds();
         m_probe = new ProfileProbe(*m_transport, bauds, this);
@@ -325,6 +332,9 @@ void RobotLink::startProbe()
             m_probe->deleteLater();
             m_probe = nullptr;
             m_rearmMs = kNoDataAfterMs;
+            m_profileAssumed = ProfileProbe::isRoombaOrCreate2(id);
+            if (m_profileAssumed)
+                emit profileAssumed(id);
             useProfile();
         });
         connect(m_probe, &ProfileProbe::failed, this, &RobotLink::onProbeFailed);

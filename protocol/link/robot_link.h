@@ -62,6 +62,9 @@ public:
     const LinkSettings &settings() const { return m_settings; }
     // The profile asked for or found; nullptr while it is unknown.
     const oi::RobotProfile *robotProfile() const { return m_profile; }
+    // True when the probe found a Roomba 500 or a Create 2 (see
+    // profileAssumed()), until the link is opened again.
+    bool isProfileAssumed() const { return m_profileAssumed; }
     // The baud the stream was sized for.
     int baud() const;
     QList<int> streamPackets() const;
@@ -108,6 +111,13 @@ signals:
     // Without streaming (LinkSettings::streaming): the profile is known and
     // commands and sensor queries can go.
     void requestsReady(oi::ProfileId profile, int baud);
+    // The probe found a Roomba 500 or a Create 2, which answer every question
+    // alike (ERRATA 4, 19), and the link reads it as `assumed` (Create 2):
+    // encoder counts 43/44 may be read mirrored until someone names the
+    // profile. Comes before streamStarted() or requestsReady(). Never comes
+    // for a named profile, a Create (which the probe tells apart), or a
+    // transport that knows its robot (the virtual robot).
+    void profileAssumed(oi::ProfileId assumed);
     // A Sensors or Query List request got no answer (errorOccurred says so too).
     void sensorQueryFailed(const QString &message);
     void rawBytesSent(const QByteArray &bytes);
@@ -169,6 +179,7 @@ private:
     BrcPulser *m_brc = nullptr; // wakes the robot and keeps it awake (if it sleeps)
 
     const oi::RobotProfile *m_profile = nullptr;
+    bool m_profileAssumed = false;
     int m_baud = 0; // as found by the probe or asked for; 0 = the profile's default
     std::vector<int> m_streamIds;
     QByteArray m_streamCommand;

@@ -165,6 +165,7 @@ void RobotLinkThread::start()
     relay(link, &RobotLink::streamStarted, [this](oi::ProfileId profile, int baud, const QList<int> &packets) {
         emit streamStarted(profile, baud, packets);
     });
+    relay(link, &RobotLink::profileAssumed, [this](oi::ProfileId assumed) { emit profileAssumed(assumed); });
     relay(link, &RobotLink::rawBytesSent, [this](const QByteArray &b) { emit rawBytesSent(b); });
     relay(link, &RobotLink::errorOccurred, [this](const QString &m) { emit errorOccurred(m); });
     relay(link, &RobotLink::recordingStatus, [this](const RecordingStatus &st) { emit recordingStatus(st); });

@@ -72,6 +72,7 @@ signals:
     void stateChanged(oilink::LinkState state);
     void statistics(const oilink::LinkStats &stats);
     void streamStarted(oi::ProfileId profile, int baud, const QList<int> &packets);
+    void profileAssumed(oi::ProfileId assumed); // see RobotLink::profileAssumed
     void rawBytesSent(const QByteArray &bytes);
     void rawBytesReceived(const QByteArray &bytes);
     void errorOccurred(const QString &message);

@@ -7,6 +7,8 @@
 #include <QObject>
 #include <QString>
 
+#include <optional>
+
 namespace oilink {
 
 // A byte pipe to the robot. Lives on the link's thread.
@@ -45,6 +47,9 @@ public:
     virtual bool robotKnownAwake() const;
     // "/dev/ttyUSB0", "host:port": the prefix of this transport's messages.
     virtual QString describe() const = 0;
+    // Which robot is at the other end, where the transport knows it (the
+    // in-process virtual robot); nullopt where only a probe can tell.
+    virtual std::optional<oi::ProfileId> knownRobot() const { return std::nullopt; }
 
 signals:
     void opened();

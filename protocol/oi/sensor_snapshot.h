@@ -62,6 +62,11 @@ public:
         m_present |= std::uint64_t{1} << packetId;
     }
     void clear() { m_present = 0; }
+    void remove(int packetId)
+    {
+        if (packetId >= 0 && packetId <= kMaxPacketId)
+            m_present &= ~(std::uint64_t{1} << packetId);
+    }
     // Same profile, same packets present, same values.
     friend bool operator==(const SensorSnapshot &a, const SensorSnapshot &b);
 

@@ -33,6 +33,7 @@ public:
     bool robotKnownAwake() const override;
     void flush(int) override {}
     QString describe() const override;
+    std::optional<oi::ProfileId> knownRobot() const override { return m_profile; }
 
     const std::shared_ptr<Room> &room() const { return m_room; }
     RobotId robotId() const { return m_id; }

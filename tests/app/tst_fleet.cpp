@@ -3,6 +3,8 @@
 // robot list, and the list kept between runs.
 #include "byte_inspector.h"
 #include "command_encoder.h"
+#include "connection_checkup.h"
+#include "doctor_details.h"
 #include "drive_pad.h"
 #include "main_window.h"
 #include "recording_transport.h"
@@ -10,10 +12,15 @@
 #include "saved_robots.h"
 #include "transport_factory.h"
 #include "sensor_plots.h"
+#include "odometry_map.h"
+#include "tcp_robot_server.h"
 
 #include <QDockWidget>
 #include <QLineEdit>
 #include <QMenu>
+#include <QMessageBox>
+#include <QTimer>
+#include <QApplication>
 #include <QPushButton>
 #include <QSettings>
 #include <QStandardPaths>
@@ -98,6 +105,40 @@ struct FleetRig {
         return toText(*create2().drive(window.drivePad()->speedLimit(), oi::kRadiusStraight));
     }
 };
+
+// A Roomba 500 on a TCP bridge: the transport cannot say what it is, and
+// the probe finds only "a Roomba 500 or a Create 2".
+struct Roomba500OnTcp {
+    sim::TcpRobotServer server{oi::profile(oi::ProfileId::Roomba500)};
+    Roomba500OnTcp() { QVERIFY(server.listen(QHostAddress::LocalHost, 0)); }
+    oilink::LinkSettings unnamed() const { return oilink::LinkSettings::tcp("127.0.0.1", server.serverPort()); }
+};
+
+// A robot of the window's list with its checkup, answering the question
+// as the test says and counting how often it was asked.
+struct CheckedRobot {
+    RobotSession session;
+    DoctorDetails details;
+    int asked = 0;
+    ConnectionCheckup checkup;
+    explicit CheckedRobot(std::optional<oi::ProfileId> answer)
+        : checkup(session, details, [this, answer](const QString &) {
+              ++asked;
+              return answer;
+          })
+    {
+        session.setName("Rosa");
+    }
+};
+
+// Safe mode, then the right wheel forward and the left back: a turn clockwise.
+void turnClockwise(RobotSession &session)
+{
+    const oi::CommandEncoder encoder(session.robotProfile());
+    const auto bytes = [](const oi::Bytes &b) { return QByteArray(reinterpret_cast<const char *>(b.data()), qsizetype(b.size())); };
+    session.send(bytes(*encoder.safe()));
+    session.send(bytes(*encoder.driveDirect(100, -100)));
+}
 
 } // namespace
 
@@ -285,6 +326,93 @@ private slots:
         // Not kept: the command line chose them for this run.
         window.close();
         QCOMPARE(loadSavedRobots(*std::make_unique<QSettings>()).size(), 0);
+    }
+
+    // Until someone says which robot it is, its odometry integrates nothing
+    // and the map says why; named, it is read as a Roomba 500.
+    void anUnnamedRoomba500IsNotIdentified()
+    {
+        Roomba500OnTcp robot;
+        CheckedRobot unanswered(std::nullopt);
+        OdometryMap map;
+        map.setOdometry(&unanswered.session.odometry());
+        unanswered.session.connectTo(robot.unnamed());
+        QTRY_COMPARE(unanswered.asked, 1);
+        QTRY_VERIFY(unanswered.session.isLive());
+        QVERIFY(!unanswered.session.isIdentified());
+        QVERIFY(!unanswered.session.odometry().isIdentified());
+        turnClockwise(unanswered.session);
+        QTRY_VERIFY(unanswered.session.latest().raw(43) != 0);
+        QCOMPARE(unanswered.session.odometry().trail().size(), 1);
+        QVERIFY(map.poseText().contains("not yet identified"));
+        QVERIFY(map.spokenPose().contains("not yet identified"));
+
+        unanswered.session.identifyAs(oi::ProfileId::Roomba500);
+        QTRY_COMPARE(unanswered.session.robotProfile().id, oi::ProfileId::Roomba500);
+        QVERIFY(unanswered.session.isIdentified());
+        QVERIFY(unanswered.session.odometry().isIdentified());
+        QVERIFY(map.poseText().startsWith("x "));
+        QCOMPARE(unanswered.asked, 1);
+    }
+
+    // Asked once, kept for the bridge: a new session (as after a restart,
+    // reading the same settings) is not asked, and reads the encoders the
+    // Roomba 500's way, so right-forward, left-back turns clockwise.
+    void aRoomba500IsAskedAboutOnceAndRemembered()
+    {
+        Roomba500OnTcp robot;
+        {
+            CheckedRobot first(oi::ProfileId::Roomba500);
+            first.session.connectTo(robot.unnamed());
+            QTRY_COMPARE(first.session.robotProfile().id, oi::ProfileId::Roomba500);
+            QCOMPARE(first.asked, 1);
+            QCOMPARE(first.session.settings().profile, oi::ProfileId::Roomba500);
+            QTRY_VERIFY(first.session.isLive());
+        }
+        CheckedRobot again(oi::ProfileId::Create2);
+        again.session.connectTo(robot.unnamed());
+        QTRY_COMPARE(again.session.robotProfile().id, oi::ProfileId::Roomba500);
+        QTRY_VERIFY(again.session.isLive());
+        QVERIFY(again.session.isIdentified());
+        QCOMPARE(again.asked, 0);
+        turnClockwise(again.session);
+        // Counter-clockwise is positive: clockwise goes below zero.
+        QTRY_VERIFY_WITH_TIMEOUT(again.session.odometry().pose().thetaRad < -0.3, 10000);
+    }
+
+    // The window asks with a dialog that says what the two robots are and
+    // what the choice decides; the answer is the saved robot's profile.
+    void theWindowAsksWhichRobotItIs()
+    {
+        Roomba500OnTcp robot;
+        QSettings settings;
+        saveRobots(settings, {SavedRobot{"Rosa", {}, robot.unnamed(), true}});
+        MainWindow window;
+        window.show();
+        QString asked, cardWhileAsked;
+        QTimer answer;
+        answer.setInterval(20);
+        connect(&answer, &QTimer::timeout, &window, [&] {
+            auto *box = qobject_cast<QMessageBox *>(QApplication::activeModalWidget());
+            if (!box)
+                return;
+            asked = box->text();
+            cardWhileAsked = window.robotList()->card(0)->values().profile;
+            for (QAbstractButton *button : box->buttons())
+                if (button->text() == QLatin1String("Roomba 500"))
+                    button->click();
+        });
+        answer.start();
+        window.start();
+        QTRY_VERIFY_WITH_TIMEOUT(!asked.isEmpty(), 10000);
+        QVERIFY2(asked.contains("Rosa on 127.0.0.1:") && asked.contains("Create 2") && asked.contains("wheel counts"),
+                 qPrintable(asked));
+        QVERIFY2(cardWhileAsked.contains("not yet identified"), qPrintable(cardWhileAsked));
+        RobotSession *rosa = window.fleet().robots().first();
+        QTRY_COMPARE(rosa->robotProfile().id, oi::ProfileId::Roomba500);
+        QVERIFY(rosa->isIdentified());
+        QCOMPARE(window.fleet().saved().first().link.profile, oi::ProfileId::Roomba500);
+        QTRY_COMPARE(window.robotList()->card(0)->values().profile, QString("Roomba 500"));
     }
 };
 

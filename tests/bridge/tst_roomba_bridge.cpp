@@ -5,6 +5,8 @@
 
 #include "bridge_rig.h"
 
+#include "tcp_robot_server.h"
+
 #include <QProcess>
 #include <QTemporaryDir>
 
@@ -71,6 +73,54 @@ private slots:
         const QString err = QString::fromUtf8(p.readAllStandardError());
         QCOMPARE(p.exitCode(), 2);
         QVERIFY2(err.contains(message), qPrintable(err));
+    }
+
+    // On a TCP bridge the transport cannot say which robot it is. A Roomba
+    // 500 (or a Create 2) needs the profile set; a Create does not.
+    void aRoombaOrCreate2NeedsItsProfileSet_data()
+    {
+        QTest::addColumn<oi::ProfileId>("robot");
+        QTest::addColumn<QString>("profile"); // the config's setting; empty: none
+        QTest::addColumn<bool>("starts");
+        QTest::newRow("roomba500, no profile") << oi::ProfileId::Roomba500 << QString() << false;
+        QTest::newRow("create2, no profile") << oi::ProfileId::Create2 << QString() << false;
+        QTest::newRow("roomba500 named") << oi::ProfileId::Roomba500 << QStringLiteral("roomba500") << true;
+        QTest::newRow("create1, no profile") << oi::ProfileId::Create1 << QString() << true;
+    }
+    void aRoombaOrCreate2NeedsItsProfileSet()
+    {
+        QFETCH(oi::ProfileId, robot);
+        QFETCH(QString, profile);
+        QFETCH(bool, starts);
+        sim::TcpRobotServer server(oi::profile(robot));
+        QVERIFY(server.listen(QHostAddress::LocalHost, 0));
+        MosquittoBroker broker;
+        QVERIFY2(broker.start(), qPrintable(broker.error()));
+        ConsoleClient watcher(QStringLiteral("watcher"), addressOf(broker));
+        QByteArray config = "name = r9\nbroker = " + broker.url().toUtf8() + "\ntcp = 127.0.0.1:"
+                            + QByteArray::number(server.serverPort()) + "\n";
+        if (!profile.isEmpty())
+            config += "profile = " + profile.toUtf8() + "\n";
+        QProcess bridge;
+        start(bridge, {QStringLiteral("--config"), writeConfig(QStringLiteral("r9.conf"), config)});
+        if (starts) {
+            QTRY_COMPARE_WITH_TIMEOUT(watcher.lastState(QStringLiteral("r9")).value(QLatin1String("link")).toString(),
+                                      QStringLiteral("streaming"), 10000);
+            QCOMPARE(watcher.lastState(QStringLiteral("r9")).value(QLatin1String("profile")).toString(),
+                     QString::fromUtf8(oi::profile(robot).key.data(), qsizetype(oi::profile(robot).key.size())));
+            bridge.terminate();
+            QTRY_COMPARE_WITH_TIMEOUT(bridge.state(), QProcess::NotRunning, 10000);
+            return;
+        }
+        // The robot's server runs in this event loop: wait in it.
+        QTRY_COMPARE_WITH_TIMEOUT(bridge.state(), QProcess::NotRunning, 10000);
+        QCOMPARE(bridge.exitStatus(), QProcess::NormalExit);
+        QCOMPARE(bridge.exitCode(), 2);
+        const QString err = QString::fromUtf8(bridge.readAllStandardError());
+        QVERIFY2(err.contains(QLatin1String("answers as a Roomba 500 or a Create 2"))
+                     && err.contains(QLatin1String("profile = roomba500 or profile = create2")),
+                 qPrintable(err));
+        QVERIFY(watcher.lastState(QStringLiteral("r9")).value(QLatin1String("link")).toString() != QLatin1String("streaming"));
     }
 
     void killedBridgeShowsOffline()

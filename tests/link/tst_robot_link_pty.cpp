@@ -5,6 +5,8 @@
 #include "link_test_support.h"
 #include "sim_process.h"
 
+#include "profile_probe.h"
+#include "pty_robot_server.h"
 #include "robot_link_thread.h"
 
 #include <QDeadlineTimer>
@@ -186,6 +188,43 @@ private slots:
         QCOMPARE(r.started.at(0).at(2).value<QList<int>>(), packets);
         QTRY_VERIFY_WITH_TIMEOUT(r.snapshots.size() >= 5, kTimeoutMs);
         QCOMPARE(r.errors.size(), 0);
+    }
+
+    // The probe finds each robot at each baud it tries, the robot having
+    // been set to that baud (Baud, 129) beforehand. The Roomba 500 and the
+    // Create 2 are found as their family, Create 2 assumed and said so; the
+    // Create is told apart.
+    void findsEachRobotAtEachBaud_data()
+    {
+        QTest::addColumn<oi::ProfileId>("robot");
+        QTest::addColumn<int>("baud");
+        for (const oi::ProfileId robot : {oi::ProfileId::Roomba500, oi::ProfileId::Create2, oi::ProfileId::Create1})
+            for (const int baud : oilink::ProfileProbe::defaultBauds())
+                QTest::addRow("%s at %d", oi::profile(robot).key.data(), baud) << robot << baud;
+    }
+    void findsEachRobotAtEachBaud()
+    {
+        QFETCH(oi::ProfileId, robot);
+        QFETCH(int, baud);
+        sim::PtyRobotServer server(oi::profile(robot));
+        QString error;
+        QVERIFY2(server.open(&error), qPrintable(error));
+        server.robot().write(QByteArray("\x80\x81", 2) + char(oi::baudCodeFor(baud))); // Start, Baud
+        QTRY_COMPARE(server.robot().robot().baud(), baud);
+        RobotLinkThread link;
+        Recorder r(link);
+        QSignalSpy assumed(&link, &RobotLinkThread::profileAssumed);
+        link.open(LinkSettings::serial(server.slavePath()));
+        QTRY_COMPARE_WITH_TIMEOUT(r.started.size(), 1, kTimeoutMs);
+        const bool family = robot != oi::ProfileId::Create1;
+        const oi::ProfileId found = family ? oi::ProfileId::Create2 : oi::ProfileId::Create1;
+        QCOMPARE(r.started.at(0).at(0).value<oi::ProfileId>(), found);
+        QCOMPARE(r.started.at(0).at(1).toInt(), baud);
+        QCOMPARE(assumed.size(), family ? 1 : 0);
+        if (family)
+            QCOMPARE(assumed.at(0).at(0).value<oi::ProfileId>(), oi::ProfileId::Create2);
+        QTRY_VERIFY_WITH_TIMEOUT(r.snapshots.size() >= 3, kTimeoutMs);
+        QCOMPARE(r.snapshots.last().at(0).value<oi::SensorSnapshot>().robotProfile().id, found);
     }
 
     // ERRATA 2 end to end. The robot puts a stray 19 before 0.5 % of its

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // RobotLink against the in-process virtual robot: snapshots, the watchdog,
 // statistics, finding the profile, and the link on its worker thread.
+#include "profile_probe.h"
 #include "real_time_robot.h"
 #include "robot_link.h"
 #include "robot_link_thread.h"
@@ -106,37 +107,38 @@ private slots:
         QCOMPARE(errors.size(), 0);
     }
 
-    // The probe, against each virtual robot.
-    void findsTheProfile_data()
+    // The in-process virtual robot tells the link what it is: in Auto it is
+    // neither probed nor assumed (a virtual Roomba 500 is never read as a
+    // Create 2). The probe itself is tested over a pty (tst_robot_link_pty).
+    void theVirtualRobotSaysWhatItIs_data()
     {
         QTest::addColumn<oi::ProfileId>("robot");
-        QTest::addColumn<oi::ProfileId>("found");
         QTest::addColumn<QList<int>>("packets");
-        QTest::newRow("create2") << oi::ProfileId::Create2 << oi::ProfileId::Create2 << QList<int>{100};
-        // The Roomba 500 answers every question as a Create 2 does; the probe
-        // finds the family, whose stream is the same.
-        QTest::newRow("roomba500") << oi::ProfileId::Roomba500 << oi::ProfileId::Create2 << QList<int>{100};
-        QTest::newRow("create1") << oi::ProfileId::Create1 << oi::ProfileId::Create1 << QList<int>{6};
+        QTest::newRow("create2") << oi::ProfileId::Create2 << QList<int>{100};
+        QTest::newRow("roomba500") << oi::ProfileId::Roomba500 << QList<int>{100};
+        QTest::newRow("create1") << oi::ProfileId::Create1 << QList<int>{6};
     }
-    void findsTheProfile()
+    void theVirtualRobotSaysWhatItIs()
     {
         QFETCH(oi::ProfileId, robot);
-        QFETCH(oi::ProfileId, found);
         QFETCH(QList<int>, packets);
         RobotLink link;
         link.setTransportFactory(transports::transportFactory());
         QSignalSpy started(&link, &RobotLink::streamStarted);
+        QSignalSpy assumed(&link, &RobotLink::profileAssumed);
         QSignalSpy snapshots(&link, &RobotLink::snapshot);
         QSignalSpy sent(&link, &RobotLink::rawBytesSent);
         link.open(LinkSettings::virtualRobotOf(robot, std::nullopt));
-        QCOMPARE(link.robotProfile(), nullptr);
         QTRY_COMPARE_WITH_TIMEOUT(started.size(), 1, kTimeoutMs);
-        QCOMPARE(started.at(0).at(0).value<oi::ProfileId>(), found);
-        QCOMPARE(started.at(0).at(1).toInt(), oi::profile(found).defaultBaud);
+        QCOMPARE(started.at(0).at(0).value<oi::ProfileId>(), robot);
+        QCOMPARE(started.at(0).at(1).toInt(), oi::profile(robot).defaultBaud);
         QCOMPARE(started.at(0).at(2).value<QList<int>>(), packets);
-        QCOMPARE(sent.at(0).at(0).toByteArray(), bytes({128, 150, 0}));
+        QCOMPARE(assumed.size(), 0);
+        QVERIFY(!link.isProfileAssumed());
+        for (const QList<QVariant> &write : sent)
+            QVERIFY2(write.at(0).toByteArray() != oilink::ProfileProbe::modeQuestion(), "probed");
         QTRY_VERIFY_WITH_TIMEOUT(snapshots.size() >= 5, kTimeoutMs);
-        QCOMPARE(snapshots.last().at(0).value<oi::SensorSnapshot>().robotProfile().id, found);
+        QCOMPARE(snapshots.last().at(0).value<oi::SensorSnapshot>().robotProfile().id, robot);
     }
 
     void closeLeavesTheRobotStoppedInPassive()

@@ -173,7 +173,8 @@ private slots:
         Sim sim({});
         QVERIFY(!sim.path().isEmpty());
         const auto send = [&](const QStringList &command) {
-            return run(QStringList{QStringLiteral("send"), QStringLiteral("--port"), sim.path()} + command);
+            return run(QStringList{QStringLiteral("send"), QStringLiteral("--port"), sim.path(), QStringLiteral("--profile"),
+                                   QStringLiteral("create2")} + command);
         };
         Outcome o = send({QStringLiteral("safe")});
         QVERIFY2(o.status == 0, qPrintable(o.err));
@@ -377,6 +378,66 @@ private slots:
                                QStringLiteral("100"), QStringLiteral("straight")});
         QCOMPARE(o.status, 0);
         QVERIFY2(o.err.contains(QStringLiteral("warning: the robot is on its dock: Safe mode ignores drive")), qPrintable(o.err));
+    }
+
+    // A Roomba 500 answers as a Create 2 does. Without --profile roomba-ctl
+    // says what it assumed and how to name it, and gives no encoder counts,
+    // which would read mirrored; with it, they read the Roomba 500's way.
+    void aRoomba500WithoutAProfile()
+    {
+        Sim sim({QStringLiteral("--profile"), QStringLiteral("roomba500")});
+        QVERIFY(!sim.path().isEmpty());
+        const auto send = [&](const QStringList &command) {
+            return run(QStringList{QStringLiteral("send"), QStringLiteral("--port"), sim.path()} + command);
+        };
+        const QString advice = QStringLiteral("--profile roomba500 or --profile create2");
+        Outcome o = send({QStringLiteral("drive-direct"), QStringLiteral("100"), QStringLiteral("-100")});
+        QVERIFY2(o.status == 0, qPrintable(o.err));
+        QVERIFY2(o.err.contains(QStringLiteral("assumed create2")) && o.err.contains(advice), qPrintable(o.err));
+
+        for (const QStringList &query : {QStringList{QStringLiteral("query-list"), QStringLiteral("2"), QStringLiteral("43"), QStringLiteral("44")},
+                                         QStringList{QStringLiteral("sensors"), QStringLiteral("101")},
+                                         QStringList{QStringLiteral("sensors"), QStringLiteral("100")}}) {
+            o = send(query);
+            QCOMPARE(o.status, 1);
+            QVERIFY(o.lines.isEmpty());
+            QVERIFY2(o.err.contains(QStringLiteral("not asked, rather than printed possibly mirrored")) && o.err.contains(advice),
+                     qPrintable(o.err));
+        }
+        // A group without the encoders is answered.
+        o = send({QStringLiteral("sensors"), QStringLiteral("6")});
+        QVERIFY2(o.status == 0, qPrintable(o.err));
+        QCOMPARE(o.lines.size(), 1);
+
+        // Named: the right wheel went forward, the left back (unsigned, so below 0 wraps).
+        int right = 0, left = 0;
+        for (int i = 0; i < 10 && right <= 0; ++i) {
+            o = send({QStringLiteral("--profile"), QStringLiteral("roomba500"), QStringLiteral("query-list"),
+                      QStringLiteral("2"), QStringLiteral("43"), QStringLiteral("44")});
+            QVERIFY2(o.status == 0, qPrintable(o.err));
+            QCOMPARE(o.err, QString());
+            const QJsonObject packets = json(o.lines.value(0))[QStringLiteral("packets")].toObject();
+            right = packets[QStringLiteral("right_encoder_counts")].toInt();
+            left = packets[QStringLiteral("left_encoder_counts")].toInt();
+        }
+        QVERIFY2(right > 0 && right < 32768, qPrintable(QString::number(right)));
+        QVERIFY2(left > 32768, qPrintable(QString::number(left)));
+        send({QStringLiteral("--profile"), QStringLiteral("roomba500"), QStringLiteral("drive-direct"), QStringLiteral("0"),
+              QStringLiteral("0")});
+
+        // The stream: said once, and the encoder counts left out.
+        o = run({QStringLiteral("sensors"), QStringLiteral("--port"), sim.path(), QStringLiteral("--count"), QStringLiteral("3")});
+        QVERIFY2(o.status == 0, qPrintable(o.err));
+        QVERIFY2(o.err.contains(QStringLiteral("assumed create2")) && o.err.contains(advice), qPrintable(o.err));
+        QCOMPARE(o.lines.size(), 4);
+        const QJsonObject frame = json(o.lines[0])[QStringLiteral("packets")].toObject();
+        QVERIFY(frame.contains(QStringLiteral("oi_mode")));
+        QVERIFY(!frame.contains(QStringLiteral("left_encoder_counts")));
+        QVERIFY(!frame.contains(QStringLiteral("right_encoder_counts")));
+        QVERIFY(json(o.lines[3])[QStringLiteral("statistics")].toObject()[QStringLiteral("profileAssumed")].toBool());
+
+        o = run({QStringLiteral("doctor"), QStringLiteral("--port"), sim.path()});
+        QVERIFY2(o.err.contains(advice), qPrintable(o.err));
     }
 
     void doctorWakesASleepingRobot()

@@ -341,8 +341,16 @@ QPointF OdometryMap::widgetPointFor(QPointF mm) const
     return QPointF(c.x() + (mm.x() - m_centreMm.x()) * m_scale, c.y() - (mm.y() - m_centreMm.y()) * m_scale);
 }
 
+QString OdometryMap::notIdentifiedText() const
+{
+    return tr("Robot not yet identified: a Roomba 500 or a Create 2? Until it is named, its wheel counts "
+              "may read mirrored, so no path is drawn.");
+}
+
 QString OdometryMap::poseText() const
 {
+    if (m_odometry && !m_odometry->isIdentified())
+        return notIdentifiedText();
     const oi::Pose &p = pose();
     QString text = tr("x %1 mm   y %2 mm   θ %3°")
                        .arg(p.xMm, 0, 'f', 0)
@@ -355,6 +363,8 @@ QString OdometryMap::poseText() const
 
 QString OdometryMap::spokenPose() const
 {
+    if (m_odometry && !m_odometry->isIdentified())
+        return notIdentifiedText();
     const oi::Pose &p = pose();
     QString text = tr("Robot at x %1 mm, y %2 mm, heading %3 degrees")
                        .arg(p.xMm, 0, 'f', 0)
@@ -402,8 +412,9 @@ void OdometryMap::paintEvent(QPaintEvent *)
     if (m_world && m_editing)
         paintSelection(painter);
 
+    const bool identified = !m_odometry || m_odometry->isIdentified();
     const QList<QPointF> trail = this->trail();
-    if (trail.size() > 1) {
+    if (identified && trail.size() > 1) {
         QPolygonF line;
         line.reserve(trail.size());
         for (const QPointF &p : trail)
@@ -412,7 +423,8 @@ void OdometryMap::paintEvent(QPaintEvent *)
         painter.drawPolyline(line);
     }
     paintTruePoses(painter);
-    paintRobot(painter, pose(), palette().color(QPalette::Highlight), false);
+    if (identified)
+        paintRobot(painter, pose(), palette().color(QPalette::Highlight), false);
     paintScaleBar(painter, area);
 
     // Legend, top right.

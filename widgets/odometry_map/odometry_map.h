@@ -110,7 +110,9 @@ public:
     QPointF widgetPointFor(QPointF mm) const;
     QRect mapRect() const;
 
-    // "x 120 mm  y -35 mm  θ 12.5°", and the distance from the true pose if known.
+    // "x 120 mm  y -35 mm  θ 12.5°", and the distance from the true pose if
+    // known; while the robot is not identified (RobotOdometry::isIdentified),
+    // says so instead, and the map draws no path.
     QString poseText() const;
     // The pose in words for a screen reader; the map's accessible description.
     QString spokenPose() const;
@@ -148,6 +150,7 @@ protected:
 
 private:
     void retranslateUi();
+    QString notIdentifiedText() const;
     void updateGeometryTips();
     void zoomBy(double factor, QPointF anchorWidget);
     void applyGeometry();

@@ -10,6 +10,7 @@
 #include "display_palette.h"
 #include "dock_layout.h"
 #include "drive_pad.h"
+#include "firmware_reading.h"
 #include "fleet_console.h"
 #include "fleet_view.h"
 #include "gamepad_input.h"
@@ -96,6 +97,7 @@ MainWindow::MainWindow(QWidget *parent)
     m_status = new RobotStatusBar(statusBar());
     m_recording = new RecordingActions(m_fleet, this);
     connect(m_recording, &RecordingActions::message, this, [this](const QString &m) { statusBar()->showMessage(m, 5000); });
+    m_firmwareReading = new FirmwareReading(m_fleet, this);
     m_roomActions = new RoomActions(m_room, this);
     connect(m_roomActions, &RoomActions::message, this, [this](const QString &m) { statusBar()->showMessage(m, 5000); });
     buildDocks();
@@ -367,10 +369,7 @@ void MainWindow::showSelected(RobotSession *robot)
         connect(robot, &RobotSession::stateChanged, this, &MainWindow::showState),
         connect(robot, &RobotSession::statisticsChanged, m_status, &RobotStatusBar::showStatistics),
         connect(robot, &RobotSession::errorOccurred, m_connectionBar, &ConnectionBar::showError),
-        connect(robot, &RobotSession::firmwareChanged, this, [this](const QString &release) {
-            m_modePanel->setFirmware(release);
-            m_status->showFirmware(release);
-        }),
+        connect(robot, &RobotSession::firmwareChanged, this, [this, robot] { showFirmware(*robot); }),
         connect(robot, &RobotSession::recordingStatus, this, [this](const oilink::RecordingStatus &status) {
             m_status->showRecording(status);
             m_recording->showSelectedRobot();
@@ -407,7 +406,7 @@ void MainWindow::showSelected(RobotSession *robot)
     m_inspector->setConnectedAt(robot->connectedAtMs());
     for (const RecentBytes::Chunk &chunk : robot->recentBytes().chunks())
         chunk.sent ? m_inspector->appendTx(chunk.bytes, chunk.msecs) : m_inspector->appendRx(chunk.bytes, chunk.msecs);
-    m_modePanel->setFirmware(robot->firmwareRelease());
+    showFirmware(*robot);
     m_drivePad->setPassive(teleop->isPassive());
     m_drivePad->resetToCentre();
     m_keyboard->releaseAll();
@@ -438,6 +437,14 @@ void MainWindow::showSelected(RobotSession *robot)
     m_liveFlagOutdated = true;
     refreshRobotCards();
     refreshDisplay();
+}
+
+void MainWindow::showFirmware(const RobotSession &robot)
+{
+    m_modePanel->setFirmware(robot.firmwareRelease());
+    m_status->showFirmware(robot.firmwareRelease());
+    m_gauges->setCorrections(robot.corrections());
+    m_plots->setCorrections(robot.corrections());
 }
 
 sim::RobotId MainWindow::roomRobot() const
@@ -578,6 +585,10 @@ void MainWindow::buildMenus()
     m_fileMenu->addSeparator();
     m_fileMenu->addAction(m_quitAction);
 
+    m_robotMenu = menuBar()->addMenu(QString());
+    m_robotMenu->setObjectName("robotMenu");
+    m_robotMenu->addAction(m_firmwareReading->action());
+
     m_viewMenu = menuBar()->addMenu(QString());
     for (QDockWidget *dock : m_layout->docks())
         m_viewMenu->addAction(dock->toggleViewAction());
@@ -617,6 +628,8 @@ void MainWindow::retranslateUi()
     m_stopAll->setAccessibleName(tr("Stop all robots"));
     m_robotBar->setWindowTitle(tr("Robots"));
     m_quitAction->setText(tr("&Quit"));
+    m_robotMenu->setTitle(tr("&Robot"));
+    m_firmwareReading->retranslate();
     m_viewMenu->setTitle(tr("&View"));
     m_recordingBar->setWindowTitle(tr("Recording and replay"));
     m_languageMenu->setTitle(tr("&Language"));

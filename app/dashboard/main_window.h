@@ -24,6 +24,7 @@ class QSettings;
 class ConnectionBar;
 class DockLayout;
 class DrivePad;
+class FirmwareReading;
 class FleetConsole;
 class FleetView;
 class GamepadInput;
@@ -77,6 +78,8 @@ public:
     // robot's place in it (-1 when it is not a virtual robot).
     const std::shared_ptr<sim::Room> &room() const { return m_room; }
     RoomActions *roomActions() const { return m_roomActions; }
+    // Robot → Read firmware version…
+    FirmwareReading *firmwareReading() const { return m_firmwareReading; }
     sim::RobotId roomRobot() const;
     const SensorHistory &history() { return session().history(); }
     // Samples kept per channel for every robot; clears the histories. For the
@@ -155,6 +158,8 @@ private:
     std::optional<oi::Pose> truePose(const RobotSession *robot) const;
     void showRoom();
     void showSelected(RobotSession *robot);
+    // The firmware and the corrections the views show for the selected robot.
+    void showFirmware(const RobotSession &robot);
     void addRobot(int kind);
     void applyProfile(oi::ProfileId profile);
     void showState(oilink::LinkState state);
@@ -206,10 +211,12 @@ private:
     KeyboardDriving *m_keyboard = nullptr;
     RobotStatusBar *m_status = nullptr;
     RecordingActions *m_recording = nullptr;
+    FirmwareReading *m_firmwareReading = nullptr;
     QHash<const RobotSession *, QPointer<DoctorDetails>> m_doctorDetails; // what each robot's last connection check found
     RoomActions *m_roomActions = nullptr; // the room as a document: files and edits
 
     QMenu *m_fileMenu = nullptr;
+    QMenu *m_robotMenu = nullptr;
     QMenu *m_viewMenu = nullptr;
     QMenu *m_languageMenu = nullptr;
     QMenu *m_helpMenu = nullptr;

@@ -70,7 +70,7 @@ QString RobotFirmware::correctionsText() const
         return tr("This firmware reports distance, angle and radius correctly: nothing needs correcting.");
     QStringList text;
     if (c.angleDivisor)
-        text << tr("It reports the angle (packet 20) in units of %1°: the angle is divided by %1 wherever it "
+        text << tr("It reports the angle (packet 20) multiplied by %1: the angle is divided by %1 wherever it "
                    "is shown, plotted, exported or used for the map.")
                     .arg(*c.angleDivisor);
     if (c.distanceUnreliable || c.radiusUnreliable)

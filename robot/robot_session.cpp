@@ -107,8 +107,8 @@ QString RobotSession::readFirmwareVersion()
     if (m_settings.transport == oilink::TransportKind::Replay)
         return tr("A recording cannot be reset: connect to the robot itself to read its firmware version.");
     if (m_settings.transport == oilink::TransportKind::Network)
-        return tr("A robot on the broker is reset by its bridge: read the firmware version on the bridge's "
-                  "computer (roomba-ctl).");
+        return tr("A robot on the broker is reset only by its bridge: read its firmware version where the "
+                  "bridge runs.");
     const oi::EncodeResult reset = oi::CommandEncoder(*m_profile).reset();
     m_firmware.expectBanner();
     send(QByteArray(reinterpret_cast<const char *>(reset->data()), qsizetype(reset->size())));

@@ -18,19 +18,14 @@ std::optional<oi::FirmwareInfo> firmwareOfRelease(const QString &release)
     return oi::parseFirmwareBanner((release + QLatin1Char('\n')).toStdString());
 }
 
-// The banner's text for people: printable ASCII and line breaks, no stream
-// bytes or blank lines.
-QString printableLines(const QByteArray &bytes)
+// A line of the banner for people: printable ASCII only.
+QString printable(const QByteArray &line)
 {
     QString text;
-    for (const char c : bytes)
-        if (c == '\n' || (c >= ' ' && c <= '~'))
+    for (const char c : line)
+        if (c >= ' ' && c <= '~')
             text += QLatin1Char(c);
-    QStringList lines = text.split(QLatin1Char('\n'));
-    for (QString &line : lines)
-        line = line.trimmed();
-    lines.removeAll(QString());
-    return lines.join(QLatin1Char('\n'));
+    return text.trimmed();
 }
 } // namespace
 
@@ -123,10 +118,12 @@ void RobotFirmware::watchReceived(const QByteArray &bytes)
         return;
     m_listening = false;
     m_deadline.stop();
-    // Up to the end of the line that names the version.
+    // The line that names the version; the lines before it may hold the end
+    // of a stream frame.
     const qsizetype versionAt = m_received.indexOf(QByteArray::fromStdString(info->release));
+    const qsizetype lineStart = m_received.lastIndexOf('\n', versionAt) + 1;
     const qsizetype lineEnd = m_received.indexOf('\n', versionAt);
-    m_banner = printableLines(lineEnd < 0 ? m_received : m_received.left(lineEnd));
+    m_banner = printable(m_received.mid(lineStart, lineEnd < 0 ? -1 : lineEnd - lineStart));
     QSettings().setValue(settingsKey(), QString::fromStdString(info->release));
     setFirmware(info);
     emit read(release());

@@ -29,8 +29,8 @@ public:
     std::optional<oi::FirmwareVersion> version() const;
     // None while the firmware is unknown.
     const oi::FirmwareCorrections &corrections() const;
-    // The banner's lines up to the version, printable text only; empty when
-    // the firmware came from the settings.
+    // The banner's line that names the version, printable text only; empty
+    // when the firmware came from the settings.
     QString banner() const { return m_banner; }
     // What the corrections mean, in a sentence or two for the user.
     QString correctionsText() const;

@@ -890,14 +890,12 @@ Systems.
 
 %4
 
-What it printed:
-%5</source>
+It printed: %5</source>
         <translation>%1 läuft mit %2 (Version %3).
 
 %4
 
-Was er ausgegeben hat:
-%5</translation>
+Er hat ausgegeben: %5</translation>
     </message>
     <message>
         <source>Firmware version</source>

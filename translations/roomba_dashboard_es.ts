@@ -889,14 +889,12 @@ sistema.
 
 %4
 
-What it printed:
-%5</source>
+It printed: %5</source>
         <translation>%1 usa %2 (versión %3).
 
 %4
 
-Lo que imprimió:
-%5</translation>
+Imprimió: %5</translation>
     </message>
     <message>
         <source>Firmware version</source>

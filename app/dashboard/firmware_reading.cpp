@@ -49,7 +49,7 @@ void FirmwareReading::read()
                 return;
             const RobotFirmware &firmware = reading->firmware();
             showAnswer(QMessageBox::Information,
-                       tr("%1 runs %2 (version %3).\n\n%4\n\nWhat it printed:\n%5")
+                       tr("%1 runs %2 (version %3).\n\n%4\n\nIt printed: %5")
                            .arg(reading->name(), firmware.release(),
                                 QString::fromStdString(firmware.version()->toString()), firmware.correctionsText(),
                                 firmware.banner()));

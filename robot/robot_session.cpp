@@ -1,13 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "robot_session.h"
 
-#include "command_catalog.h"
+#include "command_encoder.h"
 
 #include <QDateTime>
-
-namespace {
-constexpr qsizetype kMaxBannerBytes = 8192;
-}
 
 RobotSession::RobotSession(QObject *parent) : QObject(parent)
 {
@@ -35,6 +31,10 @@ RobotSession::RobotSession(QObject *parent) : QObject(parent)
         emit recordingStatus(s);
     });
     connect(&m_link, &oilink::RobotLinkThread::replayStatus, this, &RobotSession::onReplayStatus);
+    connect(&m_firmware, &RobotFirmware::changed, this, [this](const QString &release) {
+        m_odometry.setCorrections(m_firmware.corrections());
+        emit firmwareChanged(release);
+    });
 }
 
 RobotSession::~RobotSession() { closeAndWait(); }
@@ -65,6 +65,8 @@ void RobotSession::connectTo(const oilink::LinkSettings &settings)
     if (m_connected)
         m_link.close();
     m_settings = settings;
+    // Another robot's corrections would be wrong here; this one's come back.
+    m_firmware.connectingTo(settings);
     m_connected = true;
     m_connectedAtMs = QDateTime::currentMSecsSinceEpoch();
     m_replay = {};
@@ -98,6 +100,21 @@ void RobotSession::closeAndWait()
     if (m_link.isRunning())
         m_link.closeAndWait();
     m_connected = false;
+}
+
+QString RobotSession::readFirmwareVersion()
+{
+    if (!m_connected)
+        return tr("Connect to the robot first: its firmware version is read from the robot.");
+    if (m_settings.transport == oilink::TransportKind::Replay)
+        return tr("A recording cannot be reset: connect to the robot itself to read its firmware version.");
+    if (m_settings.transport == oilink::TransportKind::Network)
+        return tr("A robot on the broker is reset only by its bridge: read its firmware version where the "
+                  "bridge runs.");
+    const oi::EncodeResult reset = oi::CommandEncoder(*m_profile).reset();
+    m_firmware.expectBanner();
+    send(QByteArray(reinterpret_cast<const char *>(reset->data()), qsizetype(reset->size())));
+    return {};
 }
 
 bool RobotSession::send(const QByteArray &bytes)
@@ -167,14 +184,19 @@ void RobotSession::onSnapshot(const oi::SensorSnapshot &snapshot, double readSec
 {
     if (snapshot.robotProfile().id != m_profile->id)
         onStreamStarted(snapshot.robotProfile().id);
-    m_latest.merge(snapshot);
+    // The one place the firmware's corrections are applied to what is shown,
+    // plotted and exported. The odometry divides the raw angle itself, keeping
+    // the fractions of a degree.
+    oi::SensorSnapshot frame = snapshot;
+    m_firmware.corrections().correct(frame);
+    m_latest.merge(frame);
     ++m_snapshotCount;
     // Every frame once: distance and angle are increments since the last one.
-    m_history.append(readSeconds, snapshot);
+    m_history.append(readSeconds, frame);
     m_odometry.update(snapshot);
     // Safe dropping to Passive by itself (a cliff, a wheel drop) ends the motion.
     m_teleop.checkMode();
-    emit frameReceived(readSeconds, snapshot);
+    emit frameReceived(readSeconds, frame);
 }
 
 void RobotSession::onReplayStatus(const oilink::ReplayStatus &status)
@@ -191,10 +213,7 @@ void RobotSession::onReplayStatus(const oilink::ReplayStatus &status)
 void RobotSession::onBytesSent(const QByteArray &bytes)
 {
     // A Reset makes the robot print its banner with the firmware version.
-    if (bytes.size() == 1 && static_cast<std::uint8_t>(bytes[0]) == oi::commandSpec(oi::Command::Reset).opcode) {
-        m_awaitingBanner = true;
-        m_bannerText.clear();
-    }
+    m_firmware.watchSent(bytes);
     const qint64 now = QDateTime::currentMSecsSinceEpoch();
     m_recentBytes.append(true, bytes, now);
     emit bytesSent(bytes, now);
@@ -202,18 +221,7 @@ void RobotSession::onBytesSent(const QByteArray &bytes)
 
 void RobotSession::onBytesReceived(const QByteArray &bytes)
 {
-    if (m_awaitingBanner) {
-        m_bannerText += bytes;
-        if (m_bannerText.size() > kMaxBannerBytes)
-            m_bannerText = m_bannerText.right(kMaxBannerBytes);
-        if (const auto info = oi::parseFirmwareBanner(std::string_view(m_bannerText.constData(), m_bannerText.size()))) {
-            m_awaitingBanner = false;
-            m_firmware = QString::fromStdString(info->release);
-            m_corrections = info->corrections;
-            m_odometry.setCorrections(m_corrections);
-            emit firmwareChanged(m_firmware);
-        }
-    }
+    m_firmware.watchReceived(bytes);
     const qint64 now = QDateTime::currentMSecsSinceEpoch();
     m_recentBytes.append(false, bytes, now);
     emit bytesReceived(bytes, now);

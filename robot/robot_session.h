@@ -3,6 +3,7 @@
 
 #include "firmware_banner.h"
 #include "recent_bytes.h"
+#include "robot_firmware.h"
 #include "robot_link_thread.h"
 #include "robot_odometry.h"
 #include "sensor_history.h"
@@ -70,14 +71,22 @@ public:
     // reads it with that profile, named in settings(), so a saved robot
     // keeps it. Connects again if the link read it as the other one.
     void identifyAs(oi::ProfileId profile);
+    // Values as the firmware meant them: corrected, like frameReceived() and the history.
     const oi::SensorSnapshot &latest() const { return m_latest; }
     // Counts snapshots, so a display timer can skip work when nothing changed.
     quint64 snapshotCount() const { return m_snapshotCount; }
     oilink::LinkState state() const { return m_state; }
     bool isLive() const { return m_state == oilink::LinkState::Streaming; }
     const oilink::LinkStats &statistics() const { return m_stats; }
-    QString firmwareRelease() const { return m_firmware; }
-    const oi::FirmwareCorrections &corrections() const { return m_corrections; }
+    QString firmwareRelease() const { return m_firmware.release(); }
+    // Applied to every frame before it is kept or handed on (ERRATA 16).
+    const oi::FirmwareCorrections &corrections() const { return m_firmware.corrections(); }
+    const RobotFirmware &firmware() const { return m_firmware; }
+    // Sends Reset (7): the robot stops, leaves its mode and reboots, and
+    // prints its banner; firmware() then reports read() or readFailed().
+    // Returns why it cannot (not connected, a recording, a robot on the
+    // broker), or an empty string.
+    QString readFirmwareVersion();
 
     // Every packet of every frame, on the link's clock (the recording's in a replay).
     const SensorHistory &history() const { return m_history; }
@@ -105,7 +114,7 @@ public:
 
 signals:
     void identityChanged();
-    // Every stream frame once, with the time the link read it.
+    // Every stream frame once, with the time the link read it, corrected.
     void frameReceived(double readSeconds, const oi::SensorSnapshot &frame);
     void stateChanged(oilink::LinkState state);
     void statisticsChanged(const oilink::LinkStats &stats);
@@ -151,12 +160,7 @@ private:
     oilink::LinkStats m_stats;
     oilink::RecordingStatus m_recording;
     oilink::ReplayStatus m_replay; // the last word from a replay
-    QString m_firmware;
-    oi::FirmwareCorrections m_corrections;
-    // After a Reset the robot prints a banner; collect it (bounded) until the
-    // version shows up.
-    bool m_awaitingBanner = false;
-    QByteArray m_bannerText;
+    RobotFirmware m_firmware;
     SensorHistory m_history;
     RecentBytes m_recentBytes;
     RobotOdometry m_odometry;

@@ -7,6 +7,7 @@
 #include "connection_request.h"
 #include "dock_layout.h"
 #include "drive_pad.h"
+#include "firmware_reading.h"
 #include "fleet_console.h"
 #include "gamepad_input.h"
 #include "gamepad_panel.h"
@@ -61,6 +62,7 @@ MainWindow::MainWindow(QWidget *parent) : QMainWindow(parent)
     m_status = new RobotStatusBar(statusBar());
     m_recording = new RecordingActions(m_fleet, this);
     m_roomActions = new RoomActions(m_room->room(), this);
+    m_firmwareReading = new FirmwareReading(m_fleet, this);
     connect(m_recording, &RecordingActions::message, this, &MainWindow::showMessage);
     connect(m_roomActions, &RoomActions::message, this, &MainWindow::showMessage);
     connect(m_broker, &BrokerActions::message, this, [this](const QString &m) { statusBar()->showMessage(m, 8000); });
@@ -303,6 +305,10 @@ void MainWindow::buildMenus()
     m_fileMenu->addSeparator();
     m_fileMenu->addAction(m_quitAction);
 
+    m_robotMenu = menuBar()->addMenu(QString());
+    m_robotMenu->setObjectName("robotMenu");
+    m_robotMenu->addAction(m_firmwareReading->action());
+
     m_viewMenu = menuBar()->addMenu(QString());
     for (QDockWidget *dock : m_layout->docks())
         m_viewMenu->addAction(dock->toggleViewAction());
@@ -327,6 +333,8 @@ void MainWindow::retranslateUi()
     m_roomActions->retranslate();
     m_broker->retranslate();
     m_quitAction->setText(tr("&Quit"));
+    m_robotMenu->setTitle(tr("&Robot"));
+    m_firmwareReading->retranslate();
     m_viewMenu->setTitle(tr("&View"));
     m_languages->retranslate();
     m_layout->retranslate();

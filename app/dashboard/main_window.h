@@ -19,6 +19,7 @@ class ByteInspector;
 class ConnectionBar;
 class DockLayout;
 class DrivePad;
+class FirmwareReading;
 class FleetConsole;
 class FleetView;
 class GamepadInput;
@@ -75,6 +76,8 @@ public:
     // robot's place in it (-1 when it is not a virtual robot).
     const std::shared_ptr<sim::Room> &room() const;
     RoomActions *roomActions() const { return m_roomActions; }
+    // Robot → Read firmware version…
+    FirmwareReading *firmwareReading() const { return m_firmwareReading; }
     sim::RobotId roomRobot() const;
     const SensorHistory &history() { return session().history(); }
     // Samples kept per channel for every robot; clears the histories. For the
@@ -159,6 +162,7 @@ private:
     RoomRobots *m_room = nullptr;
     RoomActions *m_roomActions = nullptr; // the room as a document: files and edits
     RecordingActions *m_recording = nullptr;
+    FirmwareReading *m_firmwareReading = nullptr;
     RobotBar *m_robotBar = nullptr;
     SelectedRobotView *m_view = nullptr;
     DockLayout *m_layout = nullptr;
@@ -185,6 +189,7 @@ private:
     ProjectorMode *m_projector = nullptr;
 
     QMenu *m_fileMenu = nullptr;
+    QMenu *m_robotMenu = nullptr;
     QMenu *m_viewMenu = nullptr;
     QMenu *m_helpMenu = nullptr;
     QAction *m_quitAction = nullptr;

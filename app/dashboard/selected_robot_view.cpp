@@ -75,10 +75,7 @@ void SelectedRobotView::show(RobotSession *robot)
         connect(robot, &RobotSession::stateChanged, this, &SelectedRobotView::showState),
         connect(robot, &RobotSession::statisticsChanged, v.status, &RobotStatusBar::showStatistics),
         connect(robot, &RobotSession::errorOccurred, v.connectionBar, &ConnectionBar::showError),
-        connect(robot, &RobotSession::firmwareChanged, this, [v](const QString &release) {
-            v.modePanel->setFirmware(release);
-            v.status->showFirmware(release);
-        }),
+        connect(robot, &RobotSession::firmwareChanged, this, [this, robot] { showFirmware(*robot); }),
         connect(robot, &RobotSession::recordingStatus, this, [v](const oilink::RecordingStatus &status) {
             v.status->showRecording(status);
             v.recording->showSelectedRobot();
@@ -115,7 +112,7 @@ void SelectedRobotView::show(RobotSession *robot)
     v.inspector->setConnectedAt(robot->connectedAtMs());
     for (const RecentBytes::Chunk &chunk : robot->recentBytes().chunks())
         chunk.sent ? v.inspector->appendTx(chunk.bytes, chunk.msecs) : v.inspector->appendRx(chunk.bytes, chunk.msecs);
-    v.modePanel->setFirmware(robot->firmwareRelease());
+    showFirmware(*robot);
     v.drivePad->setPassive(teleop->isPassive());
     v.script->setPassive(teleop->isPassive());
     v.drivePad->resetToCentre();
@@ -137,6 +134,14 @@ void SelectedRobotView::show(RobotSession *robot)
     forgetShown();
     v.robotBar->refresh();
     refresh();
+}
+
+void SelectedRobotView::showFirmware(const RobotSession &robot)
+{
+    m_views.modePanel->setFirmware(robot.firmwareRelease());
+    m_views.status->showFirmware(robot.firmwareRelease());
+    m_views.gauges->setCorrections(robot.corrections());
+    m_views.plots->setCorrections(robot.corrections());
 }
 
 void SelectedRobotView::applyProfile(oi::ProfileId id)

@@ -91,6 +91,8 @@ signals:
 
 private:
     RobotSession &session() const;
+    // The firmware and the corrections the views show for the selected robot.
+    void showFirmware(const RobotSession &robot);
 
     RobotFleet &m_fleet;
     RoomRobots &m_room;

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "recording_file.h"
 
+#include "firmware_banner.h"
 #include "stream_parser.h"
 
 #include <QCoreApplication>
@@ -351,7 +352,13 @@ void Recording::writeCsv(QTextStream &out) const
     for (const oi::PacketInfo *info : columns)
         out << ',' << fromStd(info->key);
     out << '\n';
-    forEachSnapshot([&](qint64 timeUs, const oi::SensorSnapshot &s) {
+    // A Reset recorded with the stream names the firmware; what it reports
+    // wrongly is corrected in every frame, as the dashboard shows it (ERRATA 16).
+    const auto firmware = oi::parseFirmwareBanner(std::string_view(m_received.constData(), std::size_t(m_received.size())));
+    forEachSnapshot([&](qint64 timeUs, const oi::SensorSnapshot &frame) {
+        oi::SensorSnapshot s = frame;
+        if (firmware)
+            firmware->corrections.correct(s);
         out << QString::number(static_cast<double>(timeUs) / 1e6, 'f', 6);
         for (const oi::PacketInfo *info : columns) {
             out << ',';

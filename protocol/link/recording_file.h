@@ -121,7 +121,8 @@ public:
     // Decodes every stream frame in order, as the link would.
     void forEachSnapshot(const std::function<void(qint64 timeUs, const oi::SensorSnapshot &)> &visit) const;
     // One row per frame: time_s, then one column per packet of the stream.
-    // Bit fields and signed values are written as the decoded numbers.
+    // Bit fields and signed values are written as the decoded numbers; the
+    // angle corrected when the recording holds the firmware's banner.
     void writeCsv(QTextStream &out) const;
 
 private:

@@ -1,7 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "firmware_banner.h"
 
+#include "sensor_snapshot.h"
+
 #include <charconv>
+#include <cmath>
 #include <system_error>
 
 namespace oi {
@@ -80,6 +83,12 @@ std::string FirmwareVersion::toString() const
 double FirmwareCorrections::correctedAngleDegrees(int rawAngle) const
 {
     return angleDivisor ? rawAngle / *angleDivisor : double(rawAngle);
+}
+
+void FirmwareCorrections::correct(SensorSnapshot &frame) const
+{
+    if (angleDivisor && frame.has(20))
+        frame.set(20, std::int32_t(std::lround(correctedAngleDegrees(frame.raw(20)))));
 }
 
 bool FirmwareCorrections::any() const

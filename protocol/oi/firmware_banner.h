@@ -9,6 +9,8 @@
 
 namespace oi {
 
+class SensorSnapshot;
+
 struct FirmwareVersion {
     int major = 0;
     int minor = 0;
@@ -26,7 +28,11 @@ struct FirmwareCorrections {
 
     // Packet 20 in degrees, with the divisor applied where there is one.
     double correctedAngleDegrees(int rawAngle) const;
+    // The frame as the robot meant it: packet 20 in whole degrees. What the
+    // robot model hands on to everything that shows or keeps values.
+    void correct(SensorSnapshot &frame) const;
     bool any() const;
+    friend bool operator==(const FirmwareCorrections &, const FirmwareCorrections &) = default;
 };
 
 struct FirmwareInfo {

@@ -78,7 +78,9 @@ void Odometry::update(const SensorSnapshot &snapshot)
     // re-anchors instead of counting again what 19/20 just reported.
     m_reference.reset();
     const double turnDegrees = m_corrections.correctedAngleDegrees(snapshot.angleDegrees());
-    advance(snapshot.distanceMm(), turnDegrees * kPi / 180.0);
+    // Firmware before 3.3.0 reports distance wrongly: better no motion than a wrong one.
+    const double distanceMm = m_corrections.distanceUnreliable ? 0.0 : snapshot.distanceMm();
+    advance(distanceMm, turnDegrees * kPi / 180.0);
 }
 
 void Odometry::advance(double distanceMm, double turnRad)

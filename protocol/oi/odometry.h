@@ -34,7 +34,8 @@ public:
     // reference counts.
     void reset(Pose start = {});
     // Applied to the distance/angle fallback only; encoder counts are right on
-    // every firmware.
+    // every firmware. Frames come raw: the angle is divided here, with its
+    // fractions, and a distance the firmware reports wrongly is not used.
     void setCorrections(FirmwareCorrections corrections);
     const FirmwareCorrections &corrections() const { return m_corrections; }
     // The wheel geometry the encoder counts are turned into motion with: a

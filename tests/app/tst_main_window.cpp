@@ -21,6 +21,10 @@
 #include "schedule_editor.h"
 #include "script_editor.h"
 #include "transport.h"
+#include "firmware_reading.h"
+#include "sensor_gauges.h"
+#include "value_gauge.h"
+#include "virtual_transport.h"
 
 #include <QComboBox>
 #include <QDir>
@@ -53,6 +57,27 @@ QString screenshotDir(const QTemporaryDir &scratch)
     QDir().mkpath(dir);
     return dir;
 }
+
+// The virtual robot, with every byte sent to it recorded.
+class RecordedVirtualRobot : public sim::VirtualTransport {
+public:
+    RecordedVirtualRobot(Recording *recording, const oilink::LinkSettings &settings)
+        : VirtualTransport(settings.virtualRobot, settings.virtualSeed), m_recording(recording)
+    {
+    }
+    bool write(const QByteArray &bytes) override
+    {
+        {
+            QMutexLocker lock(&m_recording->mutex);
+            m_recording->writes << bytes;
+            m_recording->times << Recording::Clock::now();
+        }
+        return VirtualTransport::write(bytes);
+    }
+
+private:
+    Recording *m_recording;
+};
 
 } // namespace
 
@@ -147,6 +172,78 @@ private slots:
         // Closing leaves the robot stopped and in Passive mode.
         window.session().closeAndWait();
         QCOMPARE(text(recording.take().join()), QString("150 0 137 0 0 0 0 138 0 128"));
+    }
+
+    // Robot → Read firmware version… on the virtual robot: it asks first,
+    // saying the robot will be reset; declined, nothing is sent; agreed, a
+    // Reset (7) goes out and the banner's version and its corrections show.
+    void readFirmwareVersionOnTheVirtualRobot()
+    {
+        Recording recording;
+        MainWindow window;
+        window.fleet().setTransportFactory(
+            [&recording](const oilink::LinkSettings &s) { return new RecordedVirtualRobot(&recording, s); });
+        window.show();
+        window.start(oilink::LinkSettings::virtualRobotOf(oi::ProfileId::Create2, oi::ProfileId::Create2));
+        QTRY_COMPARE_WITH_TIMEOUT(window.session().state(), oilink::LinkState::Streaming, 10000);
+        auto *menu = window.findChild<QMenu *>("robotMenu");
+        QVERIFY(menu);
+        QAction *read = window.firmwareReading()->action();
+        QVERIFY(menu->actions().contains(read));
+        QCOMPARE(read->text(), QString("Read &firmware version…"));
+
+        QString asked;
+        window.firmwareReading()->setConfirmation([&asked](QWidget *, const QString &question) {
+            asked = question;
+            return false;
+        });
+        read->trigger();
+        QVERIFY2(asked.contains("reset (Reset, opcode 7)") && asked.contains("reboots"), qPrintable(asked));
+        QVERIFY(!window.session().firmware().isReading());
+        QVERIFY(!window.firmwareReading()->answer());
+
+        window.firmwareReading()->setConfirmation([](QWidget *, const QString &) { return true; });
+        recording.take();
+        read->trigger();
+        QTRY_VERIFY_WITH_TIMEOUT(recording.written().contains(char(7)), 5000);
+        QCOMPARE(text(recording.take().first()), QString("7"));
+        QTRY_VERIFY_WITH_TIMEOUT(window.firmwareReading()->answer(), 5000);
+        const QString answer = window.firmwareReading()->answer()->text();
+        QVERIFY2(answer.contains("runs release-3.8.2 (version 3.8.2)"), qPrintable(answer));
+        QVERIFY2(answer.contains("nothing needs correcting"), qPrintable(answer));
+        QVERIFY2(answer.contains("r3_robot/tags/release-3.8.2"), qPrintable(answer));
+        QCOMPARE(window.session().firmwareRelease(), QString("release-3.8.2"));
+        QVERIFY(!window.sensorGauges()->gauge("requested_radius")->isGreyed());
+    }
+
+    // Firmware before 3.3.0 reports the requested radius wrongly: once the
+    // banner says so, the gauge greys and says why.
+    void oldFirmwareGreysTheRadiusGauge()
+    {
+        Recording recording;
+        std::atomic<RecordingTransport *> transport{nullptr};
+        MainWindow window;
+        window.fleet().setTransportFactory([&](const oilink::LinkSettings &) {
+            auto *t = new RecordingTransport(&recording);
+            transport = t;
+            return t;
+        });
+        window.show();
+        window.start(oilink::LinkSettings::serial("/dev/recording", oi::ProfileId::Create2));
+        QTRY_COMPARE_WITH_TIMEOUT(window.session().state(), oilink::LinkState::Streaming, 10000);
+        ValueGauge *radius = window.sensorGauges()->gauge("requested_radius");
+        QVERIFY(!radius->isGreyed());
+        window.firmwareReading()->setConfirmation([](QWidget *, const QString &) { return true; });
+        window.firmwareReading()->action()->trigger();
+        QTRY_VERIFY_WITH_TIMEOUT(recording.written().contains(char(7)), 5000);
+        QMetaObject::invokeMethod(transport.load(), [t = transport.load()] {
+            t->inject("bl-start\r\nr3_robot/tags/release-3.2.9:4975 CLEAN\r\n");
+        });
+        QTRY_VERIFY_WITH_TIMEOUT(window.firmwareReading()->answer(), 5000);
+        QVERIFY2(window.firmwareReading()->answer()->text().contains("greyed"),
+                 qPrintable(window.firmwareReading()->answer()->text()));
+        QVERIFY(radius->isGreyed());
+        QVERIFY(radius->toolTip().contains("before 3.3.0"));
     }
 
     // The virtual robot pushed against a wall, then stopped by Safe mode at

@@ -5,6 +5,8 @@
 #include "replay_transport.h"
 #include "robot_link.h"
 #include "transport_factory.h"
+#include "virtual_transport.h"
+#include "real_time_robot.h"
 
 #include "stream_parser.h"
 
@@ -13,6 +15,8 @@
 #include <QTemporaryDir>
 #include <QTest>
 #include <QtEndian>
+
+#include <cmath>
 
 using oilink::LinkSettings;
 using oilink::LinkState;
@@ -86,6 +90,16 @@ QList<oi::SensorSnapshot> parse(const Recording &r, const QByteArray &bytes)
     parser.setSnapshotHandler([&](const oi::SensorSnapshot &s, oi::FrameKind) { out << s; });
     parser.feed({reinterpret_cast<const std::uint8_t *>(bytes.constData()), static_cast<std::size_t>(bytes.size())});
     return out;
+}
+
+// The recording's CSV, line by line.
+QStringList csvLines(const Recording &r)
+{
+    QString csv;
+    QTextStream out(&csv);
+    r.writeCsv(out);
+    out.flush();
+    return csv.split('\n', Qt::SkipEmptyParts);
 }
 
 QList<oi::SensorSnapshot> allSnapshots(const Recording &r)
@@ -346,17 +360,59 @@ private slots:
         QVERIFY(!replay.isOpen());
     }
 
+    // A robot with firmware 3.4.0, reset while recorded, then turning: the
+    // banner in the recording names the firmware, so the CSV has the angle
+    // in degrees (ERRATA 16), as the dashboard showed it.
+    void csvCorrectsTheAngleByTheRecordedBanner()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath("old.oirec");
+        RobotLink link;
+        link.setTransportFactory([](const LinkSettings &settings) {
+            auto *t = new sim::VirtualTransport(settings.virtualRobot, settings.virtualSeed);
+            QObject::connect(t, &oilink::Transport::opened, t,
+                             [t] { t->robot()->robot().setFirmwareRelease("release-3.4.0"); });
+            return t;
+        });
+        QSignalSpy snapshots(&link, &RobotLink::snapshot);
+        QSignalSpy states(&link, &RobotLink::stateChanged);
+        link.open(LinkSettings::virtualRobotOf(oi::ProfileId::Create2, oi::ProfileId::Create2));
+        QVERIFY(snapshots.wait(kTimeoutMs));
+        link.startRecording(path);
+        states.clear();
+        link.send(QByteArray(1, char(7)));
+        // The reboot stops the stream; the link starts the robot again. Then
+        // Safe, and turn in place at full speed.
+        QTRY_VERIFY_WITH_TIMEOUT(!states.isEmpty() && states.last().at(0).value<oilink::LinkState>()
+                                                          == oilink::LinkState::Streaming, kTimeoutMs);
+        link.send(QByteArray::fromHex("838901F40001"));
+        QTRY_VERIFY_WITH_TIMEOUT(std::abs(snapshotsOf(snapshots).last().angleDegrees()) > 0, kTimeoutMs);
+        snapshots.clear();
+        QTRY_VERIFY_WITH_TIMEOUT(snapshots.size() >= 20, kTimeoutMs);
+        link.close();
+
+        const Recording r = load(path);
+        const QStringList lines = csvLines(r);
+        const int angle = lines[0].split(',').indexOf("angle");
+        QVERIFY(angle > 0);
+        const QList<oi::SensorSnapshot> raw = allSnapshots(r);
+        QCOMPARE(lines.size(), raw.size() + 1);
+        int turning = 0;
+        for (qsizetype i = 0; i < raw.size(); ++i) {
+            const int expected = int(std::lround(raw[i].angleDegrees() / 0.324056));
+            QCOMPARE(lines[i + 1].split(',')[angle].toInt(), expected);
+            turning += expected != raw[i].angleDegrees();
+        }
+        QVERIFY(turning > 5);
+    }
+
     void csvHasOneRowPerFrame()
     {
         QTemporaryDir dir;
         const QString path = dir.filePath("run.oirec");
         QVERIFY(!recordVirtualRobot(path).isEmpty());
         const Recording r = load(path);
-        QString csv;
-        QTextStream out(&csv);
-        r.writeCsv(out);
-        out.flush();
-        const QStringList lines = csv.split('\n', Qt::SkipEmptyParts);
+        const QStringList lines = csvLines(r);
         QCOMPARE(lines.size(), int(r.frames().size()) + 1);
         const QStringList columns = lines[0].split(',');
         QCOMPARE(columns.first(), QString("time_s"));

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "firmware_banner.h"
+#include "sensor_snapshot.h"
 
 #include <QTest>
 
@@ -203,6 +204,24 @@ private slots:
         if (angleDivided)
             QVERIFY(*c.angleDivisor == 0.324056);
         QCOMPARE(c.any(), distanceUnreliable || radiusUnreliable || angleDivided);
+    }
+
+    // The frame handed on: packet 20 in whole degrees, the rest as it came.
+    void correctFrame()
+    {
+        SensorSnapshot frame(profile(ProfileId::Create2));
+        frame.set(19, 100);
+        frame.set(20, -29);
+        frame.set(40, 500);
+        correctionsFor({3, 4, 0}).correct(frame);
+        QCOMPARE(frame.raw(20), -89);
+        QCOMPARE(frame.raw(19), 100);
+        QCOMPARE(frame.raw(40), 500);
+        correctionsFor({3, 4, 1}).correct(frame);
+        QCOMPARE(frame.raw(20), -89);
+        SensorSnapshot noAngle(profile(ProfileId::Create2));
+        correctionsFor({3, 4, 0}).correct(noAngle);
+        QVERIFY(!noAngle.has(20));
     }
 
     void correctedAngle_data()

@@ -540,6 +540,16 @@ private slots:
         VERIFY_POSE(odometry.pose(), x, y, theta, double(distance), kTightMm);
     }
 
+    // Before 3.3.0 packet 19 is wrong (ERRATA 16): the fallback turns with
+    // the corrected angle and does not move by the reported distance.
+    void unreliableDistanceIsNotUsed()
+    {
+        Odometry odometry;
+        odometry.setCorrections(correctionsFor({3, 2, 9}));
+        odometry.update(distanceAngleFrame(ProfileId::Create2, 100, 29));
+        VERIFY_POSE(odometry.pose(), 0.0, 0.0, 1.5619074575948462, 0.0, kTightMm);
+    }
+
     void correctionsLeaveEncodersAlone()
     {
         EncoderDrive drive(ProfileId::Create2, 0);

@@ -7,7 +7,10 @@
 #include "transport.h"
 #include "transport_factory.h"
 
+#include <QSettings>
 #include <QSignalSpy>
+#include <QStandardPaths>
+#include <QTemporaryDir>
 #include <QTest>
 
 #include <atomic>
@@ -64,6 +67,40 @@ private:
     bool m_open = false;
 };
 
+// The BannerRobot a session's link makes on its thread, for the test to drive.
+struct BannerLine {
+    std::atomic<BannerRobot *> robot{nullptr};
+
+    // Connects `session` to a BannerRobot that prints `release`, streaming
+    // distance and angle, and waits until it is open.
+    void connect(RobotSession &session, std::string release,
+                 const QString &port = QStringLiteral("/dev/banner-robot"))
+    {
+        session.setTransportFactory([this, release](const oilink::LinkSettings &) {
+            auto *t = new BannerRobot(release);
+            robot = t;
+            return t;
+        });
+        session.connectTo(settings(port));
+        QTRY_VERIFY_WITH_TIMEOUT(robot.load() && robot.load()->isOpen(), 5000);
+    }
+    static oilink::LinkSettings settings(const QString &port)
+    {
+        oilink::LinkSettings s = oilink::LinkSettings::serial(port, oi::ProfileId::Create2);
+        s.streamPackets = {19, 20};
+        return s;
+    }
+    // One frame of motion, once the session has it.
+    void move(RobotSession &session, int distanceMm, int rawAngle)
+    {
+        const quint64 before = session.snapshotCount();
+        QMetaObject::invokeMethod(robot.load(), [t = robot.load(), distanceMm, rawAngle] {
+            t->sendMotion(distanceMm, rawAngle);
+        });
+        QTRY_VERIFY_WITH_TIMEOUT(session.snapshotCount() > before, 5000);
+    }
+};
+
 double degrees(double radians)
 {
     return radians * 180.0 / std::numbers::pi;
@@ -75,6 +112,12 @@ class TestRobotSession : public QObject {
     Q_OBJECT
 
 private slots:
+    void init()
+    {
+        QStandardPaths::setTestModeEnabled(true);
+        QSettings().clear();
+    }
+
     // Show Script goes through the link's queue: the link pauses and resumes
     // its own stream, so it neither marks the data stale nor sends Start (which
     // would drop the robot out of Safe mode) while it waits for the reply.
@@ -143,23 +186,10 @@ private slots:
     // 90° turn reads 29 raw; once the banner names the firmware, it reads 90°.
     void firmwareCorrectionsChangeTheOdometry()
     {
-        std::atomic<BannerRobot *> transport{nullptr};
+        BannerLine line;
         RobotSession robot;
-        robot.setTransportFactory([&transport](const oilink::LinkSettings &) {
-            auto *t = new BannerRobot("release-3.4.0");
-            transport = t;
-            return t;
-        });
-        oilink::LinkSettings settings = oilink::LinkSettings::serial("/dev/banner-robot", oi::ProfileId::Create2);
-        settings.streamPackets = {19, 20};
-        robot.connectTo(settings);
-        QTRY_VERIFY_WITH_TIMEOUT(transport.load() && transport.load()->isOpen(), 5000);
-        const auto turn = [&](int rawAngle) {
-            const quint64 before = robot.snapshotCount();
-            QMetaObject::invokeMethod(transport.load(), [t = transport.load(), rawAngle] { t->sendMotion(0, rawAngle); });
-            QTRY_VERIFY_WITH_TIMEOUT(robot.snapshotCount() > before, 5000);
-        };
-        turn(29);
+        line.connect(robot, "release-3.4.0");
+        line.move(robot, 0, 29);
         QCOMPARE(degrees(robot.odometry().pose().thetaRad), 29.0);
         QVERIFY(!robot.odometry().corrections().angleDivisor);
 
@@ -169,9 +199,93 @@ private slots:
         QCOMPARE(firmware.at(0).at(0).toString(), QString("release-3.4.0"));
         QVERIFY(robot.odometry().corrections().angleDivisor);
         robot.odometry().reset();
-        turn(29);
+        line.move(robot, 0, 29);
         QVERIFY2(std::abs(degrees(robot.odometry().pose().thetaRad) - 29 / 0.324056) < 1e-6,
                  qPrintable(QString::number(degrees(robot.odometry().pose().thetaRad))));
+    }
+
+    // The firmware belongs to the robot it came from: another port forgets
+    // it, the same port brings it back without a Reset, in this run and the next.
+    void correctionsFollowTheRobot()
+    {
+        BannerLine line;
+        RobotSession robot;
+        line.connect(robot, "release-3.2.9");
+        QSignalSpy read(&robot.firmware(), &RobotFirmware::read);
+        QCOMPARE(robot.readFirmwareVersion(), QString());
+        QVERIFY(read.wait(5000));
+        QCOMPARE(robot.firmwareRelease(), QString("release-3.2.9"));
+        QVERIFY(robot.corrections().distanceUnreliable);
+        QVERIFY(robot.odometry().corrections().angleDivisor);
+
+        QSignalSpy changed(&robot, &RobotSession::firmwareChanged);
+        robot.connectTo(oilink::LinkSettings::serial("/dev/another-robot", oi::ProfileId::Create2));
+        QCOMPARE(changed.count(), 1);
+        QCOMPARE(changed.at(0).at(0).toString(), QString());
+        QVERIFY(!robot.corrections().any());
+        QVERIFY(!robot.odometry().corrections().any());
+
+        // The same robot at another baud is still that robot.
+        QSignalSpy sent(&robot, &RobotSession::bytesSent);
+        auto sameRobot = BannerLine::settings("/dev/banner-robot");
+        sameRobot.baud = 19200;
+        robot.connectTo(sameRobot);
+        QCOMPARE(robot.firmwareRelease(), QString("release-3.2.9"));
+        QVERIFY(robot.corrections().distanceUnreliable);
+        QVERIFY(robot.odometry().corrections().angleDivisor);
+        robot.closeAndWait();
+        for (const QList<QVariant> &bytes : sent)
+            QVERIFY(!bytes.at(0).toByteArray().startsWith(char(7)));
+
+        RobotSession nextRun;
+        nextRun.setTransportFactory([](const oilink::LinkSettings &) { return new BannerRobot("release-3.2.9"); });
+        QVERIFY(nextRun.firmwareRelease().isEmpty());
+        nextRun.connectTo(BannerLine::settings("/dev/banner-robot"));
+        QCOMPARE(nextRun.firmwareRelease(), QString("release-3.2.9"));
+        QVERIFY(nextRun.corrections().distanceUnreliable);
+    }
+
+    // ERRATA 16: once the banner names firmware up to 3.4.0, the angle every
+    // view reads is in degrees: the latest values, each frame handed on, the
+    // history the plots draw and the CSV written from it.
+    void correctedAngleReachesHistoryAndCsv()
+    {
+        BannerLine line;
+        RobotSession robot;
+        line.connect(robot, "release-3.4.0");
+        QSignalSpy frames(&robot, &RobotSession::frameReceived);
+        line.move(robot, 10, 29);
+        QCOMPARE(robot.latest().raw(20), 29);
+        QSignalSpy read(&robot.firmware(), &RobotFirmware::read);
+        QCOMPARE(robot.readFirmwareVersion(), QString());
+        QVERIFY(read.wait(5000));
+        line.move(robot, 10, -29);
+        QCOMPARE(frames.last().at(1).value<oi::SensorSnapshot>().raw(20), -89);
+        QCOMPARE(robot.latest().raw(20), -89);
+        QCOMPARE(robot.latest().raw(19), 10);
+        const SensorHistory &h = robot.history();
+        QCOMPARE(h.sample(20, 0).value, 29);
+        QCOMPARE(h.sample(20, h.sampleCount(20) - 1).value, -89);
+
+        QTemporaryDir dir;
+        const QString csv = dir.filePath("turn.csv");
+        QVERIFY(h.exportCsv(csv, {20}, h.oldestTime(), h.newestTime()));
+        QFile file(csv);
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        const QList<QByteArray> lines = file.readAll().trimmed().split('\n');
+        QCOMPARE(lines.size(), 3);
+        QVERIFY2(lines.first().startsWith("time_s,angle"), lines.first().constData());
+        QVERIFY2(lines.at(1).endsWith(",29"), lines.at(1).constData());
+        QVERIFY2(lines.at(2).endsWith(",-89"), lines.at(2).constData());
+    }
+
+    void readingFirmwareNeedsTheRobotItself()
+    {
+        RobotSession robot;
+        QVERIFY(robot.readFirmwareVersion().contains("Connect to the robot first"));
+        robot.setTransportFactory([](const oilink::LinkSettings &) { return new BannerRobot("release-3.4.0"); });
+        robot.connectTo(oilink::LinkSettings::replayOf("/tmp/none.oirec", oi::ProfileId::Create2, 115200, {}));
+        QVERIFY(robot.readFirmwareVersion().contains("connect to the robot itself"));
     }
 
     // Frames carry the time the link read them: the history's clock.

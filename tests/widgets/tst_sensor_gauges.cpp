@@ -196,6 +196,35 @@ private slots:
         QCOMPARE(w.gaugeText("requested_radius"), text);
     }
 
+    // ERRATA 16: firmware before 3.3.0 reports the requested radius wrongly.
+    // The gauge greys and its tooltip says why; newer firmware lifts it.
+    void unreliableRadiusIsGreyedWithTheReason()
+    {
+        SensorGauges w;
+        std::map<int, int> values = quietValues(profile(ProfileId::Create2));
+        values[40] = 500;
+        show(w, ProfileId::Create2, values);
+        ValueGauge *radius = w.gauge("requested_radius");
+        QVERIFY(!radius->isGreyed());
+        QVERIFY(!radius->toolTip().contains("3.3.0"));
+
+        w.setCorrections(correctionsFor({3, 2, 9}));
+        QVERIFY(radius->isGreyed());
+        QVERIFY2(radius->toolTip().contains("before 3.3.0") && radius->toolTip().contains("requested radius"),
+                 qPrintable(radius->toolTip()));
+        QVERIFY(radius->accessibleDescription().contains("unreliable"));
+        QCOMPARE(w.gaugeText("requested_radius"), QString("500 mm"));
+        QVERIFY(!w.gauge("requested_velocity")->isGreyed());
+        // Coming back from stale leaves it grey.
+        w.setStale(true);
+        w.setStale(false);
+        QVERIFY(radius->isGreyed());
+
+        w.setCorrections(correctionsFor({3, 3, 0}));
+        QVERIFY(!radius->isGreyed());
+        QVERIFY(!radius->toolTip().contains("3.3.0"));
+    }
+
     void profileSwitchingHidesAndShowsGauges()
     {
         SensorGauges w;

@@ -515,6 +515,28 @@ private slots:
         QVERIFY(plots.channelChooser(0)->actionFor(33));
     }
 
+    // ERRATA 16: before 3.3.0 the distance is wrong. Its legend entry greys
+    // and says why; the angle beside it, corrected, stays as it is.
+    void unreliableDistanceIsGreyedInTheLegend()
+    {
+        SensorPlots plots;
+        QVERIFY(plots.setChannels(0, {19, 20}));
+        auto *legend = plots.findChild<QLabel *>("plotLegend");
+        QVERIFY(legend);
+        QVERIFY(!legend->text().contains("unreliable"));
+        QVERIFY(legend->toolTip().isEmpty());
+
+        plots.setCorrections(oi::correctionsFor({3, 2, 9}));
+        QVERIFY2(legend->text().contains("Distance [mm] (unreliable)"), qPrintable(legend->text()));
+        QVERIFY(!legend->text().contains("Angle [degrees] (unreliable)"));
+        QVERIFY2(legend->toolTip().contains("before 3.3.0") && legend->toolTip().contains("distance"),
+                 qPrintable(legend->toolTip()));
+
+        plots.setCorrections(oi::correctionsFor({3, 4, 0}));
+        QVERIFY(!legend->text().contains("unreliable"));
+        QVERIFY(legend->toolTip().isEmpty());
+    }
+
     void exportsTheVisibleRange()
     {
         QTemporaryDir dir;

@@ -79,4 +79,17 @@ QString modeName(oi::OiMode mode)
     return {};
 }
 
+QString unreliableReason(int packetId, const oi::FirmwareCorrections &corrections)
+{
+    if (packetId == 19 && corrections.distanceUnreliable)
+        return QCoreApplication::translate("FirmwareCorrections",
+                                           "This robot's firmware (before 3.3.0) reports the distance wrongly: do "
+                                           "not trust it. The map uses the wheel encoders instead.");
+    if (packetId == 40 && corrections.radiusUnreliable)
+        return QCoreApplication::translate("FirmwareCorrections",
+                                           "This robot's firmware (before 3.3.0) reports the requested radius "
+                                           "wrongly: do not trust it.");
+    return {};
+}
+
 } // namespace oitext

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "firmware_banner.h"
 #include "ir_character.h"
 #include "robot_profile.h"
 #include "sensor_snapshot.h"
@@ -21,5 +22,8 @@ QString infraredName(const oi::IrCharacter &ir);  // composed from translated pa
 QString packetLabel(const oi::PacketInfo &info);
 // "Passive", "Safe", ... in the words the mode panel uses.
 QString modeName(oi::OiMode mode);
+// Why this robot's firmware reports the packet wrongly (ERRATA 16: distance
+// 19 and requested radius 40 before 3.3.0), for a tooltip; empty when it does not.
+QString unreliableReason(int packetId, const oi::FirmwareCorrections &corrections);
 
 } // namespace oitext

@@ -130,7 +130,20 @@ void SensorGauges::retranslateUi()
     for (qsizetype i = 0; i < m_sections.size(); ++i)
         m_sections[i].heading->setText(headings[i]);
     refreshTitles();
+    refreshReliability();
     setSnapshot(m_snapshot); // values and details in the new language
+}
+
+void SensorGauges::setCorrections(const oi::FirmwareCorrections &corrections)
+{
+    m_corrections = corrections;
+    refreshReliability();
+}
+
+void SensorGauges::refreshReliability()
+{
+    for (const GaugePacket &g : kGaugePackets)
+        m_gauges.value(QString::fromLatin1(g.key))->setUnreliable(oitext::unreliableReason(g.packetId, m_corrections));
 }
 
 void SensorGauges::refreshTitles()

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "firmware_banner.h"
 #include "sensor_snapshot.h"
 
 #include <QHash>
@@ -26,6 +27,9 @@ public:
     const oi::RobotProfile &profile() const { return *m_profile; }
     // Shows the snapshot's values; call it from a display timer.
     void setSnapshot(const oi::SensorSnapshot &snapshot);
+    // Packets this robot's firmware reports wrongly (requested radius before
+    // 3.3.0) are greyed, with the reason as their tooltip.
+    void setCorrections(const oi::FirmwareCorrections &corrections);
     // Stale values are greyed under a STALE banner.
     void setStale(bool stale);
     bool isStale() const { return m_stale; }
@@ -68,6 +72,7 @@ private:
     int columnsForWidth(int width) const;
     void relayout();
     void refreshBanner();
+    void refreshReliability();
 
     void showBattery(const oi::SensorSnapshot &s);
     void showDrive(const oi::SensorSnapshot &s);
@@ -82,6 +87,7 @@ private:
     QGridLayout *m_grid = nullptr;
     QLabel *m_banner = nullptr;
     oi::SensorSnapshot m_snapshot; // the last shown, to show again in a new language
+    oi::FirmwareCorrections m_corrections;
     int m_columns = 0;
     int m_captionWidth = 0; // what the widest caption needs
     bool m_stale = false;

@@ -250,6 +250,8 @@ void ValueGauge::updateDescription()
         text = tr("%1, out of range").arg(text);
     if (m_stale)
         text = tr("%1, stale").arg(text);
+    if (!m_unreliable.isEmpty())
+        text = tr("%1, unreliable: %2").arg(text, m_unreliable);
     if (accessibleDescription() != text)
         setAccessibleDescription(text);
 }
@@ -263,7 +265,7 @@ void ValueGauge::setValue(const QString &value, const QString &unit)
 void ValueGauge::setDetail(const QString &detail)
 {
     m_detail->setText(detail);
-    setToolTip(detail);
+    refreshToolTip();
     updateDescription();
 }
 
@@ -315,6 +317,26 @@ void ValueGauge::setStale(bool stale)
     refreshColours();
 }
 
+void ValueGauge::setUnreliable(const QString &why)
+{
+    if (m_unreliable == why)
+        return;
+    m_unreliable = why;
+    refreshToolTip();
+    updateDescription();
+    refreshColours();
+}
+
+void ValueGauge::refreshToolTip()
+{
+    // The detail may be elided on screen; why a value is unreliable comes after it.
+    const QString detail = detailText();
+    if (m_unreliable.isEmpty() || detail.isEmpty())
+        setToolTip(detail + m_unreliable);
+    else
+        setToolTip(detail + QLatin1Char('\n') + m_unreliable);
+}
+
 void ValueGauge::setTitle(const QString &title)
 {
     m_title->setText(title);
@@ -349,11 +371,11 @@ double ValueGauge::barFraction() const
 void ValueGauge::refreshColours()
 {
     const QPalette pal = palette();
-    const State shown = m_stale ? State::Stale : m_state;
+    const State shown = isGreyed() ? State::Stale : m_state;
     QColor text = pal.color(QPalette::WindowText);
     QColor soft = text;
     soft.setAlphaF(0.72);
-    if (m_stale) {
+    if (isGreyed()) {
         text.setAlphaF(0.45);
         soft.setAlphaF(0.4);
     }
@@ -370,7 +392,7 @@ void ValueGauge::refreshColours()
     colour(m_flag, display::stateColor(State::Alert, pal));
 
     m_bar->m_fill = display::stateColor(shown == State::Idle ? State::Active : shown, pal);
-    if (m_stale)
+    if (isGreyed())
         m_bar->m_fill = soft;
     QColor track = pal.color(QPalette::WindowText);
     track.setAlphaF(0.12);
@@ -402,7 +424,7 @@ void ValueGauge::paintEvent(QPaintEvent *)
     const QRectF r = QRectF(rect()).adjusted(border / 2, border / 2, -border / 2, -border / 2);
 
     QColor background = pal.color(QPalette::Base);
-    if (m_outOfRange && !m_stale)
+    if (m_outOfRange && !isGreyed())
         background = QColor::fromRgbF(background.redF() * 0.85 + alert.redF() * 0.15,
                                       background.greenF() * 0.85 + alert.greenF() * 0.15,
                                       background.blueF() * 0.85 + alert.blueF() * 0.15);
@@ -414,7 +436,7 @@ void ValueGauge::paintEvent(QPaintEvent *)
     p.drawRoundedRect(r, kRadius, kRadius);
 
     // The stripe: the state at a glance, grey when stale.
-    const State shown = m_stale ? State::Idle : m_state;
+    const State shown = isGreyed() ? State::Idle : m_state;
     QPainterPath clip;
     clip.addRoundedRect(r, kRadius, kRadius);
     p.setClipPath(clip);

@@ -34,6 +34,12 @@ public:
     void setState(display::State state);
     void setOutOfRange(bool outOfRange);
     void setStale(bool stale);
+    // A value the robot is known to report wrongly: greyed, with `why` as its
+    // tooltip. Empty makes it a good value again.
+    void setUnreliable(const QString &why);
+    QString unreliableReason() const { return m_unreliable; }
+    // Stale or unreliable: shown grey.
+    bool isGreyed() const { return m_stale || !m_unreliable.isEmpty(); }
 
     QString title() const;
     // The width at which `caption` fits on one line as the title or detail.
@@ -57,6 +63,7 @@ private:
     void retranslateUi();
     // The value, detail and flags in words, for screen readers.
     void updateDescription();
+    void refreshToolTip();
     void refreshColours();
 
     QLabel *m_title = nullptr;
@@ -67,4 +74,5 @@ private:
     display::State m_state = display::State::Idle;
     bool m_outOfRange = false;
     bool m_stale = false;
+    QString m_unreliable;
 };

@@ -748,14 +748,35 @@ bool SensorPlots::updateHint(Panel &panel)
     return true;
 }
 
+void SensorPlots::setCorrections(const oi::FirmwareCorrections &corrections)
+{
+    if (corrections == m_corrections)
+        return;
+    m_corrections = corrections;
+    for (auto &panel : m_panels)
+        updateLegend(*panel);
+}
+
 void SensorPlots::updateLegend(Panel &panel)
 {
     QStringList items;
-    for (std::size_t i = 0; i < panel.channels.size(); ++i)
-        items << QStringLiteral("<span style=\"color:%1\">&#9632;</span>&nbsp;%2")
-                     .arg(kSeriesColors[i].name(),
-                          ChannelChooser::channelLabel(*m_profile->packet(panel.channels[i])).toHtmlEscaped());
+    QStringList reasons;
+    for (std::size_t i = 0; i < panel.channels.size(); ++i) {
+        const QString label = ChannelChooser::channelLabel(*m_profile->packet(panel.channels[i]));
+        const QString reason = oitext::unreliableReason(panel.channels[i], m_corrections);
+        const QString swatch = QStringLiteral("<span style=\"color:%1\">&#9632;</span>&nbsp;").arg(kSeriesColors[i].name());
+        if (reason.isEmpty()) {
+            items << swatch + label.toHtmlEscaped();
+            continue;
+        }
+        QColor grey = palette().color(QPalette::WindowText);
+        grey.setAlphaF(0.45);
+        items << swatch + QStringLiteral("<span style=\"color:%1\">%2</span>")
+                              .arg(grey.name(QColor::HexArgb), tr("%1 (unreliable)").arg(label).toHtmlEscaped());
+        reasons << reason;
+    }
     panel.legend->setText(items.join(QStringLiteral(" &nbsp; ")));
+    panel.legend->setToolTip(reasons.join(QLatin1Char('\n')));
     updatePlotDescription(panel);
 }
 

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "firmware_banner.h"
 #include "robot_profile.h"
 
 #include <QTimer>
@@ -56,6 +57,9 @@ public:
     const SensorHistory *history() const { return m_history; }
     void setProfile(const oi::RobotProfile &profile);
     const oi::RobotProfile &robotProfile() const { return *m_profile; }
+    // Packets this robot's firmware reports wrongly (distance and requested
+    // radius before 3.3.0) are greyed in the legend, which says why.
+    void setCorrections(const oi::FirmwareCorrections &corrections);
 
     int plotCount() const { return int(m_panels.size()); }
     // Adds a plot at the bottom and returns its index, or -1 at kMaxPlots.
@@ -150,6 +154,7 @@ private:
 
     const SensorHistory *m_history = nullptr;
     const oi::RobotProfile *m_profile;
+    oi::FirmwareCorrections m_corrections;
     std::vector<std::unique_ptr<Panel>> m_panels;
     QSplitter *m_splitter;
     QPushButton *m_pauseButton;

@@ -83,7 +83,7 @@ function(roomba_share_test_pch tests)
             add_executable(${donor} EXCLUDE_FROM_ALL ${PROJECT_SOURCE_DIR}/tests/common/pch_donor.cpp)
             get_target_property(libraries ${test} LINK_LIBRARIES)
             target_link_libraries(${donor} PRIVATE ${libraries})
-            target_compile_options(${donor} PRIVATE -Wall -Wextra -Wpedantic -UQT_TESTCASE_SOURCEDIR
+            target_compile_options(${donor} PRIVATE ${ROOMBA_TEST_COMPILE_OPTIONS} -UQT_TESTCASE_SOURCEDIR
                                                     -UQT_TESTCASE_BUILDDIR)
             set_target_properties(${donor} PROPERTIES AUTOMOC OFF AUTOUIC OFF AUTORCC OFF)
             if(widgets)

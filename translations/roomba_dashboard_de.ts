@@ -904,6 +904,56 @@ Systems.
     </message>
 </context>
 <context>
+    <name>FirmwareCorrections</name>
+    <message>
+        <source>This robot&apos;s firmware (before 3.3.0) reports the distance wrongly: do not trust it. The map uses the wheel encoders instead.</source>
+        <translation>Die Firmware dieses Roboters (vor 3.3.0) meldet die Strecke falsch: Verlassen Sie sich nicht darauf. Die Karte nutzt stattdessen die Radencoder.</translation>
+    </message>
+    <message>
+        <source>This robot&apos;s firmware (before 3.3.0) reports the requested radius wrongly: do not trust it.</source>
+        <translation>Die Firmware dieses Roboters (vor 3.3.0) meldet den angeforderten Radius falsch: Verlassen Sie sich nicht darauf.</translation>
+    </message>
+</context>
+<context>
+    <name>FirmwareReading</name>
+    <message>
+        <source>Read firmware version</source>
+        <translation>Firmware-Version lesen</translation>
+    </message>
+    <message>
+        <source>Read &amp;firmware version…</source>
+        <translation>&amp;Firmware-Version lesen…</translation>
+    </message>
+    <message>
+        <source>Reset the selected robot to read its firmware version, and so what it reports wrongly</source>
+        <translation>Den ausgewählten Roboter zurücksetzen, um seine Firmware-Version zu lesen und damit, was er falsch meldet</translation>
+    </message>
+    <message>
+        <source>The firmware version is printed only when the robot starts up, so %1 will be reset (Reset, opcode 7): it stops, leaves its mode and reboots as if its battery had been taken out. Put it back in Safe or Full mode afterwards if you were driving it.
+
+Reset %1 now?</source>
+        <translation>Die Firmware-Version wird nur beim Start des Roboters ausgegeben, daher wird %1 zurückgesetzt (Reset, Opcode 7): Er hält an, verlässt seinen Modus und startet neu, als wäre der Akku herausgenommen worden. Schalten Sie ihn danach wieder in den Modus Safe oder Full, wenn Sie ihn gefahren haben.
+
+%1 jetzt zurücksetzen?</translation>
+    </message>
+    <message>
+        <source>%1 runs %2 (version %3).
+
+%4
+
+It printed: %5</source>
+        <translation>%1 läuft mit %2 (Version %3).
+
+%4
+
+Er hat ausgegeben: %5</translation>
+    </message>
+    <message>
+        <source>Firmware version</source>
+        <translation>Firmware-Version</translation>
+    </message>
+</context>
+<context>
     <name>FleetConsole</name>
     <message>
         <source>%1 · robots: %2 · speaking as %3</source>
@@ -2070,8 +2120,8 @@ GPL-3.0-or-later.</translation>
         <translation>Lektion</translation>
     </message>
     <message>
-        <source>Roomba 500 or Create 2? (not yet identified)</source>
-        <translation>Roomba 500 oder Create 2? (noch nicht bestimmt)</translation>
+        <source>&amp;Robot</source>
+        <translation>&amp;Roboter</translation>
     </message>
 </context>
 <context>
@@ -3086,6 +3136,10 @@ Leertaste oder Esc hält den ausgewählten Roboter an.</translation>
         <source>&amp;Stop all robots	Shift+Esc</source>
         <translation>Alle Roboter an&amp;halten	Umschalt+Esc</translation>
     </message>
+    <message>
+        <source>Roomba 500 or Create 2? (not yet identified)</source>
+        <translation>Roomba 500 oder Create 2? (noch nicht bestimmt)</translation>
+    </message>
 </context>
 <context>
     <name>RobotCard</name>
@@ -3256,6 +3310,29 @@ Doppelklick zum Umbenennen</translation>
     </message>
 </context>
 <context>
+    <name>RobotFirmware</name>
+    <message>
+        <source>The robot printed no firmware version within %1 s of Reset. Check that it is switched on and connected, and try again once it streams.</source>
+        <translation>Der Roboter hat innerhalb von %1 s nach dem Reset keine Firmware-Version ausgegeben. Prüfen Sie, ob er eingeschaltet und verbunden ist, und versuchen Sie es erneut, sobald er Daten sendet.</translation>
+    </message>
+    <message>
+        <source>The firmware version is not known: values are shown as the robot reports them.</source>
+        <translation>Die Firmware-Version ist unbekannt: Die Werte werden so gezeigt, wie der Roboter sie meldet.</translation>
+    </message>
+    <message>
+        <source>This firmware reports distance, angle and radius correctly: nothing needs correcting.</source>
+        <translation>Diese Firmware meldet Strecke, Winkel und Radius richtig: Nichts muss korrigiert werden.</translation>
+    </message>
+    <message>
+        <source>It reports the angle (packet 20) multiplied by %1: the angle is divided by %1 wherever it is shown, plotted, exported or used for the map.</source>
+        <translation>Sie meldet den Winkel (Paket 20) mit %1 multipliziert: Der Winkel wird überall durch %1 geteilt, wo er gezeigt, geplottet, exportiert oder für die Karte genutzt wird.</translation>
+    </message>
+    <message>
+        <source>It reports the distance (packet 19) and the requested radius (packet 40) wrongly: they are greyed, and the map uses the wheel encoders.</source>
+        <translation>Sie meldet die Strecke (Paket 19) und den angeforderten Radius (Paket 40) falsch: Beide werden grau gezeigt, und die Karte nutzt die Radencoder.</translation>
+    </message>
+</context>
+<context>
     <name>RobotFleet</name>
     <message>
         <source>Robot</source>
@@ -3303,6 +3380,21 @@ Doppelklick zum Umbenennen</translation>
     <message>
         <source>Robot name</source>
         <translation>Name des Roboters</translation>
+    </message>
+</context>
+<context>
+    <name>RobotSession</name>
+    <message>
+        <source>Connect to the robot first: its firmware version is read from the robot.</source>
+        <translation>Verbinden Sie sich zuerst mit dem Roboter: Die Firmware-Version wird vom Roboter gelesen.</translation>
+    </message>
+    <message>
+        <source>A recording cannot be reset: connect to the robot itself to read its firmware version.</source>
+        <translation>Eine Aufzeichnung lässt sich nicht zurücksetzen: Verbinden Sie sich mit dem Roboter selbst, um seine Firmware-Version zu lesen.</translation>
+    </message>
+    <message>
+        <source>A robot on the broker is reset only by its bridge: read its firmware version where the bridge runs.</source>
+        <translation>Ein Roboter am Broker wird nur von seiner Bridge zurückgesetzt: Lesen Sie seine Firmware-Version dort, wo die Bridge läuft.</translation>
     </message>
 </context>
 <context>
@@ -4255,6 +4347,10 @@ Gesendet: %2</translation>
         <source>Paused: drag or arrows pan, wheel or +/- zoom, Space resumes</source>
         <translation>Angehalten: Ziehen oder Pfeiltasten verschieben, Mausrad oder +/- zoomt, Leertaste setzt fort</translation>
     </message>
+    <message>
+        <source>%1 (unreliable)</source>
+        <translation>%1 (unzuverlässig)</translation>
+    </message>
 </context>
 <context>
     <name>SettingsFile</name>
@@ -4875,6 +4971,10 @@ Gesendet: %2</translation>
     <message>
         <source>%1, stale</source>
         <translation>%1, veraltet</translation>
+    </message>
+    <message>
+        <source>%1, unreliable: %2</source>
+        <translation>%1, unzuverlässig: %2</translation>
     </message>
 </context>
 <context>

@@ -903,6 +903,56 @@ sistema.
     </message>
 </context>
 <context>
+    <name>FirmwareCorrections</name>
+    <message>
+        <source>This robot&apos;s firmware (before 3.3.0) reports the distance wrongly: do not trust it. The map uses the wheel encoders instead.</source>
+        <translation>El firmware de este robot (anterior a 3.3.0) informa mal de la distancia: no se fíe de ella. El mapa usa en su lugar los codificadores de las ruedas.</translation>
+    </message>
+    <message>
+        <source>This robot&apos;s firmware (before 3.3.0) reports the requested radius wrongly: do not trust it.</source>
+        <translation>El firmware de este robot (anterior a 3.3.0) informa mal del radio pedido: no se fíe de él.</translation>
+    </message>
+</context>
+<context>
+    <name>FirmwareReading</name>
+    <message>
+        <source>Read firmware version</source>
+        <translation>Leer la versión del firmware</translation>
+    </message>
+    <message>
+        <source>Read &amp;firmware version…</source>
+        <translation>Leer la versión del &amp;firmware…</translation>
+    </message>
+    <message>
+        <source>Reset the selected robot to read its firmware version, and so what it reports wrongly</source>
+        <translation>Reiniciar el robot seleccionado para leer la versión de su firmware y, con ella, qué datos da mal</translation>
+    </message>
+    <message>
+        <source>The firmware version is printed only when the robot starts up, so %1 will be reset (Reset, opcode 7): it stops, leaves its mode and reboots as if its battery had been taken out. Put it back in Safe or Full mode afterwards if you were driving it.
+
+Reset %1 now?</source>
+        <translation>La versión del firmware solo se imprime al arrancar el robot, así que %1 se reiniciará (Reset, código 7): se detiene, sale de su modo y arranca de nuevo como si se le hubiera quitado la batería. Después vuelva a ponerlo en modo Safe o Full si lo estaba conduciendo.
+
+¿Reiniciar %1 ahora?</translation>
+    </message>
+    <message>
+        <source>%1 runs %2 (version %3).
+
+%4
+
+It printed: %5</source>
+        <translation>%1 usa %2 (versión %3).
+
+%4
+
+Imprimió: %5</translation>
+    </message>
+    <message>
+        <source>Firmware version</source>
+        <translation>Versión del firmware</translation>
+    </message>
+</context>
+<context>
     <name>FleetConsole</name>
     <message>
         <source>%1 · robots: %2 · speaking as %3</source>
@@ -2069,8 +2119,8 @@ GPL-3.0-or-later.</translation>
         <translation>Lección</translation>
     </message>
     <message>
-        <source>Roomba 500 or Create 2? (not yet identified)</source>
-        <translation>¿Roomba 500 o Create 2? (aún sin identificar)</translation>
+        <source>&amp;Robot</source>
+        <translation>&amp;Robot</translation>
     </message>
 </context>
 <context>
@@ -3085,6 +3135,10 @@ Espacio o Esc detiene el robot seleccionado.</translation>
         <source>&amp;Stop all robots	Shift+Esc</source>
         <translation>&amp;Detener todos los robots	Mayús+Esc</translation>
     </message>
+    <message>
+        <source>Roomba 500 or Create 2? (not yet identified)</source>
+        <translation>¿Roomba 500 o Create 2? (aún sin identificar)</translation>
+    </message>
 </context>
 <context>
     <name>RobotCard</name>
@@ -3255,6 +3309,29 @@ Doble clic para renombrar</translation>
     </message>
 </context>
 <context>
+    <name>RobotFirmware</name>
+    <message>
+        <source>The robot printed no firmware version within %1 s of Reset. Check that it is switched on and connected, and try again once it streams.</source>
+        <translation>El robot no imprimió ninguna versión de firmware en los %1 s siguientes al Reset. Compruebe que está encendido y conectado, y vuelva a intentarlo cuando envíe datos.</translation>
+    </message>
+    <message>
+        <source>The firmware version is not known: values are shown as the robot reports them.</source>
+        <translation>No se conoce la versión del firmware: los valores se muestran tal como los da el robot.</translation>
+    </message>
+    <message>
+        <source>This firmware reports distance, angle and radius correctly: nothing needs correcting.</source>
+        <translation>Este firmware informa bien de la distancia, el ángulo y el radio: no hay nada que corregir.</translation>
+    </message>
+    <message>
+        <source>It reports the angle (packet 20) multiplied by %1: the angle is divided by %1 wherever it is shown, plotted, exported or used for the map.</source>
+        <translation>Informa del ángulo (paquete 20) multiplicado por %1: el ángulo se divide entre %1 allí donde se muestra, se grafica, se exporta o se usa para el mapa.</translation>
+    </message>
+    <message>
+        <source>It reports the distance (packet 19) and the requested radius (packet 40) wrongly: they are greyed, and the map uses the wheel encoders.</source>
+        <translation>Informa mal de la distancia (paquete 19) y del radio pedido (paquete 40): se muestran en gris y el mapa usa los codificadores de las ruedas.</translation>
+    </message>
+</context>
+<context>
     <name>RobotFleet</name>
     <message>
         <source>Robot</source>
@@ -3302,6 +3379,21 @@ Doble clic para renombrar</translation>
     <message>
         <source>Robot name</source>
         <translation>Nombre del robot</translation>
+    </message>
+</context>
+<context>
+    <name>RobotSession</name>
+    <message>
+        <source>Connect to the robot first: its firmware version is read from the robot.</source>
+        <translation>Conéctese primero al robot: la versión del firmware se lee del robot.</translation>
+    </message>
+    <message>
+        <source>A recording cannot be reset: connect to the robot itself to read its firmware version.</source>
+        <translation>Una grabación no se puede reiniciar: conéctese al propio robot para leer la versión de su firmware.</translation>
+    </message>
+    <message>
+        <source>A robot on the broker is reset only by its bridge: read its firmware version where the bridge runs.</source>
+        <translation>Un robot en el bróker solo lo reinicia su puente: lea la versión de su firmware donde se ejecuta el puente.</translation>
     </message>
 </context>
 <context>
@@ -4254,6 +4346,10 @@ Enviado: %2</translation>
         <source>Paused: drag or arrows pan, wheel or +/- zoom, Space resumes</source>
         <translation>En pausa: arrastre o flechas para desplazar, rueda o +/- para ampliar, barra espaciadora para continuar</translation>
     </message>
+    <message>
+        <source>%1 (unreliable)</source>
+        <translation>%1 (no fiable)</translation>
+    </message>
 </context>
 <context>
     <name>SettingsFile</name>
@@ -4874,6 +4970,10 @@ Enviado: %2</translation>
     <message>
         <source>%1, stale</source>
         <translation>%1, obsoleto</translation>
+    </message>
+    <message>
+        <source>%1, unreliable: %2</source>
+        <translation>%1, no fiable: %2</translation>
     </message>
 </context>
 <context>

@@ -14,6 +14,7 @@ RobotSession::RobotSession(QObject *parent) : QObject(parent)
     connect(&m_link, &oilink::RobotLinkThread::profileAssumed, this, &RobotSession::onProfileAssumed);
     connect(&m_link, &oilink::RobotLinkThread::stateChanged, this, [this](oilink::LinkState state) {
         m_state = state;
+        m_teleop.linkStateChanged(state);
         emit stateChanged(state);
     });
     connect(&m_link, &oilink::RobotLinkThread::statistics, this, [this](const oilink::LinkStats &stats) {

@@ -21,7 +21,7 @@
 // controller with every safety rule, and its recording. Several can exist at
 // once. Widgets show one session and send commands to it; they never hold
 // robot state of their own.
-class RobotSession : public QObject {
+class RobotSession : public QObject, private DriveTarget {
     Q_OBJECT
 public:
     explicit RobotSession(QObject *parent = nullptr);
@@ -54,7 +54,7 @@ public:
 
     // Sends already-encoded, validated bytes while the link is up. Returns false
     // (and sends nothing) when there is no link.
-    bool send(const QByteArray &bytes);
+    bool send(const QByteArray &bytes) override;
     // Requests whose replies carry no framing go through the link's queue,
     // which pauses and resumes its own stream around them: Sensors (142) or
     // Query List (149), answered by sensorReply(); Show Script (154),
@@ -62,7 +62,7 @@ public:
     void querySensors(const QList<int> &packetIds) { m_link.querySensors(packetIds); }
     void showScript() { m_link.showScript(); }
 
-    const oi::RobotProfile &robotProfile() const { return *m_profile; }
+    const oi::RobotProfile &robotProfile() const override { return *m_profile; }
     // False while the link has found a Roomba 500 or a Create 2 (they answer
     // alike) and nobody has said which: robotProfile() is then Create 2 by
     // assumption, and the odometry, which depends on it, waits.
@@ -72,10 +72,10 @@ public:
     // keeps it. Connects again if the link read it as the other one.
     void identifyAs(oi::ProfileId profile);
     // Values as the firmware meant them: corrected, like frameReceived() and the history.
-    const oi::SensorSnapshot &latest() const { return m_latest; }
+    const oi::SensorSnapshot &latest() const override { return m_latest; }
     // Counts snapshots, so a display timer can skip work when nothing changed.
     quint64 snapshotCount() const { return m_snapshotCount; }
-    oilink::LinkState state() const { return m_state; }
+    oilink::LinkState state() const override { return m_state; }
     bool isLive() const { return m_state == oilink::LinkState::Streaming; }
     const oilink::LinkStats &statistics() const { return m_stats; }
     QString firmwareRelease() const { return m_firmware.release(); }
@@ -164,6 +164,7 @@ private:
     SensorHistory m_history;
     RecentBytes m_recentBytes;
     RobotOdometry m_odometry;
-    // Last: it reads the members above, and is destroyed first.
+    // Owned here; it sees this robot only as its DriveTarget. Last: it reads
+    // the members above, and is destroyed first.
     TeleopController m_teleop{*this};
 };

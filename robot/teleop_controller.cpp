@@ -2,7 +2,6 @@
 #include "teleop_controller.h"
 
 #include "command_encoder.h"
-#include "robot_session.h"
 
 namespace {
 QByteArray toBytes(const oi::Bytes &bytes)
@@ -11,14 +10,13 @@ QByteArray toBytes(const oi::Bytes &bytes)
 }
 } // namespace
 
-TeleopController::TeleopController(RobotSession &session, QObject *parent) : QObject(parent), m_session(session)
+TeleopController::TeleopController(DriveTarget &robot, QObject *parent) : QObject(parent), m_robot(robot)
 {
     m_pending.setSingleShot(true);
     // A coarse timer could hold a command back by several milliseconds.
     m_pending.setTimerType(Qt::PreciseTimer);
     connect(&m_pending, &QTimer::timeout, this, &TeleopController::sendPending);
-    connect(&m_session, &RobotSession::stateChanged, this, &TeleopController::onStateChanged);
-    m_state = m_session.state();
+    m_state = m_robot.state();
     m_passive = robotIgnoresMotion();
 }
 
@@ -29,7 +27,7 @@ bool TeleopController::isMoving() const
 
 bool TeleopController::robotIgnoresMotion() const
 {
-    const oi::OiMode mode = m_session.latest().oiMode();
+    const oi::OiMode mode = m_robot.latest().oiMode();
     return mode == oi::OiMode::Passive || mode == oi::OiMode::Off;
 }
 
@@ -67,12 +65,12 @@ void TeleopController::sendPending()
 
 bool TeleopController::sendMotion(const MotionCommand &command)
 {
-    const oi::EncodeResult bytes = command.encode(oi::CommandEncoder(m_session.robotProfile()));
+    const oi::EncodeResult bytes = command.encode(oi::CommandEncoder(m_robot.robotProfile()));
     if (!bytes) {
         emit motionRefused(QString::fromStdString(bytes.error().describe()));
         return false;
     }
-    if (!m_session.send(toBytes(*bytes)))
+    if (!m_robot.send(toBytes(*bytes)))
         return false;
     m_sent = command;
     m_sinceSend.restart();
@@ -87,7 +85,7 @@ void TeleopController::sendStop(bool always)
     m_sent = m_wanted;
     if (!moving && !always)
         return;
-    if (m_session.send(toBytes(oi::CommandEncoder(m_session.robotProfile()).stopMotion())))
+    if (m_robot.send(toBytes(oi::CommandEncoder(m_robot.robotProfile()).stopMotion())))
         m_sinceSend.restart();
 }
 
@@ -111,9 +109,9 @@ void TeleopController::stopAll()
 {
     // Stop all also ends a Create's script, which would otherwise drive on
     // after the stop (ERRATA 20).
-    const oi::Bytes endScript = oi::CommandEncoder(m_session.robotProfile()).endScript();
+    const oi::Bytes endScript = oi::CommandEncoder(m_robot.robotProfile()).endScript();
     if (!endScript.empty())
-        m_session.send(toBytes(endScript));
+        m_robot.send(toBytes(endScript));
     sendStop(true);
     emit motionStopped();
 }
@@ -127,9 +125,9 @@ void TeleopController::stopBeforeQuit()
 
 void TeleopController::enterSafe()
 {
-    const oi::EncodeResult safe = oi::CommandEncoder(m_session.robotProfile()).safe();
+    const oi::EncodeResult safe = oi::CommandEncoder(m_robot.robotProfile()).safe();
     if (safe)
-        m_session.send(toBytes(*safe));
+        m_robot.send(toBytes(*safe));
 }
 
 void TeleopController::checkMode()
@@ -147,7 +145,7 @@ void TeleopController::checkMode()
     emit passiveChanged(passive);
 }
 
-void TeleopController::onStateChanged(oilink::LinkState state)
+void TeleopController::linkStateChanged(oilink::LinkState state)
 {
     const oilink::LinkState previous = m_state;
     m_state = state;

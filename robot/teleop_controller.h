@@ -1,14 +1,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "drive_target.h"
 #include "motion_command.h"
 #include "robot_link_thread.h"
 
 #include <QElapsedTimer>
 #include <QObject>
 #include <QTimer>
-
-class RobotSession;
 
 // The sending rules for motion, in one place, for every input (drive pad,
 // keyboard, gamepad). Lives in the GUI thread next to the session.
@@ -27,7 +26,7 @@ public:
     // queues bytes behind the serial line.
     static constexpr int kMinIntervalMs = 15;
 
-    explicit TeleopController(RobotSession &session, QObject *parent = nullptr);
+    explicit TeleopController(DriveTarget &robot, QObject *parent = nullptr);
 
     // Motion is refused: the robot is in Passive or Off mode.
     bool isPassive() const { return m_passive; }
@@ -52,6 +51,9 @@ public slots:
     // display timer calls it. Safe mode dropping to Passive by itself (a
     // cliff, a wheel drop) ends the motion.
     void checkMode();
+    // The robot's link changed state (its owner says so, before anyone else
+    // hears of it): stale data or a lost link stop the motion.
+    void linkStateChanged(oilink::LinkState state);
 
 signals:
     void passiveChanged(bool passive);
@@ -61,14 +63,13 @@ signals:
     void motionRefused(const QString &reason);
 
 private:
-    void onStateChanged(oilink::LinkState state);
     void sendPending();
     bool sendMotion(const MotionCommand &command);
     // Sends stopMotion(); with `always`, even when nothing is moving.
     void sendStop(bool always);
     bool robotIgnoresMotion() const;
 
-    RobotSession &m_session;
+    DriveTarget &m_robot;
     QTimer m_pending;
     QElapsedTimer m_sinceSend;
     MotionCommand m_wanted;

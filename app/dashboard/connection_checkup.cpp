@@ -6,6 +6,7 @@
 #include "doctor_details.h"
 #include "profile_probe.h"
 #include "robot_session.h"
+#include "saved_robots.h"
 #include "transport.h"
 
 #include <QMessageBox>
@@ -14,9 +15,10 @@
 #include <QTimer>
 
 namespace {
-QString settingsKey(const QString &port)
+// Per robot, as its firmware corrections are kept (robotIdentity()).
+QString settingsKey(const oilink::LinkSettings &robot)
 {
-    return QStringLiteral("connection/profileOfPort/") + QString(port).replace(QLatin1Char('/'), QLatin1Char('_'));
+    return QStringLiteral("connection/profileOf/") + robotIdentity(robot).replace(QLatin1Char('/'), QLatin1Char('_'));
 }
 } // namespace
 
@@ -38,7 +40,7 @@ ConnectionCheckup::ConnectionCheckup(RobotSession &session, DoctorDetails &detai
         const oilink::LinkSettings &s = m_session.settings();
         if (state == oilink::LinkState::Streaming && s.profile && *s.profile != oi::ProfileId::Create1
             && (s.transport == oilink::TransportKind::Serial || s.transport == oilink::TransportKind::Tcp))
-            rememberProfile(s.describe(), *s.profile);
+            rememberProfile(s, *s.profile);
     });
 }
 
@@ -57,28 +59,28 @@ void ConnectionCheckup::identify()
 std::optional<oi::ProfileId> ConnectionCheckup::whichRobot(const oilink::LinkSettings &settings)
 {
     const QString port = settings.describe();
-    std::optional<oi::ProfileId> which = rememberedProfile(port);
+    std::optional<oi::ProfileId> which = rememberedProfile(settings);
     if (!which && m_askWhich) {
         m_asking = true;
         which = m_askWhich(m_session.name().isEmpty() ? port : tr("%1 on %2").arg(m_session.name(), port));
         m_asking = false;
     }
     if (which)
-        rememberProfile(port, *which);
+        rememberProfile(settings, *which);
     return which;
 }
 
-std::optional<oi::ProfileId> ConnectionCheckup::rememberedProfile(const QString &port)
+std::optional<oi::ProfileId> ConnectionCheckup::rememberedProfile(const oilink::LinkSettings &robot)
 {
-    const QString key = QSettings().value(settingsKey(port)).toString();
+    const QString key = QSettings().value(settingsKey(robot)).toString();
     if (const oi::RobotProfile *p = oi::profileByKey(key.toStdString()))
         return p->id;
     return std::nullopt;
 }
 
-void ConnectionCheckup::rememberProfile(const QString &port, oi::ProfileId profile)
+void ConnectionCheckup::rememberProfile(const oilink::LinkSettings &robot, oi::ProfileId profile)
 {
-    QSettings().setValue(settingsKey(port), QString::fromUtf8(oi::profile(profile).key.data(),
+    QSettings().setValue(settingsKey(robot), QString::fromUtf8(oi::profile(profile).key.data(),
                                                               qsizetype(oi::profile(profile).key.size())));
 }
 

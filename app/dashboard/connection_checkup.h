@@ -40,9 +40,9 @@ public:
     ~ConnectionCheckup() override;
 
     bool isRunning() const { return m_doctor != nullptr; }
-    // The profile remembered for this port, if the user named one.
-    static std::optional<oi::ProfileId> rememberedProfile(const QString &port);
-    static void rememberProfile(const QString &port, oi::ProfileId profile);
+    // The profile remembered for this robot (its port or bridge), if the user named one.
+    static std::optional<oi::ProfileId> rememberedProfile(const oilink::LinkSettings &robot);
+    static void rememberProfile(const oilink::LinkSettings &robot, oi::ProfileId profile);
     // Runs the check now (also what happens on "no data").
     void run();
 

@@ -100,17 +100,18 @@ private slots:
 
     void twoBadFilesInOneSecondAreBothKept()
     {
-        writeFile("[General]\nsettingsVersion=2\n");
+        // Sizes unlike each other and unlike the fresh file each check writes
+        // ("settingsVersion=1"): QSettings rereads a file only when its size
+        // or time changed, and writes within one millisecond share a time.
+        writeFile("[General]\nsettingsVersion=22\n");
         const QString first = SettingsFile::check().keptAs;
-        // Another size: QSettings rereads a file whose size or time changed, and
-        // two writes within a millisecond can share a time.
-        writeFile("[General]\nsettingsVersion=30\n");
+        writeFile("[General]\nsettingsVersion=333\n");
         const QString second = SettingsFile::check().keptAs;
         QVERIFY(!first.isEmpty());
         QVERIFY(!second.isEmpty());
         QVERIFY(first != second);
-        QCOMPARE(fileContent(first), QByteArray("[General]\nsettingsVersion=2\n"));
-        QCOMPARE(fileContent(second), QByteArray("[General]\nsettingsVersion=30\n"));
+        QCOMPARE(fileContent(first), QByteArray("[General]\nsettingsVersion=22\n"));
+        QCOMPARE(fileContent(second), QByteArray("[General]\nsettingsVersion=333\n"));
     }
 };
 

@@ -5074,16 +5074,16 @@ Gesendet: %2</translation>
         <translation>Roomba 500 oder Create 2</translation>
     </message>
     <message>
-        <source>A Roomba 500 or a Create 2: they answer alike, and their encoders differ. Say which it is.</source>
-        <translation>Ein Roomba 500 oder ein Create 2: Beide antworten gleich, ihre Encoder unterscheiden sich. Bitte angeben, welcher es ist.</translation>
-    </message>
-    <message>
         <source>The robot answers at %1 as a %2.</source>
         <translation>Der Roboter antwortet bei %1 als %2.</translation>
     </message>
     <message>
         <source>Bytes come back, but they make no sense. This connection cannot change the bridge&apos;s rate: the robot may talk at another baud than the bridge&apos;s serial port (set the bridge to the robot&apos;s rate, or use its RFC 2217 telnet mode so that each rate can be tried), or the device is not an Open Interface robot.</source>
         <translation>Es kommen Bytes zurück, aber sie ergeben keinen Sinn. Diese Verbindung kann die Rate der Brücke nicht ändern: Der Roboter spricht vielleicht mit einer anderen Baudrate als die serielle Schnittstelle der Brücke (stellen Sie die Brücke auf die Rate des Roboters oder nutzen Sie ihren RFC-2217-Telnet-Modus, damit jede Rate versucht werden kann), oder das Gerät ist kein Open-Interface-Roboter.</translation>
+    </message>
+    <message>
+        <source>The robot answers at %1 as a Roomba 500 or a Create 2. The two answer alike but read their wheel encoders the other way round: name which it is.</source>
+        <translation>Der Roboter antwortet mit %1 als Roomba 500 oder Create 2. Beide antworten gleich, lesen ihre Radencoder aber umgekehrt: Geben Sie an, welcher es ist.</translation>
     </message>
 </context>
 <context>

@@ -5073,16 +5073,16 @@ Enviado: %2</translation>
         <translation>Roomba 500 o Create 2</translation>
     </message>
     <message>
-        <source>A Roomba 500 or a Create 2: they answer alike, and their encoders differ. Say which it is.</source>
-        <translation>Un Roomba 500 o un Create 2: responden igual y sus codificadores difieren. Indique cuál es.</translation>
-    </message>
-    <message>
         <source>The robot answers at %1 as a %2.</source>
         <translation>El robot responde a %1 como %2.</translation>
     </message>
     <message>
         <source>Bytes come back, but they make no sense. This connection cannot change the bridge&apos;s rate: the robot may talk at another baud than the bridge&apos;s serial port (set the bridge to the robot&apos;s rate, or use its RFC 2217 telnet mode so that each rate can be tried), or the device is not an Open Interface robot.</source>
         <translation>Llegan bytes, pero no tienen sentido. Esta conexión no puede cambiar la velocidad del puente: puede que el robot hable a otros baudios que el puerto serie del puente (ajuste el puente a la velocidad del robot o use su modo telnet RFC 2217 para poder probar cada velocidad), o el dispositivo no es un robot Open Interface.</translation>
+    </message>
+    <message>
+        <source>The robot answers at %1 as a Roomba 500 or a Create 2. The two answer alike but read their wheel encoders the other way round: name which it is.</source>
+        <translation>El robot responde a %1 como un Roomba 500 o un Create 2. Los dos responden igual, pero leen sus codificadores de rueda al revés: indique cuál es.</translation>
     </message>
 </context>
 <context>

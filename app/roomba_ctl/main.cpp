@@ -82,7 +82,9 @@ Commands:
       Find out why a robot gives no valid data, and print what was tried:
       each baud with and without Start, a BRC pulse to wake it, the three
       pulses for 19200 baud, then which robot answers. Exit status 0 when
-      all is well, 1 with the cause on the last line.
+      the robot answers as it is (woken by a pulse included; a Roomba 500
+      or Create 2 found without --profile is named on standard error with
+      the flag to give), 1 with what to change on the last line.
         roomba-ctl doctor --port /dev/ttyUSB0
   csv RECORDING
       Print a recording (.oirec, from the dashboard or its --record) as CSV:
@@ -607,7 +609,13 @@ int runDoctor(int argc, char **argv, const std::vector<std::string> &args)
                          if (report.finding == oilink::ConnectionDoctor::Finding::RoombaOrCreate2)
                              std::cerr << "roomba-ctl: " << toStd(CommandSender::roombaOrCreate2Note(o.settings.describe(), false))
                                        << "\n";
-                         status = report.finding == oilink::ConnectionDoctor::Finding::Healthy ? 0 : 1;
+                         // 0: the robot answers as it is now (asked for nothing, woken, or
+                         // only to be named); 1: something to change first.
+                         using Finding = oilink::ConnectionDoctor::Finding;
+                         status = report.finding == Finding::Healthy || report.finding == Finding::WokeAfterPulse
+                                          || report.finding == Finding::RoombaOrCreate2
+                                      ? 0
+                                      : 1;
                          QCoreApplication::exit(status);
                      });
     std::cout << "Checking " << toStd(o.settings.describe()) << ":" << std::endl;

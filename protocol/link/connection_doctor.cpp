@@ -260,8 +260,10 @@ void ConnectionDoctor::answered(int baud, Finding cause)
                                                 .arg(roomba ? tr("Roomba 500 or Create 2") : profileName(found),
                                                      profileName(*m_askedProfile)));
         } else if (!m_askedProfile && roomba) {
-            conclude(Finding::RoombaOrCreate2, tr("A Roomba 500 or a Create 2: they answer alike, and their "
-                                                  "encoders differ. Say which it is."));
+            conclude(Finding::RoombaOrCreate2, tr("The robot answers at %1 as a Roomba 500 or a Create 2. The "
+                                                  "two answer alike but read their wheel encoders the other way "
+                                                  "round: name which it is.")
+                                                   .arg(baudName(baud)));
         } else {
             conclude(Finding::Healthy, tr("The robot answers at %1 as a %2.")
                                            .arg(baudName(baud), profileName(m_askedProfile.value_or(found))));

@@ -178,7 +178,8 @@ private slots:
         line.robot().receive(kStart);
         const auto r = diagnose(line, std::nullopt);
         QVERIFY2(r.finding == Finding::RoombaOrCreate2, qPrintable(explain(r)));
-        QVERIFY(r.summary.contains(QStringLiteral("Say which it is")));
+        QVERIFY2(r.summary.contains(QStringLiteral("as a Roomba 500 or a Create 2")) && r.summary.contains(QStringLiteral("name which it is")),
+                 qPrintable(r.summary));
         // Named, it is healthy: never Create 2 by itself.
         SimLineTransport named(oi::ProfileId::Roomba500, {});
         QCOMPARE(diagnose(named, oi::ProfileId::Roomba500).finding, Finding::Healthy);

@@ -436,7 +436,11 @@ private slots:
         QVERIFY(!frame.contains(QStringLiteral("right_encoder_counts")));
         QVERIFY(json(o.lines[3])[QStringLiteral("statistics")].toObject()[QStringLiteral("profileAssumed")].toBool());
 
+        // It answers: status 0, and the flag to name it by.
         o = run({QStringLiteral("doctor"), QStringLiteral("--port"), sim.path()});
+        QCOMPARE(o.status, 0);
+        QVERIFY2(o.lines.last().startsWith(QStringLiteral("The robot answers at 115200 baud as a Roomba 500 or a Create 2.")),
+                 qPrintable(o.lines.join('\n')));
         QVERIFY2(o.err.contains(advice), qPrintable(o.err));
     }
 
@@ -446,7 +450,7 @@ private slots:
         QVERIFY(!sim.path().isEmpty());
         const Outcome o = run({QStringLiteral("doctor"), QStringLiteral("--port"), sim.path(), QStringLiteral("--profile"),
                                QStringLiteral("create2")});
-        QCOMPARE(o.status, 1);
+        QCOMPARE(o.status, 0); // woken, it answers
         QVERIFY2(o.lines.first().startsWith(QStringLiteral("Checking ")), qPrintable(o.lines.join('\n')));
         QVERIFY2(o.lines.contains(QStringLiteral("  Pulsed the BRC pin to wake the robot.")), qPrintable(o.lines.join('\n')));
         QCOMPARE(o.lines.last(), QStringLiteral("The robot was asleep; a BRC pulse woke it, and it talks at 115200 baud."));

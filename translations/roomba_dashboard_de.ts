@@ -3982,6 +3982,22 @@ Gesendet: %2</translation>
         <source>Recording stopped: %1</source>
         <translation>Aufzeichnung beendet: %1</translation>
     </message>
+    <message>
+        <source>A recording is replayed: there is no robot to command. Select a connected robot.</source>
+        <translation>Eine Aufzeichnung wird abgespielt: Es gibt keinen Roboter, dem man Befehle geben kann. Wählen Sie einen verbundenen Roboter.</translation>
+    </message>
+    <message>
+        <source>Not connected: choose the robot&apos;s connection above and press Connect.</source>
+        <translation>Nicht verbunden: Wählen Sie oben die Verbindung des Roboters und drücken Sie Verbinden.</translation>
+    </message>
+    <message>
+        <source>Connecting to the robot: the commands work once it answers.</source>
+        <translation>Verbindung zum Roboter wird aufgebaut: Die Befehle wirken, sobald er antwortet.</translation>
+    </message>
+    <message>
+        <source>The link to the robot is lost: the commands work again once it reconnects.</source>
+        <translation>Die Verbindung zum Roboter ist verloren: Die Befehle wirken wieder, sobald sie zurück ist.</translation>
+    </message>
 </context>
 <context>
     <name>SensorGauges</name>

@@ -3981,6 +3981,22 @@ Enviado: %2</translation>
         <source>Recording stopped: %1</source>
         <translation>Grabación detenida: %1</translation>
     </message>
+    <message>
+        <source>A recording is replayed: there is no robot to command. Select a connected robot.</source>
+        <translation>Se reproduce una grabación: no hay ningún robot al que dar órdenes. Seleccione un robot conectado.</translation>
+    </message>
+    <message>
+        <source>Not connected: choose the robot&apos;s connection above and press Connect.</source>
+        <translation>Sin conexión: elija arriba la conexión del robot y pulse Conectar.</translation>
+    </message>
+    <message>
+        <source>Connecting to the robot: the commands work once it answers.</source>
+        <translation>Conectando con el robot: las órdenes funcionan en cuanto responda.</translation>
+    </message>
+    <message>
+        <source>The link to the robot is lost: the commands work again once it reconnects.</source>
+        <translation>Se perdió el enlace con el robot: las órdenes vuelven a funcionar en cuanto se reconecte.</translation>
+    </message>
 </context>
 <context>
     <name>SensorGauges</name>

@@ -166,6 +166,26 @@ void SelectedRobotView::applyProfile(oi::ProfileId id)
     m_shownSnapshot = ~0ull;
 }
 
+QString SelectedRobotView::whyNoCommands(const RobotSession &robot)
+{
+    if (robot.isReplay())
+        return tr("A recording is replayed: there is no robot to command. Select a connected robot.");
+    if (!robot.isConnected())
+        return tr("Not connected: choose the robot's connection above and press Connect.");
+    switch (robot.state()) {
+    case oilink::LinkState::Streaming:
+    case oilink::LinkState::Stale:
+        return {};
+    case oilink::LinkState::Connecting:
+        return tr("Connecting to the robot: the commands work once it answers.");
+    case oilink::LinkState::Closed:
+    case oilink::LinkState::Lost:
+    case oilink::LinkState::Reconnecting:
+        break;
+    }
+    return tr("The link to the robot is lost: the commands work again once it reconnects.");
+}
+
 void SelectedRobotView::showState(oilink::LinkState state)
 {
     m_views.status->showState(state);
@@ -200,6 +220,7 @@ void SelectedRobotView::refresh()
         v.drivePad->setEnabled(live && !robot.isReplay());
         v.status->showLive(live, robot.isReplay());
     }
+    v.modePanel->setUnavailable(whyNoCommands(robot));
     // Repaint only what changed: a robot at rest streams the same values.
     if (robot.snapshotCount() != m_shownSnapshot) {
         m_shownSnapshot = robot.snapshotCount();

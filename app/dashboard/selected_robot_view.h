@@ -85,6 +85,9 @@ public:
     // The next refresh() redraws even what looks unchanged (a new connection, a new language).
     void forgetShown();
 
+    // Why no command can reach `robot` now, or empty when one can.
+    static QString whyNoCommands(const RobotSession &robot);
+
 signals:
     // For the status bar, a few seconds.
     void message(const QString &text);

@@ -172,6 +172,13 @@ private slots:
         // Closing leaves the robot stopped and in Passive mode.
         window.session().closeAndWait();
         QCOMPARE(text(recording.take().join()), QString("150 0 137 0 0 0 0 138 0 128"));
+        // No link now: the mode buttons are off and say why, and send nothing.
+        window.refreshDisplay();
+        QVERIFY(!window.modePanel()->button("safe")->isEnabled());
+        QVERIFY2(window.modePanel()->button("safe")->toolTip().contains("Not connected"),
+                 qPrintable(window.modePanel()->button("safe")->toolTip()));
+        QTest::mouseClick(window.modePanel()->button("safe"), Qt::LeftButton);
+        QCOMPARE(recording.count(), qsizetype(0));
     }
 
     // Robot → Read firmware version… on the virtual robot: it asks first,
@@ -516,6 +523,10 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(window.session().snapshotCount() > 5, 10000);
         window.refreshDisplay();
         QVERIFY2(window.statusText().contains("REPLAY"), qPrintable(window.statusText()));
+        // A replay has no robot to command: the mode buttons say so.
+        QVERIFY(!window.modePanel()->button("safe")->isEnabled());
+        QVERIFY2(window.modePanel()->button("safe")->toolTip().contains("recording"),
+                 qPrintable(window.modePanel()->button("safe")->toolTip()));
 
         // Pause, then a frame forward and back with the bar's own buttons.
         auto *playPause = window.replayBar()->findChild<QToolButton *>("replayPlayPause");

@@ -145,6 +145,32 @@ private slots:
         QVERIFY(panel.button("demo")->toolTip().contains("not available on the Roomba 600 / Create 2"));
     }
 
+    // Without a robot to reach, nothing is accepted silently: every button
+    // is disabled and says why; with one again, they work as before.
+    void noRobotToCommandDisablesEveryButton()
+    {
+        ModePanel panel;
+        QSignalSpy sent(&panel, &ModePanel::sendRequested);
+        const QString why = "Not connected: connect to the robot first.";
+        panel.setUnavailable(why);
+        for (const char *name : {"start", "passive", "safe", "full", "stop", "clean", "seek-dock"}) {
+            QVERIFY2(!panel.button(name)->isEnabled(), name);
+            QCOMPARE(panel.button(name)->toolTip(), why);
+        }
+        QTest::mouseClick(panel.button("safe"), Qt::LeftButton);
+        QCOMPARE(sent.count(), 0);
+        // A command the profile lacks still says that first.
+        panel.setProfile(profile(ProfileId::Create1));
+        QVERIFY(panel.button("clean")->toolTip().contains("is not available on the Create"));
+
+        panel.setProfile(profile(ProfileId::Create2));
+        panel.setUnavailable({});
+        QVERIFY(panel.button("safe")->isEnabled());
+        QTest::mouseClick(panel.button("safe"), Qt::LeftButton);
+        QCOMPARE(sent.count(), 1);
+        QCOMPARE(bytesText(sent.at(0)), QString("131"));
+    }
+
     void highlightsCurrentMode()
     {
         ModePanel panel;

@@ -155,15 +155,24 @@ void ModePanel::refreshButtons()
         QPushButton *b = it.key();
         const oi::CommandSpec &spec = oi::commandSpec(it.value());
         const bool available = m_profile->has(it.value());
-        b->setEnabled(available);
+        b->setEnabled(available && m_unavailable.isEmpty());
         // The document's command title stays as printed: it names the protocol command.
         const QString opcode = tr("%1 (opcode %2)").arg(QString::fromUtf8(spec.title.data(), spec.title.size()))
                                    .arg(spec.opcode);
-        b->setToolTip(available ? opcode
-                                : tr("%1 is not available on the %2")
-                                      .arg(opcode, QString::fromUtf8(m_profile->name.data(), m_profile->name.size())));
+        b->setToolTip(!available ? tr("%1 is not available on the %2")
+                                       .arg(opcode, QString::fromUtf8(m_profile->name.data(), m_profile->name.size()))
+                      : m_unavailable.isEmpty() ? opcode
+                                                : m_unavailable);
     }
-    m_demo->setEnabled(m_profile->has(oi::Command::Demo));
+    m_demo->setEnabled(m_profile->has(oi::Command::Demo) && m_unavailable.isEmpty());
+}
+
+void ModePanel::setUnavailable(const QString &reason)
+{
+    if (reason == m_unavailable)
+        return;
+    m_unavailable = reason;
+    refreshButtons();
 }
 
 void ModePanel::request(oi::Command command)

@@ -29,6 +29,9 @@ public:
     void setSnapshot(const oi::SensorSnapshot &snapshot);
     // Shown after Reset: the banner's firmware release, e.g. "release-3.4.1".
     void setFirmware(const QString &release);
+    // Why no command can reach a robot now (no link, a replay), or empty when
+    // one can: every button is then disabled, with the reason as its tooltip.
+    void setUnavailable(const QString &reason);
 
     // Asked before entering Full mode; returns true to go ahead. Replaceable
     // so tests need not click a dialog.
@@ -64,6 +67,7 @@ private:
     std::optional<oi::OiMode> m_mode;
     bool m_passiveRequested = false;
     QString m_firmware;
+    QString m_unavailable;
     std::optional<oi::SensorSnapshot> m_safetyDropFrame; // the frame that explains the drop shown
     std::function<bool(QWidget *)> m_confirmFull;
 };

@@ -4367,6 +4367,10 @@ Gesendet: %2</translation>
         <source>%1 (unreliable)</source>
         <translation>%1 (unzuverlässig)</translation>
     </message>
+    <message>
+        <source>Not live: no fresh data</source>
+        <translation>Nicht live: keine frischen Daten</translation>
+    </message>
 </context>
 <context>
     <name>SettingsFile</name>

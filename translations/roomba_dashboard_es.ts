@@ -4366,6 +4366,10 @@ Enviado: %2</translation>
         <source>%1 (unreliable)</source>
         <translation>%1 (no fiable)</translation>
     </message>
+    <message>
+        <source>Not live: no fresh data</source>
+        <translation>No en directo: sin datos nuevos</translation>
+    </message>
 </context>
 <context>
     <name>SettingsFile</name>

@@ -215,6 +215,7 @@ void SelectedRobotView::refresh()
         m_liveFlagOutdated = false;
         v.diagram->setStale(!live);
         v.gauges->setStale(!live);
+        v.plots->setStale(!live);
         // No driving, and no Enter Safe, without live data to see the robot
         // by; a replay has no robot to drive.
         v.drivePad->setEnabled(live && !robot.isReplay());

@@ -342,6 +342,23 @@ private slots:
         QCOMPARE(columns.columns().size(), std::size_t(51));
     }
 
+    // The badge says "Live" only while fresh data comes: never beside a
+    // STALE banner at the end of a replay.
+    void theBadgeSaysLiveOnlyWhileDataIsFresh()
+    {
+        Scene scene({22});
+        SensorPlots &plots = scene.plots;
+        QCOMPARE(plots.statusText(), QString("Live"));
+        plots.setStale(true);
+        QCOMPARE(plots.statusText(), QString("Not live: no fresh data"));
+        plots.setPaused(true);
+        QVERIFY(plots.statusText().startsWith("Paused"));
+        plots.setPaused(false);
+        QCOMPARE(plots.statusText(), QString("Not live: no fresh data"));
+        plots.setStale(false);
+        QCOMPARE(plots.statusText(), QString("Live"));
+    }
+
     void pauseStopsFollowingAndAllowsPanning()
     {
         Scene scene({22});

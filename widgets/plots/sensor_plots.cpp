@@ -127,6 +127,7 @@ SensorPlots::SensorPlots(QWidget *parent)
     m_windowLabel->setBuddy(m_windowBox);
 
     m_status = new QLabel(this);
+    m_status->setObjectName(QStringLiteral("plotStatus"));
     m_status->setMargin(3);
 
     m_addButton = new QPushButton(this);
@@ -376,6 +377,19 @@ ChannelChooser *SensorPlots::channelChooser(int plotIndex) const
 {
     return plotIndex >= 0 && plotIndex < plotCount() ? m_panels[std::size_t(plotIndex)]->chooser
                                                      : nullptr;
+}
+
+void SensorPlots::setStale(bool stale)
+{
+    if (stale == m_stale)
+        return;
+    m_stale = stale;
+    applyPaused();
+}
+
+QString SensorPlots::statusText() const
+{
+    return m_status->text();
 }
 
 void SensorPlots::setPaused(bool paused)
@@ -868,10 +882,13 @@ void SensorPlots::applyPaused()
     m_pauseButton->setChecked(m_paused);
     m_pauseButton->blockSignals(false);
     m_pauseButton->setText(m_paused ? tr("Resume") : tr("Pause"));
-    const display::State state = m_paused ? display::State::Warning : display::State::Active;
+    const display::State state = m_paused  ? display::State::Warning
+                                 : m_stale ? display::State::Stale
+                                           : display::State::Active;
     const QPalette pal = palette();
-    m_status->setText(m_paused ? tr("Paused: drag or arrows pan, wheel or +/- zoom, Space resumes")
-                               : tr("Live"));
+    m_status->setText(m_paused  ? tr("Paused: drag or arrows pan, wheel or +/- zoom, Space resumes")
+                      : m_stale ? tr("Not live: no fresh data")
+                                : tr("Live"));
     m_status->setStyleSheet(QStringLiteral("QLabel { background: %1; color: %2; border-radius: 3px; }")
                                 .arg(display::stateColor(state, pal).name(),
                                      display::textOn(state, pal).name()));

@@ -76,6 +76,10 @@ public:
 
     bool isPaused() const { return m_paused; }
     void setPaused(bool paused);
+    // No fresh data (the link is quiet, or a replay has ended): the badge that
+    // says "Live" while data flows says so instead.
+    void setStale(bool stale);
+    QString statusText() const;
     // The live window, bounded to kMinWindowSeconds .. kMaxWindowSeconds.
     void setWindowSeconds(double seconds);
     double windowSeconds() const { return m_windowSeconds; }
@@ -166,6 +170,7 @@ private:
     QAction *m_exportAll;
     QLabel *m_status;
     bool m_paused = false;
+    bool m_stale = false;
     double m_windowSeconds = 60.0;
     QCPRange m_timeRange{0.0, 60.0};
     bool m_syncing = false;

@@ -21,11 +21,6 @@ namespace {
 // Fast enough for an hour's JSON; higher levels cost more time than they save.
 constexpr int kZstdLevel = 3;
 
-QString tr(const char *text)
-{
-    return QCoreApplication::translate("mcap::Writer", text);
-}
-
 template <typename T>
 void put(QByteArray &out, T value)
 {
@@ -237,7 +232,7 @@ bool Writer::closeChunk()
         return true;
     const std::optional<QByteArray> compressed = compress(m_options.compression, m_chunk);
     if (!compressed) {
-        m_error = tr("cannot compress a chunk with %1").arg(compressionName(m_options.compression));
+        m_error = QCoreApplication::translate("mcap::Writer", "cannot compress a chunk with %1").arg(compressionName(m_options.compression));
         return false;
     }
     QByteArray c;

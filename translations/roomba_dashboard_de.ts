@@ -3053,6 +3053,38 @@ GPL-3.0-or-later.</translation>
         <source>Recording and replay</source>
         <translation>Aufzeichnung und Wiedergabe</translation>
     </message>
+    <message>
+        <source>Export recording as &amp;MCAP…</source>
+        <translation>Aufzeichnung als &amp;MCAP exportieren…</translation>
+    </message>
+    <message>
+        <source>For Foxglove, Lichtblick and PlotJuggler</source>
+        <translation>Für Foxglove, Lichtblick und PlotJuggler</translation>
+    </message>
+    <message>
+        <source>MCAP, zstd compression (*.mcap)</source>
+        <translation>MCAP, mit zstd komprimiert (*.mcap)</translation>
+    </message>
+    <message>
+        <source>MCAP, lz4 compression: quicker to open (*.mcap)</source>
+        <translation>MCAP, mit lz4 komprimiert: schneller zu öffnen (*.mcap)</translation>
+    </message>
+    <message>
+        <source>Export recording as MCAP</source>
+        <translation>Aufzeichnung als MCAP exportieren</translation>
+    </message>
+    <message>
+        <source>Save MCAP as</source>
+        <translation>MCAP speichern unter</translation>
+    </message>
+    <message>
+        <source>The recording is damaged; %1 holds everything up to the damage.
+
+%2</source>
+        <translation>Die Aufzeichnung ist beschädigt; %1 enthält alles bis zur beschädigten Stelle.
+
+%2</translation>
+    </message>
 </context>
 <context>
     <name>RemoteRobot</name>
@@ -4995,6 +5027,13 @@ Gesendet: %2</translation>
     <message>
         <source>%1, unreliable: %2</source>
         <translation>%1, unzuverlässig: %2</translation>
+    </message>
+</context>
+<context>
+    <name>mcap::Writer</name>
+    <message>
+        <source>cannot compress a chunk with %1</source>
+        <translation>ein Block lässt sich nicht mit %1 komprimieren</translation>
     </message>
 </context>
 <context>

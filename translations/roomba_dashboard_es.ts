@@ -3052,6 +3052,38 @@ GPL-3.0-or-later.</translation>
         <source>Recording and replay</source>
         <translation>Grabación y reproducción</translation>
     </message>
+    <message>
+        <source>Export recording as &amp;MCAP…</source>
+        <translation>Exportar grabación como &amp;MCAP…</translation>
+    </message>
+    <message>
+        <source>For Foxglove, Lichtblick and PlotJuggler</source>
+        <translation>Para Foxglove, Lichtblick y PlotJuggler</translation>
+    </message>
+    <message>
+        <source>MCAP, zstd compression (*.mcap)</source>
+        <translation>MCAP, compresión zstd (*.mcap)</translation>
+    </message>
+    <message>
+        <source>MCAP, lz4 compression: quicker to open (*.mcap)</source>
+        <translation>MCAP, compresión lz4: se abre más rápido (*.mcap)</translation>
+    </message>
+    <message>
+        <source>Export recording as MCAP</source>
+        <translation>Exportar grabación como MCAP</translation>
+    </message>
+    <message>
+        <source>Save MCAP as</source>
+        <translation>Guardar MCAP como</translation>
+    </message>
+    <message>
+        <source>The recording is damaged; %1 holds everything up to the damage.
+
+%2</source>
+        <translation>La grabación está dañada; %1 contiene todo hasta el daño.
+
+%2</translation>
+    </message>
 </context>
 <context>
     <name>RemoteRobot</name>
@@ -4994,6 +5026,13 @@ Enviado: %2</translation>
     <message>
         <source>%1, unreliable: %2</source>
         <translation>%1, no fiable: %2</translation>
+    </message>
+</context>
+<context>
+    <name>mcap::Writer</name>
+    <message>
+        <source>cannot compress a chunk with %1</source>
+        <translation>no se puede comprimir un bloque con %1</translation>
     </message>
 </context>
 <context>

@@ -293,6 +293,7 @@ void MainWindow::buildMenus()
     m_fileMenu->addAction(m_recording->recordAction());
     m_fileMenu->addAction(m_recording->openAction());
     m_fileMenu->addAction(m_recording->exportCsvAction());
+    m_fileMenu->addAction(m_recording->exportMcapAction());
     m_fileMenu->addSeparator();
     m_fileMenu->addAction(m_roomActions->openAction());
     m_fileMenu->addMenu(m_roomActions->shippedMenu());

@@ -2,11 +2,13 @@
 #include "recording_actions.h"
 
 #include "recording_file.h"
+#include "recording_mcap.h"
 #include "replay_bar.h"
 #include "robot_fleet.h"
 #include "robot_session.h"
 
 #include <QAction>
+#include <QApplication>
 #include <QDateTime>
 #include <QDir>
 #include <QFileDialog>
@@ -32,6 +34,9 @@ RecordingActions::RecordingActions(RobotFleet &fleet, QWidget *dialogParent)
     m_exportCsv = new QAction(this);
     m_exportCsv->setObjectName("exportCsvAction");
     connect(m_exportCsv, &QAction::triggered, this, &RecordingActions::chooseRecordingToExport);
+    m_exportMcap = new QAction(this);
+    m_exportMcap->setObjectName("exportMcapAction");
+    connect(m_exportMcap, &QAction::triggered, this, &RecordingActions::chooseRecordingToExportMcap);
 
     m_toolBar = new QToolBar(dialogParent);
     m_toolBar->setObjectName("recordingToolBar");
@@ -63,6 +68,8 @@ void RecordingActions::retranslate()
     m_open->setText(tr("&Open recording…"));
     m_open->setToolTip(tr("Replay a recording as a robot of its own"));
     m_exportCsv->setText(tr("&Export recording as CSV…"));
+    m_exportMcap->setText(tr("Export recording as &MCAP…"));
+    m_exportMcap->setToolTip(tr("For Foxglove, Lichtblick and PlotJuggler"));
     m_toolBar->setWindowTitle(tr("Recording and replay"));
 }
 
@@ -161,20 +168,65 @@ void RecordingActions::chooseRecordingToOpen()
         QMessageBox::warning(m_dialogParent, tr("Open recording"), tr("This file cannot be replayed.\n\n%1").arg(error));
 }
 
-void RecordingActions::chooseRecordingToExport()
+std::pair<QString, QString> RecordingActions::chooseExportFiles(const QString &title, const QString &saveTitle,
+                                                               const QString &suffix, const QString &filters,
+                                                               QString *selectedFilter)
 {
-    const QString from = QFileDialog::getOpenFileName(m_dialogParent, tr("Export recording as CSV"), QString(),
+    const QString from = QFileDialog::getOpenFileName(m_dialogParent, title, QString(),
                                                       tr("Roomba Dashboard recordings (*.oirec);;All files (*)"));
     if (from.isEmpty())
-        return;
-    const QString to = QFileDialog::getSaveFileName(m_dialogParent, tr("Save CSV as"),
-                                                    QFileInfo(from).path() + '/' + QFileInfo(from).completeBaseName() + ".csv",
-                                                    tr("CSV files (*.csv)"));
+        return {};
+    const QString to = QFileDialog::getSaveFileName(
+        m_dialogParent, saveTitle, QFileInfo(from).path() + '/' + QFileInfo(from).completeBaseName() + suffix, filters,
+        selectedFilter);
+    if (to.isEmpty())
+        return {};
+    return {from, to};
+}
+
+void RecordingActions::chooseRecordingToExport()
+{
+    const auto [from, to] = chooseExportFiles(tr("Export recording as CSV"), tr("Save CSV as"), ".csv",
+                                              tr("CSV files (*.csv)"));
     if (to.isEmpty())
         return;
     const QString error = exportRecordingCsv(from, to);
     if (!error.isEmpty())
         QMessageBox::warning(m_dialogParent, tr("Export recording as CSV"), tr("Nothing was written.\n\n%1").arg(error));
+    else
+        emit message(tr("Wrote %1").arg(QDir::toNativeSeparators(to)));
+}
+
+QString RecordingActions::exportRecordingMcap(const QString &recordingPath, const QString &mcapPath,
+                                              mcap::Compression compression, QString *damage)
+{
+    std::optional<oilink::RecordingDamage> found;
+    const QString error = oilink::exportRecordingMcap(recordingPath, mcapPath, {compression, {}}, &found);
+    if (damage)
+        *damage = found && error.isEmpty() ? found->describe() : QString();
+    return error;
+}
+
+void RecordingActions::chooseRecordingToExportMcap()
+{
+    const QString zstd = tr("MCAP, zstd compression (*.mcap)");
+    const QString lz4 = tr("MCAP, lz4 compression: quicker to open (*.mcap)");
+    QString filter = zstd;
+    const auto [from, to] = chooseExportFiles(tr("Export recording as MCAP"), tr("Save MCAP as"), ".mcap",
+                                              zstd + ";;" + lz4, &filter);
+    if (to.isEmpty())
+        return;
+    QString damage;
+    QApplication::setOverrideCursor(Qt::WaitCursor);
+    const QString error =
+        exportRecordingMcap(from, to, filter == lz4 ? mcap::Compression::Lz4 : mcap::Compression::Zstd, &damage);
+    QApplication::restoreOverrideCursor();
+    if (!error.isEmpty())
+        QMessageBox::warning(m_dialogParent, tr("Export recording as MCAP"), tr("Nothing was written.\n\n%1").arg(error));
+    else if (!damage.isEmpty())
+        QMessageBox::warning(m_dialogParent, tr("Export recording as MCAP"),
+                             tr("The recording is damaged; %1 holds everything up to the damage.\n\n%2")
+                                 .arg(QDir::toNativeSeparators(to), damage));
     else
         emit message(tr("Wrote %1").arg(QDir::toNativeSeparators(to)));
 }

@@ -1,10 +1,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "mcap_writer.h"
 #include "replay_transport.h"
 
 #include <QObject>
 #include <QString>
+
+#include <utility>
 
 class QAction;
 class QToolBar;
@@ -12,7 +15,7 @@ class QWidget;
 class ReplayBar;
 class RobotFleet;
 
-// File → Record, Open recording… and Export recording as CSV…: the dialogs,
+// File → Record, Open recording…, Export recording as CSV… and as MCAP…: the dialogs,
 // and what each does to the robots. Recording acts on the selected robot; a
 // recording opens as a robot of its own in the list. The Recording and
 // replay toolbar holds Record, Open and, while a replay is selected, the
@@ -25,6 +28,7 @@ public:
     QAction *recordAction() const { return m_record; }
     QAction *openAction() const { return m_open; }
     QAction *exportCsvAction() const { return m_exportCsv; }
+    QAction *exportMcapAction() const { return m_exportMcap; }
     QToolBar *toolBar() const { return m_toolBar; }
     ReplayBar *replayBar() const { return m_replayBar; }
 
@@ -33,6 +37,10 @@ public:
     bool openRecording(const QString &path, QString *error = nullptr);
     // Writes one CSV row per frame of a recording; returns an error or "".
     static QString exportRecordingCsv(const QString &recordingPath, const QString &csvPath);
+    // Writes the recording as MCAP; returns an error or "". A damaged
+    // recording is written up to the damage, which `damage` then names.
+    static QString exportRecordingMcap(const QString &recordingPath, const QString &mcapPath,
+                                       mcap::Compression compression, QString *damage);
 
     // Record follows the selected robot: checked while it records, off for a
     // replay; the replay bar shows while a replay is selected.
@@ -47,12 +55,17 @@ private:
     void chooseRecordingFile(bool start);
     void chooseRecordingToOpen();
     void chooseRecordingToExport();
-
+    void chooseRecordingToExportMcap();
+    // The recording to export and where to write it; empty when cancelled.
+    std::pair<QString, QString> chooseExportFiles(const QString &title, const QString &saveTitle,
+                                                  const QString &suffix, const QString &filters,
+                                                  QString *selectedFilter = nullptr);
     RobotFleet &m_fleet;
     QWidget *m_dialogParent;
     QAction *m_record = nullptr;
     QAction *m_open = nullptr;
     QAction *m_exportCsv = nullptr;
+    QAction *m_exportMcap = nullptr;
     QToolBar *m_toolBar = nullptr;
     ReplayBar *m_replayBar = nullptr;
     QAction *m_replayBarAction = nullptr; // shows and hides the replay bar

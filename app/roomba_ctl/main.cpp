@@ -7,6 +7,7 @@
 #include "connection_doctor.h"
 #include "profile_probe.h"
 #include "recording_file.h"
+#include "recording_mcap.h"
 #include "robot_link.h"
 #include "robot_link_thread.h"
 #include "script_assembler.h"
@@ -90,6 +91,12 @@ Commands:
       Print a recording (.oirec, from the dashboard or its --record) as CSV:
       time_s, then one column per packet, one row per stream frame. A damaged
       recording prints up to the damage and says where it is on stderr.
+  mcap RECORDING -o OUT.mcap [--compression zstd|lz4|none]
+      Export a recording as MCAP for Foxglove, Lichtblick or PlotJuggler:
+      telemetry as JSON with a JSON Schema, the odometry pose, the bytes both
+      ways, events and mode changes as log messages (docs/mcap.md). zstd is
+      the default. A damaged recording is exported up to the damage, which
+      is named on stderr (exit status 1); OUT.mcap is never left half-written.
   --help, --version
 
 ROBOT is one of:
@@ -645,6 +652,43 @@ int recordingCsv(const std::vector<std::string> &args, std::size_t from)
     return 0;
 }
 
+int recordingMcap(const std::vector<std::string> &args, std::size_t from)
+{
+    std::string in, out;
+    oilink::McapExportOptions options;
+    for (std::size_t i = from; i < args.size(); ++i) {
+        const std::string &a = args[i];
+        if ((a == "-o" || a == "--output" || a == "--compression") && i + 1 == args.size())
+            return fail("mcap: " + a + " needs a value");
+        if (a == "-o" || a == "--output") {
+            out = args[++i];
+        } else if (a == "--compression") {
+            const std::string name = args[++i];
+            if (name.empty() || !mcap::compressionFromName(QString::fromStdString(name), &options.compression))
+                return fail("mcap: unknown compression '" + name + "'; use zstd, lz4 or none");
+        } else if (a.size() > 1 && a[0] == '-') {
+            return fail("mcap: unknown option '" + a + "'; try --help");
+        } else if (in.empty()) {
+            in = a;
+        } else {
+            return fail("mcap takes one recording file; '" + a + "' is a second");
+        }
+    }
+    if (in.empty() || out.empty())
+        return fail("mcap needs a recording file and -o OUT.mcap");
+    std::optional<oilink::RecordingDamage> damage;
+    const QString error = oilink::exportRecordingMcap(QString::fromStdString(in), QString::fromStdString(out),
+                                                      options, &damage);
+    if (!error.isEmpty())
+        return fail(error.toStdString() + "; nothing was written");
+    if (damage) {
+        std::cerr << "roomba-ctl: " << in << ": damaged: " << damage->describe().toStdString()
+                  << "; exported up to there\n";
+        return 1;
+    }
+    return 0;
+}
+
 } // namespace
 
 int main(int argc, char **argv)
@@ -679,5 +723,7 @@ int main(int argc, char **argv)
         return runDoctor(argc, argv, args);
     if (command == "csv")
         return recordingCsv(args, 1);
+    if (command == "mcap")
+        return recordingMcap(args, 1);
     return fail("unknown command '" + command + "'; try --help");
 }

@@ -253,7 +253,8 @@ std::optional<Recording> Recording::parse(const QByteArray &data, const QString 
             r.m_chunks.push_back({timeUs, r.m_received.size()});
             break;
         case recording::RecordKind::Sent:
-            r.m_sentBytes += length;
+            r.m_sent.append(payload, length);
+            r.m_sentChunks.push_back({timeUs, r.m_sent.size()});
             break;
         case recording::RecordKind::StreamStarted: {
             if (r.m_stream.profile)
@@ -333,28 +334,39 @@ void Recording::forEachSnapshot(const std::function<void(qint64, const oi::Senso
     }
 }
 
-void Recording::writeCsv(QTextStream &out) const
+std::vector<const oi::PacketInfo *> Recording::streamedPackets() const
 {
-    std::vector<const oi::PacketInfo *> columns;
+    std::vector<const oi::PacketInfo *> packets;
     for (int id : m_stream.packets) {
         const oi::PacketInfo *info = m_stream.profile->packet(id);
         if (info) {
-            columns.push_back(info);
+            packets.push_back(info);
             continue;
         }
         // A group: its member packets, in order.
         if (const oi::PacketGroup *g = m_stream.profile->group(id))
             for (int member = g->first; member <= g->last; ++member)
                 if (const oi::PacketInfo *m = m_stream.profile->packet(member))
-                    columns.push_back(m);
+                    packets.push_back(m);
     }
+    return packets;
+}
+
+std::optional<oi::FirmwareInfo> Recording::firmware() const
+{
+    return oi::parseFirmwareBanner(std::string_view(m_received.constData(), std::size_t(m_received.size())));
+}
+
+void Recording::writeCsv(QTextStream &out) const
+{
+    const std::vector<const oi::PacketInfo *> columns = streamedPackets();
     out << "time_s";
     for (const oi::PacketInfo *info : columns)
         out << ',' << fromStd(info->key);
     out << '\n';
     // A Reset recorded with the stream names the firmware; what it reports
     // wrongly is corrected in every frame, as the dashboard shows it (ERRATA 16).
-    const auto firmware = oi::parseFirmwareBanner(std::string_view(m_received.constData(), std::size_t(m_received.size())));
+    const auto firmware = this->firmware();
     forEachSnapshot([&](qint64 timeUs, const oi::SensorSnapshot &frame) {
         oi::SensorSnapshot s = frame;
         if (firmware)

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "firmware_banner.h"
 #include "robot_profile.h"
 #include "sensor_snapshot.h"
 
@@ -113,13 +114,20 @@ public:
     const QByteArray &receivedBytes() const { return m_received; }
     const std::vector<Chunk> &chunks() const { return m_chunks; }
     const std::vector<Frame> &frames() const { return m_frames; }
+    // The bytes sent to the robot, and where each write ended, as chunks() does.
+    const QByteArray &sentBytes() const { return m_sent; }
+    const std::vector<Chunk> &sentChunks() const { return m_sentChunks; }
     qint64 durationUs() const { return m_durationUs; }
-    qint64 bytesSent() const { return m_sentBytes; }
+    qint64 bytesSent() const { return m_sent.size(); }
     int recordCount() const { return m_records; }
     const std::optional<RecordingDamage> &damage() const { return m_damage; }
 
     // Decodes every stream frame in order, as the link would.
     void forEachSnapshot(const std::function<void(qint64 timeUs, const oi::SensorSnapshot &)> &visit) const;
+    // The single packets the stream carries, its groups opened up, in order.
+    std::vector<const oi::PacketInfo *> streamedPackets() const;
+    // The firmware, when a Reset recorded with the stream printed its banner.
+    std::optional<oi::FirmwareInfo> firmware() const;
     // One row per frame: time_s, then one column per packet of the stream.
     // Bit fields and signed values are written as the decoded numbers; the
     // angle corrected when the recording holds the firmware's banner.
@@ -136,8 +144,9 @@ private:
     QByteArray m_received;
     std::vector<Chunk> m_chunks;
     std::vector<Frame> m_frames;
+    QByteArray m_sent;
+    std::vector<Chunk> m_sentChunks;
     qint64 m_durationUs = 0;
-    qint64 m_sentBytes = 0;
     int m_records = 0;
     std::optional<RecordingDamage> m_damage;
 };

@@ -52,6 +52,26 @@ QJsonObject snapshotToJson(const oi::SensorSnapshot &snapshot)
     return o;
 }
 
+QByteArray snapshotToJsonText(const oi::SensorSnapshot &snapshot)
+{
+    QByteArray text;
+    text.reserve(1024);
+    text += '{';
+    for (const oi::PacketInfo &p : snapshot.robotProfile().packets()) {
+        if (!snapshot.has(p.id))
+            continue;
+        if (text.size() > 1)
+            text += ',';
+        // Packet keys are snake_case ASCII: nothing to escape.
+        text += '"';
+        text.append(p.key.data(), qsizetype(p.key.size()));
+        text += "\":";
+        text += QByteArray::number(snapshot.raw(p.id));
+    }
+    text += '}';
+    return text;
+}
+
 std::optional<oi::SensorSnapshot> snapshotFromJson(const QJsonObject &object, const oi::RobotProfile &profile,
                                                    QString *error)
 {

@@ -5,6 +5,7 @@
 #include "robot_profile.h"
 #include "sensor_snapshot.h"
 
+#include <QByteArray>
 #include <QJsonObject>
 #include <QString>
 
@@ -17,6 +18,9 @@ namespace oilink {
 // A flat object: each packet the snapshot holds under its key, with its raw
 // value as the robot sent it ({"voltage": 15640, "bumps_wheel_drops": 1}).
 QJsonObject snapshotToJson(const oi::SensorSnapshot &snapshot);
+// The same object as compact JSON text, with the keys in packet order: made
+// directly, for exports that write a frame at a time by the hundred thousand.
+QByteArray snapshotToJsonText(const oi::SensorSnapshot &snapshot);
 
 // Reads the packets of `profile` by key; keys that name no packet of the
 // profile (a "timestamp", say) are ignored. A packet value that is not a

@@ -28,9 +28,11 @@
 
 #include <QComboBox>
 #include <QDir>
+#include <QFile>
 #include <cmath>
 #include <QDockWidget>
 #include <QMenu>
+#include <QMenuBar>
 #include <QToolBar>
 #include <QToolButton>
 #include <QPointer>
@@ -512,6 +514,20 @@ private slots:
         window.stopRecording();
         QTRY_VERIFY_WITH_TIMEOUT(!window.session().recording().active, 10000);
         QVERIFY(!window.recordAction()->isChecked());
+
+        // File → Export recording as MCAP… sits beside the CSV export, and
+        // what it runs writes an MCAP file of the recording.
+        auto *exportMcap = window.findChild<QAction *>("exportMcapAction");
+        QVERIFY(exportMcap);
+        QVERIFY(window.menuBar()->actions().first()->menu()->actions().contains(exportMcap));
+        QVERIFY(!exportMcap->text().isEmpty());
+        const QString mcapPath = dir.filePath("class.mcap");
+        QString damage;
+        QCOMPARE(RecordingActions::exportRecordingMcap(path, mcapPath, mcap::Compression::Lz4, &damage), QString());
+        QCOMPARE(damage, QString());
+        QFile mcapFile(mcapPath);
+        QVERIFY(mcapFile.open(QIODevice::ReadOnly));
+        QVERIFY(mcapFile.readAll().startsWith("\x89MCAP0\r\n"));
 
         QString error;
         QVERIFY(!window.openRecording(dir.filePath("missing.oirec"), &error));

@@ -8,8 +8,7 @@
 //   bench_recording [FRAMES]
 #include "recording_file.h"
 #include "replay_transport.h"
-
-#include "packet_encoding.h"
+#include "synthetic_recording.h"
 
 #include <QCoreApplication>
 #include <QElapsedTimer>
@@ -62,43 +61,23 @@ int main(int argc, char **argv)
 {
     QCoreApplication app(argc, argv);
     const int frames = argc > 1 ? std::atoi(argv[1]) : 240000;
-    const oi::RobotProfile &profile = oi::profile(oi::ProfileId::Create2);
-    oi::SensorSnapshot values(profile);
-    for (const oi::PacketInfo &p : profile.packets())
-        values.set(p.id, p.min > 0 ? p.min : 0);
-
     QTemporaryDir dir;
     const QString path = dir.filePath("hour.oirec");
-    oilink::RecordingWriter writer;
-    if (!writer.open(path, {})) {
-        std::fprintf(stderr, "%s\n", qPrintable(writer.errorString()));
-        return 1;
-    }
-    writer.appendStreamStarted(profile.id, 115200, {100});
     QElapsedTimer clock;
     clock.start();
-    for (int i = 0; i < frames; ++i) {
+    QString error;
+    const bool written = writeSyntheticRecording(path, frames, [](int i, oi::SensorSnapshot &values) {
         values.set(22, 14000 + i % 2000); // voltage
         values.set(19, i % 7 - 3);        // distance
-        oi::Bytes frame{19, 0, 100};
-        sim::appendPacketData(values, 100, frame);
-        frame[1] = static_cast<std::uint8_t>(frame.size() - 2);
-        unsigned sum = 0;
-        for (std::uint8_t b : frame)
-            sum += b;
-        frame.push_back(static_cast<std::uint8_t>((256 - (sum & 0xFF)) & 0xFF));
-        if (!writer.append(oilink::recording::RecordKind::Received,
-                           QByteArray(reinterpret_cast<const char *>(frame.data()), qsizetype(frame.size())))) {
-            std::fprintf(stderr, "%s\n", qPrintable(writer.errorString()));
-            return 1;
-        }
+    }, &error);
+    if (!written) {
+        std::fprintf(stderr, "%s\n", qPrintable(error));
+        return 1;
     }
-    writer.close();
     const double writeS = clock.nsecsElapsed() / 1e9;
     const double megabytes = QFile(path).size() / 1e6;
 
     clock.restart();
-    QString error;
     const std::optional<oilink::Recording::StreamInfo> stream = oilink::Recording::readStream(path, &error);
     const double streamS = clock.nsecsElapsed() / 1e9;
     if (!stream) {

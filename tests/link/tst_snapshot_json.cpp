@@ -37,6 +37,26 @@ private slots:
         QVERIFY(*back == s);
     }
 
+    // The text exports write is the same object, for every packet and both
+    // ends of its range.
+    void textIsTheSameObject_data() { everyPacketRoundTrips_data(); }
+    void textIsTheSameObject()
+    {
+        QFETCH(int, profile);
+        const oi::RobotProfile &p = oi::profile(oi::ProfileId(profile));
+        for (bool low : {false, true}) {
+            oi::SensorSnapshot s(p);
+            for (const oi::PacketInfo &info : p.packets())
+                s.set(info.id, low ? info.min : info.max);
+            QJsonParseError error;
+            const QJsonDocument text = QJsonDocument::fromJson(snapshotToJsonText(s), &error);
+            QVERIFY2(text.isObject(), qPrintable(error.errorString()));
+            QCOMPARE(text.object(), snapshotToJson(s));
+        }
+        // An empty snapshot is an empty object.
+        QCOMPARE(snapshotToJsonText(oi::SensorSnapshot(p)), QByteArray("{}"));
+    }
+
     void keysAreThePacketKeys()
     {
         oi::SensorSnapshot s(oi::profile(oi::ProfileId::Create2));

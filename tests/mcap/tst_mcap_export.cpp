@@ -194,9 +194,14 @@ private slots:
         if (QFile::exists(QDir(m_readerDir).filePath("node_modules/@mcap/core/package.json")) &&
             QFile::exists(QDir(m_readerDir).filePath("node_modules/@mcap/support/package.json")))
             return;
-        const Run npm = run(QStringLiteral("npm"), {"install", "--no-audit", "--no-fund", "--no-save"}, m_readerDir,
-                            240000);
-        const QString code = npm.exitCode != 0 ? unreachable(npm.out + npm.err) : QString();
+        // Bounded waits: a registry that swallows packets must not hold the test up.
+        const Run npm = run(QStringLiteral("npm"),
+                            {"install", "--no-audit", "--no-fund", "--no-save", "--fetch-timeout=30000",
+                             "--fetch-retries=1"},
+                            m_readerDir, 180000);
+        const QString code = npm.exitCode == -1 ? QStringLiteral("no answer within 3 minutes")
+                             : npm.exitCode != 0 ? unreachable(npm.out + npm.err)
+                                                 : QString();
         if (!code.isEmpty())
             QSKIP(qPrintable(QStringLiteral("npm cannot reach its registry (%1), so @mcap/core, the official MCAP "
                                             "reader, is not installed and no independent reader checks the export. "

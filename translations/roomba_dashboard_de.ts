@@ -963,6 +963,10 @@ Er hat ausgegeben: %5</translation>
         <source>%1 · connecting…</source>
         <translation>%1 · verbinde…</translation>
     </message>
+    <message>
+        <source>%1 · not connected: %2</source>
+        <translation>%1 · nicht verbunden: %2</translation>
+    </message>
 </context>
 <context>
     <name>FleetDirectory</name>

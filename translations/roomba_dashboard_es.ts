@@ -962,6 +962,10 @@ Imprimió: %5</translation>
         <source>%1 · connecting…</source>
         <translation>%1 · conectando…</translation>
     </message>
+    <message>
+        <source>%1 · not connected: %2</source>
+        <translation>%1 · sin conexión: %2</translation>
+    </message>
 </context>
 <context>
     <name>FleetDirectory</name>

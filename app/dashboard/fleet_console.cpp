@@ -29,7 +29,18 @@ FleetConsole::FleetConsole(RobotFleet &fleet, FleetView &view, QObject *parent)
     connect(&m_refresh, &QTimer::timeout, this, &FleetConsole::refresh);
     connect(&m_directory, &FleetDirectory::robotAppeared, this, &FleetConsole::refresh);
     connect(&m_directory, &FleetDirectory::connectionChanged, this, &FleetConsole::refresh);
-    connect(&m_directory, &FleetDirectory::errorOccurred, this, &FleetConsole::message);
+    connect(&m_directory, &FleetDirectory::errorOccurred, this, [this](const QString &text) {
+        // Why there is no connection yet stays in the view until there is one.
+        if (!m_directory.isConnected()) {
+            m_brokerProblem = text;
+            refresh();
+        }
+        emit message(text);
+    });
+    connect(&m_directory, &FleetDirectory::connectionChanged, this, [this](bool connected) {
+        if (connected)
+            m_brokerProblem.clear();
+    });
     connect(&m_view, &FleetView::robotClicked, this, &FleetConsole::select);
     connect(&m_fleet, &RobotFleet::stoppedAll, &m_directory, &FleetDirectory::stopAll);
     connect(&m_fleet, &RobotFleet::selectionChanged, this, &FleetConsole::showSelection);
@@ -38,6 +49,7 @@ FleetConsole::FleetConsole(RobotFleet &fleet, FleetView &view, QObject *parent)
 
 bool FleetConsole::connectToBroker(const mqtt::BrokerAddress &address)
 {
+    m_brokerProblem.clear();
     const bool ok = m_directory.connectToBroker(address);
     m_refresh.start();
     refresh();
@@ -84,7 +96,9 @@ void FleetConsole::refresh()
                                        .arg(m_directory.broker().displayUrl())
                                        .arg(m_directory.names().size())
                                        .arg(m_directory.clientName())
-                                 : tr("%1 · connecting…").arg(m_directory.broker().displayUrl()),
+                                 : m_brokerProblem.isEmpty()
+                                     ? tr("%1 · connecting…").arg(m_directory.broker().displayUrl())
+                                     : tr("%1 · not connected: %2").arg(m_directory.broker().displayUrl(), m_brokerProblem),
                              m_directory.isConnected());
     else
         m_view.setBrokerText({}, false);

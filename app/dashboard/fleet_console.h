@@ -46,4 +46,5 @@ private:
     FleetView &m_view;
     FleetDirectory m_directory;
     QTimer m_refresh;
+    QString m_brokerProblem; // the last word on why the broker is not connected
 };

@@ -50,6 +50,14 @@ MqttClient::MqttClient(QString clientId, QObject *parent)
     initLibraryOnce();
     m_retry.setSingleShot(true);
     connect(&m_retry, &QTimer::timeout, this, &MqttClient::tryConnecting);
+    m_noAnswer.setSingleShot(true);
+    m_noAnswer.setInterval(kNoAnswerMs);
+    connect(&m_noAnswer, &QTimer::timeout, this, [this] {
+        if (!m_connected)
+            emit errorOccurred(tr("No MQTT broker answers at %1: is the broker running there, and are the address "
+                                  "and port right? Still trying.")
+                                   .arg(m_address.displayUrl()));
+    });
 }
 
 MqttClient::~MqttClient()
@@ -103,6 +111,7 @@ bool MqttClient::connectToBroker(const BrokerAddress &address)
         return fail(tr("The last-will topic %1 is not valid.").arg(m_will.topic));
 
     m_retryDelayMs = kFirstRetryMs;
+    m_noAnswer.start();
     tryConnecting();
     return true;
 }
@@ -133,6 +142,7 @@ void MqttClient::disconnectFromBroker()
         return;
     const bool wasConnected = m_connected;
     m_retry.stop();
+    m_noAnswer.stop();
     mosquitto_disconnect(m_mosq);
     if (m_loopRunning)
         mosquitto_loop_stop(m_mosq, true);
@@ -196,6 +206,7 @@ void MqttClient::handleConnected(int rc)
         return;
     }
     m_connected = true;
+    m_noAnswer.stop();
     for (const auto &s : std::as_const(m_subscriptions))
         mosquitto_subscribe(m_mosq, nullptr, s.first.toUtf8().constData(), s.second);
     emit connected();

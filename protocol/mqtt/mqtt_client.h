@@ -42,7 +42,9 @@ public:
 
     // Starts connecting, and keeps reconnecting until disconnectFromBroker.
     // Returns false, with errorOccurred, for settings the library refuses
-    // (a TLS file that cannot be read, for example).
+    // (a TLS file that cannot be read, for example). A broker that does not
+    // answer within kNoAnswerMs is said so with errorOccurred (the retries go on).
+    static constexpr int kNoAnswerMs = 3000;
     bool connectToBroker(const BrokerAddress &address);
     // Says goodbye to the broker (so no will is published), waits for the
     // network thread to end, and stays disconnected.
@@ -83,6 +85,7 @@ private:
     bool m_loopRunning = false;
     static constexpr int kFirstRetryMs = 1000, kLastRetryMs = 30000;
     QTimer m_retry;
+    QTimer m_noAnswer; // says so when no broker has answered soon after connectToBroker
     int m_retryDelayMs = kFirstRetryMs;
     QList<QPair<QString, int>> m_subscriptions;
 };

@@ -95,6 +95,23 @@ private slots:
         asking.close();
     }
 
+    // A broker that is down: the fleet view says so within seconds and what
+    // to check; once the broker is up, it connects and says so instead.
+    void aBrokerThatIsDownIsSaidSoThenComesUp()
+    {
+        MosquittoBroker broker; // its port, not started yet
+        MainWindow window;
+        window.start();
+        QVERIFY(window.connectToBroker(*mqtt::BrokerAddress::fromUrl(broker.url(), nullptr)));
+        QTRY_VERIFY_WITH_TIMEOUT(window.fleetView()->brokerText().contains(QStringLiteral("No MQTT broker answers")),
+                                 5000);
+        QVERIFY2(window.fleetView()->brokerText().contains(QStringLiteral("not connected")),
+                 qPrintable(window.fleetView()->brokerText()));
+        QVERIFY2(broker.start(), qPrintable(broker.error()));
+        QTRY_VERIFY_WITH_TIMEOUT(window.fleetView()->brokerText().contains(QStringLiteral("speaking as")), 20000);
+        window.close();
+    }
+
     void aClassroomOnOneBroker()
     {
         MosquittoBroker broker;

@@ -184,6 +184,19 @@ private slots:
         QTRY_COMPARE_WITH_TIMEOUT(up.count(), 1, 20000);
     }
 
+    // Nothing listens on the port: said within seconds, not "connecting" for good.
+    void aBrokerThatDoesNotAnswerIsSaidSo()
+    {
+        MosquittoBroker broker; // a free port, never started
+        MqttClient client(QStringLiteral("hopeful"));
+        QSignalSpy errors(&client, &MqttClient::errorOccurred);
+        QVERIFY(client.connectToBroker(addressOf(broker)));
+        QTRY_VERIFY_WITH_TIMEOUT(errors.count() >= 1, 5000);
+        QVERIFY2(errors[0][0].toString().contains(QStringLiteral("No MQTT broker answers at")),
+                 qPrintable(errors[0][0].toString()));
+        QVERIFY(!client.isConnected());
+    }
+
     void wrongPasswordIsRefused()
     {
         MosquittoBroker broker(QStringLiteral("allow_anonymous false\npassword_file %DIR%/passwords\n"));

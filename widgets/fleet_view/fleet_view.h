@@ -24,6 +24,7 @@ public:
     void setTiles(const QList<FleetTileValues> &tiles);
     // The broker line above the tiles: where, and whether connected.
     void setBrokerText(const QString &text, bool connected);
+    QString brokerText() const { return m_brokerText; }
     // Checks the tile of the selected robot (none for an empty name).
     void setSelected(const QString &name);
 

@@ -600,6 +600,45 @@ Die Wahl entscheidet, wie die Radzähler gelesen werden: Die falsche spiegelt je
     </message>
 </context>
 <context>
+    <name>ConnectionNextSteps</name>
+    <message>
+        <source>No serial port is on this computer: plug the robot&apos;s cable in, then choose its port in the connection bar.</source>
+        <translation>Dieser Computer hat keinen seriellen Anschluss: Stecken Sie das Kabel des Roboters ein und wählen Sie dann seinen Anschluss in der Verbindungsleiste.</translation>
+    </message>
+    <message>
+        <source>%1 does not exist. The serial ports on this computer: %2. Choose one in the connection bar.</source>
+        <translation>%1 gibt es nicht. Die seriellen Anschlüsse dieses Computers: %2. Wählen Sie einen in der Verbindungsleiste.</translation>
+    </message>
+    <message>
+        <source>This user may not open %1: add yourself to the group %2 (sudo adduser $USER %2), then log out and in again.</source>
+        <translation>Dieser Benutzer darf %1 nicht öffnen: Fügen Sie sich der Gruppe %2 hinzu (sudo adduser $USER %2), melden Sie sich dann ab und wieder an.</translation>
+    </message>
+    <message>
+        <source>Check that the bridge at %1:%2 is on and on this network, and that ser2net (or the Wi-Fi serial module) listens on that port.</source>
+        <translation>Prüfen Sie, ob die Brücke unter %1:%2 eingeschaltet und in diesem Netz ist und ob ser2net (oder das WLAN-Seriell-Modul) an diesem Port lauscht.</translation>
+    </message>
+    <message>
+        <source>Over raw TCP the bridge&apos;s serial rate is fixed in its own settings: it must be the robot&apos;s rate (115200 for a Roomba 500 or Create 2, 57600 for a Create).</source>
+        <translation>Über reines TCP ist die serielle Rate der Brücke in ihren eigenen Einstellungen festgelegt: Sie muss die Rate des Roboters sein (115200 für einen Roomba 500 oder Create 2, 57600 für einen Create).</translation>
+    </message>
+    <message>
+        <source>Bytes come back but make no sense at any rate: check that the cable is a robot&apos;s serial cable (5 V TTL, not RS-232) and that nothing else uses the port.</source>
+        <translation>Es kommen Bytes zurück, die bei keiner Rate Sinn ergeben: Prüfen Sie, ob das Kabel ein serielles Roboterkabel ist (5 V TTL, nicht RS-232) und ob nichts anderes den Anschluss benutzt.</translation>
+    </message>
+    <message>
+        <source>Check that the robot is switched on (its power light is lit) and that its cable is firmly in; a robot asleep on its dock wakes when it is taken off.</source>
+        <translation>Prüfen Sie, ob der Roboter eingeschaltet ist (seine Betriebsleuchte leuchtet) und sein Kabel fest steckt; ein auf seiner Station schlafender Roboter wacht auf, wenn man ihn herunternimmt.</translation>
+    </message>
+    <message>
+        <source>Then press Connect to try again.</source>
+        <translation>Drücken Sie dann Verbinden, um es erneut zu versuchen.</translation>
+    </message>
+    <message>
+        <source>No port is chosen. The serial ports on this computer: %1. Choose one in the connection bar.</source>
+        <translation>Kein Anschluss gewählt. Die seriellen Anschlüsse dieses Computers: %1. Wählen Sie einen in der Verbindungsleiste.</translation>
+    </message>
+</context>
+<context>
     <name>DashboardCommandLine</name>
     <message>
         <source>%1 needs a value; see --help</source>
@@ -786,6 +825,10 @@ Systems.
     <message>
         <source>What was tried:</source>
         <translation>Was versucht wurde:</translation>
+    </message>
+    <message>
+        <source>What to do next:</source>
+        <translation>Was als Nächstes zu tun ist:</translation>
     </message>
 </context>
 <context>

@@ -600,6 +600,45 @@ La elección decide cómo se leen los contadores de las ruedas: la equivocada re
     </message>
 </context>
 <context>
+    <name>ConnectionNextSteps</name>
+    <message>
+        <source>No serial port is on this computer: plug the robot&apos;s cable in, then choose its port in the connection bar.</source>
+        <translation>Este ordenador no tiene ningún puerto serie: conecte el cable del robot y elija luego su puerto en la barra de conexión.</translation>
+    </message>
+    <message>
+        <source>%1 does not exist. The serial ports on this computer: %2. Choose one in the connection bar.</source>
+        <translation>%1 no existe. Los puertos serie de este ordenador: %2. Elija uno en la barra de conexión.</translation>
+    </message>
+    <message>
+        <source>This user may not open %1: add yourself to the group %2 (sudo adduser $USER %2), then log out and in again.</source>
+        <translation>Este usuario no puede abrir %1: añádase al grupo %2 (sudo adduser $USER %2) y luego cierre la sesión y vuelva a entrar.</translation>
+    </message>
+    <message>
+        <source>Check that the bridge at %1:%2 is on and on this network, and that ser2net (or the Wi-Fi serial module) listens on that port.</source>
+        <translation>Compruebe que el puente en %1:%2 está encendido y en esta red, y que ser2net (o el módulo serie wifi) escucha en ese puerto.</translation>
+    </message>
+    <message>
+        <source>Over raw TCP the bridge&apos;s serial rate is fixed in its own settings: it must be the robot&apos;s rate (115200 for a Roomba 500 or Create 2, 57600 for a Create).</source>
+        <translation>Por TCP sin más, la velocidad serie del puente se fija en su propia configuración: debe ser la del robot (115200 para un Roomba 500 o Create 2, 57600 para un Create).</translation>
+    </message>
+    <message>
+        <source>Bytes come back but make no sense at any rate: check that the cable is a robot&apos;s serial cable (5 V TTL, not RS-232) and that nothing else uses the port.</source>
+        <translation>Vuelven bytes que no tienen sentido a ninguna velocidad: compruebe que el cable es un cable serie de robot (TTL de 5 V, no RS-232) y que nada más usa el puerto.</translation>
+    </message>
+    <message>
+        <source>Check that the robot is switched on (its power light is lit) and that its cable is firmly in; a robot asleep on its dock wakes when it is taken off.</source>
+        <translation>Compruebe que el robot está encendido (su luz de encendido brilla) y que su cable está bien puesto; un robot dormido en su base despierta al sacarlo de ella.</translation>
+    </message>
+    <message>
+        <source>Then press Connect to try again.</source>
+        <translation>Después pulse Conectar para volver a intentarlo.</translation>
+    </message>
+    <message>
+        <source>No port is chosen. The serial ports on this computer: %1. Choose one in the connection bar.</source>
+        <translation>No hay ningún puerto elegido. Los puertos serie de este ordenador: %1. Elija uno en la barra de conexión.</translation>
+    </message>
+</context>
+<context>
     <name>DashboardCommandLine</name>
     <message>
         <source>%1 needs a value; see --help</source>
@@ -785,6 +824,10 @@ sistema.
     <message>
         <source>What was tried:</source>
         <translation>Lo que se probó:</translation>
+    </message>
+    <message>
+        <source>What to do next:</source>
+        <translation>Qué hacer ahora:</translation>
     </message>
 </context>
 <context>

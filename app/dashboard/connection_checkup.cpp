@@ -3,6 +3,7 @@
 
 #include "transport_factory.h"
 
+#include "connection_next_steps.h"
 #include "doctor_details.h"
 #include "profile_probe.h"
 #include "robot_session.h"
@@ -123,7 +124,7 @@ void ConnectionCheckup::run()
 void ConnectionCheckup::onFinished(const oilink::ConnectionDoctor::Report &report)
 {
     using F = oilink::ConnectionDoctor::Finding;
-    m_details.finish(report.summary);
+    m_details.finish(report.summary, ConnectionNextSteps::forReport(m_settings, report));
     m_transport->close();
     m_doctor.release()->deleteLater();
     m_transport.release()->deleteLater();

@@ -4,6 +4,7 @@
 #include "byte_inspector.h"
 #include "command_encoder.h"
 #include "connection_checkup.h"
+#include "connection_next_steps.h"
 #include "doctor_details.h"
 #include "drive_pad.h"
 #include "main_window.h"
@@ -145,6 +146,27 @@ void turnClockwise(RobotSession &session)
 class TestFleet : public QObject {
     Q_OBJECT
 private slots:
+    // What the connection check says to do next, by what failed and where.
+    void connectionNextStepsNameWhatToCheck()
+    {
+        using F = oilink::ConnectionDoctor::Finding;
+        oilink::ConnectionDoctor::Report silent;
+        silent.finding = F::NothingComesBack;
+        const QStringList serial = ConnectionNextSteps::forReport(oilink::LinkSettings::serial("/dev/ttyUSB-none"), silent);
+        QVERIFY2(serial.join('\n').contains("/dev/ttyUSB-none does not exist")
+                     || serial.join('\n').contains("No serial port is on this computer"),
+                 qPrintable(serial.join('\n')));
+        QVERIFY(serial.last().contains("press Connect"));
+        const QStringList tcp = ConnectionNextSteps::forReport(oilink::LinkSettings::tcp("raspberrypi", 3333), silent);
+        QVERIFY2(tcp.join('\n').contains("raspberrypi:3333") && tcp.join('\n').contains("ser2net"), qPrintable(tcp.join('\n')));
+        oilink::ConnectionDoctor::Report garbled;
+        garbled.finding = F::GarbledAtEveryBaud;
+        QVERIFY(ConnectionNextSteps::forReport(oilink::LinkSettings::tcp("raspberrypi", 3333), garbled).join('\n').contains("TTL"));
+        oilink::ConnectionDoctor::Report healthy;
+        healthy.finding = F::Healthy;
+        QVERIFY(ConnectionNextSteps::forReport(oilink::LinkSettings::serial("/dev/ttyUSB0"), healthy).isEmpty());
+    }
+
     void init()
     {
         QStandardPaths::setTestModeEnabled(true);

@@ -49,6 +49,29 @@ private slots:
         QVERIFY(details->steps().isEmpty());
     }
 
+    // A port that cannot even be opened: nothing was tried, so no empty box
+    // under "What was tried"; what to do next is there instead.
+    void nextStepsInsteadOfAnEmptyList()
+    {
+        DoctorDetails details;
+        details.start();
+        const QStringList next{QStringLiteral("/dev/ttyUSB7 does not exist."), QStringLiteral("Then press Connect to try again.")};
+        details.finish(QStringLiteral("/dev/ttyUSB7: No such file or directory"), next);
+        QCOMPARE(details.nextSteps(), next);
+        QWidget *view = details.detailsView();
+        view->show();
+        auto *nextLabel = view->findChild<QLabel *>("doctorNextSteps");
+        QVERIFY(nextLabel->isVisible());
+        QVERIFY2(nextLabel->text().startsWith(QStringLiteral("What to do next:")), qPrintable(nextLabel->text()));
+        QVERIFY(nextLabel->text().contains(next[0]));
+        QVERIFY(!view->findChild<QListWidget *>()->isVisible());
+        for (QLabel *label : view->findChildren<QLabel *>())
+            QVERIFY2(!(label->isVisible() && label->text() == QStringLiteral("What was tried:")), "an empty list's heading shows");
+        auto *line = details.findChild<QLabel *>("doctorSummary");
+        QVERIFY2(line->toolTip().contains(next[0]), qPrintable(line->toolTip()));
+        sensor_scenes::saveScreenshot(*view, QStringLiteral("doctor_next_steps"));
+    }
+
     // One line per robot: only the selected robot's shows, and it keeps
     // its finding while another robot is selected.
     void shownOnlyForTheSelectedRobot()

@@ -27,6 +27,7 @@ DoctorDetails::DoctorDetails(QWidget *parent)
 void DoctorDetails::start()
 {
     m_steps.clear();
+    m_nextSteps.clear();
     m_summary.clear();
     m_line->setText(tr("Checking the connection…"));
     m_detailsButton->setEnabled(false);
@@ -38,19 +39,28 @@ void DoctorDetails::addStep(const QString &step)
 {
     m_steps.append(step);
     m_detailsButton->setEnabled(true);
-    if (m_viewSteps)
+    if (m_viewSteps) {
         m_viewSteps->addItem(step);
+        m_viewTried->setVisible(true);
+        m_viewSteps->setVisible(true);
+    }
 }
 
-void DoctorDetails::finish(const QString &summary)
+void DoctorDetails::finish(const QString &summary, const QStringList &nextSteps)
 {
     m_summary = summary;
+    m_nextSteps = nextSteps;
     m_line->setText(summary);
-    // The status bar may cut the line short: the whole of it, and the steps.
-    m_line->setToolTip((QStringList{summary, QString()} + m_steps).join(QLatin1Char('\n')));
+    // The status bar may cut the line short: the whole of it, what to do, and the steps.
+    QStringList tip{summary};
+    if (!nextSteps.isEmpty())
+        tip << QString() << nextSteps;
+    if (!m_steps.isEmpty())
+        tip << QString() << m_steps;
+    m_line->setToolTip(tip.join(QLatin1Char('\n')));
     m_detailsButton->setEnabled(true);
-    if (m_viewSummary)
-        m_viewSummary->setText(summary);
+    if (m_view)
+        detailsView(); // an open view shows the new finding
     m_hasNews = true;
     updateVisibility();
 }
@@ -58,6 +68,7 @@ void DoctorDetails::finish(const QString &summary)
 void DoctorDetails::clear()
 {
     m_steps.clear();
+    m_nextSteps.clear();
     m_summary.clear();
     m_line->clear();
     m_hasNews = false;
@@ -88,14 +99,28 @@ QWidget *DoctorDetails::detailsView()
         auto *buttons = new QDialogButtonBox(QDialogButtonBox::Close, dialog);
         connect(buttons, &QDialogButtonBox::rejected, dialog, &QDialog::hide);
         auto *layout = new QVBoxLayout(dialog);
+        m_viewNext = new QLabel(dialog);
+        m_viewNext->setObjectName("doctorNextSteps");
+        m_viewNext->setWordWrap(true);
+        m_viewNext->setTextFormat(Qt::PlainText);
+        m_viewTried = new QLabel(tr("What was tried:"), dialog);
         layout->addWidget(m_viewSummary);
-        layout->addWidget(new QLabel(tr("What was tried:"), dialog));
+        layout->addWidget(m_viewNext);
+        layout->addWidget(m_viewTried);
         layout->addWidget(m_viewSteps);
         layout->addWidget(buttons);
         dialog->resize(560, 320);
         m_view = dialog;
     }
     m_viewSummary->setText(m_summary.isEmpty() ? m_line->text() : m_summary);
+    m_viewNext->setText(m_nextSteps.isEmpty()
+                            ? QString()
+                            : tr("What to do next:") + QLatin1Char('\n')
+                                  + QStringLiteral("\u2022 ") + m_nextSteps.join(QStringLiteral("\n\u2022 ")));
+    m_viewNext->setVisible(!m_nextSteps.isEmpty());
+    // No empty box under a heading: what was tried shows only when something was.
+    m_viewTried->setVisible(!m_steps.isEmpty());
+    m_viewSteps->setVisible(!m_steps.isEmpty());
     m_viewSteps->clear();
     m_viewSteps->addItems(m_steps);
     return m_view;

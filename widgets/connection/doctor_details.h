@@ -17,7 +17,8 @@ public:
 
     void start();                      // "Checking the connection…", steps cleared
     void addStep(const QString &step);
-    void finish(const QString &summary);
+    // `nextSteps`: what the user can do about it, shown above what was tried.
+    void finish(const QString &summary, const QStringList &nextSteps = {});
     void clear();                      // hidden until the next check
     // Whether its robot is the one the window shows: it is visible only
     // then, and only with something to say.
@@ -25,6 +26,7 @@ public:
 
     QString summary() const { return m_summary; }
     QStringList steps() const { return m_steps; }
+    QStringList nextSteps() const { return m_nextSteps; }
     // The list the Details button shows (created on first use).
     QWidget *detailsView();
 
@@ -37,8 +39,11 @@ private:
     QWidget *m_view = nullptr;
     QLabel *m_viewSummary = nullptr;
     QListWidget *m_viewSteps = nullptr;
+    QLabel *m_viewTried = nullptr;
+    QLabel *m_viewNext = nullptr;
     QString m_summary;
     QStringList m_steps;
+    QStringList m_nextSteps;
     bool m_shownRobot = true;
     bool m_hasNews = false;
 };

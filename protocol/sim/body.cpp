@@ -340,13 +340,13 @@ InfraredView senseInfrared(const World &world, const oi::Pose &pose, const oi::R
 }
 
 BodyMove moveBody(const World &world, oi::Pose &pose, double leftMm, double rightMm, bool traction,
-                  std::span<const Disc> others)
+                  std::span<const Disc> others, double wheelBaseMm)
 {
     BodyMove move{leftMm, rightMm, false};
     if (!traction)
         return move;
     const double d = (leftMm + rightMm) / 2;
-    const double turn = (rightMm - leftMm) / oi::kWheelBaseMm;
+    const double turn = (rightMm - leftMm) / wheelBaseMm;
     oi::Pose next = pose;
     if (std::abs(turn) < 1e-12) {
         next.xMm += d * std::cos(pose.thetaRad);
@@ -380,8 +380,8 @@ BodyMove moveBody(const World &world, oi::Pose &pose, double leftMm, double righ
         next.xMm = pose.xMm;
         next.yMm = pose.yMm;
         next.travelledMm = pose.travelledMm;
-        move.leftMm = -turn * oi::kWheelBaseMm / 2;
-        move.rightMm = turn * oi::kWheelBaseMm / 2;
+        move.leftMm = -turn * wheelBaseMm / 2;
+        move.rightMm = turn * wheelBaseMm / 2;
     }
     pose = next;
     return move;

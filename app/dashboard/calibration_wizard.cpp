@@ -164,8 +164,9 @@ QWidget *CalibrationWizard::buildTurnPage()
     m_angleSlider->setObjectName("calibrationAngleSlider");
     // Typed and slid: each follows the other.
     const auto sliderRange = [this] {
+        // Wheels 15 % off either way; a typed angle may go further.
         const int driven = m_turns->value() * 360;
-        m_angleSlider->setRange(driven - 45, driven + 45);
+        m_angleSlider->setRange(driven * 85 / 100, driven * 115 / 100);
     };
     sliderRange();
     m_angleSlider->setValue(m_turns->value() * 360);
@@ -253,6 +254,12 @@ void CalibrationWizard::updateButtons()
     m_driveTurn->setEnabled(!running);
     m_distance->setEnabled(!running);
     m_turns->setEnabled(!running);
+    // Nothing to type while the robot moves, so Space stops it wherever the focus is.
+    for (QWidget *w : {static_cast<QWidget *>(m_measuredDistance), static_cast<QWidget *>(m_measuredDrift),
+                       static_cast<QWidget *>(m_measuredAngle), static_cast<QWidget *>(m_angleSlider)})
+        w->setEnabled(!running);
+    if (running)
+        m_stop->setFocus();
 }
 
 void CalibrationWizard::startRun(oi::EncoderRun::Kind kind)
@@ -312,8 +319,11 @@ void CalibrationWizard::onFinished()
                            .arg(mm(packets.encoderAngleDeg));
         if (m_truthStart) {
             const double degrees = m_truthTurnedRad * 180 / kPi;
+            {
+                const QSignalBlocker quiet(m_angleSlider); // the text keeps its decimals
+                m_angleSlider->setValue(int(std::lround(degrees)));
+            }
             m_measuredAngle->setText(mm(degrees));
-            m_angleSlider->setValue(int(std::lround(degrees)));
             text = tr("Stopped after %1 degrees by the encoders. This is a virtual robot: the angle below comes from "
                       "its true heading in the room, %2 degrees.")
                        .arg(mm(packets.encoderAngleDeg), mm(degrees));

@@ -4,12 +4,10 @@
 // true pose, applied and kept; typed measurements that cannot be right are
 // refused and nothing is applied.
 #include "calibration_wizard.h"
-#include "odometry_map.h"
 #include "robot_session.h"
 #include "room.h"
 #include "virtual_transport.h"
 
-#include <QDir>
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
@@ -21,8 +19,6 @@
 
 #include <cmath>
 #include <memory>
-#include <numbers>
-#include <utility>
 
 namespace {
 
@@ -74,32 +70,6 @@ bool runStep(CalibrationWizard &wizard, const char *button)
     return QTest::qWaitFor([&] { return !finished.isEmpty() || !aborted.isEmpty(); }, 30000) && aborted.isEmpty();
 }
 
-// Drives a true 1 m square (as along tape on the floor): counted with the
-// robot's real wheels, whatever its odometry thinks they are.
-bool driveTrueSquare(RobotSession &robot, const oi::WheelGeometry &realWheels)
-{
-    CalibrationDrive drive(robot);
-    QSignalSpy finished(&drive, &CalibrationDrive::finished);
-    QSignalSpy aborted(&drive, &CalibrationDrive::aborted);
-    for (int side = 0; side < 4; ++side)
-        for (const auto &[kind, target] : {std::pair{oi::EncoderRun::Kind::Straight, 1000.0},
-                                           std::pair{oi::EncoderRun::Kind::Turn, std::numbers::pi / 2}}) {
-            const qsizetype before = finished.size();
-            if (!drive.start(kind, target, realWheels)
-                || !QTest::qWaitFor([&] { return finished.size() > before || !aborted.isEmpty(); }, 30000)
-                || !aborted.isEmpty())
-                return false;
-        }
-    return true;
-}
-
-// How far the odometry's estimate ends from where it started.
-double estimateOffMm(const RobotSession &robot)
-{
-    const QList<QPointF> &trail = robot.odometry().trail();
-    return trail.isEmpty() ? 0 : std::hypot(trail.last().x() - trail.first().x(), trail.last().y() - trail.first().y());
-}
-
 } // namespace
 
 class TestCalibrationWizard : public QObject {
@@ -146,46 +116,6 @@ private slots:
         child<QPushButton>(wizard, "calibrationReset")->click();
         QVERIFY(!bench.robot.calibration());
         QCOMPARE(bench.robot.odometry().wheels(), oi::WheelGeometry{});
-    }
-
-    // The map of a robot driven round a true 1 m square: crooked with the
-    // documented wheels, closed once calibrated. Slow (two squares, on a
-    // robot four times faster than real time), so it runs when screenshots
-    // are asked for: ROOMBA_SCREENSHOTS=DIR saves both maps there.
-    void squareOnTheMapBeforeAndAfter()
-    {
-        const QString shots = qEnvironmentVariable("ROOMBA_SCREENSHOTS");
-        if (shots.isEmpty())
-            QSKIP("slow; set ROOMBA_SCREENSHOTS=DIR to run it and keep the maps");
-        VirtualBench bench(kWorn);
-        QTRY_VERIFY_WITH_TIMEOUT(bench.robot.isLive(), 5000);
-        OdometryMap map;
-        map.setProfile(oi::profile(oi::ProfileId::Create2));
-        map.setOdometry(&bench.robot.odometry());
-        map.setWorld(bench.room->world());
-        map.setSelectedRobot(bench.id);
-        map.resize(900, 700);
-        const auto square = [&](const QString &name) {
-            bench.robot.odometry().setStart(*bench.truePose());
-            bench.robot.odometry().reset();
-            if (!driveTrueSquare(bench.robot, kWorn))
-                return -1.0;
-            map.setTruePoses({OdometryMap::TruePose{bench.id, *bench.truePose(), {}, false}});
-            map.setViewCentreMm(QPointF(bench.truePose()->xMm + 500, bench.truePose()->yMm + 500));
-            map.setScale(0.4);
-            map.show();
-            QTest::qWait(100); // the map's display timer
-            QDir().mkpath(shots);
-            if (!map.grab().save(QDir(shots).filePath(name)))
-                return -1.0;
-            return estimateOffMm(bench.robot);
-        };
-        const double before = square(QStringLiteral("calibration-square-before.png"));
-        bench.robot.applyCalibration(kWorn);
-        const double after = square(QStringLiteral("calibration-square-after.png"));
-        qInfo("the map's 1 m square ends %.0f mm from its start before calibrating, %.0f mm after", before, after);
-        QVERIFY(before > 80);
-        QVERIFY(after >= 0 && after < 20);
     }
 
     void badMeasurementsAreRefused_data()

@@ -8,6 +8,7 @@
 #include "room.h"
 #include "virtual_transport.h"
 
+#include <QApplication>
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
@@ -18,6 +19,7 @@
 #include <QTest>
 
 #include <cmath>
+#include <functional>
 #include <memory>
 
 namespace {
@@ -116,6 +118,42 @@ private slots:
         child<QPushButton>(wizard, "calibrationReset")->click();
         QVERIFY(!bench.robot.calibration());
         QCOMPARE(bench.robot.odometry().wheels(), oi::WheelGeometry{});
+    }
+
+    // Esc, Space, leaving the window and Stop each stop a run, and the
+    // step can be run again.
+    void escSpaceFocusLossAndStopStopTheRun()
+    {
+        VirtualBench bench(oi::WheelGeometry{});
+        QTRY_VERIFY_WITH_TIMEOUT(bench.robot.isLive(), 5000);
+        CalibrationWizard wizard(bench.robot, [&bench] { return bench.truePose(); });
+        wizard.show();
+        wizard.activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(&wizard));
+        QSignalSpy aborted(&wizard.drive(), &CalibrationDrive::aborted);
+        auto *drive = child<QPushButton>(wizard, "calibrationDriveStraight");
+        const auto stops = [&](const std::function<void()> &stop) {
+            const qsizetype before = aborted.size();
+            drive->click();
+            if (!QTest::qWaitFor([&] { return bench.robot.teleop().isMoving(); }, 5000))
+                return false;
+            stop();
+            return QTest::qWaitFor([&] { return aborted.size() > before; }, 5000) && !wizard.drive().isRunning()
+                   && !bench.robot.teleop().isMoving() && wizard.isVisible();
+        };
+        QVERIFY(stops([&] { QTest::keyClick(QApplication::focusWidget(), Qt::Key_Escape); }));
+        QVERIFY(stops([&] { QTest::keyClick(QApplication::focusWidget(), Qt::Key_Space); }));
+        QVERIFY(stops([&] { child<QPushButton>(wizard, "calibrationStop")->click(); }));
+        QWidget other;
+        QVERIFY(stops([&] {
+            other.show();
+            other.activateWindow();
+        }));
+        // Esc with nothing moving closes the wizard.
+        wizard.activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(&wizard));
+        QTest::keyClick(&wizard, Qt::Key_Escape);
+        QVERIFY(!wizard.isVisible());
     }
 
     void badMeasurementsAreRefused_data()

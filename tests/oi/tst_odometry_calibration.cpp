@@ -162,6 +162,39 @@ private slots:
         QCOMPARE(runHazard(frame), std::string("cliff"));
     }
 
+    void packetsThatDisagreeAreNamed()
+    {
+        // Half a turn on the spot: the encoders count it, and a firmware that
+        // scales its angle packet (raw = degrees x 0.324) says otherwise.
+        const WheelCounts half = countsFor(WheelGeometry{}, 0, kPi);
+        const auto frame = [](double left, double right, int angle) {
+            SensorSnapshot f(profile(ProfileId::Create2));
+            f.set(43, std::int32_t(std::lround(left)));
+            f.set(44, std::int32_t(std::lround(right)));
+            f.set(19, 0);
+            f.set(20, angle);
+            return f;
+        };
+        EncoderRun good(EncoderRun::Kind::Turn, 2 * kPi, WheelGeometry{});
+        EncoderRun scaled(EncoderRun::Kind::Turn, 2 * kPi, WheelGeometry{});
+        good.update(frame(0, 0, 0));
+        scaled.update(frame(0, 0, 0));
+        good.update(frame(half.left, half.right, 180));
+        scaled.update(frame(half.left, half.right, 58));
+        QVERIFY(!checkPackets(good).angleDisagrees);
+        QCOMPARE(packetDisagreement(good), std::string());
+        QVERIFY(checkPackets(scaled).angleDisagrees);
+        QVERIFY(!checkPackets(scaled).distanceDisagrees);
+        QCOMPARE(packetDisagreement(scaled), std::string("the angle packet (20) says 58 degrees where the encoders counted 180 degrees"));
+        // Corrected for that firmware, it agrees again.
+        FirmwareCorrections corrections;
+        corrections.angleDivisor = 0.324056;
+        EncoderRun corrected(EncoderRun::Kind::Turn, 2 * kPi, WheelGeometry{}, 100, corrections);
+        corrected.update(frame(0, 0, 0));
+        corrected.update(frame(half.left, half.right, 58));
+        QVERIFY(!checkPackets(corrected).angleDisagrees);
+    }
+
     void perWheelOdometry()
     {
         // Equal counts on a right wheel 2 % larger curve to the left.

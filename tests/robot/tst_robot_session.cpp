@@ -5,6 +5,7 @@
 #include "command_encoder.h"
 #include "recording_transport.h" // tests/common
 #include "robot_session.h"
+#include "saved_robots.h"
 #include "transport.h"
 #include "transport_factory.h"
 
@@ -443,6 +444,19 @@ private slots:
         robot.setTransportFactory([](const oilink::LinkSettings &) { return new RecordingTransport(); });
         robot.connectTo(serial);
         QVERIFY(!robot.calibration());
+    }
+
+    // A virtual robot given wrong wheels keeps them in the robot list; a
+    // value that cannot be wheels comes back as the documents'.
+    void virtualWheelsAreKeptWithTheRobotList()
+    {
+        oilink::LinkSettings worn = oilink::LinkSettings::virtualRobotOf(oi::ProfileId::Create2, oi::ProfileId::Create2);
+        worn.virtualWheels = oi::WheelGeometry{74.88, 73.0, 228.0};
+        QSettings settings;
+        saveRobots(settings, {SavedRobot{QStringLiteral("Wobbly"), {}, worn, true}});
+        QCOMPARE(loadSavedRobots(settings).value(0).link.virtualWheels, worn.virtualWheels);
+        settings.setValue(QStringLiteral("robots/1/virtualWheelBaseMm"), -5);
+        QCOMPARE(loadSavedRobots(settings).value(0).link.virtualWheels, oi::WheelGeometry{});
     }
 };
 

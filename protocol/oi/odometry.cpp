@@ -20,6 +20,23 @@ double normalizedAngle(double rad)
 
 } // namespace
 
+void moveAlongArc(Pose &pose, double leftMm, double rightMm, double wheelBaseMm)
+{
+    const double d = (leftMm + rightMm) / 2;
+    const double turn = (rightMm - leftMm) / wheelBaseMm;
+    if (std::abs(turn) < 1e-12) {
+        pose.xMm += d * std::cos(pose.thetaRad);
+        pose.yMm += d * std::sin(pose.thetaRad);
+    } else {
+        // Exact arc of radius d / turn.
+        const double r = d / turn;
+        pose.xMm += r * (std::sin(pose.thetaRad + turn) - std::sin(pose.thetaRad));
+        pose.yMm -= r * (std::cos(pose.thetaRad + turn) - std::cos(pose.thetaRad));
+    }
+    pose.thetaRad = normalizedAngle(pose.thetaRad + turn);
+    pose.travelledMm += d;
+}
+
 void Odometry::reset(Pose start)
 {
     m_pose = start;

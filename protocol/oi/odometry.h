@@ -39,6 +39,11 @@ struct WheelGeometry {
     friend bool operator==(const WheelGeometry &, const WheelGeometry &) = default;
 };
 
+// Moves `pose` by each wheel's travel along the exact arc they make
+// `wheelBaseMm` apart (straight lines and turns on the spot included); the
+// path length goes to travelledMm.
+void moveAlongArc(Pose &pose, double leftMm, double rightMm, double wheelBaseMm);
+
 // Dead reckoning for a differential-drive robot from successive sensor frames.
 // Feed each decoded frame once: distance (19) and angle (20) are increments
 // since the last request, so a merged snapshot that repeats them would count

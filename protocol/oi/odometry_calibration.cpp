@@ -28,22 +28,6 @@ std::string number(double value, int decimals = 0)
     return text;
 }
 
-// Moves `pose` by the wheels' real travel along the exact arc.
-void moveExactly(Pose &pose, double leftMm, double rightMm, double wheelBaseMm)
-{
-    const double d = (leftMm + rightMm) / 2;
-    const double turn = (rightMm - leftMm) / wheelBaseMm;
-    if (std::abs(turn) < 1e-12) {
-        pose.xMm += d * std::cos(pose.thetaRad);
-        pose.yMm += d * std::sin(pose.thetaRad);
-    } else {
-        const double r = d / turn;
-        pose.xMm += r * (std::sin(pose.thetaRad + turn) - std::sin(pose.thetaRad));
-        pose.yMm -= r * (std::cos(pose.thetaRad + turn) - std::cos(pose.thetaRad));
-    }
-    pose.thetaRad += turn;
-}
-
 // The wheels alone, without the predictions (which need them twice).
 Result<WheelGeometry> solve(const WheelGeometry &assumed, const std::optional<StraightRun> &straight,
                             const std::optional<TurnRun> &turn)
@@ -185,8 +169,8 @@ double squareClosureErrorMm(const WheelGeometry &assumed, const WheelGeometry &t
     const WheelCounts corner = countsFor(assumed, 0, kPi / 2);
     Pose pose;
     for (int i = 0; i < 4; ++i) {
-        moveExactly(pose, side.left * truth.leftMmPerCount(), side.right * truth.rightMmPerCount(), truth.wheelBaseMm);
-        moveExactly(pose, corner.left * truth.leftMmPerCount(), corner.right * truth.rightMmPerCount(),
+        moveAlongArc(pose, side.left * truth.leftMmPerCount(), side.right * truth.rightMmPerCount(), truth.wheelBaseMm);
+        moveAlongArc(pose, corner.left * truth.leftMmPerCount(), corner.right * truth.rightMmPerCount(),
                     truth.wheelBaseMm);
     }
     return std::hypot(pose.xMm, pose.yMm);

@@ -345,20 +345,9 @@ BodyMove moveBody(const World &world, oi::Pose &pose, double leftMm, double righ
     BodyMove move{leftMm, rightMm, false};
     if (!traction)
         return move;
-    const double d = (leftMm + rightMm) / 2;
     const double turn = (rightMm - leftMm) / wheelBaseMm;
     oi::Pose next = pose;
-    if (std::abs(turn) < 1e-12) {
-        next.xMm += d * std::cos(pose.thetaRad);
-        next.yMm += d * std::sin(pose.thetaRad);
-    } else {
-        // Exact arc of radius d / turn.
-        const double r = d / turn;
-        next.xMm += r * (std::sin(pose.thetaRad + turn) - std::sin(pose.thetaRad));
-        next.yMm -= r * (std::cos(pose.thetaRad + turn) - std::cos(pose.thetaRad));
-    }
-    next.thetaRad = normalizedAngle(pose.thetaRad + turn);
-    next.travelledMm += d;
+    oi::moveAlongArc(next, leftMm, rightMm, wheelBaseMm);
 
     const Vec2 from{pose.xMm, pose.yMm}, to{next.xMm, next.yMm};
     for (const Segment &w : world.walls) {

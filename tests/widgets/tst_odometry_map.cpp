@@ -567,7 +567,8 @@ private slots:
             showTruth(*m_map, robot.truePose());
             const QList<QPointF> &trail = m_odometry->trail();
             if (const QString dir = qEnvironmentVariable("ROOMBA_SCREENSHOTS"); !dir.isEmpty()) {
-                QTest::qWaitFor([&] { return m_map->findChild<QLabel *>("poseLabel")->text() == m_map->poseText(); });
+                if (!QTest::qWaitFor([&] { return m_map->findChild<QLabel *>("poseLabel")->text() == m_map->poseText(); }))
+                    qWarning("the pose label did not catch up");
                 QCoreApplication::sendPostedEvents(); // the label's new width
                 QDir().mkpath(dir);
                 if (!m_map->grab().save(QDir(dir).filePath(file)))

@@ -51,10 +51,14 @@ void RobotOdometry::setCorrections(const oi::FirmwareCorrections &corrections)
 
 bool RobotOdometry::setGeometry(double wheelBaseMm, double wheelDiameterMm)
 {
-    if (!std::isfinite(wheelDiameterMm) || wheelDiameterMm <= 0
-        || !m_odometry.setGeometry(wheelBaseMm, oi::Odometry::mmPerEncoderCountFor(wheelDiameterMm)))
+    return setWheels(oi::WheelGeometry{wheelDiameterMm, wheelDiameterMm, wheelBaseMm});
+}
+
+bool RobotOdometry::setWheels(const oi::WheelGeometry &wheels)
+{
+    if (!m_odometry.setWheels(wheels))
         return false;
-    m_wheelDiameterMm = wheelDiameterMm;
+    m_wheels = wheels;
     ++m_revision;
     return true;
 }

@@ -34,8 +34,13 @@ public:
     // A measured wheel base and wheel diameter, from now on. Both must be
     // finite and positive; otherwise nothing changes and this returns false.
     bool setGeometry(double wheelBaseMm, double wheelDiameterMm);
-    double wheelBaseMm() const { return m_odometry.wheelBaseMm(); }
-    double wheelDiameterMm() const { return m_wheelDiameterMm; }
+    // A calibration: each wheel's diameter and the wheel base. Refused
+    // (false, nothing changes) unless every figure is finite and positive.
+    bool setWheels(const oi::WheelGeometry &wheels);
+    const oi::WheelGeometry &wheels() const { return m_wheels; }
+    double wheelBaseMm() const { return m_wheels.wheelBaseMm; }
+    // The mean of the two wheels'.
+    double wheelDiameterMm() const { return (m_wheels.leftDiameterMm + m_wheels.rightDiameterMm) / 2; }
 
     // Whether the robot's profile is known, so that its encoder counts are
     // read the right way round (ERRATA 4). While it is not (a Roomba 500 or
@@ -55,7 +60,7 @@ private:
 
     oi::Odometry m_odometry;
     oi::Pose m_start;
-    double m_wheelDiameterMm = oi::kWheelDiameterMm;
+    oi::WheelGeometry m_wheels;
     QList<QPointF> m_trail;
     quint64 m_revision = 0;
     bool m_identified = true;

@@ -4,6 +4,7 @@
 #include "command_encoder.h"
 
 #include <QDateTime>
+#include <QSettings>
 
 RobotSession::RobotSession(QObject *parent) : QObject(parent)
 {
@@ -68,6 +69,10 @@ void RobotSession::connectTo(const oilink::LinkSettings &settings)
     m_settings = settings;
     // Another robot's corrections would be wrong here; this one's come back.
     m_firmware.connectingTo(settings);
+    {
+        QSettings kept;
+        setCalibration(loadWheelCalibration(kept, settings));
+    }
     m_connected = true;
     m_connectedAtMs = QDateTime::currentMSecsSinceEpoch();
     m_replay = {};
@@ -76,6 +81,33 @@ void RobotSession::connectTo(const oilink::LinkSettings &settings)
     resetHistory();
     setProfileAssumed(false);
     m_link.open(settings);
+}
+
+bool RobotSession::applyCalibration(const oi::WheelGeometry &wheels)
+{
+    if (!wheels.isValid())
+        return false;
+    const WheelCalibration calibration{wheels, QDateTime::currentDateTime(), m_name};
+    QSettings kept;
+    saveWheelCalibration(kept, m_settings, calibration);
+    setCalibration(calibration);
+    return true;
+}
+
+void RobotSession::resetCalibration()
+{
+    QSettings kept;
+    forgetWheelCalibration(kept, m_settings);
+    setCalibration(std::nullopt);
+}
+
+void RobotSession::setCalibration(const std::optional<WheelCalibration> &calibration)
+{
+    m_odometry.setWheels(calibration ? calibration->wheels : oi::WheelGeometry{});
+    if (calibration == m_calibration)
+        return;
+    m_calibration = calibration;
+    emit calibrationChanged();
 }
 
 void RobotSession::setSettings(const oilink::LinkSettings &settings)

@@ -9,6 +9,7 @@
 #include "sensor_history.h"
 #include "sensor_snapshot.h"
 #include "teleop_controller.h"
+#include "wheel_calibration.h"
 
 #include <QByteArray>
 #include <QColor>
@@ -98,6 +99,15 @@ public:
     // Dead reckoning with this robot's firmware corrections applied.
     RobotOdometry &odometry() { return m_odometry; }
     const RobotOdometry &odometry() const { return m_odometry; }
+    // This robot's measured wheels, restored by connectTo() from the
+    // settings (under its port or bridge), or none: the documents' wheels.
+    const std::optional<WheelCalibration> &calibration() const { return m_calibration; }
+    // Keeps `wheels` for this robot, dated and under its name, and counts its
+    // odometry with them from now on. Refused (false) unless valid.
+    bool applyCalibration(const oi::WheelGeometry &wheels);
+    // Back to the documented wheels, kept so.
+    void resetCalibration();
+
     // Motion and its sending rules: dead-man, focus, stale data, link loss,
     // Safe dropping to Passive by itself.
     TeleopController &teleop() { return m_teleop; }
@@ -125,6 +135,8 @@ signals:
     // isIdentified() changed.
     void identifiedChanged(bool identified);
     void firmwareChanged(const QString &release);
+    // calibration() changed: applied, reset, or restored for another robot.
+    void calibrationChanged();
     void errorOccurred(const QString &message);
     void bytesSent(const QByteArray &bytes, qint64 msecs);
     void bytesReceived(const QByteArray &bytes, qint64 msecs);
@@ -145,6 +157,7 @@ private:
     void onBytesReceived(const QByteArray &bytes);
     void onReplayStatus(const oilink::ReplayStatus &status);
     void resetHistory();
+    void setCalibration(const std::optional<WheelCalibration> &calibration);
 
     QString m_name;
     QColor m_colour;
@@ -164,6 +177,7 @@ private:
     SensorHistory m_history;
     RecentBytes m_recentBytes;
     RobotOdometry m_odometry;
+    std::optional<WheelCalibration> m_calibration;
     // Owned here; it sees this robot only as its DriveTarget. Last: it reads
     // the members above, and is destroyed first.
     TeleopController m_teleop{*this};

@@ -63,6 +63,12 @@ QList<SavedRobot> loadSavedRobots(QSettings &settings)
             continue;
         r.link.virtualRobot = *virtualRobot;
         r.link.virtualSeed = settings.value("virtualSeed", 1).toUInt();
+        // A virtual robot's real wheels; the documents' when not kept or not valid.
+        const oi::WheelGeometry wheels{settings.value("virtualLeftWheelMm", oi::kWheelDiameterMm).toDouble(),
+                                       settings.value("virtualRightWheelMm", oi::kWheelDiameterMm).toDouble(),
+                                       settings.value("virtualWheelBaseMm", oi::kWheelBaseMm).toDouble()};
+        if (wheels.isValid())
+            r.link.virtualWheels = wheels;
         robots << r;
     }
     settings.endArray();
@@ -88,6 +94,9 @@ void saveRobots(QSettings &settings, const QList<SavedRobot> &robots)
         settings.setValue("profile", r.link.profile ? int(*r.link.profile) : -1);
         settings.setValue("virtualRobot", int(r.link.virtualRobot));
         settings.setValue("virtualSeed", r.link.virtualSeed);
+        settings.setValue("virtualLeftWheelMm", r.link.virtualWheels.leftDiameterMm);
+        settings.setValue("virtualRightWheelMm", r.link.virtualWheels.rightDiameterMm);
+        settings.setValue("virtualWheelBaseMm", r.link.virtualWheels.wheelBaseMm);
     }
     settings.endArray();
 }

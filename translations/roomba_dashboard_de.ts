@@ -331,6 +331,275 @@
     </message>
 </context>
 <context>
+    <name>CalibrationDrive</name>
+    <message>
+        <source>The run was stopped before the end.</source>
+        <translation>Die Fahrt wurde vor dem Ende angehalten.</translation>
+    </message>
+    <message>
+        <source>A recording cannot be driven: connect to the robot.</source>
+        <translation>Eine Aufzeichnung kann nicht fahren: Verbinde dich mit dem Roboter.</translation>
+    </message>
+    <message>
+        <source>The robot sends no data: connect to it and wait until it streams.</source>
+        <translation>Der Roboter sendet keine Daten: Verbinde dich mit ihm und warte, bis er Daten sendet.</translation>
+    </message>
+    <message>
+        <source>Say first whether this is a Roomba 500 or a Create 2: their encoders read the other way round.</source>
+        <translation>Sag zuerst, ob das ein Roomba 500 oder ein Create 2 ist: Ihre Encoder lesen sich umgekehrt.</translation>
+    </message>
+    <message>
+        <source>A run is already under way.</source>
+        <translation>Eine Fahrt läuft schon.</translation>
+    </message>
+    <message>
+        <source>Stopped.</source>
+        <translation>Angehalten.</translation>
+    </message>
+    <message>
+        <source>The robot did not enter Safe mode: is it on its dock, or a wheel lifted?</source>
+        <translation>Der Roboter ist nicht in den Safe-Modus gegangen: Steht er auf seiner Ladestation, oder hängt ein Rad in der Luft?</translation>
+    </message>
+    <message>
+        <source>The robot bumped into something: clear its path and run the step again.</source>
+        <translation>Der Roboter ist gegen etwas gestoßen: Mach den Weg frei und fahre den Schritt noch einmal.</translation>
+    </message>
+    <message>
+        <source>A cliff sensor saw a drop: move the robot away from the edge and run the step again.</source>
+        <translation>Ein Abgrundsensor hat eine Kante gesehen: Stell den Roboter von der Kante weg und fahre den Schritt noch einmal.</translation>
+    </message>
+    <message>
+        <source>A wheel dropped: put the robot on the floor and run the step again.</source>
+        <translation>Ein Rad ist abgesackt: Stell den Roboter auf den Boden und fahre den Schritt noch einmal.</translation>
+    </message>
+</context>
+<context>
+    <name>CalibrationWizard</name>
+    <message>
+        <source>Calibrate odometry: %1</source>
+        <translation>Odometrie kalibrieren: %1</translation>
+    </message>
+    <message>
+        <source>&lt; &amp;Back</source>
+        <translation>&lt; &amp;Zurück</translation>
+    </message>
+    <message>
+        <source>&amp;Next &gt;</source>
+        <translation>&amp;Weiter &gt;</translation>
+    </message>
+    <message>
+        <source>&amp;Stop</source>
+        <translation>&amp;Stopp</translation>
+    </message>
+    <message>
+        <source>Stop the robot (also Esc or Space)</source>
+        <translation>Den Roboter anhalten (auch Esc oder Leertaste)</translation>
+    </message>
+    <message>
+        <source>&amp;Close</source>
+        <translation>&amp;Schließen</translation>
+    </message>
+    <message>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <source>&amp;Drive straight</source>
+        <translation>&amp;Geradeaus fahren</translation>
+    </message>
+    <message>
+        <source>from the tape, in mm</source>
+        <translation>vom Maßband, in mm</translation>
+    </message>
+    <message>
+        <source>optional: mm to the left (+) or right (-) of the line</source>
+        <translation>optional: mm links (+) oder rechts (-) der Linie</translation>
+    </message>
+    <message>
+        <source>Distance:</source>
+        <translation>Strecke:</translation>
+    </message>
+    <message>
+        <source>It really drove:</source>
+        <translation>Wirklich gefahren:</translation>
+    </message>
+    <message>
+        <source>Off the line at the end:</source>
+        <translation>Am Ende neben der Linie:</translation>
+    </message>
+    <message>
+        <source>Put the robot on a hard, clear floor with room ahead, and mark the floor under the centre of its front edge. It enters Safe mode and drives ahead by its wheel encoders, slowly, then stops. Measure with a tape from the mark to where the front edge stopped and type it in. If it ended off the straight line, say how far: that tells a left wheel from a right one.</source>
+        <translation>Stell den Roboter auf einen harten, freien Boden mit Platz nach vorn und markiere den Boden unter der Mitte seiner Vorderkante. Er geht in den Safe-Modus, fährt nach seinen Radencodern langsam geradeaus und hält an. Miss mit dem Maßband von der Markierung bis dorthin, wo die Vorderkante stehen blieb, und gib es ein. Endete er neben der geraden Linie, gib an, wie weit: Daran unterscheidet sich das linke Rad vom rechten.</translation>
+    </message>
+    <message>
+        <source> turns</source>
+        <translation> Umdrehungen</translation>
+    </message>
+    <message>
+        <source>S&amp;pin</source>
+        <translation>&amp;Drehen</translation>
+    </message>
+    <message>
+        <source>in degrees, e.g. 715</source>
+        <translation>in Grad, z. B. 715</translation>
+    </message>
+    <message>
+        <source>Spin:</source>
+        <translation>Drehen:</translation>
+    </message>
+    <message>
+        <source>It really turned:</source>
+        <translation>Wirklich gedreht:</translation>
+    </message>
+    <message>
+        <source>Mark the start heading: lay a strip of tape on the floor from the middle of the robot&apos;s front edge straight ahead, and put a piece of tape on the bumper above it. The robot spins whole turns counter-clockwise on the spot by its encoders and stops. Count the whole turns and read how far the bumper&apos;s mark is past the floor&apos;s: two turns that stop 5 degrees short are 715 degrees.</source>
+        <translation>Markiere die Startrichtung: Leg einen Klebestreifen von der Mitte der Vorderkante des Roboters gerade nach vorn auf den Boden und klebe ein Stück Band darüber auf den Stoßfänger. Der Roboter dreht sich nach seinen Encodern ganze Umdrehungen gegen den Uhrzeigersinn auf der Stelle und hält an. Zähle die ganzen Umdrehungen und lies ab, wie weit die Markierung am Stoßfänger an der am Boden vorbei ist: Zwei Umdrehungen, die 5 Grad zu früh enden, sind 715 Grad.</translation>
+    </message>
+    <message>
+        <source>&amp;Apply and keep</source>
+        <translation>&amp;Übernehmen und behalten</translation>
+    </message>
+    <message>
+        <source>&amp;Reset to the documented wheels</source>
+        <translation>Auf die dokumentierten Räder &amp;zurücksetzen</translation>
+    </message>
+    <message>
+        <source>Step 1 of 3: straight line</source>
+        <translation>Schritt 1 von 3: gerade Linie</translation>
+    </message>
+    <message>
+        <source>Step 2 of 3: turn</source>
+        <translation>Schritt 2 von 3: Drehung</translation>
+    </message>
+    <message>
+        <source>Step 3 of 3: result</source>
+        <translation>Schritt 3 von 3: Ergebnis</translation>
+    </message>
+    <message>
+        <source>Driving… Esc, Space or Stop stops it.</source>
+        <translation>Fährt… Esc, Leertaste oder Stopp hält ihn an.</translation>
+    </message>
+    <message>
+        <source>Spinning… Esc, Space or Stop stops it.</source>
+        <translation>Dreht sich… Esc, Leertaste oder Stopp hält ihn an.</translation>
+    </message>
+    <message>
+        <source>Driving… %1 of %2 mm by the encoders. Esc, Space or Stop stops it.</source>
+        <translation>Fährt… %1 von %2 mm nach den Encodern. Esc, Leertaste oder Stopp hält ihn an.</translation>
+    </message>
+    <message>
+        <source>Spinning… %1 of %2 degrees by the encoders. Esc, Space or Stop stops it.</source>
+        <translation>Dreht sich… %1 von %2 Grad nach den Encodern. Esc, Leertaste oder Stopp hält ihn an.</translation>
+    </message>
+    <message>
+        <source>Stopped after %1 mm by the encoders. Now measure what it really drove.</source>
+        <translation>Nach %1 mm laut Encodern angehalten. Miss jetzt, wie weit er wirklich gefahren ist.</translation>
+    </message>
+    <message>
+        <source>Stopped after %1 mm by the encoders. This is a virtual robot: the measurements below come from its true position in the room, %2 mm from the start and %3 mm off the line.</source>
+        <translation>Nach %1 mm laut Encodern angehalten. Das ist ein virtueller Roboter: Die Messwerte unten kommen von seiner wahren Position im Raum, %2 mm vom Start und %3 mm neben der Linie.</translation>
+    </message>
+    <message>
+        <source>Stopped after %1 degrees by the encoders. Now read how far it really turned.</source>
+        <translation>Nach %1 Grad laut Encodern angehalten. Lies jetzt ab, wie weit er sich wirklich gedreht hat.</translation>
+    </message>
+    <message>
+        <source>Stopped after %1 degrees by the encoders. This is a virtual robot: the angle below comes from its true heading in the room, %2 degrees.</source>
+        <translation>Nach %1 Grad laut Encodern angehalten. Das ist ein virtueller Roboter: Der Winkel unten kommt von seiner wahren Richtung im Raum, %2 Grad.</translation>
+    </message>
+    <message>
+        <source>%1 Nothing was measured; run the step again.</source>
+        <translation>%1 Es wurde nichts gemessen; fahre den Schritt noch einmal.</translation>
+    </message>
+    <message>
+        <source>%1: “%2” is not a number. Type what you measured, in %3.</source>
+        <translation>%1: „%2“ ist keine Zahl. Gib ein, was du gemessen hast, in %3.</translation>
+    </message>
+    <message>
+        <source>%1: %2 %3 cannot be. Type what you measured, more than 0 %3.</source>
+        <translation>%1: %2 %3 kann nicht sein. Gib ein, was du gemessen hast, mehr als 0 %3.</translation>
+    </message>
+    <message>
+        <source>%1: %2 %3 is more than 50 % off the %4 %3 the encoders counted. Measure again: a typing slip, or a wheel that slipped?</source>
+        <translation>%1: %2 %3 liegt mehr als 50 % neben den %4 %3, die die Encoder gezählt haben. Miss noch einmal: ein Tippfehler, oder ist ein Rad durchgerutscht?</translation>
+    </message>
+    <message>
+        <source>Drive the straight line, the turn or both first.</source>
+        <translation>Fahre zuerst die gerade Linie, die Drehung oder beides.</translation>
+    </message>
+    <message>
+        <source>Measured distance</source>
+        <translation>Gemessene Strecke</translation>
+    </message>
+    <message>
+        <source>mm</source>
+        <translation>mm</translation>
+    </message>
+    <message>
+        <source>Off the line: “%1” is not a distance in mm less than half the run; leave it empty if you did not measure it.</source>
+        <translation>Neben der Linie: „%1“ ist keine Strecke in mm unter der halben Fahrt; lass das Feld leer, wenn du sie nicht gemessen hast.</translation>
+    </message>
+    <message>
+        <source>Straight line: the distance packet (19) says %1 mm, the encoders %2 mm%3.</source>
+        <translation>Gerade Linie: Das Streckenpaket (19) sagt %1 mm, die Encoder %2 mm%3.</translation>
+    </message>
+    <message>
+        <source>: they disagree</source>
+        <translation>: Sie stimmen nicht überein</translation>
+    </message>
+    <message>
+        <source>Measured angle</source>
+        <translation>Gemessener Winkel</translation>
+    </message>
+    <message>
+        <source>degrees</source>
+        <translation>Grad</translation>
+    </message>
+    <message>
+        <source>Turn: the angle packet (20) says %1 degrees, the encoders %2 degrees%3.</source>
+        <translation>Drehung: Das Winkelpaket (20) sagt %1 Grad, die Encoder %2 Grad%3.</translation>
+    </message>
+    <message>
+        <source>These runs cannot be right: %1</source>
+        <translation>Diese Fahrten können nicht stimmen: %1</translation>
+    </message>
+    <message>
+        <source>This robot&apos;s firmware reports its own packets wrongly (Robot → Read firmware version… names it). The map uses the encoders.</source>
+        <translation>Die Firmware dieses Roboters meldet ihre eigenen Pakete falsch (Roboter → Firmware-Version lesen… nennt sie). Die Karte verwendet die Encoder.</translation>
+    </message>
+    <message>
+        <source>Firmware %1 reports its own packets wrongly. The map uses the encoders.</source>
+        <translation>Die Firmware %1 meldet ihre eigenen Pakete falsch. Die Karte verwendet die Encoder.</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;&lt;b&gt;Left wheel&lt;/b&gt; %1 mm (%2 × the documented 72 mm), &lt;b&gt;right wheel&lt;/b&gt; %3 mm (%4 ×)%5.&lt;br&gt;&lt;b&gt;Wheel base&lt;/b&gt; %6 mm (documented 235 mm).&lt;/p&gt;&lt;p&gt;A 1 m square driven by the encoders, predicted from these runs: &lt;b&gt;%7 mm&lt;/b&gt; from its start with the wheels counted now, &lt;b&gt;%8 mm&lt;/b&gt; with these.&lt;/p&gt;</source>
+        <translation>&lt;p&gt;&lt;b&gt;Linkes Rad&lt;/b&gt; %1 mm (%2 × die dokumentierten 72 mm), &lt;b&gt;rechtes Rad&lt;/b&gt; %3 mm (%4 ×)%5.&lt;br&gt;&lt;b&gt;Radabstand&lt;/b&gt; %6 mm (dokumentiert 235 mm).&lt;/p&gt;&lt;p&gt;Ein nach den Encodern gefahrenes 1-m-Quadrat, aus diesen Fahrten vorhergesagt: &lt;b&gt;%7 mm&lt;/b&gt; von seinem Start mit den jetzt gezählten Rädern, &lt;b&gt;%8 mm&lt;/b&gt; mit diesen.&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>: the two wheels differ</source>
+        <translation>: Die beiden Räder sind verschieden</translation>
+    </message>
+    <message>
+        <source>%1 is counted with the documented wheels: 72 mm, 235 mm apart.</source>
+        <translation>%1 wird mit den dokumentierten Rädern gezählt: 72 mm, 235 mm Abstand.</translation>
+    </message>
+    <message>
+        <source>%1 is counted with wheels of %2 mm (left) and %3 mm (right), %4 mm apart, measured on %5.</source>
+        <translation>%1 wird mit Rädern von %2 mm (links) und %3 mm (rechts) und %4 mm Abstand gezählt, gemessen am %5.</translation>
+    </message>
+</context>
+<context>
+    <name>CalibrationWizardAction</name>
+    <message>
+        <source>&amp;Calibrate odometry…</source>
+        <translation>Odometrie &amp;kalibrieren…</translation>
+    </message>
+    <message>
+        <source>Measure the selected robot&apos;s real wheels, so that its map stops drifting</source>
+        <translation>Die wirklichen Räder des ausgewählten Roboters messen, damit seine Karte nicht mehr abdriftet</translation>
+    </message>
+</context>
+<context>
     <name>ChannelChooser</name>
     <message>
         <source>Bumps &amp; cliffs</source>
@@ -689,6 +958,10 @@ Die Wahl entscheidet, wie die Radzähler gelesen werden: Die falsche spiegelt je
         <translation>%1 kann nicht wiedergegeben werden</translation>
     </message>
     <message>
+        <source>--sim takes 1 to %1 robots, not %2</source>
+        <translation>--sim nimmt 1 bis %1 Roboter, nicht %2</translation>
+    </message>
+    <message>
         <source>Usage: roomba-dashboard [--sim [N] | --port PATH | --tcp HOST:PORT | --replay FILE]
                         [--profile P] [--baud N] [--record FILE] [--lang CODE]
 
@@ -700,6 +973,10 @@ Die Wahl entscheidet, wie die Radzähler gelesen werden: Die falsche spiegelt je
   --baud N           the line speed; the profile&apos;s default when left out
   --record FILE      record every byte to and from the robot into FILE
   --lang CODE        the language of the window: %1
+  --wheel-diameter MM, --left-wheel-diameter MM, --right-wheel-diameter MM,
+  --wheel-base MM    with --sim: the virtual robot&apos;s real wheels (documents: 72
+                     and 235 mm), so that its odometry drifts as a real one&apos;s
+                     does, to practise Robot &gt; Calibrate odometry
   --help, --version
 
 Without a connection option the dashboard reconnects the robots it had last,
@@ -719,6 +996,10 @@ or the system&apos;s.
   --baud N           die Leitungsgeschwindigkeit; ohne Angabe die Vorgabe des Profils
   --record DATEI     jedes Byte zum und vom Roboter in DATEI aufzeichnen
   --lang CODE        die Sprache des Fensters: %1
+  --wheel-diameter MM, --left-wheel-diameter MM, --right-wheel-diameter MM,
+  --wheel-base MM    mit --sim: die wirklichen Räder des virtuellen Roboters
+                     (Dokumente: 72 und 235 mm), damit seine Odometrie abdriftet
+                     wie die eines echten, zum Üben von Roboter &gt; Odometrie kalibrieren
   --help, --version
 
 Ohne Verbindungsoption verbindet sich das Dashboard wieder mit den zuletzt
@@ -730,8 +1011,12 @@ Systems.
 </translation>
     </message>
     <message>
-        <source>--sim takes 1 to %1 robots, not %2</source>
-        <translation>--sim nimmt 1 bis %1 Roboter, nicht %2</translation>
+        <source>%1: &apos;%2&apos; is not a size in mm within half of the documents&apos; %3 mm</source>
+        <translation>%1: „%2“ ist keine Größe in mm innerhalb der Hälfte der dokumentierten %3 mm</translation>
+    </message>
+    <message>
+        <source>--wheel-diameter, --left-wheel-diameter, --right-wheel-diameter and --wheel-base go with --sim</source>
+        <translation>--wheel-diameter, --left-wheel-diameter, --right-wheel-diameter und --wheel-base gehören zu --sim</translation>
     </message>
 </context>
 <context>

@@ -331,6 +331,275 @@
     </message>
 </context>
 <context>
+    <name>CalibrationDrive</name>
+    <message>
+        <source>The run was stopped before the end.</source>
+        <translation>La marcha se detuvo antes del final.</translation>
+    </message>
+    <message>
+        <source>A recording cannot be driven: connect to the robot.</source>
+        <translation>Una grabación no se puede conducir: conéctate al robot.</translation>
+    </message>
+    <message>
+        <source>The robot sends no data: connect to it and wait until it streams.</source>
+        <translation>El robot no envía datos: conéctate a él y espera a que transmita.</translation>
+    </message>
+    <message>
+        <source>Say first whether this is a Roomba 500 or a Create 2: their encoders read the other way round.</source>
+        <translation>Di primero si es un Roomba 500 o un Create 2: sus codificadores se leen al revés.</translation>
+    </message>
+    <message>
+        <source>A run is already under way.</source>
+        <translation>Ya hay una marcha en curso.</translation>
+    </message>
+    <message>
+        <source>Stopped.</source>
+        <translation>Detenido.</translation>
+    </message>
+    <message>
+        <source>The robot did not enter Safe mode: is it on its dock, or a wheel lifted?</source>
+        <translation>El robot no entró en modo Safe: ¿está en su base, o tiene una rueda levantada?</translation>
+    </message>
+    <message>
+        <source>The robot bumped into something: clear its path and run the step again.</source>
+        <translation>El robot chocó con algo: despeja su camino y repite el paso.</translation>
+    </message>
+    <message>
+        <source>A cliff sensor saw a drop: move the robot away from the edge and run the step again.</source>
+        <translation>Un sensor de desnivel vio un borde: aparta el robot del borde y repite el paso.</translation>
+    </message>
+    <message>
+        <source>A wheel dropped: put the robot on the floor and run the step again.</source>
+        <translation>Una rueda cayó: pon el robot en el suelo y repite el paso.</translation>
+    </message>
+</context>
+<context>
+    <name>CalibrationWizard</name>
+    <message>
+        <source>Calibrate odometry: %1</source>
+        <translation>Calibrar la odometría: %1</translation>
+    </message>
+    <message>
+        <source>&lt; &amp;Back</source>
+        <translation>&lt; &amp;Atrás</translation>
+    </message>
+    <message>
+        <source>&amp;Next &gt;</source>
+        <translation>&amp;Siguiente &gt;</translation>
+    </message>
+    <message>
+        <source>&amp;Stop</source>
+        <translation>&amp;Parar</translation>
+    </message>
+    <message>
+        <source>Stop the robot (also Esc or Space)</source>
+        <translation>Parar el robot (también Esc o Espacio)</translation>
+    </message>
+    <message>
+        <source>&amp;Close</source>
+        <translation>&amp;Cerrar</translation>
+    </message>
+    <message>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <source>&amp;Drive straight</source>
+        <translation>&amp;Avanzar recto</translation>
+    </message>
+    <message>
+        <source>from the tape, in mm</source>
+        <translation>según la cinta métrica, en mm</translation>
+    </message>
+    <message>
+        <source>optional: mm to the left (+) or right (-) of the line</source>
+        <translation>opcional: mm a la izquierda (+) o a la derecha (-) de la línea</translation>
+    </message>
+    <message>
+        <source>Distance:</source>
+        <translation>Distancia:</translation>
+    </message>
+    <message>
+        <source>It really drove:</source>
+        <translation>Avanzó de verdad:</translation>
+    </message>
+    <message>
+        <source>Off the line at the end:</source>
+        <translation>Fuera de la línea al final:</translation>
+    </message>
+    <message>
+        <source>Put the robot on a hard, clear floor with room ahead, and mark the floor under the centre of its front edge. It enters Safe mode and drives ahead by its wheel encoders, slowly, then stops. Measure with a tape from the mark to where the front edge stopped and type it in. If it ended off the straight line, say how far: that tells a left wheel from a right one.</source>
+        <translation>Pon el robot en un suelo duro y despejado con espacio delante, y marca el suelo bajo el centro de su borde delantero. Entra en modo Safe, avanza despacio según los codificadores de sus ruedas y se detiene. Mide con una cinta desde la marca hasta donde se detuvo el borde delantero y escríbelo. Si terminó fuera de la línea recta, indica cuánto: eso distingue la rueda izquierda de la derecha.</translation>
+    </message>
+    <message>
+        <source> turns</source>
+        <translation> vueltas</translation>
+    </message>
+    <message>
+        <source>S&amp;pin</source>
+        <translation>&amp;Girar</translation>
+    </message>
+    <message>
+        <source>in degrees, e.g. 715</source>
+        <translation>en grados, p. ej. 715</translation>
+    </message>
+    <message>
+        <source>Spin:</source>
+        <translation>Girar:</translation>
+    </message>
+    <message>
+        <source>It really turned:</source>
+        <translation>Giró de verdad:</translation>
+    </message>
+    <message>
+        <source>Mark the start heading: lay a strip of tape on the floor from the middle of the robot&apos;s front edge straight ahead, and put a piece of tape on the bumper above it. The robot spins whole turns counter-clockwise on the spot by its encoders and stops. Count the whole turns and read how far the bumper&apos;s mark is past the floor&apos;s: two turns that stop 5 degrees short are 715 degrees.</source>
+        <translation>Marca el rumbo inicial: pega en el suelo una tira de cinta desde el centro del borde delantero del robot hacia delante, y un trozo de cinta en el parachoques encima de ella. El robot da vueltas completas en sentido antihorario sobre sí mismo según sus codificadores y se detiene. Cuenta las vueltas completas y mira cuánto ha pasado la marca del parachoques de la del suelo: dos vueltas que se quedan 5 grados cortas son 715 grados.</translation>
+    </message>
+    <message>
+        <source>&amp;Apply and keep</source>
+        <translation>&amp;Aplicar y guardar</translation>
+    </message>
+    <message>
+        <source>&amp;Reset to the documented wheels</source>
+        <translation>&amp;Restablecer las ruedas documentadas</translation>
+    </message>
+    <message>
+        <source>Step 1 of 3: straight line</source>
+        <translation>Paso 1 de 3: línea recta</translation>
+    </message>
+    <message>
+        <source>Step 2 of 3: turn</source>
+        <translation>Paso 2 de 3: giro</translation>
+    </message>
+    <message>
+        <source>Step 3 of 3: result</source>
+        <translation>Paso 3 de 3: resultado</translation>
+    </message>
+    <message>
+        <source>Driving… Esc, Space or Stop stops it.</source>
+        <translation>Avanzando… Esc, Espacio o Parar lo detienen.</translation>
+    </message>
+    <message>
+        <source>Spinning… Esc, Space or Stop stops it.</source>
+        <translation>Girando… Esc, Espacio o Parar lo detienen.</translation>
+    </message>
+    <message>
+        <source>Driving… %1 of %2 mm by the encoders. Esc, Space or Stop stops it.</source>
+        <translation>Avanzando… %1 de %2 mm según los codificadores. Esc, Espacio o Parar lo detienen.</translation>
+    </message>
+    <message>
+        <source>Spinning… %1 of %2 degrees by the encoders. Esc, Space or Stop stops it.</source>
+        <translation>Girando… %1 de %2 grados según los codificadores. Esc, Espacio o Parar lo detienen.</translation>
+    </message>
+    <message>
+        <source>Stopped after %1 mm by the encoders. Now measure what it really drove.</source>
+        <translation>Detenido tras %1 mm según los codificadores. Ahora mide cuánto avanzó de verdad.</translation>
+    </message>
+    <message>
+        <source>Stopped after %1 mm by the encoders. This is a virtual robot: the measurements below come from its true position in the room, %2 mm from the start and %3 mm off the line.</source>
+        <translation>Detenido tras %1 mm según los codificadores. Es un robot virtual: las medidas de abajo vienen de su posición real en la sala, a %2 mm del inicio y %3 mm fuera de la línea.</translation>
+    </message>
+    <message>
+        <source>Stopped after %1 degrees by the encoders. Now read how far it really turned.</source>
+        <translation>Detenido tras %1 grados según los codificadores. Ahora mira cuánto giró de verdad.</translation>
+    </message>
+    <message>
+        <source>Stopped after %1 degrees by the encoders. This is a virtual robot: the angle below comes from its true heading in the room, %2 degrees.</source>
+        <translation>Detenido tras %1 grados según los codificadores. Es un robot virtual: el ángulo de abajo viene de su rumbo real en la sala, %2 grados.</translation>
+    </message>
+    <message>
+        <source>%1 Nothing was measured; run the step again.</source>
+        <translation>%1 No se midió nada; repite el paso.</translation>
+    </message>
+    <message>
+        <source>%1: “%2” is not a number. Type what you measured, in %3.</source>
+        <translation>%1: «%2» no es un número. Escribe lo que mediste, en %3.</translation>
+    </message>
+    <message>
+        <source>%1: %2 %3 cannot be. Type what you measured, more than 0 %3.</source>
+        <translation>%1: %2 %3 no puede ser. Escribe lo que mediste, más de 0 %3.</translation>
+    </message>
+    <message>
+        <source>%1: %2 %3 is more than 50 % off the %4 %3 the encoders counted. Measure again: a typing slip, or a wheel that slipped?</source>
+        <translation>%1: %2 %3 se aleja más de un 50 % de los %4 %3 que contaron los codificadores. Vuelve a medir: ¿un error al escribir, o una rueda que patinó?</translation>
+    </message>
+    <message>
+        <source>Drive the straight line, the turn or both first.</source>
+        <translation>Haz primero la línea recta, el giro o ambos.</translation>
+    </message>
+    <message>
+        <source>Measured distance</source>
+        <translation>Distancia medida</translation>
+    </message>
+    <message>
+        <source>mm</source>
+        <translation>mm</translation>
+    </message>
+    <message>
+        <source>Off the line: “%1” is not a distance in mm less than half the run; leave it empty if you did not measure it.</source>
+        <translation>Fuera de la línea: «%1» no es una distancia en mm menor que la mitad de la marcha; déjalo vacío si no la mediste.</translation>
+    </message>
+    <message>
+        <source>Straight line: the distance packet (19) says %1 mm, the encoders %2 mm%3.</source>
+        <translation>Línea recta: el paquete de distancia (19) dice %1 mm, los codificadores %2 mm%3.</translation>
+    </message>
+    <message>
+        <source>: they disagree</source>
+        <translation>: no coinciden</translation>
+    </message>
+    <message>
+        <source>Measured angle</source>
+        <translation>Ángulo medido</translation>
+    </message>
+    <message>
+        <source>degrees</source>
+        <translation>grados</translation>
+    </message>
+    <message>
+        <source>Turn: the angle packet (20) says %1 degrees, the encoders %2 degrees%3.</source>
+        <translation>Giro: el paquete de ángulo (20) dice %1 grados, los codificadores %2 grados%3.</translation>
+    </message>
+    <message>
+        <source>These runs cannot be right: %1</source>
+        <translation>Estas marchas no pueden ser correctas: %1</translation>
+    </message>
+    <message>
+        <source>This robot&apos;s firmware reports its own packets wrongly (Robot → Read firmware version… names it). The map uses the encoders.</source>
+        <translation>El firmware de este robot informa mal sus propios paquetes (Robot → Leer la versión del firmware… lo nombra). El mapa usa los codificadores.</translation>
+    </message>
+    <message>
+        <source>Firmware %1 reports its own packets wrongly. The map uses the encoders.</source>
+        <translation>El firmware %1 informa mal sus propios paquetes. El mapa usa los codificadores.</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;&lt;b&gt;Left wheel&lt;/b&gt; %1 mm (%2 × the documented 72 mm), &lt;b&gt;right wheel&lt;/b&gt; %3 mm (%4 ×)%5.&lt;br&gt;&lt;b&gt;Wheel base&lt;/b&gt; %6 mm (documented 235 mm).&lt;/p&gt;&lt;p&gt;A 1 m square driven by the encoders, predicted from these runs: &lt;b&gt;%7 mm&lt;/b&gt; from its start with the wheels counted now, &lt;b&gt;%8 mm&lt;/b&gt; with these.&lt;/p&gt;</source>
+        <translation>&lt;p&gt;&lt;b&gt;Rueda izquierda&lt;/b&gt; %1 mm (%2 × los 72 mm documentados), &lt;b&gt;rueda derecha&lt;/b&gt; %3 mm (%4 ×)%5.&lt;br&gt;&lt;b&gt;Distancia entre ruedas&lt;/b&gt; %6 mm (documentada 235 mm).&lt;/p&gt;&lt;p&gt;Un cuadrado de 1 m recorrido según los codificadores, previsto a partir de estas marchas: &lt;b&gt;%7 mm&lt;/b&gt; de su inicio con las ruedas contadas ahora, &lt;b&gt;%8 mm&lt;/b&gt; con estas.&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>: the two wheels differ</source>
+        <translation>: las dos ruedas son distintas</translation>
+    </message>
+    <message>
+        <source>%1 is counted with the documented wheels: 72 mm, 235 mm apart.</source>
+        <translation>%1 se cuenta con las ruedas documentadas: 72 mm, a 235 mm una de otra.</translation>
+    </message>
+    <message>
+        <source>%1 is counted with wheels of %2 mm (left) and %3 mm (right), %4 mm apart, measured on %5.</source>
+        <translation>%1 se cuenta con ruedas de %2 mm (izquierda) y %3 mm (derecha), a %4 mm una de otra, medidas el %5.</translation>
+    </message>
+</context>
+<context>
+    <name>CalibrationWizardAction</name>
+    <message>
+        <source>&amp;Calibrate odometry…</source>
+        <translation>&amp;Calibrar la odometría…</translation>
+    </message>
+    <message>
+        <source>Measure the selected robot&apos;s real wheels, so that its map stops drifting</source>
+        <translation>Medir las ruedas reales del robot seleccionado, para que su mapa deje de desviarse</translation>
+    </message>
+</context>
+<context>
     <name>ChannelChooser</name>
     <message>
         <source>Bumps &amp; cliffs</source>
@@ -689,6 +958,10 @@ La elección decide cómo se leen los contadores de las ruedas: la equivocada re
         <translation>no se puede reproducir %1</translation>
     </message>
     <message>
+        <source>--sim takes 1 to %1 robots, not %2</source>
+        <translation>--sim admite de 1 a %1 robots, no %2</translation>
+    </message>
+    <message>
         <source>Usage: roomba-dashboard [--sim [N] | --port PATH | --tcp HOST:PORT | --replay FILE]
                         [--profile P] [--baud N] [--record FILE] [--lang CODE]
 
@@ -700,6 +973,10 @@ La elección decide cómo se leen los contadores de las ruedas: la equivocada re
   --baud N           the line speed; the profile&apos;s default when left out
   --record FILE      record every byte to and from the robot into FILE
   --lang CODE        the language of the window: %1
+  --wheel-diameter MM, --left-wheel-diameter MM, --right-wheel-diameter MM,
+  --wheel-base MM    with --sim: the virtual robot&apos;s real wheels (documents: 72
+                     and 235 mm), so that its odometry drifts as a real one&apos;s
+                     does, to practise Robot &gt; Calibrate odometry
   --help, --version
 
 Without a connection option the dashboard reconnects the robots it had last,
@@ -719,6 +996,10 @@ or the system&apos;s.
   --baud N           la velocidad de la línea; si se omite, la del perfil
   --record ARCHIVO   graba en ARCHIVO cada byte enviado al robot y recibido de él
   --lang CÓDIGO      el idioma de la ventana: %1
+  --wheel-diameter MM, --left-wheel-diameter MM, --right-wheel-diameter MM,
+  --wheel-base MM    con --sim: las ruedas reales del robot virtual (documentos:
+                     72 y 235 mm), para que su odometría se desvíe como la de uno
+                     real, y practicar Robot &gt; Calibrar la odometría
   --help, --version
 
 Sin opción de conexión, el panel vuelve a conectar los robots que tenía,
@@ -729,8 +1010,12 @@ sistema.
 </translation>
     </message>
     <message>
-        <source>--sim takes 1 to %1 robots, not %2</source>
-        <translation>--sim admite de 1 a %1 robots, no %2</translation>
+        <source>%1: &apos;%2&apos; is not a size in mm within half of the documents&apos; %3 mm</source>
+        <translation>%1: «%2» no es un tamaño en mm dentro de la mitad de los %3 mm documentados</translation>
+    </message>
+    <message>
+        <source>--wheel-diameter, --left-wheel-diameter, --right-wheel-diameter and --wheel-base go with --sim</source>
+        <translation>--wheel-diameter, --left-wheel-diameter, --right-wheel-diameter y --wheel-base van con --sim</translation>
     </message>
 </context>
 <context>

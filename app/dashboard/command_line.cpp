@@ -2,6 +2,7 @@
 #include "command_line.h"
 
 #include "recording_file.h"
+#include "odometry_calibration.h"
 #include "robot_profile.h"
 #include "language_switcher.h"
 
@@ -56,6 +57,10 @@ QString DashboardCommandLine::usage()
               "  --baud N           the line speed; the profile's default when left out\n"
               "  --record FILE      record every byte to and from the robot into FILE\n"
               "  --lang CODE        the language of the window: %1\n"
+              "  --wheel-diameter MM, --left-wheel-diameter MM, --right-wheel-diameter MM,\n"
+              "  --wheel-base MM    with --sim: the virtual robot's real wheels (documents: 72\n"
+              "                     and 235 mm), so that its odometry drifts as a real one's\n"
+              "                     does, to practise Robot > Calibrate odometry\n"
               "  --help, --version\n"
               "\n"
               "Without a connection option the dashboard reconnects the robots it had last,\n"
@@ -75,14 +80,20 @@ DashboardCommandLine DashboardCommandLine::parse(const QStringList &arguments)
     quint16 tcpPort = 0;
     std::optional<oi::ProfileId> profile;
     int baud = 0;
+    oi::WheelGeometry wheels;
+    double bothWheels = oi::kWheelDiameterMm;
+    std::optional<double> leftWheel, rightWheel;
+    bool wheelsGiven = false;
     const auto fail = [&line](const QString &message) {
         line.error = message;
         return line;
     };
     for (qsizetype i = 1; i < arguments.size(); ++i) {
         const QString &a = arguments[i];
+        const bool wheelOption = a == "--wheel-diameter" || a == "--left-wheel-diameter"
+                                 || a == "--right-wheel-diameter" || a == "--wheel-base";
         const bool takesValue = a == "--port" || a == "--tcp" || a == "--replay" || a == "--profile"
-                                || a == "--baud" || a == "--record" || a == "--lang";
+                                || a == "--baud" || a == "--record" || a == "--lang" || wheelOption;
         if (takesValue && i + 1 >= arguments.size())
             return fail(tr("%1 needs a value; see --help").arg(a));
         const QString value = takesValue ? arguments[++i] : QString();
@@ -136,6 +147,21 @@ DashboardCommandLine DashboardCommandLine::parse(const QStringList &arguments)
             if (!QFileInfo(value).absoluteDir().exists())
                 return fail(tr("--record: the folder of '%1' does not exist").arg(value));
             line.recordPath = value;
+        } else if (wheelOption) {
+            // The virtual robot's real wheels, wrong on purpose to practise calibrating.
+            const bool base = a == "--wheel-base";
+            const double documented = base ? oi::kWheelBaseMm : oi::kWheelDiameterMm;
+            bool ok = false;
+            const double mm = value.toDouble(&ok);
+            if (!ok || !oi::wheelFigureProblem(mm, documented, {}).empty())
+                return fail(tr("%1: '%2' is not a size in mm within half of the documents' %3 mm").arg(a, value).arg(documented));
+            if (base)
+                wheels.wheelBaseMm = mm;
+            else if (a == "--wheel-diameter")
+                bothWheels = mm;
+            else
+                (a == "--left-wheel-diameter" ? leftWheel : rightWheel) = mm;
+            wheelsGiven = true;
         } else if (a == "--lang") {
             if (!isUiLanguage(value))
                 return fail(tr("unknown language '%1' (%2)").arg(value, languageCodes()));
@@ -144,6 +170,10 @@ DashboardCommandLine DashboardCommandLine::parse(const QStringList &arguments)
             return fail(tr("unknown argument '%1'; see --help").arg(a));
         }
     }
+    if (wheelsGiven && target != Target::Sim)
+        return fail(tr("--wheel-diameter, --left-wheel-diameter, --right-wheel-diameter and --wheel-base go with --sim"));
+    wheels.leftDiameterMm = leftWheel.value_or(bothWheels);
+    wheels.rightDiameterMm = rightWheel.value_or(bothWheels);
     switch (target) {
     case Target::Saved:
         if (profile || baud)
@@ -151,6 +181,7 @@ DashboardCommandLine DashboardCommandLine::parse(const QStringList &arguments)
         break;
     case Target::Sim:
         line.connection = oilink::LinkSettings::virtualRobotOf(profile.value_or(oi::ProfileId::Create2), profile);
+        line.connection->virtualWheels = wheels;
         break;
     case Target::Port:
         line.connection = oilink::LinkSettings::serial(port, profile, baud);

@@ -3,6 +3,7 @@
 
 #include "broker_actions.h"
 #include "byte_inspector.h"
+#include "calibration_wizard.h"
 #include "connection_bar.h"
 #include "connection_request.h"
 #include "dock_layout.h"
@@ -63,6 +64,7 @@ MainWindow::MainWindow(QWidget *parent) : QMainWindow(parent)
     m_recording = new RecordingActions(m_fleet, this);
     m_roomActions = new RoomActions(m_room->room(), this);
     m_firmwareReading = new FirmwareReading(m_fleet, this);
+    m_calibration = new CalibrationWizardAction(m_fleet, *m_room, this);
     connect(m_recording, &RecordingActions::message, this, &MainWindow::showMessage);
     connect(m_roomActions, &RoomActions::message, this, &MainWindow::showMessage);
     connect(m_broker, &BrokerActions::message, this, [this](const QString &m) { statusBar()->showMessage(m, 8000); });
@@ -309,6 +311,7 @@ void MainWindow::buildMenus()
     m_robotMenu = menuBar()->addMenu(QString());
     m_robotMenu->setObjectName("robotMenu");
     m_robotMenu->addAction(m_firmwareReading->action());
+    m_robotMenu->addAction(m_calibration->action());
 
     m_viewMenu = menuBar()->addMenu(QString());
     for (QDockWidget *dock : m_layout->docks())
@@ -336,6 +339,7 @@ void MainWindow::retranslateUi()
     m_quitAction->setText(tr("&Quit"));
     m_robotMenu->setTitle(tr("&Robot"));
     m_firmwareReading->retranslate();
+    m_calibration->retranslate();
     m_viewMenu->setTitle(tr("&View"));
     m_languages->retranslate();
     m_layout->retranslate();

@@ -19,6 +19,7 @@ class ByteInspector;
 class ConnectionBar;
 class DockLayout;
 class DrivePad;
+class CalibrationWizardAction;
 class FirmwareReading;
 class FleetConsole;
 class FleetView;
@@ -78,6 +79,7 @@ public:
     RoomActions *roomActions() const { return m_roomActions; }
     // Robot → Read firmware version…
     FirmwareReading *firmwareReading() const { return m_firmwareReading; }
+    CalibrationWizardAction *calibration() const { return m_calibration; }
     sim::RobotId roomRobot() const;
     const SensorHistory &history() { return session().history(); }
     // Samples kept per channel for every robot; clears the histories. For the
@@ -163,6 +165,7 @@ private:
     RoomActions *m_roomActions = nullptr; // the room as a document: files and edits
     RecordingActions *m_recording = nullptr;
     FirmwareReading *m_firmwareReading = nullptr;
+    CalibrationWizardAction *m_calibration = nullptr;
     RobotBar *m_robotBar = nullptr;
     SelectedRobotView *m_view = nullptr;
     DockLayout *m_layout = nullptr;

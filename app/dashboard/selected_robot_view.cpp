@@ -76,6 +76,8 @@ void SelectedRobotView::show(RobotSession *robot)
         connect(robot, &RobotSession::statisticsChanged, v.status, &RobotStatusBar::showStatistics),
         connect(robot, &RobotSession::errorOccurred, v.connectionBar, &ConnectionBar::showError),
         connect(robot, &RobotSession::firmwareChanged, this, [this, robot] { showFirmware(*robot); }),
+        // A calibration applied, reset or restored: the map's wheel fields follow.
+        connect(robot, &RobotSession::calibrationChanged, this, [v, robot] { v.map->setOdometry(&robot->odometry()); }),
         connect(robot, &RobotSession::recordingStatus, this, [v](const oilink::RecordingStatus &status) {
             v.status->showRecording(status);
             v.recording->showSelectedRobot();

@@ -4,7 +4,9 @@
 
 #include "command_catalog.h"
 #include "command_sender.h"
+#include "command_encoder.h"
 #include "connection_doctor.h"
+#include "odometry_calibration.h"
 #include "profile_probe.h"
 #include "recording_file.h"
 #include "recording_mcap.h"
@@ -24,7 +26,10 @@
 #include <QJsonObject>
 #include <QTimer>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <iostream>
 #include <iterator>
 #include <memory>
@@ -87,6 +92,21 @@ Commands:
       or Create 2 found without --profile is named on standard error with
       the flag to give), 1 with what to change on the last line.
         roomba-ctl doctor --port /dev/ttyUSB0
+  calibrate ROBOT [--profile P] [--baud B] (--straight MM | --turns N)
+      Drive one calibration run by the wheel encoders, counted with the
+      documented 72 mm wheels and 235 mm wheel base, in Safe mode, slowly
+      (100 mm/s), then stop: --straight MM ahead, or --turns N whole turns
+      on the spot (counter-clockwise). A bump, cliff or wheel drop stops the
+      run (exit status 1); so does Ctrl+C. Prints one JSON line: the counts
+      and the robot's own distance and angle packets. Measure what the robot
+      really did (a tape from start to end; a mark on the floor for turns)
+      and give it to calibrate --compute.
+        roomba-ctl calibrate --port /dev/ttyUSB0 --straight 1000
+  calibrate --compute [--straight MM --measured MM] [--turns N --measured-angle DEG]
+      Work out the wheels from runs driven as above: the wheel diameters
+      (left, right), their scale against the documented 72 mm, the wheel base,
+      and the error of a 1 m square before and after, as one JSON line.
+        roomba-ctl calibrate --compute --straight 1000 --measured 1040 --turns 2 --measured-angle 700
   csv RECORDING
       Print a recording (.oirec, from the dashboard or its --record) as CSV:
       time_s, then one column per packet, one row per stream frame. A damaged
@@ -632,6 +652,230 @@ int runDoctor(int argc, char **argv, const std::vector<std::string> &args)
     return status;
 }
 
+// --- Calibrating the odometry ---
+
+// A whole decimal number such as "1040" or "-2.5"; nothing else.
+bool parseNumber(const std::string &text, double &out)
+{
+    if (text.empty())
+        return false;
+    char *end = nullptr;
+    out = std::strtod(text.c_str(), &end);
+    return end == text.c_str() + text.size() && std::isfinite(out);
+}
+
+// Takes "--name VALUE" out of `args` (after `from`). Returns false after
+// printing an error when the value is missing.
+bool takeOption(std::vector<std::string> &args, std::size_t from, const std::string &name,
+                std::optional<std::string> &value)
+{
+    for (std::size_t i = from; i < args.size(); ++i) {
+        if (args[i] != name)
+            continue;
+        if (i + 1 >= args.size()) {
+            fail(name + " needs a value");
+            return false;
+        }
+        value = args[i + 1];
+        args.erase(args.begin() + std::ptrdiff_t(i), args.begin() + std::ptrdiff_t(i) + 2);
+        return true;
+    }
+    return true;
+}
+
+// The runs' sizes as given: mm ahead (positive) and whole turns (1 to 10).
+bool readRunSizes(const std::optional<std::string> &straight, const std::optional<std::string> &turns,
+                  std::optional<double> &straightMm, std::optional<int> &turnCount)
+{
+    double number = 0;
+    if (straight) {
+        if (!parseNumber(*straight, number) || number < 100 || number > 5000) {
+            fail("--straight: '" + *straight + "' is not a distance in mm from 100 to 5000");
+            return false;
+        }
+        straightMm = number;
+    }
+    if (turns) {
+        long long whole = 0;
+        if (!oi::parseInteger(*turns, whole) || whole < 1 || whole > 10) {
+            fail("--turns: '" + *turns + "' is not a whole number of turns from 1 to 10");
+            return false;
+        }
+        turnCount = int(whole);
+    }
+    return true;
+}
+
+constexpr double kTwoPi = 2 * 3.14159265358979323846;
+
+int computeCalibration(std::vector<std::string> args)
+{
+    std::optional<std::string> straight, measured, turns, measuredAngle;
+    if (!takeOption(args, 1, "--straight", straight) || !takeOption(args, 1, "--measured", measured)
+        || !takeOption(args, 1, "--turns", turns) || !takeOption(args, 1, "--measured-angle", measuredAngle))
+        return 2;
+    args.erase(std::remove(args.begin(), args.end(), std::string("--compute")), args.end());
+    if (args.size() > 1)
+        return fail("calibrate --compute: unexpected '" + args[1] + "'");
+    if (!straight && !turns)
+        return fail("calibrate --compute needs --straight MM --measured MM, --turns N --measured-angle DEG, or both");
+    if (straight.has_value() != measured.has_value())
+        return fail("--straight and --measured go together: the distance driven and the distance measured");
+    if (turns.has_value() != measuredAngle.has_value())
+        return fail("--turns and --measured-angle go together: the turns driven and the angle measured");
+    std::optional<double> straightMm;
+    std::optional<int> turnCount;
+    if (!readRunSizes(straight, turns, straightMm, turnCount))
+        return 2;
+
+    const oi::WheelGeometry documented;
+    std::optional<oi::StraightRun> straightRun;
+    std::optional<oi::TurnRun> turnRun;
+    double number = 0;
+    if (straightMm) {
+        // Not a number is refused by the same rule as zero and the absurd.
+        straightRun = oi::StraightRun{oi::countsFor(documented, *straightMm, 0),
+                                      parseNumber(*measured, number) ? number : std::nan(""), 0};
+    }
+    if (turnCount) {
+        const double driven = *turnCount * kTwoPi;
+        turnRun = oi::TurnRun{oi::countsFor(documented, 0, driven),
+                              (parseNumber(*measuredAngle, number) ? number : std::nan("")) * kTwoPi / 360};
+    }
+    const oi::Result<oi::Calibration> result = oi::calibrate(documented, straightRun, turnRun);
+    if (!result) {
+        std::cerr << "roomba-ctl: " << result.error().describe() << "; nothing computed\n";
+        return 1;
+    }
+    const oi::WheelGeometry &w = result->wheels;
+    const QJsonObject out{
+        {"leftWheelDiameterMm", w.leftDiameterMm},
+        {"rightWheelDiameterMm", w.rightDiameterMm},
+        {"leftWheelScale", w.leftDiameterMm / oi::kWheelDiameterMm},
+        {"rightWheelScale", w.rightDiameterMm / oi::kWheelDiameterMm},
+        {"wheelBaseMm", w.wheelBaseMm},
+        {"squareErrorBeforeMm", result->squareErrorBeforeMm},
+        {"squareErrorAfterMm", result->squareErrorAfterMm},
+    };
+    std::cout << QJsonDocument(out).toJson(QJsonDocument::Compact).toStdString() << std::endl;
+    return 0;
+}
+
+int driveCalibrationRun(int argc, char **argv, std::vector<std::string> args)
+{
+    std::optional<std::string> straight, turns;
+    if (!takeOption(args, 1, "--straight", straight) || !takeOption(args, 1, "--turns", turns))
+        return 2;
+    LinkOptions o;
+    const int at = parseLinkOptions(args, 1, o, false, "calibrate");
+    if (at < 0)
+        return 2;
+    if (static_cast<std::size_t>(at) != args.size())
+        return fail("calibrate: unexpected '" + args[std::size_t(at)] + "'");
+    if (straight.has_value() == turns.has_value())
+        return fail("calibrate needs one run: --straight MM or --turns N");
+    std::optional<double> straightMm;
+    std::optional<int> turnCount;
+    if (!readRunSizes(straight, turns, straightMm, turnCount))
+        return 2;
+    const auto kind = straightMm ? oi::EncoderRun::Kind::Straight : oi::EncoderRun::Kind::Turn;
+    oi::EncoderRun run(kind, straightMm ? *straightMm : *turnCount * kTwoPi, oi::WheelGeometry{});
+
+    QCoreApplication app(argc, argv);
+    oilink::RobotLinkThread link;
+    link.setTransportFactory(transports::transportFactory());
+    const oi::RobotProfile *profile = nullptr;
+    int frames = 0, status = 0;
+    bool finished = false;
+    std::optional<oi::WheelSpeeds> sent;
+    const auto sendBytes = [&](const oi::Bytes &bytes) {
+        link.send(QByteArray(reinterpret_cast<const char *>(bytes.data()), qsizetype(bytes.size())));
+    };
+    const auto stopRobot = [&] {
+        if (profile)
+            sendBytes(oi::CommandEncoder(*profile).stopMotion());
+    };
+    const auto finish = [&](int code, const std::string &message) {
+        if (finished)
+            return;
+        finished = true;
+        status = code;
+        stopRobot();
+        if (!message.empty())
+            std::cerr << "roomba-ctl: " << message << "\n";
+        QCoreApplication::exit(code);
+    };
+    TerminationSignals termination;
+    QObject::connect(&termination, &TerminationSignals::requested, &app, [&](int signal) {
+        finish(TerminationSignals::exitStatusFor(signal), "interrupted: the robot is stopped");
+    });
+    QObject::connect(&link, &oilink::RobotLinkThread::profileAssumed, &app, [&] {
+        finish(2, toStd(CommandSender::roombaOrCreate2Note(o.settings.describe(), false)));
+    });
+    QObject::connect(&link, &oilink::RobotLinkThread::errorOccurred, &app,
+                     [&](const QString &message) { finish(1, toStd(message)); });
+    QObject::connect(&link, &oilink::RobotLinkThread::streamStarted, &app, [&](oi::ProfileId id, int, const QList<int> &) {
+        profile = &oi::profile(id);
+        sendBytes(*oi::CommandEncoder(*profile).safe());
+    });
+    QObject::connect(&link, &oilink::RobotLinkThread::snapshot, &app, [&](const oi::SensorSnapshot &frame) {
+        if (finished || !profile)
+            return;
+        const oi::OiMode mode = frame.oiMode();
+        if (mode != oi::OiMode::Safe && mode != oi::OiMode::Full) {
+            if (++frames > 70)
+                finish(1, "the robot did not enter Safe mode: is it on its dock, or a wheel lifted?");
+            return;
+        }
+        if (const std::string hazard = oi::runHazard(frame); !hazard.empty())
+            return finish(1, hazard + ": the run stopped before the end; clear the way and run it again");
+        const oi::WheelSpeeds speeds = run.update(frame);
+        if (!run.reached()) {
+            if (!sent || sent->left != speeds.left || sent->right != speeds.right)
+                sendBytes(*oi::CommandEncoder(*profile).driveDirect(int(std::lround(speeds.right)),
+                                                                     int(std::lround(speeds.left))));
+            sent = speeds;
+            return;
+        }
+        if (sent) {
+            stopRobot();
+            sent.reset();
+        }
+        if (!run.settled())
+            return;
+        const oi::WheelGeometry documented;
+        const QJsonObject out{
+            {"run", kind == oi::EncoderRun::Kind::Straight ? "straight" : "turn"},
+            {"profile", QString::fromUtf8(profile->key.data(), qsizetype(profile->key.size()))},
+            {"leftCounts", run.counts().left},
+            {"rightCounts", run.counts().right},
+            {"encoderDistanceMm", oi::countedDistanceMm(documented, run.counts())},
+            {"encoderAngleDeg", oi::countedTurnRad(documented, run.counts()) * 360 / kTwoPi},
+            {"packetDistanceMm", run.packetDistanceMm()},
+            {"packetAngleDeg", run.packetAngleDeg()},
+        };
+        std::cout << QJsonDocument(out).toJson(QJsonDocument::Compact).toStdString() << std::endl;
+        if (const std::string said = oi::packetDisagreement(run); !said.empty())
+            std::cerr << "roomba-ctl: " << said << "\n";
+        finish(0, {});
+    });
+    QTimer::singleShot(kFirstFrameTimeoutMs, &app, [&] {
+        if (!profile)
+            finish(1, toStd(o.settings.describe()) + ": no data: is the robot on, and is the baud right?");
+    });
+    link.open(o.settings);
+    QCoreApplication::exec();
+    link.stop();
+    return status;
+}
+
+int calibrate(int argc, char **argv, const std::vector<std::string> &args)
+{
+    if (std::find(args.begin(), args.end(), std::string("--compute")) != args.end())
+        return computeCalibration(args);
+    return driveCalibrationRun(argc, argv, args);
+}
+
 int recordingCsv(const std::vector<std::string> &args, std::size_t from)
 {
     if (args.size() != from + 1)
@@ -721,6 +965,8 @@ int main(int argc, char **argv)
         return sendToRobot(argc, argv, args);
     if (command == "doctor")
         return runDoctor(argc, argv, args);
+    if (command == "calibrate")
+        return calibrate(argc, argv, args);
     if (command == "csv")
         return recordingCsv(args, 1);
     if (command == "mcap")

@@ -4,7 +4,9 @@
 
 #include "brc_control_server.h"
 #include "firmware_banner.h"
+#include "odometry_calibration.h"
 #include "pty_robot_server.h"
+#include "real_time_robot.h"
 #include "room_file.h"
 #include "tcp_robot_server.h"
 #include "termination_signals.h"
@@ -46,6 +48,35 @@ bool parseRate(const QCommandLineParser &parser, const QString &name, double &ou
         return false;
     }
     return true;
+}
+
+// The robot's real wheels from --wheel-diameter, --left-wheel-diameter,
+// --right-wheel-diameter and --wheel-base; the documents' where not given.
+bool parseWheels(const QCommandLineParser &parser, oi::WheelGeometry &wheels, QString &message)
+{
+    const auto read = [&](const QString &name, double documented, double &out) {
+        if (!parser.isSet(name))
+            return true;
+        bool ok = false;
+        const QString text = parser.value(name);
+        const double value = text.toDouble(&ok);
+        const std::string problem = oi::wheelFigureProblem(ok ? value : std::nan(""), documented, "");
+        if (!ok || !problem.empty()) {
+            message = QStringLiteral("--%1: '%2' is not a size in mm within half of the documents' %3 mm")
+                          .arg(name, text)
+                          .arg(documented);
+            return false;
+        }
+        out = value;
+        return true;
+    };
+    double both = oi::kWheelDiameterMm;
+    if (!read(QStringLiteral("wheel-diameter"), oi::kWheelDiameterMm, both))
+        return false;
+    wheels.leftDiameterMm = wheels.rightDiameterMm = both;
+    return read(QStringLiteral("left-wheel-diameter"), oi::kWheelDiameterMm, wheels.leftDiameterMm)
+           && read(QStringLiteral("right-wheel-diameter"), oi::kWheelDiameterMm, wheels.rightDiameterMm)
+           && read(QStringLiteral("wheel-base"), oi::kWheelBaseMm, wheels.wheelBaseMm);
 }
 
 // Points `linkPath` at `target`, replacing a symbolic link already there but
@@ -104,6 +135,10 @@ int main(int argc, char *argv[])
         {QStringLiteral("asleep"), QStringLiteral("Start asleep, as after Power (133): deaf to bytes until a BRC pulse.")},
         {QStringLiteral("speed"), QStringLiteral("Run the robot's clock N times faster than real time (default 1), e.g. to watch it sleep."), QStringLiteral("N"), QStringLiteral("1")},
         {QStringLiteral("on-dock"), QStringLiteral("Start with the robot on its dock (charging in Passive; Safe mode will not drive there).")},
+        {QStringLiteral("wheel-diameter"), QStringLiteral("The real diameter of both drive wheels in mm (documents: 72). The firmware counts by 72 mm, so the encoders lie as a real robot's do: practise calibrating."), QStringLiteral("MM")},
+        {QStringLiteral("left-wheel-diameter"), QStringLiteral("The real diameter of the left wheel in mm (overrides --wheel-diameter)."), QStringLiteral("MM")},
+        {QStringLiteral("right-wheel-diameter"), QStringLiteral("The real diameter of the right wheel in mm (overrides --wheel-diameter)."), QStringLiteral("MM")},
+        {QStringLiteral("wheel-base"), QStringLiteral("The real distance between the wheels in mm (documents: 235)."), QStringLiteral("MM")},
     });
 
     if (!parser.parse(QCoreApplication::arguments()))
@@ -157,6 +192,10 @@ int main(int argc, char *argv[])
     if (!ok || !std::isfinite(speed) || speed < 0.01 || speed > 1000)
         return fail(kUsageError, QStringLiteral("--speed: '%1' is not a factor from 0.01 to 1000").arg(parser.value(QStringLiteral("speed"))));
 
+    oi::WheelGeometry wheels;
+    if (!parseWheels(parser, wheels, message))
+        return fail(kUsageError, message);
+
     const bool tcp = parser.isSet(QStringLiteral("tcp"));
     quint16 port = 0;
     QHostAddress address;
@@ -198,6 +237,7 @@ int main(int argc, char *argv[])
     const auto room = std::make_shared<sim::Room>(world);
     robot->joinRoom(room, room->placeNewRobot());
     robot->setFaultRates(rates);
+    robot->setWheels(wheels);
     if (parser.isSet(QStringLiteral("on-dock"))) {
         // Nose first onto the contacts, facing the way the dock does not.
         const sim::World::Dock dock = *robot->world().dock;

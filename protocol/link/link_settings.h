@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "odometry.h"
 #include "robot_profile.h"
 
 #include <QList>
@@ -41,6 +42,9 @@ struct LinkSettings {
     // Which robot the in-process virtual robot plays (TransportKind::Virtual).
     oi::ProfileId virtualRobot = oi::ProfileId::Create2;
     std::uint32_t virtualSeed = 1;
+    // The in-process virtual robot's real wheels, which may differ from the
+    // documents' on purpose (to practise calibrating).
+    oi::WheelGeometry virtualWheels;
     // The BRC pin: a serial adapter's line, and whether asserting that line
     // pulls BRC low (as on FTDI-style TTL cables) or lets it go.
     BrcLine brcLine = BrcLine::Rts;

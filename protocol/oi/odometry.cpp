@@ -20,6 +20,23 @@ double normalizedAngle(double rad)
 
 } // namespace
 
+void moveAlongArc(Pose &pose, double leftMm, double rightMm, double wheelBaseMm)
+{
+    const double d = (leftMm + rightMm) / 2;
+    const double turn = (rightMm - leftMm) / wheelBaseMm;
+    if (std::abs(turn) < 1e-12) {
+        pose.xMm += d * std::cos(pose.thetaRad);
+        pose.yMm += d * std::sin(pose.thetaRad);
+    } else {
+        // Exact arc of radius d / turn.
+        const double r = d / turn;
+        pose.xMm += r * (std::sin(pose.thetaRad + turn) - std::sin(pose.thetaRad));
+        pose.yMm -= r * (std::cos(pose.thetaRad + turn) - std::cos(pose.thetaRad));
+    }
+    pose.thetaRad = normalizedAngle(pose.thetaRad + turn);
+    pose.travelledMm += d;
+}
+
 void Odometry::reset(Pose start)
 {
     m_pose = start;
@@ -38,8 +55,34 @@ bool Odometry::setGeometry(double wheelBaseMm, double mmPerEncoderCount)
     if (!valid(wheelBaseMm) || !valid(mmPerEncoderCount))
         return false;
     m_wheelBaseMm = wheelBaseMm;
-    m_mmPerEncoderCount = mmPerEncoderCount;
+    m_leftMmPerCount = m_rightMmPerCount = mmPerEncoderCount;
     return true;
+}
+
+bool Odometry::setWheels(const WheelGeometry &wheels)
+{
+    if (!wheels.isValid())
+        return false;
+    m_wheelBaseMm = wheels.wheelBaseMm;
+    m_leftMmPerCount = wheels.leftMmPerCount();
+    m_rightMmPerCount = wheels.rightMmPerCount();
+    return true;
+}
+
+bool WheelGeometry::isValid() const
+{
+    const auto valid = [](double v) { return std::isfinite(v) && v > 0; };
+    return valid(leftDiameterMm) && valid(rightDiameterMm) && valid(wheelBaseMm);
+}
+
+double WheelGeometry::leftMmPerCount() const
+{
+    return Odometry::mmPerEncoderCountFor(leftDiameterMm);
+}
+
+double WheelGeometry::rightMmPerCount() const
+{
+    return Odometry::mmPerEncoderCountFor(rightDiameterMm);
 }
 
 double Odometry::mmPerEncoderCountFor(double wheelDiameterMm)
@@ -64,8 +107,8 @@ void Odometry::update(const SensorSnapshot &snapshot)
         const std::int32_t right = snapshot.rightEncoderCounts();
         // Counts of another profile mean another robot (or wheel order): re-anchor.
         if (m_reference && m_reference->profile == profile) {
-            const double leftMm = encoderDelta(m_reference->left, left) * m_mmPerEncoderCount;
-            const double rightMm = encoderDelta(m_reference->right, right) * m_mmPerEncoderCount;
+            const double leftMm = encoderDelta(m_reference->left, left) * m_leftMmPerCount;
+            const double rightMm = encoderDelta(m_reference->right, right) * m_rightMmPerCount;
             advance((leftMm + rightMm) / 2, (rightMm - leftMm) / m_wheelBaseMm);
         }
         m_reference = EncoderReference{profile, left, right};

@@ -24,6 +24,26 @@ inline constexpr double kEncoderCountsPerRevolution = 508.8;
 inline constexpr double kMmPerEncoderCount =
     3.14159265358979323846 * kWheelDiameterMm / kEncoderCountsPerRevolution;
 
+// A robot's real wheels: each drive wheel's diameter and the distance between
+// where they touch the floor. Real robots differ from the documents' 72 mm and
+// 235 mm (worn or swapped tyres), and the two wheels may differ from each other.
+struct WheelGeometry {
+    double leftDiameterMm = kWheelDiameterMm;
+    double rightDiameterMm = kWheelDiameterMm;
+    double wheelBaseMm = kWheelBaseMm;
+
+    // Every figure finite and positive.
+    bool isValid() const;
+    double leftMmPerCount() const;
+    double rightMmPerCount() const;
+    friend bool operator==(const WheelGeometry &, const WheelGeometry &) = default;
+};
+
+// Moves `pose` by each wheel's travel along the exact arc they make
+// `wheelBaseMm` apart (straight lines and turns on the spot included); the
+// path length goes to travelledMm.
+void moveAlongArc(Pose &pose, double leftMm, double rightMm, double wheelBaseMm);
+
 // Dead reckoning for a differential-drive robot from successive sensor frames.
 // Feed each decoded frame once: distance (19) and angle (20) are increments
 // since the last request, so a merged snapshot that repeats them would count
@@ -44,8 +64,11 @@ public:
     // returns false. The distance/angle fallback is already in mm and degrees
     // and ignores the geometry.
     bool setGeometry(double wheelBaseMm, double mmPerEncoderCount);
+    // The same with each wheel's own diameter (a calibrated robot).
+    bool setWheels(const WheelGeometry &wheels);
     double wheelBaseMm() const { return m_wheelBaseMm; }
-    double mmPerEncoderCount() const { return m_mmPerEncoderCount; }
+    // The mean of the two wheels'.
+    double mmPerEncoderCount() const { return (m_leftMmPerCount + m_rightMmPerCount) / 2; }
     // Millimetres per count for a wheel of this diameter (508.8 counts a turn).
     static double mmPerEncoderCountFor(double wheelDiameterMm);
 
@@ -73,7 +96,8 @@ private:
     Pose m_pose;
     FirmwareCorrections m_corrections;
     double m_wheelBaseMm = kWheelBaseMm;
-    double m_mmPerEncoderCount = kMmPerEncoderCount;
+    double m_leftMmPerCount = kMmPerEncoderCount;
+    double m_rightMmPerCount = kMmPerEncoderCount;
     std::optional<EncoderReference> m_reference;
 };
 

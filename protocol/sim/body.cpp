@@ -340,25 +340,14 @@ InfraredView senseInfrared(const World &world, const oi::Pose &pose, const oi::R
 }
 
 BodyMove moveBody(const World &world, oi::Pose &pose, double leftMm, double rightMm, bool traction,
-                  std::span<const Disc> others)
+                  std::span<const Disc> others, double wheelBaseMm)
 {
     BodyMove move{leftMm, rightMm, false};
     if (!traction)
         return move;
-    const double d = (leftMm + rightMm) / 2;
-    const double turn = (rightMm - leftMm) / oi::kWheelBaseMm;
+    const double turn = (rightMm - leftMm) / wheelBaseMm;
     oi::Pose next = pose;
-    if (std::abs(turn) < 1e-12) {
-        next.xMm += d * std::cos(pose.thetaRad);
-        next.yMm += d * std::sin(pose.thetaRad);
-    } else {
-        // Exact arc of radius d / turn.
-        const double r = d / turn;
-        next.xMm += r * (std::sin(pose.thetaRad + turn) - std::sin(pose.thetaRad));
-        next.yMm -= r * (std::cos(pose.thetaRad + turn) - std::cos(pose.thetaRad));
-    }
-    next.thetaRad = normalizedAngle(pose.thetaRad + turn);
-    next.travelledMm += d;
+    oi::moveAlongArc(next, leftMm, rightMm, wheelBaseMm);
 
     const Vec2 from{pose.xMm, pose.yMm}, to{next.xMm, next.yMm};
     for (const Segment &w : world.walls) {
@@ -380,8 +369,8 @@ BodyMove moveBody(const World &world, oi::Pose &pose, double leftMm, double righ
         next.xMm = pose.xMm;
         next.yMm = pose.yMm;
         next.travelledMm = pose.travelledMm;
-        move.leftMm = -turn * oi::kWheelBaseMm / 2;
-        move.rightMm = turn * oi::kWheelBaseMm / 2;
+        move.leftMm = -turn * wheelBaseMm / 2;
+        move.rightMm = turn * wheelBaseMm / 2;
     }
     pose = next;
     return move;

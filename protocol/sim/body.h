@@ -72,12 +72,12 @@ struct BodyMove {
     double leftMm = 0, rightMm = 0; // wheel travel, what the encoders count
     bool blocked = false;           // a wall stopped the body moving on
 };
-// Moves the body by the wheels' travel (differential drive on
-// oi::kWheelBaseMm). A wall or another robot in the way stops the translation and leaves the
+// Moves the body by the wheels' travel (differential drive on `wheelBaseMm`,
+// the robot's real one). A wall or another robot in the way stops the translation and leaves the
 // turn: the wheels stall against it, so their travel is what the body did.
 // Without traction (a drive wheel hanging in the air) the body stays where it
 // is and the wheels spin freely.
 BodyMove moveBody(const World &world, oi::Pose &pose, double leftMm, double rightMm, bool traction,
-                  std::span<const Disc> others = {});
+                  std::span<const Disc> others = {}, double wheelBaseMm = oi::kWheelBaseMm);
 
 } // namespace sim

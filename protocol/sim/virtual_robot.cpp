@@ -200,7 +200,8 @@ struct VirtualRobot::State {
     double speedLeft = 0, speedRight = 0;
     std::int32_t requestedVelocity = 0, requestedRadius = 0, requestedRight = 0, requestedLeft = 0;
     bool blocked = false, progressing = false;
-    double wheelLeftMm = 0, wheelRightMm = 0; // what the encoders have counted, unwrapped
+    double wheelLeftMm = 0, wheelRightMm = 0; // what the encoders have counted, unwrapped, in documented mm
+    oi::WheelGeometry wheels;                 // the real ones
     double distanceMm = 0, angleRaw = 0;      // since they were last reported
 
     // Brushes and vacuum (Roomba) or low side drivers (Create), in 144's order.
@@ -547,13 +548,20 @@ struct VirtualRobot::State {
         if (leftTravel != 0 || rightTravel != 0) {
             const bool traction = !wheelDropLeft() && !wheelDropRight();
             const double xBefore = pose.xMm, yBefore = pose.yMm;
-            const BodyMove m = moveBody(world, pose, leftTravel, rightTravel, traction, roomView.others);
+            // The speeds are what the firmware holds by its encoders, in
+            // documented millimetres; the real wheels turn that into travel.
+            const double leftScale = wheels.leftDiameterMm / oi::kWheelDiameterMm;
+            const double rightScale = wheels.rightDiameterMm / oi::kWheelDiameterMm;
+            const BodyMove m = moveBody(world, pose, leftTravel * leftScale, rightTravel * rightScale, traction,
+                                        roomView.others, wheels.wheelBaseMm);
             floorDirty = true;
             blocked = m.blocked;
-            wheelLeftMm += m.leftMm;
-            wheelRightMm += m.rightMm;
-            const double moved = (m.leftMm + m.rightMm) / 2;
-            const double turnedDeg = (m.rightMm - m.leftMm) / oi::kWheelBaseMm * 180 / kPi;
+            const double countedLeft = m.leftMm / leftScale, countedRight = m.rightMm / rightScale;
+            wheelLeftMm += countedLeft;
+            wheelRightMm += countedRight;
+            // The firmware's own distance and angle: from its counts, by the documents.
+            const double moved = (countedLeft + countedRight) / 2;
+            const double turnedDeg = (countedRight - countedLeft) / oi::kWheelBaseMm * 180 / kPi;
             distanceMm += moved;
             angleRaw += turnedDeg * angleFactor;
             if (wait && wait->kind == Command::WaitDistance)
@@ -1122,6 +1130,14 @@ void VirtualRobot::placeAt(oi::Pose pose)
 }
 
 const oi::Pose &VirtualRobot::truePose() const { return m_state->pose; }
+
+void VirtualRobot::setWheels(const oi::WheelGeometry &wheels)
+{
+    if (wheels.isValid())
+        m_state->wheels = wheels;
+}
+
+const oi::WheelGeometry &VirtualRobot::wheels() const { return m_state->wheels; }
 
 void VirtualRobot::joinRoom(std::shared_ptr<Room> room, RobotId id)
 {

@@ -70,6 +70,12 @@ public:
     // and takes a hand move or lift made through the room. It starts where
     // the room has it. The room must already hold `id`.
     void joinRoom(std::shared_ptr<Room> room, RobotId id);
+    // The robot's real wheels (default: the documents' 72 mm and 235 mm). The
+    // firmware knows only the documented ones: it drives and counts by them,
+    // so a wheel larger than documented carries the body farther than its
+    // encoder counts, its distance and angle packets say, as on a real robot.
+    void setWheels(const oi::WheelGeometry &wheels);
+    const oi::WheelGeometry &wheels() const;
     // Lifts wheels off the floor by hand (wheel drops), beside what the world does.
     void setWheelsLifted(bool left, bool right, bool caster = false);
     void pressButtons(std::uint8_t packet18Bits); // held until released with 0

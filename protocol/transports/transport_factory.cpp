@@ -8,8 +8,11 @@ namespace transports {
 oilink::Transport *createTransport(const oilink::LinkSettings &settings, int baud, std::shared_ptr<sim::Room> room,
                                    sim::RobotId robot, QObject *parent)
 {
-    if (settings.transport == oilink::TransportKind::Virtual)
-        return new sim::VirtualTransport(settings.virtualRobot, settings.virtualSeed, std::move(room), robot, parent);
+    if (settings.transport == oilink::TransportKind::Virtual) {
+        auto *transport = new sim::VirtualTransport(settings.virtualRobot, settings.virtualSeed, std::move(room), robot, parent);
+        transport->setWheels(settings.virtualWheels);
+        return transport;
+    }
     return oilink::createTransport(settings, baud, parent);
 }
 

@@ -27,6 +27,8 @@ void VirtualTransport::open()
     if (!m_robot) {
         m_robot = std::make_unique<RealTimeRobot>(oi::profile(m_profile), m_seed);
         m_robot->robot().joinRoom(m_room, m_id);
+        m_robot->robot().setWheels(m_wheels);
+        m_robot->setTimeScale(m_timeScale);
         connect(m_robot.get(), &RealTimeRobot::bytesOut, this, &VirtualTransport::robotSaid);
     }
     m_open = true;

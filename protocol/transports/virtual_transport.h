@@ -4,6 +4,7 @@
 #include "room.h"
 #include "transport.h"
 
+#include "odometry.h"
 #include "robot_profile.h"
 
 #include <cstdint>
@@ -35,6 +36,11 @@ public:
     QString describe() const override;
     std::optional<oi::ProfileId> knownRobot() const override { return m_profile; }
 
+    // The robot's real wheels, from the next open() (LinkSettings::virtualWheels).
+    void setWheels(const oi::WheelGeometry &wheels) { m_wheels = wheels; }
+    // The robot's clock runs this many times faster than real time, from the next open() (tests).
+    void setTimeScale(double scale) { m_timeScale = scale; }
+
     const std::shared_ptr<Room> &room() const { return m_room; }
     RobotId robotId() const { return m_id; }
     // The robot itself, for tests and demonstrations that stage faults;
@@ -46,6 +52,8 @@ private:
 
     oi::ProfileId m_profile;
     std::uint32_t m_seed;
+    oi::WheelGeometry m_wheels;
+    double m_timeScale = 1;
     std::shared_ptr<Room> m_room;
     RobotId m_id;
     std::unique_ptr<RealTimeRobot> m_robot;

@@ -48,6 +48,12 @@ private slots:
         QCOMPARE(parse("--lang es").language, QString("es"));
         QVERIFY(!parse("--lang es").connection);
 
+        // The virtual robot's real wheels, wrong on purpose; the documents' by default.
+        QCOMPARE(sim.connection->virtualWheels, oi::WheelGeometry{});
+        const auto worn = parse("--sim --wheel-diameter 74.88 --right-wheel-diameter 73 --wheel-base 228");
+        QVERIFY2(worn.error.isEmpty(), qPrintable(worn.error));
+        QCOMPARE(worn.connection->virtualWheels, (oi::WheelGeometry{74.88, 73, 228}));
+
         QVERIFY(parse("--help").showHelp);
         QVERIFY(parse("--version").showVersion);
     }
@@ -107,6 +113,10 @@ private slots:
         QTest::newRow("odd baud") << "--port /dev/ttyUSB0 --baud 12345" << "--baud 12345 is not a rate";
         QTest::newRow("profile alone") << "--profile create2" << "go with --sim, --port or --tcp";
         QTest::newRow("unknown") << "--fly" << "unknown argument '--fly'";
+        QTest::newRow("wheel not a number") << "--sim --wheel-diameter big" << "--wheel-diameter: 'big' is not a size in mm";
+        QTest::newRow("wheel absurd") << "--sim --left-wheel-diameter 200" << "within half of the documents' 72 mm";
+        QTest::newRow("wheel base of nothing") << "--sim --wheel-base 0" << "--wheel-base: '0'";
+        QTest::newRow("wheels of a real robot") << "--port /dev/ttyUSB0 --wheel-diameter 74" << "go with --sim";
     }
     void badArguments()
     {

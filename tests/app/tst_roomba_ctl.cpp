@@ -5,6 +5,8 @@
 #include <QProcess>
 #include <QTest>
 
+#include <cmath>
+
 namespace {
 
 struct Outcome {
@@ -83,6 +85,24 @@ private slots:
         QTest::newRow("disassemble") << QStringList{"disassemble", "--profile", "create1", "137", "1"} << 1
                                      << "Drive needs 4 data bytes; 1 remain";
         QTest::newRow("no command") << QStringList{} << 2 << "no command given";
+        // Measurements that cannot be right: nothing is computed.
+        const QStringList straight{"calibrate", "--compute", "--straight", "1000", "--measured"};
+        QTest::newRow("measured zero") << straight + QStringList{"0"} << 1 << "0 mm cannot be";
+        QTest::newRow("measured negative") << straight + QStringList{"-1040"} << 1 << "cannot be";
+        QTest::newRow("measured text") << straight + QStringList{"a metre"} << 1 << "not a number";
+        QTest::newRow("measured absurd") << straight + QStringList{"1600"} << 1 << "more than 50 % off";
+        QTest::newRow("angle absurd") << QStringList{"calibrate", "--compute", "--turns", "2", "--measured-angle", "100"}
+                                      << 1 << "measured angle: 100 degrees is more than 50 % off the 720";
+        QTest::newRow("measured alone") << QStringList{"calibrate", "--compute", "--measured", "1000"} << 2
+                                        << "needs --straight MM --measured MM";
+        QTest::newRow("straight alone") << QStringList{"calibrate", "--compute", "--straight", "1000"} << 2
+                                        << "--straight and --measured go together";
+        QTest::newRow("turns not whole") << QStringList{"calibrate", "--compute", "--turns", "1.5", "--measured-angle", "540"}
+                                         << 2 << "not a whole number of turns";
+        QTest::newRow("calibrate no robot") << QStringList{"calibrate", "--straight", "1000"} << 2
+                                            << "calibrate needs one of --port PATH";
+        QTest::newRow("calibrate both runs") << QStringList{"calibrate", "--sim", "--straight", "1000", "--turns", "2"} << 2
+                                             << "calibrate needs one run";
     }
     void errors()
     {
@@ -95,6 +115,21 @@ private slots:
         QVERIFY2(o.err.startsWith("roomba-ctl: ") && o.err.contains(message), qPrintable(o.err));
         if (status == 1)
             QCOMPARE(o.err.count('\n'), 1); // one line
+    }
+
+    void calibrateCompute()
+    {
+        const Outcome o = run({"calibrate", "--compute", "--straight", "1000", "--measured", "1040", "--turns", "2",
+                               "--measured-angle", "700"});
+        QCOMPARE(o.status, 0);
+        QCOMPARE(o.err, QString());
+        const QJsonObject result = json(o.out);
+        // 4 % farther than counted: wheels 4 % larger; 700 of 720 degrees with them: a wider base.
+        QVERIFY(std::abs(result["leftWheelDiameterMm"].toDouble() - 74.88) < 1e-6);
+        QVERIFY(std::abs(result["rightWheelDiameterMm"].toDouble() - 74.88) < 1e-6);
+        QVERIFY(std::abs(result["leftWheelScale"].toDouble() - 1.04) < 1e-9);
+        QVERIFY(std::abs(result["wheelBaseMm"].toDouble() - 720 * 1.04 * 235 / 700) < 1e-6);
+        QVERIFY(result["squareErrorBeforeMm"].toDouble() > result["squareErrorAfterMm"].toDouble());
     }
 
     void warningKeepsSuccess()

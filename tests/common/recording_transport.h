@@ -33,6 +33,8 @@ struct Recording {
     QList<Clock::time_point> times;
     // The OI mode (packet 35) the streamed frames report: 0 Off .. 3 Full.
     std::atomic<int> mode{0};
+    // Bumps and wheel drops (packet 7) the streamed frames report.
+    std::atomic<int> bumps{0};
     // False holds the streamed frames back.
     std::atomic<bool> streaming{true};
     std::atomic<int> flushes{0};
@@ -78,7 +80,7 @@ public:
         m_timer.setInterval(15);
         connect(&m_timer, &QTimer::timeout, this, [this] {
             if (m_recording->streaming)
-                emit bytesReceived(group100Frame(0, m_recording->mode));
+                emit bytesReceived(group100Frame(std::uint8_t(m_recording->bumps), m_recording->mode));
         });
     }
     // Records into a recording of its own.

@@ -15,6 +15,7 @@
 #include <QProcess>
 #include <QTest>
 
+#include <cmath>
 #include <csignal>
 #include <sys/prctl.h>
 
@@ -472,6 +473,29 @@ private slots:
         QCOMPARE(o.status, 0);
         QCOMPARE(o.lines.size(), 1);
         QVERIFY(json(o.lines[0])[QStringLiteral("packets")].toObject().contains(QStringLiteral("cargo_bay_digital_inputs")));
+    }
+
+    // A calibration run by the encoders on roomba-sim: it stops at the
+    // target, and the robot is left standing.
+    void calibrateDrivesByTheEncodersAndStops()
+    {
+        Sim sim({QStringLiteral("--profile"), QStringLiteral("roomba500"), QStringLiteral("--wheel-diameter"),
+                 QStringLiteral("75")});
+        QVERIFY(!sim.path().isEmpty());
+        const QStringList robot{QStringLiteral("--port"), sim.path(), QStringLiteral("--profile"), QStringLiteral("roomba500")};
+        const Outcome o = run(QStringList{QStringLiteral("calibrate")} + robot
+                              + QStringList{QStringLiteral("--straight"), QStringLiteral("200")});
+        QVERIFY2(o.status == 0, qPrintable(o.err));
+        QCOMPARE(o.lines.size(), 1);
+        const QJsonObject result = json(o.lines[0]);
+        QCOMPARE(result[QStringLiteral("run")].toString(), QStringLiteral("straight"));
+        QCOMPARE(result[QStringLiteral("profile")].toString(), QStringLiteral("roomba500"));
+        QVERIFY2(std::abs(result[QStringLiteral("encoderDistanceMm")].toDouble() - 200) < 2, qPrintable(o.lines[0]));
+        QVERIFY(result[QStringLiteral("leftCounts")].toDouble() > 400);
+        // The firmware counts by the documented wheels, so its packets agree.
+        QVERIFY(std::abs(result[QStringLiteral("packetDistanceMm")].toDouble() - 200) < 3);
+        const QJsonObject after = answer({QStringLiteral("send")}, robot);
+        QCOMPARE(after[QStringLiteral("requested_velocity")].toInt(), 0);
     }
 
     void errors_data()

@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // One robot's model: requests through the link's queue, firmware corrections
 // applied to its odometry, and its history on the link's clock.
+#include "calibration_drive.h"
 #include "command_encoder.h"
 #include "recording_transport.h" // tests/common
 #include "robot_session.h"
+#include "saved_robots.h"
 #include "transport.h"
 #include "transport_factory.h"
 
@@ -360,6 +362,101 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(shown.size() + failed.size() > 0, 5000);
         QCOMPARE(failed.size(), 0);
         QCOMPARE(shown.at(0).at(0).toByteArray(), QByteArray()); // the empty script
+    }
+
+    // A bump during a calibration run aborts it with the reason, and the
+    // robot is stopped: Drive 0 0 and the motors off, sent last.
+    void bumpAbortsACalibrationRun()
+    {
+        Recording recording;
+        recording.mode = 2; // Safe
+        RobotSession robot;
+        robot.setTransportFactory([&recording](const oilink::LinkSettings &) { return new RecordingTransport(&recording); });
+        robot.connectTo(oilink::LinkSettings::serial("/dev/recording", oi::ProfileId::Create2));
+        QTRY_VERIFY_WITH_TIMEOUT(robot.isLive(), 5000);
+        CalibrationDrive drive(robot);
+        QSignalSpy aborted(&drive, &CalibrationDrive::aborted);
+        QVERIFY(drive.start(oi::EncoderRun::Kind::Straight, 1000));
+        // Slowly ahead, by Drive Direct (145): 100 mm/s on both wheels.
+        QTRY_VERIFY_WITH_TIMEOUT(recording.written().contains(bytes({145, 0, 100, 0, 100})), 5000);
+        QVERIFY(aborted.isEmpty());
+
+        recording.bumps = oi::bit::BumpLeft;
+        QTRY_COMPARE_WITH_TIMEOUT(aborted.size(), 1, 5000);
+        QVERIFY2(aborted.first().first().toString().contains(QStringLiteral("bumped")),
+                 qPrintable(aborted.first().first().toString()));
+        QVERIFY(!drive.isRunning());
+        const QByteArray stop = bytes({137, 0, 0, 0, 0, 138, 0});
+        QTRY_VERIFY_WITH_TIMEOUT(recording.written().endsWith(stop), 5000);
+        recording.take();
+
+        // The step can be run again once the way is clear.
+        recording.bumps = 0;
+        QTRY_VERIFY_WITH_TIMEOUT(!robot.latest().bumpLeft(), 5000);
+        QVERIFY(drive.start(oi::EncoderRun::Kind::Straight, 1000));
+        QTRY_VERIFY_WITH_TIMEOUT(recording.written().contains(bytes({145, 0, 100, 0, 100})), 5000);
+        drive.stop();
+        QCOMPARE(aborted.size(), 2);
+        QTRY_VERIFY_WITH_TIMEOUT(recording.written().endsWith(stop), 5000);
+    }
+
+    // A calibration is kept per robot with its name and date, comes back
+    // when the robot connects again (after a restart), and resets.
+    void calibrationIsKeptPerRobot()
+    {
+        const oi::WheelGeometry measured{74.9, 75.1, 228.0};
+        const auto serial = oilink::LinkSettings::serial("/dev/recording", oi::ProfileId::Create2);
+        {
+            RobotSession robot;
+            robot.setName(QStringLiteral("Robbie"));
+            robot.setTransportFactory([](const oilink::LinkSettings &) { return new RecordingTransport(); });
+            robot.connectTo(serial);
+            QVERIFY(!robot.calibration());
+            QSignalSpy changed(&robot, &RobotSession::calibrationChanged);
+            QVERIFY(!robot.applyCalibration(oi::WheelGeometry{0, 72, 235}));
+            QVERIFY(changed.isEmpty());
+            QVERIFY(robot.applyCalibration(measured));
+            QCOMPARE(changed.size(), 1);
+            QCOMPARE(robot.odometry().wheels(), measured);
+        }
+        {
+            // Another run of the program: the same robot gets its wheels back.
+            RobotSession robot;
+            robot.setTransportFactory([](const oilink::LinkSettings &) { return new RecordingTransport(); });
+            robot.connectTo(serial);
+            QVERIFY(robot.calibration());
+            QCOMPARE(robot.calibration()->wheels, measured);
+            QCOMPARE(robot.calibration()->robotName, QStringLiteral("Robbie"));
+            QVERIFY(robot.calibration()->measuredAt.isValid());
+            QCOMPARE(robot.odometry().wheels(), measured);
+            // Another robot does not.
+            robot.connectTo(oilink::LinkSettings::serial("/dev/other", oi::ProfileId::Create2));
+            QVERIFY(!robot.calibration());
+            QCOMPARE(robot.odometry().wheels(), oi::WheelGeometry{});
+            // Reset: the documented wheels, for good.
+            robot.connectTo(serial);
+            QCOMPARE(robot.odometry().wheels(), measured);
+            robot.resetCalibration();
+            QVERIFY(!robot.calibration());
+            QCOMPARE(robot.odometry().wheels(), oi::WheelGeometry{});
+        }
+        RobotSession robot;
+        robot.setTransportFactory([](const oilink::LinkSettings &) { return new RecordingTransport(); });
+        robot.connectTo(serial);
+        QVERIFY(!robot.calibration());
+    }
+
+    // A virtual robot given wrong wheels keeps them in the robot list; a
+    // value that cannot be wheels comes back as the documents'.
+    void virtualWheelsAreKeptWithTheRobotList()
+    {
+        oilink::LinkSettings worn = oilink::LinkSettings::virtualRobotOf(oi::ProfileId::Create2, oi::ProfileId::Create2);
+        worn.virtualWheels = oi::WheelGeometry{74.88, 73.0, 228.0};
+        QSettings settings;
+        saveRobots(settings, {SavedRobot{QStringLiteral("Wobbly"), {}, worn, true}});
+        QCOMPARE(loadSavedRobots(settings).value(0).link.virtualWheels, worn.virtualWheels);
+        settings.setValue(QStringLiteral("robots/1/virtualWheelBaseMm"), -5);
+        QCOMPARE(loadSavedRobots(settings).value(0).link.virtualWheels, oi::WheelGeometry{});
     }
 };
 

@@ -110,7 +110,11 @@ void TestRoombaSim::servesAPseudoTerminal()
 void TestRoombaSim::servesTcp()
 {
     QProcess process;
-    const QString where = startAndReadFirstLine(process, {QStringLiteral("--tcp"), QStringLiteral("0")});
+    // Wheels other than the documents' are taken (the virtual robot's tests show what they do).
+    const QString where = startAndReadFirstLine(process, {QStringLiteral("--tcp"), QStringLiteral("0"),
+                                                          QStringLiteral("--wheel-diameter"), QStringLiteral("74.88"),
+                                                          QStringLiteral("--right-wheel-diameter"), QStringLiteral("73"),
+                                                          QStringLiteral("--wheel-base"), QStringLiteral("228")});
     QVERIFY2(where.startsWith(QStringLiteral("tcp://127.0.0.1:")), qPrintable(where));
     const quint16 port = where.section(':', -1).toUShort();
     QVERIFY(port != 0);
@@ -151,6 +155,10 @@ void TestRoombaSim::refusesBadArguments_data()
     QTest::newRow("firmware on create1") << QStringList{"--profile", "create1", "--firmware", "release-3.8.2"};
     QTest::newRow("missing value") << QStringList{"--seed"};
     QTest::newRow("room not there") << QStringList{"--room", "/nonexistent/room.json"};
+    QTest::newRow("wheel not a number") << QStringList{"--wheel-diameter", "big"};
+    QTest::newRow("wheel twice the documents'") << QStringList{"--left-wheel-diameter", "144"};
+    QTest::newRow("wheel of nothing") << QStringList{"--right-wheel-diameter", "0"};
+    QTest::newRow("wheel base negative") << QStringList{"--wheel-base", "-235"};
 }
 
 void TestRoombaSim::refusesBadArguments()

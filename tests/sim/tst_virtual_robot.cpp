@@ -5,6 +5,7 @@
 #include "command_catalog.h"
 #include "firmware_banner.h"
 #include "odometry.h"
+#include "odometry_calibration.h"
 #include "script_assembler.h"
 #include "seven_segment_font.h"
 #include "stream_parser.h"
@@ -192,6 +193,70 @@ void addProfileRows()
         QTest::newRow(profileOf(p).key.data()) << p;
 }
 
+
+// A calibration run driven on the bench as the dashboard drives it: every
+// frame to the run, its speeds back as Drive Direct, until the robot stands
+// still. Returns how far the robot truly turned on the way (unwrapped).
+double driveRun(Bench &b, EncoderRun &run)
+{
+    std::optional<WheelSpeeds> wanted;
+    b.onFrame = [&](const SensorSnapshot &s) { wanted = run.update(s); };
+    double turned = 0, heading = b.robot.truePose().thetaRad;
+    for (int i = 0; i < 20000 && !run.settled(); ++i) {
+        b.run(15ms);
+        turned += std::remainder(b.robot.truePose().thetaRad - heading, 2 * kPi);
+        heading = b.robot.truePose().thetaRad;
+        if (wanted)
+            b.send(b.encoder.driveDirect(int(std::lround(wanted->right)), int(std::lround(wanted->left))));
+        wanted.reset();
+    }
+    b.onFrame = nullptr;
+    if (!run.settled())
+        QTest::qFail("the run never ended", __FILE__, __LINE__);
+    return turned;
+}
+
+// A 1 m square (four sides, four quarter turns left) driven by the encoders
+// read with `wheels`; how far from its start the robot truly ends.
+double driveSquare(Bench &b, const WheelGeometry &wheels)
+{
+    const oi::Pose start = b.robot.truePose();
+    for (int side = 0; side < 4; ++side) {
+        EncoderRun ahead(EncoderRun::Kind::Straight, 1000, wheels);
+        driveRun(b, ahead);
+        EncoderRun corner(EncoderRun::Kind::Turn, kPi / 2, wheels);
+        driveRun(b, corner);
+    }
+    return std::hypot(b.robot.truePose().xMm - start.xMm, b.robot.truePose().yMm - start.yMm);
+}
+
+// The two runs of a calibration, answered from the true pose: 1 m ahead
+// (the distance and the heading change as a tape and a protractor would
+// find them), then two turns on the spot.
+Result<Calibration> calibrateFromTheTruth(Bench &b)
+{
+    const oi::Pose start = b.robot.truePose();
+    EncoderRun straight(EncoderRun::Kind::Straight, 1000, WheelGeometry{});
+    const double curve = driveRun(b, straight);
+    const oi::Pose end = b.robot.truePose();
+    const StraightRun straightRun{straight.counts(), std::hypot(end.xMm - start.xMm, end.yMm - start.yMm), curve};
+    EncoderRun turn(EncoderRun::Kind::Turn, 4 * kPi, WheelGeometry{});
+    const double turned = driveRun(b, turn);
+    return calibrate(WheelGeometry{}, straightRun, TurnRun{turn.counts(), turned});
+}
+
+// A bench in an empty room, in Safe mode, streaming what a calibration reads.
+void prepareForCalibration(Bench &b)
+{
+    b.robot.setWorld(emptyWorld());
+    b.startSafe();
+    if (b.robot.robotProfile().id == ProfileId::Create1)
+        b.send(b.encoder.stream(std::vector<int>{7, 19, 20}));
+    else
+        b.send(b.encoder.stream(std::vector<int>{7, 19, 20, 43, 44}));
+    b.run(100ms);
+}
+
 } // namespace
 
 class TestVirtualRobot : public QObject {
@@ -229,6 +294,10 @@ private slots:
     void specialRadii();
     void odometryOfADrivenSquareMatchesTheTruth_data();
     void odometryOfADrivenSquareMatchesTheTruth();
+    void largerWheelsCarryTheBodyFartherThanTheCountsSay();
+    void calibrationRecoversWornWheels_data() { addProfileRows(); }
+    void calibrationRecoversWornWheels();
+    void calibrationCorrectsWheelsOfDifferentSizes();
     void encodersRollOverBackwards_data();
     void encodersRollOverBackwards();
     void distanceAndAngleAreSinceTheLastRequest();
@@ -825,6 +894,85 @@ void TestVirtualRobot::odometryOfADrivenSquareMatchesTheTruth()
     QVERIFY2(std::abs(estimate.xMm - truth.xMm) < 3, qPrintable(QStringLiteral("x %1 vs %2").arg(estimate.xMm).arg(truth.xMm)));
     QVERIFY2(std::abs(estimate.yMm - truth.yMm) < 3, qPrintable(QStringLiteral("y %1 vs %2").arg(estimate.yMm).arg(truth.yMm)));
     QVERIFY(std::abs(std::remainder(estimate.thetaRad - truth.thetaRad, 2 * kPi)) < 0.5 * kPi / 180);
+}
+
+void TestVirtualRobot::largerWheelsCarryTheBodyFartherThanTheCountsSay()
+{
+    Bench b(profileOf(ProfileId::Create2));
+    b.robot.setWheels(WheelGeometry{74.88, 74.88, 235});
+    QCOMPARE(b.robot.wheels().leftDiameterMm, 74.88);
+    b.robot.setWheels(WheelGeometry{-1, 72, 235});
+    QCOMPARE(b.robot.wheels().leftDiameterMm, 74.88); // refused
+    prepareForCalibration(b);
+    Odometry counted;
+    int distancePackets = 0;
+    b.onFrame = [&](const SensorSnapshot &s) {
+        counted.update(s);
+        distancePackets += s.distanceMm();
+    };
+    const double startX = b.robot.truePose().xMm;
+    b.send(b.encoder.driveDirect(200, 200));
+    b.run(2s);
+    b.send(b.encoder.driveDirect(0, 0));
+    b.run(300ms);
+    // The firmware holds 200 mm/s by its counts: the 4 % larger wheels go 4 % farther.
+    const double truth = b.robot.truePose().xMm - startX;
+    QVERIFY2(std::abs(truth / counted.pose().xMm - 1.04) < 1e-3, qPrintable(QStringLiteral("%1 vs %2").arg(truth).arg(counted.pose().xMm)));
+    QVERIFY(std::abs(distancePackets - counted.pose().xMm) < 2);
+}
+
+// The robot: wheels 4 % larger than documented and a wheel base 3 %
+// short. Calibrated from the true pose, on every profile (the Create by its
+// distance and angle packets, the Roomba 500 by its unsigned counts).
+void TestVirtualRobot::calibrationRecoversWornWheels()
+{
+    QFETCH(ProfileId, profile);
+    const WheelGeometry worn{72 * 1.04, 72 * 1.04, 235 * 0.97};
+    Bench b(profileOf(profile));
+    b.robot.setWheels(worn);
+    prepareForCalibration(b);
+    const Result<Calibration> c = calibrateFromTheTruth(b);
+    QVERIFY2(c.ok(), c.error().describe().c_str());
+    for (double scale : {c->wheels.leftDiameterMm / worn.leftDiameterMm, c->wheels.rightDiameterMm / worn.rightDiameterMm,
+                         c->wheels.wheelBaseMm / worn.wheelBaseMm})
+        QVERIFY2(std::abs(scale - 1) < 0.005, qPrintable(QStringLiteral("%1 %2 %3").arg(c->wheels.leftDiameterMm)
+                                                            .arg(c->wheels.rightDiameterMm).arg(c->wheels.wheelBaseMm)));
+
+    const double before = driveSquare(b, WheelGeometry{});
+    const double after = driveSquare(b, c->wheels);
+    qInfo("%s: 1 m square off by %.1f mm before calibrating (predicted %.1f), %.1f mm after", profileOf(profile).key.data(),
+          before, c->squareErrorBeforeMm, after);
+    QVERIFY(before > 80);
+    QVERIFY(after < 20);
+}
+
+// Left and right wheels 2 % apart: the straight run curves, the calibration
+// tells the wheels apart, and a calibrated 2 m run stays on its line.
+void TestVirtualRobot::calibrationCorrectsWheelsOfDifferentSizes()
+{
+    const WheelGeometry apart{72, 72 * 1.02, 235};
+    Bench b(profileOf(ProfileId::Create2));
+    b.robot.setWheels(apart);
+    prepareForCalibration(b);
+    const Result<Calibration> c = calibrateFromTheTruth(b);
+    QVERIFY2(c.ok(), c.error().describe().c_str());
+    QVERIFY(c->wheelsDiffer);
+    QVERIFY(std::abs(c->wheels.leftDiameterMm / apart.leftDiameterMm - 1) < 0.005);
+    QVERIFY(std::abs(c->wheels.rightDiameterMm / apart.rightDiameterMm - 1) < 0.005);
+
+    // How far off its line a 2 m run ends.
+    const auto offTheLine = [&b](const WheelGeometry &wheels) {
+        const oi::Pose start = b.robot.truePose();
+        EncoderRun run(EncoderRun::Kind::Straight, 2000, wheels);
+        driveRun(b, run);
+        const oi::Pose &end = b.robot.truePose();
+        return -(end.xMm - start.xMm) * std::sin(start.thetaRad) + (end.yMm - start.yMm) * std::cos(start.thetaRad);
+    };
+    const double before = offTheLine(WheelGeometry{});
+    const double after = offTheLine(c->wheels);
+    qInfo("2 m run, wheels 2 %% apart: %.1f mm off the line before calibrating, %.1f mm after", before, after);
+    QVERIFY(std::abs(before) > 100);
+    QVERIFY(std::abs(after) < 20);
 }
 
 void TestVirtualRobot::encodersRollOverBackwards_data()

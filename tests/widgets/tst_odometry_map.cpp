@@ -1,6 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "odometry_map.h"
 
+#include "command_encoder.h"
+#include "odometry_calibration.h"
+#include "stream_parser.h"
+#include "virtual_robot.h"
+
 #include "keyboard_focus.h"
 #include "pseudo_translation.h"
 
@@ -57,6 +62,38 @@ void showTruth(OdometryMap &map, std::optional<oi::Pose> pose)
 }
 
 bool near(double a, double b, double tolerance = 1e-9) { return std::abs(a - b) <= tolerance; }
+
+// A virtual robot on an empty floor with `wheels`, its clock stepped by the
+// test, streaming what the odometry reads into `odometry`; it drives a true
+// 1 m square, as a robot following tape on the floor would: by its encoders
+// counted with its real wheels, whatever the odometry thinks they are.
+void driveTrueSquare(sim::VirtualRobot &robot, RobotOdometry &odometry, const oi::WheelGeometry &wheels)
+{
+    using namespace std::chrono_literals;
+    const oi::CommandEncoder encoder(robot.robotProfile());
+    oi::StreamParser parser(robot.robotProfile());
+    std::optional<oi::EncoderRun> run;
+    std::optional<oi::WheelSpeeds> wanted;
+    parser.setSnapshotHandler([&](const oi::SensorSnapshot &frame, oi::FrameKind) {
+        odometry.update(frame);
+        if (run)
+            wanted = run->update(frame);
+    });
+    const auto step = [&] {
+        robot.advance(15ms);
+        parser.feed(robot.takeOutput());
+        if (wanted)
+            robot.receive(*encoder.driveDirect(int(std::lround(wanted->right)), int(std::lround(wanted->left))));
+        wanted.reset();
+    };
+    for (int side = 0; side < 8; ++side) {
+        run.emplace(side % 2 ? oi::EncoderRun::Kind::Turn : oi::EncoderRun::Kind::Straight,
+                    side % 2 ? kPi / 2 : 1000.0, wheels);
+        for (int i = 0; i < 5000 && !run->settled(); ++i)
+            step();
+    }
+    parser.feed(robot.takeOutput());
+}
 
 QColor pixelAt(const QImage &image, QPointF widgetPoint, qreal ratio)
 {
@@ -500,6 +537,53 @@ private slots:
             QVERIFY(image.save(path));
             qInfo("screenshot: %s", qPrintable(path));
         }
+    }
+
+    // A robot with wheels 4 % larger and a wheel base 3 % short, driven round
+    // a true 1 m square: the map's square is crooked while the odometry counts
+    // with the documented wheels, and closed once it counts with the real
+    // ones. ROOMBA_SCREENSHOTS=DIR keeps both maps.
+    void calibratedSquareClosesOnTheMap()
+    {
+        using namespace std::chrono_literals;
+        const oi::WheelGeometry worn{72 * 1.04, 72 * 1.04, 235 * 0.97};
+        sim::VirtualRobot robot(oi::profile(ProfileId::Create2));
+        robot.setWorld(sim::World{});
+        robot.setWheels(worn);
+        const oi::CommandEncoder encoder(robot.robotProfile());
+        for (const oi::Bytes &b : {*encoder.start(), *encoder.safe(), *encoder.stream(std::vector<int>{19, 20, 43, 44})})
+            robot.receive(b);
+        robot.advance(100ms);
+        robot.takeOutput();
+        m_map->resize(900, 700);
+        m_map->setWorld(sim::World{});
+        m_map->setScale(0.4);
+        m_map->setViewCentreMm(QPointF(500, 450));
+
+        const auto square = [&](const QString &file) {
+            m_odometry->setStart(robot.truePose());
+            m_odometry->reset();
+            driveTrueSquare(robot, *m_odometry, worn);
+            showTruth(*m_map, robot.truePose());
+            const QList<QPointF> &trail = m_odometry->trail();
+            if (const QString dir = qEnvironmentVariable("ROOMBA_SCREENSHOTS"); !dir.isEmpty()) {
+                if (!QTest::qWaitFor([&] { return m_map->findChild<QLabel *>("poseLabel")->text() == m_map->poseText(); }))
+                    qWarning("the pose label did not catch up");
+                QCoreApplication::sendPostedEvents(); // the label's new width
+                QDir().mkpath(dir);
+                if (!m_map->grab().save(QDir(dir).filePath(file)))
+                    qWarning("could not save %s", qPrintable(file));
+            }
+            return double(std::hypot(trail.last().x() - trail.first().x(), trail.last().y() - trail.first().y()));
+        };
+        const double before = square(QStringLiteral("calibration-square-before.png"));
+        QVERIFY(m_odometry->setWheels(worn)); // as Apply does
+        m_map->setOdometry(m_odometry.get()); // and the map's wheel fields follow
+        QVERIFY(near(m_map->wheelBaseMm(), worn.wheelBaseMm, 0.05));
+        const double after = square(QStringLiteral("calibration-square-after.png"));
+        qInfo("the map's 1 m square ends %.0f mm from its start before calibrating, %.0f mm after", before, after);
+        QVERIFY(before > 80);
+        QVERIFY(after < 20);
     }
 };
 

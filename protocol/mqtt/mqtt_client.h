@@ -9,6 +9,8 @@
 #include <QStringList>
 #include <QTimer>
 
+#include <functional>
+
 struct mosquitto;
 struct mosquitto_message;
 
@@ -50,6 +52,16 @@ public:
     bool isConnected() const { return m_connected; }
     BrokerAddress address() const { return m_address; }
 
+    // Payloads longer than this are dropped on the network thread, before
+    // they are copied, and reported by payloadTooLarge. 0: no limit.
+    void setMaxPayloadBytes(qsizetype bytes) { m_maxPayloadBytes = bytes; }
+    // For a receiver that must see each message as it arrives (the bridge
+    // times heartbeats that way): called on libmosquitto's network thread
+    // instead of messageReceived. It must be quick and thread-safe. Set it
+    // before connectToBroker.
+    using DirectReceiver = std::function<void(const QString &topic, const QByteArray &payload, bool retained)>;
+    void setDirectReceiver(DirectReceiver receiver) { m_directReceiver = std::move(receiver); }
+
     // Kept and made again after each reconnect. Wildcards + and # allowed.
     void subscribe(const QString &topicFilter, int qos = 0);
     // Queued for sending; false if the library refuses it (not connected
@@ -61,6 +73,8 @@ signals:
     // `reason` is empty after disconnectFromBroker.
     void disconnected(const QString &reason);
     void messageReceived(const QString &topic, const QByteArray &payload, bool retained);
+    // A payload over setMaxPayloadBytes, dropped unread.
+    void payloadTooLarge(const QString &topic, qsizetype bytes, bool retained);
     // Settings refused, or the broker refused the login.
     void errorOccurred(const QString &message);
 
@@ -85,6 +99,8 @@ private:
     QTimer m_retry;
     int m_retryDelayMs = kFirstRetryMs;
     QList<QPair<QString, int>> m_subscriptions;
+    qsizetype m_maxPayloadBytes = 0;
+    DirectReceiver m_directReceiver;
 };
 
 } // namespace mqtt

@@ -33,6 +33,8 @@ struct Recording {
     QList<Clock::time_point> times;
     // The OI mode (packet 35) the streamed frames report: 0 Off .. 3 Full.
     std::atomic<int> mode{0};
+    // The left cliff sensor in the streamed frames.
+    std::atomic<bool> cliffLeft{false};
     // False holds the streamed frames back.
     std::atomic<bool> streaming{true};
     std::atomic<int> flushes{0};
@@ -78,7 +80,7 @@ public:
         m_timer.setInterval(15);
         connect(&m_timer, &QTimer::timeout, this, [this] {
             if (m_recording->streaming)
-                emit bytesReceived(group100Frame(0, m_recording->mode));
+                emit bytesReceived(group100Frame(0, m_recording->mode, m_recording->cliffLeft));
         });
     }
     // Records into a recording of its own.

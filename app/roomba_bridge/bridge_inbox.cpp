@@ -13,6 +13,9 @@ QString cut(const QString &text) { return text.size() > 80 ? text.left(80) + QSt
 
 bool isStopCommand(const QByteArray &payload)
 {
+    // Most commands are not stops: only those naming one are parsed here.
+    if (!payload.contains("stop"))
+        return false;
     QString id, error;
     const std::optional<CommandRequest> r = CommandRequest::fromJson(payload, &id, &error);
     return r && r->command == QLatin1String("stop");
@@ -100,8 +103,10 @@ void BridgeInbox::deliverTurn()
     {
         QMutexLocker lock(&m_mutex);
         m_turnPosted = false;
-        if (m_dropped > 0) {
-            qCWarning(lcBridge, "dropped %d messages: more than %d waiting (the last from %s)", m_dropped,
+        // One line a second at most, however long the flood.
+        if (m_dropped > 0 && m_clock.nowMs() - m_droppedLoggedMs >= 1000) {
+            m_droppedLoggedMs = m_clock.nowMs();
+            qCWarning(lcBridge, "dropped %d messages: more than %d waiting in a lane (the last from %s)", m_dropped,
                       kMaxWaiting, qPrintable(cut(m_lastDroppedFrom)));
             m_dropped = 0;
         }

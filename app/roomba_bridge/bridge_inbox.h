@@ -64,6 +64,7 @@ private:
     std::deque<Message> m_lanes[LaneCount];
     bool m_turnPosted = false;
     int m_dropped = 0;
+    qint64 m_droppedLoggedMs = -1000000;
     QString m_lastDroppedFrom;
     QString m_controller;
     QHash<QString, qint64> m_lastStopMs;

@@ -139,6 +139,13 @@ RobotBridge::RobotBridge(RobotSession &robot, mqtt::MqttClient &broker, LeaseClo
     connect(&m_statsTimer, &QTimer::timeout, this, &RobotBridge::publishStats);
 }
 
+RobotBridge::~RobotBridge()
+{
+    // The client may outlive the bridge; its network thread must not call
+    // into an inbox that is gone.
+    m_broker.setDirectReceiver({});
+}
+
 mqtt::LastWill RobotBridge::lastWill(const QString &name)
 {
     return {mqtt::topics::state(name), compact({{"online", false}, {"name", name}}), true};

@@ -39,6 +39,7 @@ public:
 
     RobotBridge(RobotSession &robot, mqtt::MqttClient &broker, LeaseClock &clock, Options options,
                 QObject *parent = nullptr);
+    ~RobotBridge() override;
 
     // The state the broker publishes when the bridge dies: set it on the
     // client before it connects.

@@ -144,6 +144,12 @@ void MqttClient::disconnectFromBroker()
         emit disconnected(QString());
 }
 
+void MqttClient::setDirectReceiver(DirectReceiver receiver)
+{
+    QMutexLocker lock(&m_receiverMutex);
+    m_directReceiver = std::move(receiver);
+}
+
 void MqttClient::subscribe(const QString &topicFilter, int qos)
 {
     for (const auto &s : std::as_const(m_subscriptions))
@@ -191,8 +197,11 @@ void MqttClient::onMessage(mosquitto *, void *self, const mosquitto_message *mes
         return;
     }
     const QByteArray payload(static_cast<const char *>(message->payload), message->payloadlen);
-    if (client->m_directReceiver)
-        return client->m_directReceiver(topic, payload, retained);
+    {
+        QMutexLocker lock(&client->m_receiverMutex);
+        if (client->m_directReceiver)
+            return client->m_directReceiver(topic, payload, retained);
+    }
     QMetaObject::invokeMethod(
         client, [client, topic, payload, retained] { emit client->messageReceived(topic, payload, retained); },
         Qt::QueuedConnection);

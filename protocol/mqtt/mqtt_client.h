@@ -4,6 +4,7 @@
 #include "broker_address.h"
 
 #include <QByteArray>
+#include <QMutex>
 #include <QObject>
 #include <QString>
 #include <QStringList>
@@ -57,10 +58,10 @@ public:
     void setMaxPayloadBytes(qsizetype bytes) { m_maxPayloadBytes = bytes; }
     // For a receiver that must see each message as it arrives (the bridge
     // times heartbeats that way): called on libmosquitto's network thread
-    // instead of messageReceived. It must be quick and thread-safe. Set it
-    // before connectToBroker.
+    // instead of messageReceived. It must be quick and thread-safe. Setting
+    // an empty one waits for a call under way: do so before the receiver dies.
     using DirectReceiver = std::function<void(const QString &topic, const QByteArray &payload, bool retained)>;
-    void setDirectReceiver(DirectReceiver receiver) { m_directReceiver = std::move(receiver); }
+    void setDirectReceiver(DirectReceiver receiver);
 
     // Kept and made again after each reconnect. Wildcards + and # allowed.
     void subscribe(const QString &topicFilter, int qos = 0);
@@ -100,6 +101,7 @@ private:
     int m_retryDelayMs = kFirstRetryMs;
     QList<QPair<QString, int>> m_subscriptions;
     qsizetype m_maxPayloadBytes = 0;
+    QMutex m_receiverMutex;
     DirectReceiver m_directReceiver;
 };
 

@@ -270,8 +270,10 @@ void RobotBridge::stopAtEdges(const oi::SensorSnapshot &frame)
                         || frame.cliff(S::Right) || frame.wheelDropLeft() || frame.wheelDropRight()
                         || frame.wheelDropCaster();
     const bool wasAtEdge = std::exchange(m_atEdge, atEdge);
-    // Safe mode does this itself (and falls back to Passive).
-    if (!atEdge || wasAtEdge || m_lease.holder().isEmpty() || !frame.has(35) || frame.oiMode() != oi::OiMode::Full)
+    // Safe mode does this itself (and falls back to Passive). Once stopped,
+    // driving on while the edge is still seen is stopped again.
+    if (!atEdge || (wasAtEdge && !m_robot.teleop().isMoving()) || m_lease.holder().isEmpty() || !frame.has(35)
+        || frame.oiMode() != oi::OiMode::Full)
         return;
     qCInfo(lcBridge, "cliff or wheel drop in Full mode while %s drives: stop", qPrintable(m_lease.holder()));
     stopRobot();

@@ -288,6 +288,13 @@ private slots:
         QTRY_COMPARE(byteText(writtenSince(rig.recording, before)), byteText(rig.stopBytes()));
         QTRY_VERIFY(alice.on(topics::reply(QStringLiteral("r1"), QStringLiteral("alice"))).last()
                         .value(QLatin1String("error")).toString().contains(QLatin1String("cliff or wheel drop")));
+
+        // Driving on at the edge is stopped at the next frame.
+        const qsizetype again = rig.recording.count();
+        QCOMPARE(alice.command(QStringLiteral("r1"), QStringLiteral("2"), QStringLiteral("drive"), {100, "straight"})
+                     .value(QLatin1String("ok")), QJsonValue(true));
+        const QByteArray drive = toBytes(*oi::CommandEncoder(rig.session.robotProfile()).drive(100, oi::kRadiusStraight));
+        QTRY_COMPARE(byteText(writtenSince(rig.recording, again)), byteText(drive + rig.stopBytes()));
     }
 
     // clean (and spot, max, seek-dock, buttons, the Create's demos) leave

@@ -28,7 +28,7 @@ const QStringList &BridgeConfig::keys()
         QStringLiteral("port"),     QStringLiteral("tcp"),           QStringLiteral("profile"),
         QStringLiteral("username"), QStringLiteral("password"),      QStringLiteral("password-file"),
         QStringLiteral("cafile"),   QStringLiteral("certfile"),      QStringLiteral("keyfile"),
-        QStringLiteral("rate"),
+        QStringLiteral("rate"),     QStringLiteral("allow-full"),
     };
     return k;
 }
@@ -82,7 +82,7 @@ std::optional<BridgeConfig> BridgeConfig::fromSettings(const QList<Setting> &set
                std::nullopt;
     c.name = value("name");
     if (!mqtt::topics::isValidName(c.name) || c.name == QLatin1String("fleet"))
-        return fail(QStringLiteral("name"), QStringLiteral("'%1' is not a robot name: 1 to 64 letters, digits, '-' or '_', and not 'fleet'").arg(c.name));
+        return fail(QStringLiteral("name"), QStringLiteral("'%1' is not a robot name: 1 to 64 letters, digits, '-' or '_', and not 'fleet'").arg(c.name.left(80)));
 
     if (has("broker")) {
         QString why;
@@ -91,8 +91,12 @@ std::optional<BridgeConfig> BridgeConfig::fromSettings(const QList<Setting> &set
             return fail(QStringLiteral("broker"), why);
         c.broker = *broker;
     }
-    if (has("username"))
+    if (has("username")) {
+        // The broker's ACL puts account names in topics (%u).
         c.broker.username = value("username");
+        if (!mqtt::topics::isValidName(c.broker.username))
+            return fail(QStringLiteral("username"), QStringLiteral("'%1' is not an account name: 1 to 64 letters, digits, '-' or '_'").arg(c.broker.username.left(80)));
+    }
     if (has("password"))
         c.broker.password = value("password");
     if (has("password-file")) {
@@ -158,6 +162,11 @@ std::optional<BridgeConfig> BridgeConfig::fromSettings(const QList<Setting> &set
         c.telemetryRateHz = value("rate").toDouble(&ok);
         if (!ok || !std::isfinite(c.telemetryRateHz) || c.telemetryRateHz < 0 || c.telemetryRateHz > 1000)
             return fail(QStringLiteral("rate"), QStringLiteral("'%1' is not a rate from 0 (every frame) to 1000 per second").arg(value("rate")));
+    }
+    if (has("allow-full")) {
+        if (!isYes(value("allow-full")) && !isNo(value("allow-full")))
+            return fail(QStringLiteral("allow-full"), QStringLiteral("'%1' is not yes or no").arg(value("allow-full")));
+        c.allowFull = isYes(value("allow-full"));
     }
     return c;
 }

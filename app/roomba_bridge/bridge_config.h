@@ -18,6 +18,7 @@ struct BridgeConfig {
     mqtt::BrokerAddress broker;
     oilink::LinkSettings link;
     double telemetryRateHz = 0; // 0: every frame
+    bool allowFull = false;     // Full mode over the network
 
     // One value and where it came from ("--rate", "r1.conf:4"), for errors.
     struct Setting {

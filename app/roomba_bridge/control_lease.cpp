@@ -19,22 +19,23 @@ void SteadyLeaseClock::wakeAt(qint64 atMs)
 
 ControlLease::ControlLease(LeaseClock &clock, QObject *parent) : QObject(parent), m_clock(clock)
 {
-    connect(&m_clock, &LeaseClock::alarm, this, &ControlLease::onAlarm);
+    connect(&m_clock, &LeaseClock::alarm, this, &ControlLease::judge);
 }
 
-bool ControlLease::take(const QString &client)
+bool ControlLease::take(const QString &client, std::optional<qint64> arrivedMs)
 {
     if (!m_holder.isEmpty() && m_holder != client)
         return false;
-    grant(client);
+    grant(client, arrivedMs);
     return true;
 }
 
-bool ControlLease::keep(const QString &client)
+bool ControlLease::keep(const QString &client, std::optional<qint64> arrivedMs)
 {
     if (!isHeldBy(client))
         return false;
-    m_lastBeatMs = m_clock.nowMs();
+    // Heartbeats may be handed over out of order; the latest counts.
+    m_lastBeatMs = std::max(m_lastBeatMs, arrivedMs.value_or(m_clock.nowMs()));
     m_clock.wakeAt(m_lastBeatMs + kHeartbeatTimeoutMs);
     return true;
 }
@@ -47,10 +48,10 @@ bool ControlLease::release(const QString &client)
     return true;
 }
 
-QString ControlLease::takeOver(const QString &client)
+QString ControlLease::takeOver(const QString &client, std::optional<qint64> arrivedMs)
 {
     const QString former = m_holder;
-    grant(client);
+    grant(client, arrivedMs);
     return former;
 }
 
@@ -65,17 +66,21 @@ QString ControlLease::free()
     return former;
 }
 
-void ControlLease::grant(const QString &client)
+void ControlLease::grant(const QString &client, std::optional<qint64> arrivedMs)
 {
     const bool changed = m_holder != client;
     m_holder = client;
-    keep(client); // taking control is the first heartbeat
+    if (changed)
+        m_lastBeatMs = 0;
+    keep(client, arrivedMs); // taking control is the first heartbeat
     if (changed)
         emit holderChanged(m_holder);
 }
 
-void ControlLease::onAlarm()
+void ControlLease::judge()
 {
+    if (m_beforeJudging)
+        m_beforeJudging();
     if (m_holder.isEmpty())
         return;
     if (m_clock.nowMs() - m_lastBeatMs < kHeartbeatTimeoutMs) {

@@ -57,6 +57,7 @@ int main(int argc, char *argv[])
         {QStringLiteral("certfile"), QStringLiteral("TLS: this bridge's certificate (PEM), with --keyfile."), QStringLiteral("FILE")},
         {QStringLiteral("keyfile"), QStringLiteral("TLS: this bridge's private key (PEM)."), QStringLiteral("FILE")},
         {QStringLiteral("rate"), QStringLiteral("Telemetry messages per second (default 0: one per frame, about 66)."), QStringLiteral("HZ")},
+        {QStringLiteral("allow-full"), QStringLiteral("Let the client in control send full. The robot then ignores cliffs and wheel drops; the bridge stops it at the first one.")},
     });
     if (!parser.parse(QCoreApplication::arguments()))
         return fail(parser.errorText());
@@ -82,7 +83,8 @@ int main(int argc, char *argv[])
     for (const QString &key : BridgeConfig::keys()) {
         if (key == QLatin1String("password") || !parser.isSet(key))
             continue; // a password on the command line would show in ps
-        settings.append({key, key == QLatin1String("sim") ? QStringLiteral("yes") : parser.value(key),
+        const bool flag = key == QLatin1String("sim") || key == QLatin1String("allow-full");
+        settings.append({key, flag ? QStringLiteral("yes") : parser.value(key),
                          QStringLiteral("--%1").arg(key)});
     }
     const std::optional<BridgeConfig> config = BridgeConfig::fromSettings(settings, &error);
@@ -95,7 +97,7 @@ int main(int argc, char *argv[])
     mqtt::MqttClient broker(QStringLiteral("roomba-bridge-%1").arg(config->name));
     broker.setLastWill(RobotBridge::lastWill(config->name));
     SteadyLeaseClock clock;
-    RobotBridge bridge(robot, broker, clock, {config->name, config->telemetryRateHz});
+    RobotBridge bridge(robot, broker, clock, {config->name, config->telemetryRateHz, config->allowFull});
 
     TerminationSignals termination;
     QObject::connect(&termination, &TerminationSignals::requested, &app, [&](int signalNumber) {

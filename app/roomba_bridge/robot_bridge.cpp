@@ -11,6 +11,7 @@
 #include <QJsonDocument>
 
 #include <cmath>
+#include <utility>
 
 Q_LOGGING_CATEGORY(lcBridge, "roomba.bridge")
 
@@ -82,14 +83,24 @@ MotionCommand motionOf(oi::Command c, const QByteArray &bytes)
 
 RobotBridge::RobotBridge(RobotSession &robot, mqtt::MqttClient &broker, LeaseClock &clock, Options options,
                          QObject *parent)
-    : QObject(parent), m_robot(robot), m_broker(broker), m_lease(clock), m_options(std::move(options))
+    : QObject(parent), m_robot(robot), m_broker(broker), m_lease(clock), m_options(std::move(options)),
+      m_inbox(clock, m_options.name)
 {
+    // Messages are sized on the network thread and timed as they arrive;
+    // heartbeats that wait are read before the lease is judged.
+    m_broker.setMaxPayloadBytes(kMaxPayloadBytes);
+    m_broker.setDirectReceiver([this](const QString &topic, const QByteArray &payload, bool retained) {
+        m_inbox.receive(topic, payload, retained);
+    });
+    m_inbox.setHandler([this](const BridgeInbox::Message &m) { onMessage(m); });
+    m_lease.setBeforeJudging([this] { m_inbox.deliverUrgent(); });
+    connect(&m_broker, &mqtt::MqttClient::payloadTooLarge, this,
+            [this](const QString &topic, qsizetype bytes, bool) { onPayloadTooLarge(topic, bytes); });
+
     connect(&m_broker, &mqtt::MqttClient::connected, this, &RobotBridge::onBrokerConnected);
     connect(&m_broker, &mqtt::MqttClient::disconnected, this, &RobotBridge::onBrokerLost);
     connect(&m_broker, &mqtt::MqttClient::errorOccurred, this,
             [](const QString &message) { qCWarning(lcBridge, "broker: %s", qPrintable(message)); });
-    connect(&m_broker, &mqtt::MqttClient::messageReceived, this,
-            [this](const QString &topic, const QByteArray &payload, bool) { onMessage(topic, payload); });
 
     connect(&m_robot, &RobotSession::frameReceived, this,
             [this](double, const oi::SensorSnapshot &frame) { onFrame(frame); });
@@ -103,6 +114,7 @@ RobotBridge::RobotBridge(RobotSession &robot, mqtt::MqttClient &broker, LeaseClo
             [](const QString &message) { qCWarning(lcBridge, "robot: %s", qPrintable(message)); });
 
     connect(&m_lease, &ControlLease::holderChanged, this, [this](const QString &holder) {
+        m_inbox.setController(holder);
         qCInfo(lcBridge, "control: %s", holder.isEmpty() ? "free" : qPrintable(holder));
         publishState();
     });
@@ -125,6 +137,13 @@ RobotBridge::RobotBridge(RobotSession &robot, mqtt::MqttClient &broker, LeaseClo
     }
     m_statsTimer.setInterval(1000);
     connect(&m_statsTimer, &QTimer::timeout, this, &RobotBridge::publishStats);
+}
+
+RobotBridge::~RobotBridge()
+{
+    // The client may outlive the bridge; its network thread must not call
+    // into an inbox that is gone.
+    m_broker.setDirectReceiver({});
 }
 
 mqtt::LastWill RobotBridge::lastWill(const QString &name)
@@ -192,26 +211,35 @@ void RobotBridge::onBrokerLost(const QString &reason)
     stopRobot();
 }
 
-void RobotBridge::onMessage(const QString &topic, const QByteArray &payload)
+void RobotBridge::onMessage(const BridgeInbox::Message &m)
 {
     if (m_shutDown)
         return;
-    const std::optional<mqtt::topics::Topic> t = mqtt::topics::parse(topic);
-    if (!t)
-        return;
     using K = mqtt::topics::Kind;
-    if (t->kind == K::StopAll) {
-        stopAll();
-        return;
-    }
-    if (t->robot != m_options.name)
-        return;
-    switch (t->kind) {
-    case K::Command: handleCommand(t->client, payload); break;
-    case K::Control: handleControl(t->client, payload, false); break;
-    case K::Takeover: handleControl(t->client, payload, true); break;
+    switch (m.topic.kind) {
+    case K::StopAll: stopAll(); break;
+    case K::Command:
+        handleCommand(m);
+        // However long the queue of commands, a lapsed heartbeat stops the
+        // robot now, not when the timer gets its turn.
+        m_lease.judge();
+        break;
+    case K::Control: handleControl(m.topic.client, m.payload, false, m.arrivedMs); break;
+    case K::Takeover: handleControl(m.topic.client, m.payload, true, m.arrivedMs); break;
     default: break;
     }
+}
+
+void RobotBridge::onPayloadTooLarge(const QString &topic, qsizetype bytes)
+{
+    const std::optional<mqtt::topics::Topic> t = mqtt::topics::parse(topic);
+    if (!t || m_shutDown || (t->kind != mqtt::topics::Kind::StopAll && t->robot != m_options.name))
+        return;
+    const QString why = QStringLiteral("message of %1 bytes dropped unread: at most %2 bytes").arg(bytes).arg(kMaxPayloadBytes);
+    using K = mqtt::topics::Kind;
+    if (t->kind == K::Command || t->kind == K::Control || t->kind == K::Takeover)
+        return reply(t->client, {{"id", QJsonValue()}, {"ok", false}, {"error", why}});
+    qCWarning(lcBridge, "%s: %s", qPrintable(topic.left(80)), qPrintable(why));
 }
 
 void RobotBridge::stopAll()
@@ -225,13 +253,39 @@ void RobotBridge::stopAll()
 
 void RobotBridge::stopRobot()
 {
+    if (m_autonomous) {
+        // In Passive the robot ignores Drive while it cleans, docks or plays
+        // a demo; Safe ends what it does and lets the stop take effect.
+        qCInfo(lcBridge, "stop: Safe first, to end the robot's own command");
+        m_robot.teleop().enterSafe();
+        m_autonomous = false;
+    }
     m_robot.teleop().stopAll();
 }
 
-void RobotBridge::handleCommand(const QString &client, const QByteArray &payload)
+void RobotBridge::stopAtEdges(const oi::SensorSnapshot &frame)
 {
+    using S = oi::CliffSensor;
+    const bool atEdge = frame.cliff(S::Left) || frame.cliff(S::FrontLeft) || frame.cliff(S::FrontRight)
+                        || frame.cliff(S::Right) || frame.wheelDropLeft() || frame.wheelDropRight()
+                        || frame.wheelDropCaster();
+    const bool wasAtEdge = std::exchange(m_atEdge, atEdge);
+    // Safe mode does this itself (and falls back to Passive). Once stopped,
+    // driving on while the edge is still seen is stopped again.
+    if (!atEdge || (wasAtEdge && !m_robot.teleop().isMoving()) || m_lease.holder().isEmpty() || !frame.has(35)
+        || frame.oiMode() != oi::OiMode::Full)
+        return;
+    qCInfo(lcBridge, "cliff or wheel drop in Full mode while %s drives: stop", qPrintable(m_lease.holder()));
+    stopRobot();
+    reply(m_lease.holder(), {{"id", "safety"}, {"ok", false},
+                             {"error", "cliff or wheel drop in Full mode: the robot was stopped"}});
+}
+
+void RobotBridge::handleCommand(const BridgeInbox::Message &message)
+{
+    const QString &client = message.topic.client;
     QString id, error;
-    const std::optional<CommandRequest> request = CommandRequest::fromJson(payload, &id, &error);
+    const std::optional<CommandRequest> request = CommandRequest::fromJson(message.payload, &id, &error);
     auto refuse = [&](const QString &why, QJsonObject extra = {}) {
         extra.insert(QLatin1String("id"), id);
         extra.insert(QLatin1String("ok"), false);
@@ -242,6 +296,9 @@ void RobotBridge::handleCommand(const QString &client, const QByteArray &payload
         return refuse(error);
     // Stop, from anyone who may write commands: Drive 0,0 and motors off.
     if (request->command == QLatin1String("stop")) {
+        if (message.tooSoon)
+            return refuse(QStringLiteral("too many stops: one every %1 ms from a client that does not hold control")
+                              .arg(BridgeInbox::kStopIntervalMs));
         qCInfo(lcBridge, "stop from %s", qPrintable(client));
         stopRobot();
         return reply(client, {{"id", id}, {"ok", true}});
@@ -249,6 +306,9 @@ void RobotBridge::handleCommand(const QString &client, const QByteArray &payload
     const oi::CommandSpec *spec = oi::commandSpecByName(request->command.toStdString());
     if (spec && belongsToTheLink(spec->command))
         return refuse(QStringLiteral("%1 is not taken over MQTT: the bridge keeps the link's stream").arg(request->command));
+    if (spec && spec->command == oi::Command::Full && !m_options.allowFull)
+        return refuse(QStringLiteral("full is off on this bridge: in Full mode the robot drives over cliffs and "
+                                     "wheel drops; send safe, or ask the teacher to set allow-full = yes"));
     if (!m_lease.isHeldBy(client)) {
         const QString holder = m_lease.holder();
         if (holder.isEmpty())
@@ -285,10 +345,14 @@ QString RobotBridge::sendValidated(const QString &command, const QByteArray &byt
     }
     if (!m_robot.send(bytes))
         return QStringLiteral("the robot is not connected");
+    if (oi::startsCleaning(c) || c == oi::Command::Buttons)
+        m_autonomous = true;
+    else if (c == oi::Command::Safe || c == oi::Command::Full)
+        m_autonomous = false;
     return {};
 }
 
-void RobotBridge::handleControl(const QString &client, const QByteArray &payload, bool takeover)
+void RobotBridge::handleControl(const QString &client, const QByteArray &payload, bool takeover, qint64 arrivedMs)
 {
     QString error;
     const std::optional<ControlAction> action = controlActionFromJson(payload, &error);
@@ -297,7 +361,7 @@ void RobotBridge::handleControl(const QString &client, const QByteArray &payload
     switch (*action) {
     case ControlAction::Take:
         if (takeover) {
-            const QString former = m_lease.takeOver(client);
+            const QString former = m_lease.takeOver(client, arrivedMs);
             if (!former.isEmpty() && former != client) {
                 qCInfo(lcBridge, "takeover: %s takes control from %s", qPrintable(client), qPrintable(former));
                 stopRobot();
@@ -305,11 +369,11 @@ void RobotBridge::handleControl(const QString &client, const QByteArray &payload
             }
             return replyControl(client, true);
         }
-        if (!m_lease.take(client))
+        if (!m_lease.take(client, arrivedMs))
             return replyControl(client, false, QStringLiteral("%1 has control").arg(m_lease.holder()));
         return replyControl(client, true);
     case ControlAction::Keep:
-        if (!m_lease.keep(client))
+        if (!m_lease.keep(client, arrivedMs))
             return replyControl(client, false,
                                 m_lease.holder().isEmpty() ? QStringLiteral("nobody has control: take it first")
                                                            : QStringLiteral("%1 has control").arg(m_lease.holder()));
@@ -342,6 +406,7 @@ void RobotBridge::reply(const QString &client, QJsonObject answer)
 
 void RobotBridge::onFrame(const oi::SensorSnapshot &frame)
 {
+    stopAtEdges(frame);
     publishState(); // mode and battery come with the frames
     m_frameWaiting = true;
     if (m_options.telemetryRateHz <= 0)

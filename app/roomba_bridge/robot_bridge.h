@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "bridge_inbox.h"
 #include "command_request.h"
 #include "control_lease.h"
 #include "mqtt_client.h"
@@ -27,10 +28,18 @@ public:
     struct Options {
         QString name;               // the robot's name in the topics
         double telemetryRateHz = 0; // 0: every frame
+        // Full mode over the network, where the robot itself ignores cliffs
+        // and wheel drops: off unless the teacher allows it.
+        bool allowFull = false;
     };
+
+    // The longest command or control message the bridge reads; a longer
+    // one is dropped unread and answered with an error.
+    static constexpr qsizetype kMaxPayloadBytes = 4096;
 
     RobotBridge(RobotSession &robot, mqtt::MqttClient &broker, LeaseClock &clock, Options options,
                 QObject *parent = nullptr);
+    ~RobotBridge() override;
 
     // The state the broker publishes when the bridge dies: set it on the
     // client before it connects.
@@ -44,20 +53,26 @@ public:
 
     QString controller() const { return m_lease.holder(); }
     QJsonObject state() const;
+    // Messages that arrived but wait to be read.
+    qsizetype waitingMessages() const { return m_inbox.waiting(); }
 
 private:
-    void onMessage(const QString &topic, const QByteArray &payload);
+    void onMessage(const BridgeInbox::Message &message);
+    void onPayloadTooLarge(const QString &topic, qsizetype bytes);
     void onBrokerConnected();
     void onBrokerLost(const QString &reason);
     void onFrame(const oi::SensorSnapshot &frame);
-    void handleCommand(const QString &client, const QByteArray &payload);
-    void handleControl(const QString &client, const QByteArray &payload, bool takeover);
+    void handleCommand(const BridgeInbox::Message &message);
+    void handleControl(const QString &client, const QByteArray &payload, bool takeover, qint64 arrivedMs);
     void stopAll();
     // The command's bytes are validated; motion goes through the teleop
     // rules, the rest straight to the robot. Returns the error, or empty.
     QString sendValidated(const QString &command, const QByteArray &bytes);
-    // Drive 0,0 and motors off, through the teleop rules.
+    // Drive 0,0 and motors off, through the teleop rules; Safe first if the
+    // robot may be carrying out a command of its own in Passive.
     void stopRobot();
+    // In Full mode the robot drives off an edge: the bridge stops it.
+    void stopAtEdges(const oi::SensorSnapshot &frame);
     void reply(const QString &client, QJsonObject answer);
     void replyControl(const QString &client, bool ok, const QString &error = {});
     void publishState(bool always = false);
@@ -68,6 +83,11 @@ private:
     mqtt::MqttClient &m_broker;
     ControlLease m_lease;
     Options m_options;
+    BridgeInbox m_inbox;
+    // A cleaning, demo, dock search or button press was sent: the robot may
+    // be moving in Passive, where Drive is ignored.
+    bool m_autonomous = false;
+    bool m_atEdge = false;
     QTimer m_telemetryTimer;
     QTimer m_statsTimer;
     bool m_frameWaiting = false;

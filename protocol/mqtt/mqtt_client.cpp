@@ -154,6 +154,12 @@ void MqttClient::disconnectFromBroker()
         emit disconnected(QString());
 }
 
+void MqttClient::setDirectReceiver(DirectReceiver receiver)
+{
+    QMutexLocker lock(&m_receiverMutex);
+    m_directReceiver = std::move(receiver);
+}
+
 void MqttClient::subscribe(const QString &topicFilter, int qos)
 {
     for (const auto &s : std::as_const(m_subscriptions))
@@ -190,8 +196,22 @@ void MqttClient::onMessage(mosquitto *, void *self, const mosquitto_message *mes
 {
     auto *client = static_cast<MqttClient *>(self);
     const QString topic = QString::fromUtf8(message->topic);
-    const QByteArray payload(static_cast<const char *>(message->payload), message->payloadlen);
     const bool retained = message->retain;
+    // Checked before the payload is copied or read: one huge message must
+    // not cost the receiver its memory or its time.
+    if (client->m_maxPayloadBytes > 0 && message->payloadlen > client->m_maxPayloadBytes) {
+        const qsizetype bytes = message->payloadlen;
+        QMetaObject::invokeMethod(
+            client, [client, topic, bytes, retained] { emit client->payloadTooLarge(topic, bytes, retained); },
+            Qt::QueuedConnection);
+        return;
+    }
+    const QByteArray payload(static_cast<const char *>(message->payload), message->payloadlen);
+    {
+        QMutexLocker lock(&client->m_receiverMutex);
+        if (client->m_directReceiver)
+            return client->m_directReceiver(topic, payload, retained);
+    }
     QMetaObject::invokeMethod(
         client, [client, topic, payload, retained] { emit client->messageReceived(topic, payload, retained); },
         Qt::QueuedConnection);

@@ -4,10 +4,13 @@
 #include "broker_address.h"
 
 #include <QByteArray>
+#include <QMutex>
 #include <QObject>
 #include <QString>
 #include <QStringList>
 #include <QTimer>
+
+#include <functional>
 
 struct mosquitto;
 struct mosquitto_message;
@@ -52,6 +55,16 @@ public:
     bool isConnected() const { return m_connected; }
     BrokerAddress address() const { return m_address; }
 
+    // Payloads longer than this are dropped on the network thread, before
+    // they are copied, and reported by payloadTooLarge. 0: no limit.
+    void setMaxPayloadBytes(qsizetype bytes) { m_maxPayloadBytes = bytes; }
+    // For a receiver that must see each message as it arrives (the bridge
+    // times heartbeats that way): called on libmosquitto's network thread
+    // instead of messageReceived. It must be quick and thread-safe. Setting
+    // an empty one waits for a call under way: do so before the receiver dies.
+    using DirectReceiver = std::function<void(const QString &topic, const QByteArray &payload, bool retained)>;
+    void setDirectReceiver(DirectReceiver receiver);
+
     // Kept and made again after each reconnect. Wildcards + and # allowed.
     void subscribe(const QString &topicFilter, int qos = 0);
     // Queued for sending; false if the library refuses it (not connected
@@ -63,6 +76,8 @@ signals:
     // `reason` is empty after disconnectFromBroker.
     void disconnected(const QString &reason);
     void messageReceived(const QString &topic, const QByteArray &payload, bool retained);
+    // A payload over setMaxPayloadBytes, dropped unread.
+    void payloadTooLarge(const QString &topic, qsizetype bytes, bool retained);
     // Settings refused, or the broker refused the login.
     void errorOccurred(const QString &message);
 
@@ -88,6 +103,9 @@ private:
     QTimer m_noAnswer; // says so when no broker has answered soon after connectToBroker
     int m_retryDelayMs = kFirstRetryMs;
     QList<QPair<QString, int>> m_subscriptions;
+    qsizetype m_maxPayloadBytes = 0;
+    QMutex m_receiverMutex;
+    DirectReceiver m_directReceiver;
 };
 
 } // namespace mqtt

@@ -5,11 +5,20 @@
 // from the teacher publishing roomba/fleet/stop to the stop bytes leaving
 // each bridge's transport, over several rounds.
 //
-//   bench_stop_all [--bridges N] [--rounds R]    (default 30 bridges, 20 rounds)
+//   bench_stop_all [--bridges N] [--rounds R] [--flood BYTES]
+//
+// Default 30 bridges, 20 rounds. --flood: meanwhile another process
+// (mosquitto_pub -l) publishes commands of BYTES bytes on r1's command
+// topic as fast as it can; over 4096 the bridge drops them unread.
 #include "bridge_rig.h"
 
 #include <QCoreApplication>
 #include <QElapsedTimer>
+#include <QProcess>
+
+#include <atomic>
+#include <csignal>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cstdio>
@@ -35,6 +44,30 @@ std::optional<Clock::time_point> stopSeen(Recording &r, const QByteArray &stop, 
     return std::nullopt;
 }
 
+// A client flooding r1's command topic from its own process group, so
+// that the pipe feeding it ends with it.
+struct Flood {
+    QProcess process;
+    Flood(const MosquittoBroker &broker, int bytes)
+    {
+        const QByteArray line = json({{"id", "flood"}, {"command", "leds"}, {"args", QJsonArray{8, 0, 255}},
+                                      {"pad", QString(std::max(0, bytes - 60), QLatin1Char('x'))}});
+        process.setChildProcessModifier([] { ::setpgid(0, 0); });
+        process.start(QStringLiteral("/bin/sh"),
+                      {QStringLiteral("-c"),
+                       QStringLiteral("yes '%1' | mosquitto_pub -l -h 127.0.0.1 -p %2 -i flooder -t %3")
+                           .arg(QString::fromUtf8(line)).arg(broker.port())
+                           .arg(mqtt::topics::command(QStringLiteral("r1"), QStringLiteral("mallory")))});
+        process.waitForStarted();
+    }
+    ~Flood()
+    {
+        if (process.processId() > 0)
+            ::kill(-pid_t(process.processId()), SIGTERM);
+        process.waitForFinished(3000);
+    }
+};
+
 } // namespace
 
 int main(int argc, char *argv[])
@@ -59,14 +92,37 @@ int main(int argc, char *argv[])
             std::fprintf(stderr, "bench_stop_all: bridge r%d did not come up\n", i + 1);
             return 1;
         }
+    // From here the teacher only publishes (its spy would queue every reply
+    // to the flood on this thread).
+    teacher.client.disconnectFromBroker();
+    mqtt::MqttClient publisher(QStringLiteral("teacher-stop"));
+    publisher.connectToBroker(addressOf(broker));
+    if (!QTest::qWaitFor([&] { return publisher.isConnected(); }, 10000)) {
+        std::fprintf(stderr, "bench_stop_all: the teacher could not connect\n");
+        return 1;
+    }
     const QByteArray stop = rigs.front()->stopBytes();
+    const int floodBytes = intOption(app.arguments(), QStringLiteral("--flood"), 0);
+    std::unique_ptr<Flood> flood;
+    // The bridge's answers to the flood, counted as they arrive: as a queue
+    // on this thread they would delay the bridges, which in a classroom run
+    // in processes of their own.
+    std::atomic<qint64> floodReplies{0};
+    mqtt::MqttClient floodWatcher(QStringLiteral("flood-watcher"));
+    if (floodBytes > 0) {
+        floodWatcher.setDirectReceiver([&](const QString &, const QByteArray &, bool) { ++floodReplies; });
+        floodWatcher.subscribe(mqtt::topics::reply(QStringLiteral("r1"), QStringLiteral("mallory")));
+        floodWatcher.connectToBroker(addressOf(broker));
+        flood = std::make_unique<Flood>(broker, floodBytes);
+        QTest::qWait(500); // the flood under way
+    }
 
     std::vector<double> samples;
     int lost = 0;
     for (int round = 0; round < rounds; ++round) {
         QTest::qWait(100); // rounds apart: the last round's replies and states settle first
         const Clock::time_point sent = Clock::now();
-        teacher.client.publish(mqtt::topics::stopAll(), json({{"client", "teacher"}}), 1);
+        publisher.publish(mqtt::topics::stopAll(), json({{"client", "teacher"}}), 1);
         std::vector<std::optional<Clock::time_point>> seen(rigs.size());
         QElapsedTimer waited;
         waited.start();
@@ -77,11 +133,13 @@ int main(int argc, char *argv[])
                 if (!seen[i])
                     seen[i] = stopSeen(rigs[i]->recording, stop, sent);
         }
-        for (const auto &s : seen) {
-            if (s)
-                samples.push_back(std::chrono::duration<double, std::milli>(*s - sent).count());
-            else
+        for (std::size_t i = 0; i < seen.size(); ++i) {
+            if (seen[i]) {
+                samples.push_back(std::chrono::duration<double, std::milli>(*seen[i] - sent).count());
+            } else {
                 ++lost;
+                std::printf("  round %d: no stop at r%zu within 2 s\n", round + 1, i + 1);
+            }
         }
         for (auto &rig : rigs)
             rig->recording.take();
@@ -91,8 +149,11 @@ int main(int argc, char *argv[])
     const auto at = [&samples](double q) {
         return samples.empty() ? 0.0 : samples[std::min(samples.size() - 1, std::size_t(q * samples.size()))];
     };
-    std::printf("stop all, publish to stop bytes on the transport: %d bridges, %d rounds, %zu samples, %d lost\n",
-                bridges, rounds, samples.size(), lost);
+    std::printf("stop all, publish to stop bytes on the transport: %d bridges, %d rounds, %zu samples, %d lost%s\n",
+                bridges, rounds, samples.size(), lost,
+                floodBytes > 0 ? qPrintable(QStringLiteral(", r1's command topic flooded with %1-byte messages").arg(floodBytes)) : "");
     std::printf("  p50 %.2f ms   p99 %.2f ms   max %.2f ms\n", at(0.5), at(0.99), samples.empty() ? 0.0 : samples.back());
+    if (flood)
+        std::printf("  the bridge answered the flood %lld times\n", qlonglong(floodReplies.load()));
     return lost == 0 ? 0 : 1;
 }

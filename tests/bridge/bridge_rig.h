@@ -45,8 +45,9 @@ struct BridgeRig {
     ManualLeaseClock clock;
     RobotBridge bridge;
 
-    BridgeRig(const QString &name, const mqtt::BrokerAddress &broker, Robot robot = Robot::Recording)
-        : client(QStringLiteral("bridge-%1").arg(name)), bridge(session, client, clock, {name, 0})
+    BridgeRig(const QString &name, const mqtt::BrokerAddress &broker, Robot robot = Robot::Recording,
+              bool allowFull = false)
+        : client(QStringLiteral("bridge-%1").arg(name)), bridge(session, client, clock, {name, 0, allowFull})
     {
         recording.mode = int(oi::OiMode::Safe);
         if (robot == Robot::Recording) {
@@ -117,6 +118,11 @@ struct ConsoleClient {
         if (!QTest::qWaitFor([&] { return on(replyTopic).size() > before; }, timeoutMs))
             return {{"timeout", true}};
         return on(replyTopic).value(before);
+    }
+    // Once the robot is online, takes control of it; true if given.
+    bool takes(const QString &robot)
+    {
+        return waitForState(robot, true) && control(robot, "take").value(QLatin1String("ok")).toBool();
     }
     QJsonObject command(const QString &robot, const QString &id, const QString &command, const QJsonArray &args = {})
     {

@@ -3,8 +3,10 @@
 
 #include "control_lease.h"
 
+#include <atomic>
+
 // A lease clock the test advances by hand: the alarm goes off inside
-// advance(), when its time has come.
+// advance(), when its time has come. The time may be read from any thread.
 class ManualLeaseClock : public LeaseClock {
 public:
     qint64 nowMs() const override { return m_now; }
@@ -20,6 +22,6 @@ public:
     }
 
 private:
-    qint64 m_now = 1000;
+    std::atomic<qint64> m_now = 1000;
     qint64 m_alarmAt = -1;
 };

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The sample broker rules (resources/mqtt/acl) on a real mosquitto, with a
-// bridge in this process: a spectator watches but cannot drive, a student
-// cannot take over or stop the fleet, the teacher can, and an unknown
-// client is refused.
+// The sample broker config and rules (resources/mqtt/mosquitto.conf and
+// acl) on a real mosquitto, with a bridge in this process: a spectator
+// watches but cannot drive, a student cannot take over or stop the fleet,
+// the teacher can, an unknown client is refused, nobody can borrow a
+// bridge's client id, and a bridge's account writes only its own robot.
 
 #include "bridge_rig.h"
 
@@ -18,14 +19,32 @@ class TestBridgeAccess : public QObject {
     BrokerAddress as(const QString &user) const { return addressOf(*m_broker, user, user + QStringLiteral("-pw")); }
 
 private slots:
+    // The sample config's settings, but its listener and file paths.
+    static QString sampleSettings()
+    {
+        QFile conf(QStringLiteral(ROOMBA_MQTT_DIR "/mosquitto.conf"));
+        if (!conf.open(QIODevice::ReadOnly | QIODevice::Text))
+            return {};
+        QString out;
+        for (const QString &line : QString::fromUtf8(conf.readAll()).split(QLatin1Char('\n'))) {
+            if (line.isEmpty() || line.startsWith(QLatin1Char('#')) || line.startsWith(QLatin1String("listener"))
+                || line.startsWith(QLatin1String("password_file")) || line.startsWith(QLatin1String("acl_file")))
+                continue;
+            out += line + QLatin1Char('\n');
+        }
+        return out;
+    }
+
     void init()
     {
-        m_broker = std::make_unique<MosquittoBroker>(
-            QStringLiteral("allow_anonymous false\npassword_file %DIR%/passwords\nacl_file %DIR%/acl\n"));
+        const QString settings = sampleSettings();
+        QVERIFY(settings.contains(QLatin1String("use_username_as_clientid true")));
+        QVERIFY(settings.contains(QLatin1String("max_packet_size")));
+        m_broker = std::make_unique<MosquittoBroker>(settings + QStringLiteral("password_file %DIR%/passwords\nacl_file %DIR%/acl\n"));
         QFile acl(QStringLiteral(ROOMBA_MQTT_DIR "/acl"));
         QVERIFY(acl.open(QIODevice::ReadOnly));
         m_broker->writeFile(QStringLiteral("acl"), acl.readAll());
-        for (const char *user : {"bridge", "teacher", "spectator", "alice", "bob"})
+        for (const char *user : {"bridge-r1", "bridge-r2", "teacher", "spectator", "alice", "bob"})
             QVERIFY(m_broker->addUser(QString::fromLatin1(user), QString::fromLatin1(user) + QStringLiteral("-pw")));
         QVERIFY2(m_broker->start(), qPrintable(m_broker->error()));
     }
@@ -44,7 +63,7 @@ private slots:
 
     void spectatorWatchesButCannotDrive()
     {
-        BridgeRig rig(QStringLiteral("r1"), as(QStringLiteral("bridge")));
+        BridgeRig rig(QStringLiteral("r1"), as(QStringLiteral("bridge-r1")));
         QVERIFY(rig.streaming());
         ConsoleClient spectator(QStringLiteral("spectator"), as(QStringLiteral("spectator")),
                                 {topics::telemetry(QStringLiteral("r1"))});
@@ -67,7 +86,7 @@ private slots:
 
     void studentCannotTakeOverOrStopAll()
     {
-        BridgeRig rig(QStringLiteral("r1"), as(QStringLiteral("bridge")));
+        BridgeRig rig(QStringLiteral("r1"), as(QStringLiteral("bridge-r1")));
         QVERIFY(rig.streaming());
         ConsoleClient alice(QStringLiteral("alice"), as(QStringLiteral("alice"))), bob(QStringLiteral("bob"), as(QStringLiteral("bob")));
         ConsoleClient teacher(QStringLiteral("teacher"), as(QStringLiteral("teacher")));
@@ -93,6 +112,37 @@ private slots:
         teacher.client.publish(topics::stopAll(), json({{"client", "teacher"}}), 1);
         QTRY_COMPARE(rig.bridge.controller(), QString());
         QTRY_VERIFY(rig.recording.written().endsWith(rig.stopBytes()));
+    }
+
+    // Another account connecting with the bridge's client id gets its own
+    // (its account name): the bridge stays on the broker and answers.
+    void aBridgesClientIdCannotBeBorrowed()
+    {
+        BridgeRig rig(QStringLiteral("r1"), as(QStringLiteral("bridge-r1")));
+        QVERIFY(rig.streaming());
+        ConsoleClient alice(QStringLiteral("alice"), as(QStringLiteral("alice")));
+        QVERIFY(alice.waitForState(QStringLiteral("r1"), true));
+        QSignalSpy bridgeLost(&rig.client, &MqttClient::disconnected);
+        MqttClient borrower(rig.client.clientId());
+        borrower.connectToBroker(as(QStringLiteral("bob")));
+        QTRY_VERIFY_WITH_TIMEOUT(borrower.isConnected(), 5000);
+        QCOMPARE(alice.control(QStringLiteral("r1"), "take").value(QLatin1String("controller")).toString(), QStringLiteral("alice"));
+        QCOMPARE(bridgeLost.count(), 0);
+        QVERIFY(rig.client.isConnected());
+    }
+
+    // A bridge's account cannot publish another robot's state: the fake
+    // r2 state is dropped, the real r1 state behind it arrives.
+    void aBridgeWritesOnlyItsOwnRobot()
+    {
+        BridgeRig rig(QStringLiteral("r1"), as(QStringLiteral("bridge-r1")));
+        QVERIFY(rig.streaming());
+        ConsoleClient watcher(QStringLiteral("teacher"), as(QStringLiteral("teacher")));
+        QVERIFY(watcher.waitForState(QStringLiteral("r1"), true));
+        rig.client.publish(topics::state(QStringLiteral("r2")), json({{"online", true}, {"name", "r2"}}), 1, true);
+        rig.client.publish(topics::state(QStringLiteral("r1")), json({{"online", true}, {"name", "r1"}, {"marker", 1}}), 1, true);
+        QTRY_VERIFY(watcher.lastState(QStringLiteral("r1")).contains(QLatin1String("marker")));
+        QVERIFY(watcher.on(topics::state(QStringLiteral("r2"))).isEmpty());
     }
 };
 

@@ -80,8 +80,7 @@ private slots:
         BridgeRig rig(QStringLiteral("r1"), addressOf(broker));
         QVERIFY(rig.streaming());
         ConsoleClient alice(QStringLiteral("alice"), addressOf(broker));
-        QVERIFY(alice.waitForState(QStringLiteral("r1"), true));
-        QCOMPARE(alice.control(QStringLiteral("r1"), "take").value(QLatin1String("ok")), QJsonValue(true));
+        QVERIFY(alice.takes(QStringLiteral("r1")));
         const qsizetype before = rig.recording.count();
 
         struct Bad {
@@ -126,8 +125,7 @@ private slots:
         BridgeRig rig(QStringLiteral("r1"), addressOf(broker), BridgeRig::Robot::VirtualCreate1);
         QVERIFY(rig.streaming());
         ConsoleClient alice(QStringLiteral("alice"), addressOf(broker));
-        QVERIFY(alice.waitForState(QStringLiteral("r1"), true));
-        QCOMPARE(alice.control(QStringLiteral("r1"), "take").value(QLatin1String("ok")), QJsonValue(true));
+        QVERIFY(alice.takes(QStringLiteral("r1")));
         const QString r1 = QStringLiteral("r1");
         QCOMPARE(alice.command(r1, "1", "script", {"drive 300 straight; wait-distance 100; drive 0 0"})
                      .value(QLatin1String("ok")), QJsonValue(true));
@@ -201,6 +199,202 @@ private slots:
         QTRY_VERIFY(alice.lastState(QStringLiteral("r1")).value(QLatin1String("controller")).isNull());
         QCOMPARE(alice.control(QStringLiteral("r1"), "keep").value(QLatin1String("error")).toString(),
                  QStringLiteral("nobody has control: take it first"));
+    }
+
+    // A message far over the limit, sent while alice drives, is dropped
+    // unread (answered, without the id inside it), and the heartbeat stop
+    // still comes 300 ms after the last heartbeat's arrival, even though
+    // that heartbeat was still waiting to be read when the time came.
+    void oversizedMessageIsDroppedUnreadAndTheHeartbeatStopIsOnTime()
+    {
+        MosquittoBroker broker;
+        QVERIFY2(broker.start(), qPrintable(broker.error()));
+        BridgeRig rig(QStringLiteral("r1"), addressOf(broker));
+        QVERIFY(rig.streaming());
+        ConsoleClient alice(QStringLiteral("alice"), addressOf(broker));
+        QVERIFY(aliceDrives(alice, rig));
+        const qsizetype before = rig.recording.count();
+        const QString replies = topics::reply(QStringLiteral("r1"), QStringLiteral("alice"));
+        const qsizetype repliesBefore = alice.on(replies).size();
+
+        // 4 MB of valid JSON: parsed, it would be a command with an id.
+        const QByteArray big = json({{"id", "big"}, {"command", "leds"}, {"args", QJsonArray{8, 0, 255}},
+                                     {"padding", QString(4 << 20, QLatin1Char('x'))}});
+        rig.clock.advance(200);
+        alice.client.publish(topics::command(QStringLiteral("r1"), QStringLiteral("alice")), big, 1);
+        alice.client.publish(topics::control(QStringLiteral("r1"), QStringLiteral("alice")), json({{"action", "keep"}}), 1);
+        // The heartbeat has arrived (timed by the network thread) and waits:
+        // this thread reads nothing until the clock moves on.
+        QDeadlineTimer deadline(10000);
+        while (rig.bridge.waitingMessages() == 0 && !deadline.hasExpired())
+            QThread::yieldCurrentThread();
+        QCOMPARE(rig.bridge.waitingMessages(), qsizetype(1));
+
+        rig.clock.advance(250); // 450 ms after the take, 250 after the heartbeat
+        QCOMPARE(rig.bridge.controller(), QStringLiteral("alice"));
+        rig.clock.advance(49);
+        QCOMPARE(rig.bridge.controller(), QStringLiteral("alice"));
+        rig.clock.advance(1); // 300 ms after the heartbeat arrived
+        QCOMPARE(rig.bridge.controller(), QString());
+        QTRY_COMPARE(byteText(writtenSince(rig.recording, before)), byteText(rig.stopBytes()));
+
+        const QString tooLarge = QStringLiteral("message of %1 bytes dropped unread: at most 4096 bytes").arg(big.size());
+        auto refused = [&] {
+            const QList<QJsonObject> since = alice.on(replies).mid(repliesBefore);
+            return std::any_of(since.cbegin(), since.cend(), [&](const QJsonObject &r) {
+                return r.value(QLatin1String("error")).toString() == tooLarge;
+            });
+        };
+        QTRY_VERIFY(refused());
+        for (const QJsonObject &r : alice.on(replies).mid(repliesBefore))
+            QVERIFY(r.value(QLatin1String("id")) != QJsonValue(QStringLiteral("big")));
+        QCOMPARE(byteText(writtenSince(rig.recording, before)), byteText(rig.stopBytes())); // no LEDs
+    }
+
+    void fullIsRefusedUnlessAllowed()
+    {
+        MosquittoBroker broker;
+        QVERIFY2(broker.start(), qPrintable(broker.error()));
+        BridgeRig rig(QStringLiteral("r1"), addressOf(broker));
+        QVERIFY(rig.streaming());
+        ConsoleClient alice(QStringLiteral("alice"), addressOf(broker));
+        QVERIFY(alice.takes(QStringLiteral("r1")));
+        const qsizetype before = rig.recording.count();
+        const QJsonObject r = alice.command(QStringLiteral("r1"), QStringLiteral("1"), QStringLiteral("full"));
+        QCOMPARE(r.value(QLatin1String("ok")), QJsonValue(false));
+        QVERIFY2(r.value(QLatin1String("error")).toString().contains(QLatin1String("allow-full = yes")),
+                 qPrintable(r.value(QLatin1String("error")).toString()));
+        QCOMPARE(alice.command(QStringLiteral("r1"), QStringLiteral("2"), QStringLiteral("safe")).value(QLatin1String("ok")),
+                 QJsonValue(true));
+        QTRY_COMPARE(byteText(writtenSince(rig.recording, before)), byteText(toBytes(*oi::CommandEncoder(rig.session.robotProfile()).safe())));
+    }
+
+    // With full allowed, the bridge does what Safe mode would: the first
+    // cliff while a client drives stops the robot.
+    void allowedFullStillStopsAtACliff()
+    {
+        MosquittoBroker broker;
+        QVERIFY2(broker.start(), qPrintable(broker.error()));
+        BridgeRig rig(QStringLiteral("r1"), addressOf(broker), BridgeRig::Robot::Recording, true);
+        QVERIFY(rig.streaming());
+        ConsoleClient alice(QStringLiteral("alice"), addressOf(broker));
+        QVERIFY(alice.takes(QStringLiteral("r1")));
+        QCOMPARE(alice.command(QStringLiteral("r1"), QStringLiteral("1"), QStringLiteral("full")).value(QLatin1String("ok")),
+                 QJsonValue(true));
+        rig.recording.mode = int(oi::OiMode::Full);
+        QTRY_COMPARE(rig.session.latest().oiMode(), oi::OiMode::Full);
+        QVERIFY(aliceDrives(alice, rig));
+
+        const qsizetype before = rig.recording.count();
+        rig.recording.cliffLeft = true;
+        QTRY_COMPARE(byteText(writtenSince(rig.recording, before)), byteText(rig.stopBytes()));
+        QTRY_VERIFY(alice.on(topics::reply(QStringLiteral("r1"), QStringLiteral("alice"))).last()
+                        .value(QLatin1String("error")).toString().contains(QLatin1String("cliff or wheel drop")));
+
+        // Driving on at the edge is stopped at the next frame.
+        const qsizetype again = rig.recording.count();
+        QCOMPARE(alice.command(QStringLiteral("r1"), QStringLiteral("2"), QStringLiteral("drive"), {100, "straight"})
+                     .value(QLatin1String("ok")), QJsonValue(true));
+        const QByteArray drive = toBytes(*oi::CommandEncoder(rig.session.robotProfile()).drive(100, oi::kRadiusStraight));
+        QTRY_COMPARE(byteText(writtenSince(rig.recording, again)), byteText(drive + rig.stopBytes()));
+    }
+
+    // clean (and spot, max, seek-dock, buttons, the Create's demos) leave
+    // the robot in Passive, where Drive 0,0 is ignored: the lapse sends Safe
+    // first.
+    void aLapseAfterCleanStopsTheRobot()
+    {
+        MosquittoBroker broker;
+        QVERIFY2(broker.start(), qPrintable(broker.error()));
+        {
+            BridgeRig rig(QStringLiteral("r1"), addressOf(broker));
+            rig.recording.mode = int(oi::OiMode::Passive);
+            QVERIFY(rig.streaming());
+            ConsoleClient alice(QStringLiteral("alice"), addressOf(broker));
+            QVERIFY(alice.takes(QStringLiteral("r1")));
+            QCOMPARE(alice.command(QStringLiteral("r1"), QStringLiteral("1"), QStringLiteral("clean")).value(QLatin1String("ok")),
+                     QJsonValue(true));
+            const qsizetype before = rig.recording.count();
+            rig.clock.advance(ControlLease::kHeartbeatTimeoutMs);
+            const oi::CommandEncoder encode(rig.session.robotProfile());
+            QTRY_COMPARE(byteText(writtenSince(rig.recording, before)), byteText(toBytes(*encode.safe()) + rig.stopBytes()));
+        }
+        // The virtual robot: cleaning in Passive, then stopped in Safe.
+        BridgeRig rig(QStringLiteral("r2"), addressOf(broker), BridgeRig::Robot::Virtual);
+        QVERIFY(rig.streaming());
+        ConsoleClient alice(QStringLiteral("alice"), addressOf(broker));
+        QVERIFY(alice.takes(QStringLiteral("r2")));
+        QCOMPARE(alice.command(QStringLiteral("r2"), QStringLiteral("1"), QStringLiteral("safe")).value(QLatin1String("ok")), QJsonValue(true));
+        QTRY_COMPARE_WITH_TIMEOUT(rig.session.latest().oiMode(), oi::OiMode::Safe, 5000);
+        QCOMPARE(alice.command(QStringLiteral("r2"), QStringLiteral("2"), QStringLiteral("clean")).value(QLatin1String("ok")), QJsonValue(true));
+        QTRY_COMPARE_WITH_TIMEOUT(rig.session.latest().oiMode(), oi::OiMode::Passive, 5000);
+        rig.clock.advance(ControlLease::kHeartbeatTimeoutMs);
+        QCOMPARE(rig.bridge.controller(), QString());
+        QTRY_COMPARE_WITH_TIMEOUT(rig.session.latest().oiMode(), oi::OiMode::Safe, 5000);
+        QCOMPARE(rig.session.latest().requestedVelocity(), 0);
+    }
+
+    // A take the broker kept (retained) from before the bridge started is
+    // not acted on: control stays free for whoever asks now.
+    void retainedTakeIsIgnoredAfterARestart()
+    {
+        MosquittoBroker broker;
+        QVERIFY2(broker.start(), qPrintable(broker.error()));
+        ConsoleClient alice(QStringLiteral("alice"), addressOf(broker)), bob(QStringLiteral("bob"), addressOf(broker));
+        QVERIFY(bob.connected());
+        {
+            BridgeRig rig(QStringLiteral("r1"), addressOf(broker));
+            QVERIFY(rig.streaming());
+            QVERIFY(bob.waitForState(QStringLiteral("r1"), true));
+            bob.client.publish(topics::control(QStringLiteral("r1"), QStringLiteral("bob")), json({{"action", "take"}}), 1, true);
+            QTRY_COMPARE(rig.bridge.controller(), QStringLiteral("bob")); // sent now: acted on
+            rig.bridge.shutDown();
+        }
+        QVERIFY(alice.waitForState(QStringLiteral("r1"), false));
+        BridgeRig rig(QStringLiteral("r1"), addressOf(broker));
+        QVERIFY(rig.streaming());
+        QVERIFY(alice.waitForState(QStringLiteral("r1"), true));
+        // The retained take came first, on subscribing; alice's comes after.
+        const QJsonObject r = alice.control(QStringLiteral("r1"), "take");
+        QCOMPARE(r.value(QLatin1String("controller")).toString(), QStringLiteral("alice"));
+        QCOMPARE(r.value(QLatin1String("ok")), QJsonValue(true));
+    }
+
+    // Stops from clients without control: one per client every 200 ms (on
+    // the lease clock); a flooding client does not hold back anyone else's.
+    void stopsFromOthersAreRateLimitedPerClient()
+    {
+        MosquittoBroker broker;
+        QVERIFY2(broker.start(), qPrintable(broker.error()));
+        BridgeRig rig(QStringLiteral("r1"), addressOf(broker));
+        QVERIFY(rig.streaming());
+        ConsoleClient alice(QStringLiteral("alice"), addressOf(broker)), bob(QStringLiteral("bob"), addressOf(broker)),
+            carol(QStringLiteral("carol"), addressOf(broker));
+        QVERIFY(bob.connected());
+        QVERIFY(carol.connected());
+        QVERIFY(aliceDrives(alice, rig));
+        const QString r1 = QStringLiteral("r1");
+        const QByteArray stop = rig.stopBytes();
+        auto stopsSince = [&](qsizetype from) { return writtenSince(rig.recording, from).count(stop); };
+
+        qsizetype before = rig.recording.count();
+        QCOMPARE(bob.command(r1, "1", "stop").value(QLatin1String("ok")), QJsonValue(true));
+        QTRY_COMPARE(stopsSince(before), 1);
+        const QJsonObject r = bob.command(r1, "2", "stop");
+        QCOMPARE(r.value(QLatin1String("ok")), QJsonValue(false));
+        QCOMPARE(r.value(QLatin1String("error")).toString(),
+                 QStringLiteral("too many stops: one every 200 ms from a client that does not hold control"));
+        QCOMPARE(carol.command(r1, "3", "stop").value(QLatin1String("ok")), QJsonValue(true));
+        // The one who drives is never held back.
+        QCOMPARE(alice.command(r1, "4", "stop").value(QLatin1String("ok")), QJsonValue(true));
+        QCOMPARE(alice.command(r1, "5", "stop").value(QLatin1String("ok")), QJsonValue(true));
+        QTRY_COMPARE(stopsSince(before), 4);
+
+        rig.clock.advance(199);
+        QCOMPARE(bob.command(r1, "6", "stop").value(QLatin1String("ok")), QJsonValue(false));
+        rig.clock.advance(1);
+        QCOMPARE(bob.command(r1, "7", "stop").value(QLatin1String("ok")), QJsonValue(true));
+        QTRY_COMPARE(stopsSince(before), 5);
     }
 
     void takeoverAndStopAll()

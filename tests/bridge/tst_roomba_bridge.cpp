@@ -48,6 +48,14 @@ private slots:
                                     << "--broker: broker:";
         QTest::newRow("bad name") << QStringList{"--name", "r 1", "--sim"} << QByteArray() << "'r 1' is not a robot name";
         QTest::newRow("fleet") << QStringList{"--name", "fleet", "--sim"} << QByteArray() << "'fleet' is not a robot name";
+        QTest::newRow("long name") << QStringList{"--name", QString(65, QLatin1Char('r')), "--sim"} << QByteArray()
+                                   << "is not a robot name: 1 to 64 letters";
+        QTest::newRow("bad account") << QStringList{} << QByteArray("name = r1\nsim = yes\nusername = bridge/r1\n")
+                                     << "bad.conf:3: username: 'bridge/r1' is not an account name: 1 to 64 letters, digits, '-' or '_'";
+        QTest::newRow("account with a wildcard") << QStringList{"--name", "r1", "--sim", "--username", "bridge+"} << QByteArray()
+                                                 << "--username: username: 'bridge+' is not an account name";
+        QTest::newRow("bad allow-full") << QStringList{} << QByteArray("name = r1\nsim = yes\nallow-full = maybe\n")
+                                        << "bad.conf:3: allow-full: 'maybe' is not yes or no";
         QTest::newRow("no name") << QStringList{"--sim"} << QByteArray() << "--name NAME";
         QTest::newRow("no robot") << QStringList{"--name", "r1"} << QByteArray() << "--sim, --port PATH or --tcp HOST:PORT";
         QTest::newRow("two robots") << QStringList{"--name", "r1", "--port", "/dev/ttyUSB0"} << QByteArray("sim = yes\n")

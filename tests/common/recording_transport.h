@@ -35,6 +35,8 @@ struct Recording {
     std::atomic<int> mode{0};
     // Bumps and wheel drops (packet 7) the streamed frames report.
     std::atomic<int> bumps{0};
+    // The left cliff sensor in the streamed frames.
+    std::atomic<bool> cliffLeft{false};
     // False holds the streamed frames back.
     std::atomic<bool> streaming{true};
     std::atomic<int> flushes{0};
@@ -80,7 +82,7 @@ public:
         m_timer.setInterval(15);
         connect(&m_timer, &QTimer::timeout, this, [this] {
             if (m_recording->streaming)
-                emit bytesReceived(group100Frame(std::uint8_t(m_recording->bumps), m_recording->mode));
+                emit bytesReceived(group100Frame(std::uint8_t(m_recording->bumps), m_recording->mode, m_recording->cliffLeft));
         });
     }
     // Records into a recording of its own.

@@ -33,9 +33,9 @@ inline QByteArray streamFrame(const QByteArray &payload)
 }
 
 // A group-100 frame (packets 7..58, 80 data bytes) as a Create 2 streams it:
-// every value 0 but packet 7 (bumps and wheel drops) and packet 35 (the OI
-// mode, 0 Off .. 3 Full).
-inline QByteArray group100Frame(std::uint8_t bumps = 0, int oiMode = 0)
+// every value 0 but packet 7 (bumps and wheel drops), packet 35 (the OI
+// mode, 0 Off .. 3 Full) and packet 9 (the left cliff).
+inline QByteArray group100Frame(std::uint8_t bumps = 0, int oiMode = 0, bool cliffLeft = false)
 {
     // Packet 35 sits after packets 7..34 in the group's data.
     static const int modeOffset = [] {
@@ -49,5 +49,6 @@ inline QByteArray group100Frame(std::uint8_t bumps = 0, int oiMode = 0)
     payload[0] = static_cast<char>(100);
     payload[1] = static_cast<char>(bumps);
     payload[1 + modeOffset] = static_cast<char>(oiMode);
+    payload[3] = static_cast<char>(cliffLeft); // after packets 7 and 8
     return streamFrame(payload);
 }

@@ -121,6 +121,30 @@ private slots:
         QCOMPARE(cReceived[0][2].toBool(), true);
     }
 
+    // Over the limit: reported with its size, never delivered; at the
+    // limit: delivered, as the direct receiver sees it.
+    void payloadsOverTheLimitAreDroppedUnread()
+    {
+        MosquittoBroker broker;
+        QVERIFY2(broker.start(), qPrintable(broker.error()));
+        MqttClient sender(QStringLiteral("sender")), bounded(QStringLiteral("bounded"));
+        bounded.setMaxPayloadBytes(100);
+        QSignalSpy tooLarge(&bounded, &MqttClient::payloadTooLarge), received(&bounded, &MqttClient::messageReceived);
+        bounded.subscribe(QStringLiteral("roomba/r1/command/+"));
+        QVERIFY(sender.connectToBroker(addressOf(broker)));
+        QVERIFY(bounded.connectToBroker(addressOf(broker)));
+        QTRY_VERIFY_WITH_TIMEOUT(sender.isConnected() && bounded.isConnected(), 5000);
+
+        // Retained, so they reach it even if its subscription is not in place yet.
+        QVERIFY(sender.publish(QStringLiteral("roomba/r1/command/a"), QByteArray(101, 'x'), 1, true));
+        QVERIFY(sender.publish(QStringLiteral("roomba/r1/command/b"), QByteArray(100, 'y'), 1, true));
+        QTRY_COMPARE_WITH_TIMEOUT(received.count() + tooLarge.count(), 2, 5000);
+        QCOMPARE(received.count(), 1);
+        QCOMPARE(received[0][1].toByteArray(), QByteArray(100, 'y'));
+        QCOMPARE(tooLarge[0][0].toString(), QStringLiteral("roomba/r1/command/a"));
+        QCOMPARE(tooLarge[0][1].value<qsizetype>(), qsizetype(101));
+    }
+
     void lastWillWhenTheClientDies()
     {
         MosquittoBroker broker;

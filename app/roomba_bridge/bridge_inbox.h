@@ -1,0 +1,71 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "control_lease.h"
+#include "fleet_topics.h"
+
+#include <QByteArray>
+#include <QHash>
+#include <QMutex>
+#include <QObject>
+
+#include <deque>
+#include <functional>
+
+// The bridge's messages on their way from libmosquitto's network thread to
+// the bridge's own (docs/mqtt.md, "Limits"). Each is timed by the lease
+// clock as it arrives and waits in one of three lanes, read in this order:
+// stops, control messages, commands. Every stop and control message is read
+// before the next few commands, so no amount of other traffic delays a stop
+// or a heartbeat. Each lane holds at most kMaxWaiting messages: a flood
+// loses its own newest messages, and memory stays bounded.
+class BridgeInbox : public QObject {
+    Q_OBJECT
+public:
+    static constexpr int kMaxWaiting = 256;      // per lane
+    static constexpr int kCommandsPerTurn = 16;  // then timers and frames get their turn
+    static constexpr int kStopIntervalMs = 200;  // per client, unless it holds control
+
+    struct Message {
+        mqtt::topics::Topic topic;
+        QByteArray payload;
+        qint64 arrivedMs = 0;
+        // A stop from a client that sent one less than kStopIntervalMs ago.
+        bool tooSoon = false;
+    };
+    using Handler = std::function<void(const Message &)>;
+
+    BridgeInbox(LeaseClock &clock, QString robot, QObject *parent = nullptr);
+
+    void setHandler(Handler handler) { m_handler = std::move(handler); }
+    // Who holds control: its stops are never held back.
+    void setController(const QString &client);
+
+    // On the network thread: sorts the message into its lane. Messages for
+    // other robots and retained ones (a `take` kept by the broker must not
+    // act when the bridge starts) are dropped here.
+    void receive(const QString &topic, const QByteArray &payload, bool retained);
+
+    // On the bridge's thread: every waiting stop and control message.
+    void deliverUrgent();
+    qsizetype waiting() const;
+
+private:
+    enum Lane { Stops, Control, Commands, LaneCount };
+    // Urgent messages, then a few commands; comes back for the rest.
+    void deliverTurn();
+    bool takeNext(int lane, Message *out);
+    qsizetype waitingLocked() const;
+
+    LeaseClock &m_clock;
+    const QString m_robot;
+    Handler m_handler;
+    mutable QMutex m_mutex;
+    std::deque<Message> m_lanes[LaneCount];
+    bool m_turnPosted = false;
+    int m_dropped = 0;
+    qint64 m_droppedLoggedMs = -1000000;
+    QString m_lastDroppedFrom;
+    QString m_controller;
+    QHash<QString, qint64> m_lastStopMs;
+};

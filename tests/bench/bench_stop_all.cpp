@@ -114,7 +114,11 @@ int main(int argc, char *argv[])
         floodWatcher.subscribe(mqtt::topics::reply(QStringLiteral("r1"), QStringLiteral("mallory")));
         floodWatcher.connectToBroker(addressOf(broker));
         flood = std::make_unique<Flood>(broker, floodBytes);
-        QTest::qWait(500); // the flood under way
+        // The flood is under way once the bridge answers it (oversized ones too: unread, with an error).
+        if (!QTest::qWaitFor([&] { return floodReplies.load() > 0; }, 10000)) {
+            std::fprintf(stderr, "bench_stop_all: the bridge never answered the flood\n");
+            return 1;
+        }
     }
 
     std::vector<double> samples;

@@ -107,7 +107,11 @@ QWidget *DoctorDetails::detailsView()
         layout->addWidget(m_viewSummary);
         layout->addWidget(m_viewNext);
         layout->addWidget(m_viewTried);
-        layout->addWidget(m_viewSteps);
+        layout->addWidget(m_viewSteps, 1);
+        // Without a list the texts stay at the top, not spread over the dialog.
+        layout->addStretch(0);
+        for (QLabel *text : {m_viewSummary, m_viewNext, m_viewTried})
+            text->setSizePolicy(QSizePolicy::Preferred, QSizePolicy::Maximum);
         layout->addWidget(buttons);
         dialog->resize(560, 320);
         m_view = dialog;

@@ -28,7 +28,7 @@ const QStringList &BridgeConfig::keys()
         QStringLiteral("port"),     QStringLiteral("tcp"),           QStringLiteral("profile"),
         QStringLiteral("username"), QStringLiteral("password"),      QStringLiteral("password-file"),
         QStringLiteral("cafile"),   QStringLiteral("certfile"),      QStringLiteral("keyfile"),
-        QStringLiteral("rate"),     QStringLiteral("allow-full"),
+        QStringLiteral("rate"),     QStringLiteral("allow-full"),    QStringLiteral("full-telemetry"),
     };
     return k;
 }
@@ -167,6 +167,11 @@ std::optional<BridgeConfig> BridgeConfig::fromSettings(const QList<Setting> &set
         if (!isYes(value("allow-full")) && !isNo(value("allow-full")))
             return fail(QStringLiteral("allow-full"), QStringLiteral("'%1' is not yes or no").arg(value("allow-full")));
         c.allowFull = isYes(value("allow-full"));
+    }
+    if (has("full-telemetry")) {
+        if (!isYes(value("full-telemetry")) && !isNo(value("full-telemetry")))
+            return fail(QStringLiteral("full-telemetry"), QStringLiteral("'%1' is not yes or no").arg(value("full-telemetry")));
+        c.fullTelemetry = isYes(value("full-telemetry"));
     }
     return c;
 }

@@ -19,6 +19,7 @@ struct BridgeConfig {
     oilink::LinkSettings link;
     double telemetryRateHz = 0; // 0: every frame
     bool allowFull = false;     // Full mode over the network
+    bool fullTelemetry = false; // every packet in every telemetry message
 
     // One value and where it came from ("--rate", "r1.conf:4"), for errors.
     struct Setting {

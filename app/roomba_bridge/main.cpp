@@ -56,7 +56,8 @@ int main(int argc, char *argv[])
         {QStringLiteral("cafile"), QStringLiteral("TLS: the CA certificate (PEM) the broker's certificate is checked against."), QStringLiteral("FILE")},
         {QStringLiteral("certfile"), QStringLiteral("TLS: this bridge's certificate (PEM), with --keyfile."), QStringLiteral("FILE")},
         {QStringLiteral("keyfile"), QStringLiteral("TLS: this bridge's private key (PEM)."), QStringLiteral("FILE")},
-        {QStringLiteral("rate"), QStringLiteral("Telemetry messages per second (default 0: one per frame, about 66)."), QStringLiteral("HZ")},
+        {QStringLiteral("rate"), QStringLiteral("Telemetry messages per second, every packet in each (default 0: one per frame, about 66, with what changed)."), QStringLiteral("HZ")},
+        {QStringLiteral("full-telemetry"), QStringLiteral("Every packet in every telemetry message, not only what changed: about five times the bytes.")},
         {QStringLiteral("allow-full"), QStringLiteral("Let the client in control send full. The robot then ignores cliffs and wheel drops; the bridge stops it at the first one.")},
     });
     if (!parser.parse(QCoreApplication::arguments()))
@@ -83,7 +84,8 @@ int main(int argc, char *argv[])
     for (const QString &key : BridgeConfig::keys()) {
         if (key == QLatin1String("password") || !parser.isSet(key))
             continue; // a password on the command line would show in ps
-        const bool flag = key == QLatin1String("sim") || key == QLatin1String("allow-full");
+        const bool flag = key == QLatin1String("sim") || key == QLatin1String("allow-full")
+                          || key == QLatin1String("full-telemetry");
         settings.append({key, flag ? QStringLiteral("yes") : parser.value(key),
                          QStringLiteral("--%1").arg(key)});
     }
@@ -97,7 +99,7 @@ int main(int argc, char *argv[])
     mqtt::MqttClient broker(QStringLiteral("roomba-bridge-%1").arg(config->name));
     broker.setLastWill(RobotBridge::lastWill(config->name));
     SteadyLeaseClock clock;
-    RobotBridge bridge(robot, broker, clock, {config->name, config->telemetryRateHz, config->allowFull});
+    RobotBridge bridge(robot, broker, clock, {config->name, config->telemetryRateHz, config->fullTelemetry, config->allowFull});
 
     TerminationSignals termination;
     QObject::connect(&termination, &TerminationSignals::requested, &app, [&](int signalNumber) {

@@ -83,7 +83,7 @@ MotionCommand motionOf(oi::Command c, const QByteArray &bytes)
 
 RobotBridge::RobotBridge(RobotSession &robot, mqtt::MqttClient &broker, LeaseClock &clock, Options options,
                          QObject *parent)
-    : QObject(parent), m_robot(robot), m_broker(broker), m_lease(clock), m_options(std::move(options)),
+    : QObject(parent), m_robot(robot), m_broker(broker), m_clock(clock), m_lease(clock), m_options(std::move(options)),
       m_inbox(clock, m_options.name)
 {
     // Messages are sized on the network thread and timed as they arrive;
@@ -132,7 +132,7 @@ RobotBridge::RobotBridge(RobotSession &robot, mqtt::MqttClient &broker, LeaseClo
         connect(&m_telemetryTimer, &QTimer::timeout, this, [this] {
             // The latest value of every packet (distance and angle: the last frame's).
             if (m_frameWaiting)
-                publishTelemetry(m_robot.latest());
+                publishTelemetry(m_robot.latest(), true);
         });
     }
     m_statsTimer.setInterval(1000);
@@ -198,6 +198,8 @@ void RobotBridge::onBrokerConnected()
     qCInfo(lcBridge, "broker: connected to %s as %s", qPrintable(m_broker.address().displayUrl()),
            qPrintable(m_broker.clientId()));
     publishState(true);
+    // Watchers that came while we were away get every packet at once.
+    m_telemetryChanges.restart();
 }
 
 void RobotBridge::onBrokerLost(const QString &reason)
@@ -410,13 +412,23 @@ void RobotBridge::onFrame(const oi::SensorSnapshot &frame)
     publishState(); // mode and battery come with the frames
     m_frameWaiting = true;
     if (m_options.telemetryRateHz <= 0)
-        publishTelemetry(frame);
+        publishTelemetry(frame, m_options.fullTelemetry);
 }
 
-void RobotBridge::publishTelemetry(const oi::SensorSnapshot &frame)
+void RobotBridge::publishTelemetry(const oi::SensorSnapshot &frame, bool whole)
 {
     m_frameWaiting = false;
-    QJsonObject o = oilink::snapshotToJson(frame);
+    bool keyFrame = whole;
+    QJsonObject o;
+    if (whole) {
+        o = oilink::snapshotToJson(frame);
+    } else {
+        const auto changes = m_telemetryChanges.next(frame, m_clock.nowMs());
+        o = oilink::snapshotToJson(changes.packets);
+        keyFrame = changes.keyFrame;
+    }
+    if (keyFrame)
+        o.insert(QLatin1String("key_frame"), true);
     o.insert(QLatin1String("timestamp"), double(QDateTime::currentMSecsSinceEpoch()) / 1000.0);
     m_broker.publish(mqtt::topics::telemetry(m_options.name), compact(o));
 }

@@ -6,6 +6,7 @@
 #include "control_lease.h"
 #include "mqtt_client.h"
 #include "sensor_snapshot.h"
+#include "telemetry_changes.h"
 
 #include <QJsonObject>
 #include <QLoggingCategory>
@@ -28,6 +29,9 @@ public:
     struct Options {
         QString name;               // the robot's name in the topics
         double telemetryRateHz = 0; // 0: every frame
+        // Every packet in every message, as before the changes-only
+        // telemetry (docs/mqtt.md): about five times the bytes.
+        bool fullTelemetry = false;
         // Full mode over the network, where the robot itself ignores cliffs
         // and wheel drops: off unless the teacher allows it.
         bool allowFull = false;
@@ -76,11 +80,13 @@ private:
     void reply(const QString &client, QJsonObject answer);
     void replyControl(const QString &client, bool ok, const QString &error = {});
     void publishState(bool always = false);
-    void publishTelemetry(const oi::SensorSnapshot &frame);
+    // `whole`: every packet; otherwise what changed (TelemetryChanges).
+    void publishTelemetry(const oi::SensorSnapshot &frame, bool whole);
     void publishStats();
 
     RobotSession &m_robot;
     mqtt::MqttClient &m_broker;
+    LeaseClock &m_clock;
     ControlLease m_lease;
     Options m_options;
     BridgeInbox m_inbox;
@@ -89,6 +95,7 @@ private:
     bool m_autonomous = false;
     bool m_atEdge = false;
     QTimer m_telemetryTimer;
+    oilink::TelemetryChanges m_telemetryChanges;
     QTimer m_statsTimer;
     bool m_frameWaiting = false;
     bool m_shutDown = false;

@@ -84,8 +84,6 @@ const RemoteRobot *FleetDirectory::robot(const QString &name)
     const auto it = m_robots.find(name);
     if (it == m_robots.end())
         return nullptr;
-    if (!it->unreadTelemetry.isEmpty())
-        readTelemetry(name, *it, std::exchange(it->unreadTelemetry, QByteArray()));
     return &*it;
 }
 
@@ -110,12 +108,9 @@ void FleetDirectory::onMessage(const QString &topic, const QByteArray &payload)
         if (it == m_robots.end())
             return; // its state comes first (it is retained); until then it is nobody
         ++it->telemetryCount;
-        if (m_followers.contains(parsed->robot)) {
-            it->unreadTelemetry.clear();
-            readTelemetry(parsed->robot, *it, payload);
-        } else {
-            it->unreadTelemetry = payload;
-        }
+        // Each message carries what changed (docs/mqtt.md), so every one is
+        // read, followed or not.
+        readTelemetry(parsed->robot, *it, payload);
         return;
     }
     const auto doc = jsonObject(parsed->robot, topic.section(QLatin1Char('/'), 2, 2), payload);
@@ -196,9 +191,14 @@ void FleetDirectory::readTelemetry(const QString &name, RemoteRobot &robot, cons
         return;
     }
     m_reported.remove(name + QLatin1Char('/') + kind);
+    // A message tells what changed (docs/mqtt.md): the other packets keep
+    // their values, but distance and angle count since the last message.
     robot.latest.merge(*frame);
+    for (int sinceLastMessage : {19, 20})
+        if (robot.profile->packet(sinceLastMessage))
+            robot.latest.set(sinceLastMessage, frame->raw(sinceLastMessage));
     if (m_followers.contains(name))
-        emit telemetryReceived(name, *frame);
+        emit telemetryReceived(name, robot.latest);
 }
 
 void FleetDirectory::onStats(const QString &name, const QJsonObject &object)

@@ -50,13 +50,11 @@ public:
 
     // In the order they appeared.
     const QStringList &names() const { return m_names; }
-    // Reads its latest telemetry first, if it has not been read.
     const RemoteRobot *robot(const QString &name);
 
-    // A followed robot's telemetry is read as it comes, every message, and
-    // given to telemetryReceived(); the others' only when robot() is asked
-    // (a few times a second for the tiles), so thirty robots streaming cost
-    // little. A network transport follows its robot while it is open.
+    // Every robot's telemetry is read as it comes (each message carries what
+    // changed); a followed robot's is also given to telemetryReceived(). A
+    // network transport follows its robot while it is open.
     // Counted; thread-safe.
     void follow(const QString &name, bool on);
 
@@ -73,7 +71,9 @@ signals:
     // Its state or statistics changed (telemetry comes as telemetryReceived).
     void robotChanged(const QString &name);
     // Every telemetry message of a followed robot.
-    void telemetryReceived(const QString &name, const oi::SensorSnapshot &frame);
+    // `latest`: every packet told so far, with this message's distance and
+    // angle (0 when it told none).
+    void telemetryReceived(const QString &name, const oi::SensorSnapshot &latest);
     // The bridge's answer to a command or control message of this console.
     void replyReceived(const QString &name, const QJsonObject &reply);
     // Bad messages from the network (they change nothing), a broker that

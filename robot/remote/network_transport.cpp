@@ -245,7 +245,7 @@ void NetworkTransport::onTelemetry(const QString &robot, const oi::SensorSnapsho
 {
     if (robot != m_robot || !m_open)
         return;
-    m_latest.merge(frame);
+    m_latest = frame; // every packet told so far (FleetDirectory)
     if (!m_streaming || m_streamIds.empty())
         return;
     // [19][n][id][data]...[checksum], as the robot itself streams it.

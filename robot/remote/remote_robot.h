@@ -37,8 +37,7 @@ struct RemoteRobot {
     RemoteRobotState state;
     const oi::RobotProfile *profile = &oi::profile(oi::ProfileId::Create2);
     oi::SensorSnapshot latest{oi::profile(oi::ProfileId::Create2)};
-    quint64 telemetryCount = 0; // messages received, read or not
-    QByteArray unreadTelemetry; // the latest message, read when someone looks
+    quint64 telemetryCount = 0; // messages received
     oilink::LinkStats stats;
     bool hasStats = false;
 };

@@ -46,8 +46,9 @@ struct BridgeRig {
     RobotBridge bridge;
 
     BridgeRig(const QString &name, const mqtt::BrokerAddress &broker, Robot robot = Robot::Recording,
-              bool allowFull = false)
-        : client(QStringLiteral("bridge-%1").arg(name)), bridge(session, client, clock, {name, 0, allowFull})
+              bool allowFull = false, bool fullTelemetry = false)
+        : client(QStringLiteral("bridge-%1").arg(name)),
+          bridge(session, client, clock, {name, 0, fullTelemetry, allowFull})
     {
         recording.mode = int(oi::OiMode::Safe);
         if (robot == Robot::Recording) {

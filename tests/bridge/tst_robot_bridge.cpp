@@ -37,13 +37,13 @@ private slots:
         QLoggingCategory::setFilterRules(QStringLiteral("roomba.bridge.info=false"));
     }
 
-    void telemetryCarriesEveryPacketAsTheRobotSentIt()
+    void fullTelemetryCarriesEveryPacketAsTheRobotSentIt()
     {
         MosquittoBroker broker;
         QVERIFY2(broker.start(), qPrintable(broker.error()));
         // Before the rig: the session may deliver a last frame while it closes.
         QList<QJsonObject> frames;
-        BridgeRig rig(QStringLiteral("r1"), addressOf(broker), BridgeRig::Robot::Virtual);
+        BridgeRig rig(QStringLiteral("r1"), addressOf(broker), BridgeRig::Robot::Virtual, false, true);
         connect(&rig.session, &RobotSession::frameReceived, &rig.session,
                 [&](double, const oi::SensorSnapshot &f) { frames << oilink::snapshotToJson(f); });
         ConsoleClient watcher(QStringLiteral("watcher"), addressOf(broker), {topics::telemetry(QStringLiteral("r1"))});
@@ -54,7 +54,9 @@ private slots:
         int matched = 0;
         for (QJsonObject t : telemetry) {
             QVERIFY(t.value(QLatin1String("timestamp")).toDouble() > 1.7e9);
+            QCOMPARE(t.value(QLatin1String("key_frame")).toBool(), true);
             t.remove(QLatin1String("timestamp"));
+            t.remove(QLatin1String("key_frame"));
             // Every packet the link streams, each under its decode key.
             QCOMPARE(t.keys(), frames.last().keys());
             matched += frames.contains(t);
@@ -71,6 +73,38 @@ private slots:
         QCOMPARE(state.value(QLatin1String("mode")).toString(), QStringLiteral("passive"));
         QVERIFY(state.value(QLatin1String("controller")).isNull());
         QVERIFY(state.value(QLatin1String("battery_percent")).toDouble() > 0);
+    }
+
+    // By default each message tells what changed, every packet once a second.
+    void telemetryTellsWhatChangedAndEveryPacketEachSecond()
+    {
+        MosquittoBroker broker;
+        QVERIFY2(broker.start(), qPrintable(broker.error()));
+        QList<QJsonObject> frames;
+        BridgeRig rig(QStringLiteral("r1"), addressOf(broker), BridgeRig::Robot::Virtual);
+        connect(&rig.session, &RobotSession::frameReceived, &rig.session,
+                [&](double, const oi::SensorSnapshot &f) { frames << oilink::snapshotToJson(f); });
+        const QString topic = topics::telemetry(QStringLiteral("r1"));
+        ConsoleClient watcher(QStringLiteral("watcher"), addressOf(broker), {topic});
+        QVERIFY(watcher.waitForState(QStringLiteral("r1"), true));
+        QTRY_VERIFY_WITH_TIMEOUT(watcher.on(topic).size() >= 5, 10000);
+        // The rig's clock stands still: no key frame, nothing that did not change.
+        for (const QJsonObject &t : watcher.on(topic).mid(1)) {
+            QVERIFY(t.value(QLatin1String("timestamp")).toDouble() > 1.7e9); // each frame is seen
+            QVERIFY(!t.contains(QLatin1String("key_frame")));
+            QVERIFY2(t.size() < 10, qPrintable(QJsonDocument(t).toJson(QJsonDocument::Compact)));
+        }
+
+        const qsizetype seen = watcher.on(topic).size();
+        rig.clock.advance(oilink::TelemetryChanges::kKeyFrameMs);
+        QTRY_VERIFY_WITH_TIMEOUT(watcher.on(topic).size() > seen, 5000);
+        QJsonObject key = watcher.on(topic).at(seen);
+        QCOMPARE(key.value(QLatin1String("key_frame")).toBool(), true);
+        key.remove(QLatin1String("key_frame"));
+        key.remove(QLatin1String("timestamp"));
+        // Every packet, value for value a frame the robot sent.
+        QCOMPARE(key.keys(), frames.last().keys());
+        QVERIFY(frames.contains(key));
     }
 
     void badCommandsGetAnErrorAndReachTheRobotAsNothing()

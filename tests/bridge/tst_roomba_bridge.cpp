@@ -56,6 +56,8 @@ private slots:
                                                  << "--username: username: 'bridge+' is not an account name";
         QTest::newRow("bad allow-full") << QStringList{} << QByteArray("name = r1\nsim = yes\nallow-full = maybe\n")
                                         << "bad.conf:3: allow-full: 'maybe' is not yes or no";
+        QTest::newRow("bad full-telemetry") << QStringList{} << QByteArray("name = r1\nsim = yes\nfull-telemetry = all\n")
+                                            << "bad.conf:3: full-telemetry: 'all' is not yes or no";
         QTest::newRow("no name") << QStringList{"--sim"} << QByteArray() << "--name NAME";
         QTest::newRow("no robot") << QStringList{"--name", "r1"} << QByteArray() << "--sim, --port PATH or --tcp HOST:PORT";
         QTest::newRow("two robots") << QStringList{"--name", "r1", "--port", "/dev/ttyUSB0"} << QByteArray("sim = yes\n")

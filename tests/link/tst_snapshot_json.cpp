@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Snapshots to JSON and back: every packet key, raw values, and a clear
-// error for a value the packet cannot carry.
+// error for a value the packet cannot carry. And the telemetry that tells
+// only what changed: nothing lost, odometry adds up.
 
 #include "snapshot_json.h"
+#include "telemetry_changes.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -103,6 +105,112 @@ private slots:
         QVERIFY(snapshotFromJson(QJsonObject{{"current", -32768}}, *p, &error));
         QVERIFY(!snapshotFromJson(QJsonObject{{"current", -32769}}, *p, &error));
         QVERIFY(error.contains(QStringLiteral("-32768")));
+    }
+
+    // Frames 15 ms apart, as the robot streams them.
+    static oi::SensorSnapshot frameWith(int bumps, int voltage, int distance)
+    {
+        oi::SensorSnapshot f(oi::profile(oi::ProfileId::Create2));
+        for (const oi::PacketInfo &info : f.robotProfile().packets())
+            f.set(info.id, 0);
+        f.set(7, bumps);
+        f.set(22, voltage);
+        f.set(19, distance);
+        f.set(35, int(oi::OiMode::Safe));
+        return f;
+    }
+
+    void aKeyFrameCarriesEveryPacketEverySecond()
+    {
+        TelemetryChanges changes;
+        int keyFrames = 0;
+        for (qint64 t = 0; t <= 3000; t += 15) {
+            const auto m = changes.next(frameWith(0, 15000, 0), t);
+            if (m.keyFrame) {
+                ++keyFrames;
+                QCOMPARE(m.packets.packetCount(), frameWith(0, 15000, 0).packetCount());
+            } else {
+                QCOMPARE(m.packets.packetCount(), 0); // nothing changed: the time alone
+            }
+        }
+        QCOMPARE(keyFrames, 3); // at 0, 1005 and 2010 ms: 1000 ms or more apart
+        changes.restart();
+        QVERIFY(changes.next(frameWith(0, 15000, 0), 3015).keyFrame);
+    }
+
+    void aBumpOfOneFrameIsToldAndSoIsItsRelease()
+    {
+        TelemetryChanges changes;
+        changes.next(frameWith(0, 15000, 0), 0);
+        QList<int> told;
+        const int bumps[] = {0, 0, 1, 0, 0, 2, 2, 0};
+        qint64 t = 15;
+        for (int b : bumps) {
+            const auto m = changes.next(frameWith(b, 15000, 0), t += 15);
+            if (m.packets.has(7))
+                told << m.packets.raw(7);
+        }
+        QCOMPARE(told, (QList<int>{1, 0, 2, 0}));
+    }
+
+    void aMeasurementIsToldAtMostTenTimesASecondAndCatchesUp()
+    {
+        TelemetryChanges changes;
+        changes.next(frameWith(0, 15000, 0), 0);
+        int told = 0, last = 0;
+        qint64 t = 0;
+        for (int i = 1; i < 60; ++i) { // 885 ms of a voltage that changes every frame
+            const auto m = changes.next(frameWith(0, 15000 + i, 0), t += 15);
+            if (m.packets.has(22)) {
+                ++told;
+                last = m.packets.raw(22);
+            }
+        }
+        QVERIFY2(told >= 8 && told <= 9, qPrintable(QString::number(told)));
+        // Then it stops changing: its last value is told within 100 ms.
+        for (int i = 0; i < 7; ++i) {
+            const auto m = changes.next(frameWith(0, 15100, 0), t += 15);
+            if (m.packets.has(22))
+                last = m.packets.raw(22);
+        }
+        QCOMPARE(last, 15100);
+    }
+
+    void distanceAddsUpOverTheMessages()
+    {
+        TelemetryChanges changes;
+        int driven = 0, told = 0;
+        qint64 t = 0;
+        for (int i = 0; i < 200; ++i) {
+            const int d = (i * 7) % 11 - 3; // forward and back, some frames none
+            driven += d;
+            const auto m = changes.next(frameWith(0, 15000, d), t += 15);
+            told += m.packets.raw(19);
+            if (!m.keyFrame)
+                QVERIFY(!m.packets.has(19) || m.packets.raw(19) != 0);
+        }
+        // A key frame tells what is left.
+        changes.restart();
+        told += changes.next(frameWith(0, 15000, 0), t += 15).packets.raw(19);
+        QCOMPARE(told, driven);
+    }
+
+    // What a watcher that merges the messages knows equals the robot's
+    // frame in every one-byte packet at every message.
+    void aWatcherKnowsEveryEventAsItHappens()
+    {
+        TelemetryChanges changes;
+        oi::SensorSnapshot known(oi::profile(oi::ProfileId::Create2));
+        qint64 t = 0;
+        for (int i = 0; i < 300; ++i) {
+            oi::SensorSnapshot f = frameWith((i / 3) % 4, 14000 + i % 17, i % 5);
+            f.set(17, 160 + (i / 7) % 3); // an IR character
+            f.set(35, (i / 50) % 4);      // the mode
+            known.merge(changes.next(f, t += 15).packets);
+            for (const oi::PacketInfo &info : f.robotProfile().packets())
+                if (info.bytes == 1)
+                    QCOMPARE(known.raw(info.id), f.raw(info.id));
+        }
     }
 
     void statisticsRoundTrip()

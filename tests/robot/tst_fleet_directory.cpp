@@ -111,6 +111,43 @@ private slots:
         QCOMPARE(directory.names(), QStringList({"r1", "r2"}));
     }
 
+    // Messages tell what changed: the other packets hold, distance and
+    // angle count since the last message, followed or not.
+    void messagesThatTellWhatChangedAddUp()
+    {
+        MosquittoBroker broker;
+        QVERIFY2(broker.start(), qPrintable(broker.error()));
+        FakeBridge bridge(QStringLiteral("r1"));
+        QVERIFY(bridge.start(broker.port()));
+        bridge.publishState();
+        FleetDirectory directory;
+        QSignalSpy appeared(&directory, &FleetDirectory::robotAppeared);
+        QSignalSpy frames(&directory, &FleetDirectory::telemetryReceived);
+        QVERIFY(directory.connectToBroker(addressOf(broker)));
+        QTRY_COMPARE_WITH_TIMEOUT(appeared.count(), 1, 5000);
+        bridge.publishRaw(mqtt::topics::telemetry("r1"), R"({"key_frame": true, "bumps_wheel_drops": 1, "voltage": 15000, "distance": 4})");
+        bridge.publishRaw(mqtt::topics::telemetry("r1"), R"({"voltage": 14990})");
+        QTRY_VERIFY_WITH_TIMEOUT(directory.robot("r1")->latest.raw(22) == 14990, 5000);
+        // Not followed, yet read: the bump told in the first message holds.
+        QCOMPARE(directory.robot("r1")->latest.raw(7), 1);
+        QCOMPARE(frames.count(), 0);
+
+        directory.follow("r1", true);
+        bridge.publishRaw(mqtt::topics::telemetry("r1"), R"({"distance": 7, "angle": -2})");
+        bridge.publishRaw(mqtt::topics::telemetry("r1"), R"({"bumps_wheel_drops": 0})");
+        QTRY_COMPARE_WITH_TIMEOUT(frames.count(), 2, 5000);
+        const auto first = frames[0][1].value<oi::SensorSnapshot>();
+        const auto second = frames[1][1].value<oi::SensorSnapshot>();
+        QCOMPARE(first.raw(19), 7);
+        QCOMPARE(first.raw(20), -2);
+        QCOMPARE(first.raw(7), 1);
+        QCOMPARE(first.raw(22), 14990);
+        QCOMPARE(second.raw(19), 0); // told once, not again
+        QCOMPARE(second.raw(20), 0);
+        QCOMPARE(second.raw(7), 0);
+        QCOMPARE(second.raw(22), 14990);
+    }
+
     void badJsonChangesNothing()
     {
         MosquittoBroker broker;

@@ -262,6 +262,13 @@ void LessonPanel::refresh()
         return;
     const bool live = m_robot && m_robot->isLive();
     m_view->refresh(m_robot ? m_robot->latest() : oi::SensorSnapshot(), !live, &m_runner);
+    // A goal the robot's state now rules out says so, and what to do.
+    QString outOfReach;
+    if (m_robot && !m_runner.isFinished() && m_runner.progress() < 1) {
+        const LessonGoal &goal = m_runner.lesson().steps[m_runner.currentStep()].goal;
+        outOfReach = m_robot->mode().outOfReach(lesson::goalPackets(goal), lesson::goalDrives(goal));
+    }
+    m_view->setOutOfReach(outOfReach);
 }
 
 void LessonPanel::showError(const QString &message)

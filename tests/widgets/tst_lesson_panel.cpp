@@ -96,6 +96,29 @@ private slots:
             QVERIFY(panel.stepList()->item(i)->text().startsWith(QStringLiteral("✔")));
     }
 
+    // The step list wraps each step's first sentence whole, never cuts it.
+    void stepListShowsWholeSentences()
+    {
+        LessonPanel panel;
+        panel.resize(700, 500);
+        panel.show();
+        QVERIFY(panel.openLesson(QStringLiteral(":/lessons/cliff_sensors.json")));
+        QVERIFY(panel.stepList()->item(0)->text().endsWith(
+            QStringLiteral("1. Under the front of the robot, four cliff sensors shine infrared light at the floor "
+                           "and measure how much comes back")));
+        QCoreApplication::processEvents();
+        const QListWidget *list = panel.stepList();
+        for (int i = 0; i < list->count(); ++i) {
+            const QListWidgetItem *item = list->item(i);
+            QVERIFY(!item->text().contains(QStringLiteral("…")));
+            // Tall enough for every wrapped line.
+            const QRect rect = list->visualItemRect(item);
+            const QRect needed = list->fontMetrics().boundingRect(QRect(0, 0, rect.width(), 10000),
+                                                                  Qt::TextWordWrap, item->text());
+            QVERIFY2(rect.height() >= needed.height(), qPrintable(item->text()));
+        }
+    }
+
     void badLessonFileLeavesThePanelAsItWas()
     {
         RobotSession robot;

@@ -20,13 +20,11 @@
 
 namespace {
 
-// A step in the list: its number and the first sentence of its text.
+// A step in the list: its number and the first sentence of its text, whole
+// (the list wraps it rather than cut it).
 QString stepCaption(int index, const QString &text)
 {
-    QString first = text.section(QLatin1Char('.'), 0, 0);
-    if (first.size() > 60)
-        first = first.left(57) + QStringLiteral("…");
-    return QStringLiteral("%1. %2").arg(index + 1).arg(first);
+    return QStringLiteral("%1. %2").arg(index + 1).arg(text.section(QLatin1Char('.'), 0, 0));
 }
 
 } // namespace
@@ -54,6 +52,8 @@ LessonPanel::LessonPanel(QWidget *parent) : QWidget(parent)
     m_steps = new QListWidget(this);
     m_steps->setObjectName("lessonSteps");
     m_steps->setWordWrap(true);
+    m_steps->setTextElideMode(Qt::ElideNone);
+    m_steps->setResizeMode(QListView::Adjust); // wrapped again at every width
     m_steps->setMinimumHeight(fontMetrics().height() * 4);
     m_view = new LessonStepView(this);
     // In a short dock the step scrolls rather than making the window taller.

@@ -191,6 +191,8 @@ void MainWindow::onRobotAdded(RobotSession *robot)
     if (m_historyCapacity)
         robot->setHistoryCapacity(*m_historyCapacity);
     connect(robot, &RobotSession::identifiedChanged, m_robotBar, &RobotBar::refresh);
+    // A card shows the mode the moment it changes, as the docks do.
+    connect(robot, &RobotSession::modeChanged, m_robotBar, &RobotBar::refresh);
     connect(robot, &RobotSession::identityChanged, this, [this, robot] {
         m_robotBar->refresh();
         if (robot == m_fleet.selected())

@@ -402,6 +402,9 @@ private slots:
         QVERIFY(window.drivePad()->findChild<QPushButton *>("enterSafe")->isVisibleTo(window.drivePad()));
         QCOMPARE(window.projectorView()->reasonText(), why);
         QVERIFY(window.projectorView()->headerText().contains("Passive"));
+        // Each robot's card, its own mode.
+        QCOMPARE(window.robotList()->card(0)->values().mode, QString("Passive"));
+        QCOMPARE(window.robotList()->card(1)->values().mode, QString("Safe"));
 
         // Robot 2 shows its own: Safe, nothing to explain.
         show(two);

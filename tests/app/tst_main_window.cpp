@@ -296,6 +296,11 @@ private slots:
         QVERIFY(s.cliff(oi::CliffSensor::FrontLeft) || s.cliff(oi::CliffSensor::FrontRight)
                 || s.cliff(oi::CliffSensor::Left) || s.cliff(oi::CliffSensor::Right));
         QVERIFY(window.grab().save(QDir(dir).filePath("dashboard_cliff.png")));
+        // The projector view says it too, with Enter Safe.
+        window.setProjectorView(true);
+        QTRY_VERIFY_WITH_TIMEOUT((window.refreshDisplay(), window.projectorView()->reasonText().contains("cliff")), 5000);
+        QVERIFY(window.grab().save(QDir(dir).filePath("projector_cliff.png")));
+        window.setProjectorView(false);
 
         // The map shows the virtual robot's true pose beside the odometry.
         window.findChild<QDockWidget *>("mapDock")->raise();

@@ -2,6 +2,7 @@
 #include "drive_pad.h"
 
 #include "command_encoder.h"
+#include "display_palette.h"
 
 #include <QComboBox>
 #include <QEvent>
@@ -285,6 +286,10 @@ void DrivePad::setReason(const QString &reason)
     if (text == m_passiveLabel->text())
         return;
     m_passiveLabel->setText(text);
+    // A reason is an alert, as in the Modes dock; the plain hint is not.
+    m_passiveLabel->setStyleSheet(reason.isEmpty() ? QString()
+                                                   : QString("QLabel { color: %1; font-weight: bold; }")
+                                                         .arg(display::stateColor(display::State::Alert, palette()).name()));
     updateAccessibleDescription();
 }
 

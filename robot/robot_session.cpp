@@ -155,6 +155,8 @@ QString RobotSession::readFirmwareVersion()
 
 bool RobotSession::requestMode(oi::Command command, int demo)
 {
+    if (isReplay())
+        return false; // a recording has no robot to command
     const oi::CommandEncoder encoder(*m_profile);
     const oi::EncodeResult bytes = command == oi::Command::Demo
                                        ? encoder.demo(demo)

@@ -60,7 +60,8 @@ public:
     // Sends a mode or cleaning command (Start, Safe, Full, Stop, Clean, Demo
     // with `demo` as its number, ...) and remembers it was asked, so mode()
     // can tell a drop the user asked for from one the robot made itself.
-    // Returns false (and sends nothing) without a link or on a profile that lacks it.
+    // Returns false (and sends nothing) without a link, in a replay, or on a
+    // profile that lacks it.
     bool requestMode(oi::Command command, int demo = 0);
     // The mode as the user sees it: asked, reported, and why it changed.
     const RobotMode &mode() const override { return m_mode; }

@@ -198,13 +198,14 @@ void SelectedRobotView::showMode()
     v.modePanel->setMode(mode);
     const QString reason = mode.reason();
     v.drivePad->setReason(reason.isEmpty() ? QString() : reason + ' ' + mode.nextStep());
-    v.projector->setMode(mode);
+    v.projector->setMode(mode, whyNoCommands(session()).isEmpty());
     v.songs->setPlayBlocked(mode.whyNot(oi::Command::Play));
 }
 
 void SelectedRobotView::showState(oilink::LinkState state)
 {
     m_views.status->showState(state);
+    showMode(); // whether Enter Safe can reach the robot
     // An error from a fault is over once the robot streams again.
     if (state == oilink::LinkState::Streaming)
         m_views.connectionBar->clearError();

@@ -579,7 +579,11 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(window.session().snapshotCount() > 5, 10000);
         window.refreshDisplay();
         QVERIFY2(window.statusText().contains("REPLAY"), qPrintable(window.statusText()));
-        // A replay has no robot to command: the mode buttons say so.
+        // A replay has no robot to command: the mode buttons say so, the
+        // projector view offers no Enter Safe, and none is sent.
+        QCOMPARE(window.session().mode().reported(), std::optional(oi::OiMode::Passive));
+        QVERIFY(!window.projectorView()->enterSafeButton()->isVisibleTo(window.projectorView()));
+        QVERIFY(!window.session().requestMode(oi::Command::Safe));
         QVERIFY(!window.modePanel()->button("safe")->isEnabled());
         QVERIFY2(window.modePanel()->button("safe")->toolTip().contains("recording"),
                  qPrintable(window.modePanel()->button("safe")->toolTip()));

@@ -161,10 +161,10 @@ void ProjectorView::showHeader()
 QString ProjectorView::headerText() const { return m_header->text(); }
 QString ProjectorView::reasonText() const { return m_reasonRow->isHidden() ? QString() : m_reasonLabel->text(); }
 
-void ProjectorView::setMode(const RobotMode &mode)
+void ProjectorView::setMode(const RobotMode &mode, bool canCommand)
 {
     m_modeName = mode.reported() ? oitext::modeName(*mode.reported()) : QString();
-    m_offersSafe = mode.ignoresMotion();
+    m_offersSafe = mode.ignoresMotion() && canCommand;
     const QString reason = mode.reason();
     m_reason = (reason.isEmpty() ? QString() : reason + ' ') + mode.nextStep();
     showHeader();

@@ -31,8 +31,10 @@ public:
     // From the display timer.
     void refresh(const oi::SensorSnapshot &latest, bool live);
     // The selected robot's mode, from its session: the header names it, and
-    // a line below says why it changed with an Enter Safe button (Enter key).
-    void setMode(const RobotMode &mode);
+    // a line below says why it changed with an Enter Safe button (Enter key),
+    // offered only while a command can reach the robot (`canCommand`: not a
+    // replay, a link up) and its data is live.
+    void setMode(const RobotMode &mode, bool canCommand = true);
 
     QString headerText() const;
     QString reasonText() const;

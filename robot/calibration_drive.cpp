@@ -62,7 +62,7 @@ bool CalibrationDrive::start(oi::EncoderRun::Kind kind, double target, std::opti
     m_frames = 0;
     m_phase = Phase::EnteringSafe;
     if (!drivesInMode(m_robot.latest().oiMode()))
-        m_robot.teleop().enterSafe();
+        m_robot.requestMode(oi::Command::Safe);
     return true;
 }
 

@@ -2,19 +2,22 @@
 #pragma once
 
 #include "link_status.h"
+#include "robot_mode.h"
 #include "robot_profile.h"
 #include "sensor_snapshot.h"
 
 #include <QByteArray>
 
 // What the motion sending rules (TeleopController) see of the robot they
-// drive: its profile, its latest frame, its link's state, and a way to send.
+// drive: its profile, its latest frame, its mode, its link's state, and a way to send.
 // The robot's model (RobotSession) owns the rules and is this target; the
 // rules know nothing else of it, and it tells them when the link changes.
 class DriveTarget {
 public:
     virtual const oi::RobotProfile &robotProfile() const = 0;
     virtual const oi::SensorSnapshot &latest() const = 0;
+    // The mode as the user sees it: the one place Safe dropping to Passive is read.
+    virtual const RobotMode &mode() const = 0;
     virtual oilink::LinkState state() const = 0;
     // Already-encoded, validated bytes; false (and nothing sent) without a link.
     virtual bool send(const QByteArray &bytes) = 0;

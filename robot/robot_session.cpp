@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "robot_session.h"
 
+#include "command_catalog.h"
 #include "command_encoder.h"
 
 #include <QDateTime>
@@ -78,6 +79,8 @@ void RobotSession::connectTo(const oilink::LinkSettings &settings)
     m_replay = {};
     m_latest = oi::SensorSnapshot(*m_profile);
     m_snapshotCount = 0;
+    m_mode.clear();
+    emit modeChanged();
     resetHistory();
     setProfileAssumed(false);
     m_link.open(settings);
@@ -148,6 +151,21 @@ QString RobotSession::readFirmwareVersion()
     m_firmware.expectBanner();
     send(QByteArray(reinterpret_cast<const char *>(reset->data()), qsizetype(reset->size())));
     return {};
+}
+
+bool RobotSession::requestMode(oi::Command command, int demo)
+{
+    if (isReplay())
+        return false; // a recording has no robot to command
+    const oi::CommandEncoder encoder(*m_profile);
+    const oi::EncodeResult bytes = command == oi::Command::Demo
+                                       ? encoder.demo(demo)
+                                       : oi::encodeCommand(encoder, oi::commandSpec(command).name, {});
+    if (!bytes || !send(QByteArray(reinterpret_cast<const char *>(bytes->data()), qsizetype(bytes->size()))))
+        return false;
+    m_mode.asked(command, QDateTime::currentDateTime());
+    emit modeChanged();
+    return true;
 }
 
 bool RobotSession::send(const QByteArray &bytes)
@@ -227,8 +245,13 @@ void RobotSession::onSnapshot(const oi::SensorSnapshot &snapshot, double readSec
     // Every frame once: distance and angle are increments since the last one.
     m_history.append(readSeconds, frame);
     m_odometry.update(snapshot);
+    // The time of day the frame was read, for "dropped it to Passive at 12:03:04".
+    const bool modeChange = m_mode.observe(frame, QDateTime::fromMSecsSinceEpoch(
+                                                      m_connectedAtMs + qint64(readSeconds * 1000)));
     // Safe dropping to Passive by itself (a cliff, a wheel drop) ends the motion.
     m_teleop.checkMode();
+    if (modeChange)
+        emit modeChanged();
     emit frameReceived(readSeconds, frame);
 }
 

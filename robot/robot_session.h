@@ -5,6 +5,7 @@
 #include "recent_bytes.h"
 #include "robot_firmware.h"
 #include "robot_link_thread.h"
+#include "robot_mode.h"
 #include "robot_odometry.h"
 #include "sensor_history.h"
 #include "sensor_snapshot.h"
@@ -56,6 +57,14 @@ public:
     // Sends already-encoded, validated bytes while the link is up. Returns false
     // (and sends nothing) when there is no link.
     bool send(const QByteArray &bytes) override;
+    // Sends a mode or cleaning command (Start, Safe, Full, Stop, Clean, Demo
+    // with `demo` as its number, ...) and remembers it was asked, so mode()
+    // can tell a drop the user asked for from one the robot made itself.
+    // Returns false (and sends nothing) without a link, in a replay, or on a
+    // profile that lacks it.
+    bool requestMode(oi::Command command, int demo = 0);
+    // The mode as the user sees it: asked, reported, and why it changed.
+    const RobotMode &mode() const override { return m_mode; }
     // Requests whose replies carry no framing go through the link's queue,
     // which pauses and resumes its own stream around them: Sensors (142) or
     // Query List (149), answered by sensorReply(); Show Script (154),
@@ -124,6 +133,8 @@ public:
 
 signals:
     void identityChanged();
+    // mode() changed: what the robot reports, or why.
+    void modeChanged();
     // Every stream frame once, with the time the link read it, corrected.
     void frameReceived(double readSeconds, const oi::SensorSnapshot &frame);
     void stateChanged(oilink::LinkState state);
@@ -174,6 +185,7 @@ private:
     oilink::RecordingStatus m_recording;
     oilink::ReplayStatus m_replay; // the last word from a replay
     RobotFirmware m_firmware;
+    RobotMode m_mode;
     SensorHistory m_history;
     RecentBytes m_recentBytes;
     RobotOdometry m_odometry;

@@ -27,8 +27,9 @@ bool TeleopController::isMoving() const
 
 bool TeleopController::robotIgnoresMotion() const
 {
-    const oi::OiMode mode = m_robot.latest().oiMode();
-    return mode == oi::OiMode::Passive || mode == oi::OiMode::Off;
+    // A mode not reported yet counts as Off: nothing moves before the robot says it may.
+    const RobotMode &mode = m_robot.mode();
+    return !mode.reported() || mode.ignoresMotion();
 }
 
 void TeleopController::requestMotion(const MotionCommand &command)
@@ -121,13 +122,6 @@ void TeleopController::stopBeforeQuit()
     // The session's shutdown sequence stops the robot too; this covers a
     // command still waiting on the timer.
     sendStop(false);
-}
-
-void TeleopController::enterSafe()
-{
-    const oi::EncodeResult safe = oi::CommandEncoder(m_robot.robotProfile()).safe();
-    if (safe)
-        m_robot.send(toBytes(*safe));
 }
 
 void TeleopController::checkMode()

@@ -46,9 +46,7 @@ public slots:
     void stopAll();
     // Before the session closes: stop, then the session's own shutdown.
     void stopBeforeQuit();
-    void enterSafe();
-    // Reads the robot's mode from the session's latest snapshot; the
-    // display timer calls it. Safe mode dropping to Passive by itself (a
+    // Reads the robot's mode from the session (DriveTarget::mode()). Safe mode dropping to Passive by itself (a
     // cliff, a wheel drop) ends the motion.
     void checkMode();
     // The robot's link changed state (its owner says so, before anyone else

@@ -1391,6 +1391,10 @@ Click to select this robot: every dock shows it</source>
         <translation>%1
 Klicken wählt diesen Roboter: jedes Dock zeigt ihn</translation>
     </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
 </context>
 <context>
     <name>FleetView</name>
@@ -2329,6 +2333,14 @@ Klicken wählt diesen Roboter: jedes Dock zeigt ihn</translation>
         <source>Turned, true</source>
         <translation>Gedreht, wirklich</translation>
     </message>
+    <message>
+        <source>%p %</source>
+        <translation>%p %</translation>
+    </message>
+    <message>
+        <source>Done · next in %1 s</source>
+        <translation>Erfüllt · weiter in %1 s</translation>
+    </message>
 </context>
 <context>
     <name>LinkSettings</name>
@@ -2498,26 +2510,6 @@ GPL-3.0-or-later.</translation>
         <translation>Full</translation>
     </message>
     <message>
-        <source>cliff</source>
-        <translation>Abgrund</translation>
-    </message>
-    <message>
-        <source>wheel drop</source>
-        <translation>Radabsenkung</translation>
-    </message>
-    <message>
-        <source>charger</source>
-        <translation>Ladegerät</translation>
-    </message>
-    <message>
-        <source>a safety condition</source>
-        <translation>eine Sicherheitsbedingung</translation>
-    </message>
-    <message>
-        <source>, </source>
-        <translation>, </translation>
-    </message>
-    <message>
         <source>Enter Full mode?</source>
         <translation>In den Modus Full wechseln?</translation>
     </message>
@@ -2588,10 +2580,6 @@ GPL-3.0-or-later.</translation>
     <message>
         <source>Mode: unknown</source>
         <translation>Modus: unbekannt</translation>
-    </message>
-    <message>
-        <source>The robot left Safe mode by itself (%1) and is in Passive mode.</source>
-        <translation>Der Roboter hat den Modus Safe von selbst verlassen (%1) und ist jetzt im Modus Passive.</translation>
     </message>
     <message>
         <source>Firmware: %1</source>
@@ -3251,6 +3239,10 @@ GPL-3.0-or-later.</translation>
         <source>Projector view</source>
         <translation>Projektoransicht</translation>
     </message>
+    <message>
+        <source>Enter Safe (Enter)</source>
+        <translation>Safe aktivieren (Eingabe)</translation>
+    </message>
 </context>
 <context>
     <name>Recording</name>
@@ -3744,6 +3736,105 @@ Doppelklick zum Umbenennen</translation>
     <message>
         <source>Robot name</source>
         <translation>Name des Roboters</translation>
+    </message>
+</context>
+<context>
+    <name>RobotMode</name>
+    <message>
+        <source>left</source>
+        <translation>links</translation>
+    </message>
+    <message>
+        <source>front left</source>
+        <translation>vorne links</translation>
+    </message>
+    <message>
+        <source>front right</source>
+        <translation>vorne rechts</translation>
+    </message>
+    <message>
+        <source>right</source>
+        <translation>rechts</translation>
+    </message>
+    <message>
+        <source>cliff (%1)</source>
+        <translation>Abgrund (%1)</translation>
+    </message>
+    <message>
+        <source>, </source>
+        <translation>, </translation>
+    </message>
+    <message>
+        <source>caster</source>
+        <translation>Stützrad</translation>
+    </message>
+    <message>
+        <source>wheel drop (%1)</source>
+        <translation>Rad abgesenkt (%1)</translation>
+    </message>
+    <message>
+        <source>charger</source>
+        <translation>Ladegerät</translation>
+    </message>
+    <message>
+        <source> and </source>
+        <translation> und </translation>
+    </message>
+    <message>
+        <source>You asked for Passive at %1.</source>
+        <translation>Um %1 auf Ihren Wunsch in Passive gewechselt.</translation>
+    </message>
+    <message>
+        <source>A safety stop dropped it to Passive at %1.</source>
+        <translation>Um %1 durch einen Sicherheitsstopp in Passive gefallen.</translation>
+    </message>
+    <message>
+        <source>A %1 dropped it to Passive at %2.</source>
+        <translation>Um %2 in Passive gefallen: %1.</translation>
+    </message>
+    <message>
+        <source>asked for</source>
+        <translation>gewünscht</translation>
+    </message>
+    <message>
+        <source>safety stop</source>
+        <translation>Sicherheitsstopp</translation>
+    </message>
+    <message>
+        <source>Carry it back from the edge, then Enter Safe.</source>
+        <translation>Tragen Sie ihn von der Kante weg, dann Safe aktivieren.</translation>
+    </message>
+    <message>
+        <source>Put it back on its wheels, then Enter Safe.</source>
+        <translation>Stellen Sie ihn wieder auf die Räder, dann Safe aktivieren.</translation>
+    </message>
+    <message>
+        <source>Take it off the charger, then Enter Safe.</source>
+        <translation>Nehmen Sie ihn vom Ladegerät, dann Safe aktivieren.</translation>
+    </message>
+    <message>
+        <source>Enter Safe to drive.</source>
+        <translation>Zum Fahren Safe aktivieren.</translation>
+    </message>
+    <message>
+        <source>%1 needs Safe or Full mode: in Passive the Create ignores the script&apos;s Drive, so a wait never ends. Enter Safe first.</source>
+        <translation>%1 braucht den Modus Safe oder Full: in Passive überhört der Create das Drive des Skripts, sodass ein Warten nie endet. Zuerst Safe aktivieren.</translation>
+    </message>
+    <message>
+        <source>%1 needs Safe or Full mode: the robot ignores it in Passive. Enter Safe first.</source>
+        <translation>%1 braucht den Modus Safe oder Full: in Passive überhört der Roboter den Befehl. Zuerst Safe aktivieren.</translation>
+    </message>
+    <message>
+        <source>Out of reach: %1 The goal needs the %2 cliff sensor to reach the edge first. Carry the robot back from the edge, Enter Safe, and drive at the edge head on.</source>
+        <translation>Nicht erreichbar: %1 Für das Ziel muss zuerst der Abgrundsensor %2 die Kante erreichen. Tragen Sie den Roboter von der Kante weg, aktivieren Sie Safe und fahren Sie gerade auf die Kante zu.</translation>
+    </message>
+    <message>
+        <source> or </source>
+        <translation> oder </translation>
+    </message>
+    <message>
+        <source>Out of reach: the robot does not drive in Passive mode. %1</source>
+        <translation>Nicht erreichbar: Im Modus Passive fährt der Roboter nicht. %1</translation>
     </message>
 </context>
 <context>
@@ -5266,6 +5357,10 @@ Gesendet: %2</translation>
     <message>
         <source>%1 cannot play 16-bit mono sound at %2 Hz; use Export WAV instead.</source>
         <translation>%1 kann keinen 16-Bit-Mono-Ton mit %2 Hz abspielen; verwenden Sie stattdessen den WAV-Export.</translation>
+    </message>
+    <message>
+        <source>Play song %1 refused: %2</source>
+        <translation>Lied %1 abspielen abgelehnt: %2</translation>
     </message>
 </context>
 <context>

@@ -1390,6 +1390,10 @@ Click to select this robot: every dock shows it</source>
         <translation>%1
 Haga clic para seleccionar este robot: todos los paneles lo muestran</translation>
     </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
 </context>
 <context>
     <name>FleetView</name>
@@ -2328,6 +2332,14 @@ Haga clic para seleccionar este robot: todos los paneles lo muestran</translatio
         <source>Turned, true</source>
         <translation>Girado, real</translation>
     </message>
+    <message>
+        <source>%p %</source>
+        <translation>%p %</translation>
+    </message>
+    <message>
+        <source>Done · next in %1 s</source>
+        <translation>Hecho · siguiente en %1 s</translation>
+    </message>
 </context>
 <context>
     <name>LinkSettings</name>
@@ -2497,26 +2509,6 @@ GPL-3.0-or-later.</translation>
         <translation>Full</translation>
     </message>
     <message>
-        <source>cliff</source>
-        <translation>desnivel</translation>
-    </message>
-    <message>
-        <source>wheel drop</source>
-        <translation>caída de rueda</translation>
-    </message>
-    <message>
-        <source>charger</source>
-        <translation>cargador</translation>
-    </message>
-    <message>
-        <source>a safety condition</source>
-        <translation>una condición de seguridad</translation>
-    </message>
-    <message>
-        <source>, </source>
-        <translation>, </translation>
-    </message>
-    <message>
         <source>Enter Full mode?</source>
         <translation>¿Pasar al modo Full?</translation>
     </message>
@@ -2587,10 +2579,6 @@ GPL-3.0-or-later.</translation>
     <message>
         <source>Mode: unknown</source>
         <translation>Modo: desconocido</translation>
-    </message>
-    <message>
-        <source>The robot left Safe mode by itself (%1) and is in Passive mode.</source>
-        <translation>El robot salió solo del modo Safe (%1) y está en modo Passive.</translation>
     </message>
     <message>
         <source>Firmware: %1</source>
@@ -3250,6 +3238,10 @@ GPL-3.0-or-later.</translation>
         <source>Projector view</source>
         <translation>Vista de proyector</translation>
     </message>
+    <message>
+        <source>Enter Safe (Enter)</source>
+        <translation>Pasar a Safe (Intro)</translation>
+    </message>
 </context>
 <context>
     <name>Recording</name>
@@ -3743,6 +3735,105 @@ Doble clic para renombrar</translation>
     <message>
         <source>Robot name</source>
         <translation>Nombre del robot</translation>
+    </message>
+</context>
+<context>
+    <name>RobotMode</name>
+    <message>
+        <source>left</source>
+        <translation>izquierdo</translation>
+    </message>
+    <message>
+        <source>front left</source>
+        <translation>delantero izquierdo</translation>
+    </message>
+    <message>
+        <source>front right</source>
+        <translation>delantero derecho</translation>
+    </message>
+    <message>
+        <source>right</source>
+        <translation>derecho</translation>
+    </message>
+    <message>
+        <source>cliff (%1)</source>
+        <translation>desnivel (%1)</translation>
+    </message>
+    <message>
+        <source>, </source>
+        <translation>, </translation>
+    </message>
+    <message>
+        <source>caster</source>
+        <translation>rueda loca</translation>
+    </message>
+    <message>
+        <source>wheel drop (%1)</source>
+        <translation>rueda caída (%1)</translation>
+    </message>
+    <message>
+        <source>charger</source>
+        <translation>cargador</translation>
+    </message>
+    <message>
+        <source> and </source>
+        <translation> y </translation>
+    </message>
+    <message>
+        <source>You asked for Passive at %1.</source>
+        <translation>A las %1 pidió el modo Passive.</translation>
+    </message>
+    <message>
+        <source>A safety stop dropped it to Passive at %1.</source>
+        <translation>A las %1 una parada de seguridad lo pasó a Passive.</translation>
+    </message>
+    <message>
+        <source>A %1 dropped it to Passive at %2.</source>
+        <translation>A las %2 pasó a Passive por: %1.</translation>
+    </message>
+    <message>
+        <source>asked for</source>
+        <translation>pedido</translation>
+    </message>
+    <message>
+        <source>safety stop</source>
+        <translation>parada de seguridad</translation>
+    </message>
+    <message>
+        <source>Carry it back from the edge, then Enter Safe.</source>
+        <translation>Apártelo del borde y pase a Safe.</translation>
+    </message>
+    <message>
+        <source>Put it back on its wheels, then Enter Safe.</source>
+        <translation>Póngalo de nuevo sobre sus ruedas y pase a Safe.</translation>
+    </message>
+    <message>
+        <source>Take it off the charger, then Enter Safe.</source>
+        <translation>Retírelo del cargador y pase a Safe.</translation>
+    </message>
+    <message>
+        <source>Enter Safe to drive.</source>
+        <translation>Pase a Safe para conducir.</translation>
+    </message>
+    <message>
+        <source>%1 needs Safe or Full mode: in Passive the Create ignores the script&apos;s Drive, so a wait never ends. Enter Safe first.</source>
+        <translation>%1 necesita el modo Safe o Full: en Passive el Create ignora el Drive del guion, así que una espera no termina nunca. Pase antes a Safe.</translation>
+    </message>
+    <message>
+        <source>%1 needs Safe or Full mode: the robot ignores it in Passive. Enter Safe first.</source>
+        <translation>%1 necesita el modo Safe o Full: en Passive el robot lo ignora. Pase antes a Safe.</translation>
+    </message>
+    <message>
+        <source>Out of reach: %1 The goal needs the %2 cliff sensor to reach the edge first. Carry the robot back from the edge, Enter Safe, and drive at the edge head on.</source>
+        <translation>Fuera de alcance: %1 El objetivo necesita que el sensor de desnivel %2 llegue antes al borde. Aparte el robot del borde, pase a Safe y avance de frente hacia el borde.</translation>
+    </message>
+    <message>
+        <source> or </source>
+        <translation> o </translation>
+    </message>
+    <message>
+        <source>Out of reach: the robot does not drive in Passive mode. %1</source>
+        <translation>Fuera de alcance: en modo Passive el robot no conduce. %1</translation>
     </message>
 </context>
 <context>
@@ -5265,6 +5356,10 @@ Enviado: %2</translation>
     <message>
         <source>%1 cannot play 16-bit mono sound at %2 Hz; use Export WAV instead.</source>
         <translation>%1 no puede reproducir sonido mono de 16 bits a %2 Hz; use Exportar WAV en su lugar.</translation>
+    </message>
+    <message>
+        <source>Play song %1 refused: %2</source>
+        <translation>Reproducir la canción %1 rechazado: %2</translation>
     </message>
 </context>
 <context>

@@ -71,6 +71,7 @@ FleetTileValues FleetConsole::tileValues(const QString &name, const RemoteRobot 
     v.online = s.online;
     const auto mode = modeFromText(s.mode);
     v.mode = mode ? oitext::modeName(*mode) : s.mode;
+    v.modeReason = s.modeReason;
     if (s.batteryPercent >= 0)
         v.batteryPercent = int(std::lround(s.batteryPercent));
     const oi::SensorSnapshot &p = robot.latest;

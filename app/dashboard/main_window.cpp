@@ -191,6 +191,8 @@ void MainWindow::onRobotAdded(RobotSession *robot)
     if (m_historyCapacity)
         robot->setHistoryCapacity(*m_historyCapacity);
     connect(robot, &RobotSession::identifiedChanged, m_robotBar, &RobotBar::refresh);
+    // A card shows the mode the moment it changes, as the docks do.
+    connect(robot, &RobotSession::modeChanged, m_robotBar, &RobotBar::refresh);
     connect(robot, &RobotSession::identityChanged, this, [this, robot] {
         m_robotBar->refresh();
         if (robot == m_fleet.selected())
@@ -205,7 +207,8 @@ void MainWindow::wireInputs()
     // Every user action goes to the selected robot's model.
     const auto send = [this](const QByteArray &bytes) { session().send(bytes); };
     connect(m_inspector, &ByteInspector::sendRequested, this, send);
-    connect(m_modePanel, &ModePanel::sendRequested, this, send);
+    connect(m_modePanel, &ModePanel::modeRequested, this,
+            [this](oi::Command command, int demo) { session().requestMode(command, demo); });
     connect(m_songs, &SongComposer::sendRequested, this, send);
     connect(m_leds, &LedEditor::sendRequested, this, send);
     connect(m_schedule, &ScheduleEditor::sendRequested, this, send);
@@ -226,7 +229,9 @@ void MainWindow::wireInputs()
     });
     // Pad, keys and gamepad drive through the selected robot's sending rules.
     connect(m_drivePad, &DrivePad::motionRequested, this, [this](const MotionCommand &c) { teleop().requestMotion(c); });
-    connect(m_drivePad, &DrivePad::safeRequested, this, [this] { teleop().enterSafe(); });
+    connect(m_drivePad, &DrivePad::safeRequested, this, [this] { session().requestMode(oi::Command::Safe); });
+    connect(m_projector->view(), &ProjectorView::safeRequested, this,
+            [this] { session().requestMode(oi::Command::Safe); });
     connect(m_gamepad, &GamepadInput::motionRequested, this, [this](const MotionCommand &c) { teleop().requestMotion(c); });
     connect(m_gamepad, &GamepadInput::deadManChanged, this, [this](bool held) {
         if (!held)

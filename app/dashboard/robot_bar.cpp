@@ -86,8 +86,9 @@ void RobotBar::refresh()
         c.live = robot->isLive();
         if (robot->isReplay())
             c.profile = tr("Recording of %1").arg(c.profile);
+        if (robot->mode().reported())
+            c.mode = oitext::modeName(*robot->mode().reported());
         if (robot->snapshotCount() > 0) {
-            c.mode = oitext::modeName(robot->latest().oiMode());
             if (const auto percent = robot->latest().batteryPercent())
                 c.batteryPercent = int(std::lround(*percent));
         }

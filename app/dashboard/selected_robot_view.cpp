@@ -76,6 +76,7 @@ void SelectedRobotView::show(RobotSession *robot)
         connect(robot, &RobotSession::statisticsChanged, v.status, &RobotStatusBar::showStatistics),
         connect(robot, &RobotSession::errorOccurred, v.connectionBar, &ConnectionBar::showError),
         connect(robot, &RobotSession::firmwareChanged, this, [this, robot] { showFirmware(*robot); }),
+        connect(robot, &RobotSession::modeChanged, this, &SelectedRobotView::showMode),
         // A calibration applied, reset or restored: the map's wheel fields follow.
         connect(robot, &RobotSession::calibrationChanged, this, [v, robot] { v.map->setOdometry(&robot->odometry()); }),
         connect(robot, &RobotSession::recordingStatus, this, [v](const oilink::RecordingStatus &status) {
@@ -188,9 +189,23 @@ QString SelectedRobotView::whyNoCommands(const RobotSession &robot)
     return tr("The link to the robot is lost: the commands work again once it reconnects.");
 }
 
+void SelectedRobotView::showMode()
+{
+    if (!m_fleet.selected())
+        return;
+    const DashboardViews &v = m_views;
+    const RobotMode &mode = session().mode();
+    v.modePanel->setMode(mode);
+    const QString reason = mode.reason();
+    v.drivePad->setReason(reason.isEmpty() ? QString() : reason + ' ' + mode.nextStep());
+    v.projector->setMode(mode, whyNoCommands(session()).isEmpty());
+    v.songs->setPlayBlocked(mode.whyNot(oi::Command::Play));
+}
+
 void SelectedRobotView::showState(oilink::LinkState state)
 {
     m_views.status->showState(state);
+    showMode(); // whether Enter Safe can reach the robot
     // An error from a fault is over once the robot streams again.
     if (state == oilink::LinkState::Streaming)
         m_views.connectionBar->clearError();
@@ -222,6 +237,7 @@ void SelectedRobotView::refresh()
         // by; a replay has no robot to drive.
         v.drivePad->setEnabled(live && !robot.isReplay());
         v.status->showLive(live, robot.isReplay());
+        showMode();
     }
     v.modePanel->setUnavailable(whyNoCommands(robot));
     // Repaint only what changed: a robot at rest streams the same values.
@@ -233,7 +249,6 @@ void SelectedRobotView::refresh()
             v.diagram->setSnapshot(s);
             v.gauges->setSnapshot(s);
             v.signalBars->setSnapshot(s);
-            v.modePanel->setSnapshot(s);
             v.songs->setSnapshot(s);
         }
         // The first live frame is about to be painted: the other saved

@@ -84,6 +84,8 @@ public:
     void refresh();
     // The next refresh() redraws even what looks unchanged (a new connection, a new language).
     void forgetShown();
+    // The selected robot's mode, as its session sees it, on every view that shows it.
+    void showMode();
 
     // Why no command can reach `robot` now, or empty when one can.
     static QString whyNoCommands(const RobotSession &robot);

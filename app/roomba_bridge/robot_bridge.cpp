@@ -185,7 +185,8 @@ QJsonObject RobotBridge::state() const
                   {"name", m_options.name},
                   {"profile", QString::fromLatin1(profile.key.data(), qsizetype(profile.key.size()))},
                   {"firmware", m_robot.firmwareRelease().isEmpty() ? QJsonValue() : m_robot.firmwareRelease()},
-                  {"mode", latest.has(35) ? modeWord(latest.oiMode()) : QJsonValue()},
+                  {"mode", m_robot.mode().reported() ? modeWord(*m_robot.mode().reported()) : QJsonValue()},
+                  {"mode_reason", m_robot.mode().shortReason().isEmpty() ? QJsonValue() : m_robot.mode().shortReason()},
                   {"link", linkWord(m_robot.state())},
                   {"controller", m_lease.holder().isEmpty() ? QJsonValue() : m_lease.holder()}};
     const std::optional<double> battery = latest.batteryPercent();
@@ -259,7 +260,7 @@ void RobotBridge::stopRobot()
         // In Passive the robot ignores Drive while it cleans, docks or plays
         // a demo; Safe ends what it does and lets the stop take effect.
         qCInfo(lcBridge, "stop: Safe first, to end the robot's own command");
-        m_robot.teleop().enterSafe();
+        m_robot.requestMode(oi::Command::Safe);
         m_autonomous = false;
     }
     m_robot.teleop().stopAll();

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "lesson.h"
 
+#include <algorithm>
+
 namespace {
 
 constexpr oi::ProfileId kProfiles[] = {oi::ProfileId::Roomba500, oi::ProfileId::Create2,
@@ -77,6 +79,13 @@ QStringList goalPackets(const LessonGoal &goal)
     QStringList out;
     collectPackets(goal, out);
     return out;
+}
+
+bool goalDrives(const LessonGoal &goal)
+{
+    if (goal.kind == LessonGoal::Kind::Drive || goal.kind == LessonGoal::Kind::Turn)
+        return true;
+    return std::any_of(goal.goals.cbegin(), goal.goals.cend(), goalDrives);
 }
 
 } // namespace lesson

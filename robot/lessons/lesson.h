@@ -75,5 +75,7 @@ bool isPacketKey(const QString &key);
 std::uint8_t bitMask(const oi::RobotProfile &profile, int packetId, const QString &bitKey);
 // Every packet key a goal reads, for telling whether a robot can do it.
 QStringList goalPackets(const LessonGoal &goal);
+// True when the goal, or a part of it, asks the robot to drive or turn.
+bool goalDrives(const LessonGoal &goal);
 
 } // namespace lesson

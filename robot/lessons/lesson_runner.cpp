@@ -66,6 +66,9 @@ void LessonRunner::resetStep()
     m_truePose.reset();
     m_hasTruePose = false;
     m_heldSince.clear();
+    m_stepShownAt.reset();
+    m_goalMet = false;
+    m_secondsToRead = 0;
 }
 
 std::optional<double> LessonRunner::trueDrivenMm() const
@@ -104,11 +107,17 @@ void LessonRunner::update(const LessonFrame &frame)
         m_truePose.add(*frame.truePose);
         m_hasTruePose = true;
     }
+    if (!m_stepShownAt)
+        m_stepShownAt = frame.seconds;
     double progress = 0;
     const LessonGoal &goal = m_lesson.steps[m_step].goal;
-    const bool done = met(goal, frame.seconds, progress);
-    m_progress = done ? 1.0 : std::clamp(progress, 0.0, 1.0);
-    if (!done)
+    // Met once is met: a bump that came and went still counts while the text is read.
+    m_goalMet = met(goal, frame.seconds, progress) || m_goalMet;
+    m_progress = m_goalMet ? 1.0 : std::clamp(progress, 0.0, 1.0);
+    if (!m_goalMet)
+        return;
+    m_secondsToRead = std::max(0.0, kReadSeconds - (frame.seconds - *m_stepShownAt));
+    if (m_secondsToRead > 0)
         return;
     const int finishedStep = m_step++;
     resetStep();

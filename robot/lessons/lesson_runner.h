@@ -23,10 +23,15 @@ struct LessonFrame {
 // Runs one lesson on one robot's frames: checks the current step's goal on
 // each frame, marks the step done when the goal is met and moves on to the
 // next. Holds ("for half a second") are timed on the frames' clock, so a
-// test that advances its robot's clock decides what time it is.
+// test that advances its robot's clock decides what time it is. A step is
+// shown for at least kReadSeconds before it is done, so a goal that is
+// already true (the cliff signals on the floor) does not skip its text.
 class LessonRunner : public QObject {
     Q_OBJECT
 public:
+    // The least time a step is shown, on the frames' clock, however soon its goal is met.
+    static constexpr double kReadSeconds = 6;
+
     explicit LessonRunner(QObject *parent = nullptr);
 
     // Starts `lesson` at its first step for a robot of `profile`.
@@ -45,6 +50,9 @@ public:
 
     // How far the current goal has got, 0..1.
     double progress() const { return m_progress; }
+    // The goal is met, and the step stays up until it has been read: the
+    // seconds left until the next step (0 when the goal is not met yet).
+    double secondsToRead() const { return m_secondsToRead; }
     // Since the current step started: path length and turn by odometry, and
     // by the true pose on a virtual robot.
     double drivenMm() const { return m_odometry.drivenMm; }
@@ -85,4 +93,7 @@ private:
     Track m_truePose;
     bool m_hasTruePose = false;
     QHash<const LessonGoal *, double> m_heldSince; // when each held condition last became true
+    std::optional<double> m_stepShownAt; // the step's first frame
+    bool m_goalMet = false;              // met since the step was shown
+    double m_secondsToRead = 0;
 };

@@ -35,7 +35,8 @@ std::optional<RemoteRobotState> remoteStateFromJson(const QJsonObject &object, Q
     s.online = online.toBool();
     if (!readString(object, "name", s.name, error) || !readString(object, "profile", s.profileKey, error)
         || !readString(object, "firmware", s.firmware, error) || !readString(object, "mode", s.mode, error)
-        || !readString(object, "link", s.link, error) || !readString(object, "controller", s.controller, error))
+        || !readString(object, "mode_reason", s.modeReason, error) || !readString(object, "link", s.link, error)
+        || !readString(object, "controller", s.controller, error))
         return std::nullopt;
     const QJsonValue battery = object.value(QLatin1String("battery_percent"));
     if (battery.isDouble()) {

@@ -18,6 +18,7 @@ struct RemoteRobotState {
     QString profileKey;  // "create2", ...; empty until the bridge knows
     QString firmware;
     QString mode;        // "off", "passive", "safe", "full"
+    QString modeReason;  // why it is in Passive, in a few words; empty: nothing to explain
     double batteryPercent = -1; // -1: not known
     QString link;        // "streaming", "connecting", "stale", "lost"
     QString controller;  // empty: nobody holds control

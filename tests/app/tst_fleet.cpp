@@ -8,6 +8,8 @@
 #include "doctor_details.h"
 #include "drive_pad.h"
 #include "main_window.h"
+#include "mode_panel.h"
+#include "projector_view.h"
 #include "recording_transport.h"
 #include "robot_list.h"
 #include "saved_robots.h"
@@ -17,6 +19,8 @@
 #include "tcp_robot_server.h"
 
 #include <QDockWidget>
+#include <QLabel>
+#include <QRegularExpression>
 #include <QLineEdit>
 #include <QMenu>
 #include <QMessageBox>
@@ -348,6 +352,99 @@ private slots:
         // Not kept: the command line chose them for this run.
         window.close();
         QCOMPARE(loadSavedRobots(*std::make_unique<QSettings>()).size(), 0);
+    }
+
+    // A robot's mode and why it changed travel with it: a cliff drop on
+    // robot 1 is said on robot 1's drive pad, modes and projector view, never
+    // on robot 2's; Enter Safe in the projector view sends Safe to robot 1.
+    void aModeReasonTravelsWithItsRobot()
+    {
+        MainWindow window;
+        window.resize(1280, 720);
+        window.show();
+        window.start(oilink::LinkSettings::virtualRobotOf(oi::ProfileId::Create2, oi::ProfileId::Create2), 2);
+        RobotSession *one = window.fleet().robots()[0];
+        RobotSession *two = window.fleet().robots()[1];
+        QTRY_VERIFY_WITH_TIMEOUT(one->isLive() && two->isLive(), 10000);
+        const auto modeOf = [](RobotSession *r) { return r->mode().reported(); };
+        QTRY_VERIFY_WITH_TIMEOUT(modeOf(one) == oi::OiMode::Passive, 5000);
+        QVERIFY(two->requestMode(oi::Command::Safe));
+        QTRY_VERIFY_WITH_TIMEOUT(modeOf(two) == oi::OiMode::Safe, 5000);
+        const auto modeLabel = [&window] { return window.modePanel()->findChild<QLabel *>("modeLabel")->text(); };
+        const auto show = [&window](RobotSession *r) {
+            window.fleet().select(r);
+            window.refreshDisplay();
+        };
+
+        // A Safe robot, then a Passive one that never moved: its own mode, no reason.
+        show(two);
+        QCOMPARE(modeLabel(), QString("Mode: Safe"));
+        show(one);
+        QCOMPARE(modeLabel(), QString("Mode: Passive"));
+        QCOMPARE(window.modePanel()->safetyMessage(), QString());
+        QCOMPARE(window.drivePad()->passiveText(), QString("Passive mode: enter Safe to drive"));
+
+        // Robot 1 in Safe, driven by bytes at the stage edge: a cliff drops it to Passive.
+        window.room()->moveRobot(window.roomRobot(), {2600, -300, -M_PI / 2, 0});
+        QVERIFY(one->requestMode(oi::Command::Safe));
+        QTRY_VERIFY_WITH_TIMEOUT(modeOf(one) == oi::OiMode::Safe, 5000);
+        const oi::EncodeResult drive = oi::CommandEncoder(one->robotProfile()).drive(100, oi::kRadiusStraight);
+        QVERIFY(one->send(QByteArray(reinterpret_cast<const char *>(drive->data()), qsizetype(drive->size()))));
+        QTRY_VERIFY_WITH_TIMEOUT(modeOf(one) == oi::OiMode::Passive, 10000);
+        window.refreshDisplay();
+        QVERIFY2(one->mode().reason().contains(QRegularExpression("^A cliff \\(.+\\) dropped it to Passive at "
+                                                                 "\\d\\d:\\d\\d:\\d\\d\\.$")),
+                 qPrintable(one->mode().reason()));
+        const QString why = one->mode().reason() + " Carry it back from the edge, then Enter Safe.";
+        QCOMPARE(window.modePanel()->safetyMessage(), why);
+        QCOMPARE(modeLabel(), QString("Mode: Passive"));
+        QCOMPARE(window.drivePad()->passiveText(), why);
+        QVERIFY(window.drivePad()->findChild<QPushButton *>("enterSafe")->isVisibleTo(window.drivePad()));
+        QCOMPARE(window.projectorView()->reasonText(), why);
+        QVERIFY(window.projectorView()->headerText().contains("Passive"));
+        // Each robot's card, its own mode.
+        QCOMPARE(window.robotList()->card(0)->values().mode, QString("Passive"));
+        QCOMPARE(window.robotList()->card(1)->values().mode, QString("Safe"));
+
+        // Robot 2 shows its own: Safe, nothing to explain.
+        show(two);
+        QCOMPARE(modeLabel(), QString("Mode: Safe"));
+        QCOMPARE(window.modePanel()->safetyMessage(), QString());
+        QCOMPARE(window.drivePad()->passiveText(), QString());
+        QCOMPARE(window.projectorView()->reasonText(), QString());
+        QVERIFY(window.projectorView()->headerText().contains("Safe"));
+
+        // Back to robot 1, in the projector view: Enter Safe sends Safe (131) to it alone.
+        show(one);
+        window.setProjectorView(true);
+        window.refreshDisplay();
+        QSignalSpy sentOne(one, &RobotSession::bytesSent);
+        QSignalSpy sentTwo(two, &RobotSession::bytesSent);
+        const auto sentSafe = [](const QSignalSpy &spy) {
+            return std::any_of(spy.cbegin(), spy.cend(),
+                               [](const QList<QVariant> &s) { return s.first().toByteArray() == QByteArray(1, char(131)); });
+        };
+        QPushButton *enterSafe = window.projectorView()->enterSafeButton();
+        QVERIFY(enterSafe->isVisible());
+        // The Enter key: Safe again, nothing left to explain in it.
+        QTest::keyClick(window.projectorView(), Qt::Key_Return);
+        QTRY_VERIFY_WITH_TIMEOUT(sentSafe(sentOne), 5000);
+        QCOMPARE(one->mode().lastAsked(), std::optional(oi::Command::Safe));
+        QTRY_VERIFY_WITH_TIMEOUT(modeOf(one) == oi::OiMode::Safe, 5000);
+        window.refreshDisplay();
+        QCOMPARE(window.projectorView()->reasonText(), QString());
+        QVERIFY(!enterSafe->isVisible());
+        // Passive on purpose is said so; the button sends Safe.
+        QVERIFY(one->requestMode(oi::Command::Start));
+        QTRY_VERIFY_WITH_TIMEOUT(modeOf(one) == oi::OiMode::Passive, 5000);
+        window.refreshDisplay();
+        QVERIFY2(window.projectorView()->reasonText().startsWith("You asked for Passive at "),
+                 qPrintable(window.projectorView()->reasonText()));
+        sentOne.clear();
+        QTest::mouseClick(enterSafe, Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(sentSafe(sentOne), 5000);
+        QVERIFY(!sentSafe(sentTwo));
+        window.setProjectorView(false);
     }
 
     // Until someone says which robot it is, its odometry integrates nothing

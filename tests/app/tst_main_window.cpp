@@ -296,6 +296,11 @@ private slots:
         QVERIFY(s.cliff(oi::CliffSensor::FrontLeft) || s.cliff(oi::CliffSensor::FrontRight)
                 || s.cliff(oi::CliffSensor::Left) || s.cliff(oi::CliffSensor::Right));
         QVERIFY(window.grab().save(QDir(dir).filePath("dashboard_cliff.png")));
+        // The projector view says it too, with Enter Safe.
+        window.setProjectorView(true);
+        QTRY_VERIFY_WITH_TIMEOUT((window.refreshDisplay(), window.projectorView()->reasonText().contains("cliff")), 5000);
+        QVERIFY(window.grab().save(QDir(dir).filePath("projector_cliff.png")));
+        window.setProjectorView(false);
 
         // The map shows the virtual robot's true pose beside the odometry.
         window.findChild<QDockWidget *>("mapDock")->raise();
@@ -364,6 +369,41 @@ private slots:
         QVERIFY(projector->grab().save(QDir(dir).filePath("projector_robot.png")));
         window.projectorAction()->trigger();
         QVERIFY(!window.isProjectorView());
+    }
+
+    // The cliff lesson's front-sensor step, driven at the stage edge at an
+    // angle: a side sensor stops the robot first, and the lesson says why
+    // its goal is out of reach and what to do.
+    void cliffLessonSaysWhyItsGoalIsOutOfReach()
+    {
+        QTemporaryDir scratch;
+        const QString dir = screenshotDir(scratch);
+        MainWindow window;
+        window.resize(1280, 720);
+        window.show();
+        window.start(oilink::LinkSettings::virtualRobotOf(oi::ProfileId::Create2, oi::ProfileId::Create2));
+        QTRY_COMPARE_WITH_TIMEOUT(window.session().state(), oilink::LinkState::Streaming, 10000);
+        LessonPanel *lessons = window.lessonPanel();
+        window.findChild<QDockWidget *>("lessonDock")->raise();
+        QVERIFY(lessons->openLesson(":/lessons/cliff_sensors.json"));
+        lessons->nextStep();
+        QCOMPARE(lessons->runner().currentStep(), 1);
+
+        window.room()->moveRobot(window.roomRobot(), {1850, -1200, M_PI / 4, 0});
+        QVERIFY(window.session().requestMode(oi::Command::Safe));
+        QTRY_COMPARE_WITH_TIMEOUT(window.session().mode().reported(), std::optional(oi::OiMode::Safe), 5000);
+        window.refreshDisplay();
+        window.refreshDisplay();
+        QCOMPARE(lessons->stepView()->outOfReachText(), QString());
+        const oi::EncodeResult drive = oi::CommandEncoder(window.session().robotProfile()).drive(100, oi::kRadiusStraight);
+        QVERIFY(window.session().send(QByteArray(reinterpret_cast<const char *>(drive->data()), qsizetype(drive->size()))));
+        QTRY_COMPARE_WITH_TIMEOUT(window.session().mode().reported(), std::optional(oi::OiMode::Passive), 10000);
+        QTRY_VERIFY_WITH_TIMEOUT((window.refreshDisplay(), !lessons->stepView()->outOfReachText().isEmpty()), 5000);
+        const QString why = lessons->stepView()->outOfReachText();
+        QVERIFY2(why.startsWith("Out of reach: A cliff (right) dropped it to Passive at "), qPrintable(why));
+        QVERIFY(why.contains("drive at the edge head on"));
+        QCOMPARE(lessons->runner().currentStep(), 1);
+        QVERIFY(window.grab().save(QDir(dir).filePath("lesson_out_of_reach.png")));
     }
 
     // A Create script uploaded to the virtual robot runs with its wait, and
@@ -539,7 +579,11 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(window.session().snapshotCount() > 5, 10000);
         window.refreshDisplay();
         QVERIFY2(window.statusText().contains("REPLAY"), qPrintable(window.statusText()));
-        // A replay has no robot to command: the mode buttons say so.
+        // A replay has no robot to command: the mode buttons say so, the
+        // projector view offers no Enter Safe, and none is sent.
+        QCOMPARE(window.session().mode().reported(), std::optional(oi::OiMode::Passive));
+        QVERIFY(!window.projectorView()->enterSafeButton()->isVisibleTo(window.projectorView()));
+        QVERIFY(!window.session().requestMode(oi::Command::Safe));
         QVERIFY(!window.modePanel()->button("safe")->isEnabled());
         QVERIFY2(window.modePanel()->button("safe")->toolTip().contains("recording"),
                  qPrintable(window.modePanel()->button("safe")->toolTip()));

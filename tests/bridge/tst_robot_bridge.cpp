@@ -71,6 +71,7 @@ private slots:
         QCOMPARE(state.value(QLatin1String("profile")).toString(), QStringLiteral("create2"));
         QCOMPARE(state.value(QLatin1String("link")).toString(), QStringLiteral("streaming"));
         QCOMPARE(state.value(QLatin1String("mode")).toString(), QStringLiteral("passive"));
+        QVERIFY(state.value(QLatin1String("mode_reason")).isNull()); // Passive from the start: nothing to explain
         QVERIFY(state.value(QLatin1String("controller")).isNull());
         QVERIFY(state.value(QLatin1String("battery_percent")).toDouble() > 0);
     }
@@ -305,6 +306,28 @@ private slots:
 
     // With full allowed, the bridge does what Safe mode would: the first
     // cliff while a client drives stops the robot.
+    // Safe falling back to Passive at a cliff: the state says why, while the cliff shows.
+    void stateSaysWhyTheRobotIsInPassive()
+    {
+        MosquittoBroker broker;
+        QVERIFY2(broker.start(), qPrintable(broker.error()));
+        BridgeRig rig(QStringLiteral("r1"), addressOf(broker), BridgeRig::Robot::Recording);
+        QVERIFY(rig.streaming());
+        ConsoleClient watcher(QStringLiteral("watcher"), addressOf(broker));
+        QVERIFY(watcher.waitForState(QStringLiteral("r1"), true));
+        rig.recording.mode = int(oi::OiMode::Safe);
+        QTRY_COMPARE(watcher.lastState(QStringLiteral("r1")).value(QLatin1String("mode")).toString(),
+                     QStringLiteral("safe"));
+        rig.recording.cliffLeft = true;
+        rig.recording.mode = int(oi::OiMode::Passive);
+        QTRY_COMPARE(watcher.lastState(QStringLiteral("r1")).value(QLatin1String("mode_reason")).toString(),
+                     QStringLiteral("cliff (left)"));
+        QCOMPARE(watcher.lastState(QStringLiteral("r1")).value(QLatin1String("mode")).toString(),
+                 QStringLiteral("passive"));
+        rig.recording.cliffLeft = false;
+        QTRY_VERIFY(watcher.lastState(QStringLiteral("r1")).value(QLatin1String("mode_reason")).isNull());
+    }
+
     void allowedFullStillStopsAtACliff()
     {
         MosquittoBroker broker;

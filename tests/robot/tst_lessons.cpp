@@ -6,6 +6,7 @@
 #include "lesson_file.h"
 #include "lesson_runner.h"
 #include "pseudo_translation.h" // tests/common
+#include "robot_mode.h"
 #include "robot_odometry.h"
 #include "shipped_lessons.h"
 #include "stream_parser.h"
@@ -48,8 +49,9 @@ struct Classroom {
             if (kind != oi::FrameKind::Stream)
                 return;
             odometry.update(s);
-            runner.update({std::chrono::duration<double>(robot.now()).count(), s, odometry.pose(),
-                           robot.truePose()});
+            const double seconds = std::chrono::duration<double>(robot.now()).count();
+            mode.observe(s, QDateTime(QDate(2026, 1, 5), QTime(12, 0)).addMSecs(qint64(seconds * 1000)));
+            runner.update({seconds, s, odometry.pose(), robot.truePose()});
         });
         send(encoder.start());
         send(encoder.safe());
@@ -98,6 +100,7 @@ struct Classroom {
     oi::CommandEncoder encoder;
     oi::StreamParser parser;
     RobotOdometry odometry;
+    RobotMode mode; // as the session would see it
     LessonRunner runner;
 };
 
@@ -245,8 +248,66 @@ private slots:
         frame(0.5, 200);
         frame(0.9, 200);
         QVERIFY(!runner.isFinished());
+        QCOMPARE(runner.secondsToRead(), 0.0);
         frame(1.0, 200);
+        // Met, and shown until it has been read; met once is met.
+        QCOMPARE(runner.progress(), 1.0);
+        QCOMPARE(runner.secondsToRead(), LessonRunner::kReadSeconds - 1.0);
+        QVERIFY(!runner.isFinished());
+        frame(LessonRunner::kReadSeconds - 0.1, 50);
+        QVERIFY(!runner.isFinished());
+        frame(LessonRunner::kReadSeconds, 50);
         QVERIFY(runner.isFinished());
+    }
+
+    // The cliff lesson's first step is true on the floor: it stays up until
+    // it has been read, on the robot's clock, then moves on by itself.
+    void aStepAlreadyTrueWaitsToBeRead()
+    {
+        Classroom room(oi::profile(ProfileId::Create2));
+        room.carryTo(1700, 0, 0);
+        room.runner.start(shipped("cliff_sensors"), oi::profile(ProfileId::Create2));
+        room.run(3s); // the goal holds for 2 s: met
+        QCOMPARE(room.runner.currentStep(), 0);
+        QCOMPARE(room.runner.progress(), 1.0);
+        QVERIFY(room.runner.secondsToRead() > 2 && room.runner.secondsToRead() < 3.1);
+        room.run(2900ms);
+        QCOMPARE(room.runner.currentStep(), 0);
+        room.run(200ms);
+        QCOMPARE(room.runner.currentStep(), 1);
+        QCOMPARE(room.runner.secondsToRead(), 0.0);
+    }
+
+    // Driven at the stage edge at an angle, a side cliff sensor finds it
+    // first: Safe drops to Passive and the front-sensor goal is out of
+    // reach. The lesson says why and what to do.
+    void cliffGoalOutOfReachAtAnAngle()
+    {
+        Classroom room(oi::profile(ProfileId::Create2));
+        room.carryTo(1700, 0, 0);
+        const Lesson lesson = shipped("cliff_sensors");
+        room.runner.start(lesson, oi::profile(ProfileId::Create2));
+        PAST(0);
+        const LessonGoal &goal = lesson.steps[1].goal;
+        const auto outOfReach = [&] {
+            return room.mode.outOfReach(lesson::goalPackets(goal), lesson::goalDrives(goal));
+        };
+        room.carryTo(1850, -1200, 45); // the edge ahead, the robot turned left of it
+        room.drive(100);
+        QVERIFY(outOfReach().isEmpty());
+        for (int i = 0; i < 400 && room.mode.reported() != oi::OiMode::Passive; ++i)
+            room.run(15ms);
+        QCOMPARE(room.mode.reported(), std::optional(oi::OiMode::Passive));
+        QCOMPARE(room.runner.currentStep(), 1); // no front sensor saw the edge
+        QVERIFY2(outOfReach().startsWith("Out of reach: A cliff (right) dropped it to Passive at 12:00:"),
+                 qPrintable(outOfReach()));
+        QVERIFY(outOfReach().contains("drive at the edge head on"));
+        // Head on, as it says: the goal is met.
+        room.carryTo(1800, -1100, 0);
+        room.run(45ms);
+        QVERIFY2(outOfReach().isEmpty(), qPrintable(outOfReach())); // back on the floor: nothing in the way
+        room.drive(100);
+        PAST(1);
     }
 
     void badFiles_data()

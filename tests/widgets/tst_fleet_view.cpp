@@ -40,6 +40,8 @@ private slots:
         FleetTileValues cliff = robot(2);
         cliff.cliffs = 2;
         cliff.wheelDrop = true;
+        cliff.mode = QStringLiteral("Passive");
+        cliff.modeReason = QStringLiteral("cliff (front left)");
         FleetTileValues offline = robot(3);
         offline.online = false;
         offline.link = QStringLiteral("lost");
@@ -55,6 +57,8 @@ private slots:
         QCOMPARE(t1->linkText(), QStringLiteral("link streaming · 66/s"));
         QCOMPARE(t1->controlText(), QStringLiteral("driven by alice"));
         QCOMPARE(view.tile("robot-2")->hazardText(), QStringLiteral("CLIFF ×2 · WHEEL DROP"));
+        // Why it is in Passive travels with its own tile.
+        QCOMPARE(view.tile("robot-2")->modeText(), QStringLiteral("Passive: cliff (front left) · battery 88 %"));
         QCOMPARE(view.tile("robot-3")->statusText(), QStringLiteral("OFFLINE"));
         QCOMPARE(view.tile("robot-3")->linkText(), QStringLiteral("link lost"));
         QCOMPARE(view.tile("robot-3")->controlText(), QStringLiteral("nobody in control"));

@@ -60,6 +60,12 @@ private slots:
         emit robot.frameReceived(1.0, frameWith({{7, oi::bit::BumpRight}})); // the wrong half
         QCOMPARE(panel.runner().currentStep(), 0);
         emit robot.frameReceived(1.1, frameWith({{7, oi::bit::BumpLeft}}));
+        // Met, and left up until it has been read.
+        QCOMPARE(panel.runner().currentStep(), 0);
+        panel.show();
+        panel.refresh();
+        QCOMPARE(panel.stepView()->progressText(), QStringLiteral("Done · next in 6 s"));
+        emit robot.frameReceived(1.0 + LessonRunner::kReadSeconds, frameWith({}));
         QCOMPARE(panel.runner().currentStep(), 1);
         QListWidgetItem *first = panel.stepList()->item(0);
         QVERIFY(first->text().startsWith(QStringLiteral("✔")));
@@ -68,19 +74,49 @@ private slots:
         QCOMPARE(panel.stepView()->headingText(), QStringLiteral("Step 2 of 5"));
         QCOMPARE(panel.stepView()->diagram()->highlightedParts(), QStringList{"bump_right"});
 
-        // The rest, to the end: the last step holds for a second.
-        emit robot.frameReceived(1.2, frameWith({{7, oi::bit::BumpRight}}));
-        emit robot.frameReceived(1.3, frameWith({{7, oi::bit::BumpRight | oi::bit::BumpLeft}}));
-        emit robot.frameReceived(1.4, frameWith({{7, oi::bit::WheelDropLeft | oi::bit::WheelDropRight}}));
+        // The rest, to the end, each step read for its time: the last holds for a second.
+        double t = 10;
+        for (int bits : std::initializer_list<int>{oi::bit::BumpRight, oi::bit::BumpRight | oi::bit::BumpLeft,
+                                                   oi::bit::WheelDropLeft | oi::bit::WheelDropRight}) {
+            emit robot.frameReceived(t, frameWith({{7, bits}}));
+            emit robot.frameReceived(t + LessonRunner::kReadSeconds, frameWith({}));
+            t += 10;
+        }
         QCOMPARE(panel.runner().currentStep(), 4);
-        emit robot.frameReceived(2.0, frameWith({}));
-        emit robot.frameReceived(2.9, frameWith({}));
+        emit robot.frameReceived(t, frameWith({}));
+        emit robot.frameReceived(t + 0.9, frameWith({}));
+        panel.refresh();
+        QCOMPARE(panel.stepView()->progressText(), QStringLiteral("90 %"));
+        emit robot.frameReceived(t + LessonRunner::kReadSeconds - 0.1, frameWith({}));
         QCOMPARE(panel.runner().currentStep(), 4);
-        emit robot.frameReceived(3.0, frameWith({}));
+        emit robot.frameReceived(t + LessonRunner::kReadSeconds, frameWith({}));
         QVERIFY(panel.runner().isFinished());
         QVERIFY(panel.noticeText().contains("Lesson complete"));
         for (int i = 0; i < 5; ++i)
             QVERIFY(panel.stepList()->item(i)->text().startsWith(QStringLiteral("✔")));
+    }
+
+    // The step list wraps each step's first sentence whole, never cuts it.
+    void stepListShowsWholeSentences()
+    {
+        LessonPanel panel;
+        panel.resize(700, 500);
+        panel.show();
+        QVERIFY(panel.openLesson(QStringLiteral(":/lessons/cliff_sensors.json")));
+        QVERIFY(panel.stepList()->item(0)->text().endsWith(
+            QStringLiteral("1. Under the front of the robot, four cliff sensors shine infrared light at the floor "
+                           "and measure how much comes back")));
+        QCoreApplication::processEvents();
+        const QListWidget *list = panel.stepList();
+        for (int i = 0; i < list->count(); ++i) {
+            const QListWidgetItem *item = list->item(i);
+            QVERIFY(!item->text().contains(QStringLiteral("…")));
+            // Tall enough for every wrapped line.
+            const QRect rect = list->visualItemRect(item);
+            const QRect needed = list->fontMetrics().boundingRect(QRect(0, 0, rect.width(), 10000),
+                                                                  Qt::TextWordWrap, item->text());
+            QVERIFY2(rect.height() >= needed.height(), qPrintable(item->text()));
+        }
     }
 
     void badLessonFileLeavesThePanelAsItWas()
@@ -90,6 +126,7 @@ private slots:
         panel.setRobot(&robot);
         QVERIFY(panel.openLesson(kBumpers));
         emit robot.frameReceived(1.0, frameWith({{7, oi::bit::BumpLeft}}));
+        emit robot.frameReceived(1.0 + LessonRunner::kReadSeconds, frameWith({}));
         QCOMPARE(panel.runner().currentStep(), 1);
 
         QTemporaryDir dir;

@@ -14,13 +14,9 @@ using namespace oi;
 
 namespace {
 
-QString bytesText(const QList<QVariant> &signal)
-{
-    QStringList parts;
-    for (char c : signal.at(0).toByteArray())
-        parts << QString::number(static_cast<unsigned char>(c));
-    return parts.join(' ');
-}
+// The command a modeRequested() signal asked for, and the demo's number.
+Command askedCommand(const QList<QVariant> &signal) { return signal.at(0).value<Command>(); }
+int askedDemo(const QList<QVariant> &signal) { return signal.at(1).toInt(); }
 
 SensorSnapshot modeSnapshot(const RobotProfile &p, OiMode mode)
 {
@@ -49,47 +45,67 @@ QList<QWidget *> tabWalk(QWidget *window, QWidget *first)
     return seen;
 }
 
+// The mode a session sees after these frames.
+RobotMode modeAfter(std::initializer_list<SensorSnapshot> frames)
+{
+    RobotMode mode;
+    const QDateTime at(QDate(2026, 1, 5), QTime(12, 3, 4));
+    for (const SensorSnapshot &frame : frames)
+        mode.observe(frame, at);
+    return mode;
+}
+
+SensorSnapshot cliffDrop(const RobotProfile &p)
+{
+    SensorSnapshot dropped = modeSnapshot(p, OiMode::Passive);
+    dropped.set(10, 1); // front left
+    return dropped;
+}
+
 } // namespace
+
+Q_DECLARE_METATYPE(oi::Command)
 
 class TestModePanel : public QObject {
     Q_OBJECT
 private slots:
-    void buttonsSendExactBytes_data()
+    void buttonsAskForTheirCommand_data()
     {
         QTest::addColumn<QString>("profile");
         QTest::addColumn<QString>("button");
-        QTest::addColumn<QString>("bytes");
-        QTest::newRow("start") << "create2" << "start" << "128";
-        QTest::newRow("passive") << "create2" << "passive" << "128";
-        QTest::newRow("safe") << "create2" << "safe" << "131";
-        QTest::newRow("full") << "create2" << "full" << "132";
-        QTest::newRow("stop") << "create2" << "stop" << "173";
-        QTest::newRow("reset") << "roomba500" << "reset" << "7";
-        QTest::newRow("power") << "roomba500" << "power" << "133";
-        QTest::newRow("clean") << "create2" << "clean" << "135";
-        QTest::newRow("spot") << "create2" << "spot" << "134";
-        QTest::newRow("max") << "create2" << "max" << "136";
-        QTest::newRow("seek dock") << "create2" << "seek-dock" << "143";
-        QTest::newRow("cover") << "create1" << "cover" << "135";
-        QTest::newRow("cover and dock") << "create1" << "cover-and-dock" << "143";
-        QTest::newRow("spot create") << "create1" << "spot" << "134";
-        QTest::newRow("demo") << "create1" << "demo" << "136 0";
+        QTest::addColumn<Command>("command");
+        QTest::newRow("start") << "create2" << "start" << Command::Start;
+        QTest::newRow("passive") << "create2" << "passive" << Command::Start;
+        QTest::newRow("safe") << "create2" << "safe" << Command::Safe;
+        QTest::newRow("full") << "create2" << "full" << Command::Full;
+        QTest::newRow("stop") << "create2" << "stop" << Command::Stop;
+        QTest::newRow("reset") << "roomba500" << "reset" << Command::Reset;
+        QTest::newRow("power") << "roomba500" << "power" << Command::Power;
+        QTest::newRow("clean") << "create2" << "clean" << Command::Clean;
+        QTest::newRow("spot") << "create2" << "spot" << Command::Spot;
+        QTest::newRow("max") << "create2" << "max" << Command::Max;
+        QTest::newRow("seek dock") << "create2" << "seek-dock" << Command::SeekDock;
+        QTest::newRow("cover") << "create1" << "cover" << Command::Cover;
+        QTest::newRow("cover and dock") << "create1" << "cover-and-dock" << Command::CoverAndDock;
+        QTest::newRow("spot create") << "create1" << "spot" << Command::Spot;
+        QTest::newRow("demo") << "create1" << "demo" << Command::Demo;
     }
-    void buttonsSendExactBytes()
+    // Each button asks for its command (the session sends it: tst_robot_session).
+    void buttonsAskForTheirCommand()
     {
         QFETCH(QString, profile);
         QFETCH(QString, button);
-        QFETCH(QString, bytes);
+        QFETCH(Command, command);
         ModePanel panel;
         panel.setFullModeConfirmation([](QWidget *) { return true; });
         panel.setProfile(*profileByKey(profile.toStdString()));
-        QSignalSpy spy(&panel, &ModePanel::sendRequested);
+        QSignalSpy spy(&panel, &ModePanel::modeRequested);
         QPushButton *b = panel.button(button);
         QVERIFY(b);
         QVERIFY(b->isEnabled());
         QTest::mouseClick(b, Qt::LeftButton);
         QCOMPARE(spy.count(), 1);
-        QCOMPARE(bytesText(spy.at(0)), bytes);
+        QCOMPARE(askedCommand(spy.at(0)), command);
     }
 
     void demoChoice()
@@ -99,12 +115,13 @@ private slots:
         auto *combo = panel.findChild<QComboBox *>("demoChoice");
         QVERIFY(combo);
         combo->setCurrentIndex(0); // abort
-        QSignalSpy spy(&panel, &ModePanel::sendRequested);
+        QSignalSpy spy(&panel, &ModePanel::modeRequested);
         QTest::mouseClick(panel.button("demo"), Qt::LeftButton);
-        QCOMPARE(bytesText(spy.at(0)), QString("136 255"));
+        QCOMPARE(askedCommand(spy.at(0)), Command::Demo);
+        QCOMPARE(askedDemo(spy.at(0)), -1);
         combo->setCurrentIndex(10); // Banjo
         QTest::mouseClick(panel.button("demo"), Qt::LeftButton);
-        QCOMPARE(bytesText(spy.at(1)), QString("136 9"));
+        QCOMPARE(askedDemo(spy.at(1)), 9);
     }
 
     void fullAsksFirst()
@@ -116,7 +133,7 @@ private slots:
             ++asked;
             return answer;
         });
-        QSignalSpy spy(&panel, &ModePanel::sendRequested);
+        QSignalSpy spy(&panel, &ModePanel::modeRequested);
         QTest::mouseClick(panel.button("full"), Qt::LeftButton);
         QCOMPARE(asked, 1);
         QCOMPARE(spy.count(), 0);
@@ -150,7 +167,7 @@ private slots:
     void noRobotToCommandDisablesEveryButton()
     {
         ModePanel panel;
-        QSignalSpy sent(&panel, &ModePanel::sendRequested);
+        QSignalSpy sent(&panel, &ModePanel::modeRequested);
         const QString why = "Not connected: connect to the robot first.";
         panel.setUnavailable(why);
         for (const char *name : {"start", "passive", "safe", "full", "stop", "clean", "seek-dock"}) {
@@ -168,55 +185,38 @@ private slots:
         QVERIFY(panel.button("safe")->isEnabled());
         QTest::mouseClick(panel.button("safe"), Qt::LeftButton);
         QCOMPARE(sent.count(), 1);
-        QCOMPARE(bytesText(sent.at(0)), QString("131"));
+        QCOMPARE(askedCommand(sent.at(0)), Command::Safe);
     }
 
     void highlightsCurrentMode()
     {
         ModePanel panel;
         QVERIFY(!panel.highlightedMode());
-        panel.setSnapshot(modeSnapshot(profile(ProfileId::Create2), OiMode::Full));
+        panel.setMode(modeAfter({modeSnapshot(profile(ProfileId::Create2), OiMode::Full)}));
         QCOMPARE(panel.highlightedMode(), std::optional<OiMode>(OiMode::Full));
         QVERIFY(!panel.button("full")->styleSheet().isEmpty());
         QVERIFY(panel.button("safe")->styleSheet().isEmpty());
         QCOMPARE(panel.findChild<QLabel *>("modeLabel")->text(), QString("Mode: Full"));
     }
 
-    void explainsSafetyDrop_data()
-    {
-        QTest::addColumn<int>("packet");
-        QTest::addColumn<int>("value");
-        QTest::addColumn<QString>("reason");
-        QTest::newRow("cliff") << 10 << 1 << "(cliff)";
-        QTest::newRow("wheel drop") << 7 << 0x08 << "(wheel drop)";
-        QTest::newRow("charger") << 34 << 0x02 << "(charger)";
-    }
-    void explainsSafetyDrop()
-    {
-        QFETCH(int, packet);
-        QFETCH(int, value);
-        QFETCH(QString, reason);
-        const RobotProfile &p = profile(ProfileId::Create2);
-        ModePanel panel;
-        panel.setSnapshot(modeSnapshot(p, OiMode::Safe));
-        QVERIFY(panel.safetyMessage().isEmpty());
-        SensorSnapshot dropped = modeSnapshot(p, OiMode::Passive);
-        dropped.set(packet, value);
-        panel.setSnapshot(dropped);
-        QVERIFY2(panel.safetyMessage().contains(reason), qPrintable(panel.safetyMessage()));
-        QVERIFY(panel.safetyMessage().contains("left Safe mode by itself"));
-        // Asking for Safe again clears it.
-        QTest::mouseClick(panel.button("safe"), Qt::LeftButton);
-        QVERIFY(panel.safetyMessage().isEmpty());
-    }
-
-    void requestedPassiveIsNotASafetyDrop()
+    // What the session's mode says is shown, with the step that fixes it,
+    // and only under the mode it is about.
+    void showsWhyTheModeChanged()
     {
         const RobotProfile &p = profile(ProfileId::Create2);
         ModePanel panel;
-        panel.setSnapshot(modeSnapshot(p, OiMode::Safe));
-        QTest::mouseClick(panel.button("passive"), Qt::LeftButton);
-        panel.setSnapshot(modeSnapshot(p, OiMode::Passive));
+        panel.setMode(modeAfter({modeSnapshot(p, OiMode::Safe)}));
+        QVERIFY(panel.safetyMessage().isEmpty());
+        panel.setMode(modeAfter({modeSnapshot(p, OiMode::Safe), cliffDrop(p)}));
+        QCOMPARE(panel.safetyMessage(), QString("A cliff (front left) dropped it to Passive at 12:03:04. Carry it "
+                                                "back from the edge, then Enter Safe."));
+        QCOMPARE(panel.findChild<QLabel *>("modeLabel")->text(), QString("Mode: Passive"));
+        // Back in Safe: the reason goes with the mode it explained.
+        panel.setMode(modeAfter({modeSnapshot(p, OiMode::Safe), cliffDrop(p), modeSnapshot(p, OiMode::Safe)}));
+        QVERIFY(panel.safetyMessage().isEmpty());
+        QCOMPARE(panel.findChild<QLabel *>("modeLabel")->text(), QString("Mode: Safe"));
+        // Another robot's mode replaces it whole.
+        panel.setMode(modeAfter({modeSnapshot(p, OiMode::Passive)}));
         QVERIFY(panel.safetyMessage().isEmpty());
     }
 
@@ -233,23 +233,23 @@ private slots:
         ModePanel panel;
         panel.setProfile(profile(ProfileId::Create1)); // some buttons disabled, with a reason
         panel.setFirmware("release-3.4.1");
-        panel.setSnapshot(modeSnapshot(p, OiMode::Safe));
-        SensorSnapshot dropped = modeSnapshot(p, OiMode::Passive);
-        dropped.set(10, 1);
-        panel.setSnapshot(dropped);
+        const RobotMode dropped = modeAfter({modeSnapshot(p, OiMode::Safe), cliffDrop(p)});
+        panel.setMode(dropped);
         panel.show();
         {
             ScopedPseudoTranslation pseudo;
             QCoreApplication::processEvents();
+            panel.setMode(dropped); // the window shows the mode again on a language change
             const QStringList left = untranslatedTexts(&panel);
             QVERIFY2(left.isEmpty(), qPrintable(left.join('\n')));
             QVERIFY(panel.safetyMessage().contains(kPseudoOpen));
             QCOMPARE(panel.findChild<QComboBox *>("demoChoice")->currentData().toInt(), 0);
         }
         QCoreApplication::processEvents();
+        panel.setMode(dropped);
         QCOMPARE(panel.button("seek-dock")->text(), QString("Seek Dock"));
         QCOMPARE(panel.findChild<QLabel *>("modeLabel")->text(), QString("Mode: Passive"));
-        QVERIFY(panel.safetyMessage().startsWith("The robot left Safe mode by itself (cliff)"));
+        QVERIFY(panel.safetyMessage().startsWith("A cliff (front left) dropped it to Passive"));
         QVERIFY(panel.button("stop")->toolTip().contains("is not available on the Create"));
     }
 
@@ -275,11 +275,11 @@ private slots:
             QCOMPARE(visited, expected);
         }
         // Space on the focused button sends its command.
-        QSignalSpy spy(&panel, &ModePanel::sendRequested);
+        QSignalSpy spy(&panel, &ModePanel::modeRequested);
         panel.button("safe")->setFocus();
         QTest::keyClick(panel.button("safe"), Qt::Key_Space);
         QCOMPARE(spy.count(), 1);
-        QCOMPARE(bytesText(spy.at(0)), QString("131"));
+        QCOMPARE(askedCommand(spy.at(0)), Command::Safe);
     }
 
     void screenshots()
@@ -287,14 +287,13 @@ private slots:
         const RobotProfile &p = profile(ProfileId::Create2);
         ModePanel panel;
         panel.setFirmware("release-3.4.1");
-        panel.setSnapshot(modeSnapshot(p, OiMode::Safe));
-        SensorSnapshot dropped = modeSnapshot(p, OiMode::Passive);
-        dropped.set(10, 1);
-        panel.setSnapshot(dropped);
+        const RobotMode dropped = modeAfter({modeSnapshot(p, OiMode::Safe), cliffDrop(p)});
+        panel.setMode(dropped);
         panel.show();
         sensor_scenes::saveScreenshot(panel, "mode_panel");
         ScopedPseudoTranslation pseudo; // longer texts, as translations are
         QCoreApplication::processEvents();
+        panel.setMode(dropped);
         panel.adjustSize();
         sensor_scenes::saveScreenshot(panel, "mode_panel_pseudo");
     }

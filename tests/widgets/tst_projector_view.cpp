@@ -12,6 +12,8 @@
 
 #include <QDir>
 #include <QLabel>
+#include <QPushButton>
+#include <QSignalSpy>
 #include <QTest>
 
 namespace {
@@ -82,6 +84,68 @@ private slots:
         const QStringList untranslated = untranslatedTexts(&view, {"Robot 1", "mV", "mA", "mm/s"});
         QVERIFY2(untranslated.isEmpty(), qPrintable(untranslated.join('\n')));
         robot.closeAndWait();
+    }
+
+    // The header names the mode the session reports; in Passive a line says
+    // why, with Enter Safe (the button or the Enter key), and only then.
+    void modeReasonAndEnterSafe_data()
+    {
+        QTest::addColumn<QSize>("screen");
+        QTest::newRow("1280x720") << QSize(1280, 720);
+        QTest::newRow("1920x1080") << QSize(1920, 1080);
+    }
+    void modeReasonAndEnterSafe()
+    {
+        QFETCH(QSize, screen);
+        const oi::RobotProfile &create2 = oi::profile(oi::ProfileId::Create2);
+        const auto frame = [&](oi::OiMode mode, bool cliff) {
+            oi::SensorSnapshot s(create2);
+            s.set(35, int(mode));
+            for (int id : {7, 9, 10, 11, 12, 34})
+                s.set(id, 0);
+            s.set(10, cliff ? 1 : 0);
+            return s;
+        };
+        const QDateTime at(QDate(2026, 1, 5), QTime(12, 3, 4));
+        RobotMode mode;
+        mode.observe(frame(oi::OiMode::Safe, false), at);
+
+        QWidget window;
+        window.resize(screen);
+        ProjectorView view(&window);
+        view.setRobot("Robot 1", create2, nullptr);
+        window.show();
+        view.show();
+        QSignalSpy safe(&view, &ProjectorView::safeRequested);
+        view.setMode(mode);
+        view.refresh(frame(oi::OiMode::Safe, false), true);
+        QVERIFY(view.headerText().contains(" · Safe"));
+        QCOMPARE(view.reasonText(), QString());
+        QVERIFY(!view.enterSafeButton()->isVisible());
+        QTest::keyClick(&view, Qt::Key_Return);
+        QCOMPARE(safe.count(), 0); // nothing to enter
+
+        mode.observe(frame(oi::OiMode::Passive, true), at);
+        view.setMode(mode);
+        QVERIFY(view.headerText().contains(" · Passive"));
+        QCOMPARE(view.reasonText(), QString("A cliff (front left) dropped it to Passive at 12:03:04. Carry it back "
+                                            "from the edge, then Enter Safe."));
+        QVERIFY(view.enterSafeButton()->isVisible());
+        QTest::mouseClick(view.enterSafeButton(), Qt::LeftButton);
+        QCOMPARE(safe.count(), 1);
+        QTest::keyClick(&view, Qt::Key_Return);
+        QCOMPARE(safe.count(), 2);
+        // The reason and its button fit beside each other, text whole.
+        QCoreApplication::processEvents();
+        const auto *reason = view.findChild<QLabel *>("projectorReason");
+        QVERIFY(reason->heightForWidth(reason->width()) <= reason->height());
+        QVERIFY(view.enterSafeButton()->geometry().right() <= view.width());
+        saveShot(view, QStringLiteral("projector_%1x%2_passive").arg(screen.width()).arg(screen.height()));
+
+        // No live data: nothing can be entered, and the header says so.
+        view.refresh(frame(oi::OiMode::Passive, true), false);
+        QVERIFY(!view.enterSafeButton()->isVisible());
+        QVERIFY(view.headerText().contains("NO LIVE DATA"));
     }
 };
 

@@ -2,6 +2,7 @@
 #include "drive_pad.h"
 
 #include "command_encoder.h"
+#include "display_palette.h"
 
 #include <QComboBox>
 #include <QEvent>
@@ -205,7 +206,7 @@ void DrivePad::retranslateUi()
     // Room for the widest value, so the slider does not jump while dragging.
     m_speedLabel->setMinimumWidth(m_speedLabel->fontMetrics().horizontalAdvance(tr("%1 mm/s").arg(kMaxSpeedLimit))
                                   + m_speedLabel->fontMetrics().averageCharWidth());
-    m_passiveLabel->setText(tr("Passive mode: enter Safe to drive"));
+    setReason(m_reason);
     m_enterSafe->setText(tr("Enter Safe"));
     m_area->setAccessibleName(tr("Drive pad"));
     setProfile(*m_profile); // the items' tool tips
@@ -224,7 +225,7 @@ void DrivePad::updateAccessibleDescription()
 {
     QString text = spokenDescription(m_command);
     if (m_passive)
-        text = tr("Passive mode: enter Safe to drive");
+        text = m_passiveLabel->text();
     // Only a change is announced, so set it only when it differs.
     if (m_area->accessibleDescription() != text)
         m_area->setAccessibleDescription(text);
@@ -277,6 +278,22 @@ void DrivePad::setPassive(bool passive)
         resetToCentre();
     updateAccessibleDescription();
 }
+
+void DrivePad::setReason(const QString &reason)
+{
+    m_reason = reason;
+    const QString text = reason.isEmpty() ? tr("Passive mode: enter Safe to drive") : reason;
+    if (text == m_passiveLabel->text())
+        return;
+    m_passiveLabel->setText(text);
+    // A reason is an alert, as in the Modes dock; the plain hint is not.
+    m_passiveLabel->setStyleSheet(reason.isEmpty() ? QString()
+                                                   : QString("QLabel { color: %1; font-weight: bold; }")
+                                                         .arg(display::stateColor(display::State::Alert, palette()).name()));
+    updateAccessibleDescription();
+}
+
+QString DrivePad::passiveText() const { return m_passiveBar->isHidden() ? QString() : m_passiveLabel->text(); }
 
 void DrivePad::resetToCentre()
 {

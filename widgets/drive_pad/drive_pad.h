@@ -38,6 +38,10 @@ public:
     // and offers Safe mode instead.
     void setPassive(bool passive);
     bool isPassive() const { return m_passive; }
+    // Why the robot is in Passive and what fixes it, from its session
+    // (RobotMode); shown beside Enter Safe. Empty: the plain hint.
+    void setReason(const QString &reason);
+    QString passiveText() const;
     // Back to the centre without asking for anything: the stop was decided
     // elsewhere (mode change, Stop All, focus loss).
     void resetToCentre();
@@ -87,6 +91,7 @@ private:
     QWidget *m_passiveBar = nullptr;
     QLabel *m_passiveLabel = nullptr;
     QPushButton *m_enterSafe = nullptr;
+    QString m_reason;
     QPointF m_knob;
     MotionCommand m_command;
     bool m_passive = false;

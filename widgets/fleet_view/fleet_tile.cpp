@@ -39,7 +39,9 @@ QString FleetTile::statusText() const
 
 QString FleetTile::modeText() const
 {
-    const QString mode = m_values.mode.isEmpty() ? tr("mode not known") : m_values.mode;
+    QString mode = m_values.mode.isEmpty() ? tr("mode not known") : m_values.mode;
+    if (!m_values.modeReason.isEmpty())
+        mode = tr("%1: %2").arg(mode, m_values.modeReason);
     return m_values.batteryPercent ? tr("%1 · battery %2 %").arg(mode).arg(*m_values.batteryPercent) : mode;
 }
 

@@ -11,6 +11,7 @@ struct FleetTileValues {
     QString name;
     bool online = false;
     QString mode;                      // "Safe"; empty when not known
+    QString modeReason;                // "cliff (front left)": why it is in Passive; empty: nothing to say
     std::optional<int> batteryPercent; // not known until the bridge says
     bool bumpLeft = false;
     bool bumpRight = false;

@@ -20,13 +20,11 @@
 
 namespace {
 
-// A step in the list: its number and the first sentence of its text.
+// A step in the list: its number and the first sentence of its text, whole
+// (the list wraps it rather than cut it).
 QString stepCaption(int index, const QString &text)
 {
-    QString first = text.section(QLatin1Char('.'), 0, 0);
-    if (first.size() > 60)
-        first = first.left(57) + QStringLiteral("…");
-    return QStringLiteral("%1. %2").arg(index + 1).arg(first);
+    return QStringLiteral("%1. %2").arg(index + 1).arg(text.section(QLatin1Char('.'), 0, 0));
 }
 
 } // namespace
@@ -54,6 +52,8 @@ LessonPanel::LessonPanel(QWidget *parent) : QWidget(parent)
     m_steps = new QListWidget(this);
     m_steps->setObjectName("lessonSteps");
     m_steps->setWordWrap(true);
+    m_steps->setTextElideMode(Qt::ElideNone);
+    m_steps->setResizeMode(QListView::Adjust); // wrapped again at every width
     m_steps->setMinimumHeight(fontMetrics().height() * 4);
     m_view = new LessonStepView(this);
     // In a short dock the step scrolls rather than making the window taller.
@@ -262,6 +262,13 @@ void LessonPanel::refresh()
         return;
     const bool live = m_robot && m_robot->isLive();
     m_view->refresh(m_robot ? m_robot->latest() : oi::SensorSnapshot(), !live, &m_runner);
+    // A goal the robot's state now rules out says so, and what to do.
+    QString outOfReach;
+    if (m_robot && !m_runner.isFinished() && m_runner.progress() < 1) {
+        const LessonGoal &goal = m_runner.lesson().steps[m_runner.currentStep()].goal;
+        outOfReach = m_robot->mode().outOfReach(lesson::goalPackets(goal), lesson::goalDrives(goal));
+    }
+    m_view->setOutOfReach(outOfReach);
 }
 
 void LessonPanel::showError(const QString &message)

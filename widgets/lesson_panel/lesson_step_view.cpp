@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "lesson_step_view.h"
 
+#include "display_palette.h"
 #include "lesson_runner.h"
 #include "oi_text.h"
 #include "robot_diagram.h"
@@ -46,7 +47,14 @@ LessonStepView::LessonStepView(QWidget *parent)
     m_goal->setWordWrap(true);
     m_progress = new QProgressBar(this);
     m_progress->setRange(0, 100);
-    m_progress->setTextVisible(false);
+    m_progress->setObjectName("lessonProgress");
+    // With its figure in it, never an empty box beside the goal.
+    m_progress->setTextVisible(true);
+    m_progress->setAlignment(Qt::AlignCenter);
+    m_outOfReach = new QLabel(this);
+    m_outOfReach->setObjectName("lessonOutOfReach");
+    m_outOfReach->setWordWrap(true);
+    m_outOfReach->hide();
     m_diagram = new RobotDiagram(this);
     m_plots = new SensorPlots(this);
     m_plots->setWindowSeconds(30);
@@ -66,6 +74,7 @@ LessonStepView::LessonStepView(QWidget *parent)
     layout->addWidget(m_heading);
     layout->addWidget(m_text);
     layout->addLayout(goalRow);
+    layout->addWidget(m_outOfReach);
     layout->addWidget(views, 1);
     layout->addLayout(m_readoutRow);
     applyScale();
@@ -114,6 +123,7 @@ void LessonStepView::applyScale()
     goal.setPointSizeF(font().pointSizeF() * 1.2 * m_scale);
     goal.setBold(true);
     m_goal->setFont(goal);
+    m_outOfReach->setFont(goal);
     m_progress->setFixedHeight(int(18 * m_scale));
     QFont plots = font();
     plots.setPointSizeF(font().pointSizeF() * std::max(1.0, m_scale * 0.7));
@@ -138,7 +148,10 @@ void LessonStepView::showStep()
         m_text->setText(lesson::translated(m_step->text));
         m_goal->setText(tr("Goal: %1").arg(describeGoal(m_step->goal, *m_profile)));
         m_progress->setValue(0);
+        m_progress->setFormat(tr("%p %"));
     }
+    if (!inLesson)
+        m_outOfReach->hide();
     m_diagram->setHighlightedParts(inLesson ? m_step->highlight : QStringList());
     std::vector<int> channels;
     for (const QString &key : inLesson ? m_step->plot : QStringList())
@@ -173,8 +186,11 @@ void LessonStepView::refresh(const oi::SensorSnapshot &latest, bool stale, const
     m_diagram->setStale(stale);
     if (isVisible())
         m_plots->refresh();
-    if (m_step && runner)
+    if (m_step && runner) {
         m_progress->setValue(int(std::lround(runner->progress() * 100)));
+        const double toRead = runner->secondsToRead();
+        m_progress->setFormat(toRead > 0 ? tr("Done · next in %1 s").arg(std::ceil(toRead)) : tr("%p %"));
+    }
     for (auto it = m_readouts.cbegin(); it != m_readouts.cend(); ++it) {
         const QString &key = it.key();
         ValueGauge *gauge = it.value();
@@ -213,6 +229,17 @@ QString LessonStepView::headingText() const { return m_step ? m_heading->text() 
 QString LessonStepView::stepText() const { return m_text->text(); }
 QString LessonStepView::goalText() const { return m_goal->text(); }
 int LessonStepView::progressPercent() const { return m_progress->value(); }
+QString LessonStepView::progressText() const { return m_progress->text(); }
+QString LessonStepView::outOfReachText() const { return m_outOfReach->isHidden() ? QString() : m_outOfReach->text(); }
+
+void LessonStepView::setOutOfReach(const QString &why)
+{
+    m_outOfReach->setText(why);
+    m_outOfReach->setVisible(m_step && !why.isEmpty());
+    QPalette alert = m_outOfReach->palette();
+    alert.setColor(QPalette::WindowText, display::stateColor(display::State::Alert, palette()));
+    m_outOfReach->setPalette(alert);
+}
 
 QString LessonStepView::readoutText(const QString &key) const
 {

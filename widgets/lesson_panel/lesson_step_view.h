@@ -38,12 +38,17 @@ public:
     // From the display timer: the robot's latest values, and the runner for
     // the goal's progress and the pose readouts (nullptr: none).
     void refresh(const oi::SensorSnapshot &latest, bool stale, const LessonRunner *runner);
+    // Why the goal cannot be met in the robot's state now and what to do
+    // (RobotMode::outOfReach()), shown under the goal; empty hides it.
+    void setOutOfReach(const QString &why);
 
     // What is shown, for tests and the projector.
     QString headingText() const;
     QString stepText() const;
     QString goalText() const;
     int progressPercent() const;
+    QString progressText() const;
+    QString outOfReachText() const;
     QStringList readoutKeys() const { return m_readoutKeys; }
     QString readoutText(const QString &key) const;
     RobotDiagram *diagram() const { return m_diagram; }
@@ -71,6 +76,7 @@ private:
     QLabel *m_text;
     QLabel *m_goal;
     QProgressBar *m_progress;
+    QLabel *m_outOfReach;
     RobotDiagram *m_diagram;
     SensorPlots *m_plots;
     QHBoxLayout *m_readoutRow;

@@ -16,24 +16,6 @@
 #include <QPushButton>
 #include <QVBoxLayout>
 
-namespace {
-
-// Why Safe mode fell back to Passive, from what the same frame shows.
-QString safetyReason(const oi::SensorSnapshot &s)
-{
-    QStringList reasons;
-    if (s.cliff(oi::CliffSensor::Left) || s.cliff(oi::CliffSensor::FrontLeft)
-        || s.cliff(oi::CliffSensor::FrontRight) || s.cliff(oi::CliffSensor::Right))
-        reasons << ModePanel::tr("cliff");
-    if (s.wheelDropLeft() || s.wheelDropRight() || s.wheelDropCaster())
-        reasons << ModePanel::tr("wheel drop");
-    if (s.chargingSource(oi::ChargingSource::HomeBase) || s.chargingSource(oi::ChargingSource::InternalCharger))
-        reasons << ModePanel::tr("charger");
-    return reasons.isEmpty() ? ModePanel::tr("a safety condition") : reasons.join(ModePanel::tr(", "));
-}
-
-} // namespace
-
 ModePanel::ModePanel(QWidget *parent) : QWidget(parent)
 {
     m_confirmFull = [](QWidget *owner) {
@@ -93,6 +75,7 @@ ModePanel::ModePanel(QWidget *parent) : QWidget(parent)
     layout->addStretch();
 
     // Created row by row, so Tab already follows the layout.
+    setMode(RobotMode());
     retranslateUi();
 }
 
@@ -112,10 +95,7 @@ void ModePanel::retranslateUi()
     }
     m_demo->setToolTip(tr("Demo to run"));
     m_demo->setAccessibleName(tr("Demo"));
-    showMode(m_mode);
     refreshButtons();
-    if (m_safetyDropFrame)
-        m_safetyLabel->setText(safetyText(*m_safetyDropFrame));
     setFirmware(m_firmware);
 }
 
@@ -177,42 +157,26 @@ void ModePanel::setUnavailable(const QString &reason)
 
 void ModePanel::request(oi::Command command)
 {
-    const oi::CommandEncoder encoder(*m_profile);
+    if (!m_profile->has(command))
+        return; // its button is disabled, with the reason
     if (command == oi::Command::Full && !(m_confirmFull && m_confirmFull(this)))
         return;
-    oi::EncodeResult bytes = command == oi::Command::Demo ? encoder.demo(m_demo->currentData().toInt())
-                                                          : oi::encodeCommand(encoder, oi::commandSpec(command).name, {});
-    if (!bytes)
-        return; // buttons for unavailable commands are disabled; nothing else can fail
-    // Commands that put the robot in Passive on purpose: not a safety drop.
-    m_passiveRequested = command != oi::Command::Safe && command != oi::Command::Full;
-    if (!m_passiveRequested) {
-        m_safetyDropFrame.reset();
-        m_safetyLabel->clear();
-        m_safetyLabel->setVisible(false);
-    }
-    emit sendRequested(QByteArray(reinterpret_cast<const char *>(bytes->data()), qsizetype(bytes->size())));
+    emit modeRequested(command, command == oi::Command::Demo ? m_demo->currentData().toInt() : 0);
 }
 
-void ModePanel::setSnapshot(const oi::SensorSnapshot &snapshot)
+void ModePanel::setMode(const RobotMode &mode)
 {
-    if (!snapshot.has(35))
-        return;
-    const oi::OiMode mode = snapshot.oiMode();
-    if (m_mode == oi::OiMode::Safe && mode == oi::OiMode::Passive && !m_passiveRequested) {
-        m_safetyDropFrame = snapshot;
-        m_safetyLabel->setText(safetyText(snapshot));
-        m_safetyLabel->setVisible(true);
-    }
-    if (m_mode != mode)
-        m_passiveRequested = false;
-    showMode(mode);
+    const std::optional<oi::OiMode> reported = mode.reported();
+    m_modeLabel->setText(reported ? tr("Mode: %1").arg(oitext::modeName(*reported)) : tr("Mode: unknown"));
+    highlight(reported);
+    // Said only of the mode shown above it, by the same session.
+    const QString reason = mode.reason();
+    m_safetyLabel->setText(reason.isEmpty() ? QString() : reason + ' ' + mode.nextStep());
+    m_safetyLabel->setVisible(!reason.isEmpty());
 }
 
-void ModePanel::showMode(std::optional<oi::OiMode> mode)
+void ModePanel::highlight(std::optional<oi::OiMode> mode)
 {
-    m_mode = mode;
-    m_modeLabel->setText(mode ? tr("Mode: %1").arg(oitext::modeName(*mode)) : tr("Mode: unknown"));
     const QString highlighted = !mode ? QString()
                                 : *mode == oi::OiMode::Passive ? "passive"
                                 : *mode == oi::OiMode::Safe    ? "safe"
@@ -222,6 +186,7 @@ void ModePanel::showMode(std::optional<oi::OiMode> mode)
     const QColor text = display::textOn(display::State::Active, palette());
     for (const QString &name : {QString("passive"), QString("safe"), QString("full")}) {
         QPushButton *b = m_buttons.value(name);
+        b->setProperty("current", name == highlighted);
         b->setStyleSheet(name == highlighted ? QString("QPushButton { background: %1; color: %2; font-weight: bold; }")
                                                    .arg(fill.name(), text.name())
                                              : QString());
@@ -230,14 +195,16 @@ void ModePanel::showMode(std::optional<oi::OiMode> mode)
     m_safetyLabel->setStyleSheet(QString("QLabel { color: %1; font-weight: bold; }").arg(alert.name()));
 }
 
-std::optional<oi::OiMode> ModePanel::highlightedMode() const { return m_mode; }
+std::optional<oi::OiMode> ModePanel::highlightedMode() const
+{
+    for (auto [name, mode] : {std::pair{"passive", oi::OiMode::Passive}, std::pair{"safe", oi::OiMode::Safe},
+                              std::pair{"full", oi::OiMode::Full}})
+        if (m_buttons.value(name)->property("current").toBool())
+            return mode;
+    return std::nullopt;
+}
 
 QString ModePanel::safetyMessage() const { return m_safetyLabel->isHidden() ? QString() : m_safetyLabel->text(); }
-
-QString ModePanel::safetyText(const oi::SensorSnapshot &snapshot) const
-{
-    return tr("The robot left Safe mode by itself (%1) and is in Passive mode.").arg(safetyReason(snapshot));
-}
 
 void ModePanel::setFirmware(const QString &release)
 {

@@ -1,10 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
-#include "command_encoder.h"
-#include "sensor_snapshot.h"
+#include "robot_mode.h"
 
-#include <QByteArray>
 #include <QHash>
 #include <QWidget>
 
@@ -15,18 +13,19 @@ class QComboBox;
 class QLabel;
 class QPushButton;
 
-// The OI mode and cleaning commands. Buttons encode their command for the
-// current profile and emit the bytes; buttons for commands the profile lacks
-// are disabled with a tooltip saying why. The current mode (packet 35) is
-// highlighted, Full asks first, and a drop from Safe to Passive that nobody
-// asked for is explained.
+// The OI mode and cleaning commands. Buttons ask for their command
+// (modeRequested()); buttons for commands the profile lacks are disabled
+// with a tooltip saying why. It shows the selected robot's mode as its
+// session sees it (RobotMode): the mode reported is highlighted, and why it
+// changed is said, with the step that fixes it. Full asks first.
 class ModePanel : public QWidget {
     Q_OBJECT
 public:
     explicit ModePanel(QWidget *parent = nullptr);
 
     void setProfile(const oi::RobotProfile &profile);
-    void setSnapshot(const oi::SensorSnapshot &snapshot);
+    // What the selected robot's session says of its mode; nothing is kept.
+    void setMode(const RobotMode &mode);
     // Shown after Reset: the banner's firmware release, e.g. "release-3.4.1".
     void setFirmware(const QString &release);
     // Why no command can reach a robot now (no link, a replay), or empty when
@@ -39,23 +38,24 @@ public:
 
     QPushButton *button(const QString &name) const; // "start", "safe", "full", "demo", ...
     std::optional<oi::OiMode> highlightedMode() const;
-    // Sends a mode or cleaning command as its button would (Full asks first);
-    // for other inputs such as a gamepad's mode buttons.
+    // Asks for a mode or cleaning command as its button would (Full asks
+    // first); for other inputs such as a gamepad's mode buttons.
     void request(oi::Command command);
+    // Why the mode changed and what to do, as shown; empty when nothing is.
     QString safetyMessage() const;
 
 signals:
-    void sendRequested(const QByteArray &bytes);
+    // `demo` is the demo's number, for Demo only.
+    void modeRequested(oi::Command command, int demo);
 
 protected:
     void changeEvent(QEvent *e) override;
 
 private:
     void retranslateUi();
-    QString safetyText(const oi::SensorSnapshot &snapshot) const;
     QPushButton *addButton(const QString &name, oi::Command command);
     void refreshButtons();
-    void showMode(std::optional<oi::OiMode> mode);
+    void highlight(std::optional<oi::OiMode> mode);
 
     const oi::RobotProfile *m_profile = &oi::profile(oi::ProfileId::Create2);
     QHash<QString, QPushButton *> m_buttons;
@@ -64,10 +64,7 @@ private:
     QLabel *m_modeLabel = nullptr;
     QLabel *m_firmwareLabel = nullptr;
     QLabel *m_safetyLabel = nullptr;
-    std::optional<oi::OiMode> m_mode;
-    bool m_passiveRequested = false;
     QString m_firmware;
     QString m_unavailable;
-    std::optional<oi::SensorSnapshot> m_safetyDropFrame; // the frame that explains the drop shown
     std::function<bool(QWidget *)> m_confirmFull;
 };

@@ -9,6 +9,8 @@
 #include <QEvent>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QPushButton>
+#include <QKeyEvent>
 #include <QVBoxLayout>
 
 namespace {
@@ -34,6 +36,19 @@ ProjectorView::ProjectorView(QWidget *parent) : QWidget(parent)
     m_hint->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
     m_view = new LessonStepView(this);
     m_view->setScale(kScale);
+    m_reasonRow = new QWidget(this);
+    m_reasonLabel = new QLabel(m_reasonRow);
+    m_reasonLabel->setObjectName("projectorReason");
+    m_reasonLabel->setWordWrap(true);
+    m_enterSafe = new QPushButton(m_reasonRow);
+    m_enterSafe->setObjectName("projectorEnterSafe");
+    m_enterSafe->setFocusPolicy(Qt::NoFocus); // the view keeps the keys
+    connect(m_enterSafe, &QPushButton::clicked, this, &ProjectorView::safeRequested);
+    auto *reasonRow = new QHBoxLayout(m_reasonRow);
+    reasonRow->setContentsMargins(0, 0, 0, 0);
+    reasonRow->addWidget(m_reasonLabel, 1);
+    reasonRow->addWidget(m_enterSafe);
+    m_reasonRow->hide();
 
     auto *top = new QHBoxLayout;
     top->addWidget(m_header, 1);
@@ -41,6 +56,7 @@ ProjectorView::ProjectorView(QWidget *parent) : QWidget(parent)
     auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(24, 16, 24, 16);
     layout->addLayout(top);
+    layout->addWidget(m_reasonRow);
     layout->addWidget(m_view, 1);
 
     applyPalette();
@@ -73,6 +89,15 @@ void ProjectorView::applyPalette()
     QFont hint = font();
     hint.setPointSizeF(font().pointSizeF() * 1.5);
     m_hint->setFont(hint);
+    QFont reason = font();
+    reason.setPointSizeF(font().pointSizeF() * 1.2 * kScale);
+    reason.setBold(true);
+    m_reasonLabel->setFont(reason);
+    m_enterSafe->setFont(reason);
+    // Yellow points at what needs doing.
+    QPalette yellow = m_reasonLabel->palette();
+    yellow.setColor(QPalette::WindowText, QColor(0xff, 0xd6, 0x00));
+    m_reasonLabel->setPalette(yellow);
 }
 
 void ProjectorView::setRobot(const QString &name, const oi::RobotProfile &profile, const SensorHistory *history)
@@ -118,8 +143,8 @@ void ProjectorView::showHeader()
         parts << lesson::translated(m_runner->lesson().title);
     if (!m_robotName.isEmpty())
         parts << m_robotName;
-    if (m_latest.has(35))
-        parts << oitext::modeName(m_latest.oiMode());
+    if (!m_modeName.isEmpty())
+        parts << m_modeName;
     if (const auto battery = m_latest.batteryPercent())
         parts << tr("battery %1 %").arg(qRound(*battery));
     if (!m_live)
@@ -127,9 +152,23 @@ void ProjectorView::showHeader()
     if (m_runner && m_runner->isFinished())
         parts << tr("lesson complete");
     m_header->setText(parts.join(QStringLiteral(" · ")));
+    // Without live data nothing can be entered; the header says so.
+    const bool offer = m_offersSafe && m_live;
+    m_reasonLabel->setText(m_reason);
+    m_reasonRow->setVisible(offer);
 }
 
 QString ProjectorView::headerText() const { return m_header->text(); }
+QString ProjectorView::reasonText() const { return m_reasonRow->isHidden() ? QString() : m_reasonLabel->text(); }
+
+void ProjectorView::setMode(const RobotMode &mode, bool canCommand)
+{
+    m_modeName = mode.reported() ? oitext::modeName(*mode.reported()) : QString();
+    m_offersSafe = mode.ignoresMotion() && canCommand;
+    const QString reason = mode.reason();
+    m_reason = (reason.isEmpty() ? QString() : reason + ' ') + mode.nextStep();
+    showHeader();
+}
 
 bool ProjectorView::eventFilter(QObject *watched, QEvent *event)
 {
@@ -137,6 +176,16 @@ bool ProjectorView::eventFilter(QObject *watched, QEvent *event)
     if (watched == parentWidget() && (event->type() == QEvent::Resize || event->type() == QEvent::Show))
         setGeometry(parentWidget()->rect());
     return QWidget::eventFilter(watched, event);
+}
+
+void ProjectorView::keyPressEvent(QKeyEvent *event)
+{
+    // Enter: Enter Safe, while it is offered.
+    if ((event->key() == Qt::Key_Return || event->key() == Qt::Key_Enter) && m_enterSafe->isVisibleTo(this)) {
+        m_enterSafe->click();
+        return;
+    }
+    QWidget::keyPressEvent(event);
 }
 
 void ProjectorView::changeEvent(QEvent *event)
@@ -149,6 +198,7 @@ void ProjectorView::changeEvent(QEvent *event)
 void ProjectorView::retranslateUi()
 {
     m_hint->setText(tr("F11: leave the projector view · Esc: stop the robot and leave"));
+    m_enterSafe->setText(tr("Enter Safe (Enter)"));
     setAccessibleName(tr("Projector view"));
     showHeader();
 }

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "robot_mode.h"
 #include "sensor_snapshot.h"
 
 #include <QWidget>
@@ -8,6 +9,7 @@
 class LessonRunner;
 class LessonStepView;
 class QLabel;
+class QPushButton;
 class SensorHistory;
 
 // The view for the front of a classroom: white on black, large type, the
@@ -28,13 +30,26 @@ public:
     void lessonChanged();
     // From the display timer.
     void refresh(const oi::SensorSnapshot &latest, bool live);
+    // The selected robot's mode, from its session: the header names it, and
+    // a line below says why it changed with an Enter Safe button (Enter key),
+    // offered only while a command can reach the robot (`canCommand`: not a
+    // replay, a link up) and its data is live.
+    void setMode(const RobotMode &mode, bool canCommand = true);
 
     QString headerText() const;
+    QString reasonText() const;
+    QPushButton *enterSafeButton() const { return m_enterSafe; }
+
     LessonStepView *stepView() const { return m_view; }
+
+signals:
+    // The Enter Safe button or the Enter key.
+    void safeRequested();
 
 protected:
     bool eventFilter(QObject *watched, QEvent *event) override;
     void changeEvent(QEvent *event) override;
+    void keyPressEvent(QKeyEvent *event) override;
 
 private:
     void retranslateUi();
@@ -45,7 +60,14 @@ private:
     const LessonRunner *m_runner = nullptr;
     oi::SensorSnapshot m_latest;
     bool m_live = false;
+    // As the session said it last; shown, not decided here.
+    QString m_modeName;
+    bool m_offersSafe = false;
+    QString m_reason;
     QLabel *m_header;
+    QWidget *m_reasonRow;
+    QLabel *m_reasonLabel;
+    QPushButton *m_enterSafe;
     QLabel *m_hint;
     LessonStepView *m_view;
 };

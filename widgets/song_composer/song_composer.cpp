@@ -95,6 +95,7 @@ void SongComposer::retranslateUi()
     setButtonText("upload", tr("Upload slot"), tr("Send this slot's song to the robot (140)"));
     setButtonText("upload-all", tr("Upload all"), tr("Send every slot that has notes (140)"));
     setButtonText("play", tr("Play"), tr("Play this slot on the robot (141)"));
+    setPlayBlocked(m_playBlocked);
     setButtonText("preview", m_sink ? tr("Stop preview") : tr("Preview"), tr("Play this slot on the computer"));
     m_shape->setItemText(0, tr("Square tone"));
     m_shape->setItemText(1, tr("Sine tone"));
@@ -616,8 +617,21 @@ bool SongComposer::uploadAllSlots()
     return true;
 }
 
+void SongComposer::setPlayBlocked(const QString &why)
+{
+    m_playBlocked = why;
+    QWidget *play = control("play");
+    play->setEnabled(why.isEmpty());
+    play->setToolTip(why.isEmpty() ? tr("Play this slot on the robot (141)") : why);
+}
+
 bool SongComposer::playCurrentSlot()
 {
+    if (!m_playBlocked.isEmpty()) {
+        showMessage([=, this] { return QString(tr("Play song %1 refused: %2").arg(currentSlot()).arg(m_playBlocked)); },
+                    Tone::Error);
+        return false;
+    }
     const oi::CommandEncoder encoder(*m_profile);
     return send(encoder.play(currentSlot()), tr("Play song %1").arg(currentSlot()));
 }

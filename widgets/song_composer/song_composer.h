@@ -62,6 +62,9 @@ public:
     bool uploadCurrentSlot();
     bool uploadAllSlots();
     bool playCurrentSlot();
+    // Why the robot cannot play a song now (Passive mode), or empty: Play is
+    // then disabled with the reason as its tooltip, and refused.
+    void setPlayBlocked(const QString &why);
     bool transposeCurrent(int semitones);
     bool scaleCurrentDurations(double factor);
     bool saveSongs(const QString &path);
@@ -137,6 +140,7 @@ private:
     QElapsedTimer m_playClock;
 
     bool m_previewAvailable = false;
+    QString m_playBlocked;
     QAudioSink *m_sink = nullptr;
     QBuffer *m_previewBuffer = nullptr;
 };

@@ -1,0 +1,208 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "robot_mode.h"
+
+#include "command_catalog.h"
+#include "command_modes.h"
+
+#include <algorithm>
+
+namespace {
+
+constexpr oi::CliffSensor kCliffs[] = {oi::CliffSensor::Left, oi::CliffSensor::FrontLeft, oi::CliffSensor::FrontRight,
+                                       oi::CliffSensor::Right};
+// The packet keys of the cliff flags, in kCliffs' order; a goal on a cliff
+// signal ("cliff_front_left_signal") reads the same sensor.
+constexpr const char *kCliffKeys[] = {"cliff_left", "cliff_front_left", "cliff_front_right", "cliff_right"};
+
+std::uint8_t cliffBits(const oi::SensorSnapshot &frame)
+{
+    std::uint8_t bits = 0;
+    for (int i = 0; i < 4; ++i)
+        if (frame.cliff(kCliffs[i]))
+            bits |= std::uint8_t(1u << i);
+    return bits;
+}
+
+bool onCharger(const oi::SensorSnapshot &frame)
+{
+    return frame.chargingSource(oi::ChargingSource::HomeBase)
+           || frame.chargingSource(oi::ChargingSource::InternalCharger);
+}
+
+} // namespace
+
+void RobotMode::clear() { *this = RobotMode(); }
+
+void RobotMode::asked(oi::Command command, const QDateTime &at)
+{
+    m_asked = command;
+    m_askPending = true;
+    m_changedAt = at;
+    // Asking again is the answer to what was shown: a new request starts afresh.
+    m_cause = Cause::None;
+}
+
+bool RobotMode::ignoresMotion() const
+{
+    return m_reported == oi::OiMode::Passive || m_reported == oi::OiMode::Off;
+}
+
+bool RobotMode::causeStillShows(const oi::SensorSnapshot &frame) const
+{
+    return (m_cliffs & cliffBits(frame)) || (m_wheelDropLeft && frame.wheelDropLeft())
+           || (m_wheelDropRight && frame.wheelDropRight()) || (m_wheelDropCaster && frame.wheelDropCaster())
+           || (m_charger && onCharger(frame));
+}
+
+bool RobotMode::observe(const oi::SensorSnapshot &frame, const QDateTime &at)
+{
+    if (!frame.has(35))
+        return false;
+    const oi::OiMode mode = frame.oiMode();
+    const std::optional<oi::OiMode> before = m_reported;
+    const Cause causeBefore = m_cause;
+    if (before == mode) {
+        // A safety reason lasts as long as what caused it.
+        if (m_cause == Cause::Safety && !causeStillShows(frame))
+            m_cause = Cause::None;
+        return m_cause != causeBefore;
+    }
+    m_reported = mode;
+    m_cause = Cause::None;
+    if (mode == oi::OiMode::Passive) {
+        if (m_askPending && m_asked && oi::entersPassive(*m_asked)) {
+            m_cause = Cause::Asked;
+        } else if (before == oi::OiMode::Safe) {
+            m_cause = Cause::Safety;
+            m_changedAt = at;
+            m_cliffs = cliffBits(frame);
+            m_wheelDropLeft = frame.wheelDropLeft();
+            m_wheelDropRight = frame.wheelDropRight();
+            m_wheelDropCaster = frame.wheelDropCaster();
+            m_charger = onCharger(frame);
+        }
+    }
+    m_askPending = false;
+    return true;
+}
+
+QStringList RobotMode::trippedCliffs() const
+{
+    const QString names[] = {tr("left"), tr("front left"), tr("front right"), tr("right")};
+    QStringList tripped;
+    for (int i = 0; i < 4; ++i)
+        if (m_cliffs & (1u << i))
+            tripped << names[i];
+    return tripped;
+}
+
+QString RobotMode::causeWords() const
+{
+    QStringList parts;
+    if (m_cliffs)
+        parts << tr("cliff (%1)").arg(trippedCliffs().join(tr(", ")));
+    QStringList wheels;
+    if (m_wheelDropLeft)
+        wheels << tr("left");
+    if (m_wheelDropRight)
+        wheels << tr("right");
+    if (m_wheelDropCaster)
+        wheels << tr("caster");
+    if (!wheels.isEmpty())
+        parts << tr("wheel drop (%1)").arg(wheels.join(tr(", ")));
+    if (m_charger)
+        parts << tr("charger");
+    return parts.join(tr(" and "));
+}
+
+QString RobotMode::reason() const
+{
+    if (m_reported != oi::OiMode::Passive)
+        return {};
+    const QString time = m_changedAt.toString(QStringLiteral("HH:mm:ss"));
+    switch (m_cause) {
+    case Cause::None:
+        return {};
+    case Cause::Asked:
+        return tr("You asked for Passive at %1.").arg(time);
+    case Cause::Safety: {
+        const QString words = causeWords();
+        return words.isEmpty() ? tr("A safety stop dropped it to Passive at %1.").arg(time)
+                               : tr("A %1 dropped it to Passive at %2.").arg(words, time);
+    }
+    }
+    return {};
+}
+
+QString RobotMode::shortReason() const
+{
+    if (m_reported != oi::OiMode::Passive)
+        return {};
+    switch (m_cause) {
+    case Cause::None:
+        return {};
+    case Cause::Asked:
+        return tr("asked for");
+    case Cause::Safety: {
+        const QString words = causeWords();
+        return words.isEmpty() ? tr("safety stop") : words;
+    }
+    }
+    return {};
+}
+
+QString RobotMode::nextStep() const
+{
+    if (!ignoresMotion())
+        return {};
+    if (m_cause == Cause::Safety) {
+        if (m_cliffs)
+            return tr("Carry it back from the edge, then Enter Safe.");
+        if (m_wheelDropLeft || m_wheelDropRight || m_wheelDropCaster)
+            return tr("Put it back on its wheels, then Enter Safe.");
+        if (m_charger)
+            return tr("Take it off the charger, then Enter Safe.");
+    }
+    return tr("Enter Safe to drive.");
+}
+
+QString RobotMode::whyNot(oi::Command command) const
+{
+    if (!ignoresMotion() || !oi::needsSafeOrFull(command))
+        return {};
+    const oi::CommandSpec &spec = oi::commandSpec(command);
+    const QString name = QString::fromUtf8(spec.title.data(), qsizetype(spec.title.size()));
+    // The same reasons as oi::whyNotInPassive(), in the user's language.
+    if (command == oi::Command::PlayScript)
+        return tr("%1 needs Safe or Full mode: in Passive the Create ignores the script's Drive, so a wait never "
+                  "ends. Enter Safe first.").arg(name);
+    return tr("%1 needs Safe or Full mode: the robot ignores it in Passive. Enter Safe first.").arg(name);
+}
+
+QString RobotMode::outOfReach(const QStringList &goalPackets, bool drives) const
+{
+    if (!ignoresMotion())
+        return {};
+    if (m_cause == Cause::Safety && m_cliffs) {
+        QStringList goalCliffs;
+        bool goalReadsTripped = false;
+        const QString names[] = {tr("left"), tr("front left"), tr("front right"), tr("right")};
+        for (int i = 0; i < 4; ++i) {
+            const bool read = std::any_of(goalPackets.cbegin(), goalPackets.cend(), [&](const QString &key) {
+                return key == QLatin1String(kCliffKeys[i]) || key.startsWith(QLatin1String(kCliffKeys[i]) + '_');
+            });
+            if (read)
+                goalCliffs << names[i];
+            goalReadsTripped = goalReadsTripped || (read && (m_cliffs & (1u << i)));
+        }
+        // Another cliff sensor stopped the robot before the goal's own reached the edge.
+        if (!goalCliffs.isEmpty() && !goalReadsTripped)
+            return tr("Out of reach: %1 The goal needs the %2 cliff sensor to reach the edge first. Carry the robot "
+                      "back from the edge, Enter Safe, and drive at the edge head on.")
+                .arg(reason(), goalCliffs.join(tr(" or ")));
+    }
+    if (!drives)
+        return {};
+    const QString why = reason();
+    return tr("Out of reach: the robot does not drive in Passive mode. %1").arg((why.isEmpty() ? QString() : why + ' ') + nextStep());
+}

@@ -1,0 +1,73 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "robot_profile.h"
+#include "sensor_snapshot.h"
+
+#include <QCoreApplication>
+#include <QDateTime>
+#include <QString>
+#include <QStringList>
+
+#include <optional>
+
+// One robot's mode as the user sees it: what was asked (the mode commands
+// the session sent), what the robot reports (packet 35), and why it changed
+// ("A cliff (front left) dropped it to Passive at 12:03:04", "You asked for
+// Passive at …"). The session owns one and feeds it; every view reads it
+// from the selected session, so no view keeps a copy that could belong to
+// another robot. Plain values, no timers: a test feeds frames and times.
+class RobotMode {
+    Q_DECLARE_TR_FUNCTIONS(RobotMode)
+public:
+    enum class Cause {
+        None,      // nothing to explain
+        Asked,     // a command the user sent put it in Passive
+        Safety,    // Safe fell back to Passive by itself: a cliff, a wheel drop, the charger
+    };
+
+    // A new connection: nothing asked, nothing reported.
+    void clear();
+    // The user asked for a mode or cleaning command (sent at `at`).
+    void asked(oi::Command command, const QDateTime &at);
+    // A frame read at `at`. Returns true when what this shows changed.
+    bool observe(const oi::SensorSnapshot &frame, const QDateTime &at);
+
+    std::optional<oi::OiMode> reported() const { return m_reported; }
+    std::optional<oi::Command> lastAsked() const { return m_asked; }
+    // Passive or Off: the robot ignores motion, LEDs, songs (the documents'
+    // "Available in modes: Safe or Full").
+    bool ignoresMotion() const;
+    Cause cause() const { return m_cause; }
+
+    // Why the robot is in Passive, in a sentence; empty when nothing needs
+    // explaining. Only ever about the mode reported now.
+    QString reason() const;
+    // The same in a few words, for a fleet tile: "cliff (front left)".
+    QString shortReason() const;
+    // The one step that makes it work again, to go with reason():
+    // "Carry it back from the edge, then Enter Safe."
+    QString nextStep() const;
+    // Why `command` cannot work in the mode reported now, or empty when it can.
+    QString whyNot(oi::Command command) const;
+    // Why a lesson goal reading `goalPackets` (packet keys) can no longer be
+    // met in this mode, and what to do; empty when it still can. A goal that
+    // needs the robot to drive (`drives`) cannot be met while it ignores
+    // motion; a cliff goal cannot, once another cliff sensor stopped it.
+    QString outOfReach(const QStringList &goalPackets, bool drives) const;
+
+private:
+    QString causeWords() const;
+    QStringList trippedCliffs() const;
+    bool causeStillShows(const oi::SensorSnapshot &frame) const;
+
+    std::optional<oi::OiMode> m_reported;
+    std::optional<oi::Command> m_asked;
+    bool m_askPending = false; // asked, and the robot has not changed mode since
+    Cause m_cause = Cause::None;
+    QDateTime m_changedAt;
+    // What the frame that showed a safety drop saw.
+    std::uint8_t m_cliffs = 0; // bit per oi::CliffSensor
+    bool m_wheelDropLeft = false, m_wheelDropRight = false, m_wheelDropCaster = false;
+    bool m_charger = false;
+};

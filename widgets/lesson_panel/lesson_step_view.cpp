@@ -50,6 +50,11 @@ LessonStepView::LessonStepView(QWidget *parent)
     m_diagram = new RobotDiagram(this);
     m_plots = new SensorPlots(this);
     m_plots->setWindowSeconds(30);
+    // The step chooses what is plotted: no adding or exporting here, and
+    // the plot keeps the room those buttons would take on a small screen.
+    for (const char *tool : {"addPlot", "export"})
+        if (QWidget *button = m_plots->findChild<QWidget *>(tool))
+            button->hide();
 
     auto *goalRow = new QHBoxLayout;
     goalRow->addWidget(m_goal, 3);

@@ -31,20 +31,25 @@ public:
 
     QString headerText() const;
     LessonStepView *stepView() const { return m_view; }
+    // How many times the desktop's type size it shows, for the screen it is on.
+    qreal scale() const { return m_scale; }
 
 protected:
     bool eventFilter(QObject *watched, QEvent *event) override;
+    void resizeEvent(QResizeEvent *event) override;
     void changeEvent(QEvent *event) override;
 
 private:
     void retranslateUi();
     void applyPalette();
+    void applyScale();
     void showHeader();
 
     QString m_robotName;
     const LessonRunner *m_runner = nullptr;
     oi::SensorSnapshot m_latest;
     bool m_live = false;
+    qreal m_scale = 0;
     QLabel *m_header;
     QLabel *m_hint;
     LessonStepView *m_view;

@@ -211,7 +211,7 @@ void RobotDiagram::setStale(bool stale)
     update();
 }
 
-QSize RobotDiagram::minimumSizeHint() const { return {360, 360}; }
+QSize RobotDiagram::minimumSizeHint() const { return {240, 240}; }
 QSize RobotDiagram::sizeHint() const { return {520, 520}; }
 
 qreal RobotDiagram::sceneTop() const

@@ -836,6 +836,10 @@
         <source>Refresh</source>
         <translation>Aktualisieren</translation>
     </message>
+    <message>
+        <source>Disconnect to change the port</source>
+        <translation>Trennen, um den Anschluss zu ändern</translation>
+    </message>
 </context>
 <context>
     <name>ConnectionCheckup</name>

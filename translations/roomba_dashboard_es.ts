@@ -836,6 +836,10 @@
         <source>Refresh</source>
         <translation>Actualizar</translation>
     </message>
+    <message>
+        <source>Disconnect to change the port</source>
+        <translation>Desconecte para cambiar el puerto</translation>
+    </message>
 </context>
 <context>
     <name>ConnectionCheckup</name>

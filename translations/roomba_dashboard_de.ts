@@ -1703,6 +1703,21 @@ Klicken wählt diesen Roboter: jedes Dock zeigt ihn</translation>
         <source>IR %1</source>
         <translation>IR %1</translation>
     </message>
+    <message>
+        <source>Red</source>
+        <comment>the dock&apos;s red buoy, in a small box</comment>
+        <translation>Rot</translation>
+    </message>
+    <message>
+        <source>Green</source>
+        <comment>the dock&apos;s green buoy, in a small box</comment>
+        <translation>Grün</translation>
+    </message>
+    <message>
+        <source>Field</source>
+        <comment>the dock&apos;s force field, in a small box</comment>
+        <translation>Feld</translation>
+    </message>
 </context>
 <context>
     <name>LanguageMenu</name>
@@ -5270,6 +5285,10 @@ Gesendet: %2</translation>
     <message>
         <source>%1 cannot play 16-bit mono sound at %2 Hz; use Export WAV instead.</source>
         <translation>%1 kann keinen 16-Bit-Mono-Ton mit %2 Hz abspielen; verwenden Sie stattdessen den WAV-Export.</translation>
+    </message>
+    <message>
+        <source>song slot 4 may not play on some firmware (ERRATA 13)</source>
+        <translation>Liedplatz 4 spielt auf mancher Firmware nicht (ERRATA 13)</translation>
     </message>
 </context>
 <context>

@@ -1702,6 +1702,21 @@ Haga clic para seleccionar este robot: todos los paneles lo muestran</translatio
         <source>IR %1</source>
         <translation>IR %1</translation>
     </message>
+    <message>
+        <source>Red</source>
+        <comment>the dock&apos;s red buoy, in a small box</comment>
+        <translation>Roja</translation>
+    </message>
+    <message>
+        <source>Green</source>
+        <comment>the dock&apos;s green buoy, in a small box</comment>
+        <translation>Verde</translation>
+    </message>
+    <message>
+        <source>Field</source>
+        <comment>the dock&apos;s force field, in a small box</comment>
+        <translation>Campo</translation>
+    </message>
 </context>
 <context>
     <name>LanguageMenu</name>
@@ -5269,6 +5284,10 @@ Enviado: %2</translation>
     <message>
         <source>%1 cannot play 16-bit mono sound at %2 Hz; use Export WAV instead.</source>
         <translation>%1 no puede reproducir sonido mono de 16 bits a %2 Hz; use Exportar WAV en su lugar.</translation>
+    </message>
+    <message>
+        <source>song slot 4 may not play on some firmware (ERRATA 13)</source>
+        <translation>la ranura de canción 4 puede no sonar en algunos firmwares (ERRATA 13)</translation>
     </message>
 </context>
 <context>

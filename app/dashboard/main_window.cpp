@@ -162,7 +162,9 @@ void MainWindow::buildDocks()
 // The default widths and heights, for the language the window speaks now.
 void MainWindow::fitDocks()
 {
-    resizeDocks({findChild<QDockWidget *>("plotsDock")}, {300}, Qt::Vertical);
+    // The plots and editors below take nearly half of a tall window; on a
+    // short one the middle keeps the diagram's size and they the rest.
+    resizeDocks({findChild<QDockWidget *>("plotsDock")}, {std::max(300, height() * 45 / 100)}, Qt::Vertical);
     // The modes as wide as their buttons need, so that no row scrolls.
     resizeDocks({findChild<QDockWidget *>("modeDock"), findChild<QDockWidget *>("gaugesDock")},
                 {m_modePanel->minimumSizeHint().width() + 8, 440}, Qt::Horizontal);

@@ -199,8 +199,12 @@ void LessonStepView::refresh(const oi::SensorSnapshot &latest, bool stale, const
         }
         const std::int32_t value = latest.raw(p->id);
         if (isIrPacket(key)) {
-            gauge->setValue(oitext::infraredName(oi::decodeIrCharacter(*m_profile, std::uint8_t(value))));
-            gauge->setDetail(QString::number(value));
+            // The short name in the large type; the whole one below it.
+            const oi::IrCharacter ir = oi::decodeIrCharacter(*m_profile, std::uint8_t(value));
+            const QString full = oitext::infraredName(ir);
+            const QString shown = oitext::infraredShortName(ir);
+            gauge->setValue(shown);
+            gauge->setDetail(shown == full ? QString::number(value) : full + QStringLiteral(" · ") + QString::number(value));
         } else if (const auto bits = m_profile->bits(p->id); !bits.empty()) {
             QStringList on;
             for (const oi::BitMeaning &b : bits)

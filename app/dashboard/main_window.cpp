@@ -165,9 +165,12 @@ void MainWindow::fitDocks()
     // The plots and editors below take nearly half of a tall window; on a
     // short one the middle keeps the diagram's size and they the rest.
     resizeDocks({findChild<QDockWidget *>("plotsDock")}, {std::max(300, height() * 45 / 100)}, Qt::Vertical);
-    // The modes as wide as their buttons need, so that no row scrolls.
-    resizeDocks({findChild<QDockWidget *>("modeDock"), findChild<QDockWidget *>("gaugesDock")},
-                {m_modePanel->minimumSizeHint().width() + 8, 440}, Qt::Horizontal);
+    // The modes as wide as their buttons need, so that no row scrolls; the
+    // gauges narrower on a small screen, so that the diagram keeps its room.
+    const int modes = m_modePanel->minimumSizeHint().width() + 8;
+    const int gauges = std::clamp(width() - modes - 520, 300, 440);
+    resizeDocks({findChild<QDockWidget *>("modeDock"), findChild<QDockWidget *>("gaugesDock")}, {modes, gauges},
+                Qt::Horizontal);
 }
 
 void MainWindow::addRobot(RobotList::AddKind kind)

@@ -166,7 +166,11 @@ private slots:
         window.start(oilink::LinkSettings::virtualRobotOf(oi::ProfileId::Create2, oi::ProfileId::Create2), robots);
         QTRY_COMPARE_WITH_TIMEOUT(window.session().state(), oilink::LinkState::Streaming, 10000);
         QTRY_VERIFY_WITH_TIMEOUT(window.session().snapshotCount() > 5, 10000);
+        // Identified: the panels show the robot's own names, at their own widths.
+        for (RobotSession *robot : window.fleet().robots())
+            QTRY_VERIFY_WITH_TIMEOUT(robot->isIdentified(), 10000);
         window.refreshDisplay();
+        QApplication::processEvents();
         QCOMPARE(window.size(), client);
         const QRect inside = window.rect();
 

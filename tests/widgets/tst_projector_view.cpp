@@ -93,7 +93,7 @@ private slots:
         robot.setName("Robot 1");
         robot.setTransportFactory([](const oilink::LinkSettings &s) { return transports::createTransport(s, s.baud); });
         robot.connectTo(oilink::LinkSettings{});
-        QTRY_VERIFY_WITH_TIMEOUT(robot.snapshotCount() > 20, 10000);
+        QTRY_VERIFY_WITH_TIMEOUT(robot.snapshotCount() > 150, 20000); // a line to plot
 
         QWidget window;
         window.resize(1920, 1080);

@@ -162,9 +162,8 @@ void MainWindow::buildDocks()
 // The default widths and heights, for the language the window speaks now.
 void MainWindow::fitDocks()
 {
-    // The plots and editors below take nearly half of a tall window; on a
-    // short one the middle keeps the diagram's size and they the rest.
-    resizeDocks({findChild<QDockWidget *>("plotsDock")}, {std::max(300, height() * 45 / 100)}, Qt::Vertical);
+    // On a short screen the middle keeps the diagram's size and the plots the rest.
+    resizeDocks({findChild<QDockWidget *>("plotsDock")}, {300}, Qt::Vertical);
     // The modes as wide as their buttons need, so that no row scrolls; the
     // gauges narrower on a small screen, so that the diagram keeps its room.
     const int modes = m_modePanel->minimumSizeHint().width() + 8;

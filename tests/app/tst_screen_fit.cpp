@@ -224,6 +224,24 @@ private slots:
         QVERIFY2(found.isEmpty(), qPrintable(found.join('\n')));
     }
 
+    // More robots than the strip holds: the one selected elsewhere (the
+    // fleet view, the keyboard) scrolls into view, whole.
+    void selectedRobotComesIntoView()
+    {
+        MainWindow window;
+        window.resize(1280, 720 - kTitleBar);
+        window.show();
+        window.start(oilink::LinkSettings::virtualRobotOf(oi::ProfileId::Create2, oi::ProfileId::Create2), 8);
+        QTRY_COMPARE_WITH_TIMEOUT(window.robotList()->count(), 8, 10000);
+        for (int index : {7, 0, 5}) {
+            window.fleet().select(window.fleet().robots()[index]);
+            QApplication::processEvents();
+            RobotCard *card = window.robotList()->card(index);
+            QCOMPARE(shownPart(card), card->rect());
+        }
+        QVERIFY(shownPart(window.robotList()->card(7)) != window.robotList()->card(7)->rect()); // it did scroll
+    }
+
     // A lesson in its dock on a 1280×720 screen: the step's text, goal and
     // views within the window, nothing cut short.
     void lessonAt720p_data()

@@ -836,6 +836,10 @@
         <source>Refresh</source>
         <translation>Aktualisieren</translation>
     </message>
+    <message>
+        <source>Disconnect to change the port</source>
+        <translation>Trennen, um den Anschluss zu ändern</translation>
+    </message>
 </context>
 <context>
     <name>ConnectionCheckup</name>
@@ -1702,6 +1706,21 @@ Klicken wählt diesen Roboter: jedes Dock zeigt ihn</translation>
     <message>
         <source>IR %1</source>
         <translation>IR %1</translation>
+    </message>
+    <message>
+        <source>Red</source>
+        <comment>the dock&apos;s red buoy, in a small box</comment>
+        <translation>Rot</translation>
+    </message>
+    <message>
+        <source>Green</source>
+        <comment>the dock&apos;s green buoy, in a small box</comment>
+        <translation>Grün</translation>
+    </message>
+    <message>
+        <source>Field</source>
+        <comment>the dock&apos;s force field, in a small box</comment>
+        <translation>Feld</translation>
     </message>
 </context>
 <context>
@@ -5361,6 +5380,10 @@ Gesendet: %2</translation>
     <message>
         <source>Play song %1 refused: %2</source>
         <translation>Lied %1 abspielen abgelehnt: %2</translation>
+    </message>
+    <message>
+        <source>song slot 4 may not play on some firmware (ERRATA 13)</source>
+        <translation>Liedplatz 4 spielt auf mancher Firmware nicht (ERRATA 13)</translation>
     </message>
 </context>
 <context>

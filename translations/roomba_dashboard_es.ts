@@ -836,6 +836,10 @@
         <source>Refresh</source>
         <translation>Actualizar</translation>
     </message>
+    <message>
+        <source>Disconnect to change the port</source>
+        <translation>Desconecte para cambiar el puerto</translation>
+    </message>
 </context>
 <context>
     <name>ConnectionCheckup</name>
@@ -1701,6 +1705,21 @@ Haga clic para seleccionar este robot: todos los paneles lo muestran</translatio
     <message>
         <source>IR %1</source>
         <translation>IR %1</translation>
+    </message>
+    <message>
+        <source>Red</source>
+        <comment>the dock&apos;s red buoy, in a small box</comment>
+        <translation>Roja</translation>
+    </message>
+    <message>
+        <source>Green</source>
+        <comment>the dock&apos;s green buoy, in a small box</comment>
+        <translation>Verde</translation>
+    </message>
+    <message>
+        <source>Field</source>
+        <comment>the dock&apos;s force field, in a small box</comment>
+        <translation>Campo</translation>
     </message>
 </context>
 <context>
@@ -5360,6 +5379,10 @@ Enviado: %2</translation>
     <message>
         <source>Play song %1 refused: %2</source>
         <translation>Reproducir la canción %1 rechazado: %2</translation>
+    </message>
+    <message>
+        <source>song slot 4 may not play on some firmware (ERRATA 13)</source>
+        <translation>la ranura de canción 4 puede no sonar en algunos firmwares (ERRATA 13)</translation>
     </message>
 </context>
 <context>

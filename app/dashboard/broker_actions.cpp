@@ -5,6 +5,7 @@
 #include "fleet_console.h"
 #include "fleet_view.h"
 #include "saved_brokers.h"
+#include "screen_fit.h"
 
 #include <QAction>
 #include <QDialog>
@@ -72,6 +73,9 @@ bool BrokerActions::isConnected() const
 
 void BrokerActions::showFleetView()
 {
+    // First shown: no larger than the screen it opens on (a 720p projector).
+    if (!m_fleetView->isVisible())
+        m_fleetView->resize(screenfit::fitted(m_fleetView->size(), screenfit::available(m_fleetView).size()));
     m_fleetView->show();
     m_fleetView->raise();
     m_fleetView->activateWindow();

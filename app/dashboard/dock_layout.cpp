@@ -6,7 +6,13 @@
 #include <QCoreApplication>
 #include <QDockWidget>
 #include <QMainWindow>
+#include <QScrollArea>
 #include <QShowEvent>
+
+namespace {
+// What a pane keeps when squeezed: a few lines of it, and its scroll bars.
+constexpr QSize kMinimumPane(160, 90);
+} // namespace
 
 DockLayout::DockLayout(QMainWindow *window) : QObject(window), m_window(window)
 {
@@ -29,11 +35,32 @@ void DockLayout::retranslate()
 }
 
 QDockWidget *DockLayout::addDock(const QString &objectName, const char *title, QWidget *widget,
-                                 Qt::DockWidgetArea area, bool actsOnRobot)
+                                 Qt::DockWidgetArea area, bool namesRobot)
+{
+    // The pane scrolls rather than demand its whole size: every dock then
+    // fits a 1280×720 screen, and a small one keeps everything in reach.
+    auto *scroll = new QScrollArea;
+    scroll->setObjectName(objectName + QLatin1String("Scroll"));
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setFocusPolicy(Qt::NoFocus); // Tab goes into the pane, not to its frame
+    scroll->setWidget(widget);
+    scroll->setMinimumSize(widget->minimumSizeHint().boundedTo(kMinimumPane));
+    return add(objectName, title, widget, scroll, area, namesRobot);
+}
+
+QDockWidget *DockLayout::addBar(const QString &objectName, const char *title, QWidget *widget,
+                                Qt::DockWidgetArea area, bool namesRobot)
+{
+    return add(objectName, title, widget, widget, area, namesRobot);
+}
+
+QDockWidget *DockLayout::add(const QString &objectName, const char *title, QWidget *widget, QWidget *pane,
+                             Qt::DockWidgetArea area, bool namesRobot)
 {
     auto *dock = new QDockWidget(m_window);
     dock->setObjectName(objectName);
-    dock->setWidget(widget);
+    dock->setWidget(pane);
     m_window->addDockWidget(area, dock);
     // A dock whose tab comes up was "visible" all along to Qt, so its view
     // gets no show event of its own; it gets one here, to catch up with
@@ -45,7 +72,7 @@ QDockWidget *DockLayout::addDock(const QString &objectName, const char *title, Q
         }
     });
     m_docks << dock;
-    m_titles << Dock{dock, title, actsOnRobot};
+    m_titles << Dock{dock, title, namesRobot};
     return dock;
 }
 
@@ -66,7 +93,7 @@ void DockLayout::retitle(const QString &robotName)
     for (const Dock &d : m_titles) {
         // The titles are marked in MainWindow's context, where they are made.
         const QString title = QCoreApplication::translate("MainWindow", d.title);
-        d.dock->setWindowTitle(d.actsOnRobot && !robotName.isEmpty() ? tr("%1 — %2").arg(title, robotName) : title);
+        d.dock->setWindowTitle(d.namesRobot && !robotName.isEmpty() ? tr("%1 — %2").arg(title, robotName) : title);
     }
 }
 
@@ -88,8 +115,10 @@ QDockWidget *DockLayout::focusNextDock(int direction)
     QDockWidget *dock = open[next];
     dock->raise(); // a tabbed dock comes to the front
     // The first control that Tab would reach inside it; else the dock's widget.
-    QWidget *target = dock->widget();
-    for (QWidget *w = dock->widget()->nextInFocusChain(); w && w != dock->widget(); w = w->nextInFocusChain()) {
+    auto *scroll = qobject_cast<QScrollArea *>(dock->widget());
+    QWidget *pane = scroll ? scroll->widget() : dock->widget();
+    QWidget *target = pane;
+    for (QWidget *w = pane->nextInFocusChain(); w && w != pane; w = w->nextInFocusChain()) {
         if (!dock->isAncestorOf(w))
             continue;
         if ((w->focusPolicy() & Qt::TabFocus) && w->isVisible() && w->isEnabled()) {
@@ -97,7 +126,7 @@ QDockWidget *DockLayout::focusNextDock(int direction)
             break;
         }
     }
-    if (target == dock->widget() && target->focusPolicy() == Qt::NoFocus)
+    if (target == pane && target->focusPolicy() == Qt::NoFocus)
         target->setFocusPolicy(Qt::TabFocus);
     target->setFocus(Qt::ShortcutFocusReason);
     return dock;

@@ -10,8 +10,9 @@ class QDockWidget;
 class QMainWindow;
 class QWidget;
 
-// The window's docks: made, titled (in the current language, naming the
-// selected robot on the docks that act on it), laid out by default, reset,
+// The window's docks: made, each in a pane that scrolls when the screen is
+// small, titled (in the current language, the connection's naming the
+// selected robot), laid out by default, reset,
 // and visited from the keyboard with F6 and Shift+F6 (View → Next pane,
 // Previous pane, Reset layout).
 class DockLayout : public QObject {
@@ -19,10 +20,13 @@ class DockLayout : public QObject {
 public:
     explicit DockLayout(QMainWindow *window);
 
-    // `actsOnRobot`: driving and the editors, whose title names the robot
-    // they send to when there are several.
+    // `namesRobot`: the one dock whose title names the selected robot when
+    // there are several (once, so that the tabs' titles stay short).
     QDockWidget *addDock(const QString &objectName, const char *title, QWidget *widget, Qt::DockWidgetArea area,
-                         bool actsOnRobot = false);
+                         bool namesRobot = false);
+    // A bar of one row, which keeps its height and does not scroll.
+    QDockWidget *addBar(const QString &objectName, const char *title, QWidget *widget, Qt::DockWidgetArea area,
+                        bool namesRobot = false);
     const QList<QDockWidget *> &docks() const { return m_docks; }
     QAction *resetAction() const { return m_resetAction; }
     QAction *nextAction() const { return m_nextAction; }
@@ -35,16 +39,18 @@ public:
     // raising a tabbed one. Returns the dock that now has the focus.
     QDockWidget *focusNextDock(int direction);
 
-    // Titles in the current language; `robotName` is added to the acting
-    // docks' titles when not empty.
+    // Titles in the current language; `robotName` is added to the naming
+    // dock's title when not empty.
     void retitle(const QString &robotName);
     void retranslate();
 
 private:
+    QDockWidget *add(const QString &objectName, const char *title, QWidget *widget, QWidget *pane,
+                     Qt::DockWidgetArea area, bool namesRobot);
     struct Dock {
         QDockWidget *dock;
         const char *title; // untranslated
-        bool actsOnRobot;
+        bool namesRobot;
     };
     QMainWindow *m_window;
     QList<QDockWidget *> m_docks;

@@ -3,6 +3,7 @@
 #include "command_line.h"
 #include "language_switcher.h"
 #include "main_window.h"
+#include "screen_fit.h"
 #include "settings_file.h"
 #include "termination_signals.h"
 
@@ -66,8 +67,14 @@ int main(int argc, char **argv)
     });
     if (!line.language.isEmpty())
         window.setLanguage(line.language, false);
-    window.resize(1280, 860);
-    window.show();
+    // First start: a laptop's size, or the whole of a smaller screen.
+    const QRect room = screenfit::available(&window);
+    const QSize wanted(1280, 860);
+    window.resize(screenfit::fitted(wanted, room.size()));
+    if (room.width() < wanted.width() || room.height() < wanted.height())
+        window.showMaximized();
+    else
+        window.show();
     window.start(line.connection, line.robotCount);
     if (!line.recordPath.isEmpty())
         window.startRecording(line.recordPath);

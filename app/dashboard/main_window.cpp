@@ -114,11 +114,11 @@ void MainWindow::buildDocks()
     connect(m_lessons, &LessonPanel::lessonChanged, m_projector->view(), &ProjectorView::lessonChanged);
 
     DockLayout &l = *m_layout;
-    l.addDock("connectionDock", QT_TR_NOOP("Connection"), m_connectionBar, Qt::TopDockWidgetArea, true);
-    QDockWidget *modes = l.addDock("modeDock", QT_TR_NOOP("Modes"), m_modePanel, Qt::LeftDockWidgetArea, true);
+    l.addBar("connectionDock", QT_TR_NOOP("Connection"), m_connectionBar, Qt::TopDockWidgetArea, true);
+    QDockWidget *modes = l.addDock("modeDock", QT_TR_NOOP("Modes"), m_modePanel, Qt::LeftDockWidgetArea);
     // A tab beside the modes, not below them: stacked, the two would make the
     // window taller than a laptop screen. The pad offers Enter Safe itself.
-    tabifyDockWidget(modes, l.addDock("driveDock", QT_TR_NOOP("Drive"), m_drivePad, Qt::LeftDockWidgetArea, true));
+    tabifyDockWidget(modes, l.addDock("driveDock", QT_TR_NOOP("Drive"), m_drivePad, Qt::LeftDockWidgetArea));
     modes->raise();
     QDockWidget *gauges = l.addDock("gaugesDock", QT_TR_NOOP("Gauges"), m_gauges, Qt::RightDockWidgetArea);
     // The signal bars share the right with the gauges: on a laptop screen the
@@ -138,8 +138,7 @@ void MainWindow::buildDocks()
                                        std::tuple{"mapDock", QT_TR_NOOP("Odometry map"), static_cast<QWidget *>(m_map)},
                                        std::tuple{"gamepadDock", QT_TR_NOOP("Gamepad"), static_cast<QWidget *>(m_gamepadPanel)},
                                        std::tuple{"lessonDock", QT_TR_NOOP("Lesson"), static_cast<QWidget *>(m_lessons)}}) {
-        const bool acts = widget != m_map;
-        QDockWidget *dock = l.addDock(name, title, widget, Qt::BottomDockWidgetArea, acts);
+        QDockWidget *dock = l.addDock(name, title, widget, Qt::BottomDockWidgetArea);
         tabifyDockWidget(below, dock);
         below = dock;
     }
@@ -149,8 +148,7 @@ void MainWindow::buildDocks()
         m_plots->addPlot();
     m_plots->setChannels(0, {28, 29, 30, 31});
     m_plots->addPlot({22, 23});
-    resizeDocks({plots}, {300}, Qt::Vertical);
-    resizeDocks({modes, gauges}, {420, 480}, Qt::Horizontal);
+    fitDocks();
 
     m_keyboard = new KeyboardDriving(this, m_plots, this);
     m_view = new SelectedRobotView(m_fleet, *m_room,
@@ -159,6 +157,19 @@ void MainWindow::buildDocks()
                                     m_lessons, m_projector->view(), m_keyboard, m_status, m_recording, m_robotBar},
                                    this);
     connect(m_view, &SelectedRobotView::message, this, &MainWindow::showMessage);
+}
+
+// The default widths and heights, for the language the window speaks now.
+void MainWindow::fitDocks()
+{
+    // On a short screen the middle keeps the diagram's size and the plots the rest.
+    resizeDocks({findChild<QDockWidget *>("plotsDock")}, {300}, Qt::Vertical);
+    // The modes as wide as their buttons need, so that no row scrolls; the
+    // gauges narrower on a small screen, so that the diagram keeps its room.
+    const int modes = m_modePanel->minimumSizeHint().width() + 8;
+    const int gauges = std::clamp(width() - modes - 520, 300, 440);
+    resizeDocks({findChild<QDockWidget *>("modeDock"), findChild<QDockWidget *>("gaugesDock")}, {modes, gauges},
+                Qt::Horizontal);
 }
 
 void MainWindow::addRobot(RobotList::AddKind kind)
@@ -199,7 +210,7 @@ void MainWindow::onRobotAdded(RobotSession *robot)
             showSelected(robot);
     });
     m_robotBar->refresh();
-    showTitles(); // a second robot: the docks that act on one now say which
+    showTitles(); // a second robot: the window now says which one the docks act on
 }
 
 void MainWindow::wireInputs()
@@ -268,7 +279,7 @@ void MainWindow::showSelected(RobotSession *robot)
     showTitles();
 }
 
-// With several robots, the window and the docks that act on one name the selected robot.
+// With several robots, the window and the connection dock name the selected robot.
 void MainWindow::showTitles()
 {
     const QString name = m_fleet.count() > 1 && m_fleet.selected() ? m_fleet.selected()->name() : QString();
@@ -370,7 +381,10 @@ void MainWindow::start(const std::optional<oilink::LinkSettings> &override, int 
 {
     QSettings settings;
     restoreGeometry(settings.value("window/geometry").toByteArray());
-    restoreState(settings.value("window/state").toByteArray());
+    if (!restoreState(settings.value("window/state").toByteArray())) {
+        fitDocks(); // a first start, maybe in another language than the one built in
+        m_layout->keepAsDefault();
+    }
     if (override) {
         m_keepSavedRobots = true;
         for (int i = 0; i < count; ++i) {

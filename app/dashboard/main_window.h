@@ -143,6 +143,7 @@ protected:
 
 private:
     void buildDocks();
+    void fitDocks();
     void buildActions();
     void buildMenus();
     void wireInputs();

@@ -252,7 +252,9 @@ private slots:
         QTest::mouseClick(rig.window.robotList()->card(1), Qt::LeftButton);
         QCOMPARE(rig.window.fleet().selected(), rig.robot(1));
         QVERIFY(rig.window.statusText().contains("Bea"));
-        QVERIFY(rig.window.findChild<QDockWidget *>("driveDock")->windowTitle().contains("Bea"));
+        // Named once, above the docks; their tabs keep their short titles.
+        QVERIFY(rig.window.findChild<QDockWidget *>("connectionDock")->windowTitle().contains("Bea"));
+        QCOMPARE(rig.window.findChild<QDockWidget *>("driveDock")->windowTitle(), QString("Drive"));
         QCOMPARE(rig.window.sensorPlots()->history(), &rig.robot(1)->history());
         // The inspector shows the selected robot's own recent bytes.
         const RecentBytes &recent = rig.robot(1)->recentBytes();

@@ -457,7 +457,7 @@ private slots:
         OdometryMap *map = window.odometryMap();
         QTRY_VERIFY(map->isVisible());
         map->setScale(0.12);
-        map->setViewCentreMm({1000, 300});
+        map->setViewCentreMm({1000, 1100}); // the wall and where it goes, in a map of any height
         window.refreshDisplay();
         QVERIFY(map->world());
         QTest::mouseClick(map->findChild<QPushButton *>("editRoom"), Qt::LeftButton);

@@ -147,8 +147,16 @@ private slots:
         QSignalSpy spy(&bar, &ConnectionBar::disconnectRequested);
         QTest::mouseClick(bar.findChild<QPushButton *>("disconnect"), Qt::LeftButton);
         QCOMPARE(spy.count(), 1);
+        // The greyed fields say how to change them, beside them and on each.
+        bar.show();
+        const auto *hint = bar.findChild<QLabel *>("lockedHint");
+        QVERIFY(hint->isVisible());
+        QCOMPARE(hint->text(), QString("Disconnect to change the port"));
+        QCOMPARE(bar.findChild<QComboBox *>("transport")->toolTip(), hint->text());
         bar.setConnected(false);
         QVERIFY(bar.findChild<QPushButton *>("connect")->isEnabled());
+        QVERIFY(!hint->isVisible());
+        QVERIFY(bar.findChild<QComboBox *>("transport")->toolTip().isEmpty());
         bar.showError("Port busy");
         QCOMPARE(bar.errorText(), QString("Port busy"));
     }

@@ -106,6 +106,53 @@ private slots:
         QVERIFY(view.columns() >= 1);
     }
 
+    // Maximized on a 1080p screen the tiles and their type grow until the
+    // robots fill the screen, all in view, from 3 robots to 30; on a 720p
+    // one a robot alone as large as tiles get. Screenshots into ROOMBA_SCREENSHOTS when set.
+    void tilesFillTheScreen_data()
+    {
+        QTest::addColumn<int>("robots");
+        QTest::addColumn<QSize>("screen");
+        QTest::addRow("3 at 1920x1080") << 3 << QSize(1920, 1080);
+        QTest::addRow("30 at 1920x1080") << 30 << QSize(1920, 1080);
+        QTest::addRow("1 at 1280x720") << 1 << QSize(1280, 720);
+    }
+    void tilesFillTheScreen()
+    {
+        QFETCH(int, robots);
+        QFETCH(QSize, screen);
+        FleetView view;
+        view.setBrokerText(QStringLiteral("broker.local:1883"), true);
+        QList<FleetTileValues> tiles;
+        for (int i = 1; i <= robots; ++i)
+            tiles << robot(i);
+        view.setTiles(tiles);
+        view.resize(screen);
+        view.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&view));
+        QCoreApplication::processEvents();
+        QRect covered;
+        for (const FleetTile *t : view.tiles()) {
+            const QRect at(t->mapTo(&view, QPoint(0, 0)), t->size());
+            QVERIFY2(view.rect().contains(at), qPrintable(t->values().name + " is out of view"));
+            QVERIFY(t->width() >= t->sizeHint().width() && t->height() >= t->sizeHint().height());
+            covered |= at;
+        }
+        // The tiles reach across the screen one way or the other (one robot
+        // alone as large as tiles get).
+        QVERIFY2(covered.width() >= screen.width() * 0.85 || covered.height() >= screen.height() * 0.8
+                     || view.tileScale() >= 2.9,
+                 qPrintable(QStringLiteral("%1x%2").arg(covered.width()).arg(covered.height())));
+        if (robots <= 3)
+            QVERIFY2(view.tileScale() >= 2, qPrintable(QString::number(view.tileScale())));
+        const QString dir = qEnvironmentVariable("ROOMBA_SCREENSHOTS");
+        if (!dir.isEmpty()) {
+            QDir().mkpath(dir);
+            QVERIFY(view.grab().save(
+                QDir(dir).filePath(QStringLiteral("fleet_%1x%2_%3robots.png").arg(screen.width()).arg(screen.height()).arg(robots))));
+        }
+    }
+
     // Only the tile whose values changed repaints: robot-2 changes, and by
     // the time it has repainted, robot-1 (given the same values) has not.
     void onlyAChangedTileRepaints()

@@ -250,6 +250,21 @@ private slots:
         QCOMPARE(sent(spy, 1), bytes({163, 1, 4, 0, 64}));
     }
 
+    // The warning after sending raw digits is the window's own, translated
+    // message, not the encoder's English beside translated text.
+    void warningAfterSendingSpeaksTheLanguage()
+    {
+        LedEditor editor;
+        show(editor);
+        ScopedPseudoTranslation pseudo;
+        QCoreApplication::processEvents();
+        QTest::mouseClick(child<QPushButton>(editor, "clearSegments"), Qt::LeftButton);
+        editor.apply();
+        QVERIFY(!editor.message().isEmpty());
+        for (const QString &line : editor.message().split('\n'))
+            QVERIFY2(!looksUntranslated(line), qPrintable(line));
+    }
+
     void everySegmentOfEveryDigit()
     {
         LedEditor editor;

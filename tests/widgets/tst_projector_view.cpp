@@ -146,6 +146,54 @@ private slots:
         view.refresh(frame(oi::OiMode::Passive, true), false);
         QVERIFY(!view.enterSafeButton()->isVisible());
         QVERIFY(view.headerText().contains("NO LIVE DATA"));
+    // On a 1280×720 projector the type is smaller, in proportion, so that the
+    // step, the plot with its time axis and the readouts all fit; the hint
+    // sits at the foot, clear of the header.
+    void lessonAt1280x720()
+    {
+        RobotSession robot;
+        robot.setName("Robot 1");
+        robot.setTransportFactory([](const oilink::LinkSettings &s) { return transports::createTransport(s, s.baud); });
+        robot.connectTo(oilink::LinkSettings{});
+        QTRY_VERIFY_WITH_TIMEOUT(robot.snapshotCount() > 150, 20000); // a line to plot
+
+        QWidget window;
+        window.resize(1920, 1080);
+        ProjectorView view(&window);
+        view.setRobot(robot.name(), robot.robotProfile(), &robot.history());
+        LessonRunner runner;
+        runner.start(*loadLessonFile(":/lessons/cliff_sensors.json"), robot.robotProfile());
+        view.setLesson(&runner);
+        window.show();
+        view.show();
+        const qreal fullHd = view.scale();
+        window.resize(1280, 720);
+        QTRY_COMPARE(view.size(), QSize(1280, 720));
+        QVERIFY2(view.scale() < fullHd * 0.75, qPrintable(QString::number(view.scale())));
+        view.refresh(robot.latest(), robot.isLive());
+        QCoreApplication::processEvents();
+
+        const auto *header = view.findChild<QLabel *>("projectorHeader");
+        const auto *hint = view.findChild<QLabel *>("projectorHint");
+        QVERIFY(!header->geometry().intersects(hint->geometry()));
+        QVERIFY(header->heightForWidth(header->width()) <= header->height());
+        const auto *text = view.findChild<QLabel *>("lessonStepText");
+        QVERIFY(text->heightForWidth(text->width()) <= text->height());
+        // Every part whole inside the view: the plot (its time axis at its
+        // foot), the readouts, the hint.
+        QStringList outside;
+        for (const QWidget *w : view.findChildren<QWidget *>()) {
+            if (!w->isVisible() || w->isWindow())
+                continue;
+            const QRect at(w->mapTo(&view, QPoint(0, 0)), w->size());
+            if (!view.rect().contains(at))
+                outside << QStringLiteral("%1 %2 at %3,%4 %5x%6")
+                               .arg(w->metaObject()->className(), w->objectName())
+                               .arg(at.x()).arg(at.y()).arg(at.width()).arg(at.height());
+        }
+        QVERIFY2(outside.isEmpty(), qPrintable(outside.join('\n')));
+        saveShot(view, "projector_1280x720_lesson");
+        robot.closeAndWait();
     }
 };
 

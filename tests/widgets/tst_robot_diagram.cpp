@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "display_palette.h"
 #include "pseudo_translation.h"
+#include "oi_text.h"
 #include "robot_diagram.h"
 #include "sensor_scenes.h"
 
@@ -50,11 +51,25 @@ private:
     }
 
 private slots:
+    // The dock's beams in a few letters where a box is small; the spoken
+    // and tooltip texts keep the whole name.
+    void dockBeamsHaveAShortName()
+    {
+        oi::IrCharacter ir = oi::decodeIrCharacter(profile(ProfileId::Create2), 172);
+        QCOMPARE(oitext::infraredName(ir), QString("Red Buoy and Green Buoy"));
+        QCOMPARE(oitext::infraredShortName(ir), QString("Red + Green"));
+        ir = oi::decodeIrCharacter(profile(ProfileId::Create2), 173);
+        QCOMPARE(oitext::infraredShortName(ir), QString("Red + Green + Field"));
+        ir = oi::decodeIrCharacter(profile(ProfileId::Create2), 129);
+        QCOMPARE(oitext::infraredShortName(ir), oitext::infraredName(ir)); // a remote's key as it is
+    }
+
     void sizeHintsAreLargeEnoughToRead()
     {
         RobotDiagram w;
-        QVERIFY(w.minimumSizeHint().width() >= 360);
-        QVERIFY(w.minimumSizeHint().height() >= 360);
+        // Small enough for the middle of a 1280×720 window, large enough to read.
+        QVERIFY(w.minimumSizeHint().width() >= 240);
+        QVERIFY(w.minimumSizeHint().height() >= 240);
         QVERIFY(w.sizeHint().width() >= w.minimumSizeHint().width());
         QVERIFY(w.sizeHint().height() >= w.minimumSizeHint().height());
     }

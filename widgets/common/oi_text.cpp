@@ -35,6 +35,20 @@ QString packetLabel(const oi::PacketInfo &info)
     return info.unit.empty() ? name : QStringLiteral("%1 [%2]").arg(name, fromView(info.unit));
 }
 
+QString infraredShortName(const oi::IrCharacter &ir)
+{
+    if (ir.kind != oi::IrCharacter::Kind::DockBeams || !(ir.redBuoy || ir.greenBuoy || ir.forceField))
+        return infraredName(ir);
+    QStringList parts;
+    if (ir.redBuoy)
+        parts << QCoreApplication::translate("InfraredName", "Red", "the dock's red buoy, in a small box");
+    if (ir.greenBuoy)
+        parts << QCoreApplication::translate("InfraredName", "Green", "the dock's green buoy, in a small box");
+    if (ir.forceField)
+        parts << QCoreApplication::translate("InfraredName", "Field", "the dock's force field, in a small box");
+    return parts.join(QStringLiteral(" + "));
+}
+
 QString infraredName(const oi::IrCharacter &ir)
 {
     using Kind = oi::IrCharacter::Kind;

@@ -18,6 +18,9 @@ QString fromView(std::string_view text); // untranslated
 QString packetName(const oi::PacketInfo &info);   // "Cliff Left" -> "Abgrund links"
 QString bitName(const oi::BitMeaning &bit);
 QString infraredName(const oi::IrCharacter &ir);  // composed from translated parts
+// The same, short enough for a small box: the dock's beams as "Red + Green
+// + Field"; every other character as infraredName() says it.
+QString infraredShortName(const oi::IrCharacter &ir);
 // "Cliff Left [mm]" or just the name when the packet has no unit.
 QString packetLabel(const oi::PacketInfo &info);
 // "Passive", "Safe", ... in the words the mode panel uses.

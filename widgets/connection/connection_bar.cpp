@@ -47,6 +47,9 @@ ConnectionBar::ConnectionBar(QWidget *parent) : QWidget(parent)
     m_connect->setObjectName("connect");
     m_disconnect = new QPushButton(this);
     m_disconnect->setObjectName("disconnect");
+    m_lockedHint = new QLabel(this);
+    m_lockedHint->setObjectName("lockedHint");
+    m_lockedHint->setEnabled(false); // greyed as the fields it speaks of
     m_error = new QLabel(this);
     m_error->setObjectName("error");
     m_error->setWordWrap(true);
@@ -62,6 +65,7 @@ ConnectionBar::ConnectionBar(QWidget *parent) : QWidget(parent)
     row->addWidget(m_profile);
     row->addWidget(m_baud);
     row->addStretch(); // takes the room when no port or bridge field shows
+    row->addWidget(m_lockedHint);
     row->addWidget(m_connect);
     row->addWidget(m_disconnect);
     auto *layout = new QVBoxLayout(this);
@@ -95,7 +99,6 @@ void ConnectionBar::retranslateUi()
     m_port->lineEdit()->setPlaceholderText(tr("/dev/ttyUSB0 or a typed path"));
     m_port->setAccessibleName(tr("Serial port"));
     m_refresh->setText(tr("Refresh"));
-    m_refresh->setToolTip(tr("List the serial ports again"));
     m_tcp->setPlaceholderText(tr("host:port, e.g. raspberrypi:3333"));
     m_tcp->setAccessibleName(tr("TCP bridge"));
     m_profile->setItemText(0, tr("Auto"));
@@ -104,6 +107,11 @@ void ConnectionBar::retranslateUi()
     m_baud->setAccessibleName(tr("Baud rate"));
     m_connect->setText(tr("Connect"));
     m_disconnect->setText(tr("Disconnect"));
+    // Said beside the greyed fields, and on each of them.
+    m_lockedHint->setText(tr("Disconnect to change the port"));
+    for (QWidget *w : std::initializer_list<QWidget *>{m_transport, m_port, m_refresh, m_tcp, m_profile, m_baud, m_connect})
+        w->setToolTip(m_connected ? m_lockedHint->text() : QString());
+    m_refresh->setToolTip(m_connected ? m_lockedHint->text() : tr("List the serial ports again"));
     if (m_ownError != OwnError::None)
         showOwnError(m_ownError);
 }
@@ -210,11 +218,14 @@ void ConnectionBar::tryConnect()
 
 void ConnectionBar::setConnected(bool connected)
 {
+    m_connected = connected;
+    m_lockedHint->setVisible(connected);
     m_connect->setEnabled(!connected);
     m_disconnect->setEnabled(connected);
     for (QWidget *w : std::initializer_list<QWidget *>{m_transport, m_port, m_refresh, m_tcp, m_profile})
         w->setEnabled(!connected);
     m_baud->setEnabled(!connected && request().transport != ConnectionRequest::Transport::Virtual);
+    retranslateUi();
 }
 
 void ConnectionBar::showError(const QString &message)

@@ -76,6 +76,8 @@ private:
     QComboBox *m_baud = nullptr;
     QPushButton *m_connect = nullptr;
     QPushButton *m_disconnect = nullptr;
+    QLabel *m_lockedHint = nullptr;
+    bool m_connected = false;
     QLabel *m_error = nullptr;
     OwnError m_ownError = OwnError::None;
 };

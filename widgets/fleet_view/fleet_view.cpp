@@ -12,6 +12,10 @@
 
 namespace {
 constexpr int kSpacing = 12;
+// Tiles no larger than this many times the desktop's type, however few, and
+// no smaller than this, however many (more scroll).
+constexpr qreal kMaxScale = 3;
+constexpr qreal kMinScale = 0.8;
 }
 
 FleetView::FleetView(QWidget *parent) : QWidget(parent)
@@ -130,10 +134,45 @@ void FleetView::relayout(bool force)
 {
     if (m_tiles.isEmpty())
         return;
-    const int tileWidth = m_tiles.first()->sizeHint().width();
-    const int room = m_scroll->viewport()->width() - m_grid->contentsMargins().left()
-                     - m_grid->contentsMargins().right();
-    const int columns = std::max(1, (room + kSpacing) / (tileWidth + kSpacing));
+    // The tile's size at the desktop's type; it grows with its type.
+    FleetTile *first = m_tiles.first();
+    const QFont base = font();
+    const QSize unit = [&] {
+        const QFont now = first->font();
+        first->setFont(base);
+        const QSize size = first->sizeHint();
+        first->setFont(now);
+        return size;
+    }();
+    const QMargins margins = m_grid->contentsMargins();
+    const int roomWidth = m_scroll->viewport()->width() - margins.left() - margins.right();
+    const int roomHeight = m_scroll->viewport()->height() - margins.top() - margins.bottom();
+    // The number of columns that lets the tiles be largest, all in view.
+    const int count = int(m_tiles.size());
+    int columns = 1;
+    qreal scale = 0;
+    for (int c = 1; c <= count; ++c) {
+        const int rows = (count + c - 1) / c;
+        const qreal s = std::min(qreal(roomWidth - (c - 1) * kSpacing) / (c * unit.width()),
+                                 qreal(roomHeight - (rows - 1) * kSpacing) / (rows * unit.height()));
+        if (s > scale) {
+            scale = s;
+            columns = c;
+        }
+    }
+    if (scale < kMinScale) {
+        // Too many for the screen at the smallest type: that type, and scroll.
+        scale = kMinScale;
+        columns = std::max(1, int((roomWidth + kSpacing) / (unit.width() * scale + kSpacing)));
+    }
+    scale = std::min(scale * 0.98, kMaxScale); // a little room for rounding
+    if (std::abs(scale - m_scale) > 0.02 || force) {
+        m_scale = scale;
+        QFont f = base;
+        f.setPointSizeF(base.pointSizeF() * scale);
+        for (FleetTile *t : m_tiles)
+            t->setFont(f);
+    }
     if (columns == m_columns && !force)
         return;
     m_columns = columns;

@@ -31,6 +31,9 @@ public:
     FleetTile *tile(const QString &name) const;
     const QList<FleetTile *> &tiles() const { return m_tiles; }
     int columns() const { return m_columns; }
+    // How many times the desktop's type the tiles use: as large as lets
+    // every tile fit the view, from 0.8 up to 3.
+    qreal tileScale() const { return m_scale; }
 
 signals:
     void robotClicked(const QString &name);
@@ -52,6 +55,7 @@ private:
     QGridLayout *m_grid = nullptr;
     QList<FleetTile *> m_tiles;
     int m_columns = 0;
+    qreal m_scale = 1;
     QString m_brokerText;
     bool m_connected = false;
 };

@@ -549,8 +549,10 @@ void LedEditor::apply()
             problems << fromStd(r.error().describe());
             return;
         }
+        // The one warning an LED command has (Digit LEDs Raw), in the
+        // window's language rather than the encoder's English.
         if (!r.warning.empty())
-            problems << fromStd(r.warning);
+            problems << m_rawWarning->text();
         emit sendRequested(toByteArray(r.value()));
     };
     if (m_ledsPending)

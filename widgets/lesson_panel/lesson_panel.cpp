@@ -33,7 +33,10 @@ LessonPanel::LessonPanel(QWidget *parent) : QWidget(parent)
 {
     m_chooser = new QComboBox(this);
     m_chooser->setObjectName("lessonChooser");
-    m_chooser->setSizeAdjustPolicy(QComboBox::AdjustToContents);
+    // As wide as the room allows, not as the longest title: the buttons
+    // beside it stay whole in a narrow dock.
+    m_chooser->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    m_chooser->setMinimumContentsLength(16);
     m_openButton = new QPushButton(this);
     m_backButton = new QPushButton(this);
     m_skipButton = new QPushButton(this);

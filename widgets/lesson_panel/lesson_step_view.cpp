@@ -58,6 +58,11 @@ LessonStepView::LessonStepView(QWidget *parent)
     m_diagram = new RobotDiagram(this);
     m_plots = new SensorPlots(this);
     m_plots->setWindowSeconds(30);
+    // The step chooses what is plotted: no adding or exporting here, and
+    // the plot keeps the room those buttons would take on a small screen.
+    for (const char *tool : {"addPlot", "export"})
+        if (QWidget *button = m_plots->findChild<QWidget *>(tool))
+            button->hide();
 
     auto *goalRow = new QHBoxLayout;
     goalRow->addWidget(m_goal, 3);
@@ -210,8 +215,12 @@ void LessonStepView::refresh(const oi::SensorSnapshot &latest, bool stale, const
         }
         const std::int32_t value = latest.raw(p->id);
         if (isIrPacket(key)) {
-            gauge->setValue(oitext::infraredName(oi::decodeIrCharacter(*m_profile, std::uint8_t(value))));
-            gauge->setDetail(QString::number(value));
+            // The short name in the large type; the whole one below it.
+            const oi::IrCharacter ir = oi::decodeIrCharacter(*m_profile, std::uint8_t(value));
+            const QString full = oitext::infraredName(ir);
+            const QString shown = oitext::infraredShortName(ir);
+            gauge->setValue(shown);
+            gauge->setDetail(shown == full ? QString::number(value) : full + QStringLiteral(" · ") + QString::number(value));
         } else if (const auto bits = m_profile->bits(p->id); !bits.empty()) {
             QStringList on;
             for (const oi::BitMeaning &b : bits)

@@ -4,6 +4,7 @@
 #include "lesson_runner.h"
 #include "lesson_step_view.h"
 #include "oi_text.h"
+#include "screen_fit.h"
 #include "shipped_lessons.h"
 
 #include <QEvent>
@@ -15,8 +16,11 @@
 
 namespace {
 
-// Type at the back of a classroom: about this many times the desktop's size.
+// Type at the back of a classroom: about this many times the desktop's size
+// on a 1920×1080 screen, and in proportion on others (a 1280×720 projector
+// shows it smaller, so that the step, its views and readouts all fit).
 constexpr qreal kScale = 2.2;
+constexpr QSize kFullHd(1920, 1080);
 
 } // namespace
 
@@ -32,10 +36,11 @@ ProjectorView::ProjectorView(QWidget *parent) : QWidget(parent)
     setFocusPolicy(Qt::StrongFocus);
     m_header = new QLabel(this);
     m_header->setObjectName("projectorHeader");
+    m_header->setWordWrap(true); // a long lesson title takes two lines, not the hint's place
     m_hint = new QLabel(this);
+    m_hint->setObjectName("projectorHint");
     m_hint->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
     m_view = new LessonStepView(this);
-    m_view->setScale(kScale);
     m_reasonRow = new QWidget(this);
     m_reasonLabel = new QLabel(m_reasonRow);
     m_reasonLabel->setObjectName("projectorReason");
@@ -50,16 +55,16 @@ ProjectorView::ProjectorView(QWidget *parent) : QWidget(parent)
     reasonRow->addWidget(m_enterSafe);
     m_reasonRow->hide();
 
-    auto *top = new QHBoxLayout;
-    top->addWidget(m_header, 1);
-    top->addWidget(m_hint);
+    // The hint at the foot, where it covers nothing.
     auto *layout = new QVBoxLayout(this);
-    layout->setContentsMargins(24, 16, 24, 16);
-    layout->addLayout(top);
+    layout->setContentsMargins(24, 16, 24, 8);
+    layout->addWidget(m_header);
     layout->addWidget(m_reasonRow);
     layout->addWidget(m_view, 1);
+    layout->addWidget(m_hint);
 
     applyPalette();
+    applyScale();
     retranslateUi();
     hide();
     parent->installEventFilter(this);
@@ -82,15 +87,24 @@ void ProjectorView::applyPalette()
         p.setColor(group, QPalette::Mid, QColor(0x80, 0x80, 0x80));
     }
     setPalette(p);
+}
+
+void ProjectorView::applyScale()
+{
+    const qreal scale = kScale * screenfit::scaleFor(size(), kFullHd, 1 / kScale, 1.5);
+    if (qFuzzyCompare(scale, m_scale))
+        return;
+    m_scale = scale;
+    m_view->setScale(scale);
     QFont header = font();
-    header.setPointSizeF(font().pointSizeF() * 1.6 * kScale);
+    header.setPointSizeF(font().pointSizeF() * 1.6 * scale);
     header.setBold(true);
     m_header->setFont(header);
     QFont hint = font();
-    hint.setPointSizeF(font().pointSizeF() * 1.5);
+    hint.setPointSizeF(font().pointSizeF() * std::max(1.0, 0.6 * scale));
     m_hint->setFont(hint);
     QFont reason = font();
-    reason.setPointSizeF(font().pointSizeF() * 1.2 * kScale);
+    reason.setPointSizeF(font().pointSizeF() * 1.2 * scale);
     reason.setBold(true);
     m_reasonLabel->setFont(reason);
     m_enterSafe->setFont(reason);
@@ -98,6 +112,12 @@ void ProjectorView::applyPalette()
     QPalette yellow = m_reasonLabel->palette();
     yellow.setColor(QPalette::WindowText, QColor(0xff, 0xd6, 0x00));
     m_reasonLabel->setPalette(yellow);
+}
+
+void ProjectorView::resizeEvent(QResizeEvent *event)
+{
+    applyScale();
+    QWidget::resizeEvent(event);
 }
 
 void ProjectorView::setRobot(const QString &name, const oi::RobotProfile &profile, const SensorHistory *history)

@@ -41,6 +41,8 @@ public:
     QPushButton *enterSafeButton() const { return m_enterSafe; }
 
     LessonStepView *stepView() const { return m_view; }
+    // How many times the desktop's type size it shows, for the screen it is on.
+    qreal scale() const { return m_scale; }
 
 signals:
     // The Enter Safe button or the Enter key.
@@ -48,12 +50,14 @@ signals:
 
 protected:
     bool eventFilter(QObject *watched, QEvent *event) override;
+    void resizeEvent(QResizeEvent *event) override;
     void changeEvent(QEvent *event) override;
     void keyPressEvent(QKeyEvent *event) override;
 
 private:
     void retranslateUi();
     void applyPalette();
+    void applyScale();
     void showHeader();
 
     QString m_robotName;
@@ -64,6 +68,7 @@ private:
     QString m_modeName;
     bool m_offersSafe = false;
     QString m_reason;
+    qreal m_scale = 0;
     QLabel *m_header;
     QWidget *m_reasonRow;
     QLabel *m_reasonLabel;

@@ -211,7 +211,7 @@ void RobotDiagram::setStale(bool stale)
     update();
 }
 
-QSize RobotDiagram::minimumSizeHint() const { return {360, 360}; }
+QSize RobotDiagram::minimumSizeHint() const { return {240, 240}; }
 QSize RobotDiagram::sizeHint() const { return {520, 520}; }
 
 qreal RobotDiagram::sceneTop() const
@@ -348,8 +348,8 @@ QList<QList<RobotDiagram::Chip>> RobotDiagram::chipRows() const
         if (!s.has(packetId))
             return Chip{caption, none, State::Idle};
         const bool received = ir.kind != oi::IrCharacter::Kind::None;
-        return Chip{caption, oitext::infraredName(ir),
-                    received ? State::Active : State::Idle};
+        return Chip{caption, oitext::infraredName(ir), received ? State::Active : State::Idle,
+                    oitext::infraredShortName(ir)};
     };
 
     auto bitNames = [&](int packetId) {
@@ -743,17 +743,27 @@ void RobotDiagram::paintChips(QPainter &p) const
         const QRectF valueRect(inner.left(), captionRect.bottom(), inner.width(),
                                inner.bottom() - captionRect.bottom());
         // The value shrinks to fit rather than lose its end, down to a
-        // size that still reads; past that it is elided.
-        QFont valueFont = sceneFont(rowHeight * 0.44);
-        for (qreal size = rowHeight * 0.44; size > rowHeight * 0.25; size -= 2) {
-            valueFont = sceneFont(size);
-            if (QFontMetricsF(valueFont).horizontalAdvance(chip.value) <= inner.width())
-                break;
+        // size that still reads; then its short form (the tooltip has it
+        // whole), which shrinks the same way; past that it is elided.
+        const auto fitting = [&](const QString &value, qreal smallest) {
+            QFont f = sceneFont(rowHeight * 0.44);
+            for (qreal size = rowHeight * 0.44; size > smallest; size -= 2) {
+                f = sceneFont(size);
+                if (QFontMetricsF(f).horizontalAdvance(value) <= inner.width())
+                    return std::pair{f, true};
+            }
+            return std::pair{f, false};
+        };
+        QString value = chip.value;
+        auto [valueFont, fits] = fitting(value, chip.shortValue.isEmpty() ? rowHeight * 0.25 : rowHeight * 0.33);
+        if (!fits && !chip.shortValue.isEmpty()) {
+            value = chip.shortValue;
+            valueFont = fitting(value, rowHeight * 0.25).first;
         }
         p.setPen(text);
         p.setFont(valueFont);
         p.drawText(valueRect, Qt::AlignCenter,
-                   QFontMetricsF(valueFont).elidedText(chip.value, Qt::ElideRight, inner.width()));
+                   QFontMetricsF(valueFont).elidedText(value, Qt::ElideRight, inner.width()));
         text.setAlphaF(0.8);
         p.setPen(text);
         p.setFont(captionFont);

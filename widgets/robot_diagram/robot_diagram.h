@@ -73,6 +73,7 @@ private:
         QString caption;
         QString value;
         display::State state = display::State::Idle;
+        QString shortValue; // drawn when the value would be too small to read
     };
 
     void retranslateUi();

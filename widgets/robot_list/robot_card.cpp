@@ -63,7 +63,10 @@ QSize RobotCard::sizeHint() const
 
 QSize RobotCard::minimumSizeHint() const
 {
-    return sizeHint();
+    // Squeezed by many robots, the lines end in "…"; the tooltip has them whole.
+    const QFontMetrics small(font());
+    return {std::min(sizeHint().width(), kColourBar + 4 * kPadding + 18 * small.averageCharWidth()),
+            sizeHint().height()};
 }
 
 void RobotCard::paintEvent(QPaintEvent *)

@@ -7,6 +7,7 @@
 #include <QLineEdit>
 #include <QMenu>
 #include <QScrollArea>
+#include <QScrollBar>
 #include <QToolButton>
 
 RobotList::RobotList(QWidget *parent) : QWidget(parent)
@@ -19,14 +20,14 @@ RobotList::RobotList(QWidget *parent) : QWidget(parent)
     m_cardLayout = new QHBoxLayout(strip);
     m_cardLayout->setContentsMargins(0, 0, 0, 0);
     m_cardLayout->addStretch();
-    auto *scroll = new QScrollArea;
-    scroll->setObjectName("robotStrip");
-    scroll->setWidget(strip);
-    scroll->setWidgetResizable(true);
-    scroll->setFrameShape(QFrame::NoFrame);
-    scroll->setVerticalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
-    scroll->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Fixed);
-    layout->addWidget(scroll, 1);
+    m_scroll = new QScrollArea;
+    m_scroll->setObjectName("robotStrip");
+    m_scroll->setWidget(strip);
+    m_scroll->setWidgetResizable(true);
+    m_scroll->setFrameShape(QFrame::NoFrame);
+    m_scroll->setVerticalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    m_scroll->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Fixed);
+    layout->addWidget(m_scroll, 1);
 
     m_group = new QButtonGroup(this);
     m_group->setExclusive(true);
@@ -82,12 +83,20 @@ void RobotList::setCards(const QList<RobotCardValues> &cards)
     for (qsizetype i = 0; i < cards.size(); ++i)
         m_cards[i]->setValues(cards[i]);
     m_remove->setEnabled(m_cards.size() > 1);
+    // Room below the cards for the scroll bar that more robots bring, so
+    // that it never covers a card.
+    const int cardHeight = m_cards.isEmpty() ? 0 : m_cards.first()->sizeHint().height();
+    m_scroll->setFixedHeight(cardHeight + m_scroll->horizontalScrollBar()->sizeHint().height());
 }
 
 void RobotList::setSelected(int index)
 {
-    if (RobotCard *card = m_cards.value(index))
+    if (RobotCard *card = m_cards.value(index)) {
         card->setChecked(true);
+        // A robot chosen elsewhere (the fleet view) comes into view.
+        m_cardLayout->activate();
+        m_scroll->ensureWidgetVisible(card, 0, 0);
+    }
 }
 
 int RobotList::selected() const

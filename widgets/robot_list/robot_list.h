@@ -10,6 +10,7 @@ class QButtonGroup;
 class QHBoxLayout;
 class QLineEdit;
 class QMenu;
+class QScrollArea;
 class QToolButton;
 
 // The strip of robots above the docks: a card per robot (name, colour,
@@ -51,6 +52,7 @@ private:
     void retranslateUi();
     void finishRename();
 
+    QScrollArea *m_scroll = nullptr;
     QHBoxLayout *m_cardLayout = nullptr;
     QButtonGroup *m_group = nullptr;
     QList<RobotCard *> m_cards;

@@ -34,6 +34,14 @@
 
 namespace {
 
+// The one warning a song command has (the encoder's, in English), in the
+// window's language, so that no message mixes the two.
+QString slotWarning()
+{
+    return SongComposer::tr("song slot 4 may not play on some firmware (ERRATA 13)");
+}
+
+
 enum Column { NoteColumn, Duration64Column, MsColumn };
 
 QString exampleTitle(const QString &name)
@@ -564,7 +572,7 @@ bool SongComposer::send(const oi::EncodeResult &result, const QString &what)
     emit sendRequested(QByteArray(reinterpret_cast<const char *>(bytes.data()), qsizetype(bytes.size())));
     if (!result.warning.empty())
         showMessage(
-            [=, this] { return QString(tr("%1 sent. Warning: %2").arg(what, QString::fromStdString(result.warning))); },
+            [=, this] { return QString(tr("%1 sent. Warning: %2").arg(what, slotWarning())); },
             Tone::Warning);
     else
         showMessage([=, this] { return QString(tr("%1 sent.").arg(what)); }, Tone::Info);
@@ -599,7 +607,7 @@ bool SongComposer::uploadAllSlots()
         }
         sent << QString::number(slot);
         if (!r.warning.empty())
-            warnings << QString::fromStdString(r.warning);
+            warnings << slotWarning();
         results.append(std::move(r));
     }
     if (results.isEmpty()) {

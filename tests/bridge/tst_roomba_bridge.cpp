@@ -165,6 +165,39 @@ private slots:
         // The offline state it published before it said goodbye.
         QVERIFY(watcher.waitForState(QStringLiteral("r8"), false));
     }
+
+    // A second bridge started with a name in use takes the broker connection
+    // from the first (same client id); the first takes it back within about a
+    // second, and the second then gives way with status 2 and says why.
+    void aSecondBridgeWithANameInUseRefusesToStart()
+    {
+        MosquittoBroker broker;
+        QVERIFY2(broker.start(), qPrintable(broker.error()));
+        ConsoleClient watcher(QStringLiteral("watcher"), addressOf(broker));
+        const QStringList args{QStringLiteral("--broker"), broker.url(), QStringLiteral("--name"), QStringLiteral("r6"),
+                               QStringLiteral("--sim")};
+        QProcess first;
+        start(first, args);
+        QVERIFY(watcher.waitForState(QStringLiteral("r6"), true));
+        QTest::qWait(3500); // the first is past its own claim on the name (3 s)
+        QProcess second;
+        start(second, args);
+        QTRY_COMPARE_WITH_TIMEOUT(second.state(), QProcess::NotRunning, 10000);
+        QCOMPARE(second.exitStatus(), QProcess::NormalExit);
+        QCOMPARE(second.exitCode(), 2);
+        const QString err = QString::fromUtf8(second.readAllStandardError());
+        QVERIFY2(err.contains(QLatin1String("another bridge is already on the broker as robot r6"))
+                     && err.contains(QLatin1String("give this robot a name of its own")),
+                 qPrintable(err));
+        // The first runs on, online and connected: a command it answers.
+        QCOMPARE(first.state(), QProcess::Running);
+        QVERIFY(watcher.waitForState(QStringLiteral("r6"), true));
+        QVERIFY(watcher.takes(QStringLiteral("r6")));
+        const QString log = QString::fromUtf8(first.readAllStandardError());
+        QVERIFY2(log.contains(QLatin1String("took the connection (a second bridge with this name?)")), qPrintable(log));
+        first.terminate();
+        QVERIFY(first.waitForFinished(10000));
+    }
 };
 
 QTEST_GUILESS_MAIN(TestRoombaBridge)

@@ -78,17 +78,20 @@ signals:
     void messageReceived(const QString &topic, const QByteArray &payload, bool retained);
     // A payload over setMaxPayloadBytes, dropped unread.
     void payloadTooLarge(const QString &topic, qsizetype bytes, bool retained);
-    // Settings refused, or the broker refused the login.
+    // Settings refused, the broker refused the login, or its certificate
+    // is not trusted.
     void errorOccurred(const QString &message);
 
 private:
     static void onConnect(mosquitto *, void *self, int rc);
     static void onDisconnect(mosquitto *, void *self, int rc);
     static void onMessage(mosquitto *, void *self, const mosquitto_message *message);
+    static void onLog(mosquitto *, void *self, int level, const char *text);
 
     void tryConnecting();
     void handleConnected(int rc);
     void handleDisconnected(int rc);
+    void handleTlsRefused();
     bool fail(const QString &message);
 
     QString m_clientId;
@@ -101,6 +104,7 @@ private:
     static constexpr int kRetryMs = 1000;
     QTimer m_retry;
     QTimer m_noAnswer; // says so when no broker has answered soon after connectToBroker
+    bool m_tlsRefusalSaid = false; // once per connectToBroker
     QList<QPair<QString, int>> m_subscriptions;
     qsizetype m_maxPayloadBytes = 0;
     QMutex m_receiverMutex;

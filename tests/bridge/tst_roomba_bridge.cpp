@@ -58,8 +58,15 @@ private slots:
                                         << "bad.conf:3: allow-full: 'maybe' is not yes or no";
         QTest::newRow("no name") << QStringList{"--sim"} << QByteArray() << "--name NAME";
         QTest::newRow("no robot") << QStringList{"--name", "r1"} << QByteArray() << "--sim, --port PATH or --tcp HOST:PORT";
-        QTest::newRow("two robots") << QStringList{"--name", "r1", "--port", "/dev/ttyUSB0"} << QByteArray("sim = yes\n")
+        QTest::newRow("two robots") << QStringList{"--name", "r1", "--port", "/dev/ttyUSB0", "--sim"} << QByteArray()
                                     << "give only one of sim, port and tcp";
+        QTest::newRow("two robots in the file") << QStringList{} << QByteArray("name = r1\nsim = yes\ntcp = pi:3333\n")
+                                                << "give only one of sim, port and tcp";
+        // The robot named on the command line replaces the file's; the CA
+        // is looked for beside the file.
+        QTest::newRow("CA beside the file") << QStringList{"--sim"}
+                                            << QByteArray("name = r1\nport = /dev/ttyUSB0\ncafile = nothere.crt\n")
+                                            << "/nothere.crt does not exist";
         QTest::newRow("bad tcp") << QStringList{"--name", "r1", "--tcp", "pi"} << QByteArray() << "'pi' is not HOST:PORT";
         QTest::newRow("bad profile") << QStringList{"--name", "r1", "--sim", "--profile", "dyson"} << QByteArray()
                                      << "'dyson' is not a robot";
@@ -75,6 +82,7 @@ private slots:
         QFETCH(QString, message);
         if (!config.isEmpty())
             args << QStringLiteral("--config") << writeConfig(QStringLiteral("bad.conf"), config);
+        message.replace(QLatin1String("/nothere.crt"), m_dir.filePath(QStringLiteral("nothere.crt")));
         QProcess p;
         start(p, args);
         QVERIFY(p.waitForFinished(10000));

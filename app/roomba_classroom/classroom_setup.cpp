@@ -147,6 +147,8 @@ QByteArray brokerConfig(const Request &r, const QString &finalDir)
                "max_inflight_messages 20\n"
                "max_queued_messages 200\n"
                "max_queued_bytes 1048576\n"
+               "# Replies and stops go out at once, not held back to fill a packet.\n"
+               "set_tcp_nodelay true\n"
                "# A restarted broker starts clean: no stale retained state.\n"
                "persistence false\n"
                "\n"

@@ -66,7 +66,7 @@ public:
     bool start()
     {
         return startWith(writeFile(QStringLiteral("mosquitto.conf"),
-                                   QStringLiteral("listener %1 127.0.0.1\npersistence false\n%2")
+                                   QStringLiteral("listener %1 127.0.0.1\npersistence false\nset_tcp_nodelay true\n%2")
                                        .arg(m_port)
                                        .arg(QString(m_extraConfig).replace(QStringLiteral("%DIR%"), dir()))
                                        .toUtf8()));

@@ -1,7 +1,12 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
-# CPack: `cpack -G DEB` in the build directory makes roomba-dashboard_<version>_<arch>.deb
-# from the install rules. Included from the top-level CMakeLists.txt, after
-# every install rule.
+# CPack: `cpack -G DEB` in the build directory makes two packages from the
+# install rules, as Debian splits a program: roomba-bridge_<version>_<arch>.deb
+# (roomba-bridge, roomba-ctl, roomba-sim, roomba-classroom, the systemd unit
+# and the MQTT samples; no GUI library, for a robot's Pi) and
+# roomba-dashboard_<version>_<arch>.deb (the window, which depends on the
+# first for its command-line tools). A bridge-only build
+# (-DROOMBA_BRIDGE_ONLY=ON) makes the first alone. Included from the
+# top-level CMakeLists.txt, after every install rule.
 set(CPACK_PACKAGE_NAME roomba-dashboard)
 set(CPACK_PACKAGE_VENDOR "Roomba Dashboard developers")
 set(CPACK_PACKAGE_DESCRIPTION_SUMMARY "${PROJECT_DESCRIPTION}")
@@ -27,5 +32,25 @@ set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)
 # runs under XWayland, so recommend it rather than depend on it.
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
 set(CPACK_DEBIAN_PACKAGE_RECOMMENDS "qt6-wayland")
+
+set(CPACK_DEB_COMPONENT_INSTALL ON)
+if(ROOMBA_BRIDGE_ONLY)
+    set(CPACK_COMPONENTS_ALL bridge)
+else()
+    set(CPACK_COMPONENTS_ALL dashboard bridge)
+endif()
+set(CPACK_DEBIAN_DASHBOARD_PACKAGE_NAME roomba-dashboard)
+set(CPACK_DEBIAN_DASHBOARD_PACKAGE_DEPENDS "roomba-bridge (= ${PROJECT_VERSION})")
+set(CPACK_COMPONENT_DASHBOARD_DESCRIPTION "${CPACK_PACKAGE_DESCRIPTION}")
+set(CPACK_DEBIAN_BRIDGE_PACKAGE_NAME roomba-bridge)
+set(CPACK_DEBIAN_BRIDGE_PACKAGE_RECOMMENDS "")
+set(CPACK_DEBIAN_BRIDGE_PACKAGE_SUGGESTS "mosquitto, openssl")
+# (CPack 3.25 heads every package's description with the project's summary.)
+set(CPACK_COMPONENT_BRIDGE_DESCRIPTION
+    "The network classroom's part, without a desktop. roomba-bridge puts one iRobot Open Interface robot (Roomba 500, Roomba 600 / \
+Create 2, original Create) on an MQTT broker with every safety rule, for a \
+Raspberry Pi beside the robot; roomba-classroom init sets up a classroom's \
+TLS broker in one command; roomba-ctl and roomba-sim are the command-line \
+tool and the virtual robot. Needs no GUI library.")
 
 include(CPack)

@@ -2,7 +2,7 @@
 #include "robot_firmware.h"
 
 #include "command_catalog.h"
-#include "saved_robots.h"
+#include "robot_identity.h"
 
 #include <QSettings>
 #include <QUrl>

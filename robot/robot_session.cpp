@@ -50,11 +50,11 @@ void RobotSession::setName(const QString &name)
     emit identityChanged();
 }
 
-void RobotSession::setColour(const QColor &colour)
+void RobotSession::setColourRgba(quint32 rgba)
 {
-    if (colour == m_colour)
+    if (rgba == m_colourRgba)
         return;
-    m_colour = colour;
+    m_colourRgba = rgba;
     emit identityChanged();
 }
 

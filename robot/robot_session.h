@@ -13,7 +13,9 @@
 #include "wheel_calibration.h"
 
 #include <QByteArray>
+#ifdef QT_GUI_LIB
 #include <QColor>
+#endif
 #include <QObject>
 #include <QString>
 
@@ -32,8 +34,14 @@ public:
     // How the robot list, the map and the status bar tell robots apart.
     QString name() const { return m_name; }
     void setName(const QString &name);
-    QColor colour() const { return m_colour; }
-    void setColour(const QColor &colour);
+    // Kept as 0xAARRGGBB (a QRgb), so that the model needs no GUI library:
+    // the bridge links none. Where Qt Gui is, it is read and set as a QColor.
+    quint32 colourRgba() const { return m_colourRgba; }
+    void setColourRgba(quint32 rgba);
+#ifdef QT_GUI_LIB
+    QColor colour() const { return QColor::fromRgba(m_colourRgba); }
+    void setColour(const QColor &colour) { setColourRgba(colour.rgba()); }
+#endif
 
     // Makes the transports (tests put a recording transport here). Before
     // the first connectTo().
@@ -171,7 +179,7 @@ private:
     void setCalibration(const std::optional<WheelCalibration> &calibration);
 
     QString m_name;
-    QColor m_colour;
+    quint32 m_colourRgba = 0;
     oilink::RobotLinkThread m_link;
     oilink::LinkSettings m_settings;
     bool m_connected = false;

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "link_settings.h"
+#include "robot_identity.h"
 
 #include <QColor>
 #include <QList>
@@ -17,11 +18,6 @@ struct SavedRobot {
     bool connected = true; // connect at start
     friend bool operator==(const SavedRobot &, const SavedRobot &) = default;
 };
-
-// Which robot a connection reaches, the same whatever the profile or baud:
-// "serial:/dev/ttyUSB0", "tcp:pi:3333", "virtual:create2:1", "replay:/x.oirec",
-// "network:r1". What is remembered per robot (its firmware) is kept under it.
-QString robotIdentity(const oilink::LinkSettings &link);
 
 // The "robots" array of the settings. Entries that cannot be read (an
 // unknown transport, a profile out of range) are left out, never guessed.

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "wheel_calibration.h"
 
-#include "saved_robots.h"
+#include "robot_identity.h"
 
 #include <QSettings>
 #include <QUrl>

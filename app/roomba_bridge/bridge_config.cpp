@@ -3,7 +3,9 @@
 
 #include "fleet_topics.h"
 
+#include <QDir>
 #include <QFile>
+#include <QFileInfo>
 #include <QHash>
 
 #include <cmath>
@@ -58,7 +60,13 @@ std::optional<QList<BridgeConfig::Setting>> BridgeConfig::readFile(const QString
             *error = QStringLiteral("%1: '%2' is not a setting (%3)").arg(where, key, keys().join(QStringLiteral(", ")));
             return std::nullopt;
         }
-        settings.append({key, line.mid(eq + 1).trimmed(), where});
+        QString value = line.mid(eq + 1).trimmed();
+        // A file beside the config (ca.crt) goes with it wherever it is copied.
+        static const QStringList files{QStringLiteral("cafile"), QStringLiteral("certfile"), QStringLiteral("keyfile"),
+                                       QStringLiteral("password-file")};
+        if (files.contains(key) && !value.isEmpty() && QFileInfo(value).isRelative())
+            value = QFileInfo(path).dir().filePath(value);
+        settings.append({key, value, where});
     }
     return settings;
 }
@@ -127,6 +135,12 @@ std::optional<BridgeConfig> BridgeConfig::fromSettings(const QList<Setting> &set
         profile = p->id;
     }
 
+    // Where the robot is, given on the command line, replaces the file's.
+    for (const char *key : {"sim", "port", "tcp"})
+        if (has(key) && last[QLatin1String(key)].where.startsWith(QLatin1String("--")))
+            for (const char *other : {"sim", "port", "tcp"})
+                if (has(other) && !last[QLatin1String(other)].where.startsWith(QLatin1String("--")))
+                    last.remove(QLatin1String(other));
     QStringList where;
     if (has("sim")) {
         if (!isYes(value("sim")) && !isNo(value("sim")))

@@ -4,6 +4,7 @@
 // statistics; takes commands from the client that holds control.
 
 #include "bridge_config.h"
+#include "name_claim.h"
 #include "robot_bridge.h"
 #include "robot_session.h"
 #include "termination_signals.h"
@@ -122,6 +123,22 @@ int main(int argc, char *argv[])
         bridge.shutDown();
         broker.disconnectFromBroker();
         app.exit(kUsageError);
+    });
+    // Two bridges with one name would take the connection from each other
+    // for ever; the newcomer gives way and says why.
+    NameClaim claim(broker);
+    QObject::connect(&claim, &NameClaim::nameInUse, &app, [&] {
+        fail(QStringLiteral("another bridge is already on the broker as robot %1 (client id %2): it took the "
+                            "connection back. Stop that bridge, or give this robot a name of its own (--name, "
+                            "and its own account); not starting.")
+                 .arg(config->name, config->broker.username.isEmpty() ? broker.clientId() : config->broker.username));
+        broker.disconnectFromBroker(); // first, so that nothing more is said for the other bridge's robot
+        bridge.shutDown();
+        app.exit(kUsageError);
+    });
+    QObject::connect(&claim, &NameClaim::takenOver, &app, [] {
+        qCWarning(lcBridge, "broker: another client connected with this bridge's client id and took the "
+                            "connection (a second bridge with this name?); taking it back");
     });
     bridge.start();
     robot.connectTo(config->link);

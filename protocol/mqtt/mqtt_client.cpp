@@ -7,6 +7,7 @@
 
 #include <mosquitto.h>
 
+#include <cstring>
 #include <mutex>
 
 namespace mqtt {
@@ -79,10 +80,15 @@ bool MqttClient::connectToBroker(const BrokerAddress &address)
     if (!m_mosq)
         return fail(tr("Cannot create an MQTT client: out of memory or a bad client id."));
     mosquitto_int_option(m_mosq, MOSQ_OPT_PROTOCOL_VERSION, MQTT_PROTOCOL_V311);
+    // A command's reply must not wait for more bytes to fill a segment.
+    mosquitto_int_option(m_mosq, MOSQ_OPT_TCP_NODELAY, 1);
     mosquitto_connect_callback_set(m_mosq, &MqttClient::onConnect);
     mosquitto_disconnect_callback_set(m_mosq, &MqttClient::onDisconnect);
     mosquitto_message_callback_set(m_mosq, &MqttClient::onMessage);
-    mosquitto_reconnect_delay_set(m_mosq, kFirstRetryMs / 1000, kLastRetryMs / 1000, true);
+    mosquitto_log_callback_set(m_mosq, &MqttClient::onLog);
+    // Every second, not backing off: a restarted broker is found again
+    // within about a second, and the broker bears a class of 30 easily.
+    mosquitto_reconnect_delay_set(m_mosq, kRetryMs / 1000, kRetryMs / 1000, false);
 
     if (!address.username.isEmpty()
         && mosquitto_username_pw_set(m_mosq, address.username.toUtf8().constData(),
@@ -110,7 +116,7 @@ bool MqttClient::connectToBroker(const BrokerAddress &address)
                != MOSQ_ERR_SUCCESS)
         return fail(tr("The last-will topic %1 is not valid.").arg(m_will.topic));
 
-    m_retryDelayMs = kFirstRetryMs;
+    m_tlsRefusalSaid = false;
     m_noAnswer.start();
     tryConnecting();
     return true;
@@ -124,8 +130,7 @@ void MqttClient::tryConnecting()
         return;
     if (mosquitto_connect_async(m_mosq, m_address.host.toUtf8().constData(), m_address.port, m_keepAliveSeconds)
         != MOSQ_ERR_SUCCESS) {
-        m_retry.start(m_retryDelayMs);
-        m_retryDelayMs = std::min(m_retryDelayMs * 2, kLastRetryMs);
+        m_retry.start(kRetryMs);
         return;
     }
     const int rc = mosquitto_loop_start(m_mosq);
@@ -215,6 +220,32 @@ void MqttClient::onMessage(mosquitto *, void *self, const mosquitto_message *mes
     QMetaObject::invokeMethod(
         client, [client, topic, payload, retained] { emit client->messageReceived(topic, payload, retained); },
         Qt::QueuedConnection);
+}
+
+// The library says why a TLS handshake failed only in its log.
+void MqttClient::onLog(mosquitto *, void *self, int level, const char *text)
+{
+    if (!(level & MOSQ_LOG_ERR) || !std::strstr(text, "certificate verify failed"))
+        return;
+    auto *client = static_cast<MqttClient *>(self);
+    QMetaObject::invokeMethod(client, [client] { client->handleTlsRefused(); }, Qt::QueuedConnection);
+}
+
+void MqttClient::handleTlsRefused()
+{
+    if (!m_mosq || m_tlsRefusalSaid)
+        return;
+    m_tlsRefusalSaid = true;
+    m_noAnswer.stop(); // it answers; it is not trusted
+    emit errorOccurred(
+        m_address.caFile.isEmpty()
+            ? tr("The certificate of %1 is not trusted by this system: give the broker's CA file (for a classroom "
+                 "made by roomba-classroom init, its ca.crt). Still trying.")
+                  .arg(m_address.displayUrl())
+            : tr("The certificate of %1 is not signed by the CA in %2, or does not name %3: give that broker's own CA "
+                 "file (for a classroom made by roomba-classroom init, its ca.crt) and the address its certificate "
+                 "names. Still trying.")
+                  .arg(m_address.displayUrl(), m_address.caFile, m_address.host));
 }
 
 void MqttClient::handleConnected(int rc)

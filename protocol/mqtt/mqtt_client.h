@@ -26,9 +26,9 @@ struct LastWill {
 };
 
 // One connection to an MQTT broker, through libmosquitto. The library's own
-// network thread does the socket work and reconnects with exponential backoff
-// (1 s, doubling, up to 30 s); this object reports everything on the thread
-// that owns it. Subscriptions are made again after every reconnect.
+// network thread does the socket work (without Nagle's delay) and reconnects
+// every second; this object reports everything on the thread that owns it.
+// Subscriptions are made again after every reconnect.
 class MqttClient : public QObject {
     Q_OBJECT
 public:
@@ -78,17 +78,20 @@ signals:
     void messageReceived(const QString &topic, const QByteArray &payload, bool retained);
     // A payload over setMaxPayloadBytes, dropped unread.
     void payloadTooLarge(const QString &topic, qsizetype bytes, bool retained);
-    // Settings refused, or the broker refused the login.
+    // Settings refused, the broker refused the login, or its certificate
+    // is not trusted.
     void errorOccurred(const QString &message);
 
 private:
     static void onConnect(mosquitto *, void *self, int rc);
     static void onDisconnect(mosquitto *, void *self, int rc);
     static void onMessage(mosquitto *, void *self, const mosquitto_message *message);
+    static void onLog(mosquitto *, void *self, int level, const char *text);
 
     void tryConnecting();
     void handleConnected(int rc);
     void handleDisconnected(int rc);
+    void handleTlsRefused();
     bool fail(const QString &message);
 
     QString m_clientId;
@@ -98,10 +101,10 @@ private:
     mosquitto *m_mosq = nullptr;
     bool m_connected = false;
     bool m_loopRunning = false;
-    static constexpr int kFirstRetryMs = 1000, kLastRetryMs = 30000;
+    static constexpr int kRetryMs = 1000;
     QTimer m_retry;
     QTimer m_noAnswer; // says so when no broker has answered soon after connectToBroker
-    int m_retryDelayMs = kFirstRetryMs;
+    bool m_tlsRefusalSaid = false; // once per connectToBroker
     QList<QPair<QString, int>> m_subscriptions;
     qsizetype m_maxPayloadBytes = 0;
     QMutex m_receiverMutex;

@@ -60,8 +60,15 @@ private slots:
                                             << "bad.conf:3: full-telemetry: 'all' is not yes or no";
         QTest::newRow("no name") << QStringList{"--sim"} << QByteArray() << "--name NAME";
         QTest::newRow("no robot") << QStringList{"--name", "r1"} << QByteArray() << "--sim, --port PATH or --tcp HOST:PORT";
-        QTest::newRow("two robots") << QStringList{"--name", "r1", "--port", "/dev/ttyUSB0"} << QByteArray("sim = yes\n")
+        QTest::newRow("two robots") << QStringList{"--name", "r1", "--port", "/dev/ttyUSB0", "--sim"} << QByteArray()
                                     << "give only one of sim, port and tcp";
+        QTest::newRow("two robots in the file") << QStringList{} << QByteArray("name = r1\nsim = yes\ntcp = pi:3333\n")
+                                                << "give only one of sim, port and tcp";
+        // The robot named on the command line replaces the file's; the CA
+        // is looked for beside the file.
+        QTest::newRow("CA beside the file") << QStringList{"--sim"}
+                                            << QByteArray("name = r1\nport = /dev/ttyUSB0\ncafile = nothere.crt\n")
+                                            << "/nothere.crt does not exist";
         QTest::newRow("bad tcp") << QStringList{"--name", "r1", "--tcp", "pi"} << QByteArray() << "'pi' is not HOST:PORT";
         QTest::newRow("bad profile") << QStringList{"--name", "r1", "--sim", "--profile", "dyson"} << QByteArray()
                                      << "'dyson' is not a robot";
@@ -77,6 +84,7 @@ private slots:
         QFETCH(QString, message);
         if (!config.isEmpty())
             args << QStringLiteral("--config") << writeConfig(QStringLiteral("bad.conf"), config);
+        message.replace(QLatin1String("/nothere.crt"), m_dir.filePath(QStringLiteral("nothere.crt")));
         QProcess p;
         start(p, args);
         QVERIFY(p.waitForFinished(10000));
@@ -166,6 +174,39 @@ private slots:
         QVERIFY2(log.contains(QLatin1String("stopped in Passive")), qPrintable(log));
         // The offline state it published before it said goodbye.
         QVERIFY(watcher.waitForState(QStringLiteral("r8"), false));
+    }
+
+    // A second bridge started with a name in use takes the broker connection
+    // from the first (same client id); the first takes it back within about a
+    // second, and the second then gives way with status 2 and says why.
+    void aSecondBridgeWithANameInUseRefusesToStart()
+    {
+        MosquittoBroker broker;
+        QVERIFY2(broker.start(), qPrintable(broker.error()));
+        ConsoleClient watcher(QStringLiteral("watcher"), addressOf(broker));
+        const QStringList args{QStringLiteral("--broker"), broker.url(), QStringLiteral("--name"), QStringLiteral("r6"),
+                               QStringLiteral("--sim")};
+        QProcess first;
+        start(first, args);
+        QVERIFY(watcher.waitForState(QStringLiteral("r6"), true));
+        QTest::qWait(3500); // the first is past its own claim on the name (3 s)
+        QProcess second;
+        start(second, args);
+        QTRY_COMPARE_WITH_TIMEOUT(second.state(), QProcess::NotRunning, 10000);
+        QCOMPARE(second.exitStatus(), QProcess::NormalExit);
+        QCOMPARE(second.exitCode(), 2);
+        const QString err = QString::fromUtf8(second.readAllStandardError());
+        QVERIFY2(err.contains(QLatin1String("another bridge is already on the broker as robot r6"))
+                     && err.contains(QLatin1String("give this robot a name of its own")),
+                 qPrintable(err));
+        // The first runs on, online and connected: a command it answers.
+        QCOMPARE(first.state(), QProcess::Running);
+        QVERIFY(watcher.waitForState(QStringLiteral("r6"), true));
+        QVERIFY(watcher.takes(QStringLiteral("r6")));
+        const QString log = QString::fromUtf8(first.readAllStandardError());
+        QVERIFY2(log.contains(QLatin1String("took the connection (a second bridge with this name?)")), qPrintable(log));
+        first.terminate();
+        QVERIFY(first.waitForFinished(10000));
     }
 };
 

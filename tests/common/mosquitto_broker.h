@@ -65,11 +65,15 @@ public:
     // Starts it and waits until it accepts connections (at most 10 s).
     bool start()
     {
-        const QString config = writeFile(QStringLiteral("mosquitto.conf"),
-                                         QStringLiteral("listener %1 127.0.0.1\npersistence false\n%2")
-                                             .arg(m_port)
-                                             .arg(QString(m_extraConfig).replace(QStringLiteral("%DIR%"), dir()))
-                                             .toUtf8());
+        return startWith(writeFile(QStringLiteral("mosquitto.conf"),
+                                   QStringLiteral("listener %1 127.0.0.1\npersistence false\nset_tcp_nodelay true\n%2")
+                                       .arg(m_port)
+                                       .arg(QString(m_extraConfig).replace(QStringLiteral("%DIR%"), dir()))
+                                       .toUtf8()));
+    }
+    // The same with a config of the test's own, which listens on port().
+    bool startWith(const QString &config)
+    {
         m_process.setProcessChannelMode(QProcess::MergedChannels);
         m_process.start(program(), {QStringLiteral("-c"), config});
         if (!m_process.waitForStarted(5000)) {

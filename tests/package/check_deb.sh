@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: GPL-3.0-or-later
-# Builds the .deb from a built tree into a temporary directory and checks it:
-# the programs and desktop files are in it, the control fields are right, the
-# Qt libraries were found as dependencies, and the desktop files validate.
+# Builds the two .debs from a built tree into a temporary directory and checks
+# them: roomba-bridge holds the bridge, the command-line tools and the unit
+# and needs no GUI library; roomba-dashboard holds the window and its desktop
+# files (which validate) and depends on roomba-bridge; the control fields
+# are right and the Qt libraries were found as dependencies.
 # Usage: check_deb.sh BUILD_DIR VERSION [CPACK]
 set -euo pipefail
 build=$1 version=$2 cpack=${3:-cpack}
@@ -19,19 +21,30 @@ trap 'rm -rf "$tmp"' EXIT
 "$cpack" -G DEB -B "$tmp" --config "$build/CPackConfig.cmake" >"$tmp/cpack.log" 2>&1 \
     || { cat "$tmp/cpack.log"; fail "cpack -G DEB failed"; }
 debs=("$tmp"/*.deb)
-[ ${#debs[@]} -eq 1 ] && [ -f "${debs[0]}" ] || fail "expected one .deb in $tmp"
-deb=${debs[0]}
-echo "built $(basename "$deb")"
+[ ${#debs[@]} -eq 2 ] || fail "expected two .debs in $tmp: ${debs[*]}"
+deb=$(ls "$tmp"/roomba-dashboard_*.deb) || fail "no roomba-dashboard package"
+bridge_deb=$(ls "$tmp"/roomba-bridge_*.deb) || fail "no roomba-bridge package"
+echo "built $(basename "$deb") and $(basename "$bridge_deb")"
 
 # Paths only: the sixth column of the listing, "./usr/bin/...".
+bridge_contents=$(dpkg-deb -c "$bridge_deb" | awk '{print $6}')
 contents=$(dpkg-deb -c "$deb" | awk '{print $6}')
+in_bridge() { grep -qx "\./$1" <<<"$bridge_contents" || fail "$1 is not in the roomba-bridge package"; }
+for p in roomba-bridge roomba-ctl roomba-sim roomba-classroom; do
+    in_bridge "usr/bin/$p"
+    grep -qx "\./usr/bin/$p" <<<"$contents" && fail "$p is in both packages"
+done
+in_bridge "usr/lib/systemd/system/roomba-bridge@.service"
+for f in mosquitto.conf acl roomba-bridge.conf; do in_bridge "usr/share/roomba-bridge/mqtt/$f"; done
+in_bridge usr/share/doc/roomba-bridge/copyright
+[ "$(dpkg-deb -f "$bridge_deb" Package)" = roomba-bridge ] || fail "the bridge's Package is '$(dpkg-deb -f "$bridge_deb" Package)'"
+bridge_depends=$(dpkg-deb -f "$bridge_deb" Depends)
+echo "roomba-bridge Depends: $bridge_depends"
+grep -q 'libqt6core6' <<<"$bridge_depends" || fail "roomba-bridge names no Qt 6 library (shlibdeps off?)"
+grep -Eq 'libqt6(gui|widgets)|qcustomplot|libsdl' <<<"$bridge_depends" && fail "roomba-bridge depends on a GUI library"
+
 has() { grep -qx "\./$1" <<<"$contents" || fail "$1 is not in the package"; }
 has usr/bin/roomba-dashboard
-has usr/bin/roomba-sim
-has usr/bin/roomba-ctl
-has usr/bin/roomba-bridge
-has "usr/lib/systemd/system/roomba-bridge@.service"
-for f in mosquitto.conf acl roomba-bridge.conf; do has "usr/share/roomba-dashboard/mqtt/$f"; done
 has "usr/share/applications/$app_id.desktop"
 has "usr/share/icons/hicolor/scalable/apps/$app_id.svg"
 has "usr/share/metainfo/$app_id.metainfo.xml"
@@ -48,9 +61,11 @@ field() { dpkg-deb -f "$deb" "$1"; }
 depends=$(field Depends)
 echo "Depends: $depends"
 grep -q 'libqt6widgets6' <<<"$depends" || fail "Depends names no Qt 6 library (shlibdeps off?)"
+grep -q "roomba-bridge (= $version)" <<<"$depends" || fail "roomba-dashboard does not depend on roomba-bridge $version"
 
 # Validate the files as installed, and check that they name each other.
 dpkg-deb -x "$deb" "$tmp/root"
+dpkg-deb -x "$bridge_deb" "$tmp/root"
 share=$tmp/root/usr/share
 desktop=$share/applications/$app_id.desktop
 desktop-file-validate "$desktop" || fail "desktop-file-validate"

@@ -222,6 +222,32 @@ private slots:
 
     // A followed robot's every message comes as a frame; another robot's
     // waits, unread, until someone asks for it.
+    // The broker restarts: the console and the bridge find it again by
+    // themselves, and the followed robot's telemetry comes through again.
+    void theConsoleReconnectsAfterTheBrokerRestarts()
+    {
+        MosquittoBroker broker;
+        QVERIFY2(broker.start(), qPrintable(broker.error()));
+        FakeBridge r1(QStringLiteral("r1"));
+        QVERIFY(r1.start(broker.port()));
+        r1.publishState();
+        FleetDirectory directory;
+        QSignalSpy connection(&directory, &FleetDirectory::connectionChanged);
+        QSignalSpy frames(&directory, &FleetDirectory::telemetryReceived);
+        QVERIFY(directory.connectToBroker(addressOf(broker)));
+        QTRY_VERIFY_WITH_TIMEOUT(directory.robot("r1"), 5000);
+        directory.follow("r1", true);
+
+        broker.kill();
+        QTRY_VERIFY_WITH_TIMEOUT(!directory.isConnected(), 5000);
+        QVERIFY2(broker.start(), qPrintable(broker.error()));
+        QTRY_VERIFY_WITH_TIMEOUT(directory.isConnected() && r1.client().isConnected(), 10000);
+        QCOMPARE(connection.last().at(0).toBool(), true);
+        r1.publishTelemetry(telemetry(0x01, 0));
+        QTRY_COMPARE_WITH_TIMEOUT(frames.count(), 1, 5000);
+        QCOMPARE(frames[0][1].value<oi::SensorSnapshot>().raw(7), 0x01);
+    }
+
     void onlyFollowedRobotsAreReadAsTheyCome()
     {
         MosquittoBroker broker;

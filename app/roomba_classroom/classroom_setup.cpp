@@ -1,0 +1,394 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "classroom_setup.h"
+
+#include "fleet_topics.h"
+
+#include <QDateTime>
+#include <QDir>
+#include <QFile>
+#include <QHostAddress>
+#include <QProcess>
+#include <QRandomGenerator>
+#include <QSaveFile>
+#include <QSet>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+
+#include <optional>
+#include <pwd.h>
+#include <unistd.h>
+
+namespace classroom {
+
+namespace {
+
+constexpr QFileDevice::Permissions kOwnerOnly = QFileDevice::ReadOwner | QFileDevice::WriteOwner;
+constexpr QFileDevice::Permissions kEveryoneReads = kOwnerOnly | QFileDevice::ReadGroup | QFileDevice::ReadOther;
+
+// 20 characters from 56 that no one misreads (no 0/O, 1/l/I): about 116 bits.
+QString strongPassword()
+{
+    static const QString alphabet = QStringLiteral("abcdefghijkmnopqrstuvwxyzABCDEFGHJKLMNPQRSTUVWXYZ23456789");
+    QString p;
+    for (int i = 0; i < 20; ++i)
+        p += alphabet.at(int(QRandomGenerator::system()->bounded(quint32(alphabet.size()))));
+    return p;
+}
+
+bool writeFile(const QString &path, const QByteArray &contents, QFileDevice::Permissions permissions, QString *error)
+{
+    QSaveFile f(path);
+    if (!f.open(QIODevice::WriteOnly) || f.write(contents) != contents.size() || !f.setPermissions(permissions)
+        || !f.commit()) {
+        *error = QStringLiteral("cannot write %1: %2").arg(path, f.errorString());
+        return false;
+    }
+    return true;
+}
+
+bool run(const QString &program, const QStringList &args, const QString &workDir, QString *error)
+{
+    QProcess p;
+    p.setWorkingDirectory(workDir);
+    p.setProcessChannelMode(QProcess::MergedChannels);
+    p.start(program, args);
+    if (!p.waitForFinished(60000) || p.exitStatus() != QProcess::NormalExit || p.exitCode() != 0) {
+        *error = QStringLiteral("%1 %2 failed: %3").arg(program, args.join(QLatin1Char(' ')),
+                                                        QString::fromLocal8Bit(p.readAll()).trimmed()
+                                                            + p.errorString());
+        return false;
+    }
+    return true;
+}
+
+QString program(const char *name) { return QStandardPaths::findExecutable(QString::fromLatin1(name)); }
+
+bool isHostName(const QString &host)
+{
+    if (!QHostAddress(host).isNull())
+        return true;
+    if (host.isEmpty() || host.size() > 253 || host.startsWith(QLatin1Char('-')))
+        return false;
+    for (QChar c : host)
+        if (!(c.isLetterOrNumber() && c.unicode() < 128) && c != QLatin1Char('-') && c != QLatin1Char('.'))
+            return false;
+    return true;
+}
+
+// The CA, and the broker's certificate signed by it for the names the
+// clients use to reach it.
+bool makeCertificates(const Request &r, const QString &dir, QString *error)
+{
+    const QString openssl = program("openssl");
+    const QStringList ec{QStringLiteral("-newkey"), QStringLiteral("ec"), QStringLiteral("-pkeyopt"),
+                         QStringLiteral("ec_paramgen_curve:prime256v1"), QStringLiteral("-nodes")};
+    QString names = QStringLiteral("DNS:localhost,IP:127.0.0.1");
+    if (r.host != QLatin1String("127.0.0.1") && r.host != QLatin1String("localhost"))
+        names += (QHostAddress(r.host).isNull() ? QStringLiteral(",DNS:") : QStringLiteral(",IP:")) + r.host;
+    const QString serial = QStringLiteral("0x%1").arg(QRandomGenerator::system()->generate64() >> 1, 0, 16);
+    QString ignored;
+    const bool ok =
+        run(openssl,
+            QStringList{QStringLiteral("req"), QStringLiteral("-x509")} + ec
+                + QStringList{QStringLiteral("-keyout"), QStringLiteral("ca.key"), QStringLiteral("-out"),
+                              QStringLiteral("ca.crt"), QStringLiteral("-days"), QStringLiteral("3650"),
+                              QStringLiteral("-subj"), QStringLiteral("/CN=Roomba classroom CA"),
+                              QStringLiteral("-addext"), QStringLiteral("basicConstraints=critical,CA:TRUE"),
+                              QStringLiteral("-addext"), QStringLiteral("keyUsage=critical,keyCertSign,cRLSign")},
+            dir, error)
+        && run(openssl,
+               QStringList{QStringLiteral("req")} + ec
+                   + QStringList{QStringLiteral("-keyout"), QStringLiteral("server.key"), QStringLiteral("-out"),
+                                 QStringLiteral("server.csr"), QStringLiteral("-subj"),
+                                 QStringLiteral("/CN=%1").arg(r.host)},
+               dir, error)
+        && writeFile(QDir(dir).filePath(QStringLiteral("server.ext")),
+                     QStringLiteral("basicConstraints=CA:FALSE\nkeyUsage=critical,digitalSignature\n"
+                                    "extendedKeyUsage=serverAuth\nsubjectAltName=%1\n")
+                         .arg(names)
+                         .toUtf8(),
+                     kOwnerOnly, error)
+        && run(openssl,
+               {QStringLiteral("x509"), QStringLiteral("-req"), QStringLiteral("-in"), QStringLiteral("server.csr"),
+                QStringLiteral("-CA"), QStringLiteral("ca.crt"), QStringLiteral("-CAkey"), QStringLiteral("ca.key"),
+                QStringLiteral("-set_serial"), serial, QStringLiteral("-days"), QStringLiteral("3650"),
+                QStringLiteral("-extfile"), QStringLiteral("server.ext"), QStringLiteral("-out"),
+                QStringLiteral("server.crt")},
+               dir, error);
+    QFile::remove(QDir(dir).filePath(QStringLiteral("server.csr")));
+    QFile::remove(QDir(dir).filePath(QStringLiteral("server.ext")));
+    if (!ok)
+        return false;
+    for (const char *secret : {"ca.key", "server.key"})
+        QFile::setPermissions(QDir(dir).filePath(QString::fromLatin1(secret)), kOwnerOnly);
+    QFile::setPermissions(QDir(dir).filePath(QStringLiteral("ca.crt")), kEveryoneReads);
+    QFile::setPermissions(QDir(dir).filePath(QStringLiteral("server.crt")), kEveryoneReads);
+    return true;
+}
+
+QByteArray brokerConfig(const Request &r, const QString &finalDir)
+{
+    const QDir d(finalDir);
+    // Started as root (sudo), mosquitto becomes this user, and must still
+    // read the password file, the ACL and the key: their owner, who ran init.
+    const passwd *owner = ::getpwuid(::geteuid());
+    const QString user = owner ? QStringLiteral("user %1\n").arg(QString::fromLocal8Bit(owner->pw_name)) : QString();
+    return QStringLiteral(
+               "# The classroom's broker, made by roomba-classroom init: mosquitto -c %1\n"
+               "# Accounts and passwords: accounts.txt. Who may do what: acl (docs/mqtt.md).\n"
+               "%2"
+               "per_listener_settings false\n"
+               "allow_anonymous false\n"
+               "password_file %3\n"
+               "acl_file %4\n"
+               "# Every packet is bounded before anything reads it (telemetry is about\n"
+               "# 1.5 KiB, commands far less), and so is what waits for a slow client.\n"
+               "max_packet_size 8192\n"
+               "max_inflight_messages 20\n"
+               "max_queued_messages 200\n"
+               "max_queued_bytes 1048576\n"
+               "# Replies and stops go out at once, not held back to fill a packet.\n"
+               "set_tcp_nodelay true\n"
+               "# A restarted broker starts clean: no stale retained state.\n"
+               "persistence false\n"
+               "\n"
+               "# TLS only, on %5%6.\n"
+               "listener %7 %5\n"
+               "cafile %8\n"
+               "certfile %9\n"
+               "keyfile %10\n"
+               "tls_version tlsv1.2\n"
+               "# A client's id is its account name: nobody can knock a bridge off the\n"
+               "# broker by connecting with its id. (After the listener line: before it,\n"
+               "# mosquitto would open a plain listener on 1883 for it.)\n"
+               "use_username_as_clientid true\n")
+        .arg(d.filePath(QStringLiteral("mosquitto.conf")), user, d.filePath(QStringLiteral("passwords")),
+             d.filePath(QStringLiteral("acl")), r.host,
+             r.host == QLatin1String("127.0.0.1") ? QStringLiteral(" only (init --host ADDRESS opens it to a network)")
+                                                  : QString(),
+             QString::number(r.port), d.filePath(QStringLiteral("ca.crt")), d.filePath(QStringLiteral("server.crt")))
+        .arg(d.filePath(QStringLiteral("server.key")))
+        .toUtf8();
+}
+
+QByteArray acl(const Request &r)
+{
+    QString a = QStringLiteral(
+        "# The classroom's access rules, made by roomba-classroom init (the model:\n"
+        "# resources/mqtt/acl; topics: docs/mqtt.md). A user writes only under its\n"
+        "# own name, so nobody can speak for somebody else.\n\n"
+        "# Each robot's bridge writes only its own robot's topics.\n");
+    for (const QString &robot : r.robots)
+        a += QStringLiteral("user %1\n"
+                            "topic write roomba/%2/state\n"
+                            "topic write roomba/%2/telemetry\n"
+                            "topic write roomba/%2/stats\n"
+                            "topic write roomba/%2/reply/+\n"
+                            "topic read roomba/%2/command/+\n"
+                            "topic read roomba/%2/control/+\n"
+                            "topic read roomba/%2/takeover/+\n"
+                            "topic read roomba/fleet/stop\n\n")
+                 .arg(bridgeAccount(robot), robot);
+    a += QStringLiteral("# The teacher watches everything, takes control from whoever holds it,\n"
+                        "# and stops the whole fleet.\n"
+                        "user %1\n"
+                        "topic read roomba/#\n"
+                        "topic write roomba/+/takeover/%1\n"
+                        "topic write roomba/fleet/stop\n\n")
+             .arg(r.teacher);
+    if (!r.spectators.isEmpty())
+        a += QStringLiteral("# Spectators watch and never drive: a denial here wins over the patterns.\n");
+    for (const QString &s : r.spectators)
+        a += QStringLiteral("user %1\ntopic deny roomba/+/command/#\ntopic deny roomba/+/control/#\n\n").arg(s);
+    a += QStringLiteral("# Everyone else (the students) reads everything, and writes commands and\n"
+                        "# control messages under their own name only.\n"
+                        "pattern read roomba/#\n"
+                        "pattern write roomba/+/command/%u\n"
+                        "pattern write roomba/+/control/%u\n");
+    return a.toUtf8();
+}
+
+QByteArray bridgeConfig(const Request &r, const QString &robot, const QString &password)
+{
+    return QStringLiteral(
+               "# roomba-bridge for robot %1, made by roomba-classroom init. On the robot's\n"
+               "# Pi: copy this file and ca.crt (beside it) to /etc/roomba-bridge/, say where\n"
+               "# the robot is below, then: systemctl enable --now roomba-bridge@%1\n"
+               "# Here, with a virtual robot: roomba-bridge --config %1.conf --sim\n"
+               "name = %1\n"
+               "broker = %2\n"
+               "username = %3\n"
+               "password = %4\n"
+               "# Relative to this file.\n"
+               "cafile = ca.crt\n\n"
+               "# Where the robot is: one of these (--sim, --port or --tcp on the command\n"
+               "# line wins).\n"
+               "port = /dev/ttyUSB0\n"
+               "# tcp = 127.0.0.1:3333\n"
+               "# The robot: roomba500, create2 (also roomba600) or create1. A Roomba 500\n"
+               "# or a Create 2 must be named; a Create is found by asking it.\n"
+               "# profile = create2\n")
+        .arg(robot, brokerUrl(r), bridgeAccount(robot), password)
+        .toUtf8();
+}
+
+QByteArray accountsText(const Request &r, const QList<Account> &accounts)
+{
+    QString t = QStringLiteral("Roomba classroom, made %1 by roomba-classroom init.\n"
+                               "Broker: %2, TLS with the CA certificate ca.crt.\n"
+                               "Keep this file, passwords and ca.key to yourself.\n\n")
+                    .arg(QDateTime::currentDateTime().toString(Qt::ISODate), brokerUrl(r));
+    t += QStringLiteral("%1 %2 %3\n").arg(QStringLiteral("role"), -10).arg(QStringLiteral("account"), -24).arg(QStringLiteral("password"));
+    for (const Account &a : accounts)
+        t += QStringLiteral("%1 %2 %3\n").arg(a.role, -10).arg(a.name, -24).arg(a.password);
+    return t.toUtf8();
+}
+
+} // namespace
+
+QString bridgeAccount(const QString &robot) { return QStringLiteral("bridge-") + robot; }
+
+QString brokerUrl(const Request &request)
+{
+    const bool ipv6 = QHostAddress(request.host).protocol() == QAbstractSocket::IPv6Protocol;
+    return QStringLiteral("mqtts://%1:%2").arg(ipv6 ? QStringLiteral("[%1]").arg(request.host) : request.host).arg(request.port);
+}
+
+QString check(const Request &r)
+{
+    static const QString rule = QStringLiteral("1 to 64 letters (a-z, A-Z), digits, '-' or '_'");
+    if (r.robots.isEmpty())
+        return QStringLiteral("name the robots: --robots r1,r2,r3");
+    if (r.students.isEmpty())
+        return QStringLiteral("name the students: --students alice,bob");
+    QSet<QString> accounts;
+    const auto name = [&](const QString &what, const QString &n, const QString &option) -> QString {
+        if (!mqtt::topics::isValidName(n))
+            return QStringLiteral("%1 '%2' (%3) is not a name: %4. Use such a name instead.")
+                .arg(what, n.left(80), option, rule);
+        return {};
+    };
+    const auto account = [&](const QString &n, const QString &option) -> QString {
+        if (accounts.contains(n))
+            return QStringLiteral("the account '%1' (%2) is named twice: each account needs a name of its own").arg(n, option);
+        accounts.insert(n);
+        return {};
+    };
+    QSet<QString> robots;
+    for (const QString &robot : r.robots) {
+        if (QString e = name(QStringLiteral("robot"), robot, QStringLiteral("--robots")); !e.isEmpty())
+            return e;
+        if (robot == QLatin1String("fleet"))
+            return QStringLiteral("'fleet' (--robots) cannot name a robot: roomba/fleet/ is Stop all's topic");
+        if (robots.contains(robot))
+            return QStringLiteral("the robot '%1' (--robots) is named twice").arg(robot);
+        robots.insert(robot);
+        if (bridgeAccount(robot).size() > 64)
+            return QStringLiteral("robot '%1' (--robots): its bridge's account %2 is over 64 characters; use a shorter name")
+                .arg(robot, bridgeAccount(robot));
+        if (QString e = account(bridgeAccount(robot), QStringLiteral("the bridge of robot %1").arg(robot)); !e.isEmpty())
+            return e;
+    }
+    const QList<std::pair<QStringList, QString>> people{{{r.teacher}, QStringLiteral("--teacher")},
+                                                        {r.students, QStringLiteral("--students")},
+                                                        {r.spectators, QStringLiteral("--spectators")}};
+    for (const auto &[names, option] : people)
+        for (const QString &n : names) {
+            if (QString e = name(QStringLiteral("account"), n, option); !e.isEmpty())
+                return e;
+            if (QString e = account(n, option); !e.isEmpty())
+                return e;
+        }
+    if (!isHostName(r.host) || QHostAddress(r.host) == QHostAddress::AnyIPv4 || QHostAddress(r.host) == QHostAddress::AnyIPv6)
+        return QStringLiteral("'%1' (--host) is not this machine's address: give the address (or name) by which the "
+                              "robots and laptops reach it on the classroom network, e.g. --host 192.168.1.10")
+            .arg(r.host.left(80));
+    if (r.port < 1 || r.port > 65535)
+        return QStringLiteral("the port must be from 1 to 65535, not %1").arg(r.port);
+    const QDir dir(r.dir);
+    if (r.dir.isEmpty())
+        return QStringLiteral("say where: roomba-classroom init DIR ...");
+    if (dir.exists() && !dir.isEmpty(QDir::AllEntries | QDir::NoDotAndDotDot | QDir::Hidden | QDir::System))
+        return QStringLiteral("%1 is not empty: init writes new passwords only into a new or empty folder, so "
+                              "it never overwrites a classroom. Choose another folder (or remove this one to "
+                              "start over).")
+            .arg(QDir::toNativeSeparators(dir.absolutePath()));
+    if (QFileInfo(r.dir).exists() && !QFileInfo(r.dir).isDir())
+        return QStringLiteral("%1 is a file, not a folder").arg(r.dir);
+    return {};
+}
+
+QString missingTools()
+{
+    if (program("openssl").isEmpty())
+        return QStringLiteral("openssl makes the broker's certificates and is not installed: apt-get install openssl");
+    if (program("mosquitto_passwd").isEmpty())
+        return QStringLiteral("mosquitto_passwd makes the password file and is not installed: apt-get install mosquitto");
+    return {};
+}
+
+std::optional<QList<Account>> init(const Request &r, QString *error)
+{
+    if (*error = check(r); !error->isEmpty())
+        return std::nullopt;
+    if (*error = missingTools(); !error->isEmpty())
+        return std::nullopt;
+    const QString finalDir = QDir(r.dir).absolutePath();
+    const QFileInfo target(finalDir);
+    if (!QDir().mkpath(target.absolutePath())) {
+        *error = QStringLiteral("cannot make the folder %1").arg(target.absolutePath());
+        return std::nullopt;
+    }
+    // Made beside the target, moved into place when complete.
+    QTemporaryDir work(QDir(target.absolutePath()).filePath(QStringLiteral(".%1-XXXXXX").arg(target.fileName())));
+    if (!work.isValid()) {
+        *error = QStringLiteral("cannot make a folder in %1: %2").arg(target.absolutePath(), work.errorString());
+        return std::nullopt;
+    }
+    const QDir w(work.path());
+
+    QList<Account> accounts{{QStringLiteral("teacher"), r.teacher, strongPassword()}};
+    for (const QString &s : r.students)
+        accounts.append({QStringLiteral("student"), s, strongPassword()});
+    for (const QString &s : r.spectators)
+        accounts.append({QStringLiteral("spectator"), s, strongPassword()});
+    for (const QString &robot : r.robots)
+        accounts.append({QStringLiteral("bridge"), bridgeAccount(robot), strongPassword()});
+
+    // mosquitto_passwd -U hashes a file of user:password lines in place.
+    QByteArray plain;
+    for (const Account &a : accounts)
+        plain += (a.name + QLatin1Char(':') + a.password + QLatin1Char('\n')).toUtf8();
+    if (!makeCertificates(r, w.path(), error) || !writeFile(w.filePath(QStringLiteral("passwords")), plain, kOwnerOnly, error)
+        || !run(program("mosquitto_passwd"), {QStringLiteral("-U"), QStringLiteral("passwords")}, w.path(), error)
+        || !writeFile(w.filePath(QStringLiteral("acl")), acl(r), kOwnerOnly, error)
+        || !writeFile(w.filePath(QStringLiteral("mosquitto.conf")), brokerConfig(r, finalDir), kEveryoneReads, error)
+        || !writeFile(w.filePath(QStringLiteral("accounts.txt")), accountsText(r, accounts), kOwnerOnly, error))
+        return std::nullopt;
+    if (!w.mkdir(QStringLiteral("bridges"))
+        || !QFile::copy(w.filePath(QStringLiteral("ca.crt")), w.filePath(QStringLiteral("bridges/ca.crt")))) {
+        *error = QStringLiteral("cannot write %1").arg(w.filePath(QStringLiteral("bridges")));
+        return std::nullopt;
+    }
+    for (const Account &a : accounts)
+        if (a.role == QLatin1String("bridge")) {
+            const QString robot = a.name.mid(bridgeAccount({}).size());
+            if (!writeFile(w.filePath(QStringLiteral("bridges/%1.conf").arg(robot)), bridgeConfig(r, robot, a.password),
+                           kOwnerOnly, error))
+                return std::nullopt;
+        }
+    QFile::setPermissions(work.path(), kOwnerOnly | QFileDevice::ExeOwner);
+    // An empty target gives way to the finished folder; a rename is all or nothing.
+    if (QFileInfo::exists(finalDir) && !QDir().rmdir(finalDir)) {
+        *error = QStringLiteral("cannot replace the empty folder %1").arg(finalDir);
+        return std::nullopt;
+    }
+    if (!QDir().rename(work.path(), finalDir)) {
+        *error = QStringLiteral("cannot move the classroom into %1").arg(finalDir);
+        return std::nullopt;
+    }
+    work.setAutoRemove(false);
+    return accounts;
+}
+
+} // namespace classroom

@@ -1,0 +1,111 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// roomba-classroom: sets up a classroom's broker in one command (README,
+// "Classroom over MQTT"; docs/mqtt.md).
+
+#include "classroom_setup.h"
+
+#include <QCommandLineParser>
+#include <QCoreApplication>
+#include <QDir>
+
+#include <cstdio>
+
+namespace {
+
+constexpr int kUsageError = 2;
+
+int fail(const QString &message, int status = kUsageError)
+{
+    std::fprintf(stderr, "roomba-classroom: %s\n", qPrintable(message));
+    return status;
+}
+
+QStringList listOf(const QString &value)
+{
+    QStringList names;
+    for (const QString &n : value.split(QLatin1Char(',')))
+        names << n.trimmed();
+    return value.trimmed().isEmpty() ? QStringList() : names;
+}
+
+} // namespace
+
+int main(int argc, char *argv[])
+{
+    QCoreApplication app(argc, argv);
+    QCoreApplication::setApplicationName(QStringLiteral("roomba-classroom"));
+    QCoreApplication::setApplicationVersion(QStringLiteral(ROOMBA_VERSION));
+
+    QCommandLineParser parser;
+    parser.setApplicationDescription(QStringLiteral(
+        "roomba-classroom init DIR --robots r1,r2,r3 --students alice,bob [options]\n\n"
+        "Writes a ready classroom broker into DIR (new or empty): mosquitto.conf (TLS on\n"
+        "port 8883 with a CA and a server certificate made here), the password file with\n"
+        "strong random passwords, the ACL, accounts.txt with every account and password,\n"
+        "and bridges/NAME.conf for each robot's bridge. Then: mosquitto -c DIR/mosquitto.conf\n"
+        "Names: 1 to 64 letters, digits, '-' or '_'."));
+    const QCommandLineOption helpOption = parser.addHelpOption();
+    const QCommandLineOption versionOption = parser.addVersionOption();
+    parser.addPositionalArgument(QStringLiteral("init"), QStringLiteral("The command: init."));
+    parser.addPositionalArgument(QStringLiteral("DIR"), QStringLiteral("The folder to write (new or empty)."));
+    parser.addOptions({
+        {QStringLiteral("robots"), QStringLiteral("The robots' names, comma-separated; each gets a bridge account bridge-NAME."), QStringLiteral("NAMES")},
+        {QStringLiteral("students"), QStringLiteral("The students' accounts, comma-separated: they watch and drive."), QStringLiteral("NAMES")},
+        {QStringLiteral("spectators"), QStringLiteral("Accounts that only watch, comma-separated."), QStringLiteral("NAMES")},
+        {QStringLiteral("teacher"), QStringLiteral("The teacher's account (default teacher): takes control from anyone, stops all."), QStringLiteral("NAME")},
+        {QStringLiteral("host"), QStringLiteral("This machine's address on the classroom network; the broker listens there "
+                                                "(default 127.0.0.1: this machine only)."), QStringLiteral("ADDRESS")},
+        {QStringLiteral("port"), QStringLiteral("The broker's TLS port (default 8883)."), QStringLiteral("PORT")},
+    });
+    if (!parser.parse(QCoreApplication::arguments()))
+        return fail(parser.errorText() + QStringLiteral(" (roomba-classroom --help)"));
+    if (parser.isSet(helpOption)) {
+        std::fputs(qPrintable(parser.helpText()), stdout);
+        return 0;
+    }
+    if (parser.isSet(versionOption)) {
+        std::printf("roomba-classroom %s\n", ROOMBA_VERSION);
+        return 0;
+    }
+    const QStringList args = parser.positionalArguments();
+    if (args.value(0) != QLatin1String("init"))
+        return fail(QStringLiteral("say what to do: roomba-classroom init DIR --robots r1,r2 --students alice,bob"));
+    if (args.size() != 2)
+        return fail(args.size() < 2 ? QStringLiteral("say where: roomba-classroom init DIR ...")
+                                    : QStringLiteral("unexpected argument '%1': init takes one folder").arg(args.value(2)));
+
+    classroom::Request r;
+    r.dir = args[1];
+    r.robots = listOf(parser.value(QStringLiteral("robots")));
+    r.students = listOf(parser.value(QStringLiteral("students")));
+    r.spectators = listOf(parser.value(QStringLiteral("spectators")));
+    if (parser.isSet(QStringLiteral("teacher")))
+        r.teacher = parser.value(QStringLiteral("teacher")).trimmed();
+    if (parser.isSet(QStringLiteral("host")))
+        r.host = parser.value(QStringLiteral("host")).trimmed();
+    if (parser.isSet(QStringLiteral("port"))) {
+        bool ok = false;
+        r.port = parser.value(QStringLiteral("port")).toInt(&ok);
+        if (!ok)
+            return fail(QStringLiteral("--port: '%1' is not a port number from 1 to 65535").arg(parser.value(QStringLiteral("port"))));
+    }
+
+    QString error;
+    const std::optional<QList<classroom::Account>> accounts = classroom::init(r, &error);
+    if (!accounts)
+        return fail(error, classroom::check(r).isEmpty() && classroom::missingTools().isEmpty() ? 1 : kUsageError);
+
+    const QString dir = QDir(r.dir).absolutePath();
+    std::printf("A classroom broker is in %s (accounts.txt lists every account):\n\n", qPrintable(dir));
+    for (const classroom::Account &a : *accounts)
+        std::printf("  %-10s %-24s %s\n", qPrintable(a.role), qPrintable(a.name), qPrintable(a.password));
+    std::printf("\nStart the broker:  mosquitto -c %s/mosquitto.conf\n"
+                "Each robot's Pi:   copy bridges/NAME.conf and bridges/ca.crt to /etc/roomba-bridge/,\n"
+                "                   then systemctl enable --now roomba-bridge@NAME\n"
+                "A virtual robot:   roomba-bridge --config %s/bridges/%s.conf --sim\n"
+                "The dashboard:     File > Connect to broker: %s, port %d, TLS, CA file %s/ca.crt,\n"
+                "                   user %s and its password above\n",
+                qPrintable(dir), qPrintable(dir), qPrintable(r.robots.first()), qPrintable(r.host), r.port,
+                qPrintable(dir), qPrintable(r.teacher));
+    return 0;
+}

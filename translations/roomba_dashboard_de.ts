@@ -648,6 +648,14 @@
             <numerusform>Kanäle (%n)</numerusform>
         </translation>
     </message>
+    <message>
+        <source>plain numbers</source>
+        <translation>reine Zahlen</translation>
+    </message>
+    <message>
+        <source>This plot&apos;s axes show %1 and %2: add a plot for %3</source>
+        <translation>Die Achsen dieses Diagramms zeigen %1 und %2: fügen Sie für %3 ein Diagramm hinzu</translation>
+    </message>
 </context>
 <context>
     <name>CommandDecoder</name>

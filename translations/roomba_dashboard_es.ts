@@ -648,6 +648,14 @@
             <numerusform>Canales (%n)</numerusform>
         </translation>
     </message>
+    <message>
+        <source>plain numbers</source>
+        <translation>números sin unidad</translation>
+    </message>
+    <message>
+        <source>This plot&apos;s axes show %1 and %2: add a plot for %3</source>
+        <translation>Los ejes de este gráfico muestran %1 y %2: añada un gráfico para %3</translation>
+    </message>
 </context>
 <context>
     <name>CommandDecoder</name>

@@ -4,11 +4,14 @@
 #include "plot_samples.h"
 #include "sensor_history.h"
 #include "trace_columns.h"
+#include "value_axes.h"
 
 #include <QAction>
 #include <QApplication>
 #include <QLabel>
 #include <QMenu>
+#include <QScrollArea>
+#include <QScrollBar>
 #include <QSignalSpy>
 #include <QTest>
 
@@ -107,10 +110,12 @@ private slots:
         QCOMPARE(plot->xAxis->range().upper, 105.0);
         QCOMPARE(visiblePoints(plot, 0), heldPoints(h, 22, plot->xAxis->range()));
         QCOMPARE((plot->graph(0)->data()->constEnd() - 1)->value, 14000.0 + 1049);
-        // The value axis spans what is visible.
+        // The value axis spans what is visible, and at least the voltage's
+        // smallest span (500 mV) about it.
         QVERIFY(plot->yAxis->range().contains(14000 + 1049));
         QVERIFY(plot->yAxis->range().contains(14000 + 949));
-        QVERIFY(!plot->yAxis->range().contains(14000 + 900));
+        QVERIFY(plot->yAxis->range().size() >= 500);
+        QVERIFY(!plot->yAxis->range().contains(14000 + 600));
     }
 
     void fillsTheWindowFromTheLeftAtFirst()
@@ -416,7 +421,15 @@ private slots:
         QCOMPARE(plots.channels(1), (std::vector<int>{22, 23}));
         QCOMPARE(plots.plot(1)->graphCount(), 2);
         QCOMPARE(plots.plot(1)->graph(1)->name(), QStringLiteral("Current [mA]"));
-        QCOMPARE(plots.plot(1)->yAxis->label(), QStringLiteral("")); // mV and mA
+        // One unit per axis: mV on the left, mA on the right.
+        QCOMPARE(plots.plot(1)->yAxis->label(), QStringLiteral("mV"));
+        QCOMPARE(plots.plot(1)->yAxis2->label(), QStringLiteral("mA"));
+        QVERIFY(plots.plot(1)->yAxis2->visible());
+        QCOMPARE(plots.plot(1)->graph(0)->valueAxis(), plots.plot(1)->yAxis);
+        QCOMPARE(plots.plot(1)->graph(1)->valueAxis(), plots.plot(1)->yAxis2);
+        QVERIFY(!plots.setChannels(1, {22, 23, 24})); // a third unit (°C)
+        QCOMPARE(plots.channels(1), (std::vector<int>{22, 23}));
+        QVERIFY(!plots.plot(0)->yAxis2->visible());
         QVERIFY(plots.setChannels(0, {46, 47, 46}));
         QCOMPARE(plots.channels(0), (std::vector<int>{46, 47}));
         QCOMPARE(plots.plot(0)->yAxis->label(), QStringLiteral(""));
@@ -435,6 +448,11 @@ private slots:
         voltage->trigger();
         QCOMPARE(plots.channels(0), (std::vector<int>{54, 55, 22}));
         QVERIFY(voltage->isChecked());
+        // Two units shown: a third is offered in another plot, and says so.
+        QAction *temperature = plots.channelChooser(0)->actionFor(24);
+        QVERIFY(!temperature->isEnabled());
+        QVERIFY2(temperature->toolTip().contains(QStringLiteral("add a plot for \u00b0C")), qPrintable(temperature->toolTip()));
+        QVERIFY(plots.channelChooser(0)->actionFor(57)->isEnabled()); // mA, like the others
         auto *battery = qobject_cast<QMenu *>(voltage->parent());
         QVERIFY(battery);
         QCOMPARE(battery->title(), QStringLiteral("Battery (1)"));
@@ -445,6 +463,62 @@ private slots:
         QCOMPARE(plots.plotCount(), 1);
         QVERIFY(!plots.removePlot(0)); // the last plot stays
         QCOMPARE(plots.plottedChannels(), (std::vector<int>{54, 55}));
+    }
+
+    // Noise of a milliamp or two is a thin line, not the whole plot.
+    void aQuietCurrentKeepsItsSmallestSpan()
+    {
+        Scene scene({23});
+        for (int k = 0; k < 100; ++k) {
+            SensorSnapshot s(oi::profile(ProfileId::Create2));
+            s.set(23, -380 + (k % 3) - 1); // 1.5 mA of noise
+            QVERIFY(scene.history.append(k / 10.0, s));
+        }
+        scene.refresh();
+        const QCPRange shown = scene.plots.plot(0)->yAxis->range();
+        QVERIFY2(shown.size() >= 200, qPrintable(QString::number(shown.size())));
+        QVERIFY(shown.contains(-381) && shown.contains(-379));
+        QVERIFY(std::abs(shown.center() + 380) < 1);
+    }
+
+    void smallestSpansFollowTheCatalogue_data()
+    {
+        QTest::addColumn<int>("packet");
+        QTest::addColumn<double>("span");
+        QTest::newRow("voltage") << 22 << 500.0;
+        QTest::newRow("current") << 23 << 200.0;
+        QTest::newRow("motor current") << 54 << 200.0;
+        QTest::newRow("angle") << 20 << 10.0;
+        QTest::newRow("a flag, all of it") << 8 << 1.0;
+        QTest::newRow("a state, all of it") << 21 << 5.0;
+        QTest::newRow("a cliff signal, a fortieth") << 28 << 4095 / 40.0;
+    }
+    void smallestSpansFollowTheCatalogue()
+    {
+        QFETCH(int, packet);
+        QFETCH(double, span);
+        QCOMPARE(valueaxes::minimumSpan(*oi::profile(ProfileId::Create2).packet(packet)), span);
+    }
+
+    // Plots keep a readable height: when they do not fit, the stack scrolls.
+    void plotsKeepTheirHeightAndTheStackScrolls()
+    {
+        PlotStack plots;
+        plots.setChannels(0, {22});
+        plots.addPlot({23});
+        plots.addPlot({28});
+        plots.resize(900, 300);
+        plots.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&plots));
+        for (int i = 0; i < plots.plotCount(); ++i)
+            QVERIFY2(plots.plot(i)->height() >= 110, qPrintable(QString::number(plots.plot(i)->height())));
+        auto *scroll = plots.findChild<QScrollArea *>(QStringLiteral("plotScroll"));
+        QVERIFY(scroll);
+        QVERIFY(scroll->verticalScrollBar()->maximum() > 0);
+        // Tall enough, nothing scrolls and the plots share the height.
+        plots.resize(900, 800);
+        QTRY_COMPARE(scroll->verticalScrollBar()->maximum(), 0);
+        QVERIFY(plots.plot(2)->height() > 180);
     }
 
     void chooserGroupsCoverEveryPacketOnce()
@@ -627,9 +701,12 @@ private slots:
         QVERIFY(!voltage->isEmpty());
         QCOMPARE(voltage->constBegin()->key, 1.5);
         QCOMPARE(voltage->constBegin()->value, 15000.0);
-        // Its current (-2000) is inside the value axis, as this run's is.
-        QVERIFY(plot->yAxis->range().contains(-2000));
+        // Its current (-2000) is inside the current's axis, as this run's
+        // is, and its voltage inside the voltage's.
+        QVERIFY(plot->yAxis2->range().contains(-2000));
+        QVERIFY(plot->yAxis2->range().contains(-99));
         QVERIFY(plot->yAxis->range().contains(15000));
+        QCOMPARE(plot->graph(3)->valueAxis(), plot->yAxis2);
         const QString legend = plot->parentWidget()->findChild<QLabel *>(QStringLiteral("plotLegend"))->text();
         QVERIFY2(legend.contains(QStringLiteral("first.oirec")), qPrintable(legend));
         QVERIFY2(legend.contains(QStringLiteral("second.oirec (moved 1.50 s)")), qPrintable(legend));

@@ -159,8 +159,8 @@ private slots:
         SensorPlots plots;
         plots.setHistory(&h);
         plots.stack()->setWindowSeconds(60);
-        plots.stack()->setChannels(0, {22});
-        plots.stack()->addPlot({23, 54, 55});
+        plots.stack()->setChannels(0, {22, 23});
+        plots.stack()->addPlot({54, 55});
         plots.stack()->addPlot({46, 47, 48});
         plots.resize(900, 600);
         plots.show();

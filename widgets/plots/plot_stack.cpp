@@ -7,6 +7,7 @@
 #include "sensor_history.h"
 #include "trace_feed.h"
 #include "trace_plot.h"
+#include "value_axes.h"
 
 #include <QElapsedTimer>
 #include <QEvent>
@@ -14,6 +15,7 @@
 #include <QKeyEvent>
 #include <QLabel>
 #include <QScreen>
+#include <QScrollArea>
 #include <QShowEvent>
 #include <QSplitter>
 #include <QToolButton>
@@ -78,6 +80,7 @@ struct PlotStack::Panel {
     QLabel *readout = nullptr; // the tracer's values, beside the mouse
     QCPItemText *hint = nullptr;
     std::vector<int> channels;
+    QStringList units; // of the left and the right value axis
     std::vector<Trace> traces;
     std::vector<ComparisonFeed> comparisons;
     QList<QCPAbstractItem *> markerItems;
@@ -96,12 +99,21 @@ PlotStack::PlotStack(QWidget *parent)
     m_deferredDraw.setSingleShot(true);
     connect(&m_deferredDraw, &QTimer::timeout, this, &PlotStack::refresh);
 
-    m_splitter = new QSplitter(Qt::Vertical, this);
+    // Each plot keeps a readable height; when they do not all fit, the
+    // stack scrolls rather than squeezing them or growing the window.
+    auto *scroll = new QScrollArea(this);
+    scroll->setObjectName(QStringLiteral("plotScroll"));
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setWidgetResizable(true);
+    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    scroll->setFocusPolicy(Qt::NoFocus);
+    m_splitter = new QSplitter(Qt::Vertical, scroll);
     m_splitter->setChildrenCollapsible(false);
     m_splitter->setHandleWidth(5);
+    scroll->setWidget(m_splitter);
     auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
-    layout->addWidget(m_splitter);
+    layout->addWidget(scroll);
 
     addPlot();
     retranslateUi();
@@ -265,7 +277,8 @@ bool PlotStack::setChannels(int plotIndex, std::vector<int> ids)
         if (std::find(unique.begin(), unique.end(), id) == unique.end())
             unique.push_back(id);
     }
-    if (int(unique.size()) > kMaxChannelsPerPlot)
+    if (int(unique.size()) > kMaxChannelsPerPlot
+        || valueaxes::units(*m_profile, unique).size() > valueaxes::kMaxUnits)
         return false;
     Panel &panel = *m_panels[std::size_t(plotIndex)];
     panel.channels = std::move(unique);
@@ -372,6 +385,24 @@ QCPRange PlotStack::liveTimeRange() const
     const double step = m_windowSeconds * kLiveStepFraction;
     const double upper = std::ceil(newest / step) * step;
     return QCPRange(upper - m_windowSeconds, upper);
+}
+
+QFont PlotStack::smallFont() const
+{
+    QFont small = font();
+    small.setPointSizeF(std::max(7.0, (font().pointSizeF() > 0 ? font().pointSizeF() : 9.0) * 0.9));
+    return small;
+}
+
+QMargins PlotStack::sideMargins() const
+{
+    // Fixed side margins, so the stacked time axes line up whatever the
+    // width of each plot's value labels.
+    const QFont small = smallFont();
+    const QFontMetrics fm(small);
+    const int left = fm.horizontalAdvance(QStringLiteral("-32768")) + fm.height() + 14;
+    const int right = fm.horizontalAdvance(QStringLiteral("0000.0")) / 2 + 8;
+    return QMargins(left, 0, right, 0);
 }
 
 int PlotStack::columnCount(const Panel &panel) const
@@ -492,33 +523,45 @@ PlotStack::DrawCounts PlotStack::drawCounts(int plotIndex) const
 
 bool PlotStack::rescaleValues(Panel &panel)
 {
-    QCPRange values;
-    bool any = false;
-    // Both runs' lines, where a comparison is shown.
-    for (int g = 0; g < panel.plot->graphCount(); ++g) {
-        bool found = false;
-        const QCPRange r = panel.plot->graph(g)->getValueRange(found, QCP::sdBoth, m_timeRange);
-        if (!found)
+    bool changed = false;
+    for (QCPAxis *axis : {panel.plot->yAxis, panel.plot->yAxis2}) {
+        QCPRange values;
+        bool any = false;
+        // Both runs' lines on this axis, where a comparison is shown.
+        for (int g = 0; g < panel.plot->graphCount(); ++g) {
+            bool found = false;
+            QCPGraph *graph = panel.plot->graph(g);
+            const QCPRange r = graph->valueAxis() == axis ? graph->getValueRange(found, QCP::sdBoth, m_timeRange)
+                                                          : QCPRange();
+            if (!found)
+                continue;
+            if (any)
+                values.expand(r);
+            else
+                values = r;
+            any = true;
+        }
+        if (!any)
             continue;
-        if (any)
-            values.expand(r);
-        else
-            values = r;
-        any = true;
+        // At least the packets' smallest span, about the middle, so noise
+        // of a few counts stays a thin line.
+        double span = 0;
+        for (const Trace &trace : panel.traces)
+            if (trace.feed.graph()->valueAxis() == axis)
+                span = std::max(span, valueaxes::minimumSpan(*m_profile->packet(trace.feed.channel())));
+        if (values.size() < span)
+            values = QCPRange(values.center() - span / 2, values.center() + span / 2);
+        const QCPRange shown = axis->range();
+        // Kept while the data stays inside and fills enough of it: the axes
+        // are then not drawn again.
+        if (shown.contains(values.lower) && shown.contains(values.upper)
+            && values.size() >= shown.size() * kMinValueFill)
+            continue;
+        const double margin = values.size() * 0.08;
+        axis->setRange(values.lower - margin, values.upper + margin);
+        changed = true;
     }
-    if (!any)
-        return false;
-    if (values.size() == 0) // a flat line sits in the middle, not on an edge
-        values = QCPRange(values.lower - 1, values.upper + 1);
-    const QCPRange shown = panel.plot->yAxis->range();
-    // Kept while the data stays inside and fills enough of it: the axes are
-    // then not drawn again.
-    if (shown.contains(values.lower) && shown.contains(values.upper)
-        && values.size() >= shown.size() * kMinValueFill)
-        return false;
-    const double margin = values.size() * 0.08;
-    panel.plot->yAxis->setRange(values.lower - margin, values.upper + margin);
-    return true;
+    return changed;
 }
 
 void PlotStack::rebuildGraphs(Panel &panel)
@@ -530,9 +573,12 @@ void PlotStack::rebuildGraphs(Panel &panel)
     panel.traces.clear();
     panel.comparisons.clear();
     const QColor text = palette().color(QPalette::Text);
+    panel.units = valueaxes::units(*m_profile, panel.channels);
     for (std::size_t i = 0; i < panel.channels.size(); ++i) {
         const oi::PacketInfo *info = m_profile->packet(panel.channels[i]);
-        QCPGraph *graph = panel.plot->addTrace();
+        // One unit per axis: the first unit on the left, the second on the right.
+        QCPGraph *graph = panel.plot->addTrace(valueaxes::axisOf(*info, panel.units) == 1 ? panel.plot->yAxis2
+                                                                                           : panel.plot->yAxis);
         graph->setName(ChannelChooser::channelLabel(*info));
         graph->setPen(QPen(kSeriesColors[i], 1.6));
         graph->setLineStyle(isStepChannel(*info) ? QCPGraph::lsStepLeft : QCPGraph::lsLine);
@@ -551,7 +597,7 @@ void PlotStack::rebuildGraphs(Panel &panel)
     // After this run's lines, so graph(i) is channel i's.
     for (std::size_t i = 0; m_comparison && i < panel.channels.size(); ++i) {
         // Under the live traces, with the axes: it changes only when they do.
-        auto *other = new QCPGraph(panel.plot->xAxis, panel.plot->yAxis);
+        auto *other = new QCPGraph(panel.plot->xAxis, panel.traces[i].feed.graph()->valueAxis());
         other->setName(m_comparisonLabel);
         other->setPen(comparisonPen(kSeriesColors[i]));
         other->setLineStyle(panel.traces[i].feed.graph()->lineStyle());
@@ -614,8 +660,7 @@ void PlotStack::placeMarkers(Panel &panel)
     line.setAlpha(170);
     QColor back = palette().color(QPalette::Base);
     back.setAlpha(215);
-    QFont small = font();
-    small.setPointSizeF(std::max(7.0, (font().pointSizeF() > 0 ? font().pointSizeF() : 9.0) * 0.9));
+    const QFont small = smallFont();
     for (const PlotMarker &marker : std::as_const(m_markers)) {
         // At its time on the shared axis, from the top of the data area to the bottom.
         auto *mark = new QCPItemLine(panel.plot);
@@ -708,19 +753,22 @@ void PlotStack::updatePlotDescription(Panel &panel)
 
 void PlotStack::updateAxisLabels()
 {
+    // Where any plot has a right value axis, every plot leaves room for it,
+    // so the stacked time axes line up.
+    bool twoAxes = false;
+    for (const auto &panel : m_panels)
+        twoAxes |= panel->units.size() > 1;
     for (std::size_t i = 0; i < m_panels.size(); ++i) {
         Panel &panel = *m_panels[i];
         // The shared time axis is named once, under the bottom plot.
         panel.plot->xAxis->setLabel(i + 1 == m_panels.size() ? tr("Time (s)") : QString());
-        // The value axis carries a unit only where every channel shares it.
-        QString unit;
-        if (!panel.channels.empty()) {
-            unit = oitext::fromView(m_profile->packet(panel.channels.front())->unit);
-            for (int id : panel.channels)
-                if (oitext::fromView(m_profile->packet(id)->unit) != unit)
-                    unit.clear();
-        }
-        panel.plot->yAxis->setLabel(unit);
+        // Each value axis carries its one unit.
+        panel.plot->yAxis->setLabel(panel.units.value(0));
+        panel.plot->yAxis2->setVisible(panel.units.size() > 1);
+        panel.plot->yAxis2->setLabel(panel.units.value(1));
+        const QMargins margins = panel.plot->axisRect()->margins();
+        panel.plot->axisRect()->setMargins(
+            QMargins(margins.left(), 0, twoAxes ? margins.left() : sideMargins().right(), 0));
         panel.remove->setEnabled(m_panels.size() > 1);
         panel.dirty = true;
     }
@@ -735,9 +783,8 @@ void PlotStack::applyTheme(Panel &panel)
     grid.setAlpha(110);
     QCustomPlot *plot = panel.plot;
     plot->setBackground(base);
-    QFont small = font();
-    small.setPointSizeF(std::max(7.0, (font().pointSizeF() > 0 ? font().pointSizeF() : 9.0) * 0.9));
-    for (QCPAxis *axis : {plot->xAxis, plot->yAxis}) {
+    const QFont small = smallFont();
+    for (QCPAxis *axis : {plot->xAxis, plot->yAxis, plot->yAxis2}) {
         axis->setBasePen(QPen(text, 1));
         axis->setTickPen(QPen(text, 1));
         axis->setSubTickPen(QPen(text, 1));
@@ -748,13 +795,9 @@ void PlotStack::applyTheme(Panel &panel)
         axis->grid()->setPen(QPen(grid, 1, Qt::DotLine));
         axis->grid()->setZeroLinePen(QPen(grid, 1));
     }
-    // Fixed side margins, so the stacked time axes line up whatever the
-    // width of each plot's value labels.
-    const QFontMetrics fm(small);
-    const int left = fm.horizontalAdvance(QStringLiteral("-32768")) + fm.height() + 14;
-    const int right = fm.horizontalAdvance(QStringLiteral("0000.0")) / 2 + 8;
+    plot->yAxis2->grid()->setVisible(false); // the left axis's grid serves both
     plot->axisRect()->setAutoMargins(QCP::msTop | QCP::msBottom);
-    plot->axisRect()->setMargins(QMargins(left, 0, right, 0));
+    plot->axisRect()->setMargins(sideMargins());
 
     QColor readoutBack = base;
     readoutBack.setAlpha(230);
@@ -908,6 +951,7 @@ void PlotStack::changeEvent(QEvent *event)
     if (event->type() == QEvent::PaletteChange || event->type() == QEvent::FontChange) {
         for (auto &panel : m_panels)
             applyTheme(*panel);
+        updateAxisLabels();
         applyPaused();
     }
 }

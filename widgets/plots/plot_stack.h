@@ -135,6 +135,10 @@ private:
     QCPRange liveTimeRange() const;
     // The part of the plot where the traces changed since it was drawn.
     QRect changedTracesRect(const Panel &panel) const;
+    // For the axes, the tracer and the markers: a little under the widget's font.
+    QFont smallFont() const;
+    // The plot's left and right margins without a right value axis.
+    QMargins sideMargins() const;
     // Pixel columns of the plot's data area.
     int columnCount(const Panel &panel) const;
     // The shortest time between two redraws of a plot: one screen refresh.

@@ -79,6 +79,8 @@ void SelectedRobotView::show(RobotSession *robot)
         connect(robot, &RobotSession::modeChanged, this, &SelectedRobotView::showMode),
         // A calibration applied, reset or restored: the map's wheel fields follow.
         connect(robot, &RobotSession::calibrationChanged, this, [v, robot] { v.map->setOdometry(&robot->odometry()); }),
+        // The map draws the robot's path in its colour in the robot list.
+        connect(robot, &RobotSession::identityChanged, this, [v, robot] { v.map->setOdometryColour(robot->colour()); }),
         connect(robot, &RobotSession::recordingStatus, this, [v](const oilink::RecordingStatus &status) {
             v.status->showRecording(status);
             v.recording->showSelectedRobot();
@@ -102,6 +104,7 @@ void SelectedRobotView::show(RobotSession *robot)
 
     v.plots->setHistory(&robot->history());
     v.map->setOdometry(&robot->odometry());
+    v.map->setOdometryColour(robot->colour());
     // The virtual robot lives in the classroom world and starts where the
     // odometry does, so a class can watch the estimate drift from the room.
     m_room.floorShownNoMore();

@@ -2,6 +2,7 @@
 #include "recording_file.h"
 
 #include "firmware_banner.h"
+#include "sensor_csv.h"
 #include "stream_parser.h"
 
 #include <QCoreApplication>
@@ -359,11 +360,10 @@ std::optional<oi::FirmwareInfo> Recording::firmware() const
 
 void Recording::writeCsv(QTextStream &out) const
 {
-    const std::vector<const oi::PacketInfo *> columns = streamedPackets();
-    out << "time_s";
-    for (const oi::PacketInfo *info : columns)
-        out << ',' << fromStd(info->key);
-    out << '\n';
+    const SensorCsv csv(streamedPackets());
+    QByteArray buffer;
+    csv.appendHeader(buffer);
+    std::vector<std::optional<std::int32_t>> cells(csv.columns().size());
     // A Reset recorded with the stream names the firmware; what it reports
     // wrongly is corrected in every frame, as the dashboard shows it (ERRATA 16).
     const auto firmware = this->firmware();
@@ -371,14 +371,16 @@ void Recording::writeCsv(QTextStream &out) const
         oi::SensorSnapshot s = frame;
         if (firmware)
             firmware->corrections.correct(s);
-        out << QString::number(static_cast<double>(timeUs) / 1e6, 'f', 6);
-        for (const oi::PacketInfo *info : columns) {
-            out << ',';
-            if (s.has(info->id))
-                out << s.raw(info->id);
+        for (std::size_t i = 0; i < cells.size(); ++i)
+            cells[i] = s.has(csv.columns()[i]->id) ? std::optional(s.raw(csv.columns()[i]->id)) : std::nullopt;
+        csv.appendRow(buffer, static_cast<double>(timeUs) / 1e6, cells);
+        // Out in pieces: an hour of frames is tens of megabytes.
+        if (buffer.size() >= 64 * 1024) {
+            out << QString::fromUtf8(buffer);
+            buffer.clear();
         }
-        out << '\n';
     });
+    out << QString::fromUtf8(buffer);
 }
 
 } // namespace oilink

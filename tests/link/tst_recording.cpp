@@ -393,7 +393,7 @@ private slots:
 
         const Recording r = load(path);
         const QStringList lines = csvLines(r);
-        const int angle = lines[0].split(',').indexOf("angle");
+        const int angle = lines[0].split(QLatin1Char(',')).indexOf("angle[deg]");
         QVERIFY(angle > 0);
         const QList<oi::SensorSnapshot> raw = allSnapshots(r);
         QCOMPARE(lines.size(), raw.size() + 1);
@@ -418,7 +418,7 @@ private slots:
         QCOMPARE(columns.first(), QString("time_s"));
         QCOMPARE(columns.size(), 1 + 52); // group 100: packets 7..58
         QCOMPARE(columns[1], QString("bumps_wheel_drops"));
-        const int voltage = columns.indexOf("voltage");
+        const int voltage = columns.indexOf("voltage[mV]");
         QVERIFY(voltage > 0);
         const QList<oi::SensorSnapshot> all = allSnapshots(r);
         const QStringList row = lines[5].split(',');

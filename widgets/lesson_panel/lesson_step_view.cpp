@@ -5,6 +5,7 @@
 #include "lesson_runner.h"
 #include "oi_text.h"
 #include "robot_diagram.h"
+#include "plot_stack.h"
 #include "sensor_plots.h"
 #include "shipped_lessons.h"
 #include "value_gauge.h"
@@ -57,7 +58,7 @@ LessonStepView::LessonStepView(QWidget *parent)
     m_outOfReach->hide();
     m_diagram = new RobotDiagram(this);
     m_plots = new SensorPlots(this);
-    m_plots->setWindowSeconds(30);
+    m_plots->stack()->setWindowSeconds(30);
     // The step chooses what is plotted: no adding or exporting here, and
     // the plot keeps the room those buttons would take on a small screen.
     for (const char *tool : {"addPlot", "export"})
@@ -164,7 +165,7 @@ void LessonStepView::showStep()
             channels.push_back(p->id);
     if (channels.empty())
         channels.push_back(lesson::packetByKey(*m_profile, "current")->id);
-    m_plots->setChannels(0, channels);
+    m_plots->stack()->setChannels(0, channels);
     rebuildReadouts();
 }
 
@@ -188,7 +189,10 @@ void LessonStepView::rebuildReadouts()
 void LessonStepView::refresh(const oi::SensorSnapshot &latest, bool stale, const LessonRunner *runner)
 {
     m_diagram->setSnapshot(latest);
+    // One flag for every view of the step: the plot's badge never says Live
+    // beside the diagram's STALE banner.
     m_diagram->setStale(stale);
+    m_plots->setStale(stale);
     if (isVisible())
         m_plots->refresh();
     if (m_step && runner) {

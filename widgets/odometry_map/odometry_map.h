@@ -6,16 +6,20 @@
 #include "robot_profile.h"
 #include "sensor_snapshot.h"
 #include "world.h" // the floor as plain values; no robot
-#include "world_grip.h"
+#include "world_edit.h"
 
 #include <QColor>
 #include <QList>
+#include <QPen>
+#include <QVector>
 #include <QPointF>
+#include <QPolygonF>
 #include <QWidget>
 
 #include <optional>
 
 class QDoubleSpinBox;
+class RoomEditTool;
 class QLabel;
 class QMenu;
 class QPushButton;
@@ -36,13 +40,9 @@ class QTimer;
 // whoever owns the room moves the robot, and the map shows it when the
 // true poses come back.
 //
-// The room itself can be edited (the Edit room button or the context menu):
-// click a wall, a stage edge (drop-off), the dock or the virtual wall to
-// select it, drag it or its handles (a wall's ends, a stage edge's corners,
-// the heading of the dock and of the virtual wall's beam; Shift turns the
-// dock), Delete removes it, and the context menu adds new ones where it was
-// opened. Again the map only asks (worldEditRequested) and draws the floor
-// it is given; it keeps only what is selected.
+// The room itself can be edited (the Edit room button or the context menu)
+// with its RoomEditTool, which asks for every change (worldEditRequested);
+// the map draws the floor it is given.
 class OdometryMap : public QWidget {
     Q_OBJECT
 public:
@@ -63,6 +63,12 @@ public:
     // Positions in mm, oldest first, at most kMaxTrailPoints; starts with the start pose.
     QList<QPointF> trail() const { return m_odometry ? m_odometry->trail() : QList<QPointF>{}; }
 
+    // The colour of the robot this odometry belongs to, as the robot list
+    // shows it: its path and pose are drawn in it (solid, filled), its true
+    // pose in the same colour, dashed. Invalid: the palette's highlight.
+    void setOdometryColour(const QColor &colour);
+    QColor odometryColour() const;
+
     // Where a virtual robot really is.
     struct TruePose {
         int robot = 0;      // the room's robot id
@@ -82,15 +88,24 @@ public:
     // Distinct colours for robots on the map, by index.
     static QColor robotColour(int index);
 
+    // Another run's path (a recording opened for comparison), in mm on the
+    // same floor, drawn in a style of its own and named in the legend by
+    // `label`; an empty path clears it.
+    void setComparisonPath(const QVector<QPointF> &pointsMm, const QString &label);
+    const QVector<QPointF> &comparisonPath() const { return m_comparisonPath; }
+    // What the legend names, top to bottom.
+    QStringList legendLabels() const;
+
     void setWorld(std::optional<sim::World> world);
     const std::optional<sim::World> &world() const { return m_world; }
 
     // Edit mode, offered while a room is shown.
     void setEditing(bool editing);
-    bool isEditing() const { return m_editing; }
+    bool isEditing() const;
     // The thing on the floor selected for editing.
-    std::optional<sim::WorldItem> selectedItem() const { return m_selectedItem; }
+    std::optional<sim::WorldItem> selectedItem() const;
     void setSelectedItem(std::optional<sim::WorldItem> item);
+    RoomEditTool *editTool() const { return m_editTool; }
     // The context menu as it would pop up at widget point `at`; the caller
     // owns it. nullptr when there is nothing to offer (no room shown).
     QMenu *contextMenuAt(QPoint at);
@@ -108,6 +123,7 @@ public:
     void setViewCentreMm(QPointF mm);
     // Where a floor point (mm) is drawn, in this widget's coordinates.
     QPointF widgetPointFor(QPointF mm) const;
+    QPolygonF widgetPolygon(const QList<QPointF> &pointsMm) const;
     QRect mapRect() const;
 
     // "x 120 mm  y -35 mm  θ 12.5°", and the distance from the true pose if
@@ -157,12 +173,7 @@ private:
     void refresh();
     void paintGrid(QPainter &painter, const QRect &area) const;
     void paintWorld(QPainter &painter) const;
-    void paintSelection(QPainter &painter) const;
     void paintEditBanner(QPainter &painter, const QRect &area) const;
-    void paintLengthLabel(QPainter &painter, QPointF centre, const QString &text) const;
-    bool pressOnWorld(QMouseEvent *event);
-    void requestAdd(sim::WorldPart part, QPointF floorPoint);
-    QString itemName(sim::WorldPart part) const;
     double gripToleranceMm() const;
     void paintTruePoses(QPainter &painter) const;
     QColor truePoseColour(qsizetype index) const;
@@ -170,6 +181,17 @@ private:
     void paintScaleBar(QPainter &painter, const QRect &area) const;
     double gridSpacingMm() const;
     QPointF floorPointFor(QPointF widgetPoint) const;
+    // One line of the legend: how the thing is drawn, and its name.
+    struct LegendEntry {
+        QString text;
+        QPen pen;                 // a stroke of it
+        QBrush fill = Qt::NoBrush; // or a patch of it, where it is an area
+    };
+    QList<LegendEntry> legend() const;
+    void paintLegend(QPainter &painter, const QRect &area) const;
+    QPen comparisonPen() const;
+    QPen wallPen() const;
+    QPen virtualWallPen() const;
     // The true pose under a widget point, if a robot is drawn there.
     const TruePose *truePoseAt(QPointF widgetPoint) const;
 
@@ -179,6 +201,9 @@ private:
     QList<TruePose> m_truePoses;
     std::optional<int> m_selected;
     std::optional<sim::World> m_world;
+    QColor m_odometryColour;
+    QVector<QPointF> m_comparisonPath;
+    QString m_comparisonLabel;
 
     double m_scale = 0.1;
     QPointF m_centreMm{1000, 0};
@@ -191,18 +216,7 @@ private:
         bool turning = false;
     };
     std::optional<Hold> m_hold;
-    // A thing on the floor held by the pointer, and the floor when it was taken.
-    struct ItemHold {
-        WorldGrip grip;
-        sim::World start;
-        QPointF fromMm;
-        bool turning = false;
-        sim::WorldEdit last;
-    };
-    std::optional<ItemHold> m_itemHold;
-    bool m_editing = false;
-    std::optional<sim::WorldItem> m_selectedItem;
-    std::uint64_t m_lastGesture = 0;
+    RoomEditTool *m_editTool = nullptr;
     bool m_dirty = false;
 
     QWidget *m_controls = nullptr;

@@ -60,6 +60,7 @@ public slots:
     void send(const QByteArray &bytes);
     void querySensors(const QList<int> &packetIds);
     void showScript();
+    void checkConnection(); // see RobotLink::checkConnection
     void startRecording(const QString &path);
     void stopRecording();
     void controlReplay(const oilink::ReplayCommand &command);
@@ -73,6 +74,8 @@ signals:
     void statistics(const oilink::LinkStats &stats);
     void streamStarted(oi::ProfileId profile, int baud, const QList<int> &packets);
     void profileAssumed(oi::ProfileId assumed); // see RobotLink::profileAssumed
+    void connectionCheckStep(const QString &step);
+    void connectionChecked(const oilink::ConnectionDoctor::Report &report);
     void rawBytesSent(const QByteArray &bytes);
     void rawBytesReceived(const QByteArray &bytes);
     void errorOccurred(const QString &message);

@@ -3,11 +3,15 @@
 #include "sim_line_transport.h"
 
 #include "connection_doctor.h"
+#include "profile_probe.h"
+#include "robot_link_thread.h"
 #include "tcp_robot_server.h"
 #include "tcp_transport.h"
 
 #include <QSignalSpy>
 #include <QTest>
+
+#include <atomic>
 
 using namespace oilink;
 using Finding = ConnectionDoctor::Finding;
@@ -183,6 +187,52 @@ private slots:
         // Named, it is healthy: never Create 2 by itself.
         SimLineTransport named(oi::ProfileId::Roomba500, {});
         QCOMPARE(diagnose(named, oi::ProfileId::Roomba500).finding, Finding::Healthy);
+    }
+
+    // A session's link holds the port and streams; the doctor runs on that
+    // port, through the link, and the link streams again afterwards. The
+    // port is opened once: nothing else opens it.
+    void theLinkRunsTheDoctorOnItsPortAndStreamsAgain()
+    {
+        std::atomic<int> made = 0;
+        RobotLinkThread link;
+        link.setTransportFactory([&made](const LinkSettings &) {
+            ++made;
+            return new SimLineTransport(oi::ProfileId::Create2, {});
+        });
+        QSignalSpy steps(&link, &RobotLinkThread::connectionCheckStep);
+        QSignalSpy checked(&link, &RobotLinkThread::connectionChecked);
+        QSignalSpy sent(&link, &RobotLinkThread::rawBytesSent);
+        QList<LinkState> states;
+        int frames = 0;
+        int framesAtFinding = -1;
+        connect(&link, &RobotLinkThread::stateChanged, this, [&states](LinkState s) { states << s; });
+        connect(&link, &RobotLinkThread::snapshot, this, [&frames] { ++frames; });
+        connect(&link, &RobotLinkThread::connectionChecked, this, [&] { framesAtFinding = frames; });
+        link.open(LinkSettings::serial(QStringLiteral("test line"), oi::ProfileId::Create2));
+        QTRY_COMPARE_WITH_TIMEOUT(link.state(), LinkState::Streaming, kTimeoutMs);
+        sent.clear();
+        states.clear();
+
+        link.checkConnection();
+        QVERIFY(checked.wait(kTimeoutMs));
+        const auto report = checked.first().first().value<ConnectionDoctor::Report>();
+        QVERIFY2(report.finding == Finding::Healthy, qPrintable(explain(report)));
+        QCOMPARE(report.baud, 115200);
+        QCOMPARE(steps.size(), report.steps.size());
+        // Motion stopped first, then the doctor's questions, through the link.
+        QCOMPARE(sent.first().first().toByteArray(), QByteArray("\x89\0\0\0\0\x8a\0", 7));
+        bool askedMode = false;
+        for (const QList<QVariant> &write : sent)
+            askedMode = askedMode || write.first().toByteArray() == ProfileProbe::modeQuestion();
+        QVERIFY(askedMode);
+        QCOMPARE(states.value(0), LinkState::Connecting);
+
+        // Streaming again, on the same port.
+        QTRY_VERIFY_WITH_TIMEOUT(frames > framesAtFinding && link.state() == LinkState::Streaming, kTimeoutMs);
+        QCOMPARE(states.last(), LinkState::Streaming);
+        QCOMPARE(made.load(), 1);
+        link.stop();
     }
 };
 

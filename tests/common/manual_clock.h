@@ -3,6 +3,8 @@
 
 #include "link_clock.h"
 
+#include <QCoreApplication>
+
 #include <limits>
 
 #include <algorithm>
@@ -35,6 +37,17 @@ public:
             next->expire();
         }
         m_nowNs = end;
+    }
+    // Advances a millisecond at a time, letting queued calls run between
+    // steps, until `done` or `limitMs` have passed; returns done().
+    template <typename Done>
+    bool advanceUntil(Done done, qint64 limitMs)
+    {
+        for (qint64 ms = 0; !done() && ms < limitMs; ++ms) {
+            advance(1);
+            QCoreApplication::processEvents();
+        }
+        return done();
     }
     // Milliseconds to the next deadline, or -1 when no timer runs.
     qint64 msToNextDeadline() const

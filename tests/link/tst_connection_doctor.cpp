@@ -34,10 +34,19 @@ ConnectionDoctor::Report runDoctor(Transport &transport, std::optional<oi::Profi
     return done.first().first().value<ConnectionDoctor::Report>();
 }
 
-ConnectionDoctor::Report diagnose(SimLineTransport &line, std::optional<oi::ProfileId> profile, int baud = 0)
+// The doctor on a virtual robot and a line that run on `clock`, which
+// moves until the report comes.
+ConnectionDoctor::Report diagnose(SimLineTransport &line, ManualClock &clock, std::optional<oi::ProfileId> profile,
+                                  int baud = 0)
 {
     line.open();
-    return runDoctor(line, profile, baud);
+    ConnectionDoctor doctor(line, profile, baud, clock);
+    QObject::connect(&line, &Transport::bytesReceived, &doctor, &ConnectionDoctor::feed);
+    QSignalSpy done(&doctor, &ConnectionDoctor::finished);
+    doctor.start();
+    if (!clock.advanceUntil([&done] { return !done.isEmpty(); }, kTimeoutMs))
+        return {};
+    return done.first().first().value<ConnectionDoctor::Report>();
 }
 
 // The doctor over TCP to roomba-sim's server, whose robot an earlier client
@@ -74,8 +83,9 @@ class TestConnectionDoctor : public QObject {
 private slots:
     void healthy()
     {
-        SimLineTransport line(oi::ProfileId::Create2, {});
-        const auto r = diagnose(line, oi::ProfileId::Create2);
+        ManualClock clock;
+        SimLineTransport line(oi::ProfileId::Create2, {}, clock);
+        const auto r = diagnose(line, clock, oi::ProfileId::Create2);
         QVERIFY2(r.finding == Finding::Healthy, qPrintable(explain(r)));
         QCOMPARE(r.baud, 115200);
         QCOMPARE(r.profile, oi::ProfileId::Create2);
@@ -84,9 +94,10 @@ private slots:
 
     void nothingComesBack()
     {
-        SimLineTransport line(oi::ProfileId::Create2, {115200, false});
+        ManualClock clock;
+        SimLineTransport line(oi::ProfileId::Create2, {115200, false}, clock);
         line.robot().disconnect();
-        const auto r = diagnose(line, oi::ProfileId::Create2);
+        const auto r = diagnose(line, clock, oi::ProfileId::Create2);
         QVERIFY2(r.finding == Finding::NothingComesBack, qPrintable(explain(r)));
         QCOMPARE(r.steps.size(), 4); // three bauds and the pin out of reach
         QVERIFY(r.steps.last().contains(QStringLiteral("no BRC pin")));
@@ -110,7 +121,8 @@ private slots:
 
     void wrongBaudNamesTheOneThatAnswers()
     {
-        SimLineTransport line(oi::ProfileId::Create2, {});
+        ManualClock clock;
+        SimLineTransport line(oi::ProfileId::Create2, {}, clock);
         // Left streaming at 57600 by an earlier client.
         const std::uint8_t toBaud[] = {128, 129, 10};
         const std::uint8_t stream[] = {148, 1, 35};
@@ -118,7 +130,7 @@ private slots:
         line.robot().advance(std::chrono::milliseconds(100)); // what comes sooner may be lost
         line.robot().receive(stream);
         QCOMPARE(line.robot().baud(), 57600);
-        const auto r = diagnose(line, oi::ProfileId::Create2);
+        const auto r = diagnose(line, clock, oi::ProfileId::Create2);
         QVERIFY2(r.finding == Finding::WrongBaud, qPrintable(explain(r)));
         QCOMPARE(r.baud, 57600);
         QVERIFY2(r.summary.contains(QStringLiteral("answers at 57600 baud, not 115200")), qPrintable(r.summary));
@@ -130,9 +142,10 @@ private slots:
     // put it on 19200 (the robot counts none sooner).
     void asleepThenAt19200AfterThreePulses()
     {
-        SimLineTransport line(oi::ProfileId::Create2, {19200, true});
+        ManualClock clock;
+        SimLineTransport line(oi::ProfileId::Create2, {19200, true}, clock);
         line.robot().receive(kStartAndPower);
-        const auto r = diagnose(line, oi::ProfileId::Create2);
+        const auto r = diagnose(line, clock, oi::ProfileId::Create2);
         QVERIFY2(r.finding == Finding::Baud19200AfterPulses, qPrintable(explain(r)));
         QCOMPARE(r.baud, 19200);
         QCOMPARE(line.robot().baud(), 19200);
@@ -144,10 +157,11 @@ private slots:
 
     void asleepAndWokeAfterAPulse()
     {
-        SimLineTransport line(oi::ProfileId::Create2, {});
+        ManualClock clock;
+        SimLineTransport line(oi::ProfileId::Create2, {}, clock);
         line.robot().receive(kStartAndPower);
         QVERIFY(line.robot().asleep());
-        const auto r = diagnose(line, oi::ProfileId::Create2);
+        const auto r = diagnose(line, clock, oi::ProfileId::Create2);
         QVERIFY2(r.finding == Finding::WokeAfterPulse, qPrintable(explain(r)));
         QVERIFY(!line.robot().asleep());
         QCOMPARE(r.summary, QStringLiteral("The robot was asleep; a BRC pulse woke it, and it talks at 115200 baud."));
@@ -155,12 +169,13 @@ private slots:
 
     void asleepOnTheDockWithOldFirmware()
     {
-        SimLineTransport line(oi::ProfileId::Create2, {});
+        ManualClock clock;
+        SimLineTransport line(oi::ProfileId::Create2, {}, clock);
         line.robot().setFirmwareRelease("release-3.8.1");
         const sim::World::Dock dock = *line.robot().world().dock;
         line.robot().placeAt(oi::Pose{dock.x, dock.y, dock.headingRad + 3.14159265358979323846});
         line.robot().receive(kStartAndPower);
-        const auto r = diagnose(line, oi::ProfileId::Create2);
+        const auto r = diagnose(line, clock, oi::ProfileId::Create2);
         QVERIFY2(r.finding == Finding::AsleepDidNotWake, qPrintable(explain(r)));
         QVERIFY(r.summary.contains(QStringLiteral("on its dock with firmware before release-3.8.2")));
         QVERIFY(line.robot().asleep());
@@ -168,9 +183,10 @@ private slots:
 
     void answersAsAnotherProfile()
     {
-        SimLineTransport line(oi::ProfileId::Create1, {});
+        ManualClock clock;
+        SimLineTransport line(oi::ProfileId::Create1, {}, clock);
         line.setBaud(57600);
-        const auto r = diagnose(line, oi::ProfileId::Create2, 57600);
+        const auto r = diagnose(line, clock, oi::ProfileId::Create2, 57600);
         QVERIFY2(r.finding == Finding::OtherProfile, qPrintable(explain(r)));
         QCOMPARE(r.profile, oi::ProfileId::Create1);
         QVERIFY2(r.summary.contains(QStringLiteral("answers as a Create, not as the Roomba 600 / Create 2")), qPrintable(r.summary));
@@ -178,15 +194,17 @@ private slots:
 
     void roomba500AndCreate2AnswerAlike()
     {
-        SimLineTransport line(oi::ProfileId::Roomba500, {});
+        ManualClock clock;
+        SimLineTransport line(oi::ProfileId::Roomba500, {}, clock);
         line.robot().receive(kStart);
-        const auto r = diagnose(line, std::nullopt);
+        const auto r = diagnose(line, clock, std::nullopt);
         QVERIFY2(r.finding == Finding::RoombaOrCreate2, qPrintable(explain(r)));
         QVERIFY2(r.summary.contains(QStringLiteral("as a Roomba 500 or a Create 2")) && r.summary.contains(QStringLiteral("name which it is")),
                  qPrintable(r.summary));
         // Named, it is healthy: never Create 2 by itself.
-        SimLineTransport named(oi::ProfileId::Roomba500, {});
-        QCOMPARE(diagnose(named, oi::ProfileId::Roomba500).finding, Finding::Healthy);
+        ManualClock clock2;
+        SimLineTransport named(oi::ProfileId::Roomba500, {}, clock2);
+        QCOMPARE(diagnose(named, clock2, oi::ProfileId::Roomba500).finding, Finding::Healthy);
     }
 
     // A session's link holds the port and streams; the doctor runs on that

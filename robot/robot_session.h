@@ -37,6 +37,9 @@ public:
     // Makes the transports (tests put a recording transport here). Before
     // the first connectTo().
     void setTransportFactory(oilink::RobotLink::TransportFactory factory);
+    // The clock of the link's timed rules (tests advance one). Before the
+    // first connectTo().
+    void setLinkClock(oilink::Clock &clock) { m_link.setClock(clock); }
 
     void connectTo(const oilink::LinkSettings &settings);
     void disconnectFromRobot();

@@ -136,7 +136,7 @@ void RobotLinkThread::start()
 {
     if (m_thread.isRunning())
         return;
-    auto *link = new RobotLink;
+    auto *link = new RobotLink(*m_clock);
     link->setTransportFactory(m_factory);
     link->moveToThread(&m_thread);
     connect(&m_thread, &QThread::finished, link, &QObject::deleteLater);

@@ -35,6 +35,9 @@ public:
     // Replaces the link's own transports (see RobotLink::setTransportFactory);
     // called on the worker thread. Before start().
     void setTransportFactory(RobotLink::TransportFactory factory);
+    // The clock the link's timed rules run on (the steady clock unless
+    // told). Before start().
+    void setClock(Clock &clock) { m_clock = &clock; }
 
     // Starts the worker thread (open() does it too). Idempotent.
     void start();
@@ -103,6 +106,7 @@ private:
     QThread m_thread;
     QPointer<RobotLink> m_link;
     RobotLink::TransportFactory m_factory;
+    Clock *m_clock = &Clock::steady();
     LinkState m_state = LinkState::Closed;
     LinkStats m_stats;
     QMutex m_queueMutex;

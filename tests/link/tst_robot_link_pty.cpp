@@ -308,11 +308,20 @@ private slots:
         SimProcess first;
         QVERIFY(first.start({QStringLiteral("--link"), path}));
         std::atomic<int> attempts{0};
+        ManualClock clock;
         RobotLinkThread link;
+        link.setClock(clock);
         link.setTransportFactory(countedTransports(attempts));
         Recorder r(link);
         link.open(create2At(path));
-        QTRY_COMPARE_WITH_TIMEOUT(link.state(), LinkState::Streaming, kTimeoutMs);
+        // The link's time moves 10 ms a step: through the wake, and later the backoff.
+        const auto untilMoving = [&](auto done, int stepMs = 10) {
+            return QTest::qWaitFor([&] {
+                clock.advance(stepMs);
+                return done();
+            }, kTimeoutMs);
+        };
+        QVERIFY(untilMoving([&] { return link.state() == LinkState::Streaming; }));
 
         // Ended as a user ends it, so it removes its link: a link left
         // dangling would point at whichever program gets the same
@@ -320,15 +329,15 @@ private slots:
         first.stop();
         QTRY_COMPARE_WITH_TIMEOUT(link.state(), LinkState::Reconnecting, kTimeoutMs);
         QVERIFY(r.sawState(LinkState::Lost));
-        // Several attempts fail while nothing is there.
+        // Several attempts fail while nothing is there, one per backoff.
         const int lost = attempts;
-        QTRY_VERIFY_WITH_TIMEOUT(attempts >= lost + 3, kTimeoutMs);
+        QVERIFY(untilMoving([&] { return attempts >= lost + 3; }, oilink::RobotLink::kMaxBackoffMs));
         QCOMPARE(link.state(), LinkState::Reconnecting);
 
         SimProcess second;
         QVERIFY(second.start({QStringLiteral("--link"), path}));
         const qsizetype before = r.snapshots.size();
-        QTRY_COMPARE_WITH_TIMEOUT(link.state(), LinkState::Streaming, kTimeoutMs);
+        QVERIFY(untilMoving([&] { return link.state() == LinkState::Streaming; }));
         QTRY_VERIFY_WITH_TIMEOUT(r.snapshots.size() > before + 5, kTimeoutMs);
         link.closeAndWait();
         QCOMPARE(link.lastStatistics().reconnects, quint32(1));

@@ -84,8 +84,8 @@ RobotLink::RobotLink(Clock &clock, QObject *parent)
         else
             onReply(s);
     });
-    for (ClockTimer *t : {&m_watchdog, &m_noData, &m_reconnect, &m_probeRetry, &m_queryQuiet,
-                      &m_queryTimeout, &m_statsSoon})
+    for (ClockTimer *t : {&m_watchdog, &m_noData, &m_reconnect, &m_probeRetry, &m_queryQuiet, &m_queryTimeout,
+                          &m_statsSoon})
         t->setSingleShot(true);
     m_watchdog.setInterval(kStaleAfterMs);
     m_statsTick.setInterval(kStatsIntervalMs);
@@ -153,6 +153,7 @@ void RobotLink::open(const LinkSettings &settings)
     m_lastEmitted = {};
     m_reported.clear();
     m_recovering = false;
+    m_lastTransportError.clear();
     m_backoffMs = kFirstBackoffMs;
     m_openedNs = m_clock.nowNs();
     m_rateStartNs = m_openedNs;
@@ -165,8 +166,8 @@ void RobotLink::close()
 {
     if (m_state == LinkState::Closed)
         return;
-    for (ClockTimer *t : {&m_watchdog, &m_noData, &m_reconnect, &m_probeRetry, &m_queryQuiet,
-                      &m_queryTimeout, &m_statsSoon, &m_statsTick})
+    for (ClockTimer *t : {&m_watchdog, &m_noData, &m_reconnect, &m_probeRetry, &m_queryQuiet, &m_queryTimeout,
+                          &m_statsSoon, &m_statsTick})
         t->stop();
     m_queries.clear();
     m_queryPhase = QueryPhase::None;
@@ -435,7 +436,8 @@ void RobotLink::onBytes(const QByteArray &bytes)
     if (takeScriptReply(bytes))
         return;
     const qint64 recordedUs = m_transport ? m_transport->readTimeUs() : -1;
-    m_readSeconds = recordedUs >= 0 ? static_cast<double>(recordedUs) / 1e6 : double(m_clock.nowNs() - m_openedNs) / 1e9;
+    m_readSeconds = recordedUs >= 0 ? static_cast<double>(recordedUs) / 1e6
+                                    : static_cast<double>(m_clock.nowNs() - m_openedNs) / 1e9;
     const oi::ParserCounters before = m_parser.counters();
     m_feeding = true;
     m_parser.feed({reinterpret_cast<const std::uint8_t *>(bytes.constData()), static_cast<std::size_t>(bytes.size())});

@@ -32,7 +32,8 @@ public:
     void write(const QByteArray &bytes)
     {
         catchUp();
-        m_robot.receive(std::span(reinterpret_cast<const std::uint8_t *>(bytes.constData()), std::size_t(bytes.size())));
+        m_robot.receive(
+            std::span(reinterpret_cast<const std::uint8_t *>(bytes.constData()), std::size_t(bytes.size())));
         m_tick.start(0); // the answer is heard as the clock next moves
     }
     void setBrcLow(bool low)

@@ -18,8 +18,6 @@
 #include <QSignalSpy>
 #include <QTest>
 
-using namespace std::chrono_literals;
-
 namespace {
 constexpr int kTimeoutMs = 20000;
 // Ten minutes of 15 ms stream frames.

@@ -64,6 +64,8 @@ RobotSession *RobotFleet::addRobot(const oilink::LinkSettings &settings, const Q
     robot->setColour(nextColour());
     if (m_factory)
         robot->setTransportFactory(m_factory);
+    if (m_linkClock)
+        robot->setLinkClock(*m_linkClock);
     robot->setSettings(settings); // robotAdded() may prepare for them
     m_robots << robot;
     if (!m_selected)

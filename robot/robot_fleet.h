@@ -25,6 +25,8 @@ public:
     // Makes the transports of every robot added from now on (tests).
     void setTransportFactory(oilink::RobotLink::TransportFactory factory);
     bool hasTransportFactory() const { return bool(m_factory); }
+    // The clock of every robot's link from now on (see RobotSession::setLinkClock).
+    void setLinkClock(oilink::Clock &clock) { m_linkClock = &clock; }
 
     // A new robot, named and coloured apart from the others; an empty name
     // gets "Robot N". Connects it when `connect` is set. Not selected.
@@ -66,6 +68,7 @@ private:
     QColor nextColour() const;
 
     oilink::RobotLink::TransportFactory m_factory;
+    oilink::Clock *m_linkClock = nullptr;
     QList<RobotSession *> m_robots;
     RobotSession *m_selected = nullptr;
     QList<QPointer<RobotSession>> m_waiting; // restored, to connect soon

@@ -29,6 +29,8 @@ RobotSession::RobotSession(QObject *parent) : QObject(parent)
     connect(&m_link, &oilink::RobotLinkThread::sensorReply, this, &RobotSession::sensorReply);
     connect(&m_link, &oilink::RobotLinkThread::scriptReply, this, &RobotSession::scriptShown);
     connect(&m_link, &oilink::RobotLinkThread::scriptFailed, this, &RobotSession::scriptFailed);
+    connect(&m_link, &oilink::RobotLinkThread::connectionCheckStep, this, &RobotSession::connectionCheckStep);
+    connect(&m_link, &oilink::RobotLinkThread::connectionChecked, this, &RobotSession::connectionChecked);
     connect(&m_link, &oilink::RobotLinkThread::recordingStatus, this, [this](const oilink::RecordingStatus &s) {
         m_recording = s;
         emit recordingStatus(s);

@@ -46,6 +46,9 @@ public:
     // Makes the transports (tests put a recording transport here). Before
     // the first connectTo().
     void setTransportFactory(oilink::RobotLink::TransportFactory factory);
+    // The clock of the link's timed rules (tests advance one). Before the
+    // first connectTo().
+    void setLinkClock(oilink::Clock &clock) { m_link.setClock(clock); }
 
     void connectTo(const oilink::LinkSettings &settings);
     void disconnectFromRobot();
@@ -79,6 +82,9 @@ public:
     // answered by scriptShown(). A failure comes as errorOccurred().
     void querySensors(const QList<int> &packetIds) { m_link.querySensors(packetIds); }
     void showScript() { m_link.showScript(); }
+    // Finds out through the link why no valid data comes; the link resumes
+    // streaming afterwards. Answers with connectionChecked().
+    void checkConnection() { m_link.checkConnection(); }
 
     const oi::RobotProfile &robotProfile() const override { return *m_profile; }
     // False while the link has found a Roomba 500 or a Create 2 (they answer
@@ -162,6 +168,8 @@ signals:
     void sensorReply(const oi::SensorSnapshot &reply);
     void scriptShown(const QByteArray &script);
     void scriptFailed(const QString &message);
+    void connectionCheckStep(const QString &step);
+    void connectionChecked(const oilink::ConnectionDoctor::Report &report);
     void recordingStatus(const oilink::RecordingStatus &status);
     void replayStatus(const oilink::ReplayStatus &status);
     // The history and odometry started afresh (a new connection, a jump back in a replay).

@@ -10,12 +10,11 @@ QByteArray toBytes(const oi::Bytes &bytes)
 }
 } // namespace
 
-TeleopController::TeleopController(DriveTarget &robot, QObject *parent) : QObject(parent), m_robot(robot)
+TeleopController::TeleopController(DriveTarget &robot, oilink::Clock &clock, QObject *parent)
+    : QObject(parent), m_robot(robot), m_clock(clock), m_pending(clock, this)
 {
     m_pending.setSingleShot(true);
-    // A coarse timer could hold a command back by several milliseconds.
-    m_pending.setTimerType(Qt::PreciseTimer);
-    connect(&m_pending, &QTimer::timeout, this, &TeleopController::sendPending);
+    connect(&m_pending, &oilink::ClockTimer::timeout, this, &TeleopController::sendPending);
     m_state = m_robot.state();
     m_passive = robotIgnoresMotion();
 }
@@ -50,7 +49,7 @@ void TeleopController::requestMotion(const MotionCommand &command)
         return;
     if (m_pending.isActive())
         return; // the latest request goes out when the timer fires
-    const qint64 since = m_sinceSend.isValid() ? m_sinceSend.elapsed() : kMinIntervalMs;
+    const qint64 since = m_lastSendMs >= 0 ? m_clock.nowMs() - m_lastSendMs : kMinIntervalMs;
     if (since >= kMinIntervalMs)
         sendPending();
     else
@@ -74,7 +73,7 @@ bool TeleopController::sendMotion(const MotionCommand &command)
     if (!m_robot.send(toBytes(*bytes)))
         return false;
     m_sent = command;
-    m_sinceSend.restart();
+    m_lastSendMs = m_clock.nowMs();
     return true;
 }
 
@@ -87,7 +86,7 @@ void TeleopController::sendStop(bool always)
     if (!moving && !always)
         return;
     if (m_robot.send(toBytes(oi::CommandEncoder(m_robot.robotProfile()).stopMotion())))
-        m_sinceSend.restart();
+        m_lastSendMs = m_clock.nowMs();
 }
 
 void TeleopController::deadManReleased()

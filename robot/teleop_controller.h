@@ -2,12 +2,11 @@
 #pragma once
 
 #include "drive_target.h"
+#include "link_clock.h"
 #include "motion_command.h"
 #include "robot_link_thread.h"
 
-#include <QElapsedTimer>
 #include <QObject>
-#include <QTimer>
 
 // The sending rules for motion, in one place, for every input (drive pad,
 // keyboard, gamepad). Lives in the GUI thread next to the session.
@@ -26,7 +25,9 @@ public:
     // queues bytes behind the serial line.
     static constexpr int kMinIntervalMs = 15;
 
-    explicit TeleopController(DriveTarget &robot, QObject *parent = nullptr);
+    // The rate limit runs on `clock`.
+    explicit TeleopController(DriveTarget &robot, oilink::Clock &clock = oilink::Clock::steady(),
+                              QObject *parent = nullptr);
 
     // Motion is refused: the robot is in Passive or Off mode.
     bool isPassive() const { return m_passive; }
@@ -68,8 +69,9 @@ private:
     bool robotIgnoresMotion() const;
 
     DriveTarget &m_robot;
-    QTimer m_pending;
-    QElapsedTimer m_sinceSend;
+    oilink::Clock &m_clock;
+    oilink::ClockTimer m_pending;
+    qint64 m_lastSendMs = -1; // on m_clock; -1 before the first
     MotionCommand m_wanted;
     MotionCommand m_sent;
     bool m_passive = false;

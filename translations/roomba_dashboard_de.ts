@@ -5706,6 +5706,22 @@ Gesendet: %2</translation>
         <source>%1: no reply to Show Script</source>
         <translation>%1: keine Antwort auf Show Script</translation>
     </message>
+    <message>
+        <source>%1: the connection ended during the check</source>
+        <translation>%1: die Verbindung endete während der Prüfung</translation>
+    </message>
+    <message>
+        <source>the connection check is running: the command was not sent</source>
+        <translation>die Verbindungsprüfung läuft: der Befehl wurde nicht gesendet</translation>
+    </message>
+    <message>
+        <source>not connected: there is nothing to check</source>
+        <translation>nicht verbunden: es gibt nichts zu prüfen</translation>
+    </message>
+    <message>
+        <source>%1: the port is not open yet</source>
+        <translation>%1: der Anschluss ist noch nicht geöffnet</translation>
+    </message>
 </context>
 <context>
     <name>oilink::RobotLinkThread</name>
@@ -5720,6 +5736,10 @@ Gesendet: %2</translation>
     <message>
         <source>not connected: Show Script was not sent</source>
         <translation>nicht verbunden: Show Script wurde nicht gesendet</translation>
+    </message>
+    <message>
+        <source>not connected: there is nothing to check</source>
+        <translation>nicht verbunden: es gibt nichts zu prüfen</translation>
     </message>
 </context>
 <context>

@@ -5705,6 +5705,22 @@ Enviado: %2</translation>
         <source>%1: no reply to Show Script</source>
         <translation>%1: sin respuesta a Show Script</translation>
     </message>
+    <message>
+        <source>%1: the connection ended during the check</source>
+        <translation>%1: la conexión terminó durante la comprobación</translation>
+    </message>
+    <message>
+        <source>the connection check is running: the command was not sent</source>
+        <translation>la comprobación de la conexión está en curso: no se envió la orden</translation>
+    </message>
+    <message>
+        <source>not connected: there is nothing to check</source>
+        <translation>sin conexión: no hay nada que comprobar</translation>
+    </message>
+    <message>
+        <source>%1: the port is not open yet</source>
+        <translation>%1: el puerto aún no está abierto</translation>
+    </message>
 </context>
 <context>
     <name>oilink::RobotLinkThread</name>
@@ -5719,6 +5735,10 @@ Enviado: %2</translation>
     <message>
         <source>not connected: Show Script was not sent</source>
         <translation>sin conexión: Show Script no se envió</translation>
+    </message>
+    <message>
+        <source>not connected: there is nothing to check</source>
+        <translation>sin conexión: no hay nada que comprobar</translation>
     </message>
 </context>
 <context>

@@ -1,14 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "connection_checkup.h"
 
-#include "transport_factory.h"
-
 #include "connection_next_steps.h"
 #include "doctor_details.h"
-#include "profile_probe.h"
 #include "robot_session.h"
 #include "saved_robots.h"
-#include "transport.h"
 
 #include <QMessageBox>
 #include <QPushButton>
@@ -28,6 +24,11 @@ ConnectionCheckup::ConnectionCheckup(RobotSession &session, DoctorDetails &detai
     : QObject(parent), m_session(session), m_details(details), m_askWhich(std::move(askWhich))
 {
     connect(&m_session, &RobotSession::errorOccurred, this, &ConnectionCheckup::onLinkError);
+    connect(&m_session, &RobotSession::connectionCheckStep, this, [this](const QString &step) {
+        if (m_running)
+            m_details.addStep(step);
+    });
+    connect(&m_session, &RobotSession::connectionChecked, this, &ConnectionCheckup::onFinished);
     connect(&m_session, &RobotSession::profileAssumed, this, [this] {
         QTimer::singleShot(0, this, &ConnectionCheckup::identify); // not inside the session's signal
     });
@@ -102,32 +103,19 @@ void ConnectionCheckup::run()
 {
     if (isRunning())
         return;
+    m_running = true;
     m_settings = m_session.settings();
-    m_session.closeAndWait(); // the doctor needs the port to itself
     m_details.start();
-    const int baud = m_settings.baud > 0 ? m_settings.baud : oilink::ProfileProbe::defaultBauds().front();
-    m_transport.reset(transports::createTransport(m_settings, baud));
-    m_doctor = std::make_unique<oilink::ConnectionDoctor>(*m_transport, m_settings.profile, m_settings.baud);
-    connect(m_transport.get(), &oilink::Transport::bytesReceived, m_doctor.get(), &oilink::ConnectionDoctor::feed);
-    connect(m_transport.get(), &oilink::Transport::opened, m_doctor.get(), &oilink::ConnectionDoctor::start);
-    connect(m_transport.get(), &oilink::Transport::errorOccurred, this, [this](const QString &message) {
-        oilink::ConnectionDoctor::Report report;
-        report.finding = oilink::ConnectionDoctor::Finding::NothingComesBack;
-        report.summary = message;
-        onFinished(report);
-    });
-    connect(m_doctor.get(), &oilink::ConnectionDoctor::stepDone, &m_details, &DoctorDetails::addStep);
-    connect(m_doctor.get(), &oilink::ConnectionDoctor::finished, this, &ConnectionCheckup::onFinished);
-    m_transport->open();
+    m_session.checkConnection(); // the link runs the doctor on its own port
 }
 
 void ConnectionCheckup::onFinished(const oilink::ConnectionDoctor::Report &report)
 {
+    if (!m_running)
+        return; // a check someone else asked the link for
+    m_running = false;
     using F = oilink::ConnectionDoctor::Finding;
     m_details.finish(report.summary, ConnectionNextSteps::forReport(m_settings, report));
-    m_transport->close();
-    m_doctor.release()->deleteLater();
-    m_transport.release()->deleteLater();
     emit finished(report);
 
     oilink::LinkSettings next = m_settings;
@@ -151,7 +139,9 @@ void ConnectionCheckup::onFinished(const oilink::ConnectionDoctor::Report &repor
     default:
         break;
     }
-    m_session.connectTo(next);
+    // The link has resumed with what it found; new settings are kept by connecting with them.
+    if (next != m_settings)
+        m_session.connectTo(next);
 }
 
 ConnectionCheckup::AskWhich ConnectionCheckup::askWithDialog(QWidget *parent)

@@ -5,19 +5,19 @@
 #include "link_settings.h"
 
 #include <QObject>
-#include <QPointer>
 
 #include <functional>
-#include <memory>
 #include <optional>
 
 class DoctorDetails;
 class QWidget;
 class RobotSession;
 
-// When a session's link gets no valid data, finds out why: closes the link,
-// runs the connection doctor on a transport of its own, shows the finding
-// (DoctorDetails), and connects again with what works.
+// When a session's link gets no valid data, finds out why: asks the link to
+// run the connection doctor on its port (RobotSession::checkConnection()),
+// shows the steps and the finding (DoctorDetails), and where the finding
+// changes the settings (another baud, another robot), connects again with
+// what works. Otherwise the link resumes by itself.
 //
 // A robot that may be a Roomba 500 or a Create 2 (the link's probe, or the
 // doctor, cannot tell them apart) is asked about once per port or bridge:
@@ -39,7 +39,7 @@ public:
                       QObject *parent = nullptr);
     ~ConnectionCheckup() override;
 
-    bool isRunning() const { return m_doctor != nullptr; }
+    bool isRunning() const { return m_running; }
     // The profile remembered for this robot (its port or bridge), if the user named one.
     static std::optional<oi::ProfileId> rememberedProfile(const oilink::LinkSettings &robot);
     static void rememberProfile(const oilink::LinkSettings &robot, oi::ProfileId profile);
@@ -60,8 +60,7 @@ private:
     DoctorDetails &m_details;
     AskWhich m_askWhich;
     oilink::LinkSettings m_settings;
-    std::unique_ptr<oilink::Transport> m_transport;
-    std::unique_ptr<oilink::ConnectionDoctor> m_doctor;
+    bool m_running = false;
     bool m_checkedThisConnection = false;
     bool m_asking = false;
 };

@@ -13,12 +13,13 @@ namespace {
 constexpr int kKeepAwakePulseMs = 1000;
 } // namespace
 
-BrcPulser::BrcPulser(QObject *parent) : QObject(parent), m_step(this), m_keepAwake(this)
+BrcPulser::BrcPulser(QObject *parent) : BrcPulser(Clock::steady(), parent) {}
+
+BrcPulser::BrcPulser(Clock &clock, QObject *parent) : QObject(parent), m_step(clock, this), m_keepAwake(clock, this)
 {
     m_step.setSingleShot(true);
-    m_step.setTimerType(Qt::PreciseTimer);
-    connect(&m_step, &QTimer::timeout, this, &BrcPulser::runNextStep);
-    connect(&m_keepAwake, &QTimer::timeout, this, &BrcPulser::keepAwake);
+    connect(&m_step, &ClockTimer::timeout, this, &BrcPulser::runNextStep);
+    connect(&m_keepAwake, &ClockTimer::timeout, this, &BrcPulser::keepAwake);
 }
 
 void BrcPulser::setTransport(Transport *transport)

@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "link_clock.h"
 #include "robot_profile.h"
 #include "sensor_snapshot.h"
 
 #include <QObject>
 #include <QPointer>
-#include <QTimer>
 
 #include <deque>
 
@@ -30,6 +30,7 @@ public:
     static constexpr int kWakeMs = oi::RobotProfile::kWakeMs;
 
     explicit BrcPulser(QObject *parent = nullptr);
+    explicit BrcPulser(Clock &clock, QObject *parent = nullptr);
 
     // The transport to pulse through, or nullptr; stops the keep-awake.
     void setTransport(Transport *transport);
@@ -62,8 +63,8 @@ private:
 
     QPointer<Transport> m_transport;
     std::deque<Step> m_steps;
-    QTimer m_step;
-    QTimer m_keepAwake;
+    ClockTimer m_step;
+    ClockTimer m_keepAwake;
     oi::OiMode m_mode = oi::OiMode::Passive;
     bool m_probed = false;
     bool m_canPulse = false;

@@ -29,18 +29,17 @@ QString profileName(oi::ProfileId id)
 } // namespace
 
 ConnectionDoctor::ConnectionDoctor(Transport &transport, std::optional<oi::ProfileId> profile, int baud,
-                                   QObject *parent)
+                                   Clock &clock, QObject *parent)
     : QObject(parent), m_transport(transport), m_askedProfile(profile), m_askedBaud(baud),
-      m_pulser(new BrcPulser(this)), m_timer(this)
+      m_pulser(new BrcPulser(clock, this)), m_clock(clock), m_timer(clock, this)
 {
     qRegisterMetaType<oilink::ConnectionDoctor::Report>();
     connect(m_pulser, &BrcPulser::awake, this, [this] {
-        m_sinceAwake.start();
+        m_awakeMs = m_clock.nowMs();
         afterWakePulse(0);
     });
     m_timer.setSingleShot(true);
-    m_timer.setTimerType(Qt::PreciseTimer); // never early: the robot counts the 2 s before the baud pulses
-    connect(&m_timer, &QTimer::timeout, this, [this] {
+    connect(&m_timer, &ClockTimer::timeout, this, [this] {
         if (auto then = std::exchange(m_onTimer, nullptr))
             then();
     });
@@ -79,7 +78,7 @@ void ConnectionDoctor::feed(const QByteArray &data)
         return;
     m_heard += data.size();
     m_received += data;
-    if (m_expected > 0 && m_received.size() >= m_expected && m_timer.remainingTime() > kQuietMs)
+    if (m_expected > 0 && m_received.size() >= m_expected && m_timer.remainingMs() > kQuietMs)
         m_timer.start(kQuietMs); // extra bytes in this time mean garbage
 }
 
@@ -89,12 +88,18 @@ void ConnectionDoctor::after(int ms, std::function<void()> then)
     m_timer.start(ms);
 }
 
+void ConnectionDoctor::write(const QByteArray &data)
+{
+    if (m_transport.write(data))
+        emit bytesSent(data);
+}
+
 void ConnectionDoctor::ask(const QByteArray &question, qsizetype expected, Answer then)
 {
     m_received.clear();
     m_expected = expected;
     m_listening = true;
-    m_transport.write(question);
+    write(question);
     after(kReplyTimeoutMs, [this, then = std::move(then)] {
         m_listening = false;
         then(m_received);
@@ -110,7 +115,7 @@ QString ConnectionDoctor::baudName(int baud) const
 // when asked to.
 void ConnectionDoctor::askMode(bool withStart, std::function<void(bool)> then)
 {
-    m_transport.write(withStart ? bytes({128, 150, 0}) : bytes({150, 0}));
+    write(withStart ? bytes({128, 150, 0}) : bytes({150, 0}));
     m_listening = true;
     m_expected = 0;
     after(kDrainMs, [this, then = std::move(then)] {
@@ -189,7 +194,7 @@ void ConnectionDoctor::afterWakePulse(qsizetype index)
         concludeSilent();
         return;
     }
-    const qint64 untilBaudPulses = std::max<qint64>(0, kBaudPulsesAfterAwakeMs - m_sinceAwake.elapsed());
+    const qint64 untilBaudPulses = std::max<qint64>(0, kBaudPulsesAfterAwakeMs - (m_clock.nowMs() - m_awakeMs));
     after(int(untilBaudPulses), [this] { pulseForBaud19200(); });
 }
 

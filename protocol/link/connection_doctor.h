@@ -1,16 +1,15 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "link_clock.h"
 #include "link_status.h" // the metatype of oi::ProfileId
 
 #include "robot_profile.h"
 
 #include <QByteArray>
-#include <QElapsedTimer>
 #include <QList>
 #include <QObject>
 #include <QString>
-#include <QTimer>
 
 #include <functional>
 #include <optional>
@@ -57,7 +56,7 @@ public:
 
     // `profile` and `baud` as the link was set up (nullopt / 0 = Auto).
     ConnectionDoctor(Transport &transport, std::optional<oi::ProfileId> profile, int baud,
-                     QObject *parent = nullptr);
+                     Clock &clock = Clock::steady(), QObject *parent = nullptr);
     ~ConnectionDoctor() override;
 
     static QList<int> candidateBauds(int asked);
@@ -68,10 +67,12 @@ public:
 
 signals:
     void stepDone(const QString &step);
+    void bytesSent(const QByteArray &bytes); // what the doctor wrote to the robot
     void finished(const oilink::ConnectionDoctor::Report &report);
 
 private:
     using Answer = std::function<void(const QByteArray &)>;
+    void write(const QByteArray &bytes);
     void ask(const QByteArray &question, qsizetype expected, Answer then);
     void after(int ms, std::function<void()> then);
     void tryBaud(qsizetype index);
@@ -93,8 +94,9 @@ private:
     QList<int> m_bauds;
     QList<int> m_garbledAt;
     BrcPulser *m_pulser;
-    QTimer m_timer;
-    QElapsedTimer m_sinceAwake; // since the woken robot listens
+    Clock &m_clock;
+    ClockTimer m_timer;
+    qint64 m_awakeMs = 0; // when the woken robot listened
     QByteArray m_received;
     qsizetype m_expected = 0;
     qsizetype m_heard = 0; // bytes heard at the baud being tried

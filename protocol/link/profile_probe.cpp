@@ -36,11 +36,11 @@ bool ProfileProbe::dependsOnRoombaOrCreate2(int id)
     return group && group->first <= kLeftOrRightEncoder && group->last >= kRightOrLeftEncoder;
 }
 
-ProfileProbe::ProfileProbe(Transport &transport, QList<int> bauds, QObject *parent)
-    : QObject(parent), m_transport(transport), m_bauds(std::move(bauds)), m_timer(this)
+ProfileProbe::ProfileProbe(Transport &transport, QList<int> bauds, Clock &clock, QObject *parent)
+    : QObject(parent), m_transport(transport), m_bauds(std::move(bauds)), m_timer(clock, this)
 {
     m_timer.setSingleShot(true);
-    connect(&m_timer, &QTimer::timeout, this, &ProfileProbe::onTimeout);
+    connect(&m_timer, &ClockTimer::timeout, this, &ProfileProbe::onTimeout);
 }
 
 void ProfileProbe::start()

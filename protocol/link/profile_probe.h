@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "link_clock.h"
 #include "link_status.h" // the metatype of oi::ProfileId, which a signal carries
 
 #include "robot_profile.h"
@@ -9,7 +10,6 @@
 #include <QByteArray>
 #include <QList>
 #include <QObject>
-#include <QTimer>
 
 #include <cstdint>
 #include <initializer_list>
@@ -42,7 +42,7 @@ class ProfileProbe : public QObject {
     Q_OBJECT
 public:
     // `bauds` is tried in order on a transport with a baud of its own.
-    ProfileProbe(Transport &transport, QList<int> bauds, QObject *parent = nullptr);
+    ProfileProbe(Transport &transport, QList<int> bauds, Clock &clock = Clock::steady(), QObject *parent = nullptr);
 
     static QList<int> defaultBauds() { return {115200, 57600, 19200}; }
 
@@ -111,7 +111,7 @@ private:
     StartPolicy m_startPolicy = StartPolicy::Always;
     bool m_startSent = false;
     oi::OiMode m_mode = oi::OiMode::Off;
-    QTimer m_timer;
+    ClockTimer m_timer;
 };
 
 } // namespace oilink

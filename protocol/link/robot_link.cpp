@@ -16,6 +16,7 @@
 #include <QJsonObject>
 
 #include <algorithm>
+#include <utility>
 
 namespace oilink {
 
@@ -67,13 +68,15 @@ void add(oi::ParserCounters &to, const oi::ParserCounters &from)
 }
 } // namespace
 
-RobotLink::RobotLink(QObject *parent)
-    : QObject(parent), m_watchdog(this), m_noData(this), m_reconnect(this), m_probeRetry(this),
-      m_queryQuiet(this), m_queryTimeout(this), m_statsTick(this), m_statsSoon(this),
-      m_recordingFlush(this)
+RobotLink::RobotLink(QObject *parent) : RobotLink(Clock::steady(), parent) {}
+
+RobotLink::RobotLink(Clock &clock, QObject *parent)
+    : QObject(parent), m_clock(clock), m_watchdog(clock, this), m_noData(clock, this), m_reconnect(clock, this),
+      m_probeRetry(clock, this), m_queryQuiet(clock, this), m_queryTimeout(clock, this), m_statsTick(clock, this),
+      m_statsSoon(clock, this), m_recordingFlush(clock, this)
 {
     registerLinkMetaTypes();
-    m_brc = new BrcPulser(this);
+    m_brc = new BrcPulser(clock, this);
     connect(m_brc, &BrcPulser::awake, this, &RobotLink::greetRobot);
     m_parser.setSnapshotHandler([this](const oi::SensorSnapshot &s, oi::FrameKind kind) {
         if (kind == oi::FrameKind::Stream)
@@ -81,25 +84,25 @@ RobotLink::RobotLink(QObject *parent)
         else
             onReply(s);
     });
-    for (QTimer *t : {&m_watchdog, &m_noData, &m_reconnect, &m_probeRetry, &m_queryQuiet,
-                      &m_queryTimeout, &m_statsSoon})
+    for (ClockTimer *t : {&m_watchdog, &m_noData, &m_reconnect, &m_probeRetry, &m_queryQuiet, &m_queryTimeout,
+                          &m_statsSoon})
         t->setSingleShot(true);
     m_watchdog.setInterval(kStaleAfterMs);
     m_statsTick.setInterval(kStatsIntervalMs);
     m_statsSoon.setInterval(kStatsSoonMs);
     m_queryQuiet.setInterval(kQueryQuietMs);
     m_queryTimeout.setInterval(kQueryTimeoutMs);
-    connect(&m_watchdog, &QTimer::timeout, this, &RobotLink::onWatchdog);
-    connect(&m_noData, &QTimer::timeout, this, &RobotLink::onNoData);
-    connect(&m_reconnect, &QTimer::timeout, this, &RobotLink::openTransport);
-    connect(&m_probeRetry, &QTimer::timeout, this, &RobotLink::startProbe);
-    connect(&m_queryQuiet, &QTimer::timeout, this, &RobotLink::sendQuery);
-    connect(&m_queryTimeout, &QTimer::timeout, this, &RobotLink::onQueryTimeout);
-    connect(&m_statsTick, &QTimer::timeout, this, &RobotLink::onStatsTick);
-    connect(&m_statsSoon, &QTimer::timeout, this, &RobotLink::emitStatsIfChanged);
+    connect(&m_watchdog, &ClockTimer::timeout, this, &RobotLink::onWatchdog);
+    connect(&m_noData, &ClockTimer::timeout, this, &RobotLink::onNoData);
+    connect(&m_reconnect, &ClockTimer::timeout, this, &RobotLink::openTransport);
+    connect(&m_probeRetry, &ClockTimer::timeout, this, &RobotLink::startProbe);
+    connect(&m_queryQuiet, &ClockTimer::timeout, this, &RobotLink::sendQuery);
+    connect(&m_queryTimeout, &ClockTimer::timeout, this, &RobotLink::onQueryTimeout);
+    connect(&m_statsTick, &ClockTimer::timeout, this, &RobotLink::onStatsTick);
+    connect(&m_statsSoon, &ClockTimer::timeout, this, &RobotLink::emitStatsIfChanged);
     // A quiet line still reaches the disk within a second.
     m_recordingFlush.setInterval(recording::kFlushIntervalMs);
-    connect(&m_recordingFlush, &QTimer::timeout, this, [this] {
+    connect(&m_recordingFlush, &ClockTimer::timeout, this, [this] {
         if (m_recorder && !m_recorder->flush())
             stopRecording();
         else
@@ -150,9 +153,10 @@ void RobotLink::open(const LinkSettings &settings)
     m_lastEmitted = {};
     m_reported.clear();
     m_recovering = false;
+    m_lastTransportError.clear();
     m_backoffMs = kFirstBackoffMs;
-    m_sinceOpen.start();
-    m_rateClock.start();
+    m_openedNs = m_clock.nowNs();
+    m_rateStartNs = m_openedNs;
     m_statsTick.start();
     setState(LinkState::Connecting);
     openTransport();
@@ -162,8 +166,8 @@ void RobotLink::close()
 {
     if (m_state == LinkState::Closed)
         return;
-    for (QTimer *t : {&m_watchdog, &m_noData, &m_reconnect, &m_probeRetry, &m_queryQuiet,
-                      &m_queryTimeout, &m_statsSoon, &m_statsTick})
+    for (ClockTimer *t : {&m_watchdog, &m_noData, &m_reconnect, &m_probeRetry, &m_queryQuiet, &m_queryTimeout,
+                          &m_statsSoon, &m_statsTick})
         t->stop();
     m_queries.clear();
     m_queryPhase = QueryPhase::None;
@@ -180,7 +184,7 @@ void RobotLink::close()
     dropTransport();
     // The last window counts too when it is long enough to mean something,
     // so a short session still reports a rate.
-    if (m_rateClock.isValid() && m_rateClock.elapsed() >= kMinRateWindowMs)
+    if ((m_clock.nowNs() - m_rateStartNs) / 1'000'000 >= kMinRateWindowMs)
         updateRate();
     emitStatsIfChanged();
     stopRecording();
@@ -223,6 +227,7 @@ void RobotLink::openTransport()
 // Never deletes the transport at once: this may run inside one of its signals.
 void RobotLink::dropTransport()
 {
+    endDoctor(tr("%1: the connection ended during the check").arg(m_settings.describe()));
     if (m_probe) {
         m_probe->cancel();
         m_probe->deleteLater();
@@ -279,6 +284,7 @@ void RobotLink::greetRobot()
 
 void RobotLink::onTransportError(const QString &message)
 {
+    m_lastTransportError = message;
     reportError(message);
     if (m_transportOpen)
         return; // closed() follows
@@ -314,17 +320,14 @@ void RobotLink::startProbe()
         return;
     }
     if (!m_probe) {
-        const QList<int> bauds = m_settings.baud > 0 ? QList<int>{m_settings.baud} : ProfileProbe::defaultBauds();
-        m_probe = new ProfileProbe(*m_transport, bauds, this);
+        // The baud asked for, or the one the connection doctor found.
+        const QList<int> bauds = m_baud > 0 ? QList<int>{m_baud} : ProfileProbe::defaultBauds();
+        m_probe = new ProfileProbe(*m_transport, bauds, m_clock, this);
         if (!m_settings.streaming && !m_settings.startIfSilent)
             m_probe->setStartPolicy(ProfileProbe::StartPolicy::Never);
         else if (!m_settings.streaming)
             m_probe->setStartPolicy(ProfileProbe::StartPolicy::IfSilent);
-        connect(m_probe, &ProfileProbe::bytesSent, this, [this](const QByteArray &bytes) {
-            m_totals.bytesSent += static_cast<quint64>(bytes.size());
-            record(recording::RecordKind::Sent, bytes);
-            emit rawBytesSent(bytes);
-        });
+        connect(m_probe, &ProfileProbe::bytesSent, this, &RobotLink::noteSent);
         connect(m_probe, &ProfileProbe::detected, this, [this](oi::ProfileId id, int baud) {
             m_profile = &oi::profile(id);
             if (baud > 0)
@@ -424,12 +427,17 @@ void RobotLink::onBytes(const QByteArray &bytes)
         m_probe->feed(bytes);
         return;
     }
+    if (m_doctor) {
+        m_doctor->feed(bytes);
+        return;
+    }
     if (m_queryPhase == QueryPhase::Pausing)
         m_queryQuiet.start();
     if (takeScriptReply(bytes))
         return;
     const qint64 recordedUs = m_transport ? m_transport->readTimeUs() : -1;
-    m_readSeconds = recordedUs >= 0 ? static_cast<double>(recordedUs) / 1e6 : m_sinceOpen.nsecsElapsed() / 1e9;
+    m_readSeconds = recordedUs >= 0 ? static_cast<double>(recordedUs) / 1e6
+                                    : static_cast<double>(m_clock.nowNs() - m_openedNs) / 1e9;
     const oi::ParserCounters before = m_parser.counters();
     m_feeding = true;
     m_parser.feed({reinterpret_cast<const std::uint8_t *>(bytes.constData()), static_cast<std::size_t>(bytes.size())});
@@ -449,7 +457,7 @@ void RobotLink::onFrame(const oi::SensorSnapshot &frame)
 {
     if (!m_streamRequested)
         return; // closed by a slot of an earlier frame of the same read
-    m_lastFrameMs = QDateTime::currentMSecsSinceEpoch();
+    m_lastFrameMs = m_clock.msecsSinceEpoch();
     m_frameSinceStreamStart = true;
     if (frame.has(35))
         m_brc->noteMode(frame.oiMode());
@@ -501,6 +509,10 @@ void RobotLink::send(const QByteArray &bytes)
         reportError(tr("not connected: the command was not sent"), false);
         return;
     }
+    if (m_doctor) {
+        reportError(tr("the connection check is running: the command was not sent"), false);
+        return;
+    }
     if (const QString why = m_settings.whyNoBaudChange(); !why.isEmpty() && LinkSettings::holdsBaudCommand(bytes)) {
         reportError(why, false);
         return;
@@ -524,10 +536,15 @@ bool RobotLink::writeBytes(const QByteArray &bytes)
         reportError(tr("%1: write failed").arg(m_settings.describe()));
         return false;
     }
+    noteSent(bytes);
+    return true;
+}
+
+void RobotLink::noteSent(const QByteArray &bytes)
+{
     m_totals.bytesSent += static_cast<quint64>(bytes.size());
     record(recording::RecordKind::Sent, bytes);
     emit rawBytesSent(bytes);
-    return true;
 }
 
 void RobotLink::querySensors(const QList<int> &packetIds)
@@ -551,7 +568,7 @@ void RobotLink::querySensors(const QList<int> &packetIds)
         reportError(tr("sensor query: ask for 1 to 255 packets"), false);
         return;
     }
-    enqueue(Request{false, std::move(ids)});
+    enqueue(Request{Request::Kind::Sensors, std::move(ids)});
 }
 
 void RobotLink::showScript()
@@ -564,7 +581,7 @@ void RobotLink::showScript()
         emit scriptFailed(tr("the %1 has no scripts").arg(fromStd(m_profile->name)));
         return;
     }
-    enqueue(Request{true, {}});
+    enqueue(Request{Request::Kind::Script, {}});
 }
 
 void RobotLink::enqueue(Request request)
@@ -580,6 +597,10 @@ void RobotLink::startNextQuery()
 {
     if (m_queries.empty() || m_queryPhase != QueryPhase::None || !m_transport || !m_transportOpen)
         return;
+    if (m_queries.front().kind == Request::Kind::Doctor) {
+        startDoctor();
+        return;
+    }
     m_queryTimeout.start();
     // Without streaming, a stream an earlier client left running is paused too.
     if (m_streamRequested || !m_settings.streaming) {
@@ -600,10 +621,11 @@ void RobotLink::sendQuery()
     const Request &request = m_queries.front();
     const oi::CommandEncoder encoder(*m_profile);
     const std::vector<int> asInts(request.packetIds.begin(), request.packetIds.end());
-    const oi::EncodeResult command = request.script      ? encoder.showScript()
+    const bool script = request.kind == Request::Kind::Script;
+    const oi::EncodeResult command = script              ? encoder.showScript()
                                      : asInts.size() == 1 ? encoder.sensors(asInts.front())
                                                           : encoder.queryList(asInts);
-    if (request.script)
+    if (script)
         m_scriptReply.clear();
     else
         m_parser.expectReply(request.packetIds);
@@ -624,7 +646,7 @@ void RobotLink::onReply(const oi::SensorSnapshot &reply)
 // not know it, so it is read here. True when the bytes were taken.
 bool RobotLink::takeScriptReply(const QByteArray &bytes)
 {
-    if (m_queryPhase != QueryPhase::Waiting || m_queries.empty() || !m_queries.front().script)
+    if (m_queryPhase != QueryPhase::Waiting || m_queries.empty() || m_queries.front().kind != Request::Kind::Script)
         return false;
     m_scriptReply += bytes;
     const qsizetype length = static_cast<std::uint8_t>(m_scriptReply.front());
@@ -641,9 +663,9 @@ void RobotLink::onQueryTimeout()
     if (m_queryPhase == QueryPhase::Pausing) {
         const QString message = tr("%1: the stream did not pause; the sensor query was not sent").arg(m_settings.describe());
         reportError(message, false);
-        if (!m_queries.empty() && !m_queries.front().script)
+        if (!m_queries.empty() && m_queries.front().kind == Request::Kind::Sensors)
             emit sensorQueryFailed(message);
-    } else if (!m_queries.empty() && m_queries.front().script) {
+    } else if (!m_queries.empty() && m_queries.front().kind == Request::Kind::Script) {
         m_scriptReply.clear();
         emit scriptFailed(tr("%1: no reply to Show Script").arg(m_settings.describe()));
     } else {
@@ -670,6 +692,88 @@ void RobotLink::finishQuery()
     // Not at once: this may run inside the parser, which the next query resets.
     if (!m_queries.empty())
         QMetaObject::invokeMethod(this, &RobotLink::startNextQuery, Qt::QueuedConnection);
+}
+
+// --- The connection doctor ---
+
+void RobotLink::checkConnection()
+{
+    // One check at a time; its finding answers every request for it.
+    if (m_doctor || std::any_of(m_queries.begin(), m_queries.end(),
+                                [](const Request &r) { return r.kind == Request::Kind::Doctor; }))
+        return;
+    if (!m_transport || !m_transportOpen) {
+        ConnectionDoctor::Report report; // nothing comes back
+        report.summary = m_state == LinkState::Closed ? tr("not connected: there is nothing to check")
+                         : !m_lastTransportError.isEmpty()
+                             ? m_lastTransportError
+                             : tr("%1: the port is not open yet").arg(m_settings.describe());
+        emit connectionChecked(report);
+        return;
+    }
+    enqueue(Request{Request::Kind::Doctor, {}});
+}
+
+// The doctor has the port to itself: motion stops, and the stream, the
+// probe and the keep-awake pulses give way until it is done.
+void RobotLink::startDoctor()
+{
+    m_queryPhase = QueryPhase::Checking;
+    if (m_streamRequested)
+        writeBytes(toBytes(oi::CommandEncoder(*m_profile).stopMotion()));
+    m_streamRequested = false;
+    for (ClockTimer *t : {&m_watchdog, &m_noData, &m_probeRetry})
+        t->stop();
+    if (m_probe) {
+        m_probe->cancel();
+        m_probe->deleteLater();
+        m_probe = nullptr;
+    }
+    m_brc->setTransport(nullptr);
+    dropPartialInput();
+    setState(LinkState::Connecting);
+    m_doctor = new ConnectionDoctor(*m_transport, m_settings.profile, m_settings.baud, m_clock, this);
+    connect(m_doctor, &ConnectionDoctor::bytesSent, this, &RobotLink::noteSent);
+    connect(m_doctor, &ConnectionDoctor::stepDone, this, &RobotLink::connectionCheckStep);
+    connect(m_doctor, &ConnectionDoctor::finished, this, &RobotLink::onDoctorFinished);
+    m_doctor->start();
+}
+
+// Greets the robot again with what the doctor found: the baud it answered
+// at, and for another robot than the one named, the probe's answer.
+void RobotLink::onDoctorFinished(const ConnectionDoctor::Report &report)
+{
+    disconnect(m_doctor, nullptr, this, nullptr);
+    m_doctor->deleteLater(); // inside its own signal
+    m_doctor = nullptr;
+    if (!m_queries.empty())
+        m_queries.pop_front();
+    m_queryPhase = QueryPhase::None;
+    if (report.baud > 0)
+        m_baud = report.baud;
+    if (report.finding == ConnectionDoctor::Finding::OtherProfile) {
+        m_profile = nullptr;
+        m_profileAssumed = false;
+    }
+    m_rearmMs = kNoDataAfterMs;
+    m_brc->setTransport(m_transport);
+    emit connectionChecked(report);
+    greetRobot();
+    if (!m_queries.empty())
+        QMetaObject::invokeMethod(this, &RobotLink::startNextQuery, Qt::QueuedConnection);
+}
+
+// The port went away or the link closed while the doctor ran.
+void RobotLink::endDoctor(const QString &why)
+{
+    if (!m_doctor)
+        return;
+    disconnect(m_doctor, nullptr, this, nullptr);
+    m_doctor->deleteLater();
+    m_doctor = nullptr;
+    ConnectionDoctor::Report report; // nothing comes back
+    report.summary = why;
+    emit connectionChecked(report);
 }
 
 // Forgets bytes held for an unfinished frame, counting them as discarded.
@@ -734,7 +838,8 @@ void RobotLink::onStatsTick()
 
 void RobotLink::updateRate()
 {
-    const qint64 elapsed = m_rateClock.restart();
+    const qint64 now = m_clock.nowNs();
+    const qint64 elapsed = (now - std::exchange(m_rateStartNs, now)) / 1'000'000;
     const quint64 frames = currentStatistics().frames;
     if (elapsed > 0)
         m_framesPerSecond = static_cast<double>(frames - m_framesAtRateStart) * 1000.0 / static_cast<double>(elapsed);

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "connection_doctor.h"
+#include "link_clock.h"
 #include "link_settings.h"
 #include "link_status.h"
 #include "recording_file.h"
@@ -9,12 +11,10 @@
 #include "stream_parser.h"
 
 #include <QByteArray>
-#include <QElapsedTimer>
 #include <QList>
 #include <QObject>
 #include <QSet>
 #include <QString>
-#include <QTimer>
 
 #include <cstdint>
 #include <deque>
@@ -51,6 +51,9 @@ public:
     static constexpr int kMaxBackoffMs = 2000;
 
     explicit RobotLink(QObject *parent = nullptr);
+    // Every timed rule of the link (backoff, watchdog, re-arm, query
+    // timeouts, the wake and the probe) runs on `clock`.
+    explicit RobotLink(Clock &clock, QObject *parent = nullptr);
     ~RobotLink() override;
 
     // Replaces the link's own transports (serial, TCP, replay), which know
@@ -90,6 +93,12 @@ public slots:
     // error after 500 ms. Queued with the sensor queries, so that it too never
     // meets stream bytes.
     void showScript();
+    // Finds out why no valid data comes (ConnectionDoctor), on this link's
+    // port, in its turn with the queries: motion is stopped, the stream and
+    // the probe give way, and afterwards the link greets the robot again
+    // (at the baud found) and streams. Steps as connectionCheckStep(), the
+    // finding as connectionChecked().
+    void checkConnection();
     // Records every byte both ways, from now until stopRecording() or
     // close(), across reconnects. Reports through recordingStatus().
     void startRecording(const QString &path);
@@ -120,6 +129,8 @@ signals:
     void profileAssumed(oi::ProfileId assumed);
     // A Sensors or Query List request got no answer (errorOccurred says so too).
     void sensorQueryFailed(const QString &message);
+    void connectionCheckStep(const QString &step);
+    void connectionChecked(const oilink::ConnectionDoctor::Report &report);
     void rawBytesSent(const QByteArray &bytes);
     void rawBytesReceived(const QByteArray &bytes);
     void errorOccurred(const QString &message);
@@ -127,11 +138,12 @@ signals:
     void replayStatus(const oilink::ReplayStatus &status);
 
 private:
-    enum class QueryPhase { None, Pausing, Waiting };
+    enum class QueryPhase { None, Pausing, Waiting, Checking };
     // A request whose reply has no framing: Sensors / Query List (the parser
-    // reads those), or Show Script (read here: a length byte, then the script).
+    // reads those), or Show Script (read here: a length byte, then the
+    // script); or the connection doctor, which has the port to itself.
     struct Request {
-        bool script = false;
+        enum class Kind { Sensors, Script, Doctor } kind = Kind::Sensors;
         std::vector<std::uint8_t> packetIds;
     };
 
@@ -158,10 +170,15 @@ private:
     void onWatchdog();
     void onNoData();
     bool writeBytes(const QByteArray &bytes);
+    // Counts, records and shows bytes that went to the robot.
+    void noteSent(const QByteArray &bytes);
     void dropPartialInput();
     void startNextQuery();
     void sendQuery();
     void onQueryTimeout();
+    void startDoctor();
+    void onDoctorFinished(const oilink::ConnectionDoctor::Report &report);
+    void endDoctor(const QString &why);
     void finishQuery();
     void onStatsTick();
     void updateRate();
@@ -171,12 +188,15 @@ private:
     void record(recording::RecordKind kind, const QByteArray &bytes);
     void emitRecordingStatus(const QString &error = {});
 
+    Clock &m_clock;
     TransportFactory m_factory;
     LinkSettings m_settings;
     Transport *m_transport = nullptr;
     bool m_transportOpen = false;
     ProfileProbe *m_probe = nullptr;
     BrcPulser *m_brc = nullptr; // wakes the robot and keeps it awake (if it sleeps)
+    ConnectionDoctor *m_doctor = nullptr;
+    QString m_lastTransportError; // why the port did not open, for a check meanwhile
 
     const oi::RobotProfile *m_profile = nullptr;
     bool m_profileAssumed = false;
@@ -195,32 +215,32 @@ private:
     bool m_recovering = false; // lost the port since the last frame
     QSet<QString> m_reported;
 
-    QTimer m_watchdog;  // Streaming -> Stale
-    QTimer m_noData;    // nothing since Start/Stream: say so, and ask again
+    ClockTimer m_watchdog;  // Streaming -> Stale
+    ClockTimer m_noData;    // nothing since Start/Stream: say so, and ask again
     int m_rearmMs = kNoDataAfterMs;
-    QTimer m_reconnect;
+    ClockTimer m_reconnect;
     int m_backoffMs = kFirstBackoffMs;
-    QTimer m_probeRetry;
+    ClockTimer m_probeRetry;
 
     std::deque<Request> m_queries;
     QByteArray m_scriptReply; // Show Script's reply as it arrives
     QueryPhase m_queryPhase = QueryPhase::None;
-    QTimer m_queryQuiet;   // the paused stream has drained
-    QTimer m_queryTimeout;
+    ClockTimer m_queryQuiet;   // the paused stream has drained
+    ClockTimer m_queryTimeout;
 
     LinkStats m_totals; // bytes, reconnects; the frame counts come from the parser
     qint64 m_lastFrameMs = -1;
-    QElapsedTimer m_sinceOpen;  // the clock live frames are stamped with
+    qint64 m_openedNs = 0;      // live frames are stamped with the time since
     double m_readSeconds = 0;   // when the bytes being parsed were read
     double m_framesPerSecond = 0;
-    QElapsedTimer m_rateClock;
+    qint64 m_rateStartNs = 0;
     quint64 m_framesAtRateStart = 0;
     LinkStats m_lastEmitted;
-    QTimer m_statsTick;
-    QTimer m_statsSoon;
+    ClockTimer m_statsTick;
+    ClockTimer m_statsSoon;
 
     std::unique_ptr<RecordingWriter> m_recorder;
-    QTimer m_recordingFlush;
+    ClockTimer m_recordingFlush;
 };
 
 } // namespace oilink

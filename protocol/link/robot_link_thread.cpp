@@ -136,7 +136,7 @@ void RobotLinkThread::start()
 {
     if (m_thread.isRunning())
         return;
-    auto *link = new RobotLink;
+    auto *link = new RobotLink(*m_clock);
     link->setTransportFactory(m_factory);
     link->moveToThread(&m_thread);
     connect(&m_thread, &QThread::finished, link, &QObject::deleteLater);
@@ -166,6 +166,9 @@ void RobotLinkThread::start()
         emit streamStarted(profile, baud, packets);
     });
     relay(link, &RobotLink::profileAssumed, [this](oi::ProfileId assumed) { emit profileAssumed(assumed); });
+    relay(link, &RobotLink::connectionCheckStep, [this](const QString &s) { emit connectionCheckStep(s); });
+    relay(link, &RobotLink::connectionChecked,
+          [this](const ConnectionDoctor::Report &r) { emit connectionChecked(r); });
     relay(link, &RobotLink::rawBytesSent, [this](const QByteArray &b) { emit rawBytesSent(b); });
     relay(link, &RobotLink::errorOccurred, [this](const QString &m) { emit errorOccurred(m); });
     relay(link, &RobotLink::recordingStatus, [this](const RecordingStatus &st) { emit recordingStatus(st); });
@@ -219,6 +222,17 @@ void RobotLinkThread::querySensors(const QList<int> &packetIds)
                                   Qt::QueuedConnection);
     else
         emit errorOccurred(tr("not connected: the sensor query was not sent"));
+}
+
+void RobotLinkThread::checkConnection()
+{
+    if (m_link && m_thread.isRunning()) {
+        QMetaObject::invokeMethod(m_link, [link = m_link.data()] { link->checkConnection(); }, Qt::QueuedConnection);
+        return;
+    }
+    ConnectionDoctor::Report report; // nothing comes back
+    report.summary = tr("not connected: there is nothing to check");
+    emit connectionChecked(report);
 }
 
 void RobotLinkThread::showScript()

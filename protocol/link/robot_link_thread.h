@@ -35,6 +35,9 @@ public:
     // Replaces the link's own transports (see RobotLink::setTransportFactory);
     // called on the worker thread. Before start().
     void setTransportFactory(RobotLink::TransportFactory factory);
+    // The clock the link's timed rules run on (the steady clock unless
+    // told). Before start().
+    void setClock(Clock &clock) { m_clock = &clock; }
 
     // Starts the worker thread (open() does it too). Idempotent.
     void start();
@@ -60,6 +63,7 @@ public slots:
     void send(const QByteArray &bytes);
     void querySensors(const QList<int> &packetIds);
     void showScript();
+    void checkConnection(); // see RobotLink::checkConnection
     void startRecording(const QString &path);
     void stopRecording();
     void controlReplay(const oilink::ReplayCommand &command);
@@ -73,6 +77,8 @@ signals:
     void statistics(const oilink::LinkStats &stats);
     void streamStarted(oi::ProfileId profile, int baud, const QList<int> &packets);
     void profileAssumed(oi::ProfileId assumed); // see RobotLink::profileAssumed
+    void connectionCheckStep(const QString &step);
+    void connectionChecked(const oilink::ConnectionDoctor::Report &report);
     void rawBytesSent(const QByteArray &bytes);
     void rawBytesReceived(const QByteArray &bytes);
     void errorOccurred(const QString &message);
@@ -100,6 +106,7 @@ private:
     QThread m_thread;
     QPointer<RobotLink> m_link;
     RobotLink::TransportFactory m_factory;
+    Clock *m_clock = &Clock::steady();
     LinkState m_state = LinkState::Closed;
     LinkStats m_stats;
     QMutex m_queueMutex;

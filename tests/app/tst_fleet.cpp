@@ -504,6 +504,33 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(again.session.odometry().pose().thetaRad < -0.3, 10000);
     }
 
+    // The check runs on the port the session holds, through its link: the
+    // session is never closed for it, the steps and the finding are shown,
+    // and the robot streams again.
+    void theCheckRunsThroughTheSessionsLink()
+    {
+        Roomba500OnTcp robot;
+        CheckedRobot rosa(oi::ProfileId::Roomba500);
+        oilink::LinkSettings settings = robot.unnamed();
+        settings.profile = oi::ProfileId::Roomba500;
+        rosa.session.connectTo(settings);
+        QTRY_VERIFY(rosa.session.isLive());
+        QSignalSpy finished(&rosa.checkup, &ConnectionCheckup::finished);
+        QSignalSpy steps(&rosa.session, &RobotSession::connectionCheckStep);
+        QSignalSpy states(&rosa.session, &RobotSession::stateChanged);
+        rosa.checkup.run();
+        QVERIFY(rosa.checkup.isRunning());
+        QTRY_COMPARE_WITH_TIMEOUT(finished.size(), 1, 10000);
+        const auto report = finished.first().first().value<oilink::ConnectionDoctor::Report>();
+        QVERIFY2(report.finding == oilink::ConnectionDoctor::Finding::Healthy, qPrintable(report.summary));
+        QCOMPARE(steps.size(), report.steps.size());
+        QTRY_VERIFY(rosa.session.isLive());
+        QCOMPARE(rosa.session.state(), oilink::LinkState::Streaming);
+        for (const QList<QVariant> &s : states)
+            QVERIFY(s.first().value<oilink::LinkState>() != oilink::LinkState::Closed);
+        QCOMPARE(rosa.session.settings(), settings);
+    }
+
     // The window asks with a dialog that says what the two robots are and
     // what the choice decides; the answer is the saved robot's profile.
     void theWindowAsksWhichRobotItIs()

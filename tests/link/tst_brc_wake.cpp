@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The link and the robot's BRC pin: a sleeping Create 2 woken by the link
 // and kept awake, through the in-process virtual robot and over a
-// pseudo-terminal (roomba-sim's control socket standing in for RTS).
+// pseudo-terminal (roomba-sim's control socket standing in for RTS). In
+// process, the robot and the link's timed rules run on a clock the test
+// advances.
 #include "sim_line_transport.h"
 #include "sim_process.h"
 
@@ -15,8 +17,6 @@
 
 #include <QSignalSpy>
 #include <QTest>
-
-using namespace std::chrono_literals;
 
 namespace {
 constexpr int kTimeoutMs = 20000;
@@ -59,29 +59,35 @@ class TestBrcWake : public QObject {
 private slots:
     void pulsesReachTheVirtualRobot()
     {
-        sim::VirtualTransport transport(oi::ProfileId::Create2, 1);
+        ManualClock clock;
+        SimLineTransport transport(oi::ProfileId::Create2, {}, clock);
         transport.open();
-        sim::VirtualRobot &robot = transport.robot()->robot();
-        const std::uint8_t startAndPower[] = {128, 133};
-        robot.receive(startAndPower);
+        sim::VirtualRobot &robot = transport.robot();
+        robot.receive(kStartAndPower);
         QVERIFY(robot.asleep());
-        oilink::BrcPulser pulser;
+        oilink::BrcPulser pulser(clock);
         pulser.setTransport(&transport);
         QVERIFY(pulser.canPulse());
         QSignalSpy pulsed(&pulser, &oilink::BrcPulser::pulsed);
         QSignalSpy awake(&pulser, &oilink::BrcPulser::awake);
         QVERIFY(pulser.wake());
+        clock.advance(oilink::BrcPulser::kWakePulseMs - 1);
+        QVERIFY(pulsed.isEmpty());
         QVERIFY(robot.asleep()); // it wakes as the pulse ends
-        QTRY_COMPARE_WITH_TIMEOUT(pulsed.size(), 1, kTimeoutMs);
+        clock.advance(1);
+        QCOMPARE(pulsed.size(), 1);
         QVERIFY(!robot.asleep());
+        clock.advance(oilink::BrcPulser::kWakeMs - 1);
         QVERIFY(awake.isEmpty()); // the robot's time to wake is still running
-        QTRY_COMPARE_WITH_TIMEOUT(awake.size(), 1, kTimeoutMs);
+        clock.advance(1);
+        QCOMPARE(awake.size(), 1);
 
         // Three pulses of 100 ms, 2 s after waking: 19200 baud.
-        robot.advance(2s);
+        clock.advance(2000);
         QCOMPARE(robot.baud(), 115200);
         QVERIFY(pulser.pulseForBaud19200());
-        QTRY_COMPARE_WITH_TIMEOUT(pulsed.size(), 4, kTimeoutMs);
+        clock.advance(3 * oilink::BrcPulser::kBaudPulseMs + 2 * oilink::BrcPulser::kBaudGapMs);
+        QCOMPARE(pulsed.size(), 4);
         QCOMPARE(robot.baud(), 19200);
     }
 
@@ -90,19 +96,20 @@ private slots:
     // a keep-awake pulse must never be one of those.
     void wakeAndKeepAwakePulsesLeaveTheBaud()
     {
-        sim::VirtualTransport transport(oi::ProfileId::Create2, 1);
+        ManualClock clock;
+        SimLineTransport transport(oi::ProfileId::Create2, {}, clock);
         transport.open();
-        sim::VirtualRobot &robot = transport.robot()->robot();
-        oilink::BrcPulser pulser;
+        sim::VirtualRobot &robot = transport.robot();
+        oilink::BrcPulser pulser(clock);
         pulser.setTransport(&transport);
         QSignalSpy pulsed(&pulser, &oilink::BrcPulser::pulsed);
         for (int i = 0; i < 3; ++i)
             QVERIFY(pulser.wake());
-        QTRY_COMPARE_WITH_TIMEOUT(pulsed.size(), 3, kTimeoutMs);
+        QVERIFY(clock.advanceUntil([&] { return pulsed.size() == 3; }, kTimeoutMs));
         QCOMPARE(robot.baud(), 115200);
         // A keep-awake every 400 ms would have pulsed for 100 ms.
         pulser.setKeepAwake(400);
-        QTRY_VERIFY_WITH_TIMEOUT(pulsed.size() >= 6, kTimeoutMs);
+        QVERIFY(clock.advanceUntil([&] { return pulsed.size() >= 6; }, kTimeoutMs));
         QCOMPARE(robot.baud(), 115200);
     }
 
@@ -121,10 +128,11 @@ private slots:
     {
         QFETCH(bool, named);
         QFETCH(int, starts);
-        oilink::RobotLink link;
+        ManualClock clock;
+        oilink::RobotLink link(clock);
         SimLineTransport *line = nullptr;
         link.setTransportFactory([&](const oilink::LinkSettings &) {
-            line = new SimLineTransport(oi::ProfileId::Create2, {});
+            line = new SimLineTransport(oi::ProfileId::Create2, {}, clock);
             line->robot().receive(kStartAndPower);
             return line;
         });
@@ -145,7 +153,7 @@ private slots:
         });
         link.open(testLine(named ? std::optional(oi::ProfileId::Create2) : std::nullopt));
         QVERIFY(line && line->robot().asleep());
-        QTRY_VERIFY_WITH_TIMEOUT(first.has_value(), kTimeoutMs);
+        QVERIFY(clock.advanceUntil([&] { return first.has_value(); }, kTimeoutMs));
         QVERIFY2(errorsBeforeFirst.isEmpty(), qPrintable(errorsBeforeFirst.join(QStringLiteral(" | "))));
         QCOMPARE(startsBeforeFirst, starts);
         QCOMPARE(first->oiMode(), oi::OiMode::Passive);
@@ -182,10 +190,11 @@ private slots:
         QFETCH(int, profile);
         QFETCH(bool, pulsed);
         const auto id = oi::ProfileId(profile);
-        oilink::RobotLink link;
+        ManualClock clock;
+        oilink::RobotLink link(clock);
         SimLineTransport *line = nullptr;
         link.setTransportFactory([&](const oilink::LinkSettings &s) {
-            line = new SimLineTransport(id, {});
+            line = new SimLineTransport(id, {}, clock);
             line->setBaud(s.baud);
             return line;
         });
@@ -195,7 +204,7 @@ private slots:
         settings.keepAwakeMs = 100;
         link.open(settings);
         // 600 ms of frames: six keep-awake periods.
-        QTRY_VERIFY_WITH_TIMEOUT(frames >= 40, kTimeoutMs);
+        QVERIFY(clock.advanceUntil([&] { return frames >= 40; }, kTimeoutMs));
         if (pulsed)
             QVERIFY2(line->pinPulledLow >= 4, qPrintable(QString::number(line->pinPulledLow)));
         else

@@ -3,11 +3,15 @@
 #include "sim_line_transport.h"
 
 #include "connection_doctor.h"
+#include "profile_probe.h"
+#include "robot_link_thread.h"
 #include "tcp_robot_server.h"
 #include "tcp_transport.h"
 
 #include <QSignalSpy>
 #include <QTest>
+
+#include <atomic>
 
 using namespace oilink;
 using Finding = ConnectionDoctor::Finding;
@@ -30,10 +34,19 @@ ConnectionDoctor::Report runDoctor(Transport &transport, std::optional<oi::Profi
     return done.first().first().value<ConnectionDoctor::Report>();
 }
 
-ConnectionDoctor::Report diagnose(SimLineTransport &line, std::optional<oi::ProfileId> profile, int baud = 0)
+// The doctor on a virtual robot and a line that run on `clock`, which
+// moves until the report comes.
+ConnectionDoctor::Report diagnose(SimLineTransport &line, ManualClock &clock, std::optional<oi::ProfileId> profile,
+                                  int baud = 0)
 {
     line.open();
-    return runDoctor(line, profile, baud);
+    ConnectionDoctor doctor(line, profile, baud, clock);
+    QObject::connect(&line, &Transport::bytesReceived, &doctor, &ConnectionDoctor::feed);
+    QSignalSpy done(&doctor, &ConnectionDoctor::finished);
+    doctor.start();
+    if (!clock.advanceUntil([&done] { return !done.isEmpty(); }, kTimeoutMs))
+        return {};
+    return done.first().first().value<ConnectionDoctor::Report>();
 }
 
 // The doctor over TCP to roomba-sim's server, whose robot an earlier client
@@ -70,8 +83,9 @@ class TestConnectionDoctor : public QObject {
 private slots:
     void healthy()
     {
-        SimLineTransport line(oi::ProfileId::Create2, {});
-        const auto r = diagnose(line, oi::ProfileId::Create2);
+        ManualClock clock;
+        SimLineTransport line(oi::ProfileId::Create2, {}, clock);
+        const auto r = diagnose(line, clock, oi::ProfileId::Create2);
         QVERIFY2(r.finding == Finding::Healthy, qPrintable(explain(r)));
         QCOMPARE(r.baud, 115200);
         QCOMPARE(r.profile, oi::ProfileId::Create2);
@@ -80,9 +94,10 @@ private slots:
 
     void nothingComesBack()
     {
-        SimLineTransport line(oi::ProfileId::Create2, {115200, false});
+        ManualClock clock;
+        SimLineTransport line(oi::ProfileId::Create2, {115200, false}, clock);
         line.robot().disconnect();
-        const auto r = diagnose(line, oi::ProfileId::Create2);
+        const auto r = diagnose(line, clock, oi::ProfileId::Create2);
         QVERIFY2(r.finding == Finding::NothingComesBack, qPrintable(explain(r)));
         QCOMPARE(r.steps.size(), 4); // three bauds and the pin out of reach
         QVERIFY(r.steps.last().contains(QStringLiteral("no BRC pin")));
@@ -106,7 +121,8 @@ private slots:
 
     void wrongBaudNamesTheOneThatAnswers()
     {
-        SimLineTransport line(oi::ProfileId::Create2, {});
+        ManualClock clock;
+        SimLineTransport line(oi::ProfileId::Create2, {}, clock);
         // Left streaming at 57600 by an earlier client.
         const std::uint8_t toBaud[] = {128, 129, 10};
         const std::uint8_t stream[] = {148, 1, 35};
@@ -114,7 +130,7 @@ private slots:
         line.robot().advance(std::chrono::milliseconds(100)); // what comes sooner may be lost
         line.robot().receive(stream);
         QCOMPARE(line.robot().baud(), 57600);
-        const auto r = diagnose(line, oi::ProfileId::Create2);
+        const auto r = diagnose(line, clock, oi::ProfileId::Create2);
         QVERIFY2(r.finding == Finding::WrongBaud, qPrintable(explain(r)));
         QCOMPARE(r.baud, 57600);
         QVERIFY2(r.summary.contains(QStringLiteral("answers at 57600 baud, not 115200")), qPrintable(r.summary));
@@ -126,9 +142,10 @@ private slots:
     // put it on 19200 (the robot counts none sooner).
     void asleepThenAt19200AfterThreePulses()
     {
-        SimLineTransport line(oi::ProfileId::Create2, {19200, true});
+        ManualClock clock;
+        SimLineTransport line(oi::ProfileId::Create2, {19200, true}, clock);
         line.robot().receive(kStartAndPower);
-        const auto r = diagnose(line, oi::ProfileId::Create2);
+        const auto r = diagnose(line, clock, oi::ProfileId::Create2);
         QVERIFY2(r.finding == Finding::Baud19200AfterPulses, qPrintable(explain(r)));
         QCOMPARE(r.baud, 19200);
         QCOMPARE(line.robot().baud(), 19200);
@@ -140,10 +157,11 @@ private slots:
 
     void asleepAndWokeAfterAPulse()
     {
-        SimLineTransport line(oi::ProfileId::Create2, {});
+        ManualClock clock;
+        SimLineTransport line(oi::ProfileId::Create2, {}, clock);
         line.robot().receive(kStartAndPower);
         QVERIFY(line.robot().asleep());
-        const auto r = diagnose(line, oi::ProfileId::Create2);
+        const auto r = diagnose(line, clock, oi::ProfileId::Create2);
         QVERIFY2(r.finding == Finding::WokeAfterPulse, qPrintable(explain(r)));
         QVERIFY(!line.robot().asleep());
         QCOMPARE(r.summary, QStringLiteral("The robot was asleep; a BRC pulse woke it, and it talks at 115200 baud."));
@@ -151,12 +169,13 @@ private slots:
 
     void asleepOnTheDockWithOldFirmware()
     {
-        SimLineTransport line(oi::ProfileId::Create2, {});
+        ManualClock clock;
+        SimLineTransport line(oi::ProfileId::Create2, {}, clock);
         line.robot().setFirmwareRelease("release-3.8.1");
         const sim::World::Dock dock = *line.robot().world().dock;
         line.robot().placeAt(oi::Pose{dock.x, dock.y, dock.headingRad + 3.14159265358979323846});
         line.robot().receive(kStartAndPower);
-        const auto r = diagnose(line, oi::ProfileId::Create2);
+        const auto r = diagnose(line, clock, oi::ProfileId::Create2);
         QVERIFY2(r.finding == Finding::AsleepDidNotWake, qPrintable(explain(r)));
         QVERIFY(r.summary.contains(QStringLiteral("on its dock with firmware before release-3.8.2")));
         QVERIFY(line.robot().asleep());
@@ -164,9 +183,10 @@ private slots:
 
     void answersAsAnotherProfile()
     {
-        SimLineTransport line(oi::ProfileId::Create1, {});
+        ManualClock clock;
+        SimLineTransport line(oi::ProfileId::Create1, {}, clock);
         line.setBaud(57600);
-        const auto r = diagnose(line, oi::ProfileId::Create2, 57600);
+        const auto r = diagnose(line, clock, oi::ProfileId::Create2, 57600);
         QVERIFY2(r.finding == Finding::OtherProfile, qPrintable(explain(r)));
         QCOMPARE(r.profile, oi::ProfileId::Create1);
         QVERIFY2(r.summary.contains(QStringLiteral("answers as a Create, not as the Roomba 600 / Create 2")), qPrintable(r.summary));
@@ -174,15 +194,63 @@ private slots:
 
     void roomba500AndCreate2AnswerAlike()
     {
-        SimLineTransport line(oi::ProfileId::Roomba500, {});
+        ManualClock clock;
+        SimLineTransport line(oi::ProfileId::Roomba500, {}, clock);
         line.robot().receive(kStart);
-        const auto r = diagnose(line, std::nullopt);
+        const auto r = diagnose(line, clock, std::nullopt);
         QVERIFY2(r.finding == Finding::RoombaOrCreate2, qPrintable(explain(r)));
         QVERIFY2(r.summary.contains(QStringLiteral("as a Roomba 500 or a Create 2")) && r.summary.contains(QStringLiteral("name which it is")),
                  qPrintable(r.summary));
         // Named, it is healthy: never Create 2 by itself.
-        SimLineTransport named(oi::ProfileId::Roomba500, {});
-        QCOMPARE(diagnose(named, oi::ProfileId::Roomba500).finding, Finding::Healthy);
+        ManualClock clock2;
+        SimLineTransport named(oi::ProfileId::Roomba500, {}, clock2);
+        QCOMPARE(diagnose(named, clock2, oi::ProfileId::Roomba500).finding, Finding::Healthy);
+    }
+
+    // A session's link holds the port and streams; the doctor runs on that
+    // port, through the link, and the link streams again afterwards. The
+    // port is opened once: nothing else opens it.
+    void theLinkRunsTheDoctorOnItsPortAndStreamsAgain()
+    {
+        std::atomic<int> made = 0;
+        RobotLinkThread link;
+        link.setTransportFactory([&made](const LinkSettings &) {
+            ++made;
+            return new SimLineTransport(oi::ProfileId::Create2, {});
+        });
+        QSignalSpy steps(&link, &RobotLinkThread::connectionCheckStep);
+        QSignalSpy checked(&link, &RobotLinkThread::connectionChecked);
+        QSignalSpy sent(&link, &RobotLinkThread::rawBytesSent);
+        QList<LinkState> states;
+        int frames = 0;
+        int framesAtFinding = -1;
+        connect(&link, &RobotLinkThread::stateChanged, this, [&states](LinkState s) { states << s; });
+        connect(&link, &RobotLinkThread::snapshot, this, [&frames] { ++frames; });
+        connect(&link, &RobotLinkThread::connectionChecked, this, [&] { framesAtFinding = frames; });
+        link.open(LinkSettings::serial(QStringLiteral("test line"), oi::ProfileId::Create2));
+        QTRY_COMPARE_WITH_TIMEOUT(link.state(), LinkState::Streaming, kTimeoutMs);
+        sent.clear();
+        states.clear();
+
+        link.checkConnection();
+        QVERIFY(checked.wait(kTimeoutMs));
+        const auto report = checked.first().first().value<ConnectionDoctor::Report>();
+        QVERIFY2(report.finding == Finding::Healthy, qPrintable(explain(report)));
+        QCOMPARE(report.baud, 115200);
+        QCOMPARE(steps.size(), report.steps.size());
+        // Motion stopped first, then the doctor's questions, through the link.
+        QCOMPARE(sent.first().first().toByteArray(), QByteArray("\x89\0\0\0\0\x8a\0", 7));
+        bool askedMode = false;
+        for (const QList<QVariant> &write : sent)
+            askedMode = askedMode || write.first().toByteArray() == ProfileProbe::modeQuestion();
+        QVERIFY(askedMode);
+        QCOMPARE(states.value(0), LinkState::Connecting);
+
+        // Streaming again, on the same port.
+        QTRY_VERIFY_WITH_TIMEOUT(frames > framesAtFinding && link.state() == LinkState::Streaming, kTimeoutMs);
+        QCOMPARE(states.last(), LinkState::Streaming);
+        QCOMPARE(made.load(), 1);
+        link.stop();
     }
 };
 

@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // RobotLink against a recording transport: the exact bytes it sends, what it
-// makes of the bytes it gets, and how it behaves when the port fails.
+// makes of the bytes it gets, and how it behaves when the port fails. Its
+// timed rules run on a clock the test advances.
 #include "link_test_support.h"
+#include "manual_clock.h"
 #include "recording_transport.h"
 
 #include "command_encoder.h"
@@ -14,7 +16,6 @@
 #include <QTcpServer>
 #include <QTcpSocket>
 #include <QTest>
-#include <QTimer>
 
 using oilink::LinkSettings;
 using oilink::LinkState;
@@ -53,6 +54,7 @@ const QByteArray kShutdown = bytes({150, 0, 137, 0, 0, 0, 0, 138, 0, 128});
 class TestRobotLink : public QObject {
     Q_OBJECT
 
+    ManualClock m_clock;
     RobotLink *m_link = nullptr;
     QList<QPointer<RecordingTransport>> m_transports;
     QStringList m_failures; // open failures for the next transports, in order
@@ -66,7 +68,7 @@ private slots:
     {
         m_transports.clear();
         m_failures.clear();
-        m_link = new RobotLink;
+        m_link = new RobotLink(m_clock);
         m_link->setTransportFactory([this](const LinkSettings &) {
             auto *t = new RecordingTransport(RecordingTransport::Robot::Silent);
             if (!m_failures.isEmpty())
@@ -260,8 +262,10 @@ private slots:
         QCOMPARE(now.bytesSent, quint64(4));
         QVERIFY(now.lastFrameTime.isValid());
         // The failure is reported soon, not only at the next one-second tick.
-        QTRY_VERIFY_WITH_TIMEOUT(!stats.isEmpty(), 5000);
-        QTRY_VERIFY_WITH_TIMEOUT(stats.last().at(0).value<oilink::LinkStats>().checksumFailures == 1, 5000);
+        stats.clear();
+        m_clock.advance(100);
+        QCOMPARE(stats.size(), 1);
+        QCOMPARE(stats.last().at(0).value<oilink::LinkStats>().checksumFailures, quint64(1));
     }
 
     void staleAfterSilenceThenStreamingAgain()
@@ -270,7 +274,10 @@ private slots:
         m_link->open(create2());
         current()->inject(group100Frame());
         QCOMPARE(m_link->state(), LinkState::Streaming);
-        QTRY_COMPARE_WITH_TIMEOUT(m_link->state(), LinkState::Stale, 5000);
+        m_clock.advance(RobotLink::kStaleAfterMs - 1);
+        QCOMPARE(m_link->state(), LinkState::Streaming);
+        m_clock.advance(1);
+        QCOMPARE(m_link->state(), LinkState::Stale);
         current()->inject(group100Frame());
         QCOMPARE(m_link->state(), LinkState::Streaming);
         QCOMPARE(stateList(stateSpy), states({LinkState::Connecting, LinkState::Streaming, LinkState::Stale,
@@ -283,7 +290,14 @@ private slots:
         m_link->open(create2());
         const QByteArray startAndStream = bytes({128, 148, 1, 100});
         // Re-armed after 1 s, then 2 s: three copies in all.
-        QTRY_COMPARE_WITH_TIMEOUT(current()->written().count(startAndStream), 3, 10000);
+        m_clock.advance(999);
+        QCOMPARE(current()->written().count(startAndStream), 1);
+        m_clock.advance(1);
+        QCOMPARE(current()->written().count(startAndStream), 2);
+        m_clock.advance(1999);
+        QCOMPARE(current()->written().count(startAndStream), 2);
+        m_clock.advance(1);
+        QCOMPARE(current()->written().count(startAndStream), 3);
         QCOMPARE(errors.size(), 1);
         QCOMPARE(errors.at(0).at(0).toString(),
                  QStringLiteral("/dev/recording: no data: is the robot on, and is the baud right? "
@@ -302,7 +316,8 @@ private slots:
         current()->inject(group100Frame().left(40)); // cut off by the loss
         current()->vanish();
         QCOMPARE(m_link->state(), LinkState::Reconnecting);
-        QTRY_COMPARE_WITH_TIMEOUT(m_transports.size(), 2, 5000);
+        m_clock.advance(RobotLink::kFirstBackoffMs);
+        QCOMPARE(m_transports.size(), 2);
         QCOMPARE(current()->written(), bytes({128, 148, 1, 100}));
         current()->inject(group100Frame());
         QCOMPARE(m_link->state(), LinkState::Streaming);
@@ -321,9 +336,17 @@ private slots:
         QSignalSpy errors(m_link, &RobotLink::errorOccurred);
         m_link->open(create2());
         QCOMPARE(m_link->state(), LinkState::Reconnecting);
-        // Backoff 100, 200, 400, 800, 1600 ms, then the sixth try opens.
-        QTRY_COMPARE_WITH_TIMEOUT(m_transports.size(), 6, 10000);
-        QTRY_COMPARE_WITH_TIMEOUT(current()->written(), bytes({128, 148, 1, 100}), 5000);
+        // Backoff 100, 200, 400, 800, 1600 ms, then the sixth try opens:
+        // each try comes when its wait is over, not a millisecond before.
+        for (const int waitMs : {100, 200, 400, 800, 1600}) {
+            const qsizetype tries = m_transports.size();
+            m_clock.advance(waitMs - 1);
+            QCOMPARE(m_transports.size(), tries);
+            m_clock.advance(1);
+            QCOMPARE(m_transports.size(), tries + 1);
+        }
+        QCOMPARE(m_transports.size(), 6);
+        QCOMPARE(current()->written(), bytes({128, 148, 1, 100}));
         QCOMPARE(errors.size(), 1);
         QCOMPARE(errors.at(0).at(0).toString(), QStringLiteral("/dev/recording: no such port"));
         current()->inject(group100Frame());
@@ -334,16 +357,19 @@ private slots:
     {
         m_failures = QStringList(50, QStringLiteral("/dev/recording: no such port"));
         m_link->open(create2());
-        QTRY_VERIFY_WITH_TIMEOUT(m_transports.size() >= 2, 5000);
+        m_clock.advance(RobotLink::kFirstBackoffMs);
+        QCOMPARE(m_transports.size(), 2);
         m_link->close();
         QCOMPARE(m_link->state(), LinkState::Closed);
         const qsizetype tries = m_transports.size();
         // Nothing is left to try again: every timer of the link has stopped,
         // the reconnect timer among them.
-        const QList<QTimer *> timers = m_link->findChildren<QTimer *>(Qt::FindDirectChildrenOnly);
+        const QList<oilink::ClockTimer *> timers = m_link->findChildren<oilink::ClockTimer *>(Qt::FindDirectChildrenOnly);
         QVERIFY(!timers.isEmpty());
-        for (const QTimer *timer : timers)
+        for (const oilink::ClockTimer *timer : timers)
             QVERIFY2(!timer->isActive(), qPrintable(QString::number(timer->interval())));
+        QCOMPARE(m_clock.msToNextDeadline(), -1);
+        m_clock.advance(RobotLink::kMaxBackoffMs);
         QCoreApplication::processEvents();
         QCOMPARE(m_transports.size(), tries);
     }
@@ -359,7 +385,10 @@ private slots:
         m_link->querySensors({7});
         QCOMPARE(t->written(), bytes({150, 0}));
         t->inject(group100Frame()); // a frame still on its way when the pause went out
-        QTRY_COMPARE_WITH_TIMEOUT(t->written(), bytes({150, 0, 142, 7}), 5000);
+        m_clock.advance(49); // the stream has not yet drained: 50 ms of quiet
+        QCOMPARE(t->written(), bytes({150, 0}));
+        m_clock.advance(1);
+        QCOMPARE(t->written(), bytes({150, 0, 142, 7}));
         t->inject(bytes({0x02}));
         QCOMPARE(replies.size(), 1);
         QVERIFY(replies.at(0).at(0).value<oi::SensorSnapshot>().bumpLeft());
@@ -368,7 +397,8 @@ private slots:
 
         t->clearWritten();
         m_link->querySensors({7, 22});
-        QTRY_COMPARE_WITH_TIMEOUT(t->written(), bytes({150, 0, 149, 2, 7, 22}), 5000);
+        m_clock.advance(50);
+        QCOMPARE(t->written(), bytes({150, 0, 149, 2, 7, 22}));
         t->inject(bytes({0x01, 0x3E}));
         t->inject(bytes({0x80}));
         QCOMPARE(replies.size(), 2);
@@ -385,7 +415,12 @@ private slots:
         current()->inject(group100Frame());
         current()->clearWritten();
         m_link->querySensors({35});
-        QTRY_COMPARE_WITH_TIMEOUT(errors.size(), 1, 5000);
+        m_clock.advance(50);
+        QCOMPARE(current()->written(), bytes({150, 0, 142, 35}));
+        m_clock.advance(499);
+        QCOMPARE(errors.size(), 0);
+        m_clock.advance(1);
+        QCOMPARE(errors.size(), 1);
         QCOMPARE(errors.at(0).at(0).toString(), QStringLiteral("/dev/recording: no reply to the sensor query"));
         QCOMPARE(current()->written(), bytes({150, 0, 142, 35, 150, 1}));
         current()->inject(group100Frame());
@@ -410,14 +445,16 @@ private slots:
 
         m_link->querySensors({7});
         QCOMPARE(t->written(), bytes({150, 0}));
-        QTRY_COMPARE_WITH_TIMEOUT(t->written(), bytes({150, 0, 142, 7}), 5000);
+        m_clock.advance(50);
+        QCOMPARE(t->written(), bytes({150, 0, 142, 7}));
         t->inject(bytes({0x01}));
         QCOMPARE(replies.size(), 1);
         QVERIFY(replies.at(0).at(0).value<oi::SensorSnapshot>().bumpRight());
         QCOMPARE(t->written(), bytes({150, 0, 142, 7})); // not resumed
 
         m_link->querySensors({35});
-        QTRY_COMPARE_WITH_TIMEOUT(failed.size(), 1, 5000);
+        m_clock.advance(550);
+        QCOMPARE(failed.size(), 1);
         QCOMPARE(failed.at(0).at(0).toString(), QStringLiteral("/dev/recording: no reply to the sensor query"));
 
         t->clearWritten();

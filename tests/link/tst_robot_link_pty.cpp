@@ -3,6 +3,7 @@
 // executable: noise on the line, stalls, the robot going away and coming
 // back, and the bytes a close leaves on the line.
 #include "link_test_support.h"
+#include "manual_clock.h"
 #include "sim_process.h"
 
 #include "profile_probe.h"
@@ -272,16 +273,28 @@ private slots:
         QVERIFY(s.bytesDiscarded >= s.checksumFailures);
     }
 
+    // The link's clock is the test's: it moves while the robot is stopped,
+    // and the link, hearing nothing more, calls the data stale.
     void staleWhileTheRobotIsStopped()
     {
         SimProcess sim;
         QVERIFY(sim.start({}));
+        ManualClock clock;
         RobotLinkThread link;
+        link.setClock(clock);
         Recorder r(link);
         link.open(create2At(sim.where()));
-        QTRY_COMPARE_WITH_TIMEOUT(link.state(), LinkState::Streaming, kTimeoutMs);
+        // Through the wake pulse and the robot's time to wake, 10 ms a step.
+        QVERIFY(QTest::qWaitFor([&] {
+            clock.advance(10);
+            return link.state() == LinkState::Streaming;
+        }, kTimeoutMs));
         sim.signal(SIGSTOP);
-        QTRY_COMPARE_WITH_TIMEOUT(link.state(), LinkState::Stale, kTimeoutMs);
+        // A frame still on its way restarts the watchdog: move on until none comes.
+        QVERIFY(QTest::qWaitFor([&] {
+            clock.advance(oilink::RobotLink::kStaleAfterMs);
+            return link.state() == LinkState::Stale;
+        }, kTimeoutMs));
         sim.signal(SIGCONT);
         QTRY_COMPARE_WITH_TIMEOUT(link.state(), LinkState::Streaming, kTimeoutMs);
         QCOMPARE(r.errors.size(), 0);
@@ -295,11 +308,20 @@ private slots:
         SimProcess first;
         QVERIFY(first.start({QStringLiteral("--link"), path}));
         std::atomic<int> attempts{0};
+        ManualClock clock;
         RobotLinkThread link;
+        link.setClock(clock);
         link.setTransportFactory(countedTransports(attempts));
         Recorder r(link);
         link.open(create2At(path));
-        QTRY_COMPARE_WITH_TIMEOUT(link.state(), LinkState::Streaming, kTimeoutMs);
+        // The link's time moves 10 ms a step: through the wake, and later the backoff.
+        const auto untilMoving = [&](auto done, int stepMs = 10) {
+            return QTest::qWaitFor([&] {
+                clock.advance(stepMs);
+                return done();
+            }, kTimeoutMs);
+        };
+        QVERIFY(untilMoving([&] { return link.state() == LinkState::Streaming; }));
 
         // Ended as a user ends it, so it removes its link: a link left
         // dangling would point at whichever program gets the same
@@ -307,15 +329,15 @@ private slots:
         first.stop();
         QTRY_COMPARE_WITH_TIMEOUT(link.state(), LinkState::Reconnecting, kTimeoutMs);
         QVERIFY(r.sawState(LinkState::Lost));
-        // Several attempts fail while nothing is there.
+        // Several attempts fail while nothing is there, one per backoff.
         const int lost = attempts;
-        QTRY_VERIFY_WITH_TIMEOUT(attempts >= lost + 3, kTimeoutMs);
+        QVERIFY(untilMoving([&] { return attempts >= lost + 3; }, oilink::RobotLink::kMaxBackoffMs));
         QCOMPARE(link.state(), LinkState::Reconnecting);
 
         SimProcess second;
         QVERIFY(second.start({QStringLiteral("--link"), path}));
         const qsizetype before = r.snapshots.size();
-        QTRY_COMPARE_WITH_TIMEOUT(link.state(), LinkState::Streaming, kTimeoutMs);
+        QVERIFY(untilMoving([&] { return link.state() == LinkState::Streaming; }));
         QTRY_VERIFY_WITH_TIMEOUT(r.snapshots.size() > before + 5, kTimeoutMs);
         link.closeAndWait();
         QCOMPARE(link.lastStatistics().reconnects, quint32(1));
@@ -375,15 +397,21 @@ private slots:
     void missingPortIsOneMessage()
     {
         std::atomic<int> attempts{0};
+        ManualClock clock;
         RobotLinkThread link;
+        link.setClock(clock);
         link.setTransportFactory(countedTransports(attempts));
         Recorder r(link);
         link.open(create2At(QStringLiteral("/dev/roomba-dashboard-no-such-port")));
         QTRY_COMPARE_WITH_TIMEOUT(r.errors.size(), 1, kTimeoutMs);
         QCOMPARE(r.errors.at(0).at(0).toString(), QStringLiteral("/dev/roomba-dashboard-no-such-port: no such port"));
-        // Several more attempts; each one's error was sent before the next
-        // attempt began, so it has reached this thread once events are taken.
-        QTRY_VERIFY_WITH_TIMEOUT(attempts >= 5, kTimeoutMs);
+        // Several more attempts as the backoff's time passes; each one's error
+        // was sent before the next attempt began, so it has reached this
+        // thread once events are taken.
+        QVERIFY(QTest::qWaitFor([&] {
+            clock.advance(oilink::RobotLink::kMaxBackoffMs);
+            return attempts >= 5;
+        }, kTimeoutMs));
         QCoreApplication::processEvents();
         QCOMPARE(r.errors.size(), 1);
         QCOMPARE(link.state(), LinkState::Reconnecting);

@@ -7,6 +7,7 @@
 #include "sim_process.h"
 
 #include "command_encoder.h"
+#include "song.h"
 #include "robot_link_thread.h"
 
 #include <QFile>
@@ -154,6 +155,39 @@ QString implausible(const oi::SensorSnapshot &s)
 QByteArray toBytes(const oi::EncodeResult &command)
 {
     return QByteArray(reinterpret_cast<const char *>(command->data()), qsizetype(command->size()));
+}
+
+// The robot's answer to a question, read from `socket` into `reply`: the
+// stream frames that come before it are skipped and counted (an answer
+// never starts with 19: the questions here ask for a mode or a flag).
+// Returns the frames, or -1 when the bytes are no frame, or nothing came.
+int framesBeforeAnswer(QTcpSocket &socket, QByteArray &pending, qsizetype answerSize, QByteArray &reply)
+{
+    const QDeadlineTimer deadline(kTimeoutMs);
+    const auto have = [&](qsizetype n) {
+        while (pending.size() < n && socket.state() == QAbstractSocket::ConnectedState && !deadline.hasExpired())
+            if (socket.waitForReadyRead(100))
+                pending += socket.readAll();
+        return pending.size() >= n;
+    };
+    int frames = 0;
+    while (have(1) && std::uint8_t(pending.front()) == 19) {
+        if (!have(2) || !have(std::uint8_t(pending.at(1)) + 3))
+            return -1;
+        const qsizetype size = std::uint8_t(pending.at(1)) + 3;
+        unsigned sum = 0;
+        for (qsizetype i = 0; i < size; ++i)
+            sum += std::uint8_t(pending.at(i));
+        if (sum % 256 != 0)
+            return -1;
+        pending.remove(0, size);
+        ++frames;
+    }
+    if (!have(answerSize))
+        return -1;
+    reply = pending.left(answerSize);
+    pending.remove(0, answerSize);
+    return frames;
 }
 
 } // namespace
@@ -307,41 +341,51 @@ void TestSer2net::closeLeavesTheRobotPassive()
     QCOMPARE(m_link->lastStatistics().checksumFailures, quint64(0));
 
     // Ask the robot itself over a connection of our own: Query List of the
-    // OI mode (35) and the requested velocity (39), three bytes back.
-    // ser2net serves one client at a time, and on a busy machine it may not
-    // yet have seen the link's connection end: it then hangs up on ours, so
-    // connect again until it keeps ours open.
+    // OI mode (35) and the requested velocity (39), three bytes back. Frames
+    // already on their way when the close paused the stream come before
+    // the answer. ser2net serves one client at a time, and on a busy machine
+    // it may not yet have seen the link's connection end: it then hangs up
+    // on ours, so connect again until it keeps ours open.
     QTcpSocket socket;
-    bool quiet = false;
+    QByteArray pending;
+    QByteArray reply;
+    int framesOnTheirWay = -1;
     const QDeadlineTimer servedBy(kTimeoutMs);
+    const std::array<int, 2> ids{35, 39};
     while (!servedBy.hasExpired()) {
         socket.abort();
+        pending.clear();
         socket.connectToHost(QHostAddress::LocalHost, m_port);
         QVERIFY2(socket.waitForConnected(kTimeoutMs), qPrintable(socket.errorString()));
-        // The close paused the stream, but frames already on their way may
-        // still come; a robot that never goes quiet was not told to stop.
-        const QDeadlineTimer quietBy(3000);
-        quiet = false;
-        while (!quiet && !quietBy.hasExpired() && socket.state() == QAbstractSocket::ConnectedState) {
-            quiet = !socket.waitForReadyRead(300);
-            socket.readAll();
-        }
+        socket.write(toBytes(m_encoder.queryList(ids)));
+        framesOnTheirWay = framesBeforeAnswer(socket, pending, 3, reply);
         if (socket.state() == QAbstractSocket::ConnectedState)
             break;
     }
     QCOMPARE(socket.state(), QAbstractSocket::ConnectedState);
-    QVERIFY2(quiet, "the robot still streams after the close");
-    const std::array<int, 2> ids{35, 39};
-    socket.write(toBytes(m_encoder.queryList(ids)));
-    QByteArray reply;
-    const QDeadlineTimer deadline(kTimeoutMs);
-    while (reply.size() < 3 && !deadline.hasExpired()) {
-        if (socket.waitForReadyRead(100))
-            reply += socket.readAll();
-    }
-    QCOMPARE(reply.size(), 3);
+    QVERIFY2(framesOnTheirWay >= 0, pending.toHex(' ').constData());
     QCOMPARE(int(reply.at(0)), int(oi::OiMode::Passive));
     QCOMPARE(reply.mid(1), QByteArray(2, '\0'));
+
+    // The stream is off: while the robot plays a song of a quarter of a
+    // second by its own clock (about 17 stream periods), asked again and
+    // again whether it still plays (packet 37), it answers with no frame
+    // before any answer. Play needs Safe mode.
+    oi::Song quarterSecond;
+    quarterSecond.notes = {{72, 16}};
+    socket.write(toBytes(m_encoder.safe()) + toBytes(m_encoder.song(0, quarterSecond)) + toBytes(m_encoder.play(0)));
+    int answers = 0;
+    bool played = false;
+    const QDeadlineTimer songBy(kTimeoutMs);
+    do {
+        QVERIFY2(!songBy.hasExpired(), played ? "the song never ended" : "the song never played");
+        socket.write(toBytes(m_encoder.sensors(37)));
+        QCOMPARE(framesBeforeAnswer(socket, pending, 1, reply), 0);
+        ++answers;
+        played = played || reply.at(0) == 1;
+    } while (!played || reply.at(0) == 1);
+    QVERIFY2(answers >= 2, qPrintable(QString::number(answers)));
+    socket.write(toBytes(m_encoder.start())); // back to Passive
 }
 
 // Each step builds on the one before: after a failure, the rest fail at once

@@ -1,0 +1,53 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include "command_encoder.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <string_view>
+#include <vector>
+
+namespace oi {
+
+// One command as the document states it: which command, and its field values.
+struct OiCommand {
+    Command command = Command::Start;
+    // The fixed fields, in the document's byte order, one per name in
+    // commandFieldNames(command): unsigned bytes 0..255, signed bytes
+    // -128..127, 16-bit words as signed values (-32768..32767) except where
+    // the document gives them unsigned.
+    std::vector<int> fields;
+    // The variable part, where there is one: Song's note/duration bytes
+    // (after slot and length), Stream's and Query List's packet ids (after
+    // the count), Script's body (after the length). Empty otherwise.
+    Bytes data;
+    friend bool operator==(const OiCommand &, const OiCommand &) = default;
+};
+
+// The names of a command's fixed fields, kebab-case, for messages and
+// errors: {"velocity", "radius"} for Drive.
+std::span<const std::string_view> commandFieldNames(Command command);
+
+// The bytes of a typed command, checked exactly as the CommandEncoder's
+// typed methods check them (ranges, profile support): an error names the field.
+EncodeResult encodeCommand(const CommandEncoder &encoder, const OiCommand &command);
+
+// The first command in `bytes` on a profile.
+struct CommandDecode {
+    enum class Status { Command, NeedMore, Error } status = Status::NeedMore;
+    OiCommand command;     // when Command
+    std::size_t length = 0; // bytes the command took (Command), or where the error is (Error)
+    OiError error;         // when Error: names the field, or says where a truncated command ends
+    // Also set for NeedMore: `length` is then the bytes the command needs so
+    // far (it may grow once a count byte arrives) and `error` says what is
+    // missing, for a caller that has no more bytes to give.
+};
+CommandDecode decodeCommand(const RobotProfile &profile, std::span<const std::uint8_t> bytes);
+
+// A whole byte sequence as commands; a truncated or bad command is an error
+// that names the field and the byte offset.
+Result<std::vector<OiCommand>> decodeCommands(const RobotProfile &profile, std::span<const std::uint8_t> bytes);
+
+} // namespace oi

@@ -46,6 +46,20 @@ struct CommandDecode {
 };
 CommandDecode decodeCommand(const RobotProfile &profile, std::span<const std::uint8_t> bytes);
 
+// The first command in `bytes` as a robot reads it: by its layout on the
+// profile, without the encoder's range checks, so a value out of range
+// (which a robot clamps or ignores) never loses the place in the bytes.
+// Error only for an opcode the profile lacks.
+CommandDecode readCommand(const RobotProfile &profile, std::span<const std::uint8_t> bytes);
+
+// Whether the command has a variable part (Song, Stream, Query List, Script).
+bool hasVariablePart(Command command);
+// Bytes the command takes before its variable part: the opcode, the fixed
+// fields and the count byte. Its whole length where it has no variable part.
+std::size_t commandHeaderLength(Command command);
+// The most bytes any one command takes: a Song whose length byte says 255.
+inline constexpr std::size_t kLongestCommandBytes = 3 + 2 * 255;
+
 // A whole byte sequence as commands; a truncated or bad command is an error
 // that names the field and the byte offset.
 Result<std::vector<OiCommand>> decodeCommands(const RobotProfile &profile, std::span<const std::uint8_t> bytes);

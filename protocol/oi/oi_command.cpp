@@ -52,7 +52,7 @@ std::string kebab(std::string_view text)
 }
 
 // The offset, in one command's bytes, of the field an encoder error names;
-// 0 (the opcode) where it names none of them.
+// the first data byte where it names none of them (0 is the opcode's).
 std::size_t fieldOffset(const CommandSpec &spec, const std::string &field)
 {
     const std::string name = kebab(field);
@@ -63,7 +63,7 @@ std::size_t fieldOffset(const CommandSpec &spec, const std::string &field)
         at += fieldBytes(fieldKind(spec, i));
     }
     if (!isVariable(spec))
-        return 0;
+        return 1;
     const std::size_t count = countOffset(spec.command);
     if (name == "song-length" || name == "number-of-packets" || name == "script-length")
         return count;
@@ -80,6 +80,7 @@ CommandDecode needMore(const CommandSpec &spec, std::size_t need, std::size_t ha
 {
     CommandDecode out;
     out.status = CommandDecode::Status::NeedMore;
+    out.command.command = spec.command;
     out.length = need;
     const std::string title(spec.title);
     if (isVariable(spec) && have < countOffset(spec.command) + 1) {
@@ -246,8 +247,11 @@ CommandDecode decodeCommand(const RobotProfile &profile, std::span<const std::ui
     if (d.status != CommandDecode::Status::Command)
         return d;
     // The encoder's checks, so that bytes and typed calls are held to one rule.
-    if (const EncodeResult checked = encodeCommand(CommandEncoder(profile), d.command); !checked)
-        return failed(fieldOffset(commandSpec(d.command.command), checked.error().field), checked.error());
+    if (const EncodeResult checked = encodeCommand(CommandEncoder(profile), d.command); !checked) {
+        CommandDecode out = failed(fieldOffset(commandSpec(d.command.command), checked.error().field), checked.error());
+        out.command = std::move(d.command);
+        return out;
+    }
     return d;
 }
 

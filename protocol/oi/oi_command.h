@@ -40,9 +40,13 @@ struct CommandDecode {
     OiCommand command;     // when Command
     std::size_t length = 0; // bytes the command took (Command), or where the error is (Error)
     OiError error;         // when Error: names the field, or says where a truncated command ends
-    // Also set for NeedMore: `length` is then the bytes the command needs so
-    // far (it may grow once a count byte arrives) and `error` says what is
-    // missing, for a caller that has no more bytes to give.
+    // Added to the agreed shape: for NeedMore, `length` is the bytes the
+    // command needs so far (it may grow once a count byte arrives) and
+    // `error` says what is missing, for a caller with no more bytes to give.
+    // Once the opcode is known (NeedMore, or Error at a field, where `length`
+    // is at least 1), `command.command` says which command it is and, for
+    // an Error, `command` holds the values read. An Error at length 0 is an
+    // opcode the profile lacks.
 };
 CommandDecode decodeCommand(const RobotProfile &profile, std::span<const std::uint8_t> bytes);
 

@@ -241,6 +241,19 @@ CommandDecode readCommand(const RobotProfile &profile, std::span<const std::uint
     return out;
 }
 
+std::vector<OiCommand> readCommands(const RobotProfile &profile, std::span<const std::uint8_t> bytes)
+{
+    std::vector<OiCommand> commands;
+    for (std::size_t at = 0; at < bytes.size();) {
+        CommandDecode d = readCommand(profile, bytes.subspan(at));
+        if (d.status != CommandDecode::Status::Command)
+            break;
+        commands.push_back(std::move(d.command));
+        at += d.length;
+    }
+    return commands;
+}
+
 CommandDecode decodeCommand(const RobotProfile &profile, std::span<const std::uint8_t> bytes)
 {
     CommandDecode d = readCommand(profile, bytes);

@@ -56,6 +56,10 @@ CommandDecode decodeCommand(const RobotProfile &profile, std::span<const std::ui
 // Error only for an opcode the profile lacks.
 CommandDecode readCommand(const RobotProfile &profile, std::span<const std::uint8_t> bytes);
 
+// The commands at the start of `bytes` as a robot reads them (readCommand),
+// up to the first it cannot read whole.
+std::vector<OiCommand> readCommands(const RobotProfile &profile, std::span<const std::uint8_t> bytes);
+
 // Whether the command has a variable part (Song, Stream, Query List, Script).
 bool hasVariablePart(Command command);
 // Bytes the command takes before its variable part: the opcode, the fixed

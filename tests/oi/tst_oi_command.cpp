@@ -97,6 +97,7 @@ private slots:
     void truncated_data();
     void truncated();
     void documentScript();
+    void readAsTheRobotReads();
     void typedErrors();
 };
 
@@ -319,6 +320,20 @@ void TestOiCommand::documentScript()
     QVERIFY((*body)[1] == (OiCommand{Command::WaitDistance, {400}, {}}));
     QVERIFY((*body)[2] == (OiCommand{Command::Drive, {0, 0}, {}}));
     QVERIFY(decodeCommands(profile(ProfileId::Create1), {}).ok());
+}
+
+// readCommands takes values as they come and stops where a command is cut
+// short or unknown.
+void TestOiCommand::readAsTheRobotReads()
+{
+    const RobotProfile &create2 = profile(ProfileId::Create2);
+    const auto read = readCommands(create2, bytesFrom("128 137 3 232 0 0 129 11 137 0"));
+    QCOMPARE(read.size(), std::size_t(3));
+    QVERIFY(read[0] == (OiCommand{Command::Start, {}, {}}));
+    QVERIFY(read[1] == (OiCommand{Command::Drive, {1000, 0}, {}})); // decodeCommand refuses this one
+    QVERIFY(read[2] == (OiCommand{Command::Baud, {11}, {}}));
+    QCOMPARE(readCommands(create2, bytesFrom("131 153 128")).size(), std::size_t(1));
+    QVERIFY(readCommands(create2, {}).empty());
 }
 
 // A typed command is held to the typed encoder's rules, naming the field.

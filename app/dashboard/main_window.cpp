@@ -208,7 +208,7 @@ void MainWindow::wireInputs()
     connect(m_inspector, &ByteInspector::sendRequested, this, sendTyped);
     connect(m_modePanel, &ModePanel::sendRequested, this, send);
     connect(m_songs, &SongComposer::sendRequested, this, send);
-    connect(m_leds, &LedEditor::sendRequested, this, send);
+    connect(m_leds, &LedEditor::sendRequested, this, sendTyped);
     connect(m_schedule, &ScheduleEditor::sendRequested, this, sendTyped);
     connect(m_script, &ScriptEditor::sendRequested, this, send);
     connect(m_motors, &MotorsPanel::sendRequested, this, sendTyped);

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "command_catalog.h"
 
+#include "oi_command.h"
 #include "script_assembler.h"
 #include "seven_segment_font.h"
 
@@ -12,11 +13,41 @@ namespace {
 
 using C = Command;
 
+// The fixed fields of each typed command, in byte order.
+constexpr std::string_view kBaudFields[] = {"baud-code"};
+constexpr std::string_view kDemoFields[] = {"demo"};
+constexpr std::string_view kDriveFields[] = {"velocity", "radius"};
+constexpr std::string_view kMotorsFields[] = {"motor-bits"};
+constexpr std::string_view kLowSideDriversFields[] = {"driver-bits"};
+constexpr std::string_view kLedsFields[] = {"led-bits", "power-led-colour", "power-led-intensity"};
+constexpr std::string_view kSongNumberFields[] = {"song-number"};
+constexpr std::string_view kSensorsFields[] = {"packet-id"};
+constexpr std::string_view kPwmMotorsFields[] = {"main-brush-pwm", "side-brush-pwm", "vacuum-pwm"};
+constexpr std::string_view kPwmLowSideDriversFields[] = {
+    "low-side-driver-2-duty-cycle", "low-side-driver-1-duty-cycle", "low-side-driver-0-duty-cycle"};
+constexpr std::string_view kDriveDirectFields[] = {"right-velocity", "left-velocity"};
+constexpr std::string_view kDrivePwmFields[] = {"right-pwm", "left-pwm"};
+constexpr std::string_view kDigitalOutputsFields[] = {"output-bits"};
+constexpr std::string_view kPauseResumeStreamFields[] = {"stream-state"};
+constexpr std::string_view kSendIrFields[] = {"ir-byte"};
+constexpr std::string_view kWaitTimeFields[] = {"time"};
+constexpr std::string_view kWaitDistanceFields[] = {"distance"};
+constexpr std::string_view kWaitAngleFields[] = {"angle"};
+constexpr std::string_view kWaitEventFields[] = {"event"};
+constexpr std::string_view kSchedulingLedsFields[] = {"weekday-led-bits", "scheduling-led-bits"};
+constexpr std::string_view kDigitFields[] = {"digit-3", "digit-2", "digit-1", "digit-0"};
+constexpr std::string_view kButtonsFields[] = {"button-bits"};
+constexpr std::string_view kScheduleFields[] = {
+    "days",          "sunday-hour",    "sunday-minute",    "monday-hour",   "monday-minute",
+    "tuesday-hour",  "tuesday-minute", "wednesday-hour",   "wednesday-minute", "thursday-hour",
+    "thursday-minute", "friday-hour",  "friday-minute",    "saturday-hour", "saturday-minute"};
+constexpr std::string_view kSetDayTimeFields[] = {"day", "hour", "minute"};
+
 // In the order of the Command enum, so commandSpec() can index it.
 constexpr CommandSpec kSpecs[] = {
     {C::Reset, 7, "reset", "Reset", "", ""},
     {C::Start, 128, "start", "Start", "", ""},
-    {C::Baud, 129, "baud", "Baud", "b", "CODE (0..11) | BPS"},
+    {C::Baud, 129, "baud", "Baud", "b", "CODE (0..11) | BPS", kBaudFields},
     {C::Control, 130, "control", "Control", "", ""},
     {C::Safe, 131, "safe", "Safe", "", ""},
     {C::Full, 132, "full", "Full", "", ""},
@@ -25,42 +56,42 @@ constexpr CommandSpec kSpecs[] = {
     {C::Clean, 135, "clean", "Clean", "", ""},
     {C::Cover, 135, "cover", "Cover", "", ""},
     {C::Max, 136, "max", "Max", "", ""},
-    {C::Demo, 136, "demo", "Demo", "c", "DEMO (-1..9)"},
-    {C::Drive, 137, "drive", "Drive", "ww", "VELOCITY RADIUS|straight|cw|ccw"},
-    {C::Motors, 138, "motors", "Motors", "b", "MOTOR-BITS"},
-    {C::LowSideDrivers, 138, "low-side-drivers", "Low Side Drivers", "b", "DRIVER-BITS"},
-    {C::Leds, 139, "leds", "LEDs", "bbb", "LED-BITS POWER-COLOR POWER-INTENSITY"},
-    {C::Song, 140, "song", "Song", "*", "SLOT NOTE:DURATION... | SLOT LENGTH NOTE DURATION..."},
-    {C::Play, 141, "play", "Play", "b", "SLOT"},
-    {C::Sensors, 142, "sensors", "Sensors", "b", "PACKET-ID"},
+    {C::Demo, 136, "demo", "Demo", "c", "DEMO (-1..9)", kDemoFields},
+    {C::Drive, 137, "drive", "Drive", "ww", "VELOCITY RADIUS|straight|cw|ccw", kDriveFields},
+    {C::Motors, 138, "motors", "Motors", "b", "MOTOR-BITS", kMotorsFields},
+    {C::LowSideDrivers, 138, "low-side-drivers", "Low Side Drivers", "b", "DRIVER-BITS", kLowSideDriversFields},
+    {C::Leds, 139, "leds", "LEDs", "bbb", "LED-BITS POWER-COLOR POWER-INTENSITY", kLedsFields},
+    {C::Song, 140, "song", "Song", "*", "SLOT NOTE:DURATION... | SLOT LENGTH NOTE DURATION...", kSongNumberFields},
+    {C::Play, 141, "play", "Play", "b", "SLOT", kSongNumberFields},
+    {C::Sensors, 142, "sensors", "Sensors", "b", "PACKET-ID", kSensorsFields},
     {C::SeekDock, 143, "seek-dock", "Seek Dock", "", ""},
     {C::CoverAndDock, 143, "cover-and-dock", "Cover and Dock", "", ""},
-    {C::PwmMotors, 144, "pwm-motors", "PWM Motors", "ccb", "MAIN-BRUSH SIDE-BRUSH VACUUM"},
+    {C::PwmMotors, 144, "pwm-motors", "PWM Motors", "ccb", "MAIN-BRUSH SIDE-BRUSH VACUUM", kPwmMotorsFields},
     {C::PwmLowSideDrivers, 144, "pwm-low-side-drivers", "PWM Low Side Drivers", "bbb",
-     "DRIVER-2 DRIVER-1 DRIVER-0"},
-    {C::DriveDirect, 145, "drive-direct", "Drive Direct", "ww", "RIGHT-VELOCITY LEFT-VELOCITY"},
-    {C::DrivePwm, 146, "drive-pwm", "Drive PWM", "ww", "RIGHT-PWM LEFT-PWM"},
-    {C::DigitalOutputs, 147, "digital-outputs", "Digital Outputs", "b", "OUTPUT-BITS"},
+     "DRIVER-2 DRIVER-1 DRIVER-0", kPwmLowSideDriversFields},
+    {C::DriveDirect, 145, "drive-direct", "Drive Direct", "ww", "RIGHT-VELOCITY LEFT-VELOCITY", kDriveDirectFields},
+    {C::DrivePwm, 146, "drive-pwm", "Drive PWM", "ww", "RIGHT-PWM LEFT-PWM", kDrivePwmFields},
+    {C::DigitalOutputs, 147, "digital-outputs", "Digital Outputs", "b", "OUTPUT-BITS", kDigitalOutputsFields},
     {C::Stream, 148, "stream", "Stream", "*", "COUNT PACKET-ID..."},
     {C::QueryList, 149, "query-list", "Query List", "*", "COUNT PACKET-ID..."},
-    {C::PauseResumeStream, 150, "pause-resume-stream", "Pause/Resume Stream", "b", "0|1"},
-    {C::SendIr, 151, "send-ir", "Send IR", "b", "BYTE"},
+    {C::PauseResumeStream, 150, "pause-resume-stream", "Pause/Resume Stream", "b", "0|1", kPauseResumeStreamFields},
+    {C::SendIr, 151, "send-ir", "Send IR", "b", "BYTE", kSendIrFields},
     {C::Script, 152, "script", "Script", "*", "\"COMMAND ARGS; ...\" | LENGTH BYTE..."},
     {C::PlayScript, 153, "play-script", "Play Script", "", ""},
     {C::ShowScript, 154, "show-script", "Show Script", "", ""},
-    {C::WaitTime, 155, "wait-time", "Wait Time", "b", "TENTHS"},
-    {C::WaitDistance, 156, "wait-distance", "Wait Distance", "w", "MM"},
-    {C::WaitAngle, 157, "wait-angle", "Wait Angle", "w", "DEGREES"},
-    {C::WaitEvent, 158, "wait-event", "Wait Event", "c", "EVENT (1..22, -1..-22, or a name)"},
+    {C::WaitTime, 155, "wait-time", "Wait Time", "b", "TENTHS", kWaitTimeFields},
+    {C::WaitDistance, 156, "wait-distance", "Wait Distance", "w", "MM", kWaitDistanceFields},
+    {C::WaitAngle, 157, "wait-angle", "Wait Angle", "w", "DEGREES", kWaitAngleFields},
+    {C::WaitEvent, 158, "wait-event", "Wait Event", "c", "EVENT (1..22, -1..-22, or a name)", kWaitEventFields},
     {C::SchedulingLeds, 162, "scheduling-leds", "Scheduling LEDs", "bb",
-     "WEEKDAY-BITS SCHEDULING-BITS"},
-    {C::DigitLedsRaw, 163, "digit-leds-raw", "Digit LEDs Raw", "bbbb", "DIGIT-3 DIGIT-2 DIGIT-1 DIGIT-0"},
+     "WEEKDAY-BITS SCHEDULING-BITS", kSchedulingLedsFields},
+    {C::DigitLedsRaw, 163, "digit-leds-raw", "Digit LEDs Raw", "bbbb", "DIGIT-3 DIGIT-2 DIGIT-1 DIGIT-0", kDigitFields},
     {C::DigitLedsAscii, 164, "digit-leds-ascii", "Digit LEDs ASCII", "bbbb",
-     "TEXT | CODE-3 CODE-2 CODE-1 CODE-0"},
-    {C::Buttons, 165, "buttons", "Buttons", "b", "BUTTON-BITS"},
+     "TEXT | CODE-3 CODE-2 CODE-1 CODE-0", kDigitFields},
+    {C::Buttons, 165, "buttons", "Buttons", "b", "BUTTON-BITS", kButtonsFields},
     {C::Schedule, 167, "schedule", "Schedule", "bbbbbbbbbbbbbbb",
-     "off | \"DAY HH:MM, ...\" | DAYS SUN-HOUR SUN-MINUTE ... SAT-MINUTE"},
-    {C::SetDayTime, 168, "set-day-time", "Set Day/Time", "bbb", "DAY HOUR MINUTE | DAY HH:MM"},
+     "off | \"DAY HH:MM, ...\" | DAYS SUN-HOUR SUN-MINUTE ... SAT-MINUTE", kScheduleFields},
+    {C::SetDayTime, 168, "set-day-time", "Set Day/Time", "bbb", "DAY HOUR MINUTE | DAY HH:MM", kSetDayTimeFields},
     {C::Stop, 173, "stop", "Stop", "", ""},
 };
 static_assert(std::size(kSpecs) == kCommandCount);
@@ -352,55 +383,7 @@ EncodeResult encodeCommand(const CommandEncoder &e, std::string_view name,
     auto r = fixedNumbers(spec, a);
     if (!r)
         return r.error();
-    const std::vector<int> &v = *r;
-    switch (spec.command) {
-    case C::Reset: return e.reset();
-    case C::Start: return e.start();
-    case C::Baud: return e.baud(v[0]);
-    case C::Control: return e.control();
-    case C::Safe: return e.safe();
-    case C::Full: return e.full();
-    case C::Power: return e.power();
-    case C::Spot: return e.spot();
-    case C::Clean: return e.clean();
-    case C::Cover: return e.cover();
-    case C::Max: return e.max();
-    case C::Demo: return e.demo(v[0]);
-    case C::Drive: return e.drive(v[0], v[1]);
-    case C::Motors: return e.motors(v[0]);
-    case C::LowSideDrivers: return e.lowSideDrivers(v[0]);
-    case C::Leds: return e.leds(v[0], v[1], v[2]);
-    case C::Play: return e.play(v[0]);
-    case C::Sensors: return e.sensors(v[0]);
-    case C::SeekDock: return e.seekDock();
-    case C::CoverAndDock: return e.coverAndDock();
-    case C::PwmMotors: return e.pwmMotors(v[0], v[1], v[2]);
-    case C::PwmLowSideDrivers: return e.pwmLowSideDrivers(v[0], v[1], v[2]);
-    case C::DriveDirect: return e.driveDirect(v[0], v[1]);
-    case C::DrivePwm: return e.drivePwm(v[0], v[1]);
-    case C::DigitalOutputs: return e.digitalOutputs(v[0]);
-    case C::PauseResumeStream: return e.pauseResumeStream(v[0]);
-    case C::SendIr: return e.sendIr(v[0]);
-    case C::PlayScript: return e.playScript();
-    case C::ShowScript: return e.showScript();
-    case C::WaitTime: return e.waitTime(v[0]);
-    case C::WaitDistance: return e.waitDistance(v[0]);
-    case C::WaitAngle: return e.waitAngle(v[0]);
-    case C::WaitEvent: return e.waitEvent(v[0]);
-    case C::SchedulingLeds: return e.schedulingLeds(v[0], v[1]);
-    case C::DigitLedsRaw: return e.digitLedsRaw(v[0], v[1], v[2], v[3]);
-    case C::DigitLedsAscii: return e.digitLedsAscii(v[0], v[1], v[2], v[3]);
-    case C::Buttons: return e.buttons(v[0]);
-    case C::Stop: return e.stop();
-    case C::Song:
-    case C::Schedule:
-    case C::SetDayTime:
-    case C::Script:
-    case C::Stream:
-    case C::QueryList:
-        break; // handled above
-    }
-    return OiError::invalid(std::string(spec.name), "has no encoder");
+    return encodeCommand(e, OiCommand{spec.command, *r, {}});
 }
 
 } // namespace oi

@@ -21,6 +21,11 @@ struct CommandSpec {
     // query list, script).
     std::string_view layout;
     std::string_view usage; // argument names for help text
+    // The fixed fields of a typed command (OiCommand), in byte order,
+    // kebab-case of the names the encoder's errors use: {"velocity",
+    // "radius"}. Song has its song number here; its notes, like the ids of
+    // Stream and Query List and the body of Script, are the variable part.
+    std::span<const std::string_view> fields = {};
 };
 
 std::span<const CommandSpec> allCommandSpecs();

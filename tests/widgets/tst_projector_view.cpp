@@ -146,6 +146,8 @@ private slots:
         view.refresh(frame(oi::OiMode::Passive, true), false);
         QVERIFY(!view.enterSafeButton()->isVisible());
         QVERIFY(view.headerText().contains("NO LIVE DATA"));
+    }
+
     // On a 1280×720 projector the type is smaller, in proportion, so that the
     // step, the plot with its time axis and the readouts all fit; the hint
     // sits at the foot, clear of the header.

@@ -7,6 +7,7 @@
 #include "manual_clock.h"
 #include "projector_view.h"
 #include "recording_transport.h"
+#include "robot_mode.h"
 #include "plot_stack.h"
 #include "sensor_plots.h"
 #include "teleop_controller.h"
@@ -136,9 +137,16 @@ struct RobotOnTheBench : DriveTarget {
     oilink::LinkState linkState = oilink::LinkState::Streaming;
     QStringList sent;
 
-    explicit RobotOnTheBench(oi::OiMode mode = oi::OiMode::Safe) { frame.set(35, int(mode)); }
+    RobotMode robotMode;
+
+    explicit RobotOnTheBench(oi::OiMode mode = oi::OiMode::Safe)
+    {
+        frame.set(35, int(mode));
+        robotMode.observe(frame, QDateTime::currentDateTime());
+    }
     const oi::RobotProfile &robotProfile() const override { return oi::profile(oi::ProfileId::Create2); }
     const oi::SensorSnapshot &latest() const override { return frame; }
+    const RobotMode &mode() const override { return robotMode; }
     oilink::LinkState state() const override { return linkState; }
     bool send(const QByteArray &bytes) override
     {

@@ -2926,6 +2926,10 @@ GPL-3.0-or-later.</translation>
         <source>Robot not yet identified: a Roomba 500 or a Create 2? Until it is named, its wheel counts may read mirrored, so no path is drawn.</source>
         <translation>Roboter noch nicht bestimmt: ein Roomba 500 oder ein Create 2? Bis er benannt ist, können seine Radzähler gespiegelt gelesen werden, darum wird kein Weg gezeichnet.</translation>
     </message>
+    <message>
+        <source>comparison run</source>
+        <translation>Vergleichsfahrt</translation>
+    </message>
 </context>
 <context>
     <name>PacketName</name>
@@ -4734,6 +4738,10 @@ Gesendet: %2</translation>
     <message>
         <source>Not live: no fresh data</source>
         <translation>Nicht live: keine frischen Daten</translation>
+    </message>
+    <message>
+        <source>%1 (moved %2 s)</source>
+        <translation>%1 (um %2 s verschoben)</translation>
     </message>
 </context>
 <context>

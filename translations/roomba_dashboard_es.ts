@@ -2925,6 +2925,10 @@ GPL-3.0-or-later.</translation>
         <source>Robot not yet identified: a Roomba 500 or a Create 2? Until it is named, its wheel counts may read mirrored, so no path is drawn.</source>
         <translation>Robot aún sin identificar: ¿un Roomba 500 o un Create 2? Hasta que se indique, sus contadores de rueda pueden leerse al revés, así que no se dibuja ningún recorrido.</translation>
     </message>
+    <message>
+        <source>comparison run</source>
+        <translation>recorrido de comparación</translation>
+    </message>
 </context>
 <context>
     <name>PacketName</name>
@@ -4733,6 +4737,10 @@ Enviado: %2</translation>
     <message>
         <source>Not live: no fresh data</source>
         <translation>No en directo: sin datos nuevos</translation>
+    </message>
+    <message>
+        <source>%1 (moved %2 s)</source>
+        <translation>%1 (desplazado %2 s)</translation>
     </message>
 </context>
 <context>

@@ -301,6 +301,35 @@ private slots:
         }
     }
 
+    // A second run's path is drawn, in a style of its own, and named in the legend.
+    void drawsTheComparisonPath()
+    {
+        m_map->setViewCentreMm({0, 0});
+        m_map->setScale(0.2);
+        const qreal ratio = m_map->devicePixelRatioF();
+        // Off the grid lines: a straight run up the floor.
+        const double xMm = -503;
+        const QVector<QPointF> path{{xMm, -1000}, {xMm, 1000}};
+        auto inkAlongThePath = [&] {
+            const QImage image = m_map->grab().toImage();
+            int ink = 0;
+            for (double y = -900; y <= 900; y += 5)
+                ink += pixelAt(image, m_map->widgetPointFor({xMm, y}), ratio) != m_map->palette().color(QPalette::Base);
+            return ink;
+        };
+        const int before = inkAlongThePath();
+        QCOMPARE(m_map->legendLabels(), QStringList{"odometry"});
+        m_map->setComparisonPath(path, QStringLiteral("first try.oirec"));
+        QCOMPARE(m_map->comparisonPath(), path);
+        const int drawn = inkAlongThePath();
+        // Dash-dotted: most of the line is ink.
+        QVERIFY2(drawn - before > 361 / 2, qPrintable(QStringLiteral("%1 -> %2").arg(before).arg(drawn)));
+        QCOMPARE(m_map->legendLabels(), (QStringList{"odometry", "first try.oirec"}));
+        m_map->setComparisonPath({}, QString());
+        QCOMPARE(inkAlongThePath(), before);
+        QCOMPARE(m_map->legendLabels(), QStringList{"odometry"});
+    }
+
     // Touching the room: carry, turn and lift a robot; the map only asks.
     void touchingARobotAsksTheRoom()
     {

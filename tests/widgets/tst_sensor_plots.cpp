@@ -651,6 +651,108 @@ private slots:
         QCOMPARE(visibleTracers(plot), 0);
     }
 
+    void markersAreDrawnOnEveryPlot()
+    {
+        Scene scene({22});
+        SensorPlots &plots = scene.plots;
+        plots.addPlot({23});
+        plots.setWindowSeconds(10);
+        feed(scene.history, 0, 100); // 0 .. 9.9 s
+        plots.setPaused(true);
+        plots.setTimeRange(0, 10);
+        plots.setMarkers({{2.5, QStringLiteral("hit the table leg")}, {7.0, QString()}});
+        scene.refresh();
+        for (int i = 0; i < plots.plotCount(); ++i) {
+            QCustomPlot *plot = plots.plot(i);
+            QList<QCPItemLine *> lines;
+            QStringList labels;
+            for (int k = 0; k < plot->itemCount(); ++k) {
+                if (auto *line = qobject_cast<QCPItemLine *>(plot->item(k)))
+                    lines << line;
+                if (auto *text = qobject_cast<QCPItemText *>(plot->item(k)); text && text->visible())
+                    labels << text->text();
+            }
+            QCOMPARE(lines.size(), 2);
+            QCOMPARE(labels, QStringList{QStringLiteral("hit the table leg")});
+            // Vertical, at its time on the shared axis, across the data area.
+            const double x = plot->xAxis->coordToPixel(2.5);
+            QCOMPARE(lines[0]->start->pixelPosition().x(), x);
+            QCOMPARE(lines[0]->end->pixelPosition().x(), x);
+            QCOMPARE(lines[0]->start->pixelPosition().y(), double(plot->axisRect()->top()));
+            QCOMPARE(lines[0]->end->pixelPosition().y(), double(plot->axisRect()->top() + plot->axisRect()->height()));
+            // And it is painted there: a column of the line's colour where
+            // the background would be.
+            const QImage image = plot->grab().toImage();
+            const QColor background = image.pixelColor(int(plot->xAxis->coordToPixel(5.2)),
+                                                       plot->axisRect()->bottom() - 3);
+            int marked = 0;
+            for (int y = plot->axisRect()->top() + 30; y < plot->axisRect()->bottom() - 5; ++y)
+                marked += image.pixelColor(int(std::round(x)), y) != background ? 1 : 0;
+            QVERIFY2(marked > (plot->axisRect()->height() - 35) * 3 / 4, qPrintable(QString::number(marked)));
+        }
+        // A plot added later has them too; an empty list clears them.
+        const int added = plots.addPlot({8});
+        auto lineCount = [](QCustomPlot *plot) {
+            int n = 0;
+            for (int k = 0; k < plot->itemCount(); ++k)
+                n += qobject_cast<QCPItemLine *>(plot->item(k)) ? 1 : 0;
+            return n;
+        };
+        QCOMPARE(lineCount(plots.plot(added)), 2);
+        plots.setMarkers({});
+        for (int i = 0; i < plots.plotCount(); ++i)
+            QCOMPARE(lineCount(plots.plot(i)), 0);
+    }
+
+    void comparisonRunIsDrawnShiftedAndDashed()
+    {
+        Scene scene({22, 23});
+        SensorPlots &plots = scene.plots;
+        feed(scene.history, 0, 100); // 0 .. 9.9 s
+        SensorHistory other;
+        for (int k = 0; k < 100; ++k) {
+            SensorSnapshot s(oi::profile(ProfileId::Create2));
+            s.set(22, 15000 + k);
+            s.set(23, -2000);
+            QVERIFY(other.append(k / 10.0, s));
+        }
+        plots.setPaused(true);
+        plots.setTimeRange(0, 10);
+        plots.setComparison(&other, 1.5, QStringLiteral("second.oirec"), QStringLiteral("first.oirec"));
+        scene.refresh();
+        QCustomPlot *plot = plots.plot(0);
+        // One line per packet from each run; this run's lines come first.
+        QCOMPARE(plot->graphCount(), 4);
+        QCOMPARE(plot->graph(0)->pen().style(), Qt::SolidLine);
+        for (int g : {2, 3}) {
+            const QCPGraph *graph = plot->graph(g);
+            QCOMPARE(graph->pen().style(), Qt::CustomDashLine);
+            QCOMPARE(graph->pen().color().rgb(), plot->graph(g - 2)->pen().color().rgb());
+            QVERIFY(graph->pen().color().alpha() < 255);
+        }
+        // The other run's voltage, 1.5 s later: its first sample at 1.5 s.
+        auto voltage = plot->graph(2)->data();
+        QVERIFY(!voltage->isEmpty());
+        QCOMPARE(voltage->constBegin()->key, 1.5);
+        QCOMPARE(voltage->constBegin()->value, 15000.0);
+        // Its current (-2000) is inside the value axis, as this run's is.
+        QVERIFY(plot->yAxis->range().contains(-2000));
+        QVERIFY(plot->yAxis->range().contains(15000));
+        const QString legend = plot->parentWidget()->findChild<QLabel *>(QStringLiteral("plotLegend"))->text();
+        QVERIFY2(legend.contains(QStringLiteral("first.oirec")), qPrintable(legend));
+        QVERIFY2(legend.contains(QStringLiteral("second.oirec (moved 1.50 s)")), qPrintable(legend));
+        // Every plot overlays its packets, a new one too.
+        const int added = plots.addPlot({8});
+        scene.refresh();
+        QCOMPARE(plots.plot(added)->graphCount(), 2);
+
+        plots.setComparison(nullptr, 0, QString(), QString());
+        scene.refresh();
+        QCOMPARE(plot->graphCount(), 2);
+        QVERIFY(!plot->parentWidget()->findChild<QLabel *>(QStringLiteral("plotLegend"))->text().contains(
+            QStringLiteral("oirec")));
+    }
+
     void clearedHistoryEmptiesThePlots()
     {
         Scene scene({22});
@@ -713,6 +815,17 @@ private slots:
         QCoreApplication::processEvents();
         plot->replot();
         QVERIFY(plots.grab().save(QDir(QString::fromLocal8Bit(dir)).filePath(QStringLiteral("sensor_plots_paused.png"))));
+
+        // Markers, and the same run again 2 s later for comparison.
+        QEvent leave(QEvent::Leave);
+        QCoreApplication::sendEvent(plot, &leave);
+        plots.setMarkers({{126.0, QStringLiteral("hit the table leg")}, {141.5, QStringLiteral("turned")}});
+        plots.setComparison(&h, 2.0, QStringLiteral("second try.oirec"), QStringLiteral("first try.oirec"));
+        plots.refresh();
+        QCoreApplication::processEvents();
+        QVERIFY(plots.grab().save(QDir(QString::fromLocal8Bit(dir)).filePath(QStringLiteral("sensor_plots_comparison.png"))));
+        plots.setComparison(nullptr, 0, {}, {});
+        plots.setMarkers({});
 
         // The channel menu and one of its groups.
         QMenu *menu = plots.channelChooser(1)->menu();

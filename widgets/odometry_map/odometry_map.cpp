@@ -341,6 +341,15 @@ QPointF OdometryMap::widgetPointFor(QPointF mm) const
     return QPointF(c.x() + (mm.x() - m_centreMm.x()) * m_scale, c.y() - (mm.y() - m_centreMm.y()) * m_scale);
 }
 
+QPolygonF OdometryMap::widgetPolygon(const QList<QPointF> &pointsMm) const
+{
+    QPolygonF line;
+    line.reserve(pointsMm.size());
+    for (const QPointF &p : pointsMm)
+        line << widgetPointFor(p);
+    return line;
+}
+
 QString OdometryMap::notIdentifiedText() const
 {
     return tr("Robot not yet identified: a Roomba 500 or a Create 2? Until it is named, its wheel counts "
@@ -415,47 +424,94 @@ void OdometryMap::paintEvent(QPaintEvent *)
     const bool identified = !m_odometry || m_odometry->isIdentified();
     const QList<QPointF> trail = this->trail();
     if (identified && trail.size() > 1) {
-        QPolygonF line;
-        line.reserve(trail.size());
-        for (const QPointF &p : trail)
-            line << widgetPointFor(p);
         painter.setPen(QPen(palette().color(QPalette::Highlight), 2));
-        painter.drawPolyline(line);
+        painter.drawPolyline(widgetPolygon(trail));
+    }
+    if (m_comparisonPath.size() > 1) {
+        painter.setPen(comparisonPen());
+        painter.drawPolyline(widgetPolygon(m_comparisonPath));
     }
     paintTruePoses(painter);
     if (identified)
         paintRobot(painter, pose(), palette().color(QPalette::Highlight), false);
     paintScaleBar(painter, area);
 
-    // Legend, top right.
     painter.setClipping(false);
-    QStringList legend{tr("odometry")};
-    QList<QColor> colours{palette().color(QPalette::Highlight)};
+    paintLegend(painter, area);
+    if (m_editing)
+        paintEditBanner(painter, area);
+}
+
+void OdometryMap::setComparisonPath(const QVector<QPointF> &pointsMm, const QString &label)
+{
+    m_comparisonPath = pointsMm;
+    m_comparisonLabel = pointsMm.isEmpty() ? QString() : label;
+    update();
+}
+
+QPen OdometryMap::comparisonPen() const
+{
+    // Neither a robot's colour nor a solid or dashed line: another run.
+    QColor colour = palette().color(QPalette::Text);
+    colour.setAlpha(170);
+    QPen pen(colour, 2.5, Qt::DashDotLine);
+    pen.setCapStyle(Qt::FlatCap);
+    return pen;
+}
+
+QList<OdometryMap::LegendEntry> OdometryMap::legend() const
+{
+    QList<LegendEntry> entries;
+    entries << LegendEntry{tr("odometry"), QPen(palette().color(QPalette::Highlight), 2)};
     if (!m_truePoses.isEmpty()) {
-        legend << tr("true pose");
         // The selected robot's colour, or the first robot's.
         qsizetype index = 0;
         for (qsizetype i = 0; i < m_truePoses.size(); ++i)
             if (m_truePoses[i].robot == m_selected)
                 index = i;
-        colours << truePoseColour(index);
+        entries << LegendEntry{tr("true pose"), QPen(truePoseColour(index), 2, Qt::DashLine)};
     }
+    if (m_comparisonPath.size() > 1)
+        entries << LegendEntry{m_comparisonLabel.isEmpty() ? tr("comparison run") : m_comparisonLabel,
+                               comparisonPen()};
+    return entries;
+}
+
+QStringList OdometryMap::legendLabels() const
+{
+    QStringList labels;
+    for (const LegendEntry &entry : legend())
+        labels << entry.text;
+    return labels;
+}
+
+void OdometryMap::paintLegend(QPainter &painter, const QRect &area) const
+{
+    const QList<LegendEntry> entries = legend();
     const QFontMetrics fm(font());
     // Sizes follow the font, so the legend grows with it.
     const int gap = fm.averageCharWidth();
-    const int swatch = fm.ascent() * 2 / 3;
+    const int swatch = fm.ascent() * 3 / 2;
     int y = area.top() + 2 * fm.height(); // below the x labels
-    for (qsizetype i = 0; i < legend.size(); ++i) {
-        const int w = fm.horizontalAdvance(legend[i]);
+    for (const LegendEntry &entry : entries) {
+        const int w = fm.horizontalAdvance(entry.text);
         const QRect text(area.right() - gap - w, y, w, fm.height());
+        const QRect sample(text.left() - gap - swatch, text.top() + 2, swatch, text.height() - 4);
         painter.fillRect(text.adjusted(-2 * gap - swatch, -2, gap / 2, 2), palette().base());
-        painter.fillRect(QRect(text.left() - gap - swatch, text.center().y() - swatch / 2, swatch, swatch), colours[i]);
+        if (entry.fill.style() != Qt::NoBrush) {
+            painter.setPen(entry.pen);
+            painter.setBrush(entry.fill);
+            painter.drawRect(sample);
+            painter.setBrush(Qt::NoBrush);
+        } else {
+            painter.setPen(entry.pen);
+            painter.drawLine(QPointF(sample.left(), sample.center().y() + 0.5),
+                             QPointF(sample.right(), sample.center().y() + 0.5));
+        }
         painter.setPen(palette().color(QPalette::Text));
-        painter.drawText(text, Qt::AlignLeft | Qt::AlignVCenter, legend[i]);
+        painter.drawText(text, Qt::AlignLeft | Qt::AlignVCenter, entry.text);
         y += fm.height() + 4;
     }
-    if (m_editing)
-        paintEditBanner(painter, area);
 }
 
 void OdometryMap::paintGrid(QPainter &painter, const QRect &area) const

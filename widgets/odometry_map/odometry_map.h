@@ -10,7 +10,10 @@
 
 #include <QColor>
 #include <QList>
+#include <QPen>
+#include <QVector>
 #include <QPointF>
+#include <QPolygonF>
 #include <QWidget>
 
 #include <optional>
@@ -82,6 +85,14 @@ public:
     // Distinct colours for robots on the map, by index.
     static QColor robotColour(int index);
 
+    // Another run's path (a recording opened for comparison), in mm on the
+    // same floor, drawn in a style of its own and named in the legend by
+    // `label`; an empty path clears it.
+    void setComparisonPath(const QVector<QPointF> &pointsMm, const QString &label);
+    const QVector<QPointF> &comparisonPath() const { return m_comparisonPath; }
+    // What the legend names, top to bottom.
+    QStringList legendLabels() const;
+
     void setWorld(std::optional<sim::World> world);
     const std::optional<sim::World> &world() const { return m_world; }
 
@@ -108,6 +119,7 @@ public:
     void setViewCentreMm(QPointF mm);
     // Where a floor point (mm) is drawn, in this widget's coordinates.
     QPointF widgetPointFor(QPointF mm) const;
+    QPolygonF widgetPolygon(const QList<QPointF> &pointsMm) const;
     QRect mapRect() const;
 
     // "x 120 mm  y -35 mm  θ 12.5°", and the distance from the true pose if
@@ -170,6 +182,15 @@ private:
     void paintScaleBar(QPainter &painter, const QRect &area) const;
     double gridSpacingMm() const;
     QPointF floorPointFor(QPointF widgetPoint) const;
+    // One line of the legend: how the thing is drawn, and its name.
+    struct LegendEntry {
+        QString text;
+        QPen pen;                 // a stroke of it
+        QBrush fill = Qt::NoBrush; // or a patch of it, where it is an area
+    };
+    QList<LegendEntry> legend() const;
+    void paintLegend(QPainter &painter, const QRect &area) const;
+    QPen comparisonPen() const;
     // The true pose under a widget point, if a robot is drawn there.
     const TruePose *truePoseAt(QPointF widgetPoint) const;
 
@@ -179,6 +200,8 @@ private:
     QList<TruePose> m_truePoses;
     std::optional<int> m_selected;
     std::optional<sim::World> m_world;
+    QVector<QPointF> m_comparisonPath;
+    QString m_comparisonLabel;
 
     double m_scale = 0.1;
     QPointF m_centreMm{1000, 0};

@@ -43,6 +43,17 @@ const QColor kSeriesColors[] = {
 };
 static_assert(std::size(kSeriesColors) >= SensorPlots::kMaxChannelsPerPlot);
 
+// The comparison run's line: the channel's hue, lighter and dashed, and a
+// little wider than the solid line so the dashes read on a projector.
+QPen comparisonPen(const QColor &colour)
+{
+    QColor light = colour;
+    light.setAlpha(150);
+    QPen pen(light, 2.4);
+    pen.setDashPattern({4, 2.5});
+    return pen;
+}
+
 const double kWindowChoices[] = {10, 20, 30, 60, 120, 300, 600};
 
 // Zoom limits while paused: below a few frames nothing more is to be seen,
@@ -84,6 +95,18 @@ struct SensorPlots::GraphFeed {
     double changedFrom = kUnchanged;
 };
 
+// A packet of the comparison run, loaded for the visible range and shifted.
+struct SensorPlots::ComparisonFeed {
+    int channel = 0;
+    QCPGraph *graph = nullptr;
+    bool valid = false;
+    std::uint64_t loadedRevision = 0;
+    double columnSeconds = 0.0;
+    // The span (on the plot's time axis) whose samples the graph holds.
+    double loadedFrom = 0.0;
+    double loadedTo = 0.0;
+};
+
 struct SensorPlots::Panel {
     QWidget *frame = nullptr;
     ChannelChooser *chooser = nullptr;
@@ -94,6 +117,8 @@ struct SensorPlots::Panel {
     QCPItemText *hint = nullptr;
     std::vector<int> channels;
     std::vector<GraphFeed> feeds;
+    std::vector<ComparisonFeed> comparisons;
+    QList<QCPAbstractItem *> markerItems;
     bool dirty = true;
     // Changed since it was last drawn; whole: the axes or items too.
     bool pending = false;
@@ -301,6 +326,7 @@ int SensorPlots::addPlot(const std::vector<int> &channels)
     m_panels.push_back(std::move(panel));
     applyTheme(*p);
     rebuildGraphs(*p);
+    placeMarkers(*p);
     const int index = plotCount() - 1;
     if (!channels.empty())
         setChannels(index, channels);
@@ -503,6 +529,9 @@ void SensorPlots::refresh()
         if (!panel->plot->isVisible())
             continue;
         const double columnSeconds = m_timeRange.size() / columnCount(*panel);
+        // The comparison sits with the axes, drawn whole when it changes.
+        for (ComparisonFeed &feed : panel->comparisons)
+            panel->dirty |= updateComparison(feed, columnSeconds);
         bool changed = panel->dirty;
         for (GraphFeed &feed : panel->feeds)
             changed |= updateFeed(feed, m_timeRange.lower, m_timeRange.upper, columnSeconds);
@@ -680,9 +709,10 @@ bool SensorPlots::rescaleValues(Panel &panel)
 {
     QCPRange values;
     bool any = false;
-    for (const GraphFeed &feed : panel.feeds) {
+    // Both runs' lines, where a comparison is shown.
+    for (int g = 0; g < panel.plot->graphCount(); ++g) {
         bool found = false;
-        const QCPRange r = feed.graph->getValueRange(found, QCP::sdBoth, m_timeRange);
+        const QCPRange r = panel.plot->graph(g)->getValueRange(found, QCP::sdBoth, m_timeRange);
         if (!found)
             continue;
         if (any)
@@ -734,6 +764,19 @@ void SensorPlots::rebuildGraphs(Panel &panel)
         feed.tracer->setVisible(false);
         panel.feeds.push_back(feed);
     }
+    panel.comparisons.clear();
+    if (m_comparison) {
+        for (std::size_t i = 0; i < panel.channels.size(); ++i) {
+            ComparisonFeed feed;
+            feed.channel = panel.channels[i];
+            // Under the live traces, with the axes: it changes only when they do.
+            feed.graph = new QCPGraph(panel.plot->xAxis, panel.plot->yAxis);
+            feed.graph->setName(m_comparisonLabel);
+            feed.graph->setPen(comparisonPen(kSeriesColors[i]));
+            feed.graph->setLineStyle(panel.feeds[i].graph->lineStyle());
+            panel.comparisons.push_back(feed);
+        }
+    }
     updateLegend(panel);
     panel.dirty = true;
     updateHint(panel);
@@ -771,6 +814,107 @@ void SensorPlots::setCorrections(const oi::FirmwareCorrections &corrections)
         updateLegend(*panel);
 }
 
+void SensorPlots::setMarkers(const QList<PlotMarker> &markers)
+{
+    if (markers == m_markers)
+        return;
+    m_markers = markers;
+    for (auto &panel : m_panels)
+        placeMarkers(*panel);
+    refresh();
+}
+
+void SensorPlots::placeMarkers(Panel &panel)
+{
+    for (QCPAbstractItem *item : std::as_const(panel.markerItems))
+        panel.plot->removeItem(item);
+    panel.markerItems.clear();
+    const QColor text = palette().color(QPalette::Text);
+    QColor line = text;
+    line.setAlpha(170);
+    QColor back = palette().color(QPalette::Base);
+    back.setAlpha(215);
+    QFont small = font();
+    small.setPointSizeF(std::max(7.0, (font().pointSizeF() > 0 ? font().pointSizeF() : 9.0) * 0.9));
+    for (const PlotMarker &marker : std::as_const(m_markers)) {
+        // At its time on the shared axis, from the top of the data area to the bottom.
+        auto *mark = new QCPItemLine(panel.plot);
+        for (QCPItemPosition *end : {mark->start, mark->end}) {
+            end->setTypeX(QCPItemPosition::ptPlotCoords);
+            end->setTypeY(QCPItemPosition::ptAxisRectRatio);
+        }
+        mark->start->setCoords(marker.seconds, 0);
+        mark->end->setCoords(marker.seconds, 1);
+        mark->setPen(QPen(line, 1.5));
+        panel.markerItems << mark;
+        if (marker.label.isEmpty())
+            continue;
+        auto *label = new QCPItemText(panel.plot);
+        label->position->setTypeX(QCPItemPosition::ptPlotCoords);
+        label->position->setTypeY(QCPItemPosition::ptAxisRectRatio);
+        label->position->setCoords(marker.seconds, 0);
+        label->setPositionAlignment(Qt::AlignLeft | Qt::AlignTop);
+        label->setText(marker.label);
+        label->setFont(small);
+        label->setColor(text);
+        label->setBrush(back);
+        label->setPadding(QMargins(3, 1, 3, 1));
+        panel.markerItems << label;
+    }
+    panel.dirty = true;
+}
+
+void SensorPlots::setComparison(const SensorHistory *history, double shiftSeconds, const QString &label,
+                                const QString &primaryLabel)
+{
+    if (!std::isfinite(shiftSeconds))
+        shiftSeconds = 0.0;
+    m_comparison = history;
+    m_comparisonShift = history ? shiftSeconds : 0.0;
+    m_comparisonLabel = history ? label : QString();
+    m_primaryLabel = history ? primaryLabel : QString();
+    for (auto &panel : m_panels)
+        rebuildGraphs(*panel);
+    refresh();
+}
+
+bool SensorPlots::updateComparison(ComparisonFeed &feed, double columnSeconds)
+{
+    const SensorHistory &h = *m_comparison;
+    const double from = m_timeRange.lower, to = m_timeRange.upper;
+    if (feed.valid && feed.loadedRevision == h.revision() && feed.columnSeconds == columnSeconds
+        && from >= feed.loadedFrom && to <= feed.loadedTo)
+        return false;
+    // A span either side, so the live step and small pans need no reload.
+    const double span = to - from;
+    feed.valid = true;
+    feed.loadedRevision = h.revision();
+    feed.columnSeconds = columnSeconds;
+    feed.loadedFrom = from - span;
+    feed.loadedTo = to + span;
+    QSharedPointer<QCPGraphDataContainer> data = feed.graph->data();
+    const bool hadData = !data->isEmpty();
+    data->clear();
+    if (!h.isChannel(feed.channel))
+        return hadData;
+    const std::size_t held = h.sampleCount(feed.channel);
+    std::size_t first = h.lowerBound(feed.channel, feed.loadedFrom - m_comparisonShift);
+    std::size_t end = h.upperBound(feed.channel, feed.loadedTo - m_comparisonShift);
+    if (first > 0)
+        --first;
+    if (end < held)
+        ++end;
+    TraceColumns columns(columnSeconds);
+    for (SensorHistory::Sample s : h.samplesAt(feed.channel, first, end)) {
+        s.time += m_comparisonShift;
+        columns.add(s);
+    }
+    QVector<QCPGraphData> points;
+    columns.pointsFrom(0, [&points](const SensorHistory::Sample &s) { points.append(QCPGraphData(s.time, s.value)); });
+    data->add(points, true);
+    return true;
+}
+
 void SensorPlots::updateLegend(Panel &panel)
 {
     QStringList items;
@@ -789,9 +933,22 @@ void SensorPlots::updateLegend(Panel &panel)
                               .arg(grey.name(QColor::HexArgb), tr("%1 (unreliable)").arg(label).toHtmlEscaped());
         reasons << reason;
     }
-    panel.legend->setText(items.join(QStringLiteral(" &nbsp; ")));
+    QString text = items.join(QStringLiteral(" &nbsp; "));
+    if (m_comparison && !panel.channels.empty()) {
+        // Which run is which: a solid and a dashed stroke, each naming its file.
+        text += QStringLiteral("<br><b>&#9473;&#9473;</b>&nbsp;%1 &nbsp; <b>&#9476;&#9476;</b>&nbsp;%2")
+                    .arg(m_primaryLabel.toHtmlEscaped(), comparisonLegend().toHtmlEscaped());
+    }
+    panel.legend->setText(text);
     panel.legend->setToolTip(reasons.join(QLatin1Char('\n')));
     updatePlotDescription(panel);
+}
+
+QString SensorPlots::comparisonLegend() const
+{
+    if (m_comparisonShift == 0.0)
+        return m_comparisonLabel;
+    return tr("%1 (moved %2 s)").arg(m_comparisonLabel, QString::number(m_comparisonShift, 'f', 2));
 }
 
 void SensorPlots::updatePlotDescription(Panel &panel)

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "firmware_banner.h"
+#include "plot_marker.h"
 #include "robot_profile.h"
 
 #include <QTimer>
@@ -109,6 +110,19 @@ public:
     // clock unless a test gives its own.
     void setClock(std::function<qint64()> clock);
 
+    // Marked moments, drawn on every plot as a vertical line with its label.
+    void setMarkers(const QList<PlotMarker> &markers);
+    const QList<PlotMarker> &markers() const { return m_markers; }
+
+    // A second run to compare with: every plotted packet is drawn from
+    // `history` too, `shiftSeconds` later, dashed and lighter, and the legend
+    // names both runs (`primaryLabel` for this history's, `label` for the
+    // other's). Not owned; nullptr clears it.
+    void setComparison(const SensorHistory *history, double shiftSeconds, const QString &label,
+                       const QString &primaryLabel);
+    const SensorHistory *comparisonHistory() const { return m_comparison; }
+    double comparisonShiftSeconds() const { return m_comparisonShift; }
+
     // The plot itself, for tests and screenshots; nullptr out of range.
     QCustomPlot *plot(int plotIndex) const;
     ChannelChooser *channelChooser(int plotIndex) const;
@@ -128,11 +142,14 @@ protected:
 
 private:
     struct GraphFeed;
+    struct ComparisonFeed;
     struct Panel;
 
     void retranslateUi();
     void rebuildGraphs(Panel &panel);
     bool updateFeed(GraphFeed &feed, double from, double to, double columnSeconds);
+    bool updateComparison(ComparisonFeed &feed, double columnSeconds);
+    void placeMarkers(Panel &panel);
     QCPRange liveTimeRange() const;
     // The part of the plot where the traces changed since it was drawn.
     QRect changedTracesRect(const Panel &panel) const;
@@ -145,6 +162,8 @@ private:
     void applyTheme(Panel &panel);
     bool updateHint(Panel &panel);
     void updateLegend(Panel &panel);
+    // The comparison run's name in the legend, with its shift.
+    QString comparisonLegend() const;
     // The plot's channels and hint in words, for screen readers.
     void updatePlotDescription(Panel &panel);
     void updateAxisLabels();
@@ -174,6 +193,11 @@ private:
     double m_windowSeconds = 60.0;
     QCPRange m_timeRange{0.0, 60.0};
     bool m_syncing = false;
+    QList<PlotMarker> m_markers;
+    const SensorHistory *m_comparison = nullptr;
+    double m_comparisonShift = 0.0;
+    QString m_comparisonLabel;
+    QString m_primaryLabel;
     std::uint64_t m_seenGeneration = ~std::uint64_t{0};
     std::function<qint64()> m_clock;
     // Draws what a refresh had to put off, should no refresh follow.

@@ -62,6 +62,7 @@ public slots:
     void showScript();
     void startRecording(const QString &path);
     void stopRecording();
+    void markRecording(const oilink::MarkerEdit &edit);
     void controlReplay(const oilink::ReplayCommand &command);
 
 signals:

@@ -3,6 +3,7 @@
 // official reader (@mcap/core, installed with npm) and by our own record
 // walker; damaged recordings; paths that cannot be written; roomba-ctl mcap.
 #include "mcap_records.h"
+#include "oirec_records.h" // tests/common
 #include "recording_mcap.h"
 #include "robot_link.h"
 #include "snapshot_json.h"
@@ -48,34 +49,12 @@ Recording load(const QString &path)
     return *r;
 }
 
-// A recording record as recording_format.md lays it out.
-QByteArray oirecRecord(char kind, qint64 timeUs, const QByteArray &payload)
-{
-    QByteArray r(1, kind);
-    char field[8];
-    qToLittleEndian<qint64>(timeUs, field);
-    r.append(field, 8);
-    qToLittleEndian<quint16>(quint16(payload.size()), field);
-    r.append(field, 2);
-    r += payload;
-    qToLittleEndian<quint16>(qChecksum(r), field);
-    r.append(field, 2);
-    return r;
-}
-
 // A Create 2 streaming group 100 every 15 ms from 2026-01-02 03:04:05 UTC:
 // frame i has the bumps and mode `frame(i)` gives; Safe is sent at the start.
 QByteArray syntheticRecording(int frames, const std::function<std::pair<int, int>(int)> &frame)
 {
-    const QByteArray header = R"({"format":"Roomba Dashboard recording","version":1,)"
-                              R"("started":"2026-01-02T03:04:05.000Z","link":"test"})";
-    QByteArray file("OIRECORD");
-    char field[4];
-    qToLittleEndian<quint16>(1, field);
-    file.append(field, 2);
-    qToLittleEndian<quint32>(quint32(header.size()), field);
-    file.append(field, 4);
-    file += header;
+    QByteArray file = oirecHeader(1, R"({"format":"Roomba Dashboard recording","version":1,)"
+                                     R"("started":"2026-01-02T03:04:05.000Z","link":"test"})");
     file += oirecRecord('T', 0, bytes({128, 131}));
     file += oirecRecord('S', 0, R"({"profile":"create2","baud":115200,"packets":[100]})");
     for (int i = 0; i < frames; ++i) {

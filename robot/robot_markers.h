@@ -44,6 +44,8 @@ public:
     bool rename(int id, const QString &note, QString *error = nullptr);
     bool remove(int id, QString *error = nullptr);
 
+    // The recording's time 0 on the history's clock.
+    double originSeconds() const { return m_originSeconds; }
     // A marker's time on the history's clock.
     double seconds(const oilink::RecordingMarker &marker) const;
     // The first marker after / the last before `seconds` (history's clock),

@@ -29,8 +29,9 @@ MarkerList::MarkerList(QWidget *parent) : QWidget(parent)
     m_table->verticalHeader()->hide();
     m_table->horizontalHeader()->setSectionResizeMode(TimeColumn, QHeaderView::ResizeToContents);
     m_table->horizontalHeader()->setStretchLastSection(true);
+    // Not on any key: M, comma and full stop are the window's marker keys.
     m_table->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed
-                             | QAbstractItemView::AnyKeyPressed);
+                             | QAbstractItemView::SelectedClicked);
     auto *buttons = new QHBoxLayout;
     m_jump = new QPushButton(this);
     m_jump->setObjectName("markerJump");

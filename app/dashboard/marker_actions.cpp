@@ -71,11 +71,11 @@ MarkerActions::MarkerActions(RobotFleet &fleet, SensorPlots *plots, ReplayBar *r
 
 void MarkerActions::retranslate()
 {
-    m_drop->setText(tr("&Mark this moment"));
+    m_drop->setText(tr("Mark &this moment"));
     m_drop->setIconText(tr("Mark"));
     m_drop->setToolTip(tr("Drop a marker on the recording here, with an optional note (M)"));
-    m_previous->setText(tr("Pre&vious marker"));
-    m_next->setText(tr("Ne&xt marker"));
+    m_previous->setText(tr("Previo&us marker"));
+    m_next->setText(tr("&Next marker"));
     show();
 }
 

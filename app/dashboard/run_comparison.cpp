@@ -51,9 +51,9 @@ RunComparison::RunComparison(RobotFleet &fleet, SensorPlots *plots, OdometryMap 
 
 void RunComparison::retranslate()
 {
-    m_compare->setText(tr("Com&pare with recording…"));
+    m_compare->setText(tr("&Compare with recording…"));
     m_compare->setToolTip(tr("Show a second recording beside this run: plots and map, in a style of its own"));
-    m_close->setText(tr("Close co&mparison"));
+    m_close->setText(tr("C&lose comparison"));
     m_toolBar->setWindowTitle(tr("Comparison"));
 }
 

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "sensor_history.h"
 
+#include "sensor_csv.h"
+
 #include <QByteArray>
 #include <QCoreApplication>
 #include <QSaveFile>
@@ -15,18 +17,6 @@ namespace {
 // Export writes in pieces of about this size rather than building the whole
 // file (an hour of every channel is tens of megabytes) in memory.
 constexpr qsizetype kWriteChunk = 64 * 1024;
-
-QByteArray timeText(double t)
-{
-    QByteArray text = QByteArray::number(t, 'f', 6);
-    while (text.endsWith('0'))
-        text.chop(1);
-    if (text.endsWith('.'))
-        text.chop(1);
-    if (text == "-0")
-        text = "0";
-    return text;
-}
 
 template <typename T>
 bool fits(std::int32_t value)
@@ -343,10 +333,10 @@ std::size_t SensorHistory::memoryBytes() const
     return bytes;
 }
 
-QString SensorHistory::formatTime(double t) { return QString::fromLatin1(timeText(t)); }
+QString SensorHistory::formatTime(double t) { return QString::fromLatin1(oilink::SensorCsv::timeText(t)); }
 
 bool SensorHistory::exportCsv(const QString &path, const std::vector<int> &channels, double t0,
-                              double t1, QString *error) const
+                              double t1, QString *error, const QList<oilink::SensorCsv::Mark> &marks) const
 {
     auto fail = [error](const QString &why) {
         if (error)
@@ -368,20 +358,17 @@ bool SensorHistory::exportCsv(const QString &path, const std::vector<int> &chann
     if (!file.open(QIODevice::WriteOnly))
         return fail(QCoreApplication::translate("SensorHistory", "Cannot write %1: %2").arg(path, file.errorString()));
 
+    std::vector<const oi::PacketInfo *> columns;
+    for (int id : channels)
+        columns.push_back(m_profile->packet(id));
+    QList<oilink::SensorCsv::Mark> shown;
+    for (const oilink::SensorCsv::Mark &m : marks)
+        if (m.seconds >= t0 && m.seconds <= t1)
+            shown << m;
+    oilink::SensorCsv csv(std::move(columns), shown);
     QByteArray buffer;
     buffer.reserve(kWriteChunk + 1024);
-    buffer += "time_s";
-    for (int id : channels) {
-        const oi::PacketInfo *info = m_profile->packet(id);
-        buffer += ',';
-        buffer += QByteArray(info->key.data(), qsizetype(info->key.size()));
-        if (!info->unit.empty()) {
-            buffer += '[';
-            buffer += QByteArray(info->unit.data(), qsizetype(info->unit.size()));
-            buffer += ']';
-        }
-    }
-    buffer += '\n';
+    csv.appendHeader(buffer);
 
     // A merge of the channels' sorted times: each row takes the earliest
     // time any channel has next, and every channel with a sample at exactly
@@ -392,6 +379,7 @@ bool SensorHistory::exportCsv(const QString &path, const std::vector<int> &chann
         next[i] = t0 <= t1 ? lowerBound(channels[i], t0) : 0;
         end[i] = t0 <= t1 ? upperBound(channels[i], t1) : 0;
     }
+    std::vector<std::optional<std::int32_t>> cells(n);
     const double none = std::numeric_limits<double>::infinity();
     for (;;) {
         double rowTime = none;
@@ -400,30 +388,25 @@ bool SensorHistory::exportCsv(const QString &path, const std::vector<int> &chann
                 rowTime = std::min(rowTime, sample(channels[i], next[i]).time);
         if (rowTime == none)
             break;
-        buffer += timeText(rowTime);
         for (std::size_t i = 0; i < n; ++i) {
-            buffer += ',';
-            bool found = false;
-            std::int32_t value = 0;
+            cells[i].reset();
             // Two snapshots may share a time; the later one wins.
             while (next[i] < end[i]) {
                 const Sample s = sample(channels[i], next[i]);
                 if (s.time != rowTime)
                     break;
-                value = s.value;
-                found = true;
+                cells[i] = s.value;
                 ++next[i];
             }
-            if (found)
-                buffer += QByteArray::number(value);
         }
-        buffer += '\n';
+        csv.appendRow(buffer, rowTime, cells);
         if (buffer.size() >= kWriteChunk) {
             if (file.write(buffer) != buffer.size())
                 return fail(QCoreApplication::translate("SensorHistory", "Cannot write %1: %2").arg(path, file.errorString()));
             buffer.clear();
         }
     }
+    csv.finish(buffer);
     if (file.write(buffer) != buffer.size())
         return fail(QCoreApplication::translate("SensorHistory", "Cannot write %1: %2").arg(path, file.errorString()));
     if (!file.commit())

@@ -648,6 +648,14 @@
             <numerusform>Kanäle (%n)</numerusform>
         </translation>
     </message>
+    <message>
+        <source>plain numbers</source>
+        <translation>reine Zahlen</translation>
+    </message>
+    <message>
+        <source>This plot&apos;s axes show %1 and %2: add a plot for %3</source>
+        <translation>Die Achsen dieses Diagramms zeigen %1 und %2: fügen Sie für %3 ein Diagramm hinzu</translation>
+    </message>
 </context>
 <context>
     <name>CommandDecoder</name>
@@ -2971,58 +2979,6 @@ GPL-3.0-or-later.</translation>
         <translation>Wände, Bühnenkanten, die Ladestation und die virtuelle Wand verschieben, hinzufügen und löschen</translation>
     </message>
     <message>
-        <source>%1 × %2 m</source>
-        <translation>%1 × %2 m</translation>
-    </message>
-    <message>
-        <source>Editing %1: drag it or its handles · Delete removes it</source>
-        <translation>Bearbeiten: %1 · ziehen, auch an den Griffen · Entf löscht</translation>
-    </message>
-    <message>
-        <source>Editing the room: click a thing to select it · right-click to add</source>
-        <translation>Raum bearbeiten: zum Auswählen anklicken · Rechtsklick fügt hinzu</translation>
-    </message>
-    <message>
-        <source>the wall</source>
-        <translation>die Wand</translation>
-    </message>
-    <message>
-        <source>the stage edge</source>
-        <translation>die Bühnenkante</translation>
-    </message>
-    <message>
-        <source>the dock</source>
-        <translation>die Ladestation</translation>
-    </message>
-    <message>
-        <source>the virtual wall</source>
-        <translation>die virtuelle Wand</translation>
-    </message>
-    <message>
-        <source>Add wall here</source>
-        <translation>Wand hier hinzufügen</translation>
-    </message>
-    <message>
-        <source>Add stage edge here</source>
-        <translation>Bühnenkante hier hinzufügen</translation>
-    </message>
-    <message>
-        <source>Move the virtual wall here</source>
-        <translation>Virtuelle Wand hierher versetzen</translation>
-    </message>
-    <message>
-        <source>Add virtual wall here</source>
-        <translation>Virtuelle Wand hier hinzufügen</translation>
-    </message>
-    <message>
-        <source>Put the dock here</source>
-        <translation>Ladestation hierher stellen</translation>
-    </message>
-    <message>
-        <source>Delete %1</source>
-        <translation>Löschen: %1</translation>
-    </message>
-    <message>
         <source>Robot not yet identified: a Roomba 500 or a Create 2? Until it is named, its wheel counts may read mirrored, so no path is drawn.</source>
         <translation>Roboter noch nicht bestimmt: ein Roomba 500 oder ein Create 2? Bis er benannt ist, können seine Radzähler gespiegelt gelesen werden, darum wird kein Weg gezeichnet.</translation>
     </message>
@@ -3320,6 +3276,65 @@ GPL-3.0-or-later.</translation>
     <message>
         <source>A song holds at most %1 notes; remove one first</source>
         <translation>Ein Lied fasst höchstens %1 Noten; entfernen Sie zuerst eine</translation>
+    </message>
+</context>
+<context>
+    <name>PlotStack</name>
+    <message>
+        <source>Remove this plot</source>
+        <translation>Dieses Diagramm entfernen</translation>
+    </message>
+    <message>
+        <source>Sensor plot</source>
+        <translation>Sensordiagramm</translation>
+    </message>
+    <message>
+        <source>Choose the channels to plot with the button above</source>
+        <translation>Wählen Sie die Kanäle mit der Schaltfläche oben</translation>
+    </message>
+    <message>
+        <source>No samples in this time range</source>
+        <translation>Keine Messwerte in diesem Zeitbereich</translation>
+    </message>
+    <message>
+        <source>Waiting for samples</source>
+        <translation>Warte auf Messwerte</translation>
+    </message>
+    <message>
+        <source>%1 (unreliable)</source>
+        <translation>%1 (unzuverlässig)</translation>
+    </message>
+    <message>
+        <source>%1 (moved %2 s)</source>
+        <translation>%1 (um %2 s verschoben)</translation>
+    </message>
+    <message>
+        <source>No channels chosen</source>
+        <translation>Keine Kanäle gewählt</translation>
+    </message>
+    <message>
+        <source>Channels: %1</source>
+        <translation>Kanäle: %1</translation>
+    </message>
+    <message>
+        <source>, </source>
+        <translation>, </translation>
+    </message>
+    <message>
+        <source>%1. %2</source>
+        <translation>%1. %2</translation>
+    </message>
+    <message>
+        <source>Time (s)</source>
+        <translation>Zeit (s)</translation>
+    </message>
+    <message>
+        <source>t = %1 s</source>
+        <translation>t = %1 s</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
     </message>
 </context>
 <context>
@@ -4044,6 +4059,69 @@ Doppelklick zum Umbenennen</translation>
         <translation>Der Raum konnte nicht gespeichert werden.
 
 %1</translation>
+    </message>
+</context>
+<context>
+    <name>RoomEditTool</name>
+    <message>
+        <source>Edit room</source>
+        <translation>Raum bearbeiten</translation>
+    </message>
+    <message>
+        <source>Add wall here</source>
+        <translation>Wand hier hinzufügen</translation>
+    </message>
+    <message>
+        <source>Add stage edge here</source>
+        <translation>Bühnenkante hier hinzufügen</translation>
+    </message>
+    <message>
+        <source>Move the virtual wall here</source>
+        <translation>Virtuelle Wand hierher versetzen</translation>
+    </message>
+    <message>
+        <source>Add virtual wall here</source>
+        <translation>Virtuelle Wand hier hinzufügen</translation>
+    </message>
+    <message>
+        <source>Put the dock here</source>
+        <translation>Ladestation hierher stellen</translation>
+    </message>
+    <message>
+        <source>Delete %1</source>
+        <translation>Löschen: %1</translation>
+    </message>
+    <message>
+        <source>Editing %1: drag it or its handles · Delete removes it</source>
+        <translation>Bearbeiten: %1 · ziehen, auch an den Griffen · Entf löscht</translation>
+    </message>
+    <message>
+        <source>Editing the room: click a thing to select it · right-click to add</source>
+        <translation>Raum bearbeiten: zum Auswählen anklicken · Rechtsklick fügt hinzu</translation>
+    </message>
+    <message>
+        <source>the wall</source>
+        <translation>die Wand</translation>
+    </message>
+    <message>
+        <source>the stage edge</source>
+        <translation>die Bühnenkante</translation>
+    </message>
+    <message>
+        <source>the dock</source>
+        <translation>die Ladestation</translation>
+    </message>
+    <message>
+        <source>the virtual wall</source>
+        <translation>die virtuelle Wand</translation>
+    </message>
+    <message>
+        <source>%1 m</source>
+        <translation>%1 m</translation>
+    </message>
+    <message>
+        <source>%1 × %2 m</source>
+        <translation>%1 × %2 m</translation>
     </message>
 </context>
 <context>
@@ -4814,46 +4892,6 @@ Gesendet: %2</translation>
         <translation>Gesamter Verlauf…</translation>
     </message>
     <message>
-        <source>Remove this plot</source>
-        <translation>Dieses Diagramm entfernen</translation>
-    </message>
-    <message>
-        <source>Sensor plot</source>
-        <translation>Sensordiagramm</translation>
-    </message>
-    <message>
-        <source>Choose the channels to plot with the button above</source>
-        <translation>Wählen Sie die Kanäle mit der Schaltfläche oben</translation>
-    </message>
-    <message>
-        <source>No samples in this time range</source>
-        <translation>Keine Messwerte in diesem Zeitbereich</translation>
-    </message>
-    <message>
-        <source>Waiting for samples</source>
-        <translation>Warte auf Messwerte</translation>
-    </message>
-    <message>
-        <source>No channels chosen</source>
-        <translation>Keine Kanäle gewählt</translation>
-    </message>
-    <message>
-        <source>Channels: %1</source>
-        <translation>Kanäle: %1</translation>
-    </message>
-    <message>
-        <source>, </source>
-        <translation>, </translation>
-    </message>
-    <message>
-        <source>%1. %2</source>
-        <translation>%1. %2</translation>
-    </message>
-    <message>
-        <source>Time (s)</source>
-        <translation>Zeit (s)</translation>
-    </message>
-    <message>
         <source>Resume</source>
         <translation>Fortsetzen</translation>
     </message>
@@ -4864,14 +4902,6 @@ Gesendet: %2</translation>
     <message>
         <source>Live</source>
         <translation>Live</translation>
-    </message>
-    <message>
-        <source>t = %1 s</source>
-        <translation>t = %1 s</translation>
-    </message>
-    <message>
-        <source>%1: %2</source>
-        <translation>%1: %2</translation>
     </message>
     <message>
         <source>There is no sensor history to export.</source>
@@ -4902,16 +4932,8 @@ Gesendet: %2</translation>
         <translation>Angehalten: Ziehen oder Pfeiltasten verschieben, Mausrad oder +/- zoomt, Leertaste setzt fort</translation>
     </message>
     <message>
-        <source>%1 (unreliable)</source>
-        <translation>%1 (unzuverlässig)</translation>
-    </message>
-    <message>
         <source>Not live: no fresh data</source>
         <translation>Nicht live: keine frischen Daten</translation>
-    </message>
-    <message>
-        <source>%1 (moved %2 s)</source>
-        <translation>%1 (um %2 s verschoben)</translation>
     </message>
 </context>
 <context>

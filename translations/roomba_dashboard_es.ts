@@ -648,6 +648,14 @@
             <numerusform>Canales (%n)</numerusform>
         </translation>
     </message>
+    <message>
+        <source>plain numbers</source>
+        <translation>números sin unidad</translation>
+    </message>
+    <message>
+        <source>This plot&apos;s axes show %1 and %2: add a plot for %3</source>
+        <translation>Los ejes de este gráfico muestran %1 y %2: añada un gráfico para %3</translation>
+    </message>
 </context>
 <context>
     <name>CommandDecoder</name>
@@ -2970,58 +2978,6 @@ GPL-3.0-or-later.</translation>
         <translation>Mover, añadir y borrar las paredes, los bordes del escenario, la base y la pared virtual</translation>
     </message>
     <message>
-        <source>%1 × %2 m</source>
-        <translation>%1 × %2 m</translation>
-    </message>
-    <message>
-        <source>Editing %1: drag it or its handles · Delete removes it</source>
-        <translation>Editando %1: arrastre el objeto o sus asas · Supr lo borra</translation>
-    </message>
-    <message>
-        <source>Editing the room: click a thing to select it · right-click to add</source>
-        <translation>Editando la sala: haga clic en un objeto para elegirlo · clic derecho para añadir</translation>
-    </message>
-    <message>
-        <source>the wall</source>
-        <translation>la pared</translation>
-    </message>
-    <message>
-        <source>the stage edge</source>
-        <translation>el borde del escenario</translation>
-    </message>
-    <message>
-        <source>the dock</source>
-        <translation>la base</translation>
-    </message>
-    <message>
-        <source>the virtual wall</source>
-        <translation>la pared virtual</translation>
-    </message>
-    <message>
-        <source>Add wall here</source>
-        <translation>Añadir pared aquí</translation>
-    </message>
-    <message>
-        <source>Add stage edge here</source>
-        <translation>Añadir borde de escenario aquí</translation>
-    </message>
-    <message>
-        <source>Move the virtual wall here</source>
-        <translation>Mover la pared virtual aquí</translation>
-    </message>
-    <message>
-        <source>Add virtual wall here</source>
-        <translation>Añadir pared virtual aquí</translation>
-    </message>
-    <message>
-        <source>Put the dock here</source>
-        <translation>Poner la base aquí</translation>
-    </message>
-    <message>
-        <source>Delete %1</source>
-        <translation>Borrar %1</translation>
-    </message>
-    <message>
         <source>Robot not yet identified: a Roomba 500 or a Create 2? Until it is named, its wheel counts may read mirrored, so no path is drawn.</source>
         <translation>Robot aún sin identificar: ¿un Roomba 500 o un Create 2? Hasta que se indique, sus contadores de rueda pueden leerse al revés, así que no se dibuja ningún recorrido.</translation>
     </message>
@@ -3319,6 +3275,65 @@ GPL-3.0-or-later.</translation>
     <message>
         <source>A song holds at most %1 notes; remove one first</source>
         <translation>Una canción admite como máximo %1 notas; elimine una primero</translation>
+    </message>
+</context>
+<context>
+    <name>PlotStack</name>
+    <message>
+        <source>Remove this plot</source>
+        <translation>Quitar esta gráfica</translation>
+    </message>
+    <message>
+        <source>Sensor plot</source>
+        <translation>Gráfica de sensores</translation>
+    </message>
+    <message>
+        <source>Choose the channels to plot with the button above</source>
+        <translation>Elija los canales que desea representar con el botón de arriba</translation>
+    </message>
+    <message>
+        <source>No samples in this time range</source>
+        <translation>No hay muestras en este intervalo de tiempo</translation>
+    </message>
+    <message>
+        <source>Waiting for samples</source>
+        <translation>Esperando muestras</translation>
+    </message>
+    <message>
+        <source>%1 (unreliable)</source>
+        <translation>%1 (no fiable)</translation>
+    </message>
+    <message>
+        <source>%1 (moved %2 s)</source>
+        <translation>%1 (desplazado %2 s)</translation>
+    </message>
+    <message>
+        <source>No channels chosen</source>
+        <translation>Ningún canal elegido</translation>
+    </message>
+    <message>
+        <source>Channels: %1</source>
+        <translation>Canales: %1</translation>
+    </message>
+    <message>
+        <source>, </source>
+        <translation>, </translation>
+    </message>
+    <message>
+        <source>%1. %2</source>
+        <translation>%1. %2</translation>
+    </message>
+    <message>
+        <source>Time (s)</source>
+        <translation>Tiempo (s)</translation>
+    </message>
+    <message>
+        <source>t = %1 s</source>
+        <translation>t = %1 s</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
     </message>
 </context>
 <context>
@@ -4043,6 +4058,69 @@ Doble clic para renombrar</translation>
         <translation>No se pudo guardar la sala.
 
 %1</translation>
+    </message>
+</context>
+<context>
+    <name>RoomEditTool</name>
+    <message>
+        <source>Edit room</source>
+        <translation>Editar sala</translation>
+    </message>
+    <message>
+        <source>Add wall here</source>
+        <translation>Añadir pared aquí</translation>
+    </message>
+    <message>
+        <source>Add stage edge here</source>
+        <translation>Añadir borde de escenario aquí</translation>
+    </message>
+    <message>
+        <source>Move the virtual wall here</source>
+        <translation>Mover la pared virtual aquí</translation>
+    </message>
+    <message>
+        <source>Add virtual wall here</source>
+        <translation>Añadir pared virtual aquí</translation>
+    </message>
+    <message>
+        <source>Put the dock here</source>
+        <translation>Poner la base aquí</translation>
+    </message>
+    <message>
+        <source>Delete %1</source>
+        <translation>Borrar %1</translation>
+    </message>
+    <message>
+        <source>Editing %1: drag it or its handles · Delete removes it</source>
+        <translation>Editando %1: arrastre el objeto o sus asas · Supr lo borra</translation>
+    </message>
+    <message>
+        <source>Editing the room: click a thing to select it · right-click to add</source>
+        <translation>Editando la sala: haga clic en un objeto para elegirlo · clic derecho para añadir</translation>
+    </message>
+    <message>
+        <source>the wall</source>
+        <translation>la pared</translation>
+    </message>
+    <message>
+        <source>the stage edge</source>
+        <translation>el borde del escenario</translation>
+    </message>
+    <message>
+        <source>the dock</source>
+        <translation>la base</translation>
+    </message>
+    <message>
+        <source>the virtual wall</source>
+        <translation>la pared virtual</translation>
+    </message>
+    <message>
+        <source>%1 m</source>
+        <translation>%1 m</translation>
+    </message>
+    <message>
+        <source>%1 × %2 m</source>
+        <translation>%1 × %2 m</translation>
     </message>
 </context>
 <context>
@@ -4813,46 +4891,6 @@ Enviado: %2</translation>
         <translation>Todo el historial…</translation>
     </message>
     <message>
-        <source>Remove this plot</source>
-        <translation>Quitar esta gráfica</translation>
-    </message>
-    <message>
-        <source>Sensor plot</source>
-        <translation>Gráfica de sensores</translation>
-    </message>
-    <message>
-        <source>Choose the channels to plot with the button above</source>
-        <translation>Elija los canales que desea representar con el botón de arriba</translation>
-    </message>
-    <message>
-        <source>No samples in this time range</source>
-        <translation>No hay muestras en este intervalo de tiempo</translation>
-    </message>
-    <message>
-        <source>Waiting for samples</source>
-        <translation>Esperando muestras</translation>
-    </message>
-    <message>
-        <source>No channels chosen</source>
-        <translation>Ningún canal elegido</translation>
-    </message>
-    <message>
-        <source>Channels: %1</source>
-        <translation>Canales: %1</translation>
-    </message>
-    <message>
-        <source>, </source>
-        <translation>, </translation>
-    </message>
-    <message>
-        <source>%1. %2</source>
-        <translation>%1. %2</translation>
-    </message>
-    <message>
-        <source>Time (s)</source>
-        <translation>Tiempo (s)</translation>
-    </message>
-    <message>
         <source>Resume</source>
         <translation>Reanudar</translation>
     </message>
@@ -4863,14 +4901,6 @@ Enviado: %2</translation>
     <message>
         <source>Live</source>
         <translation>En vivo</translation>
-    </message>
-    <message>
-        <source>t = %1 s</source>
-        <translation>t = %1 s</translation>
-    </message>
-    <message>
-        <source>%1: %2</source>
-        <translation>%1: %2</translation>
     </message>
     <message>
         <source>There is no sensor history to export.</source>
@@ -4901,16 +4931,8 @@ Enviado: %2</translation>
         <translation>En pausa: arrastre o flechas para desplazar, rueda o +/- para ampliar, barra espaciadora para continuar</translation>
     </message>
     <message>
-        <source>%1 (unreliable)</source>
-        <translation>%1 (no fiable)</translation>
-    </message>
-    <message>
         <source>Not live: no fresh data</source>
         <translation>No en directo: sin datos nuevos</translation>
-    </message>
-    <message>
-        <source>%1 (moved %2 s)</source>
-        <translation>%1 (desplazado %2 s)</translation>
     </message>
 </context>
 <context>

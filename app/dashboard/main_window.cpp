@@ -36,6 +36,7 @@
 #include "script_editor.h"
 #include "selected_robot_view.h"
 #include "sensor_gauges.h"
+#include "plot_stack.h"
 #include "sensor_plots.h"
 #include "signal_bars.h"
 #include "song_composer.h"
@@ -155,10 +156,10 @@ void MainWindow::buildDocks()
     }
     plots->raise();
     // Start with what a class looks at first: the cliff signals and the battery.
-    if (m_plots->plotCount() == 0)
-        m_plots->addPlot();
-    m_plots->setChannels(0, {28, 29, 30, 31});
-    m_plots->addPlot({22, 23});
+    if (m_plots->stack()->plotCount() == 0)
+        m_plots->stack()->addPlot();
+    m_plots->stack()->setChannels(0, {28, 29, 30, 31});
+    m_plots->stack()->addPlot({22, 23});
     resizeDocks({plots}, {300}, Qt::Vertical);
     resizeDocks({modes, gauges}, {420, 480}, Qt::Horizontal);
 
@@ -231,7 +232,7 @@ void MainWindow::wireInputs()
     connect(m_map, &OdometryMap::worldEditRequested, m_roomActions, &RoomActions::edit);
     m_map->addActions({m_roomActions->undoAction(), m_roomActions->redoAction()});
     connect(m_inspector, &ByteInspector::plotRequested, this, [this](int packetId) {
-        m_plots->addPlot({packetId});
+        m_plots->stack()->addPlot({packetId});
         findChild<QDockWidget *>("plotsDock")->raise();
     });
     // Pad, keys and gamepad drive through the selected robot's sending rules.

@@ -109,7 +109,7 @@ Commands:
         roomba-ctl calibrate --compute --straight 1000 --measured 1040 --turns 2 --measured-angle 700
   csv RECORDING
       Print a recording (.oirec, from the dashboard or its --record) as CSV:
-      time_s, then one column per packet, one row per stream frame. A damaged
+      time_s, then one column per packet (key[unit]), one row per stream frame. A damaged
       recording prints up to the damage and says where it is on stderr.
   mcap RECORDING -o OUT.mcap [--compression zstd|lz4|none]
       Export a recording as MCAP for Foxglove, Lichtblick or PlotJuggler:

@@ -2,6 +2,7 @@
 #include "recording_file.h"
 
 #include "firmware_banner.h"
+#include "sensor_csv.h"
 #include "stream_parser.h"
 
 #include <QCoreApplication>
@@ -409,24 +410,14 @@ std::optional<oi::FirmwareInfo> Recording::firmware() const
 
 void Recording::writeCsv(QTextStream &out) const
 {
-    const std::vector<const oi::PacketInfo *> columns = streamedPackets();
-    out << "time_s";
-    for (const oi::PacketInfo *info : columns)
-        out << ',' << fromStd(info->key);
-    out << ",marker\n";
-    // Each marker on the first frame at or after it; the last frame takes the rest.
-    qsizetype marker = 0;
-    std::size_t frame = 0;
-    const auto markerCell = [&](qint64 timeUs) {
-        QStringList labels;
-        const bool last = ++frame == m_frames.size();
-        for (; marker < m_markers.size() && (last || m_markers[marker].timeUs <= timeUs); ++marker)
-            labels << m_markers[marker].label();
-        QString cell = labels.join(QStringLiteral("; "));
-        if (cell.contains(QLatin1Char(',')) || cell.contains(QLatin1Char('"')) || cell.contains(QLatin1Char('\n')))
-            cell = QLatin1Char('"') + cell.replace(QLatin1Char('"'), QStringLiteral("\"\"")) + QLatin1Char('"');
-        return cell;
-    };
+    // The markers in the last column, each on the first frame at or after it.
+    QList<SensorCsv::Mark> marks;
+    for (const RecordingMarker &m : m_markers)
+        marks << SensorCsv::Mark{static_cast<double>(m.timeUs) / 1e6, m.label()};
+    SensorCsv csv(streamedPackets(), marks);
+    QByteArray buffer;
+    csv.appendHeader(buffer);
+    std::vector<std::optional<std::int32_t>> cells(csv.columns().size());
     // A Reset recorded with the stream names the firmware; what it reports
     // wrongly is corrected in every frame, as the dashboard shows it (ERRATA 16).
     const auto firmware = this->firmware();
@@ -434,14 +425,17 @@ void Recording::writeCsv(QTextStream &out) const
         oi::SensorSnapshot s = frame;
         if (firmware)
             firmware->corrections.correct(s);
-        out << QString::number(static_cast<double>(timeUs) / 1e6, 'f', 6);
-        for (const oi::PacketInfo *info : columns) {
-            out << ',';
-            if (s.has(info->id))
-                out << s.raw(info->id);
+        for (std::size_t i = 0; i < cells.size(); ++i)
+            cells[i] = s.has(csv.columns()[i]->id) ? std::optional(s.raw(csv.columns()[i]->id)) : std::nullopt;
+        csv.appendRow(buffer, static_cast<double>(timeUs) / 1e6, cells);
+        // Out in pieces: an hour of frames is tens of megabytes.
+        if (buffer.size() >= 64 * 1024) {
+            out << QString::fromUtf8(buffer);
+            buffer.clear();
         }
-        out << ',' << markerCell(timeUs) << '\n';
     });
+    csv.finish(buffer);
+    out << QString::fromUtf8(buffer);
 }
 
 } // namespace oilink

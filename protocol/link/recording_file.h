@@ -141,8 +141,8 @@ public:
     std::vector<const oi::PacketInfo *> streamedPackets() const;
     // The firmware, when a Reset recorded with the stream printed its banner.
     std::optional<oi::FirmwareInfo> firmware() const;
-    // One row per frame: time_s, then one column per packet of the stream,
-    // then `marker`: the labels of the markers since the previous frame.
+    // One row per frame, in the form every sensor CSV has (SensorCsv): time_s,
+    // then one column per packet of the stream, and with markers `marker`.
     // Bit fields and signed values are written as the decoded numbers; the
     // angle corrected when the recording holds the firmware's banner.
     void writeCsv(QTextStream &out) const;

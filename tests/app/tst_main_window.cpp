@@ -19,6 +19,7 @@
 #include "odometry_map.h"
 #include "on_screen.h"
 #include "byte_inspector.h"
+#include "plot_stack.h"
 #include "sensor_plots.h"
 #include "pseudo_translation.h"
 #include "recording_file.h"
@@ -626,9 +627,9 @@ private slots:
         QTest::keyClick(note, Qt::Key_Return);
         QCOMPARE(window.session().markers().list().first().note, QString("hit the table leg"));
         QTRY_VERIFY(!note->isVisible()); // the toolbar lays itself out anew
-        QCOMPARE(window.sensorPlots()->markers().size(), 1);
-        QCOMPARE(window.sensorPlots()->markers().first().label, QString("hit the table leg"));
-        QCOMPARE(window.sensorPlots()->markers().first().seconds,
+        QCOMPARE(window.sensorPlots()->stack()->markers().size(), 1);
+        QCOMPARE(window.sensorPlots()->stack()->markers().first().label, QString("hit the table leg"));
+        QCOMPARE(window.sensorPlots()->stack()->markers().first().seconds,
                  window.session().markers().seconds(window.session().markers().list().first()));
         QCOMPARE(markers->list()->table()->item(0, 1)->text(), QString("hit the table leg"));
         for (int i = 0; i < 2; ++i) {
@@ -664,21 +665,21 @@ private slots:
         QVERIFY2(error.contains("missing.oirec"), qPrintable(error));
         QVERIFY2(comparison->open(path, &error), qPrintable(error));
         QTRY_VERIFY(comparison->bar()->isVisible());
-        QCOMPARE(window.sensorPlots()->comparisonHistory(), &comparison->run()->history());
+        QCOMPARE(window.sensorPlots()->stack()->comparisonHistory(), &comparison->run()->history());
         QVERIFY(!window.odometryMap()->comparisonPath().isEmpty());
         QCOMPARE(comparison->sharedMarkers(), (QStringList{"hit the table leg", "#2", "#3"}));
-        QCOMPARE(window.sensorPlots()->markers().size(), 6); // the run's own and the compared run's
+        QCOMPARE(window.sensorPlots()->stack()->markers().size(), 6); // the run's own and the compared run's
         QComboBox *align = comparison->bar()->alignment();
         QCOMPARE(align->count(), 4);
         align->setCurrentIndex(1);
         emit align->activated(1);
         QCOMPARE(comparison->alignedAt(), QString("hit the table leg"));
-        QCOMPARE(window.sensorPlots()->comparisonShiftSeconds(), 0.0);
+        QCOMPARE(window.sensorPlots()->stack()->comparisonShiftSeconds(), 0.0);
         QTest::mouseClick(comparison->bar()->closeButton(), Qt::LeftButton);
-        QCOMPARE(window.sensorPlots()->comparisonHistory(), nullptr);
+        QCOMPARE(window.sensorPlots()->stack()->comparisonHistory(), nullptr);
         QVERIFY(window.odometryMap()->comparisonPath().isEmpty());
         QTRY_VERIFY(!comparison->bar()->isVisible());
-        QCOMPARE(window.sensorPlots()->markers().size(), 3);
+        QCOMPARE(window.sensorPlots()->stack()->markers().size(), 3);
     }
 
     void languageSwitchesOnTheSpot()

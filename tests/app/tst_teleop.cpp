@@ -6,6 +6,7 @@
 #include "main_window.h"
 #include "projector_view.h"
 #include "recording_transport.h"
+#include "plot_stack.h"
 #include "sensor_plots.h"
 
 #include <QDir>
@@ -268,10 +269,10 @@ private slots:
         QVERIFY(inside);
         inside->setFocus();
         QVERIFY(QTest::qWaitFor([&] { return plots->isAncestorOf(QApplication::focusWidget()); }, 2000));
-        const bool paused = plots->isPaused();
+        const bool paused = plots->stack()->isPaused();
         QTest::keyClick(QApplication::focusWidget(), Qt::Key_Space);
         QVERIFY(rig.nothingMore());
-        QCOMPARE(plots->isPaused(), !paused);
+        QCOMPARE(plots->stack()->isPaused(), !paused);
     }
 
     // F11 puts the window in the projector view and takes it out again; in

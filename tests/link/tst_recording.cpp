@@ -395,7 +395,7 @@ private slots:
 
         const Recording r = load(path);
         const QStringList lines = csvLines(r);
-        const int angle = lines[0].split(',').indexOf("angle");
+        const int angle = lines[0].split(QLatin1Char(',')).indexOf("angle[deg]");
         QVERIFY(angle > 0);
         const QList<oi::SensorSnapshot> raw = allSnapshots(r);
         QCOMPARE(lines.size(), raw.size() + 1);
@@ -453,19 +453,22 @@ private slots:
 
         QString error;
         QVERIFY(Recording::saveMarkerEdits(path,
-                                           {MarkerEdit::remove(1), MarkerEdit::add({3, 2, "hit, \"hard\""}),
-                                            MarkerEdit::rename(9, "no such marker")},
+                                           {MarkerEdit::remove(1), MarkerEdit::add({3, 0, "hit, \"hard\""}),
+                                            MarkerEdit::rename(9, "no such marker"),
+                                            MarkerEdit::add({4, 10000000, "after the frames"})},
                                            &error));
         const Recording r = load(path);
         QVERIFY(!r.damage());
-        QCOMPARE(r.markers(), (QList<RecordingMarker>{{2, 0, ""}, {3, 2, "hit, \"hard\""}}));
+        QCOMPARE(r.markers(), (QList<RecordingMarker>{{2, 0, ""}, {3, 0, "hit, \"hard\""}, {4, 10000000, "after the frames"}}));
         QCOMPARE(r.markers()[0].label(), QString("#2"));
-        QCOMPARE(r.recordCount(), 8);
-        // In the CSV: on the frame at or after each marker, quoted as CSV quotes.
+        QCOMPARE(r.recordCount(), 9);
+        // In the CSV: on the frame at or after each marker, quoted as CSV
+        // quotes; one after the last frame on a row of its own.
         const QStringList lines = csvLines(r);
-        QVERIFY(lines[0].endsWith(",marker"));
-        QCOMPARE(lines.size(), 2);
-        QVERIFY2(lines[1].endsWith(",\"#2; hit, \"\"hard\"\"\""), qPrintable(lines[1]));
+        QCOMPARE(lines[0], QString("time_s,bumps_wheel_drops,marker"));
+        QCOMPARE(lines.size(), 3);
+        QVERIFY2(lines[1].endsWith(",3,\"#2; hit, \"\"hard\"\"\""), qPrintable(lines[1]));
+        QCOMPARE(lines[2], QString("10,,after the frames"));
     }
 
     // A damaged tail is kept; the new markers go before it, where they are read.
@@ -529,9 +532,9 @@ private slots:
         QCOMPARE(lines.size(), int(r.frames().size()) + 1);
         const QStringList columns = lines[0].split(',');
         QCOMPARE(columns.first(), QString("time_s"));
-        QCOMPARE(columns.size(), 1 + 52 + 1); // group 100: packets 7..58, and the markers
+        QCOMPARE(columns.size(), 1 + 52); // group 100: packets 7..58; no markers, no marker column
         QCOMPARE(columns[1], QString("bumps_wheel_drops"));
-        const int voltage = columns.indexOf("voltage");
+        const int voltage = columns.indexOf("voltage[mV]");
         QVERIFY(voltage > 0);
         const QList<oi::SensorSnapshot> all = allSnapshots(r);
         const QStringList row = lines[5].split(',');

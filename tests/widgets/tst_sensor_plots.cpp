@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "channel_chooser.h"
 #include "pseudo_translation.h"
+#include "plot_samples.h"
 #include "sensor_history.h"
+#include "plot_stack.h"
 #include "sensor_plots.h"
 #include "trace_columns.h"
 
@@ -26,62 +28,6 @@ using oi::SensorSnapshot;
 
 namespace {
 
-// Samples every 0.1 s from `first` (in tenths): voltage and current always,
-// the wall only on whole seconds.
-void feed(SensorHistory &h, int firstTenth, int count)
-{
-    for (int k = firstTenth; k < firstTenth + count; ++k) {
-        SensorSnapshot s(oi::profile(ProfileId::Create2));
-        s.set(22, 14000 + k);
-        s.set(23, -k);
-        if (k % 10 == 0)
-            s.set(8, (k / 10) % 2);
-        QVERIFY(h.append(k / 10.0, s));
-    }
-}
-
-// Points of a graph whose time lies within the plot's visible range.
-int visiblePoints(QCustomPlot *plot, int graph)
-{
-    const QCPRange r = plot->xAxis->range();
-    auto data = plot->graph(graph)->data();
-    return int(data->findEnd(r.upper, false) - data->findBegin(r.lower, false));
-}
-
-int heldPoints(const SensorHistory &h, int id, const QCPRange &r)
-{
-    return int(h.upperBound(id, r.upper) - h.lowerBound(id, r.lower));
-}
-
-// A plot draws only while it is shown; wide enough that 10 samples a
-// second never share a pixel column.
-void showWide(SensorPlots &plots)
-{
-    plots.resize(900, 500);
-    plots.show();
-    QVERIFY(QTest::qWaitForWindowExposed(&plots));
-}
-
-// A shown panel of one plot of `channels`, reading its own history, on a
-// clock the test moves.
-struct Scene {
-    SensorHistory history;
-    SensorPlots plots;
-    qint64 nowMs = 0;
-    explicit Scene(std::vector<int> channels)
-    {
-        plots.setClock([this] { return nowMs; });
-        showWide(plots);
-        plots.setHistory(&history);
-        QVERIFY(plots.setChannels(0, std::move(channels)));
-    }
-    // A display timer's tick later.
-    void refresh()
-    {
-        nowMs += 33;
-        plots.refresh();
-    }
-};
 
 QByteArray readAll(const QString &path)
 {
@@ -89,469 +35,43 @@ QByteArray readAll(const QString &path)
     return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
 }
 
-// The tracer's value label, if it is showing.
-QLabel *visibleReadout(QCustomPlot *plot)
-{
-    auto *label = plot->findChild<QLabel *>(QStringLiteral("tracerReadout"));
-    return label && !label->isHidden() ? label : nullptr;
-}
-
-int visibleTracers(QCustomPlot *plot)
-{
-    int n = 0;
-    for (int i = 0; i < plot->itemCount(); ++i)
-        if (auto *tracer = qobject_cast<QCPItemTracer *>(plot->item(i)))
-            n += tracer->visible() ? 1 : 0;
-    return n;
-}
-
 } // namespace
 
 class TestSensorPlots : public QObject {
     Q_OBJECT
 private slots:
-    void followsTheNewestSample()
-    {
-        Scene scene({22});
-        SensorHistory &h = scene.history;
-        SensorPlots &plots = scene.plots;
-        plots.setWindowSeconds(10);
-        feed(h, 0, 1000); // 0 .. 99.9 s
-        plots.refresh();
-        // The right edge is the next step (half a second here) at or after the newest sample.
-        QCOMPARE(plots.timeRange().upper, 100.0);
-        QCOMPARE(plots.timeRange().lower, 90.0);
-        QCustomPlot *plot = plots.plot(0);
-        QCOMPARE(plot->xAxis->range().upper, 100.0);
-        QCOMPARE(plot->graphCount(), 1);
-        QCOMPARE(visiblePoints(plot, 0), heldPoints(h, 22, plot->xAxis->range()));
-        QCOMPARE(visiblePoints(plot, 0), 100);
-        QCOMPARE((plot->graph(0)->data()->constEnd() - 1)->key, 99.9);
-
-        feed(h, 1000, 50); // appended, not reloaded
-        plots.refresh();
-        QCOMPARE(plot->xAxis->range().upper, 105.0);
-        QCOMPARE(visiblePoints(plot, 0), heldPoints(h, 22, plot->xAxis->range()));
-        QCOMPARE((plot->graph(0)->data()->constEnd() - 1)->value, 14000.0 + 1049);
-        // The value axis spans what is visible.
-        QVERIFY(plot->yAxis->range().contains(14000 + 1049));
-        QVERIFY(plot->yAxis->range().contains(14000 + 949));
-        QVERIFY(!plot->yAxis->range().contains(14000 + 900));
-    }
-
-    void fillsTheWindowFromTheLeftAtFirst()
-    {
-        Scene scene({22});
-        SensorHistory &h = scene.history;
-        SensorPlots &plots = scene.plots;
-        plots.setWindowSeconds(10);
-        feed(h, 20, 20); // 2.0 .. 3.9 s
-        plots.refresh();
-        QCOMPARE(plots.timeRange().lower, 2.0);
-        QCOMPARE(plots.timeRange().upper, 12.0);
-        QCOMPARE(visiblePoints(plots.plot(0), 0), 20);
-    }
-
-    void redrawsOnlyWhenSomethingChanged()
-    {
-        Scene scene({22});
-        SensorHistory &h = scene.history;
-        SensorPlots &plots = scene.plots;
-        plots.addPlot({23});
-        feed(h, 0, 100); // 0 .. 9.9 s in a 60 s window
-        scene.refresh();
-        const SensorPlots::DrawCounts first = plots.drawCounts(0), second = plots.drawCounts(1);
-        QVERIFY(first.full > 0);
-        scene.refresh();
-        scene.refresh();
-        QCOMPARE(plots.drawCounts(0).full, first.full);
-        QCOMPARE(plots.drawCounts(0).traces, first.traces);
-        QCOMPARE(plots.drawCounts(1).full, second.full);
-        QCOMPARE(plots.drawCounts(1).traces, second.traces);
-
-        // A sample in a new column, inside both axes: the traces alone.
-        feed(h, 100, 1);
-        scene.refresh();
-        QCOMPARE(plots.drawCounts(0).full, first.full);
-        QCOMPARE(plots.drawCounts(0).traces, first.traces + 1);
-        QCOMPARE(plots.drawCounts(1).full, second.full);
-        QCOMPARE(plots.drawCounts(1).traces, second.traces + 1);
-        QCOMPARE((plots.plot(0)->graph(0)->data()->constEnd() - 1)->value, 14100.0);
-
-        // A sample in the same column that is no new extreme: nothing.
-        SensorSnapshot same(oi::profile(ProfileId::Create2));
-        same.set(22, 14100);
-        same.set(23, -100);
-        QVERIFY(h.append(10.001, same));
-        scene.refresh();
-        QCOMPARE(plots.drawCounts(0).traces, first.traces + 1);
-        QCOMPARE(plots.drawCounts(1).traces, second.traces + 1);
-
-        // A value beyond the value axis: that plot is drawn whole.
-        SensorSnapshot high(oi::profile(ProfileId::Create2));
-        high.set(22, 20000);
-        high.set(23, -100);
-        QVERIFY(h.append(10.2, high));
-        scene.refresh();
-        QCOMPARE(plots.drawCounts(0).full, first.full + 1);
-        QVERIFY(plots.plot(0)->yAxis->range().contains(20000));
-        QCOMPARE(plots.drawCounts(1).full, second.full);
-        QCOMPARE(plots.drawCounts(1).traces, second.traces + 2);
-    }
-
-    // New samples redraw the traces only where they changed; what is on the
-    // screen then is what a whole redraw would show, line and steps alike.
-    void tracesDrawnInPartLookAsDrawnWhole()
-    {
-        Scene scene({22, 8});
-        auto sample = [&](int k) {
-            SensorSnapshot s(oi::profile(ProfileId::Create2));
-            s.set(22, 14000 + (k * 37) % 100); // within the value axis once it is set
-            s.set(8, (k / 7) % 2);
-            QVERIFY(scene.history.append(k / 10.0, s));
-        };
-        for (int k = 0; k < 100; ++k)
-            sample(k);
-        scene.refresh();
-        QCustomPlot *plot = scene.plots.plot(0);
-        const QImage before = plot->grab().toImage();
-        const SensorPlots::DrawCounts drawn = scene.plots.drawCounts(0);
-        for (int k = 100; k < 140; ++k) {
-            sample(k);
-            scene.refresh();
-        }
-        QCOMPARE(scene.plots.drawCounts(0).full, drawn.full);
-        QVERIFY(scene.plots.drawCounts(0).traces >= drawn.traces + 30);
-        const QImage inPart = plot->grab().toImage();
-        QVERIFY(inPart != before);
-        plot->replot();
-        const QImage whole = plot->grab().toImage();
-        int differing = 0;
-        for (int y = 0; y < whole.height(); ++y)
-            for (int x = 0; x < whole.width(); ++x)
-                differing += inPart.pixel(x, y) != whole.pixel(x, y);
-        QCOMPARE(differing, 0);
-    }
-
-    void hiddenPlotsCostNothingAndCatchUp()
-    {
-        Scene scene({22});
-        SensorHistory &h = scene.history;
-        SensorPlots &plots = scene.plots;
-        feed(h, 0, 100);
-        scene.refresh();
-        const SensorPlots::DrawCounts before = plots.drawCounts(0);
-        plots.hide();
-        feed(h, 100, 100);
-        scene.refresh();
-        QCOMPARE(plots.drawCounts(0).full, before.full);
-        QCOMPARE(plots.drawCounts(0).traces, before.traces);
-        QCOMPARE((plots.plot(0)->graph(0)->data()->constEnd() - 1)->key, 9.9);
-        scene.nowMs += 1000;
-        plots.show();
-        QTRY_COMPARE((plots.plot(0)->graph(0)->data()->constEnd() - 1)->key, 19.9);
-        QVERIFY(plots.drawCounts(0).full + plots.drawCounts(0).traces > before.full + before.traces);
-    }
-
-    void redrawsAtMostOncePerScreenRefresh()
-    {
-        Scene scene({22});
-        feed(scene.history, 0, 100);
-        scene.refresh();
-        const SensorPlots::DrawCounts before = scene.plots.drawCounts(0);
-        // Called again within the same millisecond: the data is taken, the
-        // drawing waits.
-        feed(scene.history, 100, 1);
-        scene.plots.refresh();
-        QCOMPARE(scene.plots.drawCounts(0).traces, before.traces);
-        QCOMPARE((scene.plots.plot(0)->graph(0)->data()->constEnd() - 1)->key, 10.0);
-        scene.nowMs += 5;
-        scene.plots.refresh();
-        QCOMPARE(scene.plots.drawCounts(0).traces, before.traces);
-        // A screen refresh later it is drawn, with no further refresh called.
-        scene.nowMs += 20;
-        QTRY_COMPARE(scene.plots.drawCounts(0).traces, before.traces + 1);
-        scene.refresh();
-        QCOMPARE(scene.plots.drawCounts(0).traces, before.traces + 1);
-    }
-
-    void liveAxisMovesInSteps()
-    {
-        Scene scene({22});
-        SensorHistory &h = scene.history;
-        SensorPlots &plots = scene.plots;
-        plots.setWindowSeconds(20); // steps of one second
-        feed(h, 0, 301);            // 0 .. 30 s
-        scene.refresh();
-        QCOMPARE(plots.timeRange(), QCPRange(10.0, 30.0));
-        const SensorPlots::DrawCounts before = plots.drawCounts(0);
-        feed(h, 301, 9); // to 30.9 s: the axis moves one step, once
-        for (int i = 0; i < 3; ++i)
-            scene.refresh();
-        QCOMPARE(plots.timeRange(), QCPRange(11.0, 31.0));
-        QCOMPARE(plots.drawCounts(0).full, before.full + 1);
-        feed(h, 310, 1); // 31.0 s: still inside the step
-        scene.refresh();
-        QCOMPARE(plots.timeRange(), QCPRange(11.0, 31.0));
-        QCOMPARE(plots.drawCounts(0).full, before.full + 1);
-    }
-
-    void tracesHoldTwoPointsAColumnAndKeepTheirExtremes()
-    {
-        // A second of 1 kHz samples in columns of 10 ms: a spike one sample
-        // wide and a dip survive.
-        TraceColumns columns(0.010);
-        for (int k = 0; k < 1000; ++k) {
-            int value = k % 7;
-            if (k == 333)
-                value = 900;
-            if (k == 777)
-                value = -50;
-            columns.add({k * 0.001 + 0.0005, value});
-        }
-        QCOMPARE(columns.columns().size(), std::size_t(100));
-        QCOMPARE(columns.pointCount(), std::size_t(200));
-        int highest = 0, lowest = 0;
-        double highestAt = 0;
-        columns.pointsFrom(0, [&](const SensorHistory::Sample &s) {
-            if (s.value > highest) {
-                highest = s.value;
-                highestAt = s.time;
-            }
-            lowest = std::min(lowest, s.value);
-        });
-        QCOMPARE(highest, 900);
-        QCOMPARE(highestAt, 0.3335);
-        QCOMPARE(lowest, -50);
-        // Points come in time order.
-        double last = -1;
-        columns.pointsFrom(0, [&](const SensorHistory::Sample &s) {
-            QVERIFY(s.time >= last);
-            last = s.time;
-        });
-        // Only a new column or a new extreme changes the points.
-        columns.takeChanged();
-        QVERIFY(!columns.add({0.9999, 3}));
-        QCOMPARE(columns.takeChanged(), columns.columns().size());
-        QVERIFY(columns.add({0.99995, 100}));
-        QCOMPARE(columns.takeChanged(), std::size_t(99));
-        QVERIFY(columns.add({1.0001, 1}));
-        QCOMPARE(columns.takeChanged(), std::size_t(100));
-        columns.dropBefore(0.5);
-        QCOMPARE(columns.columns().front().index, 50);
-        QCOMPARE(columns.columns().size(), std::size_t(51));
-    }
-
     // The badge says "Live" only while fresh data comes: never beside a
     // STALE banner at the end of a replay.
     void theBadgeSaysLiveOnlyWhileDataIsFresh()
     {
-        Scene scene({22});
-        SensorPlots &plots = scene.plots;
+        SensorPlots plots;
         QCOMPARE(plots.statusText(), QString("Live"));
         plots.setStale(true);
         QCOMPARE(plots.statusText(), QString("Not live: no fresh data"));
-        plots.setPaused(true);
+        plots.stack()->setPaused(true);
         QVERIFY(plots.statusText().startsWith("Paused"));
-        plots.setPaused(false);
+        plots.stack()->setPaused(false);
         QCOMPARE(plots.statusText(), QString("Not live: no fresh data"));
         plots.setStale(false);
         QCOMPARE(plots.statusText(), QString("Live"));
     }
 
-    void pauseStopsFollowingAndAllowsPanning()
+    // The window box shows the stack's window, whoever set it.
+    void windowBoxFollowsTheStack()
     {
-        Scene scene({22});
-        SensorHistory &h = scene.history;
-        SensorPlots &plots = scene.plots;
-        plots.setWindowSeconds(10);
-        feed(h, 0, 300);
-        plots.refresh();
-        const QCPRange before = plots.timeRange();
-        QCOMPARE(plots.plot(0)->interactions(), QCP::Interactions());
-
-        QSignalSpy paused(&plots, &SensorPlots::pausedChanged);
-        plots.setPaused(true);
-        QCOMPARE(paused.count(), 1);
-        QVERIFY(plots.plot(0)->interactions().testFlag(QCP::iRangeDrag));
-        QVERIFY(plots.plot(0)->interactions().testFlag(QCP::iRangeZoom));
-        QCOMPARE(plots.plot(0)->axisRect()->rangeDrag(), Qt::Horizontal);
-        feed(h, 300, 100);
-        plots.refresh();
-        QCOMPARE(plots.timeRange(), before);
-        QCOMPARE(plots.plot(0)->xAxis->range(), before);
-
-        // Panning back to where the plot holds no data loads it.
-        plots.setTimeRange(5.0, 10.0);
-        plots.refresh();
-        QCOMPARE(plots.plot(0)->xAxis->range(), QCPRange(5.0, 10.0));
-        QCOMPARE(visiblePoints(plots.plot(0), 0), heldPoints(h, 22, QCPRange(5.0, 10.0)));
-        QCOMPARE(visiblePoints(plots.plot(0), 0), 51);
-
-        plots.setPaused(false);
-        plots.refresh();
-        QCOMPARE(plots.timeRange().lower, 30.0);
-        QCOMPARE(plots.timeRange().upper, 40.0);
-        QCOMPARE(visiblePoints(plots.plot(0), 0), heldPoints(h, 22, plots.timeRange()));
-        QCOMPARE(plots.plot(0)->interactions(), QCP::Interactions());
-    }
-
-    void dragOnOnePlotMovesTheOthers()
-    {
-        SensorHistory h;
         SensorPlots plots;
-        plots.setHistory(&h);
-        plots.setChannels(0, {22});
-        plots.addPlot({23});
-        feed(h, 0, 600);
-        plots.refresh();
-        plots.setPaused(true);
-        plots.plot(0)->xAxis->setRange(12.0, 20.0); // what a drag does
-        QCOMPARE(plots.plot(1)->xAxis->range(), QCPRange(12.0, 20.0));
-        QCOMPARE(plots.timeRange(), QCPRange(12.0, 20.0));
-    }
-
-    void windowChoices()
-    {
-        Scene scene({22});
-        SensorHistory &h = scene.history;
-        SensorPlots &plots = scene.plots;
-        feed(h, 0, 7000); // 700 s
-        QSignalSpy changed(&plots, &SensorPlots::windowSecondsChanged);
-        plots.setWindowSeconds(30);
-        plots.refresh();
-        QCOMPARE(plots.timeRange().size(), 30.0);
-        QCOMPARE(plots.timeRange().upper, 700.5); // steps of 1.5 s
-        QCOMPARE(visiblePoints(plots.plot(0), 0), heldPoints(h, 22, plots.timeRange()));
-        plots.setWindowSeconds(600);
-        plots.refresh();
-        QCOMPARE(plots.timeRange().size(), 600.0);
-        // 6000 samples on fewer pixel columns: at most two points a column,
-        // and the first and last values still drawn.
-        QCustomPlot *plot = plots.plot(0);
-        const int columns = int(plot->axisRect()->width());
-        QVERIFY(heldPoints(h, 22, plots.timeRange()) > 2 * columns);
-        QVERIFY(visiblePoints(plot, 0) <= 2 * columns + 2);
-        QVERIFY(visiblePoints(plot, 0) > columns / 2);
-        bool found = false;
-        const QCPRange values = plot->graph(0)->getValueRange(found, QCP::sdBoth, plots.timeRange());
-        QVERIFY(found);
-        const auto shown = h.samples(22, plots.timeRange().lower, plots.timeRange().upper);
-        // The voltage rises by one a sample: the view's first column may
-        // start a few samples before it.
-        const double perColumn = 600.0 / columns / 0.1;
-        QVERIFY(std::abs(values.lower - shown.front().value) <= perColumn + 1);
-        QCOMPARE(values.upper, double(shown.back().value));
-        QCOMPARE(changed.count(), 2);
-
-        auto *box = plots.findChild<QComboBox *>();
+        auto *box = plots.findChild<QComboBox *>(QStringLiteral("window"));
         QVERIFY(box);
+        QCOMPARE(box->currentData().toDouble(), plots.stack()->windowSeconds());
+        plots.stack()->setWindowSeconds(600);
         QCOMPARE(box->currentData().toDouble(), 600.0);
-        plots.setWindowSeconds(1); // bounded
-        QCOMPARE(plots.windowSeconds(), SensorPlots::kMinWindowSeconds);
-        plots.setWindowSeconds(100000);
-        QCOMPARE(plots.windowSeconds(), SensorPlots::kMaxWindowSeconds);
-        plots.setWindowSeconds(45); // between the choices: gets its own entry
+        plots.stack()->setWindowSeconds(45); // between the choices: gets its own entry
         QCOMPARE(box->currentData().toDouble(), 45.0);
         QCOMPARE(box->currentText(), QStringLiteral("45 s"));
-    }
-
-    void channelsPerPlot()
-    {
-        SensorPlots plots;
-        QCOMPARE(plots.plotCount(), 1);
-        QCOMPARE(plots.addPlot({22, 23}), 1);
-        QCOMPARE(plots.plotCount(), 2);
-        QCOMPARE(plots.channels(1), (std::vector<int>{22, 23}));
-        QCOMPARE(plots.plot(1)->graphCount(), 2);
-        QCOMPARE(plots.plot(1)->graph(1)->name(), QStringLiteral("Current [mA]"));
-        QCOMPARE(plots.plot(1)->yAxis->label(), QStringLiteral("")); // mV and mA
-        QVERIFY(plots.setChannels(0, {46, 47, 46}));
-        QCOMPARE(plots.channels(0), (std::vector<int>{46, 47}));
-        QCOMPARE(plots.plot(0)->yAxis->label(), QStringLiteral(""));
-        QVERIFY(plots.setChannels(0, {54, 55}));
-        QCOMPARE(plots.plot(0)->yAxis->label(), QStringLiteral("mA"));
-
-        QVERIFY(!plots.setChannels(0, {100}));       // a group, not a packet
-        QVERIFY(!plots.setChannels(2, {22}));        // no such plot
-        QVERIFY(!plots.setChannels(0, {22, 23, 24, 25, 26, 27, 28, 29, 30}));
-        QCOMPARE(plots.channels(0), (std::vector<int>{54, 55}));
-        QCOMPARE(plots.plottedChannels(), (std::vector<int>{54, 55, 22, 23}));
-
-        // Ticking a channel in the chooser adds it.
-        QAction *voltage = plots.channelChooser(0)->actionFor(22);
-        QVERIFY(voltage && !voltage->isChecked());
-        voltage->trigger();
-        QCOMPARE(plots.channels(0), (std::vector<int>{54, 55, 22}));
-        QVERIFY(voltage->isChecked());
-        auto *battery = qobject_cast<QMenu *>(voltage->parent());
-        QVERIFY(battery);
-        QCOMPARE(battery->title(), QStringLiteral("Battery (1)"));
-        voltage->trigger();
-        QCOMPARE(plots.channels(0), (std::vector<int>{54, 55}));
-
-        QVERIFY(plots.removePlot(1));
-        QCOMPARE(plots.plotCount(), 1);
-        QVERIFY(!plots.removePlot(0)); // the last plot stays
-        QCOMPARE(plots.plottedChannels(), (std::vector<int>{54, 55}));
-    }
-
-    void chooserGroupsCoverEveryPacketOnce()
-    {
-        for (ProfileId id : oi::allProfiles()) {
-            const oi::RobotProfile &profile = oi::profile(id);
-            std::vector<int> seen;
-            const auto groups = ChannelChooser::groups(profile);
-            QVERIFY(groups.size() >= 6);
-            for (const auto &g : groups) {
-                QVERIFY(!g.title.isEmpty());
-                QVERIFY(!g.ids.empty());
-                seen.insert(seen.end(), g.ids.begin(), g.ids.end());
-            }
-            std::sort(seen.begin(), seen.end());
-            std::vector<int> all;
-            for (const oi::PacketInfo &info : profile.packets())
-                all.push_back(info.id);
-            std::sort(all.begin(), all.end());
-            QCOMPARE(seen, all);
-        }
-        const auto create2 = ChannelChooser::groups(oi::profile(ProfileId::Create2));
-        QCOMPARE(create2.front().title, QStringLiteral("Bumps & cliffs"));
-        QCOMPARE(create2[1].title, QStringLiteral("Battery"));
-        QCOMPARE(create2[1].ids, (std::vector<int>{21, 22, 23, 24, 25, 26, 34}));
-    }
-
-    void profileChangeDropsMissingChannels()
-    {
-        SensorPlots plots;
-        QVERIFY(plots.setChannels(0, {22, 46}));
-        plots.setProfile(oi::profile(ProfileId::Create1));
-        QCOMPARE(plots.channels(0), (std::vector<int>{22}));
-        QCOMPARE(plots.plot(0)->graphCount(), 1);
-        QVERIFY(!plots.channelChooser(0)->actionFor(46));
-        QVERIFY(plots.channelChooser(0)->actionFor(33));
-    }
-
-    // ERRATA 16: before 3.3.0 the distance is wrong. Its legend entry greys
-    // and says why; the angle beside it, corrected, stays as it is.
-    void unreliableDistanceIsGreyedInTheLegend()
-    {
-        SensorPlots plots;
-        QVERIFY(plots.setChannels(0, {19, 20}));
-        auto *legend = plots.findChild<QLabel *>("plotLegend");
-        QVERIFY(legend);
-        QVERIFY(!legend->text().contains("unreliable"));
-        QVERIFY(legend->toolTip().isEmpty());
-
-        plots.setCorrections(oi::correctionsFor({3, 2, 9}));
-        QVERIFY2(legend->text().contains("Distance [mm] (unreliable)"), qPrintable(legend->text()));
-        QVERIFY(!legend->text().contains("Angle [degrees] (unreliable)"));
-        QVERIFY2(legend->toolTip().contains("before 3.3.0") && legend->toolTip().contains("distance"),
-                 qPrintable(legend->toolTip()));
-
-        plots.setCorrections(oi::correctionsFor({3, 4, 0}));
-        QVERIFY(!legend->text().contains("unreliable"));
-        QVERIFY(legend->toolTip().isEmpty());
+        // And a choice in the box sets the stack's.
+        box->setCurrentIndex(box->findData(120.0));
+        emit box->activated(box->currentIndex());
+        QCOMPARE(plots.stack()->windowSeconds(), 120.0);
     }
 
     void exportsTheVisibleRange()
@@ -560,12 +80,12 @@ private slots:
         SensorHistory h;
         SensorPlots plots;
         plots.setHistory(&h);
-        plots.setWindowSeconds(10);
-        plots.setChannels(0, {22});
-        plots.addPlot({8, 22});
+        plots.stack()->setWindowSeconds(10);
+        plots.stack()->setChannels(0, {22});
+        plots.stack()->addPlot({8, 22});
         feed(h, 0, 201); // 0 .. 20 s
         plots.refresh();
-        QCOMPARE(plots.timeRange(), QCPRange(10.0, 20.0));
+        QCOMPARE(plots.stack()->timeRange(), QCPRange(10.0, 20.0));
 
         QByteArray expected = "time_s,voltage[mV],wall\n";
         for (int k = 100; k <= 200; ++k) {
@@ -591,6 +111,32 @@ private slots:
         QVERIFY(!error.isEmpty());
     }
 
+    // The markers drawn go into the export, each on the first row at or
+    // after it; those outside the range exported stay out.
+    void exportCarriesTheMarkers()
+    {
+        QTemporaryDir dir;
+        SensorHistory h;
+        SensorPlots plots;
+        plots.setHistory(&h);
+        plots.stack()->setWindowSeconds(10);
+        plots.stack()->setChannels(0, {22});
+        feed(h, 0, 201); // 0 .. 20 s
+        plots.setMarkers({{12.05, "hit the table leg"}, {3.0, "early"}});
+        plots.refresh();
+        const QString visible = dir.filePath(QStringLiteral("visible.csv"));
+        QString error;
+        QVERIFY2(plots.exportVisibleCsv(visible, &error), qPrintable(error));
+        const QList<QByteArray> lines = readAll(visible).split('\n');
+        QCOMPARE(lines[0], QByteArray("time_s,voltage[mV],marker"));
+        QCOMPARE(lines[1], QByteArray("10,14100,"));
+        QCOMPARE(lines[22], QByteArray("12.1,14121,hit the table leg"));
+        QCOMPARE(readAll(visible).count("early"), 0);
+        const QString all = dir.filePath(QStringLiteral("all.csv"));
+        QVERIFY(plots.exportAllCsv(all, &error));
+        QVERIFY(readAll(all).contains("\n3,14030,early\n"));
+    }
+
     void spaceTogglesPause()
     {
         SensorPlots plots;
@@ -599,174 +145,18 @@ private slots:
         plots.activateWindow();
         QVERIFY(QTest::qWaitForWindowActive(&plots));
         plots.setFocus();
-        QSignalSpy spy(&plots, &SensorPlots::pausedChanged);
+        QSignalSpy spy(plots.stack(), &PlotStack::pausedChanged);
         QTest::keyClick(&plots, Qt::Key_Space);
-        QVERIFY(plots.isPaused());
+        QVERIFY(plots.stack()->isPaused());
         QTest::keyClick(&plots, Qt::Key_Space);
-        QVERIFY(!plots.isPaused());
+        QVERIFY(!plots.stack()->isPaused());
         QTest::keyClick(&plots, Qt::Key_Space, Qt::ControlModifier);
-        QVERIFY(plots.isPaused());
+        QVERIFY(plots.stack()->isPaused());
         QCOMPARE(spy.count(), 3);
         // From inside a plot too.
-        plots.plot(0)->setFocus();
-        QTest::keyClick(plots.plot(0), Qt::Key_Space);
-        QVERIFY(!plots.isPaused());
-    }
-
-    void tracerReadsValuesWhilePaused()
-    {
-        SensorHistory h;
-        SensorPlots plots;
-        plots.resize(700, 400);
-        plots.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&plots));
-        plots.setHistory(&h);
-        plots.setWindowSeconds(10);
-        plots.setChannels(0, {22, 23});
-        feed(h, 0, 101);
-        plots.refresh();
-        QCustomPlot *plot = plots.plot(0);
-        plot->replot();
-        const QPointF at(plot->xAxis->coordToPixel(5.0), plot->yAxis->coordToPixel(plot->yAxis->range().center()));
-
-        QMouseEvent live(QEvent::MouseMove, at, plot->mapToGlobal(at), Qt::NoButton, Qt::NoButton, Qt::NoModifier);
-        QCoreApplication::sendEvent(plot, &live);
-        QVERIFY(!visibleReadout(plot)); // no tracer while following
-
-        plots.setPaused(true);
-        QMouseEvent paused(QEvent::MouseMove, at, plot->mapToGlobal(at), Qt::NoButton, Qt::NoButton, Qt::NoModifier);
-        QCoreApplication::sendEvent(plot, &paused);
-        QLabel *readout = visibleReadout(plot);
-        QVERIFY(readout);
-        QVERIFY(readout->text().startsWith(QStringLiteral("t = 5 s<br>")));
-        QVERIFY(readout->text().contains(QStringLiteral("Voltage: 14050 mV<br>")));
-        QVERIFY(readout->text().endsWith(QStringLiteral("Current: -50 mA")));
-        QCOMPARE(visibleTracers(plot), 2);
-        // Inside the plot area.
-        QVERIFY(plot->axisRect()->rect().contains(readout->geometry()));
-
-        QEvent leave(QEvent::Leave);
-        QCoreApplication::sendEvent(plot, &leave);
-        QVERIFY(!visibleReadout(plot));
-        QCOMPARE(visibleTracers(plot), 0);
-    }
-
-    void markersAreDrawnOnEveryPlot()
-    {
-        Scene scene({22});
-        SensorPlots &plots = scene.plots;
-        plots.addPlot({23});
-        plots.setWindowSeconds(10);
-        feed(scene.history, 0, 100); // 0 .. 9.9 s
-        plots.setPaused(true);
-        plots.setTimeRange(0, 10);
-        plots.setMarkers({{2.5, QStringLiteral("hit the table leg")}, {7.0, QString()}});
-        scene.refresh();
-        for (int i = 0; i < plots.plotCount(); ++i) {
-            QCustomPlot *plot = plots.plot(i);
-            QList<QCPItemLine *> lines;
-            QStringList labels;
-            for (int k = 0; k < plot->itemCount(); ++k) {
-                if (auto *line = qobject_cast<QCPItemLine *>(plot->item(k)))
-                    lines << line;
-                if (auto *text = qobject_cast<QCPItemText *>(plot->item(k)); text && text->visible())
-                    labels << text->text();
-            }
-            QCOMPARE(lines.size(), 2);
-            QCOMPARE(labels, QStringList{QStringLiteral("hit the table leg")});
-            // Vertical, at its time on the shared axis, across the data area.
-            const double x = plot->xAxis->coordToPixel(2.5);
-            QCOMPARE(lines[0]->start->pixelPosition().x(), x);
-            QCOMPARE(lines[0]->end->pixelPosition().x(), x);
-            QCOMPARE(lines[0]->start->pixelPosition().y(), double(plot->axisRect()->top()));
-            QCOMPARE(lines[0]->end->pixelPosition().y(), double(plot->axisRect()->top() + plot->axisRect()->height()));
-            // And it is painted there: a column of the line's colour where
-            // the background would be.
-            const QImage image = plot->grab().toImage();
-            const QColor background = image.pixelColor(int(plot->xAxis->coordToPixel(5.2)),
-                                                       plot->axisRect()->bottom() - 3);
-            int marked = 0;
-            for (int y = plot->axisRect()->top() + 30; y < plot->axisRect()->bottom() - 5; ++y)
-                marked += image.pixelColor(int(std::round(x)), y) != background ? 1 : 0;
-            QVERIFY2(marked > (plot->axisRect()->height() - 35) * 3 / 4, qPrintable(QString::number(marked)));
-        }
-        // A plot added later has them too; an empty list clears them.
-        const int added = plots.addPlot({8});
-        auto lineCount = [](QCustomPlot *plot) {
-            int n = 0;
-            for (int k = 0; k < plot->itemCount(); ++k)
-                n += qobject_cast<QCPItemLine *>(plot->item(k)) ? 1 : 0;
-            return n;
-        };
-        QCOMPARE(lineCount(plots.plot(added)), 2);
-        plots.setMarkers({});
-        for (int i = 0; i < plots.plotCount(); ++i)
-            QCOMPARE(lineCount(plots.plot(i)), 0);
-    }
-
-    void comparisonRunIsDrawnShiftedAndDashed()
-    {
-        Scene scene({22, 23});
-        SensorPlots &plots = scene.plots;
-        feed(scene.history, 0, 100); // 0 .. 9.9 s
-        SensorHistory other;
-        for (int k = 0; k < 100; ++k) {
-            SensorSnapshot s(oi::profile(ProfileId::Create2));
-            s.set(22, 15000 + k);
-            s.set(23, -2000);
-            QVERIFY(other.append(k / 10.0, s));
-        }
-        plots.setPaused(true);
-        plots.setTimeRange(0, 10);
-        plots.setComparison(&other, 1.5, QStringLiteral("second.oirec"), QStringLiteral("first.oirec"));
-        scene.refresh();
-        QCustomPlot *plot = plots.plot(0);
-        // One line per packet from each run; this run's lines come first.
-        QCOMPARE(plot->graphCount(), 4);
-        QCOMPARE(plot->graph(0)->pen().style(), Qt::SolidLine);
-        for (int g : {2, 3}) {
-            const QCPGraph *graph = plot->graph(g);
-            QCOMPARE(graph->pen().style(), Qt::CustomDashLine);
-            QCOMPARE(graph->pen().color().rgb(), plot->graph(g - 2)->pen().color().rgb());
-            QVERIFY(graph->pen().color().alpha() < 255);
-        }
-        // The other run's voltage, 1.5 s later: its first sample at 1.5 s.
-        auto voltage = plot->graph(2)->data();
-        QVERIFY(!voltage->isEmpty());
-        QCOMPARE(voltage->constBegin()->key, 1.5);
-        QCOMPARE(voltage->constBegin()->value, 15000.0);
-        // Its current (-2000) is inside the value axis, as this run's is.
-        QVERIFY(plot->yAxis->range().contains(-2000));
-        QVERIFY(plot->yAxis->range().contains(15000));
-        const QString legend = plot->parentWidget()->findChild<QLabel *>(QStringLiteral("plotLegend"))->text();
-        QVERIFY2(legend.contains(QStringLiteral("first.oirec")), qPrintable(legend));
-        QVERIFY2(legend.contains(QStringLiteral("second.oirec (moved 1.50 s)")), qPrintable(legend));
-        // Every plot overlays its packets, a new one too.
-        const int added = plots.addPlot({8});
-        scene.refresh();
-        QCOMPARE(plots.plot(added)->graphCount(), 2);
-
-        plots.setComparison(nullptr, 0, QString(), QString());
-        scene.refresh();
-        QCOMPARE(plot->graphCount(), 2);
-        QVERIFY(!plot->parentWidget()->findChild<QLabel *>(QStringLiteral("plotLegend"))->text().contains(
-            QStringLiteral("oirec")));
-    }
-
-    void clearedHistoryEmptiesThePlots()
-    {
-        Scene scene({22});
-        SensorHistory &h = scene.history;
-        SensorPlots &plots = scene.plots;
-        feed(h, 0, 50);
-        plots.refresh();
-        QCOMPARE(plots.plot(0)->graph(0)->dataCount(), 50);
-        h.clear();
-        plots.refresh();
-        QCOMPARE(plots.plot(0)->graph(0)->dataCount(), 0);
-        plots.setHistory(nullptr);
-        plots.refresh();
-        QCOMPARE(plots.plot(0)->graph(0)->dataCount(), 0);
+        plots.stack()->plot(0)->setFocus();
+        QTest::keyClick(plots.stack()->plot(0), Qt::Key_Space);
+        QVERIFY(!plots.stack()->isPaused());
     }
 
     // Renders three plots of a realistic drive to PNG, for a person to look at.
@@ -794,10 +184,10 @@ private slots:
         }
         SensorPlots plots;
         plots.setHistory(&h);
-        plots.setWindowSeconds(60);
-        plots.setChannels(0, {22});
-        plots.addPlot({23, 54, 55});
-        plots.addPlot({46, 47, 48});
+        plots.stack()->setWindowSeconds(60);
+        plots.stack()->setChannels(0, {22, 23});
+        plots.stack()->addPlot({54, 55});
+        plots.stack()->addPlot({46, 47, 48});
         plots.resize(900, 600);
         plots.show();
         QVERIFY(QTest::qWaitForWindowExposed(&plots));
@@ -805,10 +195,10 @@ private slots:
         QCoreApplication::processEvents();
         QVERIFY(plots.grab().save(QDir(QString::fromLocal8Bit(dir)).filePath(QStringLiteral("sensor_plots.png"))));
 
-        plots.setPaused(true);
-        plots.setTimeRange(120, 150);
+        plots.stack()->setPaused(true);
+        plots.stack()->setTimeRange(120, 150);
         plots.refresh();
-        QCustomPlot *plot = plots.plot(1);
+        QCustomPlot *plot = plots.stack()->plot(1);
         const QPointF at(plot->xAxis->coordToPixel(134.0), plot->height() / 2.0);
         QMouseEvent move(QEvent::MouseMove, at, plot->mapToGlobal(at), Qt::NoButton, Qt::NoButton, Qt::NoModifier);
         QCoreApplication::sendEvent(plot, &move);
@@ -828,7 +218,7 @@ private slots:
         plots.setMarkers({});
 
         // The channel menu and one of its groups.
-        QMenu *menu = plots.channelChooser(1)->menu();
+        QMenu *menu = plots.stack()->channelChooser(1)->menu();
         menu->popup(plots.mapToGlobal(QPoint(10, 60)));
         QVERIFY(QTest::qWaitForWindowExposed(menu));
         QVERIFY(menu->grab().save(QDir(QString::fromLocal8Bit(dir)).filePath(QStringLiteral("channel_menu.png"))));
@@ -854,8 +244,8 @@ private slots:
         SensorPlots empty;
         empty.setPalette(dark);
         empty.setHistory(&waiting);
-        empty.setChannels(0, {22});
-        empty.addPlot();
+        empty.stack()->setChannels(0, {22});
+        empty.stack()->addPlot();
         empty.resize(900, 400);
         empty.show();
         QVERIFY(QTest::qWaitForWindowExposed(&empty));
@@ -870,39 +260,39 @@ private slots:
         SensorPlots plots;
         plots.resize(800, 500);
         plots.setHistory(&h);
-        plots.setChannels(0, {22, 23});
-        plots.addPlot({}); // empty: shows its hint
+        plots.stack()->setChannels(0, {22, 23});
+        plots.stack()->addPlot({}); // empty: shows its hint
         feed(h, 0, 50);
         plots.refresh();
-        plots.setPaused(true);
+        plots.stack()->setPaused(true);
         plots.show();
         {
             ScopedPseudoTranslation pseudo;
             QCoreApplication::processEvents();
             QStringList left = untranslatedTexts(&plots);
             // Texts QCustomPlot and the menus draw themselves.
-            QStringList shown = {plots.plot(1)->xAxis->label(), plots.plot(0)->graph(0)->name(),
-                                 plots.plot(0)->accessibleDescription()};
-            for (QAction *a : plots.channelChooser(0)->menu()->actions())
+            QStringList shown = {plots.stack()->plot(1)->xAxis->label(), plots.stack()->plot(0)->graph(0)->name(),
+                                 plots.stack()->plot(0)->accessibleDescription()};
+            for (QAction *a : plots.stack()->channelChooser(0)->menu()->actions())
                 shown << a->text();
             for (QAction *a : plots.findChild<QPushButton *>("export")->menu()->actions())
                 shown << a->text();
-            for (int i = 0; i < plots.plot(1)->itemCount(); ++i)
-                if (auto *text = qobject_cast<QCPItemText *>(plots.plot(1)->item(i)))
+            for (int i = 0; i < plots.stack()->plot(1)->itemCount(); ++i)
+                if (auto *text = qobject_cast<QCPItemText *>(plots.stack()->plot(1)->item(i)))
                     shown << text->text();
             for (const QString &text : shown)
                 if (looksUntranslated(text))
                     left << text;
             QVERIFY2(left.isEmpty(), qPrintable(left.join('\n')));
-            QCOMPARE(plots.channels(0), std::vector<int>({22, 23}));
-            QVERIFY(plots.isPaused());
+            QCOMPARE(plots.stack()->channels(0), std::vector<int>({22, 23}));
+            QVERIFY(plots.stack()->isPaused());
         }
         QCoreApplication::processEvents();
         QCOMPARE(plots.findChild<QPushButton *>("addPlot")->text(), QString("Add plot"));
         QCOMPARE(plots.findChild<QPushButton *>("pause")->text(), QString("Resume"));
-        QCOMPARE(plots.channelChooser(0)->text(), QString("Channels (2)"));
-        QCOMPARE(plots.plot(0)->graph(0)->name(), QString("Voltage [mV]"));
-        QCOMPARE(plots.plot(0)->graph(0)->dataCount() > 0, true); // data loaded again
+        QCOMPARE(plots.stack()->channelChooser(0)->text(), QString("Channels (2)"));
+        QCOMPARE(plots.stack()->plot(0)->graph(0)->name(), QString("Voltage [mV]"));
+        QCOMPARE(plots.stack()->plot(0)->graph(0)->dataCount() > 0, true); // data loaded again
     }
 
     void keyboardReachesEveryControl()
@@ -911,8 +301,8 @@ private slots:
         SensorPlots plots;
         plots.resize(800, 500);
         plots.setHistory(&h);
-        plots.setChannels(0, {22});
-        plots.addPlot({23});
+        plots.stack()->setChannels(0, {22});
+        plots.stack()->addPlot({23});
         feed(h, 0, 200);
         plots.refresh();
         plots.show();
@@ -920,9 +310,9 @@ private slots:
         QVERIFY(QTest::qWaitForWindowActive(&plots));
         QList<QWidget *> expected = {plots.findChild<QWidget *>("pause"), plots.findChild<QWidget *>("window"),
                                      plots.findChild<QWidget *>("addPlot"), plots.findChild<QWidget *>("export")};
-        for (int i = 0; i < plots.plotCount(); ++i) {
-            QWidget *frame = plots.plot(i)->parentWidget();
-            expected << plots.channelChooser(i) << frame->findChild<QToolButton *>() << plots.plot(i);
+        for (int i = 0; i < plots.stack()->plotCount(); ++i) {
+            QWidget *frame = plots.stack()->plot(i)->parentWidget();
+            expected << plots.stack()->channelChooser(i) << frame->findChild<QToolButton *>() << plots.stack()->plot(i);
         }
         expected.first()->setFocus(Qt::TabFocusReason);
         QList<QWidget *> visited;
@@ -939,23 +329,23 @@ private slots:
             return out.join(", ");
         };
         QVERIFY2(visited == expected, qPrintable(names(visited) + "\nexpected: " + names(expected))); // reading order
-        for (int i = 0; i < plots.plotCount(); ++i) {
-            QVERIFY(!plots.plot(i)->accessibleName().isEmpty());
-            QVERIFY(!plots.plot(i)->accessibleDescription().isEmpty());
+        for (int i = 0; i < plots.stack()->plotCount(); ++i) {
+            QVERIFY(!plots.stack()->plot(i)->accessibleName().isEmpty());
+            QVERIFY(!plots.stack()->plot(i)->accessibleDescription().isEmpty());
         }
         // Paused, the arrows pan and +/- zoom the shared time axis.
-        QCustomPlot *plot = plots.plot(1);
+        QCustomPlot *plot = plots.stack()->plot(1);
         plot->setFocus();
         QTest::keyClick(plot, Qt::Key_Space);
-        QVERIFY(plots.isPaused());
-        const QCPRange before = plots.timeRange();
+        QVERIFY(plots.stack()->isPaused());
+        const QCPRange before = plots.stack()->timeRange();
         QTest::keyClick(plot, Qt::Key_Left);
-        QVERIFY(plots.timeRange().upper < before.upper);
-        QCOMPARE(plots.plot(0)->xAxis->range().upper, plots.timeRange().upper);
+        QVERIFY(plots.stack()->timeRange().upper < before.upper);
+        QCOMPARE(plots.stack()->plot(0)->xAxis->range().upper, plots.stack()->timeRange().upper);
         QTest::keyClick(plot, Qt::Key_Plus);
-        QVERIFY(plots.timeRange().size() < before.size());
+        QVERIFY(plots.stack()->timeRange().size() < before.size());
         QTest::keyClick(plot, Qt::Key_Minus);
-        QVERIFY(qAbs(plots.timeRange().size() - before.size()) < 1e-9);
+        QVERIFY(qAbs(plots.stack()->timeRange().size() - before.size()) < 1e-9);
     }
 };
 

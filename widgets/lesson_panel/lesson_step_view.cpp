@@ -4,6 +4,7 @@
 #include "lesson_runner.h"
 #include "oi_text.h"
 #include "robot_diagram.h"
+#include "plot_stack.h"
 #include "sensor_plots.h"
 #include "shipped_lessons.h"
 #include "value_gauge.h"
@@ -49,7 +50,7 @@ LessonStepView::LessonStepView(QWidget *parent)
     m_progress->setTextVisible(false);
     m_diagram = new RobotDiagram(this);
     m_plots = new SensorPlots(this);
-    m_plots->setWindowSeconds(30);
+    m_plots->stack()->setWindowSeconds(30);
 
     auto *goalRow = new QHBoxLayout;
     goalRow->addWidget(m_goal, 3);
@@ -146,7 +147,7 @@ void LessonStepView::showStep()
             channels.push_back(p->id);
     if (channels.empty())
         channels.push_back(lesson::packetByKey(*m_profile, "current")->id);
-    m_plots->setChannels(0, channels);
+    m_plots->stack()->setChannels(0, channels);
     rebuildReadouts();
 }
 

@@ -3,6 +3,7 @@
 
 #include "display_palette.h"
 #include "on_screen.h"
+#include "room_edit_tool.h"
 
 #include <QDoubleSpinBox>
 #include <QEvent>
@@ -30,7 +31,6 @@ constexpr double kZoomStep = 1.25;
 // How near the pointer must come to a wall or a handle, in pixels: big
 // enough for a finger-sized touchpad tap.
 constexpr double kGripPx = 9;
-constexpr double kHandlePx = 15; // a handle's side
 
 } // namespace
 
@@ -63,7 +63,16 @@ OdometryMap::OdometryMap(QWidget *parent) : QWidget(parent)
     m_edit = addButton("editRoom", QString());
     m_edit->setCheckable(true);
     m_edit->setVisible(false); // until there is a room to edit
-    connect(m_edit, &QPushButton::toggled, this, &OdometryMap::setEditing);
+    m_editTool = new RoomEditTool(this);
+    connect(m_edit, &QPushButton::toggled, m_editTool, &RoomEditTool::setEditing);
+    connect(m_editTool, &RoomEditTool::editRequested, this, &OdometryMap::worldEditRequested);
+    connect(m_editTool, &RoomEditTool::changed, this, qOverload<>(&QWidget::update));
+    connect(m_editTool, &RoomEditTool::editingChanged, this, [this](bool editing) {
+        setMouseTracking(editing); // the cursor shows what can be taken
+        const QSignalBlocker blocker(m_edit);
+        m_edit->setChecked(editing);
+        emit editingChanged(editing);
+    });
     connect(m_zoomIn, &QPushButton::clicked, this, &OdometryMap::zoomIn);
     connect(m_zoomOut, &QPushButton::clicked, this, &OdometryMap::zoomOut);
     connect(m_centre, &QPushButton::clicked, this, &OdometryMap::centreOnRobot);
@@ -253,38 +262,14 @@ void OdometryMap::setWorld(std::optional<sim::World> world)
 {
     m_world = std::move(world);
     m_edit->setVisible(m_world.has_value());
-    if (!m_world)
-        setEditing(false);
-    else if (m_selectedItem && !sim::contains(*m_world, *m_selectedItem))
-        m_selectedItem.reset();
+    m_editTool->setWorld(m_world ? &*m_world : nullptr);
     update();
 }
 
-void OdometryMap::setEditing(bool editing)
-{
-    editing = editing && m_world;
-    if (m_editing == editing)
-        return;
-    m_editing = editing;
-    m_itemHold.reset();
-    setMouseTracking(editing); // the cursor shows what can be taken
-    if (!editing)
-        m_selectedItem.reset();
-    {
-        const QSignalBlocker blocker(m_edit);
-        m_edit->setChecked(editing);
-    }
-    update();
-    emit editingChanged(editing);
-}
-
-void OdometryMap::setSelectedItem(std::optional<sim::WorldItem> item)
-{
-    if (item && !(m_world && sim::contains(*m_world, *item)))
-        item.reset();
-    m_selectedItem = item;
-    update();
-}
+void OdometryMap::setEditing(bool editing) { m_editTool->setEditing(editing); }
+bool OdometryMap::isEditing() const { return m_editTool->isEditing(); }
+std::optional<sim::WorldItem> OdometryMap::selectedItem() const { return m_editTool->selectedItem(); }
+void OdometryMap::setSelectedItem(std::optional<sim::WorldItem> item) { m_editTool->setSelectedItem(item); }
 
 double OdometryMap::gripToleranceMm() const { return kGripPx / m_scale; }
 
@@ -418,8 +403,7 @@ void OdometryMap::paintEvent(QPaintEvent *)
     paintGrid(painter, area);
     if (m_world)
         paintWorld(painter);
-    if (m_world && m_editing)
-        paintSelection(painter);
+    m_editTool->paintSelection(painter, *this);
 
     const bool identified = !m_odometry || m_odometry->isIdentified();
     const QList<QPointF> trail = this->trail();
@@ -438,7 +422,7 @@ void OdometryMap::paintEvent(QPaintEvent *)
 
     painter.setClipping(false);
     paintLegend(painter, area);
-    if (m_editing)
+    if (m_editTool->isEditing())
         paintEditBanner(painter, area);
 }
 
@@ -561,7 +545,7 @@ void OdometryMap::paintWorld(QPainter &painter) const
     painter.setPen(QPen(palette().color(QPalette::Text), 4, Qt::SolidLine, Qt::SquareCap));
     for (const sim::Segment &s : world.walls)
         painter.drawLine(widgetPointFor({s.x1, s.y1}), widgetPointFor({s.x2, s.y2}));
-    if (m_editing) {
+    if (m_editTool->isEditing()) {
         // Every wall's ends can be taken: show where.
         painter.setPen(Qt::NoPen);
         painter.setBrush(palette().color(QPalette::Text));
@@ -704,8 +688,12 @@ void OdometryMap::mousePressEvent(QMouseEvent *event)
 {
     if (!mapRect().contains(event->position().toPoint()))
         return;
-    if (m_editing && m_world && event->button() == Qt::LeftButton && pressOnWorld(event))
+    if (event->button() == Qt::LeftButton
+        && m_editTool->press(floorPointFor(event->position()), gripToleranceMm(),
+                             (event->modifiers() & Qt::ShiftModifier) != 0, truePoseAt(event->position()))) {
+        setCursor(m_editTool->hoverCursor(floorPointFor(event->position()), gripToleranceMm()));
         return;
+    }
     const bool turn = event->button() == Qt::RightButton
                       || (event->button() == Qt::LeftButton && (event->modifiers() & Qt::ShiftModifier));
     if (event->button() == Qt::LeftButton || turn) {
@@ -723,23 +711,14 @@ void OdometryMap::mousePressEvent(QMouseEvent *event)
 
 void OdometryMap::mouseMoveEvent(QMouseEvent *event)
 {
-    if (m_editing && m_world && !m_itemHold && !m_hold && !m_dragFrom) {
-        const auto grip = WorldGrip::at(*m_world, floorPointFor(event->position()), gripToleranceMm(), m_selectedItem);
-        if (!grip)
+    if (m_editTool->drag(floorPointFor(event->position())))
+        return;
+    if (m_editTool->isEditing() && !m_hold && !m_dragFrom) {
+        const Qt::CursorShape shape = m_editTool->hoverCursor(floorPointFor(event->position()), gripToleranceMm());
+        if (shape == Qt::ArrowCursor)
             unsetCursor();
         else
-            setCursor(grip->handle == WorldGrip::Handle::Body ? Qt::OpenHandCursor : Qt::CrossCursor);
-        return;
-    }
-    if (m_itemHold) {
-        sim::WorldEdit edit = m_itemHold->grip.dragged(m_itemHold->start, m_itemHold->fromMm,
-                                                       floorPointFor(event->position()), m_itemHold->turning);
-        edit.gesture = m_itemHold->last.gesture;
-        // Snapped: most pointer steps ask for the same floor again.
-        if (!(edit == m_itemHold->last)) {
-            m_itemHold->last = edit;
-            emit worldEditRequested(edit);
-        }
+            setCursor(shape);
         return;
     }
     if (m_hold) {
@@ -765,7 +744,7 @@ void OdometryMap::mouseReleaseEvent(QMouseEvent *)
 {
     m_dragFrom.reset();
     m_hold.reset();
-    m_itemHold.reset();
+    m_editTool->release();
     unsetCursor();
 }
 
@@ -779,88 +758,6 @@ void OdometryMap::mouseDoubleClickEvent(QMouseEvent *event)
 
 // --- Editing the room ---
 
-void OdometryMap::paintSelection(QPainter &painter) const
-{
-    if (!m_selectedItem || !sim::contains(*m_world, *m_selectedItem))
-        return;
-    const sim::World &world = *m_world;
-    const sim::WorldItem item = *m_selectedItem;
-    QColor halo = palette().color(QPalette::Highlight);
-    halo.setAlpha(110);
-    painter.setBrush(Qt::NoBrush);
-    painter.setPen(QPen(halo, 16, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
-    switch (item.part) {
-    case sim::WorldPart::Wall: {
-        const sim::Segment &s = world.walls[std::size_t(item.index)];
-        painter.drawLine(widgetPointFor({s.x1, s.y1}), widgetPointFor({s.x2, s.y2}));
-        // The wall itself in the highlight colour, so it stands out from its neighbours.
-        painter.setPen(QPen(palette().color(QPalette::Highlight), 6, Qt::SolidLine, Qt::RoundCap));
-        painter.drawLine(widgetPointFor({s.x1, s.y1}), widgetPointFor({s.x2, s.y2}));
-        paintLengthLabel(painter, widgetPointFor({(s.x1 + s.x2) / 2, (s.y1 + s.y2) / 2}),
-                         tr("%1 m").arg(std::hypot(s.x2 - s.x1, s.y2 - s.y1) / 1000, 0, 'f', 2));
-        break;
-    }
-    case sim::WorldPart::DropOff: {
-        const sim::Area &a = world.dropOffs[std::size_t(item.index)];
-        painter.setPen(QPen(halo, 10, Qt::SolidLine, Qt::SquareCap, Qt::MiterJoin));
-        const QRectF r = QRectF(widgetPointFor({a.xMin, a.yMax}), widgetPointFor({a.xMax, a.yMin})).normalized();
-        painter.drawRect(r);
-        paintLengthLabel(painter, r.center(),
-                         tr("%1 × %2 m").arg((a.xMax - a.xMin) / 1000, 0, 'f', 2).arg((a.yMax - a.yMin) / 1000, 0, 'f', 2));
-        break;
-    }
-    case sim::WorldPart::Dock: {
-        const auto &d = *world.dock;
-        const double r = std::max(14.0, 200 * m_scale);
-        painter.drawEllipse(widgetPointFor({d.x - 60 * std::cos(d.headingRad), d.y - 60 * std::sin(d.headingRad)}), r, r);
-        break;
-    }
-    case sim::WorldPart::VirtualWall: {
-        const auto &v = *world.virtualWall;
-        painter.drawLine(widgetPointFor({v.x, v.y}), widgetPointFor({v.x + v.rangeMm * std::cos(v.headingRad),
-                                                                      v.y + v.rangeMm * std::sin(v.headingRad)}));
-        break;
-    }
-    }
-    // Handles: squares in the highlight colour, ringed so they show on any floor.
-    const QList<std::pair<WorldGrip::Handle, QPointF>> handles = WorldGrip::handles(world, item);
-    for (const auto &[handle, where] : handles) {
-        const QPointF c = widgetPointFor(where);
-        if (handle == WorldGrip::Handle::Aim) {
-            // The heading handle hangs from a thin line so it reads as "turn me".
-            const QPointF from = item.part == sim::WorldPart::Dock ? widgetPointFor({world.dock->x, world.dock->y})
-                                                                   : widgetPointFor({world.virtualWall->x, world.virtualWall->y});
-            painter.setPen(QPen(palette().color(QPalette::Highlight), 2, Qt::DotLine));
-            painter.drawLine(from, c);
-        }
-        painter.setPen(QPen(palette().color(QPalette::Base), 2));
-        painter.setBrush(palette().color(QPalette::Highlight));
-        const QRectF square(c - QPointF(kHandlePx / 2, kHandlePx / 2), QSizeF(kHandlePx, kHandlePx));
-        if (handle == WorldGrip::Handle::Aim)
-            painter.drawEllipse(square);
-        else
-            painter.drawRect(square);
-    }
-    painter.setBrush(Qt::NoBrush);
-}
-
-void OdometryMap::paintLengthLabel(QPainter &painter, QPointF centre, const QString &text) const
-{
-    // On a plate of the base colour, so it reads over walls and hatching.
-    const QFont bold = display::valueFont(font(), 1.1);
-    const QFontMetricsF fm(bold);
-    const QRectF box(centre.x() - fm.horizontalAdvance(text) / 2 - 4, centre.y() + 8, fm.horizontalAdvance(text) + 8,
-                     fm.height() + 2);
-    painter.setPen(QPen(palette().color(QPalette::Highlight), 1.5));
-    painter.setBrush(palette().color(QPalette::Base));
-    painter.drawRoundedRect(box, 3, 3);
-    painter.setBrush(Qt::NoBrush);
-    painter.setFont(bold);
-    painter.setPen(palette().color(QPalette::Text));
-    painter.drawText(box, Qt::AlignCenter, text);
-    painter.setFont(font());
-}
-
 void OdometryMap::paintEditBanner(QPainter &painter, const QRect &area) const
 {
     // A frame round the map says the floor is open to the hand, from the back of the room.
@@ -868,10 +765,7 @@ void OdometryMap::paintEditBanner(QPainter &painter, const QRect &area) const
     painter.setPen(QPen(frame, 4));
     painter.setBrush(Qt::NoBrush);
     painter.drawRect(QRectF(area).adjusted(2, 2, -2, -2));
-    const QString text = m_selectedItem
-                             ? tr("Editing %1: drag it or its handles · Delete removes it")
-                                   .arg(itemName(m_selectedItem->part))
-                             : tr("Editing the room: click a thing to select it · right-click to add");
+    const QString text = m_editTool->bannerText();
     const QFont bold = display::valueFont(font(), 1.15);
     const QFontMetrics fm(bold);
     const int pad = fm.averageCharWidth();
@@ -890,69 +784,10 @@ void OdometryMap::paintEditBanner(QPainter &painter, const QRect &area) const
     painter.setFont(font());
 }
 
-QString OdometryMap::itemName(sim::WorldPart part) const
-{
-    switch (part) {
-    case sim::WorldPart::Wall: return tr("the wall");
-    case sim::WorldPart::DropOff: return tr("the stage edge");
-    case sim::WorldPart::Dock: return tr("the dock");
-    case sim::WorldPart::VirtualWall: return tr("the virtual wall");
-    }
-    return QString();
-}
-
-bool OdometryMap::pressOnWorld(QMouseEvent *event)
-{
-    const QPointF at = floorPointFor(event->position());
-    const std::optional<WorldGrip> grip = WorldGrip::at(*m_world, at, gripToleranceMm(), m_selectedItem);
-    // The selected thing's handles come before a robot standing on them;
-    // anything else comes after the robots.
-    const bool onHandle = grip && grip->item == m_selectedItem && grip->handle != WorldGrip::Handle::Body;
-    if (!onHandle && truePoseAt(event->position()))
-        return false;
-    if (!grip) {
-        setSelectedItem(std::nullopt);
-        return false;
-    }
-    setSelectedItem(grip->item);
-    const bool turn = (event->modifiers() & Qt::ShiftModifier) != 0;
-    m_itemHold = ItemHold{*grip, *m_world, at, turn, sim::WorldEdit::put(grip->item, *m_world)};
-    m_itemHold->last.gesture = ++m_lastGesture;
-    setCursor(grip->handle == WorldGrip::Handle::Body && !turn ? Qt::ClosedHandCursor : Qt::CrossCursor);
-    return true;
-}
-
-void OdometryMap::requestAdd(sim::WorldPart part, QPointF floorPoint)
-{
-    if (!m_world)
-        return;
-    sim::WorldEdit edit = addedAt(*m_world, part, floorPoint);
-    edit.gesture = ++m_lastGesture;
-    // The new one will be last in its list: selected once the floor comes back.
-    const int index = part == sim::WorldPart::Wall      ? int(m_world->walls.size())
-                      : part == sim::WorldPart::DropOff ? int(m_world->dropOffs.size())
-                                                        : 0;
-    emit worldEditRequested(edit);
-    m_selectedItem = sim::WorldItem{part, index};
-    update();
-}
-
 void OdometryMap::keyPressEvent(QKeyEvent *event)
 {
-    if (m_editing && m_selectedItem && (event->key() == Qt::Key_Delete || event->key() == Qt::Key_Backspace)) {
-        sim::WorldEdit edit = sim::WorldEdit::remove(*m_selectedItem);
-        edit.gesture = ++m_lastGesture;
-        m_selectedItem.reset();
-        m_itemHold.reset();
-        emit worldEditRequested(edit);
-        update();
-        return;
-    }
-    if (m_editing && m_selectedItem && event->key() == Qt::Key_Escape) {
-        setSelectedItem(std::nullopt);
-        return;
-    }
-    QWidget::keyPressEvent(event);
+    if (!m_editTool->keyPressed(event->key()))
+        QWidget::keyPressEvent(event);
 }
 
 QMenu *OdometryMap::contextMenuAt(QPoint at)
@@ -960,42 +795,9 @@ QMenu *OdometryMap::contextMenuAt(QPoint at)
     if (!m_world)
         return nullptr;
     auto *menu = new QMenu(this);
-    QAction *edit = menu->addAction(tr("Edit room"));
-    edit->setObjectName("editRoomAction");
-    edit->setCheckable(true);
-    edit->setChecked(m_editing);
-    connect(edit, &QAction::toggled, this, &OdometryMap::setEditing);
-    if (!m_editing)
-        return menu;
-    const QPointF floor = floorPointFor(at);
-    menu->addSeparator();
-    const auto add = [this, menu, floor](const char *name, const QString &text, sim::WorldPart part) {
-        QAction *a = menu->addAction(text);
-        a->setObjectName(name);
-        connect(a, &QAction::triggered, this, [this, part, floor] { requestAdd(part, floor); });
-    };
-    add("addWallAction", tr("Add wall here"), sim::WorldPart::Wall);
-    add("addDropOffAction", tr("Add stage edge here"), sim::WorldPart::DropOff);
-    add("putVirtualWallAction", m_world->virtualWall ? tr("Move the virtual wall here") : tr("Add virtual wall here"),
-        sim::WorldPart::VirtualWall);
-    add("putDockAction", tr("Put the dock here"), sim::WorldPart::Dock);
-    if (const auto grip = WorldGrip::at(*m_world, floor, gripToleranceMm(), m_selectedItem)) {
-        setSelectedItem(grip->item);
-        menu->addSeparator();
-        QAction *remove = menu->addAction(tr("Delete %1").arg(itemName(grip->item.part)));
-        remove->setObjectName("deleteItemAction");
-        remove->setShortcut(QKeySequence::Delete);
-        const sim::WorldItem item = grip->item;
-        connect(remove, &QAction::triggered, this, [this, item] {
-            sim::WorldEdit edit = sim::WorldEdit::remove(item);
-            edit.gesture = ++m_lastGesture;
-            m_selectedItem.reset();
-            emit worldEditRequested(edit);
-            update();
-        });
-    }
+    m_editTool->fillMenu(menu, floorPointFor(at), gripToleranceMm());
     // Whatever the owner of the room added (Undo, Redo).
-    if (!actions().isEmpty()) {
+    if (m_editTool->isEditing() && !actions().isEmpty()) {
         menu->addSeparator();
         menu->addActions(actions());
     }

@@ -6,7 +6,7 @@
 #include "robot_profile.h"
 #include "sensor_snapshot.h"
 #include "world.h" // the floor as plain values; no robot
-#include "world_grip.h"
+#include "world_edit.h"
 
 #include <QColor>
 #include <QList>
@@ -19,6 +19,7 @@
 #include <optional>
 
 class QDoubleSpinBox;
+class RoomEditTool;
 class QLabel;
 class QMenu;
 class QPushButton;
@@ -39,13 +40,9 @@ class QTimer;
 // whoever owns the room moves the robot, and the map shows it when the
 // true poses come back.
 //
-// The room itself can be edited (the Edit room button or the context menu):
-// click a wall, a stage edge (drop-off), the dock or the virtual wall to
-// select it, drag it or its handles (a wall's ends, a stage edge's corners,
-// the heading of the dock and of the virtual wall's beam; Shift turns the
-// dock), Delete removes it, and the context menu adds new ones where it was
-// opened. Again the map only asks (worldEditRequested) and draws the floor
-// it is given; it keeps only what is selected.
+// The room itself can be edited (the Edit room button or the context menu)
+// with its RoomEditTool, which asks for every change (worldEditRequested);
+// the map draws the floor it is given.
 class OdometryMap : public QWidget {
     Q_OBJECT
 public:
@@ -98,10 +95,11 @@ public:
 
     // Edit mode, offered while a room is shown.
     void setEditing(bool editing);
-    bool isEditing() const { return m_editing; }
+    bool isEditing() const;
     // The thing on the floor selected for editing.
-    std::optional<sim::WorldItem> selectedItem() const { return m_selectedItem; }
+    std::optional<sim::WorldItem> selectedItem() const;
     void setSelectedItem(std::optional<sim::WorldItem> item);
+    RoomEditTool *editTool() const { return m_editTool; }
     // The context menu as it would pop up at widget point `at`; the caller
     // owns it. nullptr when there is nothing to offer (no room shown).
     QMenu *contextMenuAt(QPoint at);
@@ -169,12 +167,7 @@ private:
     void refresh();
     void paintGrid(QPainter &painter, const QRect &area) const;
     void paintWorld(QPainter &painter) const;
-    void paintSelection(QPainter &painter) const;
     void paintEditBanner(QPainter &painter, const QRect &area) const;
-    void paintLengthLabel(QPainter &painter, QPointF centre, const QString &text) const;
-    bool pressOnWorld(QMouseEvent *event);
-    void requestAdd(sim::WorldPart part, QPointF floorPoint);
-    QString itemName(sim::WorldPart part) const;
     double gripToleranceMm() const;
     void paintTruePoses(QPainter &painter) const;
     QColor truePoseColour(qsizetype index) const;
@@ -214,18 +207,7 @@ private:
         bool turning = false;
     };
     std::optional<Hold> m_hold;
-    // A thing on the floor held by the pointer, and the floor when it was taken.
-    struct ItemHold {
-        WorldGrip grip;
-        sim::World start;
-        QPointF fromMm;
-        bool turning = false;
-        sim::WorldEdit last;
-    };
-    std::optional<ItemHold> m_itemHold;
-    bool m_editing = false;
-    std::optional<sim::WorldItem> m_selectedItem;
-    std::uint64_t m_lastGesture = 0;
+    RoomEditTool *m_editTool = nullptr;
     bool m_dirty = false;
 
     QWidget *m_controls = nullptr;

@@ -2,6 +2,7 @@
 #include "channel_chooser.h"
 
 #include "oi_text.h"
+#include "value_axes.h"
 
 #include <QAction>
 #include <QEvent>
@@ -134,6 +135,7 @@ void ChannelChooser::rebuildMenu()
         QMenu *sub = m_menu->addMenu(title);
         sub->menuAction()->setData(title);
         sub->installEventFilter(this);
+        sub->setToolTipsVisible(true); // why an entry is disabled
         m_subMenus << sub;
         for (int id : g.ids) {
             const oi::PacketInfo *info = m_profile->packet(id);
@@ -150,13 +152,22 @@ void ChannelChooser::rebuildMenu()
 void ChannelChooser::updateChecks()
 {
     const bool full = int(m_channels.size()) >= m_maximum;
+    // A plot has two value axes, one unit each: a third unit needs a plot of its own.
+    const QStringList units = valueaxes::units(*m_profile, m_channels);
+    const auto unitName = [](const QString &unit) { return unit.isEmpty() ? tr("plain numbers") : unit; };
     for (QAction *a : std::as_const(m_actions)) {
         if (!a)
             continue;
         const int id = a->data().toInt();
         const bool on = std::find(m_channels.begin(), m_channels.end(), id) != m_channels.end();
+        const oi::PacketInfo *info = m_profile->packet(id);
+        const bool otherUnit = !on && units.size() >= valueaxes::kMaxUnits && valueaxes::axisOf(*info, units) < 0;
         a->setChecked(on);
-        a->setEnabled(on || !full);
+        a->setEnabled(on || (!full && !otherUnit));
+        a->setToolTip(otherUnit ? tr("This plot's axes show %1 and %2: add a plot for %3")
+                                      .arg(unitName(units[0]), unitName(units[1]),
+                                           unitName(oitext::fromView(info->unit)))
+                                : QString());
     }
     // A group title counts its ticked channels, so they are easy to find again.
     for (QMenu *sub : std::as_const(m_subMenus)) {

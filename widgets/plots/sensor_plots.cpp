@@ -1,70 +1,29 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "sensor_plots.h"
 
-#include "channel_chooser.h"
 #include "display_palette.h"
-#include "oi_text.h"
+#include "plot_stack.h"
 #include "sensor_history.h"
-#include "trace_columns.h"
-#include "trace_plot.h"
 
 #include <QComboBox>
-#include <QElapsedTimer>
 #include <QEvent>
 #include <QFileDialog>
 #include <QHBoxLayout>
-#include <QKeyEvent>
 #include <QLabel>
 #include <QMenu>
 #include <QMessageBox>
 #include <QPushButton>
-#include <QScreen>
 #include <QShortcut>
-#include <QShowEvent>
-#include <QSplitter>
-#include <QToolButton>
 #include <QVBoxLayout>
 
 #include <algorithm>
+
 #include <cmath>
 #include <limits>
 
 namespace {
 
-// A feed whose drawn line has not changed since the plot was drawn.
-constexpr double kUnchanged = std::numeric_limits<double>::infinity();
-
-// Line colours for the channels of one plot. Not state colours, so they are
-// not in the display palette; mid-tone hues that read on light and dark
-// backgrounds alike.
-const QColor kSeriesColors[] = {
-    QColor(31, 119, 180), QColor(255, 127, 14), QColor(44, 160, 44),   QColor(214, 39, 40),
-    QColor(148, 103, 189), QColor(140, 86, 75), QColor(227, 119, 194), QColor(127, 127, 127),
-};
-static_assert(std::size(kSeriesColors) >= SensorPlots::kMaxChannelsPerPlot);
-
-// The comparison run's line: the channel's hue, lighter and dashed, and a
-// little wider than the solid line so the dashes read on a projector.
-QPen comparisonPen(const QColor &colour)
-{
-    QColor light = colour;
-    light.setAlpha(150);
-    QPen pen(light, 2.4);
-    pen.setDashPattern({4, 2.5});
-    return pen;
-}
-
 const double kWindowChoices[] = {10, 20, 30, 60, 120, 300, 600};
-
-// Zoom limits while paused: below a few frames nothing more is to be seen,
-// and a few hours is more than the history holds.
-constexpr double kMinTimeSpan = 0.1;
-constexpr double kMaxTimeSpan = 4 * 3600.0;
-
-
-// The value axis is fitted again when the data leaves it or fills less than
-// this part of it, not on every change.
-constexpr double kMinValueFill = 0.5;
 
 QString windowLabel(double seconds)
 {
@@ -73,81 +32,31 @@ QString windowLabel(double seconds)
     return SensorPlots::tr("%1 s").arg(seconds);
 }
 
-// Bit fields and states hold their value until the next sample; drawing
-// them as steps shows that, where a slope would invent values in between.
-bool isStepChannel(const oi::PacketInfo &info) { return info.bytes == 1; }
-
 } // namespace
 
-struct SensorPlots::GraphFeed {
-    int channel = 0;
-    QCPGraph *graph = nullptr;
-    QCPItemTracer *tracer = nullptr;
-    bool valid = false;
-    // Loaded up to the newest sample, so new samples can be appended.
-    bool live = false;
-    std::uint64_t loadedAppends = 0;
-    TraceColumns columns;
-    // The time span whose samples the graph holds in full.
-    double loadedFrom = 0.0;
-    double loadedTo = 0.0;
-    // The earliest time whose drawn line changed since the plot was drawn.
-    double changedFrom = kUnchanged;
-};
-
-// A packet of the comparison run, loaded for the visible range and shifted.
-struct SensorPlots::ComparisonFeed {
-    int channel = 0;
-    QCPGraph *graph = nullptr;
-    bool valid = false;
-    std::uint64_t loadedRevision = 0;
-    double columnSeconds = 0.0;
-    // The span (on the plot's time axis) whose samples the graph holds.
-    double loadedFrom = 0.0;
-    double loadedTo = 0.0;
-};
-
-struct SensorPlots::Panel {
-    QWidget *frame = nullptr;
-    ChannelChooser *chooser = nullptr;
-    QLabel *legend = nullptr;
-    QToolButton *remove = nullptr;
-    TracePlot *plot = nullptr;
-    QLabel *readout = nullptr; // the tracer's values, beside the mouse
-    QCPItemText *hint = nullptr;
-    std::vector<int> channels;
-    std::vector<GraphFeed> feeds;
-    std::vector<ComparisonFeed> comparisons;
-    QList<QCPAbstractItem *> markerItems;
-    bool dirty = true;
-    // Changed since it was last drawn; whole: the axes or items too.
-    bool pending = false;
-    bool pendingWhole = false;
-    qint64 drawnAtMs = std::numeric_limits<qint64>::min() / 2;
-    DrawCounts draws;
-};
-
-SensorPlots::SensorPlots(QWidget *parent)
-    : QWidget(parent), m_profile(&oi::profile(oi::ProfileId::Create2))
+SensorPlots::SensorPlots(QWidget *parent) : QWidget(parent)
 {
-    setClock({});
-    m_deferredDraw.setSingleShot(true);
-    connect(&m_deferredDraw, &QTimer::timeout, this, &SensorPlots::refresh);
     // Clicks give the panel focus for Space; Tab stops only on its controls.
     setFocusPolicy(Qt::ClickFocus);
-
+    // The controls first: Tab reaches them before the plots.
     m_pauseButton = new QPushButton(this);
+    m_windowBox = new QComboBox(this);
+    m_addButton = new QPushButton(this);
+    m_exportButton = new QPushButton(this);
+    m_stack = new PlotStack(this);
+
     m_pauseButton->setObjectName(QStringLiteral("pause"));
     m_pauseButton->setCheckable(true);
-    connect(m_pauseButton, &QPushButton::toggled, this, &SensorPlots::setPaused);
+    connect(m_pauseButton, &QPushButton::toggled, m_stack, &PlotStack::setPaused);
+    connect(m_stack, &PlotStack::pausedChanged, this, &SensorPlots::applyPaused);
 
-    m_windowBox = new QComboBox(this);
     m_windowBox->setObjectName(QStringLiteral("window"));
     for (double s : kWindowChoices)
         m_windowBox->addItem(windowLabel(s), s);
-    m_windowBox->setCurrentIndex(m_windowBox->findData(m_windowSeconds));
+    m_windowBox->setCurrentIndex(m_windowBox->findData(m_stack->windowSeconds()));
     connect(m_windowBox, &QComboBox::activated, this,
-            [this](int index) { setWindowSeconds(m_windowBox->itemData(index).toDouble()); });
+            [this](int index) { m_stack->setWindowSeconds(m_windowBox->itemData(index).toDouble()); });
+    connect(m_stack, &PlotStack::windowSecondsChanged, this, &SensorPlots::showWindowSeconds);
     m_windowLabel = new QLabel(this);
     m_windowLabel->setBuddy(m_windowBox);
 
@@ -155,11 +64,9 @@ SensorPlots::SensorPlots(QWidget *parent)
     m_status->setObjectName(QStringLiteral("plotStatus"));
     m_status->setMargin(3);
 
-    m_addButton = new QPushButton(this);
     m_addButton->setObjectName(QStringLiteral("addPlot"));
-    connect(m_addButton, &QPushButton::clicked, this, [this] { addPlot(); });
+    connect(m_addButton, &QPushButton::clicked, this, [this] { m_stack->addPlot(); });
 
-    m_exportButton = new QPushButton(this);
     m_exportButton->setObjectName(QStringLiteral("export"));
     auto *exportMenu = new QMenu(m_exportButton);
     m_exportVisible = exportMenu->addAction(QString(), this, [this] { exportInteractively(true); });
@@ -178,23 +85,17 @@ SensorPlots::SensorPlots(QWidget *parent)
     bar->addWidget(m_addButton);
     bar->addWidget(m_exportButton);
 
-    m_splitter = new QSplitter(Qt::Vertical, this);
-    m_splitter->setChildrenCollapsible(false);
-    m_splitter->setHandleWidth(5);
-
     auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(4, 4, 4, 4);
     layout->setSpacing(4);
     layout->addLayout(bar);
-    layout->addWidget(m_splitter, 1);
+    layout->addWidget(m_stack, 1);
 
     for (const QKeySequence &key : {QKeySequence(Qt::Key_Space), QKeySequence(Qt::CTRL | Qt::Key_Space)}) {
         auto *shortcut = new QShortcut(key, this);
         shortcut->setContext(Qt::WidgetWithChildrenShortcut);
-        connect(shortcut, &QShortcut::activated, this, [this] { setPaused(!m_paused); });
+        connect(shortcut, &QShortcut::activated, this, [this] { m_stack->setPaused(!m_stack->isPaused()); });
     }
-
-    addPlot();
     retranslateUi();
 }
 
@@ -211,198 +112,20 @@ void SensorPlots::retranslateUi()
     m_exportButton->setToolTip(tr("Write the plotted channels to a CSV file"));
     m_exportVisible->setText(tr("Visible range…"));
     m_exportAll->setText(tr("Whole history…"));
-    for (auto &panel : m_panels) {
-        panel->remove->setToolTip(tr("Remove this plot"));
-        panel->remove->setAccessibleName(tr("Remove this plot"));
-        panel->plot->setAccessibleName(tr("Sensor plot"));
-        rebuildGraphs(*panel); // graph names, legend and hint
-    }
-    updateAxisLabels();
     applyPaused();
-    refresh();
 }
 
-SensorPlots::~SensorPlots() = default;
+void SensorPlots::setHistory(const SensorHistory *history) { m_stack->setHistory(history); }
+const SensorHistory *SensorPlots::history() const { return m_stack->history(); }
+void SensorPlots::setProfile(const oi::RobotProfile &profile) { m_stack->setProfile(profile); }
+void SensorPlots::setCorrections(const oi::FirmwareCorrections &corrections) { m_stack->setCorrections(corrections); }
+void SensorPlots::setMarkers(const QList<PlotMarker> &markers) { m_stack->setMarkers(markers); }
+void SensorPlots::refresh() { m_stack->refresh(); }
 
-void SensorPlots::setHistory(const SensorHistory *history)
+void SensorPlots::setComparison(const SensorHistory *history, double shiftSeconds, const QString &label,
+                                const QString &primaryLabel)
 {
-    m_history = history;
-    m_seenGeneration = ~std::uint64_t{0}; // reload everything from the new one
-    for (auto &panel : m_panels)
-        panel->dirty = true;
-}
-
-void SensorPlots::setProfile(const oi::RobotProfile &profile)
-{
-    if (&profile == m_profile)
-        return;
-    m_profile = &profile;
-    for (auto &panel : m_panels) {
-        std::erase_if(panel->channels, [&](int id) { return !profile.packet(id); });
-        panel->chooser->setProfile(profile);
-        panel->chooser->setChannels(panel->channels);
-        rebuildGraphs(*panel); // names and units may differ (ERRATA 4)
-    }
-    updateAxisLabels();
-}
-
-int SensorPlots::addPlot(const std::vector<int> &channels)
-{
-    if (plotCount() >= kMaxPlots)
-        return -1;
-    auto panel = std::make_unique<Panel>();
-    Panel *p = panel.get();
-
-    p->frame = new QWidget(m_splitter);
-    p->chooser = new ChannelChooser(p->frame);
-    p->chooser->setProfile(*m_profile);
-    p->chooser->setMaximumChannels(kMaxChannelsPerPlot);
-    connect(p->chooser, &ChannelChooser::channelToggled, this,
-            [this, p](int id, bool on) { onChannelToggled(p, id, on); });
-    p->legend = new QLabel(p->frame);
-    p->legend->setObjectName(QStringLiteral("plotLegend"));
-    p->legend->setTextFormat(Qt::RichText);
-    p->legend->setWordWrap(true);
-    p->legend->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
-    p->remove = new QToolButton(p->frame);
-    p->remove->setText(QStringLiteral("\u2715"));
-    p->remove->setAutoRaise(true);
-    p->remove->setToolTip(tr("Remove this plot"));
-    p->remove->setAccessibleName(tr("Remove this plot"));
-    connect(p->remove, &QToolButton::clicked, this, [this, p] { removePlot(indexOf(p)); });
-
-    p->plot = new TracePlot(p->frame);
-    p->plot->setMinimumHeight(110);
-    // Reachable with Tab: paused, the arrow keys pan and +/- zoom.
-    p->plot->setFocusPolicy(Qt::StrongFocus);
-    p->plot->setAccessibleName(tr("Sensor plot"));
-    p->plot->setNoAntialiasingOnDrag(true);
-    // Scrolling redraws the axes 30 times a second; crisp pixel lines for the
-    // frame cost far less than antialiased ones and look the same.
-    p->plot->setNotAntialiasedElements(QCP::aeAxes | QCP::aeGrid | QCP::aeSubGrid);
-    p->plot->installEventFilter(this);
-    connect(p->plot, &QCustomPlot::afterReplot, this, [p] { ++p->draws.full; });
-    p->plot->axisRect()->setRangeDrag(Qt::Horizontal);
-    p->plot->axisRect()->setRangeZoom(Qt::Horizontal);
-    // Channels are named in the header row, where a legend cannot hide data.
-    p->plot->legend->setVisible(false);
-    p->plot->xAxis->setRange(m_timeRange);
-    connect(p->plot->xAxis, qOverload<const QCPRange &>(&QCPAxis::rangeChanged), this,
-            [this, plot = p->plot](const QCPRange &range) {
-                if (!m_syncing)
-                    syncTimeRange(range, plot);
-            });
-    connect(p->plot, &QCustomPlot::mouseMove, this, [this, p](QMouseEvent *event) {
-        if (m_paused)
-            showTracer(*p, event->position());
-    });
-
-    p->readout = new QLabel(p->plot);
-    p->readout->setObjectName(QStringLiteral("tracerReadout"));
-    p->readout->setTextFormat(Qt::RichText);
-    p->readout->setAttribute(Qt::WA_TransparentForMouseEvents);
-    p->readout->hide();
-
-    p->hint = new QCPItemText(p->plot);
-    p->hint->position->setType(QCPItemPosition::ptAxisRectRatio);
-    p->hint->position->setCoords(0.5, 0.5);
-    p->hint->setPositionAlignment(Qt::AlignCenter);
-
-    auto *header = new QHBoxLayout;
-    header->setContentsMargins(0, 0, 0, 0);
-    header->setSpacing(2);
-    header->addWidget(p->chooser);
-    header->addSpacing(6);
-    header->addWidget(p->legend, 1);
-    header->addWidget(p->remove);
-    auto *column = new QVBoxLayout(p->frame);
-    column->setContentsMargins(0, 0, 0, 0);
-    column->setSpacing(0);
-    column->addLayout(header);
-    column->addWidget(p->plot, 1);
-    m_splitter->addWidget(p->frame);
-    m_splitter->setStretchFactor(m_splitter->indexOf(p->frame), 1);
-
-    m_panels.push_back(std::move(panel));
-    applyTheme(*p);
-    rebuildGraphs(*p);
-    placeMarkers(*p);
-    const int index = plotCount() - 1;
-    if (!channels.empty())
-        setChannels(index, channels);
-    applyPaused();
-    updateAxisLabels();
-    // Equal heights for all plots, the new one included.
-    m_splitter->setSizes(QList<int>(plotCount(), std::max(1, m_splitter->height() / plotCount())));
-    return index;
-}
-
-bool SensorPlots::removePlot(int plotIndex)
-{
-    if (plotIndex < 0 || plotIndex >= plotCount() || plotCount() <= 1)
-        return false;
-    std::unique_ptr<Panel> panel = std::move(m_panels[std::size_t(plotIndex)]);
-    m_panels.erase(m_panels.begin() + plotIndex);
-    // Deleted later: the request may come from the panel's own button.
-    panel->plot->removeEventFilter(this);
-    panel->plot->disconnect(this);
-    panel->plot->xAxis->disconnect(this);
-    panel->chooser->disconnect(this);
-    panel->remove->disconnect(this);
-    panel->frame->hide();
-    panel->frame->deleteLater();
-    applyPaused();
-    updateAxisLabels();
-    return true;
-}
-
-bool SensorPlots::setChannels(int plotIndex, std::vector<int> ids)
-{
-    if (plotIndex < 0 || plotIndex >= plotCount())
-        return false;
-    std::vector<int> unique;
-    for (int id : ids) {
-        if (!m_profile->packet(id))
-            return false;
-        if (std::find(unique.begin(), unique.end(), id) == unique.end())
-            unique.push_back(id);
-    }
-    if (int(unique.size()) > kMaxChannelsPerPlot)
-        return false;
-    Panel &panel = *m_panels[std::size_t(plotIndex)];
-    panel.channels = std::move(unique);
-    panel.chooser->setChannels(panel.channels);
-    rebuildGraphs(panel);
-    updateAxisLabels();
-    return true;
-}
-
-std::vector<int> SensorPlots::channels(int plotIndex) const
-{
-    if (plotIndex < 0 || plotIndex >= plotCount())
-        return {};
-    return m_panels[std::size_t(plotIndex)]->channels;
-}
-
-std::vector<int> SensorPlots::plottedChannels() const
-{
-    std::vector<int> out;
-    for (const auto &panel : m_panels)
-        for (int id : panel->channels)
-            if (std::find(out.begin(), out.end(), id) == out.end())
-                out.push_back(id);
-    return out;
-}
-
-QCustomPlot *SensorPlots::plot(int plotIndex) const
-{
-    return plotIndex >= 0 && plotIndex < plotCount() ? m_panels[std::size_t(plotIndex)]->plot : nullptr;
-}
-
-ChannelChooser *SensorPlots::channelChooser(int plotIndex) const
-{
-    return plotIndex >= 0 && plotIndex < plotCount() ? m_panels[std::size_t(plotIndex)]->chooser
-                                                     : nullptr;
+    m_stack->setComparison(history, shiftSeconds, label, primaryLabel);
 }
 
 void SensorPlots::setStale(bool stale)
@@ -413,35 +136,10 @@ void SensorPlots::setStale(bool stale)
     applyPaused();
 }
 
-QString SensorPlots::statusText() const
-{
-    return m_status->text();
-}
+QString SensorPlots::statusText() const { return m_status->text(); }
 
-void SensorPlots::setPaused(bool paused)
+void SensorPlots::showWindowSeconds(double seconds)
 {
-    if (paused == m_paused)
-        return;
-    m_paused = paused;
-    if (!paused) {
-        // Data loaded for a panned view does not reach the newest sample.
-        for (auto &panel : m_panels) {
-            hideTracer(*panel);
-            for (GraphFeed &feed : panel->feeds)
-                if (!feed.live)
-                    feed.valid = false;
-            panel->dirty = true;
-        }
-    }
-    applyPaused();
-    emit pausedChanged(paused);
-}
-
-void SensorPlots::setWindowSeconds(double seconds)
-{
-    if (!std::isfinite(seconds))
-        return;
-    seconds = std::clamp(seconds, kMinWindowSeconds, kMaxWindowSeconds);
     int index = m_windowBox->findData(seconds);
     if (index < 0) {
         // A window between the choices gets its own entry, in order.
@@ -451,727 +149,56 @@ void SensorPlots::setWindowSeconds(double seconds)
         m_windowBox->insertItem(index, windowLabel(seconds), seconds);
     }
     m_windowBox->setCurrentIndex(index);
-    if (seconds == m_windowSeconds)
-        return;
-    m_windowSeconds = seconds;
-    if (m_paused) // keep the right edge where the user put it
-        syncTimeRange(QCPRange(m_timeRange.upper - seconds, m_timeRange.upper), nullptr);
-    emit windowSecondsChanged(seconds);
-}
-
-void SensorPlots::setTimeRange(double from, double to)
-{
-    if (!std::isfinite(from) || !std::isfinite(to) || !(from < to))
-        return;
-    syncTimeRange(QCPRange(from, to), nullptr);
-}
-
-void SensorPlots::syncTimeRange(const QCPRange &requested, const QCustomPlot *source)
-{
-    QCPRange range = requested;
-    const double size = range.size();
-    if (size < kMinTimeSpan || size > kMaxTimeSpan) {
-        const double centre = range.center();
-        const double bounded = std::clamp(size, kMinTimeSpan, kMaxTimeSpan);
-        range = QCPRange(centre - bounded / 2, centre + bounded / 2);
-    }
-    m_syncing = true;
-    m_timeRange = range;
-    for (auto &panel : m_panels) {
-        if (panel->plot != source || range != requested)
-            panel->plot->xAxis->setRange(range);
-        panel->dirty = true;
-    }
-    m_syncing = false;
-}
-
-QCPRange SensorPlots::liveTimeRange() const
-{
-    if (!m_history || m_history->isEmpty())
-        return QCPRange(0.0, m_windowSeconds);
-    // Fill the window from the left until it is full, then move on in steps
-    // so the axes stay put between them.
-    const double oldest = m_history->oldestTime(), newest = m_history->newestTime();
-    if (newest - oldest <= m_windowSeconds)
-        return QCPRange(oldest, oldest + m_windowSeconds);
-    const double step = m_windowSeconds * kLiveStepFraction;
-    const double upper = std::ceil(newest / step) * step;
-    return QCPRange(upper - m_windowSeconds, upper);
-}
-
-int SensorPlots::columnCount(const Panel &panel) const
-{
-    // The side margins are fixed (applyTheme), so this holds before the
-    // first layout too.
-    const QMargins margins = panel.plot->axisRect()->margins();
-    return std::max(1, panel.plot->width() - margins.left() - margins.right());
-}
-
-void SensorPlots::refresh()
-{
-    if (m_history && m_history->generation() != m_seenGeneration) {
-        m_seenGeneration = m_history->generation();
-        for (auto &panel : m_panels) {
-            for (GraphFeed &feed : panel->feeds)
-                feed.valid = false;
-            panel->dirty = true;
-        }
-    }
-    if (!m_paused) {
-        const QCPRange live = liveTimeRange();
-        if (live != m_timeRange)
-            syncTimeRange(live, nullptr);
-    }
-    const qint64 now = m_clock();
-    const qint64 minInterval = minRedrawMs();
-    for (auto &panel : m_panels) {
-        // Hidden: nothing now; showEvent() brings it up to date.
-        if (!panel->plot->isVisible())
-            continue;
-        const double columnSeconds = m_timeRange.size() / columnCount(*panel);
-        // The comparison sits with the axes, drawn whole when it changes.
-        for (ComparisonFeed &feed : panel->comparisons)
-            panel->dirty |= updateComparison(feed, columnSeconds);
-        bool changed = panel->dirty;
-        for (GraphFeed &feed : panel->feeds)
-            changed |= updateFeed(feed, m_timeRange.lower, m_timeRange.upper, columnSeconds);
-        if (changed) {
-            panel->pendingWhole |= panel->dirty;
-            panel->pendingWhole |= rescaleValues(*panel);
-            panel->pendingWhole |= updateHint(*panel);
-            panel->pending = true;
-            panel->dirty = false;
-        }
-        if (!panel->pending)
-            continue;
-        // Faster than the screen shows it would be drawn for nothing; the
-        // next refresh draws it.
-        if (now - panel->drawnAtMs < minInterval) {
-            if (!m_deferredDraw.isActive())
-                m_deferredDraw.start(int(minInterval - (now - panel->drawnAtMs)));
-            continue;
-        }
-        if (panel->pendingWhole) {
-            panel->plot->replot(); // counted by afterReplot
-        } else {
-            panel->plot->replotTraces(changedTracesRect(*panel));
-            ++panel->draws.traces;
-        }
-        panel->pending = panel->pendingWhole = false;
-        panel->drawnAtMs = now;
-        for (GraphFeed &feed : panel->feeds)
-            feed.changedFrom = kUnchanged;
-    }
-}
-
-QRect SensorPlots::changedTracesRect(const Panel &panel) const
-{
-    double from = kUnchanged;
-    for (const GraphFeed &feed : panel.feeds)
-        from = std::min(from, feed.changedFrom);
-    // The data area, and a few pixels round it for the pen; from the first
-    // changed point to the newest sample.
-    constexpr int kPen = 3;
-    QRect area = panel.plot->axisRect()->rect().adjusted(-kPen, -kPen, kPen, kPen);
-    if (from == kUnchanged)
-        return {};
-    if (std::isfinite(from)) {
-        const QCPAxis *time = panel.plot->xAxis;
-        const double left = time->coordToPixel(from) - kPen;
-        const double right = m_history ? time->coordToPixel(m_history->newestTime()) + kPen : area.right();
-        area.setLeft(std::max(area.left(), int(std::floor(left))));
-        area.setRight(std::min(area.right(), int(std::ceil(right))));
-    }
-    return area.intersected(panel.plot->rect());
-}
-
-qint64 SensorPlots::minRedrawMs() const
-{
-    const QScreen *shown = screen();
-    const double hz = shown && shown->refreshRate() > 1 ? shown->refreshRate() : 60.0;
-    return qint64(std::floor(1000.0 / hz));
-}
-
-void SensorPlots::setClock(std::function<qint64()> clock)
-{
-    if (!clock) {
-        auto steady = std::make_shared<QElapsedTimer>();
-        steady->start();
-        clock = [steady] { return steady->elapsed(); };
-    }
-    m_clock = std::move(clock);
-}
-
-void SensorPlots::showEvent(QShowEvent *event)
-{
-    QWidget::showEvent(event);
-    // Catch up with what came while hidden, once the plots are laid out.
-    QMetaObject::invokeMethod(this, &SensorPlots::refresh, Qt::QueuedConnection);
-}
-
-SensorPlots::DrawCounts SensorPlots::drawCounts(int plotIndex) const
-{
-    return plotIndex >= 0 && plotIndex < plotCount() ? m_panels[std::size_t(plotIndex)]->draws : DrawCounts{};
-}
-
-bool SensorPlots::updateFeed(GraphFeed &feed, double from, double to, double columnSeconds)
-{
-    QSharedPointer<QCPGraphDataContainer> data = feed.graph->data();
-    if (!m_history || !m_history->isChannel(feed.channel)) {
-        const bool hadData = !data->isEmpty();
-        data->clear();
-        if (hadData)
-            feed.changedFrom = -std::numeric_limits<double>::infinity();
-        feed.valid = false;
-        return hadData;
-    }
-    const SensorHistory &h = *m_history;
-    const std::uint64_t appended = h.appendCount(feed.channel);
-    const std::size_t held = h.sampleCount(feed.channel);
-    const double span = to - from;
-
-    // Puts the columns that changed into the graph.
-    auto show = [&] {
-        const std::size_t first = feed.columns.takeChanged();
-        const auto &columns = feed.columns.columns();
-        if (first == 0) {
-            data->clear();
-            feed.changedFrom = -std::numeric_limits<double>::infinity();
-        } else {
-            // Everything after the newest unchanged column's last point.
-            const TraceColumns::Column &kept = columns[first - 1];
-            const double keptUntil = std::max(kept.min.time, kept.max.time);
-            data->removeAfter(keptUntil);
-            // The line on from that point is drawn anew.
-            feed.changedFrom = std::min(feed.changedFrom, keptUntil);
-        }
-        QVector<QCPGraphData> points;
-        points.reserve(qsizetype(2 * (columns.size() - first)));
-        feed.columns.pointsFrom(first, [&points](const SensorHistory::Sample &s) {
-            points.append(QCPGraphData(s.time, s.value));
-        });
-        data->add(points, true);
-    };
-
-    auto reload = [&](double lo, double hi, bool live) {
-        std::size_t first = h.lowerBound(feed.channel, lo);
-        std::size_t end = h.upperBound(feed.channel, hi);
-        // One sample either side, so lines run on to the plot's edges.
-        if (first > 0)
-            --first;
-        if (end < held)
-            ++end;
-        feed.columns.reset(columnSeconds);
-        for (const SensorHistory::Sample &s : h.samplesAt(feed.channel, first, end))
-            feed.columns.add(s);
-        show();
-        feed.valid = true;
-        feed.live = live;
-        feed.loadedAppends = appended;
-        feed.loadedFrom = lo;
-        feed.loadedTo = live ? to : hi;
-        return true;
-    };
-
-    const bool sameColumns = feed.columns.columnSeconds() == columnSeconds;
-    if (m_paused) {
-        if (feed.valid && sameColumns && from >= feed.loadedFrom && to <= feed.loadedTo)
-            return false;
-        // A span either side, so small pans need no reload.
-        return reload(from - span, to + span, false);
-    }
-
-    // Live: keep half a window before the view for a smooth step.
-    const double keepFrom = from - span / 2;
-    const std::uint64_t fresh = appended - feed.loadedAppends;
-    if (!feed.valid || !feed.live || !sameColumns || from < feed.loadedFrom || fresh > held)
-        return reload(keepFrom, std::numeric_limits<double>::infinity(), true);
-    bool changed = false;
-    if (fresh > 0) {
-        for (const SensorHistory::Sample &s : h.samplesAt(feed.channel, held - std::size_t(fresh), held))
-            changed |= feed.columns.add(s);
-        feed.loadedAppends = appended;
-        if (changed)
-            show();
-    }
-    // Trim in steps of a quarter window rather than every frame; what goes
-    // is out of sight.
-    if (keepFrom > feed.loadedFrom + span / 4) {
-        feed.columns.dropBefore(keepFrom);
-        data->removeBefore(keepFrom);
-        feed.loadedFrom = keepFrom;
-    }
-    feed.loadedTo = std::max(feed.loadedTo, to);
-    return changed;
-}
-
-bool SensorPlots::rescaleValues(Panel &panel)
-{
-    QCPRange values;
-    bool any = false;
-    // Both runs' lines, where a comparison is shown.
-    for (int g = 0; g < panel.plot->graphCount(); ++g) {
-        bool found = false;
-        const QCPRange r = panel.plot->graph(g)->getValueRange(found, QCP::sdBoth, m_timeRange);
-        if (!found)
-            continue;
-        if (any)
-            values.expand(r);
-        else
-            values = r;
-        any = true;
-    }
-    if (!any)
-        return false;
-    if (values.size() == 0) // a flat line sits in the middle, not on an edge
-        values = QCPRange(values.lower - 1, values.upper + 1);
-    const QCPRange shown = panel.plot->yAxis->range();
-    // Kept while the data stays inside and fills enough of it: the axes are
-    // then not drawn again.
-    if (shown.contains(values.lower) && shown.contains(values.upper)
-        && values.size() >= shown.size() * kMinValueFill)
-        return false;
-    const double margin = values.size() * 0.08;
-    panel.plot->yAxis->setRange(values.lower - margin, values.upper + margin);
-    return true;
-}
-
-void SensorPlots::rebuildGraphs(Panel &panel)
-{
-    hideTracer(panel);
-    for (GraphFeed &feed : panel.feeds)
-        panel.plot->removeItem(feed.tracer);
-    panel.plot->clearGraphs();
-    panel.feeds.clear();
-    const QColor text = palette().color(QPalette::Text);
-    for (std::size_t i = 0; i < panel.channels.size(); ++i) {
-        const oi::PacketInfo *info = m_profile->packet(panel.channels[i]);
-        GraphFeed feed;
-        feed.channel = panel.channels[i];
-        feed.graph = panel.plot->addTrace();
-        feed.graph->setName(ChannelChooser::channelLabel(*info));
-        feed.graph->setPen(QPen(kSeriesColors[i], 1.6));
-        feed.graph->setLineStyle(isStepChannel(*info) ? QCPGraph::lsStepLeft : QCPGraph::lsLine);
-        // Tied to its graph when first shown: tying it to an empty graph
-        // makes QCustomPlot complain.
-        feed.tracer = new QCPItemTracer(panel.plot);
-        feed.tracer->setLayer(panel.plot->tracesLayer()); // over its line
-        feed.tracer->setInterpolating(false);
-        feed.tracer->setStyle(QCPItemTracer::tsCircle);
-        feed.tracer->setSize(8);
-        feed.tracer->setPen(QPen(text, 1.2));
-        feed.tracer->setBrush(kSeriesColors[i]);
-        feed.tracer->setVisible(false);
-        panel.feeds.push_back(feed);
-    }
-    panel.comparisons.clear();
-    if (m_comparison) {
-        for (std::size_t i = 0; i < panel.channels.size(); ++i) {
-            ComparisonFeed feed;
-            feed.channel = panel.channels[i];
-            // Under the live traces, with the axes: it changes only when they do.
-            feed.graph = new QCPGraph(panel.plot->xAxis, panel.plot->yAxis);
-            feed.graph->setName(m_comparisonLabel);
-            feed.graph->setPen(comparisonPen(kSeriesColors[i]));
-            feed.graph->setLineStyle(panel.feeds[i].graph->lineStyle());
-            panel.comparisons.push_back(feed);
-        }
-    }
-    updateLegend(panel);
-    panel.dirty = true;
-    updateHint(panel);
-}
-
-bool SensorPlots::updateHint(Panel &panel)
-{
-    QString hint;
-    if (panel.feeds.empty()) {
-        hint = tr("Choose the channels to plot with the button above");
-    } else {
-        bool any = false;
-        for (const GraphFeed &feed : panel.feeds) {
-            auto data = feed.graph->data();
-            any = any || data->findBegin(m_timeRange.lower, false) != data->findEnd(m_timeRange.upper, false);
-        }
-        if (!any)
-            hint = m_history && !m_history->isEmpty() ? tr("No samples in this time range")
-                                                       : tr("Waiting for samples");
-    }
-    if (hint == panel.hint->text() && panel.hint->visible() == !hint.isEmpty())
-        return false;
-    panel.hint->setText(hint);
-    panel.hint->setVisible(!hint.isEmpty());
-    updatePlotDescription(panel);
-    return true;
-}
-
-void SensorPlots::setCorrections(const oi::FirmwareCorrections &corrections)
-{
-    if (corrections == m_corrections)
-        return;
-    m_corrections = corrections;
-    for (auto &panel : m_panels)
-        updateLegend(*panel);
-}
-
-void SensorPlots::setMarkers(const QList<PlotMarker> &markers)
-{
-    if (markers == m_markers)
-        return;
-    m_markers = markers;
-    for (auto &panel : m_panels)
-        placeMarkers(*panel);
-    refresh();
-}
-
-void SensorPlots::placeMarkers(Panel &panel)
-{
-    for (QCPAbstractItem *item : std::as_const(panel.markerItems))
-        panel.plot->removeItem(item);
-    panel.markerItems.clear();
-    const QColor text = palette().color(QPalette::Text);
-    QColor line = text;
-    line.setAlpha(170);
-    QColor back = palette().color(QPalette::Base);
-    back.setAlpha(215);
-    QFont small = font();
-    small.setPointSizeF(std::max(7.0, (font().pointSizeF() > 0 ? font().pointSizeF() : 9.0) * 0.9));
-    for (const PlotMarker &marker : std::as_const(m_markers)) {
-        // At its time on the shared axis, from the top of the data area to the bottom.
-        auto *mark = new QCPItemLine(panel.plot);
-        for (QCPItemPosition *end : {mark->start, mark->end}) {
-            end->setTypeX(QCPItemPosition::ptPlotCoords);
-            end->setTypeY(QCPItemPosition::ptAxisRectRatio);
-        }
-        mark->start->setCoords(marker.seconds, 0);
-        mark->end->setCoords(marker.seconds, 1);
-        mark->setPen(QPen(line, 1.5));
-        panel.markerItems << mark;
-        if (marker.label.isEmpty())
-            continue;
-        auto *label = new QCPItemText(panel.plot);
-        label->position->setTypeX(QCPItemPosition::ptPlotCoords);
-        label->position->setTypeY(QCPItemPosition::ptAxisRectRatio);
-        label->position->setCoords(marker.seconds, 0);
-        label->setPositionAlignment(Qt::AlignLeft | Qt::AlignTop);
-        label->setText(marker.label);
-        label->setFont(small);
-        label->setColor(text);
-        label->setBrush(back);
-        label->setPadding(QMargins(3, 1, 3, 1));
-        panel.markerItems << label;
-    }
-    panel.dirty = true;
-}
-
-void SensorPlots::setComparison(const SensorHistory *history, double shiftSeconds, const QString &label,
-                                const QString &primaryLabel)
-{
-    if (!std::isfinite(shiftSeconds))
-        shiftSeconds = 0.0;
-    m_comparison = history;
-    m_comparisonShift = history ? shiftSeconds : 0.0;
-    m_comparisonLabel = history ? label : QString();
-    m_primaryLabel = history ? primaryLabel : QString();
-    for (auto &panel : m_panels)
-        rebuildGraphs(*panel);
-    refresh();
-}
-
-bool SensorPlots::updateComparison(ComparisonFeed &feed, double columnSeconds)
-{
-    const SensorHistory &h = *m_comparison;
-    const double from = m_timeRange.lower, to = m_timeRange.upper;
-    if (feed.valid && feed.loadedRevision == h.revision() && feed.columnSeconds == columnSeconds
-        && from >= feed.loadedFrom && to <= feed.loadedTo)
-        return false;
-    // A span either side, so the live step and small pans need no reload.
-    const double span = to - from;
-    feed.valid = true;
-    feed.loadedRevision = h.revision();
-    feed.columnSeconds = columnSeconds;
-    feed.loadedFrom = from - span;
-    feed.loadedTo = to + span;
-    QSharedPointer<QCPGraphDataContainer> data = feed.graph->data();
-    const bool hadData = !data->isEmpty();
-    data->clear();
-    if (!h.isChannel(feed.channel))
-        return hadData;
-    const std::size_t held = h.sampleCount(feed.channel);
-    std::size_t first = h.lowerBound(feed.channel, feed.loadedFrom - m_comparisonShift);
-    std::size_t end = h.upperBound(feed.channel, feed.loadedTo - m_comparisonShift);
-    if (first > 0)
-        --first;
-    if (end < held)
-        ++end;
-    TraceColumns columns(columnSeconds);
-    for (SensorHistory::Sample s : h.samplesAt(feed.channel, first, end)) {
-        s.time += m_comparisonShift;
-        columns.add(s);
-    }
-    QVector<QCPGraphData> points;
-    columns.pointsFrom(0, [&points](const SensorHistory::Sample &s) { points.append(QCPGraphData(s.time, s.value)); });
-    data->add(points, true);
-    return true;
-}
-
-void SensorPlots::updateLegend(Panel &panel)
-{
-    QStringList items;
-    QStringList reasons;
-    for (std::size_t i = 0; i < panel.channels.size(); ++i) {
-        const QString label = ChannelChooser::channelLabel(*m_profile->packet(panel.channels[i]));
-        const QString reason = oitext::unreliableReason(panel.channels[i], m_corrections);
-        const QString swatch = QStringLiteral("<span style=\"color:%1\">&#9632;</span>&nbsp;").arg(kSeriesColors[i].name());
-        if (reason.isEmpty()) {
-            items << swatch + label.toHtmlEscaped();
-            continue;
-        }
-        QColor grey = palette().color(QPalette::WindowText);
-        grey.setAlphaF(0.45);
-        items << swatch + QStringLiteral("<span style=\"color:%1\">%2</span>")
-                              .arg(grey.name(QColor::HexArgb), tr("%1 (unreliable)").arg(label).toHtmlEscaped());
-        reasons << reason;
-    }
-    QString text = items.join(QStringLiteral(" &nbsp; "));
-    if (m_comparison && !panel.channels.empty()) {
-        // Which run is which: a solid and a dashed stroke, each naming its file.
-        text += QStringLiteral("<br><b>&#9473;&#9473;</b>&nbsp;%1 &nbsp; <b>&#9476;&#9476;</b>&nbsp;%2")
-                    .arg(m_primaryLabel.toHtmlEscaped(), comparisonLegend().toHtmlEscaped());
-    }
-    panel.legend->setText(text);
-    panel.legend->setToolTip(reasons.join(QLatin1Char('\n')));
-    updatePlotDescription(panel);
-}
-
-QString SensorPlots::comparisonLegend() const
-{
-    if (m_comparisonShift == 0.0)
-        return m_comparisonLabel;
-    return tr("%1 (moved %2 s)").arg(m_comparisonLabel, QString::number(m_comparisonShift, 'f', 2));
-}
-
-void SensorPlots::updatePlotDescription(Panel &panel)
-{
-    QStringList names;
-    for (int id : panel.channels)
-        names << ChannelChooser::channelLabel(*m_profile->packet(id));
-    QString text = names.isEmpty() ? tr("No channels chosen") : tr("Channels: %1").arg(names.join(tr(", ")));
-    if (panel.hint->visible() && !panel.hint->text().isEmpty())
-        text = tr("%1. %2").arg(text, panel.hint->text());
-    if (panel.plot->accessibleDescription() != text)
-        panel.plot->setAccessibleDescription(text);
-}
-
-void SensorPlots::updateAxisLabels()
-{
-    for (std::size_t i = 0; i < m_panels.size(); ++i) {
-        Panel &panel = *m_panels[i];
-        // The shared time axis is named once, under the bottom plot.
-        panel.plot->xAxis->setLabel(i + 1 == m_panels.size() ? tr("Time (s)") : QString());
-        // The value axis carries a unit only where every channel shares it.
-        QString unit;
-        if (!panel.channels.empty()) {
-            unit = oitext::fromView(m_profile->packet(panel.channels.front())->unit);
-            for (int id : panel.channels)
-                if (oitext::fromView(m_profile->packet(id)->unit) != unit)
-                    unit.clear();
-        }
-        panel.plot->yAxis->setLabel(unit);
-        panel.remove->setEnabled(m_panels.size() > 1);
-        panel.dirty = true;
-    }
-}
-
-void SensorPlots::applyTheme(Panel &panel)
-{
-    const QPalette pal = palette();
-    const QColor base = pal.color(QPalette::Base);
-    const QColor text = pal.color(QPalette::Text);
-    QColor grid = pal.color(QPalette::Mid);
-    grid.setAlpha(110);
-    QCustomPlot *plot = panel.plot;
-    plot->setBackground(base);
-    QFont small = font();
-    small.setPointSizeF(std::max(7.0, (font().pointSizeF() > 0 ? font().pointSizeF() : 9.0) * 0.9));
-    for (QCPAxis *axis : {plot->xAxis, plot->yAxis}) {
-        axis->setBasePen(QPen(text, 1));
-        axis->setTickPen(QPen(text, 1));
-        axis->setSubTickPen(QPen(text, 1));
-        axis->setTickLabelColor(text);
-        axis->setLabelColor(text);
-        axis->setTickLabelFont(small);
-        axis->setLabelFont(small);
-        axis->grid()->setPen(QPen(grid, 1, Qt::DotLine));
-        axis->grid()->setZeroLinePen(QPen(grid, 1));
-    }
-    // Fixed side margins, so the stacked time axes line up whatever the
-    // width of each plot's value labels.
-    const QFontMetrics fm(small);
-    const int left = fm.horizontalAdvance(QStringLiteral("-32768")) + fm.height() + 14;
-    const int right = fm.horizontalAdvance(QStringLiteral("0000.0")) / 2 + 8;
-    plot->axisRect()->setAutoMargins(QCP::msTop | QCP::msBottom);
-    plot->axisRect()->setMargins(QMargins(left, 0, right, 0));
-
-    QColor readoutBack = base;
-    readoutBack.setAlpha(230);
-    panel.readout->setStyleSheet(
-        QStringLiteral("QLabel { background: rgba(%1, %2, %3, %4); color: %5; border: 1px solid %6;"
-                       " border-radius: 3px; padding: 3px 6px; }")
-            .arg(readoutBack.red())
-            .arg(readoutBack.green())
-            .arg(readoutBack.blue())
-            .arg(readoutBack.alpha())
-            .arg(text.name(), pal.color(QPalette::Mid).name()));
-    updateLegend(panel);
-    QColor dim = text;
-    dim.setAlpha(150);
-    panel.hint->setColor(dim);
-    panel.hint->setFont(font());
-    for (GraphFeed &feed : panel.feeds)
-        feed.tracer->setPen(QPen(text, 1.2));
-    panel.dirty = true;
 }
 
 void SensorPlots::applyPaused()
 {
-    m_pauseButton->blockSignals(true);
-    m_pauseButton->setChecked(m_paused);
-    m_pauseButton->blockSignals(false);
-    m_pauseButton->setText(m_paused ? tr("Resume") : tr("Pause"));
-    const display::State state = m_paused  ? display::State::Warning
+    const bool paused = m_stack->isPaused();
+    {
+        const QSignalBlocker blocker(m_pauseButton);
+        m_pauseButton->setChecked(paused);
+    }
+    m_pauseButton->setText(paused ? tr("Resume") : tr("Pause"));
+    const display::State state = paused    ? display::State::Warning
                                  : m_stale ? display::State::Stale
                                            : display::State::Active;
     const QPalette pal = palette();
-    m_status->setText(m_paused  ? tr("Paused: drag or arrows pan, wheel or +/- zoom, Space resumes")
+    m_status->setText(paused    ? tr("Paused: drag or arrows pan, wheel or +/- zoom, Space resumes")
                       : m_stale ? tr("Not live: no fresh data")
                                 : tr("Live"));
     m_status->setStyleSheet(QStringLiteral("QLabel { background: %1; color: %2; border-radius: 3px; }")
-                                .arg(display::stateColor(state, pal).name(),
-                                     display::textOn(state, pal).name()));
-    for (auto &panel : m_panels) {
-        // Dragging a live axis would fight the follow; zoom and pan are for pauses.
-        panel->plot->setInteractions(m_paused ? QCP::Interactions(QCP::iRangeDrag | QCP::iRangeZoom)
-                                              : QCP::Interactions());
-        panel->plot->setCursor(m_paused ? Qt::CrossCursor : Qt::ArrowCursor);
-    }
+                                .arg(display::stateColor(state, pal).name(), display::textOn(state, pal).name()));
 }
 
-void SensorPlots::showTracer(Panel &panel, const QPointF &mouse)
+bool SensorPlots::exportCsv(const QString &path, double from, double to, QString *error) const
 {
-    const double x = panel.plot->xAxis->pixelToCoord(mouse.x());
-    QStringList lines;
-    bool timeShown = false;
-    for (std::size_t i = 0; i < panel.feeds.size(); ++i) {
-        GraphFeed &feed = panel.feeds[i];
-        if (feed.graph->data()->isEmpty()) {
-            feed.tracer->setVisible(false);
-            continue;
-        }
-        if (feed.tracer->graph() != feed.graph)
-            feed.tracer->setGraph(feed.graph);
-        feed.tracer->setGraphKey(x);
-        feed.tracer->updatePosition();
-        feed.tracer->setVisible(true);
-        if (!timeShown) {
-            lines << tr("t = %1 s").arg(SensorHistory::formatTime(feed.tracer->position->key()));
-            timeShown = true;
-        }
-        const oi::PacketInfo *info = m_profile->packet(feed.channel);
-        QString line = tr("%1: %2").arg(oitext::packetName(*info)).arg(qRound64(feed.tracer->position->value()));
-        if (!info->unit.empty())
-            line += QLatin1Char(' ') + oitext::fromView(info->unit);
-        lines << QStringLiteral("<span style=\"color:%1\">&#9632;</span> %2")
-                     .arg(kSeriesColors[i].name(), line.toHtmlEscaped());
-    }
-    if (lines.isEmpty()) {
-        panel.readout->hide();
-    } else {
-        panel.readout->setText(lines.join(QStringLiteral("<br>")));
-        panel.readout->adjustSize();
-        // Beside the mouse, flipped to stay inside the plot area.
-        const QRect area = panel.plot->axisRect()->rect();
-        const QSize size = panel.readout->size();
-        QPoint at = mouse.toPoint() + QPoint(14, 14);
-        if (at.x() + size.width() > area.right())
-            at.setX(int(mouse.x()) - 14 - size.width());
-        if (at.y() + size.height() > area.bottom())
-            at.setY(int(mouse.y()) - 14 - size.height());
-        at.setX(std::max(at.x(), area.left()));
-        at.setY(std::max(at.y(), area.top()));
-        panel.readout->move(at);
-        panel.readout->show();
-        panel.readout->raise();
-    }
-    panel.plot->replot(QCustomPlot::rpQueuedReplot);
-}
-
-void SensorPlots::hideTracer(Panel &panel)
-{
-    bool wasShown = panel.readout->isVisible();
-    panel.readout->hide();
-    for (GraphFeed &feed : panel.feeds) {
-        wasShown = wasShown || feed.tracer->visible();
-        feed.tracer->setVisible(false);
-    }
-    if (wasShown)
-        panel.plot->replot(QCustomPlot::rpQueuedReplot);
-}
-
-void SensorPlots::onChannelToggled(Panel *panel, int id, bool on)
-{
-    const int index = indexOf(panel);
-    if (index < 0)
-        return;
-    std::vector<int> ids = panel->channels;
-    if (on)
-        ids.push_back(id);
-    else
-        std::erase(ids, id);
-    if (!setChannels(index, ids))
-        panel->chooser->setChannels(panel->channels); // undo the tick
-    refresh();
-}
-
-int SensorPlots::indexOf(const Panel *panel) const
-{
-    for (std::size_t i = 0; i < m_panels.size(); ++i)
-        if (m_panels[i].get() == panel)
-            return int(i);
-    return -1;
+    const auto fail = [error](const QString &why) {
+        if (error)
+            *error = why;
+        return false;
+    };
+    if (!m_stack->history())
+        return fail(tr("There is no sensor history to export."));
+    const std::vector<int> ids = m_stack->plottedChannels();
+    if (ids.empty())
+        return fail(tr("No channels are plotted."));
+    // The markers drawn go in too, in time order.
+    QList<oilink::SensorCsv::Mark> marks;
+    for (const PlotMarker &m : m_stack->markers())
+        marks << oilink::SensorCsv::Mark{m.seconds, m.label};
+    std::stable_sort(marks.begin(), marks.end(), [](const auto &a, const auto &b) { return a.seconds < b.seconds; });
+    return m_stack->history()->exportCsv(path, ids, from, to, error, marks);
 }
 
 bool SensorPlots::exportVisibleCsv(const QString &path, QString *error) const
 {
-    if (!m_history) {
-        if (error)
-            *error = tr("There is no sensor history to export.");
-        return false;
-    }
-    const std::vector<int> ids = plottedChannels();
-    if (ids.empty()) {
-        if (error)
-            *error = tr("No channels are plotted.");
-        return false;
-    }
-    return m_history->exportCsv(path, ids, m_timeRange.lower, m_timeRange.upper, error);
+    return exportCsv(path, m_stack->timeRange().lower, m_stack->timeRange().upper, error);
 }
 
 bool SensorPlots::exportAllCsv(const QString &path, QString *error) const
 {
-    if (!m_history) {
-        if (error)
-            *error = tr("There is no sensor history to export.");
-        return false;
-    }
-    const std::vector<int> ids = plottedChannels();
-    if (ids.empty()) {
-        if (error)
-            *error = tr("No channels are plotted.");
-        return false;
-    }
     const double inf = std::numeric_limits<double>::infinity();
-    return m_history->exportCsv(path, ids, -inf, inf, error);
+    return exportCsv(path, -inf, inf, error);
 }
 
 void SensorPlots::exportInteractively(bool visibleOnly)
@@ -1187,43 +214,11 @@ void SensorPlots::exportInteractively(bool visibleOnly)
         QMessageBox::warning(this, tr("Export failed"), error);
 }
 
-bool SensorPlots::eventFilter(QObject *watched, QEvent *event)
-{
-    if (event->type() == QEvent::KeyPress && m_paused) {
-        // The keyboard's pan and zoom, as drag and wheel do with the mouse.
-        const int key = static_cast<QKeyEvent *>(event)->key();
-        const double span = m_timeRange.size();
-        const double centre = m_timeRange.center();
-        QCPRange range = m_timeRange;
-        if (key == Qt::Key_Left || key == Qt::Key_Right) {
-            const double step = (key == Qt::Key_Left ? -0.1 : 0.1) * span;
-            range = QCPRange(m_timeRange.lower + step, m_timeRange.upper + step);
-        } else if (key == Qt::Key_Plus || key == Qt::Key_Equal) {
-            range = QCPRange(centre - span / 4, centre + span / 4);
-        } else if (key == Qt::Key_Minus) {
-            range = QCPRange(centre - span, centre + span);
-        } else {
-            return QWidget::eventFilter(watched, event);
-        }
-        syncTimeRange(range, nullptr);
-        refresh();
-        return true;
-    }
-    if (event->type() == QEvent::Leave)
-        for (auto &panel : m_panels)
-            if (panel->plot == watched)
-                hideTracer(*panel);
-    return QWidget::eventFilter(watched, event);
-}
-
 void SensorPlots::changeEvent(QEvent *event)
 {
     QWidget::changeEvent(event);
     if (event->type() == QEvent::LanguageChange)
         retranslateUi();
-    if (event->type() == QEvent::PaletteChange || event->type() == QEvent::FontChange) {
-        for (auto &panel : m_panels)
-            applyTheme(*panel);
+    if (event->type() == QEvent::PaletteChange)
         applyPaused();
-    }
 }

@@ -93,9 +93,9 @@ TracePlot::TracePlot(QWidget *parent) : QCustomPlot(parent)
 
 QCPLayer *TracePlot::tracesLayer() const { return m_traces; }
 
-TraceGraph *TracePlot::addTrace()
+TraceGraph *TracePlot::addTrace(QCPAxis *valueAxis)
 {
-    auto *trace = new TraceGraph(xAxis, yAxis);
+    auto *trace = new TraceGraph(xAxis, valueAxis ? valueAxis : yAxis);
     trace->setLayer(m_traces);
     return trace;
 }

@@ -38,8 +38,9 @@ public:
     explicit TracePlot(QWidget *parent = nullptr);
 
     QCPLayer *tracesLayer() const;
-    // A new trace on the traces layer, owned by the plot.
-    TraceGraph *addTrace();
+    // A new trace on the traces layer, owned by the plot, on `valueAxis`
+    // (the left axis unless given).
+    TraceGraph *addTrace(QCPAxis *valueAxis = nullptr);
     // Redraws the traces inside `changed` (widget coordinates) and repaints
     // that part of the widget; a whole replot where the buffers need one.
     void replotTraces(const QRect &changed);

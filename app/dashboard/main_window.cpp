@@ -120,8 +120,6 @@ void MainWindow::buildDocks()
     m_markers->markStepsOf(m_lessons->runner());
     connect(m_markers, &MarkerActions::message, this, &MainWindow::showMessage);
     m_comparison = new RunComparison(m_fleet, m_plots, m_map, this);
-    connect(m_comparison, &RunComparison::changed, this,
-            [this] { m_markers->setOtherPlotMarkers(m_comparison->plotMarkers()); });
 
     DockLayout &l = *m_layout;
     l.addDock("connectionDock", QT_TR_NOOP("Connection"), m_connectionBar, Qt::TopDockWidgetArea, true);
@@ -298,6 +296,8 @@ void MainWindow::buildActions()
     });
 
     addToolBar(m_recording->toolBar());
+    // A row of its own: beside the replay bar it would squeeze the slider.
+    addToolBarBreak();
     addToolBar(m_comparison->toolBar());
 }
 

@@ -100,7 +100,7 @@ void MarkerActions::show()
     if (robot)
         for (const oilink::RecordingMarker &m : robot->markers().list())
             own << PlotMarker{robot->markers().seconds(m), m.label()};
-    m_plots->setMarkers(own + m_otherPlotMarkers);
+    m_plots->setMarkers(own);
     m_replayBar->setMarkers(replay ? own : QList<PlotMarker>());
     m_list->setMarkers(robot ? robot->markers().list() : QList<oilink::RecordingMarker>());
     const bool editable = robot && robot->markers().canChange();
@@ -109,12 +109,6 @@ void MarkerActions::show()
     m_list->setJumpable(replay);
     m_previous->setEnabled(replay && !own.isEmpty());
     m_next->setEnabled(replay && !own.isEmpty());
-}
-
-void MarkerActions::setOtherPlotMarkers(const QList<PlotMarker> &markers)
-{
-    m_otherPlotMarkers = markers;
-    show();
 }
 
 int MarkerActions::drop()

@@ -40,8 +40,6 @@ public:
     // Each step of a lesson done while the selected robot records drops a
     // marker naming the step, so the recording shows where it happened.
     void markStepsOf(const LessonRunner &runner);
-    // Drawn on the plots besides the robot's own (a compared run's).
-    void setOtherPlotMarkers(const QList<PlotMarker> &markers);
     void retranslate();
 
 signals:
@@ -64,5 +62,4 @@ private:
     MarkerNoteEditor *m_noteEditor = nullptr;
     QPointer<RobotSession> m_noteRobot; // whose marker the note is for
     QList<QMetaObject::Connection> m_followed;
-    QList<PlotMarker> m_otherPlotMarkers;
 };

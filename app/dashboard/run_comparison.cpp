@@ -9,6 +9,7 @@
 
 #include <QAction>
 #include <QFileDialog>
+#include <QFileInfo>
 #include <QMessageBox>
 #include <QToolBar>
 
@@ -137,17 +138,6 @@ double RunComparison::alignedShift() const
     return robot->markers().seconds(*own) - static_cast<double>(other->timeUs) / 1e6;
 }
 
-QList<PlotMarker> RunComparison::plotMarkers() const
-{
-    QList<PlotMarker> out;
-    if (!m_run)
-        return out;
-    const double shift = m_shift;
-    for (const oilink::RecordingMarker &m : m_run->markers())
-        out << PlotMarker{shift + static_cast<double>(m.timeUs) / 1e6, m_run->name() + ": " + m.label()};
-    return out;
-}
-
 void RunComparison::apply()
 {
     const RobotSession *robot = m_fleet.selected();
@@ -155,7 +145,9 @@ void RunComparison::apply()
         if (!sharedMarkers().contains(m_alignedAt))
             m_alignedAt.clear();
         m_shift = alignedShift();
-        m_plots->setComparison(&m_run->history(), m_shift, m_run->name(), robot->name());
+        // The legend names each file; a live robot by its name.
+        const QString own = robot->isReplay() ? QFileInfo(robot->replay().path).fileName() : robot->name();
+        m_plots->setComparison(&m_run->history(), m_shift, m_run->name(), own);
         // The compared path starts where the robot's own odometry started, facing its way.
         const oi::Pose &start = robot->odometry().start();
         const double c = std::cos(start.thetaRad), s = std::sin(start.thetaRad);
@@ -171,5 +163,4 @@ void RunComparison::apply()
     }
     m_toolBar->setVisible(m_run.has_value());
     m_close->setEnabled(m_run.has_value());
-    emit changed();
 }

@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
-#include "plot_marker.h"
 #include "recorded_run.h"
 
 #include <QObject>
@@ -46,13 +45,7 @@ public:
     double shiftSeconds() const { return m_shift; }
     // The labels both runs' markers hold, in the compared run's order.
     QStringList sharedMarkers() const;
-    // The compared run's markers where the plots draw them.
-    QList<PlotMarker> plotMarkers() const;
     void retranslate();
-
-signals:
-    // Opened, closed, or aligned anew.
-    void changed();
 
 private:
     void chooseFile();

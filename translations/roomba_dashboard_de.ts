@@ -2986,6 +2986,18 @@ GPL-3.0-or-later.</translation>
         <source>comparison run</source>
         <translation>Vergleichsfahrt</translation>
     </message>
+    <message>
+        <source>wall</source>
+        <translation>Wand</translation>
+    </message>
+    <message>
+        <source>stage edge</source>
+        <translation>Bühnenkante</translation>
+    </message>
+    <message>
+        <source>virtual wall</source>
+        <translation>virtuelle Wand</translation>
+    </message>
 </context>
 <context>
     <name>PacketName</name>

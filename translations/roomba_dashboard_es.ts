@@ -2985,6 +2985,18 @@ GPL-3.0-or-later.</translation>
         <source>comparison run</source>
         <translation>recorrido de comparación</translation>
     </message>
+    <message>
+        <source>wall</source>
+        <translation>pared</translation>
+    </message>
+    <message>
+        <source>stage edge</source>
+        <translation>borde del escenario</translation>
+    </message>
+    <message>
+        <source>virtual wall</source>
+        <translation>pared virtual</translation>
+    </message>
 </context>
 <context>
     <name>PacketName</name>

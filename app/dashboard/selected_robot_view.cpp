@@ -78,6 +78,8 @@ void SelectedRobotView::show(RobotSession *robot)
         connect(robot, &RobotSession::firmwareChanged, this, [this, robot] { showFirmware(*robot); }),
         // A calibration applied, reset or restored: the map's wheel fields follow.
         connect(robot, &RobotSession::calibrationChanged, this, [v, robot] { v.map->setOdometry(&robot->odometry()); }),
+        // The map draws the robot's path in its colour in the robot list.
+        connect(robot, &RobotSession::identityChanged, this, [v, robot] { v.map->setOdometryColour(robot->colour()); }),
         connect(robot, &RobotSession::recordingStatus, this, [v](const oilink::RecordingStatus &status) {
             v.status->showRecording(status);
             v.recording->showSelectedRobot();
@@ -101,6 +103,7 @@ void SelectedRobotView::show(RobotSession *robot)
 
     v.plots->setHistory(&robot->history());
     v.map->setOdometry(&robot->odometry());
+    v.map->setOdometryColour(robot->colour());
     // The virtual robot lives in the classroom world and starts where the
     // odometry does, so a class can watch the estimate drift from the room.
     m_room.floorShownNoMore();

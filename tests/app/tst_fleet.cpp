@@ -250,6 +250,9 @@ private slots:
         QVERIFY(rig.window.statusText().contains("Bea"));
         QVERIFY(rig.window.findChild<QDockWidget *>("driveDock")->windowTitle().contains("Bea"));
         QCOMPARE(rig.window.sensorPlots()->history(), &rig.robot(1)->history());
+        // The map draws the selected robot's path in its colour in the list.
+        QCOMPARE(rig.window.odometryMap()->odometryColour(), rig.robot(1)->colour());
+        QVERIFY(rig.robot(0)->colour() != rig.robot(1)->colour());
         // The inspector shows the selected robot's own recent bytes.
         const RecentBytes &recent = rig.robot(1)->recentBytes();
         QVERIFY(recent.size() > 0);

@@ -574,6 +574,12 @@ private slots:
         QTest::mouseClick(playPause, Qt::LeftButton);
         QTRY_VERIFY_WITH_TIMEOUT(window.replayBar()->position().finished, 20000);
         QCOMPARE(window.replayBar()->position().speed, 10.0);
+        // At the end no fresh data comes: the diagram's banner, the plots'
+        // badge and the status bar say so together, from one flag.
+        QTRY_VERIFY_WITH_TIMEOUT(window.robotDiagram()->isStale(), 10000);
+        window.refreshDisplay();
+        QCOMPARE(window.sensorPlots()->statusText(), QStringLiteral("Not live: no fresh data"));
+        QVERIFY2(window.statusText().contains("NOT LIVE"), qPrintable(window.statusText()));
         const double duration = window.replayBar()->position().durationUs / 1e6;
         QVERIFY2(std::abs(window.history().newestTime() - duration) < 0.15,
                  qPrintable(QString("newest sample at %1 s, recording %2 s long").arg(window.history().newestTime()).arg(duration)));

@@ -8,6 +8,7 @@
 #include "pseudo_translation.h" // tests/common
 #include "robot_diagram.h"
 #include "robot_session.h"
+#include "sensor_plots.h"
 #include "shipped_lessons.h"
 #include "transport_factory.h"
 
@@ -46,6 +47,23 @@ void saveShot(QWidget &w, const QString &name)
 class TestLessonPanel : public QObject {
     Q_OBJECT
 private slots:
+    // No fresh data (a replay that ended, a quiet link): the diagram's STALE
+    // banner and the plot's badge say the same, and both come back together.
+    void staleDataReadsTheSameInEveryView()
+    {
+        LessonStepView view;
+        const oi::SensorSnapshot frame = frameWith({});
+        view.refresh(frame, false, nullptr);
+        QVERIFY(!view.diagram()->isStale());
+        QCOMPARE(view.plots()->statusText(), QStringLiteral("Live"));
+        view.refresh(frame, true, nullptr);
+        QVERIFY(view.diagram()->isStale());
+        QCOMPARE(view.plots()->statusText(), QStringLiteral("Not live: no fresh data"));
+        view.refresh(frame, false, nullptr);
+        QVERIFY(!view.diagram()->isStale());
+        QCOMPARE(view.plots()->statusText(), QStringLiteral("Live"));
+    }
+
     void stepTurnsGreenAndLessonMovesOn()
     {
         RobotSession robot;

@@ -330,6 +330,57 @@ private slots:
         QCOMPARE(m_map->legendLabels(), QStringList{"odometry"});
     }
 
+    // The robot keeps its list colour on the map; its odometry and its true
+    // pose differ by style (filled and solid, outline and dashed), not by colour.
+    void odometryTakesTheRobotsColourAndTheTruthItsStyle()
+    {
+        const QColor orange(0xd9, 0x6c, 0x06);
+        m_map->setViewCentreMm({0, 0});
+        m_map->setScale(0.2);
+        m_map->setOdometryColour(orange);
+        QCOMPARE(m_map->odometryColour(), orange);
+        drive(*m_odometry, ProfileId::Create2, 50, 20, 20); // straight ahead
+        QVERIFY(m_map->pose().xMm > 300);
+        oi::Pose truth;
+        truth.yMm = 900;
+        showTruth(*m_map, truth);
+        m_map->setTruePoses({{7, truth, orange, false}});
+        QTRY_VERIFY(m_map->trail().size() > 1);
+        const qreal ratio = m_map->devicePixelRatioF();
+        const QImage image = m_map->grab().toImage();
+        // On the path, behind the robot: orange.
+        const QColor path = pixelAt(image, m_map->widgetPointFor({60, 0}), ratio);
+        QVERIFY2(std::abs(path.hue() - orange.hue()) < 15, qPrintable(path.name()));
+        // Inside the odometry's robot (filled) and inside the truth (outline).
+        const QPointF beside(43, 67); // off the grid lines
+        const QColor odometryInside = pixelAt(image, m_map->widgetPointFor(QPointF(m_map->pose().xMm, 0) + beside), ratio);
+        const QColor truthInside = pixelAt(image, m_map->widgetPointFor(QPointF(0, 900) + beside), ratio);
+        QVERIFY2(odometryInside != m_map->palette().color(QPalette::Base), qPrintable(odometryInside.name()));
+        QCOMPARE(truthInside, m_map->palette().color(QPalette::Base));
+        // Without a colour: the palette's highlight, as before.
+        m_map->setOdometryColour(QColor());
+        QCOMPARE(m_map->odometryColour(), m_map->palette().color(QPalette::Highlight));
+    }
+
+    // Everything the map draws is named in its legend.
+    void theLegendNamesEverythingDrawn()
+    {
+        sim::World world;
+        world.walls = {{0, 0, 1000, 0}};
+        m_map->setWorld(world);
+        QCOMPARE(m_map->legendLabels(), (QStringList{"odometry", "wall"}));
+        world.dropOffs = {{1500, -500, 2000, 0}};
+        world.dock = sim::World::Dock{-500, 500, 0};
+        world.virtualWall = sim::World::VirtualWallBeacon{500, 800, 0, 600};
+        m_map->setWorld(world);
+        showTruth(*m_map, oi::Pose{});
+        m_map->setComparisonPath({{0, 0}, {100, 100}}, QStringLiteral("before.oirec"));
+        QCOMPARE(m_map->legendLabels(), (QStringList{"odometry", "true pose", "before.oirec", "wall", "stage edge",
+                                                     "virtual wall", "dock"}));
+        if (qEnvironmentVariableIsSet("ROOMBA_SCREENSHOTS"))
+            QVERIFY(m_map->grab().save(QDir(qEnvironmentVariable("ROOMBA_SCREENSHOTS")).filePath("odometry_map_legend.png")));
+    }
+
     // Touching the room: carry, turn and lift a robot; the map only asks.
     void touchingARobotAsksTheRoom()
     {

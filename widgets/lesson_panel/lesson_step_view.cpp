@@ -171,7 +171,10 @@ void LessonStepView::rebuildReadouts()
 void LessonStepView::refresh(const oi::SensorSnapshot &latest, bool stale, const LessonRunner *runner)
 {
     m_diagram->setSnapshot(latest);
+    // One flag for every view of the step: the plot's badge never says Live
+    // beside the diagram's STALE banner.
     m_diagram->setStale(stale);
+    m_plots->setStale(stale);
     if (isVisible())
         m_plots->refresh();
     if (m_step && runner)

@@ -252,6 +252,19 @@ QColor OdometryMap::robotColour(int index)
     return colours[((index % n) + n) % n];
 }
 
+void OdometryMap::setOdometryColour(const QColor &colour)
+{
+    if (colour == m_odometryColour)
+        return;
+    m_odometryColour = colour;
+    update();
+}
+
+QColor OdometryMap::odometryColour() const
+{
+    return m_odometryColour.isValid() ? m_odometryColour : palette().color(QPalette::Highlight);
+}
+
 QColor OdometryMap::truePoseColour(qsizetype index) const
 {
     const QColor &chosen = m_truePoses[index].colour;
@@ -408,7 +421,7 @@ void OdometryMap::paintEvent(QPaintEvent *)
     const bool identified = !m_odometry || m_odometry->isIdentified();
     const QList<QPointF> trail = this->trail();
     if (identified && trail.size() > 1) {
-        painter.setPen(QPen(palette().color(QPalette::Highlight), 2));
+        painter.setPen(QPen(odometryColour(), 2));
         painter.drawPolyline(widgetPolygon(trail));
     }
     if (m_comparisonPath.size() > 1) {
@@ -417,7 +430,7 @@ void OdometryMap::paintEvent(QPaintEvent *)
     }
     paintTruePoses(painter);
     if (identified)
-        paintRobot(painter, pose(), palette().color(QPalette::Highlight), false);
+        paintRobot(painter, pose(), odometryColour(), false);
     paintScaleBar(painter, area);
 
     painter.setClipping(false);
@@ -445,10 +458,12 @@ QPen OdometryMap::comparisonPen() const
 
 QList<OdometryMap::LegendEntry> OdometryMap::legend() const
 {
+    // Everything the map draws, drawn as the map draws it.
     QList<LegendEntry> entries;
-    entries << LegendEntry{tr("odometry"), QPen(palette().color(QPalette::Highlight), 2)};
+    entries << LegendEntry{tr("odometry"), QPen(odometryColour(), 2)};
     if (!m_truePoses.isEmpty()) {
-        // The selected robot's colour, or the first robot's.
+        // The selected robot's, or the first robot's: in the dashboard the
+        // odometry's own colour, dashed.
         qsizetype index = 0;
         for (qsizetype i = 0; i < m_truePoses.size(); ++i)
             if (m_truePoses[i].robot == m_selected)
@@ -458,7 +473,31 @@ QList<OdometryMap::LegendEntry> OdometryMap::legend() const
     if (m_comparisonPath.size() > 1)
         entries << LegendEntry{m_comparisonLabel.isEmpty() ? tr("comparison run") : m_comparisonLabel,
                                comparisonPen()};
+    if (m_world) {
+        if (!m_world->walls.empty())
+            entries << LegendEntry{tr("wall"), wallPen()};
+        if (!m_world->dropOffs.empty()) {
+            const QColor drop = display::stateColor(display::State::Alert, palette());
+            entries << LegendEntry{tr("stage edge"), QPen(drop, 2), QBrush(drop, Qt::BDiagPattern)};
+        }
+        if (m_world->virtualWall)
+            entries << LegendEntry{tr("virtual wall"), virtualWallPen()};
+        if (m_world->dock) {
+            const QColor dock = display::stateColor(display::State::Warning, palette());
+            entries << LegendEntry{tr("dock"), QPen(dock.darker(130), 1.5), QBrush(dock)};
+        }
+    }
     return entries;
+}
+
+QPen OdometryMap::wallPen() const
+{
+    return QPen(palette().color(QPalette::Text), 4, Qt::SolidLine, Qt::SquareCap);
+}
+
+QPen OdometryMap::virtualWallPen() const
+{
+    return QPen(display::stateColor(display::State::Stale, palette()), 3, Qt::DashLine);
 }
 
 QStringList OdometryMap::legendLabels() const
@@ -542,7 +581,7 @@ void OdometryMap::paintWorld(QPainter &painter) const
         painter.setPen(QPen(drop, 2));
         painter.drawRect(r);
     }
-    painter.setPen(QPen(palette().color(QPalette::Text), 4, Qt::SolidLine, Qt::SquareCap));
+    painter.setPen(wallPen());
     for (const sim::Segment &s : world.walls)
         painter.drawLine(widgetPointFor({s.x1, s.y1}), widgetPointFor({s.x2, s.y2}));
     if (m_editTool->isEditing()) {
@@ -557,13 +596,12 @@ void OdometryMap::paintWorld(QPainter &painter) const
 
     if (world.virtualWall) {
         const auto &v = *world.virtualWall;
-        const QColor beam = display::stateColor(display::State::Stale, palette());
         const QPointF from = widgetPointFor({v.x, v.y});
         const QPointF to = widgetPointFor({v.x + v.rangeMm * std::cos(v.headingRad),
                                            v.y + v.rangeMm * std::sin(v.headingRad)});
-        painter.setPen(QPen(beam, 3, Qt::DashLine));
+        painter.setPen(virtualWallPen());
         painter.drawLine(from, to);
-        painter.setBrush(beam);
+        painter.setBrush(virtualWallPen().color());
         painter.setPen(Qt::NoPen);
         painter.drawEllipse(from, 6, 6);
         painter.setBrush(Qt::NoBrush);

@@ -63,6 +63,12 @@ public:
     // Positions in mm, oldest first, at most kMaxTrailPoints; starts with the start pose.
     QList<QPointF> trail() const { return m_odometry ? m_odometry->trail() : QList<QPointF>{}; }
 
+    // The colour of the robot this odometry belongs to, as the robot list
+    // shows it: its path and pose are drawn in it (solid, filled), its true
+    // pose in the same colour, dashed. Invalid: the palette's highlight.
+    void setOdometryColour(const QColor &colour);
+    QColor odometryColour() const;
+
     // Where a virtual robot really is.
     struct TruePose {
         int robot = 0;      // the room's robot id
@@ -184,6 +190,8 @@ private:
     QList<LegendEntry> legend() const;
     void paintLegend(QPainter &painter, const QRect &area) const;
     QPen comparisonPen() const;
+    QPen wallPen() const;
+    QPen virtualWallPen() const;
     // The true pose under a widget point, if a robot is drawn there.
     const TruePose *truePoseAt(QPointF widgetPoint) const;
 
@@ -193,6 +201,7 @@ private:
     QList<TruePose> m_truePoses;
     std::optional<int> m_selected;
     std::optional<sim::World> m_world;
+    QColor m_odometryColour;
     QVector<QPointF> m_comparisonPath;
     QString m_comparisonLabel;
 

@@ -674,11 +674,13 @@ void PlotStack::placeMarkers(Panel &panel)
         panel.markerItems << mark;
         if (marker.label.isEmpty())
             continue;
+        // In a band above the data area, where no line runs through it.
         auto *label = new QCPItemText(panel.plot);
+        label->setClipToAxisRect(false);
         label->position->setTypeX(QCPItemPosition::ptPlotCoords);
         label->position->setTypeY(QCPItemPosition::ptAxisRectRatio);
         label->position->setCoords(marker.seconds, 0);
-        label->setPositionAlignment(Qt::AlignLeft | Qt::AlignTop);
+        label->setPositionAlignment(Qt::AlignLeft | Qt::AlignBottom);
         label->setText(marker.label);
         label->setFont(small);
         label->setColor(text);
@@ -686,6 +688,9 @@ void PlotStack::placeMarkers(Panel &panel)
         label->setPadding(QMargins(3, 1, 3, 1));
         panel.markerItems << label;
     }
+    const bool labelled = std::any_of(m_markers.begin(), m_markers.end(),
+                                      [](const PlotMarker &m) { return !m.label.isEmpty(); });
+    panel.plot->axisRect()->setMinimumMargins(QMargins(0, labelled ? QFontMetrics(small).height() + 4 : 0, 0, 0));
     panel.dirty = true;
 }
 
@@ -724,7 +729,7 @@ void PlotStack::updateLegend(Panel &panel)
     QString text = items.join(QStringLiteral(" &nbsp; "));
     if (m_comparison && !panel.channels.empty()) {
         // Which run is which: a solid and a dashed stroke, each naming its file.
-        text += QStringLiteral("<br><b>&#9473;&#9473;</b>&nbsp;%1 &nbsp; <b>&#9476;&#9476;</b>&nbsp;%2")
+        text += QStringLiteral("<br><b>&#9473;&#9473;</b>&nbsp;%1 &nbsp; <b>&#9549;&#9549;</b>&nbsp;%2")
                     .arg(m_primaryLabel.toHtmlEscaped(), comparisonLegend().toHtmlEscaped());
     }
     panel.legend->setText(text);

@@ -12,6 +12,7 @@
 #include "connection_bar.h"
 #include "mode_panel.h"
 #include "lesson_panel.h"
+#include "lesson_runner.h"
 #include "lesson_step_view.h"
 #include "projector_view.h"
 #include "recording_transport.h"
@@ -684,6 +685,35 @@ private slots:
         QCOMPARE(window.sensorPlots()->stack()->comparisonHistory(), nullptr);
         QVERIFY(window.odometryMap()->comparisonPath().isEmpty());
         QTRY_VERIFY(!comparison->bar()->isVisible());
+    }
+
+    // A lesson step done while the robot records drops a marker naming the
+    // step; without a recording it drops none.
+    void lessonStepsAreMarkedWhileRecording()
+    {
+        QTemporaryDir dir;
+        MainWindow window;
+        window.start(oilink::LinkSettings::virtualRobotOf(oi::ProfileId::Create2, oi::ProfileId::Create2));
+        QTRY_COMPARE_WITH_TIMEOUT(window.session().state(), oilink::LinkState::Streaming, 10000);
+        LessonRunner runner;
+        window.markerActions()->markStepsOf(runner);
+        Lesson lesson;
+        lesson.steps = {LessonStep{}, LessonStep{}};
+        for (LessonStep &step : lesson.steps)
+            step.goal.kind = LessonGoal::Kind::All; // all of no goals: met at once
+        const auto frame = [&] { return LessonFrame{window.history().newestTime(), window.session().latest(), {}, {}}; };
+        runner.start(lesson, window.session().robotProfile());
+        runner.update(frame());
+        QCOMPARE(runner.currentStep(), 1);
+        QVERIFY(window.session().markers().list().isEmpty());
+
+        window.startRecording(dir.filePath("lesson.oirec"));
+        QTRY_VERIFY_WITH_TIMEOUT(window.session().recording().active, 10000);
+        QTRY_VERIFY_WITH_TIMEOUT(window.history().newestTime() > window.session().recording().startedSeconds, 10000);
+        runner.update(frame());
+        QVERIFY(runner.isFinished());
+        QCOMPARE(window.session().markers().list().size(), 1);
+        QCOMPARE(window.session().markers().list().first().note, QString("Lesson step 2 done"));
     }
 
     void languageSwitchesOnTheSpot()

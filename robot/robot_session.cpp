@@ -32,6 +32,10 @@ RobotSession::RobotSession(QObject *parent) : QObject(parent)
     connect(&m_link, &oilink::RobotLinkThread::connectionCheckStep, this, &RobotSession::connectionCheckStep);
     connect(&m_link, &oilink::RobotLinkThread::connectionChecked, this, &RobotSession::connectionChecked);
     connect(&m_link, &oilink::RobotLinkThread::recordingStatus, this, [this](const oilink::RecordingStatus &s) {
+        if (s.active && (!m_recording.active || s.path != m_recording.path))
+            m_markers.recordingStarted(s.path, s.startedSeconds);
+        else if (!s.active && m_recording.active)
+            m_markers.recordingStopped();
         m_recording = s;
         emit recordingStatus(s);
     });
@@ -79,6 +83,7 @@ void RobotSession::connectTo(const oilink::LinkSettings &settings)
     m_connected = true;
     m_connectedAtMs = QDateTime::currentMSecsSinceEpoch();
     m_replay = {};
+    m_markers.clear();
     m_latest = oi::SensorSnapshot(*m_profile);
     m_snapshotCount = 0;
     m_mode.clear();
@@ -297,6 +302,8 @@ void RobotSession::onReplayStatus(const oilink::ReplayStatus &status)
     if (status.positionUs < m_replay.positionUs)
         resetHistory();
     m_replay = status;
+    if (!status.path.isEmpty())
+        m_markers.replayOpened(status.path, status.markers);
     emit replayStatus(status);
 }
 

@@ -7,6 +7,7 @@
 #include "robot_firmware.h"
 #include "robot_link_thread.h"
 #include "robot_mode.h"
+#include "robot_markers.h"
 #include "robot_odometry.h"
 #include "sensor_history.h"
 #include "sensor_snapshot.h"
@@ -152,6 +153,14 @@ public:
     void controlReplay(const oilink::ReplayCommand &command) { m_link.controlReplay(command); }
     bool isReplay() const { return m_connected && m_settings.transport == oilink::TransportKind::Replay; }
     const oilink::ReplayStatus &replay() const { return m_replay; }
+    // The markers of the run being recorded or replayed.
+    RobotMarkers &markers() { return m_markers; }
+    const RobotMarkers &markers() const { return m_markers; }
+    // A marker on the newest frame (the one on screen); its id, or 0 and why not.
+    int dropMarker(const QString &note, QString *error = nullptr)
+    {
+        return m_markers.add(m_history.newestTime(), note, error);
+    }
 
 signals:
     void identityChanged();
@@ -198,6 +207,7 @@ private:
     QString m_name;
     quint32 m_colourRgba = 0;
     oilink::RobotLinkThread m_link;
+    RobotMarkers m_markers{[this](const oilink::MarkerEdit &edit) { m_link.markRecording(edit); }};
     oilink::LinkSettings m_settings;
     bool m_connected = false;
     qint64 m_connectedAtMs = 0;

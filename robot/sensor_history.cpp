@@ -336,7 +336,7 @@ std::size_t SensorHistory::memoryBytes() const
 QString SensorHistory::formatTime(double t) { return QString::fromLatin1(oilink::SensorCsv::timeText(t)); }
 
 bool SensorHistory::exportCsv(const QString &path, const std::vector<int> &channels, double t0,
-                              double t1, QString *error) const
+                              double t1, QString *error, const QList<oilink::SensorCsv::Mark> &marks) const
 {
     auto fail = [error](const QString &why) {
         if (error)
@@ -361,7 +361,11 @@ bool SensorHistory::exportCsv(const QString &path, const std::vector<int> &chann
     std::vector<const oi::PacketInfo *> columns;
     for (int id : channels)
         columns.push_back(m_profile->packet(id));
-    const oilink::SensorCsv csv(std::move(columns));
+    QList<oilink::SensorCsv::Mark> shown;
+    for (const oilink::SensorCsv::Mark &m : marks)
+        if (m.seconds >= t0 && m.seconds <= t1)
+            shown << m;
+    oilink::SensorCsv csv(std::move(columns), shown);
     QByteArray buffer;
     buffer.reserve(kWriteChunk + 1024);
     csv.appendHeader(buffer);
@@ -402,6 +406,7 @@ bool SensorHistory::exportCsv(const QString &path, const std::vector<int> &chann
             buffer.clear();
         }
     }
+    csv.finish(buffer);
     if (file.write(buffer) != buffer.size())
         return fail(QCoreApplication::translate("SensorHistory", "Cannot write %1: %2").arg(path, file.errorString()));
     if (!file.commit())

@@ -3,6 +3,7 @@
 
 #include "robot_profile.h"
 #include "sample_ring.h"
+#include "sensor_csv.h"
 #include "sensor_snapshot.h"
 
 #include <QString>
@@ -110,9 +111,10 @@ public:
     // Header: time_s, then <packet key>[unit] per channel (no brackets where
     // the packet has no unit). One row per distinct time; a channel without
     // a sample at that time leaves its cell empty. On failure returns false
-    // and, if `error` is given, says why.
+    // and, if `error` is given, says why. With `marks` (in time order), the
+    // ones between t0 and t1 fill a last column, `marker` (SensorCsv).
     bool exportCsv(const QString &path, const std::vector<int> &channels, double t0, double t1,
-                   QString *error = nullptr) const;
+                   QString *error = nullptr, const QList<oilink::SensorCsv::Mark> &marks = {}) const;
 
     // Time as the CSV writes it: up to microseconds, without trailing zeros.
     static QString formatTime(double t);

@@ -799,6 +799,29 @@
     </message>
 </context>
 <context>
+    <name>ComparisonBar</name>
+    <message>
+        <source>Compared with %1</source>
+        <translation>Verglichen mit %1</translation>
+    </message>
+    <message>
+        <source>aligned at the start</source>
+        <translation>am Anfang ausgerichtet</translation>
+    </message>
+    <message>
+        <source>aligned at “%1”</source>
+        <translation>an „%1“ ausgerichtet</translation>
+    </message>
+    <message>
+        <source>Where the two runs line up in time: their starts, or a marker both hold</source>
+        <translation>Wo die beiden Fahrten zeitlich übereinanderliegen: an ihren Anfängen oder an einer Markierung, die beide haben</translation>
+    </message>
+    <message>
+        <source>Close comparison</source>
+        <translation>Vergleich schließen</translation>
+    </message>
+</context>
+<context>
     <name>ConnectionBar</name>
     <message>
         <source>Virtual robot</source>
@@ -2518,6 +2541,83 @@ GPL-3.0-or-later.</translation>
         <source>&amp;Robot</source>
         <translation>&amp;Roboter</translation>
     </message>
+    <message>
+        <source>Markers</source>
+        <translation>Markierungen</translation>
+    </message>
+</context>
+<context>
+    <name>MarkerActions</name>
+    <message>
+        <source>Mark</source>
+        <translation>Markieren</translation>
+    </message>
+    <message>
+        <source>Drop a marker on the recording here, with an optional note (M)</source>
+        <translation>Hier eine Markierung in die Aufzeichnung setzen, mit einer Notiz nach Wunsch (M)</translation>
+    </message>
+    <message>
+        <source>Markers are kept in a recording: start one (File → Record) or open one. Then M marks the moment.</source>
+        <translation>Markierungen werden in einer Aufzeichnung gespeichert: Starten Sie eine (Datei → Aufzeichnen) oder öffnen Sie eine. Dann markiert M den Moment.</translation>
+    </message>
+    <message>
+        <source>Marker %1 at %2:</source>
+        <translation>Markierung %1 bei %2:</translation>
+    </message>
+    <message>
+        <source>Lesson step %1 done</source>
+        <translation>Lektionsschritt %1 erledigt</translation>
+    </message>
+    <message>
+        <source>Mark &amp;this moment</source>
+        <translation>Diesen Moment mar&amp;kieren</translation>
+    </message>
+    <message>
+        <source>Previo&amp;us marker</source>
+        <translation>&amp;Vorige Markierung</translation>
+    </message>
+    <message>
+        <source>&amp;Next marker</source>
+        <translation>&amp;Nächste Markierung</translation>
+    </message>
+</context>
+<context>
+    <name>MarkerList</name>
+    <message>
+        <source>Time</source>
+        <translation>Zeit</translation>
+    </message>
+    <message>
+        <source>Note</source>
+        <translation>Notiz</translation>
+    </message>
+    <message>
+        <source>&amp;Jump</source>
+        <translation>&amp;Springen</translation>
+    </message>
+    <message>
+        <source>Go to the selected marker in the replay</source>
+        <translation>In der Wiedergabe zur ausgewählten Markierung gehen</translation>
+    </message>
+    <message>
+        <source>&amp;Delete</source>
+        <translation>&amp;Löschen</translation>
+    </message>
+    <message>
+        <source>Delete the selected marker</source>
+        <translation>Die ausgewählte Markierung löschen</translation>
+    </message>
+</context>
+<context>
+    <name>MarkerNoteEditor</name>
+    <message>
+        <source>a short note, then Enter</source>
+        <translation>eine kurze Notiz, dann Enter</translation>
+    </message>
+    <message>
+        <source>The marker is already set; a note is optional</source>
+        <translation>Die Markierung ist schon gesetzt; eine Notiz ist freiwillig</translation>
+    </message>
 </context>
 <context>
     <name>MidiMelody</name>
@@ -3337,10 +3437,6 @@ GPL-3.0-or-later.</translation>
         <translation>keine Aufzeichnung von Roomba Dashboard</translation>
     </message>
     <message>
-        <source>recording format version %1; this program reads version %2</source>
-        <translation>Aufzeichnungsformat Version %1; dieses Programm liest Version %2</translation>
-    </message>
-    <message>
         <source>the header is truncated</source>
         <translation>der Kopf ist abgeschnitten</translation>
     </message>
@@ -3375,6 +3471,14 @@ GPL-3.0-or-later.</translation>
     <message>
         <source>the recording holds no sensor stream</source>
         <translation>die Aufzeichnung enthält keinen Sensordatenstrom</translation>
+    </message>
+    <message>
+        <source>recording format version %1; this program reads versions %2 to %3</source>
+        <translation>Aufzeichnungsformat Version %1; dieses Programm liest die Versionen %2 bis %3</translation>
+    </message>
+    <message>
+        <source>unreadable marker</source>
+        <translation>unlesbare Markierung</translation>
     </message>
 </context>
 <context>
@@ -3532,6 +3636,22 @@ GPL-3.0-or-later.</translation>
     <message>
         <source>Damaged: replays up to %1</source>
         <translation>Beschädigt: Wiedergabe bis %1</translation>
+    </message>
+    <message>
+        <source>Previous marker (,)</source>
+        <translation>Vorige Markierung (,)</translation>
+    </message>
+    <message>
+        <source>Previous marker</source>
+        <translation>Vorige Markierung</translation>
+    </message>
+    <message>
+        <source>Next marker (.)</source>
+        <translation>Nächste Markierung (.)</translation>
+    </message>
+    <message>
+        <source>Next marker</source>
+        <translation>Nächste Markierung</translation>
     </message>
 </context>
 <context>
@@ -3912,6 +4032,21 @@ Doppelklick zum Umbenennen</translation>
     </message>
 </context>
 <context>
+    <name>RobotMarkers</name>
+    <message>
+        <source>Markers are kept in a recording: start one (File → Record) or open one.</source>
+        <translation>Markierungen werden in einer Aufzeichnung gespeichert: Starten Sie eine (Datei → Aufzeichnen) oder öffnen Sie eine.</translation>
+    </message>
+    <message>
+        <source>There is no marker %1.</source>
+        <translation>Es gibt keine Markierung %1.</translation>
+    </message>
+    <message>
+        <source>The marker could not be saved: %1</source>
+        <translation>Die Markierung konnte nicht gespeichert werden: %1</translation>
+    </message>
+</context>
+<context>
     <name>RobotSession</name>
     <message>
         <source>Connect to the robot first: its firmware version is read from the robot.</source>
@@ -4263,6 +4398,41 @@ Doppelklick zum Umbenennen</translation>
     <message>
         <source>lasts %1/64 s at %2 beats per minute; a note lasts 1..255</source>
         <translation>dauert %1/64 s bei %2 Schlägen pro Minute; eine Note dauert 1..255</translation>
+    </message>
+</context>
+<context>
+    <name>RunComparison</name>
+    <message>
+        <source>Show a second recording beside this run: plots and map, in a style of its own</source>
+        <translation>Eine zweite Aufzeichnung neben dieser Fahrt zeigen: Diagramme und Karte, in einem eigenen Stil</translation>
+    </message>
+    <message>
+        <source>Comparison</source>
+        <translation>Vergleich</translation>
+    </message>
+    <message>
+        <source>Compare with recording</source>
+        <translation>Mit Aufzeichnung vergleichen</translation>
+    </message>
+    <message>
+        <source>Roomba Dashboard recordings (*.oirec);;All files (*)</source>
+        <translation>Roomba-Dashboard-Aufzeichnungen (*.oirec);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>This file cannot be compared.
+
+%1</source>
+        <translation>Diese Datei kann nicht verglichen werden.
+
+%1</translation>
+    </message>
+    <message>
+        <source>&amp;Compare with recording…</source>
+        <translation>Mit Aufzeichnung ver&amp;gleichen…</translation>
+    </message>
+    <message>
+        <source>C&amp;lose comparison</source>
+        <translation>Vergleich sch&amp;ließen</translation>
     </message>
 </context>
 <context>

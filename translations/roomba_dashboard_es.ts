@@ -799,6 +799,29 @@
     </message>
 </context>
 <context>
+    <name>ComparisonBar</name>
+    <message>
+        <source>Compared with %1</source>
+        <translation>Comparado con %1</translation>
+    </message>
+    <message>
+        <source>aligned at the start</source>
+        <translation>alineado al inicio</translation>
+    </message>
+    <message>
+        <source>aligned at “%1”</source>
+        <translation>alineado en «%1»</translation>
+    </message>
+    <message>
+        <source>Where the two runs line up in time: their starts, or a marker both hold</source>
+        <translation>Dónde coinciden en el tiempo los dos recorridos: en sus inicios o en una marca que tengan ambos</translation>
+    </message>
+    <message>
+        <source>Close comparison</source>
+        <translation>Cerrar comparación</translation>
+    </message>
+</context>
+<context>
     <name>ConnectionBar</name>
     <message>
         <source>Virtual robot</source>
@@ -2517,6 +2540,83 @@ GPL-3.0-or-later.</translation>
         <source>&amp;Robot</source>
         <translation>&amp;Robot</translation>
     </message>
+    <message>
+        <source>Markers</source>
+        <translation>Marcas</translation>
+    </message>
+</context>
+<context>
+    <name>MarkerActions</name>
+    <message>
+        <source>Mark</source>
+        <translation>Marcar</translation>
+    </message>
+    <message>
+        <source>Drop a marker on the recording here, with an optional note (M)</source>
+        <translation>Poner aquí una marca en la grabación, con una nota opcional (M)</translation>
+    </message>
+    <message>
+        <source>Markers are kept in a recording: start one (File → Record) or open one. Then M marks the moment.</source>
+        <translation>Las marcas se guardan en una grabación: inicie una (Archivo → Grabar) o abra una. Después, M marca el momento.</translation>
+    </message>
+    <message>
+        <source>Marker %1 at %2:</source>
+        <translation>Marca %1 en %2:</translation>
+    </message>
+    <message>
+        <source>Lesson step %1 done</source>
+        <translation>Paso %1 de la lección hecho</translation>
+    </message>
+    <message>
+        <source>Mark &amp;this moment</source>
+        <translation>Marcar es&amp;te momento</translation>
+    </message>
+    <message>
+        <source>Previo&amp;us marker</source>
+        <translation>Marca &amp;anterior</translation>
+    </message>
+    <message>
+        <source>&amp;Next marker</source>
+        <translation>Marca s&amp;iguiente</translation>
+    </message>
+</context>
+<context>
+    <name>MarkerList</name>
+    <message>
+        <source>Time</source>
+        <translation>Tiempo</translation>
+    </message>
+    <message>
+        <source>Note</source>
+        <translation>Nota</translation>
+    </message>
+    <message>
+        <source>&amp;Jump</source>
+        <translation>&amp;Ir</translation>
+    </message>
+    <message>
+        <source>Go to the selected marker in the replay</source>
+        <translation>Ir a la marca seleccionada en la reproducción</translation>
+    </message>
+    <message>
+        <source>&amp;Delete</source>
+        <translation>&amp;Borrar</translation>
+    </message>
+    <message>
+        <source>Delete the selected marker</source>
+        <translation>Borrar la marca seleccionada</translation>
+    </message>
+</context>
+<context>
+    <name>MarkerNoteEditor</name>
+    <message>
+        <source>a short note, then Enter</source>
+        <translation>una nota breve y luego Intro</translation>
+    </message>
+    <message>
+        <source>The marker is already set; a note is optional</source>
+        <translation>La marca ya está puesta; la nota es opcional</translation>
+    </message>
 </context>
 <context>
     <name>MidiMelody</name>
@@ -3336,10 +3436,6 @@ GPL-3.0-or-later.</translation>
         <translation>no es una grabación de Roomba Dashboard</translation>
     </message>
     <message>
-        <source>recording format version %1; this program reads version %2</source>
-        <translation>formato de grabación versión %1; este programa lee la versión %2</translation>
-    </message>
-    <message>
         <source>the header is truncated</source>
         <translation>la cabecera está truncada</translation>
     </message>
@@ -3374,6 +3470,14 @@ GPL-3.0-or-later.</translation>
     <message>
         <source>the recording holds no sensor stream</source>
         <translation>la grabación no contiene ningún flujo de sensores</translation>
+    </message>
+    <message>
+        <source>recording format version %1; this program reads versions %2 to %3</source>
+        <translation>formato de grabación versión %1; este programa lee las versiones %2 a %3</translation>
+    </message>
+    <message>
+        <source>unreadable marker</source>
+        <translation>marca ilegible</translation>
     </message>
 </context>
 <context>
@@ -3531,6 +3635,22 @@ GPL-3.0-or-later.</translation>
     <message>
         <source>Damaged: replays up to %1</source>
         <translation>Dañada: se reproduce hasta %1</translation>
+    </message>
+    <message>
+        <source>Previous marker (,)</source>
+        <translation>Marca anterior (,)</translation>
+    </message>
+    <message>
+        <source>Previous marker</source>
+        <translation>Marca anterior</translation>
+    </message>
+    <message>
+        <source>Next marker (.)</source>
+        <translation>Marca siguiente (.)</translation>
+    </message>
+    <message>
+        <source>Next marker</source>
+        <translation>Marca siguiente</translation>
     </message>
 </context>
 <context>
@@ -3911,6 +4031,21 @@ Doble clic para renombrar</translation>
     </message>
 </context>
 <context>
+    <name>RobotMarkers</name>
+    <message>
+        <source>Markers are kept in a recording: start one (File → Record) or open one.</source>
+        <translation>Las marcas se guardan en una grabación: inicie una (Archivo → Grabar) o abra una.</translation>
+    </message>
+    <message>
+        <source>There is no marker %1.</source>
+        <translation>No hay ninguna marca %1.</translation>
+    </message>
+    <message>
+        <source>The marker could not be saved: %1</source>
+        <translation>No se pudo guardar la marca: %1</translation>
+    </message>
+</context>
+<context>
     <name>RobotSession</name>
     <message>
         <source>Connect to the robot first: its firmware version is read from the robot.</source>
@@ -4262,6 +4397,41 @@ Doble clic para renombrar</translation>
     <message>
         <source>lasts %1/64 s at %2 beats per minute; a note lasts 1..255</source>
         <translation>dura %1/64 s a %2 pulsos por minuto; una nota dura 1..255</translation>
+    </message>
+</context>
+<context>
+    <name>RunComparison</name>
+    <message>
+        <source>Show a second recording beside this run: plots and map, in a style of its own</source>
+        <translation>Mostrar una segunda grabación junto a este recorrido: gráficas y mapa, con un estilo propio</translation>
+    </message>
+    <message>
+        <source>Comparison</source>
+        <translation>Comparación</translation>
+    </message>
+    <message>
+        <source>Compare with recording</source>
+        <translation>Comparar con grabación</translation>
+    </message>
+    <message>
+        <source>Roomba Dashboard recordings (*.oirec);;All files (*)</source>
+        <translation>Grabaciones de Roomba Dashboard (*.oirec);;Todos los archivos (*)</translation>
+    </message>
+    <message>
+        <source>This file cannot be compared.
+
+%1</source>
+        <translation>Este archivo no se puede comparar.
+
+%1</translation>
+    </message>
+    <message>
+        <source>&amp;Compare with recording…</source>
+        <translation>&amp;Comparar con grabación…</translation>
+    </message>
+    <message>
+        <source>C&amp;lose comparison</source>
+        <translation>Ce&amp;rrar comparación</translation>
     </message>
 </context>
 <context>

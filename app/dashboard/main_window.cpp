@@ -16,6 +16,8 @@
 #include "language_menu.h"
 #include "led_editor.h"
 #include "lesson_panel.h"
+#include "marker_actions.h"
+#include "marker_list.h"
 #include "mode_panel.h"
 #include "motors_panel.h"
 #include "odometry_map.h"
@@ -29,6 +31,7 @@
 #include "robot_status_bar.h"
 #include "room_actions.h"
 #include "room_robots.h"
+#include "run_comparison.h"
 #include "schedule_editor.h"
 #include "script_editor.h"
 #include "selected_robot_view.h"
@@ -113,6 +116,10 @@ void MainWindow::buildDocks()
     m_lessons = new LessonPanel(this);
     m_projector = new ProjectorMode(this, &m_lessons->runner());
     connect(m_lessons, &LessonPanel::lessonChanged, m_projector->view(), &ProjectorView::lessonChanged);
+    m_markers = new MarkerActions(m_fleet, m_plots, m_recording->replayBar(), m_recording->toolBar(), this);
+    m_markers->markStepsOf(m_lessons->runner());
+    connect(m_markers, &MarkerActions::message, this, &MainWindow::showMessage);
+    m_comparison = new RunComparison(m_fleet, m_plots, m_map, this);
 
     DockLayout &l = *m_layout;
     l.addBar("connectionDock", QT_TR_NOOP("Connection"), m_connectionBar, Qt::TopDockWidgetArea, true);
@@ -137,6 +144,7 @@ void MainWindow::buildDocks()
                                        std::tuple{"scriptDock", QT_TR_NOOP("Script"), static_cast<QWidget *>(m_script)},
                                        std::tuple{"motorsDock", QT_TR_NOOP("Motors and outputs"), static_cast<QWidget *>(m_motors)},
                                        std::tuple{"mapDock", QT_TR_NOOP("Odometry map"), static_cast<QWidget *>(m_map)},
+                                       std::tuple{"markersDock", QT_TR_NOOP("Markers"), static_cast<QWidget *>(m_markers->list())},
                                        std::tuple{"gamepadDock", QT_TR_NOOP("Gamepad"), static_cast<QWidget *>(m_gamepadPanel)},
                                        std::tuple{"lessonDock", QT_TR_NOOP("Lesson"), static_cast<QWidget *>(m_lessons)}}) {
         QDockWidget *dock = l.addDock(name, title, widget, Qt::BottomDockWidgetArea);
@@ -305,6 +313,9 @@ void MainWindow::buildActions()
     });
 
     addToolBar(m_recording->toolBar());
+    // A row of its own: beside the replay bar it would squeeze the slider.
+    addToolBarBreak();
+    addToolBar(m_comparison->toolBar());
 }
 
 void MainWindow::buildMenus()
@@ -314,6 +325,12 @@ void MainWindow::buildMenus()
     m_fileMenu->addAction(m_recording->openAction());
     m_fileMenu->addAction(m_recording->exportCsvAction());
     m_fileMenu->addAction(m_recording->exportMcapAction());
+    m_fileMenu->addAction(m_comparison->compareAction());
+    m_fileMenu->addAction(m_comparison->closeAction());
+    m_fileMenu->addSeparator();
+    m_fileMenu->addAction(m_markers->dropAction());
+    m_fileMenu->addAction(m_markers->previousAction());
+    m_fileMenu->addAction(m_markers->nextAction());
     m_fileMenu->addSeparator();
     m_fileMenu->addAction(m_roomActions->openAction());
     m_fileMenu->addMenu(m_roomActions->shippedMenu());
@@ -352,6 +369,8 @@ void MainWindow::retranslateUi()
     showTitles();
     m_fileMenu->setTitle(tr("&File"));
     m_recording->retranslate();
+    m_markers->retranslate();
+    m_comparison->retranslate();
     m_roomActions->retranslate();
     m_broker->retranslate();
     m_quitAction->setText(tr("&Quit"));

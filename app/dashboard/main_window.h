@@ -29,6 +29,7 @@ class KeyboardDriving;
 class LanguageMenu;
 class LedEditor;
 class LessonPanel;
+class MarkerActions;
 class ModePanel;
 class MotorsPanel;
 class OdometryMap;
@@ -47,6 +48,7 @@ class RobotDiagram;
 class RobotList;
 class RobotStatusBar;
 class RoomRobots;
+class RunComparison;
 class ScheduleEditor;
 class ScriptEditor;
 class SelectedRobotView;
@@ -132,6 +134,9 @@ public:
     bool isProjectorView() const;
     QPushButton *stopAllButton() const;
     QToolBar *recordingToolBar() const;
+    // Markers on the selected robot's run, and a second run beside it.
+    MarkerActions *markerActions() const { return m_markers; }
+    RunComparison *runComparison() const { return m_comparison; }
     QAction *recordAction() const;
     QMenu *languageMenu() const;
     QString statusText() const;
@@ -165,6 +170,8 @@ private:
     RoomRobots *m_room = nullptr;
     RoomActions *m_roomActions = nullptr; // the room as a document: files and edits
     RecordingActions *m_recording = nullptr;
+    MarkerActions *m_markers = nullptr;
+    RunComparison *m_comparison = nullptr;
     FirmwareReading *m_firmwareReading = nullptr;
     CalibrationWizardAction *m_calibration = nullptr;
     RobotBar *m_robotBar = nullptr;

@@ -201,7 +201,7 @@ QString RecordingActions::exportRecordingMcap(const QString &recordingPath, cons
                                               mcap::Compression compression, QString *damage)
 {
     std::optional<oilink::RecordingDamage> found;
-    const QString error = oilink::exportRecordingMcap(recordingPath, mcapPath, {compression, {}}, &found);
+    const QString error = oilink::exportRecordingMcap(recordingPath, mcapPath, {compression}, &found);
     if (damage)
         *damage = found && error.isEmpty() ? found->describe() : QString();
     return error;

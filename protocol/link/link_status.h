@@ -44,6 +44,7 @@ struct RecordingStatus {
     QString path;
     qint64 bytesWritten = 0;
     QString error; // why it stopped, when it stopped on its own
+    double startedSeconds = 0; // when it began, on the clock snapshots are read on
 
     friend bool operator==(const RecordingStatus &, const RecordingStatus &) = default;
 };

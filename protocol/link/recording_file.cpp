@@ -9,6 +9,7 @@
 #include <QDateTime>
 #include <QJsonArray>
 #include <QJsonDocument>
+#include <QSaveFile>
 #include <QtEndian>
 
 #include <algorithm>
@@ -47,6 +48,19 @@ std::span<const std::uint8_t> asSpan(const QByteArray &bytes, qsizetype from, qs
 QString fromStd(std::string_view text)
 {
     return QString::fromUtf8(text.data(), static_cast<qsizetype>(text.size()));
+}
+
+// One record: kind, time, length, payload (at most kMaxPayload bytes), CRC.
+QByteArray makeRecord(recording::RecordKind kind, qint64 timeUs, const QByteArray &payload)
+{
+    QByteArray record;
+    record.reserve(kRecordHeadSize + payload.size() + kCrcSize);
+    record.append(static_cast<char>(kind));
+    appendLittleEndian<qint64>(record, timeUs);
+    appendLittleEndian<quint16>(record, static_cast<quint16>(payload.size()));
+    record += payload;
+    appendLittleEndian<quint16>(record, qChecksum(record));
+    return record;
 }
 } // namespace
 
@@ -94,14 +108,7 @@ bool RecordingWriter::append(recording::RecordKind kind, const QByteArray &bytes
         return false;
     const qint64 timeUs = m_clock.nsecsElapsed() / 1000;
     for (qsizetype from = 0; from < bytes.size() || (from == 0 && bytes.isEmpty()); from += recording::kMaxPayload) {
-        const QByteArray payload = bytes.mid(from, recording::kMaxPayload);
-        QByteArray record;
-        record.reserve(kRecordHeadSize + payload.size() + kCrcSize);
-        record.append(static_cast<char>(kind));
-        appendLittleEndian<qint64>(record, timeUs);
-        appendLittleEndian<quint16>(record, static_cast<quint16>(payload.size()));
-        record += payload;
-        appendLittleEndian<quint16>(record, qChecksum(record));
+        const QByteArray record = makeRecord(kind, timeUs, bytes.mid(from, recording::kMaxPayload));
         if (m_file.write(record) != record.size())
             return fail(QCoreApplication::translate("Recording", "cannot write"));
         m_written += record.size();
@@ -123,6 +130,11 @@ bool RecordingWriter::appendStreamStarted(oi::ProfileId profile, int baud, const
                            {QStringLiteral("baud"), baud},
                            {QStringLiteral("packets"), ids}};
     return append(recording::RecordKind::StreamStarted, QJsonDocument(info).toJson(QJsonDocument::Compact));
+}
+
+bool RecordingWriter::appendMarkerEdit(const MarkerEdit &edit)
+{
+    return append(recording::RecordKind::Marker, edit.toJson());
 }
 
 bool RecordingWriter::flush()
@@ -204,9 +216,10 @@ std::optional<Recording> Recording::parse(const QByteArray &data, const QString 
     if (data.size() < prefix || !data.startsWith(QByteArray(recording::kMagic, recording::kMagicSize)))
         return refuse(QCoreApplication::translate("Recording", "not a Roomba Dashboard recording"));
     const auto version = readLittleEndian<quint16>(data.constData() + recording::kMagicSize);
-    if (version != recording::kVersion)
-        return refuse(QCoreApplication::translate("Recording", "recording format version %1; this program reads version %2")
+    if (version < recording::kOldestVersion || version > recording::kVersion)
+        return refuse(QCoreApplication::translate("Recording", "recording format version %1; this program reads versions %2 to %3")
                           .arg(version)
+                          .arg(recording::kOldestVersion)
                           .arg(recording::kVersion));
     const auto headerBytes = readLittleEndian<quint32>(data.constData() + recording::kMagicSize + kVersionSize);
     if (headerBytes > kMaxHeaderBytes || prefix + static_cast<qsizetype>(headerBytes) > data.size())
@@ -277,6 +290,14 @@ std::optional<Recording> Recording::parse(const QByteArray &data, const QString 
             }
             break;
         }
+        case recording::RecordKind::Marker: {
+            const std::optional<MarkerEdit> edit = MarkerEdit::fromJson(QByteArray(payload, length));
+            if (!edit)
+                damaged(QCoreApplication::translate("Recording", "unreadable marker"));
+            else
+                applyMarkerEdit(r.m_markers, *edit); // an edit of a marker that is gone changes nothing
+            break;
+        }
         default:
             damaged(QCoreApplication::translate("Recording", "unknown record type 0x%1").arg(static_cast<quint8>(head[0]), 2, 16, QLatin1Char('0')));
             break;
@@ -288,6 +309,7 @@ std::optional<Recording> Recording::parse(const QByteArray &data, const QString 
         ++r.m_records;
     }
     r.m_durationUs = lastTimeUs;
+    r.m_readableEnd = at;
     if (!r.m_stream.profile) {
         if (r.m_damage)
             return refuse(QCoreApplication::translate("Recording", "damaged before the stream started: %1").arg(r.m_damage->describe()));
@@ -296,6 +318,34 @@ std::optional<Recording> Recording::parse(const QByteArray &data, const QString 
     if (!streamOnly)
         r.indexFrames();
     return r;
+}
+
+bool Recording::saveMarkerEdits(const QString &path, const QList<MarkerEdit> &edits, QString *error)
+{
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly)) {
+        if (error)
+            *error = QStringLiteral("%1: %2").arg(path, file.errorString());
+        return false;
+    }
+    const QByteArray data = file.readAll();
+    file.close();
+    const std::optional<Recording> r = parse(data, path, error, false);
+    if (!r)
+        return false;
+    // At the last readable time, so that times never go back.
+    QByteArray records;
+    for (const MarkerEdit &edit : edits)
+        records += makeRecord(recording::RecordKind::Marker, r->m_durationUs, edit.toJson());
+    QByteArray head = data.left(r->m_readableEnd);
+    qToLittleEndian<quint16>(recording::kVersion, head.data() + recording::kMagicSize);
+    QSaveFile out(path);
+    const bool written = out.open(QIODevice::WriteOnly) && out.write(head) == head.size()
+                         && out.write(records) == records.size()
+                         && out.write(data.mid(r->m_readableEnd)) == data.size() - r->m_readableEnd && out.commit();
+    if (!written && error)
+        *error = QStringLiteral("%1: %2").arg(path, out.errorString());
+    return written;
 }
 
 // Feeds the parser chunk by chunk; the parser says where in the bytes each
@@ -360,7 +410,11 @@ std::optional<oi::FirmwareInfo> Recording::firmware() const
 
 void Recording::writeCsv(QTextStream &out) const
 {
-    const SensorCsv csv(streamedPackets());
+    // The markers in the last column, each on the first frame at or after it.
+    QList<SensorCsv::Mark> marks;
+    for (const RecordingMarker &m : m_markers)
+        marks << SensorCsv::Mark{static_cast<double>(m.timeUs) / 1e6, m.label()};
+    SensorCsv csv(streamedPackets(), marks);
     QByteArray buffer;
     csv.appendHeader(buffer);
     std::vector<std::optional<std::int32_t>> cells(csv.columns().size());
@@ -380,6 +434,7 @@ void Recording::writeCsv(QTextStream &out) const
             buffer.clear();
         }
     });
+    csv.finish(buffer);
     out << QString::fromUtf8(buffer);
 }
 

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "firmware_banner.h"
+#include "recording_markers.h"
 #include "robot_profile.h"
 #include "sensor_snapshot.h"
 
@@ -25,7 +26,8 @@ namespace oilink {
 namespace recording {
 inline constexpr char kMagic[] = "OIRECORD"; // 8 bytes, no terminator in the file
 inline constexpr int kMagicSize = 8;
-inline constexpr quint16 kVersion = 1;
+inline constexpr quint16 kVersion = 2;       // written; 2 added markers
+inline constexpr quint16 kOldestVersion = 1; // still read
 inline constexpr int kMaxPayload = 0xFFFF;
 inline constexpr int kFlushIntervalMs = 1000;
 inline constexpr char kFileSuffix[] = "oirec";
@@ -34,6 +36,7 @@ enum class RecordKind : quint8 {
     Received = 'R',      // bytes from the robot
     Sent = 'T',          // bytes to the robot
     StreamStarted = 'S', // JSON: {"profile": "create2", "baud": 115200, "packets": [..]}
+    Marker = 'M',        // JSON: one MarkerEdit (version 2)
 };
 } // namespace recording
 
@@ -54,6 +57,7 @@ public:
     // Time runs from open(). Payloads longer than 64 KiB are split.
     bool append(recording::RecordKind kind, const QByteArray &bytes);
     bool appendStreamStarted(oi::ProfileId profile, int baud, const QList<int> &packets);
+    bool appendMarkerEdit(const MarkerEdit &edit);
     // Pushes what is buffered to the operating system.
     bool flush();
     void close();
@@ -121,6 +125,15 @@ public:
     qint64 bytesSent() const { return m_sent.size(); }
     int recordCount() const { return m_records; }
     const std::optional<RecordingDamage> &damage() const { return m_damage; }
+    // The markers after every edit the file holds, in time order.
+    const QList<RecordingMarker> &markers() const { return m_markers; }
+
+    // Adds `edits` to the recording at `path` (a replay's markers changing):
+    // the whole file is written again through a QSaveFile, with the edits
+    // as `M` records where reading stops (the end, or before a damaged
+    // tail, which is kept). A version-1 file becomes version 2. False with
+    // `error` set when the file cannot be read or written; it is unchanged then.
+    static bool saveMarkerEdits(const QString &path, const QList<MarkerEdit> &edits, QString *error);
 
     // Decodes every stream frame in order, as the link would.
     void forEachSnapshot(const std::function<void(qint64 timeUs, const oi::SensorSnapshot &)> &visit) const;
@@ -129,7 +142,7 @@ public:
     // The firmware, when a Reset recorded with the stream printed its banner.
     std::optional<oi::FirmwareInfo> firmware() const;
     // One row per frame, in the form every sensor CSV has (SensorCsv): time_s,
-    // then one column per packet of the stream.
+    // then one column per packet of the stream, and with markers `marker`.
     // Bit fields and signed values are written as the decoded numbers; the
     // angle corrected when the recording holds the firmware's banner.
     void writeCsv(QTextStream &out) const;
@@ -150,6 +163,8 @@ private:
     qint64 m_durationUs = 0;
     int m_records = 0;
     std::optional<RecordingDamage> m_damage;
+    qsizetype m_readableEnd = 0; // in the file: where reading stopped
+    QList<RecordingMarker> m_markers;
 };
 
 } // namespace oilink

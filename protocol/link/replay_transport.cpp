@@ -188,6 +188,7 @@ ReplayStatus ReplayTransport::status() const
     if (m_recording) {
         s.durationUs = m_recording->durationUs();
         s.frameCount = static_cast<int>(m_recording->frames().size());
+        s.markers = m_recording->markers();
         if (m_recording->damage())
             s.damage = m_recording->damage()->describe();
     }

@@ -39,6 +39,7 @@ struct ReplayStatus {
     bool finished = false; // played to the end (or to the damage)
     double speed = 1.0;
     QString damage; // empty for an intact recording
+    QList<RecordingMarker> markers; // as the file held them when the replay opened it
 
     friend bool operator==(const ReplayStatus &, const ReplayStatus &) = default;
 };

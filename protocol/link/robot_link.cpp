@@ -879,6 +879,7 @@ void RobotLink::startRecording(const QString &path)
         return;
     }
     m_recorder = std::move(writer);
+    m_recordingStartedSeconds = m_transport ? static_cast<double>(m_clock.nowNs() - m_openedNs) / 1e9 : 0;
     // Started mid-stream: say now what the stream is, so the file reads alone.
     if (m_streamRequested && m_profile)
         m_recorder->appendStreamStarted(m_profile->id, baud(), streamPackets());
@@ -893,7 +894,8 @@ void RobotLink::stopRecording()
     m_recordingFlush.stop();
     const QString error = m_recorder->errorString();
     m_recorder->close();
-    const RecordingStatus last{false, m_recorder->path(), m_recorder->bytesWritten(), error};
+    const RecordingStatus last{false, m_recorder->path(), m_recorder->bytesWritten(), error,
+                               m_recordingStartedSeconds};
     m_recorder.reset();
     emit recordingStatus(last);
 }
@@ -908,7 +910,13 @@ void RobotLink::record(recording::RecordKind kind, const QByteArray &bytes)
 void RobotLink::emitRecordingStatus(const QString &error)
 {
     if (m_recorder)
-        emit recordingStatus({true, m_recorder->path(), m_recorder->bytesWritten(), error});
+        emit recordingStatus({true, m_recorder->path(), m_recorder->bytesWritten(), error, m_recordingStartedSeconds});
+}
+
+void RobotLink::markRecording(const MarkerEdit &edit)
+{
+    if (m_recorder && !m_recorder->appendMarkerEdit(edit))
+        stopRecording();
 }
 
 void RobotLink::controlReplay(const ReplayCommand &command)

@@ -103,6 +103,8 @@ public slots:
     // close(), across reconnects. Reports through recordingStatus().
     void startRecording(const QString &path);
     void stopRecording();
+    // Writes a change to the markers into the recording, if one runs.
+    void markRecording(const oilink::MarkerEdit &edit);
     // Play, pause, speed, seek, step: for a replay; ignored otherwise.
     void controlReplay(const oilink::ReplayCommand &command);
 
@@ -241,6 +243,7 @@ private:
 
     std::unique_ptr<RecordingWriter> m_recorder;
     ClockTimer m_recordingFlush;
+    double m_recordingStartedSeconds = 0;
 };
 
 } // namespace oilink

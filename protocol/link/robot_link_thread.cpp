@@ -255,6 +255,13 @@ void RobotLinkThread::stopRecording()
         QMetaObject::invokeMethod(m_link, &RobotLink::stopRecording, Qt::QueuedConnection);
 }
 
+void RobotLinkThread::markRecording(const MarkerEdit &edit)
+{
+    if (m_link && m_thread.isRunning())
+        QMetaObject::invokeMethod(m_link, [link = m_link.data(), edit] { link->markRecording(edit); },
+                                  Qt::QueuedConnection);
+}
+
 void RobotLinkThread::controlReplay(const ReplayCommand &command)
 {
     if (m_link && m_thread.isRunning())

@@ -66,6 +66,7 @@ public slots:
     void checkConnection(); // see RobotLink::checkConnection
     void startRecording(const QString &path);
     void stopRecording();
+    void markRecording(const oilink::MarkerEdit &edit);
     void controlReplay(const oilink::ReplayCommand &command);
 
 signals:

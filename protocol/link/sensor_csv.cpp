@@ -15,10 +15,12 @@ void SensorCsv::appendHeader(QByteArray &out) const
             out += ']';
         }
     }
+    if (!m_marks.isEmpty())
+        out += ",marker";
     out += '\n';
 }
 
-void SensorCsv::appendRow(QByteArray &out, double seconds, std::span<const std::optional<std::int32_t>> values) const
+void SensorCsv::appendRow(QByteArray &out, double seconds, std::span<const std::optional<std::int32_t>> values)
 {
     out += timeText(seconds);
     for (std::size_t i = 0; i < m_columns.size(); ++i) {
@@ -26,7 +28,23 @@ void SensorCsv::appendRow(QByteArray &out, double seconds, std::span<const std::
         if (i < values.size() && values[i])
             out += QByteArray::number(*values[i]);
     }
+    if (!m_marks.isEmpty()) {
+        QStringList labels;
+        for (; m_nextMark < m_marks.size() && m_marks[m_nextMark].seconds <= seconds; ++m_nextMark)
+            labels << m_marks[m_nextMark].label;
+        QString cell = labels.join(QStringLiteral("; "));
+        if (cell.contains(QLatin1Char(',')) || cell.contains(QLatin1Char('"')) || cell.contains(QLatin1Char('\n')))
+            cell = QLatin1Char('"') + cell.replace(QLatin1Char('"'), QStringLiteral("\"\"")) + QLatin1Char('"');
+        out += ',';
+        out += cell.toUtf8();
+    }
     out += '\n';
+}
+
+void SensorCsv::finish(QByteArray &out)
+{
+    while (m_nextMark < m_marks.size())
+        appendRow(out, m_marks[m_nextMark].seconds, {});
 }
 
 QByteArray SensorCsv::timeText(double seconds)

@@ -176,8 +176,7 @@ QMap<QString, QString> recordingMetadata(const Recording &recording)
 // Everything the recording holds, channel by channel, in time order.
 class Exporter {
 public:
-    Exporter(const Recording &recording, mcap::Writer &writer, const McapExportOptions &options)
-        : m_recording(recording), m_writer(writer), m_options(options)
+    Exporter(const Recording &recording, mcap::Writer &writer) : m_recording(recording), m_writer(writer)
     {
         const QDateTime started =
             QDateTime::fromString(recording.header().value("started").toString(), Qt::ISODateWithMs);
@@ -204,7 +203,8 @@ public:
         m_sent = m_writer.addChannel(bytes, mcap_topics::kSent, json);
         const quint16 log = m_writer.addSchema("foxglove.Log", jsonSchema, logSchema());
         m_events = m_writer.addChannel(log, mcap_topics::kEvents, json);
-        const quint16 markers = m_options.markers.empty() ? 0 : m_writer.addChannel(log, mcap_topics::kMarkers, json);
+        const QList<RecordingMarker> &marks = m_recording.markers();
+        const quint16 markers = marks.isEmpty() ? 0 : m_writer.addChannel(log, mcap_topics::kMarkers, json);
 
         if (!m_writer.writeMetadata("recording", recordingMetadata(m_recording)))
             return false;
@@ -221,14 +221,14 @@ public:
         if (firmware)
             odometry.setCorrections(firmware->corrections);
         std::optional<oi::SensorSnapshot> before;
-        std::size_t marker = 0;
+        qsizetype marker = 0;
         bool ok = true;
         m_recording.forEachSnapshot([&](qint64 timeUs, const oi::SensorSnapshot &frame) {
             if (!ok)
                 return;
             ok = writeBytesUpTo(timeUs);
-            for (; ok && marker < m_options.markers.size() && m_options.markers[marker].timeUs <= timeUs; ++marker)
-                ok = writeMarker(markers, m_options.markers[marker]);
+            for (; ok && marker < marks.size() && marks[marker].timeUs <= timeUs; ++marker)
+                ok = writeMarker(markers, marks[marker]);
             const quint64 ns = timeNs(timeUs);
             // As the CSV and the dashboard show it: corrected for the firmware.
             oi::SensorSnapshot shown = frame;
@@ -242,18 +242,18 @@ public:
             before = std::move(shown);
         });
         ok = ok && writeBytesUpTo(std::numeric_limits<qint64>::max());
-        for (; ok && marker < m_options.markers.size(); ++marker)
-            ok = writeMarker(markers, m_options.markers[marker]);
+        for (; ok && marker < marks.size(); ++marker)
+            ok = writeMarker(markers, marks[marker]);
         return ok;
     }
 
 private:
     quint64 timeNs(qint64 timeUs) const { return m_startNs + quint64(std::max<qint64>(timeUs, 0)) * 1000; }
 
-    bool writeMarker(quint16 channel, const McapMarker &m)
+    bool writeMarker(quint16 channel, const RecordingMarker &m)
     {
         const quint64 ns = timeNs(m.timeUs);
-        return m_writer.writeMessage(channel, ns, logJson(ns, Info, m.note, "marker"));
+        return m_writer.writeMessage(channel, ns, logJson(ns, Info, m.label(), "marker"));
     }
 
     // Each read and each write on the line as one message, in time order, up to `timeUs`.
@@ -297,7 +297,6 @@ private:
 
     const Recording &m_recording;
     mcap::Writer &m_writer;
-    const McapExportOptions &m_options;
     quint64 m_startNs = 0;
     quint16 m_telemetry = 0, m_pose = 0, m_transform = 0, m_received = 0, m_sent = 0, m_events = 0;
     std::size_t m_nextReceived = 0, m_nextSent = 0;
@@ -313,7 +312,7 @@ QString exportRecordingMcap(const Recording &recording, const QString &path, con
         return QStringLiteral("%1: %2").arg(path, file.errorString());
     mcap::Writer writer(file, {options.compression, 1024 * 1024, QString(),
                                QStringLiteral("Roomba Dashboard " ROOMBA_VERSION)});
-    const bool written = writer.start() && Exporter(recording, writer, options).run() && writer.finish();
+    const bool written = writer.start() && Exporter(recording, writer).run() && writer.finish();
     if (!written) {
         file.cancelWriting();
         return QStringLiteral("%1: %2").arg(path, writer.errorString());

@@ -12,16 +12,10 @@
 // schemas and encodings are listed in docs/mcap.md.
 namespace oilink {
 
-struct McapMarker {
-    qint64 timeUs = 0; // since the recording started, as the recording's times
-    QString note;
-};
-
+// The recording's markers go to /roomba/markers as log messages; the
+// channel exists only when there are markers.
 struct McapExportOptions {
     mcap::Compression compression = mcap::Compression::Zstd;
-    // Written to /roomba/markers as log messages; the channel exists only
-    // when there are markers.
-    std::vector<McapMarker> markers;
 };
 
 // The topics, as docs/mcap.md lists them.

@@ -2,11 +2,17 @@
 // The assembled window: connecting to the virtual robot, mode buttons down
 // to the bytes, settings, and a bad port.
 #include "main_window.h"
+#include "comparison_bar.h"
+#include "marker_actions.h"
+#include "marker_list.h"
+#include "marker_note_editor.h"
+#include "run_comparison.h"
 #include "recording_actions.h"
 #include "room_actions.h"
 #include "connection_bar.h"
 #include "mode_panel.h"
 #include "lesson_panel.h"
+#include "lesson_runner.h"
 #include "lesson_step_view.h"
 #include "projector_view.h"
 #include "recording_transport.h"
@@ -14,6 +20,7 @@
 #include "odometry_map.h"
 #include "on_screen.h"
 #include "byte_inspector.h"
+#include "plot_stack.h"
 #include "sensor_plots.h"
 #include "pseudo_translation.h"
 #include "recording_file.h"
@@ -27,6 +34,8 @@
 #include "virtual_transport.h"
 
 #include <QComboBox>
+#include <QLineEdit>
+#include <QTableWidget>
 #include <QDir>
 #include <QFile>
 #include <cmath>
@@ -636,6 +645,119 @@ private slots:
         const QString none = dir.filePath("none.csv");
         QVERIFY(!RecordingActions::exportRecordingCsv(dir.filePath("missing.oirec"), none).isEmpty());
         QVERIFY(!QFile::exists(none));
+    }
+
+    // M while recording: a marker on the frame on screen, its note typed in
+    // the toolbar; the list and the plots show it. Replayed, the bar has its
+    // ticks and full stop jumps to the next; compared with itself at a
+    // marker, the second run lines up exactly; closing clears the overlay.
+    void markersAndComparisonInTheWindow()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath("marked.oirec");
+        MainWindow window;
+        window.show();
+        window.start(oilink::LinkSettings::virtualRobotOf(oi::ProfileId::Create2, oi::ProfileId::Create2));
+        QVERIFY(QTest::qWaitForWindowActive(&window));
+        QTRY_COMPARE_WITH_TIMEOUT(window.session().state(), oilink::LinkState::Streaming, 10000);
+        MarkerActions *markers = window.markerActions();
+        // Not recording: M says what to do and keeps nothing.
+        QTest::keyClick(window.robotDiagram(), Qt::Key_M);
+        QVERIFY(window.session().markers().list().isEmpty());
+        QVERIFY2(window.statusBar()->currentMessage().contains("Record"),
+                 qPrintable(window.statusBar()->currentMessage()));
+
+        window.startRecording(path);
+        QTRY_VERIFY_WITH_TIMEOUT(window.session().recording().active, 10000);
+        QTRY_VERIFY_WITH_TIMEOUT(window.history().newestTime() > window.session().recording().startedSeconds + 0.3, 10000);
+        QTest::keyClick(window.robotDiagram(), Qt::Key_M);
+        QCOMPARE(window.session().markers().list().size(), 1);
+        QLineEdit *note = markers->noteEditor()->field();
+        QTRY_VERIFY(note->isVisible() && note->hasFocus());
+        QTest::keyClicks(note, "hit the table leg");
+        QTest::keyClick(note, Qt::Key_Return);
+        QCOMPARE(window.session().markers().list().first().note, QString("hit the table leg"));
+        QTRY_VERIFY(!note->isVisible()); // the toolbar lays itself out anew
+        QCOMPARE(window.sensorPlots()->stack()->markers().size(), 1);
+        QCOMPARE(window.sensorPlots()->stack()->markers().first().label, QString("hit the table leg"));
+        QCOMPARE(window.sensorPlots()->stack()->markers().first().seconds,
+                 window.session().markers().seconds(window.session().markers().list().first()));
+        QCOMPARE(markers->list()->table()->item(0, 1)->text(), QString("hit the table leg"));
+        for (int i = 0; i < 2; ++i) {
+            const double after = window.history().newestTime() + 0.3;
+            QTRY_VERIFY_WITH_TIMEOUT(window.history().newestTime() > after, 10000);
+            QVERIFY(markers->drop() > 0);
+        }
+        QTRY_VERIFY_WITH_TIMEOUT(window.history().newestTime() > window.session().markers().seconds(
+                                     window.session().markers().list().last()) + 0.3, 10000);
+        window.stopRecording();
+        QTRY_VERIFY_WITH_TIMEOUT(!window.session().recording().active, 10000);
+        const QList<oilink::RecordingMarker> made = window.session().markers().list();
+        QCOMPARE(made.size(), 3);
+
+        QString error;
+        QVERIFY2(window.openRecording(path, &error), qPrintable(error));
+        QTRY_COMPARE_WITH_TIMEOUT(window.replayBar()->markers().size(), 3, 10000);
+        QCOMPARE(window.replayBar()->markers().first().label, QString("hit the table leg"));
+        QVERIFY(window.replayBar()->tickX(made[0].timeUs / 1e6) < window.replayBar()->tickX(made[2].timeUs / 1e6));
+        QCOMPARE(markers->list()->markers(), made);
+        // Paused at the start, full stop goes to the first marker.
+        window.session().controlReplay(oilink::ReplayCommand::pause());
+        window.session().controlReplay(oilink::ReplayCommand::seek(0));
+        QTRY_VERIFY_WITH_TIMEOUT(!window.replayBar()->position().playing && window.replayBar()->position().positionUs == 0, 10000);
+        QTest::keyClick(window.robotDiagram(), Qt::Key_Period);
+        QTRY_COMPARE_WITH_TIMEOUT(window.replayBar()->position().positionUs, made[0].timeUs, 10000);
+        QTest::mouseClick(window.replayBar()->findChild<QToolButton *>("replayNextMarker"), Qt::LeftButton);
+        QTRY_COMPARE_WITH_TIMEOUT(window.replayBar()->position().positionUs, made[1].timeUs, 10000);
+
+        // The same file beside itself, lined up at the marker both hold: no shift.
+        RunComparison *comparison = window.runComparison();
+        QVERIFY(!comparison->open(dir.filePath("missing.oirec"), &error));
+        QVERIFY2(error.contains("missing.oirec"), qPrintable(error));
+        QVERIFY2(comparison->open(path, &error), qPrintable(error));
+        QTRY_VERIFY(comparison->bar()->isVisible());
+        QCOMPARE(window.sensorPlots()->stack()->comparisonHistory(), &comparison->run()->history());
+        QVERIFY(!window.odometryMap()->comparisonPath().isEmpty());
+        QCOMPARE(comparison->sharedMarkers(), (QStringList{"hit the table leg", "#2", "#3"}));
+        QComboBox *align = comparison->bar()->alignment();
+        QCOMPARE(align->count(), 4);
+        align->setCurrentIndex(1);
+        emit align->activated(1);
+        QCOMPARE(comparison->alignedAt(), QString("hit the table leg"));
+        QCOMPARE(window.sensorPlots()->stack()->comparisonShiftSeconds(), 0.0);
+        QTest::mouseClick(comparison->bar()->closeButton(), Qt::LeftButton);
+        QCOMPARE(window.sensorPlots()->stack()->comparisonHistory(), nullptr);
+        QVERIFY(window.odometryMap()->comparisonPath().isEmpty());
+        QTRY_VERIFY(!comparison->bar()->isVisible());
+    }
+
+    // A lesson step done while the robot records drops a marker naming the
+    // step; without a recording it drops none.
+    void lessonStepsAreMarkedWhileRecording()
+    {
+        QTemporaryDir dir;
+        MainWindow window;
+        window.start(oilink::LinkSettings::virtualRobotOf(oi::ProfileId::Create2, oi::ProfileId::Create2));
+        QTRY_COMPARE_WITH_TIMEOUT(window.session().state(), oilink::LinkState::Streaming, 10000);
+        LessonRunner runner;
+        window.markerActions()->markStepsOf(runner);
+        Lesson lesson;
+        lesson.steps = {LessonStep{}, LessonStep{}};
+        for (LessonStep &step : lesson.steps)
+            step.goal.kind = LessonGoal::Kind::All; // all of no goals: met at once
+        const auto frame = [&] { return LessonFrame{window.history().newestTime(), window.session().latest(), {}, {}}; };
+        runner.start(lesson, window.session().robotProfile());
+        runner.update(frame());
+        QCOMPARE(runner.currentStep(), 1);
+        QVERIFY(window.session().markers().list().isEmpty());
+
+        window.startRecording(dir.filePath("lesson.oirec"));
+        QTRY_VERIFY_WITH_TIMEOUT(window.session().recording().active, 10000);
+        QTRY_VERIFY_WITH_TIMEOUT(window.history().newestTime() > window.session().recording().startedSeconds, 10000);
+        runner.update(frame());
+        QVERIFY(runner.isFinished());
+        QCOMPARE(window.session().markers().list().size(), 1);
+        QCOMPARE(window.session().markers().list().first().note, QString("Lesson step 2 done"));
     }
 
     void languageSwitchesOnTheSpot()

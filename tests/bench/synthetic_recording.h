@@ -10,9 +10,11 @@
 #include <functional>
 
 // `frames` frames; `vary(i, values)` sets frame i's values (every packet
-// starts at its minimum or 0). False with `error` set when writing fails.
+// starts at its minimum or 0); `before(i, writer)`, when given, may write
+// records of its own before frame i. False with `error` set when writing fails.
 inline bool writeSyntheticRecording(const QString &path, int frames,
-                                    const std::function<void(int, oi::SensorSnapshot &)> &vary, QString *error)
+                                    const std::function<void(int, oi::SensorSnapshot &)> &vary, QString *error,
+                                    const std::function<bool(int, oilink::RecordingWriter &)> &before = {})
 {
     const oi::RobotProfile &profile = oi::profile(oi::ProfileId::Create2);
     oi::SensorSnapshot values(profile);
@@ -24,6 +26,10 @@ inline bool writeSyntheticRecording(const QString &path, int frames,
         return false;
     }
     for (int i = 0; i < frames; ++i) {
+        if (before && !before(i, writer)) {
+            *error = writer.errorString();
+            return false;
+        }
         vary(i, values);
         oi::Bytes frame{19, 0, 100};
         sim::appendPacketData(values, 100, frame);

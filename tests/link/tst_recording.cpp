@@ -20,6 +20,8 @@
 
 using oilink::LinkSettings;
 using oilink::LinkState;
+using oilink::MarkerEdit;
+using oilink::RecordingMarker;
 using oilink::Recording;
 using oilink::RecordingWriter;
 using oilink::ReplayCommand;
@@ -130,7 +132,7 @@ private slots:
 
         const Recording r = load(path);
         QCOMPARE(r.header().value("link").toString(), QString("test"));
-        QCOMPARE(r.header().value("version").toInt(), 1);
+        QCOMPARE(r.header().value("version").toInt(), 2);
         QCOMPARE(r.robotProfile().id, oi::ProfileId::Create2);
         QCOMPARE(r.stream().baud, 115200);
         QCOMPARE(r.stream().packets, QList<int>{7});
@@ -330,8 +332,8 @@ private slots:
         QTest::addColumn<QString>("reason");
         QTest::newRow("empty") << QByteArray() << "not a Roomba Dashboard recording";
         QTest::newRow("text") << QByteArray("time,wall\n0,1\n") << "not a Roomba Dashboard recording";
-        QByteArray v2("OIRECORD\x02\x00\x02\x00\x00\x00{}", 16);
-        QTest::newRow("newer version") << v2 << "version 2";
+        QByteArray v3("OIRECORD\x03\x00\x02\x00\x00\x00{}", 16);
+        QTest::newRow("newer version") << v3 << "version 3";
         QByteArray cutHeader("OIRECORD\x01\x00\xFF\x00\x00\x00{", 15);
         QTest::newRow("truncated header") << cutHeader << "header is truncated";
         QByteArray badJson("OIRECORD\x01\x00\x02\x00\x00\x00{x", 16);
@@ -406,6 +408,120 @@ private slots:
         QVERIFY(turning > 5);
     }
 
+    // A file the previous program wrote (format version 1, a few seconds of
+    // the virtual Create 2) still opens whole, and takes markers.
+    void versionOneRecordingsStillOpen()
+    {
+        const QString fixture = QStringLiteral(ROOMBA_TEST_DATA "/version1.oirec");
+        QCOMPARE(qFromLittleEndian<quint16>(fileBytes(fixture).constData() + 8), quint16(1));
+        const Recording r = load(fixture);
+        QVERIFY(!r.damage());
+        QCOMPARE(r.robotProfile().id, oi::ProfileId::Create2);
+        QCOMPARE(r.frames().size(), std::size_t(257));
+        QVERIFY(r.markers().isEmpty());
+
+        QTemporaryDir dir;
+        const QString path = dir.filePath("old.oirec");
+        QVERIFY(QFile::copy(fixture, path));
+        QString error;
+        QVERIFY2(Recording::saveMarkerEdits(path, {MarkerEdit::add({1, 500000, "half a second"})}, &error),
+                 qPrintable(error));
+        const QByteArray after = fileBytes(path);
+        QCOMPARE(qFromLittleEndian<quint16>(after.constData() + 8), quint16(2));
+        const Recording marked = load(path);
+        QVERIFY(!marked.damage());
+        QCOMPARE(marked.receivedBytes(), r.receivedBytes());
+        QCOMPARE(marked.sentBytes(), r.sentBytes());
+        QCOMPARE(marked.markers(), (QList<RecordingMarker>{{1, 500000, "half a second"}}));
+    }
+
+    // Markers written while recording, then added, renamed and deleted in
+    // the file, read back in time order with their last notes.
+    void markersSurviveWritingAndEditing()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath("m.oirec");
+        RecordingWriter writer;
+        QVERIFY(writer.open(path, {}));
+        QVERIFY(writer.appendStreamStarted(oi::ProfileId::Create2, 115200, {7}));
+        QVERIFY(writer.appendMarkerEdit(MarkerEdit::add({1, 0, "start"})));
+        QVERIFY(writer.append(RecordKind::Received, QByteArray("\x13\x02\x07\x03\xE1", 5)));
+        QVERIFY(writer.appendMarkerEdit(MarkerEdit::add({2, 0, ""})));
+        QVERIFY(writer.appendMarkerEdit(MarkerEdit::rename(1, "the start")));
+        writer.close();
+        QCOMPARE(load(path).markers(), (QList<RecordingMarker>{{1, 0, "the start"}, {2, 0, ""}}));
+
+        QString error;
+        QVERIFY(Recording::saveMarkerEdits(path,
+                                           {MarkerEdit::remove(1), MarkerEdit::add({3, 0, "hit, \"hard\""}),
+                                            MarkerEdit::rename(9, "no such marker"),
+                                            MarkerEdit::add({4, 10000000, "after the frames"})},
+                                           &error));
+        const Recording r = load(path);
+        QVERIFY(!r.damage());
+        QCOMPARE(r.markers(), (QList<RecordingMarker>{{2, 0, ""}, {3, 0, "hit, \"hard\""}, {4, 10000000, "after the frames"}}));
+        QCOMPARE(r.markers()[0].label(), QString("#2"));
+        QCOMPARE(r.recordCount(), 9);
+        // In the CSV: on the frame at or after each marker, quoted as CSV
+        // quotes; one after the last frame on a row of its own.
+        const QStringList lines = csvLines(r);
+        QCOMPARE(lines[0], QString("time_s,bumps_wheel_drops,marker"));
+        QCOMPARE(lines.size(), 3);
+        QVERIFY2(lines[1].endsWith(",3,\"#2; hit, \"\"hard\"\"\""), qPrintable(lines[1]));
+        QCOMPARE(lines[2], QString("10,,after the frames"));
+    }
+
+    // A damaged tail is kept; the new markers go before it, where they are read.
+    void markersGoBeforeADamagedTail()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath("d.oirec");
+        RecordingWriter writer;
+        QVERIFY(writer.open(path, {}));
+        QVERIFY(writer.appendStreamStarted(oi::ProfileId::Create2, 115200, {7}));
+        QVERIFY(writer.append(RecordKind::Received, QByteArray("\x13\x02\x07\x03\xE1", 5)));
+        writer.close();
+        QByteArray bytes = fileBytes(path);
+        const QByteArray tail("R\x01\x02", 3); // a record cut short
+        bytes += tail;
+        writeFile(path, bytes);
+
+        QString error;
+        QVERIFY(Recording::saveMarkerEdits(path, {MarkerEdit::add({1, 7, "before the damage"})}, &error));
+        const QByteArray after = fileBytes(path);
+        QVERIFY(after.endsWith(tail));
+        const Recording r = load(path);
+        QCOMPARE(r.markers().size(), 1);
+        QVERIFY(r.damage());
+        QCOMPARE(r.damage()->byteOffset, after.size() - tail.size());
+    }
+
+    void unreadableMarkerIsDamage()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath("u.oirec");
+        RecordingWriter writer;
+        QVERIFY(writer.open(path, {}));
+        QVERIFY(writer.appendStreamStarted(oi::ProfileId::Create2, 115200, {7}));
+        QVERIFY(writer.append(RecordKind::Marker, "{\"op\":\"move\",\"id\":1}"));
+        writer.close();
+        const Recording r = load(path);
+        QVERIFY(r.damage());
+        QCOMPARE(r.damage()->reason, QString("unreadable marker"));
+    }
+
+    // A file that cannot be read is left as it was, with the reason.
+    void markersIntoAnUnreadableFileAreRefused()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath("x.oirec");
+        writeFile(path, "not a recording");
+        QString error;
+        QVERIFY(!Recording::saveMarkerEdits(path, {MarkerEdit::add({1, 0, "x"})}, &error));
+        QVERIFY2(error.contains("not a Roomba Dashboard recording"), qPrintable(error));
+        QCOMPARE(fileBytes(path), QByteArray("not a recording"));
+    }
+
     void csvHasOneRowPerFrame()
     {
         QTemporaryDir dir;
@@ -416,7 +532,7 @@ private slots:
         QCOMPARE(lines.size(), int(r.frames().size()) + 1);
         const QStringList columns = lines[0].split(',');
         QCOMPARE(columns.first(), QString("time_s"));
-        QCOMPARE(columns.size(), 1 + 52); // group 100: packets 7..58
+        QCOMPARE(columns.size(), 1 + 52); // group 100: packets 7..58; no markers, no marker column
         QCOMPARE(columns[1], QString("bumps_wheel_drops"));
         const int voltage = columns.indexOf("voltage[mV]");
         QVERIFY(voltage > 0);

@@ -23,12 +23,31 @@ private slots:
     void rowLeavesMissingValuesEmpty()
     {
         const oi::RobotProfile &create2 = oi::profile(oi::ProfileId::Create2);
-        const SensorCsv csv({create2.packet(22), create2.packet(8), create2.packet(23)});
+        SensorCsv csv({create2.packet(22), create2.packet(8), create2.packet(23)});
         QByteArray out;
         const std::vector<std::optional<std::int32_t>> row{14000, std::nullopt, -1200};
         csv.appendRow(out, 0.015, row);
         csv.appendRow(out, 1.5, std::vector<std::optional<std::int32_t>>{std::nullopt, 1});
         QCOMPARE(out, QByteArray("0.015,14000,,-1200\n1.5,,1,\n"));
+    }
+
+    // Each marker on the first row at or after it, quoted where CSV needs;
+    // one after the last row on a row of its own.
+    void markersFillTheLastColumn()
+    {
+        const oi::RobotProfile &create2 = oi::profile(oi::ProfileId::Create2);
+        SensorCsv csv({create2.packet(22)}, {{0.01, "start"}, {0.015, "a, \"b\""}, {0.02, "c"}, {9, "after"}});
+        QByteArray out;
+        csv.appendHeader(out);
+        for (double t : {0.0, 0.015, 0.03, 0.045})
+            csv.appendRow(out, t, std::vector<std::optional<std::int32_t>>{14000});
+        csv.finish(out);
+        QCOMPARE(out, QByteArray("time_s,voltage[mV],marker\n"
+                                 "0,14000,\n"
+                                 "0.015,14000,\"start; a, \"\"b\"\"\"\n"
+                                 "0.03,14000,c\n"
+                                 "0.045,14000,\n"
+                                 "9,,after\n"));
     }
 
     void timeText_data()

@@ -3,12 +3,14 @@
 // official reader (@mcap/core, installed with npm) and by our own record
 // walker; damaged recordings; paths that cannot be written; roomba-ctl mcap.
 #include "mcap_records.h"
+#include "oirec_records.h" // tests/common
 #include "recording_mcap.h"
 #include "robot_link.h"
 #include "snapshot_json.h"
 #include "stream_frames.h"
 #include "transport_factory.h"
 
+#include <QDateTime>
 #include <QDir>
 #include <QFile>
 #include <QJsonArray>
@@ -47,34 +49,12 @@ Recording load(const QString &path)
     return *r;
 }
 
-// A recording record as recording_format.md lays it out.
-QByteArray oirecRecord(char kind, qint64 timeUs, const QByteArray &payload)
-{
-    QByteArray r(1, kind);
-    char field[8];
-    qToLittleEndian<qint64>(timeUs, field);
-    r.append(field, 8);
-    qToLittleEndian<quint16>(quint16(payload.size()), field);
-    r.append(field, 2);
-    r += payload;
-    qToLittleEndian<quint16>(qChecksum(r), field);
-    r.append(field, 2);
-    return r;
-}
-
 // A Create 2 streaming group 100 every 15 ms from 2026-01-02 03:04:05 UTC:
 // frame i has the bumps and mode `frame(i)` gives; Safe is sent at the start.
 QByteArray syntheticRecording(int frames, const std::function<std::pair<int, int>(int)> &frame)
 {
-    const QByteArray header = R"({"format":"Roomba Dashboard recording","version":1,)"
-                              R"("started":"2026-01-02T03:04:05.000Z","link":"test"})";
-    QByteArray file("OIRECORD");
-    char field[4];
-    qToLittleEndian<quint16>(1, field);
-    file.append(field, 2);
-    qToLittleEndian<quint32>(quint32(header.size()), field);
-    file.append(field, 4);
-    file += header;
+    QByteArray file = oirecHeader(1, R"({"format":"Roomba Dashboard recording","version":1,)"
+                                     R"("started":"2026-01-02T03:04:05.000Z","link":"test"})");
     file += oirecRecord('T', 0, bytes({128, 131}));
     file += oirecRecord('S', 0, R"({"profile":"create2","baud":115200,"packets":[100]})");
     for (int i = 0; i < frames; ++i) {
@@ -169,8 +149,13 @@ private slots:
         link.open(oilink::LinkSettings::virtualRobotOf(oi::ProfileId::Create2, oi::ProfileId::Create2));
         QVERIFY(snapshots.wait(kTimeoutMs));
         link.startRecording(m_recording);
+        link.markRecording(oilink::MarkerEdit::add({1, 0, "start"}));
         snapshots.clear();
         QTRY_VERIFY_WITH_TIMEOUT(snapshots.size() >= 10, kTimeoutMs);
+        link.markRecording(oilink::MarkerEdit::add({2, 100000, ""}));
+        link.markRecording(oilink::MarkerEdit::add({3, 150000, "hit the table leg"}));
+        link.markRecording(oilink::MarkerEdit::add({4, 120000, "gone"}));
+        link.markRecording(oilink::MarkerEdit::remove(4));
         QCOMPARE(snapshots.last().at(0).value<oi::SensorSnapshot>().oiMode(), oi::OiMode::Passive);
         link.send(bytes({131, 137, 0, 200, 0x80, 0x00}));
         snapshots.clear();
@@ -241,7 +226,7 @@ private slots:
         // Channels and schemas by name; messages counted against the recording.
         const QJsonObject channels = read.value("channels").toObject();
         QCOMPARE(channels.keys(), (QStringList{"/roomba/bytes_received", "/roomba/bytes_sent", "/roomba/events",
-                                               "/roomba/pose", "/roomba/telemetry", "/tf"}));
+                                               "/roomba/markers", "/roomba/pose", "/roomba/telemetry", "/tf"}));
         const auto channel = [&](const char *topic) { return channels.value(topic).toObject(); };
         QCOMPARE(channel("/roomba/telemetry").value("schema").toString(), QString("roomba.Telemetry.create2"));
         QCOMPARE(channel("/roomba/pose").value("schema").toString(), QString("foxglove.PoseInFrame"));
@@ -288,6 +273,8 @@ private slots:
         // The mode went to Safe, and the log says so.
         QVERIFY2(channel("/roomba/events").value("messages").toArray().contains("Mode Passive → Safe"),
                  QJsonDocument(channel("/roomba/events").value("messages").toArray()).toJson().constData());
+        // One message per marker the recording holds.
+        QCOMPARE(channel("/roomba/markers").value("count").toInt(), int(recording.markers().size()));
 
         // The summary's statistics match what the file holds, and what we wrote.
         const QJsonObject st = read.value("statistics").toObject();
@@ -299,7 +286,7 @@ private slots:
         }
         QCOMPARE(st.value("messageCount").toInt(), counted);
         QCOMPARE(quint64(counted), written.messageCount);
-        QCOMPARE(st.value("channelCount").toInt(), 6);
+        QCOMPARE(st.value("channelCount").toInt(), 7);
         QCOMPARE(st.value("schemaCount").toInt(), 5);
         QCOMPARE(st.value("chunkCount").toInt(), read.value("chunkIndexes").toInt());
         QCOMPARE(st.value("chunkCount").toInt(), read.value("streamed").toObject().value("Chunk").toInt());
@@ -325,19 +312,26 @@ private slots:
         QCOMPARE(meta.value("link").toString(), recording.header().value("link").toString());
     }
 
-    // Markers given to the export are log messages of their own channel.
-    void markersPassedInAreWritten()
+    // The markers made while recording, read back from the file, are log
+    // messages of their own channel, in time order, at their times.
+    void markersInTheRecordingAreWritten()
     {
         if (!QFile::exists(QDir(m_readerDir).filePath("node_modules/@mcap/core/package.json")))
             QSKIP("@mcap/core is not installed: see installTheOfficialReader");
         const Recording recording = load(m_recording);
-        oilink::McapExportOptions options;
-        options.markers = {{0, "start"}, {recording.frames().back().timeUs, "hit the table leg"}};
+        QCOMPARE(recording.markers().size(), 3);
         const QString out = m_dir.filePath("markers.mcap");
-        QCOMPARE(oilink::exportRecordingMcap(recording, out, options), QString());
-        const QJsonObject markers = readWithMcapCore(out).value("channels").toObject().value("/roomba/markers").toObject();
+        QCOMPARE(oilink::exportRecordingMcap(recording, out, {}), QString());
+        const QJsonObject read = readWithMcapCore(out);
+        const QJsonObject markers = read.value("channels").toObject().value("/roomba/markers").toObject();
         QCOMPARE(markers.value("schema").toString(), QString("foxglove.Log"));
-        QCOMPARE(markers.value("messages").toArray(), (QJsonArray{"start", "hit the table leg"}));
+        QCOMPARE(markers.value("messages").toArray(), (QJsonArray{"start", "#2", "hit the table leg"}));
+        const qint64 started = QDateTime::fromString(recording.header().value("started").toString(), Qt::ISODateWithMs)
+                                   .toMSecsSinceEpoch();
+        QJsonArray times;
+        for (const oilink::RecordingMarker &m : recording.markers())
+            times.append(QString::number(started * 1000000 + m.timeUs * 1000));
+        QCOMPARE(markers.value("logTimes").toArray(), times);
     }
 
     void bumpsCliffsAndModesAreLogged()
@@ -351,7 +345,7 @@ private slots:
         const QString in = m_dir.filePath("events.oirec");
         QVERIFY(writeFile(in, oirec));
         const QString out = m_dir.filePath("events.mcap");
-        QCOMPARE(oilink::exportRecordingMcap(load(in), out, {mcap::Compression::None, {}}), QString());
+        QCOMPARE(oilink::exportRecordingMcap(load(in), out, {mcap::Compression::None}), QString());
         const QByteArray file = fileBytes(out);
         const quint16 events = channelsOf(file).value("/roomba/events");
         QCOMPARE(eventsOf(file, events), (QStringList{"Mode Passive", "Bump Left", "Bump Left cleared",
@@ -384,7 +378,7 @@ private slots:
         QVERIFY(damaged.damage());
         const QString out = m_dir.filePath("cut.mcap");
         std::optional<oilink::RecordingDamage> damage;
-        QCOMPARE(oilink::exportRecordingMcap(cut, out, {mcap::Compression::None, {}}, &damage), QString());
+        QCOMPARE(oilink::exportRecordingMcap(cut, out, {mcap::Compression::None}, &damage), QString());
         QVERIFY(damage);
         QCOMPARE(damage->byteOffset, damaged.damage()->byteOffset);
         const QByteArray file = fileBytes(out);

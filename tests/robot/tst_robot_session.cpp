@@ -3,6 +3,7 @@
 // applied to its odometry, and its history on the link's clock.
 #include "calibration_drive.h"
 #include "command_encoder.h"
+#include "recording_file.h"
 #include "recording_transport.h" // tests/common
 #include "robot_session.h"
 #include "saved_robots.h"
@@ -342,6 +343,89 @@ private slots:
         }
         QVERIFY(previous > 0);
         QVERIFY(previous < 60);
+    }
+
+    // Markers dropped while recording (added, renamed, deleted) are in the
+    // file; a replay of it shows them, and its changes go back into the file;
+    // the CSV export carries them.
+    void markersSurviveRecordReplayAndExport()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath("marked.oirec");
+        RobotSession robot;
+        robot.setTransportFactory(transports::transportFactory());
+        QString error;
+        QCOMPARE(robot.dropMarker("too early", &error), 0);
+        QVERIFY(error.contains("recording"));
+        robot.connectTo(oilink::LinkSettings::virtualRobotOf(oi::ProfileId::Create2, oi::ProfileId::Create2));
+        QTRY_VERIFY_WITH_TIMEOUT(robot.snapshotCount() >= 5, 5000);
+        robot.startRecording(path);
+        QTRY_VERIFY_WITH_TIMEOUT(robot.recording().active, 5000);
+        QVERIFY(robot.markers().canChange());
+        QSignalSpy changed(&robot.markers(), &RobotMarkers::changed);
+        const auto dropAfterFrames = [&](const QString &note) {
+            const quint64 until = robot.snapshotCount() + 5;
+            if (!QTest::qWaitFor([&] { return robot.snapshotCount() >= until; }, 5000))
+                return 0;
+            return robot.dropMarker(note);
+        };
+        QCOMPARE(dropAfterFrames("start"), 1);
+        const double startSeconds = robot.markers().seconds(robot.markers().list().first());
+        QVERIFY(std::abs(startSeconds - robot.history().newestTime()) <= 0.5e-6); // kept in whole µs
+        QCOMPARE(dropAfterFrames(""), 2);
+        QCOMPARE(dropAfterFrames("oops"), 3);
+        QVERIFY(robot.markers().rename(2, "  hit the   table leg "));
+        QVERIFY(robot.markers().remove(3));
+        QVERIFY(!robot.markers().remove(3, &error));
+        QCOMPARE(dropAfterFrames("turned"), 3); // the id of a deleted marker is free again
+        QCOMPARE(changed.size(), 6);
+        const QList<oilink::RecordingMarker> made = robot.markers().list();
+        QCOMPARE(made.size(), 3);
+        QCOMPARE(made[1].note, QString("hit the table leg"));
+        QVERIFY(made[0].timeUs < made[1].timeUs && made[1].timeUs < made[2].timeUs);
+        QTRY_VERIFY_WITH_TIMEOUT(robot.snapshotCount() >= 40, 5000);
+        robot.stopRecording();
+        QTRY_VERIFY_WITH_TIMEOUT(!robot.recording().active, 5000);
+        QVERIFY(!robot.markers().canChange());
+        QCOMPARE(robot.markers().list(), made);
+
+        std::optional<oilink::Recording> file = oilink::Recording::load(path, &error);
+        QVERIFY2(file, qPrintable(error));
+        QCOMPARE(file->markers(), made);
+        QVERIFY(made.last().timeUs <= file->durationUs());
+        // The CSV: each label once, on a frame at or after its marker.
+        QString csv;
+        QTextStream out(&csv);
+        file->writeCsv(out);
+        out.flush();
+        QStringList labels;
+        for (const QString &line : csv.split('\n', Qt::SkipEmptyParts).mid(1)) {
+            const QString cell = line.section(',', -1);
+            if (!cell.isEmpty()) {
+                labels << cell;
+                QVERIFY(line.section(',', 0, 0).toDouble() * 1e6 >= double(made[labels.size() - 1].timeUs) - 1);
+            }
+        }
+        QCOMPARE(labels, (QStringList{"start", "hit the table leg", "turned"}));
+
+        // A replay of the file: its markers, on the recording's clock; next
+        // and previous from a moment; a change kept in the file.
+        RobotSession replay;
+        const auto stream = oilink::Recording::readStream(path, &error);
+        QVERIFY(stream);
+        replay.connectTo(oilink::LinkSettings::replayOf(path, stream->profile->id, stream->baud, stream->packets));
+        QTRY_COMPARE_WITH_TIMEOUT(replay.markers().list(), made, 5000);
+        QCOMPARE(replay.markers().seconds(made[1]), double(made[1].timeUs) / 1e6);
+        QCOMPARE(replay.markers().next(replay.markers().seconds(made[0]))->id, made[1].id);
+        QCOMPARE(replay.markers().previous(replay.markers().seconds(made[0])), std::nullopt);
+        QCOMPARE(replay.markers().previous(100.0)->id, made[2].id);
+        QVERIFY(replay.markers().rename(made[0].id, "the very start", &error));
+        QVERIFY(replay.markers().remove(made[2].id, &error));
+        file = oilink::Recording::load(path, &error);
+        QVERIFY2(file, qPrintable(error));
+        QCOMPARE(file->markers(), replay.markers().list());
+        QCOMPARE(file->markers().size(), 2);
+        QCOMPARE(file->markers()[0].note, QString("the very start"));
     }
 
     // Closing stops the robot and leaves it in Passive, from the model.

@@ -111,6 +111,32 @@ private slots:
         QVERIFY(!error.isEmpty());
     }
 
+    // The markers drawn go into the export, each on the first row at or
+    // after it; those outside the range exported stay out.
+    void exportCarriesTheMarkers()
+    {
+        QTemporaryDir dir;
+        SensorHistory h;
+        SensorPlots plots;
+        plots.setHistory(&h);
+        plots.stack()->setWindowSeconds(10);
+        plots.stack()->setChannels(0, {22});
+        feed(h, 0, 201); // 0 .. 20 s
+        plots.setMarkers({{12.05, "hit the table leg"}, {3.0, "early"}});
+        plots.refresh();
+        const QString visible = dir.filePath(QStringLiteral("visible.csv"));
+        QString error;
+        QVERIFY2(plots.exportVisibleCsv(visible, &error), qPrintable(error));
+        const QList<QByteArray> lines = readAll(visible).split('\n');
+        QCOMPARE(lines[0], QByteArray("time_s,voltage[mV],marker"));
+        QCOMPARE(lines[1], QByteArray("10,14100,"));
+        QCOMPARE(lines[22], QByteArray("12.1,14121,hit the table leg"));
+        QCOMPARE(readAll(visible).count("early"), 0);
+        const QString all = dir.filePath(QStringLiteral("all.csv"));
+        QVERIFY(plots.exportAllCsv(all, &error));
+        QVERIFY(readAll(all).contains("\n3,14030,early\n"));
+    }
+
     void spaceTogglesPause()
     {
         SensorPlots plots;

@@ -16,6 +16,8 @@
 #include <QShortcut>
 #include <QVBoxLayout>
 
+#include <algorithm>
+
 #include <cmath>
 #include <limits>
 
@@ -180,7 +182,12 @@ bool SensorPlots::exportCsv(const QString &path, double from, double to, QString
     const std::vector<int> ids = m_stack->plottedChannels();
     if (ids.empty())
         return fail(tr("No channels are plotted."));
-    return m_stack->history()->exportCsv(path, ids, from, to, error);
+    // The markers drawn go in too, in time order.
+    QList<oilink::SensorCsv::Mark> marks;
+    for (const PlotMarker &m : m_stack->markers())
+        marks << oilink::SensorCsv::Mark{m.seconds, m.label};
+    std::stable_sort(marks.begin(), marks.end(), [](const auto &a, const auto &b) { return a.seconds < b.seconds; });
+    return m_stack->history()->exportCsv(path, ids, from, to, error, marks);
 }
 
 bool SensorPlots::exportVisibleCsv(const QString &path, QString *error) const

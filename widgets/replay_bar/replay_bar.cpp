@@ -7,17 +7,21 @@
 #include <QEvent>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QPainter>
 #include <QSlider>
 #include <QStyle>
+#include <QStyleOptionSlider>
 #include <QToolButton>
 
+#include <algorithm>
 #include <cmath>
 
 namespace {
 // The slider counts milliseconds: fine enough for a frame every 15 ms.
 constexpr qint64 kUsPerStep = 1000;
+} // namespace
 
-QString clock(qint64 us)
+QString ReplayBar::clock(qint64 us)
 {
     const qint64 tenths = us / 100000;
     return QStringLiteral("%1:%2.%3")
@@ -25,7 +29,39 @@ QString clock(qint64 us)
         .arg((tenths / 10) % 60, 2, 10, QLatin1Char('0'))
         .arg(tenths % 10);
 }
-} // namespace
+
+// A slider that draws each marker as a tick across its groove.
+class MarkedSlider : public QSlider {
+public:
+    using QSlider::QSlider;
+    QList<PlotMarker> markers;
+
+    // The x of `seconds` on the groove, in the slider's pixels.
+    int tickX(double seconds) const
+    {
+        QStyleOptionSlider option;
+        initStyleOption(&option);
+        const QRect groove = style()->subControlRect(QStyle::CC_Slider, &option, QStyle::SC_SliderGroove, this);
+        const QRect handle = style()->subControlRect(QStyle::CC_Slider, &option, QStyle::SC_SliderHandle, this);
+        // The handle's centre travels from half a handle in to half a handle from the end.
+        const int span = groove.width() - handle.width();
+        const int value = int(std::llround(seconds * 1e6 / double(kUsPerStep)));
+        return groove.left() + handle.width() / 2
+               + QStyle::sliderPositionFromValue(minimum(), maximum(), std::clamp(value, minimum(), maximum()), span);
+    }
+
+protected:
+    void paintEvent(QPaintEvent *event) override
+    {
+        QSlider::paintEvent(event);
+        QPainter p(this);
+        p.setPen(QPen(palette().color(QPalette::Text), 2)); // as the plots draw markers
+        for (const PlotMarker &m : markers) {
+            const int x = tickX(m.seconds);
+            p.drawLine(x, 0, x, height());
+        }
+    }
+};
 
 const QList<double> &ReplayBar::speeds()
 {
@@ -50,7 +86,13 @@ ReplayBar::ReplayBar(QWidget *parent) : QWidget(parent)
     for (double s : speeds())
         m_speed->addItem(QStringLiteral("%1×").arg(s), s);
     m_speed->setCurrentIndex(int(speeds().indexOf(1.0)));
-    m_slider = new QSlider(Qt::Horizontal, this);
+    m_previousMarker = new QToolButton(this);
+    m_previousMarker->setObjectName("replayPreviousMarker");
+    m_previousMarker->setIcon(style()->standardIcon(QStyle::SP_MediaSkipBackward));
+    m_nextMarker = new QToolButton(this);
+    m_nextMarker->setObjectName("replayNextMarker");
+    m_nextMarker->setIcon(style()->standardIcon(QStyle::SP_MediaSkipForward));
+    m_slider = new MarkedSlider(Qt::Horizontal, this);
     m_slider->setObjectName("replaySlider");
     m_slider->setMinimumWidth(200);
     m_time = new QLabel(this);
@@ -63,7 +105,9 @@ ReplayBar::ReplayBar(QWidget *parent) : QWidget(parent)
     for (QWidget *w : {static_cast<QWidget *>(m_back), static_cast<QWidget *>(m_playPause),
                        static_cast<QWidget *>(m_forward), static_cast<QWidget *>(m_speed)})
         row->addWidget(w);
+    row->addWidget(m_previousMarker);
     row->addWidget(m_slider, 1);
+    row->addWidget(m_nextMarker);
     row->addWidget(m_time);
     row->addWidget(m_damage);
 
@@ -75,6 +119,8 @@ ReplayBar::ReplayBar(QWidget *parent) : QWidget(parent)
     });
     connect(m_back, &QToolButton::clicked, this, [this] { emit stepRequested(-1); });
     connect(m_forward, &QToolButton::clicked, this, [this] { emit stepRequested(1); });
+    connect(m_previousMarker, &QToolButton::clicked, this, &ReplayBar::previousMarkerRequested);
+    connect(m_nextMarker, &QToolButton::clicked, this, &ReplayBar::nextMarkerRequested);
     connect(m_speed, &QComboBox::activated, this, [this](int i) { emit speedChosen(m_speed->itemData(i).toDouble()); });
     connect(m_slider, &QSlider::sliderPressed, this, [this] { m_dragging = true; });
     connect(m_slider, &QSlider::sliderReleased, this, [this] {
@@ -96,6 +142,10 @@ void ReplayBar::retranslateUi()
     m_back->setAccessibleName(tr("One frame back"));
     m_forward->setToolTip(tr("One frame forward"));
     m_forward->setAccessibleName(tr("One frame forward"));
+    m_previousMarker->setToolTip(tr("Previous marker (,)"));
+    m_previousMarker->setAccessibleName(tr("Previous marker"));
+    m_nextMarker->setToolTip(tr("Next marker (.)"));
+    m_nextMarker->setAccessibleName(tr("Next marker"));
     m_speed->setToolTip(tr("Replay speed"));
     m_speed->setAccessibleName(tr("Replay speed"));
     m_slider->setToolTip(tr("Position in the recording"));
@@ -114,6 +164,26 @@ void ReplayBar::setPosition(const Position &position)
 {
     m_position = position;
     showPosition();
+}
+
+void ReplayBar::setMarkers(const QList<PlotMarker> &markers)
+{
+    if (markers == m_slider->markers)
+        return;
+    m_slider->markers = markers;
+    m_previousMarker->setEnabled(!markers.isEmpty());
+    m_nextMarker->setEnabled(!markers.isEmpty());
+    m_slider->update();
+}
+
+const QList<PlotMarker> &ReplayBar::markers() const
+{
+    return m_slider->markers;
+}
+
+int ReplayBar::tickX(double seconds) const
+{
+    return m_slider->mapTo(this, QPoint(m_slider->tickX(seconds), 0)).x();
 }
 
 void ReplayBar::showPosition()

@@ -1,16 +1,19 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "plot_marker.h"
+
 #include <QWidget>
 
 class QComboBox;
 class QLabel;
-class QSlider;
 class QToolButton;
+class MarkedSlider;
 
 // The controls of a replay: play and pause, a frame back and forward, the
-// speed, and a slider to seek with. It shows where the replay is and, for a
-// damaged recording, where the damage is.
+// speed, a slider to seek with, and the previous and next marker. It shows
+// where the replay is, the markers as ticks on the slider and, for a damaged
+// recording, where the damage is.
 class ReplayBar : public QWidget {
     Q_OBJECT
 public:
@@ -27,11 +30,18 @@ public:
     };
 
     static const QList<double> &speeds(); // 0.25x .. 10x
+    // A time in the recording as m:ss.s.
+    static QString clock(qint64 us);
 
     explicit ReplayBar(QWidget *parent = nullptr);
 
     void setPosition(const Position &position);
     const Position &position() const { return m_position; }
+    // Ticks on the slider; seconds are the recording's.
+    void setMarkers(const QList<PlotMarker> &markers);
+    const QList<PlotMarker> &markers() const;
+    // Where on the slider a marker at `seconds` is drawn, in the bar's pixels.
+    int tickX(double seconds) const;
 
 signals:
     void playRequested();
@@ -39,6 +49,8 @@ signals:
     void stepRequested(int frames);
     void speedChosen(double speed);
     void seekRequested(qint64 timeUs);
+    void previousMarkerRequested();
+    void nextMarkerRequested();
 
 protected:
     void changeEvent(QEvent *event) override;
@@ -51,8 +63,10 @@ private:
     QToolButton *m_playPause = nullptr;
     QToolButton *m_back = nullptr;
     QToolButton *m_forward = nullptr;
+    QToolButton *m_previousMarker = nullptr;
+    QToolButton *m_nextMarker = nullptr;
     QComboBox *m_speed = nullptr;
-    QSlider *m_slider = nullptr;
+    MarkedSlider *m_slider = nullptr;
     QLabel *m_time = nullptr;
     QLabel *m_damage = nullptr;
     bool m_dragging = false;

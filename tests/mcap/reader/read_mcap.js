@@ -38,6 +38,7 @@ async function main() {
       firstTime: null,
       lastTime: null,
       messages: [],
+      logTimes: [],
     };
   }
   const topicOf = new Map([...reader.channelsById].map(([id, c]) => [id, c.topic]));
@@ -51,8 +52,10 @@ async function main() {
     c.last = value;
     c.lastTime = message.logTime.toString();
     if (c.messages.length < 50 && (topicOf.get(message.channelId).endsWith("events") ||
-                                   topicOf.get(message.channelId).endsWith("markers")))
+                                   topicOf.get(message.channelId).endsWith("markers"))) {
       c.messages.push(value.message);
+      c.logTimes.push(message.logTime.toString());
+    }
     c.count++;
   }
   const metadata = {};

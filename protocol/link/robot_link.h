@@ -157,7 +157,8 @@ private:
     bool takeScriptReply(const QByteArray &bytes);
     void onWatchdog();
     void onNoData();
-    bool writeBytes(const QByteArray &bytes);
+    // `asked`: a command from send(), not one of the link's own exchanges.
+    bool writeBytes(const QByteArray &bytes, bool asked = false);
     void dropPartialInput();
     void startNextQuery();
     void sendQuery();

@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "robot_firmware.h"
 
-#include "command_catalog.h"
 #include "saved_robots.h"
 
 #include <QSettings>
@@ -93,17 +92,14 @@ void RobotFirmware::connectingTo(const oilink::LinkSettings &link)
 
 void RobotFirmware::expectBanner(int timeoutMs)
 {
-    m_listening = true;
-    m_received.clear();
+    listenForBanner();
     m_deadline.start(timeoutMs);
 }
 
-void RobotFirmware::watchSent(const QByteArray &bytes)
+void RobotFirmware::listenForBanner()
 {
-    if (bytes.size() == 1 && std::uint8_t(bytes[0]) == oi::commandSpec(oi::Command::Reset).opcode) {
-        m_listening = true;
-        m_received.clear();
-    }
+    m_listening = true;
+    m_received.clear();
 }
 
 void RobotFirmware::watchReceived(const QByteArray &bytes)

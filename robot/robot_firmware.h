@@ -39,9 +39,9 @@ public:
     // and what was learned of this one before comes back.
     void connectingTo(const oilink::LinkSettings &link);
 
-    // Bytes the link sent and received. A Reset going out starts listening
-    // for the banner.
-    void watchSent(const QByteArray &bytes);
+    // A Reset was asked for: the banner that follows is read.
+    void listenForBanner();
+    // Bytes the link received, where a banner may be.
     void watchReceived(const QByteArray &bytes);
 
     // A Reset is about to go out on purpose: read() or readFailed() follows,

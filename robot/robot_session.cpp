@@ -144,9 +144,8 @@ QString RobotSession::readFirmwareVersion()
     if (m_settings.transport == oilink::TransportKind::Network)
         return tr("A robot on the broker is reset only by its bridge: read its firmware version where the "
                   "bridge runs.");
-    const oi::EncodeResult reset = oi::CommandEncoder(*m_profile).reset();
     m_firmware.expectBanner();
-    send(QByteArray(reinterpret_cast<const char *>(reset->data()), qsizetype(reset->size())));
+    send(oi::OiCommand{oi::Command::Reset, {}, {}});
     return {};
 }
 
@@ -154,8 +153,41 @@ bool RobotSession::send(const QByteArray &bytes)
 {
     if (!m_connected || bytes.isEmpty())
         return false;
+    // Bytes from a widget that does not yet say what it asks: read back as
+    // the robot reads them.
+    noteAsked(oi::readCommands(*m_profile, {reinterpret_cast<const std::uint8_t *>(bytes.constData()),
+                                            std::size_t(bytes.size())}));
     m_link.send(bytes);
     return true;
+}
+
+bool RobotSession::send(const oi::OiCommand &command) { return send(std::vector<oi::OiCommand>{command}); }
+
+bool RobotSession::send(const std::vector<oi::OiCommand> &commands)
+{
+    if (!m_connected || commands.empty())
+        return false;
+    const oi::CommandEncoder encoder(*m_profile);
+    QByteArray bytes;
+    for (const oi::OiCommand &command : commands) {
+        const oi::EncodeResult encoded = oi::encodeCommand(encoder, command);
+        if (!encoded) {
+            emit errorOccurred(tr("Not sent: %1").arg(QString::fromStdString(encoded.error().describe())));
+            return false;
+        }
+        bytes.append(reinterpret_cast<const char *>(encoded->data()), qsizetype(encoded->size()));
+    }
+    noteAsked(commands);
+    m_link.send(bytes);
+    return true;
+}
+
+void RobotSession::noteAsked(const std::vector<oi::OiCommand> &commands)
+{
+    // A Reset makes the robot print its banner with the firmware version.
+    for (const oi::OiCommand &command : commands)
+        if (command.command == oi::Command::Reset)
+            m_firmware.listenForBanner();
 }
 
 void RobotSession::setHistoryCapacity(std::size_t samples)
@@ -245,8 +277,6 @@ void RobotSession::onReplayStatus(const oilink::ReplayStatus &status)
 
 void RobotSession::onBytesSent(const QByteArray &bytes)
 {
-    // A Reset makes the robot print its banner with the firmware version.
-    m_firmware.watchSent(bytes);
     const qint64 now = QDateTime::currentMSecsSinceEpoch();
     m_recentBytes.append(true, bytes, now);
     emit bytesSent(bytes, now);

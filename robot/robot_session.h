@@ -2,6 +2,7 @@
 #pragma once
 
 #include "firmware_banner.h"
+#include "oi_command.h"
 #include "recent_bytes.h"
 #include "robot_firmware.h"
 #include "robot_link_thread.h"
@@ -56,6 +57,13 @@ public:
     // Sends already-encoded, validated bytes while the link is up. Returns false
     // (and sends nothing) when there is no link.
     bool send(const QByteArray &bytes) override;
+    // Typed commands, encoded with this robot's profile and sent together
+    // while the link is up; the session knows what was asked for (a Reset
+    // makes the firmware listen for the banner). False, with nothing sent
+    // and errorOccurred() saying why, without a link or for a command the
+    // profile refuses.
+    bool send(const oi::OiCommand &command);
+    bool send(const std::vector<oi::OiCommand> &commands);
     // Requests whose replies carry no framing go through the link's queue,
     // which pauses and resumes its own stream around them: Sensors (142) or
     // Query List (149), answered by sensorReply(); Show Script (154),
@@ -154,6 +162,7 @@ private:
     void onProfileAssumed(oi::ProfileId assumed);
     void setProfileAssumed(bool assumed);
     void onBytesSent(const QByteArray &bytes);
+    void noteAsked(const std::vector<oi::OiCommand> &commands);
     void onBytesReceived(const QByteArray &bytes);
     void onReplayStatus(const oilink::ReplayStatus &status);
     void resetHistory();

@@ -2,6 +2,7 @@
 #include "command_sender.h"
 
 #include "command_catalog.h"
+#include "oi_command.h"
 #include "command_modes.h"
 #include "profile_probe.h"
 #include "robot_link.h"
@@ -22,6 +23,17 @@ bool isMotion(oi::Command c)
 }
 
 QString fromStd(const std::string &text) { return QString::fromStdString(text); }
+
+// The packets a Sensors or Query List asks for, which the link's queue asks
+// and answers; none for other commands.
+QList<int> packetsAsked(const oi::OiCommand &command)
+{
+    if (command.command == oi::Command::Sensors)
+        return {command.fields[0]};
+    if (command.command == oi::Command::QueryList)
+        return QList<int>(command.data.begin(), command.data.end());
+    return {};
+}
 
 } // namespace
 
@@ -92,24 +104,21 @@ void CommandSender::useProfile(oi::ProfileId id)
     }
     if (!bytes.warning.empty())
         emit warning(fromStd(bytes.warning));
-    m_command = *bytes;
-    if (const QString why = m_order.settings.whyNoBaudChange();
-        !why.isEmpty() && oilink::LinkSettings::holdsBaudCommand(QByteArray(reinterpret_cast<const char *>(m_command.data()),
-                                                                             qsizetype(m_command.size())))) {
+    // One command, as typed: its bytes read back as the robot will read them.
+    m_command = oi::decodeCommand(*m_profile, *bytes).command;
+    if (const QString why = m_order.settings.whyNoBaudChange(); !why.isEmpty() && m_command.command == oi::Command::Baud) {
         finish(1, why);
         return;
     }
+    const QList<int> asked = packetsAsked(m_command);
     if (m_link.isProfileAssumed()) {
-        const bool query = m_command.front() == 142 || m_command.front() == 149;
-        const QList<int> asked(m_command.begin() + (m_command.front() == 142 ? 1 : 2), m_command.end());
-        if (query && std::any_of(asked.begin(), asked.end(), &oilink::ProfileProbe::dependsOnRoombaOrCreate2)) {
+        if (std::any_of(asked.begin(), asked.end(), &oilink::ProfileProbe::dependsOnRoombaOrCreate2)) {
             finish(1, mirroredAnswerRefusal(m_order.settings.describe(), asked));
             return;
         }
         emit note(roombaOrCreate2Note(m_order.settings.describe(), true));
     }
-    const oi::CommandSpec *spec = oi::commandSpecForOpcode(*m_profile, m_command.front());
-    if (spec && oi::availableWhenOff(spec->command))
+    if (oi::availableWhenOff(m_command.command))
         sendCommand(); // works in every mode: nothing to ask
     else
         askState();
@@ -145,7 +154,7 @@ void CommandSender::onQueryFailed()
         // Silent: Off mode, which only Start leaves (or a Create's script
         // waiting, which the link ends before Start).
         m_startSent = true;
-        send({128});
+        send({oi::Command::Start, {}, {}});
         askState();
         return;
     }
@@ -158,8 +167,7 @@ void CommandSender::onQueryFailed()
 
 void CommandSender::decide(const oi::SensorSnapshot &state)
 {
-    const oi::CommandSpec *spec = oi::commandSpecForOpcode(*m_profile, m_command.front());
-    const oi::Command command = spec ? spec->command : oi::Command::Start;
+    const oi::Command command = m_command.command;
     const QString name = fromStd(m_order.name);
     oi::OiMode mode = state.oiMode();
     if (oi::needsSafeOrFull(command) && mode == oi::OiMode::Passive) {
@@ -169,7 +177,7 @@ void CommandSender::decide(const oi::SensorSnapshot &state)
                           .arg(name, fromStd(std::string(oi::whyNotInPassive(command)))));
             return;
         }
-        send({131});
+        send({oi::Command::Safe, {}, {}});
         mode = oi::OiMode::Safe;
         emit note(QStringLiteral("the robot was in Passive mode: entered Safe mode for %1").arg(name));
     }
@@ -191,22 +199,22 @@ void CommandSender::decide(const oi::SensorSnapshot &state)
 
 void CommandSender::sendCommand()
 {
-    const std::uint8_t opcode = m_command.front();
-    if (opcode == 129 && m_command.size() == 2) // the port stays at its rate; the robot does not
+    if (m_command.command == oi::Command::Baud) // the port stays at its rate; the robot does not
         emit note(QStringLiteral("the robot now talks at %1 baud: give the next command --baud %1")
-                      .arg(oi::baudForCode(m_command[1])));
-    if (opcode != 142 && opcode != 149) {
+                      .arg(oi::baudForCode(m_command.fields[0])));
+    const QList<int> asked = packetsAsked(m_command);
+    if (asked.isEmpty()) {
         send(m_command);
         finish(0); // the caller closes the link, which sends what is queued first
         return;
     }
     m_phase = Phase::AwaitingReply;
-    const auto from = m_command.begin() + (opcode == 142 ? 1 : 2);
-    m_link.querySensors(QList<int>(from, m_command.end()));
+    m_link.querySensors(asked);
 }
 
-void CommandSender::send(const oi::Bytes &bytes)
+void CommandSender::send(const oi::OiCommand &command)
 {
+    const oi::Bytes bytes = *oi::encodeCommand(oi::CommandEncoder(*m_profile), command);
     m_link.send(QByteArray(reinterpret_cast<const char *>(bytes.data()), qsizetype(bytes.size())));
 }
 

@@ -2,7 +2,7 @@
 #pragma once
 
 #include "link_settings.h"
-#include "result.h"
+#include "oi_command.h"
 #include "sensor_snapshot.h"
 
 #include <QObject>
@@ -70,13 +70,13 @@ private:
     void onLinkError(const QString &message);
     void decide(const oi::SensorSnapshot &state);
     void sendCommand();
-    void send(const oi::Bytes &bytes);
+    void send(const oi::OiCommand &command);
     void finish(int status, const QString &error = {});
 
     oilink::RobotLink &m_link;
     Order m_order;
     const oi::RobotProfile *m_profile = nullptr;
-    oi::Bytes m_command;
+    oi::OiCommand m_command;
     Phase m_phase = Phase::Opening;
     bool m_startSent = false;
 };

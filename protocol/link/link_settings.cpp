@@ -38,15 +38,6 @@ QString LinkSettings::whyNoBaudChange() const
         .arg(describe());
 }
 
-bool LinkSettings::holdsBaudCommand(const QByteArray &bytes)
-{
-    constexpr char kBaud = char(129), kStart = char(128);
-    qsizetype at = 0;
-    while (at < bytes.size() && bytes[at] == kStart)
-        ++at;
-    return bytes.size() >= at + 2 && bytes[at] == kBaud;
-}
-
 LinkSettings LinkSettings::networkRobotOf(const QString &name, oi::ProfileId profile)
 {
     LinkSettings s;

@@ -67,9 +67,6 @@ struct LinkSettings {
     // TCP cannot set the bridge's rate, so the robot would go on at a rate
     // the bridge does not speak until someone edits the bridge's config.
     QString whyNoBaudChange() const;
-    // Whether these bytes hold a Baud command (129 and a rate code), as
-    // every command path sends it: first, or after Start.
-    static bool holdsBaudCommand(const QByteArray &bytes);
 
     static LinkSettings serial(const QString &path, std::optional<oi::ProfileId> profile = {},
                                int baud = 0);

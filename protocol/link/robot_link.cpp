@@ -7,9 +7,9 @@
 #include "stream_packets.h"
 #include "transport.h"
 
-#include "command_catalog.h"
 #include "command_encoder.h"
 #include "command_modes.h"
+#include "oi_command.h"
 
 #include <QCoreApplication>
 #include <QDateTime>
@@ -501,19 +501,23 @@ void RobotLink::send(const QByteArray &bytes)
         reportError(tr("not connected: the command was not sent"), false);
         return;
     }
-    if (const QString why = m_settings.whyNoBaudChange(); !why.isEmpty() && LinkSettings::holdsBaudCommand(bytes)) {
+    // The commands as the robot will read them. Baud and Start read alike on
+    // every profile, so they are found before the profile is known.
+    const oi::RobotProfile &reader = m_profile ? *m_profile : oi::profile(oi::ProfileId::Create2);
+    const std::vector<oi::OiCommand> commands = oi::readCommands(
+        reader, {reinterpret_cast<const std::uint8_t *>(bytes.constData()), static_cast<std::size_t>(bytes.size())});
+    const auto isBaud = [](const oi::OiCommand &c) { return c.command == oi::Command::Baud; };
+    if (const QString why = m_settings.whyNoBaudChange();
+        !why.isEmpty() && std::any_of(commands.begin(), commands.end(), isBaud)) {
         reportError(why, false);
         return;
     }
     // Start or cleaning, from any command path: a Create ends its script
     // first, or the script would go on in Passive, deaf (ERRATA 20).
-    if (m_profile && !bytes.isEmpty()) {
-        const oi::CommandSpec *spec = oi::commandSpecForOpcode(*m_profile, std::uint8_t(bytes.front()));
-        if (spec && oi::entersPassive(spec->command)) {
-            const oi::Bytes endScript = oi::CommandEncoder(*m_profile).endScript();
-            if (!endScript.empty() && !writeBytes(toBytes(endScript)))
-                return;
-        }
+    if (m_profile && !commands.empty() && oi::entersPassive(commands.front().command)) {
+        const oi::Bytes endScript = oi::CommandEncoder(*m_profile).endScript();
+        if (!endScript.empty() && !writeBytes(toBytes(endScript)))
+            return;
     }
     writeBytes(bytes, true);
 }

@@ -52,7 +52,7 @@ std::string kebab(std::string_view text)
 }
 
 // The offset, in one command's bytes, of the field an encoder error names;
-// 0 (the opcode) where it names none of them.
+// the first data byte where it names none of them (0 is the opcode's).
 std::size_t fieldOffset(const CommandSpec &spec, const std::string &field)
 {
     const std::string name = kebab(field);
@@ -63,7 +63,7 @@ std::size_t fieldOffset(const CommandSpec &spec, const std::string &field)
         at += fieldBytes(fieldKind(spec, i));
     }
     if (!isVariable(spec))
-        return 0;
+        return 1;
     const std::size_t count = countOffset(spec.command);
     if (name == "song-length" || name == "number-of-packets" || name == "script-length")
         return count;
@@ -80,10 +80,18 @@ CommandDecode needMore(const CommandSpec &spec, std::size_t need, std::size_t ha
 {
     CommandDecode out;
     out.status = CommandDecode::Status::NeedMore;
+    out.command.command = spec.command;
     out.length = need;
-    out.error = OiError::invalid(std::string(spec.name),
-                                 std::string(spec.title) + " needs " + std::to_string(need - 1)
-                                     + " data bytes; " + std::to_string(have - 1) + " remain");
+    const std::string title(spec.title);
+    if (isVariable(spec) && have < countOffset(spec.command) + 1) {
+        const bool length = spec.command == C::Song || spec.command == C::Script;
+        out.error = OiError::invalid(std::string(spec.name), title + " is cut short before its "
+                                                                 + (length ? "length" : "count") + " byte");
+    } else {
+        out.error = OiError::invalid(std::string(spec.name), title + " needs " + std::to_string(need - 1)
+                                                                 + " data bytes; " + std::to_string(have - 1)
+                                                                 + " remain");
+    }
     return out;
 }
 
@@ -181,7 +189,20 @@ EncodeResult encodeCommand(const CommandEncoder &e, const OiCommand &command)
     return OiError::invalid(std::string(spec.name), "has no encoder");
 }
 
-CommandDecode decodeCommand(const RobotProfile &profile, std::span<const std::uint8_t> bytes)
+bool hasVariablePart(Command command) { return isVariable(commandSpec(command)); }
+
+std::size_t commandHeaderLength(Command command)
+{
+    const CommandSpec &spec = commandSpec(command);
+    if (isVariable(spec))
+        return countOffset(command) + 1;
+    std::size_t length = 1;
+    for (std::size_t i = 0; i < spec.fields.size(); ++i)
+        length += fieldBytes(fieldKind(spec, i));
+    return length;
+}
+
+CommandDecode readCommand(const RobotProfile &profile, std::span<const std::uint8_t> bytes)
 {
     if (bytes.empty()) {
         CommandDecode out;
@@ -198,37 +219,53 @@ CommandDecode decodeCommand(const RobotProfile &profile, std::span<const std::ui
     }
 
     // The command's size, from its layout or its count byte.
-    std::size_t header = 1;
-    for (std::size_t i = 0; i < spec->fields.size(); ++i)
-        header += fieldBytes(fieldKind(*spec, i));
-    std::size_t size = header;
-    if (isVariable(*spec)) {
-        header = countOffset(spec->command) + 1;
-        if (bytes.size() < header)
-            return needMore(*spec, header, bytes.size());
-        size = header + bytes[header - 1] * bytesPerItem(spec->command);
-    }
+    const std::size_t header = commandHeaderLength(spec->command);
+    if (bytes.size() < header)
+        return needMore(*spec, header, bytes.size());
+    const std::size_t size =
+        isVariable(*spec) ? header + bytes[header - 1] * bytesPerItem(spec->command) : header;
     if (bytes.size() < size)
         return needMore(*spec, size, bytes.size());
 
-    OiCommand command{spec->command, {}, {}};
+    CommandDecode out;
+    out.status = CommandDecode::Status::Command;
+    out.command.command = spec->command;
     std::size_t at = 1;
     for (std::size_t i = 0; i < spec->fields.size(); ++i) {
-        command.fields.push_back(readField(*spec, i, bytes.data() + at));
+        out.command.fields.push_back(readField(*spec, i, bytes.data() + at));
         at += fieldBytes(fieldKind(*spec, i));
     }
     if (isVariable(*spec))
-        command.data.assign(bytes.begin() + std::ptrdiff_t(header), bytes.begin() + std::ptrdiff_t(size));
-
-    // The encoder's checks, so that bytes and typed calls are held to one rule.
-    if (const EncodeResult checked = encodeCommand(CommandEncoder(profile), command); !checked)
-        return failed(fieldOffset(*spec, checked.error().field), checked.error());
-
-    CommandDecode out;
-    out.status = CommandDecode::Status::Command;
-    out.command = std::move(command);
+        out.command.data.assign(bytes.begin() + std::ptrdiff_t(header), bytes.begin() + std::ptrdiff_t(size));
     out.length = size;
     return out;
+}
+
+std::vector<OiCommand> readCommands(const RobotProfile &profile, std::span<const std::uint8_t> bytes)
+{
+    std::vector<OiCommand> commands;
+    for (std::size_t at = 0; at < bytes.size();) {
+        CommandDecode d = readCommand(profile, bytes.subspan(at));
+        if (d.status != CommandDecode::Status::Command)
+            break;
+        commands.push_back(std::move(d.command));
+        at += d.length;
+    }
+    return commands;
+}
+
+CommandDecode decodeCommand(const RobotProfile &profile, std::span<const std::uint8_t> bytes)
+{
+    CommandDecode d = readCommand(profile, bytes);
+    if (d.status != CommandDecode::Status::Command)
+        return d;
+    // The encoder's checks, so that bytes and typed calls are held to one rule.
+    if (const EncodeResult checked = encodeCommand(CommandEncoder(profile), d.command); !checked) {
+        CommandDecode out = failed(fieldOffset(commandSpec(d.command.command), checked.error().field), checked.error());
+        out.command = std::move(d.command);
+        return out;
+    }
+    return d;
 }
 
 Result<std::vector<OiCommand>> decodeCommands(const RobotProfile &profile, std::span<const std::uint8_t> bytes)

@@ -40,11 +40,33 @@ struct CommandDecode {
     OiCommand command;     // when Command
     std::size_t length = 0; // bytes the command took (Command), or where the error is (Error)
     OiError error;         // when Error: names the field, or says where a truncated command ends
-    // Also set for NeedMore: `length` is then the bytes the command needs so
-    // far (it may grow once a count byte arrives) and `error` says what is
-    // missing, for a caller that has no more bytes to give.
+    // Added to the agreed shape: for NeedMore, `length` is the bytes the
+    // command needs so far (it may grow once a count byte arrives) and
+    // `error` says what is missing, for a caller with no more bytes to give.
+    // Once the opcode is known (NeedMore, or Error at a field, where `length`
+    // is at least 1), `command.command` says which command it is and, for
+    // an Error, `command` holds the values read. An Error at length 0 is an
+    // opcode the profile lacks.
 };
 CommandDecode decodeCommand(const RobotProfile &profile, std::span<const std::uint8_t> bytes);
+
+// The first command in `bytes` as a robot reads it: by its layout on the
+// profile, without the encoder's range checks, so a value out of range
+// (which a robot clamps or ignores) never loses the place in the bytes.
+// Error only for an opcode the profile lacks.
+CommandDecode readCommand(const RobotProfile &profile, std::span<const std::uint8_t> bytes);
+
+// The commands at the start of `bytes` as a robot reads them (readCommand),
+// up to the first it cannot read whole.
+std::vector<OiCommand> readCommands(const RobotProfile &profile, std::span<const std::uint8_t> bytes);
+
+// Whether the command has a variable part (Song, Stream, Query List, Script).
+bool hasVariablePart(Command command);
+// Bytes the command takes before its variable part: the opcode, the fixed
+// fields and the count byte. Its whole length where it has no variable part.
+std::size_t commandHeaderLength(Command command);
+// The most bytes any one command takes: a Song whose length byte says 255.
+inline constexpr std::size_t kLongestCommandBytes = 3 + 2 * 255;
 
 // A whole byte sequence as commands; a truncated or bad command is an error
 // that names the field and the byte offset.

@@ -3,6 +3,7 @@
 #include "text_tokens.h"
 
 #include "command_catalog.h"
+#include "oi_command.h"
 #include "song.h"
 
 #include <vector>
@@ -20,25 +21,48 @@ std::string_view withoutComment(std::string_view line)
     return line;
 }
 
-int signed8(std::uint8_t b) { return static_cast<std::int8_t>(b); }
-int signed16(std::uint8_t hi, std::uint8_t lo) { return static_cast<std::int16_t>((hi << 8) | lo); }
-
-std::string songText(std::span<const std::uint8_t> data)
+std::string songText(const OiCommand &song)
 {
-    // data = [slot][length][note duration]...
-    Song song;
-    bool friendly = data[1] >= 1 && data[1] <= kMaxSongNotes;
-    for (std::size_t i = 2; i + 1 < data.size(); i += 2) {
+    // fields = {slot}, data = [note duration]...
+    const Bytes &data = song.data;
+    Song notes;
+    bool friendly = data.size() >= 2 && data.size() <= 2 * kMaxSongNotes;
+    for (std::size_t i = 0; i + 1 < data.size(); i += 2) {
         const SongNote note{data[i], data[i + 1]};
         friendly = friendly && (!note.isRest() || note.midi == kRestNote);
-        song.notes.push_back(note);
+        notes.notes.push_back(note);
     }
-    std::string text = "song " + std::to_string(data[0]);
+    std::string text = "song " + std::to_string(song.fields[0]);
     if (friendly)
-        return text + " " + formatSong(song);
-    text += " " + std::to_string(data[1]);
-    for (std::size_t i = 2; i < data.size(); ++i)
-        text += " " + std::to_string(data[i]);
+        return text + " " + formatSong(notes);
+    text += " " + std::to_string(data.size() / 2);
+    for (std::uint8_t b : data)
+        text += " " + std::to_string(b);
+    return text;
+}
+
+// One statement as the assembler reads it: the command's name and its
+// fields, with the names the documents give to special values.
+std::string statementText(const OiCommand &command)
+{
+    if (command.command == Command::Song)
+        return songText(command);
+    std::string text(commandSpec(command.command).name);
+    for (std::size_t i = 0; i < command.fields.size(); ++i) {
+        const int v = command.fields[i];
+        std::string arg = std::to_string(v);
+        if (command.command == Command::Drive && i == 1 && v == kRadiusStraight)
+            arg = "straight";
+        if (const std::string_view event = waitEventName(v < 0 ? -v : v);
+            command.command == Command::WaitEvent && !event.empty())
+            arg = (v < 0 ? "not-" : "") + std::string(event);
+        text += " " + arg;
+    }
+    if (command.command == Command::Stream || command.command == Command::QueryList) {
+        text += " " + std::to_string(command.data.size()); // COUNT ID...
+        for (std::uint8_t id : command.data)
+            text += " " + std::to_string(id);
+    }
     return text;
 }
 
@@ -79,76 +103,30 @@ Result<Bytes> assembleScript(const RobotProfile &profile, std::string_view text)
 
 Result<std::string> disassembleScript(const RobotProfile &profile, std::span<const std::uint8_t> body)
 {
+    const auto commands = decodeCommands(profile, body);
+    if (!commands)
+        return commands.error();
+    const CommandEncoder encoder(profile);
     std::string text;
     std::size_t at = 0;
-    while (at < body.size()) {
-        const std::size_t offset = at;
-        const std::string where = "byte " + std::to_string(offset);
-        const std::uint8_t opcode = body[at++];
-        const CommandSpec *spec = commandSpecForOpcode(profile, opcode);
-        if (!spec)
-            return OiError::invalid(where, std::to_string(opcode) + " is not an opcode of the "
-                                               + std::string(profile.name));
-        if (spec->command == Command::Script)
+    for (const OiCommand &command : *commands) {
+        const std::string where = "byte " + std::to_string(at);
+        const std::string_view title = commandSpec(command.command).title;
+        if (command.command == Command::Script)
             return OiError::invalid(where, "a script cannot define another script");
+        const Bytes original = *encodeCommand(encoder, command); // decoded, so it encodes
+        at += original.size();
 
-        // How many data bytes follow, from the layout or the count byte.
-        std::size_t need = 0;
-        if (spec->layout == "*") {
-            const bool isSong = spec->command == Command::Song;
-            const std::size_t countAt = at + (isSong ? 1 : 0);
-            if (countAt >= body.size())
-                return OiError::invalid(where, std::string(spec->title) + " is cut short");
-            need = isSong ? 2 + 2 * std::size_t(body[countAt]) : 1 + std::size_t(body[countAt]);
-        } else {
-            for (char c : spec->layout)
-                need += c == 'w' ? 2 : 1;
-        }
-        if (body.size() - at < need)
-            return OiError::invalid(where, std::string(spec->title) + " needs " + std::to_string(need)
-                                               + " data bytes; " + std::to_string(body.size() - at)
-                                               + " remain");
-        const std::span<const std::uint8_t> data = body.subspan(at, need);
-        at += need;
-
-        std::string statement;
-        if (spec->command == Command::Song) {
-            statement = songText(data);
-        } else {
-            statement = std::string(spec->name);
-            std::size_t i = 0;
-            for (char c : spec->layout == "*" ? std::string_view() : spec->layout) {
-                std::string arg;
-                if (c == 'w') {
-                    const int v = signed16(data[i], data[i + 1]);
-                    arg = spec->command == Command::Drive && i == 2 && v == -32768 ? "straight"
-                                                                                   : std::to_string(v);
-                    i += 2;
-                } else if (c == 'c') {
-                    const int v = signed8(data[i++]);
-                    const std::string_view event = waitEventName(v < 0 ? -v : v);
-                    arg = spec->command == Command::WaitEvent && !event.empty()
-                              ? (v < 0 ? "not-" : "") + std::string(event)
-                              : std::to_string(v);
-                } else {
-                    arg = std::to_string(data[i++]);
-                }
-                statement += " " + arg;
-            }
-            if (spec->layout == "*") // stream and query list: COUNT ID...
-                for (std::uint8_t b : data)
-                    statement += " " + std::to_string(b);
-        }
         // Never print what the assembler would refuse or read otherwise.
-        const Bytes original(body.begin() + std::ptrdiff_t(offset), body.begin() + std::ptrdiff_t(at));
+        const std::string statement = statementText(command);
         std::vector<std::string> words;
         for (std::string_view word : splitTokens(statement, kWhitespace))
             words.emplace_back(word);
-        const EncodeResult again = encodeCommand(CommandEncoder(profile), words[0], std::span(words).subspan(1));
+        const EncodeResult again = encodeCommand(encoder, words[0], std::span(words).subspan(1));
         if (!again)
-            return OiError::invalid(where, std::string(spec->title) + ": " + again.error().describe());
+            return OiError::invalid(where, std::string(title) + ": " + again.error().describe());
         if (*again != original)
-            return OiError::invalid(where, std::string(spec->title) + " is not a command the script language can say");
+            return OiError::invalid(where, std::string(title) + " is not a command the script language can say");
         if (!text.empty())
             text += "; ";
         text += statement;

@@ -3,9 +3,9 @@
 
 #include "body.h"
 #include "brc_pin.h"
-#include "command_catalog.h"
 #include "command_modes.h"
 #include "firmware_banner.h"
+#include "oi_command.h"
 #include "packet_encoding.h"
 #include "seven_segment_font.h"
 
@@ -42,7 +42,7 @@ constexpr double kSpeedStep = 28.5;      // the speed controller's resolution, p
 constexpr double kAcceleration = 8000;   // mm/s², speeding up: full speed in about 60 ms
 constexpr double kBraking = 12000;       // mm/s², slowing down: the motors brake harder than they pull
 constexpr double kPwmFullScale = 255;    // Drive PWM 255 runs a wheel at about full speed
-constexpr int kMaxScriptBytes = 100;
+constexpr std::size_t kMaxScriptBytes = 100;
 constexpr std::size_t kInputBufferBytes = 4096; // bytes beyond this are lost, as on a full UART buffer
 constexpr std::size_t kMaxFrameDataBytes = 255;  // the n-bytes field is one byte
 
@@ -61,36 +61,31 @@ constexpr double kWheelOvercurrentMa = 1000;
 constexpr double kOldFirmwareAngleFactor = 0.324056;
 constexpr oi::FirmwareVersion kAngleFixedAfter{3, 4, 0};
 
-std::int16_t s16(std::uint8_t hi, std::uint8_t lo) { return std::int16_t(std::uint16_t((hi << 8) | lo)); }
-
-// How to read the bytes of an opcode: the profile's command, or, for one the
-// profile lacks, any command with that opcode, so its data bytes are skipped
-// rather than read as commands.
-const oi::CommandSpec *layoutFor(const oi::RobotProfile &profile, std::uint8_t opcode)
+// The command at the front of `q` as this robot reads it, and the bytes it
+// takes; nothing while it has not all arrived. An opcode the profile lacks is
+// read as another robot's command, so its data bytes are skipped (no
+// command) rather than read as commands; a byte no robot knows goes alone.
+struct NextCommand {
+    std::size_t length = 1;
+    std::optional<oi::OiCommand> command;
+};
+std::optional<NextCommand> nextCommand(const oi::RobotProfile &profile, const std::deque<std::uint8_t> &q,
+                                       oi::Bytes &buffer)
 {
-    if (const oi::CommandSpec *spec = oi::commandSpecForOpcode(profile, opcode))
-        return spec;
-    for (const oi::CommandSpec &spec : oi::allCommandSpecs())
-        if (spec.opcode == opcode)
-            return &spec;
-    return nullptr;
-}
-
-// Bytes the command at the front of `q` takes, or 0 while that is not known yet.
-std::size_t commandLength(const oi::RobotProfile &profile, const std::deque<std::uint8_t> &q)
-{
-    const oi::CommandSpec *spec = layoutFor(profile, q.front());
-    if (!spec)
-        return 1;
-    if (spec->layout != "*") {
-        std::size_t n = 1;
-        for (char c : spec->layout)
-            n += c == 'w' ? 2 : 1;
-        return n;
+    buffer.assign(q.begin(), q.begin() + std::ptrdiff_t(std::min(q.size(), oi::kLongestCommandBytes)));
+    const oi::CommandDecode own = oi::readCommand(profile, buffer);
+    if (own.status == oi::CommandDecode::Status::Command)
+        return NextCommand{own.length, own.command};
+    if (own.status == oi::CommandDecode::Status::NeedMore)
+        return std::nullopt;
+    for (oi::ProfileId other : oi::allProfiles()) {
+        const oi::CommandDecode d = oi::readCommand(oi::profile(other), buffer);
+        if (d.status == oi::CommandDecode::Status::Command)
+            return NextCommand{d.length, std::nullopt};
+        if (d.status == oi::CommandDecode::Status::NeedMore)
+            return std::nullopt;
     }
-    if (spec->command == Command::Song) // [140][slot][notes][note duration]...
-        return q.size() < 3 ? 0 : 3 + 2 * std::size_t(q[2]);
-    return q.size() < 2 ? 0 : 2 + std::size_t(q[1]); // stream, query list, script: [op][n][n bytes]
+    return NextCommand{};
 }
 
 double quantisedSpeed(double mmPerS)
@@ -185,7 +180,7 @@ struct VirtualRobot::State {
     // so a client can still stop a looping script.
     bool scriptBehindSerial = false;
     oi::Bytes script;
-    oi::Bytes command; // the command being executed, reused
+    oi::Bytes commandBytes; // the bytes of the command being read, reused
     struct Wait {
         Command kind = Command::WaitTime;
         Microseconds until{0};
@@ -409,7 +404,7 @@ struct VirtualRobot::State {
     void drive(int velocity, int radius)
     {
         requestedVelocity = std::clamp(velocity, -500, 500); // packet 39's range
-        requestedRadius = radius;
+        requestedRadius = std::int16_t(std::uint16_t(radius)); // packet 40 as it came: 32768 reads -32768
         const double v = std::clamp(velocity, -500, 500);
         const double half = oi::kWheelBaseMm / 2;
         double left = v, right = v;
@@ -470,15 +465,17 @@ struct VirtualRobot::State {
         }
     }
 
-    void setMotorPwm(std::span<const std::uint8_t> data)
+    // 144's three fields: duty cycles 0..255 (Create), or signed brush and
+    // unsigned vacuum PWM (Roomba).
+    void setMotorPwm(const std::vector<int> &pwm)
     {
         if (create1()) {
-            for (int i = 0; i < 3; ++i) {
-                motorPwm[i] = data[i];
-                motorDuty[i] = std::min(data[i], std::uint8_t(128)) / 128.0;
+            for (std::size_t i = 0; i < 3; ++i) {
+                motorPwm[i] = pwm[i];
+                motorDuty[i] = std::min(pwm[i], 128) / 128.0;
             }
         } else {
-            motorPwm = {std::int8_t(data[0]), std::int8_t(data[1]), data[2]};
+            motorPwm = {pwm[0], pwm[1], pwm[2]};
             motorDuty = {std::clamp(motorPwm[0], -127, 127) / 127.0,
                          std::clamp(motorPwm[1], -127, 127) / 127.0,
                          std::min(motorPwm[2], 127) / 127.0};
@@ -862,18 +859,18 @@ struct VirtualRobot::State {
             if (!scriptIn.empty()) {
                 if (scriptYield)
                     return;
-                const std::size_t n = commandLength(*profile, scriptIn);
-                if (n == 0 || n > scriptIn.size()) {
+                const auto next = nextCommand(*profile, scriptIn, commandBytes);
+                if (!next) {
                     scriptIn.clear(); // the script ends inside a command
                     continue;
                 }
-                command.assign(scriptIn.begin(), scriptIn.begin() + std::ptrdiff_t(n));
-                scriptIn.erase(scriptIn.begin(), scriptIn.begin() + std::ptrdiff_t(n));
-                execute(command, true);
+                scriptIn.erase(scriptIn.begin(), scriptIn.begin() + std::ptrdiff_t(next->length));
+                if (next->command)
+                    execute(*next->command, true);
                 continue;
             }
-            const std::size_t n = serialIn.empty() ? 0 : commandLength(*profile, serialIn);
-            if (n == 0 || n > serialIn.size()) {
+            const auto next = serialIn.empty() ? std::nullopt : nextCommand(*profile, serialIn, commandBytes);
+            if (!next) {
                 // The rest has not arrived yet; a looping script waiting
                 // behind the serial bytes goes on at the next tick.
                 if (scriptBehindSerial) {
@@ -883,9 +880,9 @@ struct VirtualRobot::State {
                 }
                 return;
             }
-            command.assign(serialIn.begin(), serialIn.begin() + std::ptrdiff_t(n));
-            serialIn.erase(serialIn.begin(), serialIn.begin() + std::ptrdiff_t(n));
-            execute(command, false);
+            serialIn.erase(serialIn.begin(), serialIn.begin() + std::ptrdiff_t(next->length));
+            if (next->command)
+                execute(*next->command, false);
         }
     }
 
@@ -899,12 +896,10 @@ struct VirtualRobot::State {
         pump();
     }
 
-    void execute(std::span<const std::uint8_t> c, bool fromScript)
+    void execute(const oi::OiCommand &c, bool fromScript)
     {
-        const oi::CommandSpec *spec = oi::commandSpecForOpcode(*profile, c[0]);
-        if (!spec)
-            return; // an opcode this robot lacks: its bytes are skipped
-        const Command cmd = spec->command;
+        const Command cmd = c.command;
+        const std::vector<int> &f = c.fields;
         if (mode == OiMode::Off && !oi::availableWhenOff(cmd))
             return;
         if (mode == OiMode::Passive && oi::ignoredInPassive(cmd))
@@ -923,7 +918,7 @@ struct VirtualRobot::State {
             enterPassive();
             break;
         case Command::Baud:
-            if (const int rate = oi::baudForCode(c[1]); rate > 0) {
+            if (const int rate = oi::baudForCode(f[0]); rate > 0) {
                 baud = rate;
                 // The documents: wait 100 ms before sending more; what comes
                 // sooner may be lost.
@@ -951,46 +946,46 @@ struct VirtualRobot::State {
             soundEndsAt = now + kStopSong;
             break;
         case Command::Drive:
-            drive(s16(c[1], c[2]), s16(c[3], c[4]));
+            drive(f[0], f[1]);
             break;
         case Command::DriveDirect:
-            driveDirect(s16(c[1], c[2]), s16(c[3], c[4]));
+            driveDirect(f[0], f[1]);
             break;
         case Command::DrivePwm:
-            drivePwm(s16(c[1], c[2]), s16(c[3], c[4]));
+            drivePwm(f[0], f[1]);
             break;
         case Command::Motors:
         case Command::LowSideDrivers:
-            setMotorBits(c[1]);
+            setMotorBits(std::uint8_t(f[0]));
             break;
         case Command::PwmMotors:
         case Command::PwmLowSideDrivers:
-            setMotorPwm(c.subspan(1, 3));
+            setMotorPwm(f);
             break;
         case Command::DigitalOutputs:
-            digitalOutputs = c[1] & 0x07;
+            digitalOutputs = std::uint8_t(f[0] & 0x07);
             break;
         case Command::SendIr:
             break; // nothing in this world listens
         case Command::Leds:
-            leds.bits = c[1];
-            leds.powerColor = c[2];
-            leds.powerIntensity = c[3];
+            leds.bits = std::uint8_t(f[0]);
+            leds.powerColor = std::uint8_t(f[1]);
+            leds.powerIntensity = std::uint8_t(f[2]);
             break;
         case Command::SchedulingLeds:
-            leds.weekdayBits = c[1] & 0x7F;
-            leds.schedulingBits = c[2] & 0x1F;
+            leds.weekdayBits = std::uint8_t(f[0] & 0x7F);
+            leds.schedulingBits = std::uint8_t(f[1] & 0x1F);
             break;
         case Command::DigitLedsRaw:
             for (int i = 0; i < 4; ++i)
-                leds.digitSegments[std::size_t(i)] = c[std::size_t(1 + i)] & 0x7F;
+                leds.digitSegments[std::size_t(i)] = std::uint8_t(f[std::size_t(i)] & 0x7F);
             break;
         case Command::DigitLedsAscii:
             for (int i = 0; i < 4; ++i)
-                leds.digitSegments[std::size_t(i)] = oi::sevenSegmentForAscii(c[std::size_t(1 + i)]);
+                leds.digitSegments[std::size_t(i)] = oi::sevenSegmentForAscii(f[std::size_t(i)]);
             break;
         case Command::Buttons:
-            pushedButtons = c[1];
+            pushedButtons = std::uint8_t(f[0]);
             pushedUntil = now + kButtonPress;
             break;
         case Command::Song:
@@ -999,42 +994,44 @@ struct VirtualRobot::State {
         case Command::Play:
             // The Create's document: Play does nothing while a song is
             // playing. The Roomba models start the new song.
-            if (c[1] < songs.size() && songs[c[1]] && !(create1() && songPlaying())) {
-                songNumber = c[1];
-                songEndsAt = now + Microseconds(std::int64_t(songs[c[1]]->totalDuration64()) * 15625);
+            if (const auto slot = std::size_t(f[0]); slot < songs.size() && songs[slot] && !(create1() && songPlaying())) {
+                songNumber = f[0];
+                songEndsAt = now + Microseconds(std::int64_t(songs[slot]->totalDuration64()) * 15625);
             }
             break;
-        case Command::Sensors:
-            reply(c.subspan(1, 1));
+        case Command::Sensors: {
+            const std::uint8_t id = std::uint8_t(f[0]);
+            reply({&id, 1});
             break;
+        }
         case Command::QueryList:
-            reply(c.subspan(2));
+            reply(c.data);
             break;
         case Command::Stream:
-            startStream(c.subspan(2));
+            startStream(c.data);
             break;
         case Command::PauseResumeStream:
-            if (c[1] == 0)
+            if (f[0] == 0)
                 streaming = false;
-            else if (c[1] == 1)
+            else if (f[0] == 1)
                 streaming = !streamIds.empty();
             break;
         case Command::Schedule:
             if (clockOrScheduleHeld())
                 break; // the documents: ignored while either button is pressed
-            if (const auto s = oi::scheduleFromBytes(c.subspan(1, 15)))
+            if (const auto s = oi::scheduleFromBytes(oi::Bytes(f.begin(), f.end())))
                 schedule = *s;
             break;
         case Command::SetDayTime:
             if (clockOrScheduleHeld())
                 break;
-            if (c[1] <= 6 && c[2] <= 23 && c[3] <= 59)
-                clockMicros = ((c[1] * 24LL + c[2]) * 60 + c[3]) * 60'000'000LL;
+            if (f[0] <= 6 && f[1] <= 23 && f[2] <= 59)
+                clockMicros = ((f[0] * 24LL + f[1]) * 60 + f[2]) * 60'000'000LL;
             break;
         case Command::Script:
             // ERRATA 11: the length counts bytes, at most 100; 0 clears.
-            if (c[1] <= kMaxScriptBytes)
-                script.assign(c.begin() + 2, c.end());
+            if (c.data.size() <= kMaxScriptBytes)
+                script = c.data;
             break;
         case Command::PlayScript:
             if (fromScript && !serialIn.empty()) {
@@ -1054,19 +1051,19 @@ struct VirtualRobot::State {
             break;
         }
         case Command::WaitTime:
-            wait = Wait{Command::WaitTime, now + Microseconds(std::int64_t(c[1]) * 100'000), 0, 0, 0};
+            wait = Wait{Command::WaitTime, now + Microseconds(std::int64_t(f[0]) * 100'000), 0, 0, 0};
             break;
         case Command::WaitDistance:
             distanceMm = 0; // the Create document: it resets the distance packet
-            wait = Wait{Command::WaitDistance, {}, double(s16(c[1], c[2])), 0, 0};
+            wait = Wait{Command::WaitDistance, {}, double(f[0]), 0, 0};
             break;
         case Command::WaitAngle:
             angleRaw = 0;
-            wait = Wait{Command::WaitAngle, {}, double(s16(c[1], c[2])), 0, 0};
+            wait = Wait{Command::WaitAngle, {}, double(f[0]), 0, 0};
             break;
         case Command::WaitEvent: {
             // ERRATA 12: 1..22, or the negative for "not".
-            const int event = std::int8_t(c[1]);
+            const int event = f[0];
             if (event != 0 && std::abs(event) <= oi::kWaitEventCount)
                 wait = Wait{Command::WaitEvent, {}, 0, 0, event};
             break;
@@ -1078,14 +1075,14 @@ struct VirtualRobot::State {
             wait.reset();
     }
 
-    void storeSong(std::span<const std::uint8_t> c)
+    void storeSong(const oi::OiCommand &c)
     {
-        const std::size_t slot = c[1], notes = c[2];
+        const std::size_t slot = std::size_t(c.fields[0]), notes = c.data.size() / 2;
         if (slot >= songs.size() || notes < 1 || notes > std::size_t(oi::kMaxSongNotes))
             return;
         oi::Song song;
         for (std::size_t i = 0; i < notes; ++i)
-            song.notes.push_back({c[3 + 2 * i], c[4 + 2 * i]});
+            song.notes.push_back({c.data[2 * i], c.data[2 * i + 1]});
         songs[slot] = std::move(song);
     }
 };

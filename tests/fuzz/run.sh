@@ -22,7 +22,7 @@ done
 seconds=${1:-600}
 shift || true
 targets=("$@")
-[[ ${#targets[@]} -eq 0 ]] && targets=(stream_parser script_disassembler command_text recording song_files room_file)
+[[ ${#targets[@]} -eq 0 ]] && targets=(stream_parser script_disassembler command_text command_decoder recording song_files room_file)
 
 status=0
 for t in "${targets[@]}"; do

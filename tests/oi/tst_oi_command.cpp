@@ -97,6 +97,7 @@ private slots:
     void truncated_data();
     void truncated();
     void documentScript();
+    void readAsTheRobotReads();
     void typedErrors();
 };
 
@@ -251,6 +252,15 @@ void TestOiCommand::badBytes()
     QCOMPARE(int(d.length), offset);
     QVERIFY2(QString::fromStdString(d.error.describe()).contains(message), d.error.describe().c_str());
 
+    // Read as a robot reads it, a bad value still takes its command's bytes.
+    const CommandDecode read = readCommand(profileNamed(profile), input);
+    if (field == "opcode") {
+        QCOMPARE(read.status, CommandDecode::Status::Error);
+    } else {
+        QCOMPARE(read.status, CommandDecode::Status::Command);
+        QCOMPARE(read.length, input.size());
+    }
+
     // In a sequence, the error gives the byte offset and still names the field.
     Bytes sequence{128, 131};
     sequence.insert(sequence.end(), input.begin(), input.end());
@@ -274,7 +284,9 @@ void TestOiCommand::truncated_data()
     QTest::newRow("song notes") << "create2" << "140 0 3 60 32"
                                 << "byte 0: Song needs 8 data bytes; 4 remain (the bytes end at byte 5, 4 short)";
     QTest::newRow("song header") << "create1" << "131 140 0"
-                                 << "byte 1: Song needs 2 data bytes; 1 remain (the bytes end at byte 3, 1 short)";
+                                 << "byte 1: Song is cut short before its length byte (the bytes end at byte 3, 1 short)";
+    QTest::newRow("stream count") << "create1" << "128 148"
+                                  << "byte 1: Stream is cut short before its count byte (the bytes end at byte 2, 1 short)";
     QTest::newRow("stream ids") << "create1" << "148 3 7"
                                 << "byte 0: Stream needs 4 data bytes; 2 remain (the bytes end at byte 3, 2 short)";
     QTest::newRow("demo") << "create1" << "136" << "byte 0: Demo needs 1 data bytes; 0 remain (the bytes end at byte 1, 1 short)";
@@ -308,6 +320,20 @@ void TestOiCommand::documentScript()
     QVERIFY((*body)[1] == (OiCommand{Command::WaitDistance, {400}, {}}));
     QVERIFY((*body)[2] == (OiCommand{Command::Drive, {0, 0}, {}}));
     QVERIFY(decodeCommands(profile(ProfileId::Create1), {}).ok());
+}
+
+// readCommands takes values as they come and stops where a command is cut
+// short or unknown.
+void TestOiCommand::readAsTheRobotReads()
+{
+    const RobotProfile &create2 = profile(ProfileId::Create2);
+    const auto read = readCommands(create2, bytesFrom("128 137 3 232 0 0 129 11 137 0"));
+    QCOMPARE(read.size(), std::size_t(3));
+    QVERIFY(read[0] == (OiCommand{Command::Start, {}, {}}));
+    QVERIFY(read[1] == (OiCommand{Command::Drive, {1000, 0}, {}})); // decodeCommand refuses this one
+    QVERIFY(read[2] == (OiCommand{Command::Baud, {11}, {}}));
+    QCOMPARE(readCommands(create2, bytesFrom("131 153 128")).size(), std::size_t(1));
+    QVERIFY(readCommands(create2, {}).empty());
 }
 
 // A typed command is held to the typed encoder's rules, naming the field.

@@ -107,11 +107,11 @@ private slots:
         QTest::newRow("nested script") << "create1" << "152 1 153" << "cannot define another script";
         QTest::newRow("create opcode on roomba") << "create2" << "153" << "153 is not an opcode of the Roomba 600 / Create 2";
         // Whole commands that encode would refuse are not printed either.
-        QTest::newRow("drive too fast") << "create1" << "137 3 132 128 0" << "byte 0: Drive: velocity: 900 is outside -500..500";
-        QTest::newRow("radius too wide") << "create1" << "137 0 100 11 184" << "byte 0: Drive: radius";
-        QTest::newRow("wait event 0") << "create1" << "155 10 158 0" << "byte 2: Wait Event:";
-        QTest::newRow("song of no notes") << "create1" << "140 0 0" << "byte 0: Song:";
-        QTest::newRow("stream of no packet") << "create1" << "148 1 99" << "byte 0: Stream:";
+        QTest::newRow("drive too fast") << "create1" << "137 3 132 128 0" << "byte 1: Drive velocity: 900 is outside -500..500";
+        QTest::newRow("radius too wide") << "create1" << "137 0 100 11 184" << "byte 3: Drive radius: 3000 is outside -2000..2000";
+        QTest::newRow("wait event 0") << "create1" << "155 10 158 0" << "byte 3: Wait Event event: 0 is not an event";
+        QTest::newRow("song of no notes") << "create1" << "140 0 0" << "byte 2: Song song length: 0 is outside 1..16";
+        QTest::newRow("stream of no packet") << "create1" << "148 1 99" << "byte 2: Stream packet id 1: 99 is not a packet";
     }
 
     // Whatever bytes come in, the text that comes out assembles to them.

@@ -281,6 +281,42 @@ private slots:
         QVERIFY2(lines.at(2).endsWith(",-89"), lines.at(2).constData());
     }
 
+    // Typed commands go out as the profile's bytes; a Reset among them makes
+    // the firmware read the banner; a refused one sends nothing and says why.
+    void sendsTypedCommands()
+    {
+        BannerLine line;
+        RobotSession robot;
+        line.connect(robot, "release-3.3.0");
+        QSignalSpy sent(&robot, &RobotSession::bytesSent);
+        QSignalSpy read(&robot.firmware(), &RobotFirmware::read);
+        QVERIFY(robot.send(std::vector<oi::OiCommand>{{oi::Command::Safe, {}, {}},
+                                                      {oi::Command::Drive, {-200, 500}, {}}}));
+        QTRY_COMPARE_WITH_TIMEOUT(sent.count(), 1, 5000);
+        QCOMPARE(sent.at(0).at(0).toByteArray(), QByteArray::fromHex("8389ff3801f4"));
+
+        QVERIFY(robot.send(oi::OiCommand{oi::Command::Reset, {}, {}}));
+        QVERIFY(read.wait(5000));
+        QCOMPARE(read.at(0).at(0).toString(), QString("release-3.3.0"));
+
+        QSignalSpy errors(&robot, &RobotSession::errorOccurred);
+        QVERIFY(!robot.send(std::vector<oi::OiCommand>{{oi::Command::Safe, {}, {}},
+                                                       {oi::Command::Drive, {600, 0}, {}}}));
+        QCOMPARE(errors.count(), 1);
+        QVERIFY2(errors.at(0).at(0).toString().contains("velocity: 600 is outside -500..500"),
+                 qPrintable(errors.at(0).at(0).toString()));
+        QVERIFY(!robot.send(oi::OiCommand{oi::Command::PlayScript, {}, {}})); // a Create's command
+        QCOMPARE(errors.count(), 2);
+        // The link keeps order: once a Start sent after them is out, the
+        // refused commands would have been too.
+        QVERIFY(robot.send(oi::OiCommand{oi::Command::Start, {}, {}}));
+        QTRY_VERIFY_WITH_TIMEOUT(sent.last().at(0).toByteArray() == QByteArray(1, char(128)), 5000);
+        for (const QList<QVariant> &bytes : sent) {
+            QVERIFY(!bytes.at(0).toByteArray().contains(QByteArray::fromHex("890258")));
+            QVERIFY(!bytes.at(0).toByteArray().contains(char(153)));
+        }
+    }
+
     void readingFirmwareNeedsTheRobotItself()
     {
         RobotSession robot;

@@ -68,7 +68,7 @@ private slots:
         QTest::addColumn<QString>("bytes");
         QTest::addColumn<QString>("meaning");
         QTest::newRow("drive") << "137 255 56 1 244" << "Drive velocity -200 radius 500";
-        QTest::newRow("drive straight") << "137 0 200 128 0" << "Drive velocity 200 radius -32768 (straight)";
+        QTest::newRow("drive straight") << "137 0 200 128 0" << "Drive velocity 200 radius 32768 (straight)";
         QTest::newRow("drive spin") << "137 0 100 255 255" << "Drive velocity 100 radius -1 (turn in place clockwise)";
         QTest::newRow("stream group 100") << "148 1 100" << "Stream 1 packet: group 100 (packets 7..58)";
         QTest::newRow("stream two") << "148 2 22 23" << "Stream 2 packets: Voltage (22), Current (23)";
@@ -79,11 +79,15 @@ private slots:
         QTest::newRow("baud") << "129 11" << "Baud code 11 (115200 bps)";
         QTest::newRow("song") << "140 0 2 60 32 62 16" << "Song slot 0, 2 notes: C4/32 D4/16";
         QTest::newRow("resume") << "150 1" << "Pause/Resume Stream: resume";
-        QTest::newRow("leds") << "139 4 0 255" << "LEDs led bits 4 power color 0 power intensity 255";
+        QTest::newRow("leds") << "139 4 0 255" << "LEDs led bits 4 power led colour 0 power led intensity 255";
         QTest::newRow("digits") << "164 72 73 33 32" << "Digit LEDs ASCII \"HI! \"";
         QTest::newRow("day time") << "168 3 15 5" << "Set Day/Time Wednesday 15:05";
         QTest::newRow("unknown") << "99 1 2" << "not a command of the Roomba 600 / Create 2";
         QTest::newRow("too short") << "137 1" << "Drive, incomplete: 1 of 4 data bytes";
+        QTest::newRow("no count byte") << "148" << "Stream, incomplete: its count byte is missing";
+        // Shown as the robot reads it, even where the encoder would refuse it.
+        QTest::newRow("too fast") << "137 3 232 0 0" << "Drive velocity 1000 radius 0";
+        QTest::newRow("pwm motors") << "144 255 1 127" << "PWM Motors main brush pwm -1 side brush pwm 1 vacuum pwm 127";
     }
 
     void decodesSentCommands()

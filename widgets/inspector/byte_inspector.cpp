@@ -216,13 +216,12 @@ void ByteInspector::appendTx(const QByteArray &bytes, qint64 msecs)
     const auto all = asBytes(bytes);
     std::size_t at = 0;
     for (CommandDecoder::Decoded &d : m_decoder.decode(all)) {
-        const auto command = all.subspan(at, d.length);
-        if (d.status == CommandDecoder::Status::Complete) {
+        if (d.command) {
             // Tell the scanner what the robot is about to answer.
-            if (d.spec->command == oi::Command::Sensors)
-                m_scanner.expectReply({command[1]}, msecs);
-            else if (d.spec->command == oi::Command::QueryList)
-                m_scanner.expectReply({command.begin() + 2, command.end()}, msecs);
+            if (d.command->command == oi::Command::Sensors)
+                m_scanner.expectReply({std::uint8_t(d.command->fields[0])}, msecs);
+            else if (d.command->command == oi::Command::QueryList)
+                m_scanner.expectReply(d.command->data, msecs);
         }
         Entry e;
         e.msecs = msecs;

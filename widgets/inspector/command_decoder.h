@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
-#include "command_catalog.h"
+#include "oi_command.h"
 #include "robot_profile.h"
 
 #include <QByteArray>
@@ -25,7 +25,7 @@ public:
     struct Decoded {
         Status status = Status::Unknown;
         std::size_t length = 0; // bytes this piece covers, at least 1
-        const oi::CommandSpec *spec = nullptr;
+        std::optional<oi::OiCommand> command; // when Complete
         QString meaning;
     };
 
@@ -41,12 +41,6 @@ public:
     // The one command at the start of `bytes` (which must not be empty).
     Decoded decodeOne(std::span<const std::uint8_t> bytes) const;
 
-    // Bytes the command starting at `bytes[0]` takes, opcode included; for
-    // the variable-length commands this reads their count byte, and gives
-    // nullopt while that byte has not come yet.
-    static std::optional<std::size_t> commandLength(const oi::CommandSpec &spec,
-                                                    std::span<const std::uint8_t> bytes);
-
     // Parses typed bytes ("128 131", "0x80 0x83", commas allowed) and checks
     // them: every number 0..255, each command an opcode of the profile with
     // all its data bytes, and the values within what the command encoder
@@ -57,7 +51,7 @@ public:
     QString packetLabel(int packetOrGroupId) const;
 
 private:
-    QString describe(const oi::CommandSpec &spec, std::span<const std::uint8_t> data) const;
+    QString describe(const oi::OiCommand &command) const;
 
     const oi::RobotProfile *m_profile;
 };

@@ -142,7 +142,7 @@ private slots:
     // Create has no OI Stop).
     void stopIsTheBridgesStop()
     {
-        for (const QByteArray payload : {QByteArray(R"({"command":"stop"})"), QByteArray(R"({"v":2,"command":"stop"})"),
+        for (const QByteArray &payload : {QByteArray(R"({"command":"stop"})"), QByteArray(R"({"v":2,"command":"stop"})"),
                                          json(mqtt::commandToJson(oi::OiCommand{oi::Command::Stop, {}, {}}, {}))}) {
             QString id, error;
             const auto m = mqtt::CommandMessage::fromJson(payload, &id, &error);

@@ -294,15 +294,16 @@ void RobotBridge::handleCommand(const BridgeInbox::Message &message)
     if (command->command == oi::Command::Full && !m_options.allowFull)
         return refuse(QStringLiteral("full is off on this bridge: in Full mode the robot drives over cliffs and "
                                      "wheel drops; send safe, or ask the teacher to set allow-full = yes"));
+    // Judged whole (ranges, the profile) before control, in either version.
+    const oi::EncodeResult bytes = oi::encodeCommand(oi::CommandEncoder(m_robot.robotProfile()), *command);
+    if (!bytes)
+        return refuse(QString::fromStdString(bytes.error().describe()));
     if (!m_lease.isHeldBy(client)) {
         const QString holder = m_lease.holder();
         if (holder.isEmpty())
             return refuse(QStringLiteral("nobody has control: take it first"), {{"controller", QJsonValue()}});
         return refuse(QStringLiteral("%1 has control").arg(holder), {{"controller", holder}});
     }
-    const oi::EncodeResult bytes = oi::encodeCommand(oi::CommandEncoder(m_robot.robotProfile()), *command);
-    if (!bytes)
-        return refuse(QString::fromStdString(bytes.error().describe()));
     error = sendValidated(*command, QByteArray(reinterpret_cast<const char *>(bytes->data()), qsizetype(bytes->size())));
     if (!error.isEmpty())
         return refuse(error);

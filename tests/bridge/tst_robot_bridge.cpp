@@ -231,6 +231,11 @@ private slots:
         QCOMPARE(r.value(QLatin1String("ok")), QJsonValue(false));
         QCOMPARE(r.value(QLatin1String("error")).toString(), QStringLiteral("alice has control"));
         QCOMPARE(r.value(QLatin1String("controller")).toString(), QStringLiteral("alice"));
+        // A command that cannot be sent at all says so first, in either version.
+        r = bob.ask(topics::command(QStringLiteral("r1"), QStringLiteral("bob")),
+                    mqtt::commandToJson({oi::Command::Drive, {900, 0}, {}}, QStringLiteral("2b")));
+        QVERIFY2(r.value(QLatin1String("error")).toString().startsWith(QLatin1String("velocity")),
+                 qPrintable(r.value(QLatin1String("error")).toString()));
         QTRY_COMPARE(alice.lastState(QStringLiteral("r1")).value(QLatin1String("controller")).toString(), QStringLiteral("alice"));
 
         // Stop, though, from anyone.

@@ -761,9 +761,33 @@
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
-    <message>
-        <source>%1: these bytes do not form the command the robot expects.</source>
-        <translation>%1: Diese Bytes ergeben nicht den Befehl, den der Roboter erwartet.</translation>
+    <message numerus="yes">
+        <source>%n note</source>
+        <translation>
+            <numerusform>%n Note</numerusform>
+            <numerusform>%n Noten</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n notes</source>
+        <translation>
+            <numerusform>%n Note</numerusform>
+            <numerusform>%n Noten</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n packet</source>
+        <translation>
+            <numerusform>%n Paket</numerusform>
+            <numerusform>%n Pakete</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n packets</source>
+        <translation>
+            <numerusform>%n Paket</numerusform>
+            <numerusform>%n Pakete</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -3763,6 +3787,10 @@ Doppelklick zum Umbenennen</translation>
     <message>
         <source>A robot on the broker is reset only by its bridge: read its firmware version where the bridge runs.</source>
         <translation>Ein Roboter am Broker wird nur von seiner Bridge zurückgesetzt: Lesen Sie seine Firmware-Version dort, wo die Bridge läuft.</translation>
+    </message>
+    <message>
+        <source>Not sent: %1</source>
+        <translation>Nicht gesendet: %1</translation>
     </message>
 </context>
 <context>

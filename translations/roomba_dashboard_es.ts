@@ -761,9 +761,33 @@
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
-    <message>
-        <source>%1: these bytes do not form the command the robot expects.</source>
-        <translation>%1: estos bytes no forman el comando que espera el robot.</translation>
+    <message numerus="yes">
+        <source>%n note</source>
+        <translation>
+            <numerusform>%n nota</numerusform>
+            <numerusform>%n notas</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n notes</source>
+        <translation>
+            <numerusform>%n nota</numerusform>
+            <numerusform>%n notas</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n packet</source>
+        <translation>
+            <numerusform>%n paquete</numerusform>
+            <numerusform>%n paquetes</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n packets</source>
+        <translation>
+            <numerusform>%n paquete</numerusform>
+            <numerusform>%n paquetes</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -3762,6 +3786,10 @@ Doble clic para renombrar</translation>
     <message>
         <source>A robot on the broker is reset only by its bridge: read its firmware version where the bridge runs.</source>
         <translation>Un robot en el bróker solo lo reinicia su puente: lea la versión de su firmware donde se ejecuta el puente.</translation>
+    </message>
+    <message>
+        <source>Not sent: %1</source>
+        <translation>No enviado: %1</translation>
     </message>
 </context>
 <context>

@@ -204,13 +204,14 @@ void MainWindow::wireInputs()
 {
     // Every user action goes to the selected robot's model.
     const auto send = [this](const QByteArray &bytes) { session().send(bytes); };
-    connect(m_inspector, &ByteInspector::sendRequested, this, send);
+    const auto sendTyped = [this](const std::vector<oi::OiCommand> &commands) { session().send(commands); };
+    connect(m_inspector, &ByteInspector::sendRequested, this, sendTyped);
     connect(m_modePanel, &ModePanel::sendRequested, this, send);
     connect(m_songs, &SongComposer::sendRequested, this, send);
-    connect(m_leds, &LedEditor::sendRequested, this, send);
-    connect(m_schedule, &ScheduleEditor::sendRequested, this, send);
+    connect(m_leds, &LedEditor::sendRequested, this, sendTyped);
+    connect(m_schedule, &ScheduleEditor::sendRequested, this, sendTyped);
     connect(m_script, &ScriptEditor::sendRequested, this, send);
-    connect(m_motors, &MotorsPanel::sendRequested, this, send);
+    connect(m_motors, &MotorsPanel::sendRequested, this, sendTyped);
     connect(m_script, &ScriptEditor::showScriptRequested, this, [this] { session().showScript(); });
     // A hand in the room: the map asks, the room moves the robot.
     connect(m_map, &OdometryMap::robotMoveRequested, this,

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "led_editor.h"
+#include "typed_command_bytes.h"
 #include "pseudo_translation.h"
 #include "sensor_scenes.h"
 #include "seven_segment_display.h"
@@ -27,7 +28,11 @@ QByteArray bytes(std::initializer_list<int> values)
     return out;
 }
 
-QByteArray sent(const QSignalSpy &spy, int index) { return spy.at(index).at(0).toByteArray(); }
+// The exact bytes of the commands the editor asked for, on its profile.
+QByteArray sent(const LedEditor &editor, const QSignalSpy &spy, int index)
+{
+    return bytesOfCommands(editor.robotProfile(), spy.at(index).at(0));
+}
 
 // The object names of the widgets Tab visits from `first`, each once, in order.
 QStringList tabChain(QWidget *first, int presses)
@@ -85,7 +90,7 @@ private slots:
 
         QTest::mouseClick(apply, Qt::LeftButton);
         QCOMPARE(spy.count(), 1);
-        QCOMPARE(sent(spy, 0), bytes({139, 4, 0, 128}));
+        QCOMPARE(sent(editor, spy, 0), bytes({139, 4, 0, 128}));
         QVERIFY(!apply->isEnabled());
     }
 
@@ -112,7 +117,7 @@ private slots:
         child<QSlider>(editor, "powerIntensity")->setValue(200);
         editor.apply();
         QCOMPARE(spy.count(), 1);
-        QCOMPARE(sent(spy, 0), bytes({139, bits, 255, 200}));
+        QCOMPARE(sent(editor, spy, 0), bytes({139, bits, 255, 200}));
         QVERIFY(!child<QCheckBox>(editor, "ledPlay")->isVisibleTo(&editor));
         QVERIFY(!child<QCheckBox>(editor, "ledAdvance")->isVisibleTo(&editor));
     }
@@ -131,10 +136,10 @@ private slots:
         QTest::mouseClick(child<QCheckBox>(editor, "ledAdvance"), Qt::LeftButton);
         editor.apply();
         QCOMPARE(spy.count(), 1);
-        QCOMPARE(sent(spy, 0), bytes({139, 8, 0, 128}));
+        QCOMPARE(sent(editor, spy, 0), bytes({139, 8, 0, 128}));
         QTest::mouseClick(child<QCheckBox>(editor, "ledPlay"), Qt::LeftButton);
         editor.apply();
-        QCOMPARE(sent(spy, 1), bytes({139, 10, 0, 128}));
+        QCOMPARE(sent(editor, spy, 1), bytes({139, 10, 0, 128}));
 
         // No digits and no scheduling LEDs, and the reason is given.
         QVERIFY(!child<SevenSegmentDisplay>(editor, "segmentEditor")->isEnabled());
@@ -156,7 +161,7 @@ private slots:
         child<QCheckBox>(editor, "ledPlay")->setChecked(true);
         editor.apply();
         QCOMPARE(spy.count(), 1);
-        QCOMPARE(sent(spy, 0), bytes({139, 2, 0, 128}));
+        QCOMPARE(sent(editor, spy, 0), bytes({139, 2, 0, 128}));
     }
 
     void asciiText()
@@ -169,7 +174,7 @@ private slots:
         QCOMPARE(editor.bytePreview(), QString("164 65 66 67 68"));
         editor.apply();
         QCOMPARE(spy.count(), 1);
-        QCOMPARE(sent(spy, 0), bytes({164, 65, 66, 67, 68}));
+        QCOMPARE(sent(editor, spy, 0), bytes({164, 65, 66, 67, 68}));
         const std::array<std::uint8_t, 4> shown{sevenSegmentForAscii('A'), sevenSegmentForAscii('B'),
                                                 sevenSegmentForAscii('C'), sevenSegmentForAscii('D')};
         QCOMPARE(child<SevenSegmentDisplay>(editor, "asciiPreview")->masks(), shown);
@@ -181,7 +186,7 @@ private slots:
         QSignalSpy spy(&editor, &LedEditor::sendRequested);
         child<QLineEdit>(editor, "asciiText")->setText("hi");
         editor.apply();
-        QCOMPARE(sent(spy, 0), bytes({164, 'h', 'i', 32, 32}));
+        QCOMPARE(sent(editor, spy, 0), bytes({164, 'h', 'i', 32, 32}));
         QCOMPARE(child<SevenSegmentDisplay>(editor, "asciiPreview")->masks()[0], sevenSegmentForAscii('H'));
     }
 
@@ -198,7 +203,7 @@ private slots:
         QCOMPARE(masks[2], std::uint8_t(0));
         QCOMPARE(masks[3], sevenSegmentForAscii('1'));
         editor.apply();
-        QCOMPARE(sent(spy, 0), bytes({164, 42, 43, 64, 49}));
+        QCOMPARE(sent(editor, spy, 0), bytes({164, 42, 43, 64, 49}));
     }
 
     void asciiRefusesCharactersOutsideRange_data()
@@ -224,7 +229,7 @@ private slots:
         child<QLineEdit>(editor, "asciiText")->setText("OK");
         editor.apply();
         QCOMPARE(spy.count(), 1);
-        QCOMPARE(sent(spy, 0), bytes({164, 'O', 'K', 32, 32}));
+        QCOMPARE(sent(editor, spy, 0), bytes({164, 'O', 'K', 32, 32}));
     }
 
     void clickingSegments()
@@ -242,12 +247,12 @@ private slots:
         QCOMPARE(editor.bytePreview(), QString("163 1 6 0 64"));
         editor.apply();
         QCOMPARE(spy.count(), 1);
-        QCOMPARE(sent(spy, 0), bytes({163, 1, 6, 0, 64}));
+        QCOMPARE(sent(editor, spy, 0), bytes({163, 1, 6, 0, 64}));
 
         // Clicking again switches a segment off.
         QTest::mouseClick(segments, Qt::LeftButton, {}, segments->segmentCentre(1, 1));
         editor.apply();
-        QCOMPARE(sent(spy, 1), bytes({163, 1, 4, 0, 64}));
+        QCOMPARE(sent(editor, spy, 1), bytes({163, 1, 4, 0, 64}));
     }
 
     void everySegmentOfEveryDigit()
@@ -260,7 +265,7 @@ private slots:
                 QTest::mouseClick(segments, Qt::LeftButton, {}, segments->segmentCentre(position, s));
         QSignalSpy spy(&editor, &LedEditor::sendRequested);
         editor.apply();
-        QCOMPARE(sent(spy, 0), bytes({163, 127, 127, 127, 127}));
+        QCOMPARE(sent(editor, spy, 0), bytes({163, 127, 127, 127, 127}));
     }
 
     void rawWarningOnCreate2AndRoomba500()
@@ -286,7 +291,7 @@ private slots:
         QSignalSpy spy(&editor, &LedEditor::sendRequested);
         editor.apply();
         QCOMPARE(spy.count(), 1);
-        QCOMPARE(sent(spy, 0), bytes({164, 'G', 'O', 32, 32}));
+        QCOMPARE(sent(editor, spy, 0), bytes({164, 'G', 'O', 32, 32}));
     }
 
     void schedulingLeds()
@@ -300,12 +305,12 @@ private slots:
         QCOMPARE(editor.bytePreview(), QString("162 73 17"));
         editor.apply();
         QCOMPARE(spy.count(), 1);
-        QCOMPARE(sent(spy, 0), bytes({162, 73, 17}));
+        QCOMPARE(sent(editor, spy, 0), bytes({162, 73, 17}));
 
         for (const char *name : {"schedSchedule", "schedColon", "schedClock", "schedAm", "schedPm"})
             QTest::mouseClick(child<QCheckBox>(editor, name), Qt::LeftButton);
         editor.apply();
-        QCOMPARE(sent(spy, 1), bytes({162, 73, 8 | 4 | 2}));
+        QCOMPARE(sent(editor, spy, 1), bytes({162, 73, 8 | 4 | 2}));
     }
 
     void severalChangesGoOutInOrder()
@@ -318,9 +323,9 @@ private slots:
         QCOMPARE(editor.bytePreview(), QString("139 2 0 128\n162 2 0\n164 49 50 51 52"));
         editor.apply();
         QCOMPARE(spy.count(), 3);
-        QCOMPARE(sent(spy, 0), bytes({139, 2, 0, 128}));
-        QCOMPARE(sent(spy, 1), bytes({162, 2, 0}));
-        QCOMPARE(sent(spy, 2), bytes({164, 49, 50, 51, 52}));
+        QCOMPARE(sent(editor, spy, 0), bytes({139, 2, 0, 128}));
+        QCOMPARE(sent(editor, spy, 1), bytes({162, 2, 0}));
+        QCOMPARE(sent(editor, spy, 2), bytes({164, 49, 50, 51, 52}));
         editor.apply(); // nothing changed since
         QCOMPARE(spy.count(), 3);
     }
@@ -340,7 +345,7 @@ private slots:
         QCOMPARE(spy.count(), 0); // coalesced, not one send per change
         QVERIFY(editor.msUntilLiveSend() >= 0);
         QTRY_COMPARE(spy.count(), 1);
-        QCOMPARE(sent(spy, 0), bytes({139, 0, 200, 128}));
+        QCOMPARE(sent(editor, spy, 0), bytes({139, 0, 200, 128}));
 
         // Nothing more goes out while nothing changes: no send is pending.
         QCOMPARE(editor.msUntilLiveSend(), -1);
@@ -349,7 +354,7 @@ private slots:
         child<QSlider>(editor, "powerIntensity")->setValue(10);
         child<QCheckBox>(editor, "ledDebris")->setChecked(true);
         QTRY_COMPARE(spy.count(), 2);
-        QCOMPARE(sent(spy, 1), bytes({139, 1, 200, 10}));
+        QCOMPARE(sent(editor, spy, 1), bytes({139, 1, 200, 10}));
 
         // Leaving live mode stops sending: a change schedules nothing.
         editor.setLiveMode(false);
@@ -381,7 +386,7 @@ private slots:
         QTRY_VERIFY(!spy.isEmpty());
         // Changes after a send start a new wait, and the latest state goes out.
         intensity->setValue(20);
-        QTRY_VERIFY(spy.last().at(0).toByteArray() == bytes({139, 0, 0, 20}));
+        QTRY_VERIFY(bytesOfCommands(editor.robotProfile(), spy.last().at(0)) == bytes({139, 0, 0, 20}));
         QVERIFY2(spy.count() >= 2, qPrintable(QString::number(spy.count())));
     }
 
@@ -487,7 +492,7 @@ private slots:
         child<QPushButton>(editor, "apply")->setFocus();
         QTest::keyClick(child<QPushButton>(editor, "apply"), Qt::Key_Space);
         QCOMPARE(spy.count(), 1);
-        QCOMPARE(sent(spy, 0), bytes({163, 67, 2, 0, 0}));
+        QCOMPARE(sent(editor, spy, 0), bytes({163, 67, 2, 0, 0}));
     }
 
     void screenshots_data()

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "motors_panel.h"
+#include "typed_command_bytes.h"
 
 #include "keyboard_focus.h"
 #include "pseudo_translation.h"
@@ -64,7 +65,10 @@ class TestMotorsPanel : public QObject {
     // On the box's indicator: the middle of a stretched check box is not on it.
     static void click(QCheckBox *box) { QTest::mouseClick(box, Qt::LeftButton, {}, QPoint(6, box->height() / 2)); }
 
-    QByteArray lastSent() const { return m_sent->isEmpty() ? QByteArray() : m_sent->last().at(0).toByteArray(); }
+    QByteArray lastSent() const
+    {
+        return m_sent->isEmpty() ? QByteArray() : bytesOfCommands(m_panel->robotProfile(), m_sent->last().at(0));
+    }
 
 private slots:
     void init()

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "pseudo_translation.h"
 #include "schedule_editor.h"
+#include "typed_command_bytes.h"
 #include "sensor_scenes.h"
 
 #include <QApplication>
@@ -92,7 +93,7 @@ private slots:
 
         QTest::mouseClick(child<QPushButton>(editor, "sendSchedule"), Qt::LeftButton);
         QCOMPARE(spy.count(), 1);
-        QCOMPARE(spy.at(0).at(0).toByteArray(),
+        QCOMPARE(bytesOfCommands(editor.robotProfile(), spy.at(0).at(0)),
                  bytes({167, 40, 0, 0, 0, 0, 0, 0, 15, 0, 0, 0, 10, 36, 0, 0}));
         QCOMPARE(editor.lastSent(), QString("Last sent: wed 15:00, fri 10:36 at 18:30"));
     }
@@ -105,7 +106,7 @@ private slots:
         plan(editor, 6, QTime(7, 5));
         child<QTimeEdit>(editor, "time2")->setTime(QTime(9, 9)); // Tuesday not ticked
         editor.sendSchedule();
-        QCOMPARE(spy.at(0).at(0).toByteArray(),
+        QCOMPARE(bytesOfCommands(editor.robotProfile(), spy.at(0).at(0)),
                  bytes({167, 65, 23, 59, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 7, 5}));
     }
 
@@ -119,7 +120,7 @@ private slots:
         QSignalSpy spy(&editor, &ScheduleEditor::sendRequested);
         QTest::mouseClick(child<QPushButton>(editor, "disableAll"), Qt::LeftButton);
         QCOMPARE(spy.count(), 1);
-        QCOMPARE(spy.at(0).at(0).toByteArray(), bytes({167, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}));
+        QCOMPARE(bytesOfCommands(editor.robotProfile(), spy.at(0).at(0)), bytes({167, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}));
         QVERIFY(editor.schedule().isOff());
         QVERIFY(!child<QCheckBox>(editor, "day1")->isChecked());
         QVERIFY(editor.lastSent().startsWith("Last sent: off at "));
@@ -154,8 +155,8 @@ private slots:
         child<QCheckBox>(editor, "day3")->setChecked(true);
         editor.sendSchedule();
         editor.sendChosenDayTime();
-        QCOMPARE(spy.at(0).at(0).toByteArray(), bytes({167, 8, 0, 0, 0, 0, 0, 0, 15, 5, 0, 0, 0, 0, 0, 0}));
-        QCOMPARE(spy.at(1).at(0).toByteArray(), bytes({168, 0, 15, 5}));
+        QCOMPARE(bytesOfCommands(editor.robotProfile(), spy.at(0).at(0)), bytes({167, 8, 0, 0, 0, 0, 0, 0, 15, 5, 0, 0, 0, 0, 0, 0}));
+        QCOMPARE(bytesOfCommands(editor.robotProfile(), spy.at(1).at(0)), bytes({168, 0, 15, 5}));
     }
 
     void presetsSurviveANewEditor()
@@ -234,7 +235,7 @@ private slots:
         QSignalSpy spy(&editor, &ScheduleEditor::sendRequested);
         QTest::mouseClick(child<QPushButton>(editor, "setDayTime"), Qt::LeftButton);
         QCOMPARE(spy.count(), 1);
-        QCOMPARE(spy.at(0).at(0).toByteArray(), expected);
+        QCOMPARE(bytesOfCommands(editor.robotProfile(), spy.at(0).at(0)), expected);
         QStringList decimal;
         for (char b : expected)
             decimal << QString::number(static_cast<std::uint8_t>(b));
@@ -251,8 +252,8 @@ private slots:
         editor.setClock([] { return QDateTime(QDate(2026, 11, 22), QTime(7, 5, 59)); }); // Sunday
         editor.setDayTimeFromComputer();
         QCOMPARE(spy.count(), 2);
-        QCOMPARE(spy.at(0).at(0).toByteArray(), bytes({168, 6, 18, 30}));
-        QCOMPARE(spy.at(1).at(0).toByteArray(), bytes({168, 0, 7, 5}));
+        QCOMPARE(bytesOfCommands(editor.robotProfile(), spy.at(0).at(0)), bytes({168, 6, 18, 30}));
+        QCOMPARE(bytesOfCommands(editor.robotProfile(), spy.at(1).at(0)), bytes({168, 0, 7, 5}));
     }
 
     void createHasNoSchedule()
@@ -386,7 +387,7 @@ private slots:
         send->setFocus(Qt::TabFocusReason);
         QTest::keyClick(send, Qt::Key_Space);
         QCOMPARE(spy.count(), 1);
-        QCOMPARE(spy.at(0).at(0).toByteArray(), bytes({167, 2, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}));
+        QCOMPARE(bytesOfCommands(editor.robotProfile(), spy.at(0).at(0)), bytes({167, 2, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}));
     }
 
     void screenshots_data()

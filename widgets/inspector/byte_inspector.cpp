@@ -468,7 +468,11 @@ void ByteInspector::submitRaw()
     }
     showError(QString());
     m_rawInput->clear();
-    emit sendRequested(*bytes);
+    // Checked whole, so they decode: the commands the person typed.
+    const auto commands = oi::decodeCommands(m_decoder.robotProfile(),
+                                             {reinterpret_cast<const std::uint8_t *>(bytes->constData()),
+                                              std::size_t(bytes->size())});
+    emit sendRequested(*commands);
 }
 
 void ByteInspector::showError(const QString &message)

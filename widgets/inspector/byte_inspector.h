@@ -5,6 +5,7 @@
 #include "packet_table.h"
 #include "robot_profile.h"
 #include "rx_frame_scanner.h"
+#include "typed_commands.h"
 
 #include <QByteArray>
 #include <QStringList>
@@ -103,7 +104,7 @@ public slots:
 
 signals:
     // Checked raw bytes the user asked to send.
-    void sendRequested(const QByteArray &bytes);
+    void sendRequested(const std::vector<oi::OiCommand> &commands);
     // The user asked for a plot of this packet.
     void plotRequested(int packetId);
 

@@ -28,11 +28,6 @@ QString decimal(const oi::Bytes &bytes)
     return parts.join(' ');
 }
 
-QByteArray toByteArray(const oi::Bytes &bytes)
-{
-    return QByteArray(reinterpret_cast<const char *>(bytes.data()), static_cast<qsizetype>(bytes.size()));
-}
-
 QString fromStd(const std::string &text) { return QString::fromStdString(text); }
 
 QLabel *wrappingLabel(const QString &name, QWidget *parent)
@@ -437,30 +432,34 @@ int LedEditor::schedulingBits() const
     return bits;
 }
 
-oi::EncodeResult LedEditor::digitsCommand() const
+oi::OiCommand LedEditor::digitsCommand() const
 {
-    const oi::CommandEncoder encoder(*m_profile);
     if (m_digitsPending == DigitSource::Raw) {
         const auto m = m_segments->masks();
-        return encoder.digitLedsRaw(m[0], m[1], m[2], m[3]);
+        return {oi::Command::DigitLedsRaw, {m[0], m[1], m[2], m[3]}, {}};
     }
     const auto &c = m_asciiCodes;
-    return encoder.digitLedsAscii(c[0], c[1], c[2], c[3]);
+    return {oi::Command::DigitLedsAscii, {c[0], c[1], c[2], c[3]}, {}};
+}
+
+std::vector<oi::OiCommand> LedEditor::pendingTyped() const
+{
+    std::vector<oi::OiCommand> commands;
+    if (m_ledsPending)
+        commands.push_back({oi::Command::Leds, {ledBits(), m_colour->value(), m_intensity->value()}, {}});
+    if (m_schedulingPending)
+        commands.push_back({oi::Command::SchedulingLeds, {weekdayBits(), schedulingBits()}, {}});
+    if (m_digitsPending)
+        commands.push_back(digitsCommand());
+    return commands;
 }
 
 std::vector<oi::Bytes> LedEditor::pendingCommands() const
 {
     const oi::CommandEncoder encoder(*m_profile);
-    std::vector<oi::EncodeResult> results;
-    if (m_ledsPending)
-        results.push_back(encoder.leds(ledBits(), m_colour->value(), m_intensity->value()));
-    if (m_schedulingPending)
-        results.push_back(encoder.schedulingLeds(weekdayBits(), schedulingBits()));
-    if (m_digitsPending)
-        results.push_back(digitsCommand());
     std::vector<oi::Bytes> out;
-    for (const auto &r : results)
-        if (r.ok())
+    for (const oi::OiCommand &command : pendingTyped())
+        if (const oi::EncodeResult r = oi::encodeCommand(encoder, command))
             out.push_back(r.value());
     return out;
 }
@@ -544,21 +543,16 @@ void LedEditor::apply()
     m_liveTimer.stop();
     const oi::CommandEncoder encoder(*m_profile);
     QStringList problems;
-    const auto send = [&](const oi::EncodeResult &r) {
+    for (const oi::OiCommand &command : pendingTyped()) {
+        const oi::EncodeResult r = oi::encodeCommand(encoder, command);
         if (!r.ok()) {
             problems << fromStd(r.error().describe());
-            return;
+            continue;
         }
         if (!r.warning.empty())
             problems << fromStd(r.warning);
-        emit sendRequested(toByteArray(r.value()));
-    };
-    if (m_ledsPending)
-        send(encoder.leds(ledBits(), m_colour->value(), m_intensity->value()));
-    if (m_schedulingPending)
-        send(encoder.schedulingLeds(weekdayBits(), schedulingBits()));
-    if (m_digitsPending)
-        send(digitsCommand());
+        emit sendRequested({command});
+    }
     m_ledsPending = false;
     m_schedulingPending = false;
     m_digitsPending.reset();

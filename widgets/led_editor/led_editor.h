@@ -2,6 +2,7 @@
 #pragma once
 
 #include "command_encoder.h"
+#include "typed_commands.h"
 
 #include <QByteArray>
 #include <QColor>
@@ -60,7 +61,7 @@ public slots:
     void apply();
 
 signals:
-    void sendRequested(const QByteArray &bytes);
+    void sendRequested(const std::vector<oi::OiCommand> &commands);
 
 private:
     enum class DigitSource { Raw, Ascii };
@@ -77,7 +78,8 @@ private:
     int ledBits() const;
     int weekdayBits() const;
     int schedulingBits() const;
-    oi::EncodeResult digitsCommand() const;
+    oi::OiCommand digitsCommand() const;
+    std::vector<oi::OiCommand> pendingTyped() const;
 
     const oi::RobotProfile *m_profile = &oi::profile(oi::ProfileId::Create2);
     bool m_ledsPending = false;

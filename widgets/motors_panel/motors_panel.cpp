@@ -113,7 +113,7 @@ MotorsPanel::MotorsPanel(QWidget *parent) : QWidget(parent)
         b->setObjectName(kButtonBits[i].objectName);
         const int pressed = kButtonBits[i].bits;
         connect(b, &QPushButton::clicked, this,
-                [this, pressed] { send(oi::CommandEncoder(*m_profile).buttons(pressed)); });
+                [this, pressed] { send({oi::Command::Buttons, {pressed}, {}}); });
         buttons->addWidget(b, int(i / 4), int(i % 4));
     }
 
@@ -161,7 +161,7 @@ MotorsPanel::MotorsPanel(QWidget *parent) : QWidget(parent)
     m_sendIr = new QPushButton(m_sendIrGroup);
     m_sendIr->setObjectName("sendIr");
     connect(m_sendIr, &QPushButton::clicked, this,
-            [this] { send(oi::CommandEncoder(*m_profile).sendIr(m_irByte->value())); });
+            [this] { send({oi::Command::SendIr, {m_irByte->value()}, {}}); });
     ir->addWidget(m_irByteTitle);
     ir->addWidget(m_irByte);
     ir->addWidget(m_sendIr);
@@ -330,13 +330,12 @@ void MotorsPanel::sendMotors()
     const int bits = bitIf(m_mainBrush, bit::MotorMainBrush) | bitIf(m_mainBrushOutward, bit::MotorMainBrushOutward)
                      | bitIf(m_sideBrush, bit::MotorSideBrush)
                      | bitIf(m_sideBrushClockwise, bit::MotorSideBrushClockwise) | bitIf(m_vacuum, bit::MotorVacuum);
-    send(oi::CommandEncoder(*m_profile).motors(bits));
+    send({oi::Command::Motors, {bits}, {}});
 }
 
 void MotorsPanel::sendPwmMotors()
 {
-    send(oi::CommandEncoder(*m_profile).pwmMotors(m_mainBrushDuty->value(), m_sideBrushDuty->value(),
-                                                 m_vacuumDuty->value()));
+    send({oi::Command::PwmMotors, {m_mainBrushDuty->value(), m_sideBrushDuty->value(), m_vacuumDuty->value()}, {}});
 }
 
 void MotorsPanel::sendLowSideDrivers()
@@ -344,13 +343,14 @@ void MotorsPanel::sendLowSideDrivers()
     int bits = 0;
     for (int i = 0; i < 3; ++i)
         bits |= bitIf(m_lowSide[i], 1 << i);
-    send(oi::CommandEncoder(*m_profile).lowSideDrivers(bits));
+    send({oi::Command::LowSideDrivers, {bits}, {}});
 }
 
 void MotorsPanel::sendPwmLowSideDrivers()
 {
-    send(oi::CommandEncoder(*m_profile).pwmLowSideDrivers(m_lowSideDuty[2]->value(), m_lowSideDuty[1]->value(),
-                                                         m_lowSideDuty[0]->value()));
+    send({oi::Command::PwmLowSideDrivers,
+          {m_lowSideDuty[2]->value(), m_lowSideDuty[1]->value(), m_lowSideDuty[0]->value()},
+          {}});
 }
 
 void MotorsPanel::sendDigitalOutputs()
@@ -358,39 +358,39 @@ void MotorsPanel::sendDigitalOutputs()
     int bits = 0;
     for (int i = 0; i < 3; ++i)
         bits |= bitIf(m_digitalOutputs[i], 1 << i);
-    send(oi::CommandEncoder(*m_profile).digitalOutputs(bits));
+    send({oi::Command::DigitalOutputs, {bits}, {}});
 }
 
 void MotorsPanel::allOff()
 {
-    const oi::CommandEncoder encoder(*m_profile);
     const bool roomba = m_profile->has(oi::Command::Motors);
     if (!roomba && !m_profile->has(oi::Command::LowSideDrivers))
         return;
-    oi::Bytes bytes = roomba ? *encoder.motors(0) : *encoder.lowSideDrivers(0);
-    const oi::EncodeResult pwm = roomba ? encoder.pwmMotors(0, 0, 0) : encoder.pwmLowSideDrivers(0, 0, 0);
-    if (pwm)
-        bytes.insert(bytes.end(), pwm->begin(), pwm->end());
+    std::vector<oi::OiCommand> off{{roomba ? oi::Command::Motors : oi::Command::LowSideDrivers, {0}, {}}};
+    if (const oi::Command pwm = roomba ? oi::Command::PwmMotors : oi::Command::PwmLowSideDrivers; m_profile->has(pwm))
+        off.push_back({pwm, {0, 0, 0}, {}});
     clearControls();
-    send(bytes);
+    send(off);
 }
 
-void MotorsPanel::send(const oi::EncodeResult &bytes)
+void MotorsPanel::send(const oi::OiCommand &command) { send(std::vector<oi::OiCommand>{command}); }
+
+void MotorsPanel::send(const std::vector<oi::OiCommand> &commands)
 {
     // Controls for commands the profile lacks are hidden and every control's
     // range is the command's range, so nothing here can be refused.
-    if (bytes)
-        send(*bytes);
-}
-
-void MotorsPanel::send(const oi::Bytes &bytes)
-{
+    const oi::CommandEncoder encoder(*m_profile);
     QStringList text;
-    for (std::uint8_t b : bytes)
-        text << QString::number(b);
+    for (const oi::OiCommand &command : commands) {
+        const oi::EncodeResult bytes = oi::encodeCommand(encoder, command);
+        if (!bytes)
+            return;
+        for (std::uint8_t b : *bytes)
+            text << QString::number(b);
+    }
     m_lastSent->setProperty("bytes", text.join(' '));
     showLastSent();
-    emit sendRequested(QByteArray(reinterpret_cast<const char *>(bytes.data()), qsizetype(bytes.size())));
+    emit sendRequested(commands);
 }
 
 void MotorsPanel::showLastSent()

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "command_encoder.h"
+#include "typed_commands.h"
 
 #include <QByteArray>
 #include <QWidget>
@@ -36,7 +37,7 @@ public:
     QString unavailableText() const;
 
 signals:
-    void sendRequested(const QByteArray &bytes);
+    void sendRequested(const std::vector<oi::OiCommand> &commands);
 
 public slots:
     // Brushes and vacuum (or low side drivers) off and their duty at 0.
@@ -56,8 +57,8 @@ private:
     void sendLowSideDrivers();
     void sendPwmLowSideDrivers();
     void sendDigitalOutputs();
-    void send(const oi::EncodeResult &bytes);
-    void send(const oi::Bytes &bytes);
+    void send(const oi::OiCommand &command);
+    void send(const std::vector<oi::OiCommand> &commands);
     void refreshGroups();
     void showLastSent();
     void clearControls();

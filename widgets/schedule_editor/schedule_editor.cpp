@@ -302,22 +302,23 @@ QString ScheduleEditor::clockPreview() const { return m_clockBytes; }
 QString ScheduleEditor::lastSent() const { return m_lastSent->text(); }
 QString ScheduleEditor::message() const { return m_message->text(); }
 
-bool ScheduleEditor::send(const oi::EncodeResult &result)
+bool ScheduleEditor::send(const oi::OiCommand &command)
 {
+    const oi::EncodeResult result = oi::encodeCommand(oi::CommandEncoder(*m_profile), command);
     if (!result.ok()) {
         const QString why = QString::fromStdString(result.error().describe()); // the protocol's words
         showMessage([why] { return tr("Not sent: %1").arg(why); });
         return false;
     }
-    const auto &bytes = result.value();
-    emit sendRequested(QByteArray(reinterpret_cast<const char *>(bytes.data()), qsizetype(bytes.size())));
+    emit sendRequested({command});
     return true;
 }
 
 void ScheduleEditor::sendSchedule()
 {
     const oi::CleaningSchedule s = schedule();
-    if (!send(oi::CommandEncoder(*m_profile).schedule(s)))
+    const auto bytes = oi::scheduleBytes(s); // days, then hour and minute Sunday..Saturday
+    if (!send({oi::Command::Schedule, std::vector<int>(bytes.begin(), bytes.end()), {}}))
         return;
     m_lastSentSchedule = QString::fromStdString(oi::formatSchedule(s));
     m_lastSentAt = shortTime(m_clock().time());
@@ -339,7 +340,7 @@ void ScheduleEditor::disableAll()
 
 void ScheduleEditor::sendDayTime(int day, int hour, int minute)
 {
-    if (send(oi::CommandEncoder(*m_profile).setDayTime(day, hour, minute)))
+    if (send({oi::Command::SetDayTime, {day, hour, minute}, {}}))
         showMessage([=] {
             return tr("Robot clock set to %1 %2.").arg(dayName(day), shortTime(QTime(hour, minute)));
         });

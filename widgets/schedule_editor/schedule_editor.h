@@ -2,6 +2,7 @@
 #pragma once
 
 #include "command_encoder.h"
+#include "typed_commands.h"
 
 #include <QByteArray>
 #include <QDateTime>
@@ -57,7 +58,7 @@ public slots:
     bool deletePreset(const QString &name);
 
 signals:
-    void sendRequested(const QByteArray &bytes);
+    void sendRequested(const std::vector<oi::OiCommand> &commands);
 
 protected:
     void changeEvent(QEvent *event) override;
@@ -68,7 +69,7 @@ private:
     void showMessage(std::function<QString()> text);
     void refresh();
     void refreshPresets();
-    bool send(const oi::EncodeResult &result);
+    bool send(const oi::OiCommand &command);
     void sendDayTime(int day, int hour, int minute);
 
     const oi::RobotProfile *m_profile = &oi::profile(oi::ProfileId::Create2);

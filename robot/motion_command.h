@@ -2,8 +2,11 @@
 #pragma once
 
 #include "command_encoder.h"
+#include "oi_command.h"
 
 #include <QMetaType>
+
+#include <optional>
 
 // What an input device (drive pad, keyboard, gamepad) asks the robot to do,
 // before the session's sending rules turn it into bytes.
@@ -17,6 +20,28 @@ struct MotionCommand {
 
     bool isStop() const { return kind == Kind::Drive ? velocity == 0 : right == 0 && left == 0; }
     static MotionCommand stop(Kind kind = Kind::Drive) { return MotionCommand{kind}; }
+    // A typed Drive, Drive Direct or Drive PWM as a motion command, so that
+    // the sending rules apply to it wherever it came from; nothing for
+    // other commands. Fields in the document's order (commandFieldNames):
+    // velocity, radius; right, left.
+    static std::optional<MotionCommand> fromCommand(const oi::OiCommand &command)
+    {
+        if (command.fields.size() != 2)
+            return std::nullopt;
+        MotionCommand m;
+        switch (command.command) {
+        case oi::Command::Drive:
+            m.velocity = command.fields[0];
+            m.radius = command.fields[1];
+            return m;
+        case oi::Command::DriveDirect: m.kind = Kind::DriveDirect; break;
+        case oi::Command::DrivePwm: m.kind = Kind::DrivePwm; break;
+        default: return std::nullopt;
+        }
+        m.right = command.fields[0];
+        m.left = command.fields[1];
+        return m;
+    }
     // The bytes for this command on a profile (validated by the encoder).
     oi::EncodeResult encode(const oi::CommandEncoder &encoder) const
     {

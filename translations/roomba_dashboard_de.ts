@@ -2914,6 +2914,10 @@ GPL-3.0-or-later.</translation>
         <source>%1: the bridge does not publish packet %2, so the query cannot be answered</source>
         <translation>%1: die Bridge veröffentlicht Paket %2 nicht, daher kann die Abfrage nicht beantwortet werden</translation>
     </message>
+    <message>
+        <source>%1: the bridge does not read the robot&apos;s script back</source>
+        <translation>%1: die Bridge liest das Skript des Roboters nicht zurück</translation>
+    </message>
 </context>
 <context>
     <name>OdometryMap</name>

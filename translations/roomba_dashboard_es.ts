@@ -2913,6 +2913,10 @@ GPL-3.0-or-later.</translation>
         <source>%1: the bridge does not publish packet %2, so the query cannot be answered</source>
         <translation>%1: el puente no publica el paquete %2, así que la consulta no puede responderse</translation>
     </message>
+    <message>
+        <source>%1: the bridge does not read the robot&apos;s script back</source>
+        <translation>%1: el puente no lee el script del robot</translation>
+    </message>
 </context>
 <context>
     <name>OdometryMap</name>

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "bridge_inbox.h"
 
-#include "command_request.h"
+#include "command_message.h"
 #include "robot_bridge.h"
 
 #include <QMetaObject>
@@ -17,8 +17,8 @@ bool isStopCommand(const QByteArray &payload)
     if (!payload.contains("stop"))
         return false;
     QString id, error;
-    const std::optional<CommandRequest> r = CommandRequest::fromJson(payload, &id, &error);
-    return r && r->command == QLatin1String("stop");
+    const std::optional<mqtt::CommandMessage> m = mqtt::CommandMessage::fromJson(payload, &id, &error);
+    return m && m->isStop();
 }
 
 } // namespace

@@ -2,6 +2,7 @@
 #include "robot_bridge.h"
 
 #include "command_catalog.h"
+#include "command_message.h"
 #include "command_modes.h"
 #include "fleet_topics.h"
 #include "robot_session.h"
@@ -53,30 +54,10 @@ bool belongsToTheLink(oi::Command c)
            || c == C::ShowScript || c == C::Stop;
 }
 
-bool isMotion(oi::Command c)
+QString nameOf(oi::Command c)
 {
-    return c == oi::Command::Drive || c == oi::Command::DriveDirect || c == oi::Command::DrivePwm;
-}
-
-qint16 word(const QByteArray &bytes, int at)
-{
-    return qint16((quint8(bytes[at]) << 8) | quint8(bytes[at + 1]));
-}
-
-// A validated Drive, Drive Direct or Drive PWM read back from its bytes, so
-// that the teleop rules (rate, stale data, Passive) apply to it.
-MotionCommand motionOf(oi::Command c, const QByteArray &bytes)
-{
-    MotionCommand m;
-    if (c == oi::Command::Drive) {
-        m.velocity = word(bytes, 1);
-        m.radius = word(bytes, 3);
-        return m;
-    }
-    m.kind = c == oi::Command::DriveDirect ? MotionCommand::Kind::DriveDirect : MotionCommand::Kind::DrivePwm;
-    m.right = word(bytes, 1);
-    m.left = word(bytes, 3);
-    return m;
+    const std::string_view name = oi::commandSpec(c).name;
+    return QString::fromUtf8(name.data(), qsizetype(name.size()));
 }
 
 } // namespace
@@ -288,7 +269,7 @@ void RobotBridge::handleCommand(const BridgeInbox::Message &message)
 {
     const QString &client = message.topic.client;
     QString id, error;
-    const std::optional<CommandRequest> request = CommandRequest::fromJson(message.payload, &id, &error);
+    const std::optional<mqtt::CommandMessage> request = mqtt::CommandMessage::fromJson(message.payload, &id, &error);
     auto refuse = [&](const QString &why, QJsonObject extra = {}) {
         extra.insert(QLatin1String("id"), id);
         extra.insert(QLatin1String("ok"), false);
@@ -298,7 +279,7 @@ void RobotBridge::handleCommand(const BridgeInbox::Message &message)
     if (!request)
         return refuse(error);
     // Stop, from anyone who may write commands: Drive 0,0 and motors off.
-    if (request->command == QLatin1String("stop")) {
+    if (request->isStop()) {
         if (message.tooSoon)
             return refuse(QStringLiteral("too many stops: one every %1 ms from a client that does not hold control")
                               .arg(BridgeInbox::kStopIntervalMs));
@@ -306,44 +287,48 @@ void RobotBridge::handleCommand(const BridgeInbox::Message &message)
         stopRobot();
         return reply(client, {{"id", id}, {"ok", true}});
     }
-    const oi::CommandSpec *spec = oi::commandSpecByName(request->command.toStdString());
-    if (spec && belongsToTheLink(spec->command))
-        return refuse(QStringLiteral("%1 is not taken over MQTT: the bridge keeps the link's stream").arg(request->command));
-    if (spec && spec->command == oi::Command::Full && !m_options.allowFull)
+    // Either form becomes the same typed command; from here on only it counts.
+    const std::optional<oi::OiCommand> command = request->toCommand(m_robot.robotProfile(), &error);
+    if (!command)
+        return refuse(error);
+    if (belongsToTheLink(command->command))
+        return refuse(QStringLiteral("%1 is not taken over MQTT: the bridge keeps the link's stream")
+                          .arg(nameOf(command->command)));
+    if (command->command == oi::Command::Full && !m_options.allowFull)
         return refuse(QStringLiteral("full is off on this bridge: in Full mode the robot drives over cliffs and "
                                      "wheel drops; send safe, or ask the teacher to set allow-full = yes"));
+    // Judged whole (ranges, the profile) before control, in either version.
+    const oi::EncodeResult bytes = oi::encodeCommand(oi::CommandEncoder(m_robot.robotProfile()), *command);
+    if (!bytes)
+        return refuse(QString::fromStdString(bytes.error().describe()));
     if (!m_lease.isHeldBy(client)) {
         const QString holder = m_lease.holder();
         if (holder.isEmpty())
             return refuse(QStringLiteral("nobody has control: take it first"), {{"controller", QJsonValue()}});
         return refuse(QStringLiteral("%1 has control").arg(holder), {{"controller", holder}});
     }
-    const oi::EncodeResult bytes =
-        oi::encodeCommand(oi::CommandEncoder(m_robot.robotProfile()), request->command.toStdString(), request->args);
-    if (!bytes)
-        return refuse(QString::fromStdString(bytes.error().describe()));
-    error = sendValidated(request->command,
-                          QByteArray(reinterpret_cast<const char *>(bytes->data()), qsizetype(bytes->size())));
+    error = sendValidated(*command, QByteArray(reinterpret_cast<const char *>(bytes->data()), qsizetype(bytes->size())));
     if (!error.isEmpty())
         return refuse(error);
     reply(client, {{"id", id}, {"ok", true}});
 }
 
-QString RobotBridge::sendValidated(const QString &command, const QByteArray &bytes)
+QString RobotBridge::sendValidated(const oi::OiCommand &command, const QByteArray &bytes)
 {
-    const oi::Command c = oi::commandSpecByName(command.toStdString())->command;
+    const oi::Command c = command.command;
     if (oi::needsSafeOrFull(c)) {
         m_robot.teleop().checkMode();
         if (m_robot.teleop().isPassive())
             return QStringLiteral("the robot is in Passive mode, and %1 is sent only in Safe or Full (%2): send safe "
                                   "(or full) first")
-                .arg(command, QString::fromUtf8(oi::whyNotInPassive(c).data(), qsizetype(oi::whyNotInPassive(c).size())));
+                .arg(nameOf(c), QString::fromUtf8(oi::whyNotInPassive(c).data(), qsizetype(oi::whyNotInPassive(c).size())));
     }
-    if (isMotion(c)) {
+    if (const std::optional<MotionCommand> motion = MotionCommand::fromCommand(command)) {
         // Nobody can see what the robot does without fresh data.
         if (!m_robot.isLive())
             return QStringLiteral("no fresh data from the robot (link %1): motion refused").arg(linkWord(m_robot.state()));
-        m_robot.teleop().requestMotion(motionOf(c, bytes));
+        // Through the teleop rules: rate, stale data, Passive.
+        m_robot.teleop().requestMotion(*motion);
         return {};
     }
     if (!m_robot.send(bytes))

@@ -2,9 +2,10 @@
 #pragma once
 
 #include "bridge_inbox.h"
-#include "command_request.h"
+#include "control_message.h"
 #include "control_lease.h"
 #include "mqtt_client.h"
+#include "oi_command.h"
 #include "sensor_snapshot.h"
 #include "telemetry_changes.h"
 
@@ -71,7 +72,7 @@ private:
     void stopAll();
     // The command's bytes are validated; motion goes through the teleop
     // rules, the rest straight to the robot. Returns the error, or empty.
-    QString sendValidated(const QString &command, const QByteArray &bytes);
+    QString sendValidated(const oi::OiCommand &command, const QByteArray &bytes);
     // Drive 0,0 and motors off, through the teleop rules; Safe first if the
     // robot may be carrying out a command of its own in Passive.
     void stopRobot();

@@ -531,12 +531,12 @@ void RobotLink::send(const QByteArray &bytes)
         if (!endScript.empty() && !writeBytes(toBytes(endScript)))
             return;
     }
-    writeBytes(bytes);
+    writeBytes(bytes, true);
 }
 
-bool RobotLink::writeBytes(const QByteArray &bytes)
+bool RobotLink::writeBytes(const QByteArray &bytes, bool asked)
 {
-    if (!m_transport || !m_transport->write(bytes)) {
+    if (!m_transport || !(asked ? m_transport->writeCommand(bytes) : m_transport->write(bytes))) {
         reportError(tr("%1: write failed").arg(m_settings.describe()));
         return false;
     }

@@ -171,7 +171,8 @@ private:
     bool takeScriptReply(const QByteArray &bytes);
     void onWatchdog();
     void onNoData();
-    bool writeBytes(const QByteArray &bytes);
+    // `asked`: a command from send(), not one of the link's own exchanges.
+    bool writeBytes(const QByteArray &bytes, bool asked = false);
     // Counts, records and shows bytes that went to the robot.
     void noteSent(const QByteArray &bytes);
     void dropPartialInput();

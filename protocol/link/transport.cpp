@@ -14,6 +14,11 @@ bool Transport::setBaud(int)
     return false;
 }
 
+bool Transport::writeCommand(const QByteArray &bytes)
+{
+    return write(bytes);
+}
+
 qint64 Transport::readTimeUs() const
 {
     return -1;

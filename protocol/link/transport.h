@@ -28,6 +28,12 @@ public:
     virtual bool isOpen() const = 0;
     // Queues the bytes; false if the transport is not open or refused them.
     virtual bool write(const QByteArray &bytes) = 0;
+    // A command the link's user asked for (RobotLink::send), as opposed to
+    // the link's own exchanges (its Start and Stream, queries, the stop on
+    // closing), which come through write(). Only a transport that hands
+    // commands on to someone who keeps a link of their own (a bridge) needs
+    // to tell them apart; the others write them.
+    virtual bool writeCommand(const QByteArray &bytes);
     // Waits up to `msecs` for queued bytes to leave (used before closing).
     virtual void flush(int msecs) = 0;
     // Serial ports only: change the line speed, open or not. Others have no

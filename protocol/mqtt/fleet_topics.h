@@ -16,7 +16,7 @@ enum class Kind {
     State,     // roomba/NAME/state, retained: online, profile, mode, controller...
     Telemetry, // roomba/NAME/telemetry: one flat JSON object per frame
     Stats,     // roomba/NAME/stats: link statistics, once a second
-    Command,   // roomba/NAME/command/CLIENT: {"id", "command", "args"}
+    Command,   // roomba/NAME/command/CLIENT: a command (command_message.h)
     Control,   // roomba/NAME/control/CLIENT: {"action": "take" | "keep" | "release"}
     Takeover,  // roomba/NAME/takeover/CLIENT: take control from its holder (teacher)
     Reply,     // roomba/NAME/reply/CLIENT: the bridge's answer to CLIENT

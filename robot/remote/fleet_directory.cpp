@@ -9,8 +9,6 @@
 #include <QHostInfo>
 #include <QJsonDocument>
 #include <QJsonParseError>
-#include <QMetaObject>
-#include <QMutexLocker>
 
 FleetDirectory::FleetDirectory(QObject *parent) : QObject(parent)
 {
@@ -45,11 +43,7 @@ bool FleetDirectory::connectToBroker(const mqtt::BrokerAddress &address)
     m_robots.clear();
     m_reported.clear();
     m_address = address;
-    {
-        // Read by network transports on their link threads.
-        const QMutexLocker lock(&m_clientNameLock);
-        m_clientName = clientNameFor(address);
-    }
+    m_clientName = clientNameFor(address);
     // The broker refuses a second client with the same id by dropping the
     // first; a console's id is its name plus what tells two windows apart.
     m_client = std::make_unique<mqtt::MqttClient>(
@@ -89,12 +83,10 @@ const RemoteRobot *FleetDirectory::robot(const QString &name)
 
 void FleetDirectory::follow(const QString &name, bool on)
 {
-    QMetaObject::invokeMethod(this, [this, name, on] {
-        int &n = m_followers[name];
-        n = std::max(0, n + (on ? 1 : -1));
-        if (n == 0)
-            m_followers.remove(name);
-    });
+    int &n = m_followers[name];
+    n = std::max(0, n + (on ? 1 : -1));
+    if (n == 0)
+        m_followers.remove(name);
 }
 
 void FleetDirectory::onMessage(const QString &topic, const QByteArray &payload)
@@ -236,28 +228,18 @@ bool FleetDirectory::stopAll()
     return m_client->publish(mqtt::topics::stopAll(), QJsonDocument(payload).toJson(QJsonDocument::Compact), 1);
 }
 
-QString FleetDirectory::clientName() const
-{
-    const QMutexLocker lock(&m_clientNameLock);
-    return m_clientName;
-}
-
 void FleetDirectory::publishJson(const QString &topic, const QJsonObject &object, int qos)
 {
-    const QByteArray payload = QJsonDocument(object).toJson(QJsonDocument::Compact);
-    // The client belongs to this thread; a link thread's transport comes here.
-    QMetaObject::invokeMethod(this, [this, topic, payload, qos] {
-        if (m_client)
-            m_client->publish(topic, payload, qos);
-    });
+    if (m_client)
+        m_client->publish(topic, QJsonDocument(object).toJson(QJsonDocument::Compact), qos);
 }
 
 void FleetDirectory::publishCommand(const QString &robot, const QJsonObject &command)
 {
-    publishJson(mqtt::topics::command(robot, clientName()), command, 1);
+    publishJson(mqtt::topics::command(robot, m_clientName), command, 1);
 }
 
 void FleetDirectory::publishControl(const QString &robot, const QString &action)
 {
-    publishJson(mqtt::topics::control(robot, clientName()), QJsonObject{{QStringLiteral("action"), action}}, 1);
+    publishJson(mqtt::topics::control(robot, m_clientName), QJsonObject{{QStringLiteral("action"), action}}, 1);
 }

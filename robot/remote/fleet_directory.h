@@ -7,7 +7,6 @@
 #include <QJsonObject>
 #include <QHash>
 #include <QMap>
-#include <QMutex>
 #include <QObject>
 #include <QSet>
 #include <QString>
@@ -26,9 +25,10 @@ class MqttClient;
 // dies stays, offline (its last will). Also the console's voice on the
 // broker: commands, control and Stop all go out through it.
 //
-// Lives on the GUI thread. Network transports on link threads connect to
-// telemetryReceived() and replyReceived() (queued) and publish through
-// publish(), which may be called from any thread.
+// Lives on the GUI thread. Network transports on link threads are
+// connected to it by queued signals only: telemetryReceived() and
+// replyReceived() go to them, and their commands, control messages and
+// follow() come back, all as values.
 class FleetDirectory : public QObject {
     Q_OBJECT
 public:
@@ -46,7 +46,7 @@ public:
     bool isConnected() const;
     bool hasBroker() const { return bool(m_client); }
     mqtt::BrokerAddress broker() const { return m_address; }
-    QString clientName() const; // thread-safe
+    QString clientName() const { return m_clientName; }
 
     // In the order they appeared.
     const QStringList &names() const { return m_names; }
@@ -54,14 +54,13 @@ public:
 
     // Every robot's telemetry is read as it comes (each message carries what
     // changed); a followed robot's is also given to telemetryReceived(). A
-    // network transport follows its robot while it is open.
-    // Counted; thread-safe.
+    // network transport follows its robot while it is open. Counted.
     void follow(const QString &name, bool on);
 
     // Every bridge on the broker stops its robot, whoever holds control.
     bool stopAll();
     // A command or control message from this console for `robot`
-    // (docs/mqtt.md: Commands, Control). Thread-safe.
+    // (docs/mqtt.md: Commands, Control).
     void publishCommand(const QString &robot, const QJsonObject &command);
     void publishControl(const QString &robot, const QString &action);
 
@@ -92,7 +91,6 @@ private:
 
     std::unique_ptr<mqtt::MqttClient> m_client;
     mqtt::BrokerAddress m_address;
-    mutable QMutex m_clientNameLock;
     QString m_clientName;
     QStringList m_names;
     QMap<QString, RemoteRobot> m_robots;

@@ -2,51 +2,65 @@
 #include "network_transport.h"
 
 #include "command_catalog.h"
+#include "command_message.h"
 #include "fleet_directory.h"
 #include "packet_encoding.h"
-#include "script_assembler.h"
 
-#include <QJsonArray>
-#include <QMetaObject>
-#include <QTimer>
-
-#include <utility>
+#include <algorithm>
 
 namespace {
 
 constexpr std::uint8_t kStreamHeader = 19;
 
-bool isMotion(const QString &command)
+using C = oi::Command;
+
+// What keeps the robot moving, and so keeps control while it runs.
+bool isMotion(const oi::OiCommand &c)
 {
-    return command == QLatin1String("drive") || command == QLatin1String("drive-direct")
-           || command == QLatin1String("drive-pwm") || command == QLatin1String("motors")
-           || command == QLatin1String("pwm-motors") || command == QLatin1String("low-side-drivers")
-           || command == QLatin1String("pwm-low-side-drivers");
+    switch (c.command) {
+    case C::Drive:
+    case C::DriveDirect:
+    case C::DrivePwm:
+    case C::Motors:
+    case C::PwmMotors:
+    case C::LowSideDrivers:
+    case C::PwmLowSideDrivers: return true;
+    default: return false;
+    }
 }
 
-// Drive 0 (any radius), Drive Direct or PWM 0 0, motors off: the stop the
-// teleop rules and the link's shutdown send.
-bool isStop(const QStringList &words)
+// Drive 0 (any radius), Drive Direct or PWM 0 0, motors off, Stop: the
+// stop the teleop rules and the link's shutdown send.
+bool isStop(const oi::OiCommand &c)
 {
-    const QString &c = words.first();
-    if (c == QLatin1String("drive"))
-        return words.value(1) == QLatin1String("0");
-    if (c == QLatin1String("stop"))
+    if (c.command == C::Stop)
         return true;
     if (!isMotion(c))
         return false;
-    for (qsizetype i = 1; i < words.size(); ++i)
-        if (words[i] != QLatin1String("0"))
-            return false;
-    return true;
+    if (c.command == C::Drive)
+        return c.fields.at(0) == 0; // velocity
+    return std::all_of(c.fields.begin(), c.fields.end(), [](int v) { return v == 0; });
 }
 
 } // namespace
 
 NetworkTransport::NetworkTransport(FleetDirectory *directory, QString robot, const oi::RobotProfile &profile,
                                    QObject *parent)
-    : Transport(parent), m_directory(directory), m_robot(std::move(robot)), m_profile(&profile), m_latest(profile)
+    : Transport(parent), m_hasDirectory(directory), m_robot(std::move(robot)), m_profile(&profile), m_latest(profile)
 {
+    if (directory) {
+        // Values both ways, queued: the directory lives on the GUI thread.
+        connect(directory, &FleetDirectory::telemetryReceived, this, &NetworkTransport::onTelemetry,
+                Qt::QueuedConnection);
+        connect(directory, &FleetDirectory::replyReceived, this, &NetworkTransport::onReply, Qt::QueuedConnection);
+        connect(this, &NetworkTransport::followRequested, directory, &FleetDirectory::follow, Qt::QueuedConnection);
+        connect(this, &NetworkTransport::commandPublished, directory, &FleetDirectory::publishCommand,
+                Qt::QueuedConnection);
+        connect(this, &NetworkTransport::controlPublished, directory, &FleetDirectory::publishControl,
+                Qt::QueuedConnection);
+        connect(this, &NetworkTransport::problemFound, directory, &FleetDirectory::errorOccurred,
+                Qt::QueuedConnection);
+    }
     m_heartbeat.setInterval(kHeartbeatMs);
     connect(&m_heartbeat, &QTimer::timeout, this, [this] {
         publishControl(QStringLiteral("keep"));
@@ -65,14 +79,11 @@ QString NetworkTransport::describe() const { return tr("%1 on the broker").arg(m
 
 void NetworkTransport::open()
 {
-    if (!m_directory) {
+    if (!m_hasDirectory) {
         emit errorOccurred(tr("%1: not connected to a broker").arg(describe()));
         return;
     }
-    // Queued: the directory lives on the GUI thread.
-    m_connections << connect(m_directory, &FleetDirectory::telemetryReceived, this, &NetworkTransport::onTelemetry)
-                  << connect(m_directory, &FleetDirectory::replyReceived, this, &NetworkTransport::onReply);
-    m_directory->follow(m_robot, true);
+    emit followRequested(m_robot, true);
     m_open = true;
     emit opened();
 }
@@ -82,115 +93,101 @@ void NetworkTransport::close()
     if (!m_open)
         return;
     releaseControl();
-    if (m_directory)
-        m_directory->follow(m_robot, false);
-    for (const auto &c : std::as_const(m_connections))
-        disconnect(c);
-    m_connections.clear();
+    emit followRequested(m_robot, false);
     m_open = false;
     m_streaming = false;
 }
 
-void NetworkTransport::report(const QString &message)
-{
-    if (!m_directory)
-        return;
-    QMetaObject::invokeMethod(m_directory, [d = m_directory, message] {
-        if (d)
-            emit d->errorOccurred(message);
-    });
-}
+void NetworkTransport::report(const QString &message) { emit problemFound(message); }
 
 bool NetworkTransport::write(const QByteArray &bytes)
 {
     if (!m_open)
         return false;
-    const auto *data = reinterpret_cast<const std::uint8_t *>(bytes.constData());
-    const auto text = oi::disassembleScript(*m_profile, std::span(data, std::size_t(bytes.size())));
-    if (!text) {
-        report(tr("%1: these bytes are no command the bridge takes: %2")
-                   .arg(describe(), QString::fromStdString(text.error().describe())));
-        return true; // the link's bytes were taken; only the bridge refuses them
-    }
-    QList<QStringList> statements;
-    bool onlyStops = true;
-    for (const QString &statement : QString::fromStdString(*text).split(QStringLiteral("; "), Qt::SkipEmptyParts)) {
-        statements << statement.split(QLatin1Char(' '), Qt::SkipEmptyParts);
-        const QString &c = statements.last().first();
-        onlyStops = onlyStops && (isStop(statements.last()) || c == QLatin1String("start"));
-    }
-    bool stopped = false;
-    if (statements.size() == 1 && statements.first() == QStringList{QStringLiteral("start")}) {
-        m_startPending = true;
-        QTimer::singleShot(0, this, [this] {
-            if (std::exchange(m_startPending, false))
-                forward({QStringLiteral("start")}); // Passive, asked for by the user
-        });
-        return true;
-    }
-    for (const QStringList &words : std::as_const(statements)) {
-        const QString &c = words.first();
-        if (c == QLatin1String("stream") || c == QLatin1String("baud"))
-            m_startPending = false; // the Start before it was the link's own
-        if (c == QLatin1String("start") || c == QLatin1String("baud")) {
-            continue; // the bridge's link decides its mode on connecting, and its baud
-        } else if (c == QLatin1String("stream")) {
-            m_streamIds.clear();
-            for (qsizetype i = 2; i < words.size(); ++i)
-                m_streamIds.push_back(words[i].toInt());
-            m_streaming = true;
-        } else if (c == QLatin1String("pause-resume-stream")) {
-            m_streaming = words.value(1) == QLatin1String("1");
-        } else if (c == QLatin1String("sensors") || c == QLatin1String("query-list")) {
-            std::vector<int> ids;
-            for (qsizetype i = c == QLatin1String("sensors") ? 1 : 2; i < words.size(); ++i)
-                ids.push_back(words[i].toInt());
-            answerQuery(ids);
-        } else if (onlyStops) {
-            // Drive 0,0 and motors off is the bridge's "stop". Only after our
-            // own commands: selecting or closing this robot must not stop
-            // another console's driving (Stop all does that, on purpose).
-            if (!stopped && m_inControl)
-                publishCommand(QStringLiteral("stop"), {});
-            stopped = true;
-        } else {
-            forward(words);
-        }
-    }
-    if (stopped) {
-        m_moving = false;
-        releaseControl();
-    }
+    carry(bytes, false);
     return true;
 }
 
-void NetworkTransport::forward(const QStringList &words)
+bool NetworkTransport::writeCommand(const QByteArray &bytes)
+{
+    if (!m_open)
+        return false;
+    carry(bytes, true);
+    return true;
+}
+
+// The link's own Start (before its Stream, and in its stop on closing) and
+// the empty Script it ends a Create's script with come through write(): the
+// bridge's link does the same for itself, so they stay here. A Start the
+// session asked for (Passive, from the mode panel) comes through
+// writeCommand() and goes to the bridge. The link tells which is which by
+// the path it writes on, so nothing here has to guess from timing.
+void NetworkTransport::carry(const QByteArray &bytes, bool asked)
+{
+    const auto *data = reinterpret_cast<const std::uint8_t *>(bytes.constData());
+    const auto commands = oi::decodeCommands(*m_profile, std::span(data, std::size_t(bytes.size())));
+    if (!commands) {
+        // The link's bytes were taken; only the bridge refuses them.
+        report(tr("%1: these bytes are no command the bridge takes: %2")
+                   .arg(describe(), QString::fromStdString(commands.error().describe())));
+        return;
+    }
+    std::vector<oi::OiCommand> toBridge;
+    for (const oi::OiCommand &c : *commands) {
+        switch (c.command) {
+        case C::Baud: break; // the bridge's link keeps its own baud
+        case C::Start:
+        case C::Script:
+            if (asked)
+                toBridge.push_back(c);
+            break;
+        case C::Stream:
+            m_streamIds.assign(c.data.begin(), c.data.end());
+            m_streaming = true;
+            break;
+        case C::PauseResumeStream: m_streaming = c.fields.at(0) == 1; break;
+        case C::Sensors: answerQuery({c.fields.at(0)}); break;
+        case C::QueryList: answerQuery(std::vector<int>(c.data.begin(), c.data.end())); break;
+        case C::ShowScript:
+            // Unanswered, the link's request times out and says so.
+            report(tr("%1: the bridge does not read the robot's script back").arg(describe()));
+            break;
+        default: toBridge.push_back(c); break;
+        }
+    }
+    if (toBridge.empty())
+        return;
+    if (std::all_of(toBridge.begin(), toBridge.end(), isStop)) {
+        // Drive 0,0 and motors off is the bridge's "stop". Only after our
+        // own commands: selecting or closing this robot must not stop
+        // another console's driving (Stop all does that, on purpose).
+        if (m_inControl)
+            publishCommand(oi::OiCommand{C::Stop, {}, {}});
+        m_moving = false;
+        releaseControl();
+        return;
+    }
+    for (const oi::OiCommand &c : toBridge)
+        forward(c);
+}
+
+void NetworkTransport::forward(const oi::OiCommand &command)
 {
     takeControl();
-    QJsonArray args;
-    for (qsizetype i = 1; i < words.size(); ++i) {
-        bool number = false;
-        const int value = words[i].toInt(&number);
-        args.append(number ? QJsonValue(value) : QJsonValue(words[i]));
-    }
-    publishCommand(words.first(), args);
-    m_moving = isMotion(words.first()) ? !isStop(words) : m_moving;
+    publishCommand(command);
+    m_moving = isMotion(command) ? !isStop(command) : m_moving;
     if (!m_moving)
         m_idleRelease.start();
 }
 
-void NetworkTransport::publishCommand(const QString &command, const QJsonArray &args)
+void NetworkTransport::publishCommand(const oi::OiCommand &command)
 {
-    if (!m_directory)
-        return;
-    m_directory->publishCommand(m_robot, QJsonObject{{QStringLiteral("id"), QString::number(m_nextId++)},
-                                                     {QStringLiteral("command"), command},
-                                                     {QStringLiteral("args"), args}});
+    emit commandPublished(m_robot, mqtt::commandToJson(command, QString::number(m_nextId++)));
 }
 
 void NetworkTransport::takeControl()
 {
-    if (m_inControl || !m_directory)
+    if (m_inControl || !m_hasDirectory)
         return;
     publishControl(QStringLiteral("take"));
     m_inControl = true;
@@ -209,9 +206,7 @@ void NetworkTransport::releaseControl()
 
 void NetworkTransport::publishControl(const QString &action)
 {
-    if (!m_directory)
-        return;
-    m_directory->publishControl(m_robot, action);
+    emit controlPublished(m_robot, action);
     m_controlSent << action;
 }
 
@@ -222,16 +217,16 @@ void NetworkTransport::onReply(const QString &robot, const QJsonObject &reply)
     if (reply.value(QStringLiteral("id")).toString() == QLatin1String("control")) {
         // The bridge answers each control message in order; the answer to a
         // release that crossed a new take says nothing about the take. An
-        // answer to nothing of ours is a takeover.
+        // answer to nothing of ours is a takeover, a lapse or stop all.
         const QString answered = m_controlSent.isEmpty() ? QString() : m_controlSent.takeFirst();
         if (answered == QLatin1String("release"))
             return;
-        const QString controller = reply.value(QStringLiteral("controller")).toString();
-        if (m_inControl && controller != m_directory->clientName()) {
+        if (m_inControl && !reply.value(QStringLiteral("ok")).toBool()) {
             // Taken over, or refused: no heartbeat for what is not ours.
             m_heartbeat.stop();
             m_inControl = false;
             m_moving = false;
+            const QString controller = reply.value(QStringLiteral("controller")).toString();
             report(controller.isEmpty() ? tr("%1: control was not given").arg(describe())
                                         : tr("%1: %2 has control").arg(describe(), controller));
         }

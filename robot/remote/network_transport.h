@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "oi_command.h"
 #include "sensor_snapshot.h"
 #include "transport.h"
 
 #include <QJsonObject>
-#include <QPointer>
 #include <QTimer>
 
 #include <vector>
@@ -19,12 +19,14 @@ class FleetDirectory;
 //    becomes a stream frame of the packets the link asked for;
 //  - sensor queries are answered from the latest telemetry, and fail with a
 //    message naming the packet when the bridge does not publish it;
-//  - Start, Baud and the stream's own commands stay here (the bridge
-//    decides those); every other command goes to the bridge in the text
-//    form of `roomba-ctl encode`;
+//  - the link's own Start, Baud and stream commands stay here (the bridge's
+//    link does its own); every command the session asks for goes to the
+//    bridge as the typed command it is (docs/mqtt.md, "Commands");
 //  - the first command that needs control takes it, a heartbeat keeps it,
 //    and the stop after the motion (Drive 0,0, motors off) gives it back.
-// Lives on the link's thread; the directory publishes on the GUI thread.
+// Lives on the link's thread and shares nothing with the GUI-thread
+// directory: what it publishes leaves as values in queued signals, and
+// telemetry and replies come back the same way.
 class NetworkTransport : public oilink::Transport {
     Q_OBJECT
 public:
@@ -32,6 +34,8 @@ public:
     // A command other than motion (LEDs, a song) takes control for this long.
     static constexpr int kReleaseIdleMs = 1000;
 
+    // `directory` is only connected to, never called: null when there is
+    // no broker, and open() says so.
     NetworkTransport(FleetDirectory *directory, QString robot, const oi::RobotProfile &profile,
                      QObject *parent = nullptr);
     ~NetworkTransport() override;
@@ -40,21 +44,30 @@ public:
     void close() override;
     bool isOpen() const override { return m_open; }
     bool write(const QByteArray &bytes) override;
+    bool writeCommand(const QByteArray &bytes) override;
     void flush(int) override {}
     QString describe() const override;
 
+signals:
+    // To the directory, which publishes them (docs/mqtt.md).
+    void followRequested(const QString &robot, bool on);
+    void commandPublished(const QString &robot, const QJsonObject &command);
+    void controlPublished(const QString &robot, const QString &action);
+    void problemFound(const QString &message);
+
 private:
+    void carry(const QByteArray &bytes, bool asked);
     void onTelemetry(const QString &robot, const oi::SensorSnapshot &frame);
     void onReply(const QString &robot, const QJsonObject &reply);
-    void forward(const QStringList &words);
+    void forward(const oi::OiCommand &command);
     void answerQuery(const std::vector<int> &ids);
     void takeControl();
     void releaseControl();
-    void publishCommand(const QString &command, const QJsonArray &args);
+    void publishCommand(const oi::OiCommand &command);
     void publishControl(const QString &action);
     void report(const QString &message);
 
-    QPointer<FleetDirectory> m_directory;
+    bool m_hasDirectory;
     QString m_robot;
     const oi::RobotProfile *m_profile;
     bool m_open = false;
@@ -63,12 +76,8 @@ private:
     oi::SensorSnapshot m_latest;
     bool m_inControl = false;
     bool m_moving = false;
-    // Start alone may be the link's own (Stream follows at once) or the
-    // user's Passive: decided once the link has written what follows it.
-    bool m_startPending = false;
     quint64 m_nextId = 1;
     QStringList m_controlSent; // not answered yet, oldest first
     QTimer m_heartbeat;
     QTimer m_idleRelease;
-    QList<QMetaObject::Connection> m_connections;
 };

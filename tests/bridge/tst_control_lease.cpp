@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // One controller at a time, on a clock the test advances; and the shape of
-// the JSON commands and control messages, before any encoder sees them.
+// the control messages (the commands' is tests/mqtt/tst_command_message).
 
-#include "command_request.h"
+#include "control_message.h"
 #include "control_lease.h"
 #include "manual_lease_clock.h"
 
@@ -51,51 +51,6 @@ private slots:
         // Freed, it expires no more.
         clock.advance(1000);
         QCOMPARE(expired.count(), 1);
-    }
-
-    void commandRequests_data()
-    {
-        QTest::addColumn<QByteArray>("payload");
-        QTest::addColumn<QString>("id");
-        QTest::addColumn<QString>("command");
-        QTest::addColumn<QStringList>("args");
-        QTest::addColumn<QString>("error");
-        QTest::newRow("drive") << QByteArray(R"({"id":"17","command":"drive","args":[200,"straight"]})") << "17"
-                               << "drive" << QStringList{"200", "straight"} << "";
-        QTest::newRow("no args") << QByteArray(R"({"command":"safe"})") << "" << "safe" << QStringList{} << "";
-        QTest::newRow("numeric id") << QByteArray(R"({"id":5,"command":"safe"})") << "5" << "safe" << QStringList{} << "";
-        QTest::newRow("negative") << QByteArray(R"({"command":"drive-direct","args":[-500,500]})") << "" << "drive-direct"
-                                  << QStringList{"-500", "500"} << "";
-        QTest::newRow("fraction") << QByteArray(R"({"command":"drive","args":[1.5,0]})") << "" << "drive"
-                                  << QStringList{"1.5", "0"} << "";
-        QTest::newRow("not json") << QByteArray("drive 200 0") << "" << "" << QStringList{} << "not JSON";
-        QTest::newRow("array") << QByteArray("[1]") << "" << "" << QStringList{} << "not a JSON object";
-        QTest::newRow("no command") << QByteArray(R"({"id":"1"})") << "1" << "" << QStringList{} << "\"command\"";
-        QTest::newRow("args not a list") << QByteArray(R"({"id":"2","command":"drive","args":"200 0"})") << "2" << ""
-                                         << QStringList{} << "\"args\"";
-        QTest::newRow("object arg") << QByteArray(R"({"command":"drive","args":[{},0]})") << "" << "" << QStringList{}
-                                    << "argument 1";
-    }
-    void commandRequests()
-    {
-        QFETCH(QByteArray, payload);
-        QFETCH(QString, id);
-        QFETCH(QString, command);
-        QFETCH(QStringList, args);
-        QFETCH(QString, error);
-        QString gotId, gotError;
-        const std::optional<CommandRequest> r = CommandRequest::fromJson(payload, &gotId, &gotError);
-        QCOMPARE(gotId, id);
-        QCOMPARE(r.has_value(), error.isEmpty());
-        if (!r) {
-            QVERIFY2(gotError.contains(error), qPrintable(gotError));
-            return;
-        }
-        QCOMPARE(r->command, command);
-        QStringList gotArgs;
-        for (const std::string &a : r->args)
-            gotArgs << QString::fromStdString(a);
-        QCOMPARE(gotArgs, args);
     }
 
     void controlMessages()

@@ -1,9 +1,14 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // A bridge in this process against a real mosquitto: telemetry as the robot
 // sent it, commands validated before a byte goes out, one controller with a
-// heartbeat, stop all, and the broker going away and coming back.
+// heartbeat, stop all, the broker going away and coming back, and the
+// dashboard's own network robot driving it.
 
 #include "bridge_rig.h"
+#include "command_message.h"
+#include "fleet_directory.h"
+#include "network_transport.h"
+#include "oi_command.h"
 #include "snapshot_json.h"
 
 using namespace mqtt;
@@ -108,6 +113,60 @@ private slots:
         QVERIFY(frames.contains(key));
     }
 
+    // The dashboard's side: a session on a NetworkTransport drives r1, and
+    // the bridge's virtual robot gets the same typed command, as the same
+    // bytes, as the dashboard's link wrote.
+    void aDriveFromTheDashboardReachesTheRobotAsTheSameCommand()
+    {
+        MosquittoBroker broker;
+        QVERIFY2(broker.start(), qPrintable(broker.error()));
+        // Before the sessions: they may send while they close.
+        QList<QByteArray> atRobot, fromDashboard;
+        BridgeRig rig(QStringLiteral("r1"), addressOf(broker), BridgeRig::Robot::Virtual);
+        QVERIFY(rig.streaming());
+        connect(&rig.session, &RobotSession::bytesSent, &rig.session,
+                [&](const QByteArray &bytes, qint64) { atRobot << bytes; });
+
+        FleetDirectory directory;
+        QSignalSpy appeared(&directory, &FleetDirectory::robotAppeared);
+        directory.connectToBroker(addressOf(broker));
+        QVERIFY(appeared.wait(10000));
+        RobotSession dashboard;
+        dashboard.setTransportFactory([d = &directory](const oilink::LinkSettings &s) -> oilink::Transport * {
+            return new NetworkTransport(d, s.networkRobot, oi::profile(*s.profile));
+        });
+        connect(&dashboard, &RobotSession::bytesSent, &dashboard,
+                [&](const QByteArray &bytes, qint64) { fromDashboard << bytes; });
+        dashboard.connectTo(oilink::LinkSettings::networkRobotOf(QStringLiteral("r1"), oi::ProfileId::Create2));
+        QTRY_VERIFY_WITH_TIMEOUT(dashboard.isLive() && dashboard.latest().has(35), 10000);
+
+        // The virtual robot starts in Passive, where it ignores Drive.
+        const oi::CommandEncoder encoder(oi::profile(oi::ProfileId::Create2));
+        QVERIFY(dashboard.send(toBytes(*encoder.safe())));
+        QTRY_COMPARE_WITH_TIMEOUT(dashboard.latest().oiMode(), oi::OiMode::Safe, 5000);
+        QCOMPARE(rig.bridge.controller(), directory.clientName());
+
+        MotionCommand turn;
+        turn.kind = MotionCommand::Kind::DriveDirect;
+        turn.right = 150;
+        turn.left = 100;
+        dashboard.teleop().requestMotion(turn);
+        const QByteArray drive = toBytes(*encoder.driveDirect(150, 100));
+        QTRY_VERIFY_WITH_TIMEOUT(atRobot.contains(drive), 5000);
+        QVERIFY(fromDashboard.contains(drive));
+        const auto *at = reinterpret_cast<const std::uint8_t *>(drive.constData());
+        const auto typed = oi::decodeCommands(oi::profile(oi::ProfileId::Create2), std::span(at, std::size_t(drive.size())));
+        QVERIFY(typed);
+        QVERIFY((*typed == std::vector<oi::OiCommand>{{oi::Command::DriveDirect, {150, 100}, {}}}));
+        QTRY_COMPARE_WITH_TIMEOUT(rig.session.latest().requestedRightVelocity(), 150, 5000);
+
+        // Let go: the bridge stops the robot and control is free again.
+        const qsizetype before = atRobot.size();
+        dashboard.teleop().deadManReleased();
+        QTRY_VERIFY_WITH_TIMEOUT(rig.bridge.controller().isEmpty(), 5000);
+        QTRY_VERIFY(atRobot.mid(before).join().contains(rig.stopBytes()));
+    }
+
     void badCommandsGetAnErrorAndReachTheRobotAsNothing()
     {
         MosquittoBroker broker;
@@ -130,6 +189,16 @@ private slots:
             {{{"id", "5"}, {"command", "leds"}, {"args", QJsonArray{1, 2.5, 3}}}, "2.5"},
             {{{"id", "6"}, {"command", "baud"}, {"args", QJsonArray{11}}}, "stream"},
             {{{"id", "7"}, {"command", "drive"}, {"args", QJsonArray{100, true}}}, "argument 2"},
+            // Version 2, the typed form.
+            {{{"v", 2}, {"id", "9"}, {"command", "fly"}}, "\"fly\" is not a command"},
+            {{{"v", 2}, {"id", "10"}, {"command", "drive"}, {"fields", QJsonObject{{"speed", 100}, {"radius", 0}}}},
+             "drive has no field \"speed\": its fields are velocity, radius"},
+            {{{"v", 2}, {"id", "11"}, {"command", "drive"}, {"fields", QJsonObject{{"velocity", "fast"}, {"radius", 0}}}},
+             "\"velocity\" must be a whole number, not \"fast\""},
+            {{{"v", 2}, {"id", "12"}, {"command", "drive"}, {"fields", QJsonObject{{"velocity", 900}, {"radius", 0}}}},
+             "velocity"},
+            {{{"v", 2}, {"id", "13"}, {"command", "stream"}, {"data", QJsonArray{7}}}, "stream is not taken over MQTT"},
+            {{{"v", 3}, {"id", "14"}, {"command", "safe"}}, "\"v\" is 3"},
         };
         for (const Bad &b : bad) {
             const QJsonObject reply = alice.ask(topics::command(QStringLiteral("r1"), QStringLiteral("alice")), b.message);
@@ -144,7 +213,8 @@ private slots:
                         .value(QLatin1String("error")).toString().startsWith(QLatin1String("not JSON")));
 
         // A good command behind them: its bytes are the first the robot gets.
-        const QJsonObject ok = alice.command(QStringLiteral("r1"), QStringLiteral("8"), QStringLiteral("leds"), {8, 0, 255});
+        const QJsonObject ok = alice.ask(topics::command(QStringLiteral("r1"), QStringLiteral("alice")),
+                                         mqtt::commandToJson({oi::Command::Leds, {8, 0, 255}, {}}, QStringLiteral("8")));
         QCOMPARE(ok.value(QLatin1String("ok")), QJsonValue(true));
         const QByteArray leds = toBytes(*oi::CommandEncoder(rig.session.robotProfile()).leds(8, 0, 255));
         QTRY_VERIFY(!writtenSince(rig.recording, before).isEmpty());
@@ -196,6 +266,11 @@ private slots:
         QCOMPARE(r.value(QLatin1String("ok")), QJsonValue(false));
         QCOMPARE(r.value(QLatin1String("error")).toString(), QStringLiteral("alice has control"));
         QCOMPARE(r.value(QLatin1String("controller")).toString(), QStringLiteral("alice"));
+        // A command that cannot be sent at all says so first, in either version.
+        r = bob.ask(topics::command(QStringLiteral("r1"), QStringLiteral("bob")),
+                    mqtt::commandToJson({oi::Command::Drive, {900, 0}, {}}, QStringLiteral("2b")));
+        QVERIFY2(r.value(QLatin1String("error")).toString().startsWith(QLatin1String("velocity")),
+                 qPrintable(r.value(QLatin1String("error")).toString()));
         QTRY_COMPARE(alice.lastState(QStringLiteral("r1")).value(QLatin1String("controller")).toString(), QStringLiteral("alice"));
 
         // Stop, though, from anyone.

@@ -30,6 +30,9 @@ struct Recording {
 
     QMutex mutex;
     QList<QByteArray> writes;
+    // Those of the writes that were commands the link was asked to send
+    // (Transport::writeCommand), not its own exchanges.
+    QList<QByteArray> commands;
     QList<Clock::time_point> times;
     // The OI mode (packet 35) the streamed frames report: 0 Off .. 3 Full.
     std::atomic<int> mode{0};
@@ -136,6 +139,14 @@ public:
         QMutexLocker lock(&m_recording->mutex);
         m_recording->writes << bytes;
         m_recording->times << now;
+        return true;
+    }
+    bool writeCommand(const QByteArray &bytes) override
+    {
+        if (!write(bytes))
+            return false;
+        QMutexLocker lock(&m_recording->mutex);
+        m_recording->commands << bytes;
         return true;
     }
     void flush(int) override { ++m_recording->flushes; }

@@ -495,6 +495,22 @@ private slots:
         QCOMPARE(sent.last().at(0).toByteArray(), driveBytes);
     }
 
+    // What the link is asked to send reaches the transport as a command;
+    // its own Start, Stream and the script end before a Start do not (nor
+    // its stop on closing: tst_network_robot), so a transport that hands commands on can tell them
+    // apart by the path alone.
+    void askedCommandsAreToldApartFromTheLinksOwn()
+    {
+        m_link->open(LinkSettings::serial(QStringLiteral("/dev/recording"), oi::ProfileId::Create1));
+        Recording &r = current()->recording();
+        QCOMPARE(r.written(), bytes({152, 0, 128, 148, 1, 6}));
+        QVERIFY(r.commands.isEmpty());
+        m_link->send(bytes({128})); // Passive, asked for
+        m_link->send(bytes({137, 0, 100, 128, 0}));
+        QCOMPARE(r.writes.mid(2), QList<QByteArray>({bytes({152, 0}), bytes({128}), bytes({137, 0, 100, 128, 0})}));
+        QCOMPARE(r.commands, QList<QByteArray>({bytes({128}), bytes({137, 0, 100, 128, 0})}));
+    }
+
     // A slot that closes the link on a snapshot runs inside the parser.
     void closingFromASnapshotSlotIsSafe()
     {

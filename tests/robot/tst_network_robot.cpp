@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // A robot on the broker as a RobotSession: its telemetry comes in as stream
 // frames, driving takes control, keeps it with a heartbeat and gives it back
-// after the stop, and a sensor query the bridge cannot answer fails with a
-// message. Against a real mosquitto and a fake bridge.
+// after the stop, commands go as typed ones while the link's own stay here,
+// and a sensor query the bridge cannot answer fails with a message. Against
+// a real mosquitto and a fake bridge.
 
 #include "fake_bridge.h"
 #include "fleet_directory.h"
@@ -26,13 +27,19 @@ private:
         FleetDirectory directory;
         RobotSession session;
         QTimer telemetry; // the bridge's stream, every 15 ms
-        oi::SensorSnapshot values{oi::profile(oi::ProfileId::Create2)};
+        oi::ProfileId profile;
+        oi::SensorSnapshot values{oi::profile(profile)};
+
+        explicit Rig(oi::ProfileId id = oi::ProfileId::Create2) : profile(id) {}
 
         bool start()
         {
             if (!broker.start() || !bridge.start(broker.port()))
                 return false;
-            bridge.publishState();
+            QJsonObject state = bridge.state();
+            state.insert("profile", QString::fromLatin1(oi::profile(profile).key.data(),
+                                                        qsizetype(oi::profile(profile).key.size())));
+            bridge.publishState(state);
             QSignalSpy appeared(&directory, &FleetDirectory::robotAppeared);
             directory.connectToBroker(*mqtt::BrokerAddress::fromUrl(broker.url(), nullptr));
             if (!appeared.wait(5000))
@@ -46,11 +53,26 @@ private:
             session.setTransportFactory([d = &directory](const oilink::LinkSettings &s) -> oilink::Transport * {
                 return new NetworkTransport(d, s.networkRobot, oi::profile(*s.profile));
             });
-            session.connectTo(oilink::LinkSettings::networkRobotOf(QStringLiteral("r1"), oi::ProfileId::Create2));
+            session.connectTo(oilink::LinkSettings::networkRobotOf(QStringLiteral("r1"), profile));
             // Live, and the first frame in: the robot's mode is known.
             return QTest::qWaitFor([this] { return session.isLive() && session.snapshotCount() > 0; }, 5000);
         }
+
+        // Once the bridge has what the console published so far: a stop all
+        // queued behind it has arrived. (Messages from one client arrive in
+        // the order they were sent.)
+        bool settled()
+        {
+            const int stops = bridge.stopsReceived();
+            QMetaObject::invokeMethod(&directory, [this] { directory.stopAll(); }, Qt::QueuedConnection);
+            return QTest::qWaitFor([&] { return bridge.stopsReceived() > stops; }, 5000);
+        }
     };
+
+    static bool isStream(const QList<QVariant> &bytesSent)
+    {
+        return bytesSent[0].toByteArray().startsWith(char(148));
+    }
 
 private slots:
     void telemetryComesInAsFrames()
@@ -82,8 +104,11 @@ private slots:
         QTRY_COMPARE_WITH_TIMEOUT(rig.bridge.receivedOn(mqtt::topics::Kind::Command).size(), 1, 5000);
         const auto drive = rig.bridge.receivedOn(mqtt::topics::Kind::Command).first();
         QCOMPARE(drive.topic, mqtt::topics::command("r1", rig.directory.clientName()));
+        // The typed command, as docs/mqtt.md says.
+        QCOMPARE(drive.payload.value("v").toInt(), 2);
         QCOMPARE(drive.payload.value("command").toString(), QStringLiteral("drive"));
-        QCOMPARE(drive.payload.value("args").toArray(), QJsonArray({200, "straight"}));
+        QCOMPARE(drive.payload.value("fields").toObject(),
+                 QJsonObject({{"velocity", 200}, {"radius", oi::kRadiusStraight}}));
         // Control was taken before the command.
         QCOMPARE(rig.bridge.received().first().payload.value("action").toString(), QStringLiteral("take"));
 
@@ -119,6 +144,8 @@ private slots:
         QTRY_COMPARE_WITH_TIMEOUT(rig.bridge.receivedOn(mqtt::topics::Kind::Command).size(), 1, 5000);
         QCOMPARE(rig.bridge.receivedOn(mqtt::topics::Kind::Command).first().payload.value("command").toString(),
                  QStringLiteral("start"));
+        QVERIFY(rig.settled());
+        QCOMPARE(rig.bridge.receivedOn(mqtt::topics::Kind::Command).size(), 1);
     }
 
     void anotherControllerRefusesTheDrive()
@@ -167,11 +194,48 @@ private slots:
     {
         Rig rig;
         QVERIFY2(rig.start(), qPrintable(rig.broker.error()));
-        QSignalSpy states(&rig.session, &RobotSession::stateChanged);
+        QSignalSpy sent(&rig.session, &RobotSession::bytesSent);
         rig.telemetry.stop();
         QTRY_COMPARE_WITH_TIMEOUT(rig.session.state(), oilink::LinkState::Stale, 5000);
+        // With no data for a while the link writes its Start and Stream
+        // again; they are the link's own and stay here.
+        QTRY_VERIFY_WITH_TIMEOUT(std::any_of(sent.cbegin(), sent.cend(), isStream), 5000);
         rig.telemetry.start(15);
         QTRY_COMPARE_WITH_TIMEOUT(rig.session.state(), oilink::LinkState::Streaming, 5000);
+        QVERIFY(rig.settled());
+        QVERIFY(rig.bridge.receivedOn(mqtt::topics::Kind::Command).isEmpty());
+    }
+
+    // Closing a robot this console does not drive must not stop anyone
+    // else's driving, nor send it to Passive: the link's stop and Start on
+    // closing stay here.
+    void closingLeavesTheRobotAlone()
+    {
+        Rig rig;
+        QVERIFY2(rig.start(), qPrintable(rig.broker.error()));
+        QSignalSpy sent(&rig.session, &RobotSession::bytesSent);
+        rig.session.closeAndWait();
+        QVERIFY(!sent.isEmpty()); // the link's stop and Start were written
+        QVERIFY(rig.settled());
+        QVERIFY(rig.bridge.receivedOn(mqtt::topics::Kind::Command).isEmpty());
+        QVERIFY(rig.bridge.receivedOn(mqtt::topics::Kind::Control).isEmpty());
+    }
+
+    // The Create's link ends any script before its Start: that, too, is the
+    // link's own, and the Create's commands go as typed ones.
+    void aCreateOnTheBroker()
+    {
+        Rig rig(oi::ProfileId::Create1);
+        QSignalSpy errors(&rig.directory, &FleetDirectory::errorOccurred);
+        QVERIFY2(rig.start(), qPrintable(rig.broker.error()));
+        QVERIFY(rig.session.send(QByteArray::fromHex("9b0a"))); // wait-time 1 s: a Create-only command
+        QTRY_COMPARE_WITH_TIMEOUT(rig.bridge.receivedOn(mqtt::topics::Kind::Command).size(), 1, 5000);
+        const QJsonObject wait = rig.bridge.receivedOn(mqtt::topics::Kind::Command).first().payload;
+        QCOMPARE(wait.value("command").toString(), QStringLiteral("wait-time"));
+        QCOMPARE(wait.value("fields").toObject(), QJsonObject({{"time", 10}}));
+        QVERIFY(rig.settled());
+        QCOMPARE(rig.bridge.receivedOn(mqtt::topics::Kind::Command).size(), 1);
+        QVERIFY2(errors.isEmpty(), qPrintable(errors.value(0).value(0).toString()));
     }
 };
 

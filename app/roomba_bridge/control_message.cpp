@@ -1,0 +1,20 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "control_message.h"
+
+#include "command_message.h"
+
+std::optional<ControlAction> controlActionFromJson(const QByteArray &payload, QString *error)
+{
+    const std::optional<QJsonObject> o = mqtt::messageObject(payload, error);
+    if (!o)
+        return std::nullopt;
+    const QString action = o->value(QLatin1String("action")).toString();
+    if (action == QLatin1String("take"))
+        return ControlAction::Take;
+    if (action == QLatin1String("keep"))
+        return ControlAction::Keep;
+    if (action == QLatin1String("release"))
+        return ControlAction::Release;
+    *error = QStringLiteral("\"action\" must be \"take\", \"keep\" or \"release\"");
+    return std::nullopt;
+}

@@ -3937,6 +3937,21 @@ Doppelklick zum Umbenennen</translation>
     </message>
 </context>
 <context>
+    <name>RobotMarkers</name>
+    <message>
+        <source>Markers are kept in a recording: start one (File → Record) or open one.</source>
+        <translation>Markierungen werden in einer Aufzeichnung gespeichert: Starten Sie eine (Datei → Aufzeichnen) oder öffnen Sie eine.</translation>
+    </message>
+    <message>
+        <source>There is no marker %1.</source>
+        <translation>Es gibt keine Markierung %1.</translation>
+    </message>
+    <message>
+        <source>The marker could not be saved: %1</source>
+        <translation>Die Markierung konnte nicht gespeichert werden: %1</translation>
+    </message>
+</context>
+<context>
     <name>RobotMode</name>
     <message>
         <source>left</source>
@@ -4033,21 +4048,6 @@ Doppelklick zum Umbenennen</translation>
     <message>
         <source>Out of reach: the robot does not drive in Passive mode. %1</source>
         <translation>Nicht erreichbar: Im Modus Passive fährt der Roboter nicht. %1</translation>
-    </message>
-</context>
-<context>
-    <name>RobotMarkers</name>
-    <message>
-        <source>Markers are kept in a recording: start one (File → Record) or open one.</source>
-        <translation>Markierungen werden in einer Aufzeichnung gespeichert: Starten Sie eine (Datei → Aufzeichnen) oder öffnen Sie eine.</translation>
-    </message>
-    <message>
-        <source>There is no marker %1.</source>
-        <translation>Es gibt keine Markierung %1.</translation>
-    </message>
-    <message>
-        <source>The marker could not be saved: %1</source>
-        <translation>Die Markierung konnte nicht gespeichert werden: %1</translation>
     </message>
 </context>
 <context>

@@ -3936,6 +3936,21 @@ Doble clic para renombrar</translation>
     </message>
 </context>
 <context>
+    <name>RobotMarkers</name>
+    <message>
+        <source>Markers are kept in a recording: start one (File → Record) or open one.</source>
+        <translation>Las marcas se guardan en una grabación: inicie una (Archivo → Grabar) o abra una.</translation>
+    </message>
+    <message>
+        <source>There is no marker %1.</source>
+        <translation>No hay ninguna marca %1.</translation>
+    </message>
+    <message>
+        <source>The marker could not be saved: %1</source>
+        <translation>No se pudo guardar la marca: %1</translation>
+    </message>
+</context>
+<context>
     <name>RobotMode</name>
     <message>
         <source>left</source>
@@ -4032,21 +4047,6 @@ Doble clic para renombrar</translation>
     <message>
         <source>Out of reach: the robot does not drive in Passive mode. %1</source>
         <translation>Fuera de alcance: en modo Passive el robot no conduce. %1</translation>
-    </message>
-</context>
-<context>
-    <name>RobotMarkers</name>
-    <message>
-        <source>Markers are kept in a recording: start one (File → Record) or open one.</source>
-        <translation>Las marcas se guardan en una grabación: inicie una (Archivo → Grabar) o abra una.</translation>
-    </message>
-    <message>
-        <source>There is no marker %1.</source>
-        <translation>No hay ninguna marca %1.</translation>
-    </message>
-    <message>
-        <source>The marker could not be saved: %1</source>
-        <translation>No se pudo guardar la marca: %1</translation>
     </message>
 </context>
 <context>

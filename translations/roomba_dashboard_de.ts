@@ -3591,6 +3591,10 @@ GPL-3.0-or-later.</translation>
 
 %2</translation>
     </message>
+    <message>
+        <source>Replay</source>
+        <translation>Wiedergabe</translation>
+    </message>
 </context>
 <context>
     <name>RemoteRobot</name>

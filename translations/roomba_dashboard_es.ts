@@ -3590,6 +3590,10 @@ GPL-3.0-or-later.</translation>
 
 %2</translation>
     </message>
+    <message>
+        <source>Replay</source>
+        <translation>Reproducción</translation>
+    </message>
 </context>
 <context>
     <name>RemoteRobot</name>

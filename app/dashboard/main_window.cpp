@@ -313,7 +313,10 @@ void MainWindow::buildActions()
     });
 
     addToolBar(m_recording->toolBar());
-    // A row of its own: beside the replay bar it would squeeze the slider.
+    // Rows of their own, each shown only when in use: side by side they
+    // would squeeze the replay slider.
+    addToolBarBreak();
+    addToolBar(m_recording->replayToolBar());
     addToolBarBreak();
     addToolBar(m_comparison->toolBar());
 }

@@ -43,10 +43,14 @@ RecordingActions::RecordingActions(RobotFleet &fleet, QWidget *dialogParent)
     m_toolBar->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
     m_toolBar->addAction(m_record);
     m_toolBar->addAction(m_open);
-    m_replayBar = new ReplayBar(m_toolBar);
+    // A row of its own, shown only in a replay: beside the recording and
+    // marker tools a narrow window would push it into the overflow menu.
+    m_replayToolBar = new QToolBar(dialogParent);
+    m_replayToolBar->setObjectName("replayToolBar");
+    m_replayBar = new ReplayBar(m_replayToolBar);
     m_replayBar->setObjectName("replayBar");
-    m_replayBarAction = m_toolBar->addWidget(m_replayBar);
-    m_replayBarAction->setVisible(false);
+    m_replayToolBar->addWidget(m_replayBar);
+    m_replayToolBar->hide();
     const auto control = [this](const oilink::ReplayCommand &command) {
         if (RobotSession *robot = m_fleet.selected())
             robot->controlReplay(command);
@@ -71,6 +75,7 @@ void RecordingActions::retranslate()
     m_exportMcap->setText(tr("Export recording as &MCAP…"));
     m_exportMcap->setToolTip(tr("For Foxglove, Lichtblick and PlotJuggler"));
     m_toolBar->setWindowTitle(tr("Recording and replay"));
+    m_replayToolBar->setWindowTitle(tr("Replay"));
 }
 
 void RecordingActions::showSelectedRobot()
@@ -79,11 +84,9 @@ void RecordingActions::showSelectedRobot()
     m_record->setEnabled(robot && !robot->isReplay());
     m_record->setChecked(robot && robot->recording().active);
     const bool replay = robot && robot->isReplay();
-    m_replayBarAction->setVisible(replay);
-    if (replay) {
-        m_toolBar->show();
+    m_replayToolBar->setVisible(replay);
+    if (replay)
         showReplay(robot->replay());
-    }
 }
 
 void RecordingActions::showReplay(const oilink::ReplayStatus &status)

@@ -30,6 +30,8 @@ public:
     QAction *exportCsvAction() const { return m_exportCsv; }
     QAction *exportMcapAction() const { return m_exportMcap; }
     QToolBar *toolBar() const { return m_toolBar; }
+    // The replay bar's own row, shown while the selected robot replays.
+    QToolBar *replayToolBar() const { return m_replayToolBar; }
     ReplayBar *replayBar() const { return m_replayBar; }
 
     // A new robot replaying `path`, selected. False, with the reason in
@@ -68,5 +70,5 @@ private:
     QAction *m_exportMcap = nullptr;
     QToolBar *m_toolBar = nullptr;
     ReplayBar *m_replayBar = nullptr;
-    QAction *m_replayBarAction = nullptr; // shows and hides the replay bar
+    QToolBar *m_replayToolBar = nullptr;
 };

@@ -745,16 +745,23 @@ private slots:
         lesson.steps = {LessonStep{}, LessonStep{}};
         for (LessonStep &step : lesson.steps)
             step.goal.kind = LessonGoal::Kind::All; // all of no goals: met at once
-        const auto frame = [&] { return LessonFrame{window.history().newestTime(), window.session().latest(), {}, {}}; };
+        // Each step is shown for its reading time before it is done.
+        const double start = window.history().newestTime();
+        const auto frame = [&](int read) {
+            return LessonFrame{start + read * LessonRunner::kReadSeconds, window.session().latest(), {}, {}};
+        };
         runner.start(lesson, window.session().robotProfile());
-        runner.update(frame());
+        runner.update(frame(0));
+        runner.update(frame(1));
         QCOMPARE(runner.currentStep(), 1);
         QVERIFY(window.session().markers().list().isEmpty());
 
         window.startRecording(dir.filePath("lesson.oirec"));
         QTRY_VERIFY_WITH_TIMEOUT(window.session().recording().active, 10000);
         QTRY_VERIFY_WITH_TIMEOUT(window.history().newestTime() > window.session().recording().startedSeconds, 10000);
-        runner.update(frame());
+        runner.update(frame(2)); // the second step shown...
+        QVERIFY(!runner.isFinished());
+        runner.update(frame(3)); // ...and read
         QVERIFY(runner.isFinished());
         QCOMPARE(window.session().markers().list().size(), 1);
         QCOMPARE(window.session().markers().list().first().note, QString("Lesson step 2 done"));

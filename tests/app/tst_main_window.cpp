@@ -748,7 +748,8 @@ private slots:
         // Each step is shown for its reading time before it is done.
         const double start = window.history().newestTime();
         const auto frame = [&](int read) {
-            return LessonFrame{start + read * LessonRunner::kReadSeconds, window.session().latest(), {}, {}};
+            // A little over each reading time: sums of seconds are not exact.
+            return LessonFrame{start + read * (LessonRunner::kReadSeconds + 0.1), window.session().latest(), {}, {}};
         };
         runner.start(lesson, window.session().robotProfile());
         runner.update(frame(0));

@@ -86,31 +86,47 @@ bool RobotMode::observe(const oi::SensorSnapshot &frame, const QDateTime &at)
     return true;
 }
 
-QStringList RobotMode::trippedCliffs() const
+QStringList RobotMode::causeKeys() const
 {
-    const QString names[] = {tr("left"), tr("front left"), tr("front right"), tr("right")};
-    QStringList tripped;
+    if (m_reported != oi::OiMode::Passive || m_cause == Cause::None)
+        return {};
+    if (m_cause == Cause::Asked)
+        return {QStringLiteral("asked")};
+    QStringList keys{QStringLiteral("safety")};
     for (int i = 0; i < 4; ++i)
         if (m_cliffs & (1u << i))
-            tripped << names[i];
-    return tripped;
+            keys << QLatin1String(kCliffKeys[i]);
+    if (m_wheelDropLeft)
+        keys << QStringLiteral("wheel_drop_left");
+    if (m_wheelDropRight)
+        keys << QStringLiteral("wheel_drop_right");
+    if (m_wheelDropCaster)
+        keys << QStringLiteral("wheel_drop_caster");
+    if (m_charger)
+        keys << QStringLiteral("charger");
+    return keys;
 }
 
-QString RobotMode::causeWords() const
+QString RobotMode::causeWordsOf(const QStringList &keys)
 {
     QStringList parts;
-    if (m_cliffs)
-        parts << tr("cliff (%1)").arg(trippedCliffs().join(tr(", ")));
+    const QString cliffNames[] = {tr("left"), tr("front left"), tr("front right"), tr("right")};
+    QStringList cliffs;
+    for (int i = 0; i < 4; ++i)
+        if (keys.contains(QLatin1String(kCliffKeys[i])))
+            cliffs << cliffNames[i];
+    if (!cliffs.isEmpty())
+        parts << tr("cliff (%1)").arg(cliffs.join(tr(", ")));
     QStringList wheels;
-    if (m_wheelDropLeft)
+    if (keys.contains(QLatin1String("wheel_drop_left")))
         wheels << tr("left");
-    if (m_wheelDropRight)
+    if (keys.contains(QLatin1String("wheel_drop_right")))
         wheels << tr("right");
-    if (m_wheelDropCaster)
+    if (keys.contains(QLatin1String("wheel_drop_caster")))
         wheels << tr("caster");
     if (!wheels.isEmpty())
         parts << tr("wheel drop (%1)").arg(wheels.join(tr(", ")));
-    if (m_charger)
+    if (keys.contains(QLatin1String("charger")))
         parts << tr("charger");
     return parts.join(tr(" and "));
 }
@@ -126,7 +142,7 @@ QString RobotMode::reason() const
     case Cause::Asked:
         return tr("You asked for Passive at %1.").arg(time);
     case Cause::Safety: {
-        const QString words = causeWords();
+        const QString words = causeWordsOf(causeKeys());
         return words.isEmpty() ? tr("A safety stop dropped it to Passive at %1.").arg(time)
                                : tr("A %1 dropped it to Passive at %2.").arg(words, time);
     }
@@ -136,19 +152,17 @@ QString RobotMode::reason() const
 
 QString RobotMode::shortReason() const
 {
-    if (m_reported != oi::OiMode::Passive)
+    return shortReasonOf(causeKeys());
+}
+
+QString RobotMode::shortReasonOf(const QStringList &causeKeys)
+{
+    if (causeKeys.isEmpty())
         return {};
-    switch (m_cause) {
-    case Cause::None:
-        return {};
-    case Cause::Asked:
+    if (causeKeys.contains(QLatin1String("asked")))
         return tr("asked for");
-    case Cause::Safety: {
-        const QString words = causeWords();
-        return words.isEmpty() ? tr("safety stop") : words;
-    }
-    }
-    return {};
+    const QString words = causeWordsOf(causeKeys);
+    return words.isEmpty() ? tr("safety stop") : words;
 }
 
 QString RobotMode::nextStep() const

@@ -45,6 +45,16 @@ public:
     QString reason() const;
     // The same in a few words, for a fleet tile: "cliff (front left)".
     QString shortReason() const;
+    // The cause as words a program reads, for the bridge's state
+    // (`mode_cause`, docs/mqtt.md): "asked", or "safety" with any of
+    // "cliff_left", "cliff_front_left", "cliff_front_right", "cliff_right",
+    // "wheel_drop_left", "wheel_drop_right", "wheel_drop_caster", "charger".
+    // Empty when shortReason() is.
+    QStringList causeKeys() const;
+    // shortReason() of a robot whose causeKeys() are these, in this
+    // program's language (a console showing another program's robot).
+    // Words it does not know are left out.
+    static QString shortReasonOf(const QStringList &causeKeys);
     // The one step that makes it work again, to go with reason():
     // "Carry it back from the edge, then Enter Safe."
     QString nextStep() const;
@@ -57,8 +67,7 @@ public:
     QString outOfReach(const QStringList &goalPackets, bool drives) const;
 
 private:
-    QString causeWords() const;
-    QStringList trippedCliffs() const;
+    static QString causeWordsOf(const QStringList &causeKeys);
     bool causeStillShows(const oi::SensorSnapshot &frame) const;
 
     std::optional<oi::OiMode> m_reported;

@@ -3610,6 +3610,10 @@ GPL-3.0-or-later.</translation>
         <source>state: &quot;battery_percent&quot; must be a number</source>
         <translation>Zustand: „battery_percent“ muss eine Zahl sein</translation>
     </message>
+    <message>
+        <source>state: &quot;mode_cause&quot; must be a list of words</source>
+        <translation>Zustand: „mode_cause“ muss eine Liste von Wörtern sein</translation>
+    </message>
 </context>
 <context>
     <name>ReplayBar</name>

@@ -3609,6 +3609,10 @@ GPL-3.0-or-later.</translation>
         <source>state: &quot;battery_percent&quot; must be a number</source>
         <translation>estado: «battery_percent» debe ser un número</translation>
     </message>
+    <message>
+        <source>state: &quot;mode_cause&quot; must be a list of words</source>
+        <translation>estado: «mode_cause» debe ser una lista de palabras</translation>
+    </message>
 </context>
 <context>
     <name>ReplayBar</name>

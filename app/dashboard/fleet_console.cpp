@@ -4,6 +4,7 @@
 #include "fleet_view.h"
 #include "oi_text.h"
 #include "robot_fleet.h"
+#include "robot_mode.h"
 #include "robot_session.h"
 
 #include <cmath>
@@ -71,7 +72,9 @@ FleetTileValues FleetConsole::tileValues(const QString &name, const RemoteRobot 
     v.online = s.online;
     const auto mode = modeFromText(s.mode);
     v.mode = mode ? oitext::modeName(*mode) : s.mode;
-    v.modeReason = s.modeReason;
+    // In this window's language where the bridge says the cause in words
+    // a program reads; its own text otherwise.
+    v.modeReason = s.modeCause.isEmpty() ? s.modeReason : RobotMode::shortReasonOf(s.modeCause);
     if (s.batteryPercent >= 0)
         v.batteryPercent = int(std::lround(s.batteryPercent));
     const oi::SensorSnapshot &p = robot.latest;

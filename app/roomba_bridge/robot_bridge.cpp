@@ -8,6 +8,7 @@
 #include "robot_session.h"
 #include "snapshot_json.h"
 
+#include <QJsonArray>
 #include <QDateTime>
 #include <QJsonDocument>
 
@@ -168,6 +169,7 @@ QJsonObject RobotBridge::state() const
                   {"firmware", m_robot.firmwareRelease().isEmpty() ? QJsonValue() : m_robot.firmwareRelease()},
                   {"mode", m_robot.mode().reported() ? modeWord(*m_robot.mode().reported()) : QJsonValue()},
                   {"mode_reason", m_robot.mode().shortReason().isEmpty() ? QJsonValue() : m_robot.mode().shortReason()},
+                  {"mode_cause", QJsonArray::fromStringList(m_robot.mode().causeKeys())},
                   {"link", linkWord(m_robot.state())},
                   {"controller", m_lease.holder().isEmpty() ? QJsonValue() : m_lease.holder()}};
     const std::optional<double> battery = latest.batteryPercent();

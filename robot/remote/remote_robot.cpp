@@ -2,6 +2,7 @@
 #include "remote_robot.h"
 
 #include <QCoreApplication>
+#include <QJsonArray>
 #include <QJsonValue>
 
 namespace {
@@ -38,6 +39,21 @@ std::optional<RemoteRobotState> remoteStateFromJson(const QJsonObject &object, Q
         || !readString(object, "mode_reason", s.modeReason, error) || !readString(object, "link", s.link, error)
         || !readString(object, "controller", s.controller, error))
         return std::nullopt;
+    const QJsonValue cause = object.value(QLatin1String("mode_cause"));
+    if (cause.isArray()) {
+        for (const QJsonValue &word : cause.toArray()) {
+            if (!word.isString()) {
+                if (error)
+                    *error = QCoreApplication::translate("RemoteRobot", "state: \"mode_cause\" must be a list of words");
+                return std::nullopt;
+            }
+            s.modeCause << word.toString();
+        }
+    } else if (!cause.isUndefined() && !cause.isNull()) {
+        if (error)
+            *error = QCoreApplication::translate("RemoteRobot", "state: \"mode_cause\" must be a list of words");
+        return std::nullopt;
+    }
     const QJsonValue battery = object.value(QLatin1String("battery_percent"));
     if (battery.isDouble()) {
         s.batteryPercent = battery.toDouble();

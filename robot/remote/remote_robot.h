@@ -8,6 +8,7 @@
 #include <QByteArray>
 #include <QJsonObject>
 #include <QString>
+#include <QStringList>
 
 #include <optional>
 
@@ -18,7 +19,8 @@ struct RemoteRobotState {
     QString profileKey;  // "create2", ...; empty until the bridge knows
     QString firmware;
     QString mode;        // "off", "passive", "safe", "full"
-    QString modeReason;  // why it is in Passive, in a few words; empty: nothing to explain
+    QString modeReason;  // why it is in Passive, in a few words (the bridge's language); empty: nothing to explain
+    QStringList modeCause; // the same as words a program reads (RobotMode::causeKeys); empty: not said
     double batteryPercent = -1; // -1: not known
     QString link;        // "streaming", "connecting", "stale", "lost"
     QString controller;  // empty: nobody holds control

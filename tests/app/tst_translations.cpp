@@ -3,6 +3,7 @@
 // cover every name in the Open Interface tables, and are embedded.
 #include "language_switcher.h"
 #include "ir_character.h"
+#include "robot_mode.h"
 #include "robot_profile.h"
 
 #include <QCoreApplication>
@@ -150,6 +151,18 @@ private slots:
                  QString());
         QCOMPARE(englishRun("Digit LEDs Raw (163) and Digit LEDs ASCII (164)", "Digit LEDs Raw (163) und Digit LEDs ASCII (164)"),
                  QString());
+    }
+
+    // A robot beside a bridge says why it stopped as words a program reads;
+    // the window shows them in its own language, never the bridge's English.
+    void aBridgesCauseIsShownInTheWindowsLanguage()
+    {
+        QTranslator german;
+        QVERIFY(german.load(":/i18n/roomba_dashboard_de"));
+        QCoreApplication::installTranslator(&german);
+        const QString said = RobotMode::shortReasonOf({"safety", "cliff_front_left"});
+        QCoreApplication::removeTranslator(&german);
+        QCOMPARE(said, QString("Abgrund (vorne links)"));
     }
 
     // Every packet, bit and remote-button name of every profile is translated

@@ -397,6 +397,8 @@ private slots:
         rig.recording.mode = int(oi::OiMode::Passive);
         QTRY_COMPARE(watcher.lastState(QStringLiteral("r1")).value(QLatin1String("mode_reason")).toString(),
                      QStringLiteral("cliff (left)"));
+        QCOMPARE(watcher.lastState(QStringLiteral("r1")).value(QLatin1String("mode_cause")).toArray(),
+                 QJsonArray({"safety", "cliff_left"}));
         QCOMPARE(watcher.lastState(QStringLiteral("r1")).value(QLatin1String("mode")).toString(),
                  QStringLiteral("passive"));
         rig.recording.cliffLeft = false;

@@ -58,6 +58,9 @@ private slots:
         QTest::newRow("online as text") << QByteArray(R"({"online":"yes"})") << false;
         QTest::newRow("battery as text") << QByteArray(R"({"online":true,"battery_percent":"full"})") << false;
         QTest::newRow("mode as number") << QByteArray(R"({"online":true,"mode":2})") << false;
+        QTest::newRow("cause") << QByteArray(R"({"online":true,"mode":"passive","mode_cause":["safety","cliff_left"]})") << true;
+        QTest::newRow("cause as text") << QByteArray(R"({"online":true,"mode_cause":"cliff"})") << false;
+        QTest::newRow("cause with a number") << QByteArray(R"({"online":true,"mode_cause":["safety",3]})") << false;
     }
     void stateMessages()
     {

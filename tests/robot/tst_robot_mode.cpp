@@ -80,6 +80,19 @@ private slots:
         QCOMPARE(mode.reason(), reason);
         QCOMPARE(mode.shortReason(), shortReason);
         QCOMPARE(mode.nextStep(), nextStep);
+        // Said to another program as words it reads, and read back the same.
+        QCOMPARE(mode.causeKeys().first(), QString("safety"));
+        QCOMPARE(RobotMode::shortReasonOf(mode.causeKeys()), shortReason);
+    }
+
+    // A console shows another program's robot in its own language.
+    void causeKeysReadInThisProgramsLanguage()
+    {
+        QCOMPARE(RobotMode::shortReasonOf({"safety", "cliff_front_left", "wheel_drop_caster"}),
+                 QString("cliff (front left) and wheel drop (caster)"));
+        QCOMPARE(RobotMode::shortReasonOf({"asked"}), QString("asked for"));
+        QCOMPARE(RobotMode::shortReasonOf({"safety", "a word from a newer bridge"}), QString("safety stop"));
+        QCOMPARE(RobotMode::shortReasonOf({}), QString());
     }
 
     // The reason lasts while its cause shows, and never outlives the mode it explains.

@@ -3484,6 +3484,10 @@ GPL-3.0-or-later.</translation>
         <source>unreadable marker</source>
         <translation>unlesbare Markierung</translation>
     </message>
+    <message>
+        <source>unreadable true pose</source>
+        <translation>unlesbare wahre Pose</translation>
+    </message>
 </context>
 <context>
     <name>RecordingActions</name>

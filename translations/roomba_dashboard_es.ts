@@ -3483,6 +3483,10 @@ GPL-3.0-or-later.</translation>
         <source>unreadable marker</source>
         <translation>marca ilegible</translation>
     </message>
+    <message>
+        <source>unreadable true pose</source>
+        <translation>pose real ilegible</translation>
+    </message>
 </context>
 <context>
     <name>RecordingActions</name>

@@ -25,6 +25,7 @@ constexpr int kMaxHeaderBytes = 1 << 20;
 // kind (1) + time in microseconds (8) + length (2), then the payload, then CRC (2).
 constexpr int kRecordHeadSize = 11;
 constexpr int kCrcSize = 2;
+constexpr int kTruePoseSize = 3 * 8; // x, y, heading as doubles
 
 template <typename T>
 void appendLittleEndian(QByteArray &out, T value)
@@ -135,6 +136,16 @@ bool RecordingWriter::appendStreamStarted(oi::ProfileId profile, int baud, const
 bool RecordingWriter::appendMarkerEdit(const MarkerEdit &edit)
 {
     return append(recording::RecordKind::Marker, edit.toJson());
+}
+
+bool RecordingWriter::appendTruePose(const oi::Pose &pose)
+{
+    QByteArray payload;
+    payload.reserve(kTruePoseSize);
+    appendLittleEndian<double>(payload, pose.xMm);
+    appendLittleEndian<double>(payload, pose.yMm);
+    appendLittleEndian<double>(payload, pose.thetaRad);
+    return append(recording::RecordKind::TruePose, payload);
 }
 
 bool RecordingWriter::flush()
@@ -298,6 +309,15 @@ std::optional<Recording> Recording::parse(const QByteArray &data, const QString 
                 applyMarkerEdit(r.m_markers, *edit); // an edit of a marker that is gone changes nothing
             break;
         }
+        case recording::RecordKind::TruePose:
+            if (length != kTruePoseSize) {
+                damaged(QCoreApplication::translate("Recording", "unreadable true pose"));
+                break;
+            }
+            r.m_truePoses.push_back({timeUs,
+                                     {readLittleEndian<double>(payload), readLittleEndian<double>(payload + 8),
+                                      readLittleEndian<double>(payload + 16)}});
+            break;
         default:
             damaged(QCoreApplication::translate("Recording", "unknown record type 0x%1").arg(static_cast<quint8>(head[0]), 2, 16, QLatin1Char('0')));
             break;

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "firmware_banner.h"
+#include "odometry.h"
 #include "recording_markers.h"
 #include "robot_profile.h"
 #include "sensor_snapshot.h"
@@ -26,7 +27,7 @@ namespace oilink {
 namespace recording {
 inline constexpr char kMagic[] = "OIRECORD"; // 8 bytes, no terminator in the file
 inline constexpr int kMagicSize = 8;
-inline constexpr quint16 kVersion = 2;       // written; 2 added markers
+inline constexpr quint16 kVersion = 3;       // written; 2 added markers, 3 the true pose
 inline constexpr quint16 kOldestVersion = 1; // still read
 inline constexpr int kMaxPayload = 0xFFFF;
 inline constexpr int kFlushIntervalMs = 1000;
@@ -37,6 +38,7 @@ enum class RecordKind : quint8 {
     Sent = 'T',          // bytes to the robot
     StreamStarted = 'S', // JSON: {"profile": "create2", "baud": 115200, "packets": [..]}
     Marker = 'M',        // JSON: one MarkerEdit (version 2)
+    TruePose = 'P',      // x and y in mm, heading in rad: three little-endian doubles (version 3)
 };
 } // namespace recording
 
@@ -58,6 +60,8 @@ public:
     bool append(recording::RecordKind kind, const QByteArray &bytes);
     bool appendStreamStarted(oi::ProfileId profile, int baud, const QList<int> &packets);
     bool appendMarkerEdit(const MarkerEdit &edit);
+    // Where a virtual robot truly is now, in its room (the map's coordinates).
+    bool appendTruePose(const oi::Pose &pose);
     // Pushes what is buffered to the operating system.
     bool flush();
     void close();
@@ -96,6 +100,11 @@ public:
         qint64 timeUs = 0; // of the chunk holding the frame's last byte
         qsizetype end = 0; // offset in receivedBytes() just after the frame
     };
+    // Where a virtual robot truly was (a `P` record); travelledMm is unused.
+    struct TruePose {
+        qint64 timeUs = 0;
+        oi::Pose pose;
+    };
     struct StreamInfo {
         const oi::RobotProfile *profile = nullptr;
         int baud = 0;
@@ -127,11 +136,13 @@ public:
     const std::optional<RecordingDamage> &damage() const { return m_damage; }
     // The markers after every edit the file holds, in time order.
     const QList<RecordingMarker> &markers() const { return m_markers; }
+    // The virtual robot's true poses, in file order; empty for a real robot.
+    const std::vector<TruePose> &truePoses() const { return m_truePoses; }
 
     // Adds `edits` to the recording at `path` (a replay's markers changing):
     // the whole file is written again through a QSaveFile, with the edits
     // as `M` records where reading stops (the end, or before a damaged
-    // tail, which is kept). A version-1 file becomes version 2. False with
+    // tail, which is kept). An older version becomes the current one. False with
     // `error` set when the file cannot be read or written; it is unchanged then.
     static bool saveMarkerEdits(const QString &path, const QList<MarkerEdit> &edits, QString *error);
 
@@ -165,6 +176,7 @@ private:
     std::optional<RecordingDamage> m_damage;
     qsizetype m_readableEnd = 0; // in the file: where reading stopped
     QList<RecordingMarker> m_markers;
+    std::vector<TruePose> m_truePoses;
 };
 
 } // namespace oilink

@@ -474,6 +474,10 @@ void RobotLink::onFrame(const oi::SensorSnapshot &frame)
         m_rearmMs = kNoDataAfterMs;
         setState(LinkState::Streaming);
     }
+    // A virtual robot's true place goes with each frame, for the exports.
+    if (m_recorder && m_transport)
+        if (const std::optional<oi::Pose> pose = m_transport->truePose(); pose && !m_recorder->appendTruePose(*pose))
+            stopRecording();
     emit snapshot(frame, m_readSeconds);
 }
 

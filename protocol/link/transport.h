@@ -2,6 +2,7 @@
 #pragma once
 
 #include "link_settings.h"
+#include "odometry.h"
 
 #include <QByteArray>
 #include <QObject>
@@ -56,6 +57,9 @@ public:
     // Which robot is at the other end, where the transport knows it (the
     // in-process virtual robot); nullopt where only a probe can tell.
     virtual std::optional<oi::ProfileId> knownRobot() const { return std::nullopt; }
+    // Where the robot truly is, where the transport knows it (the in-process
+    // virtual robot, in its room's coordinates); nullopt for a real robot.
+    virtual std::optional<oi::Pose> truePose() const { return std::nullopt; }
 
 signals:
     void opened();

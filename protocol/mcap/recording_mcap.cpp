@@ -193,8 +193,10 @@ public:
         m_telemetry = m_writer.addChannel(
             m_writer.addSchema(telemetryTitle, jsonSchema, telemetrySchema(m_recording, telemetryTitle)),
             mcap_topics::kTelemetry, json, robot);
-        m_pose = m_writer.addChannel(m_writer.addSchema("foxglove.PoseInFrame", jsonSchema, poseInFrameSchema()),
-                                     mcap_topics::kPose, json);
+        const quint16 poseInFrame = m_writer.addSchema("foxglove.PoseInFrame", jsonSchema, poseInFrameSchema());
+        m_pose = m_writer.addChannel(poseInFrame, mcap_topics::kPose, json);
+        const std::vector<Recording::TruePose> &truePoses = m_recording.truePoses();
+        m_truePose = truePoses.empty() ? 0 : m_writer.addChannel(poseInFrame, mcap_topics::kTruePose, json);
         m_transform = m_writer.addChannel(
             m_writer.addSchema("foxglove.FrameTransform", jsonSchema, frameTransformSchema()),
             mcap_topics::kTransform, json);
@@ -222,6 +224,7 @@ public:
             odometry.setCorrections(firmware->corrections);
         std::optional<oi::SensorSnapshot> before;
         qsizetype marker = 0;
+        std::size_t truePose = 0;
         bool ok = true;
         m_recording.forEachSnapshot([&](qint64 timeUs, const oi::SensorSnapshot &frame) {
             if (!ok)
@@ -229,6 +232,8 @@ public:
             ok = writeBytesUpTo(timeUs);
             for (; ok && marker < marks.size() && marks[marker].timeUs <= timeUs; ++marker)
                 ok = writeMarker(markers, marks[marker]);
+            for (; ok && truePose < truePoses.size() && truePoses[truePose].timeUs <= timeUs; ++truePose)
+                ok = writeTruePose(truePoses[truePose]);
             const quint64 ns = timeNs(timeUs);
             // As the CSV and the dashboard show it: corrected for the firmware.
             oi::SensorSnapshot shown = frame;
@@ -244,6 +249,8 @@ public:
         ok = ok && writeBytesUpTo(std::numeric_limits<qint64>::max());
         for (; ok && marker < marks.size(); ++marker)
             ok = writeMarker(markers, marks[marker]);
+        for (; ok && truePose < truePoses.size(); ++truePose)
+            ok = writeTruePose(truePoses[truePose]);
         return ok;
     }
 
@@ -280,14 +287,25 @@ private:
         }
     }
 
+    static QByteArray poseInFrameJson(quint64 ns, const char *frame, const oi::Pose &pose)
+    {
+        return "{\"timestamp\":" + timeJson(ns) + ",\"frame_id\":\"" + frame + "\",\"pose\":{\"position\":" +
+               positionJson(pose) + ",\"orientation\":" + orientationJson(pose) + "}}";
+    }
+
+    // Where the virtual robot truly was, in the room's frame.
+    bool writeTruePose(const Recording::TruePose &p)
+    {
+        const quint64 ns = timeNs(p.timeUs);
+        return m_writer.writeMessage(m_truePose, ns, poseInFrameJson(ns, "room", p.pose));
+    }
+
     bool writePose(quint64 ns, const oi::Pose &pose)
     {
         const QByteArray stamp = timeJson(ns);
         const QByteArray position = positionJson(pose);
         const QByteArray orientation = orientationJson(pose);
-        return m_writer.writeMessage(m_pose, ns,
-                                     "{\"timestamp\":" + stamp + ",\"frame_id\":\"odom\",\"pose\":{\"position\":" +
-                                         position + ",\"orientation\":" + orientation + "}}") &&
+        return m_writer.writeMessage(m_pose, ns, poseInFrameJson(ns, "odom", pose)) &&
                m_writer.writeMessage(m_transform, ns,
                                      "{\"timestamp\":" + stamp +
                                          ",\"parent_frame_id\":\"odom\",\"child_frame_id\":\"base_link\","
@@ -298,7 +316,7 @@ private:
     const Recording &m_recording;
     mcap::Writer &m_writer;
     quint64 m_startNs = 0;
-    quint16 m_telemetry = 0, m_pose = 0, m_transform = 0, m_received = 0, m_sent = 0, m_events = 0;
+    quint16 m_telemetry = 0, m_pose = 0, m_truePose = 0, m_transform = 0, m_received = 0, m_sent = 0, m_events = 0;
     std::size_t m_nextReceived = 0, m_nextSent = 0;
 };
 

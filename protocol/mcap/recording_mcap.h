@@ -12,8 +12,9 @@
 // schemas and encodings are listed in docs/mcap.md.
 namespace oilink {
 
-// The recording's markers go to /roomba/markers as log messages; the
-// channel exists only when there are markers.
+// The recording's markers go to /roomba/markers as log messages, and a
+// virtual robot's true poses to /roomba/true_pose; each channel exists only
+// when the recording holds such records.
 struct McapExportOptions {
     mcap::Compression compression = mcap::Compression::Zstd;
 };
@@ -22,6 +23,7 @@ struct McapExportOptions {
 namespace mcap_topics {
 inline constexpr char kTelemetry[] = "/roomba/telemetry";
 inline constexpr char kPose[] = "/roomba/pose";
+inline constexpr char kTruePose[] = "/roomba/true_pose"; // only from a virtual robot's recording
 inline constexpr char kTransform[] = "/tf";
 inline constexpr char kReceived[] = "/roomba/bytes_received";
 inline constexpr char kSent[] = "/roomba/bytes_sent";

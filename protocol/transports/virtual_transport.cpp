@@ -17,6 +17,12 @@ VirtualTransport::VirtualTransport(oi::ProfileId robot, std::uint32_t seed, std:
 
 VirtualTransport::~VirtualTransport() = default;
 
+std::optional<oi::Pose> VirtualTransport::truePose() const
+{
+    const std::optional<RobotInRoom> where = m_room->robot(m_id);
+    return where ? std::optional(where->pose) : std::nullopt;
+}
+
 QString VirtualTransport::describe() const
 {
     return oilink::LinkSettings::virtualRobotOf(m_profile, std::nullopt).describe();

@@ -35,6 +35,7 @@ public:
     void flush(int) override {}
     QString describe() const override;
     std::optional<oi::ProfileId> knownRobot() const override { return m_profile; }
+    std::optional<oi::Pose> truePose() const override;
 
     // The robot's real wheels, from the next open() (LinkSettings::virtualWheels).
     void setWheels(const oi::WheelGeometry &wheels) { m_wheels = wheels; }

@@ -8,6 +8,7 @@
 #include "virtual_transport.h"
 #include "real_time_robot.h"
 
+#include "oirec_records.h" // tests/common
 #include "stream_parser.h"
 
 #include <QFile>
@@ -132,7 +133,7 @@ private slots:
 
         const Recording r = load(path);
         QCOMPARE(r.header().value("link").toString(), QString("test"));
-        QCOMPARE(r.header().value("version").toInt(), 2);
+        QCOMPARE(r.header().value("version").toInt(), int(oilink::recording::kVersion));
         QCOMPARE(r.robotProfile().id, oi::ProfileId::Create2);
         QCOMPARE(r.stream().baud, 115200);
         QCOMPARE(r.stream().packets, QList<int>{7});
@@ -332,8 +333,8 @@ private slots:
         QTest::addColumn<QString>("reason");
         QTest::newRow("empty") << QByteArray() << "not a Roomba Dashboard recording";
         QTest::newRow("text") << QByteArray("time,wall\n0,1\n") << "not a Roomba Dashboard recording";
-        QByteArray v3("OIRECORD\x03\x00\x02\x00\x00\x00{}", 16);
-        QTest::newRow("newer version") << v3 << "version 3";
+        QByteArray v4("OIRECORD\x04\x00\x02\x00\x00\x00{}", 16);
+        QTest::newRow("newer version") << v4 << "recording format version 4; this program reads versions 1 to 3";
         QByteArray cutHeader("OIRECORD\x01\x00\xFF\x00\x00\x00{", 15);
         QTest::newRow("truncated header") << cutHeader << "header is truncated";
         QByteArray badJson("OIRECORD\x01\x00\x02\x00\x00\x00{x", 16);
@@ -427,7 +428,7 @@ private slots:
         QVERIFY2(Recording::saveMarkerEdits(path, {MarkerEdit::add({1, 500000, "half a second"})}, &error),
                  qPrintable(error));
         const QByteArray after = fileBytes(path);
-        QCOMPARE(qFromLittleEndian<quint16>(after.constData() + 8), quint16(2));
+        QCOMPARE(qFromLittleEndian<quint16>(after.constData() + 8), oilink::recording::kVersion);
         const Recording marked = load(path);
         QVERIFY(!marked.damage());
         QCOMPARE(marked.receivedBytes(), r.receivedBytes());
@@ -508,6 +509,73 @@ private slots:
         const Recording r = load(path);
         QVERIFY(r.damage());
         QCOMPARE(r.damage()->reason, QString("unreadable marker"));
+    }
+
+    // A file of the format before true poses (version 2, with a marker) opens whole.
+    void versionTwoRecordingsStillOpen()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath("v2.oirec");
+        writeFile(path, oirecHeader(2, R"({"format":"Roomba Dashboard recording","version":2})")
+                            + oirecRecord('S', 0, R"({"profile":"create2","baud":115200,"packets":[7]})")
+                            + oirecRecord('R', 15000, QByteArray("\x13\x02\x07\x03\xE1", 5))
+                            + oirecRecord('M', 15000, R"({"op":"add","id":1,"time_us":0,"note":"go"})"));
+        const Recording r = load(path);
+        QVERIFY(!r.damage());
+        QCOMPARE(r.frames().size(), std::size_t(1));
+        QCOMPARE(r.markers(), (QList<RecordingMarker>{{1, 0, "go"}}));
+        QVERIFY(r.truePoses().empty());
+    }
+
+    // Each frame of a virtual robot is followed by where the robot truly is
+    // in its room: the pose the room holds when the link hands the frame on.
+    void virtualRobotRecordsItsTruePose()
+    {
+        auto room = std::make_shared<sim::Room>(sim::World::classroom());
+        const sim::RobotId id = room->placeNewRobot();
+        QTemporaryDir dir;
+        const QString path = dir.filePath("true.oirec");
+        RobotLink link;
+        link.setTransportFactory(transports::transportFactory(room, id));
+        QSignalSpy snapshots(&link, &RobotLink::snapshot);
+        link.open(LinkSettings::virtualRobotOf(oi::ProfileId::Create2, oi::ProfileId::Create2));
+        QVERIFY(snapshots.wait(kTimeoutMs));
+        link.startRecording(path);
+        std::vector<oi::Pose> seen;
+        connect(&link, &RobotLink::snapshot, this, [&] { seen.push_back(room->robot(id)->pose); });
+        link.send(QByteArray("\x83\x89\x00\xC8\x80\x00", 6)); // Safe, straight ahead at 200 mm/s
+        QTRY_VERIFY_WITH_TIMEOUT(seen.size() >= 30, kTimeoutMs);
+        link.close();
+
+        const Recording r = load(path);
+        QVERIFY(!r.damage());
+        QCOMPARE(r.truePoses().size(), seen.size());
+        for (std::size_t i = 0; i < seen.size(); ++i) {
+            QCOMPARE(r.truePoses()[i].pose.xMm, seen[i].xMm);
+            QCOMPARE(r.truePoses()[i].pose.yMm, seen[i].yMm);
+            QCOMPARE(r.truePoses()[i].pose.thetaRad, seen[i].thetaRad);
+        }
+        QVERIFY2(std::hypot(seen.back().xMm - seen.front().xMm, seen.back().yMm - seen.front().yMm) > 20,
+                 "the robot did not move");
+        QVERIFY(r.truePoses().front().timeUs >= r.frames().front().timeUs);
+        QVERIFY(r.truePoses().back().timeUs <= r.durationUs());
+    }
+
+    void truePoseOfTheWrongSizeIsDamage()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath("p.oirec");
+        RecordingWriter writer;
+        QVERIFY(writer.open(path, {}));
+        QVERIFY(writer.appendStreamStarted(oi::ProfileId::Create2, 115200, {7}));
+        QVERIFY(writer.appendTruePose({1.5, -2.25, 0.5}));
+        QVERIFY(writer.append(RecordKind::TruePose, QByteArray(16, 0)));
+        writer.close();
+        const Recording r = load(path);
+        QCOMPARE(r.truePoses().size(), std::size_t(1));
+        QCOMPARE(r.truePoses()[0].pose.yMm, -2.25);
+        QVERIFY(r.damage());
+        QCOMPARE(r.damage()->reason, QString("unreadable true pose"));
     }
 
     // A file that cannot be read is left as it was, with the reason.

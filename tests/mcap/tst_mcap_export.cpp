@@ -226,10 +226,12 @@ private slots:
         // Channels and schemas by name; messages counted against the recording.
         const QJsonObject channels = read.value("channels").toObject();
         QCOMPARE(channels.keys(), (QStringList{"/roomba/bytes_received", "/roomba/bytes_sent", "/roomba/events",
-                                               "/roomba/markers", "/roomba/pose", "/roomba/telemetry", "/tf"}));
+                                               "/roomba/markers", "/roomba/pose", "/roomba/telemetry",
+                                               "/roomba/true_pose", "/tf"}));
         const auto channel = [&](const char *topic) { return channels.value(topic).toObject(); };
         QCOMPARE(channel("/roomba/telemetry").value("schema").toString(), QString("roomba.Telemetry.create2"));
         QCOMPARE(channel("/roomba/pose").value("schema").toString(), QString("foxglove.PoseInFrame"));
+        QCOMPARE(channel("/roomba/true_pose").value("schema").toString(), QString("foxglove.PoseInFrame"));
         QCOMPARE(channel("/tf").value("schema").toString(), QString("foxglove.FrameTransform"));
         QCOMPARE(channel("/roomba/events").value("schema").toString(), QString("foxglove.Log"));
         QCOMPARE(channel("/roomba/bytes_sent").value("schema").toString(), QString("roomba.Bytes"));
@@ -242,6 +244,17 @@ private slots:
         QCOMPARE(channel("/roomba/telemetry").value("count").toInt(), frames);
         QCOMPARE(channel("/roomba/pose").value("count").toInt(), frames);
         QCOMPARE(channel("/tf").value("count").toInt(), frames);
+        // The virtual robot's true pose: one message per P record, in the room's frame, in metres.
+        QVERIFY(recording.truePoses().size() >= 40);
+        QCOMPARE(channel("/roomba/true_pose").value("count").toInt(), int(recording.truePoses().size()));
+        const QJsonObject lastTrue = channel("/roomba/true_pose").value("last").toObject();
+        QCOMPARE(lastTrue.value("frame_id").toString(), QString("room"));
+        const QJsonObject truePosition = lastTrue.value("pose").toObject().value("position").toObject();
+        QVERIFY(std::abs(truePosition.value("x").toDouble() - recording.truePoses().back().pose.xMm / 1000) < 1e-5);
+        QVERIFY(std::abs(truePosition.value("y").toDouble() - recording.truePoses().back().pose.yMm / 1000) < 1e-5);
+        QCOMPARE(channel("/roomba/true_pose").value("lastTime").toString().toULongLong() -
+                     channel("/roomba/true_pose").value("firstTime").toString().toULongLong(),
+                 quint64(recording.truePoses().back().timeUs - recording.truePoses().front().timeUs) * 1000);
         QCOMPARE(channel("/roomba/bytes_received").value("count").toInt(), int(recording.chunks().size()));
         QCOMPARE(channel("/roomba/bytes_sent").value("count").toInt(), int(recording.sentChunks().size()));
         QVERIFY(recording.sentChunks().size() >= 2);
@@ -286,7 +299,7 @@ private slots:
         }
         QCOMPARE(st.value("messageCount").toInt(), counted);
         QCOMPARE(quint64(counted), written.messageCount);
-        QCOMPARE(st.value("channelCount").toInt(), 7);
+        QCOMPARE(st.value("channelCount").toInt(), 8);
         QCOMPARE(st.value("schemaCount").toInt(), 5);
         QCOMPARE(st.value("chunkCount").toInt(), read.value("chunkIndexes").toInt());
         QCOMPARE(st.value("chunkCount").toInt(), read.value("streamed").toObject().value("Chunk").toInt());
@@ -367,6 +380,19 @@ private slots:
         QCOMPARE(bump.value("level").toInt(), 3); // WARNING
         QCOMPARE(bump.value("timestamp").toObject().value("sec").toInteger(), qint64(kSyntheticStartNs / 1000000000));
         QCOMPARE(bump.value("timestamp").toObject().value("nsec").toInt(), 4 * 15'000'000);
+    }
+
+    // A recording without true poses (a real robot) has no true-pose channel.
+    void noTruePoseChannelWithoutTruePoses()
+    {
+        const QString in = m_dir.filePath("real.oirec");
+        QVERIFY(writeFile(in, syntheticRecording(5, [](int) { return std::pair{0, 1}; })));
+        QVERIFY(load(in).truePoses().empty());
+        const QString out = m_dir.filePath("real.mcap");
+        QCOMPARE(oilink::exportRecordingMcap(load(in), out, {mcap::Compression::None}), QString());
+        const QMap<QString, quint16> channels = channelsOf(fileBytes(out));
+        QVERIFY(channels.contains(oilink::mcap_topics::kPose));
+        QVERIFY(!channels.contains(oilink::mcap_topics::kTruePose));
     }
 
     void damagedRecordingExportsUpToTheDamage()

@@ -201,6 +201,8 @@ void SelectedRobotView::showMode()
     v.drivePad->setReason(reason.isEmpty() ? QString() : reason + ' ' + mode.nextStep());
     v.projector->setMode(mode, whyNoCommands(session()).isEmpty());
     v.songs->setPlayBlocked(mode.whyNot(oi::Command::Play));
+    v.leds->setMode(mode);
+    v.motors->setMode(mode);
     v.script->setMode(mode);
 }
 

@@ -479,6 +479,13 @@ private slots:
             QVERIFY(image.save(path));
             qInfo("screenshot: %s", qPrintable(path));
         }
+        // In Passive: all but Buttons greyed.
+        usePanel(oi::ProfileId::Create2);
+        m_panel->setMode(reportedMode(m_panel->robotProfile(), oi::OiMode::Passive));
+        m_panel->adjustSize();
+        const QString passive = QDir(dir).filePath("motors_panel_create2_passive.png");
+        QVERIFY(m_panel->grab().save(passive));
+        qInfo("screenshot: %s", qPrintable(passive));
     }
 };
 

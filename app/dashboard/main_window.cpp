@@ -225,15 +225,15 @@ void MainWindow::onRobotAdded(RobotSession *robot)
 void MainWindow::wireInputs()
 {
     // Every user action goes to the selected robot's model.
-    const auto send = [this](const QByteArray &bytes) { session().send(bytes); };
     const auto sendTyped = [this](const std::vector<oi::OiCommand> &commands) { session().send(commands); };
     connect(m_inspector, &ByteInspector::sendRequested, this, sendTyped);
     connect(m_modePanel, &ModePanel::modeRequested, this,
             [this](oi::Command command, int demo) { session().requestMode(command, demo); });
-    connect(m_songs, &SongComposer::sendRequested, this, send);
+    connect(m_songs, &SongComposer::sendRequested, this, sendTyped);
     connect(m_leds, &LedEditor::sendRequested, this, sendTyped);
     connect(m_schedule, &ScheduleEditor::sendRequested, this, sendTyped);
-    connect(m_script, &ScriptEditor::sendRequested, this, send);
+    connect(m_script, &ScriptEditor::sendRequested, this, sendTyped);
+    connect(m_script, &ScriptEditor::safeRequested, this, [this] { session().requestMode(oi::Command::Safe); });
     connect(m_motors, &MotorsPanel::sendRequested, this, sendTyped);
     connect(m_script, &ScriptEditor::showScriptRequested, this, [this] { session().showScript(); });
     // A hand in the room: the map asks, the room moves the robot.

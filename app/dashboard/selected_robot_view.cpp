@@ -94,7 +94,6 @@ void SelectedRobotView::show(RobotSession *robot)
         connect(robot, &RobotSession::scriptShown, v.script, &ScriptEditor::showScriptReply),
         connect(robot, &RobotSession::scriptFailed, v.script, &ScriptEditor::showScriptFailed),
         connect(teleop, &TeleopController::passiveChanged, v.drivePad, &DrivePad::setPassive),
-        connect(teleop, &TeleopController::passiveChanged, v.script, &ScriptEditor::setPassive),
         connect(teleop, &TeleopController::motionStopped, this, [v] {
             v.drivePad->resetToCentre();
             v.keyboard->releaseAll();
@@ -120,7 +119,6 @@ void SelectedRobotView::show(RobotSession *robot)
         chunk.sent ? v.inspector->appendTx(chunk.bytes, chunk.msecs) : v.inspector->appendRx(chunk.bytes, chunk.msecs);
     showFirmware(*robot);
     v.drivePad->setPassive(teleop->isPassive());
-    v.script->setPassive(teleop->isPassive());
     v.drivePad->resetToCentre();
     v.keyboard->releaseAll();
 
@@ -203,6 +201,9 @@ void SelectedRobotView::showMode()
     v.drivePad->setReason(reason.isEmpty() ? QString() : reason + ' ' + mode.nextStep());
     v.projector->setMode(mode, whyNoCommands(session()).isEmpty());
     v.songs->setPlayBlocked(mode.whyNot(oi::Command::Play));
+    v.leds->setMode(mode);
+    v.motors->setMode(mode);
+    v.script->setMode(mode);
 }
 
 void SelectedRobotView::showState(oilink::LinkState state)

@@ -7,8 +7,10 @@
 #include "connection_next_steps.h"
 #include "doctor_details.h"
 #include "drive_pad.h"
+#include "led_editor.h"
 #include "main_window.h"
 #include "mode_panel.h"
+#include "motors_panel.h"
 #include "projector_view.h"
 #include "recording_transport.h"
 #include "robot_list.h"
@@ -19,6 +21,7 @@
 #include "tcp_robot_server.h"
 
 #include <QDockWidget>
+#include <QGroupBox>
 #include <QLabel>
 #include <QRegularExpression>
 #include <QLineEdit>
@@ -381,13 +384,23 @@ private slots:
             window.refreshDisplay();
         };
 
+        // The Motors and LEDs docks follow the selected robot's mode: what
+        // a robot in Passive ignores is disabled with the reason.
+        auto *vacuum = window.findChild<MotorsPanel *>()->findChild<QGroupBox *>("motorsGroup");
+        auto *applyLeds = window.findChild<LedEditor *>()->findChild<QPushButton *>("apply");
+
         // A Safe robot, then a Passive one that never moved: its own mode, no reason.
         show(two);
         QCOMPARE(modeLabel(), QString("Mode: Safe"));
+        QVERIFY(vacuum->isEnabled());
+        QVERIFY(!applyLeds->toolTip().contains("Enter Safe first"));
         show(one);
         QCOMPARE(modeLabel(), QString("Mode: Passive"));
         QCOMPARE(window.modePanel()->safetyMessage(), QString());
         QCOMPARE(window.drivePad()->passiveText(), QString("Passive mode: enter Safe to drive"));
+        QVERIFY(!vacuum->isEnabled());
+        QVERIFY2(vacuum->toolTip().endsWith("Enter Safe first."), qPrintable(vacuum->toolTip()));
+        QVERIFY2(applyLeds->toolTip().endsWith("Enter Safe first."), qPrintable(applyLeds->toolTip()));
 
         // Robot 1 in Safe, driven by bytes at the stage edge: a cliff drops it to Passive.
         window.room()->moveRobot(window.roomRobot(), {2600, -300, -M_PI / 2, 0});

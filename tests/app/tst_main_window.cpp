@@ -415,8 +415,8 @@ private slots:
         QVERIFY(window.grab().save(QDir(dir).filePath("lesson_out_of_reach.png")));
     }
 
-    // A Create script uploaded to the virtual robot runs with its wait, and
-    // Show Script reads back what was sent.
+    // A Create script uploaded to the virtual robot runs with its wait, in
+    // Safe asked for it from Passive, and Show Script reads back what was sent.
     void createScriptOnTheVirtualRobot()
     {
         MainWindow window;
@@ -431,11 +431,11 @@ private slots:
         editor->reassemble();
         QVERIFY2(editor->errorText().isEmpty(), qPrintable(editor->errorText()));
 
-        const oi::EncodeResult safe = oi::CommandEncoder(oi::profile(oi::ProfileId::Create1)).safe();
-        QVERIFY(window.session().send(QByteArray(1, char(safe->front()))));
-        QTRY_COMPARE_WITH_TIMEOUT(window.session().latest().oiMode(), oi::OiMode::Safe, 10000);
+        // Played in Passive: the editor asks the session for Safe first.
+        QTRY_COMPARE_WITH_TIMEOUT(window.session().mode().reported(), std::optional(oi::OiMode::Passive), 10000);
         QTest::mouseClick(editor->button("upload"), Qt::LeftButton);
         QTest::mouseClick(editor->button("play"), Qt::LeftButton);
+        QCOMPARE(window.session().mode().lastAsked(), std::optional(oi::Command::Safe));
         // It drives, then the wait ends and it stops.
         QTRY_COMPARE_WITH_TIMEOUT(window.session().latest().requestedVelocity(), 200, 10000);
         QTRY_COMPARE_WITH_TIMEOUT(window.session().latest().requestedVelocity(), 0, 10000);

@@ -2,6 +2,7 @@
 #include "led_editor.h"
 #include "typed_command_bytes.h"
 #include "pseudo_translation.h"
+#include "reported_mode.h"
 #include "sensor_scenes.h"
 #include "seven_segment_display.h"
 #include "seven_segment_font.h"
@@ -377,6 +378,49 @@ private slots:
         QCOMPARE(editor.msUntilLiveSend(), -1);
         QCoreApplication::processEvents();
         QCOMPARE(spy.count(), 2);
+    }
+
+    // In Passive the robot ignores the LED commands: Apply is disabled with
+    // the reason, nothing goes out, and the changes wait for Safe.
+    void passiveHoldsTheChanges()
+    {
+        LedEditor editor;
+        editor.setProfile(profile(ProfileId::Create2));
+        show(editor);
+        QSignalSpy spy(&editor, &LedEditor::sendRequested);
+        auto *apply = child<QPushButton>(editor, "apply");
+        editor.setMode(reportedMode(editor.robotProfile(), OiMode::Passive));
+        child<QCheckBox>(editor, "ledSpot")->setChecked(true);
+        QCOMPARE(editor.bytePreview(), QString("139 2 0 128"));
+        QVERIFY(!apply->isEnabled());
+        QCOMPARE(apply->toolTip(), QString("LEDs needs Safe or Full mode: the robot ignores it in Passive. Enter Safe "
+                                           "first."));
+        editor.apply();
+        QCOMPARE(spy.count(), 0);
+        QCOMPARE(editor.message(), apply->toolTip());
+        QCOMPARE(editor.bytePreview(), QString("139 2 0 128")); // still pending
+
+        editor.setMode(reportedMode(editor.robotProfile(), OiMode::Safe));
+        QVERIFY(apply->isEnabled());
+        QCOMPARE(apply->toolTip(), QString("Send the changes shown under \"Will send\""));
+        QTest::mouseClick(apply, Qt::LeftButton);
+        QCOMPARE(spy.count(), 1);
+        QCOMPARE(sent(editor, spy, 0), bytes({139, 2, 0, 128}));
+    }
+
+    // Live mode in Passive sends nothing; entering Safe sends what waited.
+    void liveModeWaitsForSafe()
+    {
+        LedEditor editor;
+        QSignalSpy spy(&editor, &LedEditor::sendRequested);
+        editor.setMode(reportedMode(editor.robotProfile(), OiMode::Passive));
+        editor.setLiveMode(true);
+        child<QCheckBox>(editor, "ledDock")->setChecked(true);
+        QCOMPARE(editor.msUntilLiveSend(), -1);
+        editor.setMode(reportedMode(editor.robotProfile(), OiMode::Full));
+        QVERIFY(editor.msUntilLiveSend() >= 0);
+        QTRY_COMPARE(spy.count(), 1);
+        QCOMPARE(sent(editor, spy, 0), bytes({139, 4, 0, 128}));
     }
 
     void liveModeKeepsSendingDuringSteadyChanges()

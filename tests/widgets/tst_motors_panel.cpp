@@ -4,6 +4,7 @@
 
 #include "keyboard_focus.h"
 #include "pseudo_translation.h"
+#include "reported_mode.h"
 
 #include <QApplication>
 #include <QCheckBox>
@@ -313,6 +314,59 @@ private slots:
         QCOMPARE(m_sent->count(), 1); // clearing the controls sent nothing more
     }
 
+    // In Passive the robot ignores every command here but Buttons: those
+    // groups and All off are disabled, each with its reason; Safe enables them.
+    void passiveDisablesWhatTheRobotIgnores_data()
+    {
+        QTest::addColumn<oi::ProfileId>("profile");
+        QTest::newRow("create2") << oi::ProfileId::Create2;
+        QTest::newRow("roomba500") << oi::ProfileId::Roomba500;
+        QTest::newRow("create1") << oi::ProfileId::Create1;
+    }
+    void passiveDisablesWhatTheRobotIgnores()
+    {
+        QFETCH(oi::ProfileId, profile);
+        usePanel(profile);
+        const std::pair<const char *, const char *> groups[] = {
+            {"motorsGroup", "Motors"}, {"pwmMotorsGroup", "PWM Motors"}, {"lowSideGroup", "Low Side Drivers"},
+            {"pwmLowSideGroup", "PWM Low Side Drivers"}, {"digitalOutputsGroup", "Digital Outputs"},
+            {"sendIrGroup", "Send IR"}};
+        m_panel->setMode(reportedMode(m_panel->robotProfile(), oi::OiMode::Passive));
+        int shown = 0;
+        for (auto [name, title] : groups) {
+            auto *g = child<QGroupBox>(name);
+            if (!g->isVisibleTo(m_panel.get()))
+                continue;
+            ++shown;
+            QVERIFY2(!g->isEnabled(), name);
+            QVERIFY2(g->toolTip().contains(QString("%1 needs Safe or Full mode").arg(title)), qPrintable(g->toolTip()));
+            QVERIFY2(g->toolTip().endsWith("Enter Safe first."), qPrintable(g->toolTip()));
+        }
+        QVERIFY(shown >= 2);
+        auto *allOff = child<QPushButton>("allOff");
+        QVERIFY(!allOff->isEnabled());
+        QVERIFY2(allOff->toolTip().contains("needs Safe or Full mode"), qPrintable(allOff->toolTip()));
+        QTest::mouseClick(allOff, Qt::LeftButton);
+        QCOMPARE(m_sent->count(), 0);
+
+        // Buttons (165) works in Passive.
+        auto *buttons = child<QGroupBox>("buttonsGroup");
+        if (buttons->isVisibleTo(m_panel.get())) {
+            QVERIFY(buttons->isEnabled());
+            QTest::mouseClick(child<QPushButton>("buttonClean"), Qt::LeftButton);
+            QCOMPARE(lastSent(), bytes({165, 1}));
+        }
+
+        m_panel->setMode(reportedMode(m_panel->robotProfile(), oi::OiMode::Safe));
+        for (auto [name, title] : groups) {
+            auto *g = child<QGroupBox>(name);
+            QCOMPARE(g->isEnabled(), g->isVisibleTo(m_panel.get()));
+            QVERIFY2(g->toolTip().isEmpty(), name);
+        }
+        QVERIFY(allOff->isEnabled());
+        QVERIFY(allOff->toolTip().isEmpty());
+    }
+
     void setProfileSendsNothingAndClears()
     {
         usePanel(oi::ProfileId::Create2);
@@ -425,6 +479,13 @@ private slots:
             QVERIFY(image.save(path));
             qInfo("screenshot: %s", qPrintable(path));
         }
+        // In Passive: all but Buttons greyed.
+        usePanel(oi::ProfileId::Create2);
+        m_panel->setMode(reportedMode(m_panel->robotProfile(), oi::OiMode::Passive));
+        m_panel->adjustSize();
+        const QString passive = QDir(dir).filePath("motors_panel_create2_passive.png");
+        QVERIFY(m_panel->grab().save(passive));
+        qInfo("screenshot: %s", qPrintable(passive));
     }
 };
 

@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "pseudo_translation.h"
+#include "reported_mode.h"
 #include "sensor_scenes.h"
 #include "robot_profile.h"
 #include "script_editor.h"
 #include "script_lines.h"
+#include "typed_command_bytes.h"
 #include "virtual_robot.h"
 #include "world.h"
 
@@ -43,7 +45,7 @@ QStringList sent(const QSignalSpy &spy)
 {
     QStringList out;
     for (const QList<QVariant> &args : spy)
-        out << spaced(args.at(0).toByteArray());
+        out << spaced(bytesOfCommands(create1(), args.at(0)));
     return out;
 }
 
@@ -283,7 +285,7 @@ private slots:
     {
         QTest::addColumn<bool>("passive");
         QTest::addColumn<QStringList>("expected");
-        QTest::newRow("passive") << true << QStringList{"131", "153"};
+        QTest::newRow("passive") << true << QStringList{"Safe asked", "153"};
         QTest::newRow("safe") << false << QStringList{"153"};
     }
     void playInPassiveEntersSafeFirst()
@@ -298,14 +300,23 @@ private slots:
         give(bytes({128, passive ? 128 : 131}));
         ScriptEditor editor;
         editor.setProfile(create1());
-        editor.setPassive(passive);
+        editor.setMode(reportedMode(create1(), passive ? oi::OiMode::Passive : oi::OiMode::Safe));
         editor.loadExample(0); // "Drive 40 cm and stop"
-        QSignalSpy spy(&editor, &ScriptEditor::sendRequested);
+        // What the window does with each: the commands go to the robot, and
+        // Safe is asked through the robot's session.
+        QStringList log;
+        connect(&editor, &ScriptEditor::sendRequested, this, [&](const std::vector<oi::OiCommand> &commands) {
+            const QByteArray b = bytesOfCommands(create1(), commands);
+            log << spaced(b);
+            give(b);
+        });
+        connect(&editor, &ScriptEditor::safeRequested, this, [&] {
+            log << "Safe asked";
+            give(bytes({131}));
+        });
         QTest::mouseClick(editor.button("upload"), Qt::LeftButton);
         QTest::mouseClick(editor.button("play"), Qt::LeftButton);
-        QCOMPARE(sent(spy).mid(1), expected);
-        for (const QList<QVariant> &args : spy)
-            give(args.at(0).toByteArray());
+        QCOMPARE(log.mid(1), expected);
         robot.advance(std::chrono::seconds(3));
         QVERIFY2(robot.truePose().travelledMm >= 400, qPrintable(QString::number(robot.truePose().travelledMm)));
         (void)robot.takeOutput();

@@ -5,6 +5,7 @@
 #include "rtttl_import.h"
 #include "song_composer.h"
 #include "song_wave.h"
+#include "typed_command_bytes.h"
 
 #include <QApplication>
 #include <QAudioDevice>
@@ -25,10 +26,11 @@ using namespace oi;
 
 namespace {
 
-QString bytesText(const QList<QVariant> &signal)
+// The bytes of the commands one emission asks for, on the composer's profile.
+QString bytesText(const SongComposer &composer, const QList<QVariant> &signal)
 {
     QStringList parts;
-    for (char c : signal.at(0).toByteArray())
+    for (char c : bytesOfCommands(composer.robotProfile(), signal.at(0)))
         parts << QString::number(static_cast<unsigned char>(c));
     return parts.join(' ');
 }
@@ -73,7 +75,7 @@ private slots:
         QSignalSpy spy(&composer, &SongComposer::sendRequested);
         click(composer, "upload");
         QCOMPARE(spy.count(), 1);
-        QCOMPARE(bytesText(spy.at(0)), QStringLiteral("140 0 2 60 32 62 32"));
+        QCOMPARE(bytesText(composer, spy.at(0)), QStringLiteral("140 0 2 60 32 62 32"));
     }
 
     void uploadEmptySlotIsRefused()
@@ -96,8 +98,8 @@ private slots:
         QSignalSpy spy(&composer, &SongComposer::sendRequested);
         click(composer, "upload-all");
         QCOMPARE(spy.count(), 2);
-        QCOMPARE(bytesText(spy.at(0)), QStringLiteral("140 0 1 60 16"));
-        QCOMPARE(bytesText(spy.at(1)), QStringLiteral("140 2 3 72 8 0 4 127 255"));
+        QCOMPARE(bytesText(composer, spy.at(0)), QStringLiteral("140 0 1 60 16"));
+        QCOMPARE(bytesText(composer, spy.at(1)), QStringLiteral("140 2 3 72 8 0 4 127 255"));
     }
 
     void playSendsCurrentSlot()
@@ -107,7 +109,7 @@ private slots:
         QSignalSpy spy(&composer, &SongComposer::sendRequested);
         click(composer, "play");
         QCOMPARE(spy.count(), 1);
-        QCOMPARE(bytesText(spy.at(0)), QStringLiteral("141 3"));
+        QCOMPARE(bytesText(composer, spy.at(0)), QStringLiteral("141 3"));
     }
 
     void slot4WarnsInline()
@@ -120,8 +122,8 @@ private slots:
         click(composer, "upload");
         click(composer, "play");
         QCOMPARE(spy.count(), 2);
-        QCOMPARE(bytesText(spy.at(0)), QStringLiteral("140 4 1 67 10"));
-        QCOMPARE(bytesText(spy.at(1)), QStringLiteral("141 4"));
+        QCOMPARE(bytesText(composer, spy.at(0)), QStringLiteral("140 4 1 67 10"));
+        QCOMPARE(bytesText(composer, spy.at(1)), QStringLiteral("141 4"));
         QVERIFY(composer.message().contains("slot 4 may not play"));
     }
 
@@ -145,7 +147,7 @@ private slots:
         composer.slotTabs()->setCurrentIndex(tabs - 1);
         QSignalSpy spy(&composer, &SongComposer::sendRequested);
         click(composer, "play");
-        QCOMPARE(bytesText(spy.at(0)), QStringLiteral("141 %1").arg(tabs - 1));
+        QCOMPARE(bytesText(composer, spy.at(0)), QStringLiteral("141 %1").arg(tabs - 1));
         QVERIFY(!composer.setSong(tabs, songOf({{60, 8}})));
     }
 

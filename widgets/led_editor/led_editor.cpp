@@ -390,6 +390,17 @@ void LedEditor::setProfile(const oi::RobotProfile &profile)
 bool LedEditor::liveMode() const { return m_live->isChecked(); }
 void LedEditor::setLiveMode(bool live) { m_live->setChecked(live); }
 
+void LedEditor::setMode(const RobotMode &mode)
+{
+    const QString blocked = mode.whyNot(oi::Command::Leds);
+    if (blocked == m_blocked)
+        return;
+    m_blocked = blocked;
+    if (!m_blocked.isEmpty())
+        m_liveTimer.stop();
+    changed(); // in live mode, what waited goes out now
+}
+
 QColor LedEditor::powerLedColor(int colour, int intensity)
 {
     colour = qBound(0, colour, 255);
@@ -514,7 +525,7 @@ void LedEditor::changed()
     refresh();
     // Trailing rate limit: the first change starts the timer, later ones
     // only update the state, and the timer sends whatever is latest.
-    if (liveMode() && !pendingCommands().empty() && !m_liveTimer.isActive())
+    if (liveMode() && m_blocked.isEmpty() && !pendingCommands().empty() && !m_liveTimer.isActive())
         m_liveTimer.start();
 }
 
@@ -533,14 +544,21 @@ void LedEditor::refresh()
     for (const auto &bytes : commands)
         lines << decimal(bytes);
     m_preview->setText(lines.isEmpty() ? tr("nothing (no changes since the last send)") : lines.join('\n'));
-    m_apply->setEnabled(!liveMode() && !commands.empty());
-    m_apply->setToolTip(liveMode() ? tr("Live mode sends changes as you make them")
-                                   : tr("Send the changes shown under \"Will send\""));
+    m_apply->setEnabled(m_blocked.isEmpty() && !liveMode() && !commands.empty());
+    if (!m_blocked.isEmpty())
+        m_apply->setToolTip(m_blocked);
+    else
+        m_apply->setToolTip(liveMode() ? tr("Live mode sends changes as you make them")
+                                       : tr("Send the changes shown under \"Will send\""));
 }
 
 void LedEditor::apply()
 {
     m_liveTimer.stop();
+    if (!m_blocked.isEmpty()) {
+        m_message->setText(m_blocked); // the changes stay pending
+        return;
+    }
     const oi::CommandEncoder encoder(*m_profile);
     QStringList problems;
     for (const oi::OiCommand &command : pendingTyped()) {

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "command_encoder.h"
+#include "robot_mode.h"
 #include "typed_commands.h"
 
 #include <QByteArray>
@@ -40,6 +41,10 @@ public:
     // Milliseconds until live mode sends what is pending; -1 when nothing is due.
     int msUntilLiveSend() const { return m_liveTimer.isActive() ? m_liveTimer.remainingTime() : -1; }
     void setLiveMode(bool live);
+    // The selected robot's mode: in Passive the robot ignores the LED
+    // commands, so nothing is sent (Apply disabled, the reason as its
+    // tooltip) and the changes wait; live mode sends them once it can.
+    void setMode(const RobotMode &mode);
 
     // The commands apply() would send now, one per entry, in sending order.
     std::vector<oi::Bytes> pendingCommands() const;
@@ -57,7 +62,8 @@ protected:
     void changeEvent(QEvent *event) override;
 
 public slots:
-    // Sends every pending command, then clears them.
+    // Sends every pending command, then clears them; in Passive sends
+    // nothing and says why.
     void apply();
 
 signals:
@@ -87,6 +93,7 @@ private:
     std::optional<DigitSource> m_digitsPending;
     std::array<std::uint8_t, 4> m_asciiCodes{32, 32, 32, 32};
     QTimer m_liveTimer;
+    QString m_blocked; // why the robot ignores LED commands now, or empty
 
     QGroupBox *m_digitsGroup = nullptr;
     QWidget *m_digitsContent = nullptr;

@@ -289,6 +289,12 @@ void MotorsPanel::setProfile(const oi::RobotProfile &profile)
     refreshGroups();
 }
 
+void MotorsPanel::setMode(const RobotMode &mode)
+{
+    m_mode = mode;
+    refreshGroups();
+}
+
 void MotorsPanel::refreshGroups()
 {
     using C = oi::Command;
@@ -299,8 +305,10 @@ void MotorsPanel::refreshGroups()
                               std::pair{m_digitalOutputsGroup, C::DigitalOutputs},
                               std::pair{m_sendIrGroup, C::SendIr}}) {
         const bool available = m_profile->has(command);
+        const QString why = m_mode.whyNot(command);
         g->setVisible(available);
-        g->setEnabled(available);
+        g->setEnabled(available && why.isEmpty());
+        g->setToolTip(why);
         if (!available)
             missing << commandTitle(command);
     }
@@ -308,7 +316,10 @@ void MotorsPanel::refreshGroups()
                                              : tr("Not on the %1, so not shown: %2.")
                                                    .arg(fromView(m_profile->name), missing.join(", ")));
     m_unavailable->setVisible(!missing.isEmpty());
-    m_allOff->setEnabled(m_profile->has(C::Motors) || m_profile->has(C::LowSideDrivers));
+    const C off = m_profile->has(C::Motors) ? C::Motors : C::LowSideDrivers;
+    const QString why = m_mode.whyNot(off);
+    m_allOff->setEnabled(m_profile->has(off) && why.isEmpty());
+    m_allOff->setToolTip(why);
 }
 
 void MotorsPanel::clearControls()

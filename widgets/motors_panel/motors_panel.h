@@ -2,6 +2,7 @@
 #pragma once
 
 #include "command_encoder.h"
+#include "robot_mode.h"
 #include "typed_commands.h"
 
 #include <QByteArray>
@@ -30,6 +31,9 @@ public:
     // Puts every control back to off without sending anything.
     void setProfile(const oi::RobotProfile &profile);
     const oi::RobotProfile &robotProfile() const { return *m_profile; }
+    // The selected robot's mode: in Passive the groups the robot would ignore
+    // are disabled, the reason as their tooltip (Buttons works in Passive).
+    void setMode(const RobotMode &mode);
 
     // The last command sent, as decimal bytes ("138 13"), or empty.
     QString lastSentText() const;
@@ -64,6 +68,7 @@ private:
     void clearControls();
 
     const oi::RobotProfile *m_profile = &oi::profile(oi::ProfileId::Create2);
+    RobotMode m_mode;
 
     QGroupBox *m_motorsGroup = nullptr;
     QCheckBox *m_mainBrush = nullptr;

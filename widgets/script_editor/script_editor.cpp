@@ -129,13 +129,13 @@ ScriptEditor::ScriptEditor(QWidget *parent) : QWidget(parent)
     for (int demo = demos::kFirst; demo <= demos::kLast; ++demo) {
         QPushButton *b = addButton(QString("demo-%1").arg(demo), QString());
         b->setParent(demoBox);
-        connect(b, &QPushButton::clicked, this, [this, demo] { send(oi::CommandEncoder(*m_profile).demo(demo)); });
+        connect(b, &QPushButton::clicked, this, [this, demo] { send({oi::Command::Demo, {demo}, {}}); });
         demoGrid->addWidget(b, demo / kColumns, demo % kColumns);
     }
     QPushButton *abort = addButton("abort-demo", QString());
     abort->setParent(demoBox);
     connect(abort, &QPushButton::clicked, this,
-            [this] { send(oi::CommandEncoder(*m_profile).demo(demos::kAbort)); });
+            [this] { send({oi::Command::Demo, {demos::kAbort}, {}}); });
     demoGrid->addWidget(abort, 2, 0, 1, kColumns);
 
     auto *top = new QHBoxLayout;
@@ -336,11 +336,11 @@ void ScriptEditor::refreshEnabled()
     button("show")->setEnabled(create && !m_awaitingReply);
 }
 
-void ScriptEditor::send(const oi::EncodeResult &bytes)
+void ScriptEditor::send(const oi::OiCommand &command)
 {
     // Buttons are disabled where the profile lacks the command; nothing else fails.
-    if (bytes)
-        emit sendRequested(toByteArray(*bytes));
+    if (oi::encodeCommand(oi::CommandEncoder(*m_profile), command))
+        emit sendRequested({command});
 }
 
 void ScriptEditor::upload()
@@ -350,27 +350,25 @@ void ScriptEditor::upload()
     if (!m_body)
         return;
     const QByteArray body = *m_body;
-    const oi::EncodeResult bytes = oi::CommandEncoder(*m_profile).script(
-        std::span(reinterpret_cast<const std::uint8_t *>(body.constData()), std::size_t(body.size())));
-    if (!bytes) {
+    const oi::OiCommand script{oi::Command::Script, {}, oi::Bytes(body.cbegin(), body.cend())};
+    if (const oi::EncodeResult bytes = oi::encodeCommand(oi::CommandEncoder(*m_profile), script); !bytes) {
         showError(fromStd(bytes.error().describe()), std::nullopt);
         return;
     }
     m_uploaded = body;
-    send(bytes);
+    send(script);
 }
 
-void ScriptEditor::setPassive(bool passive)
+void ScriptEditor::setMode(const RobotMode &mode)
 {
-    m_passive = passive;
+    m_mode = mode;
 }
 
 void ScriptEditor::play()
 {
-    const oi::CommandEncoder encoder(*m_profile);
-    if (m_passive)
-        send(encoder.safe());
-    send(encoder.playScript());
+    if (!m_mode.whyNot(oi::Command::PlayScript).isEmpty())
+        emit safeRequested();
+    send({oi::Command::PlayScript, {}, {}});
 }
 
 void ScriptEditor::showScript()

@@ -2,7 +2,9 @@
 #pragma once
 
 #include "result.h"
+#include "robot_mode.h"
 #include "robot_profile.h"
+#include "typed_commands.h"
 
 #include <QByteArray>
 #include <QHash>
@@ -50,13 +52,15 @@ public slots:
     // there is none.
     void showScriptReply(const QByteArray &script);
     void showScriptFailed(const QString &reason);
-    // Whether the robot is in Passive (or Off) mode: Play then enters Safe
+    // The selected robot's mode: in Passive (or Off) Play asks for Safe
     // first, since a script played in Passive cannot drive, so its waits
     // never end and the robot hears nothing more (ERRATA 20).
-    void setPassive(bool passive);
+    void setMode(const RobotMode &mode);
 
 signals:
-    void sendRequested(const QByteArray &bytes);
+    void sendRequested(const std::vector<oi::OiCommand> &commands);
+    // Play in Passive: Safe, through the robot's session, before Play Script.
+    void safeRequested();
     // Show Script (154): the robot's link asks, around its own stream.
     void showScriptRequested();
 
@@ -66,7 +70,7 @@ protected:
 private:
     void retranslateUi();
     QPushButton *addButton(const QString &name, const QString &text);
-    void send(const oi::EncodeResult &bytes);
+    void send(const oi::OiCommand &command);
     void upload();
     void play();
     void showScript();
@@ -76,7 +80,7 @@ private:
 
     const oi::RobotProfile *m_profile = &oi::profile(oi::ProfileId::Create2);
     ScriptTextEdit *m_editor = nullptr;
-    bool m_passive = false;
+    RobotMode m_mode;
     QComboBox *m_examples = nullptr;
     QLabel *m_reason = nullptr;
     QLabel *m_byteCount = nullptr;

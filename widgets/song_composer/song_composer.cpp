@@ -558,8 +558,17 @@ bool SongComposer::scaleCurrentDurations(double factor)
     return true;
 }
 
-bool SongComposer::send(const oi::EncodeResult &result, const QString &what)
+oi::OiCommand SongComposer::songCommand(int slot) const
 {
+    oi::OiCommand command{oi::Command::Song, {slot}, {}};
+    for (const oi::SongNote &note : m_songs.at(slot).notes)
+        command.data.insert(command.data.end(), {note.midi, note.duration});
+    return command;
+}
+
+bool SongComposer::send(const oi::OiCommand &command, const QString &what)
+{
+    const oi::EncodeResult result = oi::encodeCommand(oi::CommandEncoder(*m_profile), command);
     if (!result) {
         showMessage(
             [=, this] {
@@ -568,8 +577,7 @@ bool SongComposer::send(const oi::EncodeResult &result, const QString &what)
             Tone::Error);
         return false;
     }
-    const oi::Bytes &bytes = result.value();
-    emit sendRequested(QByteArray(reinterpret_cast<const char *>(bytes.data()), qsizetype(bytes.size())));
+    emit sendRequested({command});
     if (!result.warning.empty())
         showMessage(
             [=, this] { return QString(tr("%1 sent. Warning: %2").arg(what, slotWarning())); },
@@ -581,21 +589,21 @@ bool SongComposer::send(const oi::EncodeResult &result, const QString &what)
 
 bool SongComposer::uploadCurrentSlot()
 {
-    const oi::CommandEncoder encoder(*m_profile);
     const int slot = currentSlot();
-    return send(encoder.song(slot, m_songs.at(slot)), tr("Song %1").arg(slot));
+    return send(songCommand(slot), tr("Song %1").arg(slot));
 }
 
 bool SongComposer::uploadAllSlots()
 {
     const oi::CommandEncoder encoder(*m_profile);
     // Check every slot first, so nothing is sent when one would be refused.
-    QList<oi::EncodeResult> results;
+    std::vector<oi::OiCommand> songs;
     QStringList sent, warnings;
     for (int slot = 0; slot < slotCount(); ++slot) {
         if (m_songs.at(slot).notes.empty())
             continue;
-        oi::EncodeResult r = encoder.song(slot, m_songs.at(slot));
+        const oi::OiCommand song = songCommand(slot);
+        const oi::EncodeResult r = oi::encodeCommand(encoder, song);
         if (!r) {
             showMessage(
                 [=, this] {
@@ -608,14 +616,14 @@ bool SongComposer::uploadAllSlots()
         sent << QString::number(slot);
         if (!r.warning.empty())
             warnings << slotWarning();
-        results.append(std::move(r));
+        songs.push_back(song);
     }
-    if (results.isEmpty()) {
+    if (songs.empty()) {
         showMessage([=, this] { return QString(tr("Nothing to upload: every slot is empty.")); }, Tone::Error);
         return false;
     }
-    for (const oi::EncodeResult &r : results)
-        emit sendRequested(QByteArray(reinterpret_cast<const char *>(r->data()), qsizetype(r->size())));
+    for (const oi::OiCommand &song : songs)
+        emit sendRequested({song});
     const QString done = tr("Uploaded songs %1.").arg(sent.join(QStringLiteral(", ")));
     if (warnings.isEmpty())
         showMessage([=, this] { return QString(done); }, Tone::Info);
@@ -640,8 +648,7 @@ bool SongComposer::playCurrentSlot()
                     Tone::Error);
         return false;
     }
-    const oi::CommandEncoder encoder(*m_profile);
-    return send(encoder.play(currentSlot()), tr("Play song %1").arg(currentSlot()));
+    return send({oi::Command::Play, {currentSlot()}, {}}, tr("Play song %1").arg(currentSlot()));
 }
 
 void SongComposer::setSnapshot(const oi::SensorSnapshot &snapshot)

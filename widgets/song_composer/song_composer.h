@@ -5,6 +5,7 @@
 #include "sensor_snapshot.h"
 #include "song_files.h"
 #include "song_wave.h"
+#include "typed_commands.h"
 
 #include <QByteArray>
 #include <QElapsedTimer>
@@ -39,6 +40,7 @@ public:
     ~SongComposer() override;
 
     void setProfile(const oi::RobotProfile &profile);
+    const oi::RobotProfile &robotProfile() const { return *m_profile; }
     // Packets 36 and 37: which song is playing, shown with its progress.
     void setSnapshot(const oi::SensorSnapshot &snapshot);
 
@@ -85,7 +87,7 @@ public:
     QWidget *control(const QString &name) const { return m_controls.value(name); }
 
 signals:
-    void sendRequested(const QByteArray &bytes);
+    void sendRequested(const std::vector<oi::OiCommand> &commands);
 
 protected:
     void changeEvent(QEvent *event) override;
@@ -106,7 +108,9 @@ private:
     void addNote();
     void removeNote();
     bool placeSongs(const SongSlots &parts, const QString &what);
-    bool send(const oi::EncodeResult &result, const QString &what);
+    // Song (140) storing a slot's notes.
+    oi::OiCommand songCommand(int slot) const;
+    bool send(const oi::OiCommand &command, const QString &what);
     void togglePreview();
     void stopPreview();
     ToneShape toneShape() const;

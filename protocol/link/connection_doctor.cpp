@@ -77,7 +77,8 @@ void ConnectionDoctor::feed(const QByteArray &data)
     if (!m_listening)
         return;
     m_heard += data.size();
-    m_received += data;
+    // A copy, never a share: `data` is also on its way to the window's thread.
+    m_received.append(data.constData(), data.size());
     if (m_expected > 0 && m_received.size() >= m_expected && m_timer.remainingMs() > kQuietMs)
         m_timer.start(kQuietMs); // extra bytes in this time mean garbage
 }

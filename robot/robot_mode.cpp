@@ -54,7 +54,7 @@ bool RobotMode::causeStillShows(const oi::SensorSnapshot &frame) const
            || (m_charger && onCharger(frame));
 }
 
-bool RobotMode::observe(const oi::SensorSnapshot &frame, const QDateTime &at)
+bool RobotMode::observe(const oi::SensorSnapshot &frame, qint64 atMs)
 {
     if (!frame.has(35))
         return false;
@@ -74,7 +74,7 @@ bool RobotMode::observe(const oi::SensorSnapshot &frame, const QDateTime &at)
             m_cause = Cause::Asked;
         } else if (before == oi::OiMode::Safe) {
             m_cause = Cause::Safety;
-            m_changedAt = at;
+            m_changedAt = QDateTime::fromMSecsSinceEpoch(atMs);
             m_cliffs = cliffBits(frame);
             m_wheelDropLeft = frame.wheelDropLeft();
             m_wheelDropRight = frame.wheelDropRight();

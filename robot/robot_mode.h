@@ -30,8 +30,9 @@ public:
     void clear();
     // The user asked for a mode or cleaning command (sent at `at`).
     void asked(oi::Command command, const QDateTime &at);
-    // A frame read at `at`. Returns true when what this shows changed.
-    bool observe(const oi::SensorSnapshot &frame, const QDateTime &at);
+    // A frame read at `atMs` (milliseconds since the epoch: no time zone is
+    // looked up for every frame). Returns true when what this shows changed.
+    bool observe(const oi::SensorSnapshot &frame, qint64 atMs);
 
     std::optional<oi::OiMode> reported() const { return m_reported; }
     std::optional<oi::Command> lastAsked() const { return m_asked; }

@@ -285,8 +285,7 @@ void RobotSession::onSnapshot(const oi::SensorSnapshot &snapshot, double readSec
     m_history.append(readSeconds, frame);
     m_odometry.update(snapshot);
     // The time of day the frame was read, for "dropped it to Passive at 12:03:04".
-    const bool modeChange = m_mode.observe(frame, QDateTime::fromMSecsSinceEpoch(
-                                                      m_connectedAtMs + qint64(readSeconds * 1000)));
+    const bool modeChange = m_mode.observe(frame, m_connectedAtMs + qint64(readSeconds * 1000));
     // Safe dropping to Passive by itself (a cliff, a wheel drop) ends the motion.
     m_teleop.checkMode();
     if (modeChange)

@@ -96,8 +96,13 @@ int main(int argc, char *argv[])
 
     RobotSession robot;
     robot.setName(config->name);
+    // The bridge plots nothing: an hour of history would be about 21 MB on a Pi.
+    robot.setHistoryCapacity(1);
     robot.setTransportFactory(transports::transportFactory());
-    mqtt::MqttClient broker(QStringLiteral("roomba-bridge-%1").arg(config->name));
+    // With an account, the id is the account's name, as the classroom's
+    // broker makes it anyway (use_username_as_clientid).
+    mqtt::MqttClient broker(config->broker.username.isEmpty() ? QStringLiteral("roomba-bridge-%1").arg(config->name)
+                                                              : config->broker.username);
     broker.setLastWill(RobotBridge::lastWill(config->name));
     SteadyLeaseClock clock;
     RobotBridge bridge(robot, broker, clock, {config->name, config->telemetryRateHz, config->fullTelemetry, config->allowFull});

@@ -91,6 +91,7 @@ RobotBridge::RobotBridge(RobotSession &robot, mqtt::MqttClient &broker, LeaseClo
         publishState();
     });
     connect(&m_robot, &RobotSession::profileChanged, this, [this] { publishState(); });
+    connect(&m_robot, &RobotSession::modeChanged, this, [this] { publishState(); });
     connect(&m_robot, &RobotSession::firmwareChanged, this, [this] { publishState(); });
     connect(&m_robot, &RobotSession::errorOccurred, this,
             [](const QString &message) { qCWarning(lcBridge, "robot: %s", qPrintable(message)); });
@@ -162,7 +163,6 @@ void RobotBridge::shutDown()
 QJsonObject RobotBridge::state() const
 {
     const oi::RobotProfile &profile = m_robot.robotProfile();
-    const oi::SensorSnapshot &latest = m_robot.latest();
     QJsonObject o{{"online", !m_shutDown},
                   {"name", m_options.name},
                   {"profile", QString::fromLatin1(profile.key.data(), qsizetype(profile.key.size()))},
@@ -172,9 +172,15 @@ QJsonObject RobotBridge::state() const
                   {"mode_cause", QJsonArray::fromStringList(m_robot.mode().causeKeys())},
                   {"link", linkWord(m_robot.state())},
                   {"controller", m_lease.holder().isEmpty() ? QJsonValue() : m_lease.holder()}};
-    const std::optional<double> battery = latest.batteryPercent();
-    o.insert(QLatin1String("battery_percent"), battery ? QJsonValue(std::round(*battery * 10) / 10) : QJsonValue());
+    const std::optional<double> battery = batteryShown();
+    o.insert(QLatin1String("battery_percent"), battery ? QJsonValue(*battery) : QJsonValue());
     return o;
+}
+
+std::optional<double> RobotBridge::batteryShown() const
+{
+    const std::optional<double> battery = m_robot.latest().batteryPercent();
+    return battery ? std::optional(std::round(*battery * 10) / 10) : std::nullopt;
 }
 
 void RobotBridge::onBrokerConnected()
@@ -397,7 +403,10 @@ void RobotBridge::reply(const QString &client, QJsonObject answer)
 void RobotBridge::onFrame(const oi::SensorSnapshot &frame)
 {
     stopAtEdges(frame);
-    publishState(); // mode and battery come with the frames
+    // The mode comes by modeChanged; of the state, a frame brings only the
+    // battery, so the state is not built again for every frame.
+    if (m_stateUnsent || batteryShown() != m_publishedBattery)
+        publishState();
     m_frameWaiting = true;
     if (m_options.telemetryRateHz <= 0)
         publishTelemetry(frame, m_options.fullTelemetry);
@@ -431,8 +440,10 @@ void RobotBridge::publishState(bool always)
     if (m_shutDown || !m_broker.isConnected())
         return;
     const QJsonObject now = state();
+    m_publishedBattery = batteryShown();
     if (!always && now == m_publishedState)
         return;
-    if (m_broker.publish(mqtt::topics::state(m_options.name), compact(now), 1, true))
+    m_stateUnsent = !m_broker.publish(mqtt::topics::state(m_options.name), compact(now), 1, true);
+    if (!m_stateUnsent)
         m_publishedState = now;
 }

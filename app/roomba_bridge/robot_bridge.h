@@ -14,6 +14,8 @@
 #include <QObject>
 #include <QTimer>
 
+#include <optional>
+
 class RobotSession;
 
 Q_DECLARE_LOGGING_CATEGORY(lcBridge)
@@ -81,6 +83,8 @@ private:
     void reply(const QString &client, QJsonObject answer);
     void replyControl(const QString &client, bool ok, const QString &error = {});
     void publishState(bool always = false);
+    // The battery as the state says it, to a tenth of a percent.
+    std::optional<double> batteryShown() const;
     // `whole`: every packet; otherwise what changed (TelemetryChanges).
     void publishTelemetry(const oi::SensorSnapshot &frame, bool whole);
     void publishStats();
@@ -101,4 +105,6 @@ private:
     bool m_frameWaiting = false;
     bool m_shutDown = false;
     QJsonObject m_publishedState;
+    std::optional<double> m_publishedBattery;
+    bool m_stateUnsent = false; // the broker refused the last one: try again
 };

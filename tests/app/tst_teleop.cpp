@@ -142,7 +142,7 @@ struct RobotOnTheBench : DriveTarget {
     explicit RobotOnTheBench(oi::OiMode mode = oi::OiMode::Safe)
     {
         frame.set(35, int(mode));
-        robotMode.observe(frame, QDateTime::currentDateTime());
+        robotMode.observe(frame, QDateTime::currentMSecsSinceEpoch());
     }
     const oi::RobotProfile &robotProfile() const override { return oi::profile(oi::ProfileId::Create2); }
     const oi::SensorSnapshot &latest() const override { return frame; }

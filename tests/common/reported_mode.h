@@ -16,6 +16,6 @@ inline RobotMode reportedMode(const oi::RobotProfile &profile, oi::OiMode report
         frame.set(id, 0);
     frame.set(34, 0); // charging sources
     RobotMode mode;
-    mode.observe(frame, QDateTime(QDate(2026, 3, 2), QTime(12, 0)));
+    mode.observe(frame, QDateTime(QDate(2026, 3, 2), QTime(12, 0)).toMSecsSinceEpoch());
     return mode;
 }

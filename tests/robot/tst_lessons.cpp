@@ -50,7 +50,7 @@ struct Classroom {
                 return;
             odometry.update(s);
             const double seconds = std::chrono::duration<double>(robot.now()).count();
-            mode.observe(s, QDateTime(QDate(2026, 1, 5), QTime(12, 0)).addMSecs(qint64(seconds * 1000)));
+            mode.observe(s, QDateTime(QDate(2026, 1, 5), QTime(12, 0)).addMSecs(qint64(seconds * 1000)).toMSecsSinceEpoch());
             runner.update({seconds, s, odometry.pose(), robot.truePose()});
         });
         send(encoder.start());

@@ -38,14 +38,14 @@ private slots:
         QVERIFY(!mode.reported());
         QVERIFY(!mode.ignoresMotion());
         QVERIFY(mode.reason().isEmpty());
-        QVERIFY(!mode.observe(SensorSnapshot(profile(ProfileId::Create2)), kAt)); // no packet 35
-        QVERIFY(mode.observe(frame(OiMode::Passive), kAt));
+        QVERIFY(!mode.observe(SensorSnapshot(profile(ProfileId::Create2)), kAt.toMSecsSinceEpoch())); // no packet 35
+        QVERIFY(mode.observe(frame(OiMode::Passive), kAt.toMSecsSinceEpoch()));
         QCOMPARE(mode.reported(), std::optional(OiMode::Passive));
         QVERIFY(mode.ignoresMotion());
         // Passive from the start (the link's Start) needs no story.
         QVERIFY(mode.reason().isEmpty());
         QCOMPARE(mode.nextStep(), QString("Enter Safe to drive."));
-        QVERIFY(!mode.observe(frame(OiMode::Passive), kAt)); // nothing new
+        QVERIFY(!mode.observe(frame(OiMode::Passive), kAt.toMSecsSinceEpoch())); // nothing new
     }
 
     void safetyDropSaysWhatWhenAndWhatToDo_data()
@@ -73,9 +73,9 @@ private slots:
         QFETCH(QString, shortReason);
         QFETCH(QString, nextStep);
         RobotMode mode;
-        mode.observe(frame(OiMode::Safe), kAt.addSecs(-10));
+        mode.observe(frame(OiMode::Safe), kAt.addSecs(-10).toMSecsSinceEpoch());
         QVERIFY(mode.reason().isEmpty());
-        QVERIFY(mode.observe(frame(OiMode::Passive, {{packet, value}}), kAt));
+        QVERIFY(mode.observe(frame(OiMode::Passive, {{packet, value}}), kAt.toMSecsSinceEpoch()));
         QCOMPARE(mode.cause(), RobotMode::Cause::Safety);
         QCOMPARE(mode.reason(), reason);
         QCOMPARE(mode.shortReason(), shortReason);
@@ -99,20 +99,20 @@ private slots:
     void reasonClearsWithItsCauseOrTheMode()
     {
         RobotMode mode;
-        mode.observe(frame(OiMode::Safe), kAt);
-        mode.observe(frame(OiMode::Passive, {{kCliffFrontLeft, 1}}), kAt);
-        QVERIFY(!mode.observe(frame(OiMode::Passive, {{kCliffFrontLeft, 1}}), kAt.addSecs(1)));
+        mode.observe(frame(OiMode::Safe), kAt.toMSecsSinceEpoch());
+        mode.observe(frame(OiMode::Passive, {{kCliffFrontLeft, 1}}), kAt.toMSecsSinceEpoch());
+        QVERIFY(!mode.observe(frame(OiMode::Passive, {{kCliffFrontLeft, 1}}), kAt.addSecs(1).toMSecsSinceEpoch()));
         QVERIFY(!mode.reason().isEmpty());
         // Carried back onto the floor: the cliff is gone, so is its reason.
-        QVERIFY(mode.observe(frame(OiMode::Passive), kAt.addSecs(2)));
+        QVERIFY(mode.observe(frame(OiMode::Passive), kAt.addSecs(2).toMSecsSinceEpoch()));
         QVERIFY(mode.reason().isEmpty());
         QCOMPARE(mode.reported(), std::optional(OiMode::Passive));
 
-        mode.observe(frame(OiMode::Safe), kAt);
-        mode.observe(frame(OiMode::Passive, {{kCliffRight, 1}}), kAt);
+        mode.observe(frame(OiMode::Safe), kAt.toMSecsSinceEpoch());
+        mode.observe(frame(OiMode::Passive, {{kCliffRight, 1}}), kAt.toMSecsSinceEpoch());
         QVERIFY(!mode.reason().isEmpty());
         // Safe again with the cliff still under it: nothing is said of Passive under Safe.
-        QVERIFY(mode.observe(frame(OiMode::Safe, {{kCliffRight, 1}}), kAt));
+        QVERIFY(mode.observe(frame(OiMode::Safe, {{kCliffRight, 1}}), kAt.toMSecsSinceEpoch()));
         QVERIFY(mode.reason().isEmpty());
         QVERIFY(mode.shortReason().isEmpty());
         QVERIFY(mode.nextStep().isEmpty());
@@ -122,20 +122,20 @@ private slots:
     void askedPassiveIsSaidAsAsked()
     {
         RobotMode mode;
-        mode.observe(frame(OiMode::Safe), kAt);
+        mode.observe(frame(OiMode::Safe), kAt.toMSecsSinceEpoch());
         mode.asked(Command::Start, kAt);
         QCOMPARE(mode.lastAsked(), std::optional(Command::Start));
-        mode.observe(frame(OiMode::Passive, {{kCliffFrontLeft, 1}}), kAt.addSecs(1));
+        mode.observe(frame(OiMode::Passive, {{kCliffFrontLeft, 1}}), kAt.addSecs(1).toMSecsSinceEpoch());
         QCOMPARE(mode.cause(), RobotMode::Cause::Asked);
         QCOMPARE(mode.reason(), QString("You asked for Passive at 12:03:04."));
         // A clean, too, leaves Safe on purpose.
-        mode.observe(frame(OiMode::Safe), kAt);
+        mode.observe(frame(OiMode::Safe), kAt.toMSecsSinceEpoch());
         mode.asked(Command::Clean, kAt);
-        mode.observe(frame(OiMode::Passive), kAt);
+        mode.observe(frame(OiMode::Passive), kAt.toMSecsSinceEpoch());
         QCOMPARE(mode.cause(), RobotMode::Cause::Asked);
         // Asked once: a later drop is the robot's own.
-        mode.observe(frame(OiMode::Safe), kAt);
-        mode.observe(frame(OiMode::Passive, {{kCliffRight, 1}}), kAt);
+        mode.observe(frame(OiMode::Safe), kAt.toMSecsSinceEpoch());
+        mode.observe(frame(OiMode::Passive, {{kCliffRight, 1}}), kAt.toMSecsSinceEpoch());
         QCOMPARE(mode.cause(), RobotMode::Cause::Safety);
         // Asking for Safe starts afresh.
         mode.asked(Command::Safe, kAt);
@@ -146,12 +146,12 @@ private slots:
     {
         RobotMode mode;
         QVERIFY(mode.whyNot(Command::Play).isEmpty()); // not known: not refused
-        mode.observe(frame(OiMode::Passive), kAt);
+        mode.observe(frame(OiMode::Passive), kAt.toMSecsSinceEpoch());
         QCOMPARE(mode.whyNot(Command::Play),
                  QString("Play needs Safe or Full mode: the robot ignores it in Passive. Enter Safe first."));
         QVERIFY(mode.whyNot(Command::PlayScript).contains("a wait never ends"));
         QVERIFY(mode.whyNot(Command::Song).isEmpty()); // storing a song works in Passive
-        mode.observe(frame(OiMode::Safe), kAt);
+        mode.observe(frame(OiMode::Safe), kAt.toMSecsSinceEpoch());
         QVERIFY(mode.whyNot(Command::Play).isEmpty());
     }
 
@@ -161,9 +161,9 @@ private slots:
     {
         const QStringList front{"cliff_front_left", "cliff_front_right"};
         RobotMode mode;
-        mode.observe(frame(OiMode::Safe), kAt);
+        mode.observe(frame(OiMode::Safe), kAt.toMSecsSinceEpoch());
         QVERIFY(mode.outOfReach(front, true).isEmpty());
-        mode.observe(frame(OiMode::Passive, {{kCliffRight, 1}}), kAt);
+        mode.observe(frame(OiMode::Passive, {{kCliffRight, 1}}), kAt.toMSecsSinceEpoch());
         QCOMPARE(mode.outOfReach(front, false),
                  QString("Out of reach: A cliff (right) dropped it to Passive at 12:03:04. The goal needs the front "
                          "left or front right cliff sensor to reach the edge first. Carry the robot back from the "
@@ -177,8 +177,8 @@ private slots:
                          "Passive at 12:03:04. Carry it back from the edge, then Enter Safe."));
 
         RobotMode frontStop;
-        frontStop.observe(frame(OiMode::Safe), kAt);
-        frontStop.observe(frame(OiMode::Passive, {{kCliffFrontLeft, 1}}), kAt);
+        frontStop.observe(frame(OiMode::Safe), kAt.toMSecsSinceEpoch());
+        frontStop.observe(frame(OiMode::Passive, {{kCliffFrontLeft, 1}}), kAt.toMSecsSinceEpoch());
         QVERIFY(frontStop.outOfReach(front, false).isEmpty());
     }
 };

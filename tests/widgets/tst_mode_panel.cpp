@@ -51,7 +51,7 @@ RobotMode modeAfter(std::initializer_list<SensorSnapshot> frames)
     RobotMode mode;
     const QDateTime at(QDate(2026, 1, 5), QTime(12, 3, 4));
     for (const SensorSnapshot &frame : frames)
-        mode.observe(frame, at);
+        mode.observe(frame, at.toMSecsSinceEpoch());
     return mode;
 }
 

@@ -108,7 +108,7 @@ private slots:
         };
         const QDateTime at(QDate(2026, 1, 5), QTime(12, 3, 4));
         RobotMode mode;
-        mode.observe(frame(oi::OiMode::Safe, false), at);
+        mode.observe(frame(oi::OiMode::Safe, false), at.toMSecsSinceEpoch());
 
         QWidget window;
         window.resize(screen);
@@ -125,7 +125,7 @@ private slots:
         QTest::keyClick(&view, Qt::Key_Return);
         QCOMPARE(safe.count(), 0); // nothing to enter
 
-        mode.observe(frame(oi::OiMode::Passive, true), at);
+        mode.observe(frame(oi::OiMode::Passive, true), at.toMSecsSinceEpoch());
         view.setMode(mode);
         QVERIFY(view.headerText().contains(" · Passive"));
         QCOMPARE(view.reasonText(), QString("A cliff (front left) dropped it to Passive at 12:03:04. Carry it back "

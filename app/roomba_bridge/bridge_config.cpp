@@ -9,6 +9,7 @@
 #include <QHash>
 
 #include <cmath>
+#include <tuple>
 
 namespace {
 
@@ -29,6 +30,7 @@ const QStringList &BridgeConfig::keys()
         QStringLiteral("broker"),   QStringLiteral("name"),          QStringLiteral("sim"),
         QStringLiteral("port"),     QStringLiteral("tcp"),           QStringLiteral("profile"),
         QStringLiteral("username"), QStringLiteral("password"),      QStringLiteral("password-file"),
+        QStringLiteral("stop-username"), QStringLiteral("stop-password"), QStringLiteral("stop-password-file"),
         QStringLiteral("cafile"),   QStringLiteral("certfile"),      QStringLiteral("keyfile"),
         QStringLiteral("rate"),     QStringLiteral("allow-full"),    QStringLiteral("full-telemetry"),
     };
@@ -63,7 +65,7 @@ std::optional<QList<BridgeConfig::Setting>> BridgeConfig::readFile(const QString
         QString value = line.mid(eq + 1).trimmed();
         // A file beside the config (ca.crt) goes with it wherever it is copied.
         static const QStringList files{QStringLiteral("cafile"), QStringLiteral("certfile"), QStringLiteral("keyfile"),
-                                       QStringLiteral("password-file")};
+                                       QStringLiteral("password-file"), QStringLiteral("stop-password-file")};
         if (files.contains(key) && !value.isEmpty() && QFileInfo(value).isRelative())
             value = QFileInfo(path).dir().filePath(value);
         settings.append({key, value, where});
@@ -105,13 +107,24 @@ std::optional<BridgeConfig> BridgeConfig::fromSettings(const QList<Setting> &set
         if (!mqtt::topics::isValidName(c.broker.username))
             return fail(QStringLiteral("username"), QStringLiteral("'%1' is not an account name: 1 to 64 letters, digits, '-' or '_'").arg(c.broker.username.left(80)));
     }
-    if (has("password"))
-        c.broker.password = value("password");
-    if (has("password-file")) {
-        QFile f(value("password-file"));
-        if (!f.open(QIODevice::ReadOnly | QIODevice::Text))
-            return fail(QStringLiteral("password-file"), QStringLiteral("cannot read %1: %2").arg(f.fileName(), f.errorString()));
-        c.broker.password = QString::fromUtf8(f.readLine()).trimmed();
+    if (has("stop-username")) {
+        c.stopUsername = value("stop-username");
+        if (!mqtt::topics::isValidName(c.stopUsername))
+            return fail(QStringLiteral("stop-username"), QStringLiteral("'%1' is not an account name: 1 to 64 letters, digits, '-' or '_'").arg(c.stopUsername.left(80)));
+        if (c.stopUsername == c.broker.username)
+            return fail(QStringLiteral("stop-username"), QStringLiteral("the stop line needs an account of its own, not '%1' again: the broker would let only one of the two connections stay").arg(c.stopUsername));
+    }
+    for (const auto &[passwordKey, fileKey, field] :
+         {std::tuple{"password", "password-file", &c.broker.password},
+          std::tuple{"stop-password", "stop-password-file", &c.stopPassword}}) {
+        if (has(passwordKey))
+            *field = value(passwordKey);
+        if (has(fileKey)) {
+            QFile f(value(fileKey));
+            if (!f.open(QIODevice::ReadOnly | QIODevice::Text))
+                return fail(QString::fromLatin1(fileKey), QStringLiteral("cannot read %1: %2").arg(f.fileName(), f.errorString()));
+            *field = QString::fromUtf8(f.readLine()).trimmed();
+        }
     }
     for (const auto &[key, field] : {std::pair{"cafile", &mqtt::BrokerAddress::caFile},
                                      std::pair{"certfile", &mqtt::BrokerAddress::certFile},
@@ -188,4 +201,14 @@ std::optional<BridgeConfig> BridgeConfig::fromSettings(const QList<Setting> &set
         c.fullTelemetry = isYes(value("full-telemetry"));
     }
     return c;
+}
+
+std::optional<mqtt::BrokerAddress> BridgeConfig::stopLine() const
+{
+    if (!broker.username.isEmpty() && stopUsername.isEmpty())
+        return std::nullopt;
+    mqtt::BrokerAddress line = broker;
+    line.username = stopUsername;
+    line.password = stopPassword;
+    return line;
 }

@@ -16,6 +16,11 @@
 struct BridgeConfig {
     QString name;
     mqtt::BrokerAddress broker;
+    // The account of the bridge's stop line, the second connection that
+    // hears only the teacher's topics (docs/mqtt.md, "Limits"); empty
+    // without one. Its password is `stopPassword`.
+    QString stopUsername;
+    QString stopPassword;
     oilink::LinkSettings link;
     double telemetryRateHz = 0; // 0: every frame
     bool allowFull = false;     // Full mode over the network
@@ -35,4 +40,9 @@ struct BridgeConfig {
     // A config from settings read in order (a later one wins), or nothing
     // and `error` naming the setting at fault.
     static std::optional<BridgeConfig> fromSettings(const QList<Setting> &settings, QString *error);
+
+    // Where the stop line connects, as whom; nothing when the broker wants
+    // an account and none is given for it (then stops share the one
+    // connection).
+    std::optional<mqtt::BrokerAddress> stopLine() const;
 };

@@ -106,12 +106,22 @@ int main(int argc, char *argv[])
     broker.setLastWill(RobotBridge::lastWill(config->name));
     SteadyLeaseClock clock;
     RobotBridge bridge(robot, broker, clock, {config->name, config->telemetryRateHz, config->fullTelemetry, config->allowFull});
+    const std::optional<mqtt::BrokerAddress> stopLineAddress = config->stopLine();
+    mqtt::MqttClient stopLine(config->stopUsername.isEmpty() ? QStringLiteral("roomba-bridge-%1-stops").arg(config->name)
+                                                             : config->stopUsername);
+    if (stopLineAddress)
+        bridge.setStopLine(stopLine);
+    else
+        qCWarning(lcBridge, "no stop line (stop-username): stop all shares the connection with every student's "
+                            "commands, and the broker may drop it under a flood. roomba-classroom init writes one "
+                            "into each bridge's config.");
 
     TerminationSignals termination;
     QObject::connect(&termination, &TerminationSignals::requested, &app, [&](int signalNumber) {
         qCInfo(lcBridge, "signal %d: stopping", signalNumber);
         bridge.shutDown();
         broker.disconnectFromBroker();
+        stopLine.disconnectFromBroker();
         app.exit(TerminationSignals::exitStatusFor(signalNumber));
     });
 
@@ -147,7 +157,7 @@ int main(int argc, char *argv[])
     });
     bridge.start();
     robot.connectTo(config->link);
-    if (!broker.connectToBroker(config->broker))
+    if (!broker.connectToBroker(config->broker) || (stopLineAddress && !stopLine.connectToBroker(*stopLineAddress)))
         return 1; // errorOccurred has said why
     return app.exec();
 }

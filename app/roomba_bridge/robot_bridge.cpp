@@ -124,9 +124,41 @@ RobotBridge::RobotBridge(RobotSession &robot, mqtt::MqttClient &broker, LeaseClo
 
 RobotBridge::~RobotBridge()
 {
-    // The client may outlive the bridge; its network thread must not call
-    // into an inbox that is gone.
+    // The clients may outlive the bridge; their network threads must not
+    // call into an inbox that is gone.
     m_broker.setDirectReceiver({});
+    if (m_stopLine)
+        m_stopLine->setDirectReceiver({});
+}
+
+void RobotBridge::setStopLine(mqtt::MqttClient &line)
+{
+    m_stopLine = &line;
+    line.setMaxPayloadBytes(kMaxPayloadBytes);
+    line.setDirectReceiver([this](const QString &topic, const QByteArray &payload, bool retained) {
+        m_inbox.receive(topic, payload, retained);
+    });
+    connect(&line, &mqtt::MqttClient::payloadTooLarge, this,
+            [this](const QString &topic, qsizetype bytes, bool) { onPayloadTooLarge(topic, bytes); });
+    connect(&line, &mqtt::MqttClient::subscribed, this, [this] {
+        qCInfo(lcBridge, "stop line: listening for stop all and takeovers as %s", qPrintable(m_stopLine->clientId()));
+    });
+    connect(&line, &mqtt::MqttClient::disconnected, this, &RobotBridge::onStopLineLost);
+    connect(&line, &mqtt::MqttClient::errorOccurred, this,
+            [](const QString &message) { qCWarning(lcBridge, "stop line: %s", qPrintable(message)); });
+}
+
+void RobotBridge::onStopLineLost(const QString &reason)
+{
+    if (reason.isEmpty() || m_shutDown)
+        return; // our own goodbye
+    // Stop all cannot reach the robot now: nobody drives it until it can.
+    qCWarning(lcBridge, "stop line: lost (%s); the robot is stopped and nobody can take control until it is back",
+              qPrintable(reason));
+    const QString former = freeControlAndStop();
+    if (!former.isEmpty())
+        replyControl(former, false, QStringLiteral("the bridge cannot hear stop all: the robot was stopped and control "
+                                                   "freed; take control again in a moment"));
 }
 
 mqtt::LastWill RobotBridge::lastWill(const QString &name)
@@ -139,8 +171,11 @@ void RobotBridge::start()
     using namespace mqtt::topics;
     m_broker.subscribe(fromEveryClient(Kind::Command, m_options.name));
     m_broker.subscribe(fromEveryClient(Kind::Control, m_options.name));
-    m_broker.subscribe(fromEveryClient(Kind::Takeover, m_options.name), 1);
-    m_broker.subscribe(mqtt::topics::stopAll(), 1);
+    // At QoS 1 the broker never drops them for a full queue of their own
+    // connection; on the stop line, nothing but the teacher can fill it.
+    mqtt::MqttClient &teacher = m_stopLine ? *m_stopLine : m_broker;
+    teacher.subscribe(fromEveryClient(Kind::Takeover, m_options.name), 1);
+    teacher.subscribe(mqtt::topics::stopAll(), 1);
     m_statsTimer.start();
     if (m_options.telemetryRateHz > 0)
         m_telemetryTimer.start();
@@ -199,8 +234,17 @@ void RobotBridge::onBrokerLost(const QString &reason)
     qCWarning(lcBridge, "broker: lost (%s); the robot stays stopped until a client takes control",
               qPrintable(reason));
     // Nobody can see or steer the robot now.
-    m_lease.free();
-    stopRobot();
+    freeControlAndStop();
+}
+
+QString RobotBridge::freeControlAndStop()
+{
+    // Without a controller the robot is already stopped (a release, a lapse
+    // and a takeover each stop it), so losing both connections stops it once.
+    const QString former = m_lease.free();
+    if (!former.isEmpty())
+        stopRobot();
+    return former;
 }
 
 void RobotBridge::onMessage(const BridgeInbox::Message &m)
@@ -365,6 +409,9 @@ void RobotBridge::handleControl(const QString &client, const QByteArray &payload
             }
             return replyControl(client, true);
         }
+        if (m_stopLine && !m_stopLine->isSubscribed())
+            return replyControl(client, false, QStringLiteral("the bridge cannot hear stop all yet (its stop line is "
+                                                              "not connected): take control again in a moment"));
         if (!m_lease.take(client, arrivedMs))
             return replyControl(client, false, QStringLiteral("%1 has control").arg(m_lease.holder()));
         return replyControl(client, true);

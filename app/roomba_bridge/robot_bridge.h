@@ -52,6 +52,12 @@ public:
     // client before it connects.
     static mqtt::LastWill lastWill(const QString &name);
 
+    // A second connection that hears only the teacher's topics (stop all,
+    // takeovers), under an account of its own: a flood on a command topic
+    // fills the broker's queue for the first connection, and mosquitto
+    // then drops what comes next for it, stops included. Set before start().
+    void setStopLine(mqtt::MqttClient &stopLine);
+
     // Subscribes and starts publishing; connect the client afterwards.
     void start();
     // Stops the robot and leaves it in Passive, frees control and
@@ -68,6 +74,9 @@ private:
     void onPayloadTooLarge(const QString &topic, qsizetype bytes);
     void onBrokerConnected();
     void onBrokerLost(const QString &reason);
+    void onStopLineLost(const QString &reason);
+    // Returns who had control.
+    QString freeControlAndStop();
     void onFrame(const oi::SensorSnapshot &frame);
     void handleCommand(const BridgeInbox::Message &message);
     void handleControl(const QString &client, const QByteArray &payload, bool takeover, qint64 arrivedMs);
@@ -91,6 +100,7 @@ private:
 
     RobotSession &m_robot;
     mqtt::MqttClient &m_broker;
+    mqtt::MqttClient *m_stopLine = nullptr;
     LeaseClock &m_clock;
     ControlLease m_lease;
     Options m_options;

@@ -85,6 +85,7 @@ bool MqttClient::connectToBroker(const BrokerAddress &address)
     mosquitto_connect_callback_set(m_mosq, &MqttClient::onConnect);
     mosquitto_disconnect_callback_set(m_mosq, &MqttClient::onDisconnect);
     mosquitto_message_callback_set(m_mosq, &MqttClient::onMessage);
+    mosquitto_subscribe_callback_set(m_mosq, &MqttClient::onSubscribe);
     mosquitto_log_callback_set(m_mosq, &MqttClient::onLog);
     // Every second, not backing off: a restarted broker is found again
     // within about a second, and the broker bears a class of 30 easily.
@@ -172,7 +173,13 @@ void MqttClient::subscribe(const QString &topicFilter, int qos)
             return;
     m_subscriptions.append({topicFilter, qos});
     if (m_connected)
-        mosquitto_subscribe(m_mosq, nullptr, topicFilter.toUtf8().constData(), qos);
+        sendSubscription(topicFilter, qos);
+}
+
+void MqttClient::sendSubscription(const QString &topicFilter, int qos)
+{
+    if (mosquitto_subscribe(m_mosq, nullptr, topicFilter.toUtf8().constData(), qos) == MOSQ_ERR_SUCCESS)
+        ++m_unacknowledged;
 }
 
 bool MqttClient::publish(const QString &topic, const QByteArray &payload, int qos, bool retain)
@@ -189,6 +196,20 @@ void MqttClient::onConnect(mosquitto *, void *self, int rc)
 {
     auto *client = static_cast<MqttClient *>(self);
     QMetaObject::invokeMethod(client, [client, rc] { client->handleConnected(rc); }, Qt::QueuedConnection);
+}
+
+void MqttClient::onSubscribe(mosquitto *, void *self, int, int, const int *)
+{
+    auto *client = static_cast<MqttClient *>(self);
+    QMetaObject::invokeMethod(
+        client,
+        [client] {
+            if (!client->m_connected || client->m_unacknowledged == 0)
+                return; // an answer to a connection that is gone
+            if (--client->m_unacknowledged == 0)
+                emit client->subscribed();
+        },
+        Qt::QueuedConnection);
 }
 
 void MqttClient::onDisconnect(mosquitto *, void *self, int rc)
@@ -258,9 +279,12 @@ void MqttClient::handleConnected(int rc)
     }
     m_connected = true;
     m_noAnswer.stop();
+    m_unacknowledged = 0;
     for (const auto &s : std::as_const(m_subscriptions))
-        mosquitto_subscribe(m_mosq, nullptr, s.first.toUtf8().constData(), s.second);
+        sendSubscription(s.first, s.second);
     emit connected();
+    if (m_unacknowledged == 0)
+        emit subscribed();
 }
 
 void MqttClient::handleDisconnected(int rc)

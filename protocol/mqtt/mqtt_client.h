@@ -67,12 +67,17 @@ public:
 
     // Kept and made again after each reconnect. Wildcards + and # allowed.
     void subscribe(const QString &topicFilter, int qos = 0);
+    // Connected, and the broker has acknowledged every subscription: from
+    // here on nothing sent to them is missed.
+    bool isSubscribed() const { return m_connected && m_unacknowledged == 0; }
     // Queued for sending; false if the library refuses it (not connected
     // and QoS 0, payload too large, bad topic).
     bool publish(const QString &topic, const QByteArray &payload, int qos = 0, bool retain = false);
 
 signals:
     void connected();
+    // isSubscribed() became true.
+    void subscribed();
     // `reason` is empty after disconnectFromBroker.
     void disconnected(const QString &reason);
     void messageReceived(const QString &topic, const QByteArray &payload, bool retained);
@@ -86,6 +91,7 @@ private:
     static void onConnect(mosquitto *, void *self, int rc);
     static void onDisconnect(mosquitto *, void *self, int rc);
     static void onMessage(mosquitto *, void *self, const mosquitto_message *message);
+    static void onSubscribe(mosquitto *, void *self, int mid, int qosCount, const int *grantedQos);
     static void onLog(mosquitto *, void *self, int level, const char *text);
 
     void tryConnecting();
@@ -106,6 +112,8 @@ private:
     QTimer m_noAnswer; // says so when no broker has answered soon after connectToBroker
     bool m_tlsRefusalSaid = false; // once per connectToBroker
     QList<QPair<QString, int>> m_subscriptions;
+    int m_unacknowledged = 0; // subscriptions sent since connecting, not yet acknowledged
+    void sendSubscription(const QString &topicFilter, int qos);
     qsizetype m_maxPayloadBytes = 0;
     QMutex m_receiverMutex;
     DirectReceiver m_directReceiver;

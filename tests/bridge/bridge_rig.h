@@ -17,10 +17,15 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QProcess>
 #include <QSignalSpy>
 #include <QTest>
 
+#include <unistd.h>
+
+#include <csignal>
 #include <memory>
+#include <optional>
 
 inline mqtt::BrokerAddress addressOf(const MosquittoBroker &broker, const QString &user = {},
                                      const QString &password = {})
@@ -42,14 +47,22 @@ struct BridgeRig {
     Recording recording;
     RobotSession session;
     mqtt::MqttClient client;
+    mqtt::MqttClient stopLine;
     ManualLeaseClock clock;
     RobotBridge bridge;
 
+    // As roomba-bridge: a stop line beside an anonymous connection, or at
+    // `stopLineAt` (its own account); none for an account without one.
     BridgeRig(const QString &name, const mqtt::BrokerAddress &broker, Robot robot = Robot::Recording,
-              bool allowFull = false, bool fullTelemetry = false)
+              bool allowFull = false, bool fullTelemetry = false,
+              std::optional<mqtt::BrokerAddress> stopLineAt = std::nullopt)
         : client(QStringLiteral("bridge-%1").arg(name)),
+          stopLine(stopLineAt && !stopLineAt->username.isEmpty() ? stopLineAt->username
+                                                                  : QStringLiteral("bridge-%1-stops").arg(name)),
           bridge(session, client, clock, {name, 0, fullTelemetry, allowFull})
     {
+        if (!stopLineAt && broker.username.isEmpty())
+            stopLineAt = broker;
         recording.mode = int(oi::OiMode::Safe);
         if (robot == Robot::Recording) {
             session.setTransportFactory(
@@ -61,14 +74,48 @@ struct BridgeRig {
             session.connectTo(oilink::LinkSettings::virtualRobotOf(id, id));
         }
         client.setLastWill(RobotBridge::lastWill(name));
+        if (stopLineAt)
+            bridge.setStopLine(stopLine);
         bridge.start();
         client.connectToBroker(broker);
+        if (stopLineAt)
+            stopLine.connectToBroker(*stopLineAt);
+        hasStopLine = stopLineAt.has_value();
     }
+    // The robot streams, and the bridge hears stop all.
     bool streaming()
     {
-        return QTest::qWaitFor([this] { return session.isLive() && session.latest().has(35); }, 10000);
+        return QTest::qWaitFor([this] { return session.isLive() && session.latest().has(35) && listening(); }, 10000);
     }
+    bool listening() const { return hasStopLine ? stopLine.isSubscribed() : client.isSubscribed(); }
+    bool hasStopLine = false;
     QByteArray stopBytes() const { return toBytes(oi::CommandEncoder(session.robotProfile()).stopMotion()); }
+};
+
+// A student flooding a robot's command topic as fast as mosquitto_pub can
+// (as mallory), with commands of about `bytes` bytes, from a process group
+// of its own so that the pipe feeding it ends with it.
+struct CommandFlood {
+    QProcess process;
+    CommandFlood(const MosquittoBroker &broker, const QString &robot, int bytes)
+    {
+        const QByteArray line = json({{"id", "flood"}, {"command", "leds"}, {"args", QJsonArray{8, 0, 255}},
+                                      {"pad", QString(std::max(0, bytes - 60), QLatin1Char('x'))}});
+        process.setChildProcessModifier([] { ::setpgid(0, 0); });
+        process.start(QStringLiteral("/bin/sh"),
+                      {QStringLiteral("-c"),
+                       QStringLiteral("yes '%1' | mosquitto_pub -l -h 127.0.0.1 -p %2 -i flooder -t %3")
+                           .arg(QString::fromUtf8(line))
+                           .arg(broker.port())
+                           .arg(mqtt::topics::command(robot, QStringLiteral("mallory")))});
+        process.waitForStarted();
+    }
+    ~CommandFlood()
+    {
+        if (process.processId() > 0)
+            ::kill(-pid_t(process.processId()), SIGTERM);
+        process.waitForFinished(3000);
+    }
 };
 
 // A client as the console would be: watches every robot's state and its

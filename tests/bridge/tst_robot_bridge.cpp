@@ -539,6 +539,37 @@ private slots:
         QTRY_COMPARE(stopsSince(before), 5);
     }
 
+    // A student floods r1's command topic until mosquitto drops messages for
+    // the bridge's connection (its queue holds two here): stop all still
+    // reaches the robot every time, as its stop bytes, on the stop line.
+    void aFloodDoesNotHoldBackStopAll()
+    {
+        MosquittoBroker broker(QStringLiteral("allow_anonymous true\nmax_queued_messages 2\nsys_interval 1\n"));
+        QVERIFY2(broker.start(), qPrintable(broker.error()));
+        BridgeRig rig(QStringLiteral("r1"), addressOf(broker));
+        QVERIFY(rig.streaming());
+        QVERIFY(rig.hasStopLine);
+
+        // What the broker says it dropped, from its $SYS tree.
+        MqttClient sys(QStringLiteral("sys-watcher"));
+        qint64 dropped = 0;
+        connect(&sys, &MqttClient::messageReceived, this,
+                [&](const QString &, const QByteArray &payload) { dropped = payload.toLongLong(); });
+        sys.subscribe(QStringLiteral("$SYS/broker/publish/messages/dropped"));
+        sys.connectToBroker(addressOf(broker));
+        MqttClient teacher(QStringLiteral("teacher"));
+        teacher.connectToBroker(addressOf(broker));
+        QTRY_VERIFY(teacher.isConnected() && sys.isSubscribed());
+
+        const CommandFlood flood(broker, QStringLiteral("r1"), 3000);
+        QTRY_VERIFY_WITH_TIMEOUT(dropped > 0, 10000); // it overflows the bridge's queue on the broker
+        for (int round = 0; round < 20; ++round) {
+            const qsizetype before = rig.recording.count();
+            teacher.publish(topics::stopAll(), json({{"client", "teacher"}}), 1);
+            QTRY_VERIFY_WITH_TIMEOUT(writtenSince(rig.recording, before).contains(rig.stopBytes()), 10000);
+        }
+    }
+
     void takeoverAndStopAll()
     {
         MosquittoBroker broker;

@@ -54,6 +54,8 @@ int main(int argc, char *argv[])
         {QStringLiteral("profile"), QStringLiteral("Robot: roomba500, create2 (also roomba600) or create1. Needed for a Roomba 500 or a Create 2, which answer alike; a Create is found by asking it (create2 with --sim)."), QStringLiteral("PROFILE")},
         {QStringLiteral("username"), QStringLiteral("The broker account."), QStringLiteral("USER")},
         {QStringLiteral("password-file"), QStringLiteral("Read the account's password from the first line of FILE."), QStringLiteral("FILE")},
+        {QStringLiteral("stop-username"), QStringLiteral("The stop line's own account: stop all and takeovers come on a second connection, which a flood on a command topic cannot fill."), QStringLiteral("USER")},
+        {QStringLiteral("stop-password-file"), QStringLiteral("Read the stop line's password from the first line of FILE."), QStringLiteral("FILE")},
         {QStringLiteral("cafile"), QStringLiteral("TLS: the CA certificate (PEM) the broker's certificate is checked against."), QStringLiteral("FILE")},
         {QStringLiteral("certfile"), QStringLiteral("TLS: this bridge's certificate (PEM), with --keyfile."), QStringLiteral("FILE")},
         {QStringLiteral("keyfile"), QStringLiteral("TLS: this bridge's private key (PEM)."), QStringLiteral("FILE")},
@@ -83,7 +85,7 @@ int main(int argc, char *argv[])
         settings = *fromFile;
     }
     for (const QString &key : BridgeConfig::keys()) {
-        if (key == QLatin1String("password") || !parser.isSet(key))
+        if (key == QLatin1String("password") || key == QLatin1String("stop-password") || !parser.isSet(key))
             continue; // a password on the command line would show in ps
         const bool flag = key == QLatin1String("sim") || key == QLatin1String("allow-full")
                           || key == QLatin1String("full-telemetry");

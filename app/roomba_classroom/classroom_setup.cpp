@@ -177,7 +177,9 @@ QByteArray acl(const Request &r)
         "# The classroom's access rules, made by roomba-classroom init (the model:\n"
         "# resources/mqtt/acl; topics: docs/mqtt.md). A user writes only under its\n"
         "# own name, so nobody can speak for somebody else.\n\n"
-        "# Each robot's bridge writes only its own robot's topics.\n");
+        "# Each robot's bridge writes only its own robot's topics. Its stop line, a\n"
+        "# second connection, hears stop all and takeovers even while a flood on a\n"
+        "# command topic fills the first one's queue.\n");
     for (const QString &robot : r.robots)
         a += QStringLiteral("user %1\n"
                             "topic write roomba/%2/state\n"
@@ -187,8 +189,12 @@ QByteArray acl(const Request &r)
                             "topic read roomba/%2/command/+\n"
                             "topic read roomba/%2/control/+\n"
                             "topic read roomba/%2/takeover/+\n"
+                            "topic read roomba/fleet/stop\n\n"
+                            "# Its stop line hears only what the teacher alone may send.\n"
+                            "user %3\n"
+                            "topic read roomba/%2/takeover/+\n"
                             "topic read roomba/fleet/stop\n\n")
-                 .arg(bridgeAccount(robot), robot);
+                 .arg(bridgeAccount(robot), robot, stopLineAccount(robot));
     a += QStringLiteral("# The teacher watches everything, takes control from whoever holds it,\n"
                         "# and stops the whole fleet.\n"
                         "user %1\n"
@@ -208,7 +214,7 @@ QByteArray acl(const Request &r)
     return a.toUtf8();
 }
 
-QByteArray bridgeConfig(const Request &r, const QString &robot, const QString &password)
+QByteArray bridgeConfig(const Request &r, const QString &robot, const QString &password, const QString &stopPassword)
 {
     return QStringLiteral(
                "# roomba-bridge for robot %1, made by roomba-classroom init. On the robot's\n"
@@ -219,6 +225,9 @@ QByteArray bridgeConfig(const Request &r, const QString &robot, const QString &p
                "broker = %2\n"
                "username = %3\n"
                "password = %4\n"
+               "# The stop line: stop all and takeovers on a connection of their own.\n"
+               "stop-username = %5\n"
+               "stop-password = %6\n"
                "# Relative to this file.\n"
                "cafile = ca.crt\n\n"
                "# Where the robot is: one of these (--sim, --port or --tcp on the command\n"
@@ -228,7 +237,7 @@ QByteArray bridgeConfig(const Request &r, const QString &robot, const QString &p
                "# The robot: roomba500, create2 (also roomba600) or create1. A Roomba 500\n"
                "# or a Create 2 must be named; a Create is found by asking it.\n"
                "# profile = create2\n")
-        .arg(robot, brokerUrl(r), bridgeAccount(robot), password)
+        .arg(robot, brokerUrl(r), bridgeAccount(robot), password, stopLineAccount(robot), stopPassword)
         .toUtf8();
 }
 
@@ -247,6 +256,8 @@ QByteArray accountsText(const Request &r, const QList<Account> &accounts)
 } // namespace
 
 QString bridgeAccount(const QString &robot) { return QStringLiteral("bridge-") + robot; }
+
+QString stopLineAccount(const QString &robot) { return bridgeAccount(robot) + QStringLiteral("-stops"); }
 
 QString brokerUrl(const Request &request)
 {
@@ -283,10 +294,12 @@ QString check(const Request &r)
         if (robots.contains(robot))
             return QStringLiteral("the robot '%1' (--robots) is named twice").arg(robot);
         robots.insert(robot);
-        if (bridgeAccount(robot).size() > 64)
+        if (stopLineAccount(robot).size() > 64)
             return QStringLiteral("robot '%1' (--robots): its bridge's account %2 is over 64 characters; use a shorter name")
-                .arg(robot, bridgeAccount(robot));
+                .arg(robot, stopLineAccount(robot));
         if (QString e = account(bridgeAccount(robot), QStringLiteral("the bridge of robot %1").arg(robot)); !e.isEmpty())
+            return e;
+        if (QString e = account(stopLineAccount(robot), QStringLiteral("the stop line of robot %1").arg(robot)); !e.isEmpty())
             return e;
     }
     const QList<std::pair<QStringList, QString>> people{{{r.teacher}, QStringLiteral("--teacher")},
@@ -352,8 +365,16 @@ std::optional<QList<Account>> init(const Request &r, QString *error)
         accounts.append({QStringLiteral("student"), s, strongPassword()});
     for (const QString &s : r.spectators)
         accounts.append({QStringLiteral("spectator"), s, strongPassword()});
-    for (const QString &robot : r.robots)
+    for (const QString &robot : r.robots) {
         accounts.append({QStringLiteral("bridge"), bridgeAccount(robot), strongPassword()});
+        accounts.append({QStringLiteral("bridge"), stopLineAccount(robot), strongPassword()});
+    }
+    const auto passwordOf = [&accounts](const QString &name) {
+        for (const Account &a : accounts)
+            if (a.name == name)
+                return a.password;
+        return QString();
+    };
 
     // mosquitto_passwd -U hashes a file of user:password lines in place.
     QByteArray plain;
@@ -370,13 +391,11 @@ std::optional<QList<Account>> init(const Request &r, QString *error)
         *error = QStringLiteral("cannot write %1").arg(w.filePath(QStringLiteral("bridges")));
         return std::nullopt;
     }
-    for (const Account &a : accounts)
-        if (a.role == QLatin1String("bridge")) {
-            const QString robot = a.name.mid(bridgeAccount({}).size());
-            if (!writeFile(w.filePath(QStringLiteral("bridges/%1.conf").arg(robot)), bridgeConfig(r, robot, a.password),
-                           kOwnerOnly, error))
-                return std::nullopt;
-        }
+    for (const QString &robot : r.robots)
+        if (!writeFile(w.filePath(QStringLiteral("bridges/%1.conf").arg(robot)),
+                       bridgeConfig(r, robot, passwordOf(bridgeAccount(robot)), passwordOf(stopLineAccount(robot))),
+                       kOwnerOnly, error))
+            return std::nullopt;
     QFile::setPermissions(work.path(), kOwnerOnly | QFileDevice::ExeOwner);
     // An empty target gives way to the finished folder; a rename is all or nothing.
     if (QFileInfo::exists(finalDir) && !QDir().rmdir(finalDir)) {

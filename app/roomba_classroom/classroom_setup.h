@@ -22,13 +22,15 @@ struct Request {
 };
 
 struct Account {
-    QString role; // teacher, student, spectator, bridge
+    QString role; // teacher, student, spectator, bridge (its connection and its stop line)
     QString name;
     QString password;
 };
 
 // The account of a robot's bridge, as the ACL names it.
 QString bridgeAccount(const QString &robot);
+// The account of its stop line, which only hears stop all and takeovers.
+QString stopLineAccount(const QString &robot);
 
 // Empty if the request can be made; else what is wrong and what to do.
 QString check(const Request &request);

@@ -44,7 +44,7 @@ private slots:
         QFile acl(QStringLiteral(ROOMBA_MQTT_DIR "/acl"));
         QVERIFY(acl.open(QIODevice::ReadOnly));
         m_broker->writeFile(QStringLiteral("acl"), acl.readAll());
-        for (const char *user : {"bridge-r1", "bridge-r2", "teacher", "spectator", "alice", "bob"})
+        for (const char *user : {"bridge-r1", "bridge-r1-stops", "bridge-r2", "teacher", "spectator", "alice", "bob"})
             QVERIFY(m_broker->addUser(QString::fromLatin1(user), QString::fromLatin1(user) + QStringLiteral("-pw")));
         QVERIFY2(m_broker->start(), qPrintable(m_broker->error()));
     }
@@ -86,8 +86,11 @@ private slots:
 
     void studentCannotTakeOverOrStopAll()
     {
-        BridgeRig rig(QStringLiteral("r1"), as(QStringLiteral("bridge-r1")));
+        // Takeovers and stop all come on the stop line, with its own account.
+        BridgeRig rig(QStringLiteral("r1"), as(QStringLiteral("bridge-r1")), BridgeRig::Robot::Recording, false, false,
+                      as(QStringLiteral("bridge-r1-stops")));
         QVERIFY(rig.streaming());
+        QVERIFY(rig.hasStopLine);
         ConsoleClient alice(QStringLiteral("alice"), as(QStringLiteral("alice"))), bob(QStringLiteral("bob"), as(QStringLiteral("bob")));
         ConsoleClient teacher(QStringLiteral("teacher"), as(QStringLiteral("teacher")));
         QVERIFY(alice.waitForState(QStringLiteral("r1"), true));
@@ -129,6 +132,26 @@ private slots:
         QCOMPARE(alice.control(QStringLiteral("r1"), "take").value(QLatin1String("controller")).toString(), QStringLiteral("alice"));
         QCOMPARE(bridgeLost.count(), 0);
         QVERIFY(rig.client.isConnected());
+    }
+
+    // A stop line's account only listens: it cannot publish its robot's
+    // state or telemetry.
+    void aStopLineOnlyListens()
+    {
+        BridgeRig rig(QStringLiteral("r1"), as(QStringLiteral("bridge-r1")));
+        QVERIFY(rig.streaming());
+        ConsoleClient watcher(QStringLiteral("teacher"), as(QStringLiteral("teacher")));
+        QVERIFY(watcher.waitForState(QStringLiteral("r1"), true));
+        MqttClient stops(QStringLiteral("bridge-r1-stops"));
+        stops.connectToBroker(as(QStringLiteral("bridge-r1-stops")));
+        QTRY_VERIFY_WITH_TIMEOUT(stops.isConnected(), 5000);
+        stops.publish(topics::state(QStringLiteral("r1")), json({{"online", false}, {"name", "r1"}, {"fake", 1}}), 1, true);
+        stops.publish(topics::telemetry(QStringLiteral("r1")), json({{"fake", 1}}), 1);
+        // Behind them, the bridge's own state: it arrives, the fakes do not.
+        rig.client.publish(topics::state(QStringLiteral("r1")), json({{"online", true}, {"name", "r1"}, {"marker", 1}}), 1, true);
+        QTRY_VERIFY(watcher.lastState(QStringLiteral("r1")).contains(QLatin1String("marker")));
+        for (const QJsonObject &state : watcher.on(topics::state(QStringLiteral("r1"))))
+            QVERIFY(!state.contains(QLatin1String("fake")));
     }
 
     // A bridge's account cannot publish another robot's state: the fake

@@ -54,6 +54,14 @@ private slots:
                                      << "bad.conf:3: username: 'bridge/r1' is not an account name: 1 to 64 letters, digits, '-' or '_'";
         QTest::newRow("account with a wildcard") << QStringList{"--name", "r1", "--sim", "--username", "bridge+"} << QByteArray()
                                                  << "--username: username: 'bridge+' is not an account name";
+        QTest::newRow("bad stop account") << QStringList{"--name", "r1", "--sim", "--stop-username", "bridge r1"} << QByteArray()
+                                          << "--stop-username: stop-username: 'bridge r1' is not an account name";
+        QTest::newRow("stop line with the bridge's account")
+            << QStringList{} << QByteArray("name = r1\nsim = yes\nusername = bridge-r1\nstop-username = bridge-r1\n")
+            << "bad.conf:4: stop-username: the stop line needs an account of its own, not 'bridge-r1' again";
+        QTest::newRow("stop password file missing")
+            << QStringList{} << QByteArray("name = r1\nsim = yes\nstop-password-file = nothere.pw\n")
+            << "bad.conf:3: stop-password-file: cannot read";
         QTest::newRow("bad allow-full") << QStringList{} << QByteArray("name = r1\nsim = yes\nallow-full = maybe\n")
                                         << "bad.conf:3: allow-full: 'maybe' is not yes or no";
         QTest::newRow("bad full-telemetry") << QStringList{} << QByteArray("name = r1\nsim = yes\nfull-telemetry = all\n")

@@ -103,6 +103,9 @@ private slots:
         // file's serial port) publishes; the console, as the teacher with
         // the CA, sees it online and its telemetry.
         QProcess bridge;
+        bridge.setProcessChannelMode(QProcess::MergedChannels);
+        QByteArray said;
+        connect(&bridge, &QProcess::readyRead, this, [&] { said += bridge.readAll(); });
         bridge.start(QStringLiteral(ROOMBA_BRIDGE_PATH),
                      {QStringLiteral("--config"), QDir(dir).filePath(QStringLiteral("bridges/r1.conf")), QStringLiteral("--sim")});
         QVERIFY(bridge.waitForStarted());
@@ -114,6 +117,11 @@ private slots:
         console.follow(QStringLiteral("r1"), true);
         QTRY_VERIFY_WITH_TIMEOUT(!frames.isEmpty(), 10000);
         QCOMPARE(frames[0][0].toString(), QStringLiteral("r1"));
+        // Its stop line logs in with its own account and hears the teacher's
+        // stop all, which comes to that connection alone.
+        QTRY_VERIFY_WITH_TIMEOUT(said.contains("stop line: listening for stop all and takeovers as bridge-r1-stops"), 10000);
+        QVERIFY(console.stopAll());
+        QTRY_VERIFY_WITH_TIMEOUT(said.contains("roomba.bridge: stop all"), 10000);
         QVERIFY(bridge.state() == QProcess::Running);
         bridge.terminate();
         QVERIFY(bridge.waitForFinished(10000));

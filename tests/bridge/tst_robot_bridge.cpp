@@ -570,6 +570,42 @@ private slots:
         }
     }
 
+    // Someone takes the stop line's connection (its client id): stop all can
+    // no longer reach the robot, so the bridge stops it, frees control and
+    // tells its driver; nobody can take control until the line is back.
+    void losingTheStopLineStopsTheRobot()
+    {
+        MosquittoBroker broker;
+        QVERIFY2(broker.start(), qPrintable(broker.error()));
+        BridgeRig rig(QStringLiteral("r1"), addressOf(broker));
+        QVERIFY(rig.streaming());
+        ConsoleClient alice(QStringLiteral("alice"), addressOf(broker));
+        QVERIFY(aliceDrives(alice, rig));
+        const qsizetype before = rig.recording.count();
+        const QString replies = topics::reply(QStringLiteral("r1"), QStringLiteral("alice"));
+        const qsizetype repliesBefore = alice.on(replies).size();
+
+        QSignalSpy lineLost(&rig.stopLine, &MqttClient::disconnected);
+        {
+            MqttClient borrower(rig.stopLine.clientId());
+            borrower.connectToBroker(addressOf(broker));
+            QTRY_VERIFY_WITH_TIMEOUT(lineLost.count() >= 1, 5000);
+            QTRY_COMPARE(byteText(writtenSince(rig.recording, before)), byteText(rig.stopBytes()));
+            QCOMPARE(rig.bridge.controller(), QString());
+            QTRY_VERIFY(alice.on(replies).size() > repliesBefore);
+            QVERIFY(alice.on(replies).last().value(QLatin1String("error")).toString().startsWith(
+                QStringLiteral("the bridge cannot hear stop all")));
+            if (!rig.stopLine.isSubscribed()) {
+                const QJsonObject refused = alice.control(QStringLiteral("r1"), "take");
+                QVERIFY2(refused.value(QLatin1String("error")).toString().startsWith(
+                             QStringLiteral("the bridge cannot hear stop all yet")),
+                         qPrintable(QString::fromUtf8(json(refused))));
+            }
+        } // the borrower leaves; the line comes back within a second or two
+        QTRY_VERIFY_WITH_TIMEOUT(rig.stopLine.isSubscribed(), 10000);
+        QCOMPARE(alice.control(QStringLiteral("r1"), "take").value(QLatin1String("ok")), QJsonValue(true));
+    }
+
     void takeoverAndStopAll()
     {
         MosquittoBroker broker;

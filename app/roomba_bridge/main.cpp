@@ -59,7 +59,7 @@ int main(int argc, char *argv[])
         {QStringLiteral("cafile"), QStringLiteral("TLS: the CA certificate (PEM) the broker's certificate is checked against."), QStringLiteral("FILE")},
         {QStringLiteral("certfile"), QStringLiteral("TLS: this bridge's certificate (PEM), with --keyfile."), QStringLiteral("FILE")},
         {QStringLiteral("keyfile"), QStringLiteral("TLS: this bridge's private key (PEM)."), QStringLiteral("FILE")},
-        {QStringLiteral("rate"), QStringLiteral("Telemetry messages per second, every packet in each (default 0: one per frame, about 66, with what changed)."), QStringLiteral("HZ")},
+        {QStringLiteral("rate"), QStringLiteral("Telemetry messages per second, every packet in each (default 0: what changed in each frame, about 23 a second for a driven robot)."), QStringLiteral("HZ")},
         {QStringLiteral("full-telemetry"), QStringLiteral("Every packet in every telemetry message, not only what changed: about five times the bytes.")},
         {QStringLiteral("allow-full"), QStringLiteral("Let the client in control send full. The robot then ignores cliffs and wheel drops; the bridge stops it at the first one.")},
     });

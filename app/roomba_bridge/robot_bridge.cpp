@@ -468,6 +468,8 @@ void RobotBridge::publishTelemetry(const oi::SensorSnapshot &frame, bool whole)
         o = oilink::snapshotToJson(frame);
     } else {
         const auto changes = m_telemetryChanges.next(frame, m_clock.nowMs());
+        if (!changes.send)
+            return;
         o = oilink::snapshotToJson(changes.packets);
         keyFrame = changes.keyFrame;
     }

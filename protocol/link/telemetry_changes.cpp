@@ -43,6 +43,8 @@ TelemetryChanges::Message TelemetryChanges::next(const oi::SensorSnapshot &frame
         if (countsSinceLastFrame(p.id))
             m_untoldSum[p.id] = 0;
     }
+    m.send = m.keyFrame || m.packets.packetCount() > 0 || m_framesUnsent + 1 >= kAliveFrames;
+    m_framesUnsent = m.send ? 0 : m_framesUnsent + 1;
     return m;
 }
 

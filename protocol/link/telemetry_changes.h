@@ -19,16 +19,20 @@ namespace oilink {
 //    every kMeasurementMs;
 //  - distance and angle, which count since the last frame, summed over the
 //    frames not yet told, so that odometry from the messages adds up.
-// A frame with nothing to tell still gives a message (its time alone), so
-// a watcher sees the robot is alive at the frame rate.
+// A frame with nothing to tell gives a message (its time alone) only when
+// the kAliveFrames - 1 frames before it gave none, so a watcher still sees
+// the robot alive twice within a link's 100 ms (every 45 ms at 66.7 Hz),
+// with far fewer messages than one a frame.
 class TelemetryChanges {
 public:
     static constexpr qint64 kKeyFrameMs = 1000;
     static constexpr qint64 kMeasurementMs = 100;
+    static constexpr int kAliveFrames = 3;
 
     struct Message {
         oi::SensorSnapshot packets;
         bool keyFrame = false;
+        bool send = true; // false: nothing to tell, and one of the last kAliveFrames - 1 frames was sent
     };
 
     // The packets to tell for `frame`, read at `nowMs` (any steady clock).
@@ -41,6 +45,7 @@ private:
     std::array<qint64, oi::kMaxPacketId + 1> m_toldAtMs{};
     std::array<std::int32_t, oi::kMaxPacketId + 1> m_untoldSum{};
     std::optional<qint64> m_keyFrameAtMs;
+    int m_framesUnsent = kAliveFrames; // since the last message sent
 };
 
 } // namespace oilink

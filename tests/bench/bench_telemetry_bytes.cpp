@@ -40,7 +40,7 @@ int main()
 
     oi::StreamParser parser(profile);
     oilink::TelemetryChanges changes;
-    double fullBytes = 0, changedBytes = 0, messages = 0, keyFrames = 0;
+    double fullBytes = 0, changedBytes = 0, frames = 0, messages = 0, keyFrames = 0;
     qint64 nowMs = 0;
     enum class Drive { Forward, Back, Turn } drive = Drive::Forward;
     qint64 phaseEndsMs = 0;
@@ -53,14 +53,17 @@ int main()
         whole.insert(QLatin1String("timestamp"), stamp);
         fullBytes += double(QJsonDocument(whole).toJson(QJsonDocument::Compact).size()) + kMqttBytesPerMessage;
 
+        ++frames;
         const auto told = changes.next(frame, nowMs);
-        QJsonObject o = oilink::snapshotToJson(told.packets);
-        if (told.keyFrame)
-            o.insert(QLatin1String("key_frame"), true);
-        o.insert(QLatin1String("timestamp"), stamp);
-        changedBytes += double(QJsonDocument(o).toJson(QJsonDocument::Compact).size()) + kMqttBytesPerMessage;
-        ++messages;
-        keyFrames += told.keyFrame;
+        if (told.send) {
+            QJsonObject o = oilink::snapshotToJson(told.packets);
+            if (told.keyFrame)
+                o.insert(QLatin1String("key_frame"), true);
+            o.insert(QLatin1String("timestamp"), stamp);
+            changedBytes += double(QJsonDocument(o).toJson(QJsonDocument::Compact).size()) + kMqttBytesPerMessage;
+            ++messages;
+            keyFrames += told.keyFrame;
+        }
 
         // A cliff drops it to Passive: back into Safe, as a driver would.
         if (frame.raw(35) != int(oi::OiMode::Safe))
@@ -90,10 +93,10 @@ int main()
 
     std::printf("parser: %llu good, %llu checksum failures, %llu discarded\n", (unsigned long long)parser.counters().framesGood, (unsigned long long)parser.counters().checksumFailures, (unsigned long long)parser.counters().bytesDiscarded);
     const double seconds = kMinutes * 60.0;
-    std::printf("telemetry of a driven virtual Create 2, %d simulated minutes, %.0f messages (%.1f per second)\n",
-                kMinutes, messages, messages / seconds);
-    std::printf("  every packet in every message (--full-telemetry): %8.0f bytes/s\n", fullBytes / seconds);
-    std::printf("  what changed, key frame each second (default):    %8.0f bytes/s (%.0f key frames)\n",
-                changedBytes / seconds, keyFrames);
+    std::printf("telemetry of a driven virtual Create 2, %d simulated minutes, %.0f frames (%.1f per second)\n",
+                kMinutes, frames, frames / seconds);
+    std::printf("  every packet in every message (--full-telemetry): %8.0f bytes/s, a message a frame\n", fullBytes / seconds);
+    std::printf("  what changed, key frame each second (default):    %8.0f bytes/s, %.1f messages a second (%.0f key frames)\n",
+                changedBytes / seconds, messages / seconds, keyFrames);
     return 0;
 }

@@ -562,7 +562,7 @@ private slots:
         QTRY_VERIFY(teacher.isConnected() && sys.isSubscribed());
 
         const CommandFlood flood(broker, QStringLiteral("r1"), 3000);
-        QTRY_VERIFY_WITH_TIMEOUT(dropped > 0, 10000); // it overflows the bridge's queue on the broker
+        QTRY_VERIFY_WITH_TIMEOUT(dropped > 0, 30000); // it overflows the bridge's queue on the broker
         for (int round = 0; round < 20; ++round) {
             const qsizetype before = rig.recording.count();
             teacher.publish(topics::stopAll(), json({{"client", "teacher"}}), 1);

@@ -130,7 +130,7 @@ private slots:
                 ++keyFrames;
                 QCOMPARE(m.packets.packetCount(), frameWith(0, 15000, 0).packetCount());
             } else {
-                QCOMPARE(m.packets.packetCount(), 0); // nothing changed: the time alone
+                QCOMPARE(m.packets.packetCount(), 0); // nothing changed: the time alone, or nothing
             }
         }
         QCOMPARE(keyFrames, 3); // at 0, 1005 and 2010 ms: 1000 ms or more apart
@@ -211,6 +211,29 @@ private slots:
                 if (info.bytes == 1)
                     QCOMPARE(known.raw(info.id), f.raw(info.id));
         }
+    }
+
+    // A frame with nothing to tell is sent only when the two before it were
+    // not; a frame with something to tell always is, and a watcher merging
+    // the messages still knows every event.
+    void aStillRobotIsToldAliveEveryThirdFrame()
+    {
+        TelemetryChanges changes;
+        QVERIFY(changes.next(frameWith(0, 15000, 0), 0).send); // the first is a key frame
+        QList<bool> sent;
+        qint64 t = 0;
+        for (int i = 0; i < 9; ++i)
+            sent << changes.next(frameWith(0, 15000, 0), t += 15).send;
+        QCOMPARE(sent, (QList<bool>{false, false, true, false, false, true, false, false, true}));
+        // A bump in a frame that would not have been sent: sent, with the bump;
+        // the count of frames unsent starts again from it.
+        QVERIFY(!changes.next(frameWith(0, 15000, 0), t += 15).send);
+        const auto bump = changes.next(frameWith(1, 15000, 0), t += 15);
+        QVERIFY(bump.send);
+        QCOMPARE(bump.packets.raw(7), 1);
+        QVERIFY(!changes.next(frameWith(1, 15000, 0), t += 15).send);
+        QVERIFY(!changes.next(frameWith(1, 15000, 0), t += 15).send);
+        QVERIFY(changes.next(frameWith(1, 15000, 0), t += 15).send);
     }
 
     void statisticsRoundTrip()

@@ -88,6 +88,32 @@ private slots:
         QVERIFY(!view.tile("robot-1")->isChecked());
     }
 
+    // Tiles go in the order of their robots' names, numbers as numbers,
+    // whichever robot came online first.
+    void tilesAreInNameOrder()
+    {
+        FleetView view;
+        view.setTiles({robot(10), robot(2)});
+        view.setTiles({robot(1)});
+        QStringList names;
+        for (const FleetTile *t : view.tiles())
+            names << t->values().name;
+        QCOMPARE(names, (QStringList{"robot-1", "robot-2", "robot-10"}));
+
+        FleetView other;
+        QList<FleetTileValues> tiles;
+        for (const char *name : {"b", "A10", "a9", "a09x"}) {
+            FleetTileValues v = robot(1);
+            v.name = QString::fromLatin1(name);
+            tiles << v;
+        }
+        other.setTiles(tiles);
+        names.clear();
+        for (const FleetTile *t : other.tiles())
+            names << t->values().name;
+        QCOMPARE(names, (QStringList{"a9", "a09x", "A10", "b"}));
+    }
+
     void asManyColumnsAsFit()
     {
         FleetView view;

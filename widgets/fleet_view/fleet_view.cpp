@@ -10,6 +10,8 @@
 #include <QScrollArea>
 #include <QVBoxLayout>
 
+#include <algorithm>
+
 namespace {
 constexpr int kSpacing = 12;
 // Tiles no larger than this many times the desktop's type, however few, and
@@ -88,6 +90,48 @@ void FleetView::setBrokerText(const QString &text, bool connected)
     retranslateUi();
 }
 
+namespace {
+
+QStringView withoutLeadingZeros(QStringView number)
+{
+    while (number.size() > 1 && number.front() == u'0')
+        number = number.mid(1);
+    return number;
+}
+
+// Robot names (letters, digits, '-', '_'), numbers compared as numbers and
+// letters without case: r2 before r10, whatever the locale.
+bool namesInOrder(const QString &a, const QString &b)
+{
+    qsizetype i = 0, j = 0;
+    while (i < a.size() && j < b.size()) {
+        if (a[i].isDigit() && b[j].isDigit()) {
+            const qsizetype i0 = i, j0 = j;
+            while (i < a.size() && a[i].isDigit())
+                ++i;
+            while (j < b.size() && b[j].isDigit())
+                ++j;
+            const QStringView x = withoutLeadingZeros(QStringView(a).mid(i0, i - i0));
+            const QStringView y = withoutLeadingZeros(QStringView(b).mid(j0, j - j0));
+            if (x.size() != y.size())
+                return x.size() < y.size();
+            if (x != y)
+                return x < y;
+            continue;
+        }
+        const QChar x = a[i].toCaseFolded(), y = b[j].toCaseFolded();
+        if (x != y)
+            return x < y;
+        ++i;
+        ++j;
+    }
+    if (a.size() - i != b.size() - j)
+        return a.size() - i < b.size() - j;
+    return a < b;
+}
+
+} // namespace
+
 FleetTile *FleetView::tile(const QString &name) const
 {
     for (FleetTile *t : m_tiles)
@@ -111,6 +155,11 @@ void FleetView::setTiles(const QList<FleetTileValues> &tiles)
         t->setValues(v);
     }
     if (added) {
+        // In the order of their names, numbers as numbers (r2 before r10),
+        // however the bridges came online: the class finds its robot.
+        std::stable_sort(m_tiles.begin(), m_tiles.end(), [](const FleetTile *a, const FleetTile *b) {
+            return namesInOrder(a->values().name, b->values().name);
+        });
         m_empty->setVisible(m_tiles.isEmpty());
         m_scroll->setVisible(!m_tiles.isEmpty());
         relayout(true);

@@ -4135,6 +4135,14 @@ Doppelklick zum Umbenennen</translation>
         <source>  NO LIVE DATA  </source>
         <translation>  KEINE LIVE-DATEN  </translation>
     </message>
+    <message>
+        <source>%1 messages/s from the bridge</source>
+        <translation>%1 Nachrichten/s von der Bridge</translation>
+    </message>
+    <message>
+        <source>Telemetry messages from the robot&apos;s bridge, which sends only what changed. The robot&apos;s own frame rate is on its tile in the fleet view.</source>
+        <translation>Telemetrienachrichten der Bridge des Roboters, die nur Änderungen sendet. Die eigene Bildrate des Roboters steht auf seiner Kachel in der Flottenansicht.</translation>
+    </message>
 </context>
 <context>
     <name>RoomActions</name>

@@ -4134,6 +4134,14 @@ Doble clic para renombrar</translation>
         <source>  NO LIVE DATA  </source>
         <translation>  SIN DATOS EN VIVO  </translation>
     </message>
+    <message>
+        <source>%1 messages/s from the bridge</source>
+        <translation>%1 mensajes/s del puente</translation>
+    </message>
+    <message>
+        <source>Telemetry messages from the robot&apos;s bridge, which sends only what changed. The robot&apos;s own frame rate is on its tile in the fleet view.</source>
+        <translation>Mensajes de telemetría del puente del robot, que solo envía lo que cambió. La tasa de tramas propia del robot está en su ficha de la vista de la flota.</translation>
+    </message>
 </context>
 <context>
     <name>RoomActions</name>

@@ -46,6 +46,7 @@ void RobotStatusBar::showRobot(const RobotSession &robot, bool nameIt)
     m_robot->setStyleSheet(QString("QLabel { border-left: 8px solid %1; padding-left: 4px; font-weight: bold; }")
                                .arg(robot.colour().name()));
     m_firmwareRelease = robot.firmwareRelease();
+    m_overNetwork = robot.settings().transport == oilink::TransportKind::Network;
     showProfile(oitext::fromView(robot.robotProfile().name));
     showState(robot.state());
     showStatistics(robot.statistics());
@@ -76,8 +77,15 @@ void RobotStatusBar::showState(oilink::LinkState state)
 void RobotStatusBar::showStatistics(const oilink::LinkStats &stats)
 {
     m_shownStats = stats;
-    m_rate->setText(tr("%1 frames/s").arg(stats.framesPerSecond, 0, 'f', 1));
     m_errors->setText(tr("checksum failures %1, resyncs %2").arg(stats.checksumFailures).arg(stats.resyncs));
+    // A bridge tells only what changed, in fewer messages than the robot's
+    // frames, and checks the robot's bytes itself.
+    m_errors->setVisible(!m_overNetwork);
+    m_rate->setText(m_overNetwork ? tr("%1 messages/s from the bridge").arg(stats.framesPerSecond, 0, 'f', 1)
+                                  : tr("%1 frames/s").arg(stats.framesPerSecond, 0, 'f', 1));
+    m_rate->setToolTip(m_overNetwork ? tr("Telemetry messages from the robot's bridge, which sends only what changed. "
+                                          "The robot's own frame rate is on its tile in the fleet view.")
+                                     : QString());
 }
 
 void RobotStatusBar::showFirmware(const QString &release)
@@ -123,7 +131,7 @@ QString RobotStatusBar::text() const
         if (!l->isHidden() && !l->text().trimmed().isEmpty())
             parts << l->text().trimmed();
     for (QLabel *l : {m_state, m_profile, m_firmware, m_rate, m_errors})
-        if (!l->text().isEmpty())
+        if (!l->isHidden() && !l->text().isEmpty())
             parts << l->text();
     return parts.join(" | ");
 }

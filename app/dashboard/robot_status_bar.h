@@ -48,6 +48,8 @@ private:
     oilink::LinkStats m_shownStats;
     oilink::RecordingStatus m_shownRecording;
     QString m_firmwareRelease;
+    // A robot beside a bridge: its rate is the bridge's messages, not frames.
+    bool m_overNetwork = false;
     bool m_live = false;
     bool m_replay = false;
 };

@@ -207,6 +207,10 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(remote->isLive() && remote->latest().raw(7) == 0x01, 5000);
         window.refreshDisplay();
         QVERIFY(window.statusText().contains("robot-1"));
+        // Its rate is the bridge's messages, which tell only what changed,
+        // and a bridge has no checksums of its own to count.
+        QTRY_VERIFY_WITH_TIMEOUT(window.statusText().contains("messages/s from the bridge"), 5000);
+        QVERIFY(!window.statusText().contains("checksum failures"));
         // A second click finds the same robot.
         QTest::mouseClick(view.tile("robot-1"), Qt::LeftButton);
         QCOMPARE(window.fleet().count(), 2);
@@ -215,6 +219,9 @@ private slots:
 
         // The local robot drives; Stop all stops it and every bridge.
         window.fleet().select(local);
+        window.refreshDisplay();
+        QVERIFY(window.statusText().contains("frames/s"));
+        QVERIFY(window.statusText().contains("checksum failures"));
         MotionCommand forward;
         forward.velocity = 150;
         const oi::EncodeResult safe = oi::CommandEncoder(local->robotProfile()).safe();

@@ -2,6 +2,7 @@
 #include "bridge_inbox.h"
 
 #include "command_message.h"
+#include "queued_call.h"
 #include "robot_bridge.h"
 
 #include <QMetaObject>
@@ -75,7 +76,7 @@ void BridgeInbox::receive(const QString &topicText, const QByteArray &payload, b
     m_lanes[lane].push_back(std::move(m));
     if (!m_turnPosted) {
         m_turnPosted = true;
-        QMetaObject::invokeMethod(this, &BridgeInbox::deliverTurn, Qt::QueuedConnection);
+        threads::queueCall(this, [this] { deliverTurn(); });
     }
 }
 
@@ -121,7 +122,7 @@ void BridgeInbox::deliverTurn()
     QMutexLocker lock(&m_mutex);
     if (!m_turnPosted && waitingLocked() > 0) {
         m_turnPosted = true;
-        QMetaObject::invokeMethod(this, &BridgeInbox::deliverTurn, Qt::QueuedConnection);
+        threads::queueCall(this, [this] { deliverTurn(); });
     }
 }
 

@@ -4,6 +4,7 @@
 #include "brc_pulser.h"
 
 #include "profile_probe.h"
+#include "queued_call.h"
 #include "stream_packets.h"
 #include "transport.h"
 
@@ -699,7 +700,7 @@ void RobotLink::finishQuery()
     }
     // Not at once: this may run inside the parser, which the next query resets.
     if (!m_queries.empty())
-        QMetaObject::invokeMethod(this, &RobotLink::startNextQuery, Qt::QueuedConnection);
+        threads::queueCall(this, [this] { startNextQuery(); });
 }
 
 // --- The connection doctor ---
@@ -768,7 +769,7 @@ void RobotLink::onDoctorFinished(const ConnectionDoctor::Report &report)
     emit connectionChecked(report);
     greetRobot();
     if (!m_queries.empty())
-        QMetaObject::invokeMethod(this, &RobotLink::startNextQuery, Qt::QueuedConnection);
+        threads::queueCall(this, [this] { startNextQuery(); });
 }
 
 // The port went away or the link closed while the doctor ran.

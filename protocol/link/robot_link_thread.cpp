@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "robot_link_thread.h"
 
+#include "queued_call.h"
+
 #include <QCoreApplication>
 #include <QHash>
 #include <QThreadStorage>
@@ -116,13 +118,10 @@ void RobotLinkThread::relay(RobotLink *link, void (RobotLink::*signal)(Args...),
                 QMutexLocker lock(&m_queueMutex);
                 upTo = m_queuedCount;
             }
-            QMetaObject::invokeMethod(
-                this,
-                [this, handler, upTo, args...] {
-                    deliverQueued(upTo);
-                    handler(args...);
-                },
-                Qt::QueuedConnection);
+            threads::queueCall(this, [this, handler, upTo, args...] {
+                deliverQueued(upTo);
+                handler(args...);
+            });
         },
         Qt::DirectConnection);
 }
@@ -190,13 +189,13 @@ void RobotLinkThread::stop()
 void RobotLinkThread::open(const LinkSettings &settings)
 {
     start();
-    QMetaObject::invokeMethod(m_link, [link = m_link.data(), settings] { link->open(settings); }, Qt::QueuedConnection);
+    threads::queueCall(m_link, [link = m_link.data(), settings] { link->open(settings); });
 }
 
 void RobotLinkThread::close()
 {
     if (m_link && m_thread.isRunning())
-        QMetaObject::invokeMethod(m_link, &RobotLink::close, Qt::QueuedConnection);
+        threads::queueCall(m_link, [link = m_link.data()] { link->close(); });
 }
 
 void RobotLinkThread::closeAndWait()
@@ -210,7 +209,7 @@ void RobotLinkThread::closeAndWait()
 void RobotLinkThread::send(const QByteArray &bytes)
 {
     if (m_link && m_thread.isRunning())
-        QMetaObject::invokeMethod(m_link, [link = m_link.data(), bytes] { link->send(bytes); }, Qt::QueuedConnection);
+        threads::queueCall(m_link, [link = m_link.data(), bytes] { link->send(bytes); });
     else
         emit errorOccurred(tr("not connected: the command was not sent"));
 }
@@ -218,8 +217,7 @@ void RobotLinkThread::send(const QByteArray &bytes)
 void RobotLinkThread::querySensors(const QList<int> &packetIds)
 {
     if (m_link && m_thread.isRunning())
-        QMetaObject::invokeMethod(m_link, [link = m_link.data(), packetIds] { link->querySensors(packetIds); },
-                                  Qt::QueuedConnection);
+        threads::queueCall(m_link, [link = m_link.data(), packetIds] { link->querySensors(packetIds); });
     else
         emit errorOccurred(tr("not connected: the sensor query was not sent"));
 }
@@ -227,7 +225,7 @@ void RobotLinkThread::querySensors(const QList<int> &packetIds)
 void RobotLinkThread::checkConnection()
 {
     if (m_link && m_thread.isRunning()) {
-        QMetaObject::invokeMethod(m_link, [link = m_link.data()] { link->checkConnection(); }, Qt::QueuedConnection);
+        threads::queueCall(m_link, [link = m_link.data()] { link->checkConnection(); });
         return;
     }
     ConnectionDoctor::Report report; // nothing comes back
@@ -238,7 +236,7 @@ void RobotLinkThread::checkConnection()
 void RobotLinkThread::showScript()
 {
     if (m_link && m_thread.isRunning())
-        QMetaObject::invokeMethod(m_link, [link = m_link.data()] { link->showScript(); }, Qt::QueuedConnection);
+        threads::queueCall(m_link, [link = m_link.data()] { link->showScript(); });
     else
         emit scriptFailed(tr("not connected: Show Script was not sent"));
 }
@@ -246,27 +244,25 @@ void RobotLinkThread::showScript()
 void RobotLinkThread::startRecording(const QString &path)
 {
     start();
-    QMetaObject::invokeMethod(m_link, [link = m_link.data(), path] { link->startRecording(path); }, Qt::QueuedConnection);
+    threads::queueCall(m_link, [link = m_link.data(), path] { link->startRecording(path); });
 }
 
 void RobotLinkThread::stopRecording()
 {
     if (m_link && m_thread.isRunning())
-        QMetaObject::invokeMethod(m_link, &RobotLink::stopRecording, Qt::QueuedConnection);
+        threads::queueCall(m_link, [link = m_link.data()] { link->stopRecording(); });
 }
 
 void RobotLinkThread::markRecording(const MarkerEdit &edit)
 {
     if (m_link && m_thread.isRunning())
-        QMetaObject::invokeMethod(m_link, [link = m_link.data(), edit] { link->markRecording(edit); },
-                                  Qt::QueuedConnection);
+        threads::queueCall(m_link, [link = m_link.data(), edit] { link->markRecording(edit); });
 }
 
 void RobotLinkThread::controlReplay(const ReplayCommand &command)
 {
     if (m_link && m_thread.isRunning())
-        QMetaObject::invokeMethod(m_link, [link = m_link.data(), command] { link->controlReplay(command); },
-                                  Qt::QueuedConnection);
+        threads::queueCall(m_link, [link = m_link.data(), command] { link->controlReplay(command); });
 }
 
 // The link's last signals are queued for this object; hand them out now,

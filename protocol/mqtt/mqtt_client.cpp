@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "mqtt_client.h"
 
+#include "queued_call.h"
+
 #include <QCoreApplication>
 #include <QFileInfo>
 #include <QMetaObject>
@@ -195,27 +197,24 @@ bool MqttClient::publish(const QString &topic, const QByteArray &payload, int qo
 void MqttClient::onConnect(mosquitto *, void *self, int rc)
 {
     auto *client = static_cast<MqttClient *>(self);
-    QMetaObject::invokeMethod(client, [client, rc] { client->handleConnected(rc); }, Qt::QueuedConnection);
+    threads::queueCall(client, [client, rc] { client->handleConnected(rc); });
 }
 
 void MqttClient::onSubscribe(mosquitto *, void *self, int, int, const int *)
 {
     auto *client = static_cast<MqttClient *>(self);
-    QMetaObject::invokeMethod(
-        client,
-        [client] {
-            if (!client->m_connected || client->m_unacknowledged == 0)
-                return; // an answer to a connection that is gone
-            if (--client->m_unacknowledged == 0)
-                emit client->subscribed();
-        },
-        Qt::QueuedConnection);
+    threads::queueCall(client, [client] {
+        if (!client->m_connected || client->m_unacknowledged == 0)
+            return; // an answer to a connection that is gone
+        if (--client->m_unacknowledged == 0)
+            emit client->subscribed();
+    });
 }
 
 void MqttClient::onDisconnect(mosquitto *, void *self, int rc)
 {
     auto *client = static_cast<MqttClient *>(self);
-    QMetaObject::invokeMethod(client, [client, rc] { client->handleDisconnected(rc); }, Qt::QueuedConnection);
+    threads::queueCall(client, [client, rc] { client->handleDisconnected(rc); });
 }
 
 void MqttClient::onMessage(mosquitto *, void *self, const mosquitto_message *message)
@@ -227,9 +226,8 @@ void MqttClient::onMessage(mosquitto *, void *self, const mosquitto_message *mes
     // not cost the receiver its memory or its time.
     if (client->m_maxPayloadBytes > 0 && message->payloadlen > client->m_maxPayloadBytes) {
         const qsizetype bytes = message->payloadlen;
-        QMetaObject::invokeMethod(
-            client, [client, topic, bytes, retained] { emit client->payloadTooLarge(topic, bytes, retained); },
-            Qt::QueuedConnection);
+        threads::queueCall(client,
+                           [client, topic, bytes, retained] { emit client->payloadTooLarge(topic, bytes, retained); });
         return;
     }
     const QByteArray payload(static_cast<const char *>(message->payload), message->payloadlen);
@@ -238,9 +236,8 @@ void MqttClient::onMessage(mosquitto *, void *self, const mosquitto_message *mes
         if (client->m_directReceiver)
             return client->m_directReceiver(topic, payload, retained);
     }
-    QMetaObject::invokeMethod(
-        client, [client, topic, payload, retained] { emit client->messageReceived(topic, payload, retained); },
-        Qt::QueuedConnection);
+    threads::queueCall(client,
+                       [client, topic, payload, retained] { emit client->messageReceived(topic, payload, retained); });
 }
 
 // The library says why a TLS handshake failed only in its log.
@@ -249,7 +246,7 @@ void MqttClient::onLog(mosquitto *, void *self, int level, const char *text)
     if (!(level & MOSQ_LOG_ERR) || !std::strstr(text, "certificate verify failed"))
         return;
     auto *client = static_cast<MqttClient *>(self);
-    QMetaObject::invokeMethod(client, [client] { client->handleTlsRefused(); }, Qt::QueuedConnection);
+    threads::queueCall(client, [client] { client->handleTlsRefused(); });
 }
 
 void MqttClient::handleTlsRefused()

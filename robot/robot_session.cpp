@@ -218,6 +218,7 @@ void RobotSession::noteAsked(const std::vector<oi::OiCommand> &commands)
 void RobotSession::setHistoryCapacity(std::size_t samples)
 {
     const bool reduced = m_history.isReducedRate();
+    m_historyKept = samples > 0;
     m_history = SensorHistory(*m_profile, samples);
     m_history.setReducedRate(reduced);
     emit historyReset();
@@ -282,7 +283,8 @@ void RobotSession::onSnapshot(const oi::SensorSnapshot &snapshot, double readSec
     m_latest.merge(frame);
     ++m_snapshotCount;
     // Every frame once: distance and angle are increments since the last one.
-    m_history.append(readSeconds, frame);
+    if (m_historyKept)
+        m_history.append(readSeconds, frame);
     m_odometry.update(snapshot);
     // The time of day the frame was read, for "dropped it to Passive at 12:03:04".
     const bool modeChange = m_mode.observe(frame, m_connectedAtMs + qint64(readSeconds * 1000));

@@ -51,6 +51,10 @@ public:
     // The clock of the link's timed rules (tests advance one). Before the
     // first connectTo().
     void setLinkClock(oilink::Clock &clock) { m_link.setClock(clock); }
+    // The link on this session's thread rather than a worker of its own
+    // (RobotLinkThread::setOnThisThread), for a program that serves one
+    // robot and little else. Before the first connectTo().
+    void setLinkOnThisThread(bool here) { m_link.setOnThisThread(here); }
 
     void connectTo(const oilink::LinkSettings &settings);
     void disconnectFromRobot();
@@ -123,7 +127,8 @@ public:
 
     // Every packet of every frame, on the link's clock (the recording's in a replay).
     const SensorHistory &history() const { return m_history; }
-    // Samples kept per channel; clears the history.
+    // Samples kept per channel; clears the history. 0 keeps none, for a
+    // program that plots nothing (the bridge).
     void setHistoryCapacity(std::size_t samples);
     // A robot nobody is looking at keeps its history at a reduced rate (each
     // block's extremes kept); the selected one at the full rate.
@@ -222,6 +227,7 @@ private:
     RobotFirmware m_firmware;
     RobotMode m_mode;
     SensorHistory m_history;
+    bool m_historyKept = true;
     RecentBytes m_recentBytes;
     RobotOdometry m_odometry;
     std::optional<WheelCalibration> m_calibration;

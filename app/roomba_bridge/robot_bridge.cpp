@@ -462,21 +462,26 @@ void RobotBridge::onFrame(const oi::SensorSnapshot &frame)
 void RobotBridge::publishTelemetry(const oi::SensorSnapshot &frame, bool whole)
 {
     m_frameWaiting = false;
-    bool keyFrame = whole;
-    QJsonObject o;
-    if (whole) {
-        o = oilink::snapshotToJson(frame);
-    } else {
-        const auto changes = m_telemetryChanges.next(frame, m_clock.nowMs());
-        if (!changes.send)
-            return;
-        o = oilink::snapshotToJson(changes.packets);
-        keyFrame = changes.keyFrame;
-    }
+    if (whole)
+        return publishTelemetryText(frame, true);
+    const auto changes = m_telemetryChanges.next(frame, m_clock.nowMs());
+    if (changes.send)
+        publishTelemetryText(changes.packets, changes.keyFrame);
+}
+
+void RobotBridge::publishTelemetryText(const oi::SensorSnapshot &packets, bool keyFrame)
+{
+    // Written as text, not built as a QJsonObject: this runs for most frames.
+    QByteArray text = oilink::snapshotToJsonText(packets);
+    text.chop(1); // the closing brace
+    if (text.size() > 1)
+        text += ',';
     if (keyFrame)
-        o.insert(QLatin1String("key_frame"), true);
-    o.insert(QLatin1String("timestamp"), double(QDateTime::currentMSecsSinceEpoch()) / 1000.0);
-    m_broker.publish(mqtt::topics::telemetry(m_options.name), compact(o));
+        text += "\"key_frame\":true,";
+    const qint64 ms = QDateTime::currentMSecsSinceEpoch();
+    text += "\"timestamp\":" + QByteArray::number(ms / 1000) + '.' + QByteArray::number(ms % 1000).rightJustified(3, '0')
+            + '}';
+    m_broker.publish(mqtt::topics::telemetry(m_options.name), text);
 }
 
 void RobotBridge::publishStats()

@@ -96,6 +96,7 @@ private:
     std::optional<double> batteryShown() const;
     // `whole`: every packet; otherwise what changed (TelemetryChanges).
     void publishTelemetry(const oi::SensorSnapshot &frame, bool whole);
+    void publishTelemetryText(const oi::SensorSnapshot &packets, bool keyFrame);
     void publishStats();
 
     RobotSession &m_robot;

@@ -84,9 +84,20 @@ RobotLinkThread::~RobotLinkThread()
 
 void RobotLinkThread::queue(Queued item)
 {
-    QMutexLocker lock(&m_queueMutex);
-    m_queue.push_back(std::move(item));
-    ++m_queuedCount;
+    {
+        QMutexLocker lock(&m_queueMutex);
+        m_queue.push_back(std::move(item));
+        ++m_queuedCount;
+    }
+    // With the link here, no timer is needed: the thread is awake already,
+    // and the frames go out as soon as the link's own work is done.
+    if (m_linkHere && !m_deliveryPosted) {
+        m_deliveryPosted = true;
+        threads::queueCall(this, [this] {
+            m_deliveryPosted = false;
+            deliverQueued();
+        });
+    }
 }
 
 void RobotLinkThread::deliverQueued(quint64 upTo)
@@ -133,12 +144,14 @@ void RobotLinkThread::setTransportFactory(RobotLink::TransportFactory factory)
 
 void RobotLinkThread::start()
 {
-    if (m_thread.isRunning())
+    if (isRunning())
         return;
     auto *link = new RobotLink(*m_clock);
     link->setTransportFactory(m_factory);
-    link->moveToThread(&m_thread);
-    connect(&m_thread, &QThread::finished, link, &QObject::deleteLater);
+    if (!m_onThisThread) {
+        link->moveToThread(&m_thread);
+        connect(&m_thread, &QThread::finished, link, &QObject::deleteLater);
+    }
     m_link = link;
 
     connect(
@@ -172,17 +185,26 @@ void RobotLinkThread::start()
     relay(link, &RobotLink::errorOccurred, [this](const QString &m) { emit errorOccurred(m); });
     relay(link, &RobotLink::recordingStatus, [this](const RecordingStatus &st) { emit recordingStatus(st); });
     relay(link, &RobotLink::replayStatus, [this](const ReplayStatus &st) { emit replayStatus(st); });
+    if (m_onThisThread) {
+        m_linkHere = true;
+        return;
+    }
     m_thread.start();
     FrameDelivery::started();
 }
 
 void RobotLinkThread::stop()
 {
-    if (!m_thread.isRunning())
+    if (!isRunning())
         return;
     closeAndWait();
-    m_thread.quit();
-    m_thread.wait();
+    if (m_linkHere) {
+        m_linkHere = false;
+        delete m_link.data();
+    } else {
+        m_thread.quit();
+        m_thread.wait();
+    }
     deliverPending();
 }
 
@@ -194,21 +216,24 @@ void RobotLinkThread::open(const LinkSettings &settings)
 
 void RobotLinkThread::close()
 {
-    if (m_link && m_thread.isRunning())
+    if (m_link && isRunning())
         threads::queueCall(m_link, [link = m_link.data()] { link->close(); });
 }
 
 void RobotLinkThread::closeAndWait()
 {
-    if (!m_link || !m_thread.isRunning())
+    if (!m_link || !isRunning())
         return;
-    QMetaObject::invokeMethod(m_link, &RobotLink::close, Qt::BlockingQueuedConnection);
+    if (m_linkHere)
+        m_link->close();
+    else
+        QMetaObject::invokeMethod(m_link, &RobotLink::close, Qt::BlockingQueuedConnection);
     deliverPending();
 }
 
 void RobotLinkThread::send(const QByteArray &bytes)
 {
-    if (m_link && m_thread.isRunning())
+    if (m_link && isRunning())
         threads::queueCall(m_link, [link = m_link.data(), bytes] { link->send(bytes); });
     else
         emit errorOccurred(tr("not connected: the command was not sent"));
@@ -216,7 +241,7 @@ void RobotLinkThread::send(const QByteArray &bytes)
 
 void RobotLinkThread::querySensors(const QList<int> &packetIds)
 {
-    if (m_link && m_thread.isRunning())
+    if (m_link && isRunning())
         threads::queueCall(m_link, [link = m_link.data(), packetIds] { link->querySensors(packetIds); });
     else
         emit errorOccurred(tr("not connected: the sensor query was not sent"));
@@ -224,7 +249,7 @@ void RobotLinkThread::querySensors(const QList<int> &packetIds)
 
 void RobotLinkThread::checkConnection()
 {
-    if (m_link && m_thread.isRunning()) {
+    if (m_link && isRunning()) {
         threads::queueCall(m_link, [link = m_link.data()] { link->checkConnection(); });
         return;
     }
@@ -235,7 +260,7 @@ void RobotLinkThread::checkConnection()
 
 void RobotLinkThread::showScript()
 {
-    if (m_link && m_thread.isRunning())
+    if (m_link && isRunning())
         threads::queueCall(m_link, [link = m_link.data()] { link->showScript(); });
     else
         emit scriptFailed(tr("not connected: Show Script was not sent"));
@@ -249,19 +274,19 @@ void RobotLinkThread::startRecording(const QString &path)
 
 void RobotLinkThread::stopRecording()
 {
-    if (m_link && m_thread.isRunning())
+    if (m_link && isRunning())
         threads::queueCall(m_link, [link = m_link.data()] { link->stopRecording(); });
 }
 
 void RobotLinkThread::markRecording(const MarkerEdit &edit)
 {
-    if (m_link && m_thread.isRunning())
+    if (m_link && isRunning())
         threads::queueCall(m_link, [link = m_link.data(), edit] { link->markRecording(edit); });
 }
 
 void RobotLinkThread::controlReplay(const ReplayCommand &command)
 {
-    if (m_link && m_thread.isRunning())
+    if (m_link && isRunning())
         threads::queueCall(m_link, [link = m_link.data(), command] { link->controlReplay(command); });
 }
 
@@ -275,22 +300,23 @@ void RobotLinkThread::deliverPending()
 
 std::chrono::microseconds RobotLinkThread::workerCpuTime() const
 {
-    if (!m_link || !m_thread.isRunning())
+    if (!m_link || !isRunning())
         return std::chrono::microseconds(0);
     std::chrono::microseconds used(0);
 #ifdef RUSAGE_THREAD
-    QMetaObject::invokeMethod(
-        m_link,
-        [&used] {
-            rusage usage{};
-            if (getrusage(RUSAGE_THREAD, &usage) == 0) {
-                const auto total = [](const timeval &t) {
-                    return std::chrono::seconds(t.tv_sec) + std::chrono::microseconds(t.tv_usec);
-                };
-                used = total(usage.ru_utime) + total(usage.ru_stime);
-            }
-        },
-        Qt::BlockingQueuedConnection);
+    const auto readUsage = [&used] {
+        rusage usage{};
+        if (getrusage(RUSAGE_THREAD, &usage) == 0) {
+            const auto total = [](const timeval &t) {
+                return std::chrono::seconds(t.tv_sec) + std::chrono::microseconds(t.tv_usec);
+            };
+            used = total(usage.ru_utime) + total(usage.ru_stime);
+        }
+    };
+    if (m_linkHere)
+        readUsage();
+    else
+        QMetaObject::invokeMethod(m_link, readUsage, Qt::BlockingQueuedConnection);
 #endif
     return used;
 }

@@ -24,6 +24,11 @@ namespace oilink {
 // every link on it queued, kDeliveryMs apart. Thirty robots streaming at
 // 66.7 Hz then wake that thread 40 times a second, not 4000. Every other
 // signal hands out the frames queued before it first, so the order holds.
+//
+// A program whose thread serves one robot and little else (the bridge) can
+// keep the link on that thread instead (setOnThisThread): it then wakes once
+// a frame, not once for the link and again for the delivery, and the calls
+// and signals are queued on that one thread, in the same order.
 class RobotLinkThread : public QObject {
     Q_OBJECT
 public:
@@ -38,20 +43,24 @@ public:
     // The clock the link's timed rules run on (the steady clock unless
     // told). Before start().
     void setClock(Clock &clock) { m_clock = &clock; }
+    // The link on this object's thread, without a worker. Before start().
+    void setOnThisThread(bool here) { m_onThisThread = here; }
 
-    // Starts the worker thread (open() does it too). Idempotent.
+    // Starts the worker thread, or makes the link here (open() does it
+    // too). Idempotent.
     void start();
     // Closes the link (the robot is left stopped and in Passive), waits for
     // it, delivers what it said last, and ends the thread.
     void stop();
-    bool isRunning() const { return m_thread.isRunning(); }
+    bool isRunning() const { return m_thread.isRunning() || m_linkHere; }
 
     // What the link last reported, as seen on this thread.
     LinkState state() const { return m_state; }
     LinkStats lastStatistics() const { return m_stats; }
 
-    // CPU time the worker thread has used so far; blocks briefly. For the
-    // diagnostics view and the latency benchmark. Zero when not running.
+    // CPU time the worker thread (or this one, with the link here) has used
+    // so far; blocks briefly. For the diagnostics view and the latency
+    // benchmark. Zero when not running.
     std::chrono::microseconds workerCpuTime() const;
 
 public slots:
@@ -105,6 +114,9 @@ private:
     void relay(RobotLink *link, void (RobotLink::*signal)(Args...), Handler handler);
 
     QThread m_thread;
+    bool m_onThisThread = false;
+    bool m_linkHere = false;       // started with the link on this thread
+    bool m_deliveryPosted = false; // with the link here: a delivery is queued
     QPointer<RobotLink> m_link;
     RobotLink::TransportFactory m_factory;
     Clock *m_clock = &Clock::steady();

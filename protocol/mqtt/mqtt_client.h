@@ -6,6 +6,7 @@
 #include <QByteArray>
 #include <QMutex>
 #include <QObject>
+#include <QSocketNotifier>
 #include <QString>
 #include <QStringList>
 #include <QTimer>
@@ -29,6 +30,12 @@ struct LastWill {
 // network thread does the socket work (without Nagle's delay) and reconnects
 // every second; this object reports everything on the thread that owns it.
 // Subscriptions are made again after every reconnect.
+//
+// With setNetworkOnThisThread, the socket work is done on the owner's thread
+// instead, driven by its event loop: a publish is written at once rather
+// than waking a network thread to write it, for a program that publishes
+// at every few frames of a robot and whose thread never works long (the
+// bridge).
 class MqttClient : public QObject {
     Q_OBJECT
 public:
@@ -42,6 +49,9 @@ public:
     // Keepalive in seconds: how soon the broker notices a client that died
     // (about 1.5 times this). Default 5.
     void setKeepAliveSeconds(int seconds) { m_keepAliveSeconds = seconds; }
+    // The socket work on this object's thread, without a network thread of
+    // the library's. Before connectToBroker.
+    void setNetworkOnThisThread(bool here) { m_networkHere = here; }
 
     // Starts connecting, and keeps reconnecting until disconnectFromBroker.
     // Returns false, with errorOccurred, for settings the library refuses
@@ -59,9 +69,10 @@ public:
     // they are copied, and reported by payloadTooLarge. 0: no limit.
     void setMaxPayloadBytes(qsizetype bytes) { m_maxPayloadBytes = bytes; }
     // For a receiver that must see each message as it arrives (the bridge
-    // times heartbeats that way): called on libmosquitto's network thread
-    // instead of messageReceived. It must be quick and thread-safe. Setting
-    // an empty one waits for a call under way: do so before the receiver dies.
+    // times heartbeats that way): called on the thread that reads the
+    // socket (libmosquitto's network thread, or this one) instead of
+    // messageReceived. It must be quick and thread-safe. Setting an empty one
+    // waits for a call under way: do so before the receiver dies.
     using DirectReceiver = std::function<void(const QString &topic, const QByteArray &payload, bool retained)>;
     void setDirectReceiver(DirectReceiver receiver);
 
@@ -95,6 +106,12 @@ private:
     static void onLog(mosquitto *, void *self, int level, const char *text);
 
     void tryConnecting();
+    // With the network on this thread: watch the socket the library has now.
+    void watchSocket();
+    void unwatchSocket();
+    void serviceSocket(bool readable);
+    // Returns false when the connection is lost (the library has said so).
+    bool handled(int rc);
     void handleConnected(int rc);
     void handleDisconnected(int rc);
     void handleTlsRefused();
@@ -107,6 +124,10 @@ private:
     mosquitto *m_mosq = nullptr;
     bool m_connected = false;
     bool m_loopRunning = false;
+    bool m_networkHere = false;
+    QSocketNotifier *m_readable = nullptr;
+    QSocketNotifier *m_writable = nullptr;
+    QTimer m_housekeeping; // keepalive pings, with the network here
     static constexpr int kRetryMs = 1000;
     QTimer m_retry;
     QTimer m_noAnswer; // says so when no broker has answered soon after connectToBroker

@@ -10,11 +10,14 @@
 #include "transport.h"
 #include "transport_factory.h"
 
+#include <QDir>
+#include <QFileInfo>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QThread>
 
 #include <algorithm>
 #include <atomic>
@@ -433,11 +436,19 @@ private slots:
     }
 
     // Closing stops the robot and leaves it in Passive, from the model.
+    void closingStopsAndLeavesPassive_data()
+    {
+        QTest::addColumn<bool>("linkHere");
+        QTest::newRow("link on its own thread") << false;
+        QTest::newRow("link on the session's thread") << true;
+    }
     void closingStopsAndLeavesPassive()
     {
+        QFETCH(bool, linkHere);
         Recording recording;
         recording.mode = 2;
         RobotSession robot;
+        robot.setLinkOnThisThread(linkHere);
         robot.setTransportFactory([&recording](const oilink::LinkSettings &) { return new RecordingTransport(&recording); });
         robot.connectTo(oilink::LinkSettings::serial("/dev/recording", oi::ProfileId::Create2));
         QTRY_VERIFY_WITH_TIMEOUT(robot.isLive(), 5000);
@@ -451,6 +462,37 @@ private slots:
         const oi::CommandEncoder encoder(oi::profile(oi::ProfileId::Create2));
         QVERIFY2(!writes.isEmpty(), "nothing was sent on close");
         QCOMPARE(writes.last(), byteText(toBytes(encoder.shutdownSequence())));
+    }
+
+    // The bridge's way: no worker thread; frames, commands and the mode
+    // the robot reports go through the session's own event loop.
+    void theLinkCanRunOnTheSessionsThread()
+    {
+        const auto linkThreads = [] {
+            int n = 0;
+            for (const QFileInfo &task : QDir(QStringLiteral("/proc/self/task")).entryInfoList(QDir::Dirs | QDir::NoDotAndDotDot)) {
+                QFile comm(task.filePath() + QStringLiteral("/comm"));
+                n += comm.open(QIODevice::ReadOnly) && comm.readAll().trimmed() == "robot link";
+            }
+            return n;
+        };
+        const int before = linkThreads();
+        RobotSession robot;
+        robot.setLinkOnThisThread(true);
+        robot.setTransportFactory(transports::transportFactory());
+        QList<double> frameTimes;
+        connect(&robot, &RobotSession::frameReceived, this, [&](double t, const oi::SensorSnapshot &) {
+            QCOMPARE(QThread::currentThread(), thread());
+            frameTimes.append(t);
+        });
+        robot.connectTo(oilink::LinkSettings::virtualRobotOf(oi::ProfileId::Create2, oi::ProfileId::Create2));
+        QTRY_VERIFY_WITH_TIMEOUT(frameTimes.size() >= 10, 5000);
+        QCOMPARE(linkThreads(), before);
+        QVERIFY(std::is_sorted(frameTimes.cbegin(), frameTimes.cend()));
+        QVERIFY(robot.send(oi::OiCommand{oi::Command::Safe, {}, {}}));
+        QTRY_COMPARE_WITH_TIMEOUT(robot.mode().reported(), std::optional(oi::OiMode::Safe), 5000);
+        robot.closeAndWait();
+        QCOMPARE(robot.state(), oilink::LinkState::Closed);
     }
 
     // ERRATA 20: leaving a Create's Safe or Full mode (Stop all, Start from

@@ -10,6 +10,8 @@
 #include <mosquitto.h>
 
 #include <cstring>
+
+#include <poll.h>
 #include <mutex>
 
 namespace mqtt {
@@ -196,6 +198,17 @@ void MqttClient::serviceSocket(bool readable)
     if (mosquitto_want_write(m_mosq) && !handled(mosquitto_loop_write(m_mosq, 1)))
         return;
     m_writable->setEnabled(mosquitto_want_write(m_mosq));
+}
+
+void MqttClient::readWhatHasArrived()
+{
+    // Bounded, so that a flood cannot keep the caller here.
+    constexpr int kMostPackets = 256;
+    for (int i = 0; i < kMostPackets && m_readable; ++i) {
+        pollfd waiting{mosquitto_socket(m_mosq), POLLIN, 0};
+        if (waiting.fd < 0 || ::poll(&waiting, 1, 0) <= 0 || !handled(mosquitto_loop_read(m_mosq, 1)))
+            return;
+    }
 }
 
 bool MqttClient::handled(int rc)

@@ -76,6 +76,13 @@ public:
     using DirectReceiver = std::function<void(const QString &topic, const QByteArray &payload, bool retained)>;
     void setDirectReceiver(DirectReceiver receiver);
 
+    // With the network on this thread: reads every message that has already
+    // arrived in the socket, now, rather than when the event loop comes to
+    // it. For a receiver about to judge what has arrived by now (the
+    // bridge's heartbeat). Does nothing with a network thread, which reads
+    // as messages come.
+    void readWhatHasArrived();
+
     // Kept and made again after each reconnect. Wildcards + and # allowed.
     void subscribe(const QString &topicFilter, int qos = 0);
     // Connected, and the broker has acknowledged every subscription: from

@@ -5,7 +5,12 @@
 // bridge's CPU time over the run as a share of one core, and its resident
 // memory at the end and at its peak, from /proc.
 //
-//   bench_bridge_cost [--seconds S] [--full-telemetry]
+// By default the virtual robot is simulated in the bridge's own process
+// (--sim), so its cost counts too. With --robot-process it runs apart, in
+// roomba-sim on a TCP port, and the bridge reads it as it would read a
+// robot on a Pi's serial port: what is measured is the bridge's own work.
+//
+//   bench_bridge_cost [--seconds S] [--full-telemetry] [--robot-process]
 #include "mosquitto_broker.h"
 
 #include <QCoreApplication>
@@ -52,6 +57,7 @@ int main(int argc, char **argv)
     const qsizetype s = args.indexOf(QStringLiteral("--seconds"));
     const int seconds = s >= 0 && s + 1 < args.size() ? args[s + 1].toInt() : 600;
     const bool full = args.contains(QStringLiteral("--full-telemetry"));
+    const bool robotApart = args.contains(QStringLiteral("--robot-process"));
 
     MosquittoBroker broker;
     if (!broker.start()) {
@@ -63,10 +69,23 @@ int main(int argc, char **argv)
     watcher.start(QStringLiteral("/usr/bin/mosquitto_sub"),
                   {QStringLiteral("-h"), QStringLiteral("127.0.0.1"), QStringLiteral("-p"), QString::number(broker.port()),
                    QStringLiteral("-t"), QStringLiteral("roomba/#")});
+    QProcess robot;
+    QStringList robotArgs{QStringLiteral("--sim")};
+    if (robotApart) {
+        // It prints tcp://ADDRESS:PORT on its first line.
+        robot.start(QStringLiteral(ROOMBA_SIM_PATH), {QStringLiteral("--tcp"), QStringLiteral("0")});
+        if (!robot.waitForReadyRead(10000)) {
+            std::fprintf(stderr, "roomba-sim did not say where it listens\n");
+            return 1;
+        }
+        const QByteArray where = robot.readLine().trimmed();
+        robotArgs = {QStringLiteral("--tcp"), QString::fromLatin1(where.mid(where.indexOf("://") + 3))};
+    }
     QProcess bridge;
     bridge.setProcessChannelMode(QProcess::ForwardedErrorChannel);
     QStringList bridgeArgs{QStringLiteral("--broker"), broker.url(), QStringLiteral("--name"), QStringLiteral("r1"),
-                           QStringLiteral("--sim"), QStringLiteral("--profile"), QStringLiteral("create2")};
+                           QStringLiteral("--profile"), QStringLiteral("create2")};
+    bridgeArgs << robotArgs;
     if (full)
         bridgeArgs << QStringLiteral("--full-telemetry");
     bridge.start(QStringLiteral(ROOMBA_BRIDGE_PATH), bridgeArgs);
@@ -87,12 +106,14 @@ int main(int argc, char **argv)
     bridge.waitForFinished(5000);
     watcher.kill();
     watcher.waitForFinished();
+    robot.terminate();
+    robot.waitForFinished(5000);
     if (cpuBefore < 0 || cpuAfter < 0) {
         std::fprintf(stderr, "the bridge exited during the run\n");
         return 1;
     }
-    std::printf("roomba-bridge on the virtual robot, %s telemetry, %.0f s: CPU %.2f %% of one core; RSS %s (peak %s)\n",
-                full ? "full" : "default", elapsed, 100.0 * (cpuAfter - cpuBefore) / elapsed, rss.constData(),
+    std::printf("roomba-bridge on the virtual robot (%s), %s telemetry, %.0f s: CPU %.2f %% of one core; RSS %s (peak %s)\n",
+                robotApart ? "in roomba-sim over TCP" : "in the bridge's process", full ? "full" : "default", elapsed, 100.0 * (cpuAfter - cpuBefore) / elapsed, rss.constData(),
                 peak.constData());
     return 0;
 }

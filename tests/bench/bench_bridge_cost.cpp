@@ -7,8 +7,9 @@
 //
 // By default the virtual robot is simulated in the bridge's own process
 // (--sim), so its cost counts too. With --robot-process it runs apart, in
-// roomba-sim on a TCP port, and the bridge reads it as it would read a
-// robot on a Pi's serial port: what is measured is the bridge's own work.
+// roomba-sim on a pseudo-terminal (whose BRC pin the link pulses to keep
+// the robot awake), and the bridge reads it as it would read a robot on a
+// Pi's serial port: what is measured is the bridge's own work.
 //
 //   bench_bridge_cost [--seconds S] [--full-telemetry] [--robot-process]
 #include "mosquitto_broker.h"
@@ -72,14 +73,13 @@ int main(int argc, char **argv)
     QProcess robot;
     QStringList robotArgs{QStringLiteral("--sim")};
     if (robotApart) {
-        // It prints tcp://ADDRESS:PORT on its first line.
-        robot.start(QStringLiteral(ROOMBA_SIM_PATH), {QStringLiteral("--tcp"), QStringLiteral("0")});
+        // It prints its device on its first line.
+        robot.start(QStringLiteral(ROOMBA_SIM_PATH), QStringList{});
         if (!robot.waitForReadyRead(10000)) {
-            std::fprintf(stderr, "roomba-sim did not say where it listens\n");
+            std::fprintf(stderr, "roomba-sim did not say where it is\n");
             return 1;
         }
-        const QByteArray where = robot.readLine().trimmed();
-        robotArgs = {QStringLiteral("--tcp"), QString::fromLatin1(where.mid(where.indexOf("://") + 3))};
+        robotArgs = {QStringLiteral("--port"), QString::fromLocal8Bit(robot.readLine().trimmed())};
     }
     QProcess bridge;
     bridge.setProcessChannelMode(QProcess::ForwardedErrorChannel);
@@ -113,7 +113,7 @@ int main(int argc, char **argv)
         return 1;
     }
     std::printf("roomba-bridge on the virtual robot (%s), %s telemetry, %.0f s: CPU %.2f %% of one core; RSS %s (peak %s)\n",
-                robotApart ? "in roomba-sim over TCP" : "in the bridge's process", full ? "full" : "default", elapsed, 100.0 * (cpuAfter - cpuBefore) / elapsed, rss.constData(),
+                robotApart ? "in roomba-sim on a pty" : "in the bridge's process", full ? "full" : "default", elapsed, 100.0 * (cpuAfter - cpuBefore) / elapsed, rss.constData(),
                 peak.constData());
     return 0;
 }

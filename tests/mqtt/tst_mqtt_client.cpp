@@ -8,6 +8,7 @@
 #include "mosquitto_broker.h"
 #include "mqtt_client.h"
 
+#include <QDeadlineTimer>
 #include <QSignalSpy>
 #include <QTest>
 #include <QThread>
@@ -258,6 +259,18 @@ private slots:
         QTRY_COMPARE_WITH_TIMEOUT(readOn.size(), 1, 5000);
         QCOMPARE(readOn[0], QThread::currentThread());
         QCOMPARE(got, QByteArray("hello"));
+
+        // Without this thread's event loop, only readWhatHasArrived reads:
+        // what is in the socket is read when asked, as the bridge asks
+        // before it judges a heartbeat.
+        QVERIFY(other.publish(QStringLiteral("to/here"), "waiting", 1));
+        QDeadlineTimer deadline(10000);
+        while (readOn.size() < 2 && !deadline.hasExpired()) {
+            here.readWhatHasArrived();
+            QThread::yieldCurrentThread();
+        }
+        QCOMPARE(readOn.size(), 2);
+        QCOMPARE(got, QByteArray("waiting"));
 
         QByteArray large(4 << 20, '\0');
         for (qsizetype i = 0; i < large.size(); ++i)

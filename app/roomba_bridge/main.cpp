@@ -113,9 +113,6 @@ int main(int argc, char *argv[])
     mqtt::MqttClient broker(config->broker.username.isEmpty() ? QStringLiteral("roomba-bridge-%1").arg(config->name)
                                                               : config->broker.username);
     broker.setLastWill(RobotBridge::lastWill(config->name));
-    // Telemetry goes out every few frames: written at once by this thread,
-    // which wakes for each frame anyway, rather than by a thread woken for it.
-    broker.setNetworkOnThisThread(true);
     SteadyLeaseClock clock;
     RobotBridge bridge(robot, broker, clock, {config->name, config->telemetryRateHz, config->fullTelemetry, config->allowFull});
     const std::optional<mqtt::BrokerAddress> stopLineAddress = config->stopLine();

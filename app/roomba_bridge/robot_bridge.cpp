@@ -75,10 +75,7 @@ RobotBridge::RobotBridge(RobotSession &robot, mqtt::MqttClient &broker, LeaseClo
         m_inbox.receive(topic, payload, retained);
     });
     m_inbox.setHandler([this](const BridgeInbox::Message &m) { onMessage(m); });
-    m_lease.setBeforeJudging([this] {
-        m_broker.readWhatHasArrived();
-        m_inbox.deliverUrgent();
-    });
+    m_lease.setBeforeJudging([this] { m_inbox.deliverUrgent(); });
     connect(&m_broker, &mqtt::MqttClient::payloadTooLarge, this,
             [this](const QString &topic, qsizetype bytes, bool) { onPayloadTooLarge(topic, bytes); });
 

@@ -10,8 +10,6 @@
 #include <mosquitto.h>
 
 #include <cstring>
-
-#include <poll.h>
 #include <mutex>
 
 namespace mqtt {
@@ -55,12 +53,6 @@ MqttClient::MqttClient(QString clientId, QObject *parent)
     initLibraryOnce();
     m_retry.setSingleShot(true);
     connect(&m_retry, &QTimer::timeout, this, &MqttClient::tryConnecting);
-    // Keepalive pings, and noticing a broker that stopped answering them.
-    m_housekeeping.setInterval(1000);
-    connect(&m_housekeeping, &QTimer::timeout, this, [this] {
-        if (m_mosq && handled(mosquitto_loop_misc(m_mosq)))
-            serviceSocket(false);
-    });
     m_noAnswer.setSingleShot(true);
     m_noAnswer.setInterval(kNoAnswerMs);
     connect(&m_noAnswer, &QTimer::timeout, this, [this] {
@@ -135,18 +127,13 @@ bool MqttClient::connectToBroker(const BrokerAddress &address)
 
 // Until the first connection starts, a refused or unreachable broker is tried
 // again here; after it, libmosquitto's network thread reconnects by itself.
-// With the network on this thread, every reconnect starts here.
 void MqttClient::tryConnecting()
 {
-    if (!m_mosq || m_loopRunning || m_readable)
+    if (!m_mosq || m_loopRunning)
         return;
     if (mosquitto_connect_async(m_mosq, m_address.host.toUtf8().constData(), m_address.port, m_keepAliveSeconds)
         != MOSQ_ERR_SUCCESS) {
         m_retry.start(kRetryMs);
-        return;
-    }
-    if (m_networkHere) {
-        watchSocket();
         return;
     }
     const int rc = mosquitto_loop_start(m_mosq);
@@ -157,70 +144,6 @@ void MqttClient::tryConnecting()
     m_loopRunning = true;
 }
 
-void MqttClient::watchSocket()
-{
-    const int fd = mosquitto_socket(m_mosq);
-    if (fd < 0) {
-        m_retry.start(kRetryMs);
-        return;
-    }
-    m_readable = new QSocketNotifier(qintptr(fd), QSocketNotifier::Read, this);
-    connect(m_readable, &QSocketNotifier::activated, this, [this] { serviceSocket(true); });
-    m_writable = new QSocketNotifier(qintptr(fd), QSocketNotifier::Write, this);
-    connect(m_writable, &QSocketNotifier::activated, this, [this] { serviceSocket(false); });
-    // The connect packet waits for the connection to be made.
-    m_writable->setEnabled(mosquitto_want_write(m_mosq));
-    m_housekeeping.start();
-}
-
-void MqttClient::unwatchSocket()
-{
-    // The library has closed the socket (or is about to): stop watching it
-    // now, before its number is given to another.
-    for (QSocketNotifier *n : {m_readable, m_writable})
-        if (n) {
-            n->setEnabled(false);
-            n->deleteLater();
-        }
-    m_readable = m_writable = nullptr;
-    m_housekeeping.stop();
-}
-
-// Reads what came (one packet at a time: the event loop comes back while
-// more waits), or writes what waits; then watches for room to write only
-// while something is left to write.
-void MqttClient::serviceSocket(bool readable)
-{
-    if (!m_mosq || !m_readable)
-        return;
-    if (readable && !handled(mosquitto_loop_read(m_mosq, 1)))
-        return;
-    if (mosquitto_want_write(m_mosq) && !handled(mosquitto_loop_write(m_mosq, 1)))
-        return;
-    m_writable->setEnabled(mosquitto_want_write(m_mosq));
-}
-
-void MqttClient::readWhatHasArrived()
-{
-    // Bounded, so that a flood cannot keep the caller here.
-    constexpr int kMostPackets = 256;
-    for (int i = 0; i < kMostPackets && m_readable; ++i) {
-        pollfd waiting{mosquitto_socket(m_mosq), POLLIN, 0};
-        if (waiting.fd < 0 || ::poll(&waiting, 1, 0) <= 0 || !handled(mosquitto_loop_read(m_mosq, 1)))
-            return;
-    }
-}
-
-bool MqttClient::handled(int rc)
-{
-    if (rc == MOSQ_ERR_SUCCESS && mosquitto_socket(m_mosq) >= 0)
-        return true;
-    // The library closed the socket and has called onDisconnect.
-    unwatchSocket();
-    m_retry.start(kRetryMs);
-    return false;
-}
-
 void MqttClient::disconnectFromBroker()
 {
     if (!m_mosq)
@@ -229,7 +152,6 @@ void MqttClient::disconnectFromBroker()
     m_retry.stop();
     m_noAnswer.stop();
     mosquitto_disconnect(m_mosq);
-    unwatchSocket();
     if (m_loopRunning)
         mosquitto_loop_stop(m_mosq, true);
     m_loopRunning = false;
@@ -260,20 +182,15 @@ void MqttClient::sendSubscription(const QString &topicFilter, int qos)
 {
     if (mosquitto_subscribe(m_mosq, nullptr, topicFilter.toUtf8().constData(), qos) == MOSQ_ERR_SUCCESS)
         ++m_unacknowledged;
-    serviceSocket(false);
 }
 
 bool MqttClient::publish(const QString &topic, const QByteArray &payload, int qos, bool retain)
 {
     if (!m_mosq || (!m_connected && qos == 0))
         return false;
-    const bool queued = mosquitto_publish(m_mosq, nullptr, topic.toUtf8().constData(), int(payload.size()),
-                                          payload.constData(), qos, retain)
-                        == MOSQ_ERR_SUCCESS;
-    // With the network here the library wrote what it could at once; the
-    // rest goes when the socket has room.
-    serviceSocket(false);
-    return queued;
+    return mosquitto_publish(m_mosq, nullptr, topic.toUtf8().constData(), int(payload.size()),
+                             payload.constData(), qos, retain)
+           == MOSQ_ERR_SUCCESS;
 }
 
 // The callbacks run on libmosquitto's network thread: hand over to ours.

@@ -6,7 +6,6 @@
 #include <QByteArray>
 #include <QMutex>
 #include <QObject>
-#include <QSocketNotifier>
 #include <QString>
 #include <QStringList>
 #include <QTimer>
@@ -30,12 +29,6 @@ struct LastWill {
 // network thread does the socket work (without Nagle's delay) and reconnects
 // every second; this object reports everything on the thread that owns it.
 // Subscriptions are made again after every reconnect.
-//
-// With setNetworkOnThisThread, the socket work is done on the owner's thread
-// instead, driven by its event loop: a publish is written at once rather
-// than waking a network thread to write it, for a program that publishes
-// at every few frames of a robot and whose thread never works long (the
-// bridge).
 class MqttClient : public QObject {
     Q_OBJECT
 public:
@@ -49,9 +42,6 @@ public:
     // Keepalive in seconds: how soon the broker notices a client that died
     // (about 1.5 times this). Default 5.
     void setKeepAliveSeconds(int seconds) { m_keepAliveSeconds = seconds; }
-    // The socket work on this object's thread, without a network thread of
-    // the library's. Before connectToBroker.
-    void setNetworkOnThisThread(bool here) { m_networkHere = here; }
 
     // Starts connecting, and keeps reconnecting until disconnectFromBroker.
     // Returns false, with errorOccurred, for settings the library refuses
@@ -69,19 +59,11 @@ public:
     // they are copied, and reported by payloadTooLarge. 0: no limit.
     void setMaxPayloadBytes(qsizetype bytes) { m_maxPayloadBytes = bytes; }
     // For a receiver that must see each message as it arrives (the bridge
-    // times heartbeats that way): called on the thread that reads the
-    // socket (libmosquitto's network thread, or this one) instead of
-    // messageReceived. It must be quick and thread-safe. Setting an empty one
-    // waits for a call under way: do so before the receiver dies.
+    // times heartbeats that way): called on libmosquitto's network thread
+    // instead of messageReceived. It must be quick and thread-safe. Setting
+    // an empty one waits for a call under way: do so before the receiver dies.
     using DirectReceiver = std::function<void(const QString &topic, const QByteArray &payload, bool retained)>;
     void setDirectReceiver(DirectReceiver receiver);
-
-    // With the network on this thread: reads every message that has already
-    // arrived in the socket, now, rather than when the event loop comes to
-    // it. For a receiver about to judge what has arrived by now (the
-    // bridge's heartbeat). Does nothing with a network thread, which reads
-    // as messages come.
-    void readWhatHasArrived();
 
     // Kept and made again after each reconnect. Wildcards + and # allowed.
     void subscribe(const QString &topicFilter, int qos = 0);
@@ -113,12 +95,6 @@ private:
     static void onLog(mosquitto *, void *self, int level, const char *text);
 
     void tryConnecting();
-    // With the network on this thread: watch the socket the library has now.
-    void watchSocket();
-    void unwatchSocket();
-    void serviceSocket(bool readable);
-    // Returns false when the connection is lost (the library has said so).
-    bool handled(int rc);
     void handleConnected(int rc);
     void handleDisconnected(int rc);
     void handleTlsRefused();
@@ -131,10 +107,6 @@ private:
     mosquitto *m_mosq = nullptr;
     bool m_connected = false;
     bool m_loopRunning = false;
-    bool m_networkHere = false;
-    QSocketNotifier *m_readable = nullptr;
-    QSocketNotifier *m_writable = nullptr;
-    QTimer m_housekeeping; // keepalive pings, with the network here
     static constexpr int kRetryMs = 1000;
     QTimer m_retry;
     QTimer m_noAnswer; // says so when no broker has answered soon after connectToBroker

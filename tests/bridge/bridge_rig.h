@@ -63,10 +63,8 @@ struct BridgeRig {
     {
         if (!stopLineAt && broker.username.isEmpty())
             stopLineAt = broker;
-        // As roomba-bridge: the link and the broker connection's socket on
-        // this thread.
+        // As roomba-bridge: the link on this thread.
         session.setLinkOnThisThread(true);
-        client.setNetworkOnThisThread(true);
         recording.mode = int(oi::OiMode::Safe);
         if (robot == Robot::Recording) {
             session.setTransportFactory(

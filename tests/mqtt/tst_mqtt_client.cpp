@@ -8,10 +8,8 @@
 #include "mosquitto_broker.h"
 #include "mqtt_client.h"
 
-#include <QDeadlineTimer>
 #include <QSignalSpy>
 #include <QTest>
-#include <QThread>
 
 using namespace mqtt;
 
@@ -22,15 +20,6 @@ private:
     static BrokerAddress addressOf(const MosquittoBroker &broker)
     {
         return *BrokerAddress::fromUrl(broker.url(), nullptr);
-    }
-
-    // Each client test runs twice: with libmosquitto's network thread, and
-    // with the socket served by the test's own event loop (the bridge's way).
-    static void bothNetworks()
-    {
-        QTest::addColumn<bool>("here");
-        QTest::newRow("network thread") << false;
-        QTest::newRow("network on this thread") << true;
     }
 
 private slots:
@@ -104,15 +93,11 @@ private slots:
         QVERIFY(isValidName(QStringLiteral("Robot_7-b")));
     }
 
-    void publishAndSubscribe_data() { bothNetworks(); }
     void publishAndSubscribe()
     {
-        QFETCH(bool, here);
         MosquittoBroker broker;
         QVERIFY2(broker.start(), qPrintable(broker.error()));
         MqttClient a(QStringLiteral("a")), b(QStringLiteral("b"));
-        a.setNetworkOnThisThread(here);
-        b.setNetworkOnThisThread(here);
         QSignalSpy aUp(&a, &MqttClient::connected), bUp(&b, &MqttClient::connected);
         QSignalSpy received(&b, &MqttClient::messageReceived);
         b.subscribe(QStringLiteral("roomba/+/state"));
@@ -138,14 +123,11 @@ private slots:
 
     // Over the limit: reported with its size, never delivered; at the
     // limit: delivered, as the direct receiver sees it.
-    void payloadsOverTheLimitAreDroppedUnread_data() { bothNetworks(); }
     void payloadsOverTheLimitAreDroppedUnread()
     {
-        QFETCH(bool, here);
         MosquittoBroker broker;
         QVERIFY2(broker.start(), qPrintable(broker.error()));
         MqttClient sender(QStringLiteral("sender")), bounded(QStringLiteral("bounded"));
-        bounded.setNetworkOnThisThread(here);
         bounded.setMaxPayloadBytes(100);
         QSignalSpy tooLarge(&bounded, &MqttClient::payloadTooLarge), received(&bounded, &MqttClient::messageReceived);
         bounded.subscribe(QStringLiteral("roomba/r1/command/+"));
@@ -191,14 +173,11 @@ private slots:
         QCOMPARE(received.last()[1].toByteArray(), QByteArray(R"({"online":false})"));
     }
 
-    void reconnectsAfterTheBrokerComesBack_data() { bothNetworks(); }
     void reconnectsAfterTheBrokerComesBack()
     {
-        QFETCH(bool, here);
         MosquittoBroker broker;
         QVERIFY2(broker.start(), qPrintable(broker.error()));
         MqttClient client(QStringLiteral("client"));
-        client.setNetworkOnThisThread(here);
         QSignalSpy up(&client, &MqttClient::connected), down(&client, &MqttClient::disconnected);
         QSignalSpy received(&client, &MqttClient::messageReceived);
         client.subscribe(QStringLiteral("t"));
@@ -219,66 +198,14 @@ private slots:
         QCOMPARE(received[0][1].toByteArray(), QByteArray("back"));
     }
 
-    void connectsToABrokerThatStartsLater_data() { bothNetworks(); }
     void connectsToABrokerThatStartsLater()
     {
-        QFETCH(bool, here);
         MosquittoBroker broker;
         MqttClient client(QStringLiteral("early"));
-        client.setNetworkOnThisThread(here);
         QSignalSpy up(&client, &MqttClient::connected);
         QVERIFY(client.connectToBroker(addressOf(broker)));
         QVERIFY2(broker.start(), qPrintable(broker.error()));
         QTRY_COMPARE_WITH_TIMEOUT(up.count(), 1, 20000);
-    }
-
-    // With the network on this thread, the direct receiver is called on it,
-    // and a publish larger than the socket takes at once goes out whole when
-    // the socket has room (the rest waits for the event loop).
-    void theNetworkOnThisThreadReadsAndWritesHere()
-    {
-        MosquittoBroker broker;
-        QVERIFY2(broker.start(), qPrintable(broker.error()));
-        MqttClient here(QStringLiteral("here")), other(QStringLiteral("other"));
-        here.setNetworkOnThisThread(true);
-        QList<QThread *> readOn;
-        QByteArray got;
-        here.setDirectReceiver([&](const QString &, const QByteArray &payload, bool) {
-            readOn.append(QThread::currentThread());
-            got = payload;
-        });
-        here.subscribe(QStringLiteral("to/here"));
-        QSignalSpy otherGot(&other, &MqttClient::messageReceived);
-        other.subscribe(QStringLiteral("to/other"));
-        QSignalSpy hereSubscribed(&here, &MqttClient::subscribed), otherSubscribed(&other, &MqttClient::subscribed);
-        QVERIFY(here.connectToBroker(addressOf(broker)));
-        QVERIFY(other.connectToBroker(addressOf(broker)));
-        QTRY_VERIFY_WITH_TIMEOUT(hereSubscribed.count() == 1 && otherSubscribed.count() == 1, 5000);
-
-        QVERIFY(other.publish(QStringLiteral("to/here"), "hello", 1));
-        QTRY_COMPARE_WITH_TIMEOUT(readOn.size(), 1, 5000);
-        QCOMPARE(readOn[0], QThread::currentThread());
-        QCOMPARE(got, QByteArray("hello"));
-
-        // Without this thread's event loop, only readWhatHasArrived reads:
-        // what is in the socket is read when asked, as the bridge asks
-        // before it judges a heartbeat.
-        QVERIFY(other.publish(QStringLiteral("to/here"), "waiting", 1));
-        QDeadlineTimer deadline(10000);
-        while (readOn.size() < 2 && !deadline.hasExpired()) {
-            here.readWhatHasArrived();
-            QThread::yieldCurrentThread();
-        }
-        QCOMPARE(readOn.size(), 2);
-        QCOMPARE(got, QByteArray("waiting"));
-
-        QByteArray large(4 << 20, '\0');
-        for (qsizetype i = 0; i < large.size(); ++i)
-            large[i] = char(i * 7);
-        QVERIFY(here.publish(QStringLiteral("to/other"), large, 1));
-        QTRY_COMPARE_WITH_TIMEOUT(otherGot.count(), 1, 10000);
-        QCOMPARE(otherGot[0][1].toByteArray(), large);
-        here.setDirectReceiver({});
     }
 
     // Nothing listens on the port: said within seconds, not "connecting" for good.

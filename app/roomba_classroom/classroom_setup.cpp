@@ -14,9 +14,15 @@
 #include <QStandardPaths>
 #include <QTemporaryDir>
 
+#include <algorithm>
+#include <cerrno>
+#include <cstring>
+#include <grp.h>
 #include <optional>
 #include <pwd.h>
+#include <sys/stat.h>
 #include <unistd.h>
+#include <vector>
 
 namespace classroom {
 
@@ -24,6 +30,8 @@ namespace {
 
 constexpr QFileDevice::Permissions kOwnerOnly = QFileDevice::ReadOwner | QFileDevice::WriteOwner;
 constexpr QFileDevice::Permissions kEveryoneReads = kOwnerOnly | QFileDevice::ReadGroup | QFileDevice::ReadOther;
+// Debian's broker user, made by the mosquitto package.
+constexpr const char *kBrokerUser = "mosquitto";
 
 // 20 characters from 56 that no one misreads (no 0/O, 1/l/I): about 116 bits.
 QString strongPassword()
@@ -126,13 +134,87 @@ bool makeCertificates(const Request &r, const QString &dir, QString *error)
     return true;
 }
 
-QByteArray brokerConfig(const Request &r, const QString &finalDir)
+// Who the broker runs as: started as root, mosquitto becomes the config's
+// `user` before it reads the password file, the ACL and the key. Run by a
+// user, init names that user, who owns the files. Run as root, it names
+// Debian's broker user rather than root (a broker should not run as root),
+// and hands it the files it reads.
+struct BrokerUser {
+    QString name; // empty: no passwd entry for whoever runs init; no `user` line
+    uid_t uid = 0;
+    gid_t gid = 0;
+    bool handOver = false; // init runs as root: chown the broker's files to it
+};
+
+std::optional<BrokerUser> brokerUser(QString *error)
+{
+    if (::geteuid() != 0) {
+        const passwd *owner = ::getpwuid(::geteuid());
+        return owner ? BrokerUser{QString::fromLocal8Bit(owner->pw_name), owner->pw_uid, owner->pw_gid, false}
+                     : BrokerUser{};
+    }
+    const passwd *mosquitto = ::getpwnam(kBrokerUser);
+    if (!mosquitto) {
+        *error = QStringLiteral("init runs as root, and the broker should not: it runs as the user %1, which "
+                                "this machine does not have. Install the broker (apt-get install mosquitto), "
+                                "or run init as the user the broker should run as.")
+                     .arg(QString::fromLatin1(kBrokerUser));
+        return std::nullopt;
+    }
+    return BrokerUser{QString::fromLatin1(kBrokerUser), mosquitto->pw_uid, mosquitto->pw_gid, true};
+}
+
+// The first folder above `dir` that the broker's user cannot pass through,
+// or empty. Once it is that user, the broker could not open its files there.
+QString closedFolderAbove(const QString &dir, const BrokerUser &u)
+{
+    int count = 64;
+    std::vector<gid_t> groups(64);
+    if (::getgrouplist(u.name.toLocal8Bit().constData(), u.gid, groups.data(), &count) < 0)
+        count = 0;
+    groups.resize(size_t(std::max(count, 0)));
+    groups.push_back(u.gid);
+    for (QString path = QFileInfo(dir).absolutePath();; path = QFileInfo(path).absolutePath()) {
+        struct stat st {};
+        // A folder not there yet is made by init (mkpath), searchable by all.
+        if (::stat(QFile::encodeName(path).constData(), &st) == 0) {
+            const mode_t search = st.st_uid == u.uid ? S_IXUSR
+                                  : std::find(groups.begin(), groups.end(), st.st_gid) != groups.end() ? S_IXGRP
+                                                                                                        : S_IXOTH;
+            if (!(st.st_mode & search))
+                return path;
+        }
+        if (path == QLatin1String("/") || QFileInfo(path).absolutePath() == path)
+            return {};
+    }
+}
+
+// The broker, once it is its user, reads the password file, the ACL and the
+// key: they become its own (as mosquitto asks of them), still unreadable by
+// others. The folder lets its group through; the config, the certificates,
+// accounts.txt, ca.key and the bridges' configs stay root's, so the broker's
+// user can change neither the config root starts it with nor anyone's secret.
+bool handOver(const QDir &dir, const BrokerUser &u, QString *error)
+{
+    const auto chownTo = [error](const QString &path, uid_t uid, gid_t gid) {
+        if (::chown(QFile::encodeName(path).constData(), uid, gid) == 0)
+            return true;
+        *error = QStringLiteral("cannot hand %1 to the broker's user: %2").arg(path, QString::fromLocal8Bit(std::strerror(errno)));
+        return false;
+    };
+    for (const char *file : {"passwords", "acl", "server.key"})
+        if (!chownTo(dir.filePath(QString::fromLatin1(file)), u.uid, u.gid))
+            return false;
+    if (!chownTo(dir.path(), 0, u.gid))
+        return false;
+    QFile::setPermissions(dir.path(), kOwnerOnly | QFileDevice::ExeOwner | QFileDevice::ReadGroup | QFileDevice::ExeGroup);
+    return true;
+}
+
+QByteArray brokerConfig(const Request &r, const QString &finalDir, const BrokerUser &broker)
 {
     const QDir d(finalDir);
-    // Started as root (sudo), mosquitto becomes this user, and must still
-    // read the password file, the ACL and the key: their owner, who ran init.
-    const passwd *owner = ::getpwuid(::geteuid());
-    const QString user = owner ? QStringLiteral("user %1\n").arg(QString::fromLocal8Bit(owner->pw_name)) : QString();
+    const QString user = broker.name.isEmpty() ? QString() : QStringLiteral("user %1\n").arg(broker.name);
     return QStringLiteral(
                "# The classroom's broker, made by roomba-classroom init: mosquitto -c %1\n"
                "# Accounts and passwords: accounts.txt. Who may do what: acl (docs/mqtt.md).\n"
@@ -173,13 +255,18 @@ QByteArray brokerConfig(const Request &r, const QString &finalDir)
 
 QByteArray acl(const Request &r)
 {
+    // No patterns: a pattern applies to every account, bridges included, so
+    // `pattern write roomba/+/command/%u` let bridge-r1 drive r2 as
+    // "bridge-r1". Each account gets its own block and only what it names.
     QString a = QStringLiteral(
-        "# The classroom's access rules, made by roomba-classroom init (the model:\n"
-        "# resources/mqtt/acl; topics: docs/mqtt.md). A user writes only under its\n"
-        "# own name, so nobody can speak for somebody else.\n\n"
-        "# Each robot's bridge writes only its own robot's topics. Its stop line, a\n"
-        "# second connection, hears stop all and takeovers even while a flood on a\n"
-        "# command topic fills the first one's queue.\n");
+        "# The classroom's access rules, made by roomba-classroom init (topics:\n"
+        "# docs/mqtt.md). Every account has a block of its own and nothing else\n"
+        "# applies (no patterns): an account writes only what its block names, and\n"
+        "# one added to the password file later may do nothing until it has a block.\n\n"
+        "# Each robot's bridge writes only its own robot's topics, so the passwords\n"
+        "# on a robot's Pi speak for that robot alone. Its stop line, a second\n"
+        "# connection, hears stop all and takeovers even while a flood on a command\n"
+        "# topic fills the first one's queue, and writes nothing.\n");
     for (const QString &robot : r.robots)
         a += QStringLiteral("user %1\n"
                             "topic write roomba/%2/state\n"
@@ -190,27 +277,32 @@ QByteArray acl(const Request &r)
                             "topic read roomba/%2/control/+\n"
                             "topic read roomba/%2/takeover/+\n"
                             "topic read roomba/fleet/stop\n\n"
-                            "# Its stop line hears only what the teacher alone may send.\n"
                             "user %3\n"
                             "topic read roomba/%2/takeover/+\n"
                             "topic read roomba/fleet/stop\n\n")
                  .arg(bridgeAccount(robot), robot, stopLineAccount(robot));
-    a += QStringLiteral("# The teacher watches everything, takes control from whoever holds it,\n"
-                        "# and stops the whole fleet.\n"
+    a += QStringLiteral("# The teacher watches everything, drives like a student, takes control from\n"
+                        "# whoever holds it, and stops the whole fleet.\n"
                         "user %1\n"
                         "topic read roomba/#\n"
+                        "topic write roomba/+/command/%1\n"
+                        "topic write roomba/+/control/%1\n"
                         "topic write roomba/+/takeover/%1\n"
                         "topic write roomba/fleet/stop\n\n")
              .arg(r.teacher);
+    a += QStringLiteral("# Students watch everything, and write commands and control messages under\n"
+                        "# their own name only, so nobody can speak for somebody else.\n");
+    for (const QString &s : r.students)
+        a += QStringLiteral("user %1\n"
+                            "topic read roomba/#\n"
+                            "topic write roomba/+/command/%1\n"
+                            "topic write roomba/+/control/%1\n\n")
+                 .arg(s);
     if (!r.spectators.isEmpty())
-        a += QStringLiteral("# Spectators watch and never drive: a denial here wins over the patterns.\n");
+        a += QStringLiteral("# Spectators watch and write nothing.\n");
     for (const QString &s : r.spectators)
-        a += QStringLiteral("user %1\ntopic deny roomba/+/command/#\ntopic deny roomba/+/control/#\n\n").arg(s);
-    a += QStringLiteral("# Everyone else (the students) reads everything, and writes commands and\n"
-                        "# control messages under their own name only.\n"
-                        "pattern read roomba/#\n"
-                        "pattern write roomba/+/command/%u\n"
-                        "pattern write roomba/+/control/%u\n");
+        a += QStringLiteral("user %1\ntopic read roomba/#\n\n").arg(s);
+    a.chop(1); // one newline at the end
     return a.toUtf8();
 }
 
@@ -347,6 +439,16 @@ std::optional<QList<Account>> init(const Request &r, QString *error)
     if (*error = missingTools(); !error->isEmpty())
         return std::nullopt;
     const QString finalDir = QDir(r.dir).absolutePath();
+    const std::optional<BrokerUser> broker = brokerUser(error);
+    if (!broker)
+        return std::nullopt;
+    if (broker->handOver)
+        if (const QString closed = closedFolderAbove(finalDir, *broker); !closed.isEmpty()) {
+            *error = QStringLiteral("the broker runs as the user %1, which cannot open %2: choose a folder it can "
+                                    "reach (e.g. /etc/mosquitto/classroom), or open %2 to it")
+                         .arg(broker->name, closed);
+            return std::nullopt;
+        }
     const QFileInfo target(finalDir);
     if (!QDir().mkpath(target.absolutePath())) {
         *error = QStringLiteral("cannot make the folder %1").arg(target.absolutePath());
@@ -383,7 +485,7 @@ std::optional<QList<Account>> init(const Request &r, QString *error)
     if (!makeCertificates(r, w.path(), error) || !writeFile(w.filePath(QStringLiteral("passwords")), plain, kOwnerOnly, error)
         || !run(program("mosquitto_passwd"), {QStringLiteral("-U"), QStringLiteral("passwords")}, w.path(), error)
         || !writeFile(w.filePath(QStringLiteral("acl")), acl(r), kOwnerOnly, error)
-        || !writeFile(w.filePath(QStringLiteral("mosquitto.conf")), brokerConfig(r, finalDir), kEveryoneReads, error)
+        || !writeFile(w.filePath(QStringLiteral("mosquitto.conf")), brokerConfig(r, finalDir, *broker), kEveryoneReads, error)
         || !writeFile(w.filePath(QStringLiteral("accounts.txt")), accountsText(r, accounts), kOwnerOnly, error))
         return std::nullopt;
     if (!w.mkdir(QStringLiteral("bridges"))
@@ -397,6 +499,8 @@ std::optional<QList<Account>> init(const Request &r, QString *error)
                        kOwnerOnly, error))
             return std::nullopt;
     QFile::setPermissions(work.path(), kOwnerOnly | QFileDevice::ExeOwner);
+    if (broker->handOver && !handOver(w, *broker, error))
+        return std::nullopt;
     // An empty target gives way to the finished folder; a rename is all or nothing.
     if (QFileInfo::exists(finalDir) && !QDir().rmdir(finalDir)) {
         *error = QStringLiteral("cannot replace the empty folder %1").arg(finalDir);

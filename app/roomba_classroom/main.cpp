@@ -41,7 +41,8 @@ int main(int argc, char *argv[])
         "roomba-classroom init DIR --robots r1,r2,r3 --students alice,bob [options]\n\n"
         "Writes a ready classroom broker into DIR (new or empty): mosquitto.conf (TLS on\n"
         "port 8883 with a CA and a server certificate made here), the password file with\n"
-        "strong random passwords, the ACL, accounts.txt with every account and password,\n"
+        "strong random passwords, the ACL, accounts.txt with every account and password\n"
+        "(readable by you alone; init prints no password),\n"
         "and bridges/NAME.conf for each robot's bridge. Then: mosquitto -c DIR/mosquitto.conf\n"
         "Names: 1 to 64 letters, digits, '-' or '_'."));
     const QCommandLineOption helpOption = parser.addHelpOption();
@@ -95,16 +96,23 @@ int main(int argc, char *argv[])
     if (!accounts)
         return fail(error, classroom::check(r).isEmpty() && classroom::missingTools().isEmpty() ? 1 : kUsageError);
 
+    // Passwords go to files readable by their owner alone, never to the
+    // terminal, where scrollback, screen sharing and logs would keep them.
     const QString dir = QDir(r.dir).absolutePath();
-    std::printf("A classroom broker is in %s (accounts.txt lists every account):\n\n", qPrintable(dir));
+    QStringList names;
     for (const classroom::Account &a : *accounts)
-        std::printf("  %-10s %-24s %s\n", qPrintable(a.role), qPrintable(a.name), qPrintable(a.password));
-    std::printf("\nStart the broker:  mosquitto -c %s/mosquitto.conf\n"
+        names << a.name;
+    std::printf("A classroom broker is in %s.\n"
+                "Accounts: %s.\n"
+                "Their passwords are in %s/accounts.txt, and each bridge's in its\n"
+                "bridges/NAME.conf: files only their owner can read. Keep them to yourself.\n\n",
+                qPrintable(dir), qPrintable(names.join(QStringLiteral(", "))), qPrintable(dir));
+    std::printf("Start the broker:  mosquitto -c %s/mosquitto.conf\n"
                 "Each robot's Pi:   copy bridges/NAME.conf and bridges/ca.crt to /etc/roomba-bridge/,\n"
                 "                   then systemctl enable --now roomba-bridge@NAME\n"
                 "A virtual robot:   roomba-bridge --config %s/bridges/%s.conf --sim\n"
                 "The dashboard:     File > Connect to broker: %s, port %d, TLS, CA file %s/ca.crt,\n"
-                "                   user %s and its password above\n",
+                "                   user %s and its password in accounts.txt\n",
                 qPrintable(dir), qPrintable(dir), qPrintable(r.robots.first()), qPrintable(r.host), r.port,
                 qPrintable(dir), qPrintable(r.teacher));
     return 0;

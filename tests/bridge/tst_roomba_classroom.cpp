@@ -1,16 +1,24 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // roomba-classroom init: the classroom it writes just works with a real
-// mosquitto over TLS (a student logs in with the printed password, a
-// bridge with its generated config publishes, the console connects with
-// the CA); a wrong CA is refused clearly; a second init and bad names are
-// refused, and leave nothing behind.
+// mosquitto over TLS (a student logs in with the password from
+// accounts.txt, a bridge with its generated config publishes, the console
+// connects with the CA); every account writes only its own lanes; init
+// prints no password; run as root, the broker runs as mosquitto; a wrong
+// CA is refused clearly; a second init and bad names are refused, and
+// leave nothing behind.
 
 #include "bridge_rig.h"
 #include "fleet_directory.h"
 
 #include <QProcess>
 #include <QProcessEnvironment>
+#include <QSet>
 #include <QTemporaryDir>
+
+#include <pwd.h>
+#include <unistd.h>
+
+#include <algorithm>
 
 using namespace mqtt;
 
@@ -36,15 +44,37 @@ class TestRoombaClassroom : public QObject {
         r.err = QString::fromUtf8(p.readAllStandardError());
         return r;
     }
-    // The password printed for an account: "  ROLE  ACCOUNT  PASSWORD".
-    static QString passwordOf(const QString &printed, const QString &account)
+    static QString accountsOf(const QString &dir)
     {
-        for (const QString &line : printed.split(QLatin1Char('\n'))) {
+        QFile f(QDir(dir).filePath(QStringLiteral("accounts.txt")));
+        return f.open(QIODevice::ReadOnly) ? QString::fromUtf8(f.readAll()) : QString();
+    }
+    // An account's password in accounts.txt: "ROLE  ACCOUNT  PASSWORD".
+    static QString passwordOf(const QString &accounts, const QString &account)
+    {
+        for (const QString &line : accounts.split(QLatin1Char('\n'))) {
             const QStringList f = line.split(QLatin1Char(' '), Qt::SkipEmptyParts);
             if (f.size() == 3 && f[1] == account)
                 return f[2];
         }
         return {};
+    }
+    // What docs/mqtt.md lets an account write ("Accounts and names").
+    static bool allowed(const QString &account, const QString &topic)
+    {
+        if (topic == topics::stopAll())
+            return account == QLatin1String("teacher");
+        const QStringList t = topic.split(QLatin1Char('/')); // roomba NAME KIND [CLIENT]
+        const QString robot = t.value(1), kind = t.value(2), client = t.value(3);
+        if (account == QLatin1String("teacher"))
+            return client == account
+                   && (kind == QLatin1String("command") || kind == QLatin1String("control") || kind == QLatin1String("takeover"));
+        if (account == QLatin1String("alice") || account == QLatin1String("bob"))
+            return client == account && (kind == QLatin1String("command") || kind == QLatin1String("control"));
+        if (account == QStringLiteral("bridge-") + robot)
+            return kind == QLatin1String("state") || kind == QLatin1String("telemetry") || kind == QLatin1String("stats")
+                   || kind == QLatin1String("reply");
+        return false; // spectators, stop lines, and a bridge on another robot
     }
     static BrokerAddress tlsAddress(int port, const QString &user, const QString &password, const QString &ca)
     {
@@ -58,7 +88,14 @@ class TestRoombaClassroom : public QObject {
     }
 
 private slots:
-    void initTestCase() { oilink::registerLinkMetaTypes(); }
+    void initTestCase()
+    {
+        oilink::registerLinkMetaTypes();
+        // Run as root, init hands the broker to the mosquitto user, which
+        // must reach the classrooms made here.
+        QFile::setPermissions(m_dir.path(), QFile::ReadOwner | QFile::WriteOwner | QFile::ExeOwner | QFile::ReadGroup
+                                                | QFile::ExeGroup | QFile::ReadOther | QFile::ExeOther);
+    }
 
     void theClassroomItWritesJustWorks()
     {
@@ -70,22 +107,21 @@ private slots:
         for (const char *file : {"mosquitto.conf", "passwords", "acl", "accounts.txt", "ca.crt", "server.crt",
                                  "server.key", "bridges/r1.conf", "bridges/r2.conf", "bridges/ca.crt"})
             QVERIFY2(QFile::exists(QDir(dir).filePath(QLatin1String(file))), file);
-        const QString alice = passwordOf(init.out, QStringLiteral("alice"));
+        const QString accounts = accountsOf(dir);
+        const QString alice = passwordOf(accounts, QStringLiteral("alice"));
         QCOMPARE(alice.size(), 20);
-        QVERIFY(passwordOf(init.out, QStringLiteral("bob")) != alice);
-        // accounts.txt says the same.
-        QFile accounts(QDir(dir).filePath(QStringLiteral("accounts.txt")));
-        QVERIFY(accounts.open(QIODevice::ReadOnly));
-        QCOMPARE(passwordOf(QString::fromUtf8(accounts.readAll()), QStringLiteral("alice")), alice);
+        QVERIFY(passwordOf(accounts, QStringLiteral("bob")) != alice);
         // The secrets are the owner's alone.
-        QCOMPARE(QFile::permissions(QDir(dir).filePath(QStringLiteral("passwords")))
-                     & (QFile::ReadOther | QFile::ReadGroup),
-                 QFile::Permissions());
+        for (const char *secret : {"passwords", "accounts.txt", "acl", "server.key", "ca.key", "bridges/r1.conf"})
+            QVERIFY2((QFile::permissions(QDir(dir).filePath(QLatin1String(secret)))
+                      & (QFile::ReadOther | QFile::ReadGroup | QFile::WriteOther | QFile::WriteGroup))
+                         == QFile::Permissions(),
+                     secret);
 
         QVERIFY2(broker.startWith(QDir(dir).filePath(QStringLiteral("mosquitto.conf"))), qPrintable(broker.error()));
         const QString ca = QDir(dir).filePath(QStringLiteral("ca.crt"));
 
-        // A student logs in over TLS with the printed password; a wrong one is refused.
+        // A student logs in over TLS with the password from accounts.txt; a wrong one is refused.
         MqttClient student(QStringLiteral("alice"));
         QSignalSpy studentUp(&student, &MqttClient::connected);
         QVERIFY(student.connectToBroker(tlsAddress(broker.port(), QStringLiteral("alice"), alice, ca)));
@@ -112,7 +148,7 @@ private slots:
         FleetDirectory console;
         QSignalSpy frames(&console, &FleetDirectory::telemetryReceived);
         QVERIFY(console.connectToBroker(
-            tlsAddress(broker.port(), QStringLiteral("teacher"), passwordOf(init.out, QStringLiteral("teacher")), ca)));
+            tlsAddress(broker.port(), QStringLiteral("teacher"), passwordOf(accounts, QStringLiteral("teacher")), ca)));
         QTRY_VERIFY_WITH_TIMEOUT(console.robot(QStringLiteral("r1")) && console.robot(QStringLiteral("r1"))->state.online, 15000);
         console.follow(QStringLiteral("r1"), true);
         QTRY_VERIFY_WITH_TIMEOUT(!frames.isEmpty(), 10000);
@@ -125,6 +161,142 @@ private slots:
         QVERIFY(bridge.state() == QProcess::Running);
         bridge.terminate();
         QVERIFY(bridge.waitForFinished(10000));
+    }
+
+    // For every account init makes, on both robots' topics and stop all,
+    // what reaches a watcher reading roomba/# is what docs/mqtt.md allows
+    // that account, and nothing else: a bridge's or a stop line's
+    // password (on a robot's Pi) cannot drive another robot.
+    void everyAccountWritesOnlyItsOwnLanes()
+    {
+        MosquittoBroker broker;
+        const QString dir = m_dir.filePath(QStringLiteral("lanes"));
+        const Run init = classroom({"init", dir, "--robots", "r1,r2", "--students", "alice,bob", "--spectators",
+                                    "guest", "--port", QString::number(broker.port())});
+        QVERIFY2(init.status == 0, qPrintable(init.err));
+        QVERIFY2(broker.startWith(QDir(dir).filePath(QStringLiteral("mosquitto.conf"))), qPrintable(broker.error()));
+        const QString ca = QDir(dir).filePath(QStringLiteral("ca.crt"));
+        const QString accounts = accountsOf(dir);
+        const auto as = [&](const QString &account) {
+            return tlsAddress(broker.port(), account, passwordOf(accounts, account), ca);
+        };
+
+        // The teacher reads everything.
+        MqttClient watcher(QStringLiteral("teacher"));
+        QList<std::pair<QString, QJsonObject>> seen;
+        connect(&watcher, &MqttClient::messageReceived, this,
+                [&seen](const QString &topic, const QByteArray &payload, bool) { seen.append({topic, objectOf(payload)}); });
+        watcher.subscribe(QStringLiteral("roomba/#"), 1);
+        QVERIFY(watcher.connectToBroker(as(QStringLiteral("teacher"))));
+        QTRY_VERIFY_WITH_TIMEOUT(watcher.isSubscribed(), 10000);
+
+        const QStringList everyone{"teacher", "alice", "bob", "guest", "bridge-r1", "bridge-r1-stops", "bridge-r2",
+                                   "bridge-r2-stops"};
+        int barrier = 0;
+        for (const QString &account : everyone) {
+            std::unique_ptr<MqttClient> own;
+            MqttClient *publisher = &watcher;
+            if (account != QLatin1String("teacher")) {
+                own = std::make_unique<MqttClient>(account);
+                QVERIFY(own->connectToBroker(as(account)));
+                QTRY_VERIFY_WITH_TIMEOUT(own->isConnected(), 10000);
+                publisher = own.get();
+            }
+            QSignalSpy subscribed(publisher, &MqttClient::subscribed);
+            const qsizetype from = seen.size();
+            QSet<QString> expected;
+            // Its own name, somebody else's, and the teacher's.
+            QStringList names{account, account == QLatin1String("alice") ? QStringLiteral("bob") : QStringLiteral("alice"),
+                              QStringLiteral("teacher")};
+            names.removeDuplicates();
+            for (const QString &robot : {QStringLiteral("r1"), QStringLiteral("r2")}) {
+                QStringList tried{topics::state(robot), topics::telemetry(robot), topics::stats(robot),
+                                  topics::reply(robot, QStringLiteral("alice"))};
+                for (const QString &name : std::as_const(names))
+                    tried << topics::command(robot, name) << topics::control(robot, name) << topics::takeover(robot, name);
+                if (robot == QLatin1String("r2"))
+                    tried << topics::stopAll();
+                for (const QString &topic : std::as_const(tried)) {
+                    QVERIFY(publisher->publish(topic, json({{"probe", account}}), 1));
+                    if (allowed(account, topic))
+                        expected << topic;
+                }
+                // The broker answers a subscription after the publishes
+                // sent before it: by then it has passed them on, or not.
+                // (Fewer than 20 at a time, which libmosquitto sends at once.)
+                publisher->subscribe(QStringLiteral("roomba/barrier/%1").arg(++barrier));
+                QTRY_VERIFY_WITH_TIMEOUT(!subscribed.isEmpty(), 10000);
+                subscribed.clear();
+            }
+            // Behind them, a marker from the watcher: once it is here, all
+            // that got through is here.
+            QVERIFY(watcher.publish(topics::command(QStringLiteral("r1"), QStringLiteral("teacher")),
+                                    json({{"marker", account}}), 1));
+            QTRY_VERIFY_WITH_TIMEOUT(std::any_of(seen.cbegin() + from, seen.cend(),
+                                                 [&](const auto &m) { return m.second.value(QLatin1String("marker")).toString() == account; }),
+                                     10000);
+            QSet<QString> through;
+            for (auto m = seen.cbegin() + from; m != seen.cend(); ++m)
+                if (m->second.value(QLatin1String("probe")).toString() == account)
+                    through << m->first;
+            QVERIFY2(through == expected,
+                     qPrintable(QStringLiteral("%1 got through with %2, and should have with %3")
+                                    .arg(account, QStringList(through.cbegin(), through.cend()).join(QLatin1Char(' ')),
+                                         QStringList(expected.cbegin(), expected.cend()).join(QLatin1Char(' ')))));
+        }
+    }
+
+    // The passwords are in accounts.txt (the owner's alone), not on the
+    // terminal, which says where they are.
+    void initPrintsWhereThePasswordsAreNotThem()
+    {
+        const QString dir = m_dir.filePath(QStringLiteral("quiet"));
+        const Run init = classroom({"init", dir, "--robots", "r1", "--students", "alice", "--spectators", "guest"});
+        QVERIFY2(init.status == 0, qPrintable(init.err));
+        QVERIFY2(init.out.contains(QDir(dir).filePath(QStringLiteral("accounts.txt"))), qPrintable(init.out));
+        const QString accounts = accountsOf(dir);
+        for (const char *account : {"teacher", "alice", "guest", "bridge-r1", "bridge-r1-stops"}) {
+            const QString password = passwordOf(accounts, QLatin1String(account));
+            QCOMPARE(password.size(), 20);
+            QVERIFY2(!init.out.contains(password) && !init.err.contains(password), account);
+        }
+    }
+
+    // Run as root (as here), init does not make a broker that runs as root:
+    // the config says mosquitto, which owns what it reads and nothing else.
+    void asRootTheBrokerRunsAsMosquitto()
+    {
+        if (::geteuid() != 0)
+            QSKIP("init runs as root only in a test run by root");
+        const passwd *mosquitto = ::getpwnam("mosquitto");
+        if (!mosquitto)
+            QSKIP("no mosquitto user here");
+        const QString dir = m_dir.filePath(QStringLiteral("root"));
+        const Run init = classroom({"init", dir, "--robots", "r1", "--students", "alice"});
+        QVERIFY2(init.status == 0, qPrintable(init.err));
+        QFile conf(QDir(dir).filePath(QStringLiteral("mosquitto.conf")));
+        QVERIFY(conf.open(QIODevice::ReadOnly));
+        const QByteArray text = conf.readAll();
+        QVERIFY2(text.contains("\nuser mosquitto\n") && !text.contains("user root"), text.constData());
+        for (const char *file : {"passwords", "acl", "server.key"}) {
+            const QFileInfo f(QDir(dir).filePath(QLatin1String(file)));
+            QVERIFY2(f.ownerId() == mosquitto->pw_uid, file);
+            QVERIFY2((f.permissions() & (QFile::ReadOther | QFile::ReadGroup)) == QFile::Permissions(), file);
+        }
+        // The broker's user passes through the folder, and reads no other secret.
+        QCOMPARE(QFileInfo(dir).groupId(), mosquitto->pw_gid);
+        for (const char *file : {"accounts.txt", "ca.key", "bridges/r1.conf", "mosquitto.conf"})
+            QVERIFY2(QFileInfo(QDir(dir).filePath(QLatin1String(file))).ownerId() == 0, file);
+
+        // A folder the broker's user cannot reach is refused, and nothing is written.
+        const QString closed = m_dir.filePath(QStringLiteral("closed"));
+        QVERIFY(QDir().mkdir(closed));
+        QFile::setPermissions(closed, QFile::ReadOwner | QFile::WriteOwner | QFile::ExeOwner);
+        const Run refused = classroom({"init", closed + QStringLiteral("/class"), "--robots", "r1", "--students", "alice"});
+        QCOMPARE(refused.status, 1);
+        QVERIFY2(refused.err.contains(QStringLiteral("the broker runs as the user mosquitto, which cannot open %1").arg(closed)),
+                 qPrintable(refused.err));
+        QCOMPARE(QDir(closed).entryList(QDir::AllEntries | QDir::NoDotAndDotDot | QDir::Hidden), QStringList());
     }
 
     void aWrongCaIsRefusedClearly()
@@ -142,7 +314,7 @@ private slots:
         MqttClient student(QStringLiteral("alice"));
         QSignalSpy errors(&student, &MqttClient::errorOccurred), up(&student, &MqttClient::connected);
         QVERIFY(student.connectToBroker(
-            tlsAddress(broker.port(), QStringLiteral("alice"), passwordOf(init.out, QStringLiteral("alice")), wrongCa)));
+            tlsAddress(broker.port(), QStringLiteral("alice"), passwordOf(accountsOf(dir), QStringLiteral("alice")), wrongCa)));
         QTRY_VERIFY_WITH_TIMEOUT(!errors.isEmpty(), 10000);
         const QString message = errors[0][0].toString();
         QVERIFY2(message.contains(QStringLiteral("is not signed by the CA in %1").arg(wrongCa))

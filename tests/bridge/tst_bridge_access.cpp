@@ -3,7 +3,9 @@
 // acl) on a real mosquitto, with a bridge in this process: a spectator
 // watches but cannot drive, a student cannot take over or stop the fleet,
 // the teacher can, an unknown client is refused, nobody can borrow a
-// bridge's client id, and a bridge's account writes only its own robot.
+// bridge's client id, and a bridge's account writes only its own robot
+// (not even another robot's commands in its own name). And the README's
+// quick-start broker (resources/mqtt/quickstart.conf) bounds its packets.
 
 #include "bridge_rig.h"
 
@@ -166,6 +168,80 @@ private slots:
         rig.client.publish(topics::state(QStringLiteral("r1")), json({{"online", true}, {"name", "r1"}, {"marker", 1}}), 1, true);
         QTRY_VERIFY(watcher.lastState(QStringLiteral("r1")).contains(QLatin1String("marker")));
         QVERIFY(watcher.on(topics::state(QStringLiteral("r2"))).isEmpty());
+    }
+
+    // The students' patterns apply to every account: a bridge's (or its
+    // stop line's) cannot use them to take control of another robot and
+    // drive it, nor write commands on its own. Its own robot's input still
+    // reaches it.
+    void aBridgeCannotDriveAnotherRobot()
+    {
+        BridgeRig r2(QStringLiteral("r2"), as(QStringLiteral("bridge-r2")));
+        QVERIFY(r2.streaming());
+        ConsoleClient watcher(QStringLiteral("teacher"), as(QStringLiteral("teacher")),
+                              {QStringLiteral("roomba/+/command/+"), QStringLiteral("roomba/+/control/+")});
+        QVERIFY(watcher.waitForState(QStringLiteral("r2"), true));
+        for (const char *account : {"bridge-r1", "bridge-r1-stops"}) {
+            const QString name = QString::fromLatin1(account);
+            MqttClient intruder(name);
+            intruder.connectToBroker(as(name));
+            QTRY_VERIFY_WITH_TIMEOUT(intruder.isConnected(), 5000);
+            for (const QString &robot : {QStringLiteral("r1"), QStringLiteral("r2")}) {
+                intruder.publish(topics::control(robot, name), json({{"action", "take"}}), 1);
+                intruder.publish(topics::command(robot, name), json({{"id", "x"}, {"command", "stop"}}), 1);
+            }
+            // The broker answers a subscription after the publishes before it.
+            QSignalSpy passed(&intruder, &MqttClient::subscribed);
+            intruder.subscribe(QStringLiteral("roomba/fleet/stop"));
+            QTRY_VERIFY_WITH_TIMEOUT(!passed.isEmpty(), 5000);
+            // Behind them, alice asks for r2: hers to take, and nobody held it.
+            ConsoleClient alice(QStringLiteral("alice"), as(QStringLiteral("alice")));
+            QVERIFY(alice.waitForState(QStringLiteral("r2"), true));
+            QCOMPARE(alice.control(QStringLiteral("r2"), "take").value(QLatin1String("controller")).toString(),
+                     QStringLiteral("alice"));
+            QCOMPARE(alice.control(QStringLiteral("r2"), "release").value(QLatin1String("ok")), QJsonValue(true));
+            QVERIFY(watcher.on(topics::control(QStringLiteral("r2"), QStringLiteral("alice"))).size() >= 2);
+            for (const QString &robot : {QStringLiteral("r1"), QStringLiteral("r2")}) {
+                QVERIFY2(watcher.on(topics::control(robot, name)).isEmpty(), account);
+                QVERIFY2(watcher.on(topics::command(robot, name)).isEmpty(), account);
+            }
+        }
+    }
+
+    // The README's quick-start broker (mosquitto -c quickstart.conf): it
+    // loads, and refuses a packet over 8 KiB by closing the connection that
+    // sent it, which reaches nobody; one under it goes through.
+    void theQuickStartBrokerRefusesLargePackets()
+    {
+        MosquittoBroker quick;
+        QFile conf(QStringLiteral(ROOMBA_MQTT_DIR "/quickstart.conf"));
+        QVERIFY(conf.open(QIODevice::ReadOnly));
+        QString text = QString::fromUtf8(conf.readAll());
+        QVERIFY(text.contains(QLatin1String("\nlistener 1883 127.0.0.1\n")));
+        text.replace(QLatin1String("\nlistener 1883 "), QStringLiteral("\nlistener %1 ").arg(quick.port()));
+        QVERIFY2(quick.startWith(quick.writeFile(QStringLiteral("quickstart.conf"), text.toUtf8())), qPrintable(quick.error()));
+
+        MqttClient watcher(QStringLiteral("watcher"));
+        QSignalSpy seen(&watcher, &MqttClient::messageReceived);
+        watcher.subscribe(QStringLiteral("roomba/#"), 1);
+        watcher.connectToBroker(addressOf(quick));
+        QTRY_VERIFY_WITH_TIMEOUT(watcher.isSubscribed(), 5000);
+        MqttClient sender(QStringLiteral("sender"));
+        QSignalSpy lost(&sender, &MqttClient::disconnected);
+        sender.connectToBroker(addressOf(quick));
+        QTRY_VERIFY_WITH_TIMEOUT(sender.isConnected(), 5000);
+
+        const QString topic = topics::telemetry(QStringLiteral("r1"));
+        QVERIFY(sender.publish(topic, QByteArray(8000, 'a'), 1));
+        QTRY_VERIFY_WITH_TIMEOUT(!seen.isEmpty(), 5000);
+        QCOMPARE(seen[0][1].toByteArray().size(), 8000);
+        QVERIFY(sender.publish(topic, QByteArray(9000, 'b'), 1));
+        QTRY_VERIFY_WITH_TIMEOUT(!lost.isEmpty(), 5000);
+        // By then the broker has read it and thrown it away: a marker from
+        // the watcher comes, and nothing before it.
+        QVERIFY(watcher.publish(topics::stats(QStringLiteral("r1")), "marker", 1));
+        QTRY_COMPARE_WITH_TIMEOUT(seen.size(), 2, 5000);
+        QCOMPARE(seen[1][0].toString(), topics::stats(QStringLiteral("r1")));
     }
 };
 

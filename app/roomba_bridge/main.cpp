@@ -17,6 +17,13 @@
 
 namespace {
 
+// The exit statuses (the systemd unit, resources/mqtt/roomba-bridge@.service,
+// goes by them): 2 for what needs a person and will not mend by itself (a
+// bad or unreadable config, a setting or TLS file the MQTT library refuses,
+// a Roomba 500 or Create 2 without its profile, a name in use); 128 + the
+// signal after SIGTERM, SIGINT or SIGHUP; anything else is a crash. It does
+// not exit for a broker that is not up yet or restarts, or for a robot that
+// does not answer: it goes on trying.
 constexpr int kUsageError = 2;
 
 int fail(const QString &message)
@@ -164,9 +171,18 @@ int main(int argc, char *argv[])
         qCWarning(lcBridge, "broker: another client connected with this bridge's client id and took the "
                             "connection (a second bridge with this name?); taking it back");
     });
+    QObject::connect(&claim, &NameClaim::suspected, &app, [] {
+        qCWarning(lcBridge, "broker: lost the connection within %d s of connecting, and the broker accepts "
+                            "connections: another bridge with this name, or a restarted broker; reconnecting to tell",
+                  NameClaim::kClaimMs / 1000);
+    });
+    QObject::connect(&claim, &NameClaim::kept, &app, [] {
+        qCInfo(lcBridge, "broker: the connection was not taken again (the broker had restarted); the name is this "
+                         "bridge's");
+    });
     bridge.start();
     robot.connectTo(config->link);
     if (!broker.connectToBroker(config->broker) || (stopLineAddress && !stopLine.connectToBroker(*stopLineAddress)))
-        return 1; // errorOccurred has said why
+        return kUsageError; // a setting the library refuses; errorOccurred has said which
     return app.exec();
 }

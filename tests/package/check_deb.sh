@@ -35,7 +35,7 @@ for p in roomba-bridge roomba-ctl roomba-sim roomba-classroom; do
     grep -qx "\./usr/bin/$p" <<<"$contents" && fail "$p is in both packages"
 done
 in_bridge "usr/lib/systemd/system/roomba-bridge@.service"
-for f in mosquitto.conf acl roomba-bridge.conf; do in_bridge "usr/share/roomba-bridge/mqtt/$f"; done
+for f in mosquitto.conf quickstart.conf acl roomba-bridge.conf; do in_bridge "usr/share/roomba-bridge/mqtt/$f"; done
 in_bridge usr/share/doc/roomba-bridge/copyright
 [ "$(dpkg-deb -f "$bridge_deb" Package)" = roomba-bridge ] || fail "the bridge's Package is '$(dpkg-deb -f "$bridge_deb" Package)'"
 bridge_depends=$(dpkg-deb -f "$bridge_deb" Depends)

@@ -33,6 +33,7 @@ const QStringList &BridgeConfig::keys()
         QStringLiteral("stop-username"), QStringLiteral("stop-password"), QStringLiteral("stop-password-file"),
         QStringLiteral("cafile"),   QStringLiteral("certfile"),      QStringLiteral("keyfile"),
         QStringLiteral("rate"),     QStringLiteral("allow-full"),    QStringLiteral("full-telemetry"),
+        QStringLiteral("allow-schedule"),
     };
     return k;
 }
@@ -190,16 +191,20 @@ std::optional<BridgeConfig> BridgeConfig::fromSettings(const QList<Setting> &set
         if (!ok || !std::isfinite(c.telemetryRateHz) || c.telemetryRateHz < 0 || c.telemetryRateHz > 1000)
             return fail(QStringLiteral("rate"), QStringLiteral("'%1' is not a rate from 0 (every frame) to 1000 per second").arg(value("rate")));
     }
-    if (has("allow-full")) {
-        if (!isYes(value("allow-full")) && !isNo(value("allow-full")))
-            return fail(QStringLiteral("allow-full"), QStringLiteral("'%1' is not yes or no").arg(value("allow-full")));
-        c.allowFull = isYes(value("allow-full"));
-    }
-    if (has("full-telemetry")) {
-        if (!isYes(value("full-telemetry")) && !isNo(value("full-telemetry")))
-            return fail(QStringLiteral("full-telemetry"), QStringLiteral("'%1' is not yes or no").arg(value("full-telemetry")));
-        c.fullTelemetry = isYes(value("full-telemetry"));
-    }
+    // yes or no, into `flag`; false after saying what is wrong.
+    const auto yesOrNo = [&](const char *key, bool &flag) {
+        if (!has(key))
+            return true;
+        if (!isYes(value(key)) && !isNo(value(key))) {
+            fail(QLatin1String(key), QStringLiteral("'%1' is not yes or no").arg(value(key)));
+            return false;
+        }
+        flag = isYes(value(key));
+        return true;
+    };
+    if (!yesOrNo("allow-full", c.allowFull) || !yesOrNo("full-telemetry", c.fullTelemetry)
+        || !yesOrNo("allow-schedule", c.allowSchedule))
+        return std::nullopt;
     return c;
 }
 

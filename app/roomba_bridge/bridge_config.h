@@ -25,6 +25,9 @@ struct BridgeConfig {
     double telemetryRateHz = 0; // 0: every frame
     bool allowFull = false;     // Full mode over the network
     bool fullTelemetry = false; // every packet in every telemetry message
+    // Schedule and Set Day/Time over the network: the robot would start
+    // cleaning later by itself, with nobody in control. Off unless set.
+    bool allowSchedule = false;
 
     // One value and where it came from ("--rate", "r1.conf:4"), for errors.
     struct Setting {

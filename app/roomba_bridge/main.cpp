@@ -72,6 +72,7 @@ int main(int argc, char *argv[])
         {QStringLiteral("rate"), QStringLiteral("Telemetry messages per second, every packet in each (default 0: what changed in each frame, about 23 a second for a driven robot)."), QStringLiteral("HZ")},
         {QStringLiteral("full-telemetry"), QStringLiteral("Every packet in every telemetry message, not only what changed: about five times the bytes.")},
         {QStringLiteral("allow-full"), QStringLiteral("Let the client in control send full. The robot then ignores cliffs and wheel drops; the bridge stops it at the first one.")},
+        {QStringLiteral("allow-schedule"), QStringLiteral("Let the client in control send schedule and set-day-time. A Roomba 600 / Create 2 then starts cleaning at the set times by itself, with nobody in control.")},
     });
     if (!parser.parse(QCoreApplication::arguments()))
         return fail(parser.errorText());
@@ -98,7 +99,7 @@ int main(int argc, char *argv[])
         if (key == QLatin1String("password") || key == QLatin1String("stop-password") || !parser.isSet(key))
             continue; // a password on the command line would show in ps
         const bool flag = key == QLatin1String("sim") || key == QLatin1String("allow-full")
-                          || key == QLatin1String("full-telemetry");
+                          || key == QLatin1String("full-telemetry") || key == QLatin1String("allow-schedule");
         settings.append({key, flag ? QStringLiteral("yes") : parser.value(key),
                          QStringLiteral("--%1").arg(key)});
     }
@@ -121,7 +122,8 @@ int main(int argc, char *argv[])
                                                               : config->broker.username);
     broker.setLastWill(RobotBridge::lastWill(config->name));
     SteadyLeaseClock clock;
-    RobotBridge bridge(robot, broker, clock, {config->name, config->telemetryRateHz, config->fullTelemetry, config->allowFull});
+    RobotBridge bridge(robot, broker, clock, {config->name, config->telemetryRateHz, config->fullTelemetry, config->allowFull,
+                                                config->allowSchedule});
     const std::optional<mqtt::BrokerAddress> stopLineAddress = config->stopLine();
     mqtt::MqttClient stopLine(config->stopUsername.isEmpty() ? QStringLiteral("roomba-bridge-%1-stops").arg(config->name)
                                                              : config->stopUsername);

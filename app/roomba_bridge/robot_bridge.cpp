@@ -12,6 +12,7 @@
 #include <QDateTime>
 #include <QJsonDocument>
 
+#include <algorithm>
 #include <cmath>
 #include <utility>
 
@@ -46,15 +47,6 @@ QString modeWord(oi::OiMode mode)
     return QStringLiteral("off");
 }
 
-// The link owns the stream, the baud and the replies it waits for: a client
-// that changed them would blind the bridge and every safety rule with it.
-bool belongsToTheLink(oi::Command c)
-{
-    using C = oi::Command;
-    return c == C::Baud || c == C::Stream || c == C::PauseResumeStream || c == C::Sensors || c == C::QueryList
-           || c == C::ShowScript || c == C::Stop;
-}
-
 QString nameOf(oi::Command c)
 {
     const std::string_view name = oi::commandSpec(c).name;
@@ -66,7 +58,7 @@ QString nameOf(oi::Command c)
 RobotBridge::RobotBridge(RobotSession &robot, mqtt::MqttClient &broker, LeaseClock &clock, Options options,
                          QObject *parent)
     : QObject(parent), m_robot(robot), m_broker(broker), m_clock(clock), m_lease(clock), m_options(std::move(options)),
-      m_inbox(clock, m_options.name)
+      m_rules{m_options.allowFull, m_options.allowSchedule}, m_inbox(clock, m_options.name)
 {
     // Messages are sized on the network thread and timed as they arrive;
     // heartbeats that wait are read before the lease is judged.
@@ -86,10 +78,7 @@ RobotBridge::RobotBridge(RobotSession &robot, mqtt::MqttClient &broker, LeaseClo
 
     connect(&m_robot, &RobotSession::frameReceived, this,
             [this](double, const oi::SensorSnapshot &frame) { onFrame(frame); });
-    connect(&m_robot, &RobotSession::stateChanged, this, [this](oilink::LinkState s) {
-        qCInfo(lcBridge, "robot link: %s", qPrintable(linkWord(s)));
-        publishState();
-    });
+    connect(&m_robot, &RobotSession::stateChanged, this, &RobotBridge::onLinkState);
     connect(&m_robot, &RobotSession::profileChanged, this, [this] { publishState(); });
     connect(&m_robot, &RobotSession::modeChanged, this, [this] { publishState(); });
     connect(&m_robot, &RobotSession::firmwareChanged, this, [this] { publishState(); });
@@ -237,6 +226,27 @@ void RobotBridge::onBrokerLost(const QString &reason)
     freeControlAndStop();
 }
 
+void RobotBridge::onLinkState(oilink::LinkState s)
+{
+    qCInfo(lcBridge, "robot link: %s", qPrintable(linkWord(s)));
+    publishState();
+    if (s != oilink::LinkState::Streaming) {
+        m_linkInterrupted = m_linkWasLive;
+        return;
+    }
+    m_linkWasLive = true;
+    if (!std::exchange(m_linkInterrupted, false))
+        return;
+    // A stop sent while the link was down may never have reached the robot,
+    // which then drives on the last command it heard.
+    qCInfo(lcBridge, "robot link back: stop again, in case the last stop was lost");
+    stopRobot();
+    if (!m_lease.holder().isEmpty())
+        reply(m_lease.holder(), {{"id", "safety"}, {"ok", false},
+                                 {"error", "the robot's link came back after a gap: the robot was stopped again; "
+                                           "drive again to go on"}});
+}
+
 QString RobotBridge::freeControlAndStop()
 {
     // Without a controller the robot is already stopped (a release, a lapse
@@ -273,9 +283,9 @@ void RobotBridge::onPayloadTooLarge(const QString &topic, qsizetype bytes)
         return;
     const QString why = QStringLiteral("message of %1 bytes dropped unread: at most %2 bytes").arg(bytes).arg(kMaxPayloadBytes);
     using K = mqtt::topics::Kind;
+    logRefusal(t->client.isEmpty() ? topic.left(80) : t->client, bytes, why);
     if (t->kind == K::Command || t->kind == K::Control || t->kind == K::Takeover)
-        return reply(t->client, {{"id", QJsonValue()}, {"ok", false}, {"error", why}});
-    qCWarning(lcBridge, "%s: %s", qPrintable(topic.left(80)), qPrintable(why));
+        reply(t->client, {{"id", QJsonValue()}, {"ok", false}, {"error", why}});
 }
 
 void RobotBridge::stopAll()
@@ -289,6 +299,9 @@ void RobotBridge::stopAll()
 
 void RobotBridge::stopRobot()
 {
+    // Sent whatever the bridge believes: a command it did not see through
+    // the teleop (a script's Drive) moves the robot too, and a stop lost on
+    // the wire leaves it driving.
     if (m_autonomous) {
         // In Passive the robot ignores Drive while it cleans, docks or plays
         // a demo; Safe ends what it does and lets the stop take effect.
@@ -297,6 +310,17 @@ void RobotBridge::stopRobot()
         m_autonomous = false;
     }
     m_robot.teleop().stopAll();
+    // Stop all empties a Create's stored script (ERRATA 20).
+    m_scriptStartsCleaning = false;
+}
+
+void RobotBridge::tellControllerOfStop(const QString &by)
+{
+    const QString holder = m_lease.holder();
+    if (holder.isEmpty() || holder == by)
+        return;
+    reply(holder, {{"id", "stopped"}, {"ok", false}, {"by", by},
+                   {"error", QStringLiteral("%1 stopped the robot; you still have control: drive again to go on").arg(by)}});
 }
 
 void RobotBridge::stopAtEdges(const oi::SensorSnapshot &frame)
@@ -323,6 +347,7 @@ void RobotBridge::handleCommand(const BridgeInbox::Message &message)
     QString id, error;
     const std::optional<mqtt::CommandMessage> request = mqtt::CommandMessage::fromJson(message.payload, &id, &error);
     auto refuse = [&](const QString &why, QJsonObject extra = {}) {
+        logRefusal(client, message.payload.size(), why);
         extra.insert(QLatin1String("id"), id);
         extra.insert(QLatin1String("ok"), false);
         extra.insert(QLatin1String("error"), why);
@@ -337,18 +362,15 @@ void RobotBridge::handleCommand(const BridgeInbox::Message &message)
                               .arg(BridgeInbox::kStopIntervalMs));
         qCInfo(lcBridge, "stop from %s", qPrintable(client));
         stopRobot();
+        tellControllerOfStop(client);
         return reply(client, {{"id", id}, {"ok", true}});
     }
     // Either form becomes the same typed command; from here on only it counts.
     const std::optional<oi::OiCommand> command = request->toCommand(m_robot.robotProfile(), &error);
     if (!command)
         return refuse(error);
-    if (belongsToTheLink(command->command))
-        return refuse(QStringLiteral("%1 is not taken over MQTT: the bridge keeps the link's stream")
-                          .arg(nameOf(command->command)));
-    if (command->command == oi::Command::Full && !m_options.allowFull)
-        return refuse(QStringLiteral("full is off on this bridge: in Full mode the robot drives over cliffs and "
-                                     "wheel drops; send safe, or ask the teacher to set allow-full = yes"));
+    if (const QString why = m_rules.refusal(m_robot.robotProfile(), *command); !why.isEmpty())
+        return refuse(why);
     // Judged whole (ranges, the profile) before control, in either version.
     const oi::EncodeResult bytes = oi::encodeCommand(oi::CommandEncoder(m_robot.robotProfile()), *command);
     if (!bytes)
@@ -368,6 +390,12 @@ void RobotBridge::handleCommand(const BridgeInbox::Message &message)
 QString RobotBridge::sendValidated(const oi::OiCommand &command, const QByteArray &bytes)
 {
     const oi::Command c = command.command;
+    const std::optional<MotionCommand> motion = MotionCommand::fromCommand(command);
+    if (motion && motion->isStop()) {
+        // A stop is never assumed: sent in any mode, with or without data.
+        stopRobot();
+        return {};
+    }
     if (oi::needsSafeOrFull(c)) {
         m_robot.teleop().checkMode();
         if (m_robot.teleop().isPassive())
@@ -375,7 +403,7 @@ QString RobotBridge::sendValidated(const oi::OiCommand &command, const QByteArra
                                   "(or full) first")
                 .arg(nameOf(c), QString::fromUtf8(oi::whyNotInPassive(c).data(), qsizetype(oi::whyNotInPassive(c).size())));
     }
-    if (const std::optional<MotionCommand> motion = MotionCommand::fromCommand(command)) {
+    if (motion) {
         // Nobody can see what the robot does without fresh data.
         if (!m_robot.isLive())
             return QStringLiteral("no fresh data from the robot (link %1): motion refused").arg(linkWord(m_robot.state()));
@@ -385,19 +413,29 @@ QString RobotBridge::sendValidated(const oi::OiCommand &command, const QByteArra
     }
     if (!m_robot.send(bytes))
         return QStringLiteral("the robot is not connected");
-    if (oi::startsCleaning(c) || c == oi::Command::Buttons)
+    if (oi::startsCleaning(c) || c == oi::Command::Buttons || (c == oi::Command::PlayScript && m_scriptStartsCleaning))
         m_autonomous = true;
     else if (c == oi::Command::Safe || c == oi::Command::Full)
         m_autonomous = false;
+    if (c == oi::Command::Script) {
+        const auto inside = oi::decodeCommands(m_robot.robotProfile(), command.data);
+        m_scriptStartsCleaning = inside && std::any_of(inside->begin(), inside->end(), [](const oi::OiCommand &i) {
+            return oi::startsCleaning(i.command) || i.command == oi::Command::Buttons;
+        });
+    }
     return {};
 }
 
 void RobotBridge::handleControl(const QString &client, const QByteArray &payload, bool takeover, qint64 arrivedMs)
 {
+    auto refuse = [&](const QString &why) {
+        logRefusal(client, payload.size(), why);
+        replyControl(client, false, why);
+    };
     QString error;
     const std::optional<ControlAction> action = controlActionFromJson(payload, &error);
     if (!action)
-        return replyControl(client, false, error);
+        return refuse(error);
     switch (*action) {
     case ControlAction::Take:
         if (takeover) {
@@ -410,20 +448,19 @@ void RobotBridge::handleControl(const QString &client, const QByteArray &payload
             return replyControl(client, true);
         }
         if (m_stopLine && !m_stopLine->isSubscribed())
-            return replyControl(client, false, QStringLiteral("the bridge cannot hear stop all yet (its stop line is "
-                                                              "not connected): take control again in a moment"));
+            return refuse(QStringLiteral("the bridge cannot hear stop all yet (its stop line is not connected): "
+                                         "take control again in a moment"));
         if (!m_lease.take(client, arrivedMs))
-            return replyControl(client, false, QStringLiteral("%1 has control").arg(m_lease.holder()));
+            return refuse(QStringLiteral("%1 has control").arg(m_lease.holder()));
         return replyControl(client, true);
     case ControlAction::Keep:
         if (!m_lease.keep(client, arrivedMs))
-            return replyControl(client, false,
-                                m_lease.holder().isEmpty() ? QStringLiteral("nobody has control: take it first")
-                                                           : QStringLiteral("%1 has control").arg(m_lease.holder()));
+            return refuse(m_lease.holder().isEmpty() ? QStringLiteral("nobody has control: take it first")
+                                                     : QStringLiteral("%1 has control").arg(m_lease.holder()));
         return replyControl(client, true);
     case ControlAction::Release:
         if (!m_lease.release(client))
-            return replyControl(client, false, QStringLiteral("%1 does not have control").arg(client));
+            return refuse(QStringLiteral("%1 does not have control").arg(client));
         stopRobot();
         return replyControl(client, true);
     }
@@ -441,10 +478,24 @@ void RobotBridge::replyControl(const QString &client, bool ok, const QString &er
 
 void RobotBridge::reply(const QString &client, QJsonObject answer)
 {
-    if (!answer.value(QLatin1String("ok")).toBool())
-        qCInfo(lcBridge, "refused %s from %s: %s", qPrintable(answer.value(QLatin1String("id")).toString()),
-               qPrintable(client), qPrintable(answer.value(QLatin1String("error")).toString()));
-    m_broker.publish(mqtt::topics::reply(m_options.name, client), compact(answer), 1);
+    // At QoS 0: a reply queued while the broker is away would be sent again
+    // after it comes back, to a client whose control has lapsed meanwhile.
+    // An answer that no longer holds is worse than none.
+    m_broker.publish(mqtt::topics::reply(m_options.name, client), compact(answer), 0);
+}
+
+void RobotBridge::logRefusal(const QString &client, qsizetype bytes, const QString &error)
+{
+    const qint64 now = m_clock.nowMs();
+    if (m_refusalLoggedMs >= 0 && now - m_refusalLoggedMs < 1000) {
+        ++m_refusalsUnlogged;
+        return;
+    }
+    m_refusalLoggedMs = now;
+    const int more = std::exchange(m_refusalsUnlogged, 0);
+    qCInfo(lcBridge, "refused a message of %lld bytes from %s: %s%s", static_cast<long long>(bytes),
+           qPrintable(client.left(64)), qPrintable(error.left(160)),
+           more > 0 ? qPrintable(QStringLiteral(" (and %1 more refused in the second before)").arg(more)) : "");
 }
 
 void RobotBridge::onFrame(const oi::SensorSnapshot &frame)

@@ -4,7 +4,9 @@
 #include "bridge_inbox.h"
 #include "control_message.h"
 #include "control_lease.h"
+#include "link_status.h"
 #include "mqtt_client.h"
+#include "network_command_rules.h"
 #include "oi_command.h"
 #include "sensor_snapshot.h"
 #include "telemetry_changes.h"
@@ -38,6 +40,9 @@ public:
         // Full mode over the network, where the robot itself ignores cliffs
         // and wheel drops: off unless the teacher allows it.
         bool allowFull = false;
+        // Schedule and Set Day/Time over the network: the robot would start
+        // cleaning later by itself, with nobody in control.
+        bool allowSchedule = false;
     };
 
     // The longest command or control message the bridge reads; a longer
@@ -74,6 +79,7 @@ private:
     void onPayloadTooLarge(const QString &topic, qsizetype bytes);
     void onBrokerConnected();
     void onBrokerLost(const QString &reason);
+    void onLinkState(oilink::LinkState state);
     void onStopLineLost(const QString &reason);
     // Returns who had control.
     QString freeControlAndStop();
@@ -84,12 +90,19 @@ private:
     // The command's bytes are validated; motion goes through the teleop
     // rules, the rest straight to the robot. Returns the error, or empty.
     QString sendValidated(const oi::OiCommand &command, const QByteArray &bytes);
-    // Drive 0,0 and motors off, through the teleop rules; Safe first if the
-    // robot may be carrying out a command of its own in Passive.
+    // Drive 0,0 and motors off, sent whatever the bridge believes the robot
+    // is doing; Safe first if the robot may be carrying out a command of its
+    // own in Passive.
     void stopRobot();
+    // A stop from a client that does not hold control: the controller is
+    // told, since the robot no longer does what it last asked.
+    void tellControllerOfStop(const QString &by);
     // In Full mode the robot drives off an edge: the bridge stops it.
     void stopAtEdges(const oi::SensorSnapshot &frame);
     void reply(const QString &client, QJsonObject answer);
+    // One log line per refusal at most every second, with the message's
+    // size and not its content: a flood of bad messages fills no disk.
+    void logRefusal(const QString &client, qsizetype bytes, const QString &error);
     void replyControl(const QString &client, bool ok, const QString &error = {});
     void publishState(bool always = false);
     // The battery as the state says it, to a tenth of a percent.
@@ -105,10 +118,18 @@ private:
     LeaseClock &m_clock;
     ControlLease m_lease;
     Options m_options;
+    NetworkCommandRules m_rules;
     BridgeInbox m_inbox;
     // A cleaning, demo, dock search or button press was sent: the robot may
     // be moving in Passive, where Drive is ignored.
     bool m_autonomous = false;
+    // The script the robot holds starts a cleaning or demo of its own.
+    bool m_scriptStartsCleaning = false;
+    // The link streamed, then stopped: a stop sent meanwhile may be lost.
+    bool m_linkWasLive = false;
+    bool m_linkInterrupted = false;
+    qint64 m_refusalLoggedMs = -1;
+    int m_refusalsUnlogged = 0;
     bool m_atEdge = false;
     QTimer m_telemetryTimer;
     oilink::TelemetryChanges m_telemetryChanges;

@@ -39,11 +39,16 @@ QByteArray toBytes(const oi::Bytes &bytes)
 
 // Start, which leaves Safe or Full: on a Create after ending a script that
 // may be running, which would otherwise play on in Passive, where its Drive
-// is ignored and its waits never end (ERRATA 20).
+// is ignored and its waits never end (ERRATA 20). A stop comes first: a robot
+// that a program which died left driving in Safe or Full stops at the first
+// bytes it hears, whatever Start does to its wheels. (In Off or Passive the
+// robot ignores it.)
 QByteArray startBytes(const oi::RobotProfile &profile)
 {
     const oi::CommandEncoder encoder(profile);
     oi::Bytes out = encoder.endScript();
+    const oi::Bytes stop = encoder.stopMotion();
+    out.insert(out.end(), stop.begin(), stop.end());
     out.push_back(*encoder.start()->begin());
     return toBytes(out);
 }
@@ -279,6 +284,10 @@ void RobotLink::greetRobot()
         m_transport->setBaud(baud());
         useProfile();
     } else {
+        // Before the questions, the stop that starts a stream (startBytes):
+        // Drive 0,0 and motors off read alike on every profile.
+        if (m_settings.streaming)
+            writeBytes(toBytes(oi::CommandEncoder(oi::profile(oi::ProfileId::Create2)).stopMotion()));
         startProbe();
     }
 }

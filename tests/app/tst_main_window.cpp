@@ -158,10 +158,10 @@ private slots:
         oilink::LinkSettings settings = oilink::LinkSettings::serial("/dev/recording", oi::ProfileId::Create2);
         window.show();
         window.start(settings);
-        // Opening sends Start, then the stream.
+        // Opening sends a stop and Start, then the stream.
         QTRY_COMPARE_WITH_TIMEOUT(window.session().state(), oilink::LinkState::Streaming, 10000);
         const QList<QByteArray> opening = recording.take();
-        QCOMPARE(text(opening.first()), QString("128"));
+        QCOMPARE(text(opening.first()), QString("137 0 0 0 0 138 0 128"));
         window.modePanel()->setFullModeConfirmation([](QWidget *) { return true; });
         const std::pair<const char *, const char *> buttons[] = {
             {"safe", "131"}, {"full", "132"}, {"passive", "128"}, {"seek-dock", "143"}, {"stop", "173"}};

@@ -108,6 +108,9 @@ public:
         m_process.waitForFinished(5000);
     }
 
+    // The broker's process, for a test that freezes it (SIGSTOP).
+    qint64 processId() const { return m_process.processId(); }
+
     void stop()
     {
         if (m_process.state() == QProcess::NotRunning)

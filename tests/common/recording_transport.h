@@ -42,6 +42,10 @@ struct Recording {
     std::atomic<bool> cliffLeft{false};
     // False holds the streamed frames back.
     std::atomic<bool> streaming{true};
+    // True loses what the link writes on the way, as a bad cable does: the
+    // write succeeds, the robot never gets it (kept in `lost`).
+    std::atomic<bool> losing{false};
+    QList<QByteArray> lost;
     std::atomic<int> flushes{0};
 
     qsizetype count()
@@ -137,6 +141,10 @@ public:
             return false;
         const auto now = Recording::Clock::now();
         QMutexLocker lock(&m_recording->mutex);
+        if (m_recording->losing) {
+            m_recording->lost << bytes;
+            return true;
+        }
         m_recording->writes << bytes;
         m_recording->times << now;
         return true;

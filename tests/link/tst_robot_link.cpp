@@ -140,17 +140,18 @@ private slots:
         QTest::addColumn<LinkSettings>("settings");
         QTest::addColumn<QByteArray>("expected");
         LinkSettings s = create2();
-        QTest::newRow("create2") << s << bytes({128, 148, 1, 100});
+        QTest::newRow("create2") << s << bytes({137, 0, 0, 0, 0, 138, 0, 128, 148, 1, 100});
         s.baud = 38400;
-        QTest::newRow("create2 at 38400") << s << bytes({128, 148, 1, 6});
+        QTest::newRow("create2 at 38400") << s << bytes({137, 0, 0, 0, 0, 138, 0, 128, 148, 1, 6});
         s.baud = 19200;
-        QTest::newRow("create2 at 19200") << s << bytes({128, 148, 6, 1, 43, 44, 21, 22, 35});
+        QTest::newRow("create2 at 19200") << s << bytes({137, 0, 0, 0, 0, 138, 0, 128, 148, 6, 1, 43, 44, 21, 22, 35});
         s = LinkSettings::serial(QStringLiteral("/dev/recording"), oi::ProfileId::Create1);
-        // Start on a Create ends a script first (ERRATA 20).
-        QTest::newRow("create1") << s << bytes({152, 0, 128, 148, 1, 6});
+        // Start on a Create ends a script first (ERRATA 20); a stop comes
+        // before Start everywhere, for a robot that a program which died left driving.
+        QTest::newRow("create1") << s << bytes({152, 0, 137, 0, 0, 0, 0, 138, 0, 128, 148, 1, 6});
         s = create2();
         s.streamPackets = {7, 35};
-        QTest::newRow("chosen packets") << s << bytes({128, 148, 2, 7, 35});
+        QTest::newRow("chosen packets") << s << bytes({137, 0, 0, 0, 0, 138, 0, 128, 148, 2, 7, 35});
     }
     void openSendsStartThenStream()
     {
@@ -259,7 +260,7 @@ private slots:
         QCOMPARE(now.bytesDiscarded, quint64(2 + 84 + 1));
         QCOMPARE(now.resyncs, quint64(1)); // the stray 19 claimed a length of 19
         QCOMPARE(now.bytesReceived, quint64(2 + 84 * 3 + 1));
-        QCOMPARE(now.bytesSent, quint64(4));
+        QCOMPARE(now.bytesSent, quint64(7 + 4)); // the stop, Start and Stream
         QVERIFY(now.lastFrameTime.isValid());
         // The failure is reported soon, not only at the next one-second tick.
         stats.clear();
@@ -288,7 +289,7 @@ private slots:
     {
         QSignalSpy errors(m_link, &RobotLink::errorOccurred);
         m_link->open(create2());
-        const QByteArray startAndStream = bytes({128, 148, 1, 100});
+        const QByteArray startAndStream = bytes({137, 0, 0, 0, 0, 138, 0, 128, 148, 1, 100});
         // Re-armed after 1 s, then 2 s: three copies in all.
         m_clock.advance(999);
         QCOMPARE(current()->written().count(startAndStream), 1);
@@ -318,7 +319,7 @@ private slots:
         QCOMPARE(m_link->state(), LinkState::Reconnecting);
         m_clock.advance(RobotLink::kFirstBackoffMs);
         QCOMPARE(m_transports.size(), 2);
-        QCOMPARE(current()->written(), bytes({128, 148, 1, 100}));
+        QCOMPARE(current()->written(), bytes({137, 0, 0, 0, 0, 138, 0, 128, 148, 1, 100}));
         current()->inject(group100Frame());
         QCOMPARE(m_link->state(), LinkState::Streaming);
         QCOMPARE(stateList(stateSpy), states({LinkState::Connecting, LinkState::Streaming, LinkState::Lost,
@@ -346,7 +347,7 @@ private slots:
             QCOMPARE(m_transports.size(), tries + 1);
         }
         QCOMPARE(m_transports.size(), 6);
-        QCOMPARE(current()->written(), bytes({128, 148, 1, 100}));
+        QCOMPARE(current()->written(), bytes({137, 0, 0, 0, 0, 138, 0, 128, 148, 1, 100}));
         QCOMPARE(errors.size(), 1);
         QCOMPARE(errors.at(0).at(0).toString(), QStringLiteral("/dev/recording: no such port"));
         current()->inject(group100Frame());
@@ -503,7 +504,7 @@ private slots:
     {
         m_link->open(LinkSettings::serial(QStringLiteral("/dev/recording"), oi::ProfileId::Create1));
         Recording &r = current()->recording();
-        QCOMPARE(r.written(), bytes({152, 0, 128, 148, 1, 6}));
+        QCOMPARE(r.written(), bytes({152, 0, 137, 0, 0, 0, 0, 138, 0, 128, 148, 1, 6}));
         QVERIFY(r.commands.isEmpty());
         m_link->send(bytes({128})); // Passive, asked for
         m_link->send(bytes({137, 0, 100, 128, 0}));

@@ -364,6 +364,46 @@ private slots:
         QCOMPARE(r.value(QLatin1String("ok")), QJsonValue(true));
         QCOMPARE(alice.on(topics::reply(r1, QStringLiteral("alice"))).size(), qsizetype(1));
     }
+    // A flood of refused messages is logged once a second, with each
+    // message's size and the reason, never its content.
+    void aRefusedFloodIsLoggedOnceASecondWithoutItsContent()
+    {
+        MosquittoBroker broker;
+        QVERIFY2(broker.start(), qPrintable(broker.error()));
+        BridgeRig rig(r1, addressOf(broker), BridgeRig::Robot::Recording);
+        QVERIFY(rig.streaming());
+        ConsoleClient mallory(QStringLiteral("mallory"), addressOf(broker));
+        QVERIFY(mallory.waitForState(r1, true));
+
+        static QStringList logged;
+        logged.clear();
+        QLoggingCategory::setFilterRules(QStringLiteral("roomba.bridge.info=true"));
+        const QtMessageHandler previous = qInstallMessageHandler([](QtMsgType, const QMessageLogContext &c, const QString &m) {
+            if (QLatin1String(c.category) == QLatin1String("roomba.bridge") && m.startsWith(QLatin1String("refused")))
+                logged << m;
+        });
+        const QString secret = QStringLiteral("SECRET%1").arg(QString(3000, QLatin1Char('x')));
+        const QJsonObject bad{{"id", secret}, {"command", secret}};
+        const QString replies = topics::reply(r1, QStringLiteral("mallory"));
+        for (int i = 0; i < 50; ++i)
+            mallory.client.publish(topics::command(r1, QStringLiteral("mallory")), json(bad), 1);
+        const bool answered = QTest::qWaitFor([&] { return mallory.on(replies).size() >= 50; }, 10000);
+        // A second later on the bridge's clock, the next refusal says how many were not logged.
+        rig.clock.advance(1000);
+        mallory.client.publish(topics::command(r1, QStringLiteral("mallory")), json(bad), 1);
+        const bool countedOnce = QTest::qWaitFor([&] { return logged.size() >= 2; }, 10000);
+        qInstallMessageHandler(previous);
+        QLoggingCategory::setFilterRules(QStringLiteral("roomba.bridge.info=false"));
+        QVERIFY(answered); // every one is still answered
+        QVERIFY2(countedOnce, qPrintable(logged.join(QLatin1Char('\n'))));
+        QCOMPARE(logged.size(), qsizetype(2));
+        const qsizetype size = json(bad).size();
+        QVERIFY2(logged[0].startsWith(QStringLiteral("refused a message of %1 bytes from mallory: ").arg(size)), qPrintable(logged[0]));
+        QVERIFY2(logged[1].endsWith(QLatin1String("(and 49 more refused in the second before)")), qPrintable(logged[1]));
+        for (const QString &line : logged)
+            QVERIFY2(line.size() < 400 && !line.contains(QStringLiteral("SECRET") + QString(200, QLatin1Char('x'))),
+                     qPrintable(line.left(300)));
+    }
 };
 
 QTEST_GUILESS_MAIN(TestBridgeSafety)

@@ -2545,6 +2545,14 @@ GPL-3.0-or-later.</translation>
         <source>Markers</source>
         <translation>Markierungen</translation>
     </message>
+    <message>
+        <source>Typed into a text field: click the robot diagram or press Esc to drive with the keys</source>
+        <translation>In ein Textfeld getippt: Klicken Sie auf das Roboterbild oder drücken Sie Esc, um mit den Tasten zu fahren</translation>
+    </message>
+    <message>
+        <source>Typed into “%1”: click the robot diagram or press Esc to drive with the keys</source>
+        <translation>In „%1“ getippt: Klicken Sie auf das Roboterbild oder drücken Sie Esc, um mit den Tasten zu fahren</translation>
+    </message>
 </context>
 <context>
     <name>MarkerActions</name>
@@ -3672,20 +3680,6 @@ GPL-3.0-or-later.</translation>
 </context>
 <context>
     <name>RobotBar</name>
-    <message>
-        <source>STOP ALL  (Shift+Esc)</source>
-        <translation>ALLE STOPP  (Umschalt+Esc)</translation>
-    </message>
-    <message>
-        <source>Stop every robot in the window at once, whichever is selected.
-Space or Esc stops the selected robot.</source>
-        <translation>Hält jeden Roboter im Fenster sofort an, egal welcher ausgewählt ist.
-Leertaste oder Esc hält den ausgewählten Roboter an.</translation>
-    </message>
-    <message>
-        <source>Stop all robots</source>
-        <translation>Alle Roboter anhalten</translation>
-    </message>
     <message>
         <source>Robots</source>
         <translation>Roboter</translation>
@@ -5718,6 +5712,23 @@ Gesendet: %2</translation>
     <message>
         <source>Could not save %1: %2</source>
         <translation>%1 konnte nicht gespeichert werden: %2</translation>
+    </message>
+</context>
+<context>
+    <name>StopAllButton</name>
+    <message>
+        <source>STOP ALL  (Shift+Esc)</source>
+        <translation>ALLE STOPP  (Umschalt+Esc)</translation>
+    </message>
+    <message>
+        <source>Stop every robot at once, whichever is selected: the window&apos;s robots and every robot on the broker.
+Shift+Esc does the same from any window; Space or Esc stops the selected robot.</source>
+        <translation>Hält jeden Roboter sofort an, egal welcher ausgewählt ist: die Roboter des Fensters und jeden Roboter am Broker.
+Umschalt+Esc tut dasselbe aus jedem Fenster; Leertaste oder Esc hält den ausgewählten Roboter an.</translation>
+    </message>
+    <message>
+        <source>Stop all robots</source>
+        <translation>Alle Roboter anhalten</translation>
     </message>
 </context>
 <context>

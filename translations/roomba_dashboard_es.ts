@@ -2544,6 +2544,14 @@ GPL-3.0-or-later.</translation>
         <source>Markers</source>
         <translation>Marcas</translation>
     </message>
+    <message>
+        <source>Typed into a text field: click the robot diagram or press Esc to drive with the keys</source>
+        <translation>Escrito en un campo de texto: haga clic en el dibujo del robot o pulse Esc para conducir con las teclas</translation>
+    </message>
+    <message>
+        <source>Typed into “%1”: click the robot diagram or press Esc to drive with the keys</source>
+        <translation>Escrito en «%1»: haga clic en el dibujo del robot o pulse Esc para conducir con las teclas</translation>
+    </message>
 </context>
 <context>
     <name>MarkerActions</name>
@@ -3671,20 +3679,6 @@ GPL-3.0-or-later.</translation>
 </context>
 <context>
     <name>RobotBar</name>
-    <message>
-        <source>STOP ALL  (Shift+Esc)</source>
-        <translation>DETENER TODOS  (Mayús+Esc)</translation>
-    </message>
-    <message>
-        <source>Stop every robot in the window at once, whichever is selected.
-Space or Esc stops the selected robot.</source>
-        <translation>Detiene a la vez todos los robots de la ventana, esté seleccionado el que esté.
-Espacio o Esc detiene el robot seleccionado.</translation>
-    </message>
-    <message>
-        <source>Stop all robots</source>
-        <translation>Detener todos los robots</translation>
-    </message>
     <message>
         <source>Robots</source>
         <translation>Robots</translation>
@@ -5717,6 +5711,23 @@ Enviado: %2</translation>
     <message>
         <source>Could not save %1: %2</source>
         <translation>No se pudo guardar %1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>StopAllButton</name>
+    <message>
+        <source>STOP ALL  (Shift+Esc)</source>
+        <translation>DETENER TODOS  (Mayús+Esc)</translation>
+    </message>
+    <message>
+        <source>Stop every robot at once, whichever is selected: the window&apos;s robots and every robot on the broker.
+Shift+Esc does the same from any window; Space or Esc stops the selected robot.</source>
+        <translation>Detiene a la vez todos los robots, esté seleccionado el que esté: los de la ventana y todos los del broker.
+Mayús+Esc hace lo mismo desde cualquier ventana; Espacio o Esc detiene el robot seleccionado.</translation>
+    </message>
+    <message>
+        <source>Stop all robots</source>
+        <translation>Detener todos los robots</translation>
     </message>
 </context>
 <context>

@@ -5,19 +5,15 @@
 
 #include <QAbstractSpinBox>
 #include <QApplication>
+#include <QComboBox>
 #include <QKeyEvent>
 #include <QLineEdit>
 #include <QPlainTextEdit>
 #include <QTextEdit>
 
-namespace {
+#include <algorithm>
 
-// Widgets where letters, arrows and Space are typing, not driving.
-bool isTextInput(const QWidget *w)
-{
-    return qobject_cast<const QLineEdit *>(w) || qobject_cast<const QAbstractSpinBox *>(w)
-        || qobject_cast<const QTextEdit *>(w) || qobject_cast<const QPlainTextEdit *>(w);
-}
+namespace {
 
 // W A S D fold onto the arrows; 0 for any other key.
 int driveKey(int key)
@@ -31,12 +27,36 @@ int driveKey(int key)
     }
 }
 
+bool withCommandModifier(const QKeyEvent *event)
+{
+    return event->modifiers() & (Qt::ControlModifier | Qt::AltModifier | Qt::MetaModifier);
+}
+
 } // namespace
+
+bool KeyboardDriving::isTextInput(const QWidget *w)
+{
+    if (!w)
+        return false;
+    // A combo box the user can type into; a plain one picks from its list.
+    if (const auto *combo = qobject_cast<const QComboBox *>(w))
+        return combo->isEditable();
+    // Qt's text fields, read-only ones too (arrows move in them), and any
+    // other widget that takes typed text.
+    return qobject_cast<const QLineEdit *>(w) || qobject_cast<const QAbstractSpinBox *>(w)
+        || qobject_cast<const QTextEdit *>(w) || qobject_cast<const QPlainTextEdit *>(w)
+        || w->testAttribute(Qt::WA_InputMethodEnabled);
+}
 
 KeyboardDriving::KeyboardDriving(QWidget *window, QWidget *quietZone, QObject *parent)
     : QObject(parent), m_window(window), m_quietZone(quietZone)
 {
     qApp->installEventFilter(this);
+    // A field that gets the focus again gets the word about typing again.
+    connect(qApp, &QApplication::focusChanged, this, [this](QWidget *, QWidget *now) {
+        if (now != m_told)
+            m_told = nullptr;
+    });
 }
 
 KeyboardDriving::~KeyboardDriving()
@@ -53,37 +73,58 @@ void KeyboardDriving::setTarget(std::function<TeleopController *()> teleop, std:
 bool KeyboardDriving::eventFilter(QObject *watched, QEvent *event)
 {
     const QEvent::Type type = event->type();
-    if ((type != QEvent::KeyPress && type != QEvent::KeyRelease) || !watched->isWidgetType()
-        || static_cast<QWidget *>(watched)->window() != m_window || !m_teleop)
+    if ((type != QEvent::KeyPress && type != QEvent::KeyRelease) || !watched->isWidgetType() || !m_teleop)
         return false;
     auto *key = static_cast<QKeyEvent *>(event);
-    TeleopController *teleop = m_teleop();
-    // Shift+Esc stops every robot in the window, whatever is selected.
+    const bool press = type == QEvent::KeyPress && !key->isAutoRepeat();
+    // Shift+Esc stops every robot from any window of the program (the fleet
+    // view on the projector, a dialog), whatever is selected.
     if (key->key() == Qt::Key_Escape && key->modifiers() == Qt::ShiftModifier) {
-        if (type == QEvent::KeyPress && !key->isAutoRepeat()) {
+        if (press) {
             m_held.clear();
             emit stopAllRequested();
         }
         return true;
     }
-    // Esc always stops the selected robot. Space does too, except where it
-    // already means something: inside the plots it pauses them, and in a
-    // text field it types a space.
-    const QWidget *focus = QApplication::focusWidget();
-    const bool stopKey = key->key() == Qt::Key_Escape
-        || (key->key() == Qt::Key_Space && !isTextInput(focus)
-            && !(focus && m_quietZone && (focus == m_quietZone || m_quietZone->isAncestorOf(focus))));
+    QWidget *window = static_cast<QWidget *>(watched)->window();
+    const bool driving = window == m_window;
+    if (!driving && !std::any_of(m_stopWindows.cbegin(), m_stopWindows.cend(),
+                                 [window](const QPointer<QWidget> &w) { return w == window; }))
+        return false;
+    TeleopController *teleop = m_teleop();
+    QWidget *focus = QApplication::focusWidget();
+    const bool typing = isTextInput(focus);
+    // Esc always stops the selected robot, and takes the keys out of a text
+    // field. Space does too, except where it already means something:
+    // inside the plots it pauses them, and in a text field it types a space.
+    const bool quiet = focus && m_quietZone && (focus == m_quietZone || m_quietZone->isAncestorOf(focus));
+    const bool stopKey = key->key() == Qt::Key_Escape || (key->key() == Qt::Key_Space && !typing && !quiet);
     if (stopKey && key->modifiers() == Qt::NoModifier) {
-        if (type == QEvent::KeyPress && !key->isAutoRepeat()) {
+        if (press) {
             m_held.clear();
             if (teleop)
                 teleop->stopAll();
-            if (key->key() == Qt::Key_Escape)
+            if (driving && key->key() == Qt::Key_Escape) {
+                if (typing && m_home)
+                    m_home->setFocus(Qt::OtherFocusReason);
                 emit escapePressed();
+            }
         }
         return true;
     }
+    if (!driving)
+        return false;
+    if (typing && press)
+        noticeTyping(key, focus);
     return handleDriveKey(key);
+}
+
+void KeyboardDriving::noticeTyping(QKeyEvent *event, QWidget *focus)
+{
+    if ((driveKey(event->key()) || event->key() == Qt::Key_Space) && !withCommandModifier(event) && focus != m_told) {
+        m_told = focus;
+        emit typedIntoField(focus);
+    }
 }
 
 bool KeyboardDriving::handleDriveKey(QKeyEvent *event)
@@ -108,8 +149,7 @@ bool KeyboardDriving::handleDriveKey(QKeyEvent *event)
     }
     if (event->isAutoRepeat())
         return m_held.contains(key);
-    if ((event->modifiers() & (Qt::ControlModifier | Qt::AltModifier | Qt::MetaModifier))
-        || isTextInput(QApplication::focusWidget()))
+    if (withCommandModifier(event) || isTextInput(QApplication::focusWidget()))
         return false;
     m_held.insert(key);
     teleop->requestMotion(command());

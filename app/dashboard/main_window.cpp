@@ -10,6 +10,7 @@
 #include "drive_pad.h"
 #include "firmware_reading.h"
 #include "fleet_console.h"
+#include "fleet_view.h"
 #include "gamepad_input.h"
 #include "gamepad_panel.h"
 #include "keyboard_driving.h"
@@ -258,12 +259,29 @@ void MainWindow::wireInputs()
         if (!held)
             teleop().deadManReleased();
     });
-    connect(m_gamepad, &GamepadInput::stopAllRequested, &m_fleet, &RobotFleet::stopAll);
+    // Stop all: one action, whichever window, button or key asks for it.
+    QAction *stopAll = m_robotBar->stopAllAction();
+    connect(m_gamepad, &GamepadInput::stopAllRequested, stopAll, &QAction::trigger);
+    connect(m_projector->view(), &ProjectorView::stopAllRequested, stopAll, &QAction::trigger);
+    connect(fleetView(), &FleetView::stopAllRequested, stopAll, &QAction::trigger);
+    connect(&m_fleet, &RobotFleet::stoppedAll, m_keyboard, &KeyboardDriving::releaseAll);
     connect(m_gamepad, &GamepadInput::modeRequested, m_modePanel, &ModePanel::request);
     m_keyboard->setTarget([this] { return m_fleet.selected() ? &teleop() : nullptr; },
                           [this] { return m_drivePad->speedLimit(); });
-    connect(m_keyboard, &KeyboardDriving::stopAllRequested, &m_fleet, &RobotFleet::stopAll);
+    connect(m_keyboard, &KeyboardDriving::stopAllRequested, stopAll, &QAction::trigger);
     connect(m_keyboard, &KeyboardDriving::escapePressed, this, [this] { setProjectorView(false); });
+    // The fleet view stops with Space and Esc too; the keys drive from here.
+    m_keyboard->addStopWindow(fleetView());
+    // Esc leaves a text field for the diagram, which a click focuses too.
+    m_diagram->setFocusPolicy(Qt::ClickFocus);
+    m_keyboard->setHome(m_diagram);
+    connect(m_keyboard, &KeyboardDriving::typedIntoField, this, [this](QWidget *field) {
+        const QString name = field->accessibleName();
+        showMessage(name.isEmpty() ? tr("Typed into a text field: click the robot diagram or press Esc to drive with "
+                                        "the keys")
+                                   : tr("Typed into “%1”: click the robot diagram or press Esc to drive with the keys")
+                                         .arg(name));
+    });
 
     connect(m_connectionBar, &ConnectionBar::connectRequested, this, [this](const ConnectionRequest &request) {
         // The bar cannot name a robot on the broker or a recording: it reconnects it.

@@ -1,15 +1,14 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "robot_bar.h"
 
-#include "display_palette.h"
 #include "oi_text.h"
 #include "robot_fleet.h"
 #include "robot_session.h"
 #include "robot_status_bar.h"
+#include "stop_all_button.h"
 
 #include <QAction>
 #include <QMainWindow>
-#include <QPushButton>
 #include <QToolBar>
 
 #include <cmath>
@@ -26,24 +25,18 @@ RobotBar::RobotBar(RobotFleet &fleet, QMainWindow *window) : QObject(window), m_
     m_list = new RobotList(m_bar);
     m_list->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Preferred);
     m_bar->addWidget(m_list);
-    m_stopAll = new QPushButton(m_bar);
+    m_stopAll = new StopAllButton(m_bar);
     m_stopAll->setObjectName("stopAllButton");
-    m_stopAll->setFont(display::valueFont(window->font(), 1.3));
-    m_stopAll->setMinimumHeight(48);
-    const display::State alert = display::State::Alert;
-    const QPalette palette = window->palette();
-    m_stopAll->setStyleSheet(QString("QPushButton { background: %1; color: %2; padding: 6px 16px; border-radius: 6px; }"
-                                     "QPushButton:pressed { background: %2; color: %1; }")
-                                 .arg(display::stateColor(alert, palette).name(), display::textOn(alert, palette).name()));
     m_bar->addWidget(m_stopAll);
     window->addToolBar(Qt::TopToolBarArea, m_bar);
     window->addToolBarBreak(Qt::TopToolBarArea);
-    connect(m_stopAll, &QPushButton::clicked, &m_fleet, &RobotFleet::stopAll);
-    // Shift+Esc is read by the keyboard driving, before any shortcut; the
-    // menu names it.
+    // The button, the menu, the keys (Shift+Esc from any window, read by the
+    // keyboard driving), the fleet and projector views' buttons and the
+    // gamepad all trigger this one action.
     m_stopAllAction = new QAction(this);
     m_stopAllAction->setObjectName("stopAllAction");
     connect(m_stopAllAction, &QAction::triggered, &m_fleet, &RobotFleet::stopAll);
+    connect(m_stopAll, &QPushButton::clicked, m_stopAllAction, &QAction::trigger);
 
     const auto robotAt = [this](int index) {
         return index >= 0 && index < m_fleet.count() ? m_fleet.robots()[index] : nullptr;
@@ -65,10 +58,6 @@ RobotBar::RobotBar(RobotFleet &fleet, QMainWindow *window) : QObject(window), m_
 
 void RobotBar::retranslate()
 {
-    m_stopAll->setText(tr("STOP ALL  (Shift+Esc)"));
-    m_stopAll->setToolTip(tr("Stop every robot in the window at once, whichever is selected.\n"
-                             "Space or Esc stops the selected robot."));
-    m_stopAll->setAccessibleName(tr("Stop all robots"));
     m_bar->setWindowTitle(tr("Robots"));
     m_stopAllAction->setText(tr("&Stop all robots\tShift+Esc"));
     refresh();

@@ -2,6 +2,8 @@
 #include "fleet_view.h"
 
 #include "display_palette.h"
+#include "screen_fit.h"
+#include "stop_all_button.h"
 
 #include <QEvent>
 #include <QGridLayout>
@@ -18,6 +20,7 @@ constexpr int kSpacing = 12;
 // no smaller than this, however many (more scroll).
 constexpr qreal kMaxScale = 3;
 constexpr qreal kMinScale = 0.8;
+constexpr QSize kFullHd(1920, 1080);
 }
 
 FleetView::FleetView(QWidget *parent) : QWidget(parent)
@@ -30,9 +33,16 @@ FleetView::FleetView(QWidget *parent) : QWidget(parent)
     m_connect = new QPushButton(this);
     m_connect->setObjectName("fleetConnect");
     connect(m_connect, &QPushButton::clicked, this, &FleetView::connectRequested);
+    // Stop all where the class looks: on the projector, readable from the
+    // back row, the key in its label. The keys stay with the tiles.
+    m_stopAll = new StopAllButton(this);
+    m_stopAll->setObjectName("fleetStopAll");
+    m_stopAll->setFocusPolicy(Qt::NoFocus);
+    connect(m_stopAll, &QPushButton::clicked, this, &FleetView::stopAllRequested);
     auto *header = new QHBoxLayout;
     header->addWidget(m_broker, 1);
     header->addWidget(m_connect);
+    header->addWidget(m_stopAll);
     layout->addLayout(header);
     m_empty = new QLabel(this);
     m_empty->setObjectName("fleetEmpty");
@@ -70,6 +80,16 @@ void FleetView::changeEvent(QEvent *event)
     if (event->type() == QEvent::LanguageChange)
         retranslateUi();
     QWidget::changeEvent(event);
+}
+
+QPushButton *FleetView::stopAllButton() const { return m_stopAll; }
+
+void FleetView::resizeEvent(QResizeEvent *event)
+{
+    // 2.4 times the desktop's type on a 1920×1080 screen, in proportion on
+    // a smaller one, never under 1.8 times (a 1280×720 projector).
+    m_stopAll->setTypeScale(2.4 * screenfit::scaleFor(size(), kFullHd, 0.75, 1.25));
+    QWidget::resizeEvent(event);
 }
 
 void FleetView::setBrokerText(const QString &text, bool connected)

@@ -10,6 +10,7 @@ class QGridLayout;
 class QLabel;
 class QPushButton;
 class QScrollArea;
+class StopAllButton;
 
 // Every robot on the broker, a large tile each, as many columns as fit:
 // a whole classroom on a projector. Clicking a tile asks to select that
@@ -34,14 +35,18 @@ public:
     // How many times the desktop's type the tiles use: as large as lets
     // every tile fit the view, from 0.8 up to 3.
     qreal tileScale() const { return m_scale; }
+    // Stop all, red and large above the tiles (stopAllRequested()).
+    QPushButton *stopAllButton() const;
 
 signals:
     void robotClicked(const QString &name);
     void connectRequested();
+    void stopAllRequested();
 
 protected:
     bool eventFilter(QObject *watched, QEvent *event) override;
     void changeEvent(QEvent *event) override;
+    void resizeEvent(QResizeEvent *event) override;
 
 private:
     void relayout(bool force = false);
@@ -50,6 +55,7 @@ private:
     QLabel *m_broker = nullptr;
     QLabel *m_empty = nullptr;
     QPushButton *m_connect = nullptr;
+    StopAllButton *m_stopAll = nullptr;
     QScrollArea *m_scroll = nullptr;
     QWidget *m_canvas = nullptr;
     QGridLayout *m_grid = nullptr;

@@ -6,6 +6,7 @@
 #include "oi_text.h"
 #include "screen_fit.h"
 #include "shipped_lessons.h"
+#include "stop_all_button.h"
 
 #include <QEvent>
 #include <QHBoxLayout>
@@ -54,11 +55,19 @@ ProjectorView::ProjectorView(QWidget *parent) : QWidget(parent)
     reasonRow->addWidget(m_reasonLabel, 1);
     reasonRow->addWidget(m_enterSafe);
     m_reasonRow->hide();
+    // Stop all at the top right, where the class and the teacher look first.
+    m_stopAll = new StopAllButton(this);
+    m_stopAll->setObjectName("projectorStopAll");
+    m_stopAll->setFocusPolicy(Qt::NoFocus); // the view keeps the keys
+    connect(m_stopAll, &QPushButton::clicked, this, &ProjectorView::stopAllRequested);
+    auto *top = new QHBoxLayout;
+    top->addWidget(m_header, 1);
+    top->addWidget(m_stopAll, 0, Qt::AlignTop);
 
     // The hint at the foot, where it covers nothing.
     auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(24, 16, 24, 8);
-    layout->addWidget(m_header);
+    layout->addLayout(top);
     layout->addWidget(m_reasonRow);
     layout->addWidget(m_view, 1);
     layout->addWidget(m_hint);
@@ -108,6 +117,7 @@ void ProjectorView::applyScale()
     reason.setBold(true);
     m_reasonLabel->setFont(reason);
     m_enterSafe->setFont(reason);
+    m_stopAll->setTypeScale(1.4 * scale);
     // Yellow points at what needs doing.
     QPalette yellow = m_reasonLabel->palette();
     yellow.setColor(QPalette::WindowText, QColor(0xff, 0xd6, 0x00));
@@ -178,6 +188,7 @@ void ProjectorView::showHeader()
     m_reasonRow->setVisible(offer);
 }
 
+QPushButton *ProjectorView::stopAllButton() const { return m_stopAll; }
 QString ProjectorView::headerText() const { return m_header->text(); }
 QString ProjectorView::reasonText() const { return m_reasonRow->isHidden() ? QString() : m_reasonLabel->text(); }
 

@@ -11,6 +11,7 @@ class LessonStepView;
 class QLabel;
 class QPushButton;
 class SensorHistory;
+class StopAllButton;
 
 // The view for the front of a classroom: white on black, large type, the
 // selected robot and nothing else, or the lesson's current step and its
@@ -39,6 +40,8 @@ public:
     QString headerText() const;
     QString reasonText() const;
     QPushButton *enterSafeButton() const { return m_enterSafe; }
+    // Stop all, red and large beside the header (stopAllRequested()).
+    QPushButton *stopAllButton() const;
 
     LessonStepView *stepView() const { return m_view; }
     // How many times the desktop's type size it shows, for the screen it is on.
@@ -47,6 +50,7 @@ public:
 signals:
     // The Enter Safe button or the Enter key.
     void safeRequested();
+    void stopAllRequested();
 
 protected:
     bool eventFilter(QObject *watched, QEvent *event) override;
@@ -73,6 +77,7 @@ private:
     QWidget *m_reasonRow;
     QLabel *m_reasonLabel;
     QPushButton *m_enterSafe;
+    StopAllButton *m_stopAll;
     QLabel *m_hint;
     LessonStepView *m_view;
 };

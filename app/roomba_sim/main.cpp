@@ -135,6 +135,8 @@ int main(int argc, char *argv[])
         {QStringLiteral("asleep"), QStringLiteral("Start asleep, as after Power (133): deaf to bytes until a BRC pulse.")},
         {QStringLiteral("speed"), QStringLiteral("Run the robot's clock N times faster than real time (default 1), e.g. to watch it sleep."), QStringLiteral("N"), QStringLiteral("1")},
         {QStringLiteral("on-dock"), QStringLiteral("Start with the robot on its dock (charging in Passive; Safe mode will not drive there).")},
+        {QStringLiteral("sleeps-while-pulsed"), QStringLiteral("Play firmware release-3.2.x: sleep after 5 minutes in Passive whatever BRC pulses come (a pulse still wakes it, except on the dock with firmware before release-3.8.2; add --firmware release-3.2.1 for its banner) (Roomba 500 and Create 2).")},
+        {QStringLiteral("mode-off-by-one"), QStringLiteral("Play a Wi-Fi Roomba 600 that reports its OI mode (packet 35) one too high: Passive 2, Safe 3, Full 4.")},
         {QStringLiteral("wheel-diameter"), QStringLiteral("The real diameter of both drive wheels in mm (documents: 72). The firmware counts by 72 mm, so the encoders lie as a real robot's do: practise calibrating."), QStringLiteral("MM")},
         {QStringLiteral("left-wheel-diameter"), QStringLiteral("The real diameter of the left wheel in mm (overrides --wheel-diameter)."), QStringLiteral("MM")},
         {QStringLiteral("right-wheel-diameter"), QStringLiteral("The real diameter of the right wheel in mm (overrides --wheel-diameter)."), QStringLiteral("MM")},
@@ -245,6 +247,9 @@ int main(int argc, char *argv[])
     }
     if (!firmware.isEmpty())
         robot->setFirmwareRelease(firmware.toStdString());
+    if (parser.isSet(QStringLiteral("sleeps-while-pulsed")) && !profile->sleepsInPassive())
+        return fail(kUsageError, QStringLiteral("--sleeps-while-pulsed: the Create never sleeps; use it with roomba500 or create2"));
+    robot->setQuirks({parser.isSet(QStringLiteral("sleeps-while-pulsed")), parser.isSet(QStringLiteral("mode-off-by-one"))});
     if (parser.isSet(QStringLiteral("asleep"))) {
         const std::uint8_t startAndPower[] = {128, 133};
         robot->receive(startAndPower);

@@ -45,6 +45,16 @@ struct LinkSettings {
     // The in-process virtual robot's real wheels, which may differ from the
     // documents' on purpose (to practise calibrating).
     oi::WheelGeometry virtualWheels;
+    // What only some robots do, played by the in-process virtual robot:
+    // firmware release-3.2.x sleeping after 5 minutes in Passive whatever
+    // the BRC pulses, and a Wi-Fi Roomba 600 reporting its mode (packet 35)
+    // one too high.
+    bool virtualSleepsWhilePulsed = false;
+    bool virtualModeOneHigh = false;
+    // This robot is known to report its mode one too high (learned earlier
+    // and remembered with it): the link corrects packet 35 from the first
+    // frame instead of waiting to see it after a Start.
+    bool modeReportedOneHigh = false;
     // The BRC pin: a serial adapter's line, and whether asserting that line
     // pulls BRC low (as on FTDI-style TTL cables) or lets it go.
     BrcLine brcLine = BrcLine::Rts;

@@ -167,6 +167,7 @@ struct VirtualRobot::State {
     int baud;
     Microseconds baudSettlesAt{0};
     std::string firmwareRelease = "release-3.8.2";
+    Quirks quirks;
     double angleFactor = 1; // raw packet 20 units per degree
     std::string lastSafetyStop;
     Microseconds lastActivity{0};
@@ -352,7 +353,7 @@ struct VirtualRobot::State {
         }
         if (event == BrcPin::Event::RoseForBaud19200)
             baud = 19200;
-        if (event == BrcPin::Event::Fell)
+        if (event == BrcPin::Event::Fell && !quirks.sleepsWhilePulsed)
             lastActivity = now; // in Passive, restarts the count to sleep
     }
 
@@ -754,7 +755,7 @@ struct VirtualRobot::State {
         if (create1())
             s.set(32, brc.low() ? 0 : oi::bit::BaudRateChangePin); // active low
         s.set(34, onDock() ? oi::bit::SourceHomeBase : 0);
-        s.set(35, static_cast<std::int32_t>(mode));
+        s.set(35, static_cast<std::int32_t>(mode) + (quirks.reportsModeOneHigh ? 1 : 0));
         s.set(36, songNumber);
         s.set(37, songPlaying() ? 1 : 0);
         s.set(38, std::int32_t(streamIds.size()));
@@ -1171,6 +1172,10 @@ void VirtualRobot::setFirmwareRelease(std::string release)
             if (info->version <= kAngleFixedAfter)
                 s.angleFactor = kOldFirmwareAngleFactor;
 }
+
+void VirtualRobot::setQuirks(Quirks quirks) { m_state->quirks = quirks; }
+
+const VirtualRobot::Quirks &VirtualRobot::quirks() const { return m_state->quirks; }
 
 const VirtualRobot::Leds &VirtualRobot::leds() const { return m_state->leds; }
 

@@ -96,6 +96,18 @@ public:
     // pin in packet 32, active low.
     void setBrcLow(bool low);
     void setFirmwareRelease(std::string release); // e.g. "release-3.4.1"; printed on Reset
+    // What only some robots do in the field (off by default, as the
+    // documents say robots behave).
+    struct Quirks {
+        // Firmware release-3.2.x: sleeps after 5 minutes in Passive whatever
+        // BRC pulses come; a pulse still wakes it (off the dock).
+        bool sleepsWhilePulsed = false;
+        // Some Wi-Fi Roomba 600s: packet 35 reads one too high (Passive 2,
+        // Safe 3, Full 4).
+        bool reportsModeOneHigh = false;
+    };
+    void setQuirks(Quirks quirks);
+    const Quirks &quirks() const;
     struct Leds {
         std::uint8_t bits = 0, powerColor = 0, powerIntensity = 0;
         std::uint8_t weekdayBits = 0, schedulingBits = 0;

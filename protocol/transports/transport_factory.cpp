@@ -11,6 +11,7 @@ oilink::Transport *createTransport(const oilink::LinkSettings &settings, int bau
     if (settings.transport == oilink::TransportKind::Virtual) {
         auto *transport = new sim::VirtualTransport(settings.virtualRobot, settings.virtualSeed, std::move(room), robot, parent);
         transport->setWheels(settings.virtualWheels);
+        transport->setQuirks(settings.virtualSleepsWhilePulsed, settings.virtualModeOneHigh);
         return transport;
     }
     return oilink::createTransport(settings, baud, parent);

@@ -34,6 +34,7 @@ void VirtualTransport::open()
         m_robot = std::make_unique<RealTimeRobot>(oi::profile(m_profile), m_seed);
         m_robot->robot().joinRoom(m_room, m_id);
         m_robot->robot().setWheels(m_wheels);
+        m_robot->robot().setQuirks({m_sleepsWhilePulsed, m_modeOneHigh});
         m_robot->setTimeScale(m_timeScale);
         connect(m_robot.get(), &RealTimeRobot::bytesOut, this, &VirtualTransport::robotSaid);
     }

@@ -39,6 +39,13 @@ public:
 
     // The robot's real wheels, from the next open() (LinkSettings::virtualWheels).
     void setWheels(const oi::WheelGeometry &wheels) { m_wheels = wheels; }
+    // What only some robots do (LinkSettings::virtualSleepsWhilePulsed,
+    // virtualModeOneHigh), from the next open().
+    void setQuirks(bool sleepsWhilePulsed, bool modeOneHigh)
+    {
+        m_sleepsWhilePulsed = sleepsWhilePulsed;
+        m_modeOneHigh = modeOneHigh;
+    }
     // The robot's clock runs this many times faster than real time, from the next open() (tests).
     void setTimeScale(double scale) { m_timeScale = scale; }
 
@@ -55,6 +62,8 @@ private:
     std::uint32_t m_seed;
     oi::WheelGeometry m_wheels;
     double m_timeScale = 1;
+    bool m_sleepsWhilePulsed = false;
+    bool m_modeOneHigh = false;
     std::shared_ptr<Room> m_room;
     RobotId m_id;
     std::unique_ptr<RealTimeRobot> m_robot;

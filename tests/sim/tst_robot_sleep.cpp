@@ -178,6 +178,62 @@ private slots:
         QVERIFY(r.robot.asleep());
     }
 
+    // Firmware release-3.2.x (an option, off by default): the pulses that keep
+    // other firmware awake do not; it sleeps five minutes after entering
+    // Passive, and a pulse still wakes it.
+    void release32SleepsWhateverThePulses_data()
+    {
+        QTest::addColumn<bool>("sleepsWhilePulsed");
+        QTest::newRow("default") << false;
+        QTest::newRow("release-3.2.x") << true;
+    }
+    void release32SleepsWhateverThePulses()
+    {
+        QFETCH(bool, sleepsWhilePulsed);
+        Robot r(ProfileId::Create2);
+        QVERIFY(!r.robot.quirks().sleepsWhilePulsed);
+        r.robot.setQuirks({.sleepsWhilePulsed = sleepsWhilePulsed});
+        for (int minute = 0; minute < 4; ++minute) {
+            r.robot.advance(59s);
+            pulse(r.robot, 1s);
+        }
+        r.robot.advance(59s);
+        QVERIFY(!r.robot.asleep());
+        r.robot.advance(1s);
+        QCOMPARE(r.robot.asleep(), sleepsWhilePulsed);
+        if (!sleepsWhilePulsed)
+            return;
+        QVERIFY(!r.answers());
+        pulse(r.robot, 20ms);
+        QVERIFY(!r.robot.asleep());
+        r.robot.advance(kWake);
+        r.send(r.encoder.start());
+        QVERIFY(r.answers());
+    }
+
+    // Some Wi-Fi Roomba 600s (an option, off by default) report the mode one
+    // too high in packet 35, in replies and stream frames alike.
+    void aRoomba600ReportingItsModeOneHigh()
+    {
+        Robot r(ProfileId::Create2);
+        QCOMPARE(r.ask(35), Bytes{1});
+        r.robot.setQuirks({.reportsModeOneHigh = true});
+        QCOMPARE(r.ask(35), Bytes{2}); // Passive
+        r.send(r.encoder.safe());
+        QCOMPARE(r.ask(35), Bytes{3});
+        r.send(r.encoder.full());
+        QCOMPARE(r.ask(35), Bytes{4});
+        QCOMPARE(r.robot.mode(), OiMode::Full); // what it does is right
+        r.robot.takeOutput();
+        const int ids[] = {35};
+        r.send(r.encoder.stream(ids));
+        r.robot.advance(30ms);
+        const Bytes frames = r.robot.takeOutput();
+        QVERIFY(frames.size() >= 5);
+        QCOMPARE(frames[0], std::uint8_t(19));
+        QCOMPARE(frames[3], std::uint8_t(4));
+    }
+
     void onTheDockOldFirmwareDoesNotWake_data()
     {
         QTest::addColumn<QString>("release");

@@ -159,6 +159,7 @@ void TestRoombaSim::refusesBadArguments_data()
     QTest::newRow("wheel twice the documents'") << QStringList{"--left-wheel-diameter", "144"};
     QTest::newRow("wheel of nothing") << QStringList{"--right-wheel-diameter", "0"};
     QTest::newRow("wheel base negative") << QStringList{"--wheel-base", "-235"};
+    QTest::newRow("the Create never sleeps") << QStringList{"--profile", "create1", "--sleeps-while-pulsed"};
 }
 
 void TestRoombaSim::refusesBadArguments()
@@ -183,6 +184,8 @@ void TestRoombaSim::helpAndVersion()
     QCOMPARE(process.exitCode(), 0);
     const QByteArray help = process.readAllStandardOutput();
     QVERIFY(help.contains("--profile") && help.contains("--tcp") && help.contains("--link"));
+    QVERIFY(help.contains("--sleeps-while-pulsed") && help.contains("release-3.2.x"));
+    QVERIFY(help.contains("--mode-off-by-one") && help.contains("one too high"));
     process.start(kProgram, {QStringLiteral("--version")});
     QVERIFY(process.waitForFinished(5000));
     QCOMPARE(process.exitCode(), 0);

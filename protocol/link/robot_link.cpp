@@ -83,12 +83,23 @@ RobotLink::RobotLink(Clock &clock, QObject *parent)
 {
     registerLinkMetaTypes();
     m_brc = new BrcPulser(clock, this);
-    connect(m_brc, &BrcPulser::awake, this, &RobotLink::greetRobot);
+    connect(m_brc, &BrcPulser::awake, this, &RobotLink::onRobotAwake);
     m_parser.setSnapshotHandler([this](const oi::SensorSnapshot &s, oi::FrameKind kind) {
-        if (kind == oi::FrameKind::Stream)
-            onFrame(s);
-        else
-            onReply(s);
+        const auto dispatch = [this, kind](const oi::SensorSnapshot &frame) {
+            if (kind == oi::FrameKind::Stream)
+                onFrame(frame);
+            else
+                onReply(frame);
+        };
+        if (!s.has(35)) {
+            dispatch(s);
+            return;
+        }
+        // The mode as it is, whatever this robot reports (ModeReading).
+        oi::SensorSnapshot corrected = s;
+        if (m_modeReading.read(corrected, m_clock.nowNs() / 1'000'000))
+            emit modeReportedOneHigh();
+        dispatch(corrected);
     });
     for (ClockTimer *t : {&m_watchdog, &m_noData, &m_reconnect, &m_probeRetry, &m_queryQuiet, &m_queryTimeout,
                           &m_statsSoon})
@@ -160,6 +171,10 @@ void RobotLink::open(const LinkSettings &settings)
     m_reported.clear();
     m_recovering = false;
     m_lastTransportError.clear();
+    m_modeReading = {};
+    m_modeReading.setOneHigh(settings.modeReportedOneHigh);
+    m_lastOnDock.reset();
+    m_wokeStream = m_rearmedSinceStop = false;
     m_backoffMs = kFirstBackoffMs;
     m_openedNs = m_clock.nowNs();
     m_rateStartNs = m_openedNs;
@@ -249,6 +264,7 @@ void RobotLink::dropTransport()
     }
     m_transportOpen = false;
     m_streamRequested = false;
+    m_wakingStream = false;
     m_watchdog.stop();
     m_noData.stop();
     dropPartialInput();
@@ -363,6 +379,31 @@ void RobotLink::onProbeFailed()
     m_rearmMs = std::min(m_rearmMs * 2, kMaxRearmMs);
 }
 
+QString RobotLink::stoppedMessage() const
+{
+    const QString where = m_settings.describe();
+    if (!m_profile || !m_profile->sleepsInPassive())
+        return tr("%1: the robot stopped sending and does not answer Start: is it still switched on, is its "
+                  "battery charged, and is the cable in?")
+            .arg(where);
+    const QString robot = fromStd(m_profile->name);
+    if (!m_wokeStream)
+        return tr("%1: the robot stopped sending: it is probably asleep (a %2 sleeps after 5 minutes in Passive), "
+                  "and no pulse can wake it here: %3. Press Clean to wake it; the link streams again once it "
+                  "is awake. To wake it from here, wire its BRC pin to the adapter's RTS or DTR line.")
+            .arg(where, robot, m_transport ? m_transport->brcUnavailable() : tr("the port is closed"));
+    if (m_lastOnDock.value_or(false))
+        return tr("%1: the robot is asleep on its dock, and a BRC pulse did not wake it: firmware older than "
+                  "release-3.8.2 (release-stm32-3.7.7) is not woken by a pulse on the dock. Press Clean or lift "
+                  "it off the dock; the link streams again once it is awake.")
+            .arg(where);
+    return tr("%1: the robot stopped sending and did not wake when its BRC pin was pulsed: it is asleep and "
+              "the pulse does not reach it, or the cable has no BRC wire (check the link's BRC line, RTS or "
+              "DTR, and its polarity). On its dock, firmware older than release-3.8.2 is not woken by a "
+              "pulse: press Clean or lift it off the dock; the link streams again once it is awake.")
+        .arg(where);
+}
+
 QString RobotLink::noDataMessage() const
 {
     const QString message = tr("%1: no data: is the robot on, and is the baud right?").arg(m_settings.describe());
@@ -408,6 +449,7 @@ void RobotLink::startStream()
     m_parser.setExpectedStream(ids);
     m_streamCommand = toBytes(*command);
     m_frameSinceStreamStart = false;
+    m_wakingStream = m_wokeStream = m_rearmedSinceStop = false;
     m_rearmMs = kNoDataAfterMs;
     if (!writeBytes(startBytes(*m_profile)) || !writeBytes(m_streamCommand))
         return;
@@ -424,8 +466,37 @@ void RobotLink::startStream()
 // missing for a second must not go on driving on commands sent blind.
 void RobotLink::rearmStream()
 {
+    m_rearmedSinceStop = true;
     writeBytes(startBytes(*m_profile));
     writeBytes(m_streamCommand);
+}
+
+// A Roomba 500 or Create 2 that falls asleep (5 minutes in Passive, or
+// Power) stops its stream without a word and hears nothing, Start included,
+// until its BRC pin is pulsed (ERRATA 17).
+bool RobotLink::wakeStoppedStream()
+{
+    if (m_wakingStream)
+        return true; // Start and Stream follow the pulse already on its way
+    if (!m_profile || !m_profile->sleepsInPassive() || !m_brc->wake())
+        return false;
+    m_wakingStream = m_wokeStream = true;
+    return true;
+}
+
+void RobotLink::onRobotAwake()
+{
+    if (!m_wakingStream) {
+        greetRobot(); // the wake as the port opened
+        return;
+    }
+    m_wakingStream = false;
+    // Frames came back meanwhile: the robot was awake, and Start would end
+    // Safe or Full for nothing. A query in progress has the line to itself;
+    // the no-data timer asks again after it.
+    if (!m_streamRequested || m_state == LinkState::Streaming || m_queryPhase != QueryPhase::None)
+        return;
+    rearmStream();
 }
 
 void RobotLink::onBytes(const QByteArray &bytes)
@@ -469,6 +540,8 @@ void RobotLink::onFrame(const oi::SensorSnapshot &frame)
         return; // closed by a slot of an earlier frame of the same read
     m_lastFrameMs = m_clock.msecsSinceEpoch();
     m_frameSinceStreamStart = true;
+    if (frame.has(34))
+        m_lastOnDock = frame.chargingSource(oi::ChargingSource::HomeBase);
     if (frame.has(35))
         m_brc->noteMode(frame.oiMode());
     if (m_queryPhase == QueryPhase::None)
@@ -480,6 +553,7 @@ void RobotLink::onFrame(const oi::SensorSnapshot &frame)
         }
         m_noData.stop();
         m_reported.clear();
+        m_wokeStream = m_rearmedSinceStop = false;
         m_backoffMs = kFirstBackoffMs;
         m_rearmMs = kNoDataAfterMs;
         setState(LinkState::Streaming);
@@ -498,6 +572,10 @@ void RobotLink::onWatchdog()
     setState(LinkState::Stale);
     m_rearmMs = kNoDataAfterMs;
     m_noData.start(m_rearmMs);
+    // A stream that ran has stopped: the robot may have fallen asleep. The
+    // pulse is harmless to a robot that is awake (shorter than a baud pulse),
+    // and Start follows only if the stream stays silent.
+    wakeStoppedStream();
 }
 
 void RobotLink::onNoData()
@@ -510,7 +588,10 @@ void RobotLink::onNoData()
     }
     if (!m_frameSinceStreamStart)
         reportError(noDataMessage());
-    rearmStream();
+    else if (m_rearmedSinceStop)
+        reportError(stoppedMessage()); // woken (where it can be) and asked again, and still silent
+    if (!m_frameSinceStreamStart || !wakeStoppedStream())
+        rearmStream();
     m_rearmMs = std::min(m_rearmMs * 2, kMaxRearmMs);
     m_noData.start(m_rearmMs);
 }
@@ -560,9 +641,19 @@ bool RobotLink::writeBytes(const QByteArray &bytes, bool asked)
 
 void RobotLink::noteSent(const QByteArray &bytes)
 {
+    noteModeCommands(bytes);
     m_totals.bytesSent += static_cast<quint64>(bytes.size());
     record(recording::RecordKind::Sent, bytes);
     emit rawBytesSent(bytes);
+}
+
+void RobotLink::noteModeCommands(const QByteArray &bytes)
+{
+    const oi::RobotProfile &reader = m_profile ? *m_profile : oi::profile(oi::ProfileId::Create2);
+    const qint64 nowMs = m_clock.nowNs() / 1'000'000;
+    for (const oi::OiCommand &command : oi::readCommands(
+             reader, {reinterpret_cast<const std::uint8_t *>(bytes.constData()), static_cast<std::size_t>(bytes.size())}))
+        m_modeReading.sent(command.command, nowMs);
 }
 
 void RobotLink::querySensors(const QList<int> &packetIds)
@@ -748,6 +839,7 @@ void RobotLink::startDoctor()
         m_probe = nullptr;
     }
     m_brc->setTransport(nullptr);
+    m_wakingStream = false;
     dropPartialInput();
     setState(LinkState::Connecting);
     m_doctor = new ConnectionDoctor(*m_transport, m_settings.profile, m_settings.baud, m_clock, this);

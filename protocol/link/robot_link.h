@@ -8,6 +8,7 @@
 #include "recording_file.h"
 #include "replay_transport.h"
 
+#include "mode_reading.h"
 #include "stream_parser.h"
 
 #include <QByteArray>
@@ -20,6 +21,7 @@
 #include <deque>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace oilink {
@@ -68,6 +70,9 @@ public:
     // True when the probe found a Roomba 500 or a Create 2 (see
     // profileAssumed()), until the link is opened again.
     bool isProfileAssumed() const { return m_profileAssumed; }
+    // Whether the mode this robot reports is known to be true (or known to
+    // be one too high, and corrected): see oi::ModeReading::known().
+    bool isModeReadingKnown() const { return m_modeReading.known(); }
     // The baud the stream was sized for.
     int baud() const;
     QList<int> streamPackets() const;
@@ -129,6 +134,11 @@ signals:
     // for a named profile, a Create (which the probe tells apart), or a
     // transport that knows its robot (the virtual robot).
     void profileAssumed(oi::ProfileId assumed);
+    // The robot read Safe right after Start, or a mode above Full: it
+    // reports its mode (packet 35) one too high, as some Wi-Fi Roomba 600s
+    // do. Every frame and reply from now on carries the true mode; remember
+    // it with the robot (LinkSettings::modeReportedOneHigh).
+    void modeReportedOneHigh();
     // A Sensors or Query List request got no answer (errorOccurred says so too).
     void sensorQueryFailed(const QString &message);
     void connectionCheckStep(const QString &step);
@@ -171,6 +181,13 @@ private:
     bool takeScriptReply(const QByteArray &bytes);
     void onWatchdog();
     void onNoData();
+    void onRobotAwake();
+    // A stream that ran has stopped: a robot that sleeps gets a wake pulse,
+    // and Start and Stream once it has had time to wake. False where no
+    // pulse can go (the Create, or the pin out of reach).
+    bool wakeStoppedStream();
+    // Bytes that went to the robot: the mode commands among them.
+    void noteModeCommands(const QByteArray &bytes);
     // `asked`: a command from send(), not one of the link's own exchanges.
     bool writeBytes(const QByteArray &bytes, bool asked = false);
     // Counts, records and shows bytes that went to the robot.
@@ -188,6 +205,8 @@ private:
     void scheduleStats();
     void emitStatsIfChanged();
     QString noDataMessage() const;
+    // Why a stream that ran stays silent, in the robot's terms.
+    QString stoppedMessage() const;
     void record(recording::RecordKind kind, const QByteArray &bytes);
     void emitRecordingStatus(const QString &error = {});
 
@@ -208,6 +227,11 @@ private:
     QByteArray m_streamCommand;
     bool m_streamRequested = false;
     bool m_frameSinceStreamStart = false;
+    bool m_wakingStream = false; // a wake pulse for a stream that stopped; Start and Stream follow
+    bool m_wokeStream = false;   // the link pulsed since the stream stopped
+    bool m_rearmedSinceStop = false; // Start and Stream went since the stream stopped
+    std::optional<bool> m_lastOnDock; // packet 34's home base, as last streamed
+    oi::ModeReading m_modeReading;
 
     oi::StreamParser m_parser;
     bool m_feeding = false;

@@ -178,6 +178,7 @@ void RobotLinkThread::start()
         emit streamStarted(profile, baud, packets);
     });
     relay(link, &RobotLink::profileAssumed, [this](oi::ProfileId assumed) { emit profileAssumed(assumed); });
+    relay(link, &RobotLink::modeReportedOneHigh, [this] { emit modeReportedOneHigh(); });
     relay(link, &RobotLink::connectionCheckStep, [this](const QString &s) { emit connectionCheckStep(s); });
     relay(link, &RobotLink::connectionChecked,
           [this](const ConnectionDoctor::Report &r) { emit connectionChecked(r); });

@@ -87,6 +87,7 @@ signals:
     void statistics(const oilink::LinkStats &stats);
     void streamStarted(oi::ProfileId profile, int baud, const QList<int> &packets);
     void profileAssumed(oi::ProfileId assumed); // see RobotLink::profileAssumed
+    void modeReportedOneHigh();                 // see RobotLink::modeReportedOneHigh
     void connectionCheckStep(const QString &step);
     void connectionChecked(const oilink::ConnectionDoctor::Report &report);
     void rawBytesSent(const QByteArray &bytes);

@@ -121,6 +121,8 @@ public:
         if (!m_open || !m_line.brcInReach)
             return false;
         pinPulledLow += low;
+        if (brcChanged)
+            brcChanged(low);
         if (m_stepped)
             m_stepped->setBrcLow(low);
         else
@@ -131,6 +133,7 @@ public:
     QString describe() const override { return QStringLiteral("test line"); }
 
     int pinPulledLow = 0; // how often the BRC pin was pulled low
+    std::function<void(bool low)> brcChanged; // each change of the pin, as it happens
 
 private:
     sim::SerialLine serialLine() { return {robot().baud(), m_baud}; }

@@ -18,6 +18,8 @@
 #include <QSignalSpy>
 #include <QTest>
 
+#include <cmath>
+
 namespace {
 constexpr int kTimeoutMs = 20000;
 // Ten minutes of 15 ms stream frames.
@@ -29,6 +31,54 @@ oilink::LinkSettings testLine(std::optional<oi::ProfileId> profile)
     oilink::LinkSettings settings = oilink::LinkSettings::serial(QStringLiteral("test line"), profile);
     settings.streamPackets = {35};
     return settings;
+}
+
+// What went over the line, in order, on the test's clock: the BRC pin's
+// changes, the bytes the link sent, and the first frame after any gap.
+struct LineLog {
+    struct Event {
+        qint64 ms;
+        QString what;
+    };
+    QList<Event> events;
+    int frames = 0;
+    qint64 lastFrameMs = -1;
+
+    void watch(oilink::RobotLink &link, ManualClock &clock, QObject *context)
+    {
+        QObject::connect(&link, &oilink::RobotLink::rawBytesSent, context, [this, &clock](const QByteArray &bytes) {
+            QStringList values;
+            for (char c : bytes)
+                values << QString::number(std::uint8_t(c));
+            events.append({clock.nowNs() / 1'000'000, QStringLiteral("sent ") + values.join(QLatin1Char(' '))});
+        });
+        QObject::connect(&link, &oilink::RobotLink::snapshot, context, [this, &clock] {
+            ++frames;
+            lastFrameMs = clock.nowNs() / 1'000'000;
+            if (events.isEmpty() || events.last().what != QLatin1String("frame"))
+                events.append({lastFrameMs, QStringLiteral("frame")});
+        });
+    }
+    void watch(SimLineTransport &line, ManualClock &clock)
+    {
+        line.brcChanged = [this, &clock](bool low) {
+            events.append({clock.nowNs() / 1'000'000, low ? QStringLiteral("BRC low") : QStringLiteral("BRC high")});
+        };
+    }
+    QStringList whatFrom(qsizetype from) const
+    {
+        QStringList out;
+        for (qsizetype i = from; i < events.size(); ++i)
+            out << events[i].what;
+        return out;
+    }
+};
+
+void placeOnDock(sim::VirtualRobot &robot)
+{
+    // Nose first onto the contacts, as roomba-sim --on-dock does.
+    const sim::World::Dock dock = *robot.world().dock;
+    robot.placeAt(oi::Pose{dock.x, dock.y, dock.headingRad + std::acos(-1.0)});
 }
 } // namespace
 
@@ -209,6 +259,199 @@ private slots:
             QVERIFY2(line->pinPulledLow >= 4, qPrintable(QString::number(line->pinPulledLow)));
         else
             QCOMPARE(line->pinPulledLow, 0);
+        link.close();
+    }
+
+    // Firmware release-3.2.x sleeps after 5 minutes in Passive whatever the
+    // keep-awake pulses. The link sees the stream stop within its stale
+    // limit, pulses BRC, waits for the robot to wake, then stops it and
+    // sends Start and Stream again: the frames come back without the user,
+    // and nothing is reported.
+    void aRobotThatFallsAsleepMidSessionStreamsAgain()
+    {
+        ManualClock clock;
+        oilink::RobotLink link(clock);
+        SimLineTransport *line = nullptr;
+        LineLog log;
+        link.setTransportFactory([&](const oilink::LinkSettings &) {
+            line = new SimLineTransport(oi::ProfileId::Create2, {}, clock);
+            line->robot().setQuirks({.sleepsWhilePulsed = true});
+            log.watch(*line, clock);
+            return line;
+        });
+        log.watch(link, clock, this);
+        QStringList errors;
+        connect(&link, &oilink::RobotLink::errorOccurred, this, [&](const QString &e) { errors << e; });
+        int notPassive = 0;
+        connect(&link, &oilink::RobotLink::snapshot, this,
+                [&](const oi::SensorSnapshot &f) { notPassive += f.oiMode() != oi::OiMode::Passive; });
+        oilink::LinkSettings settings = testLine(oi::ProfileId::Create2);
+        settings.keepAwakeMs = 70'000; // four pulses before the five minutes are up, none as they end
+        link.open(settings);
+        QVERIFY(clock.advanceUntil([&] { return log.frames > 0; }, kTimeoutMs));
+        // Five minutes of frames, a second at a time, until it sleeps.
+        for (int s = 0; s < 400 && !line->robot().asleep(); ++s)
+            clock.advance(1000);
+        QVERIFY(line->robot().asleep());
+        QVERIFY2(line->pinPulledLow >= 5, qPrintable(QString::number(line->pinPulledLow))); // the wake, four keep-awakes
+        const qint64 lastFrameMs = log.lastFrameMs;
+        const int framesBefore = log.frames;
+        qsizetype from = log.events.size();
+        while (from > 0 && log.events[from - 1].ms > lastFrameMs)
+            --from; // anything after the last frame
+        QVERIFY(clock.advanceUntil([&] { return log.frames >= framesBefore + 3; }, kTimeoutMs));
+
+        const QStringList expected{QStringLiteral("BRC low"), QStringLiteral("BRC high"),
+                                   QStringLiteral("sent 137 0 0 0 0 138 0 128"), QStringLiteral("sent 148 1 35"),
+                                   QStringLiteral("frame")};
+        QCOMPARE(log.whatFrom(from), expected);
+        const auto at = [&](int i) { return log.events[from + i].ms; };
+        QVERIFY2(at(0) - lastFrameMs <= oilink::RobotLink::kStaleAfterMs + 15, qPrintable(QString::number(at(0) - lastFrameMs)));
+        QCOMPARE(at(1) - at(0), qint64(oilink::BrcPulser::kWakePulseMs));
+        QCOMPARE(at(2) - at(1), qint64(oilink::BrcPulser::kWakeMs));
+        QVERIFY(!line->robot().asleep());
+        QCOMPARE(line->robot().mode(), oi::OiMode::Passive);
+        QCOMPARE(notPassive, 0);
+        QVERIFY2(errors.isEmpty(), qPrintable(errors.join(QStringLiteral(" | "))));
+        QCOMPARE(link.state(), oilink::LinkState::Streaming);
+        link.close();
+    }
+
+    // The same robot asleep on its dock: before release-3.8.2 no pulse wakes
+    // it there. The link says so in the robot's terms, not "is the baud
+    // right?", and streams again once it is lifted off the dock.
+    void aRobotAsleepOnItsDockIsNamed()
+    {
+        ManualClock clock;
+        oilink::RobotLink link(clock);
+        SimLineTransport *line = nullptr;
+        link.setTransportFactory([&](const oilink::LinkSettings &) {
+            line = new SimLineTransport(oi::ProfileId::Create2, {}, clock);
+            line->robot().setFirmwareRelease("release-3.2.1");
+            line->robot().setQuirks({.sleepsWhilePulsed = true});
+            placeOnDock(line->robot());
+            return line;
+        });
+        QStringList errors;
+        connect(&link, &oilink::RobotLink::errorOccurred, this, [&](const QString &e) { errors << e; });
+        int frames = 0;
+        connect(&link, &oilink::RobotLink::snapshot, this, [&] { ++frames; });
+        oilink::LinkSettings settings = testLine(oi::ProfileId::Create2);
+        settings.streamPackets = {34, 35}; // the dock's contacts, and the mode
+        link.open(settings);
+        QVERIFY(clock.advanceUntil([&] { return frames > 0; }, kTimeoutMs));
+        for (int s = 0; s < 400 && !line->robot().asleep(); ++s)
+            clock.advance(1000);
+        QVERIFY(line->robot().asleep());
+        const int pulsesBefore = line->pinPulledLow;
+        QVERIFY(clock.advanceUntil([&] { return !errors.isEmpty(); }, kTimeoutMs));
+        QVERIFY(line->pinPulledLow > pulsesBefore); // it was pulsed, and slept on
+        QVERIFY(line->robot().asleep());
+        const QString said = errors.join(QStringLiteral(" | "));
+        QVERIFY2(said.contains(QStringLiteral("asleep on its dock")), qPrintable(said));
+        QVERIFY2(said.contains(QStringLiteral("release-3.8.2")), qPrintable(said));
+        QVERIFY2(said.contains(QStringLiteral("Press Clean or lift it off the dock")), qPrintable(said));
+        QVERIFY2(!said.contains(QStringLiteral("baud")), qPrintable(said));
+        QCOMPARE(link.state(), oilink::LinkState::Stale);
+
+        // Lifted off: the next pulse wakes it, and the frames come back.
+        line->robot().placeAt(oi::Pose{});
+        const int framesBefore = frames;
+        QVERIFY(clock.advanceUntil([&] { return frames > framesBefore; }, kTimeoutMs));
+        QCOMPARE(link.state(), oilink::LinkState::Streaming);
+        link.close();
+    }
+
+    // A minute of frames, then Power puts the robot to sleep, on a line
+    // whose BRC pin is out of reach: nothing can wake it from here, and the
+    // link names it asleep and says what can.
+    void aRobotThatCannotBeWokenIsNamedAsleep()
+    {
+        ManualClock clock;
+        oilink::RobotLink link(clock);
+        SimLineTransport *line = nullptr;
+        link.setTransportFactory([&](const oilink::LinkSettings &) {
+            line = new SimLineTransport(oi::ProfileId::Create2, {.brcInReach = false}, clock);
+            return line;
+        });
+        QStringList errors;
+        connect(&link, &oilink::RobotLink::errorOccurred, this, [&](const QString &e) { errors << e; });
+        int frames = 0;
+        connect(&link, &oilink::RobotLink::snapshot, this, [&] { ++frames; });
+        link.open(testLine(oi::ProfileId::Create2));
+        QVERIFY(clock.advanceUntil([&] { return frames > 0; }, kTimeoutMs));
+        clock.advance(60'000);
+        QVERIFY(frames > 60'000 / 15 - 10);
+        link.send(QByteArray(1, char(133))); // Power
+        QVERIFY(clock.advanceUntil([&] { return !errors.isEmpty(); }, kTimeoutMs));
+        QVERIFY(line->robot().asleep());
+        QCOMPARE(errors.size(), 1);
+        QVERIFY2(errors[0].contains(QStringLiteral("it is probably asleep")), qPrintable(errors[0]));
+        QVERIFY2(errors[0].contains(QStringLiteral("test line: no BRC pin")), qPrintable(errors[0]));
+        QVERIFY2(errors[0].contains(QStringLiteral("Press Clean to wake it")), qPrintable(errors[0]));
+        QVERIFY2(!errors[0].contains(QStringLiteral("baud")), qPrintable(errors[0]));
+        link.close();
+    }
+
+    // Some Wi-Fi Roomba 600s report their mode one too high. The link sees
+    // it (Safe right after Start) and corrects it for every reader: Passive
+    // after Start, Safe after Safe, Full after Full; and the keep-awake
+    // pulses, which a robot in Safe does not need, go on in Passive.
+    void aRobotReportingItsModeOneHighReadsTrue()
+    {
+        ManualClock clock;
+        oilink::RobotLink link(clock);
+        SimLineTransport *line = nullptr;
+        link.setTransportFactory([&](const oilink::LinkSettings &) {
+            line = new SimLineTransport(oi::ProfileId::Create2, {}, clock);
+            line->robot().setQuirks({.reportsModeOneHigh = true});
+            return line;
+        });
+        QSignalSpy found(&link, &oilink::RobotLink::modeReportedOneHigh);
+        QList<int> modes; // as read, each change
+        connect(&link, &oilink::RobotLink::snapshot, this, [&](const oi::SensorSnapshot &f) {
+            if (modes.isEmpty() || modes.last() != f.raw(35))
+                modes << f.raw(35);
+        });
+        oilink::LinkSettings settings = testLine(oi::ProfileId::Create2);
+        settings.keepAwakeMs = 1000;
+        link.open(settings);
+        QVERIFY(clock.advanceUntil([&] { return !modes.isEmpty(); }, kTimeoutMs));
+        clock.advance(3000);
+        QCOMPARE(found.size(), 1);
+        QCOMPARE(modes, QList<int>{1});
+        QVERIFY2(line->pinPulledLow >= 3, qPrintable(QString::number(line->pinPulledLow))); // kept awake in Passive
+        link.send(QByteArray(1, char(131))); // Safe
+        QVERIFY(clock.advanceUntil([&] { return modes.size() == 2; }, kTimeoutMs));
+        link.send(QByteArray(1, char(132))); // Full
+        QVERIFY(clock.advanceUntil([&] { return modes.size() == 3; }, kTimeoutMs));
+        clock.advance(100);
+        QCOMPARE(modes, (QList<int>{1, 2, 3}));
+        QCOMPARE(line->robot().mode(), oi::OiMode::Full);
+        QCOMPARE(found.size(), 1);
+        link.close();
+    }
+
+    // Remembered from before (LinkSettings::modeReportedOneHigh), the
+    // correction holds from the first frame, and nothing is found anew.
+    void aRememberedOneHighRobotReadsTrueFromTheFirstFrame()
+    {
+        ManualClock clock;
+        oilink::RobotLink link(clock);
+        link.setTransportFactory([&](const oilink::LinkSettings &) {
+            auto *line = new SimLineTransport(oi::ProfileId::Create2, {}, clock);
+            line->robot().setQuirks({.reportsModeOneHigh = true});
+            return line;
+        });
+        QSignalSpy found(&link, &oilink::RobotLink::modeReportedOneHigh);
+        QList<int> modes;
+        connect(&link, &oilink::RobotLink::snapshot, this, [&](const oi::SensorSnapshot &f) { modes << f.raw(35); });
+        oilink::LinkSettings settings = testLine(oi::ProfileId::Create2);
+        settings.modeReportedOneHigh = true;
+        link.open(settings);
+        QVERIFY(clock.advanceUntil([&] { return modes.size() >= 10; }, kTimeoutMs));
+        QCOMPARE(modes.count(1), modes.size());
+        QCOMPARE(found.size(), 0);
         link.close();
     }
 

@@ -57,11 +57,15 @@ const oi::FirmwareCorrections &RobotFirmware::corrections() const
 
 QString RobotFirmware::correctionsText() const
 {
+    const QString mode = m_modeOneHigh ? tr("This robot reports its mode (packet 35) one too high (Passive as 2, Safe "
+                                            "as 3, Full as 4): the true mode is shown and used everywhere.")
+                                       : QString();
+    const auto withMode = [&mode](const QString &text) { return mode.isEmpty() ? text : text + QLatin1Char(' ') + mode; };
     if (!m_info)
-        return tr("The firmware version is not known: values are shown as the robot reports them.");
+        return withMode(tr("The firmware version is not known: values are shown as the robot reports them."));
     const oi::FirmwareCorrections &c = m_info->corrections;
     if (!c.any())
-        return tr("This firmware reports distance, angle and radius correctly: nothing needs correcting.");
+        return withMode(tr("This firmware reports distance, angle and radius correctly: nothing needs correcting."));
     QStringList text;
     if (c.angleDivisor)
         text << tr("It reports the angle (packet 20) multiplied by %1: the angle is divided by %1 wherever it "
@@ -70,12 +74,25 @@ QString RobotFirmware::correctionsText() const
     if (c.distanceUnreliable || c.radiusUnreliable)
         text << tr("It reports the distance (packet 19) and the requested radius (packet 40) wrongly: they are "
                    "greyed, and the map uses the wheel encoders.");
-    return text.join(QLatin1Char(' '));
+    return withMode(text.join(QLatin1Char(' ')));
 }
 
 QString RobotFirmware::settingsKey() const
 {
     return QStringLiteral("firmware/") + QString::fromLatin1(QUrl::toPercentEncoding(m_robot));
+}
+
+QString RobotFirmware::modeSettingsKey() const
+{
+    return QStringLiteral("modeReportedOneHigh/") + QString::fromLatin1(QUrl::toPercentEncoding(m_robot));
+}
+
+void RobotFirmware::noteModeReportedOneHigh()
+{
+    if (m_modeOneHigh)
+        return;
+    m_modeOneHigh = true;
+    QSettings().setValue(modeSettingsKey(), true);
 }
 
 void RobotFirmware::connectingTo(const oilink::LinkSettings &link)
@@ -87,6 +104,7 @@ void RobotFirmware::connectingTo(const oilink::LinkSettings &link)
     m_listening = false;
     m_deadline.stop();
     m_banner.clear();
+    m_modeOneHigh = QSettings().value(modeSettingsKey()).toBool();
     setFirmware(firmwareOfRelease(QSettings().value(settingsKey()).toString()));
 }
 

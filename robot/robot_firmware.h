@@ -34,6 +34,12 @@ public:
     QString banner() const { return m_banner; }
     // What the corrections mean, in a sentence or two for the user.
     QString correctionsText() const;
+    // The robot reports its mode (packet 35) one too high, as some Wi-Fi
+    // Roomba 600s do: found by its link (RobotLink::modeReportedOneHigh),
+    // whatever the firmware version, and remembered per robot like the
+    // version, so its link corrects the mode from the first frame.
+    bool modeReportedOneHigh() const { return m_modeOneHigh; }
+    void noteModeReportedOneHigh();
 
     // A connection to `link` begins: another robot's firmware is forgotten
     // and what was learned of this one before comes back.
@@ -59,9 +65,11 @@ signals:
 private:
     void setFirmware(const std::optional<oi::FirmwareInfo> &info);
     QString settingsKey() const;
+    QString modeSettingsKey() const;
 
     QString m_robot; // robotIdentity() of the robot connected
     std::optional<oi::FirmwareInfo> m_info;
+    bool m_modeOneHigh = false;
     bool m_listening = false;
     QByteArray m_received; // since the Reset, bounded
     QString m_banner;

@@ -14,6 +14,11 @@ RobotSession::RobotSession(QObject *parent) : QObject(parent)
     connect(&m_link, &oilink::RobotLinkThread::streamStarted, this,
             [this](oi::ProfileId profile, int, const QList<int> &) { onStreamStarted(profile); });
     connect(&m_link, &oilink::RobotLinkThread::profileAssumed, this, &RobotSession::onProfileAssumed);
+    connect(&m_link, &oilink::RobotLinkThread::modeReportedOneHigh, this, [this] {
+        m_firmware.noteModeReportedOneHigh();
+        emit errorOccurred(tr("This robot reports its mode one too high (Passive as Safe, as some Wi-Fi Roomba 600s "
+                              "do): the true mode is shown from now on, and remembered for this robot."));
+    });
     connect(&m_link, &oilink::RobotLinkThread::stateChanged, this, [this](oilink::LinkState state) {
         m_state = state;
         m_teleop.linkStateChanged(state);
@@ -90,7 +95,10 @@ void RobotSession::connectTo(const oilink::LinkSettings &settings)
     emit modeChanged();
     resetHistory();
     setProfileAssumed(false);
-    m_link.open(settings);
+    // A robot known to report its mode one too high is corrected from its first frame.
+    oilink::LinkSettings linkSettings = settings;
+    linkSettings.modeReportedOneHigh = linkSettings.modeReportedOneHigh || m_firmware.modeReportedOneHigh();
+    m_link.open(linkSettings);
 }
 
 bool RobotSession::applyCalibration(const oi::WheelGeometry &wheels)

@@ -174,6 +174,45 @@ private slots:
         QCOMPARE(sent.count(), 0);
     }
 
+    // A Wi-Fi Roomba 600 that reports its mode one too high (the virtual
+    // robot's option): the session reports the real mode, Passive after
+    // Start and Safe after Safe, never the Safe it reads in Passive; the
+    // robot is remembered as one that does, and its next session reads true
+    // from its first frame.
+    void aRobotReportingItsModeOneHighShowsItsTrueMode()
+    {
+        oilink::LinkSettings settings = oilink::LinkSettings::virtualRobotOf(oi::ProfileId::Create2, oi::ProfileId::Create2);
+        settings.virtualModeOneHigh = true;
+        QList<int> reported; // each change of the mode the first session reports
+        QList<int> modes;    // every frame's mode in the second
+        {
+            RobotSession robot;
+            robot.setTransportFactory(transports::transportFactory());
+            connect(&robot, &RobotSession::modeChanged, this, [&] {
+                if (const auto mode = robot.mode().reported(); mode && (reported.isEmpty() || reported.last() != int(*mode)))
+                    reported << int(*mode);
+            });
+            QSignalSpy errors(&robot, &RobotSession::errorOccurred);
+            robot.connectTo(settings);
+            QTRY_VERIFY_WITH_TIMEOUT(robot.firmware().modeReportedOneHigh(), 5000);
+            QTRY_COMPARE_WITH_TIMEOUT(robot.mode().reported(), std::optional(oi::OiMode::Passive), 5000);
+            QVERIFY(robot.firmware().correctionsText().contains("one too high"));
+            QVERIFY(!errors.isEmpty() && errors.last().at(0).toString().contains("one too high"));
+            QVERIFY(robot.requestMode(oi::Command::Safe));
+            QTRY_COMPARE_WITH_TIMEOUT(robot.mode().reported(), std::optional(oi::OiMode::Safe), 5000);
+            QCOMPARE(reported, (QList<int>{int(oi::OiMode::Passive), int(oi::OiMode::Safe)}));
+            QCOMPARE(robot.latest().oiMode(), oi::OiMode::Safe);
+        }
+        RobotSession again;
+        again.setTransportFactory(transports::transportFactory());
+        connect(&again, &RobotSession::frameReceived, this,
+                [&](double, const oi::SensorSnapshot &frame) { modes << frame.raw(35); });
+        again.connectTo(settings);
+        QVERIFY(again.firmware().modeReportedOneHigh());
+        QTRY_VERIFY_WITH_TIMEOUT(modes.size() >= 5, 5000);
+        QCOMPARE(modes.count(int(oi::OiMode::Passive)), modes.size());
+    }
+
     void sensorQueryGoesThroughTheLink()
     {
         RobotSession robot;

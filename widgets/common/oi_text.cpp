@@ -90,7 +90,8 @@ QString modeName(oi::OiMode mode)
     case oi::OiMode::Safe: return QCoreApplication::translate("ModePanel", "Safe");
     case oi::OiMode::Full: return QCoreApplication::translate("ModePanel", "Full");
     }
-    return {};
+    // No robot is in such a mode; one that reports it is named, not shown blank.
+    return QCoreApplication::translate("ModePanel", "mode %1 (not an OI mode)").arg(int(mode));
 }
 
 QString unreliableReason(int packetId, const oi::FirmwareCorrections &corrections)

@@ -22,6 +22,12 @@ bool isMotion(oi::Command c)
     return c == oi::Command::Drive || c == oi::Command::DriveDirect || c == oi::Command::DrivePwm;
 }
 
+bool isLeds(oi::Command c)
+{
+    return c == oi::Command::Leds || c == oi::Command::SchedulingLeds || c == oi::Command::DigitLedsRaw
+           || c == oi::Command::DigitLedsAscii;
+}
+
 QString fromStd(const std::string &text) { return QString::fromStdString(text); }
 
 // The packets a Sensors or Query List asks for, which the link's queue asks
@@ -180,6 +186,14 @@ void CommandSender::decide(const oi::SensorSnapshot &state)
         send({oi::Command::Safe, {}, {}});
         mode = oi::OiMode::Safe;
         emit note(QStringLiteral("the robot was in Passive mode: entered Safe mode for %1").arg(name));
+    } else if (oi::needsSafeOrFull(command) && mode == oi::OiMode::Safe && m_order.changeMode
+               && !m_link.isModeReadingKnown() && !isLeds(command)) {
+        // Some Wi-Fi Roomba 600s report Passive as Safe, and nothing in this
+        // run told this robot from them (the link corrects the mode once it
+        // has seen a Start answered). Safe again leaves a robot in Safe as it
+        // was, but for its LEDs, which it turns off: not before an LED command
+        // (which a robot in Passive ignores only until the next Safe).
+        send({oi::Command::Safe, {}, {}});
     }
     if (isMotion(command) && mode == oi::OiMode::Safe) {
         const bool cliff = state.cliff(oi::CliffSensor::Left) || state.cliff(oi::CliffSensor::FrontLeft)

@@ -370,6 +370,34 @@ private slots:
         QVERIFY2(o.err.contains(QStringLiteral("may be in Off mode")), qPrintable(o.err));
     }
 
+    // A Wi-Fi Roomba 600 that reports its mode one too high reads Safe in
+    // Passive. roomba-ctl send drive enters Safe first all the same: at once
+    // when it has seen the robot answer its Start (and says so), and to be
+    // sure when the robot was already in Passive; either way the wheels turn.
+    void sendDriveOnARobotReportingItsModeOneHigh()
+    {
+        Sim sim({QStringLiteral("--mode-off-by-one")});
+        QVERIFY(!sim.path().isEmpty());
+        const QStringList port{QStringLiteral("send"), QStringLiteral("--port"), sim.path(), QStringLiteral("--profile"),
+                               QStringLiteral("create2")};
+        const auto velocity = [&] {
+            const Outcome o = run(port + QStringList{QStringLiteral("sensors"), QStringLiteral("39")});
+            return json(o.lines.value(0))[QStringLiteral("packets")].toObject()[QStringLiteral("requested_velocity")].toInt();
+        };
+        // Off: silent, so Start goes out, and the robot then reads "Safe".
+        Outcome o = run(port + QStringList{QStringLiteral("drive"), QStringLiteral("200"), QStringLiteral("straight")});
+        QVERIFY2(o.status == 0, qPrintable(o.err));
+        QVERIFY2(o.err.contains(QStringLiteral("the robot was in Passive mode: entered Safe mode for drive")), qPrintable(o.err));
+        QCOMPARE(velocity(), 200);
+        // Stopped, started again by hand (Passive, reading 2), then driven.
+        QCOMPARE(run(port + QStringList{QStringLiteral("stop")}).status, 0);
+        QCOMPARE(run(port + QStringList{QStringLiteral("start")}).status, 0);
+        QCOMPARE(velocity(), 0);
+        o = run(port + QStringList{QStringLiteral("drive"), QStringLiteral("100"), QStringLiteral("straight")});
+        QVERIFY2(o.status == 0, qPrintable(o.err));
+        QCOMPARE(velocity(), 100);
+    }
+
     void sendWarnsWhenTheRobotWillIgnoreIt()
     {
         // Safe mode will not drive on the dock.

@@ -48,6 +48,7 @@ CommandSender::CommandSender(oilink::RobotLink &link, Order order, QObject *pare
 {
     m_order.settings.streaming = false;
     m_order.settings.startIfSilent = m_order.changeMode;
+    m_order.settings.modeCheckAfterStart = true; // a robot reading Safe after Start reports one too high
     connect(&m_link, &oilink::RobotLink::requestsReady, this, [this](oi::ProfileId id, int) { useProfile(id); });
     connect(&m_link, &oilink::RobotLink::sensorReply, this, &CommandSender::onReply);
     connect(&m_link, &oilink::RobotLink::sensorQueryFailed, this, &CommandSender::onQueryFailed);

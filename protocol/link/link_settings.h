@@ -55,6 +55,11 @@ struct LinkSettings {
     // and remembered with it): the link corrects packet 35 from the first
     // frame instead of waiting to see it after a Start.
     bool modeReportedOneHigh = false;
+    // Whether Safe read right after Start marks such a robot (a mode above
+    // Full always does). roomba-ctl turns it on; the dashboard does not yet,
+    // as the test fixtures that play a robot already in Safe report Safe
+    // right after Start too.
+    bool modeCheckAfterStart = false;
     // The BRC pin: a serial adapter's line, and whether asserting that line
     // pulls BRC low (as on FTDI-style TTL cables) or lets it go.
     BrcLine brcLine = BrcLine::Rts;

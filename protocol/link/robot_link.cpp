@@ -173,6 +173,7 @@ void RobotLink::open(const LinkSettings &settings)
     m_lastTransportError.clear();
     m_modeReading = {};
     m_modeReading.setOneHigh(settings.modeReportedOneHigh);
+    m_modeReading.setDetectAfterStart(settings.modeCheckAfterStart);
     m_lastOnDock.reset();
     m_wokeStream = m_rearmedSinceStop = false;
     m_backoffMs = kFirstBackoffMs;

@@ -41,7 +41,7 @@ bool ModeReading::read(SensorSnapshot &frame, long long atMs)
     if (!m_oneHigh) {
         if (reported > kFull) {
             found = true;
-        } else if (m_expectPassive && reported == kSafe) {
+        } else if (m_expectPassive && reported == kSafe && m_detectAfterStart) {
             // Right after Start a frame sent before it may still read Safe:
             // shown as the Passive that Start gives, but taken as the sign
             // only once Start has surely been read.

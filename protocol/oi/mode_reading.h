@@ -21,6 +21,11 @@ public:
     // Known before (remembered with the robot): corrected from the first report.
     void setOneHigh(bool oneHigh) { m_oneHigh = oneHigh; }
     bool oneHigh() const { return m_oneHigh; }
+    // Whether Safe read after Start counts as the sign (a value above Full
+    // always does). Off for now: the test fixtures that play a robot already
+    // in Safe (tests/common/recording_transport.h) report Safe right after
+    // Start too, and must first say their robot was put there.
+    void setDetectAfterStart(bool detect) { m_detectAfterStart = detect; }
     // Whether this robot's reports are known to be true or corrected: it
     // reported one too high, or read Passive after a Start it had read.
     // Until then a report of Safe may be a Passive reported one too high.
@@ -38,6 +43,7 @@ private:
     bool m_oneHigh = false;
     bool m_expectPassive = false; // Start went, and no mode command since
     bool m_readPassiveAfterStart = false;
+    bool m_detectAfterStart = false;
     long long m_startAtMs = 0;
 };
 

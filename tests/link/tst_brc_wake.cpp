@@ -415,6 +415,7 @@ private slots:
         });
         oilink::LinkSettings settings = testLine(oi::ProfileId::Create2);
         settings.keepAwakeMs = 1000;
+        settings.modeCheckAfterStart = true;
         link.open(settings);
         QVERIFY(clock.advanceUntil([&] { return !modes.isEmpty(); }, kTimeoutMs));
         clock.advance(3000);

@@ -183,6 +183,7 @@ private slots:
     {
         oilink::LinkSettings settings = oilink::LinkSettings::virtualRobotOf(oi::ProfileId::Create2, oi::ProfileId::Create2);
         settings.virtualModeOneHigh = true;
+        settings.modeCheckAfterStart = true;
         QList<int> reported; // each change of the mode the first session reports
         QList<int> modes;    // every frame's mode in the second
         {

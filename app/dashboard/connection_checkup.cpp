@@ -156,8 +156,14 @@ ConnectionCheckup::AskWhich ConnectionCheckup::askWithDialog(QWidget *parent)
                            "kept for this robot; the profile in the connection bar changes it later.")
                             .arg(robot),
                         QMessageBox::Cancel, parent);
-        QPushButton *roomba = box.addButton(tr("Roomba 500"), QMessageBox::AcceptRole);
-        QPushButton *create = box.addButton(tr("Create 2 / Roomba 600"), QMessageBox::AcceptRole);
+        // A guess mirrors every turn: no default, so Enter chooses nothing,
+        // only a click or Space on a button does (an AcceptRole button would
+        // become the default when the box shows).
+        QPushButton *roomba = box.addButton(tr("Roomba 500"), QMessageBox::ActionRole);
+        QPushButton *create = box.addButton(tr("Create 2 / Roomba 600"), QMessageBox::ActionRole);
+        for (QAbstractButton *button : box.buttons())
+            if (auto *push = qobject_cast<QPushButton *>(button))
+                push->setAutoDefault(false);
         box.exec();
         if (box.clickedButton() == roomba)
             return oi::ProfileId::Roomba500;

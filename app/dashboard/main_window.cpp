@@ -346,6 +346,8 @@ void MainWindow::buildMenus()
     m_fileMenu->addAction(m_recording->openAction());
     m_fileMenu->addAction(m_recording->exportCsvAction());
     m_fileMenu->addAction(m_recording->exportMcapAction());
+    m_fileMenu->addAction(m_recording->exportOtherCsvAction());
+    m_fileMenu->addAction(m_recording->exportOtherMcapAction());
     m_fileMenu->addAction(m_comparison->compareAction());
     m_fileMenu->addAction(m_comparison->closeAction());
     m_fileMenu->addSeparator();
@@ -406,7 +408,7 @@ void MainWindow::retranslateUi()
     m_aboutAction->setText(tr("&About"));
     m_status->retranslate();
     if (m_fleet.selected())
-        m_status->showProfile(oitext::fromView(session().robotProfile().name));
+        m_status->showProfile(session());
     m_robotBar->retranslate();
 }
 

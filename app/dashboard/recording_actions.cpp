@@ -33,10 +33,16 @@ RecordingActions::RecordingActions(RobotFleet &fleet, QWidget *dialogParent)
     connect(m_open, &QAction::triggered, this, &RecordingActions::chooseRecordingToOpen);
     m_exportCsv = new QAction(this);
     m_exportCsv->setObjectName("exportCsvAction");
-    connect(m_exportCsv, &QAction::triggered, this, &RecordingActions::chooseRecordingToExport);
+    connect(m_exportCsv, &QAction::triggered, this, [this] { exportCsv(Source::OnScreen); });
     m_exportMcap = new QAction(this);
     m_exportMcap->setObjectName("exportMcapAction");
-    connect(m_exportMcap, &QAction::triggered, this, &RecordingActions::chooseRecordingToExportMcap);
+    connect(m_exportMcap, &QAction::triggered, this, [this] { exportMcap(Source::OnScreen); });
+    m_exportOtherCsv = new QAction(this);
+    m_exportOtherCsv->setObjectName("exportOtherCsvAction");
+    connect(m_exportOtherCsv, &QAction::triggered, this, [this] { exportCsv(Source::ChooseAnother); });
+    m_exportOtherMcap = new QAction(this);
+    m_exportOtherMcap->setObjectName("exportOtherMcapAction");
+    connect(m_exportOtherMcap, &QAction::triggered, this, [this] { exportMcap(Source::ChooseAnother); });
 
     m_toolBar = new QToolBar(dialogParent);
     m_toolBar->setObjectName("recordingToolBar");
@@ -74,6 +80,11 @@ void RecordingActions::retranslate()
     m_exportCsv->setText(tr("&Export recording as CSV…"));
     m_exportMcap->setText(tr("Export recording as &MCAP…"));
     m_exportMcap->setToolTip(tr("For Foxglove, Lichtblick and PlotJuggler"));
+    m_exportOtherCsv->setText(tr("Export another recording as CSV…"));
+    m_exportOtherMcap->setText(tr("Export another recording as MCAP…"));
+    m_exportCsv->setToolTip(tr("The recording on screen: a replay, or the last recording of the selected robot"));
+    m_exportOtherCsv->setToolTip(tr("Choose a recording file first, then where to write the CSV"));
+    m_exportOtherMcap->setToolTip(tr("Choose a recording file first, then where to write the MCAP file"));
     m_toolBar->setWindowTitle(tr("Recording and replay"));
     m_replayToolBar->setWindowTitle(tr("Replay"));
 }
@@ -171,26 +182,39 @@ void RecordingActions::chooseRecordingToOpen()
         QMessageBox::warning(m_dialogParent, tr("Open recording"), tr("This file cannot be replayed.\n\n%1").arg(error));
 }
 
-std::pair<QString, QString> RecordingActions::chooseExportFiles(const QString &title, const QString &saveTitle,
+QString RecordingActions::recordingOnScreen() const
+{
+    const RobotSession *robot = m_fleet.selected();
+    if (!robot)
+        return {};
+    if (robot->isReplay())
+        return robot->settings().replayPath;
+    if (!robot->recording().active)
+        return robot->recording().path;
+    return {};
+}
+
+std::pair<QString, QString> RecordingActions::chooseExportFiles(Source source, const QString &format,
                                                                const QString &suffix, const QString &filters,
                                                                QString *selectedFilter)
 {
-    const QString from = QFileDialog::getOpenFileName(m_dialogParent, title, QString(),
-                                                      tr("Roomba Dashboard recordings (*.oirec);;All files (*)"));
+    QString from = source == Source::OnScreen ? recordingOnScreen() : QString();
+    if (from.isEmpty())
+        from = QFileDialog::getOpenFileName(m_dialogParent, tr("Choose the recording to export as %1").arg(format),
+                                            QString(), tr("Roomba Dashboard recordings (*.oirec);;All files (*)"));
     if (from.isEmpty())
         return {};
     const QString to = QFileDialog::getSaveFileName(
-        m_dialogParent, saveTitle, QFileInfo(from).path() + '/' + QFileInfo(from).completeBaseName() + suffix, filters,
-        selectedFilter);
+        m_dialogParent, tr("Export %1 as %2").arg(QFileInfo(from).fileName(), format),
+        QFileInfo(from).path() + '/' + QFileInfo(from).completeBaseName() + suffix, filters, selectedFilter);
     if (to.isEmpty())
         return {};
     return {from, to};
 }
 
-void RecordingActions::chooseRecordingToExport()
+void RecordingActions::exportCsv(Source source)
 {
-    const auto [from, to] = chooseExportFiles(tr("Export recording as CSV"), tr("Save CSV as"), ".csv",
-                                              tr("CSV files (*.csv)"));
+    const auto [from, to] = chooseExportFiles(source, QStringLiteral("CSV"), ".csv", tr("CSV files (*.csv)"));
     if (to.isEmpty())
         return;
     const QString error = exportRecordingCsv(from, to);
@@ -210,13 +234,12 @@ QString RecordingActions::exportRecordingMcap(const QString &recordingPath, cons
     return error;
 }
 
-void RecordingActions::chooseRecordingToExportMcap()
+void RecordingActions::exportMcap(Source source)
 {
     const QString zstd = tr("MCAP, zstd compression (*.mcap)");
     const QString lz4 = tr("MCAP, lz4 compression: quicker to open (*.mcap)");
     QString filter = zstd;
-    const auto [from, to] = chooseExportFiles(tr("Export recording as MCAP"), tr("Save MCAP as"), ".mcap",
-                                              zstd + ";;" + lz4, &filter);
+    const auto [from, to] = chooseExportFiles(source, QStringLiteral("MCAP"), ".mcap", zstd + ";;" + lz4, &filter);
     if (to.isEmpty())
         return;
     QString damage;

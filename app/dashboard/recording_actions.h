@@ -29,6 +29,12 @@ public:
     QAction *openAction() const { return m_open; }
     QAction *exportCsvAction() const { return m_exportCsv; }
     QAction *exportMcapAction() const { return m_exportMcap; }
+    // The same exports for a recording chosen first in an Open dialog.
+    QAction *exportOtherCsvAction() const { return m_exportOtherCsv; }
+    QAction *exportOtherMcapAction() const { return m_exportOtherMcap; }
+    // The recording the selected robot shows: a replay's file, or the last
+    // recording of a live robot once it is saved; "" when there is none.
+    QString recordingOnScreen() const;
     QToolBar *toolBar() const { return m_toolBar; }
     // The replay bar's own row, shown while the selected robot replays.
     QToolBar *replayToolBar() const { return m_replayToolBar; }
@@ -56,18 +62,21 @@ signals:
 private:
     void chooseRecordingFile(bool start);
     void chooseRecordingToOpen();
-    void chooseRecordingToExport();
-    void chooseRecordingToExportMcap();
+    enum class Source { OnScreen, ChooseAnother };
+    void exportCsv(Source source);
+    void exportMcap(Source source);
     // The recording to export and where to write it; empty when cancelled.
-    std::pair<QString, QString> chooseExportFiles(const QString &title, const QString &saveTitle,
-                                                  const QString &suffix, const QString &filters,
-                                                  QString *selectedFilter = nullptr);
+    // The recording on screen unless another is asked for (or none is shown).
+    std::pair<QString, QString> chooseExportFiles(Source source, const QString &format, const QString &suffix,
+                                                  const QString &filters, QString *selectedFilter = nullptr);
     RobotFleet &m_fleet;
     QWidget *m_dialogParent;
     QAction *m_record = nullptr;
     QAction *m_open = nullptr;
     QAction *m_exportCsv = nullptr;
     QAction *m_exportMcap = nullptr;
+    QAction *m_exportOtherCsv = nullptr;
+    QAction *m_exportOtherMcap = nullptr;
     QToolBar *m_toolBar = nullptr;
     ReplayBar *m_replayBar = nullptr;
     QToolBar *m_replayToolBar = nullptr;

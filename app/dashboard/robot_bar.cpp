@@ -70,8 +70,7 @@ void RobotBar::refresh()
         RobotCardValues c;
         c.name = robot->name();
         c.colour = robot->colour();
-        c.profile = robot->isIdentified() ? oitext::fromView(robot->robotProfile().name)
-                                          : tr("Roomba 500 or Create 2? (not yet identified)");
+        c.profile = RobotStatusBar::profileText(*robot);
         c.live = robot->isLive();
         if (robot->isReplay())
             c.profile = tr("Recording of %1").arg(c.profile);

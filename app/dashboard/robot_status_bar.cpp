@@ -5,6 +5,7 @@
 #include "oi_text.h"
 #include "robot_session.h"
 
+#include <QDir>
 #include <QFileInfo>
 #include <QLabel>
 #include <QStatusBar>
@@ -47,7 +48,7 @@ void RobotStatusBar::showRobot(const RobotSession &robot, bool nameIt)
                                .arg(robot.colour().name()));
     m_firmwareRelease = robot.firmwareRelease();
     m_overNetwork = robot.settings().transport == oilink::TransportKind::Network;
-    showProfile(oitext::fromView(robot.robotProfile().name));
+    showProfile(robot);
     showState(robot.state());
     showStatistics(robot.statistics());
     showRecording(robot.recording());
@@ -72,6 +73,7 @@ void RobotStatusBar::showState(oilink::LinkState state)
 {
     m_shownState = state;
     m_state->setText(tr("Link: %1").arg(linkStateText(state)));
+    showRate();
 }
 
 void RobotStatusBar::showStatistics(const oilink::LinkStats &stats)
@@ -81,6 +83,14 @@ void RobotStatusBar::showStatistics(const oilink::LinkStats &stats)
     // A bridge tells only what changed, in fewer messages than the robot's
     // frames, and checks the robot's bytes itself.
     m_errors->setVisible(!m_overNetwork);
+    showRate();
+}
+
+// A rate only while frames can come: a closed or lost link has none.
+void RobotStatusBar::showRate()
+{
+    const oilink::LinkStats &stats = m_shownStats;
+    m_rate->setVisible(m_shownState == oilink::LinkState::Streaming || m_shownState == oilink::LinkState::Stale);
     m_rate->setText(m_overNetwork ? tr("%1 messages/s from the bridge").arg(stats.framesPerSecond, 0, 'f', 1)
                                   : tr("%1 frames/s").arg(stats.framesPerSecond, 0, 'f', 1));
     m_rate->setToolTip(m_overNetwork ? tr("Telemetry messages from the robot's bridge, which sends only what changed. "
@@ -94,24 +104,37 @@ void RobotStatusBar::showFirmware(const QString &release)
     m_firmware->setText(release.isEmpty() ? QString() : tr("Firmware %1").arg(release));
 }
 
-void RobotStatusBar::showProfile(const QString &name)
+QString RobotStatusBar::profileText(const RobotSession &robot)
 {
-    m_profile->setText(name);
+    return robot.isIdentified() ? oitext::fromView(robot.robotProfile().name)
+                                : tr("Roomba 500 or Create 2? (not yet identified)");
+}
+
+void RobotStatusBar::showProfile(const RobotSession &robot)
+{
+    m_profile->setText(profileText(robot));
 }
 
 void RobotStatusBar::showRecording(const oilink::RecordingStatus &status)
 {
+    // The same file ended without an error: say where it is.
+    if (m_shownRecording.active && !status.active && status.error.isEmpty() && !status.path.isEmpty()
+        && status.path == m_shownRecording.path)
+        m_bar->showMessage(tr("Recording saved: %1").arg(QDir::toNativeSeparators(status.path)), 10000);
     m_shownRecording = status;
     m_recording->setVisible(status.active);
     m_recording->setText(tr("● REC %1 kB %2").arg(status.bytesWritten / 1024).arg(QFileInfo(status.path).fileName()));
     m_recording->setToolTip(status.path);
 }
 
-void RobotStatusBar::showLive(bool live, bool replay)
+void RobotStatusBar::showLive(bool live, bool replay, bool replayEnded)
 {
     m_live = live;
     m_replay = replay;
-    m_stale->setText(replay ? tr("  REPLAY, NOT LIVE  ") : tr("  NO LIVE DATA  "));
+    m_replayEnded = replay && replayEnded;
+    m_stale->setText(m_replayEnded ? tr("  REPLAY FINISHED  ")
+                     : replay      ? tr("  REPLAY, NOT LIVE  ")
+                                   : tr("  NO LIVE DATA  "));
     m_stale->setVisible(!live || replay);
 }
 
@@ -121,7 +144,7 @@ void RobotStatusBar::retranslate()
     showStatistics(m_shownStats);
     showRecording(m_shownRecording);
     showFirmware(m_firmwareRelease);
-    showLive(m_live, m_replay);
+    showLive(m_live, m_replay, m_replayEnded);
 }
 
 QString RobotStatusBar::text() const

@@ -23,17 +23,22 @@ public:
     void showState(oilink::LinkState state);
     void showStatistics(const oilink::LinkStats &stats);
     void showFirmware(const QString &release);
-    void showProfile(const QString &name);
+    // The robot's profile, or that it is not yet identified.
+    void showProfile(const RobotSession &robot);
     void showRecording(const oilink::RecordingStatus &status);
-    // No live data: "NO LIVE DATA", or for a replay "REPLAY, NOT LIVE".
-    void showLive(bool live, bool replay);
+    // No live data: "NO LIVE DATA", or for a replay "REPLAY, NOT LIVE" and
+    // at its end "REPLAY FINISHED".
+    void showLive(bool live, bool replay, bool replayEnded = false);
     void retranslate();
     // Every label shown, joined: for tests and screen readers.
     QString text() const;
     // "streaming", "lost", ...
     static QString linkStateText(oilink::LinkState state);
+    // "Create 2", or "Roomba 500 or Create 2? (not yet identified)".
+    static QString profileText(const RobotSession &robot);
 
 private:
+    void showRate();
 
     QStatusBar *m_bar;
     QLabel *m_robot = nullptr;
@@ -52,4 +57,5 @@ private:
     bool m_overNetwork = false;
     bool m_live = false;
     bool m_replay = false;
+    bool m_replayEnded = false;
 };

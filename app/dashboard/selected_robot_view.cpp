@@ -72,6 +72,7 @@ void SelectedRobotView::show(RobotSession *robot)
     v.lessons->setRobot(robot, [this, robot] { return m_room.truePose(robot); });
     m_selectedConnections = {
         connect(robot, &RobotSession::profileChanged, this, &SelectedRobotView::applyProfile),
+        connect(robot, &RobotSession::identifiedChanged, this, [v, robot] { v.status->showProfile(*robot); }),
         connect(robot, &RobotSession::stateChanged, this, &SelectedRobotView::showState),
         connect(robot, &RobotSession::statisticsChanged, v.status, &RobotStatusBar::showStatistics),
         connect(robot, &RobotSession::errorOccurred, v.connectionBar, &ConnectionBar::showError),
@@ -166,7 +167,7 @@ void SelectedRobotView::applyProfile(oi::ProfileId id)
     v.drivePad->setProfile(p);
     v.plots->setProfile(p);
     v.projector->setRobot(session().name(), p, &session().history());
-    v.status->showProfile(oitext::fromView(p.name));
+    v.status->showProfile(session());
     m_shownSnapshot = ~0ull;
 }
 
@@ -231,16 +232,18 @@ void SelectedRobotView::refresh()
     const DashboardViews &v = m_views;
     RobotSession &robot = session();
     const bool live = robot.isLive();
-    if (live != m_shownLive || m_liveFlagOutdated) {
+    const bool replayEnded = robot.isReplay() && robot.replay().finished;
+    if (live != m_shownLive || replayEnded != m_shownReplayEnded || m_liveFlagOutdated) {
         m_shownLive = live;
+        m_shownReplayEnded = replayEnded;
         m_liveFlagOutdated = false;
-        v.diagram->setStale(!live);
-        v.gauges->setStale(!live);
-        v.plots->setStale(!live);
+        v.diagram->setStale(!live, replayEnded);
+        v.gauges->setStale(!live, replayEnded);
+        v.plots->setStale(!live, replayEnded);
         // No driving, and no Enter Safe, without live data to see the robot
         // by; a replay has no robot to drive.
         v.drivePad->setEnabled(live && !robot.isReplay());
-        v.status->showLive(live, robot.isReplay());
+        v.status->showLive(live, robot.isReplay(), replayEnded);
         showMode();
     }
     v.modePanel->setUnavailable(whyNoCommands(robot));

@@ -107,6 +107,7 @@ private:
     quint64 m_shownSnapshot = ~0ull;
     oi::SensorSnapshot m_shown; // what the views show now
     bool m_shownLive = false;
+    bool m_shownReplayEnded = false;
     bool m_liveFlagOutdated = true;
     quint64 m_displayTicks = 0;
 };

@@ -434,7 +434,10 @@ void Recording::writeCsv(QTextStream &out) const
     QList<SensorCsv::Mark> marks;
     for (const RecordingMarker &m : m_markers)
         marks << SensorCsv::Mark{static_cast<double>(m.timeUs) / 1e6, m.label()};
-    SensorCsv csv(streamedPackets(), marks);
+    // The bytes the document reserves are always 0: no column for them.
+    std::vector<const oi::PacketInfo *> columns = streamedPackets();
+    std::erase_if(columns, [](const oi::PacketInfo *info) { return info->isUnused(); });
+    SensorCsv csv(std::move(columns), marks);
     QByteArray buffer;
     csv.appendHeader(buffer);
     std::vector<std::optional<std::int32_t>> cells(csv.columns().size());

@@ -35,6 +35,9 @@ struct PacketInfo {
     std::int32_t min = 0;
     std::int32_t max = 0;
     std::string_view unit; // empty where the value has no unit
+
+    // A byte the document reserves ("Unused"): always 0, never worth a column.
+    bool isUnused() const { return key.starts_with("unused_"); }
 };
 
 // A group packet (0..6, 100..107): the packets first..last, in order.

@@ -553,7 +553,8 @@ private slots:
         saveRobots(settings, {SavedRobot{"Rosa", {}, robot.unnamed(), true}});
         MainWindow window;
         window.show();
-        QString asked, cardWhileAsked;
+        QString asked, cardWhileAsked, statusWhileAsked;
+        bool enterChoseOne = true;
         QTimer answer;
         answer.setInterval(20);
         connect(&answer, &QTimer::timeout, &window, [&] {
@@ -562,6 +563,10 @@ private slots:
                 return;
             asked = box->text();
             cardWhileAsked = window.robotList()->card(0)->values().profile;
+            statusWhileAsked = window.statusText();
+            // Enter is no answer: a guess would mirror every turn.
+            QTest::keyClick(box, Qt::Key_Return);
+            enterChoseOne = box->clickedButton() != nullptr;
             for (QAbstractButton *button : box->buttons())
                 if (button->text() == QLatin1String("Roomba 500"))
                     button->click();
@@ -572,11 +577,15 @@ private slots:
         QVERIFY2(asked.contains("Rosa on 127.0.0.1:") && asked.contains("Create 2") && asked.contains("wheel counts"),
                  qPrintable(asked));
         QVERIFY2(cardWhileAsked.contains("not yet identified"), qPrintable(cardWhileAsked));
+        QVERIFY2(statusWhileAsked.contains("not yet identified"), qPrintable(statusWhileAsked));
+        QVERIFY(!enterChoseOne);
         RobotSession *rosa = window.fleet().robots().first();
         QTRY_COMPARE(rosa->robotProfile().id, oi::ProfileId::Roomba500);
         QVERIFY(rosa->isIdentified());
         QCOMPARE(window.fleet().saved().first().link.profile, oi::ProfileId::Roomba500);
         QTRY_COMPARE(window.robotList()->card(0)->values().profile, QString("Roomba 500"));
+        QTRY_VERIFY2(window.statusText().contains("Roomba 500") && !window.statusText().contains("identified"),
+                     qPrintable(window.statusText()));
     }
 };
 

@@ -46,6 +46,10 @@
 #include <QToolButton>
 #include <QPointer>
 #include <QSet>
+#include <QApplication>
+#include <QFileDialog>
+#include <QLabel>
+#include <QStatusBar>
 #include <QTemporaryDir>
 #include <QMutex>
 #include <QPlainTextEdit>
@@ -112,6 +116,7 @@ private slots:
         window.refreshDisplay();
         QVERIFY(window.statusText().contains("streaming"));
         QVERIFY(!window.statusText().contains("NO LIVE DATA"));
+        QTRY_VERIFY_WITH_TIMEOUT(window.statusText().contains("frames/s"), 10000);
 
         // Safe mode, as the robot reports it back.
         QTest::mouseClick(window.modePanel()->button("safe"), Qt::LeftButton);
@@ -123,6 +128,9 @@ private slots:
         QTRY_COMPARE_WITH_TIMEOUT(window.session().state(), oilink::LinkState::Closed, 10000);
         window.refreshDisplay();
         QVERIFY(window.statusText().contains("NO LIVE DATA"));
+        // A closed link has no frame rate.
+        QVERIFY2(window.statusText().contains("Link: closed") && !window.statusText().contains("frames/s"),
+                 qPrintable(window.statusText()));
     }
 
     void tabbedAwayInspectorDrawsWhenItsTabComesUp()
@@ -563,6 +571,9 @@ private slots:
         window.stopRecording();
         QTRY_VERIFY_WITH_TIMEOUT(!window.session().recording().active, 10000);
         QVERIFY(!window.recordAction()->isChecked());
+        QTRY_VERIFY2_WITH_TIMEOUT(window.statusBar()->currentMessage().contains("Recording saved")
+                                      && window.statusBar()->currentMessage().contains("class.oirec"),
+                                  qPrintable(window.statusBar()->currentMessage()), 10000);
 
         // File → Export recording as MCAP… sits beside the CSV export, and
         // what it runs writes an MCAP file of the recording.
@@ -619,12 +630,15 @@ private slots:
         QTest::mouseClick(playPause, Qt::LeftButton);
         QTRY_VERIFY_WITH_TIMEOUT(window.replayBar()->position().finished, 20000);
         QCOMPARE(window.replayBar()->position().speed, 10.0);
-        // At the end no fresh data comes: the diagram's banner, the plots'
-        // badge and the status bar say so together, from one flag.
+        // At the end the diagram's banner, the gauges' banner, the plots'
+        // badge and the status bar say together that the replay has ended.
         QTRY_VERIFY_WITH_TIMEOUT(window.robotDiagram()->isStale(), 10000);
         window.refreshDisplay();
-        QCOMPARE(window.sensorPlots()->statusText(), QStringLiteral("Not live: no fresh data"));
-        QVERIFY2(window.statusText().contains("NOT LIVE"), qPrintable(window.statusText()));
+        QCOMPARE(window.sensorPlots()->statusText(), QStringLiteral("Replay finished"));
+        QVERIFY2(window.statusText().contains("REPLAY FINISHED"), qPrintable(window.statusText()));
+        auto *banner = window.findChild<QLabel *>("staleBanner");
+        QVERIFY(banner && banner->isVisible());
+        QVERIFY2(banner->text().contains("recording has ended"), qPrintable(banner->text()));
         const double duration = window.replayBar()->position().durationUs / 1e6;
         QVERIFY2(std::abs(window.history().newestTime() - duration) < 0.15,
                  qPrintable(QString("newest sample at %1 s, recording %2 s long").arg(window.history().newestTime()).arg(duration)));
@@ -633,13 +647,37 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(window.history().newestTime() < duration - 0.001, 10000);
         QVERIFY(window.history().oldestTime() >= window.history().newestTime() - 0.05);
 
-        // The same recording as CSV: a header and one row per frame.
-        const QString csv = dir.filePath("class.csv");
-        QCOMPARE(RecordingActions::exportRecordingCsv(path, csv), QString());
+        // File → Export recording as CSV… on a replay: a Save dialog for the
+        // replayed file, where a typed name is written.
+        // The dialog opens in the recording's folder: a name typed there is enough.
+        const QString csv = dir.filePath("typed.csv");
+        QString dialogTitle;
+        bool dialogSaves = false;
+        QTimer typeName;
+        typeName.setInterval(20);
+        connect(&typeName, &QTimer::timeout, &window, [&] {
+            auto *dialog = qobject_cast<QFileDialog *>(QApplication::activeModalWidget());
+            if (!dialog)
+                return;
+            typeName.stop();
+            dialogTitle = dialog->windowTitle();
+            dialogSaves = dialog->acceptMode() == QFileDialog::AcceptSave;
+            auto *name = dialog->findChild<QLineEdit *>("fileNameEdit");
+            QVERIFY(name);
+            name->selectAll();
+            QTest::keyClicks(name, QStringLiteral("typed.csv"));
+            QTest::keyClick(name, Qt::Key_Return);
+        });
+        typeName.start();
+        window.findChild<QAction *>("exportCsvAction")->trigger();
+        QVERIFY2(dialogSaves, qPrintable(dialogTitle));
+        QVERIFY2(dialogTitle.contains("class.oirec") && dialogTitle.contains("CSV"), qPrintable(dialogTitle));
+        QTRY_VERIFY_WITH_TIMEOUT(QFile::exists(csv), 10000);
         QFile file(csv);
         QVERIFY(file.open(QIODevice::ReadOnly));
         const QList<QByteArray> lines = file.readAll().split('\n');
         QVERIFY(lines.first().startsWith("time_s,bumps_wheel_drops"));
+        QVERIFY2(!lines.first().contains("unused"), lines.first().constData()); // reserved bytes, always 0
         QCOMPARE(lines.size() - 2, window.replayBar()->position().frameCount); // header, trailing newline
         // A bad source leaves no file behind.
         const QString none = dir.filePath("none.csv");

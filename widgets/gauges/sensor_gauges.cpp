@@ -72,6 +72,7 @@ SensorGauges::SensorGauges(QWidget *parent) : QWidget(parent), m_snapshot(*m_pro
     m_banner->setFont(display::valueFont(font(), 1.3));
     m_banner->setAutoFillBackground(true);
     m_banner->setMargin(6);
+    m_banner->setWordWrap(true); // a narrow dock wraps it, never cuts it
     m_banner->hide();
 
     // The gauges scroll where the panel is short; the banner stays in view.
@@ -125,7 +126,7 @@ SensorGauges::SensorGauges(QWidget *parent) : QWidget(parent), m_snapshot(*m_pro
 
 void SensorGauges::retranslateUi()
 {
-    m_banner->setText(tr("STALE \u2014 no fresh data from the robot"));
+    showBannerText();
     const QString headings[] = {tr("Battery"), tr("Drive"), tr("Motors and dirt"), tr("Cargo bay")};
     for (qsizetype i = 0; i < m_sections.size(); ++i)
         m_sections[i].heading->setText(headings[i]);
@@ -337,11 +338,20 @@ void SensorGauges::refreshBanner()
     m_banner->setPalette(p);
 }
 
-void SensorGauges::setStale(bool stale)
+void SensorGauges::showBannerText()
 {
-    if (m_stale == stale)
+    m_banner->setText(m_replayEnded ? tr("REPLAY FINISHED \u2014 the recording has ended")
+                                    : tr("STALE \u2014 no fresh data from the robot"));
+}
+
+void SensorGauges::setStale(bool stale, bool replayEnded)
+{
+    replayEnded = stale && replayEnded;
+    if (m_stale == stale && m_replayEnded == replayEnded)
         return;
     m_stale = stale;
+    m_replayEnded = replayEnded;
+    showBannerText();
     m_banner->setVisible(stale);
     for (ValueGauge *g : std::as_const(m_gauges))
         g->setStale(stale);

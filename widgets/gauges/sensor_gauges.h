@@ -30,8 +30,9 @@ public:
     // Packets this robot's firmware reports wrongly (requested radius before
     // 3.3.0) are greyed, with the reason as their tooltip.
     void setCorrections(const oi::FirmwareCorrections &corrections);
-    // Stale values are greyed under a STALE banner.
-    void setStale(bool stale);
+    // Stale values are greyed under a STALE banner; at the end of a replay
+    // the banner says the recording has ended.
+    void setStale(bool stale, bool replayEnded = false);
     bool isStale() const { return m_stale; }
 
     // Gauge keys: "battery", "voltage", "current", "temperature",
@@ -72,6 +73,7 @@ private:
     int columnsForWidth(int width) const;
     void relayout();
     void refreshBanner();
+    void showBannerText();
     void refreshReliability();
 
     void showBattery(const oi::SensorSnapshot &s);
@@ -91,4 +93,5 @@ private:
     int m_columns = 0;
     int m_captionWidth = 0; // what the widest caption needs
     bool m_stale = false;
+    bool m_replayEnded = false;
 };

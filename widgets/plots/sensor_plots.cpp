@@ -128,11 +128,13 @@ void SensorPlots::setComparison(const SensorHistory *history, double shiftSecond
     m_stack->setComparison(history, shiftSeconds, label, primaryLabel);
 }
 
-void SensorPlots::setStale(bool stale)
+void SensorPlots::setStale(bool stale, bool replayEnded)
 {
-    if (stale == m_stale)
+    replayEnded = stale && replayEnded;
+    if (stale == m_stale && replayEnded == m_replayEnded)
         return;
     m_stale = stale;
+    m_replayEnded = replayEnded;
     applyPaused();
 }
 
@@ -164,6 +166,7 @@ void SensorPlots::applyPaused()
                                            : display::State::Active;
     const QPalette pal = palette();
     m_status->setText(paused    ? tr("Paused: drag or arrows pan, wheel or +/- zoom, Space resumes")
+                      : m_replayEnded ? tr("Replay finished")
                       : m_stale ? tr("Not live: no fresh data")
                                 : tr("Live"));
     m_status->setStyleSheet(QStringLiteral("QLabel { background: %1; color: %2; border-radius: 3px; }")

@@ -36,7 +36,7 @@ public:
     void setCorrections(const oi::FirmwareCorrections &corrections);
     // No fresh data (the link is quiet, or a replay has ended): the badge that
     // says "Live" while data flows says so instead.
-    void setStale(bool stale);
+    void setStale(bool stale, bool replayEnded = false);
     QString statusText() const;
 
     // Drawn on every plot; see PlotStack.
@@ -72,4 +72,5 @@ private:
     QAction *m_exportAll;
     QLabel *m_status;
     bool m_stale = false;
+    bool m_replayEnded = false;
 };

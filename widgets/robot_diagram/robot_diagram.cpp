@@ -154,7 +154,7 @@ QString RobotDiagram::stateSummary() const
     const oi::SensorSnapshot &s = m_snapshot;
     QStringList parts;
     if (m_stale)
-        parts << tr("Data is stale");
+        parts << (m_replayEnded ? tr("The replay has ended") : tr("Data is stale"));
     if (s.bumpLeft())
         parts << tr("Bump left");
     if (s.bumpRight())
@@ -202,11 +202,13 @@ void RobotDiagram::setSnapshot(const oi::SensorSnapshot &snapshot)
     update();
 }
 
-void RobotDiagram::setStale(bool stale)
+void RobotDiagram::setStale(bool stale, bool replayEnded)
 {
-    if (m_stale == stale)
+    replayEnded = stale && replayEnded;
+    if (m_stale == stale && m_replayEnded == replayEnded)
         return;
     m_stale = stale;
+    m_replayEnded = replayEnded;
     updateDescription();
     update();
 }
@@ -780,7 +782,8 @@ void RobotDiagram::paintStale(QPainter &p) const
     p.setPen(QPen(display::textOn(State::Stale, palette()), 4));
     p.setBrush(display::stateColor(State::Stale, palette()));
     p.drawRoundedRect(banner, 16, 16);
-    p.setFont(fittingFont(64, tr("STALE"), banner.width() - 30));
+    const QString word = m_replayEnded ? tr("ENDED") : tr("STALE");
+    p.setFont(fittingFont(64, word, banner.width() - 30));
     p.setPen(display::textOn(State::Stale, palette()));
-    p.drawText(banner, Qt::AlignCenter, tr("STALE"));
+    p.drawText(banner, Qt::AlignCenter, word);
 }

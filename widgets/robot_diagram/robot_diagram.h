@@ -31,7 +31,7 @@ public:
     // Stores the values and schedules a repaint; call it from a display timer.
     void setSnapshot(const oi::SensorSnapshot &snapshot);
     // Stale data is drawn in grey under a STALE banner.
-    void setStale(bool stale);
+    void setStale(bool stale, bool replayEnded = false);
     bool isStale() const { return m_stale; }
     // Rings drawn round these parts, to point a class at them: "bump_left",
     // "bump_right", "wheel_left", "wheel_right", "caster", "cliff_left",
@@ -113,5 +113,6 @@ private:
     const oi::RobotProfile *m_profile = &oi::profile(oi::ProfileId::Create2);
     oi::SensorSnapshot m_snapshot;
     bool m_stale = false;
+    bool m_replayEnded = false;
     QStringList m_highlighted;
 };

@@ -39,8 +39,11 @@ QList<SavedRobot> loadSavedRobots(QSettings &settings)
         r.link.profile = profileFrom(settings.value("profile"), &profileOk);
         bool virtualOk = false;
         const auto virtualRobot = profileFrom(settings.value("virtualRobot", int(oi::ProfileId::Create2)), &virtualOk);
-        if (!profileOk || !virtualOk || !virtualRobot || r.link.baud < 0)
+        // The wake line by name (brc_line.h); rts where none is kept.
+        const std::optional<oi::BrcLine> brcLine = oi::brcLineByName(settings.value("brcLine", "rts").toString().toStdString());
+        if (!profileOk || !virtualOk || !virtualRobot || r.link.baud < 0 || !brcLine)
             continue;
+        r.link.brcLine = *brcLine;
         r.link.virtualRobot = *virtualRobot;
         r.link.virtualSeed = settings.value("virtualSeed", 1).toUInt();
         // A virtual robot's real wheels; the documents' when not kept or not valid.
@@ -71,6 +74,8 @@ void saveRobots(QSettings &settings, const QList<SavedRobot> &robots)
         settings.setValue("tcpPort", r.link.tcpPort);
         settings.setValue("replay", r.link.replayPath);
         settings.setValue("baud", r.link.baud);
+        const std::string_view brcLine = oi::brcLineName(r.link.brcLine);
+        settings.setValue("brcLine", QString::fromUtf8(brcLine.data(), qsizetype(brcLine.size())));
         settings.setValue("profile", r.link.profile ? int(*r.link.profile) : -1);
         settings.setValue("virtualRobot", int(r.link.virtualRobot));
         settings.setValue("virtualSeed", r.link.virtualSeed);

@@ -39,11 +39,10 @@ QList<SavedRobot> loadSavedRobots(QSettings &settings)
         r.link.profile = profileFrom(settings.value("profile"), &profileOk);
         bool virtualOk = false;
         const auto virtualRobot = profileFrom(settings.value("virtualRobot", int(oi::ProfileId::Create2)), &virtualOk);
-        // The wake line by name (brc_line.h); rts where none is kept.
-        const std::optional<oi::BrcLine> brcLine = oi::brcLineByName(settings.value("brcLine", "rts").toString().toStdString());
-        if (!profileOk || !virtualOk || !virtualRobot || r.link.baud < 0 || !brcLine)
+        if (!profileOk || !virtualOk || !virtualRobot || r.link.baud < 0)
             continue;
-        r.link.brcLine = *brcLine;
+        // The wake line by name (brc_line.h); RTS, the default, when not kept or not one.
+        r.link.brcLine = oi::brcLineByName(settings.value("brcLine").toString().toStdString()).value_or(oi::BrcLine::Rts);
         r.link.virtualRobot = *virtualRobot;
         r.link.virtualSeed = settings.value("virtualSeed", 1).toUInt();
         // A virtual robot's real wheels; the documents' when not kept or not valid.

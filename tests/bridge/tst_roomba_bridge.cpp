@@ -84,6 +84,10 @@ private slots:
                                      << "'dyson' is not a robot";
         QTest::newRow("missing CA") << QStringList{"--name", "r1", "--sim", "--cafile", "/nonexistent/ca.crt"} << QByteArray()
                                     << "cafile: /nonexistent/ca.crt does not exist";
+        QTest::newRow("bad wake line in the file") << QStringList{} << QByteArray("name = r1\nport = /dev/ttyUSB0\nbrc-line = cts\n")
+                                                   << "bad.conf:3: brc-line: 'cts' is not a wake line: rts, dtr, both";
+        QTest::newRow("bad wake line") << QStringList{"--name", "r1", "--sim", "--brc-line", "yes"} << QByteArray()
+                                       << "--brc-line: brc-line: 'yes' is not a wake line: rts, dtr, both";
         QTest::newRow("missing config") << QStringList{"--config", "/nonexistent/r1.conf"} << QByteArray()
                                         << "/nonexistent/r1.conf: cannot read it";
     }

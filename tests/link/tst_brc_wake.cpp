@@ -674,6 +674,29 @@ private slots:
         link.close();
     }
 
+    // Over RFC 2217 the wake line is the bridge's DTR when the robot's
+    // cable carries BRC there: SET-CONTROL for DTR reaches the pin.
+    void rfc2217WakesARobotWiredToDtrOnDtr()
+    {
+        sim::TcpRobotServer server(oi::profile(oi::ProfileId::Create2));
+        server.setRfc2217(true);
+        QVERIFY(server.listen(QHostAddress::LocalHost, 0));
+        server.robot().robot().setQuirks({.brcWiredTo = oi::BrcLine::Dtr});
+        server.robot().robot().receive(kStartAndPower);
+        QVERIFY(server.robot().robot().asleep());
+        oilink::LinkSettings settings =
+            oilink::LinkSettings::tcp(QStringLiteral("127.0.0.1"), server.serverPort(), oi::ProfileId::Create2);
+        settings.tcpRfc2217 = true;
+        settings.brcLine = oi::BrcLine::Dtr;
+        settings.streamPackets = {35};
+        oilink::RobotLink link;
+        QSignalSpy frames(&link, &oilink::RobotLink::snapshot);
+        link.open(settings);
+        QTRY_VERIFY_WITH_TIMEOUT(!frames.isEmpty(), kTimeoutMs);
+        QVERIFY(!server.robot().robot().asleep());
+        link.close();
+    }
+
     void rawTcpCannotWakeIt()
     {
         sim::TcpRobotServer server(oi::profile(oi::ProfileId::Create2));

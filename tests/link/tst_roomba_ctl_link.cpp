@@ -506,6 +506,25 @@ private slots:
         QVERIFY2(again.status == 0, qPrintable(again.err));
     }
 
+    // roomba-sim's robot asleep, listening only 1.5 s after a wake pulse:
+    // sensors streams it without a word on standard error, and the doctor
+    // finds it woken at its own baud, never pulsed to 19200.
+    void aSlowWakingRobotIsWokenAndKeepsItsBaud()
+    {
+        Sim sim({QStringLiteral("--asleep"), QStringLiteral("--wake-time"), QStringLiteral("1500")});
+        QVERIFY(!sim.path().isEmpty());
+        const QStringList robot{QStringLiteral("--port"), sim.path(), QStringLiteral("--profile"), QStringLiteral("create2")};
+        const Outcome doctor = run(QStringList{QStringLiteral("doctor")} + robot);
+        QCOMPARE(doctor.status, 0);
+        QCOMPARE(doctor.lines.last(), QStringLiteral("The robot was asleep; a BRC pulse woke it, and it talks at 115200 baud."));
+        Sim asleep({QStringLiteral("--asleep"), QStringLiteral("--wake-time"), QStringLiteral("1500")});
+        const Outcome sensors = run({QStringLiteral("sensors"), QStringLiteral("--port"), asleep.path(), QStringLiteral("--profile"),
+                                     QStringLiteral("create2"), QStringLiteral("--count"), QStringLiteral("3")});
+        QVERIFY2(sensors.status == 0, qPrintable(sensors.err));
+        QCOMPARE(sensors.err, QString());
+        QCOMPARE(json(sensors.lines.last())[QStringLiteral("statistics")].toObject()[QStringLiteral("baud")].toInt(), 115200);
+    }
+
     void doctorOnAHealthyRobot()
     {
         const Outcome o = run({QStringLiteral("doctor"), QStringLiteral("--sim"), QStringLiteral("--profile"),

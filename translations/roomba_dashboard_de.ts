@@ -896,28 +896,28 @@
         <translation>Trennen, um den Anschluss zu ändern</translation>
     </message>
     <message>
-        <source>Wake on RTS</source>
-        <translation>Wecken über RTS</translation>
-    </message>
-    <message>
-        <source>Wake on DTR</source>
-        <translation>Wecken über DTR</translation>
-    </message>
-    <message>
-        <source>Wake on RTS and DTR</source>
-        <translation>Wecken über RTS und DTR</translation>
-    </message>
-    <message>
-        <source>No wake line</source>
-        <translation>Keine Weckleitung</translation>
-    </message>
-    <message>
         <source>Wake line</source>
         <translation>Weckleitung</translation>
     </message>
     <message>
-        <source>The adapter&apos;s line wired to the robot&apos;s BRC pin, pulsed to wake it and keep it awake. Many cables use RTS, some DTR; none: the cable has no BRC wire.</source>
-        <translation>Die Leitung des Adapters, die mit dem BRC-Pin des Roboters verbunden ist; sie wird gepulst, um ihn zu wecken und wach zu halten. Viele Kabel nutzen RTS, manche DTR; keine: Das Kabel hat keine BRC-Ader.</translation>
+        <source>Wake: RTS</source>
+        <translation>Wecken: RTS</translation>
+    </message>
+    <message>
+        <source>Wake: DTR</source>
+        <translation>Wecken: DTR</translation>
+    </message>
+    <message>
+        <source>Wake: both</source>
+        <translation>Wecken: beide</translation>
+    </message>
+    <message>
+        <source>Wake: none</source>
+        <translation>Wecken: keine</translation>
+    </message>
+    <message>
+        <source>The adapter&apos;s line wired to the robot&apos;s BRC pin, pulsed to wake it and keep it awake. Many cables use RTS, some DTR; both pulses the two; none: the cable has no BRC wire.</source>
+        <translation>Die Leitung des Adapters, die mit dem BRC-Pin des Roboters verbunden ist; sie wird gepulst, um ihn zu wecken und wach zu halten. Viele Kabel nutzen RTS, manche DTR; beide pulst die zwei; keine: Das Kabel hat keine BRC-Ader.</translation>
     </message>
 </context>
 <context>

@@ -896,28 +896,28 @@
         <translation>Desconecte para cambiar el puerto</translation>
     </message>
     <message>
-        <source>Wake on RTS</source>
-        <translation>Despertar por RTS</translation>
-    </message>
-    <message>
-        <source>Wake on DTR</source>
-        <translation>Despertar por DTR</translation>
-    </message>
-    <message>
-        <source>Wake on RTS and DTR</source>
-        <translation>Despertar por RTS y DTR</translation>
-    </message>
-    <message>
-        <source>No wake line</source>
-        <translation>Sin línea de despertar</translation>
-    </message>
-    <message>
         <source>Wake line</source>
         <translation>Línea de despertar</translation>
     </message>
     <message>
-        <source>The adapter&apos;s line wired to the robot&apos;s BRC pin, pulsed to wake it and keep it awake. Many cables use RTS, some DTR; none: the cable has no BRC wire.</source>
-        <translation>La línea del adaptador conectada al pin BRC del robot, que se pulsa para despertarlo y mantenerlo despierto. Muchos cables usan RTS, algunos DTR; ninguna: el cable no tiene hilo BRC.</translation>
+        <source>Wake: RTS</source>
+        <translation>Despertar: RTS</translation>
+    </message>
+    <message>
+        <source>Wake: DTR</source>
+        <translation>Despertar: DTR</translation>
+    </message>
+    <message>
+        <source>Wake: both</source>
+        <translation>Despertar: ambas</translation>
+    </message>
+    <message>
+        <source>Wake: none</source>
+        <translation>Despertar: ninguna</translation>
+    </message>
+    <message>
+        <source>The adapter&apos;s line wired to the robot&apos;s BRC pin, pulsed to wake it and keep it awake. Many cables use RTS, some DTR; both pulses the two; none: the cable has no BRC wire.</source>
+        <translation>La línea del adaptador conectada al pin BRC del robot, que se pulsa para despertarlo y mantenerlo despierto. Muchos cables usan RTS, algunos DTR; ambas pulsa las dos; ninguna: el cable no tiene hilo BRC.</translation>
     </message>
 </context>
 <context>

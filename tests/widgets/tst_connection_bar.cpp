@@ -94,7 +94,7 @@ private slots:
         choose(bar, "transport", int(ConnectionRequest::Transport::Serial));
         QVERIFY(line->isVisible());
         choose(bar, "brcLine", int(oi::BrcLine::Dtr));
-        QCOMPARE(line->currentText(), QStringLiteral("Wake on DTR"));
+        QCOMPARE(line->currentText(), QStringLiteral("Wake: DTR"));
         bar.findChild<QComboBox *>("port")->setEditText("/dev/ttyUSB0");
         QSignalSpy spy(&bar, &ConnectionBar::connectRequested);
         clickConnect(bar);
@@ -105,7 +105,7 @@ private slots:
         none.brcLine = oi::BrcLine::None;
         bar.setRequest(none);
         QCOMPARE(bar.request().brcLine, oi::BrcLine::None);
-        QCOMPARE(line->currentText(), QStringLiteral("No wake line"));
+        QCOMPARE(line->currentText(), QStringLiteral("Wake: none"));
     }
 
     void badInputGivesOneInlineError_data()

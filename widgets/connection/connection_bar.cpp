@@ -112,10 +112,10 @@ void ConnectionBar::retranslateUi()
     m_baud->setItemText(0, tr("Default baud"));
     m_baud->setAccessibleName(tr("Baud rate"));
     // The line of the serial adapter (or RFC 2217 bridge) wired to the robot's BRC pin.
-    m_brcLine->setItemText(m_brcLine->findData(int(oi::BrcLine::Rts)), tr("Wake on RTS"));
-    m_brcLine->setItemText(m_brcLine->findData(int(oi::BrcLine::Dtr)), tr("Wake on DTR"));
-    m_brcLine->setItemText(m_brcLine->findData(int(oi::BrcLine::Both)), tr("Wake on RTS and DTR"));
-    m_brcLine->setItemText(m_brcLine->findData(int(oi::BrcLine::None)), tr("No wake line"));
+    m_brcLine->setItemText(m_brcLine->findData(int(oi::BrcLine::Rts)), tr("Wake: RTS"));
+    m_brcLine->setItemText(m_brcLine->findData(int(oi::BrcLine::Dtr)), tr("Wake: DTR"));
+    m_brcLine->setItemText(m_brcLine->findData(int(oi::BrcLine::Both)), tr("Wake: both"));
+    m_brcLine->setItemText(m_brcLine->findData(int(oi::BrcLine::None)), tr("Wake: none"));
     m_brcLine->setAccessibleName(tr("Wake line"));
     m_connect->setText(tr("Connect"));
     m_disconnect->setText(tr("Disconnect"));
@@ -125,7 +125,7 @@ void ConnectionBar::retranslateUi()
         w->setToolTip(m_connected ? m_lockedHint->text() : QString());
     m_brcLine->setToolTip(m_connected ? m_lockedHint->text()
                                       : tr("The adapter's line wired to the robot's BRC pin, pulsed to wake it and "
-                                           "keep it awake. Many cables use RTS, some DTR; none: the cable has no BRC wire."));
+                                           "keep it awake. Many cables use RTS, some DTR; both pulses the two; none: the cable has no BRC wire."));
     m_refresh->setToolTip(m_connected ? m_lockedHint->text() : tr("List the serial ports again"));
     if (m_ownError != OwnError::None)
         showOwnError(m_ownError);

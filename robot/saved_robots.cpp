@@ -41,6 +41,8 @@ QList<SavedRobot> loadSavedRobots(QSettings &settings)
         const auto virtualRobot = profileFrom(settings.value("virtualRobot", int(oi::ProfileId::Create2)), &virtualOk);
         if (!profileOk || !virtualOk || !virtualRobot || r.link.baud < 0)
             continue;
+        // The wake line by name (brc_line.h); RTS, the default, when not kept or not one.
+        r.link.brcLine = oi::brcLineByName(settings.value("brcLine").toString().toStdString()).value_or(oi::BrcLine::Rts);
         r.link.virtualRobot = *virtualRobot;
         r.link.virtualSeed = settings.value("virtualSeed", 1).toUInt();
         // A virtual robot's real wheels; the documents' when not kept or not valid.
@@ -71,6 +73,8 @@ void saveRobots(QSettings &settings, const QList<SavedRobot> &robots)
         settings.setValue("tcpPort", r.link.tcpPort);
         settings.setValue("replay", r.link.replayPath);
         settings.setValue("baud", r.link.baud);
+        const std::string_view brcLine = oi::brcLineName(r.link.brcLine);
+        settings.setValue("brcLine", QString::fromUtf8(brcLine.data(), qsizetype(brcLine.size())));
         settings.setValue("profile", r.link.profile ? int(*r.link.profile) : -1);
         settings.setValue("virtualRobot", int(r.link.virtualRobot));
         settings.setValue("virtualSeed", r.link.virtualSeed);

@@ -895,6 +895,30 @@
         <source>Disconnect to change the port</source>
         <translation>Trennen, um den Anschluss zu ändern</translation>
     </message>
+    <message>
+        <source>Wake line</source>
+        <translation>Weckleitung</translation>
+    </message>
+    <message>
+        <source>Wake: RTS</source>
+        <translation>Wecken: RTS</translation>
+    </message>
+    <message>
+        <source>Wake: DTR</source>
+        <translation>Wecken: DTR</translation>
+    </message>
+    <message>
+        <source>Wake: both</source>
+        <translation>Wecken: beide</translation>
+    </message>
+    <message>
+        <source>Wake: none</source>
+        <translation>Wecken: keine</translation>
+    </message>
+    <message>
+        <source>The adapter&apos;s line wired to the robot&apos;s BRC pin, pulsed to wake it and keep it awake. Many cables use RTS, some DTR; both pulses the two; none: the cable has no BRC wire.</source>
+        <translation>Die Leitung des Adapters, die mit dem BRC-Pin des Roboters verbunden ist; sie wird gepulst, um ihn zu wecken und wach zu halten. Viele Kabel nutzen RTS, manche DTR; beide pulst die zwei; keine: Das Kabel hat keine BRC-Ader.</translation>
+    </message>
 </context>
 <context>
     <name>ConnectionCheckup</name>
@@ -2744,6 +2768,10 @@ GPL-3.0-or-later.</translation>
         <source>Firmware: %1</source>
         <translation>Firmware: %1</translation>
     </message>
+    <message>
+        <source>mode %1 (not an OI mode)</source>
+        <translation>Modus %1 (kein OI-Modus)</translation>
+    </message>
 </context>
 <context>
     <name>MotorsPanel</name>
@@ -3891,6 +3919,10 @@ Doppelklick zum Umbenennen</translation>
         <source>It reports the distance (packet 19) and the requested radius (packet 40) wrongly: they are greyed, and the map uses the wheel encoders.</source>
         <translation>Sie meldet die Strecke (Paket 19) und den angeforderten Radius (Paket 40) falsch: Beide werden grau gezeigt, und die Karte nutzt die Radencoder.</translation>
     </message>
+    <message>
+        <source>This robot reports its mode (packet 35) one too high (Passive as 2, Safe as 3, Full as 4): the true mode is shown and used everywhere.</source>
+        <translation>Dieser Roboter meldet seinen Modus (Paket 35) um eins zu hoch (Passive als 2, Safe als 3, Full als 4): Überall wird der wahre Modus gezeigt und verwendet.</translation>
+    </message>
 </context>
 <context>
     <name>RobotFleet</name>
@@ -4073,6 +4105,10 @@ Doppelklick zum Umbenennen</translation>
     <message>
         <source>Not sent: %1</source>
         <translation>Nicht gesendet: %1</translation>
+    </message>
+    <message>
+        <source>This robot reports its mode one too high (Passive as Safe, as some Wi-Fi Roomba 600s do): the true mode is shown from now on, and remembered for this robot.</source>
+        <translation>Dieser Roboter meldet seinen Modus um eins zu hoch (Passive als Safe, wie manche WLAN-Roomba-600): Ab jetzt wird der wahre Modus gezeigt und für diesen Roboter gemerkt.</translation>
     </message>
 </context>
 <context>
@@ -5806,10 +5842,6 @@ Umschalt+Esc tut dasselbe aus jedem Fenster; Leertaste oder Esc hält den ausgew
         <translation>Keine Antwort: Ist der Roboter eingeschaltet und das Kabel eingesteckt? (Ein schlafender Roboter lässt sich über diese Verbindung nicht wecken.)</translation>
     </message>
     <message>
-        <source>Pulsed the BRC pin to wake the robot.</source>
-        <translation>Den BRC-Pin gepulst, um den Roboter zu wecken.</translation>
-    </message>
-    <message>
         <source>At %1 it answers after the pulse.</source>
         <translation>Bei %1 antwortet er nach dem Impuls.</translation>
     </message>
@@ -5820,10 +5852,6 @@ Umschalt+Esc tut dasselbe aus jedem Fenster; Leertaste oder Esc hält den ausgew
     <message>
         <source>At 19200 baud it answers after the three pulses.</source>
         <translation>Bei 19200 Baud antwortet er nach den drei Impulsen.</translation>
-    </message>
-    <message>
-        <source>Still silent after BRC pulses: the robot is off or unplugged, or asleep on its dock with firmware before release-3.8.2 / release-stm32-3.7.7, which does not wake by BRC there (lift it off the dock, or press Clean).</source>
-        <translation>Auch nach BRC-Impulsen still: Der Roboter ist aus oder nicht angeschlossen, oder er schläft auf seiner Ladestation mit einer Firmware vor release-3.8.2 / release-stm32-3.7.7, die dort nicht per BRC aufwacht (von der Station heben oder Clean drücken).</translation>
     </message>
     <message>
         <source>It answers Sensors 101: a Roomba 500 or a Create 2 (they answer alike).</source>
@@ -5868,6 +5896,26 @@ Umschalt+Esc tut dasselbe aus jedem Fenster; Leertaste oder Esc hält den ausgew
     <message>
         <source>The robot answers at %1 as a Roomba 500 or a Create 2. The two answer alike but read their wheel encoders the other way round: name which it is.</source>
         <translation>Der Roboter antwortet mit %1 als Roomba 500 oder Create 2. Beide antworten gleich, lesen ihre Radencoder aber umgekehrt: Geben Sie an, welcher es ist.</translation>
+    </message>
+    <message>
+        <source>Pulsed the BRC pin on the wake line (%1) to wake the robot.</source>
+        <translation>Den BRC-Pin über die Weckleitung (%1) gepulst, um den Roboter zu wecken.</translation>
+    </message>
+    <message>
+        <source>Silent so far; a slow robot takes up to 2 s to wake: asking again once it has had that time.</source>
+        <translation>Bisher still; ein langsamer Roboter braucht bis zu 2 s zum Aufwachen: erneute Frage, sobald er diese Zeit hatte.</translation>
+    </message>
+    <message>
+        <source>Still silent: pulsed the other line (%1) instead.</source>
+        <translation>Immer noch still: stattdessen die andere Leitung (%1) gepulst.</translation>
+    </message>
+    <message>
+        <source>No line wakes it: still silent after BRC pulses on RTS and on DTR. The cable may not carry the BRC pin (press Clean to wake the robot), or the robot is off or unplugged, or asleep on its dock with firmware before release-3.8.2 / release-stm32-3.7.7, which does not wake by BRC there (lift it off the dock, or press Clean).</source>
+        <translation>Keine Leitung weckt ihn: immer noch still nach BRC-Impulsen auf RTS und auf DTR. Vielleicht führt das Kabel den BRC-Pin nicht (drücken Sie Clean, um den Roboter zu wecken), oder der Roboter ist aus oder nicht angeschlossen, oder er schläft auf seiner Ladestation mit einer Firmware vor release-3.8.2 / release-stm32-3.7.7, die dort nicht durch BRC aufwacht (heben Sie ihn von der Station oder drücken Sie Clean).</translation>
+    </message>
+    <message>
+        <source>The wake pulse works on %1, not %2: the cable carries the robot&apos;s BRC pin on %1. Set the wake line to %1 (--brc-line %3).</source>
+        <translation>Der Weckimpuls wirkt über %1, nicht über %2: Das Kabel führt den BRC-Pin des Roboters auf %1. Stellen Sie die Weckleitung auf %1 (--brc-line %3).</translation>
     </message>
 </context>
 <context>
@@ -5955,6 +6003,26 @@ Umschalt+Esc tut dasselbe aus jedem Fenster; Leertaste oder Esc hält den ausgew
         <source>%1: the port is not open yet</source>
         <translation>%1: der Anschluss ist noch nicht geöffnet</translation>
     </message>
+    <message>
+        <source>%1: the robot stopped sending and does not answer Start: is it still switched on, is its battery charged, and is the cable in?</source>
+        <translation>%1: Der Roboter sendet nicht mehr und antwortet nicht auf Start: Ist er noch eingeschaltet, ist sein Akku geladen und steckt das Kabel?</translation>
+    </message>
+    <message>
+        <source>%1: the robot stopped sending: it is probably asleep (a %2 sleeps after 5 minutes in Passive), and no pulse can wake it here: %3. Press Clean to wake it; the link streams again once it is awake. To wake it from here, wire its BRC pin to the adapter&apos;s RTS or DTR line and set that wake line.</source>
+        <translation>%1: Der Roboter sendet nicht mehr: Er schläft wahrscheinlich (ein %2 schläft nach 5 Minuten in Passive), und hier kann ihn kein Impuls wecken: %3. Drücken Sie Clean, um ihn zu wecken; die Verbindung sendet wieder, sobald er wach ist. Um ihn von hier aus zu wecken, verbinden Sie seinen BRC-Pin mit der RTS- oder DTR-Leitung des Adapters und stellen Sie diese Weckleitung ein.</translation>
+    </message>
+    <message>
+        <source>the port is closed</source>
+        <translation>der Anschluss ist geschlossen</translation>
+    </message>
+    <message>
+        <source>%1: the robot is asleep on its dock, and a BRC pulse did not wake it: firmware older than release-3.8.2 (release-stm32-3.7.7) is not woken by a pulse on the dock. Press Clean or lift it off the dock; the link streams again once it is awake.</source>
+        <translation>%1: Der Roboter schläft auf seiner Ladestation, und ein BRC-Impuls hat ihn nicht geweckt: Firmware älter als release-3.8.2 (release-stm32-3.7.7) wacht auf der Station nicht durch einen Impuls auf. Drücken Sie Clean oder heben Sie ihn von der Station; die Verbindung sendet wieder, sobald er wach ist.</translation>
+    </message>
+    <message>
+        <source>%1: the robot stopped sending and did not wake when its wake line (%2) was pulsed: it is asleep and the pulse does not reach it. The cable may carry the BRC pin on the other line (set the wake line to DTR, RTS or both; the connection check tries each) or not at all. On its dock, firmware older than release-3.8.2 is not woken by a pulse: press Clean or lift it off the dock; the link streams again once it is awake.</source>
+        <translation>%1: Der Roboter sendet nicht mehr und ist nicht aufgewacht, als seine Weckleitung (%2) gepulst wurde: Er schläft, und der Impuls erreicht ihn nicht. Vielleicht führt das Kabel den BRC-Pin auf der anderen Leitung (stellen Sie die Weckleitung auf DTR, RTS oder beide; die Verbindungsprüfung probiert jede) oder gar nicht. Auf der Ladestation wacht Firmware älter als release-3.8.2 nicht durch einen Impuls auf: Drücken Sie Clean oder heben Sie ihn von der Station; die Verbindung sendet wieder, sobald er wach ist.</translation>
+    </message>
 </context>
 <context>
     <name>oilink::RobotLinkThread</name>
@@ -5996,10 +6064,6 @@ Umschalt+Esc tut dasselbe aus jedem Fenster; Leertaste oder Esc hält den ausgew
     <message>
         <source>the port went away</source>
         <translation>der Anschluss ist verschwunden</translation>
-    </message>
-    <message>
-        <source>%1: no line is set for the BRC pin (RTS or DTR)</source>
-        <translation>%1: Für den BRC-Pin ist keine Leitung eingestellt (RTS oder DTR)</translation>
     </message>
     <message>
         <source>%1: the port has no RTS or DTR line to pulse the BRC pin with</source>
@@ -6044,16 +6108,16 @@ Umschalt+Esc tut dasselbe aus jedem Fenster; Leertaste oder Esc hält den ausgew
         <source>%1: raw TCP carries no modem lines, so it cannot wake the robot or keep it awake</source>
         <translation>%1: Rohes TCP überträgt keine Modemleitungen, kann den Roboter also weder wecken noch wach halten</translation>
     </message>
-    <message>
-        <source>%1: no line is set for the BRC pin (RTS or DTR)</source>
-        <translation>%1: Für den BRC-Pin ist keine Leitung eingestellt (RTS oder DTR)</translation>
-    </message>
 </context>
 <context>
     <name>oilink::Transport</name>
     <message>
         <source>%1 cannot reach the robot&apos;s BRC pin</source>
         <translation>%1 erreicht den BRC-Pin des Roboters nicht</translation>
+    </message>
+    <message>
+        <source>%1: the wake line is set to none, so the cable is taken to have no BRC wire</source>
+        <translation>%1: Die Weckleitung ist auf keine gestellt, das Kabel gilt also als ohne BRC-Ader</translation>
     </message>
 </context>
 </TS>

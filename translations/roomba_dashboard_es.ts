@@ -895,6 +895,30 @@
         <source>Disconnect to change the port</source>
         <translation>Desconecte para cambiar el puerto</translation>
     </message>
+    <message>
+        <source>Wake line</source>
+        <translation>Línea de despertar</translation>
+    </message>
+    <message>
+        <source>Wake: RTS</source>
+        <translation>Despertar: RTS</translation>
+    </message>
+    <message>
+        <source>Wake: DTR</source>
+        <translation>Despertar: DTR</translation>
+    </message>
+    <message>
+        <source>Wake: both</source>
+        <translation>Despertar: ambas</translation>
+    </message>
+    <message>
+        <source>Wake: none</source>
+        <translation>Despertar: ninguna</translation>
+    </message>
+    <message>
+        <source>The adapter&apos;s line wired to the robot&apos;s BRC pin, pulsed to wake it and keep it awake. Many cables use RTS, some DTR; both pulses the two; none: the cable has no BRC wire.</source>
+        <translation>La línea del adaptador conectada al pin BRC del robot, que se pulsa para despertarlo y mantenerlo despierto. Muchos cables usan RTS, algunos DTR; ambas pulsa las dos; ninguna: el cable no tiene hilo BRC.</translation>
+    </message>
 </context>
 <context>
     <name>ConnectionCheckup</name>
@@ -2743,6 +2767,10 @@ GPL-3.0-or-later.</translation>
         <source>Firmware: %1</source>
         <translation>Firmware: %1</translation>
     </message>
+    <message>
+        <source>mode %1 (not an OI mode)</source>
+        <translation>modo %1 (no es un modo OI)</translation>
+    </message>
 </context>
 <context>
     <name>MotorsPanel</name>
@@ -3890,6 +3918,10 @@ Doble clic para renombrar</translation>
         <source>It reports the distance (packet 19) and the requested radius (packet 40) wrongly: they are greyed, and the map uses the wheel encoders.</source>
         <translation>Informa mal de la distancia (paquete 19) y del radio pedido (paquete 40): se muestran en gris y el mapa usa los codificadores de las ruedas.</translation>
     </message>
+    <message>
+        <source>This robot reports its mode (packet 35) one too high (Passive as 2, Safe as 3, Full as 4): the true mode is shown and used everywhere.</source>
+        <translation>Este robot informa su modo (paquete 35) uno más alto (Passive como 2, Safe como 3, Full como 4): en todas partes se muestra y se usa el modo real.</translation>
+    </message>
 </context>
 <context>
     <name>RobotFleet</name>
@@ -4072,6 +4104,10 @@ Doble clic para renombrar</translation>
     <message>
         <source>Not sent: %1</source>
         <translation>No enviado: %1</translation>
+    </message>
+    <message>
+        <source>This robot reports its mode one too high (Passive as Safe, as some Wi-Fi Roomba 600s do): the true mode is shown from now on, and remembered for this robot.</source>
+        <translation>Este robot informa su modo uno más alto (Passive como Safe, como algunos Roomba 600 con Wi-Fi): desde ahora se muestra el modo real y se recuerda para este robot.</translation>
     </message>
 </context>
 <context>
@@ -5805,10 +5841,6 @@ Mayús+Esc hace lo mismo desde cualquier ventana; Espacio o Esc detiene el robot
         <translation>No vuelve nada: ¿está el robot encendido y el cable conectado? (Un robot dormido no se puede despertar por esta conexión.)</translation>
     </message>
     <message>
-        <source>Pulsed the BRC pin to wake the robot.</source>
-        <translation>Se pulsó el pin BRC para despertar al robot.</translation>
-    </message>
-    <message>
         <source>At %1 it answers after the pulse.</source>
         <translation>A %1 responde tras el pulso.</translation>
     </message>
@@ -5819,10 +5851,6 @@ Mayús+Esc hace lo mismo desde cualquier ventana; Espacio o Esc detiene el robot
     <message>
         <source>At 19200 baud it answers after the three pulses.</source>
         <translation>A 19200 baudios responde tras los tres pulsos.</translation>
-    </message>
-    <message>
-        <source>Still silent after BRC pulses: the robot is off or unplugged, or asleep on its dock with firmware before release-3.8.2 / release-stm32-3.7.7, which does not wake by BRC there (lift it off the dock, or press Clean).</source>
-        <translation>Sigue en silencio tras los pulsos BRC: el robot está apagado o desconectado, o duerme en su base con un firmware anterior a release-3.8.2 / release-stm32-3.7.7, que allí no despierta por BRC (sáquelo de la base o pulse Clean).</translation>
     </message>
     <message>
         <source>It answers Sensors 101: a Roomba 500 or a Create 2 (they answer alike).</source>
@@ -5867,6 +5895,26 @@ Mayús+Esc hace lo mismo desde cualquier ventana; Espacio o Esc detiene el robot
     <message>
         <source>The robot answers at %1 as a Roomba 500 or a Create 2. The two answer alike but read their wheel encoders the other way round: name which it is.</source>
         <translation>El robot responde a %1 como un Roomba 500 o un Create 2. Los dos responden igual, pero leen sus codificadores de rueda al revés: indique cuál es.</translation>
+    </message>
+    <message>
+        <source>Pulsed the BRC pin on the wake line (%1) to wake the robot.</source>
+        <translation>Se pulsó el pin BRC por la línea de despertar (%1) para despertar al robot.</translation>
+    </message>
+    <message>
+        <source>Silent so far; a slow robot takes up to 2 s to wake: asking again once it has had that time.</source>
+        <translation>Sin respuesta por ahora; un robot lento tarda hasta 2 s en despertar: se vuelve a preguntar cuando haya tenido ese tiempo.</translation>
+    </message>
+    <message>
+        <source>Still silent: pulsed the other line (%1) instead.</source>
+        <translation>Sigue sin responder: se pulsó la otra línea (%1) en su lugar.</translation>
+    </message>
+    <message>
+        <source>No line wakes it: still silent after BRC pulses on RTS and on DTR. The cable may not carry the BRC pin (press Clean to wake the robot), or the robot is off or unplugged, or asleep on its dock with firmware before release-3.8.2 / release-stm32-3.7.7, which does not wake by BRC there (lift it off the dock, or press Clean).</source>
+        <translation>Ninguna línea lo despierta: sigue sin responder tras pulsos BRC por RTS y por DTR. Puede que el cable no lleve el pin BRC (pulse Clean para despertar al robot), o el robot está apagado o desconectado, o duerme en su base con un firmware anterior a release-3.8.2 / release-stm32-3.7.7, que allí no despierta por BRC (levántelo de la base o pulse Clean).</translation>
+    </message>
+    <message>
+        <source>The wake pulse works on %1, not %2: the cable carries the robot&apos;s BRC pin on %1. Set the wake line to %1 (--brc-line %3).</source>
+        <translation>El pulso de despertar funciona por %1, no por %2: el cable lleva el pin BRC del robot en %1. Ponga la línea de despertar en %1 (--brc-line %3).</translation>
     </message>
 </context>
 <context>
@@ -5954,6 +6002,26 @@ Mayús+Esc hace lo mismo desde cualquier ventana; Espacio o Esc detiene el robot
         <source>%1: the port is not open yet</source>
         <translation>%1: el puerto aún no está abierto</translation>
     </message>
+    <message>
+        <source>%1: the robot stopped sending and does not answer Start: is it still switched on, is its battery charged, and is the cable in?</source>
+        <translation>%1: el robot dejó de enviar y no responde a Start: ¿sigue encendido, tiene la batería cargada y está el cable conectado?</translation>
+    </message>
+    <message>
+        <source>%1: the robot stopped sending: it is probably asleep (a %2 sleeps after 5 minutes in Passive), and no pulse can wake it here: %3. Press Clean to wake it; the link streams again once it is awake. To wake it from here, wire its BRC pin to the adapter&apos;s RTS or DTR line and set that wake line.</source>
+        <translation>%1: el robot dejó de enviar: probablemente duerme (un %2 se duerme tras 5 minutos en Passive), y aquí ningún pulso puede despertarlo: %3. Pulse Clean para despertarlo; el enlace vuelve a transmitir cuando esté despierto. Para despertarlo desde aquí, conecte su pin BRC a la línea RTS o DTR del adaptador y elija esa línea de despertar.</translation>
+    </message>
+    <message>
+        <source>the port is closed</source>
+        <translation>el puerto está cerrado</translation>
+    </message>
+    <message>
+        <source>%1: the robot is asleep on its dock, and a BRC pulse did not wake it: firmware older than release-3.8.2 (release-stm32-3.7.7) is not woken by a pulse on the dock. Press Clean or lift it off the dock; the link streams again once it is awake.</source>
+        <translation>%1: el robot duerme en su base y un pulso BRC no lo despertó: un firmware anterior a release-3.8.2 (release-stm32-3.7.7) no despierta por un pulso en la base. Pulse Clean o levántelo de la base; el enlace vuelve a transmitir cuando esté despierto.</translation>
+    </message>
+    <message>
+        <source>%1: the robot stopped sending and did not wake when its wake line (%2) was pulsed: it is asleep and the pulse does not reach it. The cable may carry the BRC pin on the other line (set the wake line to DTR, RTS or both; the connection check tries each) or not at all. On its dock, firmware older than release-3.8.2 is not woken by a pulse: press Clean or lift it off the dock; the link streams again once it is awake.</source>
+        <translation>%1: el robot dejó de enviar y no despertó al pulsar su línea de despertar (%2): duerme y el pulso no le llega. Puede que el cable lleve el pin BRC en la otra línea (ponga la línea de despertar en DTR, RTS o ambas; la comprobación de conexión prueba cada una) o que no lo lleve. En su base, un firmware anterior a release-3.8.2 no despierta por un pulso: pulse Clean o levántelo de la base; el enlace vuelve a transmitir cuando esté despierto.</translation>
+    </message>
 </context>
 <context>
     <name>oilink::RobotLinkThread</name>
@@ -5995,10 +6063,6 @@ Mayús+Esc hace lo mismo desde cualquier ventana; Espacio o Esc detiene el robot
     <message>
         <source>the port went away</source>
         <translation>el puerto ha desaparecido</translation>
-    </message>
-    <message>
-        <source>%1: no line is set for the BRC pin (RTS or DTR)</source>
-        <translation>%1: no hay línea configurada para el pin BRC (RTS o DTR)</translation>
     </message>
     <message>
         <source>%1: the port has no RTS or DTR line to pulse the BRC pin with</source>
@@ -6043,16 +6107,16 @@ Mayús+Esc hace lo mismo desde cualquier ventana; Espacio o Esc detiene el robot
         <source>%1: raw TCP carries no modem lines, so it cannot wake the robot or keep it awake</source>
         <translation>%1: el TCP sin procesar no lleva líneas de módem, así que no puede despertar al robot ni mantenerlo despierto</translation>
     </message>
-    <message>
-        <source>%1: no line is set for the BRC pin (RTS or DTR)</source>
-        <translation>%1: no hay línea configurada para el pin BRC (RTS o DTR)</translation>
-    </message>
 </context>
 <context>
     <name>oilink::Transport</name>
     <message>
         <source>%1 cannot reach the robot&apos;s BRC pin</source>
         <translation>%1 no llega al pin BRC del robot</translation>
+    </message>
+    <message>
+        <source>%1: the wake line is set to none, so the cable is taken to have no BRC wire</source>
+        <translation>%1: la línea de despertar está en ninguna, así que se toma el cable como sin hilo BRC</translation>
     </message>
 </context>
 </TS>

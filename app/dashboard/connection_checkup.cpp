@@ -121,6 +121,8 @@ void ConnectionCheckup::onFinished(const oilink::ConnectionDoctor::Report &repor
     oilink::LinkSettings next = m_settings;
     if (report.baud > 0 && m_settings.transport == oilink::TransportKind::Serial)
         next.baud = report.baud;
+    if (report.wakeLine)
+        next.brcLine = *report.wakeLine; // the line the robot woke on
     switch (report.finding) {
     case F::NothingComesBack:
     case F::AsleepDidNotWake:

@@ -21,6 +21,9 @@ oilink::LinkSettings linkSettingsFor(const ConnectionRequest &r)
     case T::Current:
         break; // the window keeps the robot's own settings
     }
+    // The wake line is the cable's: a serial port's, or a bridge's over RFC 2217.
+    if (r.transport == T::Serial || r.transport == T::Tcp)
+        s.brcLine = r.brcLine;
     return s;
 }
 
@@ -30,6 +33,7 @@ ConnectionRequest requestFor(const oilink::LinkSettings &s)
     ConnectionRequest r;
     r.profile = s.profile;
     r.baud = s.baud;
+    r.brcLine = s.brcLine;
     switch (s.transport) {
     case oilink::TransportKind::Serial:
         r.transport = T::Serial;

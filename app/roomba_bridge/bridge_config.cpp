@@ -33,7 +33,7 @@ const QStringList &BridgeConfig::keys()
         QStringLiteral("stop-username"), QStringLiteral("stop-password"), QStringLiteral("stop-password-file"),
         QStringLiteral("cafile"),   QStringLiteral("certfile"),      QStringLiteral("keyfile"),
         QStringLiteral("rate"),     QStringLiteral("allow-full"),    QStringLiteral("full-telemetry"),
-        QStringLiteral("allow-schedule"),
+        QStringLiteral("allow-schedule"), QStringLiteral("brc-line"),
     };
     return k;
 }
@@ -185,6 +185,12 @@ std::optional<BridgeConfig> BridgeConfig::fromSettings(const QList<Setting> &set
         c.link = oilink::LinkSettings::tcp(tcp.left(colon), quint16(port), profile);
     }
 
+    if (has("brc-line")) {
+        const std::optional<oi::BrcLine> line = oi::brcLineByName(value("brc-line").toStdString());
+        if (!line)
+            return fail(QStringLiteral("brc-line"), QString::fromStdString(oi::brcLineProblem(value("brc-line").toStdString())));
+        c.link.brcLine = *line;
+    }
     if (has("rate")) {
         bool ok = false;
         c.telemetryRateHz = value("rate").toDouble(&ok);

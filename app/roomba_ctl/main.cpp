@@ -2,6 +2,7 @@
 // roomba-ctl: the Open Interface core, and robots through the link, from the
 // command line.
 
+#include "brc_line.h"
 #include "command_catalog.h"
 #include "command_sender.h"
 #include "command_encoder.h"
@@ -65,11 +66,11 @@ Commands:
       List every command the profile has, with its opcode and arguments.
   packets [--profile P]
       Print the profile's packet table and groups.
-  sensors ROBOT [--profile P] [--baud B] [--count N]
+  sensors ROBOT [--profile P] [--baud B] [--brc-line L] [--count N]
       Connect, start the sensor stream that fits the baud, print N stream
       frames (default 10) as JSON lines like decode, then one line of link
       statistics. Closing leaves the robot stopped and in Passive mode.
-  send ROBOT [--profile P] [--baud B] [--no-mode-change] NAME ARGS...
+  send ROBOT [--profile P] [--baud B] [--brc-line L] [--no-mode-change] NAME ARGS...
       Send one command (as encode makes it) so that the robot carries it
       out: the robot is asked for its mode first; Start goes out only if it
       is silent (Off mode), and a command that works only in Safe or Full
@@ -84,10 +85,11 @@ Commands:
         roomba-ctl send --port /dev/ttyUSB0 safe
         roomba-ctl send --port /dev/ttyUSB0 drive 200 straight
         roomba-ctl send --sim sensors 7
-  doctor ROBOT [--profile P] [--baud B]
+  doctor ROBOT [--profile P] [--baud B] [--brc-line L]
       Find out why a robot gives no valid data, and print what was tried:
-      each baud with and without Start, a BRC pulse to wake it, the three
-      pulses for 19200 baud, then which robot answers. Exit status 0 when
+      each baud with and without Start, a BRC pulse to wake it (given up to
+      2 s, as slow robots need; then on the other line), the three pulses
+      for 19200 baud, then which robot answers. Exit status 0 when
       the robot answers as it is (woken by a pulse included; a Roomba 500
       or Create 2 found without --profile is named on standard error with
       the flag to give), 1 with what to change on the last line.
@@ -123,8 +125,13 @@ ROBOT is one of:
   --port PATH        a serial port, USB adapter or pseudo-terminal
   --tcp HOST:PORT    a serial-over-TCP bridge (ser2net raw mode); add
                      --rfc2217 for a bridge in telnet mode with RFC 2217,
-                     through which the robot's BRC pin (RTS) can be pulsed
+                     through which the robot's BRC pin can be pulsed
   --sim              the built-in virtual robot, playing --profile
+  --brc-line LINE    the wake line: the adapter's line wired to the robot's
+                     BRC pin, pulsed to wake it and keep it awake: rts
+                     (default), dtr, both, or none (the cable has no BRC
+                     wire: no pulse is tried). The doctor tries the other
+                     line when the robot does not wake, and names it.
 Without --profile, sensors and send find the robot's profile (and on a
 serial port, its baud among 115200, 57600 and 19200) by asking it. A Roomba
 500 and a Create 2 answer alike but read their wheel encoders (43, 44) the
@@ -396,7 +403,7 @@ int parseLinkOptions(const std::vector<std::string> &args, std::size_t from, Lin
             o.changeMode = false;
             continue;
         }
-        const bool known = a == "--port" || a == "--tcp" || a == "--profile" || a == "--baud"
+        const bool known = a == "--port" || a == "--tcp" || a == "--profile" || a == "--baud" || a == "--brc-line"
                            || (takesCount && a == "--count");
         if (!known) {
             fail("unknown option '" + a + "'");
@@ -439,6 +446,13 @@ int parseLinkOptions(const std::vector<std::string> &args, std::size_t from, Lin
                 return -1;
             }
             o.baud = static_cast<int>(number);
+        } else if (a == "--brc-line") {
+            const std::optional<oi::BrcLine> line = oi::brcLineByName(value);
+            if (!line) {
+                fail("--brc-line: " + oi::brcLineProblem(value));
+                return -1;
+            }
+            o.settings.brcLine = *line;
         } else {
             if (!oi::parseInteger(value, number) || number < 1) {
                 fail("--count needs a number of frames, 1 or more");

@@ -116,8 +116,10 @@ int main(int argc, char *argv[])
         "standard output, then runs until interrupted.\n"
         "A pseudo-terminal has no modem lines, so the robot's BRC pin (which wakes\n"
         "it, keeps it awake and sets 19200 baud) is a local socket beside it,\n"
-        "/tmp/roomba-sim-brc-pts-N for /dev/pts/N: each byte 'L' pulls the pin low,\n"
-        "'H' lets it go. The dashboard and roomba-ctl use it as the RTS/DTR line."));
+        "/tmp/roomba-sim-brc-pts-N for /dev/pts/N: each byte 'R' or 'D' asserts the\n"
+        "RTS or DTR line, 'r' or 'd' releases it; the line the robot's cable joins to\n"
+        "its BRC pin (--brc-wired) pulls the pin low while asserted. The dashboard and\n"
+        "roomba-ctl use it as the port's RTS and DTR lines."));
     const QCommandLineOption helpOption = parser.addHelpOption();
     const QCommandLineOption versionOption = parser.addVersionOption();
     parser.addOptions({
@@ -128,7 +130,7 @@ int main(int argc, char *argv[])
         {QStringLiteral("stray"), QStringLiteral("Probability that a stray 19 is sent before a byte."), QStringLiteral("P")},
         {QStringLiteral("drop"), QStringLiteral("Probability that a byte the robot sends is lost."), QStringLiteral("P")},
         {QStringLiteral("tcp"), QStringLiteral("Serve raw bytes on this TCP port instead of a pseudo-terminal (0 picks a free port)."), QStringLiteral("PORT")},
-        {QStringLiteral("rfc2217"), QStringLiteral("With --tcp: speak RFC 2217 (as ser2net in telnet mode does), so that RTS or DTR asserted pulls the robot's BRC pin low.")},
+        {QStringLiteral("rfc2217"), QStringLiteral("With --tcp: speak RFC 2217 (as ser2net in telnet mode does), so that the line the cable joins to the BRC pin (--brc-wired) pulls it low while asserted.")},
         {QStringLiteral("bind"), QStringLiteral("Address to listen on with --tcp (default 127.0.0.1)."), QStringLiteral("ADDRESS"), QStringLiteral("127.0.0.1")},
         {QStringLiteral("link"), QStringLiteral("Also make a symbolic link at PATH to the pseudo-terminal (an existing link is replaced)."), QStringLiteral("PATH")},
         {QStringLiteral("room"), QStringLiteral("The room the robot drives in: a room file (see protocol/sim/room_format.md). Default the classroom."), QStringLiteral("FILE")},
@@ -136,6 +138,8 @@ int main(int argc, char *argv[])
         {QStringLiteral("speed"), QStringLiteral("Run the robot's clock N times faster than real time (default 1), e.g. to watch it sleep."), QStringLiteral("N"), QStringLiteral("1")},
         {QStringLiteral("on-dock"), QStringLiteral("Start with the robot on its dock (charging in Passive; Safe mode will not drive there).")},
         {QStringLiteral("sleeps-while-pulsed"), QStringLiteral("Play firmware release-3.2.x: sleep after 5 minutes in Passive whatever BRC pulses come (a pulse still wakes it, except on the dock with firmware before release-3.8.2; add --firmware release-3.2.1 for its banner) (Roomba 500 and Create 2).")},
+        {QStringLiteral("brc-wired"), QStringLiteral("The cable's wake line: which adapter line reaches the robot's BRC pin, rts (default), dtr, or none (a cable without the BRC wire: no pulse wakes it). For the pseudo-terminal's control socket and RFC 2217."), QStringLiteral("LINE"), QStringLiteral("rts")},
+        {QStringLiteral("wake-time"), QStringLiteral("How long after a BRC pulse wakes it the robot listens, in ms (default 300; robots in the field take up to 2000). Bytes sent sooner are lost."), QStringLiteral("MS"), QString::number(oi::RobotProfile::kWakeMs)},
         {QStringLiteral("mode-off-by-one"), QStringLiteral("Play a Wi-Fi Roomba 600 that reports its OI mode (packet 35) one too high: Passive 2, Safe 3, Full 4.")},
         {QStringLiteral("wheel-diameter"), QStringLiteral("The real diameter of both drive wheels in mm (documents: 72). The firmware counts by 72 mm, so the encoders lie as a real robot's do: practise calibrating."), QStringLiteral("MM")},
         {QStringLiteral("left-wheel-diameter"), QStringLiteral("The real diameter of the left wheel in mm (overrides --wheel-diameter)."), QStringLiteral("MM")},
@@ -249,7 +253,18 @@ int main(int argc, char *argv[])
         robot->setFirmwareRelease(firmware.toStdString());
     if (parser.isSet(QStringLiteral("sleeps-while-pulsed")) && !profile->sleepsInPassive())
         return fail(kUsageError, QStringLiteral("--sleeps-while-pulsed: the Create never sleeps; use it with roomba500 or create2"));
-    robot->setQuirks({parser.isSet(QStringLiteral("sleeps-while-pulsed")), parser.isSet(QStringLiteral("mode-off-by-one"))});
+    const QString wired = parser.value(QStringLiteral("brc-wired"));
+    const std::optional<oi::BrcLine> brcWiredTo = oi::brcLineByName(wired.toStdString());
+    if (!brcWiredTo || *brcWiredTo == oi::BrcLine::Both)
+        return fail(kUsageError, QStringLiteral("--brc-wired: '%1' is not a line the cable can join to the BRC pin: rts, dtr or none").arg(wired.left(40)));
+    const QString wakeText = parser.value(QStringLiteral("wake-time"));
+    const int wakeMs = wakeText.toInt(&ok);
+    if (!ok || wakeMs < 0 || wakeMs > 10'000)
+        return fail(kUsageError, QStringLiteral("--wake-time: '%1' is not a time in ms from 0 to 10000").arg(wakeText.left(40)));
+    robot->setQuirks({.sleepsWhilePulsed = parser.isSet(QStringLiteral("sleeps-while-pulsed")),
+                      .reportsModeOneHigh = parser.isSet(QStringLiteral("mode-off-by-one")),
+                      .brcWiredTo = *brcWiredTo,
+                      .wakeTime = std::chrono::milliseconds(wakeMs)});
     if (parser.isSet(QStringLiteral("asleep"))) {
         const std::uint8_t startAndPower[] = {128, 133};
         robot->receive(startAndPower);

@@ -30,6 +30,7 @@ void BrcPulser::setTransport(Transport *transport)
     m_steps.clear();
     m_step.stop();
     m_keepAwake.stop();
+    m_waking = false;
     m_probed = false;
     m_mode = oi::OiMode::Passive;
 }
@@ -43,7 +44,9 @@ bool BrcPulser::wake()
 {
     if (!queuePulses(1, kWakePulseMs, 0, kWakeMs))
         return false;
-    m_steps.push_back({Step::Awake, 0});
+    m_steps.push_back({Step::Awake, kSlowWakeMs - kWakeMs});
+    m_steps.push_back({Step::WakeTimeOver, 0});
+    m_waking = true;
     return true;
 }
 
@@ -93,6 +96,10 @@ void BrcPulser::runNextStep()
         m_steps.pop_front();
         if (step.kind == Step::Awake) {
             emit awake();
+        } else if (step.kind == Step::WakeTimeOver) {
+            m_waking = std::any_of(m_steps.begin(), m_steps.end(),
+                                   [](const Step &s) { return s.kind == Step::WakeTimeOver; });
+            emit wakeTimeOver();
         } else {
             m_transport->setBrcLow(step.kind == Step::Low);
             if (step.kind == Step::High)

@@ -26,8 +26,10 @@ public:
     static constexpr int kWakePulseMs = 20;
     static constexpr int kBaudPulseMs = 100; // the documents: 50 to 500 ms
     static constexpr int kBaudGapMs = 100;
-    // After a wake pulse, the robot's time to wake (ERRATA 17).
+    // After a wake pulse, the robot's time to wake (ERRATA 17), and the
+    // longest time a robot in the field takes.
     static constexpr int kWakeMs = oi::RobotProfile::kWakeMs;
+    static constexpr int kSlowWakeMs = oi::RobotProfile::kSlowWakeMs;
 
     explicit BrcPulser(QObject *parent = nullptr);
     explicit BrcPulser(Clock &clock, QObject *parent = nullptr);
@@ -37,9 +39,13 @@ public:
     // False (and nothing queued) where the transport cannot reach the pin.
     bool canPulse() const;
 
-    // A wake pulse; awake() follows once the robot has had time to wake.
-    // False (and no awake()) where the pin is out of reach.
+    // A wake pulse; awake() follows once the robot has had time to wake,
+    // and wakeTimeOver() once even a slow robot has. No other pulse goes out
+    // in between, so no baud pulse reaches a robot still waking. False (and
+    // neither signal) where the pin is out of reach.
     bool wake();
+    // Between a wake pulse and its wakeTimeOver().
+    bool waking() const { return m_waking; }
     bool pulseForBaud19200();
     // Every `periodMs` in Passive (or where the mode is not known), a pulse
     // of up to a second; 0 turns it off.
@@ -51,10 +57,11 @@ public:
 signals:
     void pulsed(); // a pulse ended
     void awake();  // kWakeMs after a wake pulse ended: the robot listens
+    void wakeTimeOver(); // kSlowWakeMs after it: a slow robot listens too
 
 private:
     struct Step {
-        enum Kind { Low, High, Awake } kind;
+        enum Kind { Low, High, Awake, WakeTimeOver } kind;
         int holdMs;
     };
     bool queuePulses(int count, int widthMs, int gapMs, int holdAfterMs = 0);
@@ -68,6 +75,7 @@ private:
     oi::OiMode m_mode = oi::OiMode::Passive;
     bool m_probed = false;
     bool m_canPulse = false;
+    bool m_waking = false;
 };
 
 } // namespace oilink

@@ -18,6 +18,14 @@ constexpr int kAfterBaudPulsesMs = 200;
 // it did as the wake pulse ended, BrcPulser::kWakeMs before awake().
 constexpr int kBaudPulsesAfterAwakeMs = oi::RobotProfile::kBaudPulsesAfterWakeMs - BrcPulser::kWakeMs;
 constexpr int kRoombaGroup = 101;
+// From awake() until even a slow robot listens.
+constexpr int kSlowWakeAfterAwakeMs = BrcPulser::kSlowWakeMs - BrcPulser::kWakeMs;
+
+QString lineWords(BrcLine line)
+{
+    const std::string_view words = oi::brcLineWords(line);
+    return QString::fromUtf8(words.data(), qsizetype(words.size()));
+}
 
 QByteArray bytes(std::initializer_list<std::uint8_t> values) { return ProfileProbe::bytesOf(values); }
 
@@ -36,6 +44,8 @@ ConnectionDoctor::ConnectionDoctor(Transport &transport, std::optional<oi::Profi
     qRegisterMetaType<oilink::ConnectionDoctor::Report>();
     connect(m_pulser, &BrcPulser::awake, this, [this] {
         m_awakeMs = m_clock.nowMs();
+        if (!m_onOtherLine)
+            m_wokeMs = m_awakeMs;
         afterWakePulse(0);
     });
     m_timer.setSingleShot(true);
@@ -63,6 +73,8 @@ void ConnectionDoctor::start()
     m_running = true;
     m_report = {};
     m_garbledAt.clear();
+    m_wakeLine = m_transport.brcLine();
+    m_onOtherLine = false;
     const int asked = m_askedBaud > 0 ? m_askedBaud : m_askedProfile ? oi::profile(*m_askedProfile).defaultBaud : 0;
     m_bauds = candidateBauds(asked);
     m_hasBaud = m_transport.setBaud(m_bauds.front());
@@ -171,12 +183,15 @@ void ConnectionDoctor::afterSilence()
                         "cannot be woken over this connection.)"));
         return;
     }
-    step(tr("Pulsed the BRC pin to wake the robot."));
+    step(tr("Pulsed the BRC pin on the wake line (%1) to wake the robot.").arg(lineWords(m_wakeLine)));
     // afterWakePulse() follows BrcPulser::awake().
 }
 
 void ConnectionDoctor::afterWakePulse(qsizetype index)
 {
+    const qint64 sinceAwake = m_clock.nowMs() - m_awakeMs;
+    if (index == 0)
+        m_roundAfterWakeTime = sinceAwake >= kSlowWakeAfterAwakeMs;
     if (index < m_bauds.size()) {
         const int baud = m_bauds[index];
         if (baud > 0)
@@ -184,19 +199,47 @@ void ConnectionDoctor::afterWakePulse(qsizetype index)
         askMode(true, [this, index, baud](bool ok) {
             if (ok) {
                 step(tr("At %1 it answers after the pulse.").arg(baudName(baud)));
-                answered(baud, Finding::WokeAfterPulse);
+                answered(baud, m_onOtherLine ? Finding::WokeOnOtherLine : Finding::WokeAfterPulse);
             } else {
                 afterWakePulse(index + 1);
             }
         });
         return;
     }
+    if (!m_roundAfterWakeTime) {
+        // Some robots listen only up to 2 s after the pulse: each baud once
+        // more before anything is concluded or the baud is touched.
+        step(tr("Silent so far; a slow robot takes up to 2 s to wake: asking again once it has had that time."));
+        after(int(std::max<qint64>(0, kSlowWakeAfterAwakeMs - sinceAwake)), [this] { afterWakePulse(0); });
+        return;
+    }
+    if (wakeOnOtherLine())
+        return;
+    // The three baud pulses go where the link pulses.
+    m_transport.setBrcLine(m_wakeLine, m_transport.brcAssertedIsLow());
     if (!m_hasBaud) {
         concludeSilent();
         return;
     }
-    const qint64 untilBaudPulses = std::max<qint64>(0, kBaudPulsesAfterAwakeMs - (m_clock.nowMs() - m_awakeMs));
+    const qint64 untilBaudPulses = std::max<qint64>(0, kBaudPulsesAfterAwakeMs - (m_clock.nowMs() - m_wokeMs));
     after(int(untilBaudPulses), [this] { pulseForBaud19200(); });
+}
+
+// Silent after a pulse on the wake line: many cables carry the BRC pin on
+// the other one.
+bool ConnectionDoctor::wakeOnOtherLine()
+{
+    const BrcLine other = m_wakeLine == BrcLine::Rts ? BrcLine::Dtr
+                          : m_wakeLine == BrcLine::Dtr ? BrcLine::Rts
+                                                       : BrcLine::None;
+    if (m_onOtherLine || other == BrcLine::None)
+        return false;
+    m_onOtherLine = true;
+    m_transport.setBrcLine(other, m_transport.brcAssertedIsLow());
+    if (!m_pulser->wake())
+        return false;
+    step(tr("Still silent: pulsed the other line (%1) instead.").arg(lineWords(other)));
+    return true; // afterWakePulse() follows BrcPulser::awake()
 }
 
 void ConnectionDoctor::pulseForBaud19200()
@@ -238,9 +281,10 @@ void ConnectionDoctor::concludeSilent()
         return;
     }
     conclude(Finding::AsleepDidNotWake,
-             tr("Still silent after BRC pulses: the robot is off or unplugged, or asleep on its dock "
-                "with firmware before release-3.8.2 / release-stm32-3.7.7, which does not wake by BRC "
-                "there (lift it off the dock, or press Clean)."));
+             tr("No line wakes it: still silent after BRC pulses on RTS and on DTR. The cable may not carry "
+                "the BRC pin (press Clean to wake the robot), or the robot is off or unplugged, or asleep on "
+                "its dock with firmware before release-3.8.2 / release-stm32-3.7.7, which does not wake by "
+                "BRC there (lift it off the dock, or press Clean)."));
 }
 
 void ConnectionDoctor::answered(int baud, Finding cause)
@@ -254,7 +298,15 @@ void ConnectionDoctor::answered(int baud, Finding cause)
         step(roomba ? tr("It answers Sensors 101: a Roomba 500 or a Create 2 (they answer alike).")
                     : tr("It has no packet group 101: a Create."));
         const int askedBaud = m_askedBaud > 0 ? m_askedBaud : m_askedProfile ? oi::profile(*m_askedProfile).defaultBaud : 0;
-        if (cause == Finding::WokeAfterPulse) {
+        if (cause == Finding::WokeOnOtherLine) {
+            const BrcLine line = m_transport.brcLine();
+            m_report.wakeLine = line;
+            const std::string_view name = oi::brcLineName(line);
+            conclude(cause, tr("The wake pulse works on %1, not %2: the cable carries the robot's BRC pin on %1. "
+                               "Set the wake line to %1 (--brc-line %3).")
+                                .arg(lineWords(line), lineWords(m_wakeLine),
+                                     QString::fromUtf8(name.data(), qsizetype(name.size()))));
+        } else if (cause == Finding::WokeAfterPulse) {
             conclude(cause, baud > 0 ? tr("The robot was asleep; a BRC pulse woke it, and it talks at %1 baud.").arg(baud)
                                      : tr("The robot was asleep; a BRC pulse woke it."));
         } else if (cause == Finding::Baud19200AfterPulses) {
@@ -284,6 +336,9 @@ void ConnectionDoctor::conclude(Finding finding, const QString &summary)
     m_onTimer = nullptr;
     m_listening = false;
     m_pulser->setTransport(nullptr);
+    // The link pulses on from here: on the line found to work, else on its own.
+    if (finding != Finding::WokeOnOtherLine)
+        m_transport.setBrcLine(m_wakeLine, m_transport.brcAssertedIsLow());
     m_report.finding = finding;
     m_report.summary = summary;
     emit finished(m_report);

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "link_clock.h"
+#include "link_settings.h"
 #include "link_status.h" // the metatype of oi::ProfileId
 
 #include "robot_profile.h"
@@ -25,9 +26,11 @@ class Transport;
 //     its own has one pass), Query List 35, 7 without Start, then after
 //     Start: an answer names the baud; bytes that make no sense mean a
 //     wrong baud;
-//  2. silent everywhere: a BRC pulse (a sleeping robot wakes), each baud
-//     again once it has had time to wake, then, 2 s after it woke (the
-//     documents), the three pulses for 19200 baud;
+//  2. silent everywhere: a BRC pulse on the wake line (a sleeping robot
+//     wakes), each baud again once it has had time to wake and again once
+//     even a slow robot has (2 s); still silent, the same on the other line
+//     (RTS for DTR and the other way round); then, 2 s after it woke (the
+//     documents), the three pulses for 19200 baud on the wake line;
 //  3. once it answers, Sensors 101 tells a Create from a Roomba 500 /
 //     Create 2, which answer alike: which of those two only the user knows.
 class ConnectionDoctor : public QObject {
@@ -41,6 +44,7 @@ public:
         GarbledAtEveryBaud, // bytes, but no baud makes sense of them
         Baud19200AfterPulses, // silent until the three BRC pulses, then talks at 19200
         WokeAfterPulse,     // was asleep; a BRC pulse woke it
+        WokeOnOtherLine,    // was asleep; a pulse on the other line than the wake line woke it
         OtherProfile,       // answers as another robot than the one asked for
         RoombaOrCreate2,    // a Roomba 500 or a Create 2: ask the user which
     };
@@ -52,6 +56,7 @@ public:
         QStringList steps;      // what was tried and what came of it
         int baud = 0;           // where it answered; 0 where the transport has no baud or nothing answered
         std::optional<oi::ProfileId> profile; // Create 1 or Create 2 (the Roomba family) as found
+        std::optional<BrcLine> wakeLine;      // WokeOnOtherLine: the line that woke it
     };
 
     // `profile` and `baud` as the link was set up (nullopt / 0 = Auto).
@@ -79,6 +84,7 @@ private:
     void askMode(bool withStart, std::function<void(bool answered)> then);
     void afterSilence();
     void afterWakePulse(qsizetype index);
+    bool wakeOnOtherLine();
     void pulseForBaud19200();
     void answered(int baud, Finding cause);
     void conclude(Finding finding, const QString &summary);
@@ -96,7 +102,11 @@ private:
     BrcPulser *m_pulser;
     Clock &m_clock;
     ClockTimer m_timer;
-    qint64 m_awakeMs = 0; // when the woken robot listened
+    qint64 m_wokeMs = 0;  // when the first woken robot listened
+    qint64 m_awakeMs = 0; // when the robot woken on this line listened
+    bool m_roundAfterWakeTime = false; // every baud asked after even a slow robot listens
+    BrcLine m_wakeLine = BrcLine::Rts; // as the link was set up
+    bool m_onOtherLine = false;
     QByteArray m_received;
     qsizetype m_expected = 0;
     qsizetype m_heard = 0; // bytes heard at the baud being tried

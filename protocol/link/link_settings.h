@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "brc_line.h"
 #include "odometry.h"
 #include "robot_profile.h"
 
@@ -23,8 +24,8 @@ enum class TransportKind : std::uint8_t {
     Network, // a robot beside a roomba-bridge, through an MQTT broker (docs/mqtt.md)
 };
 
-// Which modem line of a serial adapter is wired to the robot's BRC pin.
-enum class BrcLine : std::uint8_t { None, Rts, Dtr };
+// Which modem line(s) of a serial adapter reach the robot's BRC pin (brc_line.h).
+using oi::BrcLine;
 
 // Everything needed to reach one robot. Plain value; crosses threads.
 struct LinkSettings {
@@ -51,6 +52,11 @@ struct LinkSettings {
     // one too high.
     bool virtualSleepsWhilePulsed = false;
     bool virtualModeOneHigh = false;
+    // The in-process virtual robot's cable: the adapter line joined to its
+    // BRC pin (Rts, Dtr or None), and how long after a wake pulse it
+    // listens (slow robots in the field take up to 2 s).
+    BrcLine virtualBrcWiredTo = BrcLine::Rts;
+    int virtualWakeMs = oi::RobotProfile::kWakeMs;
     // This robot is known to report its mode one too high (learned earlier
     // and remembered with it): the link corrects packet 35 from the first
     // frame instead of waiting to see it after a Start.
@@ -60,8 +66,9 @@ struct LinkSettings {
     // as the test fixtures that play a robot already in Safe report Safe
     // right after Start too.
     bool modeCheckAfterStart = false;
-    // The BRC pin: a serial adapter's line, and whether asserting that line
-    // pulls BRC low (as on FTDI-style TTL cables) or lets it go.
+    // The wake line: the serial adapter's line(s) pulsed for the BRC pin
+    // (None: the cable has none, and no pulse is tried), and whether
+    // asserting it pulls BRC low (as on FTDI-style TTL cables) or lets it go.
     BrcLine brcLine = BrcLine::Rts;
     bool brcAssertedIsLow = true;
     // In Passive, a BRC pulse this often keeps a Roomba 500 or Create 2

@@ -27,7 +27,7 @@ QString brcControlPath(const QString &ptyPath)
 
 PtyBrcChannel::PtyBrcChannel(const QString &ptyPath) : m_path(brcControlPath(ptyPath)) {}
 
-bool PtyBrcChannel::setLow(bool low)
+bool PtyBrcChannel::setLines(oi::BrcLine lines, bool asserted)
 {
     if (m_socket.state() != QLocalSocket::ConnectedState) {
         m_socket.abort();
@@ -35,7 +35,13 @@ bool PtyBrcChannel::setLow(bool low)
         if (!m_socket.waitForConnected(kConnectMs))
             return false;
     }
-    if (m_socket.write(low ? "L" : "H", 1) != 1)
+    // One byte per line: 'R' or 'D' asserted, 'r' or 'd' released.
+    QByteArray change;
+    if (oi::movesRts(lines))
+        change += asserted ? 'R' : 'r';
+    if (oi::movesDtr(lines))
+        change += asserted ? 'D' : 'd';
+    if (m_socket.write(change) != change.size())
         return false;
     return m_socket.waitForBytesWritten(kWriteMs);
 }

@@ -84,6 +84,7 @@ RobotLink::RobotLink(Clock &clock, QObject *parent)
     registerLinkMetaTypes();
     m_brc = new BrcPulser(clock, this);
     connect(m_brc, &BrcPulser::awake, this, &RobotLink::onRobotAwake);
+    connect(m_brc, &BrcPulser::wakeTimeOver, this, &RobotLink::onWakeTimeOver);
     m_parser.setSnapshotHandler([this](const oi::SensorSnapshot &s, oi::FrameKind kind) {
         const auto dispatch = [this, kind](const oi::SensorSnapshot &frame) {
             if (kind == oi::FrameKind::Stream)
@@ -346,6 +347,7 @@ void RobotLink::startProbe()
         useProfile();
         return;
     }
+    m_probeStartedWaking = m_brc->waking();
     if (!m_probe) {
         // The baud asked for, or the one the connection doctor found.
         const QList<int> bauds = m_baud > 0 ? QList<int>{m_baud} : ProfileProbe::defaultBauds();
@@ -374,6 +376,13 @@ void RobotLink::startProbe()
 
 void RobotLink::onProbeFailed()
 {
+    if (std::exchange(m_probeStartedWaking, false)) {
+        // Some questions went to a robot that may still have been waking
+        // (slow ones take up to 2 s): ask again once it has had its time.
+        if (!m_brc->waking())
+            m_probeRetry.start(0); // else onWakeTimeOver() does
+        return;
+    }
     reportError(noDataMessage());
     // The robot may be switched on later; ask again, less often each time.
     m_probeRetry.start(m_rearmMs);
@@ -391,18 +400,21 @@ QString RobotLink::stoppedMessage() const
     if (!m_wokeStream)
         return tr("%1: the robot stopped sending: it is probably asleep (a %2 sleeps after 5 minutes in Passive), "
                   "and no pulse can wake it here: %3. Press Clean to wake it; the link streams again once it "
-                  "is awake. To wake it from here, wire its BRC pin to the adapter's RTS or DTR line.")
+                  "is awake. To wake it from here, wire its BRC pin to the adapter's RTS or DTR line and set that "
+                  "wake line.")
             .arg(where, robot, m_transport ? m_transport->brcUnavailable() : tr("the port is closed"));
     if (m_lastOnDock.value_or(false))
         return tr("%1: the robot is asleep on its dock, and a BRC pulse did not wake it: firmware older than "
                   "release-3.8.2 (release-stm32-3.7.7) is not woken by a pulse on the dock. Press Clean or lift "
                   "it off the dock; the link streams again once it is awake.")
             .arg(where);
-    return tr("%1: the robot stopped sending and did not wake when its BRC pin was pulsed: it is asleep and "
-              "the pulse does not reach it, or the cable has no BRC wire (check the link's BRC line, RTS or "
-              "DTR, and its polarity). On its dock, firmware older than release-3.8.2 is not woken by a "
-              "pulse: press Clean or lift it off the dock; the link streams again once it is awake.")
-        .arg(where);
+    const std::string_view line = oi::brcLineWords(m_settings.brcLine);
+    return tr("%1: the robot stopped sending and did not wake when its wake line (%2) was pulsed: it is asleep "
+              "and the pulse does not reach it. The cable may carry the BRC pin on the other line (set the wake "
+              "line to DTR, RTS or both; the connection check tries each) or not at all. On its dock, firmware "
+              "older than release-3.8.2 is not woken by a pulse: press Clean or lift it off the dock; the link "
+              "streams again once it is awake.")
+        .arg(where, fromStd(line));
 }
 
 QString RobotLink::noDataMessage() const
@@ -500,6 +512,21 @@ void RobotLink::onRobotAwake()
     rearmStream();
 }
 
+void RobotLink::onWakeTimeOver()
+{
+    if (m_probe && !m_probe->isRunning() && !m_probeRetry.isActive()) {
+        startProbe(); // it failed while the robot may still have been waking
+        return;
+    }
+    if (!m_streamRequested || m_state == LinkState::Streaming)
+        return;
+    // Start and Stream went when a robot that wakes as the documents imply
+    // listens; a slow one may have missed them.
+    if (m_queryPhase == QueryPhase::None)
+        rearmStream();
+    m_noData.start(ProfileProbe::kReplyTimeoutMs); // then silence means something
+}
+
 void RobotLink::onBytes(const QByteArray &bytes)
 {
     m_totals.bytesReceived += static_cast<quint64>(bytes.size());
@@ -582,6 +609,10 @@ void RobotLink::onWatchdog()
 void RobotLink::onNoData()
 {
     if (!m_streamRequested)
+        return;
+    // A robot woken by a pulse may take up to kSlowWakeMs to listen: nothing
+    // is concluded before; onWakeTimeOver() asks again and restarts this.
+    if (m_brc->waking())
         return;
     if (m_queryPhase != QueryPhase::None) {
         m_noData.start(m_rearmMs);

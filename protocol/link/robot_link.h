@@ -182,6 +182,8 @@ private:
     void onWatchdog();
     void onNoData();
     void onRobotAwake();
+    // Even a slow robot listens now: ask again for what it may have missed.
+    void onWakeTimeOver();
     // A stream that ran has stopped: a robot that sleeps gets a wake pulse,
     // and Start and Stream once it has had time to wake. False where no
     // pulse can go (the Create, or the pin out of reach).
@@ -230,6 +232,7 @@ private:
     bool m_wakingStream = false; // a wake pulse for a stream that stopped; Start and Stream follow
     bool m_wokeStream = false;   // the link pulsed since the stream stopped
     bool m_rearmedSinceStop = false; // Start and Stream went since the stream stopped
+    bool m_probeStartedWaking = false; // the probe asked a robot that may still have been waking
     std::optional<bool> m_lastOnDock; // packet 34's home base, as last streamed
     oi::ModeReading m_modeReading;
 

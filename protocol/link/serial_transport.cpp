@@ -94,31 +94,29 @@ bool SerialTransport::setBaud(int baud)
     return !m_port.isOpen() || m_port.setBaudRate(baud);
 }
 
-void SerialTransport::setBrcLine(BrcLine line, bool assertedIsLow)
-{
-    m_brcLine = line;
-    m_brcAssertedIsLow = assertedIsLow;
-}
-
 bool SerialTransport::setBrcLow(bool low)
 {
-    if (!m_port.isOpen() || m_brcLine == BrcLine::None)
+    const BrcLine line = brcLine();
+    if (!m_port.isOpen() || line == BrcLine::None)
         return false;
-    const bool asserted = low == m_brcAssertedIsLow;
-    const bool set = m_brcLine == BrcLine::Rts ? m_port.setRequestToSend(asserted)
-                                               : m_port.setDataTerminalReady(asserted);
+    const bool asserted = brcAsserted(low);
+    bool set = true;
+    if (oi::movesRts(line))
+        set = m_port.setRequestToSend(asserted) && set;
+    if (oi::movesDtr(line))
+        set = m_port.setDataTerminalReady(asserted) && set;
     m_port.clearError();
     if (set)
         return true;
     if (!m_ptyBrc)
         m_ptyBrc = std::make_unique<PtyBrcChannel>(m_path);
-    return m_ptyBrc->setLow(low);
+    return m_ptyBrc->setLines(line, asserted);
 }
 
 QString SerialTransport::brcUnavailable() const
 {
-    if (m_brcLine == BrcLine::None)
-        return tr("%1: no line is set for the BRC pin (RTS or DTR)").arg(m_path);
+    if (const QString none = noWakeLine(); !none.isEmpty())
+        return none;
     return tr("%1: the port has no RTS or DTR line to pulse the BRC pin with").arg(m_path);
 }
 

@@ -25,7 +25,6 @@ public:
     bool write(const QByteArray &bytes) override;
     void flush(int msecs) override;
     bool setBaud(int baud) override;
-    void setBrcLine(BrcLine line, bool assertedIsLow);
     bool setBrcLow(bool low) override;
     QString brcUnavailable() const override;
     QString describe() const override { return m_path; }
@@ -39,8 +38,6 @@ private:
 
     QString m_path;
     int m_baud;
-    BrcLine m_brcLine = BrcLine::Rts;
-    bool m_brcAssertedIsLow = true;
     // A pseudo-terminal has no modem lines: roomba-sim takes the pin's
     // level through a control socket instead.
     std::unique_ptr<PtyBrcChannel> m_ptyBrc;

@@ -39,7 +39,7 @@ QString TcpTransport::describe() const
 QString TcpTransport::brcUnavailable() const
 {
     if (m_rfc2217)
-        return tr("%1: no line is set for the BRC pin (RTS or DTR)").arg(describe());
+        return Transport::brcUnavailable(); // the wake line is none, or not connected
     return tr("%1: raw TCP carries no modem lines, so it cannot wake the robot or keep it awake")
         .arg(describe());
 }
@@ -73,13 +73,6 @@ QByteArray toQt(const rfc2217::Bytes &bytes)
 }
 } // namespace
 
-void TcpTransport::setRfc2217(bool on, BrcLine line, bool assertedIsLow)
-{
-    m_rfc2217 = on;
-    m_brcLine = line;
-    m_brcAssertedIsLow = assertedIsLow;
-}
-
 bool TcpTransport::write(const QByteArray &bytes)
 {
     if (!m_connected)
@@ -93,13 +86,16 @@ bool TcpTransport::write(const QByteArray &bytes)
 
 bool TcpTransport::setBrcLow(bool low)
 {
-    if (!m_connected || !m_rfc2217 || m_brcLine == BrcLine::None)
+    const BrcLine line = brcLine();
+    if (!m_connected || !m_rfc2217 || line == BrcLine::None)
         return false;
-    const bool asserted = low == m_brcAssertedIsLow;
-    const std::uint8_t value = m_brcLine == BrcLine::Rts ? (asserted ? rfc2217::kRtsOn : rfc2217::kRtsOff)
-                                                         : (asserted ? rfc2217::kDtrOn : rfc2217::kDtrOff);
-    const QByteArray command = toQt(rfc2217::setControl(value));
-    return m_socket.write(command) == command.size();
+    const bool asserted = brcAsserted(low);
+    QByteArray commands;
+    if (oi::movesRts(line))
+        commands += toQt(rfc2217::setControl(asserted ? rfc2217::kRtsOn : rfc2217::kRtsOff));
+    if (oi::movesDtr(line))
+        commands += toQt(rfc2217::setControl(asserted ? rfc2217::kDtrOn : rfc2217::kDtrOff));
+    return m_socket.write(commands) == commands.size();
 }
 
 bool TcpTransport::setBaud(int baud)

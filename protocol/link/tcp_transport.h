@@ -33,8 +33,8 @@ public:
     // Over RFC 2217 the bridge's serial side takes the rate (SET-BAUDRATE);
     // raw TCP has no rate of its own.
     bool setBaud(int baud) override;
-    // Before open(): speak RFC 2217, with BRC on this line of the bridge.
-    void setRfc2217(bool on, BrcLine line = BrcLine::Rts, bool assertedIsLow = true);
+    // Before open(): speak RFC 2217, with BRC on the wake line of the bridge.
+    void setRfc2217(bool on) { m_rfc2217 = on; }
 
 private:
     void onConnected();
@@ -52,8 +52,6 @@ private:
     bool m_connected = false;
     QByteArray m_lastReceived; // a bridge may say why it hangs up
     bool m_rfc2217 = false;
-    BrcLine m_brcLine = BrcLine::Rts;
-    bool m_brcAssertedIsLow = true;
     std::unique_ptr<rfc2217::Decoder> m_telnet;
 };
 

@@ -36,7 +36,15 @@ bool Transport::robotKnownAwake() const
 
 QString Transport::brcUnavailable() const
 {
-    return tr("%1 cannot reach the robot's BRC pin").arg(describe());
+    const QString none = noWakeLine();
+    return none.isEmpty() ? tr("%1 cannot reach the robot's BRC pin").arg(describe()) : none;
+}
+
+QString Transport::noWakeLine() const
+{
+    if (m_brcLine != BrcLine::None)
+        return {};
+    return tr("%1: the wake line is set to none, so the cable is taken to have no BRC wire").arg(describe());
 }
 
 Transport *createTransport(const LinkSettings &settings, int baud, QObject *parent)
@@ -51,7 +59,8 @@ Transport *createTransport(const LinkSettings &settings, int baud, QObject *pare
     case TransportKind::Tcp:
     {
         auto *tcp = new TcpTransport(settings.host, settings.tcpPort, parent);
-        tcp->setRfc2217(settings.tcpRfc2217, settings.brcLine, settings.brcAssertedIsLow);
+        tcp->setRfc2217(settings.tcpRfc2217);
+        tcp->setBrcLine(settings.brcLine, settings.brcAssertedIsLow);
         return tcp;
     }
     case TransportKind::Replay:

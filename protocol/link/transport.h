@@ -45,10 +45,19 @@ public:
     // time); -1 for a live one, whose bytes the link stamps as they arrive.
     virtual qint64 readTimeUs() const;
     // The robot's BRC pin (Baud Rate Change, also its wake-up line): pulled
-    // low or let go. False where this transport cannot reach it; then
-    // brcUnavailable() says why.
+    // low or let go, on the wake line. False where this transport cannot
+    // reach it (or the wake line is None); then brcUnavailable() says why.
     virtual bool setBrcLow(bool low);
     virtual QString brcUnavailable() const;
+    // The wake line: which modem line(s) setBrcLow() moves, and whether
+    // asserting them pulls BRC low (FTDI-style cables) or lets it go.
+    void setBrcLine(BrcLine line, bool assertedIsLow = true)
+    {
+        m_brcLine = line;
+        m_brcAssertedIsLow = assertedIsLow;
+    }
+    BrcLine brcLine() const { return m_brcLine; }
+    bool brcAssertedIsLow() const { return m_brcAssertedIsLow; }
     // True where the transport sees the robot itself and it is awake (the
     // in-process virtual robot): no wake pulse to send and wait for.
     virtual bool robotKnownAwake() const;
@@ -61,11 +70,21 @@ public:
     // virtual robot, in its room's coordinates); nullopt for a real robot.
     virtual std::optional<oi::Pose> truePose() const { return std::nullopt; }
 
+protected:
+    // The level of the wake line's modem line(s) for BRC `low`.
+    bool brcAsserted(bool low) const { return low == m_brcAssertedIsLow; }
+    // Why BRC is out of reach where the wake line is None, or empty.
+    QString noWakeLine() const;
+
 signals:
     void opened();
     void bytesReceived(const QByteArray &bytes);
     void errorOccurred(const QString &message);
     void closed();
+
+private:
+    BrcLine m_brcLine = BrcLine::Rts;
+    bool m_brcAssertedIsLow = true;
 };
 
 // The link's own transport for the settings: a serial port opened at `baud`,

@@ -71,6 +71,10 @@ public:
     // ERRATA 17: a robot woken by a BRC pulse listens this long after the
     // pulse has ended (the documents give no figure).
     static constexpr int kWakeMs = 300;
+    // Robots in the field take longer: drivers wait 0.5 to 2 s after the
+    // pulse. Nothing is concluded about a woken robot (silent, or at
+    // another baud) before this, and its baud is never changed sooner.
+    static constexpr int kSlowWakeMs = 2000;
     // The documents' "Serial Port Settings": the three BRC pulses for 19200
     // baud come 2 s after the robot was switched on or woke.
     static constexpr int kBaudPulsesAfterWakeMs = 2000;

@@ -17,8 +17,10 @@ BrcControlServer::BrcControlServer(RealTimeRobot &robot, QObject *parent)
         while (QLocalSocket *client = m_server->nextPendingConnection()) {
             connect(client, &QLocalSocket::readyRead, this, [this, client] {
                 for (char c : client->readAll()) {
-                    if (c == 'L' || c == 'H')
-                        m_robot.setBrcLow(c == 'L');
+                    if (c == 'R' || c == 'r')
+                        m_robot.setModemLine(oi::BrcLine::Rts, c == 'R');
+                    else if (c == 'D' || c == 'd')
+                        m_robot.setModemLine(oi::BrcLine::Dtr, c == 'D');
                 }
             });
             connect(client, &QLocalSocket::disconnected, client, &QObject::deleteLater);

@@ -10,9 +10,10 @@ namespace sim {
 
 class RealTimeRobot;
 
-// The BRC pin of a robot behind a pseudo-terminal, which has no modem lines:
-// a local socket beside it (brcControlPath()) takes one byte per change,
-// 'L' (pulled low) or 'H' (let go).
+// The modem lines of a robot behind a pseudo-terminal, which has none: a
+// local socket beside it (brcControlPath()) takes one byte per change, 'R'
+// or 'D' (RTS or DTR asserted), 'r' or 'd' (released). The robot's cable
+// decides which of them reaches its BRC pin (VirtualRobot::Quirks::brcWiredTo).
 class BrcControlServer : public QObject {
     Q_OBJECT
 public:

@@ -59,6 +59,12 @@ void RealTimeRobot::setBrcLow(bool low)
     m_robot.setBrcLow(low);
 }
 
+void RealTimeRobot::setModemLine(oi::BrcLine lines, bool asserted)
+{
+    tick();
+    m_robot.setModemLine(lines, asserted);
+}
+
 void RealTimeRobot::tick()
 {
     if (m_clock.isValid()) {

@@ -31,6 +31,9 @@ public slots:
     void write(const QByteArray &bytes);
     // The BRC pin's level, at the moment it really changed.
     void setBrcLow(bool low);
+    // An adapter's modem line(s), at the moment they changed
+    // (VirtualRobot::setModemLine: the robot's cable decides what reaches BRC).
+    void setModemLine(oi::BrcLine lines, bool asserted);
 
 public:
     // The robot's clock runs this many times faster than the real one

@@ -101,10 +101,11 @@ void TcpRobotServer::comPortControl(QTcpSocket *socket, std::uint8_t command, co
 {
     rfc2217::Bytes answer;
     if (command == rfc2217::kSetControl && value.size() == 1) {
-        if (value[0] == rfc2217::kRtsOn || value[0] == rfc2217::kDtrOn)
-            m_robot.setBrcLow(true);
-        else if (value[0] == rfc2217::kRtsOff || value[0] == rfc2217::kDtrOff)
-            m_robot.setBrcLow(false);
+        const std::uint8_t v = value[0];
+        if (v == rfc2217::kRtsOn || v == rfc2217::kRtsOff)
+            m_robot.setModemLine(oi::BrcLine::Rts, v == rfc2217::kRtsOn);
+        else if (v == rfc2217::kDtrOn || v == rfc2217::kDtrOff)
+            m_robot.setModemLine(oi::BrcLine::Dtr, v == rfc2217::kDtrOn);
         answer = rfc2217::setControl(value[0], rfc2217::kSetControl + rfc2217::kServerOffset);
     } else if (command == rfc2217::kSetBaudRate) {
         // 0 asks for the rate; anything else sets it.

@@ -40,8 +40,9 @@ public:
     bool clientConnected() const { return !m_client.isNull(); }
 
     RealTimeRobot &robot() { return m_robot; }
-    // Speak RFC 2217 instead of raw bytes (before listen()): RTS or DTR
-    // asserted pulls the robot's BRC pin low, as on an FTDI cable.
+    // Speak RFC 2217 instead of raw bytes (before listen()): the bridge's
+    // RTS or DTR line, whichever the robot's cable joins to its BRC pin
+    // (VirtualRobot::Quirks::brcWiredTo), pulls it low when asserted.
     void setRfc2217(bool on) { m_rfc2217 = on; }
     // The rate of the bridge's serial side now, and the one it is set to
     // again for each connection.

@@ -33,7 +33,6 @@ constexpr Microseconds kBaudSettle = 100ms;
 constexpr Microseconds kStartBeep = 125ms;
 constexpr Microseconds kStopSong = 1s;
 constexpr Microseconds kSleepAfter = std::chrono::seconds(oi::RobotProfile::kPassiveSleepSeconds);
-constexpr Microseconds kWake = std::chrono::milliseconds(oi::RobotProfile::kWakeMs);
 constexpr long long kWeekMicros = 7LL * 24 * 60 * 60 * 1'000'000;
 
 constexpr double kPi = 3.14159265358979323846;
@@ -345,7 +344,7 @@ struct VirtualRobot::State {
             } else if (waking) {
                 asleep = waking = false;
                 mode = OiMode::Off;
-                listensFrom = now + kWake;
+                listensFrom = now + quirks.wakeTime;
                 brc.wokeAt(now);
                 lastActivity = now;
             }
@@ -1160,6 +1159,13 @@ oi::OiMode VirtualRobot::mode() const { return m_state->mode; }
 bool VirtualRobot::asleep() const { return m_state->asleep; }
 
 void VirtualRobot::setBrcLow(bool low) { m_state->setBrcLow(low); }
+
+void VirtualRobot::setModemLine(oi::BrcLine lines, bool asserted)
+{
+    const oi::BrcLine wired = m_state->quirks.brcWiredTo;
+    if ((wired == oi::BrcLine::Rts && oi::movesRts(lines)) || (wired == oi::BrcLine::Dtr && oi::movesDtr(lines)))
+        m_state->setBrcLow(asserted);
+}
 
 void VirtualRobot::setFirmwareRelease(std::string release)
 {

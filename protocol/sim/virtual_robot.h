@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "brc_line.h"
 #include "odometry.h"
 #include "result.h"
 #include "room.h"
@@ -90,11 +91,16 @@ public:
     // The Baud Rate Change pin: low while `low`. A pulse wakes a sleeping
     // robot as it ends (into Off mode, waiting for Start), except on its dock
     // before release-3.8.2 / release-stm32-3.7.7; bytes sent before the pulse
-    // ended and RobotProfile::kWakeMs after it are lost. Awake, a pulse in
+    // ended and Quirks::wakeTime after it are lost. Awake, a pulse in
     // Passive restarts the count to sleep. Three pulses of 50-500 ms, from
     // 2 s after waking (or power-on), set 19200 baud. The Create shows the
     // pin in packet 32, active low.
     void setBrcLow(bool low);
+    // A serial adapter's RTS or DTR line (or both) asserted or released: it
+    // reaches the BRC pin only where the cable joins them
+    // (Quirks::brcWiredTo), and asserted pulls the pin low, as on FTDI-style
+    // cables.
+    void setModemLine(oi::BrcLine lines, bool asserted);
     void setFirmwareRelease(std::string release); // e.g. "release-3.4.1"; printed on Reset
     // What only some robots do in the field (off by default, as the
     // documents say robots behave).
@@ -105,6 +111,12 @@ public:
         // Some Wi-Fi Roomba 600s: packet 35 reads one too high (Passive 2,
         // Safe 3, Full 4).
         bool reportsModeOneHigh = false;
+        // The cable: which adapter line reaches the BRC pin (Rts, Dtr, or
+        // None for a cable without the BRC wire).
+        oi::BrcLine brcWiredTo = oi::BrcLine::Rts;
+        // How long after a wake pulse ends the robot listens: the documents
+        // imply a moment (RobotProfile::kWakeMs); some robots take up to 2 s.
+        Microseconds wakeTime{std::chrono::milliseconds(oi::RobotProfile::kWakeMs)};
     };
     void setQuirks(Quirks quirks);
     const Quirks &quirks() const;

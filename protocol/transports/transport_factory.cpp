@@ -11,7 +11,11 @@ oilink::Transport *createTransport(const oilink::LinkSettings &settings, int bau
     if (settings.transport == oilink::TransportKind::Virtual) {
         auto *transport = new sim::VirtualTransport(settings.virtualRobot, settings.virtualSeed, std::move(room), robot, parent);
         transport->setWheels(settings.virtualWheels);
-        transport->setQuirks(settings.virtualSleepsWhilePulsed, settings.virtualModeOneHigh);
+        transport->setQuirks({.sleepsWhilePulsed = settings.virtualSleepsWhilePulsed,
+                              .reportsModeOneHigh = settings.virtualModeOneHigh,
+                              .brcWiredTo = settings.virtualBrcWiredTo,
+                              .wakeTime = std::chrono::milliseconds(settings.virtualWakeMs)});
+        transport->setBrcLine(settings.brcLine, settings.brcAssertedIsLow);
         return transport;
     }
     return oilink::createTransport(settings, baud, parent);

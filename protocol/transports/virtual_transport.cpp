@@ -34,7 +34,7 @@ void VirtualTransport::open()
         m_robot = std::make_unique<RealTimeRobot>(oi::profile(m_profile), m_seed);
         m_robot->robot().joinRoom(m_room, m_id);
         m_robot->robot().setWheels(m_wheels);
-        m_robot->robot().setQuirks({m_sleepsWhilePulsed, m_modeOneHigh});
+        m_robot->robot().setQuirks(m_quirks);
         m_robot->setTimeScale(m_timeScale);
         connect(m_robot.get(), &RealTimeRobot::bytesOut, this, &VirtualTransport::robotSaid);
     }
@@ -71,10 +71,12 @@ void VirtualTransport::robotSaid(const QByteArray &bytes)
 
 bool VirtualTransport::setBrcLow(bool low)
 {
-    if (!m_open)
+    // The adapter's line moves whatever it is wired to; the robot's cable
+    // decides whether that is its BRC pin.
+    if (!m_open || brcLine() == oilink::BrcLine::None)
         return false;
     m_writing = true;
-    m_robot->setBrcLow(low);
+    m_robot->setModemLine(brcLine(), brcAsserted(low));
     m_writing = false;
     return true;
 }

@@ -3,6 +3,7 @@
 
 #include "room.h"
 #include "transport.h"
+#include "virtual_robot.h"
 
 #include "odometry.h"
 #include "robot_profile.h"
@@ -40,12 +41,8 @@ public:
     // The robot's real wheels, from the next open() (LinkSettings::virtualWheels).
     void setWheels(const oi::WheelGeometry &wheels) { m_wheels = wheels; }
     // What only some robots do (LinkSettings::virtualSleepsWhilePulsed,
-    // virtualModeOneHigh), from the next open().
-    void setQuirks(bool sleepsWhilePulsed, bool modeOneHigh)
-    {
-        m_sleepsWhilePulsed = sleepsWhilePulsed;
-        m_modeOneHigh = modeOneHigh;
-    }
+    // virtualModeOneHigh, virtualBrcWiredTo, virtualWakeMs), from the next open().
+    void setQuirks(const VirtualRobot::Quirks &quirks) { m_quirks = quirks; }
     // The robot's clock runs this many times faster than real time, from the next open() (tests).
     void setTimeScale(double scale) { m_timeScale = scale; }
 
@@ -62,8 +59,7 @@ private:
     std::uint32_t m_seed;
     oi::WheelGeometry m_wheels;
     double m_timeScale = 1;
-    bool m_sleepsWhilePulsed = false;
-    bool m_modeOneHigh = false;
+    VirtualRobot::Quirks m_quirks;
     std::shared_ptr<Room> m_room;
     RobotId m_id;
     std::unique_ptr<RealTimeRobot> m_robot;

@@ -3,6 +3,7 @@
 // itself and exits with status 2), its last will when it is killed, and its
 // goodbye on SIGTERM.
 
+#include "bridge_config.h"
 #include "bridge_rig.h"
 
 #include "tcp_robot_server.h"
@@ -84,6 +85,10 @@ private slots:
                                      << "'dyson' is not a robot";
         QTest::newRow("missing CA") << QStringList{"--name", "r1", "--sim", "--cafile", "/nonexistent/ca.crt"} << QByteArray()
                                     << "cafile: /nonexistent/ca.crt does not exist";
+        QTest::newRow("bad wake line in the file") << QStringList{} << QByteArray("name = r1\nport = /dev/ttyUSB0\nbrc-line = cts\n")
+                                                   << "bad.conf:3: brc-line: 'cts' is not a wake line: rts, dtr, both";
+        QTest::newRow("bad wake line") << QStringList{"--name", "r1", "--sim", "--brc-line", "yes"} << QByteArray()
+                                       << "--brc-line: brc-line: 'yes' is not a wake line: rts, dtr, both";
         QTest::newRow("missing config") << QStringList{"--config", "/nonexistent/r1.conf"} << QByteArray()
                                         << "/nonexistent/r1.conf: cannot read it";
     }
@@ -101,6 +106,25 @@ private slots:
         const QString err = QString::fromUtf8(p.readAllStandardError());
         QCOMPARE(p.exitCode(), 2);
         QVERIFY2(err.contains(message), qPrintable(err));
+    }
+
+    // The wake line from the file, the command line winning, reaches the
+    // link's settings; without it, RTS.
+    void theWakeLineReachesTheLink()
+    {
+        const auto config = [](const QList<BridgeConfig::Setting> &settings) {
+            QString error;
+            const std::optional<BridgeConfig> c = BridgeConfig::fromSettings(settings, &error);
+            return c ? c->link.brcLine : std::optional<oi::BrcLine>();
+        };
+        const QList<BridgeConfig::Setting> robot{{QStringLiteral("name"), QStringLiteral("r1"), QStringLiteral("r1.conf:1")},
+                                                 {QStringLiteral("port"), QStringLiteral("/dev/ttyUSB0"), QStringLiteral("r1.conf:2")}};
+        QCOMPARE(config(robot), oi::BrcLine::Rts);
+        QCOMPARE(config(robot + QList<BridgeConfig::Setting>{{QStringLiteral("brc-line"), QStringLiteral("dtr"), QStringLiteral("r1.conf:3")}}),
+                 oi::BrcLine::Dtr);
+        QCOMPARE(config(robot + QList<BridgeConfig::Setting>{{QStringLiteral("brc-line"), QStringLiteral("dtr"), QStringLiteral("r1.conf:3")},
+                                                             {QStringLiteral("brc-line"), QStringLiteral("none"), QStringLiteral("--brc-line")}}),
+                 oi::BrcLine::None);
     }
 
     // On a TCP bridge the transport cannot say which robot it is. A Roomba

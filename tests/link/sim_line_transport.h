@@ -36,10 +36,10 @@ public:
             std::span(reinterpret_cast<const std::uint8_t *>(bytes.constData()), std::size_t(bytes.size())));
         m_tick.start(0); // the answer is heard as the clock next moves
     }
-    void setBrcLow(bool low)
+    void setModemLine(oi::BrcLine lines, bool asserted)
     {
         catchUp();
-        m_robot.setBrcLow(low);
+        m_robot.setModemLine(lines, asserted);
     }
 
 private:
@@ -116,23 +116,29 @@ public:
         m_baud = baud;
         return true;
     }
+    // The wake line moves; the robot's cable (Quirks::brcWiredTo) decides
+    // whether its BRC pin follows.
     bool setBrcLow(bool low) override
     {
-        if (!m_open || !m_line.brcInReach)
+        if (!m_open || !m_line.brcInReach || brcLine() == oi::BrcLine::None)
             return false;
         pinPulledLow += low;
         if (brcChanged)
             brcChanged(low);
         if (m_stepped)
-            m_stepped->setBrcLow(low);
+            m_stepped->setModemLine(brcLine(), brcAsserted(low));
         else
-            m_realTime->setBrcLow(low);
+            m_realTime->setModemLine(brcLine(), brcAsserted(low));
         return true;
     }
-    QString brcUnavailable() const override { return QStringLiteral("test line: no BRC pin"); }
+    QString brcUnavailable() const override
+    {
+        const QString none = noWakeLine();
+        return none.isEmpty() ? QStringLiteral("test line: no BRC pin") : none;
+    }
     QString describe() const override { return QStringLiteral("test line"); }
 
-    int pinPulledLow = 0; // how often the BRC pin was pulled low
+    int pinPulledLow = 0; // how often the wake line was pulled low
     std::function<void(bool low)> brcChanged; // each change of the pin, as it happens
 
 private:

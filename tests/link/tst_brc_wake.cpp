@@ -59,10 +59,14 @@ struct LineLog {
                 events.append({lastFrameMs, QStringLiteral("frame")});
         });
     }
+    // The wake line's changes, named by the line(s) that moved: "RTS low".
     void watch(SimLineTransport &line, ManualClock &clock)
     {
-        line.brcChanged = [this, &clock](bool low) {
-            events.append({clock.nowNs() / 1'000'000, low ? QStringLiteral("BRC low") : QStringLiteral("BRC high")});
+        line.brcChanged = [this, &clock, &line](bool low) {
+            const std::string_view name = oi::brcLineWords(line.brcLine());
+            events.append({clock.nowNs() / 1'000'000,
+                           QString::fromUtf8(name.data(), qsizetype(name.size())) + (low ? QStringLiteral(" low")
+                                                                                         : QStringLiteral(" high"))});
         };
     }
     QStringList whatFrom(qsizetype from) const
@@ -253,8 +257,9 @@ private slots:
         oilink::LinkSettings settings = testLine(id);
         settings.keepAwakeMs = 100;
         link.open(settings);
-        // 600 ms of frames: six keep-awake periods.
-        QVERIFY(clock.advanceUntil([&] { return frames >= 40; }, kTimeoutMs));
+        // 3 s of frames: the wake's 2 s, when no other pulse goes, then ten
+        // keep-awake periods.
+        QVERIFY(clock.advanceUntil([&] { return frames >= 200; }, kTimeoutMs));
         if (pulsed)
             QVERIFY2(line->pinPulledLow >= 4, qPrintable(QString::number(line->pinPulledLow)));
         else
@@ -301,7 +306,7 @@ private slots:
             --from; // anything after the last frame
         QVERIFY(clock.advanceUntil([&] { return log.frames >= framesBefore + 3; }, kTimeoutMs));
 
-        const QStringList expected{QStringLiteral("BRC low"), QStringLiteral("BRC high"),
+        const QStringList expected{QStringLiteral("RTS low"), QStringLiteral("RTS high"),
                                    QStringLiteral("sent 137 0 0 0 0 138 0 128"), QStringLiteral("sent 148 1 35"),
                                    QStringLiteral("frame")};
         QCOMPARE(log.whatFrom(from), expected);
@@ -313,6 +318,109 @@ private slots:
         QCOMPARE(line->robot().mode(), oi::OiMode::Passive);
         QCOMPARE(notPassive, 0);
         QVERIFY2(errors.isEmpty(), qPrintable(errors.join(QStringLiteral(" | "))));
+        QCOMPARE(link.state(), oilink::LinkState::Streaming);
+        link.close();
+    }
+
+    // A minute of frames, then the robot sleeps (Power): on each wake line,
+    // with the robot's cable joining that line (or one of both) to its BRC
+    // pin, the link pulses the chosen line and the frames come back without
+    // the user.
+    void aRobotThatSleepsStreamsAgainOnEachWakeLine_data()
+    {
+        QTest::addColumn<int>("wakeLine");
+        QTest::addColumn<int>("wiredTo");
+        QTest::addColumn<QString>("pulsed");
+        QTest::newRow("rts") << int(oi::BrcLine::Rts) << int(oi::BrcLine::Rts) << "RTS";
+        QTest::newRow("dtr") << int(oi::BrcLine::Dtr) << int(oi::BrcLine::Dtr) << "DTR";
+        QTest::newRow("both, cable on dtr") << int(oi::BrcLine::Both) << int(oi::BrcLine::Dtr) << "RTS and DTR";
+        QTest::newRow("both, cable on rts") << int(oi::BrcLine::Both) << int(oi::BrcLine::Rts) << "RTS and DTR";
+    }
+    void aRobotThatSleepsStreamsAgainOnEachWakeLine()
+    {
+        QFETCH(int, wakeLine);
+        QFETCH(int, wiredTo);
+        QFETCH(QString, pulsed);
+        ManualClock clock;
+        oilink::RobotLink link(clock);
+        SimLineTransport *line = nullptr;
+        LineLog log;
+        link.setTransportFactory([&](const oilink::LinkSettings &s) {
+            line = new SimLineTransport(oi::ProfileId::Create2, {}, clock);
+            line->setBrcLine(s.brcLine, s.brcAssertedIsLow);
+            line->robot().setQuirks({.brcWiredTo = oi::BrcLine(wiredTo)});
+            log.watch(*line, clock);
+            return line;
+        });
+        log.watch(link, clock, this);
+        QStringList errors;
+        connect(&link, &oilink::RobotLink::errorOccurred, this, [&](const QString &e) { errors << e; });
+        oilink::LinkSettings settings = testLine(oi::ProfileId::Create2);
+        settings.brcLine = oi::BrcLine(wakeLine);
+        link.open(settings);
+        QVERIFY(clock.advanceUntil([&] { return log.frames > 0; }, kTimeoutMs));
+        clock.advance(60'000);
+        link.send(QByteArray(1, char(133))); // Power: asleep
+        QVERIFY(clock.advanceUntil([&] { return line->robot().asleep(); }, kTimeoutMs));
+        const qsizetype from = log.events.size();
+        const int framesBefore = log.frames;
+        QVERIFY(clock.advanceUntil([&] { return log.frames >= framesBefore + 3; }, kTimeoutMs));
+        const QStringList said = log.whatFrom(from);
+        QVERIFY2(said.size() >= 5, qPrintable(said.join(QStringLiteral(" | "))));
+        QCOMPARE(said.mid(said.size() - 5),
+                 (QStringList{pulsed + QStringLiteral(" low"), pulsed + QStringLiteral(" high"),
+                              QStringLiteral("sent 137 0 0 0 0 138 0 128"), QStringLiteral("sent 148 1 35"),
+                              QStringLiteral("frame")}));
+        QVERIFY(!line->robot().asleep());
+        QVERIFY2(errors.isEmpty(), qPrintable(errors.join(QStringLiteral(" | "))));
+        QCOMPARE(link.state(), oilink::LinkState::Streaming);
+        link.close();
+    }
+
+    // A robot that listens only 1.5 s after the wake pulse (field robots
+    // take up to 2 s): woken as the link opens (its profile named, or found
+    // by the probe) or asleep mid-session, it streams again with nothing
+    // reported, and no baud pulse reaches it.
+    void aSlowWakingRobotIsGivenItsTime_data()
+    {
+        QTest::addColumn<bool>("named");
+        QTest::addColumn<bool>("midSession");
+        QTest::newRow("opened, named") << true << false;
+        QTest::newRow("opened, found by the probe") << false << false;
+        QTest::newRow("asleep mid-session") << true << true;
+    }
+    void aSlowWakingRobotIsGivenItsTime()
+    {
+        QFETCH(bool, named);
+        QFETCH(bool, midSession);
+        ManualClock clock;
+        oilink::RobotLink link(clock);
+        SimLineTransport *line = nullptr;
+        link.setTransportFactory([&](const oilink::LinkSettings &) {
+            line = new SimLineTransport(oi::ProfileId::Create2, {}, clock);
+            line->robot().setQuirks({.wakeTime = std::chrono::milliseconds(1500)});
+            if (!midSession)
+                line->robot().receive(kStartAndPower);
+            return line;
+        });
+        QStringList errors;
+        connect(&link, &oilink::RobotLink::errorOccurred, this, [&](const QString &e) { errors << e; });
+        int frames = 0;
+        connect(&link, &oilink::RobotLink::snapshot, this, [&] { ++frames; });
+        oilink::LinkSettings settings = testLine(named ? std::optional(oi::ProfileId::Create2) : std::nullopt);
+        settings.keepAwakeMs = 0;
+        link.open(settings);
+        QVERIFY(clock.advanceUntil([&] { return frames > 0; }, kTimeoutMs));
+        if (midSession) {
+            clock.advance(60'000);
+            link.send(QByteArray(1, char(133))); // Power
+            QVERIFY(clock.advanceUntil([&] { return line->robot().asleep(); }, kTimeoutMs));
+            const int before = frames;
+            QVERIFY(clock.advanceUntil([&] { return frames > before; }, kTimeoutMs));
+        }
+        QVERIFY2(errors.isEmpty(), qPrintable(errors.join(QStringLiteral(" | "))));
+        QCOMPARE(line->pinPulledLow, midSession ? 2 : 1); // as the link opened, and when it fell asleep
+        QCOMPARE(line->robot().baud(), 115200);
         QCOMPARE(link.state(), oilink::LinkState::Streaming);
         link.close();
     }
@@ -527,6 +635,66 @@ private slots:
             oilink::LinkSettings::tcp(QStringLiteral("127.0.0.1"), server.serverPort(), oi::ProfileId::Create2);
         settings.tcpRfc2217 = true;
         staysAwakeForTenMinutes(settings);
+    }
+
+    // roomba-sim's cable joins DTR to the BRC pin: the control socket
+    // beside its pseudo-terminal carries each line, and a pulse on DTR (or
+    // on both) wakes it, one on RTS does not.
+    void roombaSimsCableDecidesWhichLineWakesIt_data()
+    {
+        QTest::addColumn<int>("wakeLine");
+        QTest::addColumn<bool>("wakes");
+        QTest::newRow("dtr") << int(oi::BrcLine::Dtr) << true;
+        QTest::newRow("both") << int(oi::BrcLine::Both) << true;
+        QTest::newRow("rts") << int(oi::BrcLine::Rts) << false;
+    }
+    void roombaSimsCableDecidesWhichLineWakesIt()
+    {
+        QFETCH(int, wakeLine);
+        QFETCH(bool, wakes);
+        SimProcess sim;
+        QVERIFY(sim.start({QStringLiteral("--asleep"), QStringLiteral("--brc-wired"), QStringLiteral("dtr")}));
+        oilink::RobotLink link;
+        QSignalSpy errors(&link, &oilink::RobotLink::errorOccurred);
+        int frames = 0;
+        connect(&link, &oilink::RobotLink::snapshot, this, [&] { ++frames; });
+        oilink::LinkSettings settings = oilink::LinkSettings::serial(sim.where(), oi::ProfileId::Create2);
+        settings.streamPackets = {35};
+        settings.brcLine = oi::BrcLine(wakeLine);
+        link.open(settings);
+        if (wakes) {
+            QTRY_VERIFY_WITH_TIMEOUT(frames > 0, kTimeoutMs);
+            QCOMPARE(errors.size(), 0);
+        } else {
+            QTRY_VERIFY_WITH_TIMEOUT(!errors.isEmpty(), kTimeoutMs);
+            QCOMPARE(frames, 0);
+            QVERIFY2(errors.first().first().toString().contains(QStringLiteral("no data")),
+                     qPrintable(errors.first().first().toString()));
+        }
+        link.close();
+    }
+
+    // Over RFC 2217 the wake line is the bridge's DTR when the robot's
+    // cable carries BRC there: SET-CONTROL for DTR reaches the pin.
+    void rfc2217WakesARobotWiredToDtrOnDtr()
+    {
+        sim::TcpRobotServer server(oi::profile(oi::ProfileId::Create2));
+        server.setRfc2217(true);
+        QVERIFY(server.listen(QHostAddress::LocalHost, 0));
+        server.robot().robot().setQuirks({.brcWiredTo = oi::BrcLine::Dtr});
+        server.robot().robot().receive(kStartAndPower);
+        QVERIFY(server.robot().robot().asleep());
+        oilink::LinkSettings settings =
+            oilink::LinkSettings::tcp(QStringLiteral("127.0.0.1"), server.serverPort(), oi::ProfileId::Create2);
+        settings.tcpRfc2217 = true;
+        settings.brcLine = oi::BrcLine::Dtr;
+        settings.streamPackets = {35};
+        oilink::RobotLink link;
+        QSignalSpy frames(&link, &oilink::RobotLink::snapshot);
+        link.open(settings);
+        QTRY_VERIFY_WITH_TIMEOUT(!frames.isEmpty(), kTimeoutMs);
+        QVERIFY(!server.robot().robot().asleep());
+        link.close();
     }
 
     void rawTcpCannotWakeIt()

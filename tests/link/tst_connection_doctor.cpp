@@ -64,7 +64,7 @@ ConnectionDoctor::Report diagnoseOverTcp(bool rfc2217)
     robot.advance(std::chrono::milliseconds(100));
     robot.receive(stream);
     TcpTransport transport(QStringLiteral("127.0.0.1"), server.serverPort());
-    transport.setRfc2217(rfc2217, BrcLine::Rts, true);
+    transport.setRfc2217(rfc2217);
     QSignalSpy opened(&transport, &Transport::opened);
     transport.open();
     if (!opened.wait(kTimeoutMs))
@@ -179,6 +179,75 @@ private slots:
         QVERIFY2(r.finding == Finding::AsleepDidNotWake, qPrintable(explain(r)));
         QVERIFY(r.summary.contains(QStringLiteral("on its dock with firmware before release-3.8.2")));
         QVERIFY(line.robot().asleep());
+    }
+
+    // A cable that carries BRC on DTR, driven on RTS: silent after the RTS
+    // pulse, the doctor pulses DTR, and names the cable and the setting.
+    void aRobotWiredToDtrDrivenOnRtsNamesTheCable()
+    {
+        ManualClock clock;
+        SimLineTransport line(oi::ProfileId::Create2, {}, clock);
+        line.robot().setQuirks({.brcWiredTo = BrcLine::Dtr});
+        line.robot().receive(kStartAndPower);
+        QCOMPARE(line.brcLine(), BrcLine::Rts);
+        const auto r = diagnose(line, clock, oi::ProfileId::Create2);
+        QVERIFY2(r.finding == Finding::WokeOnOtherLine, qPrintable(explain(r)));
+        QCOMPARE(r.wakeLine, BrcLine::Dtr);
+        QCOMPARE(r.baud, 115200);
+        QCOMPARE(r.summary, QStringLiteral("The wake pulse works on DTR, not RTS: the cable carries the robot's BRC pin "
+                                           "on DTR. Set the wake line to DTR (--brc-line dtr)."));
+        QVERIFY2(r.steps.contains(QStringLiteral("Still silent: pulsed the other line (DTR) instead.")), qPrintable(explain(r)));
+        QVERIFY(!line.robot().asleep());
+        QCOMPARE(line.robot().baud(), 115200);
+        QCOMPARE(line.brcLine(), BrcLine::Dtr); // the link pulses on from here on the line that works
+    }
+
+    // No line reaches the pin: the doctor says the cable may not carry it,
+    // and the link's own line is left as it was.
+    void aCableWithoutBrcIsNamed()
+    {
+        ManualClock clock;
+        SimLineTransport line(oi::ProfileId::Create2, {}, clock);
+        line.robot().setQuirks({.brcWiredTo = BrcLine::None});
+        line.robot().receive(kStartAndPower);
+        const auto r = diagnose(line, clock, oi::ProfileId::Create2);
+        QVERIFY2(r.finding == Finding::AsleepDidNotWake, qPrintable(explain(r)));
+        QVERIFY2(r.summary.startsWith(QStringLiteral("No line wakes it: still silent after BRC pulses on RTS and on DTR. "
+                                                     "The cable may not carry the BRC pin")),
+                 qPrintable(r.summary));
+        QVERIFY(!r.wakeLine);
+        QVERIFY(line.robot().asleep());
+        QCOMPARE(line.brcLine(), BrcLine::Rts);
+    }
+
+    // Wake line none: no pulse is tried, and the step says why.
+    void wakeLineNoneTriesNoPulse()
+    {
+        ManualClock clock;
+        SimLineTransport line(oi::ProfileId::Create2, {}, clock);
+        line.setBrcLine(BrcLine::None);
+        line.robot().receive(kStartAndPower);
+        const auto r = diagnose(line, clock, oi::ProfileId::Create2);
+        QVERIFY2(r.finding == Finding::NothingComesBack, qPrintable(explain(r)));
+        QCOMPARE(line.pinPulledLow, 0);
+        QVERIFY2(r.steps.last().contains(QStringLiteral("the wake line is set to none")), qPrintable(explain(r)));
+    }
+
+    // A robot that listens 1.5 s after the wake pulse (field robots take up
+    // to 2 s): asked again once it has had that time, it answers at its
+    // baud, and is never pulsed to 19200.
+    void aSlowWakingRobotIsWokenAndNotRebauded()
+    {
+        ManualClock clock;
+        SimLineTransport line(oi::ProfileId::Create2, {}, clock);
+        line.robot().setQuirks({.wakeTime = std::chrono::milliseconds(1500)});
+        line.robot().receive(kStartAndPower);
+        const auto r = diagnose(line, clock, oi::ProfileId::Create2);
+        QVERIFY2(r.finding == Finding::WokeAfterPulse, qPrintable(explain(r)));
+        QCOMPARE(r.baud, 115200);
+        QCOMPARE(line.robot().baud(), 115200);
+        QCOMPARE(line.pinPulledLow, 1); // the wake pulse, and no baud pulses
+        QCOMPARE(r.summary, QStringLiteral("The robot was asleep; a BRC pulse woke it, and it talks at 115200 baud."));
     }
 
     void answersAsAnotherProfile()

@@ -481,8 +481,48 @@ private slots:
                                QStringLiteral("create2")});
         QCOMPARE(o.status, 0); // woken, it answers
         QVERIFY2(o.lines.first().startsWith(QStringLiteral("Checking ")), qPrintable(o.lines.join('\n')));
-        QVERIFY2(o.lines.contains(QStringLiteral("  Pulsed the BRC pin to wake the robot.")), qPrintable(o.lines.join('\n')));
+        QVERIFY2(o.lines.contains(QStringLiteral("  Pulsed the BRC pin on the wake line (RTS) to wake the robot.")),
+                 qPrintable(o.lines.join('\n')));
         QCOMPARE(o.lines.last(), QStringLiteral("The robot was asleep; a BRC pulse woke it, and it talks at 115200 baud."));
+    }
+
+    // roomba-sim's cable carries BRC on DTR, roomba-ctl pulses RTS: the
+    // doctor tries DTR, and its last line names the cable and the option.
+    void doctorNamesTheWakeLineOfTheCable()
+    {
+        Sim sim({QStringLiteral("--asleep"), QStringLiteral("--brc-wired"), QStringLiteral("dtr")});
+        QVERIFY(!sim.path().isEmpty());
+        const Outcome o = run({QStringLiteral("doctor"), QStringLiteral("--port"), sim.path(), QStringLiteral("--profile"),
+                               QStringLiteral("create2"), QStringLiteral("--brc-line"), QStringLiteral("rts")});
+        QCOMPARE(o.status, 1); // something to change
+        QVERIFY2(o.lines.contains(QStringLiteral("  Still silent: pulsed the other line (DTR) instead.")),
+                 qPrintable(o.lines.join('\n')));
+        QCOMPARE(o.lines.last(), QStringLiteral("The wake pulse works on DTR, not RTS: the cable carries the robot's BRC "
+                                                "pin on DTR. Set the wake line to DTR (--brc-line dtr)."));
+        // With the line it named, the robot (awake now) streams.
+        const Outcome again = run({QStringLiteral("sensors"), QStringLiteral("--port"), sim.path(), QStringLiteral("--profile"),
+                                   QStringLiteral("create2"), QStringLiteral("--brc-line"), QStringLiteral("dtr"),
+                                   QStringLiteral("--count"), QStringLiteral("3")});
+        QVERIFY2(again.status == 0, qPrintable(again.err));
+    }
+
+    // roomba-sim's robot asleep, listening only 1.5 s after a wake pulse:
+    // sensors streams it without a word on standard error, and the doctor
+    // finds it woken at its own baud, never pulsed to 19200.
+    void aSlowWakingRobotIsWokenAndKeepsItsBaud()
+    {
+        Sim sim({QStringLiteral("--asleep"), QStringLiteral("--wake-time"), QStringLiteral("1500")});
+        QVERIFY(!sim.path().isEmpty());
+        const QStringList robot{QStringLiteral("--port"), sim.path(), QStringLiteral("--profile"), QStringLiteral("create2")};
+        const Outcome doctor = run(QStringList{QStringLiteral("doctor")} + robot);
+        QCOMPARE(doctor.status, 0);
+        QCOMPARE(doctor.lines.last(), QStringLiteral("The robot was asleep; a BRC pulse woke it, and it talks at 115200 baud."));
+        Sim asleep({QStringLiteral("--asleep"), QStringLiteral("--wake-time"), QStringLiteral("1500")});
+        const Outcome sensors = run({QStringLiteral("sensors"), QStringLiteral("--port"), asleep.path(), QStringLiteral("--profile"),
+                                     QStringLiteral("create2"), QStringLiteral("--count"), QStringLiteral("3")});
+        QVERIFY2(sensors.status == 0, qPrintable(sensors.err));
+        QCOMPARE(sensors.err, QString());
+        QCOMPARE(json(sensors.lines.last())[QStringLiteral("statistics")].toObject()[QStringLiteral("baud")].toInt(), 115200);
     }
 
     void doctorOnAHealthyRobot()
@@ -545,6 +585,12 @@ private slots:
         QTest::newRow("bad baud") << QStringList{"sensors", "--sim", "--baud", "12345"} << 2 << "not a rate the robots know";
         QTest::newRow("bad count") << QStringList{"sensors", "--sim", "--count", "0"} << 2 << "--count needs";
         QTest::newRow("no command") << QStringList{"send", "--sim"} << 2 << "send needs a command name";
+        for (const char *command : {"sensors", "send", "doctor"})
+            QTest::newRow(qPrintable(QStringLiteral("bad wake line, %1").arg(QLatin1String(command))))
+                << QStringList{command, "--sim", "--brc-line", "cts", "start"}.mid(0, QLatin1String(command) == QLatin1String("send") ? 5 : 4)
+                << 2 << "--brc-line: 'cts' is not a wake line: rts, dtr, both";
+        QTest::newRow("wake line without a value") << QStringList{"sensors", "--sim", "--brc-line"} << 2
+                                                   << "--brc-line needs a value";
         QTest::newRow("refused tcp") << QStringList{"sensors", "--tcp", "127.0.0.1:1"} << 1 << "127.0.0.1:1: connection refused";
     }
     void errors()

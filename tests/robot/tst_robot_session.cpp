@@ -664,6 +664,23 @@ private slots:
         settings.setValue(QStringLiteral("robots/1/virtualWheelBaseMm"), -5);
         QCOMPARE(loadSavedRobots(settings).value(0).link.virtualWheels, oi::WheelGeometry{});
     }
+
+    // The wake line is kept with the robot like its baud; a value that is
+    // not a wake line comes back as RTS, the default, and the robot stays.
+    void theWakeLineIsKeptWithTheRobotList()
+    {
+        oilink::LinkSettings cable = oilink::LinkSettings::serial(QStringLiteral("/dev/ttyUSB0"), oi::ProfileId::Create2, 57600);
+        cable.brcLine = oi::BrcLine::Dtr;
+        QSettings settings;
+        saveRobots(settings, {SavedRobot{QStringLiteral("Dee"), {}, cable, true}});
+        QCOMPARE(settings.value(QStringLiteral("robots/1/brcLine")).toString(), QStringLiteral("dtr"));
+        QCOMPARE(loadSavedRobots(settings).value(0).link, cable);
+        settings.setValue(QStringLiteral("robots/1/brcLine"), QStringLiteral("cts"));
+        const QList<SavedRobot> back = loadSavedRobots(settings);
+        QCOMPARE(back.size(), 1);
+        QCOMPARE(back[0].link.brcLine, oi::BrcLine::Rts);
+        QCOMPARE(back[0].link.baud, 57600);
+    }
 };
 
 QTEST_MAIN(TestRobotSession)

@@ -149,6 +149,55 @@ private slots:
         QCOMPARE(r.answers(), heard);
     }
 
+    // A slow robot (an option: field robots take up to 2 s): a Start sent
+    // once the documents' moment has passed is still lost, one sent once its
+    // own wake time has passed is heard.
+    void aSlowRobotListensOnlyAfterItsWakeTime()
+    {
+        Robot r(ProfileId::Create2);
+        QCOMPARE(r.robot.quirks().wakeTime, kWake);
+        r.robot.setQuirks({.wakeTime = 1500ms});
+        r.sleep();
+        pulse(r.robot, 20ms);
+        QVERIFY(!r.robot.asleep());
+        r.robot.advance(kWake);
+        r.send(r.encoder.start());
+        QCOMPARE(r.robot.mode(), OiMode::Off); // lost
+        r.robot.advance(1500ms - kWake);
+        r.send(r.encoder.start());
+        QCOMPARE(r.robot.mode(), OiMode::Passive);
+    }
+
+    // The cable joins one adapter line to the BRC pin, asserted pulling it
+    // low: a pulse on that line (or on both) wakes the robot, one on the
+    // other line or on a cable without the wire does not.
+    void theCableDecidesWhichLineReachesThePin_data()
+    {
+        QTest::addColumn<int>("wiredTo");
+        QTest::addColumn<int>("pulsed");
+        QTest::addColumn<bool>("wakes");
+        QTest::newRow("rts on rts") << int(BrcLine::Rts) << int(BrcLine::Rts) << true;
+        QTest::newRow("dtr on rts") << int(BrcLine::Rts) << int(BrcLine::Dtr) << false;
+        QTest::newRow("dtr on dtr") << int(BrcLine::Dtr) << int(BrcLine::Dtr) << true;
+        QTest::newRow("rts on dtr") << int(BrcLine::Dtr) << int(BrcLine::Rts) << false;
+        QTest::newRow("both on dtr") << int(BrcLine::Dtr) << int(BrcLine::Both) << true;
+        QTest::newRow("both, no wire") << int(BrcLine::None) << int(BrcLine::Both) << false;
+    }
+    void theCableDecidesWhichLineReachesThePin()
+    {
+        QFETCH(int, wiredTo);
+        QFETCH(int, pulsed);
+        QFETCH(bool, wakes);
+        Robot r(ProfileId::Create2);
+        QCOMPARE(r.robot.quirks().brcWiredTo, BrcLine::Rts);
+        r.robot.setQuirks({.brcWiredTo = BrcLine(wiredTo)});
+        r.sleep();
+        r.robot.setModemLine(BrcLine(pulsed), true);
+        r.robot.advance(20ms);
+        r.robot.setModemLine(BrcLine(pulsed), false);
+        QCOMPARE(r.robot.asleep(), !wakes);
+    }
+
     // The Create shows its BRC pin in packet 32, bit 4, active low.
     void theCreateShowsTheBrcPinInPacket32()
     {

@@ -160,6 +160,11 @@ void TestRoombaSim::refusesBadArguments_data()
     QTest::newRow("wheel of nothing") << QStringList{"--right-wheel-diameter", "0"};
     QTest::newRow("wheel base negative") << QStringList{"--wheel-base", "-235"};
     QTest::newRow("the Create never sleeps") << QStringList{"--profile", "create1", "--sleeps-while-pulsed"};
+    QTest::newRow("wired to no line") << QStringList{"--brc-wired", "cts"};
+    QTest::newRow("wired to both") << QStringList{"--brc-wired", "both"};
+    QTest::newRow("wake time negative") << QStringList{"--wake-time", "-1"};
+    QTest::newRow("wake time not a number") << QStringList{"--wake-time", "slow"};
+    QTest::newRow("wake time too long") << QStringList{"--wake-time", "60000"};
 }
 
 void TestRoombaSim::refusesBadArguments()
@@ -186,6 +191,7 @@ void TestRoombaSim::helpAndVersion()
     QVERIFY(help.contains("--profile") && help.contains("--tcp") && help.contains("--link"));
     QVERIFY(help.contains("--sleeps-while-pulsed") && help.contains("release-3.2.x"));
     QVERIFY(help.contains("--mode-off-by-one") && help.contains("one too high"));
+    QVERIFY(help.contains("--brc-wired") && help.contains("--wake-time"));
     process.start(kProgram, {QStringLiteral("--version")});
     QVERIFY(process.waitForFinished(5000));
     QCOMPARE(process.exitCode(), 0);

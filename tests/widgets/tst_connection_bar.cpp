@@ -78,6 +78,34 @@ private slots:
         QCOMPARE(r.portPath, QString("/dev/pts/7"));
         QCOMPARE(r.profile, std::optional<oi::ProfileId>(oi::ProfileId::Create1));
         QCOMPARE(r.baud, 57600);
+        QCOMPARE(r.brcLine, oi::BrcLine::Rts); // the default wake line
+    }
+
+    // The wake line sits beside the baud for a serial port or a bridge, and
+    // goes with the request; the virtual robot has no cable to choose.
+    void wakeLineBesideTheBaud()
+    {
+        ConnectionBar bar;
+        bar.show();
+        auto *line = bar.findChild<QComboBox *>("brcLine");
+        QVERIFY(line);
+        QVERIFY(!line->isVisible());
+        QVERIFY(!line->accessibleName().isEmpty());
+        choose(bar, "transport", int(ConnectionRequest::Transport::Serial));
+        QVERIFY(line->isVisible());
+        choose(bar, "brcLine", int(oi::BrcLine::Dtr));
+        QCOMPARE(line->currentText(), QStringLiteral("Wake: DTR"));
+        bar.findChild<QComboBox *>("port")->setEditText("/dev/ttyUSB0");
+        QSignalSpy spy(&bar, &ConnectionBar::connectRequested);
+        clickConnect(bar);
+        QCOMPARE(spy.count(), 1);
+        QCOMPARE(spy.at(0).at(0).value<ConnectionRequest>().brcLine, oi::BrcLine::Dtr);
+        ConnectionRequest none;
+        none.transport = ConnectionRequest::Transport::Tcp;
+        none.brcLine = oi::BrcLine::None;
+        bar.setRequest(none);
+        QCOMPARE(bar.request().brcLine, oi::BrcLine::None);
+        QCOMPARE(line->currentText(), QStringLiteral("Wake: none"));
     }
 
     void badInputGivesOneInlineError_data()
@@ -298,9 +326,9 @@ private slots:
             QTest::keyClick(w, Qt::Key_Tab);
         }
         // Left to right as laid out; Disconnect is disabled until connected.
-        QCOMPARE(visited, QStringList({"transport", "port", "refresh", "profile", "baud", "connect"}));
+        QCOMPARE(visited, QStringList({"transport", "port", "refresh", "profile", "baud", "brcLine", "connect"}));
         // Every control has a name a screen reader can say.
-        for (const char *name : {"transport", "port", "tcp", "profile", "baud"})
+        for (const char *name : {"transport", "port", "tcp", "profile", "baud", "brcLine"})
             QVERIFY2(!bar.findChild<QWidget *>(name)->accessibleName().isEmpty(), name);
         // Enter in the TCP field connects.
         choose(bar, "transport", int(ConnectionRequest::Transport::Tcp));

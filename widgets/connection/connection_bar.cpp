@@ -43,6 +43,11 @@ ConnectionBar::ConnectionBar(QWidget *parent) : QWidget(parent)
     for (int baud : {115200, 57600, 38400, 19200, 9600})
         m_baud->addItem(QString::number(baud), baud);
 
+    m_brcLine = new QComboBox(this);
+    m_brcLine->setObjectName("brcLine");
+    for (oi::BrcLine line : oi::kBrcLines)
+        m_brcLine->addItem(QString(), int(line));
+
     m_connect = new QPushButton(this);
     m_connect->setObjectName("connect");
     m_disconnect = new QPushButton(this);
@@ -64,6 +69,7 @@ ConnectionBar::ConnectionBar(QWidget *parent) : QWidget(parent)
     row->addWidget(m_tcp, 1);
     row->addWidget(m_profile);
     row->addWidget(m_baud);
+    row->addWidget(m_brcLine);
     row->addStretch(); // takes the room when no port or bridge field shows
     row->addWidget(m_lockedHint);
     row->addWidget(m_connect);
@@ -74,7 +80,7 @@ ConnectionBar::ConnectionBar(QWidget *parent) : QWidget(parent)
     layout->addWidget(m_error);
 
     // Item texts change with the language; the combos follow their width.
-    for (QComboBox *combo : {m_transport, m_profile, m_baud})
+    for (QComboBox *combo : {m_transport, m_profile, m_baud, m_brcLine})
         combo->setSizeAdjustPolicy(QComboBox::AdjustToContents);
 
     connect(m_transport, &QComboBox::currentIndexChanged, this, &ConnectionBar::updateTransportFields);
@@ -105,12 +111,21 @@ void ConnectionBar::retranslateUi()
     m_profile->setAccessibleName(tr("Robot profile"));
     m_baud->setItemText(0, tr("Default baud"));
     m_baud->setAccessibleName(tr("Baud rate"));
+    // The line of the serial adapter (or RFC 2217 bridge) wired to the robot's BRC pin.
+    m_brcLine->setItemText(m_brcLine->findData(int(oi::BrcLine::Rts)), tr("Wake: RTS"));
+    m_brcLine->setItemText(m_brcLine->findData(int(oi::BrcLine::Dtr)), tr("Wake: DTR"));
+    m_brcLine->setItemText(m_brcLine->findData(int(oi::BrcLine::Both)), tr("Wake: both"));
+    m_brcLine->setItemText(m_brcLine->findData(int(oi::BrcLine::None)), tr("Wake: none"));
+    m_brcLine->setAccessibleName(tr("Wake line"));
     m_connect->setText(tr("Connect"));
     m_disconnect->setText(tr("Disconnect"));
     // Said beside the greyed fields, and on each of them.
     m_lockedHint->setText(tr("Disconnect to change the port"));
     for (QWidget *w : std::initializer_list<QWidget *>{m_transport, m_port, m_refresh, m_tcp, m_profile, m_baud, m_connect})
         w->setToolTip(m_connected ? m_lockedHint->text() : QString());
+    m_brcLine->setToolTip(m_connected ? m_lockedHint->text()
+                                      : tr("The adapter's line wired to the robot's BRC pin, pulsed to wake it and "
+                                           "keep it awake. Many cables use RTS, some DTR; both pulses the two; none: the cable has no BRC wire."));
     m_refresh->setToolTip(m_connected ? m_lockedHint->text() : tr("List the serial ports again"));
     if (m_ownError != OwnError::None)
         showOwnError(m_ownError);
@@ -149,6 +164,7 @@ void ConnectionBar::updateTransportFields()
     m_profile->setVisible(t != ConnectionRequest::Transport::Current);
     m_baud->setVisible(t != ConnectionRequest::Transport::Current);
     m_baud->setEnabled(t != ConnectionRequest::Transport::Virtual);
+    m_brcLine->setVisible(t == ConnectionRequest::Transport::Serial || t == ConnectionRequest::Transport::Tcp);
 }
 
 void ConnectionBar::showCurrent(const QString &description, bool connected)
@@ -177,6 +193,7 @@ ConnectionRequest ConnectionBar::request() const
     if (profile >= 0)
         r.profile = oi::ProfileId(profile);
     r.baud = m_baud->currentData().toInt();
+    r.brcLine = oi::BrcLine(m_brcLine->currentData().toInt());
     return r;
 }
 
@@ -192,6 +209,7 @@ void ConnectionBar::setRequest(const ConnectionRequest &r)
     m_profile->setCurrentIndex(m_profile->findData(r.profile ? int(*r.profile) : -1));
     const int baud = m_baud->findData(r.baud);
     m_baud->setCurrentIndex(baud >= 0 ? baud : 0);
+    m_brcLine->setCurrentIndex(m_brcLine->findData(int(r.brcLine)));
     updateTransportFields();
 }
 
@@ -222,7 +240,7 @@ void ConnectionBar::setConnected(bool connected)
     m_lockedHint->setVisible(connected);
     m_connect->setEnabled(!connected);
     m_disconnect->setEnabled(connected);
-    for (QWidget *w : std::initializer_list<QWidget *>{m_transport, m_port, m_refresh, m_tcp, m_profile})
+    for (QWidget *w : std::initializer_list<QWidget *>{m_transport, m_port, m_refresh, m_tcp, m_profile, m_brcLine})
         w->setEnabled(!connected);
     m_baud->setEnabled(!connected && request().transport != ConnectionRequest::Transport::Virtual);
     retranslateUi();

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "brc_line.h"
 #include "robot_profile.h"
 
 #include <QString>
@@ -25,10 +26,11 @@ struct ConnectionRequest {
     quint16 tcpPort = 0;                  // TCP
     std::optional<oi::ProfileId> profile; // nullopt: detect automatically
     int baud = 0;                         // 0: the profile's default
+    oi::BrcLine brcLine = oi::BrcLine::Rts; // the wake line: the adapter's line wired to BRC
     friend bool operator==(const ConnectionRequest &, const ConnectionRequest &) = default;
 };
 
-// The connection bar: transport, port, profile, baud, Connect/Disconnect, and
+// The connection bar: transport, port, profile, baud, wake line, Connect/Disconnect, and
 // one inline error line. It validates what was typed before asking to connect.
 class ConnectionBar : public QWidget {
     Q_OBJECT
@@ -74,6 +76,7 @@ private:
     QLineEdit *m_tcp = nullptr;
     QComboBox *m_profile = nullptr;
     QComboBox *m_baud = nullptr;
+    QComboBox *m_brcLine = nullptr;
     QPushButton *m_connect = nullptr;
     QPushButton *m_disconnect = nullptr;
     QLabel *m_lockedHint = nullptr;

@@ -3576,10 +3576,6 @@ GPL-3.0-or-later.</translation>
         <translation>Aufzeichnung als CSV exportieren</translation>
     </message>
     <message>
-        <source>Save CSV as</source>
-        <translation>CSV speichern unter</translation>
-    </message>
-    <message>
         <source>CSV files (*.csv)</source>
         <translation>CSV-Dateien (*.csv)</translation>
     </message>
@@ -3620,10 +3616,6 @@ GPL-3.0-or-later.</translation>
         <translation>Aufzeichnung als MCAP exportieren</translation>
     </message>
     <message>
-        <source>Save MCAP as</source>
-        <translation>MCAP speichern unter</translation>
-    </message>
-    <message>
         <source>The recording is damaged; %1 holds everything up to the damage.
 
 %2</source>
@@ -3634,6 +3626,34 @@ GPL-3.0-or-later.</translation>
     <message>
         <source>Replay</source>
         <translation>Wiedergabe</translation>
+    </message>
+    <message>
+        <source>Export another recording as CSV…</source>
+        <translation>Andere Aufzeichnung als CSV exportieren…</translation>
+    </message>
+    <message>
+        <source>Export another recording as MCAP…</source>
+        <translation>Andere Aufzeichnung als MCAP exportieren…</translation>
+    </message>
+    <message>
+        <source>The recording on screen: a replay, or the last recording of the selected robot</source>
+        <translation>Die Aufzeichnung auf dem Bildschirm: eine Wiedergabe oder die letzte Aufzeichnung des gewählten Roboters</translation>
+    </message>
+    <message>
+        <source>Choose a recording file first, then where to write the CSV</source>
+        <translation>Zuerst eine Aufzeichnungsdatei wählen, dann wohin die CSV-Datei geschrieben wird</translation>
+    </message>
+    <message>
+        <source>Choose a recording file first, then where to write the MCAP file</source>
+        <translation>Zuerst eine Aufzeichnungsdatei wählen, dann wohin die MCAP-Datei geschrieben wird</translation>
+    </message>
+    <message>
+        <source>Choose the recording to export as %1</source>
+        <translation>Aufzeichnung für den Export als %1 wählen</translation>
+    </message>
+    <message>
+        <source>Export %1 as %2</source>
+        <translation>%1 als %2 exportieren</translation>
     </message>
 </context>
 <context>
@@ -3723,10 +3743,6 @@ GPL-3.0-or-later.</translation>
     <message>
         <source>&amp;Stop all robots	Shift+Esc</source>
         <translation>Alle Roboter an&amp;halten	Umschalt+Esc</translation>
-    </message>
-    <message>
-        <source>Roomba 500 or Create 2? (not yet identified)</source>
-        <translation>Roomba 500 oder Create 2? (noch nicht bestimmt)</translation>
     </message>
 </context>
 <context>
@@ -3895,6 +3911,14 @@ Doppelklick zum Umbenennen</translation>
     <message>
         <source>STALE</source>
         <translation>VERALTET</translation>
+    </message>
+    <message>
+        <source>The replay has ended</source>
+        <translation>Die Wiedergabe ist zu Ende</translation>
+    </message>
+    <message>
+        <source>ENDED</source>
+        <translation>ENDE</translation>
     </message>
 </context>
 <context>
@@ -4172,6 +4196,18 @@ Doppelklick zum Umbenennen</translation>
     <message>
         <source>Telemetry messages from the robot&apos;s bridge, which sends only what changed. The robot&apos;s own frame rate is on its tile in the fleet view.</source>
         <translation>Telemetrienachrichten der Bridge des Roboters, die nur Änderungen sendet. Die eigene Bildrate des Roboters steht auf seiner Kachel in der Flottenansicht.</translation>
+    </message>
+    <message>
+        <source>Roomba 500 or Create 2? (not yet identified)</source>
+        <translation>Roomba 500 oder Create 2? (noch nicht erkannt)</translation>
+    </message>
+    <message>
+        <source>Recording saved: %1</source>
+        <translation>Aufzeichnung gespeichert: %1</translation>
+    </message>
+    <message>
+        <source>  REPLAY FINISHED  </source>
+        <translation>  WIEDERGABE BEENDET  </translation>
     </message>
 </context>
 <context>
@@ -5025,6 +5061,10 @@ Gesendet: %2</translation>
         <source>Voltage</source>
         <translation>Spannung</translation>
     </message>
+    <message>
+        <source>REPLAY FINISHED — the recording has ended</source>
+        <translation>WIEDERGABE BEENDET — die Aufzeichnung ist zu Ende</translation>
+    </message>
 </context>
 <context>
     <name>SensorHistory</name>
@@ -5138,6 +5178,10 @@ Gesendet: %2</translation>
     <message>
         <source>Not live: no fresh data</source>
         <translation>Nicht live: keine frischen Daten</translation>
+    </message>
+    <message>
+        <source>Replay finished</source>
+        <translation>Wiedergabe beendet</translation>
     </message>
 </context>
 <context>

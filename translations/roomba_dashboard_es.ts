@@ -3575,10 +3575,6 @@ GPL-3.0-or-later.</translation>
         <translation>Exportar grabación como CSV</translation>
     </message>
     <message>
-        <source>Save CSV as</source>
-        <translation>Guardar CSV como</translation>
-    </message>
-    <message>
         <source>CSV files (*.csv)</source>
         <translation>Archivos CSV (*.csv)</translation>
     </message>
@@ -3619,10 +3615,6 @@ GPL-3.0-or-later.</translation>
         <translation>Exportar grabación como MCAP</translation>
     </message>
     <message>
-        <source>Save MCAP as</source>
-        <translation>Guardar MCAP como</translation>
-    </message>
-    <message>
         <source>The recording is damaged; %1 holds everything up to the damage.
 
 %2</source>
@@ -3633,6 +3625,34 @@ GPL-3.0-or-later.</translation>
     <message>
         <source>Replay</source>
         <translation>Reproducción</translation>
+    </message>
+    <message>
+        <source>Export another recording as CSV…</source>
+        <translation>Exportar otra grabación como CSV…</translation>
+    </message>
+    <message>
+        <source>Export another recording as MCAP…</source>
+        <translation>Exportar otra grabación como MCAP…</translation>
+    </message>
+    <message>
+        <source>The recording on screen: a replay, or the last recording of the selected robot</source>
+        <translation>La grabación en pantalla: una reproducción o la última grabación del robot seleccionado</translation>
+    </message>
+    <message>
+        <source>Choose a recording file first, then where to write the CSV</source>
+        <translation>Elija primero un archivo de grabación y luego dónde escribir el CSV</translation>
+    </message>
+    <message>
+        <source>Choose a recording file first, then where to write the MCAP file</source>
+        <translation>Elija primero un archivo de grabación y luego dónde escribir el archivo MCAP</translation>
+    </message>
+    <message>
+        <source>Choose the recording to export as %1</source>
+        <translation>Elija la grabación que exportar como %1</translation>
+    </message>
+    <message>
+        <source>Export %1 as %2</source>
+        <translation>Exportar %1 como %2</translation>
     </message>
 </context>
 <context>
@@ -3722,10 +3742,6 @@ GPL-3.0-or-later.</translation>
     <message>
         <source>&amp;Stop all robots	Shift+Esc</source>
         <translation>&amp;Detener todos los robots	Mayús+Esc</translation>
-    </message>
-    <message>
-        <source>Roomba 500 or Create 2? (not yet identified)</source>
-        <translation>¿Roomba 500 o Create 2? (aún sin identificar)</translation>
     </message>
 </context>
 <context>
@@ -3894,6 +3910,14 @@ Doble clic para renombrar</translation>
     <message>
         <source>STALE</source>
         <translation>OBSOLETO</translation>
+    </message>
+    <message>
+        <source>The replay has ended</source>
+        <translation>La reproducción ha terminado</translation>
+    </message>
+    <message>
+        <source>ENDED</source>
+        <translation>FIN</translation>
     </message>
 </context>
 <context>
@@ -4171,6 +4195,18 @@ Doble clic para renombrar</translation>
     <message>
         <source>Telemetry messages from the robot&apos;s bridge, which sends only what changed. The robot&apos;s own frame rate is on its tile in the fleet view.</source>
         <translation>Mensajes de telemetría del puente del robot, que solo envía lo que cambió. La tasa de tramas propia del robot está en su ficha de la vista de la flota.</translation>
+    </message>
+    <message>
+        <source>Roomba 500 or Create 2? (not yet identified)</source>
+        <translation>¿Roomba 500 o Create 2? (aún sin identificar)</translation>
+    </message>
+    <message>
+        <source>Recording saved: %1</source>
+        <translation>Grabación guardada: %1</translation>
+    </message>
+    <message>
+        <source>  REPLAY FINISHED  </source>
+        <translation>  REPRODUCCIÓN TERMINADA  </translation>
     </message>
 </context>
 <context>
@@ -5024,6 +5060,10 @@ Enviado: %2</translation>
         <source>Voltage</source>
         <translation>Tensión</translation>
     </message>
+    <message>
+        <source>REPLAY FINISHED — the recording has ended</source>
+        <translation>REPRODUCCIÓN TERMINADA — la grabación ha acabado</translation>
+    </message>
 </context>
 <context>
     <name>SensorHistory</name>
@@ -5137,6 +5177,10 @@ Enviado: %2</translation>
     <message>
         <source>Not live: no fresh data</source>
         <translation>No en directo: sin datos nuevos</translation>
+    </message>
+    <message>
+        <source>Replay finished</source>
+        <translation>Reproducción terminada</translation>
     </message>
 </context>
 <context>

@@ -42,11 +42,14 @@ void TeleopController::requestMotion(const MotionCommand &command)
     checkMode();
     if (m_passive) {
         m_pending.stop();
+        emit motionRefused(whyNoMotion());
         return;
     }
     // Without fresh data nobody can see what the robot does.
-    if (m_state != oilink::LinkState::Streaming)
+    if (m_state != oilink::LinkState::Streaming) {
+        emit motionRefused(whyNoMotion());
         return;
+    }
     if (m_pending.isActive())
         return; // the latest request goes out when the timer fires
     const qint64 since = m_lastSendMs >= 0 ? m_clock.nowMs() - m_lastSendMs : kMinIntervalMs;
@@ -74,7 +77,18 @@ bool TeleopController::sendMotion(const MotionCommand &command)
         return false;
     m_sent = command;
     m_lastSendMs = m_clock.nowMs();
+    emit motionAsked(m_sent);
     return true;
+}
+
+QString TeleopController::whyNoMotion() const
+{
+    if (m_state != oilink::LinkState::Streaming || !m_robot.mode().reported())
+        return tr("Not driving: no live data from the robot, so nobody could see it move. Wait until it streams.");
+    const RobotMode &mode = m_robot.mode();
+    if (!mode.reason().isEmpty())
+        return tr("Not driving: %1 %2").arg(mode.reason(), mode.nextStep());
+    return tr("Not driving: the robot is in Passive mode and ignores motion. Press Enter Safe to drive.");
 }
 
 void TeleopController::sendStop(bool always)
@@ -83,6 +97,8 @@ void TeleopController::sendStop(bool always)
     const bool moving = !m_sent.isStop();
     m_wanted = MotionCommand::stop(m_wanted.kind);
     m_sent = m_wanted;
+    if (moving)
+        emit motionAsked(m_sent);
     if (!moving && !always)
         return;
     if (m_robot.send(toBytes(oi::CommandEncoder(m_robot.robotProfile()).stopMotion())))

@@ -58,8 +58,12 @@ signals:
     void passiveChanged(bool passive);
     // The inputs go back to rest: a stop was decided here, not by them.
     void motionStopped();
-    // A command the profile refused; for the status bar.
+    // A command the profile refused, or motion asked of a robot that
+    // ignores it (Passive, no live data); for the status bar.
     void motionRefused(const QString &reason);
+    // What the robot is now asked to do, whichever input asked: the drive
+    // pad shows it.
+    void motionAsked(const MotionCommand &command);
 
 private:
     void sendPending();
@@ -67,6 +71,8 @@ private:
     // Sends stopMotion(); with `always`, even when nothing is moving.
     void sendStop(bool always);
     bool robotIgnoresMotion() const;
+    // Why motion asked now does not reach the robot, and what to do.
+    QString whyNoMotion() const;
 
     DriveTarget &m_robot;
     oilink::Clock &m_clock;

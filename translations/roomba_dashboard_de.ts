@@ -5812,6 +5812,21 @@ Umschalt+Esc tut dasselbe aus jedem Fenster; Leertaste oder Esc hält den ausgew
     </message>
 </context>
 <context>
+    <name>TeleopController</name>
+    <message>
+        <source>Not driving: no live data from the robot, so nobody could see it move. Wait until it streams.</source>
+        <translation>Fährt nicht: keine Live-Daten vom Roboter, niemand könnte ihn fahren sehen. Warten Sie, bis er Daten sendet.</translation>
+    </message>
+    <message>
+        <source>Not driving: %1 %2</source>
+        <translation>Fährt nicht: %1 %2</translation>
+    </message>
+    <message>
+        <source>Not driving: the robot is in Passive mode and ignores motion. Press Enter Safe to drive.</source>
+        <translation>Fährt nicht: Der Roboter ist im Passive-Modus und ignoriert Fahrbefehle. Drücken Sie „Safe aktivieren“, um zu fahren.</translation>
+    </message>
+</context>
+<context>
     <name>ValueGauge</name>
     <message>
         <source>OUT OF RANGE</source>

@@ -5811,6 +5811,21 @@ Mayús+Esc hace lo mismo desde cualquier ventana; Espacio o Esc detiene el robot
     </message>
 </context>
 <context>
+    <name>TeleopController</name>
+    <message>
+        <source>Not driving: no live data from the robot, so nobody could see it move. Wait until it streams.</source>
+        <translation>No se mueve: no llegan datos en vivo del robot, nadie podría verlo moverse. Espere a que envíe datos.</translation>
+    </message>
+    <message>
+        <source>Not driving: %1 %2</source>
+        <translation>No se mueve: %1 %2</translation>
+    </message>
+    <message>
+        <source>Not driving: the robot is in Passive mode and ignores motion. Press Enter Safe to drive.</source>
+        <translation>No se mueve: el robot está en modo Passive e ignora el movimiento. Pulse «Pasar a Safe» para conducir.</translation>
+    </message>
+</context>
+<context>
     <name>ValueGauge</name>
     <message>
         <source>OUT OF RANGE</source>

@@ -95,6 +95,7 @@ void SelectedRobotView::show(RobotSession *robot)
         connect(robot, &RobotSession::scriptShown, v.script, &ScriptEditor::showScriptReply),
         connect(robot, &RobotSession::scriptFailed, v.script, &ScriptEditor::showScriptFailed),
         connect(teleop, &TeleopController::passiveChanged, v.drivePad, &DrivePad::setPassive),
+        connect(teleop, &TeleopController::motionAsked, v.drivePad, &DrivePad::showAsked),
         connect(teleop, &TeleopController::motionStopped, this, [v] {
             v.drivePad->resetToCentre();
             v.keyboard->releaseAll();
@@ -121,6 +122,7 @@ void SelectedRobotView::show(RobotSession *robot)
     showFirmware(*robot);
     v.drivePad->setPassive(teleop->isPassive());
     v.drivePad->resetToCentre();
+    v.drivePad->showAsked(teleop->lastSent());
     v.keyboard->releaseAll();
 
     // What is connected, not what was chosen last.

@@ -19,6 +19,7 @@
 #include <QSettings>
 #include <QSignalSpy>
 #include <QStandardPaths>
+#include <QStatusBar>
 #include <QTest>
 
 #include <cmath>
@@ -338,6 +339,10 @@ private slots:
         QWidget *target = rig.area();
         QTest::keyPress(target, Qt::Key_Up);
         QCOMPARE(rig.next(), driveBytes(200, oi::kRadiusStraight));
+        // The pad shows what the keys ask of the robot: its readout, and the
+        // knob straight ahead at the speed limit.
+        QCOMPARE(rig.pad()->readout(), QString("Drive 200 mm/s, straight"));
+        QCOMPARE(rig.pad()->knobFor(rig.pad()->asked()), QPointF(0, 1));
         // Auto-repeat changes nothing.
         for (int i = 0; i < 5; ++i) {
             QKeyEvent release(QEvent::KeyRelease, Qt::Key_Up, Qt::NoModifier, QString(), true);
@@ -353,6 +358,7 @@ private slots:
         QCOMPARE(rig.next(), driveBytes(200, oi::kRadiusTurnInPlaceCounterClockwise));
         QTest::keyRelease(target, Qt::Key_A);
         QCOMPARE(rig.next(), kStop);
+        QCOMPARE(rig.pad()->readout(), QString("Stopped"));
 
         // Backwards with S, at the pad's speed limit.
         rig.pad()->setSpeedLimit(350);
@@ -500,6 +506,9 @@ private slots:
         QTest::keyPress(rig.area(), Qt::Key_Up);
         QTest::keyRelease(rig.area(), Qt::Key_Up);
         QVERIFY(rig.nothingMore());
+        // The key that could not drive says why, where the driver looks.
+        const QString said = rig.window.statusBar()->currentMessage();
+        QVERIFY2(said.contains("Not driving") && said.contains("Enter Safe"), qPrintable(said));
 
         QTest::mouseClick(enterSafe, Qt::LeftButton);
         QCOMPARE(rig.next(), QString("131"));

@@ -115,8 +115,11 @@ protected:
         p.drawLine(QPointF(c.x() - r, c.y()), QPointF(c.x() + r, c.y()));
         p.drawLine(QPointF(c.x(), c.y() - r), QPointF(c.x(), c.y() + r));
 
-        const QPointF knob = pointFor(m_pad->knob());
-        const bool moving = !m_pad->currentCommand().isStop();
+        // Dragged, the knob is under the mouse; otherwise it shows what
+        // another input (keys, a gamepad) asks of the robot.
+        const bool byPad = m_dragging || !m_pad->currentCommand().isStop();
+        const QPointF knob = pointFor(byPad ? m_pad->knob() : m_pad->knobFor(m_pad->asked()));
+        const bool moving = byPad ? !m_pad->currentCommand().isStop() : !m_pad->asked().isStop();
         p.setPen(QPen(accent, 2));
         if (moving)
             p.drawLine(c, knob);
@@ -128,8 +131,7 @@ protected:
         p.setPen(pal.color(isEnabled() ? QPalette::Active : QPalette::Disabled, QPalette::WindowText));
         const QRectF text(0, c.y() + r + 2, width(), fontMetrics().height() + 4);
         // A narrow pad shortens the readout rather than cutting it at the edges.
-        const QString readout = fontMetrics().elidedText(DrivePad::describe(m_pad->currentCommand()), Qt::ElideRight,
-                                                         width());
+        const QString readout = fontMetrics().elidedText(m_pad->readout(), Qt::ElideRight, width());
         p.drawText(text, Qt::AlignHCenter | Qt::AlignTop, readout);
     }
 
@@ -223,7 +225,7 @@ void DrivePad::changeEvent(QEvent *event)
 
 void DrivePad::updateAccessibleDescription()
 {
-    QString text = spokenDescription(m_command);
+    QString text = spokenDescription(m_command.isStop() ? m_asked : m_command);
     if (m_passive)
         text = m_passiveLabel->text();
     // Only a change is announced, so set it only when it differs.
@@ -388,6 +390,47 @@ MotionCommand DrivePad::commandAt(QPointF knob) const
     c.right = int(std::lround(right));
     c.left = int(std::lround(left));
     return c;
+}
+
+void DrivePad::showAsked(const MotionCommand &asked)
+{
+    if (asked == m_asked)
+        return;
+    m_asked = asked;
+    updateAccessibleDescription();
+    m_area->update();
+}
+
+QString DrivePad::readout() const
+{
+    return describe(m_command.isStop() ? m_asked : m_command);
+}
+
+QPointF DrivePad::knobFor(const MotionCommand &c) const
+{
+    if (c.isStop())
+        return {};
+    const double limit = c.kind == MotionCommand::Kind::DrivePwm ? kMaxPwm : std::max(1, speedLimit());
+    double ahead = 0, left = 0;
+    if (c.kind == MotionCommand::Kind::Drive) {
+        if (c.radius == oi::kRadiusTurnInPlaceCounterClockwise)
+            left = std::abs(c.velocity);
+        else if (c.radius == oi::kRadiusTurnInPlaceClockwise)
+            left = -std::abs(c.velocity);
+        else if (c.radius == oi::kRadiusStraight || c.radius == oi::kRadiusStraightAlt)
+            ahead = c.velocity;
+        else {
+            // Half way between straight and turning in place, to the side it turns.
+            ahead = c.velocity * std::sqrt(0.5);
+            left = std::abs(c.velocity) * std::sqrt(0.5) * (c.radius > 0 ? 1 : -1);
+        }
+    } else {
+        ahead = (c.right + c.left) / 2.0;
+        left = (c.right - c.left) / 2.0;
+    }
+    QPointF knob(-left / limit, ahead / limit);
+    const double length = std::hypot(knob.x(), knob.y());
+    return length > 1 ? knob / length : knob;
 }
 
 QString DrivePad::describe(const MotionCommand &c)

@@ -57,6 +57,15 @@ public:
     // for under the current mapping and speed limit.
     MotionCommand commandAt(QPointF knob) const;
     MotionCommand currentCommand() const { return m_command; }
+    // What the robot is asked now, by this pad or another input (keys, a
+    // gamepad): the readout and, while the pad is not dragged, the knob show it.
+    void showAsked(const MotionCommand &asked);
+    MotionCommand asked() const { return m_asked; }
+    // The readout under the pad: the command the robot is asked.
+    QString readout() const;
+    // Where on the pad's unit disc a command points (x right, y forward),
+    // at the current speed limit.
+    QPointF knobFor(const MotionCommand &command) const;
     QPointF knob() const { return m_knob; }
     // The round area that takes the mouse; for tests and the benchmark.
     QWidget *padArea() const { return m_area; }
@@ -94,5 +103,6 @@ private:
     QString m_reason;
     QPointF m_knob;
     MotionCommand m_command;
+    MotionCommand m_asked;
     bool m_passive = false;
 };

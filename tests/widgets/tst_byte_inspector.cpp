@@ -330,6 +330,13 @@ private slots:
         // Another robot's packets are other packets: the table starts again.
         inspector.setProfile(oi::profile(oi::ProfileId::Create1));
         QCOMPARE(model->rowCount(), 0);
+        // An IR byte reads as the character it is, not a bare number.
+        inspector.setProfile(create2);
+        oi::SensorSnapshot wall = s;
+        wall.set(17, 162);
+        inspector.addSnapshot(100.0, wall);
+        table->refresh();
+        QCOMPARE(cell(model->rowOfPacket(17), PacketTableModel::ValueColumn), QStringLiteral("162 Virtual Wall"));
     }
 
     void packetTableInsertsRowsOnceAndUpdatesCells()

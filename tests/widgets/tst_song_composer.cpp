@@ -19,6 +19,7 @@
 #include <QTabBar>
 #include <QTableWidget>
 #include <QTemporaryDir>
+#include <QWheelEvent>
 #include <QTest>
 #include <QtEndian>
 
@@ -520,6 +521,25 @@ private slots:
         s.set(37, 0);
         composer.setSnapshot(s);
         QCOMPARE(composer.playingText(), QStringLiteral("No song playing"));
+    }
+
+    // A wheel turned over the slot tabs (scrolling the dock) keeps the slot.
+    void theWheelOverTheSlotTabsKeepsTheSlot()
+    {
+        SongComposer composer;
+        composer.resize(700, 500);
+        composer.show();
+        auto *tabs = composer.findChild<QTabBar *>("slotTabs");
+        QVERIFY(tabs);
+        tabs->setCurrentIndex(3);
+        const QPoint at = tabs->tabRect(3).center();
+        for (int delta : {-120, 120, -120}) {
+            QWheelEvent wheel(at, tabs->mapToGlobal(at), QPoint(), QPoint(0, delta), Qt::NoButton, Qt::NoModifier,
+                              Qt::NoScrollPhase, false);
+            QApplication::sendEvent(tabs, &wheel);
+        }
+        QCOMPARE(tabs->currentIndex(), 3);
+        QCOMPARE(composer.currentSlot(), 3);
     }
 
     void previewFollowsAudioDevice()

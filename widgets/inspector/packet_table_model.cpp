@@ -141,6 +141,10 @@ QString PacketTableModel::valueText(int packetId) const
 {
     const oi::PacketInfo *info = m_profile->packet(packetId);
     const QString value = QString::number(m_packets[std::size_t(packetId)].value);
+    // An IR byte is a character: "162 Virtual Wall", as the diagram names it.
+    if (packetId == 17 || packetId == 52 || packetId == 53)
+        return QStringLiteral("%1 %2").arg(value, oitext::infraredName(oi::decodeIrCharacter(
+                                                      *m_profile, std::uint8_t(m_packets[std::size_t(packetId)].value))));
     // Units as the specification writes them, untranslated.
     return info && !info->unit.empty() ? value + QLatin1Char(' ') + oitext::fromView(info->unit) : value;
 }

@@ -29,8 +29,13 @@
 #include <QTabBar>
 #include <QTableWidget>
 #include <QVBoxLayout>
+#include <QWheelEvent>
 
 #include <cmath>
+
+#ifdef Q_OS_LINUX
+#include <unistd.h>
+#endif
 
 namespace {
 
@@ -53,12 +58,40 @@ QString exampleTitle(const QString &name)
     return title;
 }
 
+// Qt's audio on Linux goes through a PulseAudio (or PipeWire) server, and
+// asking it for devices with no server running prints an error on every
+// start; without one there is no output device anyway.
+bool soundServerReachable()
+{
+#ifdef Q_OS_LINUX
+    if (qEnvironmentVariableIsSet("PULSE_SERVER"))
+        return true;
+    QString runtime = qEnvironmentVariable("XDG_RUNTIME_DIR");
+    if (runtime.isEmpty())
+        runtime = QStringLiteral("/run/user/%1").arg(::getuid());
+    return QFileInfo::exists(runtime + QStringLiteral("/pulse/native"))
+        || QFileInfo::exists(QStringLiteral("/run/pulse/native"));
+#else
+    return true;
+#endif
+}
+
+// The slot tabs change only by a click or the keys: a wheel turned to
+// scroll the dock past them must not switch the slot being edited.
+class SlotTabBar : public QTabBar {
+public:
+    using QTabBar::QTabBar;
+
+protected:
+    void wheelEvent(QWheelEvent *event) override { event->ignore(); }
+};
+
 } // namespace
 
 SongComposer::SongComposer(QWidget *parent) : QWidget(parent), m_songs(16)
 {
     buildUi();
-    m_previewAvailable = !QMediaDevices::defaultAudioOutput().isNull();
+    m_previewAvailable = soundServerReachable() && !QMediaDevices::defaultAudioOutput().isNull();
     auto *preview = static_cast<QPushButton *>(control("preview"));
     preview->setEnabled(m_previewAvailable);
     retranslateUi();
@@ -146,7 +179,7 @@ void SongComposer::buildUi()
     auto *slotRow = new QHBoxLayout;
     m_slotLabel = new QLabel(this);
     slotRow->addWidget(m_slotLabel);
-    m_tabs = new QTabBar(this);
+    m_tabs = new SlotTabBar(this);
     m_tabs->setObjectName("slotTabs");
     m_tabs->setExpanding(false);
     m_tabs->setUsesScrollButtons(true);
@@ -857,7 +890,7 @@ void SongComposer::togglePreview()
         stopPreview();
         return;
     }
-    const QAudioDevice device = QMediaDevices::defaultAudioOutput();
+    const QAudioDevice device = soundServerReachable() ? QMediaDevices::defaultAudioOutput() : QAudioDevice();
     if (device.isNull()) {
         m_previewAvailable = false;
         control("preview")->setEnabled(false);

@@ -21,6 +21,7 @@
 #include "transport_factory.h"
 
 #include <QCoreApplication>
+#include <QFileInfo>
 #include <QDateTime>
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -944,6 +945,7 @@ int recordingMcap(const std::vector<std::string> &args, std::size_t from)
                   << "; exported up to there\n";
         return 1;
     }
+    std::cerr << "roomba-ctl: wrote " << out << " (" << QFileInfo(QString::fromStdString(out)).size() << " bytes)\n";
     return 0;
 }
 

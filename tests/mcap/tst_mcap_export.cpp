@@ -459,6 +459,8 @@ private slots:
         const Run ok = run(ROOMBA_CTL_PATH, {"mcap", m_recording, "-o", out, "--compression", "lz4"});
         QCOMPARE(ok.exitCode, 0);
         QVERIFY(fileBytes(out).startsWith("\x89MCAP0\r\n"));
+        // Success is said, with where the file went.
+        QVERIFY2(ok.err.contains("wrote " + out.toUtf8()) && ok.err.contains("bytes"), ok.err.constData());
     }
 };
 

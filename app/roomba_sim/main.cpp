@@ -5,6 +5,7 @@
 #include "brc_control_server.h"
 #include "firmware_banner.h"
 #include "odometry_calibration.h"
+#include "pose_report.h"
 #include "pty_robot_server.h"
 #include "real_time_robot.h"
 #include "room_file.h"
@@ -13,9 +14,12 @@
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
+#include <QElapsedTimer>
 #include <QFile>
 #include <QFileInfo>
 #include <QHostAddress>
+#include <QSocketNotifier>
+#include <QTimer>
 
 #include <cerrno>
 #include <cmath>
@@ -144,6 +148,7 @@ int main(int argc, char *argv[])
         {QStringLiteral("wheel-diameter"), QStringLiteral("The real diameter of both drive wheels in mm (documents: 72). The firmware counts by 72 mm, so the encoders lie as a real robot's do: practise calibrating."), QStringLiteral("MM")},
         {QStringLiteral("left-wheel-diameter"), QStringLiteral("The real diameter of the left wheel in mm (overrides --wheel-diameter)."), QStringLiteral("MM")},
         {QStringLiteral("right-wheel-diameter"), QStringLiteral("The real diameter of the right wheel in mm (overrides --wheel-diameter)."), QStringLiteral("MM")},
+        {QStringLiteral("report-pose"), QStringLiteral("Print the robot's true pose once a second on standard output, after the first line: position in the room, the distance from where it stood at the start, how far off its starting line and how far it turned (e.g. to check a calibration with no tape measure). Press Enter for a line at once.")},
         {QStringLiteral("wheel-base"), QStringLiteral("The real distance between the wheels in mm (documents: 235)."), QStringLiteral("MM")},
     });
 
@@ -297,6 +302,32 @@ int main(int argc, char *argv[])
 
     std::printf("%s\n", qPrintable(where));
     std::fflush(stdout);
+
+    // The true pose, sampled often enough to count every turn, printed each second.
+    std::unique_ptr<PoseReport> poseReport;
+    QTimer poseSample, posePrint;
+    QElapsedTimer sinceStart;
+    std::unique_ptr<QSocketNotifier> enterKey;
+    if (parser.isSet(QStringLiteral("report-pose"))) {
+        poseReport = std::make_unique<PoseReport>(robot->truePose());
+        sinceStart.start();
+        const auto print = [&] {
+            std::printf("%s\n", qPrintable(poseReport->line(sinceStart.elapsed() / 1000.0)));
+            std::fflush(stdout);
+        };
+        QObject::connect(&poseSample, &QTimer::timeout, &app, [&] { poseReport->sample(robot->truePose()); });
+        QObject::connect(&posePrint, &QTimer::timeout, &app, print);
+        poseSample.start(20);
+        posePrint.start(1000);
+        enterKey = std::make_unique<QSocketNotifier>(STDIN_FILENO, QSocketNotifier::Read);
+        QObject::connect(enterKey.get(), &QSocketNotifier::activated, &app, [&] {
+            char buffer[256];
+            if (::read(STDIN_FILENO, buffer, sizeof buffer) <= 0)
+                enterKey->setEnabled(false); // standard input closed: only the timer prints
+            else
+                print();
+        });
+    }
     std::fprintf(stderr, "roomba-sim: %.*s on %s%s%s\n", int(profile->name.size()), profile->name.data(), qPrintable(where),
                  linkPath.isEmpty() ? "" : " via ", qPrintable(linkPath));
 

@@ -7,12 +7,14 @@
 
 #include <QDeadlineTimer>
 #include <QFileInfo>
+#include <QMap>
 #include <QProcess>
 #include <QTcpSocket>
 #include <QTemporaryDir>
 #include <QTest>
 
 #include <cerrno>
+#include <cmath>
 #include <csignal>
 #include <cstring>
 #include <fcntl.h>
@@ -25,10 +27,12 @@ namespace {
 
 const QString kProgram = QStringLiteral(ROOMBA_SIM_PATH);
 
-QByteArray bytes(const EncodeResult &r)
+QByteArray bytes(const Bytes &b)
 {
-    return QByteArray(reinterpret_cast<const char *>(r->data()), qsizetype(r->size()));
+    return QByteArray(reinterpret_cast<const char *>(b.data()), qsizetype(b.size()));
 }
+
+QByteArray bytes(const EncodeResult &r) { return bytes(*r); }
 
 // Starts roomba-sim and returns its first line, or an empty string.
 QString startAndReadFirstLine(QProcess &process, const QStringList &arguments)
@@ -61,6 +65,7 @@ private slots:
     void helpAndVersion();
     void refusesABadRoom();
     void servesARoomAndEndsOnHangUp();
+    void reportsTheTruePose();
 };
 
 void TestRoombaSim::servesAPseudoTerminal()
@@ -242,6 +247,57 @@ void TestRoombaSim::servesARoomAndEndsOnHangUp()
     QVERIFY(wall->wallSignal() > 0);
     stopCleanly(process, SIGHUP);
     QTRY_COMPARE_WITH_TIMEOUT(client.state(), QAbstractSocket::UnconnectedState, 5000);
+}
+
+// --report-pose: the robot's true travel and turn, a line each second and
+// at once on Enter, for a calibration with no tape measure.
+void TestRoombaSim::reportsTheTruePose()
+{
+    QProcess process;
+    const QString where = startAndReadFirstLine(process, {QStringLiteral("--tcp"), QStringLiteral("0"),
+                                                          QStringLiteral("--report-pose")});
+    QVERIFY2(where.startsWith(QStringLiteral("tcp://127.0.0.1:")), qPrintable(where));
+    const auto nextPose = [&process]() -> QMap<QString, double> {
+        for (int i = 0; i < 60 && !process.canReadLine(); ++i)
+            process.waitForReadyRead(100);
+        const QString line = QString::fromLocal8Bit(process.readLine()).trimmed();
+        QMap<QString, double> fields;
+        if (!line.startsWith(QLatin1String("pose ")))
+            return fields;
+        for (const QString &part : line.split(' ', Qt::SkipEmptyParts))
+            if (part.contains('='))
+                fields.insert(part.section('=', 0, 0), part.section('=', 1).toDouble());
+        return fields;
+    };
+    QMap<QString, double> pose = nextPose();
+    QVERIFY(pose.contains("from_start") && pose.contains("turned") && pose.contains("off_line"));
+    QCOMPARE(pose.value("from_start"), 0.0);
+
+    QTcpSocket client;
+    client.connectToHost(QHostAddress::LocalHost, where.section(':', -1).toUShort());
+    QVERIFY(client.waitForConnected(5000));
+    const CommandEncoder encoder(oi::profile(ProfileId::Create2));
+    // Straight ahead until the report says it went 150 mm, then a turn to the left.
+    client.write(bytes(encoder.start()) + bytes(encoder.safe()) + bytes(encoder.drive(200, kRadiusStraight)));
+    QVERIFY(client.waitForBytesWritten(5000));
+    QDeadlineTimer deadline(20000);
+    while (pose.value("from_start") < 150 && !deadline.hasExpired())
+        pose = nextPose();
+    QVERIFY2(pose.value("from_start") >= 150, qPrintable(QString::number(pose.value("from_start"))));
+    QVERIFY(std::abs(pose.value("turned")) < 1 && std::abs(pose.value("off_line")) < 2);
+    client.write(bytes(encoder.drive(100, kRadiusTurnInPlaceCounterClockwise)));
+    QVERIFY(client.waitForBytesWritten(5000));
+    while (pose.value("turned") < 200 && !deadline.hasExpired())
+        pose = nextPose();
+    // Past half a turn the heading wraps, the turn does not.
+    QVERIFY2(pose.value("turned") >= 200, qPrintable(QString::number(pose.value("turned"))));
+    client.write(bytes(encoder.stopMotion()));
+    QVERIFY(client.waitForBytesWritten(5000));
+    // Enter asks for a line at once.
+    process.readAll();
+    process.write("\n");
+    QVERIFY(nextPose().contains("turned"));
+    stopCleanly(process);
 }
 
 QTEST_GUILESS_MAIN(TestRoombaSim)

@@ -271,7 +271,7 @@ private slots:
     void dockedTextAmongTheAnswers()
     {
         int sawDock = 0;
-        for (int startMs = 0; startMs < 1000; startMs += 50) {
+        for (int startMs = 0; startMs < 1000; startMs += 10) {
             ManualClock clock;
             SimLineTransport line(oi::ProfileId::Create2, {}, clock);
             placeOnDock(line.robot());

@@ -414,6 +414,39 @@ private slots:
         QTRY_VERIFY(watcher.lastState(QStringLiteral("r1")).value(QLatin1String("mode_reason")).isNull());
     }
 
+    // Full left on the dock: the state's mode_cause is "not_charging", and
+    // the log says it once with its fix.
+    void stateSaysTheDockDoesNotCharge()
+    {
+        MosquittoBroker broker;
+        QVERIFY2(broker.start(), qPrintable(broker.error()));
+        BridgeRig rig(QStringLiteral("r1"), addressOf(broker), BridgeRig::Robot::Recording);
+        QVERIFY(rig.streaming());
+        ConsoleClient watcher(QStringLiteral("watcher"), addressOf(broker));
+        QVERIFY(watcher.waitForState(QStringLiteral("r1"), true));
+        static QStringList logged;
+        logged.clear();
+        QLoggingCategory::setFilterRules(QStringLiteral("roomba.bridge.info=true"));
+        const QtMessageHandler previous = qInstallMessageHandler([](QtMsgType, const QMessageLogContext &c, const QString &m) {
+            if (QLatin1String(c.category) == QLatin1String("roomba.bridge") && m.startsWith(QLatin1String("mode:")))
+                logged << m;
+        });
+        rig.recording.onDock = true;
+        rig.recording.mode = int(oi::OiMode::Full);
+        // The warning waits RobotMode::kNotChargingAfterMs of frames on the dock.
+        const bool warned = QTest::qWaitFor([&] {
+            return watcher.lastState(QStringLiteral("r1")).value(QLatin1String("mode_cause")).toArray()
+                   == QJsonArray({"not_charging"});
+        }, 10000);
+        qInstallMessageHandler(previous);
+        QLoggingCategory::setFilterRules(QStringLiteral("roomba.bridge.info=false"));
+        QVERIFY(warned);
+        QCOMPARE(logged, QStringList{QStringLiteral("mode: Full mode on the dock: the battery does not charge, it drains. "
+                                                    "Enter Passive to charge it, or drive it off the dock.")});
+        rig.recording.mode = int(oi::OiMode::Passive);
+        QTRY_VERIFY(watcher.lastState(QStringLiteral("r1")).value(QLatin1String("mode_cause")).toArray().isEmpty());
+    }
+
     void allowedFullStillStopsAtACliff()
     {
         MosquittoBroker broker;

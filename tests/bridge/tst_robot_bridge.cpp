@@ -390,8 +390,9 @@ private slots:
 
     // With full allowed, the bridge does what Safe mode would: the first
     // cliff while a client drives stops the robot.
-    // Safe falling back to Passive at a cliff: the state says why, while the cliff shows.
-    void stateSaysWhyTheRobotIsInPassive()
+    // Safe falling back to Passive at a cliff: the state says why, while the
+    // cliff shows; Full on the dock: that it does not charge.
+    void stateSaysWhyTheRobotIsInItsMode()
     {
         MosquittoBroker broker;
         QVERIFY2(broker.start(), qPrintable(broker.error()));
@@ -412,18 +413,8 @@ private slots:
                  QStringLiteral("passive"));
         rig.recording.cliffLeft = false;
         QTRY_VERIFY(watcher.lastState(QStringLiteral("r1")).value(QLatin1String("mode_reason")).isNull());
-    }
 
-    // Full left on the dock: the state's mode_cause is "not_charging", and
-    // the log says it once with its fix.
-    void stateSaysTheDockDoesNotCharge()
-    {
-        MosquittoBroker broker;
-        QVERIFY2(broker.start(), qPrintable(broker.error()));
-        BridgeRig rig(QStringLiteral("r1"), addressOf(broker), BridgeRig::Robot::Recording);
-        QVERIFY(rig.streaming());
-        ConsoleClient watcher(QStringLiteral("watcher"), addressOf(broker));
-        QVERIFY(watcher.waitForState(QStringLiteral("r1"), true));
+        // Full left on the dock: "not_charging", and the log says it once with its fix.
         static QStringList logged;
         logged.clear();
         QLoggingCategory::setFilterRules(QStringLiteral("roomba.bridge.info=true"));

@@ -177,9 +177,14 @@ void ConnectionDoctor::tryBaud(qsizetype index)
             }
             // Text is the robot's own words, not bytes that make no sense.
             const qsizetype got = m_heard - qsizetype(m_textReader.counters().textBytes);
-            if (m_textBaud == baud && m_textReader.counters().textLines > 0 && got <= 0) {
+            if (m_textBaud == baud && m_textReader.counters().textLines > 0) {
+                // Readable text: this is the robot's baud; only a wake is left to try, here.
                 step(tr("At %1 it prints text but does not answer.").arg(baudName(baud)));
-            } else if (got > 0) {
+                m_bauds = {baud};
+                afterSilence();
+                return;
+            }
+            if (got > 0) {
                 m_garbledAt.append(baud);
                 step(tr("At %1: %n byte(s) that make no sense.", nullptr, int(got)).arg(baudName(baud)));
             } else {

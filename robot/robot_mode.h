@@ -24,7 +24,15 @@ public:
         None,      // nothing to explain
         Asked,     // a command the user sent put it in Passive
         Safety,    // Safe fell back to Passive by itself: a cliff, a wheel drop, the charger
+                   // (on the dock, at once: the robot refused Safe)
+        NotCharging, // Safe or Full on the charger: the battery drains there
     };
+    // Passive frames on the charger after Safe was asked before it counts as
+    // refused: frames read before the robot had the command say Passive too.
+    static constexpr int kRefusedAfterFrames = 5;
+    // How long Safe or Full stays on the charger before the warning: driving
+    // off the dock in Full takes a moment.
+    static constexpr qint64 kNotChargingAfterMs = 2000;
 
     // A new connection: nothing asked, nothing reported.
     void clear();
@@ -40,17 +48,21 @@ public:
     // "Available in modes: Safe or Full").
     bool ignoresMotion() const;
     Cause cause() const { return m_cause; }
+    // Safe fell back to Passive on the charger, and nothing else: on its dock
+    // the robot refuses Safe, and Full is the way off the dock.
+    bool safeRefusedOnDock() const;
 
-    // Why the robot is in Passive, in a sentence; empty when nothing needs
-    // explaining. Only ever about the mode reported now.
+    // Why the robot is in Passive, or that Safe or Full on the dock does
+    // not charge it, in a sentence; empty when nothing needs explaining.
+    // Only ever about the mode reported now.
     QString reason() const;
     // The same in a few words, for a fleet tile: "cliff (front left)".
     QString shortReason() const;
     // The cause as words a program reads, for the bridge's state
     // (`mode_cause`, docs/mqtt.md): "asked", or "safety" with any of
     // "cliff_left", "cliff_front_left", "cliff_front_right", "cliff_right",
-    // "wheel_drop_left", "wheel_drop_right", "wheel_drop_caster", "charger".
-    // Empty when shortReason() is.
+    // "wheel_drop_left", "wheel_drop_right", "wheel_drop_caster", "charger";
+    // or "not_charging" (Safe or Full on the dock). Empty when shortReason() is.
     QStringList causeKeys() const;
     // shortReason() of a robot whose causeKeys() are these, in this
     // program's language (a console showing another program's robot).
@@ -80,4 +92,8 @@ private:
     std::uint8_t m_cliffs = 0; // bit per oi::CliffSensor
     bool m_wheelDropLeft = false, m_wheelDropRight = false, m_wheelDropCaster = false;
     bool m_charger = false;
+    int m_passiveOnChargerSinceAsked = 0; // while Safe is asked
+    std::optional<qint64> m_onChargerSinceMs; // in Safe or Full
+    // Safe or Full on the charger long enough to warn (Cause::NotCharging).
+    bool observeCharger(const oi::SensorSnapshot &frame, qint64 atMs);
 };

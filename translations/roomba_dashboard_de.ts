@@ -2697,10 +2697,6 @@ GPL-3.0-or-later.</translation>
         <translation>In den Modus Full wechseln?</translation>
     </message>
     <message>
-        <source>Full mode turns off the cliff, wheel-drop and charger safety stops. The robot will drive off a table edge if told to. Enter Full mode?</source>
-        <translation>Der Modus Full schaltet die Sicherheitsstopps für Abgrund, Radabsenkung und Ladegerät ab. Der Roboter fährt auf Befehl auch über eine Tischkante. In den Modus Full wechseln?</translation>
-    </message>
-    <message>
         <source>Start</source>
         <translation>Start</translation>
     </message>
@@ -2771,6 +2767,10 @@ GPL-3.0-or-later.</translation>
     <message>
         <source>mode %1 (not an OI mode)</source>
         <translation>Modus %1 (kein OI-Modus)</translation>
+    </message>
+    <message>
+        <source>Full mode turns off the cliff, wheel-drop and charger safety stops. The robot will drive off a table edge if told to. It is also the way off the dock, where Safe is refused (on the dock it does not charge in Full). Enter Full mode?</source>
+        <translation>Der Full-Modus schaltet die Sicherheitsstopps für Abgrund, Radabsenkung und Ladegerät ab. Der Roboter fährt auf Befehl auch über eine Tischkante. Er ist auch der Weg von der Ladestation herunter, wo Safe verweigert wird (auf der Ladestation lädt er im Full-Modus nicht). Full-Modus einschalten?</translation>
     </message>
 </context>
 <context>
@@ -3629,19 +3629,19 @@ GPL-3.0-or-later.</translation>
     </message>
     <message>
         <source>Export another recording as CSV…</source>
-        <translation>Andere Aufzeichnung als CSV exportieren…</translation>
+        <translation>Eine andere Aufzeichnung als CSV exportieren…</translation>
     </message>
     <message>
         <source>Export another recording as MCAP…</source>
-        <translation>Andere Aufzeichnung als MCAP exportieren…</translation>
+        <translation>Eine andere Aufzeichnung als MCAP exportieren…</translation>
     </message>
     <message>
         <source>The recording on screen: a replay, or the last recording of the selected robot</source>
-        <translation>Die Aufzeichnung auf dem Bildschirm: eine Wiedergabe oder die letzte Aufzeichnung des gewählten Roboters</translation>
+        <translation>Die Aufzeichnung auf dem Bildschirm: eine Wiedergabe, oder die letzte Aufzeichnung des gewählten Roboters</translation>
     </message>
     <message>
         <source>Choose a recording file first, then where to write the CSV</source>
-        <translation>Zuerst eine Aufzeichnungsdatei wählen, dann wohin die CSV-Datei geschrieben wird</translation>
+        <translation>Zuerst eine Aufzeichnungsdatei wählen, dann wohin die CSV geschrieben wird</translation>
     </message>
     <message>
         <source>Choose a recording file first, then where to write the MCAP file</source>
@@ -3649,7 +3649,7 @@ GPL-3.0-or-later.</translation>
     </message>
     <message>
         <source>Choose the recording to export as %1</source>
-        <translation>Aufzeichnung für den Export als %1 wählen</translation>
+        <translation>Die Aufzeichnung wählen, die als %1 exportiert wird</translation>
     </message>
     <message>
         <source>Export %1 as %2</source>
@@ -3743,6 +3743,10 @@ GPL-3.0-or-later.</translation>
     <message>
         <source>&amp;Stop all robots	Shift+Esc</source>
         <translation>Alle Roboter an&amp;halten	Umschalt+Esc</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
     </message>
 </context>
 <context>
@@ -3918,7 +3922,7 @@ Doppelklick zum Umbenennen</translation>
     </message>
     <message>
         <source>ENDED</source>
-        <translation>ENDE</translation>
+        <translation>BEENDET</translation>
     </message>
 </context>
 <context>
@@ -4084,10 +4088,6 @@ Doppelklick zum Umbenennen</translation>
         <translation>Stellen Sie ihn wieder auf die Räder, dann Safe aktivieren.</translation>
     </message>
     <message>
-        <source>Take it off the charger, then Enter Safe.</source>
-        <translation>Nehmen Sie ihn vom Ladegerät, dann Safe aktivieren.</translation>
-    </message>
-    <message>
         <source>Enter Safe to drive.</source>
         <translation>Zum Fahren Safe aktivieren.</translation>
     </message>
@@ -4110,6 +4110,34 @@ Doppelklick zum Umbenennen</translation>
     <message>
         <source>Out of reach: the robot does not drive in Passive mode. %1</source>
         <translation>Nicht erreichbar: Im Modus Passive fährt der Roboter nicht. %1</translation>
+    </message>
+    <message>
+        <source>on the dock, not charging</source>
+        <translation>auf der Ladestation, lädt nicht</translation>
+    </message>
+    <message>
+        <source>Full mode on the dock: the battery does not charge, it drains.</source>
+        <translation>Full-Modus auf der Ladestation: der Akku lädt nicht, er entlädt sich.</translation>
+    </message>
+    <message>
+        <source>Safe mode on the dock: the battery does not charge, it drains.</source>
+        <translation>Safe-Modus auf der Ladestation: der Akku lädt nicht, er entlädt sich.</translation>
+    </message>
+    <message>
+        <source>The robot is on its dock: Safe mode is refused on the charger (%1).</source>
+        <translation>Der Roboter steht auf seiner Ladestation: am Ladegerät wird der Safe-Modus verweigert (%1).</translation>
+    </message>
+    <message>
+        <source>Safe refused on the dock</source>
+        <translation>Safe auf der Ladestation verweigert</translation>
+    </message>
+    <message>
+        <source>Enter Passive to charge it, or drive it off the dock.</source>
+        <translation>Passive einschalten, damit er lädt, oder ihn von der Ladestation fahren.</translation>
+    </message>
+    <message>
+        <source>Use Full to drive it off the dock, or lift it off.</source>
+        <translation>Mit Full von der Ladestation fahren, oder ihn herunterheben.</translation>
     </message>
 </context>
 <context>
@@ -5975,6 +6003,22 @@ Umschalt+Esc tut dasselbe aus jedem Fenster; Leertaste oder Esc hält den ausgew
     <message>
         <source>The wake pulse works on %1, not %2: the cable carries the robot&apos;s BRC pin on %1. Set the wake line to %1 (--brc-line %3).</source>
         <translation>Der Weckimpuls wirkt über %1, nicht über %2: Das Kabel führt den BRC-Pin des Roboters auf %1. Stellen Sie die Weckleitung auf %1 (--brc-line %3).</translation>
+    </message>
+    <message>
+        <source>At %1 the robot prints text: &quot;%2&quot;.</source>
+        <translation>Bei %1 schreibt der Roboter Text: &quot;%2&quot;.</translation>
+    </message>
+    <message>
+        <source>At %1 it prints text but does not answer.</source>
+        <translation>Bei %1 schreibt er Text, antwortet aber nicht.</translation>
+    </message>
+    <message>
+        <source>At %1 the robot prints its charging status (&quot;%2&quot;): the baud and the cable are right, and it is a Roomba on its dock. It does not answer there: asleep on its dock (firmware before release-3.8.2 / release-stm32-3.7.7 does not wake by BRC there). Press Clean, or lift it off the dock.</source>
+        <translation>Bei %1 schreibt der Roboter seinen Ladezustand (&quot;%2&quot;): Baudrate und Kabel stimmen, und es ist ein Roomba auf seiner Ladestation. Dort antwortet er nicht: er schläft auf der Ladestation (Firmware vor release-3.8.2 / release-stm32-3.7.7 wacht dort durch BRC nicht auf). Clean drücken oder ihn von der Ladestation heben.</translation>
+    </message>
+    <message>
+        <source>It prints its charging status (&quot;%1&quot;): it is on its dock.</source>
+        <translation>Er schreibt seinen Ladezustand (&quot;%1&quot;): er steht auf seiner Ladestation.</translation>
     </message>
 </context>
 <context>

@@ -2696,10 +2696,6 @@ GPL-3.0-or-later.</translation>
         <translation>¿Pasar al modo Full?</translation>
     </message>
     <message>
-        <source>Full mode turns off the cliff, wheel-drop and charger safety stops. The robot will drive off a table edge if told to. Enter Full mode?</source>
-        <translation>El modo Full desactiva las paradas de seguridad por desnivel, caída de rueda y cargador. El robot se caerá por el borde de una mesa si se le ordena. ¿Pasar al modo Full?</translation>
-    </message>
-    <message>
         <source>Start</source>
         <translation>Iniciar</translation>
     </message>
@@ -2770,6 +2766,10 @@ GPL-3.0-or-later.</translation>
     <message>
         <source>mode %1 (not an OI mode)</source>
         <translation>modo %1 (no es un modo OI)</translation>
+    </message>
+    <message>
+        <source>Full mode turns off the cliff, wheel-drop and charger safety stops. The robot will drive off a table edge if told to. It is also the way off the dock, where Safe is refused (on the dock it does not charge in Full). Enter Full mode?</source>
+        <translation>El modo Full desactiva las paradas de seguridad por precipicio, rueda caída y cargador. El robot se saldrá del borde de una mesa si se le ordena. También es la forma de sacarlo de la base, donde Safe se rechaza (en la base no carga en Full). ¿Entrar en modo Full?</translation>
     </message>
 </context>
 <context>
@@ -3636,19 +3636,19 @@ GPL-3.0-or-later.</translation>
     </message>
     <message>
         <source>The recording on screen: a replay, or the last recording of the selected robot</source>
-        <translation>La grabación en pantalla: una reproducción o la última grabación del robot seleccionado</translation>
+        <translation>La grabación en pantalla: una reproducción, o la última grabación del robot elegido</translation>
     </message>
     <message>
         <source>Choose a recording file first, then where to write the CSV</source>
-        <translation>Elija primero un archivo de grabación y luego dónde escribir el CSV</translation>
+        <translation>Elige primero un archivo de grabación, luego dónde escribir el CSV</translation>
     </message>
     <message>
         <source>Choose a recording file first, then where to write the MCAP file</source>
-        <translation>Elija primero un archivo de grabación y luego dónde escribir el archivo MCAP</translation>
+        <translation>Elige primero un archivo de grabación, luego dónde escribir el archivo MCAP</translation>
     </message>
     <message>
         <source>Choose the recording to export as %1</source>
-        <translation>Elija la grabación que exportar como %1</translation>
+        <translation>Elige la grabación que se exporta como %1</translation>
     </message>
     <message>
         <source>Export %1 as %2</source>
@@ -3742,6 +3742,10 @@ GPL-3.0-or-later.</translation>
     <message>
         <source>&amp;Stop all robots	Shift+Esc</source>
         <translation>&amp;Detener todos los robots	Mayús+Esc</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
     </message>
 </context>
 <context>
@@ -3917,7 +3921,7 @@ Doble clic para renombrar</translation>
     </message>
     <message>
         <source>ENDED</source>
-        <translation>FIN</translation>
+        <translation>TERMINADA</translation>
     </message>
 </context>
 <context>
@@ -4083,10 +4087,6 @@ Doble clic para renombrar</translation>
         <translation>Póngalo de nuevo sobre sus ruedas y pase a Safe.</translation>
     </message>
     <message>
-        <source>Take it off the charger, then Enter Safe.</source>
-        <translation>Retírelo del cargador y pase a Safe.</translation>
-    </message>
-    <message>
         <source>Enter Safe to drive.</source>
         <translation>Pase a Safe para conducir.</translation>
     </message>
@@ -4109,6 +4109,34 @@ Doble clic para renombrar</translation>
     <message>
         <source>Out of reach: the robot does not drive in Passive mode. %1</source>
         <translation>Fuera de alcance: en modo Passive el robot no conduce. %1</translation>
+    </message>
+    <message>
+        <source>on the dock, not charging</source>
+        <translation>en la base, sin cargar</translation>
+    </message>
+    <message>
+        <source>Full mode on the dock: the battery does not charge, it drains.</source>
+        <translation>Modo Full en la base: la batería no carga, se descarga.</translation>
+    </message>
+    <message>
+        <source>Safe mode on the dock: the battery does not charge, it drains.</source>
+        <translation>Modo Safe en la base: la batería no carga, se descarga.</translation>
+    </message>
+    <message>
+        <source>The robot is on its dock: Safe mode is refused on the charger (%1).</source>
+        <translation>El robot está en su base: en el cargador se rechaza el modo Safe (%1).</translation>
+    </message>
+    <message>
+        <source>Safe refused on the dock</source>
+        <translation>Safe rechazado en la base</translation>
+    </message>
+    <message>
+        <source>Enter Passive to charge it, or drive it off the dock.</source>
+        <translation>Entra en Passive para cargarlo, o sácalo de la base conduciendo.</translation>
+    </message>
+    <message>
+        <source>Use Full to drive it off the dock, or lift it off.</source>
+        <translation>Usa Full para sacarlo de la base conduciendo, o levántalo.</translation>
     </message>
 </context>
 <context>
@@ -5062,7 +5090,7 @@ Enviado: %2</translation>
     </message>
     <message>
         <source>REPLAY FINISHED — the recording has ended</source>
-        <translation>REPRODUCCIÓN TERMINADA — la grabación ha acabado</translation>
+        <translation>REPRODUCCIÓN TERMINADA — la grabación ha terminado</translation>
     </message>
 </context>
 <context>
@@ -5974,6 +6002,22 @@ Mayús+Esc hace lo mismo desde cualquier ventana; Espacio o Esc detiene el robot
     <message>
         <source>The wake pulse works on %1, not %2: the cable carries the robot&apos;s BRC pin on %1. Set the wake line to %1 (--brc-line %3).</source>
         <translation>El pulso de despertar funciona por %1, no por %2: el cable lleva el pin BRC del robot en %1. Ponga la línea de despertar en %1 (--brc-line %3).</translation>
+    </message>
+    <message>
+        <source>At %1 the robot prints text: &quot;%2&quot;.</source>
+        <translation>A %1 el robot escribe texto: &quot;%2&quot;.</translation>
+    </message>
+    <message>
+        <source>At %1 it prints text but does not answer.</source>
+        <translation>A %1 escribe texto pero no responde.</translation>
+    </message>
+    <message>
+        <source>At %1 the robot prints its charging status (&quot;%2&quot;): the baud and the cable are right, and it is a Roomba on its dock. It does not answer there: asleep on its dock (firmware before release-3.8.2 / release-stm32-3.7.7 does not wake by BRC there). Press Clean, or lift it off the dock.</source>
+        <translation>A %1 el robot escribe su estado de carga (&quot;%2&quot;): los baudios y el cable son correctos, y es un Roomba en su base. Allí no responde: duerme en su base (el firmware anterior a release-3.8.2 / release-stm32-3.7.7 no despierta por BRC allí). Pulsa Clean, o levántalo de la base.</translation>
+    </message>
+    <message>
+        <source>It prints its charging status (&quot;%1&quot;): it is on its dock.</source>
+        <translation>Escribe su estado de carga (&quot;%1&quot;): está en su base.</translation>
     </message>
 </context>
 <context>

@@ -74,8 +74,11 @@ void RobotBar::refresh()
         c.live = robot->isLive();
         if (robot->isReplay())
             c.profile = tr("Recording of %1").arg(c.profile);
-        if (robot->mode().reported())
+        if (robot->mode().reported()) {
             c.mode = oitext::modeName(*robot->mode().reported());
+            if (const QString why = robot->mode().shortReason(); !why.isEmpty())
+                c.mode = tr("%1: %2").arg(c.mode, why);
+        }
         if (robot->snapshotCount() > 0) {
             if (const auto percent = robot->latest().batteryPercent())
                 c.batteryPercent = int(std::lround(*percent));

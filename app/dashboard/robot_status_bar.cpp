@@ -29,6 +29,10 @@ RobotStatusBar::RobotStatusBar(QStatusBar *bar) : QObject(bar), m_bar(bar)
                                .arg(display::stateColor(alert, m_bar->palette()).name(),
                                     display::textOn(alert, m_bar->palette()).name()));
     m_bar->addWidget(m_stale);
+    m_modeReason = new QLabel(m_bar);
+    m_modeReason->setObjectName("modeReason");
+    m_modeReason->setVisible(false);
+    m_bar->addWidget(m_modeReason);
     m_state = label("linkState");
     m_profile = label("profile");
     m_firmware = label("firmware");
@@ -147,10 +151,16 @@ void RobotStatusBar::retranslate()
     showLive(m_live, m_replay, m_replayEnded);
 }
 
+void RobotStatusBar::showModeReason(const QString &reason)
+{
+    m_modeReason->setText(reason);
+    m_modeReason->setVisible(!reason.isEmpty());
+}
+
 QString RobotStatusBar::text() const
 {
     QStringList parts;
-    for (QLabel *l : {m_robot, m_stale})
+    for (QLabel *l : {m_robot, m_stale, m_modeReason})
         if (!l->isHidden() && !l->text().trimmed().isEmpty())
             parts << l->text().trimmed();
     for (QLabel *l : {m_state, m_profile, m_firmware, m_rate, m_errors})

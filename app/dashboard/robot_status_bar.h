@@ -29,6 +29,9 @@ public:
     // No live data: "NO LIVE DATA", or for a replay "REPLAY, NOT LIVE" and
     // at its end "REPLAY FINISHED".
     void showLive(bool live, bool replay, bool replayEnded = false);
+    // Why the robot is in its mode, and the step that fixes it (RobotMode's
+    // reason() and nextStep()); empty hides it.
+    void showModeReason(const QString &reason);
     void retranslate();
     // Every label shown, joined: for tests and screen readers.
     QString text() const;
@@ -43,6 +46,7 @@ private:
     QStatusBar *m_bar;
     QLabel *m_robot = nullptr;
     QLabel *m_stale = nullptr;
+    QLabel *m_modeReason = nullptr;
     QLabel *m_state = nullptr;
     QLabel *m_profile = nullptr;
     QLabel *m_firmware = nullptr;

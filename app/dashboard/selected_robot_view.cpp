@@ -201,7 +201,9 @@ void SelectedRobotView::showMode()
     const RobotMode &mode = session().mode();
     v.modePanel->setMode(mode);
     const QString reason = mode.reason();
-    v.drivePad->setReason(reason.isEmpty() ? QString() : reason + ' ' + mode.nextStep());
+    const QString advice = reason.isEmpty() ? QString() : reason + ' ' + mode.nextStep();
+    v.drivePad->setReason(advice);
+    v.status->showModeReason(advice);
     v.projector->setMode(mode, whyNoCommands(session()).isEmpty());
     v.songs->setPlayBlocked(mode.whyNot(oi::Command::Play));
     v.leds->setMode(mode);

@@ -9,6 +9,7 @@
 #include "snapshot_json.h"
 
 #include <QJsonArray>
+#include <utility>
 #include <QDateTime>
 #include <QJsonDocument>
 
@@ -80,7 +81,10 @@ RobotBridge::RobotBridge(RobotSession &robot, mqtt::MqttClient &broker, LeaseClo
             [this](double, const oi::SensorSnapshot &frame) { onFrame(frame); });
     connect(&m_robot, &RobotSession::stateChanged, this, &RobotBridge::onLinkState);
     connect(&m_robot, &RobotSession::profileChanged, this, [this] { publishState(); });
-    connect(&m_robot, &RobotSession::modeChanged, this, [this] { publishState(); });
+    connect(&m_robot, &RobotSession::modeChanged, this, [this] {
+        logModeReason();
+        publishState();
+    });
     connect(&m_robot, &RobotSession::firmwareChanged, this, [this] { publishState(); });
     connect(&m_robot, &RobotSession::errorOccurred, this,
             [](const QString &message) { qCWarning(lcBridge, "robot: %s", qPrintable(message)); });
@@ -538,6 +542,15 @@ void RobotBridge::publishTelemetryText(const oi::SensorSnapshot &packets, bool k
 void RobotBridge::publishStats()
 {
     m_broker.publish(mqtt::topics::stats(m_options.name), compact(oilink::statisticsToJson(m_robot.statistics())));
+}
+
+void RobotBridge::logModeReason()
+{
+    // Once per reason: why the robot is in its mode, and the step that fixes it.
+    const QString reason = m_robot.mode().reason();
+    const QString shown = reason.isEmpty() ? QString() : reason + QLatin1Char(' ') + m_robot.mode().nextStep();
+    if (std::exchange(m_loggedModeReason, shown) != shown && !shown.isEmpty())
+        qCInfo(lcBridge, "mode: %s", qPrintable(shown));
 }
 
 void RobotBridge::publishState(bool always)

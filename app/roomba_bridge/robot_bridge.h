@@ -105,6 +105,7 @@ private:
     void logRefusal(const QString &client, qsizetype bytes, const QString &error);
     void replyControl(const QString &client, bool ok, const QString &error = {});
     void publishState(bool always = false);
+    void logModeReason();
     // The battery as the state says it, to a tenth of a percent.
     std::optional<double> batteryShown() const;
     // `whole`: every packet; otherwise what changed (TelemetryChanges).
@@ -137,6 +138,7 @@ private:
     bool m_frameWaiting = false;
     bool m_shutDown = false;
     QJsonObject m_publishedState;
+    QString m_loggedModeReason;
     std::optional<double> m_publishedBattery;
     bool m_stateUnsent = false; // the broker refused the last one: try again
 };

@@ -177,6 +177,18 @@ void CommandSender::decide(const oi::SensorSnapshot &state)
     const oi::Command command = m_command.command;
     const QString name = fromStd(m_order.name);
     oi::OiMode mode = state.oiMode();
+    const bool onDock = state.chargingSource(oi::ChargingSource::HomeBase)
+                        || state.chargingSource(oi::ChargingSource::InternalCharger);
+    if (command == oi::Command::Safe && onDock) {
+        // The documents: the charger makes Safe fall back to Passive at once.
+        finish(1, QStringLiteral("%1: not sent: the robot is on its dock: Safe mode is refused on the charger; use "
+                                 "Full to drive it off the dock (send full), or lift it off")
+                      .arg(m_order.settings.describe()));
+        return;
+    }
+    if (command == oi::Command::Full && onDock)
+        emit warning(QStringLiteral("the robot is on its dock: in Full mode it does not charge, and its battery "
+                                    "drains; drive it off the dock, or send passive to charge it"));
     if (oi::needsSafeOrFull(command) && mode == oi::OiMode::Passive) {
         if (!m_order.changeMode) {
             finish(1, QStringLiteral("%1 works only in Safe or Full mode, and the robot is in Passive mode (%2): "
@@ -202,7 +214,9 @@ void CommandSender::decide(const oi::SensorSnapshot &state)
         if (state.wheelDropLeft() || state.wheelDropRight() || state.wheelDropCaster())
             emit warning(QStringLiteral("a wheel is dropped: Safe mode ignores %1 and falls back to Passive").arg(name));
         else if (state.chargingSource(oi::ChargingSource::HomeBase))
-            emit warning(QStringLiteral("the robot is on its dock: Safe mode ignores %1 and falls back to Passive").arg(name));
+            emit warning(QStringLiteral("the robot is on its dock: Safe mode ignores %1 and falls back to Passive; "
+                                        "use Full to drive it off the dock (send full), or lift it off")
+                             .arg(name));
         else if (cliff)
             emit warning(QStringLiteral("a cliff sensor sees a drop: Safe mode stops %1 toward it and falls back to Passive")
                              .arg(name));

@@ -140,8 +140,8 @@ int main(int argc, char *argv[])
         {QStringLiteral("room"), QStringLiteral("The room the robot drives in: a room file (see protocol/sim/room_format.md). Default the classroom."), QStringLiteral("FILE")},
         {QStringLiteral("asleep"), QStringLiteral("Start asleep, as after Power (133): deaf to bytes until a BRC pulse.")},
         {QStringLiteral("speed"), QStringLiteral("Run the robot's clock N times faster than real time (default 1), e.g. to watch it sleep."), QStringLiteral("N"), QStringLiteral("1")},
-        {QStringLiteral("on-dock"), QStringLiteral("Start with the robot on its dock (charging in Passive; Safe mode will not drive there).")},
-        {QStringLiteral("sleeps-while-pulsed"), QStringLiteral("Play firmware release-3.2.x: sleep after 5 minutes in Passive whatever BRC pulses come (a pulse still wakes it, except on the dock with firmware before release-3.8.2; add --firmware release-3.2.1 for its banner) (Roomba 500 and Create 2).")},
+        {QStringLiteral("on-dock"), QStringLiteral("Start with the robot on its dock: it charges in Passive and prints its charging status as text once a second (Roomba 500 and Create 2); Safe falls back to Passive there; Full stays, and the battery drains.")},
+        {QStringLiteral("sleeps-while-pulsed"), QStringLiteral("Play firmware release-3.2.x: sleep after 5 minutes in Passive whatever BRC pulses come (a pulse still wakes it, except on the dock). Its banner says release-3.2.1 unless --firmware names another; --firmware release-3.2.x alone does the same (Roomba 500 and Create 2).")},
         {QStringLiteral("brc-wired"), QStringLiteral("The cable's wake line: which adapter line reaches the robot's BRC pin, rts (default), dtr, or none (a cable without the BRC wire: no pulse wakes it). For the pseudo-terminal's control socket and RFC 2217."), QStringLiteral("LINE"), QStringLiteral("rts")},
         {QStringLiteral("wake-time"), QStringLiteral("How long after a BRC pulse wakes it the robot listens, in ms (default 300; robots in the field take up to 2000). Bytes sent sooner are lost."), QStringLiteral("MS"), QString::number(oi::RobotProfile::kWakeMs)},
         {QStringLiteral("mode-off-by-one"), QStringLiteral("Play a Wi-Fi Roomba 600 that reports its OI mode (packet 35) one too high: Passive 2, Safe 3, Full 4.")},
@@ -254,10 +254,12 @@ int main(int argc, char *argv[])
         const sim::World::Dock dock = *robot->world().dock;
         robot->placeAt(oi::Pose{dock.x, dock.y, dock.headingRad + std::acos(-1.0)});
     }
-    if (!firmware.isEmpty())
-        robot->setFirmwareRelease(firmware.toStdString());
     if (parser.isSet(QStringLiteral("sleeps-while-pulsed")) && !profile->sleepsInPassive())
         return fail(kUsageError, QStringLiteral("--sleeps-while-pulsed: the Create never sleeps; use it with roomba500 or create2"));
+    if (firmware.isEmpty() && parser.isSet(QStringLiteral("sleeps-while-pulsed")))
+        firmware = QStringLiteral("release-3.2.1"); // the firmware that does it
+    if (!firmware.isEmpty())
+        robot->setFirmwareRelease(firmware.toStdString());
     const QString wired = parser.value(QStringLiteral("brc-wired"));
     const std::optional<oi::BrcLine> brcWiredTo = oi::brcLineByName(wired.toStdString());
     if (!brcWiredTo || *brcWiredTo == oi::BrcLine::Both)

@@ -48,6 +48,12 @@ ConnectionDoctor::ConnectionDoctor(Transport &transport, std::optional<oi::Profi
             m_wokeMs = m_awakeMs;
         afterWakePulse(0);
     });
+    m_textReader.setTextHandler([this](std::string_view line) {
+        m_textLine = QString::fromLatin1(line.data(), qsizetype(line.size())).simplified();
+        if (!m_textBaud)
+            step(tr("At %1 the robot prints text: \"%2\".").arg(baudName(m_listeningBaud), m_textLine));
+        m_textBaud = m_listeningBaud;
+    });
     m_timer.setSingleShot(true);
     connect(&m_timer, &ClockTimer::timeout, this, [this] {
         if (auto then = std::exchange(m_onTimer, nullptr))
@@ -75,6 +81,8 @@ void ConnectionDoctor::start()
     m_garbledAt.clear();
     m_wakeLine = m_transport.brcLine();
     m_onOtherLine = false;
+    m_textBaud.reset();
+    m_textLine.clear();
     const int asked = m_askedBaud > 0 ? m_askedBaud : m_askedProfile ? oi::profile(*m_askedProfile).defaultBaud : 0;
     m_bauds = candidateBauds(asked);
     m_hasBaud = m_transport.setBaud(m_bauds.front());
@@ -84,11 +92,21 @@ void ConnectionDoctor::start()
     tryBaud(0);
 }
 
+void ConnectionDoctor::listenAt(int baud)
+{
+    if (baud > 0)
+        m_transport.setBaud(baud);
+    m_listeningBaud = baud;
+    m_textReader.reset();
+    m_heard = 0;
+}
+
 void ConnectionDoctor::feed(const QByteArray &data)
 {
     if (!m_listening)
         return;
     m_heard += data.size();
+    m_textReader.feed({reinterpret_cast<const std::uint8_t *>(data.constData()), std::size_t(data.size())});
     // A copy, never a share: `data` is also on its way to the window's thread.
     m_received.append(data.constData(), data.size());
     if (m_expected > 0 && m_received.size() >= m_expected && m_timer.remainingMs() > kQuietMs)
@@ -133,7 +151,7 @@ void ConnectionDoctor::askMode(bool withStart, std::function<void(bool)> then)
     m_expected = 0;
     after(kDrainMs, [this, then = std::move(then)] {
         ask(ProfileProbe::modeQuestion(), 2,
-            [then](const QByteArray &answer) { then(ProfileProbe::isModeAnswer(answer)); });
+            [then](const QByteArray &answer) { then(ProfileProbe::isModeAnswer(ProfileProbe::answerOf(answer, 2))); });
     });
 }
 
@@ -144,9 +162,7 @@ void ConnectionDoctor::tryBaud(qsizetype index)
         return;
     }
     const int baud = m_bauds[index];
-    if (baud > 0)
-        m_transport.setBaud(baud);
-    m_heard = 0;
+    listenAt(baud);
     askMode(false, [this, index, baud](bool answeredPlain) {
         if (answeredPlain) {
             step(tr("At %1 it answers.").arg(baudName(baud)));
@@ -159,7 +175,15 @@ void ConnectionDoctor::tryBaud(qsizetype index)
                 answered(baud, Finding::Healthy);
                 return;
             }
-            const qsizetype got = m_heard;
+            // Text is the robot's own words, not bytes that make no sense.
+            const qsizetype got = m_heard - qsizetype(m_textReader.counters().textBytes);
+            if (m_textBaud == baud && m_textReader.counters().textLines > 0) {
+                // Readable text: this is the robot's baud; only a wake is left to try, here.
+                step(tr("At %1 it prints text but does not answer.").arg(baudName(baud)));
+                m_bauds = {baud};
+                afterSilence();
+                return;
+            }
             if (got > 0) {
                 m_garbledAt.append(baud);
                 step(tr("At %1: %n byte(s) that make no sense.", nullptr, int(got)).arg(baudName(baud)));
@@ -175,6 +199,8 @@ void ConnectionDoctor::afterSilence()
 {
     if (!m_pulser->wake()) {
         step(m_transport.brcUnavailable() + QLatin1Char('.'));
+        if (concludeFromText())
+            return;
         if (!m_garbledAt.isEmpty())
             concludeGarbled();
         else
@@ -194,8 +220,7 @@ void ConnectionDoctor::afterWakePulse(qsizetype index)
         m_roundAfterWakeTime = sinceAwake >= kSlowWakeAfterAwakeMs;
     if (index < m_bauds.size()) {
         const int baud = m_bauds[index];
-        if (baud > 0)
-            m_transport.setBaud(baud);
+        listenAt(baud);
         askMode(true, [this, index, baud](bool ok) {
             if (ok) {
                 step(tr("At %1 it answers after the pulse.").arg(baudName(baud)));
@@ -217,7 +242,8 @@ void ConnectionDoctor::afterWakePulse(qsizetype index)
         return;
     // The three baud pulses go where the link pulses.
     m_transport.setBrcLine(m_wakeLine, m_transport.brcAssertedIsLow());
-    if (!m_hasBaud) {
+    // Readable text proves the baud: no pulses to change it.
+    if (!m_hasBaud || m_textBaud) {
         concludeSilent();
         return;
     }
@@ -248,7 +274,7 @@ void ConnectionDoctor::pulseForBaud19200()
     step(tr("2 s after the wake pulse, pulsed the BRC pin three times for 19200 baud."));
     const int wait = 3 * (BrcPulser::kBaudPulseMs + BrcPulser::kBaudGapMs) + kAfterBaudPulsesMs;
     after(wait, [this] {
-        m_transport.setBaud(19200);
+        listenAt(19200);
         askMode(true, [this](bool ok) {
             if (ok) {
                 step(tr("At 19200 baud it answers after the three pulses."));
@@ -260,8 +286,24 @@ void ConnectionDoctor::pulseForBaud19200()
     });
 }
 
+bool ConnectionDoctor::concludeFromText()
+{
+    if (!m_textBaud)
+        return false;
+    m_report.baud = *m_textBaud;
+    conclude(Finding::TextOnDock,
+             tr("At %1 the robot prints its charging status (\"%2\"): the baud and the cable are right, and it "
+                "is a Roomba on its dock. It does not answer there: asleep on its dock (firmware before "
+                "release-3.8.2 / release-stm32-3.7.7 does not wake by BRC there). Press Clean, or lift it off "
+                "the dock.")
+                 .arg(baudName(*m_textBaud), m_textLine));
+    return true;
+}
+
 void ConnectionDoctor::concludeGarbled()
 {
+    if (concludeFromText())
+        return;
     if (m_hasBaud)
         conclude(Finding::GarbledAtEveryBaud,
                  tr("Bytes come back, but at no baud do they make sense: a noisy cable, or a device "
@@ -276,6 +318,8 @@ void ConnectionDoctor::concludeGarbled()
 
 void ConnectionDoctor::concludeSilent()
 {
+    if (concludeFromText())
+        return;
     if (!m_garbledAt.isEmpty()) {
         concludeGarbled(); // it was never silent, only not making sense
         return;
@@ -292,7 +336,7 @@ void ConnectionDoctor::answered(int baud, Finding cause)
     m_report.baud = baud;
     const oi::PacketGroup *group = oi::profile(oi::ProfileId::Create2).group(kRoombaGroup);
     ask(bytes({142, std::uint8_t(kRoombaGroup)}), group->bytes, [this, baud, cause, group](const QByteArray &answer) {
-        const bool roomba = answer.size() == group->bytes;
+        const bool roomba = ProfileProbe::answerOf(answer, group->bytes).size() == group->bytes;
         const oi::ProfileId found = roomba ? oi::ProfileId::Create2 : oi::ProfileId::Create1;
         m_report.profile = found;
         step(roomba ? tr("It answers Sensors 101: a Roomba 500 or a Create 2 (they answer alike).")
@@ -341,6 +385,9 @@ void ConnectionDoctor::conclude(Finding finding, const QString &summary)
         m_transport.setBrcLine(m_wakeLine, m_transport.brcAssertedIsLow());
     m_report.finding = finding;
     m_report.summary = summary;
+    if (m_textBaud && finding != Finding::TextOnDock)
+        m_report.summary += QLatin1Char(' ')
+                            + tr("It prints its charging status (\"%1\"): it is on its dock.").arg(m_textLine);
     emit finished(m_report);
 }
 

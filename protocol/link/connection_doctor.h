@@ -6,6 +6,7 @@
 #include "link_status.h" // the metatype of oi::ProfileId
 
 #include "robot_profile.h"
+#include "stream_parser.h"
 
 #include <QByteArray>
 #include <QList>
@@ -33,6 +34,9 @@ class Transport;
 //     documents), the three pulses for 19200 baud on the wake line;
 //  3. once it answers, Sensors 101 tells a Create from a Roomba 500 /
 //     Create 2, which answer alike: which of those two only the user knows.
+// Lines of text among the answers are a docked Roomba's charging status:
+// readable, they prove the baud and the cable, and a robot on its dock,
+// whether or not it answers (then the doctor changes no baud).
 class ConnectionDoctor : public QObject {
     Q_OBJECT
 public:
@@ -47,6 +51,7 @@ public:
         WokeOnOtherLine,    // was asleep; a pulse on the other line than the wake line woke it
         OtherProfile,       // answers as another robot than the one asked for
         RoombaOrCreate2,    // a Roomba 500 or a Create 2: ask the user which
+        TextOnDock,         // prints its charging status (so the baud and cable are right) but does not answer
     };
     Q_ENUM(Finding)
 
@@ -90,6 +95,10 @@ private:
     void conclude(Finding finding, const QString &summary);
     void concludeSilent();
     void concludeGarbled();
+    // Concludes TextOnDock if the robot printed text; false if it did not.
+    bool concludeFromText();
+    // The transport now talks at `baud` (0: it has no baud of its own).
+    void listenAt(int baud);
     void step(const QString &text);
     QString baudName(int baud) const;
 
@@ -108,6 +117,10 @@ private:
     BrcLine m_wakeLine = BrcLine::Rts; // as the link was set up
     bool m_onOtherLine = false;
     QByteArray m_received;
+    oi::StreamParser m_textReader; // the robot's text among what is heard
+    int m_listeningBaud = 0;
+    std::optional<int> m_textBaud; // where the robot printed text
+    QString m_textLine;            // the last line it printed
     qsizetype m_expected = 0;
     qsizetype m_heard = 0; // bytes heard at the baud being tried
     bool m_listening = false;

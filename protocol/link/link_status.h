@@ -29,7 +29,8 @@ struct LinkStats {
     quint64 replies = 0;             // good replies to sensor queries
     quint64 checksumFailures = 0;
     quint64 resyncs = 0;             // frames refused for a length mismatch
-    quint64 bytesDiscarded = 0;      // bytes that belonged to no good frame or reply
+    quint64 bytesDiscarded = 0;      // bytes that belonged to no good frame, reply or line of text
+    quint64 textLines = 0;           // lines of text the robot printed between frames (RobotLink::robotText)
     quint64 bytesReceived = 0;
     quint64 bytesSent = 0;
     quint32 reconnects = 0;          // times the port came back after it was lost

@@ -3,6 +3,8 @@
 
 #include "transport.h"
 
+#include "stream_parser.h"
+
 namespace oilink {
 
 namespace {
@@ -25,6 +27,15 @@ bool ProfileProbe::isModeAnswer(const QByteArray &answer)
 {
     const auto at = [&](qsizetype i) { return static_cast<std::uint8_t>(answer.at(i)); };
     return answer.size() == 2 && at(0) >= 1 && at(0) <= kModeMax && (at(1) & kBumpBitsUnused) == 0;
+}
+
+QByteArray ProfileProbe::answerOf(const QByteArray &received, qsizetype size)
+{
+    if (received.size() == size)
+        return received;
+    const std::vector<std::uint8_t> rest = oi::withoutTextLines(
+        {reinterpret_cast<const std::uint8_t *>(received.constData()), std::size_t(received.size())});
+    return QByteArray(reinterpret_cast<const char *>(rest.data()), qsizetype(rest.size()));
 }
 
 bool ProfileProbe::dependsOnRoombaOrCreate2(int id)
@@ -117,8 +128,8 @@ void ProfileProbe::onTimeout()
         ask(modeQuestion(), 2, Step::AskMode);
         return;
     case Step::AskMode: {
-        if (isModeAnswer(m_received)) {
-            m_mode = static_cast<oi::OiMode>(m_received.at(0));
+        if (const QByteArray answer = answerOf(m_received, 2); isModeAnswer(answer)) {
+            m_mode = static_cast<oi::OiMode>(answer.at(0));
             const oi::PacketGroup *group = oi::profile(oi::ProfileId::Create2).group(101);
             ask(bytes({142, 101}), group->bytes, Step::AskRoombaGroup);
         } else if (!m_startSent && m_startPolicy == StartPolicy::IfSilent) {
@@ -134,7 +145,7 @@ void ProfileProbe::onTimeout()
         return;
     }
     case Step::AskRoombaGroup:
-        finish(m_received.size() == m_expected ? oi::ProfileId::Create2 : oi::ProfileId::Create1);
+        finish(answerOf(m_received, m_expected).size() == m_expected ? oi::ProfileId::Create2 : oi::ProfileId::Create1);
         return;
     }
 }

@@ -59,6 +59,9 @@ public:
     static QByteArray modeQuestion() { return bytesOf({149, 2, 35, 7}); }
     // Exactly two bytes: a mode of 1..3 and a bumps byte with bits 5..7 clear.
     static bool isModeAnswer(const QByteArray &answer);
+    // The unframed answer of `size` bytes among what was received: as it
+    // came, or with the lines of text a docked robot prints taken out.
+    static QByteArray answerOf(const QByteArray &received, qsizetype size);
     // Whether `detected` means "a Roomba 500 or a Create 2" rather than a
     // certain answer.
     static bool isRoombaOrCreate2(oi::ProfileId detected) { return detected != oi::ProfileId::Create1; }

@@ -71,6 +71,8 @@ void add(oi::ParserCounters &to, const oi::ParserCounters &from)
     to.checksumFailures += from.checksumFailures;
     to.lengthMismatches += from.lengthMismatches;
     to.bytesDiscarded += from.bytesDiscarded;
+    to.textBytes += from.textBytes;
+    to.textLines += from.textLines;
 }
 } // namespace
 
@@ -101,6 +103,9 @@ RobotLink::RobotLink(Clock &clock, QObject *parent)
         if (m_modeReading.read(corrected, m_clock.nowNs() / 1'000'000))
             emit modeReportedOneHigh();
         dispatch(corrected);
+    });
+    m_parser.setTextHandler([this](std::string_view line) {
+        emit robotText(QString::fromLatin1(line.data(), qsizetype(line.size())));
     });
     for (ClockTimer *t : {&m_watchdog, &m_noData, &m_reconnect, &m_probeRetry, &m_queryQuiet, &m_queryTimeout,
                           &m_statsSoon})
@@ -189,6 +194,9 @@ void RobotLink::close()
 {
     if (m_state == LinkState::Closed)
         return;
+    m_parser.setTextHandler([this](std::string_view line) {
+        emit robotText(QString::fromLatin1(line.data(), qsizetype(line.size())));
+    });
     for (ClockTimer *t : {&m_watchdog, &m_noData, &m_reconnect, &m_probeRetry, &m_queryQuiet, &m_queryTimeout,
                           &m_statsSoon, &m_statsTick})
         t->stop();
@@ -558,7 +566,7 @@ void RobotLink::onBytes(const QByteArray &bytes)
     }
     const oi::ParserCounters &after = m_parser.counters();
     if (after.checksumFailures != before.checksumFailures || after.lengthMismatches != before.lengthMismatches
-        || after.bytesDiscarded != before.bytesDiscarded)
+        || after.bytesDiscarded != before.bytesDiscarded || after.textLines != before.textLines)
         scheduleStats();
 }
 
@@ -863,6 +871,9 @@ void RobotLink::startDoctor()
     if (m_streamRequested)
         writeBytes(toBytes(oi::CommandEncoder(*m_profile).stopMotion()));
     m_streamRequested = false;
+    m_parser.setTextHandler([this](std::string_view line) {
+        emit robotText(QString::fromLatin1(line.data(), qsizetype(line.size())));
+    });
     for (ClockTimer *t : {&m_watchdog, &m_noData, &m_probeRetry})
         t->stop();
     if (m_probe) {
@@ -966,6 +977,7 @@ LinkStats RobotLink::currentStatistics() const
     s.checksumFailures = c.checksumFailures;
     s.resyncs = c.lengthMismatches;
     s.bytesDiscarded = c.bytesDiscarded;
+    s.textLines = c.textLines;
     s.framesPerSecond = m_framesPerSecond;
     if (m_lastFrameMs >= 0)
         s.lastFrameTime = QDateTime::fromMSecsSinceEpoch(m_lastFrameMs, Qt::UTC);

@@ -143,6 +143,10 @@ signals:
     void sensorQueryFailed(const QString &message);
     void connectionCheckStep(const QString &step);
     void connectionChecked(const oilink::ConnectionDoctor::Report &report);
+    // A line of text the robot printed between frames (a docked Roomba 500
+    // / 600's charging status, "bat:   min 0  sec 12  mV 16421 ..."), read
+    // as words, not counted as discarded bytes.
+    void robotText(const QString &line);
     void rawBytesSent(const QByteArray &bytes);
     void rawBytesReceived(const QByteArray &bytes);
     void errorOccurred(const QString &message);

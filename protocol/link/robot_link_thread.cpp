@@ -182,6 +182,7 @@ void RobotLinkThread::start()
     relay(link, &RobotLink::connectionCheckStep, [this](const QString &s) { emit connectionCheckStep(s); });
     relay(link, &RobotLink::connectionChecked,
           [this](const ConnectionDoctor::Report &r) { emit connectionChecked(r); });
+    relay(link, &RobotLink::robotText, [this](const QString &line) { emit robotText(line); });
     relay(link, &RobotLink::rawBytesSent, [this](const QByteArray &b) { emit rawBytesSent(b); });
     relay(link, &RobotLink::errorOccurred, [this](const QString &m) { emit errorOccurred(m); });
     relay(link, &RobotLink::recordingStatus, [this](const RecordingStatus &st) { emit recordingStatus(st); });

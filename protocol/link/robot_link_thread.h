@@ -90,6 +90,7 @@ signals:
     void modeReportedOneHigh();                 // see RobotLink::modeReportedOneHigh
     void connectionCheckStep(const QString &step);
     void connectionChecked(const oilink::ConnectionDoctor::Report &report);
+    void robotText(const QString &line);        // see RobotLink::robotText
     void rawBytesSent(const QByteArray &bytes);
     void rawBytesReceived(const QByteArray &bytes);
     void errorOccurred(const QString &message);

@@ -7,6 +7,28 @@
 namespace oi {
 namespace {
 constexpr std::uint8_t kHeader = 19;
+constexpr bool isLineEnd(std::uint8_t b) { return b == '\r' || b == '\n'; }
+} // namespace
+
+std::vector<std::uint8_t> withoutTextLines(std::span<const std::uint8_t> bytes)
+{
+    std::vector<std::uint8_t> rest;
+    std::size_t at = 0;
+    while (at < bytes.size()) {
+        std::size_t end = at;
+        while (end < bytes.size() && isTextByte(bytes[end]))
+            ++end;
+        if (end - at >= StreamParser::kMinTextLine && end - at <= StreamParser::kMaxTextLine && end < bytes.size()
+            && isLineEnd(bytes[end])) {
+            while (end < bytes.size() && isLineEnd(bytes[end]))
+                ++end;
+        } else {
+            end = std::max(end, at + 1);
+            rest.insert(rest.end(), bytes.begin() + std::ptrdiff_t(at), bytes.begin() + std::ptrdiff_t(end));
+        }
+        at = end;
+    }
+    return rest;
 }
 
 StreamParser::StreamParser(const RobotProfile &profile) : m_profile(&profile), m_scratch(profile) {}
@@ -72,6 +94,43 @@ void StreamParser::reset()
     m_frameEnd = 0;
     m_replies.clear();
     m_counters = {};
+    m_textLength = 0;
+    m_afterLine = false;
+}
+
+void StreamParser::dropPendingText()
+{
+    m_counters.bytesDiscarded += m_textLength;
+    m_textLength = 0;
+    m_afterLine = false;
+}
+
+void StreamParser::skip(std::span<const std::uint8_t> bytes)
+{
+    for (const std::uint8_t b : bytes) {
+        if (isLineEnd(b)) {
+            if (m_textLength >= kMinTextLine) {
+                ++m_counters.textLines;
+                m_counters.textBytes += m_textLength + 1;
+                if (m_textHandler)
+                    m_textHandler({m_text.data(), m_textLength});
+                m_textLength = 0;
+                m_afterLine = true;
+            } else if (m_textLength == 0 && m_afterLine) {
+                ++m_counters.textBytes;
+            } else {
+                dropPendingText();
+                ++m_counters.bytesDiscarded;
+            }
+        } else if (isTextByte(b)) {
+            if (m_textLength == kMaxTextLine)
+                dropPendingText();
+            m_text[m_textLength++] = char(b);
+        } else {
+            dropPendingText();
+            ++m_counters.bytesDiscarded;
+        }
+    }
 }
 
 void StreamParser::feed(std::span<const std::uint8_t> bytes)
@@ -96,7 +155,7 @@ void StreamParser::finish()
     while (m_length > 0 && m_replies.empty()) {
         // process() left the buffer at the header of a frame that never
         // completed (or at a lone header byte): give that header up.
-        ++m_counters.bytesDiscarded;
+        skip({m_buffer.data(), 1});
         std::size_t used = 1;
         std::memmove(m_buffer.data(), m_buffer.data() + used, m_length - used);
         m_length -= used;
@@ -104,6 +163,8 @@ void StreamParser::finish()
         std::memmove(m_buffer.data(), m_buffer.data() + used, m_length - used);
         m_length -= used;
     }
+    if (m_replies.empty())
+        dropPendingText(); // no line end will come
 }
 
 // Consumes what it can from the buffer; returns how many bytes it used.
@@ -117,6 +178,7 @@ std::size_t StreamParser::process()
             PendingReply &reply = m_replies.front();
             if (avail < reply.bytes)
                 break;
+            dropPendingText();
             m_frameEnd = m_fed - m_length + pos + reply.bytes;
             decodeReply(reply, {buf + pos, reply.bytes});
             ++m_counters.repliesGood;
@@ -128,12 +190,12 @@ std::size_t StreamParser::process()
 
         const void *found = std::memchr(buf + pos, kHeader, avail);
         if (!found) {
-            m_counters.bytesDiscarded += avail;
+            skip({buf + pos, avail});
             pos = m_length;
             break;
         }
         const std::size_t header = static_cast<std::size_t>(static_cast<const std::uint8_t *>(found) - buf);
-        m_counters.bytesDiscarded += header - pos;
+        skip({buf + pos, header - pos});
         pos = header;
         if (m_length - pos < 2)
             break;
@@ -142,7 +204,7 @@ std::size_t StreamParser::process()
         // The smallest frame carries one id and one data byte.
         if (n < 2 || (m_expectedLength >= 0 && n != static_cast<std::size_t>(m_expectedLength))) {
             ++m_counters.lengthMismatches;
-            ++m_counters.bytesDiscarded;
+            skip({buf + pos, 1});
             ++pos;
             continue;
         }
@@ -156,17 +218,18 @@ std::size_t StreamParser::process()
             sum += buf[pos + i];
         if ((sum & 0xFF) != 0) {
             ++m_counters.checksumFailures;
-            ++m_counters.bytesDiscarded;
+            skip({buf + pos, 1});
             ++pos;
             continue;
         }
         if (!decodePayload({buf + pos + 2, n})) {
             ++m_counters.lengthMismatches;
-            ++m_counters.bytesDiscarded;
+            skip({buf + pos, 1});
             ++pos;
             continue;
         }
         ++m_counters.framesGood;
+        dropPendingText(); // the robot writes a line whole: one cut by a frame was no line
         m_frameEnd = m_fed - m_length + pos + frameSize;
         if (m_handler)
             m_handler(m_scratch, FrameKind::Stream);

@@ -8,18 +8,24 @@
 #include <deque>
 #include <functional>
 #include <span>
+#include <string_view>
 #include <vector>
 
 namespace oi {
 
 enum class FrameKind : std::uint8_t { Stream, Reply };
 
+// A byte of the robot's text: printable ASCII or a tab (CR and LF end lines).
+constexpr bool isTextByte(std::uint8_t b) { return (b >= 0x20 && b < 0x7F) || b == '\t'; }
+
 struct ParserCounters {
     std::uint64_t framesGood = 0;       // stream frames decoded
     std::uint64_t repliesGood = 0;      // 142 / 149 replies decoded
     std::uint64_t checksumFailures = 0; // candidate frames whose sum was not 0
     std::uint64_t lengthMismatches = 0; // n-bytes impossible, or disagreeing with the packets
-    std::uint64_t bytesDiscarded = 0;   // bytes that belonged to no good frame or reply
+    std::uint64_t bytesDiscarded = 0;   // bytes that belonged to no good frame, reply or text line
+    std::uint64_t textBytes = 0;        // printable lines between frames (the robot's own words), ends included
+    std::uint64_t textLines = 0;
     friend bool operator==(const ParserCounters &, const ParserCounters &) = default;
 };
 
@@ -33,6 +39,14 @@ struct ParserCounters {
 // ERRATA 3: replies carry no framing; their length comes from the packet
 //   table, so the caller announces each request with expectReply().
 //
+// Text: between frames a docked Roomba 500 / 600 prints its charging status
+//   ("bat:   min 0  sec 12  mV 16421 ..."), and Reset prints a banner. A run
+//   of at least kMinTextLine printable characters ended by CR or LF, outside
+//   any frame or reply, is such a line: it goes to the text handler and
+//   counts as text, not as discarded. Byte 19 is not printable, so text
+//   never hides a frame's header. The robot writes a line whole, between
+//   frames: printable bytes cut short by a frame or reply are discarded.
+//
 // The parser keeps a fixed buffer and allocates nothing per byte.
 class StreamParser {
 public:
@@ -41,6 +55,10 @@ public:
         LegacyExcludeHeader, // what two of the documents' examples show
     };
     using SnapshotHandler = std::function<void(const SensorSnapshot &, FrameKind)>;
+    // A line of text from the robot, without its CR / LF.
+    using TextHandler = std::function<void(std::string_view line)>;
+    static constexpr std::size_t kMinTextLine = 4;
+    static constexpr std::size_t kMaxTextLine = 160; // longer runs are not the robot's lines
 
     explicit StreamParser(const RobotProfile &profile = oi::profile(ProfileId::Create2));
 
@@ -48,6 +66,7 @@ public:
     const RobotProfile &robotProfile() const { return *m_profile; }
     void setChecksumMode(ChecksumMode mode) { m_checksumMode = mode; }
     void setSnapshotHandler(SnapshotHandler handler) { m_handler = std::move(handler); }
+    void setTextHandler(TextHandler handler) { m_textHandler = std::move(handler); }
 
     // The packet list the stream was started with. With it, a frame whose
     // n-bytes or packet ids disagree is refused at once; without it, any
@@ -80,6 +99,9 @@ public:
     const ParserCounters &counters() const { return m_counters; }
     // Bytes held while waiting for the rest of a frame or reply.
     std::size_t pendingBytes() const { return m_length; }
+    // Printable bytes outside frames held until a line end shows whether
+    // they are text (or a non-printable byte shows they are not).
+    std::size_t pendingTextBytes() const { return m_textLength; }
     // Forgets buffered bytes, pending replies and counters.
     void reset();
 
@@ -91,6 +113,9 @@ private:
     };
 
     std::size_t process();
+    // Bytes outside any frame or reply: text lines, or discarded.
+    void skip(std::span<const std::uint8_t> bytes);
+    void dropPendingText();
     bool decodePayload(std::span<const std::uint8_t> payload);
     void decodeReply(const PendingReply &reply, std::span<const std::uint8_t> data);
     std::size_t payloadSize(std::span<const std::uint8_t> packetIds) const;
@@ -100,6 +125,7 @@ private:
     const RobotProfile *m_profile;
     ChecksumMode m_checksumMode = ChecksumMode::IncludeHeader;
     SnapshotHandler m_handler;
+    TextHandler m_textHandler;
     std::vector<std::uint8_t> m_expectedIds;
     int m_expectedLength = -1; // n-bytes of the expected stream, -1 = any
     std::deque<PendingReply> m_replies;
@@ -109,6 +135,14 @@ private:
     std::uint64_t m_fed = 0;      // bytes fed; the buffer holds the last m_length of them
     std::uint64_t m_frameEnd = 0; // see frameEndOffset()
     std::array<std::uint8_t, kCapacity> m_buffer{};
+    std::array<char, kMaxTextLine> m_text{};
+    std::size_t m_textLength = 0;
+    bool m_afterLine = false; // the last byte skipped ended a text line: CR LF and blank lines are text too
 };
+
+// `bytes` without the robot's lines of text, read as StreamParser reads
+// them (and the line ends after them): for a reader waiting for an unframed
+// reply while a docked robot prints its charging status.
+std::vector<std::uint8_t> withoutTextLines(std::span<const std::uint8_t> bytes);
 
 } // namespace oi

@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <deque>
 #include <random>
 #include <utility>
@@ -33,6 +34,7 @@ constexpr Microseconds kBaudSettle = 100ms;
 constexpr Microseconds kStartBeep = 125ms;
 constexpr Microseconds kStopSong = 1s;
 constexpr Microseconds kSleepAfter = std::chrono::seconds(oi::RobotProfile::kPassiveSleepSeconds);
+constexpr Microseconds kChargingTextPeriod = 1s;
 constexpr long long kWeekMicros = 7LL * 24 * 60 * 60 * 1'000'000;
 
 constexpr double kPi = 3.14159265358979323846;
@@ -167,6 +169,7 @@ struct VirtualRobot::State {
     Microseconds baudSettlesAt{0};
     std::string firmwareRelease = "release-3.8.2";
     Quirks quirks;
+    bool release32 = false; // the firmware is release-3.2.x
     double angleFactor = 1; // raw packet 20 units per degree
     std::string lastSafetyStop;
     Microseconds lastActivity{0};
@@ -219,6 +222,8 @@ struct VirtualRobot::State {
 
     double chargeMah = kStartChargeMah;
     double temperatureC = 24;
+    std::optional<Microseconds> chargingSince; // while charging: when it began, for the status text
+    Microseconds nextChargingText{0};
 
     std::vector<std::uint8_t> streamIds;
     bool streaming = false;
@@ -262,14 +267,18 @@ struct VirtualRobot::State {
     bool onDock() { return floorContact().onDockContacts; }
     // The charger charges in Passive (and while off or asleep), not in Safe or Full.
     bool charging() { return onDock() && (mode == OiMode::Passive || mode == OiMode::Off); }
+    // Roomba 500 / 600 firmware prints its charging status as text on the
+    // serial line; the Create does not.
+    bool printsChargingText() const { return !create1(); }
 
     // --- Output and faults ---
 
     bool chance(double p) { return p > 0 && rng() < p * 4294967296.0; }
 
-    void emit(std::span<const std::uint8_t> bytes)
+    // `evenAsleep`: the charger's own text, printed while the OI sleeps.
+    void emit(std::span<const std::uint8_t> bytes, bool evenAsleep = false)
     {
-        if (disconnected || asleep || now < stallUntil)
+        if (disconnected || (asleep && !evenAsleep) || now < stallUntil)
             return;
         for (std::uint8_t b : bytes) {
             if (chance(faults.strayHeader))
@@ -324,6 +333,8 @@ struct VirtualRobot::State {
     }
 
     bool sleepsWhenIdle() const { return profile->sleepsInPassive(); }
+    // Firmware release-3.2.x does so (owners' reports); any robot with the quirk.
+    bool sleepsWhilePulsed() const { return quirks.sleepsWhilePulsed || release32; }
 
     bool wakesOnDock() const
     {
@@ -352,7 +363,7 @@ struct VirtualRobot::State {
         }
         if (event == BrcPin::Event::RoseForBaud19200)
             baud = 19200;
-        if (event == BrcPin::Event::Fell && !quirks.sleepsWhilePulsed)
+        if (event == BrcPin::Event::Fell && !sleepsWhilePulsed())
             lastActivity = now; // in Passive, restarts the count to sleep
     }
 
@@ -389,8 +400,52 @@ struct VirtualRobot::State {
         baud = profile->defaultBaud;
         wait.reset();
         endScript();
-        const std::string banner = bannerFor(firmwareRelease);
-        emit(std::span(reinterpret_cast<const std::uint8_t *>(banner.data()), banner.size()));
+        emitText(bannerFor(firmwareRelease));
+        if (onDock() && printsChargingText()) {
+            // On the dock the firmware goes on to report the charger it found.
+            emitText("charger-present\r\n");
+            chargingSince = now;
+            emitChargingStatus();
+        }
+    }
+
+    void emitText(const std::string &text, bool evenAsleep = false)
+    {
+        emit(std::span(reinterpret_cast<const std::uint8_t *>(text.data()), text.size()), evenAsleep);
+    }
+
+    // The line real Roomba 500 / 600 robots print about once a second while
+    // they charge, between stream frames, even while the OI sleeps on the
+    // dock (owners' logs; not in the documents, which therefore do not fix
+    // its format). "state" is the charging state as packet 21 gives it,
+    // "mode" the OI mode.
+    void emitChargingStatus()
+    {
+        const long long seconds = std::chrono::duration_cast<std::chrono::seconds>(now - chargingSince.value_or(now)).count();
+        const oi::SensorSnapshot s = readSensors(false, false);
+        char line[160];
+        std::snprintf(line, sizeof line,
+                      "bat:   min %lld  sec %lld  mV %d  mA %d  tenths-deg %d  mAH %d  state %d  mode %d\r\n",
+                      seconds / 60, seconds % 60, int(s.raw(22)), int(s.raw(23)), int(s.raw(24)) * 10, int(s.raw(25)),
+                      int(s.raw(21)), int(mode));
+        emitText(line, true);
+        nextChargingText = now + kChargingTextPeriod;
+    }
+
+    // Once a second while charging, between two frames (the tick after one).
+    void printChargingText()
+    {
+        if (!charging() || !printsChargingText()) {
+            chargingSince.reset();
+            return;
+        }
+        if (!chargingSince) {
+            chargingSince = now;
+            nextChargingText = now + kChargingTextPeriod;
+        }
+        // Not at a frame's time: the line goes between two frames.
+        if (now >= nextChargingText && now.count() % kStreamPeriod.count() != 0)
+            emitChargingStatus();
     }
 
     // --- Driving ---
@@ -508,8 +563,9 @@ struct VirtualRobot::State {
     {
         if (charging())
             return chargeMah < kTrickleFrom * kCapacityMah ? kFastChargeMa : kTrickleChargeMa;
-        if (onDock())
-            return 0; // Safe or Full on the dock: the charger carries the load
+        // Safe or Full on the dock is not charged (the Create 2 document:
+        // "will deeply discharge its battery, even if plugged into the
+        // charger"): the battery carries the robot's own load, as off it.
         if (asleep)
             return -kAsleepMa;
         double load = kIdleMa + std::abs(leftMotorMa()) + std::abs(rightMotorMa());
@@ -655,6 +711,7 @@ struct VirtualRobot::State {
     {
         if (pushedButtons && now >= pushedUntil)
             pushedButtons = 0;
+        printChargingText();
         if (asleep)
             return;
         checkSafety();
@@ -1172,11 +1229,15 @@ void VirtualRobot::setFirmwareRelease(std::string release)
     State &s = *m_state;
     s.firmwareRelease = std::move(release);
     s.angleFactor = 1;
-    // Create 2 Appendix B: old Roomba-family firmware sends the angle scaled.
-    if (!s.create1())
-        if (const auto info = oi::parseFirmwareBanner("r3_robot/tags/" + s.firmwareRelease + ":"))
-            if (info->version <= kAngleFixedAfter)
-                s.angleFactor = kOldFirmwareAngleFactor;
+    s.release32 = false;
+    if (s.create1())
+        return;
+    if (const auto info = oi::parseFirmwareBanner("r3_robot/tags/" + s.firmwareRelease + ":")) {
+        // Create 2 Appendix B: old Roomba-family firmware sends the angle scaled.
+        if (info->version <= kAngleFixedAfter)
+            s.angleFactor = kOldFirmwareAngleFactor;
+        s.release32 = info->version.major == 3 && info->version.minor == 2;
+    }
 }
 
 void VirtualRobot::setQuirks(Quirks quirks) { m_state->quirks = quirks; }

@@ -101,12 +101,15 @@ public:
     // (Quirks::brcWiredTo), and asserted pulls the pin low, as on FTDI-style
     // cables.
     void setModemLine(oi::BrcLine lines, bool asserted);
-    void setFirmwareRelease(std::string release); // e.g. "release-3.4.1"; printed on Reset
+    // e.g. "release-3.4.1"; printed on Reset. Release-3.2.x sleeps while
+    // pulsed (Quirks::sleepsWhilePulsed).
+    void setFirmwareRelease(std::string release);
     // What only some robots do in the field (off by default, as the
     // documents say robots behave).
     struct Quirks {
         // Firmware release-3.2.x: sleeps after 5 minutes in Passive whatever
-        // BRC pulses come; a pulse still wakes it (off the dock).
+        // BRC pulses come; a pulse still wakes it (off the dock). A robot
+        // whose setFirmwareRelease() is release-3.2.x does so without it.
         bool sleepsWhilePulsed = false;
         // Some Wi-Fi Roomba 600s: packet 35 reads one too high (Passive 2,
         // Safe 3, Full 4).
@@ -139,6 +142,11 @@ public:
     std::array<int, 3> motorPwm() const;           // 144, as sent
     std::uint8_t digitalOutputs() const;           // 147 (Create 1)
     oi::Bytes script() const;                      // 152 body (Create 1)
+    // Charged in Passive (or Off) on the dock; in Safe or Full on the dock
+    // it drains by the robot's own load, as the Create 2 document warns.
+    // While it charges, a Roomba 500 / 600 prints a status line once a
+    // second between frames ("bat:   min 0  sec 12  mV 16421  mA 1183 ..."),
+    // and Reset on the dock adds the charger's lines to the banner.
     double batteryChargeMah() const;
     void setBatteryChargeMah(double mah);
     // Why Safe mode last fell back to Passive ("cliff", "wheel drop", "charger"), or empty.

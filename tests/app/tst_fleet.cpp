@@ -420,8 +420,10 @@ private slots:
         QVERIFY(window.drivePad()->findChild<QPushButton *>("enterSafe")->isVisibleTo(window.drivePad()));
         QCOMPARE(window.projectorView()->reasonText(), why);
         QVERIFY(window.projectorView()->headerText().contains("Passive"));
-        // Each robot's card, its own mode.
-        QCOMPARE(window.robotList()->card(0)->values().mode, QString("Passive"));
+        QVERIFY2(window.statusText().contains(why), qPrintable(window.statusText()));
+        // Each robot's card, its own mode, with why in a few words.
+        QVERIFY2(window.robotList()->card(0)->values().mode.startsWith("Passive: cliff ("),
+                 qPrintable(window.robotList()->card(0)->values().mode));
         QCOMPARE(window.robotList()->card(1)->values().mode, QString("Safe"));
 
         // Robot 2 shows its own: Safe, nothing to explain.
@@ -431,6 +433,7 @@ private slots:
         QCOMPARE(window.drivePad()->passiveText(), QString());
         QCOMPARE(window.projectorView()->reasonText(), QString());
         QVERIFY(window.projectorView()->headerText().contains("Safe"));
+        QVERIFY(!window.statusText().contains(why));
 
         // Back to robot 1, in the projector view: Enter Safe sends Safe (131) to it alone.
         show(one);

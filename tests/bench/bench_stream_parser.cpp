@@ -128,7 +128,7 @@ RunResult runOnce(const Stream &s, std::size_t chunk)
 
     r.seconds = std::chrono::duration<double>(stop - start).count();
     r.counters = parser->counters();
-    r.pending = parser->pendingBytes();
+    r.pending = parser->pendingBytes() + parser->pendingTextBytes();
     return r;
 }
 
@@ -152,7 +152,7 @@ bool verify(const Stream &s, const RunResult &r)
                     r.counters.checksumFailures, s.corrupted);
         ok = false;
     }
-    if (r.counters.bytesDiscarded + consumed + r.pending != s.bytes.size()) {
+    if (r.counters.bytesDiscarded + r.counters.textBytes + consumed + r.pending != s.bytes.size()) {
         std::printf("ERROR: discarded %" PRIu64 " + consumed %" PRIu64 " + pending %zu != fed %zu\n",
                     r.counters.bytesDiscarded, consumed, r.pending, s.bytes.size());
         ok = false;

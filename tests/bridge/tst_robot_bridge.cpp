@@ -390,8 +390,9 @@ private slots:
 
     // With full allowed, the bridge does what Safe mode would: the first
     // cliff while a client drives stops the robot.
-    // Safe falling back to Passive at a cliff: the state says why, while the cliff shows.
-    void stateSaysWhyTheRobotIsInPassive()
+    // Safe falling back to Passive at a cliff: the state says why, while the
+    // cliff shows; Full on the dock: that it does not charge.
+    void stateSaysWhyTheRobotIsInItsMode()
     {
         MosquittoBroker broker;
         QVERIFY2(broker.start(), qPrintable(broker.error()));
@@ -412,6 +413,29 @@ private slots:
                  QStringLiteral("passive"));
         rig.recording.cliffLeft = false;
         QTRY_VERIFY(watcher.lastState(QStringLiteral("r1")).value(QLatin1String("mode_reason")).isNull());
+
+        // Full left on the dock: "not_charging", and the log says it once with its fix.
+        static QStringList logged;
+        logged.clear();
+        QLoggingCategory::setFilterRules(QStringLiteral("roomba.bridge.info=true"));
+        const QtMessageHandler previous = qInstallMessageHandler([](QtMsgType, const QMessageLogContext &c, const QString &m) {
+            if (QLatin1String(c.category) == QLatin1String("roomba.bridge") && m.startsWith(QLatin1String("mode:")))
+                logged << m;
+        });
+        rig.recording.onDock = true;
+        rig.recording.mode = int(oi::OiMode::Full);
+        // The warning waits RobotMode::kNotChargingAfterMs of frames on the dock.
+        const bool warned = QTest::qWaitFor([&] {
+            return watcher.lastState(QStringLiteral("r1")).value(QLatin1String("mode_cause")).toArray()
+                   == QJsonArray({"not_charging"});
+        }, 10000);
+        qInstallMessageHandler(previous);
+        QLoggingCategory::setFilterRules(QStringLiteral("roomba.bridge.info=false"));
+        QVERIFY(warned);
+        QCOMPARE(logged, QStringList{QStringLiteral("mode: Full mode on the dock: the battery does not charge, it drains. "
+                                                    "Enter Passive to charge it, or drive it off the dock.")});
+        rig.recording.mode = int(oi::OiMode::Passive);
+        QTRY_VERIFY(watcher.lastState(QStringLiteral("r1")).value(QLatin1String("mode_cause")).toArray().isEmpty());
     }
 
     void allowedFullStillStopsAtACliff()

@@ -40,6 +40,7 @@ struct Recording {
     std::atomic<int> bumps{0};
     // The left cliff sensor in the streamed frames.
     std::atomic<bool> cliffLeft{false};
+    std::atomic<bool> onDock{false};
     // False holds the streamed frames back.
     std::atomic<bool> streaming{true};
     // True loses what the link writes on the way, as a bad cable does: the
@@ -89,7 +90,8 @@ public:
         m_timer.setInterval(15);
         connect(&m_timer, &QTimer::timeout, this, [this] {
             if (m_recording->streaming)
-                emit bytesReceived(group100Frame(std::uint8_t(m_recording->bumps), m_recording->mode, m_recording->cliffLeft));
+                emit bytesReceived(group100Frame(std::uint8_t(m_recording->bumps), m_recording->mode, m_recording->cliffLeft,
+                                                 m_recording->onDock));
         });
     }
     // Records into a recording of its own.

@@ -34,8 +34,9 @@ inline QByteArray streamFrame(const QByteArray &payload)
 
 // A group-100 frame (packets 7..58, 80 data bytes) as a Create 2 streams it:
 // every value 0 but packet 7 (bumps and wheel drops), packet 35 (the OI
-// mode, 0 Off .. 3 Full) and packet 9 (the left cliff).
-inline QByteArray group100Frame(std::uint8_t bumps = 0, int oiMode = 0, bool cliffLeft = false)
+// mode, 0 Off .. 3 Full), packet 9 (the left cliff) and packet 34 (the home
+// base: on its dock).
+inline QByteArray group100Frame(std::uint8_t bumps = 0, int oiMode = 0, bool cliffLeft = false, bool onDock = false)
 {
     // Packet 35 sits after packets 7..34 in the group's data.
     static const int modeOffset = [] {
@@ -50,5 +51,6 @@ inline QByteArray group100Frame(std::uint8_t bumps = 0, int oiMode = 0, bool cli
     payload[1] = static_cast<char>(bumps);
     payload[1 + modeOffset] = static_cast<char>(oiMode);
     payload[3] = static_cast<char>(cliffLeft); // after packets 7 and 8
+    payload[modeOffset] = static_cast<char>(onDock ? 2 : 0); // packet 34, just before 35
     return streamFrame(payload);
 }

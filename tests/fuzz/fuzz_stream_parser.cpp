@@ -17,11 +17,13 @@
 // - the same bytes fed in one piece and in the chosen pieces give identical
 //   counters, pending state and snapshot sequences (kind, presence and raw
 //   value of ids 0..58);
-// - at each snapshot, bytesDiscarded + bytes of earlier good frames and
-//   replies is where the frame or reply starts in the input: a stream frame
+// - at each snapshot, bytesDiscarded + textBytes + pendingTextBytes() +
+//   bytes of earlier good frames and replies is where the frame or reply
+//   starts in the input: a stream frame
 //   there starts with 19, has arrived in full and has a zero checksum;
-// - at the end, bytesDiscarded + bytes of good frames and replies +
-//   pendingBytes() == bytes fed;
+// - at the end, bytesDiscarded + textBytes + bytes of good frames and
+//   replies + pendingBytes() + pendingTextBytes() == bytes fed;
+// - every text line is printable and at least StreamParser::kMinTextLine long;
 // - every present value is a packet of the profile, within the range of its
 //   byte count and signedness.
 #include "stream_parser.h"
@@ -33,6 +35,7 @@
 #include <deque>
 #include <memory>
 #include <span>
+#include <string_view>
 #include <vector>
 
 namespace {
@@ -123,7 +126,9 @@ struct Outcome {
     std::vector<Record> records;
     oi::ParserCounters counters;
     std::size_t pendingBytes = 0;
+    std::size_t pendingTextBytes = 0;
     std::size_t pendingReplies = 0;
+    std::uint64_t textLines = 0;
 };
 
 void checkRanges(const oi::RobotProfile &profile, const oi::SensorSnapshot &s)
@@ -176,7 +181,8 @@ Outcome run(const Config &c, bool split)
     std::size_t consumed = 0; // bytes of good frames and replies so far
     Outcome out;
     parser->setSnapshotHandler([&](const oi::SensorSnapshot &s, oi::FrameKind kind) {
-        const std::size_t start = parser->counters().bytesDiscarded + consumed;
+        const std::size_t start = parser->counters().bytesDiscarded + parser->counters().textBytes
+                                  + parser->pendingTextBytes() + consumed;
         std::size_t size = 0;
         if (kind == oi::FrameKind::Stream) {
             check(start + 2 <= fed, "a stream frame starts beyond the bytes fed");
@@ -208,6 +214,13 @@ Outcome run(const Config &c, bool split)
         out.records.push_back(rec);
     });
 
+    parser->setTextHandler([&](std::string_view line) {
+        check(line.size() >= oi::StreamParser::kMinTextLine, "a text line shorter than the shortest");
+        for (const char ch : line)
+            check((ch >= 0x20 && ch < 0x7F) || ch == '\t', "a text line with a byte that is not printable");
+        ++out.textLines;
+    });
+
     if (!split) {
         fed = input.size();
         parser->feed(input);
@@ -230,8 +243,11 @@ Outcome run(const Config &c, bool split)
     out.pendingReplies = parser->pendingReplies();
     check(out.counters.framesGood + out.counters.repliesGood == out.records.size(),
           "frame and reply counters disagree with the snapshots delivered");
-    check(out.counters.bytesDiscarded + consumed + out.pendingBytes == input.size(),
-          "discarded + consumed + pending != bytes fed");
+    out.pendingTextBytes = parser->pendingTextBytes();
+    check(out.counters.textLines == out.textLines, "textLines disagrees with the lines delivered");
+    check(out.counters.bytesDiscarded + out.counters.textBytes + consumed + out.pendingBytes + out.pendingTextBytes
+              == input.size(),
+          "discarded + text + consumed + pending != bytes fed");
     std::size_t modelPending = 0;
     for (const auto &r : replyModel)
         modelPending += r.second;
@@ -248,6 +264,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t *data, std::size_t size
     const Outcome pieces = run(config, true);
     check(whole.counters == pieces.counters, "counters depend on how the bytes were split");
     check(whole.pendingBytes == pieces.pendingBytes, "pending bytes depend on the split");
+    check(whole.pendingTextBytes == pieces.pendingTextBytes, "pending text depends on the split");
     check(whole.pendingReplies == pieces.pendingReplies, "pending replies depend on the split");
     check(whole.records == pieces.records, "snapshots depend on how the bytes were split");
     return 0;

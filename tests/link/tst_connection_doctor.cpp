@@ -72,6 +72,12 @@ ConnectionDoctor::Report diagnoseOverTcp(bool rfc2217)
     return runDoctor(transport, oi::ProfileId::Create2, 0);
 }
 
+void placeOnDock(sim::VirtualRobot &robot)
+{
+    const sim::World::Dock dock = *robot.world().dock;
+    robot.placeAt(oi::Pose{dock.x, dock.y, dock.headingRad + 3.14159265358979323846});
+}
+
 QString explain(const ConnectionDoctor::Report &r)
 {
     return r.summary + QStringLiteral(" | ") + r.steps.join(QStringLiteral(" | "));
@@ -167,17 +173,40 @@ private slots:
         QCOMPARE(r.summary, QStringLiteral("The robot was asleep; a BRC pulse woke it, and it talks at 115200 baud."));
     }
 
+    // Asleep on its dock, older firmware hears no BRC pulse, but the
+    // charger still prints its status: readable text at 115200 baud proves
+    // the baud, the cable and the dock. No baud pulses follow.
+    // A line read while the first baud is tried ends the search for the
+    // baud there: no other baud is tried.
+    void asleepOnTheDockWithOldFirmware_data()
+    {
+        QTest::addColumn<int>("startMs");
+        QTest::addColumn<bool>("textAtTheFirstBaud");
+        QTest::newRow("status line after the first baud") << 0 << false;
+        QTest::newRow("status line during the first baud") << 500 << true;
+    }
     void asleepOnTheDockWithOldFirmware()
     {
+        QFETCH(int, startMs);
+        QFETCH(bool, textAtTheFirstBaud);
         ManualClock clock;
         SimLineTransport line(oi::ProfileId::Create2, {}, clock);
         line.robot().setFirmwareRelease("release-3.8.1");
-        const sim::World::Dock dock = *line.robot().world().dock;
-        line.robot().placeAt(oi::Pose{dock.x, dock.y, dock.headingRad + 3.14159265358979323846});
+        placeOnDock(line.robot());
         line.robot().receive(kStartAndPower);
+        clock.advance(startMs);
         const auto r = diagnose(line, clock, oi::ProfileId::Create2);
-        QVERIFY2(r.finding == Finding::AsleepDidNotWake, qPrintable(explain(r)));
-        QVERIFY(r.summary.contains(QStringLiteral("on its dock with firmware before release-3.8.2")));
+        QCOMPARE(r.steps.contains(QStringLiteral("At 115200 baud it prints text but does not answer.")), textAtTheFirstBaud);
+        QCOMPARE(r.steps.join(' ').contains(QStringLiteral("57600")), !textAtTheFirstBaud);
+        QVERIFY2(r.finding == Finding::TextOnDock, qPrintable(explain(r)));
+        QCOMPARE(r.baud, 115200);
+        QVERIFY2(r.summary.contains(QStringLiteral("the baud and the cable are right")), qPrintable(r.summary));
+        QVERIFY(r.summary.contains(QStringLiteral("on its dock")));
+        QVERIFY(r.summary.contains(QStringLiteral("firmware before release-3.8.2")));
+        QVERIFY(r.summary.contains(QStringLiteral("\"bat:")));
+        QVERIFY(!r.summary.contains(QStringLiteral("noisy")));
+        QVERIFY(!r.steps.join(' ').contains(QStringLiteral("three times for 19200")));
+        QCOMPARE(line.robot().baud(), 115200);
         QVERIFY(line.robot().asleep());
     }
 
@@ -248,6 +277,26 @@ private slots:
         QCOMPARE(line.robot().baud(), 115200);
         QCOMPARE(line.pinPulledLow, 1); // the wake pulse, and no baud pulses
         QCOMPARE(r.summary, QStringLiteral("The robot was asleep; a BRC pulse woke it, and it talks at 115200 baud."));
+    }
+
+    // Awake on its dock: a status line may come in the middle of any answer.
+    // Wherever it falls, the doctor finds the robot at its baud; once it has
+    // read a line it says the robot is on its dock.
+    void dockedTextAmongTheAnswers()
+    {
+        int sawDock = 0;
+        for (int startMs = 0; startMs < 1000; startMs += 10) {
+            ManualClock clock;
+            SimLineTransport line(oi::ProfileId::Create2, {}, clock);
+            placeOnDock(line.robot());
+            line.robot().receive(kStart);
+            clock.advance(startMs); // the robot keeps the clock's time
+            const auto r = diagnose(line, clock, oi::ProfileId::Create2);
+            QVERIFY2(r.finding == Finding::Healthy, qPrintable(QString::number(startMs) + ": " + explain(r)));
+            QCOMPARE(r.baud, 115200);
+            sawDock += r.summary.contains(QStringLiteral("it is on its dock"));
+        }
+        QVERIFY(sawDock > 0);
     }
 
     void answersAsAnotherProfile()

@@ -409,6 +409,28 @@ private slots:
         QVERIFY2(o.err.contains(QStringLiteral("warning: the robot is on its dock: Safe mode ignores drive")), qPrintable(o.err));
     }
 
+    // On its dock the robot refuses Safe: send safe says so, names Full as
+    // the way off the dock, and fails; send full warns that it does not
+    // charge there, and succeeds.
+    void sendSafeOrFullOnTheDock()
+    {
+        Sim sim({QStringLiteral("--on-dock")});
+        QVERIFY(!sim.path().isEmpty());
+        const QStringList port{QStringLiteral("send"), QStringLiteral("--port"), sim.path()};
+        Outcome o = run(port + QStringList{QStringLiteral("safe")});
+        QVERIFY2(o.status == 1, qPrintable(o.err));
+        QVERIFY2(o.err.contains(QStringLiteral("the robot is on its dock: Safe mode is refused on the charger; use Full "
+                                               "to drive it off the dock")),
+                 qPrintable(o.err));
+        o = run(port + QStringList{QStringLiteral("full")});
+        QVERIFY2(o.status == 0, qPrintable(o.err));
+        QVERIFY2(o.err.contains(QStringLiteral("warning: the robot is on its dock: in Full mode it does not charge")),
+                 qPrintable(o.err));
+        const QJsonObject mode = answer({QStringLiteral("send"), QStringLiteral("--no-mode-change")},
+                                        {QStringLiteral("--port"), sim.path()});
+        QCOMPARE(mode[QStringLiteral("oi_mode")].toInt(), 3);
+    }
+
     // A Roomba 500 answers as a Create 2 does. Without --profile roomba-ctl
     // says what it assumed and how to name it, and gives no encoder counts,
     // which would read mirrored; with it, they read the Roomba 500's way.

@@ -370,6 +370,64 @@ private slots:
         QCOMPARE(parser.pendingBytes(), std::size_t(0));
         QCOMPARE(parser.counters(), ParserCounters{});
     }
+
+    // A docked Roomba prints its charging status between frames: the lines
+    // come out as text, every frame still decodes, whatever the split, and
+    // no byte counts as discarded. A stray 19 or junk byte ends a line.
+    void textBetweenFramesIsTheRobotsWords()
+    {
+        const std::string line = "bat:   min 0  sec 12  mV 16421  mA 1183  tenths-deg 254  mAH 2580  state 2  mode 1";
+        Bytes input;
+        for (int i = 0; i < 6; ++i) {
+            const Bytes f = frameFor(100 + i, 0, 16000);
+            input.insert(input.end(), f.begin(), f.end());
+            if (i % 2 == 0) {
+                input.insert(input.end(), line.begin(), line.end());
+                input.insert(input.end(), {'\r', '\n'});
+            }
+        }
+        for (bool expectStream : {false, true}) {
+            for (const std::vector<std::size_t> &splits : {std::vector<std::size_t>{}, {1}, {7}, {30}}) {
+                StreamParser parser(profile(ProfileId::Create2));
+                if (expectStream)
+                    parser.setExpectedStream(kStreamIds);
+                std::vector<std::string> lines;
+                parser.setTextHandler([&](std::string_view l) { lines.emplace_back(l); });
+                const Run run = feedInPieces(parser, input, splits);
+                QCOMPARE(int(run.frames.size()), 6);
+                QCOMPARE(lines, std::vector<std::string>(3, line));
+                QCOMPARE(run.counters.bytesDiscarded, 0u);
+                QCOMPARE(run.counters.textLines, 3u);
+                QCOMPARE(run.counters.textBytes, 3 * (line.size() + 2));
+            }
+        }
+        // Too short to be a line, cut by a junk byte, or by a frame: discarded.
+        StreamParser parser(profile(ProfileId::Create2));
+        std::vector<std::string> lines;
+        parser.setTextHandler([&](std::string_view l) { lines.emplace_back(l); });
+        Bytes junk{'o', 'k', '\n', 'b', 'a', 't', 0x01, ':', '\n', 'b', 'a', 't', ':'};
+        const Bytes f = frameFor(100, 0, 16000);
+        junk.insert(junk.end(), f.begin(), f.end());
+        junk.insert(junk.end(), {' ', 'm', 'V', '\r', '\n'});
+        const Run run = feedInPieces(parser, junk, {});
+        QCOMPARE(int(run.frames.size()), 1);
+        QVERIFY(lines.empty());
+        QCOMPARE(run.counters.textBytes, 0u);
+        QCOMPARE(run.counters.bytesDiscarded, std::uint64_t(junk.size() - f.size()));
+        QCOMPARE(parser.pendingTextBytes(), std::size_t(0));
+    }
+
+    // A reader waiting for an unframed reply takes the robot's lines out.
+    void withoutTextLinesLeavesTheReply()
+    {
+        const std::string text = "bat:   min 0  sec 1  mV 16000\r\n";
+        Bytes received(text.begin(), text.end());
+        received.insert(received.end(), {1, 0});
+        received.insert(received.end(), text.begin(), text.end());
+        QCOMPARE(withoutTextLines(received), (Bytes{1, 0}));
+        // Printable reply bytes with no line end stay.
+        QCOMPARE(withoutTextLines(Bytes{'a', 'b', 'c', 'd', 'e', 3}), (Bytes{'a', 'b', 'c', 'd', 'e', 3}));
+    }
 };
 
 QTEST_GUILESS_MAIN(TestStreamParser)

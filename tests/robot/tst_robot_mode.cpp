@@ -60,8 +60,10 @@ private slots:
                                << "Carry it back from the edge, then Enter Safe.";
         QTest::newRow("wheel drop") << 7 << 0x08 << "A wheel drop (left) dropped it to Passive at 12:03:04."
                                     << "wheel drop (left)" << "Put it back on its wheels, then Enter Safe.";
-        QTest::newRow("charger") << 34 << 0x02 << "A charger dropped it to Passive at 12:03:04." << "charger"
-                                 << "Take it off the charger, then Enter Safe.";
+        // On its dock the robot refuses Safe: Full is the way off it.
+        QTest::newRow("charger") << 34 << 0x02
+                                 << "The robot is on its dock: Safe mode is refused on the charger (12:03:04)."
+                                 << "Safe refused on the dock" << "Use Full to drive it off the dock, or lift it off.";
         QTest::newRow("unknown") << 7 << 0 << "A safety stop dropped it to Passive at 12:03:04."
                                  << "safety stop" << "Enter Safe to drive.";
     }

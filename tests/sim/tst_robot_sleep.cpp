@@ -227,21 +227,34 @@ private slots:
         QVERIFY(r.robot.asleep());
     }
 
-    // Firmware release-3.2.x (an option, off by default): the pulses that keep
-    // other firmware awake do not; it sleeps five minutes after entering
+    // Firmware release-3.2.x (its banner, or the option on any firmware): the
+    // pulses that keep other firmware awake do not; it sleeps five minutes after entering
     // Passive, and a pulse still wakes it.
     void release32SleepsWhateverThePulses_data()
     {
+        QTest::addColumn<int>("profile");
+        QTest::addColumn<bool>("quirk");
+        QTest::addColumn<QString>("firmware");
         QTest::addColumn<bool>("sleepsWhilePulsed");
-        QTest::newRow("default") << false;
-        QTest::newRow("release-3.2.x") << true;
+        const int create2 = int(ProfileId::Create2);
+        QTest::newRow("default") << create2 << false << QString() << false;
+        QTest::newRow("release-3.8.2") << create2 << false << "release-3.8.2" << false;
+        QTest::newRow("the option") << create2 << true << QString() << true;
+        // The firmware that does it, without the option.
+        QTest::newRow("release-3.2.1") << create2 << false << "release-3.2.1" << true;
+        QTest::newRow("release-3.2.0 on a Roomba 500") << int(ProfileId::Roomba500) << false << "release-3.2.0" << true;
     }
     void release32SleepsWhateverThePulses()
     {
+        QFETCH(int, profile);
+        QFETCH(bool, quirk);
+        QFETCH(QString, firmware);
         QFETCH(bool, sleepsWhilePulsed);
-        Robot r(ProfileId::Create2);
+        Robot r{ProfileId(profile)};
         QVERIFY(!r.robot.quirks().sleepsWhilePulsed);
-        r.robot.setQuirks({.sleepsWhilePulsed = sleepsWhilePulsed});
+        r.robot.setQuirks({.sleepsWhilePulsed = quirk});
+        if (!firmware.isEmpty())
+            r.robot.setFirmwareRelease(firmware.toStdString());
         for (int minute = 0; minute < 4; ++minute) {
             r.robot.advance(59s);
             pulse(r.robot, 1s);

@@ -197,6 +197,7 @@ void TestRoombaSim::helpAndVersion()
     QVERIFY(help.contains("--sleeps-while-pulsed") && help.contains("release-3.2.x"));
     QVERIFY(help.contains("--mode-off-by-one") && help.contains("one too high"));
     QVERIFY(help.contains("--brc-wired") && help.contains("--wake-time"));
+    QVERIFY(help.contains("--on-dock") && help.contains("charging status") && help.contains("battery drains"));
     process.start(kProgram, {QStringLiteral("--version")});
     QVERIFY(process.waitForFinished(5000));
     QCOMPARE(process.exitCode(), 0);

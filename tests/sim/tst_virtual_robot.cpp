@@ -314,6 +314,8 @@ private slots:
     void dockInfrared();
     void wallsHideTheDock();
     void chargesOnTheDock();
+    void printsItsChargingStatusOnTheDock();
+    void resetOnTheDockAddsTheChargersLines();
     void virtualWallBeam_data();
     void virtualWallBeam();
     void batteryDrainsWithMotorUse();
@@ -1275,12 +1277,66 @@ void TestVirtualRobot::chargesOnTheDock()
         QVERIFY(!off.chargingSource(ChargingSource::HomeBase));
         QCOMPARE(off.chargingState(), ChargingState::NotCharging);
         QVERIFY(off.currentMa() < 0);
-        // Full mode on the dock: powered, not charging.
+        // Full mode on the dock: powered, not charging, and the battery
+        // drains by the robot's own load (the Create 2 document).
         b.robot.placeAt(poseAt(classroom.dock->x, classroom.dock->y, 180));
         b.send(b.encoder.full());
         const SensorSnapshot full = b.query({3, 34});
         QVERIFY(full.chargingSource(ChargingSource::HomeBase));
         QCOMPARE(full.chargingState(), ChargingState::NotCharging);
+        QVERIFY(full.currentMa() < 0);
+        const double inFull = b.robot.batteryChargeMah();
+        b.run(60s);
+        QVERIFY(b.robot.batteryChargeMah() < inFull);
+    }
+}
+
+// Roomba 500 / 600 firmware prints its charging status about once a second,
+// between frames; the Create prints nothing. Every frame still decodes.
+void TestVirtualRobot::printsItsChargingStatusOnTheDock()
+{
+    for (ProfileId p : allProfiles()) {
+        Bench b(profileOf(p));
+        QStringList lines;
+        b.parser.setTextHandler([&](std::string_view line) { lines << QString::fromLatin1(line.data(), qsizetype(line.size())); });
+        const World classroom = World::classroom();
+        b.robot.placeAt(poseAt(classroom.dock->x, classroom.dock->y, 180));
+        b.send(b.encoder.start());
+        b.send(b.encoder.stream(std::vector<int>{35, 21}));
+        b.run(10s);
+        QVERIFY2(b.frames.size() >= 10'000 / 15 - 1, qPrintable(QString::number(b.frames.size())));
+        QCOMPARE(b.parser.counters().bytesDiscarded, 0u);
+        if (p == ProfileId::Create1) {
+            QVERIFY(lines.isEmpty());
+            continue;
+        }
+        QVERIFY2(lines.size() >= 9 && lines.size() <= 10, qPrintable(lines.join('\n')));
+        for (const QString &line : lines)
+            QVERIFY2(line.startsWith("bat:") && line.contains(" mV ") && line.contains(" mAH ") && line.contains(" state 2"),
+                     qPrintable(line));
+        // Not charging (Full), nothing to print.
+        lines.clear();
+        b.send(b.encoder.full());
+        b.run(3s);
+        QVERIFY(lines.isEmpty());
+    }
+}
+
+void TestVirtualRobot::resetOnTheDockAddsTheChargersLines()
+{
+    for (bool onDock : {false, true}) {
+        Bench b(profileOf(ProfileId::Create2));
+        if (onDock) {
+            const World classroom = World::classroom();
+            b.robot.placeAt(poseAt(classroom.dock->x, classroom.dock->y, 180));
+        }
+        b.send(b.encoder.start());
+        b.raw.clear();
+        b.send(b.encoder.reset());
+        const std::string text(b.raw.begin(), b.raw.end());
+        QVERIFY(parseFirmwareBanner(text).has_value());
+        QCOMPARE(text.find("bat:") != std::string::npos, onDock);
+        QCOMPARE(text.find("charger-present") != std::string::npos, onDock);
     }
 }
 

@@ -179,6 +179,20 @@ private slots:
         QVERIFY(inspector.lastEntries(1).front().endsWith(QStringLiteral("text \"bl-start\\r\\n\"")));
     }
 
+    // A docked Roomba's status line between two frames, in one read.
+    void showsTheDockedStatusLineBetweenFrames()
+    {
+        ByteInspector inspector;
+        const QByteArray f = frame(bytesOf({22, 0x39, 0xE4}));
+        inspector.appendRx(f + QByteArray("bat:   min 0  sec 12  mV 16421  mA 1500\r\n") + f, 0);
+        const QStringList entries = inspector.lastEntries(3);
+        QCOMPARE(entries.size(), 3);
+        QVERIFY(entries[0].contains(QStringLiteral("stream frame: Voltage 14820 mV")));
+        QVERIFY2(entries[1].endsWith(QStringLiteral("text \"bat:   min 0  sec 12  mV 16421  mA 1500\\r\\n\"")),
+                 qPrintable(entries[1]));
+        QVERIFY(entries[2].contains(QStringLiteral("stream frame: Voltage 14820 mV")));
+    }
+
     void keepsABoundedLog()
     {
         ByteInspector inspector;

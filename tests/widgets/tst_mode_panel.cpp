@@ -6,9 +6,11 @@
 #include <QApplication>
 #include <QComboBox>
 #include <QLabel>
+#include <QMessageBox>
 #include <QPushButton>
 #include <QSignalSpy>
 #include <QTest>
+#include <QTimer>
 
 using namespace oi;
 
@@ -145,6 +147,24 @@ private slots:
         QTest::mouseClick(panel.button("safe"), Qt::LeftButton);
         QCOMPARE(asked, 2);
         QCOMPARE(spy.count(), 2);
+    }
+
+    // The question before Full names it as the way off the dock.
+    void fullDialogNamesTheWayOffTheDock()
+    {
+        ModePanel panel;
+        panel.show();
+        QString text;
+        QTimer::singleShot(0, &panel, [&] {
+            if (auto *box = qobject_cast<QMessageBox *>(QApplication::activeModalWidget())) {
+                text = box->text();
+                box->button(QMessageBox::No)->click();
+            }
+        });
+        QSignalSpy spy(&panel, &ModePanel::modeRequested);
+        QTest::mouseClick(panel.button("full"), Qt::LeftButton);
+        QVERIFY2(text.contains("the way off the dock, where Safe is refused"), qPrintable(text));
+        QCOMPARE(spy.count(), 0);
     }
 
     void missingCommandsDisabledWithReason()

@@ -148,6 +148,48 @@ private slots:
         QVERIFY(view.headerText().contains("NO LIVE DATA"));
     }
 
+    // On its dock: Safe refused is said with Full as the way off, and Enter
+    // Safe is not offered; Full left on the dock is warned about.
+    void dockWordsWithoutEnterSafe()
+    {
+        const oi::RobotProfile &create2 = oi::profile(oi::ProfileId::Create2);
+        const auto frame = [&](oi::OiMode mode) {
+            oi::SensorSnapshot s(create2);
+            s.set(35, int(mode));
+            for (int id : {7, 9, 10, 11, 12})
+                s.set(id, 0);
+            s.set(34, int(oi::ChargingSource::HomeBase));
+            return s;
+        };
+        const qint64 at = QDateTime(QDate(2026, 1, 5), QTime(12, 3, 4)).toMSecsSinceEpoch();
+        RobotMode mode;
+        mode.observe(frame(oi::OiMode::Passive), at);
+        mode.asked(oi::Command::Safe, QDateTime::fromMSecsSinceEpoch(at));
+        for (int i = 0; i < RobotMode::kRefusedAfterFrames; ++i)
+            mode.observe(frame(oi::OiMode::Passive), at + 15 * i);
+
+        QWidget window;
+        window.resize(1280, 720);
+        ProjectorView view(&window);
+        view.setRobot("Robot 1", create2, nullptr);
+        window.show();
+        view.show();
+        view.setMode(mode);
+        view.refresh(frame(oi::OiMode::Passive), true);
+        QCOMPARE(view.reasonText(), QString("The robot is on its dock: Safe mode is refused on the charger (12:03:04). "
+                                            "Use Full to drive it off the dock, or lift it off."));
+        QVERIFY(!view.enterSafeButton()->isVisible());
+
+        mode.asked(oi::Command::Full, QDateTime::fromMSecsSinceEpoch(at + 1000));
+        mode.observe(frame(oi::OiMode::Full), at + 1000);
+        mode.observe(frame(oi::OiMode::Full), at + 1000 + RobotMode::kNotChargingAfterMs);
+        view.setMode(mode);
+        view.refresh(frame(oi::OiMode::Full), true);
+        QCOMPARE(view.reasonText(), QString("Full mode on the dock: the battery does not charge, it drains. Enter "
+                                            "Passive to charge it, or drive it off the dock."));
+        QVERIFY(!view.enterSafeButton()->isVisible());
+    }
+
     // On a 1280×720 projector the type is smaller, in proportion, so that the
     // step, the plot with its time axis and the readouts all fit; the hint
     // sits at the foot, clear of the header.

@@ -22,7 +22,9 @@ ModePanel::ModePanel(QWidget *parent) : QWidget(parent)
         return QMessageBox::question(owner, tr("Enter Full mode?"),
                                      tr("Full mode turns off the cliff, wheel-drop and charger "
                                         "safety stops. The robot will drive off a table edge if "
-                                        "told to. Enter Full mode?"))
+                                        "told to. It is also the way off the dock, where Safe is "
+                                        "refused (on the dock it does not charge in Full). Enter "
+                                        "Full mode?"))
                == QMessageBox::Yes;
     };
 

@@ -185,7 +185,9 @@ void ProjectorView::showHeader()
     // Without live data nothing can be entered; the header says so.
     const bool offer = m_offersSafe && m_live;
     m_reasonLabel->setText(m_reason);
-    m_reasonRow->setVisible(offer);
+    m_enterSafe->setVisible(offer);
+    // A warning in Safe or Full (on the dock, not charging) shows without the offer.
+    m_reasonRow->setVisible(offer || (m_live && !m_reason.isEmpty()));
 }
 
 QPushButton *ProjectorView::stopAllButton() const { return m_stopAll; }
@@ -195,7 +197,8 @@ QString ProjectorView::reasonText() const { return m_reasonRow->isHidden() ? QSt
 void ProjectorView::setMode(const RobotMode &mode, bool canCommand)
 {
     m_modeName = mode.reported() ? oitext::modeName(*mode.reported()) : QString();
-    m_offersSafe = mode.ignoresMotion() && canCommand;
+    // Safe refused by the dock is not offered again: the step says Full.
+    m_offersSafe = mode.ignoresMotion() && canCommand && !mode.safeRefusedOnDock();
     const QString reason = mode.reason();
     m_reason = (reason.isEmpty() ? QString() : reason + ' ') + mode.nextStep();
     showHeader();

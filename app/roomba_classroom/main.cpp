@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// roomba-classroom: sets up a classroom's broker in one command (README,
+// roomba-classroom: sets up a classroom's broker in one command (docs/classroom.md,
 // "Classroom over MQTT"; docs/mqtt.md).
 
 #include "classroom_setup.h"

@@ -4,7 +4,7 @@
 // watches but cannot drive, a student cannot take over or stop the fleet,
 // the teacher can, an unknown client is refused, nobody can borrow a
 // bridge's client id, and a bridge's account writes only its own robot
-// (not even another robot's commands in its own name). And the README's
+// (not even another robot's commands in its own name). And docs/classroom.md's
 // quick-start broker (resources/mqtt/quickstart.conf) bounds its packets.
 
 #include "bridge_rig.h"
@@ -208,7 +208,7 @@ private slots:
         }
     }
 
-    // The README's quick-start broker (mosquitto -c quickstart.conf): it
+    // The quick-start broker (mosquitto -c quickstart.conf): it
     // loads, and refuses a packet over 8 KiB by closing the connection that
     // sent it, which reaches nobody; one under it goes through.
     void theQuickStartBrokerRefusesLargePackets()

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The systemd unit roomba-bridge@.service as shipped, run as systemd would
-// run it on a robot's Pi, set up as the README says: the config made by
+// run it on a robot's Pi, set up as docs/classroom.md says: the config made by
 // roomba-classroom init (root's, mode 0600) and ca.crt copied into
 // /etc/roomba-bridge/. systemd is not this machine's init, so the test does
 // what systemd does: as root, copies each LoadCredential= file into a fresh
@@ -225,7 +225,7 @@ private slots:
         QVERIFY2(verify.status == 0 && !verify.out.contains(QLatin1String("roomba-bridge@")), qPrintable(verify.out));
     }
 
-    // README, "For a real classroom network", step 3, with a virtual robot
+    // docs/classroom.md, "For a real classroom network", step 3, with a virtual robot
     // (--sim) for the serial port; then with a client certificate the
     // config names, added as the unit's comment says.
     void theReadmeSetUpComesOnline_data()

@@ -32,6 +32,7 @@ contents=$(dpkg-deb -c "$deb" | awk '{print $6}')
 in_bridge() { grep -qx "\./$1" <<<"$bridge_contents" || fail "$1 is not in the roomba-bridge package"; }
 for p in roomba-bridge roomba-ctl roomba-sim roomba-classroom; do
     in_bridge "usr/bin/$p"
+    in_bridge "usr/share/man/man1/$p.1"
     grep -qx "\./usr/bin/$p" <<<"$contents" && fail "$p is in both packages"
 done
 in_bridge "usr/lib/systemd/system/roomba-bridge@.service"
@@ -45,6 +46,7 @@ grep -Eq 'libqt6(gui|widgets)|qcustomplot|libsdl' <<<"$bridge_depends" && fail "
 
 has() { grep -qx "\./$1" <<<"$contents" || fail "$1 is not in the package"; }
 has usr/bin/roomba-dashboard
+has usr/share/man/man1/roomba-dashboard.1
 has "usr/share/applications/$app_id.desktop"
 has "usr/share/icons/hicolor/scalable/apps/$app_id.svg"
 has "usr/share/metainfo/$app_id.metainfo.xml"
@@ -85,4 +87,13 @@ out=$("$tmp/root/usr/bin/roomba-bridge" --version)
 unit=$tmp/root/usr/lib/systemd/system/roomba-bridge@.service
 exec_start=$(sed -n 's/^ExecStart=\([^ ]*\).*/\1/p' "$unit")
 [ -x "$tmp/root$exec_start" ] || fail "the unit's ExecStart=$exec_start is not a packaged program"
+# Each man page reads as one (man's own formatter, where it is installed)
+# and carries its program's options.
+for page in "$tmp"/root/usr/share/man/man1/*.1; do
+    grep -q -- '--help' "$page" || fail "$(basename "$page") does not hold its program's --help"
+    if command -v groff >/dev/null; then
+        groff -man -Tutf8 -ww -z "$page" 2>&1 | grep . && fail "$(basename "$page") has roff warnings"
+    fi
+done
+grep -q -- '--report-pose' "$tmp/root/usr/share/man/man1/roomba-sim.1" || fail "roomba-sim.1 lacks --report-pose"
 echo "PASS"

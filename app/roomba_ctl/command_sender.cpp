@@ -234,6 +234,8 @@ void CommandSender::sendCommand()
     const QList<int> asked = packetsAsked(m_command);
     if (asked.isEmpty()) {
         send(m_command);
+        // Nothing comes back from the robot: say what went, so success is seen.
+        emit note(QStringLiteral("sent %1 to %2").arg(QString::fromStdString(m_order.name), m_order.settings.describe()));
         finish(0); // the caller closes the link, which sends what is queued first
         return;
     }

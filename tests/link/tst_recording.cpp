@@ -600,7 +600,10 @@ private slots:
         QCOMPARE(lines.size(), int(r.frames().size()) + 1);
         const QStringList columns = lines[0].split(',');
         QCOMPARE(columns.first(), QString("time_s"));
-        QCOMPARE(columns.size(), 1 + 52); // group 100: packets 7..58; no markers, no marker column
+        // Group 100: packets 7..58, but for the three the document reserves
+        // (16, 32, 33: always 0); no markers, no marker column.
+        QCOMPARE(columns.size(), 1 + 52 - 3);
+        QVERIFY(!lines[0].contains("unused"));
         QCOMPARE(columns[1], QString("bumps_wheel_drops"));
         const int voltage = columns.indexOf("voltage[mV]");
         QVERIFY(voltage > 0);

@@ -42,6 +42,12 @@ Outcome run(const QStringList &args)
             QString::fromUtf8(p.readAllStandardError())};
 }
 
+// What roomba-ctl send says on standard error when nothing else needs saying.
+QString sentLine(const QString &command, const QString &port)
+{
+    return QStringLiteral("roomba-ctl: sent %1 to %2\n").arg(command, port);
+}
+
 QJsonObject json(const QString &line)
 {
     QJsonParseError error;
@@ -151,7 +157,7 @@ private slots:
         const QStringList port{QStringLiteral("--port"), sim.path(), QStringLiteral("--profile"), QStringLiteral("create2")};
         Outcome o = run(QStringList{QStringLiteral("send")} + port + QStringList{QStringLiteral("safe")});
         QVERIFY2(o.status == 0, qPrintable(o.err));
-        QCOMPARE(o.err, QString());
+        QCOMPARE(o.err, sentLine("safe", sim.path()));
         QVERIFY(o.lines.isEmpty());
         o = run(QStringList{QStringLiteral("send")} + port + QStringList{QStringLiteral("sensors"), QStringLiteral("35")});
         QVERIFY2(o.status == 0, qPrintable(o.err));
@@ -181,7 +187,7 @@ private slots:
         QVERIFY2(o.status == 0, qPrintable(o.err));
         o = send({QStringLiteral("drive"), QStringLiteral("200"), QStringLiteral("straight")});
         QVERIFY2(o.status == 0, qPrintable(o.err));
-        QCOMPARE(o.err, QString()); // already in Safe: nothing to say
+        QCOMPARE(o.err, sentLine("drive", sim.path())); // already in Safe: nothing else to say
         // Still Safe, asked to drive at 200 mm/s, and the wheels have turned.
         int distance = 0;
         for (int i = 0; i < 10 && distance <= 0; ++i) {
@@ -360,7 +366,7 @@ private slots:
         QCOMPARE(run(port + QStringList{QStringLiteral("full")}).status, 0);
         o = run(port + QStringList{QStringLiteral("leds"), QStringLiteral("4"), QStringLiteral("0"), QStringLiteral("128")});
         QCOMPARE(o.status, 0);
-        QCOMPARE(o.err, QString());
+        QCOMPARE(o.err, sentLine("leds", sim.path()));
         o = run(port + QStringList{QStringLiteral("sensors"), QStringLiteral("35")});
         QCOMPARE(json(o.lines.value(0))[QStringLiteral("packets")].toObject()[QStringLiteral("oi_mode")].toInt(), 3);
         // Stopped (Off mode) and told not to change modes: no answer, and it says why.

@@ -89,18 +89,20 @@ private slots:
         QTest::addColumn<oi::ProfileId>("profile");
         QTest::addColumn<int>("baud");
         QTest::addColumn<QList<int>>("packets");
-        const QList<int> shortList{1, 19, 20, 21, 22, 35};
+        // A Create 1 streams all but its angle, which is read now and then.
+        const QList<int> create1All{1, 17, 18, 19, 3, 4, 5};
+        const QList<int> shortList{1, 19, 21, 22, 35};
         const QList<int> encoderList{1, 43, 44, 21, 22, 35};
         QTest::newRow("create2 115200") << oi::ProfileId::Create2 << 115200 << QList<int>{100};
         QTest::newRow("create2 57600") << oi::ProfileId::Create2 << 57600 << QList<int>{100};
         QTest::newRow("create2 38400") << oi::ProfileId::Create2 << 38400 << QList<int>{6};
-        QTest::newRow("create1 38400") << oi::ProfileId::Create1 << 38400 << QList<int>{6};
+        QTest::newRow("create1 38400") << oi::ProfileId::Create1 << 38400 << QList<int>{1, 19, 3, 4, 5};
         QTest::newRow("create2 19200") << oi::ProfileId::Create2 << 19200 << encoderList;
         QTest::newRow("roomba500 19200") << oi::ProfileId::Roomba500 << 19200 << encoderList;
         QTest::newRow("roomba500 115200") << oi::ProfileId::Roomba500 << 115200 << QList<int>{100};
         QTest::newRow("roomba500 57600") << oi::ProfileId::Roomba500 << 57600 << QList<int>{100};
-        QTest::newRow("create1 115200") << oi::ProfileId::Create1 << 115200 << QList<int>{6};
-        QTest::newRow("create1 57600") << oi::ProfileId::Create1 << 57600 << QList<int>{6};
+        QTest::newRow("create1 115200") << oi::ProfileId::Create1 << 115200 << create1All;
+        QTest::newRow("create1 57600") << oi::ProfileId::Create1 << 57600 << create1All;
         QTest::newRow("create1 19200") << oi::ProfileId::Create1 << 19200 << shortList;
         QTest::newRow("create2 9600") << oi::ProfileId::Create2 << 9600 << QList<int>{1};
         QTest::newRow("create2 4800") << oi::ProfileId::Create2 << 4800 << QList<int>{7};

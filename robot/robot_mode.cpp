@@ -31,6 +31,16 @@ bool onCharger(const oi::SensorSnapshot &frame)
 
 } // namespace
 
+bool RobotMode::darkFloorSignals(const oi::SensorSnapshot &frame)
+{
+    if (frame.wheelDropLeft() || frame.wheelDropRight() || frame.wheelDropCaster() || !cliffBits(frame))
+        return false;
+    for (oi::CliffSensor c : kCliffs)
+        if (frame.cliff(c) && (!frame.has(28 + int(c)) || frame.cliffSignal(c) < kDarkFloorSignalFrom))
+            return false;
+    return true;
+}
+
 void RobotMode::clear() { *this = RobotMode(); }
 
 void RobotMode::asked(oi::Command command, const QDateTime &at)
@@ -90,6 +100,13 @@ bool RobotMode::observe(const oi::SensorSnapshot &frame, qint64 atMs)
             m_cause = Cause::Safety;
             m_changedAt = QDateTime::fromMSecsSinceEpoch(atMs);
             m_cliffs = cliffBits(frame);
+            m_darkFloor = darkFloorSignals(frame);
+            QStringList signalWords;
+            const QString names[] = {tr("left"), tr("front left"), tr("front right"), tr("right")};
+            for (int i = 0; i < 4; ++i)
+                if ((m_cliffs & (1u << i)) && frame.has(28 + i))
+                    signalWords << QStringLiteral("%1 %2").arg(names[i]).arg(frame.cliffSignal(kCliffs[i]));
+            m_cliffSignals = signalWords.join(tr(", "));
             m_wheelDropLeft = frame.wheelDropLeft();
             m_wheelDropRight = frame.wheelDropRight();
             m_wheelDropCaster = frame.wheelDropCaster();
@@ -225,6 +242,16 @@ QString RobotMode::nextStep() const
     if (safeRefusedOnDock())
         return tr("Use Full to drive it off the dock, or lift it off.");
     if (m_cause == Cause::Safety) {
+        if (m_cliffs && m_darkFloor)
+            return tr("No wheel dropped and the cliff signals read %1 of 4095: low, but not the near 0 of a drop. "
+                      "On a dark rug or floor, which reads as a cliff, drive it off in Full or move it to a lighter "
+                      "floor; at an edge, carry it back. Then Enter Safe.")
+                .arg(m_cliffSignals);
+        // Signals near 0 prove an edge; without them, say how to tell.
+        if (m_cliffs && m_cliffSignals.isEmpty())
+            return tr("Carry it back from the edge, then Enter Safe. (A dark rug reads as a cliff too: then the "
+                      "cliff signals stay above %1 and no wheel drops; drive it off in Full.)")
+                .arg(kDarkFloorSignalFrom);
         if (m_cliffs)
             return tr("Carry it back from the edge, then Enter Safe.");
         if (m_wheelDropLeft || m_wheelDropRight || m_wheelDropCaster)

@@ -18,6 +18,9 @@ SensorSnapshot frame(OiMode mode, std::initializer_list<std::pair<int, int>> pac
     s.set(35, int(mode));
     for (int id : {7, 9, 10, 11, 12, 34})
         s.set(id, 0);
+    // Cliff signals as over a drop, unless a test says otherwise.
+    for (int id : {28, 29, 30, 31})
+        s.set(id, 20);
     for (auto [id, value] : packets)
         s.set(id, value);
     return s;
@@ -85,6 +88,48 @@ private slots:
         // Said to another program as words it reads, and read back the same.
         QCOMPARE(mode.causeKeys().first(), QString("safety"));
         QCOMPARE(RobotMode::shortReasonOf(mode.causeKeys()), shortReason);
+    }
+
+    // A dark rug reads as a cliff: signals low but well above a drop's, and
+    // no wheel dropped. The advice tells it from an edge and gives the way off.
+    void aDarkRugIsToldFromAnEdge_data()
+    {
+        QTest::addColumn<int>("signal");
+        QTest::addColumn<int>("wheelDrops");
+        QTest::addColumn<QString>("nextStep");
+        QTest::newRow("dark rug") << 260 << 0
+                                  << "No wheel dropped and the cliff signals read front left 260 of 4095: low, but "
+                                     "not the near 0 of a drop. On a dark rug or floor, which reads as a cliff, drive "
+                                     "it off in Full or move it to a lighter floor; at an edge, carry it back. Then "
+                                     "Enter Safe.";
+        QTest::newRow("edge") << 20 << 0 << "Carry it back from the edge, then Enter Safe.";
+        // A wheel hanging over the edge: not a rug, whatever the signal.
+        QTest::newRow("wheel over the edge") << 260 << 0x08 << "Carry it back from the edge, then Enter Safe.";
+    }
+    void aDarkRugIsToldFromAnEdge()
+    {
+        QFETCH(int, signal);
+        QFETCH(int, wheelDrops);
+        QFETCH(QString, nextStep);
+        RobotMode mode;
+        mode.observe(frame(OiMode::Safe), kAt.toMSecsSinceEpoch());
+        mode.observe(frame(OiMode::Passive, {{kCliffFrontLeft, 1}, {29, signal}, {7, wheelDrops}}),
+                     kAt.toMSecsSinceEpoch());
+        QCOMPARE(mode.nextStep(), nextStep);
+    }
+    // Without the signals nobody can tell: the advice says how.
+    void aCliffWithoutSignalsSaysHowToTellARug()
+    {
+        SensorSnapshot passive = frame(OiMode::Passive, {{kCliffFrontLeft, 1}});
+        SensorSnapshot bare(profile(ProfileId::Create2));
+        for (int id : {7, 9, 10, 11, 12, 34, 35})
+            bare.set(id, passive.raw(id));
+        RobotMode mode;
+        mode.observe(frame(OiMode::Safe), kAt.toMSecsSinceEpoch());
+        mode.observe(bare, kAt.toMSecsSinceEpoch());
+        QCOMPARE(mode.nextStep(), QString("Carry it back from the edge, then Enter Safe. (A dark rug reads as a cliff "
+                                          "too: then the cliff signals stay above 100 and no wheel drops; drive it "
+                                          "off in Full.)"));
     }
 
     // A console shows another program's robot in its own language.

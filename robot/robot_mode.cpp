@@ -242,16 +242,13 @@ QString RobotMode::nextStep() const
     if (safeRefusedOnDock())
         return tr("Use Full to drive it off the dock, or lift it off.");
     if (m_cause == Cause::Safety) {
+        // A robot that stops half over an edge reads like one on a dark rug:
+        // the words give both, the edge first.
         if (m_cliffs && m_darkFloor)
-            return tr("No wheel dropped and the cliff signals read %1 of 4095: low, but not the near 0 of a drop. "
-                      "On a dark rug or floor, which reads as a cliff, drive it off in Full or move it to a lighter "
-                      "floor; at an edge, carry it back. Then Enter Safe.")
+            return tr("Carry it back from the edge, then Enter Safe. No edge there? Its cliff signals read %1 of "
+                      "4095, low but not the near 0 of a drop, and no wheel dropped: a dark rug or floor reads as "
+                      "a cliff. Drive it off in Full, or move it to a lighter floor.")
                 .arg(m_cliffSignals);
-        // Signals near 0 prove an edge; without them, say how to tell.
-        if (m_cliffs && m_cliffSignals.isEmpty())
-            return tr("Carry it back from the edge, then Enter Safe. (A dark rug reads as a cliff too: then the "
-                      "cliff signals stay above %1 and no wheel drops; drive it off in Full.)")
-                .arg(kDarkFloorSignalFrom);
         if (m_cliffs)
             return tr("Carry it back from the edge, then Enter Safe.");
         if (m_wheelDropLeft || m_wheelDropRight || m_wheelDropCaster)

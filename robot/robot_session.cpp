@@ -23,6 +23,7 @@ RobotSession::RobotSession(QObject *parent) : QObject(parent)
                                            return g ? g->first <= 20 && 20 <= g->last : id == 20;
                                        });
                 m_angleAskedAt.reset();
+                m_requestedSpeeds.reset();
                 m_angleSchedule.restart(m_lastReadSeconds);
             });
     connect(&m_link, &oilink::RobotLinkThread::profileAssumed, this, &RobotSession::onProfileAssumed);
@@ -319,6 +320,8 @@ void RobotSession::onSnapshot(const oi::SensorSnapshot &snapshot, double readSec
         m_history.append(readSeconds, frame);
     m_odometry.update(snapshot);
     m_lastReadSeconds = readSeconds;
+    if (m_readsAngleApart)
+        noteRequestedSpeeds(frame, readSeconds);
     readAngleIfDue(readSeconds);
     // The time of day the frame was read, for "dropped it to Passive at 12:03:04".
     const bool modeChange = m_mode.observe(frame, m_connectedAtMs + qint64(readSeconds * 1000));
@@ -339,6 +342,19 @@ void RobotSession::readAngleIfDue(double readSeconds)
         return;
     m_angleAskedAt = readSeconds;
     m_link.querySensors({20});
+}
+
+void RobotSession::noteRequestedSpeeds(const oi::SensorSnapshot &frame, double readSeconds)
+{
+    std::array<std::int32_t, 4> speeds{};
+    for (int id = 39; id <= 42; ++id) {
+        if (!frame.has(id))
+            return;
+        speeds[std::size_t(id - 39)] = frame.raw(id);
+    }
+    if (m_requestedSpeeds && *m_requestedSpeeds != speeds)
+        m_angleSchedule.speedsChanged(readSeconds);
+    m_requestedSpeeds = speeds;
 }
 
 void RobotSession::onSensorReply(const oi::SensorSnapshot &reply)

@@ -22,6 +22,9 @@
 #include <QObject>
 #include <QString>
 
+#include <array>
+#include <optional>
+
 // One robot, everything that belongs to it, on the GUI thread: its link (on a
 // worker thread), profile, firmware and the corrections that firmware needs,
 // the latest value of every packet, its history, its odometry, its teleop
@@ -216,6 +219,7 @@ private:
     void onStreamStarted(oi::ProfileId profile);
     void onSensorReply(const oi::SensorSnapshot &reply);
     void readAngleIfDue(double readSeconds);
+    void noteRequestedSpeeds(const oi::SensorSnapshot &frame, double readSeconds);
     void onProfileAssumed(oi::ProfileId assumed);
     void setProfileAssumed(bool assumed);
     void onBytesSent(const QByteArray &bytes);
@@ -251,6 +255,7 @@ private:
     bool m_readsAngleApart = false;
     oi::AngleReadSchedule m_angleSchedule;
     std::optional<double> m_angleAskedAt; // a reading asked for and not yet answered
+    std::optional<std::array<std::int32_t, 4>> m_requestedSpeeds; // packets 39 to 42, as last streamed
     double m_lastReadSeconds = 0;
     std::optional<WheelCalibration> m_calibration;
     // Owned here; it sees this robot only as its DriveTarget. Last: it reads

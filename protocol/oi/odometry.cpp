@@ -149,6 +149,11 @@ void AngleReadSchedule::read(double seconds, double degrees)
     m_nextSeconds = seconds + std::clamp(wait, kShortestSeconds, kLongestSeconds);
 }
 
+void AngleReadSchedule::speedsChanged(double seconds)
+{
+    m_nextSeconds = std::min(m_nextSeconds, seconds + kAfterNewSpeedsSeconds);
+}
+
 void AngleReadSchedule::restart(double seconds)
 {
     m_lastSeconds = seconds;

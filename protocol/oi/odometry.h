@@ -137,6 +137,12 @@ public:
     // Asks for the next reading as soon as due() is next asked (a run that
     // needs its final count now).
     void readSoon() { m_nextSeconds = -1; }
+    // The wheels were asked for other speeds at `seconds` (packets 39 to 42
+    // changed): a turn that starts shows within kAfterNewSpeedsSeconds, for
+    // the price of one more reading. The speeds only time the reading; the
+    // heading is still the robot's own count.
+    void speedsChanged(double seconds);
+    static constexpr double kAfterNewSpeedsSeconds = 0.5;
     // From the start: the first reading is due kLongestSeconds after `seconds`.
     void restart(double seconds);
 

@@ -70,6 +70,8 @@ private slots:
         QVERIFY(rig.live());
         QVERIFY(rig.send(oi::Command::Full));
         QVERIFY(rig.send(oi::Command::DriveDirect, {right, left}));
+        // The turn shows on the map within a second of the robot's time.
+        QVERIFY(rig.clock.advanceUntil([&] { return rig.estimate.degrees() > 0; }, 1000));
         QVERIFY(rig.clock.advanceUntil([&] { return rig.truth.degrees() >= 360; }, 120'000));
         QVERIFY(rig.send(oi::Command::DriveDirect, {0, 0}));
         // The last part of the turn comes with the next reading of the angle.

@@ -150,7 +150,8 @@ private slots:
         s = LinkSettings::serial(QStringLiteral("/dev/recording"), oi::ProfileId::Create1);
         // Start on a Create ends a script first (ERRATA 20); a stop comes
         // before Start everywhere, for a robot that a program which died left driving.
-        QTest::newRow("create1") << s << bytes({152, 0, 137, 0, 0, 0, 0, 138, 0, 128, 148, 1, 6});
+        // A Create 1 streams all but its angle (read apart: AngleReadSchedule).
+        QTest::newRow("create1") << s << bytes({152, 0, 137, 0, 0, 0, 0, 138, 0, 128, 148, 7, 1, 17, 18, 19, 3, 4, 5});
         s = create2();
         s.streamPackets = {7, 35};
         QTest::newRow("chosen packets") << s << bytes({137, 0, 0, 0, 0, 138, 0, 128, 148, 2, 7, 35});
@@ -506,7 +507,7 @@ private slots:
     {
         m_link->open(LinkSettings::serial(QStringLiteral("/dev/recording"), oi::ProfileId::Create1));
         Recording &r = current()->recording();
-        QCOMPARE(r.written(), bytes({152, 0, 137, 0, 0, 0, 0, 138, 0, 128, 148, 1, 6}));
+        QCOMPARE(r.written(), bytes({152, 0, 137, 0, 0, 0, 0, 138, 0, 128, 148, 7, 1, 17, 18, 19, 3, 4, 5}));
         QVERIFY(r.commands.isEmpty());
         m_link->send(bytes({128})); // Passive, asked for
         m_link->send(bytes({137, 0, 100, 128, 0}));

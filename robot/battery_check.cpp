@@ -9,7 +9,8 @@ std::optional<BatteryCheck::Verdict> BatteryCheck::judge(const oi::SensorSnapsho
 {
     Verdict v;
     QStringList why;
-    if (frame.has(22) && (frame.voltageMv() < kLowestMv || frame.voltageMv() > kHighestMv)) {
+    // 0 is no measurement yet (a robot just woken, a frame of zeros), not a voltage.
+    if (frame.has(22) && frame.voltageMv() != 0 && (frame.voltageMv() < kLowestMv || frame.voltageMv() > kHighestMv)) {
         v.suspect.push_back(22);
         why << tr("the voltage %1 V is outside what its pack can have (%2 to %3 V)")
                    .arg(frame.voltageMv() / 1000.0, 0, 'f', 1)

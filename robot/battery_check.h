@@ -19,7 +19,8 @@ class BatteryCheck {
     Q_DECLARE_TR_FUNCTIONS(BatteryCheck)
 public:
     // A pack of these robots (12 NiMH cells, or a 4-cell lithium pack) reads
-    // between these while it lives; beyond them the reading is not a voltage.
+    // between these while it lives; beyond them the reading is not a voltage
+    // (0 is taken as no measurement yet).
     static constexpr int kLowestMv = 6000;
     static constexpr int kHighestMv = 21000;
     // No pack gains or loses this much of its capacity between two frames

@@ -9,6 +9,9 @@
 namespace {
 // Settling: the robot has stopped well within this many frames.
 constexpr int kSettleFrames = 70;
+// A Create 1 is asked for its final angle once it has stood this long.
+constexpr int kStandStillFrames = 20;
+constexpr double kFrameSeconds = 0.015;
 
 int driveDirectSpeed(double mmPerS)
 {
@@ -25,6 +28,7 @@ CalibrationDrive::CalibrationDrive(RobotSession &robot, QObject *parent) : QObje
 {
     connect(&m_robot, &RobotSession::frameReceived, this,
             [this](double, const oi::SensorSnapshot &frame) { onFrame(frame); });
+    connect(&m_robot, &RobotSession::angleRead, this, &CalibrationDrive::onAngleRead);
     connect(&m_robot.teleop(), &TeleopController::motionStopped, this, [this] {
         if (!m_stoppingItself && (m_phase == Phase::Driving || m_phase == Phase::EnteringSafe))
             abort(tr("The run was stopped before the end."));
@@ -60,6 +64,7 @@ bool CalibrationDrive::start(oi::EncoderRun::Kind kind, double target, std::opti
     // Frames reach the model corrected (ERRATA 16): nothing left to correct.
     m_run.emplace(kind, target, wheels.value_or(m_robot.odometry().wheels()), kSpeedMmPerS);
     m_frames = 0;
+    m_finalAngleAsked = m_finalAngleRead = false;
     m_phase = Phase::EnteringSafe;
     if (!drivesInMode(m_robot.latest().oiMode()))
         m_robot.requestMode(oi::Command::Safe);
@@ -86,15 +91,36 @@ void CalibrationDrive::abort(const QString &reason)
     emit aborted(reason);
 }
 
+int CalibrationDrive::driveFrameLimit() const
+{
+    // Three times as long as the run takes at full speed, and ten seconds
+    // more for the slow approach at its end.
+    const double lengthMm = m_run->kind() == oi::EncoderRun::Kind::Straight
+                                ? std::abs(m_run->target())
+                                : std::abs(m_run->target()) * m_run->wheels().wheelBaseMm / 2;
+    return int(std::ceil((3 * lengthMm / kSpeedMmPerS + 10) / kFrameSeconds));
+}
+
+void CalibrationDrive::onAngleRead(const oi::SensorSnapshot &reply)
+{
+    if (m_phase != Phase::Driving && m_phase != Phase::Stopping)
+        return;
+    m_run->update(reply);
+    emit progressed(m_run->progress());
+    if (m_phase == Phase::Stopping && m_finalAngleAsked)
+        m_finalAngleRead = true;
+}
+
 void CalibrationDrive::onFrame(const oi::SensorSnapshot &frame)
 {
     if (m_phase == Phase::Idle)
         return;
     ++m_frames;
     if (m_phase == Phase::EnteringSafe) {
-        if (drivesInMode(frame.oiMode()))
+        if (drivesInMode(frame.oiMode())) {
             m_phase = Phase::Driving;
-        else if (m_frames > kSafeModeFrames)
+            m_frames = 0;
+        } else if (m_frames > kSafeModeFrames)
             abort(tr("The robot did not enter Safe mode: is it on its dock, or a wheel lifted?"));
         if (m_phase != Phase::Driving)
             return;
@@ -103,10 +129,19 @@ void CalibrationDrive::onFrame(const oi::SensorSnapshot &frame)
         const std::string hazard = oi::runHazard(frame);
         if (hazard == "bump")
             return abort(tr("The robot bumped into something: clear its path and run the step again."));
+        if (hazard == "cliff" && RobotMode::darkFloorSignals(frame))
+            return abort(tr("A cliff sensor reads a dark floor (its signal low but not near 0, no wheel dropped): "
+                            "move the robot to a lighter floor and run the step again."));
         if (hazard == "cliff")
             return abort(tr("A cliff sensor saw a drop: move the robot away from the edge and run the step again."));
         if (hazard == "wheel drop")
             return abort(tr("A wheel dropped: put the robot on the floor and run the step again."));
+        if (m_frames > driveFrameLimit())
+            return abort(tr("The run did not reach its end in %1 s: the robot counted %2 of it. Is a wheel "
+                            "slipping or held? Check the floor and the wheels, and run the step again.")
+                             .arg(int(std::lround(m_frames * kFrameSeconds)))
+                             .arg(QStringLiteral("%1 %").arg(int(std::lround(
+                                 100 * std::abs(m_run->progress()) / std::max(1e-9, std::abs(m_run->target())))))));
     }
     const oi::WheelSpeeds speeds = m_run->update(frame);
     emit progressed(m_run->progress());
@@ -121,7 +156,22 @@ void CalibrationDrive::onFrame(const oi::SensorSnapshot &frame)
         m_phase = Phase::Stopping;
         m_frames = 0;
     }
-    if (m_phase == Phase::Stopping && (m_run->settled() || m_frames > kSettleFrames)) {
+    if (m_phase != Phase::Stopping)
+        return;
+    if (m_robot.readsAngleApart()) {
+        // A Create 1's last turn is in its angle, read once it stands still.
+        if (!m_finalAngleAsked && m_frames >= kStandStillFrames) {
+            m_finalAngleAsked = true;
+            m_robot.readAngleSoon();
+        }
+        if (m_finalAngleRead) {
+            m_phase = Phase::Idle;
+            emit finished();
+        } else if (m_frames > 3 * kSettleFrames)
+            abort(tr("The robot did not report its angle after the run: run the step again."));
+        return;
+    }
+    if (m_run->settled() || m_frames > kSettleFrames) {
         m_phase = Phase::Idle;
         emit finished();
     }

@@ -50,6 +50,11 @@ private:
     enum class Phase { Idle, EnteringSafe, Driving, Stopping };
 
     void onFrame(const oi::SensorSnapshot &frame);
+    // A reading of a Create 1's angle (RobotSession::angleRead).
+    void onAngleRead(const oi::SensorSnapshot &reply);
+    // The run's time on the robot's clock (frames), beyond which it has not
+    // reached its end and will not.
+    int driveFrameLimit() const;
     void abort(const QString &reason);
     void stopRobot();
 
@@ -57,5 +62,6 @@ private:
     std::optional<oi::EncoderRun> m_run;
     Phase m_phase = Phase::Idle;
     int m_frames = 0;
+    bool m_finalAngleAsked = false, m_finalAngleRead = false; // a Create 1's count after it stopped
     bool m_stoppingItself = false; // our own stop, not a reason to abort
 };

@@ -31,6 +31,16 @@ bool onCharger(const oi::SensorSnapshot &frame)
 
 } // namespace
 
+bool RobotMode::darkFloorSignals(const oi::SensorSnapshot &frame)
+{
+    if (frame.wheelDropLeft() || frame.wheelDropRight() || frame.wheelDropCaster() || !cliffBits(frame))
+        return false;
+    for (oi::CliffSensor c : kCliffs)
+        if (frame.cliff(c) && (!frame.has(28 + int(c)) || frame.cliffSignal(c) < kDarkFloorSignalFrom))
+            return false;
+    return true;
+}
+
 void RobotMode::clear() { *this = RobotMode(); }
 
 void RobotMode::asked(oi::Command command, const QDateTime &at)
@@ -90,6 +100,13 @@ bool RobotMode::observe(const oi::SensorSnapshot &frame, qint64 atMs)
             m_cause = Cause::Safety;
             m_changedAt = QDateTime::fromMSecsSinceEpoch(atMs);
             m_cliffs = cliffBits(frame);
+            m_darkFloor = darkFloorSignals(frame);
+            QStringList signalWords;
+            const QString names[] = {tr("left"), tr("front left"), tr("front right"), tr("right")};
+            for (int i = 0; i < 4; ++i)
+                if ((m_cliffs & (1u << i)) && frame.has(28 + i))
+                    signalWords << QStringLiteral("%1 %2").arg(names[i]).arg(frame.cliffSignal(kCliffs[i]));
+            m_cliffSignals = signalWords.join(tr(", "));
             m_wheelDropLeft = frame.wheelDropLeft();
             m_wheelDropRight = frame.wheelDropRight();
             m_wheelDropCaster = frame.wheelDropCaster();
@@ -225,6 +242,13 @@ QString RobotMode::nextStep() const
     if (safeRefusedOnDock())
         return tr("Use Full to drive it off the dock, or lift it off.");
     if (m_cause == Cause::Safety) {
+        // A robot that stops half over an edge reads like one on a dark rug:
+        // the words give both, the edge first.
+        if (m_cliffs && m_darkFloor)
+            return tr("Carry it back from the edge, then Enter Safe. No edge there? Its cliff signals read %1 of "
+                      "4095, low but not the near 0 of a drop, and no wheel dropped: a dark rug or floor reads as "
+                      "a cliff. Drive it off in Full, or move it to a lighter floor.")
+                .arg(m_cliffSignals);
         if (m_cliffs)
             return tr("Carry it back from the edge, then Enter Safe.");
         if (m_wheelDropLeft || m_wheelDropRight || m_wheelDropCaster)

@@ -69,8 +69,14 @@ public:
     // Words it does not know are left out.
     static QString shortReasonOf(const QStringList &causeKeys);
     // The one step that makes it work again, to go with reason():
-    // "Carry it back from the edge, then Enter Safe."
+    // "Carry it back from the edge, then Enter Safe." A cliff whose signals
+    // read like a dark rug (darkFloorSignals()) says so, with the way off it.
     QString nextStep() const;
+    // A cliff sensor over a drop sees almost nothing (a few counts of 4095);
+    // over a dark rug it still sees this much or more, though less than its
+    // robot's threshold. Frames read: the cliff, its signal, the wheel drops.
+    static constexpr int kDarkFloorSignalFrom = 100;
+    static bool darkFloorSignals(const oi::SensorSnapshot &frame);
     // Why `command` cannot work in the mode reported now, or empty when it can.
     QString whyNot(oi::Command command) const;
     // Why a lesson goal reading `goalPackets` (packet keys) can no longer be
@@ -90,6 +96,10 @@ private:
     QDateTime m_changedAt;
     // What the frame that showed a safety drop saw.
     std::uint8_t m_cliffs = 0; // bit per oi::CliffSensor
+    // The tripped sensors' signals read low but well above a drop's, and no
+    // wheel dropped: most likely a dark rug or floor, not an edge.
+    bool m_darkFloor = false;
+    QString m_cliffSignals; // those signals in words: front left 260
     bool m_wheelDropLeft = false, m_wheelDropRight = false, m_wheelDropCaster = false;
     bool m_charger = false;
     int m_passiveOnChargerSinceAsked = 0; // while Safe is asked

@@ -5,6 +5,8 @@
 #include "command_encoder.h"
 
 #include <QDateTime>
+
+#include <algorithm>
 #include <QSettings>
 
 RobotSession::RobotSession(QObject *parent) : QObject(parent)
@@ -12,7 +14,18 @@ RobotSession::RobotSession(QObject *parent) : QObject(parent)
     oilink::registerLinkMetaTypes();
     connect(&m_link, &oilink::RobotLinkThread::snapshot, this, &RobotSession::onSnapshot);
     connect(&m_link, &oilink::RobotLinkThread::streamStarted, this,
-            [this](oi::ProfileId profile, int, const QList<int> &) { onStreamStarted(profile); });
+            [this](oi::ProfileId profile, int, const QList<int> &packets) {
+                onStreamStarted(profile);
+                const oi::RobotProfile &p = oi::profile(profile);
+                m_readsAngleApart = profile == oi::ProfileId::Create1
+                                    && std::none_of(packets.begin(), packets.end(), [&](int id) {
+                                           const oi::PacketGroup *g = p.group(id);
+                                           return g ? g->first <= 20 && 20 <= g->last : id == 20;
+                                       });
+                m_angleAskedAt.reset();
+                m_requestedSpeeds.reset();
+                m_angleSchedule.restart(m_lastReadSeconds);
+            });
     connect(&m_link, &oilink::RobotLinkThread::profileAssumed, this, &RobotSession::onProfileAssumed);
     connect(&m_link, &oilink::RobotLinkThread::modeReportedOneHigh, this, [this] {
         m_firmware.noteModeReportedOneHigh();
@@ -31,7 +44,7 @@ RobotSession::RobotSession(QObject *parent) : QObject(parent)
     connect(&m_link, &oilink::RobotLinkThread::errorOccurred, this, &RobotSession::errorOccurred);
     connect(&m_link, &oilink::RobotLinkThread::rawBytesSent, this, &RobotSession::onBytesSent);
     connect(&m_link, &oilink::RobotLinkThread::rawBytesReceived, this, &RobotSession::onBytesReceived);
-    connect(&m_link, &oilink::RobotLinkThread::sensorReply, this, &RobotSession::sensorReply);
+    connect(&m_link, &oilink::RobotLinkThread::sensorReply, this, &RobotSession::onSensorReply);
     connect(&m_link, &oilink::RobotLinkThread::scriptReply, this, &RobotSession::scriptShown);
     connect(&m_link, &oilink::RobotLinkThread::scriptFailed, this, &RobotSession::scriptFailed);
     connect(&m_link, &oilink::RobotLinkThread::connectionCheckStep, this, &RobotSession::connectionCheckStep);
@@ -236,6 +249,8 @@ void RobotSession::resetHistory()
 {
     m_history.clear();
     m_odometry.reset();
+    m_battery.reset();
+    m_batteryDoubt.clear();
     emit historyReset();
 }
 
@@ -288,12 +303,26 @@ void RobotSession::onSnapshot(const oi::SensorSnapshot &snapshot, double readSec
     // the fractions of a degree.
     oi::SensorSnapshot frame = snapshot;
     m_firmware.corrections().correct(frame);
+    // The one place a battery reading is judged: one that cannot be true is
+    // neither shown nor plotted.
+    if (const std::optional<BatteryCheck::Verdict> verdict = m_battery.judge(frame, readSeconds)) {
+        for (int id : verdict->suspect)
+            frame.remove(id);
+        if (m_batteryDoubt.isEmpty()) {
+            m_batteryDoubt = BatteryCheck::message(*verdict);
+            emit errorOccurred(m_batteryDoubt);
+        }
+    }
     m_latest.merge(frame);
     ++m_snapshotCount;
     // Every frame once: distance and angle are increments since the last one.
     if (m_historyKept)
         m_history.append(readSeconds, frame);
     m_odometry.update(snapshot);
+    m_lastReadSeconds = readSeconds;
+    if (m_readsAngleApart)
+        noteRequestedSpeeds(frame, readSeconds);
+    readAngleIfDue(readSeconds);
     // The time of day the frame was read, for "dropped it to Passive at 12:03:04".
     const bool modeChange = m_mode.observe(frame, m_connectedAtMs + qint64(readSeconds * 1000));
     // Safe dropping to Passive by itself (a cliff, a wheel drop) ends the motion.
@@ -301,6 +330,44 @@ void RobotSession::onSnapshot(const oi::SensorSnapshot &snapshot, double readSec
     if (modeChange)
         emit modeChanged();
     emit frameReceived(readSeconds, frame);
+}
+
+void RobotSession::readAngleIfDue(double readSeconds)
+{
+    // A reply lost (the link said why) is asked for again after a while.
+    constexpr double kReplyLostSeconds = 2;
+    if (!m_readsAngleApart || isReplay()
+        || (m_angleAskedAt && readSeconds - *m_angleAskedAt < kReplyLostSeconds)
+        || !m_angleSchedule.due(readSeconds))
+        return;
+    m_angleAskedAt = readSeconds;
+    m_link.querySensors({20});
+}
+
+void RobotSession::noteRequestedSpeeds(const oi::SensorSnapshot &frame, double readSeconds)
+{
+    std::array<std::int32_t, 4> speeds{};
+    for (int id = 39; id <= 42; ++id) {
+        if (!frame.has(id))
+            return;
+        speeds[std::size_t(id - 39)] = frame.raw(id);
+    }
+    if (m_requestedSpeeds && *m_requestedSpeeds != speeds)
+        m_angleSchedule.speedsChanged(readSeconds);
+    m_requestedSpeeds = speeds;
+}
+
+void RobotSession::onSensorReply(const oi::SensorSnapshot &reply)
+{
+    // Every reading of a Create's angle is the turn since the one before,
+    // whoever asked for it: all of them turn the odometry.
+    if (m_readsAngleApart && reply.has(20)) {
+        m_odometry.update(reply);
+        m_angleSchedule.read(m_lastReadSeconds, reply.angleDegrees());
+        m_angleAskedAt.reset();
+        emit angleRead(reply);
+    }
+    emit sensorReply(reply);
 }
 
 void RobotSession::onReplayStatus(const oilink::ReplayStatus &status)

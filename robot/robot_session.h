@@ -8,6 +8,7 @@
 #include "robot_link_thread.h"
 #include "robot_mode.h"
 #include "robot_markers.h"
+#include "battery_check.h"
 #include "robot_odometry.h"
 #include "sensor_history.h"
 #include "sensor_snapshot.h"
@@ -20,6 +21,9 @@
 #endif
 #include <QObject>
 #include <QString>
+
+#include <array>
+#include <optional>
 
 // One robot, everything that belongs to it, on the GUI thread: its link (on a
 // worker thread), profile, firmware and the corrections that firmware needs,
@@ -94,6 +98,16 @@ public:
     // Query List (149), answered by sensorReply(); Show Script (154),
     // answered by scriptShown(). A failure comes as errorOccurred().
     void querySensors(const QList<int> &packetIds) { m_link.querySensors(packetIds); }
+    // Why a battery reading was left out (BatteryCheck), said once a
+    // connection as errorOccurred(); empty while every reading could be true.
+    const QString &batteryDoubt() const { return m_batteryDoubt; }
+    // A Create 1 whose stream leaves out its angle (20), which loses its
+    // fractions on every read: the session asks for it now and then
+    // (oi::AngleReadSchedule), and each reply turns the odometry.
+    bool readsAngleApart() const { return m_readsAngleApart; }
+    // The next angle reading as soon as the next frame comes (a run that
+    // needs its final count); angleRead() answers.
+    void readAngleSoon() { m_angleSchedule.readSoon(); }
     void showScript() { m_link.showScript(); }
     // Finds out through the link why no valid data comes; the link resumes
     // streaming afterwards. Answers with connectionChecked().
@@ -188,6 +202,9 @@ signals:
     void bytesSent(const QByteArray &bytes, qint64 msecs);
     void bytesReceived(const QByteArray &bytes, qint64 msecs);
     void sensorReply(const oi::SensorSnapshot &reply);
+    // A reply that carried the Create 1's angle (readsAngleApart()), after
+    // the odometry took it.
+    void angleRead(const oi::SensorSnapshot &reply);
     void scriptShown(const QByteArray &script);
     void scriptFailed(const QString &message);
     void connectionCheckStep(const QString &step);
@@ -200,6 +217,9 @@ signals:
 private:
     void onSnapshot(const oi::SensorSnapshot &snapshot, double readSeconds);
     void onStreamStarted(oi::ProfileId profile);
+    void onSensorReply(const oi::SensorSnapshot &reply);
+    void readAngleIfDue(double readSeconds);
+    void noteRequestedSpeeds(const oi::SensorSnapshot &frame, double readSeconds);
     void onProfileAssumed(oi::ProfileId assumed);
     void setProfileAssumed(bool assumed);
     void onBytesSent(const QByteArray &bytes);
@@ -230,6 +250,13 @@ private:
     bool m_historyKept = true;
     RecentBytes m_recentBytes;
     RobotOdometry m_odometry;
+    BatteryCheck m_battery;
+    QString m_batteryDoubt;
+    bool m_readsAngleApart = false;
+    oi::AngleReadSchedule m_angleSchedule;
+    std::optional<double> m_angleAskedAt; // a reading asked for and not yet answered
+    std::optional<std::array<std::int32_t, 4>> m_requestedSpeeds; // packets 39 to 42, as last streamed
+    double m_lastReadSeconds = 0;
     std::optional<WheelCalibration> m_calibration;
     // Owned here; it sees this robot only as its DriveTarget. Last: it reads
     // the members above, and is destroyed first.

@@ -2,6 +2,25 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="de">
 <context>
+    <name>BatteryCheck</name>
+    <message>
+        <source>the voltage %1 V is outside what its pack can have (%2 to %3 V)</source>
+        <translation>die Spannung %1 V liegt außerhalb dessen, was sein Akku haben kann (%2 bis %3 V)</translation>
+    </message>
+    <message>
+        <source>the charge %1 mAh is above the capacity %2 mAh</source>
+        <translation>die Ladung %1 mAh liegt über der Kapazität %2 mAh</translation>
+    </message>
+    <message>
+        <source>the charge jumped from %1 % to %2 % in %3 s</source>
+        <translation>die Ladung sprang in %3 s von %1 % auf %2 %</translation>
+    </message>
+    <message>
+        <source>Battery reading cannot be true: %1. It is left out of the gauges and plots; if it goes on, check the battery&apos;s seating and contacts.</source>
+        <translation>Akkuwert kann nicht stimmen: %1. Er wird in Anzeigen und Diagrammen ausgelassen; wenn es so weitergeht, prüfen Sie Sitz und Kontakte des Akkus.</translation>
+    </message>
+</context>
+<context>
     <name>BitName</name>
     <message>
         <source>Advance</source>
@@ -371,6 +390,18 @@
     <message>
         <source>A wheel dropped: put the robot on the floor and run the step again.</source>
         <translation>Ein Rad ist abgesackt: Stell den Roboter auf den Boden und fahre den Schritt noch einmal.</translation>
+    </message>
+    <message>
+        <source>A cliff sensor reads a dark floor (its signal low but not near 0, no wheel dropped): move the robot to a lighter floor and run the step again.</source>
+        <translation>Ein Abgrundsensor sieht einen dunklen Boden (sein Signal niedrig, aber nicht nahe 0, kein Rad abgesenkt): Stell den Roboter auf einen helleren Boden und fahre den Schritt noch einmal.</translation>
+    </message>
+    <message>
+        <source>The run did not reach its end in %1 s: the robot counted %2 of it. Is a wheel slipping or held? Check the floor and the wheels, and run the step again.</source>
+        <translation>Die Fahrt hat ihr Ende in %1 s nicht erreicht: Der Roboter hat %2 davon gezählt. Rutscht ein Rad oder wird es festgehalten? Prüfe Boden und Räder und fahre den Schritt noch einmal.</translation>
+    </message>
+    <message>
+        <source>The robot did not report its angle after the run: run the step again.</source>
+        <translation>Der Roboter hat nach der Fahrt seinen Winkel nicht gemeldet: Fahre den Schritt noch einmal.</translation>
     </message>
 </context>
 <context>
@@ -2099,10 +2130,6 @@ Klicken wählt diesen Roboter: jedes Dock zeigt ihn</translation>
         <translation>Vorn unter dem Roboter leuchten vier Abgrundsensoren mit Infrarotlicht auf den Boden und messen, wie viel zurückkommt. Auf dem Boden ist jedes Signal hoch. Lass den Roboter auf dem Boden und sieh zu, wie die vorderen Signale zwei Sekunden lang über 1000 bleiben.</translation>
     </message>
     <message>
-        <source>Drive slowly towards the edge of a table or a step, in Safe mode, or lift the front of the robot a little. On the virtual robot, the stage edge is in the front right corner of the classroom. When a front sensor loses the floor, the robot sets its cliff flag and, in Safe mode, stops.</source>
-        <translation>Fahre im Safe-Modus langsam auf die Kante eines Tisches oder einer Stufe zu, oder heb die Vorderseite des Roboters ein wenig an. Beim virtuellen Roboter ist die Bühnenkante in der vorderen rechten Ecke des Klassenzimmers. Verliert ein vorderer Sensor den Boden, setzt der Roboter sein Abgrund-Flag und hält im Safe-Modus an.</translation>
-    </message>
-    <message>
         <source>Look at the signal behind the flag: over the edge almost no light comes back. Hold the robot a little further over the edge, so that a front signal stays under 500 for half a second.</source>
         <translation>Sieh dir das Signal hinter dem Flag an: Über der Kante kommt fast kein Licht zurück. Halte den Roboter ein wenig weiter über die Kante, sodass ein vorderes Signal eine halbe Sekunde lang unter 500 bleibt.</translation>
     </message>
@@ -2173,6 +2200,10 @@ Klicken wählt diesen Roboter: jedes Dock zeigt ihn</translation>
     <message>
         <source>Come closer to the wall, about four centimetres: the robot decides that a wall is there and sets the wall flag, packet 8. Keep it on for one second.</source>
         <translation>Komm näher an die Wand, etwa vier Zentimeter: Der Roboter entscheidet, dass dort eine Wand ist, und setzt das Wand-Flag, Paket 8. Halte es eine Sekunde lang an.</translation>
+    </message>
+    <message>
+        <source>Drive slowly towards the edge of a table or a step, in Safe mode, or lift the front of the robot a little. On the virtual robot, the stage edge is in the front right corner of the classroom. When a front sensor loses the floor, the robot sets its cliff flag and, in Safe mode, stops. A dark rug does the same, though the floor is there: then the signals stay low but well above 0 and no wheel drops. Drive off it in Full mode, or move the robot.</source>
+        <translation>Fahre im Safe-Modus langsam auf die Kante eines Tisches oder einer Stufe zu, oder hebe die Vorderseite des Roboters ein wenig an. Beim virtuellen Roboter liegt die Bühnenkante in der vorderen rechten Ecke des Klassenzimmers. Wenn ein vorderer Sensor den Boden verliert, setzt der Roboter sein Abgrund-Flag und hält im Safe-Modus an. Ein dunkler Teppich bewirkt dasselbe, obwohl der Boden da ist: Dann bleiben die Signale niedrig, aber deutlich über 0, und kein Rad senkt sich ab. Fahre im Full-Modus von ihm herunter oder stelle den Roboter um.</translation>
     </message>
 </context>
 <context>
@@ -4139,6 +4170,10 @@ Doppelklick zum Umbenennen</translation>
         <source>Use Full to drive it off the dock, or lift it off.</source>
         <translation>Mit Full von der Ladestation fahren, oder ihn herunterheben.</translation>
     </message>
+    <message>
+        <source>Carry it back from the edge, then Enter Safe. No edge there? Its cliff signals read %1 of 4095, low but not the near 0 of a drop, and no wheel dropped: a dark rug or floor reads as a cliff. Drive it off in Full, or move it to a lighter floor.</source>
+        <translation>Tragen Sie ihn von der Kante weg, dann Safe aktivieren. Keine Kante da? Seine Abgrundsignale lesen %1 von 4095, niedrig, aber nicht die fast 0 eines Abgrunds, und kein Rad hat sich abgesenkt: Ein dunkler Teppich oder Boden wirkt wie ein Abgrund. Fahren Sie ihn im Full-Modus herunter oder stellen Sie ihn auf einen helleren Boden.</translation>
+    </message>
 </context>
 <context>
     <name>RobotSession</name>
@@ -4465,6 +4500,10 @@ Doppelklick zum Umbenennen</translation>
     <message>
         <source>%1: cannot write: %2</source>
         <translation>%1: nicht schreibbar: %2</translation>
+    </message>
+    <message>
+        <source>%1: the shade (the fifth number) must be from 0 (the floor as it is) to 1 (black), not %2</source>
+        <translation>%1: der Farbton (die fünfte Zahl) muss zwischen 0 (der Boden, wie er ist) und 1 (schwarz) liegen, nicht %2</translation>
     </message>
 </context>
 <context>

@@ -2,6 +2,25 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="es">
 <context>
+    <name>BatteryCheck</name>
+    <message>
+        <source>the voltage %1 V is outside what its pack can have (%2 to %3 V)</source>
+        <translation>la tensión de %1 V está fuera de lo que puede tener su batería (de %2 a %3 V)</translation>
+    </message>
+    <message>
+        <source>the charge %1 mAh is above the capacity %2 mAh</source>
+        <translation>la carga de %1 mAh supera la capacidad de %2 mAh</translation>
+    </message>
+    <message>
+        <source>the charge jumped from %1 % to %2 % in %3 s</source>
+        <translation>la carga saltó del %1 % al %2 % en %3 s</translation>
+    </message>
+    <message>
+        <source>Battery reading cannot be true: %1. It is left out of the gauges and plots; if it goes on, check the battery&apos;s seating and contacts.</source>
+        <translation>La lectura de la batería no puede ser cierta: %1. Se omite en los indicadores y las gráficas; si continúa, compruebe el asiento y los contactos de la batería.</translation>
+    </message>
+</context>
+<context>
     <name>BitName</name>
     <message>
         <source>Advance</source>
@@ -371,6 +390,18 @@
     <message>
         <source>A wheel dropped: put the robot on the floor and run the step again.</source>
         <translation>Una rueda cayó: pon el robot en el suelo y repite el paso.</translation>
+    </message>
+    <message>
+        <source>A cliff sensor reads a dark floor (its signal low but not near 0, no wheel dropped): move the robot to a lighter floor and run the step again.</source>
+        <translation>Un sensor de desnivel ve un suelo oscuro (su señal es baja pero no cercana a 0, ninguna rueda caída): lleva el robot a un suelo más claro y repite el paso.</translation>
+    </message>
+    <message>
+        <source>The run did not reach its end in %1 s: the robot counted %2 of it. Is a wheel slipping or held? Check the floor and the wheels, and run the step again.</source>
+        <translation>La pasada no llegó a su fin en %1 s: el robot contó %2 de ella. ¿Patina o está retenida una rueda? Revisa el suelo y las ruedas y repite el paso.</translation>
+    </message>
+    <message>
+        <source>The robot did not report its angle after the run: run the step again.</source>
+        <translation>El robot no informó de su ángulo tras la pasada: repite el paso.</translation>
     </message>
 </context>
 <context>
@@ -2098,10 +2129,6 @@ Haga clic para seleccionar este robot: todos los paneles lo muestran</translatio
         <translation>Bajo la parte delantera del robot, cuatro sensores de desnivel iluminan el suelo con luz infrarroja y miden cuánta vuelve. Sobre el suelo cada señal es alta. Deja el robot en el suelo y observa cómo las señales delanteras se mantienen por encima de 1000 durante dos segundos.</translation>
     </message>
     <message>
-        <source>Drive slowly towards the edge of a table or a step, in Safe mode, or lift the front of the robot a little. On the virtual robot, the stage edge is in the front right corner of the classroom. When a front sensor loses the floor, the robot sets its cliff flag and, in Safe mode, stops.</source>
-        <translation>Conduce despacio hacia el borde de una mesa o de un escalón, en modo Safe, o levanta un poco la parte delantera del robot. Con el robot virtual, el borde del escenario está en la esquina delantera derecha del aula. Cuando un sensor delantero pierde el suelo, el robot activa su indicador de desnivel y, en modo Safe, se detiene.</translation>
-    </message>
-    <message>
         <source>Look at the signal behind the flag: over the edge almost no light comes back. Hold the robot a little further over the edge, so that a front signal stays under 500 for half a second.</source>
         <translation>Mira la señal que hay detrás del indicador: sobre el borde casi no vuelve luz. Sostén el robot un poco más allá del borde, de modo que una señal delantera se mantenga por debajo de 500 durante medio segundo.</translation>
     </message>
@@ -2172,6 +2199,10 @@ Haga clic para seleccionar este robot: todos los paneles lo muestran</translatio
     <message>
         <source>Come closer to the wall, about four centimetres: the robot decides that a wall is there and sets the wall flag, packet 8. Keep it on for one second.</source>
         <translation>Acércate más a la pared, unos cuatro centímetros: el robot decide que hay una pared y activa el indicador de pared, el paquete 8. Mantenlo activo durante un segundo.</translation>
+    </message>
+    <message>
+        <source>Drive slowly towards the edge of a table or a step, in Safe mode, or lift the front of the robot a little. On the virtual robot, the stage edge is in the front right corner of the classroom. When a front sensor loses the floor, the robot sets its cliff flag and, in Safe mode, stops. A dark rug does the same, though the floor is there: then the signals stay low but well above 0 and no wheel drops. Drive off it in Full mode, or move the robot.</source>
+        <translation>Conduce despacio hacia el borde de una mesa o un escalón, en modo Safe, o levanta un poco la parte delantera del robot. En el robot virtual, el borde del escenario está en la esquina delantera derecha del aula. Cuando un sensor delantero pierde el suelo, el robot activa su indicador de desnivel y, en modo Safe, se detiene. Una alfombra oscura hace lo mismo, aunque el suelo esté ahí: entonces las señales se quedan bajas pero muy por encima de 0 y ninguna rueda cae. Sal de ella en modo Full o mueve el robot.</translation>
     </message>
 </context>
 <context>
@@ -4138,6 +4169,10 @@ Doble clic para renombrar</translation>
         <source>Use Full to drive it off the dock, or lift it off.</source>
         <translation>Usa Full para sacarlo de la base conduciendo, o levántalo.</translation>
     </message>
+    <message>
+        <source>Carry it back from the edge, then Enter Safe. No edge there? Its cliff signals read %1 of 4095, low but not the near 0 of a drop, and no wheel dropped: a dark rug or floor reads as a cliff. Drive it off in Full, or move it to a lighter floor.</source>
+        <translation>Apártelo del borde y pase a Safe. ¿No hay borde? Sus señales de desnivel leen %1 de 4095, bajas pero no el casi 0 de un desnivel, y ninguna rueda cayó: una alfombra o un suelo oscuro se lee como un desnivel. Sáquelo en modo Full o póngalo en un suelo más claro.</translation>
+    </message>
 </context>
 <context>
     <name>RobotSession</name>
@@ -4464,6 +4499,10 @@ Doble clic para renombrar</translation>
     <message>
         <source>%1: cannot write: %2</source>
         <translation>%1: no se puede escribir: %2</translation>
+    </message>
+    <message>
+        <source>%1: the shade (the fifth number) must be from 0 (the floor as it is) to 1 (black), not %2</source>
+        <translation>%1: el tono (el quinto número) debe ir de 0 (el suelo tal cual) a 1 (negro), no %2</translation>
     </message>
 </context>
 <context>

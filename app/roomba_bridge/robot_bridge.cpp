@@ -339,10 +339,19 @@ void RobotBridge::stopAtEdges(const oi::SensorSnapshot &frame)
     if (!atEdge || (wasAtEdge && !m_robot.teleop().isMoving()) || m_lease.holder().isEmpty() || !frame.has(35)
         || frame.oiMode() != oi::OiMode::Full)
         return;
-    qCInfo(lcBridge, "cliff or wheel drop in Full mode while %s drives: stop", qPrintable(m_lease.holder()));
+    // A dark rug reads as a cliff too; the bridge cannot tell it from an
+    // edge where the robot stops half over, so it stops either way and says so.
+    const bool rugLike = RobotMode::darkFloorSignals(frame);
+    qCInfo(lcBridge, "%s in Full mode while %s drives: stop",
+           rugLike ? "cliff with signals like a dark rug's" : "cliff or wheel drop", qPrintable(m_lease.holder()));
     stopRobot();
-    reply(m_lease.holder(), {{"id", "safety"}, {"ok", false},
-                             {"error", "cliff or wheel drop in Full mode: the robot was stopped"}});
+    reply(m_lease.holder(),
+          {{"id", "safety"},
+           {"ok", false},
+           {"error", rugLike ? "cliff in Full mode, its signals low but not near 0 and no wheel dropped: the robot "
+                               "was stopped. At an edge, carry it back; on a dark rug, which reads as a cliff, carry "
+                               "it off (this bridge stops it at every cliff)"
+                             : "cliff or wheel drop in Full mode: the robot was stopped"}});
 }
 
 void RobotBridge::handleCommand(const BridgeInbox::Message &message)

@@ -145,6 +145,7 @@ int main(int argc, char *argv[])
         {QStringLiteral("brc-wired"), QStringLiteral("The cable's wake line: which adapter line reaches the robot's BRC pin, rts (default), dtr, or none (a cable without the BRC wire: no pulse wakes it). For the pseudo-terminal's control socket and RFC 2217."), QStringLiteral("LINE"), QStringLiteral("rts")},
         {QStringLiteral("wake-time"), QStringLiteral("How long after a BRC pulse wakes it the robot listens, in ms (default 300; robots in the field take up to 2000). Bytes sent sooner are lost."), QStringLiteral("MS"), QString::number(oi::RobotProfile::kWakeMs)},
         {QStringLiteral("mode-off-by-one"), QStringLiteral("Play a Wi-Fi Roomba 600 that reports its OI mode (packet 35) one too high: Passive 2, Safe 3, Full 4.")},
+        {QStringLiteral("charge-above-capacity"), QStringLiteral("Play a battery gauge gone wrong: the charge (packet 25) reads more than the capacity (26), a reading that cannot be true.")},
         {QStringLiteral("wheel-diameter"), QStringLiteral("The real diameter of both drive wheels in mm (documents: 72). The firmware counts by 72 mm, so the encoders lie as a real robot's do: practise calibrating."), QStringLiteral("MM")},
         {QStringLiteral("left-wheel-diameter"), QStringLiteral("The real diameter of the left wheel in mm (overrides --wheel-diameter)."), QStringLiteral("MM")},
         {QStringLiteral("right-wheel-diameter"), QStringLiteral("The real diameter of the right wheel in mm (overrides --wheel-diameter)."), QStringLiteral("MM")},
@@ -271,7 +272,8 @@ int main(int argc, char *argv[])
     robot->setQuirks({.sleepsWhilePulsed = parser.isSet(QStringLiteral("sleeps-while-pulsed")),
                       .reportsModeOneHigh = parser.isSet(QStringLiteral("mode-off-by-one")),
                       .brcWiredTo = *brcWiredTo,
-                      .wakeTime = std::chrono::milliseconds(wakeMs)});
+                      .wakeTime = std::chrono::milliseconds(wakeMs),
+                      .reportsChargeAboveCapacity = parser.isSet(QStringLiteral("charge-above-capacity"))});
     if (parser.isSet(QStringLiteral("asleep"))) {
         const std::uint8_t startAndPower[] = {128, 133};
         robot->receive(startAndPower);

@@ -19,17 +19,18 @@ namespace oilink {
 //                 bumps, walls, cliffs, the wheel encoders, battery, mode
 //                 (Roomba 500, Create 2: odometry from the encoders, which
 //                 lose nothing between frames and have no firmware bugs)
-//   1, 19, 20, 21, 22, 35
-//                 the same with distance and angle instead (a Create)
 //   1             7..16
 //   7             bumps and wheel drops
+//
+// A Create 1 streams everything but its angle (20), which loses its
+// fractions on every read and is asked for now and then instead
+// (oi::AngleReadSchedule): 1, 17, 18, 19, 3, 4, 5 (60 bytes; at 57600),
+// 1, 19, 3, 4, 5 (56; at 38400), 1, 19, 21, 22, 35 (24; at 19200), 1, 7.
 //
 // Group 100 makes an 84-byte frame, which fits at 57600 too (86); the same
 // packets as 6 + 101 would take a byte more, so that pair never wins.
 // Typical results: Create 2 at 115200 or 57600 gets 100, at 38400 group 6;
-// a Create at 57600 gets 6 (56 of 86); at 19200 a Create 2 or Roomba 500
-// gets the encoders' short list, a Create the distance and angle one (both
-// 27 of 28).
+// at 19200 a Create 2 or Roomba 500 gets the encoders' short list (27 of 28).
 std::vector<int> chooseStreamPackets(const oi::RobotProfile &profile, int baud);
 
 // The Stream (148) command for these packets at this baud, or why not: an

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "odometry.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace oi {
@@ -42,6 +43,8 @@ void Odometry::reset(Pose start)
     m_pose = start;
     m_pose.thetaRad = normalizedAngle(start.thetaRad);
     m_reference.reset();
+    m_pendingMm = 0;
+    m_pendingFrames = 0;
 }
 
 void Odometry::setCorrections(FirmwareCorrections corrections)
@@ -120,10 +123,41 @@ void Odometry::update(const SensorSnapshot &snapshot)
     // Measure each stretch with one source only: the next encoder frame
     // re-anchors instead of counting again what 19/20 just reported.
     m_reference.reset();
-    const double turnDegrees = m_corrections.correctedAngleDegrees(snapshot.angleDegrees());
     // Firmware before 3.3.0 reports distance wrongly: better no motion than a wrong one.
     const double distanceMm = m_corrections.distanceUnreliable ? 0.0 : snapshot.distanceMm();
-    advance(distanceMm, turnDegrees * kPi / 180.0);
+    if (profile == ProfileId::Create1 && !snapshot.has(20) && ++m_pendingFrames < kMaxPendingFrames) {
+        m_pendingMm += distanceMm;
+        return;
+    }
+    const double turnDegrees = m_corrections.correctedAngleDegrees(snapshot.angleDegrees());
+    advance(m_pendingMm + distanceMm, turnDegrees * kPi / 180.0);
+    m_pendingMm = 0;
+    m_pendingFrames = 0;
+}
+
+bool AngleReadSchedule::due(double seconds) const
+{
+    return seconds >= m_nextSeconds;
+}
+
+void AngleReadSchedule::read(double seconds, double degrees)
+{
+    const double elapsed = seconds - m_lastSeconds;
+    const double rate = elapsed > 0 ? std::abs(degrees) / elapsed : 0;
+    const double wait = rate > 0 ? kDegreesPerRead / rate : kLongestSeconds;
+    m_lastSeconds = seconds;
+    m_nextSeconds = seconds + std::clamp(wait, kShortestSeconds, kLongestSeconds);
+}
+
+void AngleReadSchedule::speedsChanged(double seconds)
+{
+    m_nextSeconds = std::min(m_nextSeconds, seconds + kAfterNewSpeedsSeconds);
+}
+
+void AngleReadSchedule::restart(double seconds)
+{
+    m_lastSeconds = seconds;
+    m_nextSeconds = seconds + kLongestSeconds;
 }
 
 void Odometry::advance(double distanceMm, double turnRad)

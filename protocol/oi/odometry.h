@@ -75,7 +75,10 @@ public:
     // Uses encoder counts (43/44, left/right by profile) when present; the
     // first frame with encoders only sets the reference. Otherwise falls back
     // to distance (19) and angle (20). The Create 1 has no encoders and always
-    // falls back. A frame with none of these packets changes nothing.
+    // falls back; its frames without the angle (AngleReadSchedule) hold their
+    // distance until a reading of the angle (a frame or a reply) says along
+    // which arc it went, or for kMaxPendingFrames at most. A frame with none
+    // of these packets changes nothing.
     void update(const SensorSnapshot &snapshot);
     const Pose &pose() const { return m_pose; }
 
@@ -83,6 +86,10 @@ public:
     // either direction, for both the unsigned (Roomba 500) and the signed
     // (Create 2) encoder packets.
     static int encoderDelta(std::int32_t previous, std::int32_t current);
+
+    // A Create's distance waits this long (6 s of frames) for its angle; then
+    // it goes straight on, rather than the robot stand still on the map.
+    static constexpr int kMaxPendingFrames = 400;
 
 private:
     struct EncoderReference {
@@ -94,11 +101,54 @@ private:
     void advance(double distanceMm, double turnRad);
 
     Pose m_pose;
+    // A Create's distance since its angle was last read (AngleReadSchedule):
+    // moved along the arc the next angle reading says it made.
+    double m_pendingMm = 0;
+    int m_pendingFrames = 0;
     FirmwareCorrections m_corrections;
     double m_wheelBaseMm = kWheelBaseMm;
     double m_leftMmPerCount = kMmPerEncoderCount;
     double m_rightMmPerCount = kMmPerEncoderCount;
     std::optional<EncoderReference> m_reference;
+};
+
+// When to ask a Create 1 for its angle (packet 20). The Create reports whole
+// degrees "since the angle was last requested" and drops the rest on every
+// request (create1-oi.txt), so a stream that carries it every 15 ms reads
+// any turn slower than 67 degrees a second as none at all. Asked for seldom,
+// the robot's own encoders carry the fractions between readings and each
+// reading loses less than one degree: about kDegreesPerRead a reading keeps
+// that loss under 3 %. This is the measured heading, chosen over the other
+// way, integrating the requested wheel speeds (39 to 42): those say what was
+// asked, not what the wheels did (a stalled robot would be drawn turning,
+// Drive leaves 41/42 as they were, and the firmware holds speeds only to
+// 28.5 mm/s). The price is a heading that lags a turn by up to one reading.
+class AngleReadSchedule {
+public:
+    static constexpr double kDegreesPerRead = 40;
+    static constexpr double kShortestSeconds = 0.25; // fast turns: a reading every 40 degrees
+    static constexpr double kLongestSeconds = 4;     // straight or still: now and then
+
+    // Whether the angle is due at `seconds` (the robot's time, frames' read time).
+    bool due(double seconds) const;
+    // A reading of `degrees` came at `seconds`: the next one waits for about
+    // kDegreesPerRead at the rate this one shows.
+    void read(double seconds, double degrees);
+    // Asks for the next reading as soon as due() is next asked (a run that
+    // needs its final count now).
+    void readSoon() { m_nextSeconds = -1; }
+    // The wheels were asked for other speeds at `seconds` (packets 39 to 42
+    // changed): a turn that starts shows within kAfterNewSpeedsSeconds, for
+    // the price of one more reading. The speeds only time the reading; the
+    // heading is still the robot's own count.
+    void speedsChanged(double seconds);
+    static constexpr double kAfterNewSpeedsSeconds = 0.5;
+    // From the start: the first reading is due kLongestSeconds after `seconds`.
+    void restart(double seconds);
+
+private:
+    double m_lastSeconds = 0;
+    double m_nextSeconds = kLongestSeconds;
 };
 
 } // namespace oi

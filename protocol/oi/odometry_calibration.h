@@ -110,6 +110,8 @@ public:
     bool settled() const { return m_reached && m_stillFrames >= 2; }
 
     Kind kind() const { return m_kind; }
+    double target() const { return m_target; }
+    const WheelGeometry &wheels() const { return m_wheels; }
     const WheelCounts &counts() const { return m_counts; }
     // How far the run went by `wheels` (mm for Straight, rad for Turn).
     double progress() const;

@@ -125,6 +125,16 @@ RayHit castRay(const World &world, std::span<const Disc> others, Vec2 origin, do
 // A gentle pattern of the floor's brightness, so cliff signals are not flat.
 int floorTexture(Vec2 p) { return int(std::lround(60 * std::sin(p.x / 53.0) * std::cos(p.y / 71.0))); }
 
+// How dark the floor is at `p`: the darkest rug there, 0 on the bare floor.
+double floorShade(const World &world, Vec2 p)
+{
+    double shade = 0;
+    for (const Rug &r : world.rugs)
+        if (isInside(r.area, p))
+            shade = std::max(shade, r.shade);
+    return shade;
+}
+
 bool overDropOff(const World &world, Vec2 p)
 {
     return std::any_of(world.dropOffs.begin(), world.dropOffs.end(),
@@ -203,12 +213,13 @@ FloorContact senseFloor(const World &world, const oi::Pose &pose)
     for (int i = 0; i < 4; ++i) {
         const Vec2 p = rimPoint(pose, kCliffBearing[i], kCliffInsetMm);
         const double margin = floorMarginMm(world, p);
-        f.cliff[i] = margin < 0;
         // The part of the sensor's spot still on the floor.
         const double lit = std::clamp((margin + kCliffSpotMm) / (2 * kCliffSpotMm), 0.0, 1.0);
-        const double floor = kCliffFloorSignal[i] + floorTexture(p);
         const double drop = kCliffDropSignal[i] + floorTexture(p) / 6;
+        // A dark rug sends back less, but never as little as a drop.
+        const double floor = std::max(drop, (kCliffFloorSignal[i] + floorTexture(p)) * (1 - floorShade(world, p)));
         f.cliffSignal[i] = std::clamp(int(std::lround(drop + lit * (floor - drop))), 0, 4095);
+        f.cliff[i] = f.cliffSignal[i] < kCliffThresholdSignal;
     }
     f.wheelDropLeft = overDropOff(world, bodyPoint(pose, 0, oi::kWheelBaseMm / 2));
     f.wheelDropRight = overDropOff(world, bodyPoint(pose, 0, -oi::kWheelBaseMm / 2));

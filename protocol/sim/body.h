@@ -40,6 +40,10 @@ bool isInside(const Area &a, Vec2 p);
 bool crossesWall(const World &world, Vec2 a, Vec2 b);
 
 // What the wheels and the floor under them report.
+// Below this signal a cliff sensor reports a cliff (packets 9-12), whatever
+// is under it: a drop (almost nothing comes back) or a dark rug (little does).
+inline constexpr int kCliffThresholdSignal = 400;
+
 struct FloorContact {
     std::array<bool, 4> cliff{};      // by oi::CliffSensor
     std::array<int, 4> cliffSignal{}; // 0..4095

@@ -32,7 +32,7 @@ class RoomReader {
 public:
     std::optional<World> read(const QJsonObject &root)
     {
-        if (!allowOnly(root, {"format", "version", "name", "start", "walls", "drop_offs", "dock", "virtual_wall"}, {}))
+        if (!allowOnly(root, {"format", "version", "name", "start", "walls", "drop_offs", "rugs", "dock", "virtual_wall"}, {}))
             return std::nullopt;
         if (root.value("format").toString() != kFormat)
             return fail(RoomFile::tr("\"format\" must be \"%1\"").arg(kFormat));
@@ -48,7 +48,7 @@ public:
                 return std::nullopt;
             w.startHeadingRad = toRad(heading);
         }
-        for (const auto &[key, count] : {std::pair{"walls", 4}, std::pair{"drop_offs", 4}}) {
+        for (const auto &[key, count] : {std::pair{"walls", 4}, std::pair{"drop_offs", 4}, std::pair{"rugs", 5}}) {
             const QJsonValue list = root.value(key);
             if (list.isUndefined())
                 continue;
@@ -57,18 +57,26 @@ public:
             const QJsonArray items = list.toArray();
             for (qsizetype i = 0; i < items.size(); ++i) {
                 const QString where = QStringLiteral("%1[%2]").arg(key).arg(i);
-                double v[4];
+                double v[5];
                 if (!numbers(items[i], where, v, count))
                     return std::nullopt;
                 if (QLatin1String(key) == QLatin1String("walls")) {
                     if (v[0] == v[2] && v[1] == v[3])
                         return fail(RoomFile::tr("%1: a wall must have some length").arg(where));
                     w.walls.push_back({v[0], v[1], v[2], v[3]});
-                } else {
-                    if (!(v[0] < v[2] && v[1] < v[3]))
-                        return fail(RoomFile::tr("%1: x_min must be below x_max and y_min below y_max").arg(where));
-                    w.dropOffs.push_back({v[0], v[1], v[2], v[3]});
+                    continue;
                 }
+                if (!(v[0] < v[2] && v[1] < v[3]))
+                    return fail(RoomFile::tr("%1: x_min must be below x_max and y_min below y_max").arg(where));
+                if (QLatin1String(key) == QLatin1String("drop_offs")) {
+                    w.dropOffs.push_back({v[0], v[1], v[2], v[3]});
+                    continue;
+                }
+                if (!(v[4] >= 0 && v[4] <= 1))
+                    return fail(RoomFile::tr("%1: the shade (the fifth number) must be from 0 (the floor as it is) "
+                                             "to 1 (black), not %2")
+                                    .arg(where, QString::number(v[4])));
+                w.rugs.push_back({{v[0], v[1], v[2], v[3]}, v[4]});
             }
         }
         if (root.contains("dock")) {
@@ -218,17 +226,23 @@ QByteArray roomToJson(const World &w)
         return QStringLiteral("{\"x_mm\": %1, \"y_mm\": %2, \"heading_deg\": %3")
             .arg(number(x), number(y), number(toDeg(rad)));
     };
-    const auto quads = [](const QList<std::array<double, 4>> &items) {
+    const auto quads = [](const QList<QList<double>> &items) {
         QStringList lines;
-        for (const auto &v : items)
-            lines << QStringLiteral("    [%1, %2, %3, %4]").arg(number(v[0]), number(v[1]), number(v[2]), number(v[3]));
+        for (const auto &v : items) {
+            QStringList numbers;
+            for (double d : v)
+                numbers << number(d);
+            lines << QStringLiteral("    [%1]").arg(numbers.join(QStringLiteral(", ")));
+        }
         return lines.isEmpty() ? QStringLiteral("[]") : QStringLiteral("[\n%1\n  ]").arg(lines.join(",\n"));
     };
-    QList<std::array<double, 4>> walls, drops;
+    QList<QList<double>> walls, drops, rugs;
     for (const Segment &s : w.walls)
         walls.append({s.x1, s.y1, s.x2, s.y2});
     for (const Area &a : w.dropOffs)
         drops.append({a.xMin, a.yMin, a.xMax, a.yMax});
+    for (const Rug &r : w.rugs)
+        rugs.append({r.area.xMin, r.area.yMin, r.area.xMax, r.area.yMax, r.shade});
 
     QStringList fields;
     fields << QStringLiteral("\"format\": \"%1\"").arg(kFormat) << QStringLiteral("\"version\": %1").arg(kVersion);
@@ -237,6 +251,8 @@ QByteArray roomToJson(const World &w)
     fields << QStringLiteral("\"start\": %1}").arg(place(w.startX, w.startY, w.startHeadingRad));
     fields << QStringLiteral("\"walls\": %1").arg(quads(walls));
     fields << QStringLiteral("\"drop_offs\": %1").arg(quads(drops));
+    if (!w.rugs.empty())
+        fields << QStringLiteral("\"rugs\": %1").arg(quads(rugs));
     if (w.dock)
         fields << QStringLiteral("\"dock\": %1}").arg(place(w.dock->x, w.dock->y, w.dock->headingRad));
     if (w.virtualWall)

@@ -103,15 +103,16 @@ void ramp(double &speed, double target, double seconds)
 }
 
 // The reply to Sensors, Query List and stream frames reports distance and
-// angle since the last report: the whole part goes out, the rest stays.
-std::int32_t takeWhole(double &accumulator)
+// angle since the last report: the whole part goes out, and the rest stays,
+// or is lost where `keepFraction` is false.
+std::int32_t takeWhole(double &accumulator, bool keepFraction = true)
 {
     const double whole = std::trunc(accumulator);
     if (whole > 32767 || whole < -32768) {
         accumulator = 0; // capped, as the documents say, and started again
         return whole > 0 ? 32767 : -32768;
     }
-    accumulator -= whole;
+    accumulator = keepFraction ? accumulator - whole : 0;
     return std::int32_t(whole);
 }
 
@@ -797,15 +798,18 @@ struct VirtualRobot::State {
         s.set(18, heldButtons | pushedButtons);
         if (takeDistance)
             s.set(19, takeWhole(distanceMm));
+        // The Create's angle is whole degrees "since the angle was last
+        // requested": each request starts it again from nothing, so a frame
+        // every 15 ms reads a turn slower than 67 degrees a second as none.
         if (takeAngle)
-            s.set(20, takeWhole(angleRaw));
+            s.set(20, takeWhole(angleRaw, !create1()));
         const double current = batteryMa();
         s.set(21, static_cast<std::int32_t>(chargingState()));
         const double fraction = chargeMah / kCapacityMah;
         s.set(22, std::int32_t(std::lround(std::clamp(13100 + 3000 * fraction + 0.25 * current, 0.0, 65535.0))));
         s.set(23, std::int32_t(std::lround(current)));
         s.set(24, std::int32_t(std::lround(temperatureC)));
-        s.set(25, std::int32_t(std::lround(chargeMah)));
+        s.set(25, std::int32_t(std::lround(chargeMah + (quirks.reportsChargeAboveCapacity ? kCapacityMah : 0))));
         s.set(26, std::int32_t(kCapacityMah));
         s.set(27, wallSignal(o.wallDistanceMm));
         if (create1())

@@ -120,6 +120,9 @@ public:
         // How long after a wake pulse ends the robot listens: the documents
         // imply a moment (RobotProfile::kWakeMs); some robots take up to 2 s.
         Microseconds wakeTime{std::chrono::milliseconds(oi::RobotProfile::kWakeMs)};
+        // A battery gauge gone wrong: packet 25 reads the charge plus the
+        // capacity, more than the pack can hold.
+        bool reportsChargeAboveCapacity = false;
     };
     void setQuirks(Quirks quirks);
     const Quirks &quirks() const;

@@ -23,11 +23,20 @@ struct Area {
     friend bool operator==(const Area &, const Area &) = default;
 };
 
+// A rug or a patch of floor of another shade: a dark one sends the cliff
+// sensors so little light that they read a cliff, though the floor is there.
+struct Rug {
+    Area area;
+    double shade = 0; // 0 the floor as it is, up to 1: black, nothing comes back
+    friend bool operator==(const Rug &, const Rug &) = default;
+};
+
 // The small 2D world the robot drives in.
 struct World {
     std::string name;              // "Classroom"; shown, not used
     std::vector<Segment> walls;    // bumps, wall signal, light bumpers
     std::vector<Area> dropOffs;    // no floor here: cliff sensors and wheel drops
+    std::vector<Rug> rugs;         // floor of another shade: cliff signals only
     struct Dock {
         double x = 0, y = 0, headingRad = 0; // where the contacts are, facing out
         friend bool operator==(const Dock &, const Dock &) = default;

@@ -438,6 +438,15 @@ private slots:
         QTRY_VERIFY(watcher.lastState(QStringLiteral("r1")).value(QLatin1String("mode_cause")).toArray().isEmpty());
     }
 
+    // A cliff whose signal reads like a dark rug's stops the robot too, and
+    // the words say how to tell and what to do.
+    void allowedFullStillStopsAtACliff_data()
+    {
+        QTest::addColumn<int>("signal");
+        QTest::addColumn<QString>("words");
+        QTest::newRow("edge") << 0 << "cliff or wheel drop";
+        QTest::newRow("dark rug") << 260 << "on a dark rug";
+    }
     void allowedFullStillStopsAtACliff()
     {
         MosquittoBroker broker;
@@ -452,11 +461,14 @@ private slots:
         QTRY_COMPARE(rig.session.latest().oiMode(), oi::OiMode::Full);
         QVERIFY(aliceDrives(alice, rig));
 
+        QFETCH(int, signal);
+        QFETCH(QString, words);
         const qsizetype before = rig.recording.count();
+        rig.recording.cliffLeftSignal = signal;
         rig.recording.cliffLeft = true;
         QTRY_COMPARE(byteText(writtenSince(rig.recording, before)), byteText(rig.stopBytes()));
         QTRY_VERIFY(alice.on(topics::reply(QStringLiteral("r1"), QStringLiteral("alice"))).last()
-                        .value(QLatin1String("error")).toString().contains(QLatin1String("cliff or wheel drop")));
+                        .value(QLatin1String("error")).toString().contains(words));
 
         // Driving on at the edge is stopped at the next frame.
         const qsizetype again = rig.recording.count();

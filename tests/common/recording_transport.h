@@ -41,6 +41,7 @@ struct Recording {
     // The left cliff sensor in the streamed frames.
     std::atomic<bool> cliffLeft{false};
     std::atomic<bool> onDock{false};
+    std::atomic<int> cliffLeftSignal{0}; // packet 28
     // False holds the streamed frames back.
     std::atomic<bool> streaming{true};
     // True loses what the link writes on the way, as a bad cable does: the
@@ -91,7 +92,7 @@ public:
         connect(&m_timer, &QTimer::timeout, this, [this] {
             if (m_recording->streaming)
                 emit bytesReceived(group100Frame(std::uint8_t(m_recording->bumps), m_recording->mode, m_recording->cliffLeft,
-                                                 m_recording->onDock));
+                                                 m_recording->onDock, m_recording->cliffLeftSignal));
         });
     }
     // Records into a recording of its own.

@@ -89,18 +89,20 @@ private slots:
         QTest::addColumn<oi::ProfileId>("profile");
         QTest::addColumn<int>("baud");
         QTest::addColumn<QList<int>>("packets");
-        const QList<int> shortList{1, 19, 20, 21, 22, 35};
+        // A Create 1 streams all but its angle, which is read now and then.
+        const QList<int> create1All{1, 17, 18, 19, 3, 4, 5};
+        const QList<int> shortList{1, 19, 21, 22, 35};
         const QList<int> encoderList{1, 43, 44, 21, 22, 35};
         QTest::newRow("create2 115200") << oi::ProfileId::Create2 << 115200 << QList<int>{100};
         QTest::newRow("create2 57600") << oi::ProfileId::Create2 << 57600 << QList<int>{100};
         QTest::newRow("create2 38400") << oi::ProfileId::Create2 << 38400 << QList<int>{6};
-        QTest::newRow("create1 38400") << oi::ProfileId::Create1 << 38400 << QList<int>{6};
+        QTest::newRow("create1 38400") << oi::ProfileId::Create1 << 38400 << QList<int>{1, 19, 3, 4, 5};
         QTest::newRow("create2 19200") << oi::ProfileId::Create2 << 19200 << encoderList;
         QTest::newRow("roomba500 19200") << oi::ProfileId::Roomba500 << 19200 << encoderList;
         QTest::newRow("roomba500 115200") << oi::ProfileId::Roomba500 << 115200 << QList<int>{100};
         QTest::newRow("roomba500 57600") << oi::ProfileId::Roomba500 << 57600 << QList<int>{100};
-        QTest::newRow("create1 115200") << oi::ProfileId::Create1 << 115200 << QList<int>{6};
-        QTest::newRow("create1 57600") << oi::ProfileId::Create1 << 57600 << QList<int>{6};
+        QTest::newRow("create1 115200") << oi::ProfileId::Create1 << 115200 << create1All;
+        QTest::newRow("create1 57600") << oi::ProfileId::Create1 << 57600 << create1All;
         QTest::newRow("create1 19200") << oi::ProfileId::Create1 << 19200 << shortList;
         QTest::newRow("create2 9600") << oi::ProfileId::Create2 << 9600 << QList<int>{1};
         QTest::newRow("create2 4800") << oi::ProfileId::Create2 << 4800 << QList<int>{7};
@@ -148,7 +150,8 @@ private slots:
         s = LinkSettings::serial(QStringLiteral("/dev/recording"), oi::ProfileId::Create1);
         // Start on a Create ends a script first (ERRATA 20); a stop comes
         // before Start everywhere, for a robot that a program which died left driving.
-        QTest::newRow("create1") << s << bytes({152, 0, 137, 0, 0, 0, 0, 138, 0, 128, 148, 1, 6});
+        // A Create 1 streams all but its angle (read apart: AngleReadSchedule).
+        QTest::newRow("create1") << s << bytes({152, 0, 137, 0, 0, 0, 0, 138, 0, 128, 148, 7, 1, 17, 18, 19, 3, 4, 5});
         s = create2();
         s.streamPackets = {7, 35};
         QTest::newRow("chosen packets") << s << bytes({137, 0, 0, 0, 0, 138, 0, 128, 148, 2, 7, 35});
@@ -504,7 +507,7 @@ private slots:
     {
         m_link->open(LinkSettings::serial(QStringLiteral("/dev/recording"), oi::ProfileId::Create1));
         Recording &r = current()->recording();
-        QCOMPARE(r.written(), bytes({152, 0, 137, 0, 0, 0, 0, 138, 0, 128, 148, 1, 6}));
+        QCOMPARE(r.written(), bytes({152, 0, 137, 0, 0, 0, 0, 138, 0, 128, 148, 7, 1, 17, 18, 19, 3, 4, 5}));
         QVERIFY(r.commands.isEmpty());
         m_link->send(bytes({128})); // Passive, asked for
         m_link->send(bytes({137, 0, 100, 128, 0}));

@@ -170,7 +170,7 @@ private slots:
         QTest::newRow("create2") << "create2" << oi::ProfileId::Create2 << 115200 << QList<int>{100};
         QTest::newRow("roomba500") << "roomba500" << oi::ProfileId::Create2 << 115200 << QList<int>{100};
         // The Create talks at 57600: at 115200 the link hears junk and moves on.
-        QTest::newRow("create1") << "create1" << oi::ProfileId::Create1 << 57600 << QList<int>{6};
+        QTest::newRow("create1") << "create1" << oi::ProfileId::Create1 << 57600 << QList<int>{1, 17, 18, 19, 3, 4, 5};
     }
     void findsTheProfileOverAPty()
     {

@@ -121,7 +121,7 @@ private slots:
         QTest::addColumn<QList<int>>("packets");
         QTest::newRow("create2") << oi::ProfileId::Create2 << QList<int>{100};
         QTest::newRow("roomba500") << oi::ProfileId::Roomba500 << QList<int>{100};
-        QTest::newRow("create1") << oi::ProfileId::Create1 << QList<int>{6};
+        QTest::newRow("create1") << oi::ProfileId::Create1 << QList<int>{1, 17, 18, 19, 3, 4, 5};
     }
     void theVirtualRobotSaysWhatItIs()
     {

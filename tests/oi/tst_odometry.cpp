@@ -439,8 +439,63 @@ private slots:
         odometry.update(frame);
         VERIFY_POSE(odometry.pose(), 0.0, 0.0, 0.0, 0.0, 0.0);
         frame.set(19, 25);
+        frame.set(20, 0);
         odometry.update(frame);
         VERIFY_POSE(odometry.pose(), 25.0, 0.0, 0.0, 25.0, 0.0);
+    }
+
+    // A Create 1 streams no angle (AngleReadSchedule): its distance waits for
+    // the next reading of the angle and goes along the arc it says, or
+    // straight on after kMaxPendingFrames without one.
+    void create1DistanceWaitsForItsAngle()
+    {
+        Odometry odometry;
+        SensorSnapshot distanceOnly(profile(ProfileId::Create1));
+        distanceOnly.set(19, 10);
+        for (int i = 0; i < 10; ++i)
+            odometry.update(distanceOnly);
+        VERIFY_POSE(odometry.pose(), 0.0, 0.0, 0.0, 0.0, 0.0);
+        SensorSnapshot angleReading(profile(ProfileId::Create1));
+        angleReading.set(20, 90);
+        odometry.update(angleReading);
+        VERIFY_POSE(odometry.pose(), 70.71067811865476, 70.71067811865476, kPi / 2, 100.0, kTightMm);
+
+        Odometry unread;
+        for (int i = 0; i < Odometry::kMaxPendingFrames; ++i)
+            unread.update(distanceOnly);
+        VERIFY_POSE(unread.pose(), 10.0 * Odometry::kMaxPendingFrames, 0.0, 0.0, 10.0 * Odometry::kMaxPendingFrames,
+                    kTightMm);
+        // The Roomba family moves at once.
+        Odometry roomba;
+        SensorSnapshot create2(profile(ProfileId::Create2));
+        create2.set(19, 10);
+        roomba.update(create2);
+        VERIFY_POSE(roomba.pose(), 10.0, 0.0, 0.0, 10.0, kTightMm);
+    }
+
+    // When the angle is read: every 40 degrees of turn at the rate the last
+    // reading showed, soon after new wheel speeds, and now and then.
+    void create1AngleReadSchedule()
+    {
+        AngleReadSchedule schedule;
+        schedule.restart(0);
+        QVERIFY(!schedule.due(3.9));
+        QVERIFY(schedule.due(AngleReadSchedule::kLongestSeconds));
+        schedule.read(4, 0); // still: read again after the longest wait
+        QVERIFY(!schedule.due(7.9));
+        schedule.speedsChanged(5);
+        QVERIFY(schedule.due(5 + AngleReadSchedule::kAfterNewSpeedsSeconds));
+        schedule.read(5.5, 7); // 4.7 degrees a second since 4 s: 40 degrees would take longer than the longest wait
+        QVERIFY(!schedule.due(9.4));
+        QVERIFY(schedule.due(9.5));
+        schedule.read(9.5, 56); // 14 degrees a second: 40 degrees take 2.86 s
+        QVERIFY(!schedule.due(12.3));
+        QVERIFY(schedule.due(12.4));
+        schedule.read(12.4, 1000); // 345 degrees a second: the shortest wait
+        QVERIFY(!schedule.due(12.6));
+        QVERIFY(schedule.due(12.4 + AngleReadSchedule::kShortestSeconds));
+        schedule.readSoon();
+        QVERIFY(schedule.due(12.4));
     }
 
     void fallback_data()
@@ -491,6 +546,9 @@ private slots:
         SensorSnapshot distanceOnly(profile(ProfileId::Create1));
         distanceOnly.set(19, 10);
         odometry.update(distanceOnly);
+        VERIFY_POSE(odometry.pose(), 0.0, 0.0, kPi / 2, 0.0, kTightMm); // waits for the angle
+        angleOnly.set(20, 0);
+        odometry.update(angleOnly);
         VERIFY_POSE(odometry.pose(), 0.0, 10.0, kPi / 2, 10.0, kTightMm);
     }
 

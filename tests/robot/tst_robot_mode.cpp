@@ -18,6 +18,9 @@ SensorSnapshot frame(OiMode mode, std::initializer_list<std::pair<int, int>> pac
     s.set(35, int(mode));
     for (int id : {7, 9, 10, 11, 12, 34})
         s.set(id, 0);
+    // Cliff signals as over a drop, unless a test says otherwise.
+    for (int id : {28, 29, 30, 31})
+        s.set(id, 20);
     for (auto [id, value] : packets)
         s.set(id, value);
     return s;
@@ -87,6 +90,33 @@ private slots:
         QCOMPARE(RobotMode::shortReasonOf(mode.causeKeys()), shortReason);
     }
 
+    // A dark rug reads as a cliff: signals low but well above a drop's, and
+    // no wheel dropped. The advice tells it from an edge and gives the way off.
+    void aDarkRugIsToldFromAnEdge_data()
+    {
+        QTest::addColumn<int>("signal");
+        QTest::addColumn<int>("wheelDrops");
+        QTest::addColumn<QString>("nextStep");
+        QTest::newRow("dark rug") << 260 << 0
+                                  << "Carry it back from the edge, then Enter Safe. No edge there? Its cliff "
+                                     "signals read front left 260 of 4095, low but not the near 0 of a drop, and no "
+                                     "wheel dropped: a dark rug or floor reads as a cliff. Drive it off in Full, or "
+                                     "move it to a lighter floor.";
+        QTest::newRow("edge") << 20 << 0 << "Carry it back from the edge, then Enter Safe.";
+        // A wheel hanging over the edge: not a rug, whatever the signal.
+        QTest::newRow("wheel over the edge") << 260 << 0x08 << "Carry it back from the edge, then Enter Safe.";
+    }
+    void aDarkRugIsToldFromAnEdge()
+    {
+        QFETCH(int, signal);
+        QFETCH(int, wheelDrops);
+        QFETCH(QString, nextStep);
+        RobotMode mode;
+        mode.observe(frame(OiMode::Safe), kAt.toMSecsSinceEpoch());
+        mode.observe(frame(OiMode::Passive, {{kCliffFrontLeft, 1}, {29, signal}, {7, wheelDrops}}),
+                     kAt.toMSecsSinceEpoch());
+        QCOMPARE(mode.nextStep(), nextStep);
+    }
     // A console shows another program's robot in its own language.
     void causeKeysReadInThisProgramsLanguage()
     {

@@ -34,11 +34,11 @@ private slots:
             const int s = f.cliffSignal[1];
             if (s > 300 && s < 2000)
                 ++between;
-            // Below half of the floor's signal, the sensor says cliff.
+            // Below the threshold, the sensor says cliff.
             if (f.cliff[1])
-                QVERIFY2(s < floor / 2, qPrintable(QString("x %1: cliff at signal %2").arg(x).arg(s)));
+                QVERIFY2(s < sim::kCliffThresholdSignal, qPrintable(QString("x %1: cliff at signal %2").arg(x).arg(s)));
             else
-                QVERIFY2(s > floor / 3, qPrintable(QString("x %1: no cliff at signal %2").arg(x).arg(s)));
+                QVERIFY2(s >= sim::kCliffThresholdSignal, qPrintable(QString("x %1: no cliff at signal %2").arg(x).arg(s)));
             cliffSeen = cliffSeen || f.cliff[1];
             last = s;
         }

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Rooms as files: the shipped rooms, saving and loading, and bad files
 // refused with a message that names what is wrong.
+#include "body.h"
 #include "room.h"
 #include "room_file.h"
 
@@ -59,6 +60,19 @@ private slots:
         }
     }
 
+    // The dock corner has a dark rug: the cliff sensors read a cliff on it.
+    void theDockCornerHasADarkRug()
+    {
+        const std::optional<sim::World> room = sim::loadRoomFile(QDir(kRooms).filePath("dock_corner.json"));
+        QVERIFY(room);
+        QCOMPARE(room->rugs.size(), std::size_t(1));
+        const sim::Area &a = room->rugs[0].area;
+        const sim::FloorContact f =
+            sim::senseFloor(*room, oi::Pose{(a.xMin + a.xMax) / 2, (a.yMin + a.yMax) / 2, 0, 0});
+        QVERIFY(f.cliff[1] && f.cliff[2]);
+        QVERIFY(!f.wheelDropLeft && !f.wheelDropRight);
+    }
+
     void theClassroomFileIsTheBuiltInRoom()
     {
         QCOMPARE(*sim::loadRoomFile(QDir(kRooms).filePath("classroom.json")), sim::World::classroom());
@@ -71,6 +85,7 @@ private slots:
         w.startX = 12.5;
         w.startHeadingRad = 0.75;
         w.virtualWall->rangeMm = 987.25;
+        w.rugs = {{{400, 400, 1200, 1200.5}, 0.85}};
         QTemporaryDir dir;
         const QString path = dir.filePath("room.json");
         QString error;
@@ -80,6 +95,7 @@ private slots:
         QCOMPARE(back->name, w.name);
         QCOMPARE(back->walls, w.walls);
         QCOMPARE(back->dropOffs, w.dropOffs);
+        QCOMPARE(back->rugs, w.rugs);
         QCOMPARE(back->dock, w.dock);
         QCOMPARE(back->startX, w.startX);
         QCOMPARE(back->startHeadingRad, w.startHeadingRad);
@@ -129,6 +145,17 @@ private slots:
         QTest::newRow("beam of no length")
             << with(R"("virtual_wall": {"x_mm": 0, "y_mm": 0, "heading_deg": 0, "range_mm": 0})")
             << "virtual_wall: \"range_mm\" must be above 0, not 0";
+        QTest::newRow("rug too dark") << with(R"("rugs": [[0, 0, 10, 10, 1.5]])")
+                                      << "rugs[0]: the shade (the fifth number) must be from 0 (the floor as it is) "
+                                         "to 1 (black), not 1.5";
+        QTest::newRow("rug lighter than the floor") << with(R"("rugs": [[0, 0, 10, 10, -0.2]])")
+                                                    << "rugs[0]: the shade (the fifth number) must be from 0";
+        QTest::newRow("rug without a shade") << with(R"("rugs": [[0, 0, 10, 10]])")
+                                             << "rugs[0] must be a list of 5 numbers";
+        QTest::newRow("rug shade as text") << with(R"("rugs": [[0, 0, 10, 10, "dark"]])")
+                                           << "rugs[0][4] must be a number";
+        QTest::newRow("rug inside out") << with(R"("rugs": [[10, 0, 0, 10, 0.9]])")
+                                        << "rugs[0]: x_min must be below x_max";
     }
     void refusesBadFiles()
     {

@@ -250,10 +250,7 @@ void prepareForCalibration(Bench &b)
 {
     b.robot.setWorld(emptyWorld());
     b.startSafe();
-    if (b.robot.robotProfile().id == ProfileId::Create1)
-        b.send(b.encoder.stream(std::vector<int>{7, 19, 20}));
-    else
-        b.send(b.encoder.stream(std::vector<int>{7, 19, 20, 43, 44}));
+    b.send(b.encoder.stream(std::vector<int>{7, 19, 20, 43, 44}));
     b.run(100ms);
 }
 
@@ -295,12 +292,22 @@ private slots:
     void odometryOfADrivenSquareMatchesTheTruth_data();
     void odometryOfADrivenSquareMatchesTheTruth();
     void largerWheelsCarryTheBodyFartherThanTheCountsSay();
-    void calibrationRecoversWornWheels_data() { addProfileRows(); }
+    // The Create 1 loses its angle's fractions on every read: its
+    // calibration turn is read as the dashboard reads it, by its session
+    // (tests/robot/tst_create1_heading).
+    void calibrationRecoversWornWheels_data()
+    {
+        QTest::addColumn<ProfileId>("profile");
+        for (ProfileId p : {ProfileId::Roomba500, ProfileId::Create2})
+            QTest::newRow(profileOf(p).key.data()) << p;
+    }
     void calibrationRecoversWornWheels();
     void calibrationCorrectsWheelsOfDifferentSizes();
     void encodersRollOverBackwards_data();
     void encodersRollOverBackwards();
     void distanceAndAngleAreSinceTheLastRequest();
+    void theCreatesAngleLosesItsFractionsOnEveryRead();
+    void aDarkRugReadsAsACliffWithNoWheelDrop();
     void distanceIsCappedAtInt16();
 
     // The world.
@@ -924,8 +931,8 @@ void TestVirtualRobot::largerWheelsCarryTheBodyFartherThanTheCountsSay()
 }
 
 // The robot: wheels 4 % larger than documented and a wheel base 3 %
-// short. Calibrated from the true pose, on every profile (the Create by its
-// distance and angle packets, the Roomba 500 by its unsigned counts).
+// short. Calibrated from the true pose, on the Roomba 500 (by its unsigned
+// counts) and the Create 2.
 void TestVirtualRobot::calibrationRecoversWornWheels()
 {
     QFETCH(ProfileId, profile);
@@ -1042,6 +1049,63 @@ void TestVirtualRobot::distanceAndAngleAreSinceTheLastRequest()
     QVERIFY(g.angleDegrees() < -30);
     QVERIFY(std::abs(g.angleDegrees() - b.robot.truePose().thetaRad * 180 / kPi) <= 1);
     QCOMPARE(b.value(20), 0);
+}
+
+// The Create's angle is whole degrees since it was last asked for, the rest
+// lost: read every frame, a slow turn reads as none; read once, it is whole.
+// The Roomba family keeps the fractions for the next read.
+void TestVirtualRobot::theCreatesAngleLosesItsFractionsOnEveryRead()
+{
+    for (ProfileId id : {ProfileId::Create1, ProfileId::Create2}) {
+        Bench b(profileOf(id));
+        b.robot.setWorld(emptyWorld());
+        b.startFull();
+        b.send(b.encoder.stream(std::vector<int>{20}));
+        b.send(b.encoder.driveDirect(15, -15)); // 28.5 mm/s a wheel: 14 degrees a second
+        b.run(10s);
+        b.send(b.encoder.pauseResumeStream(0));
+        int streamed = 0;
+        for (const SensorSnapshot &f : b.frames)
+            streamed += f.angleDegrees();
+        const double truth = b.robot.truePose().thetaRad * 180 / kPi;
+        QVERIFY(truth > 100);
+        if (id == ProfileId::Create1)
+            QCOMPARE(streamed, 0);
+        else
+            QVERIFY2(std::abs(streamed - truth) <= 1, qPrintable(QStringLiteral("%1 vs %2").arg(streamed).arg(truth)));
+        // Asked once after a long turn, the Create loses less than a degree.
+        b.value(20);
+        const double before = b.robot.truePose().thetaRad * 180 / kPi;
+        b.run(3s);
+        const int once = b.value(20);
+        const double turned = std::remainder(b.robot.truePose().thetaRad * 180 / kPi - before, 360);
+        QVERIFY2(std::abs(once - turned) < 1, qPrintable(QStringLiteral("%1 vs %2").arg(once).arg(turned)));
+    }
+}
+
+// A rug of shade 0.9: every cliff sensor reads a cliff on it, its signal low
+// but well above a drop's, and no wheel drops; in Safe it stops the robot.
+void TestVirtualRobot::aDarkRugReadsAsACliffWithNoWheelDrop()
+{
+    Bench b(profileOf(ProfileId::Create2));
+    World w = emptyWorld();
+    w.rugs = {{{-1000, -1000, 1000, 1000}, 0.9}};
+    b.robot.setWorld(w);
+    b.startSafe();
+    const SensorSnapshot s = b.query({7, 9, 10, 11, 12, 28, 29, 30, 31});
+    for (CliffSensor c : {CliffSensor::Left, CliffSensor::FrontLeft, CliffSensor::FrontRight, CliffSensor::Right}) {
+        QVERIFY(s.cliff(c));
+        QVERIFY2(s.cliffSignal(c) >= 100 && s.cliffSignal(c) < 400, qPrintable(QString::number(s.cliffSignal(c))));
+    }
+    QVERIFY(!s.wheelDropLeft() && !s.wheelDropRight());
+    b.send(b.encoder.drive(100, kRadiusStraight));
+    b.run(100ms);
+    QCOMPARE(b.robot.mode(), OiMode::Passive);
+    QCOMPARE(b.robot.lastSafetyStop(), std::string("cliff"));
+    // A light rug is only floor.
+    w.rugs = {{{-1000, -1000, 1000, 1000}, 0.3}};
+    b.robot.setWorld(w);
+    QCOMPARE(b.value(10), 0);
 }
 
 void TestVirtualRobot::distanceIsCappedAtInt16()

@@ -23,6 +23,19 @@ BrokerActions::BrokerActions(RobotFleet &fleet, QWidget *dialogParent)
     m_console = new FleetConsole(fleet, *m_fleetView, this);
     connect(m_fleetView, &FleetView::connectRequested, this, &BrokerActions::askForBroker);
     connect(m_console, &FleetConsole::message, this, &BrokerActions::message);
+    connect(m_console, &FleetConsole::messageWithdrawn, this, &BrokerActions::messageWithdrawn);
+    connect(m_console, &FleetConsole::loginRefused, this,
+            [this](const mqtt::BrokerAddress &address, const QString &why) {
+                // Asked again, the account named, rather than refused every second.
+                SavedBroker refused{address, false};
+                refused.address.password.clear();
+                QSettings settings;
+                for (const SavedBroker &b : loadSavedBrokers(settings))
+                    if (b.address.host == address.host && b.address.port == address.port)
+                        refused.rememberPassword = b.rememberPassword;
+                showFleetView();
+                openDialog(refused, tr("%1. Type the password again, or another user name.").arg(why));
+            });
 
     m_connect = new QAction(this);
     m_connect->setObjectName("connectBrokerAction");
@@ -50,16 +63,32 @@ void BrokerActions::retranslate()
 
 void BrokerActions::askForBroker()
 {
+    openDialog(std::nullopt, {});
+}
+
+void BrokerActions::openDialog(const std::optional<SavedBroker> &preset, const QString &notice)
+{
+    if (m_dialog)
+        m_dialog->close();
     QSettings settings;
-    BrokerDialog dialog(loadSavedBrokers(settings), m_dialogParent);
-    if (dialog.exec() != QDialog::Accepted)
-        return;
-    saveBrokers(settings, withRecentBroker(loadSavedBrokers(settings), dialog.broker()));
-    connectToBroker(dialog.broker().address);
+    // Over the fleet view when that is where the class looks.
+    QWidget *parent = m_fleetView->isVisible() ? static_cast<QWidget *>(m_fleetView) : m_dialogParent;
+    m_dialog = new BrokerDialog(loadSavedBrokers(settings), parent);
+    m_dialog->setAttribute(Qt::WA_DeleteOnClose);
+    if (preset)
+        m_dialog->setBroker(*preset);
+    m_dialog->setNotice(notice);
+    connect(m_dialog, &QDialog::accepted, this, [this, dialog = m_dialog] {
+        QSettings settings;
+        saveBrokers(settings, withRecentBroker(loadSavedBrokers(settings), dialog->broker()));
+        connectToBroker(dialog->broker().address);
+    });
+    m_dialog->open();
 }
 
 bool BrokerActions::connectToBroker(const mqtt::BrokerAddress &address)
 {
+    m_fleetView->setReconnectOffer({});
     const bool ok = m_console->connectToBroker(address);
     m_disconnect->setEnabled(true);
     showFleetView();
@@ -87,8 +116,17 @@ void BrokerActions::reconnectToLastBroker(QSettings &settings)
     if (!settings.value("brokers/connectedAtQuit").toBool() || brokers.isEmpty())
         return;
     const mqtt::BrokerAddress &last = brokers.first().address;
-    if (last.username.isEmpty() || !last.password.isEmpty())
+    if (last.username.isEmpty() || !last.password.isEmpty()) {
         connectToBroker(last);
+        emit message(tr("Connecting again to %1, the class of the last session.").arg(last.displayUrl()));
+        return;
+    }
+    // Not forgotten: offered, one click away, the password asked for.
+    const QString offer = tr("Last session: the class on %1 as \"%2\". Reconnect… asks for the password.")
+                              .arg(last.displayUrl(), last.username);
+    m_fleetView->setReconnectOffer(offer);
+    emit message(offer);
+    showFleetView();
 }
 
 void BrokerActions::saveConnectedAtQuit(QSettings &settings) const

@@ -2,8 +2,13 @@
 #pragma once
 
 #include "broker_address.h"
+#include "broker_dialog.h"
+#include "saved_brokers.h"
 
 #include <QObject>
+#include <QPointer>
+
+#include <optional>
 
 class FleetConsole;
 class FleetView;
@@ -27,12 +32,15 @@ public:
     FleetConsole *console() const { return m_console; }
     FleetView *fleetView() const { return m_fleetView; }
 
-    // The dialog, with the brokers used before; keeps the one chosen.
+    // The dialog, with the brokers used before; keeps the one chosen and
+    // connects to it. It does not block: dialog() while it is open.
     void askForBroker();
+    BrokerDialog *dialog() const { return m_dialog; }
     bool connectToBroker(const mqtt::BrokerAddress &address);
     bool isConnected() const;
     void showFleetView();
     // Only where nothing needs asking: no login, or a password kept on purpose.
+    // Otherwise the fleet view offers it, and the status bar says so.
     void reconnectToLastBroker(QSettings &settings);
     void saveConnectedAtQuit(QSettings &settings) const;
 
@@ -41,12 +49,17 @@ public:
 signals:
     // For the status bar: bad messages, a refused login, a refused command.
     void message(const QString &text);
+    // A message about the broker that is no longer true (it connected).
+    void messageWithdrawn(const QString &text);
 
 private:
+    void openDialog(const std::optional<SavedBroker> &preset, const QString &notice);
+
     QWidget *m_dialogParent;
     FleetView *m_fleetView;
     FleetConsole *m_console; // a child: robots' transports use it until the fleet is closed
     QAction *m_connect;
     QAction *m_disconnect;
     QAction *m_fleetViewAction;
+    QPointer<BrokerDialog> m_dialog;
 };

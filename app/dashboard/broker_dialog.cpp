@@ -17,6 +17,12 @@ BrokerDialog::BrokerDialog(const QList<SavedBroker> &recent, QWidget *parent) : 
 {
     setWindowTitle(tr("Connect to broker"));
     auto *form = new QFormLayout(this);
+    m_notice = new QLabel(this);
+    m_notice->setObjectName("brokerNotice");
+    m_notice->setWordWrap(true);
+    m_notice->setTextFormat(Qt::PlainText);
+    m_notice->hide();
+    form->addRow(m_notice);
     m_host = new QComboBox(this);
     m_host->setObjectName("brokerHost");
     m_host->setEditable(true);
@@ -132,6 +138,17 @@ void BrokerDialog::update()
     m_caFile->setEnabled(m_tls->isChecked());
     m_buttons->button(QDialogButtonBox::Ok)->setEnabled(why.isEmpty());
 }
+
+void BrokerDialog::setNotice(const QString &text)
+{
+    m_notice->setText(text);
+    m_notice->setVisible(!text.isEmpty());
+    // The login was refused: the password is what to type again.
+    if (!text.isEmpty())
+        (m_user->text().isEmpty() ? m_user : m_password)->setFocus(Qt::OtherFocusReason);
+}
+
+QString BrokerDialog::notice() const { return m_notice->text(); }
 
 void BrokerDialog::accept()
 {

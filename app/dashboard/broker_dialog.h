@@ -25,6 +25,10 @@ public:
     // Empty when the fields make a broker to connect to.
     QString problem() const;
 
+    // Why it is asked (a refused login): above the fields, until changed.
+    void setNotice(const QString &text);
+    QString notice() const;
+
     void accept() override;
 
 private:
@@ -39,5 +43,6 @@ private:
     QCheckBox *m_tls = nullptr;
     QLineEdit *m_caFile = nullptr;
     QLabel *m_problem = nullptr;
+    QLabel *m_notice = nullptr;
     QDialogButtonBox *m_buttons = nullptr;
 };

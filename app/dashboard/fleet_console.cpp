@@ -8,6 +8,7 @@
 #include "robot_session.h"
 
 #include <cmath>
+#include <utility>
 
 namespace {
 
@@ -34,14 +35,20 @@ FleetConsole::FleetConsole(RobotFleet &fleet, FleetView &view, QObject *parent)
         // Why there is no connection yet stays in the view until there is one.
         if (!m_directory.isConnected()) {
             m_brokerProblem = text;
+            m_saidWhileDown << text;
             refresh();
         }
         emit message(text);
     });
     connect(&m_directory, &FleetDirectory::connectionChanged, this, [this](bool connected) {
-        if (connected)
-            m_brokerProblem.clear();
+        if (!connected)
+            return;
+        m_brokerProblem.clear();
+        for (const QString &text : std::exchange(m_saidWhileDown, {}))
+            emit messageWithdrawn(text);
     });
+    connect(&m_directory, &FleetDirectory::loginRefused, this,
+            [this](const QString &text) { emit loginRefused(m_directory.broker(), text); });
     connect(&m_view, &FleetView::robotClicked, this, &FleetConsole::select);
     connect(&m_fleet, &RobotFleet::stoppedAll, &m_directory, &FleetDirectory::stopAll);
     connect(&m_fleet, &RobotFleet::selectionChanged, this, &FleetConsole::showSelection);
@@ -64,11 +71,12 @@ void FleetConsole::disconnectFromBroker()
     refresh();
 }
 
-FleetTileValues FleetConsole::tileValues(const QString &name, const RemoteRobot &robot)
+FleetTileValues FleetConsole::tileValues(const QString &name, const RemoteRobot &robot, bool brokerReachable)
 {
     const RemoteRobotState &s = robot.state;
     FleetTileValues v;
     v.name = name;
+    v.brokerReachable = brokerReachable;
     v.online = s.online;
     const auto mode = modeFromText(s.mode);
     v.mode = mode ? oitext::modeName(*mode) : s.mode;
@@ -109,7 +117,7 @@ void FleetConsole::refresh()
     QList<FleetTileValues> tiles;
     tiles.reserve(m_directory.names().size());
     for (const QString &name : m_directory.names())
-        tiles << tileValues(name, *m_directory.robot(name));
+        tiles << tileValues(name, *m_directory.robot(name), !m_directory.hasBroker() || m_directory.isConnected());
     m_view.setTiles(tiles);
 }
 

@@ -31,13 +31,20 @@ public:
     RobotSession *robotFor(const QString &name);
     void select(const QString &name);
     // What a tile shows of one robot.
-    static FleetTileValues tileValues(const QString &name, const RemoteRobot &robot);
+    // While the broker is out of reach, it says so instead of what the
+    // robot last said about its link: the robot is probably fine.
+    static FleetTileValues tileValues(const QString &name, const RemoteRobot &robot, bool brokerReachable = true);
 
     void refresh(); // what the timer does
 
 signals:
     // For the status bar: bad messages, a refused login, a refused command.
     void message(const QString &text);
+    // A message said while the broker was not connected, no longer true now
+    // that it is: the status bar forgets it.
+    void messageWithdrawn(const QString &text);
+    // The broker refused the login: nothing more is tried until asked again.
+    void loginRefused(const mqtt::BrokerAddress &address, const QString &message);
 
 private:
     void showSelection();
@@ -47,4 +54,5 @@ private:
     FleetDirectory m_directory;
     QTimer m_refresh;
     QString m_brokerProblem; // the last word on why the broker is not connected
+    QStringList m_saidWhileDown; // what message() said of it, forgotten once connected
 };

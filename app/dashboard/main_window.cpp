@@ -73,6 +73,10 @@ MainWindow::MainWindow(QWidget *parent) : QMainWindow(parent)
     connect(m_recording, &RecordingActions::message, this, &MainWindow::showMessage);
     connect(m_roomActions, &RoomActions::message, this, &MainWindow::showMessage);
     connect(m_broker, &BrokerActions::message, this, [this](const QString &m) { statusBar()->showMessage(m, 8000); });
+    connect(m_broker, &BrokerActions::messageWithdrawn, this, [this](const QString &m) {
+        if (statusBar()->currentMessage() == m)
+            statusBar()->clearMessage();
+    });
     m_robotBar = new RobotBar(m_fleet, this);
     connect(m_robotBar, &RobotBar::addRequested, this, &MainWindow::addRobot);
     buildDocks();

@@ -271,7 +271,19 @@ void MqttClient::handleConnected(int rc)
     if (!m_mosq)
         return;
     if (rc != 0) {
-        emit errorOccurred(tr("%1 refused the connection: %2").arg(m_address.displayUrl(), connackText(rc)));
+        // 4 and 5: the login itself (MQTT 3.1.1, CONNACK return codes).
+        const bool login = rc == 4 || rc == 5;
+        const QString message =
+            login ? tr("%1 refused the login as %2: %3")
+                        .arg(m_address.displayUrl(),
+                             m_address.username.isEmpty() ? tr("an anonymous user")
+                                                          : QStringLiteral("\"%1\"").arg(m_address.username),
+                             connackText(rc))
+                  : tr("%1 refused the connection: %2").arg(m_address.displayUrl(), connackText(rc));
+        m_noAnswer.stop(); // it answers
+        emit errorOccurred(message);
+        if (login)
+            emit loginRefused(message);
         return;
     }
     m_connected = true;

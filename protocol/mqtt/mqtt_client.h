@@ -86,6 +86,10 @@ signals:
     // Settings refused, the broker refused the login, or its certificate
     // is not trusted.
     void errorOccurred(const QString &message);
+    // The broker refused this user name or password (after errorOccurred):
+    // trying again with the same ones cannot help. The retries go on until
+    // the owner stops them.
+    void loginRefused(const QString &message);
 
 private:
     static void onConnect(mosquitto *, void *self, int rc);

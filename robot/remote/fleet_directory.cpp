@@ -52,6 +52,11 @@ bool FleetDirectory::connectToBroker(const mqtt::BrokerAddress &address)
     connect(m_client.get(), &mqtt::MqttClient::connected, this, [this] { emit connectionChanged(true); });
     connect(m_client.get(), &mqtt::MqttClient::disconnected, this, [this] { emit connectionChanged(false); });
     connect(m_client.get(), &mqtt::MqttClient::errorOccurred, this, &FleetDirectory::errorOccurred);
+    connect(m_client.get(), &mqtt::MqttClient::loginRefused, this, [this](const QString &message) {
+        // The same login every second would only be refused again.
+        m_client->disconnectFromBroker();
+        emit loginRefused(message);
+    });
     connect(m_client.get(), &mqtt::MqttClient::messageReceived, this,
             [this](const QString &topic, const QByteArray &payload) { onMessage(topic, payload); });
     // The state first: its retained messages make the entries.

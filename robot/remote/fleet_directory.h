@@ -78,6 +78,9 @@ signals:
     // Bad messages from the network (they change nothing), a broker that
     // refuses the login.
     void errorOccurred(const QString &message);
+    // The broker refused the user name or password: no more tries with them
+    // (hasBroker() stays true, isConnected() false) until connectToBroker.
+    void loginRefused(const QString &message);
 
 private:
     void onMessage(const QString &topic, const QByteArray &payload);

@@ -5,7 +5,9 @@
 // every bridge as well as the local robot. Screenshots of the fleet view go
 // into ROOMBA_SCREENSHOTS when set.
 
+#include "broker_dialog.h"
 #include "command_encoder.h"
+#include "fleet_tile.h"
 #include "fake_bridge.h"
 #include "fleet_console.h"
 #include "fleet_view.h"
@@ -15,6 +17,13 @@
 #include "snapshot_json.h"
 
 #include <QAction>
+#include <QDialogButtonBox>
+#include <QGuiApplication>
+#include <QLabel>
+#include <QLineEdit>
+#include <QScreen>
+#include <QSignalSpy>
+#include <QStatusBar>
 #include <QDir>
 #include <QProcess>
 #include <QPushButton>
@@ -87,12 +96,100 @@ private slots:
         {
             QSettings settings;
             saveBrokers(settings, {SavedBroker{withLogin, false}});
+            settings.setValue("brokers/connectedAtQuit", true); // as `again` left it
         }
         MainWindow asking;
         asking.start();
         QVERIFY(!asking.findChild<QAction *>("disconnectBrokerAction")->isEnabled());
         QVERIFY(asking.fleetView()->tiles().isEmpty());
+        // Not forgotten: the fleet view offers that class, naming the account,
+        // and its button asks for the password of that login.
+        FleetView &view = *asking.fleetView();
+        QVERIFY(view.isVisible());
+        QVERIFY2(view.brokerLabel()->text().contains(address.displayUrl())
+                     && view.brokerLabel()->text().contains(QStringLiteral("teacher")),
+                 qPrintable(view.brokerLabel()->text()));
+        QCOMPARE(view.connectButton()->text(), QStringLiteral("Reconnect…"));
+        QTest::mouseClick(view.connectButton(), Qt::LeftButton);
+        BrokerDialog *dialog = nullptr;
+        QTRY_VERIFY((dialog = asking.findChild<BrokerDialog *>()) && dialog->isVisible());
+        QCOMPARE(dialog->findChild<QLineEdit *>("brokerUser")->text(), QStringLiteral("teacher"));
+        dialog->reject();
         asking.close();
+    }
+
+    // A refused password: asked again at once, naming the account, and not
+    // tried again meanwhile; once right, the status bar forgets the refusal.
+    void aRefusedPasswordIsAskedAgainNotRetried()
+    {
+        MosquittoBroker broker(QStringLiteral("allow_anonymous false\npassword_file %DIR%/passwords\n"));
+        QVERIFY(broker.addUser(QStringLiteral("teacher"), QStringLiteral("right")));
+        QVERIFY2(broker.start(), qPrintable(broker.error()));
+        mqtt::BrokerAddress wrong = *mqtt::BrokerAddress::fromUrl(broker.url(), nullptr);
+        wrong.username = QStringLiteral("teacher");
+        wrong.password = QStringLiteral("wrong");
+
+        MainWindow window;
+        window.show();
+        window.start();
+        QSignalSpy said(&window.fleetConsole()->directory(), &FleetDirectory::errorOccurred);
+        QVERIFY(window.connectToBroker(wrong));
+        BrokerDialog *dialog = nullptr;
+        QTRY_VERIFY_WITH_TIMEOUT((dialog = window.findChild<BrokerDialog *>()) && dialog->isVisible(), 5000);
+        QVERIFY2(dialog->notice().contains(QStringLiteral("\"teacher\"")), qPrintable(dialog->notice()));
+        QCOMPARE(dialog->findChild<QLineEdit *>("brokerUser")->text(), QStringLiteral("teacher"));
+        QVERIFY(window.statusBar()->currentMessage().contains(QStringLiteral("refused")));
+
+        // A client with the same wrong login, retrying every second, is the
+        // clock: after three of its refusals the window has had just its one.
+        mqtt::MqttClient clock(QStringLiteral("clock"));
+        QSignalSpy ticks(&clock, &mqtt::MqttClient::errorOccurred);
+        QVERIFY(clock.connectToBroker(wrong));
+        QTRY_VERIFY_WITH_TIMEOUT(ticks.count() >= 3, 10000);
+        int refusals = 0;
+        for (const QList<QVariant> &args : said)
+            refusals += args[0].toString().contains(QStringLiteral("refused")) ? 1 : 0;
+        QCOMPARE(refusals, 1);
+        clock.disconnectFromBroker();
+
+        // The password typed again: connected, the refusal gone from the status bar.
+        auto *password = dialog->findChild<QLineEdit *>("brokerPassword");
+        QVERIFY(password->hasFocus());
+        QTest::keyClicks(password, QStringLiteral("right"));
+        QTest::keyClick(password, Qt::Key_Return);
+        QTRY_VERIFY_WITH_TIMEOUT(window.fleetView()->brokerText().contains(QStringLiteral("speaking as")), 5000);
+        QVERIFY2(!window.statusBar()->currentMessage().contains(QStringLiteral("refused")),
+                 qPrintable(window.statusBar()->currentMessage()));
+        window.close();
+    }
+
+    // The broker goes away: every tile says so, not that its robot is lost;
+    // it comes back, and so do the tiles, by themselves.
+    void aBrokerOutageIsNotDeadRobots()
+    {
+        MosquittoBroker broker;
+        QVERIFY2(broker.start(), qPrintable(broker.error()));
+        FakeBridge bridge(QStringLiteral("r1"));
+        QVERIFY(bridge.start(broker.port()));
+        // As roomba-bridge does: its state again on every connection.
+        connect(&bridge.client(), &mqtt::MqttClient::connected, &bridge, [&bridge] { bridge.publishState(); });
+        bridge.publishState();
+        MainWindow window;
+        window.start();
+        QVERIFY(window.connectToBroker(*mqtt::BrokerAddress::fromUrl(broker.url(), nullptr)));
+        FleetView &view = *window.fleetView();
+        QTRY_VERIFY_WITH_TIMEOUT(view.tile("r1") && view.tile("r1")->values().online, 5000);
+        QCOMPARE(view.tile("r1")->statusText(), QStringLiteral("ONLINE"));
+
+        broker.stop();
+        QTRY_COMPARE_WITH_TIMEOUT(view.tile("r1")->linkText(), QStringLiteral("broker unreachable"), 5000);
+        QVERIFY(view.tile("r1")->statusText() != QStringLiteral("OFFLINE"));
+        QVERIFY(!view.tile("r1")->linkText().contains(QStringLiteral("lost")));
+
+        QVERIFY2(broker.start(), qPrintable(broker.error()));
+        QTRY_COMPARE_WITH_TIMEOUT(view.tile("r1")->statusText(), QStringLiteral("ONLINE"), 20000);
+        QTRY_VERIFY_WITH_TIMEOUT(view.tile("r1")->linkText().startsWith(QStringLiteral("link streaming")), 5000);
+        window.close();
     }
 
     // A broker that is down: the fleet view says so within seconds and what
@@ -107,6 +204,13 @@ private slots:
                                  5000);
         QVERIFY2(window.fleetView()->brokerText().contains(QStringLiteral("not connected")),
                  qPrintable(window.fleetView()->brokerText()));
+        // The long message takes lines, not width: the window stays on the screen.
+        const int screenWidth = window.fleetView()->screen()->availableGeometry().width();
+        QCoreApplication::processEvents();
+        QVERIFY2(window.fleetView()->minimumSizeHint().width() <= screenWidth,
+                 qPrintable(QString::number(window.fleetView()->minimumSizeHint().width())));
+        QVERIFY2(window.fleetView()->frameGeometry().width() <= screenWidth,
+                 qPrintable(QString::number(window.fleetView()->frameGeometry().width())));
         QVERIFY2(broker.start(), qPrintable(broker.error()));
         QTRY_VERIFY_WITH_TIMEOUT(window.fleetView()->brokerText().contains(QStringLiteral("speaking as")), 20000);
         window.close();

@@ -4,6 +4,7 @@
 #include "display_palette.h"
 
 #include <QEvent>
+#include <QFontInfo>
 #include <QPainter>
 #include <QStyleOptionFocusRect>
 
@@ -34,15 +35,25 @@ void FleetTile::setValues(const FleetTileValues &values)
 
 QString FleetTile::statusText() const
 {
+    if (!m_values.brokerReachable)
+        return tr("NO BROKER");
     return m_values.online ? tr("ONLINE") : tr("OFFLINE");
+}
+
+QString FleetTile::modeOnlyText() const
+{
+    const QString mode = m_values.mode.isEmpty() ? tr("mode not known") : m_values.mode;
+    return m_values.modeReason.isEmpty() ? mode : tr("%1: %2").arg(mode, m_values.modeReason);
+}
+
+QString FleetTile::batteryText() const
+{
+    return m_values.batteryPercent ? tr("battery %1 %").arg(*m_values.batteryPercent) : QString();
 }
 
 QString FleetTile::modeText() const
 {
-    QString mode = m_values.mode.isEmpty() ? tr("mode not known") : m_values.mode;
-    if (!m_values.modeReason.isEmpty())
-        mode = tr("%1: %2").arg(mode, m_values.modeReason);
-    return m_values.batteryPercent ? tr("%1 · battery %2 %").arg(mode).arg(*m_values.batteryPercent) : mode;
+    return m_values.batteryPercent ? tr("%1 · %2").arg(modeOnlyText(), batteryText()) : modeOnlyText();
 }
 
 QString FleetTile::hazardText() const
@@ -63,6 +74,9 @@ QString FleetTile::hazardText() const
 
 QString FleetTile::linkText() const
 {
+    // The robot and its bridge are most likely fine: only this window cannot hear them.
+    if (!m_values.brokerReachable)
+        return tr("broker unreachable");
     const QString link = m_values.link.isEmpty() ? tr("link not known") : tr("link %1").arg(m_values.link);
     return m_values.framesPerSecond ? tr("%1 · %2/s").arg(link).arg(*m_values.framesPerSecond) : link;
 }
@@ -78,6 +92,39 @@ void FleetTile::updateAccessibleText()
     setAccessibleDescription(
         QStringList{modeText(), hazardText(), linkText(), controlText()}.join(QStringLiteral(", ")));
     setToolTip(tr("%1\nClick to select this robot: every dock shows it").arg(m_values.name));
+}
+
+QString FleetTile::leftPartShown(const QFontMetrics &metrics, int width, const QString &left, const QString &right)
+{
+    if (right.isEmpty())
+        return metrics.elidedText(left, Qt::ElideRight, width);
+    const QString spacer = QStringLiteral(" · ");
+    const int room = width - metrics.horizontalAdvance(right) - metrics.horizontalAdvance(spacer);
+    return metrics.elidedText(left + spacer.trimmed(), Qt::ElideRight, room);
+}
+
+QString FleetTile::shownModeLine() const
+{
+    const QString battery = batteryText();
+    const QString left = leftPartShown(QFontMetrics(lineFont()), lineWidth(), modeOnlyText(), battery);
+    return battery.isEmpty() ? left : left + QLatin1Char(' ') + battery;
+}
+
+int FleetTile::smallestTextPixels() const
+{
+    return QFontInfo(lineFont()).pixelSize();
+}
+
+QFont FleetTile::lineFont() const
+{
+    QFont f = font();
+    f.setPointSizeF(f.pointSizeF() * kLineScale);
+    return f;
+}
+
+int FleetTile::lineWidth() const
+{
+    return rect().adjusted(2, 2, -2, -2).width() - 2 * kPadding;
 }
 
 QSize FleetTile::sizeHint() const
@@ -110,18 +157,19 @@ void FleetTile::paintEvent(QPaintEvent *)
     p.drawRoundedRect(r, 8, 8);
 
     const QFont nameFont = display::valueFont(font(), kNameScale);
-    QFont lineFont = font();
-    lineFont.setPointSizeF(lineFont.pointSizeF() * kLineScale);
+    const QFont lineFont = this->lineFont();
     const QFontMetrics big(nameFont);
     const QFontMetrics line(lineFont);
     const int x = r.left() + kPadding;
-    const int width = r.width() - 2 * kPadding;
+    const int width = lineWidth();
     int y = r.top() + kPadding;
 
     // The status badge at the right of the name: green online, red offline.
     const QFont badgeFont = display::valueFont(font(), kLineScale);
     const QFontMetrics badgeMetrics(badgeFont);
-    const display::State status = m_values.online ? display::State::Active : display::State::Alert;
+    const display::State status = !m_values.brokerReachable ? display::State::Warning
+                                  : m_values.online         ? display::State::Active
+                                                            : display::State::Alert;
     const int badgeWidth = badgeMetrics.horizontalAdvance(statusText()) + 12;
     const QRect badge(r.right() - kPadding - badgeWidth, y + (big.height() - badgeMetrics.height()) / 2 - 2, badgeWidth,
                       badgeMetrics.height() + 4);
@@ -140,7 +188,8 @@ void FleetTile::paintEvent(QPaintEvent *)
     y += big.height() + kPadding;
 
     // One line each; a line that needs attention on its state colour.
-    const auto drawLine = [&](const QString &s, std::optional<display::State> state) {
+    // `right`, if any, is kept whole at the right end; `s` gives way to it.
+    const auto drawLine = [&](const QString &s, std::optional<display::State> state, const QString &right = {}) {
         const QRect box(x - 4, y, width + 8, line.height() + 4);
         p.setFont(lineFont);
         if (state && m_values.online) {
@@ -154,14 +203,17 @@ void FleetTile::paintEvent(QPaintEvent *)
         } else {
             p.setPen(text);
         }
+        if (!right.isEmpty())
+            p.drawText(box.adjusted(4, 0, -4, 0), Qt::AlignRight | Qt::AlignVCenter, right);
         p.drawText(box.adjusted(4, 0, -4, 0), Qt::AlignLeft | Qt::AlignVCenter,
-                   line.elidedText(s, Qt::ElideRight, width));
+                   leftPartShown(QFontMetrics(p.font()), width, s, right));
         y += line.height() + 4;
     };
-    drawLine(modeText(), std::nullopt);
+    drawLine(modeOnlyText(), std::nullopt, batteryText());
     const bool hazard = m_values.bumpLeft || m_values.bumpRight || m_values.cliffs > 0 || m_values.wheelDrop;
     drawLine(hazardText(), hazard ? std::optional(display::State::Alert) : std::nullopt);
-    drawLine(linkText(), m_values.linkHealthy ? std::nullopt : std::optional(display::State::Warning));
+    drawLine(linkText(), m_values.linkHealthy && m_values.brokerReachable ? std::nullopt
+                                                                          : std::optional(display::State::Warning));
     drawLine(controlText(), m_values.controller.isEmpty() ? std::nullopt : std::optional(display::State::Active));
 
     if (hasFocus()) {

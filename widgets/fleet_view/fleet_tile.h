@@ -2,6 +2,7 @@
 #pragma once
 
 #include <QAbstractButton>
+#include <QFontMetrics>
 #include <QString>
 
 #include <optional>
@@ -10,6 +11,7 @@
 struct FleetTileValues {
     QString name;
     bool online = false;
+    bool brokerReachable = true;       // false: what follows is the last known, the robot not heard since
     QString mode;                      // "Safe"; empty when not known
     QString modeReason;                // "cliff (front left)": why it is in Passive; empty: nothing to say
     std::optional<int> batteryPercent; // not known until the bridge says
@@ -38,7 +40,14 @@ public:
 
     // The texts of the lines below the name, as painted.
     QString statusText() const;
-    QString modeText() const;
+    QString modeText() const; // the mode, why, and the battery
+    QString modeOnlyText() const;
+    QString batteryText() const; // empty while not known
+    // The mode line as painted at the tile's size: the battery always whole,
+    // the mode and why shortened before it.
+    QString shownModeLine() const;
+    // The height of its smallest type, in pixels.
+    int smallestTextPixels() const;
     QString hazardText() const;
     QString linkText() const;
     QString controlText() const;
@@ -55,6 +64,10 @@ protected:
 
 private:
     void updateAccessibleText();
+    QFont lineFont() const;
+    int lineWidth() const;
+    // `left` shortened so that it and `right` share a line `width` wide.
+    static QString leftPartShown(const QFontMetrics &metrics, int width, const QString &left, const QString &right);
 
     FleetTileValues m_values;
     int m_paints = 0;

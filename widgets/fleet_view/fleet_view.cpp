@@ -6,6 +6,7 @@
 #include "stop_all_button.h"
 
 #include <QEvent>
+#include <QFontInfo>
 #include <QGridLayout>
 #include <QLabel>
 #include <QPushButton>
@@ -21,6 +22,7 @@ constexpr int kSpacing = 12;
 constexpr qreal kMaxScale = 3;
 constexpr qreal kMinScale = 0.8;
 constexpr QSize kFullHd(1920, 1080);
+constexpr int kLeastPixels = 14;
 }
 
 FleetView::FleetView(QWidget *parent) : QWidget(parent)
@@ -28,8 +30,10 @@ FleetView::FleetView(QWidget *parent) : QWidget(parent)
     auto *layout = new QVBoxLayout(this);
     m_broker = new QLabel(this);
     m_broker->setObjectName("fleetBroker");
-    m_broker->setFont(display::valueFont(font(), 1.2));
     m_broker->setTextFormat(Qt::PlainText);
+    // A long error takes more lines, never a wider window.
+    m_broker->setWordWrap(true);
+    m_broker->setMinimumWidth(1);
     m_connect = new QPushButton(this);
     m_connect->setObjectName("fleetConnect");
     connect(m_connect, &QPushButton::clicked, this, &FleetView::connectRequested);
@@ -48,7 +52,6 @@ FleetView::FleetView(QWidget *parent) : QWidget(parent)
     m_empty->setObjectName("fleetEmpty");
     m_empty->setWordWrap(true);
     m_empty->setAlignment(Qt::AlignCenter);
-    m_empty->setFont(display::valueFont(font(), 1.3));
     layout->addWidget(m_empty, 1);
     m_scroll = new QScrollArea(this);
     m_scroll->setWidgetResizable(true);
@@ -68,8 +71,11 @@ FleetView::FleetView(QWidget *parent) : QWidget(parent)
 void FleetView::retranslateUi()
 {
     setAccessibleName(tr("Fleet view"));
-    m_connect->setText(tr("Connect to broker…"));
-    m_broker->setText(m_brokerText.isEmpty() ? tr("Not connected to a broker") : m_brokerText);
+    const bool offer = m_brokerText.isEmpty() && !m_reconnectOffer.isEmpty();
+    m_connect->setText(offer ? tr("Reconnect…") : tr("Connect to broker…"));
+    m_broker->setText(!m_brokerText.isEmpty() ? m_brokerText
+                      : offer                 ? m_reconnectOffer
+                                              : tr("Not connected to a broker"));
     m_empty->setText(m_brokerText.isEmpty()
                          ? tr("Connect to a broker to see every robot whose bridge publishes there.")
                          : tr("No robot on this broker yet. Each appears as its bridge starts."));
@@ -88,8 +94,21 @@ void FleetView::resizeEvent(QResizeEvent *event)
 {
     // 2.4 times the desktop's type on a 1920×1080 screen, in proportion on
     // a smaller one, never under 1.8 times (a 1280×720 projector).
-    m_stopAll->setTypeScale(2.4 * screenfit::scaleFor(size(), kFullHd, 0.75, 1.25));
+    const qreal scale = screenfit::scaleFor(size(), kFullHd, 0.75, 1.25);
+    m_stopAll->setTypeScale(2.4 * scale);
+    // Readable from the back of the room: never under 14 px, however small the screen.
+    QFont broker = display::valueFont(font(), 1.6 * scale);
+    broker.setPixelSize(std::max(kLeastPixels, QFontInfo(broker).pixelSize()));
+    m_broker->setFont(broker);
+    m_connect->setFont(broker);
+    m_empty->setFont(broker);
     QWidget::resizeEvent(event);
+}
+
+void FleetView::setReconnectOffer(const QString &text)
+{
+    m_reconnectOffer = text;
+    retranslateUi();
 }
 
 void FleetView::setBrokerText(const QString &text, bool connected)

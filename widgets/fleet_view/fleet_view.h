@@ -26,6 +26,12 @@ public:
     // The broker line above the tiles: where, and whether connected.
     void setBrokerText(const QString &text, bool connected);
     QString brokerText() const { return m_brokerText; }
+    // While not connected: the broker of the last session, to connect to
+    // again with the Connect button (which then says so). Empty: none.
+    void setReconnectOffer(const QString &text);
+    QString reconnectOffer() const { return m_reconnectOffer; }
+    QLabel *brokerLabel() const { return m_broker; }
+    QPushButton *connectButton() const { return m_connect; }
     // Checks the tile of the selected robot (none for an empty name).
     void setSelected(const QString &name);
 
@@ -63,5 +69,6 @@ private:
     int m_columns = 0;
     qreal m_scale = 1;
     QString m_brokerText;
+    QString m_reconnectOffer;
     bool m_connected = false;
 };

@@ -13,6 +13,7 @@
 #include <QEvent>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QFontInfo>
 #include <QProgressBar>
 #include <QSplitter>
 #include <QVBoxLayout>
@@ -116,27 +117,38 @@ void LessonStepView::setScale(qreal scale)
     applyScale();
 }
 
+void LessonStepView::setLeastTextPixels(int pixels)
+{
+    m_leastTextPixels = pixels;
+    m_diagram->setLeastTextPixels(pixels);
+    applyScale();
+}
+
 void LessonStepView::applyScale()
 {
-    QFont heading = font();
-    heading.setPointSizeF(font().pointSizeF() * 1.3 * m_scale);
-    heading.setBold(true);
-    m_heading->setFont(heading);
-    QFont text = font();
-    text.setPointSizeF(font().pointSizeF() * 1.5 * m_scale);
-    m_text->setFont(text);
-    QFont goal = font();
-    goal.setPointSizeF(font().pointSizeF() * 1.2 * m_scale);
-    goal.setBold(true);
+    // `factor` times the desktop's type, never under m_leastTextPixels.
+    const auto sized = [this](qreal factor, bool bold = false, qreal least = 0) {
+        least = std::max<qreal>(least, m_leastTextPixels);
+        QFont f = font();
+        f.setPointSizeF(font().pointSizeF() * factor);
+        f.setBold(bold);
+        // In points still: the plots scale their axes' type from it.
+        if (const int pixels = QFontInfo(f).pixelSize(); pixels > 0 && pixels < least)
+            f.setPointSizeF(f.pointSizeF() * (least + 0.5) / pixels);
+        return f;
+    };
+    m_heading->setFont(sized(1.3 * m_scale, true));
+    m_text->setFont(sized(1.5 * m_scale));
+    const QFont goal = sized(1.2 * m_scale, true);
     m_goal->setFont(goal);
     m_outOfReach->setFont(goal);
-    m_progress->setFixedHeight(int(18 * m_scale));
-    QFont plots = font();
-    plots.setPointSizeF(font().pointSizeF() * std::max(1.0, m_scale * 0.7));
-    m_plots->setFont(plots);
+    const QFont progress = sized(std::max(1.0, 0.8 * m_scale), true);
+    m_progress->setFont(progress);
+    m_progress->setFixedHeight(std::max(int(18 * m_scale), QFontMetrics(progress).height() + 6));
+    // Its axes' type is 0.9 times this.
+    m_plots->setFont(sized(std::max(1.0, m_scale * 0.7), false, m_leastTextPixels / 0.9 + 1));
     for (ValueGauge *g : std::as_const(m_readouts)) {
-        QFont f = font();
-        f.setPointSizeF(font().pointSizeF() * m_scale);
+        const QFont f = sized(m_scale);
         g->setFont(f);
         g->setMaximumWidth(QFontMetrics(f).averageCharWidth() * 40);
     }

@@ -35,6 +35,8 @@ public:
     void setStep(const LessonStep *step, int index, int count, const QStringList &readouts = {});
     // Text size, 1 at a desk; the projector view makes it larger.
     void setScale(qreal scale);
+    // No text smaller than this many pixels, whatever the scale (a projector: 14).
+    void setLeastTextPixels(int pixels);
     // From the display timer: the robot's latest values, and the runner for
     // the goal's progress and the pose readouts (nullptr: none).
     void refresh(const oi::SensorSnapshot &latest, bool stale, const LessonRunner *runner);
@@ -71,6 +73,7 @@ private:
     int m_index = 0;
     int m_count = 0;
     qreal m_scale = 1;
+    int m_leastTextPixels = 0;
     QStringList m_readoutKeys;
     QLabel *m_heading;
     QLabel *m_text;

@@ -224,4 +224,7 @@ void SensorPlots::changeEvent(QEvent *event)
         retranslateUi();
     if (event->type() == QEvent::PaletteChange)
         applyPaused();
+    // Its style sheet keeps the status from following the panel's type by itself.
+    if (event->type() == QEvent::FontChange)
+        m_status->setFont(font());
 }

@@ -9,6 +9,8 @@
 #include "stop_all_button.h"
 
 #include <QEvent>
+#include <QFontInfo>
+#include <QProgressBar>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QPushButton>
@@ -22,6 +24,8 @@ namespace {
 // shows it smaller, so that the step, its views and readouts all fit).
 constexpr qreal kScale = 2.2;
 constexpr QSize kFullHd(1920, 1080);
+// Nothing smaller, whatever the screen: read from the back of a classroom.
+constexpr int kLeastPixels = 14;
 
 } // namespace
 
@@ -42,6 +46,7 @@ ProjectorView::ProjectorView(QWidget *parent) : QWidget(parent)
     m_hint->setObjectName("projectorHint");
     m_hint->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
     m_view = new LessonStepView(this);
+    m_view->setLeastTextPixels(kLeastPixels);
     m_reasonRow = new QWidget(this);
     m_reasonLabel = new QLabel(m_reasonRow);
     m_reasonLabel->setObjectName("projectorReason");
@@ -83,7 +88,7 @@ void ProjectorView::applyPalette()
 {
     // High contrast: white on black, yellow to point at things.
     QPalette p = palette();
-    for (auto group : {QPalette::Active, QPalette::Inactive}) {
+    for (auto group : {QPalette::Active, QPalette::Inactive, QPalette::Disabled}) {
         p.setColor(group, QPalette::Window, Qt::black);
         p.setColor(group, QPalette::WindowText, Qt::white);
         p.setColor(group, QPalette::Base, QColor(0x10, 0x10, 0x10));
@@ -96,6 +101,18 @@ void ProjectorView::applyPalette()
         p.setColor(group, QPalette::Mid, QColor(0x80, 0x80, 0x80));
     }
     setPalette(p);
+    // A bar at 0 %: its figure white on a grey groove, not lost in the black.
+    QPalette bar = p;
+    for (auto group : {QPalette::Active, QPalette::Inactive, QPalette::Disabled}) {
+        bar.setColor(group, QPalette::Base, QColor(0x40, 0x40, 0x40));
+        bar.setColor(group, QPalette::Window, QColor(0x40, 0x40, 0x40));
+        bar.setColor(group, QPalette::Text, Qt::white);
+        bar.setColor(group, QPalette::WindowText, Qt::white);
+        bar.setColor(group, QPalette::Highlight, QColor(0x2e, 0x9d, 0x4e));
+        bar.setColor(group, QPalette::HighlightedText, Qt::white);
+    }
+    if (auto *progress = m_view->findChild<QProgressBar *>(QStringLiteral("lessonProgress")))
+        progress->setPalette(bar);
 }
 
 void ProjectorView::applyScale()
@@ -111,6 +128,7 @@ void ProjectorView::applyScale()
     m_header->setFont(header);
     QFont hint = font();
     hint.setPointSizeF(font().pointSizeF() * std::max(1.0, 0.6 * scale));
+    hint.setPixelSize(std::max(kLeastPixels, QFontInfo(hint).pixelSize()));
     m_hint->setFont(hint);
     QFont reason = font();
     reason.setPointSizeF(font().pointSizeF() * 1.2 * scale);

@@ -7,6 +7,7 @@
 #include <QFontMetricsF>
 #include <QHelpEvent>
 #include <QPainter>
+#include <QtMath>
 #include <QPainterPath>
 #include <QToolTip>
 
@@ -325,8 +326,26 @@ QFont RobotDiagram::sceneFont(qreal pixelSize, bool bold) const
 {
     QFont f = display::valueFont(font());
     f.setBold(bold);
-    f.setPixelSize(std::max(1, qRound(pixelSize)));
+    // Scene units: at least m_leastTextPixels once drawn.
+    f.setPixelSize(std::max(1, qCeil(std::max(pixelSize, m_leastTextPixels / sceneScale()))));
     return f;
+}
+
+void RobotDiagram::setLeastTextPixels(qreal pixels)
+{
+    m_leastTextPixels = pixels;
+    update();
+}
+
+// Captions stay at least 10 px high on the smallest widget.
+qreal RobotDiagram::captionSize() const
+{
+    return std::max(chipRowHeight() * 0.28, std::max(10.0, m_leastTextPixels) / sceneScale());
+}
+
+qreal RobotDiagram::captionPixels() const
+{
+    return sceneFont(captionSize(), false).pixelSize() * sceneScale();
 }
 
 QFont RobotDiagram::fittingFont(qreal pixelSize, const QString &text, qreal width) const
@@ -731,8 +750,7 @@ bool RobotDiagram::event(QEvent *event)
 void RobotDiagram::paintChips(QPainter &p) const
 {
     const qreal rowHeight = chipRowHeight();
-    // Captions stay at least 10 px high on the smallest widget.
-    const qreal captionSize = std::max(rowHeight * 0.28, 10.0 / sceneScale());
+    const qreal captionSize = this->captionSize();
     const QFont captionFont = sceneFont(captionSize, false);
     for (const auto &[r, chip] : placedChips()) {
         p.setPen(QPen(inkColour(), 2));

@@ -33,6 +33,10 @@ public:
     // Stale data is drawn in grey under a STALE banner.
     void setStale(bool stale, bool replayEnded = false);
     bool isStale() const { return m_stale; }
+    // No text drawn smaller than this many pixels (a projector: 14).
+    void setLeastTextPixels(qreal pixels);
+    // How high the chips' captions ("IR omni") are drawn, in pixels.
+    qreal captionPixels() const;
     // Rings drawn round these parts, to point a class at them: "bump_left",
     // "bump_right", "wheel_left", "wheel_right", "caster", "cliff_left",
     // "cliff_front_left", "cliff_front_right", "cliff_right", "wall",
@@ -113,6 +117,8 @@ private:
     const oi::RobotProfile *m_profile = &oi::profile(oi::ProfileId::Create2);
     oi::SensorSnapshot m_snapshot;
     bool m_stale = false;
+    qreal m_leastTextPixels = 0; // 0: as the drawing's proportions give
+    qreal captionSize() const; // scene units
     bool m_replayEnded = false;
     QStringList m_highlighted;
 };

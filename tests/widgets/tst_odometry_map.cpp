@@ -381,6 +381,33 @@ private slots:
             QVERIFY(m_map->grab().save(QDir(qEnvironmentVariable("ROOMBA_SCREENSHOTS")).filePath("odometry_map_legend.png")));
     }
 
+    // The legend never hides a robot: where one stands under it, it goes
+    // to another corner of the map.
+    void theLegendStaysClearOfTheRobots()
+    {
+        sim::World world;
+        world.walls = {{0, 0, 1000, 0}};
+        world.dropOffs = {{1500, -500, 2000, 0}};
+        world.dock = sim::World::Dock{-500, 500, 0};
+        m_map->setWorld(world);
+        const QRect topRight = m_map->legendRect();
+        // The floor point drawn in the middle of the legend (the map is linear).
+        const QPointF o = m_map->widgetPointFor({0, 0}), u = m_map->widgetPointFor({1000, 1000});
+        const QPointF mmPerPixel(1000 / (u.x() - o.x()), 1000 / (u.y() - o.y()));
+        const QPointF c = topRight.center();
+        const oi::Pose under{(c.x() - o.x()) * mmPerPixel.x(), (c.y() - o.y()) * mmPerPixel.y(), 0};
+        showTruth(*m_map, under);
+        QCOMPARE(m_map->robotRects().size(), 2);
+        QVERIFY(m_map->robotRects().last().intersects(topRight));
+        const QRect legend = m_map->legendRect();
+        for (const QRect &robot : m_map->robotRects())
+            QVERIFY2(!robot.intersects(legend), qPrintable(QStringLiteral("robot %1,%2 %3×%4 under the legend %5,%6 %7×%8")
+                                                               .arg(robot.x()).arg(robot.y()).arg(robot.width())
+                                                               .arg(robot.height()).arg(legend.x()).arg(legend.y())
+                                                               .arg(legend.width()).arg(legend.height())));
+        QVERIFY(m_map->rect().contains(legend));
+    }
+
     // Touching the room: carry, turn and lift a robot; the map only asks.
     void touchingARobotAsksTheRoom()
     {

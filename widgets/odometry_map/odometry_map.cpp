@@ -434,7 +434,7 @@ void OdometryMap::paintEvent(QPaintEvent *)
     paintScaleBar(painter, area);
 
     painter.setClipping(false);
-    paintLegend(painter, area);
+    paintLegend(painter);
     if (m_editTool->isEditing())
         paintEditBanner(painter, area);
 }
@@ -508,19 +508,60 @@ QStringList OdometryMap::legendLabels() const
     return labels;
 }
 
-void OdometryMap::paintLegend(QPainter &painter, const QRect &area) const
+QList<QRect> OdometryMap::robotRects() const
+{
+    const double radius = std::max(8.0, kRobotDiameterMm / 2 * m_scale) + 3; // its pen, and a heading line
+    const auto around = [&](const oi::Pose &p) {
+        const QPointF c = widgetPointFor({p.xMm, p.yMm});
+        return QRectF(c.x() - radius, c.y() - radius, 2 * radius, 2 * radius).toAlignedRect();
+    };
+    QList<QRect> rects;
+    if (!m_odometry || m_odometry->isIdentified())
+        rects << around(pose());
+    for (const TruePose &t : m_truePoses)
+        rects << around(t.pose);
+    return rects;
+}
+
+QRect OdometryMap::legendRect() const
 {
     const QList<LegendEntry> entries = legend();
     const QFontMetrics fm(font());
     // Sizes follow the font, so the legend grows with it.
     const int gap = fm.averageCharWidth();
     const int swatch = fm.ascent() * 3 / 2;
-    int y = area.top() + 2 * fm.height(); // below the x labels
+    int textWidth = 0;
+    for (const LegendEntry &entry : entries)
+        textWidth = std::max(textWidth, fm.horizontalAdvance(entry.text));
+    const QSize size(3 * gap + swatch + textWidth, int(entries.size()) * (fm.height() + 4) + 4);
+    const QRect area = mapRect();
+    // Clear of the grid's labels along the top and the pose and scale bar along the bottom.
+    const QRect room = area.adjusted(gap, 2 * fm.height(), -gap, -3 * fm.height());
+    const QList<QRect> robots = robotRects();
+    const QList<QRect> corners = {QRect(QPoint(room.right() - size.width(), room.top()), size),
+                                  QRect(room.topLeft() + QPoint(3 * fm.height(), 0), size),
+                                  QRect(QPoint(room.right() - size.width(), room.bottom() - size.height()), size),
+                                  QRect(QPoint(room.left() + 3 * fm.height(), room.bottom() - size.height()), size)};
+    for (const QRect &corner : corners)
+        if (std::none_of(robots.begin(), robots.end(), [&](const QRect &r) { return r.intersects(corner); }))
+            return corner;
+    return corners.first(); // a robot in every corner: a small map, and they move
+}
+
+void OdometryMap::paintLegend(QPainter &painter) const
+{
+    const QList<LegendEntry> entries = legend();
+    const QFontMetrics fm(font());
+    const int gap = fm.averageCharWidth();
+    const int swatch = fm.ascent() * 3 / 2;
+    const QRect box = legendRect();
+    QColor back = palette().color(QPalette::Base);
+    back.setAlpha(220);
+    painter.fillRect(box, back);
+    int y = box.top() + 2;
     for (const LegendEntry &entry : entries) {
-        const int w = fm.horizontalAdvance(entry.text);
-        const QRect text(area.right() - gap - w, y, w, fm.height());
-        const QRect sample(text.left() - gap - swatch, text.top() + 2, swatch, text.height() - 4);
-        painter.fillRect(text.adjusted(-2 * gap - swatch, -2, gap / 2, 2), palette().base());
+        const QRect sample(box.left() + gap, y + 2, swatch, fm.height() - 4);
+        const QRect text(sample.right() + gap, y, box.right() - sample.right() - gap, fm.height());
         if (entry.fill.style() != Qt::NoBrush) {
             painter.setPen(entry.pen);
             painter.setBrush(entry.fill);

@@ -95,6 +95,11 @@ public:
     const QVector<QPointF> &comparisonPath() const { return m_comparisonPath; }
     // What the legend names, top to bottom.
     QStringList legendLabels() const;
+    // Where the legend is drawn: the first corner of the map (top right, top
+    // left, bottom right, bottom left) where it hides no robot.
+    QRect legendRect() const;
+    // Where each robot is drawn (its odometry, then each true pose).
+    QList<QRect> robotRects() const;
 
     void setWorld(std::optional<sim::World> world);
     const std::optional<sim::World> &world() const { return m_world; }
@@ -188,7 +193,7 @@ private:
         QBrush fill = Qt::NoBrush; // or a patch of it, where it is an area
     };
     QList<LegendEntry> legend() const;
-    void paintLegend(QPainter &painter, const QRect &area) const;
+    void paintLegend(QPainter &painter) const;
     QPen comparisonPen() const;
     QPen wallPen() const;
     QPen virtualWallPen() const;

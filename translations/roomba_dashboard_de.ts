@@ -181,6 +181,18 @@
         <source>Fleet view — Roomba Dashboard</source>
         <translation>Flottenansicht — Roomba Dashboard</translation>
     </message>
+    <message>
+        <source>%1. Type the password again, or another user name.</source>
+        <translation>%1. Geben Sie das Passwort erneut ein oder einen anderen Benutzernamen.</translation>
+    </message>
+    <message>
+        <source>Connecting again to %1, the class of the last session.</source>
+        <translation>Verbinde erneut mit %1, der Klasse der letzten Sitzung.</translation>
+    </message>
+    <message>
+        <source>Last session: the class on %1 as &quot;%2&quot;. Reconnect… asks for the password.</source>
+        <translation>Letzte Sitzung: die Klasse auf %1 als „%2“. Neu verbinden… fragt nach dem Passwort.</translation>
+    </message>
 </context>
 <context>
     <name>BrokerDialog</name>
@@ -1448,10 +1460,6 @@ Er hat ausgegeben: %5</translation>
         <translation>Modus unbekannt</translation>
     </message>
     <message>
-        <source>%1 · battery %2 %</source>
-        <translation>%1 · Akku %2 %</translation>
-    </message>
-    <message>
         <source>BUMP both</source>
         <translation>STOSS beide</translation>
     </message>
@@ -1509,6 +1517,22 @@ Klicken wählt diesen Roboter: jedes Dock zeigt ihn</translation>
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
+    <message>
+        <source>NO BROKER</source>
+        <translation>KEIN BROKER</translation>
+    </message>
+    <message>
+        <source>battery %1 %</source>
+        <translation>Akku %1 %</translation>
+    </message>
+    <message>
+        <source>%1 · %2</source>
+        <translation>%1 · %2</translation>
+    </message>
+    <message>
+        <source>broker unreachable</source>
+        <translation>Broker nicht erreichbar</translation>
+    </message>
 </context>
 <context>
     <name>FleetView</name>
@@ -1531,6 +1555,10 @@ Klicken wählt diesen Roboter: jedes Dock zeigt ihn</translation>
     <message>
         <source>No robot on this broker yet. Each appears as its bridge starts.</source>
         <translation>Noch kein Roboter auf diesem Broker. Jeder erscheint, sobald seine Bridge startet.</translation>
+    </message>
+    <message>
+        <source>Reconnect…</source>
+        <translation>Neu verbinden…</translation>
     </message>
 </context>
 <context>

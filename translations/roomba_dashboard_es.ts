@@ -181,6 +181,18 @@
         <source>Fleet view — Roomba Dashboard</source>
         <translation>Vista de la flota — Roomba Dashboard</translation>
     </message>
+    <message>
+        <source>%1. Type the password again, or another user name.</source>
+        <translation>%1. Escriba de nuevo la contraseña, u otro nombre de usuario.</translation>
+    </message>
+    <message>
+        <source>Connecting again to %1, the class of the last session.</source>
+        <translation>Conectando de nuevo con %1, la clase de la última sesión.</translation>
+    </message>
+    <message>
+        <source>Last session: the class on %1 as &quot;%2&quot;. Reconnect… asks for the password.</source>
+        <translation>Última sesión: la clase en %1 como «%2». Reconectar… pide la contraseña.</translation>
+    </message>
 </context>
 <context>
     <name>BrokerDialog</name>
@@ -1447,10 +1459,6 @@ Imprimió: %5</translation>
         <translation>modo desconocido</translation>
     </message>
     <message>
-        <source>%1 · battery %2 %</source>
-        <translation>%1 · batería %2 %</translation>
-    </message>
-    <message>
         <source>BUMP both</source>
         <translation>CHOQUE ambos</translation>
     </message>
@@ -1508,6 +1516,22 @@ Haga clic para seleccionar este robot: todos los paneles lo muestran</translatio
         <source>%1: %2</source>
         <translation>%1: %2</translation>
     </message>
+    <message>
+        <source>NO BROKER</source>
+        <translation>SIN BRÓKER</translation>
+    </message>
+    <message>
+        <source>battery %1 %</source>
+        <translation>batería %1 %</translation>
+    </message>
+    <message>
+        <source>%1 · %2</source>
+        <translation>%1 · %2</translation>
+    </message>
+    <message>
+        <source>broker unreachable</source>
+        <translation>bróker inalcanzable</translation>
+    </message>
 </context>
 <context>
     <name>FleetView</name>
@@ -1530,6 +1554,10 @@ Haga clic para seleccionar este robot: todos los paneles lo muestran</translatio
     <message>
         <source>No robot on this broker yet. Each appears as its bridge starts.</source>
         <translation>Aún no hay robots en este bróker. Cada uno aparece cuando arranca su puente.</translation>
+    </message>
+    <message>
+        <source>Reconnect…</source>
+        <translation>Reconectar…</translation>
     </message>
 </context>
 <context>

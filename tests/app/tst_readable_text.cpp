@@ -12,6 +12,7 @@
 #include "sensor_plots.h"
 
 #include <QAbstractButton>
+#include <QDir>
 #include <QFontInfo>
 #include <QLabel>
 #include <QProgressBar>
@@ -114,9 +115,11 @@ private slots:
         window.setProjectorView(true);
         ProjectorView *view = window.projectorView();
         // The offscreen screen is smaller: the view as a 1280×720 projector shows it.
-        view->setGeometry(0, 0, 1280, 720);
         QTRY_VERIFY(view->isVisible());
         QCoreApplication::processEvents();
+        view->setGeometry(0, 0, 1280, 720);
+        QCoreApplication::processEvents();
+        QCOMPARE(view->size(), QSize(1280, 720));
         LessonStepView *step = view->stepView();
         auto *progress = step->findChild<QProgressBar *>("lessonProgress");
         QVERIFY(progress && progress->isVisibleTo(view));
@@ -135,6 +138,8 @@ private slots:
                  qPrintable(QString::number(contrast(p.color(QPalette::Text), p.color(QPalette::Base)))));
         QVERIFY2(contrast(p.color(QPalette::Base), Qt::black) >= 1.5,
                  qPrintable(QString::number(contrast(p.color(QPalette::Base), Qt::black))));
+        if (qEnvironmentVariableIsSet("ROOMBA_SCREENSHOTS"))
+            QVERIFY(view->grab().save(QDir(qEnvironmentVariable("ROOMBA_SCREENSHOTS")).filePath("projector_lesson_1280x720.png")));
         window.setProjectorView(false);
         window.close();
     }

@@ -98,9 +98,8 @@ QString FleetTile::leftPartShown(const QFontMetrics &metrics, int width, const Q
 {
     if (right.isEmpty())
         return metrics.elidedText(left, Qt::ElideRight, width);
-    const QString spacer = QStringLiteral(" · ");
-    const int room = width - metrics.horizontalAdvance(right) - metrics.horizontalAdvance(spacer);
-    return metrics.elidedText(left + spacer.trimmed(), Qt::ElideRight, room);
+    const int room = width - metrics.horizontalAdvance(right) - 2 * metrics.averageCharWidth();
+    return metrics.elidedText(left, Qt::ElideRight, room);
 }
 
 QString FleetTile::shownModeLine() const

@@ -759,6 +759,26 @@ void RobotDiagram::paintChips(QPainter &p) const
 
         QColor text = textColour(chip.state);
         const QRectF inner = r.adjusted(14, 4, -14, -4);
+        if (inner.height() * sceneScale() < 2.2 * m_leastTextPixels) {
+            // Too short for a caption above its value at the least size: side by side.
+            QFont bold = sceneFont(captionSize);
+            const QString value = QFontMetricsF(bold).horizontalAdvance(chip.caption + QStringLiteral("  ") + chip.value)
+                                          <= inner.width() || chip.shortValue.isEmpty()
+                                      ? chip.value
+                                      : chip.shortValue;
+            const qreal valueWidth = std::min(QFontMetricsF(bold).horizontalAdvance(value), inner.width() * 0.6);
+            p.setPen(text);
+            p.setFont(bold);
+            p.drawText(inner, Qt::AlignRight | Qt::AlignVCenter,
+                       QFontMetricsF(bold).elidedText(value, Qt::ElideRight, valueWidth));
+            text.setAlphaF(0.8);
+            p.setPen(text);
+            p.setFont(captionFont);
+            const qreal captionWidth = inner.width() - valueWidth - QFontMetricsF(captionFont).averageCharWidth();
+            p.drawText(inner, Qt::AlignLeft | Qt::AlignVCenter,
+                       QFontMetricsF(captionFont).elidedText(chip.caption, Qt::ElideRight, captionWidth));
+            continue;
+        }
         const QRectF captionRect(inner.left(), inner.top(), inner.width(), captionSize * 1.25);
         const QRectF valueRect(inner.left(), captionRect.bottom(), inner.width(),
                                inner.bottom() - captionRect.bottom());

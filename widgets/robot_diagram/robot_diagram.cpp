@@ -759,7 +759,7 @@ void RobotDiagram::paintChips(QPainter &p) const
 
         QColor text = textColour(chip.state);
         const QRectF inner = r.adjusted(14, 4, -14, -4);
-        if (inner.height() * sceneScale() < 2.2 * m_leastTextPixels) {
+        if (inner.height() * sceneScale() < 2.6 * m_leastTextPixels) {
             // Too short for a caption above its value at the least size: side by side.
             QFont bold = sceneFont(captionSize);
             const QString value = QFontMetricsF(bold).horizontalAdvance(chip.caption + QStringLiteral("  ") + chip.value)

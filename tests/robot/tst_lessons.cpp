@@ -151,6 +151,10 @@ private slots:
             const std::optional<Lesson> lesson = loadLessonFile(path, &error);
             QVERIFY2(lesson, qPrintable(error));
             QVERIFY(!lesson->steps.isEmpty());
+            // Distance (19) and angle (20) count only since the last frame:
+            // plotted, they read as a flat line near 0 labelled like a total.
+            for (const LessonStep &step : lesson->steps)
+                QVERIFY2(!step.plot.contains("distance") && !step.plot.contains("angle"), qPrintable(path));
         }
     }
 

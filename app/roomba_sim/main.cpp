@@ -123,7 +123,10 @@ int main(int argc, char *argv[])
         "/tmp/roomba-sim-brc-pts-N for /dev/pts/N: each byte 'R' or 'D' asserts the\n"
         "RTS or DTR line, 'r' or 'd' releases it; the line the robot's cable joins to\n"
         "its BRC pin (--brc-wired) pulls the pin low while asserted. The dashboard and\n"
-        "roomba-ctl use it as the port's RTS and DTR lines."));
+        "roomba-ctl use it as the port's RTS and DTR lines.\n"
+        "Clean, Spot, Max and Seek Dock run a simple program of the robot's own in\n"
+        "Passive (bouncing off bumps and cliffs, a spiral, straight to the dock)\n"
+        "until another command ends it."));
     const QCommandLineOption helpOption = parser.addHelpOption();
     const QCommandLineOption versionOption = parser.addVersionOption();
     parser.addOptions({

@@ -199,6 +199,17 @@ struct VirtualRobot::State {
     double speedLeft = 0, speedRight = 0;
     std::int32_t requestedVelocity = 0, requestedRadius = 0, requestedRight = 0, requestedLeft = 0;
     bool blocked = false, progressing = false;
+    // Clean, Spot, Max, Seek Dock (and the Create's Cover): the robot's own
+    // program, in Passive, until another command, a lift or its end. A
+    // simple one: ahead, backing and turning away from what it bumps or sees
+    // as a cliff; a widening spiral for Spot; straight for the dock to Seek it.
+    struct Cleaning {
+        Command command = Command::Clean;
+        enum class Phase { Ahead, Back, Turn } phase = Phase::Ahead;
+        Microseconds started{}, phaseEnds{};
+        int turns = 0;
+    };
+    std::optional<Cleaning> cleaning;
     double wheelLeftMm = 0, wheelRightMm = 0; // what the encoders have counted, unwrapped, in documented mm
     oi::WheelGeometry wheels;                 // the real ones
     double distanceMm = 0, angleRaw = 0;      // since they were last reported
@@ -307,6 +318,82 @@ struct VirtualRobot::State {
         motorBits = 0;
         motorPwm = {};
         motorDuty = {};
+    }
+
+    void endCleaning()
+    {
+        if (!cleaning)
+            return;
+        cleaning.reset();
+        stopMotion();
+    }
+
+    void driveArc(double velocity, double radiusMm)
+    {
+        const double half = oi::kWheelBaseMm / 2;
+        setWheelTargets(velocity * (radiusMm - half) / radiusMm, velocity * (radiusMm + half) / radiusMm);
+    }
+
+    // One tick of the robot's own program (see Cleaning).
+    void runCleaning()
+    {
+        using namespace std::chrono_literals;
+        Cleaning &c = *cleaning;
+        if (wheelDropLeft() || wheelDropRight() || wheelDropCaster()) {
+            endCleaning(); // lifted: a real robot stops and complains
+            return;
+        }
+        const double seconds = std::chrono::duration<double>(now - c.started).count();
+        if (c.command == Command::Spot) {
+            // About 30 s of a spiral that widens to a metre across.
+            if (seconds >= 30) {
+                endCleaning();
+                return;
+            }
+            driveArc(200, 60 + 15 * seconds);
+            return;
+        }
+        if (c.command == Command::SeekDock && world.dock) {
+            if (onDock()) {
+                endCleaning(); // on its contacts: it charges
+                return;
+            }
+            const double bearing = std::atan2(world.dock->y - pose.yMm, world.dock->x - pose.xMm);
+            const double error = std::remainder(bearing - pose.thetaRad, 2 * std::acos(-1.0));
+            if (std::abs(error) > 0.3)
+                setWheelTargets(error > 0 ? -100 : 100, error > 0 ? 100 : -100);
+            else
+                setWheelTargets(150 - 150 * error, 150 + 150 * error);
+            return;
+        }
+        const ObstacleContact o = obstacles();
+        const auto &cliffs = floorContact().cliff;
+        const bool cliff = std::any_of(cliffs.begin(), cliffs.end(), [](bool b) { return b; });
+        switch (c.phase) {
+        case Cleaning::Phase::Ahead:
+            if (o.bumpLeft || o.bumpRight || cliff) {
+                c.phase = Cleaning::Phase::Back;
+                c.phaseEnds = now + 300ms;
+                setWheelTargets(-150, -150);
+            } else {
+                setWheelTargets(250, 250);
+            }
+            break;
+        case Cleaning::Phase::Back:
+            if (now >= c.phaseEnds) {
+                // Away from the side it touched; turns of different lengths
+                // so that it does not bounce between the same two walls.
+                c.phase = Cleaning::Phase::Turn;
+                c.phaseEnds = now + std::chrono::milliseconds(400 + 250 * (c.turns++ % 4));
+                const bool left = o.bumpRight || cliffs[2] || cliffs[3];
+                setWheelTargets(left ? -150 : 150, left ? 150 : -150);
+            }
+            break;
+        case Cleaning::Phase::Turn:
+            if (now >= c.phaseEnds)
+                c.phase = Cleaning::Phase::Ahead;
+            break;
+        }
     }
 
     void enterPassive()
@@ -720,6 +807,10 @@ struct VirtualRobot::State {
             wait.reset();
         scriptYield = false;
         pump();
+        if (cleaning && mode == OiMode::Passive)
+            runCleaning();
+        if (cleaning)
+            lastActivity = now; // a robot at work does not doze off
         if (sleepsWhenIdle() && mode == OiMode::Passive && now - lastActivity >= kSleepAfter) {
             fallAsleep();
             return;
@@ -966,9 +1057,14 @@ struct VirtualRobot::State {
         if (mode == OiMode::Passive && oi::ignoredInPassive(cmd))
             return;
         if (oi::startsCleaning(cmd)) {
-            enterPassive(); // the cleaning itself is not simulated
+            enterPassive();
+            cleaning = Cleaning{cmd, Cleaning::Phase::Ahead, now, now, 0};
             return;
         }
+        // A query leaves the robot's program running; any other command ends it.
+        if (cmd != Command::Sensors && cmd != Command::QueryList && cmd != Command::Stream
+            && cmd != Command::PauseResumeStream)
+            endCleaning();
         switch (cmd) {
         case Command::Reset:
             reset();

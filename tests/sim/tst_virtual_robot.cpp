@@ -321,6 +321,9 @@ private slots:
     void dockInfrared();
     void wallsHideTheDock();
     void chargesOnTheDock();
+    void cleaningRunsInPassiveUntilACommandEndsIt();
+    void spotSpiralsThenEnds();
+    void seekDockDrivesOntoTheDock();
     void printsItsChargingStatusOnTheDock();
     void resetOnTheDockAddsTheChargersLines();
     void virtualWallBeam_data();
@@ -553,6 +556,12 @@ void TestVirtualRobot::cleaningCommandsReturnToPassive()
     b.run(200ms);
     b.send(command(profileOf(profile), line));
     QCOMPARE(b.robot.mode(), OiMode::Passive);
+    // The Drive is over: the robot runs its own program now, which asks for
+    // no velocity, and Start ends that too.
+    b.run(500ms);
+    QCOMPARE(b.query({39}).raw(39), 0);
+    b.send(b.encoder.start());
+    b.run(300ms);
     const double x = b.robot.truePose().xMm;
     b.run(500ms);
     QCOMPARE(b.robot.truePose().xMm, x);
@@ -1319,6 +1328,70 @@ void TestVirtualRobot::wallsHideTheDock()
         b.robot.setWorld(screened);
         QCOMPARE(b.value(17), int(profileOf(p).irNone));
     }
+}
+
+// Clean (and Max) drive the robot about the room by itself, in Passive,
+// turning away from what it bumps; a query leaves it at work, any other
+// command ends it.
+void TestVirtualRobot::cleaningRunsInPassiveUntilACommandEndsIt()
+{
+    Bench b(profileOf(ProfileId::Create2));
+    b.robot.placeAt(poseAt(0, 0, 0));
+    b.send(b.encoder.start());
+    b.send(b.encoder.clean());
+    const oi::Pose start = b.robot.truePose();
+    b.run(5s);
+    QCOMPARE(b.query({35}).oiMode(), OiMode::Passive);
+    QVERIFY(std::hypot(b.robot.truePose().xMm - start.xMm, b.robot.truePose().yMm - start.yMm) > 500);
+    // A minute of bouncing about: it stays in the room, off the stage's edge.
+    for (int i = 0; i < 60; ++i) {
+        b.run(1s);
+        const SensorSnapshot s = b.query({7, 9, 10, 11, 12});
+        QVERIFY2(!s.wheelDropLeft() && !s.wheelDropRight(), qPrintable(QString("second %1").arg(i)));
+    }
+    const oi::Pose before = b.robot.truePose();
+    b.run(1s);
+    QVERIFY(before.xMm != b.robot.truePose().xMm || before.yMm != b.robot.truePose().yMm);
+    // Safe ends the robot's program: it stands still.
+    b.send(b.encoder.safe());
+    b.run(1s);
+    const oi::Pose stopped = b.robot.truePose();
+    b.run(2s);
+    QCOMPARE(b.robot.truePose().xMm, stopped.xMm);
+    QCOMPARE(b.robot.truePose().yMm, stopped.yMm);
+}
+
+void TestVirtualRobot::spotSpiralsThenEnds()
+{
+    Bench b(profileOf(ProfileId::Create2));
+    b.robot.placeAt(poseAt(0, 0, 0));
+    b.send(b.encoder.start());
+    b.send(b.encoder.spot());
+    b.run(20s);
+    // Round and round near where it began.
+    const double away = std::hypot(b.robot.truePose().xMm, b.robot.truePose().yMm);
+    QVERIFY2(away > 50 && away < 1000, qPrintable(QString::number(away)));
+    b.run(11s);
+    const oi::Pose done = b.robot.truePose();
+    b.run(2s);
+    QCOMPARE(b.robot.truePose().xMm, done.xMm);
+}
+
+void TestVirtualRobot::seekDockDrivesOntoTheDock()
+{
+    Bench b(profileOf(ProfileId::Roomba500));
+    const World classroom = World::classroom();
+    // A metre in front of the dock, facing away from it.
+    b.robot.placeAt(poseAt(classroom.dock->x + 1000, classroom.dock->y + 200, 0));
+    b.send(b.encoder.start());
+    b.send(b.encoder.seekDock());
+    bool docked = false;
+    for (int i = 0; i < 60 && !docked; ++i) {
+        b.run(1s);
+        docked = b.query({34}).chargingSource(ChargingSource::HomeBase);
+    }
+    QVERIFY(docked);
+    QCOMPARE(b.query({35}).oiMode(), OiMode::Passive);
 }
 
 void TestVirtualRobot::chargesOnTheDock()

@@ -3,6 +3,7 @@
 
 #include "command_catalog.h"
 #include "command_message.h"
+#include "command_modes.h"
 #include "fleet_directory.h"
 #include "packet_encoding.h"
 
@@ -68,7 +69,7 @@ NetworkTransport::NetworkTransport(FleetDirectory *directory, QString robot, con
     m_idleRelease.setSingleShot(true);
     m_idleRelease.setInterval(kReleaseIdleMs);
     connect(&m_idleRelease, &QTimer::timeout, this, [this] {
-        if (!m_moving)
+        if (!m_moving && !m_ownProgram)
             releaseControl();
     });
 }
@@ -164,6 +165,7 @@ void NetworkTransport::carry(const QByteArray &bytes, bool asked)
         if (m_inControl)
             publishCommand(oi::OiCommand{C::Stop, {}, {}});
         m_moving = false;
+        m_ownProgram = false;
         releaseControl();
         return;
     }
@@ -176,7 +178,12 @@ void NetworkTransport::forward(const oi::OiCommand &command)
     takeControl();
     publishCommand(command);
     m_moving = isMotion(command) ? !isStop(command) : m_moving;
-    if (!m_moving)
+    if (oi::startsCleaning(command.command))
+        m_ownProgram = true;
+    else if (command.command == C::Start || command.command == C::Safe || command.command == C::Full
+             || command.command == C::Reset || command.command == C::Power)
+        m_ownProgram = false; // another mode: the program is over
+    if (!m_moving && !m_ownProgram)
         m_idleRelease.start();
 }
 

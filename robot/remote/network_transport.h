@@ -23,7 +23,8 @@ class FleetDirectory;
 //    link does its own); every command the session asks for goes to the
 //    bridge as the typed command it is (docs/mqtt.md, "Commands");
 //  - the first command that needs control takes it, a heartbeat keeps it,
-//    and the stop after the motion (Drive 0,0, motors off) gives it back.
+//    and the stop after the motion (Drive 0,0, motors off) gives it back;
+//    a cleaning command keeps it until the driver stops the robot.
 // Lives on the link's thread and shares nothing with the GUI-thread
 // directory: what it publishes leaves as values in queued signals, and
 // telemetry and replies come back the same way.
@@ -76,6 +77,10 @@ private:
     oi::SensorSnapshot m_latest;
     bool m_inControl = false;
     bool m_moving = false;
+    // Clean, Spot, Max, Seek Dock: the robot runs its own program, and the
+    // bridge would end it when control is given back; control is kept
+    // until a stop or another mode ends it.
+    bool m_ownProgram = false;
     quint64 m_nextId = 1;
     QStringList m_controlSent; // not answered yet, oldest first
     QTimer m_heartbeat;

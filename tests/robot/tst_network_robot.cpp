@@ -133,6 +133,32 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(rig.bridge.controller().isEmpty(), 5000);
     }
 
+    // Clean (and Spot, Max, Seek Dock) is the robot's own program: control
+    // is kept, heartbeat after heartbeat, past the idle release a song or
+    // an LED gets, because the bridge ends the program when control goes
+    // back. The driver's stop ends it and gives control back.
+    void aCleaningCommandKeepsControlUntilTheStop()
+    {
+        Rig rig;
+        QVERIFY2(rig.start(), qPrintable(rig.broker.error()));
+        QVERIFY(rig.session.send(QByteArray(1, char(135)))); // Clean
+        QTRY_COMPARE_WITH_TIMEOUT(rig.bridge.controller(), rig.directory.clientName(), 5000);
+        QTRY_COMPARE_WITH_TIMEOUT(rig.bridge.receivedOn(mqtt::topics::Kind::Command).size(), 1, 5000);
+        QCOMPARE(rig.bridge.receivedOn(mqtt::topics::Kind::Command).first().payload.value("command").toString(),
+                 QStringLiteral("clean"));
+        // Three times the idle release's worth of heartbeats, and no release among them.
+        const int keeps = 3 * NetworkTransport::kReleaseIdleMs / NetworkTransport::kHeartbeatMs;
+        QTRY_VERIFY_WITH_TIMEOUT(rig.bridge.receivedOn(mqtt::topics::Kind::Control).size() > keeps, 15000);
+        for (const auto &m : rig.bridge.receivedOn(mqtt::topics::Kind::Control).mid(1))
+            QCOMPARE(m.payload.value("action").toString(), QStringLiteral("keep"));
+        QCOMPARE(rig.bridge.controller(), rig.directory.clientName());
+        // Space: the stop goes to the bridge, and control with it.
+        rig.session.teleop().stopAll();
+        QTRY_VERIFY_WITH_TIMEOUT(rig.bridge.controller().isEmpty(), 5000);
+        QCOMPARE(rig.bridge.receivedOn(mqtt::topics::Kind::Command).last().payload.value("command").toString(),
+                 QStringLiteral("stop"));
+    }
+
     // Passive (Start alone, from the mode panel) goes to the bridge as a
     // command; the Start the link writes before its Stream stays here.
     void passiveGoesToTheBridge()

@@ -2636,6 +2636,10 @@ GPL-3.0-or-later.</translation>
         <source>Typed into “%1”: click the robot diagram or press Esc to drive with the keys</source>
         <translation>In „%1“ getippt: Klicken Sie auf das Roboterbild oder drücken Sie Esc, um mit den Tasten zu fahren</translation>
     </message>
+    <message>
+        <source>%1: the robot runs its own program, in Passive. Space or Stop all ends it.</source>
+        <translation>%1: Der Roboter führt sein eigenes Programm aus, im Passive-Modus. Die Leertaste oder „Alle anhalten“ beendet es.</translation>
+    </message>
 </context>
 <context>
     <name>MarkerActions</name>

@@ -2635,6 +2635,10 @@ GPL-3.0-or-later.</translation>
         <source>Typed into “%1”: click the robot diagram or press Esc to drive with the keys</source>
         <translation>Escrito en «%1»: haga clic en el dibujo del robot o pulse Esc para conducir con las teclas</translation>
     </message>
+    <message>
+        <source>%1: the robot runs its own program, in Passive. Space or Stop all ends it.</source>
+        <translation>%1: el robot ejecuta su propio programa, en modo Passive. La barra espaciadora o «Detener todos» lo termina.</translation>
+    </message>
 </context>
 <context>
     <name>MarkerActions</name>

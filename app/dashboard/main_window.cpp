@@ -4,6 +4,8 @@
 #include "broker_actions.h"
 #include "byte_inspector.h"
 #include "calibration_wizard.h"
+#include "command_catalog.h"
+#include "command_modes.h"
 #include "connection_bar.h"
 #include "connection_request.h"
 #include "dock_layout.h"
@@ -232,8 +234,11 @@ void MainWindow::wireInputs()
     // Every user action goes to the selected robot's model.
     const auto sendTyped = [this](const std::vector<oi::OiCommand> &commands) { session().send(commands); };
     connect(m_inspector, &ByteInspector::sendRequested, this, sendTyped);
-    connect(m_modePanel, &ModePanel::modeRequested, this,
-            [this](oi::Command command, int demo) { session().requestMode(command, demo); });
+    connect(m_modePanel, &ModePanel::modeRequested, this, [this](oi::Command command, int demo) {
+        if (session().requestMode(command, demo) && oi::startsCleaning(command))
+            showMessage(tr("%1: the robot runs its own program, in Passive. Space or Stop all ends it.")
+                            .arg(oitext::fromView(oi::commandSpec(command).title)));
+    });
     connect(m_songs, &SongComposer::sendRequested, this, sendTyped);
     connect(m_leds, &LedEditor::sendRequested, this, sendTyped);
     connect(m_schedule, &ScheduleEditor::sendRequested, this, sendTyped);

@@ -133,6 +133,23 @@ private slots:
                  qPrintable(window.statusText()));
     }
 
+    // Clean on the virtual robot: it runs its own program, and the window
+    // says what is happening and how to end it.
+    void cleanRunsTheRobotsOwnProgram()
+    {
+        MainWindow window;
+        window.show();
+        window.start(oilink::LinkSettings::virtualRobotOf(oi::ProfileId::Create2, oi::ProfileId::Create2));
+        QTRY_COMPARE_WITH_TIMEOUT(window.session().state(), oilink::LinkState::Streaming, 10000);
+        window.room()->moveRobot(window.roomRobot(), {0, 0, 0, 0});
+        QTRY_VERIFY_WITH_TIMEOUT(window.room()->robot(window.roomRobot())->pose.xMm == 0, 10000);
+        QTest::mouseClick(window.modePanel()->button("clean"), Qt::LeftButton);
+        const QString said = window.statusBar()->currentMessage();
+        QVERIFY2(said.contains("its own program") && said.contains("Space"), qPrintable(said));
+        QTRY_VERIFY_WITH_TIMEOUT(window.room()->robot(window.roomRobot())->pose.xMm > 100, 10000);
+        QCOMPARE(window.session().mode().reported(), std::optional(oi::OiMode::Passive));
+    }
+
     void tabbedAwayInspectorDrawsWhenItsTabComesUp()
     {
         MainWindow window;

@@ -250,8 +250,8 @@ void TestRoombaSim::servesARoomAndEndsOnHangUp()
     QTRY_COMPARE_WITH_TIMEOUT(client.state(), QAbstractSocket::UnconnectedState, 5000);
 }
 
-// --report-pose: the robot's true travel and turn, a line each second and
-// at once on Enter, for a calibration with no tape measure.
+// --report-pose: the robot's true travel and turn, a line each second, for
+// a calibration with no tape measure.
 void TestRoombaSim::reportsTheTruePose()
 {
     QProcess process;
@@ -294,10 +294,6 @@ void TestRoombaSim::reportsTheTruePose()
     QVERIFY2(pose.value("turned") >= 200, qPrintable(QString::number(pose.value("turned"))));
     client.write(bytes(encoder.stopMotion()));
     QVERIFY(client.waitForBytesWritten(5000));
-    // Enter asks for a line at once.
-    process.readAll();
-    process.write("\n");
-    QVERIFY(nextPose().contains("turned"));
     stopCleanly(process);
 }
 

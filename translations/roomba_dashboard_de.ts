@@ -1560,6 +1560,10 @@ Klicken wählt diesen Roboter: jedes Dock zeigt ihn</translation>
         <source>Reconnect…</source>
         <translation>Neu verbinden…</translation>
     </message>
+    <message>
+        <source>Another broker…</source>
+        <translation>Anderer Broker…</translation>
+    </message>
 </context>
 <context>
     <name>GamepadInput</name>

@@ -1559,6 +1559,10 @@ Haga clic para seleccionar este robot: todos los paneles lo muestran</translatio
         <source>Reconnect…</source>
         <translation>Reconectar…</translation>
     </message>
+    <message>
+        <source>Another broker…</source>
+        <translation>Otro bróker…</translation>
+    </message>
 </context>
 <context>
     <name>GamepadInput</name>

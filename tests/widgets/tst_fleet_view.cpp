@@ -8,6 +8,7 @@
 
 #include <QDir>
 #include <QSignalSpy>
+#include <QPushButton>
 #include <QTest>
 
 namespace {
@@ -143,6 +144,19 @@ private slots:
         QTest::addRow("30 at 1920x1080") << 30 << QSize(1920, 1080);
         QTest::addRow("1 at 1280x720") << 1 << QSize(1280, 720);
     }
+    // The header's button says what it does now: connect, or change broker.
+    void theConnectButtonSaysWhatItDoes()
+    {
+        FleetView view;
+        auto *button = view.findChild<QPushButton *>("fleetConnect");
+        QVERIFY(button);
+        QCOMPARE(button->text(), QStringLiteral("Connect to broker…"));
+        view.setBrokerText(QStringLiteral("mqtt://pi:1883"), true);
+        QCOMPARE(button->text(), QStringLiteral("Another broker…"));
+        view.setBrokerText(QStringLiteral("No MQTT broker answers at pi:1883. Still trying."), false);
+        QCOMPARE(button->text(), QStringLiteral("Connect to broker…"));
+    }
+
     void tilesFillTheScreen()
     {
         QFETCH(int, robots);

@@ -72,7 +72,8 @@ void FleetView::retranslateUi()
 {
     setAccessibleName(tr("Fleet view"));
     const bool offer = m_brokerText.isEmpty() && !m_reconnectOffer.isEmpty();
-    m_connect->setText(offer ? tr("Reconnect…") : tr("Connect to broker…"));
+    // Connected, the same dialog changes the broker.
+    m_connect->setText(offer ? tr("Reconnect…") : m_connected ? tr("Another broker…") : tr("Connect to broker…"));
     m_broker->setText(!m_brokerText.isEmpty() ? m_brokerText
                       : offer                 ? m_reconnectOffer
                                               : tr("Not connected to a broker"));

@@ -328,12 +328,6 @@ struct VirtualRobot::State {
         stopMotion();
     }
 
-    void driveArc(double velocity, double radiusMm)
-    {
-        const double half = oi::kWheelBaseMm / 2;
-        setWheelTargets(velocity * (radiusMm - half) / radiusMm, velocity * (radiusMm + half) / radiusMm);
-    }
-
     // One tick of the robot's own program (see Cleaning).
     void runCleaning()
     {
@@ -350,7 +344,7 @@ struct VirtualRobot::State {
                 endCleaning();
                 return;
             }
-            driveArc(200, 60 + 15 * seconds);
+            driveWheelsOnArc(200, int(60 + 15 * seconds));
             return;
         }
         if (c.command == Command::SeekDock && world.dock) {
@@ -548,6 +542,12 @@ struct VirtualRobot::State {
     {
         requestedVelocity = std::clamp(velocity, -500, 500); // packet 39's range
         requestedRadius = std::int16_t(std::uint16_t(radius)); // packet 40 as it came: 32768 reads -32768
+        driveWheelsOnArc(velocity, radius);
+    }
+
+    // The wheel speeds of Drive (137): what the robot's own programs drive by too.
+    void driveWheelsOnArc(int velocity, int radius)
+    {
         const double v = std::clamp(velocity, -500, 500);
         const double half = oi::kWheelBaseMm / 2;
         double left = v, right = v;

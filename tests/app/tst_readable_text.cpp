@@ -93,8 +93,8 @@ private slots:
         // reason gives way to it.
         for (const QSize size : {QSize(1280, 720), QSize(1920, 1080)}) {
             view.resize(size);
-            QTest::qWait(0);
-            QCoreApplication::processEvents();
+            QTRY_COMPARE(view.size(), size);
+            QCoreApplication::processEvents(); // the tiles laid out at that size
             for (const FleetTile *t : view.tiles())
                 QVERIFY2(t->shownModeLine().endsWith(QStringLiteral("battery %1 %").arg(*t->values().batteryPercent)),
                          qPrintable(QStringLiteral("%1 at %2×%3: \"%4\"")

@@ -2,6 +2,7 @@
 #include "teleop_controller.h"
 
 #include "command_encoder.h"
+#include "command_modes.h"
 
 namespace {
 QByteArray toBytes(const oi::Bytes &bytes)
@@ -125,9 +126,17 @@ void TeleopController::stopAll()
 {
     // Stop all also ends a Create's script, which would otherwise drive on
     // after the stop (ERRATA 20).
-    const oi::Bytes endScript = oi::CommandEncoder(m_robot.robotProfile()).endScript();
+    const oi::CommandEncoder encoder(m_robot.robotProfile());
+    const oi::Bytes endScript = encoder.endScript();
     if (!endScript.empty())
         m_robot.send(toBytes(endScript));
+    // A robot running its own program (Clean, Spot, Max, Seek Dock) ignores
+    // Drive in Passive: Safe ends the program and lets the stop take effect,
+    // as the bridge does.
+    const RobotMode &mode = m_robot.mode();
+    if (mode.lastAsked() && oi::startsCleaning(*mode.lastAsked()) && mode.reported() == oi::OiMode::Passive)
+        if (const oi::EncodeResult safe = encoder.safe())
+            m_robot.send(toBytes(*safe));
     sendStop(true);
     emit motionStopped();
 }

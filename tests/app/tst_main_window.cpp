@@ -148,6 +148,13 @@ private slots:
         QVERIFY2(said.contains("its own program") && said.contains("Space"), qPrintable(said));
         QTRY_VERIFY_WITH_TIMEOUT(window.room()->robot(window.roomRobot())->pose.xMm > 100, 10000);
         QCOMPARE(window.session().mode().reported(), std::optional(oi::OiMode::Passive));
+        // Stop all ends the program (Drive alone is ignored in Passive): Safe, and still.
+        QTest::keyClick(window.robotDiagram(), Qt::Key_Escape, Qt::ShiftModifier);
+        QTRY_COMPARE_WITH_TIMEOUT(window.session().mode().reported(), std::optional(oi::OiMode::Safe), 10000);
+        const quint64 frames = window.session().snapshotCount();
+        const double x = window.room()->robot(window.roomRobot())->pose.xMm;
+        QTRY_VERIFY_WITH_TIMEOUT(window.session().snapshotCount() > frames + 20, 10000);
+        QCOMPARE(window.room()->robot(window.roomRobot())->pose.xMm, x);
     }
 
     void tabbedAwayInspectorDrawsWhenItsTabComesUp()

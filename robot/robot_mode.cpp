@@ -270,24 +270,39 @@ QString RobotMode::whyNot(oi::Command command) const
     return tr("%1 needs Safe or Full mode: the robot ignores it in Passive. Enter Safe first.").arg(name);
 }
 
+std::uint8_t RobotMode::cliffsRead(const QStringList &goalPackets)
+{
+    std::uint8_t read = 0;
+    for (int i = 0; i < 4; ++i)
+        for (const QString &key : goalPackets)
+            if (key == QLatin1String(kCliffKeys[i]) || key.startsWith(QLatin1String(kCliffKeys[i]) + '_'))
+                read |= std::uint8_t(1u << i);
+    return read;
+}
+
+bool RobotMode::stopExpectedBy(const QStringList &goalPackets) const
+{
+    if (!ignoresMotion() || m_cause != Cause::Safety)
+        return false;
+    if (cliffsRead(goalPackets) & m_cliffs)
+        return true;
+    const bool wheelDropped = m_wheelDropLeft || m_wheelDropRight || m_wheelDropCaster;
+    return wheelDropped && goalPackets.contains(QLatin1String("bumps_wheel_drops"));
+}
+
 QString RobotMode::outOfReach(const QStringList &goalPackets, bool drives) const
 {
     if (!ignoresMotion())
         return {};
     if (m_cause == Cause::Safety && m_cliffs) {
+        const std::uint8_t read = cliffsRead(goalPackets);
         QStringList goalCliffs;
-        bool goalReadsTripped = false;
         const QString names[] = {tr("left"), tr("front left"), tr("front right"), tr("right")};
-        for (int i = 0; i < 4; ++i) {
-            const bool read = std::any_of(goalPackets.cbegin(), goalPackets.cend(), [&](const QString &key) {
-                return key == QLatin1String(kCliffKeys[i]) || key.startsWith(QLatin1String(kCliffKeys[i]) + '_');
-            });
-            if (read)
+        for (int i = 0; i < 4; ++i)
+            if (read & (1u << i))
                 goalCliffs << names[i];
-            goalReadsTripped = goalReadsTripped || (read && (m_cliffs & (1u << i)));
-        }
         // Another cliff sensor stopped the robot before the goal's own reached the edge.
-        if (!goalCliffs.isEmpty() && !goalReadsTripped)
+        if (read && !(read & m_cliffs))
             return tr("Out of reach: %1 The goal needs the %2 cliff sensor to reach the edge first. Carry the robot "
                       "back from the edge, Enter Safe, and drive at the edge head on.")
                 .arg(reason(), goalCliffs.join(tr(" or ")));

@@ -84,9 +84,15 @@ public:
     // needs the robot to drive (`drives`) cannot be met while it ignores
     // motion; a cliff goal cannot, once another cliff sensor stopped it.
     QString outOfReach(const QStringList &goalPackets, bool drives) const;
+    // True when a safety stop came from a sensor a lesson goal reading
+    // `goalPackets` is about (a cliff step's cliff, a wheel drop step's
+    // wheels): the stop is what the step shows, not a fault to undo yet.
+    bool stopExpectedBy(const QStringList &goalPackets) const;
 
 private:
     static QString causeWordsOf(const QStringList &causeKeys);
+    // Bit per cliff sensor (oi::CliffSensor) that a goal reading `goalPackets` reads.
+    static std::uint8_t cliffsRead(const QStringList &goalPackets);
     bool causeStillShows(const oi::SensorSnapshot &frame) const;
 
     std::optional<oi::OiMode> m_reported;

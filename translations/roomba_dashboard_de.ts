@@ -2130,22 +2130,6 @@ Klicken wählt diesen Roboter: jedes Dock zeigt ihn</translation>
         <translation>Die Schalter, die dem Roboter sagen, dass er angestoßen ist oder den Boden verloren hat.</translation>
     </message>
     <message>
-        <source>The bumper is one piece, but behind it sit two switches, one on the left and one on the right. Press the left half of the bumper gently. On the virtual robot, drag it on the map until its left front touches a wall.</source>
-        <translation>Der Stoßfänger ist ein Teil, aber dahinter sitzen zwei Schalter, einer links und einer rechts. Drücke vorsichtig auf die linke Hälfte des Stoßfängers. Beim virtuellen Roboter ziehst du ihn auf der Karte, bis seine linke Vorderseite eine Wand berührt.</translation>
-    </message>
-    <message>
-        <source>Now press the right half of the bumper. Watch packet 7: the left bumper is one bit, the right bumper another.</source>
-        <translation>Drücke jetzt auf die rechte Hälfte des Stoßfängers. Achte auf Paket 7: Der linke Stoßfänger ist ein Bit, der rechte ein anderes.</translation>
-    </message>
-    <message>
-        <source>Press the middle of the bumper, or drive straight into a wall: both switches close at once, and the robot knows the obstacle is straight ahead.</source>
-        <translation>Drücke auf die Mitte des Stoßfängers oder fahre gerade gegen eine Wand: Beide Schalter schließen zugleich, und der Roboter weiß, dass das Hindernis genau vor ihm ist.</translation>
-    </message>
-    <message>
-        <source>Lift the robot a little off the floor. Each drive wheel drops down on its spring and closes a switch. Lift it until both wheels hang. On the virtual robot, double-click it on the map.</source>
-        <translation>Heb den Roboter ein wenig vom Boden. Jedes Antriebsrad senkt sich an seiner Feder ab und schließt einen Schalter. Heb ihn, bis beide Räder hängen. Beim virtuellen Roboter doppelklickst du ihn auf der Karte.</translation>
-    </message>
-    <message>
         <source>Put the robot back down, away from any wall. Every switch opens again: packet 7 reads 0 for a whole second.</source>
         <translation>Setz den Roboter wieder ab, weg von jeder Wand. Alle Schalter öffnen wieder: Paket 7 zeigt eine ganze Sekunde lang 0.</translation>
     </message>
@@ -2160,14 +2144,6 @@ Klicken wählt diesen Roboter: jedes Dock zeigt ihn</translation>
     <message>
         <source>Under the front of the robot, four cliff sensors shine infrared light at the floor and measure how much comes back. On the floor each signal is high. Keep the robot on the floor and watch the front signals stay above 1000 for two seconds.</source>
         <translation>Vorn unter dem Roboter leuchten vier Abgrundsensoren mit Infrarotlicht auf den Boden und messen, wie viel zurückkommt. Auf dem Boden ist jedes Signal hoch. Lass den Roboter auf dem Boden und sieh zu, wie die vorderen Signale zwei Sekunden lang über 1000 bleiben.</translation>
-    </message>
-    <message>
-        <source>Look at the signal behind the flag: over the edge almost no light comes back. Hold the robot a little further over the edge, so that a front signal stays under 500 for half a second.</source>
-        <translation>Sieh dir das Signal hinter dem Flag an: Über der Kante kommt fast kein Licht zurück. Halte den Roboter ein wenig weiter über die Kante, sodass ein vorderes Signal eine halbe Sekunde lang unter 500 bleibt.</translation>
-    </message>
-    <message>
-        <source>Carry the robot back onto the floor, away from the edge. The flags clear and the signals rise again: both front signals above 1000 for one second.</source>
-        <translation>Trag den Roboter zurück auf den Boden, weg von der Kante. Die Flags gehen aus und die Signale steigen wieder: beide vorderen Signale eine Sekunde lang über 1000.</translation>
     </message>
     <message>
         <source>Encoders, distance and angle</source>
@@ -2198,18 +2174,6 @@ Klicken wählt diesen Roboter: jedes Dock zeigt ihn</translation>
         <translation>Unsichtbare Strahlen, die den Roboter nach Hause führen und ihn fernhalten.</translation>
     </message>
     <message>
-        <source>The IR receiver at the front of the robot picks up infrared beams. The dock sends out two buoys, red and green, and a short force field. Place the robot a metre in front of the dock, facing it, until the receiver sees the dock.</source>
-        <translation>Der IR-Empfänger vorn am Roboter empfängt Infrarotstrahlen. Das Dock sendet zwei Bojen aus, rot und grün, und ein kurzes Kraftfeld. Stell den Roboter einen Meter vor das Dock, mit Blick darauf, bis der Empfänger das Dock sieht.</translation>
-    </message>
-    <message>
-        <source>A virtual wall sends a beam that the robot will not cross. Bring the robot into the beam of the virtual wall: the virtual wall flag, packet 13, turns on. In the virtual classroom, the virtual wall stands on the front wall.</source>
-        <translation>Eine virtuelle Wand sendet einen Strahl, den der Roboter nicht überquert. Bring den Roboter in den Strahl der virtuellen Wand: Das Flag für die virtuelle Wand, Paket 13, geht an. Im virtuellen Klassenzimmer steht die virtuelle Wand an der vorderen Wand.</translation>
-    </message>
-    <message>
-        <source>Drive the robot onto the dock, nose first, following the buoys. When its contacts touch the dock, the home base shows up as a charging source.</source>
-        <translation>Fahre den Roboter mit der Nase voran auf das Dock und folge dabei den Bojen. Berühren seine Kontakte das Dock, erscheint die Ladestation als Ladequelle.</translation>
-    </message>
-    <message>
         <source>Light bumpers and wall following</source>
         <translation>Lichtstoßfänger und Wandfolgen</translation>
     </message>
@@ -2218,24 +2182,116 @@ Klicken wählt diesen Roboter: jedes Dock zeigt ihn</translation>
         <translation>Eine Wand sehen, bevor man sie berührt, und neben ihr bleiben.</translation>
     </message>
     <message>
-        <source>Six light bumpers look out through the window of the bumper. Each one shines infrared light and measures what a wall sends back. Move the robot slowly towards a wall, facing it, until the centre left signal is above 1000.</source>
-        <translation>Sechs Lichtstoßfänger schauen durch das Fenster des Stoßfängers. Jeder leuchtet mit Infrarotlicht und misst, was eine Wand zurückwirft. Bewege den Roboter langsam auf eine Wand zu, mit Blick darauf, bis das Signal Mitte links über 1000 liegt.</translation>
-    </message>
-    <message>
         <source>Each light bumper also has an on/off flag in packet 45, set when its signal is strong. Come close enough that the centre left and centre right flags are on together.</source>
         <translation>Jeder Lichtstoßfänger hat auch ein Ein/Aus-Flag in Paket 45, das bei starkem Signal gesetzt wird. Komm so nah heran, dass die Flags Mitte links und Mitte rechts zugleich an sind.</translation>
     </message>
     <message>
-        <source>The wall sensor on the right side looks sideways. Turn the robot so that the wall is on its right and drive along it, a few centimetres away. Keep the wall signal above 30 for three seconds.</source>
-        <translation>Der Wandsensor auf der rechten Seite schaut zur Seite. Dreh den Roboter so, dass die Wand rechts von ihm ist, und fahre ein paar Zentimeter entfernt an ihr entlang. Halte das Wandsignal drei Sekunden lang über 30.</translation>
+        <source>The bumper is one piece, but behind it sit two switches, one on the left and one on the right. Press the left half of the bumper gently. On the virtual robot, put its left front by a wall with the button below, then drive forward (Up arrow) until it touches.</source>
+        <translation>Der Stoßfänger ist ein Teil, aber dahinter sitzen zwei Schalter, einer links und einer rechts. Drücke vorsichtig auf die linke Hälfte des Stoßfängers. Beim virtuellen Roboter stellst du ihn mit dem Knopf unten mit der linken Vorderseite an eine Wand und fährst vorwärts (Pfeil nach oben), bis er sie berührt.</translation>
     </message>
     <message>
-        <source>Come closer to the wall, about four centimetres: the robot decides that a wall is there and sets the wall flag, packet 8. Keep it on for one second.</source>
-        <translation>Komm näher an die Wand, etwa vier Zentimeter: Der Roboter entscheidet, dass dort eine Wand ist, und setzt das Wand-Flag, Paket 8. Halte es eine Sekunde lang an.</translation>
+        <source>Now press the right half of the bumper. On the virtual robot, put its right front by the wall with the button below and drive forward. Watch packet 7: the left bumper is one bit, the right bumper another.</source>
+        <translation>Drücke jetzt auf die rechte Hälfte des Stoßfängers. Beim virtuellen Roboter stellst du ihn mit dem Knopf unten mit der rechten Vorderseite an die Wand und fährst vorwärts. Achte auf Paket 7: Der linke Stoßfänger ist ein Bit, der rechte ein anderes.</translation>
     </message>
     <message>
-        <source>Drive slowly towards the edge of a table or a step, in Safe mode, or lift the front of the robot a little. On the virtual robot, the stage edge is in the front right corner of the classroom. When a front sensor loses the floor, the robot sets its cliff flag and, in Safe mode, stops. A dark rug does the same, though the floor is there: then the signals stay low but well above 0 and no wheel drops. Drive off it in Full mode, or move the robot.</source>
-        <translation>Fahre im Safe-Modus langsam auf die Kante eines Tisches oder einer Stufe zu, oder hebe die Vorderseite des Roboters ein wenig an. Beim virtuellen Roboter liegt die Bühnenkante in der vorderen rechten Ecke des Klassenzimmers. Wenn ein vorderer Sensor den Boden verliert, setzt der Roboter sein Abgrund-Flag und hält im Safe-Modus an. Ein dunkler Teppich bewirkt dasselbe, obwohl der Boden da ist: Dann bleiben die Signale niedrig, aber deutlich über 0, und kein Rad senkt sich ab. Fahre im Full-Modus von ihm herunter oder stelle den Roboter um.</translation>
+        <source>Press the middle of the bumper, or drive straight into a wall: both switches close at once, and the robot knows the obstacle is straight ahead. On the virtual robot, face the wall with the button below, then drive forward.</source>
+        <translation>Drücke auf die Mitte des Stoßfängers oder fahre gerade gegen eine Wand: Beide Schalter schließen zugleich, und der Roboter weiß, dass das Hindernis genau vor ihm ist. Beim virtuellen Roboter richtest du ihn mit dem Knopf unten auf die Wand aus und fährst dann vorwärts.</translation>
+    </message>
+    <message>
+        <source>Lift the robot a little off the floor. Each drive wheel drops down on its spring and closes a switch. Lift it until both wheels hang. In Safe mode the robot drops to Passive when its wheels drop: that is expected here. On the virtual robot, lift it with the button below.</source>
+        <translation>Heb den Roboter ein wenig vom Boden. Jedes Antriebsrad senkt sich an seiner Feder ab und schließt einen Schalter. Heb ihn, bis beide Räder hängen. Im Safe-Modus fällt der Roboter in Passive zurück, wenn sich seine Räder absenken: Das ist hier so gewollt. Beim virtuellen Roboter hebst du ihn mit dem Knopf unten an.</translation>
+    </message>
+    <message>
+        <source>Put its left front by a wall</source>
+        <translation>Linke Vorderseite an eine Wand stellen</translation>
+    </message>
+    <message>
+        <source>Put its right front by the wall</source>
+        <translation>Rechte Vorderseite an die Wand stellen</translation>
+    </message>
+    <message>
+        <source>Face the wall head on</source>
+        <translation>Gerade auf die Wand ausrichten</translation>
+    </message>
+    <message>
+        <source>Lift it off the floor</source>
+        <translation>Vom Boden heben</translation>
+    </message>
+    <message>
+        <source>Put it down in the open</source>
+        <translation>Im Freien absetzen</translation>
+    </message>
+    <message>
+        <source>Drive slowly towards the edge of a table or a step, in Safe mode, or lift the front of the robot a little. On the virtual robot, carry it to the stage edge with the button below, then drive forward (Up arrow). When a front sensor loses the floor, the robot sets its cliff flag and, in Safe mode, stops and drops to Passive. A dark rug does the same, though the floor is there: then the signals stay low but well above 0 and no wheel drops. Drive off it in Full mode, or move the robot.</source>
+        <translation>Fahre im Safe-Modus langsam auf die Kante eines Tisches oder einer Stufe zu, oder hebe die Vorderseite des Roboters ein wenig an. Beim virtuellen Roboter trägst du ihn mit dem Knopf unten an die Bühnenkante und fährst dann vorwärts (Pfeil nach oben). Wenn ein vorderer Sensor den Boden verliert, setzt der Roboter sein Abgrund-Flag, hält im Safe-Modus an und fällt in Passive zurück. Ein dunkler Teppich bewirkt dasselbe, obwohl der Boden da ist: Dann bleiben die Signale niedrig, aber deutlich über 0, und kein Rad senkt sich ab. Fahre im Full-Modus von ihm herunter oder stelle den Roboter um.</translation>
+    </message>
+    <message>
+        <source>Look at the signal behind the flag: over the edge almost no light comes back. The robot stopped, as the yellow line says; leave it in Passive for now and hold it a little further over the edge, so that a front signal stays under 500 for half a second. On the virtual robot, use the button below.</source>
+        <translation>Sieh dir das Signal hinter dem Flag an: Über der Kante kommt fast kein Licht zurück. Der Roboter hat angehalten, wie die gelbe Zeile sagt; lass ihn vorerst in Passive und halte ihn ein wenig weiter über die Kante, sodass ein vorderes Signal eine halbe Sekunde lang unter 500 bleibt. Beim virtuellen Roboter nimmst du den Knopf unten.</translation>
+    </message>
+    <message>
+        <source>Carry the robot back onto the floor, away from the edge. The flags clear and the signals rise again: both front signals above 1000 for one second. On the virtual robot, use the button below.</source>
+        <translation>Trag den Roboter zurück auf den Boden, weg von der Kante. Die Flags gehen aus und die Signale steigen wieder: beide vorderen Signale eine Sekunde lang über 1000. Beim virtuellen Roboter nimmst du den Knopf unten.</translation>
+    </message>
+    <message>
+        <source>Carry it to face the stage edge</source>
+        <translation>Vor die Bühnenkante tragen</translation>
+    </message>
+    <message>
+        <source>Hold it further over the edge</source>
+        <translation>Weiter über die Kante halten</translation>
+    </message>
+    <message>
+        <source>Carry it back onto the floor</source>
+        <translation>Zurück auf den Boden tragen</translation>
+    </message>
+    <message>
+        <source>The IR receiver at the front of the robot picks up infrared beams. The dock sends out two buoys, red and green, and a short force field. Place the robot a metre in front of the dock, facing it, until the receiver sees the dock. On the virtual robot, use the button below.</source>
+        <translation>Der IR-Empfänger vorn am Roboter empfängt Infrarotstrahlen. Das Dock sendet zwei Bojen aus, rot und grün, und ein kurzes Kraftfeld. Stell den Roboter einen Meter vor das Dock, mit Blick darauf, bis der Empfänger das Dock sieht. Beim virtuellen Roboter nimmst du den Knopf unten.</translation>
+    </message>
+    <message>
+        <source>A virtual wall sends a beam that the robot will not cross. Bring the robot into the beam of the virtual wall: the virtual wall flag, packet 13, turns on. In the virtual classroom, the virtual wall stands on the front wall; the button below carries the robot into its beam.</source>
+        <translation>Eine virtuelle Wand sendet einen Strahl, den der Roboter nicht überquert. Bring den Roboter in den Strahl der virtuellen Wand: Das Flag für die virtuelle Wand, Paket 13, geht an. Im virtuellen Klassenzimmer steht die virtuelle Wand an der vorderen Wand; der Knopf unten trägt den Roboter in ihren Strahl.</translation>
+    </message>
+    <message>
+        <source>Drive the robot onto the dock, nose first, following the buoys. When its contacts touch the dock, the home base shows up as a charging source. On the virtual robot, put it in front of the dock with the button below, then drive forward (Up arrow).</source>
+        <translation>Fahre den Roboter mit der Nase voran auf das Dock und folge dabei den Bojen. Berühren seine Kontakte das Dock, erscheint die Ladestation als Ladequelle. Beim virtuellen Roboter stellst du ihn mit dem Knopf unten vor das Dock und fährst dann vorwärts (Pfeil nach oben).</translation>
+    </message>
+    <message>
+        <source>Put it a metre from the dock, facing it</source>
+        <translation>Einen Meter vor das Dock stellen, mit Blick darauf</translation>
+    </message>
+    <message>
+        <source>Carry it into the virtual wall&apos;s beam</source>
+        <translation>In den Strahl der virtuellen Wand tragen</translation>
+    </message>
+    <message>
+        <source>Put it in front of the dock</source>
+        <translation>Vor das Dock stellen</translation>
+    </message>
+    <message>
+        <source>Six light bumpers look out through the window of the bumper. Each one shines infrared light and measures what a wall sends back. Move the robot slowly towards a wall, facing it, until the centre left signal is above 1000. On the virtual robot, face a wall with the button below, then drive forward (Up arrow).</source>
+        <translation>Sechs Lichtstoßfänger schauen durch das Fenster des Stoßfängers. Jeder leuchtet mit Infrarotlicht und misst, was eine Wand zurückwirft. Bewege den Roboter langsam auf eine Wand zu, mit Blick darauf, bis das Signal Mitte links über 1000 liegt. Beim virtuellen Roboter richtest du ihn mit dem Knopf unten auf eine Wand aus und fährst dann vorwärts (Pfeil nach oben).</translation>
+    </message>
+    <message>
+        <source>The wall sensor on the right side looks sideways. Turn the robot so that the wall is on its right and drive along it, a few centimetres away. Keep the wall signal above 30 for three seconds. On the virtual robot, put it beside the wall with the button below, then drive forward.</source>
+        <translation>Der Wandsensor auf der rechten Seite schaut zur Seite. Dreh den Roboter so, dass die Wand rechts von ihm ist, und fahre ein paar Zentimeter entfernt an ihr entlang. Halte das Wandsignal drei Sekunden lang über 30. Beim virtuellen Roboter stellst du ihn mit dem Knopf unten neben die Wand und fährst dann vorwärts.</translation>
+    </message>
+    <message>
+        <source>Come closer to the wall, about four centimetres: the robot decides that a wall is there and sets the wall flag, packet 8. Keep it on for one second. On the virtual robot, use the button below.</source>
+        <translation>Komm näher an die Wand, etwa vier Zentimeter: Der Roboter entscheidet, dass dort eine Wand ist, und setzt das Wand-Flag, Paket 8. Halte es eine Sekunde lang an. Beim virtuellen Roboter nimmst du den Knopf unten.</translation>
+    </message>
+    <message>
+        <source>Face it to a wall</source>
+        <translation>Auf eine Wand ausrichten</translation>
+    </message>
+    <message>
+        <source>Put it beside a wall, on its right</source>
+        <translation>Neben eine Wand stellen, rechts von ihm</translation>
+    </message>
+    <message>
+        <source>Carry it 4 cm from the wall</source>
+        <translation>4 cm vor die Wand tragen</translation>
     </message>
 </context>
 <context>
@@ -2343,6 +2399,22 @@ Klicken wählt diesen Roboter: jedes Dock zeigt ihn</translation>
     <message>
         <source>%1: larger than a lesson file can be (1 MB)</source>
         <translation>%1: größer, als eine Lektionsdatei sein kann (1 MB)</translation>
+    </message>
+    <message>
+        <source>needs &quot;place&quot; or &quot;forward_mm&quot;, not both</source>
+        <translation>braucht &quot;place&quot; oder &quot;forward_mm&quot;, nicht beides</translation>
+    </message>
+    <message>
+        <source>needs &quot;place&quot;, &quot;forward_mm&quot; or &quot;lift&quot;</source>
+        <translation>braucht &quot;place&quot;, &quot;forward_mm&quot; oder &quot;lift&quot;</translation>
+    </message>
+    <message>
+        <source>must be [x_mm, y_mm, heading_degrees], x and y from -%1 to %1, the heading from -360 to 360</source>
+        <translation>muss [x_mm, y_mm, richtung_grad] sein, x und y von -%1 bis %1, die Richtung von -360 bis 360</translation>
+    </message>
+    <message>
+        <source>must be true or false</source>
+        <translation>muss true oder false sein</translation>
     </message>
 </context>
 <context>
@@ -2501,6 +2573,10 @@ Klicken wählt diesen Roboter: jedes Dock zeigt ihn</translation>
     <message>
         <source>Done · next in %1 s</source>
         <translation>Erfüllt · weiter in %1 s</translation>
+    </message>
+    <message>
+        <source>On the virtual robot: %1</source>
+        <translation>Beim virtuellen Roboter: %1</translation>
     </message>
 </context>
 <context>
@@ -3523,6 +3599,10 @@ GPL-3.0-or-later.</translation>
     <message>
         <source>Enter Safe (Enter)</source>
         <translation>Safe aktivieren (Eingabe)</translation>
+    </message>
+    <message>
+        <source>This step expects it: follow the step below.</source>
+        <translation>Dieser Schritt erwartet das: Folge dem Schritt unten.</translation>
     </message>
 </context>
 <context>

@@ -2129,22 +2129,6 @@ Haga clic para seleccionar este robot: todos los paneles lo muestran</translatio
         <translation>Los interruptores que avisan al robot de que ha chocado o ha perdido el suelo.</translation>
     </message>
     <message>
-        <source>The bumper is one piece, but behind it sit two switches, one on the left and one on the right. Press the left half of the bumper gently. On the virtual robot, drag it on the map until its left front touches a wall.</source>
-        <translation>El parachoques es una sola pieza, pero detrás hay dos interruptores, uno a la izquierda y otro a la derecha. Pulsa con suavidad la mitad izquierda del parachoques. Con el robot virtual, arrástralo en el mapa hasta que su parte delantera izquierda toque una pared.</translation>
-    </message>
-    <message>
-        <source>Now press the right half of the bumper. Watch packet 7: the left bumper is one bit, the right bumper another.</source>
-        <translation>Ahora pulsa la mitad derecha del parachoques. Observa el paquete 7: el parachoques izquierdo es un bit y el derecho, otro.</translation>
-    </message>
-    <message>
-        <source>Press the middle of the bumper, or drive straight into a wall: both switches close at once, and the robot knows the obstacle is straight ahead.</source>
-        <translation>Pulsa el centro del parachoques o conduce recto contra una pared: los dos interruptores se cierran a la vez y el robot sabe que el obstáculo está justo delante.</translation>
-    </message>
-    <message>
-        <source>Lift the robot a little off the floor. Each drive wheel drops down on its spring and closes a switch. Lift it until both wheels hang. On the virtual robot, double-click it on the map.</source>
-        <translation>Levanta un poco el robot del suelo. Cada rueda motriz baja con su muelle y cierra un interruptor. Levántalo hasta que cuelguen las dos ruedas. Con el robot virtual, haz doble clic sobre él en el mapa.</translation>
-    </message>
-    <message>
         <source>Put the robot back down, away from any wall. Every switch opens again: packet 7 reads 0 for a whole second.</source>
         <translation>Vuelve a dejar el robot en el suelo, lejos de las paredes. Todos los interruptores se abren de nuevo: el paquete 7 marca 0 durante un segundo entero.</translation>
     </message>
@@ -2159,14 +2143,6 @@ Haga clic para seleccionar este robot: todos los paneles lo muestran</translatio
     <message>
         <source>Under the front of the robot, four cliff sensors shine infrared light at the floor and measure how much comes back. On the floor each signal is high. Keep the robot on the floor and watch the front signals stay above 1000 for two seconds.</source>
         <translation>Bajo la parte delantera del robot, cuatro sensores de desnivel iluminan el suelo con luz infrarroja y miden cuánta vuelve. Sobre el suelo cada señal es alta. Deja el robot en el suelo y observa cómo las señales delanteras se mantienen por encima de 1000 durante dos segundos.</translation>
-    </message>
-    <message>
-        <source>Look at the signal behind the flag: over the edge almost no light comes back. Hold the robot a little further over the edge, so that a front signal stays under 500 for half a second.</source>
-        <translation>Mira la señal que hay detrás del indicador: sobre el borde casi no vuelve luz. Sostén el robot un poco más allá del borde, de modo que una señal delantera se mantenga por debajo de 500 durante medio segundo.</translation>
-    </message>
-    <message>
-        <source>Carry the robot back onto the floor, away from the edge. The flags clear and the signals rise again: both front signals above 1000 for one second.</source>
-        <translation>Lleva el robot de vuelta al suelo, lejos del borde. Los indicadores se apagan y las señales vuelven a subir: las dos señales delanteras por encima de 1000 durante un segundo.</translation>
     </message>
     <message>
         <source>Encoders, distance and angle</source>
@@ -2197,18 +2173,6 @@ Haga clic para seleccionar este robot: todos los paneles lo muestran</translatio
         <translation>Haces invisibles que llevan al robot a casa y lo mantienen fuera.</translation>
     </message>
     <message>
-        <source>The IR receiver at the front of the robot picks up infrared beams. The dock sends out two buoys, red and green, and a short force field. Place the robot a metre in front of the dock, facing it, until the receiver sees the dock.</source>
-        <translation>El receptor IR de la parte delantera del robot capta haces infrarrojos. La base emite dos boyas, roja y verde, y un campo de fuerza corto. Coloca el robot a un metro delante de la base, mirando hacia ella, hasta que el receptor vea la base.</translation>
-    </message>
-    <message>
-        <source>A virtual wall sends a beam that the robot will not cross. Bring the robot into the beam of the virtual wall: the virtual wall flag, packet 13, turns on. In the virtual classroom, the virtual wall stands on the front wall.</source>
-        <translation>Una pared virtual emite un haz que el robot no cruza. Lleva el robot al haz de la pared virtual: se activa el indicador de pared virtual, el paquete 13. En el aula virtual, la pared virtual está en la pared delantera.</translation>
-    </message>
-    <message>
-        <source>Drive the robot onto the dock, nose first, following the buoys. When its contacts touch the dock, the home base shows up as a charging source.</source>
-        <translation>Conduce el robot hasta la base, de frente, siguiendo las boyas. Cuando sus contactos tocan la base, la base de carga aparece como fuente de carga.</translation>
-    </message>
-    <message>
         <source>Light bumpers and wall following</source>
         <translation>Parachoques de luz y seguimiento de paredes</translation>
     </message>
@@ -2217,24 +2181,116 @@ Haga clic para seleccionar este robot: todos los paneles lo muestran</translatio
         <translation>Ver una pared antes de tocarla y mantenerse a su lado.</translation>
     </message>
     <message>
-        <source>Six light bumpers look out through the window of the bumper. Each one shines infrared light and measures what a wall sends back. Move the robot slowly towards a wall, facing it, until the centre left signal is above 1000.</source>
-        <translation>Seis parachoques de luz miran a través de la ventana del parachoques. Cada uno emite luz infrarroja y mide lo que devuelve una pared. Acerca el robot despacio a una pared, mirando hacia ella, hasta que la señal central izquierda supere 1000.</translation>
-    </message>
-    <message>
         <source>Each light bumper also has an on/off flag in packet 45, set when its signal is strong. Come close enough that the centre left and centre right flags are on together.</source>
         <translation>Cada parachoques de luz tiene además un indicador de encendido y apagado en el paquete 45, que se activa cuando su señal es fuerte. Acércate lo suficiente para que los indicadores central izquierdo y central derecho estén activos a la vez.</translation>
     </message>
     <message>
-        <source>The wall sensor on the right side looks sideways. Turn the robot so that the wall is on its right and drive along it, a few centimetres away. Keep the wall signal above 30 for three seconds.</source>
-        <translation>El sensor de pared del lado derecho mira hacia un lado. Gira el robot para que la pared quede a su derecha y conduce a lo largo de ella, a unos centímetros. Mantén la señal de pared por encima de 30 durante tres segundos.</translation>
+        <source>The bumper is one piece, but behind it sit two switches, one on the left and one on the right. Press the left half of the bumper gently. On the virtual robot, put its left front by a wall with the button below, then drive forward (Up arrow) until it touches.</source>
+        <translation>El parachoques es una sola pieza, pero detrás hay dos interruptores, uno a la izquierda y otro a la derecha. Pulsa con suavidad la mitad izquierda del parachoques. Con el robot virtual, ponlo con su parte delantera izquierda junto a una pared con el botón de abajo y conduce hacia delante (flecha arriba) hasta que la toque.</translation>
     </message>
     <message>
-        <source>Come closer to the wall, about four centimetres: the robot decides that a wall is there and sets the wall flag, packet 8. Keep it on for one second.</source>
-        <translation>Acércate más a la pared, unos cuatro centímetros: el robot decide que hay una pared y activa el indicador de pared, el paquete 8. Mantenlo activo durante un segundo.</translation>
+        <source>Now press the right half of the bumper. On the virtual robot, put its right front by the wall with the button below and drive forward. Watch packet 7: the left bumper is one bit, the right bumper another.</source>
+        <translation>Ahora pulsa la mitad derecha del parachoques. Con el robot virtual, ponlo con su parte delantera derecha junto a la pared con el botón de abajo y conduce hacia delante. Observa el paquete 7: el parachoques izquierdo es un bit y el derecho, otro.</translation>
     </message>
     <message>
-        <source>Drive slowly towards the edge of a table or a step, in Safe mode, or lift the front of the robot a little. On the virtual robot, the stage edge is in the front right corner of the classroom. When a front sensor loses the floor, the robot sets its cliff flag and, in Safe mode, stops. A dark rug does the same, though the floor is there: then the signals stay low but well above 0 and no wheel drops. Drive off it in Full mode, or move the robot.</source>
-        <translation>Conduce despacio hacia el borde de una mesa o un escalón, en modo Safe, o levanta un poco la parte delantera del robot. En el robot virtual, el borde del escenario está en la esquina delantera derecha del aula. Cuando un sensor delantero pierde el suelo, el robot activa su indicador de desnivel y, en modo Safe, se detiene. Una alfombra oscura hace lo mismo, aunque el suelo esté ahí: entonces las señales se quedan bajas pero muy por encima de 0 y ninguna rueda cae. Sal de ella en modo Full o mueve el robot.</translation>
+        <source>Press the middle of the bumper, or drive straight into a wall: both switches close at once, and the robot knows the obstacle is straight ahead. On the virtual robot, face the wall with the button below, then drive forward.</source>
+        <translation>Pulsa el centro del parachoques o conduce recto contra una pared: los dos interruptores se cierran a la vez y el robot sabe que el obstáculo está justo delante. Con el robot virtual, ponlo frente a la pared con el botón de abajo y conduce hacia delante.</translation>
+    </message>
+    <message>
+        <source>Lift the robot a little off the floor. Each drive wheel drops down on its spring and closes a switch. Lift it until both wheels hang. In Safe mode the robot drops to Passive when its wheels drop: that is expected here. On the virtual robot, lift it with the button below.</source>
+        <translation>Levanta un poco el robot del suelo. Cada rueda motriz baja con su muelle y cierra un interruptor. Levántalo hasta que cuelguen las dos ruedas. En modo Safe el robot pasa a Passive cuando caen sus ruedas: aquí es lo esperado. Con el robot virtual, levántalo con el botón de abajo.</translation>
+    </message>
+    <message>
+        <source>Put its left front by a wall</source>
+        <translation>Poner su frente izquierdo junto a una pared</translation>
+    </message>
+    <message>
+        <source>Put its right front by the wall</source>
+        <translation>Poner su frente derecho junto a la pared</translation>
+    </message>
+    <message>
+        <source>Face the wall head on</source>
+        <translation>Ponerlo de frente a la pared</translation>
+    </message>
+    <message>
+        <source>Lift it off the floor</source>
+        <translation>Levantarlo del suelo</translation>
+    </message>
+    <message>
+        <source>Put it down in the open</source>
+        <translation>Dejarlo en un sitio despejado</translation>
+    </message>
+    <message>
+        <source>Drive slowly towards the edge of a table or a step, in Safe mode, or lift the front of the robot a little. On the virtual robot, carry it to the stage edge with the button below, then drive forward (Up arrow). When a front sensor loses the floor, the robot sets its cliff flag and, in Safe mode, stops and drops to Passive. A dark rug does the same, though the floor is there: then the signals stay low but well above 0 and no wheel drops. Drive off it in Full mode, or move the robot.</source>
+        <translation>Conduce despacio hacia el borde de una mesa o un escalón, en modo Safe, o levanta un poco la parte delantera del robot. Con el robot virtual, llévalo al borde del escenario con el botón de abajo y conduce hacia delante (flecha arriba). Cuando un sensor delantero pierde el suelo, el robot activa su indicador de desnivel y, en modo Safe, se detiene y pasa a Passive. Una alfombra oscura hace lo mismo, aunque el suelo esté ahí: entonces las señales se quedan bajas pero muy por encima de 0 y ninguna rueda cae. Sal de ella en modo Full o mueve el robot.</translation>
+    </message>
+    <message>
+        <source>Look at the signal behind the flag: over the edge almost no light comes back. The robot stopped, as the yellow line says; leave it in Passive for now and hold it a little further over the edge, so that a front signal stays under 500 for half a second. On the virtual robot, use the button below.</source>
+        <translation>Mira la señal que hay detrás del indicador: sobre el borde casi no vuelve luz. El robot se ha detenido, como dice la línea amarilla; déjalo en Passive por ahora y sostenlo un poco más allá del borde, de modo que una señal delantera se mantenga por debajo de 500 durante medio segundo. Con el robot virtual, usa el botón de abajo.</translation>
+    </message>
+    <message>
+        <source>Carry the robot back onto the floor, away from the edge. The flags clear and the signals rise again: both front signals above 1000 for one second. On the virtual robot, use the button below.</source>
+        <translation>Lleva el robot de vuelta al suelo, lejos del borde. Los indicadores se apagan y las señales vuelven a subir: las dos señales delanteras por encima de 1000 durante un segundo. Con el robot virtual, usa el botón de abajo.</translation>
+    </message>
+    <message>
+        <source>Carry it to face the stage edge</source>
+        <translation>Llevarlo frente al borde del escenario</translation>
+    </message>
+    <message>
+        <source>Hold it further over the edge</source>
+        <translation>Sostenerlo más allá del borde</translation>
+    </message>
+    <message>
+        <source>Carry it back onto the floor</source>
+        <translation>Llevarlo de vuelta al suelo</translation>
+    </message>
+    <message>
+        <source>The IR receiver at the front of the robot picks up infrared beams. The dock sends out two buoys, red and green, and a short force field. Place the robot a metre in front of the dock, facing it, until the receiver sees the dock. On the virtual robot, use the button below.</source>
+        <translation>El receptor IR de la parte delantera del robot capta haces infrarrojos. La base emite dos boyas, roja y verde, y un campo de fuerza corto. Coloca el robot a un metro delante de la base, mirando hacia ella, hasta que el receptor vea la base. Con el robot virtual, usa el botón de abajo.</translation>
+    </message>
+    <message>
+        <source>A virtual wall sends a beam that the robot will not cross. Bring the robot into the beam of the virtual wall: the virtual wall flag, packet 13, turns on. In the virtual classroom, the virtual wall stands on the front wall; the button below carries the robot into its beam.</source>
+        <translation>Una pared virtual emite un haz que el robot no cruza. Lleva el robot al haz de la pared virtual: se activa el indicador de pared virtual, el paquete 13. En el aula virtual, la pared virtual está en la pared delantera; el botón de abajo lleva el robot a su haz.</translation>
+    </message>
+    <message>
+        <source>Drive the robot onto the dock, nose first, following the buoys. When its contacts touch the dock, the home base shows up as a charging source. On the virtual robot, put it in front of the dock with the button below, then drive forward (Up arrow).</source>
+        <translation>Conduce el robot hasta la base, de frente, siguiendo las boyas. Cuando sus contactos tocan la base, la base de carga aparece como fuente de carga. Con el robot virtual, ponlo delante de la base con el botón de abajo y conduce hacia delante (flecha arriba).</translation>
+    </message>
+    <message>
+        <source>Put it a metre from the dock, facing it</source>
+        <translation>Ponerlo a un metro de la base, mirando hacia ella</translation>
+    </message>
+    <message>
+        <source>Carry it into the virtual wall&apos;s beam</source>
+        <translation>Llevarlo al haz de la pared virtual</translation>
+    </message>
+    <message>
+        <source>Put it in front of the dock</source>
+        <translation>Ponerlo delante de la base</translation>
+    </message>
+    <message>
+        <source>Six light bumpers look out through the window of the bumper. Each one shines infrared light and measures what a wall sends back. Move the robot slowly towards a wall, facing it, until the centre left signal is above 1000. On the virtual robot, face a wall with the button below, then drive forward (Up arrow).</source>
+        <translation>Seis parachoques de luz miran a través de la ventana del parachoques. Cada uno emite luz infrarroja y mide lo que devuelve una pared. Acerca el robot despacio a una pared, mirando hacia ella, hasta que la señal central izquierda supere 1000. Con el robot virtual, ponlo frente a una pared con el botón de abajo y conduce hacia delante (flecha arriba).</translation>
+    </message>
+    <message>
+        <source>The wall sensor on the right side looks sideways. Turn the robot so that the wall is on its right and drive along it, a few centimetres away. Keep the wall signal above 30 for three seconds. On the virtual robot, put it beside the wall with the button below, then drive forward.</source>
+        <translation>El sensor de pared del lado derecho mira hacia un lado. Gira el robot para que la pared quede a su derecha y conduce a lo largo de ella, a unos centímetros. Mantén la señal de pared por encima de 30 durante tres segundos. Con el robot virtual, ponlo junto a la pared con el botón de abajo y conduce hacia delante.</translation>
+    </message>
+    <message>
+        <source>Come closer to the wall, about four centimetres: the robot decides that a wall is there and sets the wall flag, packet 8. Keep it on for one second. On the virtual robot, use the button below.</source>
+        <translation>Acércate más a la pared, unos cuatro centímetros: el robot decide que hay una pared y activa el indicador de pared, el paquete 8. Mantenlo activo durante un segundo. Con el robot virtual, usa el botón de abajo.</translation>
+    </message>
+    <message>
+        <source>Face it to a wall</source>
+        <translation>Ponerlo frente a una pared</translation>
+    </message>
+    <message>
+        <source>Put it beside a wall, on its right</source>
+        <translation>Ponerlo junto a una pared, a su derecha</translation>
+    </message>
+    <message>
+        <source>Carry it 4 cm from the wall</source>
+        <translation>Llevarlo a 4 cm de la pared</translation>
     </message>
 </context>
 <context>
@@ -2342,6 +2398,22 @@ Haga clic para seleccionar este robot: todos los paneles lo muestran</translatio
     <message>
         <source>%1: larger than a lesson file can be (1 MB)</source>
         <translation>%1: más grande de lo que puede ser un archivo de lección (1 MB)</translation>
+    </message>
+    <message>
+        <source>needs &quot;place&quot; or &quot;forward_mm&quot;, not both</source>
+        <translation>necesita &quot;place&quot; o &quot;forward_mm&quot;, no ambos</translation>
+    </message>
+    <message>
+        <source>needs &quot;place&quot;, &quot;forward_mm&quot; or &quot;lift&quot;</source>
+        <translation>necesita &quot;place&quot;, &quot;forward_mm&quot; o &quot;lift&quot;</translation>
+    </message>
+    <message>
+        <source>must be [x_mm, y_mm, heading_degrees], x and y from -%1 to %1, the heading from -360 to 360</source>
+        <translation>debe ser [x_mm, y_mm, rumbo_grados], x e y de -%1 a %1, el rumbo de -360 a 360</translation>
+    </message>
+    <message>
+        <source>must be true or false</source>
+        <translation>debe ser true o false</translation>
     </message>
 </context>
 <context>
@@ -2500,6 +2572,10 @@ Haga clic para seleccionar este robot: todos los paneles lo muestran</translatio
     <message>
         <source>Done · next in %1 s</source>
         <translation>Hecho · siguiente en %1 s</translation>
+    </message>
+    <message>
+        <source>On the virtual robot: %1</source>
+        <translation>En el robot virtual: %1</translation>
     </message>
 </context>
 <context>
@@ -3522,6 +3598,10 @@ GPL-3.0-or-later.</translation>
     <message>
         <source>Enter Safe (Enter)</source>
         <translation>Pasar a Safe (Intro)</translation>
+    </message>
+    <message>
+        <source>This step expects it: follow the step below.</source>
+        <translation>Este paso lo espera: sigue el paso de abajo.</translation>
     </message>
 </context>
 <context>

@@ -19,6 +19,7 @@
 #include "language_menu.h"
 #include "led_editor.h"
 #include "lesson_panel.h"
+#include "lesson_step_view.h"
 #include "marker_actions.h"
 #include "marker_list.h"
 #include "mode_panel.h"
@@ -251,6 +252,10 @@ void MainWindow::wireInputs()
             [this](int robot, const oi::Pose &pose) { m_room->room()->moveRobot(robot, pose); });
     connect(m_map, &OdometryMap::robotLiftRequested, this,
             [this](int robot, bool lifted) { m_room->room()->setLifted(robot, lifted); });
+    // A lesson step's button does what a hand would, from the panel or the projector.
+    for (LessonStepView *step : {m_lessons->stepView(), m_projector->view()->stepView()})
+        connect(step, &LessonStepView::placementRequested, this,
+                [this](const LessonPlacement &placement) { m_room->carry(&session(), placement); });
     // The room's floor edited on the map, a step Undo can take back.
     connect(m_map, &OdometryMap::worldEditRequested, m_roomActions, &RoomActions::edit);
     m_map->addActions({m_roomActions->undoAction(), m_roomActions->redoAction()});

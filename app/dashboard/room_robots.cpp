@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "room_robots.h"
 
+#include "lesson.h"
 #include "network_transport.h"
 #include "odometry_map.h"
 #include "robot_fleet.h"
@@ -60,6 +61,18 @@ std::optional<oi::Pose> RoomRobots::truePose(const RobotSession *robot) const
         return std::nullopt;
     const auto where = m_room->robot(place);
     return where ? std::optional(where->pose) : std::nullopt;
+}
+
+void RoomRobots::carry(const RobotSession *robot, const LessonPlacement &placement)
+{
+    const sim::RobotId place = placeOf(robot);
+    const auto where = place < 0 ? std::nullopt : m_room->robot(place);
+    if (!where)
+        return;
+    if (placement.place || placement.forwardMm != 0)
+        m_room->moveRobot(place, lesson::placedPose(placement, where->pose));
+    if (placement.lift)
+        m_room->setLifted(place, *placement.lift);
 }
 
 void RoomRobots::showOn(OdometryMap &map, const RobotSession *selectedRobot)

@@ -14,6 +14,7 @@
 #include <optional>
 
 class FleetDirectory;
+struct LessonPlacement;
 class OdometryMap;
 class RobotFleet;
 class RobotSession;
@@ -36,6 +37,9 @@ public:
     sim::RobotId placeOf(const RobotSession *robot) const;
     // Where a virtual robot truly is in the room; nullopt for any other.
     std::optional<oi::Pose> truePose(const RobotSession *robot) const;
+    // A lesson step's hand on a virtual robot: carried, held or lifted as
+    // it says. Nothing for a robot that is not virtual.
+    void carry(const RobotSession *robot, const LessonPlacement &placement);
     // The floor and every virtual robot in it, in its robot's colour, the
     // selected one highlighted; nothing for a robot that is not virtual.
     void showOn(OdometryMap &map, const RobotSession *selected);

@@ -11,7 +11,8 @@ here = pathlib.Path(__file__).resolve().parent
 texts = []
 for path in sorted(here.glob("*.json")):
     lesson = json.loads(path.read_text(encoding="utf-8"))
-    for text in [lesson["title"], lesson.get("summary")] + [s["text"] for s in lesson["steps"]]:
+    labels = [s["virtual_robot"]["label"] for s in lesson["steps"] if "virtual_robot" in s]
+    for text in [lesson["title"], lesson.get("summary")] + [s["text"] for s in lesson["steps"]] + labels:
         if text and text.strip() not in texts:
             texts.append(text.strip())
 

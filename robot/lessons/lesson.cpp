@@ -2,6 +2,7 @@
 #include "lesson.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace {
 
@@ -86,6 +87,14 @@ bool goalDrives(const LessonGoal &goal)
     if (goal.kind == LessonGoal::Kind::Drive || goal.kind == LessonGoal::Kind::Turn)
         return true;
     return std::any_of(goal.goals.cbegin(), goal.goals.cend(), goalDrives);
+}
+
+oi::Pose placedPose(const LessonPlacement &placement, const oi::Pose &now)
+{
+    oi::Pose pose = placement.place.value_or(now);
+    pose.xMm += placement.forwardMm * std::cos(pose.thetaRad);
+    pose.yMm += placement.forwardMm * std::sin(pose.thetaRad);
+    return pose;
 }
 
 } // namespace lesson

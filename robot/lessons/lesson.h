@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "odometry.h"
 #include "robot_profile.h"
 
 #include <QList>
@@ -36,6 +37,16 @@ struct LessonGoal {
     double holdSeconds = 0;
 };
 
+// What a hand does to the virtual robot for a step whose goal needs it
+// carried, held or lifted: one button beside the step, wherever it shows.
+// Positions are the virtual classroom's (World::classroom()).
+struct LessonPlacement {
+    QString label;                 // the button's words: "Hold it further over the edge"
+    std::optional<oi::Pose> place; // put it down here (heading in radians)
+    double forwardMm = 0;          // or carry it this far along its heading
+    std::optional<bool> lift;      // hold it up (its wheels drop) or put it down
+};
+
 // One step: what the class reads, what it looks at, and what it must do.
 struct LessonStep {
     QString text;
@@ -43,6 +54,7 @@ struct LessonStep {
     QStringList plot;      // packet keys, plotted together
     QStringList readout;   // packet keys or pose readouts (kPoseReadouts)
     LessonGoal goal;
+    std::optional<LessonPlacement> virtualRobot;
 };
 
 struct Lesson {
@@ -77,5 +89,7 @@ std::uint8_t bitMask(const oi::RobotProfile &profile, int packetId, const QStrin
 QStringList goalPackets(const LessonGoal &goal);
 // True when the goal, or a part of it, asks the robot to drive or turn.
 bool goalDrives(const LessonGoal &goal);
+// Where a placement puts a robot that stands at `now`.
+oi::Pose placedPose(const LessonPlacement &placement, const oi::Pose &now);
 
 } // namespace lesson

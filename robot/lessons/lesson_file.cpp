@@ -7,6 +7,7 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QtMath>
 
 #include <cmath>
 
@@ -16,6 +17,9 @@ constexpr int kVersion = 1;
 const QString kFormat = QStringLiteral("roomba-lesson");
 constexpr qsizetype kMaxSteps = 50;
 constexpr double kMaxHoldSeconds = 600;
+// A room is a few metres; a hand carries a robot a short way.
+constexpr double kMaxPlaceMm = 100000;
+constexpr double kMaxCarryMm = 2000;
 
 // The messages' context for translators.
 struct LessonFile {
@@ -86,7 +90,7 @@ public:
 private:
     bool readStep(const QJsonObject &o, const QString &where, LessonStep &step)
     {
-        if (!allowOnly(o, {"text", "highlight", "plot", "readout", "goal"}, where))
+        if (!allowOnly(o, {"text", "highlight", "plot", "readout", "goal", "virtual_robot"}, where))
             return false;
         if (!text(o, "text", where, step.text))
             return false;
@@ -111,9 +115,52 @@ private:
                 if (!lesson::isPacketKey(key) && !(poseAllowed && lesson::poseReadouts().contains(key)))
                     return fail(where, field, LessonFile::tr("%1 is not a packet key").arg(quoted(key)));
         }
+        if (o.contains("virtual_robot")) {
+            if (!o.value("virtual_robot").isObject())
+                return fail(where, "virtual_robot", LessonFile::tr("must be an object"));
+            LessonPlacement placement;
+            if (!readPlacement(o.value("virtual_robot").toObject(), where, placement))
+                return false;
+            step.virtualRobot = placement;
+        }
         if (!o.value("goal").isObject())
             return fail(where, "goal", LessonFile::tr("is missing or not an object"));
         return readGoal(o.value("goal").toObject(), where, "goal", step.goal);
+    }
+
+    bool readPlacement(const QJsonObject &o, const QString &where, LessonPlacement &placement)
+    {
+        const QString field = QStringLiteral("virtual_robot");
+        if (!allowOnly(o, {"label", "place", "forward_mm", "lift"}, where, field))
+            return false;
+        if (!text(o, "label", where, placement.label, field))
+            return false;
+        if (o.contains("place") && o.contains("forward_mm"))
+            return fail(where, field, LessonFile::tr("needs \"place\" or \"forward_mm\", not both"));
+        if (!o.contains("place") && !o.contains("forward_mm") && !o.contains("lift"))
+            return fail(where, field, LessonFile::tr("needs \"place\", \"forward_mm\" or \"lift\""));
+        if (o.contains("place")) {
+            const QJsonArray at = o.value("place").toArray();
+            const auto inRange = [](const QJsonValue &v, double limit) {
+                return v.isDouble() && std::isfinite(v.toDouble()) && std::abs(v.toDouble()) <= limit;
+            };
+            if (!o.value("place").isArray() || at.size() != 3 || !inRange(at[0], kMaxPlaceMm)
+                || !inRange(at[1], kMaxPlaceMm) || !inRange(at[2], 360))
+                return fail(where, field + ".place",
+                            LessonFile::tr("must be [x_mm, y_mm, heading_degrees], x and y from -%1 to %1, the "
+                                           "heading from -360 to 360")
+                                .arg(kMaxPlaceMm));
+            placement.place = oi::Pose{at[0].toDouble(), at[1].toDouble(), qDegreesToRadians(at[2].toDouble()), 0};
+        }
+        if (o.contains("forward_mm")
+            && !number(o, "forward_mm", where, field, -kMaxCarryMm, kMaxCarryMm, placement.forwardMm))
+            return false;
+        if (o.contains("lift")) {
+            if (!o.value("lift").isBool())
+                return fail(where, field + ".lift", LessonFile::tr("must be true or false"));
+            placement.lift = o.value("lift").toBool();
+        }
+        return true;
     }
 
     bool readGoal(const QJsonObject &o, const QString &where, const QString &field, LessonGoal &goal)

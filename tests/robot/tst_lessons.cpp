@@ -365,6 +365,20 @@ private slots:
         QTest::newRow("unknown field") << step(R"({"turn_degrees":90})", R"("txet":"c",)") << "step 2, \"txet\"";
         QTest::newRow("nested") << step(R"({"any":[{"packet":"wall","equals":1},{"packet":"wall","ir":"dock"}]})")
                                 << "step 2, \"goal.any[1].ir\"";
+        QTest::newRow("placement without label")
+            << step(R"({"drive_mm":100})", R"("virtual_robot":{"forward_mm":40},)") << "step 2, \"virtual_robot.label\"";
+        QTest::newRow("placement doing nothing")
+            << step(R"({"drive_mm":100})", R"("virtual_robot":{"label":"Carry it"},)")
+            << "step 2, \"virtual_robot\" needs \"place\", \"forward_mm\" or \"lift\"";
+        QTest::newRow("placement off the map")
+            << step(R"({"drive_mm":100})", R"("virtual_robot":{"label":"Carry it","place":[1,2]},)")
+            << "step 2, \"virtual_robot.place\" must be [x_mm, y_mm, heading_degrees]";
+        QTest::newRow("placement too far")
+            << step(R"({"drive_mm":100})", R"("virtual_robot":{"label":"Carry it","forward_mm":9000},)")
+            << "step 2, \"virtual_robot.forward_mm\" 9000 must be a number from -2000 to 2000";
+        QTest::newRow("placement lift")
+            << step(R"({"drive_mm":100})", R"("virtual_robot":{"label":"Lift it","lift":"yes"},)")
+            << "step 2, \"virtual_robot.lift\" must be true or false";
         QTest::newRow("bad profile")
             << QByteArray(R"({"format":"roomba-lesson","version":1,"title":"T","profiles":["roomba900"],"steps":[]})")
             << "\"profiles\" \"roomba900\"";
@@ -401,8 +415,11 @@ private slots:
         for (const QString &path : lesson::shippedLessonPaths()) {
             const Lesson lesson = *loadLessonFile(path);
             QStringList texts = {lesson.title, lesson.summary};
-            for (const LessonStep &step : lesson.steps)
+            for (const LessonStep &step : lesson.steps) {
                 texts << step.text;
+                if (step.virtualRobot)
+                    texts << step.virtualRobot->label;
+            }
             for (const QString &text : texts)
                 QVERIFY2(marked.contains(text),
                          qPrintable(QStringLiteral("%1: run resources/lessons/lesson_texts.py: %2").arg(path, text)));

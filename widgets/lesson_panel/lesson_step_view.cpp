@@ -15,6 +15,7 @@
 #include <QLabel>
 #include <QFontInfo>
 #include <QProgressBar>
+#include <QPushButton>
 #include <QSplitter>
 #include <QVBoxLayout>
 
@@ -57,6 +58,14 @@ LessonStepView::LessonStepView(QWidget *parent)
     m_outOfReach->setObjectName("lessonOutOfReach");
     m_outOfReach->setWordWrap(true);
     m_outOfReach->hide();
+    m_placement = new QPushButton(this);
+    m_placement->setObjectName("lessonPlacement");
+    m_placement->setFocusPolicy(Qt::NoFocus); // the window's keys keep driving
+    m_placement->hide();
+    connect(m_placement, &QPushButton::clicked, this, [this] {
+        if (m_step && m_step->virtualRobot)
+            emit placementRequested(*m_step->virtualRobot);
+    });
     m_diagram = new RobotDiagram(this);
     m_plots = new SensorPlots(this);
     m_plots->stack()->setWindowSeconds(30);
@@ -82,6 +91,7 @@ LessonStepView::LessonStepView(QWidget *parent)
     layout->addWidget(m_text);
     layout->addLayout(goalRow);
     layout->addWidget(m_outOfReach);
+    layout->addWidget(m_placement, 0, Qt::AlignLeft);
     layout->addWidget(views, 1);
     layout->addLayout(m_readoutRow);
     applyScale();
@@ -142,6 +152,7 @@ void LessonStepView::applyScale()
     const QFont goal = sized(1.2 * m_scale, true);
     m_goal->setFont(goal);
     m_outOfReach->setFont(goal);
+    m_placement->setFont(goal);
     const QFont progress = sized(std::max(1.0, 0.8 * m_scale), true);
     m_progress->setFont(progress);
     m_progress->setFixedHeight(std::max(int(18 * m_scale), QFontMetrics(progress).height() + 6));
@@ -170,6 +181,7 @@ void LessonStepView::showStep()
     }
     if (!inLesson)
         m_outOfReach->hide();
+    showPlacement();
     m_diagram->setHighlightedParts(inLesson ? m_step->highlight : QStringList());
     std::vector<int> channels;
     for (const QString &key : inLesson ? m_step->plot : QStringList())
@@ -179,6 +191,14 @@ void LessonStepView::showStep()
         channels.push_back(lesson::packetByKey(*m_profile, "current")->id);
     m_plots->stack()->setChannels(0, channels);
     rebuildReadouts();
+}
+
+void LessonStepView::showPlacement()
+{
+    const bool shown = m_step && m_step->virtualRobot && m_virtualRobotHere;
+    if (shown)
+        m_placement->setText(tr("On the virtual robot: %1").arg(lesson::translated(m_step->virtualRobot->label)));
+    m_placement->setVisible(shown);
 }
 
 void LessonStepView::rebuildReadouts()
@@ -207,6 +227,10 @@ void LessonStepView::refresh(const oi::SensorSnapshot &latest, bool stale, const
     m_plots->setStale(stale);
     if (isVisible())
         m_plots->refresh();
+    if (const bool here = runner && runner->trueDrivenMm().has_value(); here != m_virtualRobotHere) {
+        m_virtualRobotHere = here;
+        showPlacement();
+    }
     if (m_step && runner) {
         m_progress->setValue(int(std::lround(runner->progress() * 100)));
         const double toRead = runner->secondsToRead();
@@ -357,4 +381,5 @@ void LessonStepView::retranslateUi()
         m_text->setText(lesson::translated(m_step->text));
         m_goal->setText(tr("Goal: %1").arg(describeGoal(m_step->goal, *m_profile)));
     }
+    showPlacement();
 }

@@ -11,6 +11,7 @@ class LessonRunner;
 class QHBoxLayout;
 class QLabel;
 class QProgressBar;
+class QPushButton;
 class RobotDiagram;
 class SensorHistory;
 class SensorPlots;
@@ -51,6 +52,9 @@ public:
     int progressPercent() const;
     QString progressText() const;
     QString outOfReachText() const;
+    // The step's hand on the virtual robot ("On the virtual robot: Hold it
+    // further over the edge"), shown while the robot is one in the room.
+    QPushButton *placementButton() const { return m_placement; }
     QStringList readoutKeys() const { return m_readoutKeys; }
     QString readoutText(const QString &key) const;
     RobotDiagram *diagram() const { return m_diagram; }
@@ -58,6 +62,10 @@ public:
 
     // A goal in words: "Bump Left on", "Cliff Front Left Signal below 500 for 0.5 s".
     static QString describeGoal(const LessonGoal &goal, const oi::RobotProfile &profile);
+
+signals:
+    // The placement button: carry, hold or lift the virtual robot as the step says.
+    void placementRequested(const LessonPlacement &placement);
 
 protected:
     void changeEvent(QEvent *event) override;
@@ -67,6 +75,7 @@ private:
     void applyScale();
     void rebuildReadouts();
     void showStep();
+    void showPlacement();
 
     const oi::RobotProfile *m_profile;
     const LessonStep *m_step = nullptr;
@@ -80,6 +89,8 @@ private:
     QLabel *m_goal;
     QProgressBar *m_progress;
     QLabel *m_outOfReach;
+    QPushButton *m_placement;
+    bool m_virtualRobotHere = false; // the runner knows the robot's true pose
     RobotDiagram *m_diagram;
     SensorPlots *m_plots;
     QHBoxLayout *m_readoutRow;

@@ -191,8 +191,8 @@ void ProjectorView::showHeader()
         parts << lesson::translated(m_runner->lesson().title);
     if (!m_robotName.isEmpty())
         parts << m_robotName;
-    if (!m_modeName.isEmpty())
-        parts << m_modeName;
+    if (m_mode.reported())
+        parts << oitext::modeName(*m_mode.reported());
     if (const auto battery = m_latest.batteryPercent())
         parts << tr("battery %1 %").arg(qRound(*battery));
     if (!m_live)
@@ -202,10 +202,23 @@ void ProjectorView::showHeader()
     m_header->setText(parts.join(QStringLiteral(" · ")));
     // Without live data nothing can be entered; the header says so.
     const bool offer = m_offersSafe && m_live;
-    m_reasonLabel->setText(m_reason);
+    const QString reason = reasonLine();
+    m_reasonLabel->setText(reason);
     m_enterSafe->setVisible(offer);
     // A warning in Safe or Full (on the dock, not charging) shows without the offer.
-    m_reasonRow->setVisible(offer || (m_live && !m_reason.isEmpty()));
+    m_reasonRow->setVisible(offer || (m_live && !reason.isEmpty()));
+}
+
+QString ProjectorView::reasonLine() const
+{
+    const QString reason = m_mode.reason();
+    const QString lead = reason.isEmpty() ? QString() : reason + ' ';
+    // A stop the lesson's step is about (its cliff, its wheels): the line
+    // agrees with the step instead of undoing what the step asks for.
+    if (m_runner && m_runner->isRunning() && !m_runner->isFinished()
+        && m_mode.stopExpectedBy(lesson::goalPackets(m_runner->lesson().steps[m_runner->currentStep()].goal)))
+        return lead + tr("This step expects it: follow the step below.");
+    return lead + m_mode.nextStep();
 }
 
 QPushButton *ProjectorView::stopAllButton() const { return m_stopAll; }
@@ -214,11 +227,9 @@ QString ProjectorView::reasonText() const { return m_reasonRow->isHidden() ? QSt
 
 void ProjectorView::setMode(const RobotMode &mode, bool canCommand)
 {
-    m_modeName = mode.reported() ? oitext::modeName(*mode.reported()) : QString();
+    m_mode = mode;
     // Safe refused by the dock is not offered again: the step says Full.
     m_offersSafe = mode.ignoresMotion() && canCommand && !mode.safeRefusedOnDock();
-    const QString reason = mode.reason();
-    m_reason = (reason.isEmpty() ? QString() : reason + ' ') + mode.nextStep();
     showHeader();
 }
 

@@ -63,15 +63,15 @@ private:
     void applyPalette();
     void applyScale();
     void showHeader();
+    QString reasonLine() const;
 
     QString m_robotName;
     const LessonRunner *m_runner = nullptr;
     oi::SensorSnapshot m_latest;
     bool m_live = false;
     // As the session said it last; shown, not decided here.
-    QString m_modeName;
+    RobotMode m_mode;
     bool m_offersSafe = false;
-    QString m_reason;
     qreal m_scale = 0;
     QLabel *m_header;
     QWidget *m_reasonRow;

@@ -86,6 +86,8 @@ void DockLayout::resetLayout()
     m_window->restoreState(m_default);
     for (QDockWidget *dock : m_docks)
         dock->show();
+    if (m_arrange)
+        m_arrange();
 }
 
 void DockLayout::retitle(const QString &robotName)

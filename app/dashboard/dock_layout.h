@@ -5,6 +5,8 @@
 #include <QList>
 #include <QObject>
 
+#include <functional>
+
 class QAction;
 class QDockWidget;
 class QMainWindow;
@@ -32,8 +34,10 @@ public:
     QAction *nextAction() const { return m_nextAction; }
     QAction *previousAction() const { return m_previousAction; }
 
-    // After every dock is added and arranged: what Reset layout goes back to.
+    // After every dock is added: what Reset layout goes back to, before it
+    // arranges the docks for the window's size as a first start does.
     void keepAsDefault();
+    void setArrangement(std::function<void()> arrange) { m_arrange = std::move(arrange); }
     void resetLayout();
     // F6 and Shift+F6: the keyboard moves from dock to dock (+1 or -1),
     // raising a tabbed one. Returns the dock that now has the focus.
@@ -56,6 +60,7 @@ private:
     QList<QDockWidget *> m_docks;
     QList<Dock> m_titles;
     QByteArray m_default;
+    std::function<void()> m_arrange;
     QAction *m_resetAction;
     QAction *m_nextAction;
     QAction *m_previousAction;

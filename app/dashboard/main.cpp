@@ -69,7 +69,7 @@ int main(int argc, char **argv)
         window.setLanguage(line.language, false);
     // First start: a laptop's size, or the whole of a smaller screen.
     const QRect room = screenfit::available(&window);
-    const QSize wanted(1280, 860);
+    const QSize wanted(1600, 1000);
     window.resize(screenfit::fitted(wanted, room.size()));
     if (room.width() < wanted.width() || room.height() < wanted.height())
         window.showMaximized();

@@ -54,6 +54,7 @@
 #include <QMessageBox>
 #include <QSettings>
 #include <QStatusBar>
+#include <QTabBar>
 #include <QToolBar>
 
 MainWindow::MainWindow(QWidget *parent) : QMainWindow(parent)
@@ -159,13 +160,17 @@ void MainWindow::buildDocks()
         tabifyDockWidget(below, dock);
         below = dock;
     }
+    for (const char *name : {"plotsDock", "inspectorDock", "songsDock", "ledsDock", "scheduleDock", "scriptDock",
+                             "motorsDock", "mapDock", "markersDock", "gamepadDock", "lessonDock"})
+        m_paneDocks << findChild<QDockWidget *>(name);
     plots->raise();
     // Start with what a class looks at first: the cliff signals and the battery.
     if (m_plots->stack()->plotCount() == 0)
         m_plots->stack()->addPlot();
     m_plots->stack()->setChannels(0, {28, 29, 30, 31});
     m_plots->stack()->addPlot({22, 23});
-    fitDocks();
+    m_plots->stack()->setMinimumPlotHeight(kReadablePlotHeight);
+    m_layout->setArrangement([this] { fitDocks(); });
 
     m_keyboard = new KeyboardDriving(this, m_plots, this);
     m_view = new SelectedRobotView(m_fleet, *m_room,
@@ -176,17 +181,57 @@ void MainWindow::buildDocks()
     connect(m_view, &SelectedRobotView::message, this, &MainWindow::showMessage);
 }
 
-// The default widths and heights, for the language the window speaks now.
+// The default arrangement for the window's size and language, at a first
+// start and on Reset layout. A tall window has the plots and editors below
+// the diagram. A short one (a 1280x720 laptop) has them in a column on the
+// right at the window's whole height, and the modes, drive pad, gauges and
+// signals as tabs under the diagram, so that a raised plot or map is never
+// a sliver and the editors keep the width they have below.
 void MainWindow::fitDocks()
 {
-    // On a short screen the middle keeps the diagram's size and the plots the rest.
-    resizeDocks({findChild<QDockWidget *>("plotsDock")}, {300}, Qt::Vertical);
+    auto *modes = findChild<QDockWidget *>("modeDock");
+    auto *gauges = findChild<QDockWidget *>("gaugesDock");
+    QDockWidget *plots = m_paneDocks.first();
+    const int modesWidth = m_modePanel->minimumSizeHint().width() + 8;
+    const bool shortWindow = height() < kShortWindowHeight;
+    setCorner(Qt::BottomRightCorner, shortWindow ? Qt::RightDockWidgetArea : Qt::BottomDockWidgetArea);
+    if (shortWindow) {
+        addDockWidget(Qt::BottomDockWidgetArea, modes);
+        QDockWidget *previous = modes;
+        for (const char *name : {"driveDock", "gaugesDock", "signalsDock"}) {
+            QDockWidget *dock = findChild<QDockWidget *>(name);
+            addDockWidget(Qt::BottomDockWidgetArea, dock);
+            tabifyDockWidget(previous, dock);
+            previous = dock;
+        }
+        addDockWidget(Qt::RightDockWidgetArea, plots);
+        for (QDockWidget *pane : m_paneDocks.mid(1)) {
+            addDockWidget(Qt::RightDockWidgetArea, pane);
+            tabifyDockWidget(plots, pane);
+        }
+        modes->raise();
+        plots->raise();
+        showWholeTabNames();
+        resizeDocks({plots}, {width() - modesWidth}, Qt::Horizontal);
+        resizeDocks({modes}, {m_modePanel->sizeHint().height() + kDockTitleAndTabs}, Qt::Vertical);
+        return;
+    }
+    // The plots below: two of them at a readable height, the diagram the rest.
+    resizeDocks({plots}, {std::max(300, height() - kDiagramRowHeight)}, Qt::Vertical);
     // The modes as wide as their buttons need, so that no row scrolls; the
     // gauges narrower on a small screen, so that the diagram keeps its room.
-    const int modes = m_modePanel->minimumSizeHint().width() + 8;
-    const int gauges = std::clamp(width() - modes - 520, 300, 440);
-    resizeDocks({findChild<QDockWidget *>("modeDock"), findChild<QDockWidget *>("gaugesDock")}, {modes, gauges},
-                Qt::Horizontal);
+    const int gaugesWidth = std::clamp(width() - modesWidth - 520, 300, 440);
+    resizeDocks({modes, gauges}, {modesWidth, gaugesWidth}, Qt::Horizontal);
+}
+
+// A column of many tabs scrolls its tab bar rather than cut every name to
+// its first letter.
+void MainWindow::showWholeTabNames()
+{
+    for (QTabBar *tabs : findChildren<QTabBar *>(QString(), Qt::FindDirectChildrenOnly)) {
+        tabs->setElideMode(Qt::ElideNone);
+        tabs->setUsesScrollButtons(true);
+    }
 }
 
 void MainWindow::addRobot(RobotList::AddKind kind)
@@ -439,10 +484,9 @@ void MainWindow::start(const std::optional<oilink::LinkSettings> &override, int 
 {
     QSettings settings;
     restoreGeometry(settings.value("window/geometry").toByteArray());
-    if (!restoreState(settings.value("window/state").toByteArray())) {
-        fitDocks(); // a first start, maybe in another language than the one built in
-        m_layout->keepAsDefault();
-    }
+    if (!restoreState(settings.value("window/state").toByteArray()))
+        fitDocks(); // a first start: for this screen, maybe in another language than the one built in
+    showWholeTabNames();
     if (override) {
         m_keepSavedRobots = true;
         for (int i = 0; i < count; ++i) {

@@ -149,6 +149,17 @@ protected:
 private:
     void buildDocks();
     void fitDocks();
+    void showWholeTabNames();
+    // Below this height the plots and editors go in a column on the right.
+    static constexpr int kShortWindowHeight = 820;
+    // A plot's least height: the pane scrolls rather than go under it.
+    static constexpr int kReadablePlotHeight = 200;
+    // The diagram's row in a tall window.
+    static constexpr int kDiagramRowHeight = 530;
+    // A dock's title and its tab bar.
+    static constexpr int kDockTitleAndTabs = 50;
+    // The plots, the map, the editors and the lesson: tabs in one place.
+    QList<QDockWidget *> m_paneDocks;
     void buildActions();
     void buildMenus();
     void wireInputs();

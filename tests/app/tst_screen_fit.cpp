@@ -6,6 +6,8 @@
 #include "lesson_panel.h"
 #include "lesson_step_view.h"
 #include "main_window.h"
+#include "plot_stack.h"
+#include "sensor_plots.h"
 #include "robot_card.h"
 #include "robot_list.h"
 
@@ -16,6 +18,7 @@
 #include <QLabel>
 #include <QScrollArea>
 #include <QSettings>
+#include <qcustomplot.h>
 #include <QStandardPaths>
 #include <QStatusBar>
 #include <QTabBar>
@@ -61,7 +64,7 @@ QString describe(const QWidget *w)
 }
 
 // What of `root` is cut short where it stands: a tab bar with less room than
-// its titles need (Qt then elides them), a label of one line narrower than
+// its titles need that elides them rather than scroll, a label of one line narrower than
 // its text, a child sticking out of the window.
 QStringList cutShort(QWidget *root, const QRect &window)
 {
@@ -69,7 +72,9 @@ QStringList cutShort(QWidget *root, const QRect &window)
     for (QTabBar *bar : root->findChildren<QTabBar *>()) {
         if (!bar->isVisible() || bar->visibleRegion().isEmpty())
             continue;
-        if (bar->sizeHint().width() > bar->width()) {
+        // Whole titles that scroll are read; elided ones are not.
+        const bool scrollsWhole = bar->elideMode() == Qt::ElideNone && bar->usesScrollButtons();
+        if (!scrollsWhole && bar->sizeHint().width() > bar->width()) {
             QStringList titles;
             for (int i = 0; i < bar->count(); ++i)
                 titles << bar->tabText(i);
@@ -222,6 +227,76 @@ private slots:
         if (!language.isEmpty())
             window.setLanguage(QString(), false);
         QVERIFY2(found.isEmpty(), qPrintable(found.join('\n')));
+    }
+
+    // Panes that can be read: the plots and the map, each raised in turn,
+    // at least 200 px high, on a laptop screen and a desktop one; a run
+    // comparison's plots keep that height (their pane scrolls); and Reset
+    // layout gives back the layout of the first start.
+    void panesCanBeRead_data()
+    {
+        QTest::addColumn<QSize>("client");
+        QTest::addRow("1280x720") << QSize(1280, 720 - kTitleBar);
+        QTest::addRow("1600x1000") << QSize(1600, 1000);
+    }
+    void panesCanBeRead()
+    {
+        QFETCH(QSize, client);
+        MainWindow window;
+        window.resize(client);
+        window.show();
+        window.start(oilink::LinkSettings::virtualRobotOf(oi::ProfileId::Create2, oi::ProfileId::Create2));
+        QTRY_COMPARE_WITH_TIMEOUT(window.session().state(), oilink::LinkState::Streaming, 10000);
+        QApplication::processEvents();
+        const auto docks = window.findChildren<QDockWidget *>();
+        const auto layoutNow = [&] {
+            QStringList where;
+            for (QDockWidget *dock : docks) // a tab not raised has no place of its own
+                where << (dock->visibleRegion().isEmpty()
+                              ? QStringLiteral("%1 %2 behind a tab").arg(dock->objectName()).arg(int(window.dockWidgetArea(dock)))
+                              : QStringLiteral("%1 %2 %3,%4 %5x%6")
+                                    .arg(dock->objectName())
+                                    .arg(int(window.dockWidgetArea(dock)))
+                                    .arg(dock->x())
+                                    .arg(dock->y())
+                                    .arg(dock->width())
+                                    .arg(dock->height()));
+            return where;
+        };
+        const QStringList firstStart = layoutNow();
+
+        auto *plotsDock = window.findChild<QDockWidget *>("plotsDock");
+        plotsDock->raise();
+        QTRY_VERIFY(plotsDock->widget()->isVisible());
+        const auto plots = plotsDock->findChildren<QCustomPlot *>();
+        QCOMPARE(plots.size(), 2);
+        for (QCustomPlot *plot : plots)
+            QVERIFY2(plot->height() >= 200, qPrintable(QString::number(plot->height())));
+        // A plot whole in its pane when raised, not scrolled half away.
+        QApplication::processEvents();
+        const QWidget *viewport = qobject_cast<QScrollArea *>(plotsDock->widget())->viewport();
+        QVERIFY(std::any_of(plots.cbegin(), plots.cend(), [viewport](QCustomPlot *plot) {
+            return viewport->rect().contains(QRect(plot->mapTo(viewport, QPoint(0, 0)), plot->size()));
+        }));
+        auto *mapDock = window.findChild<QDockWidget *>("mapDock");
+        mapDock->raise();
+        QTRY_VERIFY(mapDock->widget()->isVisible());
+        QVERIFY2(mapDock->widget()->height() >= 200, qPrintable(QString::number(mapDock->widget()->height())));
+
+        // More plots, as a comparison adds: none under the readable height.
+        PlotStack *stack = window.findChild<SensorPlots *>()->stack();
+        stack->addPlot({22});
+        stack->addPlot({23});
+        QApplication::processEvents();
+        for (QCustomPlot *plot : plotsDock->findChildren<QCustomPlot *>())
+            QVERIFY(plot->height() >= 200);
+
+        // Moved about by hand, then Reset layout: as at the first start.
+        window.addDockWidget(Qt::TopDockWidgetArea, mapDock);
+        window.findChild<QDockWidget *>("gaugesDock")->hide();
+        window.resetLayout();
+        QApplication::processEvents();
+        QCOMPARE(layoutNow(), firstStart);
     }
 
     // More robots than the strip holds: the one selected elsewhere (the

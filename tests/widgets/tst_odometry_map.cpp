@@ -565,9 +565,14 @@ private slots:
         for (const QString &name : order)
             expected << m_map->findChild<QWidget *>(name);
         QCOMPARE(tabCycle(m_map.get(), expected.first()), expected);
-        // Visual order: left to right along the tool bar.
-        for (qsizetype i = 1; i < expected.size(); ++i)
-            QVERIFY(expected[i]->mapTo(m_map.get(), QPoint()).x() > expected[i - 1]->mapTo(m_map.get(), QPoint()).x());
+        // Reading order: left to right along each row of the tool bar, the
+        // view's buttons above the wheels.
+        for (qsizetype i = 1; i < expected.size(); ++i) {
+            const QPoint at = expected[i]->mapTo(m_map.get(), QPoint());
+            const QPoint before = expected[i - 1]->mapTo(m_map.get(), QPoint());
+            QVERIFY(at.y() > before.y() + expected[i - 1]->height() / 2
+                    || (std::abs(at.y() - before.y()) <= expected[i - 1]->height() / 2 && at.x() > before.x()));
+        }
 
         // The buttons work from the keyboard: zoom and centre without a mouse.
         const double scale = m_map->scale();

@@ -69,9 +69,10 @@ LessonStepView::LessonStepView(QWidget *parent)
     m_diagram = new RobotDiagram(this);
     m_plots = new SensorPlots(this);
     m_plots->stack()->setWindowSeconds(30);
-    // The step chooses what is plotted: no adding or exporting here, and
-    // the plot keeps the room those buttons would take on a small screen.
-    for (const char *tool : {"addPlot", "export"})
+    // The step chooses what is plotted, over the last 30 s: no adding,
+    // exporting or other windows here, and the plot keeps the room those
+    // controls would take on a small screen.
+    for (const char *tool : {"addPlot", "export", "window", "windowLabel"})
         if (QWidget *button = m_plots->findChild<QWidget *>(tool))
             button->hide();
 

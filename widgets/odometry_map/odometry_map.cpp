@@ -43,8 +43,14 @@ OdometryMap::OdometryMap(QWidget *parent) : QWidget(parent)
     m_controls = new QWidget(this);
     m_controls->setObjectName("controls");
     m_controls->setAutoFillBackground(true);
-    auto *controls = new QHBoxLayout(m_controls);
-    controls->setContentsMargins(4, 4, 4, 4);
+    // Two rows: the view's buttons, then the wheels; one row of both
+    // would not fit a column beside the diagram on a laptop screen.
+    auto *rows = new QVBoxLayout(m_controls);
+    rows->setContentsMargins(4, 4, 4, 4);
+    auto *controls = new QHBoxLayout;
+    auto *wheels = new QHBoxLayout;
+    rows->addLayout(controls);
+    rows->addLayout(wheels);
 
     const auto addButton = [this, controls](const char *name, const QString &text) {
         auto *b = new QPushButton(text, m_controls);
@@ -94,12 +100,13 @@ OdometryMap::OdometryMap(QWidget *parent) : QWidget(parent)
     m_wheelBaseTitle->setBuddy(m_wheelBase);
     m_wheelDiameterTitle = new QLabel(m_controls);
     m_wheelDiameterTitle->setBuddy(m_wheelDiameter);
-    controls->addSpacing(8);
-    controls->addWidget(m_wheelBaseTitle);
-    controls->addWidget(m_wheelBase);
-    controls->addWidget(m_wheelDiameterTitle);
-    controls->addWidget(m_wheelDiameter);
     controls->addStretch();
+    wheels->addWidget(m_wheelBaseTitle);
+    wheels->addWidget(m_wheelBase);
+    wheels->addSpacing(8);
+    wheels->addWidget(m_wheelDiameterTitle);
+    wheels->addWidget(m_wheelDiameter);
+    wheels->addStretch();
     connect(m_wheelBase, &QDoubleSpinBox::valueChanged, this, &OdometryMap::applyGeometry);
     connect(m_wheelDiameter, &QDoubleSpinBox::valueChanged, this, &OdometryMap::applyGeometry);
 

@@ -156,6 +156,13 @@ void PlotStack::setProfile(const oi::RobotProfile &profile)
     updateAxisLabels();
 }
 
+void PlotStack::setMinimumPlotHeight(int pixels)
+{
+    m_minimumPlotHeight = pixels;
+    for (const auto &p : m_panels)
+        p->plot->setMinimumHeight(pixels);
+}
+
 int PlotStack::addPlot(const std::vector<int> &channels)
 {
     if (plotCount() >= kMaxPlots)
@@ -182,7 +189,7 @@ int PlotStack::addPlot(const std::vector<int> &channels)
     connect(p->remove, &QToolButton::clicked, this, [this, p] { removePlot(indexOf(p)); });
 
     p->plot = new TracePlot(p->frame);
-    p->plot->setMinimumHeight(110);
+    p->plot->setMinimumHeight(m_minimumPlotHeight);
     // Reachable with Tab: paused, the arrow keys pan and +/- zoom.
     p->plot->setFocusPolicy(Qt::StrongFocus);
     p->plot->setAccessibleName(tr("Sensor plot"));

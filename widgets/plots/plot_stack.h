@@ -64,6 +64,10 @@ public:
     int plotCount() const { return int(m_panels.size()); }
     // Adds a plot at the bottom and returns its index, or -1 at kMaxPlots.
     int addPlot(const std::vector<int> &channels = {});
+    // The least height of each plot, now and for those added later: a
+    // window's plots keep a readable height and their pane scrolls, rather
+    // than squeeze to slivers when a comparison adds more.
+    void setMinimumPlotHeight(int pixels);
     // Removes a plot; the last remaining plot stays.
     bool removePlot(int plotIndex);
     // Shows these packets in the plot. Refuses (returns false, changes
@@ -128,6 +132,7 @@ protected:
     void showEvent(QShowEvent *event) override;
 
 private:
+    int m_minimumPlotHeight = 110;
     struct Panel;
 
     void retranslateUi();

@@ -58,6 +58,7 @@ SensorPlots::SensorPlots(QWidget *parent) : QWidget(parent)
             [this](int index) { m_stack->setWindowSeconds(m_windowBox->itemData(index).toDouble()); });
     connect(m_stack, &PlotStack::windowSecondsChanged, this, &SensorPlots::showWindowSeconds);
     m_windowLabel = new QLabel(this);
+    m_windowLabel->setObjectName(QStringLiteral("windowLabel"));
     m_windowLabel->setBuddy(m_windowBox);
 
     m_status = new QLabel(this);

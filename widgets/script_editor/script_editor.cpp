@@ -125,7 +125,8 @@ ScriptEditor::ScriptEditor(QWidget *parent) : QWidget(parent)
 
     auto *demoBox = m_demoBox = new QGroupBox(m_controls);
     auto *demoGrid = new QGridLayout(demoBox);
-    constexpr int kColumns = 5;
+    // Four across: German names fit a column beside the diagram.
+    constexpr int kColumns = 4;
     for (int demo = demos::kFirst; demo <= demos::kLast; ++demo) {
         QPushButton *b = addButton(QString("demo-%1").arg(demo), QString());
         b->setParent(demoBox);
@@ -136,7 +137,7 @@ ScriptEditor::ScriptEditor(QWidget *parent) : QWidget(parent)
     abort->setParent(demoBox);
     connect(abort, &QPushButton::clicked, this,
             [this] { send({oi::Command::Demo, {demos::kAbort}, {}}); });
-    demoGrid->addWidget(abort, 2, 0, 1, kColumns);
+    demoGrid->addWidget(abort, demos::kLast / kColumns + 1, 0, 1, kColumns);
 
     auto *top = new QHBoxLayout;
     top->addWidget(m_examples);

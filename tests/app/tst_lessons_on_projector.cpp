@@ -14,6 +14,7 @@
 #include "shipped_lessons.h"
 
 #include <QApplication>
+#include <QDir>
 #include <QFileInfo>
 #include <QPushButton>
 #include <QTest>
@@ -144,6 +145,12 @@ private slots:
             QVERIFY2(reason.contains("cliff") && reason.contains("This step expects it")
                          && !reason.contains("Carry it back"),
                      qPrintable(reason));
+            if (const QString dir = qEnvironmentVariable("ROOMBA_SCREENSHOTS"); !dir.isEmpty()) {
+                QTRY_VERIFY(rig.projector->stepView()->placementButton()->isVisible());
+                rig.window.refreshDisplay();
+                QApplication::processEvents();
+                QVERIFY(rig.window.grab().save(QDir(dir).filePath("projector-1280x720-lesson.png")));
+            }
             DO(rig.place()); // held further over the edge
             DO(rig.past(2));
             DO(rig.place()); // carried back onto the floor

@@ -11,6 +11,7 @@
 #include "value_gauge.h"
 
 #include <QEvent>
+#include <QGridLayout>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QFontInfo>
@@ -69,6 +70,7 @@ LessonStepView::LessonStepView(QWidget *parent)
     m_diagram = new RobotDiagram(this);
     m_plots = new SensorPlots(this);
     m_plots->stack()->setWindowSeconds(30);
+    m_plots->stack()->setChannelsFixed(true);
     // The step chooses what is plotted, over the last 30 s: no adding,
     // exporting or other windows here, and the plot keeps the room those
     // controls would take on a small screen.
@@ -84,8 +86,12 @@ LessonStepView::LessonStepView(QWidget *parent)
     views->addWidget(m_plots);
     views->setStretchFactor(0, 2);
     views->setStretchFactor(1, 3);
-    m_readoutRow = new QHBoxLayout;
-    m_readoutRow->addStretch(); // readouts keep a readable width, left-aligned
+    // The readouts beside the views, not below them: on a 720p projector
+    // the diagram and the plot keep the height.
+    m_readoutGrid = new QGridLayout;
+    auto *viewsRow = new QHBoxLayout;
+    viewsRow->addWidget(views, 1);
+    viewsRow->addLayout(m_readoutGrid);
 
     auto *layout = new QVBoxLayout(this);
     layout->addWidget(m_heading);
@@ -93,8 +99,7 @@ LessonStepView::LessonStepView(QWidget *parent)
     layout->addLayout(goalRow);
     layout->addWidget(m_outOfReach);
     layout->addWidget(m_placement, 0, Qt::AlignLeft);
-    layout->addWidget(views, 1);
-    layout->addLayout(m_readoutRow);
+    layout->addLayout(viewsRow, 1);
     applyScale();
     retranslateUi();
     showStep();
@@ -162,7 +167,7 @@ void LessonStepView::applyScale()
     for (ValueGauge *g : std::as_const(m_readouts)) {
         const QFont f = sized(m_scale);
         g->setFont(f);
-        g->setMaximumWidth(QFontMetrics(f).averageCharWidth() * 40);
+        g->setMaximumWidth(QFontMetrics(f).averageCharWidth() * 26);
     }
 }
 
@@ -212,8 +217,12 @@ void LessonStepView::rebuildReadouts()
             continue; // a packet this robot lacks
         auto *gauge = new ValueGauge(QString(), this);
         gauge->setObjectName(QStringLiteral("readout_%1").arg(key));
+        gauge->setSizePolicy(QSizePolicy::Preferred, QSizePolicy::Maximum); // the views take the height
+        // One column, or two when there are many (the robot alone).
+        const int columns = m_readoutKeys.size() > 4 ? 2 : 1;
+        const int at = int(m_readouts.size());
         m_readouts.insert(key, gauge);
-        m_readoutRow->insertWidget(m_readoutRow->count() - 1, gauge, 1);
+        m_readoutGrid->addWidget(gauge, at / columns, at % columns, Qt::AlignTop);
     }
     applyScale();
     retranslateUi();

@@ -8,7 +8,7 @@
 #include <QWidget>
 
 class LessonRunner;
-class QHBoxLayout;
+class QGridLayout;
 class QLabel;
 class QProgressBar;
 class QPushButton;
@@ -93,6 +93,6 @@ private:
     bool m_virtualRobotHere = false; // the runner knows the robot's true pose
     RobotDiagram *m_diagram;
     SensorPlots *m_plots;
-    QHBoxLayout *m_readoutRow;
+    QGridLayout *m_readoutGrid;
     QHash<QString, ValueGauge *> m_readouts;
 };

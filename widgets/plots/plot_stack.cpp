@@ -163,6 +163,15 @@ void PlotStack::setMinimumPlotHeight(int pixels)
         p->plot->setMinimumHeight(pixels);
 }
 
+void PlotStack::setChannelsFixed(bool fixed)
+{
+    m_channelsFixed = fixed;
+    for (const auto &p : m_panels) {
+        p->chooser->setVisible(!fixed);
+        p->remove->setVisible(!fixed);
+    }
+}
+
 int PlotStack::addPlot(const std::vector<int> &channels)
 {
     if (plotCount() >= kMaxPlots)
@@ -187,6 +196,8 @@ int PlotStack::addPlot(const std::vector<int> &channels)
     p->remove->setToolTip(tr("Remove this plot"));
     p->remove->setAccessibleName(tr("Remove this plot"));
     connect(p->remove, &QToolButton::clicked, this, [this, p] { removePlot(indexOf(p)); });
+    p->chooser->setVisible(!m_channelsFixed);
+    p->remove->setVisible(!m_channelsFixed);
 
     p->plot = new TracePlot(p->frame);
     p->plot->setMinimumHeight(m_minimumPlotHeight);

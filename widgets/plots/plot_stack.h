@@ -68,6 +68,9 @@ public:
     // window's plots keep a readable height and their pane scrolls, rather
     // than squeeze to slivers when a comparison adds more.
     void setMinimumPlotHeight(int pixels);
+    // Channels chosen by something else (a lesson's step): no channel
+    // chooser and no remove button, and the legend has their room.
+    void setChannelsFixed(bool fixed);
     // Removes a plot; the last remaining plot stays.
     bool removePlot(int plotIndex);
     // Shows these packets in the plot. Refuses (returns false, changes
@@ -133,6 +136,7 @@ protected:
 
 private:
     int m_minimumPlotHeight = 110;
+    bool m_channelsFixed = false;
     struct Panel;
 
     void retranslateUi();

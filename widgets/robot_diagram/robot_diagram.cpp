@@ -670,8 +670,17 @@ void RobotDiagram::paintCliffs(QPainter &p) const
         const int packetId = 28 + static_cast<int>(sensor);
         const QRectF numberBox(label.left(), label.top(), label.width(), label.height() - 14);
         p.setFont(numberFont);
+        // On a small diagram the number can be wider than its box: a backdrop
+        // keeps it readable where it runs over the lamp's ring.
+        const QString number = signalText(m_snapshot, packetId);
+        const QRectF ink = p.boundingRect(numberBox, Qt::AlignCenter | Qt::TextDontClip, number);
+        if (ink.width() > numberBox.width()) {
+            p.setPen(Qt::NoPen);
+            p.setBrush(palette().color(QPalette::Window));
+            p.drawRoundedRect(ink.adjusted(-3, 0, 3, 0), 4, 4);
+        }
         p.setPen(cliff ? fill(State::Alert) : inkColour());
-        p.drawText(numberBox, Qt::AlignCenter, signalText(m_snapshot, packetId));
+        p.drawText(numberBox, Qt::AlignCenter | Qt::TextDontClip, number);
 
         const QRectF bar(label.left() + 6, label.bottom() - 12, label.width() - 12, 10);
         p.setPen(Qt::NoPen);

@@ -51,6 +51,7 @@ bool FleetDirectory::connectToBroker(const mqtt::BrokerAddress &address)
     using mqtt::topics::Kind;
     connect(m_client.get(), &mqtt::MqttClient::connected, this, [this] { emit connectionChanged(true); });
     connect(m_client.get(), &mqtt::MqttClient::disconnected, this, [this] { emit connectionChanged(false); });
+    connect(m_client.get(), &mqtt::MqttClient::subscribed, this, &FleetDirectory::subscribed);
     connect(m_client.get(), &mqtt::MqttClient::errorOccurred, this, &FleetDirectory::errorOccurred);
     connect(m_client.get(), &mqtt::MqttClient::loginRefused, this, [this](const QString &message) {
         // The same login every second would only be refused again.

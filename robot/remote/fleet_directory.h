@@ -66,6 +66,9 @@ public:
 
 signals:
     void connectionChanged(bool connected);
+    // The broker acknowledged every topic read: what a bridge publishes from
+    // now on arrives (retained states may come before).
+    void subscribed();
     void robotAppeared(const QString &name);
     // Its state or statistics changed (telemetry comes as telemetryReceived).
     void robotChanged(const QString &name);

@@ -23,6 +23,13 @@ private:
     {
         return *mqtt::BrokerAddress::fromUrl(broker.url(), nullptr);
     }
+    // Connected, and every topic the directory reads subscribed: a message
+    // a bridge publishes from now on reaches it (only retained ones would before).
+    static bool listen(FleetDirectory &directory, const MosquittoBroker &broker)
+    {
+        QSignalSpy subscribed(&directory, &FleetDirectory::subscribed);
+        return directory.connectToBroker(addressOf(broker)) && subscribed.wait(10000);
+    }
     static QJsonObject telemetry(int bumps, int cliffLeft, int mode = 2)
     {
         oi::SensorSnapshot s(oi::profile(oi::ProfileId::Create2));
@@ -82,7 +89,7 @@ private slots:
 
         FleetDirectory directory;
         QSignalSpy appeared(&directory, &FleetDirectory::robotAppeared);
-        QVERIFY(directory.connectToBroker(addressOf(broker)));
+        QVERIFY(listen(directory, broker));
         QTRY_COMPARE_WITH_TIMEOUT(appeared.count(), 1, 5000);
         QCOMPARE(appeared[0][0].toString(), QStringLiteral("r1"));
         const RemoteRobot *r1 = directory.robot(QStringLiteral("r1"));
@@ -126,7 +133,7 @@ private slots:
         FleetDirectory directory;
         QSignalSpy appeared(&directory, &FleetDirectory::robotAppeared);
         QSignalSpy frames(&directory, &FleetDirectory::telemetryReceived);
-        QVERIFY(directory.connectToBroker(addressOf(broker)));
+        QVERIFY(listen(directory, broker));
         QTRY_COMPARE_WITH_TIMEOUT(appeared.count(), 1, 5000);
         bridge.publishRaw(mqtt::topics::telemetry("r1"), R"({"key_frame": true, "bumps_wheel_drops": 1, "voltage": 15000, "distance": 4})");
         bridge.publishRaw(mqtt::topics::telemetry("r1"), R"({"voltage": 14990})");
@@ -162,7 +169,7 @@ private slots:
         QSignalSpy appeared(&directory, &FleetDirectory::robotAppeared);
         QSignalSpy errors(&directory, &FleetDirectory::errorOccurred);
         QSignalSpy frames(&directory, &FleetDirectory::telemetryReceived);
-        QVERIFY(directory.connectToBroker(addressOf(broker)));
+        QVERIFY(listen(directory, broker));
         QTRY_COMPARE_WITH_TIMEOUT(appeared.count(), 1, 5000);
         directory.follow("r1", true); // every message read as it comes
         bridge.publishTelemetry(telemetry(0x01, 0));
@@ -194,7 +201,7 @@ private slots:
         QVERIFY2(broker.start(), qPrintable(broker.error()));
         FleetDirectory directory;
         QSignalSpy changed(&directory, &FleetDirectory::robotChanged);
-        QVERIFY(directory.connectToBroker(addressOf(broker)));
+        QVERIFY(listen(directory, broker));
         QTRY_VERIFY_WITH_TIMEOUT(directory.isConnected(), 5000);
 
         // A bridge in another process, with its will set, dies by SIGKILL:
@@ -237,7 +244,8 @@ private slots:
         FleetDirectory directory;
         QSignalSpy connection(&directory, &FleetDirectory::connectionChanged);
         QSignalSpy frames(&directory, &FleetDirectory::telemetryReceived);
-        QVERIFY(directory.connectToBroker(addressOf(broker)));
+        QVERIFY(listen(directory, broker));
+        QSignalSpy subscribedAgain(&directory, &FleetDirectory::subscribed);
         QTRY_VERIFY_WITH_TIMEOUT(directory.robot("r1"), 5000);
         directory.follow("r1", true);
 
@@ -246,6 +254,7 @@ private slots:
         QVERIFY2(broker.start(), qPrintable(broker.error()));
         QTRY_VERIFY_WITH_TIMEOUT(directory.isConnected() && r1.client().isConnected(), 10000);
         QCOMPARE(connection.last().at(0).toBool(), true);
+        QTRY_COMPARE_WITH_TIMEOUT(subscribedAgain.count(), 1, 10000);
         r1.publishTelemetry(telemetry(0x01, 0));
         QTRY_COMPARE_WITH_TIMEOUT(frames.count(), 1, 5000);
         QCOMPARE(frames[0][1].value<oi::SensorSnapshot>().raw(7), 0x01);
@@ -261,7 +270,7 @@ private slots:
         r2.publishState();
         FleetDirectory directory;
         QSignalSpy frames(&directory, &FleetDirectory::telemetryReceived);
-        QVERIFY(directory.connectToBroker(addressOf(broker)));
+        QVERIFY(listen(directory, broker));
         QTRY_COMPARE_WITH_TIMEOUT(directory.names().size(), 2, 5000);
         directory.follow("r1", true);
         r2.publishTelemetry(telemetry(0x02, 0));
@@ -291,7 +300,7 @@ private slots:
             bridges.back()->publishState();
         }
         FleetDirectory directory;
-        QVERIFY(directory.connectToBroker(addressOf(broker)));
+        QVERIFY(listen(directory, broker));
         QTRY_COMPARE_WITH_TIMEOUT(directory.names().size(), 10, 5000);
         for (const auto &b : bridges)
             b->publishTelemetry(telemetry(b->robot() == "robot-4" ? 0x01 : 0, 0));

@@ -3,6 +3,7 @@
 // official reader (@mcap/core, installed with npm) and by our own record
 // walker; damaged recordings; paths that cannot be written; roomba-ctl mcap.
 #include "mcap_records.h"
+#include "npm_packages.h" // tests/common
 #include "oirec_records.h" // tests/common
 #include "recording_mcap.h"
 #include "robot_link.h"
@@ -90,34 +91,6 @@ QMap<QString, quint16> channelsOf(const QByteArray &mcapFile)
     return out;
 }
 
-struct Run {
-    int exitCode = -1;
-    QByteArray out, err;
-};
-
-Run run(const QString &program, const QStringList &arguments, const QString &workingDirectory = {},
-        int timeoutMs = 60000)
-{
-    QProcess p;
-    if (!workingDirectory.isEmpty())
-        p.setWorkingDirectory(workingDirectory);
-    p.start(program, arguments);
-    if (!p.waitForFinished(timeoutMs))
-        p.kill();
-    p.waitForFinished();
-    return {p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1, p.readAllStandardOutput(),
-            p.readAllStandardError()};
-}
-
-// npm's code for a registry it cannot reach (ENOTFOUND, ECONNREFUSED, ...), or "".
-QString unreachable(const QByteArray &npmOutput)
-{
-    for (const char *code : {"ENOTFOUND", "EAI_AGAIN", "ECONNREFUSED", "ETIMEDOUT", "ECONNRESET", "ENETUNREACH",
-                             "EHOSTUNREACH"})
-        if (npmOutput.contains(code))
-            return QString::fromLatin1(code);
-    return QString();
-}
 } // namespace
 
 class TestMcapExport : public QObject {
@@ -130,7 +103,8 @@ private:
     // The official reader's account of `path`, as read_mcap.js prints it.
     QJsonObject readWithMcapCore(const QString &path)
     {
-        const Run r = run(QStringLiteral("node"), {QDir(m_readerDir).filePath("read_mcap.js"), path}, m_readerDir);
+        const ProcessRun r =
+            runProcess(QStringLiteral("node"), {QDir(m_readerDir).filePath("read_mcap.js"), path}, m_readerDir);
         if (r.exitCode != 0)
             qWarning("read_mcap.js: %s", r.err.constData());
         return QJsonDocument::fromJson(r.out).object();
@@ -168,31 +142,14 @@ private slots:
     void installTheOfficialReader()
     {
         m_readerDir = QStringLiteral(MCAP_READER_DIR);
-        QVERIFY2(!QStandardPaths::findExecutable("node").isEmpty(), "node is not installed (.ci/install-deps)");
-        QVERIFY2(!QStandardPaths::findExecutable("npm").isEmpty(), "npm is not installed (.ci/install-deps)");
-        QVERIFY(QDir().mkpath(m_readerDir));
-        for (const char *name : {"package.json", "read_mcap.js"}) {
-            const QString to = QDir(m_readerDir).filePath(name);
-            QFile::remove(to);
-            QVERIFY(QFile::copy(QStringLiteral(MCAP_READER_SOURCE "/") + name, to));
-        }
-        if (QFile::exists(QDir(m_readerDir).filePath("node_modules/@mcap/core/package.json")) &&
-            QFile::exists(QDir(m_readerDir).filePath("node_modules/@mcap/support/package.json")))
-            return;
-        // Bounded waits: a registry that swallows packets must not hold the test up.
-        const Run npm = run(QStringLiteral("npm"),
-                            {"install", "--no-audit", "--no-fund", "--no-save", "--fetch-timeout=30000",
-                             "--fetch-retries=1"},
-                            m_readerDir, 180000);
-        const QString code = npm.exitCode == -1 ? QStringLiteral("no answer within 3 minutes")
-                             : npm.exitCode != 0 ? unreachable(npm.out + npm.err)
-                                                 : QString();
-        if (!code.isEmpty())
+        const NpmInstall npm = installNpmPackages(m_readerDir, QStringLiteral(MCAP_READER_SOURCE),
+                                                  {"package.json", "read_mcap.js"}, {"@mcap/core", "@mcap/support"});
+        if (!npm.unreachable.isEmpty())
             QSKIP(qPrintable(QStringLiteral("npm cannot reach its registry (%1), so @mcap/core, the official MCAP "
                                             "reader, is not installed and no independent reader checks the export. "
                                             "Run the test again with the registry reachable.")
-                                 .arg(code)));
-        QVERIFY2(npm.exitCode == 0, npm.err.constData());
+                                 .arg(npm.unreachable)));
+        QVERIFY2(npm.error.isEmpty(), qPrintable(npm.error));
     }
 
     void officialReaderOpensEveryExport_data()
@@ -417,7 +374,7 @@ private slots:
 
         // roomba-ctl writes the same and names the damage.
         const QString ctlOut = m_dir.filePath("cut-ctl.mcap");
-        const Run ctl = run(ROOMBA_CTL_PATH, {"mcap", cut, "-o", ctlOut, "--compression", "none"});
+        const ProcessRun ctl = runProcess(ROOMBA_CTL_PATH, {"mcap", cut, "-o", ctlOut, "--compression", "none"});
         QCOMPARE(ctl.exitCode, 1);
         QVERIFY2(ctl.err.contains(QString("truncated record at byte %1").arg(damage->byteOffset).toUtf8()),
                  ctl.err.constData());
@@ -446,17 +403,17 @@ private slots:
 
     void roombaCtlChecksItsArguments()
     {
-        const Run noOut = run(ROOMBA_CTL_PATH, {"mcap", m_recording});
+        const ProcessRun noOut = runProcess(ROOMBA_CTL_PATH, {"mcap", m_recording});
         QCOMPARE(noOut.exitCode, 2);
         QVERIFY2(noOut.err.contains("-o OUT.mcap"), noOut.err.constData());
-        const Run badCompression = run(ROOMBA_CTL_PATH, {"mcap", m_recording, "-o", m_dir.filePath("x.mcap"),
+        const ProcessRun badCompression = runProcess(ROOMBA_CTL_PATH, {"mcap", m_recording, "-o", m_dir.filePath("x.mcap"),
                                                          "--compression", "gzip"});
         QCOMPARE(badCompression.exitCode, 2);
         QVERIFY2(badCompression.err.contains("unknown compression 'gzip'; use zstd, lz4 or none"),
                  badCompression.err.constData());
         QVERIFY(!QFile::exists(m_dir.filePath("x.mcap")));
         const QString out = m_dir.filePath("ctl.mcap");
-        const Run ok = run(ROOMBA_CTL_PATH, {"mcap", m_recording, "-o", out, "--compression", "lz4"});
+        const ProcessRun ok = runProcess(ROOMBA_CTL_PATH, {"mcap", m_recording, "-o", out, "--compression", "lz4"});
         QCOMPARE(ok.exitCode, 0);
         QVERIFY(fileBytes(out).startsWith("\x89MCAP0\r\n"));
         // Success is said, with where the file went.

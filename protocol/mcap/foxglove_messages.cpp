@@ -74,6 +74,15 @@ QString pascalCase(const QString &key)
 
 } // namespace
 
+RobotTopics::RobotTopics(const QString &name)
+    : robot(name), telemetry('/' + name + "/telemetry"), telemetryRos2('/' + name + "/telemetry_ros2"),
+      pose('/' + name + "/pose"), truePose('/' + name + "/true_pose"), transform('/' + name + "/tf"),
+      bytesReceived('/' + name + "/bytes_received"), bytesSent('/' + name + "/bytes_sent"),
+      events('/' + name + "/events"), markers('/' + name + "/markers"), odomFrame(name + "/odom"),
+      baseFrame(name + "/base_link")
+{
+}
+
 QByteArray poseInFrameSchema()
 {
     return QByteArray(R"({"title":"foxglove.PoseInFrame","type":"object","properties":{"timestamp":)") + kTimeSchema +

@@ -18,6 +18,26 @@
 // server (docs/mcap.md, docs/foxglove.md). Times are nanoseconds since 1970.
 namespace oilink::foxglove {
 
+// The topics and frames of one robot, `robot` ("r1"), named alike in an MCAP
+// file and live, so that a layout made on one works on the other.
+struct RobotTopics {
+    explicit RobotTopics(const QString &robot);
+    QString robot;
+    QString telemetry;     // /r1/telemetry
+    QString telemetryRos2; // /r1/telemetry_ros2 (live only)
+    QString pose;          // /r1/pose, in frame r1/odom
+    QString truePose;      // /r1/true_pose, in frame room (a virtual robot's)
+    QString transform;     // /r1/tf: r1/odom → r1/base_link
+    QString bytesReceived; // /r1/bytes_received (a file only)
+    QString bytesSent;     // /r1/bytes_sent (a file only)
+    QString events;        // /r1/events
+    QString markers;       // /r1/markers
+    QString odomFrame;     // r1/odom
+    QString baseFrame;     // r1/base_link
+};
+// The frame of a virtual robot's true pose: the room's coordinates.
+inline constexpr char kRoomFrame[] = "room";
+
 // foxglove.Log levels.
 enum LogLevel { Info = 2, Warning = 3 };
 

@@ -65,21 +65,21 @@ public:
         const QMap<QString, QString> robot{{"robot", profileMetadata(profile).value("robot")}};
         m_telemetry = m_writer.addChannel(
             m_writer.addSchema(title, jsonSchema, telemetrySchema(profile, m_recording.streamedPackets(), title)),
-            mcap_topics::kTelemetry, json, robot);
+            m_topics.telemetry, json, robot);
         const quint16 poseInFrame = m_writer.addSchema("foxglove.PoseInFrame", jsonSchema, poseInFrameSchema());
-        m_pose = m_writer.addChannel(poseInFrame, mcap_topics::kPose, json);
+        m_pose = m_writer.addChannel(poseInFrame, m_topics.pose, json);
         const std::vector<Recording::TruePose> &truePoses = m_recording.truePoses();
-        m_truePose = truePoses.empty() ? 0 : m_writer.addChannel(poseInFrame, mcap_topics::kTruePose, json);
+        m_truePose = truePoses.empty() ? 0 : m_writer.addChannel(poseInFrame, m_topics.truePose, json);
         m_transform = m_writer.addChannel(
             m_writer.addSchema("foxglove.FrameTransform", jsonSchema, frameTransformSchema()),
-            mcap_topics::kTransform, json);
+            m_topics.transform, json);
         const quint16 bytes = m_writer.addSchema("roomba.Bytes", jsonSchema, kBytesSchema);
-        m_received = m_writer.addChannel(bytes, mcap_topics::kReceived, json);
-        m_sent = m_writer.addChannel(bytes, mcap_topics::kSent, json);
+        m_received = m_writer.addChannel(bytes, m_topics.bytesReceived, json);
+        m_sent = m_writer.addChannel(bytes, m_topics.bytesSent, json);
         const quint16 log = m_writer.addSchema("foxglove.Log", jsonSchema, logSchema());
-        m_events = m_writer.addChannel(log, mcap_topics::kEvents, json);
+        m_events = m_writer.addChannel(log, m_topics.events, json);
         const QList<RecordingMarker> &marks = m_recording.markers();
-        const quint16 markers = marks.isEmpty() ? 0 : m_writer.addChannel(log, mcap_topics::kMarkers, json);
+        const quint16 markers = marks.isEmpty() ? 0 : m_writer.addChannel(log, m_topics.markers, json);
 
         if (!m_writer.writeMetadata("recording", recordingMetadata(m_recording)))
             return false;
@@ -112,7 +112,7 @@ public:
             odometry.update(frame);
             ok = ok && m_writer.writeMessage(m_telemetry, ns, snapshotToJsonText(shown)) && writePose(ns, odometry.pose());
             logEvents(before ? &*before : nullptr, shown, [&](int level, const QString &message) {
-                ok = ok && m_writer.writeMessage(m_events, ns, logJson(ns, level, message, "roomba"));
+                ok = ok && m_writer.writeMessage(m_events, ns, logJson(ns, level, message, m_topics.robot));
             });
             before = std::move(shown);
         });
@@ -161,17 +161,19 @@ private:
     bool writeTruePose(const Recording::TruePose &p)
     {
         const quint64 ns = timeNs(p.timeUs);
-        return m_writer.writeMessage(m_truePose, ns, poseInFrameJson(ns, "room", p.pose));
+        return m_writer.writeMessage(m_truePose, ns, poseInFrameJson(ns, kRoomFrame, p.pose));
     }
 
     bool writePose(quint64 ns, const oi::Pose &pose)
     {
-        return m_writer.writeMessage(m_pose, ns, poseInFrameJson(ns, "odom", pose)) &&
-               m_writer.writeMessage(m_transform, ns, frameTransformJson(ns, "odom", "base_link", pose));
+        return m_writer.writeMessage(m_pose, ns, poseInFrameJson(ns, m_topics.odomFrame, pose)) &&
+               m_writer.writeMessage(m_transform, ns,
+                                     frameTransformJson(ns, m_topics.odomFrame, m_topics.baseFrame, pose));
     }
 
     const Recording &m_recording;
     mcap::Writer &m_writer;
+    const RobotTopics m_topics{QString::fromLatin1(kMcapRobot)};
     quint64 m_startNs = 0;
     quint16 m_telemetry = 0, m_pose = 0, m_truePose = 0, m_transform = 0, m_received = 0, m_sent = 0, m_events = 0;
     std::size_t m_nextReceived = 0, m_nextSent = 0;

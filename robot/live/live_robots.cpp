@@ -13,6 +13,7 @@ struct LiveRobots::Served {
     RobotSession *robot = nullptr;
     int number = 0;
     QString prefix; // "r1"
+    std::optional<fx::RobotTopics> topics;
     const oi::RobotProfile *profile = nullptr;
     std::vector<const oi::PacketInfo *> packets;
     foxglove::Server::ChannelId telemetry = 0, telemetryRos2 = 0, pose = 0, transform = 0, truePose = 0, events = 0,
@@ -51,6 +52,7 @@ void LiveRobots::add(RobotSession *robot)
     for (served->number = 1; taken.contains(served->number); ++served->number) {
     }
     served->prefix = QStringLiteral("r%1").arg(served->number);
+    served->topics.emplace(served->prefix);
     m_robots.insert(robot, served);
     advertise(*served);
     served->connections << connect(robot, &RobotSession::frameReceived, this,
@@ -96,24 +98,23 @@ void LiveRobots::advertise(Served &served)
     using foxglove::Delivery;
     served.profile = &served.robot->robotProfile();
     served.packets = fx::profilePackets(*served.profile);
-    const QString p = QLatin1Char('/') + served.prefix;
+    const fx::RobotTopics &t = *served.topics;
     const QString json = QStringLiteral("json"), jsonSchema = QStringLiteral("jsonschema");
     const QString title = fx::telemetryTitle(*served.profile);
     served.telemetry = m_server.advertise(
-        {p + "/telemetry", json, title, fx::telemetrySchema(*served.profile, served.packets, title), jsonSchema},
+        {t.telemetry, json, title, fx::telemetrySchema(*served.profile, served.packets, title), jsonSchema},
         Delivery::Latest);
-    served.telemetryRos2 = m_server.advertise({p + "/telemetry_ros2", QStringLiteral("cdr"),
+    served.telemetryRos2 = m_server.advertise({t.telemetryRos2, QStringLiteral("cdr"),
                                                fx::telemetryRos2Name(*served.profile),
                                                fx::telemetryRos2Schema(served.packets), QStringLiteral("ros2msg")},
                                               Delivery::Latest);
-    served.pose = m_server.advertise({p + "/pose", json, "foxglove.PoseInFrame", fx::poseInFrameSchema(), jsonSchema},
+    served.pose = m_server.advertise({t.pose, json, "foxglove.PoseInFrame", fx::poseInFrameSchema(), jsonSchema},
                                      Delivery::Latest);
     served.transform = m_server.advertise(
-        {p + "/tf", json, "foxglove.FrameTransform", fx::frameTransformSchema(), jsonSchema}, Delivery::Latest);
-    served.events =
-        m_server.advertise({p + "/events", json, "foxglove.Log", fx::logSchema(), jsonSchema}, Delivery::Every);
+        {t.transform, json, "foxglove.FrameTransform", fx::frameTransformSchema(), jsonSchema}, Delivery::Latest);
+    served.events = m_server.advertise({t.events, json, "foxglove.Log", fx::logSchema(), jsonSchema}, Delivery::Every);
     served.markers =
-        m_server.advertise({p + "/markers", json, "foxglove.Log", fx::logSchema(), jsonSchema}, Delivery::Every);
+        m_server.advertise({t.markers, json, "foxglove.Log", fx::logSchema(), jsonSchema}, Delivery::Every);
     // The true pose once the robot turns out to have one (onFrame).
 }
 
@@ -142,22 +143,21 @@ void LiveRobots::onFrame(Served &served, double readSeconds, const oi::SensorSna
         m_server.publish(served.telemetryRos2, ns,
                          [frame, packets = served.packets] { return fx::telemetryCdr(frame, packets); });
     const oi::Pose pose = robot->odometry().pose();
-    const QString odom = served.prefix + QStringLiteral("/odom");
+    const fx::RobotTopics &t = *served.topics;
     if (reads(served.pose))
-        m_server.publish(served.pose, ns, [ns, odom, pose] { return fx::poseInFrameJson(ns, odom, pose); });
+        m_server.publish(served.pose, ns, [ns, &t, pose] { return fx::poseInFrameJson(ns, t.odomFrame, pose); });
     if (reads(served.transform))
-        m_server.publish(served.transform, ns, [ns, odom, pose, prefix = served.prefix] {
-            return fx::frameTransformJson(ns, odom, prefix + QStringLiteral("/base_link"), pose);
+        m_server.publish(served.transform, ns, [ns, &t, pose] {
+            return fx::frameTransformJson(ns, t.odomFrame, t.baseFrame, pose);
         });
     if (m_truePose && (!served.truePose || reads(served.truePose))) {
         if (const std::optional<oi::Pose> truePose = m_truePose(robot)) {
             if (!served.truePose)
-                served.truePose = m_server.advertise({QLatin1Char('/') + served.prefix + "/true_pose",
-                                                      QStringLiteral("json"), "foxglove.PoseInFrame",
+                served.truePose = m_server.advertise({t.truePose, QStringLiteral("json"), "foxglove.PoseInFrame",
                                                       fx::poseInFrameSchema(), QStringLiteral("jsonschema")},
                                                      foxglove::Delivery::Latest);
             m_server.publish(served.truePose, ns,
-                             [ns, p = *truePose] { return fx::poseInFrameJson(ns, QStringLiteral("room"), p); });
+                             [ns, p = *truePose] { return fx::poseInFrameJson(ns, fx::kRoomFrame, p); });
         }
     }
     if (!m_server.isSubscribed(served.events)) {

@@ -26,6 +26,7 @@
 #include <QElapsedTimer>
 #include <QFile>
 #include <QTextStream>
+#include <QThread>
 
 #include <poll.h>
 #include <unistd.h>
@@ -94,8 +95,10 @@ void drive(SteppedSession &s, double seconds, const std::function<bool()> &stop 
     for (qint64 ms = 0; ms < qint64(seconds * 1000) && !(stop && stop()); ms += 15) {
         s.clock.advance(15);
         QCoreApplication::processEvents();
-        while (wall.nsecsElapsed() < ms * 100000) // 10x
-            QCoreApplication::processEvents(QEventLoop::AllEvents, 1);
+        while (wall.nsecsElapsed() < ms * 100000) { // 10x
+            QCoreApplication::processEvents();
+            QThread::usleep(300);
+        }
         if (ms == qint64(seconds * 500))
             s.robot.dropMarker(QStringLiteral("halfway"));
     }
@@ -108,6 +111,7 @@ int telemetry(const QString &dir, double seconds)
     foxglove::Server server(QStringLiteral("live_rig"), s.clock);
     server.setLimits({50, 256 * 1024 * 1024}); // the checking client is never dropped
     LiveRobots live(server);
+    live.setTruePose([&s](const RobotSession *) { return std::optional(s.line->robot().truePose()); });
     live.add(&s.robot);
     if (!s.live() || !listen(server))
         return 1;

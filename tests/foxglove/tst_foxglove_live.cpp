@@ -21,7 +21,7 @@ private:
         QVERIFY(dir.isValid());
         const ProcessRun r = runProcess(QStringLiteral("node"),
                                         {QDir(m_clientDir).filePath("live_check.js"), QLatin1String(scenario),
-                                         QStringLiteral(LIVE_RIG_PATH), dir.path()},
+                                         QStringLiteral(LIVE_RIG_PATH), dir.path(), QStringLiteral(LIVE_LAYOUT)},
                                         m_clientDir, 200000);
         qInfo("%s: %s", scenario, r.out.trimmed().constData());
         QVERIFY2(r.exitCode == 0, r.err.constData());

@@ -13,7 +13,7 @@ const { spawn } = require("child_process");
 const fs = require("fs");
 const readline = require("readline");
 
-const [scenario, rigPath, dir] = process.argv.slice(2);
+const [scenario, rigPath, dir, layoutPath] = process.argv.slice(2);
 const failures = [];
 function check(ok, what) {
   if (!ok) failures.push(what);
@@ -132,10 +132,11 @@ async function telemetry() {
   const rig = startRig(["telemetry", dir, "60"]);
   const url = await rig.expect("url");
   const clients = [connect(url, "foxglove.websocket.v1"), connect(url, "foxglove.sdk.v1")];
+  const topics = [...kTopics, "true_pose"];
   for (const c of clients) {
     await c.opened;
-    await until(() => c.channels.size >= kTopics.length, 10000, "the advertisement");
-    for (const t of kTopics) check(c.subscribe(`/r1/${t}`), `/r1/${t} advertised to ${c.ws.protocol}`);
+    await until(() => c.channels.size >= topics.length, 10000, "the advertisement");
+    for (const t of topics) check(c.subscribe(`/r1/${t}`), `/r1/${t} advertised to ${c.ws.protocol}`);
   }
   const summary = { subprotocols: clients.map((c) => c.ws.protocol) };
   check(summary.subprotocols.join() === "foxglove.websocket.v1,foxglove.sdk.v1", `each name accepted: ${summary.subprotocols}`);
@@ -148,6 +149,7 @@ async function telemetry() {
     "/r1/tf": ["json", "foxglove.FrameTransform", "jsonschema"],
     "/r1/events": ["json", "foxglove.Log", "jsonschema"],
     "/r1/markers": ["json", "foxglove.Log", "jsonschema"],
+    "/r1/true_pose": ["json", "foxglove.PoseInFrame", "jsonschema"],
   };
   for (const [topic, [encoding, schemaName, schemaEncoding]] of Object.entries(expect)) {
     const c = channel(topic);
@@ -157,6 +159,13 @@ async function telemetry() {
   const schema = JSON.parse(channel("/r1/telemetry").schema);
   check(schema.properties.voltage?.title === "Voltage" && schema.properties.voltage?.description.includes("mV"),
     `the telemetry schema names each packet: ${JSON.stringify(schema.properties.voltage)}`);
+  // The shipped layout asks only for what is served.
+  const layout = JSON.stringify(JSON.parse(fs.readFileSync(layoutPath, "utf8")));
+  check(layout.includes('"/r1/telemetry.voltage"') && layout.includes('"/r1/events"'), "the layout plots the battery and logs the events");
+  for (const [, topic, field] of layout.matchAll(/"(\/r1\/[a-z_0-9]+)(?:\.([a-z_0-9]+))?"/g)) {
+    check(channel(topic), `the layout's ${topic} is served`);
+    if (field) check(topic === "/r1/telemetry" && schema.properties[field], `the layout's ${topic}.${field} is a field of the telemetry`);
+  }
   check(clients[0].serverInfo[0]?.capabilities.includes("time") && clients[0].serverInfo[0]?.metadata["r1.profile"] === "create2",
     `serverInfo: ${JSON.stringify(clients[0].serverInfo[0])}`);
 
@@ -209,6 +218,8 @@ async function telemetry() {
     const markers = c.on("/r1/markers").map((m) => JSON.parse(text.decode(m.data)));
     const events = c.on("/r1/events").map((m) => JSON.parse(text.decode(m.data)).message);
     const poses = c.on("/r1/pose").map((m) => JSON.parse(text.decode(m.data)));
+    const truePoses = c.on("/r1/true_pose").map((m) => JSON.parse(text.decode(m.data)));
+    check(truePoses.length >= 50 * 55 && truePoses[0].frame_id === "room", `${c.ws.protocol}: ${truePoses.length} true poses`);
     const last = poses[poses.length - 1]?.pose.position;
     summary.clients.push({ subprotocol: c.ws.protocol, telemetry: json.length, ros2: cdr.length, spanS, fields, markers: markers.map((m) => m.message), events, lastPosition: last });
     // 60 s at 50 a second, less what came before the subscriptions took.

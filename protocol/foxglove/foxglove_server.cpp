@@ -99,7 +99,10 @@ struct Server::ChannelState {
     Channel channel;
     Delivery delivery;
     ChannelId id = 0;
-    qint64 sentNs = std::numeric_limits<qint64>::min();
+    // The rate limit, as a virtual schedule: the next message is due at
+    // scheduledNs (less a quarter interval of tolerance), which each message
+    // sent moves on by one interval.
+    qint64 scheduledNs = 0;
     // The latest message held back by the rate limit, made when sent.
     std::function<QByteArray()> pending;
     quint64 pendingTimeNs = 0;
@@ -449,8 +452,12 @@ void Server::publish(ChannelId id, quint64 timeNs, const std::function<QByteArra
         sendNow(channel, timeNs, encode);
         return;
     }
-    const qint64 dueNs = channel.sentNs == std::numeric_limits<qint64>::min() ? 0 : channel.sentNs + intervalNs();
-    if (m_clock.nowNs() >= dueNs) {
+    const qint64 now = m_clock.nowNs();
+    // A quarter interval of tolerance: a frame that comes a little early
+    // (frames arrive with jitter) goes at once, while the average stays
+    // within the rate.
+    const qint64 dueNs = channel.scheduledNs - intervalNs() / 4;
+    if (now >= dueNs) {
         channel.pending = nullptr;
         channel.timer->stop();
         sendNow(channel, timeNs, encode);
@@ -460,12 +467,12 @@ void Server::publish(ChannelId id, quint64 timeNs, const std::function<QByteArra
     channel.pending = encode;
     channel.pendingTimeNs = timeNs;
     if (!channel.timer->isActive())
-        channel.timer->start(int((dueNs - m_clock.nowNs() + 999999) / 1000000));
+        channel.timer->start(int((dueNs - now + 999999) / 1000000));
 }
 
 void Server::sendNow(ChannelState &channel, quint64 timeNs, const std::function<QByteArray()> &encode)
 {
-    channel.sentNs = m_clock.nowNs();
+    channel.scheduledNs = std::max(channel.scheduledNs, m_clock.nowNs()) + intervalNs();
     const QByteArray payload = encode();
     ++m_encodes;
     QByteArray message(1 + 4 + 8, Qt::Uninitialized);

@@ -128,7 +128,7 @@ private slots:
                 made << QString::number(i);
                 return QByteArray::number(i);
             });
-            m_clock.advance(3); // five frames within the 20 ms of one message
+            m_clock.advance(2); // five frames within the 15 ms before the next may go
         }
         QCOMPARE(made, QStringList{"0"});
         m_clock.advance(20);
@@ -137,6 +137,20 @@ private slots:
         const QByteArray &last = client->binaries.last();
         QCOMPARE(qFromLittleEndian<quint32>(last.constData() + 1), quint32(7)); // the client's subscription id
         QCOMPARE(qFromLittleEndian<quint64>(last.constData() + 5), quint64(4)); // the frame's time
+    }
+
+    // A robot's 66.7 frames a second become 50 messages a second.
+    void aStreamGoesAtTheRate()
+    {
+        auto client = connected();
+        QVERIFY(client);
+        QVERIFY(subscribed(*client, 1, m_frames));
+        int made = 0;
+        for (int i = 0; i < 400; ++i) { // 6 s
+            m_server->publish(m_frames, quint64(i), [&] { return ++made, QByteArray("{}"); });
+            m_clock.advance(15);
+        }
+        QCOMPARE(made, 1 + 50 * 6); // the first, then 50 a second
     }
 
     void everyLogLineIsSent()

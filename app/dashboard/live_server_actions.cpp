@@ -167,6 +167,8 @@ void LiveServerActions::showState()
                                           : tr("Not serving: %1").arg(m_error));
     m_clients->setText(tr("Clients connected: %1").arg(on ? m_server.clientCount() : 0));
     m_reach->setText(!on ? QString()
+                     : !m_error.isEmpty()
+                         ? tr("Still serving on the address before: %1").arg(m_error)
                      : m_server.isLoopback()
                          ? tr("Only programs on this computer can connect.")
                          : tr("Reachable from other computers, as asked: anyone on the network can watch the "
@@ -180,7 +182,7 @@ void LiveServerActions::retranslate()
         return;
     m_dialog->setWindowTitle(tr("Live data server"));
     m_intro->setText(tr("Serves every robot's telemetry, pose, events and markers over the Foxglove WebSocket "
-                        "protocol, for Foxglove, Lichtblick and PlotJuggler (docs/foxglove.md)."));
+                        "protocol, for Foxglove, Lichtblick and PlotJuggler."));
     m_serve->setText(tr("Serve live data"));
     m_addressLabel->setText(tr("Address and port:"));
     m_rateLabel->setText(tr("Messages a second per channel:"));

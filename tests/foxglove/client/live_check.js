@@ -269,7 +269,7 @@ function handshakeStatus(url, subprotocols) {
       resolve(res.statusCode);
       req.destroy();
     });
-    ws.on("error", () => {});
+    ws.on("error", (e) => resolve(`error: ${e.message}`));
   });
 }
 

@@ -134,9 +134,10 @@ int main(int argc, char *argv[])
         std::fprintf(stderr, "%s\n", qPrintable(server.errorString()));
         return 1;
     }
+    // Before the robots, which may still hand over a frame as they close.
+    std::unordered_map<quint64, qint64> framesAt; // a frame's time in the protocol → when the model had it
     LiveRobots live(server);
     std::vector<std::unique_ptr<RobotSession>> robots;
-    std::unordered_map<quint64, qint64> framesAt; // a frame's time in the protocol → when the model had it
     for (int i = 0; i < robotCount; ++i) {
         auto robot = std::make_unique<RobotSession>();
         robot->setTransportFactory(transports::transportFactory());

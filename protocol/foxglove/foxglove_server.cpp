@@ -29,6 +29,8 @@ constexpr quint64 kMaxClientMessage = 64 * 1024;
 constexpr qsizetype kMaxHandshake = 16 * 1024;
 constexpr int kHandshakeMs = 10000;
 constexpr int kMaxSubscriptions = 4096;
+// Clients at once, handshakes included: each costs a copy of every message.
+constexpr int kMaxConnections = 32;
 
 enum StatusLevel { StatusInfo = 0, StatusWarning = 1, StatusError = 2 };
 enum BinaryOp : quint8 { MessageData = 1, Time = 2 };
@@ -207,6 +209,13 @@ QString Server::url() const
 void Server::onTcpConnection()
 {
     while (QTcpSocket *socket = m_tcp->nextPendingConnection()) {
+        if (clientCount() + m_tcp->findChildren<QTcpSocket *>(Qt::FindDirectChildrenOnly).size() > kMaxConnections) {
+            socket->write("HTTP/1.1 503 Service Unavailable\r\nConnection: close\r\n\r\n");
+            socket->disconnectFromHost();
+            connect(socket, &QTcpSocket::disconnected, socket, &QObject::deleteLater);
+            emit clientRefused(peerOf(socket), QStringLiteral("came when %1 were connected").arg(kMaxConnections));
+            continue;
+        }
         connect(socket, &QTcpSocket::readyRead, this, [this, socket] { readHandshake(socket); });
         connect(socket, &QTcpSocket::disconnected, socket, &QObject::deleteLater);
         auto *timeout = new QTimer(socket);

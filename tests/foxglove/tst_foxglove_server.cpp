@@ -10,6 +10,7 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QSignalSpy>
+#include <QTcpSocket>
 #include <QTest>
 #include <QWebSocket>
 #include <QWebSocketHandshakeOptions>
@@ -200,6 +201,25 @@ private slots:
         QCOMPARE(refused.first().at(1).toString(), QString("offered foxglove.bogus.v1"));
         QVERIFY(ended.count() || ended.wait(kTimeoutMs));
         QCOMPARE(m_server->clientCount(), 0);
+    }
+
+    // Connections that never finish their handshake cannot crowd the server
+    // out: beyond 32 at once, the next is told 503 and closed.
+    void connectionsAreBounded()
+    {
+        QSignalSpy refused(m_server.get(), &foxglove::Server::clientRefused);
+        std::vector<std::unique_ptr<QTcpSocket>> idle;
+        for (int i = 0; i < 33; ++i) {
+            idle.push_back(std::make_unique<QTcpSocket>());
+            idle.back()->connectToHost(QHostAddress::LocalHost, m_server->port());
+            QVERIFY(idle.back()->waitForConnected(kTimeoutMs));
+        }
+        QTRY_COMPARE_WITH_TIMEOUT(refused.count(), 1, kTimeoutMs);
+        QVERIFY2(refused.first().at(1).toString().contains("32 were connected"),
+                 qPrintable(refused.first().at(1).toString()));
+        QTRY_VERIFY_WITH_TIMEOUT(idle.back()->bytesAvailable() || idle.back()->state() != QAbstractSocket::ConnectedState,
+                                 kTimeoutMs);
+        QVERIFY(idle.back()->readAll().startsWith("HTTP/1.1 503"));
     }
 
     void aNewSessionIsToldToEveryClient()

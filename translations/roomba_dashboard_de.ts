@@ -1088,8 +1088,17 @@ Die Wahl entscheidet, wie die Radzähler gelesen werden: Die falsche spiegelt je
         <translation>--sim nimmt 1 bis %1 Roboter, nicht %2</translation>
     </message>
     <message>
+        <source>%1: &apos;%2&apos; is not a size in mm within half of the documents&apos; %3 mm</source>
+        <translation>%1: „%2“ ist keine Größe in mm innerhalb der Hälfte der dokumentierten %3 mm</translation>
+    </message>
+    <message>
+        <source>--wheel-diameter, --left-wheel-diameter, --right-wheel-diameter and --wheel-base go with --sim</source>
+        <translation>--wheel-diameter, --left-wheel-diameter, --right-wheel-diameter und --wheel-base gehören zu --sim</translation>
+    </message>
+    <message>
         <source>Usage: roomba-dashboard [--sim [N] | --port PATH | --tcp HOST:PORT | --replay FILE]
                         [--profile P] [--baud N] [--record FILE] [--lang CODE]
+                        [--foxglove [[ADDRESS:]PORT]]
 
   --sim [N]          the built-in virtual robot, or N of them (up to %2) in one room
   --port PATH        a serial port, USB adapter or pseudo-terminal
@@ -1099,6 +1108,9 @@ Die Wahl entscheidet, wie die Radzähler gelesen werden: Die falsche spiegelt je
   --baud N           the line speed; the profile&apos;s default when left out
   --record FILE      record every byte to and from the robot into FILE
   --lang CODE        the language of the window: %1
+  --foxglove [[ADDRESS:]PORT]  serve the robots live to Foxglove, Lichtblick and
+                     PlotJuggler (Foxglove WebSocket protocol) on ADDRESS (default
+                     127.0.0.1, this computer only) and PORT (default 8765)
   --wheel-diameter MM, --left-wheel-diameter MM, --right-wheel-diameter MM,
   --wheel-base MM    with --sim: the virtual robot&apos;s real wheels (documents: 72
                      and 235 mm), so that its odometry drifts as a real one&apos;s
@@ -1113,6 +1125,7 @@ or the system&apos;s.
 </source>
         <translation>Aufruf: roomba-dashboard [--sim [N] | --port PFAD | --tcp HOST:PORT | --replay DATEI]
                          [--profile P] [--baud N] [--record DATEI] [--lang CODE]
+                         [--foxglove [[ADRESSE:]PORT]]
 
   --sim [N]          der eingebaute virtuelle Roboter, oder N davon (bis %2) in einem Raum
   --port PFAD        ein serieller Port, USB-Adapter oder Pseudo-Terminal
@@ -1122,6 +1135,9 @@ or the system&apos;s.
   --baud N           die Leitungsgeschwindigkeit; ohne Angabe die Vorgabe des Profils
   --record DATEI     jedes Byte zum und vom Roboter in DATEI aufzeichnen
   --lang CODE        die Sprache des Fensters: %1
+  --foxglove [[ADRESSE:]PORT]  die Roboter live für Foxglove, Lichtblick und
+                     PlotJuggler bereitstellen (Foxglove-WebSocket-Protokoll) auf ADRESSE
+                     (Vorgabe 127.0.0.1, nur dieser Computer) und PORT (Vorgabe 8765)
   --wheel-diameter MM, --left-wheel-diameter MM, --right-wheel-diameter MM,
   --wheel-base MM    mit --sim: die wirklichen Räder des virtuellen Roboters
                      (Dokumente: 72 und 235 mm), damit seine Odometrie abdriftet
@@ -1137,12 +1153,8 @@ Systems.
 </translation>
     </message>
     <message>
-        <source>%1: &apos;%2&apos; is not a size in mm within half of the documents&apos; %3 mm</source>
-        <translation>%1: „%2“ ist keine Größe in mm innerhalb der Hälfte der dokumentierten %3 mm</translation>
-    </message>
-    <message>
-        <source>--wheel-diameter, --left-wheel-diameter, --right-wheel-diameter and --wheel-base go with --sim</source>
-        <translation>--wheel-diameter, --left-wheel-diameter, --right-wheel-diameter und --wheel-base gehören zu --sim</translation>
+        <source>--foxglove: %1</source>
+        <translation>--foxglove: %1</translation>
     </message>
 </context>
 <context>
@@ -2596,6 +2608,85 @@ Klicken wählt diesen Roboter: jedes Dock zeigt ihn</translation>
     <message>
         <source>%1: Baud is not sent over raw TCP: the bridge&apos;s serial rate cannot follow, and the robot would talk at a rate the bridge does not. Set the serial port&apos;s rate in ser2net&apos;s config instead (for example 115200 to 19200 on the robot&apos;s port line), then reconnect with the new rate; or use the bridge in RFC 2217 (telnet) mode, where the rate follows</source>
         <translation>%1: Baud wird über rohes TCP nicht gesendet: die serielle Rate der Brücke kann nicht folgen, und der Roboter spräche mit einer Rate, die die Brücke nicht spricht. Stellen Sie stattdessen die Rate des seriellen Ports in der Konfiguration von ser2net ein (zum Beispiel 115200 zu 19200 in der Zeile des Roboterports) und verbinden Sie sich dann mit der neuen Rate neu; oder betreiben Sie die Brücke im RFC-2217-Modus (Telnet), in dem die Rate folgt</translation>
+    </message>
+</context>
+<context>
+    <name>LiveServerActions</name>
+    <message>
+        <source>Live data server: dropped %1: %2</source>
+        <translation>Live-Datenserver: %1 getrennt: %2</translation>
+    </message>
+    <message>
+        <source>Live data server: refused %1, which %2; Foxglove, Lichtblick and PlotJuggler offer the right protocol</source>
+        <translation>Live-Datenserver: %1 abgewiesen (%2); Foxglove, Lichtblick und PlotJuggler bieten das richtige Protokoll an</translation>
+    </message>
+    <message>
+        <source>Live data server: %1. Choose another port in View → Live data server….</source>
+        <translation>Live-Datenserver: %1. Wählen Sie einen anderen Port unter Ansicht → Live-Datenserver….</translation>
+    </message>
+    <message>
+        <source>Live data server on %1: connect Foxglove or Lichtblick to it.</source>
+        <translation>Live-Datenserver auf %1: verbinden Sie Foxglove oder Lichtblick damit.</translation>
+    </message>
+    <message>
+        <source>Live data server on %1, reachable from other machines: anyone on the network can watch the robots.</source>
+        <translation>Live-Datenserver auf %1, von anderen Rechnern erreichbar: jeder im Netzwerk kann die Roboter beobachten.</translation>
+    </message>
+    <message>
+        <source>Live data server stopped.</source>
+        <translation>Live-Datenserver beendet.</translation>
+    </message>
+    <message>
+        <source>Address to paste into Foxglove or Lichtblick (Open connection → Foxglove WebSocket): %1</source>
+        <translation>Adresse zum Einfügen in Foxglove oder Lichtblick (Open connection → Foxglove WebSocket): %1</translation>
+    </message>
+    <message>
+        <source>Not serving.</source>
+        <translation>Nicht aktiv.</translation>
+    </message>
+    <message>
+        <source>Not serving: %1</source>
+        <translation>Nicht aktiv: %1</translation>
+    </message>
+    <message>
+        <source>Clients connected: %1</source>
+        <translation>Verbundene Clients: %1</translation>
+    </message>
+    <message>
+        <source>Still serving on the address before: %1</source>
+        <translation>Weiter auf der bisherigen Adresse aktiv: %1</translation>
+    </message>
+    <message>
+        <source>Only programs on this computer can connect.</source>
+        <translation>Nur Programme auf diesem Computer können sich verbinden.</translation>
+    </message>
+    <message>
+        <source>Reachable from other computers, as asked: anyone on the network can watch the robots. Use 127.0.0.1 to keep it on this computer.</source>
+        <translation>Wie gewünscht von anderen Computern erreichbar: jeder im Netzwerk kann die Roboter beobachten. Mit 127.0.0.1 bleibt er auf diesem Computer.</translation>
+    </message>
+    <message>
+        <source>&amp;Live data server…</source>
+        <translation>&amp;Live-Datenserver…</translation>
+    </message>
+    <message>
+        <source>Live data server</source>
+        <translation>Live-Datenserver</translation>
+    </message>
+    <message>
+        <source>Serves every robot&apos;s telemetry, pose, events and markers over the Foxglove WebSocket protocol, for Foxglove, Lichtblick and PlotJuggler.</source>
+        <translation>Stellt Telemetrie, Pose, Ereignisse und Marker jedes Roboters über das Foxglove-WebSocket-Protokoll bereit, für Foxglove, Lichtblick und PlotJuggler.</translation>
+    </message>
+    <message>
+        <source>Serve live data</source>
+        <translation>Live-Daten bereitstellen</translation>
+    </message>
+    <message>
+        <source>Address and port:</source>
+        <translation>Adresse und Port:</translation>
+    </message>
+    <message>
+        <source>Messages a second per channel:</source>
+        <translation>Nachrichten pro Sekunde und Kanal:</translation>
     </message>
 </context>
 <context>

@@ -1088,8 +1088,17 @@ La elección decide cómo se leen los contadores de las ruedas: la equivocada re
         <translation>--sim admite de 1 a %1 robots, no %2</translation>
     </message>
     <message>
+        <source>%1: &apos;%2&apos; is not a size in mm within half of the documents&apos; %3 mm</source>
+        <translation>%1: «%2» no es un tamaño en mm dentro de la mitad de los %3 mm documentados</translation>
+    </message>
+    <message>
+        <source>--wheel-diameter, --left-wheel-diameter, --right-wheel-diameter and --wheel-base go with --sim</source>
+        <translation>--wheel-diameter, --left-wheel-diameter, --right-wheel-diameter y --wheel-base van con --sim</translation>
+    </message>
+    <message>
         <source>Usage: roomba-dashboard [--sim [N] | --port PATH | --tcp HOST:PORT | --replay FILE]
                         [--profile P] [--baud N] [--record FILE] [--lang CODE]
+                        [--foxglove [[ADDRESS:]PORT]]
 
   --sim [N]          the built-in virtual robot, or N of them (up to %2) in one room
   --port PATH        a serial port, USB adapter or pseudo-terminal
@@ -1099,6 +1108,9 @@ La elección decide cómo se leen los contadores de las ruedas: la equivocada re
   --baud N           the line speed; the profile&apos;s default when left out
   --record FILE      record every byte to and from the robot into FILE
   --lang CODE        the language of the window: %1
+  --foxglove [[ADDRESS:]PORT]  serve the robots live to Foxglove, Lichtblick and
+                     PlotJuggler (Foxglove WebSocket protocol) on ADDRESS (default
+                     127.0.0.1, this computer only) and PORT (default 8765)
   --wheel-diameter MM, --left-wheel-diameter MM, --right-wheel-diameter MM,
   --wheel-base MM    with --sim: the virtual robot&apos;s real wheels (documents: 72
                      and 235 mm), so that its odometry drifts as a real one&apos;s
@@ -1113,6 +1125,7 @@ or the system&apos;s.
 </source>
         <translation>Uso: roomba-dashboard [--sim [N] | --port RUTA | --tcp HOST:PUERTO | --replay ARCHIVO]
                       [--profile P] [--baud N] [--record ARCHIVO] [--lang CÓDIGO]
+                      [--foxglove [[DIRECCIÓN:]PUERTO]]
 
   --sim [N]          el robot virtual integrado, o N de ellos (hasta %2) en una sala
   --port RUTA        un puerto serie, adaptador USB o pseudoterminal
@@ -1122,6 +1135,9 @@ or the system&apos;s.
   --baud N           la velocidad de la línea; si se omite, la del perfil
   --record ARCHIVO   graba en ARCHIVO cada byte enviado al robot y recibido de él
   --lang CÓDIGO      el idioma de la ventana: %1
+  --foxglove [[DIRECCIÓN:]PUERTO]  servir los robots en vivo a Foxglove, Lichtblick y
+                     PlotJuggler (protocolo Foxglove WebSocket) en DIRECCIÓN (por omisión
+                     127.0.0.1, solo este equipo) y PUERTO (por omisión 8765)
   --wheel-diameter MM, --left-wheel-diameter MM, --right-wheel-diameter MM,
   --wheel-base MM    con --sim: las ruedas reales del robot virtual (documentos:
                      72 y 235 mm), para que su odometría se desvíe como la de uno
@@ -1136,12 +1152,8 @@ sistema.
 </translation>
     </message>
     <message>
-        <source>%1: &apos;%2&apos; is not a size in mm within half of the documents&apos; %3 mm</source>
-        <translation>%1: «%2» no es un tamaño en mm dentro de la mitad de los %3 mm documentados</translation>
-    </message>
-    <message>
-        <source>--wheel-diameter, --left-wheel-diameter, --right-wheel-diameter and --wheel-base go with --sim</source>
-        <translation>--wheel-diameter, --left-wheel-diameter, --right-wheel-diameter y --wheel-base van con --sim</translation>
+        <source>--foxglove: %1</source>
+        <translation>--foxglove: %1</translation>
     </message>
 </context>
 <context>
@@ -2595,6 +2607,85 @@ Haga clic para seleccionar este robot: todos los paneles lo muestran</translatio
     <message>
         <source>%1: Baud is not sent over raw TCP: the bridge&apos;s serial rate cannot follow, and the robot would talk at a rate the bridge does not. Set the serial port&apos;s rate in ser2net&apos;s config instead (for example 115200 to 19200 on the robot&apos;s port line), then reconnect with the new rate; or use the bridge in RFC 2217 (telnet) mode, where the rate follows</source>
         <translation>%1: Baud no se envía por TCP sin procesar: la velocidad serie del puente no puede seguirla, y el robot hablaría a una velocidad que el puente no habla. Cambie en su lugar la velocidad del puerto serie en la configuración de ser2net (por ejemplo, 115200 por 19200 en la línea del puerto del robot) y vuelva a conectar con la nueva velocidad; o use el puente en modo RFC 2217 (telnet), donde la velocidad sigue</translation>
+    </message>
+</context>
+<context>
+    <name>LiveServerActions</name>
+    <message>
+        <source>Live data server: dropped %1: %2</source>
+        <translation>Servidor de datos en vivo: %1 desconectado: %2</translation>
+    </message>
+    <message>
+        <source>Live data server: refused %1, which %2; Foxglove, Lichtblick and PlotJuggler offer the right protocol</source>
+        <translation>Servidor de datos en vivo: %1 rechazado (%2); Foxglove, Lichtblick y PlotJuggler ofrecen el protocolo correcto</translation>
+    </message>
+    <message>
+        <source>Live data server: %1. Choose another port in View → Live data server….</source>
+        <translation>Servidor de datos en vivo: %1. Elija otro puerto en Ver → Servidor de datos en vivo….</translation>
+    </message>
+    <message>
+        <source>Live data server on %1: connect Foxglove or Lichtblick to it.</source>
+        <translation>Servidor de datos en vivo en %1: conecte Foxglove o Lichtblick a él.</translation>
+    </message>
+    <message>
+        <source>Live data server on %1, reachable from other machines: anyone on the network can watch the robots.</source>
+        <translation>Servidor de datos en vivo en %1, accesible desde otros equipos: cualquiera en la red puede ver los robots.</translation>
+    </message>
+    <message>
+        <source>Live data server stopped.</source>
+        <translation>Servidor de datos en vivo detenido.</translation>
+    </message>
+    <message>
+        <source>Address to paste into Foxglove or Lichtblick (Open connection → Foxglove WebSocket): %1</source>
+        <translation>Dirección para pegar en Foxglove o Lichtblick (Open connection → Foxglove WebSocket): %1</translation>
+    </message>
+    <message>
+        <source>Not serving.</source>
+        <translation>Inactivo.</translation>
+    </message>
+    <message>
+        <source>Not serving: %1</source>
+        <translation>Inactivo: %1</translation>
+    </message>
+    <message>
+        <source>Clients connected: %1</source>
+        <translation>Clientes conectados: %1</translation>
+    </message>
+    <message>
+        <source>Still serving on the address before: %1</source>
+        <translation>Sigue sirviendo en la dirección anterior: %1</translation>
+    </message>
+    <message>
+        <source>Only programs on this computer can connect.</source>
+        <translation>Solo los programas de este equipo pueden conectarse.</translation>
+    </message>
+    <message>
+        <source>Reachable from other computers, as asked: anyone on the network can watch the robots. Use 127.0.0.1 to keep it on this computer.</source>
+        <translation>Accesible desde otros equipos, como se pidió: cualquiera en la red puede ver los robots. Use 127.0.0.1 para mantenerlo en este equipo.</translation>
+    </message>
+    <message>
+        <source>&amp;Live data server…</source>
+        <translation>Servidor de datos en &amp;vivo…</translation>
+    </message>
+    <message>
+        <source>Live data server</source>
+        <translation>Servidor de datos en vivo</translation>
+    </message>
+    <message>
+        <source>Serves every robot&apos;s telemetry, pose, events and markers over the Foxglove WebSocket protocol, for Foxglove, Lichtblick and PlotJuggler.</source>
+        <translation>Sirve la telemetría, la pose, los eventos y las marcas de cada robot por el protocolo Foxglove WebSocket, para Foxglove, Lichtblick y PlotJuggler.</translation>
+    </message>
+    <message>
+        <source>Serve live data</source>
+        <translation>Servir datos en vivo</translation>
+    </message>
+    <message>
+        <source>Address and port:</source>
+        <translation>Dirección y puerto:</translation>
+    </message>
+    <message>
+        <source>Messages a second per channel:</source>
+        <translation>Mensajes por segundo y canal:</translation>
     </message>
 </context>
 <context>

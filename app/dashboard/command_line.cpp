@@ -48,6 +48,7 @@ QString DashboardCommandLine::usage()
 {
     return tr("Usage: roomba-dashboard [--sim [N] | --port PATH | --tcp HOST:PORT | --replay FILE]\n"
               "                        [--profile P] [--baud N] [--record FILE] [--lang CODE]\n"
+              "                        [--foxglove [[ADDRESS:]PORT]]\n"
               "\n"
               "  --sim [N]          the built-in virtual robot, or N of them (up to %2) in one room\n"
               "  --port PATH        a serial port, USB adapter or pseudo-terminal\n"
@@ -57,6 +58,9 @@ QString DashboardCommandLine::usage()
               "  --baud N           the line speed; the profile's default when left out\n"
               "  --record FILE      record every byte to and from the robot into FILE\n"
               "  --lang CODE        the language of the window: %1\n"
+              "  --foxglove [[ADDRESS:]PORT]  serve the robots live to Foxglove, Lichtblick and\n"
+              "                     PlotJuggler (Foxglove WebSocket protocol) on ADDRESS (default\n"
+              "                     127.0.0.1, this computer only) and PORT (default 8765)\n"
               "  --wheel-diameter MM, --left-wheel-diameter MM, --right-wheel-diameter MM,\n"
               "  --wheel-base MM    with --sim: the virtual robot's real wheels (documents: 72\n"
               "                     and 235 mm), so that its odometry drifts as a real one's\n"
@@ -162,6 +166,15 @@ DashboardCommandLine DashboardCommandLine::parse(const QStringList &arguments)
             else
                 (a == "--left-wheel-diameter" ? leftWheel : rightWheel) = mm;
             wheelsGiven = true;
+        } else if (a == "--foxglove") {
+            // An optional [ADDRESS:]PORT: --foxglove alone serves on 127.0.0.1:8765.
+            line.liveServer = foxglove::ServerAddress();
+            if (i + 1 < arguments.size() && !arguments[i + 1].startsWith(QLatin1String("--"))) {
+                QString error;
+                line.liveServer = foxglove::ServerAddress::parse(arguments[++i], &error);
+                if (!line.liveServer)
+                    return fail(tr("--foxglove: %1").arg(error));
+            }
         } else if (a == "--lang") {
             if (!isUiLanguage(value))
                 return fail(tr("unknown language '%1' (%2)").arg(value, languageCodes()));

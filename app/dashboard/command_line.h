@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "foxglove_server.h"
 #include "link_settings.h"
 
 #include <QString>
@@ -12,7 +13,7 @@ class QTranslator;
 
 // What roomba-dashboard was asked to do on its command line:
 //   [--sim [N] | --port PATH | --tcp HOST:PORT | --replay FILE] [--profile P]
-//   [--baud N] [--record FILE] [--lang CODE]
+//   [--baud N] [--record FILE] [--lang CODE] [--foxglove [[ADDRESS:]PORT]]
 struct DashboardCommandLine {
     static constexpr int kMaxVirtualRobots = 30;
 
@@ -20,6 +21,7 @@ struct DashboardCommandLine {
     int robotCount = 1; // --sim N: this many virtual robots, in one room
     QString recordPath; // record the link's bytes from the start
     QString language;   // a code from uiLanguages(); empty: the saved choice
+    std::optional<foxglove::ServerAddress> liveServer; // --foxglove: serve the robots live
     bool showHelp = false;
     bool showVersion = false;
     QString error; // one line for the user; empty when the arguments are good

@@ -2,6 +2,7 @@
 // roomba-dashboard: the desktop dashboard.
 #include "command_line.h"
 #include "language_switcher.h"
+#include "live_server_actions.h"
 #include "main_window.h"
 #include "screen_fit.h"
 #include "settings_file.h"
@@ -78,5 +79,8 @@ int main(int argc, char **argv)
     window.start(line.connection, line.robotCount);
     if (!line.recordPath.isEmpty())
         window.startRecording(line.recordPath);
+    if (line.liveServer && !window.liveServer()->start(*line.liveServer))
+        std::fprintf(stderr, "roomba-dashboard: live data server: %s\n",
+                     qPrintable(window.liveServer()->server().errorString()));
     return app.exec();
 }

@@ -17,6 +17,7 @@
 #include "gamepad_panel.h"
 #include "keyboard_driving.h"
 #include "language_menu.h"
+#include "live_server_actions.h"
 #include "led_editor.h"
 #include "lesson_panel.h"
 #include "lesson_step_view.h"
@@ -74,6 +75,8 @@ MainWindow::MainWindow(QWidget *parent) : QMainWindow(parent)
     m_roomActions = new RoomActions(m_room->room(), this);
     m_firmwareReading = new FirmwareReading(m_fleet, this);
     m_calibration = new CalibrationWizardAction(m_fleet, *m_room, this);
+    m_live = new LiveServerActions(m_fleet, *m_room, this);
+    connect(m_live, &LiveServerActions::message, this, [this](const QString &m) { statusBar()->showMessage(m, 8000); });
     connect(m_recording, &RecordingActions::message, this, &MainWindow::showMessage);
     connect(m_roomActions, &RoomActions::message, this, &MainWindow::showMessage);
     connect(m_broker, &BrokerActions::message, this, [this](const QString &m) { statusBar()->showMessage(m, 8000); });
@@ -435,6 +438,7 @@ void MainWindow::buildMenus()
         m_viewMenu->addAction(dock->toggleViewAction());
     m_viewMenu->addAction(m_recording->toolBar()->toggleViewAction());
     m_viewMenu->addAction(m_broker->fleetViewAction());
+    m_viewMenu->addAction(m_live->action());
     m_viewMenu->addSeparator();
     m_viewMenu->addAction(m_projector->action());
     m_viewMenu->addAction(m_layout->nextAction());
@@ -459,6 +463,7 @@ void MainWindow::retranslateUi()
     m_robotMenu->setTitle(tr("&Robot"));
     m_firmwareReading->retranslate();
     m_calibration->retranslate();
+    m_live->retranslate();
     m_viewMenu->setTitle(tr("&View"));
     m_languages->retranslate();
     m_layout->retranslate();

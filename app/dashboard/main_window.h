@@ -29,6 +29,7 @@ class KeyboardDriving;
 class LanguageMenu;
 class LedEditor;
 class LessonPanel;
+class LiveServerActions;
 class MarkerActions;
 class ModePanel;
 class MotorsPanel;
@@ -136,6 +137,8 @@ public:
     QToolBar *recordingToolBar() const;
     // Markers on the selected robot's run, and a second run beside it.
     MarkerActions *markerActions() const { return m_markers; }
+    // View → Live data server…: the robots over the Foxglove WebSocket protocol.
+    LiveServerActions *liveServer() const { return m_live; }
     RunComparison *runComparison() const { return m_comparison; }
     QAction *recordAction() const;
     QMenu *languageMenu() const;
@@ -182,6 +185,7 @@ private:
     RoomActions *m_roomActions = nullptr; // the room as a document: files and edits
     RecordingActions *m_recording = nullptr;
     MarkerActions *m_markers = nullptr;
+    LiveServerActions *m_live = nullptr;
     RunComparison *m_comparison = nullptr;
     FirmwareReading *m_firmwareReading = nullptr;
     CalibrationWizardAction *m_calibration = nullptr;

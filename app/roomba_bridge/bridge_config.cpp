@@ -34,6 +34,7 @@ const QStringList &BridgeConfig::keys()
         QStringLiteral("cafile"),   QStringLiteral("certfile"),      QStringLiteral("keyfile"),
         QStringLiteral("rate"),     QStringLiteral("allow-full"),    QStringLiteral("full-telemetry"),
         QStringLiteral("allow-schedule"), QStringLiteral("brc-line"),
+        QStringLiteral("foxglove"), QStringLiteral("foxglove-rate"),
     };
     return k;
 }
@@ -196,6 +197,19 @@ std::optional<BridgeConfig> BridgeConfig::fromSettings(const QList<Setting> &set
         c.telemetryRateHz = value("rate").toDouble(&ok);
         if (!ok || !std::isfinite(c.telemetryRateHz) || c.telemetryRateHz < 0 || c.telemetryRateHz > 1000)
             return fail(QStringLiteral("rate"), QStringLiteral("'%1' is not a rate from 0 (every frame) to 1000 per second").arg(value("rate")));
+    }
+    if (has("foxglove")) {
+        QString why;
+        c.liveServer = foxglove::ServerAddress::parse(value("foxglove"), &why);
+        if (!c.liveServer)
+            return fail(QStringLiteral("foxglove"), why);
+    }
+    if (has("foxglove-rate")) {
+        bool ok = false;
+        c.liveRateHz = value("foxglove-rate").toDouble(&ok);
+        if (!ok || !std::isfinite(c.liveRateHz) || c.liveRateHz < 1 || c.liveRateHz > 1000)
+            return fail(QStringLiteral("foxglove-rate"),
+                        QStringLiteral("'%1' is not a rate from 1 to 1000 messages a second").arg(value("foxglove-rate")));
     }
     // yes or no, into `flag`; false after saying what is wrong.
     const auto yesOrNo = [&](const char *key, bool &flag) {

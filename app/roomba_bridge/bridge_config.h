@@ -2,6 +2,7 @@
 #pragma once
 
 #include "broker_address.h"
+#include "foxglove_server.h"
 #include "link_settings.h"
 
 #include <QList>
@@ -28,6 +29,10 @@ struct BridgeConfig {
     // Schedule and Set Day/Time over the network: the robot would start
     // cleaning later by itself, with nobody in control. Off unless set.
     bool allowSchedule = false;
+    // The live data server (docs/foxglove.md), when asked for, and its
+    // messages a second per channel.
+    std::optional<foxglove::ServerAddress> liveServer;
+    double liveRateHz = 50;
 
     // One value and where it came from ("--rate", "r1.conf:4"), for errors.
     struct Setting {

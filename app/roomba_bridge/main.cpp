@@ -4,6 +4,7 @@
 // statistics; takes commands from the client that holds control.
 
 #include "bridge_config.h"
+#include "live_robots.h"
 #include "name_claim.h"
 #include "robot_bridge.h"
 #include "robot_session.h"
@@ -73,6 +74,8 @@ int main(int argc, char *argv[])
         {QStringLiteral("rate"), QStringLiteral("Telemetry messages per second, every packet in each (default 0: what changed in each frame, about 23 a second for a driven robot)."), QStringLiteral("HZ")},
         {QStringLiteral("full-telemetry"), QStringLiteral("Every packet in every telemetry message, not only what changed: about five times the bytes.")},
         {QStringLiteral("allow-full"), QStringLiteral("Let the client in control send full. The robot then ignores cliffs and wheel drops; the bridge stops it at the first one.")},
+        {QStringLiteral("foxglove"), QStringLiteral("Serve the robot live to Foxglove, Lichtblick and PlotJuggler (Foxglove WebSocket protocol) on [ADDRESS:]PORT: 8765 is the usual port, 127.0.0.1 (this computer only) the default address; 0.0.0.0 lets every network in."), QStringLiteral("[ADDRESS:]PORT")},
+        {QStringLiteral("foxglove-rate"), QStringLiteral("The live data server's messages a second per channel, each a whole frame (default 50)."), QStringLiteral("HZ")},
         {QStringLiteral("allow-schedule"), QStringLiteral("Let the client in control send schedule and set-day-time. A Roomba 600 / Create 2 then starts cleaning at the set times by itself, with nobody in control.")},
     });
     if (!parser.parse(QCoreApplication::arguments()))
@@ -183,6 +186,15 @@ int main(int argc, char *argv[])
         qCInfo(lcBridge, "broker: the connection was not taken again (the broker had restarted); the name is this "
                          "bridge's");
     });
+    // The live data server: the robot's channels for Foxglove, Lichtblick and PlotJuggler.
+    foxglove::Server liveServer(QStringLiteral("roomba-bridge %1").arg(config->name));
+    LiveRobots live(liveServer);
+    if (config->liveServer) {
+        liveServer.setLimits({config->liveRateHz, liveServer.limits().queuedBytes});
+        if (!liveServer.listen(*config->liveServer))
+            return fail(liveServer.errorString());
+        live.add(&robot);
+    }
     bridge.start();
     robot.connectTo(config->link);
     if (!broker.connectToBroker(config->broker) || (stopLineAddress && !stopLine.connectToBroker(*stopLineAddress)))

@@ -12,24 +12,16 @@
 // schemas and encodings are listed in docs/mcap.md.
 namespace oilink {
 
-// The recording's markers go to /roomba/markers as log messages, and a
-// virtual robot's true poses to /roomba/true_pose; each channel exists only
-// when the recording holds such records.
+// The recording is robot r1, as the live data server's first robot: its
+// channels are /r1/telemetry, /r1/pose, ... (foxglove::RobotTopics). Its
+// markers go to /r1/markers as log messages, and a virtual robot's true poses
+// to /r1/true_pose; each channel exists only when the recording holds such records.
 struct McapExportOptions {
     mcap::Compression compression = mcap::Compression::Zstd;
 };
 
-// The topics, as docs/mcap.md lists them.
-namespace mcap_topics {
-inline constexpr char kTelemetry[] = "/roomba/telemetry";
-inline constexpr char kPose[] = "/roomba/pose";
-inline constexpr char kTruePose[] = "/roomba/true_pose"; // only from a virtual robot's recording
-inline constexpr char kTransform[] = "/tf";
-inline constexpr char kReceived[] = "/roomba/bytes_received";
-inline constexpr char kSent[] = "/roomba/bytes_sent";
-inline constexpr char kEvents[] = "/roomba/events";
-inline constexpr char kMarkers[] = "/roomba/markers";
-} // namespace mcap_topics
+// The robot a recording is, in the topics.
+inline constexpr char kMcapRobot[] = "r1";
 
 // Writes `recording` to `path` through a QSaveFile: on failure nothing is
 // left under that name. Returns "" or the error, naming the file. A damaged

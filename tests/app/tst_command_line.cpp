@@ -54,6 +54,16 @@ private slots:
         QVERIFY2(worn.error.isEmpty(), qPrintable(worn.error));
         QCOMPARE(worn.connection->virtualWheels, (oi::WheelGeometry{74.88, 73, 228}));
 
+        // The live data server: on this machine at 8765 unless told otherwise.
+        QVERIFY(!parse("--sim").liveServer);
+        const auto live = parse("--foxglove --sim");
+        QVERIFY2(live.error.isEmpty(), qPrintable(live.error));
+        QCOMPARE(live.liveServer->address, QHostAddress(QHostAddress::LocalHost));
+        QCOMPARE(live.liveServer->port, quint16(8765));
+        QVERIFY(live.connection);
+        QCOMPARE(parse("--sim --foxglove 9000").liveServer->port, quint16(9000));
+        QCOMPARE(parse("--foxglove 0.0.0.0:8766").liveServer->address, QHostAddress(QHostAddress::AnyIPv4));
+
         QVERIFY(parse("--help").showHelp);
         QVERIFY(parse("--version").showVersion);
     }
@@ -113,6 +123,8 @@ private slots:
         QTest::newRow("odd baud") << "--port /dev/ttyUSB0 --baud 12345" << "--baud 12345 is not a rate";
         QTest::newRow("profile alone") << "--profile create2" << "go with --sim, --port or --tcp";
         QTest::newRow("unknown") << "--fly" << "unknown argument '--fly'";
+        QTest::newRow("live server on a name") << "--foxglove localhost:8765" << "--foxglove: 'localhost' is not an IP address";
+        QTest::newRow("live server port too big") << "--foxglove 65536" << "--foxglove: '65536' is not a port";
         QTest::newRow("wheel not a number") << "--sim --wheel-diameter big" << "--wheel-diameter: 'big' is not a size in mm";
         QTest::newRow("wheel absurd") << "--sim --left-wheel-diameter 200" << "within half of the documents' 72 mm";
         QTest::newRow("wheel base of nothing") << "--sim --wheel-base 0" << "--wheel-base: '0'";

@@ -8,7 +8,13 @@
 
 #include "tcp_robot_server.h"
 
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QProcess>
+#include <QRegularExpression>
+#include <QWebSocket>
+#include <QWebSocketHandshakeOptions>
 #include <QTemporaryDir>
 
 #include <csignal>
@@ -89,6 +95,12 @@ private slots:
                                                    << "bad.conf:3: brc-line: 'cts' is not a wake line: rts, dtr, both";
         QTest::newRow("bad wake line") << QStringList{"--name", "r1", "--sim", "--brc-line", "yes"} << QByteArray()
                                        << "--brc-line: brc-line: 'yes' is not a wake line: rts, dtr, both";
+        QTest::newRow("bad live server address") << QStringList{} << QByteArray("name = r1\nsim = yes\nfoxglove = robot.local:8765\n")
+                                                 << "foxglove: 'robot.local' is not an IP address";
+        QTest::newRow("bad live server port") << QStringList{"--name", "r1", "--sim", "--foxglove", "99999"} << QByteArray()
+                                              << "foxglove: '99999' is not a port";
+        QTest::newRow("bad live server rate") << QStringList{} << QByteArray("name = r1\nsim = yes\nfoxglove-rate = 0\n")
+                                              << "foxglove-rate: '0' is not a rate from 1 to 1000";
         QTest::newRow("missing config") << QStringList{"--config", "/nonexistent/r1.conf"} << QByteArray()
                                         << "/nonexistent/r1.conf: cannot read it";
     }
@@ -106,6 +118,33 @@ private slots:
         const QString err = QString::fromUtf8(p.readAllStandardError());
         QCOMPARE(p.exitCode(), 2);
         QVERIFY2(err.contains(message), qPrintable(err));
+    }
+
+    // foxglove = ADDRESS:PORT in the config: the robot is served as r1, on
+    // the address given, and the log says where.
+    void theLiveServerServesTheRobot()
+    {
+        QProcess bridge;
+        start(bridge, {"--config", writeConfig(QStringLiteral("live.conf"),
+                                               "name = r1\nsim = yes\nfoxglove = 127.0.0.1:0\nfoxglove-rate = 20\n")});
+        QString log;
+        const QRegularExpression served(QStringLiteral("live data server on (ws://127\\.0\\.0\\.1:\\d+) \\(this machine only\\)"));
+        QRegularExpressionMatch m;
+        QTRY_VERIFY_WITH_TIMEOUT((log += QString::fromUtf8(bridge.readAllStandardError()), m = served.match(log)).hasMatch(),
+                                 10000);
+        QWebSocket client;
+        QStringList topics;
+        connect(&client, &QWebSocket::textMessageReceived, this, [&](const QString &text) {
+            const QJsonObject message = QJsonDocument::fromJson(text.toUtf8()).object();
+            for (const QJsonValue &c : message.value("channels").toArray())
+                topics << c.toObject().value("topic").toString();
+        });
+        QWebSocketHandshakeOptions options;
+        options.setSubprotocols({QStringLiteral("foxglove.websocket.v1")});
+        client.open(QUrl(m.captured(1)), options);
+        QTRY_VERIFY_WITH_TIMEOUT(topics.contains("/r1/telemetry") && topics.contains("/r1/tf"), 10000);
+        bridge.terminate();
+        QVERIFY(bridge.waitForFinished(10000));
     }
 
     // The wake line from the file, the command line winning, reaches the

@@ -3,6 +3,7 @@
 // official reader (@mcap/core, installed with npm) and by our own record
 // walker; damaged recordings; paths that cannot be written; roomba-ctl mcap.
 #include "mcap_records.h"
+#include "npm_packages.h" // tests/common
 #include "oirec_records.h" // tests/common
 #include "recording_mcap.h"
 #include "robot_link.h"
@@ -90,34 +91,6 @@ QMap<QString, quint16> channelsOf(const QByteArray &mcapFile)
     return out;
 }
 
-struct Run {
-    int exitCode = -1;
-    QByteArray out, err;
-};
-
-Run run(const QString &program, const QStringList &arguments, const QString &workingDirectory = {},
-        int timeoutMs = 60000)
-{
-    QProcess p;
-    if (!workingDirectory.isEmpty())
-        p.setWorkingDirectory(workingDirectory);
-    p.start(program, arguments);
-    if (!p.waitForFinished(timeoutMs))
-        p.kill();
-    p.waitForFinished();
-    return {p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1, p.readAllStandardOutput(),
-            p.readAllStandardError()};
-}
-
-// npm's code for a registry it cannot reach (ENOTFOUND, ECONNREFUSED, ...), or "".
-QString unreachable(const QByteArray &npmOutput)
-{
-    for (const char *code : {"ENOTFOUND", "EAI_AGAIN", "ECONNREFUSED", "ETIMEDOUT", "ECONNRESET", "ENETUNREACH",
-                             "EHOSTUNREACH"})
-        if (npmOutput.contains(code))
-            return QString::fromLatin1(code);
-    return QString();
-}
 } // namespace
 
 class TestMcapExport : public QObject {
@@ -130,7 +103,8 @@ private:
     // The official reader's account of `path`, as read_mcap.js prints it.
     QJsonObject readWithMcapCore(const QString &path)
     {
-        const Run r = run(QStringLiteral("node"), {QDir(m_readerDir).filePath("read_mcap.js"), path}, m_readerDir);
+        const ProcessRun r =
+            runProcess(QStringLiteral("node"), {QDir(m_readerDir).filePath("read_mcap.js"), path}, m_readerDir);
         if (r.exitCode != 0)
             qWarning("read_mcap.js: %s", r.err.constData());
         return QJsonDocument::fromJson(r.out).object();
@@ -168,31 +142,14 @@ private slots:
     void installTheOfficialReader()
     {
         m_readerDir = QStringLiteral(MCAP_READER_DIR);
-        QVERIFY2(!QStandardPaths::findExecutable("node").isEmpty(), "node is not installed (.ci/install-deps)");
-        QVERIFY2(!QStandardPaths::findExecutable("npm").isEmpty(), "npm is not installed (.ci/install-deps)");
-        QVERIFY(QDir().mkpath(m_readerDir));
-        for (const char *name : {"package.json", "read_mcap.js"}) {
-            const QString to = QDir(m_readerDir).filePath(name);
-            QFile::remove(to);
-            QVERIFY(QFile::copy(QStringLiteral(MCAP_READER_SOURCE "/") + name, to));
-        }
-        if (QFile::exists(QDir(m_readerDir).filePath("node_modules/@mcap/core/package.json")) &&
-            QFile::exists(QDir(m_readerDir).filePath("node_modules/@mcap/support/package.json")))
-            return;
-        // Bounded waits: a registry that swallows packets must not hold the test up.
-        const Run npm = run(QStringLiteral("npm"),
-                            {"install", "--no-audit", "--no-fund", "--no-save", "--fetch-timeout=30000",
-                             "--fetch-retries=1"},
-                            m_readerDir, 180000);
-        const QString code = npm.exitCode == -1 ? QStringLiteral("no answer within 3 minutes")
-                             : npm.exitCode != 0 ? unreachable(npm.out + npm.err)
-                                                 : QString();
-        if (!code.isEmpty())
+        const NpmInstall npm = installNpmPackages(m_readerDir, QStringLiteral(MCAP_READER_SOURCE),
+                                                  {"package.json", "read_mcap.js"}, {"@mcap/core", "@mcap/support"});
+        if (!npm.unreachable.isEmpty())
             QSKIP(qPrintable(QStringLiteral("npm cannot reach its registry (%1), so @mcap/core, the official MCAP "
                                             "reader, is not installed and no independent reader checks the export. "
                                             "Run the test again with the registry reachable.")
-                                 .arg(code)));
-        QVERIFY2(npm.exitCode == 0, npm.err.constData());
+                                 .arg(npm.unreachable)));
+        QVERIFY2(npm.error.isEmpty(), qPrintable(npm.error));
     }
 
     void officialReaderOpensEveryExport_data()
@@ -225,69 +182,69 @@ private slots:
 
         // Channels and schemas by name; messages counted against the recording.
         const QJsonObject channels = read.value("channels").toObject();
-        QCOMPARE(channels.keys(), (QStringList{"/roomba/bytes_received", "/roomba/bytes_sent", "/roomba/events",
-                                               "/roomba/markers", "/roomba/pose", "/roomba/telemetry",
-                                               "/roomba/true_pose", "/tf"}));
+        QCOMPARE(channels.keys(), (QStringList{"/r1/bytes_received", "/r1/bytes_sent", "/r1/events",
+                                               "/r1/markers", "/r1/pose", "/r1/telemetry",
+                                               "/r1/tf", "/r1/true_pose"}));
         const auto channel = [&](const char *topic) { return channels.value(topic).toObject(); };
-        QCOMPARE(channel("/roomba/telemetry").value("schema").toString(), QString("roomba.Telemetry.create2"));
-        QCOMPARE(channel("/roomba/pose").value("schema").toString(), QString("foxglove.PoseInFrame"));
-        QCOMPARE(channel("/roomba/true_pose").value("schema").toString(), QString("foxglove.PoseInFrame"));
-        QCOMPARE(channel("/tf").value("schema").toString(), QString("foxglove.FrameTransform"));
-        QCOMPARE(channel("/roomba/events").value("schema").toString(), QString("foxglove.Log"));
-        QCOMPARE(channel("/roomba/bytes_sent").value("schema").toString(), QString("roomba.Bytes"));
+        QCOMPARE(channel("/r1/telemetry").value("schema").toString(), QString("roomba.Telemetry.create2"));
+        QCOMPARE(channel("/r1/pose").value("schema").toString(), QString("foxglove.PoseInFrame"));
+        QCOMPARE(channel("/r1/true_pose").value("schema").toString(), QString("foxglove.PoseInFrame"));
+        QCOMPARE(channel("/r1/tf").value("schema").toString(), QString("foxglove.FrameTransform"));
+        QCOMPARE(channel("/r1/events").value("schema").toString(), QString("foxglove.Log"));
+        QCOMPARE(channel("/r1/bytes_sent").value("schema").toString(), QString("roomba.Bytes"));
         for (const QString &topic : channels.keys()) {
             QCOMPARE(channels.value(topic).toObject().value("messageEncoding").toString(), QString("json"));
             QCOMPARE(channels.value(topic).toObject().value("schemaEncoding").toString(), QString("jsonschema"));
         }
         QVERIFY(!recording.firmware()); // so the frames are exported as recorded
         const int frames = int(recording.frames().size());
-        QCOMPARE(channel("/roomba/telemetry").value("count").toInt(), frames);
-        QCOMPARE(channel("/roomba/pose").value("count").toInt(), frames);
-        QCOMPARE(channel("/tf").value("count").toInt(), frames);
+        QCOMPARE(channel("/r1/telemetry").value("count").toInt(), frames);
+        QCOMPARE(channel("/r1/pose").value("count").toInt(), frames);
+        QCOMPARE(channel("/r1/tf").value("count").toInt(), frames);
         // The virtual robot's true pose: one message per P record, in the room's frame, in metres.
         QVERIFY(recording.truePoses().size() >= 40);
-        QCOMPARE(channel("/roomba/true_pose").value("count").toInt(), int(recording.truePoses().size()));
-        const QJsonObject lastTrue = channel("/roomba/true_pose").value("last").toObject();
+        QCOMPARE(channel("/r1/true_pose").value("count").toInt(), int(recording.truePoses().size()));
+        const QJsonObject lastTrue = channel("/r1/true_pose").value("last").toObject();
         QCOMPARE(lastTrue.value("frame_id").toString(), QString("room"));
         const QJsonObject truePosition = lastTrue.value("pose").toObject().value("position").toObject();
         QVERIFY(std::abs(truePosition.value("x").toDouble() - recording.truePoses().back().pose.xMm / 1000) < 1e-5);
         QVERIFY(std::abs(truePosition.value("y").toDouble() - recording.truePoses().back().pose.yMm / 1000) < 1e-5);
-        QCOMPARE(channel("/roomba/true_pose").value("lastTime").toString().toULongLong() -
-                     channel("/roomba/true_pose").value("firstTime").toString().toULongLong(),
+        QCOMPARE(channel("/r1/true_pose").value("lastTime").toString().toULongLong() -
+                     channel("/r1/true_pose").value("firstTime").toString().toULongLong(),
                  quint64(recording.truePoses().back().timeUs - recording.truePoses().front().timeUs) * 1000);
-        QCOMPARE(channel("/roomba/bytes_received").value("count").toInt(), int(recording.chunks().size()));
-        QCOMPARE(channel("/roomba/bytes_sent").value("count").toInt(), int(recording.sentChunks().size()));
+        QCOMPARE(channel("/r1/bytes_received").value("count").toInt(), int(recording.chunks().size()));
+        QCOMPARE(channel("/r1/bytes_sent").value("count").toInt(), int(recording.sentChunks().size()));
         QVERIFY(recording.sentChunks().size() >= 2);
 
         // The schema lists every packet of the stream, with its unit.
         const QJsonObject properties =
-            channel("/roomba/telemetry").value("schemaData").toObject().value("properties").toObject();
+            channel("/r1/telemetry").value("schemaData").toObject().value("properties").toObject();
         QCOMPARE(properties.size(), int(recording.streamedPackets().size()));
         QVERIFY(properties.value("distance").toObject().value("description").toString().contains("mm"));
 
         // First and last values: the frames as snapshotToJson writes them.
         std::vector<oi::SensorSnapshot> snapshots;
         recording.forEachSnapshot([&](qint64, const oi::SensorSnapshot &s) { snapshots.push_back(s); });
-        QCOMPARE(channel("/roomba/telemetry").value("first").toObject(), oilink::snapshotToJson(snapshots.front()));
-        QCOMPARE(channel("/roomba/telemetry").value("last").toObject(), oilink::snapshotToJson(snapshots.back()));
-        QCOMPARE(channel("/roomba/telemetry").value("lastTime").toString().toULongLong() -
-                     channel("/roomba/telemetry").value("firstTime").toString().toULongLong(),
+        QCOMPARE(channel("/r1/telemetry").value("first").toObject(), oilink::snapshotToJson(snapshots.front()));
+        QCOMPARE(channel("/r1/telemetry").value("last").toObject(), oilink::snapshotToJson(snapshots.back()));
+        QCOMPARE(channel("/r1/telemetry").value("lastTime").toString().toULongLong() -
+                     channel("/r1/telemetry").value("firstTime").toString().toULongLong(),
                  quint64(recording.frames().back().timeUs - recording.frames().front().timeUs) * 1000);
         // The robot drove straight ahead: the pose's x grew, y stayed near 0.
-        const QJsonObject lastPosition = channel("/roomba/pose").value("last").toObject().value("pose").toObject()
+        const QJsonObject lastPosition = channel("/r1/pose").value("last").toObject().value("pose").toObject()
                                              .value("position").toObject();
         QVERIFY2(lastPosition.value("x").toDouble() > 0.01, qPrintable(QString::number(lastPosition.value("x").toDouble())));
         QVERIFY(std::abs(lastPosition.value("y").toDouble()) < 0.01);
-        QCOMPARE(channel("/roomba/pose").value("last").toObject().value("frame_id").toString(), QString("odom"));
+        QCOMPARE(channel("/r1/pose").value("last").toObject().value("frame_id").toString(), QString("r1/odom"));
         // The first bytes sent decode to what was sent.
-        QCOMPARE(QByteArray::fromBase64(channel("/roomba/bytes_sent").value("first").toObject().value("data")
+        QCOMPARE(QByteArray::fromBase64(channel("/r1/bytes_sent").value("first").toObject().value("data")
                                             .toString().toLatin1()),
                  recording.sentBytes().left(recording.sentChunks().front().end));
         // The mode went to Safe, and the log says so.
-        QVERIFY2(channel("/roomba/events").value("messages").toArray().contains("Mode Passive → Safe"),
-                 QJsonDocument(channel("/roomba/events").value("messages").toArray()).toJson().constData());
+        QVERIFY2(channel("/r1/events").value("messages").toArray().contains("Mode Passive → Safe"),
+                 QJsonDocument(channel("/r1/events").value("messages").toArray()).toJson().constData());
         // One message per marker the recording holds.
-        QCOMPARE(channel("/roomba/markers").value("count").toInt(), int(recording.markers().size()));
+        QCOMPARE(channel("/r1/markers").value("count").toInt(), int(recording.markers().size()));
 
         // The summary's statistics match what the file holds, and what we wrote.
         const QJsonObject st = read.value("statistics").toObject();
@@ -336,7 +293,7 @@ private slots:
         const QString out = m_dir.filePath("markers.mcap");
         QCOMPARE(oilink::exportRecordingMcap(recording, out, {}), QString());
         const QJsonObject read = readWithMcapCore(out);
-        const QJsonObject markers = read.value("channels").toObject().value("/roomba/markers").toObject();
+        const QJsonObject markers = read.value("channels").toObject().value("/r1/markers").toObject();
         QCOMPARE(markers.value("schema").toString(), QString("foxglove.Log"));
         QCOMPARE(markers.value("messages").toArray(), (QJsonArray{"start", "#2", "hit the table leg"}));
         const qint64 started = QDateTime::fromString(recording.header().value("started").toString(), Qt::ISODateWithMs)
@@ -360,7 +317,7 @@ private slots:
         const QString out = m_dir.filePath("events.mcap");
         QCOMPARE(oilink::exportRecordingMcap(load(in), out, {mcap::Compression::None}), QString());
         const QByteArray file = fileBytes(out);
-        const quint16 events = channelsOf(file).value("/roomba/events");
+        const quint16 events = channelsOf(file).value("/r1/events");
         QCOMPARE(eventsOf(file, events), (QStringList{"Mode Passive", "Bump Left", "Bump Left cleared",
                                                       "Mode Passive → Safe", "Wheel Drop Right"}));
         // Each at its frame's time, from the recording's start in UTC.
@@ -391,8 +348,8 @@ private slots:
         const QString out = m_dir.filePath("real.mcap");
         QCOMPARE(oilink::exportRecordingMcap(load(in), out, {mcap::Compression::None}), QString());
         const QMap<QString, quint16> channels = channelsOf(fileBytes(out));
-        QVERIFY(channels.contains(oilink::mcap_topics::kPose));
-        QVERIFY(!channels.contains(oilink::mcap_topics::kTruePose));
+        QVERIFY(channels.contains("/r1/pose"));
+        QVERIFY(!channels.contains("/r1/true_pose"));
     }
 
     void damagedRecordingExportsUpToTheDamage()
@@ -408,7 +365,7 @@ private slots:
         QVERIFY(damage);
         QCOMPARE(damage->byteOffset, damaged.damage()->byteOffset);
         const QByteArray file = fileBytes(out);
-        const quint16 telemetry = channelsOf(file).value("/roomba/telemetry");
+        const quint16 telemetry = channelsOf(file).value("/r1/telemetry");
         int frames = 0;
         for (const mcap_test::Message &m : mcap_test::messagesOf(file))
             frames += m.channel == telemetry;
@@ -417,7 +374,7 @@ private slots:
 
         // roomba-ctl writes the same and names the damage.
         const QString ctlOut = m_dir.filePath("cut-ctl.mcap");
-        const Run ctl = run(ROOMBA_CTL_PATH, {"mcap", cut, "-o", ctlOut, "--compression", "none"});
+        const ProcessRun ctl = runProcess(ROOMBA_CTL_PATH, {"mcap", cut, "-o", ctlOut, "--compression", "none"});
         QCOMPARE(ctl.exitCode, 1);
         QVERIFY2(ctl.err.contains(QString("truncated record at byte %1").arg(damage->byteOffset).toUtf8()),
                  ctl.err.constData());
@@ -446,17 +403,17 @@ private slots:
 
     void roombaCtlChecksItsArguments()
     {
-        const Run noOut = run(ROOMBA_CTL_PATH, {"mcap", m_recording});
+        const ProcessRun noOut = runProcess(ROOMBA_CTL_PATH, {"mcap", m_recording});
         QCOMPARE(noOut.exitCode, 2);
         QVERIFY2(noOut.err.contains("-o OUT.mcap"), noOut.err.constData());
-        const Run badCompression = run(ROOMBA_CTL_PATH, {"mcap", m_recording, "-o", m_dir.filePath("x.mcap"),
+        const ProcessRun badCompression = runProcess(ROOMBA_CTL_PATH, {"mcap", m_recording, "-o", m_dir.filePath("x.mcap"),
                                                          "--compression", "gzip"});
         QCOMPARE(badCompression.exitCode, 2);
         QVERIFY2(badCompression.err.contains("unknown compression 'gzip'; use zstd, lz4 or none"),
                  badCompression.err.constData());
         QVERIFY(!QFile::exists(m_dir.filePath("x.mcap")));
         const QString out = m_dir.filePath("ctl.mcap");
-        const Run ok = run(ROOMBA_CTL_PATH, {"mcap", m_recording, "-o", out, "--compression", "lz4"});
+        const ProcessRun ok = runProcess(ROOMBA_CTL_PATH, {"mcap", m_recording, "-o", out, "--compression", "lz4"});
         QCOMPARE(ok.exitCode, 0);
         QVERIFY(fileBytes(out).startsWith("\x89MCAP0\r\n"));
         // Success is said, with where the file went.

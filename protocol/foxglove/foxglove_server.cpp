@@ -1,0 +1,541 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "foxglove_server.h"
+
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QLoggingCategory>
+#include <QRandomGenerator>
+#include <QTcpServer>
+#include <QTcpSocket>
+#include <QWebSocket>
+#include <QTimer>
+#include <QWebSocketServer>
+#include <QtEndian>
+
+#include <cmath>
+#include <limits>
+
+Q_LOGGING_CATEGORY(lcFoxglove, "roomba.foxglove")
+
+namespace foxglove {
+
+namespace {
+
+// What a client may send: subscribe and unsubscribe are small. Anything
+// larger is cut off by Qt before it is read.
+constexpr quint64 kMaxClientMessage = 64 * 1024;
+// A handshake is one HTTP request; a peer that sends more, or takes longer, is no client.
+constexpr qsizetype kMaxHandshake = 16 * 1024;
+constexpr int kHandshakeMs = 10000;
+constexpr int kMaxSubscriptions = 4096;
+// Clients at once, handshakes included: each costs a copy of every message.
+constexpr int kMaxConnections = 32;
+
+enum StatusLevel { StatusInfo = 0, StatusWarning = 1, StatusError = 2 };
+enum BinaryOp : quint8 { MessageData = 1, Time = 2 };
+
+QByteArray compact(const QJsonObject &object)
+{
+    return QJsonDocument(object).toJson(QJsonDocument::Compact);
+}
+
+// The subprotocols the client offers, from its request's header.
+QStringList offeredSubprotocols(const QByteArray &request)
+{
+    QStringList offered;
+    for (const QByteArray &line : request.split('\n')) {
+        const qsizetype colon = line.indexOf(':');
+        if (colon < 0 || line.left(colon).trimmed().toLower() != "sec-websocket-protocol")
+            continue;
+        for (const QByteArray &name : line.mid(colon + 1).split(','))
+            offered << QString::fromLatin1(name.trimmed());
+    }
+    return offered;
+}
+
+template <typename Socket>
+QString peerOf(const Socket *socket)
+{
+    return QStringLiteral("%1:%2").arg(socket->peerAddress().toString()).arg(socket->peerPort());
+}
+
+} // namespace
+
+std::optional<ServerAddress> ServerAddress::parse(const QString &text, QString *error)
+{
+    ServerAddress result;
+    QString host;
+    QString port = text.trimmed();
+    const qsizetype colon = port.lastIndexOf(':');
+    if (colon >= 0) {
+        host = port.left(colon);
+        port = port.mid(colon + 1);
+        if (host.startsWith('[') && host.endsWith(']'))
+            host = host.mid(1, host.size() - 2);
+    } else if (port.contains('.')) {
+        host = port; // an address alone
+        port.clear();
+    }
+    if (!host.isEmpty() && !result.address.setAddress(host)) {
+        *error = QStringLiteral("'%1' is not an IP address: give one this machine has, such as 127.0.0.1 "
+                                "(this machine only) or 0.0.0.0 (every network)")
+                     .arg(host);
+        return std::nullopt;
+    }
+    if (!port.isEmpty()) {
+        bool ok = false;
+        const uint number = port.toUInt(&ok);
+        if (!ok || number > 65535) {
+            *error = QStringLiteral("'%1' is not a port: give 1 to 65535 (default %2), or 0 for any free one")
+                         .arg(port)
+                         .arg(kDefaultPort);
+            return std::nullopt;
+        }
+        result.port = quint16(number);
+    }
+    return result;
+}
+
+struct Server::ChannelState {
+    Channel channel;
+    Delivery delivery;
+    ChannelId id = 0;
+    // The rate limit, as a virtual schedule: the next message is due at
+    // scheduledNs (less a quarter interval of tolerance), which each message
+    // sent moves on by one interval.
+    qint64 scheduledNs = 0;
+    // The latest message held back by the rate limit, made when sent.
+    std::function<QByteArray()> pending;
+    quint64 pendingTimeNs = 0;
+    std::unique_ptr<oilink::ClockTimer> timer;
+    int subscriptions = 0; // over every client
+};
+
+struct Server::Client {
+    QWebSocket *socket = nullptr;
+    QString peer;
+    QHash<quint32, ChannelId> subscriptions; // subscription id → channel
+};
+
+Server::Server(const QString &name, oilink::Clock &clock, QObject *parent)
+    : QObject(parent), m_name(name), m_clock(clock), m_timeTimer(clock)
+{
+    m_timeTimer.setSingleShot(true);
+    connect(&m_timeTimer, &oilink::ClockTimer::timeout, this, [this] {
+        if (m_timePending)
+            sendTime(*std::exchange(m_timePending, std::nullopt));
+    });
+    startSession();
+}
+
+Server::~Server()
+{
+    close();
+}
+
+bool Server::listen(const ServerAddress &address)
+{
+    close();
+    m_tcp = new QTcpServer(this);
+    if (!m_tcp->listen(address.address, address.port)) {
+        m_error = QStringLiteral("cannot serve on %1:%2: %3")
+                      .arg(address.address.toString())
+                      .arg(address.port)
+                      .arg(m_tcp->errorString());
+        delete std::exchange(m_tcp, nullptr);
+        return false;
+    }
+    m_webSockets = new QWebSocketServer(m_name, QWebSocketServer::NonSecureMode, this);
+    m_webSockets->setSupportedSubprotocols({QString::fromLatin1(kSubprotocol), QString::fromLatin1(kSdkSubprotocol)});
+    connect(m_tcp, &QTcpServer::newConnection, this, &Server::onTcpConnection);
+    connect(m_webSockets, &QWebSocketServer::newConnection, this, &Server::onWebSocket);
+    m_error.clear();
+    // Beyond loopback only as the user asked, and said so.
+    if (isLoopback())
+        qCInfo(lcFoxglove, "live data server on %s (this machine only)", qPrintable(url()));
+    else
+        qCWarning(lcFoxglove, "live data server on %s: reachable from other machines, as asked; anyone on the "
+                              "network can watch the robots",
+                  qPrintable(url()));
+    return true;
+}
+
+void Server::close()
+{
+    const bool hadClients = !m_clients.empty();
+    for (const std::unique_ptr<Client> &client : m_clients) {
+        client->socket->disconnect(this);
+        client->socket->abort();
+        client->socket->deleteLater();
+    }
+    m_clients.clear();
+    for (const auto &[id, channel] : m_channels)
+        channel->subscriptions = 0;
+    delete std::exchange(m_webSockets, nullptr);
+    delete std::exchange(m_tcp, nullptr);
+    if (hadClients)
+        emit clientCountChanged(0);
+}
+
+bool Server::isListening() const
+{
+    return m_tcp && m_tcp->isListening();
+}
+
+quint16 Server::port() const
+{
+    return m_tcp ? m_tcp->serverPort() : 0;
+}
+
+bool Server::isLoopback() const
+{
+    return !m_tcp || m_tcp->serverAddress().isLoopback();
+}
+
+QString Server::url() const
+{
+    if (!m_tcp)
+        return QString();
+    const QHostAddress address = m_tcp->serverAddress();
+    const QString host = address.protocol() == QAbstractSocket::IPv6Protocol
+                             ? QStringLiteral("[%1]").arg(address.toString())
+                             : address.toString();
+    return QStringLiteral("ws://%1:%2").arg(host).arg(m_tcp->serverPort());
+}
+
+// The handshake is read here first, so that a client offering neither
+// subprotocol gets a plain 400 rather than a connection without one.
+void Server::onTcpConnection()
+{
+    while (QTcpSocket *socket = m_tcp->nextPendingConnection()) {
+        if (clientCount() + m_tcp->findChildren<QTcpSocket *>(Qt::FindDirectChildrenOnly).size() > kMaxConnections) {
+            socket->write("HTTP/1.1 503 Service Unavailable\r\nConnection: close\r\n\r\n");
+            socket->disconnectFromHost();
+            connect(socket, &QTcpSocket::disconnected, socket, &QObject::deleteLater);
+            emit clientRefused(peerOf(socket), QStringLiteral("came when %1 were connected").arg(kMaxConnections));
+            continue;
+        }
+        connect(socket, &QTcpSocket::readyRead, this, [this, socket] { readHandshake(socket); });
+        connect(socket, &QTcpSocket::disconnected, socket, &QObject::deleteLater);
+        auto *timeout = new QTimer(socket);
+        timeout->setSingleShot(true);
+        connect(timeout, &QTimer::timeout, socket, [socket] { socket->abort(); });
+        timeout->start(kHandshakeMs);
+        readHandshake(socket);
+    }
+}
+
+void Server::readHandshake(QTcpSocket *socket)
+{
+    const QByteArray request = socket->peek(kMaxHandshake);
+    if (!request.contains("\r\n\r\n")) {
+        if (request.size() >= kMaxHandshake) {
+            emit clientRefused(peerOf(socket), QStringLiteral("a handshake larger than %1 bytes").arg(kMaxHandshake));
+            socket->abort();
+        }
+        return;
+    }
+    const QStringList offered = offeredSubprotocols(request);
+    if (!offered.contains(QLatin1String(kSubprotocol)) && !offered.contains(QLatin1String(kSdkSubprotocol))) {
+        const QString why = offered.isEmpty() ? QStringLiteral("offered no subprotocol")
+                                              : QStringLiteral("offered %1").arg(offered.join(QStringLiteral(", ")));
+        socket->disconnect(this);
+        socket->write("HTTP/1.1 400 Bad Request\r\nContent-Type: text/plain\r\nConnection: close\r\n\r\n"
+                      "Offer the subprotocol foxglove.websocket.v1 or foxglove.sdk.v1.\r\n");
+        socket->disconnectFromHost();
+        qCWarning(lcFoxglove, "live data server: refused %s, which %s (it wants foxglove.websocket.v1 or "
+                              "foxglove.sdk.v1)",
+                  qPrintable(peerOf(socket)), qPrintable(why));
+        emit clientRefused(peerOf(socket), why);
+        return;
+    }
+    socket->disconnect(this);
+    disconnect(socket, &QTcpSocket::disconnected, socket, &QObject::deleteLater);
+    for (QTimer *timer : socket->findChildren<QTimer *>())
+        delete timer;
+    socket->setParent(nullptr);
+    m_webSockets->handleConnection(socket);
+}
+
+void Server::onWebSocket()
+{
+    while (QWebSocket *socket = m_webSockets->nextPendingConnection()) {
+        socket->setParent(this);
+        socket->setMaxAllowedIncomingMessageSize(kMaxClientMessage);
+        socket->setMaxAllowedIncomingFrameSize(kMaxClientMessage);
+        auto client = std::make_unique<Client>();
+        client->socket = socket;
+        client->peer = peerOf(socket);
+        Client *c = client.get();
+        m_clients.push_back(std::move(client));
+        connect(socket, &QWebSocket::textMessageReceived, this, [this, c](const QString &text) { onText(c, text); });
+        connect(socket, &QWebSocket::binaryMessageReceived, this, [this, c] {
+            sendStatus(c, StatusError, QStringLiteral("this server takes no binary messages (no clientPublish)"));
+        });
+        connect(socket, &QWebSocket::disconnected, this, [this, c] { removeClient(c); });
+        qCInfo(lcFoxglove, "live data server: %s connected (%s)", qPrintable(c->peer), qPrintable(socket->subprotocol()));
+        sendServerInfo(c);
+        QList<ChannelId> all;
+        for (const auto &[id, state] : m_channels)
+            all << id;
+        advertiseTo(c, all);
+        emit clientCountChanged(clientCount());
+    }
+}
+
+void Server::removeClient(Client *client)
+{
+    const auto it = std::find_if(m_clients.begin(), m_clients.end(),
+                                 [client](const std::unique_ptr<Client> &c) { return c.get() == client; });
+    if (it == m_clients.end())
+        return;
+    client->socket->disconnect(this);
+    client->socket->deleteLater();
+    for (const quint32 subscription : client->subscriptions.keys())
+        unsubscribe(client, subscription);
+    m_clients.erase(it);
+    emit clientCountChanged(clientCount());
+}
+
+void Server::drop(Client *client, const QString &why)
+{
+    const QString peer = client->peer;
+    qCWarning(lcFoxglove, "live data server: dropped %s: %s", qPrintable(peer), qPrintable(why));
+    client->socket->abort();
+    removeClient(client);
+    emit clientDropped(peer, why);
+}
+
+void Server::sendText(Client *client, const QByteArray &json)
+{
+    client->socket->sendTextMessage(QString::fromUtf8(json));
+}
+
+void Server::sendBinary(Client *client, const QByteArray &message)
+{
+    client->socket->sendBinaryMessage(message);
+}
+
+void Server::sendServerInfo(Client *client)
+{
+    QJsonObject metadata;
+    for (auto it = m_metadata.cbegin(); it != m_metadata.cend(); ++it)
+        metadata.insert(it.key(), it.value());
+    sendText(client, compact({{"op", "serverInfo"},
+                              {"name", m_name},
+                              {"capabilities", QJsonArray{"time"}},
+                              {"supportedEncodings", QJsonArray{}},
+                              {"metadata", metadata},
+                              {"sessionId", m_sessionId}}));
+}
+
+void Server::sendStatus(Client *client, int level, const QString &message)
+{
+    sendText(client, compact({{"op", "status"}, {"level", level}, {"message", message}}));
+}
+
+void Server::advertiseTo(Client *client, const QList<ChannelId> &ids)
+{
+    if (ids.isEmpty())
+        return;
+    QJsonArray channels;
+    for (ChannelId id : ids) {
+        const Channel &c = m_channels.at(id)->channel;
+        channels.append(QJsonObject{{"id", qint64(id)},
+                                    {"topic", c.topic},
+                                    {"encoding", c.encoding},
+                                    {"schemaName", c.schemaName},
+                                    {"schema", QString::fromUtf8(c.schema)},
+                                    {"schemaEncoding", c.schemaEncoding}});
+    }
+    sendText(client, compact({{"op", "advertise"}, {"channels", channels}}));
+}
+
+void Server::onText(Client *client, const QString &text)
+{
+    QJsonParseError parseError;
+    const QJsonObject message = QJsonDocument::fromJson(text.toUtf8(), &parseError).object();
+    const QString op = message.value("op").toString();
+    if (op == QLatin1String("subscribe")) {
+        for (const QJsonValue &v : message.value("subscriptions").toArray()) {
+            const QJsonObject s = v.toObject();
+            const double id = s.value("id").toDouble(-1), channel = s.value("channelId").toDouble(-1);
+            if (id < 0 || id > std::numeric_limits<quint32>::max() || id != std::floor(id) || channel < 1
+                || channel > std::numeric_limits<quint32>::max() || !m_channels.count(ChannelId(channel))) {
+                sendStatus(client, StatusWarning,
+                           QStringLiteral("cannot subscribe %1 to channel %2: no such channel")
+                               .arg(s.value("id").toVariant().toString(), s.value("channelId").toVariant().toString()));
+                continue;
+            }
+            if (client->subscriptions.contains(quint32(id)) || client->subscriptions.size() >= kMaxSubscriptions) {
+                sendStatus(client, StatusWarning,
+                           QStringLiteral("subscription %1 is already in use (or too many)").arg(quint32(id)));
+                continue;
+            }
+            client->subscriptions.insert(quint32(id), ChannelId(channel));
+            ++m_channels.at(ChannelId(channel))->subscriptions;
+        }
+    } else if (op == QLatin1String("unsubscribe")) {
+        for (const QJsonValue &v : message.value("subscriptionIds").toArray())
+            unsubscribe(client, quint32(v.toDouble(-1)));
+    } else {
+        sendStatus(client, StatusError,
+                   parseError.error != QJsonParseError::NoError
+                       ? QStringLiteral("not JSON: %1").arg(parseError.errorString())
+                       : QStringLiteral("'%1' is not an operation this server takes (it serves subscribe and "
+                                        "unsubscribe)")
+                             .arg(op));
+    }
+}
+
+Server::ChannelId Server::advertise(const Channel &channel, Delivery delivery)
+{
+    auto state = std::make_unique<ChannelState>();
+    state->channel = channel;
+    state->delivery = delivery;
+    state->id = m_nextChannel++;
+    if (delivery == Delivery::Latest) {
+        state->timer = std::make_unique<oilink::ClockTimer>(m_clock);
+        state->timer->setSingleShot(true);
+        ChannelState *s = state.get();
+        connect(state->timer.get(), &oilink::ClockTimer::timeout, this, [this, s] {
+            if (s->pending)
+                sendNow(*s, s->pendingTimeNs, std::exchange(s->pending, nullptr));
+        });
+    }
+    const ChannelId id = state->id;
+    m_channels.emplace(id, std::move(state));
+    for (const std::unique_ptr<Client> &client : m_clients)
+        advertiseTo(client.get(), {id});
+    return id;
+}
+
+void Server::withdraw(ChannelId id)
+{
+    if (!m_channels.erase(id))
+        return;
+    for (const std::unique_ptr<Client> &client : m_clients) {
+        for (auto it = client->subscriptions.begin(); it != client->subscriptions.end();)
+            it = it.value() == id ? client->subscriptions.erase(it) : std::next(it);
+        sendText(client.get(), compact({{"op", "unadvertise"}, {"channelIds", QJsonArray{qint64(id)}}}));
+    }
+}
+
+QList<Channel> Server::channels() const
+{
+    QList<Channel> list;
+    for (const auto &[id, state] : m_channels)
+        list << state->channel;
+    return list;
+}
+
+bool Server::isSubscribed(ChannelId id) const
+{
+    const auto it = m_channels.find(id);
+    return it != m_channels.end() && it->second->subscriptions > 0;
+}
+
+void Server::unsubscribe(Client *client, quint32 subscription)
+{
+    const auto it = client->subscriptions.find(subscription);
+    if (it == client->subscriptions.end())
+        return;
+    if (const auto channel = m_channels.find(it.value()); channel != m_channels.end())
+        --channel->second->subscriptions;
+    client->subscriptions.erase(it);
+}
+
+qint64 Server::intervalNs() const
+{
+    return m_limits.messagesPerSecond > 0 ? qint64(1e9 / m_limits.messagesPerSecond) : 0;
+}
+
+void Server::publish(ChannelId id, quint64 timeNs, const std::function<QByteArray()> &encode)
+{
+    const auto it = m_channels.find(id);
+    if (it == m_channels.end() || !isSubscribed(id))
+        return;
+    ChannelState &channel = *it->second;
+    if (channel.delivery == Delivery::Every) {
+        sendNow(channel, timeNs, encode);
+        return;
+    }
+    const qint64 now = m_clock.nowNs();
+    // A quarter interval of tolerance: a frame that comes a little early
+    // (frames arrive with jitter) goes at once, while the average stays
+    // within the rate.
+    const qint64 dueNs = channel.scheduledNs - intervalNs() / 4;
+    if (now >= dueNs) {
+        channel.pending = nullptr;
+        channel.timer->stop();
+        sendNow(channel, timeNs, encode);
+        return;
+    }
+    // The latest wins: the one held before is never made.
+    channel.pending = encode;
+    channel.pendingTimeNs = timeNs;
+    if (!channel.timer->isActive())
+        channel.timer->start(int((dueNs - now + 999999) / 1000000));
+}
+
+void Server::sendNow(ChannelState &channel, quint64 timeNs, const std::function<QByteArray()> &encode)
+{
+    channel.scheduledNs = std::max(channel.scheduledNs, m_clock.nowNs()) + intervalNs();
+    const QByteArray payload = encode();
+    ++m_encodes;
+    QByteArray message(1 + 4 + 8, Qt::Uninitialized);
+    message[0] = char(MessageData);
+    qToLittleEndian<quint64>(timeNs, message.data() + 5);
+    message += payload;
+    std::vector<Client *> slow;
+    for (const std::unique_ptr<Client> &client : m_clients) {
+        for (auto it = client->subscriptions.cbegin(); it != client->subscriptions.cend(); ++it) {
+            if (it.value() != channel.id)
+                continue;
+            qToLittleEndian<quint32>(it.key(), message.data() + 1);
+            sendBinary(client.get(), message);
+        }
+        if (client->socket->bytesToWrite() > m_limits.queuedBytes)
+            slow.push_back(client.get());
+    }
+    for (Client *client : slow)
+        drop(client, QStringLiteral("it reads too slowly (%1 bytes waiting, the limit is %2)")
+                         .arg(client->socket->bytesToWrite())
+                         .arg(m_limits.queuedBytes));
+}
+
+void Server::setTime(quint64 timeNs)
+{
+    if (m_clients.empty())
+        return;
+    const qint64 dueNs = m_timeSentNs == std::numeric_limits<qint64>::min() ? 0 : m_timeSentNs + intervalNs();
+    if (m_clock.nowNs() >= dueNs) {
+        m_timePending.reset();
+        m_timeTimer.stop();
+        sendTime(timeNs);
+        return;
+    }
+    m_timePending = timeNs;
+    if (!m_timeTimer.isActive())
+        m_timeTimer.start(int((dueNs - m_clock.nowNs() + 999999) / 1000000));
+}
+
+void Server::sendTime(quint64 timeNs)
+{
+    m_timeSentNs = m_clock.nowNs();
+    QByteArray message(1 + 8, Qt::Uninitialized);
+    message[0] = char(Time);
+    qToLittleEndian<quint64>(timeNs, message.data() + 1);
+    for (const std::unique_ptr<Client> &client : m_clients)
+        sendBinary(client.get(), message);
+}
+
+void Server::startSession()
+{
+    m_sessionId = QString::number(QRandomGenerator::global()->generate64(), 36);
+    for (const std::unique_ptr<Client> &client : m_clients)
+        sendServerInfo(client.get());
+}
+
+} // namespace foxglove

@@ -1,0 +1,283 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The live data server's own rules, with a client in the test's process and
+// the rate limit on the test's clock: what a subscriber gets, what nobody
+// reads costs, what a bad message or address gets.
+
+#include "foxglove_server.h"
+#include "manual_clock.h"
+
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QSignalSpy>
+#include <QTcpSocket>
+#include <QTest>
+#include <QWebSocket>
+#include <QWebSocketHandshakeOptions>
+#include <QtEndian>
+
+namespace {
+
+constexpr int kTimeoutMs = 10000;
+
+// A client that keeps what it hears.
+struct Client {
+    QWebSocket socket;
+    QList<QJsonObject> texts;
+    QList<QByteArray> binaries;
+
+    explicit Client(const QString &url, const QStringList &subprotocols = {foxglove::kSubprotocol})
+    {
+        QObject::connect(&socket, &QWebSocket::textMessageReceived,
+                         [this](const QString &t) { texts << QJsonDocument::fromJson(t.toUtf8()).object(); });
+        QObject::connect(&socket, &QWebSocket::binaryMessageReceived, [this](const QByteArray &b) { binaries << b; });
+        QWebSocketHandshakeOptions options;
+        options.setSubprotocols(subprotocols);
+        socket.open(QUrl(url), options);
+    }
+    QJsonObject last(const QString &op) const
+    {
+        for (qsizetype i = texts.size() - 1; i >= 0; --i)
+            if (texts[i].value("op").toString() == op)
+                return texts[i];
+        return {};
+    }
+    void send(const QJsonObject &message)
+    {
+        socket.sendTextMessage(QString::fromUtf8(QJsonDocument(message).toJson(QJsonDocument::Compact)));
+    }
+    void subscribe(quint32 subscription, quint32 channel)
+    {
+        send({{"op", "subscribe"},
+              {"subscriptions", QJsonArray{QJsonObject{{"id", qint64(subscription)}, {"channelId", qint64(channel)}}}}});
+    }
+    // Message data: the payloads, in order.
+    QList<QByteArray> payloads() const
+    {
+        QList<QByteArray> list;
+        for (const QByteArray &b : binaries)
+            if (b.at(0) == 1)
+                list << b.mid(13);
+        return list;
+    }
+};
+
+} // namespace
+
+class TestFoxgloveServer : public QObject {
+    Q_OBJECT
+private:
+    ManualClock m_clock;
+    std::unique_ptr<foxglove::Server> m_server;
+    foxglove::Server::ChannelId m_frames = 0, m_log = 0;
+
+    std::unique_ptr<Client> connected()
+    {
+        auto client = std::make_unique<Client>(m_server->url());
+        QSignalSpy advertised(&client->socket, &QWebSocket::textMessageReceived);
+        while (client->last("advertise").isEmpty())
+            if (!advertised.wait(kTimeoutMs))
+                return nullptr;
+        return client;
+    }
+    // Until the server has taken the client's subscription.
+    bool subscribed(Client &client, quint32 subscription, foxglove::Server::ChannelId channel)
+    {
+        client.subscribe(subscription, channel);
+        QElapsedTimer waited;
+        waited.start();
+        while (!m_server->isSubscribed(channel) && waited.elapsed() < kTimeoutMs)
+            QTest::qWait(5);
+        return m_server->isSubscribed(channel);
+    }
+
+private slots:
+    void init()
+    {
+        m_server = std::make_unique<foxglove::Server>("test", m_clock);
+        foxglove::ServerAddress address;
+        address.port = 0;
+        QVERIFY2(m_server->listen(address), qPrintable(m_server->errorString()));
+        QVERIFY(m_server->isLoopback());
+        m_frames = m_server->advertise({"/r1/telemetry", "json", "t", "{}", "jsonschema"}, foxglove::Delivery::Latest);
+        m_log = m_server->advertise({"/r1/events", "json", "foxglove.Log", "{}", "jsonschema"}, foxglove::Delivery::Every);
+    }
+
+    void nothingIsMadeForAChannelNobodyReads()
+    {
+        auto client = connected();
+        QVERIFY(client);
+        int made = 0;
+        for (int i = 0; i < 100; ++i) {
+            m_server->publish(m_frames, i, [&] { return ++made, QByteArray("{}"); });
+            m_clock.advance(15);
+        }
+        QCOMPARE(made, 0);
+        QCOMPARE(m_server->encodeCount(), quint64(0));
+    }
+
+    // At most 50 a second: within one interval the latest wins, and the ones
+    // it replaced are never made.
+    void theLatestFrameWinsWithinTheRate()
+    {
+        auto client = connected();
+        QVERIFY(client);
+        QVERIFY(subscribed(*client, 7, m_frames));
+        QStringList made;
+        for (int i = 0; i < 5; ++i) {
+            m_server->publish(m_frames, quint64(i), [&, i] {
+                made << QString::number(i);
+                return QByteArray::number(i);
+            });
+            m_clock.advance(2); // five frames within the 15 ms before the next may go
+        }
+        QCOMPARE(made, QStringList{"0"});
+        m_clock.advance(20);
+        QCOMPARE(made, (QStringList{"0", "4"}));
+        QTRY_COMPARE_WITH_TIMEOUT(client->payloads(), (QList<QByteArray>{"0", "4"}), kTimeoutMs);
+        const QByteArray &last = client->binaries.last();
+        QCOMPARE(qFromLittleEndian<quint32>(last.constData() + 1), quint32(7)); // the client's subscription id
+        QCOMPARE(qFromLittleEndian<quint64>(last.constData() + 5), quint64(4)); // the frame's time
+    }
+
+    // A robot's 66.7 frames a second become 50 messages a second.
+    void aStreamGoesAtTheRate()
+    {
+        auto client = connected();
+        QVERIFY(client);
+        QVERIFY(subscribed(*client, 1, m_frames));
+        int made = 0;
+        for (int i = 0; i < 400; ++i) { // 6 s
+            m_server->publish(m_frames, quint64(i), [&] { return ++made, QByteArray("{}"); });
+            m_clock.advance(15);
+        }
+        QCOMPARE(made, 1 + 50 * 6); // the first, then 50 a second
+    }
+
+    void everyLogLineIsSent()
+    {
+        auto client = connected();
+        QVERIFY(client);
+        QVERIFY(subscribed(*client, 1, m_log));
+        for (int i = 0; i < 5; ++i)
+            m_server->publish(m_log, quint64(i), [i] { return QByteArray::number(i); });
+        QTRY_COMPARE_WITH_TIMEOUT(client->payloads(), (QList<QByteArray>{"0", "1", "2", "3", "4"}), kTimeoutMs);
+    }
+
+    void aWithdrawnChannelIsSaidAndEndsItsSubscriptions()
+    {
+        auto client = connected();
+        QVERIFY(client);
+        QVERIFY(subscribed(*client, 1, m_frames));
+        m_server->withdraw(m_frames);
+        QVERIFY(!m_server->isSubscribed(m_frames));
+        QTRY_VERIFY_WITH_TIMEOUT(!client->last("unadvertise").isEmpty(), kTimeoutMs);
+        QCOMPARE(client->last("unadvertise").value("channelIds").toArray(), QJsonArray{qint64(m_frames)});
+    }
+
+    void badMessagesGetAStatusAndKeepTheConnection()
+    {
+        auto client = connected();
+        QVERIFY(client);
+        client->socket.sendTextMessage("{not json");
+        QTRY_VERIFY_WITH_TIMEOUT(client->last("status").value("message").toString().startsWith("not JSON"), kTimeoutMs);
+        client->send({{"op", "advertise"}, {"channels", QJsonArray{}}});
+        QTRY_VERIFY_WITH_TIMEOUT(client->last("status").value("message").toString().contains("'advertise'"),
+                                 kTimeoutMs);
+        client->subscribe(1, 999);
+        QTRY_VERIFY_WITH_TIMEOUT(client->last("status").value("message").toString().contains("no such channel"),
+                                 kTimeoutMs);
+        QVERIFY(subscribed(*client, 1, m_frames));
+        QCOMPARE(client->socket.state(), QAbstractSocket::ConnectedState);
+        QCOMPARE(m_server->clientCount(), 1);
+    }
+
+    void aClientOfferingNeitherNameIsRefused()
+    {
+        QSignalSpy refused(m_server.get(), &foxglove::Server::clientRefused);
+        Client client(m_server->url(), {"foxglove.bogus.v1"});
+        QSignalSpy ended(&client.socket, &QWebSocket::disconnected);
+        QVERIFY(refused.wait(kTimeoutMs));
+        QCOMPARE(refused.first().at(1).toString(), QString("offered foxglove.bogus.v1"));
+        QVERIFY(ended.count() || ended.wait(kTimeoutMs));
+        QCOMPARE(m_server->clientCount(), 0);
+    }
+
+    // Connections that never finish their handshake cannot crowd the server
+    // out: beyond 32 at once, the next is told 503 and closed.
+    void connectionsAreBounded()
+    {
+        QSignalSpy refused(m_server.get(), &foxglove::Server::clientRefused);
+        std::vector<std::unique_ptr<QTcpSocket>> idle;
+        for (int i = 0; i < 33; ++i) {
+            idle.push_back(std::make_unique<QTcpSocket>());
+            idle.back()->connectToHost(QHostAddress::LocalHost, m_server->port());
+            QVERIFY(idle.back()->waitForConnected(kTimeoutMs));
+        }
+        QTRY_COMPARE_WITH_TIMEOUT(refused.count(), 1, kTimeoutMs);
+        QVERIFY2(refused.first().at(1).toString().contains("32 were connected"),
+                 qPrintable(refused.first().at(1).toString()));
+        QTRY_VERIFY_WITH_TIMEOUT(idle.back()->bytesAvailable() || idle.back()->state() != QAbstractSocket::ConnectedState,
+                                 kTimeoutMs);
+        QVERIFY(idle.back()->readAll().startsWith("HTTP/1.1 503"));
+    }
+
+    void aNewSessionIsToldToEveryClient()
+    {
+        auto client = connected();
+        QVERIFY(client);
+        const QString before = client->last("serverInfo").value("sessionId").toString();
+        QCOMPARE(before, m_server->sessionId());
+        m_server->setMetadata({{"r1.profile", "create2"}});
+        m_server->startSession();
+        QTRY_VERIFY_WITH_TIMEOUT(client->last("serverInfo").value("sessionId").toString() != before, kTimeoutMs);
+        QCOMPARE(client->last("serverInfo").value("metadata").toObject().value("r1.profile").toString(),
+                 QString("create2"));
+    }
+
+    void addressesAreReadOrRefused_data()
+    {
+        QTest::addColumn<QString>("text");
+        QTest::addColumn<QString>("address");
+        QTest::addColumn<int>("port");
+        QTest::addColumn<QString>("error");
+        QTest::newRow("port") << "9000" << "127.0.0.1" << 9000 << "";
+        QTest::newRow("both") << "0.0.0.0:8765" << "0.0.0.0" << 8765 << "";
+        QTest::newRow("address alone") << "192.168.1.5" << "192.168.1.5" << 8765 << "";
+        QTest::newRow("ipv6") << "[::1]:8000" << "::1" << 8000 << "";
+        QTest::newRow("no port") << "127.0.0.1:" << "127.0.0.1" << 8765 << "";
+        QTest::newRow("name") << "localhost:8765" << "" << 0 << "'localhost' is not an IP address";
+        QTest::newRow("port too big") << "70000" << "" << 0 << "'70000' is not a port";
+        QTest::newRow("words") << "eighty" << "" << 0 << "'eighty' is not a port";
+    }
+
+    void addressesAreReadOrRefused()
+    {
+        QFETCH(QString, text);
+        QFETCH(QString, address);
+        QFETCH(int, port);
+        QFETCH(QString, error);
+        QString why;
+        const std::optional<foxglove::ServerAddress> read = foxglove::ServerAddress::parse(text, &why);
+        QCOMPARE(bool(read), error.isEmpty());
+        if (read) {
+            QCOMPARE(read->address.toString(), address);
+            QCOMPARE(int(read->port), port);
+        } else {
+            QVERIFY2(why.startsWith(error), qPrintable(why));
+        }
+    }
+
+    void aPortInUseIsSaid()
+    {
+        foxglove::Server second("second", m_clock);
+        foxglove::ServerAddress address;
+        address.port = m_server->port();
+        QVERIFY(!second.listen(address));
+        QVERIFY2(second.errorString().startsWith(QStringLiteral("cannot serve on 127.0.0.1:%1").arg(address.port)),
+                 qPrintable(second.errorString()));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestFoxgloveServer)
+#include "tst_foxglove_server.moc"

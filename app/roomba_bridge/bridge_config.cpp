@@ -35,6 +35,7 @@ const QStringList &BridgeConfig::keys()
         QStringLiteral("rate"),     QStringLiteral("allow-full"),    QStringLiteral("full-telemetry"),
         QStringLiteral("allow-schedule"), QStringLiteral("brc-line"),
         QStringLiteral("foxglove"), QStringLiteral("foxglove-rate"),
+        QStringLiteral("room"),     QStringLiteral("record"),
     };
     return k;
 }
@@ -185,6 +186,14 @@ std::optional<BridgeConfig> BridgeConfig::fromSettings(const QList<Setting> &set
             return fail(QStringLiteral("tcp"), QStringLiteral("'%1' is not HOST:PORT with a port from 1 to 65535").arg(tcp));
         c.link = oilink::LinkSettings::tcp(tcp.left(colon), quint16(port), profile);
     }
+
+    if (has("room")) {
+        if (where.first() != QLatin1String("sim"))
+            return fail(QStringLiteral("room"), QStringLiteral("only the virtual robot (sim) drives in a room file"));
+        c.roomFile = value("room");
+    }
+    if (has("record"))
+        c.recordFile = value("record");
 
     if (has("brc-line")) {
         const std::optional<oi::BrcLine> line = oi::brcLineByName(value("brc-line").toStdString());

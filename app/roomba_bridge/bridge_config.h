@@ -33,6 +33,11 @@ struct BridgeConfig {
     // messages a second per channel.
     std::optional<foxglove::ServerAddress> liveServer;
     double liveRateHz = 50;
+    // With sim: the room file the virtual robot drives in (empty: the
+    // classroom). Any robot: a recording of every byte of its link, with a
+    // virtual robot's true pose (recording_format.md), or empty.
+    QString roomFile;
+    QString recordFile;
 
     // One value and where it came from ("--rate", "r1.conf:4"), for errors.
     struct Setting {

@@ -8,6 +8,7 @@
 #include "name_claim.h"
 #include "robot_bridge.h"
 #include "robot_session.h"
+#include "room_file.h"
 #include "termination_signals.h"
 #include "transport_factory.h"
 
@@ -76,6 +77,8 @@ int main(int argc, char *argv[])
         {QStringLiteral("allow-full"), QStringLiteral("Let the client in control send full. The robot then ignores cliffs and wheel drops; the bridge stops it at the first one.")},
         {QStringLiteral("foxglove"), QStringLiteral("Serve the robot live to Foxglove, Lichtblick and PlotJuggler (Foxglove WebSocket protocol) on [ADDRESS:]PORT: 8765 is the usual port, 127.0.0.1 (this computer only) the default address; 0.0.0.0 lets every network in."), QStringLiteral("[ADDRESS:]PORT")},
         {QStringLiteral("foxglove-rate"), QStringLiteral("The live data server's messages a second per channel, each a whole frame (default 50)."), QStringLiteral("HZ")},
+        {QStringLiteral("room"), QStringLiteral("With --sim: the room the virtual robot drives in, a room file (protocol/sim/room_format.md). Default the classroom."), QStringLiteral("FILE")},
+        {QStringLiteral("record"), QStringLiteral("Record every byte of the robot's link into FILE (.oirec), with a virtual robot's true pose, as the dashboard records."), QStringLiteral("FILE")},
         {QStringLiteral("allow-schedule"), QStringLiteral("Let the client in control send schedule and set-day-time. A Roomba 600 / Create 2 then starts cleaning at the set times by itself, with nobody in control.")},
     });
     if (!parser.parse(QCoreApplication::arguments()))
@@ -119,7 +122,15 @@ int main(int argc, char *argv[])
     // Its thread does little else; with the link on it, it wakes once a
     // frame. A Pi Zero 2 has four slow cores to spare none of.
     robot.setLinkOnThisThread(true);
-    robot.setTransportFactory(transports::transportFactory());
+    if (config->roomFile.isEmpty()) {
+        robot.setTransportFactory(transports::transportFactory());
+    } else {
+        const std::optional<sim::World> world = sim::loadRoomFile(config->roomFile, &error);
+        if (!world)
+            return fail(QStringLiteral("room: %1").arg(error));
+        const auto room = std::make_shared<sim::Room>(*world);
+        robot.setTransportFactory(transports::transportFactory(room, room->placeNewRobot()));
+    }
     // With an account, the id is the account's name, as the classroom's
     // broker makes it anyway (use_username_as_clientid).
     mqtt::MqttClient broker(config->broker.username.isEmpty() ? QStringLiteral("roomba-bridge-%1").arg(config->name)
@@ -197,6 +208,13 @@ int main(int argc, char *argv[])
     }
     bridge.start();
     robot.connectTo(config->link);
+    if (!config->recordFile.isEmpty()) {
+        QObject::connect(&robot, &RobotSession::recordingStatus, &app, [](const oilink::RecordingStatus &s) {
+            if (!s.error.isEmpty())
+                qCWarning(lcBridge, "record: %s", qPrintable(s.error));
+        });
+        robot.startRecording(config->recordFile);
+    }
     if (!broker.connectToBroker(config->broker) || (stopLineAddress && !stopLine.connectToBroker(*stopLineAddress)))
         return kUsageError; // a setting the library refuses; errorOccurred has said which
     return app.exec();

@@ -5,6 +5,7 @@
 #include "command_message.h"
 #include "command_modes.h"
 #include "fleet_topics.h"
+#include "goal_command.h"
 #include "robot_session.h"
 #include "snapshot_json.h"
 
@@ -59,8 +60,9 @@ QString nameOf(oi::Command c)
 RobotBridge::RobotBridge(RobotSession &robot, mqtt::MqttClient &broker, LeaseClock &clock, Options options,
                          QObject *parent)
     : QObject(parent), m_robot(robot), m_broker(broker), m_clock(clock), m_lease(clock), m_options(std::move(options)),
-      m_rules{m_options.allowFull, m_options.allowSchedule}, m_inbox(clock, m_options.name)
+      m_rules{m_options.allowFull, m_options.allowSchedule}, m_inbox(clock, m_options.name), m_goal(robot)
 {
+    connect(&m_goal, &GoalDrive::ended, this, &RobotBridge::onGoalEnded);
     // Messages are sized on the network thread and timed as they arrive;
     // heartbeats that wait are read before the lease is judged.
     m_broker.setMaxPayloadBytes(kMaxPayloadBytes);
@@ -97,6 +99,8 @@ RobotBridge::RobotBridge(RobotSession &robot, mqtt::MqttClient &broker, LeaseClo
     connect(&m_lease, &ControlLease::expired, this, [this](const QString &former) {
         qCInfo(lcBridge, "control: no heartbeat from %s for %d ms", qPrintable(former),
                ControlLease::kHeartbeatTimeoutMs);
+        endGoal("heartbeat", QStringLiteral("no heartbeat for %1 ms: the robot was stopped and control freed")
+                                 .arg(ControlLease::kHeartbeatTimeoutMs));
         stopRobot();
         replyControl(former, false,
                      QStringLiteral("no heartbeat for %1 ms: the robot was stopped and control freed")
@@ -179,6 +183,7 @@ void RobotBridge::shutDown()
     if (m_shutDown)
         return;
     m_shutDown = true;
+    m_goal.cancel();
     m_lease.free();
     m_statsTimer.stop();
     m_telemetryTimer.stop();
@@ -255,6 +260,7 @@ QString RobotBridge::freeControlAndStop()
 {
     // Without a controller the robot is already stopped (a release, a lapse
     // and a takeover each stop it), so losing both connections stops it once.
+    endGoal("stopped", QStringLiteral("the bridge lost its connection to the broker: the robot was stopped"));
     const QString former = m_lease.free();
     if (!former.isEmpty())
         stopRobot();
@@ -295,6 +301,7 @@ void RobotBridge::onPayloadTooLarge(const QString &topic, qsizetype bytes)
 void RobotBridge::stopAll()
 {
     qCInfo(lcBridge, "stop all");
+    endGoal("stop-all", QStringLiteral("stop all: the robot was stopped and control freed"));
     stopRobot();
     const QString former = m_lease.free();
     if (!former.isEmpty())
@@ -344,6 +351,7 @@ void RobotBridge::stopAtEdges(const oi::SensorSnapshot &frame)
     const bool rugLike = RobotMode::darkFloorSignals(frame);
     qCInfo(lcBridge, "%s in Full mode while %s drives: stop",
            rugLike ? "cliff with signals like a dark rug's" : "cliff or wheel drop", qPrintable(m_lease.holder()));
+    endGoal("safety", QStringLiteral("cliff or wheel drop in Full mode: the robot was stopped"));
     stopRobot();
     reply(m_lease.holder(),
           {{"id", "safety"},
@@ -374,9 +382,14 @@ void RobotBridge::handleCommand(const BridgeInbox::Message &message)
             return refuse(QStringLiteral("too many stops: one every %1 ms from a client that does not hold control")
                               .arg(BridgeInbox::kStopIntervalMs));
         qCInfo(lcBridge, "stop from %s", qPrintable(client));
+        endGoal("stopped", QStringLiteral("%1 stopped the robot").arg(client), client);
         stopRobot();
         tellControllerOfStop(client);
         return reply(client, {{"id", id}, {"ok", true}});
+    }
+    if (isGoalCommand(request->command)) {
+        handleGoal(client, id, *request);
+        return;
     }
     // Either form becomes the same typed command; from here on only it counts.
     const std::optional<oi::OiCommand> command = request->toCommand(m_robot.robotProfile(), &error);
@@ -388,12 +401,8 @@ void RobotBridge::handleCommand(const BridgeInbox::Message &message)
     const oi::EncodeResult bytes = oi::encodeCommand(oi::CommandEncoder(m_robot.robotProfile()), *command);
     if (!bytes)
         return refuse(QString::fromStdString(bytes.error().describe()));
-    if (!m_lease.isHeldBy(client)) {
-        const QString holder = m_lease.holder();
-        if (holder.isEmpty())
-            return refuse(QStringLiteral("nobody has control: take it first"), {{"controller", QJsonValue()}});
-        return refuse(QStringLiteral("%1 has control").arg(holder), {{"controller", holder}});
-    }
+    if (const QString why = controlRefusal(client); !why.isEmpty())
+        return refuse(why, {{"controller", m_lease.holder().isEmpty() ? QJsonValue() : m_lease.holder()}});
     error = sendValidated(*command, QByteArray(reinterpret_cast<const char *>(bytes->data()), qsizetype(bytes->size())));
     if (!error.isEmpty())
         return refuse(error);
@@ -404,6 +413,8 @@ QString RobotBridge::sendValidated(const oi::OiCommand &command, const QByteArra
 {
     const oi::Command c = command.command;
     const std::optional<MotionCommand> motion = MotionCommand::fromCommand(command);
+    if (motion)
+        endGoal("replaced", QStringLiteral("a %1 from the same client replaced the move").arg(nameOf(c)));
     if (motion && motion->isStop()) {
         // A stop is never assumed: sent in any mode, with or without data.
         stopRobot();
@@ -455,6 +466,7 @@ void RobotBridge::handleControl(const QString &client, const QByteArray &payload
             const QString former = m_lease.takeOver(client, arrivedMs);
             if (!former.isEmpty() && former != client) {
                 qCInfo(lcBridge, "takeover: %s takes control from %s", qPrintable(client), qPrintable(former));
+                endGoal("takeover", QStringLiteral("%1 took control").arg(client), client);
                 stopRobot();
                 replyControl(former, false, QStringLiteral("%1 took control").arg(client));
             }
@@ -474,6 +486,7 @@ void RobotBridge::handleControl(const QString &client, const QByteArray &payload
     case ControlAction::Release:
         if (!m_lease.release(client))
             return refuse(QStringLiteral("%1 does not have control").arg(client));
+        endGoal("released", QStringLiteral("control was given back: the robot was stopped"));
         stopRobot();
         return replyControl(client, true);
     }
@@ -573,4 +586,93 @@ void RobotBridge::publishState(bool always)
     m_stateUnsent = !m_broker.publish(mqtt::topics::state(m_options.name), compact(now), 1, true);
     if (!m_stateUnsent)
         m_publishedState = now;
+}
+
+QString RobotBridge::controlRefusal(const QString &client) const
+{
+    if (m_lease.isHeldBy(client))
+        return {};
+    const QString holder = m_lease.holder();
+    return holder.isEmpty() ? QStringLiteral("nobody has control: take it first")
+                            : QStringLiteral("%1 has control").arg(holder);
+}
+
+void RobotBridge::handleGoal(const QString &client, const QString &id, const mqtt::CommandMessage &request)
+{
+    auto refuse = [&](const QString &why, bool aboutControl = false) {
+        logRefusal(client, 0, why);
+        QJsonObject answer{{"id", id}, {"ok", false}, {"error", why}};
+        if (aboutControl)
+            answer.insert(QLatin1String("controller"), m_lease.holder().isEmpty() ? QJsonValue() : m_lease.holder());
+        reply(client, answer);
+    };
+    QString error;
+    const std::optional<MotionGoal> goal = goalFromMessage(request, &error);
+    if (!goal)
+        return refuse(error);
+    if (const QString why = controlRefusal(client); !why.isEmpty())
+        return refuse(why, true);
+    switch (m_goal.whyNot()) {
+    case GoalDrive::Refusal::None: break;
+    case GoalDrive::Refusal::NoData:
+        return refuse(QStringLiteral("no fresh data from the robot (link %1): motion refused").arg(linkWord(m_robot.state())));
+    case GoalDrive::Refusal::Unidentified:
+        return refuse(QStringLiteral("the bridge does not know yet whether this is a Roomba 500 or a Create 2: "
+                                     "motion refused"));
+    case GoalDrive::Refusal::Passive:
+        return refuse(QStringLiteral("the robot is in Passive mode, and %1 moves it only in Safe or Full: send safe "
+                                     "(or full) first")
+                          .arg(request.command));
+    }
+    endGoal("replaced", QStringLiteral("a new move replaced this one"));
+    qCInfo(lcBridge, "move from %s: %s", qPrintable(client), qPrintable(request.command));
+    m_goalClient = client;
+    m_goalId = id;
+    m_goal.start(*goal);
+}
+
+void RobotBridge::endGoal(const char *stop, const QString &error, const QString &by)
+{
+    if (const std::optional<GoalDrive::Result> result = m_goal.cancel())
+        replyGoal(*result, stop, error, by);
+}
+
+void RobotBridge::onGoalEnded(const GoalDrive::Result &r)
+{
+    using E = GoalDrive::End;
+    switch (r.end) {
+    case E::Reached: return replyGoal(r, nullptr, {});
+    case E::Safety:
+        return replyGoal(r, "safety", QStringLiteral("the robot stopped itself: %1").arg(m_robot.mode().shortReason()),
+                         {}, m_robot.mode().causeKeys());
+    case E::Stopped: return replyGoal(r, "stopped", QStringLiteral("the robot's motion was stopped"));
+    case E::TimedOut:
+        return replyGoal(r, "timeout",
+                         QStringLiteral("the move did not end in %1 s (twice its time and 2 s): the robot was "
+                                        "stopped. Is it pushing against something?")
+                             .arg(r.seconds, 0, 'f', 1));
+    case E::NoData:
+        return replyGoal(r, "no-data", QStringLiteral("no fresh data from the robot (link %1): the robot was stopped")
+                                           .arg(linkWord(m_robot.state())));
+    }
+}
+
+void RobotBridge::replyGoal(const GoalDrive::Result &r, const char *stop, const QString &error, const QString &by,
+                            const QStringList &cause)
+{
+    QJsonObject answer{{"id", m_goalId},
+                       {"ok", stop == nullptr},
+                       {"distance_mm", std::round(r.travelledMm * 10) / 10},
+                       {"angle_deg", std::round(r.turnedDeg * 100) / 100},
+                       {"seconds", std::round(r.seconds * 1000) / 1000}};
+    if (stop) {
+        answer.insert(QLatin1String("stop"), QLatin1String(stop));
+        answer.insert(QLatin1String("error"), error);
+        if (!by.isEmpty())
+            answer.insert(QLatin1String("by"), by);
+        if (!cause.isEmpty())
+            answer.insert(QLatin1String("cause"), QJsonArray::fromStringList(cause));
+    }
+    qCInfo(lcBridge, "move for %s ended: %s", qPrintable(m_goalClient), stop ? stop : "reached");
+    reply(m_goalClient, answer);
 }

@@ -4,6 +4,7 @@
 #include "bridge_inbox.h"
 #include "control_message.h"
 #include "control_lease.h"
+#include "goal_drive.h"
 #include "link_status.h"
 #include "mqtt_client.h"
 #include "network_command_rules.h"
@@ -19,6 +20,9 @@
 #include <optional>
 
 class RobotSession;
+namespace mqtt {
+struct CommandMessage;
+}
 
 Q_DECLARE_LOGGING_CATEGORY(lcBridge)
 
@@ -86,6 +90,18 @@ private:
     void onFrame(const oi::SensorSnapshot &frame);
     void handleCommand(const BridgeInbox::Message &message);
     void handleControl(const QString &client, const QByteArray &payload, bool takeover, qint64 arrivedMs);
+    // A move with a goal (goal_command.h): answered when it ends.
+    void handleGoal(const QString &client, const QString &id, const mqtt::CommandMessage &request);
+    // Ends a running goal because the bridge stops the robot (it stops it
+    // next) and tells the client that asked for it: `stop` is the reason as
+    // a word a program reads, `error` the same in words, `by` who stopped it.
+    void endGoal(const char *stop, const QString &error, const QString &by = {});
+    void replyGoal(const GoalDrive::Result &result, const char *stop, const QString &error, const QString &by = {},
+                   const QStringList &cause = {});
+    void onGoalEnded(const GoalDrive::Result &result);
+    // Why a client may not drive now (it does not hold control), or empty;
+    // `holder` is set to who does.
+    QString controlRefusal(const QString &client) const;
     void stopAll();
     // The command's bytes are validated; motion goes through the teleop
     // rules, the rest straight to the robot. Returns the error, or empty.
@@ -121,6 +137,8 @@ private:
     Options m_options;
     NetworkCommandRules m_rules;
     BridgeInbox m_inbox;
+    GoalDrive m_goal;
+    QString m_goalClient, m_goalId; // who asked for the running goal, and the id of its message
     // A cleaning, demo, dock search or button press was sent: the robot may
     // be moving in Passive, where Drive is ignored.
     bool m_autonomous = false;

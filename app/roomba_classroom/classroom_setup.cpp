@@ -7,6 +7,8 @@
 #include <QDir>
 #include <QFile>
 #include <QHostAddress>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QProcess>
 #include <QRandomGenerator>
 #include <QSaveFile>
@@ -306,6 +308,22 @@ QByteArray acl(const Request &r)
     return a.toUtf8();
 }
 
+// A student's connection file for the Python library (docs/python.md): the
+// broker, the CA it is checked against, the account and the robot to drive
+// unless the program names another. One file, so the teacher hands out one.
+QByteArray connectionFile(const Request &r, const QString &student, const QString &password, const QString &robot,
+                          const QByteArray &caPem)
+{
+    const QJsonObject o{{"format", "roomba-connection"},
+                        {"version", 1},
+                        {"broker", brokerUrl(r)},
+                        {"ca", QString::fromLatin1(caPem)},
+                        {"username", student},
+                        {"password", password},
+                        {"robot", robot}};
+    return QJsonDocument(o).toJson(QJsonDocument::Indented);
+}
+
 QByteArray bridgeConfig(const Request &r, const QString &robot, const QString &password, const QString &stopPassword)
 {
     return QStringLiteral(
@@ -496,6 +514,18 @@ std::optional<QList<Account>> init(const Request &r, QString *error)
     for (const QString &robot : r.robots)
         if (!writeFile(w.filePath(QStringLiteral("bridges/%1.conf").arg(robot)),
                        bridgeConfig(r, robot, passwordOf(bridgeAccount(robot)), passwordOf(stopLineAccount(robot))),
+                       kOwnerOnly, error))
+            return std::nullopt;
+    // One file per student, each with a robot of its own in turn (r1, r2, ..., r1 again).
+    QFile ca(w.filePath(QStringLiteral("ca.crt")));
+    if (!w.mkdir(QStringLiteral("students")) || !ca.open(QIODevice::ReadOnly)) {
+        *error = QStringLiteral("cannot write %1").arg(w.filePath(QStringLiteral("students")));
+        return std::nullopt;
+    }
+    const QByteArray caPem = ca.readAll();
+    for (qsizetype i = 0; i < r.students.size(); ++i)
+        if (!writeFile(w.filePath(QStringLiteral("students/%1.json").arg(r.students[i])),
+                       connectionFile(r, r.students[i], passwordOf(r.students[i]), r.robots[i % r.robots.size()], caPem),
                        kOwnerOnly, error))
             return std::nullopt;
     QFile::setPermissions(work.path(), kOwnerOnly | QFileDevice::ExeOwner);

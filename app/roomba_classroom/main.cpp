@@ -43,7 +43,8 @@ int main(int argc, char *argv[])
         "port 8883 with a CA and a server certificate made here), the password file with\n"
         "strong random passwords, the ACL, accounts.txt with every account and password\n"
         "(readable by you alone; init prints no password),\n"
-        "and bridges/NAME.conf for each robot's bridge. Then: mosquitto -c DIR/mosquitto.conf\n"
+        "bridges/NAME.conf for each robot's bridge, and students/NAME.json, each student's\n"
+        "connection file for Python programs. Then: mosquitto -c DIR/mosquitto.conf\n"
         "Names: 1 to 64 letters, digits, '-' or '_'."));
     const QCommandLineOption helpOption = parser.addHelpOption();
     const QCommandLineOption versionOption = parser.addVersionOption();
@@ -112,7 +113,9 @@ int main(int argc, char *argv[])
                 "                   then systemctl enable --now roomba-bridge@NAME\n"
                 "A virtual robot:   roomba-bridge --config %s/bridges/%s.conf --sim\n"
                 "The dashboard:     File > Connect to broker: %s, port %d, TLS, CA file %s/ca.crt,\n"
-                "                   user %s and its password in accounts.txt\n",
+                "                   user %s and its password in accounts.txt\n"
+                "Each student:      hand out students/NAME.json (their account, password and robot) for\n"
+                "                   Python programs (docs/python.md): ROOMBA_CONFIG=NAME.json python3 square.py\n",
                 qPrintable(dir), qPrintable(dir), qPrintable(r.robots.first()), qPrintable(r.host), r.port,
                 qPrintable(dir), qPrintable(r.teacher));
     return 0;

@@ -105,14 +105,27 @@ private slots:
                                     "guest", "--port", QString::number(broker.port())});
         QVERIFY2(init.status == 0, qPrintable(init.err));
         for (const char *file : {"mosquitto.conf", "passwords", "acl", "accounts.txt", "ca.crt", "server.crt",
-                                 "server.key", "bridges/r1.conf", "bridges/r2.conf", "bridges/ca.crt"})
+                                 "server.key", "bridges/r1.conf", "bridges/r2.conf", "bridges/ca.crt",
+                                 "students/alice.json", "students/bob.json"})
             QVERIFY2(QFile::exists(QDir(dir).filePath(QLatin1String(file))), file);
         const QString accounts = accountsOf(dir);
         const QString alice = passwordOf(accounts, QStringLiteral("alice"));
         QCOMPARE(alice.size(), 20);
+        // Each student's connection file: the broker, the CA, the account, and a robot each in turn.
+        for (const auto &[student, robot] : {std::pair{"alice", "r1"}, std::pair{"bob", "r2"}}) {
+            QFile f(QDir(dir).filePath(QStringLiteral("students/%1.json").arg(QLatin1String(student))));
+            QVERIFY(f.open(QIODevice::ReadOnly));
+            const QJsonObject c = QJsonDocument::fromJson(f.readAll()).object();
+            QCOMPARE(c.value(QLatin1String("broker")).toString(), QStringLiteral("mqtts://127.0.0.1:%1").arg(broker.port()));
+            QCOMPARE(c.value(QLatin1String("username")).toString(), QLatin1String(student));
+            QCOMPARE(c.value(QLatin1String("password")).toString(), passwordOf(accounts, QLatin1String(student)));
+            QCOMPARE(c.value(QLatin1String("robot")).toString(), QLatin1String(robot));
+            QVERIFY(c.value(QLatin1String("ca")).toString().startsWith(QLatin1String("-----BEGIN CERTIFICATE-----")));
+        }
         QVERIFY(passwordOf(accounts, QStringLiteral("bob")) != alice);
         // The secrets are the owner's alone.
-        for (const char *secret : {"passwords", "accounts.txt", "acl", "server.key", "ca.key", "bridges/r1.conf"})
+        for (const char *secret :
+             {"passwords", "accounts.txt", "acl", "server.key", "ca.key", "bridges/r1.conf", "students/alice.json"})
             QVERIFY2((QFile::permissions(QDir(dir).filePath(QLatin1String(secret)))
                       & (QFile::ReadOther | QFile::ReadGroup | QFile::WriteOther | QFile::WriteGroup))
                          == QFile::Permissions(),

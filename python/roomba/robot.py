@@ -387,7 +387,7 @@ class Robot:
             self._cond.notify_all()
         if self._swallowed("control"):
             return
-        self._deliver(self._control_lost(reply.get("error", ""), reply.get("controller")))
+        self._deliver(self._control_lost(reply.get("error", ""), reply.get("controller")), only_in_control=False)
 
     def _control_lost(self, error, controller, command=None):
         if error.startswith("stop all"):

@@ -204,6 +204,8 @@ class Program:
 @pytest.fixture
 def folder():
     with tempfile.TemporaryDirectory(prefix="roomba-py-") as d:
+        # Run as root, mosquitto becomes the mosquitto user, which must reach its files here.
+        os.chmod(d, 0o755)
         yield d
 
 

@@ -37,7 +37,7 @@ set(CPACK_DEB_COMPONENT_INSTALL ON)
 if(ROOMBA_BRIDGE_ONLY)
     set(CPACK_COMPONENTS_ALL bridge)
 else()
-    set(CPACK_COMPONENTS_ALL dashboard bridge)
+    set(CPACK_COMPONENTS_ALL dashboard bridge python)
 endif()
 set(CPACK_DEBIAN_DASHBOARD_PACKAGE_NAME roomba-dashboard)
 set(CPACK_DEBIAN_DASHBOARD_PACKAGE_DEPENDS "roomba-bridge (= ${PROJECT_VERSION})")
@@ -52,5 +52,20 @@ Create 2, original Create) on an MQTT broker with every safety rule, for a \
 Raspberry Pi beside the robot; roomba-classroom init sets up a classroom's \
 TLS broker in one command; roomba-ctl and roomba-sim are the command-line \
 tool and the virtual robot. Needs no GUI library.")
+
+# The Python library for students' programs: pure Python, any architecture.
+set(CPACK_DEBIAN_PYTHON_PACKAGE_NAME python3-roomba)
+set(CPACK_DEBIAN_PYTHON_PACKAGE_ARCHITECTURE all)
+set(CPACK_DEBIAN_PYTHON_PACKAGE_SECTION python)
+set(CPACK_DEBIAN_PYTHON_PACKAGE_SHLIBDEPS OFF)
+set(CPACK_DEBIAN_PYTHON_PACKAGE_DEPENDS "python3 (>= 3.11), python3-paho-mqtt")
+# At home, python3 -m roomba.practice runs a broker and a practice robot.
+set(CPACK_DEBIAN_PYTHON_PACKAGE_RECOMMENDS "roomba-bridge, mosquitto")
+set(CPACK_COMPONENT_PYTHON_DESCRIPTION
+    "Students' programs drive classroom robots: the roomba Python library speaks to a robot's \
+roomba-bridge over MQTT, with moves that wait until done (straight, turn, arc in millimetres and \
+degrees, closed on the robot's own odometry by the bridge), sensors, and every stop the bridge \
+makes (Stop all, a cliff, a lost connection) as an exception. python3 -m roomba.practice starts a \
+broker and a practice robot at home.")
 
 include(CPack)

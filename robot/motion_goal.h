@@ -17,10 +17,12 @@ struct MotionGoal {
 
     // The allowed ranges, which the bridge checks and names in its errors.
     static constexpr double kMaxDistanceMm = 10000;
-    static constexpr double kMinSpeedMmPerS = 10;
+    // A Create 2 holds its wheels' speeds in steps of 28.5 mm/s: one slower
+    // than about 15 mm/s does not move it.
+    static constexpr double kMinSpeedMmPerS = 30;
     static constexpr double kMaxWheelSpeedMmPerS = 500; // the OI's own limit for each wheel
     static constexpr double kMaxAngleDeg = 3600;
-    static constexpr double kMinRateDegPerS = 5;
+    static constexpr double kMinRateDegPerS = 15; // the wheels at 30 mm/s
     // A turn's wheels at 500 mm/s, 117.5 mm from the centre.
     static constexpr double kMaxRateDegPerS = 240;
     static constexpr double kMinRadiusMm = 50;

@@ -1545,6 +1545,10 @@ Klicken wählt diesen Roboter: jedes Dock zeigt ihn</translation>
         <source>broker unreachable</source>
         <translation>Broker nicht erreichbar</translation>
     </message>
+    <message>
+        <source>%1&apos;s program %2</source>
+        <translation>Programm %2 von %1</translation>
+    </message>
 </context>
 <context>
     <name>FleetView</name>

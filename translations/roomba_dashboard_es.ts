@@ -1544,6 +1544,10 @@ Haga clic para seleccionar este robot: todos los paneles lo muestran</translatio
         <source>broker unreachable</source>
         <translation>bróker inalcanzable</translation>
     </message>
+    <message>
+        <source>%1&apos;s program %2</source>
+        <translation>programa %2 de %1</translation>
+    </message>
 </context>
 <context>
     <name>FleetView</name>

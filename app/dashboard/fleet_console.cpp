@@ -97,6 +97,7 @@ FleetTileValues FleetConsole::tileValues(const QString &name, const RemoteRobot 
     if (s.online && robot.hasStats)
         v.framesPerSecond = int(std::lround(robot.stats.framesPerSecond));
     v.controller = s.controller;
+    v.program = s.program;
     return v;
 }
 

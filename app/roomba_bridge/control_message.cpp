@@ -3,11 +3,17 @@
 
 #include "command_message.h"
 
-std::optional<ControlAction> controlActionFromJson(const QByteArray &payload, QString *error)
+std::optional<ControlAction> controlActionFromJson(const QByteArray &payload, QString *error, QString *program)
 {
     const std::optional<QJsonObject> o = mqtt::messageObject(payload, error);
     if (!o)
         return std::nullopt;
+    if (program) {
+        program->clear();
+        for (const QChar c : o->value(QLatin1String("program")).toString().left(64))
+            if (c.isPrint())
+                program->append(c);
+    }
     const QString action = o->value(QLatin1String("action")).toString();
     if (action == QLatin1String("take"))
         return ControlAction::Take;

@@ -93,6 +93,7 @@ RobotBridge::RobotBridge(RobotSession &robot, mqtt::MqttClient &broker, LeaseClo
 
     connect(&m_lease, &ControlLease::holderChanged, this, [this](const QString &holder) {
         m_inbox.setController(holder);
+        m_program.clear(); // until the new holder says which program it runs
         qCInfo(lcBridge, "control: %s", holder.isEmpty() ? "free" : qPrintable(holder));
         publishState();
     });
@@ -204,7 +205,8 @@ QJsonObject RobotBridge::state() const
                   {"mode_reason", m_robot.mode().shortReason().isEmpty() ? QJsonValue() : m_robot.mode().shortReason()},
                   {"mode_cause", QJsonArray::fromStringList(m_robot.mode().causeKeys())},
                   {"link", linkWord(m_robot.state())},
-                  {"controller", m_lease.holder().isEmpty() ? QJsonValue() : m_lease.holder()}};
+                  {"controller", m_lease.holder().isEmpty() ? QJsonValue() : m_lease.holder()},
+                  {"program", m_program.isEmpty() ? QJsonValue() : m_program}};
     const std::optional<double> battery = batteryShown();
     o.insert(QLatin1String("battery_percent"), battery ? QJsonValue(*battery) : QJsonValue());
     return o;
@@ -456,10 +458,15 @@ void RobotBridge::handleControl(const QString &client, const QByteArray &payload
         logRefusal(client, payload.size(), why);
         replyControl(client, false, why);
     };
-    QString error;
-    const std::optional<ControlAction> action = controlActionFromJson(payload, &error);
+    QString error, program;
+    const std::optional<ControlAction> action = controlActionFromJson(payload, &error, &program);
     if (!action)
         return refuse(error);
+    // Said with each take: a program the holder runs, or none (a console).
+    const auto holdsWith = [&](const QString &holder) {
+        if (m_lease.holder() == holder && std::exchange(m_program, program) != program)
+            publishState();
+    };
     switch (*action) {
     case ControlAction::Take:
         if (takeover) {
@@ -470,6 +477,7 @@ void RobotBridge::handleControl(const QString &client, const QByteArray &payload
                 stopRobot();
                 replyControl(former, false, QStringLiteral("%1 took control").arg(client));
             }
+            holdsWith(client);
             return replyControl(client, true);
         }
         if (m_stopLine && !m_stopLine->isSubscribed())
@@ -477,6 +485,7 @@ void RobotBridge::handleControl(const QString &client, const QByteArray &payload
                                          "take control again in a moment"));
         if (!m_lease.take(client, arrivedMs))
             return refuse(QStringLiteral("%1 has control").arg(m_lease.holder()));
+        holdsWith(client);
         return replyControl(client, true);
     case ControlAction::Keep:
         if (!m_lease.keep(client, arrivedMs))

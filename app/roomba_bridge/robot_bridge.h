@@ -139,6 +139,7 @@ private:
     BridgeInbox m_inbox;
     GoalDrive m_goal;
     QString m_goalClient, m_goalId; // who asked for the running goal, and the id of its message
+    QString m_program; // the program its controller said it runs, for the fleet view; empty if none
     // A cleaning, demo, dock search or button press was sent: the robot may
     // be moving in Passive, where Drive is ignored.
     bool m_autonomous = false;

@@ -41,9 +41,9 @@ WHEEL_BASE_MM = 235.0
 MAX_WHEEL_SPEED = 500.0
 # The ranges the bridge checks (app/roomba_bridge/goal_command.cpp).
 MAX_DISTANCE_MM = 10000
-MIN_SPEED = 10
+MIN_SPEED = 30  # a Create 2 holds wheel speeds in steps of 28.5 mm/s
 MAX_ANGLE_DEG = 3600
-MIN_RATE, MAX_RATE = 5, 240
+MIN_RATE, MAX_RATE = 15, 240
 MIN_RADIUS, MAX_RADIUS = 50, 10000
 
 # OI mode (packet 35).

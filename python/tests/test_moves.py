@@ -8,18 +8,8 @@ import pytest
 
 from conftest import wait_for
 from oirec import travel
+from programs import SQUARES
 
-SQUARE = """
-import time
-from roomba import Robot
-with Robot() as robot:
-    print("start", time.time(), flush=True)
-    for side in range(4):
-        d = robot.straight(1000)
-        print("straight", time.time(), d, flush=True)
-        a = robot.turn(90)
-        print("turn", time.time(), a, flush=True)
-"""
 
 
 def times(lines, word):
@@ -34,7 +24,7 @@ def square_run(tmp_path_factory):
     broker = Broker(folder)
     bridge = Bridge(folder, broker, "r1")
     try:
-        program = Program(folder, SQUARE, {"ROOMBA_BROKER": broker.url, "ROOMBA_ROBOT": "r1"})
+        program = Program(folder, SQUARES, {"ROOMBA_BROKER": broker.url, "ROOMBA_ROBOT": "r1"}, ["1"])
         status, lines, errors = program.finish(120)
         assert status == 0, errors
         recording = wait_for(lambda: (lambda r: r if r.poses and r.poses[-1][0] >= times(lines, "turn")[-1][0]

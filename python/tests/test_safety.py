@@ -79,10 +79,10 @@ print("moved", robot.odometry.x_mm, robot.odometry.heading_deg)
     refused = [line for line in lines if line.startswith("refused")]
     assert len(refused) == 9, lines
     assert "from -10000 to 10000 mm" in refused[0]
-    assert "from 10 to 500 mm/s" in refused[1]
-    assert "from 5 to 240" in refused[2]
+    assert "from 30 to 500 mm/s" in refused[1]
+    assert "from 15 to 240" in refused[2]
     assert "from 50 to 10000 mm" in refused[3]
-    assert "from 10 to 229 mm/s" in refused[4]
+    assert "from 30 to 229 mm/s" in refused[4]
     assert "H9" in refused[7]
     # Nothing was clamped and sent instead.
     assert lines[-1] == "moved 0.0 0.0"

@@ -7,20 +7,9 @@ runs each."""
 import signal
 import time
 
+from programs import DRIVE_THEN_SPIN
 from conftest import first_stop_after, moving_since, wait_for, wait_for_recorded_stop
 
-DRIVE_THEN_SPIN = """
-import time
-from roomba import Robot, Stopped
-robot = Robot()
-robot.drive(200, 0)
-print("driving", time.time(), flush=True)
-try:
-    while True:
-        pass
-except Stopped as e:
-    print("stopped", time.time(), e.by, flush=True)
-"""
 
 
 def start_driving(run_program, bridge):
@@ -109,8 +98,12 @@ import time
 from roomba import Robot
 robot = Robot()
 robot.drive(100, 0)
+robot.wait(0.3)
 print("ending", time.time(), flush=True)
-""")
+""", name="patrol.py")
+        # The fleet view shows whose program holds the robot.
+        wait_for(lambda: any(p and p.get("program") == "patrol.py" and p.get("controller")
+                             for _, p in watcher.on("roomba/r1/state")), 10, "the program named in the state")
         status, lines, errors = program.finish(20)
         assert status == 0, errors
         ended = float(lines[-1].split()[1])

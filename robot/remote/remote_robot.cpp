@@ -37,7 +37,7 @@ std::optional<RemoteRobotState> remoteStateFromJson(const QJsonObject &object, Q
     if (!readString(object, "name", s.name, error) || !readString(object, "profile", s.profileKey, error)
         || !readString(object, "firmware", s.firmware, error) || !readString(object, "mode", s.mode, error)
         || !readString(object, "mode_reason", s.modeReason, error) || !readString(object, "link", s.link, error)
-        || !readString(object, "controller", s.controller, error))
+        || !readString(object, "controller", s.controller, error) || !readString(object, "program", s.program, error))
         return std::nullopt;
     const QJsonValue cause = object.value(QLatin1String("mode_cause"));
     if (cause.isArray()) {

@@ -24,6 +24,7 @@ struct RemoteRobotState {
     double batteryPercent = -1; // -1: not known
     QString link;        // "streaming", "connecting", "stale", "lost"
     QString controller;  // empty: nobody holds control
+    QString program;     // the controller's program (the Python library says it), empty: none said
 
     friend bool operator==(const RemoteRobotState &, const RemoteRobotState &) = default;
 };

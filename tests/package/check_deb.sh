@@ -21,9 +21,21 @@ trap 'rm -rf "$tmp"' EXIT
 "$cpack" -G DEB -B "$tmp" --config "$build/CPackConfig.cmake" >"$tmp/cpack.log" 2>&1 \
     || { cat "$tmp/cpack.log"; fail "cpack -G DEB failed"; }
 debs=("$tmp"/*.deb)
-[ ${#debs[@]} -eq 2 ] || fail "expected two .debs in $tmp: ${debs[*]}"
+[ ${#debs[@]} -eq 3 ] || fail "expected three .debs in $tmp: ${debs[*]}"
 deb=$(ls "$tmp"/roomba-dashboard_*.deb) || fail "no roomba-dashboard package"
 bridge_deb=$(ls "$tmp"/roomba-bridge_*.deb) || fail "no roomba-bridge package"
+python_deb=$(ls "$tmp"/python3-roomba_*_all.deb) || fail "no python3-roomba package (architecture all)"
+
+# The Python library: the package a student's program imports, and what it needs.
+python_contents=$(dpkg-deb -c "$python_deb" | awk '{print $6}')
+for f in __init__.py robot.py connection.py practice.py; do
+    grep -qx "\./usr/lib/python3/dist-packages/roomba/$f" <<<"$python_contents" || fail "roomba/$f is not in python3-roomba"
+done
+grep -qx '\./usr/share/doc/python3-roomba/examples/square.py' <<<"$python_contents" || fail "no examples in python3-roomba"
+grep -q 'python3-paho-mqtt' <<<"$(dpkg-deb -f "$python_deb" Depends)" || fail "python3-roomba does not depend on python3-paho-mqtt"
+dpkg-deb -x "$python_deb" "$tmp/python"
+PYTHONPATH="$tmp/python/usr/lib/python3/dist-packages" /usr/bin/python3 -c 'import roomba; roomba.Robot' \
+    || fail "the installed roomba library does not import"
 echo "built $(basename "$deb") and $(basename "$bridge_deb")"
 
 # Paths only: the sixth column of the listing, "./usr/bin/...".

@@ -57,6 +57,12 @@ private slots:
         QCOMPARE(t1->hazardText(), QStringLiteral("BUMP left"));
         QCOMPARE(t1->linkText(), QStringLiteral("link streaming · 66/s"));
         QCOMPARE(t1->controlText(), QStringLiteral("driven by alice"));
+        // A student's program through the Python library says its name.
+        bumped.program = QStringLiteral("square.py");
+        view.setTiles({bumped, cliff, offline});
+        QCOMPARE(t1->controlText(), QStringLiteral("alice's program square.py"));
+        bumped.program.clear();
+        view.setTiles({bumped, cliff, offline});
         QCOMPARE(view.tile("robot-2")->hazardText(), QStringLiteral("CLIFF ×2 · WHEEL DROP"));
         // Why it is in Passive travels with its own tile.
         QCOMPARE(view.tile("robot-2")->modeText(), QStringLiteral("Passive: cliff (front left) · battery 88 %"));

@@ -83,7 +83,11 @@ QString FleetTile::linkText() const
 
 QString FleetTile::controlText() const
 {
-    return m_values.controller.isEmpty() ? tr("nobody in control") : tr("driven by %1").arg(m_values.controller);
+    if (m_values.controller.isEmpty())
+        return tr("nobody in control");
+    if (!m_values.program.isEmpty())
+        return tr("%1's program %2").arg(m_values.controller, m_values.program);
+    return tr("driven by %1").arg(m_values.controller);
 }
 
 void FleetTile::updateAccessibleText()

@@ -23,6 +23,7 @@ struct FleetTileValues {
     bool linkHealthy = false;          // fresh data at the bridge
     std::optional<int> framesPerSecond;
     QString controller;                // empty: nobody
+    QString program;                   // the controller's program, empty: none said (a console)
     friend bool operator==(const FleetTileValues &, const FleetTileValues &) = default;
 };
 

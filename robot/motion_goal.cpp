@@ -9,6 +9,8 @@ constexpr double kPi = 3.14159265358979323846;
 constexpr double kRad = kPi / 180;
 // A straight move steers back to its heading within about this long.
 constexpr double kHeadingSeconds = 0.5;
+// An arc steers back onto its circle over about this distance.
+constexpr double kLookAheadMm = 100;
 // Closer than this the goal counts as reached.
 constexpr double kArrivedMm = 0.5;
 
@@ -60,11 +62,18 @@ double MotionGoal::kinematicSeconds() const
 }
 
 GoalRun::GoalRun(const MotionGoal &goal, const oi::Pose &start, double wheelBaseMm)
-    : m_goal(goal), m_start(start), m_wheelBaseMm(wheelBaseMm), m_lastThetaRad(start.thetaRad)
+    : m_goal(goal), m_start(start), m_pose(start), m_wheelBaseMm(wheelBaseMm), m_lastThetaRad(start.thetaRad)
 {
+    // An arc's centre: `radius` to the side it turns to.
+    const double side = signOf(goal.angleDeg);
+    m_centre.xMm = start.xMm - side * goal.radiusMm * std::sin(start.thetaRad);
+    m_centre.yMm = start.yMm + side * goal.radiusMm * std::cos(start.thetaRad);
+    m_lastPolarRad = polarAngle();
 }
 
 double GoalRun::turnedDeg() const { return m_turnedRad / kRad; }
+
+double GoalRun::polarAngle() const { return std::atan2(m_pose.yMm - m_centre.yMm, m_pose.xMm - m_centre.xMm); }
 
 double GoalRun::remainingMm() const
 {
@@ -75,7 +84,8 @@ double GoalRun::remainingMm() const
         return (std::abs(m_goal.angleDeg) * kRad - signOf(m_goal.angleDeg) * m_turnedRad) * m_wheelBaseMm / 2;
     case MotionGoal::Kind::Arc: break;
     }
-    return (std::abs(m_goal.angleDeg) * kRad - signOf(m_goal.angleDeg) * m_turnedRad)
+    // Along the circle: how far round its centre the robot has gone.
+    return (std::abs(m_goal.angleDeg) * kRad - signOf(m_goal.angleDeg) * m_sweptRad)
            * (m_goal.radiusMm + m_wheelBaseMm / 2);
 }
 
@@ -101,20 +111,30 @@ GoalWheelSpeeds GoalRun::speedsFor(double seconds, double remainingMm) const
     }
     const double outerArm = m_goal.radiusMm + m_wheelBaseMm / 2, innerArm = m_goal.radiusMm - m_wheelBaseMm / 2;
     const double outer = lead, inner = lead * innerArm / outerArm;
-    // Steer back onto the circle: the turn the distance so far asks for.
-    // (A wheel holds its speed only in steps, 28.5 mm/s on a Create 2, so
-    // the ratio of the two is never quite the circle's.)
-    const double wanted = signOf(m_goal.angleDeg) * m_travelledMm / m_goal.radiusMm;
-    const double steer = std::clamp((m_turnedRad - wanted) * m_wheelBaseMm / 2 / kHeadingSeconds, -lead / 2, lead / 2);
+    // Steer back onto the circle: along its tangent where the robot is, and
+    // towards it when off it. (A wheel holds its speed only in steps, 28.5
+    // mm/s on a Create 2, so the ratio of the two is never quite the circle's.)
+    const double side = signOf(m_goal.angleDeg);
+    const double outside = std::hypot(m_pose.xMm - m_centre.xMm, m_pose.yMm - m_centre.yMm) - m_goal.radiusMm;
+    const double tangent = polarAngle() + side * kPi / 2;
+    const double wanted = tangent + side * std::atan(outside / kLookAheadMm);
+    const double steer = std::clamp(wrapped(m_pose.thetaRad - wanted) * m_wheelBaseMm / 2 / kHeadingSeconds, -lead / 2,
+                                    lead / 2);
     return m_goal.angleDeg >= 0 ? GoalWheelSpeeds{inner + steer, outer - steer}
                                 : GoalWheelSpeeds{outer + steer, inner - steer};
 }
 
 GoalWheelSpeeds GoalRun::update(const oi::Pose &pose, double seconds)
 {
+    m_pose = pose;
     m_travelledMm = pose.travelledMm - m_start.travelledMm;
     m_turnedRad += wrapped(pose.thetaRad - m_lastThetaRad);
     m_lastThetaRad = pose.thetaRad;
+    if (m_goal.kind == MotionGoal::Kind::Arc) {
+        const double polar = polarAngle();
+        m_sweptRad += wrapped(polar - m_lastPolarRad);
+        m_lastPolarRad = polar;
+    }
     if (m_reached)
         return {};
     const double remaining = remainingMm();

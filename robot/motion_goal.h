@@ -83,9 +83,14 @@ private:
     // How far the lead wheel still has to go, signed (negative: past the goal).
     double remainingMm() const;
     GoalWheelSpeeds speedsFor(double seconds, double remainingMm) const;
+    // Where the robot is round an arc's centre.
+    double polarAngle() const;
 
     MotionGoal m_goal;
     oi::Pose m_start;
+    oi::Pose m_pose; // after the last frame
+    oi::Pose m_centre; // an arc's
+    double m_sweptRad = 0, m_lastPolarRad = 0; // round an arc's centre
     double m_wheelBaseMm;
     double m_travelledMm = 0;
     double m_turnedRad = 0;

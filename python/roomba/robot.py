@@ -360,6 +360,8 @@ class Robot:
             self._replies[rid] = reply
             # What a move's answer tells, its notices will tell again.
             stop = reply.get("stop")
+            if stop is not None:
+                self._moving = False  # the answer tells why it stopped; the state need not
             if stop in ("stop-all", "takeover", "heartbeat", "released"):
                 self._swallow.add("control")
             elif stop == "stopped" and reply.get("by") and reply.get("by") != self._client_name:

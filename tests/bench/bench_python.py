@@ -34,16 +34,16 @@ from oirec import travel  # noqa: E402
 from programs import DRIVE_THEN_SPIN, SQUARES  # noqa: E402
 
 
-def percentiles(values):
+def percentiles(values, noun="runs"):
     v = sorted(values)
     if not v:
         return "no runs"
     p = lambda q: v[min(len(v) - 1, int(math.ceil(q * len(v))) - 1)]  # noqa: E731
-    return "p50 %8.2f  p95 %8.2f  max %8.2f  (%d runs)" % (p(0.5), p(0.95), v[-1], len(v))
+    return "p50 %8.2f  p95 %8.2f  max %8.2f  (%d %s)" % (p(0.5), p(0.95), v[-1], len(v), noun)
 
 
-def report(name, values, unit):
-    print("  %-44s %s %s" % (name, percentiles(values), unit), flush=True)
+def report(name, values, unit, noun="runs"):
+    print("  %-44s %s %s" % (name, percentiles(values, noun), unit), flush=True)
 
 
 
@@ -200,7 +200,7 @@ def fleet(folder, broker, count, seconds=20.0):
     cpu = [100 * (cpu_seconds(b.process.pid) - before[b.name]) / elapsed for b in bridges]
     for b in bridges:
         b.stop()
-    report("%d programs: telemetry age at the program" % count, ages, "ms")
+    report("%d programs: telemetry age at the program" % count, ages, "ms", "messages")
     report("%d bridges: CPU each (%% of a core)" % count, cpu, "%")
 
 

@@ -80,6 +80,14 @@ print("ages", " ".join("%.4f" % a for a in ages), flush=True)
 """
 
 
+BRIDGES = []  # every bridge started, stopped at the end whatever happens
+
+
+def start_bridge(*args):
+    BRIDGES.append(Bridge(*args))
+    return BRIDGES[-1]
+
+
 def env_for(broker, robot):
     return {"ROOMBA_BROKER": broker.url, "ROOMBA_ROBOT": robot}
 
@@ -93,7 +101,7 @@ def kinematic_seconds(length, top, a=1000.0, creep=30.0):
 
 def accuracy(folder, broker, runs, lanes=4):
     """`runs` squares, shared among `lanes` robots driving side by side, each in a room of its own."""
-    bridges = [Bridge(folder, broker, "acc%d" % i) for i in range(lanes)]
+    bridges = [start_bridge(folder, broker, "acc%d" % i) for i in range(lanes)]
     per = [runs // lanes + (1 if i < runs % lanes else 0) for i in range(lanes)]
     programs = [Program(folder, SQUARES, env_for(broker, b.name), [str(n)], "squares%d.py" % i)
                 for i, (b, n) in enumerate(zip(bridges, per)) if n]
@@ -129,7 +137,7 @@ def accuracy(folder, broker, runs, lanes=4):
 
 
 def ten_short(folder, broker, runs, lanes=4):
-    bridges = [Bridge(folder, broker, "short%d" % i) for i in range(lanes)]
+    bridges = [start_bridge(folder, broker, "short%d" % i) for i in range(lanes)]
     per = [runs // lanes + (1 if i < runs % lanes else 0) for i in range(lanes)]
     programs = [Program(folder, TEN_SHORT, env_for(broker, b.name), [str(n)], "short%d.py" % i)
                 for i, (b, n) in enumerate(zip(bridges, per)) if n]
@@ -145,7 +153,7 @@ def ten_short(folder, broker, runs, lanes=4):
 
 
 def stops(folder, broker, runs):
-    bridge = Bridge(folder, broker, "stops")
+    bridge = start_bridge(folder, broker, "stops")
     teacher = Watcher(broker.port, ["roomba/stops/state"])
     figures = {"Ctrl-C": [], "kill -9": [], "Stop all": [], "Stop all: Stopped raised": []}
     failures = []
@@ -179,7 +187,7 @@ def stops(folder, broker, runs):
 
 
 def fleet(folder, broker, count, seconds=20.0):
-    bridges = [Bridge(folder, broker, "f%02d" % i) for i in range(count)]
+    bridges = [start_bridge(folder, broker, "f%02d" % i) for i in range(count)]
     programs = [Program(folder, FLEET_PROGRAM, env_for(broker, b.name), [str(seconds)], "fleet%02d.py" % i)
                 for i, b in enumerate(bridges)]
     for p in programs:
@@ -224,6 +232,9 @@ def main():
             if options.only in (None, "fleet"):
                 fleet(folder, broker, options.fleet)
         finally:
+            for b in BRIDGES:
+                if b.process.poll() is None:
+                    b.stop()
             broker.stop()
 
 

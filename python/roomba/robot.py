@@ -183,6 +183,7 @@ class Robot:
         self._state_seen = {}  # every robot's online flag, to pick the only one
         self._packets = {}
         self._telemetry_at = None
+        self._key_frame_seen = False
         self._odometry = sensors.OdometrySum()
         self._settled_at = 0.0
         self._control = False
@@ -247,7 +248,8 @@ class Robot:
         self._wait(lambda: self._state is not None and self._state.get("online"), deadline,
                    "robot %s is not on the broker %s: is its bridge running, and is the name right (set "
                    "ROOMBA_ROBOT or write Robot(\"NAME\"))?" % (self.name, self._conn.url), check_data=False)
-        self._wait(lambda: self._telemetry_at is not None, deadline,
+        # A key frame, every second, carries every packet: the sensors read whole from then on.
+        self._wait(lambda: self._key_frame_seen, deadline,
                    "robot %s sends no data: is it switched on and connected to its bridge?" % self.name,
                    check_data=False)
 
@@ -337,6 +339,7 @@ class Robot:
         with self._cond:
             if packets.get("key_frame"):
                 self._packets = {}
+                self._key_frame_seen = True
             self._odometry.add(packets.get("distance", 0), packets.get("angle", 0))
             self._packets.update(packets)
             self._telemetry_at = time.monotonic()

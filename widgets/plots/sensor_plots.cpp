@@ -125,6 +125,8 @@ void SensorPlots::refresh() { m_stack->refresh(); }
 
 void SensorPlots::addPlot(const std::vector<int> &channels) { m_stack->addPlot(channels); }
 
+void SensorPlots::setMinimumPlotHeight(int pixels) { m_stack->setMinimumPlotHeight(pixels); }
+
 void SensorPlots::showDefaultPlots()
 {
     if (m_stack->plotCount() == 0)

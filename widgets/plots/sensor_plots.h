@@ -35,6 +35,8 @@ public:
     // What a class looks at first: the cliff signals in the first plot, the
     // battery's voltage and current in a second.
     void showDefaultPlots();
+    // See PlotStack::setMinimumPlotHeight.
+    void setMinimumPlotHeight(int pixels);
 
     // Not owned; the session keeps it alive while it is set.
     void setHistory(const SensorHistory *history);

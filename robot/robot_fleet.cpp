@@ -161,3 +161,5 @@ void RobotFleet::connectWaiting()
         if (r && !r->isConnected())
             r->connectTo(r->settings());
 }
+
+#include "moc_robot_fleet.cpp"

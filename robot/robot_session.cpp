@@ -417,3 +417,5 @@ void RobotSession::onBytesReceived(const QByteArray &bytes)
     m_recentBytes.append(false, bytes, now);
     emit bytesReceived(bytes, now);
 }
+
+#include "moc_robot_session.cpp"

@@ -146,3 +146,5 @@ void FleetConsole::showSelection()
                            ? selected->settings().networkRobot
                            : QString());
 }
+
+#include "moc_fleet_console.cpp"

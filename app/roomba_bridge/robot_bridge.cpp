@@ -574,3 +574,5 @@ void RobotBridge::publishState(bool always)
     if (!m_stateUnsent)
         m_publishedState = now;
 }
+
+#include "moc_robot_bridge.cpp"

@@ -1079,3 +1079,5 @@ void RobotLink::controlReplay(const ReplayCommand &command)
 }
 
 } // namespace oilink
+
+#include "moc_robot_link.cpp"

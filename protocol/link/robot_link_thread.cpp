@@ -324,3 +324,5 @@ std::chrono::microseconds RobotLinkThread::workerCpuTime() const
 }
 
 } // namespace oilink
+
+#include "moc_robot_link_thread.cpp"

@@ -222,3 +222,5 @@ void FleetTile::paintEvent(QPaintEvent *)
         style()->drawPrimitive(QStyle::PE_FrameFocusRect, &option, &p, this);
     }
 }
+
+#include "moc_fleet_tile.cpp"

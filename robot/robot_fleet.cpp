@@ -22,7 +22,7 @@ RobotFleet::~RobotFleet()
     qDeleteAll(m_robots);
 }
 
-void RobotFleet::setTransportFactory(oilink::RobotLink::TransportFactory factory)
+void RobotFleet::setTransportFactory(oilink::TransportFactory factory)
 {
     m_factory = std::move(factory);
 }

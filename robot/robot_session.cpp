@@ -86,7 +86,7 @@ void RobotSession::setColourRgba(quint32 rgba)
     emit identityChanged();
 }
 
-void RobotSession::setTransportFactory(oilink::RobotLink::TransportFactory factory)
+void RobotSession::setTransportFactory(oilink::TransportFactory factory)
 {
     m_link->setTransportFactory(std::move(factory));
 }

@@ -28,13 +28,11 @@
 #include <QString>
 
 #include <array>
-#include <functional>
 #include <memory>
 #include <optional>
 
 namespace oilink {
 class RobotLinkThread;
-class Transport;
 } // namespace oilink
 
 // One robot, everything that belongs to it, on the GUI thread: its link (on a
@@ -63,7 +61,7 @@ public:
 
     // Makes the transports (tests put a recording transport here). Before
     // the first connectTo().
-    void setTransportFactory(std::function<oilink::Transport *(const oilink::LinkSettings &)> factory);
+    void setTransportFactory(oilink::TransportFactory factory);
     // The clock of the link's timed rules (tests advance one). Before the
     // first connectTo().
     void setLinkClock(oilink::Clock &clock);

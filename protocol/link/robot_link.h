@@ -50,7 +50,7 @@ public:
     // Makes the transport for the settings; the link takes ownership. Called
     // on the link's thread at every (re)connect, with the baud to open at
     // in the settings. transports::transportFactory() knows every kind.
-    using TransportFactory = std::function<Transport *(const LinkSettings &)>;
+    using TransportFactory = oilink::TransportFactory;
 
     static constexpr int kStaleAfterMs = 100;
     static constexpr int kNoDataAfterMs = 1000;

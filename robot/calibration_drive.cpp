@@ -176,3 +176,5 @@ void CalibrationDrive::onFrame(const oi::SensorSnapshot &frame)
         emit finished();
     }
 }
+
+#include "moc_calibration_drive.cpp"

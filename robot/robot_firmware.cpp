@@ -150,3 +150,5 @@ void RobotFirmware::setFirmware(const std::optional<oi::FirmwareInfo> &info)
     if (release() != before)
         emit changed(release());
 }
+
+#include "moc_robot_firmware.cpp"

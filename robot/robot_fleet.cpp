@@ -22,7 +22,7 @@ RobotFleet::~RobotFleet()
     qDeleteAll(m_robots);
 }
 
-void RobotFleet::setTransportFactory(oilink::RobotLink::TransportFactory factory)
+void RobotFleet::setTransportFactory(oilink::TransportFactory factory)
 {
     m_factory = std::move(factory);
 }
@@ -161,3 +161,5 @@ void RobotFleet::connectWaiting()
         if (r && !r->isConnected())
             r->connectTo(r->settings());
 }
+
+#include "moc_robot_fleet.cpp"

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
-#include "robot_link.h"
+#include "link_clock.h"
+#include "link_settings.h"
 #include "saved_robots.h"
 
 #include <QList>
@@ -23,7 +24,7 @@ public:
     ~RobotFleet() override;
 
     // Makes the transports of every robot added from now on (tests).
-    void setTransportFactory(oilink::RobotLink::TransportFactory factory);
+    void setTransportFactory(oilink::TransportFactory factory);
     bool hasTransportFactory() const { return bool(m_factory); }
     // The clock of every robot's link from now on (see RobotSession::setLinkClock).
     void setLinkClock(oilink::Clock &clock) { m_linkClock = &clock; }
@@ -67,7 +68,7 @@ signals:
 private:
     QColor nextColour() const;
 
-    oilink::RobotLink::TransportFactory m_factory;
+    oilink::TransportFactory m_factory;
     oilink::Clock *m_linkClock = nullptr;
     QList<RobotSession *> m_robots;
     RobotSession *m_selected = nullptr;

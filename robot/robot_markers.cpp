@@ -124,3 +124,5 @@ std::optional<oilink::RecordingMarker> RobotMarkers::previous(double at) const
             return *m;
     return std::nullopt;
 }
+
+#include "moc_robot_markers.cpp"

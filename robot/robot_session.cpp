@@ -3,17 +3,21 @@
 
 #include "command_catalog.h"
 #include "command_encoder.h"
+#include "robot_link_thread.h"
 
 #include <QDateTime>
 
 #include <algorithm>
 #include <QSettings>
 
-RobotSession::RobotSession(QObject *parent) : QObject(parent)
+RobotSession::RobotSession(QObject *parent)
+    : QObject(parent),
+      m_link(std::make_unique<oilink::RobotLinkThread>()),
+      m_markers([this](const oilink::MarkerEdit &edit) { m_link->markRecording(edit); })
 {
     oilink::registerLinkMetaTypes();
-    connect(&m_link, &oilink::RobotLinkThread::snapshot, this, &RobotSession::onSnapshot);
-    connect(&m_link, &oilink::RobotLinkThread::streamStarted, this,
+    connect(m_link.get(), &oilink::RobotLinkThread::snapshot, this, &RobotSession::onSnapshot);
+    connect(m_link.get(), &oilink::RobotLinkThread::streamStarted, this,
             [this](oi::ProfileId profile, int, const QList<int> &packets) {
                 onStreamStarted(profile);
                 const oi::RobotProfile &p = oi::profile(profile);
@@ -26,30 +30,30 @@ RobotSession::RobotSession(QObject *parent) : QObject(parent)
                 m_requestedSpeeds.reset();
                 m_angleSchedule.restart(m_lastReadSeconds);
             });
-    connect(&m_link, &oilink::RobotLinkThread::profileAssumed, this, &RobotSession::onProfileAssumed);
-    connect(&m_link, &oilink::RobotLinkThread::modeReportedOneHigh, this, [this] {
+    connect(m_link.get(), &oilink::RobotLinkThread::profileAssumed, this, &RobotSession::onProfileAssumed);
+    connect(m_link.get(), &oilink::RobotLinkThread::modeReportedOneHigh, this, [this] {
         m_firmware.noteModeReportedOneHigh();
         emit errorOccurred(tr("This robot reports its mode one too high (Passive as Safe, as some Wi-Fi Roomba 600s "
                               "do): the true mode is shown from now on, and remembered for this robot."));
     });
-    connect(&m_link, &oilink::RobotLinkThread::stateChanged, this, [this](oilink::LinkState state) {
+    connect(m_link.get(), &oilink::RobotLinkThread::stateChanged, this, [this](oilink::LinkState state) {
         m_state = state;
         m_teleop.linkStateChanged(state);
         emit stateChanged(state);
     });
-    connect(&m_link, &oilink::RobotLinkThread::statistics, this, [this](const oilink::LinkStats &stats) {
+    connect(m_link.get(), &oilink::RobotLinkThread::statistics, this, [this](const oilink::LinkStats &stats) {
         m_stats = stats;
         emit statisticsChanged(stats);
     });
-    connect(&m_link, &oilink::RobotLinkThread::errorOccurred, this, &RobotSession::errorOccurred);
-    connect(&m_link, &oilink::RobotLinkThread::rawBytesSent, this, &RobotSession::onBytesSent);
-    connect(&m_link, &oilink::RobotLinkThread::rawBytesReceived, this, &RobotSession::onBytesReceived);
-    connect(&m_link, &oilink::RobotLinkThread::sensorReply, this, &RobotSession::onSensorReply);
-    connect(&m_link, &oilink::RobotLinkThread::scriptReply, this, &RobotSession::scriptShown);
-    connect(&m_link, &oilink::RobotLinkThread::scriptFailed, this, &RobotSession::scriptFailed);
-    connect(&m_link, &oilink::RobotLinkThread::connectionCheckStep, this, &RobotSession::connectionCheckStep);
-    connect(&m_link, &oilink::RobotLinkThread::connectionChecked, this, &RobotSession::connectionChecked);
-    connect(&m_link, &oilink::RobotLinkThread::recordingStatus, this, [this](const oilink::RecordingStatus &s) {
+    connect(m_link.get(), &oilink::RobotLinkThread::errorOccurred, this, &RobotSession::errorOccurred);
+    connect(m_link.get(), &oilink::RobotLinkThread::rawBytesSent, this, &RobotSession::onBytesSent);
+    connect(m_link.get(), &oilink::RobotLinkThread::rawBytesReceived, this, &RobotSession::onBytesReceived);
+    connect(m_link.get(), &oilink::RobotLinkThread::sensorReply, this, &RobotSession::onSensorReply);
+    connect(m_link.get(), &oilink::RobotLinkThread::scriptReply, this, &RobotSession::scriptShown);
+    connect(m_link.get(), &oilink::RobotLinkThread::scriptFailed, this, &RobotSession::scriptFailed);
+    connect(m_link.get(), &oilink::RobotLinkThread::connectionCheckStep, this, &RobotSession::connectionCheckStep);
+    connect(m_link.get(), &oilink::RobotLinkThread::connectionChecked, this, &RobotSession::connectionChecked);
+    connect(m_link.get(), &oilink::RobotLinkThread::recordingStatus, this, [this](const oilink::RecordingStatus &s) {
         if (s.active && (!m_recording.active || s.path != m_recording.path))
             m_markers.recordingStarted(s.path, s.startedSeconds);
         else if (!s.active && m_recording.active)
@@ -57,7 +61,7 @@ RobotSession::RobotSession(QObject *parent) : QObject(parent)
         m_recording = s;
         emit recordingStatus(s);
     });
-    connect(&m_link, &oilink::RobotLinkThread::replayStatus, this, &RobotSession::onReplayStatus);
+    connect(m_link.get(), &oilink::RobotLinkThread::replayStatus, this, &RobotSession::onReplayStatus);
     connect(&m_firmware, &RobotFirmware::changed, this, [this](const QString &release) {
         m_odometry.setCorrections(m_firmware.corrections());
         emit firmwareChanged(release);
@@ -82,15 +86,31 @@ void RobotSession::setColourRgba(quint32 rgba)
     emit identityChanged();
 }
 
-void RobotSession::setTransportFactory(oilink::RobotLink::TransportFactory factory)
+void RobotSession::setTransportFactory(oilink::TransportFactory factory)
 {
-    m_link.setTransportFactory(std::move(factory));
+    m_link->setTransportFactory(std::move(factory));
 }
+
+void RobotSession::setLinkClock(oilink::Clock &clock) { m_link->setClock(clock); }
+
+void RobotSession::setLinkOnThisThread(bool here) { m_link->setOnThisThread(here); }
+
+void RobotSession::querySensors(const QList<int> &packetIds) { m_link->querySensors(packetIds); }
+
+void RobotSession::showScript() { m_link->showScript(); }
+
+void RobotSession::checkConnection() { m_link->checkConnection(); }
+
+void RobotSession::startRecording(const QString &path) { m_link->startRecording(path); }
+
+void RobotSession::stopRecording() { m_link->stopRecording(); }
+
+void RobotSession::controlReplay(const oilink::ReplayCommand &command) { m_link->controlReplay(command); }
 
 void RobotSession::connectTo(const oilink::LinkSettings &settings)
 {
     if (m_connected)
-        m_link.close();
+        m_link->close();
     m_settings = settings;
     // Another robot's corrections would be wrong here; this one's come back.
     m_firmware.connectingTo(settings);
@@ -111,7 +131,7 @@ void RobotSession::connectTo(const oilink::LinkSettings &settings)
     // A robot known to report its mode one too high is corrected from its first frame.
     oilink::LinkSettings linkSettings = settings;
     linkSettings.modeReportedOneHigh = linkSettings.modeReportedOneHigh || m_firmware.modeReportedOneHigh();
-    m_link.open(linkSettings);
+    m_link->open(linkSettings);
 }
 
 bool RobotSession::applyCalibration(const oi::WheelGeometry &wheels)
@@ -152,7 +172,7 @@ void RobotSession::disconnectFromRobot()
     if (!m_connected)
         return;
     m_connected = false;
-    m_link.close();
+    m_link->close();
 }
 
 void RobotSession::closeAndWait()
@@ -161,8 +181,8 @@ void RobotSession::closeAndWait()
     // shutdown sequence; the link's close() then stops the robot and leaves it
     // in Passive (ERRATA 17).
     m_teleop.stopBeforeQuit();
-    if (m_link.isRunning())
-        m_link.closeAndWait();
+    if (m_link->isRunning())
+        m_link->closeAndWait();
     m_connected = false;
 }
 
@@ -203,7 +223,7 @@ bool RobotSession::send(const QByteArray &bytes)
     // the robot reads them.
     noteAsked(oi::readCommands(*m_profile, {reinterpret_cast<const std::uint8_t *>(bytes.constData()),
                                             std::size_t(bytes.size())}));
-    m_link.send(bytes);
+    m_link->send(bytes);
     return true;
 }
 
@@ -224,7 +244,7 @@ bool RobotSession::send(const std::vector<oi::OiCommand> &commands)
         bytes.append(reinterpret_cast<const char *>(encoded->data()), qsizetype(encoded->size()));
     }
     noteAsked(commands);
-    m_link.send(bytes);
+    m_link->send(bytes);
     return true;
 }
 
@@ -341,7 +361,7 @@ void RobotSession::readAngleIfDue(double readSeconds)
         || !m_angleSchedule.due(readSeconds))
         return;
     m_angleAskedAt = readSeconds;
-    m_link.querySensors({20});
+    m_link->querySensors({20});
 }
 
 void RobotSession::noteRequestedSpeeds(const oi::SensorSnapshot &frame, double readSeconds)
@@ -397,3 +417,5 @@ void RobotSession::onBytesReceived(const QByteArray &bytes)
     m_recentBytes.append(false, bytes, now);
     emit bytesReceived(bytes, now);
 }
+
+#include "moc_robot_session.cpp"

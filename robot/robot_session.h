@@ -5,7 +5,12 @@
 #include "oi_command.h"
 #include "recent_bytes.h"
 #include "robot_firmware.h"
-#include "robot_link_thread.h"
+#include "connection_report.h"
+#include "link_clock.h"
+#include "link_settings.h"
+#include "link_status.h"
+#include "recording_markers.h"
+#include "replay_control.h"
 #include "robot_mode.h"
 #include "robot_markers.h"
 #include "battery_check.h"
@@ -23,7 +28,12 @@
 #include <QString>
 
 #include <array>
+#include <memory>
 #include <optional>
+
+namespace oilink {
+class RobotLinkThread;
+} // namespace oilink
 
 // One robot, everything that belongs to it, on the GUI thread: its link (on a
 // worker thread), profile, firmware and the corrections that firmware needs,
@@ -51,14 +61,14 @@ public:
 
     // Makes the transports (tests put a recording transport here). Before
     // the first connectTo().
-    void setTransportFactory(oilink::RobotLink::TransportFactory factory);
+    void setTransportFactory(oilink::TransportFactory factory);
     // The clock of the link's timed rules (tests advance one). Before the
     // first connectTo().
-    void setLinkClock(oilink::Clock &clock) { m_link.setClock(clock); }
+    void setLinkClock(oilink::Clock &clock);
     // The link on this session's thread rather than a worker of its own
     // (RobotLinkThread::setOnThisThread), for a program that serves one
     // robot and little else. Before the first connectTo().
-    void setLinkOnThisThread(bool here) { m_link.setOnThisThread(here); }
+    void setLinkOnThisThread(bool here);
 
     void connectTo(const oilink::LinkSettings &settings);
     void disconnectFromRobot();
@@ -97,7 +107,7 @@ public:
     // which pauses and resumes its own stream around them: Sensors (142) or
     // Query List (149), answered by sensorReply(); Show Script (154),
     // answered by scriptShown(). A failure comes as errorOccurred().
-    void querySensors(const QList<int> &packetIds) { m_link.querySensors(packetIds); }
+    void querySensors(const QList<int> &packetIds);
     // Why a battery reading was left out (BatteryCheck), said once a
     // connection as errorOccurred(); empty while every reading could be true.
     const QString &batteryDoubt() const { return m_batteryDoubt; }
@@ -108,10 +118,10 @@ public:
     // The next angle reading as soon as the next frame comes (a run that
     // needs its final count); angleRead() answers.
     void readAngleSoon() { m_angleSchedule.readSoon(); }
-    void showScript() { m_link.showScript(); }
+    void showScript();
     // Finds out through the link why no valid data comes; the link resumes
     // streaming afterwards. Answers with connectionChecked().
-    void checkConnection() { m_link.checkConnection(); }
+    void checkConnection();
 
     const oi::RobotProfile &robotProfile() const override { return *m_profile; }
     // False while the link has found a Roomba 500 or a Create 2 (they answer
@@ -165,11 +175,11 @@ public:
 
     // Records every byte of the link into a file, across reconnects, until
     // stopRecording() or a disconnect. Reported through recordingStatus().
-    void startRecording(const QString &path) { m_link.startRecording(path); }
-    void stopRecording() { m_link.stopRecording(); }
+    void startRecording(const QString &path);
+    void stopRecording();
     const oilink::RecordingStatus &recording() const { return m_recording; }
     // For a replay: play, pause, speed, seek, step.
-    void controlReplay(const oilink::ReplayCommand &command) { m_link.controlReplay(command); }
+    void controlReplay(const oilink::ReplayCommand &command);
     bool isReplay() const { return m_connected && m_settings.transport == oilink::TransportKind::Replay; }
     const oilink::ReplayStatus &replay() const { return m_replay; }
     // The markers of the run being recorded or replayed.
@@ -208,7 +218,7 @@ signals:
     void scriptShown(const QByteArray &script);
     void scriptFailed(const QString &message);
     void connectionCheckStep(const QString &step);
-    void connectionChecked(const oilink::ConnectionDoctor::Report &report);
+    void connectionChecked(const oilink::ConnectionReport &report);
     void recordingStatus(const oilink::RecordingStatus &status);
     void replayStatus(const oilink::ReplayStatus &status);
     // The history and odometry started afresh (a new connection, a jump back in a replay).
@@ -231,8 +241,9 @@ private:
 
     QString m_name;
     quint32 m_colourRgba = 0;
-    oilink::RobotLinkThread m_link;
-    RobotMarkers m_markers{[this](const oilink::MarkerEdit &edit) { m_link.markRecording(edit); }};
+    // Behind a pointer, so that the session's users need not see the link.
+    std::unique_ptr<oilink::RobotLinkThread> m_link;
+    RobotMarkers m_markers; // writes its edits into the link's recording
     oilink::LinkSettings m_settings;
     bool m_connected = false;
     qint64 m_connectedAtMs = 0;

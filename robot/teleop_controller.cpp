@@ -190,3 +190,5 @@ void TeleopController::linkStateChanged(oilink::LinkState state)
         break;
     }
 }
+
+#include "moc_teleop_controller.cpp"

@@ -3,8 +3,8 @@
 
 #include "drive_target.h"
 #include "link_clock.h"
+#include "link_status.h"
 #include "motion_command.h"
-#include "robot_link_thread.h"
 
 #include <QObject>
 

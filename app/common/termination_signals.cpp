@@ -54,3 +54,5 @@ void TerminationSignals::onReadable()
     if (::read(g_pipe[0], &byte, 1) == 1)
         emit requested(static_cast<unsigned char>(byte));
 }
+
+#include "moc_termination_signals.cpp"

@@ -134,3 +134,5 @@ void BrokerActions::saveConnectedAtQuit(QSettings &settings) const
     // Connected to a broker at quit: connected again at the next start.
     settings.setValue("brokers/connectedAtQuit", isConnected());
 }
+
+#include "moc_broker_actions.cpp"

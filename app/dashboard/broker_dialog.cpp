@@ -156,3 +156,5 @@ void BrokerDialog::accept()
         return;
     QDialog::accept();
 }
+
+#include "moc_broker_dialog.cpp"

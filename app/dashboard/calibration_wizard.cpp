@@ -521,3 +521,5 @@ void CalibrationWizardAction::open()
     });
     m_wizard->show();
 }
+
+#include "moc_calibration_wizard.cpp"

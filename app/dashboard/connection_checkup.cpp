@@ -174,3 +174,5 @@ ConnectionCheckup::AskWhich ConnectionCheckup::askWithDialog(QWidget *parent)
         return std::nullopt;
     };
 }
+
+#include "moc_connection_checkup.cpp"

@@ -133,3 +133,5 @@ QDockWidget *DockLayout::focusNextDock(int direction)
     target->setFocus(Qt::ShortcutFocusReason);
     return dock;
 }
+
+#include "moc_dock_layout.cpp"

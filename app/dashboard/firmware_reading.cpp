@@ -75,3 +75,5 @@ void FirmwareReading::showAnswer(QMessageBox::Icon icon, const QString &text)
     m_answer->setAttribute(Qt::WA_DeleteOnClose);
     m_answer->open();
 }
+
+#include "moc_firmware_reading.cpp"

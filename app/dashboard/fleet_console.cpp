@@ -147,3 +147,5 @@ void FleetConsole::showSelection()
                            ? selected->settings().networkRobot
                            : QString());
 }
+
+#include "moc_fleet_console.cpp"

@@ -172,3 +172,5 @@ MotionCommand KeyboardDriving::command() const
     }
     return motion;
 }
+
+#include "moc_keyboard_driving.cpp"

@@ -45,3 +45,5 @@ void LanguageMenu::retranslate()
     m_menu->setTitle(tr("&Language"));
     m_systemDefault->setText(tr("System default"));
 }
+
+#include "moc_language_menu.cpp"

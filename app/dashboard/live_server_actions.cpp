@@ -188,3 +188,5 @@ void LiveServerActions::retranslate()
     m_rateLabel->setText(tr("Messages a second per channel:"));
     showState();
 }
+
+#include "moc_live_server_actions.cpp"

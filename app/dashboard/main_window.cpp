@@ -41,9 +41,8 @@
 #include "script_editor.h"
 #include "selected_robot_view.h"
 #include "sensor_gauges.h"
-#include "plot_stack.h"
 #include "sensor_plots.h"
-#include "signal_bars.h"
+#include "signal_bars_factory.h"
 #include "song_composer.h"
 
 #include <QAction>
@@ -112,7 +111,7 @@ void MainWindow::buildDocks()
     m_connectionBar = new ConnectionBar(this);
     m_modePanel = new ModePanel(this);
     m_gauges = new SensorGauges(this);
-    m_signalBars = new SignalBars(this);
+    QWidget *signalBars = makeSignalBars(this, &m_signalBars);
     m_plots = new SensorPlots(this);
     m_inspector = new ByteInspector(this);
     m_songs = new SongComposer(this);
@@ -143,7 +142,7 @@ void MainWindow::buildDocks()
     QDockWidget *gauges = l.addDock("gaugesDock", QT_TR_NOOP("Gauges"), m_gauges, Qt::RightDockWidgetArea);
     // The signal bars share the right with the gauges: on a laptop screen the
     // left column has room for the modes only once the editors are open below.
-    tabifyDockWidget(gauges, l.addDock("signalsDock", QT_TR_NOOP("Signals"), m_signalBars, Qt::RightDockWidgetArea));
+    tabifyDockWidget(gauges, l.addDock("signalsDock", QT_TR_NOOP("Signals"), signalBars, Qt::RightDockWidgetArea));
     gauges->raise();
     QDockWidget *plots = l.addDock("plotsDock", QT_TR_NOOP("Plots"), m_plots, Qt::BottomDockWidgetArea);
     QDockWidget *inspector = l.addDock("inspectorDock", QT_TR_NOOP("Inspector"), m_inspector, Qt::BottomDockWidgetArea);
@@ -167,12 +166,8 @@ void MainWindow::buildDocks()
                              "motorsDock", "mapDock", "markersDock", "gamepadDock", "lessonDock"})
         m_paneDocks << findChild<QDockWidget *>(name);
     plots->raise();
-    // Start with what a class looks at first: the cliff signals and the battery.
-    if (m_plots->stack()->plotCount() == 0)
-        m_plots->stack()->addPlot();
-    m_plots->stack()->setChannels(0, {28, 29, 30, 31});
-    m_plots->stack()->addPlot({22, 23});
-    m_plots->stack()->setMinimumPlotHeight(kReadablePlotHeight);
+    m_plots->showDefaultPlots();
+    m_plots->setMinimumPlotHeight(kReadablePlotHeight);
     m_layout->setArrangement([this] { fitDocks(); });
 
     m_keyboard = new KeyboardDriving(this, m_plots, this);
@@ -308,7 +303,7 @@ void MainWindow::wireInputs()
     connect(m_map, &OdometryMap::worldEditRequested, m_roomActions, &RoomActions::edit);
     m_map->addActions({m_roomActions->undoAction(), m_roomActions->redoAction()});
     connect(m_inspector, &ByteInspector::plotRequested, this, [this](int packetId) {
-        m_plots->stack()->addPlot({packetId});
+        m_plots->addPlot({packetId});
         findChild<QDockWidget *>("plotsDock")->raise();
     });
     // Pad, keys and gamepad drive through the selected robot's sending rules.
@@ -569,3 +564,5 @@ QString MainWindow::statusText() const { return m_status->text(); }
 void MainWindow::askForBroker() { m_broker->askForBroker(); }
 bool MainWindow::connectToBroker(const mqtt::BrokerAddress &address) { return m_broker->connectToBroker(address); }
 void MainWindow::showFleetView() { m_broker->showFleetView(); }
+
+#include "moc_main_window.cpp"

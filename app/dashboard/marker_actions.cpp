@@ -159,3 +159,5 @@ void MarkerActions::jumpBy(int direction)
         robot->controlReplay(oilink::ReplayCommand::seek(m->timeUs));
     }
 }
+
+#include "moc_marker_actions.cpp"

@@ -50,3 +50,5 @@ void ProjectorMode::retranslate()
     m_action->setText(tr("&Projector view"));
     m_action->setToolTip(tr("Large type, high contrast, the selected robot or the lesson alone (F11)"));
 }
+
+#include "moc_projector_mode.cpp"

@@ -256,3 +256,5 @@ void RecordingActions::exportMcap(Source source)
     else
         emit message(tr("Wrote %1").arg(QDir::toNativeSeparators(to)));
 }
+
+#include "moc_recording_actions.cpp"

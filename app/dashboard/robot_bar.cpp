@@ -90,3 +90,5 @@ void RobotBar::refresh()
     if (m_fleet.selected())
         m_list->setSelected(int(m_fleet.indexOf(m_fleet.selected())));
 }
+
+#include "moc_robot_bar.cpp"

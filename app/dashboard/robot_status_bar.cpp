@@ -168,3 +168,5 @@ QString RobotStatusBar::text() const
             parts << l->text();
     return parts.join(" | ");
 }
+
+#include "moc_robot_status_bar.cpp"

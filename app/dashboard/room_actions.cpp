@@ -175,3 +175,5 @@ void RoomActions::chooseFileToSave()
     else
         QMessageBox::warning(m_dialogParent, tr("Save room as"), tr("The room could not be saved.\n\n%1").arg(why));
 }
+
+#include "moc_room_actions.cpp"

@@ -102,3 +102,5 @@ void RoomRobots::showOn(OdometryMap &map, const RobotSession *selectedRobot)
     map.setTruePoses(poses);
     map.setSelectedRobot(selected);
 }
+
+#include "moc_room_robots.cpp"

@@ -164,3 +164,5 @@ void RunComparison::apply()
     m_toolBar->setVisible(m_run.has_value());
     m_close->setEnabled(m_run.has_value());
 }
+
+#include "moc_run_comparison.cpp"

@@ -282,3 +282,5 @@ void SelectedRobotView::refresh()
         v.projector->refresh(robot.latest(), live);
     }
 }
+
+#include "moc_selected_robot_view.cpp"

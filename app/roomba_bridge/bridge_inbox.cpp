@@ -139,3 +139,5 @@ qsizetype BridgeInbox::waitingLocked() const
         n += qsizetype(lane.size());
     return n;
 }
+
+#include "moc_bridge_inbox.cpp"

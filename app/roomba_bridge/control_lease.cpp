@@ -89,3 +89,5 @@ void ControlLease::judge()
     }
     emit expired(free());
 }
+
+#include "moc_control_lease.cpp"

@@ -102,3 +102,5 @@ bool NameClaim::witnessOpen() const
     const ssize_t n = ::recv(int(m_witness->socketDescriptor()), &byte, 1, MSG_PEEK | MSG_DONTWAIT);
     return n < 0 && (errno == EAGAIN || errno == EWOULDBLOCK);
 }
+
+#include "moc_name_claim.cpp"

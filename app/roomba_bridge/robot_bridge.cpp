@@ -685,3 +685,5 @@ void RobotBridge::replyGoal(const GoalDrive::Result &r, const char *stop, const 
     qCInfo(lcBridge, "move for %s ended: %s", qPrintable(m_goalClient), stop ? stop : "reached");
     reply(m_goalClient, answer);
 }
+
+#include "moc_robot_bridge.cpp"

@@ -256,3 +256,5 @@ void CommandSender::finish(int status, const QString &error)
     m_phase = Phase::Done;
     emit finished(status, error);
 }
+
+#include "moc_command_sender.cpp"

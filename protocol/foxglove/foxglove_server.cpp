@@ -539,3 +539,5 @@ void Server::startSession()
 }
 
 } // namespace foxglove
+
+#include "moc_foxglove_server.cpp"

@@ -113,3 +113,5 @@ void BrcPulser::runNextStep()
 }
 
 } // namespace oilink
+
+#include "moc_brc_pulser.cpp"

@@ -398,3 +398,6 @@ void ConnectionDoctor::step(const QString &text)
 }
 
 } // namespace oilink
+
+#include "moc_connection_doctor.cpp"
+#include "moc_connection_report.cpp"

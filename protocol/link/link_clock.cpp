@@ -91,3 +91,5 @@ void ClockTimer::expire()
 }
 
 } // namespace oilink
+
+#include "moc_link_clock.cpp"

@@ -10,6 +10,7 @@
 #include <QString>
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 
 // Not `link`: <unistd.h>, which every Qt header pulls in, declares ::link(),
@@ -102,6 +103,11 @@ struct LinkSettings {
 
     friend bool operator==(const LinkSettings &, const LinkSettings &) = default;
 };
+
+class Transport;
+// Makes the transport for the settings; the link takes ownership
+// (RobotLink::setTransportFactory).
+using TransportFactory = std::function<Transport *(const LinkSettings &)>;
 
 } // namespace oilink
 

@@ -158,3 +158,5 @@ void ProfileProbe::finish(oi::ProfileId profile)
 }
 
 } // namespace oilink
+
+#include "moc_profile_probe.cpp"

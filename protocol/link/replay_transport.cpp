@@ -202,3 +202,5 @@ void ReplayTransport::emitStatus()
 }
 
 } // namespace oilink
+
+#include "moc_replay_transport.cpp"

@@ -2,9 +2,12 @@
 #include "robot_link.h"
 
 #include "brc_pulser.h"
+#include "connection_doctor.h"
 
 #include "profile_probe.h"
 #include "queued_call.h"
+#include "recording_file.h"
+#include "replay_transport.h"
 #include "stream_packets.h"
 #include "transport.h"
 
@@ -1076,3 +1079,5 @@ void RobotLink::controlReplay(const ReplayCommand &command)
 }
 
 } // namespace oilink
+
+#include "moc_robot_link.cpp"

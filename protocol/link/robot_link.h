@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
-#include "connection_doctor.h"
+#include "connection_report.h"
 #include "link_clock.h"
 #include "link_settings.h"
 #include "link_status.h"
-#include "recording_file.h"
-#include "replay_transport.h"
+#include "recording_markers.h"
+#include "replay_control.h"
 
 #include "mode_reading.h"
 #include "stream_parser.h"
@@ -26,9 +26,14 @@
 
 namespace oilink {
 
-class BrcPulser;
+namespace recording {
+enum class RecordKind : quint8;
+}
 
+class BrcPulser;
+class ConnectionDoctor;
 class ProfileProbe;
+class RecordingWriter;
 class Transport;
 
 // One robot on one transport: opens it, finds the profile if asked to,
@@ -45,7 +50,7 @@ public:
     // Makes the transport for the settings; the link takes ownership. Called
     // on the link's thread at every (re)connect, with the baud to open at
     // in the settings. transports::transportFactory() knows every kind.
-    using TransportFactory = std::function<Transport *(const LinkSettings &)>;
+    using TransportFactory = oilink::TransportFactory;
 
     static constexpr int kStaleAfterMs = 100;
     static constexpr int kNoDataAfterMs = 1000;
@@ -142,7 +147,7 @@ signals:
     // A Sensors or Query List request got no answer (errorOccurred says so too).
     void sensorQueryFailed(const QString &message);
     void connectionCheckStep(const QString &step);
-    void connectionChecked(const oilink::ConnectionDoctor::Report &report);
+    void connectionChecked(const oilink::ConnectionReport &report);
     // A line of text the robot printed between frames (a docked Roomba 500
     // / 600's charging status, "bat:   min 0  sec 12  mV 16421 ..."), read
     // as words, not counted as discarded bytes.
@@ -203,7 +208,7 @@ private:
     void sendQuery();
     void onQueryTimeout();
     void startDoctor();
-    void onDoctorFinished(const oilink::ConnectionDoctor::Report &report);
+    void onDoctorFinished(const oilink::ConnectionReport &report);
     void endDoctor(const QString &why);
     void finishQuery();
     void onStatsTick();

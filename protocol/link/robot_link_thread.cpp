@@ -181,7 +181,7 @@ void RobotLinkThread::start()
     relay(link, &RobotLink::modeReportedOneHigh, [this] { emit modeReportedOneHigh(); });
     relay(link, &RobotLink::connectionCheckStep, [this](const QString &s) { emit connectionCheckStep(s); });
     relay(link, &RobotLink::connectionChecked,
-          [this](const ConnectionDoctor::Report &r) { emit connectionChecked(r); });
+          [this](const ConnectionReport &r) { emit connectionChecked(r); });
     relay(link, &RobotLink::robotText, [this](const QString &line) { emit robotText(line); });
     relay(link, &RobotLink::rawBytesSent, [this](const QByteArray &b) { emit rawBytesSent(b); });
     relay(link, &RobotLink::errorOccurred, [this](const QString &m) { emit errorOccurred(m); });
@@ -255,7 +255,7 @@ void RobotLinkThread::checkConnection()
         threads::queueCall(m_link, [link = m_link.data()] { link->checkConnection(); });
         return;
     }
-    ConnectionDoctor::Report report; // nothing comes back
+    ConnectionReport report; // nothing comes back
     report.summary = tr("not connected: there is nothing to check");
     emit connectionChecked(report);
 }
@@ -324,3 +324,5 @@ std::chrono::microseconds RobotLinkThread::workerCpuTime() const
 }
 
 } // namespace oilink
+
+#include "moc_robot_link_thread.cpp"

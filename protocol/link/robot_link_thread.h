@@ -89,7 +89,7 @@ signals:
     void profileAssumed(oi::ProfileId assumed); // see RobotLink::profileAssumed
     void modeReportedOneHigh();                 // see RobotLink::modeReportedOneHigh
     void connectionCheckStep(const QString &step);
-    void connectionChecked(const oilink::ConnectionDoctor::Report &report);
+    void connectionChecked(const oilink::ConnectionReport &report);
     void robotText(const QString &line);        // see RobotLink::robotText
     void rawBytesSent(const QByteArray &bytes);
     void rawBytesReceived(const QByteArray &bytes);

@@ -160,3 +160,5 @@ void SerialTransport::fail(const QString &reason)
 }
 
 } // namespace oilink
+
+#include "moc_serial_transport.cpp"

@@ -204,3 +204,5 @@ void TcpTransport::giveUpConnecting()
 }
 
 } // namespace oilink
+
+#include "moc_tcp_transport.cpp"

@@ -73,3 +73,5 @@ Transport *createTransport(const LinkSettings &settings, int baud, QObject *pare
 }
 
 } // namespace oilink
+
+#include "moc_transport.cpp"

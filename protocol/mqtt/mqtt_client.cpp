@@ -305,3 +305,5 @@ void MqttClient::handleDisconnected(int rc)
 }
 
 } // namespace mqtt
+
+#include "moc_mqtt_client.cpp"

@@ -59,3 +59,5 @@ void BrcControlServer::close()
 }
 
 } // namespace sim
+
+#include "moc_brc_control_server.cpp"

@@ -196,3 +196,5 @@ void PtyRobotServer::writeToClient(const QByteArray &bytes)
 }
 
 } // namespace sim
+
+#include "moc_pty_robot_server.cpp"

@@ -88,3 +88,5 @@ void RealTimeRobot::tick()
 }
 
 } // namespace sim
+
+#include "moc_real_time_robot.cpp"

@@ -137,3 +137,5 @@ void TcpRobotServer::writeToClient(const QByteArray &bytes)
 }
 
 } // namespace sim
+
+#include "moc_tcp_robot_server.cpp"

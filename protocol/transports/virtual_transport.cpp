@@ -97,3 +97,5 @@ bool VirtualTransport::write(const QByteArray &bytes)
 }
 
 } // namespace sim
+
+#include "moc_virtual_transport.cpp"

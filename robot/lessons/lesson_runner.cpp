@@ -204,3 +204,5 @@ bool LessonRunner::conditionHolds(const LessonGoal &goal) const
     }
     return true;
 }
+
+#include "moc_lesson_runner.cpp"

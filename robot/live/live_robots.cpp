@@ -199,3 +199,5 @@ void LiveRobots::updateMetadata()
     }
     m_server.setMetadata(metadata);
 }
+
+#include "moc_live_robots.cpp"

@@ -249,3 +249,5 @@ void FleetDirectory::publishControl(const QString &robot, const QString &action)
 {
     publishJson(mqtt::topics::control(robot, m_clientName), QJsonObject{{QStringLiteral("action"), action}}, 1);
 }
+
+#include "moc_fleet_directory.cpp"

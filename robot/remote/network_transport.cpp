@@ -292,3 +292,5 @@ void NetworkTransport::answerQuery(const std::vector<int> &ids)
     }
     emit bytesReceived(QByteArray(reinterpret_cast<const char *>(reply.data()), qsizetype(reply.size())));
 }
+
+#include "moc_network_transport.cpp"

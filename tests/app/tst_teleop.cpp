@@ -7,6 +7,7 @@
 #include "manual_clock.h"
 #include "projector_view.h"
 #include "recording_transport.h"
+#include "robot_link.h"
 #include "robot_mode.h"
 #include "plot_stack.h"
 #include "sensor_plots.h"

@@ -39,3 +39,5 @@ void StopAllButton::retranslateUi()
                   "selected robot."));
     setAccessibleName(tr("Stop all robots"));
 }
+
+#include "moc_stop_all_button.cpp"

@@ -254,3 +254,5 @@ void ConnectionBar::showError(const QString &message)
 }
 
 QString ConnectionBar::errorText() const { return m_error->isHidden() ? QString() : m_error->text(); }
+
+#include "moc_connection_bar.cpp"

@@ -136,3 +136,5 @@ void DoctorDetails::showDetails()
     view->show();
     view->raise();
 }
+
+#include "moc_doctor_details.cpp"

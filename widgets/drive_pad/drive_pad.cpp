@@ -482,3 +482,5 @@ QString DrivePad::spokenDescription(const MotionCommand &c)
         .arg(way)
         .arg(std::abs(c.radius));
 }
+
+#include "moc_drive_pad.cpp"

@@ -226,3 +226,5 @@ void FleetTile::paintEvent(QPaintEvent *)
         style()->drawPrimitive(QStyle::PE_FrameFocusRect, &option, &p, this);
     }
 }
+
+#include "moc_fleet_tile.cpp"

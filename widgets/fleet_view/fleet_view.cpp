@@ -272,3 +272,5 @@ void FleetView::relayout(bool force)
         m_tiles[i]->show();
     }
 }
+
+#include "moc_fleet_view.cpp"

@@ -331,3 +331,5 @@ void GamepadInput::emitCommand(const MotionCommand &command)
     m_lastCommand = command;
     emit motionRequested(command);
 }
+
+#include "moc_gamepad_input.cpp"

@@ -229,3 +229,5 @@ void GamepadPanel::refresh()
         m_mapping->clear();
     }
 }
+
+#include "moc_gamepad_panel.cpp"

@@ -548,3 +548,5 @@ void SensorGauges::showCargoBay(const oi::SensorSnapshot &s)
     baud->setState(asserted ? State::Warning : State::Idle);
     baud->setOutOfRange(outOfRange);
 }
+
+#include "moc_sensor_gauges.cpp"

@@ -444,3 +444,5 @@ void ValueGauge::paintEvent(QPaintEvent *)
     p.setBrush(display::stateColor(shown, pal));
     p.drawRect(QRectF(r.left(), r.top(), kStripeWidth, r.height()));
 }
+
+#include "moc_value_gauge.cpp"

@@ -493,3 +493,5 @@ void ByteInspector::changeEvent(QEvent *event)
         showError(m_rawError->text());
     }
 }
+
+#include "moc_byte_inspector.cpp"

@@ -116,3 +116,5 @@ void PacketTable::changeEvent(QEvent *event)
     if (event->type() == QEvent::LanguageChange)
         retranslateUi();
 }
+
+#include "moc_packet_table.cpp"

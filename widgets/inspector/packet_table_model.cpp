@@ -217,3 +217,5 @@ QVariant PacketTableModel::headerData(int section, Qt::Orientation orientation, 
         return {};
     }
 }
+
+#include "moc_packet_table_model.cpp"

@@ -579,3 +579,5 @@ void LedEditor::apply()
     m_message->setText(problems.join('\n'));
     refresh();
 }
+
+#include "moc_led_editor.cpp"

@@ -210,3 +210,5 @@ void SevenSegmentDisplay::mousePressEvent(QMouseEvent *event)
     m_current = bestPosition * kSegments + bestSegment;
     toggle(bestPosition, bestSegment);
 }
+
+#include "moc_seven_segment_display.cpp"

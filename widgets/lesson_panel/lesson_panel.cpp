@@ -316,3 +316,5 @@ void LessonPanel::retranslateUi()
     showSteps();
     updateNotice();
 }
+
+#include "moc_lesson_panel.cpp"

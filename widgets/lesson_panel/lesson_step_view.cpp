@@ -393,3 +393,5 @@ void LessonStepView::retranslateUi()
     }
     showPlacement();
 }
+
+#include "moc_lesson_step_view.cpp"

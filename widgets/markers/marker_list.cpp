@@ -147,3 +147,5 @@ void MarkerList::changeEvent(QEvent *event)
         retranslateUi();
     QWidget::changeEvent(event);
 }
+
+#include "moc_marker_list.cpp"

@@ -77,3 +77,5 @@ void MarkerNoteEditor::changeEvent(QEvent *event)
         retranslateUi();
     QWidget::changeEvent(event);
 }
+
+#include "moc_marker_note_editor.cpp"

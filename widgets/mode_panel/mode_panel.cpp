@@ -213,3 +213,5 @@ void ModePanel::setFirmware(const QString &release)
     m_firmware = release;
     m_firmwareLabel->setText(release.isEmpty() ? QString() : tr("Firmware: %1").arg(release));
 }
+
+#include "moc_mode_panel.cpp"

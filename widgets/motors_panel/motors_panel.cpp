@@ -413,3 +413,5 @@ void MotorsPanel::showLastSent()
 QString MotorsPanel::lastSentText() const { return m_lastSent->property("bytes").toString(); }
 
 QString MotorsPanel::unavailableText() const { return m_unavailable->isHidden() ? QString() : m_unavailable->text(); }
+
+#include "moc_motors_panel.cpp"

@@ -900,3 +900,5 @@ void OdometryMap::contextMenuEvent(QContextMenuEvent *event)
         delete menu;
     }
 }
+
+#include "moc_odometry_map.cpp"

@@ -267,3 +267,5 @@ void RoomEditTool::paintLengthLabel(QPainter &painter, const OdometryMap &map, Q
     painter.drawText(box, Qt::AlignCenter, text);
     painter.setFont(map.font());
 }
+
+#include "moc_room_edit_tool.cpp"

@@ -207,3 +207,5 @@ bool ChannelChooser::eventFilter(QObject *watched, QEvent *event)
     }
     return QPushButton::eventFilter(watched, event);
 }
+
+#include "moc_channel_chooser.cpp"

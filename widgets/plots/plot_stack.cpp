@@ -214,7 +214,7 @@ int PlotStack::addPlot(const std::vector<int> &channels)
     p->plot->axisRect()->setRangeZoom(Qt::Horizontal);
     // Channels are named in the header row, where a legend cannot hide data.
     p->plot->legend->setVisible(false);
-    p->plot->xAxis->setRange(m_timeRange);
+    p->plot->xAxis->setRange(timeRange());
     connect(p->plot->xAxis, qOverload<const QCPRange &>(&QCPAxis::rangeChanged), this,
             [this, plot = p->plot](const QCPRange &range) {
                 if (!m_syncing)
@@ -361,7 +361,7 @@ void PlotStack::setWindowSeconds(double seconds)
         return;
     m_windowSeconds = seconds;
     if (m_paused) // keep the right edge where the user put it
-        syncTimeRange(QCPRange(m_timeRange.upper - seconds, m_timeRange.upper), nullptr);
+        syncTimeRange(QCPRange(timeRange().upper - seconds, timeRange().upper), nullptr);
     emit windowSecondsChanged(seconds);
 }
 
@@ -382,7 +382,8 @@ void PlotStack::syncTimeRange(const QCPRange &requested, const QCustomPlot *sour
         range = QCPRange(centre - bounded / 2, centre + bounded / 2);
     }
     m_syncing = true;
-    m_timeRange = range;
+    m_timeFrom = range.lower;
+    m_timeTo = range.upper;
     for (auto &panel : m_panels) {
         if (panel->plot != source || range != requested)
             panel->plot->xAxis->setRange(range);
@@ -390,6 +391,8 @@ void PlotStack::syncTimeRange(const QCPRange &requested, const QCustomPlot *sour
     }
     m_syncing = false;
 }
+
+QCPRange PlotStack::timeRange() const { return {m_timeFrom, m_timeTo}; }
 
 QCPRange PlotStack::liveTimeRange() const
 {
@@ -443,7 +446,7 @@ void PlotStack::refresh()
     }
     if (!m_paused) {
         const QCPRange live = liveTimeRange();
-        if (live != m_timeRange)
+        if (live != timeRange())
             syncTimeRange(live, nullptr);
     }
     const qint64 now = m_clock();
@@ -452,14 +455,14 @@ void PlotStack::refresh()
         // Hidden: nothing now; showEvent() brings it up to date.
         if (!panel->plot->isVisible())
             continue;
-        const double columnSeconds = m_timeRange.size() / columnCount(*panel);
+        const double columnSeconds = timeRange().size() / columnCount(*panel);
         // The comparison sits with the axes, drawn whole when it changes.
         for (ComparisonFeed &feed : panel->comparisons)
-            panel->dirty |= feed.update(*m_comparison, m_comparisonShift, m_timeRange.lower, m_timeRange.upper,
+            panel->dirty |= feed.update(*m_comparison, m_comparisonShift, timeRange().lower, timeRange().upper,
                                         columnSeconds);
         bool changed = panel->dirty;
         for (Trace &trace : panel->traces)
-            changed |= trace.feed.update(m_history, m_timeRange.lower, m_timeRange.upper, columnSeconds, !m_paused);
+            changed |= trace.feed.update(m_history, timeRange().lower, timeRange().upper, columnSeconds, !m_paused);
         if (changed) {
             panel->pendingWhole |= panel->dirty;
             panel->pendingWhole |= rescaleValues(*panel);
@@ -549,7 +552,7 @@ bool PlotStack::rescaleValues(Panel &panel)
         for (int g = 0; g < panel.plot->graphCount(); ++g) {
             bool found = false;
             QCPGraph *graph = panel.plot->graph(g);
-            const QCPRange r = graph->valueAxis() == axis ? graph->getValueRange(found, QCP::sdBoth, m_timeRange)
+            const QCPRange r = graph->valueAxis() == axis ? graph->getValueRange(found, QCP::sdBoth, timeRange())
                                                           : QCPRange();
             if (!found)
                 continue;
@@ -635,7 +638,7 @@ bool PlotStack::updateHint(Panel &panel)
         bool any = false;
         for (const Trace &trace : panel.traces) {
             auto data = trace.feed.graph()->data();
-            any = any || data->findBegin(m_timeRange.lower, false) != data->findEnd(m_timeRange.upper, false);
+            any = any || data->findBegin(timeRange().lower, false) != data->findEnd(timeRange().upper, false);
         }
         if (!any)
             hint = m_history && !m_history->isEmpty() ? tr("No samples in this time range")
@@ -942,12 +945,12 @@ bool PlotStack::eventFilter(QObject *watched, QEvent *event)
     if (event->type() == QEvent::KeyPress && m_paused) {
         // The keyboard's pan and zoom, as drag and wheel do with the mouse.
         const int key = static_cast<QKeyEvent *>(event)->key();
-        const double span = m_timeRange.size();
-        const double centre = m_timeRange.center();
-        QCPRange range = m_timeRange;
+        const double span = timeRange().size();
+        const double centre = timeRange().center();
+        QCPRange range = timeRange();
         if (key == Qt::Key_Left || key == Qt::Key_Right) {
             const double step = (key == Qt::Key_Left ? -0.1 : 0.1) * span;
-            range = QCPRange(m_timeRange.lower + step, m_timeRange.upper + step);
+            range = QCPRange(timeRange().lower + step, timeRange().upper + step);
         } else if (key == Qt::Key_Plus || key == Qt::Key_Equal) {
             range = QCPRange(centre - span / 4, centre + span / 4);
         } else if (key == Qt::Key_Minus) {
@@ -978,3 +981,5 @@ void PlotStack::changeEvent(QEvent *event)
         applyPaused();
     }
 }
+
+#include "moc_plot_stack.cpp"

@@ -8,14 +8,14 @@
 #include <QTimer>
 #include <QWidget>
 
-#include <qcustomplot.h>
-
 #include <cstdint>
 #include <functional>
 #include <memory>
 #include <vector>
 
 class ChannelChooser;
+class QCPRange;
+class QCustomPlot;
 class QSplitter;
 class SensorHistory;
 
@@ -89,7 +89,10 @@ public:
 
     // The time range every plot shows. setTimeRange moves it; while live,
     // the next refresh() puts it back on the newest sample.
-    QCPRange timeRange() const { return m_timeRange; }
+    double timeFrom() const { return m_timeFrom; }
+    double timeTo() const { return m_timeTo; }
+    // The same as QCustomPlot's range (include <qcustomplot.h> to read it).
+    QCPRange timeRange() const;
     void setTimeRange(double from, double to);
 
     // Marked moments, drawn on every plot as a vertical line with its label.
@@ -177,7 +180,10 @@ private:
     QSplitter *m_splitter;
     bool m_paused = false;
     double m_windowSeconds = 60.0;
-    QCPRange m_timeRange{0.0, 60.0};
+    // The time range every plot shows (timeFrom(), timeTo()), as two numbers so
+    // that this header needs no QCustomPlot.
+    double m_timeFrom = 0.0;
+    double m_timeTo = 60.0;
     bool m_syncing = false;
     QList<PlotMarker> m_markers;
     const SensorHistory *m_comparison = nullptr;

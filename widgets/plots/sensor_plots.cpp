@@ -123,6 +123,18 @@ void SensorPlots::setCorrections(const oi::FirmwareCorrections &corrections) { m
 void SensorPlots::setMarkers(const QList<PlotMarker> &markers) { m_stack->setMarkers(markers); }
 void SensorPlots::refresh() { m_stack->refresh(); }
 
+void SensorPlots::addPlot(const std::vector<int> &channels) { m_stack->addPlot(channels); }
+
+void SensorPlots::setMinimumPlotHeight(int pixels) { m_stack->setMinimumPlotHeight(pixels); }
+
+void SensorPlots::showDefaultPlots()
+{
+    if (m_stack->plotCount() == 0)
+        m_stack->addPlot();
+    m_stack->setChannels(0, {28, 29, 30, 31});
+    m_stack->addPlot({22, 23});
+}
+
 void SensorPlots::setComparison(const SensorHistory *history, double shiftSeconds, const QString &label,
                                 const QString &primaryLabel)
 {
@@ -196,7 +208,7 @@ bool SensorPlots::exportCsv(const QString &path, double from, double to, QString
 
 bool SensorPlots::exportVisibleCsv(const QString &path, QString *error) const
 {
-    return exportCsv(path, m_stack->timeRange().lower, m_stack->timeRange().upper, error);
+    return exportCsv(path, m_stack->timeFrom(), m_stack->timeTo(), error);
 }
 
 bool SensorPlots::exportAllCsv(const QString &path, QString *error) const
@@ -229,3 +241,5 @@ void SensorPlots::changeEvent(QEvent *event)
     if (event->type() == QEvent::FontChange)
         m_status->setFont(font());
 }
+
+#include "moc_sensor_plots.cpp"

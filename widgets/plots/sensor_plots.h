@@ -7,6 +7,8 @@
 
 #include <QWidget>
 
+#include <vector>
+
 class PlotStack;
 class QAction;
 class QComboBox;
@@ -28,6 +30,13 @@ public:
     explicit SensorPlots(QWidget *parent = nullptr);
 
     PlotStack *stack() const { return m_stack; }
+    // A plot of these packets at the bottom, if there is room (PlotStack::addPlot).
+    void addPlot(const std::vector<int> &channels);
+    // What a class looks at first: the cliff signals in the first plot, the
+    // battery's voltage and current in a second.
+    void showDefaultPlots();
+    // See PlotStack::setMinimumPlotHeight.
+    void setMinimumPlotHeight(int pixels);
 
     // Not owned; the session keeps it alive while it is set.
     void setHistory(const SensorHistory *history);

@@ -105,3 +105,5 @@ void TracePlot::replotTraces(const QRect &changed)
     if (hasInvalidatedPaintBuffers() || !m_traces->redraw(changed))
         replot();
 }
+
+#include "moc_trace_plot.cpp"

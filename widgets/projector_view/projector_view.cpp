@@ -265,3 +265,5 @@ void ProjectorView::retranslateUi()
     setAccessibleName(tr("Projector view"));
     showHeader();
 }
+
+#include "moc_projector_view.cpp"

@@ -60,3 +60,5 @@ void ComparisonBar::changeEvent(QEvent *event)
         retranslateUi();
     QWidget::changeEvent(event);
 }
+
+#include "moc_comparison_bar.cpp"

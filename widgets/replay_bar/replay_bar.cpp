@@ -208,3 +208,5 @@ void ReplayBar::showPosition()
     m_damage->setToolTip(p.damage);
     setAccessibleDescription(m_time->text());
 }
+
+#include "moc_replay_bar.cpp"

@@ -834,3 +834,5 @@ void RobotDiagram::paintStale(QPainter &p) const
     p.setPen(display::textOn(State::Stale, palette()));
     p.drawText(banner, Qt::AlignCenter, word);
 }
+
+#include "moc_robot_diagram.cpp"

@@ -117,3 +117,5 @@ void RobotCard::mouseDoubleClickEvent(QMouseEvent *event)
     if (event->button() == Qt::LeftButton)
         emit renameRequested();
 }
+
+#include "moc_robot_card.cpp"

@@ -150,3 +150,5 @@ void RobotList::retranslateUi()
     m_remove->setToolTip(tr("Stop the selected robot, leave it in Passive and remove it from the window"));
     m_renameEditor->setAccessibleName(tr("Robot name"));
 }
+
+#include "moc_robot_list.cpp"

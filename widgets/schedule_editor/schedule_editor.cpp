@@ -428,3 +428,5 @@ bool ScheduleEditor::deletePreset(const QString &name)
     showMessage([=] { return tr("Preset \"%1\" deleted.").arg(name); });
     return true;
 }
+
+#include "moc_schedule_editor.cpp"

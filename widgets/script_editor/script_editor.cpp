@@ -418,3 +418,5 @@ void ScriptEditor::showScriptFailed(const QString &reason)
     m_showResult->setText(tr("No script came back: %1").arg(reason));
     refreshEnabled();
 }
+
+#include "moc_script_editor.cpp"

@@ -77,3 +77,5 @@ void ScriptTextEdit::paintGutter(QPaintEvent *event)
         block = block.next();
     }
 }
+
+#include "moc_script_text_edit.cpp"

@@ -2,6 +2,7 @@
 #include "signal_bars.h"
 
 #include "display_palette.h"
+#include "signal_bars_factory.h"
 
 #include <QBarCategoryAxis>
 #include <QBarSet>
@@ -262,3 +263,11 @@ void SignalBars::changeEvent(QEvent *event)
     else if (event->type() == QEvent::FontChange)
         applyFonts();
 }
+
+QWidget *makeSignalBars(QWidget *parent, SignalBars **bars)
+{
+    *bars = new SignalBars(parent);
+    return *bars;
+}
+
+#include "moc_signal_bars.cpp"

@@ -399,3 +399,5 @@ void PianoRoll::paintEvent(QPaintEvent *)
         painter.drawLine(QPointF(x, 0), QPointF(x, height()));
     }
 }
+
+#include "moc_piano_roll.cpp"

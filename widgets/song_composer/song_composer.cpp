@@ -941,3 +941,5 @@ void SongComposer::stopPreview()
     if (auto *b = qobject_cast<QPushButton *>(control("preview")))
         b->setText(tr("Preview"));
 }
+
+#include "moc_song_composer.cpp"

@@ -118,3 +118,5 @@ void GoalDrive::onFrame()
     m_lastTravelledMm = m_run->travelledMm();
     m_lastTurnedDeg = m_run->turnedDeg();
 }
+
+#include "moc_goal_drive.cpp"

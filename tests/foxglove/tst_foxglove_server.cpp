@@ -84,11 +84,7 @@ private:
     bool subscribed(Client &client, quint32 subscription, foxglove::Server::ChannelId channel)
     {
         client.subscribe(subscription, channel);
-        QElapsedTimer waited;
-        waited.start();
-        while (!m_server->isSubscribed(channel) && waited.elapsed() < kTimeoutMs)
-            QTest::qWait(5);
-        return m_server->isSubscribed(channel);
+        return QTest::qWaitFor([&] { return m_server->isSubscribed(channel); }, kTimeoutMs);
     }
 
 private slots:

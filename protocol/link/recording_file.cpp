@@ -12,6 +12,8 @@
 #include <QSaveFile>
 #include <QtEndian>
 
+#include <chrono>
+
 #include <algorithm>
 #include <cstring>
 #include <span>
@@ -89,7 +91,16 @@ bool RecordingWriter::open(const QString &path, QJsonObject header)
         return fail(QCoreApplication::translate("Recording", "cannot create the recording"));
     header.insert(QStringLiteral("format"), QStringLiteral("Roomba Dashboard recording"));
     header.insert(QStringLiteral("version"), recording::kVersion);
-    header.insert(QStringLiteral("started"), QDateTime::currentDateTimeUtc().toString(Qt::ISODateWithMs));
+    // The header keeps whole milliseconds; record times count from that
+    // written instant, so `started` plus a record's time is exact to the
+    // microsecond (a stop 0.5 ms after an event is not read as before it).
+    const qint64 nowUs = std::chrono::duration_cast<std::chrono::microseconds>(
+                             std::chrono::system_clock::now().time_since_epoch())
+                             .count();
+    m_clock.start();
+    m_startedUs = nowUs % 1000;
+    header.insert(QStringLiteral("started"),
+                  QDateTime::fromMSecsSinceEpoch(nowUs / 1000, Qt::UTC).toString(Qt::ISODateWithMs));
     const QByteArray json = QJsonDocument(header).toJson(QJsonDocument::Compact);
     QByteArray head(recording::kMagic, recording::kMagicSize);
     appendLittleEndian<quint16>(head, recording::kVersion);
@@ -98,7 +109,6 @@ bool RecordingWriter::open(const QString &path, QJsonObject header)
     if (m_file.write(head) != head.size())
         return fail(QCoreApplication::translate("Recording", "cannot write"));
     m_written = head.size();
-    m_clock.start();
     m_lastFlushMs = 0;
     return flush();
 }
@@ -107,7 +117,7 @@ bool RecordingWriter::append(recording::RecordKind kind, const QByteArray &bytes
 {
     if (!m_file.isOpen())
         return false;
-    const qint64 timeUs = m_clock.nsecsElapsed() / 1000;
+    const qint64 timeUs = m_startedUs + m_clock.nsecsElapsed() / 1000;
     for (qsizetype from = 0; from < bytes.size() || (from == 0 && bytes.isEmpty()); from += recording::kMaxPayload) {
         const QByteArray record = makeRecord(kind, timeUs, bytes.mid(from, recording::kMaxPayload));
         if (m_file.write(record) != record.size())

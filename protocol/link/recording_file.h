@@ -74,6 +74,7 @@ private:
 
     QFile m_file;
     QElapsedTimer m_clock;
+    qint64 m_startedUs = 0; // the microseconds `started` leaves out
     qint64 m_lastFlushMs = 0;
     qint64 m_written = 0;
     QString m_error;

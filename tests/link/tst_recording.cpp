@@ -11,12 +11,14 @@
 #include "oirec_records.h" // tests/common
 #include "stream_parser.h"
 
+#include <QDateTime>
 #include <QFile>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QtEndian>
 
+#include <chrono>
 #include <cmath>
 
 using oilink::LinkSettings;
@@ -160,6 +162,36 @@ private slots:
         const Recording r = load(path);
         QCOMPARE(r.receivedBytes().size(), 70000);
         QCOMPARE(r.recordCount(), 3);
+    }
+
+    // `started` keeps whole milliseconds; `started` plus a record's time is
+    // still the wall time the record was written, to well under one, so a
+    // reader comparing it with its own clock (a stop's latency) is not off
+    // by up to a millisecond. Many files: each truncates `started` differently.
+    void recordTimesAreWallTimes()
+    {
+        using namespace std::chrono;
+        const auto wallUs = [] { return duration_cast<microseconds>(system_clock::now().time_since_epoch()).count(); };
+        QTemporaryDir dir;
+        for (int i = 0; i < 20; ++i) {
+            const QString path = dir.filePath(QStringLiteral("t%1.oirec").arg(i));
+            RecordingWriter writer;
+            QVERIFY(writer.open(path, {}));
+            QVERIFY(writer.appendStreamStarted(oi::ProfileId::Create2, 115200, {7}));
+            const qint64 before = wallUs();
+            QVERIFY(writer.append(RecordKind::Sent, QByteArray("\x89\0\0\0\0", 5)));
+            const qint64 after = wallUs();
+            writer.close();
+            const Recording r = load(path);
+            const QDateTime started = QDateTime::fromString(r.header().value("started").toString(), Qt::ISODateWithMs);
+            QVERIFY(started.isValid());
+            QCOMPARE(r.sentChunks().size(), std::size_t(1));
+            const qint64 written = started.toMSecsSinceEpoch() * 1000 + r.sentChunks()[0].timeUs;
+            constexpr qint64 kSlackUs = 50; // the clocks' reading, not the header's rounding
+            QVERIFY2(written >= before - kSlackUs && written <= after + kSlackUs,
+                     qPrintable(QStringLiteral("written at %1 µs, appended between %2 and %3")
+                                    .arg(written).arg(before).arg(after)));
+        }
     }
 
     void flushedWhileRecording()

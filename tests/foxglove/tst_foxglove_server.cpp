@@ -16,6 +16,10 @@
 #include <QWebSocketHandshakeOptions>
 #include <QtEndian>
 
+#include <algorithm>
+#include <numeric>
+#include <vector>
+
 namespace {
 
 constexpr int kTimeoutMs = 10000;
@@ -148,6 +152,30 @@ private slots:
             m_clock.advance(15);
         }
         QCOMPARE(made, 1 + 50 * 6); // the first, then 50 a second
+    }
+
+    // A robot's steady stream loses one frame in four to the rate, and a
+    // frame held back for its turn waits at most three quarters of an
+    // interval, half of one on average: what a plot in Foxglove lags
+    // behind the robot by.
+    void aHeldFrameWaitsLessThanAnInterval()
+    {
+        auto client = connected();
+        QVERIFY(client);
+        QVERIFY(subscribed(*client, 1, m_frames));
+        std::vector<qint64> waitedNs;
+        for (int i = 0; i < 400; ++i) {
+            const qint64 cameNs = m_clock.nowNs();
+            m_server->publish(m_frames, quint64(i), [&, cameNs] {
+                waitedNs.push_back(m_clock.nowNs() - cameNs);
+                return QByteArray("{}");
+            });
+            m_clock.advance(15);
+        }
+        QCOMPARE(waitedNs.size(), std::size_t(1 + 50 * 6));
+        QCOMPARE(*std::max_element(waitedNs.begin(), waitedNs.end()), qint64(15'000'000));
+        const qint64 totalNs = std::accumulate(waitedNs.begin(), waitedNs.end(), qint64(0));
+        QVERIFY2(totalNs <= qint64(waitedNs.size()) * 10'000'000, qPrintable(QString::number(totalNs)));
     }
 
     void everyLogLineIsSent()

@@ -27,6 +27,13 @@ GoalDrive::GoalDrive(RobotSession &robot, QObject *parent) : QObject(parent), m_
             return finish(End::Safety);
         finish(End::Stopped);
     });
+    // Another input (the pad, a key, a gamepad) asking for a motion of its
+    // own, or for a stop, replaces the move, as a new command does on a
+    // bridge; its command stands.
+    connect(&m_robot.teleop(), &TeleopController::motionRequested, this, [this] {
+        if (m_run && !m_asking && !m_run->reached())
+            finish(End::Stopped);
+    });
 }
 
 GoalDrive::~GoalDrive()
@@ -55,9 +62,7 @@ bool GoalDrive::start(const MotionGoal &goal)
     m_frames = m_settlingFrames = 0;
     m_lastTravelledMm = m_lastTurnedDeg = 0;
     // At once, not at the next frame: the move starts as soon as it is asked.
-    const GoalWheelSpeeds speeds = m_run->first();
-    m_robot.teleop().requestMotion(MotionCommand{MotionCommand::Kind::DriveDirect, 0, oi::kRadiusStraight,
-                                                 wheelSpeed(speeds.right), wheelSpeed(speeds.left)});
+    ask(m_run->first());
     return true;
 }
 
@@ -73,6 +78,14 @@ std::optional<GoalDrive::Result> GoalDrive::cancel()
 GoalDrive::Result GoalDrive::resultNow(End end) const
 {
     return {end, m_run->travelledMm(), m_run->turnedDeg(), m_frames * kFrameSeconds};
+}
+
+void GoalDrive::ask(const GoalWheelSpeeds &speeds)
+{
+    m_asking = true;
+    m_robot.teleop().requestMotion(MotionCommand{MotionCommand::Kind::DriveDirect, 0, oi::kRadiusStraight,
+                                                 wheelSpeed(speeds.right), wheelSpeed(speeds.left)});
+    m_asking = false;
 }
 
 void GoalDrive::stopRobot()
@@ -102,8 +115,7 @@ void GoalDrive::onFrame()
     if (!m_run->reached()) {
         if (m_frames * kFrameSeconds > m_run->goal().timeLimitSeconds())
             return finish(End::TimedOut);
-        m_robot.teleop().requestMotion(MotionCommand{MotionCommand::Kind::DriveDirect, 0, oi::kRadiusStraight,
-                                                     wheelSpeed(speeds.right), wheelSpeed(speeds.left)});
+        ask(speeds);
         return;
     }
     if (!wasReached) {

@@ -61,6 +61,7 @@ private:
     void finish(End end);
     Result resultNow(End end) const;
     void stopRobot();
+    void ask(const GoalWheelSpeeds &speeds);
 
     RobotSession &m_robot;
     std::optional<GoalRun> m_run;
@@ -68,6 +69,7 @@ private:
     int m_settlingFrames = 0; // frames since the stop
     double m_lastTravelledMm = 0, m_lastTurnedDeg = 0;
     bool m_stoppingItself = false;
+    bool m_asking = false; // asking the teleop for the move's own wheel speeds
 };
 
 Q_DECLARE_METATYPE(GoalDrive::Result)

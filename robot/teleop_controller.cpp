@@ -34,6 +34,7 @@ bool TeleopController::robotIgnoresMotion() const
 
 void TeleopController::requestMotion(const MotionCommand &command)
 {
+    emit motionRequested(command);
     m_wanted = command;
     if (command.isStop()) {
         m_pending.stop();

@@ -64,6 +64,10 @@ signals:
     // What the robot is now asked to do, whichever input asked: the drive
     // pad shows it.
     void motionAsked(const MotionCommand &command);
+    // Every requestMotion(), as it is asked and before the sending rules
+    // merge it with the next: a move closed on odometry learns that
+    // another input wants the wheels.
+    void motionRequested(const MotionCommand &command);
 
 private:
     void sendPending();

@@ -2890,6 +2890,108 @@ GPL-3.0-or-later.</translation>
     </message>
 </context>
 <context>
+    <name>MeasuredMove</name>
+    <message>
+        <source>Forward</source>
+        <translation>Vorwärts</translation>
+    </message>
+    <message>
+        <source>Backward</source>
+        <translation>Rückwärts</translation>
+    </message>
+    <message>
+        <source>Turn left</source>
+        <translation>Links drehen</translation>
+    </message>
+    <message>
+        <source>Turn right</source>
+        <translation>Rechts drehen</translation>
+    </message>
+    <message>
+        <source>Go</source>
+        <translation>Los</translation>
+    </message>
+    <message>
+        <source>The robot drives until its wheels have measured the distance or the turn, then stops. Space or Esc stops it sooner.</source>
+        <translation>Der Roboter fährt, bis seine Räder die Strecke oder die Drehung gemessen haben, und hält dann an. Leertaste oder Esc halten ihn früher an.</translation>
+    </message>
+    <message>
+        <source> °</source>
+        <translation> °</translation>
+    </message>
+    <message>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <source>Move exactly:</source>
+        <translation>Genau fahren:</translation>
+    </message>
+    <message>
+        <source>A move measured by the robot&apos;s own wheels, as a student&apos;s program makes it.</source>
+        <translation>Eine Fahrt, gemessen von den eigenen Rädern des Roboters, wie ein Schülerprogramm sie macht.</translation>
+    </message>
+</context>
+<context>
+    <name>MeasuredMoves</name>
+    <message>
+        <source>Not moving: a classroom robot&apos;s measured moves run on its bridge, beside the robot (the Python library&apos;s straight() and turn()). Drive it with the pad or the keys here.</source>
+        <translation>Keine Fahrt: Die gemessenen Fahrten eines Klassenraum-Roboters laufen auf seiner Bridge neben dem Roboter (straight() und turn() der Python-Bibliothek). Fahren Sie ihn hier mit dem Steuerfeld oder den Tasten.</translation>
+    </message>
+    <message>
+        <source>Not moving: no live data from the robot, so its wheels cannot measure the move. Connect it and wait until it streams.</source>
+        <translation>Keine Fahrt: keine aktuellen Daten vom Roboter, also können seine Räder die Fahrt nicht messen. Verbinden Sie ihn und warten Sie, bis er sendet.</translation>
+    </message>
+    <message>
+        <source>Not moving: the robot&apos;s model is not known yet. Wait a moment and press Go again.</source>
+        <translation>Keine Fahrt: Das Modell des Roboters ist noch nicht bekannt. Warten Sie einen Moment und drücken Sie erneut Los.</translation>
+    </message>
+    <message>
+        <source>Not moving: the robot is in Passive mode and ignores motion. Press Enter Safe, then Go.</source>
+        <translation>Keine Fahrt: Der Roboter ist im Passiv-Modus und ignoriert Fahrbefehle. Drücken Sie Safe aktivieren, dann Los.</translation>
+    </message>
+    <message>
+        <source>Moving %1 mm at %2 mm/s…</source>
+        <translation>Fährt %1 mm mit %2 mm/s…</translation>
+    </message>
+    <message>
+        <source>Turning %1° at %2°/s…</source>
+        <translation>Dreht %1° mit %2°/s…</translation>
+    </message>
+    <message>
+        <source>%1 mm measured</source>
+        <translation>%1 mm gemessen</translation>
+    </message>
+    <message>
+        <source>%1° measured</source>
+        <translation>%1° gemessen</translation>
+    </message>
+    <message>
+        <source>Done: asked %1 mm, %2.</source>
+        <translation>Fertig: %1 mm verlangt, %2.</translation>
+    </message>
+    <message>
+        <source>Done: asked %1°, %2.</source>
+        <translation>Fertig: %1° verlangt, %2.</translation>
+    </message>
+    <message>
+        <source>Stopped early by the robot itself (a cliff or a wheel drop; the Modes dock says which): %1.</source>
+        <translation>Vom Roboter selbst früher angehalten (ein Abgrund oder ein abgesenktes Rad; das Modi-Fenster sagt, welches): %1.</translation>
+    </message>
+    <message>
+        <source>Stopped early: another command or a stop ended the move (%1).</source>
+        <translation>Früher angehalten: Ein anderer Befehl oder ein Stopp hat die Fahrt beendet (%1).</translation>
+    </message>
+    <message>
+        <source>Stopped: the move took too long, as if the robot pushed against something (%1). Look at what is in its way.</source>
+        <translation>Angehalten: Die Fahrt dauerte zu lange, als ob der Roboter gegen etwas drückt (%1). Sehen Sie nach, was ihm im Weg ist.</translation>
+    </message>
+    <message>
+        <source>Stopped: the robot&apos;s data stopped coming (%1). Check its connection.</source>
+        <translation>Angehalten: Die Daten des Roboters kommen nicht mehr (%1). Prüfen Sie seine Verbindung.</translation>
+    </message>
+</context>
+<context>
     <name>MidiMelody</name>
     <message>
         <source>Could not import %1: %2</source>

@@ -2889,6 +2889,108 @@ GPL-3.0-or-later.</translation>
     </message>
 </context>
 <context>
+    <name>MeasuredMove</name>
+    <message>
+        <source>Forward</source>
+        <translation>Adelante</translation>
+    </message>
+    <message>
+        <source>Backward</source>
+        <translation>Atrás</translation>
+    </message>
+    <message>
+        <source>Turn left</source>
+        <translation>Girar a la izquierda</translation>
+    </message>
+    <message>
+        <source>Turn right</source>
+        <translation>Girar a la derecha</translation>
+    </message>
+    <message>
+        <source>Go</source>
+        <translation>Ir</translation>
+    </message>
+    <message>
+        <source>The robot drives until its wheels have measured the distance or the turn, then stops. Space or Esc stops it sooner.</source>
+        <translation>El robot avanza hasta que sus ruedas han medido la distancia o el giro, y entonces se detiene. Espacio o Esc lo detienen antes.</translation>
+    </message>
+    <message>
+        <source> °</source>
+        <translation> °</translation>
+    </message>
+    <message>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <source>Move exactly:</source>
+        <translation>Moverse con exactitud:</translation>
+    </message>
+    <message>
+        <source>A move measured by the robot&apos;s own wheels, as a student&apos;s program makes it.</source>
+        <translation>Un movimiento medido por las propias ruedas del robot, como lo hace el programa de un estudiante.</translation>
+    </message>
+</context>
+<context>
+    <name>MeasuredMoves</name>
+    <message>
+        <source>Not moving: a classroom robot&apos;s measured moves run on its bridge, beside the robot (the Python library&apos;s straight() and turn()). Drive it with the pad or the keys here.</source>
+        <translation>Sin movimiento: los movimientos medidos de un robot del aula se ejecutan en su puente, junto al robot (straight() y turn() de la biblioteca de Python). Condúzcalo aquí con el panel o las teclas.</translation>
+    </message>
+    <message>
+        <source>Not moving: no live data from the robot, so its wheels cannot measure the move. Connect it and wait until it streams.</source>
+        <translation>Sin movimiento: no llegan datos en vivo del robot, así que sus ruedas no pueden medir el movimiento. Conéctelo y espere a que transmita.</translation>
+    </message>
+    <message>
+        <source>Not moving: the robot&apos;s model is not known yet. Wait a moment and press Go again.</source>
+        <translation>Sin movimiento: aún no se conoce el modelo del robot. Espere un momento y pulse Ir de nuevo.</translation>
+    </message>
+    <message>
+        <source>Not moving: the robot is in Passive mode and ignores motion. Press Enter Safe, then Go.</source>
+        <translation>Sin movimiento: el robot está en modo Pasivo e ignora el movimiento. Pulse Pasar a Safe y luego Ir.</translation>
+    </message>
+    <message>
+        <source>Moving %1 mm at %2 mm/s…</source>
+        <translation>Moviéndose %1 mm a %2 mm/s…</translation>
+    </message>
+    <message>
+        <source>Turning %1° at %2°/s…</source>
+        <translation>Girando %1° a %2°/s…</translation>
+    </message>
+    <message>
+        <source>%1 mm measured</source>
+        <translation>%1 mm medidos</translation>
+    </message>
+    <message>
+        <source>%1° measured</source>
+        <translation>%1° medidos</translation>
+    </message>
+    <message>
+        <source>Done: asked %1 mm, %2.</source>
+        <translation>Hecho: se pidieron %1 mm, %2.</translation>
+    </message>
+    <message>
+        <source>Done: asked %1°, %2.</source>
+        <translation>Hecho: se pidieron %1°, %2.</translation>
+    </message>
+    <message>
+        <source>Stopped early by the robot itself (a cliff or a wheel drop; the Modes dock says which): %1.</source>
+        <translation>Detenido antes por el propio robot (un desnivel o una rueda caída; el panel Modos dice cuál): %1.</translation>
+    </message>
+    <message>
+        <source>Stopped early: another command or a stop ended the move (%1).</source>
+        <translation>Detenido antes: otra orden o una parada terminó el movimiento (%1).</translation>
+    </message>
+    <message>
+        <source>Stopped: the move took too long, as if the robot pushed against something (%1). Look at what is in its way.</source>
+        <translation>Detenido: el movimiento tardó demasiado, como si el robot empujara contra algo (%1). Mire qué tiene en su camino.</translation>
+    </message>
+    <message>
+        <source>Stopped: the robot&apos;s data stopped coming (%1). Check its connection.</source>
+        <translation>Detenido: los datos del robot dejaron de llegar (%1). Compruebe su conexión.</translation>
+    </message>
+</context>
+<context>
     <name>MidiMelody</name>
     <message>
         <source>Could not import %1: %2</source>

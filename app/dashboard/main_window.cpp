@@ -23,6 +23,7 @@
 #include "lesson_step_view.h"
 #include "marker_actions.h"
 #include "marker_list.h"
+#include "measured_moves.h"
 #include "mode_panel.h"
 #include "motors_panel.h"
 #include "odometry_map.h"
@@ -309,6 +310,7 @@ void MainWindow::wireInputs()
     // Pad, keys and gamepad drive through the selected robot's sending rules.
     connect(m_drivePad, &DrivePad::motionRequested, this, [this](const MotionCommand &c) { teleop().requestMotion(c); });
     connect(m_drivePad, &DrivePad::safeRequested, this, [this] { session().requestMode(oi::Command::Safe); });
+    m_moves = new MeasuredMoves(m_fleet, *m_drivePad->measuredMove(), this);
     connect(m_projector->view(), &ProjectorView::safeRequested, this,
             [this] { session().requestMode(oi::Command::Safe); });
     connect(m_gamepad, &GamepadInput::motionRequested, this, [this](const MotionCommand &c) { teleop().requestMotion(c); });

@@ -31,6 +31,7 @@ class LedEditor;
 class LessonPanel;
 class LiveServerActions;
 class MarkerActions;
+class MeasuredMoves;
 class ModePanel;
 class MotorsPanel;
 class OdometryMap;
@@ -193,6 +194,7 @@ private:
     SelectedRobotView *m_view = nullptr;
     DockLayout *m_layout = nullptr;
     KeyboardDriving *m_keyboard = nullptr;
+    MeasuredMoves *m_moves = nullptr;
     RobotStatusBar *m_status = nullptr;
 
     ConnectionBar *m_connectionBar = nullptr;

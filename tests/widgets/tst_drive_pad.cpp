@@ -65,11 +65,15 @@ private slots:
         auto *mapping = pad.findChild<QComboBox *>("mapping");
         auto *speed = pad.findChild<QSlider *>("speedLimit");
         auto *enterSafe = pad.findChild<QPushButton *>("enterSafe");
-        QCOMPARE(tabCycle(&pad, mapping), (QList<QWidget *>{mapping, speed, pad.padArea()}));
+        // The "Move exactly" row under the pad.
+        QWidget *direction = pad.findChild<QWidget *>("moveDirection");
+        QWidget *amount = pad.findChild<QWidget *>("moveAmount");
+        QWidget *go = pad.findChild<QWidget *>("moveGo");
+        QCOMPARE(tabCycle(&pad, mapping), (QList<QWidget *>{mapping, speed, pad.padArea(), direction, amount, go}));
 
         // Passive: the pad refuses to drive, so Tab goes to Enter Safe instead.
         pad.setPassive(true);
-        QCOMPARE(tabCycle(&pad, mapping), (QList<QWidget *>{mapping, speed, enterSafe}));
+        QCOMPARE(tabCycle(&pad, mapping), (QList<QWidget *>{mapping, speed, enterSafe, direction, amount, go}));
     }
 
     void describesItsCommand()

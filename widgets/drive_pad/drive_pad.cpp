@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "drive_pad.h"
 
+#include "measured_move.h"
+
 #include "command_encoder.h"
 #include "display_palette.h"
 
@@ -180,6 +182,9 @@ DrivePad::DrivePad(QWidget *parent) : QWidget(parent)
     m_passiveBar->hide();
 
     m_area = new DrivePadArea(this);
+    m_move = new MeasuredMove(this);
+    m_move->setSpeedLimit(m_speed->value());
+    connect(m_speed, &QSlider::valueChanged, m_move, &MeasuredMove::setSpeedLimit);
 
     m_speedTitle = new QLabel(this);
     m_speedTitle->setBuddy(m_speed); // names the slider for screen readers
@@ -194,7 +199,10 @@ DrivePad::DrivePad(QWidget *parent) : QWidget(parent)
     layout->addWidget(m_mapping);
     layout->addLayout(speedRow);
     layout->addWidget(m_passiveBar);
-    layout->addWidget(m_area, 1);
+    m_padAndMove = new QBoxLayout(QBoxLayout::TopToBottom);
+    m_padAndMove->addWidget(m_area, 1);
+    m_padAndMove->addWidget(m_move);
+    layout->addLayout(m_padAndMove, 1);
     retranslateUi();
 }
 
@@ -214,6 +222,22 @@ void DrivePad::retranslateUi()
     setProfile(*m_profile); // the items' tool tips
     updateAccessibleDescription();
     m_area->update();
+}
+
+void DrivePad::resizeEvent(QResizeEvent *event)
+{
+    // A dock wider than tall (a tab under the diagram) keeps the pad round
+    // and big with the move row beside it.
+    const bool wide = width() > height() * 4 / 3;
+    const QBoxLayout::Direction direction = wide ? QBoxLayout::LeftToRight : QBoxLayout::TopToBottom;
+    if (m_padAndMove->direction() != direction) {
+        m_padAndMove->setDirection(direction);
+        m_move->setColumn(wide);
+        // Now, not at the next layout pass: the pad's size is where the
+        // mouse reads its knob.
+        layout()->activate();
+    }
+    QWidget::resizeEvent(event);
 }
 
 void DrivePad::changeEvent(QEvent *event)

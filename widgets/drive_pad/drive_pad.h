@@ -7,6 +7,8 @@
 #include <QPointF>
 #include <QWidget>
 
+class MeasuredMove;
+class QBoxLayout;
 class QComboBox;
 class QLabel;
 class QPushButton;
@@ -67,6 +69,8 @@ public:
     // at the current speed limit.
     QPointF knobFor(const MotionCommand &command) const;
     QPointF knob() const { return m_knob; }
+    // The "Move exactly" row under the pad, which keeps to its speed limit.
+    MeasuredMove *measuredMove() const { return m_move; }
     // The round area that takes the mouse; for tests and the benchmark.
     QWidget *padArea() const { return m_area; }
     // The knob position under a point of padArea(), and back.
@@ -82,6 +86,7 @@ signals:
 
 protected:
     void changeEvent(QEvent *event) override;
+    void resizeEvent(QResizeEvent *event) override;
 
 private:
     friend class DrivePadArea;
@@ -97,6 +102,8 @@ private:
     QLabel *m_speedLabel = nullptr;
     QLabel *m_speedTitle = nullptr;
     QWidget *m_area = nullptr;
+    MeasuredMove *m_move = nullptr;
+    QBoxLayout *m_padAndMove = nullptr; // side by side in a wide dock, one over the other in a tall one
     QWidget *m_passiveBar = nullptr;
     QLabel *m_passiveLabel = nullptr;
     QPushButton *m_enterSafe = nullptr;

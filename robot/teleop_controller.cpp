@@ -3,13 +3,7 @@
 
 #include "command_encoder.h"
 #include "command_modes.h"
-
-namespace {
-QByteArray toBytes(const oi::Bytes &bytes)
-{
-    return QByteArray(reinterpret_cast<const char *>(bytes.data()), qsizetype(bytes.size()));
-}
-} // namespace
+#include "oi_command.h"
 
 TeleopController::TeleopController(DriveTarget &robot, oilink::Clock &clock, QObject *parent)
     : QObject(parent), m_robot(robot), m_clock(clock), m_pending(clock, this)
@@ -69,12 +63,14 @@ void TeleopController::sendPending()
 
 bool TeleopController::sendMotion(const MotionCommand &command)
 {
-    const oi::EncodeResult bytes = command.encode(oi::CommandEncoder(m_robot.robotProfile()));
-    if (!bytes) {
-        emit motionRefused(QString::fromStdString(bytes.error().describe()));
+    // Typed, and encoded once by the link; a command this robot lacks is
+    // refused here, where the input hears of it.
+    oi::OiCommand typed = command.toCommand();
+    if (const std::optional<oi::OiError> refused = oi::CommandEncoder(m_robot.robotProfile()).refuse(typed.command)) {
+        emit motionRefused(QString::fromStdString(refused->describe()));
         return false;
     }
-    if (!m_robot.send(toBytes(*bytes)))
+    if (!m_robot.sendMotion({std::move(typed)}))
         return false;
     m_sent = command;
     m_lastSendMs = m_clock.nowMs();
@@ -102,7 +98,7 @@ void TeleopController::sendStop(bool always)
         emit motionAsked(m_sent);
     if (!moving && !always)
         return;
-    if (m_robot.send(toBytes(oi::CommandEncoder(m_robot.robotProfile()).stopMotion())))
+    if (m_robot.sendMotion(oi::stopMotionCommands(m_robot.robotProfile())))
         m_lastSendMs = m_clock.nowMs();
 }
 
@@ -126,17 +122,15 @@ void TeleopController::stopAll()
 {
     // Stop all also ends a Create's script, which would otherwise drive on
     // after the stop (ERRATA 20).
-    const oi::CommandEncoder encoder(m_robot.robotProfile());
-    const oi::Bytes endScript = encoder.endScript();
-    if (!endScript.empty())
-        m_robot.send(toBytes(endScript));
+    if (std::vector<oi::OiCommand> endScript = oi::endScriptCommands(m_robot.robotProfile()); !endScript.empty())
+        m_robot.sendMotion(endScript);
     // A robot running its own program (Clean, Spot, Max, Seek Dock) ignores
     // Drive in Passive: Safe ends the program and lets the stop take effect,
     // as the bridge does.
     const RobotMode &mode = m_robot.mode();
     if (mode.lastAsked() && oi::startsCleaning(*mode.lastAsked()) && mode.reported() == oi::OiMode::Passive)
-        if (const oi::EncodeResult safe = encoder.safe())
-            m_robot.send(toBytes(*safe));
+        if (m_robot.robotProfile().has(oi::Command::Safe))
+            m_robot.sendMotion({oi::OiCommand{oi::Command::Safe, {}, {}}});
     sendStop(true);
     emit motionStopped();
 }

@@ -14,7 +14,7 @@ bool Transport::setBaud(int)
     return false;
 }
 
-bool Transport::writeCommand(const QByteArray &bytes)
+bool Transport::writeCommands(const std::vector<oi::OiCommand> &, const QByteArray &bytes, Origin)
 {
     return write(bytes);
 }

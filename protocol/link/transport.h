@@ -3,6 +3,8 @@
 
 #include "link_settings.h"
 #include "odometry.h"
+#include "stream_parser.h"
+#include "typed_commands.h"
 
 #include <QByteArray>
 #include <QObject>
@@ -28,13 +30,16 @@ public:
     virtual void close() = 0;
     virtual bool isOpen() const = 0;
     // Queues the bytes; false if the transport is not open or refused them.
+    // The probe and the connection doctor write their questions so.
     virtual bool write(const QByteArray &bytes) = 0;
-    // A command the link's user asked for (RobotLink::send), as opposed to
-    // the link's own exchanges (its Start and Stream, queries, the stop on
-    // closing), which come through write(). Only a transport that hands
-    // commands on to someone who keeps a link of their own (a bridge) needs
-    // to tell them apart; the others write them.
-    virtual bool writeCommand(const QByteArray &bytes);
+    // Who asked for commands the link writes: its user (RobotLink::send),
+    // or the link itself (its Start and Stream, queries, the stop on closing).
+    enum class Origin : quint8 { Link, User };
+    // Commands the link encoded once, with their bytes. A transport that
+    // speaks bytes writes the bytes; one that hands commands on to someone
+    // who keeps a link of their own (a bridge) takes the commands as they
+    // are, and needs `origin` to keep the link's own exchanges to itself.
+    virtual bool writeCommands(const std::vector<oi::OiCommand> &commands, const QByteArray &bytes, Origin origin);
     // Waits up to `msecs` for queued bytes to leave (used before closing).
     virtual void flush(int msecs) = 0;
     // Serial ports only: change the line speed, open or not. Others have no
@@ -79,6 +84,9 @@ protected:
 signals:
     void opened();
     void bytesReceived(const QByteArray &bytes);
+    // A transport that hears values rather than bytes (a robot beside a
+    // bridge): a stream frame, or the answer to a sensor query.
+    void snapshotReceived(const oi::SensorSnapshot &snapshot, oi::FrameKind kind);
     void errorOccurred(const QString &message);
     void closed();
 

@@ -7,6 +7,7 @@
 #include "transport_factory.h"
 #include "virtual_transport.h"
 #include "real_time_robot.h"
+#include "typed_command_bytes.h"
 
 #include "oirec_records.h" // tests/common
 #include "stream_parser.h"
@@ -415,12 +416,12 @@ private slots:
         QVERIFY(snapshots.wait(kTimeoutMs));
         link.startRecording(path);
         states.clear();
-        link.send(QByteArray(1, char(7)));
+        link.send(commandsOf(QByteArray(1, char(7))));
         // The reboot stops the stream; the link starts the robot again. Then
         // Safe, and turn in place at full speed.
         QTRY_VERIFY_WITH_TIMEOUT(!states.isEmpty() && states.last().at(0).value<oilink::LinkState>()
                                                           == oilink::LinkState::Streaming, kTimeoutMs);
-        link.send(QByteArray::fromHex("838901F40001"));
+        link.send(commandsOf(QByteArray::fromHex("838901F40001")));
         QTRY_VERIFY_WITH_TIMEOUT(std::abs(snapshotsOf(snapshots).last().angleDegrees()) > 0, kTimeoutMs);
         snapshots.clear();
         QTRY_VERIFY_WITH_TIMEOUT(snapshots.size() >= 20, kTimeoutMs);
@@ -575,7 +576,7 @@ private slots:
         link.startRecording(path);
         std::vector<oi::Pose> seen;
         connect(&link, &RobotLink::snapshot, this, [&] { seen.push_back(room->robot(id)->pose); });
-        link.send(QByteArray("\x83\x89\x00\xC8\x80\x00", 6)); // Safe, straight ahead at 200 mm/s
+        link.send(commandsOf(QByteArray("\x83\x89\x00\xC8\x80\x00", 6))); // Safe, straight ahead at 200 mm/s
         QTRY_VERIFY_WITH_TIMEOUT(seen.size() >= 30, kTimeoutMs);
         link.close();
 

@@ -91,7 +91,13 @@ void RobotSession::setTransportFactory(oilink::TransportFactory factory)
     m_link->setTransportFactory(std::move(factory));
 }
 
-void RobotSession::setLinkClock(oilink::Clock &clock) { m_link->setClock(clock); }
+void RobotSession::setLinkClock(oilink::Clock &clock)
+{
+    // One clock for every timed rule of this robot.
+    m_link->setClock(clock);
+    m_teleop.setClock(clock);
+    m_firmware.setClock(clock);
+}
 
 void RobotSession::setLinkOnThisThread(bool here) { m_link->setOnThisThread(here); }
 

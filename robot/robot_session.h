@@ -62,7 +62,8 @@ public:
     // Makes the transports (tests put a recording transport here). Before
     // the first connectTo().
     void setTransportFactory(oilink::TransportFactory factory);
-    // The clock of the link's timed rules (tests advance one). Before the
+    // The clock of this robot's timed rules: the link's, the teleop's rate
+    // limit and the firmware's deadline (tests advance one). Before the
     // first connectTo().
     void setLinkClock(oilink::Clock &clock);
     // The link on this session's thread rather than a worker of its own

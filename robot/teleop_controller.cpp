@@ -6,17 +6,25 @@
 #include "oi_command.h"
 
 TeleopController::TeleopController(DriveTarget &robot, oilink::Clock &clock, QObject *parent)
-    : QObject(parent), m_robot(robot), m_clock(clock), m_pending(clock, this)
+    : QObject(parent), m_robot(robot)
 {
-    m_pending.setSingleShot(true);
-    connect(&m_pending, &oilink::ClockTimer::timeout, this, &TeleopController::sendPending);
+    setClock(clock);
     m_state = m_robot.state();
     m_passive = robotIgnoresMotion();
 }
 
+void TeleopController::setClock(oilink::Clock &clock)
+{
+    m_clock = &clock;
+    m_pending = std::make_unique<oilink::ClockTimer>(clock, this);
+    m_lastSendMs = -1; // a time on the old clock means nothing on this one
+    m_pending->setSingleShot(true);
+    connect(m_pending.get(), &oilink::ClockTimer::timeout, this, &TeleopController::sendPending);
+}
+
 bool TeleopController::isMoving() const
 {
-    return !m_sent.isStop() || (m_pending.isActive() && !m_wanted.isStop());
+    return !m_sent.isStop() || (m_pending->isActive() && !m_wanted.isStop());
 }
 
 bool TeleopController::robotIgnoresMotion() const
@@ -30,13 +38,13 @@ void TeleopController::requestMotion(const MotionCommand &command)
 {
     m_wanted = command;
     if (command.isStop()) {
-        m_pending.stop();
+        m_pending->stop();
         sendStop(false);
         return;
     }
     checkMode();
     if (m_passive) {
-        m_pending.stop();
+        m_pending->stop();
         emit motionRefused(whyNoMotion());
         return;
     }
@@ -45,13 +53,13 @@ void TeleopController::requestMotion(const MotionCommand &command)
         emit motionRefused(whyNoMotion());
         return;
     }
-    if (m_pending.isActive())
+    if (m_pending->isActive())
         return; // the latest request goes out when the timer fires
-    const qint64 since = m_lastSendMs >= 0 ? m_clock.nowMs() - m_lastSendMs : kMinIntervalMs;
+    const qint64 since = m_lastSendMs >= 0 ? m_clock->nowMs() - m_lastSendMs : kMinIntervalMs;
     if (since >= kMinIntervalMs)
         sendPending();
     else
-        m_pending.start(int(kMinIntervalMs - since));
+        m_pending->start(int(kMinIntervalMs - since));
 }
 
 void TeleopController::sendPending()
@@ -73,7 +81,7 @@ bool TeleopController::sendMotion(const MotionCommand &command)
     if (!m_robot.sendMotion({std::move(typed)}))
         return false;
     m_sent = command;
-    m_lastSendMs = m_clock.nowMs();
+    m_lastSendMs = m_clock->nowMs();
     emit motionAsked(m_sent);
     return true;
 }
@@ -90,7 +98,7 @@ QString TeleopController::whyNoMotion() const
 
 void TeleopController::sendStop(bool always)
 {
-    m_pending.stop();
+    m_pending->stop();
     const bool moving = !m_sent.isStop();
     m_wanted = MotionCommand::stop(m_wanted.kind);
     m_sent = m_wanted;
@@ -99,7 +107,7 @@ void TeleopController::sendStop(bool always)
     if (!moving && !always)
         return;
     if (m_robot.sendMotion(oi::stopMotionCommands(m_robot.robotProfile())))
-        m_lastSendMs = m_clock.nowMs();
+        m_lastSendMs = m_clock->nowMs();
 }
 
 void TeleopController::deadManReleased()

@@ -3,11 +3,11 @@
 
 #include "brc_pulser.h"
 #include "connection_doctor.h"
+#include "link_transports.h"
 
 #include "profile_probe.h"
 #include "queued_call.h"
 #include "recording_file.h"
-#include "replay_transport.h"
 #include "stream_packets.h"
 #include "transport.h"
 
@@ -207,7 +207,7 @@ Transport *RobotLink::makeTransport()
 {
     LinkSettings settings = m_settings;
     settings.baud = baud() > 0 ? baud() : ProfileProbe::defaultBauds().front();
-    return m_factory ? m_factory(settings) : createTransport(settings, settings.baud);
+    return m_factory ? m_factory(settings) : createLinkTransport(settings, settings.baud);
 }
 
 void RobotLink::openTransport()
@@ -231,8 +231,7 @@ void RobotLink::openTransport()
     connect(transport, &Transport::snapshotReceived, this, &RobotLink::onSnapshotReceived);
     connect(transport, &Transport::errorOccurred, this, &RobotLink::onTransportError);
     connect(transport, &Transport::closed, this, &RobotLink::onTransportClosed);
-    if (auto *replay = qobject_cast<ReplayTransport *>(transport))
-        connect(replay, &ReplayTransport::replayStatus, this, &RobotLink::replayStatus);
+    connect(transport, &Transport::replayStatus, this, &RobotLink::replayStatus);
     // Last: a transport may answer from inside open().
     transport->open();
 }
@@ -1096,8 +1095,8 @@ void RobotLink::markRecording(const MarkerEdit &edit)
 
 void RobotLink::controlReplay(const ReplayCommand &command)
 {
-    if (auto *replay = qobject_cast<ReplayTransport *>(m_transport))
-        replay->control(command);
+    if (m_transport)
+        m_transport->controlReplay(command);
 }
 
 } // namespace oilink

@@ -3,6 +3,7 @@
 
 #include "link_settings.h"
 #include "odometry.h"
+#include "replay_control.h"
 #include "stream_parser.h"
 #include "typed_commands.h"
 
@@ -74,6 +75,9 @@ public:
     // Where the robot truly is, where the transport knows it (the in-process
     // virtual robot, in its room's coordinates); nullopt for a real robot.
     virtual std::optional<oi::Pose> truePose() const { return std::nullopt; }
+    // Play, pause, speed, seek, step: for a recording played back, which
+    // answers with replayStatus(); a live transport ignores it.
+    virtual void controlReplay(const ReplayCommand &command);
 
 protected:
     // The level of the wake line's modem line(s) for BRC `low`.
@@ -89,16 +93,12 @@ signals:
     void snapshotReceived(const oi::SensorSnapshot &snapshot, oi::FrameKind kind);
     void errorOccurred(const QString &message);
     void closed();
+    // Where a recording played back is (ReplayStatus says when it comes).
+    void replayStatus(const oilink::ReplayStatus &status);
 
 private:
     BrcLine m_brcLine = BrcLine::Rts;
     bool m_brcAssertedIsLow = true;
 };
-
-// The link's own transport for the settings: a serial port opened at `baud`,
-// a TCP connection or a replay. nullptr for a virtual robot, which the
-// link does not know: transports::createTransport (transport_factory.h)
-// knows every kind.
-Transport *createTransport(const LinkSettings &settings, int baud, QObject *parent = nullptr);
 
 } // namespace oilink

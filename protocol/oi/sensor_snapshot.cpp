@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "sensor_snapshot.h"
 
-#include <algorithm>
 #include <bit>
 
 namespace oi {
@@ -25,33 +24,6 @@ bool operator==(const SensorSnapshot &a, const SensorSnapshot &b)
         if (((a.m_present >> id) & 1u) && a.m_values[id] != b.m_values[id])
             return false;
     return true;
-}
-
-std::int32_t valueOnTheWire(const PacketInfo &packet, std::int32_t value)
-{
-    const bool two = packet.bytes == 2;
-    const std::int32_t lo = packet.isSigned ? (two ? -32768 : -128) : 0;
-    const std::int32_t hi = packet.isSigned ? (two ? 32767 : 127) : (two ? 65535 : 255);
-    return std::clamp(value, lo, hi);
-}
-
-SensorSnapshot packetsAsSent(const SensorSnapshot &values, std::span<const int> packetIds)
-{
-    const RobotProfile &profile = values.robotProfile();
-    SensorSnapshot out(profile);
-    for (int id : packetIds) {
-        if (!profile.isValidSensorId(id))
-            continue;
-        int first = id, last = id;
-        if (const PacketGroup *g = profile.group(id)) {
-            first = g->first;
-            last = g->last;
-        }
-        for (int p = first; p <= last; ++p)
-            if (const PacketInfo *info = profile.packet(p))
-                out.set(p, valueOnTheWire(*info, values.raw(p)));
-    }
-    return out;
 }
 
 void SensorSnapshot::merge(const SensorSnapshot &newer)

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "packet_encoding.h"
 
+#include "packets_as_sent.h"
+
 #include <algorithm>
 
 namespace sim {

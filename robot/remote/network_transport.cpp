@@ -5,6 +5,7 @@
 #include "command_message.h"
 #include "command_modes.h"
 #include "fleet_directory.h"
+#include "packets_as_sent.h"
 
 #include <algorithm>
 
@@ -43,8 +44,9 @@ bool isStop(const oi::OiCommand &c)
 } // namespace
 
 NetworkTransport::NetworkTransport(FleetDirectory *directory, QString robot, const oi::RobotProfile &profile,
-                                   QObject *parent)
-    : Transport(parent), m_hasDirectory(directory), m_robot(std::move(robot)), m_profile(&profile), m_latest(profile)
+                                   oilink::Clock &clock, QObject *parent)
+    : Transport(parent), m_hasDirectory(directory), m_robot(std::move(robot)), m_profile(&profile), m_latest(profile),
+      m_heartbeat(clock, this), m_idleRelease(clock, this)
 {
     if (directory) {
         // Values both ways, queued: the directory lives on the GUI thread.
@@ -60,12 +62,12 @@ NetworkTransport::NetworkTransport(FleetDirectory *directory, QString robot, con
                 Qt::QueuedConnection);
     }
     m_heartbeat.setInterval(kHeartbeatMs);
-    connect(&m_heartbeat, &QTimer::timeout, this, [this] {
+    connect(&m_heartbeat, &oilink::ClockTimer::timeout, this, [this] {
         publishControl(QStringLiteral("keep"));
     });
     m_idleRelease.setSingleShot(true);
     m_idleRelease.setInterval(kReleaseIdleMs);
-    connect(&m_idleRelease, &QTimer::timeout, this, [this] {
+    connect(&m_idleRelease, &oilink::ClockTimer::timeout, this, [this] {
         if (!m_moving && !m_ownProgram)
             releaseControl();
     });

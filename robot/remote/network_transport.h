@@ -5,8 +5,9 @@
 #include "sensor_snapshot.h"
 #include "transport.h"
 
+#include "link_clock.h"
+
 #include <QJsonObject>
-#include <QTimer>
 
 #include <vector>
 
@@ -38,9 +39,10 @@ public:
     static constexpr int kReleaseIdleMs = 1000;
 
     // `directory` is only connected to, never called: null when there is
-    // no broker, and open() says so.
+    // no broker, and open() says so. The heartbeat and the idle release run
+    // on `clock`.
     NetworkTransport(FleetDirectory *directory, QString robot, const oi::RobotProfile &profile,
-                     QObject *parent = nullptr);
+                     oilink::Clock &clock = oilink::Clock::steady(), QObject *parent = nullptr);
     ~NetworkTransport() override;
 
     void open() override;
@@ -87,6 +89,6 @@ private:
     bool m_ownProgram = false;
     quint64 m_nextId = 1;
     QStringList m_controlSent; // not answered yet, oldest first
-    QTimer m_heartbeat;
-    QTimer m_idleRelease;
+    oilink::ClockTimer m_heartbeat;
+    oilink::ClockTimer m_idleRelease;
 };

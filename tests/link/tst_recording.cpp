@@ -266,26 +266,26 @@ private slots:
         QByteArray delivered;
         connect(&replay, &oilink::Transport::bytesReceived, [&](const QByteArray &b) { delivered += b; });
         replay.open();
-        replay.control(ReplayCommand::pause());
+        replay.controlReplay(ReplayCommand::pause());
         const int middle = all.size() / 2;
         delivered.clear();
-        replay.control(ReplayCommand::seek(r.frames()[middle].timeUs));
+        replay.controlReplay(ReplayCommand::seek(r.frames()[middle].timeUs));
         QCOMPARE(parse(r, delivered), QList<oi::SensorSnapshot>{all[middle]});
         QCOMPARE(replay.status().frame, middle);
         QCOMPARE(replay.status().positionUs, r.frames()[middle].timeUs);
 
         delivered.clear();
-        replay.control(ReplayCommand::step(1));
+        replay.controlReplay(ReplayCommand::step(1));
         QCOMPARE(parse(r, delivered), QList<oi::SensorSnapshot>{all[middle + 1]});
         delivered.clear();
-        replay.control(ReplayCommand::step(-1));
+        replay.controlReplay(ReplayCommand::step(-1));
         QCOMPARE(parse(r, delivered), QList<oi::SensorSnapshot>{all[middle]});
         QVERIFY(!replay.status().playing);
 
         // Stepping stops at the ends rather than wrapping.
-        replay.control(ReplayCommand::step(-10000));
+        replay.controlReplay(ReplayCommand::step(-10000));
         QCOMPARE(replay.status().frame, 0);
-        replay.control(ReplayCommand::step(10000));
+        replay.controlReplay(ReplayCommand::step(10000));
         QCOMPARE(replay.status().frame, all.size() - 1);
     }
 
@@ -296,13 +296,13 @@ private slots:
         QVERIFY(!recordVirtualRobot(path).isEmpty());
         ReplayTransport replay(path);
         replay.open();
-        replay.control(ReplayCommand::setSpeed(0.25));
+        replay.controlReplay(ReplayCommand::setSpeed(0.25));
         QCOMPARE(replay.status().speed, 0.25);
-        replay.control(ReplayCommand::setSpeed(10));
+        replay.controlReplay(ReplayCommand::setSpeed(10));
         QCOMPARE(replay.status().speed, 10.0);
-        replay.control(ReplayCommand::setSpeed(20));
+        replay.controlReplay(ReplayCommand::setSpeed(20));
         QCOMPARE(replay.status().speed, 10.0);
-        replay.control(ReplayCommand::setSpeed(0.1));
+        replay.controlReplay(ReplayCommand::setSpeed(0.1));
         QCOMPARE(replay.status().speed, 10.0);
     }
 

@@ -2,6 +2,7 @@
 // appendPacketData must be the exact inverse of SensorSnapshot::decode, and
 // a stream frame made with it must read as oi::packetsAsSent says, without bytes.
 #include "packet_encoding.h"
+#include "packets_as_sent.h"
 #include "stream_parser.h"
 
 #include <QTest>

@@ -35,8 +35,6 @@ constexpr int kFlushMs = 500;
 constexpr int kQueryQuietMs = 50;
 constexpr int kQueryTimeoutMs = 500;
 
-using C = oi::Command;
-
 // Start, which leaves Safe or Full: on a Create after ending a script that
 // may be running, which would otherwise play on in Passive, where its Drive
 // is ignored and its waits never end (ERRATA 20). A stop comes first: a robot
@@ -48,13 +46,13 @@ std::vector<oi::OiCommand> startCommands(const oi::RobotProfile &profile)
     std::vector<oi::OiCommand> out = oi::endScriptCommands(profile);
     for (oi::OiCommand &stop : oi::stopMotionCommands(profile))
         out.push_back(std::move(stop));
-    out.push_back(oi::OiCommand{C::Start, {}, {}});
+    out.push_back(oi::OiCommand{oi::Command::Start, {}, {}});
     return out;
 }
 
 std::vector<oi::OiCommand> streamState(bool running)
 {
-    return {oi::OiCommand{C::PauseResumeStream, {running ? 1 : 0}, {}}};
+    return {oi::OiCommand{oi::Command::PauseResumeStream, {running ? 1 : 0}, {}}};
 }
 
 QString fromStd(std::string_view text)
@@ -450,7 +448,7 @@ void RobotLink::startStream()
     m_parser.setProfile(*m_profile);
     const std::vector<std::uint8_t> ids(m_streamIds.begin(), m_streamIds.end());
     m_parser.setExpectedStream(ids);
-    m_streamCommand = oi::OiCommand{C::Stream, {}, oi::Bytes(ids.begin(), ids.end())};
+    m_streamCommand = oi::OiCommand{oi::Command::Stream, {}, oi::Bytes(ids.begin(), ids.end())};
     m_frameSinceStreamStart = false;
     m_wakingStream = m_wokeStream = m_rearmedSinceStop = false;
     m_rearmMs = kNoDataAfterMs;
@@ -667,7 +665,7 @@ void RobotLink::send(const std::vector<oi::OiCommand> &commands)
         reportError(tr("the connection check is running: the command was not sent"), false);
         return;
     }
-    const auto isBaud = [](const oi::OiCommand &c) { return c.command == C::Baud; };
+    const auto isBaud = [](const oi::OiCommand &c) { return c.command == oi::Command::Baud; };
     if (const QString why = m_settings.whyNoBaudChange();
         !why.isEmpty() && std::any_of(commands.begin(), commands.end(), isBaud)) {
         reportError(why, false);
@@ -680,7 +678,7 @@ void RobotLink::send(const std::vector<oi::OiCommand> &commands)
         if (!endScript.empty() && !writeCommands(endScript))
             return;
     }
-    writeCommands(commands, Transport::Origin::User);
+    writeCommands(commands, true);
 }
 
 const oi::RobotProfile &RobotLink::writingProfile() const
@@ -688,7 +686,7 @@ const oi::RobotProfile &RobotLink::writingProfile() const
     return m_profile ? *m_profile : oi::profile(oi::ProfileId::Create2);
 }
 
-bool RobotLink::writeCommands(const std::vector<oi::OiCommand> &commands, Transport::Origin origin)
+bool RobotLink::writeCommands(const std::vector<oi::OiCommand> &commands, bool asked)
 {
     // The one encode on the way to the robot.
     const oi::EncodeResult encoded = oi::encodeCommands(oi::CommandEncoder(writingProfile()), commands);
@@ -697,6 +695,7 @@ bool RobotLink::writeCommands(const std::vector<oi::OiCommand> &commands, Transp
         return false;
     }
     const QByteArray bytes(reinterpret_cast<const char *>(encoded->data()), qsizetype(encoded->size()));
+    const Transport::Origin origin = asked ? Transport::Origin::User : Transport::Origin::Link;
     if (!m_transport || !m_transport->writeCommands(commands, bytes, origin)) {
         reportError(tr("%1: write failed").arg(m_settings.describe()));
         return false;
@@ -710,7 +709,7 @@ bool RobotLink::writeCommands(const std::vector<oi::OiCommand> &commands, Transp
 
 void RobotLink::noteStartSent()
 {
-    m_modeReading.sent(C::Start, m_clock.nowNs() / 1'000'000);
+    m_modeReading.sent(oi::Command::Start, m_clock.nowNs() / 1'000'000);
 }
 
 void RobotLink::noteSent(const QByteArray &bytes)
@@ -793,10 +792,10 @@ void RobotLink::sendQuery()
     dropPartialInput();
     const Request &request = m_queries.front();
     const bool script = request.kind == Request::Kind::Script;
-    const oi::OiCommand command = script ? oi::OiCommand{C::ShowScript, {}, {}}
+    const oi::OiCommand command = script ? oi::OiCommand{oi::Command::ShowScript, {}, {}}
                                   : request.packetIds.size() == 1
-                                      ? oi::OiCommand{C::Sensors, {request.packetIds.front()}, {}}
-                                      : oi::OiCommand{C::QueryList, {}, request.packetIds};
+                                      ? oi::OiCommand{oi::Command::Sensors, {request.packetIds.front()}, {}}
+                                      : oi::OiCommand{oi::Command::QueryList, {}, request.packetIds};
     if (script)
         m_scriptReply.clear();
     else

@@ -7,10 +7,9 @@
 #include "link_status.h"
 #include "recording_markers.h"
 #include "replay_control.h"
-#include "transport.h"
-#include "typed_commands.h"
 
 #include "mode_reading.h"
+#include "oi_command.h"
 #include "stream_parser.h"
 
 #include <QByteArray>
@@ -36,6 +35,7 @@ class BrcPulser;
 class ConnectionDoctor;
 class ProfileProbe;
 class RecordingWriter;
+class Transport;
 
 // One robot on one transport: opens it, finds the profile if asked to,
 // starts the sensor stream that fits the baud, parses what comes back and
@@ -205,8 +205,8 @@ private:
     // Encodes the commands with the robot's profile (Create 2's before it
     // is known: what the link says first reads alike on every profile) and
     // writes them, with their bytes, to the transport.
-    bool writeCommands(const std::vector<oi::OiCommand> &commands,
-                       Transport::Origin origin = Transport::Origin::Link);
+    // `asked`: the user's commands (send()), not the link's own exchanges.
+    bool writeCommands(const std::vector<oi::OiCommand> &commands, bool asked = false);
     // The profile commands are encoded with.
     const oi::RobotProfile &writingProfile() const;
     // Counts, records and shows bytes that went to the robot.

@@ -5,7 +5,7 @@
 #include "odometry.h"
 #include "replay_control.h"
 #include "stream_parser.h"
-#include "typed_commands.h"
+#include "oi_command.h"
 
 #include <QByteArray>
 #include <QObject>

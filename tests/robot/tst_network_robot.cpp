@@ -7,6 +7,7 @@
 
 #include "fake_bridge.h"
 #include "fleet_directory.h"
+#include "manual_clock.h"
 #include "mosquitto_broker.h"
 #include "network_transport.h"
 #include "robot_session.h"
@@ -134,6 +135,36 @@ private slots:
         QCOMPARE(rig.bridge.receivedOn(mqtt::topics::Kind::Command).last().payload.value("command").toString(),
                  QStringLiteral("stop"));
         QVERIFY2(problems.isEmpty(), problems.isEmpty() ? "" : qPrintable(problems.first().first().toString()));
+    }
+
+    // The heartbeat that keeps control, and the release after a command
+    // other than motion, run on the clock the transport is given.
+    void theHeartbeatRunsOnTheClock()
+    {
+        ManualClock clock;
+        FleetDirectory directory; // connected to, never called: no broker needed
+        NetworkTransport transport(&directory, QStringLiteral("r1"), oi::profile(oi::ProfileId::Create2), clock);
+        QSignalSpy control(&transport, &NetworkTransport::controlPublished);
+        transport.open();
+        const auto actions = [&control] {
+            QStringList out;
+            for (const QList<QVariant> &c : control)
+                out << c.at(1).toString();
+            return out;
+        };
+        // A song takes control, the heartbeat keeps it, and it goes back once idle.
+        transport.writeCommands({oi::OiCommand{oi::Command::Play, {0}, {}}}, QByteArray(), oilink::Transport::Origin::User);
+        QCOMPARE(actions(), QStringList{"take"});
+        clock.advance(NetworkTransport::kHeartbeatMs - 1);
+        QCOMPARE(actions(), QStringList{"take"});
+        clock.advance(1);
+        QCOMPARE(actions(), (QStringList{"take", "keep"}));
+        clock.advance(NetworkTransport::kReleaseIdleMs - NetworkTransport::kHeartbeatMs - 1);
+        QVERIFY(!actions().contains("release"));
+        QCOMPARE(actions().count("keep"), NetworkTransport::kReleaseIdleMs / NetworkTransport::kHeartbeatMs - 1);
+        clock.advance(1);
+        QCOMPARE(actions().last(), QStringLiteral("release"));
+        transport.close();
     }
 
     void drivingTakesControlAndGivesItBack()

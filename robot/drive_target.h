@@ -2,11 +2,12 @@
 #pragma once
 
 #include "link_status.h"
+#include "oi_command.h"
 #include "robot_mode.h"
 #include "robot_profile.h"
 #include "sensor_snapshot.h"
 
-#include <QByteArray>
+#include <vector>
 
 // What the motion sending rules (TeleopController) see of the robot they
 // drive: its profile, its latest frame, its mode, its link's state, and a way to send.
@@ -19,8 +20,10 @@ public:
     // The mode as the user sees it: the one place Safe dropping to Passive is read.
     virtual const RobotMode &mode() const = 0;
     virtual oilink::LinkState state() const = 0;
-    // Already-encoded, validated bytes; false (and nothing sent) without a link.
-    virtual bool send(const QByteArray &bytes) = 0;
+    // Typed motion or stops, which the link encodes once (and refuses, saying
+    // why, where the profile does not allow them); false (and nothing sent)
+    // without a link.
+    virtual bool sendMotion(const std::vector<oi::OiCommand> &commands) = 0;
 
 protected:
     ~DriveTarget() = default;

@@ -9,7 +9,7 @@
 #include <optional>
 
 // What an input device (drive pad, keyboard, gamepad) asks the robot to do,
-// before the session's sending rules turn it into bytes.
+// before the session's sending rules turn it into a typed command.
 struct MotionCommand {
     enum class Kind { Drive, DriveDirect, DrivePwm };
     Kind kind = Kind::Drive;
@@ -42,15 +42,15 @@ struct MotionCommand {
         m.left = command.fields[1];
         return m;
     }
-    // The bytes for this command on a profile (validated by the encoder).
-    oi::EncodeResult encode(const oi::CommandEncoder &encoder) const
+    // The typed Drive, Drive Direct or Drive PWM; the link encodes it.
+    oi::OiCommand toCommand() const
     {
         switch (kind) {
-        case Kind::DriveDirect: return encoder.driveDirect(right, left);
-        case Kind::DrivePwm: return encoder.drivePwm(right, left);
+        case Kind::DriveDirect: return {oi::Command::DriveDirect, {right, left}, {}};
+        case Kind::DrivePwm: return {oi::Command::DrivePwm, {right, left}, {}};
         case Kind::Drive: break;
         }
-        return encoder.drive(velocity, radius);
+        return {oi::Command::Drive, {velocity, radius}, {}};
     }
     friend bool operator==(const MotionCommand &, const MotionCommand &) = default;
 };

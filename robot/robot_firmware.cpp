@@ -28,14 +28,17 @@ QString printable(const QByteArray &line)
 }
 } // namespace
 
-RobotFirmware::RobotFirmware(QObject *parent) : QObject(parent)
+RobotFirmware::RobotFirmware(QObject *parent) : QObject(parent) { setClock(oilink::Clock::steady()); }
+
+void RobotFirmware::setClock(oilink::Clock &clock)
 {
-    m_deadline.setSingleShot(true);
-    connect(&m_deadline, &QTimer::timeout, this, [this] {
+    m_deadline = std::make_unique<oilink::ClockTimer>(clock, this);
+    m_deadline->setSingleShot(true);
+    connect(m_deadline.get(), &oilink::ClockTimer::timeout, this, [this] {
         m_listening = false;
         emit readFailed(tr("The robot printed no firmware version within %1 s of Reset. Check that it is "
                            "switched on and connected, and try again once it streams.")
-                            .arg(m_deadline.interval() / 1000.0));
+                            .arg(m_deadline->interval() / 1000.0));
     });
 }
 
@@ -102,7 +105,7 @@ void RobotFirmware::connectingTo(const oilink::LinkSettings &link)
         return;
     m_robot = robot;
     m_listening = false;
-    m_deadline.stop();
+    m_deadline->stop();
     m_banner.clear();
     m_modeOneHigh = QSettings().value(modeSettingsKey()).toBool();
     setFirmware(firmwareOfRelease(QSettings().value(settingsKey()).toString()));
@@ -111,7 +114,7 @@ void RobotFirmware::connectingTo(const oilink::LinkSettings &link)
 void RobotFirmware::expectBanner(int timeoutMs)
 {
     listenForBanner();
-    m_deadline.start(timeoutMs);
+    m_deadline->start(timeoutMs);
 }
 
 void RobotFirmware::listenForBanner()
@@ -131,7 +134,7 @@ void RobotFirmware::watchReceived(const QByteArray &bytes)
     if (!info)
         return;
     m_listening = false;
-    m_deadline.stop();
+    m_deadline->stop();
     // The line that names the version; the lines before it may hold the end
     // of a stream frame.
     const qsizetype versionAt = m_received.indexOf(QByteArray::fromStdString(info->release));

@@ -7,7 +7,9 @@
 #include <QByteArray>
 #include <QObject>
 #include <QString>
-#include <QTimer>
+#include "link_clock.h"
+
+#include <memory>
 
 #include <optional>
 
@@ -53,7 +55,9 @@ public:
     // A Reset is about to go out on purpose: read() or readFailed() follows,
     // the latter after timeoutMs without a banner.
     void expectBanner(int timeoutMs = kBannerTimeoutMs);
-    bool isReading() const { return m_deadline.isActive(); }
+    bool isReading() const { return m_deadline->isActive(); }
+    // The clock the deadline runs on (the session's, which tests advance).
+    void setClock(oilink::Clock &clock);
 
 signals:
     // The release changed: learned, restored for this robot, or forgotten.
@@ -73,5 +77,5 @@ private:
     bool m_listening = false;
     QByteArray m_received; // since the Reset, bounded
     QString m_banner;
-    QTimer m_deadline;
+    std::unique_ptr<oilink::ClockTimer> m_deadline;
 };

@@ -91,7 +91,13 @@ void RobotSession::setTransportFactory(oilink::TransportFactory factory)
     m_link->setTransportFactory(std::move(factory));
 }
 
-void RobotSession::setLinkClock(oilink::Clock &clock) { m_link->setClock(clock); }
+void RobotSession::setLinkClock(oilink::Clock &clock)
+{
+    // One clock for every timed rule of this robot.
+    m_link->setClock(clock);
+    m_teleop.setClock(clock);
+    m_firmware.setClock(clock);
+}
 
 void RobotSession::setLinkOnThisThread(bool here) { m_link->setOnThisThread(here); }
 
@@ -204,26 +210,16 @@ bool RobotSession::requestMode(oi::Command command, int demo)
 {
     if (isReplay())
         return false; // a recording has no robot to command
-    const oi::CommandEncoder encoder(*m_profile);
-    const oi::EncodeResult bytes = command == oi::Command::Demo
-                                       ? encoder.demo(demo)
-                                       : oi::encodeCommand(encoder, oi::commandSpec(command).name, {});
-    if (!bytes || !send(QByteArray(reinterpret_cast<const char *>(bytes->data()), qsizetype(bytes->size()))))
+    std::vector<int> fields;
+    if (command == oi::Command::Demo)
+        fields.push_back(demo);
+    // A mode command takes no fields (Demo its number): anything else is not one.
+    if (!m_profile->has(command) || oi::commandFieldNames(command).size() != fields.size())
+        return false;
+    if (!send(oi::OiCommand{command, std::move(fields), {}}))
         return false;
     m_mode.asked(command, QDateTime::currentDateTime());
     emit modeChanged();
-    return true;
-}
-
-bool RobotSession::send(const QByteArray &bytes)
-{
-    if (!m_connected || bytes.isEmpty())
-        return false;
-    // Bytes from a widget that does not yet say what it asks: read back as
-    // the robot reads them.
-    noteAsked(oi::readCommands(*m_profile, {reinterpret_cast<const std::uint8_t *>(bytes.constData()),
-                                            std::size_t(bytes.size())}));
-    m_link->send(bytes);
     return true;
 }
 
@@ -233,18 +229,22 @@ bool RobotSession::send(const std::vector<oi::OiCommand> &commands)
 {
     if (!m_connected || commands.empty())
         return false;
+    // Judged whole here, so that the widget hears at once; the link encodes.
     const oi::CommandEncoder encoder(*m_profile);
-    QByteArray bytes;
-    for (const oi::OiCommand &command : commands) {
-        const oi::EncodeResult encoded = oi::encodeCommand(encoder, command);
-        if (!encoded) {
-            emit errorOccurred(tr("Not sent: %1").arg(QString::fromStdString(encoded.error().describe())));
+    for (const oi::OiCommand &command : commands)
+        if (const std::optional<oi::OiError> refused = oi::checkCommand(encoder, command)) {
+            emit errorOccurred(tr("Not sent: %1").arg(QString::fromStdString(refused->describe())));
             return false;
         }
-        bytes.append(reinterpret_cast<const char *>(encoded->data()), qsizetype(encoded->size()));
-    }
+    return sendMotion(commands);
+}
+
+bool RobotSession::sendMotion(const std::vector<oi::OiCommand> &commands)
+{
+    if (!m_connected || commands.empty())
+        return false;
     noteAsked(commands);
-    m_link->send(bytes);
+    m_link->send(commands);
     return true;
 }
 

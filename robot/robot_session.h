@@ -62,7 +62,8 @@ public:
     // Makes the transports (tests put a recording transport here). Before
     // the first connectTo().
     void setTransportFactory(oilink::TransportFactory factory);
-    // The clock of the link's timed rules (tests advance one). Before the
+    // The clock of this robot's timed rules: the link's, the teleop's rate
+    // limit and the firmware's deadline (tests advance one). Before the
     // first connectTo().
     void setLinkClock(oilink::Clock &clock);
     // The link on this session's thread rather than a worker of its own
@@ -85,9 +86,6 @@ public:
     // Where a robot that is not connected would connect; connects nothing.
     void setSettings(const oilink::LinkSettings &settings);
 
-    // Sends already-encoded, validated bytes while the link is up. Returns false
-    // (and sends nothing) when there is no link.
-    bool send(const QByteArray &bytes) override;
     // Sends a mode or cleaning command (Start, Safe, Full, Stop, Clean, Demo
     // with `demo` as its number, ...) and remembers it was asked, so mode()
     // can tell a drop the user asked for from one the robot made itself.
@@ -96,11 +94,11 @@ public:
     bool requestMode(oi::Command command, int demo = 0);
     // The mode as the user sees it: asked, reported, and why it changed.
     const RobotMode &mode() const override { return m_mode; }
-    // Typed commands, encoded with this robot's profile and sent together
-    // while the link is up; the session knows what was asked for (a Reset
-    // makes the firmware listen for the banner). False, with nothing sent
-    // and errorOccurred() saying why, without a link or for a command the
-    // profile refuses.
+    // Typed commands, sent together while the link is up; the link encodes
+    // them once with this robot's profile. The session knows what was asked
+    // for (a Reset makes the firmware listen for the banner). False, with
+    // nothing sent and errorOccurred() saying why, without a link or for a
+    // command the profile refuses.
     bool send(const oi::OiCommand &command);
     bool send(const std::vector<oi::OiCommand> &commands);
     // Requests whose replies carry no framing go through the link's queue,
@@ -225,6 +223,9 @@ signals:
     void historyReset();
 
 private:
+    // The teleop's motion and stops (DriveTarget): straight to the link,
+    // which refuses (and says so) what the profile does not allow.
+    bool sendMotion(const std::vector<oi::OiCommand> &commands) override;
     void onSnapshot(const oi::SensorSnapshot &snapshot, double readSeconds);
     void onStreamStarted(oi::ProfileId profile);
     void onSensorReply(const oi::SensorSnapshot &reply);

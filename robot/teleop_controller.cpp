@@ -3,26 +3,28 @@
 
 #include "command_encoder.h"
 #include "command_modes.h"
-
-namespace {
-QByteArray toBytes(const oi::Bytes &bytes)
-{
-    return QByteArray(reinterpret_cast<const char *>(bytes.data()), qsizetype(bytes.size()));
-}
-} // namespace
+#include "oi_command.h"
 
 TeleopController::TeleopController(DriveTarget &robot, oilink::Clock &clock, QObject *parent)
-    : QObject(parent), m_robot(robot), m_clock(clock), m_pending(clock, this)
+    : QObject(parent), m_robot(robot)
 {
-    m_pending.setSingleShot(true);
-    connect(&m_pending, &oilink::ClockTimer::timeout, this, &TeleopController::sendPending);
+    setClock(clock);
     m_state = m_robot.state();
     m_passive = robotIgnoresMotion();
 }
 
+void TeleopController::setClock(oilink::Clock &clock)
+{
+    m_clock = &clock;
+    m_pending = std::make_unique<oilink::ClockTimer>(clock, this);
+    m_lastSendMs = -1; // a time on the old clock means nothing on this one
+    m_pending->setSingleShot(true);
+    connect(m_pending.get(), &oilink::ClockTimer::timeout, this, &TeleopController::sendPending);
+}
+
 bool TeleopController::isMoving() const
 {
-    return !m_sent.isStop() || (m_pending.isActive() && !m_wanted.isStop());
+    return !m_sent.isStop() || (m_pending->isActive() && !m_wanted.isStop());
 }
 
 bool TeleopController::robotIgnoresMotion() const
@@ -37,13 +39,13 @@ void TeleopController::requestMotion(const MotionCommand &command)
     emit motionRequested(command);
     m_wanted = command;
     if (command.isStop()) {
-        m_pending.stop();
+        m_pending->stop();
         sendStop(false);
         return;
     }
     checkMode();
     if (m_passive) {
-        m_pending.stop();
+        m_pending->stop();
         emit motionRefused(whyNoMotion());
         return;
     }
@@ -52,13 +54,13 @@ void TeleopController::requestMotion(const MotionCommand &command)
         emit motionRefused(whyNoMotion());
         return;
     }
-    if (m_pending.isActive())
+    if (m_pending->isActive())
         return; // the latest request goes out when the timer fires
-    const qint64 since = m_lastSendMs >= 0 ? m_clock.nowMs() - m_lastSendMs : kMinIntervalMs;
+    const qint64 since = m_lastSendMs >= 0 ? m_clock->nowMs() - m_lastSendMs : kMinIntervalMs;
     if (since >= kMinIntervalMs)
         sendPending();
     else
-        m_pending.start(int(kMinIntervalMs - since));
+        m_pending->start(int(kMinIntervalMs - since));
 }
 
 void TeleopController::sendPending()
@@ -70,15 +72,17 @@ void TeleopController::sendPending()
 
 bool TeleopController::sendMotion(const MotionCommand &command)
 {
-    const oi::EncodeResult bytes = command.encode(oi::CommandEncoder(m_robot.robotProfile()));
-    if (!bytes) {
-        emit motionRefused(QString::fromStdString(bytes.error().describe()));
+    // Typed, and encoded once by the link; a command this robot lacks is
+    // refused here, where the input hears of it.
+    oi::OiCommand typed = command.toCommand();
+    if (const std::optional<oi::OiError> refused = oi::CommandEncoder(m_robot.robotProfile()).refuse(typed.command)) {
+        emit motionRefused(QString::fromStdString(refused->describe()));
         return false;
     }
-    if (!m_robot.send(toBytes(*bytes)))
+    if (!m_robot.sendMotion({std::move(typed)}))
         return false;
     m_sent = command;
-    m_lastSendMs = m_clock.nowMs();
+    m_lastSendMs = m_clock->nowMs();
     emit motionAsked(m_sent);
     return true;
 }
@@ -95,7 +99,7 @@ QString TeleopController::whyNoMotion() const
 
 void TeleopController::sendStop(bool always)
 {
-    m_pending.stop();
+    m_pending->stop();
     const bool moving = !m_sent.isStop();
     m_wanted = MotionCommand::stop(m_wanted.kind);
     m_sent = m_wanted;
@@ -103,8 +107,8 @@ void TeleopController::sendStop(bool always)
         emit motionAsked(m_sent);
     if (!moving && !always)
         return;
-    if (m_robot.send(toBytes(oi::CommandEncoder(m_robot.robotProfile()).stopMotion())))
-        m_lastSendMs = m_clock.nowMs();
+    if (m_robot.sendMotion(oi::stopMotionCommands(m_robot.robotProfile())))
+        m_lastSendMs = m_clock->nowMs();
 }
 
 void TeleopController::deadManReleased()
@@ -127,17 +131,15 @@ void TeleopController::stopAll()
 {
     // Stop all also ends a Create's script, which would otherwise drive on
     // after the stop (ERRATA 20).
-    const oi::CommandEncoder encoder(m_robot.robotProfile());
-    const oi::Bytes endScript = encoder.endScript();
-    if (!endScript.empty())
-        m_robot.send(toBytes(endScript));
+    if (std::vector<oi::OiCommand> endScript = oi::endScriptCommands(m_robot.robotProfile()); !endScript.empty())
+        m_robot.sendMotion(endScript);
     // A robot running its own program (Clean, Spot, Max, Seek Dock) ignores
     // Drive in Passive: Safe ends the program and lets the stop take effect,
     // as the bridge does.
     const RobotMode &mode = m_robot.mode();
     if (mode.lastAsked() && oi::startsCleaning(*mode.lastAsked()) && mode.reported() == oi::OiMode::Passive)
-        if (const oi::EncodeResult safe = encoder.safe())
-            m_robot.send(toBytes(*safe));
+        if (m_robot.robotProfile().has(oi::Command::Safe))
+            m_robot.sendMotion({oi::OiCommand{oi::Command::Safe, {}, {}}});
     sendStop(true);
     emit motionStopped();
 }

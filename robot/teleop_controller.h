@@ -8,6 +8,8 @@
 
 #include <QObject>
 
+#include <memory>
+
 // The sending rules for motion, in one place, for every input (drive pad,
 // keyboard, gamepad). Lives in the GUI thread next to the session.
 //  - At most one drive command every kMinIntervalMs: requests in between are
@@ -36,7 +38,10 @@ public:
     bool isMoving() const;
     MotionCommand lastSent() const { return m_sent; }
     // A command waits for the rate limit's timer.
-    bool hasPendingMotion() const { return m_pending.isActive(); }
+    bool hasPendingMotion() const { return m_pending->isActive(); }
+    // The clock the rate limit runs on, from now on (the session's, which
+    // tests advance); a command waiting for the old one is dropped.
+    void setClock(oilink::Clock &clock);
 
 public slots:
     void requestMotion(const MotionCommand &command);
@@ -79,8 +84,8 @@ private:
     QString whyNoMotion() const;
 
     DriveTarget &m_robot;
-    oilink::Clock &m_clock;
-    oilink::ClockTimer m_pending;
+    oilink::Clock *m_clock;
+    std::unique_ptr<oilink::ClockTimer> m_pending;
     qint64 m_lastSendMs = -1; // on m_clock; -1 before the first
     MotionCommand m_wanted;
     MotionCommand m_sent;

@@ -3271,8 +3271,8 @@ GPL-3.0-or-later.</translation>
         <translation>%1: mit keinem Broker verbunden</translation>
     </message>
     <message>
-        <source>%1: these bytes are no command the bridge takes: %2</source>
-        <translation>%1: diese Bytes sind kein Befehl, den die Bridge annimmt: %2</translation>
+        <source>%1: the bridge takes commands, not bytes: check the connection where the bridge runs</source>
+        <translation>%1: die Bridge nimmt Befehle an, keine Bytes: prüfen Sie die Verbindung dort, wo die Bridge läuft</translation>
     </message>
     <message>
         <source>%1: control was not given</source>
@@ -6382,6 +6382,10 @@ Umschalt+Esc tut dasselbe aus jedem Fenster; Leertaste oder Esc hält den ausgew
 </context>
 <context>
     <name>oilink::RobotLink</name>
+    <message>
+        <source>Not sent: %1</source>
+        <translation>Nicht gesendet: %1</translation>
+    </message>
     <message>
         <source>%1: no data: is the robot on, and is the baud right?</source>
         <translation>%1: keine Daten: Ist der Roboter eingeschaltet und stimmt die Baudrate?</translation>

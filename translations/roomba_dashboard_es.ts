@@ -3270,8 +3270,8 @@ GPL-3.0-or-later.</translation>
         <translation>%1: sin conexión con un bróker</translation>
     </message>
     <message>
-        <source>%1: these bytes are no command the bridge takes: %2</source>
-        <translation>%1: estos bytes no son una orden que el puente acepte: %2</translation>
+        <source>%1: the bridge takes commands, not bytes: check the connection where the bridge runs</source>
+        <translation>%1: el puente acepta órdenes, no bytes: compruebe la conexión donde se ejecuta el puente</translation>
     </message>
     <message>
         <source>%1: control was not given</source>
@@ -6381,6 +6381,10 @@ Mayús+Esc hace lo mismo desde cualquier ventana; Espacio o Esc detiene el robot
 </context>
 <context>
     <name>oilink::RobotLink</name>
+    <message>
+        <source>Not sent: %1</source>
+        <translation>No enviado: %1</translation>
+    </message>
     <message>
         <source>%1: no data: is the robot on, and is the baud right?</source>
         <translation>%1: sin datos: ¿está encendido el robot y es correcta la velocidad en baudios?</translation>

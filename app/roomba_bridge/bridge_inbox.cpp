@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "bridge_inbox.h"
 
-#include "command_message.h"
 #include "queued_call.h"
 #include "robot_bridge.h"
 
@@ -11,16 +10,6 @@ namespace {
 
 // Topics can be up to 64 KiB long: a log line shows the start of one.
 QString cut(const QString &text) { return text.size() > 80 ? text.left(80) + QStringLiteral("...") : text; }
-
-bool isStopCommand(const QByteArray &payload)
-{
-    // Most commands are not stops: only those naming one are parsed here.
-    if (!payload.contains("stop"))
-        return false;
-    QString id, error;
-    const std::optional<mqtt::CommandMessage> m = mqtt::CommandMessage::fromJson(payload, &id, &error);
-    return m && m->isStop();
-}
 
 } // namespace
 
@@ -47,15 +36,20 @@ void BridgeInbox::receive(const QString &topicText, const QByteArray &payload, b
                qPrintable(cut(topicText)));
         return;
     }
-    Message m{*topic, payload, now};
+    Message m;
+    m.topic = *topic;
+    m.payload = payload;
+    m.arrivedMs = now;
     int lane = Commands;
     if (topic->kind == K::StopAll)
         lane = Stops;
     else if (topic->kind == K::Control || topic->kind == K::Takeover)
         lane = Control;
 
+    if (topic->kind == K::Command)
+        m.command = mqtt::CommandMessage::fromJson(payload, &m.id, &m.error);
     QMutexLocker lock(&m_mutex);
-    if (topic->kind == K::Command && isStopCommand(payload)) {
+    if (m.command && m.command->isStop()) {
         // One stop per client per interval goes first; more from a client
         // that does not drive wait with the commands, to be refused.
         const qint64 last = m_lastStopMs.value(topic->client, now - kStopIntervalMs);

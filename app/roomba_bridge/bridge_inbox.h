@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "command_message.h"
 #include "control_lease.h"
 #include "fleet_topics.h"
 
@@ -32,6 +33,11 @@ public:
         qint64 arrivedMs = 0;
         // A stop from a client that sent one less than kStopIntervalMs ago.
         bool tooSoon = false;
+        // A command message, read once as it arrives: the request, or its
+        // id (as far as it could be read) and why it is no request.
+        std::optional<mqtt::CommandMessage> command;
+        QString id;
+        QString error;
     };
     using Handler = std::function<void(const Message &)>;
 

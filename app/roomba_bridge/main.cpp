@@ -193,6 +193,9 @@ int main(int argc, char *argv[])
                             "connections: another bridge with this name, or a restarted broker; reconnecting to tell",
                   NameClaim::kClaimMs / 1000);
     });
+    QObject::connect(&claim, &NameClaim::claimed, &app, [] {
+        qCInfo(lcBridge, "broker: connected for %d s: the name is this bridge's", NameClaim::kClaimMs / 1000);
+    });
     QObject::connect(&claim, &NameClaim::kept, &app, [] {
         qCInfo(lcBridge, "broker: the connection was not taken again (the broker had restarted); the name is this "
                          "bridge's");

@@ -4,16 +4,19 @@
 #include <sys/socket.h>
 
 #include <cerrno>
+#include <utility>
 
 NameClaim::NameClaim(mqtt::MqttClient &broker, QObject *parent) : QObject(parent), m_broker(broker)
 {
     m_claimTimer.setSingleShot(true);
     m_claimTimer.setInterval(kClaimMs);
     connect(&m_claimTimer, &QTimer::timeout, this, [this] {
-        m_claimed = true;
+        const bool first = !std::exchange(m_claimed, true);
         if (m_witness) {
             dropWitness();
             emit kept();
+        } else if (first) {
+            emit claimed();
         }
     });
     connect(&m_broker, &mqtt::MqttClient::connected, this, &NameClaim::onConnected);

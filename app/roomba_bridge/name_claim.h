@@ -43,6 +43,9 @@ signals:
     // The connection after a suspected loss lasted kClaimMs: the broker had
     // restarted; the name is this bridge's.
     void kept();
+    // The first connection lasted kClaimMs: the name is this bridge's, and a
+    // second bridge with it will give way.
+    void claimed();
 
 private:
     void onConnected();

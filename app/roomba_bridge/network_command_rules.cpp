@@ -38,7 +38,7 @@ QString NetworkCommandRules::refusal(const oi::RobotProfile &profile, const oi::
     // every rule here: each command in them is judged now. The link empties
     // the stored script whenever it starts its stream, so Play Script can
     // only play a script judged here.
-    const auto inside = oi::decodeCommands(profile, command.data);
+    const auto inside = oi::scriptCommands(profile, command);
     if (!inside)
         return QStringLiteral("script: %1").arg(QString::fromStdString(inside.error().describe()));
     for (const oi::OiCommand &c : *inside) {

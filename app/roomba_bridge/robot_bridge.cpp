@@ -367,8 +367,9 @@ void RobotBridge::stopAtEdges(const oi::SensorSnapshot &frame)
 void RobotBridge::handleCommand(const BridgeInbox::Message &message)
 {
     const QString &client = message.topic.client;
-    QString id, error;
-    const std::optional<mqtt::CommandMessage> request = mqtt::CommandMessage::fromJson(message.payload, &id, &error);
+    const QString &id = message.id;
+    QString error = message.error;
+    const std::optional<mqtt::CommandMessage> &request = message.command;
     auto refuse = [&](const QString &why, QJsonObject extra = {}) {
         logRefusal(client, message.payload.size(), why);
         extra.insert(QLatin1String("id"), id);
@@ -399,19 +400,19 @@ void RobotBridge::handleCommand(const BridgeInbox::Message &message)
         return refuse(error);
     if (const QString why = m_rules.refusal(m_robot.robotProfile(), *command); !why.isEmpty())
         return refuse(why);
-    // Judged whole (ranges, the profile) before control, in either version.
-    const oi::EncodeResult bytes = oi::encodeCommand(oi::CommandEncoder(m_robot.robotProfile()), *command);
-    if (!bytes)
-        return refuse(QString::fromStdString(bytes.error().describe()));
+    // Judged whole (ranges, the profile) before control, in either version;
+    // the robot's link encodes what is sent.
+    if (const std::optional<oi::OiError> why = oi::checkCommand(oi::CommandEncoder(m_robot.robotProfile()), *command))
+        return refuse(QString::fromStdString(why->describe()));
     if (const QString why = controlRefusal(client); !why.isEmpty())
         return refuse(why, {{"controller", m_lease.holder().isEmpty() ? QJsonValue() : m_lease.holder()}});
-    error = sendValidated(*command, QByteArray(reinterpret_cast<const char *>(bytes->data()), qsizetype(bytes->size())));
+    error = sendValidated(*command);
     if (!error.isEmpty())
         return refuse(error);
     reply(client, {{"id", id}, {"ok", true}});
 }
 
-QString RobotBridge::sendValidated(const oi::OiCommand &command, const QByteArray &bytes)
+QString RobotBridge::sendValidated(const oi::OiCommand &command)
 {
     const oi::Command c = command.command;
     const std::optional<MotionCommand> motion = MotionCommand::fromCommand(command);
@@ -437,14 +438,14 @@ QString RobotBridge::sendValidated(const oi::OiCommand &command, const QByteArra
         m_robot.teleop().requestMotion(*motion);
         return {};
     }
-    if (!m_robot.send(bytes))
+    if (!m_robot.send(command))
         return QStringLiteral("the robot is not connected");
     if (oi::startsCleaning(c) || c == oi::Command::Buttons || (c == oi::Command::PlayScript && m_scriptStartsCleaning))
         m_autonomous = true;
     else if (c == oi::Command::Safe || c == oi::Command::Full)
         m_autonomous = false;
     if (c == oi::Command::Script) {
-        const auto inside = oi::decodeCommands(m_robot.robotProfile(), command.data);
+        const auto inside = oi::scriptCommands(m_robot.robotProfile(), command);
         m_scriptStartsCleaning = inside && std::any_of(inside->begin(), inside->end(), [](const oi::OiCommand &i) {
             return oi::startsCleaning(i.command) || i.command == oi::Command::Buttons;
         });

@@ -105,7 +105,7 @@ private:
     void stopAll();
     // The command's bytes are validated; motion goes through the teleop
     // rules, the rest straight to the robot. Returns the error, or empty.
-    QString sendValidated(const oi::OiCommand &command, const QByteArray &bytes);
+    QString sendValidated(const oi::OiCommand &command);
     // Drive 0,0 and motors off, sent whatever the bridge believes the robot
     // is doing; Safe first if the robot may be carrying out a command of its
     // own in Passive.

@@ -245,8 +245,7 @@ void CommandSender::sendCommand()
 
 void CommandSender::send(const oi::OiCommand &command)
 {
-    const oi::Bytes bytes = *oi::encodeCommand(oi::CommandEncoder(*m_profile), command);
-    m_link.send(QByteArray(reinterpret_cast<const char *>(bytes.data()), qsizetype(bytes.size())));
+    m_link.send({command});
 }
 
 void CommandSender::finish(int status, const QString &error)

@@ -803,12 +803,9 @@ int driveCalibrationRun(int argc, char **argv, std::vector<std::string> args)
     int frames = 0, status = 0;
     bool finished = false;
     std::optional<oi::WheelSpeeds> sent;
-    const auto sendBytes = [&](const oi::Bytes &bytes) {
-        link.send(QByteArray(reinterpret_cast<const char *>(bytes.data()), qsizetype(bytes.size())));
-    };
     const auto stopRobot = [&] {
         if (profile)
-            sendBytes(oi::CommandEncoder(*profile).stopMotion());
+            link.send(oi::stopMotionCommands(*profile));
     };
     const auto finish = [&](int code, const std::string &message) {
         if (finished)
@@ -831,7 +828,7 @@ int driveCalibrationRun(int argc, char **argv, std::vector<std::string> args)
                      [&](const QString &message) { finish(1, toStd(message)); });
     QObject::connect(&link, &oilink::RobotLinkThread::streamStarted, &app, [&](oi::ProfileId id, int, const QList<int> &) {
         profile = &oi::profile(id);
-        sendBytes(*oi::CommandEncoder(*profile).safe());
+        link.send({oi::OiCommand{oi::Command::Safe, {}, {}}});
     });
     QObject::connect(&link, &oilink::RobotLinkThread::snapshot, &app, [&](const oi::SensorSnapshot &frame) {
         if (finished || !profile)
@@ -847,8 +844,8 @@ int driveCalibrationRun(int argc, char **argv, std::vector<std::string> args)
         const oi::WheelSpeeds speeds = run.update(frame);
         if (!run.reached()) {
             if (!sent || sent->left != speeds.left || sent->right != speeds.right)
-                sendBytes(*oi::CommandEncoder(*profile).driveDirect(int(std::lround(speeds.right)),
-                                                                     int(std::lround(speeds.left))));
+                link.send({oi::OiCommand{oi::Command::DriveDirect,
+                                         {int(std::lround(speeds.right)), int(std::lround(speeds.left))}, {}}});
             sent = speeds;
             return;
         }

@@ -147,6 +147,8 @@ QString ConnectionDoctor::baudName(int baud) const
 void ConnectionDoctor::askMode(bool withStart, std::function<void(bool)> then)
 {
     write(withStart ? bytes({128, 150, 0}) : bytes({150, 0}));
+    if (withStart)
+        emit startSent();
     m_listening = true;
     m_expected = 0;
     after(kDrainMs, [this, then = std::move(then)] {

@@ -58,6 +58,7 @@ public:
 signals:
     void stepDone(const QString &step);
     void bytesSent(const QByteArray &bytes); // what the doctor wrote to the robot
+    void startSent(); // among those bytes, Start (128): the robot goes to Passive
     void finished(const oilink::ConnectionDoctor::Report &report);
 
 private:

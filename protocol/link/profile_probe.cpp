@@ -83,6 +83,8 @@ void ProfileProbe::tryBaud()
     m_step = Step::Draining;
     m_startSent = m_startPolicy == StartPolicy::Always;
     send(m_startSent ? bytes({128, 150, 0}) : bytes({150, 0}));
+    if (m_startSent)
+        emit startSent();
     m_timer.start(kDrainMs);
 }
 
@@ -136,6 +138,7 @@ void ProfileProbe::onTimeout()
             // Silent: Off mode, or the wrong baud. Start opens the interface.
             m_startSent = true;
             send(bytes({128}));
+            emit startSent();
             ask(modeQuestion(), 2, Step::AskMode);
         } else if (++m_modeAttempts < kModeAttempts) {
             ask(modeQuestion(), 2, Step::AskMode);

@@ -88,6 +88,7 @@ public:
 
 signals:
     void bytesSent(const QByteArray &bytes);
+    void startSent(); // among those bytes, Start (128): the robot goes to Passive
     // `baud` is 0 where the transport has no baud of its own.
     void detected(oi::ProfileId profile, int baud);
     void failed();

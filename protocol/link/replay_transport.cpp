@@ -50,7 +50,7 @@ bool ReplayTransport::write(const QByteArray &)
     return m_open;
 }
 
-void ReplayTransport::control(const ReplayCommand &command)
+void ReplayTransport::controlReplay(const ReplayCommand &command)
 {
     if (!m_open)
         return;

@@ -35,11 +35,8 @@ public:
     // The recorded time of the frame being delivered.
     qint64 readTimeUs() const override { return m_readTimeUs; }
 
-    void control(const ReplayCommand &command);
+    void controlReplay(const ReplayCommand &command) override;
     ReplayStatus status() const;
-
-signals:
-    void replayStatus(const oilink::ReplayStatus &status);
 
 private:
     void tick();

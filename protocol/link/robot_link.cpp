@@ -3,11 +3,11 @@
 
 #include "brc_pulser.h"
 #include "connection_doctor.h"
+#include "link_transports.h"
 
 #include "profile_probe.h"
 #include "queued_call.h"
 #include "recording_file.h"
-#include "replay_transport.h"
 #include "stream_packets.h"
 #include "transport.h"
 
@@ -35,31 +35,24 @@ constexpr int kFlushMs = 500;
 constexpr int kQueryQuietMs = 50;
 constexpr int kQueryTimeoutMs = 500;
 
-QByteArray toBytes(const oi::Bytes &bytes)
-{
-    return QByteArray(reinterpret_cast<const char *>(bytes.data()), static_cast<qsizetype>(bytes.size()));
-}
-
 // Start, which leaves Safe or Full: on a Create after ending a script that
 // may be running, which would otherwise play on in Passive, where its Drive
 // is ignored and its waits never end (ERRATA 20). A stop comes first: a robot
 // that a program which died left driving in Safe or Full stops at the first
 // bytes it hears, whatever Start does to its wheels. (In Off or Passive the
 // robot ignores it.)
-QByteArray startBytes(const oi::RobotProfile &profile)
+std::vector<oi::OiCommand> startCommands(const oi::RobotProfile &profile)
 {
-    const oi::CommandEncoder encoder(profile);
-    oi::Bytes out = encoder.endScript();
-    const oi::Bytes stop = encoder.stopMotion();
-    out.insert(out.end(), stop.begin(), stop.end());
-    out.push_back(*encoder.start()->begin());
-    return toBytes(out);
+    std::vector<oi::OiCommand> out = oi::endScriptCommands(profile);
+    for (oi::OiCommand &stop : oi::stopMotionCommands(profile))
+        out.push_back(std::move(stop));
+    out.push_back(oi::OiCommand{oi::Command::Start, {}, {}});
+    return out;
 }
 
-// Pause/Resume Stream exists on every profile, so any encoder makes it.
-QByteArray streamStateBytes(bool running)
+std::vector<oi::OiCommand> streamState(bool running)
 {
-    return toBytes(*oi::CommandEncoder(oi::profile(oi::ProfileId::Create2)).pauseResumeStream(running ? 1 : 0));
+    return {oi::OiCommand{oi::Command::PauseResumeStream, {running ? 1 : 0}, {}}};
 }
 
 QString fromStd(std::string_view text)
@@ -90,23 +83,7 @@ RobotLink::RobotLink(Clock &clock, QObject *parent)
     m_brc = new BrcPulser(clock, this);
     connect(m_brc, &BrcPulser::awake, this, &RobotLink::onRobotAwake);
     connect(m_brc, &BrcPulser::wakeTimeOver, this, &RobotLink::onWakeTimeOver);
-    m_parser.setSnapshotHandler([this](const oi::SensorSnapshot &s, oi::FrameKind kind) {
-        const auto dispatch = [this, kind](const oi::SensorSnapshot &frame) {
-            if (kind == oi::FrameKind::Stream)
-                onFrame(frame);
-            else
-                onReply(frame);
-        };
-        if (!s.has(35)) {
-            dispatch(s);
-            return;
-        }
-        // The mode as it is, whatever this robot reports (ModeReading).
-        oi::SensorSnapshot corrected = s;
-        if (m_modeReading.read(corrected, m_clock.nowNs() / 1'000'000))
-            emit modeReportedOneHigh();
-        dispatch(corrected);
-    });
+    m_parser.setSnapshotHandler([this](const oi::SensorSnapshot &s, oi::FrameKind kind) { onParsed(s, kind); });
     m_parser.setTextHandler([this](std::string_view line) {
         emit robotText(QString::fromLatin1(line.data(), qsizetype(line.size())));
     });
@@ -211,8 +188,7 @@ void RobotLink::close()
         // ERRATA 17: leave it stopped and in Passive, where it saves its battery.
         // Until the probe has found the profile, the Roomba's bytes, which
         // every robot takes; a Create's script is ended once it is known.
-        const oi::RobotProfile &profile = m_profile ? *m_profile : oi::profile(oi::ProfileId::Create2);
-        writeBytes(toBytes(oi::CommandEncoder(profile).shutdownSequence()));
+        writeCommands(oi::shutdownCommands(writingProfile()));
         m_transport->flush(kFlushMs);
     }
     dropTransport();
@@ -229,7 +205,7 @@ Transport *RobotLink::makeTransport()
 {
     LinkSettings settings = m_settings;
     settings.baud = baud() > 0 ? baud() : ProfileProbe::defaultBauds().front();
-    return m_factory ? m_factory(settings) : createTransport(settings, settings.baud);
+    return m_factory ? m_factory(settings) : createLinkTransport(settings, settings.baud);
 }
 
 void RobotLink::openTransport()
@@ -250,10 +226,10 @@ void RobotLink::openTransport()
     m_brc->setTransport(transport);
     connect(transport, &Transport::opened, this, &RobotLink::onTransportOpened);
     connect(transport, &Transport::bytesReceived, this, &RobotLink::onBytes);
+    connect(transport, &Transport::snapshotReceived, this, &RobotLink::onSnapshotReceived);
     connect(transport, &Transport::errorOccurred, this, &RobotLink::onTransportError);
     connect(transport, &Transport::closed, this, &RobotLink::onTransportClosed);
-    if (auto *replay = qobject_cast<ReplayTransport *>(transport))
-        connect(replay, &ReplayTransport::replayStatus, this, &RobotLink::replayStatus);
+    connect(transport, &Transport::replayStatus, this, &RobotLink::replayStatus);
     // Last: a transport may answer from inside open().
     transport->open();
 }
@@ -313,10 +289,10 @@ void RobotLink::greetRobot()
         m_transport->setBaud(baud());
         useProfile();
     } else {
-        // Before the questions, the stop that starts a stream (startBytes):
+        // Before the questions, the stop that starts a stream (startCommands):
         // Drive 0,0 and motors off read alike on every profile.
         if (m_settings.streaming)
-            writeBytes(toBytes(oi::CommandEncoder(oi::profile(oi::ProfileId::Create2)).stopMotion()));
+            writeCommands(oi::stopMotionCommands(oi::profile(oi::ProfileId::Create2)));
         startProbe();
     }
 }
@@ -368,6 +344,7 @@ void RobotLink::startProbe()
         else if (!m_settings.streaming)
             m_probe->setStartPolicy(ProfileProbe::StartPolicy::IfSilent);
         connect(m_probe, &ProfileProbe::bytesSent, this, &RobotLink::noteSent);
+        connect(m_probe, &ProfileProbe::startSent, this, &RobotLink::noteStartSent);
         connect(m_probe, &ProfileProbe::detected, this, [this](oi::ProfileId id, int baud) {
             m_profile = &oi::profile(id);
             if (baud > 0)
@@ -471,11 +448,11 @@ void RobotLink::startStream()
     m_parser.setProfile(*m_profile);
     const std::vector<std::uint8_t> ids(m_streamIds.begin(), m_streamIds.end());
     m_parser.setExpectedStream(ids);
-    m_streamCommand = toBytes(*command);
+    m_streamCommand = oi::OiCommand{oi::Command::Stream, {}, oi::Bytes(ids.begin(), ids.end())};
     m_frameSinceStreamStart = false;
     m_wakingStream = m_wokeStream = m_rearmedSinceStop = false;
     m_rearmMs = kNoDataAfterMs;
-    if (!writeBytes(startBytes(*m_profile)) || !writeBytes(m_streamCommand))
+    if (!writeCommands(startCommands(*m_profile)) || !writeCommands({m_streamCommand}))
         return;
     m_streamRequested = true;
     m_noData.start(m_rearmMs);
@@ -491,8 +468,8 @@ void RobotLink::startStream()
 void RobotLink::rearmStream()
 {
     m_rearmedSinceStop = true;
-    writeBytes(startBytes(*m_profile));
-    writeBytes(m_streamCommand);
+    writeCommands(startCommands(*m_profile));
+    writeCommands({m_streamCommand});
 }
 
 // A Roomba 500 or Create 2 that falls asleep (5 minutes in Passive, or
@@ -573,6 +550,41 @@ void RobotLink::onBytes(const QByteArray &bytes)
         scheduleStats();
 }
 
+void RobotLink::onParsed(const oi::SensorSnapshot &s, oi::FrameKind kind)
+{
+    const auto dispatch = [this, kind](const oi::SensorSnapshot &frame) {
+        if (kind == oi::FrameKind::Stream)
+            onFrame(frame);
+        else
+            onReply(frame);
+    };
+    if (!s.has(35)) {
+        dispatch(s);
+        return;
+    }
+    // The mode as it is, whatever this robot reports (ModeReading).
+    oi::SensorSnapshot corrected = s;
+    if (m_modeReading.read(corrected, m_clock.nowNs() / 1'000'000))
+        emit modeReportedOneHigh();
+    dispatch(corrected);
+}
+
+// Values from a transport that hears no bytes: read as the parser's are,
+// and counted with them.
+void RobotLink::onSnapshotReceived(const oi::SensorSnapshot &snapshot, oi::FrameKind kind)
+{
+    if (m_probe && m_probe->isRunning())
+        return;
+    if (kind == oi::FrameKind::Stream) {
+        ++m_counterBase.framesGood;
+    } else {
+        ++m_counterBase.repliesGood;
+        m_parser.cancelReplies(); // answered without bytes
+    }
+    m_readSeconds = static_cast<double>(m_clock.nowNs() - m_openedNs) / 1e9;
+    onParsed(snapshot, kind);
+}
+
 void RobotLink::onFrame(const oi::SensorSnapshot &frame)
 {
     if (!m_streamRequested)
@@ -641,8 +653,10 @@ void RobotLink::onNoData()
 
 // --- Commands and queries ---
 
-void RobotLink::send(const QByteArray &bytes)
+void RobotLink::send(const std::vector<oi::OiCommand> &commands)
 {
+    if (commands.empty())
+        return;
     if (!m_transport || !m_transportOpen) {
         reportError(tr("not connected: the command was not sent"), false);
         return;
@@ -651,11 +665,6 @@ void RobotLink::send(const QByteArray &bytes)
         reportError(tr("the connection check is running: the command was not sent"), false);
         return;
     }
-    // The commands as the robot will read them. Baud and Start read alike on
-    // every profile, so they are found before the profile is known.
-    const oi::RobotProfile &reader = m_profile ? *m_profile : oi::profile(oi::ProfileId::Create2);
-    const std::vector<oi::OiCommand> commands = oi::readCommands(
-        reader, {reinterpret_cast<const std::uint8_t *>(bytes.constData()), static_cast<std::size_t>(bytes.size())});
     const auto isBaud = [](const oi::OiCommand &c) { return c.command == oi::Command::Baud; };
     if (const QString why = m_settings.whyNoBaudChange();
         !why.isEmpty() && std::any_of(commands.begin(), commands.end(), isBaud)) {
@@ -664,39 +673,50 @@ void RobotLink::send(const QByteArray &bytes)
     }
     // Start or cleaning, from any command path: a Create ends its script
     // first, or the script would go on in Passive, deaf (ERRATA 20).
-    if (m_profile && !commands.empty() && oi::entersPassive(commands.front().command)) {
-        const oi::Bytes endScript = oi::CommandEncoder(*m_profile).endScript();
-        if (!endScript.empty() && !writeBytes(toBytes(endScript)))
+    if (m_profile && oi::entersPassive(commands.front().command)) {
+        const std::vector<oi::OiCommand> endScript = oi::endScriptCommands(*m_profile);
+        if (!endScript.empty() && !writeCommands(endScript))
             return;
     }
-    writeBytes(bytes, true);
+    writeCommands(commands, true);
 }
 
-bool RobotLink::writeBytes(const QByteArray &bytes, bool asked)
+const oi::RobotProfile &RobotLink::writingProfile() const
 {
-    if (!m_transport || !(asked ? m_transport->writeCommand(bytes) : m_transport->write(bytes))) {
+    return m_profile ? *m_profile : oi::profile(oi::ProfileId::Create2);
+}
+
+bool RobotLink::writeCommands(const std::vector<oi::OiCommand> &commands, bool asked)
+{
+    // The one encode on the way to the robot.
+    const oi::EncodeResult encoded = oi::encodeCommands(oi::CommandEncoder(writingProfile()), commands);
+    if (!encoded) {
+        reportError(tr("Not sent: %1").arg(fromStd(encoded.error().describe())), false);
+        return false;
+    }
+    const QByteArray bytes(reinterpret_cast<const char *>(encoded->data()), qsizetype(encoded->size()));
+    const Transport::Origin origin = asked ? Transport::Origin::User : Transport::Origin::Link;
+    if (!m_transport || !m_transport->writeCommands(commands, bytes, origin)) {
         reportError(tr("%1: write failed").arg(m_settings.describe()));
         return false;
     }
     noteSent(bytes);
+    const qint64 nowMs = m_clock.nowNs() / 1'000'000;
+    for (const oi::OiCommand &command : commands)
+        m_modeReading.sent(command.command, nowMs);
     return true;
+}
+
+void RobotLink::noteStartSent()
+{
+    m_modeReading.sent(oi::Command::Start, m_clock.nowNs() / 1'000'000);
 }
 
 void RobotLink::noteSent(const QByteArray &bytes)
 {
-    noteModeCommands(bytes);
     m_totals.bytesSent += static_cast<quint64>(bytes.size());
     record(recording::RecordKind::Sent, bytes);
     emit rawBytesSent(bytes);
-}
-
-void RobotLink::noteModeCommands(const QByteArray &bytes)
-{
-    const oi::RobotProfile &reader = m_profile ? *m_profile : oi::profile(oi::ProfileId::Create2);
-    const qint64 nowMs = m_clock.nowNs() / 1'000'000;
-    for (const oi::OiCommand &command : oi::readCommands(
-             reader, {reinterpret_cast<const std::uint8_t *>(bytes.constData()), static_cast<std::size_t>(bytes.size())}))
-        m_modeReading.sent(command.command, nowMs);
 }
 
 void RobotLink::querySensors(const QList<int> &packetIds)
@@ -758,7 +778,7 @@ void RobotLink::startNextQuery()
     if (m_streamRequested || !m_settings.streaming) {
         m_queryPhase = QueryPhase::Pausing;
         m_watchdog.stop();
-        writeBytes(streamStateBytes(false));
+        writeCommands(streamState(false));
         m_queryQuiet.start();
     } else {
         sendQuery();
@@ -771,19 +791,18 @@ void RobotLink::sendQuery()
         return;
     dropPartialInput();
     const Request &request = m_queries.front();
-    const oi::CommandEncoder encoder(*m_profile);
-    const std::vector<int> asInts(request.packetIds.begin(), request.packetIds.end());
     const bool script = request.kind == Request::Kind::Script;
-    const oi::EncodeResult command = script              ? encoder.showScript()
-                                     : asInts.size() == 1 ? encoder.sensors(asInts.front())
-                                                          : encoder.queryList(asInts);
+    const oi::OiCommand command = script ? oi::OiCommand{oi::Command::ShowScript, {}, {}}
+                                  : request.packetIds.size() == 1
+                                      ? oi::OiCommand{oi::Command::Sensors, {request.packetIds.front()}, {}}
+                                      : oi::OiCommand{oi::Command::QueryList, {}, request.packetIds};
     if (script)
         m_scriptReply.clear();
     else
         m_parser.expectReply(request.packetIds);
     m_queryPhase = QueryPhase::Waiting;
     m_queryTimeout.start();
-    writeBytes(toBytes(*command));
+    writeCommands({command});
 }
 
 void RobotLink::onReply(const oi::SensorSnapshot &reply)
@@ -838,7 +857,7 @@ void RobotLink::finishQuery()
     m_queryQuiet.stop();
     m_queryTimeout.stop();
     if (m_streamRequested) {
-        writeBytes(streamStateBytes(true));
+        writeCommands(streamState(true));
         m_watchdog.start();
     }
     // Not at once: this may run inside the parser, which the next query resets.
@@ -872,7 +891,7 @@ void RobotLink::startDoctor()
 {
     m_queryPhase = QueryPhase::Checking;
     if (m_streamRequested)
-        writeBytes(toBytes(oi::CommandEncoder(*m_profile).stopMotion()));
+        writeCommands(oi::stopMotionCommands(*m_profile));
     m_streamRequested = false;
     m_parser.setTextHandler([this](std::string_view line) {
         emit robotText(QString::fromLatin1(line.data(), qsizetype(line.size())));
@@ -890,6 +909,7 @@ void RobotLink::startDoctor()
     setState(LinkState::Connecting);
     m_doctor = new ConnectionDoctor(*m_transport, m_settings.profile, m_settings.baud, m_clock, this);
     connect(m_doctor, &ConnectionDoctor::bytesSent, this, &RobotLink::noteSent);
+    connect(m_doctor, &ConnectionDoctor::startSent, this, &RobotLink::noteStartSent);
     connect(m_doctor, &ConnectionDoctor::stepDone, this, &RobotLink::connectionCheckStep);
     connect(m_doctor, &ConnectionDoctor::finished, this, &RobotLink::onDoctorFinished);
     m_doctor->start();
@@ -1074,8 +1094,8 @@ void RobotLink::markRecording(const MarkerEdit &edit)
 
 void RobotLink::controlReplay(const ReplayCommand &command)
 {
-    if (auto *replay = qobject_cast<ReplayTransport *>(m_transport))
-        replay->control(command);
+    if (m_transport)
+        m_transport->controlReplay(command);
 }
 
 } // namespace oilink

@@ -9,6 +9,7 @@
 #include "replay_control.h"
 
 #include "mode_reading.h"
+#include "oi_command.h"
 #include "stream_parser.h"
 
 #include <QByteArray>
@@ -90,10 +91,12 @@ public slots:
     // Pauses the stream, stops motion, leaves the robot in Passive mode
     // (CommandEncoder::shutdownSequence), flushes, then closes the port.
     void close();
-    // Already-encoded commands, as CommandEncoder makes them. Queries whose
-    // replies matter go through querySensors() instead, so that the parser
-    // knows what is coming.
-    void send(const QByteArray &bytes);
+    // Typed commands, checked here (Baud where the link cannot follow it;
+    // a Create's script ended before Start) and encoded once with the
+    // robot's profile; a command the profile refuses is not sent, and
+    // errorOccurred() says why. Queries whose replies matter go through
+    // querySensors() instead, so that the parser knows what is coming.
+    void send(const std::vector<oi::OiCommand> &commands);
     // Sensors (142) for one id, Query List (149) for several. While the
     // stream runs it is paused around the query. The answer comes as
     // sensorReply(), or an error after 500 ms.
@@ -184,6 +187,8 @@ private:
     void useProfile();
     void startStream();
     void rearmStream();
+    void onParsed(const oi::SensorSnapshot &snapshot, oi::FrameKind kind);
+    void onSnapshotReceived(const oi::SensorSnapshot &snapshot, oi::FrameKind kind);
     void onFrame(const oi::SensorSnapshot &frame);
     void onReply(const oi::SensorSnapshot &reply);
     void enqueue(Request request);
@@ -197,12 +202,17 @@ private:
     // and Start and Stream once it has had time to wake. False where no
     // pulse can go (the Create, or the pin out of reach).
     bool wakeStoppedStream();
-    // Bytes that went to the robot: the mode commands among them.
-    void noteModeCommands(const QByteArray &bytes);
-    // `asked`: a command from send(), not one of the link's own exchanges.
-    bool writeBytes(const QByteArray &bytes, bool asked = false);
+    // Encodes the commands with the robot's profile (Create 2's before it
+    // is known: what the link says first reads alike on every profile) and
+    // writes them, with their bytes, to the transport.
+    // `asked`: the user's commands (send()), not the link's own exchanges.
+    bool writeCommands(const std::vector<oi::OiCommand> &commands, bool asked = false);
+    // The profile commands are encoded with.
+    const oi::RobotProfile &writingProfile() const;
     // Counts, records and shows bytes that went to the robot.
     void noteSent(const QByteArray &bytes);
+    // The probe or the connection doctor sent Start among its questions.
+    void noteStartSent();
     void dropPartialInput();
     void startNextQuery();
     void sendQuery();
@@ -235,7 +245,7 @@ private:
     bool m_profileAssumed = false;
     int m_baud = 0; // as found by the probe or asked for; 0 = the profile's default
     std::vector<int> m_streamIds;
-    QByteArray m_streamCommand;
+    oi::OiCommand m_streamCommand;
     bool m_streamRequested = false;
     bool m_frameSinceStreamStart = false;
     bool m_wakingStream = false; // a wake pulse for a stream that stopped; Start and Stream follow

@@ -233,10 +233,10 @@ void RobotLinkThread::closeAndWait()
     deliverPending();
 }
 
-void RobotLinkThread::send(const QByteArray &bytes)
+void RobotLinkThread::send(const std::vector<oi::OiCommand> &commands)
 {
     if (m_link && isRunning())
-        threads::queueCall(m_link, [link = m_link.data(), bytes] { link->send(bytes); });
+        threads::queueCall(m_link, [link = m_link.data(), commands] { link->send(commands); });
     else
         emit errorOccurred(tr("not connected: the command was not sent"));
 }

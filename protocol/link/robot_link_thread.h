@@ -69,7 +69,7 @@ public slots:
     // Like close(), but waits until the robot has been sent the stop bytes
     // and the port is closed, and delivers the last state and statistics.
     void closeAndWait();
-    void send(const QByteArray &bytes);
+    void send(const std::vector<oi::OiCommand> &commands); // see RobotLink::send
     void querySensors(const QList<int> &packetIds);
     void showScript();
     void checkConnection(); // see RobotLink::checkConnection

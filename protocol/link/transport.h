@@ -3,6 +3,9 @@
 
 #include "link_settings.h"
 #include "odometry.h"
+#include "replay_control.h"
+#include "stream_parser.h"
+#include "oi_command.h"
 
 #include <QByteArray>
 #include <QObject>
@@ -28,13 +31,16 @@ public:
     virtual void close() = 0;
     virtual bool isOpen() const = 0;
     // Queues the bytes; false if the transport is not open or refused them.
+    // The probe and the connection doctor write their questions so.
     virtual bool write(const QByteArray &bytes) = 0;
-    // A command the link's user asked for (RobotLink::send), as opposed to
-    // the link's own exchanges (its Start and Stream, queries, the stop on
-    // closing), which come through write(). Only a transport that hands
-    // commands on to someone who keeps a link of their own (a bridge) needs
-    // to tell them apart; the others write them.
-    virtual bool writeCommand(const QByteArray &bytes);
+    // Who asked for commands the link writes: its user (RobotLink::send),
+    // or the link itself (its Start and Stream, queries, the stop on closing).
+    enum class Origin : quint8 { Link, User };
+    // Commands the link encoded once, with their bytes. A transport that
+    // speaks bytes writes the bytes; one that hands commands on to someone
+    // who keeps a link of their own (a bridge) takes the commands as they
+    // are, and needs `origin` to keep the link's own exchanges to itself.
+    virtual bool writeCommands(const std::vector<oi::OiCommand> &commands, const QByteArray &bytes, Origin origin);
     // Waits up to `msecs` for queued bytes to leave (used before closing).
     virtual void flush(int msecs) = 0;
     // Serial ports only: change the line speed, open or not. Others have no
@@ -69,6 +75,9 @@ public:
     // Where the robot truly is, where the transport knows it (the in-process
     // virtual robot, in its room's coordinates); nullopt for a real robot.
     virtual std::optional<oi::Pose> truePose() const { return std::nullopt; }
+    // Play, pause, speed, seek, step: for a recording played back, which
+    // answers with replayStatus(); a live transport ignores it.
+    virtual void controlReplay(const ReplayCommand &command);
 
 protected:
     // The level of the wake line's modem line(s) for BRC `low`.
@@ -79,18 +88,17 @@ protected:
 signals:
     void opened();
     void bytesReceived(const QByteArray &bytes);
+    // A transport that hears values rather than bytes (a robot beside a
+    // bridge): a stream frame, or the answer to a sensor query.
+    void snapshotReceived(const oi::SensorSnapshot &snapshot, oi::FrameKind kind);
     void errorOccurred(const QString &message);
     void closed();
+    // Where a recording played back is (ReplayStatus says when it comes).
+    void replayStatus(const oilink::ReplayStatus &status);
 
 private:
     BrcLine m_brcLine = BrcLine::Rts;
     bool m_brcAssertedIsLow = true;
 };
-
-// The link's own transport for the settings: a serial port opened at `baud`,
-// a TCP connection or a replay. nullptr for a virtual robot, which the
-// link does not know: transports::createTransport (transport_factory.h)
-// knows every kind.
-Transport *createTransport(const LinkSettings &settings, int baud, QObject *parent = nullptr);
 
 } // namespace oilink

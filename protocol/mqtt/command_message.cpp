@@ -179,19 +179,13 @@ std::optional<oi::OiCommand> CommandMessage::toCommand(const oi::RobotProfile &p
         std::vector<std::string> words;
         for (const QJsonValue &a : args)
             words.push_back(*argumentText(a));
-        const oi::EncodeResult bytes =
-            oi::encodeCommand(oi::CommandEncoder(profile), command.toStdString(), words);
-        if (!bytes) {
-            *error = fromStd(bytes.error().describe());
+        const oi::Result<oi::OiCommand> typed =
+            oi::commandFromText(oi::CommandEncoder(profile), command.toStdString(), words);
+        if (!typed) {
+            *error = fromStd(typed.error().describe());
             return std::nullopt;
         }
-        const oi::Result<std::vector<oi::OiCommand>> commands = oi::decodeCommands(profile, *bytes);
-        if (!commands || commands->size() != 1) {
-            // The encoder made these bytes: they read back as one command.
-            *error = QStringLiteral("%1 does not read back as one command").arg(command);
-            return std::nullopt;
-        }
-        return commands->front();
+        return *typed;
     }
 
     const oi::CommandSpec *spec = oi::commandSpecByName(command.toStdString());

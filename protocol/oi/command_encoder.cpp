@@ -2,6 +2,7 @@
 #include "command_encoder.h"
 
 #include "command_catalog.h"
+#include "oi_command.h"
 
 #include <algorithm>
 #include <cctype>
@@ -517,12 +518,10 @@ EncodeResult CommandEncoder::waitEvent(int event) const
     return withOpcode(Command::WaitEvent, {event}); // two's complement for the inverse
 }
 
+// The typed sequences (oi_command.h) are the one statement of these.
 Bytes CommandEncoder::stopMotion() const
 {
-    Bytes out = *drive(0, 0);
-    const EncodeResult motorsOff = m_profile->has(Command::Motors) ? motors(0) : lowSideDrivers(0);
-    out.insert(out.end(), motorsOff->begin(), motorsOff->end());
-    return out;
+    return *encodeCommands(*this, stopMotionCommands(*m_profile));
 }
 
 // A waiting Create reads nothing more until its wait ends (ERRATA 20), so
@@ -535,18 +534,12 @@ Bytes CommandEncoder::stopMotion() const
 // next Wait Distance never ends: a robot deaf until its battery is pulled.
 Bytes CommandEncoder::endScript() const
 {
-    if (!m_profile->has(Command::Script))
-        return {};
-    return *script({});
+    return *encodeCommands(*this, endScriptCommands(*m_profile));
 }
 
 Bytes CommandEncoder::shutdownSequence() const
 {
-    Bytes out = *pauseResumeStream(0);
-    for (const Bytes &part : {endScript(), stopMotion()})
-        out.insert(out.end(), part.begin(), part.end());
-    out.push_back(*start()->begin());
-    return out;
+    return *encodeCommands(*this, shutdownCommands(*m_profile));
 }
 
 } // namespace oi

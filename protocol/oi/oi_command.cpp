@@ -268,6 +268,65 @@ CommandDecode decodeCommand(const RobotProfile &profile, std::span<const std::ui
     return d;
 }
 
+std::optional<OiError> checkCommand(const CommandEncoder &encoder, const OiCommand &command)
+{
+    // The encoder's typed methods are where the ranges are stated; the
+    // bytes they make here are dropped.
+    const EncodeResult bytes = encodeCommand(encoder, command);
+    if (bytes)
+        return std::nullopt;
+    return bytes.error();
+}
+
+EncodeResult encodeCommands(const CommandEncoder &encoder, std::span<const OiCommand> commands)
+{
+    Bytes out;
+    for (const OiCommand &command : commands) {
+        EncodeResult bytes = encodeCommand(encoder, command);
+        if (!bytes)
+            return bytes;
+        out.insert(out.end(), bytes->begin(), bytes->end());
+    }
+    return out;
+}
+
+Result<OiCommand> commandFromText(const CommandEncoder &encoder, std::string_view name,
+                                  std::span<const std::string> args)
+{
+    const EncodeResult bytes = encodeCommand(encoder, name, args);
+    if (!bytes)
+        return bytes.error();
+    // The encoder made these bytes: they read back as the one command.
+    return decodeCommand(encoder.robotProfile(), *bytes).command;
+}
+
+Result<std::vector<OiCommand>> scriptCommands(const RobotProfile &profile, const OiCommand &script)
+{
+    return decodeCommands(profile, script.data);
+}
+
+std::vector<OiCommand> stopMotionCommands(const RobotProfile &profile)
+{
+    return {OiCommand{C::Drive, {0, 0}, {}},
+            OiCommand{profile.has(C::Motors) ? C::Motors : C::LowSideDrivers, {0}, {}}};
+}
+
+std::vector<OiCommand> endScriptCommands(const RobotProfile &profile)
+{
+    if (!profile.has(C::Script))
+        return {};
+    return {OiCommand{C::Script, {}, {}}};
+}
+
+std::vector<OiCommand> shutdownCommands(const RobotProfile &profile)
+{
+    std::vector<OiCommand> out{OiCommand{C::PauseResumeStream, {0}, {}}};
+    for (const std::vector<OiCommand> &part : {endScriptCommands(profile), stopMotionCommands(profile)})
+        out.insert(out.end(), part.begin(), part.end());
+    out.push_back(OiCommand{C::Start, {}, {}});
+    return out;
+}
+
 Result<std::vector<OiCommand>> decodeCommands(const RobotProfile &profile, std::span<const std::uint8_t> bytes)
 {
     std::vector<OiCommand> commands;

@@ -5,7 +5,9 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <span>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -33,6 +35,34 @@ std::span<const std::string_view> commandFieldNames(Command command);
 // The bytes of a typed command, checked exactly as the CommandEncoder's
 // typed methods check them (ranges, profile support): an error names the field.
 EncodeResult encodeCommand(const CommandEncoder &encoder, const OiCommand &command);
+
+// Why encodeCommand would refuse the command (a field out of range, a
+// command the profile lacks), or nothing: for a refusal that must be
+// answered at once, where the bytes are made later, once, elsewhere.
+std::optional<OiError> checkCommand(const CommandEncoder &encoder, const OiCommand &command);
+
+// Commands, encoded one after the other; the first one refused gives the
+// error (the encoder's own, naming the field).
+EncodeResult encodeCommands(const CommandEncoder &encoder, std::span<const OiCommand> commands);
+
+// A command given by name with text arguments, as the typed command it is:
+// the friendly forms of command_catalog.h's encodeCommand, checked as it
+// checks them.
+Result<OiCommand> commandFromText(const CommandEncoder &encoder, std::string_view name,
+                                  std::span<const std::string> args);
+
+// The commands a Script (152) stores, read from its body as the robot will
+// play them; an error names the field and the byte offset.
+Result<std::vector<OiCommand>> scriptCommands(const RobotProfile &profile, const OiCommand &script);
+
+// The typed forms of the encoder's sequences (CommandEncoder::stopMotion,
+// endScript, shutdownSequence), which are their encodings.
+// Drive 0,0 and motors off (the Create's low-side drivers).
+std::vector<OiCommand> stopMotionCommands(const RobotProfile &profile);
+// The empty Script that ends a Create's script; nothing where there are no scripts.
+std::vector<OiCommand> endScriptCommands(const RobotProfile &profile);
+// Pause the stream, end a script, stop, and Start: Passive, stopped.
+std::vector<OiCommand> shutdownCommands(const RobotProfile &profile);
 
 // The first command in `bytes` on a profile.
 struct CommandDecode {

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "packet_encoding.h"
 
+#include "packets_as_sent.h"
+
 #include <algorithm>
 
 namespace sim {
@@ -18,11 +20,8 @@ std::size_t appendPacketData(const oi::SensorSnapshot &values, int packetOrGroup
     const std::size_t before = out.size();
     for (int id = first; id <= last; ++id) {
         const oi::PacketInfo *p = profile.packet(id);
-        const bool two = p->bytes == 2;
-        const std::int32_t lo = p->isSigned ? (two ? -32768 : -128) : 0;
-        const std::int32_t hi = p->isSigned ? (two ? 32767 : 127) : (two ? 65535 : 255);
-        const auto v = static_cast<std::uint32_t>(std::clamp(values.raw(id), lo, hi));
-        if (two)
+        const auto v = static_cast<std::uint32_t>(oi::valueOnTheWire(*p, values.raw(id)));
+        if (p->bytes == 2)
             out.push_back(static_cast<std::uint8_t>(v >> 8));
         out.push_back(static_cast<std::uint8_t>(v));
     }

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "transport_factory.h"
 
+#include "link_transports.h"
 #include "virtual_transport.h"
 
 namespace transports {
@@ -18,7 +19,7 @@ oilink::Transport *createTransport(const oilink::LinkSettings &settings, int bau
         transport->setBrcLine(settings.brcLine, settings.brcAssertedIsLow);
         return transport;
     }
-    return oilink::createTransport(settings, baud, parent);
+    return oilink::createLinkTransport(settings, baud, parent);
 }
 
 oilink::RobotLink::TransportFactory transportFactory(std::shared_ptr<sim::Room> room, sim::RobotId robot)

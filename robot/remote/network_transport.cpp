@@ -5,13 +5,11 @@
 #include "command_message.h"
 #include "command_modes.h"
 #include "fleet_directory.h"
-#include "packet_encoding.h"
+#include "packets_as_sent.h"
 
 #include <algorithm>
 
 namespace {
-
-constexpr std::uint8_t kStreamHeader = 19;
 
 using C = oi::Command;
 
@@ -46,8 +44,9 @@ bool isStop(const oi::OiCommand &c)
 } // namespace
 
 NetworkTransport::NetworkTransport(FleetDirectory *directory, QString robot, const oi::RobotProfile &profile,
-                                   QObject *parent)
-    : Transport(parent), m_hasDirectory(directory), m_robot(std::move(robot)), m_profile(&profile), m_latest(profile)
+                                   oilink::Clock &clock, QObject *parent)
+    : Transport(parent), m_hasDirectory(directory), m_robot(std::move(robot)), m_profile(&profile), m_latest(profile),
+      m_heartbeat(clock, this), m_idleRelease(clock, this)
 {
     if (directory) {
         // Values both ways, queued: the directory lives on the GUI thread.
@@ -63,12 +62,12 @@ NetworkTransport::NetworkTransport(FleetDirectory *directory, QString robot, con
                 Qt::QueuedConnection);
     }
     m_heartbeat.setInterval(kHeartbeatMs);
-    connect(&m_heartbeat, &QTimer::timeout, this, [this] {
+    connect(&m_heartbeat, &oilink::ClockTimer::timeout, this, [this] {
         publishControl(QStringLiteral("keep"));
     });
     m_idleRelease.setSingleShot(true);
     m_idleRelease.setInterval(kReleaseIdleMs);
-    connect(&m_idleRelease, &QTimer::timeout, this, [this] {
+    connect(&m_idleRelease, &oilink::ClockTimer::timeout, this, [this] {
         if (!m_moving && !m_ownProgram)
             releaseControl();
     });
@@ -101,40 +100,33 @@ void NetworkTransport::close()
 
 void NetworkTransport::report(const QString &message) { emit problemFound(message); }
 
-bool NetworkTransport::write(const QByteArray &bytes)
+bool NetworkTransport::write(const QByteArray &)
 {
-    if (!m_open)
-        return false;
-    carry(bytes, false);
-    return true;
+    if (m_open)
+        report(tr("%1: the bridge takes commands, not bytes: check the connection where the bridge runs")
+                   .arg(describe()));
+    return false;
 }
 
-bool NetworkTransport::writeCommand(const QByteArray &bytes)
+bool NetworkTransport::writeCommands(const std::vector<oi::OiCommand> &commands, const QByteArray &, Origin origin)
 {
     if (!m_open)
         return false;
-    carry(bytes, true);
+    carry(commands, origin);
     return true;
 }
 
 // The link's own Start (before its Stream, and in its stop on closing) and
-// the empty Script it ends a Create's script with come through write(): the
+// the empty Script it ends a Create's script with are the link's own: the
 // bridge's link does the same for itself, so they stay here. A Start the
-// session asked for (Passive, from the mode panel) comes through
-// writeCommand() and goes to the bridge. The link tells which is which by
-// the path it writes on, so nothing here has to guess from timing.
-void NetworkTransport::carry(const QByteArray &bytes, bool asked)
+// session asked for (Passive, from the mode panel) comes as the user's and
+// goes to the bridge. The link says which is which, so nothing here has to
+// guess from timing.
+void NetworkTransport::carry(const std::vector<oi::OiCommand> &commands, Origin origin)
 {
-    const auto *data = reinterpret_cast<const std::uint8_t *>(bytes.constData());
-    const auto commands = oi::decodeCommands(*m_profile, std::span(data, std::size_t(bytes.size())));
-    if (!commands) {
-        // The link's bytes were taken; only the bridge refuses them.
-        report(tr("%1: these bytes are no command the bridge takes: %2")
-                   .arg(describe(), QString::fromStdString(commands.error().describe())));
-        return;
-    }
+    const bool asked = origin == Origin::User;
     std::vector<oi::OiCommand> toBridge;
-    for (const oi::OiCommand &c : *commands) {
+    for (const oi::OiCommand &c : commands) {
         switch (c.command) {
         case C::Baud: break; // the bridge's link keeps its own baud
         case C::Start:
@@ -147,8 +139,16 @@ void NetworkTransport::carry(const QByteArray &bytes, bool asked)
             m_streaming = true;
             break;
         case C::PauseResumeStream: m_streaming = c.fields.at(0) == 1; break;
-        case C::Sensors: answerQuery({c.fields.at(0)}); break;
-        case C::QueryList: answerQuery(std::vector<int>(c.data.begin(), c.data.end())); break;
+        case C::Sensors: {
+            const int id = c.fields.at(0);
+            answerQuery({&id, 1});
+            break;
+        }
+        case C::QueryList: {
+            const std::vector<int> ids(c.data.begin(), c.data.end());
+            answerQuery(ids);
+            break;
+        }
         case C::ShowScript:
             // Unanswered, the link's request times out and says so.
             report(tr("%1: the bridge does not read the robot's script back").arg(describe()));
@@ -250,28 +250,12 @@ void NetworkTransport::onTelemetry(const QString &robot, const oi::SensorSnapsho
     m_latest = frame; // every packet told so far (FleetDirectory)
     if (!m_streaming || m_streamIds.empty())
         return;
-    // [19][n][id][data]...[checksum], as the robot itself streams it.
-    oi::Bytes body;
-    for (int id : m_streamIds) {
-        body.push_back(std::uint8_t(id));
-        sim::appendPacketData(m_latest, id, body);
-    }
-    QByteArray out;
-    out.reserve(qsizetype(body.size()) + 3);
-    out.append(char(kStreamHeader));
-    out.append(char(body.size()));
-    std::uint8_t sum = kStreamHeader + std::uint8_t(body.size());
-    for (std::uint8_t b : body) {
-        out.append(char(b));
-        sum = std::uint8_t(sum + b);
-    }
-    out.append(char(std::uint8_t(-sum)));
-    emit bytesReceived(out);
+    // The frame the robot itself would stream, as a value.
+    emit snapshotReceived(oi::packetsAsSent(m_latest, m_streamIds), oi::FrameKind::Stream);
 }
 
-void NetworkTransport::answerQuery(const std::vector<int> &ids)
+void NetworkTransport::answerQuery(std::span<const int> ids)
 {
-    oi::Bytes reply;
     for (int id : ids) {
         std::vector<int> packets{id};
         if (const oi::PacketGroup *group = m_profile->group(id)) {
@@ -288,9 +272,8 @@ void NetworkTransport::answerQuery(const std::vector<int> &ids)
                            .arg(p));
                 return;
             }
-        sim::appendPacketData(m_latest, id, reply);
     }
-    emit bytesReceived(QByteArray(reinterpret_cast<const char *>(reply.data()), qsizetype(reply.size())));
+    emit snapshotReceived(oi::packetsAsSent(m_latest, ids), oi::FrameKind::Reply);
 }
 
 #include "moc_network_transport.cpp"

@@ -5,8 +5,9 @@
 #include "sensor_snapshot.h"
 #include "transport.h"
 
+#include "link_clock.h"
+
 #include <QJsonObject>
-#include <QTimer>
 
 #include <vector>
 
@@ -16,12 +17,14 @@ class FleetDirectory;
 // every dock works on it as on a local robot. The bridge owns the robot's
 // own link, so:
 //  - the link's stream requests are answered here: each telemetry message
-//    becomes a stream frame of the packets the link asked for;
+//    becomes the snapshot a stream of the packets the link asked for would
+//    carry, as a value (no bytes are made or read);
 //  - sensor queries are answered from the latest telemetry, and fail with a
 //    message naming the packet when the bridge does not publish it;
 //  - the link's own Start, Baud and stream commands stay here (the bridge's
 //    link does its own); every command the session asks for goes to the
-//    bridge as the typed command it is (docs/mqtt.md, "Commands");
+//    bridge as the typed command it is (docs/mqtt.md, "Commands"), read
+//    from the link's typed commands, never from their bytes;
 //  - the first command that needs control takes it, a heartbeat keeps it,
 //    and the stop after the motion (Drive 0,0, motors off) gives it back;
 //    a cleaning command keeps it until the driver stops the robot.
@@ -36,16 +39,19 @@ public:
     static constexpr int kReleaseIdleMs = 1000;
 
     // `directory` is only connected to, never called: null when there is
-    // no broker, and open() says so.
+    // no broker, and open() says so. The heartbeat and the idle release run
+    // on `clock`.
     NetworkTransport(FleetDirectory *directory, QString robot, const oi::RobotProfile &profile,
-                     QObject *parent = nullptr);
+                     oilink::Clock &clock = oilink::Clock::steady(), QObject *parent = nullptr);
     ~NetworkTransport() override;
 
     void open() override;
     void close() override;
     bool isOpen() const override { return m_open; }
+    // Bytes that are no typed commands (the connection doctor's questions):
+    // refused, since the bridge takes commands.
     bool write(const QByteArray &bytes) override;
-    bool writeCommand(const QByteArray &bytes) override;
+    bool writeCommands(const std::vector<oi::OiCommand> &commands, const QByteArray &bytes, Origin origin) override;
     void flush(int) override {}
     QString describe() const override;
 
@@ -57,11 +63,11 @@ signals:
     void problemFound(const QString &message);
 
 private:
-    void carry(const QByteArray &bytes, bool asked);
+    void carry(const std::vector<oi::OiCommand> &commands, Origin origin);
     void onTelemetry(const QString &robot, const oi::SensorSnapshot &frame);
     void onReply(const QString &robot, const QJsonObject &reply);
     void forward(const oi::OiCommand &command);
-    void answerQuery(const std::vector<int> &ids);
+    void answerQuery(std::span<const int> ids);
     void takeControl();
     void releaseControl();
     void publishCommand(const oi::OiCommand &command);
@@ -83,6 +89,6 @@ private:
     bool m_ownProgram = false;
     quint64 m_nextId = 1;
     QStringList m_controlSent; // not answered yet, oldest first
-    QTimer m_heartbeat;
-    QTimer m_idleRelease;
+    oilink::ClockTimer m_heartbeat;
+    oilink::ClockTimer m_idleRelease;
 };

@@ -19,6 +19,7 @@
 #include "sensor_plots.h"
 #include "odometry_map.h"
 #include "tcp_robot_server.h"
+#include "typed_command_bytes.h"
 
 #include <QDockWidget>
 #include <QGroupBox>
@@ -144,8 +145,8 @@ void turnClockwise(RobotSession &session)
 {
     const oi::CommandEncoder encoder(session.robotProfile());
     const auto bytes = [](const oi::Bytes &b) { return QByteArray(reinterpret_cast<const char *>(b.data()), qsizetype(b.size())); };
-    session.send(bytes(*encoder.safe()));
-    session.send(bytes(*encoder.driveDirect(100, -100)));
+    session.send(commandsOf(bytes(*encoder.safe())));
+    session.send(commandsOf(bytes(*encoder.driveDirect(100, -100))));
 }
 
 } // namespace
@@ -407,7 +408,7 @@ private slots:
         QVERIFY(one->requestMode(oi::Command::Safe));
         QTRY_VERIFY_WITH_TIMEOUT(modeOf(one) == oi::OiMode::Safe, 5000);
         const oi::EncodeResult drive = oi::CommandEncoder(one->robotProfile()).drive(100, oi::kRadiusStraight);
-        QVERIFY(one->send(QByteArray(reinterpret_cast<const char *>(drive->data()), qsizetype(drive->size()))));
+        QVERIFY(one->send(commandsOf(QByteArray(reinterpret_cast<const char *>(drive->data()), qsizetype(drive->size())))));
         QTRY_VERIFY_WITH_TIMEOUT(modeOf(one) == oi::OiMode::Passive, 10000);
         window.refreshDisplay();
         QVERIFY2(one->mode().reason().contains(QRegularExpression("^A cliff \\(.+\\) dropped it to Passive at "

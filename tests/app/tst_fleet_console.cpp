@@ -15,6 +15,7 @@
 #include "mosquitto_broker.h"
 #include "saved_brokers.h"
 #include "snapshot_json.h"
+#include "typed_command_bytes.h"
 
 #include <QAction>
 #include <QDialogButtonBox>
@@ -329,7 +330,7 @@ private slots:
         MotionCommand forward;
         forward.velocity = 150;
         const oi::EncodeResult safe = oi::CommandEncoder(local->robotProfile()).safe();
-        QVERIFY(local->send(QByteArray(reinterpret_cast<const char *>(safe->data()), qsizetype(safe->size()))));
+        QVERIFY(local->send(commandsOf(QByteArray(reinterpret_cast<const char *>(safe->data()), qsizetype(safe->size())))));
         QTRY_VERIFY_WITH_TIMEOUT(local->latest().raw(35) == 2, 5000);
         local->teleop().requestMotion(forward);
         QTRY_COMPARE_WITH_TIMEOUT(local->latest().raw(39), 150, 5000);

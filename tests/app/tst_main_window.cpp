@@ -32,6 +32,7 @@
 #include "sensor_gauges.h"
 #include "value_gauge.h"
 #include "virtual_transport.h"
+#include "typed_command_bytes.h"
 
 #include <QComboBox>
 #include <QLineEdit>
@@ -311,8 +312,8 @@ private slots:
         const auto placeRobot = [&window](oi::Pose pose) { window.room()->moveRobot(window.roomRobot(), pose); };
         const oi::CommandEncoder encoder(oi::profile(oi::ProfileId::Create2));
         const auto send = [&window](const oi::EncodeResult &bytes) {
-            QVERIFY(window.session().send(QByteArray(reinterpret_cast<const char *>(bytes->data()),
-                                                     qsizetype(bytes->size()))));
+            QVERIFY(window.session().send(commandsOf(QByteArray(reinterpret_cast<const char *>(bytes->data()),
+                                                                qsizetype(bytes->size())))));
         };
         QTemporaryDir scratch;
         const QString dir = screenshotDir(scratch);
@@ -375,8 +376,8 @@ private slots:
         QVERIFY(lessons->openLesson(":/lessons/encoders_distance_angle.json"));
         const oi::CommandEncoder encoder(oi::profile(oi::ProfileId::Create2));
         const auto send = [&window](const oi::EncodeResult &bytes) {
-            QVERIFY(window.session().send(QByteArray(reinterpret_cast<const char *>(bytes->data()),
-                                                     qsizetype(bytes->size()))));
+            QVERIFY(window.session().send(commandsOf(QByteArray(reinterpret_cast<const char *>(bytes->data()),
+                                                                qsizetype(bytes->size())))));
         };
         window.room()->moveRobot(window.roomRobot(), {0, 0, 0, 0});
         send(encoder.safe());
@@ -437,7 +438,7 @@ private slots:
         window.refreshDisplay();
         QCOMPARE(lessons->stepView()->outOfReachText(), QString());
         const oi::EncodeResult drive = oi::CommandEncoder(window.session().robotProfile()).drive(100, oi::kRadiusStraight);
-        QVERIFY(window.session().send(QByteArray(reinterpret_cast<const char *>(drive->data()), qsizetype(drive->size()))));
+        QVERIFY(window.session().send(commandsOf(QByteArray(reinterpret_cast<const char *>(drive->data()), qsizetype(drive->size())))));
         QTRY_COMPARE_WITH_TIMEOUT(window.session().mode().reported(), std::optional(oi::OiMode::Passive), 10000);
         QTRY_VERIFY_WITH_TIMEOUT((window.refreshDisplay(), !lessons->stepView()->outOfReachText().isEmpty()), 5000);
         const QString why = lessons->stepView()->outOfReachText();

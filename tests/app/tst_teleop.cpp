@@ -12,6 +12,7 @@
 #include "plot_stack.h"
 #include "sensor_plots.h"
 #include "teleop_controller.h"
+#include "sent_before_barrier.h"
 
 #include <QDir>
 #include <QDockWidget>
@@ -118,8 +119,8 @@ struct Rig {
     // not among them.
     QList<QByteArray> sentSoFar()
     {
-        const QByteArray marker("\xff\xfe barrier", 10);
-        window.session().send(marker);
+        const QByteArray &marker = barrierBytes();
+        window.session().send(barrierCommand());
         QList<QByteArray> writes;
         const bool seen = QTest::qWaitFor([&] {
             writes += recording.take();
@@ -150,9 +151,10 @@ struct RobotOnTheBench : DriveTarget {
     const oi::SensorSnapshot &latest() const override { return frame; }
     const RobotMode &mode() const override { return robotMode; }
     oilink::LinkState state() const override { return linkState; }
-    bool send(const QByteArray &bytes) override
+    // The commands as the link would encode them.
+    bool sendMotion(const std::vector<oi::OiCommand> &commands) override
     {
-        sent << byteText(bytes);
+        sent << byteText(bytesOfCommands(robotProfile(), commands));
         return true;
     }
     QStringList take() { return std::exchange(sent, {}); }

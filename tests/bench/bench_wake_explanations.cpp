@@ -8,6 +8,7 @@
 //   bench_wake_explanations [--runs N]
 #include "robot_link.h"
 #include "transport_factory.h"
+#include "typed_command_bytes.h"
 
 #include <QCoreApplication>
 #include <QElapsedTimer>
@@ -61,7 +62,7 @@ double measure(const Condition &c, bool &explained)
     const int before = frames;
     QElapsedTimer t;
     t.start();
-    link.send(QByteArray(1, char(133))); // Power: asleep at once
+    link.send(commandsOf(QByteArray(1, char(133)))); // Power: asleep at once
     if (!waitFor([&] { return frames > before || !error.isEmpty(); }))
         return -1;
     const double ms = double(t.nsecsElapsed()) / 1e6;

@@ -150,7 +150,7 @@ private slots:
 
         // The virtual robot starts in Passive, where it ignores Drive.
         const oi::CommandEncoder encoder(oi::profile(oi::ProfileId::Create2));
-        QVERIFY(dashboard.send(toBytes(*encoder.safe())));
+        QVERIFY(dashboard.send(oi::OiCommand{oi::Command::Safe, {}, {}}));
         QTRY_COMPARE_WITH_TIMEOUT(dashboard.latest().oiMode(), oi::OiMode::Safe, 5000);
         QCOMPARE(rig.bridge.controller(), directory.clientName());
 

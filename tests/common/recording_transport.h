@@ -31,7 +31,7 @@ struct Recording {
     QMutex mutex;
     QList<QByteArray> writes;
     // Those of the writes that were commands the link was asked to send
-    // (Transport::writeCommand), not its own exchanges.
+    // (Transport::Origin::User), not its own exchanges.
     QList<QByteArray> commands;
     QList<Clock::time_point> times;
     // The OI mode (packet 35) the streamed frames report: 0 Off .. 3 Full.
@@ -152,12 +152,13 @@ public:
         m_recording->times << now;
         return true;
     }
-    bool writeCommand(const QByteArray &bytes) override
+    bool writeCommands(const std::vector<oi::OiCommand> &, const QByteArray &bytes, Origin origin) override
     {
         if (!write(bytes))
             return false;
         QMutexLocker lock(&m_recording->mutex);
-        m_recording->commands << bytes;
+        if (origin == Origin::User)
+            m_recording->commands << bytes;
         return true;
     }
     void flush(int) override { ++m_recording->flushes; }

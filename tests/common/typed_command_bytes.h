@@ -26,3 +26,14 @@ inline QByteArray bytesOfCommands(const oi::RobotProfile &profile, const QVarian
 {
     return bytesOfCommands(profile, commands.value<std::vector<oi::OiCommand>>());
 }
+
+// The other way: bytes as the documents write them, read as the typed
+// commands they are, for tests that say what they send in bytes. Bytes that
+// are no whole command fail the test that sends them (they read as nothing).
+inline std::vector<oi::OiCommand> commandsOf(const QByteArray &bytes,
+                                             const oi::RobotProfile &profile = oi::profile(oi::ProfileId::Create2))
+{
+    const auto commands = oi::decodeCommands(
+        profile, {reinterpret_cast<const std::uint8_t *>(bytes.constData()), std::size_t(bytes.size())});
+    return commands ? *commands : std::vector<oi::OiCommand>{};
+}

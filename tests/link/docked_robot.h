@@ -8,6 +8,7 @@
 
 #include "robot_link.h"
 #include "robot_mode.h"
+#include "typed_command_bytes.h"
 
 #include <QCoreApplication>
 #include <QDateTime>
@@ -53,7 +54,7 @@ public:
         mode.asked(command, QDateTime::currentDateTime());
         reasonAtMs = -1;
         askedAtMs = clock.nowMs();
-        link.send(QByteArray(1, char(opcode)));
+        link.send(commandsOf(QByteArray(1, char(opcode))));
     }
     void runFor(qint64 ms)
     {

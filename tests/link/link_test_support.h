@@ -2,6 +2,7 @@
 // Frames and counted transports for the link tests.
 #pragma once
 
+#include "link_transports.h"
 #include "robot_link.h"
 #include "stream_frames.h"
 #include "transport.h"
@@ -42,6 +43,6 @@ inline oilink::RobotLink::TransportFactory countedTransports(std::atomic<int> &m
         ++made;
         const int baud = settings.baud > 0 ? settings.baud
                                            : oi::profile(settings.profile.value_or(oi::ProfileId::Create2)).defaultBaud;
-        return oilink::createTransport(settings, baud);
+        return oilink::createLinkTransport(settings, baud);
     };
 }

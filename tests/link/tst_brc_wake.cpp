@@ -6,6 +6,7 @@
 // advances.
 #include "sim_line_transport.h"
 #include "sim_process.h"
+#include "typed_command_bytes.h"
 
 #include "brc_pulser.h"
 #include "real_time_robot.h"
@@ -360,7 +361,7 @@ private slots:
         link.open(settings);
         QVERIFY(clock.advanceUntil([&] { return log.frames > 0; }, kTimeoutMs));
         clock.advance(60'000);
-        link.send(QByteArray(1, char(133))); // Power: asleep
+        link.send(commandsOf(QByteArray(1, char(133)))); // Power: asleep
         QVERIFY(clock.advanceUntil([&] { return line->robot().asleep(); }, kTimeoutMs));
         const qsizetype from = log.events.size();
         const int framesBefore = log.frames;
@@ -413,7 +414,7 @@ private slots:
         QVERIFY(clock.advanceUntil([&] { return frames > 0; }, kTimeoutMs));
         if (midSession) {
             clock.advance(60'000);
-            link.send(QByteArray(1, char(133))); // Power
+            link.send(commandsOf(QByteArray(1, char(133)))); // Power
             QVERIFY(clock.advanceUntil([&] { return line->robot().asleep(); }, kTimeoutMs));
             const int before = frames;
             QVERIFY(clock.advanceUntil([&] { return frames > before; }, kTimeoutMs));
@@ -490,7 +491,7 @@ private slots:
         QVERIFY(clock.advanceUntil([&] { return frames > 0; }, kTimeoutMs));
         clock.advance(60'000);
         QVERIFY(frames > 60'000 / 15 - 10);
-        link.send(QByteArray(1, char(133))); // Power
+        link.send(commandsOf(QByteArray(1, char(133)))); // Power
         QVERIFY(clock.advanceUntil([&] { return !errors.isEmpty(); }, kTimeoutMs));
         QVERIFY(line->robot().asleep());
         QCOMPARE(errors.size(), 1);
@@ -530,9 +531,9 @@ private slots:
         QCOMPARE(found.size(), 1);
         QCOMPARE(modes, QList<int>{1});
         QVERIFY2(line->pinPulledLow >= 3, qPrintable(QString::number(line->pinPulledLow))); // kept awake in Passive
-        link.send(QByteArray(1, char(131))); // Safe
+        link.send(commandsOf(QByteArray(1, char(131)))); // Safe
         QVERIFY(clock.advanceUntil([&] { return modes.size() == 2; }, kTimeoutMs));
-        link.send(QByteArray(1, char(132))); // Full
+        link.send(commandsOf(QByteArray(1, char(132)))); // Full
         QVERIFY(clock.advanceUntil([&] { return modes.size() == 3; }, kTimeoutMs));
         clock.advance(100);
         QCOMPARE(modes, (QList<int>{1, 2, 3}));

@@ -7,6 +7,7 @@
 #include "transport_factory.h"
 #include "virtual_transport.h"
 #include "real_time_robot.h"
+#include "typed_command_bytes.h"
 
 #include "oirec_records.h" // tests/common
 #include "stream_parser.h"
@@ -265,26 +266,26 @@ private slots:
         QByteArray delivered;
         connect(&replay, &oilink::Transport::bytesReceived, [&](const QByteArray &b) { delivered += b; });
         replay.open();
-        replay.control(ReplayCommand::pause());
+        replay.controlReplay(ReplayCommand::pause());
         const int middle = all.size() / 2;
         delivered.clear();
-        replay.control(ReplayCommand::seek(r.frames()[middle].timeUs));
+        replay.controlReplay(ReplayCommand::seek(r.frames()[middle].timeUs));
         QCOMPARE(parse(r, delivered), QList<oi::SensorSnapshot>{all[middle]});
         QCOMPARE(replay.status().frame, middle);
         QCOMPARE(replay.status().positionUs, r.frames()[middle].timeUs);
 
         delivered.clear();
-        replay.control(ReplayCommand::step(1));
+        replay.controlReplay(ReplayCommand::step(1));
         QCOMPARE(parse(r, delivered), QList<oi::SensorSnapshot>{all[middle + 1]});
         delivered.clear();
-        replay.control(ReplayCommand::step(-1));
+        replay.controlReplay(ReplayCommand::step(-1));
         QCOMPARE(parse(r, delivered), QList<oi::SensorSnapshot>{all[middle]});
         QVERIFY(!replay.status().playing);
 
         // Stepping stops at the ends rather than wrapping.
-        replay.control(ReplayCommand::step(-10000));
+        replay.controlReplay(ReplayCommand::step(-10000));
         QCOMPARE(replay.status().frame, 0);
-        replay.control(ReplayCommand::step(10000));
+        replay.controlReplay(ReplayCommand::step(10000));
         QCOMPARE(replay.status().frame, all.size() - 1);
     }
 
@@ -295,13 +296,13 @@ private slots:
         QVERIFY(!recordVirtualRobot(path).isEmpty());
         ReplayTransport replay(path);
         replay.open();
-        replay.control(ReplayCommand::setSpeed(0.25));
+        replay.controlReplay(ReplayCommand::setSpeed(0.25));
         QCOMPARE(replay.status().speed, 0.25);
-        replay.control(ReplayCommand::setSpeed(10));
+        replay.controlReplay(ReplayCommand::setSpeed(10));
         QCOMPARE(replay.status().speed, 10.0);
-        replay.control(ReplayCommand::setSpeed(20));
+        replay.controlReplay(ReplayCommand::setSpeed(20));
         QCOMPARE(replay.status().speed, 10.0);
-        replay.control(ReplayCommand::setSpeed(0.1));
+        replay.controlReplay(ReplayCommand::setSpeed(0.1));
         QCOMPARE(replay.status().speed, 10.0);
     }
 
@@ -415,12 +416,12 @@ private slots:
         QVERIFY(snapshots.wait(kTimeoutMs));
         link.startRecording(path);
         states.clear();
-        link.send(QByteArray(1, char(7)));
+        link.send(commandsOf(QByteArray(1, char(7))));
         // The reboot stops the stream; the link starts the robot again. Then
         // Safe, and turn in place at full speed.
         QTRY_VERIFY_WITH_TIMEOUT(!states.isEmpty() && states.last().at(0).value<oilink::LinkState>()
                                                           == oilink::LinkState::Streaming, kTimeoutMs);
-        link.send(QByteArray::fromHex("838901F40001"));
+        link.send(commandsOf(QByteArray::fromHex("838901F40001")));
         QTRY_VERIFY_WITH_TIMEOUT(std::abs(snapshotsOf(snapshots).last().angleDegrees()) > 0, kTimeoutMs);
         snapshots.clear();
         QTRY_VERIFY_WITH_TIMEOUT(snapshots.size() >= 20, kTimeoutMs);
@@ -575,7 +576,7 @@ private slots:
         link.startRecording(path);
         std::vector<oi::Pose> seen;
         connect(&link, &RobotLink::snapshot, this, [&] { seen.push_back(room->robot(id)->pose); });
-        link.send(QByteArray("\x83\x89\x00\xC8\x80\x00", 6)); // Safe, straight ahead at 200 mm/s
+        link.send(commandsOf(QByteArray("\x83\x89\x00\xC8\x80\x00", 6))); // Safe, straight ahead at 200 mm/s
         QTRY_VERIFY_WITH_TIMEOUT(seen.size() >= 30, kTimeoutMs);
         link.close();
 

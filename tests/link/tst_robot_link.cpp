@@ -5,6 +5,7 @@
 #include "link_test_support.h"
 #include "manual_clock.h"
 #include "recording_transport.h"
+#include "typed_command_bytes.h"
 
 #include "command_encoder.h"
 #include "robot_link.h"
@@ -177,20 +178,20 @@ private slots:
         m_link->open(raw);
         QVERIFY(current());
         current()->clearWritten();
-        m_link->send(bytes({129, 11}));
-        m_link->send(bytes({128, 129, 11}));
+        m_link->send(commandsOf(bytes({129, 11})));
+        m_link->send(commandsOf(bytes({128, 129, 11})));
         QCOMPARE(current()->written(), QByteArray());
         QCOMPARE(errors.size(), 2);
         const QString message = errors.at(0).at(0).toString();
         QVERIFY2(message.startsWith(QStringLiteral("pi:3333: Baud is not sent over raw TCP")) && message.contains(QStringLiteral("ser2net's config")),
                  qPrintable(message));
-        m_link->send(bytes({139, 0, 0, 0})); // other commands go out
+        m_link->send(commandsOf(bytes({139, 0, 0, 0}))); // other commands go out
         QCOMPARE(current()->written(), bytes({139, 0, 0, 0}));
 
         raw.tcpRfc2217 = true;
         m_link->open(raw);
         current()->clearWritten();
-        m_link->send(bytes({129, 11}));
+        m_link->send(commandsOf(bytes({129, 11})));
         QCOMPARE(current()->written(), bytes({129, 11}));
     }
 
@@ -462,7 +463,7 @@ private slots:
         QCOMPARE(failed.at(0).at(0).toString(), QStringLiteral("/dev/recording: no reply to the sensor query"));
 
         t->clearWritten();
-        m_link->send(bytes({137, 0, 200, 128, 0}));
+        m_link->send(commandsOf(bytes({137, 0, 200, 128, 0})));
         m_link->close();
         QVERIFY(t);
         QCOMPARE(t->written(), bytes({137, 0, 200, 128, 0})); // no shutdown: the robot drives on
@@ -487,16 +488,44 @@ private slots:
     {
         QSignalSpy sent(m_link, &RobotLink::rawBytesSent);
         QSignalSpy errors(m_link, &RobotLink::errorOccurred);
-        m_link->send(bytes({131}));
+        m_link->send(commandsOf(bytes({131})));
         QCOMPARE(errors.size(), 1);
         QVERIFY(errors.at(0).at(0).toString().startsWith(QStringLiteral("not connected")));
         m_link->open(create2());
         current()->clearWritten();
         const oi::Bytes drive = *oi::CommandEncoder(oi::profile(oi::ProfileId::Create2)).drive(-200, 500);
         const QByteArray driveBytes(reinterpret_cast<const char *>(drive.data()), qsizetype(drive.size()));
-        m_link->send(driveBytes);
+        m_link->send(commandsOf(driveBytes));
         QCOMPARE(current()->written(), bytes({137, 255, 56, 1, 244}));
         QCOMPARE(sent.last().at(0).toByteArray(), driveBytes);
+    }
+
+    // Typed commands go out as their exact bytes, encoded once with the
+    // robot's profile, in one write that the transport is told was asked for.
+    void typedCommandsReachTheTransportAsTheirBytes()
+    {
+        using C = oi::Command;
+        m_link->open(LinkSettings::serial(QStringLiteral("/dev/recording"), oi::ProfileId::Create1));
+        Recording &r = current()->recording();
+        current()->clearWritten();
+        QSignalSpy errors(m_link, &RobotLink::errorOccurred);
+        m_link->send({oi::OiCommand{C::Safe, {}, {}},
+                      oi::OiCommand{C::Drive, {-200, 500}, {}},
+                      oi::OiCommand{C::Song, {3}, {60, 32, 62, 16}},
+                      oi::OiCommand{C::LowSideDrivers, {5}, {}}, // the Create's 138
+                      oi::OiCommand{C::WaitTime, {10}, {}}});
+        QCOMPARE(errors.size(), 0);
+        const QByteArray expected = bytes({131, 137, 255, 56, 1, 244, 140, 3, 2, 60, 32, 62, 16, 138, 5, 155, 10});
+        QCOMPARE(r.writes, QList<QByteArray>{expected});
+        QCOMPARE(r.commands, QList<QByteArray>{expected});
+
+        // One the profile refuses sends nothing, and says which field.
+        m_link->send({oi::OiCommand{C::Safe, {}, {}}, oi::OiCommand{C::Drive, {600, 0}, {}}});
+        QCOMPARE(r.writes.size(), 1);
+        QCOMPARE(errors.size(), 1);
+        QVERIFY2(errors.at(0).at(0).toString().startsWith(QStringLiteral("Not sent: ")) &&
+                     errors.at(0).at(0).toString().contains(QStringLiteral("velocity")),
+                 qPrintable(errors.at(0).at(0).toString()));
     }
 
     // What the link is asked to send reaches the transport as a command;
@@ -509,8 +538,8 @@ private slots:
         Recording &r = current()->recording();
         QCOMPARE(r.written(), bytes({152, 0, 137, 0, 0, 0, 0, 138, 0, 128, 148, 7, 1, 17, 18, 19, 3, 4, 5}));
         QVERIFY(r.commands.isEmpty());
-        m_link->send(bytes({128})); // Passive, asked for
-        m_link->send(bytes({137, 0, 100, 128, 0}));
+        m_link->send(commandsOf(bytes({128}))); // Passive, asked for
+        m_link->send(commandsOf(bytes({137, 0, 100, 128, 0})));
         QCOMPARE(r.writes.mid(2), QList<QByteArray>({bytes({152, 0}), bytes({128}), bytes({137, 0, 100, 128, 0})}));
         QCOMPARE(r.commands, QList<QByteArray>({bytes({128}), bytes({137, 0, 100, 128, 0})}));
     }

@@ -8,6 +8,7 @@
 #include "robot_link_thread.h"
 #include "transport_factory.h"
 #include "virtual_transport.h"
+#include "typed_command_bytes.h"
 
 #include <QSignalSpy>
 #include <QTest>
@@ -97,7 +98,7 @@ private slots:
         QSignalSpy errors(&link, &RobotLink::errorOccurred);
         link.open(LinkSettings::virtualRobotOf(oi::ProfileId::Create2, oi::ProfileId::Create2));
         QTRY_COMPARE_WITH_TIMEOUT(link.state(), LinkState::Streaming, kTimeoutMs);
-        link.send(bytes({131})); // Safe
+        link.send(commandsOf(bytes({131}))); // Safe
         link.querySensors({35, 22});
         QTRY_COMPARE_WITH_TIMEOUT(replies.size(), 1, kTimeoutMs);
         const auto reply = replies.at(0).at(0).value<oi::SensorSnapshot>();
@@ -154,9 +155,9 @@ private slots:
         QTRY_COMPARE_WITH_TIMEOUT(link.state(), LinkState::Streaming, kTimeoutMs);
         auto *transport = qobject_cast<sim::VirtualTransport *>(link.transport());
         QVERIFY(transport);
-        link.send(bytes({131}));                 // Safe
-        link.send(bytes({137, 0, 100, 128, 0})); // Drive 100 mm/s straight
-        link.send(bytes({138, 0x07}));           // every motor on
+        link.send(commandsOf(bytes({131})));                 // Safe
+        link.send(commandsOf(bytes({137, 0, 100, 128, 0}))); // Drive 100 mm/s straight
+        link.send(commandsOf(bytes({138, 0x07})));           // every motor on
         sim::VirtualRobot &robot = transport->robot()->robot();
         QCOMPARE(robot.mode(), oi::OiMode::Safe);
         QCOMPARE(robot.motorBits(), std::uint8_t(0x07));
@@ -185,7 +186,7 @@ private slots:
         QCOMPARE(deliveredOn, QThread::currentThread());
         QCOMPARE(link.state(), LinkState::Streaming);
 
-        link.send(bytes({132})); // Full
+        link.send(commandsOf(bytes({132}))); // Full
         link.querySensors({35});
         QTRY_COMPARE_WITH_TIMEOUT(replies.size(), 1, kTimeoutMs);
         QCOMPARE(replies.at(0).at(0).value<oi::SensorSnapshot>().oiMode(), oi::OiMode::Full);
@@ -200,7 +201,7 @@ private slots:
         QVERIFY(!link.isRunning());
         // Stopped, it refuses politely.
         QSignalSpy errors(&link, &RobotLinkThread::errorOccurred);
-        link.send(bytes({128}));
+        link.send(commandsOf(bytes({128})));
         QCOMPARE(errors.size(), 1);
     }
 
@@ -271,8 +272,8 @@ private slots:
         second.open(LinkSettings::virtualRobotOf(oi::ProfileId::Create2, oi::ProfileId::Create2));
         QTRY_COMPARE_WITH_TIMEOUT(first.state(), LinkState::Streaming, kTimeoutMs);
         QTRY_COMPARE_WITH_TIMEOUT(second.state(), LinkState::Streaming, kTimeoutMs);
-        first.send(bytes({132}));                 // Full
-        first.send(bytes({137, 0, 200, 128, 0})); // Drive 200 mm/s straight
+        first.send(commandsOf(bytes({132})));                 // Full
+        first.send(commandsOf(bytes({137, 0, 200, 128, 0}))); // Drive 200 mm/s straight
         QTRY_VERIFY_WITH_TIMEOUT(firstLatest.bumpLeft() && firstLatest.bumpRight(), kTimeoutMs);
         // Struck from behind: the bumper wraps only the front half.
         QTRY_VERIFY_WITH_TIMEOUT(room->robot(mover)->pose.xMm > 600 - 2 * sim::kBodyRadiusMm - 2, kTimeoutMs);
@@ -281,7 +282,7 @@ private slots:
         QCOMPARE(robots.size(), std::size_t(2));
         QVERIFY(robots[1].pose.xMm - robots[0].pose.xMm >= 2 * sim::kBodyRadiusMm - 1);
         QCOMPARE(robots[1].pose.xMm, 600.0);
-        first.send(bytes({137, 0, 0, 0, 0}));
+        first.send(commandsOf(bytes({137, 0, 0, 0, 0})));
         first.stop();
         second.stop();
     }

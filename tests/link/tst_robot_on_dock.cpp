@@ -5,6 +5,7 @@
 // advances; the robot's mode as the dashboard, the bridge and the robot card
 // show it is RobotMode, fed the link's frames.
 #include "docked_robot.h"
+#include "typed_command_bytes.h"
 
 #include <QTest>
 
@@ -97,7 +98,7 @@ private slots:
         r.runFor(200);
         QCOMPARE(r.mode.reported(), std::optional(oi::OiMode::Safe));
         // Drive 100 mm/s turning on the spot, for ten minutes.
-        r.link.send(QByteArray("\x89\x00\x64\x00\x01", 5));
+        r.link.send(commandsOf(QByteArray("\x89\x00\x64\x00\x01", 5)));
         r.runFor(10 * 60'000);
         QCOMPARE(r.mode.reported(), std::optional(oi::OiMode::Safe));
         QVERIFY2(r.reasons.isEmpty(), qPrintable(r.reasons.value(0)));

@@ -5,6 +5,7 @@
 // and one link.
 #include "link_test_support.h"
 #include "sim_process.h"
+#include "typed_command_bytes.h"
 
 #include "command_encoder.h"
 #include "song.h"
@@ -420,8 +421,8 @@ void TestSer2net::cleanupTestCase()
 // Safe mode and a drive straight ahead, seen coming back in the stream.
 void TestSer2net::sendSafeAndDrive()
 {
-    m_link->send(toBytes(m_encoder.safe()));
-    m_link->send(toBytes(m_encoder.drive(kVelocity, oi::kRadiusStraight)));
+    m_link->send(commandsOf(toBytes(m_encoder.safe())));
+    m_link->send(commandsOf(toBytes(m_encoder.drive(kVelocity, oi::kRadiusStraight))));
     QTRY_VERIFY2_WITH_TIMEOUT(m_last.oiMode() == oi::OiMode::Safe && m_last.requestedVelocity() == kVelocity,
                               qPrintable(QStringLiteral("mode %1, velocity %2")
                                              .arg(int(m_last.oiMode()))

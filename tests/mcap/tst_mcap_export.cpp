@@ -3,6 +3,7 @@
 // official reader (@mcap/core, installed with npm) and by our own record
 // walker; damaged recordings; paths that cannot be written; roomba-ctl mcap.
 #include "mcap_records.h"
+#include "typed_command_bytes.h"
 #include "npm_packages.h" // tests/common
 #include "oirec_records.h" // tests/common
 #include "recording_mcap.h"
@@ -131,7 +132,7 @@ private slots:
         link.markRecording(oilink::MarkerEdit::add({4, 120000, "gone"}));
         link.markRecording(oilink::MarkerEdit::remove(4));
         QCOMPARE(snapshots.last().at(0).value<oi::SensorSnapshot>().oiMode(), oi::OiMode::Passive);
-        link.send(bytes({131, 137, 0, 200, 0x80, 0x00}));
+        link.send(commandsOf(bytes({131, 137, 0, 200, 0x80, 0x00})));
         snapshots.clear();
         QTRY_VERIFY_WITH_TIMEOUT(snapshots.size() >= 40, kTimeoutMs);
         link.close();

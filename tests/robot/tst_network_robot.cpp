@@ -7,15 +7,29 @@
 
 #include "fake_bridge.h"
 #include "fleet_directory.h"
+#include "manual_clock.h"
 #include "mosquitto_broker.h"
 #include "network_transport.h"
 #include "robot_session.h"
 #include "snapshot_json.h"
+#include "typed_command_bytes.h"
 
 #include <QJsonArray>
 #include <QSignalSpy>
 #include <QTest>
 #include <QTimer>
+
+// A robot on the broker whose link's bytes are a decoy that reads as no
+// command at all: the transport must publish the typed commands the link
+// hands it. Were it to read the bytes, nothing would reach the bridge.
+class DecoyBytesTransport : public NetworkTransport {
+public:
+    using NetworkTransport::NetworkTransport;
+    bool writeCommands(const std::vector<oi::OiCommand> &commands, const QByteArray &, Origin origin) override
+    {
+        return NetworkTransport::writeCommands(commands, QByteArray("\xff\xfe no command", 12), origin);
+    }
+};
 
 class TestNetworkRobot : public QObject {
     Q_OBJECT
@@ -29,6 +43,7 @@ private:
         QTimer telemetry; // the bridge's stream, every 15 ms
         oi::ProfileId profile;
         oi::SensorSnapshot values{oi::profile(profile)};
+        bool decoyBytes = false; // DecoyBytesTransport
 
         explicit Rig(oi::ProfileId id = oi::ProfileId::Create2) : profile(id) {}
 
@@ -50,8 +65,10 @@ private:
             QObject::connect(&telemetry, &QTimer::timeout, &bridge,
                              [this] { bridge.publishTelemetry(oilink::snapshotToJson(values)); });
             telemetry.start(15);
-            session.setTransportFactory([d = &directory](const oilink::LinkSettings &s) -> oilink::Transport * {
-                return new NetworkTransport(d, s.networkRobot, oi::profile(*s.profile));
+            session.setTransportFactory([this](const oilink::LinkSettings &s) -> oilink::Transport * {
+                if (decoyBytes)
+                    return new DecoyBytesTransport(&directory, s.networkRobot, oi::profile(*s.profile));
+                return new NetworkTransport(&directory, s.networkRobot, oi::profile(*s.profile));
             });
             session.connectTo(oilink::LinkSettings::networkRobotOf(QStringLiteral("r1"), profile));
             // Live, and the first frame in: the robot's mode is known.
@@ -91,6 +108,63 @@ private slots:
         // Nothing was sent to the robot by looking at it: Start and Stream stay here.
         QVERIFY(rig.bridge.receivedOn(mqtt::topics::Kind::Command).isEmpty());
         QVERIFY(rig.bridge.receivedOn(mqtt::topics::Kind::Control).isEmpty());
+    }
+
+    // The drive pad's motion reaches the bridge as the typed command the
+    // teleop made, through the link and the transport, with no byte read on
+    // the way: MotionCommand, OiCommand, JSON.
+    void commandsGoAsTypedJsonWithoutReadingBytes()
+    {
+        Rig rig;
+        rig.decoyBytes = true;
+        QVERIFY2(rig.start(), qPrintable(rig.broker.error()));
+        QSignalSpy problems(&rig.directory, &FleetDirectory::errorOccurred);
+        MotionCommand turn{MotionCommand::Kind::DriveDirect};
+        turn.right = 150;
+        turn.left = -150;
+        rig.session.teleop().requestMotion(turn);
+        QVERIFY(rig.session.send(oi::OiCommand{oi::Command::Song, {2}, {60, 32, 64, 16}}));
+        QTRY_COMPARE_WITH_TIMEOUT(rig.bridge.receivedOn(mqtt::topics::Kind::Command).size(), 2, 5000);
+        const auto commands = rig.bridge.receivedOn(mqtt::topics::Kind::Command);
+        QCOMPARE(commands[0].payload.value("command").toString(), QStringLiteral("drive-direct"));
+        QCOMPARE(commands[0].payload.value("fields").toObject(), QJsonObject({{"right-velocity", 150}, {"left-velocity", -150}}));
+        QCOMPARE(commands[1].payload.value("command").toString(), QStringLiteral("song"));
+        QCOMPARE(commands[1].payload.value("data").toArray(), QJsonArray({60, 32, 64, 16}));
+        rig.session.teleop().deadManReleased();
+        QTRY_VERIFY_WITH_TIMEOUT(rig.bridge.controller().isEmpty(), 5000);
+        QCOMPARE(rig.bridge.receivedOn(mqtt::topics::Kind::Command).last().payload.value("command").toString(),
+                 QStringLiteral("stop"));
+        QVERIFY2(problems.isEmpty(), problems.isEmpty() ? "" : qPrintable(problems.first().first().toString()));
+    }
+
+    // The heartbeat that keeps control, and the release after a command
+    // other than motion, run on the clock the transport is given.
+    void theHeartbeatRunsOnTheClock()
+    {
+        ManualClock clock;
+        FleetDirectory directory; // connected to, never called: no broker needed
+        NetworkTransport transport(&directory, QStringLiteral("r1"), oi::profile(oi::ProfileId::Create2), clock);
+        QSignalSpy control(&transport, &NetworkTransport::controlPublished);
+        transport.open();
+        const auto actions = [&control] {
+            QStringList out;
+            for (const QList<QVariant> &c : control)
+                out << c.at(1).toString();
+            return out;
+        };
+        // A song takes control, the heartbeat keeps it, and it goes back once idle.
+        transport.writeCommands({oi::OiCommand{oi::Command::Play, {0}, {}}}, QByteArray(), oilink::Transport::Origin::User);
+        QCOMPARE(actions(), QStringList{"take"});
+        clock.advance(NetworkTransport::kHeartbeatMs - 1);
+        QCOMPARE(actions(), QStringList{"take"});
+        clock.advance(1);
+        QCOMPARE(actions(), (QStringList{"take", "keep"}));
+        clock.advance(NetworkTransport::kReleaseIdleMs - NetworkTransport::kHeartbeatMs - 1);
+        QVERIFY(!actions().contains("release"));
+        QCOMPARE(actions().count("keep"), NetworkTransport::kReleaseIdleMs / NetworkTransport::kHeartbeatMs - 1);
+        clock.advance(1);
+        QCOMPARE(actions().last(), QStringLiteral("release"));
+        transport.close();
     }
 
     void drivingTakesControlAndGivesItBack()
@@ -141,7 +215,7 @@ private slots:
     {
         Rig rig;
         QVERIFY2(rig.start(), qPrintable(rig.broker.error()));
-        QVERIFY(rig.session.send(QByteArray(1, char(135)))); // Clean
+        QVERIFY(rig.session.send(commandsOf(QByteArray(1, char(135))))); // Clean
         QTRY_COMPARE_WITH_TIMEOUT(rig.bridge.controller(), rig.directory.clientName(), 5000);
         QTRY_COMPARE_WITH_TIMEOUT(rig.bridge.receivedOn(mqtt::topics::Kind::Command).size(), 1, 5000);
         QCOMPARE(rig.bridge.receivedOn(mqtt::topics::Kind::Command).first().payload.value("command").toString(),
@@ -166,7 +240,7 @@ private slots:
         Rig rig;
         QVERIFY2(rig.start(), qPrintable(rig.broker.error()));
         QVERIFY(rig.bridge.receivedOn(mqtt::topics::Kind::Command).isEmpty());
-        QVERIFY(rig.session.send(QByteArray(1, char(128))));
+        QVERIFY(rig.session.send(commandsOf(QByteArray(1, char(128)))));
         QTRY_COMPARE_WITH_TIMEOUT(rig.bridge.receivedOn(mqtt::topics::Kind::Command).size(), 1, 5000);
         QCOMPARE(rig.bridge.receivedOn(mqtt::topics::Kind::Command).first().payload.value("command").toString(),
                  QStringLiteral("start"));
@@ -254,7 +328,7 @@ private slots:
         Rig rig(oi::ProfileId::Create1);
         QSignalSpy errors(&rig.directory, &FleetDirectory::errorOccurred);
         QVERIFY2(rig.start(), qPrintable(rig.broker.error()));
-        QVERIFY(rig.session.send(QByteArray::fromHex("9b0a"))); // wait-time 1 s: a Create-only command
+        QVERIFY(rig.session.send(commandsOf(QByteArray::fromHex("9b0a"), oi::profile(oi::ProfileId::Create1)))); // wait-time 1 s: a Create-only command
         QTRY_COMPARE_WITH_TIMEOUT(rig.bridge.receivedOn(mqtt::topics::Kind::Command).size(), 1, 5000);
         const QJsonObject wait = rig.bridge.receivedOn(mqtt::topics::Kind::Command).first().payload;
         QCOMPARE(wait.value("command").toString(), QStringLiteral("wait-time"));

@@ -4,6 +4,7 @@
 #include "calibration_drive.h"
 #include "command_encoder.h"
 #include "recording_file.h"
+#include "typed_command_bytes.h"
 #include "recording_transport.h" // tests/common
 #include "robot_session.h"
 #include "saved_robots.h"
@@ -135,11 +136,11 @@ private slots:
         robot.connectTo(oilink::LinkSettings::virtualRobotOf(oi::ProfileId::Create1, oi::ProfileId::Create1));
         QTRY_VERIFY_WITH_TIMEOUT(robot.isLive(), 5000);
         const oi::CommandEncoder encoder(oi::profile(oi::ProfileId::Create1));
-        robot.send(toBytes(*encoder.safe()));
+        robot.send(commandsOf(toBytes(*encoder.safe())));
         QTRY_COMPARE_WITH_TIMEOUT(robot.latest().oiMode(), oi::OiMode::Safe, 5000);
         const std::vector<std::uint8_t> script{137, 0, 0, 0, 0, 156, 1, 144};
         QSignalSpy sent(&robot, &RobotSession::bytesSent);
-        robot.send(toBytes(*encoder.script(script)));
+        robot.send(commandsOf(toBytes(*encoder.script(script)), encoder.robotProfile()));
         QVERIFY(sent.wait(5000));
         sent.clear();
 
@@ -241,7 +242,7 @@ private slots:
         QVERIFY(!robot.odometry().corrections().angleDivisor);
 
         QSignalSpy firmware(&robot, &RobotSession::firmwareChanged);
-        robot.send(QByteArray(1, char(7)));
+        robot.send(commandsOf(QByteArray(1, char(7))));
         QVERIFY(firmware.wait(5000));
         QCOMPARE(firmware.at(0).at(0).toString(), QString("release-3.4.0"));
         QVERIFY(robot.odometry().corrections().angleDivisor);
@@ -545,15 +546,15 @@ private slots:
         robot.connectTo(oilink::LinkSettings::virtualRobotOf(oi::ProfileId::Create1, oi::ProfileId::Create1));
         QTRY_VERIFY_WITH_TIMEOUT(robot.isLive(), 5000);
         // The document's "Drive in a square", which plays itself again, in Full.
-        robot.send(QByteArray(1, char(132)));
+        robot.send(commandsOf(QByteArray(1, char(132))));
         const oi::Bytes square{152, 17, 137, 1, 44, 128, 0, 156, 1, 144, 137, 1, 44, 0, 1, 157, 0, 90, 153};
-        robot.send(toBytes(square));
-        robot.send(QByteArray(1, char(153)));
+        robot.send(commandsOf(toBytes(square), oi::profile(oi::ProfileId::Create1)));
+        robot.send(commandsOf(QByteArray(1, char(153)), oi::profile(oi::ProfileId::Create1)));
         QTRY_VERIFY_WITH_TIMEOUT(robot.latest().requestedVelocity() == 300, 5000);
 
         QSignalSpy sent(&robot, &RobotSession::bytesSent);
         robot.teleop().stopAll();
-        robot.send(QByteArray(1, char(128))); // Passive
+        robot.send(commandsOf(QByteArray(1, char(128)))); // Passive
         QTRY_COMPARE_WITH_TIMEOUT(sent.size(), 4, 5000);
         QStringList bytesSent;
         for (const QList<QVariant> &s : sent)

@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// appendPacketData must be the exact inverse of SensorSnapshot::decode.
+// appendPacketData must be the exact inverse of SensorSnapshot::decode, and
+// a stream frame made with it must read as oi::packetsAsSent says, without bytes.
 #include "packet_encoding.h"
+#include "packets_as_sent.h"
+#include "stream_parser.h"
 
 #include <QTest>
 
@@ -18,6 +21,8 @@ private slots:
     void bytesAreBigEndianAndTwosComplement();
     void outOfRangeValuesSaturate();
     void unknownIdsWriteNothing();
+    void packetsAsSentAreTheStreamFrame_data();
+    void packetsAsSentAreTheStreamFrame();
 };
 
 void TestPacketEncoding::roundTrip_data()
@@ -96,6 +101,57 @@ void TestPacketEncoding::unknownIdsWriteNothing()
     QCOMPARE(sim::appendPacketData(SensorSnapshot(profile(ProfileId::Create1)), 100, out), std::size_t(0));
     QCOMPARE(sim::appendPacketData(SensorSnapshot(profile(ProfileId::Create2)), 59, out), std::size_t(0));
     QVERIFY(out.empty());
+}
+
+// A robot on the broker streams values, not bytes: its link must get the
+// snapshot the robot's own stream of the same packets would have given,
+// packets missing from the values and values out of range included.
+void TestPacketEncoding::packetsAsSentAreTheStreamFrame_data()
+{
+    QTest::addColumn<ProfileId>("profile");
+    QTest::addColumn<std::vector<int>>("ids");
+    for (ProfileId p : allProfiles()) {
+        const RobotProfile &profile = oi::profile(p);
+        for (const PacketGroup &g : profile.groups())
+            if (g.bytes + 1 <= 255)
+                QTest::addRow("%s/group%d", profile.key.data(), g.id) << p << std::vector<int>{g.id};
+        QTest::addRow("%s/7-35-22-19-0", profile.key.data()) << p << std::vector<int>{7, 35, 22, 19, 0};
+    }
+}
+
+void TestPacketEncoding::packetsAsSentAreTheStreamFrame()
+{
+    QFETCH(ProfileId, profile);
+    QFETCH(std::vector<int>, ids);
+    const RobotProfile &p = oi::profile(profile);
+    std::mt19937 rng(std::uint32_t(ids.front()) * 31u + std::uint32_t(profile));
+    for (int round = 0; round < 20; ++round) {
+        SensorSnapshot values(p);
+        for (const PacketInfo &info : p.packets())
+            if (rng() % 4 != 0) // a quarter of them never told
+                values.set(info.id, std::uniform_int_distribution<std::int32_t>(-70000, 70000)(rng));
+        // [19][n][id][data]...[checksum], as the robot streams it.
+        Bytes body;
+        for (int id : ids) {
+            body.push_back(std::uint8_t(id));
+            QVERIFY(sim::appendPacketData(values, id, body) > 0);
+        }
+        Bytes frame{19, std::uint8_t(body.size())};
+        frame.insert(frame.end(), body.begin(), body.end());
+        std::uint8_t sum = 0;
+        for (std::uint8_t b : frame)
+            sum = std::uint8_t(sum + b);
+        frame.push_back(std::uint8_t(-sum));
+
+        StreamParser parser(p);
+        const std::vector<std::uint8_t> expected(ids.begin(), ids.end());
+        QVERIFY(parser.setExpectedStream(expected));
+        std::vector<SensorSnapshot> read;
+        parser.setSnapshotHandler([&](const SensorSnapshot &s, FrameKind) { read.push_back(s); });
+        parser.feed(frame);
+        QCOMPARE(read.size(), std::size_t(1));
+        QVERIFY(read.front() == packetsAsSent(values, ids));
+    }
 }
 
 QTEST_GUILESS_MAIN(TestPacketEncoding)

@@ -8,6 +8,7 @@
 #include <vector>
 
 // Typed commands as Qt values: what a widget asks a robot's session to send
-// (RobotSession::send), instead of bytes.
+// (RobotSession::send), and what the link sent (RobotLink::commandsSent),
+// instead of bytes.
 Q_DECLARE_METATYPE(oi::OiCommand)
 Q_DECLARE_METATYPE(std::vector<oi::OiCommand>)

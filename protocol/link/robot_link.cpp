@@ -14,6 +14,7 @@
 #include "command_encoder.h"
 #include "command_modes.h"
 #include "oi_command.h"
+#include "packets_as_sent.h"
 
 #include <QCoreApplication>
 #include <QDateTime>
@@ -577,6 +578,14 @@ void RobotLink::onSnapshotReceived(const oi::SensorSnapshot &snapshot, oi::Frame
         return;
     if (kind == oi::FrameKind::Stream) {
         ++m_counterBase.framesGood;
+        // A recording keeps the stream as bytes: the frame the robot sent,
+        // from its values (a robot on a broker sends its packets, not them).
+        if (m_recorder) {
+            const QList<int> packets = streamPackets();
+            const oi::Bytes frame = oi::streamFrame(snapshot, {packets.constData(), std::size_t(packets.size())});
+            record(recording::RecordKind::Received,
+                   QByteArray(reinterpret_cast<const char *>(frame.data()), qsizetype(frame.size())));
+        }
     } else {
         ++m_counterBase.repliesGood;
         m_parser.cancelReplies(); // answered without bytes

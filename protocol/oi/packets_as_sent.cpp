@@ -32,4 +32,42 @@ SensorSnapshot packetsAsSent(const SensorSnapshot &values, std::span<const int> 
     return out;
 }
 
+std::size_t appendPacketData(const SensorSnapshot &values, int packetOrGroupId, Bytes &out)
+{
+    const RobotProfile &profile = values.robotProfile();
+    if (!profile.isValidSensorId(packetOrGroupId))
+        return 0;
+    int first = packetOrGroupId, last = packetOrGroupId;
+    if (const PacketGroup *g = profile.group(packetOrGroupId)) {
+        first = g->first;
+        last = g->last;
+    }
+    const std::size_t before = out.size();
+    for (int id = first; id <= last; ++id) {
+        const PacketInfo *p = profile.packet(id);
+        const auto v = static_cast<std::uint32_t>(valueOnTheWire(*p, values.raw(id)));
+        if (p->bytes == 2)
+            out.push_back(static_cast<std::uint8_t>(v >> 8));
+        out.push_back(static_cast<std::uint8_t>(v));
+    }
+    return out.size() - before;
+}
+
+Bytes streamFrame(const SensorSnapshot &values, std::span<const int> packetIds)
+{
+    Bytes frame{19, 0};
+    for (int id : packetIds) {
+        if (!values.robotProfile().isValidSensorId(id))
+            continue;
+        frame.push_back(static_cast<std::uint8_t>(id));
+        appendPacketData(values, id, frame);
+    }
+    frame[1] = static_cast<std::uint8_t>(frame.size() - 2);
+    unsigned sum = 0;
+    for (std::uint8_t b : frame)
+        sum += b;
+    frame.push_back(static_cast<std::uint8_t>(-sum & 0xFF));
+    return frame;
+}
+
 } // namespace oi

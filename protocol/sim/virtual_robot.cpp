@@ -6,7 +6,7 @@
 #include "command_modes.h"
 #include "firmware_banner.h"
 #include "oi_command.h"
-#include "packet_encoding.h"
+#include "packets_as_sent.h"
 #include "seven_segment_font.h"
 
 #include <algorithm>
@@ -964,25 +964,15 @@ struct VirtualRobot::State {
         const oi::SensorSnapshot values = readSensors(carries(ids, 19), carries(ids, 20));
         oi::Bytes out;
         for (std::uint8_t id : ids)
-            appendPacketData(values, id, out);
+            oi::appendPacketData(values, id, out);
         emit(out);
     }
 
     void sendFrame()
     {
-        // ERRATA 1: [19][n][id][data]...[checksum], the sum of every byte
-        // from the header on being 0.
         const oi::SensorSnapshot values = readSensors(carries(streamIds, 19), carries(streamIds, 20));
-        oi::Bytes frame{19, 0};
-        for (std::uint8_t id : streamIds) {
-            frame.push_back(id);
-            appendPacketData(values, id, frame);
-        }
-        frame[1] = static_cast<std::uint8_t>(frame.size() - 2);
-        unsigned sum = 0;
-        for (std::uint8_t b : frame)
-            sum += b;
-        frame.push_back(static_cast<std::uint8_t>(-sum & 0xFF));
+        const std::vector<int> ids(streamIds.begin(), streamIds.end());
+        oi::Bytes frame = oi::streamFrame(values, ids);
         // ERRATA 18: a frame longer than 15 ms at this baud runs into the
         // next one and arrives damaged.
         if (int(frame.size()) > oi::maxStreamFrameBytes(baud))

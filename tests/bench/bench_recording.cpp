@@ -32,7 +32,7 @@ void benchSeek(const QString &path)
     clock.start();
     replay.open();
     const double openS = clock.nsecsElapsed() / 1e9;
-    replay.control(oilink::ReplayCommand::pause());
+    replay.controlReplay(oilink::ReplayCommand::pause());
     const qint64 durationUs = replay.status().durationUs;
     qint64 deliveredNs = 0;
     QObject::connect(&replay, &oilink::Transport::bytesReceived, [&] { deliveredNs = clock.nsecsElapsed(); });
@@ -41,7 +41,7 @@ void benchSeek(const QString &path)
     for (int i = 0; i < 1000; ++i) {
         deliveredNs = -1;
         clock.restart();
-        replay.control(oilink::ReplayCommand::seek(std::uniform_int_distribution<qint64>(0, durationUs)(random)));
+        replay.controlReplay(oilink::ReplayCommand::seek(std::uniform_int_distribution<qint64>(0, durationUs)(random)));
         if (deliveredNs >= 0)
             ms.push_back(deliveredNs / 1e6);
     }

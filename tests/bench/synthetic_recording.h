@@ -5,7 +5,7 @@
 
 #include "recording_file.h"
 
-#include "packet_encoding.h"
+#include "packets_as_sent.h"
 
 #include <functional>
 
@@ -32,7 +32,7 @@ inline bool writeSyntheticRecording(const QString &path, int frames,
         }
         vary(i, values);
         oi::Bytes frame{19, 0, 100};
-        sim::appendPacketData(values, 100, frame);
+        oi::appendPacketData(values, 100, frame);
         frame[1] = static_cast<std::uint8_t>(frame.size() - 2);
         unsigned sum = 0;
         for (std::uint8_t b : frame)

@@ -10,12 +10,14 @@
 #include "manual_clock.h"
 #include "mosquitto_broker.h"
 #include "network_transport.h"
+#include "recording_file.h"
 #include "robot_session.h"
 #include "snapshot_json.h"
 #include "typed_command_bytes.h"
 
 #include <QJsonArray>
 #include <QSignalSpy>
+#include <QTemporaryDir>
 #include <QTest>
 #include <QTimer>
 
@@ -108,6 +110,32 @@ private slots:
         // Nothing was sent to the robot by looking at it: Start and Stream stay here.
         QVERIFY(rig.bridge.receivedOn(mqtt::topics::Kind::Command).isEmpty());
         QVERIFY(rig.bridge.receivedOn(mqtt::topics::Kind::Control).isEmpty());
+    }
+
+    // A recording of a robot on the broker keeps its telemetry as the
+    // stream frames it sent, so it replays and exports as a local one does.
+    void aRecordingKeepsTheTelemetry()
+    {
+        Rig rig;
+        QVERIFY2(rig.start(), qPrintable(rig.broker.error()));
+        QTemporaryDir dir;
+        const QString path = dir.filePath("r1.oirec");
+        rig.session.startRecording(path);
+        rig.values.set(7, 0x03);
+        QTRY_VERIFY_WITH_TIMEOUT(rig.session.latest().raw(7) == 0x03, 5000);
+        const int seen = rig.session.snapshotCount();
+        QTRY_VERIFY_WITH_TIMEOUT(rig.session.snapshotCount() > seen + 2, 5000);
+        rig.session.stopRecording();
+        QString error;
+        const std::optional<oilink::Recording> r = oilink::Recording::load(path, &error);
+        QVERIFY2(r, qPrintable(error));
+        QVERIFY(!r->damage());
+        int bumped = 0, frames = 0;
+        r->forEachSnapshot([&](qint64, const oi::SensorSnapshot &s) {
+            ++frames;
+            bumped += s.raw(7) == 0x03 && s.raw(22) == 15000 && s.raw(35) == 2;
+        });
+        QVERIFY2(bumped >= 2, qPrintable(QStringLiteral("%1 of %2 frames").arg(bumped).arg(frames)));
     }
 
     // The drive pad's motion reaches the bridge as the typed command the

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // appendPacketData must be the exact inverse of SensorSnapshot::decode, and
 // a stream frame made with it must read as oi::packetsAsSent says, without bytes.
-#include "packet_encoding.h"
+#include "packets_as_sent.h"
 #include "packets_as_sent.h"
 #include "stream_parser.h"
 
@@ -55,7 +55,7 @@ void TestPacketEncoding::roundTrip()
             values.set(info.id, std::uniform_int_distribution<std::int32_t>(lo, hi)(rng));
         }
         Bytes out;
-        const std::size_t written = sim::appendPacketData(values, id, out);
+        const std::size_t written = oi::appendPacketData(values, id, out);
         QCOMPARE(int(written), p.replySize(id));
         QCOMPARE(int(out.size()), p.replySize(id));
         SensorSnapshot decoded(p);
@@ -77,9 +77,9 @@ void TestPacketEncoding::bytesAreBigEndianAndTwosComplement()
     values.set(22, 15000); // voltage, unsigned 16-bit
     values.set(24, -5);    // temperature, signed 8-bit
     Bytes out;
-    sim::appendPacketData(values, 23, out);
-    sim::appendPacketData(values, 22, out);
-    sim::appendPacketData(values, 24, out);
+    oi::appendPacketData(values, 23, out);
+    oi::appendPacketData(values, 22, out);
+    oi::appendPacketData(values, 24, out);
     QCOMPARE(out, (Bytes{0xFF, 0x38, 0x3A, 0x98, 0xFB}));
 }
 
@@ -89,17 +89,17 @@ void TestPacketEncoding::outOfRangeValuesSaturate()
     values.set(19, 40000);
     values.set(7, -3);
     Bytes out;
-    sim::appendPacketData(values, 19, out);
-    sim::appendPacketData(values, 7, out);
+    oi::appendPacketData(values, 19, out);
+    oi::appendPacketData(values, 7, out);
     QCOMPARE(out, (Bytes{0x7F, 0xFF, 0x00}));
 }
 
 void TestPacketEncoding::unknownIdsWriteNothing()
 {
     Bytes out;
-    QCOMPARE(sim::appendPacketData(SensorSnapshot(profile(ProfileId::Create1)), 43, out), std::size_t(0));
-    QCOMPARE(sim::appendPacketData(SensorSnapshot(profile(ProfileId::Create1)), 100, out), std::size_t(0));
-    QCOMPARE(sim::appendPacketData(SensorSnapshot(profile(ProfileId::Create2)), 59, out), std::size_t(0));
+    QCOMPARE(oi::appendPacketData(SensorSnapshot(profile(ProfileId::Create1)), 43, out), std::size_t(0));
+    QCOMPARE(oi::appendPacketData(SensorSnapshot(profile(ProfileId::Create1)), 100, out), std::size_t(0));
+    QCOMPARE(oi::appendPacketData(SensorSnapshot(profile(ProfileId::Create2)), 59, out), std::size_t(0));
     QVERIFY(out.empty());
 }
 
@@ -134,7 +134,7 @@ void TestPacketEncoding::packetsAsSentAreTheStreamFrame()
         Bytes body;
         for (int id : ids) {
             body.push_back(std::uint8_t(id));
-            QVERIFY(sim::appendPacketData(values, id, body) > 0);
+            QVERIFY(oi::appendPacketData(values, id, body) > 0);
         }
         Bytes frame{19, std::uint8_t(body.size())};
         frame.insert(frame.end(), body.begin(), body.end());

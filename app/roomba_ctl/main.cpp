@@ -11,6 +11,7 @@
 #include "profile_probe.h"
 #include "recording_file.h"
 #include "recording_mcap.h"
+#include "robot_address.h"
 #include "robot_link.h"
 #include "robot_link_thread.h"
 #include "script_assembler.h"
@@ -371,7 +372,6 @@ constexpr int kFrameSilenceMs = 5000;
 
 struct LinkOptions {
     oilink::LinkSettings settings;
-    int robots = 0;
     std::optional<oi::ProfileId> profile;
     int baud = 0;
     long long count = 10;
@@ -388,93 +388,57 @@ std::string toStd(const QString &text)
 int parseLinkOptions(const std::vector<std::string> &args, std::size_t from, LinkOptions &o,
                      bool takesCount, const std::string &command)
 {
+    oilink::RobotAddress robot; // --sim, --port, --tcp, --profile, --baud, --brc-line
+    bool rfc2217 = false;
     std::size_t i = from;
     for (; i < args.size() && args[i].starts_with("--"); ++i) {
         const std::string &a = args[i];
-        if (a == "--sim") {
-            o.settings.transport = oilink::TransportKind::Virtual;
-            ++o.robots;
-            continue;
-        }
+        const QString name = QString::fromStdString(a.substr(2));
         if (a == "--rfc2217") {
-            o.settings.tcpRfc2217 = true;
+            rfc2217 = true;
             continue;
         }
         if (a == "--no-mode-change" && command == "send") {
             o.changeMode = false;
             continue;
         }
-        const bool known = a == "--port" || a == "--tcp" || a == "--profile" || a == "--baud" || a == "--brc-line"
-                           || (takesCount && a == "--count");
+        const bool known = oilink::RobotAddress::isOption(name) || (takesCount && a == "--count");
         if (!known) {
             fail("unknown option '" + a + "'");
             return -1;
         }
-        if (i + 1 >= args.size()) {
+        const bool takesValue = a == "--count" || oilink::RobotAddress::takesValue(name);
+        if (takesValue && i + 1 >= args.size()) {
             fail(a + " needs a value");
             return -1;
         }
-        const std::string &value = args[++i];
-        long long number = 0;
-        if (a == "--port") {
-            o.settings.transport = oilink::TransportKind::Serial;
-            o.settings.portPath = QString::fromStdString(value);
-            ++o.robots;
-        } else if (a == "--tcp") {
-            const std::size_t colon = value.rfind(':');
-            if (colon == std::string::npos || colon == 0
-                || !oi::parseInteger(value.substr(colon + 1), number) || number < 1 || number > 65535) {
-                fail("--tcp needs HOST:PORT, e.g. raspberrypi:3333");
-                return -1;
-            }
-            o.settings.transport = oilink::TransportKind::Tcp;
-            o.settings.host = QString::fromStdString(value.substr(0, colon));
-            o.settings.tcpPort = static_cast<quint16>(number);
-            ++o.robots;
-        } else if (a == "--profile") {
-            if (value == "auto") {
-                o.profile.reset();
-            } else if (const oi::RobotProfile *p = oi::profileByKey(value)) {
-                o.profile = p->id;
-            } else {
-                fail("unknown profile '" + value + "' (roomba500, create2, create1, auto)");
-                return -1;
-            }
-        } else if (a == "--baud") {
-            if (!oi::parseInteger(value, number) || number <= 0 || number > 115200
-                || oi::baudCodeFor(static_cast<int>(number)) < 0) {
-                fail("--baud: '" + value + "' is not a rate the robots know (300 to 115200)");
-                return -1;
-            }
-            o.baud = static_cast<int>(number);
-        } else if (a == "--brc-line") {
-            const std::optional<oi::BrcLine> line = oi::brcLineByName(value);
-            if (!line) {
-                fail("--brc-line: " + oi::brcLineProblem(value));
-                return -1;
-            }
-            o.settings.brcLine = *line;
-        } else {
+        const std::string value = takesValue ? args[++i] : std::string();
+        if (a == "--count") {
+            long long number = 0;
             if (!oi::parseInteger(value, number) || number < 1) {
                 fail("--count needs a number of frames, 1 or more");
                 return -1;
             }
             o.count = number;
+        } else if (const QString why = robot.read(name, QString::fromStdString(value)); !why.isEmpty()) {
+            fail(a + ": " + toStd(why));
+            return -1;
         }
     }
-    if (o.settings.tcpRfc2217 && o.settings.transport != oilink::TransportKind::Tcp) {
-        fail("--rfc2217 goes with --tcp");
-        return -1;
-    }
-    if (o.robots != 1) {
+    if (!robot.namesRobot()) {
         fail(command + " needs one of --port PATH, --tcp HOST:PORT or --sim");
         return -1;
     }
-    o.settings.baud = o.baud;
-    o.settings.profile = o.profile;
+    o.settings = robot.settings();
+    if (rfc2217 && o.settings.transport != oilink::TransportKind::Tcp) {
+        fail("--rfc2217 goes with --tcp");
+        return -1;
+    }
+    o.settings.tcpRfc2217 = rfc2217;
+    o.profile = o.settings.profile;
+    o.baud = o.settings.baud;
     if (o.settings.transport == oilink::TransportKind::Virtual) {
         // The virtual robot plays the profile, so there is nothing to find.
-        o.settings.virtualRobot = o.profile.value_or(oi::ProfileId::Create2);
         o.settings.profile = o.settings.virtualRobot;
     }
     return static_cast<int>(i);

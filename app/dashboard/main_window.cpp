@@ -125,7 +125,7 @@ void MainWindow::buildDocks()
     m_gamepadPanel = new GamepadPanel(this);
     m_gamepadPanel->setInput(m_gamepad);
     m_drivePad = new DrivePad(this);
-    m_lessons = new LessonPanel(this);
+    m_lessons = new LessonPanel(m_fleet.lesson(), this);
     m_projector = new ProjectorMode(this, &m_lessons->runner());
     connect(m_lessons, &LessonPanel::lessonChanged, m_projector->view(), &ProjectorView::lessonChanged);
     m_markers = new MarkerActions(m_fleet, m_plots, m_recording->replayBar(), m_recording->toolBar(), this);

@@ -3,6 +3,7 @@
 
 #include "link_clock.h"
 #include "link_settings.h"
+#include "robot_lesson.h"
 #include "saved_robots.h"
 
 #include <QList>
@@ -59,6 +60,10 @@ public:
 
     QString uniqueName(const QString &wanted) const;
 
+    // The lesson the class follows, checked on the robot the window points
+    // it at (the selected one); the lesson panel and the projector show it.
+    RobotLesson &lesson() { return m_lesson; }
+
 signals:
     void robotAdded(RobotSession *robot);
     void robotRemoved(RobotSession *robot);
@@ -73,4 +78,5 @@ private:
     QList<RobotSession *> m_robots;
     RobotSession *m_selected = nullptr;
     QList<QPointer<RobotSession>> m_waiting; // restored, to connect soon
+    RobotLesson m_lesson;
 };

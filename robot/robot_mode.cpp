@@ -53,6 +53,15 @@ void RobotMode::asked(oi::Command command, const QDateTime &at)
     m_cause = Cause::None;
 }
 
+void RobotMode::sent(oi::Command command, bool scriptStartsOne)
+{
+    if (oi::startsCleaning(command) || command == oi::Command::Buttons
+        || (command == oi::Command::PlayScript && scriptStartsOne))
+        m_ownCommand = true;
+    else if (command == oi::Command::Safe || command == oi::Command::Full)
+        m_ownCommand = false;
+}
+
 bool RobotMode::ignoresMotion() const
 {
     return m_reported == oi::OiMode::Passive || m_reported == oi::OiMode::Off;

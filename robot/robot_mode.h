@@ -42,6 +42,14 @@ public:
     // looked up for every frame). Returns true when what this shows changed.
     bool observe(const oi::SensorSnapshot &frame, qint64 atMs);
 
+    // A command the session sent (any, asked by the user or not). A
+    // cleaning, demo, dock search or button press, or playing a script that
+    // starts one (`scriptStartsOne`), leaves the robot running a command of
+    // its own, in Passive, where it ignores Drive; Safe or Full ends that.
+    void sent(oi::Command command, bool scriptStartsOne);
+    // The robot may be running a command of its own: a stop needs Safe first.
+    bool runsOwnCommand() const { return m_ownCommand; }
+
     std::optional<oi::OiMode> reported() const { return m_reported; }
     std::optional<oi::Command> lastAsked() const { return m_asked; }
     // Passive or Off: the robot ignores motion, LEDs, songs (the documents'
@@ -98,6 +106,7 @@ private:
     std::optional<oi::OiMode> m_reported;
     std::optional<oi::Command> m_asked;
     bool m_askPending = false; // asked, and the robot has not changed mode since
+    bool m_ownCommand = false; // see runsOwnCommand()
     Cause m_cause = Cause::None;
     QDateTime m_changedAt;
     // What the frame that showed a safety drop saw.

@@ -3,6 +3,7 @@
 
 #include "command_catalog.h"
 #include "command_encoder.h"
+#include "command_modes.h"
 #include "robot_link_thread.h"
 
 #include <QDateTime>
@@ -131,6 +132,8 @@ void RobotSession::connectTo(const oilink::LinkSettings &settings)
     m_latest = oi::SensorSnapshot(*m_profile);
     m_snapshotCount = 0;
     m_mode.clear();
+    m_uploadedScript.reset();
+    m_scriptStartsOwnCommand = false;
     emit modeChanged();
     resetHistory();
     setProfileAssumed(false);
@@ -223,6 +226,13 @@ bool RobotSession::requestMode(oi::Command command, int demo)
     return true;
 }
 
+bool RobotSession::playScript()
+{
+    if (!m_mode.whyNot(oi::Command::PlayScript).isEmpty())
+        requestMode(oi::Command::Safe);
+    return send(oi::OiCommand{oi::Command::PlayScript, {}, {}});
+}
+
 bool RobotSession::send(const oi::OiCommand &command) { return send(std::vector<oi::OiCommand>{command}); }
 
 bool RobotSession::send(const std::vector<oi::OiCommand> &commands)
@@ -250,10 +260,19 @@ bool RobotSession::sendMotion(const std::vector<oi::OiCommand> &commands)
 
 void RobotSession::noteAsked(const std::vector<oi::OiCommand> &commands)
 {
-    // A Reset makes the robot print its banner with the firmware version.
-    for (const oi::OiCommand &command : commands)
+    for (const oi::OiCommand &command : commands) {
+        // A Reset makes the robot print its banner with the firmware version.
         if (command.command == oi::Command::Reset)
             m_firmware.listenForBanner();
+        if (command.command == oi::Command::Script) {
+            m_uploadedScript = QByteArray(reinterpret_cast<const char *>(command.data.data()), qsizetype(command.data.size()));
+            const auto inside = oi::scriptCommands(*m_profile, command);
+            m_scriptStartsOwnCommand = inside && std::any_of(inside->begin(), inside->end(), [](const oi::OiCommand &i) {
+                return oi::startsCleaning(i.command) || i.command == oi::Command::Buttons;
+            });
+        }
+        m_mode.sent(command.command, m_scriptStartsOwnCommand);
+    }
 }
 
 void RobotSession::setHistoryCapacity(std::size_t samples)

@@ -101,6 +101,14 @@ public:
     // command the profile refuses.
     bool send(const oi::OiCommand &command);
     bool send(const std::vector<oi::OiCommand> &commands);
+    // Play Script (153). In Passive or Off, Safe first: a script played in
+    // Passive cannot drive, so its waits never end and the robot hears
+    // nothing more (ERRATA 20). False as send() is.
+    bool playScript();
+    // The script body last sent with Script (152) to this robot, whichever
+    // view or program sent it: nullopt before any on this connection, empty
+    // once Stop all has ended it.
+    const std::optional<QByteArray> &uploadedScript() const { return m_uploadedScript; }
     // Requests whose replies carry no framing go through the link's queue,
     // which pauses and resumes its own stream around them: Sensors (142) or
     // Query List (149), answered by sensorReply(); Show Script (154),
@@ -258,6 +266,8 @@ private:
     oilink::ReplayStatus m_replay; // the last word from a replay
     RobotFirmware m_firmware;
     RobotMode m_mode;
+    std::optional<QByteArray> m_uploadedScript;
+    bool m_scriptStartsOwnCommand = false; // the uploaded script cleans, docks or presses a button
     SensorHistory m_history;
     bool m_historyKept = true;
     RecentBytes m_recentBytes;

@@ -927,10 +927,6 @@
         <translation>Wählen Sie einen seriellen Port oder geben Sie seinen Pfad ein.</translation>
     </message>
     <message>
-        <source>Type the bridge as host:port with a port from 1 to 65535, e.g. raspberrypi:3333.</source>
-        <translation>Geben Sie die Brücke als host:port mit einem Port von 1 bis 65535 ein, z. B. raspberrypi:3333.</translation>
-    </message>
-    <message>
         <source>Refresh</source>
         <translation>Aktualisieren</translation>
     </message>
@@ -1044,18 +1040,6 @@ Die Wahl entscheidet, wie die Radzähler gelesen werden: Die falsche spiegelt je
         <translation>nur eine der Optionen --sim, --port, --tcp und --replay angeben</translation>
     </message>
     <message>
-        <source>--tcp needs HOST:PORT with a port from 1 to 65535, not &apos;%1&apos;</source>
-        <translation>--tcp braucht HOST:PORT mit einem Port von 1 bis 65535, nicht „%1“</translation>
-    </message>
-    <message>
-        <source>unknown profile &apos;%1&apos; (roomba500, create2, create1 or auto)</source>
-        <translation>unbekanntes Profil „%1“ (roomba500, create2, create1 oder auto)</translation>
-    </message>
-    <message>
-        <source>--baud %1 is not a rate the robot offers (300 .. 115200)</source>
-        <translation>--baud %1 ist keine Baudrate, die der Roboter unterstützt (300 .. 115200)</translation>
-    </message>
-    <message>
         <source>--record: the folder of &apos;%1&apos; does not exist</source>
         <translation>--record: der Ordner von „%1“ existiert nicht</translation>
     </message>
@@ -1068,12 +1052,8 @@ Die Wahl entscheidet, wie die Radzähler gelesen werden: Die falsche spiegelt je
         <translation>unbekanntes Argument „%1“; siehe --help</translation>
     </message>
     <message>
-        <source>--profile and --baud go with --sim, --port or --tcp</source>
-        <translation>--profile und --baud gelten nur zusammen mit --sim, --port oder --tcp</translation>
-    </message>
-    <message>
-        <source>--replay reads the profile and baud from the recording; leave out --profile and --baud</source>
-        <translation>--replay liest Profil und Baudrate aus der Aufzeichnung; --profile und --baud weglassen</translation>
+        <source>--replay reads the profile and baud from the recording; leave out --profile, --baud and --brc-line</source>
+        <translation>--replay liest Profil und Baudrate aus der Aufzeichnung; --profile, --baud und --brc-line weglassen</translation>
     </message>
     <message>
         <source>--record records a robot; a replay is already a recording</source>
@@ -1097,7 +1077,8 @@ Die Wahl entscheidet, wie die Radzähler gelesen werden: Die falsche spiegelt je
     </message>
     <message>
         <source>Usage: roomba-dashboard [--sim [N] | --port PATH | --tcp HOST:PORT | --replay FILE]
-                        [--profile P] [--baud N] [--record FILE] [--lang CODE]
+                        [--profile P] [--baud N] [--brc-line LINE] [--record FILE]
+                        [--lang CODE]
                         [--foxglove [[ADDRESS:]PORT]]
 
   --sim [N]          the built-in virtual robot, or N of them (up to %2) in one room
@@ -1106,6 +1087,9 @@ Die Wahl entscheidet, wie die Radzähler gelesen werden: Die falsche spiegelt je
   --replay FILE      play back a recording (.oirec) as if it were the robot
   --profile P        roomba500, create2 (also roomba600), create1 (also create) or auto
   --baud N           the line speed; the profile&apos;s default when left out
+  --brc-line LINE    the wake line: the adapter&apos;s line wired to the robot&apos;s BRC pin,
+                     pulsed to wake it and keep it awake: rts (default), dtr, both,
+                     or none (the cable has no BRC wire: no pulse is tried)
   --record FILE      record every byte to and from the robot into FILE
   --lang CODE        the language of the window: %1
   --foxglove [[ADDRESS:]PORT]  serve the robots live to Foxglove, Lichtblick and
@@ -1124,7 +1108,8 @@ every robot. Without --lang it speaks the language chosen in its View menu,
 or the system&apos;s.
 </source>
         <translation>Aufruf: roomba-dashboard [--sim [N] | --port PFAD | --tcp HOST:PORT | --replay DATEI]
-                         [--profile P] [--baud N] [--record DATEI] [--lang CODE]
+                         [--profile P] [--baud N] [--brc-line LEITUNG] [--record DATEI]
+                         [--lang CODE]
                          [--foxglove [[ADRESSE:]PORT]]
 
   --sim [N]          der eingebaute virtuelle Roboter, oder N davon (bis %2) in einem Raum
@@ -1133,6 +1118,9 @@ or the system&apos;s.
   --replay DATEI     eine Aufzeichnung (.oirec) abspielen, als wäre sie der Roboter
   --profile P        roomba500, create2 (auch roomba600), create1 (auch create) oder auto
   --baud N           die Leitungsgeschwindigkeit; ohne Angabe die Vorgabe des Profils
+  --brc-line LEITUNG die Weckleitung: die Leitung des Adapters am BRC-Pin des Roboters,
+                     gepulst, um ihn zu wecken und wach zu halten: rts (Vorgabe), dtr, both
+                     oder none (das Kabel hat keinen BRC-Draht: kein Impuls)
   --record DATEI     jedes Byte zum und vom Roboter in DATEI aufzeichnen
   --lang CODE        die Sprache des Fensters: %1
   --foxglove [[ADRESSE:]PORT]  die Roboter live für Foxglove, Lichtblick und
@@ -4068,6 +4056,41 @@ GPL-3.0-or-later.</translation>
     <message>
         <source>Next marker</source>
         <translation>Nächste Markierung</translation>
+    </message>
+</context>
+<context>
+    <name>RobotAddress</name>
+    <message>
+        <source>&apos;%1&apos; is not HOST:PORT with a port from 1 to 65535, e.g. raspberrypi:3333</source>
+        <translation>„%1“ ist nicht HOST:PORT mit einem Port von 1 bis 65535, z. B. raspberrypi:3333</translation>
+    </message>
+    <message>
+        <source>give only one of --sim, --port and --tcp</source>
+        <translation>geben Sie nur eines von --sim, --port und --tcp an</translation>
+    </message>
+    <message>
+        <source>give the serial port&apos;s path, e.g. /dev/ttyUSB0</source>
+        <translation>geben Sie den Pfad der seriellen Schnittstelle an, z. B. /dev/ttyUSB0</translation>
+    </message>
+    <message>
+        <source>unknown profile &apos;%1&apos; (roomba500, create2, create1 or auto)</source>
+        <translation>unbekanntes Profil „%1“ (roomba500, create2, create1 oder auto)</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a rate the robots know (300 to 115200)</source>
+        <translation>„%1“ ist keine Baudrate, die die Roboter kennen (300 bis 115200)</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not an option for where the robot is</source>
+        <translation>„%1“ ist keine Angabe dazu, wo der Roboter ist</translation>
+    </message>
+    <message>
+        <source>--profile, --baud and --brc-line go with --sim, --port or --tcp</source>
+        <translation>--profile, --baud und --brc-line gehören zu --sim, --port oder --tcp</translation>
+    </message>
+    <message>
+        <source>say where the robot is: --sim, --port PATH or --tcp HOST:PORT</source>
+        <translation>sagen Sie, wo der Roboter ist: --sim, --port PFAD oder --tcp HOST:PORT</translation>
     </message>
 </context>
 <context>

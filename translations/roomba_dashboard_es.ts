@@ -927,10 +927,6 @@
         <translation>Elija un puerto serie o escriba su ruta.</translation>
     </message>
     <message>
-        <source>Type the bridge as host:port with a port from 1 to 65535, e.g. raspberrypi:3333.</source>
-        <translation>Escriba el puente como host:puerto con un puerto de 1 a 65535, p. ej. raspberrypi:3333.</translation>
-    </message>
-    <message>
         <source>Refresh</source>
         <translation>Actualizar</translation>
     </message>
@@ -1044,18 +1040,6 @@ La elección decide cómo se leen los contadores de las ruedas: la equivocada re
         <translation>elija solo una de --sim, --port, --tcp y --replay</translation>
     </message>
     <message>
-        <source>--tcp needs HOST:PORT with a port from 1 to 65535, not &apos;%1&apos;</source>
-        <translation>--tcp necesita HOST:PUERTO con un puerto de 1 a 65535, no &apos;%1&apos;</translation>
-    </message>
-    <message>
-        <source>unknown profile &apos;%1&apos; (roomba500, create2, create1 or auto)</source>
-        <translation>perfil desconocido &apos;%1&apos; (roomba500, create2, create1 o auto)</translation>
-    </message>
-    <message>
-        <source>--baud %1 is not a rate the robot offers (300 .. 115200)</source>
-        <translation>--baud %1 no es una velocidad que ofrezca el robot (300 .. 115200)</translation>
-    </message>
-    <message>
         <source>--record: the folder of &apos;%1&apos; does not exist</source>
         <translation>--record: la carpeta de &apos;%1&apos; no existe</translation>
     </message>
@@ -1068,12 +1052,8 @@ La elección decide cómo se leen los contadores de las ruedas: la equivocada re
         <translation>argumento desconocido &apos;%1&apos;; consulte --help</translation>
     </message>
     <message>
-        <source>--profile and --baud go with --sim, --port or --tcp</source>
-        <translation>--profile y --baud se usan con --sim, --port o --tcp</translation>
-    </message>
-    <message>
-        <source>--replay reads the profile and baud from the recording; leave out --profile and --baud</source>
-        <translation>--replay lee el perfil y los baudios de la grabación; omita --profile y --baud</translation>
+        <source>--replay reads the profile and baud from the recording; leave out --profile, --baud and --brc-line</source>
+        <translation>--replay lee el perfil y los baudios de la grabación; omita --profile, --baud y --brc-line</translation>
     </message>
     <message>
         <source>--record records a robot; a replay is already a recording</source>
@@ -1097,7 +1077,8 @@ La elección decide cómo se leen los contadores de las ruedas: la equivocada re
     </message>
     <message>
         <source>Usage: roomba-dashboard [--sim [N] | --port PATH | --tcp HOST:PORT | --replay FILE]
-                        [--profile P] [--baud N] [--record FILE] [--lang CODE]
+                        [--profile P] [--baud N] [--brc-line LINE] [--record FILE]
+                        [--lang CODE]
                         [--foxglove [[ADDRESS:]PORT]]
 
   --sim [N]          the built-in virtual robot, or N of them (up to %2) in one room
@@ -1106,6 +1087,9 @@ La elección decide cómo se leen los contadores de las ruedas: la equivocada re
   --replay FILE      play back a recording (.oirec) as if it were the robot
   --profile P        roomba500, create2 (also roomba600), create1 (also create) or auto
   --baud N           the line speed; the profile&apos;s default when left out
+  --brc-line LINE    the wake line: the adapter&apos;s line wired to the robot&apos;s BRC pin,
+                     pulsed to wake it and keep it awake: rts (default), dtr, both,
+                     or none (the cable has no BRC wire: no pulse is tried)
   --record FILE      record every byte to and from the robot into FILE
   --lang CODE        the language of the window: %1
   --foxglove [[ADDRESS:]PORT]  serve the robots live to Foxglove, Lichtblick and
@@ -1124,7 +1108,8 @@ every robot. Without --lang it speaks the language chosen in its View menu,
 or the system&apos;s.
 </source>
         <translation>Uso: roomba-dashboard [--sim [N] | --port RUTA | --tcp HOST:PUERTO | --replay ARCHIVO]
-                      [--profile P] [--baud N] [--record ARCHIVO] [--lang CÓDIGO]
+                      [--profile P] [--baud N] [--brc-line LÍNEA] [--record ARCHIVO]
+                      [--lang CÓDIGO]
                       [--foxglove [[DIRECCIÓN:]PUERTO]]
 
   --sim [N]          el robot virtual integrado, o N de ellos (hasta %2) en una sala
@@ -1133,6 +1118,9 @@ or the system&apos;s.
   --replay ARCHIVO   reproduce una grabación (.oirec) como si fuera el robot
   --profile P        roomba500, create2 (también roomba600), create1 (también create) o auto
   --baud N           la velocidad de la línea; si se omite, la del perfil
+  --brc-line LÍNEA   la línea de despertar: la línea del adaptador unida al pin BRC del
+                     robot, pulsada para despertarlo y mantenerlo despierto: rts (por
+                     defecto), dtr, both o none (el cable no tiene hilo BRC: no se pulsa)
   --record ARCHIVO   graba en ARCHIVO cada byte enviado al robot y recibido de él
   --lang CÓDIGO      el idioma de la ventana: %1
   --foxglove [[DIRECCIÓN:]PUERTO]  servir los robots en vivo a Foxglove, Lichtblick y
@@ -4067,6 +4055,41 @@ GPL-3.0-or-later.</translation>
     <message>
         <source>Next marker</source>
         <translation>Marca siguiente</translation>
+    </message>
+</context>
+<context>
+    <name>RobotAddress</name>
+    <message>
+        <source>&apos;%1&apos; is not HOST:PORT with a port from 1 to 65535, e.g. raspberrypi:3333</source>
+        <translation>«%1» no es HOST:PUERTO con un puerto de 1 a 65535, p. ej. raspberrypi:3333</translation>
+    </message>
+    <message>
+        <source>give only one of --sim, --port and --tcp</source>
+        <translation>indique solo uno de --sim, --port y --tcp</translation>
+    </message>
+    <message>
+        <source>give the serial port&apos;s path, e.g. /dev/ttyUSB0</source>
+        <translation>indique la ruta del puerto serie, p. ej. /dev/ttyUSB0</translation>
+    </message>
+    <message>
+        <source>unknown profile &apos;%1&apos; (roomba500, create2, create1 or auto)</source>
+        <translation>perfil desconocido «%1» (roomba500, create2, create1 o auto)</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a rate the robots know (300 to 115200)</source>
+        <translation>«%1» no es una velocidad que los robots conozcan (300 a 115200)</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not an option for where the robot is</source>
+        <translation>«%1» no es una opción sobre dónde está el robot</translation>
+    </message>
+    <message>
+        <source>--profile, --baud and --brc-line go with --sim, --port or --tcp</source>
+        <translation>--profile, --baud y --brc-line van con --sim, --port o --tcp</translation>
+    </message>
+    <message>
+        <source>say where the robot is: --sim, --port PATH or --tcp HOST:PORT</source>
+        <translation>indique dónde está el robot: --sim, --port RUTA o --tcp HOST:PUERTO</translation>
     </message>
 </context>
 <context>

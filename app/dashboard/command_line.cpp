@@ -2,6 +2,7 @@
 #include "command_line.h"
 
 #include "recording_file.h"
+#include "robot_address.h"
 #include "odometry_calibration.h"
 #include "robot_profile.h"
 #include "language_switcher.h"
@@ -42,12 +43,14 @@ QString languageCodes()
 void DashboardCommandLine::setTranslator(const QTranslator *translator)
 {
     g_translator = translator;
+    oilink::RobotAddress::setTranslator(translator);
 }
 
 QString DashboardCommandLine::usage()
 {
     return tr("Usage: roomba-dashboard [--sim [N] | --port PATH | --tcp HOST:PORT | --replay FILE]\n"
-              "                        [--profile P] [--baud N] [--record FILE] [--lang CODE]\n"
+              "                        [--profile P] [--baud N] [--brc-line LINE] [--record FILE]\n"
+              "                        [--lang CODE]\n"
               "                        [--foxglove [[ADDRESS:]PORT]]\n"
               "\n"
               "  --sim [N]          the built-in virtual robot, or N of them (up to %2) in one room\n"
@@ -56,6 +59,9 @@ QString DashboardCommandLine::usage()
               "  --replay FILE      play back a recording (.oirec) as if it were the robot\n"
               "  --profile P        roomba500, create2 (also roomba600), create1 (also create) or auto\n"
               "  --baud N           the line speed; the profile's default when left out\n"
+              "  --brc-line LINE    the wake line: the adapter's line wired to the robot's BRC pin,\n"
+              "                     pulsed to wake it and keep it awake: rts (default), dtr, both,\n"
+              "                     or none (the cable has no BRC wire: no pulse is tried)\n"
               "  --record FILE      record every byte to and from the robot into FILE\n"
               "  --lang CODE        the language of the window: %1\n"
               "  --foxglove [[ADDRESS:]PORT]  serve the robots live to Foxglove, Lichtblick and\n"
@@ -79,11 +85,8 @@ QString DashboardCommandLine::usage()
 DashboardCommandLine DashboardCommandLine::parse(const QStringList &arguments)
 {
     DashboardCommandLine line;
-    enum class Target { Saved, Sim, Port, Tcp, Replay } target = Target::Saved;
-    QString port, host, replayPath;
-    quint16 tcpPort = 0;
-    std::optional<oi::ProfileId> profile;
-    int baud = 0;
+    oilink::RobotAddress robot; // --sim, --port, --tcp, --profile, --baud, --brc-line
+    QString replayPath;
     oi::WheelGeometry wheels;
     double bothWheels = oi::kWheelDiameterMm;
     std::optional<double> leftWheel, rightWheel;
@@ -94,10 +97,11 @@ DashboardCommandLine DashboardCommandLine::parse(const QStringList &arguments)
     };
     for (qsizetype i = 1; i < arguments.size(); ++i) {
         const QString &a = arguments[i];
+        const QString name = a.startsWith(QLatin1String("--")) ? a.mid(2) : QString();
         const bool wheelOption = a == "--wheel-diameter" || a == "--left-wheel-diameter"
                                  || a == "--right-wheel-diameter" || a == "--wheel-base";
-        const bool takesValue = a == "--port" || a == "--tcp" || a == "--replay" || a == "--profile"
-                                || a == "--baud" || a == "--record" || a == "--lang" || wheelOption;
+        const bool takesValue = oilink::RobotAddress::takesValue(name) || a == "--replay" || a == "--record"
+                                || a == "--lang" || wheelOption;
         if (takesValue && i + 1 >= arguments.size())
             return fail(tr("%1 needs a value; see --help").arg(a));
         const QString value = takesValue ? arguments[++i] : QString();
@@ -105,48 +109,23 @@ DashboardCommandLine DashboardCommandLine::parse(const QStringList &arguments)
             line.showHelp = true;
         } else if (a == "--version") {
             line.showVersion = true;
-        } else if (a == "--sim" || a == "--port" || a == "--tcp" || a == "--replay") {
-            if (target != Target::Saved)
-                return fail(tr("choose one of --sim, --port, --tcp and --replay"));
-            if (a == "--sim") {
-                target = Target::Sim;
-                // An optional count: --sim 3.
-                bool isCount = false;
-                const int count = i + 1 < arguments.size() ? arguments[i + 1].toInt(&isCount) : 0;
-                if (isCount) {
-                    if (count < 1 || count > kMaxVirtualRobots)
-                        return fail(tr("--sim takes 1 to %1 robots, not %2").arg(kMaxVirtualRobots).arg(count));
-                    line.robotCount = count;
-                    ++i;
-                }
-            } else if (a == "--replay") {
-                target = Target::Replay;
-                replayPath = value;
-            } else if (a == "--port") {
-                target = Target::Port;
-                port = value;
-            } else {
-                target = Target::Tcp;
-                const qsizetype colon = value.lastIndexOf(':');
-                bool ok = false;
-                const uint number = colon > 0 ? value.mid(colon + 1).toUInt(&ok) : 0;
-                if (!ok || number == 0 || number > 65535)
-                    return fail(tr("--tcp needs HOST:PORT with a port from 1 to 65535, not '%1'").arg(value));
-                host = value.left(colon);
-                tcpPort = quint16(number);
+        } else if ((a == "--replay" && robot.namesRobot())
+                   || ((a == "--sim" || a == "--port" || a == "--tcp") && !replayPath.isEmpty())) {
+            return fail(tr("choose one of --sim, --port, --tcp and --replay"));
+        } else if (oilink::RobotAddress::isOption(name)) {
+            if (const QString why = robot.read(name, value); !why.isEmpty())
+                return fail(QStringLiteral("%1: %2").arg(a, why));
+            // An optional count: --sim 3.
+            bool isCount = false;
+            const int count = a == "--sim" && i + 1 < arguments.size() ? arguments[i + 1].toInt(&isCount) : 0;
+            if (isCount) {
+                if (count < 1 || count > kMaxVirtualRobots)
+                    return fail(tr("--sim takes 1 to %1 robots, not %2").arg(kMaxVirtualRobots).arg(count));
+                line.robotCount = count;
+                ++i;
             }
-        } else if (a == "--profile") {
-            if (value != "auto") {
-                const oi::RobotProfile *p = oi::profileByKey(value.toStdString());
-                if (!p)
-                    return fail(tr("unknown profile '%1' (roomba500, create2, create1 or auto)").arg(value));
-                profile = p->id;
-            }
-        } else if (a == "--baud") {
-            bool ok = false;
-            baud = value.toInt(&ok);
-            if (!ok || oi::baudCodeFor(baud) < 0)
-                return fail(tr("--baud %1 is not a rate the robot offers (300 .. 115200)").arg(value));
+        } else if (a == "--replay") {
+            replayPath = value;
         } else if (a == "--record") {
             if (!QFileInfo(value).absoluteDir().exists())
                 return fail(tr("--record: the folder of '%1' does not exist").arg(value));
@@ -183,29 +162,14 @@ DashboardCommandLine DashboardCommandLine::parse(const QStringList &arguments)
             return fail(tr("unknown argument '%1'; see --help").arg(a));
         }
     }
-    if (wheelsGiven && target != Target::Sim)
+    const bool onSim = robot.namesRobot() && robot.settings().transport == oilink::TransportKind::Virtual;
+    if (wheelsGiven && !onSim)
         return fail(tr("--wheel-diameter, --left-wheel-diameter, --right-wheel-diameter and --wheel-base go with --sim"));
     wheels.leftDiameterMm = leftWheel.value_or(bothWheels);
     wheels.rightDiameterMm = rightWheel.value_or(bothWheels);
-    switch (target) {
-    case Target::Saved:
-        if (profile || baud)
-            return fail(tr("--profile and --baud go with --sim, --port or --tcp"));
-        break;
-    case Target::Sim:
-        line.connection = oilink::LinkSettings::virtualRobotOf(profile.value_or(oi::ProfileId::Create2), profile);
-        line.connection->virtualWheels = wheels;
-        break;
-    case Target::Port:
-        line.connection = oilink::LinkSettings::serial(port, profile, baud);
-        break;
-    case Target::Tcp:
-        line.connection = oilink::LinkSettings::tcp(host, tcpPort, profile);
-        line.connection->baud = baud;
-        break;
-    case Target::Replay: {
-        if (profile || baud)
-            return fail(tr("--replay reads the profile and baud from the recording; leave out --profile and --baud"));
+    if (!replayPath.isEmpty()) {
+        if (robot.hasLinkOptions())
+            return fail(tr("--replay reads the profile and baud from the recording; leave out --profile, --baud and --brc-line"));
         if (!line.recordPath.isEmpty())
             return fail(tr("--record records a robot; a replay is already a recording"));
         QString why;
@@ -213,8 +177,15 @@ DashboardCommandLine DashboardCommandLine::parse(const QStringList &arguments)
         if (!stream)
             return fail(tr("cannot replay %1").arg(why));
         line.connection = oilink::LinkSettings::replayOf(replayPath, stream->profile->id, stream->baud, stream->packets);
-        break;
+        return line;
     }
-    }
+    // No robot named: the saved robots, unless link options were given for none.
+    if (!robot.namesRobot() && !robot.hasLinkOptions())
+        return line;
+    if (const QString why = robot.problem(); !why.isEmpty())
+        return fail(why);
+    line.connection = robot.settings();
+    if (onSim)
+        line.connection->virtualWheels = wheels;
     return line;
 }

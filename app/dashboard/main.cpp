@@ -45,6 +45,8 @@ int main(int argc, char **argv)
                                                    : QString("roomba-dashboard %1\n").arg(ROOMBA_VERSION)));
         return 0;
     }
+    // From here the application's translator speaks, and follows the View menu.
+    DashboardCommandLine::setTranslator(nullptr);
 
     QApplication app(argc, argv);
     SettingsFile::checkAtStart(); // a damaged or foreign settings file is kept aside, not read

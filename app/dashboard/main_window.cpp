@@ -125,7 +125,7 @@ void MainWindow::buildDocks()
     m_gamepadPanel = new GamepadPanel(this);
     m_gamepadPanel->setInput(m_gamepad);
     m_drivePad = new DrivePad(this);
-    m_lessons = new LessonPanel(this);
+    m_lessons = new LessonPanel(m_fleet.lesson(), this);
     m_projector = new ProjectorMode(this, &m_lessons->runner());
     connect(m_lessons, &LessonPanel::lessonChanged, m_projector->view(), &ProjectorView::lessonChanged);
     m_markers = new MarkerActions(m_fleet, m_plots, m_recording->replayBar(), m_recording->toolBar(), this);
@@ -288,7 +288,7 @@ void MainWindow::wireInputs()
     connect(m_leds, &LedEditor::sendRequested, this, sendTyped);
     connect(m_schedule, &ScheduleEditor::sendRequested, this, sendTyped);
     connect(m_script, &ScriptEditor::sendRequested, this, sendTyped);
-    connect(m_script, &ScriptEditor::safeRequested, this, [this] { session().requestMode(oi::Command::Safe); });
+    connect(m_script, &ScriptEditor::playRequested, this, [this] { session().playScript(); });
     connect(m_motors, &MotorsPanel::sendRequested, this, sendTyped);
     connect(m_script, &ScriptEditor::showScriptRequested, this, [this] { session().showScript(); });
     // A hand in the room: the map asks, the room moves the robot.
@@ -528,6 +528,7 @@ void MainWindow::changeEvent(QEvent *event)
     if (event->type() == QEvent::LanguageChange && m_fileMenu) {
         retranslateUi();
         m_view->forgetShown();
+        m_view->showMode(); // the views say the mode's reasons in the new language
         refreshDisplay();
     }
     if (event->type() == QEvent::ActivationChange && !isActiveWindow() && m_fleet.selected()) {

@@ -92,7 +92,8 @@ void SelectedRobotView::show(RobotSession *robot)
         connect(robot, &RobotSession::bytesSent, v.inspector, &ByteInspector::appendTx),
         connect(robot, &RobotSession::bytesReceived, v.inspector, &ByteInspector::appendRx),
         connect(robot, &RobotSession::frameReceived, v.inspector, &ByteInspector::addSnapshot),
-        connect(robot, &RobotSession::scriptShown, v.script, &ScriptEditor::showScriptReply),
+        connect(robot, &RobotSession::scriptShown, v.script,
+                [v, robot](const QByteArray &script) { v.script->showScriptReply(script, robot->uploadedScript()); }),
         connect(robot, &RobotSession::scriptFailed, v.script, &ScriptEditor::showScriptFailed),
         connect(teleop, &TeleopController::passiveChanged, v.drivePad, &DrivePad::setPassive),
         connect(teleop, &TeleopController::motionAsked, v.drivePad, &DrivePad::showAsked),
@@ -164,7 +165,7 @@ void SelectedRobotView::applyProfile(oi::ProfileId id)
     v.leds->setProfile(p);
     v.schedule->setProfile(p);
     v.script->setProfile(p);
-    v.motors->setProfile(p);
+    v.motors->setProfile(p, session().mode());
     v.map->setProfile(p);
     v.drivePad->setProfile(p);
     v.plots->setProfile(p);
@@ -208,7 +209,6 @@ void SelectedRobotView::showMode()
     v.songs->setPlayBlocked(mode.whyNot(oi::Command::Play));
     v.leds->setMode(mode);
     v.motors->setMode(mode);
-    v.script->setMode(mode);
 }
 
 void SelectedRobotView::showState(oilink::LinkState state)

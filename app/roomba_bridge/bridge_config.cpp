@@ -2,6 +2,7 @@
 #include "bridge_config.h"
 
 #include "fleet_topics.h"
+#include "robot_address.h"
 
 #include <QDir>
 #include <QFile>
@@ -9,6 +10,7 @@
 #include <QHash>
 
 #include <cmath>
+#include <string_view>
 #include <tuple>
 
 namespace {
@@ -33,7 +35,7 @@ const QStringList &BridgeConfig::keys()
         QStringLiteral("stop-username"), QStringLiteral("stop-password"), QStringLiteral("stop-password-file"),
         QStringLiteral("cafile"),   QStringLiteral("certfile"),      QStringLiteral("keyfile"),
         QStringLiteral("rate"),     QStringLiteral("allow-full"),    QStringLiteral("full-telemetry"),
-        QStringLiteral("allow-schedule"), QStringLiteral("brc-line"),
+        QStringLiteral("allow-schedule"), QStringLiteral("brc-line"),  QStringLiteral("baud"),
         QStringLiteral("foxglove"), QStringLiteral("foxglove-rate"),
         QStringLiteral("room"),     QStringLiteral("record"),
     };
@@ -143,64 +145,41 @@ std::optional<BridgeConfig> BridgeConfig::fromSettings(const QList<Setting> &set
         return fail(c.broker.certFile.isEmpty() ? QStringLiteral("keyfile") : QStringLiteral("certfile"),
                     QStringLiteral("a client certificate needs both certfile and keyfile"));
 
-    std::optional<oi::ProfileId> profile;
-    if (has("profile")) {
-        const oi::RobotProfile *p = oi::profileByKey(value("profile").toStdString());
-        if (!p)
-            return fail(QStringLiteral("profile"), QStringLiteral("'%1' is not a robot (roomba500, create2, create1)").arg(value("profile")));
-        profile = p->id;
-    }
-
     // Where the robot is, given on the command line, replaces the file's.
     for (const char *key : {"sim", "port", "tcp"})
         if (has(key) && last[QLatin1String(key)].where.startsWith(QLatin1String("--")))
             for (const char *other : {"sim", "port", "tcp"})
                 if (has(other) && !last[QLatin1String(other)].where.startsWith(QLatin1String("--")))
                     last.remove(QLatin1String(other));
-    QStringList where;
-    if (has("sim")) {
-        if (!isYes(value("sim")) && !isNo(value("sim")))
-            return fail(QStringLiteral("sim"), QStringLiteral("'%1' is not yes or no").arg(value("sim")));
-        if (isYes(value("sim")))
-            where << QStringLiteral("sim");
+    oilink::RobotAddress robot;
+    for (const char *key : {"sim", "port", "tcp", "profile", "baud", "brc-line"}) {
+        if (!has(key))
+            continue;
+        if (key == std::string_view("sim")) {
+            if (!isYes(value("sim")) && !isNo(value("sim")))
+                return fail(QStringLiteral("sim"), QStringLiteral("'%1' is not yes or no").arg(value("sim")));
+            if (isNo(value("sim")))
+                continue;
+        }
+        if (const QString why = robot.read(QLatin1String(key), value(key)); !why.isEmpty())
+            return fail(QLatin1String(key), why);
     }
-    if (has("port"))
-        where << QStringLiteral("port");
-    if (has("tcp"))
-        where << QStringLiteral("tcp");
-    if (where.isEmpty())
+    if (!robot.namesRobot())
         return *error = QStringLiteral("say where the robot is: --sim, --port PATH or --tcp HOST:PORT"), std::nullopt;
-    if (where.size() > 1)
-        return fail(where.last(), QStringLiteral("give only one of sim, port and tcp (also set: %1)").arg(where.first()));
-    if (where.first() == QLatin1String("sim")) {
-        const oi::ProfileId robot = profile.value_or(oi::ProfileId::Create2);
-        c.link = oilink::LinkSettings::virtualRobotOf(robot, robot);
-    } else if (where.first() == QLatin1String("port")) {
-        c.link = oilink::LinkSettings::serial(value("port"), profile);
-    } else {
-        const QString tcp = value("tcp");
-        const qsizetype colon = tcp.lastIndexOf(QLatin1Char(':'));
-        bool ok = false;
-        const uint port = colon > 0 ? tcp.mid(colon + 1).toUInt(&ok) : 0;
-        if (!ok || port < 1 || port > 65535)
-            return fail(QStringLiteral("tcp"), QStringLiteral("'%1' is not HOST:PORT with a port from 1 to 65535").arg(tcp));
-        c.link = oilink::LinkSettings::tcp(tcp.left(colon), quint16(port), profile);
-    }
+    c.link = robot.settings();
+    const bool onSim = c.link.transport == oilink::TransportKind::Virtual;
+    // The virtual robot plays the profile, so there is nothing to find.
+    if (onSim)
+        c.link.profile = c.link.virtualRobot;
 
     if (has("room")) {
-        if (where.first() != QLatin1String("sim"))
+        if (!onSim)
             return fail(QStringLiteral("room"), QStringLiteral("only the virtual robot (sim) drives in a room file"));
         c.roomFile = value("room");
     }
     if (has("record"))
         c.recordFile = value("record");
 
-    if (has("brc-line")) {
-        const std::optional<oi::BrcLine> line = oi::brcLineByName(value("brc-line").toStdString());
-        if (!line)
-            return fail(QStringLiteral("brc-line"), QString::fromStdString(oi::brcLineProblem(value("brc-line").toStdString())));
-        c.link.brcLine = *line;
-    }
     if (has("rate")) {
         bool ok = false;
         c.telemetryRateHz = value("rate").toDouble(&ok);

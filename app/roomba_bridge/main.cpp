@@ -64,6 +64,7 @@ int main(int argc, char *argv[])
         {QStringLiteral("port"), QStringLiteral("The robot's serial port, e.g. /dev/ttyUSB0."), QStringLiteral("PATH")},
         {QStringLiteral("tcp"), QStringLiteral("A serial-over-TCP bridge (ser2net) at HOST:PORT."), QStringLiteral("HOST:PORT")},
         {QStringLiteral("profile"), QStringLiteral("Robot: roomba500, create2 (also roomba600) or create1. Needed for a Roomba 500 or a Create 2, which answer alike; a Create is found by asking it (create2 with --sim)."), QStringLiteral("PROFILE")},
+        {QStringLiteral("baud"), QStringLiteral("The serial rate, e.g. 19200; the profile's default when left out."), QStringLiteral("N")},
         {QStringLiteral("brc-line"), QStringLiteral("The wake line: the serial adapter's line wired to the robot's BRC pin, pulsed to wake it and keep it awake: rts (default), dtr, both, or none (the cable has no BRC wire)."), QStringLiteral("LINE")},
         {QStringLiteral("username"), QStringLiteral("The broker account."), QStringLiteral("USER")},
         {QStringLiteral("password-file"), QStringLiteral("Read the account's password from the first line of FILE."), QStringLiteral("FILE")},

@@ -315,16 +315,14 @@ void RobotBridge::stopRobot()
     // Sent whatever the bridge believes: a command it did not see through
     // the teleop (a script's Drive) moves the robot too, and a stop lost on
     // the wire leaves it driving.
-    if (m_autonomous) {
+    if (m_robot.mode().runsOwnCommand()) {
         // In Passive the robot ignores Drive while it cleans, docks or plays
         // a demo; Safe ends what it does and lets the stop take effect.
         qCInfo(lcBridge, "stop: Safe first, to end the robot's own command");
         m_robot.requestMode(oi::Command::Safe);
-        m_autonomous = false;
     }
+    // Stop all also empties a Create's stored script (ERRATA 20).
     m_robot.teleop().stopAll();
-    // Stop all empties a Create's stored script (ERRATA 20).
-    m_scriptStartsCleaning = false;
 }
 
 void RobotBridge::tellControllerOfStop(const QString &by)
@@ -438,18 +436,9 @@ QString RobotBridge::sendValidated(const oi::OiCommand &command)
         m_robot.teleop().requestMotion(*motion);
         return {};
     }
+    // The session's mode notes a command that leaves the robot running one of its own.
     if (!m_robot.send(command))
         return QStringLiteral("the robot is not connected");
-    if (oi::startsCleaning(c) || c == oi::Command::Buttons || (c == oi::Command::PlayScript && m_scriptStartsCleaning))
-        m_autonomous = true;
-    else if (c == oi::Command::Safe || c == oi::Command::Full)
-        m_autonomous = false;
-    if (c == oi::Command::Script) {
-        const auto inside = oi::scriptCommands(m_robot.robotProfile(), command);
-        m_scriptStartsCleaning = inside && std::any_of(inside->begin(), inside->end(), [](const oi::OiCommand &i) {
-            return oi::startsCleaning(i.command) || i.command == oi::Command::Buttons;
-        });
-    }
     return {};
 }
 

@@ -140,11 +140,6 @@ private:
     GoalDrive m_goal;
     QString m_goalClient, m_goalId; // who asked for the running goal, and the id of its message
     QString m_program; // the program its controller said it runs, for the fleet view; empty if none
-    // A cleaning, demo, dock search or button press was sent: the robot may
-    // be moving in Passive, where Drive is ignored.
-    bool m_autonomous = false;
-    // The script the robot holds starts a cleaning or demo of its own.
-    bool m_scriptStartsCleaning = false;
     // The link streamed, then stopped: a stop sent meanwhile may be lost.
     bool m_linkWasLive = false;
     bool m_linkInterrupted = false;

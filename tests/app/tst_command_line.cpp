@@ -2,6 +2,7 @@
 #include "command_line.h"
 #include "language_switcher.h"
 #include "recording_file.h"
+#include "robot_address_mistakes.h"
 
 #include <QTemporaryDir>
 #include <QTranslator>
@@ -40,6 +41,11 @@ private slots:
         QCOMPARE(tcp.connection->host, QString("raspberrypi"));
         QCOMPARE(tcp.connection->tcpPort, quint16(3333));
         QVERIFY(!tcp.connection->profile);
+
+        // The wake line, for a cable that carries BRC on DTR.
+        QCOMPARE(tcp.connection->brcLine, oi::BrcLine::Rts);
+        QCOMPARE(parse("--port /dev/ttyUSB0 --brc-line dtr").connection->brcLine, oi::BrcLine::Dtr);
+        QCOMPARE(parse("--sim --brc-line none").connection->brcLine, oi::BrcLine::None);
 
         const auto recorded = parse("--sim --record /tmp/run.oirec --lang de");
         QVERIFY(recorded.error.isEmpty());
@@ -110,17 +116,20 @@ private slots:
     {
         QTest::addColumn<QString>("args");
         QTest::addColumn<QString>("message");
-        QTest::newRow("two targets") << "--sim --port /dev/ttyUSB0" << "choose one of --sim, --port, --tcp and --replay";
+        QTest::newRow("two targets") << "--sim --port /dev/ttyUSB0" << "--port: give only one of --sim, --port and --tcp";
         QTest::newRow("sim and replay") << "--sim --replay x.oirec" << "choose one of";
         QTest::newRow("replay without file") << "--replay" << "--replay needs a value";
         QTest::newRow("record into nowhere") << "--sim --record /no/such/dir/x.oirec" << "does not exist";
         QTest::newRow("unknown language") << "--lang fr" << "unknown language 'fr' (en, de, es)";
         QTest::newRow("language without code") << "--lang" << "--lang needs a value";
         QTest::newRow("no value") << "--port" << "--port needs a value";
-        QTest::newRow("tcp without port") << "--tcp pi" << "--tcp needs HOST:PORT";
+        QTest::newRow("tcp without port") << "--tcp pi" << "--tcp: 'pi' is not HOST:PORT";
         QTest::newRow("tcp port too big") << "--tcp pi:70000" << "from 1 to 65535";
         QTest::newRow("unknown profile") << "--sim --profile roomba900" << "unknown profile 'roomba900'";
-        QTest::newRow("odd baud") << "--port /dev/ttyUSB0 --baud 12345" << "--baud 12345 is not a rate";
+        QTest::newRow("odd baud") << "--port /dev/ttyUSB0 --baud 12345" << "--baud: '12345' is not a rate";
+        QTest::newRow("bad wake line") << "--port /dev/ttyUSB0 --brc-line cts" << "--brc-line: 'cts' is not a wake line";
+        QTest::newRow("wake line alone") << "--brc-line dtr" << "go with --sim, --port or --tcp";
+        QTest::newRow("wake line of a replay") << "--replay x.oirec --brc-line dtr" << "leave out --profile, --baud and --brc-line";
         QTest::newRow("profile alone") << "--profile create2" << "go with --sim, --port or --tcp";
         QTest::newRow("unknown") << "--fly" << "unknown argument '--fly'";
         QTest::newRow("live server on a name") << "--foxglove localhost:8765" << "--foxglove: 'localhost' is not an IP address";
@@ -139,6 +148,19 @@ private slots:
         QVERIFY(!line.connection);
     }
 
+    // The words are the robot address reader's, as in every other program.
+    void sameWordsAsEveryProgram_data() { robot_address_mistakes::addRows(); }
+    void sameWordsAsEveryProgram()
+    {
+        QFETCH(QString, option);
+        QFETCH(QString, value);
+        const QString why = robot_address_mistakes::expected(option, value);
+        QVERIFY(!why.isEmpty());
+        const QStringList robot = option == "tcp" ? QStringList{} : QStringList{"--sim"};
+        const auto line = DashboardCommandLine::parse(QStringList{"roomba-dashboard"} + robot + QStringList{"--" + option, value});
+        QCOMPARE(line.error, "--" + option + ": " + why);
+    }
+
     void executable()
     {
         // A clean settings folder and an English system, whatever this machine has.
@@ -152,7 +174,7 @@ private slots:
         p.start(ROOMBA_DASHBOARD_PATH, {"--tcp", "pi"});
         QVERIFY(p.waitForFinished(30000));
         QCOMPARE(p.exitCode(), 2);
-        QVERIFY(p.readAllStandardError().startsWith("roomba-dashboard: --tcp needs HOST:PORT"));
+        QVERIFY(p.readAllStandardError().startsWith("roomba-dashboard: --tcp: 'pi' is not HOST:PORT"));
         p.start(ROOMBA_DASHBOARD_PATH, {"--help"});
         QVERIFY(p.waitForFinished(30000));
         QCOMPARE(p.exitCode(), 0);

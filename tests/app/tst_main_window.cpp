@@ -464,7 +464,7 @@ private slots:
         editor->reassemble();
         QVERIFY2(editor->errorText().isEmpty(), qPrintable(editor->errorText()));
 
-        // Played in Passive: the editor asks the session for Safe first.
+        // Played in Passive: the robot's session enters Safe first.
         QTRY_COMPARE_WITH_TIMEOUT(window.session().mode().reported(), std::optional(oi::OiMode::Passive), 10000);
         QTest::mouseClick(editor->button("upload"), Qt::LeftButton);
         QTest::mouseClick(editor->button("play"), Qt::LeftButton);

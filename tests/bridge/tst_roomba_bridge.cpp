@@ -5,6 +5,7 @@
 
 #include "bridge_config.h"
 #include "bridge_rig.h"
+#include "robot_address_mistakes.h"
 
 #include "tcp_robot_server.h"
 
@@ -78,9 +79,9 @@ private slots:
         QTest::newRow("no name") << QStringList{"--sim"} << QByteArray() << "--name NAME";
         QTest::newRow("no robot") << QStringList{"--name", "r1"} << QByteArray() << "--sim, --port PATH or --tcp HOST:PORT";
         QTest::newRow("two robots") << QStringList{"--name", "r1", "--port", "/dev/ttyUSB0", "--sim"} << QByteArray()
-                                    << "give only one of sim, port and tcp";
+                                    << "--port: port: give only one of --sim, --port and --tcp";
         QTest::newRow("two robots in the file") << QStringList{} << QByteArray("name = r1\nsim = yes\ntcp = pi:3333\n")
-                                                << "give only one of sim, port and tcp";
+                                                << "bad.conf:3: tcp: give only one of --sim, --port and --tcp";
         // The robot named on the command line replaces the file's; the CA
         // is looked for beside the file.
         QTest::newRow("CA beside the file") << QStringList{"--sim"}
@@ -88,7 +89,9 @@ private slots:
                                             << "/nothere.crt does not exist";
         QTest::newRow("bad tcp") << QStringList{"--name", "r1", "--tcp", "pi"} << QByteArray() << "'pi' is not HOST:PORT";
         QTest::newRow("bad profile") << QStringList{"--name", "r1", "--sim", "--profile", "dyson"} << QByteArray()
-                                     << "'dyson' is not a robot";
+                                     << "--profile: profile: unknown profile 'dyson'";
+        QTest::newRow("bad baud") << QStringList{"--name", "r1", "--sim", "--baud", "12345"} << QByteArray()
+                                  << "--baud: baud: '12345' is not a rate the robots know";
         QTest::newRow("missing CA") << QStringList{"--name", "r1", "--sim", "--cafile", "/nonexistent/ca.crt"} << QByteArray()
                                     << "cafile: /nonexistent/ca.crt does not exist";
         QTest::newRow("bad wake line in the file") << QStringList{} << QByteArray("name = r1\nport = /dev/ttyUSB0\nbrc-line = cts\n")
@@ -164,6 +167,32 @@ private slots:
         QCOMPARE(config(robot + QList<BridgeConfig::Setting>{{QStringLiteral("brc-line"), QStringLiteral("dtr"), QStringLiteral("r1.conf:3")},
                                                              {QStringLiteral("brc-line"), QStringLiteral("none"), QStringLiteral("--brc-line")}}),
                  oi::BrcLine::None);
+    }
+
+    // Where the robot is reads as on every other program: the same words
+    // for the same mistake, and the baud reaches the link.
+    void theRobotAddressReadsAsEverywhere_data() { robot_address_mistakes::addRows(); }
+    void theRobotAddressReadsAsEverywhere()
+    {
+        QFETCH(QString, option);
+        QFETCH(QString, value);
+        const QString why = robot_address_mistakes::expected(option, value);
+        QVERIFY(!why.isEmpty());
+        QList<BridgeConfig::Setting> settings{{QStringLiteral("name"), QStringLiteral("r1"), QStringLiteral("r1.conf:1")},
+                                              {option, value, QStringLiteral("r1.conf:2")}};
+        if (option != "tcp")
+            settings.append({QStringLiteral("sim"), QStringLiteral("yes"), QStringLiteral("r1.conf:3")});
+        QString error;
+        QVERIFY(!BridgeConfig::fromSettings(settings, &error));
+        QCOMPARE(error, "r1.conf:2: " + option + ": " + why);
+
+        const std::optional<BridgeConfig> slow = BridgeConfig::fromSettings(
+            {{QStringLiteral("name"), QStringLiteral("r1"), QStringLiteral("r1.conf:1")},
+             {QStringLiteral("port"), QStringLiteral("/dev/ttyUSB0"), QStringLiteral("r1.conf:2")},
+             {QStringLiteral("baud"), QStringLiteral("19200"), QStringLiteral("r1.conf:3")}},
+            &error);
+        QVERIFY2(slow, qPrintable(error));
+        QCOMPARE(slow->link.baud, 19200);
     }
 
     // On a TCP bridge the transport cannot say which robot it is. A Roomba

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // roomba-ctl sensors and send, as a script sees them: against the built-in
 // virtual robot and against roomba-sim on a pseudo-terminal.
+#include "robot_address_mistakes.h"
 #include "recording_file.h"
 #include "robot_link.h"
 #include "transport_factory.h"
@@ -610,8 +611,9 @@ private slots:
         QTest::newRow("send, no such port") << QStringList{"send", "--port", "/dev/roomba-dashboard-none", "start"} << 1
                                             << "/dev/roomba-dashboard-none: no such port";
         QTest::newRow("no robot") << QStringList{"sensors"} << 2 << "sensors needs one of --port PATH, --tcp HOST:PORT or --sim";
-        QTest::newRow("two robots") << QStringList{"sensors", "--sim", "--port", "/dev/x"} << 2 << "needs one of";
-        QTest::newRow("bad tcp") << QStringList{"sensors", "--tcp", "pi"} << 2 << "--tcp needs HOST:PORT";
+        QTest::newRow("two robots") << QStringList{"sensors", "--sim", "--port", "/dev/x"} << 2
+                                    << "--port: give only one of --sim, --port and --tcp";
+        QTest::newRow("bad tcp") << QStringList{"sensors", "--tcp", "pi"} << 2 << "--tcp: 'pi' is not HOST:PORT";
         QTest::newRow("bad baud") << QStringList{"sensors", "--sim", "--baud", "12345"} << 2 << "not a rate the robots know";
         QTest::newRow("bad count") << QStringList{"sensors", "--sim", "--count", "0"} << 2 << "--count needs";
         QTest::newRow("no command") << QStringList{"send", "--sim"} << 2 << "send needs a command name";
@@ -633,6 +635,23 @@ private slots:
         QVERIFY(o.lines.isEmpty());
         QVERIFY2(o.err.startsWith(QStringLiteral("roomba-ctl: ")) && o.err.contains(message), qPrintable(o.err));
         QCOMPARE(o.err.count(QLatin1Char('\n')), 1); // one line
+    }
+
+    // Where the robot is reads as on every other program: the same words
+    // for the same mistake.
+    void theRobotAddressReadsAsEverywhere_data() { robot_address_mistakes::addRows(); }
+    void theRobotAddressReadsAsEverywhere()
+    {
+        QFETCH(QString, option);
+        QFETCH(QString, value);
+        const QString why = robot_address_mistakes::expected(option, value);
+        QVERIFY(!why.isEmpty());
+        QStringList args{QStringLiteral("doctor")};
+        if (option != QLatin1String("tcp"))
+            args << QStringLiteral("--sim");
+        const Outcome o = run(args + QStringList{"--" + option, value});
+        QCOMPARE(o.status, 2);
+        QCOMPARE(o.err.trimmed(), "roomba-ctl: --" + option + ": " + why);
     }
 
     void helpNamesTheNewCommands()

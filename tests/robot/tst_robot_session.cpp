@@ -161,6 +161,88 @@ private slots:
         QCOMPARE(bytesSent, (QStringList{"150 0", "154", "150 1"}));
     }
 
+    // ERRATA 20: played in Passive, a script's Drive is ignored, its Wait
+    // Distance never ends and the robot hears nothing more. The robot's
+    // model enters Safe first, so the robot drives its 40 cm.
+    void playScriptInPassiveEntersSafeFirst_data()
+    {
+        QTest::addColumn<bool>("passive");
+        QTest::addColumn<QStringList>("expected");
+        QTest::newRow("passive") << true << QStringList{"131", "153"};
+        QTest::newRow("safe") << false << QStringList{"153"};
+    }
+    void playScriptInPassiveEntersSafeFirst()
+    {
+        QFETCH(bool, passive);
+        QFETCH(QStringList, expected);
+        RobotSession robot;
+        robot.setTransportFactory(transports::transportFactory());
+        robot.connectTo(oilink::LinkSettings::virtualRobotOf(oi::ProfileId::Create1, oi::ProfileId::Create1));
+        QTRY_VERIFY_WITH_TIMEOUT(robot.isLive(), 5000);
+        if (!passive) {
+            QVERIFY(robot.requestMode(oi::Command::Safe));
+            QTRY_COMPARE_WITH_TIMEOUT(robot.mode().reported(), std::optional(oi::OiMode::Safe), 5000);
+        }
+        QCOMPARE(robot.mode().reported(), std::optional(passive ? oi::OiMode::Passive : oi::OiMode::Safe));
+        // "drive 300 straight; wait-distance 400; drive 0 0"
+        const oi::Bytes body{137, 1, 44, 128, 0, 156, 1, 144, 137, 0, 0, 0, 0};
+        QVERIFY(robot.send(oi::OiCommand{oi::Command::Script, {}, body}));
+        QSignalSpy sent(&robot, &RobotSession::bytesSent);
+        QTRY_VERIFY_WITH_TIMEOUT(!sent.isEmpty() && sent.last().at(0).toByteArray().startsWith(char(152)), 5000);
+        sent.clear();
+        QVERIFY(robot.playScript());
+        // Safe and Play Script, in the order written (the link's own stream
+        // requests may come between).
+        const auto modeAndPlay = [&sent] {
+            QStringList out;
+            for (const QList<QVariant> &s : sent)
+                if (const QString text = byteText(s.at(0).toByteArray()); text == "131" || text == "153")
+                    out << text;
+            return out;
+        };
+        QTRY_COMPARE_WITH_TIMEOUT(modeAndPlay(), expected, 5000);
+        // The robot drives its 40 cm in Safe, and streams on.
+        QTRY_COMPARE_WITH_TIMEOUT(robot.mode().reported(), std::optional(oi::OiMode::Safe), 5000);
+    }
+
+    // What was uploaded is the robot's, whoever sent it; a cleaning or a
+    // script that starts one leaves the robot running a command of its own
+    // until Safe, which the bridge's stop reads from the mode.
+    void theRobotKeepsItsScriptAndItsOwnCommand()
+    {
+        RobotSession robot;
+        robot.setTransportFactory(transports::transportFactory());
+        robot.connectTo(oilink::LinkSettings::virtualRobotOf(oi::ProfileId::Create1, oi::ProfileId::Create1));
+        QTRY_VERIFY_WITH_TIMEOUT(robot.isLive(), 5000);
+        QVERIFY(!robot.uploadedScript());
+        QVERIFY(!robot.mode().runsOwnCommand());
+
+        const oi::Bytes drives{137, 1, 44, 128, 0};
+        QVERIFY(robot.send(oi::OiCommand{oi::Command::Script, {}, drives}));
+        QCOMPARE(robot.uploadedScript(), std::optional(QByteArray::fromHex("89012c8000")));
+        QVERIFY(robot.send(oi::OiCommand{oi::Command::PlayScript, {}, {}}));
+        QVERIFY(!robot.mode().runsOwnCommand()); // a script that only drives
+
+        QVERIFY(robot.send(oi::OiCommand{oi::Command::Script, {}, {136, 0}})); // Demo 0 (Cover)
+        QVERIFY(robot.send(oi::OiCommand{oi::Command::PlayScript, {}, {}}));
+        QVERIFY(robot.mode().runsOwnCommand());
+        QVERIFY(robot.requestMode(oi::Command::Safe));
+        QVERIFY(!robot.mode().runsOwnCommand());
+
+        // Stop all ends a Create's script (ERRATA 20): nothing is left to play.
+        robot.teleop().stopAll();
+        QCOMPARE(robot.uploadedScript(), std::optional(QByteArray()));
+        QVERIFY(robot.send(oi::OiCommand{oi::Command::PlayScript, {}, {}}));
+        QVERIFY(!robot.mode().runsOwnCommand());
+
+        QVERIFY(robot.requestMode(oi::Command::Demo, 1));
+        QVERIFY(robot.mode().runsOwnCommand());
+        // A new connection knows nothing of the last one's.
+        robot.connectTo(oilink::LinkSettings::virtualRobotOf(oi::ProfileId::Create1, oi::ProfileId::Create1));
+        QVERIFY(!robot.uploadedScript());
+        QVERIFY(!robot.mode().runsOwnCommand());
+    }
+
     void showScriptOnARobotWithoutScriptsSaysSo()
     {
         RobotSession robot;

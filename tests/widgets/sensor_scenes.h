@@ -21,7 +21,9 @@
 #include <map>
 #include <vector>
 
-Q_DECLARE_METATYPE(oi::ProfileId)
+// oi::ProfileId is declared with the link's value types, which a test of a
+// robot's session sees too.
+#include "link_status.h"
 Q_DECLARE_METATYPE(oi::CliffSensor)
 Q_DECLARE_METATYPE(oi::LightBumper)
 

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "connection_bar.h"
+#include "robot_address.h"
 #include "pseudo_translation.h"
 #include "sensor_scenes.h"
 
@@ -114,9 +115,9 @@ private slots:
         QTest::addColumn<QString>("text");
         QTest::addColumn<QString>("error");
         QTest::newRow("no serial port") << int(ConnectionRequest::Transport::Serial) << "" << "Choose a serial port";
-        QTest::newRow("tcp without port") << int(ConnectionRequest::Transport::Tcp) << "raspberrypi" << "host:port";
+        QTest::newRow("tcp without port") << int(ConnectionRequest::Transport::Tcp) << "raspberrypi" << "'raspberrypi' is not HOST:PORT with a port from 1 to 65535";
         QTest::newRow("tcp port too big") << int(ConnectionRequest::Transport::Tcp) << "pi:99999" << "1 to 65535";
-        QTest::newRow("tcp no host") << int(ConnectionRequest::Transport::Tcp) << ":3333" << "host:port";
+        QTest::newRow("tcp no host") << int(ConnectionRequest::Transport::Tcp) << ":3333" << "':3333' is not HOST:PORT";
     }
     void badInputGivesOneInlineError()
     {
@@ -135,6 +136,22 @@ private slots:
         QCOMPARE(spy.count(), 0);
         QVERIFY2(bar.errorText().contains(error), qPrintable(bar.errorText()));
         QCOMPARE(bar.errorText().count(error), 1);
+    }
+
+    // A bad bridge address gets the same words as on every command line.
+    void badBridgeSaysWhatTheCommandLinesSay()
+    {
+        QString host;
+        quint16 port = 0;
+        const QString why = oilink::RobotAddress::readHostPort(QStringLiteral("pi"), &host, &port);
+        QVERIFY(!why.isEmpty());
+        oilink::RobotAddress address;
+        QCOMPARE(address.read(QStringLiteral("tcp"), QStringLiteral("pi")), why);
+        ConnectionBar bar;
+        choose(bar, "transport", int(ConnectionRequest::Transport::Tcp));
+        bar.findChild<QLineEdit *>("tcp")->setText(QStringLiteral("pi"));
+        clickConnect(bar);
+        QCOMPARE(bar.errorText(), why);
     }
 
     void tcpBridge()

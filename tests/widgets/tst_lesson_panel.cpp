@@ -46,6 +46,16 @@ void saveShot(QWidget &w, const QString &name)
 
 class TestLessonPanel : public QObject {
     Q_OBJECT
+
+    // Opens the bumpers lesson on `robot`, and its first step (Bump Left) is met and read.
+    static void passFirstBumperStep(LessonPanel &panel, RobotSession &robot)
+    {
+        panel.setRobot(&robot);
+        QVERIFY(panel.openLesson(kBumpers));
+        emit robot.frameReceived(1.0, frameWith({{7, oi::bit::BumpLeft}}));
+        emit robot.frameReceived(1.0 + LessonRunner::kReadSeconds, frameWith({}));
+        QCOMPARE(panel.runner().currentStep(), 1);
+    }
 private slots:
     // No fresh data (a replay that ended, a quiet link): the diagram's STALE
     // banner and the plot's badge say the same, and both come back together.
@@ -67,7 +77,8 @@ private slots:
     void stepTurnsGreenAndLessonMovesOn()
     {
         RobotSession robot;
-        LessonPanel panel;
+        RobotLesson lesson;
+        LessonPanel panel(lesson);
         panel.setRobot(&robot);
         QVERIFY(panel.openLesson(kBumpers));
         QCOMPARE(panel.stepList()->count(), 5);
@@ -115,9 +126,37 @@ private slots:
     }
 
     // The step list wraps each step's first sentence whole, never cuts it.
+    // The lesson is the robots', not the panel's: a panel made again (the
+    // dock closed and opened) finds it at the same step, and a second panel
+    // shows the same.
+    void theLessonOutlivesItsPanel()
+    {
+        RobotSession robot;
+        RobotLesson lesson;
+        {
+            LessonPanel panel(lesson);
+            passFirstBumperStep(panel, robot);
+        }
+        QCOMPARE(lesson.runner().currentStep(), 1);
+        QCOMPARE(lesson.robot(), &robot);
+        LessonPanel again(lesson), second(lesson);
+        for (LessonPanel *panel : {&again, &second}) {
+            QCOMPARE(panel->lessonPath(), kBumpers);
+            QCOMPARE(panel->stepList()->count(), 5);
+            QVERIFY(panel->stepList()->item(0)->text().startsWith(QStringLiteral("✔")));
+            QCOMPARE(panel->stepView()->headingText(), QStringLiteral("Step 2 of 5"));
+        }
+        // Frames still reach the lesson with no panel in between; both panels follow.
+        emit robot.frameReceived(10.0, frameWith({{7, oi::bit::BumpRight}}));
+        emit robot.frameReceived(10.0 + LessonRunner::kReadSeconds, frameWith({}));
+        QCOMPARE(again.stepView()->headingText(), QStringLiteral("Step 3 of 5"));
+        QCOMPARE(second.stepView()->headingText(), QStringLiteral("Step 3 of 5"));
+    }
+
     void stepListShowsWholeSentences()
     {
-        LessonPanel panel;
+        RobotLesson lesson;
+        LessonPanel panel(lesson);
         panel.resize(700, 500);
         panel.show();
         QVERIFY(panel.openLesson(QStringLiteral(":/lessons/cliff_sensors.json")));
@@ -140,12 +179,9 @@ private slots:
     void badLessonFileLeavesThePanelAsItWas()
     {
         RobotSession robot;
-        LessonPanel panel;
-        panel.setRobot(&robot);
-        QVERIFY(panel.openLesson(kBumpers));
-        emit robot.frameReceived(1.0, frameWith({{7, oi::bit::BumpLeft}}));
-        emit robot.frameReceived(1.0 + LessonRunner::kReadSeconds, frameWith({}));
-        QCOMPARE(panel.runner().currentStep(), 1);
+        RobotLesson lesson;
+        LessonPanel panel(lesson);
+        passFirstBumperStep(panel, robot);
 
         QTemporaryDir dir;
         const QString path = dir.filePath("my_lesson.json");
@@ -176,7 +212,8 @@ private slots:
 
     void chooserOpensAShippedLesson()
     {
-        LessonPanel panel;
+        RobotLesson lesson;
+        LessonPanel panel(lesson);
         QCOMPARE(panel.chooser()->count(), 1 + lesson::shippedLessonPaths().size());
         QVERIFY(!panel.runner().isRunning());
         const int cliffs = panel.chooser()->findData(":/lessons/cliff_sensors.json");
@@ -191,7 +228,8 @@ private slots:
     void everyTextIsTranslated()
     {
         RobotSession robot;
-        LessonPanel panel;
+        RobotLesson lesson;
+        LessonPanel panel(lesson);
         panel.setRobot(&robot);
         panel.resize(1200, 800);
         panel.show();
@@ -215,7 +253,8 @@ private slots:
         robot.connectTo(oilink::LinkSettings{});
         QTRY_VERIFY_WITH_TIMEOUT(robot.isLive(), 10000);
         QTRY_VERIFY_WITH_TIMEOUT(robot.snapshotCount() > 200, 20000); // a few seconds to plot
-        LessonPanel panel;
+        RobotLesson lesson;
+        LessonPanel panel(lesson);
         panel.setRobot(&robot);
         panel.resize(1400, 900);
         panel.show();

@@ -367,6 +367,20 @@ private slots:
         QVERIFY(allOff->toolTip().isEmpty());
     }
 
+    // The panel keeps no mode of its own: another robot, selected, comes with
+    // its own mode, not the last robot's Passive.
+    void theModeComesWithTheRobot()
+    {
+        usePanel(oi::ProfileId::Create2);
+        m_panel->setMode(reportedMode(m_panel->robotProfile(), oi::OiMode::Passive));
+        QVERIFY(!child<QGroupBox>("motorsGroup")->isEnabled());
+        const oi::RobotProfile &create1 = oi::profile(oi::ProfileId::Create1);
+        m_panel->setProfile(create1, reportedMode(create1, oi::OiMode::Safe));
+        QVERIFY(child<QGroupBox>("lowSideGroup")->isEnabled());
+        QVERIFY(child<QGroupBox>("lowSideGroup")->toolTip().isEmpty());
+        QVERIFY(child<QPushButton>("allOff")->isEnabled());
+    }
+
     void setProfileSendsNothingAndClears()
     {
         usePanel(oi::ProfileId::Create2);

@@ -1,13 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "pseudo_translation.h"
-#include "reported_mode.h"
+#include "robot_session.h"
 #include "sensor_scenes.h"
 #include "robot_profile.h"
 #include "script_editor.h"
 #include "script_lines.h"
+#include "transport_factory.h"
 #include "typed_command_bytes.h"
-#include "virtual_robot.h"
-#include "world.h"
 
 #include <QApplication>
 #include <QComboBox>
@@ -39,6 +38,10 @@ QByteArray bytes(std::initializer_list<int> values)
 }
 
 const oi::RobotProfile &create1() { return oi::profile(oi::ProfileId::Create1); }
+
+// The first example's body ("drive 300 straight; wait-distance 400; drive 0 0"),
+// as the robot holds it once uploaded (RobotSession::uploadedScript()).
+const QByteArray kExampleBody = QByteArray::fromHex("89012c80009c01908900000000");
 
 // The sent messages of a spy, as spaced decimal text.
 QStringList sent(const QSignalSpy &spy)
@@ -114,8 +117,10 @@ private slots:
         QTest::mouseClick(editor.button("upload"), Qt::LeftButton);
         QCOMPARE(sent(spy), QStringList{"152 13 137 1 44 0 0 156 1 144 158 251 158 251 153"});
         QCOMPARE(editor.byteCountText(), QString("13 / 100 bytes"));
+        // Play goes to the robot's session (playAsksTheRobot).
+        QSignalSpy play(&editor, &ScriptEditor::playRequested);
         QTest::mouseClick(editor.button("play"), Qt::LeftButton);
-        QCOMPARE(sent(spy).last(), QString("153"));
+        QCOMPARE(play.count(), 1);
     }
 
     void byteCountFollowsTyping()
@@ -201,13 +206,13 @@ private slots:
         askForScript(editor);
         // Asking sends nothing itself: the link does.
         QCOMPARE(sent(spy), (QStringList{"152 13 137 1 44 128 0 156 1 144 137 0 0 0 0"}));
-        editor.showScriptReply(bytes({137, 1, 44, 128, 0, 156, 1, 144, 137, 0, 0, 0, 0}));
+        editor.showScriptReply(bytes({137, 1, 44, 128, 0, 156, 1, 144, 137, 0, 0, 0, 0}), kExampleBody);
         QVERIFY2(editor.showScriptText().contains("matches what was sent"), qPrintable(editor.showScriptText()));
         QVERIFY(editor.showScriptText().contains("drive 300 straight; wait-distance 400; drive 0 0"));
         QVERIFY(editor.button("show")->isEnabled());
 
         // A reply nobody asked for is not read.
-        editor.showScriptReply(bytes({153}));
+        editor.showScriptReply(bytes({153}), kExampleBody);
         QVERIFY(editor.showScriptText().contains("matches what was sent"));
         QCOMPARE(spy.count(), 1);
     }
@@ -219,7 +224,7 @@ private slots:
         editor.loadExample(0);
         QTest::mouseClick(editor.button("upload"), Qt::LeftButton);
         askForScript(editor);
-        editor.showScriptReply(bytes({157, 0, 90}));
+        editor.showScriptReply(bytes({157, 0, 90}), kExampleBody);
         const QString result = editor.showScriptText();
         QVERIFY2(result.contains("differs"), qPrintable(result));
         QVERIFY(!result.contains("matches"));
@@ -236,7 +241,7 @@ private slots:
         QVERIFY2(editor.showScriptText().contains("no reply to Show Script"), qPrintable(editor.showScriptText()));
         QVERIFY(editor.button("show")->isEnabled());
         // A late reply is ignored.
-        editor.showScriptReply(bytes({153, 153, 153}));
+        editor.showScriptReply(bytes({153, 153, 153}), std::nullopt);
         QVERIFY(editor.showScriptText().contains("no reply"));
     }
 
@@ -247,7 +252,7 @@ private slots:
         askForScript(editor);
         editor.setProfile(oi::profile(oi::ProfileId::Create2));
         editor.setProfile(create1());
-        editor.showScriptReply(bytes({153}));
+        editor.showScriptReply(bytes({153}), std::nullopt);
         QVERIFY(editor.showScriptText().isEmpty());
         QVERIFY(editor.button("show")->isEnabled());
     }
@@ -278,51 +283,49 @@ private slots:
         QCOMPARE(sent(spy), QStringList{expected});
     }
 
-    // ERRATA 20: played in Passive, the script's Drive is ignored, its Wait
-    // Distance never ends and the robot hears nothing more. The editor
-    // enters Safe first, so the robot drives its 40 cm and answers again.
-    void playInPassiveEntersSafeFirst_data()
+    // Play asks the robot's session, which enters Safe first in Passive
+    // (RobotSession::playScript()); the editor sends nothing itself.
+    void playAsksTheRobot()
     {
-        QTest::addColumn<bool>("passive");
-        QTest::addColumn<QStringList>("expected");
-        QTest::newRow("passive") << true << QStringList{"Safe asked", "153"};
-        QTest::newRow("safe") << false << QStringList{"153"};
-    }
-    void playInPassiveEntersSafeFirst()
-    {
-        QFETCH(bool, passive);
-        QFETCH(QStringList, expected);
-        sim::VirtualRobot robot(create1());
-        robot.setWorld(sim::World{});
-        const auto give = [&robot](const QByteArray &b) {
-            robot.receive(std::span(reinterpret_cast<const std::uint8_t *>(b.constData()), std::size_t(b.size())));
-        };
-        give(bytes({128, passive ? 128 : 131}));
         ScriptEditor editor;
         editor.setProfile(create1());
-        editor.setMode(reportedMode(create1(), passive ? oi::OiMode::Passive : oi::OiMode::Safe));
-        editor.loadExample(0); // "Drive 40 cm and stop"
-        // What the window does with each: the commands go to the robot, and
-        // Safe is asked through the robot's session.
-        QStringList log;
-        connect(&editor, &ScriptEditor::sendRequested, this, [&](const std::vector<oi::OiCommand> &commands) {
-            const QByteArray b = bytesOfCommands(create1(), commands);
-            log << spaced(b);
-            give(b);
-        });
-        connect(&editor, &ScriptEditor::safeRequested, this, [&] {
-            log << "Safe asked";
-            give(bytes({131}));
-        });
-        QTest::mouseClick(editor.button("upload"), Qt::LeftButton);
+        QSignalSpy sent(&editor, &ScriptEditor::sendRequested);
+        QSignalSpy play(&editor, &ScriptEditor::playRequested);
         QTest::mouseClick(editor.button("play"), Qt::LeftButton);
-        QCOMPARE(log.mid(1), expected);
-        robot.advance(std::chrono::seconds(3));
-        QVERIFY2(robot.truePose().travelledMm >= 400, qPrintable(QString::number(robot.truePose().travelledMm)));
-        (void)robot.takeOutput();
-        give(bytes({142, 35})); // Sensors: OI mode
-        const oi::Bytes reply = robot.takeOutput();
-        QCOMPARE(spaced(QByteArray(reinterpret_cast<const char *>(reply.data()), qsizetype(reply.size()))), QString("2"));
+        QCOMPARE(play.count(), 1);
+        QCOMPARE(sent.count(), 0);
+    }
+
+    // The uploaded script is the robot's, not the editor's: an editor made
+    // after the upload (the dock closed and opened again), and a second
+    // one, compare the robot's script with it and agree.
+    void theUploadIsTheRobots()
+    {
+        RobotSession robot;
+        robot.setTransportFactory(transports::transportFactory());
+        robot.connectTo(oilink::LinkSettings::virtualRobotOf(oi::ProfileId::Create1, oi::ProfileId::Create1));
+        QTRY_VERIFY_WITH_TIMEOUT(robot.isLive(), 5000);
+        {
+            ScriptEditor editor;
+            editor.setProfile(create1());
+            editor.loadExample(0);
+            connect(&editor, &ScriptEditor::sendRequested, &robot,
+                    [&robot](const std::vector<oi::OiCommand> &commands) { robot.send(commands); });
+            QTest::mouseClick(editor.button("upload"), Qt::LeftButton);
+        }
+        QCOMPARE(robot.uploadedScript(), std::optional(kExampleBody));
+        ScriptEditor again, second;
+        for (ScriptEditor *editor : {&again, &second}) {
+            editor->setProfile(create1());
+            // As the window wires it: the robot's reply beside the robot's upload.
+            connect(&robot, &RobotSession::scriptShown, editor,
+                    [editor, &robot](const QByteArray &script) { editor->showScriptReply(script, robot.uploadedScript()); });
+            askForScript(*editor);
+        }
+        robot.showScript();
+        QTRY_VERIFY_WITH_TIMEOUT(!again.showScriptText().contains("Asking"), 5000);
+        QVERIFY2(again.showScriptText().contains("matches what was sent"), qPrintable(again.showScriptText()));
+        QCOMPARE(second.showScriptText(), again.showScriptText());
     }
 
     void disabledOnCreate2()
@@ -473,7 +476,7 @@ private slots:
         editor.loadExample(0);
         QTest::mouseClick(editor.button("upload"), Qt::LeftButton);
         askForScript(editor);
-        editor.showScriptReply(bytes({137, 1, 44, 128, 0, 156, 1, 144}));
+        editor.showScriptReply(bytes({137, 1, 44, 128, 0, 156, 1, 144}), kExampleBody);
         QVERIFY(editor.showScriptText().contains("differs"));
         QVERIFY(editor.errorText().isEmpty());
         editor.resize(editor.size().expandedTo(editor.sizeHint()));

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "connection_bar.h"
 
+#include "robot_address.h"
+
 #include "display_palette.h"
 
 #include <QComboBox>
@@ -140,9 +142,11 @@ void ConnectionBar::changeEvent(QEvent *e)
 
 void ConnectionBar::showOwnError(OwnError error)
 {
+    QString host;
+    quint16 port = 0;
+    // The bridge's address is read as on every command line, with the same words.
     showError(error == OwnError::NoPort ? tr("Choose a serial port or type its path.")
-                                        : tr("Type the bridge as host:port with a port from 1 to 65535, "
-                                             "e.g. raspberrypi:3333."));
+                                        : oilink::RobotAddress::readHostPort(m_badBridge, &host, &port));
     m_ownError = error;
 }
 
@@ -227,7 +231,11 @@ void ConnectionBar::tryConnect()
         showOwnError(OwnError::NoPort);
         return;
     }
-    if (r.transport == ConnectionRequest::Transport::Tcp && (r.host.isEmpty() || r.tcpPort == 0)) {
+    QString host;
+    quint16 port = 0;
+    if (r.transport == ConnectionRequest::Transport::Tcp
+        && !oilink::RobotAddress::readHostPort(m_tcp->text().trimmed(), &host, &port).isEmpty()) {
+        m_badBridge = m_tcp->text().trimmed();
         showOwnError(OwnError::BadBridge);
         return;
     }

@@ -83,6 +83,7 @@ private:
     bool m_connected = false;
     QLabel *m_error = nullptr;
     OwnError m_ownError = OwnError::None;
+    QString m_badBridge; // the bridge address that BadBridge is about
 };
 
 Q_DECLARE_METATYPE(ConnectionRequest)

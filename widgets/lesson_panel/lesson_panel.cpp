@@ -29,7 +29,7 @@ QString stepCaption(int index, const QString &text)
 
 } // namespace
 
-LessonPanel::LessonPanel(QWidget *parent) : QWidget(parent)
+LessonPanel::LessonPanel(RobotLesson &lesson, QWidget *parent) : QWidget(parent), m_lesson(lesson)
 {
     m_chooser = new QComboBox(this);
     m_chooser->setObjectName("lessonChooser");
@@ -95,52 +95,31 @@ LessonPanel::LessonPanel(QWidget *parent) : QWidget(parent)
     connect(m_skipButton, &QPushButton::clicked, this, &LessonPanel::nextStep);
     connect(m_restartButton, &QPushButton::clicked, this, &LessonPanel::restart);
     connect(m_steps, &QListWidget::itemActivated, this,
-            [this](QListWidgetItem *item) { m_runner.goToStep(m_steps->row(item)); });
-    connect(&m_runner, &LessonRunner::stepChanged, this, [this] {
+            [this](QListWidgetItem *item) { m_lesson.runner().goToStep(m_steps->row(item)); });
+    connect(&m_lesson, &RobotLesson::robotChanged, this, &LessonPanel::showRobot);
+    connect(&m_lesson.runner(), &LessonRunner::stepChanged, this, [this] {
         showSteps();
         showCurrentStep();
         emit lessonChanged();
     });
 
     retranslateUi();
-    closeLesson();
+    // The lesson as it is: one already running is shown, not closed.
+    fillChooser();
+    showSteps();
+    showCurrentStep();
+    showRobot();
 }
 
-void LessonPanel::setRobot(RobotSession *robot, TruePose truePose)
+void LessonPanel::showRobot()
 {
-    const bool another = robot != m_robot;
-    disconnect(m_frames);
-    disconnect(m_gone);
-    m_robot = robot;
-    m_truePose = std::move(truePose);
-    if (robot) {
-        m_frames = connect(robot, &RobotSession::frameReceived, this, &LessonPanel::onFrame);
-        m_gone = connect(robot, &QObject::destroyed, this, [this] { setRobot(nullptr); });
-        m_view->setProfile(robot->robotProfile());
+    if (RobotSession *robot = m_lesson.robot()) {
+        m_view->setProfile(*m_lesson.seenProfile());
         m_view->setHistory(&robot->history());
     } else {
         m_view->setHistory(nullptr);
     }
-    if (another && m_runner.isRunning()) // the step starts again on this robot
-        m_runner.goToStep(m_runner.currentStep());
     updateNotice();
-}
-
-void LessonPanel::onFrame(double seconds, const oi::SensorSnapshot &frame)
-{
-    if (!m_runner.isRunning() || !m_robot)
-        return;
-    if (&frame.robotProfile() != &m_view->profile()) { // the robot said what it is
-        m_view->setProfile(frame.robotProfile());
-        updateNotice();
-    }
-    LessonFrame f;
-    f.seconds = seconds;
-    f.snapshot = frame;
-    f.odometry = m_robot->odometry().pose();
-    if (m_truePose)
-        f.truePose = m_truePose();
-    m_runner.update(f);
 }
 
 bool LessonPanel::openLesson(const QString &path, QString *error)
@@ -154,13 +133,11 @@ bool LessonPanel::openLesson(const QString &path, QString *error)
             *error = why;
         return false;
     }
-    m_path = path;
     if (!path.startsWith(QLatin1Char(':')) && !m_openedFiles.contains(path))
         m_openedFiles << path;
     showError(QString());
-    const oi::RobotProfile &profile = m_robot ? m_robot->robotProfile() : oi::profile(oi::ProfileId::Create2);
-    m_view->setProfile(profile);
-    m_runner.start(*lesson, profile);
+    m_view->setProfile(robot() ? robot()->robotProfile() : oi::profile(oi::ProfileId::Create2));
+    m_lesson.start(*lesson, path);
     fillChooser();
     updateNotice();
     return true;
@@ -174,14 +151,13 @@ void LessonPanel::openLessonFile()
         openLesson(path);
 }
 
-void LessonPanel::restart() { m_runner.goToStep(0); }
-void LessonPanel::nextStep() { m_runner.goToStep(m_runner.currentStep() + 1); }
-void LessonPanel::previousStep() { m_runner.goToStep(m_runner.currentStep() - 1); }
+void LessonPanel::restart() { m_lesson.runner().goToStep(0); }
+void LessonPanel::nextStep() { m_lesson.runner().goToStep(m_lesson.runner().currentStep() + 1); }
+void LessonPanel::previousStep() { m_lesson.runner().goToStep(m_lesson.runner().currentStep() - 1); }
 
 void LessonPanel::closeLesson()
 {
-    m_runner.stop();
-    m_path.clear();
+    m_lesson.stop();
     fillChooser();
     showSteps();
     showCurrentStep();
@@ -194,7 +170,7 @@ void LessonPanel::onChosen(int index)
     const QString path = m_chooser->itemData(index).toString();
     if (path.isEmpty())
         closeLesson();
-    else if (path != m_path)
+    else if (path != m_lesson.path())
         openLesson(path);
 }
 
@@ -215,13 +191,13 @@ void LessonPanel::fillChooser()
                                : QStringLiteral("%1 (%2)").arg(title, QFileInfo(path).fileName()),
                            path);
     }
-    m_chooser->setCurrentIndex(std::max(0, m_chooser->findData(m_path)));
+    m_chooser->setCurrentIndex(std::max(0, m_chooser->findData(m_lesson.path())));
 }
 
 void LessonPanel::showSteps()
 {
-    const bool running = m_runner.isRunning();
-    const Lesson &lesson = m_runner.lesson();
+    const bool running = m_lesson.runner().isRunning();
+    const Lesson &lesson = m_lesson.runner().lesson();
     m_steps->clear();
     m_steps->setVisible(running);
     m_summary->setText(running ? lesson::translated(lesson.summary)
@@ -230,29 +206,29 @@ void LessonPanel::showSteps()
     for (int i = 0; running && i < lesson.steps.size(); ++i) {
         auto *item = new QListWidgetItem(stepCaption(i, lesson::translated(lesson.steps[i].text)), m_steps);
         QFont f = item->font();
-        if (m_runner.isStepDone(i)) {
+        if (m_lesson.runner().isStepDone(i)) {
             item->setText(QStringLiteral("✔ ") + item->text());
             item->setBackground(QColor(0x1b, 0x5e, 0x20));
             item->setForeground(Qt::white);
-        } else if (i == m_runner.currentStep()) {
+        } else if (i == m_lesson.runner().currentStep()) {
             item->setText(QStringLiteral("▶ ") + item->text());
             f.setBold(true);
         }
         item->setFont(f);
     }
-    if (running && m_runner.currentStep() < m_steps->count())
-        m_steps->setCurrentRow(m_runner.currentStep());
-    m_backButton->setEnabled(running && m_runner.currentStep() > 0);
-    m_skipButton->setEnabled(running && !m_runner.isFinished());
+    if (running && m_lesson.runner().currentStep() < m_steps->count())
+        m_steps->setCurrentRow(m_lesson.runner().currentStep());
+    m_backButton->setEnabled(running && m_lesson.runner().currentStep() > 0);
+    m_skipButton->setEnabled(running && !m_lesson.runner().isFinished());
     m_restartButton->setEnabled(running);
 }
 
 void LessonPanel::showCurrentStep()
 {
-    const Lesson &lesson = m_runner.lesson();
-    const int step = m_runner.currentStep();
-    m_viewScroll->setVisible(m_runner.isRunning());
-    if (m_runner.isRunning() && step < lesson.steps.size())
+    const Lesson &lesson = m_lesson.runner().lesson();
+    const int step = m_lesson.runner().currentStep();
+    m_viewScroll->setVisible(m_lesson.runner().isRunning());
+    if (m_lesson.runner().isRunning() && step < lesson.steps.size())
         m_view->setStep(&lesson.steps[step], step, int(lesson.steps.size()));
     else
         m_view->setStep(nullptr, 0, 0);
@@ -261,15 +237,15 @@ void LessonPanel::showCurrentStep()
 
 void LessonPanel::refresh()
 {
-    if (!isVisible() || !m_runner.isRunning())
+    if (!isVisible() || !m_lesson.runner().isRunning())
         return;
-    const bool live = m_robot && m_robot->isLive();
-    m_view->refresh(m_robot ? m_robot->latest() : oi::SensorSnapshot(), !live, &m_runner);
+    const bool live = robot() && robot()->isLive();
+    m_view->refresh(robot() ? robot()->latest() : oi::SensorSnapshot(), !live, &m_lesson.runner());
     // A goal the robot's state now rules out says so, and what to do.
     QString outOfReach;
-    if (m_robot && !m_runner.isFinished() && m_runner.progress() < 1) {
-        const LessonGoal &goal = m_runner.lesson().steps[m_runner.currentStep()].goal;
-        outOfReach = m_robot->mode().outOfReach(lesson::goalPackets(goal), lesson::goalDrives(goal));
+    if (robot() && !m_lesson.runner().isFinished() && m_lesson.runner().progress() < 1) {
+        const LessonGoal &goal = m_lesson.runner().lesson().steps[m_lesson.runner().currentStep()].goal;
+        outOfReach = robot()->mode().outOfReach(lesson::goalPackets(goal), lesson::goalDrives(goal));
     }
     m_view->setOutOfReach(outOfReach);
 }
@@ -286,12 +262,12 @@ QString LessonPanel::noticeText() const { return m_notice->isHidden() ? QString(
 void LessonPanel::updateNotice()
 {
     QString notice;
-    if (m_runner.isFinished())
+    if (m_lesson.runner().isFinished())
         notice = tr("Lesson complete: every step is done. Well done!");
-    else if (m_runner.isRunning() && m_robot && !m_runner.lesson().suits(m_robot->robotProfile()))
+    else if (m_lesson.runner().isRunning() && robot() && !m_lesson.runner().lesson().suits(robot()->robotProfile()))
         notice = tr("This lesson needs a robot this one is not (%1): some goals cannot be met.")
-                     .arg(m_runner.lesson().profiles.join(QStringLiteral(", ")));
-    else if (m_runner.isRunning() && !m_robot)
+                     .arg(m_lesson.runner().lesson().profiles.join(QStringLiteral(", ")));
+    else if (m_lesson.runner().isRunning() && !robot())
         notice = tr("No robot is selected: the goals are checked on the selected robot's data.");
     m_notice->setText(notice);
     m_notice->setVisible(!notice.isEmpty());

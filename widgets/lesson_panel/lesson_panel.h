@@ -2,7 +2,7 @@
 #pragma once
 
 #include "lesson.h"
-#include "lesson_runner.h"
+#include "robot_lesson.h"
 
 #include <QWidget>
 
@@ -18,21 +18,22 @@ class QScrollArea;
 class RobotSession;
 
 // The lesson panel: a chooser of the shipped lessons and lesson files, the
-// lesson's steps (done ones green), and the current step's view. The goal of
-// the current step is checked on every frame of the robot it is given; when
-// it is met the step turns green and the lesson moves on. A bad lesson file
-// gets a clear error and leaves the running lesson as it was.
+// lesson's steps (done ones green), and the current step's view. The lesson
+// itself is the RobotLesson it shows, which checks the current step's goal on
+// every frame of its robot; when it is met the step turns green and the
+// lesson moves on. A bad lesson file gets a clear error and leaves the
+// running lesson as it was.
 class LessonPanel : public QWidget {
     Q_OBJECT
 public:
-    using TruePose = std::function<std::optional<oi::Pose>()>;
+    using TruePose = RobotLesson::TruePose;
 
-    explicit LessonPanel(QWidget *parent = nullptr);
+    explicit LessonPanel(RobotLesson &lesson, QWidget *parent = nullptr);
 
     // The robot the lesson runs on (nullptr: none), and where it truly is
     // when it is a virtual robot (returns nullopt for a real one).
-    void setRobot(RobotSession *robot, TruePose truePose = {});
-    RobotSession *robot() const { return m_robot; }
+    void setRobot(RobotSession *robot, TruePose truePose = {}) { m_lesson.setRobot(robot, std::move(truePose)); }
+    RobotSession *robot() const { return m_lesson.robot(); }
 
     // Opens a lesson file (a shipped one is ":/lessons/NAME.json") and starts
     // it at its first step. On failure returns false, shows why and says it
@@ -49,8 +50,8 @@ public:
     // From the display timer: brings the step view up to date.
     void refresh();
 
-    const LessonRunner &runner() const { return m_runner; }
-    QString lessonPath() const { return m_path; }
+    const LessonRunner &runner() const { return m_lesson.runner(); }
+    QString lessonPath() const { return m_lesson.path(); }
     QString errorText() const;
     QString noticeText() const;
     QComboBox *chooser() const { return m_chooser; }
@@ -68,19 +69,14 @@ private:
     void retranslateUi();
     void fillChooser();
     void onChosen(int index);
-    void onFrame(double seconds, const oi::SensorSnapshot &frame);
+    void showRobot();
     void showSteps();
     void showCurrentStep();
     void showError(const QString &message);
     void updateNotice();
 
-    LessonRunner m_runner;
-    QString m_path;
+    RobotLesson &m_lesson;
     QStringList m_openedFiles; // lesson files opened by hand, offered again in the chooser
-    RobotSession *m_robot = nullptr;
-    TruePose m_truePose;
-    QMetaObject::Connection m_frames;
-    QMetaObject::Connection m_gone;
 
     QComboBox *m_chooser;
     QPushButton *m_openButton;

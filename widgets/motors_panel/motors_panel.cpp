@@ -232,7 +232,8 @@ void MotorsPanel::retranslateUi()
     m_allOff->setText(tr("All off"));
 
     showLastSent();
-    refreshGroups();
+    // What the mode says comes again with the mode (MotorsPanel::setMode()).
+    refreshGroups(nullptr);
 }
 
 void MotorsPanel::changeEvent(QEvent *event)
@@ -282,20 +283,19 @@ QSlider *MotorsPanel::dutySlider(const QString &name, int min, int max)
     return slider;
 }
 
-void MotorsPanel::setProfile(const oi::RobotProfile &profile)
+void MotorsPanel::setProfile(const oi::RobotProfile &profile, const RobotMode &mode)
 {
     m_profile = &profile;
     clearControls();
-    refreshGroups();
+    refreshGroups(&mode);
 }
 
 void MotorsPanel::setMode(const RobotMode &mode)
 {
-    m_mode = mode;
-    refreshGroups();
+    refreshGroups(&mode);
 }
 
-void MotorsPanel::refreshGroups()
+void MotorsPanel::refreshGroups(const RobotMode *mode)
 {
     using C = oi::Command;
     QStringList missing;
@@ -305,10 +305,12 @@ void MotorsPanel::refreshGroups()
                               std::pair{m_digitalOutputsGroup, C::DigitalOutputs},
                               std::pair{m_sendIrGroup, C::SendIr}}) {
         const bool available = m_profile->has(command);
-        const QString why = m_mode.whyNot(command);
         g->setVisible(available);
-        g->setEnabled(available && why.isEmpty());
-        g->setToolTip(why);
+        if (mode) {
+            const QString why = mode->whyNot(command);
+            g->setEnabled(available && why.isEmpty());
+            g->setToolTip(why);
+        }
         if (!available)
             missing << commandTitle(command);
     }
@@ -317,9 +319,11 @@ void MotorsPanel::refreshGroups()
                                                    .arg(fromView(m_profile->name), missing.join(", ")));
     m_unavailable->setVisible(!missing.isEmpty());
     const C off = m_profile->has(C::Motors) ? C::Motors : C::LowSideDrivers;
-    const QString why = m_mode.whyNot(off);
-    m_allOff->setEnabled(m_profile->has(off) && why.isEmpty());
-    m_allOff->setToolTip(why);
+    if (mode) {
+        const QString why = mode->whyNot(off);
+        m_allOff->setEnabled(m_profile->has(off) && why.isEmpty());
+        m_allOff->setToolTip(why);
+    }
 }
 
 void MotorsPanel::clearControls()

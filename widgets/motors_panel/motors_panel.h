@@ -28,11 +28,14 @@ class MotorsPanel : public QWidget {
 public:
     explicit MotorsPanel(QWidget *parent = nullptr);
 
-    // Puts every control back to off without sending anything.
-    void setProfile(const oi::RobotProfile &profile);
+    // Puts every control back to off without sending anything; `mode` is
+    // the robot's (see setMode()).
+    void setProfile(const oi::RobotProfile &profile, const RobotMode &mode = RobotMode());
     const oi::RobotProfile &robotProfile() const { return *m_profile; }
-    // The selected robot's mode: in Passive the groups the robot would ignore
-    // are disabled, the reason as their tooltip (Buttons works in Passive).
+    // The selected robot's mode, read from its session each time it
+    // changes (the panel keeps no copy): in Passive the groups the robot
+    // would ignore are disabled, the reason as their tooltip (Buttons works
+    // in Passive).
     void setMode(const RobotMode &mode);
 
     // The last command sent, as decimal bytes ("138 13"), or empty.
@@ -63,12 +66,12 @@ private:
     void sendDigitalOutputs();
     void send(const oi::OiCommand &command);
     void send(const std::vector<oi::OiCommand> &commands);
-    void refreshGroups();
+    // Which groups the profile has; with `mode`, which the mode lets work.
+    void refreshGroups(const RobotMode *mode);
     void showLastSent();
     void clearControls();
 
     const oi::RobotProfile *m_profile = &oi::profile(oi::ProfileId::Create2);
-    RobotMode m_mode;
 
     QGroupBox *m_motorsGroup = nullptr;
     QCheckBox *m_mainBrush = nullptr;

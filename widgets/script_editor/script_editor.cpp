@@ -120,7 +120,7 @@ ScriptEditor::ScriptEditor(QWidget *parent) : QWidget(parent)
     addButton("play", QString());
     addButton("show", QString());
     connect(button("upload"), &QPushButton::clicked, this, &ScriptEditor::upload);
-    connect(button("play"), &QPushButton::clicked, this, &ScriptEditor::play);
+    connect(button("play"), &QPushButton::clicked, this, &ScriptEditor::playRequested);
     connect(button("show"), &QPushButton::clicked, this, &ScriptEditor::showScript);
 
     auto *demoBox = m_demoBox = new QGroupBox(m_controls);
@@ -239,9 +239,8 @@ QString ScriptEditor::disabledReason() const { return m_reason->isHidden() ? QSt
 void ScriptEditor::setProfile(const oi::RobotProfile &profile)
 {
     m_profile = &profile;
-    // Another robot: what was uploaded and any reply still due belong to the old one.
+    // Another robot: any reply still due belongs to the old one.
     m_awaitingReply = false;
-    m_uploaded.reset();
     m_showResult->clear();
     m_showResult->setVisible(false);
     const oi::CommandEncoder encoder(profile);
@@ -356,20 +355,7 @@ void ScriptEditor::upload()
         showError(fromStd(bytes.error().describe()), std::nullopt);
         return;
     }
-    m_uploaded = body;
     send(script);
-}
-
-void ScriptEditor::setMode(const RobotMode &mode)
-{
-    m_mode = mode;
-}
-
-void ScriptEditor::play()
-{
-    if (!m_mode.whyNot(oi::Command::PlayScript).isEmpty())
-        emit safeRequested();
-    send({oi::Command::PlayScript, {}, {}});
 }
 
 void ScriptEditor::showScript()
@@ -395,17 +381,17 @@ QString ScriptEditor::scriptAsText(const QByteArray &body) const
     return tr("%1 (not readable: %2)").arg(numbers.join(u' '), fromStd(text.error().describe()));
 }
 
-void ScriptEditor::showScriptReply(const QByteArray &body)
+void ScriptEditor::showScriptReply(const QByteArray &body, const std::optional<QByteArray> &uploaded)
 {
     if (!m_awaitingReply)
         return;
     m_awaitingReply = false;
-    if (m_uploaded && body == *m_uploaded) {
+    if (uploaded && body == *uploaded) {
         m_showResult->setText(tr("The robot's script matches what was sent: %1").arg(scriptAsText(body)));
     } else {
         m_showResult->setText(tr("The robot's script differs from what was sent.\nOn the robot: %1\nSent: %2")
                                   .arg(scriptAsText(body),
-                                       m_uploaded ? scriptAsText(*m_uploaded) : tr("nothing uploaded yet")));
+                                       uploaded ? scriptAsText(*uploaded) : tr("nothing uploaded yet")));
     }
     refreshEnabled();
 }

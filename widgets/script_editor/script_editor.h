@@ -2,7 +2,6 @@
 #pragma once
 
 #include "result.h"
-#include "robot_mode.h"
 #include "robot_profile.h"
 #include "typed_commands.h"
 
@@ -48,19 +47,17 @@ public:
     QString disabledReason() const;         // empty on the Create 1
 
 public slots:
-    // The robot's answer to showScriptRequested(): the script's bytes, or why
-    // there is none.
-    void showScriptReply(const QByteArray &script);
+    // The robot's answer to showScriptRequested(): the script's bytes, set
+    // beside what was last uploaded to that robot (RobotSession::uploadedScript(),
+    // nullopt: nothing), or why there is none.
+    void showScriptReply(const QByteArray &script, const std::optional<QByteArray> &uploaded);
     void showScriptFailed(const QString &reason);
-    // The selected robot's mode: in Passive (or Off) Play asks for Safe
-    // first, since a script played in Passive cannot drive, so its waits
-    // never end and the robot hears nothing more (ERRATA 20).
-    void setMode(const RobotMode &mode);
 
 signals:
     void sendRequested(const std::vector<oi::OiCommand> &commands);
-    // Play in Passive: Safe, through the robot's session, before Play Script.
-    void safeRequested();
+    // Play (153): the robot's session plays it, in Safe if it is in Passive
+    // (RobotSession::playScript()).
+    void playRequested();
     // Show Script (154): the robot's link asks, around its own stream.
     void showScriptRequested();
 
@@ -72,7 +69,6 @@ private:
     QPushButton *addButton(const QString &name, const QString &text);
     void send(const oi::OiCommand &command);
     void upload();
-    void play();
     void showScript();
     void showError(const QString &message, std::optional<int> line);
     void refreshEnabled();
@@ -80,7 +76,6 @@ private:
 
     const oi::RobotProfile *m_profile = &oi::profile(oi::ProfileId::Create2);
     ScriptTextEdit *m_editor = nullptr;
-    RobotMode m_mode;
     QComboBox *m_examples = nullptr;
     QLabel *m_reason = nullptr;
     QLabel *m_byteCount = nullptr;
@@ -94,6 +89,5 @@ private:
 
     std::optional<QByteArray> m_body;  // the assembled script, if it fits
     std::optional<int> m_errorLine;
-    std::optional<QByteArray> m_uploaded; // the body last sent with 152
     bool m_awaitingReply = false;
 };

@@ -15,6 +15,7 @@
 #include <chrono>
 
 #include <algorithm>
+#include <array>
 #include <cstring>
 #include <span>
 
@@ -62,10 +63,30 @@ QByteArray makeRecord(recording::RecordKind kind, qint64 timeUs, const QByteArra
     appendLittleEndian<qint64>(record, timeUs);
     appendLittleEndian<quint16>(record, static_cast<quint16>(payload.size()));
     record += payload;
-    appendLittleEndian<quint16>(record, qChecksum(record));
+    appendLittleEndian<quint16>(record, recording::checksum(record));
     return record;
 }
+// CRC-16 of ISO 3309 (reflected 0x1021, starts at 0xFFFF, inverted at the
+// end) for each value of a byte.
+constexpr std::array<quint16, 256> kCrcTable = [] {
+    std::array<quint16, 256> table{};
+    for (unsigned byte = 0; byte < 256; ++byte) {
+        unsigned crc = byte;
+        for (int bit = 0; bit < 8; ++bit)
+            crc = (crc & 1) ? (crc >> 1) ^ 0x8408 : crc >> 1;
+        table[byte] = static_cast<quint16>(crc);
+    }
+    return table;
+}();
 } // namespace
+
+quint16 recording::checksum(QByteArrayView bytes)
+{
+    unsigned crc = 0xFFFF;
+    for (const char c : bytes)
+        crc = (crc >> 8) ^ kCrcTable[(crc ^ static_cast<quint8>(c)) & 0xFF];
+    return static_cast<quint16>(~crc);
+}
 
 // --- Writing ---
 
@@ -271,7 +292,7 @@ std::optional<Recording> Recording::parse(const QByteArray &data, const QString 
             break;
         }
         const QByteArrayView covered(head, kRecordHeadSize + length);
-        if (readLittleEndian<quint16>(head + kRecordHeadSize + length) != qChecksum(covered)) {
+        if (readLittleEndian<quint16>(head + kRecordHeadSize + length) != recording::checksum(covered)) {
             damaged(QCoreApplication::translate("Recording", "checksum mismatch"));
             break;
         }
@@ -385,6 +406,7 @@ void Recording::indexFrames()
     oi::StreamParser parser(*m_stream.profile);
     const std::vector<std::uint8_t> ids(m_stream.packets.begin(), m_stream.packets.end());
     parser.setExpectedStream(ids);
+    parser.setFramesOnly(true); // the values are decoded where a frame is shown
     std::size_t chunk = 0;
     parser.setSnapshotHandler([&](const oi::SensorSnapshot &, oi::FrameKind kind) {
         if (kind == oi::FrameKind::Stream)

@@ -21,6 +21,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <random>
 
 using oilink::LinkSettings;
 using oilink::LinkState;
@@ -120,6 +121,18 @@ class TestRecording : public QObject {
     Q_OBJECT
 private slots:
     void initTestCase() { oilink::registerLinkMetaTypes(); }
+
+    void checksumIsQtsChecksum()
+    {
+        // Files written with qChecksum are read with recording::checksum.
+        std::mt19937 random(7);
+        for (int size = 0; size < 300; ++size) {
+            QByteArray bytes(size, Qt::Uninitialized);
+            for (char &c : bytes)
+                c = char(random());
+            QCOMPARE(oilink::recording::checksum(bytes), qChecksum(bytes));
+        }
+    }
 
     void writerAndReaderAgree()
     {

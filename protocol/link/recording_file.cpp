@@ -231,10 +231,10 @@ std::optional<Recording::StreamInfo> Recording::readStream(const QString &path, 
     // file holds it; the whole file only when it does not.
     constexpr qint64 kStart = 64 * 1024;
     QByteArray data = file.read(kStart);
-    std::optional<Recording> r = parse(data, path, error, true);
+    std::optional<Recording> r = parse(data, path, error, Depth::Stream);
     if (!r && !file.atEnd()) {
         data += file.readAll();
-        r = parse(data, path, error, true);
+        r = parse(data, path, error, Depth::Stream);
     }
     if (!r)
         return std::nullopt;
@@ -243,11 +243,10 @@ std::optional<Recording::StreamInfo> Recording::readStream(const QString &path, 
 
 std::optional<Recording> Recording::fromBytes(const QByteArray &data, const QString &path, QString *error)
 {
-    return parse(data, path, error, false);
+    return parse(data, path, error, Depth::Frames);
 }
 
-std::optional<Recording> Recording::parse(const QByteArray &data, const QString &path, QString *error,
-                                          bool streamOnly)
+std::optional<Recording> Recording::parse(const QByteArray &data, const QString &path, QString *error, Depth depth)
 {
     auto refuse = [&](const QString &why) -> std::optional<Recording> {
         if (error)
@@ -353,7 +352,7 @@ std::optional<Recording> Recording::parse(const QByteArray &data, const QString 
             damaged(QCoreApplication::translate("Recording", "unknown record type 0x%1").arg(static_cast<quint8>(head[0]), 2, 16, QLatin1Char('0')));
             break;
         }
-        if (r.m_damage || (streamOnly && r.m_stream.profile))
+        if (r.m_damage || (depth == Depth::Stream && r.m_stream.profile))
             break;
         lastTimeUs = timeUs;
         at += kRecordHeadSize + length + kCrcSize;
@@ -366,7 +365,7 @@ std::optional<Recording> Recording::parse(const QByteArray &data, const QString 
             return refuse(QCoreApplication::translate("Recording", "damaged before the stream started: %1").arg(r.m_damage->describe()));
         return refuse(QCoreApplication::translate("Recording", "the recording holds no sensor stream"));
     }
-    if (!streamOnly)
+    if (depth == Depth::Frames)
         r.indexFrames();
     return r;
 }
@@ -374,20 +373,34 @@ std::optional<Recording> Recording::parse(const QByteArray &data, const QString 
 bool Recording::saveMarkerEdits(const QString &path, const QList<MarkerEdit> &edits, QString *error)
 {
     QFile file(path);
-    if (!file.open(QIODevice::ReadOnly)) {
+    if (!file.open(QIODevice::ReadWrite)) {
         if (error)
             *error = QStringLiteral("%1: %2").arg(path, file.errorString());
         return false;
     }
-    const QByteArray data = file.readAll();
-    file.close();
-    const std::optional<Recording> r = parse(data, path, error, false);
+    // Mapped, not copied: the records are checked where they lie.
+    const qint64 size = file.size();
+    const uchar *mapped = size > 0 ? file.map(0, size) : nullptr;
+    const QByteArray data = mapped ? QByteArray::fromRawData(reinterpret_cast<const char *>(mapped), size)
+                                   : file.readAll();
+    const std::optional<Recording> r = parse(data, path, error, Depth::Records);
     if (!r)
         return false;
     // At the last readable time, so that times never go back.
     QByteArray records;
     for (const MarkerEdit &edit : edits)
         records += makeRecord(recording::RecordKind::Marker, r->m_durationUs, edit.toJson());
+    // An intact file of this version: the markers go on its end, and the
+    // hour before them is not written again.
+    if (r->m_readableEnd == data.size()
+        && readLittleEndian<quint16>(data.constData() + recording::kMagicSize) == recording::kVersion) {
+        const bool appended = file.seek(size) && file.write(records) == records.size() && file.flush();
+        if (!appended && error)
+            *error = QStringLiteral("%1: %2").arg(path, file.errorString());
+        return appended;
+    }
+    // A damaged tail is kept after the markers, where they are read; an
+    // older version says it holds markers now.
     QByteArray head = data.left(r->m_readableEnd);
     qToLittleEndian<quint16>(recording::kVersion, head.data() + recording::kMagicSize);
     QSaveFile out(path);

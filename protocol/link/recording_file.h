@@ -165,9 +165,10 @@ public:
     void writeCsv(QTextStream &out) const;
 
 private:
-    // Stops after the stream's description when `streamOnly`: no frames then.
-    static std::optional<Recording> parse(const QByteArray &data, const QString &path, QString *error,
-                                          bool streamOnly);
+    // How far parse() reads: to the stream's description, every record, or
+    // every record and the frames' index.
+    enum class Depth { Stream, Records, Frames };
+    static std::optional<Recording> parse(const QByteArray &data, const QString &path, QString *error, Depth depth);
     void indexFrames();
 
     QJsonObject m_header;

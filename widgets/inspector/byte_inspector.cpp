@@ -256,8 +256,8 @@ void ByteInspector::appendRx(const QByteArray &bytes, qint64 msecs)
             e.tone = Tone::Other;
             break;
         }
-        e.bytes = std::move(piece.bytes);
-        e.meaning = std::move(piece.meaning);
+        e.bytes = piece.bytes;
+        e.undescribed = std::move(piece);
         record(std::move(e));
     }
     scheduleRender();
@@ -376,12 +376,22 @@ QString ByteInspector::timeText(qint64 msecs) const
     return QStringLiteral("%1").arg(QString::number(double(msecs - m_connectedAt.value_or(msecs)) / 1000.0, 'f', 3), 10);
 }
 
+const QString &ByteInspector::meaningOf(const Entry &entry)
+{
+    if (entry.undescribed) {
+        RxFrameScanner::describe(*entry.undescribed);
+        entry.meaning = std::move(entry.undescribed->meaning);
+        entry.undescribed.reset();
+    }
+    return entry.meaning;
+}
+
 QString ByteInspector::entryText(const Entry &entry) const
 {
     return QStringLiteral("%1  %2  %3  %4")
         .arg(timeText(entry.msecs))
         .arg(entry.direction == Direction::Tx ? QStringLiteral("TX") : QStringLiteral("RX"))
-        .arg(bytesText(entry.bytes), entry.meaning);
+        .arg(bytesText(entry.bytes), meaningOf(entry));
 }
 
 void ByteInspector::renderEntries(std::size_t first, std::size_t end)
@@ -433,7 +443,7 @@ void ByteInspector::renderEntries(std::size_t first, std::size_t end)
             meaning = &textFormat;
         else if (e.tone == Tone::Other)
             meaning = &otherFormat;
-        cursor.insertText(e.meaning, *meaning);
+        cursor.insertText(meaningOf(e), *meaning);
     }
     cursor.endEditBlock();
     // Follow new entries only if the reader was already at the end.

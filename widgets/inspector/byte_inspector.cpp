@@ -358,15 +358,26 @@ void ByteInspector::rebuildView()
 
 QString ByteInspector::bytesText(const QByteArray &bytes) const
 {
-    QString text;
+    // By hand, not QString::arg per byte: a visible log shows every frame.
+    static constexpr char kHexDigits[] = "0123456789ABCDEF";
+    QByteArray text;
     text.reserve(bytes.size() * 4);
     for (char c : bytes) {
         if (!text.isEmpty())
-            text += QLatin1Char(' ');
+            text += ' ';
         const auto b = static_cast<std::uint8_t>(c);
-        text += m_hex ? QStringLiteral("%1").arg(b, 2, 16, QLatin1Char('0')).toUpper() : QString::number(b);
+        if (m_hex) {
+            text += kHexDigits[b >> 4];
+            text += kHexDigits[b & 0xF];
+        } else {
+            if (b >= 100)
+                text += char('0' + b / 100);
+            if (b >= 10)
+                text += char('0' + b / 10 % 10);
+            text += char('0' + b % 10);
+        }
     }
-    return text;
+    return QString::fromLatin1(text);
 }
 
 QString ByteInspector::timeText(qint64 msecs) const

@@ -15,6 +15,7 @@
 #include <chrono>
 
 #include <algorithm>
+#include <array>
 #include <cstring>
 #include <span>
 
@@ -62,10 +63,30 @@ QByteArray makeRecord(recording::RecordKind kind, qint64 timeUs, const QByteArra
     appendLittleEndian<qint64>(record, timeUs);
     appendLittleEndian<quint16>(record, static_cast<quint16>(payload.size()));
     record += payload;
-    appendLittleEndian<quint16>(record, qChecksum(record));
+    appendLittleEndian<quint16>(record, recording::checksum(record));
     return record;
 }
+// CRC-16 of ISO 3309 (reflected 0x1021, starts at 0xFFFF, inverted at the
+// end) for each value of a byte.
+constexpr std::array<quint16, 256> kCrcTable = [] {
+    std::array<quint16, 256> table{};
+    for (unsigned byte = 0; byte < 256; ++byte) {
+        unsigned crc = byte;
+        for (int bit = 0; bit < 8; ++bit)
+            crc = (crc & 1) ? (crc >> 1) ^ 0x8408 : crc >> 1;
+        table[byte] = static_cast<quint16>(crc);
+    }
+    return table;
+}();
 } // namespace
+
+quint16 recording::checksum(QByteArrayView bytes)
+{
+    unsigned crc = 0xFFFF;
+    for (const char c : bytes)
+        crc = (crc >> 8) ^ kCrcTable[(crc ^ static_cast<quint8>(c)) & 0xFF];
+    return static_cast<quint16>(~crc);
+}
 
 // --- Writing ---
 
@@ -210,10 +231,10 @@ std::optional<Recording::StreamInfo> Recording::readStream(const QString &path, 
     // file holds it; the whole file only when it does not.
     constexpr qint64 kStart = 64 * 1024;
     QByteArray data = file.read(kStart);
-    std::optional<Recording> r = parse(data, path, error, true);
+    std::optional<Recording> r = parse(data, path, error, Depth::Stream);
     if (!r && !file.atEnd()) {
         data += file.readAll();
-        r = parse(data, path, error, true);
+        r = parse(data, path, error, Depth::Stream);
     }
     if (!r)
         return std::nullopt;
@@ -222,11 +243,10 @@ std::optional<Recording::StreamInfo> Recording::readStream(const QString &path, 
 
 std::optional<Recording> Recording::fromBytes(const QByteArray &data, const QString &path, QString *error)
 {
-    return parse(data, path, error, false);
+    return parse(data, path, error, Depth::Frames);
 }
 
-std::optional<Recording> Recording::parse(const QByteArray &data, const QString &path, QString *error,
-                                          bool streamOnly)
+std::optional<Recording> Recording::parse(const QByteArray &data, const QString &path, QString *error, Depth depth)
 {
     auto refuse = [&](const QString &why) -> std::optional<Recording> {
         if (error)
@@ -271,7 +291,7 @@ std::optional<Recording> Recording::parse(const QByteArray &data, const QString 
             break;
         }
         const QByteArrayView covered(head, kRecordHeadSize + length);
-        if (readLittleEndian<quint16>(head + kRecordHeadSize + length) != qChecksum(covered)) {
+        if (readLittleEndian<quint16>(head + kRecordHeadSize + length) != recording::checksum(covered)) {
             damaged(QCoreApplication::translate("Recording", "checksum mismatch"));
             break;
         }
@@ -332,7 +352,7 @@ std::optional<Recording> Recording::parse(const QByteArray &data, const QString 
             damaged(QCoreApplication::translate("Recording", "unknown record type 0x%1").arg(static_cast<quint8>(head[0]), 2, 16, QLatin1Char('0')));
             break;
         }
-        if (r.m_damage || (streamOnly && r.m_stream.profile))
+        if (r.m_damage || (depth == Depth::Stream && r.m_stream.profile))
             break;
         lastTimeUs = timeUs;
         at += kRecordHeadSize + length + kCrcSize;
@@ -345,7 +365,7 @@ std::optional<Recording> Recording::parse(const QByteArray &data, const QString 
             return refuse(QCoreApplication::translate("Recording", "damaged before the stream started: %1").arg(r.m_damage->describe()));
         return refuse(QCoreApplication::translate("Recording", "the recording holds no sensor stream"));
     }
-    if (!streamOnly)
+    if (depth == Depth::Frames)
         r.indexFrames();
     return r;
 }
@@ -353,20 +373,34 @@ std::optional<Recording> Recording::parse(const QByteArray &data, const QString 
 bool Recording::saveMarkerEdits(const QString &path, const QList<MarkerEdit> &edits, QString *error)
 {
     QFile file(path);
-    if (!file.open(QIODevice::ReadOnly)) {
+    if (!file.open(QIODevice::ReadWrite)) {
         if (error)
             *error = QStringLiteral("%1: %2").arg(path, file.errorString());
         return false;
     }
-    const QByteArray data = file.readAll();
-    file.close();
-    const std::optional<Recording> r = parse(data, path, error, false);
+    // Mapped, not copied: the records are checked where they lie.
+    const qint64 size = file.size();
+    const uchar *mapped = size > 0 ? file.map(0, size) : nullptr;
+    const QByteArray data = mapped ? QByteArray::fromRawData(reinterpret_cast<const char *>(mapped), size)
+                                   : file.readAll();
+    const std::optional<Recording> r = parse(data, path, error, Depth::Records);
     if (!r)
         return false;
     // At the last readable time, so that times never go back.
     QByteArray records;
     for (const MarkerEdit &edit : edits)
         records += makeRecord(recording::RecordKind::Marker, r->m_durationUs, edit.toJson());
+    // An intact file of this version: the markers go on its end, and the
+    // hour before them is not written again.
+    if (r->m_readableEnd == data.size()
+        && readLittleEndian<quint16>(data.constData() + recording::kMagicSize) == recording::kVersion) {
+        const bool appended = file.seek(size) && file.write(records) == records.size() && file.flush();
+        if (!appended && error)
+            *error = QStringLiteral("%1: %2").arg(path, file.errorString());
+        return appended;
+    }
+    // A damaged tail is kept after the markers, where they are read; an
+    // older version says it holds markers now.
     QByteArray head = data.left(r->m_readableEnd);
     qToLittleEndian<quint16>(recording::kVersion, head.data() + recording::kMagicSize);
     QSaveFile out(path);
@@ -385,6 +419,7 @@ void Recording::indexFrames()
     oi::StreamParser parser(*m_stream.profile);
     const std::vector<std::uint8_t> ids(m_stream.packets.begin(), m_stream.packets.end());
     parser.setExpectedStream(ids);
+    parser.setFramesOnly(true); // the values are decoded where a frame is shown
     std::size_t chunk = 0;
     parser.setSnapshotHandler([&](const oi::SensorSnapshot &, oi::FrameKind kind) {
         if (kind == oi::FrameKind::Stream)

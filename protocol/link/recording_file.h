@@ -40,6 +40,11 @@ enum class RecordKind : quint8 {
     Marker = 'M',        // JSON: one MarkerEdit (version 2)
     TruePose = 'P',      // x and y in mm, heading in rad: three little-endian doubles (version 3)
 };
+
+// A record's CRC: qChecksum's (CRC-16 of ISO 3309), a byte at a time
+// rather than Qt's half-byte steps, as an hour's recording is checked
+// whole when it is opened.
+quint16 checksum(QByteArrayView bytes);
 } // namespace recording
 
 // Appends records to a recording file as they happen. Not QSaveFile: a
@@ -160,9 +165,10 @@ public:
     void writeCsv(QTextStream &out) const;
 
 private:
-    // Stops after the stream's description when `streamOnly`: no frames then.
-    static std::optional<Recording> parse(const QByteArray &data, const QString &path, QString *error,
-                                          bool streamOnly);
+    // How far parse() reads: to the stream's description, every record, or
+    // every record and the frames' index.
+    enum class Depth { Stream, Records, Frames };
+    static std::optional<Recording> parse(const QByteArray &data, const QString &path, QString *error, Depth depth);
     void indexFrames();
 
     QJsonObject m_header;

@@ -60,12 +60,19 @@ bool StreamParser::setExpectedStream(std::span<const std::uint8_t> packetIds)
         return false;
     m_expectedIds.assign(packetIds.begin(), packetIds.end());
     m_expectedLength = static_cast<int>(data + packetIds.size());
+    m_expectedOffsets.clear();
+    std::size_t at = 0;
+    for (std::uint8_t id : packetIds) {
+        m_expectedOffsets.push_back(at);
+        at += 1 + static_cast<std::size_t>(m_profile->replySize(id));
+    }
     return true;
 }
 
 void StreamParser::clearExpectedStream()
 {
     m_expectedIds.clear();
+    m_expectedOffsets.clear();
     m_expectedLength = -1;
 }
 
@@ -241,6 +248,13 @@ std::size_t StreamParser::process()
 bool StreamParser::decodePayload(std::span<const std::uint8_t> payload)
 {
     m_scratch.clear();
+    if (m_framesOnly && !m_expectedIds.empty()) {
+        // The length matched the expected stream's: each id where it belongs.
+        for (std::size_t i = 0; i < m_expectedIds.size(); ++i)
+            if (payload[m_expectedOffsets[i]] != m_expectedIds[i])
+                return false;
+        return true;
+    }
     std::size_t at = 0, index = 0;
     while (at < payload.size()) {
         const std::uint8_t id = payload[at++];

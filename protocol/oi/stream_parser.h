@@ -75,6 +75,11 @@ public:
     // Returns false for an id the profile lacks.
     bool setExpectedStream(std::span<const std::uint8_t> packetIds);
     void clearExpectedStream();
+    // Where frames end, not what they say: with an expected stream, a stream
+    // frame is checked (checksum, length, each id in its place) but its values
+    // are not decoded, and the handler is given an empty snapshot. For
+    // indexing a recording, which is read for its frames' ends only.
+    void setFramesOnly(bool on) { m_framesOnly = on; }
 
     // Announces `times` replies to a Sensors or Query List request for these
     // ids. Bytes that arrive while a reply is pending are read as that reply.
@@ -127,6 +132,8 @@ private:
     SnapshotHandler m_handler;
     TextHandler m_textHandler;
     std::vector<std::uint8_t> m_expectedIds;
+    std::vector<std::size_t> m_expectedOffsets; // of each expected id in the payload
+    bool m_framesOnly = false;
     int m_expectedLength = -1; // n-bytes of the expected stream, -1 = any
     std::deque<PendingReply> m_replies;
     ParserCounters m_counters;

@@ -3,7 +3,7 @@
 // streaming group 100 (240,000 synthetic frames) with 1,000 markers written
 // while it recorded (and every tenth renamed), against the same hour without
 // them; then the same file read whole as a run to compare with, and one
-// marker added in a replay (the whole file written again).
+// marker added in a replay (the file checked, the marker appended).
 //
 //   bench_markers [FRAMES] [MARKERS]
 #include "recorded_run.h"
@@ -106,6 +106,6 @@ int main(int argc, char **argv)
         std::fprintf(stderr, "%s\n", qPrintable(error));
         return 1;
     }
-    std::printf("a marker added in a replay (file written again): %.3f s\n", saveS);
+    std::printf("a marker added in a replay (file checked, marker appended): %.3f s\n", saveS);
     return 0;
 }

@@ -1,14 +1,20 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: GPL-3.0-or-later
 # The performance table in one command: runs the benchmarks and prints today's
-# figure beside each target.
+# figures beside the ones the project keeps (tests/bench/perf_budget.json) and
+# their targets, and says which slid by more than their noise and which miss
+# their target.
 #
-#   tests/bench/perf_table.sh [--build DIR] [--seconds S] [--build-times]
+#   tests/bench/perf_table.sh [--build DIR] [--seconds S] [--keep] [--build-times]
 #
 # --build DIR    the build directory; the benchmarks are turned on and built
 #                there (default: build)
 # --seconds S    how long each dashboard run lasts (default 600: the table's
 #                "10 minutes after start"; shorter runs are noisier)
+# --keep         today's figures become the kept ones: written to
+#                tests/bench/perf_budget.json and README's performance table
+#                (commit both). Keep a run on a quiet machine (load average
+#                under 1) with the default 600 s.
 # --build-times  also time README's first command (configure and build the
 #                window, without ccache) and the ordinary build and tests of
 #                .ci/run in fresh build directories: many minutes on 2 cores
@@ -23,14 +29,18 @@ cd "$(dirname "$0")/../.."
 build=build
 seconds=600
 build_times=0
+keep=0
 while [ $# -gt 0 ]; do
     case "$1" in
         --build) build="$2"; shift 2 ;;
         --seconds) seconds="$2"; shift 2 ;;
+        --keep) keep=1; shift ;;
         --build-times) build_times=1; shift ;;
-        *) echo "usage: $0 [--build DIR] [--seconds S] [--build-times]" >&2; exit 2 ;;
+        *) echo "usage: $0 [--build DIR] [--seconds S] [--keep] [--build-times]" >&2; exit 2 ;;
     esac
 done
+python=/usr/bin/python3
+[ -x "$python" ] || python=python3
 
 # The benchmarks are built only when asked for: turn them on in the build
 # directory and build the four this table runs (quick when they are current).
@@ -78,23 +88,21 @@ seek=$(field "$log/recording.txt" '^seek .*p99 ([0-9.]+) ms.*')
 teleop_busy=$(grep -E 'p99' "$log/teleop_busy.txt" | sed -nE 's/.*p99 +([0-9.]+) ms.*/\1/p' | sort -n | tail -1)
 teleop_quiet=$(grep -E 'p99' "$log/teleop_quiet.txt" | sed -nE 's/.*p99 +([0-9.]+) ms.*/\1/p' | sort -n | tail -1)
 
-row() { printf '| %-58s | %-26s | %-22s |\n' "$1" "$2" "$3"; }
+figures=(cpu_one="$cpu_one" cpu_every="$cpu_every" cpu_fleet="$cpu_fleet" rss_fleet="$rss_fleet"
+         history30="$history30" open_s="$open_s" seek_p99="$seek" teleop_quiet="$teleop_quiet"
+         teleop_busy="$teleop_busy" start_one="$start_one" start_fleet="$start_fleet")
+load=$(cut -d' ' -f1-3 /proc/loadavg)
 echo
-echo "Figures after ${seconds} s runs under Xvfb 1600x1000; load average $(cut -d' ' -f1-3 /proc/loadavg)"
-row "figure" "today" "target"
-row "----" "----" "----"
-row "one robot, default docks, CPU of one core" "${cpu_one} %" "<= 3 %"
-row "one robot, every dock open and visible, CPU" "${cpu_every} %" "<= 6 %"
-row "30 robots in one window, every dock of one open, CPU" "${cpu_fleet} %" "<= 15 %"
-row "30 robots: window RSS after the run" "${rss_fleet} MiB" "-"
-row "30 robots: histories after an hour (bench_history_memory)" "${history30} MiB, RSS ${history30_rss} MiB" "<= 1.5 GB"
-row "open a one-hour recording for replay" "${open_s} s, read once" "<= 0.3 s, read once"
-row "seek in a one-hour recording, to the frame's bytes (p99)" "${seek} ms" "<= 50 ms"
-row "input to bytes on the wire, p99, quiet" "${teleop_quiet} ms" "-"
-row "input to bytes on the wire, p99, 30 robots running" "${teleop_busy} ms" "<= 2 ms busy"
-row "start-up to the first live frame, one robot" "${start_one} ms" "-"
-row "start-up to the first live frame, 30 saved robots" "${start_fleet} ms" "<= 250 ms"
+echo "Figures after ${seconds} s runs under Xvfb 1600x1000; load average $load (30 robots: histories ${history30} MiB, RSS ${history30_rss} MiB)"
+if [ "$keep" = 1 ]; then
+    "$python" tests/bench/perf_budget.py keep tests/bench/perf_budget.json README.md "${figures[@]}" \
+        --date "$(date -u +%Y-%m-%d)" --commit "$(git rev-parse --short HEAD 2>/dev/null || echo '?')" \
+        --seconds "$seconds" --load "$load"
+else
+    "$python" tests/bench/perf_budget.py compare tests/bench/perf_budget.json "${figures[@]}"
+fi
 
+row() { printf '| %-58s | %-26s | %-22s |\n' "$1" "$2" "$3"; }
 if [ "$build_times" = 1 ]; then
     fresh=$(mktemp -d)
     start=$SECONDS

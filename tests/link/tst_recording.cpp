@@ -21,6 +21,8 @@
 
 #include <chrono>
 #include <cmath>
+#include <sys/stat.h>
+#include <random>
 
 using oilink::LinkSettings;
 using oilink::LinkState;
@@ -120,6 +122,18 @@ class TestRecording : public QObject {
     Q_OBJECT
 private slots:
     void initTestCase() { oilink::registerLinkMetaTypes(); }
+
+    void checksumIsQtsChecksum()
+    {
+        // Files written with qChecksum are read with recording::checksum.
+        std::mt19937 random(7);
+        for (int size = 0; size < 300; ++size) {
+            QByteArray bytes(size, Qt::Uninitialized);
+            for (char &c : bytes)
+                c = char(random());
+            QCOMPARE(oilink::recording::checksum(bytes), qChecksum(bytes));
+        }
+    }
 
     void writerAndReaderAgree()
     {
@@ -503,6 +517,34 @@ private slots:
         QCOMPARE(lines.size(), 3);
         QVERIFY2(lines[1].endsWith(",3,\"#2; hit, \"\"hard\"\"\""), qPrintable(lines[1]));
         QCOMPARE(lines[2], QString("10,,after the frames"));
+    }
+
+    // An intact file takes a marker on its end: the same file, grown by the
+    // marker's record, not a copy written anew.
+    void aMarkerIsAppendedToAnIntactFile()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath("a.oirec");
+        RecordingWriter writer;
+        QVERIFY(writer.open(path, {}));
+        QVERIFY(writer.appendStreamStarted(oi::ProfileId::Create2, 115200, {7}));
+        QVERIFY(writer.append(RecordKind::Received, QByteArray("\x13\x02\x07\x03\xE1", 5)));
+        writer.close();
+        const QByteArray before = fileBytes(path);
+        struct stat was {};
+        QCOMPARE(::stat(QFile::encodeName(path).constData(), &was), 0);
+
+        QString error;
+        QVERIFY2(Recording::saveMarkerEdits(path, {MarkerEdit::add({1, 0, "here"})}, &error), qPrintable(error));
+        struct stat is {};
+        QCOMPARE(::stat(QFile::encodeName(path).constData(), &is), 0);
+        QCOMPARE(is.st_ino, was.st_ino);
+        const QByteArray after = fileBytes(path);
+        QVERIFY(after.startsWith(before));
+        const Recording r = load(path);
+        QVERIFY(!r.damage());
+        QCOMPARE(r.markers(), (QList<RecordingMarker>{{1, 0, "here"}}));
+        QCOMPARE(r.frames().size(), std::size_t(1));
     }
 
     // A damaged tail is kept; the new markers go before it, where they are read.

@@ -192,6 +192,41 @@ private slots:
         }
     }
 
+    void framesOnlyFindsTheSameFramesWithoutTheirValues()
+    {
+        // Good frames, one whose ids are swapped (right length and checksum),
+        // one with a bad checksum and junk: both modes keep the same frames
+        // and say they end at the same bytes.
+        Bytes input = bytesFrom("7 7");
+        for (int i = 0; i < 12; ++i) {
+            const Bytes f = i == 4   ? streamFrame({13, 1, 29, 3, 232, 22, 54, 176})
+                            : i == 7 ? [] { Bytes b = frameFor(1000, 1, 14000); b.back() ^= 1; return b; }()
+                                     : frameFor(1000 + i, i % 2, 14000 + i);
+            input.insert(input.end(), f.begin(), f.end());
+            input.push_back(std::uint8_t(i % 5));
+        }
+        const auto run = [&input](bool framesOnly) {
+            StreamParser parser(profile(ProfileId::Create2));
+            parser.setExpectedStream(kStreamIds);
+            parser.setFramesOnly(framesOnly);
+            std::vector<std::uint64_t> ends;
+            std::vector<Values> values;
+            parser.setSnapshotHandler([&](const SensorSnapshot &s, FrameKind) {
+                ends.push_back(parser.frameEndOffset());
+                values.push_back(valuesOf(s));
+            });
+            parser.feed(input);
+            return std::pair(ends, values);
+        };
+        const auto [decodedEnds, decodedValues] = run(false);
+        const auto [onlyEnds, onlyValues] = run(true);
+        QCOMPARE(decodedEnds.size(), std::size_t(10));
+        QCOMPARE(onlyEnds, decodedEnds);
+        QCOMPARE(decodedValues.front(), (Values{{13, 0}, {22, 14000}, {29, 1000}}));
+        for (const Values &v : onlyValues)
+            QVERIFY(v.empty());
+    }
+
     void strayHeadersBeforeAndInsideFrames()
     {
         // A frame whose data holds 19s, then stray 19s before frames.

@@ -256,8 +256,8 @@ void ByteInspector::appendRx(const QByteArray &bytes, qint64 msecs)
             e.tone = Tone::Other;
             break;
         }
-        e.bytes = std::move(piece.bytes);
-        e.meaning = std::move(piece.meaning);
+        e.bytes = piece.bytes;
+        e.undescribed = std::move(piece);
         record(std::move(e));
     }
     scheduleRender();
@@ -358,15 +358,26 @@ void ByteInspector::rebuildView()
 
 QString ByteInspector::bytesText(const QByteArray &bytes) const
 {
-    QString text;
+    // By hand, not QString::arg per byte: a visible log shows every frame.
+    static constexpr char kHexDigits[] = "0123456789ABCDEF";
+    QByteArray text;
     text.reserve(bytes.size() * 4);
     for (char c : bytes) {
         if (!text.isEmpty())
-            text += QLatin1Char(' ');
+            text += ' ';
         const auto b = static_cast<std::uint8_t>(c);
-        text += m_hex ? QStringLiteral("%1").arg(b, 2, 16, QLatin1Char('0')).toUpper() : QString::number(b);
+        if (m_hex) {
+            text += kHexDigits[b >> 4];
+            text += kHexDigits[b & 0xF];
+        } else {
+            if (b >= 100)
+                text += char('0' + b / 100);
+            if (b >= 10)
+                text += char('0' + b / 10 % 10);
+            text += char('0' + b % 10);
+        }
     }
-    return text;
+    return QString::fromLatin1(text);
 }
 
 QString ByteInspector::timeText(qint64 msecs) const
@@ -376,12 +387,22 @@ QString ByteInspector::timeText(qint64 msecs) const
     return QStringLiteral("%1").arg(QString::number(double(msecs - m_connectedAt.value_or(msecs)) / 1000.0, 'f', 3), 10);
 }
 
+const QString &ByteInspector::meaningOf(const Entry &entry)
+{
+    if (entry.undescribed) {
+        RxFrameScanner::describe(*entry.undescribed);
+        entry.meaning = std::move(entry.undescribed->meaning);
+        entry.undescribed.reset();
+    }
+    return entry.meaning;
+}
+
 QString ByteInspector::entryText(const Entry &entry) const
 {
     return QStringLiteral("%1  %2  %3  %4")
         .arg(timeText(entry.msecs))
         .arg(entry.direction == Direction::Tx ? QStringLiteral("TX") : QStringLiteral("RX"))
-        .arg(bytesText(entry.bytes), entry.meaning);
+        .arg(bytesText(entry.bytes), meaningOf(entry));
 }
 
 void ByteInspector::renderEntries(std::size_t first, std::size_t end)
@@ -433,7 +454,7 @@ void ByteInspector::renderEntries(std::size_t first, std::size_t end)
             meaning = &textFormat;
         else if (e.tone == Tone::Other)
             meaning = &otherFormat;
-        cursor.insertText(e.meaning, *meaning);
+        cursor.insertText(meaningOf(e), *meaning);
     }
     cursor.endEditBlock();
     // Follow new entries only if the reader was already at the end.

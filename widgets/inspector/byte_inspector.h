@@ -119,8 +119,12 @@ private:
         Direction direction = Direction::Tx;
         Tone tone = Tone::Command;
         QByteArray bytes;
-        QString meaning;
+        mutable QString meaning; // see meaningOf()
+        // Received: the piece, described when the entry is first shown.
+        mutable std::optional<RxFrameScanner::Piece> undescribed;
     };
+    // The entry's meaning, described now if it was not yet.
+    static const QString &meaningOf(const Entry &entry);
 
     void retranslateUi();
     void record(Entry entry);

@@ -122,18 +122,46 @@ RxFrameScanner::Piece RxFrameScanner::otherPiece(std::span<const std::uint8_t> b
 {
     Piece piece;
     piece.bytes = QByteArray(reinterpret_cast<const char *>(bytes.data()), qsizetype(bytes.size()));
-    if (isText(bytes)) {
-        piece.kind = Kind::Text;
+    piece.kind = isText(bytes) ? Kind::Text : Kind::Bytes;
+    return piece;
+}
+
+void RxFrameScanner::describe(Piece &piece)
+{
+    if (!piece.meaning.isEmpty())
+        return;
+    const auto data = std::span(reinterpret_cast<const std::uint8_t *>(piece.bytes.constData()),
+                                std::size_t(piece.bytes.size()));
+    QStringList values;
+    switch (piece.kind) {
+    case Kind::StreamFrame: {
+        const auto payload = data.subspan(2, data.size() - 3);
+        for (std::size_t at = 0; at < payload.size();) {
+            const std::size_t used = describeOne(*piece.profile, payload[at], payload.subspan(at + 1), values);
+            at += 1 + used;
+        }
+        piece.meaning = QCoreApplication::translate("RxFrameScanner", "stream frame: %1").arg(values.join(QStringLiteral(", ")));
+        break;
+    }
+    case Kind::Reply: {
+        std::size_t at = 0;
+        for (std::uint8_t id : piece.replyIds)
+            at += describeOne(*piece.profile, id, data.subspan(at), values);
+        piece.meaning = QCoreApplication::translate("RxFrameScanner", "reply: %1").arg(values.join(QStringLiteral(", ")));
+        break;
+    }
+    case Kind::Text: {
         QString text = QString::fromLatin1(piece.bytes);
         text.replace(QLatin1Char('\r'), QStringLiteral("\\r"));
         text.replace(QLatin1Char('\n'), QStringLiteral("\\n"));
         text.replace(QLatin1Char('\t'), QStringLiteral("\\t"));
         piece.meaning = QCoreApplication::translate("RxFrameScanner", "text \"%1\"").arg(text);
-    } else {
-        piece.kind = Kind::Bytes;
-        piece.meaning = QCoreApplication::translate("RxFrameScanner", "outside any stream frame");
+        break;
     }
-    return piece;
+    case Kind::Bytes:
+        piece.meaning = QCoreApplication::translate("RxFrameScanner", "outside any stream frame");
+        break;
+    }
 }
 
 std::vector<RxFrameScanner::Piece> RxFrameScanner::feed(std::span<const std::uint8_t> bytes, qint64 msecs)
@@ -160,13 +188,7 @@ std::vector<RxFrameScanner::Piece> RxFrameScanner::feed(std::span<const std::uin
             Piece piece;
             piece.kind = Kind::StreamFrame;
             piece.bytes = m_held.mid(qsizetype(i), qsizetype(length));
-            QStringList values;
-            const auto payload = data.subspan(i + 2, length - 3);
-            for (std::size_t at = 0; at < payload.size();) {
-                const std::size_t used = describeOne(*m_profile, payload[at], payload.subspan(at + 1), values);
-                at += 1 + used;
-            }
-            piece.meaning = QCoreApplication::translate("RxFrameScanner", "stream frame: %1").arg(values.join(QStringLiteral(", ")));
+            piece.profile = m_profile;
             pieces.push_back(std::move(piece));
             i += length;
             otherFrom = i;
@@ -180,11 +202,8 @@ std::vector<RxFrameScanner::Piece> RxFrameScanner::feed(std::span<const std::uin
             Piece piece;
             piece.kind = Kind::Reply;
             piece.bytes = m_held.mid(qsizetype(i), qsizetype(reply.bytes));
-            QStringList values;
-            std::size_t at = 0;
-            for (std::uint8_t id : reply.ids)
-                at += describeOne(*m_profile, id, data.subspan(i + at, reply.bytes - at), values);
-            piece.meaning = QCoreApplication::translate("RxFrameScanner", "reply: %1").arg(values.join(QStringLiteral(", ")));
+            piece.profile = m_profile;
+            piece.replyIds = reply.ids;
             pieces.push_back(std::move(piece));
             i += reply.bytes;
             otherFrom = i;

@@ -26,8 +26,14 @@ public:
     struct Piece {
         Kind kind = Kind::Bytes;
         QByteArray bytes;
+        // What it says, in words: made when a reader shows it (describe()),
+        // since a log nobody looks at keeps many frames a second.
         QString meaning;
+        const oi::RobotProfile *profile = nullptr;
+        std::vector<std::uint8_t> replyIds; // the request a reply answers
     };
+    // Fills in piece.meaning if it is not there yet.
+    static void describe(Piece &piece);
 
     static constexpr qsizetype kMaxHeld = 32 * 1024;
     // A reply comes within a few milliseconds; an expectation older than
@@ -56,8 +62,6 @@ private:
     };
 
     Match matchFrame(std::span<const std::uint8_t> at, std::size_t *length) const;
-    QString describeValues(std::span<const std::uint8_t> ids, std::span<const std::uint8_t> data,
-                           bool withIds) const;
     Piece otherPiece(std::span<const std::uint8_t> bytes) const;
 
     const oi::RobotProfile *m_profile;

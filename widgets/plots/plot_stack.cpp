@@ -22,6 +22,7 @@
 #include <QVBoxLayout>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -90,6 +91,16 @@ struct PlotStack::Panel {
     bool pendingWhole = false;
     qint64 drawnAtMs = std::numeric_limits<qint64>::min() / 2;
     DrawCounts draws;
+    // The lines' values over `valuesTime`, per value axis (left, right).
+    // Live, new points only widen them, so a refresh reads those alone,
+    // not every point in view.
+    struct Values {
+        QCPRange range;
+        bool found = false;
+    };
+    std::array<Values, 2> values;
+    QCPRange valuesTime;
+    bool valuesKnown = false;
 };
 
 PlotStack::PlotStack(QWidget *parent)
@@ -544,26 +555,46 @@ PlotStack::DrawCounts PlotStack::drawCounts(int plotIndex) const
 
 bool PlotStack::rescaleValues(Panel &panel)
 {
+    // Read every point in view after a change of the time range or of
+    // anything but the traces' newest points; otherwise only the points
+    // that changed since the last drawing.
+    const bool whole = panel.dirty || !panel.valuesKnown || panel.valuesTime != timeRange();
+    panel.valuesKnown = true;
+    panel.valuesTime = timeRange();
     bool changed = false;
-    for (QCPAxis *axis : {panel.plot->yAxis, panel.plot->yAxis2}) {
-        QCPRange values;
-        bool any = false;
-        // Both runs' lines on this axis, where a comparison is shown.
-        for (int g = 0; g < panel.plot->graphCount(); ++g) {
+    for (int side = 0; side < 2; ++side) {
+        QCPAxis *axis = side == 0 ? panel.plot->yAxis : panel.plot->yAxis2;
+        Panel::Values &known = panel.values[std::size_t(side)];
+        // A trace loaded anew may have lost points too: all of this axis again.
+        bool axisWhole = whole;
+        for (const Trace &trace : panel.traces)
+            axisWhole |= trace.feed.graph()->valueAxis() == axis && std::isinf(trace.feed.changedFrom())
+                         && trace.feed.changedFrom() < 0;
+        if (axisWhole)
+            known = {};
+        const auto widen = [&known, this](const QCPGraph *graph, double from) {
             bool found = false;
-            QCPGraph *graph = panel.plot->graph(g);
-            const QCPRange r = graph->valueAxis() == axis ? graph->getValueRange(found, QCP::sdBoth, timeRange())
-                                                          : QCPRange();
+            const QCPRange r =
+                graph->getValueRange(found, QCP::sdBoth, QCPRange(std::max(from, timeRange().lower), timeRange().upper));
             if (!found)
-                continue;
-            if (any)
-                values.expand(r);
+                return;
+            if (known.found)
+                known.range.expand(r);
             else
-                values = r;
-            any = true;
-        }
-        if (!any)
+                known.range = r;
+            known.found = true;
+        };
+        // Both runs' lines on this axis, where a comparison is shown; the
+        // comparison changes only with a whole redraw.
+        for (const Trace &trace : panel.traces)
+            if (trace.feed.graph()->valueAxis() == axis && (axisWhole || trace.feed.changedFrom() != kUnchanged))
+                widen(trace.feed.graph(), axisWhole ? timeRange().lower : trace.feed.changedFrom());
+        for (const ComparisonFeed &feed : panel.comparisons)
+            if (axisWhole && feed.graph()->valueAxis() == axis)
+                widen(feed.graph(), timeRange().lower);
+        if (!known.found)
             continue;
+        QCPRange values = known.range;
         // At least the packets' smallest span, about the middle, so noise
         // of a few counts stays a thin line.
         double span = 0;

@@ -10,6 +10,8 @@
 #include <QScrollBar>
 #include <QToolButton>
 
+#include <algorithm>
+
 RobotList::RobotList(QWidget *parent) : QWidget(parent)
 {
     setObjectName("robotList");
@@ -66,6 +68,11 @@ RobotList::RobotList(QWidget *parent) : QWidget(parent)
 
 void RobotList::setCards(const QList<RobotCardValues> &cards)
 {
+    // Called a few times a second with what mostly has not changed.
+    if (cards.size() == m_cards.size()
+        && std::equal(cards.cbegin(), cards.cend(), m_cards.cbegin(),
+                      [](const RobotCardValues &values, const RobotCard *card) { return values == card->values(); }))
+        return;
     while (m_cards.size() > cards.size()) {
         RobotCard *card = m_cards.takeLast();
         m_group->removeButton(card);
@@ -91,7 +98,8 @@ void RobotList::setCards(const QList<RobotCardValues> &cards)
 
 void RobotList::setSelected(int index)
 {
-    if (RobotCard *card = m_cards.value(index)) {
+    RobotCard *card = m_cards.value(index);
+    if (card && !card->isChecked()) {
         card->setChecked(true);
         // A robot chosen elsewhere (the fleet view) comes into view.
         m_cardLayout->activate();

@@ -1,6 +1,7 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 # What keeps the build short on a two-core machine: precompiled Qt headers
-# (roomba_precompile_qt) and ccache working with them.
+# (roomba_precompile_qt) and ccache working with them, unity builds of the
+# libraries (roomba_unity_build), and lld for the many links.
 
 # ccache leaves compilations that use a precompiled header uncached unless
 # told that the header's time stamps and __DATE__ do not matter; it is told
@@ -27,9 +28,73 @@ set(ROOMBA_QT_WIDGETS_HEADERS
     <QHBoxLayout> <QLabel> <QLineEdit> <QMainWindow> <QMenu> <QMessageBox> <QMouseEvent>
     <QPainter> <QPushButton> <QSlider> <QSpinBox> <QToolButton> <QVBoxLayout> <QWidget>)
 
-# roomba_precompile_qt(target CORE|WIDGETS): the target precompiles that set.
+# roomba_precompile_qt(target CORE|WIDGETS): the target uses the one
+# precompiled header of that set, compiled once for every library by a small
+# library of its own (roomba_pch_core, roomba_pch_widgets) with the first
+# such library's definitions and options. GCC takes a precompiled header
+# whatever Qt modules a library links: no Qt Core, Gui or Widgets header
+# reads the QT_<MODULE>_LIB definitions they bring, and every library is
+# compiled with the same options (-fPIC from Qt, the warnings). -Winvalid-pch
+# says so if one is not taken.
 function(roomba_precompile_qt target set)
-    if(ROOMBA_PRECOMPILED_HEADERS)
-        target_precompile_headers(${target} PRIVATE ${ROOMBA_QT_${set}_HEADERS})
+    if(NOT ROOMBA_PRECOMPILED_HEADERS)
+        return()
+    endif()
+    string(TOLOWER "roomba_pch_${set}" donor)
+    if(NOT TARGET ${donor})
+        add_library(${donor} STATIC ${PROJECT_SOURCE_DIR}/cmake/pch_donor.cpp)
+        if(set STREQUAL "WIDGETS")
+            target_link_libraries(${donor} PRIVATE Qt6::Widgets)
+        else()
+            target_link_libraries(${donor} PRIVATE Qt6::Core)
+        endif()
+        target_compile_definitions(${donor} PRIVATE $<TARGET_PROPERTY:${target},COMPILE_DEFINITIONS>)
+        target_compile_options(${donor} PRIVATE $<TARGET_PROPERTY:${target},COMPILE_OPTIONS>)
+        set_target_properties(${donor} PROPERTIES AUTOMOC OFF AUTOUIC OFF AUTORCC OFF)
+        target_precompile_headers(${donor} PRIVATE ${ROOMBA_QT_${set}_HEADERS})
+    endif()
+    target_precompile_headers(${target} REUSE_FROM ${donor})
+    roomba_moc_unit_without_pch(${target})
+endfunction()
+
+# AUTOMOC's one unit per target (mocs_compilation.cpp) is empty where every
+# source includes its own moc output, and loading a precompiled header costs
+# it a second; it is compiled without one.
+function(roomba_moc_unit_without_pch target)
+    get_target_property(automoc ${target} AUTOMOC)
+    if(automoc)
+        get_target_property(binary_dir ${target} BINARY_DIR)
+        set_source_files_properties(${binary_dir}/${target}_autogen/mocs_compilation.cpp TARGET_DIRECTORY ${target}
+                                    PROPERTIES SKIP_PRECOMPILE_HEADERS ON)
     endif()
 endfunction()
+
+# Unity builds: a library's sources compiled a few at a time in one unit, so
+# the headers they share are parsed and their inline code compiled once per
+# batch, not once per source. Batches of 6 keep both cores busy to the end.
+# A source whose file-local names clash with another's is listed in
+# `alone` and compiled by itself (SKIP_UNITY_BUILD_INCLUSION).
+option(ROOMBA_UNITY_BUILD "Compile each library's sources in batches (unity build)" ON)
+function(roomba_unity_build target)
+    cmake_parse_arguments(PARSE_ARGV 1 arg "" "" "ALONE")
+    if(NOT ROOMBA_UNITY_BUILD)
+        return()
+    endif()
+    set_target_properties(${target} PROPERTIES UNITY_BUILD ON UNITY_BUILD_BATCH_SIZE 6)
+    if(arg_ALONE)
+        set_source_files_properties(${arg_ALONE} TARGET_DIRECTORY ${target}
+                                    PROPERTIES SKIP_UNITY_BUILD_INCLUSION ON)
+    endif()
+endfunction()
+
+# lld links the ~100 test programs and the dashboard in a fraction of the
+# time of GNU ld; Debian's lld package (in .ci/install-deps) provides it, and
+# without it the default linker is used.
+option(ROOMBA_USE_LLD "Link with lld where it is installed" ON)
+if(ROOMBA_USE_LLD)
+    include(CheckLinkerFlag)
+    check_linker_flag(CXX -fuse-ld=lld ROOMBA_HAVE_LLD)
+    if(ROOMBA_HAVE_LLD)
+        add_link_options(-fuse-ld=lld)
+    endif()
+endif()

@@ -31,11 +31,13 @@ set(ROOMBA_QT_WIDGETS_HEADERS
 # roomba_precompile_qt(target CORE|WIDGETS): the target uses the one
 # precompiled header of that set, compiled once for every library by a small
 # library of its own (roomba_pch_core, roomba_pch_widgets) with the first
-# such library's definitions and options. GCC takes a precompiled header
-# whatever Qt modules a library links: no Qt Core, Gui or Widgets header
-# reads the QT_<MODULE>_LIB definitions they bring, and every library is
-# compiled with the same options (-fPIC from Qt, the warnings). -Winvalid-pch
-# says so if one is not taken.
+# such library's options (SDL's -D_REENTRANT for the widgets). GCC takes a
+# precompiled header in a unit with more definitions than it was made with,
+# if the header does not read them: no Qt Core, Gui or Widgets header reads
+# the QT_<MODULE>_LIB definitions the other Qt modules bring. So the header
+# is made with Qt Core's (or Qt Widgets') own definitions only; every library
+# is compiled with the same options (-fPIC from Qt, the warnings).
+# -Winvalid-pch says so if a unit does not take it.
 function(roomba_precompile_qt target set)
     if(NOT ROOMBA_PRECOMPILED_HEADERS)
         return()
@@ -48,7 +50,6 @@ function(roomba_precompile_qt target set)
         else()
             target_link_libraries(${donor} PRIVATE Qt6::Core)
         endif()
-        target_compile_definitions(${donor} PRIVATE $<TARGET_PROPERTY:${target},COMPILE_DEFINITIONS>)
         target_compile_options(${donor} PRIVATE $<TARGET_PROPERTY:${target},COMPILE_OPTIONS>)
         set_target_properties(${donor} PROPERTIES AUTOMOC OFF AUTOUIC OFF AUTORCC OFF)
         target_precompile_headers(${donor} PRIVATE ${ROOMBA_QT_${set}_HEADERS})
@@ -74,6 +75,11 @@ endfunction()
 # batch, not once per source. Batches of 6 keep both cores busy to the end.
 # A source whose file-local names clash with another's is listed in
 # `alone` and compiled by itself (SKIP_UNITY_BUILD_INCLUSION).
+# A library's moc step waits only for its own sources, not for the libraries
+# it links to be built (none of ours generates a header), so the widgets'
+# and the window's sources start while the layers below still compile.
+set(CMAKE_AUTOGEN_ORIGIN_DEPENDS OFF)
+
 option(ROOMBA_UNITY_BUILD "Compile each library's sources in batches (unity build)" ON)
 function(roomba_unity_build target)
     cmake_parse_arguments(PARSE_ARGV 1 arg "" "" "ALONE")

@@ -125,7 +125,9 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(rig.session.latest().raw(7) == 0x03, 5000);
         const int seen = rig.session.snapshotCount();
         QTRY_VERIFY_WITH_TIMEOUT(rig.session.snapshotCount() > seen + 2, 5000);
+        QSignalSpy status(&rig.session, &RobotSession::recordingStatus);
         rig.session.stopRecording();
+        QTRY_VERIFY_WITH_TIMEOUT(!status.isEmpty() && !status.last().at(0).value<oilink::RecordingStatus>().active, 5000);
         QString error;
         const std::optional<oilink::Recording> r = oilink::Recording::load(path, &error);
         QVERIFY2(r, qPrintable(error));

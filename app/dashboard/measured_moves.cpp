@@ -62,36 +62,36 @@ void MeasuredMoves::start(const MotionGoal &goal)
     RobotSession *robot = m_fleet.selected();
     if (!robot)
         return;
-    QString refusal;
+    QString words;
     if (robot->settings().transport == oilink::TransportKind::Network) {
-        refusal = tr("Not moving: a classroom robot's measured moves run on its bridge, beside the robot "
-                     "(the Python library's straight() and turn()). Drive it with the pad or the keys here.");
+        words = tr("Not moving: a classroom robot's measured moves run on its bridge, beside the robot "
+                   "(the Python library's straight() and turn()). Drive it with the pad or the keys here.");
     } else {
         Move &move = moveOf(*robot);
         switch (move.drive.whyNot()) {
         case GoalDrive::Refusal::None: break;
         case GoalDrive::Refusal::NoData:
-            refusal = tr("Not moving: no live data from the robot, so its wheels cannot measure the move. "
-                         "Connect it and wait until it streams.");
+            words = tr("Not moving: no live data from the robot, so its wheels cannot measure the move. "
+                       "Connect it and wait until it streams.");
             break;
         case GoalDrive::Refusal::Unidentified:
-            refusal = tr("Not moving: the robot's model is not known yet. Wait a moment and press Go again.");
+            words = tr("Not moving: the robot's model is not known yet. Wait a moment and press Go again.");
             break;
         case GoalDrive::Refusal::Passive:
-            refusal = tr("Not moving: the robot is in Passive mode and ignores motion. Press Enter Safe, then Go.");
+            words = tr("Not moving: the robot is in Passive mode and ignores motion. Press Enter Safe, then Go.");
             break;
         }
-        if (refusal.isEmpty()) {
+        if (words.isEmpty()) {
             // A move already running ends here; the new one replaces it.
             move.drive.cancel();
             move.asked = goal;
             move.drive.start(goal);
-            refusal = goal.kind == MotionGoal::Kind::Straight
-                          ? tr("Moving %1 mm at %2 mm/s…").arg(goal.distanceMm).arg(goal.speedMmPerS)
-                          : tr("Turning %1° at %2°/s…").arg(goal.angleDeg).arg(std::round(goal.rateDegPerS));
+            words = goal.kind == MotionGoal::Kind::Straight
+                        ? tr("Moving %1 mm at %2 mm/s…").arg(goal.distanceMm).arg(goal.speedMmPerS)
+                        : tr("Turning %1° at %2°/s…").arg(goal.angleDeg).arg(std::round(goal.rateDegPerS));
         }
     }
-    say(*robot, refusal);
+    say(*robot, words);
 }
 
 QString MeasuredMoves::describe(const MotionGoal &goal, const GoalDrive::Result &result)

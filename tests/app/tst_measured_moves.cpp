@@ -24,34 +24,40 @@ constexpr int kTimeoutMs = 20000;
 class TestMeasuredMoves : public QObject {
     Q_OBJECT
 
-    RobotSession *liveRobot(RobotFleet &fleet)
-    {
-        fleet.setTransportFactory(transports::transportFactory());
-        RobotSession *robot = fleet.addRobot(oilink::LinkSettings::virtualRobotOf(oi::ProfileId::Create2, {}));
-        if (!QTest::qWaitFor([robot] { return robot->isLive() && robot->isIdentified(); }, kTimeoutMs))
-            return nullptr;
-        return robot;
-    }
+    // A live virtual Create 2, the row and its moves.
+    struct Rig {
+        RobotFleet fleet;
+        MeasuredMove row;
+        MeasuredMoves moves{fleet, row};
+        RobotSession *robot = nullptr;
 
-    static bool safe(RobotSession &robot)
-    {
-        robot.requestMode(oi::Command::Safe);
-        return QTest::qWaitFor(
-            [&robot] {
-                robot.teleop().checkMode();
-                return !robot.teleop().isPassive();
-            },
-            kTimeoutMs);
-    }
+        bool live()
+        {
+            fleet.setTransportFactory(transports::transportFactory());
+            robot = fleet.addRobot(oilink::LinkSettings::virtualRobotOf(oi::ProfileId::Create2, {}));
+            return QTest::qWaitFor([this] { return robot->isLive() && robot->isIdentified(); }, kTimeoutMs);
+        }
+
+        bool safe()
+        {
+            robot->requestMode(oi::Command::Safe);
+            return QTest::qWaitFor(
+                [this] {
+                    robot->teleop().checkMode();
+                    return !robot->teleop().isPassive();
+                },
+                kTimeoutMs);
+        }
+    };
 
 private slots:
     void passiveSaysWhatToPress()
     {
-        RobotFleet fleet;
-        RobotSession *robot = liveRobot(fleet);
-        QVERIFY(robot);
-        MeasuredMove row;
-        MeasuredMoves moves(fleet, row);
+        Rig rig;
+        QVERIFY(rig.live());
+        RobotSession *robot = rig.robot;
+        MeasuredMove &row = rig.row;
+        MeasuredMoves &moves = rig.moves;
         const double before = robot->odometry().pose().travelledMm;
         row.goButton()->click();
         QVERIFY2(row.result().contains("Enter Safe"), qPrintable(row.result()));
@@ -62,12 +68,12 @@ private slots:
 
     void aStraightMoveAndATurnEndWhereTheWheelsSay()
     {
-        RobotFleet fleet;
-        RobotSession *robot = liveRobot(fleet);
-        QVERIFY(robot);
-        QVERIFY(safe(*robot));
-        MeasuredMove row;
-        MeasuredMoves moves(fleet, row);
+        Rig rig;
+        QVERIFY(rig.live());
+        QVERIFY(rig.safe());
+        RobotSession *robot = rig.robot;
+        MeasuredMove &row = rig.row;
+        MeasuredMoves &moves = rig.moves;
         QSignalSpy ended(moves.selectedGoal(), &GoalDrive::ended);
 
         row.setDirection(MeasuredMove::Direction::Forward);
@@ -95,12 +101,12 @@ private slots:
 
     void anotherInputsCommandEndsTheMove()
     {
-        RobotFleet fleet;
-        RobotSession *robot = liveRobot(fleet);
-        QVERIFY(robot);
-        QVERIFY(safe(*robot));
-        MeasuredMove row;
-        MeasuredMoves moves(fleet, row);
+        Rig rig;
+        QVERIFY(rig.live());
+        QVERIFY(rig.safe());
+        RobotSession *robot = rig.robot;
+        MeasuredMove &row = rig.row;
+        MeasuredMoves &moves = rig.moves;
         QSignalSpy ended(moves.selectedGoal(), &GoalDrive::ended);
         row.setAmount(2000);
         row.goButton()->click();

@@ -472,11 +472,17 @@ void Server::publish(ChannelId id, quint64 timeNs, const std::function<QByteArra
         sendNow(channel, timeNs, encode);
         return;
     }
-    // The latest wins: the one held before is never made.
+    // The latest wins: the one held before is never made. A frame due
+    // within the tolerance waits for its turn. One due later would reach the
+    // client late, and a newer frame normally comes first and goes at once;
+    // so it is sent only if none has come an interval after its turn (the
+    // stream stopped), and the client is never left on a stale frame.
     channel.pending = encode;
     channel.pendingTimeNs = timeNs;
-    if (!channel.timer->isActive())
-        channel.timer->start(int((dueNs - now + 999999) / 1000000));
+    const qint64 waitNs = dueNs - now;
+    const qint64 sendAtNs = waitNs <= intervalNs() / 4 ? dueNs : dueNs + intervalNs();
+    if (!channel.timer->isActive() || sendAtNs < channel.timer->deadlineNs())
+        channel.timer->start(int((sendAtNs - now + 999999) / 1000000));
 }
 
 void Server::sendNow(ChannelState &channel, quint64 timeNs, const std::function<QByteArray()> &encode)

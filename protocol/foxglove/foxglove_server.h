@@ -47,7 +47,8 @@ struct Channel {
 // How a channel's messages are sent.
 enum class Delivery {
     // A state (a frame, a pose): at most Limits::messagesPerSecond, the latest
-    // one winning; the one held back is encoded only when it is sent.
+    // one winning; the one held back is encoded only when it is sent, and
+    // only if no newer one overtakes it.
     Latest,
     // Every message (a log line), as it comes.
     Every,

@@ -13,7 +13,7 @@ QString cut(const QString &text) { return text.size() > 80 ? text.left(80) + QSt
 
 } // namespace
 
-BridgeInbox::BridgeInbox(LeaseClock &clock, QString robot, QObject *parent)
+BridgeInbox::BridgeInbox(oilink::Clock &clock, QString robot, QObject *parent)
     : QObject(parent), m_clock(clock), m_robot(std::move(robot))
 {
 }

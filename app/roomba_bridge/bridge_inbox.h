@@ -41,7 +41,7 @@ public:
     };
     using Handler = std::function<void(const Message &)>;
 
-    BridgeInbox(LeaseClock &clock, QString robot, QObject *parent = nullptr);
+    BridgeInbox(oilink::Clock &clock, QString robot, QObject *parent = nullptr);
 
     void setHandler(Handler handler) { m_handler = std::move(handler); }
     // Who holds control: its stops are never held back.
@@ -63,7 +63,7 @@ private:
     bool takeNext(int lane, Message *out);
     qsizetype waitingLocked() const;
 
-    LeaseClock &m_clock;
+    oilink::Clock &m_clock;
     const QString m_robot;
     Handler m_handler;
     mutable QMutex m_mutex;

@@ -3,23 +3,15 @@
 
 #include <algorithm>
 
-SteadyLeaseClock::SteadyLeaseClock(QObject *parent) : LeaseClock(parent)
+ControlLease::ControlLease(oilink::Clock &clock, QObject *parent) : QObject(parent), m_clock(clock), m_alarm(clock)
 {
-    m_elapsed.start();
-    m_timer.setSingleShot(true);
-    // A coarse timer may fire up to 5% late: 15 ms on 300.
-    m_timer.setTimerType(Qt::PreciseTimer);
-    connect(&m_timer, &QTimer::timeout, this, &LeaseClock::alarm);
+    m_alarm.setSingleShot(true);
+    connect(&m_alarm, &oilink::ClockTimer::timeout, this, &ControlLease::judge);
 }
 
-void SteadyLeaseClock::wakeAt(qint64 atMs)
+void ControlLease::wakeAtHeartbeatDue()
 {
-    m_timer.start(int(std::max<qint64>(0, atMs - nowMs())));
-}
-
-ControlLease::ControlLease(LeaseClock &clock, QObject *parent) : QObject(parent), m_clock(clock)
-{
-    connect(&m_clock, &LeaseClock::alarm, this, &ControlLease::judge);
+    m_alarm.start(int(std::max<qint64>(0, m_lastBeatMs + kHeartbeatTimeoutMs - m_clock.nowMs())));
 }
 
 bool ControlLease::take(const QString &client, std::optional<qint64> arrivedMs)
@@ -36,7 +28,7 @@ bool ControlLease::keep(const QString &client, std::optional<qint64> arrivedMs)
         return false;
     // Heartbeats may be handed over out of order; the latest counts.
     m_lastBeatMs = std::max(m_lastBeatMs, arrivedMs.value_or(m_clock.nowMs()));
-    m_clock.wakeAt(m_lastBeatMs + kHeartbeatTimeoutMs);
+    wakeAtHeartbeatDue();
     return true;
 }
 
@@ -58,7 +50,7 @@ QString ControlLease::takeOver(const QString &client, std::optional<qint64> arri
 QString ControlLease::free()
 {
     const QString former = m_holder;
-    m_clock.cancel();
+    m_alarm.stop();
     if (former.isEmpty())
         return former;
     m_holder.clear();
@@ -84,7 +76,7 @@ void ControlLease::judge()
     if (m_holder.isEmpty())
         return;
     if (m_clock.nowMs() - m_lastBeatMs < kHeartbeatTimeoutMs) {
-        m_clock.wakeAt(m_lastBeatMs + kHeartbeatTimeoutMs);
+        wakeAtHeartbeatDue();
         return;
     }
     emit expired(free());

@@ -1,41 +1,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
-#include <QElapsedTimer>
+#include "link_clock.h"
+
 #include <QObject>
 #include <QString>
-#include <QTimer>
 
 #include <functional>
 #include <optional>
-
-// What the heartbeat rule reads the time from, and the alarm that wakes it:
-// the steady clock in the program, a clock the test advances in tests.
-class LeaseClock : public QObject {
-    Q_OBJECT
-public:
-    using QObject::QObject;
-    // Also read on the MQTT network thread, to time messages as they arrive.
-    virtual qint64 nowMs() const = 0;
-    // alarm() follows once, at or after `atMs`; a new call replaces the last.
-    virtual void wakeAt(qint64 atMs) = 0;
-    virtual void cancel() = 0;
-
-signals:
-    void alarm();
-};
-
-class SteadyLeaseClock : public LeaseClock {
-public:
-    explicit SteadyLeaseClock(QObject *parent = nullptr);
-    qint64 nowMs() const override { return m_elapsed.elapsed(); }
-    void wakeAt(qint64 atMs) override;
-    void cancel() override { m_timer.stop(); }
-
-private:
-    QElapsedTimer m_elapsed;
-    QTimer m_timer;
-};
 
 // One controller per robot at a time (docs/mqtt.md, "Control"): a client
 // takes control, keeps it with a heartbeat, and gives it back. When the
@@ -46,7 +18,9 @@ class ControlLease : public QObject {
 public:
     static constexpr int kHeartbeatTimeoutMs = 300;
 
-    explicit ControlLease(LeaseClock &clock, QObject *parent = nullptr);
+    // The lease's times are `clock`'s (which the MQTT network thread also
+    // reads, to time messages as they arrive).
+    explicit ControlLease(oilink::Clock &clock, QObject *parent = nullptr);
 
     // Empty when nobody holds control.
     QString holder() const { return m_holder; }
@@ -79,8 +53,10 @@ signals:
 
 private:
     void grant(const QString &client, std::optional<qint64> arrivedMs);
+    void wakeAtHeartbeatDue();
 
-    LeaseClock &m_clock;
+    oilink::Clock &m_clock;
+    oilink::ClockTimer m_alarm; // when the holder's heartbeat is due
     QString m_holder;
     qint64 m_lastBeatMs = 0;
     std::function<void()> m_beforeJudging;

@@ -137,8 +137,7 @@ int main(int argc, char *argv[])
     mqtt::MqttClient broker(config->broker.username.isEmpty() ? QStringLiteral("roomba-bridge-%1").arg(config->name)
                                                               : config->broker.username);
     broker.setLastWill(RobotBridge::lastWill(config->name));
-    SteadyLeaseClock clock;
-    RobotBridge bridge(robot, broker, clock, {config->name, config->telemetryRateHz, config->fullTelemetry, config->allowFull,
+    RobotBridge bridge(robot, broker, oilink::Clock::steady(), {config->name, config->telemetryRateHz, config->fullTelemetry, config->allowFull,
                                                 config->allowSchedule});
     const std::optional<mqtt::BrokerAddress> stopLineAddress = config->stopLine();
     mqtt::MqttClient stopLine(config->stopUsername.isEmpty() ? QStringLiteral("roomba-bridge-%1-stops").arg(config->name)

@@ -57,7 +57,7 @@ QString nameOf(oi::Command c)
 
 } // namespace
 
-RobotBridge::RobotBridge(RobotSession &robot, mqtt::MqttClient &broker, LeaseClock &clock, Options options,
+RobotBridge::RobotBridge(RobotSession &robot, mqtt::MqttClient &broker, oilink::Clock &clock, Options options,
                          QObject *parent)
     : QObject(parent), m_robot(robot), m_broker(broker), m_clock(clock), m_lease(clock), m_options(std::move(options)),
       m_rules{m_options.allowFull, m_options.allowSchedule}, m_inbox(clock, m_options.name), m_goal(robot)

@@ -53,7 +53,7 @@ public:
     // one is dropped unread and answered with an error.
     static constexpr qsizetype kMaxPayloadBytes = 4096;
 
-    RobotBridge(RobotSession &robot, mqtt::MqttClient &broker, LeaseClock &clock, Options options,
+    RobotBridge(RobotSession &robot, mqtt::MqttClient &broker, oilink::Clock &clock, Options options,
                 QObject *parent = nullptr);
     ~RobotBridge() override;
 
@@ -132,7 +132,7 @@ private:
     RobotSession &m_robot;
     mqtt::MqttClient &m_broker;
     mqtt::MqttClient *m_stopLine = nullptr;
-    LeaseClock &m_clock;
+    oilink::Clock &m_clock;
     ControlLease m_lease;
     Options m_options;
     NetworkCommandRules m_rules;

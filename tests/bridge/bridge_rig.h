@@ -2,11 +2,11 @@
 #pragma once
 
 // A bridge in the test's process: a robot session on a recording transport
-// (or the virtual robot), its MQTT client and a lease clock the test
+// (or the virtual robot), its MQTT client and a clock for the lease the test
 // advances; and a client that speaks to it as a console would.
 
 #include "fleet_topics.h"
-#include "manual_lease_clock.h"
+#include "manual_clock.h"
 #include "mosquitto_broker.h"
 #include "mqtt_client.h"
 #include "recording_transport.h"
@@ -48,7 +48,7 @@ struct BridgeRig {
     RobotSession session;
     mqtt::MqttClient client;
     mqtt::MqttClient stopLine;
-    ManualLeaseClock clock;
+    ManualClock clock;
     RobotBridge bridge;
 
     // As roomba-bridge: a stop line beside an anonymous connection, or at

@@ -4,7 +4,7 @@
 
 #include "control_message.h"
 #include "control_lease.h"
-#include "manual_lease_clock.h"
+#include "manual_clock.h"
 
 #include <QSignalSpy>
 #include <QTest>
@@ -15,7 +15,7 @@ class TestControlLease : public QObject {
 private slots:
     void oneHolderAtATime()
     {
-        ManualLeaseClock clock;
+        ManualClock clock;
         ControlLease lease(clock);
         QSignalSpy changed(&lease, &ControlLease::holderChanged);
         QVERIFY(!lease.keep(QStringLiteral("alice")));
@@ -33,7 +33,7 @@ private slots:
 
     void heartbeatKeepsItUntil300MsPass()
     {
-        ManualLeaseClock clock;
+        ManualClock clock;
         ControlLease lease(clock);
         QSignalSpy expired(&lease, &ControlLease::expired);
         QVERIFY(lease.take(QStringLiteral("alice")));

@@ -84,9 +84,10 @@ void RobotStatusBar::showStatistics(const oilink::LinkStats &stats)
 {
     m_shownStats = stats;
     m_errors->setText(tr("checksum failures %1, resyncs %2").arg(stats.checksumFailures).arg(stats.resyncs));
-    // A bridge tells only what changed, in fewer messages than the robot's
-    // frames, and checks the robot's bytes itself.
-    m_errors->setVisible(!m_overNetwork);
+    // Said once there is something to say, so that a small screen keeps room
+    // for the rest. A bridge tells only what changed, in fewer messages than
+    // the robot's frames, and checks the robot's bytes itself.
+    m_errors->setVisible(!m_overNetwork && (stats.checksumFailures > 0 || stats.resyncs > 0));
     showRate();
 }
 

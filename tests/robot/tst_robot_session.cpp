@@ -574,7 +574,9 @@ private slots:
         robot.setLinkOnThisThread(linkHere);
         robot.setTransportFactory([&recording](const oilink::LinkSettings &) { return new RecordingTransport(&recording); });
         robot.connectTo(oilink::LinkSettings::serial("/dev/recording", oi::ProfileId::Create2));
+        // Live is not enough: motion waits for the robot to report its mode.
         QTRY_VERIFY_WITH_TIMEOUT(robot.isLive(), 5000);
+        QTRY_COMPARE_WITH_TIMEOUT(robot.mode().reported(), std::optional(oi::OiMode::Safe), 5000);
         robot.teleop().requestMotion(MotionCommand{MotionCommand::Kind::Drive, 200, oi::kRadiusStraight});
         QTRY_VERIFY_WITH_TIMEOUT(robot.teleop().isMoving(), 5000);
         recording.take();

@@ -2,7 +2,6 @@
 #include "room_robots.h"
 
 #include "lesson.h"
-#include "network_transport.h"
 #include "odometry_map.h"
 #include "robot_fleet.h"
 #include "robot_session.h"
@@ -24,12 +23,8 @@ void RoomRobots::adopt(RobotSession *robot)
     auto spot = std::make_shared<std::atomic<sim::RobotId>>(-1);
     m_places.insert(robot, spot);
     if (!m_fleet.hasTransportFactory())
-        robot->setTransportFactory([room = m_room, spot, directory = &m_directory](
-                                       const oilink::LinkSettings &s) -> oilink::Transport * {
-            if (s.transport == oilink::TransportKind::Network)
-                return new NetworkTransport(directory, s.networkRobot,
-                                            oi::profile(s.profile.value_or(oi::ProfileId::Create2)));
-            return transports::createTransport(s, s.baud, room, *spot);
+        robot->setTransportFactory([room = m_room, spot, directory = &m_directory](const oilink::LinkSettings &s) {
+            return transports::createTransport(s, s.baud, room, *spot, directory);
         });
     place(robot, robot->settings());
 }

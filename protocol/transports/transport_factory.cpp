@@ -2,13 +2,18 @@
 #include "transport_factory.h"
 
 #include "link_transports.h"
+#include "network_transport.h"
 #include "virtual_transport.h"
 
 namespace transports {
 
 oilink::Transport *createTransport(const oilink::LinkSettings &settings, int baud, std::shared_ptr<sim::Room> room,
-                                   sim::RobotId robot, QObject *parent)
+                                   sim::RobotId robot, FleetDirectory *directory, QObject *parent)
 {
+    if (settings.transport == oilink::TransportKind::Network)
+        return new NetworkTransport(directory, settings.networkRobot,
+                                    oi::profile(settings.profile.value_or(oi::ProfileId::Create2)),
+                                    oilink::Clock::steady(), parent);
     if (settings.transport == oilink::TransportKind::Virtual) {
         auto *transport = new sim::VirtualTransport(settings.virtualRobot, settings.virtualSeed, std::move(room), robot, parent);
         transport->setWheels(settings.virtualWheels);
@@ -22,10 +27,11 @@ oilink::Transport *createTransport(const oilink::LinkSettings &settings, int bau
     return oilink::createLinkTransport(settings, baud, parent);
 }
 
-oilink::RobotLink::TransportFactory transportFactory(std::shared_ptr<sim::Room> room, sim::RobotId robot)
+oilink::RobotLink::TransportFactory transportFactory(std::shared_ptr<sim::Room> room, sim::RobotId robot,
+                                                     FleetDirectory *directory)
 {
-    return [room = std::move(room), robot](const oilink::LinkSettings &settings) {
-        return createTransport(settings, settings.baud, room, robot);
+    return [room = std::move(room), robot, directory](const oilink::LinkSettings &settings) {
+        return createTransport(settings, settings.baud, room, robot, directory);
     };
 }
 

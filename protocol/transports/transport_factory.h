@@ -7,9 +7,12 @@
 
 #include <memory>
 
+class FleetDirectory;
+
 // Every transport the programs know, in one place: a serial port, raw TCP,
-// a recording, or a virtual robot. The link itself knows only the first
-// three; the dashboard, roomba-ctl and the tests hand it one of these.
+// a recording, a virtual robot, or a robot on the classroom's broker. The
+// link itself knows only the first three; the dashboard, roomba-ctl, the
+// bridge and the tests hand it one of these.
 //
 //     auto room = std::make_shared<sim::Room>(sim::World::classroom());
 //     const sim::RobotId id = room->placeNewRobot();
@@ -21,13 +24,15 @@ namespace transports {
 
 // The transport for `settings`, opened at `baud` where a baud applies. A
 // virtual robot is robot `robot` of `room`; without a room it gets a
-// classroom of its own.
+// classroom of its own. A robot on the broker is found through `directory`;
+// without one, its transport says that there is no broker when opened.
 oilink::Transport *createTransport(const oilink::LinkSettings &settings, int baud,
                                    std::shared_ptr<sim::Room> room = {}, sim::RobotId robot = 0,
-                                   QObject *parent = nullptr);
+                                   FleetDirectory *directory = nullptr, QObject *parent = nullptr);
 
 // The same, for RobotLink, RobotLinkThread and the dashboard's RobotSession.
 // The link passes the baud to open at in the settings.
-oilink::RobotLink::TransportFactory transportFactory(std::shared_ptr<sim::Room> room = {}, sim::RobotId robot = 0);
+oilink::RobotLink::TransportFactory transportFactory(std::shared_ptr<sim::Room> room = {}, sim::RobotId robot = 0,
+                                                     FleetDirectory *directory = nullptr);
 
 } // namespace transports

@@ -7,7 +7,6 @@
 #include "bridge_rig.h"
 #include "command_message.h"
 #include "fleet_directory.h"
-#include "network_transport.h"
 #include "oi_command.h"
 #include "snapshot_json.h"
 
@@ -140,9 +139,7 @@ private slots:
         directory.connectToBroker(addressOf(broker));
         QVERIFY(appeared.wait(10000));
         RobotSession dashboard;
-        dashboard.setTransportFactory([d = &directory](const oilink::LinkSettings &s) -> oilink::Transport * {
-            return new NetworkTransport(d, s.networkRobot, oi::profile(*s.profile));
-        });
+        dashboard.setTransportFactory(transports::transportFactory({}, 0, &directory));
         connect(&dashboard, &RobotSession::bytesSent, &dashboard,
                 [&](const QByteArray &bytes, qint64) { fromDashboard << bytes; });
         dashboard.connectTo(oilink::LinkSettings::networkRobotOf(QStringLiteral("r1"), oi::ProfileId::Create2));

@@ -13,6 +13,7 @@
 #include "recording_file.h"
 #include "robot_session.h"
 #include "snapshot_json.h"
+#include "transport_factory.h"
 #include "typed_command_bytes.h"
 
 #include <QJsonArray>
@@ -70,7 +71,7 @@ private:
             session.setTransportFactory([this](const oilink::LinkSettings &s) -> oilink::Transport * {
                 if (decoyBytes)
                     return new DecoyBytesTransport(&directory, s.networkRobot, oi::profile(*s.profile));
-                return new NetworkTransport(&directory, s.networkRobot, oi::profile(*s.profile));
+                return transports::createTransport(s, s.baud, {}, 0, &directory); // as the dashboard makes it
             });
             session.connectTo(oilink::LinkSettings::networkRobotOf(QStringLiteral("r1"), profile));
             // Live, and the first frame in: the robot's mode is known.

@@ -56,6 +56,11 @@ std::size_t appendPacketData(const SensorSnapshot &values, int packetOrGroupId, 
 Bytes streamFrame(const SensorSnapshot &values, std::span<const int> packetIds)
 {
     Bytes frame{19, 0};
+    std::size_t size = 3; // header, n-bytes, checksum
+    for (int id : packetIds)
+        if (values.robotProfile().isValidSensorId(id))
+            size += 1 + std::size_t(values.robotProfile().replySize(id));
+    frame.reserve(size); // one allocation, not one per doubling
     for (int id : packetIds) {
         if (!values.robotProfile().isValidSensorId(id))
             continue;

@@ -45,6 +45,12 @@ std::uint64_t Room::worldVersion() const
     return m_worldVersion;
 }
 
+std::uint64_t Room::othersVersion() const
+{
+    std::lock_guard lock(m_mutex);
+    return m_othersVersion;
+}
+
 Room::Entry *Room::find(RobotId id)
 {
     const auto it = std::find_if(m_robots.begin(), m_robots.end(), [id](const Entry &e) { return e.robot.id == id; });
@@ -92,6 +98,7 @@ void Room::setWorldAndPlaceRobots(World world)
         e.moveSerial = m_nextMoveSerial++;
         m_robots.push_back(e);
     }
+    ++m_othersVersion;
 }
 
 oi::Pose Room::freeSpot() const
@@ -142,13 +149,15 @@ RobotId Room::add(oi::Pose pose)
     // As if put down by hand: the robot that joins as this one starts here.
     e.moveSerial = m_nextMoveSerial++;
     m_robots.push_back(e);
+    ++m_othersVersion;
     return e.robot.id;
 }
 
 void Room::removeRobot(RobotId id)
 {
     std::lock_guard lock(m_mutex);
-    std::erase_if(m_robots, [id](const Entry &e) { return e.robot.id == id; });
+    if (std::erase_if(m_robots, [id](const Entry &e) { return e.robot.id == id; }) > 0)
+        ++m_othersVersion;
 }
 
 std::optional<RobotInRoom> Room::robot(RobotId id) const
@@ -176,14 +185,17 @@ void Room::moveRobot(RobotId id, oi::Pose pose)
         pose.travelledMm = e->robot.pose.travelledMm;
         e->robot.pose = pose;
         e->moveSerial = m_nextMoveSerial++;
+        ++m_othersVersion;
     }
 }
 
 void Room::setLifted(RobotId id, bool lifted)
 {
     std::lock_guard lock(m_mutex);
-    if (Entry *e = find(id))
+    if (Entry *e = find(id); e && e->robot.lifted != lifted) {
         e->robot.lifted = lifted;
+        ++m_othersVersion;
+    }
 }
 
 bool Room::step(RobotId id, oi::Pose &pose, World &world, RoomView &view)
@@ -195,23 +207,30 @@ bool Room::step(RobotId id, oi::Pose &pose, World &world, RoomView &view)
         view.worldVersion = m_worldVersion;
         changed = true;
     }
-    view.others.clear();
+    // Whether the others have moved since the view was filled; the robot's
+    // own move below changes nothing it sees of them.
+    const bool othersCurrent = view.othersVersion == m_othersVersion;
     view.lifted = false;
-    for (Entry &e : m_robots) {
-        if (e.robot.id != id) {
-            if (!e.robot.lifted)
-                view.others.push_back(Disc{e.robot.pose.xMm, e.robot.pose.yMm, kBodyRadiusMm});
-            continue;
-        }
-        view.lifted = e.robot.lifted;
-        if (e.moveSerial != view.moveSerial) {
-            view.moveSerial = e.moveSerial;
-            pose = e.robot.pose;
+    if (Entry *e = find(id)) {
+        view.lifted = e->robot.lifted;
+        if (e->moveSerial != view.moveSerial) {
+            view.moveSerial = e->moveSerial;
+            pose = e->robot.pose;
             changed = true;
         } else {
-            e.robot.pose = pose;
+            // Only where it stands matters to the others.
+            if (pose.xMm != e->robot.pose.xMm || pose.yMm != e->robot.pose.yMm)
+                ++m_othersVersion;
+            e->robot.pose = pose;
         }
     }
+    if (!othersCurrent) {
+        view.others.clear();
+        for (const Entry &e : m_robots)
+            if (e.robot.id != id && !e.robot.lifted)
+                view.others.push_back(Disc{e.robot.pose.xMm, e.robot.pose.yMm, kBodyRadiusMm});
+    }
+    view.othersVersion = m_othersVersion;
     return changed;
 }
 

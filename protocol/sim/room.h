@@ -40,6 +40,10 @@ struct RoomView {
     std::uint64_t worldVersion = 0; // the floor the robot holds
     std::uint64_t moveSerial = 0;   // the last hand move the robot has taken
     std::vector<Disc> others;       // every other robot standing on the floor
+    // Room::othersVersion() when `others` was last filled: a step with the
+    // robots where they were leaves it alone, and a robot's sensing can
+    // stay as it was.
+    std::uint64_t othersVersion = 0;
     bool lifted = false;
 };
 
@@ -85,6 +89,9 @@ public:
     // copies the floor into `world` when it changed. Returns true when
     // `pose` or `world` changed.
     bool step(RobotId id, oi::Pose &pose, World &world, RoomView &view);
+    // Counts changes of where robots stand on the floor (a robot moved,
+    // lifted, put down, added or removed): what RoomView::others is made of.
+    std::uint64_t othersVersion() const;
 
 private:
     struct Entry {
@@ -100,6 +107,7 @@ private:
     mutable std::mutex m_mutex;
     World m_world;
     std::uint64_t m_worldVersion = 1;
+    std::uint64_t m_othersVersion = 1;
     std::vector<Entry> m_robots;
     RobotId m_nextId = 1;
     std::uint64_t m_nextMoveSerial = 1;

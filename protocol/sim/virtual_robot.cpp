@@ -245,8 +245,18 @@ struct VirtualRobot::State {
     Microseconds stallUntil{0};
     bool disconnected = false;
 
+    // What the sensors see, worked out when first asked after the robot,
+    // the floor or the other robots moved: a robot at rest casts no rays.
     FloorContact floor;
     bool floorDirty = true;
+    std::optional<ObstacleContact> obstaclesSeen;
+    std::optional<InfraredView> infraredSeen;
+    void surroundingsChanged()
+    {
+        floorDirty = true;
+        obstaclesSeen.reset();
+        infraredSeen.reset();
+    }
 
     // A room shared with other robots (joinRoom), or none.
     std::shared_ptr<Room> room;
@@ -269,12 +279,28 @@ struct VirtualRobot::State {
     bool wheelDropLeft() { return leftLifted || roomView.lifted || floorContact().wheelDropLeft; }
     bool wheelDropRight() { return rightLifted || roomView.lifted || floorContact().wheelDropRight; }
     bool wheelDropCaster() { return create1() && (casterLifted || roomView.lifted || floorContact().wheelDropCaster); }
-    ObstacleContact obstacles() const { return senseObstacles(world, pose, roomView.others); }
+    const ObstacleContact &obstacles()
+    {
+        if (!obstaclesSeen)
+            obstaclesSeen = senseObstacles(world, pose, roomView.others);
+        return *obstaclesSeen;
+    }
+    const InfraredView &infrared()
+    {
+        if (!infraredSeen)
+            infraredSeen = senseInfrared(world, pose, *profile);
+        return *infraredSeen;
+    }
 
     void stepInRoom()
     {
-        if (room && room->step(roomId, pose, world, roomView))
-            floorDirty = true;
+        if (!room)
+            return;
+        const std::uint64_t othersBefore = roomView.othersVersion;
+        if (room->step(roomId, pose, world, roomView))
+            surroundingsChanged();
+        else if (roomView.othersVersion != othersBefore)
+            obstaclesSeen.reset();
     }
     bool onDock() { return floorContact().onDockContacts; }
     // The charger charges in Passive (and while off or asleep), not in Safe or Full.
@@ -695,7 +721,7 @@ struct VirtualRobot::State {
             const double rightScale = wheels.rightDiameterMm / oi::kWheelDiameterMm;
             const BodyMove m = moveBody(world, pose, leftTravel * leftScale, rightTravel * rightScale, traction,
                                         roomView.others, wheels.wheelBaseMm);
-            floorDirty = true;
+            surroundingsChanged();
             blocked = m.blocked;
             const double countedLeft = m.leftMm / leftScale, countedRight = m.rightMm / rightScale;
             wheelLeftMm += countedLeft;
@@ -740,7 +766,7 @@ struct VirtualRobot::State {
             on = which == 5 ? (o.bumpLeft || o.bumpRight) : which == 6 ? o.bumpLeft : o.bumpRight;
             break;
         }
-        case 8: on = senseInfrared(world, pose, *profile).virtualWall; break;
+        case 8: on = infrared().virtualWall; break;
         case 9: on = wallSeen(obstacles().wallDistanceMm); break;
         case 10: {
             const auto &c = floorContact().cliff;
@@ -863,7 +889,7 @@ struct VirtualRobot::State {
             s.set(p.id, 0);
         const FloorContact f = floorContact();
         const ObstacleContact o = obstacles();
-        const InfraredView ir = senseInfrared(world, pose, *profile);
+        const InfraredView ir = infrared();
 
         std::int32_t bumps = (o.bumpRight ? oi::bit::BumpRight : 0) | (o.bumpLeft ? oi::bit::BumpLeft : 0)
                              | (wheelDropRight() ? oi::bit::WheelDropRight : 0)
@@ -1262,7 +1288,7 @@ Microseconds VirtualRobot::now() const { return m_state->now; }
 void VirtualRobot::setWorld(World world)
 {
     m_state->world = std::move(world);
-    m_state->floorDirty = true;
+    m_state->surroundingsChanged();
 }
 
 const World &VirtualRobot::world() const { return m_state->world; }
@@ -1270,7 +1296,7 @@ const World &VirtualRobot::world() const { return m_state->world; }
 void VirtualRobot::placeAt(oi::Pose pose)
 {
     m_state->pose = pose;
-    m_state->floorDirty = true;
+    m_state->surroundingsChanged();
 }
 
 const oi::Pose &VirtualRobot::truePose() const { return m_state->pose; }

@@ -167,6 +167,32 @@ private slots:
         QVERIFY(!first.sensors(7).bumpLeft());
     }
 
+    // A robot at rest keeps what its sensors saw until something moves: the
+    // others standing still change nothing, another put beside it or taken
+    // away does.
+    void aRobotAtRestSeesTheOthersOnlyWhenTheyMove()
+    {
+        auto room = std::make_shared<sim::Room>(emptyFloor());
+        const sim::RobotId a = room->addRobotAt({0, 0, 0, 0});
+        const sim::RobotId b = room->addRobotAt({2000, 0, kPi, 0});
+        Member first(room, a);
+        first.send(first.encoder.start());
+        first.robot.advance(1ms);
+        QVERIFY(!first.sensors(7).bumpLeft());
+        const std::uint64_t still = room->othersVersion();
+        first.robot.advance(100ms);
+        QCOMPARE(room->othersVersion(), still);
+        QVERIFY(!first.sensors(7).bumpLeft());
+
+        room->moveRobot(b, {340, 0, kPi, 0}); // touching
+        QVERIFY(room->othersVersion() != still);
+        first.robot.advance(1ms);
+        QVERIFY(first.sensors(7).bumpLeft());
+        room->removeRobot(b);
+        first.robot.advance(1ms);
+        QVERIFY(!first.sensors(7).bumpLeft());
+    }
+
     void aNewFloorReachesTheRobots()
     {
         auto room = std::make_shared<sim::Room>(emptyFloor());

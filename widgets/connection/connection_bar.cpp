@@ -91,7 +91,9 @@ ConnectionBar::ConnectionBar(QWidget *parent) : QWidget(parent)
     connect(m_tcp, &QLineEdit::returnPressed, this, &ConnectionBar::tryConnect);
     connect(m_disconnect, &QPushButton::clicked, this, &ConnectionBar::disconnectRequested);
 
-    refreshPorts();
+    // The ports are listed when the serial port is first chosen: asking the
+    // system for them is the dearest part of building the bar, and a window
+    // that starts with virtual or saved robots does not need them.
     updateTransportFields();
     setConnected(false);
     retranslateUi();
@@ -152,6 +154,7 @@ void ConnectionBar::showOwnError(OwnError error)
 
 void ConnectionBar::refreshPorts()
 {
+    m_portsListed = true;
     const QString typed = m_port->currentText();
     m_port->clear();
     for (const QSerialPortInfo &info : QSerialPortInfo::availablePorts())
@@ -162,6 +165,8 @@ void ConnectionBar::refreshPorts()
 void ConnectionBar::updateTransportFields()
 {
     const auto t = ConnectionRequest::Transport(m_transport->currentData().toInt());
+    if (t == ConnectionRequest::Transport::Serial && !m_portsListed)
+        refreshPorts();
     m_port->setVisible(t == ConnectionRequest::Transport::Serial);
     m_refresh->setVisible(t == ConnectionRequest::Transport::Serial);
     m_tcp->setVisible(t == ConnectionRequest::Transport::Tcp);

@@ -81,6 +81,7 @@ private:
     QPushButton *m_disconnect = nullptr;
     QLabel *m_lockedHint = nullptr;
     bool m_connected = false;
+    bool m_portsListed = false; // refreshPorts() has run
     QLabel *m_error = nullptr;
     OwnError m_ownError = OwnError::None;
     QString m_badBridge; // the bridge address that BadBridge is about

@@ -211,7 +211,9 @@ bool Room::step(RobotId id, oi::Pose &pose, World &world, RoomView &view)
     // own move below changes nothing it sees of them.
     const bool othersCurrent = view.othersVersion == m_othersVersion;
     view.lifted = false;
-    if (Entry *e = find(id)) {
+    Entry *e = view.slot < m_robots.size() && m_robots[view.slot].robot.id == id ? &m_robots[view.slot] : find(id);
+    if (e) {
+        view.slot = std::size_t(e - m_robots.data());
         view.lifted = e->robot.lifted;
         if (e->moveSerial != view.moveSerial) {
             view.moveSerial = e->moveSerial;
@@ -226,9 +228,9 @@ bool Room::step(RobotId id, oi::Pose &pose, World &world, RoomView &view)
     }
     if (!othersCurrent) {
         view.others.clear();
-        for (const Entry &e : m_robots)
-            if (e.robot.id != id && !e.robot.lifted)
-                view.others.push_back(Disc{e.robot.pose.xMm, e.robot.pose.yMm, kBodyRadiusMm});
+        for (const Entry &other : m_robots)
+            if (other.robot.id != id && !other.robot.lifted)
+                view.others.push_back(Disc{other.robot.pose.xMm, other.robot.pose.yMm, kBodyRadiusMm});
     }
     view.othersVersion = m_othersVersion;
     return changed;

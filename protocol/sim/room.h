@@ -45,6 +45,7 @@ struct RoomView {
     // stay as it was.
     std::uint64_t othersVersion = 0;
     bool lifted = false;
+    std::size_t slot = 0; // where the room last found the robot: looked at first
 };
 
 class Room {

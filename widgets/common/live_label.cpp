@@ -12,9 +12,14 @@ void setLiveText(QLabel *label, const QString &text)
     // Fixed in both directions, QWidget::updateGeometry() leaves the layouts
     // alone: the label only repaints.
     label->setText(text);
-    const QSize fits = label->sizeHint();
+    // Measured with the font, not QLabel::sizeHint(): a selectable label lays
+    // out a whole text document for its hint. Two pixels for the text cursor.
+    const QMargins margins = label->contentsMargins();
+    const int width = label->fontMetrics().horizontalAdvance(text) + margins.left() + margins.right() +
+                      2 * (label->margin() + label->frameWidth() + std::max(0, label->indent())) + 2;
     const bool fixed = label->minimumSize() == label->maximumSize();
-    if (fixed && fits.width() <= label->minimumWidth() && fits.height() == label->minimumHeight())
+    if (fixed && width <= label->minimumWidth())
         return;
-    label->setFixedSize(std::max(fits.width(), fixed ? label->minimumWidth() : 0), fits.height());
+    const int height = fixed ? label->minimumHeight() : label->sizeHint().height();
+    label->setFixedSize(std::max(width, fixed ? label->minimumWidth() : 0), height);
 }

@@ -4,7 +4,7 @@
 class QLabel;
 class QString;
 
-// Sets the text of a one-line label that changes while the robot streams (a
+// Sets the plain text of a one-line label that changes while the robot streams (a
 // rate, a count). A label of free size asks its layout, and every layout up
 // to the window, to be done again on each new text; this one keeps the size
 // of its widest text so far, so a new text repaints the label alone and only

@@ -2,6 +2,7 @@
 #include "robot_status_bar.h"
 
 #include "display_palette.h"
+#include "live_label.h"
 #include "oi_text.h"
 #include "robot_session.h"
 
@@ -83,7 +84,7 @@ void RobotStatusBar::showState(oilink::LinkState state)
 void RobotStatusBar::showStatistics(const oilink::LinkStats &stats)
 {
     m_shownStats = stats;
-    m_errors->setText(tr("checksum failures %1, resyncs %2").arg(stats.checksumFailures).arg(stats.resyncs));
+    setLiveText(m_errors, tr("checksum failures %1, resyncs %2").arg(stats.checksumFailures).arg(stats.resyncs));
     // Said once there is something to say, so that a small screen keeps room
     // for the rest. A bridge tells only what changed, in fewer messages than
     // the robot's frames, and checks the robot's bytes itself.
@@ -96,7 +97,7 @@ void RobotStatusBar::showRate()
 {
     const oilink::LinkStats &stats = m_shownStats;
     m_rate->setVisible(m_shownState == oilink::LinkState::Streaming || m_shownState == oilink::LinkState::Stale);
-    m_rate->setText(m_overNetwork ? tr("%1 messages/s from the bridge").arg(stats.framesPerSecond, 0, 'f', 1)
+    setLiveText(m_rate, m_overNetwork ? tr("%1 messages/s from the bridge").arg(stats.framesPerSecond, 0, 'f', 1)
                                   : tr("%1 frames/s").arg(stats.framesPerSecond, 0, 'f', 1));
     m_rate->setToolTip(m_overNetwork ? tr("Telemetry messages from the robot's bridge, which sends only what changed. "
                                           "The robot's own frame rate is on its tile in the fleet view.")

@@ -269,11 +269,12 @@ void SelectedRobotView::refresh()
     }
     ++m_displayTicks;
     // Scrolling plots are the dearest thing on screen; 15 Hz still moves
-    // them smoothly and halves their cost.
-    if (isOnScreen(v.plots) && m_displayTicks % 2 == 0)
+    // them smoothly and halves their cost. Whether a view is on screen is
+    // dear to ask (its visible region), so it is asked only on its ticks.
+    if (m_displayTicks % 2 == 0 && isOnScreen(v.plots))
         v.plots->refresh();
     // Where the virtual robots really are, so the map shows the odometry drift.
-    if (isOnScreen(v.map) && m_displayTicks % 3 == 0)
+    if (m_displayTicks % 3 == 0 && isOnScreen(v.map))
         m_room.showOn(*v.map, &robot);
     if (m_displayTicks % kCardTicks == 0)
         v.robotBar->refresh();

@@ -2,6 +2,7 @@
 #include "byte_inspector.h"
 
 #include "display_palette.h"
+#include "live_label.h"
 #include "on_screen.h"
 
 #include <QCheckBox>
@@ -136,7 +137,11 @@ ByteInspector::ByteInspector(QWidget *parent)
     m_renderTimer->setObjectName(QStringLiteral("renderTimer"));
     m_renderTimer->setSingleShot(true);
     m_renderTimer->setInterval(kRenderIntervalMs);
-    connect(m_renderTimer, &QTimer::timeout, this, &ByteInspector::flushView);
+    connect(m_renderTimer, &QTimer::timeout, this, [this] {
+        // Behind another dock's tab: kept, not laid out, until its tab comes up.
+        if (isOnScreen(this))
+            flushView();
+    });
     showError(QString());
     retranslateUi();
 }
@@ -277,8 +282,9 @@ void ByteInspector::record(Entry entry)
 
 void ByteInspector::scheduleRender()
 {
-    // A hidden log costs nothing to keep; it renders when shown.
-    if (isOnScreen(this) && !m_renderTimer->isActive())
+    // A hidden log costs nothing to keep; it renders when shown. Whether it
+    // is on screen is asked once per tick, not per entry: it is dear to ask.
+    if (isVisible() && !m_renderTimer->isActive())
         m_renderTimer->start();
 }
 
@@ -474,7 +480,7 @@ void ByteInspector::updateStatus()
         status += tr(" \u00b7 paused, %Ln new", nullptr, int(std::min<std::size_t>(m_unrendered, INT_MAX)));
     else if (m_paused)
         status += tr(" \u00b7 paused");
-    m_status->setText(status);
+    setLiveText(m_status, status);
 }
 
 void ByteInspector::submitRaw()

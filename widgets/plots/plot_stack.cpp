@@ -440,8 +440,9 @@ QMargins PlotStack::sideMargins() const
 int PlotStack::columnCount(const Panel &panel) const
 {
     // The side margins are fixed (applyTheme), so this holds before the
-    // first layout too.
-    const QMargins margins = panel.plot->axisRect()->margins();
+    // first layout too. The time axis holds its rectangle; QCustomPlot::axisRect()
+    // walks the plot's layout for it on every call.
+    const QMargins margins = panel.plot->xAxis->axisRect()->margins();
     return std::max(1, panel.plot->width() - margins.left() - margins.right());
 }
 
@@ -511,7 +512,7 @@ QRect PlotStack::changedTracesRect(const Panel &panel) const
     // The data area, and a few pixels round it for the pen; from the first
     // changed point to the newest sample.
     constexpr int kPen = 3;
-    QRect area = panel.plot->axisRect()->rect().adjusted(-kPen, -kPen, kPen, kPen);
+    QRect area = panel.plot->xAxis->axisRect()->rect().adjusted(-kPen, -kPen, kPen, kPen);
     if (from == kUnchanged)
         return {};
     if (std::isfinite(from)) {

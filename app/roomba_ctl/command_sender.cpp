@@ -104,15 +104,15 @@ void CommandSender::useProfile(oi::ProfileId id)
     if (m_phase != Phase::Opening)
         return;
     m_profile = &oi::profile(id);
-    const oi::EncodeResult bytes = oi::encodeCommand(oi::CommandEncoder(*m_profile), m_order.name, m_order.args);
-    if (!bytes) {
-        finish(1, fromStd(bytes.error().describe()));
+    const oi::Result<oi::OiCommand> typed =
+        oi::commandFromText(oi::CommandEncoder(*m_profile), m_order.name, m_order.args);
+    if (!typed) {
+        finish(1, fromStd(typed.error().describe()));
         return;
     }
-    if (!bytes.warning.empty())
-        emit warning(fromStd(bytes.warning));
-    // One command, as typed: its bytes read back as the robot will read them.
-    m_command = oi::decodeCommand(*m_profile, *bytes).command;
+    if (!typed.warning.empty())
+        emit warning(fromStd(typed.warning));
+    m_command = *typed;
     if (const QString why = m_order.settings.whyNoBaudChange(); !why.isEmpty() && m_command.command == oi::Command::Baud) {
         finish(1, why);
         return;

@@ -297,7 +297,9 @@ Result<OiCommand> commandFromText(const CommandEncoder &encoder, std::string_vie
     if (!bytes)
         return bytes.error();
     // The encoder made these bytes: they read back as the one command.
-    return decodeCommand(encoder.robotProfile(), *bytes).command;
+    Result<OiCommand> command = decodeCommand(encoder.robotProfile(), *bytes).command;
+    command.warning = bytes.warning;
+    return command;
 }
 
 Result<std::vector<OiCommand>> scriptCommands(const RobotProfile &profile, const OiCommand &script)

@@ -47,7 +47,7 @@ EncodeResult encodeCommands(const CommandEncoder &encoder, std::span<const OiCom
 
 // A command given by name with text arguments, as the typed command it is:
 // the friendly forms of command_catalog.h's encodeCommand, checked as it
-// checks them.
+// checks them, with its warning.
 Result<OiCommand> commandFromText(const CommandEncoder &encoder, std::string_view name,
                                   std::span<const std::string> args);
 

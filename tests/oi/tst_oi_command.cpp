@@ -367,6 +367,15 @@ void TestOiCommand::typedErrors()
     QVERIFY(slot4.ok());
     QCOMPARE(slot4.warning, create2.play(4).warning);
     QVERIFY(!slot4.warning.empty());
+
+    // A command given as text is the typed command, with the encoder's warning.
+    const std::vector<std::string> words{"4", "C4:8"};
+    const Result<OiCommand> song = commandFromText(create2, "song", words);
+    QVERIFY(song.ok());
+    QCOMPARE(song->command, Command::Song);
+    QCOMPARE(song->fields, std::vector<int>({4}));
+    QCOMPARE(song->data, std::vector<std::uint8_t>({60, 8}));
+    QVERIFY2(song.warning.find("slot 4") != std::string::npos, song.warning.c_str());
 }
 
 QTEST_GUILESS_MAIN(TestOiCommand)

@@ -422,10 +422,11 @@ void RobotSession::onReplayStatus(const oilink::ReplayStatus &status)
     emit replayStatus(status);
 }
 
-void RobotSession::onBytesSent(const QByteArray &bytes)
+void RobotSession::onBytesSent(const QByteArray &bytes, const std::vector<oi::OiCommand> &commands)
 {
     const qint64 now = QDateTime::currentMSecsSinceEpoch();
     m_recentBytes.append(true, bytes, now);
+    emit commandsSent(commands, now);
     emit bytesSent(bytes, now);
 }
 

@@ -215,6 +215,8 @@ signals:
     // calibration() changed: applied, reset, or restored for another robot.
     void calibrationChanged();
     void errorOccurred(const QString &message);
+    // The typed commands the link sent, just before their bytes (bytesSent).
+    void commandsSent(const std::vector<oi::OiCommand> &commands, qint64 msecs);
     void bytesSent(const QByteArray &bytes, qint64 msecs);
     void bytesReceived(const QByteArray &bytes, qint64 msecs);
     void sensorReply(const oi::SensorSnapshot &reply);
@@ -241,7 +243,7 @@ private:
     void noteRequestedSpeeds(const oi::SensorSnapshot &frame, double readSeconds);
     void onProfileAssumed(oi::ProfileId assumed);
     void setProfileAssumed(bool assumed);
-    void onBytesSent(const QByteArray &bytes);
+    void onBytesSent(const QByteArray &bytes, const std::vector<oi::OiCommand> &commands);
     void noteAsked(const std::vector<oi::OiCommand> &commands);
     void onBytesReceived(const QByteArray &bytes);
     void onReplayStatus(const oilink::ReplayStatus &status);

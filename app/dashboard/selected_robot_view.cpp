@@ -89,6 +89,7 @@ void SelectedRobotView::show(RobotSession *robot)
                 v.connectionBar->showError(tr("Recording stopped: %1").arg(status.error));
         }),
         connect(robot, &RobotSession::replayStatus, v.recording, &RecordingActions::showReplay),
+        connect(robot, &RobotSession::commandsSent, v.inspector, &ByteInspector::expectReplies),
         connect(robot, &RobotSession::bytesSent, v.inspector, &ByteInspector::appendTx),
         connect(robot, &RobotSession::bytesReceived, v.inspector, &ByteInspector::appendRx),
         connect(robot, &RobotSession::frameReceived, v.inspector, &ByteInspector::addSnapshot),

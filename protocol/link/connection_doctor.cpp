@@ -27,8 +27,6 @@ QString lineWords(BrcLine line)
     return QString::fromUtf8(words.data(), qsizetype(words.size()));
 }
 
-QByteArray bytes(std::initializer_list<std::uint8_t> values) { return ProfileProbe::bytesOf(values); }
-
 QString profileName(oi::ProfileId id)
 {
     const std::string_view name = oi::profile(id).name;
@@ -119,18 +117,19 @@ void ConnectionDoctor::after(int ms, std::function<void()> then)
     m_timer.start(ms);
 }
 
-void ConnectionDoctor::write(const QByteArray &data)
+void ConnectionDoctor::write(const std::vector<oi::OiCommand> &commands)
 {
+    const QByteArray data = ProfileProbe::handshakeBytes(commands);
     if (m_transport.write(data))
-        emit bytesSent(data);
+        emit sent(data, commands);
 }
 
-void ConnectionDoctor::ask(const QByteArray &question, qsizetype expected, Answer then)
+void ConnectionDoctor::ask(const oi::OiCommand &question, qsizetype expected, Answer then)
 {
     m_received.clear();
     m_expected = expected;
     m_listening = true;
-    write(question);
+    write({question});
     after(kReplyTimeoutMs, [this, then = std::move(then)] {
         m_listening = false;
         then(m_received);
@@ -146,13 +145,13 @@ QString ConnectionDoctor::baudName(int baud) const
 // when asked to.
 void ConnectionDoctor::askMode(bool withStart, std::function<void(bool)> then)
 {
-    write(withStart ? bytes({128, 150, 0}) : bytes({150, 0}));
+    write(ProfileProbe::pauseCommands(withStart));
     if (withStart)
         emit startSent();
     m_listening = true;
     m_expected = 0;
     after(kDrainMs, [this, then = std::move(then)] {
-        ask(ProfileProbe::modeQuestion(), 2,
+        ask(ProfileProbe::modeQuestionCommand(), 2,
             [then](const QByteArray &answer) { then(ProfileProbe::isModeAnswer(ProfileProbe::answerOf(answer, 2))); });
     });
 }
@@ -337,7 +336,7 @@ void ConnectionDoctor::answered(int baud, Finding cause)
 {
     m_report.baud = baud;
     const oi::PacketGroup *group = oi::profile(oi::ProfileId::Create2).group(kRoombaGroup);
-    ask(bytes({142, std::uint8_t(kRoombaGroup)}), group->bytes, [this, baud, cause, group](const QByteArray &answer) {
+    ask({oi::Command::Sensors, {kRoombaGroup}, {}}, group->bytes, [this, baud, cause, group](const QByteArray &answer) {
         const bool roomba = ProfileProbe::answerOf(answer, group->bytes).size() == group->bytes;
         const oi::ProfileId found = roomba ? oi::ProfileId::Create2 : oi::ProfileId::Create1;
         m_report.profile = found;

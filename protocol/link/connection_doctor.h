@@ -8,6 +8,7 @@
 
 #include "robot_profile.h"
 #include "stream_parser.h"
+#include "typed_commands.h"
 
 #include <QByteArray>
 #include <QList>
@@ -57,14 +58,14 @@ public:
 
 signals:
     void stepDone(const QString &step);
-    void bytesSent(const QByteArray &bytes); // what the doctor wrote to the robot
+    void sent(const QByteArray &bytes, const std::vector<oi::OiCommand> &commands); // written to the robot
     void startSent(); // among those bytes, Start (128): the robot goes to Passive
     void finished(const oilink::ConnectionDoctor::Report &report);
 
 private:
     using Answer = std::function<void(const QByteArray &)>;
-    void write(const QByteArray &bytes);
-    void ask(const QByteArray &question, qsizetype expected, Answer then);
+    void write(const std::vector<oi::OiCommand> &commands);
+    void ask(const oi::OiCommand &question, qsizetype expected, Answer then);
     void after(int ms, std::function<void()> then);
     void tryBaud(qsizetype index);
     void askMode(bool withStart, std::function<void(bool answered)> then);

@@ -3,6 +3,7 @@
 
 #include "transport.h"
 
+#include "command_encoder.h"
 #include "stream_parser.h"
 
 namespace oilink {
@@ -11,15 +12,23 @@ namespace {
 constexpr int kModeAttempts = 2;
 constexpr std::uint8_t kModeMax = 3;
 constexpr std::uint8_t kBumpBitsUnused = 0xE0;
-
-QByteArray bytes(std::initializer_list<std::uint8_t> values) { return ProfileProbe::bytesOf(values); }
 } // namespace
 
-QByteArray ProfileProbe::bytesOf(std::initializer_list<std::uint8_t> values)
+QByteArray ProfileProbe::handshakeBytes(const std::vector<oi::OiCommand> &commands)
 {
-    QByteArray out;
-    for (std::uint8_t v : values)
-        out.append(static_cast<char>(v));
+    const oi::EncodeResult encoded =
+        oi::encodeCommands(oi::CommandEncoder(oi::profile(oi::ProfileId::Create2)), commands);
+    Q_ASSERT(encoded.ok());
+    return encoded ? QByteArray(reinterpret_cast<const char *>(encoded->data()), qsizetype(encoded->size()))
+                   : QByteArray();
+}
+
+std::vector<oi::OiCommand> ProfileProbe::pauseCommands(bool withStart)
+{
+    std::vector<oi::OiCommand> out;
+    if (withStart)
+        out.push_back({oi::Command::Start, {}, {}});
+    out.push_back({oi::Command::PauseResumeStream, {0}, {}});
     return out;
 }
 
@@ -82,7 +91,7 @@ void ProfileProbe::tryBaud()
     m_received.clear();
     m_step = Step::Draining;
     m_startSent = m_startPolicy == StartPolicy::Always;
-    send(m_startSent ? bytes({128, 150, 0}) : bytes({150, 0}));
+    send(pauseCommands(m_startSent));
     if (m_startSent)
         emit startSent();
     m_timer.start(kDrainMs);
@@ -94,19 +103,20 @@ void ProfileProbe::nextBaud()
     tryBaud();
 }
 
-void ProfileProbe::send(const QByteArray &data)
+void ProfileProbe::send(const std::vector<oi::OiCommand> &commands)
 {
+    const QByteArray data = handshakeBytes(commands);
     if (m_transport.write(data))
-        emit bytesSent(data);
+        emit sent(data, commands);
 }
 
-void ProfileProbe::ask(const QByteArray &question, qsizetype expected, Step step)
+void ProfileProbe::ask(const oi::OiCommand &question, qsizetype expected, Step step)
 {
     m_received.clear();
     m_expected = expected;
     m_settling = false;
     m_step = step;
-    send(question);
+    send({question});
     m_timer.start(kReplyTimeoutMs);
 }
 
@@ -127,21 +137,21 @@ void ProfileProbe::onTimeout()
     case Step::Idle:
         return;
     case Step::Draining:
-        ask(modeQuestion(), 2, Step::AskMode);
+        ask(modeQuestionCommand(), 2, Step::AskMode);
         return;
     case Step::AskMode: {
         if (const QByteArray answer = answerOf(m_received, 2); isModeAnswer(answer)) {
             m_mode = static_cast<oi::OiMode>(answer.at(0));
             const oi::PacketGroup *group = oi::profile(oi::ProfileId::Create2).group(101);
-            ask(bytes({142, 101}), group->bytes, Step::AskRoombaGroup);
+            ask({oi::Command::Sensors, {101}, {}}, group->bytes, Step::AskRoombaGroup);
         } else if (!m_startSent && m_startPolicy == StartPolicy::IfSilent) {
             // Silent: Off mode, or the wrong baud. Start opens the interface.
             m_startSent = true;
-            send(bytes({128}));
+            send({{oi::Command::Start, {}, {}}});
             emit startSent();
-            ask(modeQuestion(), 2, Step::AskMode);
+            ask(modeQuestionCommand(), 2, Step::AskMode);
         } else if (++m_modeAttempts < kModeAttempts) {
-            ask(modeQuestion(), 2, Step::AskMode);
+            ask(modeQuestionCommand(), 2, Step::AskMode);
         } else {
             nextBaud();
         }

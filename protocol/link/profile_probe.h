@@ -6,13 +6,14 @@
 
 #include "robot_profile.h"
 #include "sensor_snapshot.h"
+#include "typed_commands.h"
 
 #include <QByteArray>
 #include <QList>
 #include <QObject>
 
 #include <cstdint>
-#include <initializer_list>
+#include <vector>
 
 namespace oilink {
 
@@ -54,9 +55,14 @@ public:
     // After the expected bytes, wait this long for more: extra bytes mean
     // the answer was garbage.
     static constexpr int kQuietMs = 30;
-    static QByteArray bytesOf(std::initializer_list<std::uint8_t> values);
+    // The handshake's commands encode alike on every profile, so they are
+    // written before the profile is known.
+    static QByteArray handshakeBytes(const std::vector<oi::OiCommand> &commands);
+    // Pause any stream, after Start when asked.
+    static std::vector<oi::OiCommand> pauseCommands(bool withStart);
     // Query List 35 (OI mode), 7 (bumps and wheel drops).
-    static QByteArray modeQuestion() { return bytesOf({149, 2, 35, 7}); }
+    static oi::OiCommand modeQuestionCommand() { return {oi::Command::QueryList, {}, {35, 7}}; }
+    static QByteArray modeQuestion() { return handshakeBytes({modeQuestionCommand()}); }
     // Exactly two bytes: a mode of 1..3 and a bumps byte with bits 5..7 clear.
     static bool isModeAnswer(const QByteArray &answer);
     // The unframed answer of `size` bytes among what was received: as it
@@ -87,7 +93,7 @@ public:
     void feed(const QByteArray &bytes);
 
 signals:
-    void bytesSent(const QByteArray &bytes);
+    void sent(const QByteArray &bytes, const std::vector<oi::OiCommand> &commands);
     void startSent(); // among those bytes, Start (128): the robot goes to Passive
     // `baud` is 0 where the transport has no baud of its own.
     void detected(oi::ProfileId profile, int baud);
@@ -98,8 +104,8 @@ private:
 
     void tryBaud();
     void nextBaud();
-    void send(const QByteArray &bytes);
-    void ask(const QByteArray &bytes, qsizetype expected, Step step);
+    void send(const std::vector<oi::OiCommand> &commands);
+    void ask(const oi::OiCommand &question, qsizetype expected, Step step);
     void onTimeout();
     void finish(oi::ProfileId profile);
 

@@ -344,7 +344,7 @@ void RobotLink::startProbe()
             m_probe->setStartPolicy(ProfileProbe::StartPolicy::Never);
         else if (!m_settings.streaming)
             m_probe->setStartPolicy(ProfileProbe::StartPolicy::IfSilent);
-        connect(m_probe, &ProfileProbe::bytesSent, this, &RobotLink::noteSent);
+        connect(m_probe, &ProfileProbe::sent, this, &RobotLink::noteSent);
         connect(m_probe, &ProfileProbe::startSent, this, &RobotLink::noteStartSent);
         connect(m_probe, &ProfileProbe::detected, this, [this](oi::ProfileId id, int baud) {
             m_profile = &oi::profile(id);
@@ -709,7 +709,7 @@ bool RobotLink::writeCommands(const std::vector<oi::OiCommand> &commands, bool a
         reportError(tr("%1: write failed").arg(m_settings.describe()));
         return false;
     }
-    noteSent(bytes);
+    noteSent(bytes, commands);
     const qint64 nowMs = m_clock.nowNs() / 1'000'000;
     for (const oi::OiCommand &command : commands)
         m_modeReading.sent(command.command, nowMs);
@@ -721,11 +721,11 @@ void RobotLink::noteStartSent()
     m_modeReading.sent(oi::Command::Start, m_clock.nowNs() / 1'000'000);
 }
 
-void RobotLink::noteSent(const QByteArray &bytes)
+void RobotLink::noteSent(const QByteArray &bytes, const std::vector<oi::OiCommand> &commands)
 {
     m_totals.bytesSent += static_cast<quint64>(bytes.size());
     record(recording::RecordKind::Sent, bytes);
-    emit rawBytesSent(bytes);
+    emit rawBytesSent(bytes, commands);
 }
 
 void RobotLink::querySensors(const QList<int> &packetIds)
@@ -917,7 +917,7 @@ void RobotLink::startDoctor()
     dropPartialInput();
     setState(LinkState::Connecting);
     m_doctor = new ConnectionDoctor(*m_transport, m_settings.profile, m_settings.baud, m_clock, this);
-    connect(m_doctor, &ConnectionDoctor::bytesSent, this, &RobotLink::noteSent);
+    connect(m_doctor, &ConnectionDoctor::sent, this, &RobotLink::noteSent);
     connect(m_doctor, &ConnectionDoctor::startSent, this, &RobotLink::noteStartSent);
     connect(m_doctor, &ConnectionDoctor::stepDone, this, &RobotLink::connectionCheckStep);
     connect(m_doctor, &ConnectionDoctor::finished, this, &RobotLink::onDoctorFinished);

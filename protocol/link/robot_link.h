@@ -10,6 +10,7 @@
 
 #include "mode_reading.h"
 #include "oi_command.h"
+#include "typed_commands.h"
 #include "stream_parser.h"
 
 #include <QByteArray>
@@ -155,7 +156,9 @@ signals:
     // / 600's charging status, "bat:   min 0  sec 12  mV 16421 ..."), read
     // as words, not counted as discarded bytes.
     void robotText(const QString &line);
-    void rawBytesSent(const QByteArray &bytes);
+    // The bytes written and the typed commands they are (the handshake's too),
+    // for a reader that must know what was asked without decoding.
+    void rawBytesSent(const QByteArray &bytes, const std::vector<oi::OiCommand> &commands);
     void rawBytesReceived(const QByteArray &bytes);
     void errorOccurred(const QString &message);
     void recordingStatus(const oilink::RecordingStatus &status);
@@ -210,7 +213,7 @@ private:
     // The profile commands are encoded with.
     const oi::RobotProfile &writingProfile() const;
     // Counts, records and shows bytes that went to the robot.
-    void noteSent(const QByteArray &bytes);
+    void noteSent(const QByteArray &bytes, const std::vector<oi::OiCommand> &commands);
     // The probe or the connection doctor sent Start among its questions.
     void noteStartSent();
     void dropPartialInput();

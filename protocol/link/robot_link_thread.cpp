@@ -183,7 +183,8 @@ void RobotLinkThread::start()
     relay(link, &RobotLink::connectionChecked,
           [this](const ConnectionReport &r) { emit connectionChecked(r); });
     relay(link, &RobotLink::robotText, [this](const QString &line) { emit robotText(line); });
-    relay(link, &RobotLink::rawBytesSent, [this](const QByteArray &b) { emit rawBytesSent(b); });
+    relay(link, &RobotLink::rawBytesSent,
+          [this](const QByteArray &b, const std::vector<oi::OiCommand> &c) { emit rawBytesSent(b, c); });
     relay(link, &RobotLink::errorOccurred, [this](const QString &m) { emit errorOccurred(m); });
     relay(link, &RobotLink::recordingStatus, [this](const RecordingStatus &st) { emit recordingStatus(st); });
     relay(link, &RobotLink::replayStatus, [this](const ReplayStatus &st) { emit replayStatus(st); });

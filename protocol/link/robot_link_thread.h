@@ -91,7 +91,7 @@ signals:
     void connectionCheckStep(const QString &step);
     void connectionChecked(const oilink::ConnectionReport &report);
     void robotText(const QString &line);        // see RobotLink::robotText
-    void rawBytesSent(const QByteArray &bytes);
+    void rawBytesSent(const QByteArray &bytes, const std::vector<oi::OiCommand> &commands);
     void rawBytesReceived(const QByteArray &bytes);
     void errorOccurred(const QString &message);
     void recordingStatus(const oilink::RecordingStatus &status);

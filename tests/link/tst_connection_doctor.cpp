@@ -358,9 +358,17 @@ private slots:
         QCOMPARE(steps.size(), report.steps.size());
         // Motion stopped first, then the doctor's questions, through the link.
         QCOMPARE(sent.first().first().toByteArray(), QByteArray("\x89\0\0\0\0\x8a\0", 7));
+        // Each write comes with the typed commands it is, the doctor's questions too.
+        using Commands = std::vector<oi::OiCommand>;
+        QCOMPARE(sent.first().at(1).value<Commands>(),
+                 (Commands{{oi::Command::Drive, {0, 0}, {}}, {oi::Command::Motors, {0}, {}}}));
         bool askedMode = false;
-        for (const QList<QVariant> &write : sent)
-            askedMode = askedMode || write.first().toByteArray() == ProfileProbe::modeQuestion();
+        for (const QList<QVariant> &write : sent) {
+            const bool mode = write.first().toByteArray() == ProfileProbe::modeQuestion();
+            if (mode)
+                QCOMPARE(write.at(1).value<Commands>(), Commands{ProfileProbe::modeQuestionCommand()});
+            askedMode = askedMode || mode;
+        }
         QVERIFY(askedMode);
         QCOMPARE(states.value(0), LinkState::Connecting);
 

@@ -509,15 +509,21 @@ private slots:
         Recording &r = current()->recording();
         current()->clearWritten();
         QSignalSpy errors(m_link, &RobotLink::errorOccurred);
-        m_link->send({oi::OiCommand{C::Safe, {}, {}},
-                      oi::OiCommand{C::Drive, {-200, 500}, {}},
-                      oi::OiCommand{C::Song, {3}, {60, 32, 62, 16}},
-                      oi::OiCommand{C::LowSideDrivers, {5}, {}}, // the Create's 138
-                      oi::OiCommand{C::WaitTime, {10}, {}}});
+        QSignalSpy sent(m_link, &RobotLink::rawBytesSent);
+        const std::vector<oi::OiCommand> commands{oi::OiCommand{C::Safe, {}, {}},
+                                                  oi::OiCommand{C::Drive, {-200, 500}, {}},
+                                                  oi::OiCommand{C::Song, {3}, {60, 32, 62, 16}},
+                                                  oi::OiCommand{C::LowSideDrivers, {5}, {}}, // the Create's 138
+                                                  oi::OiCommand{C::WaitTime, {10}, {}}};
+        m_link->send(commands);
         QCOMPARE(errors.size(), 0);
         const QByteArray expected = bytes({131, 137, 255, 56, 1, 244, 140, 3, 2, 60, 32, 62, 16, 138, 5, 155, 10});
         QCOMPARE(r.writes, QList<QByteArray>{expected});
         QCOMPARE(r.commands, QList<QByteArray>{expected});
+        // Readers learn what was sent from the commands beside the bytes.
+        QCOMPARE(sent.size(), 1);
+        QCOMPARE(sent.first().at(0).toByteArray(), expected);
+        QCOMPARE(sent.first().at(1).value<std::vector<oi::OiCommand>>(), commands);
 
         // One the profile refuses sends nothing, and says which field.
         m_link->send({oi::OiCommand{C::Safe, {}, {}}, oi::OiCommand{C::Drive, {600, 0}, {}}});

@@ -146,6 +146,14 @@ private slots:
 
         QSignalSpy states(&robot, &RobotSession::stateChanged);
         QSignalSpy shown(&robot, &RobotSession::scriptShown);
+        // Each write is told first as the typed commands it is.
+        QStringList told;
+        QObject listening; // gone before `told`, before the robot's last words
+        connect(&robot, &RobotSession::commandsSent, &listening, [&told](const std::vector<oi::OiCommand> &commands) {
+            for (const oi::OiCommand &c : commands)
+                told << QString::number(int(c.command));
+        });
+        connect(&robot, &RobotSession::bytesSent, &listening, [&told] { told << QStringLiteral("bytes"); });
         robot.showScript();
         QVERIFY(shown.wait(5000));
         QCOMPARE(shown.at(0).at(0).toByteArray(), QByteArray(reinterpret_cast<const char *>(script.data()), qsizetype(script.size())));
@@ -159,6 +167,9 @@ private slots:
         for (const QList<QVariant> &s : sent)
             bytesSent << byteText(s.at(0).toByteArray());
         QCOMPARE(bytesSent, (QStringList{"150 0", "154", "150 1"}));
+        QCOMPARE(told, (QStringList{QString::number(int(oi::Command::PauseResumeStream)), "bytes",
+                                    QString::number(int(oi::Command::ShowScript)), "bytes",
+                                    QString::number(int(oi::Command::PauseResumeStream)), "bytes"}));
     }
 
     // ERRATA 20: played in Passive, a script's Drive is ignored, its Wait

@@ -158,15 +158,23 @@ private slots:
     void readsRepliesToRequests()
     {
         ByteInspector inspector;
+        // The bytes of a request alone are shown, not read for what they ask.
+        inspector.appendTx(bytesOf({142, 22}), 50);
+        inspector.appendRx(bytesOf({0x39, 0xE4}), 62);
+        QVERIFY(inspector.lastEntries(1).front().endsWith(QStringLiteral("outside any stream frame")));
+        // The link's typed commands say what was asked.
+        inspector.expectReplies({{oi::Command::Sensors, {22}, {}}}, 100);
         inspector.appendTx(bytesOf({142, 22}), 100);
         inspector.appendRx(bytesOf({0x39, 0xE4}), 112);
         QVERIFY(inspector.lastEntries(1).front().endsWith(QStringLiteral("RX  57 228  reply: Voltage 14820 mV")));
+        inspector.expectReplies({{oi::Command::Start, {}, {}}, {oi::Command::QueryList, {}, {21, 24}}}, 200);
         inspector.appendTx(bytesOf({149, 2, 21, 24}), 200);
         inspector.appendRx(bytesOf({2}), 210);
         inspector.appendRx(bytesOf({23}), 215);
         QVERIFY(inspector.lastEntries(1).front().endsWith(
             QStringLiteral("RX  2 23  reply: Charging State 2, Temperature 23 \u00b0C")));
         // Long after a request, bytes are not taken for its reply.
+        inspector.expectReplies({{oi::Command::Sensors, {22}, {}}}, 300);
         inspector.appendTx(bytesOf({142, 22}), 300);
         inspector.appendRx(bytesOf({0x39, 0xE4}), 300 + RxFrameScanner::kReplyTimeoutMs + 1);
         QVERIFY(inspector.lastEntries(1).front().endsWith(QStringLiteral("outside any stream frame")));
@@ -544,7 +552,8 @@ private slots:
         inspector.appendRx(QByteArray("bl-start\r\n2015-01-07-2130-L   \r\nbattery-current-zero 252\r\n"), ms += 40);
         inspector.appendTx(bytesOf({128}), ms += 900);
         inspector.appendTx(bytesOf({131}), ms += 20);
-        inspector.appendTx(bytesOf({142, 22}), ms += 30);
+        inspector.expectReplies({{oi::Command::Sensors, {22}, {}}}, ms += 30);
+        inspector.appendTx(bytesOf({142, 22}), ms);
         inspector.appendRx(bytesOf({0x39, 0xE4}), ms += 12);
         inspector.appendTx(bytesOf({148, 4, 7, 22, 23, 46}), ms += 30);
         for (int i = 0; i < 24; ++i) {

@@ -213,6 +213,17 @@ void ByteInspector::setMaxEntries(int count)
     m_view->setMaximumBlockCount(m_maxEntries);
 }
 
+void ByteInspector::expectReplies(const std::vector<oi::OiCommand> &commands, qint64 msecs)
+{
+    // Tell the scanner what the robot is about to answer.
+    for (const oi::OiCommand &command : commands) {
+        if (command.command == oi::Command::Sensors && !command.fields.empty())
+            m_scanner.expectReply({std::uint8_t(command.fields[0])}, msecs);
+        else if (command.command == oi::Command::QueryList)
+            m_scanner.expectReply(command.data, msecs);
+    }
+}
+
 void ByteInspector::appendTx(const QByteArray &bytes, qint64 msecs)
 {
     if (bytes.isEmpty())
@@ -221,13 +232,6 @@ void ByteInspector::appendTx(const QByteArray &bytes, qint64 msecs)
     const auto all = asBytes(bytes);
     std::size_t at = 0;
     for (CommandDecoder::Decoded &d : m_decoder.decode(all)) {
-        if (d.command) {
-            // Tell the scanner what the robot is about to answer.
-            if (d.command->command == oi::Command::Sensors)
-                m_scanner.expectReply({std::uint8_t(d.command->fields[0])}, msecs);
-            else if (d.command->command == oi::Command::QueryList)
-                m_scanner.expectReply(d.command->data, msecs);
-        }
         Entry e;
         e.msecs = msecs;
         e.direction = Direction::Tx;

@@ -94,6 +94,9 @@ public:
     void flushView();
 
 public slots:
+    // Commands the link sent: the Sensors and Query List requests among them
+    // say which received bytes are their replies.
+    void expectReplies(const std::vector<oi::OiCommand> &commands, qint64 msecs);
     void appendTx(const QByteArray &bytes, qint64 msecs);
     void appendRx(const QByteArray &bytes, qint64 msecs);
     // One stream frame's packets for the packet table, received at `seconds`

@@ -69,6 +69,49 @@ private:
 
 QThreadStorage<FrameDelivery *> FrameDelivery::s_byThread;
 
+// The worker thread the links of in-process virtual robots share, for as
+// long as any of them is open.
+class SharedWorker {
+public:
+    static std::shared_ptr<SharedWorker> get()
+    {
+        static QMutex mutex; // links may be opened from more than one thread
+        static std::weak_ptr<SharedWorker> current;
+        QMutexLocker lock(&mutex);
+        std::shared_ptr<SharedWorker> worker = current.lock();
+        if (!worker) {
+            worker = std::make_shared<SharedWorker>();
+            current = worker;
+        }
+        return worker;
+    }
+
+    SharedWorker()
+    {
+        m_thread.setObjectName(QStringLiteral("virtual robots"));
+        m_home->moveToThread(&m_thread);
+        QObject::connect(&m_thread, &QThread::finished, m_home, &QObject::deleteLater);
+        m_thread.start();
+    }
+    ~SharedWorker()
+    {
+        m_thread.quit();
+        m_thread.wait();
+    }
+
+    QThread &thread() { return m_thread; }
+    // Runs `work` on the worker and waits for it.
+    template <typename Work>
+    void runAndWait(Work work)
+    {
+        QMetaObject::invokeMethod(m_home, std::move(work), Qt::BlockingQueuedConnection);
+    }
+
+private:
+    QThread m_thread;
+    QObject *m_home = new QObject; // lives on the worker, and is deleted there
+};
+
 RobotLinkThread::RobotLinkThread(QObject *parent) : QObject(parent)
 {
     registerLinkMetaTypes();
@@ -148,7 +191,10 @@ void RobotLinkThread::start()
         return;
     auto *link = new RobotLink(*m_clock);
     link->setTransportFactory(m_factory);
-    if (!m_onThisThread) {
+    if (m_wantShared && !m_onThisThread) {
+        m_shared = SharedWorker::get();
+        link->moveToThread(&m_shared->thread());
+    } else if (!m_onThisThread) {
         link->moveToThread(&m_thread);
         connect(&m_thread, &QThread::finished, link, &QObject::deleteLater);
     }
@@ -192,7 +238,8 @@ void RobotLinkThread::start()
         m_linkHere = true;
         return;
     }
-    m_thread.start();
+    if (!m_shared)
+        m_thread.start();
     FrameDelivery::started();
 }
 
@@ -204,6 +251,10 @@ void RobotLinkThread::stop()
     if (m_linkHere) {
         m_linkHere = false;
         delete m_link.data();
+    } else if (m_shared) {
+        // Gone before this object, on its own thread: its connections call here.
+        m_shared->runAndWait([link = m_link.data()] { delete link; });
+        m_shared.reset();
     } else {
         m_thread.quit();
         m_thread.wait();
@@ -213,6 +264,11 @@ void RobotLinkThread::stop()
 
 void RobotLinkThread::open(const LinkSettings &settings)
 {
+    // A virtual robot's link goes to the shared worker, any other to its own.
+    const bool shared = settings.transport == TransportKind::Virtual;
+    if (isRunning() && !m_linkHere && bool(m_shared) != shared)
+        stop();
+    m_wantShared = shared;
     start();
     threads::queueCall(m_link, [link = m_link.data(), settings] { link->open(settings); });
 }

@@ -9,6 +9,7 @@
 #include <QThread>
 
 #include <chrono>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -24,6 +25,10 @@ namespace oilink {
 // every link on it queued, kDeliveryMs apart. Thirty robots streaming at
 // 66.7 Hz then wake that thread 40 times a second, not 4000. Every other
 // signal hands out the frames queued before it first, so the order holds.
+//
+// The links of in-process virtual robots share one worker thread
+// (SharedWorker in the .cpp), whose robots tick together: a class of thirty
+// virtual robots wakes one thread, not thirty.
 //
 // A program whose thread serves one robot and little else (the bridge) can
 // keep the link on that thread instead (setOnThisThread): it then wakes once
@@ -52,16 +57,19 @@ public:
     // Closes the link (the robot is left stopped and in Passive), waits for
     // it, delivers what it said last, and ends the thread.
     void stop();
-    bool isRunning() const { return m_thread.isRunning() || m_linkHere; }
+    bool isRunning() const { return m_thread.isRunning() || m_linkHere || m_shared; }
 
     // What the link last reported, as seen on this thread.
     LinkState state() const { return m_state; }
     LinkStats lastStatistics() const { return m_stats; }
 
-    // CPU time the worker thread (or this one, with the link here) has used
+    // CPU time the worker thread (or this one, with the link here; the shared
+    // worker's, for all its virtual robots) has used
     // so far; blocks briefly. For the diagnostics view and the latency
     // benchmark. Zero when not running.
     std::chrono::microseconds workerCpuTime() const;
+    // The thread the link runs on; nullptr when not running.
+    QThread *linkThread() const { return m_link ? m_link->thread() : nullptr; }
 
 public slots:
     void open(const oilink::LinkSettings &settings);
@@ -116,6 +124,8 @@ private:
     void relay(RobotLink *link, void (RobotLink::*signal)(Args...), Handler handler);
 
     QThread m_thread;
+    std::shared_ptr<class SharedWorker> m_shared; // while the link is on the shared worker
+    bool m_wantShared = false;                    // what open() asked of the next start()
     bool m_onThisThread = false;
     bool m_linkHere = false;       // started with the link on this thread
     bool m_deliveryPosted = false; // with the link here: a delivery is queued

@@ -45,6 +45,38 @@ QByteArray bytes(std::initializer_list<int> values)
 class TestRobotLinkVirtual : public QObject {
     Q_OBJECT
 private slots:
+    // The links of virtual robots share one worker; a link to anything else
+    // has its own, and a link that changes from one to the other moves.
+    void virtualRobotsShareOneWorker()
+    {
+        RobotLinkThread first, second, serial;
+        QSignalSpy firstFrames(&first, &RobotLinkThread::snapshot);
+        QSignalSpy secondFrames(&second, &RobotLinkThread::snapshot);
+        for (RobotLinkThread *link : {&first, &second, &serial})
+            link->setTransportFactory(transports::transportFactory());
+        first.open(LinkSettings::virtualRobotOf(oi::ProfileId::Create2, oi::ProfileId::Create2));
+        second.open(LinkSettings::virtualRobotOf(oi::ProfileId::Create1, oi::ProfileId::Create1));
+        serial.open(LinkSettings::tcp(QStringLiteral("127.0.0.1"), 9)); // nobody there: only the thread matters
+        QVERIFY(first.linkThread() && first.linkThread() != QThread::currentThread());
+        QCOMPARE(second.linkThread(), first.linkThread());
+        QVERIFY(serial.linkThread() && serial.linkThread() != first.linkThread());
+        QTRY_VERIFY_WITH_TIMEOUT(firstFrames.size() >= 5 && secondFrames.size() >= 5, kTimeoutMs);
+
+        // One stopped, the other streams on.
+        second.stop();
+        QVERIFY(!second.isRunning());
+        const qsizetype before = firstFrames.size();
+        QTRY_VERIFY_WITH_TIMEOUT(firstFrames.size() >= before + 5, kTimeoutMs);
+
+        // Opened again on something else, the link leaves the shared worker.
+        QThread *const shared = first.linkThread();
+        first.open(LinkSettings::tcp(QStringLiteral("127.0.0.1"), 9));
+        QVERIFY(first.linkThread() && first.linkThread() != shared);
+        QCOMPARE(first.state(), LinkState::Closed); // the virtual robot's link ended
+        first.stop();
+        serial.stop();
+    }
+
     void initTestCase() { oilink::registerLinkMetaTypes(); }
 
     void snapshotsArriveWithStatistics()

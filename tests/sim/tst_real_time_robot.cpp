@@ -1,0 +1,85 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Robots in real time on one thread wake it together.
+#include "real_time_robot.h"
+
+#include <QAbstractEventDispatcher>
+#include <QElapsedTimer>
+#include <QEventLoop>
+#include <QTimer>
+#include <QTest>
+
+#include <memory>
+#include <vector>
+
+using namespace sim;
+
+class TestRealTimeRobot : public QObject {
+    Q_OBJECT
+
+private slots:
+    // Ten robots started about 1.5 ms apart stream at their own phases; on
+    // one thread they wake it once a slot of the tick grid (three slots a
+    // frame), not once a robot (ten a frame).
+    void robotsOnOneThreadWakeItTogether()
+    {
+        constexpr int kRobots = 10;
+        constexpr int kFrames = 40;
+        std::vector<std::unique_ptr<RealTimeRobot>> robots;
+        std::vector<int> frames(kRobots, 0);
+        const QByteArray streamBumps("\x80\x94\x01\x07", 4); // Start, Stream [7]
+        for (int i = 0; i < kRobots; ++i) {
+            auto robot = std::make_unique<RealTimeRobot>(oi::profile(oi::ProfileId::Create2), std::uint32_t(i + 1));
+            connect(robot.get(), &RealTimeRobot::bytesOut, this, [&frames, i] { ++frames[std::size_t(i)]; });
+            robot->start();
+            robot->write(streamBumps);
+            robots.push_back(std::move(robot));
+            QElapsedTimer spread; // a phase of its own
+            spread.start();
+            while (spread.nsecsElapsed() < 1'500'000) {
+            }
+        }
+        // An event loop of its own: QTest's waits sleep between their polls.
+        QEventLoop loop;
+        int sleeps = 0;
+        connect(QAbstractEventDispatcher::instance(), &QAbstractEventDispatcher::aboutToBlock, &loop,
+                [&sleeps] { ++sleeps; });
+        const std::vector<int> before = frames;
+        connect(robots[0].get(), &RealTimeRobot::bytesOut, &loop, [&] {
+            if (frames[0] - before[0] >= kFrames)
+                loop.quit();
+        });
+        QTimer::singleShot(10'000, &loop, &QEventLoop::quit);
+        loop.exec();
+        QVERIFY(frames[0] - before[0] >= kFrames);
+        // Every robot kept streaming.
+        for (int i = 0; i < kRobots; ++i)
+            QVERIFY2(frames[std::size_t(i)] - before[std::size_t(i)] >= kFrames - 2, qPrintable(QString::number(i)));
+        // Ten robots each on their own would sleep about 400 times here.
+        const int gridSlots = (kFrames + 1) * 15 / RealTimeRobot::kTickGridMs;
+        QVERIFY2(sleeps <= gridSlots + kFrames, qPrintable(QStringLiteral("%1 sleeps for %2 slots").arg(sleeps).arg(gridSlots)));
+    }
+
+    // A robot stopped while others tick is no longer ticked; one deleted
+    // from another's frame is not touched again.
+    void aRobotDeletedWhileOthersTickIsForgotten()
+    {
+        auto first = std::make_unique<RealTimeRobot>(oi::profile(oi::ProfileId::Create2), 1);
+        auto second = std::make_unique<RealTimeRobot>(oi::profile(oi::ProfileId::Create2), 2);
+        const QByteArray streamBumps("\x80\x94\x01\x07", 4);
+        int secondFrames = 0;
+        connect(first.get(), &RealTimeRobot::bytesOut, this, [&second] { second.reset(); });
+        connect(second.get(), &RealTimeRobot::bytesOut, this, [&secondFrames] { ++secondFrames; });
+        for (RealTimeRobot *r : {first.get(), second.get()}) {
+            r->start();
+            r->write(streamBumps);
+        }
+        int firstFrames = 0;
+        connect(first.get(), &RealTimeRobot::bytesOut, this, [&firstFrames] { ++firstFrames; });
+        QTRY_VERIFY_WITH_TIMEOUT(firstFrames >= 5, 10'000);
+        QVERIFY(!second);
+        first->stop();
+    }
+};
+
+QTEST_GUILESS_MAIN(TestRealTimeRobot)
+#include "tst_real_time_robot.moc"

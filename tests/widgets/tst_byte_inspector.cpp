@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "byte_inspector.h"
 #include "command_decoder.h"
+#include "display_palette.h"
 #include "typed_command_bytes.h"
 #include "pseudo_translation.h"
 #include "sensor_scenes.h"
@@ -13,12 +14,12 @@
 #include <QDir>
 #include <QLabel>
 #include <QLineEdit>
-#include <QPlainTextEdit>
+#include <QAbstractItemView>
+#include <QClipboard>
 #include <QPushButton>
 #include <QScrollBar>
 #include <QSignalSpy>
 #include <QTableView>
-#include <QTextBlock>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QTimer>
@@ -57,6 +58,23 @@ QByteArray frame(const QByteArray &payload)
         sum += static_cast<unsigned char>(c);
     f.append(char((256 - (sum & 0xFF)) & 0xFF));
     return f;
+}
+
+// The log as its view shows it: rows, and the text of the last one.
+QAbstractItemView *byteLogOf(const ByteInspector &inspector)
+{
+    return inspector.findChild<QAbstractItemView *>(QStringLiteral("byteLog"));
+}
+
+int rowsOf(const QAbstractItemView *view)
+{
+    return view->model()->rowCount();
+}
+
+QString lastRowOf(const QAbstractItemView *view)
+{
+    const QAbstractItemModel *model = view->model();
+    return model->index(model->rowCount() - 1, 0).data().toString();
 }
 
 } // namespace
@@ -211,73 +229,205 @@ private slots:
         QCOMPARE(inspector.totalEntries(), quint64(6000));
         QVERIFY(inspector.lastEntries(5000).front().startsWith(QStringLiteral("     1.000  TX")));
         inspector.flushView();
-        auto *view = inspector.findChild<QPlainTextEdit *>(QStringLiteral("byteLog"));
+        auto *view = byteLogOf(inspector);
         QVERIFY(view);
-        QCOMPARE(view->document()->blockCount(), 5000);
+        QCOMPARE(rowsOf(view), 5000);
         for (int i = 0; i < 100; ++i)
             inspector.appendTx(bytesOf({131}), 6000 + i);
         inspector.flushView();
-        QCOMPARE(view->document()->blockCount(), 5000);
-        QVERIFY(view->document()->lastBlock().text().endsWith(QStringLiteral("131  Safe")));
+        QCOMPARE(rowsOf(view), 5000);
+        QVERIFY(lastRowOf(view).endsWith(QStringLiteral("131  Safe")));
 
         inspector.setMaxEntries(10);
         QCOMPARE(inspector.entryCount(), 10);
         inspector.clear();
         QCOMPARE(inspector.entryCount(), 0);
         QCOMPARE(inspector.totalEntries(), quint64(0));
-        QVERIFY(view->document()->isEmpty());
+        QVERIFY(rowsOf(view) == 0);
+    }
+
+    // A full log moves on at its ends: the oldest rows go from the front, the
+    // new ones come at the back, and the view is never told to start over.
+    void fullLogDropsRowsAtTheFrontNotAReset()
+    {
+        ByteInspector inspector;
+        for (int i = 0; i < 5000; ++i)
+            inspector.appendTx(bytesOf({128}), i);
+        inspector.flushView();
+        QAbstractItemView *view = byteLogOf(inspector);
+        QAbstractItemModel *model = view->model();
+        QCOMPARE(model->rowCount(), 5000);
+        QSignalSpy removed(model, &QAbstractItemModel::rowsRemoved);
+        QSignalSpy inserted(model, &QAbstractItemModel::rowsInserted);
+        QSignalSpy reset(model, &QAbstractItemModel::modelReset);
+        QSignalSpy layout(model, &QAbstractItemModel::layoutChanged);
+        for (int i = 0; i < 100; ++i)
+            inspector.appendTx(bytesOf({131}), 5000 + i);
+        QCOMPARE(inserted.size(), 0); // recorded, not shown until the view draws
+        inspector.flushView();
+        QCOMPARE(removed.size(), 1);
+        QCOMPARE(removed.front().at(1).toInt(), 0);
+        QCOMPARE(removed.front().at(2).toInt(), 99);
+        QCOMPARE(inserted.size(), 1);
+        QCOMPARE(inserted.front().at(1).toInt(), 4900);
+        QCOMPARE(inserted.front().at(2).toInt(), 4999);
+        QCOMPARE(reset.size(), 0);
+        QCOMPARE(layout.size(), 0);
+        QCOMPARE(model->rowCount(), 5000);
+        QCOMPARE(model->index(0, 0).data().toString(), QStringLiteral("     0.100  TX  128  Start"));
+        QCOMPARE(lastRowOf(view), QStringLiteral("     5.099  TX  131  Safe"));
+    }
+
+    // The log follows the newest entries while the reader is at the end;
+    // scrolled up, the rows being read stay in sight as old ones drop off.
+    void followsTheEndUnlessScrolledUp()
+    {
+        ByteInspector inspector;
+        inspector.setMaxEntries(1000);
+        inspector.resize(900, 400);
+        inspector.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&inspector));
+        QAbstractItemView *view = byteLogOf(inspector);
+        QScrollBar *scroll = view->verticalScrollBar();
+        int at = 0;
+        const auto append = [&](int count) {
+            for (int i = 0; i < count; ++i, ++at)
+                inspector.appendTx(bytesOf({128}), at);
+            inspector.flushView();
+            view->doItemsLayout(); // as before the next paint
+        };
+        append(1000);
+        QVERIFY(scroll->maximum() > 0);
+        QCOMPARE(scroll->value(), scroll->maximum());
+        append(30);
+        QCOMPARE(scroll->value(), scroll->maximum());
+        QCOMPARE(view->indexAt(view->viewport()->rect().bottomLeft() - QPoint(-5, 5)).row(), 999);
+
+        scroll->setValue(scroll->maximum() / 2);
+        const QString reading = view->indexAt(QPoint(5, 5)).data().toString();
+        append(50); // 50 old rows drop off the front
+        QCOMPARE(view->indexAt(QPoint(5, 5)).data().toString(), reading);
+        QVERIFY(scroll->value() < scroll->maximum());
+
+        view->scrollToBottom();
+        append(10);
+        QCOMPARE(scroll->value(), scroll->maximum());
+        QCOMPARE(lastRowOf(view), inspector.lastEntries(1).front());
+    }
+
+    // Selected rows copy as the log shows them, whole, one line each.
+    void copiesTheSelectedRows()
+    {
+        ByteInspector inspector;
+        inspector.setConnectedAt(0);
+        inspector.show();
+        inspector.activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(&inspector));
+        // A script as one long write: its song runs far past the view's edge.
+        QByteArray song = bytesOf({140, 0, 16});
+        for (int i = 0; i < 16; ++i)
+            song += bytesOf({60 + i, 16});
+        inspector.appendTx(bytesOf({128, 131}), 1000);
+        inspector.appendTx(song, 1500);
+        inspector.flushView();
+        QAbstractItemView *view = byteLogOf(inspector);
+        view->setFocus();
+        QTest::mouseClick(view->viewport(), Qt::LeftButton, {}, view->visualRect(view->model()->index(1, 0)).center());
+        QTest::mouseClick(view->viewport(), Qt::LeftButton, Qt::ShiftModifier,
+                          view->visualRect(view->model()->index(2, 0)).center());
+        QGuiApplication::clipboard()->clear();
+        QTest::keyClick(view, Qt::Key_C, Qt::ControlModifier);
+        const QStringList lines = inspector.lastEntries(2);
+        QVERIFY(lines.back().contains(QStringLiteral("Song slot 0, 16 notes")));
+        QCOMPARE(QGuiApplication::clipboard()->text(), lines.join('\n'));
+        // The long line is cut in the view; its tooltip shows it whole.
+        QCOMPARE(view->model()->index(2, 0).data(Qt::ToolTipRole).toString(), lines.back());
+        QVERIFY(view->fontMetrics().horizontalAdvance(lines.back()) > view->viewport()->width());
+    }
+
+    // Each part of a row in its colour: a sent command in the link's
+    // colour, a command the robot cannot read in the alert colour, and so
+    // on a dark palette too.
+    void coloursFollowWhatEachEntryIsAndThePalette()
+    {
+        ByteInspector inspector;
+        inspector.resize(900, 300);
+        inspector.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&inspector));
+        inspector.appendTx(bytesOf({128}), 0);    // Start: a command
+        inspector.appendTx(bytesOf({99, 1}), 10); // no command: a problem
+        inspector.flushView();
+        QAbstractItemView *view = byteLogOf(inspector);
+        const auto hasColour = [view](int row, const QColor &colour) {
+            const QImage image = view->viewport()->grab().toImage();
+            const QRect rect = view->visualRect(view->model()->index(row, 0));
+            for (int y = rect.top(); y <= rect.bottom(); ++y)
+                for (int x = rect.left(); x <= rect.right(); ++x)
+                    if (image.pixelColor(x * image.width() / view->viewport()->width(),
+                                         y * image.height() / view->viewport()->height()) == colour)
+                        return true;
+            return false;
+        };
+        for (const QPalette &palette : {QApplication::palette(), sensor_scenes::darkPalette()}) {
+            inspector.setPalette(palette);
+            const QColor command = display::stateColor(display::State::Active, palette);
+            const QColor alert = display::stateColor(display::State::Alert, palette);
+            QVERIFY(hasColour(0, command));
+            QVERIFY(!hasColour(0, alert));
+            QVERIFY(hasColour(1, alert));
+        }
     }
 
     void rendersOnATimerNotPerAppend()
     {
         ByteInspector inspector;
         inspector.show();
-        auto *view = inspector.findChild<QPlainTextEdit *>(QStringLiteral("byteLog"));
+        auto *view = byteLogOf(inspector);
         inspector.appendTx(bytesOf({128}), 0);
         inspector.appendTx(bytesOf({131}), 1);
-        QVERIFY(view->document()->isEmpty()); // nothing drawn yet
+        QVERIFY(rowsOf(view) == 0); // nothing drawn yet
         QVERIFY(inspector.findChild<QTimer *>(QStringLiteral("renderTimer"))->isActive());
-        QTRY_COMPARE(view->document()->blockCount(), 2);
+        QTRY_COMPARE(rowsOf(view), 2);
     }
 
     void hiddenLogRendersWhenShown()
     {
         ByteInspector inspector;
-        auto *view = inspector.findChild<QPlainTextEdit *>(QStringLiteral("byteLog"));
+        auto *view = byteLogOf(inspector);
         auto *render = inspector.findChild<QTimer *>(QStringLiteral("renderTimer"));
         QVERIFY(render);
         inspector.appendTx(bytesOf({128}), 0);
         inspector.appendTx(bytesOf({131}), 1);
         // Hidden: nothing laid out, and nothing scheduled to be.
         QVERIFY(!render->isActive());
-        QVERIFY(view->document()->isEmpty());
+        QVERIFY(rowsOf(view) == 0);
         QCOMPARE(inspector.entryCount(), 2); // but kept
         inspector.show();
-        QCOMPARE(view->document()->blockCount(), 2);
+        QCOMPARE(rowsOf(view), 2);
     }
 
     void pauseFreezesTheViewButKeepsCounting()
     {
         ByteInspector inspector;
-        auto *view = inspector.findChild<QPlainTextEdit *>(QStringLiteral("byteLog"));
+        auto *view = byteLogOf(inspector);
         inspector.appendTx(bytesOf({128}), 0);
         inspector.flushView();
         inspector.setPaused(true);
         inspector.appendTx(bytesOf({131}), 1);
         inspector.appendTx(bytesOf({132}), 2);
         inspector.flushView();
-        QCOMPARE(view->document()->blockCount(), 1);
+        QCOMPARE(rowsOf(view), 1);
         QCOMPARE(inspector.entryCount(), 3);
         QCOMPARE(inspector.totalEntries(), quint64(3));
         inspector.setPaused(false);
-        QCOMPARE(view->document()->blockCount(), 3);
-        QVERIFY(view->document()->lastBlock().text().endsWith(QStringLiteral("132  Full")));
+        QCOMPARE(rowsOf(view), 3);
+        QVERIFY(lastRowOf(view).endsWith(QStringLiteral("132  Full")));
     }
 
     void timesReadAsClockTimeOrSinceConnect()
     {
         ByteInspector inspector;
-        auto *view = inspector.findChild<QPlainTextEdit *>(QStringLiteral("byteLog"));
+        auto *view = byteLogOf(inspector);
         const qint64 at = QDateTime(QDate(2026, 11, 23), QTime(14, 3, 12, 345)).toMSecsSinceEpoch();
         // Until the connect time is given, times count from the first entry.
         inspector.appendTx(bytesOf({128}), at - 500);
@@ -288,7 +438,7 @@ private slots:
         inspector.setConnectedAt(at - 12'000);
         QCOMPARE(inspector.lastEntries(1).front(), QStringLiteral("    12.000  TX  131  Safe"));
         inspector.flushView();
-        QCOMPARE(view->document()->lastBlock().text(), QStringLiteral("    12.000  TX  131  Safe"));
+        QCOMPARE(lastRowOf(view), QStringLiteral("    12.000  TX  131  Safe"));
 
         // The choice in the bar shows the time of day, in the log as well.
         auto *choice = inspector.findChild<QComboBox *>(QStringLiteral("timeFormat"));
@@ -297,10 +447,10 @@ private slots:
         QCOMPARE(inspector.timeFormat(), ByteInspector::TimeFormat::ClockTime);
         QCOMPARE(inspector.lastEntries(2),
                  QStringList({"14:03:11.845  TX  128  Start", "14:03:12.345  TX  131  Safe"}));
-        QCOMPARE(view->document()->lastBlock().text(), QStringLiteral("14:03:12.345  TX  131  Safe"));
+        QCOMPARE(lastRowOf(view), QStringLiteral("14:03:12.345  TX  131  Safe"));
         inspector.setTimeFormat(ByteInspector::TimeFormat::SinceConnect);
         QCOMPARE(choice->currentData().toInt(), int(ByteInspector::TimeFormat::SinceConnect));
-        QCOMPARE(view->document()->lastBlock().text(), QStringLiteral("    12.000  TX  131  Safe"));
+        QCOMPARE(lastRowOf(view), QStringLiteral("    12.000  TX  131  Safe"));
     }
 
     void packetTableShowsEachPacket()
@@ -589,7 +739,7 @@ private slots:
         QVERIFY(inspector.grab().save(QDir(QString::fromLocal8Bit(dir)).filePath(QStringLiteral("byte_inspector.png"))));
         // The start of the log, in hexadecimal.
         inspector.setShowsHex(true);
-        inspector.findChild<QPlainTextEdit *>(QStringLiteral("byteLog"))->verticalScrollBar()->setValue(0);
+        byteLogOf(inspector)->verticalScrollBar()->setValue(0);
         QCoreApplication::processEvents();
         QVERIFY(inspector.grab().save(QDir(QString::fromLocal8Bit(dir)).filePath(QStringLiteral("byte_inspector_top.png"))));
     }

@@ -1,25 +1,21 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "byte_inspector.h"
 
+#include "byte_log_view.h"
 #include "display_palette.h"
 #include "live_label.h"
 #include "on_screen.h"
 
 #include <QCheckBox>
 #include <QComboBox>
-#include <QDateTime>
 #include <QEvent>
 #include <QFontDatabase>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLineEdit>
 #include <QLocale>
-#include <QPlainTextEdit>
 #include <QPushButton>
-#include <QScrollBar>
 #include <QSplitter>
-#include <QTextBlock>
-#include <QTextCursor>
 #include <QTimer>
 #include <QToolButton>
 #include <QVBoxLayout>
@@ -30,13 +26,6 @@
 
 namespace {
 
-QColor blend(const QColor &a, const QColor &b, double bShare)
-{
-    return QColor::fromRgbF(float(a.redF() * (1 - bShare) + b.redF() * bShare),
-                            float(a.greenF() * (1 - bShare) + b.greenF() * bShare),
-                            float(a.blueF() * (1 - bShare) + b.blueF() * bShare));
-}
-
 std::span<const std::uint8_t> asBytes(const QByteArray &bytes)
 {
     return {reinterpret_cast<const std::uint8_t *>(bytes.constData()), std::size_t(bytes.size())};
@@ -45,7 +34,7 @@ std::span<const std::uint8_t> asBytes(const QByteArray &bytes)
 } // namespace
 
 ByteInspector::ByteInspector(QWidget *parent)
-    : QWidget(parent), m_renderTimer(new QTimer(this))
+    : QWidget(parent), m_log(new ByteLogModel(this)), m_renderTimer(new QTimer(this))
 {
     m_pauseButton = new QToolButton(this);
     m_pauseButton->setObjectName(QStringLiteral("pauseButton"));
@@ -64,7 +53,7 @@ ByteInspector::ByteInspector(QWidget *parent)
     m_timeBox->setObjectName(QStringLiteral("timeFormat"));
     m_timeBox->addItem(QString(), int(TimeFormat::ClockTime));
     m_timeBox->addItem(QString(), int(TimeFormat::SinceConnect));
-    m_timeBox->setCurrentIndex(m_timeBox->findData(int(m_timeFormat)));
+    m_timeBox->setCurrentIndex(m_timeBox->findData(int(m_log->timeFormat())));
     m_timeBox->setSizeAdjustPolicy(QComboBox::AdjustToContents);
     connect(m_timeBox, &QComboBox::currentIndexChanged, this,
             [this] { setTimeFormat(TimeFormat(m_timeBox->currentData().toInt())); });
@@ -76,15 +65,9 @@ ByteInspector::ByteInspector(QWidget *parent)
     m_splitter = new QSplitter(Qt::Horizontal, this);
     m_splitter->setObjectName(QStringLiteral("splitter"));
     m_splitter->setChildrenCollapsible(false);
-    m_view = new QPlainTextEdit(m_splitter);
+    m_view = new ByteLogView(m_splitter);
     m_view->setObjectName(QStringLiteral("byteLog"));
-    m_view->setReadOnly(true);
-    m_view->setTabChangesFocus(true); // a log: Tab moves on to the send field
-    m_view->setUndoRedoEnabled(false);
-    m_view->setMaximumBlockCount(m_maxEntries);
-    m_view->setLineWrapMode(QPlainTextEdit::WidgetWidth);
-    m_view->setWordWrapMode(QTextOption::WrapAtWordBoundaryOrAnywhere);
-    m_view->setFont(QFontDatabase::systemFont(QFontDatabase::FixedFont));
+    m_view->setLogModel(m_log);
 
     m_packets = new PacketTable(m_splitter);
     m_packets->setObjectName(QStringLiteral("packets"));
@@ -181,36 +164,15 @@ void ByteInspector::setProfile(const oi::RobotProfile &profile)
 
 void ByteInspector::setTimeFormat(TimeFormat format)
 {
-    if (format == m_timeFormat)
-        return;
-    m_timeFormat = format;
+    m_log->setTimeFormat(format);
     m_timeBox->blockSignals(true);
     m_timeBox->setCurrentIndex(m_timeBox->findData(int(format)));
     m_timeBox->blockSignals(false);
-    rebuildView();
-}
-
-void ByteInspector::setConnectedAt(qint64 msecs)
-{
-    if (m_connectedAt == msecs)
-        return;
-    m_connectedAt = msecs;
-    if (m_timeFormat == TimeFormat::SinceConnect)
-        rebuildView();
 }
 
 void ByteInspector::addSnapshot(double seconds, const oi::SensorSnapshot &snapshot)
 {
     m_packets->addSnapshot(seconds, snapshot);
-}
-
-void ByteInspector::setMaxEntries(int count)
-{
-    m_maxEntries = std::max(1, count);
-    while (m_entries.size() > std::size_t(m_maxEntries))
-        m_entries.pop_front();
-    m_unrendered = std::min(m_unrendered, m_entries.size());
-    m_view->setMaximumBlockCount(m_maxEntries);
 }
 
 void ByteInspector::expectReplies(const std::vector<oi::OiCommand> &commands, qint64 msecs)
@@ -274,14 +236,8 @@ void ByteInspector::appendRx(const QByteArray &bytes, qint64 msecs)
 
 void ByteInspector::record(Entry entry)
 {
-    if (!m_connectedAt)
-        m_connectedAt = entry.msecs;
-    m_entries.push_back(std::move(entry));
+    m_log->record(std::move(entry));
     ++m_totalEntries;
-    ++m_unrendered;
-    while (m_entries.size() > std::size_t(m_maxEntries))
-        m_entries.pop_front();
-    m_unrendered = std::min(m_unrendered, m_entries.size());
 }
 
 void ByteInspector::scheduleRender()
@@ -294,25 +250,13 @@ void ByteInspector::scheduleRender()
 
 void ByteInspector::clear()
 {
-    m_entries.clear();
-    m_unrendered = 0;
+    m_log->clear();
     m_totalEntries = 0;
     m_txBytes = 0;
     m_rxBytes = 0;
     m_scanner.reset();
-    m_view->clear();
-    m_renderedCount = 0;
     m_packets->clear();
     updateStatus();
-}
-
-QStringList ByteInspector::lastEntries(int count) const
-{
-    QStringList out;
-    const std::size_t n = std::min(m_entries.size(), std::size_t(std::max(0, count)));
-    for (std::size_t i = m_entries.size() - n; i < m_entries.size(); ++i)
-        out << entryText(m_entries[i]);
-    return out;
 }
 
 void ByteInspector::setPaused(bool paused)
@@ -331,14 +275,13 @@ void ByteInspector::setPaused(bool paused)
 
 void ByteInspector::setShowsHex(bool hex)
 {
-    if (hex == m_hex)
+    if (hex == m_log->showsHex())
         return;
-    m_hex = hex;
+    m_log->setShowsHex(hex);
     m_hexBox->blockSignals(true);
     m_hexBox->setChecked(hex);
     m_hexBox->blockSignals(false);
     m_packets->setShowsHex(hex);
-    rebuildView();
 }
 
 void ByteInspector::showEvent(QShowEvent *event)
@@ -349,127 +292,9 @@ void ByteInspector::showEvent(QShowEvent *event)
 
 void ByteInspector::flushView()
 {
-    if (!m_paused && m_unrendered > 0) {
-        renderEntries(m_entries.size() - m_unrendered, m_entries.size());
-        m_unrendered = 0;
-    }
+    if (!m_paused)
+        m_view->showPending();
     updateStatus();
-}
-
-void ByteInspector::rebuildView()
-{
-    m_view->clear();
-    m_renderedCount = 0;
-    // While paused the view keeps showing what it showed, in the new form.
-    const std::size_t shown = m_entries.size() - (m_paused ? m_unrendered : 0);
-    m_unrendered = m_entries.size() - shown;
-    renderEntries(0, shown);
-}
-
-QString ByteInspector::bytesText(const QByteArray &bytes) const
-{
-    // By hand, not QString::arg per byte: a visible log shows every frame.
-    static constexpr char kHexDigits[] = "0123456789ABCDEF";
-    QByteArray text;
-    text.reserve(bytes.size() * 4);
-    for (char c : bytes) {
-        if (!text.isEmpty())
-            text += ' ';
-        const auto b = static_cast<std::uint8_t>(c);
-        if (m_hex) {
-            text += kHexDigits[b >> 4];
-            text += kHexDigits[b & 0xF];
-        } else {
-            if (b >= 100)
-                text += char('0' + b / 100);
-            if (b >= 10)
-                text += char('0' + b / 10 % 10);
-            text += char('0' + b % 10);
-        }
-    }
-    return QString::fromLatin1(text);
-}
-
-QString ByteInspector::timeText(qint64 msecs) const
-{
-    if (m_timeFormat == TimeFormat::ClockTime)
-        return QDateTime::fromMSecsSinceEpoch(msecs).time().toString(QStringLiteral("hh:mm:ss.zzz"));
-    return QStringLiteral("%1").arg(QString::number(double(msecs - m_connectedAt.value_or(msecs)) / 1000.0, 'f', 3), 10);
-}
-
-const QString &ByteInspector::meaningOf(const Entry &entry)
-{
-    if (entry.undescribed) {
-        RxFrameScanner::describe(*entry.undescribed);
-        entry.meaning = std::move(entry.undescribed->meaning);
-        entry.undescribed.reset();
-    }
-    return entry.meaning;
-}
-
-QString ByteInspector::entryText(const Entry &entry) const
-{
-    return QStringLiteral("%1  %2  %3  %4")
-        .arg(timeText(entry.msecs))
-        .arg(entry.direction == Direction::Tx ? QStringLiteral("TX") : QStringLiteral("RX"))
-        .arg(bytesText(entry.bytes), meaningOf(entry));
-}
-
-void ByteInspector::renderEntries(std::size_t first, std::size_t end)
-{
-    const QPalette pal = palette();
-    const QColor text = pal.color(QPalette::Text);
-    QColor dim = text;
-    dim.setAlpha(140);
-    const QColor txColor = display::stateColor(display::State::Active, pal);
-    // A softer blue than the link colour, for lines that are mostly received.
-    const QColor rxColor = blend(pal.color(QPalette::Highlight), text, 0.3);
-    // Every other entry on a tinted band, so a wrapped line reads as one entry.
-    QTextBlockFormat plainBand, tintedBand;
-    tintedBand.setBackground(blend(pal.color(QPalette::Base), text, 0.06));
-
-    QTextCharFormat timeFormat, bytesFormat, txFormat, rxFormat;
-    timeFormat.setForeground(dim);
-    bytesFormat.setForeground(text);
-    txFormat.setForeground(txColor);
-    rxFormat.setForeground(rxColor);
-    QTextCharFormat txTag = txFormat, rxTag = rxFormat;
-    txTag.setFontWeight(QFont::Bold);
-    rxTag.setFontWeight(QFont::Bold);
-    QTextCharFormat problemFormat, textFormat, otherFormat;
-    problemFormat.setForeground(display::stateColor(display::State::Alert, pal));
-    textFormat.setForeground(display::stateColor(display::State::Stale, pal));
-    otherFormat.setForeground(display::stateColor(display::State::Warning, pal));
-
-    QScrollBar *scroll = m_view->verticalScrollBar();
-    const bool atBottom = scroll->value() >= scroll->maximum() - 2;
-    QTextCursor cursor(m_view->document());
-    cursor.movePosition(QTextCursor::End);
-    cursor.beginEditBlock();
-    for (std::size_t i = first; i < end; ++i) {
-        const Entry &e = m_entries[i];
-        const QTextBlockFormat &band = m_renderedCount++ % 2 ? tintedBand : plainBand;
-        if (m_view->document()->isEmpty())
-            cursor.setBlockFormat(band);
-        else
-            cursor.insertBlock(band);
-        const bool tx = e.direction == Direction::Tx;
-        cursor.insertText(timeText(e.msecs) + QStringLiteral("  "), timeFormat);
-        cursor.insertText(tx ? QStringLiteral("TX") : QStringLiteral("RX"), tx ? txTag : rxTag);
-        cursor.insertText(QStringLiteral("  ") + bytesText(e.bytes) + QStringLiteral("  "), bytesFormat);
-        const QTextCharFormat *meaning = tx ? &txFormat : &rxFormat;
-        if (e.tone == Tone::Problem)
-            meaning = &problemFormat;
-        else if (e.tone == Tone::Text)
-            meaning = &textFormat;
-        else if (e.tone == Tone::Other)
-            meaning = &otherFormat;
-        cursor.insertText(meaningOf(e), *meaning);
-    }
-    cursor.endEditBlock();
-    // Follow new entries only if the reader was already at the end.
-    if (atBottom)
-        scroll->setValue(scroll->maximum());
 }
 
 void ByteInspector::updateStatus()
@@ -480,8 +305,8 @@ void ByteInspector::updateStatus()
     QString status = (entries == 1 ? tr("%Ln entry \u00b7 TX %1 B \u00b7 RX %2 B", nullptr, entries)
                                    : tr("%Ln entries \u00b7 TX %1 B \u00b7 RX %2 B", nullptr, entries))
                          .arg(locale.toString(m_txBytes), locale.toString(m_rxBytes));
-    if (m_paused && m_unrendered > 0)
-        status += tr(" \u00b7 paused, %Ln new", nullptr, int(std::min<std::size_t>(m_unrendered, INT_MAX)));
+    if (m_paused && m_log->pendingCount() > 0)
+        status += tr(" \u00b7 paused, %Ln new", nullptr, m_log->pendingCount());
     else if (m_paused)
         status += tr(" \u00b7 paused");
     setLiveText(m_status, status);
@@ -519,10 +344,9 @@ void ByteInspector::changeEvent(QEvent *event)
     QWidget::changeEvent(event);
     if (event->type() == QEvent::LanguageChange)
         retranslateUi();
-    if (event->type() == QEvent::PaletteChange) {
-        rebuildView();
+    // The log takes its colours from the palette as it paints.
+    if (event->type() == QEvent::PaletteChange)
         showError(m_rawError->text());
-    }
 }
 
 #include "moc_byte_inspector.cpp"

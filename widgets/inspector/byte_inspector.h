@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "byte_log_model.h"
 #include "command_decoder.h"
 #include "packet_table.h"
 #include "robot_profile.h"
@@ -11,18 +12,17 @@
 #include <QStringList>
 #include <QWidget>
 
-#include <deque>
 #include <optional>
 
 class QCheckBox;
 class QComboBox;
 class QLabel;
 class QLineEdit;
-class QPlainTextEdit;
 class QPushButton;
 class QSplitter;
 class QTimer;
 class QToolButton;
+class ByteLogView;
 
 // A log of the raw bytes between the program and the robot: each entry has
 // its time, direction, bytes and what they mean. Sent bytes read as commands
@@ -30,8 +30,9 @@ class QToolButton;
 // replies, text, or bytes outside any frame.
 //
 // Built for a 66.7 Hz stream: appendTx/appendRx only record; the view is
-// brought up to date on a timer, several entries at a time. The log keeps
-// the newest maxEntries() entries and drops older ones.
+// brought up to date on a timer, several entries at a time (ByteLogModel,
+// ByteLogView). The log keeps the newest maxEntries() entries and drops
+// older ones.
 //
 // Beside the log, a packet table shows each sensor packet's last value and
 // rate from the snapshots it is given, with a button to plot it.
@@ -42,14 +43,13 @@ class QToolButton;
 class ByteInspector : public QWidget {
     Q_OBJECT
 public:
-    enum class Direction : std::uint8_t { Tx, Rx };
+    using Direction = ByteLogModel::Direction;
     // How entry times read: the local clock ("14:03:12.345") or seconds
     // since the link was opened ("12.345").
-    enum class TimeFormat : std::uint8_t { ClockTime, SinceConnect };
-    static constexpr int kDefaultMaxEntries = 5000;
+    using TimeFormat = ByteLogModel::TimeFormat;
+    static constexpr int kDefaultMaxEntries = ByteLogModel::kDefaultMaxEntries;
     // 10 Hz: the stream brings 67 entries a second, more than anyone reads
-    // as they pass; ten updates a second keep the log live, and each one
-    // scrolls and lays out the whole view.
+    // as they pass; ten updates a second keep the log live.
     static constexpr int kRenderIntervalMs = 100;
 
     explicit ByteInspector(QWidget *parent = nullptr);
@@ -57,31 +57,31 @@ public:
     void setProfile(const oi::RobotProfile &profile);
     const oi::RobotProfile &robotProfile() const { return m_decoder.robotProfile(); }
 
-    void setMaxEntries(int count);
-    int maxEntries() const { return m_maxEntries; }
+    void setMaxEntries(int count) { m_log->setMaxEntries(count); }
+    int maxEntries() const { return m_log->maxEntries(); }
     // Entries held now (at most maxEntries()).
-    int entryCount() const { return int(m_entries.size()); }
+    int entryCount() const { return m_log->heldCount(); }
     // Entries and bytes since the last clear, dropped ones included.
     quint64 totalEntries() const { return m_totalEntries; }
     quint64 txBytes() const { return m_txBytes; }
     quint64 rxBytes() const { return m_rxBytes; }
     // The newest `count` entries as the view shows them, oldest first.
-    QStringList lastEntries(int count) const;
+    QStringList lastEntries(int count) const { return m_log->lastEntries(count); }
 
     // Paused, the view stands still while entries are still recorded and
     // counted; resuming shows them.
     bool isPaused() const { return m_paused; }
     void setPaused(bool paused);
     // Bytes in hexadecimal ("89 FF") rather than decimal ("137 255").
-    bool showsHex() const { return m_hex; }
+    bool showsHex() const { return m_log->showsHex(); }
     void setShowsHex(bool hex);
 
-    TimeFormat timeFormat() const { return m_timeFormat; }
+    TimeFormat timeFormat() const { return m_log->timeFormat(); }
     void setTimeFormat(TimeFormat format);
     // When the link was opened (milliseconds since the epoch, as entries
     // are stamped); times since connect count from it. Until it is given,
     // they count from the first entry.
-    void setConnectedAt(qint64 msecs);
+    void setConnectedAt(qint64 msecs) { m_log->setConnectedAt(msecs); }
 
     PacketTable *packetTable() const { return m_packets; }
 
@@ -116,44 +116,23 @@ protected:
     void showEvent(QShowEvent *event) override;
 
 private:
-    enum class Tone : std::uint8_t { Command, Problem, Frame, Text, Other };
-    struct Entry {
-        qint64 msecs = 0;
-        Direction direction = Direction::Tx;
-        Tone tone = Tone::Command;
-        QByteArray bytes;
-        mutable QString meaning; // see meaningOf()
-        // Received: the piece, described when the entry is first shown.
-        mutable std::optional<RxFrameScanner::Piece> undescribed;
-    };
-    // The entry's meaning, described now if it was not yet.
-    static const QString &meaningOf(const Entry &entry);
+    using Tone = ByteLogModel::Tone;
+    using Entry = ByteLogModel::Entry;
 
     void retranslateUi();
     void record(Entry entry);
     void scheduleRender();
-    void rebuildView();
-    void renderEntries(std::size_t first, std::size_t end);
     void updateStatus();
     void submitRaw();
     void showError(const QString &message);
-    QString bytesText(const QByteArray &bytes) const;
-    QString timeText(qint64 msecs) const;
-    QString entryText(const Entry &entry) const;
 
     CommandDecoder m_decoder;
     RxFrameScanner m_scanner;
-    std::deque<Entry> m_entries;
-    int m_maxEntries = kDefaultMaxEntries;
-    std::size_t m_unrendered = 0; // newest entries not yet in the view
-    quint64 m_renderedCount = 0;  // entries drawn since the view was emptied
+    ByteLogModel *m_log;
     quint64 m_totalEntries = 0;
     quint64 m_txBytes = 0;
     quint64 m_rxBytes = 0;
     bool m_paused = false;
-    bool m_hex = false;
-    TimeFormat m_timeFormat = TimeFormat::SinceConnect;
-    std::optional<qint64> m_connectedAt;
 
     QToolButton *m_pauseButton;
     QToolButton *m_clearButton;
@@ -161,7 +140,7 @@ private:
     QComboBox *m_timeBox;
     QLabel *m_status;
     QSplitter *m_splitter;
-    QPlainTextEdit *m_view;
+    ByteLogView *m_view;
     PacketTable *m_packets;
     QLineEdit *m_rawInput;
     QPushButton *m_sendButton;

@@ -21,14 +21,12 @@ QVariant ByteLogModel::data(const QModelIndex &index, int role) const
 
 ByteLogModel::Parts ByteLogModel::parts(int row) const
 {
-    Parts p = partsOf(m_rows[std::size_t(row)]);
-    p.tinted = (m_rowsDropped + quint64(row)) % 2 == 1;
-    return p;
+    return partsOf(m_rows[std::size_t(row)]);
 }
 
 ByteLogModel::Parts ByteLogModel::partsOf(const Entry &entry) const
 {
-    return {timeText(entry.msecs), bytesText(entry.bytes), meaningOf(entry), entry.direction, entry.tone, false};
+    return {timeText(entry.msecs), bytesText(entry.bytes), meaningOf(entry), entry.direction, entry.tone};
 }
 
 QString ByteLogModel::Parts::line() const
@@ -66,16 +64,16 @@ void ByteLogModel::trimRows(std::size_t keep)
     const std::size_t drop = m_rows.size() - keep;
     beginRemoveRows({}, 0, int(drop) - 1);
     m_rows.erase(m_rows.begin(), m_rows.begin() + std::ptrdiff_t(drop));
-    m_rowsDropped += drop;
+    m_rowsGone += drop;
     endRemoveRows();
 }
 
 void ByteLogModel::clear()
 {
     beginResetModel();
+    m_rowsGone += m_rows.size();
     m_rows.clear();
     m_pending.clear();
-    m_rowsDropped = 0;
     endResetModel();
 }
 
@@ -136,6 +134,7 @@ void ByteLogModel::setConnectedAt(qint64 msecs)
 void ByteLogModel::formatChanged()
 {
     // Every row reads differently; a view repaints the ones it shows.
+    ++m_formatVersion;
     if (!m_rows.empty())
         emit dataChanged(index(0), index(int(m_rows.size()) - 1), {Qt::DisplayRole, Qt::ToolTipRole});
 }

@@ -44,7 +44,6 @@ public:
         QString meaning;
         Direction direction;
         Tone tone;
-        bool tinted; // every other entry on a tinted band
         QString tag() const { return direction == Direction::Tx ? QStringLiteral("TX") : QStringLiteral("RX"); }
         // The whole line: what lastEntries() and a copy give.
         QString line() const;
@@ -58,6 +57,11 @@ public:
     // DisplayRole: the whole line; ToolTipRole too, as the view elides it.
     QVariant data(const QModelIndex &index, int role) const override;
     Parts parts(int row) const;
+    // A number for the entry in this row, never the same for another entry
+    // of this log: a view can keep what it drew for it.
+    quint64 entryNumber(int row) const { return m_rowsGone + quint64(row); }
+    // Changes whenever every row reads differently (hex, time format).
+    quint64 formatVersion() const { return m_formatVersion; }
 
     void record(Entry entry);
     // Moves the pending entries into the rows: the oldest rows removed from
@@ -94,7 +98,8 @@ private:
 
     std::deque<Entry> m_rows;
     std::deque<Entry> m_pending;
-    quint64 m_rowsDropped = 0; // rows removed from the front since the last clear
+    quint64 m_rowsGone = 0; // rows removed from the front or cleared, ever
+    quint64 m_formatVersion = 0;
     int m_maxEntries = kDefaultMaxEntries;
     bool m_hex = false;
     TimeFormat m_timeFormat = TimeFormat::SinceConnect;

@@ -11,8 +11,11 @@
 #include <QPainter>
 #include <QScrollBar>
 #include <QStyledItemDelegate>
+#include <QTextLayout>
 
 #include <algorithm>
+#include <memory>
+#include <unordered_map>
 
 namespace {
 
@@ -64,8 +67,10 @@ struct LogColours {
     }
 };
 
-// Draws a row part by part, each in its colour, on one line: no layout, and
-// nothing but the rows in sight.
+// Draws a row part by part, each in its colour, on one line. A row's text is
+// laid out once, when its entry first comes into sight, and drawn from that
+// layout while it stays there: each new render tick lays out only the new
+// rows, as a text document would, and never the whole log.
 class ByteLogDelegate : public QStyledItemDelegate {
 public:
     ByteLogDelegate(const ByteLogModel *log, QObject *parent) : QStyledItemDelegate(parent), m_log(log) {}
@@ -78,45 +83,37 @@ public:
 
     void paint(QPainter *painter, const QStyleOptionViewItem &option, const QModelIndex &index) const override
     {
-        const ByteLogModel::Parts parts = m_log->parts(index.row());
-        m_colours.update(option.palette);
         const bool selected = option.state & QStyle::State_Selected;
+        const int width = option.rect.width() - 2 * kTextMargin;
+        const quint64 entry = m_log->entryNumber(index.row());
         if (selected)
             painter->fillRect(option.rect, option.palette.brush(QPalette::Highlight));
-        else if (parts.tinted)
-            painter->fillRect(option.rect, m_colours.band);
+        else if (entry % 2 == 1) // every other entry on a tinted band
+            painter->fillRect(option.rect, mutableColours(option.palette).band);
 
-        QFont bold = option.font;
-        bold.setBold(true);
-        const QColor highlighted = option.palette.color(QPalette::HighlightedText);
-        const auto colour = [&](const QColor &c) { return selected ? highlighted : c; };
-        struct Piece {
-            QString text;
-            QColor colour;
-            const QFont *font;
-        };
-        const Piece pieces[] = {
-            {parts.time + ByteLogModel::kGap, colour(m_colours.dim), &option.font},
-            {parts.tag(), colour(parts.direction == ByteLogModel::Direction::Tx ? m_colours.tx : m_colours.rx), &bold},
-            {ByteLogModel::kGap + parts.bytes + ByteLogModel::kGap, colour(m_colours.text), &option.font},
-            {parts.meaning, colour(m_colours.meaning(parts)), &option.font},
-        };
-        QRect line = option.rect.adjusted(kTextMargin, 0, -kTextMargin, 0);
-        painter->save();
-        for (const Piece &piece : pieces) {
-            if (line.width() <= 0)
-                break;
-            const QFontMetrics metrics(*piece.font);
-            const int width = metrics.horizontalAdvance(piece.text);
-            painter->setFont(*piece.font);
-            painter->setPen(piece.colour);
-            // Too long for the view: cut with "…"; the tooltip has it whole.
-            const QString text =
-                width > line.width() ? metrics.elidedText(piece.text, Qt::ElideRight, line.width()) : piece.text;
-            painter->drawText(line, Qt::AlignLeft | Qt::AlignVCenter | Qt::TextSingleLine, text);
-            line.setLeft(line.left() + width);
+        std::unique_ptr<QTextLayout> uncached;
+        const QTextLayout *layout = nullptr;
+        if (selected) {
+            uncached = layOut(index.row(), option, width, true);
+            layout = uncached.get();
+        } else {
+            // Laid out again only when what it shows changed.
+            if (m_cacheFormat != m_log->formatVersion() || m_cacheWidth != width || m_cacheFont != option.font
+                || m_cachePalette != option.palette.cacheKey() || m_cache.size() > kMaxCachedRows) {
+                m_cache.clear();
+                m_cacheFormat = m_log->formatVersion();
+                m_cacheWidth = width;
+                m_cacheFont = option.font;
+                m_cachePalette = option.palette.cacheKey();
+            }
+            std::unique_ptr<QTextLayout> &cached = m_cache[entry];
+            if (!cached)
+                cached = layOut(index.row(), option, width, false);
+            layout = cached.get();
         }
-        painter->restore();
+        const int top = option.rect.top() + (option.rect.height() - int(layout->boundingRect().height())) / 2;
+        layout->draw(painter, QPointF(option.rect.left() + kTextMargin, top));
+
         if (option.state & QStyle::State_HasFocus) {
             QStyleOptionFocusRect focus;
             focus.QStyleOption::operator=(option);
@@ -128,8 +125,68 @@ public:
     }
 
 private:
+    // More rows than any screen shows: past it, the rows out of sight go.
+    static constexpr std::size_t kMaxCachedRows = 400;
+
+    const LogColours &mutableColours(const QPalette &palette) const
+    {
+        m_colours.update(palette);
+        return m_colours;
+    }
+
+    std::unique_ptr<QTextLayout> layOut(int row, const QStyleOptionViewItem &option, int width, bool selected) const
+    {
+        const ByteLogModel::Parts parts = m_log->parts(row);
+        const LogColours &c = mutableColours(option.palette);
+        const QString tag = parts.tag();
+        const QString gap = ByteLogModel::kGap;
+        QString line = parts.line();
+        // Too long for the view: cut with "…"; the tooltip and a copy have it
+        // whole. Counted in characters of the fixed-pitch font, not measured:
+        // a frame's meaning runs to a thousand characters, and measuring
+        // them would cost more than drawing the row.
+        const int fits = std::max(1, width / std::max(1, QFontMetrics(option.font).horizontalAdvance(QLatin1Char('0'))));
+        if (line.size() > fits)
+            line = line.left(fits - 1) + QChar(0x2026);
+
+        const auto range = [&](int start, int length, const QColor &colour, bool bold = false) {
+            QTextLayout::FormatRange r;
+            r.start = start;
+            r.length = std::clamp(length, 0, std::max(0, int(line.size()) - start));
+            r.format.setForeground(selected ? option.palette.color(QPalette::HighlightedText) : colour);
+            if (bold)
+                r.format.setFontWeight(QFont::Bold);
+            return r;
+        };
+        const int tagAt = int(parts.time.size() + gap.size());
+        const int bytesAt = tagAt + int(tag.size());
+        const int meaningAt = bytesAt + int(gap.size() + parts.bytes.size() + gap.size());
+        const QList<QTextLayout::FormatRange> formats = {
+            range(0, tagAt, c.dim),
+            range(tagAt, int(tag.size()), parts.direction == ByteLogModel::Direction::Tx ? c.tx : c.rx, true),
+            range(bytesAt, meaningAt - bytesAt, c.text),
+            range(meaningAt, int(line.size()) - meaningAt, c.meaning(parts)),
+        };
+
+        auto layout = std::make_unique<QTextLayout>(line, option.font);
+        QTextOption textOption;
+        textOption.setWrapMode(QTextOption::NoWrap);
+        layout->setTextOption(textOption);
+        layout->setFormats(formats);
+        layout->setCacheEnabled(true);
+        layout->beginLayout();
+        layout->createLine();
+        layout->endLayout();
+        return layout;
+    }
+
     const ByteLogModel *m_log;
     mutable LogColours m_colours;
+    mutable std::unordered_map<quint64, std::unique_ptr<QTextLayout>> m_cache;
+    mutable quint64 m_cacheFormat = 0;
+    mutable int m_cacheWidth = -1;
+    mutable QFont m_cacheFont;
+    mutable qint64 m_cachePalette = -1;
 };
 
 } // namespace

@@ -150,7 +150,8 @@ private:
         // whole. Counted in characters of the fixed-pitch font, not measured:
         // a frame's meaning runs to a thousand characters, and measuring
         // them would cost more than drawing the row.
-        const int fits = std::max(1, width / std::max(1, QFontMetrics(option.font).horizontalAdvance(QLatin1Char('0'))));
+        const qreal advance = QFontMetricsF(option.font).horizontalAdvance(QLatin1Char('0'));
+        const int fits = std::max(1, int(width / std::max(1.0, advance)));
         if (line.size() > fits)
             line = line.left(fits - 1) + QChar(0x2026);
 
@@ -394,9 +395,13 @@ void ByteLogView::updateGeometries()
 {
     QScrollBar *scroll = verticalScrollBar();
     const int rows = model() ? model()->rowCount() : 0;
+    // At the end, it stays there as rows come or the view shrinks.
+    const bool atEnd = scroll->value() == scroll->maximum();
     scroll->setSingleStep(1);
     scroll->setPageStep(rowsInSight());
     scroll->setRange(0, std::max(0, rows - rowsInSight()));
+    if (atEnd)
+        scroll->setValue(scroll->maximum());
     QAbstractItemView::updateGeometries();
 }
 

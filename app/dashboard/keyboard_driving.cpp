@@ -41,11 +41,12 @@ bool KeyboardDriving::isTextInput(const QWidget *w)
     // A combo box the user can type into; a plain one picks from its list.
     if (const auto *combo = qobject_cast<const QComboBox *>(w))
         return combo->isEditable();
-    // Qt's text fields, read-only ones too (arrows move in them), and any
-    // other widget that takes typed text.
+    // Qt's text fields, read-only ones too (arrows move in them), any other
+    // widget that takes typed text, and one that says arrows move in it
+    // (the byte log).
     return qobject_cast<const QLineEdit *>(w) || qobject_cast<const QAbstractSpinBox *>(w)
         || qobject_cast<const QTextEdit *>(w) || qobject_cast<const QPlainTextEdit *>(w)
-        || w->testAttribute(Qt::WA_InputMethodEnabled);
+        || w->testAttribute(Qt::WA_InputMethodEnabled) || w->property("readsArrowKeys").toBool();
 }
 
 KeyboardDriving::KeyboardDriving(QWidget *window, QWidget *quietZone, QObject *parent)

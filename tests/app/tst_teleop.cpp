@@ -2,7 +2,9 @@
 // Driving from the window: the drive pad and the keys down to the exact
 // bytes, the stops (release, focus, stale data, Passive mode, Stop All) and
 // the rate limit; the sending rules alone on a clock the test advances.
+#include "byte_inspector.h"
 #include "drive_pad.h"
+#include "keyboard_driving.h"
 #include "main_window.h"
 #include "manual_clock.h"
 #include "projector_view.h"
@@ -369,6 +371,17 @@ private slots:
         QCOMPARE(rig.next(), driveBytes(-350, oi::kRadiusStraight));
         QTest::keyRelease(target, Qt::Key_S);
         QCOMPARE(rig.next(), kStop);
+    }
+
+    // In the byte log the arrows move through the rows, as they did in its
+    // text; they drive nothing.
+    void theByteLogKeepsItsArrows()
+    {
+        ByteInspector inspector;
+        QWidget *log = inspector.findChild<QWidget *>(QStringLiteral("byteLog"));
+        QVERIFY(log);
+        QVERIFY(KeyboardDriving::isTextInput(log));
+        QVERIFY(!KeyboardDriving::isTextInput(inspector.findChild<QWidget *>(QStringLiteral("packetTable"))));
     }
 
     void stopAllKeys()

@@ -206,6 +206,8 @@ ByteLogView::ByteLogView(QWidget *parent) : QAbstractItemView(parent)
     setEditTriggers(QAbstractItemView::NoEditTriggers);
     setTabKeyNavigation(false); // a log: Tab moves on to the next control
     setTextElideMode(Qt::ElideRight);
+    // Arrows move the selection here, as in a text: they drive no robot.
+    setProperty("readsArrowKeys", true);
 }
 
 void ByteLogView::setLogModel(ByteLogModel *model)

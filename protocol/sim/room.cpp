@@ -61,17 +61,20 @@ const Room::Entry *Room::find(RobotId id) const { return const_cast<Room *>(this
 
 bool Room::isFree(double x, double y) const
 {
+    // The cheap tests first: near the start, most points fail on a robot already there.
+    for (const Entry &e : m_robots) {
+        const double dx = x - e.robot.pose.xMm, dy = y - e.robot.pose.yMm;
+        if (dx * dx + dy * dy < kRobotSpacingMm * kRobotSpacingMm)
+            return false;
+    }
+    if (m_world.dock && std::hypot(x - m_world.dock->x, y - m_world.dock->y) < kDockClearanceMm)
+        return false;
     const Vec2 p{x, y};
     for (const Segment &w : m_world.walls)
         if (distanceToSegment(p, w) < kBodyRadiusMm + kClearanceMm)
             return false;
     for (const Area &a : m_world.dropOffs)
         if (distanceToArea(a, x, y) < kBodyRadiusMm + kClearanceMm)
-            return false;
-    if (m_world.dock && std::hypot(x - m_world.dock->x, y - m_world.dock->y) < kDockClearanceMm)
-        return false;
-    for (const Entry &e : m_robots)
-        if (std::hypot(x - e.robot.pose.xMm, y - e.robot.pose.yMm) < kRobotSpacingMm)
             return false;
     // In sight of the start, so not behind a wall or outside the room.
     return !crossesWall(m_world, Vec2{m_world.startX, m_world.startY}, p);
@@ -120,17 +123,37 @@ oi::Pose Room::freeSpot() const
                 yMax = std::max({yMax, w.y1, w.y2});
             }
         }
-        double best = std::numeric_limits<double>::infinity();
         const auto steps = [](double from, double to) { return int(std::floor((to - from) / kSearchStepMm)); };
-        for (int i = -steps(xMin, sx); i <= steps(sx, xMax); ++i)
-            for (int j = -steps(yMin, sy); j <= steps(sy, yMax); ++j) {
-                const double x = sx + i * kSearchStepMm, y = sy + j * kSearchStepMm;
-                const double d = std::hypot(x - sx, y - sy);
-                if (d < best && isFree(x, y)) {
-                    best = d;
-                    pose.xMm = x;
-                    pose.yMm = y;
+        const int iLo = -steps(xMin, sx), iHi = steps(sx, xMax), jLo = -steps(yMin, sy), jHi = steps(sy, yMax);
+        // Ring by ring outwards from the start: a point of ring r is at least
+        // r steps away, so the search ends at the first ring that cannot beat
+        // the best free point (with thirty robots down, a few rings, not the
+        // whole room). Of points as near, the one with the lowest i, then j.
+        double best = std::numeric_limits<double>::infinity();
+        int bestI = 0, bestJ = 0;
+        const auto consider = [&](int i, int j) {
+            const double x = sx + i * kSearchStepMm, y = sy + j * kSearchStepMm;
+            const double d = std::hypot(x - sx, y - sy);
+            const bool nearer = d < best || (d == best && (i < bestI || (i == bestI && j < bestJ)));
+            if (nearer && isFree(x, y)) {
+                best = d;
+                bestI = i;
+                bestJ = j;
+                pose.xMm = x;
+                pose.yMm = y;
+            }
+        };
+        const int reach = std::max({-iLo, iHi, -jLo, jHi, 0});
+        for (int r = 1; r <= reach && r * kSearchStepMm <= best; ++r)
+            for (int i = std::max(iLo, -r); i <= std::min(iHi, r); ++i) {
+                if (i == -r || i == r) {
+                    for (int j = std::max(jLo, -r); j <= std::min(jHi, r); ++j)
+                        consider(i, j);
+                    continue;
                 }
+                for (int j : {-r, r})
+                    if (j >= jLo && j <= jHi)
+                        consider(i, j);
             }
     }
     return pose;

@@ -101,9 +101,10 @@ void LiveRobots::advertise(Served &served)
     const fx::RobotTopics &t = *served.topics;
     const QString json = QStringLiteral("json"), jsonSchema = QStringLiteral("jsonschema");
     const QString title = fx::telemetryTitle(*served.profile);
-    served.telemetry = m_server.advertise(
-        {t.telemetry, json, title, fx::telemetrySchema(*served.profile, served.packets, title), jsonSchema},
-        Delivery::Latest);
+    auto schema = m_telemetrySchemas.constFind(served.profile);
+    if (schema == m_telemetrySchemas.cend())
+        schema = m_telemetrySchemas.insert(served.profile, fx::telemetrySchema(*served.profile, served.packets, title));
+    served.telemetry = m_server.advertise({t.telemetry, json, title, *schema, jsonSchema}, Delivery::Latest);
     served.telemetryRos2 = m_server.advertise({t.telemetryRos2, QStringLiteral("cdr"),
                                                fx::telemetryRos2Name(*served.profile),
                                                fx::telemetryRos2Schema(served.packets), QStringLiteral("ros2msg")},

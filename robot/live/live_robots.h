@@ -14,6 +14,7 @@
 class RobotSession;
 namespace oi {
 struct Pose;
+class RobotProfile;
 }
 
 // The robots a program holds, served live over the Foxglove WebSocket
@@ -52,4 +53,7 @@ private:
     QHash<const RobotSession *, Served *> m_robots;
     // Whose frames set the protocol's time: a replay before a live robot.
     const RobotSession *m_clockRobot = nullptr;
+    // Each profile's telemetry schema, made once: a classroom's thirty
+    // robots of one kind share it (it describes every packet and bit).
+    QHash<const oi::RobotProfile *, QByteArray> m_telemetrySchemas;
 };

@@ -75,12 +75,10 @@ ReplayBar::ReplayBar(QWidget *parent) : QWidget(parent)
     row->setContentsMargins(4, 0, 4, 0);
     m_back = new QToolButton(this);
     m_back->setObjectName("replayStepBack");
-    m_back->setIcon(style()->standardIcon(QStyle::SP_MediaSeekBackward));
     m_playPause = new QToolButton(this);
     m_playPause->setObjectName("replayPlayPause");
     m_forward = new QToolButton(this);
     m_forward->setObjectName("replayStepForward");
-    m_forward->setIcon(style()->standardIcon(QStyle::SP_MediaSeekForward));
     m_speed = new QComboBox(this);
     m_speed->setObjectName("replaySpeed");
     for (double s : speeds())
@@ -88,10 +86,8 @@ ReplayBar::ReplayBar(QWidget *parent) : QWidget(parent)
     m_speed->setCurrentIndex(int(speeds().indexOf(1.0)));
     m_previousMarker = new QToolButton(this);
     m_previousMarker->setObjectName("replayPreviousMarker");
-    m_previousMarker->setIcon(style()->standardIcon(QStyle::SP_MediaSkipBackward));
     m_nextMarker = new QToolButton(this);
     m_nextMarker->setObjectName("replayNextMarker");
-    m_nextMarker->setIcon(style()->standardIcon(QStyle::SP_MediaSkipForward));
     m_slider = new MarkedSlider(Qt::Horizontal, this);
     m_slider->setObjectName("replaySlider");
     m_slider->setMinimumWidth(200);
@@ -157,7 +153,27 @@ void ReplayBar::changeEvent(QEvent *event)
 {
     if (event->type() == QEvent::LanguageChange)
         retranslateUi();
+    if (event->type() == QEvent::StyleChange && !m_playIcon.isNull())
+        showIcons();
     QWidget::changeEvent(event);
+}
+
+void ReplayBar::showEvent(QShowEvent *event)
+{
+    if (m_playIcon.isNull())
+        showIcons();
+    QWidget::showEvent(event);
+}
+
+void ReplayBar::showIcons()
+{
+    m_back->setIcon(style()->standardIcon(QStyle::SP_MediaSeekBackward));
+    m_forward->setIcon(style()->standardIcon(QStyle::SP_MediaSeekForward));
+    m_previousMarker->setIcon(style()->standardIcon(QStyle::SP_MediaSkipBackward));
+    m_nextMarker->setIcon(style()->standardIcon(QStyle::SP_MediaSkipForward));
+    m_playIcon = style()->standardIcon(QStyle::SP_MediaPlay);
+    m_pauseIcon = style()->standardIcon(QStyle::SP_MediaPause);
+    m_playPause->setIcon(m_position.playing ? m_pauseIcon : m_playIcon);
 }
 
 void ReplayBar::setPosition(const Position &position)
@@ -190,7 +206,7 @@ void ReplayBar::showPosition()
 {
     const Position &p = m_position;
     const QString playText = p.playing ? tr("Pause") : tr("Play");
-    m_playPause->setIcon(style()->standardIcon(p.playing ? QStyle::SP_MediaPause : QStyle::SP_MediaPlay));
+    m_playPause->setIcon(p.playing ? m_pauseIcon : m_playIcon);
     m_playPause->setToolTip(playText);
     m_playPause->setAccessibleName(playText);
     const int index = int(speeds().indexOf(p.speed));

@@ -3,6 +3,7 @@
 
 #include "plot_marker.h"
 
+#include <QIcon>
 #include <QWidget>
 
 class QComboBox;
@@ -54,10 +55,14 @@ signals:
 
 protected:
     void changeEvent(QEvent *event) override;
+    void showEvent(QShowEvent *event) override;
 
 private:
     void retranslateUi();
     void showPosition();
+    // The style's icons, looked up when the bar is first shown: the bar is
+    // hidden until a replay, and each lookup searches the icon theme.
+    void showIcons();
 
     Position m_position;
     QToolButton *m_playPause = nullptr;
@@ -70,4 +75,5 @@ private:
     QLabel *m_time = nullptr;
     QLabel *m_damage = nullptr;
     bool m_dragging = false;
+    QIcon m_playIcon, m_pauseIcon; // null until shown
 };

@@ -121,7 +121,8 @@ void MainWindow::buildDocks()
     m_script = new ScriptEditor(this);
     m_motors = new MotorsPanel(this);
     m_map = new OdometryMap(this);
-    m_gamepad = new GamepadInput(this);
+    // SDL starts beside the first frame, not before it; a pad already plugged in is opened then.
+    m_gamepad = new GamepadInput(GamepadInput::Start::InBackground, this);
     m_gamepadPanel = new GamepadPanel(this);
     m_gamepadPanel->setInput(m_gamepad);
     m_drivePad = new DrivePad(this);

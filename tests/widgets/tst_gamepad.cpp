@@ -109,6 +109,26 @@ private slots:
         QVERIFY2(!input.hasGamepad(), "a real gamepad is plugged in; unplug it to run these tests");
     }
 
+    // The window starts SDL beside its first frame: a pad plugged in before
+    // is opened once SDL has started, and drives as one found at once would.
+    void padPluggedInBeforeABackgroundStartIsOpened()
+    {
+        VirtualPad pad("Early Pad");
+        GamepadInput input(GamepadInput::Start::InBackground);
+        QSignalSpy changed(&input, &GamepadInput::gamepadChanged);
+        QSignalSpy stopAll(&input, &GamepadInput::stopAllRequested);
+        GamepadPanel panel;
+        panel.setInput(&input);
+        QTRY_COMPARE(changed.count(), 1);
+        QCOMPARE(changed.at(0).at(0).toString(), QStringLiteral("Early Pad"));
+        QVERIFY(input.isAvailable());
+        QVERIFY(input.hasGamepad());
+        QCOMPARE(panel.statusText(), QStringLiteral("Early Pad"));
+        pad.setButton(SDL_CONTROLLER_BUTTON_B, true);
+        input.poll();
+        QCOMPARE(stopAll.count(), 1);
+    }
+
     void noGamepadPanelSaysSo()
     {
         GamepadPanel bare;

@@ -36,27 +36,46 @@ double normalizedAxis(Sint16 raw)
 
 } // namespace
 
-GamepadInput::GamepadInput(QObject *parent) : QObject(parent)
+GamepadInput::GamepadInput(Start start, QObject *parent) : QObject(parent)
 {
     m_modeButtons.insert(SDL_CONTROLLER_BUTTON_A, oi::Command::Safe);
     m_modeButtons.insert(SDL_CONTROLLER_BUTTON_Y, oi::Command::Full);
     m_modeButtons.insert(SDL_CONTROLLER_BUTTON_X, oi::Command::Start);
 
-    m_error = startSdl();
-    m_available = m_error.isEmpty();
-    if (!m_available)
+    if (start == Start::Now) {
+        startReading(startSdl());
         return;
+    }
+    // The destructor waits for the thread, so `this` outlives it; a call
+    // queued to an object already gone is dropped.
+    m_starting = std::thread([this] {
+        const QString error = startSdl();
+        QMetaObject::invokeMethod(this, [this, error] { startReading(error); }, Qt::QueuedConnection);
+    });
+}
+
+GamepadInput::~GamepadInput()
+{
+    if (m_starting.joinable())
+        m_starting.join();
+    if (m_controller)
+        SDL_GameControllerClose(m_controller);
+}
+
+void GamepadInput::startReading(const QString &error)
+{
+    m_error = error;
+    m_available = error.isEmpty();
+    if (!m_available) {
+        emit gamepadChanged(QString()); // the panel says why there is none
+        return;
+    }
+    m_reading = true;
     openFirstGamepad();
     m_timer = new QTimer(this);
     m_timer->setInterval(m_controller ? kPollIntervalMs : kNoPadPollIntervalMs);
     connect(m_timer, &QTimer::timeout, this, &GamepadInput::poll);
     m_timer->start();
-}
-
-GamepadInput::~GamepadInput()
-{
-    if (m_controller)
-        SDL_GameControllerClose(m_controller);
 }
 
 void GamepadInput::setSpeedLimit(int mmPerSecond)
@@ -198,7 +217,7 @@ QString GamepadInput::modeName(oi::Command command)
 
 void GamepadInput::poll()
 {
-    if (!m_available)
+    if (!m_reading)
         return;
     bool stickChanged = false;
     SDL_Event event;

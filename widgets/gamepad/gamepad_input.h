@@ -12,6 +12,8 @@
 
 #include <SDL_gamecontroller.h>
 
+#include <thread>
+
 class QTimer;
 
 // One gamepad, read through SDL's game-controller API, turned into what the
@@ -37,7 +39,14 @@ public:
     static constexpr int kMinArcRadius = 20;
     static constexpr int kMaxArcRadius = 2000;
 
-    explicit GamepadInput(QObject *parent = nullptr);
+    // Now: SDL starts, and a pad already plugged in is open, before the
+    // constructor returns. InBackground: SDL starts on a thread of its own
+    // (it looks for devices, which takes milliseconds) and the pads are
+    // opened on this object's thread once it has; gamepadChanged() says so.
+    enum class Start { Now, InBackground };
+
+    explicit GamepadInput(QObject *parent = nullptr) : GamepadInput(Start::Now, parent) {}
+    explicit GamepadInput(Start start, QObject *parent = nullptr);
     ~GamepadInput() override;
 
     // False when SDL could not start its game-controller support; then no
@@ -100,6 +109,8 @@ signals:
     void mappingChanged();
 
 private:
+    // SDL has started (`error` empty) or could not: the pads are read from now on.
+    void startReading(const QString &error);
     void openFirstGamepad();
     bool openGamepad(int deviceIndex);
     void closeGamepad();
@@ -110,8 +121,10 @@ private:
     void emitCommand(const MotionCommand &command);
     void takeRole(SDL_GameControllerButton button);
 
-    bool m_available = false;
+    bool m_available = true; // until SDL says otherwise
+    bool m_reading = false;
     QString m_error;
+    std::thread m_starting; // SDL starting in the background
     QTimer *m_timer = nullptr;
     SDL_GameController *m_controller = nullptr;
     SDL_JoystickID m_instance = -1;

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "dock_layout.h"
 
+#include "on_screen.h"
+
 #include <QAction>
 #include <QApplication>
 #include <QCoreApplication>
@@ -8,6 +10,7 @@
 #include <QMainWindow>
 #include <QScrollArea>
 #include <QShowEvent>
+#include <QTimer>
 
 namespace {
 // What a pane keeps when squeezed: a few lines of it, and its scroll bars.
@@ -37,43 +40,82 @@ void DockLayout::retranslate()
 QDockWidget *DockLayout::addDock(const QString &objectName, const char *title, QWidget *widget,
                                  Qt::DockWidgetArea area, bool namesRobot)
 {
-    // The pane scrolls rather than demand its whole size: every dock then
-    // fits a 1280×720 screen, and a small one keeps everything in reach.
+    QDockWidget *dock = add(objectName, title, scrollingPane(objectName, widget), area, namesRobot);
+    showOnTabRaise(dock, widget);
+    return dock;
+}
+
+QDockWidget *DockLayout::addLazyDock(const QString &objectName, const char *title, std::function<QWidget *()> make,
+                                     Qt::DockWidgetArea area)
+{
+    QDockWidget *dock = add(objectName, title, scrollingPane(objectName, nullptr), area, false);
+    m_makers.insert(dock, std::move(make));
+    connect(dock, &QDockWidget::visibilityChanged, this, [this, dock](bool visible) {
+        if (visible && !m_arranging)
+            build(dock);
+    });
+    return dock;
+}
+
+void DockLayout::build(QDockWidget *dock)
+{
+    const std::function<QWidget *()> make = m_makers.take(dock);
+    if (!make)
+        return;
+    QWidget *widget = make();
+    auto *scroll = static_cast<QScrollArea *>(dock->widget());
+    scroll->setWidget(widget);
+    scroll->setMinimumSize(widget->minimumSizeHint().boundedTo(kMinimumPane));
+    showOnTabRaise(dock, widget);
+}
+
+// The pane scrolls rather than demand its whole size: every dock then fits
+// a 1280×720 screen, and a small one keeps everything in reach. `widget`
+// is null for a lazy dock's pane, which gets it when first shown.
+QWidget *DockLayout::scrollingPane(const QString &objectName, QWidget *widget)
+{
     auto *scroll = new QScrollArea;
     scroll->setObjectName(objectName + QLatin1String("Scroll"));
     scroll->setWidgetResizable(true);
     scroll->setFrameShape(QFrame::NoFrame);
     scroll->setFocusPolicy(Qt::NoFocus); // Tab goes into the pane, not to its frame
-    scroll->setWidget(widget);
-    scroll->setMinimumSize(widget->minimumSizeHint().boundedTo(kMinimumPane));
-    return add(objectName, title, widget, scroll, area, namesRobot);
+    if (widget)
+        scroll->setWidget(widget);
+    scroll->setMinimumSize(widget ? widget->minimumSizeHint().boundedTo(kMinimumPane) : kMinimumPane);
+    return scroll;
 }
 
 QDockWidget *DockLayout::addBar(const QString &objectName, const char *title, QWidget *widget,
                                 Qt::DockWidgetArea area, bool namesRobot)
 {
-    return add(objectName, title, widget, widget, area, namesRobot);
+    QDockWidget *dock = add(objectName, title, widget, area, namesRobot);
+    showOnTabRaise(dock, widget);
+    return dock;
 }
 
-QDockWidget *DockLayout::add(const QString &objectName, const char *title, QWidget *widget, QWidget *pane,
-                             Qt::DockWidgetArea area, bool namesRobot)
+QDockWidget *DockLayout::add(const QString &objectName, const char *title, QWidget *pane, Qt::DockWidgetArea area,
+                             bool namesRobot)
 {
     auto *dock = new QDockWidget(m_window);
     dock->setObjectName(objectName);
     dock->setWidget(pane);
     m_window->addDockWidget(area, dock);
-    // A dock whose tab comes up was "visible" all along to Qt, so its view
-    // gets no show event of its own; it gets one here, to catch up with
-    // what it left undrawn while tabbed away (see isOnScreen()).
+    m_docks << dock;
+    m_titles << Dock{dock, title, namesRobot};
+    return dock;
+}
+
+// A dock whose tab comes up was "visible" all along to Qt, so its view gets
+// no show event of its own; it gets one here, to catch up with what it left
+// undrawn while tabbed away (see isOnScreen()).
+void DockLayout::showOnTabRaise(QDockWidget *dock, QWidget *widget)
+{
     connect(dock, &QDockWidget::visibilityChanged, widget, [widget](bool visible) {
         if (visible && widget->isVisible()) {
             QShowEvent shown;
             QCoreApplication::sendEvent(widget, &shown);
         }
     });
-    m_docks << dock;
-    m_titles << Dock{dock, title, namesRobot};
-    return dock;
 }
 
 void DockLayout::keepAsDefault()
@@ -86,8 +128,23 @@ void DockLayout::resetLayout()
     m_window->restoreState(m_default);
     for (QDockWidget *dock : m_docks)
         dock->show();
-    if (m_arrange)
-        m_arrange();
+    arrange();
+}
+
+void DockLayout::arrange()
+{
+    if (!m_arrange)
+        return;
+    // The docks are moved and tabbed one by one, each shown for a moment on
+    // its own: a lazy dock makes its pane only if shown once they are laid out.
+    m_arranging = true;
+    m_arrange();
+    m_arranging = false;
+    QTimer::singleShot(0, this, [this] {
+        for (QDockWidget *dock : m_makers.keys())
+            if (isOnScreen(dock))
+                build(dock);
+    });
 }
 
 void DockLayout::retitle(const QString &robotName)
@@ -116,6 +173,7 @@ QDockWidget *DockLayout::focusNextDock(int direction)
     const qsizetype next = current < 0 ? (direction > 0 ? 0 : count - 1) : ((current + direction) % count + count) % count;
     QDockWidget *dock = open[next];
     dock->raise(); // a tabbed dock comes to the front
+    build(dock);
     // The first control that Tab would reach inside it; else the dock's widget.
     auto *scroll = qobject_cast<QScrollArea *>(dock->widget());
     QWidget *pane = scroll ? scroll->widget() : dock->widget();

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <QByteArray>
+#include <QHash>
 #include <QList>
 #include <QObject>
 
@@ -26,6 +27,14 @@ public:
     // there are several (once, so that the tabs' titles stay short).
     QDockWidget *addDock(const QString &objectName, const char *title, QWidget *widget, Qt::DockWidgetArea area,
                          bool namesRobot = false);
+    // A dock whose pane `make` makes (and wires) the first time the dock is
+    // shown or its tab raised: a dock closed or tabbed behind another at
+    // start costs nothing until then. The dock itself exists at once, so
+    // that a saved layout restores it.
+    QDockWidget *addLazyDock(const QString &objectName, const char *title, std::function<QWidget *()> make,
+                             Qt::DockWidgetArea area);
+    // Makes a lazy dock's pane now, if it is not made yet.
+    void build(QDockWidget *dock);
     // A bar of one row, which keeps its height and does not scroll.
     QDockWidget *addBar(const QString &objectName, const char *title, QWidget *widget, Qt::DockWidgetArea area,
                         bool namesRobot = false);
@@ -38,6 +47,8 @@ public:
     // arranges the docks for the window's size as a first start does.
     void keepAsDefault();
     void setArrangement(std::function<void()> arrange) { m_arrange = std::move(arrange); }
+    // The arrangement for the window's size, as at a first start.
+    void arrange();
     void resetLayout();
     // F6 and Shift+F6: the keyboard moves from dock to dock (+1 or -1),
     // raising a tabbed one. Returns the dock that now has the focus.
@@ -49,8 +60,10 @@ public:
     void retranslate();
 
 private:
-    QDockWidget *add(const QString &objectName, const char *title, QWidget *widget, QWidget *pane,
-                     Qt::DockWidgetArea area, bool namesRobot);
+    QDockWidget *add(const QString &objectName, const char *title, QWidget *pane, Qt::DockWidgetArea area,
+                     bool namesRobot);
+    QWidget *scrollingPane(const QString &objectName, QWidget *widget);
+    void showOnTabRaise(QDockWidget *dock, QWidget *widget);
     struct Dock {
         QDockWidget *dock;
         const char *title; // untranslated
@@ -59,8 +72,10 @@ private:
     QMainWindow *m_window;
     QList<QDockWidget *> m_docks;
     QList<Dock> m_titles;
+    QHash<QDockWidget *, std::function<QWidget *()>> m_makers; // lazy docks not shown yet
     QByteArray m_default;
     std::function<void()> m_arrange;
+    bool m_arranging = false;
     QAction *m_resetAction;
     QAction *m_nextAction;
     QAction *m_previousAction;

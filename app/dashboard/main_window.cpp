@@ -112,19 +112,11 @@ void MainWindow::buildDocks()
     m_connectionBar = new ConnectionBar(this);
     m_modePanel = new ModePanel(this);
     m_gauges = new SensorGauges(this);
-    QWidget *signalBars = makeSignalBars(this, &m_signalBars);
     m_plots = new SensorPlots(this);
     m_inspector = new ByteInspector(this);
-    m_songs = new SongComposer(this);
-    m_leds = new LedEditor(this);
-    m_schedule = new ScheduleEditor(this);
-    m_script = new ScriptEditor(this);
-    m_motors = new MotorsPanel(this);
     m_map = new OdometryMap(this);
     // SDL starts beside the first frame, not before it; a pad already plugged in is opened then.
     m_gamepad = new GamepadInput(GamepadInput::Start::InBackground, this);
-    m_gamepadPanel = new GamepadPanel(this);
-    m_gamepadPanel->setInput(m_gamepad);
     m_drivePad = new DrivePad(this);
     m_lessons = new LessonPanel(m_fleet.lesson(), this);
     m_projector = new ProjectorMode(this, &m_lessons->runner());
@@ -133,6 +125,15 @@ void MainWindow::buildDocks()
     m_markers->markStepsOf(m_lessons->runner());
     connect(m_markers, &MarkerActions::message, this, &MainWindow::showMessage);
     m_comparison = new RunComparison(m_fleet, m_plots, m_map, this);
+
+    // Before the docks: a lazy dock's pane, once made, joins the views here.
+    m_keyboard = new KeyboardDriving(this, m_plots, this);
+    m_view = new SelectedRobotView(m_fleet, *m_room,
+                                   {m_connectionBar, m_modePanel, m_diagram, m_gauges, m_plots, nullptr, m_inspector,
+                                    nullptr, nullptr, nullptr, nullptr, nullptr, m_map, m_drivePad, m_lessons,
+                                    m_projector->view(), m_keyboard, m_status, m_recording, m_robotBar},
+                                   this);
+    connect(m_view, &SelectedRobotView::message, this, &MainWindow::showMessage);
 
     DockLayout &l = *m_layout;
     l.addBar("connectionDock", QT_TR_NOOP("Connection"), m_connectionBar, Qt::TopDockWidgetArea, true);
@@ -144,26 +145,59 @@ void MainWindow::buildDocks()
     QDockWidget *gauges = l.addDock("gaugesDock", QT_TR_NOOP("Gauges"), m_gauges, Qt::RightDockWidgetArea);
     // The signal bars share the right with the gauges: on a laptop screen the
     // left column has room for the modes only once the editors are open below.
-    tabifyDockWidget(gauges, l.addDock("signalsDock", QT_TR_NOOP("Signals"), signalBars, Qt::RightDockWidgetArea));
+    tabifyDockWidget(gauges, l.addLazyDock("signalsDock", QT_TR_NOOP("Signals"), [this] {
+        QWidget *bars = makeSignalBars(this, &m_signalBars);
+        m_view->addViews({.signalBars = m_signalBars});
+        return bars;
+    }, Qt::RightDockWidgetArea));
     gauges->raise();
     QDockWidget *plots = l.addDock("plotsDock", QT_TR_NOOP("Plots"), m_plots, Qt::BottomDockWidgetArea);
     QDockWidget *inspector = l.addDock("inspectorDock", QT_TR_NOOP("Inspector"), m_inspector, Qt::BottomDockWidgetArea);
     tabifyDockWidget(plots, inspector);
-    // The editors share the bottom with the plots: a hidden tab costs nothing.
+    // The editors share the bottom with the plots: a hidden tab costs
+    // nothing, and an editor's pane is made when its tab is first raised.
     QDockWidget *below = inspector;
-    for (auto [name, title, widget] : {std::tuple{"songsDock", QT_TR_NOOP("Songs"), static_cast<QWidget *>(m_songs)},
-                                       std::tuple{"ledsDock", QT_TR_NOOP("LEDs and digits"), static_cast<QWidget *>(m_leds)},
-                                       std::tuple{"scheduleDock", QT_TR_NOOP("Schedule"), static_cast<QWidget *>(m_schedule)},
-                                       std::tuple{"scriptDock", QT_TR_NOOP("Script"), static_cast<QWidget *>(m_script)},
-                                       std::tuple{"motorsDock", QT_TR_NOOP("Motors and outputs"), static_cast<QWidget *>(m_motors)},
-                                       std::tuple{"mapDock", QT_TR_NOOP("Odometry map"), static_cast<QWidget *>(m_map)},
-                                       std::tuple{"markersDock", QT_TR_NOOP("Markers"), static_cast<QWidget *>(m_markers->list())},
-                                       std::tuple{"gamepadDock", QT_TR_NOOP("Gamepad"), static_cast<QWidget *>(m_gamepadPanel)},
-                                       std::tuple{"lessonDock", QT_TR_NOOP("Lesson"), static_cast<QWidget *>(m_lessons)}}) {
-        QDockWidget *dock = l.addDock(name, title, widget, Qt::BottomDockWidgetArea);
+    const auto tabBelow = [this, &below](QDockWidget *dock) {
         tabifyDockWidget(below, dock);
         below = dock;
-    }
+    };
+    const Qt::DockWidgetArea bottom = Qt::BottomDockWidgetArea;
+    // An editor sends through the selected robot and, once made, joins the
+    // views as `slot` of DashboardViews.
+    const auto editor = [this](auto *&member, auto slot) {
+        return [this, &member, slot] {
+            using Editor = std::remove_reference_t<decltype(*member)>;
+            member = new Editor(this);
+            connect(member, &Editor::sendRequested, this, &MainWindow::sendTyped);
+            DashboardViews made;
+            made.*slot = member;
+            m_view->addViews(made);
+            return static_cast<QWidget *>(member);
+        };
+    };
+    tabBelow(l.addLazyDock("songsDock", QT_TR_NOOP("Songs"), editor(m_songs, &DashboardViews::songs), bottom));
+    tabBelow(l.addLazyDock("ledsDock", QT_TR_NOOP("LEDs and digits"), editor(m_leds, &DashboardViews::leds), bottom));
+    tabBelow(l.addLazyDock("scheduleDock", QT_TR_NOOP("Schedule"), editor(m_schedule, &DashboardViews::schedule),
+                           bottom));
+    tabBelow(l.addLazyDock("scriptDock", QT_TR_NOOP("Script"),
+                           [this, make = editor(m_script, &DashboardViews::script)] {
+                               QWidget *pane = make();
+                               connect(m_script, &ScriptEditor::playRequested, this, [this] { session().playScript(); });
+                               connect(m_script, &ScriptEditor::showScriptRequested, this,
+                                       [this] { session().showScript(); });
+                               return pane;
+                           },
+                           bottom));
+    tabBelow(l.addLazyDock("motorsDock", QT_TR_NOOP("Motors and outputs"), editor(m_motors, &DashboardViews::motors),
+                           bottom));
+    tabBelow(l.addDock("mapDock", QT_TR_NOOP("Odometry map"), m_map, bottom));
+    tabBelow(l.addDock("markersDock", QT_TR_NOOP("Markers"), m_markers->list(), bottom));
+    tabBelow(l.addLazyDock("gamepadDock", QT_TR_NOOP("Gamepad"), [this] {
+        m_gamepadPanel = new GamepadPanel(this);
+        m_gamepadPanel->setInput(m_gamepad);
+        return m_gamepadPanel;
+    }, bottom));
+    tabBelow(l.addDock("lessonDock", QT_TR_NOOP("Lesson"), m_lessons, bottom));
     for (const char *name : {"plotsDock", "inspectorDock", "songsDock", "ledsDock", "scheduleDock", "scriptDock",
                              "motorsDock", "mapDock", "markersDock", "gamepadDock", "lessonDock"})
         m_paneDocks << findChild<QDockWidget *>(name);
@@ -171,14 +205,12 @@ void MainWindow::buildDocks()
     m_plots->showDefaultPlots();
     m_plots->setMinimumPlotHeight(kReadablePlotHeight);
     m_layout->setArrangement([this] { fitDocks(); });
+}
 
-    m_keyboard = new KeyboardDriving(this, m_plots, this);
-    m_view = new SelectedRobotView(m_fleet, *m_room,
-                                   {m_connectionBar, m_modePanel, m_diagram, m_gauges, m_plots, m_signalBars,
-                                    m_inspector, m_songs, m_leds, m_schedule, m_script, m_motors, m_map, m_drivePad,
-                                    m_lessons, m_projector->view(), m_keyboard, m_status, m_recording, m_robotBar},
-                                   this);
-    connect(m_view, &SelectedRobotView::message, this, &MainWindow::showMessage);
+// Every user action goes to the selected robot's model.
+void MainWindow::sendTyped(const std::vector<oi::OiCommand> &commands)
+{
+    session().send(commands);
 }
 
 // The default arrangement for the window's size and language, at a first
@@ -277,21 +309,12 @@ void MainWindow::onRobotAdded(RobotSession *robot)
 
 void MainWindow::wireInputs()
 {
-    // Every user action goes to the selected robot's model.
-    const auto sendTyped = [this](const std::vector<oi::OiCommand> &commands) { session().send(commands); };
-    connect(m_inspector, &ByteInspector::sendRequested, this, sendTyped);
+    connect(m_inspector, &ByteInspector::sendRequested, this, &MainWindow::sendTyped);
     connect(m_modePanel, &ModePanel::modeRequested, this, [this](oi::Command command, int demo) {
         if (session().requestMode(command, demo) && oi::startsCleaning(command))
             showMessage(tr("%1: the robot runs its own program, in Passive. Space or Stop all ends it.")
                             .arg(oitext::fromView(oi::commandSpec(command).title)));
     });
-    connect(m_songs, &SongComposer::sendRequested, this, sendTyped);
-    connect(m_leds, &LedEditor::sendRequested, this, sendTyped);
-    connect(m_schedule, &ScheduleEditor::sendRequested, this, sendTyped);
-    connect(m_script, &ScriptEditor::sendRequested, this, sendTyped);
-    connect(m_script, &ScriptEditor::playRequested, this, [this] { session().playScript(); });
-    connect(m_motors, &MotorsPanel::sendRequested, this, sendTyped);
-    connect(m_script, &ScriptEditor::showScriptRequested, this, [this] { session().showScript(); });
     // A hand in the room: the map asks, the room moves the robot.
     connect(m_map, &OdometryMap::robotMoveRequested, this,
             [this](int robot, const oi::Pose &pose) { m_room->room()->moveRobot(robot, pose); });
@@ -488,7 +511,7 @@ void MainWindow::start(const std::optional<oilink::LinkSettings> &override, int 
     QSettings settings;
     restoreGeometry(settings.value("window/geometry").toByteArray());
     if (!restoreState(settings.value("window/state").toByteArray()))
-        fitDocks(); // a first start: for this screen, maybe in another language than the one built in
+        m_layout->arrange(); // a first start: for this screen, maybe in another language than the one built in
     showWholeTabNames();
     if (override) {
         m_keepSavedRobots = true;
@@ -564,6 +587,11 @@ ProjectorView *MainWindow::projectorView() const { return m_projector->view(); }
 QAction *MainWindow::projectorAction() const { return m_projector->action(); }
 void MainWindow::setProjectorView(bool on) { m_projector->setOn(on); }
 bool MainWindow::isProjectorView() const { return m_projector->isOn(); }
+SignalBars *MainWindow::signalBars() const
+{
+    m_layout->build(findChild<QDockWidget *>("signalsDock"));
+    return m_signalBars;
+}
 QString MainWindow::statusText() const { return m_status->text(); }
 void MainWindow::askForBroker() { m_broker->askForBroker(); }
 bool MainWindow::connectToBroker(const mqtt::BrokerAddress &address) { return m_broker->connectToBroker(address); }

@@ -13,6 +13,7 @@
 
 #include <memory>
 #include <optional>
+#include <vector>
 
 class BrokerActions;
 class ByteInspector;
@@ -58,6 +59,9 @@ class SensorGauges;
 class SensorPlots;
 class SignalBars;
 class SongComposer;
+namespace oi {
+struct OiCommand;
+}
 
 // The dashboard window: the robot list and Stop all above, the robot diagram
 // in the middle, a dock for each other view. Every dock shows the selected
@@ -123,7 +127,7 @@ public:
     SensorGauges *sensorGauges() const { return m_gauges; }
     SensorPlots *sensorPlots() const { return m_plots; }
     ByteInspector *byteInspector() const { return m_inspector; }
-    SignalBars *signalBars() const { return m_signalBars; }
+    SignalBars *signalBars() const; // made now if its dock was never shown
     DrivePad *drivePad() const { return m_drivePad; }
     OdometryMap *odometryMap() const { return m_map; }
     ReplayBar *replayBar() const;
@@ -172,6 +176,7 @@ private:
     void showSelected(RobotSession *robot);
     void showTitles();
     void addRobot(RobotList::AddKind kind);
+    void sendTyped(const std::vector<oi::OiCommand> &commands);
     void showMessage(const QString &text);
     void saveSettings() const;
 

@@ -93,9 +93,6 @@ void SelectedRobotView::show(RobotSession *robot)
         connect(robot, &RobotSession::bytesSent, v.inspector, &ByteInspector::appendTx),
         connect(robot, &RobotSession::bytesReceived, v.inspector, &ByteInspector::appendRx),
         connect(robot, &RobotSession::frameReceived, v.inspector, &ByteInspector::addSnapshot),
-        connect(robot, &RobotSession::scriptShown, v.script,
-                [v, robot](const QByteArray &script) { v.script->showScriptReply(script, robot->uploadedScript()); }),
-        connect(robot, &RobotSession::scriptFailed, v.script, &ScriptEditor::showScriptFailed),
         connect(teleop, &TeleopController::passiveChanged, v.drivePad, &DrivePad::setPassive),
         connect(teleop, &TeleopController::motionAsked, v.drivePad, &DrivePad::showAsked),
         connect(teleop, &TeleopController::motionStopped, this, [v] {
@@ -104,6 +101,7 @@ void SelectedRobotView::show(RobotSession *robot)
         }),
         connect(teleop, &TeleopController::motionRefused, this, &SelectedRobotView::message),
     };
+    m_selectedConnections += connectScript(robot);
 
     v.plots->setHistory(&robot->history());
     v.map->setOdometry(&robot->odometry());
@@ -145,6 +143,39 @@ void SelectedRobotView::show(RobotSession *robot)
     refresh();
 }
 
+QList<QMetaObject::Connection> SelectedRobotView::connectScript(RobotSession *robot)
+{
+    ScriptEditor *script = m_views.script;
+    if (!script)
+        return {};
+    return {connect(robot, &RobotSession::scriptShown, script,
+                    [script, robot](const QByteArray &bytes) { script->showScriptReply(bytes, robot->uploadedScript()); }),
+            connect(robot, &RobotSession::scriptFailed, script, &ScriptEditor::showScriptFailed)};
+}
+
+void SelectedRobotView::addViews(const DashboardViews &made)
+{
+    const auto take = [](auto *&view, auto *madeView) {
+        if (madeView)
+            view = madeView;
+    };
+    take(m_views.signalBars, made.signalBars);
+    take(m_views.songs, made.songs);
+    take(m_views.leds, made.leds);
+    take(m_views.schedule, made.schedule);
+    take(m_views.script, made.script);
+    take(m_views.motors, made.motors);
+    if (!m_fleet.selected())
+        return;
+    RobotSession &robot = session();
+    if (made.script)
+        m_selectedConnections += connectScript(&robot);
+    applyProfileTo(made, robot.robotProfile());
+    showModeOn(made, robot.mode());
+    if (!(m_shown == oi::SensorSnapshot())) // the frame the other views show
+        showSnapshotOn(made, m_shown);
+}
+
 void SelectedRobotView::showFirmware(const RobotSession &robot)
 {
     m_views.modePanel->setFirmware(robot.firmwareRelease());
@@ -159,20 +190,49 @@ void SelectedRobotView::applyProfile(oi::ProfileId id)
     const oi::RobotProfile &p = oi::profile(id);
     v.diagram->setProfile(p);
     v.gauges->setProfile(p);
-    v.signalBars->setProfile(p);
     v.modePanel->setProfile(p);
     v.inspector->setProfile(p);
-    v.songs->setProfile(p);
-    v.leds->setProfile(p);
-    v.schedule->setProfile(p);
-    v.script->setProfile(p);
-    v.motors->setProfile(p, session().mode());
+    applyProfileTo(v, p);
     v.map->setProfile(p);
     v.drivePad->setProfile(p);
     v.plots->setProfile(p);
     v.projector->setRobot(session().name(), p, &session().history());
     v.status->showProfile(session());
     m_shownSnapshot = ~0ull;
+}
+
+void SelectedRobotView::applyProfileTo(const DashboardViews &v, const oi::RobotProfile &p)
+{
+    if (v.signalBars)
+        v.signalBars->setProfile(p);
+    if (v.songs)
+        v.songs->setProfile(p);
+    if (v.leds)
+        v.leds->setProfile(p);
+    if (v.schedule)
+        v.schedule->setProfile(p);
+    if (v.script)
+        v.script->setProfile(p);
+    if (v.motors)
+        v.motors->setProfile(p, session().mode());
+}
+
+void SelectedRobotView::showModeOn(const DashboardViews &v, const RobotMode &mode)
+{
+    if (v.songs)
+        v.songs->setPlayBlocked(mode.whyNot(oi::Command::Play));
+    if (v.leds)
+        v.leds->setMode(mode);
+    if (v.motors)
+        v.motors->setMode(mode);
+}
+
+void SelectedRobotView::showSnapshotOn(const DashboardViews &v, const oi::SensorSnapshot &snapshot)
+{
+    if (v.signalBars)
+        v.signalBars->setSnapshot(snapshot);
+    if (v.songs)
+        v.songs->setSnapshot(snapshot);
 }
 
 QString SelectedRobotView::whyNoCommands(const RobotSession &robot)
@@ -207,9 +267,7 @@ void SelectedRobotView::showMode()
     v.drivePad->setReason(advice);
     v.status->showModeReason(advice);
     v.projector->setMode(mode, whyNoCommands(session()).isEmpty());
-    v.songs->setPlayBlocked(mode.whyNot(oi::Command::Play));
-    v.leds->setMode(mode);
-    v.motors->setMode(mode);
+    showModeOn(v, mode);
 }
 
 void SelectedRobotView::showState(oilink::LinkState state)
@@ -260,8 +318,7 @@ void SelectedRobotView::refresh()
             m_shown = s;
             v.diagram->setSnapshot(s);
             v.gauges->setSnapshot(s);
-            v.signalBars->setSnapshot(s);
-            v.songs->setSnapshot(s);
+            showSnapshotOn(v, s);
         }
         // The first live frame is about to be painted: the other saved
         // robots connect after it.

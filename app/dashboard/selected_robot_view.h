@@ -22,6 +22,7 @@ class MotorsPanel;
 class OdometryMap;
 class ProjectorView;
 class QStatusBar;
+class RobotMode;
 class QWidget;
 class RecordingActions;
 class RobotBar;
@@ -37,7 +38,9 @@ class SensorPlots;
 class SignalBars;
 class SongComposer;
 
-// Every view of the window that shows the selected robot.
+// Every view of the window that shows the selected robot. The signal bars,
+// songs, LEDs, schedule, script and motors are made when their dock is
+// first shown, null until then.
 struct DashboardViews {
     ConnectionBar *connectionBar = nullptr;
     ModePanel *modePanel = nullptr;
@@ -78,6 +81,9 @@ public:
     void addConnectionCheckup(RobotSession *robot, QStatusBar *statusBar, QWidget *dialogParent);
     // Every view shows `robot` from now on.
     void show(RobotSession *robot);
+    // Views made late (their dock first shown; the others null in `made`)
+    // show the selected robot from now on: its profile, mode and last frame.
+    void addViews(const DashboardViews &made);
     void applyProfile(oi::ProfileId profile);
     void showState(oilink::LinkState state);
     // What the display timer does.
@@ -96,6 +102,11 @@ signals:
 
 private:
     RobotSession &session() const;
+    // What the views that may be made late show; those null in `v` are skipped.
+    void applyProfileTo(const DashboardViews &v, const oi::RobotProfile &profile);
+    void showModeOn(const DashboardViews &v, const RobotMode &mode);
+    void showSnapshotOn(const DashboardViews &v, const oi::SensorSnapshot &snapshot);
+    QList<QMetaObject::Connection> connectScript(RobotSession *robot);
     // The firmware and the corrections the views show for the selected robot.
     void showFirmware(const RobotSession &robot);
 

@@ -387,6 +387,10 @@ private slots:
 
         // The Motors and LEDs docks follow the selected robot's mode: what
         // a robot in Passive ignores is disabled with the reason.
+        // Their panes are made when the docks are first shown.
+        window.findChild<QDockWidget *>("motorsDock")->raise();
+        window.findChild<QDockWidget *>("ledsDock")->raise();
+        QTRY_VERIFY(window.findChild<MotorsPanel *>() && window.findChild<LedEditor *>());
         auto *vacuum = window.findChild<MotorsPanel *>()->findChild<QGroupBox *>("motorsGroup");
         auto *applyLeds = window.findChild<LedEditor *>()->findChild<QPushButton *>("apply");
 

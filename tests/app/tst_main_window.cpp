@@ -204,8 +204,10 @@ private slots:
             QCOMPARE(text(recording.take().first()), QString(bytes));
         }
         // The editors send through the same session.
-        auto *schedule = window.findChild<ScheduleEditor *>();
-        QVERIFY(schedule);
+        // An editor's pane is made when its dock is first shown.
+        window.findChild<QDockWidget *>("scheduleDock")->raise();
+        ScheduleEditor *schedule = nullptr;
+        QTRY_VERIFY((schedule = window.findChild<ScheduleEditor *>()));
         oi::CleaningSchedule example;
         example.days[int(oi::Weekday::Wednesday)] = oi::ClockTime{15, 0};
         example.days[int(oi::Weekday::Friday)] = oi::ClockTime{10, 36};
@@ -457,8 +459,9 @@ private slots:
         window.start(oilink::LinkSettings::virtualRobotOf(oi::ProfileId::Create1, oi::ProfileId::Create1));
         QTRY_COMPARE_WITH_TIMEOUT(window.session().state(), oilink::LinkState::Streaming, 10000);
         QTRY_COMPARE_WITH_TIMEOUT(window.session().robotProfile().id, oi::ProfileId::Create1, 10000);
-        auto *editor = window.findChild<ScriptEditor *>();
-        QVERIFY(editor);
+        window.findChild<QDockWidget *>("scriptDock")->raise();
+        ScriptEditor *editor = nullptr;
+        QTRY_VERIFY((editor = window.findChild<ScriptEditor *>()));
         QVERIFY(editor->disabledReason().isEmpty());
         editor->setScriptText("drive 200 straight\nwait-distance 300\ndrive 0 0");
         editor->reassemble();
@@ -542,6 +545,31 @@ private slots:
         window.roomActions()->undoAction()->trigger();
         QCOMPARE(window.room()->world(), sim::World::classroom());
         QTRY_COMPARE_WITH_TIMEOUT(window.session().latest().lightBumpSignal(oi::LightBumper::CenterLeft), 0, 5000);
+    }
+
+    // A dock tabbed behind another at start has its pane made when it is
+    // first shown, which then shows the selected robot as one made at start
+    // would; a layout saved with its tab raised makes it at the next start.
+    void lazyDockMadeWhenFirstShown()
+    {
+        {
+            MainWindow window;
+            window.show();
+            window.start(oilink::LinkSettings::virtualRobotOf(oi::ProfileId::Create1, oi::ProfileId::Create1));
+            QTRY_COMPARE_WITH_TIMEOUT(window.session().robotProfile().id, oi::ProfileId::Create1, 10000);
+            QVERIFY(!window.findChild<ScriptEditor *>());
+            window.findChild<QDockWidget *>("scriptDock")->raise();
+            auto *editor = window.findChild<ScriptEditor *>();
+            QVERIFY(editor);
+            QTRY_VERIFY(editor->isVisible());
+            QCOMPARE(editor->disabledReason(), QString()); // a Create 1's scripts, not a Create 2's refusal
+            window.close();
+        }
+        MainWindow again;
+        again.show();
+        again.start();
+        QTRY_VERIFY(again.findChild<ScriptEditor *>());
+        QVERIFY(!again.findChild<ScheduleEditor *>());
     }
 
     void settingsRestore()

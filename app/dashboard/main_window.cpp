@@ -299,10 +299,14 @@ void MainWindow::onRobotAdded(RobotSession *robot)
     // A card shows the mode the moment it changes, as the docks do.
     connect(robot, &RobotSession::modeChanged, m_robotBar, &RobotBar::refresh);
     connect(robot, &RobotSession::identityChanged, this, [this, robot] {
+        if (m_addingAtStart)
+            return;
         m_robotBar->refresh();
         if (robot == m_fleet.selected())
             showSelected(robot);
     });
+    if (m_addingAtStart)
+        return;
     m_robotBar->refresh();
     showTitles(); // a second robot: the window now says which one the docks act on
 }
@@ -513,6 +517,9 @@ void MainWindow::start(const std::optional<oilink::LinkSettings> &override, int 
     if (!restoreState(settings.value("window/state").toByteArray()))
         m_layout->arrange(); // a first start: for this screen, maybe in another language than the one built in
     showWholeTabNames();
+    // The robots are added, named and coloured one by one; the cards, the
+    // titles and the docks show them once, when all are there.
+    m_addingAtStart = true;
     if (override) {
         m_keepSavedRobots = true;
         for (int i = 0; i < count; ++i) {
@@ -524,6 +531,8 @@ void MainWindow::start(const std::optional<oilink::LinkSettings> &override, int 
         m_fleet.restore(robotsToRestore(settings));
         m_broker->reconnectToLastBroker(settings);
     }
+    m_addingAtStart = false;
+    m_robotBar->refresh();
     showSelected(m_fleet.selected());
     m_displayTimer.start();
 }

@@ -183,6 +183,7 @@ private:
     LanguageMenu *m_languages = nullptr; // before the widgets: they are built translated
     RobotFleet m_fleet;
     bool m_keepSavedRobots = false; // the robots came from the command line
+    bool m_addingAtStart = false;
     std::optional<std::size_t> m_historyCapacity; // for new robots too
     QTimer m_displayTimer;
 

@@ -119,8 +119,13 @@ void MainWindow::buildDocks()
     m_gamepad = new GamepadInput(GamepadInput::Start::InBackground, this);
     m_drivePad = new DrivePad(this);
     m_lessons = new LessonPanel(m_fleet.lesson(), this);
-    m_projector = new ProjectorMode(this, &m_lessons->runner());
-    connect(m_lessons, &LessonPanel::lessonChanged, m_projector->view(), &ProjectorView::lessonChanged);
+    m_projector = new ProjectorMode(this, &m_lessons->runner(), [this](ProjectorView *projector) {
+        connect(m_lessons, &LessonPanel::lessonChanged, projector, &ProjectorView::lessonChanged);
+        carryPlacements(projector->stepView());
+        connect(projector, &ProjectorView::safeRequested, this, [this] { session().requestMode(oi::Command::Safe); });
+        connect(projector, &ProjectorView::stopAllRequested, m_robotBar->stopAllAction(), &QAction::trigger);
+        m_view->addViews({.projector = projector});
+    });
     m_markers = new MarkerActions(m_fleet, m_plots, m_recording->replayBar(), m_recording->toolBar(), this);
     m_markers->markStepsOf(m_lessons->runner());
     connect(m_markers, &MarkerActions::message, this, &MainWindow::showMessage);
@@ -131,7 +136,7 @@ void MainWindow::buildDocks()
     m_view = new SelectedRobotView(m_fleet, *m_room,
                                    {m_connectionBar, m_modePanel, m_diagram, m_gauges, m_plots, nullptr, m_inspector,
                                     nullptr, nullptr, nullptr, nullptr, nullptr, m_map, m_drivePad, m_lessons,
-                                    m_projector->view(), m_keyboard, m_status, m_recording, m_robotBar},
+                                    nullptr, m_keyboard, m_status, m_recording, m_robotBar},
                                    this);
     connect(m_view, &SelectedRobotView::message, this, &MainWindow::showMessage);
 
@@ -311,6 +316,13 @@ void MainWindow::onRobotAdded(RobotSession *robot)
     showTitles(); // a second robot: the window now says which one the docks act on
 }
 
+// A lesson step's button does what a hand would, from the panel or the projector.
+void MainWindow::carryPlacements(LessonStepView *step)
+{
+    connect(step, &LessonStepView::placementRequested, this,
+            [this](const LessonPlacement &placement) { m_room->carry(&session(), placement); });
+}
+
 void MainWindow::wireInputs()
 {
     connect(m_inspector, &ByteInspector::sendRequested, this, &MainWindow::sendTyped);
@@ -324,10 +336,7 @@ void MainWindow::wireInputs()
             [this](int robot, const oi::Pose &pose) { m_room->room()->moveRobot(robot, pose); });
     connect(m_map, &OdometryMap::robotLiftRequested, this,
             [this](int robot, bool lifted) { m_room->room()->setLifted(robot, lifted); });
-    // A lesson step's button does what a hand would, from the panel or the projector.
-    for (LessonStepView *step : {m_lessons->stepView(), m_projector->view()->stepView()})
-        connect(step, &LessonStepView::placementRequested, this,
-                [this](const LessonPlacement &placement) { m_room->carry(&session(), placement); });
+    carryPlacements(m_lessons->stepView());
     // The room's floor edited on the map, a step Undo can take back.
     connect(m_map, &OdometryMap::worldEditRequested, m_roomActions, &RoomActions::edit);
     m_map->addActions({m_roomActions->undoAction(), m_roomActions->redoAction()});
@@ -339,8 +348,6 @@ void MainWindow::wireInputs()
     connect(m_drivePad, &DrivePad::motionRequested, this, [this](const MotionCommand &c) { teleop().requestMotion(c); });
     connect(m_drivePad, &DrivePad::safeRequested, this, [this] { session().requestMode(oi::Command::Safe); });
     m_moves = new MeasuredMoves(m_fleet, *m_drivePad->measuredMove(), this);
-    connect(m_projector->view(), &ProjectorView::safeRequested, this,
-            [this] { session().requestMode(oi::Command::Safe); });
     connect(m_gamepad, &GamepadInput::motionRequested, this, [this](const MotionCommand &c) { teleop().requestMotion(c); });
     connect(m_gamepad, &GamepadInput::deadManChanged, this, [this](bool held) {
         if (!held)
@@ -349,7 +356,6 @@ void MainWindow::wireInputs()
     // Stop all: one action, whichever window, button or key asks for it.
     QAction *stopAll = m_robotBar->stopAllAction();
     connect(m_gamepad, &GamepadInput::stopAllRequested, stopAll, &QAction::trigger);
-    connect(m_projector->view(), &ProjectorView::stopAllRequested, stopAll, &QAction::trigger);
     connect(fleetView(), &FleetView::stopAllRequested, stopAll, &QAction::trigger);
     connect(&m_fleet, &RobotFleet::stoppedAll, m_keyboard, &KeyboardDriving::releaseAll);
     connect(m_gamepad, &GamepadInput::modeRequested, m_modePanel, &ModePanel::request);

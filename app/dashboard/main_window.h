@@ -30,6 +30,7 @@ class KeyboardDriving;
 class LanguageMenu;
 class LedEditor;
 class LessonPanel;
+class LessonStepView;
 class LiveServerActions;
 class MarkerActions;
 class MeasuredMoves;
@@ -177,6 +178,7 @@ private:
     void showTitles();
     void addRobot(RobotList::AddKind kind);
     void sendTyped(const std::vector<oi::OiCommand> &commands);
+    void carryPlacements(LessonStepView *step);
     void showMessage(const QString &text);
     void saveSettings() const;
 

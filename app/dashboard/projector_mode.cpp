@@ -7,10 +7,10 @@
 #include <QApplication>
 #include <QWidget>
 
-ProjectorMode::ProjectorMode(QWidget *window, const LessonRunner *lesson) : QObject(window), m_window(window)
+ProjectorMode::ProjectorMode(QWidget *window, const LessonRunner *lesson,
+                             std::function<void(ProjectorView *)> made)
+    : QObject(window), m_window(window), m_lesson(lesson), m_made(std::move(made))
 {
-    m_view = new ProjectorView(window);
-    m_view->setLesson(lesson);
     m_action = new QAction(this);
     m_action->setObjectName("projectorAction");
     m_action->setCheckable(true);
@@ -21,17 +21,27 @@ ProjectorMode::ProjectorMode(QWidget *window, const LessonRunner *lesson) : QObj
     retranslate();
 }
 
-bool ProjectorMode::isOn() const { return m_view->isVisible(); }
+ProjectorView *ProjectorMode::view()
+{
+    if (!m_view) {
+        m_view = new ProjectorView(m_window);
+        m_view->setLesson(m_lesson);
+        m_made(m_view);
+    }
+    return m_view;
+}
+
+bool ProjectorMode::isOn() const { return m_view && m_view->isVisible(); }
 
 void ProjectorMode::setOn(bool on)
 {
     m_action->setChecked(on);
-    if (on == !m_view->isHidden())
+    if (on == (m_view && !m_view->isHidden()))
         return;
     if (on) {
         m_stateBefore = m_window->windowState();
         m_focusBefore = QApplication::focusWidget();
-        m_view->setGeometry(m_window->rect());
+        view()->setGeometry(m_window->rect());
         m_view->show();
         m_view->raise();
         // Keys typed now must not land in a text field hidden under the view.

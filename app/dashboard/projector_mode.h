@@ -4,6 +4,8 @@
 #include <QObject>
 #include <QPointer>
 
+#include <functional>
+
 class LessonRunner;
 class ProjectorView;
 class QAction;
@@ -15,17 +17,22 @@ class QWidget;
 class ProjectorMode : public QObject {
     Q_OBJECT
 public:
-    ProjectorMode(QWidget *window, const LessonRunner *lesson);
+    // The view is made the first time it is asked for (F11 at the latest):
+    // until then the window has none to build and lay out. `made` wires the
+    // new view to the window.
+    ProjectorMode(QWidget *window, const LessonRunner *lesson, std::function<void(ProjectorView *)> made);
 
     QAction *action() const { return m_action; }
-    ProjectorView *view() const { return m_view; }
+    ProjectorView *view();
     bool isOn() const;
     void setOn(bool on);
     void retranslate();
 
 private:
     QWidget *m_window;
-    ProjectorView *m_view;
+    const LessonRunner *m_lesson;
+    std::function<void(ProjectorView *)> m_made;
+    ProjectorView *m_view = nullptr;
     QAction *m_action;
     Qt::WindowStates m_stateBefore;
     QPointer<QWidget> m_focusBefore;

@@ -165,11 +165,14 @@ void SelectedRobotView::addViews(const DashboardViews &made)
     take(m_views.schedule, made.schedule);
     take(m_views.script, made.script);
     take(m_views.motors, made.motors);
+    take(m_views.projector, made.projector);
     if (!m_fleet.selected())
         return;
     RobotSession &robot = session();
     if (made.script)
         m_selectedConnections += connectScript(&robot);
+    if (made.projector) // first: whether the robot is live, for the mode's reason
+        made.projector->refresh(robot.latest(), robot.isLive());
     applyProfileTo(made, robot.robotProfile());
     showModeOn(made, robot.mode());
     if (!(m_shown == oi::SensorSnapshot())) // the frame the other views show
@@ -196,7 +199,6 @@ void SelectedRobotView::applyProfile(oi::ProfileId id)
     v.map->setProfile(p);
     v.drivePad->setProfile(p);
     v.plots->setProfile(p);
-    v.projector->setRobot(session().name(), p, &session().history());
     v.status->showProfile(session());
     m_shownSnapshot = ~0ull;
 }
@@ -215,6 +217,8 @@ void SelectedRobotView::applyProfileTo(const DashboardViews &v, const oi::RobotP
         v.script->setProfile(p);
     if (v.motors)
         v.motors->setProfile(p, session().mode());
+    if (v.projector)
+        v.projector->setRobot(session().name(), p, &session().history());
 }
 
 void SelectedRobotView::showModeOn(const DashboardViews &v, const RobotMode &mode)
@@ -225,6 +229,8 @@ void SelectedRobotView::showModeOn(const DashboardViews &v, const RobotMode &mod
         v.leds->setMode(mode);
     if (v.motors)
         v.motors->setMode(mode);
+    if (v.projector)
+        v.projector->setMode(mode, whyNoCommands(session()).isEmpty());
 }
 
 void SelectedRobotView::showSnapshotOn(const DashboardViews &v, const oi::SensorSnapshot &snapshot)
@@ -266,7 +272,6 @@ void SelectedRobotView::showMode()
     const QString advice = reason.isEmpty() ? QString() : reason + ' ' + mode.nextStep();
     v.drivePad->setReason(advice);
     v.status->showModeReason(advice);
-    v.projector->setMode(mode, whyNoCommands(session()).isEmpty());
     showModeOn(v, mode);
 }
 
@@ -338,7 +343,8 @@ void SelectedRobotView::refresh()
         v.robotBar->refresh();
     if (m_displayTicks % 2 == 0) {
         v.lessons->refresh();
-        v.projector->refresh(robot.latest(), live);
+        if (v.projector)
+            v.projector->refresh(robot.latest(), live);
     }
 }
 

@@ -40,7 +40,7 @@ class SongComposer;
 
 // Every view of the window that shows the selected robot. The signal bars,
 // songs, LEDs, schedule, script and motors are made when their dock is
-// first shown, null until then.
+// first shown, the projector view when first asked for; null until then.
 struct DashboardViews {
     ConnectionBar *connectionBar = nullptr;
     ModePanel *modePanel = nullptr;

@@ -550,6 +550,7 @@ private slots:
     // A dock tabbed behind another at start has its pane made when it is
     // first shown, which then shows the selected robot as one made at start
     // would; a layout saved with its tab raised makes it at the next start.
+    // The projector view too is made when first needed.
     void lazyDockMadeWhenFirstShown()
     {
         {
@@ -558,6 +559,7 @@ private slots:
             window.start(oilink::LinkSettings::virtualRobotOf(oi::ProfileId::Create1, oi::ProfileId::Create1));
             QTRY_COMPARE_WITH_TIMEOUT(window.session().robotProfile().id, oi::ProfileId::Create1, 10000);
             QVERIFY(!window.findChild<ScriptEditor *>());
+            QVERIFY(!window.findChild<ProjectorView *>()); // made at the first F11
             window.findChild<QDockWidget *>("scriptDock")->raise();
             auto *editor = window.findChild<ScriptEditor *>();
             QVERIFY(editor);

@@ -81,8 +81,8 @@ SignalBars::SignalBars(QWidget *parent) : QChartView(parent)
 
     applyFonts();
     applyPalette();
-    setProfile(*m_profile);
-    retranslateUi();
+    retranslateUi(); // the categories: laying out the axis's labels is dear, once is enough
+    showBars();
 }
 
 void SignalBars::retranslateUi()
@@ -137,8 +137,18 @@ QSize SignalBars::sizeHint() const { return {560, 360}; }
 
 void SignalBars::setProfile(const oi::RobotProfile &profile)
 {
+    // The same robot kind again (another robot selected, a dock made late
+    // catching up): the categories stay, and their labels are dear to lay out.
+    if (&profile == m_profile)
+        return;
     m_profile = &profile;
     refreshCategories();
+    showBars();
+}
+
+// A bar at zero for each category, the legend and title for the profile.
+void SignalBars::showBars()
+{
     const QStringList &names = m_categories;
 
     // Each set is zero where the other has its bars.

@@ -51,6 +51,7 @@ private:
     bool hasLightBumpers() const { return m_profile->id != oi::ProfileId::Create1; }
     void retranslateUi();
     void refreshCategories();
+    void showBars();
     // The signals in words, for screen readers.
     void updateDescription();
     void applyPalette();

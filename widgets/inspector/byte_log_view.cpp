@@ -132,6 +132,8 @@ public:
 private:
     // More rows than any screen shows: past it, the rows out of sight go.
     static constexpr std::size_t kMaxCachedRows = 400;
+    // Characters of a long run of bytes kept in sight: a frame's header and first packets.
+    static constexpr int kMinBytesShown = 24;
 
     const LogColours &mutableColours(const QPalette &palette) const
     {
@@ -145,13 +147,22 @@ private:
         const LogColours &c = mutableColours(option.palette);
         const QString tag = parts.tag();
         const QString gap = ByteLogModel::kGap;
-        QString line = parts.line();
         // Too long for the view: cut with "…"; the tooltip and a copy have it
         // whole. Counted in characters of the fixed-pitch font, not measured:
         // a frame's meaning runs to a thousand characters, and measuring
         // them would cost more than drawing the row.
         const qreal advance = QFontMetricsF(option.font).horizontalAdvance(QLatin1Char('0'));
         const int fits = std::max(1, int(width / std::max(1.0, advance)));
+        QString bytes = parts.bytes;
+        const int head = int(parts.time.size() + gap.size() + tag.size() + gap.size());
+        if (head + bytes.size() + gap.size() + parts.meaning.size() > fits) {
+            // A frame's 80 bytes would fill the row: they give up room first,
+            // so that what they mean starts in sight.
+            const int bytesRoom = std::max(kMinBytesShown, (fits - head) / 3);
+            if (bytes.size() > bytesRoom)
+                bytes = bytes.left(bytesRoom - 1) + QChar(0x2026);
+        }
+        QString line = parts.time + gap + tag + gap + bytes + gap + parts.meaning;
         if (line.size() > fits)
             line = line.left(fits - 1) + QChar(0x2026);
 
@@ -166,7 +177,7 @@ private:
         };
         const int tagAt = int(parts.time.size() + gap.size());
         const int bytesAt = tagAt + int(tag.size());
-        const int meaningAt = bytesAt + int(gap.size() + parts.bytes.size() + gap.size());
+        const int meaningAt = bytesAt + int(gap.size() + bytes.size() + gap.size());
         const QList<QTextLayout::FormatRange> formats = {
             range(0, tagAt, c.dim),
             range(tagAt, int(tag.size()), parts.direction == ByteLogModel::Direction::Tx ? c.tx : c.rx, true),

@@ -542,17 +542,41 @@ private slots:
         QCOMPARE(reset.size(), 0);
         QCOMPARE(layout.size(), 0);
         // Only the changed cells: the voltage row, and the rates once a second.
-        QCOMPARE(changed.size(), 100);
+        // Only the changed rows: the voltage's at each tick, the charge's once
+        // (the stream's value after the reply's), and every rate once a second.
+        int voltage = 0, charge = 0, rates = 0;
         for (const QList<QVariant> &args : std::as_const(changed)) {
             const QModelIndex top = args.at(0).toModelIndex(), bottom = args.at(1).toModelIndex();
             QVERIFY(top.column() == PacketTableModel::ValueColumn && bottom.column() == PacketTableModel::RateColumn);
+            if (top.row() == 0 && bottom.row() == model->rowCount() - 1)
+                ++rates;
+            else if (top.row() == model->rowOfPacket(22) && bottom.row() == top.row())
+                ++voltage;
+            else if (top.row() == model->rowOfPacket(25) && bottom.row() == top.row())
+                ++charge;
+            else
+                QFAIL(qPrintable(QStringLiteral("rows %1 to %2 said changed").arg(top.row()).arg(bottom.row())));
         }
+        QCOMPARE(rates, 1);
+        QCOMPARE(voltage, 99);
+        QCOMPARE(charge, 1);
         QCOMPARE(model->index(model->rowOfPacket(22), PacketTableModel::ValueColumn).data().toString(),
                  QStringLiteral("14700 mV"));
         // A refresh with nothing new says nothing.
         changed.clear();
         table->refresh();
         QCOMPARE(changed.size(), 0);
+        // Two rows apart change: each is said alone, and the rows between
+        // them are not repainted.
+        values[7] = 1;
+        values[25] = 1999;
+        inspector.addSnapshot(301 * 0.015, sensor_scenes::decoded(create2, values));
+        table->refresh();
+        QCOMPARE(changed.size(), 2);
+        QCOMPARE(changed.at(0).at(0).toModelIndex().row(), model->rowOfPacket(7));
+        QCOMPARE(changed.at(0).at(1).toModelIndex().row(), model->rowOfPacket(7));
+        QCOMPARE(changed.at(1).at(0).toModelIndex().row(), model->rowOfPacket(25));
+        QCOMPARE(changed.at(1).at(1).toModelIndex().row(), model->rowOfPacket(25));
     }
 
     void hiddenPacketTableTakesNothing()

@@ -83,18 +83,20 @@ void PacketTableModel::refresh()
             endInsertRows();
         }
     }
-    int first = -1, last = -1;
-    for (int row = 0; row < int(m_rows.size()); ++row) {
-        Packet &p = m_packets[std::size_t(m_rows[std::size_t(row)])];
-        if (!p.changed)
-            continue;
-        p.changed = false;
-        if (first < 0)
-            first = row;
-        last = row;
+    // One signal for each run of changed rows: the view repaints those
+    // rows, not every row between the first change and the last.
+    int first = -1;
+    for (int row = 0; row <= int(m_rows.size()); ++row) {
+        const bool changed = row < int(m_rows.size()) && m_packets[std::size_t(m_rows[std::size_t(row)])].changed;
+        if (changed) {
+            m_packets[std::size_t(m_rows[std::size_t(row)])].changed = false;
+            if (first < 0)
+                first = row;
+        } else if (first >= 0) {
+            emit dataChanged(index(first, ValueColumn), index(row - 1, RateColumn));
+            first = -1;
+        }
     }
-    if (first >= 0)
-        emit dataChanged(index(first, ValueColumn), index(last, RateColumn));
 }
 
 void PacketTableModel::clear()

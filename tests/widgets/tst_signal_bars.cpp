@@ -46,6 +46,21 @@ private slots:
         QVERIFY(w.minimumSizeHint().width() > 0);
     }
 
+    // In a short dock the value labels thin out instead of each reading "…".
+    void valueLabelsFitTheHeight()
+    {
+        SignalBars w;
+        w.resize(420, 180);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QTRY_VERIFY(w.valueAxis()->tickInterval() > 1000);
+        const qreal squeezed = w.valueAxis()->tickInterval();
+        const qreal pitch = QFontMetricsF(w.valueAxis()->labelsFont()).height();
+        QVERIFY((4095 / squeezed + 1) * pitch <= w.chart()->plotArea().height());
+        w.resize(420, 700);
+        QTRY_COMPARE(w.valueAxis()->tickInterval(), 1000.0);
+    }
+
     void categoriesFollowTheProfile()
     {
         SignalBars w;

@@ -11,6 +11,8 @@
 #include <QLegend>
 #include <QLegendMarker>
 #include <QStackedBarSeries>
+
+#include <cmath>
 #include <QValueAxis>
 
 namespace {
@@ -76,6 +78,8 @@ SignalBars::SignalBars(QWidget *parent) : QChartView(parent)
     m_series->attachAxis(m_axisY);
 
     chart->legend()->setAlignment(Qt::AlignBottom);
+    // Squeezed, Qt Charts shows every value label as "…": as many as fit.
+    connect(chart, &QChart::plotAreaChanged, this, &SignalBars::fitValueLabels);
     setChart(chart);
     setRenderHint(QPainter::Antialiasing);
 
@@ -215,6 +219,16 @@ QColor SignalBars::cliffColour() const
 QColor SignalBars::lightBumpColour() const
 {
     return isDark(palette()) ? QColor(110, 160, 245) : QColor(40, 100, 200);
+}
+
+void SignalBars::fitValueLabels(const QRectF &plotArea)
+{
+    const qreal pitch = QFontMetricsF(m_axisY->labelsFont()).height() * 1.2;
+    qreal interval = 1000;
+    while (interval < kSignalMax && (std::floor(kSignalMax / interval) + 1) * pitch > plotArea.height())
+        interval *= 2;
+    if (m_axisY->tickInterval() != interval)
+        m_axisY->setTickInterval(interval);
 }
 
 void SignalBars::applyFonts()

@@ -48,6 +48,8 @@ protected:
     void changeEvent(QEvent *event) override;
 
 private:
+    // The value axis labelled every 1000, or more sparsely where that does not fit.
+    void fitValueLabels(const QRectF &plotArea);
     bool hasLightBumpers() const { return m_profile->id != oi::ProfileId::Create1; }
     void retranslateUi();
     void refreshCategories();

@@ -34,10 +34,15 @@ class RobotTicker : public QObject {
 public:
     static RobotTicker &here()
     {
-        static QThreadStorage<RobotTicker *> byThread;
-        if (!byThread.hasLocalData())
-            byThread.setLocalData(new RobotTicker);
-        return *byThread.localData();
+        if (!s_byThread.hasLocalData())
+            s_byThread.setLocalData(new RobotTicker);
+        return *s_byThread.localData();
+    }
+    // A robot that stops forgets its slot; a thread that never ticked has none.
+    static void forgetHere(RealTimeRobot *robot)
+    {
+        if (s_byThread.hasLocalData())
+            s_byThread.localData()->forget(robot);
     }
 
     // `robot` ticks at the first slot of `gridNs` at or after `dueNs`.
@@ -97,18 +102,21 @@ private:
         arm(earliest->slotNs);
     }
 
+    static QThreadStorage<RobotTicker *> s_byThread;
     QTimer m_timer;
     qint64 m_armedNs = 0;
     std::vector<Due> m_due;
     std::vector<RealTimeRobot *> m_firing;
 };
 
+QThreadStorage<RobotTicker *> RobotTicker::s_byThread;
+
 RealTimeRobot::RealTimeRobot(const oi::RobotProfile &profile, std::uint32_t seed, QObject *parent)
     : QObject(parent), m_robot(profile, seed)
 {
 }
 
-RealTimeRobot::~RealTimeRobot() { RobotTicker::here().forget(this); }
+RealTimeRobot::~RealTimeRobot() { RobotTicker::forgetHere(this); }
 
 void RealTimeRobot::start()
 {
@@ -123,7 +131,7 @@ void RealTimeRobot::start()
 void RealTimeRobot::stop()
 {
     m_running = false;
-    RobotTicker::here().forget(this);
+    RobotTicker::forgetHere(this);
 }
 
 void RealTimeRobot::write(const QByteArray &bytes)

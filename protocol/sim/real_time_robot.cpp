@@ -34,15 +34,10 @@ class RobotTicker : public QObject {
 public:
     static RobotTicker &here()
     {
-        if (!s_byThread.hasLocalData())
-            s_byThread.setLocalData(new RobotTicker);
-        return *s_byThread.localData();
-    }
-    // A robot that stops forgets its slot; a thread that never ticked has none.
-    static void forgetHere(RealTimeRobot *robot)
-    {
-        if (s_byThread.hasLocalData())
-            s_byThread.localData()->forget(robot);
+        static QThreadStorage<RobotTicker *> byThread;
+        if (!byThread.hasLocalData())
+            byThread.setLocalData(new RobotTicker);
+        return *byThread.localData();
     }
 
     // `robot` ticks at the first slot of `gridNs` at or after `dueNs`.
@@ -102,21 +97,18 @@ private:
         arm(earliest->slotNs);
     }
 
-    static QThreadStorage<RobotTicker *> s_byThread;
     QTimer m_timer;
     qint64 m_armedNs = 0;
     std::vector<Due> m_due;
     std::vector<RealTimeRobot *> m_firing;
 };
 
-QThreadStorage<RobotTicker *> RobotTicker::s_byThread;
-
 RealTimeRobot::RealTimeRobot(const oi::RobotProfile &profile, std::uint32_t seed, QObject *parent)
     : QObject(parent), m_robot(profile, seed)
 {
 }
 
-RealTimeRobot::~RealTimeRobot() { RobotTicker::forgetHere(this); }
+RealTimeRobot::~RealTimeRobot() { RobotTicker::here().forget(this); }
 
 void RealTimeRobot::start()
 {
@@ -131,7 +123,7 @@ void RealTimeRobot::start()
 void RealTimeRobot::stop()
 {
     m_running = false;
-    RobotTicker::forgetHere(this);
+    RobotTicker::here().forget(this);
 }
 
 void RealTimeRobot::write(const QByteArray &bytes)

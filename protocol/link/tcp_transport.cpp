@@ -3,6 +3,12 @@
 
 #include <QDeadlineTimer>
 
+#ifdef Q_OS_WIN
+#include <winsock2.h>
+#else
+#include <sys/socket.h>
+#endif
+
 #include <algorithm>
 
 namespace oilink {
@@ -106,6 +112,12 @@ bool TcpTransport::setBaud(int baud)
     return m_socket.write(command) == command.size();
 }
 
+// What was written may still sit in the socket's queues when the link closes,
+// and closing a socket with bytes unread resets the connection: the reset
+// drops what the kernel had not sent yet, and a bridge that sees it may
+// drop what it had not yet passed to the robot, such as the last Stop. So
+// the link's end is half-closed after its last bytes, and what still
+// arrives is read and dropped until the bridge hangs up in turn.
 void TcpTransport::flush(int msecs)
 {
     if (!m_connected)
@@ -114,6 +126,18 @@ void TcpTransport::flush(int msecs)
     while (m_socket.bytesToWrite() > 0 && !deadline.hasExpired()) {
         if (!m_socket.waitForBytesWritten(static_cast<int>(deadline.remainingTime())))
             break;
+    }
+    if (m_socket.bytesToWrite() > 0)
+        return; // the bridge takes nothing more: closing loses no less
+    m_connected = false; // from here on the transport only waits to close
+#ifdef Q_OS_WIN
+    ::shutdown(SOCKET(m_socket.socketDescriptor()), SD_SEND);
+#else
+    ::shutdown(int(m_socket.socketDescriptor()), SHUT_WR);
+#endif
+    while (m_socket.state() == QAbstractSocket::ConnectedState && !deadline.hasExpired()) {
+        m_socket.waitForReadyRead(static_cast<int>(deadline.remainingTime()));
+        m_socket.readAll();
     }
 }
 
@@ -185,6 +209,8 @@ QString TcpTransport::closedByBridge() const
 
 void TcpTransport::onReadyRead()
 {
+    if (!m_connected)
+        return;
     QByteArray bytes = m_socket.readAll();
     if (m_telnet)
         bytes = toQt(m_telnet->feed(reinterpret_cast<const std::uint8_t *>(bytes.constData()), std::size_t(bytes.size())));

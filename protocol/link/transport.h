@@ -41,7 +41,8 @@ public:
     // who keeps a link of their own (a bridge) takes the commands as they
     // are, and needs `origin` to keep the link's own exchanges to itself.
     virtual bool writeCommands(const std::vector<oi::OiCommand> &commands, const QByteArray &bytes, Origin origin);
-    // Waits up to `msecs` for queued bytes to leave (used before closing).
+    // Before closing: waits up to `msecs` for what was written to reach the
+    // far side. Nothing is written after it.
     virtual void flush(int msecs) = 0;
     // Serial ports only: change the line speed, open or not. Others have no
     // baud of their own and return false.

@@ -10,6 +10,7 @@
 #include "command_encoder.h"
 #include "robot_link.h"
 #include "stream_packets.h"
+#include "tcp_transport.h"
 #include "transport.h"
 
 #include <QPointer>
@@ -17,6 +18,15 @@
 #include <QTcpServer>
 #include <QTcpSocket>
 #include <QTest>
+
+#include <cerrno>
+#include <cstring>
+#include <future>
+#include <thread>
+
+#include <netinet/in.h>
+#include <sys/socket.h>
+#include <unistd.h>
 
 using oilink::LinkSettings;
 using oilink::LinkState;
@@ -598,6 +608,71 @@ private slots:
         QVERIFY2(message.endsWith(expectedEnd), qPrintable(message));
         QVERIFY(message.startsWith(QString("127.0.0.1:%1").arg(bridge.serverPort())));
         link.close();
+    }
+
+    // A bridge that is still streaming when the link says its last words:
+    // unread bytes on a socket that closes reset the connection, and a reset
+    // may lose the last Stop before the bridge passes it on. The link's end
+    // hangs up cleanly after its last bytes instead. The bridge here is a
+    // plain socket that tells a clean end (read returns 0) from a reset.
+    void closingOverTcpEndsCleanlyWithBytesUnread()
+    {
+        const int listener = ::socket(AF_INET, SOCK_STREAM, 0);
+        QVERIFY(listener >= 0);
+        sockaddr_in address{};
+        address.sin_family = AF_INET;
+        address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+        socklen_t length = sizeof address;
+        QVERIFY(::bind(listener, reinterpret_cast<sockaddr *>(&address), sizeof address) == 0);
+        QVERIFY(::listen(listener, 1) == 0);
+        QVERIFY(::getsockname(listener, reinterpret_cast<sockaddr *>(&address), &length) == 0);
+
+        std::promise<void> streamNow;
+        std::promise<void> streamed;
+        QByteArray heard;
+        int endErrno = -1; // 0: a clean end
+        std::thread bridge([&] {
+            const int peer = ::accept(listener, nullptr, nullptr);
+            if (peer < 0)
+                return;
+            streamNow.get_future().wait();
+            // It streams on, as fast as it can, until the link hangs up.
+            const QByteArray frames(256, '\x13');
+            char buffer[256];
+            bool first = true;
+            for (;;) {
+                [[maybe_unused]] const ssize_t sent =
+                    ::send(peer, frames.constData(), std::size_t(frames.size()), MSG_DONTWAIT | MSG_NOSIGNAL);
+                if (first)
+                    streamed.set_value();
+                first = false;
+                const ssize_t n = ::recv(peer, buffer, sizeof buffer, MSG_DONTWAIT);
+                if (n > 0) {
+                    heard.append(buffer, n);
+                    continue;
+                }
+                if (n < 0 && (errno == EAGAIN || errno == EWOULDBLOCK))
+                    continue;
+                endErrno = n == 0 ? 0 : errno;
+                break;
+            }
+            ::close(peer);
+        });
+
+        oilink::TcpTransport transport(QStringLiteral("127.0.0.1"), ntohs(address.sin_port));
+        QSignalSpy opened(&transport, &oilink::Transport::opened);
+        transport.open();
+        QTRY_VERIFY_WITH_TIMEOUT(!opened.isEmpty(), 5000);
+        streamNow.set_value();
+        streamed.get_future().wait();
+        const QByteArray stop("\x96\x00\x89\x00\x00\x00\x00\x80", 8);
+        QVERIFY(transport.write(stop));
+        transport.flush(5000);
+        transport.close();
+        bridge.join();
+        ::close(listener);
+        QCOMPARE(heard, stop);
+        QVERIFY2(endErrno == 0, std::strerror(endErrno));
     }
 
     // The link knows no simulator: asked for a virtual robot without a

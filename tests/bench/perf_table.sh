@@ -67,7 +67,7 @@ echo "the recording and history benchmarks; about $((seconds * 3 / 60 + 3)) minu
 "$bench/bench_dashboard" --xvfb --seconds "$seconds" --fleet > "$log/fleet.txt" &
 fleet_pid=$!
 # Input to wire while 30 robots stream and draw: after they have started.
-sleep $((seconds < 60 ? seconds / 3 : 30))
+sleep $((seconds < 60 ? seconds / 4 : 15))
 QT_QPA_PLATFORM=offscreen "$bench/bench_teleop_latency" > "$log/teleop_busy.txt"
 wait "$fleet_pid"
 QT_QPA_PLATFORM=offscreen "$bench/bench_teleop_latency" > "$log/teleop_quiet.txt"
@@ -85,8 +85,8 @@ history30=$(field "$log/history.txt" '^30 robots .*: ([0-9.]+) MiB in all, RSS (
 history30_rss=$(field "$log/history.txt" '^30 robots .*RSS ([0-9.]+) MiB.*')
 open_s=$(field "$log/recording.txt" '^open +([0-9.]+) s.*')
 seek=$(field "$log/recording.txt" '^seek .*p99 ([0-9.]+) ms.*')
-teleop_busy=$(grep -E 'p99' "$log/teleop_busy.txt" | sed -nE 's/.*p99 +([0-9.]+) ms.*/\1/p' | sort -n | tail -1)
-teleop_quiet=$(grep -E 'p99' "$log/teleop_quiet.txt" | sed -nE 's/.*p99 +([0-9.]+) ms.*/\1/p' | sort -n | tail -1)
+teleop_busy=$(grep -E '^all ' "$log/teleop_busy.txt" | sed -nE 's/.*p99 +([0-9.]+) ms.*/\1/p' | sort -n | tail -1)
+teleop_quiet=$(grep -E '^all ' "$log/teleop_quiet.txt" | sed -nE 's/.*p99 +([0-9.]+) ms.*/\1/p' | sort -n | tail -1)
 
 figures=(cpu_one="$cpu_one" cpu_every="$cpu_every" cpu_fleet="$cpu_fleet" rss_fleet="$rss_fleet"
          history30="$history30" open_s="$open_s" seek_p99="$seek" teleop_quiet="$teleop_quiet"

@@ -16,9 +16,11 @@
 
 #include <QByteArray>
 #include <QList>
+#include <QDeadlineTimer>
 #include <QMutex>
 #include <QStringList>
 #include <QTimer>
+#include <QWaitCondition>
 
 #include <atomic>
 #include <chrono>
@@ -29,6 +31,7 @@ struct Recording {
     using Clock = std::chrono::steady_clock;
 
     QMutex mutex;
+    QWaitCondition wrote; // woken at each write
     QList<QByteArray> writes;
     // Those of the writes that were commands the link was asked to send
     // (Transport::Origin::User), not its own exchanges.
@@ -60,6 +63,16 @@ struct Recording {
     {
         QMutexLocker lock(&mutex);
         return writes.join();
+    }
+    // Sleeps until a write is recorded or `msecs` pass; true if one was.
+    bool waitForWrite(int msecs)
+    {
+        QMutexLocker lock(&mutex);
+        const QDeadlineTimer deadline(msecs);
+        while (writes.isEmpty())
+            if (!wrote.wait(&mutex, deadline))
+                return !writes.isEmpty();
+        return true;
     }
     QList<QByteArray> take()
     {
@@ -150,6 +163,7 @@ public:
         }
         m_recording->writes << bytes;
         m_recording->times << now;
+        m_recording->wrote.wakeAll();
         return true;
     }
     bool writeCommands(const std::vector<oi::OiCommand> &, const QByteArray &bytes, Origin origin) override

@@ -18,7 +18,7 @@
 #include <QLabel>
 #include <QScrollArea>
 #include <QSettings>
-#include <qcustomplot.h>
+#include "custom_plot.h"
 #include <QStandardPaths>
 #include <QStatusBar>
 #include <QTabBar>

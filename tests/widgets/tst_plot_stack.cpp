@@ -15,7 +15,7 @@
 #include <QSignalSpy>
 #include <QTest>
 
-#include <qcustomplot.h>
+#include "custom_plot.h"
 
 #include <algorithm>
 #include <cmath>

@@ -20,7 +20,7 @@
 #include <QTemporaryDir>
 #include <QTest>
 
-#include <qcustomplot.h>
+#include "custom_plot.h"
 
 #include <algorithm>
 #include <cmath>

@@ -5,7 +5,7 @@
 
 #include <QTest>
 
-#include <qcustomplot.h>
+#include "custom_plot.h"
 
 #include <cmath>
 

@@ -91,7 +91,7 @@ public:
     // the next refresh() puts it back on the newest sample.
     double timeFrom() const { return m_timeFrom; }
     double timeTo() const { return m_timeTo; }
-    // The same as QCustomPlot's range (include <qcustomplot.h> to read it).
+    // The same as QCustomPlot's range (include "custom_plot.h" to read it).
     QCPRange timeRange() const;
     void setTimeRange(double from, double to);
 

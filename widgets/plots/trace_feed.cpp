@@ -3,7 +3,7 @@
 
 #include "sensor_history.h"
 
-#include <qcustomplot.h>
+#include "custom_plot.h"
 
 #include <algorithm>
 

@@ -15,6 +15,7 @@ namespace oilink {
 
 namespace {
 constexpr int kConnectTimeoutMs = 5000;
+constexpr qint64 kHangUpWaitMs = 250;
 }
 
 TcpTransport::TcpTransport(const QString &host, quint16 port, QObject *parent)
@@ -135,8 +136,11 @@ void TcpTransport::flush(int msecs)
 #else
     ::shutdown(int(m_socket.socketDescriptor()), SHUT_WR);
 #endif
-    while (m_socket.state() == QAbstractSocket::ConnectedState && !deadline.hasExpired()) {
-        m_socket.waitForReadyRead(static_cast<int>(deadline.remainingTime()));
+    // A bridge that keeps its end open is not waited for long: the window
+    // waits for the link to close.
+    const QDeadlineTimer hungUp(std::min<qint64>(deadline.remainingTime(), kHangUpWaitMs));
+    while (m_socket.state() == QAbstractSocket::ConnectedState && !hungUp.hasExpired()) {
+        m_socket.waitForReadyRead(static_cast<int>(hungUp.remainingTime()));
         m_socket.readAll();
     }
 }

@@ -115,6 +115,8 @@ int main(int argc, char **argv)
     std::thread input([&] {
         std::mt19937 random(1);
         std::uniform_int_distribution<int> jitterUs(0, 5'000);
+        // The input's pace, not a wait for something to happen: the rate
+        // limit runs on the wall clock.
         const auto pause = [&] {
             std::this_thread::sleep_for(std::chrono::milliseconds(TeleopController::kMinIntervalMs + 1)
                                         + std::chrono::microseconds(jitterUs(random)));
@@ -128,7 +130,7 @@ int main(int argc, char **argv)
         int ignoredLost = 0;
         measure(new QMouseEvent(QEvent::MouseButtonPress, QPointF(a), globalA, Qt::LeftButton, Qt::LeftButton,
                                 Qt::NoModifier),
-                ignored, ignoredLost);
+                ignored, mouseLost);
         for (int i = 0; i < events; ++i) {
             const QPointF p(i % 2 ? a : b);
             measure(new QMouseEvent(QEvent::MouseMove, p, i % 2 ? globalA : globalB, Qt::NoButton, Qt::LeftButton,

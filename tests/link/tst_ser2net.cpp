@@ -197,10 +197,10 @@ int framesBeforeAnswer(QTcpSocket &socket, QByteArray &pending, qsizetype answer
 // Four equal modes of 1 to 3 mark where the answer starts; no stream frame
 // holds that. Returns the mode and the velocity's two bytes, or nothing when
 // no answer came.
-QByteArray modeAndVelocity(QTcpSocket &socket, QByteArray &pending)
+QByteArray modeAndVelocity(const oi::CommandEncoder &encoder, QTcpSocket &socket, QByteArray &pending)
 {
     const std::array<int, 5> ids{35, 35, 35, 35, 39};
-    socket.write(toBytes(oi::CommandEncoder(oi::profile(oi::ProfileId::Create2)).queryList(ids)));
+    socket.write(toBytes(encoder.queryList(ids)));
     const QDeadlineTimer deadline(kTimeoutMs);
     for (;;) {
         for (qsizetype at = 0; at + 6 <= pending.size(); ++at) {
@@ -382,7 +382,7 @@ void TestSer2net::closeLeavesTheRobotPassive()
         pending.clear();
         socket.connectToHost(QHostAddress::LocalHost, m_port);
         QVERIFY2(socket.waitForConnected(kTimeoutMs), qPrintable(socket.errorString()));
-        reply = modeAndVelocity(socket, pending);
+        reply = modeAndVelocity(m_encoder, socket, pending);
         if (socket.state() == QAbstractSocket::ConnectedState)
             break;
     }

@@ -18,7 +18,7 @@ and editors for songs, LEDs, schedule and Create scripts. Includes roomba-sim, \
 a virtual robot on a pseudo-terminal or TCP, and the roomba-ctl command-line tool.")
 set(CPACK_RESOURCE_FILE_LICENSE "${PROJECT_SOURCE_DIR}/LICENSE")
 set(CPACK_PACKAGING_INSTALL_PREFIX /usr)
-# The build is RelWithDebInfo; users get the binaries without debug info.
+# Whatever the build type, users get the binaries without debug info.
 set(CPACK_STRIP_FILES ON)
 
 set(ROOMBA_PACKAGE_MAINTAINER "Roomba Dashboard developers <roomba-dashboard@users.noreply.github.com>"

@@ -466,3 +466,5 @@ void ByteLogView::changeEvent(QEvent *event)
         viewport()->update();
     }
 }
+
+#include "moc_byte_log_view.cpp"

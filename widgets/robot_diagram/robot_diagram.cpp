@@ -367,7 +367,7 @@ QList<QList<RobotDiagram::Chip>> RobotDiagram::chipRows() const
 
     auto irChip = [&](const QString &caption, int packetId, oi::IrCharacter ir) {
         if (!s.has(packetId))
-            return Chip{caption, none, State::Idle};
+            return Chip{caption, none, State::Idle, {}};
         const bool received = ir.kind != oi::IrCharacter::Kind::None;
         return Chip{caption, oitext::infraredName(ir), received ? State::Active : State::Idle,
                     oitext::infraredShortName(ir)};
@@ -381,45 +381,45 @@ QList<QList<RobotDiagram::Chip>> RobotDiagram::chipRows() const
         return names;
     };
 
-    Chip buttons{tr("Buttons"), none, State::Idle};
+    Chip buttons{tr("Buttons"), none, State::Idle, {}};
     if (s.has(18)) {
         const QStringList pressed = bitNames(18);
         if (pressed.isEmpty())
             buttons.value = tr("none");
         else
-            buttons = {buttons.caption, pressed.join(" + "), State::Active};
+            buttons = {buttons.caption, pressed.join(" + "), State::Active, {}};
     }
 
-    Chip virtualWall{tr("Virtual wall"), none, State::Idle};
+    Chip virtualWall{tr("Virtual wall"), none, State::Idle, {}};
     if (s.has(13)) {
         if (s.virtualWall())
-            virtualWall = {virtualWall.caption, tr("seen"), State::Warning};
+            virtualWall = {virtualWall.caption, tr("seen"), State::Warning, {}};
         else
             virtualWall.value = tr("none");
     }
 
-    Chip overcurrent{tr("Overcurrent"), none, State::Idle};
+    Chip overcurrent{tr("Overcurrent"), none, State::Idle, {}};
     if (s.has(14)) {
         const QStringList over = bitNames(14);
         if (over.isEmpty())
             overcurrent.value = tr("none");
         else
-            overcurrent = {overcurrent.caption, over.join(", "), State::Alert};
+            overcurrent = {overcurrent.caption, over.join(", "), State::Alert, {}};
     }
 
     if (isCreate1())
         return {{irChip(tr("IR"), 17, s.irOmni()), virtualWall}, {buttons}, {overcurrent}};
 
     // ERRATA 5: 2 is the Create 2's dirty stasis wheel, not "moving".
-    Chip stasis{tr("Stasis"), none, State::Idle};
+    Chip stasis{tr("Stasis"), none, State::Idle, {}};
     if (s.has(58)) {
         switch (s.stasis()) {
         case oi::Stasis::NotProgressing: stasis.value = tr("not moving"); break;
-        case oi::Stasis::Progressing: stasis = {stasis.caption, tr("moving"), State::Active}; break;
+        case oi::Stasis::Progressing: stasis = {stasis.caption, tr("moving"), State::Active, {}}; break;
         case oi::Stasis::DirtyWheel:
-            stasis = {stasis.caption, tr("DIRTY WHEEL"), State::Warning};
+            stasis = {stasis.caption, tr("DIRTY WHEEL"), State::Warning, {}};
             break;
-        case oi::Stasis::Reserved: stasis = {stasis.caption, tr("reserved (3)"), State::Alert}; break;
+        case oi::Stasis::Reserved: stasis = {stasis.caption, tr("reserved (3)"), State::Alert, {}}; break;
         }
     }
     return {{irChip(tr("IR omni"), 17, s.irOmni()), irChip(tr("IR left"), 52, s.irLeft()),

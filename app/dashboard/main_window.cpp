@@ -34,6 +34,7 @@
 #include "restored_robots.h"
 #include "robot_bar.h"
 #include "robot_diagram.h"
+#include "robot_link_thread.h"
 #include "robot_status_bar.h"
 #include "room_actions.h"
 #include "room_robots.h"
@@ -588,7 +589,13 @@ void MainWindow::stopRecording() { session().stopRecording(); }
 bool MainWindow::openRecording(const QString &path, QString *error) { return m_recording->openRecording(path, error); }
 void MainWindow::resetLayout() { m_layout->resetLayout(); }
 QDockWidget *MainWindow::focusNextDock(int direction) { return m_layout->focusNextDock(direction); }
-void MainWindow::refreshDisplay() { m_view->refresh(); }
+void MainWindow::refreshDisplay()
+{
+    // The frames the robots queued since the last tick, taken at it: they
+    // cost the GUI thread no wake-up of their own while the display runs.
+    oilink::RobotLinkThread::deliverQueuedNow(kDisplayIntervalMs * 3 / 2);
+    m_view->refresh();
+}
 const std::shared_ptr<sim::Room> &MainWindow::room() const { return m_room->room(); }
 FleetConsole *MainWindow::fleetConsole() const { return m_broker->console(); }
 FleetView *MainWindow::fleetView() const { return m_broker->fleetView(); }

@@ -10,6 +10,8 @@
 
 #include <sys/resource.h>
 
+#include <algorithm>
+
 namespace oilink {
 
 // One per thread that has RobotLinkThreads: a timer that hands out what
@@ -30,6 +32,16 @@ public:
         if (FrameDelivery *delivery = s_byThread.localData(); delivery && !delivery->m_timer.isActive())
             delivery->m_timer.start();
     }
+    static void deliverNow(int nextWithinMs)
+    {
+        FrameDelivery *delivery = s_byThread.hasLocalData() ? s_byThread.localData() : nullptr;
+        if (!delivery || !delivery->m_timer.isActive())
+            return;
+        delivery->deliver();
+        // The timeout puts back the usual pace.
+        if (delivery->m_timer.isActive())
+            delivery->m_timer.start(std::max(nextWithinMs, RobotLinkThread::kDeliveryMs));
+    }
     static void remove(RobotLinkThread *link)
     {
         FrameDelivery *&delivery = s_byThread.localData();
@@ -48,18 +60,25 @@ private:
         m_timer.setInterval(RobotLinkThread::kDeliveryMs);
         m_timer.setTimerType(Qt::PreciseTimer);
         connect(&m_timer, &QTimer::timeout, this, [this] {
-            // A copy: a handler may open or close robots.
-            const QList<QPointer<RobotLinkThread>> links(m_links.cbegin(), m_links.cend());
-            bool running = false;
-            for (const QPointer<RobotLinkThread> &link : links) {
-                if (!link)
-                    continue;
-                link->deliverQueued();
-                running |= link->isRunning();
-            }
-            if (!running)
-                m_timer.stop(); // nothing can come until a link starts again
+            if (m_timer.interval() != RobotLinkThread::kDeliveryMs)
+                m_timer.start(RobotLinkThread::kDeliveryMs); // after a delivery held back
+            deliver();
         });
+    }
+
+    void deliver()
+    {
+        // A copy: a handler may open or close robots.
+        const QList<QPointer<RobotLinkThread>> links(m_links.cbegin(), m_links.cend());
+        bool running = false;
+        for (const QPointer<RobotLinkThread> &link : links) {
+            if (!link)
+                continue;
+            link->deliverQueued();
+            running |= link->isRunning();
+        }
+        if (!running)
+            m_timer.stop(); // nothing can come until a link starts again
     }
 
     static QThreadStorage<FrameDelivery *> s_byThread;
@@ -179,6 +198,8 @@ void RobotLinkThread::relay(RobotLink *link, void (RobotLink::*signal)(Args...),
         },
         Qt::DirectConnection);
 }
+
+void RobotLinkThread::deliverQueuedNow(int nextWithinMs) { FrameDelivery::deliverNow(nextWithinMs); }
 
 void RobotLinkThread::setTransportFactory(RobotLink::TransportFactory factory)
 {

@@ -71,6 +71,14 @@ public:
     // The thread the link runs on; nullptr when not running.
     QThread *linkThread() const { return m_link ? m_link->thread() : nullptr; }
 
+    // Hands out now what every link of the calling thread has queued, and
+    // holds the next timed delivery back until `nextWithinMs` from now. A
+    // display that refreshes at its own pace calls it on each tick with a
+    // little more than its interval, so the frames reach it then and cost
+    // the thread no wake-up of their own; when the display stops, the timer
+    // delivers again.
+    static void deliverQueuedNow(int nextWithinMs);
+
 public slots:
     void open(const oilink::LinkSettings &settings);
     void close();

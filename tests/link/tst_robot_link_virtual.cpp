@@ -10,6 +10,7 @@
 #include "virtual_transport.h"
 #include "typed_command_bytes.h"
 
+#include <QDeadlineTimer>
 #include <QSignalSpy>
 #include <QTest>
 #include <QThread>
@@ -270,6 +271,31 @@ private slots:
         for (qsizetype i = 0; i < said.size(); ++i)
             if (said[i] == QStringLiteral("frame"))
                 QVERIFY(said.mid(0, i).contains(QStringLiteral("bytes")));
+    }
+
+    // A display that refreshes at its own pace takes the queued frames at
+    // its tick: they are handed out within the call, with no event loop
+    // running (so neither the delivery timer nor a relayed signal can have
+    // brought them), and the timer hands them out again afterwards.
+    void framesTakenAtTheDisplaysTick()
+    {
+        RobotLinkThread link;
+        link.setTransportFactory(transports::transportFactory());
+        QSignalSpy snapshots(&link, &RobotLinkThread::snapshot);
+        link.open(LinkSettings::virtualRobotOf(oi::ProfileId::Create2, oi::ProfileId::Create2));
+        QTRY_VERIFY_WITH_TIMEOUT(snapshots.size() >= 3, kTimeoutMs);
+
+        snapshots.clear();
+        QDeadlineTimer deadline(kTimeoutMs);
+        while (snapshots.isEmpty() && !deadline.hasExpired()) {
+            QThread::yieldCurrentThread(); // the worker queues the next frame
+            RobotLinkThread::deliverQueuedNow(50);
+        }
+        QVERIFY(!snapshots.isEmpty());
+
+        const qsizetype taken = snapshots.size();
+        QTRY_VERIFY_WITH_TIMEOUT(snapshots.size() > taken + 3, kTimeoutMs);
+        link.stop();
     }
 
     void aStoppedHelperOpensAgain()

@@ -158,7 +158,11 @@ private slots:
         QCOMPARE(window.room()->robot(window.roomRobot())->pose.xMm, x);
     }
 
-    void tabbedAwayInspectorDrawsWhenItsTabComesUp()
+    // A view behind another dock's tab keeps what comes and draws none of
+    // it, and keeps no timer: the inspector renders nothing, the map does
+    // not tick. Each catches up and ticks when its tab comes up, and stops
+    // when it goes down.
+    void tabbedAwayViewsWaitForTheirTab()
     {
         MainWindow window;
         window.resize(1400, 900);
@@ -166,20 +170,36 @@ private slots:
         QVERIFY(QTest::qWaitForWindowExposed(&window));
         window.start(oilink::LinkSettings::virtualRobotOf(oi::ProfileId::Create2, oi::ProfileId::Create2));
         QTRY_VERIFY_WITH_TIMEOUT(window.session().snapshotCount() > 10, 10000);
-        // Behind the plots' tab: visible to Qt, nothing of it on screen. It
-        // keeps what came and lays out none of it.
+        // Behind the plots' tab: visible to Qt, nothing of it on screen.
         ByteInspector *inspector = window.byteInspector();
         const QAbstractItemModel *log = inspector->findChild<QAbstractItemView *>("byteLog")->model();
+        const auto *render = inspector->findChild<QTimer *>("renderTimer");
+        const auto *mapTick = window.odometryMap()->findChild<QTimer *>("displayTimer");
+        QVERIFY(render && mapTick);
         QVERIFY(inspector->isVisible());
         QVERIFY(!isOnScreen(inspector));
+        QVERIFY(!isOnScreen(window.odometryMap()));
         QVERIFY(isOnScreen(window.sensorPlots()));
-        QVERIFY(!inspector->lastEntries(1).isEmpty());
+        const qsizetype entries = inspector->lastEntries(1000).size();
+        QTRY_VERIFY_WITH_TIMEOUT(inspector->lastEntries(1000).size() > entries + 10, 10000);
         QCOMPARE(log->rowCount(), 0);
-        // Its tab comes up: it shows what it kept.
+        QVERIFY(!render->isActive());
+        QVERIFY(!mapTick->isActive());
+
+        // Its tab comes up: it shows what it kept, and renders what comes.
         window.findChild<QDockWidget *>("inspectorDock")->raise();
         QTRY_VERIFY(isOnScreen(inspector));
         QTRY_VERIFY(log->rowCount() > 10);
+        QTRY_VERIFY(render->isActive());
         QVERIFY(!isOnScreen(window.sensorPlots()));
+
+        window.findChild<QDockWidget *>("mapDock")->raise();
+        QTRY_VERIFY(isOnScreen(window.odometryMap()));
+        QVERIFY(mapTick->isActive());
+        QVERIFY(!render->isActive());
+        window.findChild<QDockWidget *>("plotsDock")->raise();
+        QTRY_VERIFY(!isOnScreen(window.odometryMap()));
+        QVERIFY(!mapTick->isActive());
     }
 
     void modeButtonsSendExactBytes()

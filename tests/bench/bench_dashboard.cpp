@@ -22,7 +22,8 @@
 // list, and the selected robot with every dock open (--robots 30
 // --every-dock). The MQTT fleet console is not measured here.
 // --paints: at the end, which widgets were painted how often and over how
-// many pixels a second: where drawing time goes.
+// many pixels a second, and which timers and queued calls woke the GUI
+// thread how often: where drawing time and wake-ups go.
 // --xvfb: runs itself again under xvfb-run on a 1600x1000 screen with the xcb
 // platform; otherwise set QT_QPA_PLATFORM (offscreen) yourself.
 #include "main_window.h"
@@ -109,10 +110,30 @@ public:
         double pixels = 0;
     };
     std::map<QString, Count> counts;
+    std::map<QString, std::uint64_t> timers; // by the timer's owner and interval
+    std::map<QString, std::uint64_t> calls;  // queued calls, by receiver
 
 protected:
+    static QString nameOf(const QObject *object)
+    {
+        if (!object)
+            return QStringLiteral("(none)");
+        QString name = QString::fromLatin1(object->metaObject()->className());
+        if (!object->objectName().isEmpty())
+            name += QLatin1Char(' ') + object->objectName();
+        return name;
+    }
+
     bool eventFilter(QObject *watched, QEvent *event) override
     {
+        if (event->type() == QEvent::Timer) {
+            const auto *timer = qobject_cast<const QTimer *>(watched);
+            const QString owner = timer ? nameOf(timer->parent()) + QStringLiteral(" (%1 ms)").arg(timer->interval())
+                                        : nameOf(watched) + QStringLiteral(" (startTimer)");
+            ++timers[owner];
+        } else if (event->type() == QEvent::MetaCall) {
+            ++calls[nameOf(watched)];
+        }
         if (event->type() == QEvent::Paint && watched->isWidgetType()) {
             QString name = QString::fromLatin1(watched->metaObject()->className());
             if (!watched->objectName().isEmpty())
@@ -134,6 +155,15 @@ void printPaints(const PaintCounter &counter, double seconds)
     for (std::size_t i = 0; i < rows.size() && i < 25; ++i)
         std::printf("  %8.2f paints/s %10.0f px/s  %s\n", rows[i].second.paints / seconds,
                     rows[i].second.pixels / seconds, qPrintable(rows[i].first));
+    const auto printRates = [seconds](const char *title, const std::map<QString, std::uint64_t> &counts) {
+        std::vector<std::pair<QString, std::uint64_t>> byRate(counts.begin(), counts.end());
+        std::sort(byRate.begin(), byRate.end(), [](const auto &a, const auto &b) { return a.second > b.second; });
+        std::printf("%s per second on the GUI thread:\n", title);
+        for (std::size_t i = 0; i < byRate.size() && i < 15; ++i)
+            std::printf("  %8.2f /s  %s\n", double(byRate[i].second) / seconds, qPrintable(byRate[i].first));
+    };
+    printRates("timer events, by the timer's owner", counter.timers);
+    printRates("queued calls, by receiver", counter.calls);
 }
 
 // Runs this benchmark again under xvfb-run, without --xvfb. Returns only on failure.

@@ -242,9 +242,10 @@ void ByteInspector::record(Entry entry)
 
 void ByteInspector::scheduleRender()
 {
-    // A hidden log costs nothing to keep; it renders when shown. Whether it
-    // is on screen is asked once per tick, not per entry: it is dear to ask.
-    if (isVisible() && !m_renderTimer->isActive())
+    // A hidden log, or one behind another dock's tab, costs nothing to keep;
+    // it renders when shown. Whether it is on screen is asked once per tick,
+    // not per entry: it is dear to ask.
+    if (m_shown && isVisible() && !m_renderTimer->isActive())
         m_renderTimer->start();
 }
 
@@ -287,7 +288,15 @@ void ByteInspector::setShowsHex(bool hex)
 void ByteInspector::showEvent(QShowEvent *event)
 {
     QWidget::showEvent(event);
+    m_shown = true;
     flushView();
+}
+
+void ByteInspector::hideEvent(QHideEvent *event)
+{
+    QWidget::hideEvent(event);
+    m_shown = false;
+    m_renderTimer->stop();
 }
 
 void ByteInspector::flushView()

@@ -114,6 +114,7 @@ signals:
 protected:
     void changeEvent(QEvent *event) override;
     void showEvent(QShowEvent *event) override;
+    void hideEvent(QHideEvent *event) override;
 
 private:
     using Tone = ByteLogModel::Tone;
@@ -133,6 +134,7 @@ private:
     quint64 m_txBytes = 0;
     quint64 m_rxBytes = 0;
     bool m_paused = false;
+    bool m_shown = false; // by its last show or hide event: its dock's tab may be down
 
     QToolButton *m_pauseButton;
     QToolButton *m_clearButton;

@@ -123,6 +123,7 @@ OdometryMap::OdometryMap(QWidget *parent) : QWidget(parent)
     layout->addWidget(m_poseLabel, 0, Qt::AlignLeft);
 
     m_displayTimer = new QTimer(this);
+    m_displayTimer->setObjectName(QStringLiteral("displayTimer"));
     m_displayTimer->setInterval(33);
     connect(m_displayTimer, &QTimer::timeout, this, [this] {
         if (!isOnScreen(this))

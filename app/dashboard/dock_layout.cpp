@@ -41,7 +41,7 @@ QDockWidget *DockLayout::addDock(const QString &objectName, const char *title, Q
                                  Qt::DockWidgetArea area, bool namesRobot)
 {
     QDockWidget *dock = add(objectName, title, scrollingPane(objectName, widget), area, namesRobot);
-    showAndHideWithTab(dock, widget);
+    showOnTabRaise(dock, widget);
     return dock;
 }
 
@@ -66,7 +66,7 @@ void DockLayout::build(QDockWidget *dock)
     auto *scroll = static_cast<QScrollArea *>(dock->widget());
     scroll->setWidget(widget);
     scroll->setMinimumSize(widget->minimumSizeHint().boundedTo(kMinimumPane));
-    showAndHideWithTab(dock, widget);
+    showOnTabRaise(dock, widget);
 }
 
 // The pane scrolls rather than demand its whole size: every dock then fits
@@ -89,7 +89,7 @@ QDockWidget *DockLayout::addBar(const QString &objectName, const char *title, QW
                                 Qt::DockWidgetArea area, bool namesRobot)
 {
     QDockWidget *dock = add(objectName, title, widget, area, namesRobot);
-    showAndHideWithTab(dock, widget);
+    showOnTabRaise(dock, widget);
     return dock;
 }
 
@@ -105,21 +105,15 @@ QDockWidget *DockLayout::add(const QString &objectName, const char *title, QWidg
     return dock;
 }
 
-// A dock whose tab goes down stays "visible" to Qt, and one whose tab comes
-// up was so all along, so its view gets no hide or show event of its own. It
-// gets them here: hidden, it stops its timers (the map's display tick); shown,
-// it catches up with what it left undrawn while tabbed away (see isOnScreen()).
-void DockLayout::showAndHideWithTab(QDockWidget *dock, QWidget *widget)
+// A dock whose tab comes up was "visible" all along to Qt, so its view gets
+// no show event of its own; it gets one here, to catch up with what it left
+// undrawn while tabbed away (see isOnScreen()).
+void DockLayout::showOnTabRaise(QDockWidget *dock, QWidget *widget)
 {
     connect(dock, &QDockWidget::visibilityChanged, widget, [widget](bool visible) {
-        if (!widget->isVisible())
-            return; // really hidden: Qt told it so
-        if (visible) {
+        if (visible && widget->isVisible()) {
             QShowEvent shown;
             QCoreApplication::sendEvent(widget, &shown);
-        } else {
-            QHideEvent hidden;
-            QCoreApplication::sendEvent(widget, &hidden);
         }
     });
 }

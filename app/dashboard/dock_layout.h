@@ -63,7 +63,7 @@ private:
     QDockWidget *add(const QString &objectName, const char *title, QWidget *pane, Qt::DockWidgetArea area,
                      bool namesRobot);
     QWidget *scrollingPane(const QString &objectName, QWidget *widget);
-    void showAndHideWithTab(QDockWidget *dock, QWidget *widget);
+    void showOnTabRaise(QDockWidget *dock, QWidget *widget);
     struct Dock {
         QDockWidget *dock;
         const char *title; // untranslated

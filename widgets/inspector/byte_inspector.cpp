@@ -121,9 +121,12 @@ ByteInspector::ByteInspector(QWidget *parent)
     m_renderTimer->setSingleShot(true);
     m_renderTimer->setInterval(kRenderIntervalMs);
     connect(m_renderTimer, &QTimer::timeout, this, [this] {
-        // Behind another dock's tab: kept, not laid out, until its tab comes up.
+        // Behind another dock's tab: kept, not laid out, and no timer
+        // either, until it is shown or painted again.
         if (isOnScreen(this))
             flushView();
+        else
+            m_offScreen = true;
     });
     showError(QString());
     retranslateUi();
@@ -245,7 +248,7 @@ void ByteInspector::scheduleRender()
     // A hidden log, or one behind another dock's tab, costs nothing to keep;
     // it renders when shown. Whether it is on screen is asked once per tick,
     // not per entry: it is dear to ask.
-    if (m_shown && isVisible() && !m_renderTimer->isActive())
+    if (!m_offScreen && isVisible() && !m_renderTimer->isActive())
         m_renderTimer->start();
 }
 
@@ -288,15 +291,17 @@ void ByteInspector::setShowsHex(bool hex)
 void ByteInspector::showEvent(QShowEvent *event)
 {
     QWidget::showEvent(event);
-    m_shown = true;
+    m_offScreen = false;
     flushView();
 }
 
-void ByteInspector::hideEvent(QHideEvent *event)
+void ByteInspector::paintEvent(QPaintEvent *event)
 {
-    QWidget::hideEvent(event);
-    m_shown = false;
-    m_renderTimer->stop();
+    QWidget::paintEvent(event);
+    if (m_offScreen) { // on screen again, by whatever way
+        m_offScreen = false;
+        scheduleRender();
+    }
 }
 
 void ByteInspector::flushView()

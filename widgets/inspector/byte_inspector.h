@@ -114,7 +114,7 @@ signals:
 protected:
     void changeEvent(QEvent *event) override;
     void showEvent(QShowEvent *event) override;
-    void hideEvent(QHideEvent *event) override;
+    void paintEvent(QPaintEvent *event) override;
 
 private:
     using Tone = ByteLogModel::Tone;
@@ -134,7 +134,7 @@ private:
     quint64 m_txBytes = 0;
     quint64 m_rxBytes = 0;
     bool m_paused = false;
-    bool m_shown = false; // by its last show or hide event: its dock's tab may be down
+    bool m_offScreen = false; // found behind another dock's tab: no renders until shown
 
     QToolButton *m_pauseButton;
     QToolButton *m_clearButton;

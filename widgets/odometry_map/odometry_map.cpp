@@ -126,8 +126,11 @@ OdometryMap::OdometryMap(QWidget *parent) : QWidget(parent)
     m_displayTimer->setObjectName(QStringLiteral("displayTimer"));
     m_displayTimer->setInterval(33);
     connect(m_displayTimer, &QTimer::timeout, this, [this] {
-        if (!isOnScreen(this))
-            return; // tabbed away: caught up when its tab comes up
+        if (!isOnScreen(this)) {
+            // Tabbed away: no ticks until it is shown or painted again.
+            m_displayTimer->stop();
+            return;
+        }
         if (m_dirty || (m_odometry && m_odometry->revision() != m_shownRevision))
             refresh();
     });
@@ -136,7 +139,8 @@ OdometryMap::OdometryMap(QWidget *parent) : QWidget(parent)
 }
 
 // The display timer runs only while the map is on screen: a map in a hidden
-// or tabbed-away dock costs no wake-ups, and catches up when shown.
+// or tabbed-away dock costs no wake-ups, and catches up when shown (its
+// dock's tab coming up sends a show event) or painted.
 void OdometryMap::showEvent(QShowEvent *event)
 {
     QWidget::showEvent(event);
@@ -415,6 +419,8 @@ double OdometryMap::gridSpacingMm() const
 
 void OdometryMap::paintEvent(QPaintEvent *)
 {
+    if (!m_displayTimer->isActive())
+        m_displayTimer->start(); // on screen again, by whatever way
     QPainter painter(this);
     const QRect area = mapRect();
     painter.fillRect(area, palette().base());

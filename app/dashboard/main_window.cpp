@@ -8,6 +8,7 @@
 #include "command_modes.h"
 #include "connection_bar.h"
 #include "connection_request.h"
+#include "display_tick.h"
 #include "dock_layout.h"
 #include "drive_pad.h"
 #include "firmware_reading.h"
@@ -98,9 +99,6 @@ MainWindow::MainWindow(QWidget *parent) : QMainWindow(parent)
     connect(&m_fleet, &RobotFleet::robotAdded, this, &MainWindow::onRobotAdded);
     connect(&m_fleet, &RobotFleet::robotRemoved, m_robotBar, &RobotBar::refresh);
     connect(&m_fleet, &RobotFleet::selectionChanged, this, [this](RobotSession *robot) { showSelected(robot); });
-
-    m_displayTimer.setInterval(kDisplayIntervalMs);
-    connect(&m_displayTimer, &QTimer::timeout, this, &MainWindow::refreshDisplay);
 }
 
 MainWindow::~MainWindow()
@@ -541,7 +539,8 @@ void MainWindow::start(const std::optional<oilink::LinkSettings> &override, int 
     m_addingAtStart = false;
     m_robotBar->refresh();
     showSelected(m_fleet.selected());
-    m_displayTimer.start();
+    // First: the robots' frames, then the views that show them.
+    DisplayTick::instance().listen(this, [this] { refreshDisplay(); }, DisplayTick::Order::First);
 }
 
 void MainWindow::saveSettings() const
@@ -557,7 +556,7 @@ void MainWindow::saveSettings() const
 void MainWindow::closeEvent(QCloseEvent *event)
 {
     saveSettings();
-    m_displayTimer.stop();
+    DisplayTick::instance().stopListening(this);
     // Every robot stopped and left in Passive mode (ERRATA 17).
     m_fleet.closeAllAndWait();
     event->accept();
@@ -593,7 +592,7 @@ void MainWindow::refreshDisplay()
 {
     // The frames the robots queued since the last tick, taken at it: they
     // cost the GUI thread no wake-up of their own while the display runs.
-    oilink::RobotLinkThread::deliverQueuedNow(kDisplayIntervalMs * 3 / 2);
+    oilink::RobotLinkThread::deliverQueuedNow(DisplayTick::kIntervalMs * 3 / 2);
     m_view->refresh();
 }
 const std::shared_ptr<sim::Room> &MainWindow::room() const { return m_room->room(); }

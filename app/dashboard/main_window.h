@@ -69,12 +69,11 @@ struct OiCommand;
 // robot (SelectedRobotView); driving, the editors and recording act on it.
 // The window builds the docks and menus and wires them; the robots' models
 // decide, and the recording, the broker and the room have objects of their
-// own. A display timer refreshes the views at display rate, never once per frame.
+// own. The display's tick (DisplayTick) refreshes the views at display rate,
+// never once per frame.
 class MainWindow : public QMainWindow {
     Q_OBJECT
 public:
-    static constexpr int kDisplayIntervalMs = 33; // SelectedRobotView::kDisplayIntervalMs
-
     explicit MainWindow(QWidget *parent = nullptr);
     ~MainWindow() override;
 
@@ -149,7 +148,7 @@ public:
     QAction *recordAction() const;
     QMenu *languageMenu() const;
     QString statusText() const;
-    void refreshDisplay(); // what the display timer does
+    void refreshDisplay(); // what the display's tick does
 
 protected:
     void closeEvent(QCloseEvent *event) override;
@@ -187,7 +186,6 @@ private:
     bool m_keepSavedRobots = false; // the robots came from the command line
     bool m_addingAtStart = false;
     std::optional<std::size_t> m_historyCapacity; // for new robots too
-    QTimer m_displayTimer;
 
     BrokerActions *m_broker = nullptr;
     RoomRobots *m_room = nullptr;

@@ -65,14 +65,12 @@ struct DashboardViews {
 };
 
 // The selected robot on every view: what each shows when a robot is
-// selected, its signals while it stays selected, and what the display timer
+// selected, its signals while it stays selected, and what the display's tick
 // reads from its model (about 30 times a second, never once per frame; each
 // view repaints only when what it shows changed).
 class SelectedRobotView : public QObject {
     Q_OBJECT
 public:
-    static constexpr int kDisplayIntervalMs = 33;
-
     SelectedRobotView(RobotFleet &fleet, RoomRobots &room, const DashboardViews &views, QObject *parent = nullptr);
 
     // A robot that sends nothing is examined (asleep, wrong baud, another

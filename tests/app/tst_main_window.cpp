@@ -18,6 +18,7 @@
 #include "recording_transport.h"
 #include "robot_diagram.h"
 #include "odometry_map.h"
+#include "display_tick.h"
 #include "on_screen.h"
 #include "byte_inspector.h"
 #include "plot_stack.h"
@@ -173,9 +174,8 @@ private slots:
         // Behind the plots' tab: visible to Qt, nothing of it on screen.
         ByteInspector *inspector = window.byteInspector();
         const QAbstractItemModel *log = inspector->findChild<QAbstractItemView *>("byteLog")->model();
-        const auto *render = inspector->findChild<QTimer *>("renderTimer");
-        const auto *mapTick = window.odometryMap()->findChild<QTimer *>("displayTimer");
-        QVERIFY(render && mapTick);
+        const DisplayTick &tick = DisplayTick::instance();
+        const OdometryMap *map = window.odometryMap();
         QVERIFY(inspector->isVisible());
         QVERIFY(!isOnScreen(inspector));
         QVERIFY(!isOnScreen(window.odometryMap()));
@@ -183,24 +183,24 @@ private slots:
         const qsizetype entries = inspector->lastEntries(1000).size();
         QTRY_VERIFY_WITH_TIMEOUT(inspector->lastEntries(1000).size() > entries + 10, 10000);
         QCOMPARE(log->rowCount(), 0);
-        QVERIFY(!render->isActive());
-        QVERIFY(!mapTick->isActive());
+        QVERIFY(!tick.hasFrameFor(inspector));
+        QVERIFY(!tick.isListening(map));
 
         // Its tab comes up: it shows what it kept, and renders what comes.
         window.findChild<QDockWidget *>("inspectorDock")->raise();
         QTRY_VERIFY(isOnScreen(inspector));
         QTRY_VERIFY(log->rowCount() > 10);
-        QTRY_VERIFY(render->isActive());
+        QTRY_VERIFY(tick.hasFrameFor(inspector));
         QVERIFY(!isOnScreen(window.sensorPlots()));
 
         // Each stops at its first tick behind another tab.
         window.findChild<QDockWidget *>("mapDock")->raise();
         QTRY_VERIFY(isOnScreen(window.odometryMap()));
-        QVERIFY(mapTick->isActive());
-        QTRY_VERIFY(!render->isActive());
+        QVERIFY(tick.isListening(map));
+        QTRY_VERIFY(!tick.hasFrameFor(inspector));
         window.findChild<QDockWidget *>("plotsDock")->raise();
         QTRY_VERIFY(!isOnScreen(window.odometryMap()));
-        QTRY_VERIFY(!mapTick->isActive());
+        QTRY_VERIFY(!tick.isListening(map));
     }
 
     void modeButtonsSendExactBytes()

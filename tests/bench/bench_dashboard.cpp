@@ -27,6 +27,8 @@
 // --xvfb: runs itself again under xvfb-run on a 1600x1000 screen with the xcb
 // platform; otherwise set QT_QPA_PLATFORM (offscreen) yourself.
 #include "main_window.h"
+#include "custom_plot.h"
+#include "plot_stack.h"
 #include "robot_diagram.h"
 #include "saved_robots.h"
 
@@ -164,6 +166,23 @@ void printPaints(const PaintCounter &counter, double seconds)
     };
     printRates("timer events, by the timer's owner", counter.timers);
     printRates("queued calls, by receiver", counter.calls);
+}
+
+// How often each plot was drawn whole and in part, beside how long one of its
+// pixel columns lasts.
+void printPlotDraws(const QWidget &window, double seconds)
+{
+    std::printf("plot draws per second (whole, traces only), by plot:\n");
+    for (const PlotStack *stack : window.findChildren<PlotStack *>()) {
+        for (int i = 0; i < stack->plotCount(); ++i) {
+            const PlotStack::DrawCounts draws = stack->drawCounts(i);
+            const QCPAxis *axis = stack->plot(i)->xAxis;
+            const int width = axis->axisRect()->width();
+            std::printf("  %8.2f %8.2f  plot %d, %d px, column %.1f ms\n", double(draws.full) / seconds,
+                        double(draws.traces) / seconds, i, width,
+                        width > 0 ? 1000.0 * axis->range().size() / width : 0.0);
+        }
+    }
 }
 
 // Runs this benchmark again under xvfb-run, without --xvfb. Returns only on failure.
@@ -329,7 +348,9 @@ int main(int argc, char **argv)
     sampler.start();
     const int status = app.exec();
     window.session().closeAndWait();
-    if (paints)
+    if (paints) {
         printPaints(paintCounter, clock.elapsed() / 1000.0);
+        printPlotDraws(window, clock.elapsed() / 1000.0);
+    }
     return status;
 }

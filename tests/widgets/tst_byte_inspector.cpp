@@ -2,6 +2,7 @@
 #include "byte_inspector.h"
 #include "command_decoder.h"
 #include "display_palette.h"
+#include "display_tick.h"
 #include "typed_command_bytes.h"
 #include "pseudo_translation.h"
 #include "sensor_scenes.h"
@@ -386,7 +387,7 @@ private slots:
         inspector.appendTx(bytesOf({128}), 0);
         inspector.appendTx(bytesOf({131}), 1);
         QVERIFY(rowsOf(view) == 0); // nothing drawn yet
-        QVERIFY(inspector.findChild<QTimer *>(QStringLiteral("renderTimer"))->isActive());
+        QVERIFY(DisplayTick::instance().hasFrameFor(&inspector)); // on the display's tick
         QTRY_COMPARE(rowsOf(view), 2);
     }
 
@@ -394,12 +395,10 @@ private slots:
     {
         ByteInspector inspector;
         auto *view = byteLogOf(inspector);
-        auto *render = inspector.findChild<QTimer *>(QStringLiteral("renderTimer"));
-        QVERIFY(render);
         inspector.appendTx(bytesOf({128}), 0);
         inspector.appendTx(bytesOf({131}), 1);
         // Hidden: nothing laid out, and nothing scheduled to be.
-        QVERIFY(!render->isActive());
+        QVERIFY(!DisplayTick::instance().hasFrameFor(&inspector));
         QVERIFY(rowsOf(view) == 0);
         QCOMPARE(inspector.entryCount(), 2); // but kept
         inspector.show();
@@ -583,18 +582,16 @@ private slots:
     {
         ByteInspector inspector;
         PacketTable *table = inspector.packetTable();
-        auto *refresh = table->findChild<QTimer *>(QStringLiteral("refreshTimer"));
-        QVERIFY(refresh);
         const oi::RobotProfile &create2 = oi::profile(oi::ProfileId::Create2);
         const oi::SensorSnapshot s = sensor_scenes::decoded(create2, sensor_scenes::quietValues(create2));
         for (int i = 0; i < 100; ++i)
             inspector.addSnapshot(i * 0.015, s);
-        QVERIFY(!refresh->isActive()); // no display tick scheduled
+        QVERIFY(!DisplayTick::instance().hasFrameFor(table)); // no frame of the display's tick
         table->refresh();
         QCOMPARE(table->model()->rowCount(), 0); // and nothing kept for one
         inspector.show();
         inspector.addSnapshot(2.0, s);
-        QVERIFY(refresh->isActive());
+        QVERIFY(DisplayTick::instance().hasFrameFor(table));
         QTRY_COMPARE(table->model()->rowCount(), 52);
     }
 

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+#include "display_tick.h"
 #include "odometry_map.h"
 
 #include "command_encoder.h"
@@ -514,17 +515,16 @@ private slots:
         QVERIFY(label->text().startsWith("x 89 mm"));
     }
 
-    void hiddenMapRunsNoDisplayTimer()
+    void hiddenMapFollowsNoDisplayTick()
     {
-        auto *timer = m_map->findChild<QTimer *>();
-        QVERIFY(timer);
-        QVERIFY(timer->isActive());
+        const DisplayTick &tick = DisplayTick::instance();
+        QVERIFY(tick.isListening(m_map.get()));
         m_map->hide();
-        QVERIFY(!timer->isActive());
+        QVERIFY(!tick.isListening(m_map.get()));
         // Shown again, it catches up at once with what happened meanwhile.
         drive(*m_odometry, ProfileId::Create2, 10, 20, 20);
         m_map->show();
-        QVERIFY(timer->isActive());
+        QVERIFY(tick.isListening(m_map.get()));
         QCOMPARE(m_map->findChild<QLabel *>("poseLabel")->text(), m_map->poseText());
     }
 

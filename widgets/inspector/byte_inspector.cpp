@@ -3,6 +3,7 @@
 
 #include "byte_log_view.h"
 #include "display_palette.h"
+#include "display_tick.h"
 #include "live_label.h"
 #include "on_screen.h"
 
@@ -16,7 +17,6 @@
 #include <QLocale>
 #include <QPushButton>
 #include <QSplitter>
-#include <QTimer>
 #include <QToolButton>
 #include <QVBoxLayout>
 
@@ -34,7 +34,7 @@ std::span<const std::uint8_t> asBytes(const QByteArray &bytes)
 } // namespace
 
 ByteInspector::ByteInspector(QWidget *parent)
-    : QWidget(parent), m_log(new ByteLogModel(this)), m_renderTimer(new QTimer(this))
+    : QWidget(parent), m_log(new ByteLogModel(this))
 {
     m_pauseButton = new QToolButton(this);
     m_pauseButton->setObjectName(QStringLiteral("pauseButton"));
@@ -60,7 +60,9 @@ ByteInspector::ByteInspector(QWidget *parent)
 
     m_status = new QLabel(this);
     m_status->setObjectName(QStringLiteral("status"));
-    m_status->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    // Not selectable: its counts change ten times a second, faster than a
+    // selection could be made, and a selectable label lays out a whole text
+    // document each time it is painted.
 
     m_splitter = new QSplitter(Qt::Horizontal, this);
     m_splitter->setObjectName(QStringLiteral("splitter"));
@@ -117,17 +119,6 @@ ByteInspector::ByteInspector(QWidget *parent)
     layout->addLayout(send);
     layout->addWidget(m_rawError);
 
-    m_renderTimer->setObjectName(QStringLiteral("renderTimer"));
-    m_renderTimer->setSingleShot(true);
-    m_renderTimer->setInterval(kRenderIntervalMs);
-    connect(m_renderTimer, &QTimer::timeout, this, [this] {
-        // Behind another dock's tab: kept, not laid out, and no timer
-        // either, until it is shown or painted again.
-        if (isOnScreen(this))
-            flushView();
-        else
-            m_offScreen = true;
-    });
     showError(QString());
     retranslateUi();
 }
@@ -248,8 +239,17 @@ void ByteInspector::scheduleRender()
     // A hidden log, or one behind another dock's tab, costs nothing to keep;
     // it renders when shown. Whether it is on screen is asked once per tick,
     // not per entry: it is dear to ask.
-    if (!m_offScreen && isVisible() && !m_renderTimer->isActive())
-        m_renderTimer->start();
+    if (m_offScreen || !isVisible())
+        return;
+    // On the display's tick, with the other views.
+    DisplayTick::instance().requestFrame(this, kRenderIntervalMs, [this] {
+        // Behind another dock's tab: kept, not laid out, and no frame
+        // either, until it is shown or painted again.
+        if (isOnScreen(this))
+            flushView();
+        else
+            m_offScreen = true;
+    });
 }
 
 void ByteInspector::clear()

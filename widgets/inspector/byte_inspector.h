@@ -20,7 +20,6 @@ class QLabel;
 class QLineEdit;
 class QPushButton;
 class QSplitter;
-class QTimer;
 class QToolButton;
 class ByteLogView;
 
@@ -148,5 +147,4 @@ private:
     QPushButton *m_sendButton;
     QLabel *m_rawError;
     QString m_rejected; // the input behind the error shown
-    QTimer *m_renderTimer;
 };

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "packet_table.h"
 
+#include "display_tick.h"
 #include "on_screen.h"
 
 #include <QEvent>
@@ -10,11 +11,10 @@
 #include <QItemSelectionModel>
 #include <QPushButton>
 #include <QTableView>
-#include <QTimer>
 #include <QVBoxLayout>
 
 PacketTable::PacketTable(QWidget *parent)
-    : QWidget(parent), m_model(new PacketTableModel(this)), m_refreshTimer(new QTimer(this))
+    : QWidget(parent), m_model(new PacketTableModel(this))
 {
     m_view = new QTableView(this);
     m_view->setObjectName(QStringLiteral("packetTable"));
@@ -60,10 +60,6 @@ PacketTable::PacketTable(QWidget *parent)
     layout->addWidget(m_view, 1);
     layout->addLayout(buttons);
 
-    m_refreshTimer->setObjectName(QStringLiteral("refreshTimer"));
-    m_refreshTimer->setSingleShot(true);
-    m_refreshTimer->setInterval(kRefreshIntervalMs);
-    connect(m_refreshTimer, &QTimer::timeout, this, &PacketTable::refresh);
     updatePlotButton();
     retranslateUi();
 }
@@ -82,8 +78,7 @@ void PacketTable::addSnapshot(double seconds, const oi::SensorSnapshot &snapshot
     if (!isOnScreen(this))
         return;
     m_model->addSnapshot(seconds, snapshot);
-    if (!m_refreshTimer->isActive())
-        m_refreshTimer->start();
+    DisplayTick::instance().requestFrame(this, kRefreshIntervalMs, [this] { refresh(); });
 }
 
 void PacketTable::refresh()

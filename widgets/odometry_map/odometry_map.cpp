@@ -2,6 +2,7 @@
 #include "odometry_map.h"
 
 #include "display_palette.h"
+#include "display_tick.h"
 #include "on_screen.h"
 #include "room_edit_tool.h"
 
@@ -16,7 +17,6 @@
 #include <QPainter>
 #include <QPainterPath>
 #include <QPushButton>
-#include <QTimer>
 #include <QVBoxLayout>
 #include <QWheelEvent>
 
@@ -122,36 +122,35 @@ OdometryMap::OdometryMap(QWidget *parent) : QWidget(parent)
     layout->addStretch();
     layout->addWidget(m_poseLabel, 0, Qt::AlignLeft);
 
-    m_displayTimer = new QTimer(this);
-    m_displayTimer->setObjectName(QStringLiteral("displayTimer"));
-    m_displayTimer->setInterval(33);
-    connect(m_displayTimer, &QTimer::timeout, this, [this] {
+    retranslateUi();
+}
+
+// The map follows the display's tick only while it is on screen: a map in a
+// hidden or tabbed-away dock costs nothing, and catches up when shown (its
+// dock's tab coming up sends a show event) or painted.
+void OdometryMap::followDisplay()
+{
+    DisplayTick::instance().listen(this, [this] {
         if (!isOnScreen(this)) {
-            // Tabbed away: no ticks until it is shown or painted again.
-            m_displayTimer->stop();
+            DisplayTick::instance().stopListening(this); // tabbed away
             return;
         }
         if (m_dirty || (m_odometry && m_odometry->revision() != m_shownRevision))
             refresh();
     });
-
-    retranslateUi();
 }
 
-// The display timer runs only while the map is on screen: a map in a hidden
-// or tabbed-away dock costs no wake-ups, and catches up when shown (its
-// dock's tab coming up sends a show event) or painted.
 void OdometryMap::showEvent(QShowEvent *event)
 {
     QWidget::showEvent(event);
-    m_displayTimer->start();
+    followDisplay();
     refresh();
 }
 
 void OdometryMap::hideEvent(QHideEvent *event)
 {
     QWidget::hideEvent(event);
-    m_displayTimer->stop();
+    DisplayTick::instance().stopListening(this);
 }
 
 void OdometryMap::retranslateUi()
@@ -419,8 +418,8 @@ double OdometryMap::gridSpacingMm() const
 
 void OdometryMap::paintEvent(QPaintEvent *)
 {
-    if (!m_displayTimer->isActive())
-        m_displayTimer->start(); // on screen again, by whatever way
+    if (!DisplayTick::instance().isListening(this))
+        followDisplay(); // on screen again, by whatever way
     QPainter painter(this);
     const QRect area = mapRect();
     painter.fillRect(area, palette().base());

@@ -23,7 +23,6 @@ class RoomEditTool;
 class QLabel;
 class QMenu;
 class QPushButton;
-class QTimer;
 
 // Where the robot thinks it is: its model's odometry, drawn as a trail on a
 // millimetre grid. With virtual robots, their room and true poses can be
@@ -170,6 +169,8 @@ protected:
     void contextMenuEvent(QContextMenuEvent *event) override;
 
 private:
+    // Checks for changes on each display tick while on screen.
+    void followDisplay();
     void retranslateUi();
     QString notIdentifiedText() const;
     void updateGeometryTips();
@@ -235,7 +236,6 @@ private:
     QPushButton *m_reset = nullptr;
     QPushButton *m_edit = nullptr;
     QLabel *m_poseLabel = nullptr;
-    QTimer *m_displayTimer = nullptr;
 };
 
 Q_DECLARE_METATYPE(sim::WorldEdit)

@@ -7,13 +7,17 @@
 #include <QApplication>
 #include <QClipboard>
 #include <QFontDatabase>
+#include <QGlyphRun>
 #include <QKeyEvent>
 #include <QPainter>
+#include <QRawFont>
 #include <QScrollBar>
 #include <QStyledItemDelegate>
 #include <QTextLayout>
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <memory>
 #include <unordered_map>
 
@@ -72,10 +76,14 @@ struct LogColours {
     }
 };
 
-// Draws a row part by part, each in its colour, on one line. A row's text is
-// laid out once, when its entry first comes into sight, and drawn from that
-// layout while it stays there: each new render tick lays out only the new
-// rows, as a text document would, and never the whole log.
+// Draws a row part by part, each in its colour, on one line. A row is made
+// ready once, when its entry first comes into sight, and drawn from that
+// while it stays there: each new render tick prepares only the new rows,
+// never the whole log. Each part is a run of the fixed-pitch font's glyphs,
+// one advance apart: a character lookup each, and no shaping, which a fixed
+// pitch does not need (a third of the cost of laying the row out as text).
+// A row with a character the font lacks is laid out as text, so that Qt
+// finds it another font.
 class ByteLogDelegate : public QStyledItemDelegate {
 public:
     ByteLogDelegate(const ByteLogModel *log, QObject *parent) : QStyledItemDelegate(parent), m_log(log) {}
@@ -96,13 +104,13 @@ public:
         else if (entry % 2 == 1) // every other entry on a tinted band
             painter->fillRect(option.rect, mutableColours(option.palette).band);
 
-        std::unique_ptr<QTextLayout> uncached;
-        const QTextLayout *layout = nullptr;
+        Row uncached;
+        const Row *row = nullptr;
         if (selected) {
-            uncached = layOut(index.row(), option, width, true);
-            layout = uncached.get();
+            uncached = prepare(index.row(), option, width, true);
+            row = &uncached;
         } else {
-            // Laid out again only when what it shows changed.
+            // Made again only when what it shows changed.
             if (m_cacheFormat != m_log->formatVersion() || m_cacheWidth != width || m_cacheFont != option.font
                 || m_cachePalette != option.palette.cacheKey() || m_cache.size() > kMaxCachedRows) {
                 m_cache.clear();
@@ -111,13 +119,24 @@ public:
                 m_cacheFont = option.font;
                 m_cachePalette = option.palette.cacheKey();
             }
-            std::unique_ptr<QTextLayout> &cached = m_cache[entry];
-            if (!cached)
-                cached = layOut(index.row(), option, width, false);
-            layout = cached.get();
+            auto cached = m_cache.find(entry);
+            if (cached == m_cache.end())
+                cached = m_cache.emplace(entry, prepare(index.row(), option, width, false)).first;
+            row = &cached->second;
         }
-        const int top = option.rect.top() + (option.rect.height() - int(layout->boundingRect().height())) / 2;
-        layout->draw(painter, QPointF(option.rect.left() + kTextMargin, top));
+        const QFontMetricsF metrics(option.font);
+        const qreal top = option.rect.top() + std::floor((option.rect.height() - metrics.height()) / 2);
+        const QPointF origin(option.rect.left() + kTextMargin, top);
+        if (row->layout) {
+            row->layout->draw(painter, origin);
+        } else {
+            const QPen pen = painter->pen();
+            for (const auto &[glyphs, colour] : row->runs) {
+                painter->setPen(colour);
+                painter->drawGlyphRun(origin + QPointF(0, metrics.ascent()), glyphs);
+            }
+            painter->setPen(pen);
+        }
 
         if (option.state & QStyle::State_HasFocus) {
             QStyleOptionFocusRect focus;
@@ -135,22 +154,48 @@ private:
     // Characters of a long run of bytes kept in sight: a frame's header and first packets.
     static constexpr int kMinBytesShown = 24;
 
+    // A row ready to draw: its parts' glyph runs, or, where the font lacks a
+    // character, its text laid out.
+    struct Row {
+        std::vector<std::pair<QGlyphRun, QColor>> runs;
+        std::unique_ptr<QTextLayout> layout;
+    };
+    struct Part {
+        int start;
+        int length;
+        QColor colour;
+        bool bold = false;
+    };
+
     const LogColours &mutableColours(const QPalette &palette) const
     {
         m_colours.update(palette);
         return m_colours;
     }
 
-    std::unique_ptr<QTextLayout> layOut(int row, const QStyleOptionViewItem &option, int width, bool selected) const
+    // The fixed-pitch font's glyphs, regular and bold, for `font`.
+    const QRawFont &rawFont(const QFont &font, bool bold) const
+    {
+        if (m_rawFontOf != font) {
+            m_rawFontOf = font;
+            m_raw = QRawFont::fromFont(font);
+            QFont boldFont = font;
+            boldFont.setBold(true);
+            m_rawBold = QRawFont::fromFont(boldFont);
+        }
+        return bold ? m_rawBold : m_raw;
+    }
+
+    Row prepare(int row, const QStyleOptionViewItem &option, int width, bool selected) const
     {
         const ByteLogModel::Parts parts = m_log->parts(row);
         const LogColours &c = mutableColours(option.palette);
         const QString tag = parts.tag();
         const QString gap = ByteLogModel::kGap;
-        // Too long for the view: cut with "…"; the tooltip and a copy have it
-        // whole. Counted in characters of the fixed-pitch font, not measured:
-        // a frame's meaning runs to a thousand characters, and measuring
-        // them would cost more than drawing the row.
+        // Too long for the view: cut with "…"; the tooltip and a copy have
+        // it whole. Counted in characters of the fixed-pitch font, not
+        // measured: a frame's meaning runs to a thousand characters, and
+        // measuring them would cost more than drawing the row.
         const qreal advance = QFontMetricsF(option.font).horizontalAdvance(QLatin1Char('0'));
         const int fits = std::max(1, int(width / std::max(1.0, advance)));
         QString bytes = parts.bytes;
@@ -166,26 +211,55 @@ private:
         if (line.size() > fits)
             line = line.left(fits - 1) + QChar(0x2026);
 
-        const auto range = [&](int start, int length, const QColor &colour, bool bold = false) {
-            QTextLayout::FormatRange r;
-            r.start = start;
-            r.length = std::clamp(length, 0, std::max(0, int(line.size()) - start));
-            r.format.setForeground(selected ? option.palette.color(QPalette::HighlightedText) : colour);
-            if (bold)
-                r.format.setFontWeight(QFont::Bold);
-            return r;
+        const auto part = [&](int start, int length, const QColor &colour, bool bold = false) {
+            return Part{start, std::clamp(length, 0, std::max(0, int(line.size()) - start)),
+                        selected ? option.palette.color(QPalette::HighlightedText) : colour, bold};
         };
         const int tagAt = int(parts.time.size() + gap.size());
         const int bytesAt = tagAt + int(tag.size());
         const int meaningAt = bytesAt + int(gap.size() + bytes.size() + gap.size());
-        const QList<QTextLayout::FormatRange> formats = {
-            range(0, tagAt, c.dim),
-            range(tagAt, int(tag.size()), parts.direction == ByteLogModel::Direction::Tx ? c.tx : c.rx, true),
-            range(bytesAt, meaningAt - bytesAt, c.text),
-            range(meaningAt, int(line.size()) - meaningAt, c.meaning(parts)),
+        const std::array<Part, 4> partsOfLine = {
+            part(0, tagAt, c.dim),
+            part(tagAt, int(tag.size()), parts.direction == ByteLogModel::Direction::Tx ? c.tx : c.rx, true),
+            part(bytesAt, meaningAt - bytesAt, c.text),
+            part(meaningAt, int(line.size()) - meaningAt, c.meaning(parts)),
         };
 
-        auto layout = std::make_unique<QTextLayout>(line, option.font);
+        Row ready;
+        for (const Part &p : partsOfLine) {
+            if (p.length == 0)
+                continue;
+            const QRawFont &font = rawFont(option.font, p.bold);
+            const QList<quint32> glyphs = font.glyphIndexesForString(line.mid(p.start, p.length));
+            if (!font.isValid() || glyphs.size() != p.length || glyphs.contains(0u))
+                return {{}, layOut(line, partsOfLine, option.font)};
+            QList<QPointF> positions;
+            positions.reserve(glyphs.size());
+            for (int i = 0; i < glyphs.size(); ++i)
+                positions.append(QPointF((p.start + i) * advance, 0));
+            QGlyphRun run;
+            run.setRawFont(font);
+            run.setGlyphIndexes(glyphs);
+            run.setPositions(positions);
+            ready.runs.emplace_back(std::move(run), p.colour);
+        }
+        return ready;
+    }
+
+    static std::unique_ptr<QTextLayout> layOut(const QString &line, const std::array<Part, 4> &parts,
+                                               const QFont &font)
+    {
+        QList<QTextLayout::FormatRange> formats;
+        for (const Part &p : parts) {
+            QTextLayout::FormatRange r;
+            r.start = p.start;
+            r.length = p.length;
+            r.format.setForeground(p.colour);
+            if (p.bold)
+                r.format.setFontWeight(QFont::Bold);
+            formats.append(r);
+        }
+        auto layout = std::make_unique<QTextLayout>(line, font);
         QTextOption textOption;
         textOption.setWrapMode(QTextOption::NoWrap);
         layout->setTextOption(textOption);
@@ -199,7 +273,10 @@ private:
 
     const ByteLogModel *m_log;
     mutable LogColours m_colours;
-    mutable std::unordered_map<quint64, std::unique_ptr<QTextLayout>> m_cache;
+    mutable std::unordered_map<quint64, Row> m_cache;
+    mutable QFont m_rawFontOf;
+    mutable QRawFont m_raw;
+    mutable QRawFont m_rawBold;
     mutable quint64 m_cacheFormat = 0;
     mutable int m_cacheWidth = -1;
     mutable QFont m_cacheFont;

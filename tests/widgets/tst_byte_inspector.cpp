@@ -391,6 +391,22 @@ private slots:
         QTRY_COMPARE(rowsOf(view), 2);
     }
 
+    // The counts follow on the display's tick, not with every render, and
+    // end on the last entry's.
+    void countsShowTheLastEntries()
+    {
+        ByteInspector inspector;
+        inspector.show();
+        auto *status = inspector.findChild<QLabel *>(QStringLiteral("status"));
+        for (int i = 0; i < 5; ++i) {
+            inspector.appendTx(bytesOf({128}), i);
+            inspector.flushView();
+        }
+        QVERIFY(DisplayTick::instance().hasFrameFor(status));
+        QTRY_COMPARE(status->text(), QString("5 entries \u00b7 TX 5 B \u00b7 RX 0 B"));
+        QTRY_VERIFY(!DisplayTick::instance().hasFrameFor(status));
+    }
+
     void hiddenLogRendersWhenShown()
     {
         ByteInspector inspector;

@@ -50,6 +50,8 @@ public:
     // 10 Hz: the stream brings 67 entries a second, more than anyone reads
     // as they pass; ten updates a second keep the log live.
     static constexpr int kRenderIntervalMs = 100;
+    // The entry and byte counts above the log.
+    static constexpr int kStatusIntervalMs = 500;
 
     explicit ByteInspector(QWidget *parent = nullptr);
 

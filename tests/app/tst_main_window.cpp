@@ -183,6 +183,7 @@ private slots:
         const qsizetype entries = inspector->lastEntries(1000).size();
         QTRY_VERIFY_WITH_TIMEOUT(inspector->lastEntries(1000).size() > entries + 10, 10000);
         QCOMPARE(log->rowCount(), 0);
+        QCOMPARE(inspector->packetTable()->model()->rowCount(), 0);
         QVERIFY(!tick.hasFrameFor(inspector));
         QVERIFY(!tick.isListening(map));
 
@@ -190,6 +191,7 @@ private slots:
         window.findChild<QDockWidget *>("inspectorDock")->raise();
         QTRY_VERIFY(isOnScreen(inspector));
         QTRY_VERIFY(log->rowCount() > 10);
+        QTRY_VERIFY(inspector->packetTable()->model()->rowCount() > 10);
         QTRY_VERIFY(tick.hasFrameFor(inspector));
         QVERIFY(!isOnScreen(window.sensorPlots()));
 

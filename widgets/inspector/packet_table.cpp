@@ -74,8 +74,16 @@ void PacketTable::retranslateUi()
 
 void PacketTable::addSnapshot(double seconds, const oi::SensorSnapshot &snapshot)
 {
-    // Hidden, the table keeps nothing: shown again, it starts afresh.
-    if (!isOnScreen(this))
+    // Hidden, or behind another dock's tab, the table keeps nothing: shown
+    // again, it starts afresh. Whether it is on screen is dear to ask, so it
+    // is asked once per tick of the display, not once per frame.
+    const quint64 tick = DisplayTick::instance().tickCount();
+    if (!m_onScreenKnown || tick != m_onScreenAtTick) {
+        m_onScreenKnown = true;
+        m_onScreenAtTick = tick;
+        m_onScreen = isOnScreen(this);
+    }
+    if (!m_onScreen)
         return;
     m_model->addSnapshot(seconds, snapshot);
     DisplayTick::instance().requestFrame(this, kRefreshIntervalMs, [this] { refresh(); });
@@ -101,6 +109,7 @@ void PacketTable::updatePlotButton() { m_plotButton->setEnabled(currentPacketId(
 void PacketTable::showEvent(QShowEvent *event)
 {
     QWidget::showEvent(event);
+    m_onScreenKnown = false; // asked again at the next frame
     // The frames missed while hidden would make the next rate too low.
     m_model->restartRates();
 }

@@ -45,4 +45,8 @@ private:
     PacketTableModel *m_model;
     QTableView *m_view;
     QPushButton *m_plotButton;
+    // Whether it was on screen at the display's tick m_onScreenAtTick.
+    bool m_onScreen = false;
+    quint64 m_onScreenAtTick = 0;
+    bool m_onScreenKnown = false;
 };

@@ -12,16 +12,13 @@ namespace sim {
 // Runs a VirtualRobot in real time on the thread it lives on: its clock
 // advances by the time that really passed, the thread waking when the next
 // stream frame is due, and whatever the robot says is emitted as bytes.
-// The robots on one thread wake it together (RobotTicker in the .cpp), on a
-// grid of one stream period: at the real rate, a frame goes out at most
-// 15 ms after it was due, each robot's frames still 15 ms apart, and thirty
-// robots wake their thread 67 times a second, as one robot does, not 2000.
-// A real robot's frames come no sooner: a USB serial adapter holds bytes
-// for its latency timer, 16 ms by default.
+// The robots on one thread wake it together (RobotTicker in the .cpp): at
+// the real rate, a frame goes out at most kTickGridMs after it was due, so
+// thirty robots wake their thread 200 times a second, not 2000.
 class RealTimeRobot : public QObject {
     Q_OBJECT
 public:
-    static constexpr int kTickGridMs = int(VirtualRobot::kStreamPeriod.count() / 1000);
+    static constexpr int kTickGridMs = 5;
 
     explicit RealTimeRobot(const oi::RobotProfile &profile, std::uint32_t seed = 1,
                            QObject *parent = nullptr);

@@ -12,12 +12,17 @@
 namespace sim {
 
 namespace {
-// The robot wakes when its next stream frame is due, and at least this often.
+// The robot wakes when its next stream frame is due, and at least this
+// often; with a faster clock, at most once a millisecond.
 constexpr qint64 kMaxTickNs = 15'000'000;
 constexpr qint64 kMinTickNs = 1'000'000;
 // After the process was stopped or starved for a while, the robot catches up
 // at most this much at once, rather than sending a burst of old frames.
 constexpr qint64 kMaxCatchUpNs = 500'000'000;
+// A robot whose frame is due this little after a slot of the grid ticks in
+// that slot: its clock and the steady clock are read a few hundred
+// nanoseconds apart, and its time goes forward in whole microseconds.
+constexpr qint64 kOnSlotNs = 100'000;
 
 qint64 steadyNs()
 {
@@ -40,11 +45,12 @@ public:
         return *byThread.localData();
     }
 
-    // `robot` ticks at the first slot of `gridNs` at or after `dueNs`.
+    // `robot` ticks at the first slot of `gridNs` at or after `dueNs`, or
+    // in the slot just before it if that is at most kOnSlotNs earlier.
     void wakeAt(RealTimeRobot *robot, qint64 dueNs, qint64 gridNs)
     {
         forget(robot);
-        const qint64 slotNs = (dueNs + gridNs - 1) / gridNs * gridNs;
+        const qint64 slotNs = (dueNs - kOnSlotNs + gridNs - 1) / gridNs * gridNs;
         m_due.push_back({robot, slotNs});
         if (!m_timer.isActive() || slotNs < m_armedNs)
             arm(slotNs);
@@ -115,7 +121,9 @@ void RealTimeRobot::start()
     if (m_running)
         return;
     m_clock.start();
-    m_lastNs = 0;
+    // The robot's time starts at the last slot of the grid, so that its
+    // frames, due every stream period of its time, fall due on the slots.
+    m_lastNs = -(steadyNs() % gridNs());
     m_running = true;
     tick();
 }
@@ -153,11 +161,18 @@ void RealTimeRobot::setModemLine(oi::BrcLine lines, bool asserted)
     m_robot.setModemLine(lines, asserted);
 }
 
+qint64 RealTimeRobot::gridNs() const
+{
+    return m_timeScale == 1 ? qint64(kTickGridMs) * 1'000'000 : kMinTickNs;
+}
+
 void RealTimeRobot::tick()
 {
     if (m_clock.isValid()) {
         const qint64 nowNs = m_clock.nsecsElapsed();
-        const qint64 elapsedNs = std::min(nowNs - m_lastNs, kMaxCatchUpNs);
+        qint64 elapsedNs = nowNs - m_lastNs;
+        if (elapsedNs > kMaxCatchUpNs) // whole slots dropped: the robot stays on the grid
+            elapsedNs -= (elapsedNs - kMaxCatchUpNs + gridNs() - 1) / gridNs() * gridNs();
         // Whole microseconds go to the robot; the rest waits for the next tick.
         const qint64 us = elapsedNs / 1000;
         m_lastNs = nowNs - (elapsedNs - us * 1000);
@@ -170,8 +185,10 @@ void RealTimeRobot::tick()
         // rather than waking every few milliseconds. A faster clock keeps
         // the fine grid: its frames come many to a real millisecond.
         const qint64 untilNs = qint64(std::ceil(double(m_robot.untilNextFrame().count()) * 1000.0 / m_timeScale));
-        const qint64 gridNs = m_timeScale == 1 ? qint64(kTickGridMs) * 1'000'000 : kMinTickNs;
-        RobotTicker::here().wakeAt(this, steadyNs() + std::clamp(untilNs, kMinTickNs, kMaxTickNs), gridNs);
+        // At the real rate a frame due on the next slot ticks there even when
+        // this tick came just before it (from a write), so no floor.
+        const qint64 minNs = m_timeScale == 1 ? 0 : kMinTickNs;
+        RobotTicker::here().wakeAt(this, steadyNs() + std::clamp(untilNs, minNs, kMaxTickNs), gridNs());
     }
     if (!out.empty())
         emit bytesOut(QByteArray(reinterpret_cast<const char *>(out.data()), qsizetype(out.size())));

@@ -12,13 +12,15 @@ namespace sim {
 // Runs a VirtualRobot in real time on the thread it lives on: its clock
 // advances by the time that really passed, the thread waking when the next
 // stream frame is due, and whatever the robot says is emitted as bytes.
-// The robots on one thread wake it together (RobotTicker in the .cpp): at
-// the real rate, a frame goes out at most kTickGridMs after it was due, so
-// thirty robots wake their thread 200 times a second, not 2000.
+// The robots on one thread wake it together (RobotTicker in the .cpp), on a
+// grid of one stream period on the steady clock. At the real rate each
+// robot's clock starts on a slot of that grid, so its frames fall due on the
+// slots and go out one a tick, 15 ms apart: thirty robots wake their thread
+// 67 times a second, as one robot does, not 2000.
 class RealTimeRobot : public QObject {
     Q_OBJECT
 public:
-    static constexpr int kTickGridMs = 5;
+    static constexpr int kTickGridMs = int(VirtualRobot::kStreamPeriod.count() / 1000);
 
     explicit RealTimeRobot(const oi::RobotProfile &profile, std::uint32_t seed = 1,
                            QObject *parent = nullptr);
@@ -52,6 +54,7 @@ signals:
 private:
     friend class RobotTicker;
     void tick();
+    qint64 gridNs() const;
 
     VirtualRobot m_robot;
     QElapsedTimer m_clock;

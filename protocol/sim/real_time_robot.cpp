@@ -19,10 +19,6 @@ constexpr qint64 kMinTickNs = 1'000'000;
 // After the process was stopped or starved for a while, the robot catches up
 // at most this much at once, rather than sending a burst of old frames.
 constexpr qint64 kMaxCatchUpNs = 500'000'000;
-// A robot whose frame is due this little after a slot of the grid ticks in
-// that slot: its clock and the steady clock are read a few hundred
-// nanoseconds apart, and its time goes forward in whole microseconds.
-constexpr qint64 kOnSlotNs = 100'000;
 
 qint64 steadyNs()
 {
@@ -45,12 +41,11 @@ public:
         return *byThread.localData();
     }
 
-    // `robot` ticks at the first slot of `gridNs` at or after `dueNs`, or
-    // in the slot just before it if that is at most kOnSlotNs earlier.
+    // `robot` ticks at the first slot of `gridNs` at or after `dueNs`.
     void wakeAt(RealTimeRobot *robot, qint64 dueNs, qint64 gridNs)
     {
         forget(robot);
-        const qint64 slotNs = (dueNs - kOnSlotNs + gridNs - 1) / gridNs * gridNs;
+        const qint64 slotNs = (dueNs + gridNs - 1) / gridNs * gridNs;
         m_due.push_back({robot, slotNs});
         if (!m_timer.isActive() || slotNs < m_armedNs)
             arm(slotNs);
@@ -120,10 +115,11 @@ void RealTimeRobot::start()
 {
     if (m_running)
         return;
-    m_clock.start();
     // The robot's time starts at the last slot of the grid, so that its
     // frames, due every stream period of its time, fall due on the slots.
-    m_lastNs = -(steadyNs() % gridNs());
+    m_lastNs = steadyNs();
+    m_lastNs -= m_lastNs % gridNs();
+    m_clockRunning = true;
     m_running = true;
     tick();
 }
@@ -168,8 +164,8 @@ qint64 RealTimeRobot::gridNs() const
 
 void RealTimeRobot::tick()
 {
-    if (m_clock.isValid()) {
-        const qint64 nowNs = m_clock.nsecsElapsed();
+    if (m_clockRunning) {
+        const qint64 nowNs = steadyNs();
         qint64 elapsedNs = nowNs - m_lastNs;
         if (elapsedNs > kMaxCatchUpNs) // whole slots dropped: the robot stays on the grid
             elapsedNs -= (elapsedNs - kMaxCatchUpNs + gridNs() - 1) / gridNs() * gridNs();
@@ -185,10 +181,11 @@ void RealTimeRobot::tick()
         // rather than waking every few milliseconds. A faster clock keeps
         // the fine grid: its frames come many to a real millisecond.
         const qint64 untilNs = qint64(std::ceil(double(m_robot.untilNextFrame().count()) * 1000.0 / m_timeScale));
-        // At the real rate a frame due on the next slot ticks there even when
-        // this tick came just before it (from a write), so no floor.
+        // The robot's time is the steady clock's at m_lastNs, so at the real
+        // rate a frame due on a slot is woken for on that slot, even by a
+        // tick just before it (from a write): no floor there.
         const qint64 minNs = m_timeScale == 1 ? 0 : kMinTickNs;
-        RobotTicker::here().wakeAt(this, steadyNs() + std::clamp(untilNs, minNs, kMaxTickNs), gridNs());
+        RobotTicker::here().wakeAt(this, m_lastNs + std::clamp(untilNs, minNs, kMaxTickNs), gridNs());
     }
     if (!out.empty())
         emit bytesOut(QByteArray(reinterpret_cast<const char *>(out.data()), qsizetype(out.size())));

@@ -4,7 +4,6 @@
 #include "virtual_robot.h"
 
 #include <QByteArray>
-#include <QElapsedTimer>
 #include <QObject>
 
 namespace sim {
@@ -57,8 +56,8 @@ private:
     qint64 gridNs() const;
 
     VirtualRobot m_robot;
-    QElapsedTimer m_clock;
-    qint64 m_lastNs = 0;
+    bool m_clockRunning = false;
+    qint64 m_lastNs = 0; // the steady clock's time the robot's clock has reached
     bool m_running = false;
     double m_timeScale = 1;
 };

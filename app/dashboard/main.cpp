@@ -7,6 +7,7 @@
 #include "screen_fit.h"
 #include "settings_file.h"
 #include "termination_signals.h"
+#include "x11_images.h"
 
 #include <QApplication>
 #include <QIcon>
@@ -48,6 +49,7 @@ int main(int argc, char **argv)
     // From here the application's translator speaks, and follows the View menu.
     DashboardCommandLine::setTranslator(nullptr);
 
+    sendX11ImagesThroughTheSocket();
     QApplication app(argc, argv);
     SettingsFile::checkAtStart(); // a damaged or foreign settings file is kept aside, not read
     QApplication::setApplicationVersion(ROOMBA_VERSION);

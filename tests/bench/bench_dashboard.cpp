@@ -31,6 +31,7 @@
 #include "plot_stack.h"
 #include "robot_diagram.h"
 #include "saved_robots.h"
+#include "x11_images.h"
 
 #include <QApplication>
 #include <QDockWidget>
@@ -224,6 +225,7 @@ int main(int argc, char **argv)
 
     QElapsedTimer clock;
     clock.start();
+    sendX11ImagesThroughTheSocket(); // as roomba-dashboard's main() does
     QApplication app(argc, argv);
     QApplication::setStyle(QStyleFactory::create("Fusion"));
     QStandardPaths::setTestModeEnabled(true);

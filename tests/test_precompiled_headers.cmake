@@ -1,23 +1,26 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 # One precompiled header for many tests: Qt Test and the Qt headers most tests
 # include, compiled once per family and reused by every test of it. GCC
-# refuses a precompiled header made with other predefined macros (and
-# -Winvalid-pch says so), and Qt Test's headers read QT_WIDGETS_LIB and the
-# like, so a family is the tests whose linked libraries bring the same
-# definitions and options; its header is compiled by a small program linking
-# those same libraries.
+# refuses a precompiled header made with other predefined macros than a unit
+# has, if the header reads them (-Winvalid-pch says so). Of the QT_<MODULE>_LIB
+# definitions the Qt libraries bring, Qt Test's headers read only those of
+# Gui, Widgets and Network, and glibc's read _REENTRANT (from SDL); no header
+# in it reads the others. So a family is the tests that bring the same of
+# those, and its header is compiled by a small program linking only the Qt
+# modules they name: a test may bring more definitions than its header was
+# made with, never fewer.
 
 set(ROOMBA_TEST_PCH_CORE <QTest> <QSignalSpy> <QTemporaryDir> ${ROOMBA_QT_CORE_HEADERS})
 set(ROOMBA_TEST_PCH_WIDGETS <QTest> <QSignalSpy> <QTemporaryDir> ${ROOMBA_QT_WIDGETS_HEADERS})
 
 # What the libraries `target` links bring to its compile line, directly or
-# through other libraries: their interface definitions and options, as one
-# string; `widgets` tells whether Qt Widgets is among them.
-function(roomba_test_family target out widgets)
+# through other libraries, that the precompiled header reads: their interface
+# definitions and options but the QT_<MODULE>_LIB ones it does not read, as a
+# list in `out`.
+function(roomba_test_family target out)
     set(seen "")
     set(queue ${target})
     set(brought "")
-    set(${widgets} OFF PARENT_SCOPE)
     while(queue)
         list(POP_FRONT queue item)
         if(item MATCHES "^\\$<LINK_ONLY:(.+)>$")
@@ -34,9 +37,6 @@ function(roomba_test_family target out widgets)
             continue()
         endif()
         list(APPEND seen ${item})
-        if(item STREQUAL "Qt6::Widgets")
-            set(${widgets} ON PARENT_SCOPE)
-        endif()
         foreach(property IN ITEMS INTERFACE_COMPILE_DEFINITIONS INTERFACE_COMPILE_OPTIONS)
             get_target_property(values ${item} ${property})
             if(values)
@@ -56,10 +56,16 @@ function(roomba_test_family target out widgets)
             endif()
         endforeach()
     endwhile()
+    set(all ${brought})
+    list(FILTER brought EXCLUDE REGEX "^QT_[A-Z0-9_]+_LIB$")
+    foreach(module IN ITEMS GUI WIDGETS NETWORK)
+        if("QT_${module}_LIB" IN_LIST all)
+            list(APPEND brought QT_${module}_LIB)
+        endif()
+    endforeach()
     list(REMOVE_DUPLICATES brought)
     list(SORT brought)
-    string(MD5 key "${brought}")
-    set(${out} ${key} PARENT_SCOPE)
+    set(${out} "${brought}" PARENT_SCOPE)
 endfunction()
 
 # Gives every test in `tests` the precompiled header of its family; the first
@@ -74,19 +80,36 @@ function(roomba_share_test_pch tests)
         # are tested by Qt Test's headers; no test looks for data by them
         # (QFINDTESTDATA), so they are left undefined.
         target_compile_options(${test} PRIVATE -UQT_TESTCASE_SOURCEDIR -UQT_TESTCASE_BUILDDIR)
-        roomba_test_family(${test} key widgets)
+        roomba_test_family(${test} family)
+        string(MD5 key "${family}")
         list(FIND keys ${key} index)
         if(index LESS 0)
             list(LENGTH keys index)
             list(APPEND keys ${key})
             set(donor roomba_test_pch_${index})
             add_executable(${donor} EXCLUDE_FROM_ALL ${PROJECT_SOURCE_DIR}/tests/common/pch_donor.cpp)
-            get_target_property(libraries ${test} LINK_LIBRARIES)
-            target_link_libraries(${donor} PRIVATE ${libraries})
+            set(modules Qt6::Test)
+            foreach(module IN ITEMS Network Gui Widgets)
+                string(TOUPPER ${module} upper)
+                if("QT_${upper}_LIB" IN_LIST family)
+                    list(APPEND modules Qt6::${module})
+                endif()
+            endforeach()
+            target_link_libraries(${donor} PRIVATE ${modules})
+            # What else the family brings (SDL's -D_REENTRANT), as it came.
+            set(rest ${family})
+            list(FILTER rest EXCLUDE REGEX "QT_")
+            foreach(item IN LISTS rest)
+                if(item MATCHES "^-")
+                    target_compile_options(${donor} PRIVATE ${item})
+                else()
+                    target_compile_definitions(${donor} PRIVATE ${item})
+                endif()
+            endforeach()
             target_compile_options(${donor} PRIVATE ${ROOMBA_TEST_COMPILE_OPTIONS} -UQT_TESTCASE_SOURCEDIR
                                                     -UQT_TESTCASE_BUILDDIR)
             set_target_properties(${donor} PROPERTIES AUTOMOC OFF AUTOUIC OFF AUTORCC OFF)
-            if(widgets)
+            if("QT_WIDGETS_LIB" IN_LIST family)
                 target_precompile_headers(${donor} PRIVATE ${ROOMBA_TEST_PCH_WIDGETS})
             else()
                 target_precompile_headers(${donor} PRIVATE ${ROOMBA_TEST_PCH_CORE})

@@ -124,7 +124,7 @@ private slots:
         rig.session.startRecording(path);
         rig.values.set(7, 0x03);
         QTRY_VERIFY_WITH_TIMEOUT(rig.session.latest().raw(7) == 0x03, 5000);
-        const int seen = rig.session.snapshotCount();
+        const quint64 seen = rig.session.snapshotCount();
         QTRY_VERIFY_WITH_TIMEOUT(rig.session.snapshotCount() > seen + 2, 5000);
         QSignalSpy status(&rig.session, &RobotSession::recordingStatus);
         rig.session.stopRecording();

@@ -45,7 +45,7 @@ python=/usr/bin/python3
 # The benchmarks are built only when asked for: turn them on in the build
 # directory and build the four this table runs (quick when they are current).
 bench="$build/tests/bench"
-benchmarks=(bench_dashboard bench_recording bench_history_memory bench_teleop_latency)
+benchmarks=(bench_dashboard bench_recording bench_history_memory bench_teleop_latency bench_wake_cost)
 generator=()
 [ -f "$build/CMakeCache.txt" ] || generator=(-G Ninja)
 cmake -S . -B "$build" "${generator[@]}" -DROOMBA_BUILD_BENCHMARKS=ON > /dev/null
@@ -59,7 +59,7 @@ field() { # field FILE REGEX: the first capture group of the last matching line
 }
 
 echo "Running: one robot (default docks, then every dock), 30 robots with the teleop benchmark beside,"
-echo "the recording and history benchmarks; about $((seconds * 3 / 60 + 3)) minutes."
+echo "the recording, history and wake-up benchmarks; about $((seconds * 3 / 60 + 4)) minutes."
 
 "$bench/bench_dashboard" --xvfb --seconds "$seconds" > "$log/one.txt"
 "$bench/bench_dashboard" --xvfb --seconds "$seconds" --every-dock > "$log/every.txt"
@@ -73,6 +73,7 @@ wait "$fleet_pid"
 QT_QPA_PLATFORM=offscreen "$bench/bench_teleop_latency" > "$log/teleop_quiet.txt"
 
 "$bench/bench_recording" > "$log/recording.txt"
+"$bench/bench_wake_cost" > "$log/wake.txt"
 "$bench/bench_history_memory" --minutes 60 --robots 30 > "$log/history.txt"
 
 cpu_one=$(field "$log/one.txt" '^result:.* cpu ([0-9.]+) %.*')
@@ -94,6 +95,12 @@ figures=(cpu_one="$cpu_one" cpu_every="$cpu_every" cpu_fleet="$cpu_fleet" rss_fl
 load=$(cut -d' ' -f1-3 /proc/loadavg)
 echo
 echo "Figures after ${seconds} s runs under Xvfb 1600x1000; load average $load (30 robots: histories ${history30} MiB, RSS ${history30_rss} MiB)"
+# The machine's floor: one robot wakes the robots' thread 66.7 times a
+# second and the window's 30 times, whatever each wake-up then does.
+wake_bare=$(field "$log/wake.txt" '^result: wake-up ([0-9.]+) us bare.*')
+wake_qt=$(field "$log/wake.txt" '^result: .* ([0-9.]+) us in a Qt event loop.*')
+echo "A wake-up costs ${wake_bare} us of CPU here (${wake_qt} us in a Qt event loop): one robot's ~97 a second" \
+    "are $("$python" -c "print(f'{96.7 * $wake_qt / 1e4:.2f}')") % of a core before any work"
 if [ "$keep" = 1 ]; then
     "$python" tests/bench/perf_budget.py keep tests/bench/perf_budget.json README.md "${figures[@]}" \
         --date "$(date -u +%Y-%m-%d)" --commit "$(git rev-parse --short HEAD 2>/dev/null || echo '?')" \

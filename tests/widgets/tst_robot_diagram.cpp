@@ -74,6 +74,19 @@ private slots:
         QVERIFY(w.sizeHint().height() >= w.minimumSizeHint().height());
     }
 
+    void shortChipsPutTheirCaptionsBesideTheirValues()
+    {
+        RobotDiagram w;
+        // The diagram's dock in a 1280×720 window: the chips' rows are too
+        // short for a caption above its value without clipping the value's
+        // descenders ("Red Buoy", "not moving").
+        w.resize(470, 260);
+        QVERIFY(w.chipCaptionsBesideValues());
+        // In a 1920×1080 window there is room for both lines.
+        w.resize(600, 430);
+        QVERIFY(!w.chipCaptionsBesideValues());
+    }
+
     void drawingKeepsItsAspectAndScales()
     {
         RobotDiagram w;

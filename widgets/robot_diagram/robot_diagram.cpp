@@ -756,6 +756,20 @@ bool RobotDiagram::event(QEvent *event)
     return QWidget::event(event);
 }
 
+bool RobotDiagram::captionBesideValue(const QRectF &textArea) const
+{
+    // Too short for the caption's line above the value's (descenders
+    // included), or for two lines of the least readable size.
+    const qreal stackedHeight = captionSize() * 1.25 + QFontMetricsF(sceneFont(chipRowHeight() * 0.44)).height();
+    return textArea.height() * sceneScale() < 2.6 * m_leastTextPixels || stackedHeight > textArea.height();
+}
+
+bool RobotDiagram::chipCaptionsBesideValues() const
+{
+    const auto chips = placedChips();
+    return !chips.isEmpty() && captionBesideValue(chipTextArea(chips.first().first));
+}
+
 void RobotDiagram::paintChips(QPainter &p) const
 {
     const qreal rowHeight = chipRowHeight();
@@ -767,9 +781,8 @@ void RobotDiagram::paintChips(QPainter &p) const
         p.drawRoundedRect(r, 14, 14);
 
         QColor text = textColour(chip.state);
-        const QRectF inner = r.adjusted(14, 4, -14, -4);
-        if (inner.height() * sceneScale() < 2.6 * m_leastTextPixels) {
-            // Too short for a caption above its value at the least size: side by side.
+        const QRectF inner = chipTextArea(r);
+        if (captionBesideValue(inner)) {
             QFont bold = sceneFont(captionSize);
             const QString value = QFontMetricsF(bold).horizontalAdvance(chip.caption + QStringLiteral("  ") + chip.value)
                                           <= inner.width() || chip.shortValue.isEmpty()

@@ -66,6 +66,9 @@ public:
 
     // What the status chips say, e.g. "Omni: Forward", for tests.
     QStringList statusTexts() const;
+    // Whether the chips put each caption beside its value, as where they
+    // are too short for the two lines (a 1280×720 window).
+    bool chipCaptionsBesideValues() const;
 
 protected:
     bool event(QEvent *event) override;
@@ -93,6 +96,9 @@ private:
     QList<QList<Chip>> chipRows() const;
     qreal chipRowHeight() const;
     QList<std::pair<QRectF, Chip>> placedChips() const; // in scene units
+    // A chip's text area: the chip less its margins (scene units).
+    static QRectF chipTextArea(const QRectF &chip) { return chip.adjusted(14, 4, -14, -4); }
+    bool captionBesideValue(const QRectF &textArea) const;
 
     QColor fill(display::State state) const;
     QColor textColour(display::State state) const;

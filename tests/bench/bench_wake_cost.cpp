@@ -37,11 +37,14 @@ double threadCpuSeconds()
 struct Cost {
     double cpuSeconds = 0;
     long wakes = 0;
+    double usPerWake() const { return wakes ? cpuSeconds * 1e6 / double(wakes) : 0; }
 };
+
+long wakesIn(double seconds) { return long(seconds * 1e9 / double(kPeriodNs)); }
 
 Cost bareWakes(double seconds)
 {
-    const long wakes = long(seconds * 1e9 / double(kPeriodNs));
+    const long wakes = wakesIn(seconds);
     const double before = threadCpuSeconds();
     timespec next{};
     clock_gettime(CLOCK_MONOTONIC, &next);
@@ -69,7 +72,7 @@ Cost qtWakes(double seconds)
         [&] {
             auto *timer = new QTimer(&home);
             timer->setTimerType(Qt::PreciseTimer);
-            const long wakes = long(seconds * 1e9 / double(kPeriodNs));
+            const long wakes = wakesIn(seconds);
             const double before = threadCpuSeconds();
             QObject::connect(timer, &QTimer::timeout, &home, [&cost, timer, wakes, before] {
                 if (++cost.wakes < wakes)
@@ -87,10 +90,9 @@ Cost qtWakes(double seconds)
 
 void print(const char *name, const Cost &cost)
 {
-    const double perWakeUs = cost.wakes ? cost.cpuSeconds * 1e6 / double(cost.wakes) : 0;
-    const double percent = perWakeUs / (double(kPeriodNs) / 1e3) * 100;
+    const double percent = cost.usPerWake() / (double(kPeriodNs) / 1e3) * 100;
     std::printf("%-6s %ld wake-ups, %.1f us of CPU each: %.2f %% of a core at one every 15 ms\n", name, cost.wakes,
-                perWakeUs, percent);
+                cost.usPerWake(), percent);
 }
 
 } // namespace
@@ -116,7 +118,6 @@ int main(int argc, char **argv)
     const Cost qt = qtWakes(seconds);
     print("bare", bare);
     print("Qt", qt);
-    const auto us = [](const Cost &c) { return c.wakes ? c.cpuSeconds * 1e6 / double(c.wakes) : 0; };
-    std::printf("result: wake-up %.1f us bare, %.1f us in a Qt event loop\n", us(bare), us(qt));
+    std::printf("result: wake-up %.1f us bare, %.1f us in a Qt event loop\n", bare.usPerWake(), qt.usPerWake());
     return 0;
 }

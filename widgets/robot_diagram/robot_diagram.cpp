@@ -756,18 +756,15 @@ bool RobotDiagram::event(QEvent *event)
     return QWidget::event(event);
 }
 
-bool RobotDiagram::captionBesideValue(const QRectF &textArea) const
-{
-    // Too short for the caption's line above the value's (descenders
-    // included), or for two lines of the least readable size.
-    const qreal stackedHeight = captionSize() * 1.25 + QFontMetricsF(sceneFont(chipRowHeight() * 0.44)).height();
-    return textArea.height() * sceneScale() < 2.6 * m_leastTextPixels || stackedHeight > textArea.height();
-}
-
 bool RobotDiagram::chipCaptionsBesideValues() const
 {
-    const auto chips = placedChips();
-    return !chips.isEmpty() && captionBesideValue(chipTextArea(chips.first().first));
+    // Every chip is a row high. Too short for the caption's line above the
+    // value's (descenders included), or for two lines of the least readable
+    // size: side by side.
+    const qreal rowHeight = chipRowHeight();
+    const qreal textHeight = chipTextArea(QRectF(0, 0, 0, rowHeight)).height();
+    const qreal stackedHeight = captionSize() * 1.25 + QFontMetricsF(sceneFont(rowHeight * 0.44)).height();
+    return textHeight * sceneScale() < 2.6 * m_leastTextPixels || stackedHeight > textHeight;
 }
 
 void RobotDiagram::paintChips(QPainter &p) const
@@ -775,6 +772,7 @@ void RobotDiagram::paintChips(QPainter &p) const
     const qreal rowHeight = chipRowHeight();
     const qreal captionSize = this->captionSize();
     const QFont captionFont = sceneFont(captionSize, false);
+    const bool besideValues = chipCaptionsBesideValues();
     for (const auto &[r, chip] : placedChips()) {
         p.setPen(QPen(inkColour(), 2));
         p.setBrush(fill(chip.state));
@@ -782,7 +780,7 @@ void RobotDiagram::paintChips(QPainter &p) const
 
         QColor text = textColour(chip.state);
         const QRectF inner = chipTextArea(r);
-        if (captionBesideValue(inner)) {
+        if (besideValues) {
             QFont bold = sceneFont(captionSize);
             const QString value = QFontMetricsF(bold).horizontalAdvance(chip.caption + QStringLiteral("  ") + chip.value)
                                           <= inner.width() || chip.shortValue.isEmpty()

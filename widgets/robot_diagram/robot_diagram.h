@@ -98,7 +98,6 @@ private:
     QList<std::pair<QRectF, Chip>> placedChips() const; // in scene units
     // A chip's text area: the chip less its margins (scene units).
     static QRectF chipTextArea(const QRectF &chip) { return chip.adjusted(14, 4, -14, -4); }
-    bool captionBesideValue(const QRectF &textArea) const;
 
     QColor fill(display::State state) const;
     QColor textColour(display::State state) const;

@@ -782,15 +782,18 @@ void RobotDiagram::paintChips(QPainter &p) const
         const QRectF inner = chipTextArea(r);
         if (besideValues) {
             QFont bold = sceneFont(captionSize);
-            const QString value = QFontMetricsF(bold).horizontalAdvance(chip.caption + QStringLiteral("  ") + chip.value)
-                                          <= inner.width() || chip.shortValue.isEmpty()
-                                      ? chip.value
-                                      : chip.shortValue;
-            const qreal valueWidth = std::min(QFontMetricsF(bold).horizontalAdvance(value), inner.width() * 0.6);
+            const QFontMetricsF boldMetrics(bold);
+            // The whole value where it fits beside the caption in its share
+            // of the chip, else its short form ("Red + Green"), else elided.
+            const bool wholeFits =
+                boldMetrics.horizontalAdvance(chip.caption + QStringLiteral("  ") + chip.value) <= inner.width()
+                && boldMetrics.horizontalAdvance(chip.value) <= inner.width() * 0.6;
+            const QString value = wholeFits || chip.shortValue.isEmpty() ? chip.value : chip.shortValue;
+            const qreal valueWidth = std::min(boldMetrics.horizontalAdvance(value), inner.width() * 0.6);
             p.setPen(text);
             p.setFont(bold);
             p.drawText(inner, Qt::AlignRight | Qt::AlignVCenter,
-                       QFontMetricsF(bold).elidedText(value, Qt::ElideRight, valueWidth));
+                       boldMetrics.elidedText(value, Qt::ElideRight, valueWidth));
             text.setAlphaF(0.8);
             p.setPen(text);
             p.setFont(captionFont);

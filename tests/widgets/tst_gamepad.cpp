@@ -8,6 +8,7 @@
 #include <SDL.h>
 
 #include <QDir>
+#include <QFile>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
@@ -372,6 +373,52 @@ private slots:
         QCOMPARE(panel.commandText(), QStringLiteral("Stop: Drive 0 mm/s"));
         input.poll();
         QCOMPARE(motion.count(), 2);
+    }
+
+    // Without a pad nothing polls SDL: the device folders are watched, and a
+    // node appearing there brings the pad in.
+    void noPadWaitsOnTheDeviceFolders()
+    {
+        QTemporaryDir devices;
+        QVERIFY(devices.isValid());
+        GamepadInput input;
+        input.setDeviceFolders({devices.path()});
+        QCOMPARE(input.pollIntervalMs(), 0);
+
+        VirtualPad pad("Plugged Pad");
+        QFile node(devices.filePath(QStringLiteral("event7")));
+        QVERIFY(node.open(QIODevice::WriteOnly));
+        QTRY_VERIFY(input.hasGamepad());
+        QCOMPARE(input.gamepadName(), QStringLiteral("Plugged Pad"));
+        QCOMPARE(input.pollIntervalMs(), 10);
+
+        pad.detach();
+        QTRY_VERIFY(!input.hasGamepad()); // seen by the 10 ms poll
+        QCOMPARE(input.pollIntervalMs(), 0);
+    }
+
+    // A node without a pad (a serial adapter, a pad udev is still setting up)
+    // polls SDL for a while, then waits again.
+    void aDeviceFolderChangePollsForAWhile()
+    {
+        QTemporaryDir devices;
+        GamepadInput input;
+        input.setDeviceFolders({devices.path()});
+        QFile node(devices.filePath(QStringLiteral("ttyUSB0")));
+        QVERIFY(node.open(QIODevice::WriteOnly));
+        QTRY_COMPARE(input.pollIntervalMs(), 250);
+        QVERIFY(!input.hasGamepad());
+        QTRY_COMPARE_WITH_TIMEOUT(input.pollIntervalMs(), 0, 10000);
+    }
+
+    // Where no folder can be watched, SDL is polled as before.
+    void unwatchableFoldersFallBackToPolling()
+    {
+        GamepadInput input;
+        input.setDeviceFolders({QStringLiteral("/no/such/folder")});
+        QCOMPARE(input.pollIntervalMs(), 250);
+        input.setDeviceFolders({});
+        QCOMPARE(input.pollIntervalMs(), 250);
     }
 
     void translatesOnTheSpot()

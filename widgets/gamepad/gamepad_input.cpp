@@ -3,6 +3,8 @@
 
 #include <SDL.h>
 
+#include <QDir>
+#include <QFileSystemWatcher>
 #include <QTimer>
 
 #include <algorithm>
@@ -12,8 +14,11 @@ namespace {
 
 constexpr int kPollIntervalMs = 10;
 // Without a pad, polling only notices one plugged in: a quarter of a second
-// is soon enough, and costs the idle dashboard 4 wake-ups a second, not 100.
+// is soon enough.
 constexpr int kNoPadPollIntervalMs = 250;
+// A pad's node appears before udev has finished with it and told SDL: after
+// a device folder changes, SDL is polled this long before waiting again.
+constexpr qint64 kDeviceSettleMs = 2000;
 
 // Starts SDL's game-controller support once for the whole program; the
 // answer is an error message, empty on success.
@@ -73,9 +78,75 @@ void GamepadInput::startReading(const QString &error)
     m_reading = true;
     openFirstGamepad();
     m_timer = new QTimer(this);
-    m_timer->setInterval(m_controller ? kPollIntervalMs : kNoPadPollIntervalMs);
     connect(m_timer, &QTimer::timeout, this, &GamepadInput::poll);
-    m_timer->start();
+    watchDeviceFolders();
+}
+
+QStringList GamepadInput::defaultDeviceFolders()
+{
+#ifdef Q_OS_LINUX
+    // /dev as well: /dev/input may not exist until the first input device,
+    // and pads read through HIDAPI appear as /dev/hidraw*.
+    return {QStringLiteral("/dev/input"), QStringLiteral("/dev")};
+#else
+    return {};
+#endif
+}
+
+void GamepadInput::setDeviceFolders(const QStringList &folders)
+{
+    m_deviceFolders = folders;
+    delete m_deviceWatcher;
+    m_deviceWatcher = nullptr;
+    if (m_reading)
+        watchDeviceFolders();
+}
+
+void GamepadInput::watchDeviceFolders()
+{
+    if (!m_deviceWatcher && !m_deviceFolders.isEmpty()) {
+        m_deviceWatcher = new QFileSystemWatcher(this);
+        connect(m_deviceWatcher, &QFileSystemWatcher::directoryChanged, this, &GamepadInput::onDeviceFolderChanged);
+    }
+    if (m_deviceWatcher) {
+        const QStringList watched = m_deviceWatcher->directories();
+        for (const QString &folder : m_deviceFolders) {
+            if (!watched.contains(folder) && QDir(folder).exists())
+                m_deviceWatcher->addPath(folder);
+        }
+    }
+    schedulePolling();
+}
+
+void GamepadInput::onDeviceFolderChanged()
+{
+    m_sinceDeviceChange.start();
+    watchDeviceFolders(); // a folder may have just been made
+    poll();
+}
+
+int GamepadInput::pollIntervalMs() const
+{
+    return m_timer && m_timer->isActive() ? m_timer->interval() : 0;
+}
+
+void GamepadInput::schedulePolling()
+{
+    if (!m_timer)
+        return;
+    const bool watching = m_deviceWatcher && !m_deviceWatcher->directories().isEmpty();
+    const bool settling = m_sinceDeviceChange.isValid() && !m_sinceDeviceChange.hasExpired(kDeviceSettleMs);
+    int interval = 0; // waiting on the device folders
+    if (m_controller)
+        interval = kPollIntervalMs;
+    else if (!watching || settling)
+        interval = kNoPadPollIntervalMs;
+    if (interval == 0) {
+        m_timer->stop();
+        return;
+    }
+    if (m_timer->interval() != interval || !m_timer->isActive())
+        m_timer->start(interval);
 }
 
 void GamepadInput::setSpeedLimit(int mmPerSecond)
@@ -249,9 +320,7 @@ void GamepadInput::poll()
     if (stickChanged)
         readStick();
     updateCommand();
-    const int interval = m_controller ? kPollIntervalMs : kNoPadPollIntervalMs;
-    if (m_timer && m_timer->interval() != interval)
-        m_timer->setInterval(interval);
+    schedulePolling();
 }
 
 void GamepadInput::openFirstGamepad()
@@ -268,6 +337,7 @@ bool GamepadInput::openGamepad(int deviceIndex)
     if (!controller)
         return false;
     m_controller = controller;
+    m_sinceDeviceChange.invalidate(); // what the folder's change brought has come
     m_instance = SDL_JoystickInstanceID(SDL_GameControllerGetJoystick(controller));
     const char *name = SDL_GameControllerName(controller);
     m_name = name && *name ? QString::fromUtf8(name) : tr("Gamepad");

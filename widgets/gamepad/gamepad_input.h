@@ -8,12 +8,15 @@
 #include <QMap>
 #include <QObject>
 #include <QPointF>
+#include <QElapsedTimer>
 #include <QString>
+#include <QStringList>
 
 #include <SDL_gamecontroller.h>
 
 #include <thread>
 
+class QFileSystemWatcher;
 class QTimer;
 
 // One gamepad, read through SDL's game-controller API, turned into what the
@@ -22,8 +25,11 @@ class QTimer;
 // asks for a stop once and then nothing. Other buttons can ask for Stop All or
 // a mode change.
 //
-// SDL is polled every 10 ms on the thread that owns this object (every
-// 250 ms while no pad is plugged in). SDL has one
+// SDL is polled every 10 ms on the thread that owns this object while a pad
+// is open. Without one, the device folders are watched instead (/dev/input
+// and /dev on Linux): a pad plugged in adds a node there, and SDL is then
+// polled every 250 ms for a couple of seconds while the system sets it up.
+// Where no folder can be watched, SDL is polled every 250 ms. SDL has one
 // event queue per program, so keep one GamepadInput at a time.
 class GamepadInput : public QObject {
     Q_OBJECT
@@ -61,6 +67,16 @@ public:
     // deadband and expo.
     QPointF stick() const { return m_stick; }
     bool isDeadManHeld() const { return m_deadManHeld; }
+    // How often SDL is polled now, in ms; 0 while it waits on the device
+    // folders for a pad to be plugged in.
+    int pollIntervalMs() const;
+    // The folders where a pad plugged in adds a node. Folders that do not
+    // exist yet are watched for once one of the others changes; when none
+    // can be watched, SDL is polled every 250 ms instead.
+    void setDeviceFolders(const QStringList &folders);
+    QStringList deviceFolders() const { return m_deviceFolders; }
+    static QStringList defaultDeviceFolders();
+
     // The last command asked for (a stop until the stick drives).
     MotionCommand command() const { return m_lastCommand; }
 
@@ -111,6 +127,11 @@ signals:
 private:
     // SDL has started (`error` empty) or could not: the pads are read from now on.
     void startReading(const QString &error);
+    // A device folder changed: a pad may be coming.
+    void onDeviceFolderChanged();
+    void watchDeviceFolders();
+    // Starts, re-times or stops the poll timer for what is plugged in now.
+    void schedulePolling();
     void openFirstGamepad();
     bool openGamepad(int deviceIndex);
     void closeGamepad();
@@ -126,6 +147,9 @@ private:
     QString m_error;
     std::thread m_starting; // SDL starting in the background
     QTimer *m_timer = nullptr;
+    QStringList m_deviceFolders = defaultDeviceFolders();
+    QFileSystemWatcher *m_deviceWatcher = nullptr;
+    QElapsedTimer m_sinceDeviceChange; // invalid until a device folder changes
     SDL_GameController *m_controller = nullptr;
     SDL_JoystickID m_instance = -1;
     QString m_name;

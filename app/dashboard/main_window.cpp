@@ -557,6 +557,7 @@ void MainWindow::closeEvent(QCloseEvent *event)
 {
     saveSettings();
     DisplayTick::instance().stopListening(this);
+    DisplayTick::instance().setQuiet(false);
     // Every robot stopped and left in Passive mode (ERRATA 17).
     m_fleet.closeAllAndWait();
     event->accept();
@@ -590,10 +591,24 @@ void MainWindow::resetLayout() { m_layout->resetLayout(); }
 QDockWidget *MainWindow::focusNextDock(int direction) { return m_layout->focusNextDock(direction); }
 void MainWindow::refreshDisplay()
 {
+    DisplayTick &tick = DisplayTick::instance();
+    // Counted first: every change counted by now is in the frames taken here.
+    const quint64 changedFrames = oilink::RobotLinkThread::changedFrameCount();
     // The frames the robots queued since the last tick, taken at it: they
     // cost the GUI thread no wake-up of their own while the display runs.
-    oilink::RobotLinkThread::deliverQueuedNow(DisplayTick::kIntervalMs * 3 / 2);
+    oilink::RobotLinkThread::deliverQueuedNow(tick.intervalMs() * 3 / 2);
     m_view->refresh();
+    // Robots at rest stream the same values: after a few ticks without a
+    // frame unlike the one before it, the display slows to its quiet pace,
+    // and the next such frame wakes it.
+    if (changedFrames != m_changedFramesShown) {
+        m_changedFramesShown = changedFrames;
+        m_ticksWithoutChange = 0;
+        tick.setQuiet(false);
+    } else if (!tick.isQuiet() && ++m_ticksWithoutChange >= kTicksBeforeQuiet) {
+        tick.setQuiet(true);
+        oilink::RobotLinkThread::callOnChangedFrame(changedFrames, [] { DisplayTick::instance().wake(); });
+    }
 }
 const std::shared_ptr<sim::Room> &MainWindow::room() const { return m_room->room(); }
 FleetConsole *MainWindow::fleetConsole() const { return m_broker->console(); }

@@ -198,6 +198,11 @@ private:
     CalibrationWizardAction *m_calibration = nullptr;
     RobotBar *m_robotBar = nullptr;
     SelectedRobotView *m_view = nullptr;
+    // Ticks of the display at its full pace with no changed frame before it
+    // slows (DisplayTick::setQuiet): a fifth of a second.
+    static constexpr int kTicksBeforeQuiet = 6;
+    quint64 m_changedFramesShown = 0;
+    int m_ticksWithoutChange = 0;
     DockLayout *m_layout = nullptr;
     KeyboardDriving *m_keyboard = nullptr;
     MeasuredMoves *m_moves = nullptr;

@@ -27,6 +27,7 @@
 #include "script_editor.h"
 #include "sensor_gauges.h"
 #include "sensor_plots.h"
+#include "display_tick.h"
 #include "signal_bars.h"
 #include "song_composer.h"
 
@@ -35,7 +36,7 @@
 
 namespace {
 // The robot cards change slowly (mode, battery, link): four times a second.
-constexpr int kCardTicks = 8;
+constexpr int kCardFrames = 8;
 } // namespace
 
 SelectedRobotView::SelectedRobotView(RobotFleet &fleet, RoomRobots &room, const DashboardViews &views,
@@ -330,19 +331,25 @@ void SelectedRobotView::refresh()
         if (m_shownSnapshot > 0 && m_fleet.hasRobotsWaiting())
             QTimer::singleShot(0, &m_fleet, &RobotFleet::connectWaiting);
     }
-    ++m_displayTicks;
+    m_displayFrames += quint64(DisplayTick::instance().framesPerTick());
+    const auto due = [this](quint64 &next, int everyFrames) {
+        if (m_displayFrames < next)
+            return false;
+        next = m_displayFrames + quint64(everyFrames);
+        return true;
+    };
     // Scrolling plots are the dearest thing on screen; at 10 Hz they still
     // move a few pixel columns at a time, for a third of the cost at 30 Hz.
     // Whether a view is on screen is dear to ask (its visible region), so
-    // it is asked only on its ticks.
-    if (m_displayTicks % 3 == 0 && isOnScreen(v.plots))
+    // it is asked only when the view is due.
+    if (due(m_plotsDue, 3) && isOnScreen(v.plots))
         v.plots->refresh();
     // Where the virtual robots really are, so the map shows the odometry drift.
-    if (m_displayTicks % 3 == 0 && isOnScreen(v.map))
+    if (due(m_mapDue, 3) && isOnScreen(v.map))
         m_room.showOn(*v.map, &robot);
-    if (m_displayTicks % kCardTicks == 0)
+    if (due(m_cardsDue, kCardFrames))
         v.robotBar->refresh();
-    if (m_displayTicks % 2 == 0) {
+    if (due(m_lessonsDue, 2)) {
         v.lessons->refresh();
         if (v.projector)
             v.projector->refresh(robot.latest(), live);

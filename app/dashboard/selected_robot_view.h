@@ -118,5 +118,11 @@ private:
     bool m_shownLive = false;
     bool m_shownReplayEnded = false;
     bool m_liveFlagOutdated = true;
-    quint64 m_displayTicks = 0;
+    // Display frames so far (ticks at the full pace; a quiet tick counts as
+    // several), and the frame each slower view is due again.
+    quint64 m_displayFrames = 0;
+    quint64 m_plotsDue = 0;
+    quint64 m_mapDue = 0;
+    quint64 m_cardsDue = 0;
+    quint64 m_lessonsDue = 0;
 };

@@ -11,6 +11,8 @@
 #include <sys/resource.h>
 
 #include <algorithm>
+#include <atomic>
+#include <utility>
 
 namespace oilink {
 
@@ -19,13 +21,15 @@ namespace oilink {
 // each kDeliveryMs however many robots stream. Lives while any of them does.
 class FrameDelivery : public QObject {
 public:
-    static void add(RobotLinkThread *link)
+    static FrameDelivery *add(RobotLinkThread *link)
     {
         FrameDelivery *&delivery = s_byThread.localData();
         if (!delivery)
             delivery = new FrameDelivery;
         delivery->m_links.append(link);
+        return delivery;
     }
+    static FrameDelivery *here() { return s_byThread.hasLocalData() ? s_byThread.localData() : nullptr; }
     // A link thread started: hand out its frames.
     static void started()
     {
@@ -34,7 +38,7 @@ public:
     }
     static void deliverNow(int nextWithinMs)
     {
-        FrameDelivery *delivery = s_byThread.hasLocalData() ? s_byThread.localData() : nullptr;
+        FrameDelivery *delivery = here();
         if (!delivery || !delivery->m_timer.isActive())
             return;
         delivery->deliver();
@@ -54,7 +58,29 @@ public:
         }
     }
 
+    // On a worker thread: a link queued a frame unlike its last one.
+    void frameChanged()
+    {
+        m_changedFrames.fetch_add(1, std::memory_order_relaxed);
+        if (m_wakeOnChange.exchange(false))
+            threads::queueCall(this, [this] { callOnChange(); });
+    }
+    quint64 changedFrames() const { return m_changedFrames.load(std::memory_order_relaxed); }
+    void callOnChangedFrame(quint64 seen, std::function<void()> call)
+    {
+        m_onChange = std::move(call);
+        m_wakeOnChange = true;
+        if (changedFrames() != seen && m_wakeOnChange.exchange(false))
+            callOnChange(); // it came before the wake was asked for
+    }
+
 private:
+    void callOnChange()
+    {
+        if (auto call = std::exchange(m_onChange, nullptr))
+            call();
+    }
+
     FrameDelivery()
     {
         m_timer.setInterval(RobotLinkThread::kDeliveryMs);
@@ -84,6 +110,9 @@ private:
     static QThreadStorage<FrameDelivery *> s_byThread;
     QTimer m_timer;
     QList<RobotLinkThread *> m_links;
+    std::atomic<quint64> m_changedFrames{0};
+    std::atomic<bool> m_wakeOnChange{false};
+    std::function<void()> m_onChange; // this thread only
 };
 
 QThreadStorage<FrameDelivery *> FrameDelivery::s_byThread;
@@ -135,7 +164,7 @@ RobotLinkThread::RobotLinkThread(QObject *parent) : QObject(parent)
 {
     registerLinkMetaTypes();
     m_thread.setObjectName(QStringLiteral("robot link"));
-    FrameDelivery::add(this);
+    m_delivery = FrameDelivery::add(this);
 }
 
 RobotLinkThread::~RobotLinkThread()
@@ -160,6 +189,15 @@ void RobotLinkThread::queue(Queued item)
             deliverQueued();
         });
     }
+}
+
+void RobotLinkThread::queueFrame(const oi::SensorSnapshot &frame, double readSeconds)
+{
+    if (!m_lastQueuedFrame || !(frame == *m_lastQueuedFrame)) {
+        m_lastQueuedFrame = frame;
+        m_delivery->frameChanged();
+    }
+    queue({frame, readSeconds, {}});
 }
 
 void RobotLinkThread::deliverQueued(quint64 upTo)
@@ -201,6 +239,18 @@ void RobotLinkThread::relay(RobotLink *link, void (RobotLink::*signal)(Args...),
 
 void RobotLinkThread::deliverQueuedNow(int nextWithinMs) { FrameDelivery::deliverNow(nextWithinMs); }
 
+quint64 RobotLinkThread::changedFrameCount()
+{
+    const FrameDelivery *delivery = FrameDelivery::here();
+    return delivery ? delivery->changedFrames() : 0;
+}
+
+void RobotLinkThread::callOnChangedFrame(quint64 seen, std::function<void()> call)
+{
+    if (FrameDelivery *delivery = FrameDelivery::here())
+        delivery->callOnChangedFrame(seen, std::move(call));
+}
+
 void RobotLinkThread::setTransportFactory(RobotLink::TransportFactory factory)
 {
     m_factory = std::move(factory);
@@ -221,11 +271,10 @@ void RobotLinkThread::start()
     }
     m_link = link;
 
+    m_lastQueuedFrame.reset();
     connect(
         link, &RobotLink::snapshot, link,
-        [this](const oi::SensorSnapshot &frame, double readSeconds) {
-            queue({frame, readSeconds, {}});
-        },
+        [this](const oi::SensorSnapshot &frame, double readSeconds) { queueFrame(frame, readSeconds); },
         Qt::DirectConnection);
     connect(
         link, &RobotLink::rawBytesReceived, link,

@@ -9,6 +9,7 @@
 #include <QThread>
 
 #include <chrono>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -79,6 +80,16 @@ public:
     // delivers again.
     static void deliverQueuedNow(int nextWithinMs);
 
+    // Frames unlike the one before them on the same link, from every link
+    // of the calling thread, so far: a display can slow down while this
+    // stays put (robots at rest stream the same values).
+    static quint64 changedFrameCount();
+    // Calls `call` on this thread, once, as soon as a link of it queues a
+    // frame unlike the one before it, or at once if one came since
+    // changedFrameCount() was `seen`: a slowed display wakes for the change,
+    // not at its next tick.
+    static void callOnChangedFrame(quint64 seen, std::function<void()> call);
+
 public slots:
     void open(const oilink::LinkSettings &settings);
     void close();
@@ -125,6 +136,7 @@ private:
     void deliverPending();
     // On the worker thread.
     void queue(Queued item);
+    void queueFrame(const oi::SensorSnapshot &frame, double readSeconds);
     // Emits what was queued, up to the item numbered `upTo`.
     void deliverQueued(quint64 upTo = ~quint64{0});
     // Re-emits a link signal here, after the frames queued before it.
@@ -138,6 +150,8 @@ private:
     bool m_linkHere = false;       // started with the link on this thread
     bool m_deliveryPosted = false; // with the link here: a delivery is queued
     QPointer<RobotLink> m_link;
+    class FrameDelivery *m_delivery = nullptr; // this thread's, for as long as this object lives
+    std::optional<oi::SensorSnapshot> m_lastQueuedFrame; // worker thread only
     RobotLink::TransportFactory m_factory;
     Clock *m_clock = &Clock::steady();
     LinkState m_state = LinkState::Closed;

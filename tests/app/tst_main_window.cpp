@@ -135,6 +135,28 @@ private slots:
                  qPrintable(window.statusText()));
     }
 
+    // A robot at rest streams the same values: the display slows to its
+    // quiet pace while the frames still come in, and the first frame that
+    // differs (the mode the robot reports) wakes it and is shown.
+    void displayRestsWithTheRobot()
+    {
+        MainWindow window;
+        window.resize(1200, 800);
+        window.show();
+        window.start();
+        QTRY_COMPARE_WITH_TIMEOUT(window.session().state(), oilink::LinkState::Streaming, 10000);
+        DisplayTick &tick = DisplayTick::instance();
+        QTRY_VERIFY_WITH_TIMEOUT(tick.isQuiet(), 10000);
+        const quint64 frames = window.session().snapshotCount();
+        QTRY_VERIFY_WITH_TIMEOUT(window.session().snapshotCount() > frames + 10, 10000);
+
+        QTest::mouseClick(window.modePanel()->button("safe"), Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(!tick.isQuiet(), 10000);
+        QTRY_COMPARE_WITH_TIMEOUT(window.modePanel()->highlightedMode(), std::optional<oi::OiMode>(oi::OiMode::Safe),
+                                  10000);
+        window.close();
+    }
+
     // Clean on the virtual robot: it runs its own program, and the window
     // says what is happening and how to end it.
     void cleanRunsTheRobotsOwnProgram()

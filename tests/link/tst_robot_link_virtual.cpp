@@ -298,6 +298,45 @@ private slots:
         link.stop();
     }
 
+    // A robot at rest streams the same values: only a frame unlike the one
+    // before it counts as a change, and a display waiting for one (slowed
+    // while nothing changed) is called once, when the robot moves.
+    void aChangedFrameWakesAWaitingDisplay()
+    {
+        auto room = std::make_shared<sim::Room>(sim::World{});
+        const sim::RobotId id = room->addRobotAt({0, 0, 0, 0});
+        RobotLinkThread link;
+        link.setTransportFactory(transports::transportFactory(room, id));
+        QSignalSpy snapshots(&link, &RobotLinkThread::snapshot);
+        link.open(LinkSettings::virtualRobotOf(oi::ProfileId::Create2, oi::ProfileId::Create2));
+        QTRY_COMPARE_WITH_TIMEOUT(link.state(), LinkState::Streaming, kTimeoutMs);
+        QTRY_VERIFY_WITH_TIMEOUT(snapshots.size() >= 5, kTimeoutMs);
+
+        // At rest: the frames come, their changes hardly.
+        snapshots.clear();
+        const quint64 changedBefore = RobotLinkThread::changedFrameCount();
+        QTRY_VERIFY_WITH_TIMEOUT(snapshots.size() >= 30, kTimeoutMs);
+        const quint64 changedAtRest = RobotLinkThread::changedFrameCount() - changedBefore;
+        QVERIFY2(changedAtRest <= 3, qPrintable(QStringLiteral("%1 of %2 frames changed at rest")
+                                                     .arg(changedAtRest)
+                                                     .arg(snapshots.size())));
+
+        int calls = 0;
+        RobotLinkThread::callOnChangedFrame(RobotLinkThread::changedFrameCount(), [&calls] { ++calls; });
+        link.send(commandsOf(bytes({132})));                 // Full
+        link.send(commandsOf(bytes({137, 0, 200, 128, 0}))); // Drive 200 mm/s straight
+        QTRY_COMPARE_WITH_TIMEOUT(calls, 1, kTimeoutMs);
+        // Driving, every frame differs; the call was for one.
+        const quint64 driving = RobotLinkThread::changedFrameCount();
+        QTRY_VERIFY_WITH_TIMEOUT(RobotLinkThread::changedFrameCount() >= driving + 10, kTimeoutMs);
+        QCOMPARE(calls, 1);
+        // A change that came before the call was asked for calls at once.
+        RobotLinkThread::callOnChangedFrame(driving, [&calls] { ++calls; });
+        QCOMPARE(calls, 2);
+        link.send(commandsOf(bytes({137, 0, 0, 0, 0})));
+        link.stop();
+    }
+
     void aStoppedHelperOpensAgain()
     {
         RobotLinkThread link;

@@ -5,6 +5,7 @@
 #include <QTest>
 
 #include <memory>
+#include <vector>
 
 using Order = DisplayTick::Order;
 
@@ -72,6 +73,38 @@ private slots:
                      qPrintable(QString::number(frameTimes[i] - frameTimes[i - 1])));
             QVERIFY(frameTicks[i] > frameTicks[i - 1]);
         }
+    }
+
+    // Quiet, the tick comes every kQuietIntervalMs and stands for three;
+    // wake() ticks at once and goes back to the full pace.
+    void quietPaceAndWake()
+    {
+        DisplayTick &tick = DisplayTick::instance();
+        QObject window;
+        QElapsedTimer clock;
+        clock.start();
+        std::vector<qint64> tickTimes;
+        tick.listen(&window, [&] { tickTimes.push_back(clock.elapsed()); });
+        tick.setQuiet(true);
+        QCOMPARE(tick.intervalMs(), DisplayTick::kQuietIntervalMs);
+        QCOMPARE(tick.framesPerTick(), DisplayTick::kQuietFramesPerTick);
+        QTRY_VERIFY_WITH_TIMEOUT(tickTimes.size() >= 4, 10000);
+        // A coarse timer may come up to 5 % early.
+        for (std::size_t i = 1; i < tickTimes.size(); ++i)
+            QVERIFY2(tickTimes[i] - tickTimes[i - 1] >= DisplayTick::kQuietIntervalMs * 9 / 10,
+                     qPrintable(QString::number(tickTimes[i] - tickTimes[i - 1])));
+
+        const std::size_t before = tickTimes.size();
+        tick.wake();
+        QCOMPARE(tickTimes.size(), before + 1); // within the call
+        QVERIFY(!tick.isQuiet());
+        QCOMPARE(tick.intervalMs(), DisplayTick::kIntervalMs);
+        QCOMPARE(tick.framesPerTick(), 1);
+        tick.stopListening(&window);
+        QTRY_VERIFY(!tick.isRunning());
+        tick.wake(); // nothing listens: no tick
+        QCOMPARE(tickTimes.size(), before + 1);
+        QVERIFY(!tick.isRunning());
     }
 
     // A second request while one waits changes nothing; a receiver gone, or

@@ -76,6 +76,23 @@ void DisplayTick::startIfNeeded()
         m_timer.start();
 }
 
+void DisplayTick::setQuiet(bool quiet)
+{
+    if (quiet == m_quiet)
+        return;
+    m_quiet = quiet;
+    m_timer.setInterval(intervalMs()); // restarts it when running
+}
+
+void DisplayTick::wake()
+{
+    if (!m_timer.isActive())
+        return; // nothing listens
+    m_quiet = false;
+    m_timer.start(kIntervalMs); // the next tick a full interval after this one
+    tick();
+}
+
 void DisplayTick::tick()
 {
     ++m_ticks;

@@ -13,10 +13,16 @@
 // view that draws what came since its last frame run on this one timer, so a
 // frame of the display wakes the GUI thread once, not once per view. It runs
 // only while something listens or waits for a frame.
+//
+// While nothing it shows changes (robots at rest stream the same values), the
+// window slows it to the quiet pace: a tick every kQuietIntervalMs, which
+// still scrolls the plots at their 10 Hz; a change wakes it at once.
 class DisplayTick : public QObject {
     Q_OBJECT
 public:
     static constexpr int kIntervalMs = 33;
+    static constexpr int kQuietFramesPerTick = 3;
+    static constexpr int kQuietIntervalMs = kIntervalMs * kQuietFramesPerTick;
 
     // The application's tick; GUI thread only.
     static DisplayTick &instance();
@@ -39,6 +45,15 @@ public:
     // Ticks so far: two calls that see the same count ran on one wake-up.
     quint64 tickCount() const { return m_ticks; }
     bool isRunning() const { return m_timer.isActive(); }
+
+    void setQuiet(bool quiet);
+    bool isQuiet() const { return m_quiet; }
+    int intervalMs() const { return m_quiet ? kQuietIntervalMs : kIntervalMs; }
+    // How many ticks at the full pace this one stands for: what counts ticks
+    // to do something every so many keeps its rate at the quiet pace.
+    int framesPerTick() const { return m_quiet ? kQuietFramesPerTick : 1; }
+    // Something to show came while quiet: a tick now, and the full pace.
+    void wake();
 
 private:
     explicit DisplayTick(QObject *parent);
@@ -65,4 +80,5 @@ private:
     std::vector<Frame> m_frames;
     std::vector<LastFrame> m_lastFrames;
     quint64 m_ticks = 0;
+    bool m_quiet = false;
 };

@@ -340,9 +340,10 @@ void SelectedRobotView::refresh()
     };
     // Scrolling plots are the dearest thing on screen; at 10 Hz they still
     // move a few pixel columns at a time, for a third of the cost at 30 Hz.
-    // Whether a view is on screen is dear to ask (its visible region), so
-    // it is asked only when the view is due.
-    if (due(m_plotsDue, 3) && isOnScreen(v.plots))
+    // While the display is quiet their new columns only carry the same
+    // values on, and 5 Hz is enough. Whether a view is on screen is dear to
+    // ask (its visible region), so it is asked only when the view is due.
+    if (due(m_plotsDue, DisplayTick::instance().isQuiet() ? 6 : 3) && isOnScreen(v.plots))
         v.plots->refresh();
     // Where the virtual robots really are, so the map shows the odometry drift.
     if (due(m_mapDue, 3) && isOnScreen(v.map))

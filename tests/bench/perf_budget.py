@@ -9,7 +9,8 @@ the two-core machine), and misses its target when it is above the target.
   perf_budget.py compare BUDGET KEY=VALUE...   today's figures beside the kept ones
   perf_budget.py keep BUDGET README KEY=VALUE... [--seconds S --load L --commit C --date D]
                                                the same, then today's figures become the
-                                               kept ones and README's table shows them
+                                               kept ones, the kept ones the run before,
+                                               and README's table shows both
   perf_budget.py readme BUDGET README          README's table from the kept figures
 
 A value that is not a number (a benchmark that printed nothing) is shown as
@@ -99,23 +100,38 @@ def compare(budget, today):
 
 
 def keep(budget, today, run):
+    """Today's figures become the kept ones; the kept ones, the run before."""
+    budget["run_before"] = budget.get("kept_run", {})
     for figure in budget["figures"]:
+        if figure.get("kept") is not None:
+            figure["before"] = figure["kept"]
         value = today.get(figure["key"])
         if value is not None:
             figure["kept"] = value
     budget["kept_run"] = run
 
 
+def run_text(run):
+    return (f"{run.get('date', '?')}, commit {run.get('commit', '?')}, "
+            f"{run.get('seconds', '?')} s runs under Xvfb 1600x1000, load average {run.get('load', '?')}")
+
+
 def readme_table(budget):
-    run = budget.get("kept_run", {})
-    lines = [README_BEGIN, "",
-             f"Last kept run: {run.get('date', '?')}, commit {run.get('commit', '?')}, "
-             f"{run.get('seconds', '?')} s runs under Xvfb 1600x1000, load average {run.get('load', '?')}.",
-             "",
-             "| figure | kept | target |",
-             "|---|---|---|"]
+    before = budget.get("run_before")
+    lines = [README_BEGIN, "", f"Last kept run: {run_text(budget.get('kept_run', {}))}."]
+    if before:
+        lines.append(f"The run before: {run_text(before)}.")
+    lines.append("")
+    if before:
+        lines += ["| figure | kept | the run before | target |", "|---|---|---|---|"]
+    else:
+        lines += ["| figure | kept | target |", "|---|---|---|"]
     for figure in budget["figures"]:
-        lines.append(f"| {figure['name']} | {number(figure.get('kept'), figure['unit'])} | {target_text(figure)} |")
+        cells = [figure["name"], number(figure.get("kept"), figure["unit"])]
+        if before:
+            cells.append(number(figure.get("before"), figure["unit"]))
+        cells.append(target_text(figure))
+        lines.append("| " + " | ".join(cells) + " |")
     lines += ["", README_END]
     return "\n".join(lines)
 

@@ -11,9 +11,9 @@
 #                there (default: build)
 # --seconds S    how long each dashboard run lasts (default 600: the table's
 #                "10 minutes after start"; shorter runs are noisier)
-# --keep         today's figures become the kept ones: written to
-#                tests/bench/perf_budget.json and README's performance table
-#                (commit both). Keep a run on a quiet machine (load average
+# --keep         today's figures become the kept ones, and the kept ones
+#                the run before: written to tests/bench/perf_budget.json and
+#                README's performance table, which shows both (commit both). Keep a run on a quiet machine (load average
 #                under 1) with the default 600 s.
 # --build-times  also time README's first command (configure and build the
 #                window, without ccache) and the ordinary build and tests of

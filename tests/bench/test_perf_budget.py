@@ -68,10 +68,28 @@ def test_keep_writes_readme_table_from_the_kept_figures(tmp_path):
     assert result.returncode == 0, result.stderr
     text = path.read_text()
     assert "old table" not in text
-    assert "| one robot CPU | 0.9 % | <= 1.5 % |" in text
-    assert "| window RSS | 70 MiB | - |" in text
-    assert "2026-02-02, commit def5678, 600 s runs" in text
+    assert "| one robot CPU | 0.9 % | 1.2 % | <= 1.5 % |" in text
+    assert "| window RSS | 70 MiB | ? | - |" in text
+    assert "Last kept run: 2026-02-02, commit def5678, 600 s runs" in text
+    assert "The run before: 2026-01-01, commit abc1234" in text
     assert text.endswith("## Licence\n")
+
+
+def test_keep_shows_the_run_before_beside_the_new_one(tmp_path):
+    path = readme(tmp_path)
+    result = run(tmp_path, "keep", str(path), "cpu_one=1.1", "open_s=0.15",
+                 "--date", "2026-02-02", "--commit", "def5678", "--seconds", "600", "--load", "0.2")
+    assert result.returncode == 0, result.stderr
+    result = run(tmp_path, "keep", str(path), "cpu_one=1.0", "open_s=0.14",
+                 "--date", "2026-02-03", "--commit", "fed8765", "--seconds", "600", "--load", "0.1")
+    assert result.returncode == 0, result.stderr
+    kept = json.loads((tmp_path / "budget.json").read_text())
+    assert kept["run_before"]["commit"] == "def5678"
+    text = path.read_text()
+    assert "Last kept run: 2026-02-03, commit fed8765" in text
+    assert "The run before: 2026-02-02, commit def5678" in text
+    assert "| one robot CPU | 1 % | 1.1 % | <= 1.5 % |" in text
+    assert "| window RSS | ? | ? | - |" in text  # never measured
 
 
 def test_a_readme_without_the_table_markers_is_an_error_and_keeps_nothing(tmp_path):

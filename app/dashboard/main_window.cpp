@@ -607,8 +607,10 @@ void MainWindow::refreshDisplay()
         tick.setQuiet(false);
     } else if (!tick.isQuiet() && ++m_ticksWithoutChange >= kTicksBeforeQuiet) {
         tick.setQuiet(true);
-        oilink::RobotLinkThread::callOnChangedFrame(changedFrames, [] { DisplayTick::instance().wake(); });
     }
+    // Asked again each quiet tick, for the links of a robot added since.
+    if (tick.isQuiet())
+        oilink::RobotLinkThread::callOnChangedFrame(changedFrames, [] { DisplayTick::instance().wake(); });
 }
 const std::shared_ptr<sim::Room> &MainWindow::room() const { return m_room->room(); }
 FleetConsole *MainWindow::fleetConsole() const { return m_broker->console(); }

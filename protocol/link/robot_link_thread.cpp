@@ -70,8 +70,10 @@ public:
     {
         m_onChange = std::move(call);
         m_wakeOnChange = true;
+        // It came before the wake was asked for: called from the event loop
+        // all the same, not inside the caller.
         if (changedFrames() != seen && m_wakeOnChange.exchange(false))
-            callOnChange(); // it came before the wake was asked for
+            threads::queueCall(this, [this] { callOnChange(); });
     }
 
 private:

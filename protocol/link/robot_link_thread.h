@@ -84,10 +84,10 @@ public:
     // of the calling thread, so far: a display can slow down while this
     // stays put (robots at rest stream the same values).
     static quint64 changedFrameCount();
-    // Calls `call` on this thread, once, as soon as a link of it queues a
-    // frame unlike the one before it, or at once if one came since
+    // Calls `call` on this thread's event loop, once, as soon as a link of
+    // it queues a frame unlike the one before it, or one came since
     // changedFrameCount() was `seen`: a slowed display wakes for the change,
-    // not at its next tick.
+    // not at its next tick. Asked again, the last call stands.
     static void callOnChangedFrame(quint64 seen, std::function<void()> call);
 
 public slots:

@@ -75,7 +75,7 @@ private slots:
         }
     }
 
-    // Quiet, the tick comes every kQuietIntervalMs and stands for three;
+    // Quiet, the tick comes every kQuietIntervalMs and stands for six;
     // wake() ticks at once and goes back to the full pace.
     void quietPaceAndWake()
     {

@@ -15,13 +15,13 @@
 // only while something listens or waits for a frame.
 //
 // While nothing it shows changes (robots at rest stream the same values), the
-// window slows it to the quiet pace: a tick every kQuietIntervalMs, which
-// still scrolls the plots at their 10 Hz; a change wakes it at once.
+// window slows it to the quiet pace: a tick every kQuietIntervalMs (0.2 s),
+// enough to carry the plots' lines on; a change wakes it at once.
 class DisplayTick : public QObject {
     Q_OBJECT
 public:
     static constexpr int kIntervalMs = 33;
-    static constexpr int kQuietFramesPerTick = 3;
+    static constexpr int kQuietFramesPerTick = 6;
     static constexpr int kQuietIntervalMs = kIntervalMs * kQuietFramesPerTick;
 
     // The application's tick; GUI thread only.

@@ -96,11 +96,12 @@ load=$(cut -d' ' -f1-3 /proc/loadavg)
 echo
 echo "Figures after ${seconds} s runs under Xvfb 1600x1000; load average $load (30 robots: histories ${history30} MiB, RSS ${history30_rss} MiB)"
 # The machine's floor: one robot wakes the robots' thread 66.7 times a
-# second and the window's 30 times, whatever each wake-up then does.
+# second and the window's 5 times at rest (the display's quiet pace),
+# whatever each wake-up then does.
 wake_bare=$(field "$log/wake.txt" '^result: wake-up ([0-9.]+) us bare.*')
 wake_qt=$(field "$log/wake.txt" '^result: .* ([0-9.]+) us in a Qt event loop.*')
-echo "A wake-up costs ${wake_bare} us of CPU here (${wake_qt} us in a Qt event loop): one robot's ~97 a second" \
-    "are $("$python" -c "print(f'{96.7 * $wake_qt / 1e4:.2f}')") % of a core before any work"
+echo "A wake-up costs ${wake_bare} us of CPU here (${wake_qt} us in a Qt event loop): one robot's ~72 a second" \
+    "are $("$python" -c "print(f'{71.7 * $wake_qt / 1e4:.2f}')") % of a core before any work"
 if [ "$keep" = 1 ]; then
     "$python" tests/bench/perf_budget.py keep tests/bench/perf_budget.json README.md "${figures[@]}" \
         --date "$(date -u +%Y-%m-%d)" --commit "$(git rev-parse --short HEAD 2>/dev/null || echo '?')" \

@@ -51,8 +51,6 @@ MqttClient::MqttClient(QString clientId, QObject *parent)
     : QObject(parent), m_clientId(std::move(clientId))
 {
     initLibraryOnce();
-    m_retry.setSingleShot(true);
-    connect(&m_retry, &QTimer::timeout, this, &MqttClient::tryConnecting);
     m_noAnswer.setSingleShot(true);
     m_noAnswer.setInterval(kNoAnswerMs);
     connect(&m_noAnswer, &QTimer::timeout, this, [this] {
@@ -89,9 +87,9 @@ bool MqttClient::connectToBroker(const BrokerAddress &address)
     mosquitto_message_callback_set(m_mosq, &MqttClient::onMessage);
     mosquitto_subscribe_callback_set(m_mosq, &MqttClient::onSubscribe);
     mosquitto_log_callback_set(m_mosq, &MqttClient::onLog);
-    // Every second, not backing off: a restarted broker is found again
-    // within about a second, and the broker bears a class of 30 easily.
-    mosquitto_reconnect_delay_set(m_mosq, kRetryMs / 1000, kRetryMs / 1000, false);
+    // The network loop is ours: publishing from this thread only queues the
+    // packet and wakes it.
+    mosquitto_threaded_set(m_mosq, true);
 
     if (!address.username.isEmpty()
         && mosquitto_username_pw_set(m_mosq, address.username.toUtf8().constData(),
@@ -121,27 +119,45 @@ bool MqttClient::connectToBroker(const BrokerAddress &address)
 
     m_tlsRefusalSaid = false;
     m_noAnswer.start();
-    tryConnecting();
+    m_stopping = false;
+    m_sessionUp = false;
+    m_network = std::thread(&MqttClient::runNetwork, this, m_address.host.toUtf8(), m_address.port,
+                            m_keepAliveSeconds);
     return true;
 }
 
-// Until the first connection starts, a refused or unreachable broker is tried
-// again here; after it, libmosquitto's network thread reconnects by itself.
-void MqttClient::tryConnecting()
+void MqttClient::runNetwork(const QByteArray &host, int port, int keepAliveSeconds)
 {
-    if (!m_mosq || m_loopRunning)
-        return;
-    if (mosquitto_connect_async(m_mosq, m_address.host.toUtf8().constData(), m_address.port, m_keepAliveSeconds)
-        != MOSQ_ERR_SUCCESS) {
-        m_retry.start(kRetryMs);
-        return;
+    while (!m_stopping) {
+        // A connection attempt: the TCP connect and the TLS handshake go on
+        // in the loop below, without blocking.
+        if (mosquitto_connect_async(m_mosq, host.constData(), port, keepAliveSeconds) == MOSQ_ERR_SUCCESS) {
+            int rc = MOSQ_ERR_SUCCESS;
+            // Until the broker accepts, a short wait, so that a goodbye
+            // meanwhile ends the thread quickly; then a second (publishing
+            // and the goodbye wake it at once).
+            while (rc == MOSQ_ERR_SUCCESS && !m_stopping)
+                rc = mosquitto_loop(m_mosq, m_sessionUp ? 1000 : 100, 1);
+            if (m_stopping) {
+                // A goodbye asked for before this connection was made.
+                mosquitto_disconnect(m_mosq);
+                mosquitto_loop(m_mosq, 100, 1);
+                return;
+            }
+            m_sessionUp = false;
+        }
+        // Whatever ended it, and however the library rates the error, the
+        // same: try again in a second. A restarted broker has its clients
+        // back within about a second of listening, and bears a class of 30.
+        if (waitToRetry())
+            return;
     }
-    const int rc = mosquitto_loop_start(m_mosq);
-    if (rc != MOSQ_ERR_SUCCESS) {
-        emit errorOccurred(tr("Cannot start the MQTT network thread: %1").arg(QString::fromUtf8(mosquitto_strerror(rc))));
-        return;
-    }
-    m_loopRunning = true;
+}
+
+bool MqttClient::waitToRetry()
+{
+    std::unique_lock lock(m_stopMutex);
+    return m_stopAsked.wait_for(lock, std::chrono::milliseconds(kRetryMs), [this] { return m_stopping.load(); });
 }
 
 void MqttClient::disconnectFromBroker()
@@ -149,12 +165,16 @@ void MqttClient::disconnectFromBroker()
     if (!m_mosq)
         return;
     const bool wasConnected = m_connected;
-    m_retry.stop();
     m_noAnswer.stop();
+    {
+        const std::lock_guard lock(m_stopMutex);
+        m_stopping = true;
+    }
+    m_stopAsked.notify_all();
+    // Sends the goodbye from the network thread, which ends with it.
     mosquitto_disconnect(m_mosq);
-    if (m_loopRunning)
-        mosquitto_loop_stop(m_mosq, true);
-    m_loopRunning = false;
+    if (m_network.joinable())
+        m_network.join();
     mosquitto_destroy(m_mosq);
     m_mosq = nullptr;
     m_connected = false;
@@ -197,6 +217,7 @@ bool MqttClient::publish(const QString &topic, const QByteArray &payload, int qo
 void MqttClient::onConnect(mosquitto *, void *self, int rc)
 {
     auto *client = static_cast<MqttClient *>(self);
+    client->m_sessionUp = rc == 0;
     threads::queueCall(client, [client, rc] { client->handleConnected(rc); });
 }
 

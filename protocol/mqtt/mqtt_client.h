@@ -10,7 +10,11 @@
 #include <QStringList>
 #include <QTimer>
 
+#include <atomic>
+#include <condition_variable>
 #include <functional>
+#include <mutex>
+#include <thread>
 
 struct mosquitto;
 struct mosquitto_message;
@@ -25,10 +29,14 @@ struct LastWill {
     bool retain = true;
 };
 
-// One connection to an MQTT broker, through libmosquitto. The library's own
-// network thread does the socket work (without Nagle's delay) and reconnects
-// every second; this object reports everything on the thread that owns it.
-// Subscriptions are made again after every reconnect.
+// One connection to an MQTT broker, through libmosquitto. A network thread
+// of this object's own does the socket work (without Nagle's delay) and,
+// after any loss (the broker closed, killed or restarted, a TLS error, a
+// network that dropped, a refused login), connects again every second for
+// as long as the owner wants: libmosquitto's own thread gives up for good
+// on some of those errors (a TLS one among them), leaving a running client
+// that is offline. This object reports everything on the thread that owns
+// it. Subscriptions are made again after every reconnect.
 class MqttClient : public QObject {
     Q_OBJECT
 public:
@@ -98,7 +106,11 @@ private:
     static void onSubscribe(mosquitto *, void *self, int mid, int qosCount, const int *grantedQos);
     static void onLog(mosquitto *, void *self, int level, const char *text);
 
-    void tryConnecting();
+    // The network thread: connects, runs the connection, and after any end
+    // waits kRetryMs and connects again, until disconnectFromBroker.
+    void runNetwork(const QByteArray &host, int port, int keepAliveSeconds);
+    // Waits kRetryMs; true if disconnectFromBroker asked the thread to end.
+    bool waitToRetry();
     void handleConnected(int rc);
     void handleDisconnected(int rc);
     void handleTlsRefused();
@@ -110,9 +122,12 @@ private:
     BrokerAddress m_address;
     mosquitto *m_mosq = nullptr;
     bool m_connected = false;
-    bool m_loopRunning = false;
     static constexpr int kRetryMs = 1000;
-    QTimer m_retry;
+    std::thread m_network;
+    std::mutex m_stopMutex;
+    std::condition_variable m_stopAsked;
+    std::atomic<bool> m_stopping{false}; // set under m_stopMutex
+    std::atomic<bool> m_sessionUp{false}; // the network thread's: the broker accepted the connection
     QTimer m_noAnswer; // says so when no broker has answered soon after connectToBroker
     bool m_tlsRefusalSaid = false; // once per connectToBroker
     QList<QPair<QString, int>> m_subscriptions;

@@ -10,6 +10,7 @@
 #include "bridge_rig.h"
 #include "fleet_directory.h"
 
+#include <QElapsedTimer>
 #include <QProcess>
 #include <QProcessEnvironment>
 #include <QSet>
@@ -171,6 +172,70 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(said.contains("stop line: listening for stop all and takeovers as bridge-r1-stops"), 10000);
         QVERIFY(console.stopAll());
         QTRY_VERIFY_WITH_TIMEOUT(said.contains("roomba.bridge: stop all"), 10000);
+        QVERIFY(bridge.state() == QProcess::Running);
+        bridge.terminate();
+        QVERIFY(bridge.waitForFinished(10000));
+    }
+
+    // The classroom's TLS broker killed as a crash or a power cut would
+    // (SIGKILL: no goodbye, no TLS close) and started again, three times:
+    // each time the bridge (both its connections) and the teacher's console
+    // are back by themselves, and the bridge says it is online again.
+    void aKilledBrokerFindsItsClassAgain()
+    {
+        MosquittoBroker broker;
+        const QString dir = m_dir.filePath(QStringLiteral("crash"));
+        const Run init = classroom({"init", dir, "--robots", "r1", "--students", "alice", "--spectators", "guest",
+                                    "--port", QString::number(broker.port())});
+        QVERIFY2(init.status == 0, qPrintable(init.err));
+        const QString config = QDir(dir).filePath(QStringLiteral("mosquitto.conf"));
+        QVERIFY2(broker.startWith(config), qPrintable(broker.error()));
+        const QString ca = QDir(dir).filePath(QStringLiteral("ca.crt"));
+        const QString accounts = accountsOf(dir);
+        const auto as = [&](const QString &account) {
+            return tlsAddress(broker.port(), account, passwordOf(accounts, account), ca);
+        };
+
+        QProcess bridge;
+        bridge.setProcessChannelMode(QProcess::MergedChannels);
+        QByteArray said;
+        connect(&bridge, &QProcess::readyRead, this, [&] { said += bridge.readAll(); });
+        bridge.start(QStringLiteral(ROOMBA_BRIDGE_PATH),
+                     {QStringLiteral("--config"), QDir(dir).filePath(QStringLiteral("bridges/r1.conf")), QStringLiteral("--sim")});
+        QVERIFY(bridge.waitForStarted());
+        FleetDirectory console;
+        QVERIFY(console.connectToBroker(as(QStringLiteral("teacher"))));
+        // A spectator counts the bridge's states: with persistence off, a
+        // state after a restart is one the bridge sent after reconnecting.
+        MqttClient watcher(QStringLiteral("guest"));
+        int onlineStates = 0;
+        connect(&watcher, &MqttClient::messageReceived, this, [&](const QString &, const QByteArray &payload, bool) {
+            if (objectOf(payload).value(QLatin1String("online")).toBool())
+                ++onlineStates;
+        });
+        watcher.subscribe(topics::state(QStringLiteral("r1")), 1);
+        QVERIFY(watcher.connectToBroker(as(QStringLiteral("guest"))));
+        const QByteArray listening("stop line: listening for stop all and takeovers");
+        QTRY_VERIFY_WITH_TIMEOUT(said.count(listening) == 1 && onlineStates > 0 && console.isConnected(), 20000);
+
+        for (int round = 1; round <= 3; ++round) {
+            broker.kill();
+            QTRY_VERIFY_WITH_TIMEOUT(!console.isConnected() && !watcher.isConnected(), 10000);
+            onlineStates = 0;
+            QVERIFY2(broker.startWith(config), qPrintable(broker.error()));
+            QElapsedTimer back;
+            back.start();
+            QTRY_VERIFY2_WITH_TIMEOUT(said.count(listening) == round + 1 && onlineStates > 0 && console.isConnected(),
+                                      qPrintable(QStringLiteral("round %1: stop line %2, online states %3, console %4; "
+                                                                "the bridge said:\n%5")
+                                                     .arg(round)
+                                                     .arg(said.count(listening) == round + 1)
+                                                     .arg(onlineStates)
+                                                     .arg(console.isConnected())
+                                                     .arg(QString::fromUtf8(said.right(2000)))),
+                                      20000);
+            qInfo("round %d: the class was back %lld ms after the broker listened again", round, back.elapsed());
+        }
         QVERIFY(bridge.state() == QProcess::Running);
         bridge.terminate();
         QVERIFY(bridge.waitForFinished(10000));

@@ -88,6 +88,17 @@ class TestRoombaClassroom : public QObject {
         return a;
     }
 
+    // r1's bridge with the config init wrote, on a virtual robot; what it
+    // logs is gathered in `said`.
+    bool startBridge(QProcess &bridge, const QString &dir, QByteArray *said)
+    {
+        bridge.setProcessChannelMode(QProcess::MergedChannels);
+        connect(&bridge, &QProcess::readyRead, this, [&bridge, said] { *said += bridge.readAll(); });
+        bridge.start(QStringLiteral(ROOMBA_BRIDGE_PATH),
+                     {QStringLiteral("--config"), QDir(dir).filePath(QStringLiteral("bridges/r1.conf")), QStringLiteral("--sim")});
+        return bridge.waitForStarted();
+    }
+
 private slots:
     void initTestCase()
     {
@@ -153,12 +164,8 @@ private slots:
         // file's serial port) publishes; the console, as the teacher with
         // the CA, sees it online and its telemetry.
         QProcess bridge;
-        bridge.setProcessChannelMode(QProcess::MergedChannels);
         QByteArray said;
-        connect(&bridge, &QProcess::readyRead, this, [&] { said += bridge.readAll(); });
-        bridge.start(QStringLiteral(ROOMBA_BRIDGE_PATH),
-                     {QStringLiteral("--config"), QDir(dir).filePath(QStringLiteral("bridges/r1.conf")), QStringLiteral("--sim")});
-        QVERIFY(bridge.waitForStarted());
+        QVERIFY(startBridge(bridge, dir, &said));
         FleetDirectory console;
         QSignalSpy frames(&console, &FleetDirectory::telemetryReceived);
         QVERIFY(console.connectToBroker(
@@ -197,12 +204,8 @@ private slots:
         };
 
         QProcess bridge;
-        bridge.setProcessChannelMode(QProcess::MergedChannels);
         QByteArray said;
-        connect(&bridge, &QProcess::readyRead, this, [&] { said += bridge.readAll(); });
-        bridge.start(QStringLiteral(ROOMBA_BRIDGE_PATH),
-                     {QStringLiteral("--config"), QDir(dir).filePath(QStringLiteral("bridges/r1.conf")), QStringLiteral("--sim")});
-        QVERIFY(bridge.waitForStarted());
+        QVERIFY(startBridge(bridge, dir, &said));
         FleetDirectory console;
         QVERIFY(console.connectToBroker(as(QStringLiteral("teacher"))));
         // A spectator counts the bridge's states: with persistence off, a

@@ -6,6 +6,8 @@
 
 #include <QMetaObject>
 
+#include <algorithm>
+
 namespace {
 
 // Topics can be up to 64 KiB long: a log line shows the start of one.
@@ -36,16 +38,34 @@ void BridgeInbox::receive(const QString &topicText, const QByteArray &payload, b
                qPrintable(cut(topicText)));
         return;
     }
-    Message m;
-    m.topic = *topic;
-    m.payload = payload;
-    m.arrivedMs = now;
     int lane = Commands;
     if (topic->kind == K::StopAll)
         lane = Stops;
     else if (topic->kind == K::Control || topic->kind == K::Takeover)
         lane = Control;
-
+    {
+        // The sender's share, before its message costs a parse.
+        QMutexLocker lock(&m_mutex);
+        if (lane != Stops && m_waitingFrom.value(topic->client) >= kMaxWaitingPerSender) {
+            if (lane != Commands || topic->client != m_controller)
+                return dropLocked(topic->client);
+            // The controller's newest command replaces its oldest.
+            auto &commands = m_lanes[Commands];
+            const auto oldest = std::find_if(commands.begin(), commands.end(),
+                                             [&](const Message &m) { return m.topic.client == topic->client; });
+            if (oldest == commands.end())
+                return dropLocked(topic->client); // its share is control messages
+            commands.erase(oldest);
+            --m_waitingFrom[topic->client];
+            ++m_dropped;
+            ++m_droppedTotal;
+            m_lastDroppedFrom = topic->client;
+        }
+    }
+    Message m;
+    m.topic = *topic;
+    m.payload = payload;
+    m.arrivedMs = now;
     if (topic->kind == K::Command)
         m.command = mqtt::CommandMessage::fromJson(payload, &m.id, &m.error);
     QMutexLocker lock(&m_mutex);
@@ -62,11 +82,14 @@ void BridgeInbox::receive(const QString &topicText, const QByteArray &payload, b
             m.tooSoon = true;
         }
     }
-    if (m_lanes[lane].size() >= kMaxWaiting) {
-        ++m_dropped;
-        m_lastDroppedFrom = topic->client;
-        return;
-    }
+    if (m_lanes[lane].size() >= kMaxWaiting
+        || (lane != Stops && m_waitingFrom.value(topic->client) >= kMaxWaitingPerSender))
+        return dropLocked(topic->client);
+    if (lane == Stops)
+        for (Message &waiting : m_lanes[Commands])
+            waiting.stoppedAfter = true;
+    else
+        ++m_waitingFrom[topic->client];
     m_lanes[lane].push_back(std::move(m));
     if (!m_turnPosted) {
         m_turnPosted = true;
@@ -74,23 +97,52 @@ void BridgeInbox::receive(const QString &topicText, const QByteArray &payload, b
     }
 }
 
+void BridgeInbox::dropLocked(const QString &from)
+{
+    ++m_dropped;
+    ++m_droppedTotal;
+    m_lastDroppedFrom = from;
+}
+
+BridgeInbox::Message BridgeInbox::popLocked(int lane)
+{
+    Message m = std::move(m_lanes[lane].front());
+    m_lanes[lane].pop_front();
+    if (lane != Stops) {
+        const auto it = m_waitingFrom.find(m.topic.client);
+        if (it != m_waitingFrom.end() && --*it <= 0)
+            m_waitingFrom.erase(it);
+    }
+    return m;
+}
+
 bool BridgeInbox::takeNext(int lane, Message *out)
 {
     QMutexLocker lock(&m_mutex);
     if (m_lanes[lane].empty())
         return false;
-    *out = std::move(m_lanes[lane].front());
-    m_lanes[lane].pop_front();
+    *out = popLocked(lane);
     return true;
+}
+
+bool BridgeInbox::takeStopOr(int lane, Message *out)
+{
+    QMutexLocker lock(&m_mutex);
+    for (int l : {int(Stops), lane})
+        if (!m_lanes[l].empty()) {
+            *out = popLocked(l);
+            return true;
+        }
+    return false;
 }
 
 void BridgeInbox::deliverUrgent()
 {
+    // A stop that comes while control messages are read goes before the next.
     Message m;
-    for (int lane : {Stops, Control})
-        while (takeNext(lane, &m))
-            if (m_handler)
-                m_handler(m);
+    while (takeStopOr(Control, &m))
+        if (m_handler)
+            m_handler(m);
 }
 
 void BridgeInbox::deliverTurn()
@@ -101,8 +153,9 @@ void BridgeInbox::deliverTurn()
         // One line a second at most, however long the flood.
         if (m_dropped > 0 && m_clock.nowMs() - m_droppedLoggedMs >= 1000) {
             m_droppedLoggedMs = m_clock.nowMs();
-            qCWarning(lcBridge, "dropped %d messages: more than %d waiting in a lane (the last from %s)", m_dropped,
-                      kMaxWaiting, qPrintable(cut(m_lastDroppedFrom)));
+            qCWarning(lcBridge,
+                      "dropped %d messages unread: a client had %d waiting, or a lane %d (the last from %s)",
+                      m_dropped, kMaxWaitingPerSender, kMaxWaiting, qPrintable(cut(m_lastDroppedFrom)));
             m_dropped = 0;
         }
     }
@@ -118,6 +171,12 @@ void BridgeInbox::deliverTurn()
         m_turnPosted = true;
         threads::queueCall(this, [this] { deliverTurn(); });
     }
+}
+
+qint64 BridgeInbox::droppedCount() const
+{
+    QMutexLocker lock(&m_mutex);
+    return m_droppedTotal;
 }
 
 qsizetype BridgeInbox::waiting() const

@@ -16,14 +16,19 @@
 // The bridge's messages on their way from libmosquitto's network thread to
 // the bridge's own (docs/mqtt.md, "Limits"). Each is timed by the lease
 // clock as it arrives and waits in one of three lanes, read in this order:
-// stops, control messages, commands. Every stop and control message is read
-// before the next few commands, so no amount of other traffic delays a stop
-// or a heartbeat. Each lane holds at most kMaxWaiting messages: a flood
-// loses its own newest messages, and memory stays bounded.
+// stops, control messages, commands. Waiting stops are read before every
+// other message, so nothing a client sends puts itself ahead of a stop:
+// behind a stop there is at most the one message being read. Before a
+// message is parsed, its sender's share is checked: a client has at most
+// kMaxWaitingPerSender messages waiting, so one client's flood loses its
+// own messages and never another's (the controller's newest commands
+// replace its oldest, so its last word, a stop included, always gets in).
+// Each lane holds at most kMaxWaiting messages, and memory stays bounded.
 class BridgeInbox : public QObject {
     Q_OBJECT
 public:
     static constexpr int kMaxWaiting = 256;      // per lane
+    static constexpr int kMaxWaitingPerSender = 16; // control messages and commands, per client
     static constexpr int kCommandsPerTurn = 16;  // then timers and frames get their turn
     static constexpr int kStopIntervalMs = 200;  // per client, unless it holds control
 
@@ -33,6 +38,9 @@ public:
         qint64 arrivedMs = 0;
         // A stop from a client that sent one less than kStopIntervalMs ago.
         bool tooSoon = false;
+        // A command that arrived before a stop that was read before it: sent
+        // now, it would undo the stop.
+        bool stoppedAfter = false;
         // A command message, read once as it arrives: the request, or its
         // id (as far as it could be read) and why it is no request.
         std::optional<mqtt::CommandMessage> command;
@@ -55,13 +63,21 @@ public:
     // On the bridge's thread: every waiting stop and control message.
     void deliverUrgent();
     qsizetype waiting() const;
+    // Messages dropped for a full lane or a sender over its share, since
+    // the start.
+    qint64 droppedCount() const;
 
 private:
     enum Lane { Stops, Control, Commands, LaneCount };
     // Urgent messages, then a few commands; comes back for the rest.
     void deliverTurn();
     bool takeNext(int lane, Message *out);
+    // A stop if one waits, else the next message of `lane`.
+    bool takeStopOr(int lane, Message *out);
     qsizetype waitingLocked() const;
+    void dropLocked(const QString &from);
+    // Takes the front of `lane`, keeping its sender's share.
+    Message popLocked(int lane);
 
     oilink::Clock &m_clock;
     const QString m_robot;
@@ -69,7 +85,9 @@ private:
     mutable QMutex m_mutex;
     std::deque<Message> m_lanes[LaneCount];
     bool m_turnPosted = false;
-    int m_dropped = 0;
+    int m_dropped = 0; // since the last log line
+    qint64 m_droppedTotal = 0;
+    QHash<QString, int> m_waitingFrom; // per client: its control messages and commands waiting
     qint64 m_droppedLoggedMs = -1000000;
     QString m_lastDroppedFrom;
     QString m_controller;

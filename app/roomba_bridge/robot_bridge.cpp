@@ -388,6 +388,9 @@ void RobotBridge::handleCommand(const BridgeInbox::Message &message)
         tellControllerOfStop(client);
         return reply(client, {{"id", id}, {"ok", true}});
     }
+    if (message.stoppedAfter)
+        return refuse(QStringLiteral("a stop came after this command, before it could be read: it was not sent, so "
+                                     "that it cannot undo the stop; send it again to go on"));
     if (isGoalCommand(request->command)) {
         handleGoal(client, id, *request);
         return;

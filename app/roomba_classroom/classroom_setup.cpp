@@ -283,23 +283,34 @@ QByteArray acl(const Request &r)
                             "topic read roomba/%2/takeover/+\n"
                             "topic read roomba/fleet/stop\n\n")
                  .arg(bridgeAccount(robot), robot, stopLineAccount(robot));
+    // Each robot by name, never `+`: an account may keep a retained message
+    // on every topic it may write, so with `+` one student could fill the
+    // broker under made-up robot names. Named, it keeps at most one message
+    // (max_packet_size) per lane of its own.
+    const auto lanes = [&r](const QString &account, const QStringList &kinds) {
+        QString t;
+        for (const QString &robot : r.robots)
+            for (const QString &kind : kinds)
+                t += QStringLiteral("topic write roomba/%1/%2/%3\n").arg(robot, kind, account);
+        return t;
+    };
     a += QStringLiteral("# The teacher watches everything, drives like a student, takes control from\n"
-                        "# whoever holds it, and stops the whole fleet.\n"
+                        "# whoever holds it, and stops the whole fleet. Every robot is named: an\n"
+                        "# account may keep a retained message on each topic it writes, so no\n"
+                        "# account may write under a robot that is not in the class.\n"
                         "user %1\n"
                         "topic read roomba/#\n"
-                        "topic write roomba/+/command/%1\n"
-                        "topic write roomba/+/control/%1\n"
-                        "topic write roomba/+/takeover/%1\n"
+                        "%2"
                         "topic write roomba/fleet/stop\n\n")
-             .arg(r.teacher);
+             .arg(r.teacher, lanes(r.teacher, {QStringLiteral("command"), QStringLiteral("control"),
+                                                QStringLiteral("takeover")}));
     a += QStringLiteral("# Students watch everything, and write commands and control messages under\n"
                         "# their own name only, so nobody can speak for somebody else.\n");
     for (const QString &s : r.students)
         a += QStringLiteral("user %1\n"
                             "topic read roomba/#\n"
-                            "topic write roomba/+/command/%1\n"
-                            "topic write roomba/+/control/%1\n\n")
-                 .arg(s);
+                            "%2\n")
+                 .arg(s, lanes(s, {QStringLiteral("command"), QStringLiteral("control")}));
     if (!r.spectators.isEmpty())
         a += QStringLiteral("# Spectators watch and write nothing.\n");
     for (const QString &s : r.spectators)

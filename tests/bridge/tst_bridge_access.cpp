@@ -119,6 +119,32 @@ private slots:
         QTRY_VERIFY(rig.recording.written().endsWith(rig.stopBytes()));
     }
 
+    // A student keeps retained messages only on its own lanes of the
+    // class's robots: under made-up robot names the broker keeps nothing,
+    // so no account can fill it.
+    void noAccountKeepsMessagesUnderAMadeUpRobot()
+    {
+        ConsoleClient alice(QStringLiteral("alice"), as(QStringLiteral("alice")));
+        QVERIFY(alice.connected());
+        for (int i = 0; i < 50; ++i)
+            QVERIFY(alice.client.publish(topics::command(QStringLiteral("ghost%1").arg(i), QStringLiteral("alice")),
+                                         QByteArray(4000, 'x'), 1, true));
+        QVERIFY(alice.client.publish(topics::command(QStringLiteral("r1"), QStringLiteral("alice")), json({{"kept", true}}), 1, true));
+        // After alice's publishes: a watcher that subscribes now gets what
+        // the broker kept, then the teacher's live marker.
+        QSignalSpy sent(&alice.client, &MqttClient::subscribed);
+        alice.client.subscribe(QStringLiteral("roomba/barrier"));
+        QTRY_VERIFY_WITH_TIMEOUT(!sent.isEmpty(), 5000);
+        ConsoleClient teacher(QStringLiteral("teacher"), as(QStringLiteral("teacher")),
+                              {QStringLiteral("roomba/+/command/+")});
+        QTRY_VERIFY_WITH_TIMEOUT(teacher.client.isSubscribed(), 5000);
+        QVERIFY(teacher.client.publish(topics::command(QStringLiteral("r1"), QStringLiteral("teacher")), json({{"marker", true}}), 1));
+        QTRY_VERIFY_WITH_TIMEOUT(!teacher.on(topics::command(QStringLiteral("r1"), QStringLiteral("teacher"))).isEmpty(), 5000);
+        QCOMPARE(teacher.on(topics::command(QStringLiteral("r1"), QStringLiteral("alice"))).size(), 1);
+        for (const QList<QVariant> &m : std::as_const(teacher.received))
+            QVERIFY2(!m.at(0).toString().contains(QLatin1String("ghost")), qPrintable(m.at(0).toString()));
+    }
+
     // Another account connecting with the bridge's client id gets its own
     // (its account name): the bridge stays on the broker and answers.
     void aBridgesClientIdCannotBeBorrowed()

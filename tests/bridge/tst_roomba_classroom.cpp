@@ -67,6 +67,8 @@ class TestRoombaClassroom : public QObject {
             return account == QLatin1String("teacher");
         const QStringList t = topic.split(QLatin1Char('/')); // roomba NAME KIND [CLIENT]
         const QString robot = t.value(1), kind = t.value(2), client = t.value(3);
+        if (robot != QLatin1String("r1") && robot != QLatin1String("r2"))
+            return false; // no robot of the class: nobody may keep messages there
         if (account == QLatin1String("teacher"))
             return client == account
                    && (kind == QLatin1String("command") || kind == QLatin1String("control") || kind == QLatin1String("takeover"));
@@ -290,7 +292,7 @@ private slots:
             QStringList names{account, account == QLatin1String("alice") ? QStringLiteral("bob") : QStringLiteral("alice"),
                               QStringLiteral("teacher")};
             names.removeDuplicates();
-            for (const QString &robot : {QStringLiteral("r1"), QStringLiteral("r2")}) {
+            for (const QString &robot : {QStringLiteral("r1"), QStringLiteral("r2"), QStringLiteral("ghost")}) {
                 QStringList tried{topics::state(robot), topics::telemetry(robot), topics::stats(robot),
                                   topics::reply(robot, QStringLiteral("alice"))};
                 for (const QString &name : std::as_const(names))

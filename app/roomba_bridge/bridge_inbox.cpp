@@ -43,23 +43,21 @@ void BridgeInbox::receive(const QString &topicText, const QByteArray &payload, b
         lane = Stops;
     else if (topic->kind == K::Control || topic->kind == K::Takeover)
         lane = Control;
+    // Only a stop may pass the controller's rate: anything else of its past
+    // that is dropped once read.
+    bool onlyAStop = false;
     {
-        // The sender's share, before its message costs a parse.
+        // The sender's rate and share, before its message costs a parse.
         QMutexLocker lock(&m_mutex);
-        if (lane != Stops && m_waitingFrom.value(topic->client) >= kMaxWaitingPerSender) {
-            if (lane != Commands || topic->client != m_controller)
+        if (lane != Stops) {
+            const bool controller = topic->client == m_controller;
+            const bool overRate = !withinRateLocked(topic->client, now);
+            const bool overShare = m_waitingFrom.value(topic->client) >= kMaxWaitingPerSender;
+            if ((overRate || overShare) && (lane != Commands || !controller))
                 return dropLocked(topic->client);
-            // The controller's newest command replaces its oldest.
-            auto &commands = m_lanes[Commands];
-            const auto oldest = std::find_if(commands.begin(), commands.end(),
-                                             [&](const Message &m) { return m.topic.client == topic->client; });
-            if (oldest == commands.end())
+            onlyAStop = overRate;
+            if (overShare && !overRate && !dropOldestCommandLocked(topic->client))
                 return dropLocked(topic->client); // its share is control messages
-            commands.erase(oldest);
-            --m_waitingFrom[topic->client];
-            ++m_dropped;
-            ++m_droppedTotal;
-            m_lastDroppedFrom = topic->client;
         }
     }
     Message m;
@@ -82,6 +80,12 @@ void BridgeInbox::receive(const QString &topicText, const QByteArray &payload, b
             m.tooSoon = true;
         }
     }
+    if (lane == Stops && !topic->client.isEmpty()
+        && std::any_of(m_lanes[Stops].begin(), m_lanes[Stops].end(),
+                       [&](const Message &w) { return w.topic.client == topic->client; }))
+        return dropLocked(topic->client); // its stop already waits: one more says nothing new
+    if (onlyAStop && lane != Stops)
+        return dropLocked(topic->client);
     if (m_lanes[lane].size() >= kMaxWaiting
         || (lane != Stops && m_waitingFrom.value(topic->client) >= kMaxWaitingPerSender))
         return dropLocked(topic->client);
@@ -95,6 +99,34 @@ void BridgeInbox::receive(const QString &topicText, const QByteArray &payload, b
         m_turnPosted = true;
         threads::queueCall(this, [this] { deliverTurn(); });
     }
+}
+
+bool BridgeInbox::withinRateLocked(const QString &client, qint64 nowMs)
+{
+    if (m_budgets.size() > 4 * kMaxWaiting && !m_budgets.contains(client))
+        m_budgets.clear(); // made-up client names must not grow it for ever
+    auto it = m_budgets.find(client);
+    if (it == m_budgets.end())
+        it = m_budgets.insert(client, {double(kBurst), nowMs});
+    it->tokens = std::min(double(kBurst), it->tokens + double(nowMs - it->atMs) * kMessagesPerSecond / 1000.0);
+    it->atMs = nowMs;
+    if (it->tokens < 1)
+        return false;
+    it->tokens -= 1;
+    return true;
+}
+
+bool BridgeInbox::dropOldestCommandLocked(const QString &client)
+{
+    auto &commands = m_lanes[Commands];
+    const auto oldest =
+        std::find_if(commands.begin(), commands.end(), [&](const Message &m) { return m.topic.client == client; });
+    if (oldest == commands.end())
+        return false;
+    commands.erase(oldest);
+    --m_waitingFrom[client];
+    dropLocked(client);
+    return true;
 }
 
 void BridgeInbox::dropLocked(const QString &from)

@@ -19,16 +19,22 @@
 // stops, control messages, commands. Waiting stops are read before every
 // other message, so nothing a client sends puts itself ahead of a stop:
 // behind a stop there is at most the one message being read. Before a
-// message is parsed, its sender's share is checked: a client has at most
-// kMaxWaitingPerSender messages waiting, so one client's flood loses its
-// own messages and never another's (the controller's newest commands
-// replace its oldest, so its last word, a stop included, always gets in).
-// Each lane holds at most kMaxWaiting messages, and memory stays bounded.
+// message is parsed, its sender's rate and share are checked: a client's
+// control messages and commands come at most kMessagesPerSecond (after a
+// burst of kBurst), and at most kMaxWaitingPerSender wait, so one client's
+// flood loses its own messages, never another's, and costs the bridge's
+// thread next to nothing. The controller's stops pass its rate (one waits
+// at a time), and its newest commands replace its oldest, so its last word
+// always gets in. Each lane holds at most kMaxWaiting messages, and memory
+// stays bounded.
 class BridgeInbox : public QObject {
     Q_OBJECT
 public:
     static constexpr int kMaxWaiting = 256;      // per lane
     static constexpr int kMaxWaitingPerSender = 16; // control messages and commands, per client
+    // A heartbeat is 10 a second, a drive pad's drives 20 to 50.
+    static constexpr int kMessagesPerSecond = 200; // per client
+    static constexpr int kBurst = 100;
     static constexpr int kCommandsPerTurn = 16;  // then timers and frames get their turn
     static constexpr int kStopIntervalMs = 200;  // per client, unless it holds control
 
@@ -76,6 +82,10 @@ private:
     bool takeStopOr(int lane, Message *out);
     qsizetype waitingLocked() const;
     void dropLocked(const QString &from);
+    // Takes one of `client`'s messages from its rate; false when it is spent.
+    bool withinRateLocked(const QString &client, qint64 nowMs);
+    // The controller's newest command replaces its oldest; false if none waits.
+    bool dropOldestCommandLocked(const QString &client);
     // Takes the front of `lane`, keeping its sender's share.
     Message popLocked(int lane);
 
@@ -88,6 +98,11 @@ private:
     int m_dropped = 0; // since the last log line
     qint64 m_droppedTotal = 0;
     QHash<QString, int> m_waitingFrom; // per client: its control messages and commands waiting
+    struct Budget {
+        double tokens = 0;
+        qint64 atMs = 0;
+    };
+    QHash<QString, Budget> m_budgets; // per client: what is left of its rate
     qint64 m_droppedLoggedMs = -1000000;
     QString m_lastDroppedFrom;
     QString m_controller;

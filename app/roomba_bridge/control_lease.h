@@ -3,6 +3,7 @@
 
 #include "link_clock.h"
 
+#include <QHash>
 #include <QObject>
 #include <QString>
 
@@ -26,16 +27,26 @@ public:
     QString holder() const { return m_holder; }
     bool isHeldBy(const QString &client) const { return !m_holder.isEmpty() && m_holder == client; }
 
-    // The times are when the message arrived (the clock's, by default now):
-    // a heartbeat that waited in a queue counts from its arrival.
+    // A heartbeat's time, on this clock: when it arrived (by default now),
+    // or, when the client says when it sent it (`sentMs`, on its own clock),
+    // when it was sent. The client's clock is put on this one by the
+    // shortest transit seen (arrival minus sending), which may grow 1 ms a
+    // second for the two clocks' drift, and is kept per client from one
+    // control to the next; a heartbeat never counts later than its arrival. So a heartbeat that waited behind a flood or a huge
+    // message in the broker's queue counts from when it was sent, and the
+    // lease ends 300 ms after the holder's last heartbeat left it.
+    struct Beat {
+        std::optional<qint64> arrivedMs;
+        std::optional<qint64> sentMs;
+    };
     // Control for `client` if nobody holds it or it already does.
-    bool take(const QString &client, std::optional<qint64> arrivedMs = {});
+    bool take(const QString &client, Beat beat = {});
     // The heartbeat; false unless `client` holds control.
-    bool keep(const QString &client, std::optional<qint64> arrivedMs = {});
+    bool keep(const QString &client, Beat beat = {});
     // False unless `client` held control.
     bool release(const QString &client);
     // Control for `client` whoever holds it; returns the former holder.
-    QString takeOver(const QString &client, std::optional<qint64> arrivedMs = {});
+    QString takeOver(const QString &client, Beat beat = {});
     // Nobody holds control any more (stop all, the broker gone); returns the former holder.
     QString free();
 
@@ -52,12 +63,19 @@ signals:
     void expired(const QString &formerHolder);
 
 private:
-    void grant(const QString &client, std::optional<qint64> arrivedMs);
+    void grant(const QString &client, Beat beat);
     void wakeAtHeartbeatDue();
+    qint64 beatTime(const QString &client, Beat beat);
 
     oilink::Clock &m_clock;
     oilink::ClockTimer m_alarm; // when the holder's heartbeat is due
     QString m_holder;
     qint64 m_lastBeatMs = 0;
+    // Each client's shortest transit so far, and when it was seen.
+    struct Transit {
+        qint64 ms = 0;
+        qint64 seenMs = 0;
+    };
+    QHash<QString, Transit> m_transits;
     std::function<void()> m_beforeJudging;
 };

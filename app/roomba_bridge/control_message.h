@@ -12,6 +12,10 @@
 enum class ControlAction { Take, Keep, Release };
 // A take may say which program asks ("program": "square.py", a student's
 // program through the Python library), for the fleet view: `program` gets
-// it, cut to 64 printable characters, or empty.
+// it, cut to 64 printable characters, or empty. Any of them may say when
+// the client sent it, in milliseconds on a clock of its own that never goes
+// back ("sent_ms", a whole number from 0 to 2^53): `sentMs` gets it, or
+// nothing (docs/mqtt.md, "Control").
 std::optional<ControlAction> controlActionFromJson(const QByteArray &payload, QString *error,
-                                                   QString *program = nullptr);
+                                                   QString *program = nullptr,
+                                                   std::optional<qint64> *sentMs = nullptr);

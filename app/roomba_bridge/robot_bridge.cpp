@@ -452,9 +452,11 @@ void RobotBridge::handleControl(const QString &client, const QByteArray &payload
         replyControl(client, false, why);
     };
     QString error, program;
-    const std::optional<ControlAction> action = controlActionFromJson(payload, &error, &program);
+    std::optional<qint64> sentMs;
+    const std::optional<ControlAction> action = controlActionFromJson(payload, &error, &program, &sentMs);
     if (!action)
         return refuse(error);
+    const ControlLease::Beat beat{arrivedMs, sentMs};
     // Said with each take: a program the holder runs, or none (a console).
     const auto holdsWith = [&](const QString &holder) {
         if (m_lease.holder() == holder && std::exchange(m_program, program) != program)
@@ -463,7 +465,7 @@ void RobotBridge::handleControl(const QString &client, const QByteArray &payload
     switch (*action) {
     case ControlAction::Take:
         if (takeover) {
-            const QString former = m_lease.takeOver(client, arrivedMs);
+            const QString former = m_lease.takeOver(client, beat);
             if (!former.isEmpty() && former != client) {
                 qCInfo(lcBridge, "takeover: %s takes control from %s", qPrintable(client), qPrintable(former));
                 endGoal("takeover", QStringLiteral("%1 took control").arg(client), client);
@@ -476,12 +478,12 @@ void RobotBridge::handleControl(const QString &client, const QByteArray &payload
         if (m_stopLine && !m_stopLine->isSubscribed())
             return refuse(QStringLiteral("the bridge cannot hear stop all yet (its stop line is not connected): "
                                          "take control again in a moment"));
-        if (!m_lease.take(client, arrivedMs))
+        if (!m_lease.take(client, beat))
             return refuse(QStringLiteral("%1 has control").arg(m_lease.holder()));
         holdsWith(client);
         return replyControl(client, true);
     case ControlAction::Keep:
-        if (!m_lease.keep(client, arrivedMs))
+        if (!m_lease.keep(client, beat))
             return refuse(m_lease.holder().isEmpty() ? QStringLiteral("nobody has control: take it first")
                                                      : QStringLiteral("%1 has control").arg(m_lease.holder()));
         return replyControl(client, true);

@@ -501,7 +501,9 @@ class Robot:
                 self._publish_control("keep")
 
     def _publish_control(self, action, qos=0):
-        message = {"action": action}
+        # When it leaves: a heartbeat that waits in the broker's queue counts
+        # from here, not from when the bridge reads it (docs/mqtt.md, "Control").
+        message = {"action": action, "sent_ms": int(time.monotonic() * 1000)}
         if action == "take":
             # The fleet view shows whose program holds the robot.
             message["program"] = os.path.basename(sys.argv[0] or "python")[:64] or "python"

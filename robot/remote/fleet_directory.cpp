@@ -10,6 +10,8 @@
 #include <QJsonDocument>
 #include <QJsonParseError>
 
+#include <chrono>
+
 FleetDirectory::FleetDirectory(QObject *parent) : QObject(parent)
 {
     oilink::registerLinkMetaTypes();
@@ -247,7 +249,12 @@ void FleetDirectory::publishCommand(const QString &robot, const QJsonObject &com
 
 void FleetDirectory::publishControl(const QString &robot, const QString &action)
 {
-    publishJson(mqtt::topics::control(robot, m_clientName), QJsonObject{{QStringLiteral("action"), action}}, 1);
+    // When it leaves: a heartbeat that waits in the broker's queue counts
+    // from here, not from when the bridge reads it (docs/mqtt.md, "Control").
+    const qint64 sentMs =
+        std::chrono::duration_cast<std::chrono::milliseconds>(std::chrono::steady_clock::now().time_since_epoch()).count();
+    publishJson(mqtt::topics::control(robot, m_clientName),
+                QJsonObject{{QStringLiteral("action"), action}, {QStringLiteral("sent_ms"), double(sentMs)}}, 1);
 }
 
 #include "moc_fleet_directory.cpp"

@@ -74,6 +74,25 @@ private slots:
         QCOMPARE(from.count(QStringLiteral("bob")), BridgeInbox::kMaxWaitingPerSender);
     }
 
+    // bob sends a control message every millisecond for two seconds (2,001
+    // of them, the first at 0 ms and the last at 2,000), each
+    // read at once: his rate lets 200 a second through after a burst of 100,
+    // and the rest are dropped before they are parsed.
+    void aClientsRateIsBounded()
+    {
+        ManualClock clock;
+        BridgeInbox inbox(clock, QStringLiteral("r1"));
+        int read = 0;
+        inbox.setHandler([&](const BridgeInbox::Message &) { ++read; });
+        for (int ms = 0; ms <= 2000; ++ms) {
+            inbox.receive(mqtt::topics::control(QStringLiteral("r1"), QStringLiteral("bob")), take(), false);
+            drain(inbox);
+            clock.advance(1);
+        }
+        QCOMPARE(read, BridgeInbox::kBurst + 2 * BridgeInbox::kMessagesPerSecond);
+        QCOMPARE(inbox.droppedCount(), 2001 - read);
+    }
+
     // The controller sends drives faster than they are read: its newest
     // replace its oldest, so the last one it sent is the last one read.
     void theControllersNewestCommandsGetIn()

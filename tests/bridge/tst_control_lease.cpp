@@ -53,6 +53,45 @@ private slots:
         QCOMPARE(expired.count(), 1);
     }
 
+    // alice's heartbeats say when she sent them. The last one waits 190 ms
+    // in the broker's queue (behind a flood, or a huge message): it counts
+    // from when it was sent, by the shortest transit seen, so the lease ends
+    // 300 ms after it left her, not 300 ms after it arrived.
+    void aLateHeartbeatCountsFromWhenItWasSent()
+    {
+        ManualClock clock;
+        ControlLease lease(clock);
+        QSignalSpy expired(&lease, &ControlLease::expired);
+        const qint64 start = clock.nowMs();
+        const qint64 sentOffset = -1'000'000; // her clock is not ours
+        QVERIFY(lease.take(QStringLiteral("alice"), {start + 4, start + sentOffset}));
+        clock.advance(100);
+        QVERIFY(lease.keep(QStringLiteral("alice"), {start + 105, start + 100 + sentOffset}));
+        clock.advance(290); // sent at 200, here at 390
+        QVERIFY(lease.keep(QStringLiteral("alice"), {start + 390, start + 200 + sentOffset}));
+        clock.advance(113); // 503: 300 ms after 200 + the shortest transit, 4 ms
+        QCOMPARE(expired.count(), 0);
+        clock.advance(1);
+        QCOMPARE(expired.count(), 1);
+    }
+
+    // A client cannot stretch its lease by saying it sent a heartbeat later
+    // than it did: a heartbeat never counts later than its arrival.
+    void aHeartbeatNeverCountsLaterThanItsArrival()
+    {
+        ManualClock clock;
+        ControlLease lease(clock);
+        QSignalSpy expired(&lease, &ControlLease::expired);
+        const qint64 start = clock.nowMs();
+        QVERIFY(lease.take(QStringLiteral("mallory"), {start, start}));
+        clock.advance(100);
+        QVERIFY(lease.keep(QStringLiteral("mallory"), {start + 100, start + 100 + 60'000}));
+        clock.advance(299);
+        QCOMPARE(expired.count(), 0);
+        clock.advance(1);
+        QCOMPARE(expired.count(), 1);
+    }
+
     void controlMessages()
     {
         QString error;
@@ -62,6 +101,16 @@ private slots:
         QVERIFY(!controlActionFromJson(R"({"action":"steal"})", &error));
         QVERIFY(error.contains(QLatin1String("\"take\", \"keep\" or \"release\"")));
         QVERIFY(!controlActionFromJson("take", &error));
+        std::optional<qint64> sent;
+        QCOMPARE(controlActionFromJson(R"({"action":"keep","sent_ms":12345})", &error, nullptr, &sent), ControlAction::Keep);
+        QCOMPARE(sent, std::optional<qint64>(12345));
+        QCOMPARE(controlActionFromJson(R"({"action":"keep"})", &error, nullptr, &sent), ControlAction::Keep);
+        QVERIFY(!sent);
+        for (const char *bad : {R"({"action":"keep","sent_ms":-1})", R"({"action":"keep","sent_ms":1.5})",
+                                R"({"action":"keep","sent_ms":"1"})", R"({"action":"keep","sent_ms":1e300})"}) {
+            QVERIFY2(!controlActionFromJson(bad, &error, nullptr, &sent), bad);
+            QVERIFY(error.contains(QLatin1String("sent_ms")));
+        }
     }
 };
 

@@ -94,29 +94,34 @@ struct BridgeRig {
     QByteArray stopBytes() const { return toBytes(oi::CommandEncoder(session.robotProfile()).stopMotion()); }
 };
 
-// A student flooding a robot's command topic as fast as mosquitto_pub can
-// (as mallory), with commands of about `bytes` bytes, from a process group
-// of its own so that the pipe feeding it ends with it.
-struct CommandFlood {
+// A shell command in a process group of its own, ended with its group (so
+// that the pipe feeding a flood ends with it).
+struct ShellLoad {
     QProcess process;
-    CommandFlood(const MosquittoBroker &broker, const QString &robot, int bytes)
+    explicit ShellLoad(const QString &command)
     {
-        const QByteArray line = json({{"id", "flood"}, {"command", "leds"}, {"args", QJsonArray{8, 0, 255}},
-                                      {"pad", QString(std::max(0, bytes - 60), QLatin1Char('x'))}});
         process.setChildProcessModifier([] { ::setpgid(0, 0); });
-        process.start(QStringLiteral("/bin/sh"),
-                      {QStringLiteral("-c"),
-                       QStringLiteral("yes '%1' | mosquitto_pub -l -h 127.0.0.1 -p %2 -i flooder -t %3")
-                           .arg(QString::fromUtf8(line))
-                           .arg(broker.port())
-                           .arg(mqtt::topics::command(robot, QStringLiteral("mallory")))});
+        process.start(QStringLiteral("/bin/sh"), {QStringLiteral("-c"), command});
         process.waitForStarted();
     }
-    ~CommandFlood()
+    ~ShellLoad()
     {
         if (process.processId() > 0)
-            ::kill(-pid_t(process.processId()), SIGTERM);
+            ::kill(-pid_t(process.processId()), SIGKILL);
         process.waitForFinished(3000);
+    }
+};
+
+// A student flooding a robot's command topic as fast as mosquitto_pub can
+// (as mallory), with commands of about `bytes` bytes.
+struct CommandFlood : ShellLoad {
+    CommandFlood(const MosquittoBroker &broker, const QString &robot, int bytes)
+        : ShellLoad(QStringLiteral("yes '%1' | mosquitto_pub -l -h 127.0.0.1 -p %2 -i flooder -t %3")
+                        .arg(QString::fromUtf8(json({{"id", "flood"}, {"command", "leds"}, {"args", QJsonArray{8, 0, 255}},
+                                                     {"pad", QString(std::max(0, bytes - 60), QLatin1Char('x'))}})))
+                        .arg(broker.port())
+                        .arg(mqtt::topics::command(robot, QStringLiteral("mallory"))))
+    {
     }
 };
 

@@ -123,23 +123,6 @@ private:
     std::vector<Write> m_writes;
 };
 
-// A shell command in a process group of its own, ended with its group.
-struct ShellLoad {
-    QProcess process;
-    explicit ShellLoad(const QString &command)
-    {
-        process.setChildProcessModifier([] { ::setpgid(0, 0); });
-        process.start(QStringLiteral("/bin/sh"), {QStringLiteral("-c"), command});
-        process.waitForStarted();
-    }
-    ~ShellLoad()
-    {
-        if (process.processId() > 0)
-            ::kill(-pid_t(process.processId()), SIGKILL);
-        process.waitForFinished(3000);
-    }
-};
-
 class ClassroomOnTheWire {
 public:
     static constexpr int kCore = 0; // the core a Pi's share is taken on
@@ -330,9 +313,12 @@ public:
         send(mqtt::topics::command(QStringLiteral("r1"), m_account), {{"v", 2}, {"id", "safe"}, {"command", "safe"}});
         // Until the robot says it is in Safe, a drive is refused: asked
         // again until it is answered yes, then its bytes at the robot.
+        // A speed of its own each time, so that the drive is never one the
+        // robot is already doing (the teleop sends no drive twice).
+        const int velocity = 100 + 10 * (++m_drives % 10);
         for (int i = 0; i < 50 && !hasReply(QStringLiteral("drive"), true); ++i) {
             send(mqtt::topics::command(QStringLiteral("r1"), m_account),
-                 {{"v", 2}, {"id", "drive"}, {"command", "drive"}, {"fields", QJsonObject{{"velocity", 100}, {"radius", 32768}}}});
+                 {{"v", 2}, {"id", "drive"}, {"command", "drive"}, {"fields", QJsonObject{{"velocity", velocity}, {"radius", 32768}}}});
             if (QTest::qWaitFor([this] { return hasReply(QStringLiteral("drive"), true); }, 100))
                 break;
         }
@@ -340,7 +326,11 @@ public:
             m_why = QStringLiteral("no yes to drive: %1").arg(lastReplies());
             return false;
         }
-        return QTest::qWaitFor([&] { return m_room.wire().firstAfter(QByteArray(1, char(137)), from).has_value(); }, 5000);
+        if (!QTest::qWaitFor([&] { return m_room.wire().firstAfter(QByteArray(1, char(137)), from).has_value(); }, 5000)) {
+            m_why = QStringLiteral("the drive was answered, but its bytes never reached the robot");
+            return false;
+        }
+        return true;
     }
     // The heartbeat after the next one is never sent; the next's time.
     void lapse() { m_lapseNext = true; }
@@ -379,6 +369,7 @@ private:
         return t.join(QLatin1Char(' '));
     }
     QString m_why;
+    int m_drives = 0;
     bool m_lapseNext = false;
     std::optional<WireClock::time_point> m_lastBeat;
 };

@@ -9,7 +9,6 @@
 #include <QTcpServer>
 #include <QTcpSocket>
 #include <QWebSocket>
-#include <QTimer>
 #include <QWebSocketServer>
 #include <QtEndian>
 
@@ -25,9 +24,14 @@ namespace {
 // What a client may send: subscribe and unsubscribe are small. Anything
 // larger is cut off by Qt before it is read.
 constexpr quint64 kMaxClientMessage = 64 * 1024;
-// A handshake is one HTTP request; a peer that sends more, or takes longer, is no client.
+// A handshake is one HTTP request, sent at once; a peer that sends more,
+// or takes longer, is no client.
 constexpr qsizetype kMaxHandshake = 16 * 1024;
-constexpr int kHandshakeMs = 10000;
+constexpr int kHandshakeMs = 2000;
+// Unfinished handshakes one address may have at once. Its newest takes the
+// place of its oldest, so that a peer trickling handshakes holds few slots
+// and cannot keep out a client, even one from the same address.
+constexpr int kHandshakesPerPeer = 4;
 constexpr int kMaxSubscriptions = 4096;
 // Clients at once, handshakes included: each costs a copy of every message.
 constexpr int kMaxConnections = 32;
@@ -147,6 +151,7 @@ bool Server::listen(const ServerAddress &address)
         return false;
     }
     m_webSockets = new QWebSocketServer(m_name, QWebSocketServer::NonSecureMode, this);
+    m_webSockets->setHandshakeTimeout(kHandshakeMs);
     m_webSockets->setSupportedSubprotocols({QString::fromLatin1(kSubprotocol), QString::fromLatin1(kSdkSubprotocol)});
     connect(m_tcp, &QTcpServer::newConnection, this, &Server::onTcpConnection);
     connect(m_webSockets, &QWebSocketServer::newConnection, this, &Server::onWebSocket);
@@ -170,6 +175,7 @@ void Server::close()
         client->socket->deleteLater();
     }
     m_clients.clear();
+    m_handshakes.clear(); // the TCP server's children, deleted with it
     for (const auto &[id, channel] : m_channels)
         channel->subscriptions = 0;
     delete std::exchange(m_webSockets, nullptr);
@@ -209,38 +215,65 @@ QString Server::url() const
 void Server::onTcpConnection()
 {
     while (QTcpSocket *socket = m_tcp->nextPendingConnection()) {
-        if (clientCount() + m_tcp->findChildren<QTcpSocket *>(Qt::FindDirectChildrenOnly).size() > kMaxConnections) {
+        connect(socket, &QTcpSocket::disconnected, socket, &QObject::deleteLater);
+        QList<QTcpSocket *> fromPeer;
+        for (QTcpSocket *other : std::as_const(m_handshakes))
+            if (other->peerAddress() == socket->peerAddress())
+                fromPeer << other;
+        if (fromPeer.size() >= kHandshakesPerPeer)
+            refuseHandshake(fromPeer.first(), QStringLiteral("left its handshake unfinished while its address opened "
+                                                             "%1 more connections")
+                                                  .arg(kHandshakesPerPeer));
+        if (clientCount() + m_handshakes.size() >= kMaxConnections) {
             socket->write("HTTP/1.1 503 Service Unavailable\r\nConnection: close\r\n\r\n");
             socket->disconnectFromHost();
-            connect(socket, &QTcpSocket::disconnected, socket, &QObject::deleteLater);
             emit clientRefused(peerOf(socket), QStringLiteral("came when %1 were connected").arg(kMaxConnections));
             continue;
         }
+        m_handshakes.append(socket);
         connect(socket, &QTcpSocket::readyRead, this, [this, socket] { readHandshake(socket); });
-        connect(socket, &QTcpSocket::disconnected, socket, &QObject::deleteLater);
-        auto *timeout = new QTimer(socket);
+        connect(socket, &QTcpSocket::disconnected, this, [this, socket] { m_handshakes.removeOne(socket); });
+        // On the server's clock, from the connection: trickling bytes does not renew it.
+        auto *timeout = new oilink::ClockTimer(m_clock, socket);
         timeout->setSingleShot(true);
-        connect(timeout, &QTimer::timeout, socket, [socket] { socket->abort(); });
+        connect(timeout, &oilink::ClockTimer::timeout, this, [this, socket] {
+            refuseHandshake(socket, QStringLiteral("did not finish its handshake within %1 s").arg(kHandshakeMs / 1000));
+        });
         timeout->start(kHandshakeMs);
         readHandshake(socket);
     }
+}
+
+// No longer a handshake of ours: handed on or refused.
+void Server::endHandshake(QTcpSocket *socket)
+{
+    m_handshakes.removeOne(socket);
+    socket->disconnect(this);
+    qDeleteAll(socket->findChildren<oilink::ClockTimer *>(Qt::FindDirectChildrenOnly));
+}
+
+void Server::refuseHandshake(QTcpSocket *socket, const QString &why)
+{
+    const QString peer = peerOf(socket);
+    endHandshake(socket);
+    qCWarning(lcFoxglove, "live data server: closed %s, which %s", qPrintable(peer), qPrintable(why));
+    socket->abort();
+    emit clientRefused(peer, why);
 }
 
 void Server::readHandshake(QTcpSocket *socket)
 {
     const QByteArray request = socket->peek(kMaxHandshake);
     if (!request.contains("\r\n\r\n")) {
-        if (request.size() >= kMaxHandshake) {
-            emit clientRefused(peerOf(socket), QStringLiteral("a handshake larger than %1 bytes").arg(kMaxHandshake));
-            socket->abort();
-        }
+        if (request.size() >= kMaxHandshake)
+            refuseHandshake(socket, QStringLiteral("sent a handshake larger than %1 bytes").arg(kMaxHandshake));
         return;
     }
+    endHandshake(socket);
     const QStringList offered = offeredSubprotocols(request);
     if (!offered.contains(QLatin1String(kSubprotocol)) && !offered.contains(QLatin1String(kSdkSubprotocol))) {
         const QString why = offered.isEmpty() ? QStringLiteral("offered no subprotocol")
                                               : QStringLiteral("offered %1").arg(offered.join(QStringLiteral(", ")));
-        socket->disconnect(this);
         socket->write("HTTP/1.1 400 Bad Request\r\nContent-Type: text/plain\r\nConnection: close\r\n\r\n"
                       "Offer the subprotocol foxglove.websocket.v1 or foxglove.sdk.v1.\r\n");
         socket->disconnectFromHost();
@@ -250,10 +283,7 @@ void Server::readHandshake(QTcpSocket *socket)
         emit clientRefused(peerOf(socket), why);
         return;
     }
-    socket->disconnect(this);
     disconnect(socket, &QTcpSocket::disconnected, socket, &QObject::deleteLater);
-    for (QTimer *timer : socket->findChildren<QTimer *>())
-        delete timer;
     socket->setParent(nullptr);
     m_webSockets->handleConnection(socket);
 }

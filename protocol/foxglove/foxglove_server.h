@@ -126,6 +126,8 @@ private:
     struct ChannelState;
     void onTcpConnection();
     void readHandshake(QTcpSocket *socket);
+    void refuseHandshake(QTcpSocket *socket, const QString &why);
+    void endHandshake(QTcpSocket *socket);
     void onWebSocket();
     void onText(Client *client, const QString &text);
     void removeClient(Client *client);
@@ -149,6 +151,8 @@ private:
     QString m_sessionId;
     QMap<QString, QString> m_metadata;
     std::vector<std::unique_ptr<Client>> m_clients;
+    // Connections whose handshake is still coming, oldest first.
+    QList<QTcpSocket *> m_handshakes;
     std::map<ChannelId, std::unique_ptr<ChannelState>> m_channels;
     ChannelId m_nextChannel = 1;
     quint64 m_encodes = 0;

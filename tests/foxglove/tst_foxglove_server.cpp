@@ -251,14 +251,16 @@ private slots:
         QCOMPARE(m_server->clientCount(), 0);
     }
 
-    // Connections that never finish their handshake cannot crowd the server
-    // out: beyond 32 at once, the next is told 503 and closed.
+    // Connections from many peers that never finish their handshake: beyond
+    // 32 at once, the next is told 503 and closed. (All of 127.0.0.0/8 is
+    // this machine: a connection from 127.0.0.N is another peer.)
     void connectionsAreBounded()
     {
         QSignalSpy refused(m_server.get(), &foxglove::Server::clientRefused);
         std::vector<std::unique_ptr<QTcpSocket>> idle;
         for (int i = 0; i < 33; ++i) {
             idle.push_back(std::make_unique<QTcpSocket>());
+            QVERIFY(idle.back()->bind(QHostAddress(QStringLiteral("127.0.0.%1").arg(i + 2))));
             idle.back()->connectToHost(QHostAddress::LocalHost, m_server->port());
             QVERIFY(idle.back()->waitForConnected(kTimeoutMs));
         }
@@ -268,6 +270,46 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(idle.back()->bytesAvailable() || idle.back()->state() != QAbstractSocket::ConnectedState,
                                  kTimeoutMs);
         QVERIFY(idle.back()->readAll().startsWith("HTTP/1.1 503"));
+    }
+
+    // 32 handshakes from one peer, sent a byte at a time, cannot hold the
+    // server: a peer keeps only a few unfinished at once (its oldest give
+    // way to its newest), a real client still gets in, and each handshake
+    // has 2 s on the server's clock.
+    void slowHandshakesCannotKeepAClientOut()
+    {
+        QSignalSpy refused(m_server.get(), &foxglove::Server::clientRefused);
+        const QByteArray request = "GET / HTTP/1.1\r\nHost: 127.0.0.1\r\nUpgrade: websocket\r\n";
+        std::vector<std::unique_ptr<QTcpSocket>> trickles;
+        for (int i = 0; i < 32; ++i) {
+            trickles.push_back(std::make_unique<QTcpSocket>());
+            trickles.back()->connectToHost(QHostAddress::LocalHost, m_server->port());
+            QVERIFY(trickles.back()->waitForConnected(kTimeoutMs));
+            trickles.back()->write(request.left(1));
+        }
+        auto client = connected();
+        QVERIFY2(client, "a real client was kept out");
+        const auto open = [&] {
+            return std::count_if(trickles.begin(), trickles.end(), [](const std::unique_ptr<QTcpSocket> &t) {
+                return t->state() == QAbstractSocket::ConnectedState;
+            });
+        };
+        // A byte each half second of the server's clock, for 2 s.
+        for (int step = 1; step <= 4; ++step) {
+            for (const std::unique_ptr<QTcpSocket> &t : trickles)
+                if (t->state() == QAbstractSocket::ConnectedState)
+                    t->write(request.mid(step, 1));
+            QVERIFY(QTest::qWaitFor([&] { return !trickles.back()->bytesToWrite(); }, kTimeoutMs));
+            m_clock.advance(500);
+            QCoreApplication::processEvents();
+        }
+        QTRY_COMPARE_WITH_TIMEOUT(open(), 0, kTimeoutMs);
+        QStringList why;
+        for (const QList<QVariant> &r : refused)
+            why << r.at(1).toString();
+        QVERIFY2(why.contains("did not finish its handshake within 2 s"), qPrintable(why.join('\n')));
+        QCOMPARE(client->socket.state(), QAbstractSocket::ConnectedState);
+        QCOMPARE(m_server->clientCount(), 1);
     }
 
     void aNewSessionIsToldToEveryClient()

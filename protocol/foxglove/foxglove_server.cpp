@@ -12,6 +12,7 @@
 #include <QWebSocketServer>
 #include <QtEndian>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -22,8 +23,11 @@ namespace foxglove {
 namespace {
 
 // What a client may send: subscribe and unsubscribe are small. Anything
-// larger is cut off by Qt before it is read.
+// larger is refused by Qt from its frame's header, before it is read.
 constexpr quint64 kMaxClientMessage = 64 * 1024;
+// What is read ahead of the requests handled: a client that sends faster
+// than they are handled waits in the kernel, not in our memory.
+constexpr qint64 kReadAhead = 2 * kMaxClientMessage;
 // A handshake is one HTTP request, sent at once; a peer that sends more,
 // or takes longer, is no client.
 constexpr qsizetype kMaxHandshake = 16 * 1024;
@@ -32,9 +36,13 @@ constexpr int kHandshakeMs = 2000;
 // place of its oldest, so that a peer trickling handshakes holds few slots
 // and cannot keep out a client, even one from the same address.
 constexpr int kHandshakesPerPeer = 4;
-constexpr int kMaxSubscriptions = 4096;
 // Clients at once, handshakes included: each costs a copy of every message.
 constexpr int kMaxConnections = 32;
+// What a client's socket is given at a time. The rest waits in the client's
+// queue, where a channel's newer message can still take an older one's place.
+constexpr qint64 kSocketBatch = 64 * 1024;
+// The time message's key in a client's queue; the others are subscription ids.
+constexpr quint64 kTimeKey = quint64(1) << 32;
 
 enum StatusLevel { StatusInfo = 0, StatusWarning = 1, StatusError = 2 };
 enum BinaryOp : quint8 { MessageData = 1, Time = 2 };
@@ -116,10 +124,25 @@ struct Server::ChannelState {
     int subscriptions = 0; // over every client
 };
 
+struct Server::Outgoing {
+    QByteArray bytes;
+    bool text = false;
+    // Data: its subscription (or kTimeKey) and channel, to be sent only if
+    // the subscription still reads that channel when its turn comes.
+    quint64 key = 0;
+    ChannelId channel = 0;
+};
+
 struct Server::Client {
     QWebSocket *socket = nullptr;
     QString peer;
     QHash<quint32, ChannelId> subscriptions; // subscription id → channel
+    // What waits for the socket, by the order it came in (see pump()).
+    std::map<quint64, Outgoing> queue;
+    quint64 nextOrder = 0;
+    qint64 queuedBytes = 0; // in `queue`
+    QHash<quint64, quint64> newest; // key → the order of its newest data still waiting
+    bool gone = false; // dropped or disconnected; erased by reap()
 };
 
 Server::Server(const QString &name, oilink::Clock &clock, QObject *parent)
@@ -168,7 +191,7 @@ bool Server::listen(const ServerAddress &address)
 
 void Server::close()
 {
-    const bool hadClients = !m_clients.empty();
+    const bool hadClients = clientCount() > 0;
     for (const std::unique_ptr<Client> &client : m_clients) {
         client->socket->disconnect(this);
         client->socket->abort();
@@ -294,6 +317,7 @@ void Server::onWebSocket()
         socket->setParent(this);
         socket->setMaxAllowedIncomingMessageSize(kMaxClientMessage);
         socket->setMaxAllowedIncomingFrameSize(kMaxClientMessage);
+        socket->setReadBufferSize(kReadAhead);
         auto client = std::make_unique<Client>();
         client->socket = socket;
         client->peer = peerOf(socket);
@@ -303,48 +327,119 @@ void Server::onWebSocket()
         connect(socket, &QWebSocket::binaryMessageReceived, this, [this, c] {
             sendStatus(c, StatusError, QStringLiteral("this server takes no binary messages (no clientPublish)"));
         });
-        connect(socket, &QWebSocket::disconnected, this, [this, c] { removeClient(c); });
+        connect(socket, &QWebSocket::bytesWritten, this, [this, c] { pump(c); });
+        connect(socket, &QWebSocket::disconnected, this, [this, c] { forget(c); });
         qCInfo(lcFoxglove, "live data server: %s connected (%s)", qPrintable(c->peer), qPrintable(socket->subprotocol()));
+        emit clientCountChanged(clientCount());
         sendServerInfo(c);
         QList<ChannelId> all;
         for (const auto &[id, state] : m_channels)
             all << id;
         advertiseTo(c, all);
-        emit clientCountChanged(clientCount());
     }
 }
 
-void Server::removeClient(Client *client)
+int Server::clientCount() const
 {
-    const auto it = std::find_if(m_clients.begin(), m_clients.end(),
-                                 [client](const std::unique_ptr<Client> &c) { return c.get() == client; });
-    if (it == m_clients.end())
+    return int(std::count_if(m_clients.begin(), m_clients.end(), [](const std::unique_ptr<Client> &c) { return !c->gone; }));
+}
+
+qint64 Server::waitingFor(const Client &client) const
+{
+    return client.gone ? 0 : client.queuedBytes + client.socket->bytesToWrite();
+}
+
+qint64 Server::queuedBytes() const
+{
+    qint64 total = 0;
+    for (const std::unique_ptr<Client> &client : m_clients)
+        total += waitingFor(*client);
+    return total;
+}
+
+// The client ends: its subscriptions and what waits for it at once; the
+// client itself once the event loop comes back (this may be inside a loop
+// over the clients).
+void Server::forget(Client *client)
+{
+    if (client->gone)
         return;
+    client->gone = true;
     client->socket->disconnect(this);
     client->socket->deleteLater();
     for (const quint32 subscription : client->subscriptions.keys())
         unsubscribe(client, subscription);
-    m_clients.erase(it);
+    client->queue.clear();
+    client->queuedBytes = 0;
+    client->newest.clear();
+    QMetaObject::invokeMethod(this, &Server::reap, Qt::QueuedConnection);
     emit clientCountChanged(clientCount());
+}
+
+void Server::reap()
+{
+    std::erase_if(m_clients, [](const std::unique_ptr<Client> &c) { return c->gone; });
 }
 
 void Server::drop(Client *client, const QString &why)
 {
     const QString peer = client->peer;
     qCWarning(lcFoxglove, "live data server: dropped %s: %s", qPrintable(peer), qPrintable(why));
+    forget(client);
     client->socket->abort();
-    removeClient(client);
     emit clientDropped(peer, why);
 }
 
+// Replies, status messages, advertisements: each is sent. A client that
+// does not read them is dropped once what waits for it passes the limit.
 void Server::sendText(Client *client, const QByteArray &json)
 {
-    client->socket->sendTextMessage(QString::fromUtf8(json));
+    if (client->gone)
+        return;
+    client->queuedBytes += json.size();
+    client->queue.emplace(client->nextOrder++, Outgoing{json, true});
+    pump(client);
+    if (const qint64 waiting = waitingFor(*client); waiting > m_limits.queuedBytes)
+        drop(client, QStringLiteral("it does not read what it is sent: %1 bytes wait for it, the limit is %2")
+                         .arg(waiting)
+                         .arg(m_limits.queuedBytes));
 }
 
-void Server::sendBinary(Client *client, const QByteArray &message)
+// Channel data and the time, which never drop a client: a message takes
+// the place of its key's older one still waiting when it is a state (a
+// Latest channel, the time), or when the client has reached its limit.
+void Server::sendData(Client *client, quint64 key, ChannelId channel, const QByteArray &message, bool replaces)
 {
-    client->socket->sendBinaryMessage(message);
+    if (client->gone)
+        return;
+    if (replaces || waitingFor(*client) + message.size() > m_limits.queuedBytes) {
+        if (const auto older = client->newest.constFind(key); older != client->newest.cend()) {
+            const auto it = client->queue.find(older.value());
+            client->queuedBytes -= it->second.bytes.size();
+            client->queue.erase(it);
+        }
+    }
+    client->queuedBytes += message.size();
+    client->newest.insert(key, client->nextOrder);
+    client->queue.emplace(client->nextOrder++, Outgoing{message, false, key, channel});
+    pump(client);
+}
+
+// Gives the socket what waits, in order, while it has little left to write.
+void Server::pump(Client *client)
+{
+    while (!client->gone && !client->queue.empty() && client->socket->bytesToWrite() < kSocketBatch) {
+        const auto first = client->queue.begin();
+        const Outgoing out = std::move(first->second);
+        if (!out.text && client->newest.value(out.key, ~quint64(0)) == first->first)
+            client->newest.remove(out.key);
+        client->queue.erase(first);
+        client->queuedBytes -= out.bytes.size();
+        if (out.text)
+            client->socket->sendTextMessage(QString::fromUtf8(out.bytes));
+        else if (out.key == kTimeKey || client->subscriptions.value(quint32(out.key)) == out.channel)
+            client->socket->sendBinaryMessage(out.bytes); // not for a subscription ended while it waited
+    }
 }
 
 void Server::sendServerInfo(Client *client)
@@ -388,24 +483,7 @@ void Server::onText(Client *client, const QString &text)
     const QJsonObject message = QJsonDocument::fromJson(text.toUtf8(), &parseError).object();
     const QString op = message.value("op").toString();
     if (op == QLatin1String("subscribe")) {
-        for (const QJsonValue &v : message.value("subscriptions").toArray()) {
-            const QJsonObject s = v.toObject();
-            const double id = s.value("id").toDouble(-1), channel = s.value("channelId").toDouble(-1);
-            if (id < 0 || id > std::numeric_limits<quint32>::max() || id != std::floor(id) || channel < 1
-                || channel > std::numeric_limits<quint32>::max() || !m_channels.count(ChannelId(channel))) {
-                sendStatus(client, StatusWarning,
-                           QStringLiteral("cannot subscribe %1 to channel %2: no such channel")
-                               .arg(s.value("id").toVariant().toString(), s.value("channelId").toVariant().toString()));
-                continue;
-            }
-            if (client->subscriptions.contains(quint32(id)) || client->subscriptions.size() >= kMaxSubscriptions) {
-                sendStatus(client, StatusWarning,
-                           QStringLiteral("subscription %1 is already in use (or too many)").arg(quint32(id)));
-                continue;
-            }
-            client->subscriptions.insert(quint32(id), ChannelId(channel));
-            ++m_channels.at(ChannelId(channel))->subscriptions;
-        }
+        subscribe(client, message.value("subscriptions").toArray());
     } else if (op == QLatin1String("unsubscribe")) {
         for (const QJsonValue &v : message.value("subscriptionIds").toArray())
             unsubscribe(client, quint32(v.toDouble(-1)));
@@ -417,6 +495,45 @@ void Server::onText(Client *client, const QString &text)
                                         "unsubscribe)")
                              .arg(op));
     }
+}
+
+// One status message for a request, however many of its entries are
+// refused: what a client causes is bounded by what it sends. A client
+// reads a channel once, so its subscriptions are as many as the channels.
+void Server::subscribe(Client *client, const QJsonArray &subscriptions)
+{
+    int refused = 0;
+    QString first; // why the first refused one was, said only for it
+    for (const QJsonValue &v : subscriptions) {
+        const QJsonObject s = v.toObject();
+        const double id = s.value("id").toDouble(-1), channel = s.value("channelId").toDouble(-1);
+        const bool known = id >= 0 && id <= std::numeric_limits<quint32>::max() && id == std::floor(id) && channel >= 1
+                           && channel <= std::numeric_limits<quint32>::max() && m_channels.count(ChannelId(channel));
+        const bool inUse = known && client->subscriptions.contains(quint32(id));
+        const bool again = known && std::find(client->subscriptions.cbegin(), client->subscriptions.cend(),
+                                              ChannelId(channel)) != client->subscriptions.cend();
+        if (known && !inUse && !again) {
+            client->subscriptions.insert(quint32(id), ChannelId(channel));
+            ++m_channels.at(ChannelId(channel))->subscriptions;
+            continue;
+        }
+        if (refused++)
+            continue;
+        if (!known)
+            first = QStringLiteral("%1 to channel %2: no such channel")
+                        .arg(s.value("id").toVariant().toString(), s.value("channelId").toVariant().toString());
+        else if (inUse)
+            first = QStringLiteral("%1: the id is already in use").arg(quint32(id));
+        else
+            first = QStringLiteral("%1 to channel %2: already subscribed to it").arg(quint32(id)).arg(ChannelId(channel));
+    }
+    if (refused == 1)
+        sendStatus(client, StatusWarning, QStringLiteral("cannot subscribe %1").arg(first));
+    else if (refused > 1)
+        sendStatus(client, StatusWarning, QStringLiteral("cannot subscribe %1 of %2 (the first: %3)")
+                                              .arg(refused)
+                                              .arg(subscriptions.size())
+                                              .arg(first));
 }
 
 Server::ChannelId Server::advertise(const Channel &channel, Delivery delivery)
@@ -524,26 +641,19 @@ void Server::sendNow(ChannelState &channel, quint64 timeNs, const std::function<
     message[0] = char(MessageData);
     qToLittleEndian<quint64>(timeNs, message.data() + 5);
     message += payload;
-    std::vector<Client *> slow;
     for (const std::unique_ptr<Client> &client : m_clients) {
         for (auto it = client->subscriptions.cbegin(); it != client->subscriptions.cend(); ++it) {
             if (it.value() != channel.id)
                 continue;
-            qToLittleEndian<quint32>(it.key(), message.data() + 1);
-            sendBinary(client.get(), message);
+            qToLittleEndian<quint32>(it.key(), message.data() + 1); // leaves alone the copy queued before
+            sendData(client.get(), it.key(), channel.id, message, channel.delivery == Delivery::Latest);
         }
-        if (client->socket->bytesToWrite() > m_limits.queuedBytes)
-            slow.push_back(client.get());
     }
-    for (Client *client : slow)
-        drop(client, QStringLiteral("it reads too slowly (%1 bytes waiting, the limit is %2)")
-                         .arg(client->socket->bytesToWrite())
-                         .arg(m_limits.queuedBytes));
 }
 
 void Server::setTime(quint64 timeNs)
 {
-    if (m_clients.empty())
+    if (clientCount() == 0)
         return;
     const qint64 dueNs = m_timeSentNs == std::numeric_limits<qint64>::min() ? 0 : m_timeSentNs + intervalNs();
     if (m_clock.nowNs() >= dueNs) {
@@ -564,7 +674,7 @@ void Server::sendTime(quint64 timeNs)
     message[0] = char(Time);
     qToLittleEndian<quint64>(timeNs, message.data() + 1);
     for (const std::unique_ptr<Client> &client : m_clients)
-        sendBinary(client.get(), message);
+        sendData(client.get(), kTimeKey, 0, message, true);
 }
 
 void Server::startSession()

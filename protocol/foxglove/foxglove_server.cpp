@@ -109,6 +109,14 @@ std::optional<ServerAddress> ServerAddress::parse(const QString &text, QString *
     return result;
 }
 
+QString ServerAddress::toString() const
+{
+    const QString host = address.protocol() == QAbstractSocket::IPv6Protocol
+                             ? QStringLiteral("[%1]").arg(address.toString())
+                             : address.toString();
+    return QStringLiteral("%1:%2").arg(host).arg(port);
+}
+
 struct Server::ChannelState {
     Channel channel;
     Delivery delivery;
@@ -166,10 +174,11 @@ bool Server::listen(const ServerAddress &address)
     close();
     m_tcp = new QTcpServer(this);
     if (!m_tcp->listen(address.address, address.port)) {
-        m_error = QStringLiteral("cannot serve on %1:%2: %3")
-                      .arg(address.address.toString())
-                      .arg(address.port)
-                      .arg(m_tcp->errorString());
+        m_error = QStringLiteral("cannot serve on %1: %2")
+                      .arg(address.toString(),
+                           m_tcp->serverError() == QAbstractSocket::AddressInUseError
+                               ? QStringLiteral("port %1 is in use by another program").arg(address.port)
+                               : m_tcp->errorString());
         delete std::exchange(m_tcp, nullptr);
         return false;
     }
@@ -226,11 +235,10 @@ QString Server::url() const
 {
     if (!m_tcp)
         return QString();
-    const QHostAddress address = m_tcp->serverAddress();
-    const QString host = address.protocol() == QAbstractSocket::IPv6Protocol
-                             ? QStringLiteral("[%1]").arg(address.toString())
-                             : address.toString();
-    return QStringLiteral("ws://%1:%2").arg(host).arg(m_tcp->serverPort());
+    ServerAddress bound;
+    bound.address = m_tcp->serverAddress();
+    bound.port = m_tcp->serverPort();
+    return QStringLiteral("ws://") + bound.toString();
 }
 
 // The handshake is read here first, so that a client offering neither

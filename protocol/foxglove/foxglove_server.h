@@ -62,6 +62,8 @@ struct ServerAddress {
     QHostAddress address{QHostAddress::LocalHost};
     quint16 port = kDefaultPort;
     static std::optional<ServerAddress> parse(const QString &text, QString *error);
+    // As parse() reads it: "127.0.0.1:8765", "[::1]:8765".
+    QString toString() const;
     // Whether only this machine can connect.
     bool isLoopback() const { return address.isLoopback(); }
 };
@@ -88,7 +90,8 @@ public:
     void setLimits(const Limits &limits) { m_limits = limits; }
     const Limits &limits() const { return m_limits; }
 
-    // Starts serving; false with errorString() naming the address and why.
+    // Starts serving; false with errorString() naming the address and why
+    // ("port 8765 is in use by another program").
     bool listen(const ServerAddress &address);
     void close();
     bool isListening() const;

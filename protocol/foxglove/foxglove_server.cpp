@@ -43,9 +43,17 @@ constexpr int kMaxConnections = 32;
 constexpr qint64 kSocketBatch = 64 * 1024;
 // The time message's key in a client's queue; the others are subscription ids.
 constexpr quint64 kTimeKey = quint64(1) << 32;
+// What a message waiting in a client's queue costs: its bytes and the
+// queue's own memory for it, so that many small ones count for what they hold.
+constexpr qint64 kEntryCost = 128;
 
 enum StatusLevel { StatusInfo = 0, StatusWarning = 1, StatusError = 2 };
 enum BinaryOp : quint8 { MessageData = 1, Time = 2 };
+
+qint64 costOf(const QByteArray &message)
+{
+    return message.size() + kEntryCost;
+}
 
 QByteArray compact(const QJsonObject &object)
 {
@@ -142,13 +150,13 @@ struct Server::Outgoing {
 };
 
 struct Server::Client {
-    QWebSocket *socket = nullptr;
+    QWebSocket *socket = nullptr; // null once gone
     QString peer;
     QHash<quint32, ChannelId> subscriptions; // subscription id → channel
     // What waits for the socket, by the order it came in (see pump()).
     std::map<quint64, Outgoing> queue;
     quint64 nextOrder = 0;
-    qint64 queuedBytes = 0; // in `queue`
+    qint64 queuedBytes = 0; // what `queue` costs (costOf)
     QHash<quint64, quint64> newest; // key → the order of its newest data still waiting
     bool gone = false; // dropped or disconnected; erased by reap()
 };
@@ -202,6 +210,8 @@ void Server::close()
 {
     const bool hadClients = clientCount() > 0;
     for (const std::unique_ptr<Client> &client : m_clients) {
+        if (client->gone)
+            continue; // its socket is already on its way
         client->socket->disconnect(this);
         client->socket->abort();
         client->socket->deleteLater();
@@ -280,7 +290,10 @@ void Server::endHandshake(QTcpSocket *socket)
 {
     m_handshakes.removeOne(socket);
     socket->disconnect(this);
-    qDeleteAll(socket->findChildren<oilink::ClockTimer *>(Qt::FindDirectChildrenOnly));
+    for (oilink::ClockTimer *timeout : socket->findChildren<oilink::ClockTimer *>(Qt::FindDirectChildrenOnly)) {
+        timeout->stop();
+        timeout->deleteLater(); // this may be its own timeout()
+    }
 }
 
 void Server::refuseHandshake(QTcpSocket *socket, const QString &why)
@@ -374,7 +387,8 @@ void Server::forget(Client *client)
         return;
     client->gone = true;
     client->socket->disconnect(this);
-    client->socket->deleteLater();
+    client->socket->abort();
+    std::exchange(client->socket, nullptr)->deleteLater();
     for (const quint32 subscription : client->subscriptions.keys())
         unsubscribe(client, subscription);
     client->queue.clear();
@@ -394,7 +408,6 @@ void Server::drop(Client *client, const QString &why)
     const QString peer = client->peer;
     qCWarning(lcFoxglove, "live data server: dropped %s: %s", qPrintable(peer), qPrintable(why));
     forget(client);
-    client->socket->abort();
     emit clientDropped(peer, why);
 }
 
@@ -404,7 +417,7 @@ void Server::sendText(Client *client, const QByteArray &json)
 {
     if (client->gone)
         return;
-    client->queuedBytes += json.size();
+    client->queuedBytes += costOf(json);
     client->queue.emplace(client->nextOrder++, Outgoing{json, true});
     pump(client);
     if (const qint64 waiting = waitingFor(*client); waiting > m_limits.queuedBytes)
@@ -420,14 +433,14 @@ void Server::sendData(Client *client, quint64 key, ChannelId channel, const QByt
 {
     if (client->gone)
         return;
-    if (replaces || waitingFor(*client) + message.size() > m_limits.queuedBytes) {
+    if (replaces || waitingFor(*client) + costOf(message) > m_limits.queuedBytes) {
         if (const auto older = client->newest.constFind(key); older != client->newest.cend()) {
             const auto it = client->queue.find(older.value());
-            client->queuedBytes -= it->second.bytes.size();
+            client->queuedBytes -= costOf(it->second.bytes);
             client->queue.erase(it);
         }
     }
-    client->queuedBytes += message.size();
+    client->queuedBytes += costOf(message);
     client->newest.insert(key, client->nextOrder);
     client->queue.emplace(client->nextOrder++, Outgoing{message, false, key, channel});
     pump(client);
@@ -442,7 +455,7 @@ void Server::pump(Client *client)
         if (!out.text && client->newest.value(out.key, ~quint64(0)) == first->first)
             client->newest.remove(out.key);
         client->queue.erase(first);
-        client->queuedBytes -= out.bytes.size();
+        client->queuedBytes -= costOf(out.bytes);
         if (out.text)
             client->socket->sendTextMessage(QString::fromUtf8(out.bytes));
         else if (out.key == kTimeKey || client->subscriptions.value(quint32(out.key)) == out.channel)

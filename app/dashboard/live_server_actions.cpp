@@ -60,9 +60,14 @@ LiveServerActions::~LiveServerActions()
 
 bool LiveServerActions::start(const foxglove::ServerAddress &address)
 {
+    m_asked = address.toString();
     if (!m_server.listen(address)) {
+        // The live data is for watching: the robots go on without it.
         m_error = m_server.errorString();
-        emit message(tr("Live data server: %1. Choose another port in View → Live data server….").arg(m_error));
+        qWarning("live data server: %s; the dashboard goes on without it", qPrintable(m_error));
+        emit message(tr("Live data server: %1. The robots go on without it; choose another port in View → Live "
+                        "data server….")
+                         .arg(m_error));
         showState();
         return false;
     }
@@ -96,8 +101,11 @@ QDialog *LiveServerActions::dialog()
     m_serve = new QCheckBox(m_dialog);
     layout->addWidget(m_serve);
     auto *form = new QFormLayout;
-    m_address = new QLineEdit(QSettings().value(kAddressKey, QStringLiteral("127.0.0.1:%1").arg(foxglove::kDefaultPort))
-                                  .toString(),
+    // The address last asked for (on the command line too), else the one kept.
+    m_address = new QLineEdit(m_asked.isEmpty() ? QSettings()
+                                                      .value(kAddressKey, QStringLiteral("127.0.0.1:%1").arg(foxglove::kDefaultPort))
+                                                      .toString()
+                                                : m_asked,
                               m_dialog);
     m_addressLabel = new QLabel(m_dialog);
     form->addRow(m_addressLabel, m_address);

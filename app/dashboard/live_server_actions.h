@@ -51,6 +51,7 @@ private:
     QWidget *m_dialogParent;
     QAction *m_action = nullptr;
     QString m_error; // why the last start failed
+    QString m_asked; // the address of the last start, as the dialog shows it
     QPointer<QDialog> m_dialog;
     QCheckBox *m_serve = nullptr;
     QLineEdit *m_address = nullptr;

@@ -25,7 +25,8 @@ namespace {
 // a Roomba 500 or Create 2 without its profile, a name in use); 128 + the
 // signal after SIGTERM, SIGINT or SIGHUP; anything else is a crash. It does
 // not exit for a broker that is not up yet or restarts, or for a robot that
-// does not answer: it goes on trying.
+// does not answer: it goes on trying. Nor for a live data server it cannot
+// serve (a port in use): it goes on without it and says why.
 constexpr int kUsageError = 2;
 
 int fail(const QString &message)
@@ -205,9 +206,14 @@ int main(int argc, char *argv[])
     LiveRobots live(liveServer);
     if (config->liveServer) {
         liveServer.setLimits({config->liveRateHz, liveServer.limits().queuedBytes});
-        if (!liveServer.listen(*config->liveServer))
-            return fail(liveServer.errorString());
-        live.add(&robot);
+        // The live data is for watching: without it the robot, its safety
+        // rules and the broker are as they were, so it is not the end.
+        if (liveServer.listen(*config->liveServer))
+            live.add(&robot);
+        else
+            qCWarning(lcBridge, "live data server: %s; going on without it (the robot and the broker as ever). Free "
+                                "the port or give another (foxglove = [ADDRESS:]PORT) and restart the bridge",
+                      qPrintable(liveServer.errorString()));
     }
     bridge.start();
     robot.connectTo(config->link);

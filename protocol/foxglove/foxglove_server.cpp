@@ -9,10 +9,10 @@
 #include <QTcpServer>
 #include <QTcpSocket>
 #include <QWebSocket>
-#include <QTimer>
 #include <QWebSocketServer>
 #include <QtEndian>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -23,17 +23,37 @@ namespace foxglove {
 namespace {
 
 // What a client may send: subscribe and unsubscribe are small. Anything
-// larger is cut off by Qt before it is read.
+// larger is refused by Qt from its frame's header, before it is read.
 constexpr quint64 kMaxClientMessage = 64 * 1024;
-// A handshake is one HTTP request; a peer that sends more, or takes longer, is no client.
+// What is read ahead of the requests handled: a client that sends faster
+// than they are handled waits in the kernel, not in our memory.
+constexpr qint64 kReadAhead = 2 * kMaxClientMessage;
+// A handshake is one HTTP request, sent at once; a peer that sends more,
+// or takes longer, is no client.
 constexpr qsizetype kMaxHandshake = 16 * 1024;
-constexpr int kHandshakeMs = 10000;
-constexpr int kMaxSubscriptions = 4096;
+constexpr int kHandshakeMs = 2000;
+// Unfinished handshakes one address may have at once. Its newest takes the
+// place of its oldest, so that a peer trickling handshakes holds few slots
+// and cannot keep out a client, even one from the same address.
+constexpr int kHandshakesPerPeer = 4;
 // Clients at once, handshakes included: each costs a copy of every message.
 constexpr int kMaxConnections = 32;
+// What a client's socket is given at a time. The rest waits in the client's
+// queue, where a channel's newer message can still take an older one's place.
+constexpr qint64 kSocketBatch = 64 * 1024;
+// The time message's key in a client's queue; the others are subscription ids.
+constexpr quint64 kTimeKey = quint64(1) << 32;
+// What a message waiting in a client's queue costs: its bytes and the
+// queue's own memory for it, so that many small ones count for what they hold.
+constexpr qint64 kEntryCost = 128;
 
 enum StatusLevel { StatusInfo = 0, StatusWarning = 1, StatusError = 2 };
 enum BinaryOp : quint8 { MessageData = 1, Time = 2 };
+
+qint64 costOf(const QByteArray &message)
+{
+    return message.size() + kEntryCost;
+}
 
 QByteArray compact(const QJsonObject &object)
 {
@@ -97,6 +117,14 @@ std::optional<ServerAddress> ServerAddress::parse(const QString &text, QString *
     return result;
 }
 
+QString ServerAddress::toString() const
+{
+    const QString host = address.protocol() == QAbstractSocket::IPv6Protocol
+                             ? QStringLiteral("[%1]").arg(address.toString())
+                             : address.toString();
+    return QStringLiteral("%1:%2").arg(host).arg(port);
+}
+
 struct Server::ChannelState {
     Channel channel;
     Delivery delivery;
@@ -112,10 +140,25 @@ struct Server::ChannelState {
     int subscriptions = 0; // over every client
 };
 
+struct Server::Outgoing {
+    QByteArray bytes;
+    bool text = false;
+    // Data: its subscription (or kTimeKey) and channel, to be sent only if
+    // the subscription still reads that channel when its turn comes.
+    quint64 key = 0;
+    ChannelId channel = 0;
+};
+
 struct Server::Client {
-    QWebSocket *socket = nullptr;
+    QWebSocket *socket = nullptr; // null once gone
     QString peer;
     QHash<quint32, ChannelId> subscriptions; // subscription id → channel
+    // What waits for the socket, by the order it came in (see pump()).
+    std::map<quint64, Outgoing> queue;
+    quint64 nextOrder = 0;
+    qint64 queuedBytes = 0; // what `queue` costs (costOf)
+    QHash<quint64, quint64> newest; // key → the order of its newest data still waiting
+    bool gone = false; // dropped or disconnected; erased by reap()
 };
 
 Server::Server(const QString &name, oilink::Clock &clock, QObject *parent)
@@ -139,14 +182,16 @@ bool Server::listen(const ServerAddress &address)
     close();
     m_tcp = new QTcpServer(this);
     if (!m_tcp->listen(address.address, address.port)) {
-        m_error = QStringLiteral("cannot serve on %1:%2: %3")
-                      .arg(address.address.toString())
-                      .arg(address.port)
-                      .arg(m_tcp->errorString());
+        m_error = QStringLiteral("cannot serve on %1: %2")
+                      .arg(address.toString(),
+                           m_tcp->serverError() == QAbstractSocket::AddressInUseError
+                               ? QStringLiteral("port %1 is in use by another program").arg(address.port)
+                               : m_tcp->errorString());
         delete std::exchange(m_tcp, nullptr);
         return false;
     }
     m_webSockets = new QWebSocketServer(m_name, QWebSocketServer::NonSecureMode, this);
+    m_webSockets->setHandshakeTimeout(kHandshakeMs);
     m_webSockets->setSupportedSubprotocols({QString::fromLatin1(kSubprotocol), QString::fromLatin1(kSdkSubprotocol)});
     connect(m_tcp, &QTcpServer::newConnection, this, &Server::onTcpConnection);
     connect(m_webSockets, &QWebSocketServer::newConnection, this, &Server::onWebSocket);
@@ -163,13 +208,16 @@ bool Server::listen(const ServerAddress &address)
 
 void Server::close()
 {
-    const bool hadClients = !m_clients.empty();
+    const bool hadClients = clientCount() > 0;
     for (const std::unique_ptr<Client> &client : m_clients) {
+        if (client->gone)
+            continue; // its socket is already on its way
         client->socket->disconnect(this);
         client->socket->abort();
         client->socket->deleteLater();
     }
     m_clients.clear();
+    m_handshakes.clear(); // the TCP server's children, deleted with it
     for (const auto &[id, channel] : m_channels)
         channel->subscriptions = 0;
     delete std::exchange(m_webSockets, nullptr);
@@ -197,11 +245,10 @@ QString Server::url() const
 {
     if (!m_tcp)
         return QString();
-    const QHostAddress address = m_tcp->serverAddress();
-    const QString host = address.protocol() == QAbstractSocket::IPv6Protocol
-                             ? QStringLiteral("[%1]").arg(address.toString())
-                             : address.toString();
-    return QStringLiteral("ws://%1:%2").arg(host).arg(m_tcp->serverPort());
+    ServerAddress bound;
+    bound.address = m_tcp->serverAddress();
+    bound.port = m_tcp->serverPort();
+    return QStringLiteral("ws://") + bound.toString();
 }
 
 // The handshake is read here first, so that a client offering neither
@@ -209,38 +256,68 @@ QString Server::url() const
 void Server::onTcpConnection()
 {
     while (QTcpSocket *socket = m_tcp->nextPendingConnection()) {
-        if (clientCount() + m_tcp->findChildren<QTcpSocket *>(Qt::FindDirectChildrenOnly).size() > kMaxConnections) {
+        connect(socket, &QTcpSocket::disconnected, socket, &QObject::deleteLater);
+        QList<QTcpSocket *> fromPeer;
+        for (QTcpSocket *other : std::as_const(m_handshakes))
+            if (other->peerAddress() == socket->peerAddress())
+                fromPeer << other;
+        if (fromPeer.size() >= kHandshakesPerPeer)
+            refuseHandshake(fromPeer.first(), QStringLiteral("left its handshake unfinished while its address opened "
+                                                             "%1 more connections")
+                                                  .arg(kHandshakesPerPeer));
+        if (clientCount() + m_handshakes.size() >= kMaxConnections) {
             socket->write("HTTP/1.1 503 Service Unavailable\r\nConnection: close\r\n\r\n");
             socket->disconnectFromHost();
-            connect(socket, &QTcpSocket::disconnected, socket, &QObject::deleteLater);
             emit clientRefused(peerOf(socket), QStringLiteral("came when %1 were connected").arg(kMaxConnections));
             continue;
         }
+        m_handshakes.append(socket);
         connect(socket, &QTcpSocket::readyRead, this, [this, socket] { readHandshake(socket); });
-        connect(socket, &QTcpSocket::disconnected, socket, &QObject::deleteLater);
-        auto *timeout = new QTimer(socket);
+        connect(socket, &QTcpSocket::disconnected, this, [this, socket] { m_handshakes.removeOne(socket); });
+        // On the server's clock, from the connection: trickling bytes does not renew it.
+        auto *timeout = new oilink::ClockTimer(m_clock, socket);
         timeout->setSingleShot(true);
-        connect(timeout, &QTimer::timeout, socket, [socket] { socket->abort(); });
+        connect(timeout, &oilink::ClockTimer::timeout, this, [this, socket] {
+            refuseHandshake(socket, QStringLiteral("did not finish its handshake within %1 s").arg(kHandshakeMs / 1000));
+        });
         timeout->start(kHandshakeMs);
         readHandshake(socket);
     }
+}
+
+// No longer a handshake of ours: handed on or refused.
+void Server::endHandshake(QTcpSocket *socket)
+{
+    m_handshakes.removeOne(socket);
+    socket->disconnect(this);
+    for (oilink::ClockTimer *timeout : socket->findChildren<oilink::ClockTimer *>(Qt::FindDirectChildrenOnly)) {
+        timeout->stop();
+        timeout->deleteLater(); // this may be its own timeout()
+    }
+}
+
+void Server::refuseHandshake(QTcpSocket *socket, const QString &why)
+{
+    const QString peer = peerOf(socket);
+    endHandshake(socket);
+    qCWarning(lcFoxglove, "live data server: closed %s, which %s", qPrintable(peer), qPrintable(why));
+    socket->abort();
+    emit clientRefused(peer, why);
 }
 
 void Server::readHandshake(QTcpSocket *socket)
 {
     const QByteArray request = socket->peek(kMaxHandshake);
     if (!request.contains("\r\n\r\n")) {
-        if (request.size() >= kMaxHandshake) {
-            emit clientRefused(peerOf(socket), QStringLiteral("a handshake larger than %1 bytes").arg(kMaxHandshake));
-            socket->abort();
-        }
+        if (request.size() >= kMaxHandshake)
+            refuseHandshake(socket, QStringLiteral("sent a handshake larger than %1 bytes").arg(kMaxHandshake));
         return;
     }
+    endHandshake(socket);
     const QStringList offered = offeredSubprotocols(request);
     if (!offered.contains(QLatin1String(kSubprotocol)) && !offered.contains(QLatin1String(kSdkSubprotocol))) {
         const QString why = offered.isEmpty() ? QStringLiteral("offered no subprotocol")
                                               : QStringLiteral("offered %1").arg(offered.join(QStringLiteral(", ")));
-        socket->disconnect(this);
         socket->write("HTTP/1.1 400 Bad Request\r\nContent-Type: text/plain\r\nConnection: close\r\n\r\n"
                       "Offer the subprotocol foxglove.websocket.v1 or foxglove.sdk.v1.\r\n");
         socket->disconnectFromHost();
@@ -250,10 +327,7 @@ void Server::readHandshake(QTcpSocket *socket)
         emit clientRefused(peerOf(socket), why);
         return;
     }
-    socket->disconnect(this);
     disconnect(socket, &QTcpSocket::disconnected, socket, &QObject::deleteLater);
-    for (QTimer *timer : socket->findChildren<QTimer *>())
-        delete timer;
     socket->setParent(nullptr);
     m_webSockets->handleConnection(socket);
 }
@@ -264,6 +338,7 @@ void Server::onWebSocket()
         socket->setParent(this);
         socket->setMaxAllowedIncomingMessageSize(kMaxClientMessage);
         socket->setMaxAllowedIncomingFrameSize(kMaxClientMessage);
+        socket->setReadBufferSize(kReadAhead);
         auto client = std::make_unique<Client>();
         client->socket = socket;
         client->peer = peerOf(socket);
@@ -273,48 +348,119 @@ void Server::onWebSocket()
         connect(socket, &QWebSocket::binaryMessageReceived, this, [this, c] {
             sendStatus(c, StatusError, QStringLiteral("this server takes no binary messages (no clientPublish)"));
         });
-        connect(socket, &QWebSocket::disconnected, this, [this, c] { removeClient(c); });
+        connect(socket, &QWebSocket::bytesWritten, this, [this, c] { pump(c); });
+        connect(socket, &QWebSocket::disconnected, this, [this, c] { forget(c); });
         qCInfo(lcFoxglove, "live data server: %s connected (%s)", qPrintable(c->peer), qPrintable(socket->subprotocol()));
+        emit clientCountChanged(clientCount());
         sendServerInfo(c);
         QList<ChannelId> all;
         for (const auto &[id, state] : m_channels)
             all << id;
         advertiseTo(c, all);
-        emit clientCountChanged(clientCount());
     }
 }
 
-void Server::removeClient(Client *client)
+int Server::clientCount() const
 {
-    const auto it = std::find_if(m_clients.begin(), m_clients.end(),
-                                 [client](const std::unique_ptr<Client> &c) { return c.get() == client; });
-    if (it == m_clients.end())
+    return int(std::count_if(m_clients.begin(), m_clients.end(), [](const std::unique_ptr<Client> &c) { return !c->gone; }));
+}
+
+qint64 Server::waitingFor(const Client &client) const
+{
+    return client.gone ? 0 : client.queuedBytes + client.socket->bytesToWrite();
+}
+
+qint64 Server::queuedBytes() const
+{
+    qint64 total = 0;
+    for (const std::unique_ptr<Client> &client : m_clients)
+        total += waitingFor(*client);
+    return total;
+}
+
+// The client ends: its subscriptions and what waits for it at once; the
+// client itself once the event loop comes back (this may be inside a loop
+// over the clients).
+void Server::forget(Client *client)
+{
+    if (client->gone)
         return;
+    client->gone = true;
     client->socket->disconnect(this);
-    client->socket->deleteLater();
+    client->socket->abort();
+    std::exchange(client->socket, nullptr)->deleteLater();
     for (const quint32 subscription : client->subscriptions.keys())
         unsubscribe(client, subscription);
-    m_clients.erase(it);
+    client->queue.clear();
+    client->queuedBytes = 0;
+    client->newest.clear();
+    QMetaObject::invokeMethod(this, &Server::reap, Qt::QueuedConnection);
     emit clientCountChanged(clientCount());
+}
+
+void Server::reap()
+{
+    std::erase_if(m_clients, [](const std::unique_ptr<Client> &c) { return c->gone; });
 }
 
 void Server::drop(Client *client, const QString &why)
 {
     const QString peer = client->peer;
     qCWarning(lcFoxglove, "live data server: dropped %s: %s", qPrintable(peer), qPrintable(why));
-    client->socket->abort();
-    removeClient(client);
+    forget(client);
     emit clientDropped(peer, why);
 }
 
+// Replies, status messages, advertisements: each is sent. A client that
+// does not read them is dropped once what waits for it passes the limit.
 void Server::sendText(Client *client, const QByteArray &json)
 {
-    client->socket->sendTextMessage(QString::fromUtf8(json));
+    if (client->gone)
+        return;
+    client->queuedBytes += costOf(json);
+    client->queue.emplace(client->nextOrder++, Outgoing{json, true});
+    pump(client);
+    if (const qint64 waiting = waitingFor(*client); waiting > m_limits.queuedBytes)
+        drop(client, QStringLiteral("it does not read what it is sent: %1 bytes wait for it, the limit is %2")
+                         .arg(waiting)
+                         .arg(m_limits.queuedBytes));
 }
 
-void Server::sendBinary(Client *client, const QByteArray &message)
+// Channel data and the time, which never drop a client: a message takes
+// the place of its key's older one still waiting when it is a state (a
+// Latest channel, the time), or when the client has reached its limit.
+void Server::sendData(Client *client, quint64 key, ChannelId channel, const QByteArray &message, bool replaces)
 {
-    client->socket->sendBinaryMessage(message);
+    if (client->gone)
+        return;
+    if (replaces || waitingFor(*client) + costOf(message) > m_limits.queuedBytes) {
+        if (const auto older = client->newest.constFind(key); older != client->newest.cend()) {
+            const auto it = client->queue.find(older.value());
+            client->queuedBytes -= costOf(it->second.bytes);
+            client->queue.erase(it);
+        }
+    }
+    client->queuedBytes += costOf(message);
+    client->newest.insert(key, client->nextOrder);
+    client->queue.emplace(client->nextOrder++, Outgoing{message, false, key, channel});
+    pump(client);
+}
+
+// Gives the socket what waits, in order, while it has little left to write.
+void Server::pump(Client *client)
+{
+    while (!client->gone && !client->queue.empty() && client->socket->bytesToWrite() < kSocketBatch) {
+        const auto first = client->queue.begin();
+        const Outgoing out = std::move(first->second);
+        if (!out.text && client->newest.value(out.key, ~quint64(0)) == first->first)
+            client->newest.remove(out.key);
+        client->queue.erase(first);
+        client->queuedBytes -= costOf(out.bytes);
+        if (out.text)
+            client->socket->sendTextMessage(QString::fromUtf8(out.bytes));
+        else if (out.key == kTimeKey || client->subscriptions.value(quint32(out.key)) == out.channel)
+            client->socket->sendBinaryMessage(out.bytes); // not for a subscription ended while it waited
+    }
 }
 
 void Server::sendServerInfo(Client *client)
@@ -358,24 +504,7 @@ void Server::onText(Client *client, const QString &text)
     const QJsonObject message = QJsonDocument::fromJson(text.toUtf8(), &parseError).object();
     const QString op = message.value("op").toString();
     if (op == QLatin1String("subscribe")) {
-        for (const QJsonValue &v : message.value("subscriptions").toArray()) {
-            const QJsonObject s = v.toObject();
-            const double id = s.value("id").toDouble(-1), channel = s.value("channelId").toDouble(-1);
-            if (id < 0 || id > std::numeric_limits<quint32>::max() || id != std::floor(id) || channel < 1
-                || channel > std::numeric_limits<quint32>::max() || !m_channels.count(ChannelId(channel))) {
-                sendStatus(client, StatusWarning,
-                           QStringLiteral("cannot subscribe %1 to channel %2: no such channel")
-                               .arg(s.value("id").toVariant().toString(), s.value("channelId").toVariant().toString()));
-                continue;
-            }
-            if (client->subscriptions.contains(quint32(id)) || client->subscriptions.size() >= kMaxSubscriptions) {
-                sendStatus(client, StatusWarning,
-                           QStringLiteral("subscription %1 is already in use (or too many)").arg(quint32(id)));
-                continue;
-            }
-            client->subscriptions.insert(quint32(id), ChannelId(channel));
-            ++m_channels.at(ChannelId(channel))->subscriptions;
-        }
+        subscribe(client, message.value("subscriptions").toArray());
     } else if (op == QLatin1String("unsubscribe")) {
         for (const QJsonValue &v : message.value("subscriptionIds").toArray())
             unsubscribe(client, quint32(v.toDouble(-1)));
@@ -387,6 +516,45 @@ void Server::onText(Client *client, const QString &text)
                                         "unsubscribe)")
                              .arg(op));
     }
+}
+
+// One status message for a request, however many of its entries are
+// refused: what a client causes is bounded by what it sends. A client
+// reads a channel once, so its subscriptions are as many as the channels.
+void Server::subscribe(Client *client, const QJsonArray &subscriptions)
+{
+    int refused = 0;
+    QString first; // why the first refused one was, said only for it
+    for (const QJsonValue &v : subscriptions) {
+        const QJsonObject s = v.toObject();
+        const double id = s.value("id").toDouble(-1), channel = s.value("channelId").toDouble(-1);
+        const bool known = id >= 0 && id <= std::numeric_limits<quint32>::max() && id == std::floor(id) && channel >= 1
+                           && channel <= std::numeric_limits<quint32>::max() && m_channels.count(ChannelId(channel));
+        const bool inUse = known && client->subscriptions.contains(quint32(id));
+        const bool again = known && std::find(client->subscriptions.cbegin(), client->subscriptions.cend(),
+                                              ChannelId(channel)) != client->subscriptions.cend();
+        if (known && !inUse && !again) {
+            client->subscriptions.insert(quint32(id), ChannelId(channel));
+            ++m_channels.at(ChannelId(channel))->subscriptions;
+            continue;
+        }
+        if (refused++)
+            continue;
+        if (!known)
+            first = QStringLiteral("%1 to channel %2: no such channel")
+                        .arg(s.value("id").toVariant().toString(), s.value("channelId").toVariant().toString());
+        else if (inUse)
+            first = QStringLiteral("%1: the id is already in use").arg(quint32(id));
+        else
+            first = QStringLiteral("%1 to channel %2: already subscribed to it").arg(quint32(id)).arg(ChannelId(channel));
+    }
+    if (refused == 1)
+        sendStatus(client, StatusWarning, QStringLiteral("cannot subscribe %1").arg(first));
+    else if (refused > 1)
+        sendStatus(client, StatusWarning, QStringLiteral("cannot subscribe %1 of %2 (the first: %3)")
+                                              .arg(refused)
+                                              .arg(subscriptions.size())
+                                              .arg(first));
 }
 
 Server::ChannelId Server::advertise(const Channel &channel, Delivery delivery)
@@ -494,26 +662,19 @@ void Server::sendNow(ChannelState &channel, quint64 timeNs, const std::function<
     message[0] = char(MessageData);
     qToLittleEndian<quint64>(timeNs, message.data() + 5);
     message += payload;
-    std::vector<Client *> slow;
     for (const std::unique_ptr<Client> &client : m_clients) {
         for (auto it = client->subscriptions.cbegin(); it != client->subscriptions.cend(); ++it) {
             if (it.value() != channel.id)
                 continue;
-            qToLittleEndian<quint32>(it.key(), message.data() + 1);
-            sendBinary(client.get(), message);
+            qToLittleEndian<quint32>(it.key(), message.data() + 1); // leaves alone the copy queued before
+            sendData(client.get(), it.key(), channel.id, message, channel.delivery == Delivery::Latest);
         }
-        if (client->socket->bytesToWrite() > m_limits.queuedBytes)
-            slow.push_back(client.get());
     }
-    for (Client *client : slow)
-        drop(client, QStringLiteral("it reads too slowly (%1 bytes waiting, the limit is %2)")
-                         .arg(client->socket->bytesToWrite())
-                         .arg(m_limits.queuedBytes));
 }
 
 void Server::setTime(quint64 timeNs)
 {
-    if (m_clients.empty())
+    if (clientCount() == 0)
         return;
     const qint64 dueNs = m_timeSentNs == std::numeric_limits<qint64>::min() ? 0 : m_timeSentNs + intervalNs();
     if (m_clock.nowNs() >= dueNs) {
@@ -534,7 +695,7 @@ void Server::sendTime(quint64 timeNs)
     message[0] = char(Time);
     qToLittleEndian<quint64>(timeNs, message.data() + 1);
     for (const std::unique_ptr<Client> &client : m_clients)
-        sendBinary(client.get(), message);
+        sendData(client.get(), kTimeKey, 0, message, true);
 }
 
 void Server::startSession()

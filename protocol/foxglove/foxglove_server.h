@@ -18,6 +18,7 @@
 #include <optional>
 #include <vector>
 
+class QJsonArray;
 class QTcpServer;
 class QTcpSocket;
 class QWebSocket;
@@ -61,6 +62,8 @@ struct ServerAddress {
     QHostAddress address{QHostAddress::LocalHost};
     quint16 port = kDefaultPort;
     static std::optional<ServerAddress> parse(const QString &text, QString *error);
+    // As parse() reads it: "127.0.0.1:8765", "[::1]:8765".
+    QString toString() const;
     // Whether only this machine can connect.
     bool isLoopback() const { return address.isLoopback(); }
 };
@@ -72,8 +75,11 @@ public:
     struct Limits {
         // Per Latest channel; 0 sends every message.
         double messagesPerSecond = 50;
-        // A client with more than this waiting to be written is dropped
-        // rather than waited for.
+        // What may wait to be sent to one client, everything counted (its
+        // replies and status messages, advertisements, the time, channel
+        // data). Data never passes it: a channel's newest message takes the
+        // place of its older one still waiting. A client that the rest takes
+        // past it is dropped rather than waited for.
         qint64 queuedBytes = 4 * 1024 * 1024;
     };
 
@@ -84,7 +90,8 @@ public:
     void setLimits(const Limits &limits) { m_limits = limits; }
     const Limits &limits() const { return m_limits; }
 
-    // Starts serving; false with errorString() naming the address and why.
+    // Starts serving; false with errorString() naming the address and why
+    // ("port 8765 is in use by another program").
     bool listen(const ServerAddress &address);
     void close();
     bool isListening() const;
@@ -94,7 +101,9 @@ public:
     QString url() const;
     quint16 port() const;
     bool isLoopback() const;
-    int clientCount() const { return int(m_clients.size()); }
+    int clientCount() const;
+    // What waits to be sent, over every client: what the limit counts.
+    qint64 queuedBytes() const;
 
     ChannelId advertise(const Channel &channel, Delivery delivery);
     void withdraw(ChannelId id);
@@ -124,15 +133,22 @@ signals:
 private:
     struct Client;
     struct ChannelState;
+    struct Outgoing;
     void onTcpConnection();
     void readHandshake(QTcpSocket *socket);
+    void refuseHandshake(QTcpSocket *socket, const QString &why);
+    void endHandshake(QTcpSocket *socket);
     void onWebSocket();
     void onText(Client *client, const QString &text);
-    void removeClient(Client *client);
+    void subscribe(Client *client, const QJsonArray &subscriptions);
+    void forget(Client *client);
+    void reap();
     void unsubscribe(Client *client, quint32 subscription);
     void drop(Client *client, const QString &why);
+    qint64 waitingFor(const Client &client) const;
     void sendText(Client *client, const QByteArray &json);
-    void sendBinary(Client *client, const QByteArray &message);
+    void sendData(Client *client, quint64 key, ChannelId channel, const QByteArray &message, bool replaces);
+    void pump(Client *client);
     void sendServerInfo(Client *client);
     void sendStatus(Client *client, int level, const QString &message);
     void advertiseTo(Client *client, const QList<ChannelId> &ids);
@@ -148,7 +164,11 @@ private:
     QString m_error;
     QString m_sessionId;
     QMap<QString, QString> m_metadata;
+    // A client that goes stays here, marked gone, until the event loop
+    // comes back (reap()): it may go in the middle of a loop over them.
     std::vector<std::unique_ptr<Client>> m_clients;
+    // Connections whose handshake is still coming, oldest first.
+    QList<QTcpSocket *> m_handshakes;
     std::map<ChannelId, std::unique_ptr<ChannelState>> m_channels;
     ChannelId m_nextChannel = 1;
     quint64 m_encodes = 0;

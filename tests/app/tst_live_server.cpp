@@ -12,7 +12,9 @@
 #include <QLineEdit>
 #include <QMenuBar>
 #include <QSettings>
+#include <QSignalSpy>
 #include <QStandardPaths>
+#include <QTcpServer>
 #include <QTest>
 #include <QWebSocket>
 #include <QWebSocketHandshakeOptions>
@@ -104,6 +106,37 @@ private slots:
         serve->setChecked(false);
         QVERIFY(!live->server().isListening());
         QVERIFY(texts(dialog).contains("Not serving."));
+    }
+
+    // A port another program holds: said in the log, the status bar and the
+    // dialog (with the address asked for), and the window goes on; another
+    // port then serves.
+    void aBusyPortIsSaidAndTheWindowGoesOn()
+    {
+        QTcpServer holder;
+        QVERIFY(holder.listen(QHostAddress::LocalHost, 0));
+        MainWindow window;
+        LiveServerActions *live = window.liveServer();
+        QSignalSpy said(live, &LiveServerActions::message);
+        foxglove::ServerAddress busy;
+        busy.port = holder.serverPort();
+        const QString why =
+            QStringLiteral("cannot serve on 127.0.0.1:%1: port %1 is in use by another program").arg(busy.port);
+        QTest::ignoreMessage(QtWarningMsg, qPrintable("live data server: " + why
+                                                      + "; the dashboard goes on without it"));
+        QVERIFY(!live->start(busy));
+        QVERIFY(!live->server().isListening());
+        QCOMPARE(said.count(), 1);
+        QVERIFY2(said.first().first().toString().contains(why), qPrintable(said.first().first().toString()));
+        QDialog *dialog = live->dialog();
+        QVERIFY2(texts(dialog).contains("Not serving: " + why), qPrintable(texts(dialog)));
+        QCOMPARE(dialog->findChild<QLineEdit *>()->text(), busy.toString());
+        window.fleet().addRobot(oilink::LinkSettings::serial(QString()), {}, false);
+        QVERIFY(topicsOf(live->server()).contains("/r1/telemetry"));
+        dialog->findChild<QLineEdit *>()->setText("127.0.0.1:0");
+        dialog->findChild<QCheckBox *>()->setChecked(true);
+        QVERIFY(live->server().isListening());
+        QVERIFY(texts(dialog).contains(live->server().url()));
     }
 
     void theWindowsRobotsAreAdvertisedAndWithdrawn()

@@ -16,6 +16,7 @@
 #include <QRegularExpression>
 #include <QWebSocket>
 #include <QWebSocketHandshakeOptions>
+#include <QTcpServer>
 #include <QTemporaryDir>
 
 #include <csignal>
@@ -148,6 +149,38 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(topics.contains("/r1/telemetry") && topics.contains("/r1/tf"), 10000);
         bridge.terminate();
         QVERIFY(bridge.waitForFinished(10000));
+    }
+
+    // A live data port another program holds costs the live data only:
+    // the bridge says why and goes on, its robot online on the broker and
+    // streaming, and it ends on SIGTERM as ever (status 143, which its unit
+    // counts a success; 2 would have the unit give up on it).
+    void aBusyLivePortIsAWarning()
+    {
+        QTcpServer holder;
+        QVERIFY(holder.listen(QHostAddress::LocalHost, 0));
+        MosquittoBroker broker;
+        QVERIFY2(broker.start(), qPrintable(broker.error()));
+        ConsoleClient watcher(QStringLiteral("watcher"), addressOf(broker));
+        QProcess bridge;
+        QByteArray log;
+        connect(&bridge, &QProcess::readyReadStandardError, this, [&] { log += bridge.readAllStandardError(); });
+        start(bridge, {QStringLiteral("--broker"), broker.url(), QStringLiteral("--name"), QStringLiteral("r4"),
+                       QStringLiteral("--sim"), QStringLiteral("--foxglove"),
+                       QStringLiteral("127.0.0.1:%1").arg(holder.serverPort())});
+        QVERIFY2(watcher.waitForState(QStringLiteral("r4"), true), log.constData());
+        QTRY_COMPARE_WITH_TIMEOUT(watcher.lastState(QStringLiteral("r4")).value(QLatin1String("link")).toString(),
+                                  QStringLiteral("streaming"), 10000);
+        const QByteArray why = QStringLiteral("live data server: cannot serve on 127.0.0.1:%1: port %1 is in use by "
+                                              "another program; going on without it")
+                                   .arg(holder.serverPort())
+                                   .toUtf8();
+        QVERIFY2(log.contains(why), log.constData());
+        QCOMPARE(bridge.state(), QProcess::Running);
+        bridge.terminate();
+        QVERIFY(bridge.waitForFinished(10000));
+        QCOMPARE(bridge.exitStatus(), QProcess::NormalExit);
+        QCOMPARE(bridge.exitCode(), 128 + 15);
     }
 
     // The wake line from the file, the command line winning, reaches the

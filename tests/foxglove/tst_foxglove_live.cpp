@@ -50,8 +50,9 @@ private slots:
     void replayTimeRunsAtItsSpeed() { check("replay"); }
     // An unknown subprotocol refused; robots added and removed advertised and withdrawn.
     void robotsComeAndGo() { check("fleet"); }
-    // A client that stops reading is dropped; the one that reads keeps its rate.
-    void slowClientIsDropped() { check("slow"); }
+    // A client that stops reading is kept, within the limit, and gets the
+    // newest frame when it reads again; the one that reads keeps its rate.
+    void slowClientGetsTheNewest() { check("slow"); }
 };
 
 QTEST_GUILESS_MAIN(TestFoxgloveLive)

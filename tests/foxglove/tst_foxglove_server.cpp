@@ -23,6 +23,10 @@
 namespace {
 
 constexpr int kTimeoutMs = 10000;
+// The limit on what waits for a client, in the tests that reach it, and
+// how far past it the server's count may go: the message that took it there.
+constexpr qint64 kLimit = 256 * 1024;
+constexpr qint64 kPastTheLimit = 8 * 1024;
 
 // A client that keeps what it hears.
 struct Client {
@@ -66,6 +70,79 @@ struct Client {
     }
 };
 
+
+// A client that stops reading: a bare socket speaking just enough
+// WebSocket (the handshake, masked text frames out, frames in once it reads
+// again), so that what the server sends it waits at the server.
+struct StalledClient {
+    QTcpSocket socket;
+    QByteArray heard; // what it has read since it started reading again
+
+    explicit StalledClient(quint16 port)
+    {
+        socket.connectToHost(QHostAddress::LocalHost, port);
+        socket.waitForConnected(kTimeoutMs);
+        // Nothing more than this is taken from the kernel, which soon stops
+        // taking from the server.
+        socket.setReadBufferSize(1024);
+        socket.write("GET / HTTP/1.1\r\nHost: 127.0.0.1\r\nUpgrade: websocket\r\nConnection: Upgrade\r\n"
+                     "Sec-WebSocket-Key: dGhlIHNhbXBsZSBub25jZQ==\r\nSec-WebSocket-Version: 13\r\n"
+                     "Sec-WebSocket-Protocol: foxglove.websocket.v1\r\n\r\n");
+    }
+    // One text message, masked with the key 0 (so the bytes stay as they are).
+    void send(const QByteArray &text)
+    {
+        QByteArray frame(1, char(0x81));
+        if (text.size() < 126) {
+            frame += char(0x80 | text.size());
+        } else {
+            frame += char(0x80 | 126);
+            frame += char(text.size() >> 8);
+            frame += char(text.size() & 0xff);
+        }
+        frame += QByteArray(4, '\0');
+        socket.write(frame + text);
+    }
+    void readAgain()
+    {
+        socket.setReadBufferSize(0);
+        QObject::connect(&socket, &QTcpSocket::readyRead, [this] { heard += socket.readAll(); });
+        heard += socket.readAll();
+    }
+    // The messages heard so far, past the handshake's reply: the payloads of
+    // the binary ones whose first byte is `op` (1, message data).
+    QList<QByteArray> binaries(char op) const
+    {
+        QList<QByteArray> found;
+        qsizetype at = heard.indexOf("\r\n\r\n");
+        if (at < 0)
+            return found;
+        at += 4;
+        while (at + 2 <= heard.size()) {
+            const quint8 opcode = quint8(heard[at]) & 0x0f;
+            qint64 length = quint8(heard[at + 1]) & 0x7f;
+            qsizetype header = 2;
+            if (length == 126) {
+                if (at + 4 > heard.size())
+                    break;
+                length = qFromBigEndian<quint16>(heard.constData() + at + 2);
+                header = 4;
+            } else if (length == 127) {
+                if (at + 10 > heard.size())
+                    break;
+                length = qint64(qFromBigEndian<quint64>(heard.constData() + at + 2));
+                header = 10;
+            }
+            if (at + header + length > heard.size())
+                break;
+            const QByteArray payload = heard.mid(at + header, length);
+            if (opcode == 2 && payload.startsWith(op))
+                found << payload;
+            at += header + length;
+        }
+        return found;
+    }
+};
 } // namespace
 
 class TestFoxgloveServer : public QObject {
@@ -240,6 +317,110 @@ private slots:
         QCOMPARE(m_server->clientCount(), 1);
     }
 
+    // However many entries a request names, it gets one status message.
+    void aRequestGetsOneStatusHoweverManyItNames()
+    {
+        auto client = connected();
+        QVERIFY(client);
+        QJsonArray none;
+        for (int i = 0; i < 2000; ++i)
+            none.append(QJsonObject{{"id", i}, {"channelId", 999}});
+        client->send({{"op", "subscribe"}, {"subscriptions", none}});
+        client->send({{"op", "ping"}}); // its status comes after every one the first causes
+        QTRY_VERIFY_WITH_TIMEOUT(client->last("status").value("message").toString().contains("'ping'"), kTimeoutMs);
+        QStringList statuses;
+        for (const QJsonObject &t : client->texts)
+            if (t.value("op").toString() == "status")
+                statuses << t.value("message").toString();
+        QCOMPARE(statuses.size(), 2);
+        QVERIFY2(statuses.first().contains("2000 of 2000") && statuses.first().contains("no such channel"),
+                 qPrintable(statuses.first()));
+    }
+
+    // A client that sends requests and never reads the replies: what waits
+    // for it, as the server counts it, stays within the limit, and past the
+    // limit the client is dropped, the signal saying who and why.
+    void aClientThatDoesNotReadItsRepliesIsDropped()
+    {
+        m_server->setLimits({50, kLimit});
+        QSignalSpy dropped(m_server.get(), &foxglove::Server::clientDropped);
+        StalledClient client(m_server->port());
+        const quint16 port = client.socket.localPort(); // 0 once the server has closed it
+        QTRY_COMPARE_WITH_TIMEOUT(m_server->clientCount(), 1, kTimeoutMs);
+        const QByteArray request = R"({"op":"subscribe","subscriptions":[{"id":1,"channelId":999}]})";
+        qint64 most = 0;
+        for (int i = 0; i < 200000 && dropped.isEmpty(); ++i) {
+            client.send(request);
+            if (i % 20 == 0) {
+                QCoreApplication::processEvents();
+                most = std::max(most, m_server->queuedBytes());
+                QVERIFY2(most <= kLimit + kPastTheLimit, qPrintable(QString::number(most)));
+            }
+        }
+        QCOMPARE(dropped.count(), 1);
+        const QString peer = dropped.first().at(0).toString(), why = dropped.first().at(1).toString();
+        QCOMPARE(peer, QStringLiteral("127.0.0.1:%1").arg(port));
+        QVERIFY2(why.contains("does not read") && why.contains(QString::number(kLimit)), qPrintable(why));
+        QCOMPARE(m_server->clientCount(), 0);
+        QCOMPARE(m_server->queuedBytes(), 0);
+        client.readAgain();
+        QTRY_COMPARE_WITH_TIMEOUT(client.socket.state(), QAbstractSocket::UnconnectedState, kTimeoutMs);
+    }
+
+    // A client that stops reading is not dropped for the data it does not
+    // read: a frame takes the place of the one still waiting for it, log
+    // lines wait within the limit, and when it reads again the last frame
+    // it gets is the newest.
+    void aSlowReaderGetsTheNewestFrame()
+    {
+        m_server->setLimits({50, kLimit});
+        QSignalSpy dropped(m_server.get(), &foxglove::Server::clientDropped);
+        StalledClient client(m_server->port());
+        QTRY_COMPARE_WITH_TIMEOUT(m_server->clientCount(), 1, kTimeoutMs);
+        client.send(QStringLiteral(R"({"op":"subscribe","subscriptions":[{"id":1,"channelId":%1},{"id":2,"channelId":%2}]})")
+                        .arg(m_frames)
+                        .arg(m_log)
+                        .toUtf8());
+        QTRY_VERIFY_WITH_TIMEOUT(m_server->isSubscribed(m_frames) && m_server->isSubscribed(m_log), kTimeoutMs);
+        const QByteArray filler(8192, 'x');
+        qint64 most = 0;
+        for (int i = 0; i < 2000; ++i) { // 40 s at 50 a second: 16 MB of frames
+            m_server->publish(m_frames, quint64(i), [&, i] { return QByteArray::number(i) + ' ' + filler; });
+            if (i % 100 == 0)
+                m_server->publish(m_log, quint64(i), [i] { return "log " + QByteArray::number(i); });
+            m_clock.advance(20);
+            QCoreApplication::processEvents();
+            most = std::max(most, m_server->queuedBytes());
+        }
+        QCOMPARE(dropped.count(), 0);
+        QVERIFY2(most <= kLimit + kPastTheLimit, qPrintable(QString::number(most)));
+        QCOMPARE(m_server->clientCount(), 1);
+        const auto on = [&](quint32 subscription) {
+            QList<QByteArray> payloads;
+            for (const QByteArray &b : client.binaries(1))
+                if (qFromLittleEndian<quint32>(b.constData() + 1) == subscription)
+                    payloads << b.mid(13);
+            return payloads;
+        };
+        client.readAgain();
+        QTRY_VERIFY_WITH_TIMEOUT(!on(1).isEmpty() && on(1).last().startsWith("1999 "), kTimeoutMs);
+        QCOMPARE(on(2).size(), 20);
+        QCOMPARE(on(2).last(), QByteArray("log 1900"));
+    }
+
+    // A message over 64 KiB is refused from its frame's header, unread, and
+    // the connection closed.
+    void anOversizedMessageIsRefused()
+    {
+        auto client = connected();
+        QVERIFY(client);
+        QSignalSpy ended(&client->socket, &QWebSocket::disconnected);
+        client->socket.sendTextMessage(QString(65 * 1024, QLatin1Char(' ')));
+        QVERIFY(ended.count() || ended.wait(kTimeoutMs));
+        QCOMPARE(client->socket.closeCode(), QWebSocketProtocol::CloseCodeTooMuchData);
+        QTRY_COMPARE_WITH_TIMEOUT(m_server->clientCount(), 0, kTimeoutMs);
+    }
+
     void aClientOfferingNeitherNameIsRefused()
     {
         QSignalSpy refused(m_server.get(), &foxglove::Server::clientRefused);
@@ -251,14 +432,16 @@ private slots:
         QCOMPARE(m_server->clientCount(), 0);
     }
 
-    // Connections that never finish their handshake cannot crowd the server
-    // out: beyond 32 at once, the next is told 503 and closed.
+    // Connections from many peers that never finish their handshake: beyond
+    // 32 at once, the next is told 503 and closed. (All of 127.0.0.0/8 is
+    // this machine: a connection from 127.0.0.N is another peer.)
     void connectionsAreBounded()
     {
         QSignalSpy refused(m_server.get(), &foxglove::Server::clientRefused);
         std::vector<std::unique_ptr<QTcpSocket>> idle;
         for (int i = 0; i < 33; ++i) {
             idle.push_back(std::make_unique<QTcpSocket>());
+            QVERIFY(idle.back()->bind(QHostAddress(QStringLiteral("127.0.0.%1").arg(i + 2))));
             idle.back()->connectToHost(QHostAddress::LocalHost, m_server->port());
             QVERIFY(idle.back()->waitForConnected(kTimeoutMs));
         }
@@ -268,6 +451,46 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(idle.back()->bytesAvailable() || idle.back()->state() != QAbstractSocket::ConnectedState,
                                  kTimeoutMs);
         QVERIFY(idle.back()->readAll().startsWith("HTTP/1.1 503"));
+    }
+
+    // 32 handshakes from one peer, sent a byte at a time, cannot hold the
+    // server: a peer keeps only a few unfinished at once (its oldest give
+    // way to its newest), a real client still gets in, and each handshake
+    // has 2 s on the server's clock.
+    void slowHandshakesCannotKeepAClientOut()
+    {
+        QSignalSpy refused(m_server.get(), &foxglove::Server::clientRefused);
+        const QByteArray request = "GET / HTTP/1.1\r\nHost: 127.0.0.1\r\nUpgrade: websocket\r\n";
+        std::vector<std::unique_ptr<QTcpSocket>> trickles;
+        for (int i = 0; i < 32; ++i) {
+            trickles.push_back(std::make_unique<QTcpSocket>());
+            trickles.back()->connectToHost(QHostAddress::LocalHost, m_server->port());
+            QVERIFY(trickles.back()->waitForConnected(kTimeoutMs));
+            trickles.back()->write(request.left(1));
+        }
+        auto client = connected();
+        QVERIFY2(client, "a real client was kept out");
+        const auto open = [&] {
+            return std::count_if(trickles.begin(), trickles.end(), [](const std::unique_ptr<QTcpSocket> &t) {
+                return t->state() == QAbstractSocket::ConnectedState;
+            });
+        };
+        // A byte each half second of the server's clock, for 2 s.
+        for (int step = 1; step <= 4; ++step) {
+            for (const std::unique_ptr<QTcpSocket> &t : trickles)
+                if (t->state() == QAbstractSocket::ConnectedState)
+                    t->write(request.mid(step, 1));
+            QVERIFY(QTest::qWaitFor([&] { return !trickles.back()->bytesToWrite(); }, kTimeoutMs));
+            m_clock.advance(500);
+            QCoreApplication::processEvents();
+        }
+        QTRY_COMPARE_WITH_TIMEOUT(open(), 0, kTimeoutMs);
+        QStringList why;
+        for (const QList<QVariant> &r : refused)
+            why << r.at(1).toString();
+        QVERIFY2(why.contains("did not finish its handshake within 2 s"), qPrintable(why.join('\n')));
+        QCOMPARE(client->socket.state(), QAbstractSocket::ConnectedState);
+        QCOMPARE(m_server->clientCount(), 1);
     }
 
     void aNewSessionIsToldToEveryClient()
@@ -311,6 +534,8 @@ private slots:
         if (read) {
             QCOMPARE(read->address.toString(), address);
             QCOMPARE(int(read->port), port);
+            const std::optional<foxglove::ServerAddress> again = foxglove::ServerAddress::parse(read->toString(), &why);
+            QVERIFY2(again && again->address == read->address && again->port == read->port, qPrintable(read->toString()));
         } else {
             QVERIFY2(why.startsWith(error), qPrintable(why));
         }
@@ -322,8 +547,8 @@ private slots:
         foxglove::ServerAddress address;
         address.port = m_server->port();
         QVERIFY(!second.listen(address));
-        QVERIFY2(second.errorString().startsWith(QStringLiteral("cannot serve on 127.0.0.1:%1").arg(address.port)),
-                 qPrintable(second.errorString()));
+        QCOMPARE(second.errorString(),
+                 QStringLiteral("cannot serve on 127.0.0.1:%1: port %1 is in use by another program").arg(address.port));
     }
 };
 

@@ -66,6 +66,16 @@ RobotBridge::RobotBridge(RobotSession &robot, mqtt::MqttClient &broker, oilink::
     // Messages are sized on the network thread and timed as they arrive;
     // heartbeats that wait are read before the lease is judged.
     m_broker.setMaxPayloadBytes(kMaxPayloadBytes);
+    // Any student can flood this connection; reading the flood must not
+    // take the CPU from the stop line's thread and this one, which stop
+    // the robot (docs/mqtt.md, "Limits").
+    m_broker.setNetworkThreadNice(kStudentsNice);
+    m_broker.setMaxMessagesPerSecond(kMaxStudentMessagesPerSecond);
+    connect(&m_broker, &mqtt::MqttClient::intakeLimited, this, [](int max) {
+        qCWarning(lcBridge, "broker: more than %d messages a second for this robot (a client floods it): reading no "
+                            "more, so the broker drops the rest; stop all comes on the stop line, unhindered",
+                  max);
+    });
     m_broker.setDirectReceiver([this](const QString &topic, const QByteArray &payload, bool retained) {
         m_inbox.receive(topic, payload, retained);
     });

@@ -52,6 +52,11 @@ public:
     // The longest command or control message the bridge reads; a longer
     // one is dropped unread and answered with an error.
     static constexpr qsizetype kMaxPayloadBytes = 4096;
+    // The nice value of the thread that reads the students' connection.
+    static constexpr int kStudentsNice = 10;
+    // What that thread reads at most: a class of 30 driving one robot in
+    // turn sends far fewer (heartbeats 10 a second, a drive pad's 20 to 50).
+    static constexpr int kMaxStudentMessagesPerSecond = 2000;
 
     RobotBridge(RobotSession &robot, mqtt::MqttClient &broker, oilink::Clock &clock, Options options,
                 QObject *parent = nullptr);

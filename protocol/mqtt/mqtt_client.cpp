@@ -10,6 +10,9 @@
 #include <mosquitto.h>
 
 #include <cstring>
+
+#include <sys/resource.h>
+#include <unistd.h>
 #include <mutex>
 
 namespace mqtt {
@@ -128,6 +131,9 @@ bool MqttClient::connectToBroker(const BrokerAddress &address)
 
 void MqttClient::runNetwork(const QByteArray &host, int port, int keepAliveSeconds)
 {
+    // Linux gives each thread its own nice value.
+    if (m_networkNice != 0)
+        ::setpriority(PRIO_PROCESS, pid_t(::gettid()), m_networkNice);
     while (!m_stopping) {
         // A connection attempt: the TCP connect and the TLS handshake go on
         // in the loop below, without blocking.
@@ -136,7 +142,9 @@ void MqttClient::runNetwork(const QByteArray &host, int port, int keepAliveSecon
             // Until the broker accepts, a short wait, so that a goodbye
             // meanwhile ends the thread quickly; then a second (publishing
             // and the goodbye wake it at once).
-            while (rc == MOSQ_ERR_SUCCESS && !m_stopping)
+            auto windowStart = std::chrono::steady_clock::now();
+            qint64 saidAtMs = -1000;
+            while (rc == MOSQ_ERR_SUCCESS && !m_stopping && !restIfOverIntake(windowStart, saidAtMs))
                 rc = mosquitto_loop(m_mosq, m_sessionUp ? 1000 : 100, 1);
             if (m_stopping) {
                 // A goodbye asked for before this connection was made.
@@ -152,6 +160,31 @@ void MqttClient::runNetwork(const QByteArray &host, int port, int keepAliveSecon
         if (waitToRetry())
             return;
     }
+}
+
+bool MqttClient::restIfOverIntake(std::chrono::steady_clock::time_point &windowStart, qint64 &saidAtMs)
+{
+    if (m_maxPerSecond <= 0)
+        return false;
+    constexpr auto kWindow = std::chrono::milliseconds(100);
+    const auto now = std::chrono::steady_clock::now();
+    if (now - windowStart >= kWindow) {
+        windowStart = now;
+        m_windowMessages = 0;
+        return false;
+    }
+    if (m_windowMessages < m_maxPerSecond / 10)
+        return false;
+    const qint64 nowMs = std::chrono::duration_cast<std::chrono::milliseconds>(now.time_since_epoch()).count();
+    if (nowMs - saidAtMs >= 1000) {
+        saidAtMs = nowMs;
+        threads::queueCall(this, [this, max = m_maxPerSecond] { emit intakeLimited(max); });
+    }
+    std::unique_lock lock(m_stopMutex);
+    const bool stop = m_stopAsked.wait_until(lock, windowStart + kWindow, [this] { return m_stopping.load(); });
+    windowStart = std::chrono::steady_clock::now();
+    m_windowMessages = 0;
+    return stop;
 }
 
 bool MqttClient::waitToRetry()
@@ -241,6 +274,7 @@ void MqttClient::onDisconnect(mosquitto *, void *self, int rc)
 void MqttClient::onMessage(mosquitto *, void *self, const mosquitto_message *message)
 {
     auto *client = static_cast<MqttClient *>(self);
+    ++client->m_windowMessages;
     const QString topic = QString::fromUtf8(message->topic);
     const bool retained = message->retain;
     // Checked before the payload is copied or read: one huge message must

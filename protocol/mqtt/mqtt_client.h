@@ -73,6 +73,18 @@ public:
     using DirectReceiver = std::function<void(const QString &topic, const QByteArray &payload, bool retained)>;
     void setDirectReceiver(DirectReceiver receiver);
 
+    // The network thread's nice value (0 by default; higher is lower), set
+    // before connectToBroker: a connection that hears anyone at all can be
+    // flooded, and its thread then should not take the CPU from the threads
+    // that stop the robot.
+    void setNetworkThreadNice(int nice) { m_networkNice = nice; }
+    // At most this many messages a second are read (0: no limit), set
+    // before connectToBroker. Past it the network thread rests until the
+    // next tenth of a second, so a flood costs it bounded CPU; the broker
+    // then drops what its queue for this client cannot hold. Said with
+    // intakeLimited at most once a second.
+    void setMaxMessagesPerSecond(int messages) { m_maxPerSecond = messages; }
+
     // Kept and made again after each reconnect. Wildcards + and # allowed.
     void subscribe(const QString &topicFilter, int qos = 0);
     // Connected, and the broker has acknowledged every subscription: from
@@ -98,6 +110,8 @@ signals:
     // trying again with the same ones cannot help. The retries go on until
     // the owner stops them.
     void loginRefused(const QString &message);
+    // More than setMaxMessagesPerSecond came in the last second.
+    void intakeLimited(int maxPerSecond);
 
 private:
     static void onConnect(mosquitto *, void *self, int rc);
@@ -128,6 +142,12 @@ private:
     std::condition_variable m_stopAsked;
     std::atomic<bool> m_stopping{false}; // set under m_stopMutex
     std::atomic<bool> m_sessionUp{false}; // the network thread's: the broker accepted the connection
+    int m_networkNice = 0;
+    int m_maxPerSecond = 0;
+    int m_windowMessages = 0; // the network thread's: read in this tenth of a second
+    // Rests the network thread until the tenth of a second is over, if it
+    // read its share of it; true if disconnectFromBroker asked it to end.
+    bool restIfOverIntake(std::chrono::steady_clock::time_point &windowStart, qint64 &saidAtMs);
     QTimer m_noAnswer; // says so when no broker has answered soon after connectToBroker
     bool m_tlsRefusalSaid = false; // once per connectToBroker
     QList<QPair<QString, int>> m_subscriptions;

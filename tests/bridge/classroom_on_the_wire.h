@@ -7,8 +7,11 @@
 // byte the bridge sends the robot as it passes, and the teacher and a
 // student as MQTT clients. A stop is timed from the moment it was asked for
 // to its bytes at the robot. Floods come from mosquitto_pub processes, as a
-// student's laptop would send them. Optionally the bridge gets a Pi's share
-// of one core: it and two busy loops pinned to the same core.
+// student's laptop would send them, at the lowest priority: on a laptop of
+// its own, a flood's sender takes none of the bridge's or the broker's CPU.
+// Optionally the bridge gets a Pi's share of one core: a CPU quota of a
+// third of one core (a cgroup of its own), or, where no CPU controller can
+// be written, one core shared with two busy loops.
 
 #include "bridge_rig.h"
 #include "command_encoder.h"
@@ -158,7 +161,11 @@ public:
                          QStringLiteral("--tcp"), QStringLiteral("127.0.0.1:%1").arg(m_proxy->port()),
                          QStringLiteral("--profile"), QStringLiteral("create2")};
         QString program = QStringLiteral(ROOMBA_BRIDGE_PATH);
-        if (piShare) {
+        m_quota = piShare ? QStringLiteral("/sys/fs/cgroup/cpu/roomba-pi-share-%1").arg(QCoreApplication::applicationPid())
+                          : QString();
+        if (piShare && !startQuota()) {
+            // No CPU controller to write to: the core shared with two busy loops instead.
+            m_quota.clear();
             args = QStringList{QStringLiteral("-c"), QString::number(kCore), program} + args;
             program = QStringLiteral("/usr/bin/taskset");
             for (int i = 0; i < 2; ++i)
@@ -168,6 +175,8 @@ public:
         m_bridge.setProcessChannelMode(QProcess::MergedChannels);
         QObject::connect(&m_bridge, &QProcess::readyRead, &m_bridge, [this] { m_said += m_bridge.readAll(); });
         m_bridge.start(program, args);
+        if (!m_quota.isEmpty() && !writeTo(m_quota + QStringLiteral("/cgroup.procs"), QByteArray::number(m_bridge.processId())))
+            return fail(error, QStringLiteral("cannot put the bridge under its CPU quota"));
         if (!m_bridge.waitForStarted())
             return fail(error, QStringLiteral("roomba-bridge did not start"));
         if (!QTest::qWaitFor([this] { return stopLineCount() > 0 && m_said.contains("robot link: streaming"); }, 20000))
@@ -181,6 +190,14 @@ public:
         m_bridge.waitForFinished(5000);
         m_sim.kill();
         m_sim.waitForFinished(5000);
+        if (!m_quota.isEmpty())
+            QDir().rmdir(m_quota);
+    }
+    // How the bridge is held to a Pi's share, for the report.
+    QString shareText() const
+    {
+        return m_quota.isEmpty() ? QStringLiteral("one core shared with two busy loops")
+                                 : QStringLiteral("a CPU quota of a third of one core");
     }
 
     // Kills the broker as a crash would and starts it again.
@@ -221,7 +238,18 @@ public:
     std::unique_ptr<ShellLoad> flood(const QString &account, const QString &topic, const QByteArray &payload) const
     {
         return std::make_unique<ShellLoad>(
-            QStringLiteral("yes '%1' | %2").arg(QString::fromUtf8(payload), publisher(account, QStringLiteral("-l -t ") + topic)));
+            QStringLiteral("yes '%1' | nice -n 19 %2").arg(QString::fromUtf8(payload), publisher(account, QStringLiteral("-l -t ") + topic)));
+    }
+    // The same at `perSecond` messages a second.
+    std::unique_ptr<ShellLoad> flood(const QString &account, const QString &topic, const QByteArray &payload,
+                                     int perSecond) const
+    {
+        return std::make_unique<ShellLoad>(
+            QStringLiteral("python3 -c 'import sys, time\nline = sys.argv[1] + \"\\n\"\nwhile True:\n"
+                           "    sys.stdout.write(line * %1)\n    sys.stdout.flush()\n    time.sleep(0.01)' '%2' | "
+                           "nice -n 19 %3")
+                .arg(std::max(1, perSecond / 100))
+                .arg(QString::fromUtf8(payload), publisher(account, QStringLiteral("-l -t ") + topic)));
     }
     // `account` sending one message of `bytes` bytes on `topic`, again and again.
     std::unique_ptr<ShellLoad> hugeMessages(const QString &account, const QString &topic, qint64 bytes)
@@ -231,7 +259,7 @@ public:
         if (!f.exists() && f.open(QIODevice::WriteOnly))
             f.resize(bytes);
         return std::make_unique<ShellLoad>(
-            QStringLiteral("while :; do %1; done").arg(publisher(account, QStringLiteral("-f %1 -t %2").arg(file, topic))));
+            QStringLiteral("while :; do nice -n 19 %1; done").arg(publisher(account, QStringLiteral("-f %1 -t %2").arg(file, topic))));
     }
 
     const WireProxy &wire() const { return *m_proxy; }
@@ -251,6 +279,17 @@ private:
             return fail(error, m_broker.error());
         return true;
     }
+    // A cgroup (v1) of its own with a third of one core: 33 ms in each 100.
+    bool startQuota()
+    {
+        return QDir().mkpath(m_quota) && writeTo(m_quota + QStringLiteral("/cpu.cfs_period_us"), "100000")
+               && writeTo(m_quota + QStringLiteral("/cpu.cfs_quota_us"), "33333");
+    }
+    static bool writeTo(const QString &path, const QByteArray &text)
+    {
+        QFile f(path);
+        return f.open(QIODevice::WriteOnly) && f.write(text) == text.size();
+    }
     static bool fail(QString *error, const QString &why)
     {
         if (error)
@@ -264,6 +303,7 @@ private:
     QProcess m_sim, m_bridge;
     std::unique_ptr<WireProxy> m_proxy;
     std::vector<std::unique_ptr<ShellLoad>> m_hogs;
+    QString m_quota; // the bridge's cgroup, for a Pi's share
     QByteArray m_said;
 };
 

@@ -5,10 +5,14 @@
 // Under a student's command flood, a flood of takes, 120 MB messages and
 // right after the broker was killed and started again, the teacher's Stop
 // all reaches the robot before a lapsed heartbeat would have (300 ms); a
-// heartbeat that stops under a flood stops the robot before the next one
-// would have been due again (the lease and one heartbeat, 400 ms), since a
-// heartbeat counts from when it was sent; and a flooding student is read at
-// the rate the bridge allows one client, not at the flood's. The figures
+// heartbeat that stops under 1,000 commands a second or 120 MB messages
+// stops the robot before the next one would have been due again (the lease
+// and one heartbeat, 400 ms), since a heartbeat counts from when it was
+// sent; and a flooding student is read at the rate the bridge allows one
+// client, not at the flood's. (Under a flood as fast as mosquitto_pub can
+// send, the bridge reads at most 2,000 messages a second of its robot's
+// and the broker drops the rest, alice's too: she cannot take control, and
+// so no lapse is timed there.) The figures
 // against their targets: bench_stops_at_the_robot.
 
 #include "classroom_on_the_wire.h"
@@ -39,6 +43,16 @@ class TestStopsAtTheRobot : public QObject {
         qInfo("%s: Stop all at the robot after %.1f ms", scenario, *ms);
         QVERIFY2(*ms < ControlLease::kHeartbeatTimeoutMs,
                  qPrintable(QStringLiteral("%1: %2 ms").arg(QLatin1String(scenario)).arg(*ms)));
+    }
+
+    void verifyLapses(const char *scenario)
+    {
+        for (int i = 0; i < 3; ++i) {
+            const std::optional<double> ms = lapseRound(*m_room, *m_alice);
+            QVERIFY2(ms, qPrintable(m_alice->why()));
+            qInfo("%s: the heartbeat's lapse stopped the robot %.1f ms after the last one", scenario, *ms);
+            QVERIFY2(*ms < ControlLease::kHeartbeatTimeoutMs + 100, qPrintable(QString::number(*ms)));
+        }
     }
 
 private slots:
@@ -101,15 +115,19 @@ private slots:
         }
     }
 
+    // bob sends 1,000 commands a second, five times his rate: alice's
+    // heartbeats still get through, and when they stop, the robot stops
+    // within the lease and one heartbeat, whatever waited in the broker.
     void aLapsedHeartbeatUnderACommandFlood()
     {
-        const auto flood = m_room->flood(QStringLiteral("bob"), bobs(mqtt::topics::Kind::Command), leds());
-        for (int i = 0; i < 3; ++i) {
-            const std::optional<double> ms = lapseRound(*m_room, *m_alice);
-            QVERIFY2(ms, qPrintable(m_alice->why()));
-            qInfo("command flood: the heartbeat's lapse stopped the robot %.1f ms after the last one", *ms);
-            QVERIFY2(*ms < ControlLease::kHeartbeatTimeoutMs + 100, qPrintable(QString::number(*ms)));
-        }
+        const auto flood = m_room->flood(QStringLiteral("bob"), bobs(mqtt::topics::Kind::Command), leds(), 1000);
+        verifyLapses("command flood");
+    }
+
+    void aLapsedHeartbeatUnder120MbMessages()
+    {
+        const auto huge = m_room->hugeMessages(QStringLiteral("bob"), bobs(mqtt::topics::Kind::Command), 120LL * 1000 * 1000);
+        verifyLapses("120 MB messages");
     }
 
     // bob floods takes for two seconds; what the bridge answers him is what

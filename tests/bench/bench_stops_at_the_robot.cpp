@@ -24,15 +24,22 @@ namespace {
 struct Figures {
     std::vector<double> samples;
     int lost = 0;
+    int undriven = 0; // rounds in which alice could not take control first
     QString text() const
     {
+        if (samples.empty() && lost == 0)
+            return QStringLiteral("alice never got control (%1 rounds)").arg(undriven);
         if (samples.empty())
-            return QStringLiteral("alice never got control (%1 rounds)").arg(lost);
+            return QStringLiteral("all %1 lost").arg(lost);
         std::vector<double> s = samples;
         std::sort(s.begin(), s.end());
         const auto at = [&s](double q) { return s[std::min(s.size() - 1, std::size_t(q * double(s.size())))]; };
         QString t = QStringLiteral("%1 / %2 / %3").arg(at(0.5), 0, 'f', 0).arg(at(0.95), 0, 'f', 0).arg(s.back(), 0, 'f', 0);
-        return lost ? t + QStringLiteral(" (alice could not drive in %1)").arg(lost) : t;
+        if (lost)
+            t += QStringLiteral(" (%1 lost)").arg(lost);
+        if (undriven)
+            t += QStringLiteral(" (alice could not drive first in %1)").arg(undriven);
+        return t;
     }
     void add(std::optional<double> ms) { ms ? samples.push_back(*ms) : void(++lost); }
 };
@@ -119,14 +126,21 @@ int main(int argc, char *argv[])
                     stops.add(std::nullopt);
                     continue;
                 }
-                stops.add(stopAllRound(room, teacher, scenario.aliceDrives ? &alice : nullptr));
+                bool drove = false;
+                stops.add(stopAllRound(room, teacher, scenario.aliceDrives ? &alice : nullptr, &drove));
+                stops.undriven += scenario.aliceDrives && !drove;
             }
             for (int i = 0; i < rounds && scenario.aliceDrives; ++i) {
                 if (!afterRestart()) {
                     lapses.add(std::nullopt);
                     continue;
                 }
-                lapses.add(lapseRound(room, alice));
+                bool drove = false;
+                const std::optional<double> ms = lapseRound(room, alice, &drove);
+                if (drove)
+                    lapses.add(ms);
+                else
+                    ++lapses.undriven; // no lapse to time
             }
             load.reset();
             QTest::qWait(500); // bob's control, if he held it, lapses

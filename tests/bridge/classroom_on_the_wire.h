@@ -333,7 +333,7 @@ public:
     // lease to end (which stops the robot, as it should).
     bool takeAndDrive()
     {
-        for (int attempt = 0; attempt < 5; ++attempt)
+        for (int attempt = 0; attempt < 3; ++attempt)
             if (tryTakeAndDrive())
                 return true;
         return false;
@@ -345,7 +345,7 @@ public:
         const WireClock::time_point from = WireClock::now();
         m_replies.clear();
         send(mqtt::topics::control(QStringLiteral("r1"), m_account), {{"action", "take"}});
-        if (!QTest::qWaitFor([this] { return hasReply(QStringLiteral("control"), true); }, 5000)) {
+        if (!QTest::qWaitFor([this] { return hasReply(QStringLiteral("control"), true); }, 1000)) {
             m_why = QStringLiteral("no yes to take: %1").arg(lastReplies());
             return false;
         }
@@ -424,13 +424,16 @@ inline std::optional<double> stopAtTheRobot(const ClassroomOnTheWire &room, Wire
 }
 
 // One Stop all from the teacher while `driver` drives (or, without one,
-// while whoever holds control does): its time at the robot.
-inline std::optional<double> stopAllRound(const ClassroomOnTheWire &room, mqtt::MqttClient &teacher, Driver *driver)
+// while whoever holds control does): its time at the robot. The stop all is
+// sent and timed whether or not the driver could drive (`drove` says).
+inline std::optional<double> stopAllRound(const ClassroomOnTheWire &room, mqtt::MqttClient &teacher, Driver *driver,
+                                          bool *drove = nullptr)
 {
-    if (driver && !driver->takeAndDrive()) {
+    const bool driving = driver && driver->takeAndDrive();
+    if (drove)
+        *drove = driving;
+    if (driver && !driving)
         qWarning("stop all round: the student could not take control and drive (%s)", qPrintable(driver->why()));
-        return std::nullopt;
-    }
     const WireClock::time_point since = WireClock::now();
     teacher.publish(mqtt::topics::stopAll(), json({{"client", "teacher"}}), 1);
     const std::optional<double> ms = stopAtTheRobot(room, since);
@@ -440,9 +443,12 @@ inline std::optional<double> stopAllRound(const ClassroomOnTheWire &room, mqtt::
 }
 
 // The driver's heartbeat stops: the time from its last one to the stop at the robot.
-inline std::optional<double> lapseRound(const ClassroomOnTheWire &room, Driver &driver)
+inline std::optional<double> lapseRound(const ClassroomOnTheWire &room, Driver &driver, bool *drove = nullptr)
 {
-    if (!driver.takeAndDrive()) {
+    const bool driving = driver.takeAndDrive();
+    if (drove)
+        *drove = driving;
+    if (!driving) {
         qWarning("lapse round: the student could not take control and drive (%s)", qPrintable(driver.why()));
         return std::nullopt;
     }

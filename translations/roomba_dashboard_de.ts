@@ -2401,10 +2401,6 @@ Klicken wählt diesen Roboter: jedes Dock zeigt ihn</translation>
         <translation>kein JSON-Objekt</translation>
     </message>
     <message>
-        <source>%1: larger than a lesson file can be (1 MB)</source>
-        <translation>%1: größer, als eine Lektionsdatei sein kann (1 MB)</translation>
-    </message>
-    <message>
         <source>needs &quot;place&quot; or &quot;forward_mm&quot;, not both</source>
         <translation>braucht &quot;place&quot; oder &quot;forward_mm&quot;, nicht beides</translation>
     </message>
@@ -6600,6 +6596,37 @@ Umschalt+Esc tut dasselbe aus jedem Fenster; Leertaste oder Esc hält den ausgew
     <message>
         <source>%1: the wake line is set to none, so the cable is taken to have no BRC wire</source>
         <translation>%1: Die Weckleitung ist auf keine gestellt, das Kabel gilt also als ohne BRC-Ader</translation>
+    </message>
+</context>
+<context>
+    <name>BoundedFile</name>
+    <message>
+        <source>not a regular file but a named pipe</source>
+        <translation>keine gewöhnliche Datei, sondern eine benannte Pipe</translation>
+    </message>
+    <message>
+        <source>not a regular file but a folder</source>
+        <translation>keine gewöhnliche Datei, sondern ein Ordner</translation>
+    </message>
+    <message>
+        <source>not a regular file but a device</source>
+        <translation>keine gewöhnliche Datei, sondern ein Gerät</translation>
+    </message>
+    <message>
+        <source>not a regular file</source>
+        <translation>keine gewöhnliche Datei</translation>
+    </message>
+    <message>
+        <source>%1, larger than the %2 this program reads of such a file</source>
+        <translation>%1, größer als die %2, die dieses Programm von einer solchen Datei liest</translation>
+    </message>
+    <message>
+        <source>larger than the %1 this program reads of such a file</source>
+        <translation>größer als die %1, die dieses Programm von einer solchen Datei liest</translation>
+    </message>
+    <message>
+        <source>%1 bytes</source>
+        <translation>%1 Bytes</translation>
     </message>
 </context>
 </TS>

@@ -2400,10 +2400,6 @@ Haga clic para seleccionar este robot: todos los paneles lo muestran</translatio
         <translation>no es un objeto JSON</translation>
     </message>
     <message>
-        <source>%1: larger than a lesson file can be (1 MB)</source>
-        <translation>%1: más grande de lo que puede ser un archivo de lección (1 MB)</translation>
-    </message>
-    <message>
         <source>needs &quot;place&quot; or &quot;forward_mm&quot;, not both</source>
         <translation>necesita &quot;place&quot; o &quot;forward_mm&quot;, no ambos</translation>
     </message>
@@ -6599,6 +6595,37 @@ Mayús+Esc hace lo mismo desde cualquier ventana; Espacio o Esc detiene el robot
     <message>
         <source>%1: the wake line is set to none, so the cable is taken to have no BRC wire</source>
         <translation>%1: la línea de despertar está en ninguna, así que se toma el cable como sin hilo BRC</translation>
+    </message>
+</context>
+<context>
+    <name>BoundedFile</name>
+    <message>
+        <source>not a regular file but a named pipe</source>
+        <translation>no es un archivo normal, sino una tubería con nombre</translation>
+    </message>
+    <message>
+        <source>not a regular file but a folder</source>
+        <translation>no es un archivo normal, sino una carpeta</translation>
+    </message>
+    <message>
+        <source>not a regular file but a device</source>
+        <translation>no es un archivo normal, sino un dispositivo</translation>
+    </message>
+    <message>
+        <source>not a regular file</source>
+        <translation>no es un archivo normal</translation>
+    </message>
+    <message>
+        <source>%1, larger than the %2 this program reads of such a file</source>
+        <translation>%1, más que los %2 que este programa lee de un archivo así</translation>
+    </message>
+    <message>
+        <source>larger than the %1 this program reads of such a file</source>
+        <translation>más que los %1 que este programa lee de un archivo así</translation>
+    </message>
+    <message>
+        <source>%1 bytes</source>
+        <translation>%1 bytes</translation>
     </message>
 </context>
 </TS>

@@ -14,10 +14,10 @@ namespace files {
 
 namespace {
 
-QString tr(const char *text)
-{
-    return QCoreApplication::translate("BoundedFile", text);
-}
+// The messages' context for translators.
+struct BoundedFile {
+    Q_DECLARE_TR_FUNCTIONS(BoundedFile)
+};
 
 void setError(QString *error, const QString &message)
 {
@@ -28,18 +28,26 @@ void setError(QString *error, const QString &message)
 QString kindOf(mode_t mode)
 {
     if (S_ISFIFO(mode))
-        return tr("not a regular file but a named pipe");
+        return BoundedFile::tr("not a regular file but a named pipe");
     if (S_ISDIR(mode))
-        return tr("not a regular file but a folder");
+        return BoundedFile::tr("not a regular file but a folder");
     if (S_ISCHR(mode) || S_ISBLK(mode))
-        return tr("not a regular file but a device");
-    return tr("not a regular file");
+        return BoundedFile::tr("not a regular file but a device");
+    return BoundedFile::tr("not a regular file");
 }
 
 } // namespace
 
 bool openBounded(QFile &file, const QString &path, qint64 maxBytes, QString *error, QIODevice::OpenMode mode)
 {
+    // A resource (":/lessons/…") is the program's own, built into it.
+    if (path.startsWith(QLatin1Char(':'))) {
+        file.setFileName(path);
+        if (file.open(mode))
+            return true;
+        setError(error, file.errorString());
+        return false;
+    }
     // Without blocking, so that a named pipe with no writer is refused, not
     // waited on; the check is made on what was opened, so nothing can be
     // put in the file's place between the check and the reading.
@@ -56,7 +64,7 @@ bool openBounded(QFile &file, const QString &path, qint64 maxBytes, QString *err
     else if (!S_ISREG(st.st_mode))
         why = kindOf(st.st_mode);
     else if (st.st_size > maxBytes)
-        why = tr("%1, larger than the %2 this program reads of such a file").arg(sizeText(st.st_size), sizeText(maxBytes));
+        why = BoundedFile::tr("%1, larger than the %2 this program reads of such a file").arg(sizeText(st.st_size), sizeText(maxBytes));
     else if (::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) & ~O_NONBLOCK) != 0
              || !file.open(fd, mode, QFileDevice::AutoCloseHandle))
         why = file.errorString();
@@ -75,7 +83,7 @@ std::optional<QByteArray> readBounded(const QString &path, qint64 maxBytes, QStr
     // One byte more than the limit tells a file that grew after the check.
     QByteArray bytes = file.read(maxBytes + 1);
     if (bytes.size() > maxBytes) {
-        setError(error, tr("larger than the %1 this program reads of such a file").arg(sizeText(maxBytes)));
+        setError(error, BoundedFile::tr("larger than the %1 this program reads of such a file").arg(sizeText(maxBytes)));
         return std::nullopt;
     }
     if (file.error() != QFileDevice::NoError) {
@@ -99,7 +107,7 @@ QString sizeText(qint64 bytes)
         return scaled(1 << 20, "MB");
     if (bytes >= 1 << 10)
         return scaled(1 << 10, "KB");
-    return tr("%1 bytes").arg(bytes);
+    return BoundedFile::tr("%1 bytes").arg(bytes);
 }
 
 } // namespace files

@@ -15,7 +15,8 @@
 namespace files {
 
 // Opens the file at `path` into `file` with `mode` (ReadOnly or ReadWrite),
-// on the very descriptor that was checked (so `file` has no fileName()).
+// on the very descriptor that was checked (so `file` has no fileName()); a
+// resource of the program's own (":/rooms/…") is opened as it is.
 // False, with the reason in `error` and `file` left closed: it cannot be
 // opened, it is not a regular file, or it is larger than `maxBytes`. The
 // reason names the limit, not the file: callers put the file's name first.

@@ -19,6 +19,8 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include <sys/stat.h>
+
 #include <numbers>
 
 using namespace std::chrono_literals;
@@ -405,6 +407,29 @@ private slots:
         QString error;
         QVERIFY(!loadLessonFile("/nonexistent/lesson.json", &error));
         QVERIFY2(error.startsWith("lesson.json: "), qPrintable(error));
+    }
+
+    // A lesson someone sent that is a named pipe, a device or too large is
+    // refused at once with the file's name and the limit: without the check a
+    // pipe blocked the program for good and /dev/zero was read until memory ran out.
+    void aFileThatIsNoLessonIsRefusedUnread()
+    {
+        QTemporaryDir dir;
+        const QString pipe = dir.filePath("pipe.json");
+        QCOMPARE(::mkfifo(QFile::encodeName(pipe).constData(), 0600), 0);
+        const QString zero = dir.filePath("zero.json");
+        QVERIFY(QFile::link("/dev/zero", zero));
+        const QString big = dir.filePath("big.json");
+        QFile file(big);
+        QVERIFY(file.open(QIODevice::WriteOnly) && file.resize(2 << 20));
+        file.close();
+        QString error;
+        QVERIFY(!loadLessonFile(big, &error));
+        QCOMPARE(error, QString("big.json: 2 MB, larger than the 1 MB this program reads of such a file"));
+        QVERIFY(!loadLessonFile(zero, &error));
+        QCOMPARE(error, QString("zero.json: not a regular file but a device"));
+        QVERIFY(!loadLessonFile(pipe, &error));
+        QCOMPARE(error, QString("pipe.json: not a regular file but a named pipe"));
     }
 
     // Every text of every shipped lesson is in lesson_texts.cpp, so lupdate

@@ -4837,6 +4837,10 @@ Doppelklick zum Umbenennen</translation>
         <source>%1: the shade (the fifth number) must be from 0 (the floor as it is) to 1 (black), not %2</source>
         <translation>%1: der Farbton (die fünfte Zahl) muss zwischen 0 (der Boden, wie er ist) und 1 (schwarz) liegen, nicht %2</translation>
     </message>
+    <message>
+        <source>&quot;%1&quot; has %2 entries; a room holds at most %3</source>
+        <translation>&quot;%1&quot; hat %2 Einträge; ein Raum fasst höchstens %3</translation>
+    </message>
 </context>
 <context>
     <name>RtttlImport</name>

@@ -4836,6 +4836,10 @@ Doble clic para renombrar</translation>
         <source>%1: the shade (the fifth number) must be from 0 (the floor as it is) to 1 (black), not %2</source>
         <translation>%1: el tono (el quinto número) debe ir de 0 (el suelo tal cual) a 1 (negro), no %2</translation>
     </message>
+    <message>
+        <source>&quot;%1&quot; has %2 entries; a room holds at most %3</source>
+        <translation>&quot;%1&quot; tiene %2 entradas; una sala admite como máximo %3</translation>
+    </message>
 </context>
 <context>
     <name>RtttlImport</name>

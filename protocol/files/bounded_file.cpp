@@ -64,7 +64,11 @@ bool openBounded(QFile &file, const QString &path, qint64 maxBytes, QString *err
     else if (!S_ISREG(st.st_mode))
         why = kindOf(st.st_mode);
     else if (st.st_size > maxBytes)
-        why = BoundedFile::tr("%1, larger than the %2 this program reads of such a file").arg(sizeText(st.st_size), sizeText(maxBytes));
+        // In bytes where the rounded sizes would read the same.
+        why = BoundedFile::tr("%1, larger than the %2 this program reads of such a file")
+                  .arg(sizeText(st.st_size) != sizeText(maxBytes) ? sizeText(st.st_size)
+                                                                  : BoundedFile::tr("%1 bytes").arg(st.st_size),
+                       sizeText(maxBytes));
     else if (::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) & ~O_NONBLOCK) != 0
              || !file.open(fd, mode, QFileDevice::AutoCloseHandle))
         why = file.errorString();

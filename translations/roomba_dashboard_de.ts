@@ -3852,6 +3852,14 @@ GPL-3.0-or-later.</translation>
         <source>unreadable true pose</source>
         <translation>unlesbare wahre Pose</translation>
     </message>
+    <message>
+        <source>packet %1 is in it twice</source>
+        <translation>Paket %1 kommt darin zweimal vor</translation>
+    </message>
+    <message>
+        <source>a stream no robot sends (%1)</source>
+        <translation>ein Datenstrom, den kein Roboter sendet (%1)</translation>
+    </message>
 </context>
 <context>
     <name>RecordingActions</name>

@@ -3851,6 +3851,14 @@ GPL-3.0-or-later.</translation>
         <source>unreadable true pose</source>
         <translation>pose real ilegible</translation>
     </message>
+    <message>
+        <source>packet %1 is in it twice</source>
+        <translation>el paquete %1 aparece dos veces</translation>
+    </message>
+    <message>
+        <source>a stream no robot sends (%1)</source>
+        <translation>un flujo de datos que ningún robot envía (%1)</translation>
+    </message>
 </context>
 <context>
     <name>RecordingActions</name>

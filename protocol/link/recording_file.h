@@ -32,6 +32,9 @@ inline constexpr quint16 kOldestVersion = 1; // still read
 inline constexpr int kMaxPayload = 0xFFFF;
 inline constexpr int kFlushIntervalMs = 1000;
 inline constexpr char kFileSuffix[] = "oirec";
+// A recording is read whole: an hour at 115200 baud is about 23 MB, so this
+// is some 40 hours; a larger file is refused unread.
+inline constexpr qint64 kMaxFileBytes = qint64(1) << 30;
 
 enum class RecordKind : quint8 {
     Received = 'R',      // bytes from the robot

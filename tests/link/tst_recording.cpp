@@ -14,6 +14,7 @@
 
 #include <QDateTime>
 #include <QFile>
+#include <QFileInfo>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
@@ -663,6 +664,77 @@ private slots:
         QVERIFY(!Recording::saveMarkerEdits(path, {MarkerEdit::add({1, 0, "x"})}, &error));
         QVERIFY2(error.contains("not a Roomba Dashboard recording"), qPrintable(error));
         QCOMPARE(fileBytes(path), QByteArray("not a recording"));
+    }
+
+    // A stream description is what the robot can send, or the file is
+    // refused with why: group 100 named 2,000 times made each CSV row
+    // 100,000 empty cells, 2.6 GB from a 1.2 MB file.
+    void aStreamNoRobotSendsIsRefused_data()
+    {
+        QTest::addColumn<QByteArray>("stream");
+        QTest::addColumn<QString>("why");
+        QByteArray twoThousand = "100";
+        for (int i = 1; i < 2000; ++i)
+            twoThousand += ",100";
+        QTest::newRow("group 100, 2,000 times")
+            << R"({"profile":"create2","baud":115200,"packets":[)" + twoThousand + "]}"
+            << "number of packets: 2000 is outside 0..108";
+        QTest::newRow("a packet twice") << QByteArray(R"({"profile":"create2","baud":115200,"packets":[7,22,7]})")
+                                        << "packet 7 is in it twice";
+        QTest::newRow("a packet and its group") << QByteArray(R"({"profile":"create2","baud":115200,"packets":[1,7]})")
+                                                << "packet 7 is in it twice";
+        QTest::newRow("two groups that overlap") << QByteArray(R"({"profile":"create2","baud":115200,"packets":[100,6]})")
+                                                 << "packet 7 is in it twice";
+        QTest::newRow("a frame too long for its baud")
+            << QByteArray(R"({"profile":"create2","baud":19200,"packets":[100]})")
+            << "stream frame size: a frame of 84 bytes does not fit in 15 ms at 19200 baud (at most 28 bytes)";
+    }
+
+    void aStreamNoRobotSendsIsRefused()
+    {
+        QFETCH(QByteArray, stream);
+        QFETCH(QString, why);
+        QByteArray file = oirecHeader(3, R"({"format":"Roomba Dashboard recording","version":3})");
+        file += oirecRecord('S', 0, stream);
+        for (int i = 0; i < 100; ++i) // tiny frames of packet 7 alone
+            file += oirecRecord('R', 15000 * i, QByteArray("\x13\x02\x07\x00\xE4", 5));
+        QString error;
+        QVERIFY(!Recording::fromBytes(file, "run.oirec", &error));
+        QCOMPARE(error, "run.oirec: damaged before the stream started: a stream no robot sends (" + why +
+                            ") at byte 65 (record 0, after 0.000 s)");
+    }
+
+    // A recording is read only as a regular file of at most 1 GB: a named
+    // pipe blocked the window for good, /dev/zero was read until memory ran out.
+    void aFileThatIsNoRecordingIsRefusedUnread()
+    {
+        QTemporaryDir dir;
+        const QString big = dir.filePath("big.oirec");
+        QFile file(big);
+        QVERIFY(file.open(QIODevice::WriteOnly) && file.resize(oilink::recording::kMaxFileBytes + 1)); // sparse
+        file.close();
+        const QString zero = dir.filePath("zero.oirec");
+        QVERIFY(QFile::link("/dev/zero", zero));
+        const QString pipe = dir.filePath("pipe.oirec");
+        QCOMPARE(::mkfifo(QFile::encodeName(pipe).constData(), 0600), 0);
+        const QString tooLarge = big + ": 1073741825 bytes, larger than the 1 GB this program reads of such a file";
+        QString error;
+        QVERIFY(!Recording::load(big, &error));
+        QCOMPARE(error, tooLarge);
+        QVERIFY(!Recording::readStream(big, &error));
+        QCOMPARE(error, tooLarge);
+        QVERIFY(!Recording::saveMarkerEdits(big, {MarkerEdit::add({1, 0, "x"})}, &error));
+        QCOMPARE(error, tooLarge);
+        QCOMPARE(QFileInfo(big).size(), oilink::recording::kMaxFileBytes + 1);
+        for (const auto &[path, kind] : {std::pair{zero, "a device"}, std::pair{pipe, "a named pipe"}}) {
+            const QString refused = path + ": not a regular file but " + kind;
+            QVERIFY(!Recording::load(path, &error));
+            QCOMPARE(error, refused);
+            QVERIFY(!Recording::readStream(path, &error));
+            QCOMPARE(error, refused);
+            QVERIFY(!Recording::saveMarkerEdits(path, {MarkerEdit::add({1, 0, "x"})}, &error));
+            QCOMPARE(error, refused);
+        }
     }
 
     void csvHasOneRowPerFrame()

@@ -4387,6 +4387,10 @@ Doppelklick zum Umbenennen</translation>
         <source>The marker could not be saved: %1</source>
         <translation>Die Markierung konnte nicht gespeichert werden: %1</translation>
     </message>
+    <message>
+        <source>A recording holds at most %1 markers.</source>
+        <translation>Eine Aufzeichnung fasst höchstens %1 Markierungen.</translation>
+    </message>
 </context>
 <context>
     <name>RobotMode</name>
@@ -6639,6 +6643,13 @@ Umschalt+Esc tut dasselbe aus jedem Fenster; Leertaste oder Esc hält den ausgew
     <message>
         <source>%1 bytes</source>
         <translation>%1 Bytes</translation>
+    </message>
+</context>
+<context>
+    <name>RecordingMarkers</name>
+    <message>
+        <source>%1 markers beyond the first %2 were left out: a recording holds at most %2</source>
+        <translation>%1 Markierungen nach den ersten %2 wurden ausgelassen: eine Aufzeichnung fasst höchstens %2</translation>
     </message>
 </context>
 </TS>

@@ -4386,6 +4386,10 @@ Doble clic para renombrar</translation>
         <source>The marker could not be saved: %1</source>
         <translation>No se pudo guardar la marca: %1</translation>
     </message>
+    <message>
+        <source>A recording holds at most %1 markers.</source>
+        <translation>Una grabación admite como máximo %1 marcas.</translation>
+    </message>
 </context>
 <context>
     <name>RobotMode</name>
@@ -6638,6 +6642,13 @@ Mayús+Esc hace lo mismo desde cualquier ventana; Espacio o Esc detiene el robot
     <message>
         <source>%1 bytes</source>
         <translation>%1 bytes</translation>
+    </message>
+</context>
+<context>
+    <name>RecordingMarkers</name>
+    <message>
+        <source>%1 markers beyond the first %2 were left out: a recording holds at most %2</source>
+        <translation>se omitieron %1 marcas después de las primeras %2: una grabación admite como máximo %2</translation>
     </message>
 </context>
 </TS>

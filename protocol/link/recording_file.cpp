@@ -366,10 +366,13 @@ std::optional<Recording> Recording::parse(const QByteArray &data, const QString 
         }
         case recording::RecordKind::Marker: {
             const std::optional<MarkerEdit> edit = MarkerEdit::fromJson(QByteArray(payload, length));
-            if (!edit)
+            if (!edit) {
                 damaged(QCoreApplication::translate("Recording", "unreadable marker"));
-            else
-                applyMarkerEdit(r.m_markers, *edit); // an edit of a marker that is gone changes nothing
+                break;
+            }
+            if (edit->kind == MarkerEdit::Kind::Add && r.m_markers.size() >= kMaxMarkers)
+                ++r.m_markersLeftOut;
+            applyMarkerEdit(r.m_markers, *edit); // an edit of a marker that is gone changes nothing
             break;
         }
         case recording::RecordKind::TruePose:

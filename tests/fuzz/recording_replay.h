@@ -24,7 +24,8 @@ namespace fuzz {
 // - the CSV has a header row and one row per frame, and is at most 8 times
 //   the file's size and a header: a frame is the stream's, at least 5 bytes,
 //   and its row at most 4 times that (a 20-digit time, a 6-digit value for a
-//   packet of an id and 2 bytes), whatever the file says its stream is.
+//   packet of an id and 2 bytes), whatever the file says its stream is;
+// - it holds at most oilink::kMaxMarkers markers.
 // Returns an empty string when they hold, else what broke.
 inline std::string checkRecordingInput(const QByteArray &input)
 {
@@ -66,6 +67,8 @@ inline std::string checkRecordingInput(const QByteArray &input)
     if (csv.size() > 8 * input.size() + 4096)
         return "the CSV is " + std::to_string(csv.size()) + " characters from " + std::to_string(input.size())
                + " bytes";
+    if (recording->markers().size() > oilink::kMaxMarkers)
+        return std::to_string(recording->markers().size()) + " markers read";
     return {};
 }
 

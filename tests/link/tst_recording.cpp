@@ -9,7 +9,7 @@
 #include "real_time_robot.h"
 #include "typed_command_bytes.h"
 
-#include "oirec_records.h" // tests/common
+#include "crowded_recording.h" // tests/common
 #include "stream_parser.h"
 
 #include <QDateTime>
@@ -704,6 +704,28 @@ private slots:
                             ") at byte 65 (record 0, after 0.000 s)");
     }
 
+    // The first 1,000 markers a file adds are read, the rest counted: 60,000
+    // froze the window for 43 s. No marker is added beyond them.
+    void aRecordingKeepsItsFirstThousandMarkers()
+    {
+        // A rename of a marker left out changes nothing; of one kept, its note.
+        const QByteArray file = crowdedRecording(oilink::kMaxMarkers + 500)
+                                + oirecRecord('M', 0, MarkerEdit::rename(oilink::kMaxMarkers + 1, "left out").toJson())
+                                + oirecRecord('M', 0, MarkerEdit::rename(1, "first").toJson());
+        QString error;
+        const Recording r = *Recording::fromBytes(file, "m.oirec", &error);
+        QVERIFY(!r.damage());
+        QCOMPARE(r.markers().size(), oilink::kMaxMarkers);
+        QCOMPARE(r.markersLeftOut(), 500);
+        QCOMPARE(r.markers().first().note, QString("first"));
+        QCOMPARE(r.markers().last().id, oilink::kMaxMarkers);
+        QCOMPARE(oilink::markersLeftOutNotice(r.markersLeftOut()),
+                 QString("500 markers beyond the first 1000 were left out: a recording holds at most 1000"));
+        QList<RecordingMarker> markers = r.markers();
+        QVERIFY(!oilink::applyMarkerEdit(markers, MarkerEdit::add({5000, 0, "one more"})));
+        QCOMPARE(markers, r.markers());
+    }
+
     // A recording is read only as a regular file of at most 1 GB: a named
     // pipe blocked the window for good, /dev/zero was read until memory ran out.
     void aFileThatIsNoRecordingIsRefusedUnread()
@@ -717,24 +739,18 @@ private slots:
         QVERIFY(QFile::link("/dev/zero", zero));
         const QString pipe = dir.filePath("pipe.oirec");
         QCOMPARE(::mkfifo(QFile::encodeName(pipe).constData(), 0600), 0);
-        const QString tooLarge = big + ": 1073741825 bytes, larger than the 1 GB this program reads of such a file";
-        QString error;
-        QVERIFY(!Recording::load(big, &error));
-        QCOMPARE(error, tooLarge);
-        QVERIFY(!Recording::readStream(big, &error));
-        QCOMPARE(error, tooLarge);
-        QVERIFY(!Recording::saveMarkerEdits(big, {MarkerEdit::add({1, 0, "x"})}, &error));
-        QCOMPARE(error, tooLarge);
+        // Each of the three readers: the whole file, its stream, its markers.
+        const auto refusedBy = [](const QString &path) {
+            QStringList errors(3);
+            const bool none = !Recording::load(path, &errors[0]) && !Recording::readStream(path, &errors[1])
+                              && !Recording::saveMarkerEdits(path, {MarkerEdit::add({1, 0, "x"})}, &errors[2]);
+            return none ? errors : QStringList();
+        };
+        QCOMPARE(refusedBy(big),
+                 QStringList(3, big + ": 1073741825 bytes, larger than the 1 GB this program reads of such a file"));
         QCOMPARE(QFileInfo(big).size(), oilink::recording::kMaxFileBytes + 1);
-        for (const auto &[path, kind] : {std::pair{zero, "a device"}, std::pair{pipe, "a named pipe"}}) {
-            const QString refused = path + ": not a regular file but " + kind;
-            QVERIFY(!Recording::load(path, &error));
-            QCOMPARE(error, refused);
-            QVERIFY(!Recording::readStream(path, &error));
-            QCOMPARE(error, refused);
-            QVERIFY(!Recording::saveMarkerEdits(path, {MarkerEdit::add({1, 0, "x"})}, &error));
-            QCOMPARE(error, refused);
-        }
+        QCOMPARE(refusedBy(zero), QStringList(3, zero + ": not a regular file but a device"));
+        QCOMPARE(refusedBy(pipe), QStringList(3, pipe + ": not a regular file but a named pipe"));
     }
 
     void csvHasOneRowPerFrame()

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // roomba-ctl sensors and send, as a script sees them: against the built-in
 // virtual robot and against roomba-sim on a pseudo-terminal.
-#include "oirec_records.h"
+#include "crowded_recording.h"
 #include "robot_address_mistakes.h"
 #include "recording_file.h"
 #include "robot_link.h"
@@ -711,7 +711,8 @@ private slots:
 
     // What a file can make is bounded by what it honestly holds: a stream
     // listing group 100 200 times (2,000 made 2.6 GB of CSV from 1.2 MB) is
-    // refused and nothing is written.
+    // refused and nothing is written; markers beyond the limit are left out
+    // and said so.
     void csvOfADishonestRecordingIsBounded()
     {
         QTemporaryDir dir;
@@ -733,6 +734,15 @@ private slots:
         QCOMPARE(refused.err, QString("roomba-ctl: %1: damaged before the stream started: a stream no robot sends "
                                       "(number of packets: 200 is outside 0..108) at byte 65 (record 0, after 0.000 s)\n")
                                   .arg(path));
+
+        const QString crowded = dir.filePath("crowded.oirec");
+        QVERIFY(writeCrowdedRecording(crowded, oilink::kMaxMarkers + 3));
+        const Outcome kept = run({"csv", crowded});
+        QCOMPARE(kept.status, 0);
+        QCOMPARE(kept.err, QString("roomba-ctl: %1: 3 markers beyond the first 1000 were left out: a recording holds "
+                                   "at most 1000\n").arg(crowded));
+        QCOMPARE(kept.lines.size(), 2);
+        QCOMPARE(kept.lines[1].count(QLatin1Char(';')), oilink::kMaxMarkers - 1); // the labels on the one frame
     }
 };
 

@@ -2,6 +2,7 @@
 #include "bounded_file.h"
 
 #include <QCoreApplication>
+#include <QSettings>
 
 #include <cerrno>
 #include <cstring>
@@ -95,6 +96,15 @@ std::optional<QByteArray> readBounded(const QString &path, qint64 maxBytes, QStr
         return std::nullopt;
     }
     return bytes;
+}
+
+int beginReadBoundedArray(QSettings &settings, const QString &prefix, int max)
+{
+    const int size = settings.beginReadArray(prefix);
+    if (size <= max)
+        return size;
+    qWarning("%s: %s/size is %d; the first %d are read", qPrintable(settings.fileName()), qPrintable(prefix), size, max);
+    return max;
 }
 
 QString sizeText(qint64 bytes)

@@ -7,6 +7,8 @@
 
 #include <optional>
 
+class QSettings;
+
 // A file someone sent is opened only when it is a regular file no larger
 // than its reader's limit, both checked before a byte is read: a named pipe
 // would block the program for good, a device such as /dev/zero never ends,
@@ -29,5 +31,11 @@ std::optional<QByteArray> readBounded(const QString &path, qint64 maxBytes, QStr
 
 // A size as people read it: "512 bytes", "64 KB", "1 MB", "2.5 GB".
 QString sizeText(qint64 bytes);
+
+// settings.beginReadArray(prefix), and the number of its entries to read:
+// its size, but at most `max`, with a warning naming the file when it says
+// more. A settings file with brokers/size=100000000 kept the window from
+// ever opening.
+int beginReadBoundedArray(QSettings &settings, const QString &prefix, int max);
 
 } // namespace files

@@ -10,6 +10,7 @@
 #include "typed_command_bytes.h"
 
 #include "crowded_recording.h" // tests/common
+#include "not_regular_files.h" // tests/common
 #include "stream_parser.h"
 
 #include <QDateTime>
@@ -735,10 +736,8 @@ private slots:
         QFile file(big);
         QVERIFY(file.open(QIODevice::WriteOnly) && file.resize(oilink::recording::kMaxFileBytes + 1)); // sparse
         file.close();
-        const QString zero = dir.filePath("zero.oirec");
-        QVERIFY(QFile::link("/dev/zero", zero));
-        const QString pipe = dir.filePath("pipe.oirec");
-        QCOMPARE(::mkfifo(QFile::encodeName(pipe).constData(), 0600), 0);
+        const NotRegularFiles no = makeNotRegularFiles(dir.path(), "oirec");
+        QVERIFY(!no.pipe.isEmpty());
         // Each of the three readers: the whole file, its stream, its markers.
         const auto refusedBy = [](const QString &path) {
             QStringList errors(3);
@@ -749,8 +748,8 @@ private slots:
         QCOMPARE(refusedBy(big),
                  QStringList(3, big + ": 1073741825 bytes, larger than the 1 GB this program reads of such a file"));
         QCOMPARE(QFileInfo(big).size(), oilink::recording::kMaxFileBytes + 1);
-        QCOMPARE(refusedBy(zero), QStringList(3, zero + ": not a regular file but a device"));
-        QCOMPARE(refusedBy(pipe), QStringList(3, pipe + ": not a regular file but a named pipe"));
+        QCOMPARE(refusedBy(no.device), QStringList(3, no.device + ": not a regular file but a device"));
+        QCOMPARE(refusedBy(no.pipe), QStringList(3, no.pipe + ": not a regular file but a named pipe"));
     }
 
     void csvHasOneRowPerFrame()

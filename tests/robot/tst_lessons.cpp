@@ -5,6 +5,7 @@
 #include "command_encoder.h"
 #include "lesson_file.h"
 #include "lesson_runner.h"
+#include "not_regular_files.h" // tests/common
 #include "pseudo_translation.h" // tests/common
 #include "robot_mode.h"
 #include "robot_odometry.h"
@@ -18,8 +19,6 @@
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
-
-#include <sys/stat.h>
 
 #include <numbers>
 
@@ -415,10 +414,8 @@ private slots:
     void aFileThatIsNoLessonIsRefusedUnread()
     {
         QTemporaryDir dir;
-        const QString pipe = dir.filePath("pipe.json");
-        QCOMPARE(::mkfifo(QFile::encodeName(pipe).constData(), 0600), 0);
-        const QString zero = dir.filePath("zero.json");
-        QVERIFY(QFile::link("/dev/zero", zero));
+        const NotRegularFiles no = makeNotRegularFiles(dir.path(), "json");
+        QVERIFY(!no.pipe.isEmpty());
         const QString big = dir.filePath("big.json");
         QFile file(big);
         QVERIFY(file.open(QIODevice::WriteOnly) && file.resize(2 << 20));
@@ -426,9 +423,9 @@ private slots:
         QString error;
         QVERIFY(!loadLessonFile(big, &error));
         QCOMPARE(error, QString("big.json: 2 MB, larger than the 1 MB this program reads of such a file"));
-        QVERIFY(!loadLessonFile(zero, &error));
+        QVERIFY(!loadLessonFile(no.device, &error));
         QCOMPARE(error, QString("zero.json: not a regular file but a device"));
-        QVERIFY(!loadLessonFile(pipe, &error));
+        QVERIFY(!loadLessonFile(no.pipe, &error));
         QCOMPARE(error, QString("pipe.json: not a regular file but a named pipe"));
     }
 

@@ -10,7 +10,7 @@
 #include <QTemporaryDir>
 #include <QTest>
 
-#include <sys/stat.h>
+#include "not_regular_files.h" // tests/common
 
 namespace {
 const QString kRooms = QStringLiteral(ROOMBA_ROOMS_DIR);
@@ -195,17 +195,15 @@ private slots:
         const QByteArray room = R"({"format": "roomba-room", "version": 1})";
         QVERIFY(file.write(room + QByteArray((1 << 20) + 1 - room.size(), ' ')) == (1 << 20) + 1);
         file.close();
-        const QString zero = dir.filePath("zero.json");
-        QVERIFY(QFile::link("/dev/zero", zero));
-        const QString pipe = dir.filePath("pipe.json");
-        QCOMPARE(::mkfifo(QFile::encodeName(pipe).constData(), 0600), 0);
+        const NotRegularFiles no = makeNotRegularFiles(dir.path(), "json");
+        QVERIFY(!no.pipe.isEmpty());
         QString why;
         QVERIFY(!sim::loadRoomFile(big, &why));
         QCOMPARE(why, big + ": cannot read: 1048577 bytes, larger than the 1 MB this program reads of such a file");
-        QVERIFY(!sim::loadRoomFile(zero, &why));
-        QCOMPARE(why, zero + ": cannot read: not a regular file but a device");
-        QVERIFY(!sim::loadRoomFile(pipe, &why));
-        QCOMPARE(why, pipe + ": cannot read: not a regular file but a named pipe");
+        QVERIFY(!sim::loadRoomFile(no.device, &why));
+        QCOMPARE(why, no.device + ": cannot read: not a regular file but a device");
+        QVERIFY(!sim::loadRoomFile(no.pipe, &why));
+        QCOMPARE(why, no.pipe + ": cannot read: not a regular file but a named pipe");
     }
 
     void aMissingFileIsSaidSo()

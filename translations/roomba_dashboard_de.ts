@@ -2982,10 +2982,6 @@ GPL-3.0-or-later.</translation>
         <translation>%1 konnte nicht importiert werden: %2</translation>
     </message>
     <message>
-        <source>no such file</source>
-        <translation>Datei nicht gefunden</translation>
-    </message>
-    <message>
         <source>not a readable Standard MIDI File</source>
         <translation>keine lesbare Standard-MIDI-Datei</translation>
     </message>

@@ -2981,10 +2981,6 @@ GPL-3.0-or-later.</translation>
         <translation>No se pudo importar %1: %2</translation>
     </message>
     <message>
-        <source>no such file</source>
-        <translation>el archivo no existe</translation>
-    </message>
-    <message>
         <source>not a readable Standard MIDI File</source>
         <translation>no es un archivo MIDI estándar legible</translation>
     </message>

@@ -24,6 +24,7 @@ void RobotMarkers::recordingStarted(const QString &path, double startedSeconds)
     m_path = path;
     m_originSeconds = startedSeconds;
     m_markers.clear();
+    m_leftOut = 0;
     emit changed();
 }
 
@@ -33,7 +34,7 @@ void RobotMarkers::recordingStopped()
         m_where = Where::Nowhere;
 }
 
-void RobotMarkers::replayOpened(const QString &path, const QList<oilink::RecordingMarker> &markers)
+void RobotMarkers::replayOpened(const QString &path, const QList<oilink::RecordingMarker> &markers, int leftOut)
 {
     if (m_where == Where::Replay && m_path == path)
         return;
@@ -41,6 +42,7 @@ void RobotMarkers::replayOpened(const QString &path, const QList<oilink::Recordi
     m_path = path;
     m_originSeconds = 0;
     m_markers = markers;
+    m_leftOut = leftOut;
     emit changed();
 }
 
@@ -49,6 +51,7 @@ void RobotMarkers::clear()
     m_where = Where::Nowhere;
     m_path.clear();
     m_originSeconds = 0;
+    m_leftOut = 0;
     if (m_markers.isEmpty())
         return;
     m_markers.clear();
@@ -91,6 +94,9 @@ bool RobotMarkers::keep(const oilink::MarkerEdit &edit, QString *error)
     if (m_where == Where::Nowhere)
         return refuse(QCoreApplication::translate("RobotMarkers",
                                                   "Markers are kept in a recording: start one (File → Record) or open one."));
+    if (edit.kind == oilink::MarkerEdit::Kind::Add && m_markers.size() >= oilink::kMaxMarkers)
+        return refuse(QCoreApplication::translate("RobotMarkers", "A recording holds at most %1 markers.")
+                          .arg(oilink::kMaxMarkers));
     QList<oilink::RecordingMarker> changed = m_markers;
     if (!oilink::applyMarkerEdit(changed, edit))
         return refuse(QCoreApplication::translate("RobotMarkers", "There is no marker %1.").arg(edit.marker.id));

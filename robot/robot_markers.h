@@ -25,9 +25,10 @@ public:
     void recordingStarted(const QString &path, double startedSeconds);
     // The recording ended: its markers stay shown, and can no longer change.
     void recordingStopped();
-    // A replay of `path` opened, holding `markers`. Nothing when it is the
+    // A replay of `path` opened, holding `markers`, and `leftOut` more that
+    // the file added beyond oilink::kMaxMarkers. Nothing when it is the
     // replay already shown (its markers here are the newer).
-    void replayOpened(const QString &path, const QList<oilink::RecordingMarker> &markers);
+    void replayOpened(const QString &path, const QList<oilink::RecordingMarker> &markers, int leftOut = 0);
     // Another connection: no run, no markers.
     void clear();
 
@@ -36,10 +37,13 @@ public:
     // The file the markers are in; empty when none.
     QString path() const { return m_path; }
     const QList<oilink::RecordingMarker> &list() const { return m_markers; }
+    // The markers the replayed file holds beyond the first oilink::kMaxMarkers, not shown.
+    int leftOut() const { return m_leftOut; }
     std::optional<oilink::RecordingMarker> find(int id) const;
 
     // Adds a marker at `seconds` on the history's clock (the frame on
-    // screen); returns its id, or 0 with the reason in `error`.
+    // screen); returns its id, or 0 with the reason in `error` (no run, or
+    // oilink::kMaxMarkers already).
     int add(double seconds, const QString &note, QString *error = nullptr);
     bool rename(int id, const QString &note, QString *error = nullptr);
     bool remove(int id, QString *error = nullptr);
@@ -65,4 +69,5 @@ private:
     QString m_path;
     double m_originSeconds = 0; // the recording's time 0 on the history's clock
     QList<oilink::RecordingMarker> m_markers;
+    int m_leftOut = 0;
 };

@@ -418,7 +418,7 @@ void RobotSession::onReplayStatus(const oilink::ReplayStatus &status)
         resetHistory();
     m_replay = status;
     if (!status.path.isEmpty())
-        m_markers.replayOpened(status.path, status.markers);
+        m_markers.replayOpened(status.path, status.markers, status.markersLeftOut);
     emit replayStatus(status);
 }
 

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "saved_robots.h"
 
+#include "bounded_file.h"
+
 #include <QSettings>
 
 namespace {
@@ -19,7 +21,7 @@ std::optional<oi::ProfileId> profileFrom(const QVariant &value, bool *ok)
 QList<SavedRobot> loadSavedRobots(QSettings &settings)
 {
     QList<SavedRobot> robots;
-    const int count = settings.beginReadArray(kArray);
+    const int count = files::beginReadBoundedArray(settings, kArray, kMaxSavedRobots);
     for (int i = 0; i < count; ++i) {
         settings.setArrayIndex(i);
         SavedRobot r;

@@ -19,7 +19,12 @@ struct SavedRobot {
     friend bool operator==(const SavedRobot &, const SavedRobot &) = default;
 };
 
-// The "robots" array of the settings. Entries that cannot be read (an
-// unknown transport, a profile out of range) are left out, never guessed.
+// A window's list holds a class of robots and more: 30 is the most the
+// fleet view is drawn for.
+inline constexpr int kMaxSavedRobots = 100;
+
+// The "robots" array of the settings, its first kMaxSavedRobots entries.
+// Entries that cannot be read (an unknown transport, a profile out of
+// range) are left out, never guessed.
 QList<SavedRobot> loadSavedRobots(QSettings &settings);
 void saveRobots(QSettings &settings, const QList<SavedRobot> &robots);

@@ -2401,10 +2401,6 @@ Klicken wählt diesen Roboter: jedes Dock zeigt ihn</translation>
         <translation>kein JSON-Objekt</translation>
     </message>
     <message>
-        <source>%1: larger than a lesson file can be (1 MB)</source>
-        <translation>%1: größer, als eine Lektionsdatei sein kann (1 MB)</translation>
-    </message>
-    <message>
         <source>needs &quot;place&quot; or &quot;forward_mm&quot;, not both</source>
         <translation>braucht &quot;place&quot; oder &quot;forward_mm&quot;, nicht beides</translation>
     </message>
@@ -2984,10 +2980,6 @@ GPL-3.0-or-later.</translation>
     <message>
         <source>Could not import %1: %2</source>
         <translation>%1 konnte nicht importiert werden: %2</translation>
-    </message>
-    <message>
-        <source>no such file</source>
-        <translation>Datei nicht gefunden</translation>
     </message>
     <message>
         <source>not a readable Standard MIDI File</source>
@@ -3856,6 +3848,14 @@ GPL-3.0-or-later.</translation>
         <source>unreadable true pose</source>
         <translation>unlesbare wahre Pose</translation>
     </message>
+    <message>
+        <source>packet %1 is in it twice</source>
+        <translation>Paket %1 kommt darin zweimal vor</translation>
+    </message>
+    <message>
+        <source>a stream no robot sends (%1)</source>
+        <translation>ein Datenstrom, den kein Roboter sendet (%1)</translation>
+    </message>
 </context>
 <context>
     <name>RecordingActions</name>
@@ -4383,6 +4383,10 @@ Doppelklick zum Umbenennen</translation>
         <source>The marker could not be saved: %1</source>
         <translation>Die Markierung konnte nicht gespeichert werden: %1</translation>
     </message>
+    <message>
+        <source>A recording holds at most %1 markers.</source>
+        <translation>Eine Aufzeichnung fasst höchstens %1 Markierungen.</translation>
+    </message>
 </context>
 <context>
     <name>RobotMode</name>
@@ -4840,6 +4844,10 @@ Doppelklick zum Umbenennen</translation>
     <message>
         <source>%1: the shade (the fifth number) must be from 0 (the floor as it is) to 1 (black), not %2</source>
         <translation>%1: der Farbton (die fünfte Zahl) muss zwischen 0 (der Boden, wie er ist) und 1 (schwarz) liegen, nicht %2</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; has %2 entries; a room holds at most %3</source>
+        <translation>&quot;%1&quot; hat %2 Einträge; ein Raum fasst höchstens %3</translation>
     </message>
 </context>
 <context>
@@ -6600,6 +6608,44 @@ Umschalt+Esc tut dasselbe aus jedem Fenster; Leertaste oder Esc hält den ausgew
     <message>
         <source>%1: the wake line is set to none, so the cable is taken to have no BRC wire</source>
         <translation>%1: Die Weckleitung ist auf keine gestellt, das Kabel gilt also als ohne BRC-Ader</translation>
+    </message>
+</context>
+<context>
+    <name>BoundedFile</name>
+    <message>
+        <source>not a regular file but a named pipe</source>
+        <translation>keine gewöhnliche Datei, sondern eine benannte Pipe</translation>
+    </message>
+    <message>
+        <source>not a regular file but a folder</source>
+        <translation>keine gewöhnliche Datei, sondern ein Ordner</translation>
+    </message>
+    <message>
+        <source>not a regular file but a device</source>
+        <translation>keine gewöhnliche Datei, sondern ein Gerät</translation>
+    </message>
+    <message>
+        <source>not a regular file</source>
+        <translation>keine gewöhnliche Datei</translation>
+    </message>
+    <message>
+        <source>%1, larger than the %2 this program reads of such a file</source>
+        <translation>%1, größer als die %2, die dieses Programm von einer solchen Datei liest</translation>
+    </message>
+    <message>
+        <source>larger than the %1 this program reads of such a file</source>
+        <translation>größer als die %1, die dieses Programm von einer solchen Datei liest</translation>
+    </message>
+    <message>
+        <source>%1 bytes</source>
+        <translation>%1 Bytes</translation>
+    </message>
+</context>
+<context>
+    <name>RecordingMarkers</name>
+    <message>
+        <source>%1 markers beyond the first %2 were left out: a recording holds at most %2</source>
+        <translation>%1 Markierungen nach den ersten %2 wurden ausgelassen: eine Aufzeichnung fasst höchstens %2</translation>
     </message>
 </context>
 </TS>

@@ -2400,10 +2400,6 @@ Haga clic para seleccionar este robot: todos los paneles lo muestran</translatio
         <translation>no es un objeto JSON</translation>
     </message>
     <message>
-        <source>%1: larger than a lesson file can be (1 MB)</source>
-        <translation>%1: más grande de lo que puede ser un archivo de lección (1 MB)</translation>
-    </message>
-    <message>
         <source>needs &quot;place&quot; or &quot;forward_mm&quot;, not both</source>
         <translation>necesita &quot;place&quot; o &quot;forward_mm&quot;, no ambos</translation>
     </message>
@@ -2983,10 +2979,6 @@ GPL-3.0-or-later.</translation>
     <message>
         <source>Could not import %1: %2</source>
         <translation>No se pudo importar %1: %2</translation>
-    </message>
-    <message>
-        <source>no such file</source>
-        <translation>el archivo no existe</translation>
     </message>
     <message>
         <source>not a readable Standard MIDI File</source>
@@ -3855,6 +3847,14 @@ GPL-3.0-or-later.</translation>
         <source>unreadable true pose</source>
         <translation>pose real ilegible</translation>
     </message>
+    <message>
+        <source>packet %1 is in it twice</source>
+        <translation>el paquete %1 aparece dos veces</translation>
+    </message>
+    <message>
+        <source>a stream no robot sends (%1)</source>
+        <translation>un flujo de datos que ningún robot envía (%1)</translation>
+    </message>
 </context>
 <context>
     <name>RecordingActions</name>
@@ -4382,6 +4382,10 @@ Doble clic para renombrar</translation>
         <source>The marker could not be saved: %1</source>
         <translation>No se pudo guardar la marca: %1</translation>
     </message>
+    <message>
+        <source>A recording holds at most %1 markers.</source>
+        <translation>Una grabación admite como máximo %1 marcas.</translation>
+    </message>
 </context>
 <context>
     <name>RobotMode</name>
@@ -4839,6 +4843,10 @@ Doble clic para renombrar</translation>
     <message>
         <source>%1: the shade (the fifth number) must be from 0 (the floor as it is) to 1 (black), not %2</source>
         <translation>%1: el tono (el quinto número) debe ir de 0 (el suelo tal cual) a 1 (negro), no %2</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; has %2 entries; a room holds at most %3</source>
+        <translation>&quot;%1&quot; tiene %2 entradas; una sala admite como máximo %3</translation>
     </message>
 </context>
 <context>
@@ -6599,6 +6607,44 @@ Mayús+Esc hace lo mismo desde cualquier ventana; Espacio o Esc detiene el robot
     <message>
         <source>%1: the wake line is set to none, so the cable is taken to have no BRC wire</source>
         <translation>%1: la línea de despertar está en ninguna, así que se toma el cable como sin hilo BRC</translation>
+    </message>
+</context>
+<context>
+    <name>BoundedFile</name>
+    <message>
+        <source>not a regular file but a named pipe</source>
+        <translation>no es un archivo normal, sino una tubería con nombre</translation>
+    </message>
+    <message>
+        <source>not a regular file but a folder</source>
+        <translation>no es un archivo normal, sino una carpeta</translation>
+    </message>
+    <message>
+        <source>not a regular file but a device</source>
+        <translation>no es un archivo normal, sino un dispositivo</translation>
+    </message>
+    <message>
+        <source>not a regular file</source>
+        <translation>no es un archivo normal</translation>
+    </message>
+    <message>
+        <source>%1, larger than the %2 this program reads of such a file</source>
+        <translation>%1, más que los %2 que este programa lee de un archivo así</translation>
+    </message>
+    <message>
+        <source>larger than the %1 this program reads of such a file</source>
+        <translation>más que los %1 que este programa lee de un archivo así</translation>
+    </message>
+    <message>
+        <source>%1 bytes</source>
+        <translation>%1 bytes</translation>
+    </message>
+</context>
+<context>
+    <name>RecordingMarkers</name>
+    <message>
+        <source>%1 markers beyond the first %2 were left out: a recording holds at most %2</source>
+        <translation>se omitieron %1 marcas después de las primeras %2: una grabación admite como máximo %2</translation>
     </message>
 </context>
 </TS>

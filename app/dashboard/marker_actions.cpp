@@ -10,6 +10,7 @@
 #include "sensor_plots.h"
 
 #include <QAction>
+#include <QFileInfo>
 #include <QToolBar>
 
 MarkerActions::MarkerActions(RobotFleet &fleet, SensorPlots *plots, ReplayBar *replayBar, QToolBar *toolBar,
@@ -109,6 +110,12 @@ void MarkerActions::show()
     m_list->setJumpable(replay);
     m_previous->setEnabled(replay && !own.isEmpty());
     m_next->setEnabled(replay && !own.isEmpty());
+    // Said once for each file that holds more markers than are read.
+    if (robot && robot->markers().leftOut() > 0 && robot->markers().path() != m_leftOutSaidFor) {
+        m_leftOutSaidFor = robot->markers().path();
+        emit message(QStringLiteral("%1: %2").arg(QFileInfo(m_leftOutSaidFor).fileName(),
+                                                  oilink::markersLeftOutNotice(robot->markers().leftOut())));
+    }
 }
 
 int MarkerActions::drop()

@@ -61,5 +61,6 @@ private:
     MarkerList *m_list = nullptr;
     MarkerNoteEditor *m_noteEditor = nullptr;
     QPointer<RobotSession> m_noteRobot; // whose marker the note is for
+    QString m_leftOutSaidFor;           // the file whose markers left out were last told
     QList<QMetaObject::Connection> m_followed;
 };

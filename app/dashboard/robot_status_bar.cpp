@@ -16,11 +16,13 @@ RobotStatusBar::RobotStatusBar(QStatusBar *bar) : QObject(bar), m_bar(bar)
     auto label = [this](const char *name) {
         auto *l = new QLabel(m_bar);
         l->setObjectName(name);
+        l->setTextFormat(Qt::PlainText); // names of files and robots, as written
         m_bar->addPermanentWidget(l);
         return l;
     };
     m_robot = new QLabel(m_bar);
     m_robot->setObjectName("selectedRobot");
+    m_robot->setTextFormat(Qt::PlainText);
     m_bar->addWidget(m_robot);
     m_stale = new QLabel(m_bar);
     m_stale->setObjectName("staleIndicator");

@@ -1,12 +1,14 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "saved_brokers.h"
 
+#include "bounded_file.h"
+
 #include <QSettings>
 
 QList<SavedBroker> loadSavedBrokers(QSettings &settings)
 {
     QList<SavedBroker> list;
-    const int n = settings.beginReadArray("brokers");
+    const int n = files::beginReadBoundedArray(settings, "brokers", kMaxSavedBrokers);
     for (int i = 0; i < n; ++i) {
         settings.setArrayIndex(i);
         SavedBroker b;

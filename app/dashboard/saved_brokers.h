@@ -15,8 +15,8 @@ struct SavedBroker {
     friend bool operator==(const SavedBroker &, const SavedBroker &) = default;
 };
 
-// The "brokers" array, most recent first. Entries without a host or with a
-// port outside 1..65535 are left out.
+// The "brokers" array, most recent first: its first kMaxSavedBrokers entries,
+// without those with no host or a port outside 1..65535.
 QList<SavedBroker> loadSavedBrokers(QSettings &settings);
 void saveBrokers(QSettings &settings, const QList<SavedBroker> &brokers);
 // `broker` first, the same host and port dropped from further down, at most

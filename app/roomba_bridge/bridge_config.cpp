@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "bridge_config.h"
 
+#include "bounded_file.h"
+
 #include "fleet_topics.h"
 #include "robot_address.h"
 
@@ -44,16 +46,19 @@ const QStringList &BridgeConfig::keys()
 
 std::optional<QList<BridgeConfig::Setting>> BridgeConfig::readFile(const QString &path, QString *error)
 {
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly | QIODevice::Text)) {
-        *error = QStringLiteral("%1: cannot read it: %2").arg(path, file.errorString());
+    // A config is a few hundred bytes.
+    constexpr qint64 kMaxBytes = 1 << 20;
+    QString why;
+    const std::optional<QByteArray> bytes = files::readBounded(path, kMaxBytes, &why);
+    if (!bytes) {
+        *error = QStringLiteral("%1: cannot read it: %2").arg(path, why);
         return std::nullopt;
     }
     QList<Setting> settings;
     int lineNumber = 0;
-    while (!file.atEnd()) {
+    for (const QByteArray &bytesOfLine : bytes->split('\n')) {
         ++lineNumber;
-        const QString line = QString::fromUtf8(file.readLine()).trimmed();
+        const QString line = QString::fromUtf8(bytesOfLine).trimmed();
         if (line.isEmpty() || line.startsWith(QLatin1Char('#')))
             continue;
         const QString where = QStringLiteral("%1:%2").arg(path).arg(lineNumber);
@@ -125,10 +130,11 @@ std::optional<BridgeConfig> BridgeConfig::fromSettings(const QList<Setting> &set
         if (has(passwordKey))
             *field = value(passwordKey);
         if (has(fileKey)) {
-            QFile f(value(fileKey));
-            if (!f.open(QIODevice::ReadOnly | QIODevice::Text))
-                return fail(QString::fromLatin1(fileKey), QStringLiteral("cannot read %1: %2").arg(f.fileName(), f.errorString()));
-            *field = QString::fromUtf8(f.readLine()).trimmed();
+            QString why;
+            const std::optional<QByteArray> password = files::readBounded(value(fileKey), 4096, &why);
+            if (!password)
+                return fail(QString::fromLatin1(fileKey), QStringLiteral("cannot read %1: %2").arg(value(fileKey), why));
+            *field = QString::fromUtf8(password->left(password->indexOf('\n'))).trimmed(); // its first line
         }
     }
     for (const auto &[key, field] : {std::pair{"cafile", &mqtt::BrokerAddress::caFile},

@@ -22,6 +22,7 @@ int recordingCsv(const Arguments &args)
         oilink::Recording::load(QString::fromStdString(path), &error);
     if (!recording)
         return fail(error.toStdString());
+    sayMarkersLeftOut(path, recording->markersLeftOut());
     QTextStream out(stdout);
     recording->writeCsv(out);
     out.flush();

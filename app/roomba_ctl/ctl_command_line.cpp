@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ctl_command_line.h"
 
+#include "recording_markers.h"
 #include "robot_address.h"
 #include "snapshot_json.h"
 
@@ -15,6 +16,12 @@ int fail(const std::string &message)
 {
     std::cerr << "roomba-ctl: " << message << "\n";
     return 2;
+}
+
+void sayMarkersLeftOut(const std::string &path, int leftOut)
+{
+    if (leftOut > 0)
+        std::cerr << "roomba-ctl: " << path << ": " << oilink::markersLeftOutNotice(leftOut).toStdString() << "\n";
 }
 
 std::string toStd(const QString &text)

@@ -25,6 +25,9 @@ using Arguments = std::vector<std::string>;
 // a usage error.
 int fail(const std::string &message);
 std::string toStd(const QString &text);
+// Says on standard error, when a recording at `path` held markers beyond the
+// limit, how many were left out of what is written.
+void sayMarkersLeftOut(const std::string &path, int leftOut);
 
 // Reads the command's words with `parser`. Options go before the first
 // other argument, so negative numbers reach the command, unless

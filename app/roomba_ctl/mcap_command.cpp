@@ -30,12 +30,14 @@ int recordingMcap(const Arguments &args)
     const std::string out = toStd(parser.value(QStringLiteral("output")));
     if (in.empty() || out.empty())
         return fail("mcap needs a recording file and -o OUT.mcap");
-    std::optional<oilink::RecordingDamage> damage;
-    const QString error = oilink::exportRecordingMcap(QString::fromStdString(in), QString::fromStdString(out),
-                                                      options, &damage);
+    QString error;
+    const std::optional<oilink::Recording> recording = oilink::Recording::load(QString::fromStdString(in), &error);
+    if (recording)
+        error = oilink::exportRecordingMcap(*recording, QString::fromStdString(out), options);
     if (!error.isEmpty())
         return fail(error.toStdString() + "; nothing was written");
-    if (damage) {
+    sayMarkersLeftOut(in, recording->markersLeftOut());
+    if (const std::optional<oilink::RecordingDamage> &damage = recording->damage()) {
         std::cerr << "roomba-ctl: " << in << ": damaged: " << damage->describe().toStdString()
                   << "; exported up to there\n";
         return 1;

@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "recording_file.h"
 
+#include "bounded_file.h"
 #include "firmware_banner.h"
 #include "sensor_csv.h"
+#include "stream_packets.h"
 #include "stream_parser.h"
 
 #include <QCoreApplication>
@@ -65,6 +67,30 @@ QByteArray makeRecord(recording::RecordKind kind, qint64 timeUs, const QByteArra
     record += payload;
     appendLittleEndian<quint16>(record, recording::checksum(record));
     return record;
+}
+
+// Why a recorded stream is not one the robot sends, or empty: the Stream
+// command refuses it (more packets than the profile streams, a frame too
+// long for the baud), or it names a packet twice, alone or in a group.
+// Read as it was, group 100 named 2,000 times made each CSV row 100,000
+// cells: 2.6 GB from a 1.2 MB file.
+QString streamProblem(const oi::RobotProfile &profile, int baud, const QList<int> &packets)
+{
+    const oi::EncodeResult command = streamCommand(profile, std::vector<int>(packets.begin(), packets.end()), baud);
+    if (!command.ok())
+        return fromStd(command.error().describe());
+    std::array<bool, oi::kMaxPacketId + 1> seen{};
+    for (const int id : packets) {
+        const oi::PacketGroup *group = profile.group(id);
+        for (int member = group ? group->first : id; member <= (group ? group->last : id); ++member) {
+            if (!profile.packet(member))
+                continue;
+            if (seen[std::size_t(member)])
+                return QCoreApplication::translate("Recording", "packet %1 is in it twice").arg(member);
+            seen[std::size_t(member)] = true;
+        }
+    }
+    return {};
 }
 // CRC-16 of ISO 3309 (reflected 0x1021, starts at 0xFFFF, inverted at the
 // end) for each value of a byte.
@@ -210,21 +236,23 @@ QString RecordingDamage::describe() const
 
 std::optional<Recording> Recording::load(const QString &path, QString *error)
 {
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly)) {
+    QString why;
+    const std::optional<QByteArray> data = files::readBounded(path, recording::kMaxFileBytes, &why);
+    if (!data) {
         if (error)
-            *error = QStringLiteral("%1: %2").arg(path, file.errorString());
+            *error = QStringLiteral("%1: %2").arg(path, why);
         return std::nullopt;
     }
-    return fromBytes(file.readAll(), path, error);
+    return fromBytes(*data, path, error);
 }
 
 std::optional<Recording::StreamInfo> Recording::readStream(const QString &path, QString *error)
 {
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly)) {
+    QFile file;
+    QString why;
+    if (!files::openBounded(file, path, recording::kMaxFileBytes, &why)) {
         if (error)
-            *error = QStringLiteral("%1: %2").arg(path, file.errorString());
+            *error = QStringLiteral("%1: %2").arg(path, why);
         return std::nullopt;
     }
     // The description is the first record or nearly: a small start of the
@@ -233,7 +261,7 @@ std::optional<Recording::StreamInfo> Recording::readStream(const QString &path, 
     QByteArray data = file.read(kStart);
     std::optional<Recording> r = parse(data, path, error, Depth::Stream);
     if (!r && !file.atEnd()) {
-        data += file.readAll();
+        data += file.read(recording::kMaxFileBytes - data.size());
         r = parse(data, path, error, Depth::Stream);
     }
     if (!r)
@@ -325,18 +353,26 @@ std::optional<Recording> Recording::parse(const QByteArray &data, const QString 
                 r.m_stream.packets << packet;
                 packetsKnown = packetsKnown && r.m_stream.profile->isValidSensorId(packet);
             }
-            if (!packetsKnown || r.m_stream.packets.isEmpty()) {
-                r.m_stream = {};
+            const QString problem = packetsKnown && !r.m_stream.packets.isEmpty()
+                                        ? streamProblem(*r.m_stream.profile, r.m_stream.baud, r.m_stream.packets)
+                                        : QString();
+            if (!packetsKnown || r.m_stream.packets.isEmpty())
                 damaged(QCoreApplication::translate("Recording", "unreadable stream description"));
-            }
+            else if (!problem.isEmpty())
+                damaged(QCoreApplication::translate("Recording", "a stream no robot sends (%1)").arg(problem));
+            if (r.m_damage)
+                r.m_stream = {};
             break;
         }
         case recording::RecordKind::Marker: {
             const std::optional<MarkerEdit> edit = MarkerEdit::fromJson(QByteArray(payload, length));
-            if (!edit)
+            if (!edit) {
                 damaged(QCoreApplication::translate("Recording", "unreadable marker"));
-            else
-                applyMarkerEdit(r.m_markers, *edit); // an edit of a marker that is gone changes nothing
+                break;
+            }
+            if (edit->kind == MarkerEdit::Kind::Add && r.m_markers.size() >= kMaxMarkers)
+                ++r.m_markersLeftOut;
+            applyMarkerEdit(r.m_markers, *edit); // an edit of a marker that is gone changes nothing
             break;
         }
         case recording::RecordKind::TruePose:
@@ -372,10 +408,11 @@ std::optional<Recording> Recording::parse(const QByteArray &data, const QString 
 
 bool Recording::saveMarkerEdits(const QString &path, const QList<MarkerEdit> &edits, QString *error)
 {
-    QFile file(path);
-    if (!file.open(QIODevice::ReadWrite)) {
+    QFile file;
+    QString why;
+    if (!files::openBounded(file, path, recording::kMaxFileBytes, &why, QIODevice::ReadWrite)) {
         if (error)
-            *error = QStringLiteral("%1: %2").arg(path, file.errorString());
+            *error = QStringLiteral("%1: %2").arg(path, why);
         return false;
     }
     // Mapped, not copied: the records are checked where they lie.

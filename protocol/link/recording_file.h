@@ -32,6 +32,9 @@ inline constexpr quint16 kOldestVersion = 1; // still read
 inline constexpr int kMaxPayload = 0xFFFF;
 inline constexpr int kFlushIntervalMs = 1000;
 inline constexpr char kFileSuffix[] = "oirec";
+// A recording is read whole: an hour at 115200 baud is about 23 MB, so this
+// is some 40 hours; a larger file is refused unread.
+inline constexpr qint64 kMaxFileBytes = qint64(1) << 30;
 
 enum class RecordKind : quint8 {
     Received = 'R',      // bytes from the robot
@@ -140,8 +143,10 @@ public:
     qint64 bytesSent() const { return m_sent.size(); }
     int recordCount() const { return m_records; }
     const std::optional<RecordingDamage> &damage() const { return m_damage; }
-    // The markers after every edit the file holds, in time order.
+    // The markers after every edit the file holds, in time order: the first
+    // kMaxMarkers added; markersLeftOut() counts those added beyond them.
     const QList<RecordingMarker> &markers() const { return m_markers; }
+    int markersLeftOut() const { return m_markersLeftOut; }
     // The virtual robot's true poses, in file order; empty for a real robot.
     const std::vector<TruePose> &truePoses() const { return m_truePoses; }
 
@@ -183,6 +188,7 @@ private:
     std::optional<RecordingDamage> m_damage;
     qsizetype m_readableEnd = 0; // in the file: where reading stopped
     QList<RecordingMarker> m_markers;
+    int m_markersLeftOut = 0;
     std::vector<TruePose> m_truePoses;
 };
 

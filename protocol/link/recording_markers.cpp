@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "recording_markers.h"
 
+#include <QCoreApplication>
 #include <QJsonDocument>
 #include <QJsonObject>
 
@@ -27,6 +28,13 @@ QString opName(MarkerEdit::Kind kind)
     return QStringLiteral("delete");
 }
 } // namespace
+
+QString markersLeftOutNotice(int leftOut)
+{
+    return QCoreApplication::translate("RecordingMarkers", "%1 markers beyond the first %2 were left out: a recording holds at most %2")
+        .arg(leftOut)
+        .arg(kMaxMarkers);
+}
 
 QString RecordingMarker::label() const
 {
@@ -71,7 +79,7 @@ bool applyMarkerEdit(QList<RecordingMarker> &markers, const MarkerEdit &edit)
                                     [&](const RecordingMarker &m) { return m.id == edit.marker.id; });
     switch (edit.kind) {
     case MarkerEdit::Kind::Add: {
-        if (found != markers.end())
+        if (found != markers.end() || markers.size() >= kMaxMarkers)
             return false;
         const auto before = [](const RecordingMarker &a, const RecordingMarker &b) {
             return a.timeUs != b.timeUs ? a.timeUs < b.timeUs : a.id < b.id;

@@ -23,6 +23,12 @@ struct RecordingMarker {
 };
 
 inline constexpr int kMaxMarkerNoteLength = 200; // characters; longer notes are cut
+// A recording's markers: more are neither read nor added. The plots draw each
+// one, and 60,000 froze the window for 43 s; an hour with 1,000 costs nothing.
+inline constexpr int kMaxMarkers = 1000;
+
+// What to tell the user when a recording held `leftOut` markers beyond kMaxMarkers.
+QString markersLeftOutNotice(int leftOut);
 
 // One change to a recording's markers, as one `M` record holds it: JSON such
 // as {"op":"add","id":3,"time_us":12500000,"note":"hit the table leg"},
@@ -44,7 +50,8 @@ struct MarkerEdit {
 
 // Applies `edit`: an added marker goes in time order (ties by id), a rename
 // changes the note, a delete removes it. False, changing nothing, for an
-// add whose id is taken or a rename or delete of no marker.
+// add whose id is taken or that would make more than kMaxMarkers, or a
+// rename or delete of no marker.
 bool applyMarkerEdit(QList<RecordingMarker> &markers, const MarkerEdit &edit);
 
 // The first id not used by `markers`.

@@ -40,6 +40,7 @@ struct ReplayStatus {
     double speed = 1.0;
     QString damage; // empty for an intact recording
     QList<RecordingMarker> markers; // as the file held them when the replay opened it
+    int markersLeftOut = 0;         // added in the file beyond kMaxMarkers, not read
 
     friend bool operator==(const ReplayStatus &, const ReplayStatus &) = default;
 };

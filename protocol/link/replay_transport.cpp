@@ -189,6 +189,7 @@ ReplayStatus ReplayTransport::status() const
         s.durationUs = m_recording->durationUs();
         s.frameCount = static_cast<int>(m_recording->frames().size());
         s.markers = m_recording->markers();
+        s.markersLeftOut = m_recording->markersLeftOut();
         if (m_recording->damage())
             s.damage = m_recording->damage()->describe();
     }

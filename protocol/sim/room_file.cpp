@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "room_file.h"
 
+#include "bounded_file.h"
+
 #include <QCoreApplication>
-#include <QFile>
 #include <QFileInfo>
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -18,6 +19,8 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 constexpr int kVersion = 1;
 const QString kFormat = QStringLiteral("roomba-room");
+// World::kMaxShapes of each kind, written one to a line, take about 150 KB.
+constexpr qint64 kMaxRoomBytes = 1 << 20;
 
 // The messages' context for translators.
 struct RoomFile {
@@ -55,6 +58,11 @@ public:
             if (!list.isArray())
                 return fail(RoomFile::tr("\"%1\" must be a list").arg(key));
             const QJsonArray items = list.toArray();
+            if (std::size_t(items.size()) > World::kMaxShapes)
+                return fail(RoomFile::tr("\"%1\" has %2 entries; a room holds at most %3")
+                                .arg(key)
+                                .arg(items.size())
+                                .arg(World::kMaxShapes));
             for (qsizetype i = 0; i < items.size(); ++i) {
                 const QString where = QStringLiteral("%1[%2]").arg(key).arg(i);
                 double v[5];
@@ -207,13 +215,13 @@ std::optional<World> roomFromJson(const QByteArray &json, QString *error)
 
 std::optional<World> loadRoomFile(const QString &path, QString *error)
 {
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly)) {
-        setError(error, RoomFile::tr("%1: cannot read: %2").arg(path, file.errorString()));
+    QString why;
+    const std::optional<QByteArray> bytes = files::readBounded(path, kMaxRoomBytes, &why);
+    if (!bytes) {
+        setError(error, RoomFile::tr("%1: cannot read: %2").arg(path, why));
         return std::nullopt;
     }
-    QString why;
-    std::optional<World> world = roomFromJson(file.readAll(), &why);
+    std::optional<World> world = roomFromJson(*bytes, &why);
     if (!world)
         setError(error, RoomFile::tr("%1: %2").arg(QFileInfo(path).fileName(), why));
     return world;

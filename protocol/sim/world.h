@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <vector>
@@ -50,6 +51,11 @@ struct World {
     // Where the first robot is put; the others go to free spots that can be
     // seen from here (Room::placeNewRobot).
     double startX = 0, startY = 0, startHeadingRad = 0;
+
+    // At most this many walls, this many drop-offs and this many rugs: each
+    // robot checks every wall at each step of its clock, so 200,000 walls
+    // took a core; a floor plan has tens.
+    static constexpr std::size_t kMaxShapes = 1000;
 
     // A 4 m x 3 m room with a dock, a table edge (drop-off) and a virtual
     // wall: what the dashboard shows on first start.

@@ -113,6 +113,10 @@ bool applyEdit(World &world, const WorldEdit &edit, WorldItem *added)
     const bool add = edit.action == WorldEdit::Action::Add;
     if (!add && !contains(world, item))
         return false;
+    const std::size_t count = item.part == WorldPart::Wall ? world.walls.size()
+                              : item.part == WorldPart::DropOff ? world.dropOffs.size() : 0;
+    if (add && count >= World::kMaxShapes)
+        return false;
     WorldItem made = item;
     switch (item.part) {
     case WorldPart::Wall: made.index = putOrAdd(world.walls, item.index, edit.wall, add); break;

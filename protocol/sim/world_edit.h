@@ -48,7 +48,8 @@ bool contains(const World &world, WorldItem item);
 // Applies `edit` to `world`. False, with `world` unchanged, when the item is
 // not there or the shape breaks the rules of a room file: a wall must have
 // some length, a drop-off's minimum be below its maximum, a virtual wall's
-// range above 0, every number finite. `added`, if given, names what Add made.
+// range above 0, every number finite, no more than World::kMaxShapes walls
+// or drop-offs. `added`, if given, names what Add made.
 bool applyEdit(World &world, const WorldEdit &edit, WorldItem *added = nullptr);
 
 } // namespace sim

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "lesson_file.h"
 
+#include "bounded_file.h"
+
 #include <QCoreApplication>
-#include <QFile>
 #include <QFileInfo>
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -16,6 +17,8 @@ namespace {
 constexpr int kVersion = 1;
 const QString kFormat = QStringLiteral("roomba-lesson");
 constexpr qsizetype kMaxSteps = 50;
+// A lesson is a few kilobytes; anything far larger is not one.
+constexpr qint64 kMaxLessonBytes = 1 << 20;
 constexpr double kMaxHoldSeconds = 600;
 // A room is a few metres; a hand carries a robot a short way.
 constexpr double kMaxPlaceMm = 100000;
@@ -344,21 +347,9 @@ std::optional<Lesson> lessonFromJson(const QByteArray &json, QString *error)
 std::optional<Lesson> loadLessonFile(const QString &path, QString *error)
 {
     const QString name = QFileInfo(path).fileName();
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly)) {
-        if (error)
-            *error = LessonFile::tr("%1: %2").arg(name, file.errorString());
-        return std::nullopt;
-    }
-    // A lesson is a few kilobytes; anything far larger is not one.
-    constexpr qint64 kMaxBytes = 1 << 20;
-    if (file.size() > kMaxBytes) {
-        if (error)
-            *error = LessonFile::tr("%1: larger than a lesson file can be (1 MB)").arg(name);
-        return std::nullopt;
-    }
     QString why;
-    std::optional<Lesson> lesson = lessonFromJson(file.readAll(), &why);
+    const std::optional<QByteArray> bytes = files::readBounded(path, kMaxLessonBytes, &why);
+    std::optional<Lesson> lesson = bytes ? lessonFromJson(*bytes, &why) : std::nullopt;
     if (!lesson && error)
         *error = LessonFile::tr("%1: %2").arg(name, why);
     return lesson;

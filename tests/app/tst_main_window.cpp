@@ -3,6 +3,7 @@
 // to the bytes, settings, and a bad port.
 #include "main_window.h"
 #include "comparison_bar.h"
+#include "crowded_recording.h" // tests/common
 #include "marker_actions.h"
 #include "marker_list.h"
 #include "marker_note_editor.h"
@@ -790,6 +791,28 @@ private slots:
     // the toolbar; the list and the plots show it. Replayed, the bar has its
     // ticks and full stop jumps to the next; compared with itself at a
     // marker, the second run lines up exactly; closing clears the overlay.
+    // A replayed file that adds more markers than a recording holds: the
+    // first 1,000 on the plots and in the list, said once how many were left
+    // out, and M adds none.
+    void aReplayWithTooManyMarkersSaysSo()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath("crowded.oirec");
+        QVERIFY(writeCrowdedRecording(path, oilink::kMaxMarkers + 40));
+        MainWindow window;
+        QSignalSpy said(window.markerActions(), &MarkerActions::message);
+        window.show();
+        window.start(oilink::LinkSettings::replayOf(path, oi::ProfileId::Create2, 115200, {7}));
+        QTRY_COMPARE_WITH_TIMEOUT(window.sensorPlots()->stack()->markers().size(), oilink::kMaxMarkers, 10000);
+        QCOMPARE(window.markerActions()->list()->table()->rowCount(), oilink::kMaxMarkers);
+        QCOMPARE(said.size(), 1);
+        QCOMPARE(said[0][0].toString(),
+                 QString("crowded.oirec: 40 markers beyond the first 1000 were left out: a recording holds at most 1000"));
+        QCOMPARE(window.markerActions()->drop(), 0);
+        QCOMPARE(said.last()[0].toString(), QString("A recording holds at most 1000 markers."));
+        QCOMPARE(window.session().markers().list().size(), oilink::kMaxMarkers);
+    }
+
     void markersAndComparisonInTheWindow()
     {
         QTemporaryDir dir;

@@ -124,6 +124,25 @@ private slots:
         QVERIFY(!QSettings().contains("room/file"));
     }
 
+    // A room that cannot be read at the start (here /dev/zero, read until the
+    // memory ran out and the dashboard aborted at every start) is said once
+    // and forgotten: the next start does not try it again.
+    void aRoomThatCannotBeReadAtTheStartIsSaidAndForgotten()
+    {
+        const QString zero = m_dir.filePath("zero.json");
+        QVERIFY(QFile::link("/dev/zero", zero));
+        QSettings().setValue("room/file", zero);
+        auto room = std::make_shared<sim::Room>(sim::World::classroom());
+        RoomActions actions(room, &m_window);
+        QSignalSpy messages(&actions, &RoomActions::message);
+        actions.restoreLastRoom();
+        QCOMPARE(messages.size(), 1);
+        QCOMPARE(messages[0][0].toString(), "The room of last time could not be opened: " + zero +
+                                                ": cannot read: not a regular file but a device");
+        QCOMPARE(room->world(), sim::World::classroom());
+        QVERIFY(!QSettings().contains("room/file"));
+    }
+
     void editsReachTheRoomAndUndoAsOneDrag()
     {
         auto room = std::make_shared<sim::Room>(sim::World::classroom());

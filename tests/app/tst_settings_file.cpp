@@ -4,6 +4,9 @@
 // with defaults and says so once.
 #include "settings_file.h"
 
+#include "saved_brokers.h"
+#include "saved_robots.h"
+
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
@@ -47,6 +50,39 @@ private slots:
         QDir dir(QFileInfo(m_path).path());
         for (const QString &name : dir.entryList({QFileInfo(m_path).fileName() + "*"}, QDir::Files))
             QVERIFY(dir.remove(name));
+    }
+
+    // An array's size is read from the file as it says it: brokers/size=100000000
+    // kept the window from ever opening. At most the first entries each list
+    // keeps are read, and the file and the limit are named.
+    void aListIsReadOnlyAsFarAsItsLimit()
+    {
+        const auto fileWith = [](int size) {
+            QByteArray ini = "[brokers]\nsize=" + QByteArray::number(size) + "\n";
+            QByteArray robots = "[robots]\nsize=" + QByteArray::number(size) + "\n";
+            for (int i = 1; i <= 120; ++i) {
+                ini += QByteArray::number(i) + "\\host=broker" + QByteArray::number(i) + "\n";
+                robots += QByteArray::number(i) + "\\name=Robot " + QByteArray::number(i) + "\n"
+                          + QByteArray::number(i) + "\\transport=2\n";
+            }
+            return ini + robots;
+        };
+        for (const int size : {120, 100000000}) {
+            writeFile(fileWith(size));
+            QSettings settings;
+            QTest::ignoreMessage(QtWarningMsg, qPrintable(QString("%1: brokers/size is %2; the first %3 are read")
+                                                              .arg(m_path).arg(size).arg(kMaxSavedBrokers)));
+            const QList<SavedBroker> brokers = loadSavedBrokers(settings);
+            QCOMPARE(brokers.size(), kMaxSavedBrokers);
+            QCOMPARE(brokers.last().address.host, QString("broker%1").arg(kMaxSavedBrokers));
+            QTest::ignoreMessage(QtWarningMsg, qPrintable(QString("%1: robots/size is %2; the first %3 are read")
+                                                              .arg(m_path).arg(size).arg(kMaxSavedRobots)));
+            const QList<SavedRobot> robots = loadSavedRobots(settings);
+            QCOMPARE(robots.size(), kMaxSavedRobots);
+            QCOMPARE(robots.last().name, QString("Robot %1").arg(kMaxSavedRobots));
+        }
+        // The file is read, not written: nothing it holds is lost.
+        QCOMPARE(fileContent(m_path), fileWith(100000000));
     }
 
     void noFileIsNoNews()

@@ -20,6 +20,7 @@
 #include <QTemporaryDir>
 
 #include <csignal>
+#include <sys/stat.h>
 
 using namespace mqtt;
 
@@ -107,6 +108,14 @@ private slots:
                                               << "foxglove-rate: '0' is not a rate from 1 to 1000";
         QTest::newRow("missing config") << QStringList{"--config", "/nonexistent/r1.conf"} << QByteArray()
                                         << "/nonexistent/r1.conf: cannot read it";
+        // A named pipe blocked the bridge's start for good; /dev/zero was read until memory ran out.
+        const QString pipe = m_dir.filePath(QStringLiteral("pipe.conf"));
+        QVERIFY(QFile::exists(pipe) || ::mkfifo(QFile::encodeName(pipe).constData(), 0600) == 0);
+        QTest::newRow("config a named pipe") << QStringList{"--config", pipe} << QByteArray()
+                                             << pipe + ": cannot read it: not a regular file but a named pipe";
+        QTest::newRow("password file a device")
+            << QStringList{} << QByteArray("name = r1\nsim = yes\npassword-file = /dev/zero\n")
+            << "password-file: cannot read /dev/zero: not a regular file but a device";
     }
     void badSettingsNameThemselves()
     {

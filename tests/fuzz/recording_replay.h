@@ -21,7 +21,11 @@ namespace fuzz {
 //   after the recording's end;
 // - replaying to the end decodes every indexed frame exactly once, at its
 //   indexed time;
-// - the CSV has a header row and one row per frame.
+// - the CSV has a header row and one row per frame, and is at most 8 times
+//   the file's size and a header: a frame is the stream's, at least 5 bytes,
+//   and its row at most 4 times that (a 20-digit time, a 6-digit value for a
+//   packet of an id and 2 bytes), whatever the file says its stream is;
+// - it holds at most oilink::kMaxMarkers markers.
 // Returns an empty string when they hold, else what broke.
 inline std::string checkRecordingInput(const QByteArray &input)
 {
@@ -60,6 +64,11 @@ inline std::string checkRecordingInput(const QByteArray &input)
     if (static_cast<std::size_t>(csv.count(QLatin1Char('\n'))) != frames.size() + 1)
         return "the CSV has " + std::to_string(csv.count(QLatin1Char('\n'))) + " lines for "
                + std::to_string(frames.size()) + " frames";
+    if (csv.size() > 8 * input.size() + 4096)
+        return "the CSV is " + std::to_string(csv.size()) + " characters from " + std::to_string(input.size())
+               + " bytes";
+    if (recording->markers().size() > oilink::kMaxMarkers)
+        return std::to_string(recording->markers().size()) + " markers read";
     return {};
 }
 

@@ -9,11 +9,13 @@
 #include "real_time_robot.h"
 #include "typed_command_bytes.h"
 
-#include "oirec_records.h" // tests/common
+#include "crowded_recording.h" // tests/common
+#include "not_regular_files.h" // tests/common
 #include "stream_parser.h"
 
 #include <QDateTime>
 #include <QFile>
+#include <QFileInfo>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
@@ -663,6 +665,91 @@ private slots:
         QVERIFY(!Recording::saveMarkerEdits(path, {MarkerEdit::add({1, 0, "x"})}, &error));
         QVERIFY2(error.contains("not a Roomba Dashboard recording"), qPrintable(error));
         QCOMPARE(fileBytes(path), QByteArray("not a recording"));
+    }
+
+    // A stream description is what the robot can send, or the file is
+    // refused with why: group 100 named 2,000 times made each CSV row
+    // 100,000 empty cells, 2.6 GB from a 1.2 MB file.
+    void aStreamNoRobotSendsIsRefused_data()
+    {
+        QTest::addColumn<QByteArray>("stream");
+        QTest::addColumn<QString>("why");
+        QByteArray twoThousand = "100";
+        for (int i = 1; i < 2000; ++i)
+            twoThousand += ",100";
+        QTest::newRow("group 100, 2,000 times")
+            << R"({"profile":"create2","baud":115200,"packets":[)" + twoThousand + "]}"
+            << "number of packets: 2000 is outside 0..108";
+        QTest::newRow("a packet twice") << QByteArray(R"({"profile":"create2","baud":115200,"packets":[7,22,7]})")
+                                        << "packet 7 is in it twice";
+        QTest::newRow("a packet and its group") << QByteArray(R"({"profile":"create2","baud":115200,"packets":[1,7]})")
+                                                << "packet 7 is in it twice";
+        QTest::newRow("two groups that overlap") << QByteArray(R"({"profile":"create2","baud":115200,"packets":[100,6]})")
+                                                 << "packet 7 is in it twice";
+        QTest::newRow("a frame too long for its baud")
+            << QByteArray(R"({"profile":"create2","baud":19200,"packets":[100]})")
+            << "stream frame size: a frame of 84 bytes does not fit in 15 ms at 19200 baud (at most 28 bytes)";
+    }
+
+    void aStreamNoRobotSendsIsRefused()
+    {
+        QFETCH(QByteArray, stream);
+        QFETCH(QString, why);
+        QByteArray file = oirecHeader(3, R"({"format":"Roomba Dashboard recording","version":3})");
+        file += oirecRecord('S', 0, stream);
+        for (int i = 0; i < 100; ++i) // tiny frames of packet 7 alone
+            file += oirecRecord('R', 15000 * i, QByteArray("\x13\x02\x07\x00\xE4", 5));
+        QString error;
+        QVERIFY(!Recording::fromBytes(file, "run.oirec", &error));
+        QCOMPARE(error, "run.oirec: damaged before the stream started: a stream no robot sends (" + why +
+                            ") at byte 65 (record 0, after 0.000 s)");
+    }
+
+    // The first 1,000 markers a file adds are read, the rest counted: 60,000
+    // froze the window for 43 s. No marker is added beyond them.
+    void aRecordingKeepsItsFirstThousandMarkers()
+    {
+        // A rename of a marker left out changes nothing; of one kept, its note.
+        const QByteArray file = crowdedRecording(oilink::kMaxMarkers + 500)
+                                + oirecRecord('M', 0, MarkerEdit::rename(oilink::kMaxMarkers + 1, "left out").toJson())
+                                + oirecRecord('M', 0, MarkerEdit::rename(1, "first").toJson());
+        QString error;
+        const Recording r = *Recording::fromBytes(file, "m.oirec", &error);
+        QVERIFY(!r.damage());
+        QCOMPARE(r.markers().size(), oilink::kMaxMarkers);
+        QCOMPARE(r.markersLeftOut(), 500);
+        QCOMPARE(r.markers().first().note, QString("first"));
+        QCOMPARE(r.markers().last().id, oilink::kMaxMarkers);
+        QCOMPARE(oilink::markersLeftOutNotice(r.markersLeftOut()),
+                 QString("500 markers beyond the first 1000 were left out: a recording holds at most 1000"));
+        QList<RecordingMarker> markers = r.markers();
+        QVERIFY(!oilink::applyMarkerEdit(markers, MarkerEdit::add({5000, 0, "one more"})));
+        QCOMPARE(markers, r.markers());
+    }
+
+    // A recording is read only as a regular file of at most 1 GB: a named
+    // pipe blocked the window for good, /dev/zero was read until memory ran out.
+    void aFileThatIsNoRecordingIsRefusedUnread()
+    {
+        QTemporaryDir dir;
+        const QString big = dir.filePath("big.oirec");
+        QFile file(big);
+        QVERIFY(file.open(QIODevice::WriteOnly) && file.resize(oilink::recording::kMaxFileBytes + 1)); // sparse
+        file.close();
+        const NotRegularFiles no = makeNotRegularFiles(dir.path(), "oirec");
+        QVERIFY(!no.pipe.isEmpty());
+        // Each of the three readers: the whole file, its stream, its markers.
+        const auto refusedBy = [](const QString &path) {
+            QStringList errors(3);
+            const bool none = !Recording::load(path, &errors[0]) && !Recording::readStream(path, &errors[1])
+                              && !Recording::saveMarkerEdits(path, {MarkerEdit::add({1, 0, "x"})}, &errors[2]);
+            return none ? errors : QStringList();
+        };
+        QCOMPARE(refusedBy(big),
+                 QStringList(3, big + ": 1073741825 bytes, larger than the 1 GB this program reads of such a file"));
+        QCOMPARE(QFileInfo(big).size(), oilink::recording::kMaxFileBytes + 1);
+        QCOMPARE(refusedBy(no.device), QStringList(3, no.device + ": not a regular file but a device"));
+        QCOMPARE(refusedBy(no.pipe), QStringList(3, no.pipe + ": not a regular file but a named pipe"));
     }
 
     void csvHasOneRowPerFrame()

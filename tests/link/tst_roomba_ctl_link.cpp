@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // roomba-ctl sensors and send, as a script sees them: against the built-in
 // virtual robot and against roomba-sim on a pseudo-terminal.
+#include "crowded_recording.h"
 #include "robot_address_mistakes.h"
 #include "recording_file.h"
 #include "robot_link.h"
@@ -706,6 +707,42 @@ private slots:
         const Outcome missing = run({"csv", dir.filePath("none.oirec")});
         QCOMPARE(missing.status, 2);
         QVERIFY(missing.err.startsWith("roomba-ctl: " + dir.filePath("none.oirec")));
+    }
+
+    // What a file can make is bounded by what it honestly holds: a stream
+    // listing group 100 200 times (2,000 made 2.6 GB of CSV from 1.2 MB) is
+    // refused and nothing is written; markers beyond the limit are left out
+    // and said so.
+    void csvOfADishonestRecordingIsBounded()
+    {
+        QTemporaryDir dir;
+        const QByteArray head = oirecHeader(3, R"({"format":"Roomba Dashboard recording","version":3})");
+        const QByteArray frame("\x13\x02\x07\x00\xE4", 5); // packet 7 alone
+        QByteArray groups = "100";
+        for (int i = 1; i < 200; ++i)
+            groups += ",100";
+        QByteArray file = head + oirecRecord('S', 0, R"({"profile":"create2","baud":115200,"packets":[)" + groups + "]}");
+        for (int i = 0; i < 100; ++i)
+            file += oirecRecord('R', 15000 * i, frame);
+        const QString path = dir.filePath("groups.oirec");
+        QFile out(path);
+        QVERIFY(out.open(QIODevice::WriteOnly) && out.write(file) == file.size());
+        out.close();
+        const Outcome refused = run({"csv", path});
+        QCOMPARE(refused.status, 2);
+        QCOMPARE(refused.lines, QStringList());
+        QCOMPARE(refused.err, QString("roomba-ctl: %1: damaged before the stream started: a stream no robot sends "
+                                      "(number of packets: 200 is outside 0..108) at byte 65 (record 0, after 0.000 s)\n")
+                                  .arg(path));
+
+        const QString crowded = dir.filePath("crowded.oirec");
+        QVERIFY(writeCrowdedRecording(crowded, oilink::kMaxMarkers + 3));
+        const Outcome kept = run({"csv", crowded});
+        QCOMPARE(kept.status, 0);
+        QCOMPARE(kept.err, QString("roomba-ctl: %1: 3 markers beyond the first 1000 were left out: a recording holds "
+                                   "at most 1000\n").arg(crowded));
+        QCOMPARE(kept.lines.size(), 2);
+        QCOMPARE(kept.lines[1].count(QLatin1Char(';')), oilink::kMaxMarkers - 1); // the labels on the one frame
     }
 };
 

@@ -340,6 +340,64 @@ private slots:
         QCOMPARE(bump.value("timestamp").toObject().value("nsec").toInt(), 4 * 15'000'000);
     }
 
+    // Uncompressed, an export is a small multiple of its recording whatever
+    // its frames: each frame's telemetry, and once per read a pose (when the
+    // frame measures motion) and one log line of what changed. 524,288 frames
+    // of the bumpers alone, read together, wrote 100 times the file before.
+    void uncompressedExportIsBoundedByItsRecording_data()
+    {
+        QTest::addColumn<QByteArray>("packets");
+        QTest::addColumn<bool>("oneReadEach");
+        QTest::addColumn<int>("poses");
+        QTest::addColumn<int>("events"); // a change in each read but the first (none; group 100: its mode)
+        QTest::newRow("the bumpers alone, read together") << QByteArray("[7]") << false << 1 << 1;
+        QTest::newRow("the bumpers alone, a read each") << QByteArray("[7]") << true << 1 << 1999;
+        QTest::newRow("bumpers flipping and the distance, a read each") << QByteArray("[7,19]") << true << 2000 << 1999;
+        QTest::newRow("group 100, a read each") << QByteArray("[100]") << true << 2000 << 2000;
+    }
+
+    void uncompressedExportIsBoundedByItsRecording()
+    {
+        QFETCH(QByteArray, packets);
+        QFETCH(bool, oneReadEach);
+        QFETCH(int, poses);
+        QFETCH(int, events);
+        constexpr int kFrames = 2000;
+        QByteArray file = oirecHeader(3, R"({"format":"Roomba Dashboard recording","version":3,)"
+                                         R"("started":"2026-01-02T03:04:05.000Z"})");
+        file += oirecRecord('S', 0, R"({"profile":"create2","baud":115200,"packets":)" + packets + "}");
+        QByteArray together;
+        for (int i = 0; i < kFrames; ++i) {
+            // Every bumper and wheel drop flips each frame; the robot moves 1 to 8 mm.
+            const char flips = char(i % 2 ? 15 : 0);
+            const QByteArray frame = packets == "[100]"  ? group100Frame(std::uint8_t(flips))
+                                     : packets == "[7]" ? streamFrame(bytes({7, flips}))
+                                                        : streamFrame(bytes({7, flips, 19, 0, 1 + i % 8}));
+            if (oneReadEach)
+                file += oirecRecord('R', 15000 * (i + 1), frame);
+            else
+                together += frame;
+        }
+        if (!oneReadEach)
+            file += oirecRecord('R', 15000, together);
+        const QString in = m_dir.filePath("shape.oirec");
+        QVERIFY(writeFile(in, file));
+        const QString out = m_dir.filePath("shape.mcap");
+        QCOMPARE(oilink::exportRecordingMcap(load(in), out, {mcap::Compression::None}), QString());
+        const QByteArray written = fileBytes(out);
+        QVERIFY2(written.size() <= 40 * file.size(),
+                 qPrintable(QString("%1 bytes from %2, %3 times").arg(written.size()).arg(file.size())
+                                .arg(double(written.size()) / double(file.size()), 0, 'f', 1)));
+        const QMap<QString, quint16> channels = channelsOf(written);
+        QMap<quint16, int> counts;
+        for (const mcap_test::Message &m : mcap_test::messagesOf(written))
+            ++counts[m.channel];
+        QCOMPARE(counts.value(channels.value("/r1/telemetry")), kFrames); // nothing of the data is lost
+        QCOMPARE(counts.value(channels.value("/r1/pose")), poses);
+        QCOMPARE(counts.value(channels.value("/r1/tf")), poses);
+        QCOMPARE(counts.value(channels.value("/r1/events")), events);
+    }
+
     // A recording without true poses (a real robot) has no true-pose channel.
     void noTruePoseChannelWithoutTruePoses()
     {

@@ -5,6 +5,7 @@
 #include "command_encoder.h"
 #include "lesson_file.h"
 #include "lesson_runner.h"
+#include "not_regular_files.h" // tests/common
 #include "pseudo_translation.h" // tests/common
 #include "robot_mode.h"
 #include "robot_odometry.h"
@@ -405,6 +406,27 @@ private slots:
         QString error;
         QVERIFY(!loadLessonFile("/nonexistent/lesson.json", &error));
         QVERIFY2(error.startsWith("lesson.json: "), qPrintable(error));
+    }
+
+    // A lesson someone sent that is a named pipe, a device or too large is
+    // refused at once with the file's name and the limit: without the check a
+    // pipe blocked the program for good and /dev/zero was read until memory ran out.
+    void aFileThatIsNoLessonIsRefusedUnread()
+    {
+        QTemporaryDir dir;
+        const NotRegularFiles no = makeNotRegularFiles(dir.path(), "json");
+        QVERIFY(!no.pipe.isEmpty());
+        const QString big = dir.filePath("big.json");
+        QFile file(big);
+        QVERIFY(file.open(QIODevice::WriteOnly) && file.resize(2 << 20));
+        file.close();
+        QString error;
+        QVERIFY(!loadLessonFile(big, &error));
+        QCOMPARE(error, QString("big.json: 2 MB, larger than the 1 MB this program reads of such a file"));
+        QVERIFY(!loadLessonFile(no.device, &error));
+        QCOMPARE(error, QString("zero.json: not a regular file but a device"));
+        QVERIFY(!loadLessonFile(no.pipe, &error));
+        QCOMPARE(error, QString("pipe.json: not a regular file but a named pipe"));
     }
 
     // Every text of every shipped lesson is in lesson_texts.cpp, so lupdate

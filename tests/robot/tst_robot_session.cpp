@@ -3,6 +3,7 @@
 // applied to its odometry, and its history on the link's clock.
 #include "calibration_drive.h"
 #include "command_encoder.h"
+#include "crowded_recording.h" // tests/common
 #include "recording_file.h"
 #include "typed_command_bytes.h"
 #include "recording_transport.h" // tests/common
@@ -567,6 +568,31 @@ private slots:
         QCOMPARE(file->markers(), replay.markers().list());
         QCOMPARE(file->markers().size(), 2);
         QCOMPARE(file->markers()[0].note, QString("the very start"));
+    }
+
+    // A replayed file with more markers than a recording holds shows the
+    // first oilink::kMaxMarkers and counts the rest; no marker is added to
+    // it, and the file is left as it was.
+    void aReplayShowsItsFirstThousandMarkers()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath("crowded.oirec");
+        QVERIFY(writeCrowdedRecording(path, oilink::kMaxMarkers + 40));
+        const qint64 size = QFileInfo(path).size();
+
+        RobotSession replay;
+        replay.connectTo(oilink::LinkSettings::replayOf(path, oi::ProfileId::Create2, 115200, {7}));
+        QTRY_COMPARE_WITH_TIMEOUT(replay.markers().list().size(), oilink::kMaxMarkers, 5000);
+        QCOMPARE(replay.markers().leftOut(), 40);
+        QString error;
+        QCOMPARE(replay.markers().add(0, "one more", &error), 0);
+        QCOMPARE(error, QString("A recording holds at most 1000 markers."));
+        QCOMPARE(replay.markers().list().size(), oilink::kMaxMarkers);
+        QCOMPARE(QFileInfo(path).size(), size);
+        // Deleting one makes room for one.
+        QVERIFY(replay.markers().remove(1, &error));
+        QVERIFY(replay.markers().add(0, "one more", &error));
+        QCOMPARE(oilink::Recording::load(path, &error)->markers(), replay.markers().list());
     }
 
     // Closing stops the robot and leaves it in Passive, from the model.

@@ -299,6 +299,20 @@ private slots:
         QVERIFY(firstSeenAt[5] < 1000);
     }
 
+    // The map adds no wall beyond what a room file may hold.
+    void noWallIsAddedBeyondTheLimit()
+    {
+        sim::World w = emptyFloor();
+        w.walls.assign(sim::World::kMaxShapes - 1, {0, 0, 100, 0});
+        sim::WorldEdit add;
+        add.action = sim::WorldEdit::Action::Add;
+        add.wall = {0, 0, 0, 100};
+        QVERIFY(sim::applyEdit(w, add));
+        QCOMPARE(w.walls.size(), sim::World::kMaxShapes);
+        QVERIFY(!sim::applyEdit(w, add));
+        QCOMPARE(w.walls.size(), sim::World::kMaxShapes);
+    }
+
     // The dock moved and turned on the floor: its beams reach the robot where
     // the dock now faces, and not where it used to.
     void theDocksBeamsFollowTheDock()

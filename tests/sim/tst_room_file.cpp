@@ -10,6 +10,8 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include "not_regular_files.h" // tests/common
+
 namespace {
 const QString kRooms = QStringLiteral(ROOMBA_ROOMS_DIR);
 }
@@ -156,6 +158,12 @@ private slots:
                                            << "rugs[0][4] must be a number";
         QTest::newRow("rug inside out") << with(R"("rugs": [[10, 0, 0, 10, 0.9]])")
                                         << "rugs[0]: x_min must be below x_max";
+        // Each robot checks every wall at each step: 200,000 took a core.
+        QByteArray walls = "[0, 0, 1, 1]";
+        for (std::size_t i = 1; i <= sim::World::kMaxShapes; ++i)
+            walls += ", [0, 0, 1, 1]";
+        QTest::newRow("too many walls") << with("\"walls\": [" + walls + "]")
+                                        << "\"walls\" has 1001 entries; a room holds at most 1000";
     }
     void refusesBadFiles()
     {
@@ -174,6 +182,28 @@ private slots:
         file.close();
         QVERIFY(!sim::loadRoomFile(path, &why));
         QCOMPARE(why.left(why.indexOf(error)), QStringLiteral("bad.json: "));
+    }
+
+    // A room is read only from a regular file of at most 1 MB: /dev/zero was
+    // read until memory ran out, a named pipe blocked for good.
+    void aFileThatIsNoRoomIsRefusedUnread()
+    {
+        QTemporaryDir dir;
+        const QString big = dir.filePath("big.json");
+        QFile file(big);
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        const QByteArray room = R"({"format": "roomba-room", "version": 1})";
+        QVERIFY(file.write(room + QByteArray((1 << 20) + 1 - room.size(), ' ')) == (1 << 20) + 1);
+        file.close();
+        const NotRegularFiles no = makeNotRegularFiles(dir.path(), "json");
+        QVERIFY(!no.pipe.isEmpty());
+        QString why;
+        QVERIFY(!sim::loadRoomFile(big, &why));
+        QCOMPARE(why, big + ": cannot read: 1048577 bytes, larger than the 1 MB this program reads of such a file");
+        QVERIFY(!sim::loadRoomFile(no.device, &why));
+        QCOMPARE(why, no.device + ": cannot read: not a regular file but a device");
+        QVERIFY(!sim::loadRoomFile(no.pipe, &why));
+        QCOMPARE(why, no.pipe + ": cannot read: not a regular file but a named pipe");
     }
 
     void aMissingFileIsSaidSo()

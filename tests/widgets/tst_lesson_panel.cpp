@@ -5,6 +5,7 @@
 // screenshot of each shipped lesson's first step on a live virtual robot.
 #include "lesson_panel.h"
 #include "lesson_step_view.h"
+#include "markup_lesson.h" // tests/common
 #include "pseudo_translation.h" // tests/common
 #include "robot_diagram.h"
 #include "robot_session.h"
@@ -208,6 +209,24 @@ private slots:
         QVERIFY(panel.openLesson(path));
         QVERIFY(panel.errorText().isEmpty());
         QCOMPARE(panel.chooser()->currentText(), QStringLiteral("Mine (my_lesson.json)"));
+    }
+
+    // A lesson file is shared: what its texts hold is shown as written, never
+    // as rich text, which opens the files its pictures name (a named pipe
+    // froze the window for good, /dev/zero filled its memory).
+    void lessonTextIsShownAsWritten()
+    {
+        QTemporaryDir dir;
+        const QString path = writeMarkupLesson(dir.path());
+        QVERIFY(!path.isEmpty());
+        RobotLesson lesson;
+        LessonPanel panel(lesson);
+        panel.resize(1200, 800);
+        panel.show();
+        QVERIFY(panel.openLesson(path));
+        QStringList wrong;
+        QCOMPARE(labelsShowingMarkup(&panel, &wrong), (QStringList{"lessonStepText", "lessonSummary"}));
+        QVERIFY2(wrong.isEmpty(), qPrintable(wrong.join('\n')));
     }
 
     void chooserOpensAShippedLesson()

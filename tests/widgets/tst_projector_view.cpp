@@ -4,6 +4,7 @@
 #include "lesson_file.h"
 #include "lesson_runner.h"
 #include "lesson_step_view.h"
+#include "markup_lesson.h" // tests/common
 #include "projector_view.h"
 #include "pseudo_translation.h" // tests/common
 #include "robot_diagram.h"
@@ -14,6 +15,7 @@
 #include <QLabel>
 #include <QPushButton>
 #include <QSignalSpy>
+#include <QTemporaryDir>
 #include <QTest>
 
 namespace {
@@ -88,6 +90,27 @@ private slots:
 
     // The header names the mode the session reports; in Passive a line says
     // why, with Enter Safe (the button or the Enter key), and only then.
+    // The lesson's title and step from a shared file, on the projector as
+    // written: no rich text, so no picture it names is opened.
+    void lessonTextIsShownAsWritten()
+    {
+        QTemporaryDir dir;
+        const QString path = writeMarkupLesson(dir.path());
+        QVERIFY(!path.isEmpty());
+        QWidget window;
+        window.resize(1920, 1080);
+        ProjectorView view(&window);
+        view.setRobot("Robot 1", oi::profile(oi::ProfileId::Create2), nullptr);
+        LessonRunner runner;
+        runner.start(*loadLessonFile(path), oi::profile(oi::ProfileId::Create2));
+        view.setLesson(&runner);
+        window.show();
+        view.show();
+        QStringList wrong;
+        QCOMPARE(labelsShowingMarkup(&view, &wrong), (QStringList{"lessonStepText", "projectorHeader"}));
+        QVERIFY2(wrong.isEmpty(), qPrintable(wrong.join('\n')));
+    }
+
     void modeReasonAndEnterSafe_data()
     {
         QTest::addColumn<QSize>("screen");

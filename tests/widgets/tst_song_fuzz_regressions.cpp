@@ -8,6 +8,8 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include "not_regular_files.h" // tests/common
+
 class TestSongFuzzRegressions : public QObject {
     Q_OBJECT
 private slots:
@@ -63,6 +65,26 @@ private slots:
         file.close();
         QVERIFY(!melodyFromMidiFile(path, nullptr, &error));
         QVERIFY2(error.contains("not a readable Standard MIDI File"), qPrintable(error));
+    }
+
+    // Song and MIDI files are read only as regular files within their limit:
+    // a named pipe blocked the window for good, /dev/zero was read until
+    // memory ran out.
+    void aFileThatIsNoSongIsRefusedUnread()
+    {
+        QTemporaryDir dir;
+        const NotRegularFiles no = makeNotRegularFiles(dir.path(), "mid");
+        QVERIFY(!no.pipe.isEmpty());
+        const QString &pipe = no.pipe, &zero = no.device;
+        QString error;
+        QVERIFY(!readSongsFile(zero, 16, &error));
+        QCOMPARE(error, "Could not open " + zero + ": not a regular file but a device");
+        QVERIFY(!readSongsFile(pipe, 16, &error));
+        QCOMPARE(error, "Could not open " + pipe + ": not a regular file but a named pipe");
+        QVERIFY(!melodyFromMidiFile(zero, nullptr, &error));
+        QCOMPARE(error, "Could not import " + zero + ": not a regular file but a device");
+        QVERIFY(!melodyFromMidiFile(pipe, nullptr, &error));
+        QCOMPARE(error, "Could not import " + pipe + ": not a regular file but a named pipe");
     }
 };
 

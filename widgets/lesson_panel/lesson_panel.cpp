@@ -47,11 +47,16 @@ LessonPanel::LessonPanel(RobotLesson &lesson, QWidget *parent) : QWidget(parent)
     m_error->setTextFormat(Qt::PlainText);
     m_error->setStyleSheet(QStringLiteral("QLabel { color: #b71c1c; font-weight: bold; }"));
     m_error->hide();
+    // Every label here shows text from a lesson file (its title, summary,
+    // robots) as written: rich text would open the files its pictures name.
     m_notice = new QLabel(this);
     m_notice->setWordWrap(true);
+    m_notice->setTextFormat(Qt::PlainText);
     m_notice->hide();
     m_summary = new QLabel(this);
+    m_summary->setObjectName("lessonSummary");
     m_summary->setWordWrap(true);
+    m_summary->setTextFormat(Qt::PlainText);
     m_steps = new QListWidget(this);
     m_steps->setObjectName("lessonSteps");
     m_steps->setWordWrap(true);

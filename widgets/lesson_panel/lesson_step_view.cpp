@@ -39,8 +39,11 @@ bool isIrPacket(const QString &key)
 LessonStepView::LessonStepView(QWidget *parent)
     : QWidget(parent), m_profile(&oi::profile(oi::ProfileId::Create2))
 {
+    // The step's texts come from a lesson file and are shown as written:
+    // rich text would open the files its pictures name.
     m_heading = new QLabel(this);
     m_heading->setObjectName("lessonStepHeading");
+    m_heading->setTextFormat(Qt::PlainText);
     m_text = new QLabel(this);
     m_text->setObjectName("lessonStepText");
     m_text->setWordWrap(true);
@@ -49,6 +52,7 @@ LessonStepView::LessonStepView(QWidget *parent)
     m_goal = new QLabel(this);
     m_goal->setObjectName("lessonGoal");
     m_goal->setWordWrap(true);
+    m_goal->setTextFormat(Qt::PlainText);
     m_progress = new QProgressBar(this);
     m_progress->setRange(0, 100);
     m_progress->setObjectName("lessonProgress");
@@ -58,6 +62,7 @@ LessonStepView::LessonStepView(QWidget *parent)
     m_outOfReach = new QLabel(this);
     m_outOfReach->setObjectName("lessonOutOfReach");
     m_outOfReach->setWordWrap(true);
+    m_outOfReach->setTextFormat(Qt::PlainText);
     m_outOfReach->hide();
     m_placement = new QPushButton(this);
     m_placement->setObjectName("lessonPlacement");

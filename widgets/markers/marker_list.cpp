@@ -10,6 +10,7 @@
 #include <QLabel>
 #include <QPushButton>
 #include <QTableWidget>
+#include <QTextDocument>
 #include <QVBoxLayout>
 
 namespace {
@@ -81,7 +82,8 @@ void MarkerList::setMarkers(const QList<oilink::RecordingMarker> &markers)
         time->setData(Qt::UserRole, m.id);
         auto *note = new QTableWidgetItem(m.note);
         note->setData(Qt::UserRole, m.id);
-        note->setToolTip(m.label());
+        // As written: a tooltip is rich text when it looks like it.
+        note->setToolTip(Qt::convertFromPlainText(m.label()));
         note->setFlags(Qt::ItemIsSelectable | Qt::ItemIsEnabled | (m_editable ? Qt::ItemIsEditable : Qt::NoItemFlags));
         m_table->setItem(row, TimeColumn, time);
         m_table->setItem(row, NoteColumn, note);

@@ -16,6 +16,7 @@ MarkerNoteEditor::MarkerNoteEditor(QWidget *parent) : QWidget(parent)
     row->setContentsMargins(4, 0, 4, 0);
     m_label = new QLabel(this);
     m_label->setObjectName("markerNoteLabel");
+    m_label->setTextFormat(Qt::PlainText); // a note from a recording, as written
     m_field = new QLineEdit(this);
     m_field->setObjectName("markerNoteField");
     m_field->setMaxLength(oilink::kMaxMarkerNoteLength);

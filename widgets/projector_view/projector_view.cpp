@@ -39,17 +39,22 @@ ProjectorView::ProjectorView(QWidget *parent) : QWidget(parent)
     setObjectName("projectorView");
     setAutoFillBackground(true);
     setFocusPolicy(Qt::StrongFocus);
+    // The lesson's title and the robot's name as written: rich text would
+    // open the files the pictures of a lesson file name.
     m_header = new QLabel(this);
     m_header->setObjectName("projectorHeader");
+    m_header->setTextFormat(Qt::PlainText);
     m_header->setWordWrap(true); // a long lesson title takes two lines, not the hint's place
     m_hint = new QLabel(this);
     m_hint->setObjectName("projectorHint");
+    m_hint->setTextFormat(Qt::PlainText);
     m_hint->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
     m_view = new LessonStepView(this);
     m_view->setLeastTextPixels(kLeastPixels);
     m_reasonRow = new QWidget(this);
     m_reasonLabel = new QLabel(m_reasonRow);
     m_reasonLabel->setObjectName("projectorReason");
+    m_reasonLabel->setTextFormat(Qt::PlainText);
     m_reasonLabel->setWordWrap(true);
     m_enterSafe = new QPushButton(m_reasonRow);
     m_enterSafe->setObjectName("projectorEnterSafe");

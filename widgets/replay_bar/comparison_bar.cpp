@@ -15,6 +15,7 @@ ComparisonBar::ComparisonBar(QWidget *parent) : QWidget(parent)
     row->setContentsMargins(4, 0, 4, 0);
     m_label = new QLabel(this);
     m_label->setObjectName("comparisonLabel");
+    m_label->setTextFormat(Qt::PlainText); // the file's name, as written
     m_align = new QComboBox(this);
     m_align->setObjectName("comparisonAlignment");
     m_align->setSizeAdjustPolicy(QComboBox::AdjustToContents);

@@ -174,6 +174,7 @@ ScheduleEditor::ScheduleEditor(QWidget *parent) : QWidget(parent)
     m_message = new QLabel(m_content);
     m_message->setObjectName("message");
     m_message->setWordWrap(true);
+    m_message->setTextFormat(Qt::PlainText); // it names presets, as written
 
     auto *lower = new QHBoxLayout;
     lower->addWidget(presets, 1);

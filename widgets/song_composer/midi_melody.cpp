@@ -2,14 +2,14 @@
 #include "midi_melody.h"
 #include "midi_file_check.h"
 
+#include "bounded_file.h"
+
 #include <QCoreApplication>
-#include <QFile>
 
 #include <smf.h>
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <memory>
 #include <vector>
 
@@ -31,11 +31,14 @@ std::optional<QList<oi::SongNote>> melodyFromMidiFile(const QString &path, int *
             *error = QCoreApplication::translate("MidiMelody", "Could not import %1: %2").arg(path, why);
         return std::nullopt;
     };
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly))
-        return fail(QCoreApplication::translate("MidiMelody", "no such file"));
-    const QByteArray bytes = file.readAll();
-    if (!isWellFormedMidiFile(bytes) || bytes.size() > std::numeric_limits<int>::max())
+    // A melody is a few kilobytes; a whole orchestral score rarely 1 MB.
+    constexpr qint64 kMaxBytes = 8 << 20;
+    QString why;
+    const std::optional<QByteArray> read = files::readBounded(path, kMaxBytes, &why);
+    if (!read)
+        return fail(why);
+    const QByteArray &bytes = *read;
+    if (!isWellFormedMidiFile(bytes))
         return fail(QCoreApplication::translate("MidiMelody", "not a readable Standard MIDI File"));
     std::unique_ptr<smf_t, decltype(&smf_delete)> smf(smf_load_from_memory(bytes.constData(), int(bytes.size())),
                                                       &smf_delete);

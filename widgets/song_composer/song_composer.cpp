@@ -287,6 +287,7 @@ void SongComposer::buildUi()
     m_message = new QLabel(this);
     m_message->setObjectName("message");
     m_message->setWordWrap(true);
+    m_message->setTextFormat(Qt::PlainText); // it quotes song files, as written
     m_message->setTextInteractionFlags(Qt::TextSelectableByMouse);
     layout->addWidget(m_message);
     m_audioStatus = new QLabel(this);

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "song_files.h"
 
+#include "bounded_file.h"
+
 #include <QCoreApplication>
-#include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -117,13 +118,16 @@ bool writeSongsFile(const QString &path, const SongSlots &songs, QString *error)
 
 std::optional<SongSlots> readSongsFile(const QString &path, int slotCount, QString *error)
 {
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly)) {
+    // Sixteen slots of sixteen notes are a few kilobytes.
+    constexpr qint64 kMaxBytes = 1 << 20;
+    QString why;
+    const std::optional<QByteArray> bytes = files::readBounded(path, kMaxBytes, &why);
+    if (!bytes) {
         if (error)
-            *error = QCoreApplication::translate("SongFiles", "Could not open %1: %2").arg(path, file.errorString());
+            *error = QCoreApplication::translate("SongFiles", "Could not open %1: %2").arg(path, why);
         return std::nullopt;
     }
-    return songsFromJson(file.readAll(), slotCount, error);
+    return songsFromJson(*bytes, slotCount, error);
 }
 
 std::optional<oi::Song> transposed(const oi::Song &song, int semitones, QString *error)

@@ -152,9 +152,20 @@ int main(int argc, char *argv[])
                          online[t->robot] = up;
                          controller[t->robot] = o.value(QLatin1String("controller")).toString();
                      });
+    qint64 watcherBackMs = -1, consoleBackMs = -1;
+    QObject::connect(&watcher, &mqtt::MqttClient::connected, &app, [&] { watcherBackMs = clock.elapsed(); });
+    QObject::connect(&watcher, &mqtt::MqttClient::disconnected, &app, [&] {
+        // Until it is back it hears nothing: a state it missed is not a bridge away.
+        for (auto &[robot, up] : online)
+            up = false;
+    });
     watcher.connectToBroker(as(QStringLiteral("watcher")));
     // The dashboard's fleet console, as the teacher.
     FleetDirectory console;
+    QObject::connect(&console, &FleetDirectory::connectionChanged, &app, [&](bool up) {
+        if (up)
+            consoleBackMs = clock.elapsed();
+    });
     console.connectToBroker(as(QStringLiteral("teacher")));
 
     // Students.
@@ -173,6 +184,12 @@ int main(int argc, char *argv[])
                              if (id == QLatin1String("control"))
                                  st->holding = o.value(QLatin1String("controller")).toString() == st->name;
                          });
+        // The broker gone: nothing it held is held, nothing sent is owed.
+        QObject::connect(&st->client, &mqtt::MqttClient::disconnected, &app, [st] {
+            st->holding = false;
+            st->leftAtMs = -1;
+            st->waiting.clear();
+        });
         st->client.connectToBroker(as(st->name));
         st->tick.setInterval(100);
         QObject::connect(&st->tick, &QTimer::timeout, &app, [&, st] {
@@ -203,7 +220,7 @@ int main(int argc, char *argv[])
                 return;
             }
             control("keep");
-            if (now % 250 < 100) {
+            if (now % 250 < 100 && online[st->robot] && st->client.isConnected()) {
                 const QString id = QString::number(++st->nextId);
                 st->client.publish(mqtt::topics::command(st->robot, st->name),
                                    json({{"v", 2}, {"id", id}, {"command", "leds"},
@@ -287,9 +304,14 @@ int main(int argc, char *argv[])
             if (ms > 3000)
                 late << QStringLiteral("%1 after %2 ms").arg(r).arg(ms);
         }
-        std::printf("crash %d at %.0f s: every bridge back within %.0f ms of the broker listening%s%s; console %s\n",
-                    crashes, double(listening) / 1000, worstBackMs, late.isEmpty() ? "" : ", late: ",
-                    qPrintable(late.join(QStringLiteral(", "))), console.isConnected() ? "connected" : "OFFLINE");
+        double slowest = 0;
+        for (const auto &[r, at] : backAtMs)
+            slowest = std::max(slowest, double(at - listening));
+        std::printf("crash %d at %.0f s: every bridge back within %.0f ms of the broker listening%s%s; the watcher "
+                    "back after %lld ms, the console after %lld ms\n",
+                    crashes, double(listening) / 1000, slowest, late.isEmpty() ? "" : ", late: ",
+                    qPrintable(late.join(QStringLiteral(", "))), qlonglong(watcherBackMs - listening),
+                    qlonglong(consoleBackMs - listening));
         std::fflush(stdout);
         if (crashes == (endMs / (crashEveryS * 1000)) / 2)
             memory("in the middle");

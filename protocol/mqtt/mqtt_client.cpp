@@ -143,8 +143,10 @@ void MqttClient::runNetwork(const QByteArray &host, int port, int keepAliveSecon
             // meanwhile ends the thread quickly; then a second (publishing
             // and the goodbye wake it at once).
             auto windowStart = std::chrono::steady_clock::now();
+            const auto tried = windowStart;
             qint64 saidAtMs = -1000;
-            while (rc == MOSQ_ERR_SUCCESS && !m_stopping && !restIfOverIntake(windowStart, saidAtMs))
+            while (rc == MOSQ_ERR_SUCCESS && !m_stopping && !restIfOverIntake(windowStart, saidAtMs)
+                   && (m_sessionUp || !attemptFailed(tried)))
                 rc = mosquitto_loop(m_mosq, m_sessionUp ? 1000 : 100, 1);
             if (m_stopping) {
                 // A goodbye asked for before this connection was made.
@@ -152,7 +154,10 @@ void MqttClient::runNetwork(const QByteArray &host, int port, int keepAliveSecon
                 mosquitto_loop(m_mosq, 100, 1);
                 return;
             }
+            const bool abandoned = !m_sessionUp && rc == MOSQ_ERR_SUCCESS;
             m_sessionUp = false;
+            if (abandoned)
+                continue; // it has taken its time already: the next try at once
         }
         // Whatever ended it, and however the library rates the error, the
         // same: try again in a second. A restarted broker has its clients
@@ -185,6 +190,14 @@ bool MqttClient::restIfOverIntake(std::chrono::steady_clock::time_point &windowS
     windowStart = std::chrono::steady_clock::now();
     m_windowMessages = 0;
     return stop;
+}
+
+bool MqttClient::attemptFailed(std::chrono::steady_clock::time_point tried) const
+{
+    // Over TLS, libmosquitto notices a try refused while the broker is away
+    // only when the keepalive ends it, 5 s on; and a broker may accept and
+    // say nothing.
+    return std::chrono::steady_clock::now() - tried > std::chrono::milliseconds(kAttemptMs);
 }
 
 bool MqttClient::waitToRetry()

@@ -123,6 +123,11 @@ private:
     // The network thread: connects, runs the connection, and after any end
     // waits kRetryMs and connects again, until disconnectFromBroker.
     void runNetwork(const QByteArray &host, int port, int keepAliveSeconds);
+    // The try made at `tried` has failed: the broker has not accepted it
+    // within kAttemptMs (a TLS handshake on a classroom network takes a few
+    // round trips, far less).
+    static constexpr int kAttemptMs = 2000;
+    bool attemptFailed(std::chrono::steady_clock::time_point tried) const;
     // Waits kRetryMs; true if disconnectFromBroker asked the thread to end.
     bool waitToRetry();
     void handleConnected(int rc);

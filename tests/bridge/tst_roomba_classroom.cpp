@@ -187,7 +187,8 @@ private slots:
     }
 
     // The classroom's TLS broker killed as a crash or a power cut would
-    // (SIGKILL: no goodbye, no TLS close) and started again, three times:
+    // (SIGKILL: no goodbye, no TLS close) and started again, three times,
+    // the last two after 2.5 s away (every client refused a few times):
     // each time the bridge (both its connections) and the teacher's console
     // are back by themselves, and the bridge says it is online again.
     void aKilledBrokerFindsItsClassAgain()
@@ -226,6 +227,10 @@ private slots:
         for (int round = 1; round <= 3; ++round) {
             broker.kill();
             QTRY_VERIFY_WITH_TIMEOUT(!console.isConnected() && !watcher.isConnected(), 10000);
+            // Away long enough, from the second round on, that every client
+            // is refused a few times first.
+            if (round > 1)
+                QTest::qWait(2500);
             onlineStates = 0;
             QVERIFY2(broker.startWith(config), qPrintable(broker.error()));
             QElapsedTimer back;
@@ -240,6 +245,9 @@ private slots:
                                                      .arg(QString::fromUtf8(said.right(2000)))),
                                       20000);
             qInfo("round %d: the class was back %lld ms after the broker listened again", round, back.elapsed());
+            // docs/mqtt.md promises it within 3 s (a try left hanging by a
+            // refused TLS connection once held it for 4 s).
+            QVERIFY2(back.elapsed() < 3000, qPrintable(QString::number(back.elapsed())));
         }
         QVERIFY(bridge.state() == QProcess::Running);
         bridge.terminate();

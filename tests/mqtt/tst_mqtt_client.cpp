@@ -8,6 +8,7 @@
 #include "mosquitto_broker.h"
 #include "mqtt_client.h"
 
+#include <QElapsedTimer>
 #include <QSignalSpy>
 #include <QTest>
 
@@ -206,6 +207,32 @@ private slots:
         QVERIFY(client.connectToBroker(addressOf(broker)));
         QVERIFY2(broker.start(), qPrintable(broker.error()));
         QTRY_COMPARE_WITH_TIMEOUT(up.count(), 1, 20000);
+    }
+
+    // The broker killed, and away long enough that the client is refused
+    // twice: it still connects at its next try once the broker listens
+    // again, not when a keepalive ends a try left hanging.
+    void refusedTriesDoNotDelayTheNextOne()
+    {
+        MosquittoBroker broker;
+        MqttClient client(QStringLiteral("early"));
+        QSignalSpy up(&client, &MqttClient::connected);
+        QSignalSpy down(&client, &MqttClient::disconnected);
+        QVERIFY2(broker.start(), qPrintable(broker.error()));
+        QVERIFY(client.connectToBroker(addressOf(broker)));
+        QTRY_COMPARE_WITH_TIMEOUT(up.count(), 1, 10000);
+        broker.kill();
+        QTRY_COMPARE_WITH_TIMEOUT(down.count(), 1, 10000);
+        up.clear();
+        // Refused at least twice meanwhile.
+        QTest::qWait(2500);
+        QVERIFY2(broker.start(), qPrintable(broker.error()));
+        QElapsedTimer listening;
+        listening.start();
+        QTRY_COMPARE_WITH_TIMEOUT(up.count(), 1, 20000);
+        qInfo("connected %lld ms after the broker listened", listening.elapsed());
+        // Its tries are a second apart, and the keepalive is 5 s.
+        QVERIFY2(listening.elapsed() < 2500, qPrintable(QString::number(listening.elapsed())));
     }
 
     // Nothing listens on the port: said within seconds, not "connecting" for good.

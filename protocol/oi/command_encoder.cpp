@@ -120,8 +120,20 @@ EncodeResult CommandEncoder::simple(Command command) const
 EncodeResult CommandEncoder::reset() const { return simple(Command::Reset); }
 EncodeResult CommandEncoder::start() const { return simple(Command::Start); }
 EncodeResult CommandEncoder::control() const { return simple(Command::Control); }
-EncodeResult CommandEncoder::safe() const { return simple(Command::Safe); }
-EncodeResult CommandEncoder::full() const { return simple(Command::Full); }
+EncodeResult CommandEncoder::safe() const { return throughControl(Command::Safe); }
+EncodeResult CommandEncoder::full() const { return throughControl(Command::Full); }
+
+// SCI: Control (130) takes Passive to Safe and is ignored in Safe or Full;
+// Safe (131) is taken in Full only, Full (132) in Safe only. Control first
+// reaches either mode from any of them.
+EncodeResult CommandEncoder::throughControl(Command command) const
+{
+    if (auto e = refuse(command))
+        return *e;
+    if (!m_profile->caps.controlBeforeSafeOrFull)
+        return withOpcode(command);
+    return Bytes{commandSpec(Command::Control).opcode, commandSpec(command).opcode};
+}
 EncodeResult CommandEncoder::stop() const { return simple(Command::Stop); }
 EncodeResult CommandEncoder::power() const { return simple(Command::Power); }
 EncodeResult CommandEncoder::spot() const { return simple(Command::Spot); }
@@ -281,7 +293,7 @@ EncodeResult CommandEncoder::leds(int ledBits, int powerColor, int powerIntensit
     if (auto e = checkRange("LED bits", ledBits, 0, 255))
         return *e;
     // ERRATA 15: the Create has only Play (bit 1) and Advance (bit 3).
-    if (m_profile->id == ProfileId::Create1 && (ledBits & ~(bit::LedPlay | bit::LedAdvance))) {
+    if (m_profile->caps.panel == ButtonPanel::PlayAdvance && (ledBits & ~(bit::LedPlay | bit::LedAdvance))) {
         OiError e = OiError::outOfRange("LED bits", ledBits, 0, 10);
         e.message = std::to_string(ledBits)
                     + " sets LEDs the Create lacks; only 2 (Play) and 8 (Advance) exist";

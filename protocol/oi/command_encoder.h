@@ -100,6 +100,7 @@ public:
 
 private:
     EncodeResult simple(Command command) const;
+    EncodeResult throughControl(Command command) const;
     bool isValidSensorList(std::span<const int> ids, OiError &error) const;
 
     const RobotProfile *m_profile;

@@ -80,9 +80,9 @@ std::string FirmwareVersion::toString() const
     return std::to_string(major) + '.' + std::to_string(minor) + '.' + std::to_string(patch);
 }
 
-double FirmwareCorrections::correctedAngleDegrees(int rawAngle) const
+double FirmwareCorrections::correctedAngleDegrees(double rawAngle) const
 {
-    return angleDivisor ? rawAngle / *angleDivisor : double(rawAngle);
+    return angleDivisor ? rawAngle / *angleDivisor : rawAngle;
 }
 
 void FirmwareCorrections::correct(SensorSnapshot &frame) const

@@ -27,7 +27,7 @@ struct FirmwareCorrections {
     std::optional<double> angleDivisor; // 0.324056 up to and including 3.4.0: degrees = raw / divisor
 
     // Packet 20 in degrees, with the divisor applied where there is one.
-    double correctedAngleDegrees(int rawAngle) const;
+    double correctedAngleDegrees(double rawAngle) const;
     // The frame as the robot meant it: packet 20 in whole degrees. What the
     // robot model hands on to everything that shows or keeps values.
     void correct(SensorSnapshot &frame) const;

@@ -6,7 +6,7 @@ namespace {
 
 const char *remoteName(ProfileId profile, std::uint8_t v)
 {
-    const bool create1 = profile == ProfileId::Create1;
+    const bool createRemote = oi::profile(profile).caps.remote == RemoteNames::CreateRemote;
     switch (v) {
     case 129: return "Left";
     case 130: return "Forward";
@@ -16,12 +16,12 @@ const char *remoteName(ProfileId profile, std::uint8_t v)
     case 134: return "Small";
     case 135: return "Medium";
     case 136: return "Large / Clean";
-    case 137: return create1 ? "Pause" : "Stop";
+    case 137: return createRemote ? "Pause" : "Stop";
     case 138: return "Power";
-    case 139: return create1 ? "Arc Forward Left" : "Arc Left";
-    case 140: return create1 ? "Arc Forward Right" : "Arc Right";
-    case 141: return create1 ? "Drive Stop" : "Stop";
-    case 142: return create1 ? "Send All" : "Download";
+    case 139: return createRemote ? "Arc Forward Left" : "Arc Left";
+    case 140: return createRemote ? "Arc Forward Right" : "Arc Right";
+    case 141: return createRemote ? "Drive Stop" : "Stop";
+    case 142: return createRemote ? "Send All" : "Download";
     case 143: return "Seek Dock";
     default: return nullptr;
     }
@@ -51,7 +51,6 @@ IrCharacter decodeIrCharacter(const RobotProfile &profile, std::uint8_t value)
     IrCharacter c;
     c.value = value;
     c.profile = profile.id;
-    const bool roomba = profile.id != ProfileId::Create1;
     if (value == profile.irNone) {
         c.kind = IrCharacter::Kind::None;
     } else if (remoteName(profile.id, value)) {
@@ -62,15 +61,15 @@ IrCharacter decodeIrCharacter(const RobotProfile &profile, std::uint8_t value)
         c.redBuoy = value & 0x08;
         c.greenBuoy = value & 0x04;
         c.forceField = value & 0x02;
-    } else if (roomba && value == 162) {
+    } else if (profile.caps.irWallsAndLighthouses && value == 162) {
         c.kind = IrCharacter::Kind::VirtualWall;
-    } else if (roomba && (value & 0xF0) == 0xA0 && (value & 0x02) == 0) {
+    } else if (profile.caps.dock == DockBeams::DriveOnCharger && (value & 0xF0) == 0xA0 && (value & 0x02) == 0) {
         // Roomba 500 / 600 drive-on charger: 1010 RG0F.
         c.kind = IrCharacter::Kind::DockBeams;
         c.redBuoy = value & 0x08;
         c.greenBuoy = value & 0x04;
         c.forceField = value & 0x01;
-    } else if (roomba && (value & 0x84) == 0 && ((value >> 3) & 0x0F) >= 1
+    } else if (profile.caps.irWallsAndLighthouses && (value & 0x84) == 0 && ((value >> 3) & 0x0F) >= 1
                && ((value >> 3) & 0x0F) <= 11) {
         c.kind = IrCharacter::Kind::Lighthouse;
         c.lighthouseId = (value >> 3) & 0x0F;

@@ -104,8 +104,9 @@ int Odometry::encoderDelta(std::int32_t previous, std::int32_t current)
 
 void Odometry::update(const SensorSnapshot &snapshot)
 {
-    const ProfileId profile = snapshot.robotProfile().id;
-    if (profile != ProfileId::Create1 && snapshot.hasEncoders()) {
+    const RobotProfile &robot = snapshot.robotProfile();
+    const ProfileId profile = robot.id;
+    if (robot.caps.encoders != WheelEncoders::None && snapshot.hasEncoders()) {
         const std::int32_t left = snapshot.leftEncoderCounts();
         const std::int32_t right = snapshot.rightEncoderCounts();
         // Counts of another profile mean another robot (or wheel order): re-anchor.
@@ -125,7 +126,7 @@ void Odometry::update(const SensorSnapshot &snapshot)
     m_reference.reset();
     // Firmware before 3.3.0 reports distance wrongly: better no motion than a wrong one.
     const double distanceMm = m_corrections.distanceUnreliable ? 0.0 : snapshot.distanceMm();
-    if (profile == ProfileId::Create1 && !snapshot.has(20) && ++m_pendingFrames < kMaxPendingFrames) {
+    if (robot.caps.angleDropsFractions && !snapshot.has(20) && ++m_pendingFrames < kMaxPendingFrames) {
         m_pendingMm += distanceMm;
         return;
     }

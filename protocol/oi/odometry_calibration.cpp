@@ -192,10 +192,21 @@ double EncoderRun::progress() const
     return m_kind == Kind::Straight ? countedDistanceMm(m_wheels, m_counts) : countedTurnRad(m_wheels, m_counts);
 }
 
+double EncoderRun::timeLimitSeconds() const
+{
+    const double lengthMm = m_kind == Kind::Straight ? std::abs(m_target) : std::abs(m_target) * m_wheels.wheelBaseMm / 2;
+    return 3 * lengthMm / m_speed + 10;
+}
+
+int EncoderRun::percentDone() const
+{
+    return int(std::lround(100 * std::abs(progress()) / std::max(1e-9, std::abs(m_target))));
+}
+
 WheelSpeeds EncoderRun::update(const SensorSnapshot &frame)
 {
     bool moved = false;
-    if (frame.robotProfile().id != ProfileId::Create1 && frame.hasEncoders()) {
+    if (frame.robotProfile().caps.encoders != WheelEncoders::None && frame.hasEncoders()) {
         const std::int32_t left = frame.leftEncoderCounts(), right = frame.rightEncoderCounts();
         if (m_reference) {
             const int dl = Odometry::encoderDelta(m_reference->first, left);

@@ -115,6 +115,12 @@ public:
     const WheelCounts &counts() const { return m_counts; }
     // How far the run went by `wheels` (mm for Straight, rad for Turn).
     double progress() const;
+    // A run that has not reached its end by then stops: three times as long
+    // as it takes at its speed, and ten seconds more for the slow approach
+    // at its end (robot time: its frames).
+    double timeLimitSeconds() const;
+    // The share of the target counted so far, 0 to 100 (and more past it).
+    int percentDone() const;
     // The robot's own packets summed: distance (mm) and angle (degrees, corrected).
     double packetDistanceMm() const { return m_packetDistanceMm; }
     double packetAngleDeg() const { return m_packetAngleDeg; }

@@ -322,7 +322,9 @@ std::vector<OiCommand> endScriptCommands(const RobotProfile &profile)
 
 std::vector<OiCommand> shutdownCommands(const RobotProfile &profile)
 {
-    std::vector<OiCommand> out{OiCommand{C::PauseResumeStream, {0}, {}}};
+    std::vector<OiCommand> out;
+    if (profile.has(C::PauseResumeStream))
+        out.push_back(OiCommand{C::PauseResumeStream, {0}, {}});
     for (const std::vector<OiCommand> &part : {endScriptCommands(profile), stopMotionCommands(profile)})
         out.insert(out.end(), part.begin(), part.end());
     out.push_back(OiCommand{C::Start, {}, {}});

@@ -70,37 +70,44 @@ std::size_t SensorSnapshot::decode(int packetOrGroupId, std::span<const std::uin
     return at;
 }
 
-bool SensorSnapshot::wheelDropCaster() const { return isCreate1() && bits(7, bit::WheelDropCaster); }
+bool SensorSnapshot::wheelDropCaster() const { return m_profile->caps.casterWheelDrop && bits(7, bit::WheelDropCaster); }
 
 bool SensorSnapshot::overcurrent(Overcurrent o) const
 {
+    const bool lowSideDrivers = m_profile->caps.motors == MotorOutputs::LowSideDrivers;
     std::uint8_t mask = 0;
     switch (o) {
     case Overcurrent::LeftWheel: mask = bit::OcLeftWheel; break;
     case Overcurrent::RightWheel: mask = bit::OcRightWheel; break;
-    case Overcurrent::MainBrush: mask = isCreate1() ? 0 : bit::OcMainBrush; break;
-    case Overcurrent::SideBrush: mask = isCreate1() ? 0 : bit::OcSideBrush; break;
-    case Overcurrent::LowSideDriver0: mask = isCreate1() ? bit::OcLowSideDriver0 : 0; break;
-    case Overcurrent::LowSideDriver1: mask = isCreate1() ? bit::OcLowSideDriver1 : 0; break;
-    case Overcurrent::LowSideDriver2: mask = isCreate1() ? bit::OcLowSideDriver2 : 0; break;
+    case Overcurrent::MainBrush: mask = lowSideDrivers ? 0 : bit::OcMainBrush; break;
+    case Overcurrent::SideBrush: mask = lowSideDrivers ? 0 : bit::OcSideBrush; break;
+    case Overcurrent::LowSideDriver0: mask = lowSideDrivers ? bit::OcLowSideDriver0 : 0; break;
+    case Overcurrent::LowSideDriver1: mask = lowSideDrivers ? bit::OcLowSideDriver1 : 0; break;
+    case Overcurrent::LowSideDriver2: mask = lowSideDrivers ? bit::OcLowSideDriver2 : 0; break;
     }
     return bits(14, mask);
 }
 
-int SensorSnapshot::dirtDetect() const { return isCreate1() ? 0 : raw(15); }
+int SensorSnapshot::dirtDetect() const { return m_profile->caps.dirtDetect ? raw(15) : 0; }
 
 bool SensorSnapshot::button(Button b) const
 {
-    if (isCreate1()) {
-        if (b == Button::Play)
-            return bits(18, bit::ButtonPlay);
-        if (b == Button::Advance)
-            return bits(18, bit::ButtonAdvance);
-        return false;
-    }
-    if (b == Button::Play || b == Button::Advance)
-        return false;
-    return bits(18, std::uint8_t(1u << static_cast<int>(b)));
+    // Each profile places its buttons differently: read packet 18 by its bit table.
+    static constexpr std::string_view kKeys[] = {"clean", "spot", "dock",  "minute",  "hour", "day",
+                                                 "schedule", "clock", "play", "advance", "max", "power"};
+    for (const BitMeaning &meaning : m_profile->bits(18))
+        if (meaning.key == kKeys[static_cast<int>(b)])
+            return bits(18, meaning.mask);
+    return false;
+}
+
+double SensorSnapshot::angleDegrees() const
+{
+    if (!m_profile->caps.angleIsHalfWheelDifferenceMm)
+        return raw(20);
+    // SCI: degrees = 360 * difference / (258 * pi).
+    constexpr double kPi = 3.14159265358979323846;
+    return 360.0 * raw(20) / (RobotProfile::kSciWheelBaseMm * kPi);
 }
 
 std::optional<double> SensorSnapshot::batteryPercent() const
@@ -117,25 +124,27 @@ bool SensorSnapshot::chargingSource(ChargingSource s) const
 
 bool SensorSnapshot::cargoBayDigitalInput(int index) const
 {
-    return isCreate1() && index >= 0 && index < 4 && bits(32, std::uint8_t(1u << index));
+    return m_profile->caps.cargoBay && index >= 0 && index < 4 && bits(32, std::uint8_t(1u << index));
 }
 
 bool SensorSnapshot::baudRateChangeAsserted() const
 {
     // ERRATA 6: active low, high by default.
-    return isCreate1() && has(32) && !bits(32, bit::BaudRateChangePin);
+    return m_profile->caps.cargoBay && has(32) && !bits(32, bit::BaudRateChangePin);
 }
 
-int SensorSnapshot::cargoBayAnalog() const { return isCreate1() ? raw(33) : 0; }
+int SensorSnapshot::cargoBayAnalog() const { return m_profile->caps.cargoBay ? raw(33) : 0; }
 
 std::int32_t SensorSnapshot::leftEncoderCounts() const
 {
-    return raw(m_profile->id == ProfileId::Roomba500 ? 44 : 43);
+    const int id = m_profile->leftEncoderPacket();
+    return id < 0 ? 0 : raw(id);
 }
 
 std::int32_t SensorSnapshot::rightEncoderCounts() const
 {
-    return raw(m_profile->id == ProfileId::Roomba500 ? 43 : 44);
+    const int id = m_profile->rightEncoderPacket();
+    return id < 0 ? 0 : raw(id);
 }
 
 IrCharacter SensorSnapshot::ir(int packetId) const

@@ -24,6 +24,7 @@ enum class Overcurrent : std::uint8_t {
 enum class Button : std::uint8_t {
     Clean, Spot, Dock, Minute, Hour, Day, Schedule, Clock, // Roomba 500 / Create 2
     Play, Advance,                                         // Create 1
+    Max, Power,                                            // Roomba 400 (SCI)
 };
 enum class ChargingSource : std::uint8_t { InternalCharger, HomeBase };
 // Packet 58. ERRATA 5: compare with these names, never with "== 1" alone.
@@ -96,7 +97,8 @@ public:
     bool button(Button b) const;
 
     int distanceMm() const { return raw(19); }
-    int angleDegrees() const { return raw(20); }
+    // Packet 20 in degrees; on the SCI it is half the wheels' difference in mm.
+    double angleDegrees() const;
     ChargingState chargingState() const { return static_cast<ChargingState>(raw(21)); }
     int voltageMv() const { return raw(22); }
     int currentMa() const { return raw(23); }
@@ -138,7 +140,6 @@ public:
 private:
     bool bits(int packetId, std::uint8_t mask) const { return (raw(packetId) & mask) != 0; }
     IrCharacter ir(int packetId) const;
-    bool isCreate1() const { return m_profile->id == ProfileId::Create1; }
 
     const RobotProfile *m_profile;
     std::uint64_t m_present = 0;

@@ -182,16 +182,8 @@ std::size_t StreamParser::process()
     for (;;) {
         const std::size_t avail = m_length - pos;
         if (!m_replies.empty()) {
-            PendingReply &reply = m_replies.front();
-            if (avail < reply.bytes)
+            if (avail < m_replies.front().bytes || !takeReply(pos))
                 break;
-            dropPendingText();
-            m_frameEnd = m_fed - m_length + pos + reply.bytes;
-            decodeReply(reply, {buf + pos, reply.bytes});
-            ++m_counters.repliesGood;
-            pos += reply.bytes;
-            if (--reply.times == 0)
-                m_replies.pop_front();
             continue;
         }
 
@@ -270,14 +262,94 @@ bool StreamParser::decodePayload(std::span<const std::uint8_t> payload)
     return m_expectedIds.empty() || index == m_expectedIds.size();
 }
 
-void StreamParser::decodeReply(const PendingReply &reply, std::span<const std::uint8_t> data)
+std::size_t StreamParser::textLineAt(std::span<const std::uint8_t> bytes) const
+{
+    std::size_t end = 0;
+    while (end < bytes.size() && end <= kMaxTextLine && isTextByte(bytes[end]))
+        ++end;
+    if (end < kMinTextLine || end > kMaxTextLine || end == bytes.size() || !isLineEnd(bytes[end]))
+        return 0;
+    while (end < bytes.size() && isLineEnd(bytes[end]))
+        ++end;
+    return end;
+}
+
+bool StreamParser::readsAsReply(const PendingReply &reply, std::span<const std::uint8_t> data)
 {
     m_scratch.clear();
     std::size_t at = 0;
     for (std::uint8_t id : reply.ids)
         at += m_scratch.decode(id, data.subspan(at));
-    if (m_handler)
-        m_handler(m_scratch, FrameKind::Reply);
+    for (const PacketInfo &p : m_profile->packets()) {
+        if (!m_scratch.has(p.id) || p.isUnused())
+            continue;
+        const std::int32_t v = m_scratch.raw(p.id);
+        const std::int32_t max = p.id == 35 ? p.max + 1 : p.max; // a mode one high is corrected later (ModeReading)
+        if (v < p.min || v > max)
+            return false;
+    }
+    return true;
+}
+
+bool StreamParser::takeReply(std::size_t &pos)
+{
+    PendingReply &reply = m_replies.front();
+    const std::span<const std::uint8_t> waiting{m_buffer.data() + pos, m_length - pos};
+    const auto accept = [&](std::size_t used) {
+        dropPendingText();
+        m_frameEnd = m_fed - m_length + pos + used;
+        if (m_handler)
+            m_handler(m_scratch, FrameKind::Reply);
+        ++m_counters.repliesGood;
+        pos += used;
+        if (--reply.times == 0)
+            m_replies.pop_front();
+        return true;
+    };
+    if (readsAsReply(reply, waiting.first(reply.bytes)))
+        return accept(reply.bytes);
+    // Lines of text wherever they land among the reply's bytes.
+    m_replyBytes.clear();
+    std::size_t at = 0;
+    bool sawText = false;
+    while (m_replyBytes.size() < reply.bytes && at < waiting.size()) {
+        if (const std::size_t line = textLineAt(waiting.subspan(at)); line > 0) {
+            at += line;
+            sawText = true;
+        } else if (sawText && isLineEnd(waiting[at]) && m_replyBytes.empty()) {
+            ++at; // the rest of a line's CR LF
+        } else {
+            m_replyBytes.push_back(waiting[at++]);
+        }
+    }
+    if (m_replyBytes.size() < reply.bytes)
+        return false; // not whole yet
+    if (sawText && readsAsReply(reply, m_replyBytes)) {
+        // The lines go to the text handler, in order, as if between frames.
+        dropPendingText();
+        for (std::size_t i = 0; i < at;) {
+            if (const std::size_t line = textLineAt(waiting.subspan(i)); line > 0) {
+                skip(waiting.subspan(i, line));
+                i += line;
+            } else {
+                ++i;
+            }
+        }
+        return accept(at);
+    }
+    // Printable bytes to the end of what came, reaching into the reply's
+    // place, may be a line still coming: wait for its end.
+    std::size_t printableFrom = waiting.size();
+    while (printableFrom > 0 && isTextByte(waiting[printableFrom - 1]))
+        --printableFrom;
+    if (printableFrom < at && waiting.size() - printableFrom <= kMaxTextLine)
+        return false;
+    // No reply here: a line of text first is the robot's words, anything
+    // else is junk. The reply is still awaited.
+    const std::size_t line = textLineAt(waiting);
+    skip(waiting.first(std::max<std::size_t>(line, 1)));
+    pos += std::max<std::size_t>(line, 1);
+    return true;
 }
 
 } // namespace oi

@@ -82,7 +82,11 @@ public:
     void setFramesOnly(bool on) { m_framesOnly = on; }
 
     // Announces `times` replies to a Sensors or Query List request for these
-    // ids. Bytes that arrive while a reply is pending are read as that reply.
+    // ids. Bytes that arrive while a reply is pending are read as that reply
+    // once they are whole and consistent: every value in its packet's range
+    // (a mode up to 4, for robots that report it one high). Lines of text
+    // the robot printed before or among them are taken out; a byte that is
+    // neither is discarded, and the reply still awaited.
     // Returns false (and expects nothing) for an id the profile lacks.
     bool expectReply(std::span<const std::uint8_t> packetIds, std::size_t times = 1);
     void cancelReplies() { m_replies.clear(); }
@@ -122,7 +126,14 @@ private:
     void skip(std::span<const std::uint8_t> bytes);
     void dropPendingText();
     bool decodePayload(std::span<const std::uint8_t> payload);
-    void decodeReply(const PendingReply &reply, std::span<const std::uint8_t> data);
+    // Decodes into m_scratch; true when every value is one the robot can send.
+    bool readsAsReply(const PendingReply &reply, std::span<const std::uint8_t> data);
+    // The length of a whole line of text (and its line ends) that `bytes` starts with, or 0.
+    std::size_t textLineAt(std::span<const std::uint8_t> bytes) const;
+    // One pending reply from the buffer at `pos`: true when it was read
+    // (or bytes were set aside as text or junk), false to wait for more.
+    bool takeReply(std::size_t &pos);
+    std::vector<std::uint8_t> m_replyBytes; // a reply without the text among it, reused
     std::size_t payloadSize(std::span<const std::uint8_t> packetIds) const;
 
     static constexpr std::size_t kCapacity = 32 * 1024; // fits the largest 149 reply and a frame

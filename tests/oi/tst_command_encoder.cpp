@@ -27,8 +27,15 @@ void TestCommandEncoder::documentExamples_data()
     QTest::addColumn<QString>("bytes");
 
     // Byte sequences printed in the three documents.
-    for (const char *p : {"roomba500", "create2", "create1"})
+    for (const char *p : {"roomba500", "create2", "create1", "roomba400"})
         QTest::newRow(qPrintable(QString("drive -200/500 ") + p)) << p << "drive -200 500" << "137 255 56 1 244";
+    // The SCI document's examples; its Safe and Full go through Control (130).
+    QTest::newRow("sci leds dirt, spot, status red, power half") << "roomba400" << "leds 25 0 128" << "139 25 0 128";
+    QTest::newRow("sci motors vacuum") << "roomba400" << "motors 2" << "138 2";
+    QTest::newRow("sci safe") << "roomba400" << "safe" << "130 131";
+    QTest::newRow("sci full") << "roomba400" << "full" << "130 132";
+    QTest::newRow("sci sensors group 0") << "roomba400" << "sensors 0" << "142 0";
+    QTest::newRow("sci song slot 15") << "roomba400" << "song 15 C4:16" << "140 15 1 60 16";
     QTest::newRow("leds home, power green half") << "create2" << "leds 4 0 128" << "139 4 0 128";
     QTest::newRow("leds create advance") << "create1" << "leds 8 0 128" << "139 8 0 128";
     QTest::newRow("motors 13") << "roomba500" << "motors 13" << "138 13";
@@ -106,7 +113,7 @@ void TestCommandEncoder::everyCommand_data()
     const QHash<QString, QString> sample = {
         {"baud", "7"}, {"demo", "2"}, {"drive", "100 0"}, {"motors", "7"},
         {"low-side-drivers", "7"}, {"leds", "0 0 0"}, {"song", "0 C4:16"}, {"play", "0"},
-        {"sensors", "7"}, {"pwm-motors", "0 0 0"}, {"pwm-low-side-drivers", "0 0 0"},
+        {"sensors", "0"}, {"pwm-motors", "0 0 0"}, {"pwm-low-side-drivers", "0 0 0"},
         {"drive-direct", "0 0"}, {"drive-pwm", "0 0"}, {"digital-outputs", "1"},
         {"stream", "1 7"}, {"query-list", "1 7"}, {"pause-resume-stream", "1"},
         {"send-ir", "129"}, {"script", "\"play-script\""}, {"wait-time", "10"},
@@ -136,7 +143,9 @@ void TestCommandEncoder::everyCommand()
         if (p.has(spec->command)) {
             ++available;
             QVERIFY2(r.ok(), qPrintable(QString::fromStdString(r.error().describe())));
-            QCOMPARE(r->front(), spec->opcode);
+            const bool throughControl = p.caps.controlBeforeSafeOrFull
+                                        && (spec->command == Command::Safe || spec->command == Command::Full);
+            QCOMPARE(r->at(throughControl ? 1 : 0), spec->opcode);
             QCOMPARE(commandSpecForOpcode(p, spec->opcode), spec);
         } else {
             QVERIFY(!r.ok());

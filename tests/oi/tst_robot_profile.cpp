@@ -7,6 +7,8 @@
 
 #include <QTest>
 
+#include <cmath>
+
 using namespace oi;
 using namespace oi_test;
 
@@ -141,6 +143,52 @@ private slots:
         QCOMPARE(int(profile(ProfileId::Create2).bits(45).size()), 6);
         QVERIFY(profile(ProfileId::Create1).bits(45).empty());
         QCOMPARE(profile(ProfileId::Create1).bits(32).back().key, std::string_view("baud_rate_change_pin"));
+    }
+
+    // The SCI (2005), as its document lists it: packets 7..26, asked for only
+    // as groups 0..3 of 26, 10, 6 and 10 bytes; commands 128..143; 57600 baud.
+    void roomba400SpeaksTheSci()
+    {
+        const RobotProfile &sci = profile(ProfileId::Roomba400);
+        for (const char *alias : {"roomba400", "sci", "400", "discovery", "dirtdog"})
+            QCOMPARE(profileByKey(alias), &sci);
+        QCOMPARE(sci.name, std::string_view("Roomba 400-series (SCI, 2005)"));
+        QCOMPARE(sci.defaultBaud, 57600);
+        QCOMPARE(sci.songSlots, 16);
+        QVERIFY(sci.polled());
+        for (int id = 7; id <= 26; ++id) {
+            QVERIFY(sci.packet(id));
+            QCOMPARE(QString::number(sci.packet(id)->bytes) + (sci.packet(id)->isSigned ? "s" : "u"),
+                     QString(kCreate2Layout[id - 7]));
+            QVERIFY2(!sci.isValidSensorId(id), "Sensors takes only the groups");
+        }
+        QVERIFY(!sci.packet(27) && !sci.packet(35));
+        const int groups[][2] = {{0, 26}, {1, 10}, {2, 6}, {3, 10}};
+        for (const auto &g : groups) {
+            QVERIFY(sci.isValidSensorId(g[0]));
+            QCOMPARE(sci.replySize(g[0]), g[1]);
+        }
+        for (int id : {4, 5, 6, 35, 100, 101})
+            QVERIFY(!sci.isValidSensorId(id));
+        for (Command c : {Command::Start, Command::Baud, Command::Control, Command::Safe, Command::Full,
+                          Command::Power, Command::Spot, Command::Clean, Command::Max, Command::Drive,
+                          Command::Motors, Command::Leds, Command::Song, Command::Play, Command::Sensors,
+                          Command::SeekDock})
+            QVERIFY(sci.has(c));
+        for (Command c : {Command::Stream, Command::QueryList, Command::PauseResumeStream, Command::DriveDirect,
+                          Command::Stop, Command::DrivePwm, Command::PwmMotors, Command::Script})
+            QVERIFY(!sci.has(c));
+        // Buttons: Max, Clean, Spot, Power; the caster has its bit.
+        QCOMPARE(int(sci.bits(7).size()), 5);
+        QCOMPARE(sci.bits(18)[1].key, std::string_view("clean"));
+        QCOMPARE(int(sci.bits(18)[1].mask), 0x02);
+        QCOMPARE(int(sci.bits(14)[1].mask), int(bit::OcVacuum));
+        SensorSnapshot s(sci);
+        s.set(18, bit::SciButtonClean);
+        QVERIFY(s.button(Button::Clean) && !s.button(Button::Spot) && !s.button(Button::Max));
+        // Angle: (right - left) / 2 in mm; 258 mm between the wheels.
+        s.set(20, 203); // a quarter turn: 2 * 203 / 258 rad
+        QVERIFY(std::abs(s.angleDegrees() - 90.2) < 0.1);
     }
 };
 

@@ -181,7 +181,7 @@ private slots:
             // A reply's end too, after the frames.
             const std::uint8_t query[] = {13};
             QVERIFY(parser.expectReply(query));
-            parser.feed(bytesFrom("9 9"));
+            parser.feed(bytesFrom("1 9"));
             QCOMPARE(ends.back(), std::uint64_t(input.size() + 1));
             // reset() counts from zero again.
             parser.reset();
@@ -325,7 +325,7 @@ private slots:
         });
         const Bytes f = streamFrame({7, 1});
         parser.feed(f);
-        const std::uint8_t query[] = {7, 13};
+        const std::uint8_t query[] = {24, 13};
         QVERIFY(parser.expectReply(query, 2));
         QCOMPARE(parser.pendingReplies(), std::size_t(2));
         parser.feed(bytesFrom("19 1 2 0")); // two replies; 19 is data here
@@ -335,8 +335,8 @@ private slots:
         const std::vector<FrameKind> kinds = {FrameKind::Stream, FrameKind::Reply, FrameKind::Reply,
                                               FrameKind::Stream};
         QCOMPARE(run.kinds, kinds);
-        QCOMPARE(run.frames[1], (Values{{7, 19}, {13, 1}}));
-        QCOMPARE(run.frames[2], (Values{{7, 2}, {13, 0}}));
+        QCOMPARE(run.frames[1], (Values{{13, 1}, {24, 19}}));
+        QCOMPARE(run.frames[2], (Values{{13, 0}, {24, 2}}));
         QCOMPARE(parser.counters(), (ParserCounters{2, 2, 0, 0, 0}));
         // A reply that never comes can be cancelled.
         parser.expectReply(query);
@@ -462,6 +462,48 @@ private slots:
         QCOMPARE(withoutTextLines(received), (Bytes{1, 0}));
         // Printable reply bytes with no line end stay.
         QCOMPARE(withoutTextLines(Bytes{'a', 'b', 'c', 'd', 'e', 3}), (Bytes{'a', 'b', 'c', 'd', 'e', 3}));
+    }
+
+    // A reply is read only whole and consistent: lines of text before it or
+    // among its bytes are the robot's words, whatever the split, and bytes
+    // that make a mode no robot has are not read as one.
+    void aReplyAmongTextIsReadWhole()
+    {
+        const std::string text = "bat:   min 0  sec 1  mV 16000  mA 1500  state 2  mode 1\r\n";
+        const Bytes ids{35, 7};
+        Bytes received(text.begin(), text.end());
+        received.push_back(2); // Safe
+        received.insert(received.end(), text.begin(), text.end());
+        received.push_back(oi::bit::BumpLeft);
+        const auto feed = [](StreamParser &parser, const Bytes &bytes, std::size_t piece) {
+            std::vector<SensorSnapshot> replies;
+            parser.setSnapshotHandler([&](const SensorSnapshot &r, FrameKind k) {
+                if (k == FrameKind::Reply)
+                    replies.push_back(r);
+            });
+            for (std::size_t at = 0; at < bytes.size(); at += piece)
+                parser.feed(std::span(bytes).subspan(at, std::min(piece, bytes.size() - at)));
+            return replies;
+        };
+        for (std::size_t piece : {received.size(), std::size_t(1), std::size_t(5), text.size(), text.size() + 1}) {
+            StreamParser parser(profile(ProfileId::Create2));
+            std::vector<std::string> lines;
+            parser.setTextHandler([&](std::string_view l) { lines.emplace_back(l); });
+            QVERIFY(parser.expectReply(ids));
+            const std::vector<SensorSnapshot> replies = feed(parser, received, piece);
+            QCOMPARE(int(replies.size()), 1);
+            QCOMPARE(replies[0].oiMode(), oi::OiMode::Safe);
+            QVERIFY(replies[0].bumpLeft());
+            QCOMPARE(int(lines.size()), 2);
+            QCOMPARE(parser.pendingReplies(), std::size_t(0));
+        }
+        // A line still coming holds the reply back; junk is not read as a mode.
+        StreamParser parser(profile(ProfileId::Create2));
+        QVERIFY(parser.expectReply(Bytes{35}));
+        QVERIFY(feed(parser, Bytes{'b', 'a', 't', ':'}, 4).empty());
+        const std::vector<SensorSnapshot> rest = feed(parser, Bytes{' ', 'x', '\r', '\n', 0xC8, 3}, 6);
+        QCOMPARE(int(rest.size()), 1);
+        QCOMPARE(rest[0].oiMode(), oi::OiMode::Full);
     }
 };
 

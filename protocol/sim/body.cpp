@@ -273,7 +273,7 @@ InfraredView senseInfrared(const World &world, const oi::Pose &pose, const oi::R
 {
     InfraredView view;
     view.omni = view.left = view.right = profile.irNone;
-    const bool create1 = profile.id == oi::ProfileId::Create1;
+    const bool homeBase = profile.caps.dock == oi::DockBeams::HomeBase;
     const Vec2 centre{pose.xMm, pose.yMm};
 
     // Which receivers can see a source at `p`.
@@ -303,18 +303,18 @@ InfraredView senseInfrared(const World &world, const oi::Pose &pose, const oi::R
         if (red || green || field) {
             // Create home base 1111 RGF0; Roomba 500/600 drive-on charger 1010 RG0F.
             const std::uint8_t code =
-                create1 ? std::uint8_t(0xF0 | (red ? 8 : 0) | (green ? 4 : 0) | (field ? 2 : 0))
+                homeBase ? std::uint8_t(0xF0 | (red ? 8 : 0) | (green ? 4 : 0) | (field ? 2 : 0))
                         : std::uint8_t(0xA0 | (red ? 8 : 0) | (green ? 4 : 0) | (field ? 1 : 0));
             bool left = false, right = false;
             seenBy(emitter, left, right);
             view.omni = code;
-            if (!create1) {
+            if (profile.caps.sideInfrared) {
                 view.left = left ? code : view.left;
                 view.right = right ? code : view.right;
             }
             // The Create document: the home base's force field trips the
             // virtual wall sensor too.
-            if (create1 && field)
+            if (homeBase && field)
                 view.virtualWall = true;
         }
     }
@@ -332,7 +332,7 @@ InfraredView senseInfrared(const World &world, const oi::Pose &pose, const oi::R
         const bool inHalo = length(rel) <= kVirtualWallHaloMm;
         if ((inBeam || inHalo) && !crossesWall(world, source, receiver)) {
             view.virtualWall = true;
-            if (!create1) {
+            if (profile.caps.irWallsAndLighthouses) {
                 // Roomba virtual walls send character 162; a dock's beams win
                 // where both are seen.
                 constexpr std::uint8_t kVirtualWallCharacter = 162;

@@ -80,6 +80,11 @@ public:
     // Lifts wheels off the floor by hand (wheel drops), beside what the world does.
     void setWheelsLifted(bool left, bool right, bool caster = false);
     void pressButtons(std::uint8_t packet18Bits); // held until released with 0
+    // The Clean/Power button of a Roomba 500 or Create 2 (packet 18's
+    // Clean): held for 2 s, it switches the robot off (the OI's Off, silent
+    // and deaf as asleep); pressed and let go while off, or a BRC pulse,
+    // switches it on in Off mode, waiting for Start.
+    bool switchedOff() const;
 
     // --- What the robot shows and stores ---
     oi::OiMode mode() const;
@@ -123,6 +128,10 @@ public:
         // A battery gauge gone wrong: packet 25 reads the charge plus the
         // capacity, more than the pack can hold.
         bool reportsChargeAboveCapacity = false;
+        // A Bluetooth serial adapter or a Wi-Fi bridge that hands on what
+        // the robot says in bunches this far apart, on time but held (0:
+        // each byte as it is sent). An FTDI adapter's latency timer is 16 ms.
+        Microseconds bunch{0};
     };
     void setQuirks(Quirks quirks);
     const Quirks &quirks() const;
@@ -150,9 +159,34 @@ public:
     // While it charges, a Roomba 500 / 600 prints a status line once a
     // second between frames ("bat:   min 0  sec 12  mV 16421  mA 1183 ..."),
     // and Reset on the dock adds the charger's lines to the banner.
+    // The charge the pack holds (what the robot's gauge, packet 25, counts
+    // may differ: see Battery). Setting it sets the gauge to it too.
     double batteryChargeMah() const;
     void setBatteryChargeMah(double mah);
-    // Why Safe mode last fell back to Passive ("cliff", "wheel drop", "charger"), or empty.
+    // The pack: new by default. An aged one holds less than the documented
+    // 3000 mAh (fadePercent of it lost) and sags more under load (its
+    // internal resistance, mΩ), while the firmware still claims 3000 mAh
+    // (26). The gauge (25) counts the current from what it was told: at
+    // boot (Reset) it is re-seeded from the voltage (the banner says
+    // "estimate-battery-level-from-voltage"), which a worn pack's sag puts
+    // too low, and at the end of a charge it is set full. Nearly flat under
+    // load (below kBrownOutMv) Safe and Full fall to Passive by themselves
+    // ("battery"). A pack run flat (under 1 % of its charge) and docked
+    // shows a charging fault (21 = 5) until a Reset.
+    static constexpr double kNewPackResistanceMohm = 250;
+    static constexpr double kBrownOutMv = 12800;
+    struct Battery {
+        double fadePercent = 0;                          // 0 to 90
+        double resistanceMohm = kNewPackResistanceMohm;  // 50 to 5000
+        friend bool operator==(const Battery &, const Battery &) = default;
+    };
+    // Refused (false, nothing changed) outside those ranges; the pack starts
+    // at 90 % of what it holds, as a new robot does.
+    bool setBattery(const Battery &battery);
+    const Battery &battery() const;
+    // What packet 25 reads now (the gauge), mAh.
+    double batteryGaugeMah() const;
+    // Why Safe (or Full) last fell back to Passive ("cliff", "wheel drop", "charger", "battery"), or empty.
     std::string lastSafetyStop() const;
 
     // --- Faults ---

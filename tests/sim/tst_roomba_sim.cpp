@@ -170,6 +170,10 @@ void TestRoombaSim::refusesBadArguments_data()
     QTest::newRow("wake time negative") << QStringList{"--wake-time", "-1"};
     QTest::newRow("wake time not a number") << QStringList{"--wake-time", "slow"};
     QTest::newRow("wake time too long") << QStringList{"--wake-time", "60000"};
+    QTest::newRow("battery faded past all use") << QStringList{"--battery-fade", "95"};
+    QTest::newRow("battery fade not a number") << QStringList{"--battery-fade", "old"};
+    QTest::newRow("battery resistance of nothing") << QStringList{"--battery-resistance", "0"};
+    QTest::newRow("battery charged past full") << QStringList{"--battery-charge", "120"};
 }
 
 void TestRoombaSim::refusesBadArguments()

@@ -41,14 +41,25 @@ constexpr int kMaxConnections = 32;
 // What a client's socket is given at a time. The rest waits in the client's
 // queue, where a channel's newer message can still take an older one's place.
 constexpr qint64 kSocketBatch = 64 * 1024;
-// The time message's key in a client's queue; the others are subscription ids.
+// The time message's key in a client's queue, and the playback state's; the
+// others are subscription ids.
 constexpr quint64 kTimeKey = quint64(1) << 32;
+constexpr quint64 kPlaybackKey = kTimeKey + 1;
 // What a message waiting in a client's queue costs: its bytes and the
 // queue's own memory for it, so that many small ones count for what they hold.
 constexpr qint64 kEntryCost = 128;
 
 enum StatusLevel { StatusInfo = 0, StatusWarning = 1, StatusError = 2 };
-enum BinaryOp : quint8 { MessageData = 1, Time = 2 };
+enum BinaryOp : quint8 { MessageData = 1, Time = 2, PlaybackStateOp = 5 };
+enum ClientBinaryOp : quint8 { PlaybackControlRequestOp = 3 };
+
+QByteArray timeMessage(quint64 timeNs)
+{
+    QByteArray message(1 + 8, Qt::Uninitialized);
+    message[0] = char(Time);
+    qToLittleEndian<quint64>(timeNs, message.data() + 1);
+    return message;
+}
 
 qint64 costOf(const QByteArray &message)
 {
@@ -159,11 +170,15 @@ struct Server::Client {
     qint64 queuedBytes = 0; // what `queue` costs (costOf)
     QHash<quint64, quint64> newest; // key → the order of its newest data still waiting
     bool gone = false; // dropped or disconnected; erased by reap()
+    bool hasTime = false; // it has been sent the time, which comes before any data
+    qint64 heardNs = 0;   // when it last sent a message or answered a ping
 };
 
 Server::Server(const QString &name, oilink::Clock &clock, QObject *parent)
-    : QObject(parent), m_name(name), m_clock(clock), m_timeTimer(clock)
+    : QObject(parent), m_name(name), m_clock(clock), m_timeTimer(clock), m_pingTimer(clock)
 {
+    m_pingTimer.setInterval(kPingMs);
+    connect(&m_pingTimer, &oilink::ClockTimer::timeout, this, &Server::pingOrClose);
     m_timeTimer.setSingleShot(true);
     connect(&m_timeTimer, &oilink::ClockTimer::timeout, this, [this] {
         if (m_timePending)
@@ -196,6 +211,7 @@ bool Server::listen(const ServerAddress &address)
     connect(m_tcp, &QTcpServer::newConnection, this, &Server::onTcpConnection);
     connect(m_webSockets, &QWebSocketServer::newConnection, this, &Server::onWebSocket);
     m_error.clear();
+    m_pingTimer.start();
     // Beyond loopback only as the user asked, and said so.
     if (isLoopback())
         qCInfo(lcFoxglove, "live data server on %s (this machine only)", qPrintable(url()));
@@ -222,6 +238,7 @@ void Server::close()
         channel->subscriptions = 0;
     delete std::exchange(m_webSockets, nullptr);
     delete std::exchange(m_tcp, nullptr);
+    m_pingTimer.stop();
     if (hadClients)
         emit clientCountChanged(0);
 }
@@ -342,12 +359,20 @@ void Server::onWebSocket()
         auto client = std::make_unique<Client>();
         client->socket = socket;
         client->peer = peerOf(socket);
+        client->heardNs = m_clock.nowNs();
         Client *c = client.get();
         m_clients.push_back(std::move(client));
-        connect(socket, &QWebSocket::textMessageReceived, this, [this, c](const QString &text) { onText(c, text); });
-        connect(socket, &QWebSocket::binaryMessageReceived, this, [this, c] {
-            sendStatus(c, StatusError, QStringLiteral("this server takes no binary messages (no clientPublish)"));
+        connect(socket, &QWebSocket::textMessageReceived, this, [this, c](const QString &text) {
+            c->heardNs = m_clock.nowNs();
+            onText(c, text);
         });
+        connect(socket, &QWebSocket::binaryMessageReceived, this, [this, c](const QByteArray &message) {
+            c->heardNs = m_clock.nowNs();
+            onBinary(c, message);
+        });
+        connect(socket, &QWebSocket::pong, this, [this, c] { c->heardNs = m_clock.nowNs(); });
+        // Bytes the kernel took say nothing of the client: a vanished one's
+        // buffers take them for a while.
         connect(socket, &QWebSocket::bytesWritten, this, [this, c] { pump(c); });
         connect(socket, &QWebSocket::disconnected, this, [this, c] { forget(c); });
         qCInfo(lcFoxglove, "live data server: %s connected (%s)", qPrintable(c->peer), qPrintable(socket->subprotocol()));
@@ -357,6 +382,25 @@ void Server::onWebSocket()
         for (const auto &[id, state] : m_channels)
             all << id;
         advertiseTo(c, all);
+        // Its timeline starts at the source's time, never at 0.
+        if (m_lastTimeNs)
+            sendTimeFirst(c, *m_lastTimeNs);
+    }
+}
+
+// Every kPingMs: a ping to each client, which answers it unasked (browsers,
+// Qt and Node all do); one not heard from for Limits::idleMs is gone.
+void Server::pingOrClose()
+{
+    const qint64 now = m_clock.nowNs();
+    for (const std::unique_ptr<Client> &client : m_clients) {
+        if (client->gone)
+            continue;
+        if (now - client->heardNs >= qint64(m_limits.idleMs) * 1000000)
+            drop(client.get(), QStringLiteral("it sent nothing, answered no ping and read nothing for %1 s")
+                                   .arg(m_limits.idleMs / 1000));
+        else
+            client->socket->ping();
     }
 }
 
@@ -458,7 +502,7 @@ void Server::pump(Client *client)
         client->queuedBytes -= costOf(out.bytes);
         if (out.text)
             client->socket->sendTextMessage(QString::fromUtf8(out.bytes));
-        else if (out.key == kTimeKey || client->subscriptions.value(quint32(out.key)) == out.channel)
+        else if (out.key >= kTimeKey || client->subscriptions.value(quint32(out.key)) == out.channel)
             client->socket->sendBinaryMessage(out.bytes); // not for a subscription ended while it waited
     }
 }
@@ -468,12 +512,91 @@ void Server::sendServerInfo(Client *client)
     QJsonObject metadata;
     for (auto it = m_metadata.cbegin(); it != m_metadata.cend(); ++it)
         metadata.insert(it.key(), it.value());
-    sendText(client, compact({{"op", "serverInfo"},
-                              {"name", m_name},
-                              {"capabilities", QJsonArray{"time"}},
-                              {"supportedEncodings", QJsonArray{}},
-                              {"metadata", metadata},
-                              {"sessionId", m_sessionId}}));
+    QJsonObject info{{"op", "serverInfo"},
+                     {"name", m_name},
+                     {"capabilities", m_playbackRange ? QJsonArray{"time", "playbackControl"} : QJsonArray{"time"}},
+                     {"supportedEncodings", QJsonArray{}},
+                     {"metadata", metadata},
+                     {"sessionId", m_sessionId}};
+    if (m_playbackRange) {
+        const auto stamp = [](quint64 ns) {
+            return QJsonObject{{"sec", qint64(ns / 1000000000)}, {"nsec", qint64(ns % 1000000000)}};
+        };
+        info.insert("dataStartTime", stamp(m_playbackRange->first));
+        info.insert("dataEndTime", stamp(m_playbackRange->second));
+    }
+    sendText(client, compact(info));
+}
+
+void Server::setPlaybackRange(std::optional<std::pair<quint64, quint64>> rangeNs)
+{
+    if (rangeNs == m_playbackRange)
+        return;
+    m_playbackRange = rangeNs;
+    for (const std::unique_ptr<Client> &client : m_clients)
+        sendServerInfo(client.get());
+}
+
+// A Playback Control Request: command (0 play, 1 pause), speed (float32),
+// whether it seeks, the time (uint64), the request id's length and the id,
+// little-endian (the protocol's playbackControl capability).
+void Server::onBinary(Client *client, const QByteArray &message)
+{
+    const auto refuse = [&](const QString &why) { sendStatus(client, StatusError, why); };
+    if (message.isEmpty() || quint8(message[0]) != PlaybackControlRequestOp || !m_playbackRange) {
+        refuse(m_playbackRange ? QStringLiteral("the only binary message this server takes is a playback control "
+                                                "request (op 3)")
+                               : QStringLiteral("this server takes no binary messages now (no clientPublish, and no "
+                                                "replay to control)"));
+        return;
+    }
+    constexpr qsizetype kHeader = 1 + 1 + 4 + 1 + 8 + 4;
+    if (message.size() < kHeader) {
+        refuse(QStringLiteral("a playback control request of %1 bytes: it has at least %2").arg(message.size()).arg(kHeader));
+        return;
+    }
+    const char *at = message.constData() + 1;
+    const quint8 command = quint8(at[0]);
+    const float speed = qFromLittleEndian<float>(at + 1);
+    const bool seeks = at[5] != 0;
+    const quint64 seekNs = qFromLittleEndian<quint64>(at + 6);
+    const quint32 idLength = qFromLittleEndian<quint32>(at + 14);
+    if (command > 1) {
+        refuse(QStringLiteral("playback command %1: 0 plays, 1 pauses").arg(command));
+        return;
+    }
+    if (!std::isfinite(speed) || speed <= 0) {
+        refuse(QStringLiteral("playback speed %1: give a speed above 0").arg(double(speed)));
+        return;
+    }
+    if (qint64(idLength) != message.size() - kHeader) {
+        refuse(QStringLiteral("a playback control request whose id is said to be %1 bytes has %2")
+                   .arg(idLength)
+                   .arg(message.size() - kHeader));
+        return;
+    }
+    PlaybackRequest request;
+    request.play = command == 0;
+    request.speed = speed;
+    if (seeks)
+        request.seekNs = seekNs;
+    request.requestId = QString::fromUtf8(message.mid(kHeader));
+    emit playbackRequested(request);
+}
+
+void Server::sendPlaybackState(const PlaybackState &state)
+{
+    const QByteArray id = state.requestId.toUtf8();
+    QByteArray message(1 + 1 + 8 + 4 + 1 + 4, Qt::Uninitialized);
+    message[0] = char(PlaybackStateOp);
+    message[1] = char(state.status);
+    qToLittleEndian<quint64>(state.currentNs, message.data() + 2);
+    qToLittleEndian<float>(state.speed, message.data() + 10);
+    message[14] = char(state.didSeek ? 1 : 0);
+    qToLittleEndian<quint32>(quint32(id.size()), message.data() + 15);
+    message += id;
+    for (const std::unique_ptr<Client> &client : m_clients)
+        sendData(client.get(), kPlaybackKey, 0, message, false);
 }
 
 void Server::sendStatus(Client *client, int level, const QString &message)
@@ -667,6 +790,7 @@ void Server::sendNow(ChannelState &channel, quint64 timeNs, const std::function<
             if (it.value() != channel.id)
                 continue;
             qToLittleEndian<quint32>(it.key(), message.data() + 1); // leaves alone the copy queued before
+            sendTimeFirst(client.get(), m_lastTimeNs.value_or(timeNs));
             sendData(client.get(), it.key(), channel.id, message, channel.delivery == Delivery::Latest);
         }
     }
@@ -674,6 +798,7 @@ void Server::sendNow(ChannelState &channel, quint64 timeNs, const std::function<
 
 void Server::setTime(quint64 timeNs)
 {
+    m_lastTimeNs = timeNs;
     if (clientCount() == 0)
         return;
     const qint64 dueNs = m_timeSentNs == std::numeric_limits<qint64>::min() ? 0 : m_timeSentNs + intervalNs();
@@ -691,11 +816,21 @@ void Server::setTime(quint64 timeNs)
 void Server::sendTime(quint64 timeNs)
 {
     m_timeSentNs = m_clock.nowNs();
-    QByteArray message(1 + 8, Qt::Uninitialized);
-    message[0] = char(Time);
-    qToLittleEndian<quint64>(timeNs, message.data() + 1);
-    for (const std::unique_ptr<Client> &client : m_clients)
+    const QByteArray message = timeMessage(timeNs);
+    for (const std::unique_ptr<Client> &client : m_clients) {
+        client->hasTime = true;
         sendData(client.get(), kTimeKey, 0, message, true);
+    }
+}
+
+// A client's first data follows a time: Foxglove starts its timeline at the
+// first time it hears, and at 0 before any.
+void Server::sendTimeFirst(Client *client, quint64 timeNs)
+{
+    if (client->hasTime || client->gone)
+        return;
+    client->hasTime = true;
+    sendData(client, kTimeKey, 0, timeMessage(timeNs), true);
 }
 
 void Server::startSession()

@@ -16,6 +16,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <utility>
 #include <vector>
 
 class QJsonArray;
@@ -68,6 +69,24 @@ struct ServerAddress {
     bool isLoopback() const { return address.isLoopback(); }
 };
 
+// The protocol's playbackControl capability: the viewer's timeline plays,
+// pauses, seeks and sets the speed of a source that has a time range (a
+// replay). Times are the protocol's, in ns.
+struct PlaybackRequest {
+    bool play = false; // or pause
+    float speed = 1;
+    std::optional<quint64> seekNs;
+    QString requestId;
+};
+struct PlaybackState {
+    enum class Status : quint8 { Playing = 0, Paused = 1, Buffering = 2, Ended = 3 };
+    Status status = Status::Paused;
+    quint64 currentNs = 0;
+    float speed = 1;
+    bool didSeek = false; // the panels start afresh
+    QString requestId;    // the request this answers, empty when none
+};
+
 class Server : public QObject {
     Q_OBJECT
 public:
@@ -81,7 +100,12 @@ public:
         // place of its older one still waiting. A client that the rest takes
         // past it is dropped rather than waited for.
         qint64 queuedBytes = 4 * 1024 * 1024;
+        // A client that sends nothing and answers no ping (one every
+        // kPingMs) for this long is closed; one that reads slowly answers
+        // when it reads, and is never closed for being slow.
+        int idleMs = 30000;
     };
+    static constexpr int kPingMs = 10000;
 
     // `name` is what clients show ("Roomba Dashboard"). The rate limit runs on `clock`.
     explicit Server(const QString &name, oilink::Clock &clock = oilink::Clock::steady(), QObject *parent = nullptr);
@@ -121,6 +145,14 @@ public:
     // serverInfo again to every client, so that they start afresh.
     void startSession();
     QString sessionId() const { return m_sessionId; }
+    // A source with a time range: the playbackControl capability, the range
+    // in serverInfo (said again to every client); nullopt withdraws it.
+    void setPlaybackRange(std::optional<std::pair<quint64, quint64>> rangeNs);
+    bool hasPlaybackControl() const { return m_playbackRange.has_value(); }
+    // To every client: an answer to playbackRequested, or a change of its own.
+    void sendPlaybackState(const PlaybackState &state);
+
+
     // How many messages were made (encode() called), for the benchmarks and tests.
     quint64 encodeCount() const { return m_encodes; }
 
@@ -129,6 +161,8 @@ signals:
     // A client was refused or dropped; `why` says what it did.
     void clientRefused(const QString &peer, const QString &why);
     void clientDropped(const QString &peer, const QString &why);
+    // A client's timeline asked for this (with playback control only).
+    void playbackRequested(const foxglove::PlaybackRequest &request);
 
 private:
     struct Client;
@@ -140,6 +174,9 @@ private:
     void endHandshake(QTcpSocket *socket);
     void onWebSocket();
     void onText(Client *client, const QString &text);
+    void onBinary(Client *client, const QByteArray &message);
+    void pingOrClose();
+    void sendTimeFirst(Client *client, quint64 timeNs);
     void subscribe(Client *client, const QJsonArray &subscriptions);
     void forget(Client *client);
     void reap();
@@ -175,7 +212,12 @@ private:
     // The time message, limited as a Latest channel is.
     qint64 m_timeSentNs = std::numeric_limits<qint64>::min();
     std::optional<quint64> m_timePending;
+    std::optional<quint64> m_lastTimeNs; // the newest time set, sent or not
     oilink::ClockTimer m_timeTimer;
+    oilink::ClockTimer m_pingTimer;
+    std::optional<std::pair<quint64, quint64>> m_playbackRange;
 };
 
 } // namespace foxglove
+
+Q_DECLARE_METATYPE(foxglove::PlaybackRequest)

@@ -37,7 +37,9 @@ QString profileName(oi::ProfileId id)
 ConnectionDoctor::ConnectionDoctor(Transport &transport, std::optional<oi::ProfileId> profile, int baud,
                                    Clock &clock, QObject *parent)
     : QObject(parent), m_transport(transport), m_askedProfile(profile), m_askedBaud(baud),
-      m_pulser(new BrcPulser(clock, this)), m_clock(clock), m_timer(clock, this)
+      m_pulser(new BrcPulser(clock, this)), m_clock(clock),
+      m_exchange(clock, [this](const std::vector<oi::OiCommand> &commands) { return write(commands); }, this),
+      m_timer(clock, this)
 {
     qRegisterMetaType<oilink::ConnectionDoctor::Report>();
     connect(m_pulser, &BrcPulser::awake, this, [this] {
@@ -81,6 +83,7 @@ void ConnectionDoctor::start()
     m_onOtherLine = false;
     m_textBaud.reset();
     m_textLine.clear();
+    m_foundSci = false;
     const int asked = m_askedBaud > 0 ? m_askedBaud : m_askedProfile ? oi::profile(*m_askedProfile).defaultBaud : 0;
     m_bauds = candidateBauds(asked);
     m_hasBaud = m_transport.setBaud(m_bauds.front());
@@ -101,14 +104,12 @@ void ConnectionDoctor::listenAt(int baud)
 
 void ConnectionDoctor::feed(const QByteArray &data)
 {
-    if (!m_listening)
+    // Heard only while a question (or the drain before it) waits.
+    if (!m_exchange.isWaiting())
         return;
     m_heard += data.size();
     m_textReader.feed({reinterpret_cast<const std::uint8_t *>(data.constData()), std::size_t(data.size())});
-    // A copy, never a share: `data` is also on its way to the window's thread.
-    m_received.append(data.constData(), data.size());
-    if (m_expected > 0 && m_received.size() >= m_expected && m_timer.remainingMs() > kQuietMs)
-        m_timer.start(kQuietMs); // extra bytes in this time mean garbage
+    m_exchange.feed(data);
 }
 
 void ConnectionDoctor::after(int ms, std::function<void()> then)
@@ -117,23 +118,20 @@ void ConnectionDoctor::after(int ms, std::function<void()> then)
     m_timer.start(ms);
 }
 
-void ConnectionDoctor::write(const std::vector<oi::OiCommand> &commands)
+bool ConnectionDoctor::write(const std::vector<oi::OiCommand> &commands)
 {
     const QByteArray data = ProfileProbe::handshakeBytes(commands);
-    if (m_transport.write(data))
-        emit sent(data, commands);
+    if (!m_transport.write(data))
+        return false;
+    emit sent(data, commands);
+    return true;
 }
 
+// Extra bytes in the settle time mean garbage: the answer is judged by all that came.
 void ConnectionDoctor::ask(const oi::OiCommand &question, qsizetype expected, Answer then)
 {
-    m_received.clear();
-    m_expected = expected;
-    m_listening = true;
-    write({question});
-    after(kReplyTimeoutMs, [this, then = std::move(then)] {
-        m_listening = false;
-        then(m_received);
-    });
+    m_exchange.ask({question}, Exchange::Expect::bytes(expected, kQuietMs), kReplyTimeoutMs,
+                   [then = std::move(then)](Exchange::Outcome, const QByteArray &received) { then(received); });
 }
 
 QString ConnectionDoctor::baudName(int baud) const
@@ -145,15 +143,16 @@ QString ConnectionDoctor::baudName(int baud) const
 // when asked to.
 void ConnectionDoctor::askMode(bool withStart, std::function<void(bool)> then)
 {
-    write(ProfileProbe::pauseCommands(withStart));
+    const auto drained = [this, then = std::move(then)](Exchange::Outcome, const QByteArray &) {
+        constexpr qsizetype kBytes = ProfileProbe::kFirstAnswerBytes;
+        ask(ProfileProbe::firstQuestionCommand(), kBytes, [then](const QByteArray &answer) {
+            then(ProfileProbe::isFirstAnswer(ProfileProbe::answerOf(answer, kBytes)));
+        });
+    };
+    // What comes meanwhile is heard (the robot's text), then let go.
+    m_exchange.ask(ProfileProbe::pauseCommands(withStart), Exchange::Expect::nothing(), kDrainMs, drained);
     if (withStart)
         emit startSent();
-    m_listening = true;
-    m_expected = 0;
-    after(kDrainMs, [this, then = std::move(then)] {
-        ask(ProfileProbe::modeQuestionCommand(), 2,
-            [then](const QByteArray &answer) { then(ProfileProbe::isModeAnswer(ProfileProbe::answerOf(answer, 2))); });
-    });
 }
 
 void ConnectionDoctor::tryBaud(qsizetype index)
@@ -332,46 +331,64 @@ void ConnectionDoctor::concludeSilent()
                 "BRC there (lift it off the dock, or press Clean)."));
 }
 
+// It answers Sensors 0, which the Open Interface and the older SCI share:
+// packet 35 tells them apart, then group 101 the Create from the others.
 void ConnectionDoctor::answered(int baud, Finding cause)
 {
     m_report.baud = baud;
-    const oi::PacketGroup *group = oi::profile(oi::ProfileId::Create2).group(kRoombaGroup);
-    ask({oi::Command::Sensors, {kRoombaGroup}, {}}, group->bytes, [this, baud, cause, group](const QByteArray &answer) {
-        const bool roomba = ProfileProbe::answerOf(answer, group->bytes).size() == group->bytes;
-        const oi::ProfileId found = roomba ? oi::ProfileId::Create2 : oi::ProfileId::Create1;
-        m_report.profile = found;
-        step(roomba ? tr("It answers Sensors 101: a Roomba 500 or a Create 2 (they answer alike).")
-                    : tr("It has no packet group 101: a Create."));
-        const int askedBaud = m_askedBaud > 0 ? m_askedBaud : m_askedProfile ? oi::profile(*m_askedProfile).defaultBaud : 0;
-        if (cause == Finding::WokeOnOtherLine) {
-            const BrcLine line = m_transport.brcLine();
-            m_report.wakeLine = line;
-            const std::string_view name = oi::brcLineName(line);
-            conclude(cause, tr("The wake pulse works on %1, not %2: the cable carries the robot's BRC pin on %1. "
-                               "Set the wake line to %1 (--brc-line %3).")
-                                .arg(lineWords(line), lineWords(m_wakeLine),
-                                     QString::fromUtf8(name.data(), qsizetype(name.size()))));
-        } else if (cause == Finding::WokeAfterPulse) {
-            conclude(cause, baud > 0 ? tr("The robot was asleep; a BRC pulse woke it, and it talks at %1 baud.").arg(baud)
-                                     : tr("The robot was asleep; a BRC pulse woke it."));
-        } else if (cause == Finding::Baud19200AfterPulses) {
-            conclude(cause, tr("After three BRC pulses the robot now talks at 19200 baud: set the baud to 19200."));
-        } else if (m_hasBaud && askedBaud > 0 && baud != askedBaud) {
-            conclude(Finding::WrongBaud, tr("Wrong baud: the robot answers at %1 baud, not %2.").arg(baud).arg(askedBaud));
-        } else if (m_askedProfile && (*m_askedProfile == oi::ProfileId::Create1) == roomba) {
-            conclude(Finding::OtherProfile, tr("The robot answers as a %1, not as the %2 the connection names.")
-                                                .arg(roomba ? tr("Roomba 500 or Create 2") : profileName(found),
-                                                     profileName(*m_askedProfile)));
-        } else if (!m_askedProfile && roomba) {
-            conclude(Finding::RoombaOrCreate2, tr("The robot answers at %1 as a Roomba 500 or a Create 2. The "
-                                                  "two answer alike but read their wheel encoders the other way "
-                                                  "round: name which it is.")
-                                                   .arg(baudName(baud)));
-        } else {
-            conclude(Finding::Healthy, tr("The robot answers at %1 as a %2.")
-                                           .arg(baudName(baud), profileName(m_askedProfile.value_or(found))));
+    ask(ProfileProbe::modeQuestionCommand(), 1, [this, baud, cause](const QByteArray &mode) {
+        if (!ProfileProbe::isModeAnswer(ProfileProbe::answerOf(mode, 1))) {
+            step(tr("It answers Sensors 0 but has no packet 35 (OI mode): a Roomba 400 series, which speaks the "
+                    "older SCI (2005)."));
+            identified(baud, cause, oi::ProfileId::Roomba400);
+            return;
         }
+        const oi::PacketGroup *group = oi::profile(oi::ProfileId::Create2).group(kRoombaGroup);
+        ask({oi::Command::Sensors, {kRoombaGroup}, {}}, group->bytes, [this, baud, cause, group](const QByteArray &answer) {
+            const bool roomba = ProfileProbe::answerOf(answer, group->bytes).size() == group->bytes;
+            step(roomba ? tr("It answers Sensors 101: a Roomba 500 or a Create 2 (they answer alike).")
+                        : tr("It has no packet group 101: a Create."));
+            identified(baud, cause, roomba ? oi::ProfileId::Create2 : oi::ProfileId::Create1);
+        });
     });
+}
+
+void ConnectionDoctor::identified(int baud, Finding cause, oi::ProfileId found)
+{
+    m_report.profile = found;
+    m_foundSci = oi::profile(found).polled();
+    const bool roomba = ProfileProbe::isAmbiguous(found);
+    // The Roomba 500 and the Create 2 answer alike: either name fits such an answer.
+    const bool asNamed = m_askedProfile && oi::profile(*m_askedProfile).answersAlike(oi::profile(found));
+    const int askedBaud = m_askedBaud > 0 ? m_askedBaud : m_askedProfile ? oi::profile(*m_askedProfile).defaultBaud : 0;
+    if (cause == Finding::WokeOnOtherLine) {
+        const BrcLine line = m_transport.brcLine();
+        m_report.wakeLine = line;
+        const std::string_view name = oi::brcLineName(line);
+        conclude(cause, tr("The wake pulse works on %1, not %2: the cable carries the robot's BRC pin on %1. "
+                           "Set the wake line to %1 (--brc-line %3).")
+                            .arg(lineWords(line), lineWords(m_wakeLine),
+                                 QString::fromUtf8(name.data(), qsizetype(name.size()))));
+    } else if (cause == Finding::WokeAfterPulse) {
+        conclude(cause, baud > 0 ? tr("The robot was asleep; a BRC pulse woke it, and it talks at %1 baud.").arg(baud)
+                                 : tr("The robot was asleep; a BRC pulse woke it."));
+    } else if (cause == Finding::Baud19200AfterPulses) {
+        conclude(cause, tr("After three BRC pulses the robot now talks at 19200 baud: set the baud to 19200."));
+    } else if (m_hasBaud && askedBaud > 0 && baud != askedBaud) {
+        conclude(Finding::WrongBaud, tr("Wrong baud: the robot answers at %1 baud, not %2.").arg(baud).arg(askedBaud));
+    } else if (m_askedProfile && !asNamed) {
+        conclude(Finding::OtherProfile, tr("The robot answers as a %1, not as the %2 the connection names.")
+                                            .arg(roomba ? tr("Roomba 500 or Create 2") : profileName(found),
+                                                 profileName(*m_askedProfile)));
+    } else if (!m_askedProfile && roomba) {
+        conclude(Finding::RoombaOrCreate2, tr("The robot answers at %1 as a Roomba 500 or a Create 2. The "
+                                              "two answer alike but read their wheel encoders the other way "
+                                              "round: name which it is.")
+                                               .arg(baudName(baud)));
+    } else {
+        conclude(Finding::Healthy, tr("The robot answers at %1 as a %2.")
+                                       .arg(baudName(baud), profileName(m_askedProfile.value_or(found))));
+    }
 }
 
 void ConnectionDoctor::conclude(Finding finding, const QString &summary)
@@ -379,14 +396,19 @@ void ConnectionDoctor::conclude(Finding finding, const QString &summary)
     m_running = false;
     m_timer.stop();
     m_onTimer = nullptr;
-    m_listening = false;
+    m_exchange.cancel();
     m_pulser->setTransport(nullptr);
     // The link pulses on from here: on the line found to work, else on its own.
     if (finding != Finding::WokeOnOtherLine)
         m_transport.setBrcLine(m_wakeLine, m_transport.brcAssertedIsLow());
     m_report.finding = finding;
     m_report.summary = summary;
-    if (m_textBaud && finding != Finding::TextOnDock)
+    if (m_textBaud && finding != Finding::TextOnDock && m_foundSci)
+        m_report.summary += QLatin1Char(' ')
+                            + tr("It printed \"%1\": the text a Roomba 400 prints as it starts up, not a charging "
+                                 "status.")
+                                  .arg(m_textLine);
+    else if (m_textBaud && finding != Finding::TextOnDock)
         m_report.summary += QLatin1Char(' ')
                             + tr("It prints its charging status (\"%1\"): it is on its dock.").arg(m_textLine);
     emit finished(m_report);

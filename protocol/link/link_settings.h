@@ -42,11 +42,19 @@ struct LinkSettings {
     int baud = 0;          // 0 = the profile's default
     QList<int> streamPackets; // empty = the largest set that fits the baud
     // Which robot the in-process virtual robot plays (TransportKind::Virtual).
-    oi::ProfileId virtualRobot = oi::ProfileId::Create2;
+    // The robot the virtual robot plays when no profile is named.
+    static constexpr oi::ProfileId kAutoVirtualRobot = oi::ProfileId::Create2;
+    oi::ProfileId virtualRobot = kAutoVirtualRobot;
     std::uint32_t virtualSeed = 1;
     // The in-process virtual robot's real wheels, which may differ from the
     // documents' on purpose (to practise calibrating).
     oi::WheelGeometry virtualWheels;
+    // The in-process virtual robot's pack (sim::VirtualRobot::Battery): the
+    // share of its capacity lost, and its internal resistance (a new pack's 250 mΩ).
+    double virtualBatteryFadePercent = 0;
+    double virtualBatteryResistanceMohm = 250;
+    // How full it starts, in % of what it holds (90: as a robot off its charger).
+    double virtualBatteryChargePercent = 90;
     // What only some robots do, played by the in-process virtual robot:
     // firmware release-3.2.x sleeping after 5 minutes in Passive whatever
     // the BRC pulses, and a Wi-Fi Roomba 600 reporting its mode (packet 35)
@@ -58,6 +66,9 @@ struct LinkSettings {
     // listens (slow robots in the field take up to 2 s).
     BrcLine virtualBrcWiredTo = BrcLine::Rts;
     int virtualWakeMs = oi::RobotProfile::kWakeMs;
+    // The in-process virtual robot behind a Bluetooth adapter or Wi-Fi
+    // bridge that hands on its bytes in bunches this many ms apart (0: none).
+    int virtualBunchMs = 0;
     // This robot is known to report its mode one too high (learned earlier
     // and remembered with it): the link corrects packet 35 from the first
     // frame instead of waiting to see it after a Start.
@@ -83,6 +94,10 @@ struct LinkSettings {
     // Without streaming: whether finding the profile may send Start to a
     // silent robot (which leaves Safe or Full mode).
     bool startIfSilent = true;
+    // The moment on the link's clock its read times count from (the
+    // session's connection, whose epoch time it keeps): without it, the
+    // moment the link opens, which comes a thread hop later.
+    std::optional<qint64> readTimeZeroNs;
 
     // "/dev/ttyUSB0", "raspberrypi:3333", "virtual Create 2": for messages.
     QString describe() const;

@@ -5,6 +5,7 @@
 #include "replay_transport.h"
 
 #include <QByteArray>
+#include <QCoreApplication>
 #include <QList>
 
 namespace oilink {
@@ -20,6 +21,14 @@ QString linkStateName(LinkState state)
     case LinkState::Reconnecting: return QStringLiteral("reconnecting");
     }
     return QString();
+}
+
+QString bunchedLinkText(const LinkStats &stats)
+{
+    if (stats.bunchedEveryMs <= 0)
+        return {};
+    return QCoreApplication::translate("oilink::RobotLink", "bunched link (frames every %1 s)")
+        .arg(stats.bunchedEveryMs / 1000.0, 0, 'f', 1);
 }
 
 void registerLinkMetaTypes()

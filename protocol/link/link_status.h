@@ -34,10 +34,16 @@ struct LinkStats {
     quint64 bytesReceived = 0;
     quint64 bytesSent = 0;
     quint32 reconnects = 0;          // times the port came back after it was lost
+    int bunchedEveryMs = 0;          // frames come on time but in bunches this far apart (FrameArrivals); 0: one by one
+    bool switchedOff = false;        // silent since its power button was held: Wake (RobotLink::wake) switches it on
     QDateTime lastFrameTime;         // invalid until the first good frame
 
     friend bool operator==(const LinkStats &, const LinkStats &) = default;
 };
+
+// "bunched link (frames every 0.3 s)" for a link whose frames come in
+// bunches (LinkStats::bunchedEveryMs), else empty.
+QString bunchedLinkText(const LinkStats &stats);
 
 // A recording of the link's bytes (RobotLink::startRecording).
 struct RecordingStatus {

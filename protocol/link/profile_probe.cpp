@@ -9,9 +9,11 @@
 namespace oilink {
 
 namespace {
-constexpr int kModeAttempts = 2;
+constexpr int kAttempts = 2;
 constexpr std::uint8_t kModeMax = 3;
 constexpr std::uint8_t kBumpBitsUnused = 0xE0;
+constexpr qsizetype kChargingStateAt = 16; // packet 21 in group 0
+constexpr std::uint8_t kChargingStateMax = 5;
 } // namespace
 
 QByteArray ProfileProbe::handshakeBytes(const std::vector<oi::OiCommand> &commands)
@@ -23,6 +25,12 @@ QByteArray ProfileProbe::handshakeBytes(const std::vector<oi::OiCommand> &comman
                    : QByteArray();
 }
 
+std::vector<oi::OiCommand> ProfileProbe::finishingStarts()
+{
+    // The opcode has come already: at most the rest of the longest command is owed.
+    return std::vector<oi::OiCommand>(oi::kLongestCommandBytes - 1, oi::OiCommand{oi::Command::Start, {}, {}});
+}
+
 std::vector<oi::OiCommand> ProfileProbe::pauseCommands(bool withStart)
 {
     std::vector<oi::OiCommand> out;
@@ -32,10 +40,21 @@ std::vector<oi::OiCommand> ProfileProbe::pauseCommands(bool withStart)
     return out;
 }
 
+bool ProfileProbe::isFirstAnswer(const QByteArray &answer)
+{
+    if (answer.size() != kFirstAnswerBytes)
+        return false;
+    const auto at = [&](qsizetype i) { return static_cast<std::uint8_t>(answer.at(i)); };
+    constexpr qsizetype kWall = 1, kVirtualWall = 6; // packets 8..13: one bit each
+    for (qsizetype i = kWall; i <= kVirtualWall; ++i)
+        if (at(i) > 1)
+            return false;
+    return (at(0) & kBumpBitsUnused) == 0 && at(kChargingStateAt) <= kChargingStateMax;
+}
+
 bool ProfileProbe::isModeAnswer(const QByteArray &answer)
 {
-    const auto at = [&](qsizetype i) { return static_cast<std::uint8_t>(answer.at(i)); };
-    return answer.size() == 2 && at(0) >= 1 && at(0) <= kModeMax && (at(1) & kBumpBitsUnused) == 0;
+    return answer.size() == 1 && std::uint8_t(answer.at(0)) >= 1 && std::uint8_t(answer.at(0)) <= kModeMax;
 }
 
 QByteArray ProfileProbe::answerOf(const QByteArray &received, qsizetype size)
@@ -57,10 +76,9 @@ bool ProfileProbe::dependsOnRoombaOrCreate2(int id)
 }
 
 ProfileProbe::ProfileProbe(Transport &transport, QList<int> bauds, Clock &clock, QObject *parent)
-    : QObject(parent), m_transport(transport), m_bauds(std::move(bauds)), m_timer(clock, this)
+    : QObject(parent), m_transport(transport), m_bauds(std::move(bauds)),
+      m_exchange(clock, [this](const std::vector<oi::OiCommand> &commands) { return send(commands); }, this)
 {
-    m_timer.setSingleShot(true);
-    connect(&m_timer, &ClockTimer::timeout, this, &ProfileProbe::onTimeout);
 }
 
 void ProfileProbe::start()
@@ -71,7 +89,7 @@ void ProfileProbe::start()
 
 void ProfileProbe::cancel()
 {
-    m_timer.stop();
+    m_exchange.cancel();
     m_step = Step::Idle;
 }
 
@@ -87,14 +105,14 @@ void ProfileProbe::tryBaud()
         m_baud = 0;
         m_baudIndex = m_bauds.size(); // one pass only: nothing to change
     }
-    m_modeAttempts = 0;
-    m_received.clear();
+    m_attempts = 0;
     m_step = Step::Draining;
     m_startSent = m_startPolicy == StartPolicy::Always;
-    send(pauseCommands(m_startSent));
+    // What a stream left running sends meanwhile is let drain, and forgotten.
+    m_exchange.ask(pauseCommands(m_startSent), Exchange::Expect::nothing(), kDrainMs,
+                   [this](Exchange::Outcome, const QByteArray &received) { onAnswer(received); });
     if (m_startSent)
         emit startSent();
-    m_timer.start(kDrainMs);
 }
 
 void ProfileProbe::nextBaud()
@@ -103,62 +121,71 @@ void ProfileProbe::nextBaud()
     tryBaud();
 }
 
-void ProfileProbe::send(const std::vector<oi::OiCommand> &commands)
+bool ProfileProbe::send(const std::vector<oi::OiCommand> &commands)
 {
     const QByteArray data = handshakeBytes(commands);
-    if (m_transport.write(data))
-        emit sent(data, commands);
+    if (!m_transport.write(data))
+        return false;
+    emit sent(data, commands);
+    return true;
 }
 
 void ProfileProbe::ask(const oi::OiCommand &question, qsizetype expected, Step step)
 {
-    m_received.clear();
     m_expected = expected;
-    m_settling = false;
     m_step = step;
-    send({question});
-    m_timer.start(kReplyTimeoutMs);
+    m_exchange.ask({question}, Exchange::Expect::bytes(expected, kQuietMs), kReplyTimeoutMs,
+                   [this](Exchange::Outcome, const QByteArray &received) { onAnswer(received); });
 }
 
 void ProfileProbe::feed(const QByteArray &data)
 {
-    if (m_step == Step::Idle)
-        return;
-    m_received += data;
-    if (m_step != Step::Draining && !m_settling && m_received.size() >= m_expected) {
-        m_settling = true;
-        m_timer.start(kQuietMs);
-    }
+    if (m_step != Step::Idle)
+        m_exchange.feed(data);
 }
 
-void ProfileProbe::onTimeout()
+// Whatever the outcome: the answer is judged by what came.
+void ProfileProbe::onAnswer(const QByteArray &received)
 {
     switch (m_step) {
     case Step::Idle:
         return;
     case Step::Draining:
-        ask(modeQuestionCommand(), 2, Step::AskMode);
+        ask(firstQuestionCommand(), kFirstAnswerBytes, Step::AskFirst);
         return;
-    case Step::AskMode: {
-        if (const QByteArray answer = answerOf(m_received, 2); isModeAnswer(answer)) {
-            m_mode = static_cast<oi::OiMode>(answer.at(0));
-            const oi::PacketGroup *group = oi::profile(oi::ProfileId::Create2).group(101);
-            ask({oi::Command::Sensors, {101}, {}}, group->bytes, Step::AskRoombaGroup);
+    case Step::AskFirst:
+        if (isFirstAnswer(answerOf(received, kFirstAnswerBytes))) {
+            m_attempts = 0;
+            ask(modeQuestionCommand(), 1, Step::AskMode);
         } else if (!m_startSent && m_startPolicy == StartPolicy::IfSilent) {
             // Silent: Off mode, or the wrong baud. Start opens the interface.
             m_startSent = true;
             send({{oi::Command::Start, {}, {}}});
             emit startSent();
-            ask(modeQuestionCommand(), 2, Step::AskMode);
-        } else if (++m_modeAttempts < kModeAttempts) {
-            ask(modeQuestionCommand(), 2, Step::AskMode);
+            ask(firstQuestionCommand(), kFirstAnswerBytes, Step::AskFirst);
+        } else if (++m_attempts < kAttempts) {
+            ask(firstQuestionCommand(), kFirstAnswerBytes, Step::AskFirst);
         } else {
             nextBaud();
         }
         return;
+    case Step::AskMode: {
+        if (const QByteArray answer = answerOf(received, 1); isModeAnswer(answer)) {
+            m_mode = static_cast<oi::OiMode>(answer.at(0));
+            const oi::PacketGroup *group = oi::profile(oi::ProfileId::Create2).group(101);
+            ask({oi::Command::Sensors, {101}, {}}, group->bytes, Step::AskRoombaGroup);
+        } else if (++m_attempts < kAttempts) {
+            ask(modeQuestionCommand(), 1, Step::AskMode);
+        } else {
+            // It answers Sensors 0 but knows no packet 35: the 2005 SCI.
+            // Its mode is not reported; Start has made it Passive.
+            m_mode = m_startSent ? oi::OiMode::Passive : oi::OiMode::Off;
+            finish(oi::ProfileId::Roomba400);
+        }
+        return;
     }
     case Step::AskRoombaGroup:
-        finish(answerOf(m_received, m_expected).size() == m_expected ? oi::ProfileId::Create2 : oi::ProfileId::Create1);
+        finish(answerOf(received, m_expected).size() == m_expected ? oi::ProfileId::Create2 : oi::ProfileId::Create1);
         return;
     }
 }
@@ -166,7 +193,7 @@ void ProfileProbe::onTimeout()
 void ProfileProbe::finish(oi::ProfileId profile)
 {
     m_step = Step::Idle;
-    m_timer.stop();
+    m_exchange.cancel();
     emit detected(profile, m_baud);
 }
 

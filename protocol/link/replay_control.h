@@ -19,12 +19,17 @@ struct ReplayCommand {
     double speed = 1.0; // SetSpeed
     qint64 timeUs = 0;  // Seek
     int frames = 1;     // Step: +1 next frame, -1 previous
+    // Seek: to the first frame at or after timeUs rather than the state at
+    // it (the last frame at or before), for a viewer whose timeline asks
+    // for the next message from a time.
+    bool atOrAfter = false;
 
     static ReplayCommand play() { return {Kind::Play}; }
     static ReplayCommand pause() { return {Kind::Pause}; }
     static ReplayCommand setSpeed(double speed) { return {Kind::SetSpeed, speed}; }
     static ReplayCommand seek(qint64 timeUs) { return {Kind::Seek, 1.0, timeUs}; }
     static ReplayCommand step(int frames) { return {Kind::Step, 1.0, 0, frames}; }
+    static ReplayCommand seekAtOrAfter(qint64 timeUs) { return {Kind::Seek, 1.0, timeUs, 1, true}; }
 };
 
 // Where a replay is. Sent on every command and a few times a second while it

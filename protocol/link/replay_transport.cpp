@@ -66,8 +66,16 @@ void ReplayTransport::controlReplay(const ReplayCommand &command)
             m_speed = command.speed;
         break;
     case ReplayCommand::Kind::Seek:
-        seek(std::clamp<qint64>(command.timeUs, 0, m_recording->durationUs()));
+    {
+        qint64 timeUs = std::clamp<qint64>(command.timeUs, 0, m_recording->durationUs());
+        const auto &frames = m_recording->frames();
+        const auto next = std::lower_bound(frames.begin(), frames.end(), timeUs,
+                                           [](const Recording::Frame &f, qint64 t) { return f.timeUs < t; });
+        if (command.atOrAfter && next != frames.end())
+            timeUs = next->timeUs;
+        seek(timeUs);
         break;
+    }
     case ReplayCommand::Kind::Step: {
         pause();
         const int count = static_cast<int>(m_recording->frames().size());

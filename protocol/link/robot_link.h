@@ -2,6 +2,8 @@
 #pragma once
 
 #include "connection_report.h"
+#include "exchange.h"
+#include "frame_arrivals.h"
 #include "link_clock.h"
 #include "link_settings.h"
 #include "link_status.h"
@@ -44,7 +46,7 @@ class Transport;
 // a good frame), reconnects with backoff when the port goes away, and on
 // close() leaves the robot stopped and in Passive mode.
 //
-// It lives on a worker thread (see RobotLinkThread) but works on any thread
+// It lives on a worker thread (see LocalRobotPort) but works on any thread
 // with an event loop; everything it emits is a value type.
 class RobotLink : public QObject {
     Q_OBJECT
@@ -54,6 +56,9 @@ public:
     // in the settings. transports::transportFactory() knows every kind.
     using TransportFactory = oilink::TransportFactory;
 
+    // Stale after this long without a good frame; on a link that hands
+    // frames over in bunches (FrameArrivals), after the gap between bunches
+    // and this.
     static constexpr int kStaleAfterMs = 100;
     static constexpr int kNoDataAfterMs = 1000;
     static constexpr int kFirstBackoffMs = 100;
@@ -100,8 +105,11 @@ public slots:
     void send(const std::vector<oi::OiCommand> &commands);
     // Sensors (142) for one id, Query List (149) for several. While the
     // stream runs it is paused around the query. The answer comes as
-    // sensorReply(), or an error after 500 ms.
-    void querySensors(const QList<int> &packetIds);
+    // sensorReply(), or an error after 500 ms. A query the program makes for
+    // itself (`internal`, e.g. a Create's angle) fails with
+    // sensorQueryFailed() alone: its asker asks again, and the user, who
+    // asked nothing, is shown no error.
+    void querySensors(const QList<int> &packetIds, bool internal = false);
     // Show Script (154, Create only): the script the robot holds, as
     // scriptReply() with the script's bytes (without the length byte), or an
     // error after 500 ms. Queued with the sensor queries, so that it too never
@@ -113,6 +121,11 @@ public slots:
     // (at the baud found) and streams. Steps as connectionCheckStep(), the
     // finding as connectionChecked().
     void checkConnection();
+    // Pulses the BRC pin (the Roomba 400's Device Detect) now, whatever the
+    // link concluded: a robot switched off at its power button is switched
+    // on, a sleeping one wakes, and the link greets it and streams (or
+    // polls) again once it listens. Says why where no pulse can go.
+    void wake();
     // Records every byte both ways, from now until stopRecording() or
     // close(), across reconnects. Reports through recordingStatus().
     void startRecording(const QString &path);
@@ -157,14 +170,30 @@ signals:
     // as words, not counted as discarded bytes.
     void robotText(const QString &line);
     // The bytes written and the typed commands they are (the handshake's too),
-    // for a reader that must know what was asked without decoding.
-    void rawBytesSent(const QByteArray &bytes, const std::vector<oi::OiCommand> &commands);
-    void rawBytesReceived(const QByteArray &bytes);
+    // for a reader that must know what was asked without decoding; and the
+    // bytes read. Each with its time on the link's read clock (as a frame's
+    // readSeconds), whenever a reader gets them.
+    void rawBytesSent(const QByteArray &bytes, const std::vector<oi::OiCommand> &commands, double sentSeconds);
+    void rawBytesReceived(const QByteArray &bytes, double readSeconds);
     void errorOccurred(const QString &message);
     void recordingStatus(const oilink::RecordingStatus &status);
     void replayStatus(const oilink::ReplayStatus &status);
 
 private:
+    // Where the link is with the port and the robot, one phase at a time.
+    // Beside it: the public LinkState (a stream that stalls reads Stale),
+    // and the query queue's QueryPhase, as a query may come in any phase.
+    enum class Phase : std::uint8_t {
+        Closed,       // not asked to connect, or closed
+        Opening,      // the transport opens, or waits to open again
+        Opened,       // open, not greeted yet: a sleeping robot is being woken
+        Greeting,     // the finishing Starts drain, the probe asks, the profile is put to use
+        Ready,        // without streaming: commands and queries can go
+        Streaming,    // Start and Stream (or the polls) went: frames come, or are awaited
+        WakingStream, // the stream stopped: a wake pulse went, Start and Stream follow
+        SwitchedOff,  // the stream stopped right after the power button: no wake pulse
+        Checking,     // the connection doctor has the port
+    };
     enum class QueryPhase { None, Pausing, Waiting, Checking };
     // A request whose reply has no framing: Sensors / Query List (the parser
     // reads those), or Show Script (read here: a length byte, then the
@@ -172,9 +201,19 @@ private:
     struct Request {
         enum class Kind { Sensors, Script, Doctor } kind = Kind::Sensors;
         std::vector<std::uint8_t> packetIds;
+        bool internal = false; // see querySensors()
     };
 
     void setState(LinkState state);
+    // The port is open (whatever is being done with it).
+    bool portOpen() const { return m_phase != Phase::Closed && m_phase != Phase::Opening; }
+    // Start and Stream (or the polls) went on this port, and the doctor has not taken it.
+    bool streamRequested() const
+    {
+        return m_phase == Phase::Streaming || m_phase == Phase::WakingStream || m_phase == Phase::SwitchedOff;
+    }
+    // A frame came since Start and Stream went.
+    bool framesSinceStreamStart() const { return m_arrivals.frames() != m_framesAtStreamStart; }
     void reportError(const QString &message, bool onceUntilStreaming = true);
     void openTransport();
     Transport *makeTransport();
@@ -182,6 +221,10 @@ private:
     void scheduleReconnect();
     void onTransportOpened();
     void greetRobot();
+    // Before any question on a port just opened: Starts enough to finish a
+    // command an earlier program left half sent, then what they bring back
+    // is dropped. False when greetRobot() goes on at once.
+    bool bringInStep();
     void onTransportError(const QString &message);
     void onTransportClosed();
     void onBytes(const QByteArray &bytes);
@@ -189,10 +232,18 @@ private:
     void onProbeFailed();
     void useProfile();
     void startStream();
+    // A robot without Stream (the SCI): Sensors group 0 every
+    // RobotProfile::kPollMs, each answer read as a frame; a question left
+    // unanswered is asked again at the next tick.
+    void startPolling();
+    void onPollTick();
+    bool polling() const { return streamRequested() && m_profile && m_profile->polled(); }
     void rearmStream();
     void onParsed(const oi::SensorSnapshot &snapshot, oi::FrameKind kind);
     void onSnapshotReceived(const oi::SensorSnapshot &snapshot, oi::FrameKind kind);
     void onFrame(const oi::SensorSnapshot &frame);
+    // Now on the read clock: the recording's time for a replay.
+    double readSecondsNow() const;
     void onReply(const oi::SensorSnapshot &reply);
     void enqueue(Request request);
     bool takeScriptReply(const QByteArray &bytes);
@@ -201,6 +252,8 @@ private:
     void onRobotAwake();
     // Even a slow robot listens now: ask again for what it may have missed.
     void onWakeTimeOver();
+    // A frame came since the stream was last judged stopped: it was late, not stopped.
+    bool framesSinceWake() const;
     // A stream that ran has stopped: a robot that sleeps gets a wake pulse,
     // and Start and Stream once it has had time to wake. False where no
     // pulse can go (the Create, or the pin out of reach).
@@ -210,6 +263,8 @@ private:
     // writes them, with their bytes, to the transport.
     // `asked`: the user's commands (send()), not the link's own exchanges.
     bool writeCommands(const std::vector<oi::OiCommand> &commands, bool asked = false);
+    // Reset went: the robot talks at its profile's default baud again.
+    void followReset();
     // The profile commands are encoded with.
     const oi::RobotProfile &writingProfile() const;
     // Counts, records and shows bytes that went to the robot.
@@ -218,7 +273,9 @@ private:
     void noteStartSent();
     void dropPartialInput();
     void startNextQuery();
+    // The stream paused (or the polls stopped) and drained: the question goes.
     void sendQuery();
+    void onQueryAnswered(const QByteArray &received);
     void onQueryTimeout();
     void startDoctor();
     void onDoctorFinished(const oilink::ConnectionReport &report);
@@ -231,6 +288,8 @@ private:
     QString noDataMessage() const;
     // Why a stream that ran stays silent, in the robot's terms.
     QString stoppedMessage() const;
+    // The stream stopped right after the Clean/Power button was held.
+    bool stoppedAtPowerButton() const;
     void record(recording::RecordKind kind, const QByteArray &bytes);
     void emitRecordingStatus(const QString &error = {});
 
@@ -238,7 +297,7 @@ private:
     TransportFactory m_factory;
     LinkSettings m_settings;
     Transport *m_transport = nullptr;
-    bool m_transportOpen = false;
+    Phase m_phase = Phase::Closed;
     ProfileProbe *m_probe = nullptr;
     BrcPulser *m_brc = nullptr; // wakes the robot and keeps it awake (if it sleeps)
     ConnectionDoctor *m_doctor = nullptr;
@@ -249,19 +308,21 @@ private:
     int m_baud = 0; // as found by the probe or asked for; 0 = the profile's default
     std::vector<int> m_streamIds;
     oi::OiCommand m_streamCommand;
-    bool m_streamRequested = false;
-    bool m_frameSinceStreamStart = false;
-    bool m_wakingStream = false; // a wake pulse for a stream that stopped; Start and Stream follow
+    quint64 m_framesAtStreamStart = 0; // frames counted when Start and Stream went
     bool m_wokeStream = false;   // the link pulsed since the stream stopped
     bool m_rearmedSinceStop = false; // Start and Stream went since the stream stopped
     bool m_probeStartedWaking = false; // the probe asked a robot that may still have been waking
     std::optional<bool> m_lastOnDock; // packet 34's home base, as last streamed
+    FrameArrivals m_arrivals;         // how the frames come: one by one, or in bunches
+    qint64 m_powerHeldMs = -1;        // a frame last read the Clean/Power button held (epoch ms)
+    quint64 m_framesAtWake = 0;       // frames counted when the stream was last judged stopped
     oi::ModeReading m_modeReading;
 
     oi::StreamParser m_parser;
     bool m_feeding = false;
     bool m_resetAfterFeed = false;
     oi::ParserCounters m_counterBase; // counts from before the parser's last reset
+    quint64 m_polledFrames = 0; // answers to the polls, read as frames
 
     LinkState m_state = LinkState::Closed;
     bool m_recovering = false; // lost the port since the last frame
@@ -273,12 +334,13 @@ private:
     ClockTimer m_reconnect;
     int m_backoffMs = kFirstBackoffMs;
     ClockTimer m_probeRetry;
+    ClockTimer m_settle; // what the finishing Starts brought back is dropped until it fires
+    ClockTimer m_poll;   // the next Sensors 0 to a polled robot
+    bool m_pollAsked = false; // a poll's answer is awaited
 
     std::deque<Request> m_queries;
-    QByteArray m_scriptReply; // Show Script's reply as it arrives
     QueryPhase m_queryPhase = QueryPhase::None;
-    ClockTimer m_queryQuiet;   // the paused stream has drained
-    ClockTimer m_queryTimeout;
+    Exchange m_exchange; // the pause before a query, and the query itself
 
     LinkStats m_totals; // bytes, reconnects; the frame counts come from the parser
     qint64 m_lastFrameMs = -1;

@@ -3,6 +3,7 @@
 
 #include <QDeadlineTimer>
 #include <QFileInfo>
+#include <QThread>
 
 namespace oilink {
 
@@ -31,6 +32,8 @@ void SerialTransport::open()
     m_port.setParity(QSerialPort::NoParity);
     m_port.setStopBits(QSerialPort::OneStop);
     m_port.setFlowControl(QSerialPort::NoFlowControl);
+    m_written = 0;
+    m_pseudoTerminal = QFileInfo(m_path).canonicalFilePath().startsWith(QLatin1String("/dev/pts/"));
     if (!m_port.open(QIODevice::ReadWrite)) {
         const QString message = openFailure();
         m_port.clearError();
@@ -67,6 +70,8 @@ void SerialTransport::close()
 {
     m_pathCheck.stop();
     m_ptyBrc.reset();
+    if (m_port.isOpen() && m_pseudoTerminal && m_port.bytesToWrite() + m_written > 0)
+        letThePeerRead();
     if (m_port.isOpen())
         m_port.close();
     m_port.clearError();
@@ -74,6 +79,7 @@ void SerialTransport::close()
 
 bool SerialTransport::write(const QByteArray &bytes)
 {
+    m_written += bytes.size();
     return m_port.isOpen() && m_port.write(bytes) == bytes.size();
 }
 
@@ -90,8 +96,20 @@ void SerialTransport::flush(int msecs)
 
 bool SerialTransport::setBaud(int baud)
 {
+    if (m_port.isOpen() && baud != m_baud && m_pseudoTerminal)
+        letThePeerRead();
     m_baud = baud;
     return !m_port.isOpen() || m_port.setBaudRate(baud);
+}
+
+// A pseudo-terminal has no wire: the program at its other end (roomba-sim)
+// reads what was written when it next runs, and hears it at the rate set
+// then. Before the rate changes, or the port closes (which puts back the
+// rate it had), it is given time to read the bytes at the rate they went at.
+void SerialTransport::letThePeerRead()
+{
+    flush(kPeerReadMs);
+    QThread::msleep(kPeerReadMs);
 }
 
 bool SerialTransport::setBrcLow(bool low)

@@ -35,6 +35,9 @@ private:
     void checkPathStillThere();
     void fail(const QString &reason);
     QString openFailure() const;
+    void letThePeerRead();
+
+    static constexpr int kPeerReadMs = 60;
 
     QString m_path;
     int m_baud;
@@ -45,6 +48,8 @@ private:
     // A USB adapter pulled out may not raise a read error at once; its
     // device node vanishing is the surer sign.
     QTimer m_pathCheck;
+    bool m_pseudoTerminal = false; // the robot's side reads when it runs (letThePeerRead)
+    qint64 m_written = 0;          // bytes written since the port opened
 };
 
 } // namespace oilink

@@ -103,6 +103,8 @@ QJsonObject statisticsToJson(const LinkStats &stats)
         o.insert(QLatin1String(k.key), double(stats.*k.field));
     o.insert(QLatin1String("frames_per_second"), std::round(stats.framesPerSecond * 10) / 10);
     o.insert(QLatin1String("reconnects"), double(stats.reconnects));
+    if (stats.bunchedEveryMs > 0)
+        o.insert(QLatin1String("bunched_every_ms"), stats.bunchedEveryMs);
     o.insert(QLatin1String("last_frame"), stats.lastFrameTime.isValid()
                                               ? QJsonValue(stats.lastFrameTime.toString(Qt::ISODateWithMs))
                                               : QJsonValue(QJsonValue::Null));
@@ -127,7 +129,8 @@ std::optional<LinkStats> statisticsFromJson(const QJsonObject &object, QString *
     for (const StatKey &k : kCounters)
         if (!count(k.key, st.*k.field))
             return std::nullopt;
-    if (!count("frames_per_second", st.framesPerSecond) || !count("reconnects", st.reconnects))
+    if (!count("frames_per_second", st.framesPerSecond) || !count("reconnects", st.reconnects)
+        || !count("bunched_every_ms", st.bunchedEveryMs))
         return std::nullopt;
     const QJsonValue last = object.value(QLatin1String("last_frame"));
     if (last.isString())

@@ -4,6 +4,7 @@
 #include "result.h"
 #include "robot_profile.h"
 
+#include <span>
 #include <vector>
 
 namespace oilink {
@@ -32,6 +33,10 @@ namespace oilink {
 // Typical results: Create 2 at 115200 or 57600 gets 100, at 38400 group 6;
 // at 19200 a Create 2 or Roomba 500 gets the encoders' short list (27 of 28).
 std::vector<int> chooseStreamPackets(const oi::RobotProfile &profile, int baud);
+// Whether a stream of these packets (and groups) carries packet `id`.
+bool streamCarries(const oi::RobotProfile &profile, std::span<const int> packets, int id);
+// A Create 1 whose stream leaves out its angle (20), which is then read apart.
+bool readsAngleApart(const oi::RobotProfile &profile, std::span<const int> packets);
 
 // The Stream (148) command for these packets at this baud, or why not: an
 // id the profile lacks, or a frame too big for the baud.

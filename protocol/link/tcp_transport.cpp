@@ -15,7 +15,9 @@ namespace oilink {
 
 namespace {
 constexpr int kConnectTimeoutMs = 5000;
-constexpr qint64 kHangUpWaitMs = 250;
+// A bridge hangs up once it has read our last bytes; on a loaded machine it
+// may take a while, and closing before it has read them can lose them.
+constexpr qint64 kHangUpWaitMs = 1000;
 }
 
 TcpTransport::TcpTransport(const QString &host, quint16 port, QObject *parent)

@@ -77,6 +77,7 @@ QString pascalCase(const QString &key)
 RobotTopics::RobotTopics(const QString &name)
     : robot(name), telemetry('/' + name + "/telemetry"), telemetryRos2('/' + name + "/telemetry_ros2"),
       pose('/' + name + "/pose"), truePose('/' + name + "/true_pose"), transform('/' + name + "/tf"),
+      roomTransform('/' + name + "/room_tf"),
       bytesReceived('/' + name + "/bytes_received"), bytesSent('/' + name + "/bytes_sent"),
       events('/' + name + "/events"), markers('/' + name + "/markers"), odomFrame(name + "/odom"),
       baseFrame(name + "/base_link")
@@ -145,6 +146,18 @@ QByteArray poseInFrameJson(quint64 ns, const QString &frame, const oi::Pose &pos
 {
     return "{\"timestamp\":" + timeJson(ns) + ",\"frame_id\":\"" + frame.toUtf8() + "\",\"pose\":{\"position\":" +
            positionJson(pose) + ",\"orientation\":" + orientationJson(pose) + "}}";
+}
+
+oi::Pose odomInRoom(const oi::Pose &truePose, const oi::Pose &odomPose)
+{
+    // T with T ∘ odom = true: its turn is the difference, its origin the
+    // true position less the odometry's position turned by it.
+    oi::Pose t;
+    t.thetaRad = std::remainder(truePose.thetaRad - odomPose.thetaRad, 2 * M_PI);
+    const double c = std::cos(t.thetaRad), s = std::sin(t.thetaRad);
+    t.xMm = truePose.xMm - (c * odomPose.xMm - s * odomPose.yMm);
+    t.yMm = truePose.yMm - (s * odomPose.xMm + c * odomPose.yMm);
+    return t;
 }
 
 QByteArray frameTransformJson(quint64 ns, const QString &parent, const QString &child, const oi::Pose &pose)

@@ -28,6 +28,7 @@ struct RobotTopics {
     QString pose;          // /r1/pose, in frame r1/odom
     QString truePose;      // /r1/true_pose, in frame room (a virtual robot's)
     QString transform;     // /r1/tf: r1/odom → r1/base_link
+    QString roomTransform; // /r1/room_tf: room → r1/odom (a virtual robot's)
     QString bytesReceived; // /r1/bytes_received (a file only)
     QString bytesSent;     // /r1/bytes_sent (a file only)
     QString events;        // /r1/events
@@ -59,6 +60,10 @@ std::vector<const oi::PacketInfo *> profilePackets(const oi::RobotProfile &profi
 QByteArray poseInFrameJson(quint64 ns, const QString &frame, const oi::Pose &pose);
 // The same pose as the transform `parent` → `child`.
 QByteArray frameTransformJson(quint64 ns, const QString &parent, const QString &child, const oi::Pose &pose);
+// Where the odometry's frame lies in the room, from where the robot truly is
+// and where its odometry puts it at the same moment: a 3D view draws the
+// true pose and the odometry's path together with it.
+oi::Pose odomInRoom(const oi::Pose &truePose, const oi::Pose &odomPose);
 QByteArray logJson(quint64 ns, int level, const QString &message, const QString &name);
 
 // What changed between two frames that a reader of the run wants to find:

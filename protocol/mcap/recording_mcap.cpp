@@ -70,16 +70,18 @@ public:
         m_pose = m_writer.addChannel(poseInFrame, m_topics.pose, json);
         const std::vector<Recording::TruePose> &truePoses = m_recording.truePoses();
         m_truePose = truePoses.empty() ? 0 : m_writer.addChannel(poseInFrame, m_topics.truePose, json);
-        m_transform = m_writer.addChannel(
-            m_writer.addSchema("foxglove.FrameTransform", jsonSchema, frameTransformSchema()),
-            m_topics.transform, json);
+        const quint16 frameTransform = m_writer.addSchema("foxglove.FrameTransform", jsonSchema, frameTransformSchema());
+        m_transform = m_writer.addChannel(frameTransform, m_topics.transform, json);
+        m_roomTransform = truePoses.empty() ? 0 : m_writer.addChannel(frameTransform, m_topics.roomTransform, json);
         const quint16 bytes = m_writer.addSchema("roomba.Bytes", jsonSchema, kBytesSchema);
         m_received = m_writer.addChannel(bytes, m_topics.bytesReceived, json);
         m_sent = m_writer.addChannel(bytes, m_topics.bytesSent, json);
         const quint16 log = m_writer.addSchema("foxglove.Log", jsonSchema, logSchema());
         m_events = m_writer.addChannel(log, m_topics.events, json);
         const QList<RecordingMarker> &marks = m_recording.markers();
-        const quint16 markers = marks.isEmpty() ? 0 : m_writer.addChannel(log, m_topics.markers, json);
+        // Always there, with no message when the recording has no marker: a
+        // layout's markers panel shows an empty log, not a missing topic.
+        const quint16 markers = m_writer.addChannel(log, m_topics.markers, json);
 
         if (!m_writer.writeMetadata("recording", recordingMetadata(m_recording)))
             return false;
@@ -138,7 +140,7 @@ public:
             for (; ok && marker < marks.size() && marks[marker].timeUs <= timeUs; ++marker)
                 ok = writeMarker(markers, marks[marker]);
             for (; ok && truePose < truePoses.size() && truePoses[truePose].timeUs <= timeUs; ++truePose)
-                ok = writeTruePose(truePoses[truePose]);
+                ok = writeTruePose(truePoses[truePose], odometry.pose());
             const quint64 ns = timeNs(timeUs);
             // As the CSV and the dashboard show it: corrected for the firmware.
             oi::SensorSnapshot shown = frame;
@@ -153,7 +155,7 @@ public:
         for (; ok && marker < marks.size(); ++marker)
             ok = writeMarker(markers, marks[marker]);
         for (; ok && truePose < truePoses.size(); ++truePose)
-            ok = writeTruePose(truePoses[truePose]);
+            ok = writeTruePose(truePoses[truePose], odometry.pose());
         return ok;
     }
 
@@ -190,10 +192,20 @@ private:
         }
     }
 
-    // Where the virtual robot truly was, in the room's frame.
-    bool writeTruePose(const Recording::TruePose &p)
+    // Where the virtual robot truly was, in the room's frame. With the first,
+    // where the odometry's frame lies in the room, from the recording's
+    // start, so that a 3D view draws both.
+    bool writeTruePose(const Recording::TruePose &p, const oi::Pose &odomPose)
     {
         const quint64 ns = timeNs(p.timeUs);
+        if (!m_roomPlaced) {
+            m_roomPlaced = true;
+            const quint64 startNs = timeNs(0);
+            if (!m_writer.writeMessage(m_roomTransform, startNs,
+                                       frameTransformJson(startNs, kRoomFrame, m_topics.odomFrame,
+                                                          odomInRoom(p.pose, odomPose))))
+                return false;
+        }
         return m_writer.writeMessage(m_truePose, ns, poseInFrameJson(ns, kRoomFrame, p.pose));
     }
 
@@ -208,7 +220,8 @@ private:
     mcap::Writer &m_writer;
     const RobotTopics m_topics{QString::fromLatin1(kMcapRobot)};
     quint64 m_startNs = 0;
-    quint16 m_telemetry = 0, m_pose = 0, m_truePose = 0, m_transform = 0, m_received = 0, m_sent = 0, m_events = 0;
+    bool m_roomPlaced = false;
+    quint16 m_telemetry = 0, m_pose = 0, m_truePose = 0, m_transform = 0, m_roomTransform = 0, m_received = 0, m_sent = 0, m_events = 0;
     std::size_t m_nextReceived = 0, m_nextSent = 0;
 };
 

@@ -57,10 +57,16 @@ MqttClient::MqttClient(QString clientId, QObject *parent)
     m_noAnswer.setSingleShot(true);
     m_noAnswer.setInterval(kNoAnswerMs);
     connect(&m_noAnswer, &QTimer::timeout, this, [this] {
-        if (!m_connected)
+        if (m_connected)
+            return;
+        if (m_lostAt.isNull())
             emit errorOccurred(tr("No MQTT broker answers at %1: is the broker running there, and are the address "
                                   "and port right? Still trying.")
                                    .arg(m_address.displayUrl()));
+        else
+            emit errorOccurred(tr("The broker at %1 stopped answering at %2: is it still running (a classroom's, on "
+                                  "the teacher's machine), and is this computer still on its network? Still trying.")
+                                   .arg(m_address.displayUrl(), m_lostAt.toString(QStringLiteral("HH:mm:ss"))));
     });
 }
 
@@ -121,6 +127,7 @@ bool MqttClient::connectToBroker(const BrokerAddress &address)
         return fail(tr("The last-will topic %1 is not valid.").arg(m_will.topic));
 
     m_tlsRefusalSaid = false;
+    m_lostAt = {};
     m_noAnswer.start();
     m_stopping = false;
     m_sessionUp = false;
@@ -369,6 +376,8 @@ void MqttClient::handleDisconnected(int rc)
     if (!m_mosq || !m_connected)
         return;
     m_connected = false;
+    m_lostAt = QDateTime::currentDateTime();
+    m_noAnswer.start();
     emit disconnected(rc == 0 ? QString() : tr("lost the connection to %1").arg(m_address.displayUrl()));
 }
 

@@ -8,6 +8,7 @@
 #include <QObject>
 #include <QString>
 #include <QStringList>
+#include <QDateTime>
 #include <QTimer>
 
 #include <atomic>
@@ -54,7 +55,9 @@ public:
     // Starts connecting, and keeps reconnecting until disconnectFromBroker.
     // Returns false, with errorOccurred, for settings the library refuses
     // (a TLS file that cannot be read, for example). A broker that does not
-    // answer within kNoAnswerMs is said so with errorOccurred (the retries go on).
+    // answer within kNoAnswerMs is said so with errorOccurred (the retries go on),
+    // and so is one that was connected and has not answered again kNoAnswerMs
+    // after the connection was lost.
     static constexpr int kNoAnswerMs = 3000;
     bool connectToBroker(const BrokerAddress &address);
     // Says goodbye to the broker (so no will is published), waits for the
@@ -153,7 +156,8 @@ private:
     // Rests the network thread until the tenth of a second is over, if it
     // read its share of it; true if disconnectFromBroker asked it to end.
     bool restIfOverIntake(std::chrono::steady_clock::time_point &windowStart, qint64 &saidAtMs);
-    QTimer m_noAnswer; // says so when no broker has answered soon after connectToBroker
+    QTimer m_noAnswer; // says so when no broker has answered soon after connectToBroker or a lost connection
+    QDateTime m_lostAt; // when the last connection was lost; null: never connected since connectToBroker
     bool m_tlsRefusalSaid = false; // once per connectToBroker
     QList<QPair<QString, int>> m_subscriptions;
     int m_unacknowledged = 0; // subscriptions sent since connecting, not yet acknowledged

@@ -17,10 +17,13 @@ oilink::Transport *createTransport(const oilink::LinkSettings &settings, int bau
     if (settings.transport == oilink::TransportKind::Virtual) {
         auto *transport = new sim::VirtualTransport(settings.virtualRobot, settings.virtualSeed, std::move(room), robot, parent);
         transport->setWheels(settings.virtualWheels);
+        transport->setBattery({settings.virtualBatteryFadePercent, settings.virtualBatteryResistanceMohm},
+                              settings.virtualBatteryChargePercent);
         transport->setQuirks({.sleepsWhilePulsed = settings.virtualSleepsWhilePulsed,
                               .reportsModeOneHigh = settings.virtualModeOneHigh,
                               .brcWiredTo = settings.virtualBrcWiredTo,
-                              .wakeTime = std::chrono::milliseconds(settings.virtualWakeMs)});
+                              .wakeTime = std::chrono::milliseconds(settings.virtualWakeMs),
+                              .bunch = std::chrono::milliseconds(settings.virtualBunchMs)});
         transport->setBrcLine(settings.brcLine, settings.brcAssertedIsLow);
         return transport;
     }

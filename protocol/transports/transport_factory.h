@@ -30,7 +30,7 @@ oilink::Transport *createTransport(const oilink::LinkSettings &settings, int bau
                                    std::shared_ptr<sim::Room> room = {}, sim::RobotId robot = 0,
                                    FleetDirectory *directory = nullptr, QObject *parent = nullptr);
 
-// The same, for RobotLink, RobotLinkThread and the dashboard's RobotSession.
+// The same, for RobotLink, LocalRobotPort and the dashboard's RobotSession.
 // The link passes the baud to open at in the settings.
 oilink::RobotLink::TransportFactory transportFactory(std::shared_ptr<sim::Room> room = {}, sim::RobotId robot = 0,
                                                      FleetDirectory *directory = nullptr);

@@ -3,6 +3,8 @@
 
 #include "real_time_robot.h"
 
+#include <algorithm>
+
 namespace sim {
 
 VirtualTransport::VirtualTransport(oi::ProfileId robot, std::uint32_t seed, std::shared_ptr<Room> room, RobotId id,
@@ -34,6 +36,9 @@ void VirtualTransport::open()
         m_robot = std::make_unique<RealTimeRobot>(oi::profile(m_profile), m_seed);
         m_robot->robot().joinRoom(m_room, m_id);
         m_robot->robot().setWheels(m_wheels);
+        // A pack out of range leaves the new one.
+        if (m_robot->robot().setBattery(m_battery) && m_chargePercent != 90)
+            m_robot->robot().setBatteryChargeMah(30 * std::clamp(m_chargePercent, 0.0, 100.0) * (1 - m_battery.fadePercent / 100));
         m_robot->robot().setQuirks(m_quirks);
         m_robot->setTimeScale(m_timeScale);
         connect(m_robot.get(), &RealTimeRobot::bytesOut, this, &VirtualTransport::robotSaid);

@@ -40,6 +40,13 @@ public:
 
     // The robot's real wheels, from the next open() (LinkSettings::virtualWheels).
     void setWheels(const oi::WheelGeometry &wheels) { m_wheels = wheels; }
+    // The robot's pack and how full it starts (% of what it holds), from the
+    // next open() (LinkSettings::virtualBatteryFadePercent, ...).
+    void setBattery(const VirtualRobot::Battery &battery, double chargePercent = 90)
+    {
+        m_battery = battery;
+        m_chargePercent = chargePercent;
+    }
     // What only some robots do (LinkSettings::virtualSleepsWhilePulsed,
     // virtualModeOneHigh, virtualBrcWiredTo, virtualWakeMs), from the next open().
     void setQuirks(const VirtualRobot::Quirks &quirks) { m_quirks = quirks; }
@@ -58,6 +65,8 @@ private:
     oi::ProfileId m_profile;
     std::uint32_t m_seed;
     oi::WheelGeometry m_wheels;
+    VirtualRobot::Battery m_battery;
+    double m_chargePercent = 90;
     double m_timeScale = 1;
     VirtualRobot::Quirks m_quirks;
     std::shared_ptr<Room> m_room;

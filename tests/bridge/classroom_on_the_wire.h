@@ -17,6 +17,7 @@
 #include "command_encoder.h"
 #include "robot_profile.h"
 
+#include <QDeadlineTimer>
 #include <QDir>
 #include <QMutex>
 #include <QRegularExpression>
@@ -328,14 +329,18 @@ public:
     bool connect() { return m_client.connectToBroker(m_room.as(m_account)) && QTest::qWaitFor([this] { return m_client.isSubscribed(); }, 15000); }
     bool isSubscribed() const { return m_client.isSubscribed(); }
 
-    // Control, Safe and a drive, seen at the robot; tried again a few times,
-    // since a flood on the broker may delay a heartbeat long enough for the
-    // lease to end (which stops the robot, as it should).
+    // Control, Safe and a drive, seen at the robot; tried again for up to
+    // ten seconds, since a flood on the broker may delay a heartbeat long
+    // enough for the lease to end (which stops the robot, as it should), and
+    // what a flood left queued is read before a take that came after it (on
+    // a slow machine, or under a sanitizer, for seconds).
     bool takeAndDrive()
     {
-        for (int attempt = 0; attempt < 3; ++attempt)
+        const QDeadlineTimer deadline(10000);
+        do {
             if (tryTakeAndDrive())
                 return true;
+        } while (!deadline.hasExpired());
         return false;
     }
     bool tryTakeAndDrive()

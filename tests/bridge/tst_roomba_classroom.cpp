@@ -9,6 +9,7 @@
 
 #include "bridge_rig.h"
 #include "fleet_directory.h"
+#include "process_run.h"
 
 #include <QElapsedTimer>
 #include <QProcess>
@@ -34,16 +35,8 @@ class TestRoombaClassroom : public QObject {
     };
     static Run classroom(const QStringList &args, const QProcessEnvironment &env = QProcessEnvironment::systemEnvironment())
     {
-        QProcess p;
-        p.setProcessEnvironment(env);
-        p.start(QStringLiteral(ROOMBA_CLASSROOM_PATH), args);
-        Run r;
-        if (!p.waitForFinished(60000))
-            return r;
-        r.status = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1;
-        r.out = QString::fromUtf8(p.readAllStandardOutput());
-        r.err = QString::fromUtf8(p.readAllStandardError());
-        return r;
+        const ProcessRun r = runProcess(QStringLiteral(ROOMBA_CLASSROOM_PATH), args, {}, 60000, {}, env);
+        return {r.exitCode, QString::fromUtf8(r.out), QString::fromUtf8(r.err)};
     }
     static QString accountsOf(const QString &dir)
     {

@@ -3,31 +3,14 @@
 // an export or a protocol by them: installed once into the build directory.
 #pragma once
 
+#include "process_run.h"
+
 #include <QDir>
 #include <QFile>
 #include <QProcess>
 #include <QStandardPaths>
 #include <QString>
 #include <QStringList>
-
-struct ProcessRun {
-    int exitCode = -1; // -1: it did not finish in time, or crashed
-    QByteArray out, err;
-};
-
-inline ProcessRun runProcess(const QString &program, const QStringList &arguments, const QString &workingDirectory = {},
-                             int timeoutMs = 60000)
-{
-    QProcess p;
-    if (!workingDirectory.isEmpty())
-        p.setWorkingDirectory(workingDirectory);
-    p.start(program, arguments);
-    if (!p.waitForFinished(timeoutMs))
-        p.kill();
-    p.waitForFinished();
-    return {p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1, p.readAllStandardOutput(),
-            p.readAllStandardError()};
-}
 
 // What installNpmPackages() found.
 struct NpmInstall {

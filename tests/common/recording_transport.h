@@ -45,6 +45,10 @@ struct Recording {
     std::atomic<bool> cliffLeft{false};
     std::atomic<bool> onDock{false};
     std::atomic<int> cliffLeftSignal{0}; // packet 28
+    std::atomic<int> buttons{0};         // packet 18
+    // True puts the robot's BRC pin in reach; each pull low is counted.
+    std::atomic<bool> brcInReach{false};
+    std::atomic<int> brcPulls{0};
     // False holds the streamed frames back.
     std::atomic<bool> streaming{true};
     // True loses what the link writes on the way, as a bad cable does: the
@@ -105,7 +109,8 @@ public:
         connect(&m_timer, &QTimer::timeout, this, [this] {
             if (m_recording->streaming)
                 emit bytesReceived(group100Frame(std::uint8_t(m_recording->bumps), m_recording->mode, m_recording->cliffLeft,
-                                                 m_recording->onDock, m_recording->cliffLeftSignal));
+                                                 m_recording->onDock, m_recording->cliffLeftSignal,
+                                                 std::uint8_t(m_recording->buttons)));
         });
     }
     // Records into a recording of its own.
@@ -176,6 +181,14 @@ public:
         return true;
     }
     void flush(int) override { ++m_recording->flushes; }
+    bool setBrcLow(bool low) override
+    {
+        if (!m_recording->brcInReach)
+            return false;
+        if (low)
+            ++m_recording->brcPulls;
+        return true;
+    }
     QString describe() const override { return QStringLiteral("/dev/recording"); }
 
 private:

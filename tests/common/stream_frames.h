@@ -37,7 +37,7 @@ inline QByteArray streamFrame(const QByteArray &payload)
 // mode, 0 Off .. 3 Full), packet 9 (the left cliff), packet 28 (its signal)
 // and packet 34 (the home base: on its dock).
 inline QByteArray group100Frame(std::uint8_t bumps = 0, int oiMode = 0, bool cliffLeft = false, bool onDock = false,
-                                int cliffLeftSignal = 0)
+                                int cliffLeftSignal = 0, std::uint8_t buttons = 0)
 {
     // Where a packet sits in the group's data: after packets 7 up to it.
     const auto offsetOf = [](int packet) {
@@ -47,7 +47,7 @@ inline QByteArray group100Frame(std::uint8_t bumps = 0, int oiMode = 0, bool cli
             offset += create2.packet(id)->bytes;
         return offset;
     };
-    static const int modeOffset = offsetOf(35), signalOffset = offsetOf(28);
+    static const int modeOffset = offsetOf(35), signalOffset = offsetOf(28), buttonsOffset = offsetOf(18);
     QByteArray payload(81, '\0');
     payload[0] = static_cast<char>(100);
     payload[1] = static_cast<char>(bumps);
@@ -56,5 +56,6 @@ inline QByteArray group100Frame(std::uint8_t bumps = 0, int oiMode = 0, bool cli
     payload[modeOffset] = static_cast<char>(onDock ? 2 : 0); // packet 34, just before 35
     payload[1 + signalOffset] = static_cast<char>(cliffLeftSignal >> 8);
     payload[2 + signalOffset] = static_cast<char>(cliffLeftSignal & 0xFF);
+    payload[1 + buttonsOffset] = static_cast<char>(buttons);
     return streamFrame(payload);
 }

@@ -4,7 +4,7 @@
 // left. Prints "frames N" after every stream frame it has been handed.
 //
 //   record_until_killed FILE
-#include "robot_link_thread.h"
+#include "local_robot_port.h"
 #include "transport_factory.h"
 
 #include <QCoreApplication>
@@ -19,21 +19,21 @@ int main(int argc, char **argv)
         return 2;
     }
     oilink::registerLinkMetaTypes();
-    oilink::RobotLinkThread link;
+    oilink::LocalRobotPort link;
     link.setTransportFactory(transports::transportFactory());
     long long frames = 0;
-    QObject::connect(&link, &oilink::RobotLinkThread::snapshot, &app, [&] {
+    oilink::connectEvent<oilink::event::Frame>(&link, &app, [&] {
         std::printf("frames %lld\n", ++frames);
         std::fflush(stdout);
     });
-    QObject::connect(&link, &oilink::RobotLinkThread::recordingStatus, &app,
+    oilink::connectEvent<oilink::event::Recording>(&link, &app,
                      [](const oilink::RecordingStatus &status) {
                          if (!status.error.isEmpty()) {
                              std::fprintf(stderr, "record_until_killed: %s\n", qPrintable(status.error));
                              QCoreApplication::exit(1);
                          }
                      });
-    link.open(oilink::LinkSettings::virtualRobotOf(oi::ProfileId::Create2, oi::ProfileId::Create2));
-    link.startRecording(QString::fromLocal8Bit(argv[1]));
+    link.post(oilink::request::Open{oilink::LinkSettings::virtualRobotOf(oi::ProfileId::Create2, oi::ProfileId::Create2)});
+    link.post(oilink::request::StartRecording{QString::fromLocal8Bit(argv[1])});
     return QCoreApplication::exec();
 }

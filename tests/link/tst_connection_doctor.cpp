@@ -4,7 +4,8 @@
 
 #include "connection_doctor.h"
 #include "profile_probe.h"
-#include "robot_link_thread.h"
+#include "link_event_spy.h"
+#include "local_robot_port.h"
 #include "tcp_robot_server.h"
 #include "tcp_transport.h"
 
@@ -331,26 +332,26 @@ private slots:
     void theLinkRunsTheDoctorOnItsPortAndStreamsAgain()
     {
         std::atomic<int> made = 0;
-        RobotLinkThread link;
+        LocalRobotPort link;
         link.setTransportFactory([&made](const LinkSettings &) {
             ++made;
             return new SimLineTransport(oi::ProfileId::Create2, {});
         });
-        QSignalSpy steps(&link, &RobotLinkThread::connectionCheckStep);
-        QSignalSpy checked(&link, &RobotLinkThread::connectionChecked);
-        QSignalSpy sent(&link, &RobotLinkThread::rawBytesSent);
+        LinkEventSpy<oilink::event::CheckStep> steps(link);
+        LinkEventSpy<oilink::event::ConnectionChecked> checked(link);
+        LinkEventSpy<oilink::event::BytesSent> sent(link);
         QList<LinkState> states;
         int frames = 0;
         int framesAtFinding = -1;
-        connect(&link, &RobotLinkThread::stateChanged, this, [&states](LinkState s) { states << s; });
-        connect(&link, &RobotLinkThread::snapshot, this, [&frames] { ++frames; });
-        connect(&link, &RobotLinkThread::connectionChecked, this, [&] { framesAtFinding = frames; });
-        link.open(LinkSettings::serial(QStringLiteral("test line"), oi::ProfileId::Create2));
+        oilink::connectEvent<oilink::event::State>(&link, this, [&states](LinkState s) { states << s; });
+        oilink::connectEvent<oilink::event::Frame>(&link, this, [&frames] { ++frames; });
+        oilink::connectEvent<oilink::event::ConnectionChecked>(&link, this, [&] { framesAtFinding = frames; });
+        link.post(oilink::request::Open{LinkSettings::serial(QStringLiteral("test line"), oi::ProfileId::Create2)});
         QTRY_COMPARE_WITH_TIMEOUT(link.state(), LinkState::Streaming, kTimeoutMs);
         sent.clear();
         states.clear();
 
-        link.checkConnection();
+        link.post(oilink::request::CheckConnection{});
         QVERIFY(checked.wait(kTimeoutMs));
         const auto report = checked.first().first().value<ConnectionDoctor::Report>();
         QVERIFY2(report.finding == Finding::Healthy, qPrintable(explain(report)));

@@ -10,6 +10,7 @@
 #include "typed_command_bytes.h"
 
 #include "crowded_recording.h" // tests/common
+#include "manual_clock.h"      // tests/common
 #include "not_regular_files.h" // tests/common
 #include "stream_parser.h"
 
@@ -117,6 +118,17 @@ QList<oi::SensorSnapshot> allSnapshots(const Recording &r)
     QList<oi::SensorSnapshot> out;
     r.forEachSnapshot([&](qint64, const oi::SensorSnapshot &s) { out << s; });
     return out;
+}
+
+// Plays `path` on `link` at ten times its speed until `statuses` (the
+// link's replayStatus()) says it finished.
+void replayToTheEnd(RobotLink &link, const QString &path, QSignalSpy &statuses)
+{
+    const Recording r = load(path);
+    link.open(LinkSettings::replayOf(path, r.robotProfile().id, r.stream().baud, r.stream().packets));
+    link.controlReplay(ReplayCommand::setSpeed(10));
+    QTRY_VERIFY_WITH_TIMEOUT(!statuses.isEmpty() && statuses.last().at(0).value<ReplayStatus>().finished,
+                             kTimeoutMs);
 }
 } // namespace
 
@@ -258,15 +270,37 @@ private slots:
         RobotLink replay;
         QSignalSpy snapshots(&replay, &RobotLink::snapshot);
         QSignalSpy statuses(&replay, &RobotLink::replayStatus);
-        replay.open(LinkSettings::replayOf(path, r.robotProfile().id, r.stream().baud, r.stream().packets));
-        replay.controlReplay(ReplayCommand::setSpeed(10));
-        QTRY_VERIFY_WITH_TIMEOUT(!statuses.isEmpty() && statuses.last().at(0).value<ReplayStatus>().finished,
-                                 kTimeoutMs);
+        replayToTheEnd(replay, path, statuses);
         QCOMPARE(snapshotsOf(snapshots), live);
         const ReplayStatus last = statuses.last().at(0).value<ReplayStatus>();
         QCOMPARE(last.frame, live.size() - 1);
         QCOMPARE(last.frameCount, live.size());
         QVERIFY(last.damage.isEmpty());
+    }
+
+    // A replay that ends falls silent by design: however long the link
+    // waits (on the test's clock) it wakes no robot, sends nothing and says
+    // nothing of a robot asleep; the replay's own status says it finished.
+    void aReplaysEndIsNotARobotAsleep()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath("run.oirec");
+        QVERIFY(recordVirtualRobot(path).size() >= kFrames);
+        ManualClock clock;
+        RobotLink replay(clock);
+        QSignalSpy statuses(&replay, &RobotLink::replayStatus);
+        QSignalSpy errors(&replay, &RobotLink::errorOccurred);
+        QSignalSpy states(&replay, &RobotLink::stateChanged);
+        replayToTheEnd(replay, path, statuses);
+        QSignalSpy sent(&replay, &RobotLink::rawBytesSent);
+        for (int ms = 0; ms < 30'000; ms += 15) {
+            clock.advance(15);
+            QCoreApplication::processEvents();
+        }
+        // The watchdog ran: the data is no longer fresh.
+        QCOMPARE(states.last().at(0).value<oilink::LinkState>(), oilink::LinkState::Stale);
+        QVERIFY2(errors.isEmpty(), qPrintable(errors.isEmpty() ? QString() : errors.first().first().toString()));
+        QCOMPARE(sent.count(), 0);
     }
 
     void seekAndStepLandOnWholeFrames()

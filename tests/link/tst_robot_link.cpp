@@ -3,6 +3,7 @@
 // makes of the bytes it gets, and how it behaves when the port fails. Its
 // timed rules run on a clock the test advances.
 #include "link_test_support.h"
+#include "profile_probe.h"
 #include "manual_clock.h"
 #include "recording_transport.h"
 #include "typed_command_bytes.h"
@@ -73,6 +74,12 @@ class TestRobotLink : public QObject {
     RecordingTransport *current() const { return m_transports.isEmpty() ? nullptr : m_transports.last().data(); }
 
     LinkSettings create2() const { return LinkSettings::serial(QStringLiteral("/dev/recording"), oi::ProfileId::Create2); }
+    // What the link sends first on a port it opens: the stop, then the
+    // finishing Starts (ProfileProbe::finishingStarts).
+    const QByteArray kFinishing = bytes({137, 0, 0, 0, 0, 138, 0})
+                                  + QByteArray(qsizetype(oilink::ProfileProbe::finishingStarts().size()), char(128));
+    // What the finishing Starts bring back is dropped for a moment; then the link greets the robot.
+    void settle() { m_clock.advance(oilink::ProfileProbe::kDrainMs); }
 
 private slots:
     void init()
@@ -174,7 +181,12 @@ private slots:
         QSignalSpy started(m_link, &RobotLink::streamStarted);
         m_link->open(settings);
         QVERIFY(current());
-        QCOMPARE(current()->written(), expected);
+        // First the Starts that finish a command an earlier program left
+        // half sent; what they bring back is dropped for a moment.
+        QCOMPARE(current()->written(), kFinishing);
+        QCOMPARE(started.size(), 0);
+        settle();
+        QCOMPARE(current()->written(), kFinishing + expected);
         QCOMPARE(m_link->state(), LinkState::Connecting);
         QCOMPARE(started.size(), 1);
     }
@@ -241,11 +253,13 @@ private slots:
         s.streamPackets = {100, 100, 100};
         QSignalSpy errors(m_link, &RobotLink::errorOccurred);
         m_link->open(s);
+        settle();
         QCOMPARE(errors.size(), 1);
         const QString message = errors.at(0).at(0).toString();
         QVERIFY2(message.contains(QStringLiteral("does not fit in 15 ms")), qPrintable(message));
         QCOMPARE(m_link->state(), LinkState::Closed);
-        QVERIFY(m_transports.first().isNull() || m_transports.first()->written().isEmpty());
+        // Only the finishing Starts, which every robot takes.
+        QVERIFY(m_transports.first().isNull() || m_transports.first()->written() == kFinishing);
     }
 
     void framesBecomeSnapshotsAndStatistics()
@@ -254,6 +268,7 @@ private slots:
         QSignalSpy stats(m_link, &RobotLink::statistics);
         QSignalSpy received(m_link, &RobotLink::rawBytesReceived);
         m_link->open(create2());
+        settle();
         RecordingTransport *t = current();
         QByteArray corrupt = group100Frame();
         corrupt[10] = static_cast<char>(corrupt[10] + 1);
@@ -274,7 +289,7 @@ private slots:
         QCOMPARE(now.bytesDiscarded, quint64(2 + 84 + 1));
         QCOMPARE(now.resyncs, quint64(1)); // the stray 19 claimed a length of 19
         QCOMPARE(now.bytesReceived, quint64(2 + 84 * 3 + 1));
-        QCOMPARE(now.bytesSent, quint64(7 + 4)); // the stop, Start and Stream
+        QCOMPARE(now.bytesSent, quint64(kFinishing.size() + 7 + 4)); // the stop and finishing Starts, the stop, Start and Stream
         QVERIFY(now.lastFrameTime.isValid());
         // The failure is reported soon, not only at the next one-second tick.
         stats.clear();
@@ -287,6 +302,7 @@ private slots:
     {
         QSignalSpy stateSpy(m_link, &RobotLink::stateChanged);
         m_link->open(create2());
+        settle();
         current()->inject(group100Frame());
         QCOMPARE(m_link->state(), LinkState::Streaming);
         m_clock.advance(RobotLink::kStaleAfterMs - 1);
@@ -303,6 +319,7 @@ private slots:
     {
         QSignalSpy errors(m_link, &RobotLink::errorOccurred);
         m_link->open(create2());
+        settle();
         const QByteArray startAndStream = bytes({137, 0, 0, 0, 0, 138, 0, 128, 148, 1, 100});
         // Re-armed after 1 s, then 2 s: three copies in all.
         m_clock.advance(999);
@@ -327,13 +344,15 @@ private slots:
         QSignalSpy stateSpy(m_link, &RobotLink::stateChanged);
         QSignalSpy errors(m_link, &RobotLink::errorOccurred);
         m_link->open(create2());
+        settle();
         current()->inject(group100Frame());
         current()->inject(group100Frame().left(40)); // cut off by the loss
         current()->vanish();
         QCOMPARE(m_link->state(), LinkState::Reconnecting);
         m_clock.advance(RobotLink::kFirstBackoffMs);
         QCOMPARE(m_transports.size(), 2);
-        QCOMPARE(current()->written(), bytes({137, 0, 0, 0, 0, 138, 0, 128, 148, 1, 100}));
+        settle(); // the new port gets its finishing Starts too
+        QCOMPARE(current()->written(), kFinishing + bytes({137, 0, 0, 0, 0, 138, 0, 128, 148, 1, 100}));
         current()->inject(group100Frame());
         QCOMPARE(m_link->state(), LinkState::Streaming);
         QCOMPARE(stateList(stateSpy), states({LinkState::Connecting, LinkState::Streaming, LinkState::Lost,
@@ -361,7 +380,8 @@ private slots:
             QCOMPARE(m_transports.size(), tries + 1);
         }
         QCOMPARE(m_transports.size(), 6);
-        QCOMPARE(current()->written(), bytes({137, 0, 0, 0, 0, 138, 0, 128, 148, 1, 100}));
+        settle();
+        QCOMPARE(current()->written(), kFinishing + bytes({137, 0, 0, 0, 0, 138, 0, 128, 148, 1, 100}));
         QCOMPARE(errors.size(), 1);
         QCOMPARE(errors.at(0).at(0).toString(), QStringLiteral("/dev/recording: no such port"));
         current()->inject(group100Frame());
@@ -394,6 +414,7 @@ private slots:
         QSignalSpy replies(m_link, &RobotLink::sensorReply);
         QSignalSpy snapshots(m_link, &RobotLink::snapshot);
         m_link->open(create2());
+        settle();
         RecordingTransport *t = current();
         t->inject(group100Frame());
         t->clearWritten();
@@ -427,6 +448,7 @@ private slots:
     {
         QSignalSpy errors(m_link, &RobotLink::errorOccurred);
         m_link->open(create2());
+        settle();
         current()->inject(group100Frame());
         current()->clearWritten();
         m_link->querySensors({35});
@@ -551,12 +573,13 @@ private slots:
     void askedCommandsAreToldApartFromTheLinksOwn()
     {
         m_link->open(LinkSettings::serial(QStringLiteral("/dev/recording"), oi::ProfileId::Create1));
+        settle();
         Recording &r = current()->recording();
-        QCOMPARE(r.written(), bytes({152, 0, 137, 0, 0, 0, 0, 138, 0, 128, 148, 7, 1, 17, 18, 19, 3, 4, 5}));
+        QCOMPARE(r.written(), kFinishing + bytes({152, 0, 137, 0, 0, 0, 0, 138, 0, 128, 148, 7, 1, 17, 18, 19, 3, 4, 5}));
         QVERIFY(r.commands.isEmpty());
         m_link->send(commandsOf(bytes({128}))); // Passive, asked for
         m_link->send(commandsOf(bytes({137, 0, 100, 128, 0})));
-        QCOMPARE(r.writes.mid(2), QList<QByteArray>({bytes({152, 0}), bytes({128}), bytes({137, 0, 100, 128, 0})}));
+        QCOMPARE(r.writes.mid(4), QList<QByteArray>({bytes({152, 0}), bytes({128}), bytes({137, 0, 100, 128, 0})}));
         QCOMPARE(r.commands, QList<QByteArray>({bytes({128}), bytes({137, 0, 100, 128, 0})}));
     }
 
@@ -567,6 +590,7 @@ private slots:
         QSignalSpy stats(m_link, &RobotLink::statistics);
         connect(m_link, &RobotLink::snapshot, m_link, &RobotLink::close);
         m_link->open(create2());
+        settle();
         QPointer<RecordingTransport> t = current();
         t->clearWritten();
         t->inject(group100Frame() + group100Frame() + group100Frame());

@@ -8,7 +8,8 @@
 
 #include "profile_probe.h"
 #include "pty_robot_server.h"
-#include "robot_link_thread.h"
+#include "link_event_spy.h"
+#include "local_robot_port.h"
 
 #include <QDeadlineTimer>
 #include <QProcess>
@@ -29,7 +30,7 @@
 
 using oilink::LinkSettings;
 using oilink::LinkState;
-using oilink::RobotLinkThread;
+using oilink::LocalRobotPort;
 
 namespace {
 
@@ -96,15 +97,14 @@ private:
     QString m_slave;
 };
 
-// Everything a RobotLinkThread said, gathered on the test thread.
+// Everything a LocalRobotPort said, gathered on the test thread.
 struct Recorder {
-    explicit Recorder(RobotLinkThread &link)
-        : snapshots(&link, &RobotLinkThread::snapshot), states(&link, &RobotLinkThread::stateChanged),
-          errors(&link, &RobotLinkThread::errorOccurred), started(&link, &RobotLinkThread::streamStarted)
+    explicit Recorder(LocalRobotPort &link)
+        : snapshots(link), states(link), errors(link), started(link)
     {
         // The context dies with the recorder: the link, destroyed later,
         // still delivers what it had queued.
-        QObject::connect(&link, &RobotLinkThread::rawBytesReceived, &context,
+        oilink::connectEvent<oilink::event::BytesReceived>(&link, &context,
                          [this](const QByteArray &data) { raw += data; });
     }
     bool sawState(LinkState state) const
@@ -123,10 +123,10 @@ struct Recorder {
     }
 
     QObject context;
-    QSignalSpy snapshots;
-    QSignalSpy states;
-    QSignalSpy errors;
-    QSignalSpy started;
+    LinkEventSpy<oilink::event::Frame> snapshots;
+    LinkEventSpy<oilink::event::State> states;
+    LinkEventSpy<oilink::event::Error> errors;
+    LinkEventSpy<oilink::event::StreamStarted> started;
     QByteArray raw;
 };
 
@@ -147,9 +147,9 @@ private slots:
         SimProcess sim;
         QVERIFY(sim.start({QStringLiteral("--profile"), QStringLiteral("create2")}));
         QVERIFY(sim.where().startsWith(QStringLiteral("/dev/")));
-        RobotLinkThread link;
+        LocalRobotPort link;
         Recorder r(link);
-        link.open(create2At(sim.where()));
+        link.post(oilink::request::Open{create2At(sim.where())});
         QTRY_VERIFY_WITH_TIMEOUT(r.snapshots.size() >= 30, kTimeoutMs);
         QCOMPARE(link.state(), LinkState::Streaming);
         link.closeAndWait();
@@ -171,6 +171,11 @@ private slots:
         QTest::newRow("roomba500") << "roomba500" << oi::ProfileId::Create2 << 115200 << QList<int>{100};
         // The Create talks at 57600: at 115200 the link hears junk and moves on.
         QTest::newRow("create1") << "create1" << oi::ProfileId::Create1 << 57600 << QList<int>{1, 17, 18, 19, 3, 4, 5};
+        // The SCI (2005) at 57600: found by its answers, polled for group 0's packets 7..26.
+        QList<int> groupZero;
+        for (int id = 7; id <= 26; ++id)
+            groupZero << id;
+        QTest::newRow("roomba400") << "roomba400" << oi::ProfileId::Roomba400 << 57600 << groupZero;
     }
     void findsTheProfileOverAPty()
     {
@@ -180,9 +185,9 @@ private slots:
         QFETCH(QList<int>, packets);
         SimProcess sim;
         QVERIFY(sim.start({QStringLiteral("--profile"), robot}));
-        RobotLinkThread link;
+        LocalRobotPort link;
         Recorder r(link);
-        link.open(LinkSettings::serial(sim.where()));
+        link.post(oilink::request::Open{LinkSettings::serial(sim.where())});
         QTRY_COMPARE_WITH_TIMEOUT(r.started.size(), 1, kTimeoutMs);
         QCOMPARE(r.started.at(0).at(0).value<oi::ProfileId>(), found);
         QCOMPARE(r.started.at(0).at(1).toInt(), baud);
@@ -199,7 +204,7 @@ private slots:
     {
         QTest::addColumn<oi::ProfileId>("robot");
         QTest::addColumn<int>("baud");
-        for (const oi::ProfileId robot : {oi::ProfileId::Roomba500, oi::ProfileId::Create2, oi::ProfileId::Create1})
+        for (const oi::ProfileId robot : oi::allProfiles())
             for (const int baud : oilink::ProfileProbe::defaultBauds())
                 QTest::addRow("%s at %d", oi::profile(robot).key.data(), baud) << robot << baud;
     }
@@ -212,13 +217,13 @@ private slots:
         QVERIFY2(server.open(&error), qPrintable(error));
         server.robot().write(QByteArray("\x80\x81", 2) + char(oi::baudCodeFor(baud))); // Start, Baud
         QTRY_COMPARE(server.robot().robot().baud(), baud);
-        RobotLinkThread link;
+        LocalRobotPort link;
         Recorder r(link);
-        QSignalSpy assumed(&link, &RobotLinkThread::profileAssumed);
-        link.open(LinkSettings::serial(server.slavePath()));
+        LinkEventSpy<oilink::event::ProfileAssumed> assumed(link);
+        link.post(oilink::request::Open{LinkSettings::serial(server.slavePath())});
         QTRY_COMPARE_WITH_TIMEOUT(r.started.size(), 1, kTimeoutMs);
-        const bool family = robot != oi::ProfileId::Create1;
-        const oi::ProfileId found = family ? oi::ProfileId::Create2 : oi::ProfileId::Create1;
+        const bool family = oilink::ProfileProbe::isAmbiguous(robot);
+        const oi::ProfileId found = family ? oi::ProfileId::Create2 : robot;
         QCOMPARE(r.started.at(0).at(0).value<oi::ProfileId>(), found);
         QCOMPARE(r.started.at(0).at(1).toInt(), baud);
         QCOMPARE(assumed.size(), family ? 1 : 0);
@@ -238,9 +243,9 @@ private slots:
         SimProcess sim;
         QVERIFY(sim.start({QStringLiteral("--stray"), QStringLiteral("0.005"), QStringLiteral("--seed"),
                            QStringLiteral("7")}));
-        RobotLinkThread link;
+        LocalRobotPort link;
         Recorder r(link);
-        link.open(create2At(sim.where()));
+        link.post(oilink::request::Open{create2At(sim.where())});
         QTRY_VERIFY_WITH_TIMEOUT(r.snapshots.size() >= 150, kTimeoutMs * 2);
         link.closeAndWait();
         const oilink::LinkStats s = link.lastStatistics();
@@ -259,9 +264,9 @@ private slots:
         SimProcess sim;
         QVERIFY(sim.start({QStringLiteral("--corrupt"), QStringLiteral("0.003"), QStringLiteral("--seed"),
                            QStringLiteral("3")}));
-        RobotLinkThread link;
+        LocalRobotPort link;
         Recorder r(link);
-        link.open(create2At(sim.where()));
+        link.post(oilink::request::Open{create2At(sim.where())});
         QTRY_VERIFY_WITH_TIMEOUT(r.snapshots.size() >= 150, kTimeoutMs * 2);
         link.closeAndWait();
         const oilink::LinkStats s = link.lastStatistics();
@@ -280,10 +285,10 @@ private slots:
         SimProcess sim;
         QVERIFY(sim.start({}));
         ManualClock clock;
-        RobotLinkThread link;
+        LocalRobotPort link;
         link.setClock(clock);
         Recorder r(link);
-        link.open(create2At(sim.where()));
+        link.post(oilink::request::Open{create2At(sim.where())});
         // Through the wake pulse and the robot's time to wake, 10 ms a step.
         QVERIFY(QTest::qWaitFor([&] {
             clock.advance(10);
@@ -309,11 +314,11 @@ private slots:
         QVERIFY(first.start({QStringLiteral("--link"), path}));
         std::atomic<int> attempts{0};
         ManualClock clock;
-        RobotLinkThread link;
+        LocalRobotPort link;
         link.setClock(clock);
         link.setTransportFactory(countedTransports(attempts));
         Recorder r(link);
-        link.open(create2At(path));
+        link.post(oilink::request::Open{create2At(path)});
         // The link's time moves 10 ms a step: through the wake, and later the backoff.
         const auto untilMoving = [&](auto done, int stepMs = 10) {
             return QTest::qWaitFor([&] {
@@ -354,10 +359,12 @@ private slots:
     {
         PtyPair pty;
         QVERIFY(!pty.slavePath().isEmpty());
-        RobotLinkThread link;
+        LocalRobotPort link;
         Recorder r(link);
-        link.open(create2At(pty.slavePath()));
-        QCOMPARE(pty.read(11), bytes({137, 0, 0, 0, 0, 138, 0, 128, 148, 1, 100}));
+        link.post(oilink::request::Open{create2At(pty.slavePath())});
+        const qsizetype finishing = qsizetype(oilink::ProfileProbe::finishingStarts().size());
+        QCOMPARE(pty.read(7 + finishing + 11), bytes({137, 0, 0, 0, 0, 138, 0}) + QByteArray(finishing, char(128))
+                                                    + bytes({137, 0, 0, 0, 0, 138, 0, 128, 148, 1, 100}));
         pty.write(group100Frame() + group100Frame());
         QTRY_COMPARE_WITH_TIMEOUT(r.snapshots.size(), 2, kTimeoutMs);
         link.closeAndWait();
@@ -372,10 +379,10 @@ private slots:
         QVERIFY(first.where().startsWith(QStringLiteral("tcp://")));
         const quint16 port = first.tcpPort();
         std::atomic<int> attempts{0};
-        RobotLinkThread link;
+        LocalRobotPort link;
         link.setTransportFactory(countedTransports(attempts));
         Recorder r(link);
-        link.open(LinkSettings::tcp(QStringLiteral("127.0.0.1"), port, oi::ProfileId::Create2));
+        link.post(oilink::request::Open{LinkSettings::tcp(QStringLiteral("127.0.0.1"), port, oi::ProfileId::Create2)});
         QTRY_VERIFY_WITH_TIMEOUT(r.snapshots.size() >= 10, kTimeoutMs);
 
         first.kill();
@@ -398,11 +405,11 @@ private slots:
     {
         std::atomic<int> attempts{0};
         ManualClock clock;
-        RobotLinkThread link;
+        LocalRobotPort link;
         link.setClock(clock);
         link.setTransportFactory(countedTransports(attempts));
         Recorder r(link);
-        link.open(create2At(QStringLiteral("/dev/roomba-dashboard-no-such-port")));
+        link.post(oilink::request::Open{create2At(QStringLiteral("/dev/roomba-dashboard-no-such-port"))});
         QTRY_COMPARE_WITH_TIMEOUT(r.errors.size(), 1, kTimeoutMs);
         QCOMPARE(r.errors.at(0).at(0).toString(), QStringLiteral("/dev/roomba-dashboard-no-such-port: no such port"));
         // Several more attempts as the backoff's time passes; each one's error
@@ -421,12 +428,12 @@ private slots:
     {
         SimProcess sim;
         QVERIFY(sim.start({}));
-        RobotLinkThread first;
-        first.open(create2At(sim.where()));
+        LocalRobotPort first;
+        first.post(oilink::request::Open{create2At(sim.where())});
         QTRY_COMPARE_WITH_TIMEOUT(first.state(), LinkState::Streaming, kTimeoutMs);
-        RobotLinkThread second;
+        LocalRobotPort second;
         Recorder r(second);
-        second.open(create2At(sim.where()));
+        second.post(oilink::request::Open{create2At(sim.where())});
         QTRY_COMPARE_WITH_TIMEOUT(r.errors.size(), 1, kTimeoutMs);
         QCOMPARE(r.errors.at(0).at(0).toString(), sim.where() + QStringLiteral(": port busy (another program has it open)"));
         // Once the first lets go, the second gets it.

@@ -29,7 +29,7 @@ private slots:
         QVERIFY2(r.reasonAtMs >= 0 && r.reasonAtMs - r.askedAtMs <= 2000, qPrintable(QString::number(r.reasonAtMs)));
         QVERIFY2(r.mode.reason().startsWith(QStringLiteral("The robot is on its dock: Safe mode is refused on the charger")),
                  qPrintable(r.mode.reason()));
-        QCOMPARE(r.mode.nextStep(), QStringLiteral("Use Full to drive it off the dock, or lift it off."));
+        QCOMPARE(r.mode.nextStep(), QStringLiteral("Lift it off the dock, or drive it off in Full (Full does not stop at cliffs or wheel drops)."));
         QCOMPARE(r.mode.causeKeys(), (QStringList{QStringLiteral("safety"), QStringLiteral("charger")}));
         QCOMPARE(r.mode.shortReason(), QStringLiteral("Safe refused on the dock"));
         // Full is the way off: asking for it ends the refusal's story.

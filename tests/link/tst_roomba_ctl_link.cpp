@@ -2,6 +2,7 @@
 // roomba-ctl sensors and send, as a script sees them: against the built-in
 // virtual robot and against roomba-sim on a pseudo-terminal.
 #include "crowded_recording.h"
+#include "process_run.h"
 #include "robot_address_mistakes.h"
 #include "recording_file.h"
 #include "robot_link.h"
@@ -33,28 +34,14 @@ struct Outcome {
 
 Outcome run(const QStringList &args)
 {
-    QProcess p;
-    p.start(QStringLiteral(ROOMBA_CTL_PATH), args);
-    if (!p.waitForStarted())
-        return {};
-    p.closeWriteChannel();
-    p.waitForFinished(kTimeoutMs);
-    return {p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1,
-            QString::fromUtf8(p.readAllStandardOutput()).split(QLatin1Char('\n'), Qt::SkipEmptyParts),
-            QString::fromUtf8(p.readAllStandardError())};
+    const ProcessRun r = runProcess(QStringLiteral(ROOMBA_CTL_PATH), args, {}, kTimeoutMs);
+    return {r.exitCode, QString::fromUtf8(r.out).split(QLatin1Char('\n'), Qt::SkipEmptyParts), QString::fromUtf8(r.err)};
 }
 
 // What roomba-ctl send says on standard error when nothing else needs saying.
 QString sentLine(const QString &command, const QString &port)
 {
     return QStringLiteral("roomba-ctl: sent %1 to %2\n").arg(command, port);
-}
-
-QJsonObject json(const QString &line)
-{
-    QJsonParseError error;
-    const QJsonDocument doc = QJsonDocument::fromJson(line.toUtf8(), &error);
-    return error.error == QJsonParseError::NoError ? doc.object() : QJsonObject();
 }
 
 // roomba-sim on a pseudo-terminal, for as long as the test function runs.
@@ -93,7 +80,7 @@ QJsonObject answer(const QStringList &send, const QStringList &options)
         const Outcome o = run(send + options + QStringList{QStringLiteral("query-list"), QStringLiteral("2"),
                                                            QStringLiteral("35"), QStringLiteral("39")});
         if (o.status == 0)
-            return json(o.lines.value(0))[QStringLiteral("packets")].toObject();
+            return jsonObjectOf(o.lines.value(0))[QStringLiteral("packets")].toObject();
     }
     return {};
 }
@@ -122,13 +109,13 @@ private slots:
         QCOMPARE(o.err, QString());
         QCOMPARE(o.lines.size(), 6);
         for (int i = 0; i < 5; ++i) {
-            const QJsonObject frame = json(o.lines[i]);
+            const QJsonObject frame = jsonObjectOf(o.lines[i]);
             QCOMPARE(frame[QStringLiteral("kind")].toString(), QStringLiteral("stream"));
             const QJsonObject packets = frame[QStringLiteral("packets")].toObject();
             QCOMPARE(packets.size(), 52);
             QCOMPARE(packets[QStringLiteral("oi_mode")].toInt(), 1);
         }
-        const QJsonObject stats = json(o.lines[5])[QStringLiteral("statistics")].toObject();
+        const QJsonObject stats = jsonObjectOf(o.lines[5])[QStringLiteral("statistics")].toObject();
         QCOMPARE(stats[QStringLiteral("profile")].toString(), QStringLiteral("create2"));
         QCOMPARE(stats[QStringLiteral("packets")].toArray(), QJsonArray({100}));
         QVERIFY(stats[QStringLiteral("frames")].toInt() >= 5);
@@ -146,12 +133,50 @@ private slots:
         QCOMPARE(o.status, 0);
         QCOMPARE(o.lines.size(), 4);
         // Group 6 of a Create: 7..42, with the cargo-bay packets.
-        QVERIFY(json(o.lines[0])[QStringLiteral("packets")].toObject().contains(QStringLiteral("cargo_bay_analog_signal")));
-        const QJsonObject stats = json(o.lines[3])[QStringLiteral("statistics")].toObject();
+        QVERIFY(jsonObjectOf(o.lines[0])[QStringLiteral("packets")].toObject().contains(QStringLiteral("cargo_bay_analog_signal")));
+        const QJsonObject stats = jsonObjectOf(o.lines[3])[QStringLiteral("statistics")].toObject();
         QCOMPARE(stats[QStringLiteral("profile")].toString(), QStringLiteral("create1"));
         // Everything but the angle (20), which a Create counts only between
         // reads: its session asks for that apart (oi::AngleReadSchedule).
         QCOMPARE(stats[QStringLiteral("packets")].toArray(), QJsonArray({1, 17, 18, 19, 3, 4, 5}));
+    }
+
+    // A Roomba 400 (the 2005 SCI) on a pty, without --profile: found by its
+    // answers, never reset, and polled for group 0; doctor names it, and
+    // send drives it through Control.
+    void aRoomba400OnAPty()
+    {
+        Sim sim({QStringLiteral("--profile"), QStringLiteral("roomba400")});
+        QVERIFY(!sim.path().isEmpty());
+        const Outcome o = run({QStringLiteral("sensors"), QStringLiteral("--port"), sim.path(),
+                               QStringLiteral("--count"), QStringLiteral("3")});
+        QVERIFY2(o.status == 0, qPrintable(o.err));
+        QCOMPARE(o.lines.size(), 4);
+        const QJsonObject packets = jsonObjectOf(o.lines[0])[QStringLiteral("packets")].toObject();
+        QCOMPARE(packets.size(), 20); // 7..26
+        QVERIFY(packets.contains(QStringLiteral("dirt_detect_right")));
+        QVERIFY(!packets.contains(QStringLiteral("oi_mode")));
+        const QJsonObject stats = jsonObjectOf(o.lines[3])[QStringLiteral("statistics")].toObject();
+        QCOMPARE(stats[QStringLiteral("profile")].toString(), QStringLiteral("roomba400"));
+        QCOMPARE(stats[QStringLiteral("baud")].toInt(), 57600);
+        QVERIFY2(!o.err.contains(QStringLiteral("Roomba SCI")), qPrintable(o.err)); // no boot text: never reset
+
+        const Outcome doctor = run({QStringLiteral("doctor"), QStringLiteral("--port"), sim.path()});
+        QVERIFY2(doctor.status == 0, qPrintable(doctor.lines.join('\n') + doctor.err));
+        QVERIFY2(doctor.lines.join('\n').contains(QStringLiteral("a Roomba 400 series")), qPrintable(doctor.lines.join('\n')));
+        QVERIFY2(doctor.lines.last().contains(QStringLiteral("as a Roomba 400-series (SCI, 2005)")),
+                 qPrintable(doctor.lines.join('\n')));
+
+        const Outcome drive = run({QStringLiteral("send"), QStringLiteral("--port"), sim.path(), QStringLiteral("--profile"),
+                                   QStringLiteral("roomba400"), QStringLiteral("drive"), QStringLiteral("0"),
+                                   QStringLiteral("0")});
+        QVERIFY2(drive.status == 0, qPrintable(drive.err));
+        QVERIFY2(drive.err.contains(QStringLiteral("entered Safe mode")), qPrintable(drive.err));
+        const Outcome list = run({QStringLiteral("send"), QStringLiteral("--port"), sim.path(), QStringLiteral("--profile"),
+                                  QStringLiteral("roomba400"), QStringLiteral("query-list"), QStringLiteral("2"),
+                                  QStringLiteral("7"), QStringLiteral("8")});
+        QCOMPARE(list.status, 1);
+        QVERIFY2(list.err.contains(QStringLiteral("not available on the Roomba 400")), qPrintable(list.err));
     }
 
     void sendCommandsAndQueries()
@@ -167,14 +192,14 @@ private slots:
         QVERIFY2(o.status == 0, qPrintable(o.err));
         QCOMPARE(o.lines.size(), 1);
         // Start goes out only to a silent robot, so Safe stays Safe.
-        QCOMPARE(json(o.lines[0])[QStringLiteral("kind")].toString(), QStringLiteral("reply"));
-        QCOMPARE(json(o.lines[0])[QStringLiteral("packets")].toObject()[QStringLiteral("oi_mode")].toInt(), 2);
+        QCOMPARE(jsonObjectOf(o.lines[0])[QStringLiteral("kind")].toString(), QStringLiteral("reply"));
+        QCOMPARE(jsonObjectOf(o.lines[0])[QStringLiteral("packets")].toObject()[QStringLiteral("oi_mode")].toInt(), 2);
         // Without --profile the robot is asked what it is.
         o = run({QStringLiteral("send"), QStringLiteral("--port"), sim.path(), QStringLiteral("query-list"),
                  QStringLiteral("2"), QStringLiteral("22"), QStringLiteral("7")});
         QVERIFY2(o.status == 0, qPrintable(o.err));
         QCOMPARE(o.lines.size(), 1);
-        const QJsonObject packets = json(o.lines[0])[QStringLiteral("packets")].toObject();
+        const QJsonObject packets = jsonObjectOf(o.lines[0])[QStringLiteral("packets")].toObject();
         QVERIFY(packets[QStringLiteral("voltage")].toInt() > 10000);
         QVERIFY(packets.contains(QStringLiteral("bumps_wheel_drops")));
     }
@@ -197,7 +222,7 @@ private slots:
         for (int i = 0; i < 10 && distance <= 0; ++i) {
             o = send({QStringLiteral("query-list"), QStringLiteral("3"), QStringLiteral("35"), QStringLiteral("39"), QStringLiteral("19")});
             QVERIFY2(o.status == 0, qPrintable(o.err));
-            const QJsonObject packets = json(o.lines.value(0))[QStringLiteral("packets")].toObject();
+            const QJsonObject packets = jsonObjectOf(o.lines.value(0))[QStringLiteral("packets")].toObject();
             QCOMPARE(packets[QStringLiteral("oi_mode")].toInt(), 2);
             QCOMPARE(packets[QStringLiteral("requested_velocity")].toInt(), 200);
             distance = packets[QStringLiteral("distance")].toInt();
@@ -206,7 +231,8 @@ private slots:
     }
 
     // After Baud the port is still at the old rate, as on a real robot: the
-    // next command hears nothing unless it is given the new one.
+    // next command hears nothing unless it is given the new one. After
+    // Reset the robot is back at its default rate.
     void baudNeedsTheNewRateNextTime()
     {
         Sim sim({});
@@ -221,7 +247,15 @@ private slots:
         o = run(port + QStringList{QStringLiteral("--baud"), QStringLiteral("19200"), QStringLiteral("sensors"),
                                    QStringLiteral("35")});
         QVERIFY2(o.status == 0, qPrintable(o.err));
-        QCOMPARE(json(o.lines.value(0))[QStringLiteral("packets")].toObject()[QStringLiteral("oi_mode")].toInt(), 1);
+        QCOMPARE(jsonObjectOf(o.lines.value(0))[QStringLiteral("packets")].toObject()[QStringLiteral("oi_mode")].toInt(), 1);
+        // Reset puts the robot back at its default rate, and send says so.
+        o = run(port + QStringList{QStringLiteral("--baud"), QStringLiteral("19200"), QStringLiteral("reset")});
+        QVERIFY2(o.status == 0, qPrintable(o.err));
+        QVERIFY2(o.err.contains(QStringLiteral("Reset puts the robot back at its default 115200 baud: give the next "
+                                               "command --baud 115200")),
+                 qPrintable(o.err));
+        o = run(port + QStringList{QStringLiteral("sensors"), QStringLiteral("35")});
+        QVERIFY2(o.status == 0, qPrintable(o.err));
     }
 
     // ERRATA 20: played in Passive, a Create ignores the script's Drive, waits
@@ -285,7 +319,7 @@ private slots:
         // A stream at that rate, which closes leaving the robot in Passive.
         o = run(QStringList{QStringLiteral("sensors")} + next + QStringList{QStringLiteral("--count"), QStringLiteral("2")});
         QVERIFY2(o.status == 0, qPrintable(o.err));
-        QCOMPARE(json(o.lines.value(2))[QStringLiteral("statistics")].toObject()[QStringLiteral("baud")].toInt(),
+        QCOMPARE(jsonObjectOf(o.lines.value(2))[QStringLiteral("statistics")].toObject()[QStringLiteral("baud")].toInt(),
                  accepted ? 19200 : 115200);
     }
 
@@ -349,7 +383,7 @@ private slots:
         // The robot starts in Off mode: silent, so Start goes out.
         Outcome o = run(port + QStringList{QStringLiteral("sensors"), QStringLiteral("35")});
         QVERIFY2(o.status == 0, qPrintable(o.err));
-        QCOMPARE(json(o.lines.value(0))[QStringLiteral("packets")].toObject()[QStringLiteral("oi_mode")].toInt(), 1);
+        QCOMPARE(jsonObjectOf(o.lines.value(0))[QStringLiteral("packets")].toObject()[QStringLiteral("oi_mode")].toInt(), 1);
         // Passive: without mode changes the drive is refused and nothing moves.
         o = run(port + QStringList{QStringLiteral("--no-mode-change"), QStringLiteral("drive-direct"),
                                    QStringLiteral("100"), QStringLiteral("100")});
@@ -357,22 +391,22 @@ private slots:
         QVERIFY2(o.err.contains(QStringLiteral("drive-direct works only in Safe or Full mode, and the robot is in Passive mode")),
                  qPrintable(o.err));
         o = run(port + QStringList{QStringLiteral("query-list"), QStringLiteral("2"), QStringLiteral("35"), QStringLiteral("41")});
-        QCOMPARE(json(o.lines.value(0))[QStringLiteral("packets")].toObject()[QStringLiteral("oi_mode")].toInt(), 1);
-        QCOMPARE(json(o.lines.value(0))[QStringLiteral("packets")].toObject()[QStringLiteral("requested_right_velocity")].toInt(), 0);
+        QCOMPARE(jsonObjectOf(o.lines.value(0))[QStringLiteral("packets")].toObject()[QStringLiteral("oi_mode")].toInt(), 1);
+        QCOMPARE(jsonObjectOf(o.lines.value(0))[QStringLiteral("packets")].toObject()[QStringLiteral("requested_right_velocity")].toInt(), 0);
         // With them, Safe is entered and said so.
         o = run(port + QStringList{QStringLiteral("drive-direct"), QStringLiteral("100"), QStringLiteral("100")});
         QVERIFY2(o.status == 0, qPrintable(o.err));
         QVERIFY2(o.err.contains(QStringLiteral("entered Safe mode for drive-direct")), qPrintable(o.err));
         o = run(port + QStringList{QStringLiteral("query-list"), QStringLiteral("2"), QStringLiteral("35"), QStringLiteral("41")});
-        QCOMPARE(json(o.lines.value(0))[QStringLiteral("packets")].toObject()[QStringLiteral("oi_mode")].toInt(), 2);
-        QCOMPARE(json(o.lines.value(0))[QStringLiteral("packets")].toObject()[QStringLiteral("requested_right_velocity")].toInt(), 100);
+        QCOMPARE(jsonObjectOf(o.lines.value(0))[QStringLiteral("packets")].toObject()[QStringLiteral("oi_mode")].toInt(), 2);
+        QCOMPARE(jsonObjectOf(o.lines.value(0))[QStringLiteral("packets")].toObject()[QStringLiteral("requested_right_velocity")].toInt(), 100);
         // Full stays Full.
         QCOMPARE(run(port + QStringList{QStringLiteral("full")}).status, 0);
         o = run(port + QStringList{QStringLiteral("leds"), QStringLiteral("4"), QStringLiteral("0"), QStringLiteral("128")});
         QCOMPARE(o.status, 0);
         QCOMPARE(o.err, sentLine("leds", sim.path()));
         o = run(port + QStringList{QStringLiteral("sensors"), QStringLiteral("35")});
-        QCOMPARE(json(o.lines.value(0))[QStringLiteral("packets")].toObject()[QStringLiteral("oi_mode")].toInt(), 3);
+        QCOMPARE(jsonObjectOf(o.lines.value(0))[QStringLiteral("packets")].toObject()[QStringLiteral("oi_mode")].toInt(), 3);
         // Stopped (Off mode) and told not to change modes: no answer, and it says why.
         QCOMPARE(run(port + QStringList{QStringLiteral("stop")}).status, 0);
         o = run(port + QStringList{QStringLiteral("--no-mode-change"), QStringLiteral("sensors"), QStringLiteral("35")});
@@ -392,7 +426,7 @@ private slots:
                                QStringLiteral("create2")};
         const auto velocity = [&] {
             const Outcome o = run(port + QStringList{QStringLiteral("sensors"), QStringLiteral("39")});
-            return json(o.lines.value(0))[QStringLiteral("packets")].toObject()[QStringLiteral("requested_velocity")].toInt();
+            return jsonObjectOf(o.lines.value(0))[QStringLiteral("packets")].toObject()[QStringLiteral("requested_velocity")].toInt();
         };
         // Off: silent, so Start goes out, and the robot then reads "Safe".
         Outcome o = run(port + QStringList{QStringLiteral("drive"), QStringLiteral("200"), QStringLiteral("straight")});
@@ -408,15 +442,119 @@ private slots:
         QCOMPARE(velocity(), 100);
     }
 
+    void sendWarnsWhenTheRobotWillIgnoreIt_data()
+    {
+        QTest::addColumn<QStringList>("simArgs");
+        QTest::addColumn<QString>("warning");
+        // Safe mode will not drive on the dock.
+        QTest::newRow("on its dock") << QStringList{QStringLiteral("--on-dock")}
+                                     << QStringLiteral("warning: the robot is on its dock: Safe mode ignores drive");
+        // A cliff that reads like a dark rug says so, as the dashboard does.
+        QTest::newRow("on a dark rug") << QStringList{QStringLiteral("--room"), QStringLiteral(ROOMBA_TEST_DATA "/dark_rug_room.json")}
+                                       << QStringLiteral("a dark rug or floor reads as a cliff");
+    }
     void sendWarnsWhenTheRobotWillIgnoreIt()
     {
-        // Safe mode will not drive on the dock.
-        Sim sim({QStringLiteral("--on-dock")});
+        QFETCH(QStringList, simArgs);
+        QFETCH(QString, warning);
+        Sim sim(simArgs);
         QVERIFY(!sim.path().isEmpty());
         const Outcome o = run({QStringLiteral("send"), QStringLiteral("--port"), sim.path(), QStringLiteral("drive"),
                                QStringLiteral("100"), QStringLiteral("straight")});
         QCOMPARE(o.status, 0);
-        QVERIFY2(o.err.contains(QStringLiteral("warning: the robot is on its dock: Safe mode ignores drive")), qPrintable(o.err));
+        QVERIFY2(o.err.contains(warning), qPrintable(o.err));
+    }
+
+    // calibrate on a Create 1, which streams no angle, ends with its figure.
+    void calibrateATurnOnACreate1Ends()
+    {
+        const Outcome o = run({QStringLiteral("calibrate"), QStringLiteral("--sim"), QStringLiteral("--profile"),
+                               QStringLiteral("create1"), QStringLiteral("--turns"), QStringLiteral("1")});
+        QVERIFY2(o.status == 0, qPrintable(o.err));
+        const QJsonObject result = jsonObjectOf(o.lines.value(0));
+        QCOMPARE(result[QStringLiteral("run")].toString(), QStringLiteral("turn"));
+        QVERIFY2(std::abs(result[QStringLiteral("packetAngleDeg")].toDouble() - 360) < 30, qPrintable(o.lines.value(0)));
+    }
+
+    // Picked up (both wheels dropped) in Full: drive is not sent, and says why.
+    void sendDriveInTheAirInFull()
+    {
+        Sim sim({QStringLiteral("--in-the-air")});
+        QVERIFY(!sim.path().isEmpty());
+        const QStringList port{QStringLiteral("send"), QStringLiteral("--port"), sim.path()};
+        Outcome o = run(port + QStringList{QStringLiteral("full")});
+        QVERIFY2(o.status == 0, qPrintable(o.err));
+        o = run(port + QStringList{QStringLiteral("drive"), QStringLiteral("100"), QStringLiteral("straight")});
+        QCOMPARE(o.status, 1);
+        QVERIFY2(o.err.contains(QStringLiteral("drive not sent: the robot is off the floor: Full mode would drive its "
+                                               "wheels in your hands")),
+                 qPrintable(o.err));
+        const QJsonObject after = answer({QStringLiteral("send"), QStringLiteral("--no-mode-change")},
+                                         {QStringLiteral("--port"), sim.path()});
+        QCOMPARE(after[QStringLiteral("oi_mode")].toInt(), 3);
+        QCOMPARE(after[QStringLiteral("requested_velocity")].toInt(), 0);
+    }
+
+    // roomba-sim --half-song: sensors brings the robot back in step and streams.
+    void sensorsAfterAHalfCommand()
+    {
+        Sim sim({QStringLiteral("--half-song")});
+        QVERIFY(!sim.path().isEmpty());
+        const Outcome o = run({QStringLiteral("sensors"), QStringLiteral("--port"), sim.path(), QStringLiteral("--profile"),
+                               QStringLiteral("create2"), QStringLiteral("--count"), QStringLiteral("3")});
+        QVERIFY2(o.status == 0, qPrintable(o.err));
+        QVERIFY2(!o.err.contains(QStringLiteral("no data")), qPrintable(o.err));
+    }
+
+    // roomba-sim --bunch 300: the frames all come, and sensors names the link.
+    void sensorsOverABunchedLink()
+    {
+        Sim sim({QStringLiteral("--bunch"), QStringLiteral("300")});
+        QVERIFY(!sim.path().isEmpty());
+        const Outcome o = run({QStringLiteral("sensors"), QStringLiteral("--port"), sim.path(), QStringLiteral("--profile"),
+                               QStringLiteral("create2"), QStringLiteral("--count"), QStringLiteral("100")});
+        QVERIFY2(o.status == 0, qPrintable(o.err));
+        QVERIFY2(o.err.contains(QStringLiteral("bunched link (frames every 0.3 s)")), qPrintable(o.err));
+    }
+
+    // roomba-sim --power-off-after: sensors names the power button, wake
+    // switches it on, and it streams again.
+    void switchedOffThenWoken()
+    {
+        Sim sim({QStringLiteral("--power-off-after"), QStringLiteral("0.5")});
+        QVERIFY(!sim.path().isEmpty());
+        const QStringList robot{QStringLiteral("--port"), sim.path(), QStringLiteral("--profile"), QStringLiteral("create2")};
+        Outcome o = run(QStringList{QStringLiteral("sensors")} + robot + QStringList{QStringLiteral("--count"), QStringLiteral("100000")});
+        QCOMPARE(o.status, 1);
+        QVERIFY2(o.err.contains(QStringLiteral("switched off at its power button; press it or use Wake")), qPrintable(o.err));
+        o = run(QStringList{QStringLiteral("wake")} + robot);
+        QVERIFY2(o.status == 0, qPrintable(o.err));
+        o = run(QStringList{QStringLiteral("sensors")} + robot + QStringList{QStringLiteral("--count"), QStringLiteral("3")});
+        QVERIFY2(o.status == 0, qPrintable(o.err));
+    }
+
+    // Nearly flat: motion is warned before it goes, with the charge and the
+    // voltage; roomba-ctl battery measures the robot from its stream.
+    void sendWarnsWhenTheBatteryIsNearlyFlat()
+    {
+        Sim sim({QStringLiteral("--battery-charge"), QStringLiteral("5")});
+        QVERIFY(!sim.path().isEmpty());
+        Outcome o = run({QStringLiteral("send"), QStringLiteral("--port"), sim.path(), QStringLiteral("drive"),
+                         QStringLiteral("100"), QStringLiteral("straight")});
+        QCOMPARE(o.status, 0);
+        QVERIFY2(o.err.contains(QStringLiteral("warning: battery nearly flat (5 %, 13.")), qPrintable(o.err));
+        QVERIFY2(o.err.contains(QStringLiteral("the robot leaves Safe or Full by itself under load; charge it")), qPrintable(o.err));
+        o = run({QStringLiteral("send"), QStringLiteral("--port"), sim.path(), QStringLiteral("drive"), QStringLiteral("0"),
+                 QStringLiteral("straight")});
+        QVERIFY2(!o.err.contains(QStringLiteral("battery")), qPrintable(o.err)); // a stop is never warned
+
+        QTemporaryDir config;
+        qputenv("XDG_CONFIG_HOME", config.path().toUtf8());
+        o = run({QStringLiteral("battery"), QStringLiteral("--port"), sim.path(), QStringLiteral("--seconds"),
+                 QStringLiteral("1"), QStringLiteral("--text")});
+        qunsetenv("XDG_CONFIG_HOME");
+        QVERIFY2(o.status == 0, qPrintable(o.err));
+        QVERIFY2(o.lines.value(0).startsWith("serial:" + sim.path() + ": Not measured yet"), qPrintable(o.lines.join('\n')));
     }
 
     // On its dock the robot refuses Safe: send safe says so, names Full as
@@ -477,7 +615,7 @@ private slots:
                       QStringLiteral("2"), QStringLiteral("43"), QStringLiteral("44")});
             QVERIFY2(o.status == 0, qPrintable(o.err));
             QCOMPARE(o.err, QString());
-            const QJsonObject packets = json(o.lines.value(0))[QStringLiteral("packets")].toObject();
+            const QJsonObject packets = jsonObjectOf(o.lines.value(0))[QStringLiteral("packets")].toObject();
             right = packets[QStringLiteral("right_encoder_counts")].toInt();
             left = packets[QStringLiteral("left_encoder_counts")].toInt();
         }
@@ -491,11 +629,11 @@ private slots:
         QVERIFY2(o.status == 0, qPrintable(o.err));
         QVERIFY2(o.err.contains(QStringLiteral("assumed create2")) && o.err.contains(advice), qPrintable(o.err));
         QCOMPARE(o.lines.size(), 4);
-        const QJsonObject frame = json(o.lines[0])[QStringLiteral("packets")].toObject();
+        const QJsonObject frame = jsonObjectOf(o.lines[0])[QStringLiteral("packets")].toObject();
         QVERIFY(frame.contains(QStringLiteral("oi_mode")));
         QVERIFY(!frame.contains(QStringLiteral("left_encoder_counts")));
         QVERIFY(!frame.contains(QStringLiteral("right_encoder_counts")));
-        QVERIFY(json(o.lines[3])[QStringLiteral("statistics")].toObject()[QStringLiteral("profileAssumed")].toBool());
+        QVERIFY(jsonObjectOf(o.lines[3])[QStringLiteral("statistics")].toObject()[QStringLiteral("profileAssumed")].toBool());
 
         // It answers: status 0, and the flag to name it by.
         o = run({QStringLiteral("doctor"), QStringLiteral("--port"), sim.path()});
@@ -554,7 +692,7 @@ private slots:
                                      QStringLiteral("create2"), QStringLiteral("--count"), QStringLiteral("3")});
         QVERIFY2(sensors.status == 0, qPrintable(sensors.err));
         QCOMPARE(sensors.err, QString());
-        QCOMPARE(json(sensors.lines.last())[QStringLiteral("statistics")].toObject()[QStringLiteral("baud")].toInt(), 115200);
+        QCOMPARE(jsonObjectOf(sensors.lines.last())[QStringLiteral("statistics")].toObject()[QStringLiteral("baud")].toInt(), 115200);
     }
 
     void doctorOnAHealthyRobot()
@@ -572,7 +710,7 @@ private slots:
                                QStringLiteral("create1"), QStringLiteral("sensors"), QStringLiteral("32")});
         QCOMPARE(o.status, 0);
         QCOMPARE(o.lines.size(), 1);
-        QVERIFY(json(o.lines[0])[QStringLiteral("packets")].toObject().contains(QStringLiteral("cargo_bay_digital_inputs")));
+        QVERIFY(jsonObjectOf(o.lines[0])[QStringLiteral("packets")].toObject().contains(QStringLiteral("cargo_bay_digital_inputs")));
     }
 
     // A calibration run by the encoders on roomba-sim: it stops at the
@@ -587,7 +725,7 @@ private slots:
                               + QStringList{QStringLiteral("--straight"), QStringLiteral("200")});
         QVERIFY2(o.status == 0, qPrintable(o.err));
         QCOMPARE(o.lines.size(), 1);
-        const QJsonObject result = json(o.lines[0]);
+        const QJsonObject result = jsonObjectOf(o.lines[0]);
         QCOMPARE(result[QStringLiteral("run")].toString(), QStringLiteral("straight"));
         QCOMPARE(result[QStringLiteral("profile")].toString(), QStringLiteral("roomba500"));
         QVERIFY2(std::abs(result[QStringLiteral("encoderDistanceMm")].toDouble() - 200) < 2, qPrintable(o.lines[0]));

@@ -9,7 +9,8 @@
 
 #include "command_encoder.h"
 #include "song.h"
-#include "robot_link_thread.h"
+#include "link_event_spy.h"
+#include "local_robot_port.h"
 
 #include <QFile>
 #include <QProcess>
@@ -26,7 +27,7 @@
 
 using oilink::LinkSettings;
 using oilink::LinkState;
-using oilink::RobotLinkThread;
+using oilink::LocalRobotPort;
 
 namespace {
 
@@ -247,7 +248,7 @@ private:
     Ser2netProcess m_ser2net;
     quint16 m_port = 0;
     std::atomic<int> m_attempts{0}; // transports the link made: one per attempt to connect
-    std::unique_ptr<RobotLinkThread> m_link;
+    std::unique_ptr<LocalRobotPort> m_link;
 
     QList<LinkState> m_states;
     QStringList m_errors;
@@ -280,23 +281,23 @@ void TestSer2net::initTestCase()
                                                .arg(m_port)
                                                .arg(m_ser2net.log())));
 
-    m_link = std::make_unique<RobotLinkThread>();
+    m_link = std::make_unique<LocalRobotPort>();
     m_attempts = 0;
     m_link->setTransportFactory(countedTransports(m_attempts));
-    connect(m_link.get(), &RobotLinkThread::stateChanged, this, [this](LinkState s) { m_states.append(s); });
-    connect(m_link.get(), &RobotLinkThread::errorOccurred, this, [this](const QString &e) { m_errors.append(e); });
-    connect(m_link.get(), &RobotLinkThread::streamStarted, this,
+    oilink::connectEvent<oilink::event::State>(m_link.get(), this, [this](LinkState s) { m_states.append(s); });
+    oilink::connectEvent<oilink::event::Error>(m_link.get(), this, [this](const QString &e) { m_errors.append(e); });
+    oilink::connectEvent<oilink::event::StreamStarted>(m_link.get(), this,
             [this](oi::ProfileId profile, int baud, const QList<int> &packets) {
                 m_streamStarts.append({QVariant::fromValue(profile), baud, QVariant::fromValue(packets)});
             });
-    connect(m_link.get(), &RobotLinkThread::snapshot, this, [this](const oi::SensorSnapshot &s) {
+    oilink::connectEvent<oilink::event::Frame>(m_link.get(), this, [this](const oi::SensorSnapshot &s) {
         ++m_snapshots;
         m_last = s;
         m_distanceMm += s.distanceMm();
         if (m_firstImplausible.isEmpty())
             m_firstImplausible = implausible(s);
     });
-    m_link->open(LinkSettings::tcp(QStringLiteral("127.0.0.1"), m_port, oi::ProfileId::Create2));
+    m_link->post(oilink::request::Open{LinkSettings::tcp(QStringLiteral("127.0.0.1"), m_port, oi::ProfileId::Create2)});
 }
 
 // Frames come through the bridge and decode to sane values.
@@ -436,8 +437,8 @@ void TestSer2net::cleanupTestCase()
 // Safe mode and a drive straight ahead, seen coming back in the stream.
 void TestSer2net::sendSafeAndDrive()
 {
-    m_link->send(commandsOf(toBytes(m_encoder.safe())));
-    m_link->send(commandsOf(toBytes(m_encoder.drive(kVelocity, oi::kRadiusStraight))));
+    m_link->post(oilink::request::Send{commandsOf(toBytes(m_encoder.safe()))});
+    m_link->post(oilink::request::Send{commandsOf(toBytes(m_encoder.drive(kVelocity, oi::kRadiusStraight)))});
     QTRY_VERIFY2_WITH_TIMEOUT(m_last.oiMode() == oi::OiMode::Safe && m_last.requestedVelocity() == kVelocity,
                               qPrintable(QStringLiteral("mode %1, velocity %2")
                                              .arg(int(m_last.oiMode()))

@@ -11,6 +11,7 @@
 #include <QSet>
 #include <QString>
 #include <QStringList>
+#include <QTimer>
 
 #include <memory>
 #include <optional>
@@ -38,6 +39,12 @@ public:
     // The name the console speaks as (the CLIENT of docs/mqtt.md): the
     // broker user name, or "dashboard-HOST-PID".
     static QString clientNameFor(const mqtt::BrokerAddress &address);
+
+    // A broker that shuts down sends every bridge's last will before it
+    // closes this console's connection: a will is applied this long after
+    // it came, and forgotten if the connection ended meanwhile (the robot's
+    // bridge was not the part that failed).
+    static constexpr int kWillGraceMs = 300;
 
     // Forgets every robot and connects, reconnecting until disconnect().
     // False, with errorOccurred(), for settings the library refuses.
@@ -78,6 +85,9 @@ signals:
     void telemetryReceived(const QString &name, const oi::SensorSnapshot &latest);
     // The bridge's answer to a command or control message of this console.
     void replyReceived(const QString &name, const QJsonObject &reply);
+    // A robot's bridge went offline while the broker was fine (loss() says
+    // what was going on then).
+    void bridgeLost(const QString &name, const BridgeLoss &loss);
     // Bad messages from the network (they change nothing), a broker that
     // refuses the login.
     void errorOccurred(const QString &message);
@@ -88,6 +98,9 @@ signals:
 private:
     void onMessage(const QString &topic, const QByteArray &payload);
     void onState(const QString &name, const QJsonObject &object);
+    void applyState(const QString &name, const RemoteRobotState &state);
+    // The last wills held back (see onState), applied unless the connection ends first.
+    void applyHeldWills();
     std::optional<QJsonObject> jsonObject(const QString &name, const QString &kind, const QByteArray &payload);
     void readTelemetry(const QString &name, RemoteRobot &robot, const QByteArray &payload);
     void onStats(const QString &name, const QJsonObject &object);
@@ -102,4 +115,6 @@ private:
     QMap<QString, RemoteRobot> m_robots;
     QSet<QString> m_reported;
     QHash<QString, int> m_followers;
+    QMap<QString, RemoteRobotState> m_heldWills;
+    QTimer m_willGrace;
 };

@@ -6,6 +6,7 @@
 #include "sensor_snapshot.h"
 
 #include <QByteArray>
+#include <QDateTime>
 #include <QJsonObject>
 #include <QString>
 #include <QStringList>
@@ -22,6 +23,11 @@ struct RemoteRobotState {
     QString modeReason;  // why it is in Passive, in a few words (the bridge's language); empty: nothing to explain
     QStringList modeCause; // the same as words a program reads (RobotMode::causeKeys); empty: not said
     double batteryPercent = -1; // -1: not known
+    // The pack's health ("battery": BatteryHealth's words for programs):
+    // "good", "worn", "replace", "unknown"; empty: not said.
+    QString batteryCondition;
+    double batteryCapacityMah = -1; // measured; -1: not known
+    int batteryClaimedMah = 0;
     QString link;        // "streaming", "connecting", "stale", "lost"
     QString controller;  // empty: nobody holds control
     QString program;     // the controller's program (the Python library says it), empty: none said
@@ -34,11 +40,22 @@ struct RemoteRobotState {
 // type gives nothing and `error` names it.
 std::optional<RemoteRobotState> remoteStateFromJson(const QJsonObject &object, QString *error);
 
+// What was going on when a robot's bridge went offline (its last will
+// while the broker was fine): a real robot keeps its last drive when its
+// bridge dies, and whoever drove it was cut off.
+struct BridgeLoss {
+    QDateTime at;          // when the console heard the last will
+    QString controller;    // who held control then; empty: nobody
+    QString program;       // the controller's program, empty: none said
+    bool mayBeMoving = false; // the last telemetry asked the wheels for motion
+};
+
 // One robot on the broker as the console knows it: its latest state, the
 // latest value of every packet its telemetry carried, its bridge's link
 // statistics.
 struct RemoteRobot {
     RemoteRobotState state;
+    std::optional<BridgeLoss> bridgeLoss; // set while its bridge is offline, if the console saw it go
     const oi::RobotProfile *profile = &oi::profile(oi::ProfileId::Create2);
     oi::SensorSnapshot latest{oi::profile(oi::ProfileId::Create2)};
     quint64 telemetryCount = 0; // messages received

@@ -15,6 +15,9 @@
 FleetDirectory::FleetDirectory(QObject *parent) : QObject(parent)
 {
     oilink::registerLinkMetaTypes();
+    m_willGrace.setSingleShot(true);
+    m_willGrace.setInterval(kWillGraceMs);
+    connect(&m_willGrace, &QTimer::timeout, this, &FleetDirectory::applyHeldWills);
 }
 
 FleetDirectory::~FleetDirectory()
@@ -44,6 +47,8 @@ bool FleetDirectory::connectToBroker(const mqtt::BrokerAddress &address)
     m_names.clear();
     m_robots.clear();
     m_reported.clear();
+    m_heldWills.clear();
+    m_willGrace.stop();
     m_address = address;
     m_clientName = clientNameFor(address);
     // The broker refuses a second client with the same id by dropping the
@@ -52,7 +57,12 @@ bool FleetDirectory::connectToBroker(const mqtt::BrokerAddress &address)
         QStringLiteral("%1-console-%2").arg(m_clientName).arg(QCoreApplication::applicationPid()));
     using mqtt::topics::Kind;
     connect(m_client.get(), &mqtt::MqttClient::connected, this, [this] { emit connectionChanged(true); });
-    connect(m_client.get(), &mqtt::MqttClient::disconnected, this, [this] { emit connectionChanged(false); });
+    connect(m_client.get(), &mqtt::MqttClient::disconnected, this, [this] {
+        // Said by a broker shutting down: the bridges are not known to be gone.
+        m_heldWills.clear();
+        m_willGrace.stop();
+        emit connectionChanged(false);
+    });
     connect(m_client.get(), &mqtt::MqttClient::subscribed, this, &FleetDirectory::subscribed);
     connect(m_client.get(), &mqtt::MqttClient::errorOccurred, this, &FleetDirectory::errorOccurred);
     connect(m_client.get(), &mqtt::MqttClient::loginRefused, this, [this](const QString &message) {
@@ -76,6 +86,8 @@ void FleetDirectory::disconnectFromBroker()
         return;
     m_client->disconnectFromBroker();
     m_client.reset();
+    m_heldWills.clear();
+    m_willGrace.stop();
     emit connectionChanged(false);
 }
 
@@ -141,13 +153,45 @@ void FleetDirectory::onState(const QString &name, const QJsonObject &object)
         return;
     }
     m_reported.remove(name + QStringLiteral("/state"));
+    const auto known = m_robots.constFind(name);
+    if (!state->online && known != m_robots.constEnd() && known->state.online) {
+        // A robot seen online goes offline: held back a moment, in case the
+        // broker is shutting down (kWillGraceMs).
+        m_heldWills.insert(name, *state);
+        if (!m_willGrace.isActive())
+            m_willGrace.start();
+        return;
+    }
+    m_heldWills.remove(name);
+    applyState(name, *state);
+}
+
+void FleetDirectory::applyHeldWills()
+{
+    for (auto it = m_heldWills.constBegin(); it != m_heldWills.constEnd(); ++it) {
+        RemoteRobot &robot = m_robots[it.key()];
+        const oi::SensorSnapshot &p = robot.latest;
+        // Packets 39, 41, 42: the drive the robot was last asked for, which it keeps.
+        const BridgeLoss loss{QDateTime::currentDateTime(), robot.state.controller, robot.state.program,
+                              p.raw(39) != 0 || p.raw(41) != 0 || p.raw(42) != 0};
+        robot.bridgeLoss = loss;
+        applyState(it.key(), it.value());
+        emit bridgeLost(it.key(), loss);
+    }
+    m_heldWills.clear();
+}
+
+void FleetDirectory::applyState(const QString &name, const RemoteRobotState &state)
+{
     const bool isNew = !m_robots.contains(name);
     RemoteRobot &robot = m_robots[name];
+    if (state.online)
+        robot.bridgeLoss.reset();
     // The last will says only that it went away: keep what was known.
-    RemoteRobotState next = state->online ? *state : robot.state;
-    next.online = state->online;
+    RemoteRobotState next = state.online ? state : robot.state;
+    next.online = state.online;
     next.name = name;
-    if (!state->online) {
+    if (!state.online) {
         next.controller.clear();
         next.link = QStringLiteral("lost");
     }

@@ -54,6 +54,17 @@ std::optional<RemoteRobotState> remoteStateFromJson(const QJsonObject &object, Q
             *error = QCoreApplication::translate("RemoteRobot", "state: \"mode_cause\" must be a list of words");
         return std::nullopt;
     }
+    const QJsonValue pack = object.value(QLatin1String("battery"));
+    if (pack.isObject()) {
+        const QJsonObject p = pack.toObject();
+        s.batteryCondition = p.value(QLatin1String("condition")).toString();
+        s.batteryCapacityMah = p.value(QLatin1String("capacity_mah")).toDouble(-1);
+        s.batteryClaimedMah = p.value(QLatin1String("claimed_capacity_mah")).toInt();
+    } else if (!pack.isUndefined() && !pack.isNull()) {
+        if (error)
+            *error = QCoreApplication::translate("RemoteRobot", "state: \"battery\" must be an object");
+        return std::nullopt;
+    }
     const QJsonValue battery = object.value(QLatin1String("battery_percent"));
     if (battery.isDouble()) {
         s.batteryPercent = battery.toDouble();

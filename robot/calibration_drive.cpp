@@ -93,12 +93,7 @@ void CalibrationDrive::abort(const QString &reason)
 
 int CalibrationDrive::driveFrameLimit() const
 {
-    // Three times as long as the run takes at full speed, and ten seconds
-    // more for the slow approach at its end.
-    const double lengthMm = m_run->kind() == oi::EncoderRun::Kind::Straight
-                                ? std::abs(m_run->target())
-                                : std::abs(m_run->target()) * m_run->wheels().wheelBaseMm / 2;
-    return int(std::ceil((3 * lengthMm / kSpeedMmPerS + 10) / kFrameSeconds));
+    return int(std::ceil(m_run->timeLimitSeconds() / kFrameSeconds));
 }
 
 void CalibrationDrive::onAngleRead(const oi::SensorSnapshot &reply)
@@ -140,8 +135,7 @@ void CalibrationDrive::onFrame(const oi::SensorSnapshot &frame)
             return abort(tr("The run did not reach its end in %1 s: the robot counted %2 of it. Is a wheel "
                             "slipping or held? Check the floor and the wheels, and run the step again.")
                              .arg(int(std::lround(m_frames * kFrameSeconds)))
-                             .arg(QStringLiteral("%1 %").arg(int(std::lround(
-                                 100 * std::abs(m_run->progress()) / std::max(1e-9, std::abs(m_run->target())))))));
+                             .arg(QStringLiteral("%1 %").arg(m_run->percentDone())));
     }
     const oi::WheelSpeeds speeds = m_run->update(frame);
     emit progressed(m_run->progress());

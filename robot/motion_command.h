@@ -6,6 +6,8 @@
 
 #include <QMetaType>
 
+#include <cmath>
+#include <cstdlib>
 #include <optional>
 
 // What an input device (drive pad, keyboard, gamepad) asks the robot to do,
@@ -51,6 +53,31 @@ struct MotionCommand {
         case Kind::Drive: break;
         }
         return {oi::Command::Drive, {velocity, radius}, {}};
+    }
+    // Drive Direct as a Drive of the same wheel speeds, for a robot without
+    // Drive Direct (the SCI): the mean speed, and the turning radius its
+    // wheels `wheelBaseMm` apart make.
+    MotionCommand asDrive(double wheelBaseMm) const
+    {
+        if (kind != Kind::DriveDirect)
+            return *this;
+        constexpr int kMaxRadius = 2000;
+        MotionCommand m;
+        if (right == left) {
+            m.velocity = right;
+            return m;
+        }
+        if (right == -left) {
+            m.velocity = std::abs(right - left) / 2;
+            m.radius = right > left ? oi::kRadiusTurnInPlaceCounterClockwise : oi::kRadiusTurnInPlaceClockwise;
+            return m;
+        }
+        const double radius = wheelBaseMm / 2 * (right + left) / (right - left);
+        m.velocity = (right + left) / 2;
+        m.radius = std::abs(radius) > kMaxRadius ? oi::kRadiusStraight
+                   : std::abs(radius) < 1       ? (radius > 0 ? 1 : -1)
+                                                : int(std::lround(radius));
+        return m;
     }
     friend bool operator==(const MotionCommand &, const MotionCommand &) = default;
 };

@@ -1,13 +1,17 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "classroom_protocol.h"
 #include "odometry.h"
+
+// The Python library plans its moves on the same wheel base.
+static_assert(classroom::kWheelBaseMm == oi::kWheelBaseMm);
 
 // A move with a goal: straight ahead (or back) by a distance, a turn on the
 // spot by an angle, or an arc of a circle by an angle. Millimetres, degrees
 // and seconds; angles counter-clockwise positive, as the OI's own angle.
 struct MotionGoal {
-    enum class Kind { Straight, Turn, Arc };
+    using Kind = classroom::GoalKind;
     Kind kind = Kind::Straight;
     double distanceMm = 0;    // Straight: negative drives backwards
     double angleDeg = 0;      // Turn, Arc: negative turns clockwise (right)
@@ -15,25 +19,26 @@ struct MotionGoal {
     double speedMmPerS = 200; // Straight, Arc: the robot's centre, always positive
     double rateDegPerS = 90;  // Turn: always positive
 
-    // The allowed ranges, which the bridge checks and names in its errors.
-    static constexpr double kMaxDistanceMm = 10000;
+    // The allowed ranges, which the bridge checks and names in its errors:
+    // the classroom protocol's table (protocol/mqtt/classroom_protocol.json).
+    static constexpr double kMaxDistanceMm = classroom::goalField("straight", "distance").max;
     // A Create 2 holds its wheels' speeds in steps of 28.5 mm/s: one slower
     // than about 15 mm/s does not move it.
-    static constexpr double kMinSpeedMmPerS = 30;
-    static constexpr double kMaxWheelSpeedMmPerS = 500; // the OI's own limit for each wheel
-    static constexpr double kMaxAngleDeg = 3600;
-    static constexpr double kMinRateDegPerS = 15; // the wheels at 30 mm/s
+    static constexpr double kMinSpeedMmPerS = classroom::goalField("straight", "speed").min;
+    static constexpr double kMaxWheelSpeedMmPerS = classroom::kMaxWheelSpeedMmPerS; // the OI's own limit
+    static constexpr double kMaxAngleDeg = classroom::goalField("turn", "angle").max;
+    static constexpr double kMinRateDegPerS = classroom::goalField("turn", "rate").min; // the wheels at 30 mm/s
     // A turn's wheels at 500 mm/s, 117.5 mm from the centre.
-    static constexpr double kMaxRateDegPerS = 240;
-    static constexpr double kMinRadiusMm = 50;
-    static constexpr double kMaxRadiusMm = 10000;
+    static constexpr double kMaxRateDegPerS = classroom::goalField("turn", "rate").max;
+    static constexpr double kMinRadiusMm = classroom::goalField("arc", "radius").min;
+    static constexpr double kMaxRadiusMm = classroom::goalField("arc", "radius").max;
     // Speeding up and slowing down: the moves' own ramps, gentle enough for
     // every robot's wheels to follow, so that none overshoots.
-    static constexpr double kAccelerationMmPerS2 = 1000;
+    static constexpr double kAccelerationMmPerS2 = classroom::kAccelerationMmPerS2;
     // Moves start from and slow down to a creep (the Create 2's speed
     // controller holds steps of 28.5 mm/s: a slower one would not move it),
     // or the move's own speed if that is slower.
-    static constexpr double kCreepMmPerS = 30;
+    static constexpr double kCreepMmPerS = classroom::kCreepMmPerS;
 
     // The fastest the robot's centre may go along this arc: its outer wheel
     // at kMaxWheelSpeedMmPerS.
@@ -48,7 +53,10 @@ struct MotionGoal {
     double kinematicSeconds() const;
     // A move that has not ended by then will not (a robot pushing a wall):
     // twice its kinematic time and 2 s more.
-    double timeLimitSeconds() const { return 2 * kinematicSeconds() + 2; }
+    double timeLimitSeconds() const
+    {
+        return classroom::kTimeLimitFactor * kinematicSeconds() + classroom::kTimeLimitExtraS;
+    }
 };
 
 // Wheel speeds (mm/s), as Drive Direct asks for them.

@@ -23,6 +23,14 @@ std::uint8_t cliffBits(const oi::SensorSnapshot &frame)
     return bits;
 }
 
+bool charging(const oi::SensorSnapshot &frame)
+{
+    const oi::ChargingState state = frame.chargingState();
+    return frame.has(21)
+           && (state == oi::ChargingState::FullCharging || state == oi::ChargingState::Trickle
+               || state == oi::ChargingState::Reconditioning);
+}
+
 bool onCharger(const oi::SensorSnapshot &frame)
 {
     return frame.chargingSource(oi::ChargingSource::HomeBase)
@@ -30,6 +38,27 @@ bool onCharger(const oi::SensorSnapshot &frame)
 }
 
 } // namespace
+
+bool RobotMode::offTheFloor(const oi::SensorSnapshot &frame)
+{
+    return (frame.wheelDropLeft() && frame.wheelDropRight()) || frame.wheelDropCaster();
+}
+
+bool RobotMode::drivesWheels(oi::Command command)
+{
+    using C = oi::Command;
+    return command == C::Drive || command == C::DriveDirect || command == C::DrivePwm || command == C::PlayScript;
+}
+
+bool RobotMode::wheelsAsked(const oi::SensorSnapshot &frame)
+{
+    return frame.raw(39) != 0 || frame.raw(41) != 0 || frame.raw(42) != 0;
+}
+
+QString RobotMode::offTheFloorWords()
+{
+    return tr("the robot is off the floor: Full mode would drive its wheels in your hands");
+}
 
 bool RobotMode::darkFloorSignals(const oi::SensorSnapshot &frame)
 {
@@ -50,7 +79,7 @@ void RobotMode::asked(oi::Command command, const QDateTime &at)
     m_passiveOnChargerSinceAsked = 0;
     m_changedAt = at;
     // Asking again is the answer to what was shown: a new request starts afresh.
-    m_cause = Cause::None;
+    m_cause = oi::startsCleaning(command) ? Cause::OwnProgram : Cause::None;
 }
 
 void RobotMode::sent(oi::Command command, bool scriptStartsOne)
@@ -60,6 +89,25 @@ void RobotMode::sent(oi::Command command, bool scriptStartsOne)
         m_ownCommand = true;
     else if (command == oi::Command::Safe || command == oi::Command::Full)
         m_ownCommand = false;
+    if (command == oi::Command::Safe || command == oi::Command::Control)
+        m_unreported = oi::OiMode::Safe;
+    else if (command == oi::Command::Full)
+        m_unreported = oi::OiMode::Full;
+    else if (oi::entersPassive(command) || command == oi::Command::Power || command == oi::Command::Baud)
+        m_unreported = oi::OiMode::Passive;
+}
+
+oi::OiMode RobotMode::unreportedMode(const oi::SensorSnapshot &frame)
+{
+    // SCI: in Safe, a wheel drop or a powered charger stops the motors and
+    // reverts to Passive (a cliff does only while driving forward, which a
+    // frame does not show).
+    constexpr int kNotCharging = 0, kChargingError = 5;
+    const bool charger = frame.has(21) && frame.raw(21) != kNotCharging && frame.raw(21) != kChargingError;
+    if (m_unreported == oi::OiMode::Safe
+        && (frame.wheelDropLeft() || frame.wheelDropRight() || frame.wheelDropCaster() || charger))
+        m_unreported = oi::OiMode::Passive;
+    return m_unreported;
 }
 
 bool RobotMode::ignoresMotion() const
@@ -71,15 +119,23 @@ bool RobotMode::causeStillShows(const oi::SensorSnapshot &frame) const
 {
     return (m_cliffs & cliffBits(frame)) || (m_wheelDropLeft && frame.wheelDropLeft())
            || (m_wheelDropRight && frame.wheelDropRight()) || (m_wheelDropCaster && frame.wheelDropCaster())
-           || (m_charger && onCharger(frame));
+           || (m_charger && onCharger(frame)) || (m_lowBattery && !charging(frame));
 }
 
 bool RobotMode::observe(const oi::SensorSnapshot &frame, qint64 atMs)
 {
+    if (!frame.has(35) && !frame.robotProfile().packet(35)) {
+        oi::SensorSnapshot withMode = frame;
+        withMode.set(35, static_cast<std::int32_t>(unreportedMode(frame)));
+        return observe(withMode, atMs);
+    }
     if (!frame.has(35))
         return false;
     const oi::OiMode mode = frame.oiMode();
     const std::optional<oi::OiMode> before = m_reported;
+    // Under load, before a fall: the frame that shows Passive has the load off.
+    const std::optional<BatteryHealth::LowBattery> lowBefore = m_lowBefore;
+    m_lowBefore = mode == oi::OiMode::Safe || mode == oi::OiMode::Full ? BatteryHealth::nearlyFlat(frame) : std::nullopt;
     const Cause causeBefore = m_cause;
     if (before == mode) {
         // A safety reason lasts as long as what caused it.
@@ -94,6 +150,7 @@ bool RobotMode::observe(const oi::SensorSnapshot &frame, qint64 atMs)
             m_cliffs = 0;
             m_wheelDropLeft = m_wheelDropRight = m_wheelDropCaster = false;
             m_charger = true;
+            m_lowBattery.reset();
         }
         observeCharger(frame, atMs);
         return m_cause != causeBefore;
@@ -104,8 +161,8 @@ bool RobotMode::observe(const oi::SensorSnapshot &frame, qint64 atMs)
     observeCharger(frame, atMs);
     if (mode == oi::OiMode::Passive) {
         if (m_askPending && m_asked && oi::entersPassive(*m_asked)) {
-            m_cause = Cause::Asked;
-        } else if (before == oi::OiMode::Safe) {
+            m_cause = oi::startsCleaning(*m_asked) ? Cause::OwnProgram : Cause::Asked;
+        } else if (before == oi::OiMode::Safe || before == oi::OiMode::Full) {
             m_cause = Cause::Safety;
             m_changedAt = QDateTime::fromMSecsSinceEpoch(atMs);
             m_cliffs = cliffBits(frame);
@@ -120,6 +177,12 @@ bool RobotMode::observe(const oi::SensorSnapshot &frame, qint64 atMs)
             m_wheelDropRight = frame.wheelDropRight();
             m_wheelDropCaster = frame.wheelDropCaster();
             m_charger = onCharger(frame);
+            m_lowBattery.reset();
+            if (!m_cliffs && !m_wheelDropLeft && !m_wheelDropRight && !m_wheelDropCaster && !m_charger)
+                m_lowBattery = lowBefore ? lowBefore : BatteryHealth::nearlyFlat(frame);
+            // Full has no safety stops: it falls by itself only for its battery.
+            if (before == oi::OiMode::Full && !m_lowBattery)
+                m_cause = Cause::None;
         }
     }
     m_askPending = false;
@@ -156,7 +219,7 @@ QStringList RobotMode::causeKeys() const
         return {QStringLiteral("not_charging")};
     if (m_reported != oi::OiMode::Passive || m_cause == Cause::None)
         return {};
-    if (m_cause == Cause::Asked)
+    if (m_cause == Cause::Asked || m_cause == Cause::OwnProgram)
         return {QStringLiteral("asked")};
     QStringList keys{QStringLiteral("safety")};
     for (int i = 0; i < 4; ++i)
@@ -170,6 +233,8 @@ QStringList RobotMode::causeKeys() const
         keys << QStringLiteral("wheel_drop_caster");
     if (m_charger)
         keys << QStringLiteral("charger");
+    if (m_lowBattery)
+        keys << QStringLiteral("battery_low");
     return keys;
 }
 
@@ -194,6 +259,8 @@ QString RobotMode::causeWordsOf(const QStringList &keys)
         parts << tr("wheel drop (%1)").arg(wheels.join(tr(", ")));
     if (keys.contains(QLatin1String("charger")))
         parts << tr("charger");
+    if (keys.contains(QLatin1String("battery_low")))
+        parts << tr("battery nearly flat");
     if (keys.contains(QLatin1String("not_charging")))
         parts << tr("on the dock, not charging");
     return parts.join(tr(" and "));
@@ -216,7 +283,17 @@ QString RobotMode::reason() const
         return {};
     case Cause::Asked:
         return tr("You asked for Passive at %1.").arg(time);
+    case Cause::OwnProgram:
+        // Said for as long as it runs: the stop keys end it (TeleopController::stopAll()).
+        return m_asked == oi::Command::SeekDock ? tr("Seeking its dock (its own program) · Space stops it")
+               : m_asked == oi::Command::Demo   ? tr("Running a demo (its own program) · Space stops it")
+                                                : tr("Cleaning (its own program) · Space stops it");
     case Cause::Safety: {
+        if (m_lowBattery) {
+            QString words = BatteryHealth::nearlyFlatWords(*m_lowBattery);
+            words[0] = words[0].toUpper();
+            return tr("%1 (it fell to Passive at %2).").arg(words, time);
+        }
         const QString words = causeWordsOf(causeKeys());
         return words.isEmpty() ? tr("A safety stop dropped it to Passive at %1.").arg(time)
                                : tr("A %1 dropped it to Passive at %2.").arg(words, time);
@@ -227,7 +304,17 @@ QString RobotMode::reason() const
 
 QString RobotMode::shortReason() const
 {
+    if (m_cause == Cause::OwnProgram && m_reported == oi::OiMode::Passive)
+        return m_asked == oi::Command::SeekDock ? tr("seeking its dock")
+               : m_asked == oi::Command::Demo   ? tr("running a demo")
+                                                : tr("cleaning");
     return shortReasonOf(causeKeys());
+}
+
+QString RobotMode::advice() const
+{
+    const QString why = reason(), step = nextStep();
+    return why.isEmpty() || step.isEmpty() ? why : why + QLatin1Char(' ') + step;
 }
 
 QString RobotMode::shortReasonOf(const QStringList &causeKeys)
@@ -246,22 +333,23 @@ QString RobotMode::nextStep() const
 {
     if (m_cause == Cause::NotCharging && !ignoresMotion())
         return tr("Enter Passive to charge it, or drive it off the dock.");
-    if (!ignoresMotion())
-        return {};
+    if (!ignoresMotion() || m_cause == Cause::OwnProgram)
+        return {}; // a program of its own: reason() says how to stop it
     if (safeRefusedOnDock())
-        return tr("Use Full to drive it off the dock, or lift it off.");
+        return tr("Lift it off the dock, or drive it off in Full (Full does not stop at cliffs or wheel drops).");
     if (m_cause == Cause::Safety) {
-        // A robot that stops half over an edge reads like one on a dark rug:
-        // the words give both, the edge first.
+        // A robot that stops half over an edge reads like one on a dark rug,
+        // so the only advice is to carry it: Full would drive it off an edge.
         if (m_cliffs && m_darkFloor)
-            return tr("Carry it back from the edge, then Enter Safe. No edge there? Its cliff signals read %1 of "
-                      "4095, low but not the near 0 of a drop, and no wheel dropped: a dark rug or floor reads as "
-                      "a cliff. Drive it off in Full, or move it to a lighter floor.")
+            return tr("Carry it back from the edge, then Enter Safe. Its cliff signals read %1 of 4095, as over a "
+                      "dark rug: if you can see the floor under it, carry it to a lighter floor, then Enter Safe.")
                 .arg(m_cliffSignals);
         if (m_cliffs)
             return tr("Carry it back from the edge, then Enter Safe.");
         if (m_wheelDropLeft || m_wheelDropRight || m_wheelDropCaster)
             return tr("Put it back on its wheels, then Enter Safe.");
+        if (m_lowBattery)
+            return tr("Put it on its dock in Passive to charge it; it drives again once charged.");
     }
     return tr("Enter Safe to drive.");
 }

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "battery_health.h"
 #include "robot_profile.h"
 #include "sensor_snapshot.h"
 
@@ -24,8 +25,10 @@ public:
         None,      // nothing to explain
         Asked,     // a command the user sent put it in Passive
         Safety,    // Safe fell back to Passive by itself: a cliff, a wheel drop, the charger
-                   // (on the dock, at once: the robot refused Safe)
+                   // (on the dock, at once: the robot refused Safe); or Safe or Full
+                   // for none of those with the battery nearly flat
         NotCharging, // Safe or Full on the charger: the battery drains there
+        OwnProgram,  // a cleaning, dock search or demo the user asked for runs, in Passive
     };
     // Passive frames on the charger after Safe was asked before it counts as
     // refused: frames read before the robot had the command say Passive too.
@@ -69,13 +72,16 @@ public:
     // The cause as words a program reads, for the bridge's state
     // (`mode_cause`, docs/mqtt.md): "asked", or "safety" with any of
     // "cliff_left", "cliff_front_left", "cliff_front_right", "cliff_right",
-    // "wheel_drop_left", "wheel_drop_right", "wheel_drop_caster", "charger";
+    // "wheel_drop_left", "wheel_drop_right", "wheel_drop_caster", "charger",
+    // "battery_low";
     // or "not_charging" (Safe or Full on the dock). Empty when shortReason() is.
     QStringList causeKeys() const;
     // shortReason() of a robot whose causeKeys() are these, in this
     // program's language (a console showing another program's robot).
     // Words it does not know are left out.
     static QString shortReasonOf(const QStringList &causeKeys);
+    // reason() and nextStep() together, as every view shows them.
+    QString advice() const;
     // The one step that makes it work again, to go with reason():
     // "Carry it back from the edge, then Enter Safe." A cliff whose signals
     // read like a dark rug (darkFloorSignals()) says so, with the way off it.
@@ -85,6 +91,17 @@ public:
     // robot's threshold. Frames read: the cliff, its signal, the wheel drops.
     static constexpr int kDarkFloorSignalFrom = 100;
     static bool darkFloorSignals(const oi::SensorSnapshot &frame);
+    // Both wheels dropped, or the caster: picked up. Full mode ignores wheel
+    // drops and would drive its wheels in the hands holding it; every path
+    // that asks for motion in Full stops it, as the bridge does.
+    static bool offTheFloor(const oi::SensorSnapshot &frame);
+    // Commands that turn the drive wheels: Drive, Drive Direct, Drive PWM, and
+    // Play Script (a Create's script drives).
+    static bool drivesWheels(oi::Command command);
+    // "the robot is off the floor: Full mode would drive its wheels in your hands"
+    static QString offTheFloorWords();
+    // The robot reports wheel speeds asked of it (packets 39, 41, 42), by any path.
+    static bool wheelsAsked(const oi::SensorSnapshot &frame);
     // Why `command` cannot work in the mode reported now, or empty when it can.
     QString whyNot(oi::Command command) const;
     // Why a lesson goal reading `goalPackets` (packet keys) can no longer be
@@ -117,8 +134,17 @@ private:
     QString m_cliffSignals; // those signals in words: front left 260
     bool m_wheelDropLeft = false, m_wheelDropRight = false, m_wheelDropCaster = false;
     bool m_charger = false;
+    // Safe or Full fell with none of the above and the battery nearly flat
+    // (this frame, or the one before, under load).
+    std::optional<BatteryHealth::LowBattery> m_lowBattery;
+    std::optional<BatteryHealth::LowBattery> m_lowBefore; // the last frame's, in Safe or Full
     int m_passiveOnChargerSinceAsked = 0; // while Safe is asked
     std::optional<qint64> m_onChargerSinceMs; // in Safe or Full
     // Safe or Full on the charger long enough to warn (Cause::NotCharging).
     bool observeCharger(const oi::SensorSnapshot &frame, qint64 atMs);
+    // A robot that reports no mode (the SCI has no packet 35): the mode its
+    // commands put it in, as its document says, and Passive once Safe meets
+    // a wheel drop or the charger. The link's Start leaves it in Passive.
+    oi::OiMode m_unreported = oi::OiMode::Passive;
+    oi::OiMode unreportedMode(const oi::SensorSnapshot &frame);
 };

@@ -1,68 +1,31 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "robot_session.h"
 
+#include "stream_packets.h"
+
 #include "command_catalog.h"
 #include "command_encoder.h"
 #include "command_modes.h"
-#include "robot_link_thread.h"
+#include "battery_record.h"
+#include "motion_command.h"
+#include "robot_identity.h"
+#include "local_robot_port.h"
 
 #include <QDateTime>
 
 #include <algorithm>
+#include <cmath>
+#include <utility>
 #include <QSettings>
 
 RobotSession::RobotSession(QObject *parent)
     : QObject(parent),
-      m_link(std::make_unique<oilink::RobotLinkThread>()),
-      m_markers([this](const oilink::MarkerEdit &edit) { m_link->markRecording(edit); })
+      m_link(std::make_unique<oilink::LocalRobotPort>()),
+      m_port(m_link.get()),
+      m_markers([this](const oilink::MarkerEdit &edit) { m_port->post(oilink::request::MarkRecording{edit}); })
 {
     oilink::registerLinkMetaTypes();
-    connect(m_link.get(), &oilink::RobotLinkThread::snapshot, this, &RobotSession::onSnapshot);
-    connect(m_link.get(), &oilink::RobotLinkThread::streamStarted, this,
-            [this](oi::ProfileId profile, int, const QList<int> &packets) {
-                onStreamStarted(profile);
-                const oi::RobotProfile &p = oi::profile(profile);
-                m_readsAngleApart = profile == oi::ProfileId::Create1
-                                    && std::none_of(packets.begin(), packets.end(), [&](int id) {
-                                           const oi::PacketGroup *g = p.group(id);
-                                           return g ? g->first <= 20 && 20 <= g->last : id == 20;
-                                       });
-                m_angleAskedAt.reset();
-                m_requestedSpeeds.reset();
-                m_angleSchedule.restart(m_lastReadSeconds);
-            });
-    connect(m_link.get(), &oilink::RobotLinkThread::profileAssumed, this, &RobotSession::onProfileAssumed);
-    connect(m_link.get(), &oilink::RobotLinkThread::modeReportedOneHigh, this, [this] {
-        m_firmware.noteModeReportedOneHigh();
-        emit errorOccurred(tr("This robot reports its mode one too high (Passive as Safe, as some Wi-Fi Roomba 600s "
-                              "do): the true mode is shown from now on, and remembered for this robot."));
-    });
-    connect(m_link.get(), &oilink::RobotLinkThread::stateChanged, this, [this](oilink::LinkState state) {
-        m_state = state;
-        m_teleop.linkStateChanged(state);
-        emit stateChanged(state);
-    });
-    connect(m_link.get(), &oilink::RobotLinkThread::statistics, this, [this](const oilink::LinkStats &stats) {
-        m_stats = stats;
-        emit statisticsChanged(stats);
-    });
-    connect(m_link.get(), &oilink::RobotLinkThread::errorOccurred, this, &RobotSession::errorOccurred);
-    connect(m_link.get(), &oilink::RobotLinkThread::rawBytesSent, this, &RobotSession::onBytesSent);
-    connect(m_link.get(), &oilink::RobotLinkThread::rawBytesReceived, this, &RobotSession::onBytesReceived);
-    connect(m_link.get(), &oilink::RobotLinkThread::sensorReply, this, &RobotSession::onSensorReply);
-    connect(m_link.get(), &oilink::RobotLinkThread::scriptReply, this, &RobotSession::scriptShown);
-    connect(m_link.get(), &oilink::RobotLinkThread::scriptFailed, this, &RobotSession::scriptFailed);
-    connect(m_link.get(), &oilink::RobotLinkThread::connectionCheckStep, this, &RobotSession::connectionCheckStep);
-    connect(m_link.get(), &oilink::RobotLinkThread::connectionChecked, this, &RobotSession::connectionChecked);
-    connect(m_link.get(), &oilink::RobotLinkThread::recordingStatus, this, [this](const oilink::RecordingStatus &s) {
-        if (s.active && (!m_recording.active || s.path != m_recording.path))
-            m_markers.recordingStarted(s.path, s.startedSeconds);
-        else if (!s.active && m_recording.active)
-            m_markers.recordingStopped();
-        m_recording = s;
-        emit recordingStatus(s);
-    });
-    connect(m_link.get(), &oilink::RobotLinkThread::replayStatus, this, &RobotSession::onReplayStatus);
+    connect(m_port, &oilink::RobotPort::event, this, &RobotSession::onLinkEvent);
     connect(&m_firmware, &RobotFirmware::changed, this, [this](const QString &release) {
         m_odometry.setCorrections(m_firmware.corrections());
         emit firmwareChanged(release);
@@ -70,6 +33,58 @@ RobotSession::RobotSession(QObject *parent)
 }
 
 RobotSession::~RobotSession() { closeAndWait(); }
+
+void RobotSession::onLinkEvent(const oilink::LinkEvent &linkEvent)
+{
+    namespace event = oilink::event;
+    std::visit(
+        oilink::Overloaded{
+            [this](const event::Frame &e) { onSnapshot(e.snapshot, e.readSeconds); },
+            [this](const event::BytesReceived &e) { onBytesReceived(e.bytes, e.readSeconds); },
+            [this](const event::BytesSent &e) { onBytesSent(e.bytes, e.commands, e.sentSeconds); },
+            [this](const event::State &e) {
+                m_state = e.state;
+                m_teleop.linkStateChanged(e.state);
+                emit stateChanged(e.state);
+            },
+            [this](const event::Statistics &e) {
+                m_stats = e.stats;
+                emit statisticsChanged(e.stats);
+            },
+            [this](const event::StreamStarted &e) {
+                onStreamStarted(e.profile);
+                m_readsAngleApart =
+                    oilink::readsAngleApart(oi::profile(e.profile), {e.packets.constData(), std::size_t(e.packets.size())});
+                m_angleAskedAt.reset();
+                m_requestedSpeeds.reset();
+                m_angleSchedule.restart(m_lastReadSeconds);
+            },
+            [this](const event::ProfileAssumed &e) { onProfileAssumed(e.assumed); },
+            [this](const event::ModeReportedOneHigh &) {
+                m_firmware.noteModeReportedOneHigh();
+                emit errorOccurred(tr("This robot reports its mode one too high (Passive as Safe, as some Wi-Fi Roomba "
+                                      "600s do): the true mode is shown from now on, and remembered for this robot."));
+            },
+            [this](const event::SensorReply &e) { onSensorReply(e.reply); },
+            [this](const event::ScriptReply &e) { emit scriptShown(e.script); },
+            [this](const event::ScriptFailed &e) { emit scriptFailed(e.message); },
+            [this](const event::CheckStep &e) { emit connectionCheckStep(e.step); },
+            [this](const event::ConnectionChecked &e) { emit connectionChecked(e.report); },
+            [](const event::RobotText &) {},
+            [this](const event::Error &e) { emit errorOccurred(e.message); },
+            [this](const event::Recording &e) {
+                const oilink::RecordingStatus &s = e.status;
+                if (s.active && (!m_recording.active || s.path != m_recording.path))
+                    m_markers.recordingStarted(s.path, s.startedSeconds);
+                else if (!s.active && m_recording.active)
+                    m_markers.recordingStopped();
+                m_recording = s;
+                emit recordingStatus(s);
+            },
+            [this](const event::Replay &e) { onReplayStatus(e.status); },
+        },
+        linkEvent);
+}
 
 void RobotSession::setName(const QString &name)
 {
@@ -96,34 +111,57 @@ void RobotSession::setLinkClock(oilink::Clock &clock)
 {
     // One clock for every timed rule of this robot.
     m_link->setClock(clock);
+    m_linkClock = &clock;
     m_teleop.setClock(clock);
     m_firmware.setClock(clock);
 }
 
 void RobotSession::setLinkOnThisThread(bool here) { m_link->setOnThisThread(here); }
 
-void RobotSession::querySensors(const QList<int> &packetIds) { m_link->querySensors(packetIds); }
+void RobotSession::setFramesAtReadTime(bool atReadTime) { m_link->setFramesAtReadTime(atReadTime); }
 
-void RobotSession::showScript() { m_link->showScript(); }
+void RobotSession::takeQueuedFrames(int nextWithinMs) { m_link->deliverQueuedNow(nextWithinMs); }
 
-void RobotSession::checkConnection() { m_link->checkConnection(); }
+quint64 RobotSession::changedFrameCount() const { return m_link->changedFrameCount(); }
 
-void RobotSession::startRecording(const QString &path) { m_link->startRecording(path); }
+void RobotSession::callOnChangedFrame(quint64 seen, std::function<void()> call)
+{
+    m_link->callOnChangedFrame(seen, std::move(call));
+}
 
-void RobotSession::stopRecording() { m_link->stopRecording(); }
+void RobotSession::querySensors(const QList<int> &packetIds) { m_port->post(oilink::request::QuerySensors{packetIds}); }
 
-void RobotSession::controlReplay(const oilink::ReplayCommand &command) { m_link->controlReplay(command); }
+void RobotSession::showScript() { m_port->post(oilink::request::ShowScript{}); }
+
+void RobotSession::checkConnection() { m_port->post(oilink::request::CheckConnection{}); }
+void RobotSession::wake() { m_port->post(oilink::request::Wake{}); }
+
+void RobotSession::startRecording(const QString &path) { m_port->post(oilink::request::StartRecording{path}); }
+
+void RobotSession::stopRecording() { m_port->post(oilink::request::StopRecording{}); }
+
+void RobotSession::controlReplay(const oilink::ReplayCommand &command) { m_port->post(oilink::request::ControlReplay{command}); }
 
 void RobotSession::connectTo(const oilink::LinkSettings &settings)
 {
-    if (m_connected)
-        m_link->close();
+    if (m_connected) {
+        m_port->post(oilink::request::Close{});
+        keepBatteryHealth(); // under the robot it measured
+    }
     m_settings = settings;
     // Another robot's corrections would be wrong here; this one's come back.
     m_firmware.connectingTo(settings);
     {
         QSettings kept;
         setCalibration(loadWheelCalibration(kept, settings));
+        m_health.restart();
+        m_health.setKept(loadBatteryRecord(kept, settings).measurements);
+        m_healthKept = {};
+        m_percentBeforeBoot.reset();
+        m_textTail.clear();
+        m_chargingFaultSaid = false;
+        m_healthCheckedAt = -1e9;
+        m_lowBatteryWarnedAt = -1e9;
     }
     m_connected = true;
     m_connectedAtMs = QDateTime::currentMSecsSinceEpoch();
@@ -140,7 +178,10 @@ void RobotSession::connectTo(const oilink::LinkSettings &settings)
     // A robot known to report its mode one too high is corrected from its first frame.
     oilink::LinkSettings linkSettings = settings;
     linkSettings.modeReportedOneHigh = linkSettings.modeReportedOneHigh || m_firmware.modeReportedOneHigh();
-    m_link->open(linkSettings);
+    // Read times count from now, when m_connectedAtMs was taken: a frame's
+    // epoch time (the live data's, the exports') is when it was read.
+    linkSettings.readTimeZeroNs = m_linkClock->nowNs();
+    m_port->post(oilink::request::Open{linkSettings});
 }
 
 bool RobotSession::applyCalibration(const oi::WheelGeometry &wheels)
@@ -180,8 +221,9 @@ void RobotSession::disconnectFromRobot()
 {
     if (!m_connected)
         return;
+    keepBatteryHealth();
     m_connected = false;
-    m_link->close();
+    m_port->post(oilink::request::Close{});
 }
 
 void RobotSession::closeAndWait()
@@ -190,8 +232,10 @@ void RobotSession::closeAndWait()
     // shutdown sequence; the link's close() then stops the robot and leaves it
     // in Passive (ERRATA 17).
     m_teleop.stopBeforeQuit();
-    if (m_link->isRunning())
-        m_link->closeAndWait();
+    if (m_port->isRunning())
+        m_port->closeAndWait();
+    if (m_connected)
+        keepBatteryHealth();
     m_connected = false;
 }
 
@@ -239,6 +283,13 @@ bool RobotSession::send(const std::vector<oi::OiCommand> &commands)
 {
     if (!m_connected || commands.empty())
         return false;
+    // Picked up in Full, which ignores wheel drops: no wheel turns in the hands holding it.
+    if (m_mode.reported() == oi::OiMode::Full && RobotMode::offTheFloor(m_latest)
+        && std::any_of(commands.begin(), commands.end(),
+                       [](const oi::OiCommand &c) { return RobotMode::drivesWheels(c.command); })) {
+        emit errorOccurred(tr("Not sent: %1. Put it down on the floor first.").arg(RobotMode::offTheFloorWords()));
+        return false;
+    }
     // Judged whole here, so that the widget hears at once; the link encodes.
     const oi::CommandEncoder encoder(*m_profile);
     for (const oi::OiCommand &command : commands)
@@ -253,8 +304,19 @@ bool RobotSession::sendMotion(const std::vector<oi::OiCommand> &commands)
 {
     if (!m_connected || commands.empty())
         return false;
+    // Motion on a nearly flat pack: said before it goes, at most every half minute.
+    constexpr double kWarnEverySeconds = 30;
+    const bool moves = std::any_of(commands.begin(), commands.end(), [](const oi::OiCommand &c) {
+        const std::optional<MotionCommand> motion = MotionCommand::fromCommand(c);
+        return motion && !motion->isStop();
+    });
+    if (moves && m_lastReadSeconds - m_lowBatteryWarnedAt >= kWarnEverySeconds)
+        if (const QString low = lowBatteryWarning(); !low.isEmpty()) {
+            m_lowBatteryWarnedAt = m_lastReadSeconds;
+            emit errorOccurred(tr("Motion sent with the %1.").arg(low));
+        }
     noteAsked(commands);
-    m_link->send(commands);
+    m_port->post(oilink::request::Send{commands});
     return true;
 }
 
@@ -352,6 +414,7 @@ void RobotSession::onSnapshot(const oi::SensorSnapshot &snapshot, double readSec
             emit errorOccurred(m_batteryDoubt);
         }
     }
+    observeBattery(frame, readSeconds);
     m_latest.merge(frame);
     ++m_snapshotCount;
     // Every frame once: distance and angle are increments since the last one.
@@ -363,9 +426,19 @@ void RobotSession::onSnapshot(const oi::SensorSnapshot &snapshot, double readSec
         noteRequestedSpeeds(frame, readSeconds);
     readAngleIfDue(readSeconds);
     // The time of day the frame was read, for "dropped it to Passive at 12:03:04".
-    const bool modeChange = m_mode.observe(frame, m_connectedAtMs + qint64(readSeconds * 1000));
-    // Safe dropping to Passive by itself (a cliff, a wheel drop) ends the motion.
+    const bool modeChange = m_mode.observe(frame, atLinkTime(readSeconds));
+    // Safe dropping to Passive by itself (a cliff, a wheel drop) ends the motion,
+    // and so does being picked up in Full (the teleop's rule).
     m_teleop.checkMode();
+    // Wheel speeds asked by another path (a script, a command sent by hand)
+    // drive on in the hands holding it: stopped once, as the bridge does.
+    const bool offTheFloor = m_mode.reported() == oi::OiMode::Full && RobotMode::offTheFloor(m_latest);
+    if (offTheFloor && RobotMode::wheelsAsked(m_latest) && !m_teleop.isMoving() && !std::exchange(m_stoppedOffTheFloor, true)) {
+        m_teleop.stopAll(); // a Create's script is ended too
+        emit errorOccurred(tr("Motion stopped: %1. Put it down on the floor first.").arg(RobotMode::offTheFloorWords()));
+    }
+    if (!offTheFloor)
+        m_stoppedOffTheFloor = false;
     if (modeChange)
         emit modeChanged();
     emit frameReceived(readSeconds, frame);
@@ -380,7 +453,7 @@ void RobotSession::readAngleIfDue(double readSeconds)
         || !m_angleSchedule.due(readSeconds))
         return;
     m_angleAskedAt = readSeconds;
-    m_link->querySensors({20});
+    m_port->post(oilink::request::QuerySensors{{20}, true}); // a reply lost is asked for again, above
 }
 
 void RobotSession::noteRequestedSpeeds(const oi::SensorSnapshot &frame, double readSeconds)
@@ -422,20 +495,90 @@ void RobotSession::onReplayStatus(const oilink::ReplayStatus &status)
     emit replayStatus(status);
 }
 
-void RobotSession::onBytesSent(const QByteArray &bytes, const std::vector<oi::OiCommand> &commands)
+void RobotSession::onBytesSent(const QByteArray &bytes, const std::vector<oi::OiCommand> &commands, double sentSeconds)
 {
-    const qint64 now = QDateTime::currentMSecsSinceEpoch();
+    const qint64 now = atLinkTime(sentSeconds);
     m_recentBytes.append(true, bytes, now);
     emit commandsSent(commands, now);
     emit bytesSent(bytes, now);
 }
 
-void RobotSession::onBytesReceived(const QByteArray &bytes)
+void RobotSession::onBytesReceived(const QByteArray &bytes, double readSeconds)
 {
     m_firmware.watchReceived(bytes);
-    const qint64 now = QDateTime::currentMSecsSinceEpoch();
+    watchBootText(bytes);
+    // When the link read them, not when the window took them in: frames
+    // come to the window in batches at the display's pace.
+    const qint64 now = atLinkTime(readSeconds);
     m_recentBytes.append(false, bytes, now);
     emit bytesReceived(bytes, now);
+}
+
+QString RobotSession::lowBatteryWarning() const
+{
+    if (m_mode.causeKeys().contains(QLatin1String("battery_low")))
+        return m_mode.reason();
+    if (const std::optional<BatteryHealth::LowBattery> low = BatteryHealth::nearlyFlat(m_latest))
+        return BatteryHealth::nearlyFlatWords(*low);
+    return {};
+}
+
+void RobotSession::watchBootText(const QByteArray &bytes)
+{
+    static const QByteArray kReseeded = QByteArrayLiteral("estimate-battery-level-from-voltage");
+    const QByteArray seen = m_textTail + bytes;
+    m_textTail = seen.right(kReseeded.size() - 1);
+    if (!seen.contains(kReseeded))
+        return;
+    // The gauge starts again from the voltage: a jump in the charge now is
+    // the robot's new guess, not a bad reading.
+    m_health.bootTextSeen();
+    m_battery.reset();
+    m_percentBeforeBoot = m_latest.batteryPercent();
+    emit batteryHealthChanged();
+}
+
+void RobotSession::observeBattery(const oi::SensorSnapshot &frame, double readSeconds)
+{
+    const bool estimated = m_health.estimatedFromVoltage();
+    m_health.observe(frame, readSeconds);
+    const bool fault = frame.has(21) && frame.chargingState() == oi::ChargingState::Fault;
+    if (fault && !m_chargingFaultSaid)
+        emit errorOccurred(BatteryHealth::chargingFaultWords());
+    m_chargingFaultSaid = m_chargingFaultSaid || fault;
+    if (m_percentBeforeBoot && frame.batteryPercent()) {
+        const double before = *m_percentBeforeBoot, after = *frame.batteryPercent();
+        m_percentBeforeBoot.reset();
+        if (before - after >= BatteryCheck::kJumpPercent)
+            emit errorOccurred(tr("The charge fell from %1 % to %2 % as the robot guessed it again from its voltage at "
+                                  "boot. A pack that reads full on the charger and much lower under load is worn: see "
+                                  "Battery in the gauges.")
+                                   .arg(std::lround(before))
+                                   .arg(std::lround(after)));
+    }
+    // Looked at once a second; kept when it has learned something.
+    // (A replay's time can go back.)
+    if (std::abs(readSeconds - m_healthCheckedAt) < 1 && estimated == m_health.estimatedFromVoltage())
+        return;
+    m_healthCheckedAt = readSeconds;
+    const BatteryMeasurement now = m_health.measurement();
+    if (BatteryHealth::judge(now) != BatteryHealth::judge(m_healthKept)
+        || now.cycleSeen >= m_healthKept.cycleSeen + 0.02
+        || now.resistanceSamples >= m_healthKept.resistanceSamples + 10)
+        keepBatteryHealth();
+    emit batteryHealthChanged();
+}
+
+void RobotSession::keepBatteryHealth()
+{
+    const BatteryMeasurement now = m_health.measurement();
+    // A recording is not the robot now; nothing measured is nothing to keep.
+    if (m_settings.transport == oilink::TransportKind::Replay || BatteryHealth::judge(now) == BatteryCondition::Unknown)
+        return;
+    m_healthKept = now;
+    m_health.keep(now);
+    QSettings kept;
+    saveBatteryRecord(kept, BatteryRecord{robotIdentity(m_settings), m_name, m_health.kept()});
 }
 
 #include "moc_robot_session.cpp"

@@ -7,6 +7,7 @@
 #include "robot_firmware.h"
 #include "connection_report.h"
 #include "link_clock.h"
+#include "link_mailbox.h"
 #include "link_settings.h"
 #include "link_status.h"
 #include "recording_markers.h"
@@ -14,6 +15,7 @@
 #include "robot_mode.h"
 #include "robot_markers.h"
 #include "battery_check.h"
+#include "battery_health.h"
 #include "robot_odometry.h"
 #include "sensor_history.h"
 #include "sensor_snapshot.h"
@@ -28,11 +30,13 @@
 #include <QString>
 
 #include <array>
+#include <functional>
 #include <memory>
 #include <optional>
 
 namespace oilink {
-class RobotLinkThread;
+class LocalRobotPort;
+class RobotPort;
 } // namespace oilink
 
 // One robot, everything that belongs to it, on the GUI thread: its link (on a
@@ -67,9 +71,19 @@ public:
     // first connectTo().
     void setLinkClock(oilink::Clock &clock);
     // The link on this session's thread rather than a worker of its own
-    // (RobotLinkThread::setOnThisThread), for a program that serves one
+    // (LocalRobotPort::setOnThisThread), for a program that serves one
     // robot and little else. Before the first connectTo().
     void setLinkOnThisThread(bool here);
+    // frameReceived() for each frame when the link read it, rather than in
+    // the display's batches: for the live data server. Any time.
+    void setFramesAtReadTime(bool atReadTime);
+    // The display's pacing, for this robot's frames (LocalRobotPort): the
+    // frames that wait, taken at the display's tick, with the next timed
+    // delivery held back `nextWithinMs`; the count of frames that changed;
+    // `call` once at the next change since `seen`.
+    void takeQueuedFrames(int nextWithinMs);
+    quint64 changedFrameCount() const;
+    void callOnChangedFrame(quint64 seen, std::function<void()> call);
 
     void connectTo(const oilink::LinkSettings &settings);
     void disconnectFromRobot();
@@ -79,6 +93,8 @@ public:
     bool isConnected() const { return m_connected; }
     // When connectTo() was last called, in ms since the epoch (as bytes are stamped).
     qint64 connectedAtMs() const { return m_connectedAtMs; }
+    // A time on the link's read clock (seconds since connectTo) as ms since the epoch.
+    qint64 atLinkTime(double linkSeconds) const { return m_connectedAtMs + qint64(linkSeconds * 1000); }
     // The last bytes each way, for the inspector when this robot is selected.
     const RecentBytes &recentBytes() const { return m_recentBytes; }
     // Where the robot is (or was, or will be) connected.
@@ -117,6 +133,14 @@ public:
     // Why a battery reading was left out (BatteryCheck), said once a
     // connection as errorOccurred(); empty while every reading could be true.
     const QString &batteryDoubt() const { return m_batteryDoubt; }
+    // How worn this robot's pack is (BatteryHealth): measured on this
+    // connection, or kept from an earlier one (under its identity).
+    BatteryHealthReport batteryHealth() const { return m_health.report(); }
+    const BatteryHealth &batteryHealthModel() const { return m_health; }
+    // The battery is nearly flat (its gauge or voltage, or Safe or Full fell
+    // for it and it has not charged since): the words to warn motion with,
+    // or empty.
+    QString lowBatteryWarning() const;
     // A Create 1 whose stream leaves out its angle (20), which loses its
     // fractions on every read: the session asks for it now and then
     // (oi::AngleReadSchedule), and each reply turns the odometry.
@@ -128,6 +152,9 @@ public:
     // Finds out through the link why no valid data comes; the link resumes
     // streaming afterwards. Answers with connectionChecked().
     void checkConnection();
+    // A BRC pulse through the link (RobotLink::wake): for a robot switched
+    // off at its power button (LinkStats::switchedOff), or asleep.
+    void wake();
 
     const oi::RobotProfile &robotProfile() const override { return *m_profile; }
     // False while the link has found a Roomba 500 or a Create 2 (they answer
@@ -214,6 +241,8 @@ signals:
     void firmwareChanged(const QString &release);
     // calibration() changed: applied, reset, or restored for another robot.
     void calibrationChanged();
+    // batteryHealth() changed: a verdict, its figures, or the estimate's caveat.
+    void batteryHealthChanged();
     void errorOccurred(const QString &message);
     // The typed commands the link sent, just before their bytes (bytesSent).
     void commandsSent(const std::vector<oi::OiCommand> &commands, qint64 msecs);
@@ -236,6 +265,7 @@ private:
     // The teleop's motion and stops (DriveTarget): straight to the link,
     // which refuses (and says so) what the profile does not allow.
     bool sendMotion(const std::vector<oi::OiCommand> &commands) override;
+    void onLinkEvent(const oilink::LinkEvent &event);
     void onSnapshot(const oi::SensorSnapshot &snapshot, double readSeconds);
     void onStreamStarted(oi::ProfileId profile);
     void onSensorReply(const oi::SensorSnapshot &reply);
@@ -243,21 +273,28 @@ private:
     void noteRequestedSpeeds(const oi::SensorSnapshot &frame, double readSeconds);
     void onProfileAssumed(oi::ProfileId assumed);
     void setProfileAssumed(bool assumed);
-    void onBytesSent(const QByteArray &bytes, const std::vector<oi::OiCommand> &commands);
+    void onBytesSent(const QByteArray &bytes, const std::vector<oi::OiCommand> &commands, double sentSeconds);
     void noteAsked(const std::vector<oi::OiCommand> &commands);
-    void onBytesReceived(const QByteArray &bytes);
+    void onBytesReceived(const QByteArray &bytes, double readSeconds);
     void onReplayStatus(const oilink::ReplayStatus &status);
     void resetHistory();
     void setCalibration(const std::optional<WheelCalibration> &calibration);
+    void observeBattery(const oi::SensorSnapshot &frame, double readSeconds);
+    void keepBatteryHealth();
+    void watchBootText(const QByteArray &bytes);
 
     QString m_name;
     quint32 m_colourRgba = 0;
     // Behind a pointer, so that the session's users need not see the link.
-    std::unique_ptr<oilink::RobotLinkThread> m_link;
+    std::unique_ptr<oilink::LocalRobotPort> m_link;
+    // The robot, as this model reaches it: requests in, events out.
+    oilink::RobotPort *m_port;
     RobotMarkers m_markers; // writes its edits into the link's recording
     oilink::LinkSettings m_settings;
     bool m_connected = false;
+    bool m_stoppedOffTheFloor = false; // picked up in Full with its wheels asked to turn: stopped
     qint64 m_connectedAtMs = 0;
+    oilink::Clock *m_linkClock = &oilink::Clock::steady();
     const oi::RobotProfile *m_profile = &oi::profile(oi::ProfileId::Create2);
     bool m_profileAssumed = false;
     oi::SensorSnapshot m_latest;
@@ -276,6 +313,13 @@ private:
     RobotOdometry m_odometry;
     BatteryCheck m_battery;
     QString m_batteryDoubt;
+    BatteryHealth m_health;
+    BatteryMeasurement m_healthKept;      // what was last kept of this connection
+    double m_healthCheckedAt = -1;        // readSeconds of the last look at it
+    QByteArray m_textTail;                // the end of the last bytes, for boot text split between reads
+    std::optional<double> m_percentBeforeBoot; // the charge shown as the robot rebooted
+    double m_lowBatteryWarnedAt = -1e9;   // readSeconds
+    bool m_chargingFaultSaid = false;     // on this connection
     bool m_readsAngleApart = false;
     oi::AngleReadSchedule m_angleSchedule;
     std::optional<double> m_angleAskedAt; // a reading asked for and not yet answered

@@ -11,7 +11,7 @@ constexpr auto kArray = "robots";
 std::optional<oi::ProfileId> profileFrom(const QVariant &value, bool *ok)
 {
     const int id = value.isValid() ? value.toInt() : -1;
-    *ok = id >= -1 && id <= int(oi::ProfileId::Create1);
+    *ok = id == -1 || oi::isProfileId(id);
     if (id < 0 || !*ok)
         return std::nullopt;
     return oi::ProfileId(id);
@@ -53,6 +53,8 @@ QList<SavedRobot> loadSavedRobots(QSettings &settings)
                                        settings.value("virtualWheelBaseMm", oi::kWheelBaseMm).toDouble()};
         if (wheels.isValid())
             r.link.virtualWheels = wheels;
+        r.link.virtualBatteryFadePercent = settings.value("virtualBatteryFadePercent", 0).toDouble();
+        r.link.virtualBatteryResistanceMohm = settings.value("virtualBatteryResistanceMohm", 250).toDouble();
         robots << r;
     }
     settings.endArray();
@@ -83,6 +85,8 @@ void saveRobots(QSettings &settings, const QList<SavedRobot> &robots)
         settings.setValue("virtualLeftWheelMm", r.link.virtualWheels.leftDiameterMm);
         settings.setValue("virtualRightWheelMm", r.link.virtualWheels.rightDiameterMm);
         settings.setValue("virtualWheelBaseMm", r.link.virtualWheels.wheelBaseMm);
+        settings.setValue("virtualBatteryFadePercent", r.link.virtualBatteryFadePercent);
+        settings.setValue("virtualBatteryResistanceMohm", r.link.virtualBatteryResistanceMohm);
     }
     settings.endArray();
 }

@@ -44,7 +44,7 @@ void TeleopController::requestMotion(const MotionCommand &command)
         return;
     }
     checkMode();
-    if (m_passive) {
+    if (m_passive || offTheFloorInFull()) {
         m_pending->stop();
         emit motionRefused(whyNoMotion());
         return;
@@ -65,7 +65,8 @@ void TeleopController::requestMotion(const MotionCommand &command)
 
 void TeleopController::sendPending()
 {
-    if (m_wanted.isStop() || m_wanted == m_sent || m_passive || m_state != oilink::LinkState::Streaming)
+    if (m_wanted.isStop() || m_wanted == m_sent || m_passive || m_state != oilink::LinkState::Streaming
+        || offTheFloorInFull())
         return;
     sendMotion(m_wanted);
 }
@@ -74,7 +75,10 @@ bool TeleopController::sendMotion(const MotionCommand &command)
 {
     // Typed, and encoded once by the link; a command this robot lacks is
     // refused here, where the input hears of it.
-    oi::OiCommand typed = command.toCommand();
+    const oi::RobotProfile &profile = m_robot.robotProfile();
+    // Measured moves and calibration ask each wheel's speed; the SCI has only Drive.
+    const bool noDriveDirect = command.kind == MotionCommand::Kind::DriveDirect && !profile.has(oi::Command::DriveDirect);
+    oi::OiCommand typed = noDriveDirect ? command.asDrive(oi::RobotProfile::kSciWheelBaseMm).toCommand() : command.toCommand();
     if (const std::optional<oi::OiError> refused = oi::CommandEncoder(m_robot.robotProfile()).refuse(typed.command)) {
         emit motionRefused(QString::fromStdString(refused->describe()));
         return false;
@@ -87,13 +91,20 @@ bool TeleopController::sendMotion(const MotionCommand &command)
     return true;
 }
 
+bool TeleopController::offTheFloorInFull() const
+{
+    return m_robot.mode().reported() == oi::OiMode::Full && RobotMode::offTheFloor(m_robot.latest());
+}
+
 QString TeleopController::whyNoMotion() const
 {
+    if (offTheFloorInFull())
+        return tr("Not driving: %1. Put it down on the floor to drive.").arg(RobotMode::offTheFloorWords());
     if (m_state != oilink::LinkState::Streaming || !m_robot.mode().reported())
         return tr("Not driving: no live data from the robot, so nobody could see it move. Wait until it streams.");
     const RobotMode &mode = m_robot.mode();
     if (!mode.reason().isEmpty())
-        return tr("Not driving: %1 %2").arg(mode.reason(), mode.nextStep());
+        return tr("Not driving: %1").arg(mode.advice());
     return tr("Not driving: the robot is in Passive mode and ignores motion. Press Enter Safe to drive.");
 }
 
@@ -153,6 +164,13 @@ void TeleopController::stopBeforeQuit()
 
 void TeleopController::checkMode()
 {
+    // Picked up in Full, which ignores wheel drops: the wheels would turn in
+    // the hands holding it. Stopped here, as the bridge does.
+    if (isMoving() && offTheFloorInFull()) {
+        sendStop(false);
+        emit motionStopped();
+        emit motionRefused(whyNoMotion());
+    }
     const bool passive = robotIgnoresMotion();
     if (passive == m_passive)
         return;

@@ -20,6 +20,8 @@
 //    the link drops, and before quitting.
 //  - In Passive (or Off) mode the robot ignores motion, so motion is refused
 //    and passiveChanged(true) lets the input offer Safe mode instead.
+//  - In Full mode with the robot off the floor (RobotMode::offTheFloor())
+//    motion is stopped and refused, and motionRefused() says why.
 class TeleopController : public QObject {
     Q_OBJECT
 public:
@@ -75,6 +77,8 @@ signals:
     void motionRequested(const MotionCommand &command);
 
 private:
+    // Full mode, both wheels (or the caster) dropped: RobotMode::offTheFloor().
+    bool offTheFloorInFull() const;
     void sendPending();
     bool sendMotion(const MotionCommand &command);
     // Sends stopMotion(); with `always`, even when nothing is moving.

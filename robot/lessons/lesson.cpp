@@ -6,9 +6,6 @@
 
 namespace {
 
-constexpr oi::ProfileId kProfiles[] = {oi::ProfileId::Roomba500, oi::ProfileId::Create2,
-                                       oi::ProfileId::Create1};
-
 void collectPackets(const LessonGoal &goal, QStringList &out)
 {
     if (!goal.packet.isEmpty() && !out.contains(goal.packet))
@@ -60,7 +57,7 @@ const oi::PacketInfo *packetByKey(const oi::RobotProfile &profile, const QString
 
 bool isPacketKey(const QString &key)
 {
-    for (oi::ProfileId id : kProfiles)
+    for (oi::ProfileId id : oi::allProfiles())
         if (packetByKey(oi::profile(id), key))
             return true;
     return false;

@@ -36,6 +36,25 @@ QString quoted(const QJsonValue &v)
     return QString::fromUtf8(QJsonDocument(QJsonArray{v}).toJson(QJsonDocument::Compact)).mid(1).chopped(1);
 }
 
+// A lesson names its robots by their exact keys, not by aliases.
+bool isProfileKey(const QString &key)
+{
+    for (oi::ProfileId id : oi::allProfiles())
+        if (key == QLatin1String(oi::profile(id).key))
+            return true;
+    return false;
+}
+
+// "roomba500, create2 or create1".
+QString profileKeys()
+{
+    QStringList keys;
+    for (oi::ProfileId id : oi::allProfiles())
+        keys << QLatin1String(oi::profile(id).key);
+    const QString last = keys.takeLast();
+    return keys.isEmpty() ? last : LessonFile::tr("%1 or %2").arg(keys.join(QStringLiteral(", ")), last);
+}
+
 // What fail() returns: false, or no lesson.
 struct Failed {
     operator bool() const { return false; }
@@ -66,9 +85,9 @@ public:
             if (!stringList(root.value("profiles"), "profiles", QString(), lesson.profiles))
                 return std::nullopt;
             for (const QString &p : lesson.profiles)
-                if (p != "roomba500" && p != "create2" && p != "create1")
+                if (!isProfileKey(p))
                     return fail(QString(), "profiles",
-                                LessonFile::tr("%1 is not a robot (roomba500, create2 or create1)").arg(quoted(p)));
+                                LessonFile::tr("%1 is not a robot (%2)").arg(quoted(p), profileKeys()));
         }
         const QJsonValue steps = root.value("steps");
         if (!steps.isArray() || steps.toArray().isEmpty())
@@ -253,7 +272,7 @@ private:
 
     static bool isBitKey(const QString &packet, const QString &bit)
     {
-        for (oi::ProfileId id : {oi::ProfileId::Roomba500, oi::ProfileId::Create2, oi::ProfileId::Create1}) {
+        for (oi::ProfileId id : oi::allProfiles()) {
             const oi::RobotProfile &profile = oi::profile(id);
             if (const oi::PacketInfo *p = lesson::packetByKey(profile, packet); p && lesson::bitMask(profile, p->id, bit))
                 return true;

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "live_robots.h"
 
+#include "live_playback.h"
+
 #include "foxglove_messages.h"
 #include "robot_session.h"
 #include "snapshot_json.h"
@@ -16,20 +18,31 @@ struct LiveRobots::Served {
     std::optional<fx::RobotTopics> topics;
     const oi::RobotProfile *profile = nullptr;
     std::vector<const oi::PacketInfo *> packets;
-    foxglove::Server::ChannelId telemetry = 0, telemetryRos2 = 0, pose = 0, transform = 0, truePose = 0, events = 0,
+    foxglove::Server::ChannelId telemetry = 0, telemetryRos2 = 0, pose = 0, transform = 0, truePose = 0, roomTransform = 0, events = 0,
                                 markers = 0;
     std::optional<oi::SensorSnapshot> before; // for the events, while someone reads them
+    std::optional<oi::Pose> odomInRoom;       // from its first true pose since the connection
     QSet<int> markersSent;
     QList<QMetaObject::Connection> connections;
 };
 
-LiveRobots::LiveRobots(foxglove::Server &server, QObject *parent) : QObject(parent), m_server(server) {}
+LiveRobots::LiveRobots(foxglove::Server &server, QObject *parent)
+    : QObject(parent), m_server(server), m_playback(new LivePlayback(server, this))
+{
+    // A client sees each frame when the link read it, whatever pace the
+    // window keeps; with none, the robots' frames cost no wake-up of their own.
+    connect(&m_server, &foxglove::Server::clientCountChanged, this, [this](int clients) {
+        for (Served *served : std::as_const(m_robots))
+            served->robot->setFramesAtReadTime(clients > 0);
+    });
+}
 
 LiveRobots::~LiveRobots()
 {
     for (Served *served : std::as_const(m_robots)) {
         for (const QMetaObject::Connection &c : served->connections)
             disconnect(c);
+        served->robot->setFramesAtReadTime(false); // alive: a destroyed one has been forgotten
         delete served;
     }
 }
@@ -66,20 +79,32 @@ void LiveRobots::add(RobotSession *robot)
     });
     served->connections << connect(robot, &RobotSession::firmwareChanged, this, &LiveRobots::updateMetadata);
     served->connections << connect(robot, &RobotSession::identityChanged, this, &LiveRobots::updateMetadata);
-    // A new connection or a jump back in a replay: time starts again.
+    // A new connection or a jump back in a replay: time starts again. The
+    // replay whose timeline the viewer drives says so in its playback state.
     served->connections << connect(robot, &RobotSession::historyReset, this, [this, served] {
         served->before.reset();
+        served->odomInRoom.reset();
         served->markersSent.clear();
-        m_server.startSession();
+        if (m_playback->followed() != served->robot)
+            m_server.startSession();
     });
     served->connections << connect(&robot->markers(), &RobotMarkers::changed, this,
                                    [this, served] { onMarkers(*served); });
-    served->connections << connect(robot, &QObject::destroyed, this, [this, robot] { remove(robot); });
+    served->connections << connect(robot, &QObject::destroyed, this, [this, robot] { forget(robot); });
+    robot->setFramesAtReadTime(m_server.clientCount() > 0);
     updateMetadata();
     m_server.startSession();
 }
 
 void LiveRobots::remove(RobotSession *robot)
+{
+    if (m_robots.contains(robot))
+        robot->setFramesAtReadTime(false);
+    forget(robot);
+}
+
+// Also for a robot being destroyed, which is not touched.
+void LiveRobots::forget(const RobotSession *robot)
 {
     Served *served = m_robots.take(robot);
     if (!served)
@@ -87,8 +112,10 @@ void LiveRobots::remove(RobotSession *robot)
     for (const QMetaObject::Connection &c : served->connections)
         disconnect(c);
     withdraw(*served);
-    if (m_clockRobot == robot)
+    if (m_clockRobot == robot) {
         m_clockRobot = nullptr;
+        m_playback->follow(nullptr);
+    }
     delete served;
     updateMetadata();
 }
@@ -122,7 +149,7 @@ void LiveRobots::advertise(Served &served)
 void LiveRobots::withdraw(Served &served)
 {
     for (foxglove::Server::ChannelId *id : {&served.telemetry, &served.telemetryRos2, &served.pose, &served.transform,
-                                            &served.truePose, &served.events, &served.markers})
+                                            &served.truePose, &served.roomTransform, &served.events, &served.markers})
         if (*id)
             m_server.withdraw(std::exchange(*id, 0));
 }
@@ -130,9 +157,10 @@ void LiveRobots::withdraw(Served &served)
 void LiveRobots::onFrame(Served &served, double readSeconds, const oi::SensorSnapshot &frame)
 {
     RobotSession *robot = served.robot;
-    const quint64 ns = quint64(robot->connectedAtMs()) * 1000000 + quint64(std::max(readSeconds, 0.0) * 1e9);
+    const quint64 ns = LivePlayback::protocolTimeNs(*robot, readSeconds);
     if (!m_clockRobot || m_clockRobot == robot || (robot->isReplay() && !m_clockRobot->isReplay())) {
         m_clockRobot = robot;
+        m_playback->follow(robot->isReplay() ? robot : nullptr);
         m_server.setTime(ns);
     }
     // Nobody connected: nothing to look up for each channel, thirty robots
@@ -157,14 +185,27 @@ void LiveRobots::onFrame(Served &served, double readSeconds, const oi::SensorSna
         m_server.publish(served.transform, ns, [ns, &t, pose] {
             return fx::frameTransformJson(ns, t.odomFrame, t.baseFrame, pose);
         });
-    if (m_truePose && (!served.truePose || reads(served.truePose))) {
+    if (m_truePose && (!served.truePose || reads(served.truePose) || reads(served.roomTransform))) {
         if (const std::optional<oi::Pose> truePose = m_truePose(robot)) {
-            if (!served.truePose)
-                served.truePose = m_server.advertise({t.truePose, QStringLiteral("json"), "foxglove.PoseInFrame",
-                                                      fx::poseInFrameSchema(), QStringLiteral("jsonschema")},
-                                                     foxglove::Delivery::Latest);
-            m_server.publish(served.truePose, ns,
-                             [ns, p = *truePose] { return fx::poseInFrameJson(ns, fx::kRoomFrame, p); });
+            const QString json = QStringLiteral("json"), jsonSchema = QStringLiteral("jsonschema");
+            if (!served.truePose) {
+                served.truePose = m_server.advertise(
+                    {t.truePose, json, "foxglove.PoseInFrame", fx::poseInFrameSchema(), jsonSchema},
+                    foxglove::Delivery::Latest);
+                served.roomTransform = m_server.advertise(
+                    {t.roomTransform, json, "foxglove.FrameTransform", fx::frameTransformSchema(), jsonSchema},
+                    foxglove::Delivery::Latest);
+            }
+            if (!served.odomInRoom)
+                served.odomInRoom = fx::odomInRoom(*truePose, pose);
+            if (reads(served.truePose))
+                m_server.publish(served.truePose, ns,
+                                 [ns, p = *truePose] { return fx::poseInFrameJson(ns, fx::kRoomFrame, p); });
+            // Said with each frame, for a client that subscribes later.
+            if (reads(served.roomTransform))
+                m_server.publish(served.roomTransform, ns, [ns, &t, room = *served.odomInRoom] {
+                    return fx::frameTransformJson(ns, fx::kRoomFrame, t.odomFrame, room);
+                });
         }
     }
     if (!m_server.isSubscribed(served.events)) {
@@ -184,9 +225,7 @@ void LiveRobots::onMarkers(Served &served)
         if (served.markersSent.contains(m.id))
             continue;
         served.markersSent.insert(m.id);
-        const double seconds = markers.seconds(m);
-        const quint64 ns =
-            quint64(served.robot->connectedAtMs()) * 1000000 + quint64(std::max(seconds, 0.0) * 1e9);
+        const quint64 ns = LivePlayback::protocolTimeNs(*served.robot, markers.seconds(m));
         m_server.publish(served.markers, ns, [&] { return fx::logJson(ns, fx::Info, m.label(), "marker"); });
     }
 }

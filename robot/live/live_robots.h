@@ -11,6 +11,7 @@
 #include <functional>
 #include <optional>
 
+class LivePlayback;
 class RobotSession;
 namespace oi {
 struct Pose;
@@ -23,7 +24,8 @@ class RobotProfile;
 // telemetry as JSON and as a ROS 2 message, the odometry pose and its
 // transform, a virtual robot's true pose, its events and markers as log
 // lines, its profile and firmware in the server's metadata. The protocol's
-// time follows the frames' read times, a replay's when one is open.
+// time follows the frames' read times, a replay's when one is open, and
+// that replay's timeline is the viewer's to drive (LivePlayback).
 class LiveRobots : public QObject {
     Q_OBJECT
 public:
@@ -42,6 +44,7 @@ public:
 
 private:
     struct Served;
+    void forget(const RobotSession *robot);
     void advertise(Served &served);
     void withdraw(Served &served);
     void onFrame(Served &served, double readSeconds, const oi::SensorSnapshot &frame);
@@ -49,6 +52,7 @@ private:
     void updateMetadata();
 
     foxglove::Server &m_server;
+    LivePlayback *m_playback; // the replay whose timeline the viewer drives
     TruePose m_truePose;
     QHash<const RobotSession *, Served *> m_robots;
     // Whose frames set the protocol's time: a replay before a live robot.

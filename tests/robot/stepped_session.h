@@ -8,6 +8,7 @@
 #include "sim_line_transport.h"
 
 #include <QCoreApplication>
+#include <QStandardPaths>
 #include <QStringList>
 
 struct SteppedSession {
@@ -20,6 +21,8 @@ struct SteppedSession {
     explicit SteppedSession(oi::ProfileId profile, QList<int> streamPackets = {},
                             std::function<void(sim::VirtualRobot &)> setUp = {})
     {
+        // What the session keeps per robot (its battery's health) goes to the test's settings.
+        QStandardPaths::setTestModeEnabled(true);
         robot.setLinkOnThisThread(true);
         robot.setLinkClock(clock);
         robot.setTransportFactory([this, profile, setUp](const oilink::LinkSettings &) {

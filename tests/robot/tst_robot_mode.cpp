@@ -51,6 +51,45 @@ private slots:
         QVERIFY(!mode.observe(frame(OiMode::Passive), kAt.toMSecsSinceEpoch())); // nothing new
     }
 
+    // Safe or Full left by itself with no cliff, wheel drop or charger, the
+    // battery nearly flat under load (the frame before the fall): named, with
+    // the charge and the voltage, until the robot charges. Without a low
+    // battery a fall from Full has no story; a cliff stays a cliff.
+    void aNearlyFlatBatteryIsNamed()
+    {
+        const qint64 at = kAt.toMSecsSinceEpoch();
+        const auto loaded = [](OiMode m, int mv, int mah) { return frame(m, {{22, mv}, {25, mah}, {26, 3000}}); };
+        for (OiMode from : {OiMode::Full, OiMode::Safe}) {
+            RobotMode mode;
+            mode.observe(loaded(from, 12870, 600), at);
+            QVERIFY(mode.observe(loaded(OiMode::Passive, 13400, 600), at + 15));
+            QCOMPARE(mode.causeKeys(), (QStringList{"safety", "battery_low"}));
+            QCOMPARE(mode.reason(), QString("Battery nearly flat (20 %, 12.9 V): the robot leaves Safe or Full by itself "
+                                            "under load; charge it (it fell to Passive at 12:03:04)."));
+            QCOMPARE(mode.shortReason(), QString("battery nearly flat"));
+            QCOMPARE(mode.nextStep(), QString("Put it on its dock in Passive to charge it; it drives again once charged."));
+            QVERIFY(!mode.observe(loaded(OiMode::Passive, 13400, 600), at + 30));
+            // Charging ends it.
+            SensorSnapshot charging = loaded(OiMode::Passive, 14000, 620);
+            charging.set(21, int(ChargingState::FullCharging));
+            charging.set(34, 2);
+            QVERIFY(mode.observe(charging, at + 45));
+            QVERIFY(mode.causeKeys().isEmpty());
+        }
+        RobotMode full;
+        full.observe(loaded(OiMode::Full, 15500, 2400), at);
+        full.observe(loaded(OiMode::Passive, 15600, 2400), at + 15);
+        QVERIFY(full.causeKeys().isEmpty());
+        QVERIFY(full.reason().isEmpty());
+
+        RobotMode cliff;
+        cliff.observe(loaded(OiMode::Safe, 12850, 300), at);
+        SensorSnapshot fell = loaded(OiMode::Passive, 13400, 300);
+        fell.set(kCliffFrontLeft, 1);
+        cliff.observe(fell, at + 15);
+        QCOMPARE(cliff.causeKeys(), (QStringList{"safety", "cliff_front_left"}));
+    }
+
     void safetyDropSaysWhatWhenAndWhatToDo_data()
     {
         QTest::addColumn<int>("packet");
@@ -66,7 +105,7 @@ private slots:
         // On its dock the robot refuses Safe: Full is the way off it.
         QTest::newRow("charger") << 34 << 0x02
                                  << "The robot is on its dock: Safe mode is refused on the charger (12:03:04)."
-                                 << "Safe refused on the dock" << "Use Full to drive it off the dock, or lift it off.";
+                                 << "Safe refused on the dock" << "Lift it off the dock, or drive it off in Full (Full does not stop at cliffs or wheel drops).";
         QTest::newRow("unknown") << 7 << 0 << "A safety stop dropped it to Passive at 12:03:04."
                                  << "safety stop" << "Enter Safe to drive.";
     }
@@ -98,10 +137,9 @@ private slots:
         QTest::addColumn<int>("wheelDrops");
         QTest::addColumn<QString>("nextStep");
         QTest::newRow("dark rug") << 260 << 0
-                                  << "Carry it back from the edge, then Enter Safe. No edge there? Its cliff "
-                                     "signals read front left 260 of 4095, low but not the near 0 of a drop, and no "
-                                     "wheel dropped: a dark rug or floor reads as a cliff. Drive it off in Full, or "
-                                     "move it to a lighter floor.";
+                                  << "Carry it back from the edge, then Enter Safe. Its cliff signals read front "
+                                     "left 260 of 4095, as over a dark rug: if you can see the floor under it, carry "
+                                     "it to a lighter floor, then Enter Safe.";
         QTest::newRow("edge") << 20 << 0 << "Carry it back from the edge, then Enter Safe.";
         // A wheel hanging over the edge: not a rug, whatever the signal.
         QTest::newRow("wheel over the edge") << 260 << 0x08 << "Carry it back from the edge, then Enter Safe.";
@@ -151,6 +189,48 @@ private slots:
     }
 
     // What the user asked for is not a safety stop, whatever the sensors show.
+    // Clean, Spot, Max and Seek Dock run a program of the robot's own, in
+    // Passive: that is said, with how to stop it, for as long as it runs,
+    // and not as an alarm about Passive.
+    void itsOwnProgramIsSaidAsOne_data()
+    {
+        QTest::addColumn<Command>("command");
+        QTest::addColumn<bool>("fromPassive");
+        QTest::addColumn<QString>("advice");
+        QTest::addColumn<QString>("shortReason");
+        const QString cleaning = "Cleaning (its own program) · Space stops it";
+        QTest::newRow("clean") << Command::Clean << false << cleaning << "cleaning";
+        QTest::newRow("spot") << Command::Spot << false << cleaning << "cleaning";
+        QTest::newRow("max from Passive") << Command::Max << true << cleaning << "cleaning";
+        QTest::newRow("seek dock") << Command::SeekDock << false
+                                   << "Seeking its dock (its own program) · Space stops it" << "seeking its dock";
+    }
+    void itsOwnProgramIsSaidAsOne()
+    {
+        QFETCH(Command, command);
+        QFETCH(bool, fromPassive);
+        QFETCH(QString, advice);
+        QFETCH(QString, shortReason);
+        RobotMode mode;
+        mode.observe(frame(fromPassive ? OiMode::Passive : OiMode::Safe), kAt.toMSecsSinceEpoch());
+        mode.asked(command, kAt);
+        mode.sent(command, false);
+        mode.observe(frame(OiMode::Passive), kAt.addSecs(1).toMSecsSinceEpoch());
+        QCOMPARE(mode.cause(), RobotMode::Cause::OwnProgram);
+        QCOMPARE(mode.advice(), advice);
+        QCOMPARE(mode.reason(), advice);
+        QCOMPARE(mode.nextStep(), QString());
+        QCOMPARE(mode.shortReason(), shortReason);
+        // Still said minutes later, frame after frame.
+        for (int s = 2; s < 300; s += 7)
+            QVERIFY(!mode.observe(frame(OiMode::Passive), kAt.addSecs(s).toMSecsSinceEpoch()));
+        QCOMPARE(mode.advice(), advice);
+        // Stopped (Safe): nothing more to say.
+        mode.asked(Command::Safe, kAt.addSecs(300));
+        mode.observe(frame(OiMode::Safe), kAt.addSecs(301).toMSecsSinceEpoch());
+        QCOMPARE(mode.advice(), QString());
+    }
+
     void askedPassiveIsSaidAsAsked()
     {
         RobotMode mode;
@@ -160,11 +240,11 @@ private slots:
         mode.observe(frame(OiMode::Passive, {{kCliffFrontLeft, 1}}), kAt.addSecs(1).toMSecsSinceEpoch());
         QCOMPARE(mode.cause(), RobotMode::Cause::Asked);
         QCOMPARE(mode.reason(), QString("You asked for Passive at 12:03:04."));
-        // A clean, too, leaves Safe on purpose.
+        // A clean, too, leaves Safe on purpose: it is the robot's own program.
         mode.observe(frame(OiMode::Safe), kAt.toMSecsSinceEpoch());
         mode.asked(Command::Clean, kAt);
         mode.observe(frame(OiMode::Passive), kAt.toMSecsSinceEpoch());
-        QCOMPARE(mode.cause(), RobotMode::Cause::Asked);
+        QCOMPARE(mode.cause(), RobotMode::Cause::OwnProgram);
         // Asked once: a later drop is the robot's own.
         mode.observe(frame(OiMode::Safe), kAt.toMSecsSinceEpoch());
         mode.observe(frame(OiMode::Passive, {{kCliffRight, 1}}), kAt.toMSecsSinceEpoch());

@@ -4,6 +4,7 @@
 #include "calibration_drive.h"
 #include "command_encoder.h"
 #include "crowded_recording.h" // tests/common
+#include "manual_clock.h" // tests/common
 #include "recording_file.h"
 #include "typed_command_bytes.h"
 #include "recording_transport.h" // tests/common
@@ -46,6 +47,9 @@ public:
     bool isOpen() const override { return m_open; }
     bool write(const QByteArray &bytes) override
     {
+        // Frames once the stream is asked for, as from a robot.
+        if (bytes.contains(char(148)))
+            streamAsked = true;
         // The banner comes after the Reset has gone out, as from a robot.
         if (bytes == QByteArray(1, char(7)))
             QMetaObject::invokeMethod(this, [this] {
@@ -71,9 +75,11 @@ public:
         emit bytesReceived(f);
     }
 
+    std::atomic<bool> streamAsked{false};
+
 private:
     std::string m_release;
-    bool m_open = false;
+    std::atomic<bool> m_open{false}; // read by the test's thread
 };
 
 // The BannerRobot a session's link makes on its thread, for the test to drive.
@@ -82,8 +88,10 @@ struct BannerLine {
 
     // Connects `session` to a BannerRobot that prints `release`, streaming
     // distance and angle, and waits until it is open.
+    // With `clock` (the session's link clock), the link's time is moved on
+    // until then.
     void connect(RobotSession &session, std::string release,
-                 const QString &port = QStringLiteral("/dev/banner-robot"))
+                 const QString &port = QStringLiteral("/dev/banner-robot"), ManualClock *clock = nullptr)
     {
         session.setTransportFactory([this, release](const oilink::LinkSettings &) {
             auto *t = new BannerRobot(release);
@@ -91,7 +99,9 @@ struct BannerLine {
             return t;
         });
         session.connectTo(settings(port));
-        QTRY_VERIFY_WITH_TIMEOUT(robot.load() && robot.load()->isOpen(), 5000);
+        QTRY_VERIFY_WITH_TIMEOUT((clock && (clock->advance(10), true),
+                                  robot.load() && robot.load()->isOpen() && robot.load()->streamAsked),
+                                 5000);
     }
     static oilink::LinkSettings settings(const QString &port)
     {
@@ -253,6 +263,33 @@ private slots:
         robot.connectTo(oilink::LinkSettings::virtualRobotOf(oi::ProfileId::Create1, oi::ProfileId::Create1));
         QVERIFY(!robot.uploadedScript());
         QVERIFY(!robot.mode().runsOwnCommand());
+    }
+
+    // While a Create's script waits it hears nothing (ERRATA 20), so the
+    // session's own angle query cannot pause the stream: that is asked again
+    // later, and no error is shown, since the user asked for nothing.
+    void anInternalQueryThatFailsIsAskedAgainQuietly()
+    {
+        RobotSession robot;
+        robot.setTransportFactory(transports::transportFactory());
+        robot.connectTo(oilink::LinkSettings::virtualRobotOf(oi::ProfileId::Create1, oi::ProfileId::Create1));
+        QTRY_VERIFY_WITH_TIMEOUT(robot.isLive(), 5000);
+        QVERIFY(robot.requestMode(oi::Command::Safe));
+        QTRY_COMPARE_WITH_TIMEOUT(robot.mode().reported(), std::optional(oi::OiMode::Safe), 5000);
+        // Turn on the spot, then wait 3 s: the turn makes the angle due.
+        QVERIFY(robot.send(oi::OiCommand{oi::Command::Script, {}, {137, 0, 100, 0, 1, 155, 30, 137, 0, 0, 0, 0}}));
+        QSignalSpy errors(&robot, &RobotSession::errorOccurred);
+        QSignalSpy angles(&robot, &RobotSession::angleRead);
+        int pauses = 0;
+        connect(&robot, &RobotSession::commandsSent, this, [&pauses](const std::vector<oi::OiCommand> &commands) {
+            for (const oi::OiCommand &c : commands)
+                pauses += c.command == oi::Command::PauseResumeStream && c.fields == std::vector<int>{0};
+        });
+        QVERIFY(robot.playScript());
+        const int anglesBefore = angles.count();
+        // Asked at least twice (the first while the script waits), then answered once it ends.
+        QTRY_VERIFY_WITH_TIMEOUT(pauses >= 2 && angles.count() > anglesBefore, 10000);
+        QCOMPARE(errors.count(), 0);
     }
 
     void showScriptOnARobotWithoutScriptsSaysSo()
@@ -467,6 +504,31 @@ private slots:
         robot.setTransportFactory([](const oilink::LinkSettings &) { return new BannerRobot("release-3.4.0"); });
         robot.connectTo(oilink::LinkSettings::replayOf("/tmp/none.oirec", oi::ProfileId::Create2, 115200, {}));
         QVERIFY(robot.readFirmwareVersion().contains("connect to the robot itself"));
+    }
+
+    // The bytes the inspector shows carry the time the link read them, not
+    // when the window took them in: two reads 60 ms apart on the link's
+    // clock that reach the window together are stamped 60 ms apart.
+    void receivedBytesCarryTheirReadTime()
+    {
+        ManualClock clock;
+        RobotSession session;
+        session.setLinkClock(clock);
+        BannerLine line;
+        line.connect(session, "release-3.4.0", QStringLiteral("/dev/banner-robot"), &clock);
+        QSignalSpy received(&session, &RobotSession::bytesReceived);
+        const auto readOnTheLinkThread = [&](int distanceMm) {
+            QMetaObject::invokeMethod(
+                line.robot.load(), [t = line.robot.load(), distanceMm] { t->sendMotion(distanceMm, 0); },
+                Qt::BlockingQueuedConnection);
+        };
+        readOnTheLinkThread(10);
+        clock.advance(60);
+        readOnTheLinkThread(20);
+        QTRY_VERIFY_WITH_TIMEOUT(received.size() >= 2, 5000);
+        const qint64 first = received.at(received.size() - 2).at(1).toLongLong();
+        const qint64 second = received.last().at(1).toLongLong();
+        QCOMPARE(second - first, 60);
     }
 
     // Frames carry the time the link read them: the history's clock.

@@ -55,7 +55,11 @@ inline std::vector<std::uint8_t> groupBytes(const oi::RobotProfile &profile, int
 inline oi::SensorSnapshot decoded(const oi::RobotProfile &profile, const std::map<int, int> &values)
 {
     oi::SensorSnapshot s(profile);
-    const int group = profile.id == oi::ProfileId::Create1 ? 6 : 100;
+    // The profile's largest group: 100, 6 on the Create, 0 on the SCI.
+    int group = 0;
+    for (const oi::PacketGroup &g : profile.groups())
+        if (g.bytes > profile.replySize(group))
+            group = g.id;
     const std::vector<std::uint8_t> bytes = groupBytes(profile, group, values);
     s.decode(group, bytes);
     return s;

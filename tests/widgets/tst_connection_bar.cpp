@@ -206,6 +206,27 @@ private slots:
         QCOMPARE(bar.errorText(), QString("Port busy"));
     }
 
+    // Beside "switched off at its power button", a Wake button; pressed, the
+    // bar asks for the wake (the window passes it to the robot's link).
+    void wakeButtonWhileSwitchedOff()
+    {
+        ConnectionBar bar;
+        bar.show();
+        bar.showConnected({ConnectionRequest::Transport::Serial, "/dev/ttyUSB0", {}, 0, oi::ProfileId::Create2, 0});
+        auto *wake = bar.findChild<QPushButton *>("wake");
+        QVERIFY(wake);
+        QVERIFY(!wake->isVisible() && !bar.wakeOffered());
+        QSignalSpy asked(&bar, &ConnectionBar::wakeRequested);
+        bar.showError("/dev/ttyUSB0: switched off at its power button; press it or use Wake");
+        bar.offerWake(true);
+        QVERIFY(wake->isVisible() && bar.wakeOffered());
+        QCOMPARE(wake->text(), QString("Wake"));
+        QTest::mouseClick(wake, Qt::LeftButton);
+        QCOMPARE(asked.size(), 1);
+        bar.offerWake(false);
+        QVERIFY(!wake->isVisible());
+    }
+
     void errorClearsWhenTheLinkRecovers()
     {
         // The adapter is pulled out and plugged back in: the link streams

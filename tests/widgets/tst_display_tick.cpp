@@ -49,6 +49,35 @@ private slots:
         QVERIFY(!tick.isListening(&map));
     }
 
+    // Robots at rest: after kTicksBeforeQuiet ticks that saw no change the
+    // display slows to its quiet pace; a change brings the full pace back on
+    // the tick that sees it. Two windows telling it on one tick count once.
+    void pacesByChanges()
+    {
+        DisplayTick &tick = DisplayTick::instance();
+        QObject window;
+        quint64 changes = 1;
+        int ticksSeen = 0, quietAfter = 0;
+        bool wokenOnChange = false;
+        tick.listen(&window, [&] {
+            ++ticksSeen;
+            tick.paceBy(changes);
+            const bool quiet = tick.paceBy(changes); // a second window, same tick
+            if (quiet && quietAfter == 0) {
+                quietAfter = ticksSeen;
+                ++changes;
+            } else if (quietAfter > 0 && !quiet) {
+                wokenOnChange = true;
+            }
+        });
+        QTRY_VERIFY(wokenOnChange);
+        // The first tick sees the count change, the next six none.
+        QCOMPARE(quietAfter, 1 + DisplayTick::kTicksBeforeQuiet);
+        QVERIFY(!tick.isQuiet());
+        QCOMPARE(tick.intervalMs(), DisplayTick::kIntervalMs);
+        tick.stopListening(&window);
+    }
+
     // Asked for on every tick, a frame runs no sooner than its interval
     // (less half a tick) after the last one, and always on a tick.
     void framesKeepTheirInterval()

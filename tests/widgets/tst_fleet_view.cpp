@@ -6,6 +6,7 @@
 #include "fleet_view.h"
 #include "pseudo_translation.h"
 
+#include <QComboBox>
 #include <QDir>
 #include <QSignalSpy>
 #include <QPushButton>
@@ -67,7 +68,8 @@ private slots:
         // Why it is in Passive travels with its own tile.
         QCOMPARE(view.tile("robot-2")->modeText(), QStringLiteral("Passive: cliff (front left) · battery 88 %"));
         QCOMPARE(view.tile("robot-3")->statusText(), QStringLiteral("OFFLINE"));
-        QCOMPARE(view.tile("robot-3")->linkText(), QStringLiteral("link lost"));
+        // Its bridge is what is gone (its last will), not the robot's link.
+        QCOMPARE(view.tile("robot-3")->linkText(), QStringLiteral("bridge offline"));
         QCOMPARE(view.tile("robot-3")->controlText(), QStringLiteral("nobody in control"));
         QVERIFY(t1->accessibleDescription().contains("BUMP left"));
 
@@ -119,6 +121,39 @@ private slots:
         for (const FleetTile *t : other.tiles())
             names << t->values().name;
         QCOMPARE(names, (QStringList{"a9", "a09x", "A10", "b"}));
+    }
+
+    // By pack health: the pack to replace first, the least capacity first
+    // among equals, the unmeasured last; the tile says it.
+    void tilesSortByPackHealth()
+    {
+        FleetView view;
+        QList<FleetTileValues> tiles{robot(1), robot(2), robot(3), robot(4)};
+        tiles[0].packCondition = BatteryCondition::Good;
+        tiles[0].packCapacityMah = 2950;
+        tiles[1].packCondition = BatteryCondition::Replace;
+        tiles[1].packCapacityMah = 1350;
+        tiles[2].packCondition = BatteryCondition::Worn;
+        tiles[2].packCapacityMah = 2400;
+        view.setTiles(tiles);
+        const auto names = [&] {
+            QStringList n;
+            for (const FleetTile *t : view.tiles())
+                n << t->values().name;
+            return n;
+        };
+        QCOMPARE(names(), (QStringList{"robot-1", "robot-2", "robot-3", "robot-4"}));
+        view.setOrder(FleetView::Order::PackHealth);
+        QCOMPARE(names(), (QStringList{"robot-2", "robot-3", "robot-1", "robot-4"}));
+        QVERIFY2(view.tile("robot-2")->modeText().endsWith("pack replace, 1350 mAh"), qPrintable(view.tile("robot-2")->modeText()));
+        // A pack measured worse moves up.
+        tiles[0].packCondition = BatteryCondition::Replace;
+        tiles[0].packCapacityMah = 1200;
+        view.setTiles(tiles);
+        QCOMPARE(names(), (QStringList{"robot-1", "robot-2", "robot-3", "robot-4"}));
+        view.orderBox()->setCurrentIndex(0);
+        emit view.orderBox()->activated(0);
+        QCOMPARE(view.order(), FleetView::Order::Name);
     }
 
     void asManyColumnsAsFit()
@@ -219,6 +254,81 @@ private slots:
         QCOMPARE(same->paintCount(), samePaints);
     }
 
+    // A tile whose bridge went while its robot drove says so in words that
+    // fit whole, at 720p and 1080p; and a mode is never squeezed out by the
+    // pack's health (the battery is said shorter).
+    void aLostBridgeIsSaidWhole_data()
+    {
+        QTest::addColumn<QSize>("screen");
+        QTest::newRow("1280x720") << QSize(1280, 720);
+        QTest::newRow("1920x1080") << QSize(1920, 1080);
+    }
+
+    void aLostBridgeIsSaidWhole()
+    {
+        QFETCH(QSize, screen);
+        FleetTileValues moving = robot(1);
+        moving.online = false;
+        moving.bridgeLostAt = QTime(21, 58);
+        moving.cutOffController = QStringLiteral("alice-290251");
+        moving.cutOffProgram = QStringLiteral("square.py");
+        moving.mayBeMoving = true;
+        FleetTileValues standing = robot(2);
+        standing.online = false;
+        standing.bridgeLostAt = QTime(21, 59);
+        standing.packCondition = BatteryCondition::Good;
+        FleetTileValues healthy = robot(3);
+        healthy.mode = QStringLiteral("Passive");
+        healthy.packCondition = BatteryCondition::Replace;
+        healthy.packCapacityMah = 1350;
+        FleetView view;
+        view.setBrokerText(QStringLiteral("mqtt://127.0.0.1:1883 · robots: 3 · speaking as teacher"), true);
+        view.setTiles({moving, standing, healthy, robot(4)});
+        view.resize(screen);
+        view.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&view));
+        QCoreApplication::processEvents();
+
+        const QStringList lost = view.tile("robot-1")->shownLines();
+        QCOMPARE(lost.at(0), QStringLiteral("MAY STILL BE MOVING"));
+        QCOMPARE(lost.at(1), QStringLiteral("pick it up, switch it off"));
+        QCOMPARE(lost.at(2), QStringLiteral("bridge offline since 21:58"));
+        // The long name leaves no room for "'s program": the driver is named all the same.
+        QVERIFY2(lost.at(3) == QStringLiteral("alice-290251's program cut off")
+                     || lost.at(3) == QStringLiteral("alice-290251 cut off"),
+                 qPrintable(lost.at(3)));
+        const QString advice = FleetTile::bridgeLostText(moving);
+        QVERIFY2(advice.contains(QStringLiteral("cutting off alice-290251's program square.py. A real robot keeps its "
+                                                "last drive when its bridge dies")),
+                 qPrintable(advice));
+        QVERIFY(view.tile("robot-1")->toolTip().contains(advice));
+        QCOMPARE(view.tile("robot-2")->shownLines().at(2), QStringLiteral("bridge offline since 21:59"));
+        // The bridge runs, its robot is silent: the robot is named.
+        FleetTileValues silent = robot(4);
+        silent.link = QStringLiteral("stale");
+        silent.linkHealthy = false;
+        view.setTiles({silent});
+        QCOMPARE(view.tile("robot-4")->shownLines().at(2), QStringLiteral("robot silent (link stale)"));
+        silent.link = QStringLiteral("lost");
+        silent.framesPerSecond.reset();
+        view.setTiles({silent});
+        QCOMPARE(view.tile("robot-4")->shownLines().at(2), QStringLiteral("robot not answering"));
+        QCOMPARE(view.tile("robot-2")->shownLines().at(3), QStringLiteral("nobody in control"));
+        QVERIFY(FleetTile::bridgeLostText(standing).contains(QStringLiteral("(the broker is fine)")));
+        QVERIFY(FleetTile::bridgeLostText(healthy).isEmpty());
+        // The mode whole, the pack's health beside the charge, said shorter.
+        QCOMPARE(view.tile("robot-3")->shownModeLine(), QStringLiteral("Passive 87 % · pack replace"));
+        for (const FleetTile *t : view.tiles())
+            for (const QString &line : t->shownLines())
+                QVERIFY2(!line.contains(QChar(0x2026)), qPrintable(t->values().name + ": " + line));
+        const QString dir = qEnvironmentVariable("ROOMBA_SCREENSHOTS");
+        if (!dir.isEmpty()) {
+            QDir().mkpath(dir);
+            QVERIFY(view.grab().save(
+                QDir(dir).filePath(QStringLiteral("fleet_bridge_lost_%1x%2.png").arg(screen.width()).arg(screen.height()))));
+        }
+    }
+
     void everyTextTranslated()
     {
         FleetView empty;
@@ -235,6 +345,15 @@ private slots:
         QVERIFY2(untranslated.isEmpty(), qPrintable(untranslated.join('\n')));
         const FleetTile *t = view.tile("robot-1");
         for (const QString &s : {t->statusText(), t->hazardText(), t->linkText(), t->controlText()})
+            QVERIFY2(s.contains(kPseudoOpen), qPrintable(s));
+        // And what a tile says of a bridge that went while its robot drove.
+        v.online = false;
+        v.bridgeLostAt = QTime(21, 58);
+        v.cutOffController = QStringLiteral("alice");
+        v.mayBeMoving = true;
+        view.setTiles({v});
+        for (const QString &s : {t->modeOnlyText(), t->hazardText(), t->linkText(), t->controlText(),
+                                 FleetTile::bridgeLostText(v)})
             QVERIFY2(s.contains(kPseudoOpen), qPrintable(s));
     }
 };

@@ -123,6 +123,28 @@ private slots:
         QVERIFY(!child<QCheckBox>(editor, "ledAdvance")->isVisibleTo(&editor));
     }
 
+    // The SCI puts Dirt Detect, Max, Clean and Spot on bits 1, 2, 4, 8: the
+    // boxes say so, and send those bits.
+    void roomba400NamesItsOwnLeds()
+    {
+        LedEditor editor;
+        editor.setProfile(profile(ProfileId::Roomba400));
+        show(editor);
+        QCOMPARE(child<QCheckBox>(editor, "ledDebris")->text(), QString("Dirt Detect"));
+        QCOMPARE(child<QCheckBox>(editor, "ledSpot")->text(), QString("Max"));
+        QCOMPARE(child<QCheckBox>(editor, "ledDock")->text(), QString("Clean"));
+        QCOMPARE(child<QCheckBox>(editor, "ledCheckRobot")->text(), QString("Spot"));
+        QSignalSpy spy(&editor, &LedEditor::sendRequested);
+        QTest::mouseClick(child<QCheckBox>(editor, "ledCheckRobot"), Qt::LeftButton);
+        child<QSlider>(editor, "powerColour")->setValue(0);
+        child<QSlider>(editor, "powerIntensity")->setValue(128);
+        editor.apply();
+        QCOMPARE(sent(editor, spy, 0), bytes({139, 8, 0, 128}));
+        // Back on a Create 2, the names are the Open Interface's again.
+        editor.setProfile(profile(ProfileId::Create2));
+        QCOMPARE(child<QCheckBox>(editor, "ledCheckRobot")->text(), QString("Check Robot"));
+    }
+
     void createShowsPlayAndAdvance()
     {
         LedEditor editor;

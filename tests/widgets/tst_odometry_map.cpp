@@ -158,6 +158,16 @@ private slots:
         QVERIFY2(m_map->poseText().startsWith("x 89 mm   y 0 mm   θ 0.0°"), qPrintable(m_map->poseText()));
     }
 
+    // A hair to the right of the start is at y 0, not "y −0".
+    void noNegativeZero()
+    {
+        m_map->setProfile(oi::profile(ProfileId::Create2));
+        drive(*m_odometry, ProfileId::Create2, 2, 20, 19);
+        QVERIFY2(m_map->pose().yMm < 0 && m_map->pose().yMm > -0.5, qPrintable(QString::number(m_map->pose().yMm)));
+        QVERIFY2(m_map->poseText().contains("   y 0 mm   "), qPrintable(m_map->poseText()));
+        QVERIFY2(m_map->spokenPose().contains(", y 0 mm,"), qPrintable(m_map->spokenPose()));
+    }
+
     void framesWithoutMotionAddNothing()
     {
         m_odometry->update(encoderFrame(ProfileId::Create2, 5, 5));

@@ -200,7 +200,7 @@ private slots:
         view.setMode(mode);
         view.refresh(frame(oi::OiMode::Passive), true);
         QCOMPARE(view.reasonText(), QString("The robot is on its dock: Safe mode is refused on the charger (12:03:04). "
-                                            "Use Full to drive it off the dock, or lift it off."));
+                                            "Lift it off the dock, or drive it off in Full (Full does not stop at cliffs or wheel drops)."));
         QVERIFY(!view.enterSafeButton()->isVisible());
 
         mode.asked(oi::Command::Full, QDateTime::fromMSecsSinceEpoch(at + 1000));

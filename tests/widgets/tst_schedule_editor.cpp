@@ -136,6 +136,39 @@ private slots:
         QTest::newRow("de_DE") << QLocale(QLocale::German, QLocale::Germany) << false << "15:05";
     }
 
+    // A time typed whole lands whole, in the schedule's and the clock's
+    // boxes, wherever the click put the cursor and whatever the display.
+    void typedTimesAreTaken_data()
+    {
+        timesFollowTheLocale_data();
+        QTest::newRow("es_ES") << QLocale(QLocale::Spanish, QLocale::Spain) << false << "15:05";
+    }
+    void typedTimesAreTaken()
+    {
+        QFETCH(QLocale, locale);
+        QFETCH(bool, twelveHour);
+        QLocale::setDefault(locale);
+        ScheduleEditor editor;
+        show(editor);
+        for (const QString &name : {QString("time3"), QString("clockTime")}) {
+            auto *edit = child<QTimeEdit>(editor, name);
+            edit->setEnabled(true);
+            QVERIFY(edit->isVisible());
+            struct Typed { QString keys; QTime time; };
+            QList<Typed> typed{{"15:30", QTime(15, 30)}, {"0745", QTime(7, 45)}, {"9:05", QTime(9, 5)}};
+            if (twelveHour)
+                typed << Typed{"3:30 pm", QTime(15, 30)} << Typed{"12:10 am", QTime(0, 10)};
+            for (const Typed &t : typed) {
+                // Clicked in the minutes (the right of the box), then typed.
+                QTest::mouseClick(edit, Qt::LeftButton, {}, QPoint(edit->width() * 2 / 3, edit->height() / 2));
+                QTest::keyClicks(edit, t.keys);
+                QTest::keyClick(edit, Qt::Key_Tab);
+                QVERIFY2(edit->time() == t.time, qPrintable(name + ": " + t.keys + " gave " + edit->time().toString()));
+            }
+        }
+        QLocale::setDefault(QLocale(QLocale::English, QLocale::UnitedKingdom));
+    }
+
     void timesFollowTheLocale()
     {
         QFETCH(QLocale, locale);

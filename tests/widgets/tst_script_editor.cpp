@@ -117,10 +117,16 @@ private slots:
         QTest::mouseClick(editor.button("upload"), Qt::LeftButton);
         QCOMPARE(sent(spy), QStringList{"152 13 137 1 44 0 0 156 1 144 158 251 158 251 153"});
         QCOMPARE(editor.byteCountText(), QString("13 / 100 bytes"));
+        // Upload says what it stored; Play what the robot now does.
+        QCOMPARE(editor.showScriptText(),
+                 QString("Uploaded (152): 13 / 100 bytes. Play (153) runs the script; Show Script (154) reads it back."));
         // Play goes to the robot's session (playAsksTheRobot).
         QSignalSpy play(&editor, &ScriptEditor::playRequested);
         QTest::mouseClick(editor.button("play"), Qt::LeftButton);
         QCOMPARE(play.count(), 1);
+        QVERIFY2(editor.showScriptText().startsWith("Play (153) sent. While the script waits (155–158) the Create "
+                                                    "hears no command, not even a stop"),
+                 qPrintable(editor.showScriptText()));
     }
 
     void byteCountFollowsTyping()

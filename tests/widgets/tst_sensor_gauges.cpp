@@ -126,6 +126,37 @@ private slots:
         QCOMPARE(w.isGaugeOutOfRange("charging_state"), outOfRange);
     }
 
+    // The pack's health in the Battery section; the charge's caveat after a
+    // boot that guessed it; a charging fault's causes and steps.
+    void batteryHealthShown()
+    {
+        SensorGauges w;
+        std::map<int, int> values = quietValues(profile(ProfileId::Create2));
+        values[21] = 5;
+        show(w, ProfileId::Create2, values);
+        QVERIFY(w.isGaugeShown("battery_health"));
+        QCOMPARE(w.gaugeText("battery_health"), QString("Not measured yet"));
+        QVERIFY(w.gauge("charging_state")->toolTip().contains("Clean the contacts, reseat the pack"));
+
+        BatteryHealthReport r;
+        r.measurement.capacityMah = 1350;
+        r.measurement.claimedCapacityMah = 3000;
+        r.measurement.resistanceMohm = 900;
+        r.measurement.cycleSeen = 0.4;
+        r.condition = BatteryHealth::judge(r.measurement, &r.reason);
+        r.estimatedFromVoltage = true;
+        w.setBatteryHealth(r);
+        QCOMPARE(w.gaugeText("battery_health"), QString("Replace"));
+        QCOMPARE(w.gauge("battery_health")->detailText(), QString("1350 of 3000 mAh, 900 mΩ"));
+        QVERIFY(w.gauge("battery_health")->toolTip().startsWith("holds 1350 of the 3000 mAh it claims (45 %)"));
+        QVERIFY2(w.gauge("battery")->detailText().endsWith("estimated from voltage"),
+                 qPrintable(w.gauge("battery")->detailText()));
+
+        values[21] = 3;
+        show(w, ProfileId::Create2, values);
+        QVERIFY(w.gauge("charging_state")->toolTip().isEmpty());
+    }
+
     void chargingSourcesUseProfileNames()
     {
         SensorGauges w;
@@ -158,6 +189,11 @@ private slots:
             std::map<int, int> values = quietValues(profile(id));
             values[39] = velocity;
             show(w, id, values);
+            if (!profile(id).packet(39)) {
+                // The SCI has no requested velocity: a dash, never a value.
+                QCOMPARE(w.gaugeText("requested_velocity"), QString(QChar(0x2014)));
+                continue;
+            }
             QCOMPARE(w.gaugeText("requested_velocity"), text);
             QCOMPARE(w.isGaugeOutOfRange("requested_velocity"), outOfRange);
             const bool flagShown = !w.gauge("requested_velocity")->findChild<QLabel *>("outOfRange")->isHidden();
@@ -241,7 +277,7 @@ private slots:
             QVERIFY2(!w.isGaugeShown(key), qPrintable(key));
             QVERIFY(!w.gauge(key)->isVisible());
         }
-        QCOMPARE(w.shownGaugeKeys().size(), 8 + kCreate1Only.size());
+        QCOMPARE(w.shownGaugeKeys().size(), 9 + kCreate1Only.size());
 
         for (ProfileId id : {ProfileId::Roomba500, ProfileId::Create2}) {
             show(w, id, busyValues(profile(id)));
@@ -249,7 +285,7 @@ private slots:
                 QVERIFY2(w.isGaugeShown(key), qPrintable(key));
             for (const QString &key : kCreate1Only)
                 QVERIFY2(!w.isGaugeShown(key), qPrintable(key));
-            QCOMPARE(w.shownGaugeKeys().size(), 8 + kRoombaOnly.size());
+            QCOMPARE(w.shownGaugeKeys().size(), 9 + kRoombaOnly.size());
         }
         QCOMPARE(w.gaugeText("cargo_bay_analog"), QString("\u2014"));
     }

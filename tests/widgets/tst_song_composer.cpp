@@ -103,14 +103,31 @@ private slots:
         QCOMPARE(bytesText(composer, spy.at(1)), QStringLiteral("140 2 3 72 8 0 4 127 255"));
     }
 
-    void playSendsCurrentSlot()
+    // The robot plays what its slot holds, which may be anything: Play
+    // uploads the slot as shown first, in the same write.
+    void playUploadsWhatIsShownThenPlays()
     {
         SongComposer composer;
         composer.setCurrentSlot(3);
+        QVERIFY(composer.setSong(3, songOf({{60, 16}, {64, 16}})));
         QSignalSpy spy(&composer, &SongComposer::sendRequested);
         click(composer, "play");
         QCOMPARE(spy.count(), 1);
-        QCOMPARE(bytesText(composer, spy.at(0)), QStringLiteral("141 3"));
+        QCOMPARE(bytesText(composer, spy.at(0)), QStringLiteral("140 3 2 60 16 64 16 141 3"));
+        QCOMPARE(composer.message(), QStringLiteral("Song 3 as shown: uploaded (140) and played (141)."));
+        // Edited, it plays the edit.
+        QVERIFY(composer.setSong(3, songOf({{72, 8}})));
+        click(composer, "play");
+        QCOMPARE(bytesText(composer, spy.at(1)), QStringLiteral("140 3 1 72 8 141 3"));
+    }
+    void playOfAnEmptySlotIsRefused()
+    {
+        SongComposer composer;
+        composer.setCurrentSlot(2);
+        QSignalSpy spy(&composer, &SongComposer::sendRequested);
+        click(composer, "play");
+        QCOMPARE(spy.count(), 0);
+        QCOMPARE(composer.message(), QStringLiteral("Nothing to play: slot 2 has no notes."));
     }
 
     void slot4WarnsInline()
@@ -124,7 +141,7 @@ private slots:
         click(composer, "play");
         QCOMPARE(spy.count(), 2);
         QCOMPARE(bytesText(composer, spy.at(0)), QStringLiteral("140 4 1 67 10"));
-        QCOMPARE(bytesText(composer, spy.at(1)), QStringLiteral("141 4"));
+        QCOMPARE(bytesText(composer, spy.at(1)), QStringLiteral("140 4 1 67 10 141 4"));
         QVERIFY(composer.message().contains("slot 4 may not play"));
     }
 
@@ -146,9 +163,10 @@ private slots:
         QCOMPARE(composer.slotCount(), tabs);
         // The last slot plays; one past it does not exist.
         composer.slotTabs()->setCurrentIndex(tabs - 1);
+        QVERIFY(composer.setSong(tabs - 1, songOf({{60, 8}})));
         QSignalSpy spy(&composer, &SongComposer::sendRequested);
         click(composer, "play");
-        QCOMPARE(bytesText(composer, spy.at(0)), QStringLiteral("141 %1").arg(tabs - 1));
+        QCOMPARE(bytesText(composer, spy.at(0)), QStringLiteral("140 %1 1 60 8 141 %1").arg(tabs - 1));
         QVERIFY(!composer.setSong(tabs, songOf({{60, 8}})));
     }
 

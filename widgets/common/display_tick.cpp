@@ -93,6 +93,21 @@ void DisplayTick::wake()
     tick();
 }
 
+bool DisplayTick::paceBy(quint64 changes)
+{
+    if (m_pacedOnTick == m_ticks)
+        return m_quiet;
+    m_pacedOnTick = m_ticks;
+    if (changes != m_changesShown) {
+        m_changesShown = changes;
+        m_ticksWithoutChange = 0;
+        setQuiet(false);
+    } else if (!m_quiet && ++m_ticksWithoutChange >= kTicksBeforeQuiet) {
+        setQuiet(true);
+    }
+    return m_quiet;
+}
+
 void DisplayTick::tick()
 {
     ++m_ticks;

@@ -14,8 +14,8 @@
 // frame of the display wakes the GUI thread once, not once per view. It runs
 // only while something listens or waits for a frame.
 //
-// While nothing it shows changes (robots at rest stream the same values), the
-// window slows it to the quiet pace: a tick every kQuietIntervalMs (0.2 s),
+// While nothing it shows changes (robots at rest stream the same values), it
+// slows to the quiet pace (paceBy()): a tick every kQuietIntervalMs (0.2 s),
 // enough to carry the plots' lines on; a change wakes it at once.
 class DisplayTick : public QObject {
     Q_OBJECT
@@ -54,6 +54,14 @@ public:
     int framesPerTick() const { return m_quiet ? kQuietFramesPerTick : 1; }
     // Something to show came while quiet: a tick now, and the full pace.
     void wake();
+    // Told on a tick, once everything up to `changes` is shown (a count that
+    // moves whenever something to show changed): after kTicksBeforeQuiet
+    // ticks without a change it slows to the quiet pace, and a change brings
+    // the full pace back. Told twice on one tick, the first stands. Returns
+    // whether it is quiet now: the caller then asks to be woken at the next change.
+    bool paceBy(quint64 changes);
+    // A fifth of a second at the full pace.
+    static constexpr int kTicksBeforeQuiet = 6;
 
 private:
     explicit DisplayTick(QObject *parent);
@@ -81,4 +89,7 @@ private:
     std::vector<LastFrame> m_lastFrames;
     quint64 m_ticks = 0;
     bool m_quiet = false;
+    quint64 m_changesShown = 0;
+    quint64 m_pacedOnTick = ~0ull;
+    int m_ticksWithoutChange = 0;
 };

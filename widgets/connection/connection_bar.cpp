@@ -64,6 +64,10 @@ ConnectionBar::ConnectionBar(QWidget *parent) : QWidget(parent)
     const QColor alert = display::stateColor(display::State::Alert, palette());
     m_error->setStyleSheet(QString("QLabel { color: %1; font-weight: bold; }").arg(alert.name()));
 
+    m_wake = new QPushButton(this);
+    m_wake->setObjectName("wake");
+    m_wake->setHidden(true);
+
     auto *row = new QHBoxLayout;
     row->addWidget(m_transport);
     row->addWidget(m_port, 1);
@@ -79,7 +83,10 @@ ConnectionBar::ConnectionBar(QWidget *parent) : QWidget(parent)
     auto *layout = new QVBoxLayout(this);
     layout->setContentsMargins(4, 4, 4, 4);
     layout->addLayout(row);
-    layout->addWidget(m_error);
+    auto *errorRow = new QHBoxLayout;
+    errorRow->addWidget(m_error, 1);
+    errorRow->addWidget(m_wake);
+    layout->addLayout(errorRow);
 
     // Item texts change with the language; the combos follow their width.
     for (QComboBox *combo : {m_transport, m_profile, m_baud, m_brcLine})
@@ -90,6 +97,7 @@ ConnectionBar::ConnectionBar(QWidget *parent) : QWidget(parent)
     connect(m_connect, &QPushButton::clicked, this, &ConnectionBar::tryConnect);
     connect(m_tcp, &QLineEdit::returnPressed, this, &ConnectionBar::tryConnect);
     connect(m_disconnect, &QPushButton::clicked, this, &ConnectionBar::disconnectRequested);
+    connect(m_wake, &QPushButton::clicked, this, &ConnectionBar::wakeRequested);
 
     // The ports are listed when the serial port is first chosen: asking the
     // system for them is the dearest part of building the bar, and a window
@@ -123,6 +131,8 @@ void ConnectionBar::retranslateUi()
     m_brcLine->setAccessibleName(tr("Wake line"));
     m_connect->setText(tr("Connect"));
     m_disconnect->setText(tr("Disconnect"));
+    m_wake->setText(tr("Wake"));
+    m_wake->setToolTip(tr("Pulse the robot's BRC pin: switches on a robot switched off at its power button"));
     // Said beside the greyed fields, and on each of them.
     m_lockedHint->setText(tr("Disconnect to change the port"));
     for (QWidget *w : std::initializer_list<QWidget *>{m_transport, m_port, m_refresh, m_tcp, m_profile, m_baud, m_connect})
@@ -265,6 +275,10 @@ void ConnectionBar::showError(const QString &message)
     m_error->setText(message);
     m_error->setHidden(message.isEmpty());
 }
+
+void ConnectionBar::offerWake(bool offered) { m_wake->setHidden(!offered); }
+
+bool ConnectionBar::wakeOffered() const { return !m_wake->isHidden(); }
 
 QString ConnectionBar::errorText() const { return m_error->isHidden() ? QString() : m_error->text(); }
 

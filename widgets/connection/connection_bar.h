@@ -54,10 +54,15 @@ public:
     void clearError() { showError(QString()); }
     QString errorText() const;
     void refreshPorts();
+    // A Wake button beside the error while the robot is switched off at its
+    // power button (LinkStats::switchedOff).
+    void offerWake(bool offered);
+    bool wakeOffered() const;
 
 signals:
     void connectRequested(const ConnectionRequest &request);
     void disconnectRequested();
+    void wakeRequested(); // the Wake button
 
 protected:
     void changeEvent(QEvent *e) override;
@@ -83,6 +88,7 @@ private:
     bool m_connected = false;
     bool m_portsListed = false; // refreshPorts() has run
     QLabel *m_error = nullptr;
+    QPushButton *m_wake = nullptr;
     OwnError m_ownError = OwnError::None;
     QString m_badBridge; // the bridge address that BadBridge is about
 };

@@ -89,6 +89,9 @@ protected:
     void resizeEvent(QResizeEvent *event) override;
 
 private:
+    // The readout's words or the screen reader's: one reading of the command, two wordings.
+    enum class Wording { Shown, Spoken };
+    static QString words(const MotionCommand &command, Wording wording);
     friend class DrivePadArea;
     void retranslateUi();
     void updateAccessibleDescription();

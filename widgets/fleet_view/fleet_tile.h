@@ -1,11 +1,17 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "battery_health.h"
+#include "display_palette.h"
+
 #include <QAbstractButton>
 #include <QFontMetrics>
 #include <QString>
+#include <QStringList>
+#include <QTime>
 
 #include <optional>
+#include <utility>
 
 // The few values a fleet tile shows; a tile repaints only when one changes.
 struct FleetTileValues {
@@ -15,6 +21,8 @@ struct FleetTileValues {
     QString mode;                      // "Safe"; empty when not known
     QString modeReason;                // "cliff (front left)": why it is in Passive; empty: nothing to say
     std::optional<int> batteryPercent; // not known until the bridge says
+    BatteryCondition packCondition = BatteryCondition::Unknown; // the pack's health
+    std::optional<int> packCapacityMah; // measured
     bool bumpLeft = false;
     bool bumpRight = false;
     bool wheelDrop = false;
@@ -24,6 +32,12 @@ struct FleetTileValues {
     std::optional<int> framesPerSecond;
     QString controller;                // empty: nobody
     QString program;                   // the controller's program, empty: none said (a console)
+    // Its bridge went offline while the broker was fine (its last will), at
+    // this time; null: not seen going (online, or offline before the console came).
+    QTime bridgeLostAt;
+    QString cutOffController;          // who drove it then, cut off; empty: nobody
+    QString cutOffProgram;             // their program, empty: none said
+    bool mayBeMoving = false;          // it was asked to move then: a real robot keeps its last drive
     friend bool operator==(const FleetTileValues &, const FleetTileValues &) = default;
 };
 
@@ -44,14 +58,24 @@ public:
     QString modeText() const; // the mode, why, and the battery
     QString modeOnlyText() const;
     QString batteryText() const; // empty while not known
-    // The mode line as painted at the tile's size: the battery always whole,
-    // the mode and why shortened before it.
+    // The same said shorter and shorter: without the word "battery", the
+    // pack's capacity, then the pack's health (the charge alone at last).
+    QStringList batteryTexts() const;
+    // The lines below the name as painted at the tile's size: mode and
+    // battery, hazards, link, control. The battery always whole (said
+    // shorter when the mode would not fit beside it), the mode and why
+    // shortened before it.
+    QStringList shownLines() const;
     QString shownModeLine() const;
     // The height of its smallest type, in pixels.
     int smallestTextPixels() const;
     QString hazardText() const;
     QString linkText() const;
     QString controlText() const;
+    // What a tile whose bridge went offline says at length (its tooltip, the
+    // status bar): what was cut off, whether the robot may still be moving,
+    // how to stop it and what to check. Empty while its bridge is not lost.
+    static QString bridgeLostText(const FleetTileValues &values);
 
     // How often it was painted: a test sees a repaint skipped.
     int paintCount() const { return m_paints; }
@@ -67,6 +91,19 @@ private:
     void updateAccessibleText();
     QFont lineFont() const;
     int lineWidth() const;
+    // A line below the name: its texts, the longest first, of which the
+    // first that fits is shown; kept whole at its right end, the first of
+    // `rights` that leaves room (none: nothing there); its colour, if any
+    // (then bold).
+    struct Line {
+        QStringList lefts;
+        QStringList rights;
+        std::optional<display::State> state;
+    };
+    QList<Line> lines() const;
+    QFont fontOf(const Line &line) const;
+    // The left and right parts as painted at the tile's size.
+    std::pair<QString, QString> shown(const Line &line) const;
     // `left` shortened so that it and `right` share a line `width` wide.
     static QString leftPartShown(const QFontMetrics &metrics, int width, const QString &left, const QString &right);
 

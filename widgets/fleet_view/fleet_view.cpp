@@ -5,6 +5,7 @@
 #include "screen_fit.h"
 #include "stop_all_button.h"
 
+#include <QComboBox>
 #include <QEvent>
 #include <QFontInfo>
 #include <QGridLayout>
@@ -43,11 +44,21 @@ FleetView::FleetView(QWidget *parent) : QWidget(parent)
     m_stopAll->setObjectName("fleetStopAll");
     m_stopAll->setFocusPolicy(Qt::NoFocus);
     connect(m_stopAll, &QPushButton::clicked, this, &FleetView::stopAllRequested);
+    m_orderBox = new QComboBox(this);
+    m_orderBox->setObjectName("fleetOrder");
+    m_orderBox->addItems({QString(), QString()});
+    connect(m_orderBox, &QComboBox::activated, this, [this](int index) { setOrder(Order(index)); });
     auto *header = new QHBoxLayout;
     header->addWidget(m_broker, 1);
+    header->addWidget(m_orderBox);
     header->addWidget(m_connect);
     header->addWidget(m_stopAll);
     layout->addLayout(header);
+    m_stopped = new QLabel(this);
+    m_stopped->setObjectName("fleetStopped");
+    m_stopped->setWordWrap(true);
+    m_stopped->hide();
+    layout->addWidget(m_stopped);
     m_empty = new QLabel(this);
     m_empty->setObjectName("fleetEmpty");
     m_empty->setWordWrap(true);
@@ -71,6 +82,10 @@ FleetView::FleetView(QWidget *parent) : QWidget(parent)
 void FleetView::retranslateUi()
 {
     setAccessibleName(tr("Fleet view"));
+    m_orderBox->setItemText(int(Order::Name), tr("By name"));
+    m_orderBox->setItemText(int(Order::PackHealth), tr("By pack health"));
+    m_orderBox->setToolTip(tr("The order of the tiles: by name, or by the health of each robot's battery pack, the "
+                              "one to replace first."));
     const bool offer = m_brokerText.isEmpty() && !m_reconnectOffer.isEmpty();
     // Connected, the same dialog changes the broker.
     m_connect->setText(offer ? tr("Reconnect…") : m_connected ? tr("Another broker…") : tr("Connect to broker…"));
@@ -101,7 +116,9 @@ void FleetView::resizeEvent(QResizeEvent *event)
     QFont broker = display::valueFont(font(), 1.6 * scale);
     broker.setPixelSize(std::max(kLeastPixels, QFontInfo(broker).pixelSize()));
     m_broker->setFont(broker);
+    m_stopped->setFont(broker);
     m_connect->setFont(broker);
+    m_orderBox->setFont(broker);
     m_empty->setFont(broker);
     QWidget::resizeEvent(event);
 }
@@ -180,9 +197,17 @@ FleetTile *FleetView::tile(const QString &name) const
     return nullptr;
 }
 
+void FleetView::setStopReport(const QString &text)
+{
+    m_stopped->setText(text);
+    m_stopped->setVisible(!text.isEmpty());
+}
+
+QString FleetView::stopReport() const { return m_stopped->text(); }
+
 void FleetView::setTiles(const QList<FleetTileValues> &tiles)
 {
-    bool added = false;
+    bool added = false, healthChanged = false;
     for (const FleetTileValues &v : tiles) {
         FleetTile *t = tile(v.name);
         if (!t) {
@@ -192,18 +217,54 @@ void FleetView::setTiles(const QList<FleetTileValues> &tiles)
             m_tiles << t;
             added = true;
         }
+        healthChanged = healthChanged || t->values().packCondition != v.packCondition
+                        || t->values().packCapacityMah != v.packCapacityMah;
         t->setValues(v);
     }
-    if (added) {
-        // In the order of their names, numbers as numbers (r2 before r10),
-        // however the bridges came online: the class finds its robot.
-        std::stable_sort(m_tiles.begin(), m_tiles.end(), [](const FleetTile *a, const FleetTile *b) {
-            return namesInOrder(a->values().name, b->values().name);
-        });
+    if (added || (healthChanged && m_order == Order::PackHealth)) {
+        sortTiles();
         m_empty->setVisible(m_tiles.isEmpty());
         m_scroll->setVisible(!m_tiles.isEmpty());
         relayout(true);
     }
+}
+
+void FleetView::removeTile(const QString &name)
+{
+    FleetTile *t = tile(name);
+    if (!t)
+        return;
+    m_tiles.removeOne(t);
+    delete t;
+    m_empty->setVisible(m_tiles.isEmpty());
+    m_scroll->setVisible(!m_tiles.isEmpty());
+    relayout(true);
+}
+
+void FleetView::setOrder(Order order)
+{
+    m_order = order;
+    m_orderBox->setCurrentIndex(int(order));
+    sortTiles();
+    relayout(true);
+}
+
+void FleetView::sortTiles()
+{
+    // In the order of their names, numbers as numbers (r2 before r10),
+    // however the bridges came online: the class finds its robot. By
+    // health, the worst pack first, the least capacity first among equals.
+    const auto rank = [](BatteryCondition c) { return c == BatteryCondition::Unknown ? 0 : int(c); };
+    std::stable_sort(m_tiles.begin(), m_tiles.end(), [&](const FleetTile *a, const FleetTile *b) {
+        const FleetTileValues &x = a->values(), &y = b->values();
+        if (m_order == Order::PackHealth) {
+            if (rank(x.packCondition) != rank(y.packCondition))
+                return rank(x.packCondition) > rank(y.packCondition);
+            if (x.packCapacityMah.value_or(1 << 30) != y.packCapacityMah.value_or(1 << 30))
+                return x.packCapacityMah.value_or(1 << 30) < y.packCapacityMah.value_or(1 << 30);
+        }
+        return namesInOrder(x.name, y.name);
+    });
 }
 
 void FleetView::setSelected(const QString &name)

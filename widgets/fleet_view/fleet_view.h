@@ -6,6 +6,7 @@
 #include <QList>
 #include <QWidget>
 
+class QComboBox;
 class QGridLayout;
 class QLabel;
 class QPushButton;
@@ -23,6 +24,11 @@ public:
     // Adds tiles for new names and updates the others (in the given order
     // for new ones); a tile repaints only when its values change.
     void setTiles(const QList<FleetTileValues> &tiles);
+    // A robot gone from the window goes from the view.
+    void removeTile(const QString &name);
+    // What the last Stop all did ("Stopped all 3 robots at 21:58"), under the header.
+    void setStopReport(const QString &text);
+    QString stopReport() const;
     // The broker line above the tiles: where, and whether connected.
     void setBrokerText(const QString &text, bool connected);
     QString brokerText() const { return m_brokerText; }
@@ -32,6 +38,12 @@ public:
     QString reconnectOffer() const { return m_reconnectOffer; }
     QLabel *brokerLabel() const { return m_broker; }
     QPushButton *connectButton() const { return m_connect; }
+    // The tiles' order: by name (r2 before r10), or by pack health, the
+    // worst first (replace, worn, good, not measured), then by name.
+    enum class Order { Name, PackHealth };
+    void setOrder(Order order);
+    Order order() const { return m_order; }
+    QComboBox *orderBox() const { return m_orderBox; }
     // Checks the tile of the selected robot (none for an empty name).
     void setSelected(const QString &name);
 
@@ -56,8 +68,10 @@ protected:
 
 private:
     void relayout(bool force = false);
+    void sortTiles();
     void retranslateUi();
 
+    QLabel *m_stopped = nullptr;
     QLabel *m_broker = nullptr;
     QLabel *m_empty = nullptr;
     QPushButton *m_connect = nullptr;
@@ -71,4 +85,6 @@ private:
     QString m_brokerText;
     QString m_reconnectOffer;
     bool m_connected = false;
+    Order m_order = Order::Name;
+    QComboBox *m_orderBox = nullptr;
 };

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "battery_health.h"
 #include "firmware_banner.h"
 #include "sensor_snapshot.h"
 
@@ -30,6 +31,9 @@ public:
     // Packets this robot's firmware reports wrongly (requested radius before
     // 3.3.0) are greyed, with the reason as their tooltip.
     void setCorrections(const oi::FirmwareCorrections &corrections);
+    // The pack's health (a gauge of the battery section), and the charge's
+    // caveat: estimated from voltage after a boot that re-seeded it.
+    void setBatteryHealth(const BatteryHealthReport &report);
     // Stale values are greyed under a STALE banner; at the end of a replay
     // the banner says the recording has ended.
     void setStale(bool stale, bool replayEnded = false);
@@ -40,7 +44,7 @@ public:
     // "requested_radius", "left_motor_current", "right_motor_current",
     // "main_brush_current", "side_brush_current", "dirt_detect",
     // "cargo_bay_analog", "digital_input_0".."digital_input_3",
-    // "baud_rate_change".
+    // "baud_rate_change", "battery_health".
     static QStringList allGaugeKeys();
     // The keys of the gauges this profile shows, in order.
     QStringList shownGaugeKeys() const;
@@ -89,6 +93,7 @@ private:
     QGridLayout *m_grid = nullptr;
     QLabel *m_banner = nullptr;
     oi::SensorSnapshot m_snapshot; // the last shown, to show again in a new language
+    BatteryHealthReport m_health;
     oi::FirmwareCorrections m_corrections;
     int m_columns = 0;
     int m_captionWidth = 0; // what the widest caption needs

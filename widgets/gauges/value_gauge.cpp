@@ -265,6 +265,7 @@ void ValueGauge::setValue(const QString &value, const QString &unit)
 void ValueGauge::setDetail(const QString &detail)
 {
     m_detail->setText(detail);
+    showCompactRows();
     refreshToolTip();
     updateDescription();
 }
@@ -274,12 +275,14 @@ void ValueGauge::setRange(double min, double max)
     m_bar->m_min = min;
     m_bar->m_max = max;
     m_bar->m_visible = true;
+    showCompactRows();
     m_bar->update();
 }
 
 void ValueGauge::clearRange()
 {
     m_bar->m_visible = false;
+    showCompactRows();
     m_bar->update();
 }
 
@@ -345,6 +348,20 @@ void ValueGauge::setTitle(const QString &title)
 }
 
 QString ValueGauge::title() const { return m_title->text(); }
+
+void ValueGauge::setCompact(bool compact)
+{
+    m_compact = compact;
+    m_detail->setMinimumHeight(compact ? 0 : m_flag->sizeHint().height());
+    showCompactRows();
+}
+
+void ValueGauge::showCompactRows()
+{
+    m_detail->setVisible(!m_compact || !m_detail->text().isEmpty());
+    m_bar->setVisible(!m_compact || m_bar->m_visible);
+}
+
 
 int ValueGauge::widthForCaption(const QString &caption) const
 {

@@ -37,6 +37,10 @@ public:
     // A value the robot is known to report wrongly: greyed, with `why` as its
     // tooltip. Empty makes it a good value again.
     void setUnreliable(const QString &why);
+    // A readout among several (a lesson's step, the projector): no room kept
+    // for an empty detail or a bar it has not got, so that a few of them fit
+    // beside the step's views with every title and value whole.
+    void setCompact(bool compact);
     QString unreliableReason() const { return m_unreliable; }
     // Stale or unreliable: shown grey.
     bool isGreyed() const { return m_stale || !m_unreliable.isEmpty(); }
@@ -65,6 +69,7 @@ private:
     void updateDescription();
     void refreshToolTip();
     void refreshColours();
+    void showCompactRows();
 
     QLabel *m_title = nullptr;
     ValueLine *m_value = nullptr;
@@ -75,4 +80,5 @@ private:
     bool m_outOfRange = false;
     bool m_stale = false;
     QString m_unreliable;
+    bool m_compact = false;
 };

@@ -223,8 +223,10 @@ void LessonStepView::rebuildReadouts()
         auto *gauge = new ValueGauge(QString(), this);
         gauge->setObjectName(QStringLiteral("readout_%1").arg(key));
         gauge->setSizePolicy(QSizePolicy::Preferred, QSizePolicy::Maximum); // the views take the height
-        // One column, or two when there are many (the robot alone).
-        const int columns = m_readoutKeys.size() > 4 ? 2 : 1;
+        gauge->setCompact(true);
+        // One column, or two when there are more than two: a column of four
+        // is taller than a 1280x720 projector leaves beside the views.
+        const int columns = m_readoutKeys.size() > 2 ? 2 : 1;
         const int at = int(m_readouts.size());
         m_readouts.insert(key, gauge);
         m_readoutGrid->addWidget(gauge, at / columns, at % columns, Qt::AlignTop);

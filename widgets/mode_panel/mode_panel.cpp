@@ -51,21 +51,25 @@ ModePanel::ModePanel(QWidget *parent) : QWidget(parent)
     system->addWidget(addButton("power", C::Power));
     system->addStretch();
 
+    // Four short names in the first row; the longer ones (long in German)
+    // span the columns beside them, so the panel fits a 1280 px screen's dock.
     auto *cleaning = new QGridLayout;
     cleaning->addWidget(addButton("clean", C::Clean), 0, 0);
     cleaning->addWidget(addButton("spot", C::Spot), 0, 1);
     cleaning->addWidget(addButton("max", C::Max), 0, 2);
     cleaning->addWidget(addButton("seek-dock", C::SeekDock), 0, 3);
     cleaning->addWidget(addButton("cover", C::Cover), 1, 0);
-    cleaning->addWidget(addButton("cover-and-dock", C::CoverAndDock), 1, 1);
+    cleaning->addWidget(addButton("cover-and-dock", C::CoverAndDock), 1, 1, 1, 3);
     m_demo = new QComboBox(this);
     m_demo->setObjectName("demoChoice");
     for (int demo = demos::kAbort; demo <= demos::kLast; ++demo)
         m_demo->addItem(QString(), demo);
     m_demo->setCurrentIndex(1);
-    m_demo->setSizeAdjustPolicy(QComboBox::AdjustToContents); // names change with the language
-    cleaning->addWidget(m_demo, 1, 2);
-    cleaning->addWidget(addButton("demo", C::Demo), 1, 3);
+    // As wide as a short name: the list shows each name whole.
+    m_demo->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    m_demo->setMinimumContentsLength(10);
+    cleaning->addWidget(m_demo, 2, 0, 1, 2);
+    cleaning->addWidget(addButton("demo", C::Demo), 2, 2);
 
     auto *layout = new QVBoxLayout(this);
     layout->addWidget(m_modeLabel);
@@ -172,9 +176,13 @@ void ModePanel::setMode(const RobotMode &mode)
     m_modeLabel->setText(reported ? tr("Mode: %1").arg(oitext::modeName(*reported)) : tr("Mode: unknown"));
     highlight(reported);
     // Said only of the mode shown above it, by the same session.
-    const QString reason = mode.reason();
-    m_safetyLabel->setText(reason.isEmpty() ? QString() : reason + ' ' + mode.nextStep());
-    m_safetyLabel->setVisible(!reason.isEmpty());
+    m_safetyLabel->setText(mode.advice());
+    m_safetyLabel->setVisible(!m_safetyLabel->text().isEmpty());
+    // A program the user started is no alarm: it is said in the usual colour.
+    const QColor alert = display::stateColor(display::State::Alert, palette());
+    m_safetyLabel->setStyleSheet(mode.cause() == RobotMode::Cause::OwnProgram
+                                     ? QString("QLabel { font-weight: bold; }")
+                                     : QString("QLabel { color: %1; font-weight: bold; }").arg(alert.name()));
 }
 
 void ModePanel::highlight(std::optional<oi::OiMode> mode)
@@ -193,8 +201,6 @@ void ModePanel::highlight(std::optional<oi::OiMode> mode)
                                                    .arg(fill.name(), text.name())
                                              : QString());
     }
-    const QColor alert = display::stateColor(display::State::Alert, palette());
-    m_safetyLabel->setStyleSheet(QString("QLabel { color: %1; font-weight: bold; }").arg(alert.name()));
 }
 
 std::optional<oi::OiMode> ModePanel::highlightedMode() const

@@ -173,6 +173,9 @@ private:
     void followDisplay();
     void retranslateUi();
     QString notIdentifiedText() const;
+    // The label's short pose or the screen reader's sentence: one reading, two wordings.
+    enum class Wording { Shown, Spoken };
+    QString poseWords(Wording wording) const;
     void updateGeometryTips();
     void zoomBy(double factor, QPointF anchorWidget);
     void applyGeometry();

@@ -19,6 +19,8 @@ Kind kindOf(const oi::PacketInfo &info)
 {
     if (info.key.starts_with("unused"))
         return Kind::Unused;
+    if (info.key.starts_with("dirt_detect")) // 15, and the SCI's right detector, 16
+        return Kind::Motors;
     switch (info.id) {
     case 7: case 8: case 9: case 10: case 11: case 12: case 13:
     case 27: case 28: case 29: case 30: case 31:

@@ -141,13 +141,14 @@ void SensorPlots::setComparison(const SensorHistory *history, double shiftSecond
     m_stack->setComparison(history, shiftSeconds, label, primaryLabel);
 }
 
-void SensorPlots::setStale(bool stale, bool replayEnded)
+void SensorPlots::setStale(bool stale, bool replayEnded, bool replay)
 {
     replayEnded = stale && replayEnded;
-    if (stale == m_stale && replayEnded == m_replayEnded)
+    if (stale == m_stale && replayEnded == m_replayEnded && replay == m_replay)
         return;
     m_stale = stale;
     m_replayEnded = replayEnded;
+    m_replay = replay;
     applyPaused();
 }
 
@@ -174,12 +175,13 @@ void SensorPlots::applyPaused()
         m_pauseButton->setChecked(paused);
     }
     m_pauseButton->setText(paused ? tr("Resume") : tr("Pause"));
-    const display::State state = paused    ? display::State::Warning
-                                 : m_stale ? display::State::Stale
-                                           : display::State::Active;
+    const display::State state = paused              ? display::State::Warning
+                                 : m_stale || m_replay ? display::State::Stale
+                                                       : display::State::Active;
     const QPalette pal = palette();
     m_status->setText(paused    ? tr("Paused: drag or arrows pan, wheel or +/- zoom, Space resumes")
                       : m_replayEnded ? tr("Replay finished")
+                      : m_replay ? tr("Replay, not live")
                       : m_stale ? tr("Not live: no fresh data")
                                 : tr("Live"));
     m_status->setStyleSheet(QStringLiteral("QLabel { background: %1; color: %2; border-radius: 3px; }")

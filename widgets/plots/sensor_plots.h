@@ -44,8 +44,9 @@ public:
     void setProfile(const oi::RobotProfile &profile);
     void setCorrections(const oi::FirmwareCorrections &corrections);
     // No fresh data (the link is quiet, or a replay has ended): the badge that
-    // says "Live" while data flows says so instead.
-    void setStale(bool stale, bool replayEnded = false);
+    // says "Live" while data flows says so instead. A replay's data is never
+    // live: its badge says "Replay" while it plays.
+    void setStale(bool stale, bool replayEnded = false, bool replay = false);
     QString statusText() const;
 
     // Drawn on every plot; see PlotStack.
@@ -82,4 +83,5 @@ private:
     QLabel *m_status;
     bool m_stale = false;
     bool m_replayEnded = false;
+    bool m_replay = false;
 };

@@ -2,6 +2,7 @@
 #include "trace_plot.h"
 
 #include <algorithm>
+#include <cmath>
 
 void TraceGraph::limitTo(double fromKey, const QRect &clip)
 {
@@ -64,8 +65,11 @@ public:
                 delete painter;
                 buffer->donePainting();
             }
-            for (TraceGraph *trace : std::as_const(traces))
-                trace->limitTo(trace->keyAxis()->pixelToCoord(changed.left()), changed);
+            // From the points whose lines' pen reaches into the rectangle.
+            for (TraceGraph *trace : std::as_const(traces)) {
+                const double reach = std::ceil(trace->pen().widthF()) + 1;
+                trace->limitTo(trace->keyAxis()->pixelToCoord(changed.left() - reach), changed);
+            }
         } else {
             buffer->clear(Qt::transparent);
         }

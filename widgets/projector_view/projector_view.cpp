@@ -223,7 +223,7 @@ QString ProjectorView::reasonLine() const
     if (m_runner && m_runner->isRunning() && !m_runner->isFinished()
         && m_mode.stopExpectedBy(lesson::goalPackets(m_runner->lesson().steps[m_runner->currentStep()].goal)))
         return lead + tr("This step expects it: follow the step below.");
-    return lead + m_mode.nextStep();
+    return (lead + m_mode.nextStep()).trimmed();
 }
 
 QPushButton *ProjectorView::stopAllButton() const { return m_stopAll; }

@@ -1,5 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// The robot diagram: its state, its scene's geometry and fonts, its status
+// chips and their tooltips.
 #include "robot_diagram.h"
+#include "robot_diagram_scene.h"
 
 #include "oi_text.h"
 
@@ -7,7 +10,6 @@
 #include <QFontMetricsF>
 #include <QHelpEvent>
 #include <QPainter>
-#include <QtMath>
 #include <QPainterPath>
 #include <QToolTip>
 
@@ -18,115 +20,7 @@
 
 using display::State;
 
-namespace {
-
-// The scene is 1000 units wide with the robot's centre at the origin; y
-// grows towards the back of the robot. The body's radius of 250 units stands
-// for the real 170 mm. The status chips fill whatever height is left below.
-constexpr qreal kSceneWidthLightBumps = 1000;
-constexpr qreal kSceneWidthPlain = 900;
-constexpr qreal kSceneTopLightBumps = -470; // room for the light-bump bars
-constexpr qreal kSceneTopPlain = -320;
-constexpr qreal kBodyRadius = 250;
-constexpr qreal kBumperInner = 252;
-constexpr qreal kBumperOuter = 282;
-constexpr qreal kBumperOuterBumped = 298;
-constexpr qreal kBumperGapDegrees = 1.5;
-constexpr qreal kBumperRightStart = -12; // degrees, 0 = robot's right, 90 = front
-constexpr qreal kBumperLeftEnd = 192;
-constexpr qreal kLightBumpBase = 306;
-constexpr qreal kLightBumpLength = 122;
-constexpr qreal kLightBumpLabelRadius = 452;
-constexpr qreal kLightBumpHalfWidthDegrees = 7;
-constexpr qreal kCliffLampRadius = 26;
-constexpr QSizeF kCliffLabelSize(98, 58);
-constexpr qreal kChipTop = 272;
-constexpr qreal kChipMinHeight = 80;
-constexpr qreal kChipMaxHeight = 118;
-constexpr qreal kChipGap = 10;
-constexpr qreal kChipRows = 3;
-constexpr qreal kChipBottomMargin = 8;
-constexpr qreal kSceneBottom = kChipTop + kChipRows * (kChipMinHeight + kChipGap);
-constexpr qreal kSignalMax = 4095;
-
-// Left to right across the front, as bits 0..5 of packet 45 run.
-constexpr std::array<qreal, 6> kLightBumperAngles = {168, 136, 104, 76, 44, 12};
-
-QPointF polar(qreal radius, qreal degrees)
-{
-    const qreal a = degrees * std::numbers::pi / 180.0;
-    return {radius * std::cos(a), -radius * std::sin(a)};
-}
-
-QRectF circleRect(qreal radius) { return {-radius, -radius, 2 * radius, 2 * radius}; }
-
-// A ring segment between two radii, from `startDegrees` counter-clockwise
-// through `sweepDegrees`.
-QPainterPath ringSegment(qreal inner, qreal outer, qreal startDegrees, qreal sweepDegrees)
-{
-    QPainterPath path;
-    path.arcMoveTo(circleRect(outer), startDegrees);
-    path.arcTo(circleRect(outer), startDegrees, sweepDegrees);
-    path.arcTo(circleRect(inner), startDegrees + sweepDegrees, -sweepDegrees);
-    path.closeSubpath();
-    return path;
-}
-
-QPointF cliffLampPoint(oi::CliffSensor sensor)
-{
-    switch (sensor) {
-    case oi::CliffSensor::Left: return {-195, -80};
-    case oi::CliffSensor::FrontLeft: return {-80, -205};
-    case oi::CliffSensor::FrontRight: return {80, -205};
-    case oi::CliffSensor::Right: return {195, -80};
-    }
-    return {};
-}
-
-// The number and bar sit beside the lamp, towards the middle of the robot.
-QRectF cliffLabelRect(oi::CliffSensor sensor)
-{
-    QPointF centre;
-    switch (sensor) {
-    case oi::CliffSensor::Left: centre = {-115, -80}; break;
-    case oi::CliffSensor::FrontLeft: centre = {-80, -145}; break;
-    case oi::CliffSensor::FrontRight: centre = {80, -145}; break;
-    case oi::CliffSensor::Right: centre = {115, -80}; break;
-    }
-    return {centre - QPointF(kCliffLabelSize.width() / 2, kCliffLabelSize.height() / 2),
-            kCliffLabelSize};
-}
-
-constexpr std::array<oi::CliffSensor, 4> kCliffs = {
-    oi::CliffSensor::Left, oi::CliffSensor::FrontLeft, oi::CliffSensor::FrontRight,
-    oi::CliffSensor::Right};
-
-constexpr QRectF kWheelLeft(-195, -30, 44, 110);
-constexpr QRectF kWheelRight(151, -30, 44, 110);
-constexpr QPointF kCaster(0, -18); // Create 1, drawn between the cliff labels
-constexpr qreal kCasterRadius = 24;
-constexpr QPointF kOmniReceiver(0, -228);
-constexpr QRectF kWall(316, -10, 18, 160);
-constexpr QRectF kCargoBay(-125, 62, 250, 146);
-
-bool isDark(const QPalette &palette) { return palette.color(QPalette::Window).lightness() < 128; }
-
-// The colour of signal strengths, matching the bars in SignalBars.
-QColor cliffSignalColour(const QPalette &palette)
-{
-    return isDark(palette) ? QColor(70, 200, 200) : QColor(0, 130, 140);
-}
-QColor lightBumpSignalColour(const QPalette &palette)
-{
-    return isDark(palette) ? QColor(110, 160, 245) : QColor(40, 100, 200);
-}
-
-QString signalText(const oi::SensorSnapshot &s, int packetId)
-{
-    return s.has(packetId) ? QString::number(s.raw(packetId)) : QStringLiteral("\u2014");
-}
-
-} // namespace
+using namespace diagram_scene;
 
 RobotDiagram::RobotDiagram(QWidget *parent)
     : QWidget(parent), m_snapshot(*m_profile)
@@ -164,7 +58,7 @@ QString RobotDiagram::stateSummary() const
         parts << tr("Wheel drop left");
     if (s.wheelDropRight())
         parts << tr("Wheel drop right");
-    if (isCreate1() && s.wheelDropCaster())
+    if (caps().casterWheelDrop && s.wheelDropCaster())
         parts << tr("Caster wheel drop");
     const QString cliffNames[] = {tr("Cliff left"), tr("Cliff front left"), tr("Cliff front right"),
                                   tr("Cliff right")};
@@ -173,7 +67,7 @@ QString RobotDiagram::stateSummary() const
             parts << cliffNames[static_cast<int>(sensor)];
     if (s.wall())
         parts << tr("Wall");
-    if (!isCreate1() && s.has(45))
+    if (caps().lightBumpers && s.has(45))
         for (const oi::BitMeaning &b : m_profile->bits(45))
             if (s.raw(45) & b.mask)
                 parts << tr("Light bumper %1").arg(oitext::bitName(b));
@@ -219,12 +113,12 @@ QSize RobotDiagram::sizeHint() const { return {520, 520}; }
 
 qreal RobotDiagram::sceneTop() const
 {
-    return isCreate1() ? kSceneTopPlain : kSceneTopLightBumps;
+    return caps().lightBumpers ? kSceneTopLightBumps : kSceneTopPlain;
 }
 
 qreal RobotDiagram::sceneScale() const
 {
-    const qreal sceneWidth = isCreate1() ? kSceneWidthPlain : kSceneWidthLightBumps;
+    const qreal sceneWidth = caps().lightBumpers ? kSceneWidthLightBumps : kSceneWidthPlain;
     const qreal s = std::min(width() / sceneWidth, height() / (kSceneBottom - sceneTop()));
     return std::max<qreal>(1e-3, s);
 }
@@ -407,7 +301,7 @@ QList<QList<RobotDiagram::Chip>> RobotDiagram::chipRows() const
             overcurrent = {overcurrent.caption, over.join(", "), State::Alert, {}};
     }
 
-    if (isCreate1())
+    if (!caps().sideInfrared)
         return {{irChip(tr("IR"), 17, s.irOmni()), virtualWall}, {buttons}, {overcurrent}};
 
     // ERRATA 5: 2 is the Create 2's dirty stasis wheel, not "moving".
@@ -490,7 +384,7 @@ std::optional<QPointF> RobotDiagram::scenePartCentre(const QString &part) const
     if (part == QLatin1String("wheel_right"))
         return kWheelRight.center();
     if (part == QLatin1String("caster"))
-        return isCreate1() ? std::optional(kCaster) : std::nullopt;
+        return caps().casterWheelDrop ? std::optional(kCaster) : std::nullopt;
     if (part == QLatin1String("wall"))
         return kWall.center();
     if (part == QLatin1String("ir_receiver"))
@@ -503,212 +397,8 @@ std::optional<QPointF> RobotDiagram::scenePartCentre(const QString &part) const
                                          "light_bump_center_right", "light_bump_front_right", "light_bump_right"};
     for (int i = 0; i < 6; ++i)
         if (part == QLatin1String(lights[i]))
-            return isCreate1() ? std::nullopt : std::optional(polar(bumperMid, kLightBumperAngles[std::size_t(i)]));
+            return !caps().lightBumpers ? std::nullopt : std::optional(polar(bumperMid, kLightBumperAngles[std::size_t(i)]));
     return std::nullopt;
-}
-
-// A thick ring in the palette's highlight colour, with a thin outline so it
-// stands out on light and dark fills alike.
-void RobotDiagram::paintHighlights(QPainter &p) const
-{
-    const QColor ring = palette().color(QPalette::Highlight);
-    for (const QString &part : m_highlighted) {
-        const auto centre = scenePartCentre(part);
-        if (!centre)
-            continue;
-        // Round the lamp, clear of the cliff signal's number below it.
-        const qreal radius = part.startsWith(QLatin1String("wheel")) ? 78
-                             : part.startsWith(QLatin1String("cliff")) ? kCliffLampRadius + 10
-                                                                         : 46;
-        p.setBrush(Qt::NoBrush);
-        p.setPen(QPen(inkColour(), 16));
-        p.drawEllipse(*centre, radius, radius);
-        p.setPen(QPen(ring, 10));
-        p.drawEllipse(*centre, radius, radius);
-    }
-}
-
-void RobotDiagram::paintBody(QPainter &p) const
-{
-    const QColor outline = inkColour();
-    p.setPen(QPen(outline, 5));
-    p.setBrush(palette().color(QPalette::Base));
-    p.drawEllipse(circleRect(kBodyRadius));
-
-    if (isCreate1()) {
-        // The cargo bay, with its connector at the front.
-        p.setPen(QPen(outline, 3));
-        p.setBrush(palette().color(QPalette::Window));
-        p.drawRoundedRect(kCargoBay, 18, 18);
-        p.setPen(inkColour());
-        p.setFont(sceneFont(26, false));
-        p.drawText(kCargoBay.adjusted(0, 40, 0, 0), Qt::AlignHCenter | Qt::AlignTop,
-                   tr("CARGO BAY"));
-        p.setBrush(outline);
-        p.setPen(Qt::NoPen);
-        p.drawRoundedRect(QRectF(-40, kCargoBay.top() + 10, 80, 16), 4, 4);
-    }
-
-    // The omnidirectional IR receiver on top, at the front.
-    const bool ir = m_snapshot.has(17) && m_snapshot.irOmni().kind != oi::IrCharacter::Kind::None;
-    p.setPen(QPen(outline, 3));
-    p.setBrush(fill(ir ? State::Active : State::Idle));
-    p.drawEllipse(kOmniReceiver, 15, 15);
-}
-
-void RobotDiagram::paintBumper(QPainter &p) const
-{
-    const QColor outline = inkColour();
-    auto half = [&](bool left, bool bumped) {
-        const qreal outer = bumped ? kBumperOuterBumped : kBumperOuter;
-        const QPainterPath path =
-            left ? ringSegment(kBumperInner, outer, 90 + kBumperGapDegrees,
-                               kBumperLeftEnd - 90 - kBumperGapDegrees)
-                 : ringSegment(kBumperInner, outer, kBumperRightStart,
-                               90 - kBumperGapDegrees - kBumperRightStart);
-        p.setPen(QPen(outline, 3));
-        p.setBrush(fill(bumped ? State::Alert : State::Idle));
-        p.drawPath(path);
-    };
-    half(true, m_snapshot.bumpLeft());
-    half(false, m_snapshot.bumpRight());
-
-    if (isCreate1())
-        return;
-    // The light bumpers sit in the bumper; a lit one has seen an obstacle.
-    for (std::size_t i = 0; i < kLightBumperAngles.size(); ++i) {
-        const bool on = m_snapshot.lightBumper(static_cast<oi::LightBumper>(i));
-        p.setPen(QPen(outline, 3));
-        p.setBrush(fill(on ? State::Warning : State::Idle));
-        p.drawEllipse(polar((kBumperInner + kBumperOuter) / 2, kLightBumperAngles[i]), 13, 13);
-    }
-}
-
-void RobotDiagram::paintLightBumpers(QPainter &p) const
-{
-    if (isCreate1())
-        return;
-    const QColor signal = m_stale ? fill(State::Idle).darker(140) : lightBumpSignalColour(palette());
-    QColor track = inkColour();
-    track.setAlpha(m_stale ? 60 : 90);
-    p.setFont(sceneFont(32));
-    const QFontMetricsF fm(p.font());
-    for (std::size_t i = 0; i < kLightBumperAngles.size(); ++i) {
-        const auto bumper = static_cast<oi::LightBumper>(i);
-        const qreal angle = kLightBumperAngles[i];
-        const int packetId = 46 + static_cast<int>(i);
-        const bool on = m_snapshot.lightBumper(bumper);
-
-        p.setPen(QPen(track, 3));
-        p.setBrush(Qt::NoBrush);
-        p.drawPath(ringSegment(kLightBumpBase, kLightBumpBase + kLightBumpLength,
-                               angle - kLightBumpHalfWidthDegrees, 2 * kLightBumpHalfWidthDegrees));
-        p.setPen(Qt::NoPen);
-        if (m_snapshot.has(packetId)) {
-            const qreal level = std::clamp(m_snapshot.raw(packetId) / kSignalMax, 0.0, 1.0);
-            p.setBrush(on ? fill(State::Warning) : signal);
-            p.drawPath(ringSegment(kLightBumpBase, kLightBumpBase + kLightBumpLength * level,
-                                   angle - kLightBumpHalfWidthDegrees,
-                                   2 * kLightBumpHalfWidthDegrees));
-        }
-
-        const QString text = signalText(m_snapshot, packetId);
-        const QPointF at = polar(kLightBumpLabelRadius, angle);
-        const QRectF box(at.x() - 60, at.y() - fm.height() / 2, 120, fm.height());
-        p.setPen(on ? fill(State::Warning) : inkColour());
-        p.drawText(box, Qt::AlignCenter, text);
-    }
-}
-
-void RobotDiagram::paintWheels(QPainter &p) const
-{
-    const QColor outline = inkColour();
-    const QColor tyre = m_stale ? fill(State::Idle).darker(130)
-                                : (isDark(palette()) ? QColor(125, 129, 136) : QColor(55, 57, 60));
-    p.setFont(fittingFont(30, tr("DROP"), 100));
-    auto wheel = [&](const QRectF &r, bool dropped, bool left) {
-        p.setPen(QPen(outline, 3));
-        p.setBrush(dropped ? fill(State::Alert) : tyre);
-        p.drawRoundedRect(r, 10, 10);
-        if (!dropped)
-            return;
-        p.setPen(fill(State::Alert));
-        const QRectF label = left ? QRectF(r.right() + 8, r.center().y() - 20, 100, 40)
-                                  : QRectF(r.left() - 108, r.center().y() - 20, 100, 40);
-        p.drawText(label, (left ? Qt::AlignLeft : Qt::AlignRight) | Qt::AlignVCenter, tr("DROP"));
-    };
-    wheel(kWheelLeft, m_snapshot.wheelDropLeft(), true);
-    wheel(kWheelRight, m_snapshot.wheelDropRight(), false);
-
-    if (isCreate1()) {
-        const bool dropped = m_snapshot.wheelDropCaster();
-        p.setPen(QPen(outline, 3));
-        p.setBrush(dropped ? fill(State::Alert) : tyre);
-        p.drawEllipse(kCaster, kCasterRadius, kCasterRadius);
-        if (dropped) {
-            p.setPen(fill(State::Alert));
-            p.drawText(QRectF(kCaster.x() - 60, kCaster.y() - kCasterRadius - 40, 120, 36),
-                       Qt::AlignCenter, tr("DROP"));
-        }
-    }
-}
-
-void RobotDiagram::paintCliffs(QPainter &p) const
-{
-    const QColor outline = inkColour();
-    const QFont numberFont = sceneFont(38);
-    const QColor signal = m_stale ? fill(State::Idle).darker(140) : cliffSignalColour(palette());
-    QColor track = inkColour();
-    track.setAlpha(m_stale ? 30 : 50);
-    for (oi::CliffSensor sensor : kCliffs) {
-        const bool cliff = m_snapshot.cliff(sensor);
-        p.setPen(QPen(outline, 3));
-        p.setBrush(fill(cliff ? State::Alert : State::Idle));
-        p.drawEllipse(cliffLampPoint(sensor), kCliffLampRadius, kCliffLampRadius);
-
-        const QRectF label = cliffLabelRect(sensor);
-        const int packetId = 28 + static_cast<int>(sensor);
-        const QRectF numberBox(label.left(), label.top(), label.width(), label.height() - 14);
-        p.setFont(numberFont);
-        // On a small diagram the number can be wider than its box: a backdrop
-        // keeps it readable where it runs over the lamp's ring.
-        const QString number = signalText(m_snapshot, packetId);
-        const QRectF ink = p.boundingRect(numberBox, Qt::AlignCenter | Qt::TextDontClip, number);
-        if (ink.width() > numberBox.width()) {
-            p.setPen(Qt::NoPen);
-            p.setBrush(palette().color(QPalette::Window));
-            p.drawRoundedRect(ink.adjusted(-3, 0, 3, 0), 4, 4);
-        }
-        p.setPen(cliff ? fill(State::Alert) : inkColour());
-        p.drawText(numberBox, Qt::AlignCenter | Qt::TextDontClip, number);
-
-        const QRectF bar(label.left() + 6, label.bottom() - 12, label.width() - 12, 10);
-        p.setPen(Qt::NoPen);
-        p.setBrush(track);
-        p.drawRoundedRect(bar, 3, 3);
-        if (m_snapshot.has(packetId)) {
-            const qreal level = std::clamp(m_snapshot.raw(packetId) / kSignalMax, 0.0, 1.0);
-            p.setBrush(signal);
-            p.drawRoundedRect(QRectF(bar.left(), bar.top(), bar.width() * level, bar.height()), 3, 3);
-        }
-    }
-}
-
-void RobotDiagram::paintWall(QPainter &p) const
-{
-    // The wall sensor looks out of the robot's right side.
-    const bool wall = m_snapshot.wall();
-    p.setPen(QPen(inkColour(), 3));
-    p.setBrush(fill(wall ? State::Warning : State::Idle));
-    p.drawRoundedRect(kWall, 5, 5);
-
-    // The label gets the room up to the widget's right edge, at most 150 units.
-    const qreal room = std::min<qreal>(150, width() / sceneScale() / 2 - kWall.right() - 14);
-    const QString label = tr("WALL") + '\n' + signalText(m_snapshot, 27);
-    p.setFont(fittingFont(28, label, room));
-    p.setPen(wall ? fill(State::Warning) : inkColour());
-    const QRectF text(kWall.right() + 10, kWall.top(), room, kWall.height());
-    p.drawText(text, Qt::AlignLeft | Qt::AlignVCenter, label);
 }
 
 qreal RobotDiagram::chipRowHeight() const
@@ -765,88 +455,6 @@ bool RobotDiagram::chipCaptionsBesideValues() const
     const qreal textHeight = chipTextArea(QRectF(0, 0, 0, rowHeight)).height();
     const qreal stackedHeight = captionSize() * 1.25 + QFontMetricsF(sceneFont(rowHeight * 0.44)).height();
     return textHeight * sceneScale() < 2.6 * m_leastTextPixels || stackedHeight > textHeight;
-}
-
-void RobotDiagram::paintChips(QPainter &p) const
-{
-    const qreal rowHeight = chipRowHeight();
-    const qreal captionSize = this->captionSize();
-    const QFont captionFont = sceneFont(captionSize, false);
-    const bool besideValues = chipCaptionsBesideValues();
-    for (const auto &[r, chip] : placedChips()) {
-        p.setPen(QPen(inkColour(), 2));
-        p.setBrush(fill(chip.state));
-        p.drawRoundedRect(r, 14, 14);
-
-        QColor text = textColour(chip.state);
-        const QRectF inner = chipTextArea(r);
-        if (besideValues) {
-            QFont bold = sceneFont(captionSize);
-            const QFontMetricsF boldMetrics(bold);
-            // The whole value where it fits beside the caption in its share
-            // of the chip, else its short form ("Red + Green"), else elided.
-            const bool wholeFits =
-                boldMetrics.horizontalAdvance(chip.caption + QStringLiteral("  ") + chip.value) <= inner.width()
-                && boldMetrics.horizontalAdvance(chip.value) <= inner.width() * 0.6;
-            const QString value = wholeFits || chip.shortValue.isEmpty() ? chip.value : chip.shortValue;
-            const qreal valueWidth = std::min(boldMetrics.horizontalAdvance(value), inner.width() * 0.6);
-            p.setPen(text);
-            p.setFont(bold);
-            p.drawText(inner, Qt::AlignRight | Qt::AlignVCenter,
-                       boldMetrics.elidedText(value, Qt::ElideRight, valueWidth));
-            text.setAlphaF(0.8);
-            p.setPen(text);
-            p.setFont(captionFont);
-            const qreal captionWidth = inner.width() - valueWidth - QFontMetricsF(captionFont).averageCharWidth();
-            p.drawText(inner, Qt::AlignLeft | Qt::AlignVCenter,
-                       QFontMetricsF(captionFont).elidedText(chip.caption, Qt::ElideRight, captionWidth));
-            continue;
-        }
-        const QRectF captionRect(inner.left(), inner.top(), inner.width(), captionSize * 1.25);
-        const QRectF valueRect(inner.left(), captionRect.bottom(), inner.width(),
-                               inner.bottom() - captionRect.bottom());
-        // The value shrinks to fit rather than lose its end, down to a
-        // size that still reads; then its short form (the tooltip has it
-        // whole), which shrinks the same way; past that it is elided.
-        const auto fitting = [&](const QString &value, qreal smallest) {
-            QFont f = sceneFont(rowHeight * 0.44);
-            for (qreal size = rowHeight * 0.44; size > smallest; size -= 2) {
-                f = sceneFont(size);
-                if (QFontMetricsF(f).horizontalAdvance(value) <= inner.width())
-                    return std::pair{f, true};
-            }
-            return std::pair{f, false};
-        };
-        QString value = chip.value;
-        auto [valueFont, fits] = fitting(value, chip.shortValue.isEmpty() ? rowHeight * 0.25 : rowHeight * 0.33);
-        if (!fits && !chip.shortValue.isEmpty()) {
-            value = chip.shortValue;
-            valueFont = fitting(value, rowHeight * 0.25).first;
-        }
-        p.setPen(text);
-        p.setFont(valueFont);
-        p.drawText(valueRect, Qt::AlignCenter,
-                   QFontMetricsF(valueFont).elidedText(value, Qt::ElideRight, inner.width()));
-        text.setAlphaF(0.8);
-        p.setPen(text);
-        p.setFont(captionFont);
-        p.drawText(captionRect, Qt::AlignHCenter | Qt::AlignVCenter,
-                   QFontMetricsF(captionFont).elidedText(chip.caption, Qt::ElideRight, inner.width()));
-    }
-}
-
-void RobotDiagram::paintStale(QPainter &p) const
-{
-    if (!m_stale)
-        return;
-    const QRectF banner(-kBodyRadius + 20, 95, 2 * kBodyRadius - 40, 90);
-    p.setPen(QPen(display::textOn(State::Stale, palette()), 4));
-    p.setBrush(display::stateColor(State::Stale, palette()));
-    p.drawRoundedRect(banner, 16, 16);
-    const QString word = m_replayEnded ? tr("ENDED") : tr("STALE");
-    p.setFont(fittingFont(64, word, banner.width() - 30));
-    p.setPen(display::textOn(State::Stale, palette()));
-    p.drawText(banner, Qt::AlignCenter, word);
 }
 
 #include "moc_robot_diagram.cpp"

@@ -117,7 +117,7 @@ private:
     void paintHighlights(QPainter &p) const;
     std::optional<QPointF> scenePartCentre(const QString &part) const;
 
-    bool isCreate1() const { return m_profile->id == oi::ProfileId::Create1; }
+    const oi::Capabilities &caps() const { return m_profile->caps; }
 
     const oi::RobotProfile *m_profile = &oi::profile(oi::ProfileId::Create2);
     oi::SensorSnapshot m_snapshot;

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "schedule_editor.h"
 
+#include "typed_time_edit.h"
+
 #include "schedule.h"
 
 #include <QCheckBox>
@@ -55,7 +57,7 @@ QString shortTime(QTime time) { return QLocale().toString(time, shortTimeFormat(
 // The robot always gets 24-hour values, whatever the display shows.
 QTimeEdit *timeEdit(const QString &name, QWidget *parent)
 {
-    auto *edit = new QTimeEdit(parent);
+    auto *edit = new TypedTimeEdit(parent);
     edit->setObjectName(name);
     edit->setDisplayFormat(shortTimeFormat());
     return edit;

@@ -120,7 +120,7 @@ ScriptEditor::ScriptEditor(QWidget *parent) : QWidget(parent)
     addButton("play", QString());
     addButton("show", QString());
     connect(button("upload"), &QPushButton::clicked, this, &ScriptEditor::upload);
-    connect(button("play"), &QPushButton::clicked, this, &ScriptEditor::playRequested);
+    connect(button("play"), &QPushButton::clicked, this, &ScriptEditor::play);
     connect(button("show"), &QPushButton::clicked, this, &ScriptEditor::showScript);
 
     auto *demoBox = m_demoBox = new QGroupBox(m_controls);
@@ -336,11 +336,13 @@ void ScriptEditor::refreshEnabled()
     button("show")->setEnabled(create && !m_awaitingReply);
 }
 
-void ScriptEditor::send(const oi::OiCommand &command)
+bool ScriptEditor::send(const oi::OiCommand &command)
 {
     // Buttons are disabled where the profile lacks the command; nothing else fails.
-    if (oi::encodeCommand(oi::CommandEncoder(*m_profile), command))
-        emit sendRequested({command});
+    if (!oi::encodeCommand(oi::CommandEncoder(*m_profile), command))
+        return false;
+    emit sendRequested({command});
+    return true;
 }
 
 void ScriptEditor::upload()
@@ -355,14 +357,33 @@ void ScriptEditor::upload()
         showError(fromStd(bytes.error().describe()), std::nullopt);
         return;
     }
-    send(script);
+    if (!send(script))
+        return;
+    m_awaitingReply = false; // a Show Script still due would read the script before this one
+    showResult(tr("Uploaded (152): %1 / %2 bytes. Play (153) runs the script; Show Script (154) reads it back.")
+                   .arg(body.size())
+                   .arg(kMaxScriptBytes));
+    refreshEnabled();
+}
+
+void ScriptEditor::play()
+{
+    emit playRequested();
+    // ERRATA 20: a waiting Create reads nothing, so the user is told before it runs away.
+    showResult(tr("Play (153) sent. While the script waits (155–158) the Create hears no command, not even a stop; "
+                  "it listens again when the script ends."));
+}
+
+void ScriptEditor::showResult(const QString &text)
+{
+    m_showResult->setText(text);
+    m_showResult->setVisible(true);
 }
 
 void ScriptEditor::showScript()
 {
     m_awaitingReply = true;
-    m_showResult->setText(tr("Asking for the robot's script…"));
-    m_showResult->setVisible(true);
+    showResult(tr("Asking for the robot's script…"));
     refreshEnabled();
     emit showScriptRequested();
 }

@@ -43,7 +43,7 @@ public:
     QString byteCountText() const;
     QString errorText() const;              // empty when the script assembles
     std::optional<int> errorLine() const;   // 1-based editor line of the error
-    QString showScriptText() const;         // the outcome of the last Show Script
+    QString showScriptText() const;         // what the last Upload, Play or Show Script did
     QString disabledReason() const;         // empty on the Create 1
 
 public slots:
@@ -67,9 +67,11 @@ protected:
 private:
     void retranslateUi();
     QPushButton *addButton(const QString &name, const QString &text);
-    void send(const oi::OiCommand &command);
+    bool send(const oi::OiCommand &command);
     void upload();
+    void play();
     void showScript();
+    void showResult(const QString &text);
     void showError(const QString &message, std::optional<int> line);
     void refreshEnabled();
     QString scriptAsText(const QByteArray &body) const;

@@ -50,7 +50,7 @@ protected:
 private:
     // The value axis labelled every 1000, or more sparsely where that does not fit.
     void fitValueLabels(const QRectF &plotArea);
-    bool hasLightBumpers() const { return m_profile->id != oi::ProfileId::Create1; }
+    bool hasLightBumpers() const { return m_profile->caps.lightBumpers; }
     void retranslateUi();
     void refreshCategories();
     void showBars();

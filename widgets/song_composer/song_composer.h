@@ -63,6 +63,7 @@ public:
     // when it was refused, and then changes nothing.
     bool uploadCurrentSlot();
     bool uploadAllSlots();
+    // Uploads the slot as shown, then plays it: the robot plays what is on screen.
     bool playCurrentSlot();
     // Why the robot cannot play a song now (Passive mode), or empty: Play is
     // then disabled with the reason as its tooltip, and refused.
@@ -110,7 +111,9 @@ private:
     bool placeSongs(const SongSlots &parts, const QString &what);
     // Song (140) storing a slot's notes.
     oi::OiCommand songCommand(int slot) const;
-    bool send(const oi::OiCommand &command, const QString &what);
+    // Sends `commands` at once, or none when one is refused; says `done`
+    // ("<what> sent." when empty).
+    bool send(const std::vector<oi::OiCommand> &commands, const QString &what, QString done = {});
     void togglePreview();
     void stopPreview();
     ToneShape toneShape() const;

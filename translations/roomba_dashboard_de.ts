@@ -21,6 +21,89 @@
     </message>
 </context>
 <context>
+    <name>BatteryHealth</name>
+    <message>
+        <source>holds %1 of the %2 mAh it claims (%3 %)</source>
+        <translation>hält %1 der angegebenen %2 mAh (%3 %)</translation>
+    </message>
+    <message>
+        <source>resistance %1 mΩ, %2 times a new pack&apos;s</source>
+        <translation>Widerstand %1 mΩ, das %2-Fache eines neuen Akkus</translation>
+    </message>
+    <message>
+        <source>it needs a drive started and stopped a few times, and part of a discharge or a charge</source>
+        <translation>dafür muss der Roboter einige Male anfahren und anhalten und einen Teil einer Entladung oder Ladung durchlaufen</translation>
+    </message>
+    <message>
+        <source>; </source>
+        <translation>; </translation>
+    </message>
+    <message>
+        <source>; capacity not measured yet</source>
+        <translation>; Kapazität noch nicht gemessen</translation>
+    </message>
+    <message>
+        <source>Good</source>
+        <translation>Gut</translation>
+    </message>
+    <message>
+        <source>Worn</source>
+        <translation>Verschlissen</translation>
+    </message>
+    <message>
+        <source>Replace</source>
+        <translation>Ersetzen</translation>
+    </message>
+    <message>
+        <source>Not measured yet</source>
+        <translation>Noch nicht gemessen</translation>
+    </message>
+    <message>
+        <source>%1 % of a cycle seen, %2 resistance samples</source>
+        <translation>%1 % eines Zyklus gesehen, %2 Widerstandsmessungen</translation>
+    </message>
+    <message>
+        <source>%1 mAh (%2)</source>
+        <translation>%1 mAh (%2)</translation>
+    </message>
+    <message>
+        <source>, </source>
+        <translation>, </translation>
+    </message>
+    <message>
+        <source>%1 %, %2 V</source>
+        <translation>%1 %, %2 V</translation>
+    </message>
+    <message>
+        <source>%1 V</source>
+        <translation>%1 V</translation>
+    </message>
+    <message>
+        <source>battery nearly flat (%1): the robot leaves Safe or Full by itself under load; charge it</source>
+        <translation>Akku fast leer (%1): Der Roboter verlässt unter Last von selbst Safe oder Full; laden Sie ihn auf</translation>
+    </message>
+    <message>
+        <source>Charging fault: the robot will not charge. Usually the charging contacts are dirty (on the robot or the dock), the supply is not the robot&apos;s own, or the pack was run deeply flat (Safe or Full left on the dock drains it). Clean the contacts, reseat the pack, then reset the charger: hold Spot and Dock together for 10 seconds, and put it back on the dock.</source>
+        <translation>Ladefehler: Der Roboter lädt nicht. Meist sind die Ladekontakte verschmutzt (am Roboter oder an der Ladestation), das Netzteil ist nicht das des Roboters, oder der Akku wurde tiefentladen (Safe oder Full auf der Ladestation entlädt ihn). Reinigen Sie die Kontakte, setzen Sie den Akku neu ein und setzen Sie dann das Ladegerät zurück: Halten Sie Spot und Dock 10 Sekunden lang gleichzeitig gedrückt, und stellen Sie ihn wieder auf die Ladestation.</translation>
+    </message>
+    <message>
+        <source>%1: %2 (%3)</source>
+        <translation>%1: %2 (%3)</translation>
+    </message>
+    <message>
+        <source>; measured %1</source>
+        <translation>; gemessen %1</translation>
+    </message>
+    <message>
+        <source>; the charge is estimated from voltage since the robot booted</source>
+        <translation>; die Ladung wird seit dem Start des Roboters aus der Spannung geschätzt</translation>
+    </message>
+    <message>
+        <source>; capacity so far: %1</source>
+        <translation>; bisherige Kapazität: %1</translation>
+    </message>
+</context>
+<context>
     <name>BitName</name>
     <message>
         <source>Advance</source>
@@ -164,6 +247,37 @@
     </message>
 </context>
 <context>
+    <name>BoundedFile</name>
+    <message>
+        <source>not a regular file but a named pipe</source>
+        <translation>keine gewöhnliche Datei, sondern eine benannte Pipe</translation>
+    </message>
+    <message>
+        <source>not a regular file but a folder</source>
+        <translation>keine gewöhnliche Datei, sondern ein Ordner</translation>
+    </message>
+    <message>
+        <source>not a regular file but a device</source>
+        <translation>keine gewöhnliche Datei, sondern ein Gerät</translation>
+    </message>
+    <message>
+        <source>not a regular file</source>
+        <translation>keine gewöhnliche Datei</translation>
+    </message>
+    <message>
+        <source>%1, larger than the %2 this program reads of such a file</source>
+        <translation>%1, größer als die %2, die dieses Programm von einer solchen Datei liest</translation>
+    </message>
+    <message>
+        <source>larger than the %1 this program reads of such a file</source>
+        <translation>größer als die %1, die dieses Programm von einer solchen Datei liest</translation>
+    </message>
+    <message>
+        <source>%1 bytes</source>
+        <translation>%1 Bytes</translation>
+    </message>
+</context>
+<context>
     <name>BrokerActions</name>
     <message>
         <source>Connect to &amp;broker…</source>
@@ -187,7 +301,7 @@
     </message>
     <message>
         <source>Connecting again to %1, the class of the last session.</source>
-        <translation>Verbinde erneut mit %1, der Klasse der letzten Sitzung.</translation>
+        <translation>Verbindung mit %1, der Klasse der letzten Sitzung, wird erneut hergestellt.</translation>
     </message>
     <message>
         <source>Last session: the class on %1 as &quot;%2&quot;. Reconnect… asks for the password.</source>
@@ -369,15 +483,15 @@
     </message>
     <message>
         <source>A recording cannot be driven: connect to the robot.</source>
-        <translation>Eine Aufzeichnung kann nicht fahren: Verbinde dich mit dem Roboter.</translation>
+        <translation>Eine Aufzeichnung kann nicht fahren: Verbinden Sie sich mit dem Roboter.</translation>
     </message>
     <message>
         <source>The robot sends no data: connect to it and wait until it streams.</source>
-        <translation>Der Roboter sendet keine Daten: Verbinde dich mit ihm und warte, bis er Daten sendet.</translation>
+        <translation>Der Roboter sendet keine Daten: Verbinden Sie sich mit ihm und warten Sie, bis er Daten sendet.</translation>
     </message>
     <message>
         <source>Say first whether this is a Roomba 500 or a Create 2: their encoders read the other way round.</source>
-        <translation>Sag zuerst, ob das ein Roomba 500 oder ein Create 2 ist: Ihre Encoder lesen sich umgekehrt.</translation>
+        <translation>Geben Sie zuerst an, ob das ein Roomba 500 oder ein Create 2 ist: Die beiden lesen ihre Encoder umgekehrt.</translation>
     </message>
     <message>
         <source>A run is already under way.</source>
@@ -393,27 +507,27 @@
     </message>
     <message>
         <source>The robot bumped into something: clear its path and run the step again.</source>
-        <translation>Der Roboter ist gegen etwas gestoßen: Mach den Weg frei und fahre den Schritt noch einmal.</translation>
+        <translation>Der Roboter ist gegen etwas gestoßen: Machen Sie den Weg frei und fahren Sie den Schritt noch einmal.</translation>
     </message>
     <message>
         <source>A cliff sensor saw a drop: move the robot away from the edge and run the step again.</source>
-        <translation>Ein Abgrundsensor hat eine Kante gesehen: Stell den Roboter von der Kante weg und fahre den Schritt noch einmal.</translation>
+        <translation>Ein Abgrundsensor hat eine Kante gesehen: Stellen Sie den Roboter von der Kante weg und fahren Sie den Schritt noch einmal.</translation>
     </message>
     <message>
         <source>A wheel dropped: put the robot on the floor and run the step again.</source>
-        <translation>Ein Rad ist abgesackt: Stell den Roboter auf den Boden und fahre den Schritt noch einmal.</translation>
+        <translation>Ein Rad ist abgesackt: Stellen Sie den Roboter auf den Boden und fahren Sie den Schritt noch einmal.</translation>
     </message>
     <message>
         <source>A cliff sensor reads a dark floor (its signal low but not near 0, no wheel dropped): move the robot to a lighter floor and run the step again.</source>
-        <translation>Ein Abgrundsensor sieht einen dunklen Boden (sein Signal niedrig, aber nicht nahe 0, kein Rad abgesenkt): Stell den Roboter auf einen helleren Boden und fahre den Schritt noch einmal.</translation>
+        <translation>Ein Abgrundsensor sieht einen dunklen Boden (sein Signal niedrig, aber nicht nahe 0, kein Rad abgesenkt): Stellen Sie den Roboter auf einen helleren Boden und fahren Sie den Schritt noch einmal.</translation>
     </message>
     <message>
         <source>The run did not reach its end in %1 s: the robot counted %2 of it. Is a wheel slipping or held? Check the floor and the wheels, and run the step again.</source>
-        <translation>Die Fahrt hat ihr Ende in %1 s nicht erreicht: Der Roboter hat %2 davon gezählt. Rutscht ein Rad oder wird es festgehalten? Prüfe Boden und Räder und fahre den Schritt noch einmal.</translation>
+        <translation>Die Fahrt hat ihr Ende in %1 s nicht erreicht: Der Roboter hat %2 davon gezählt. Rutscht ein Rad oder wird es festgehalten? Prüfen Sie Boden und Räder und fahren Sie den Schritt noch einmal.</translation>
     </message>
     <message>
         <source>The robot did not report its angle after the run: run the step again.</source>
-        <translation>Der Roboter hat nach der Fahrt seinen Winkel nicht gemeldet: Fahre den Schritt noch einmal.</translation>
+        <translation>Der Roboter hat nach der Fahrt seinen Winkel nicht gemeldet: Fahren Sie den Schritt noch einmal.</translation>
     </message>
 </context>
 <context>
@@ -472,7 +586,7 @@
     </message>
     <message>
         <source>Put the robot on a hard, clear floor with room ahead, and mark the floor under the centre of its front edge. It enters Safe mode and drives ahead by its wheel encoders, slowly, then stops. Measure with a tape from the mark to where the front edge stopped and type it in. If it ended off the straight line, say how far: that tells a left wheel from a right one.</source>
-        <translation>Stell den Roboter auf einen harten, freien Boden mit Platz nach vorn und markiere den Boden unter der Mitte seiner Vorderkante. Er geht in den Safe-Modus, fährt nach seinen Radencodern langsam geradeaus und hält an. Miss mit dem Maßband von der Markierung bis dorthin, wo die Vorderkante stehen blieb, und gib es ein. Endete er neben der geraden Linie, gib an, wie weit: Daran unterscheidet sich das linke Rad vom rechten.</translation>
+        <translation>Stellen Sie den Roboter auf einen harten, freien Boden mit Platz nach vorn und markieren Sie den Boden unter der Mitte seiner Vorderkante. Er geht in den Safe-Modus, fährt nach seinen Radencodern langsam geradeaus und hält an. Messen Sie mit dem Maßband von der Markierung bis dorthin, wo die Vorderkante stehen blieb, und geben Sie es ein. Endete er neben der geraden Linie, geben Sie an, wie weit: Daran unterscheidet sich das linke Rad vom rechten.</translation>
     </message>
     <message>
         <source> turns</source>
@@ -496,7 +610,7 @@
     </message>
     <message>
         <source>Mark the start heading: lay a strip of tape on the floor from the middle of the robot&apos;s front edge straight ahead, and put a piece of tape on the bumper above it. The robot spins whole turns counter-clockwise on the spot by its encoders and stops. Count the whole turns and read how far the bumper&apos;s mark is past the floor&apos;s: two turns that stop 5 degrees short are 715 degrees.</source>
-        <translation>Markiere die Startrichtung: Leg einen Klebestreifen von der Mitte der Vorderkante des Roboters gerade nach vorn auf den Boden und klebe ein Stück Band darüber auf den Stoßfänger. Der Roboter dreht sich nach seinen Encodern ganze Umdrehungen gegen den Uhrzeigersinn auf der Stelle und hält an. Zähle die ganzen Umdrehungen und lies ab, wie weit die Markierung am Stoßfänger an der am Boden vorbei ist: Zwei Umdrehungen, die 5 Grad zu früh enden, sind 715 Grad.</translation>
+        <translation>Markieren Sie die Startrichtung: Legen Sie einen Klebestreifen von der Mitte der Vorderkante des Roboters gerade nach vorn auf den Boden und kleben Sie ein Stück Band darüber auf den Stoßfänger. Der Roboter dreht sich nach seinen Encodern ganze Umdrehungen gegen den Uhrzeigersinn auf der Stelle und hält an. Zählen Sie die ganzen Umdrehungen und lesen Sie ab, wie weit die Markierung am Stoßfänger an der am Boden vorbei ist: Zwei Umdrehungen, die 5 Grad zu früh enden, sind 715 Grad.</translation>
     </message>
     <message>
         <source>&amp;Apply and keep</source>
@@ -536,7 +650,7 @@
     </message>
     <message>
         <source>Stopped after %1 mm by the encoders. Now measure what it really drove.</source>
-        <translation>Nach %1 mm laut Encodern angehalten. Miss jetzt, wie weit er wirklich gefahren ist.</translation>
+        <translation>Nach %1 mm laut Encodern angehalten. Messen Sie jetzt, wie weit er wirklich gefahren ist.</translation>
     </message>
     <message>
         <source>Stopped after %1 mm by the encoders. This is a virtual robot: the measurements below come from its true position in the room, %2 mm from the start and %3 mm off the line.</source>
@@ -544,7 +658,7 @@
     </message>
     <message>
         <source>Stopped after %1 degrees by the encoders. Now read how far it really turned.</source>
-        <translation>Nach %1 Grad laut Encodern angehalten. Lies jetzt ab, wie weit er sich wirklich gedreht hat.</translation>
+        <translation>Nach %1 Grad laut Encodern angehalten. Lesen Sie jetzt ab, wie weit er sich wirklich gedreht hat.</translation>
     </message>
     <message>
         <source>Stopped after %1 degrees by the encoders. This is a virtual robot: the angle below comes from its true heading in the room, %2 degrees.</source>
@@ -552,23 +666,23 @@
     </message>
     <message>
         <source>%1 Nothing was measured; run the step again.</source>
-        <translation>%1 Es wurde nichts gemessen; fahre den Schritt noch einmal.</translation>
+        <translation>%1 Es wurde nichts gemessen; fahren Sie den Schritt noch einmal.</translation>
     </message>
     <message>
         <source>%1: “%2” is not a number. Type what you measured, in %3.</source>
-        <translation>%1: „%2“ ist keine Zahl. Gib ein, was du gemessen hast, in %3.</translation>
+        <translation>%1: „%2“ ist keine Zahl. Geben Sie ein, was Sie gemessen haben, in %3.</translation>
     </message>
     <message>
         <source>%1: %2 %3 cannot be. Type what you measured, more than 0 %3.</source>
-        <translation>%1: %2 %3 kann nicht sein. Gib ein, was du gemessen hast, mehr als 0 %3.</translation>
+        <translation>%1: %2 %3 kann nicht sein. Geben Sie ein, was Sie gemessen haben, mehr als 0 %3.</translation>
     </message>
     <message>
         <source>%1: %2 %3 is more than 50 % off the %4 %3 the encoders counted. Measure again: a typing slip, or a wheel that slipped?</source>
-        <translation>%1: %2 %3 liegt mehr als 50 % neben den %4 %3, die die Encoder gezählt haben. Miss noch einmal: ein Tippfehler, oder ist ein Rad durchgerutscht?</translation>
+        <translation>%1: %2 %3 liegt mehr als 50 % neben den %4 %3, die die Encoder gezählt haben. Messen Sie noch einmal: ein Tippfehler, oder ist ein Rad durchgerutscht?</translation>
     </message>
     <message>
         <source>Drive the straight line, the turn or both first.</source>
-        <translation>Fahre zuerst die gerade Linie, die Drehung oder beides.</translation>
+        <translation>Fahren Sie zuerst die gerade Linie, die Drehung oder beides.</translation>
     </message>
     <message>
         <source>Measured distance</source>
@@ -580,7 +694,7 @@
     </message>
     <message>
         <source>Off the line: “%1” is not a distance in mm less than half the run; leave it empty if you did not measure it.</source>
-        <translation>Neben der Linie: „%1“ ist keine Strecke in mm unter der halben Fahrt; lass das Feld leer, wenn du sie nicht gemessen hast.</translation>
+        <translation>Neben der Linie: „%1“ ist keine Strecke in mm unter der halben Fahrt; lassen Sie das Feld leer, wenn Sie sie nicht gemessen haben.</translation>
     </message>
     <message>
         <source>Straight line: the distance packet (19) says %1 mm, the encoders %2 mm%3.</source>
@@ -958,6 +1072,14 @@
         <source>The adapter&apos;s line wired to the robot&apos;s BRC pin, pulsed to wake it and keep it awake. Many cables use RTS, some DTR; both pulses the two; none: the cable has no BRC wire.</source>
         <translation>Die Leitung des Adapters, die mit dem BRC-Pin des Roboters verbunden ist; sie wird gepulst, um ihn zu wecken und wach zu halten. Viele Kabel nutzen RTS, manche DTR; beide pulst die zwei; keine: Das Kabel hat keine BRC-Ader.</translation>
     </message>
+    <message>
+        <source>Wake</source>
+        <translation>Wecken</translation>
+    </message>
+    <message>
+        <source>Pulse the robot&apos;s BRC pin: switches on a robot switched off at its power button</source>
+        <translation>Pulst den BRC-Pin des Roboters: schaltet einen Roboter ein, der an seiner Ein/Aus-Taste ausgeschaltet wurde</translation>
+    </message>
 </context>
 <context>
     <name>ConnectionCheckup</name>
@@ -1143,6 +1265,32 @@ Systems.
     <message>
         <source>--foxglove: %1</source>
         <translation>--foxglove: %1</translation>
+    </message>
+    <message>
+        <source>
+  --battery-fade PCT[,PCT...], --battery-resistance MOHM[,MOHM...]
+                     with --sim: aged packs, one figure per robot (the last for
+                     the rest): the share of its 3000 mAh lost (0 to 90) and its
+                     internal resistance (50 to 5000 mΩ; a new pack 250)
+</source>
+        <translation>
+  --battery-fade PROZ[,PROZ...], --battery-resistance MOHM[,MOHM...]
+                     mit --sim: gealterte Akkus, ein Wert pro Roboter (der letzte für
+                     die übrigen): der verlorene Anteil seiner 3000 mAh (0 bis 90) und
+                     sein Innenwiderstand (50 bis 5000 mΩ; ein neuer Akku 250)
+</translation>
+    </message>
+    <message>
+        <source>--battery-fade: &apos;%1&apos; is not a share from 0 to 90 %</source>
+        <translation>--battery-fade: „%1“ ist kein Anteil von 0 bis 90 %</translation>
+    </message>
+    <message>
+        <source>--battery-resistance: &apos;%1&apos; is not a resistance from 50 to 5000 mΩ</source>
+        <translation>--battery-resistance: „%1“ ist kein Widerstand von 50 bis 5000 mΩ</translation>
+    </message>
+    <message>
+        <source>--battery-fade and --battery-resistance go with --sim</source>
+        <translation>--battery-fade und --battery-resistance gehören zu --sim</translation>
     </message>
 </context>
 <context>
@@ -1383,10 +1531,10 @@ Systems.
         <translation>Den ausgewählten Roboter zurücksetzen, um seine Firmware-Version zu lesen und damit, was er falsch meldet</translation>
     </message>
     <message>
-        <source>The firmware version is printed only when the robot starts up, so %1 will be reset (Reset, opcode 7): it stops, leaves its mode and reboots as if its battery had been taken out. Put it back in Safe or Full mode afterwards if you were driving it.
+        <source>The firmware version is printed only when the robot starts up, so %1 will be reset (Reset, opcode 7): it stops, leaves its mode and reboots as if its battery had been taken out. Enter Safe again afterwards if you were driving it.
 
 Reset %1 now?</source>
-        <translation>Die Firmware-Version wird nur beim Start des Roboters ausgegeben, daher wird %1 zurückgesetzt (Reset, Opcode 7): Er hält an, verlässt seinen Modus und startet neu, als wäre der Akku herausgenommen worden. Schalten Sie ihn danach wieder in den Modus Safe oder Full, wenn Sie ihn gefahren haben.
+        <translation>Die Firmware-Version wird nur beim Start des Roboters ausgegeben, daher wird %1 zurückgesetzt (Reset, Opcode 7): Er hält an, verlässt seinen Modus und startet neu, als wäre der Akku herausgenommen worden. Aktivieren Sie danach wieder Safe, wenn Sie ihn gefahren haben.
 
 %1 jetzt zurücksetzen?</translation>
     </message>
@@ -1415,11 +1563,27 @@ Er hat ausgegeben: %5</translation>
     </message>
     <message>
         <source>%1 · connecting…</source>
-        <translation>%1 · verbinde…</translation>
+        <translation>%1 · wird verbunden…</translation>
     </message>
     <message>
         <source>%1 · not connected: %2</source>
         <translation>%1 · nicht verbunden: %2</translation>
+    </message>
+    <message>
+        <source>this window</source>
+        <translation>dieses Fenster</translation>
+    </message>
+    <message>
+        <source>Stopped the robot at %1</source>
+        <translation>Roboter um %1 angehalten</translation>
+    </message>
+    <message>
+        <source>Stopped all %1 robots at %2</source>
+        <translation>Alle %1 Roboter um %2 angehalten</translation>
+    </message>
+    <message>
+        <source>%1 · connection lost at %2, trying again…</source>
+        <translation>%1 · Verbindung um %2 verloren, neuer Versuch…</translation>
     </message>
 </context>
 <context>
@@ -1537,6 +1701,74 @@ Klicken wählt diesen Roboter: jedes Dock zeigt ihn</translation>
         <source>%1&apos;s program %2</source>
         <translation>Programm %2 von %1</translation>
     </message>
+    <message>
+        <source>MAY STILL BE MOVING</source>
+        <translation>FÄHRT EVTL. NOCH</translation>
+    </message>
+    <message>
+        <source>pack %1, %2 mAh</source>
+        <translation>Akku %1, %2 mAh</translation>
+    </message>
+    <message>
+        <source>pack %1</source>
+        <translation>Akku %1</translation>
+    </message>
+    <message>
+        <source>%1 % · %2</source>
+        <translation>%1 % · %2</translation>
+    </message>
+    <message>
+        <source>pick it up, switch it off</source>
+        <translation>hochheben, ausschalten</translation>
+    </message>
+    <message>
+        <source>bridge offline since %1</source>
+        <translation>Bridge offline seit %1</translation>
+    </message>
+    <message>
+        <source>bridge offline</source>
+        <translation>Bridge offline</translation>
+    </message>
+    <message>
+        <source>robot not answering</source>
+        <translation>Roboter antwortet nicht</translation>
+    </message>
+    <message>
+        <source>robot silent (link stale)</source>
+        <translation>Roboter still (veraltet)</translation>
+    </message>
+    <message>
+        <source>%1 cut off</source>
+        <translation>%1 getrennt</translation>
+    </message>
+    <message>
+        <source>%1&apos;s program cut off</source>
+        <translation>Programm von %1 abgebrochen</translation>
+    </message>
+    <message>
+        <source>, cutting off %1</source>
+        <translation>, wodurch %1 getrennt wurde</translation>
+    </message>
+    <message>
+        <source>, cutting off %1&apos;s program %2</source>
+        <translation>, wodurch das Programm %2 von %1 abbrach</translation>
+    </message>
+    <message>
+        <source>%1&apos;s bridge went offline at %2 while the robot was driving%3. A real robot keeps its last drive when its bridge dies: pick it up and hold its power button to switch it off, then restart the bridge on the computer beside it.</source>
+        <translation>Die Bridge von %1 ging um %2 offline, während der Roboter fuhr%3. Ein echter Roboter behält seinen letzten Fahrbefehl, wenn seine Bridge ausfällt: Heben Sie ihn hoch und halten Sie seine Ein/Aus-Taste gedrückt, um ihn auszuschalten, und starten Sie dann die Bridge auf dem Computer neben ihm neu.</translation>
+    </message>
+    <message>
+        <source>%1&apos;s bridge went offline at %2%3 (the broker is fine): check the bridge on the computer beside the robot, and restart it.</source>
+        <translation>Die Bridge von %1 ging um %2 offline%3 (der Broker läuft): Prüfen Sie die Bridge auf dem Computer neben dem Roboter, und starten Sie sie neu.</translation>
+    </message>
+    <message>
+        <source>%1
+%2
+Click to select this robot: every dock shows it</source>
+        <translation>%1
+%2
+Klicken wählt diesen Roboter: jedes Dock zeigt ihn</translation>
+    </message>
 </context>
 <context>
     <name>FleetView</name>
@@ -1567,6 +1799,18 @@ Klicken wählt diesen Roboter: jedes Dock zeigt ihn</translation>
     <message>
         <source>Another broker…</source>
         <translation>Anderer Broker…</translation>
+    </message>
+    <message>
+        <source>By name</source>
+        <translation>Nach Name</translation>
+    </message>
+    <message>
+        <source>By pack health</source>
+        <translation>Nach Akkuzustand</translation>
+    </message>
+    <message>
+        <source>The order of the tiles: by name, or by the health of each robot&apos;s battery pack, the one to replace first.</source>
+        <translation>Die Reihenfolge der Kacheln: nach Name oder nach dem Zustand des Akkus jedes Roboters, der zuerst zu ersetzende vorn.</translation>
     </message>
 </context>
 <context>
@@ -2102,6 +2346,18 @@ Klicken wählt diesen Roboter: jedes Dock zeigt ihn</translation>
         <source>Send the changes shown under &quot;Will send&quot;</source>
         <translation>Die unter „Wird gesendet“ angezeigten Änderungen senden</translation>
     </message>
+    <message>
+        <source>Dirt Detect</source>
+        <translation>Schmutzerkennung</translation>
+    </message>
+    <message>
+        <source>Max</source>
+        <translation>Max</translation>
+    </message>
+    <message>
+        <source>Clean</source>
+        <translation>Clean</translation>
+    </message>
 </context>
 <context>
     <name>Lesson</name>
@@ -2115,15 +2371,15 @@ Klicken wählt diesen Roboter: jedes Dock zeigt ihn</translation>
     </message>
     <message>
         <source>The battery reports its voltage, its charge and the current flowing in or out of it. A negative current flows out of the battery. Keep the robot still, off the dock: the current stays small, above -400 mA, for two seconds.</source>
-        <translation>Der Akku meldet seine Spannung, seine Ladung und den Strom, der hinein- oder herausfließt. Ein negativer Strom fließt aus dem Akku heraus. Lass den Roboter still stehen, nicht auf dem Dock: Der Strom bleibt zwei Sekunden lang klein, über -400 mA.</translation>
+        <translation>Der Akku meldet seine Spannung, seine Ladung und den Strom, der hinein- oder herausfließt. Ein negativer Strom fließt aus dem Akku heraus. Lassen Sie den Roboter still stehen, nicht auf dem Dock: Der Strom bleibt zwei Sekunden lang klein, über -400 mA.</translation>
     </message>
     <message>
         <source>Now drive. The wheel motors draw current from the battery, so the current goes further below zero. Keep driving until the current stays under -400 mA for two seconds.</source>
-        <translation>Jetzt fahren. Die Radmotoren ziehen Strom aus dem Akku, deshalb sinkt der Strom weiter unter null. Fahre, bis der Strom zwei Sekunden lang unter -400 mA bleibt.</translation>
+        <translation>Jetzt fahren. Die Radmotoren ziehen Strom aus dem Akku, deshalb sinkt der Strom weiter unter null. Fahren Sie, bis der Strom zwei Sekunden lang unter -400 mA bleibt.</translation>
     </message>
     <message>
         <source>Stop the robot. The motors stop drawing and the current comes back to what the robot needs to stand still: above -400 mA for two seconds. The voltage rises a little too.</source>
-        <translation>Halte den Roboter an. Die Motoren ziehen keinen Strom mehr, und der Strom geht auf das zurück, was der Roboter im Stand braucht: zwei Sekunden lang über -400 mA. Auch die Spannung steigt ein wenig.</translation>
+        <translation>Halten Sie den Roboter an. Die Motoren ziehen keinen Strom mehr, und der Strom geht auf das zurück, was der Roboter im Stand braucht: zwei Sekunden lang über -400 mA. Auch die Spannung steigt ein wenig.</translation>
     </message>
     <message>
         <source>Bumpers and wheel drops</source>
@@ -2135,7 +2391,7 @@ Klicken wählt diesen Roboter: jedes Dock zeigt ihn</translation>
     </message>
     <message>
         <source>Put the robot back down, away from any wall. Every switch opens again: packet 7 reads 0 for a whole second.</source>
-        <translation>Setz den Roboter wieder ab, weg von jeder Wand. Alle Schalter öffnen wieder: Paket 7 zeigt eine ganze Sekunde lang 0.</translation>
+        <translation>Setzen Sie den Roboter wieder ab, weg von jeder Wand. Alle Schalter öffnen wieder: Paket 7 zeigt eine ganze Sekunde lang 0.</translation>
     </message>
     <message>
         <source>Cliff sensors</source>
@@ -2147,7 +2403,7 @@ Klicken wählt diesen Roboter: jedes Dock zeigt ihn</translation>
     </message>
     <message>
         <source>Under the front of the robot, four cliff sensors shine infrared light at the floor and measure how much comes back. On the floor each signal is high. Keep the robot on the floor and watch the front signals stay above 1000 for two seconds.</source>
-        <translation>Vorn unter dem Roboter leuchten vier Abgrundsensoren mit Infrarotlicht auf den Boden und messen, wie viel zurückkommt. Auf dem Boden ist jedes Signal hoch. Lass den Roboter auf dem Boden und sieh zu, wie die vorderen Signale zwei Sekunden lang über 1000 bleiben.</translation>
+        <translation>Vorn unter dem Roboter leuchten vier Abgrundsensoren mit Infrarotlicht auf den Boden und messen, wie viel zurückkommt. Auf dem Boden ist jedes Signal hoch. Lassen Sie den Roboter auf dem Boden und sehen Sie zu, wie die vorderen Signale zwei Sekunden lang über 1000 bleiben.</translation>
     </message>
     <message>
         <source>Encoders, distance and angle</source>
@@ -2159,15 +2415,15 @@ Klicken wählt diesen Roboter: jedes Dock zeigt ihn</translation>
     </message>
     <message>
         <source>Each drive wheel turns an encoder that counts its steps. The dashboard adds up the steps of both wheels to work out how far the robot went: odometry. Drive straight ahead for one metre.</source>
-        <translation>Jedes Antriebsrad dreht einen Encoder, der seine Schritte zählt. Das Dashboard zählt die Schritte beider Räder zusammen und berechnet daraus, wie weit der Roboter gefahren ist: Odometrie. Fahre einen Meter geradeaus.</translation>
+        <translation>Jedes Antriebsrad dreht einen Encoder, der seine Schritte zählt. Das Dashboard zählt die Schritte beider Räder zusammen und berechnet daraus, wie weit der Roboter gefahren ist: Odometrie. Fahren Sie einen Meter geradeaus.</translation>
     </message>
     <message>
         <source>Now turn on the spot, a quarter turn: 90 degrees. When one wheel goes forward and the other back, the difference between them is the angle. On the virtual robot, compare odometry with the way the robot truly points.</source>
-        <translation>Dreh dich jetzt auf der Stelle, eine Vierteldrehung: 90 Grad. Läuft ein Rad vorwärts und das andere rückwärts, ergibt ihr Unterschied den Winkel. Vergleiche beim virtuellen Roboter die Odometrie mit der Richtung, in die der Roboter wirklich zeigt.</translation>
+        <translation>Drehen Sie jetzt auf der Stelle, eine Vierteldrehung: 90 Grad. Läuft ein Rad vorwärts und das andere rückwärts, ergibt ihr Unterschied den Winkel. Vergleichen Sie beim virtuellen Roboter die Odometrie mit der Richtung, in die der Roboter wirklich zeigt.</translation>
     </message>
     <message>
         <source>Turn a whole circle, 360 degrees. Small errors add up: watch how far the odometry and the true turn drift apart.</source>
-        <translation>Dreh eine ganze Runde, 360 Grad. Kleine Fehler summieren sich: Sieh zu, wie weit Odometrie und wahre Drehung auseinanderlaufen.</translation>
+        <translation>Drehen Sie eine ganze Runde, 360 Grad. Kleine Fehler summieren sich: Sehen Sie zu, wie weit Odometrie und wahre Drehung auseinanderlaufen.</translation>
     </message>
     <message>
         <source>IR from the dock and the virtual wall</source>
@@ -2187,23 +2443,23 @@ Klicken wählt diesen Roboter: jedes Dock zeigt ihn</translation>
     </message>
     <message>
         <source>Each light bumper also has an on/off flag in packet 45, set when its signal is strong. Come close enough that the centre left and centre right flags are on together.</source>
-        <translation>Jeder Lichtstoßfänger hat auch ein Ein/Aus-Flag in Paket 45, das bei starkem Signal gesetzt wird. Komm so nah heran, dass die Flags Mitte links und Mitte rechts zugleich an sind.</translation>
+        <translation>Jeder Lichtstoßfänger hat auch ein Ein/Aus-Flag in Paket 45, das bei starkem Signal gesetzt wird. Kommen Sie so nah heran, dass die Flags Mitte links und Mitte rechts zugleich an sind.</translation>
     </message>
     <message>
         <source>The bumper is one piece, but behind it sit two switches, one on the left and one on the right. Press the left half of the bumper gently. On the virtual robot, put its left front by a wall with the button below, then drive forward (Up arrow) until it touches.</source>
-        <translation>Der Stoßfänger ist ein Teil, aber dahinter sitzen zwei Schalter, einer links und einer rechts. Drücke vorsichtig auf die linke Hälfte des Stoßfängers. Beim virtuellen Roboter stellst du ihn mit dem Knopf unten mit der linken Vorderseite an eine Wand und fährst vorwärts (Pfeil nach oben), bis er sie berührt.</translation>
+        <translation>Der Stoßfänger ist ein Teil, aber dahinter sitzen zwei Schalter, einer links und einer rechts. Drücken Sie vorsichtig auf die linke Hälfte des Stoßfängers. Beim virtuellen Roboter stellen Sie ihn mit dem Knopf unten mit der linken Vorderseite an eine Wand und fahren vorwärts (Pfeil nach oben), bis er sie berührt.</translation>
     </message>
     <message>
         <source>Now press the right half of the bumper. On the virtual robot, put its right front by the wall with the button below and drive forward. Watch packet 7: the left bumper is one bit, the right bumper another.</source>
-        <translation>Drücke jetzt auf die rechte Hälfte des Stoßfängers. Beim virtuellen Roboter stellst du ihn mit dem Knopf unten mit der rechten Vorderseite an die Wand und fährst vorwärts. Achte auf Paket 7: Der linke Stoßfänger ist ein Bit, der rechte ein anderes.</translation>
+        <translation>Drücken Sie jetzt auf die rechte Hälfte des Stoßfängers. Beim virtuellen Roboter stellen Sie ihn mit dem Knopf unten mit der rechten Vorderseite an die Wand und fahren vorwärts. Achten Sie auf Paket 7: Der linke Stoßfänger ist ein Bit, der rechte ein anderes.</translation>
     </message>
     <message>
         <source>Press the middle of the bumper, or drive straight into a wall: both switches close at once, and the robot knows the obstacle is straight ahead. On the virtual robot, face the wall with the button below, then drive forward.</source>
-        <translation>Drücke auf die Mitte des Stoßfängers oder fahre gerade gegen eine Wand: Beide Schalter schließen zugleich, und der Roboter weiß, dass das Hindernis genau vor ihm ist. Beim virtuellen Roboter richtest du ihn mit dem Knopf unten auf die Wand aus und fährst dann vorwärts.</translation>
+        <translation>Drücken Sie auf die Mitte des Stoßfängers oder fahren Sie gerade gegen eine Wand: Beide Schalter schließen zugleich, und der Roboter weiß, dass das Hindernis genau vor ihm ist. Beim virtuellen Roboter richten Sie ihn mit dem Knopf unten auf die Wand aus und fahren dann vorwärts.</translation>
     </message>
     <message>
         <source>Lift the robot a little off the floor. Each drive wheel drops down on its spring and closes a switch. Lift it until both wheels hang. In Safe mode the robot drops to Passive when its wheels drop: that is expected here. On the virtual robot, lift it with the button below.</source>
-        <translation>Heb den Roboter ein wenig vom Boden. Jedes Antriebsrad senkt sich an seiner Feder ab und schließt einen Schalter. Heb ihn, bis beide Räder hängen. Im Safe-Modus fällt der Roboter in Passive zurück, wenn sich seine Räder absenken: Das ist hier so gewollt. Beim virtuellen Roboter hebst du ihn mit dem Knopf unten an.</translation>
+        <translation>Heben Sie den Roboter ein wenig vom Boden. Jedes Antriebsrad senkt sich an seiner Feder ab und schließt einen Schalter. Heben Sie ihn, bis beide Räder hängen. Im Safe-Modus fällt der Roboter in Passive zurück, wenn sich seine Räder absenken: Das ist hier so gewollt. Beim virtuellen Roboter heben Sie ihn mit dem Knopf unten an.</translation>
     </message>
     <message>
         <source>Put its left front by a wall</source>
@@ -2226,16 +2482,16 @@ Klicken wählt diesen Roboter: jedes Dock zeigt ihn</translation>
         <translation>Im Freien absetzen</translation>
     </message>
     <message>
-        <source>Drive slowly towards the edge of a table or a step, in Safe mode, or lift the front of the robot a little. On the virtual robot, carry it to the stage edge with the button below, then drive forward (Up arrow). When a front sensor loses the floor, the robot sets its cliff flag and, in Safe mode, stops and drops to Passive. A dark rug does the same, though the floor is there: then the signals stay low but well above 0 and no wheel drops. Drive off it in Full mode, or move the robot.</source>
-        <translation>Fahre im Safe-Modus langsam auf die Kante eines Tisches oder einer Stufe zu, oder hebe die Vorderseite des Roboters ein wenig an. Beim virtuellen Roboter trägst du ihn mit dem Knopf unten an die Bühnenkante und fährst dann vorwärts (Pfeil nach oben). Wenn ein vorderer Sensor den Boden verliert, setzt der Roboter sein Abgrund-Flag, hält im Safe-Modus an und fällt in Passive zurück. Ein dunkler Teppich bewirkt dasselbe, obwohl der Boden da ist: Dann bleiben die Signale niedrig, aber deutlich über 0, und kein Rad senkt sich ab. Fahre im Full-Modus von ihm herunter oder stelle den Roboter um.</translation>
+        <source>Drive slowly towards the edge of a table or a step, in Safe mode, or lift the front of the robot a little. On the virtual robot, carry it to the stage edge with the button below, then drive forward (Up arrow). When a front sensor loses the floor, the robot sets its cliff flag and, in Safe mode, stops and drops to Passive. A dark rug does the same, though the floor is there: then the signals stay low but well above 0 and no wheel drops. Either way, carry the robot back onto a light floor before you drive again.</source>
+        <translation>Fahren Sie im Safe-Modus langsam auf die Kante eines Tisches oder einer Stufe zu, oder heben Sie die Vorderseite des Roboters ein wenig an. Beim virtuellen Roboter tragen Sie ihn mit dem Knopf unten an die Bühnenkante und fahren dann vorwärts (Pfeil nach oben). Wenn ein vorderer Sensor den Boden verliert, setzt der Roboter sein Abgrund-Flag, hält im Safe-Modus an und fällt in Passive zurück. Ein dunkler Teppich bewirkt dasselbe, obwohl der Boden da ist: Dann bleiben die Signale niedrig, aber deutlich über 0, und kein Rad senkt sich ab. In beiden Fällen tragen Sie den Roboter auf einen hellen Boden zurück, bevor Sie wieder fahren.</translation>
     </message>
     <message>
         <source>Look at the signal behind the flag: over the edge almost no light comes back. The robot stopped, as the yellow line says; leave it in Passive for now and hold it a little further over the edge, so that a front signal stays under 500 for half a second. On the virtual robot, use the button below.</source>
-        <translation>Sieh dir das Signal hinter dem Flag an: Über der Kante kommt fast kein Licht zurück. Der Roboter hat angehalten, wie die gelbe Zeile sagt; lass ihn vorerst in Passive und halte ihn ein wenig weiter über die Kante, sodass ein vorderes Signal eine halbe Sekunde lang unter 500 bleibt. Beim virtuellen Roboter nimmst du den Knopf unten.</translation>
+        <translation>Sehen Sie sich das Signal hinter dem Flag an: Über der Kante kommt fast kein Licht zurück. Der Roboter hat angehalten, wie die gelbe Zeile sagt; lassen Sie ihn vorerst in Passive und halten Sie ihn ein wenig weiter über die Kante, sodass ein vorderes Signal eine halbe Sekunde lang unter 500 bleibt. Beim virtuellen Roboter nehmen Sie den Knopf unten.</translation>
     </message>
     <message>
         <source>Carry the robot back onto the floor, away from the edge. The flags clear and the signals rise again: both front signals above 1000 for one second. On the virtual robot, use the button below.</source>
-        <translation>Trag den Roboter zurück auf den Boden, weg von der Kante. Die Flags gehen aus und die Signale steigen wieder: beide vorderen Signale eine Sekunde lang über 1000. Beim virtuellen Roboter nimmst du den Knopf unten.</translation>
+        <translation>Tragen Sie den Roboter zurück auf den Boden, weg von der Kante. Die Flags gehen aus und die Signale steigen wieder: beide vorderen Signale eine Sekunde lang über 1000. Beim virtuellen Roboter nehmen Sie den Knopf unten.</translation>
     </message>
     <message>
         <source>Carry it to face the stage edge</source>
@@ -2251,15 +2507,15 @@ Klicken wählt diesen Roboter: jedes Dock zeigt ihn</translation>
     </message>
     <message>
         <source>The IR receiver at the front of the robot picks up infrared beams. The dock sends out two buoys, red and green, and a short force field. Place the robot a metre in front of the dock, facing it, until the receiver sees the dock. On the virtual robot, use the button below.</source>
-        <translation>Der IR-Empfänger vorn am Roboter empfängt Infrarotstrahlen. Das Dock sendet zwei Bojen aus, rot und grün, und ein kurzes Kraftfeld. Stell den Roboter einen Meter vor das Dock, mit Blick darauf, bis der Empfänger das Dock sieht. Beim virtuellen Roboter nimmst du den Knopf unten.</translation>
+        <translation>Der IR-Empfänger vorn am Roboter empfängt Infrarotstrahlen. Das Dock sendet zwei Bojen aus, rot und grün, und ein kurzes Kraftfeld. Stellen Sie den Roboter einen Meter vor das Dock, mit Blick darauf, bis der Empfänger das Dock sieht. Beim virtuellen Roboter nehmen Sie den Knopf unten.</translation>
     </message>
     <message>
         <source>A virtual wall sends a beam that the robot will not cross. Bring the robot into the beam of the virtual wall: the virtual wall flag, packet 13, turns on. In the virtual classroom, the virtual wall stands on the front wall; the button below carries the robot into its beam.</source>
-        <translation>Eine virtuelle Wand sendet einen Strahl, den der Roboter nicht überquert. Bring den Roboter in den Strahl der virtuellen Wand: Das Flag für die virtuelle Wand, Paket 13, geht an. Im virtuellen Klassenzimmer steht die virtuelle Wand an der vorderen Wand; der Knopf unten trägt den Roboter in ihren Strahl.</translation>
+        <translation>Eine virtuelle Wand sendet einen Strahl, den der Roboter nicht überquert. Bringen Sie den Roboter in den Strahl der virtuellen Wand: Das Flag für die virtuelle Wand, Paket 13, geht an. Im virtuellen Klassenzimmer steht die virtuelle Wand an der vorderen Wand; der Knopf unten trägt den Roboter in ihren Strahl.</translation>
     </message>
     <message>
         <source>Drive the robot onto the dock, nose first, following the buoys. When its contacts touch the dock, the home base shows up as a charging source. On the virtual robot, put it in front of the dock with the button below, then drive forward (Up arrow).</source>
-        <translation>Fahre den Roboter mit der Nase voran auf das Dock und folge dabei den Bojen. Berühren seine Kontakte das Dock, erscheint die Ladestation als Ladequelle. Beim virtuellen Roboter stellst du ihn mit dem Knopf unten vor das Dock und fährst dann vorwärts (Pfeil nach oben).</translation>
+        <translation>Fahren Sie den Roboter mit der Nase voran auf das Dock und folgen Sie dabei den Bojen. Berühren seine Kontakte das Dock, erscheint die Ladestation als Ladequelle. Beim virtuellen Roboter stellen Sie ihn mit dem Knopf unten vor das Dock und fahren dann vorwärts (Pfeil nach oben).</translation>
     </message>
     <message>
         <source>Put it a metre from the dock, facing it</source>
@@ -2275,15 +2531,15 @@ Klicken wählt diesen Roboter: jedes Dock zeigt ihn</translation>
     </message>
     <message>
         <source>Six light bumpers look out through the window of the bumper. Each one shines infrared light and measures what a wall sends back. Move the robot slowly towards a wall, facing it, until the centre left signal is above 1000. On the virtual robot, face a wall with the button below, then drive forward (Up arrow).</source>
-        <translation>Sechs Lichtstoßfänger schauen durch das Fenster des Stoßfängers. Jeder leuchtet mit Infrarotlicht und misst, was eine Wand zurückwirft. Bewege den Roboter langsam auf eine Wand zu, mit Blick darauf, bis das Signal Mitte links über 1000 liegt. Beim virtuellen Roboter richtest du ihn mit dem Knopf unten auf eine Wand aus und fährst dann vorwärts (Pfeil nach oben).</translation>
+        <translation>Sechs Lichtstoßfänger schauen durch das Fenster des Stoßfängers. Jeder leuchtet mit Infrarotlicht und misst, was eine Wand zurückwirft. Bewegen Sie den Roboter langsam auf eine Wand zu, mit Blick darauf, bis das Signal Mitte links über 1000 liegt. Beim virtuellen Roboter richten Sie ihn mit dem Knopf unten auf eine Wand aus und fahren dann vorwärts (Pfeil nach oben).</translation>
     </message>
     <message>
         <source>The wall sensor on the right side looks sideways. Turn the robot so that the wall is on its right and drive along it, a few centimetres away. Keep the wall signal above 30 for three seconds. On the virtual robot, put it beside the wall with the button below, then drive forward.</source>
-        <translation>Der Wandsensor auf der rechten Seite schaut zur Seite. Dreh den Roboter so, dass die Wand rechts von ihm ist, und fahre ein paar Zentimeter entfernt an ihr entlang. Halte das Wandsignal drei Sekunden lang über 30. Beim virtuellen Roboter stellst du ihn mit dem Knopf unten neben die Wand und fährst dann vorwärts.</translation>
+        <translation>Der Wandsensor auf der rechten Seite schaut zur Seite. Drehen Sie den Roboter so, dass die Wand rechts von ihm ist, und fahren Sie ein paar Zentimeter entfernt an ihr entlang. Halten Sie das Wandsignal drei Sekunden lang über 30. Beim virtuellen Roboter stellen Sie ihn mit dem Knopf unten neben die Wand und fahren dann vorwärts.</translation>
     </message>
     <message>
         <source>Come closer to the wall, about four centimetres: the robot decides that a wall is there and sets the wall flag, packet 8. Keep it on for one second. On the virtual robot, use the button below.</source>
-        <translation>Komm näher an die Wand, etwa vier Zentimeter: Der Roboter entscheidet, dass dort eine Wand ist, und setzt das Wand-Flag, Paket 8. Halte es eine Sekunde lang an. Beim virtuellen Roboter nimmst du den Knopf unten.</translation>
+        <translation>Kommen Sie näher an die Wand, etwa vier Zentimeter: Der Roboter entscheidet, dass dort eine Wand ist, und setzt das Wand-Flag, Paket 8. Lassen Sie es eine Sekunde lang an. Beim virtuellen Roboter nehmen Sie den Knopf unten.</translation>
     </message>
     <message>
         <source>Face it to a wall</source>
@@ -2307,10 +2563,6 @@ Klicken wählt diesen Roboter: jedes Dock zeigt ihn</translation>
     <message>
         <source>%1 is not a version this program reads (it reads %2)</source>
         <translation>%1 ist keine Version, die dieses Programm liest (es liest %2)</translation>
-    </message>
-    <message>
-        <source>%1 is not a robot (roomba500, create2 or create1)</source>
-        <translation>%1 ist kein Roboter (roomba500, create2 oder create1)</translation>
     </message>
     <message>
         <source>must be a list of at least one step</source>
@@ -2416,6 +2668,14 @@ Klicken wählt diesen Roboter: jedes Dock zeigt ihn</translation>
         <source>must be true or false</source>
         <translation>muss true oder false sein</translation>
     </message>
+    <message>
+        <source>%1 or %2</source>
+        <translation>%1 oder %2</translation>
+    </message>
+    <message>
+        <source>%1 is not a robot (%2)</source>
+        <translation>%1 ist kein Roboter (%2)</translation>
+    </message>
 </context>
 <context>
     <name>LessonPanel</name>
@@ -2437,7 +2697,7 @@ Klicken wählt diesen Roboter: jedes Dock zeigt ihn</translation>
     </message>
     <message>
         <source>Choose a lesson above, or open a lesson file. Each step says what to do and turns green when the robot shows it was done.</source>
-        <translation>Wähle oben eine Lektion oder öffne eine Lektionsdatei. Jeder Schritt sagt, was zu tun ist, und wird grün, wenn der Roboter zeigt, dass es getan ist.</translation>
+        <translation>Wählen Sie oben eine Lektion oder öffnen Sie eine Lektionsdatei. Jeder Schritt sagt, was zu tun ist, und wird grün, wenn der Roboter zeigt, dass es getan ist.</translation>
     </message>
     <message>
         <source>Lesson complete: every step is done. Well done!</source>
@@ -2609,10 +2869,6 @@ Klicken wählt diesen Roboter: jedes Dock zeigt ihn</translation>
         <translation>Live-Datenserver: %1 abgewiesen (%2); Foxglove, Lichtblick und PlotJuggler bieten das richtige Protokoll an</translation>
     </message>
     <message>
-        <source>Live data server: %1. Choose another port in View → Live data server….</source>
-        <translation>Live-Datenserver: %1. Wählen Sie einen anderen Port unter Ansicht → Live-Datenserver….</translation>
-    </message>
-    <message>
         <source>Live data server on %1: connect Foxglove or Lichtblick to it.</source>
         <translation>Live-Datenserver auf %1: verbinden Sie Foxglove oder Lichtblick damit.</translation>
     </message>
@@ -2675,6 +2931,10 @@ Klicken wählt diesen Roboter: jedes Dock zeigt ihn</translation>
     <message>
         <source>Messages a second per channel:</source>
         <translation>Nachrichten pro Sekunde und Kanal:</translation>
+    </message>
+    <message>
+        <source>Live data server: %1. The robots go on without it; choose another port in View → Live data server….</source>
+        <translation>Live-Datenserver: %1. Die Roboter laufen ohne ihn weiter; wählen Sie unter Ansicht → Live-Datenserver… einen anderen Port.</translation>
     </message>
 </context>
 <context>
@@ -2794,10 +3054,6 @@ GPL-3.0-or-later.</translation>
     <message>
         <source>Typed into “%1”: click the robot diagram or press Esc to drive with the keys</source>
         <translation>In „%1“ getippt: Klicken Sie auf das Roboterbild oder drücken Sie Esc, um mit den Tasten zu fahren</translation>
-    </message>
-    <message>
-        <source>%1: the robot runs its own program, in Passive. Space or Stop all ends it.</source>
-        <translation>%1: Der Roboter führt sein eigenes Programm aus, im Passive-Modus. Die Leertaste oder „Alle anhalten“ beendet es.</translation>
     </message>
 </context>
 <context>
@@ -3701,7 +3957,7 @@ GPL-3.0-or-later.</translation>
     </message>
     <message>
         <source>Waiting for samples</source>
-        <translation>Warte auf Messwerte</translation>
+        <translation>Warten auf Messwerte</translation>
     </message>
     <message>
         <source>%1 (unreliable)</source>
@@ -3779,7 +4035,7 @@ GPL-3.0-or-later.</translation>
     </message>
     <message>
         <source>This step expects it: follow the step below.</source>
-        <translation>Dieser Schritt erwartet das: Folge dem Schritt unten.</translation>
+        <translation>Dieser Schritt erwartet das: Folgen Sie dem Schritt unten.</translation>
     </message>
 </context>
 <context>
@@ -3989,6 +4245,13 @@ GPL-3.0-or-later.</translation>
     </message>
 </context>
 <context>
+    <name>RecordingMarkers</name>
+    <message>
+        <source>%1 markers beyond the first %2 were left out: a recording holds at most %2</source>
+        <translation>%1 Markierungen nach den ersten %2 wurden ausgelassen: eine Aufzeichnung fasst höchstens %2</translation>
+    </message>
+</context>
+<context>
     <name>RemoteRobot</name>
     <message>
         <source>state: &quot;%1&quot; must be a string</source>
@@ -4005,6 +4268,10 @@ GPL-3.0-or-later.</translation>
     <message>
         <source>state: &quot;mode_cause&quot; must be a list of words</source>
         <translation>Zustand: „mode_cause“ muss eine Liste von Wörtern sein</translation>
+    </message>
+    <message>
+        <source>state: &quot;battery&quot; must be an object</source>
+        <translation>Zustand: „battery“ muss ein Objekt sein</translation>
     </message>
 </context>
 <context>
@@ -4102,10 +4369,6 @@ GPL-3.0-or-later.</translation>
     <message>
         <source>Recording of %1</source>
         <translation>Aufzeichnung eines %1</translation>
-    </message>
-    <message>
-        <source>not connected</source>
-        <translation>nicht verbunden</translation>
     </message>
     <message>
         <source>&amp;Stop all robots	Shift+Esc</source>
@@ -4327,6 +4590,133 @@ Doppelklick zum Umbenennen</translation>
     </message>
 </context>
 <context>
+    <name>RobotLink</name>
+    <message>
+        <source>%1: no transport for this kind of connection</source>
+        <translation>%1: für diese Art Verbindung gibt es keinen Transport</translation>
+    </message>
+    <message>
+        <source>%1: the connection ended during the check</source>
+        <translation>%1: die Verbindung endete während der Prüfung</translation>
+    </message>
+    <message>
+        <source>%1: switched off at its power button; press it or use Wake (roomba-ctl wake, or Connect again in the dashboard). The link streams again once it is on.</source>
+        <translation>%1: an seiner Ein/Aus-Taste ausgeschaltet; drücken Sie sie oder nutzen Sie „Wecken“ (roomba-ctl wake oder erneut „Verbinden“ im Dashboard). Die Verbindung sendet wieder, sobald er eingeschaltet ist.</translation>
+    </message>
+    <message>
+        <source>%1: the robot stopped sending and does not answer Start: is it still switched on, is its battery charged, and is the cable in?</source>
+        <translation>%1: Der Roboter sendet nicht mehr und antwortet nicht auf Start: Ist er noch eingeschaltet, ist sein Akku geladen und steckt das Kabel?</translation>
+    </message>
+    <message>
+        <source>%1: the robot stopped sending: it is probably asleep (a %2 sleeps after 5 minutes in Passive), and no pulse can wake it here: %3. Press Clean to wake it; the link streams again once it is awake. To wake it from here, wire its BRC pin to the adapter&apos;s RTS or DTR line and set that wake line.</source>
+        <translation>%1: Der Roboter sendet nicht mehr: Er schläft wahrscheinlich (ein %2 schläft nach 5 Minuten in Passive), und hier kann ihn kein Impuls wecken: %3. Drücken Sie Clean, um ihn zu wecken; die Verbindung sendet wieder, sobald er wach ist. Um ihn von hier aus zu wecken, verbinden Sie seinen BRC-Pin mit der RTS- oder DTR-Leitung des Adapters und stellen Sie diese Weckleitung ein.</translation>
+    </message>
+    <message>
+        <source>the port is closed</source>
+        <translation>der Anschluss ist geschlossen</translation>
+    </message>
+    <message>
+        <source>%1: the robot is asleep on its dock, and a BRC pulse did not wake it: firmware older than release-3.8.2 (release-stm32-3.7.7) is not woken by a pulse on the dock. Press Clean or lift it off the dock; the link streams again once it is awake.</source>
+        <translation>%1: Der Roboter schläft auf seiner Ladestation, und ein BRC-Impuls hat ihn nicht geweckt: Firmware älter als release-3.8.2 (release-stm32-3.7.7) wacht auf der Station nicht durch einen Impuls auf. Drücken Sie Clean oder heben Sie ihn von der Station; die Verbindung sendet wieder, sobald er wach ist.</translation>
+    </message>
+    <message>
+        <source>%1: the robot stopped sending and did not wake when its wake line (%2) was pulsed: it is asleep and the pulse does not reach it. The cable may carry the BRC pin on the other line (set the wake line to DTR, RTS or both; the connection check tries each) or not at all. On its dock, firmware older than release-3.8.2 is not woken by a pulse: press Clean or lift it off the dock; the link streams again once it is awake.</source>
+        <translation>%1: Der Roboter sendet nicht mehr und ist nicht aufgewacht, als seine Weckleitung (%2) gepulst wurde: Er schläft, und der Impuls erreicht ihn nicht. Vielleicht führt das Kabel den BRC-Pin auf der anderen Leitung (stellen Sie die Weckleitung auf DTR, RTS oder beide; die Verbindungsprüfung probiert jede) oder gar nicht. Auf der Ladestation wacht Firmware älter als release-3.8.2 nicht durch einen Impuls auf: Drücken Sie Clean oder heben Sie ihn von der Station; die Verbindung sendet wieder, sobald er wach ist.</translation>
+    </message>
+    <message>
+        <source>%1: no data: is the robot on, and is the baud right?</source>
+        <translation>%1: keine Daten: Ist der Roboter eingeschaltet und stimmt die Baudrate?</translation>
+    </message>
+    <message>
+        <source>(If it is asleep: %1.)</source>
+        <translation>(Falls er schläft: %1.)</translation>
+    </message>
+    <message>
+        <source>no packet fits in a 15 ms frame at %1 baud</source>
+        <translation>bei %1 Baud passt kein Paket in einen 15-ms-Frame</translation>
+    </message>
+    <message>
+        <source>%1: cannot stream: %2</source>
+        <translation>%1: Datenstrom nicht möglich: %2</translation>
+    </message>
+    <message>
+        <source>not connected: the command was not sent</source>
+        <translation>nicht verbunden: der Befehl wurde nicht gesendet</translation>
+    </message>
+    <message>
+        <source>the connection check is running: the command was not sent</source>
+        <translation>die Verbindungsprüfung läuft: der Befehl wurde nicht gesendet</translation>
+    </message>
+    <message>
+        <source>%1: Reset put the robot back at its default %2 baud, which this connection cannot follow from %3: %4</source>
+        <translation>%1: Reset hat den Roboter auf seine Standardrate von %2 Baud zurückgesetzt, der diese Verbindung von %3 aus nicht folgen kann: %4</translation>
+    </message>
+    <message>
+        <source>%1: Reset put the robot back at its default %2 baud: the port now talks at %2 too (it was %3).</source>
+        <translation>%1: Reset hat den Roboter auf seine Standardrate von %2 Baud zurückgesetzt: Der Anschluss spricht jetzt ebenfalls mit %2 (vorher %3).</translation>
+    </message>
+    <message>
+        <source>Not sent: %1</source>
+        <translation>Nicht gesendet: %1</translation>
+    </message>
+    <message>
+        <source>%1: write failed</source>
+        <translation>%1: Schreiben fehlgeschlagen</translation>
+    </message>
+    <message>
+        <source>not connected: the sensor query was not sent</source>
+        <translation>nicht verbunden: die Sensorabfrage wurde nicht gesendet</translation>
+    </message>
+    <message>
+        <source>sensor query: %1 is not a packet or group of the %2</source>
+        <translation>Sensorabfrage: %1 ist kein Paket und keine Gruppe des %2</translation>
+    </message>
+    <message>
+        <source>sensor query: ask for 1 to 255 packets</source>
+        <translation>Sensorabfrage: 1 bis 255 Pakete anfordern</translation>
+    </message>
+    <message>
+        <source>sensor query: the %1 has no Query List; ask for one group at a time (0 is every packet)</source>
+        <translation>Sensorabfrage: der %1 kennt kein Query List; fordern Sie jeweils eine Gruppe an (0 sind alle Pakete)</translation>
+    </message>
+    <message>
+        <source>not connected: Show Script was not sent</source>
+        <translation>nicht verbunden: Show Script wurde nicht gesendet</translation>
+    </message>
+    <message>
+        <source>the %1 has no scripts</source>
+        <translation>der %1 hat keine Skripte</translation>
+    </message>
+    <message>
+        <source>%1: the stream did not pause; the sensor query was not sent</source>
+        <translation>%1: der Datenstrom hielt nicht an; die Sensorabfrage wurde nicht gesendet</translation>
+    </message>
+    <message>
+        <source>%1: no reply to Show Script</source>
+        <translation>%1: keine Antwort auf Show Script</translation>
+    </message>
+    <message>
+        <source>%1: no reply to the sensor query</source>
+        <translation>%1: keine Antwort auf die Sensorabfrage</translation>
+    </message>
+    <message>
+        <source>not connected: there is nothing to wake</source>
+        <translation>nicht verbunden: es gibt nichts zu wecken</translation>
+    </message>
+    <message>
+        <source>%1: no pulse can wake the robot here: %2. Press its power button (Clean).</source>
+        <translation>%1: hier kann kein Impuls den Roboter wecken: %2. Drücken Sie seine Ein/Aus-Taste (Clean).</translation>
+    </message>
+    <message>
+        <source>not connected: there is nothing to check</source>
+        <translation>nicht verbunden: es gibt nichts zu prüfen</translation>
+    </message>
+    <message>
+        <source>%1: the port is not open yet</source>
+        <translation>%1: der Anschluss ist noch nicht geöffnet</translation>
+    </message>
+</context>
+<context>
     <name>RobotList</name>
     <message>
         <source>Add robot</source>
@@ -4507,12 +4897,52 @@ Doppelklick zum Umbenennen</translation>
         <translation>Passive einschalten, damit er lädt, oder ihn von der Ladestation fahren.</translation>
     </message>
     <message>
-        <source>Use Full to drive it off the dock, or lift it off.</source>
-        <translation>Mit Full von der Ladestation fahren, oder ihn herunterheben.</translation>
+        <source>Lift it off the dock, or drive it off in Full (Full does not stop at cliffs or wheel drops).</source>
+        <translation>Heben Sie ihn von der Ladestation, oder fahren Sie ihn im Full-Modus herunter (Full hält nicht an Abgründen oder abgesenkten Rädern).</translation>
     </message>
     <message>
-        <source>Carry it back from the edge, then Enter Safe. No edge there? Its cliff signals read %1 of 4095, low but not the near 0 of a drop, and no wheel dropped: a dark rug or floor reads as a cliff. Drive it off in Full, or move it to a lighter floor.</source>
-        <translation>Tragen Sie ihn von der Kante weg, dann Safe aktivieren. Keine Kante da? Seine Abgrundsignale lesen %1 von 4095, niedrig, aber nicht die fast 0 eines Abgrunds, und kein Rad hat sich abgesenkt: Ein dunkler Teppich oder Boden wirkt wie ein Abgrund. Fahren Sie ihn im Full-Modus herunter oder stellen Sie ihn auf einen helleren Boden.</translation>
+        <source>Carry it back from the edge, then Enter Safe. Its cliff signals read %1 of 4095, as over a dark rug: if you can see the floor under it, carry it to a lighter floor, then Enter Safe.</source>
+        <translation>Tragen Sie ihn von der Kante weg, dann Safe aktivieren. Seine Abgrundsignale lesen %1 von 4095, wie über einem dunklen Teppich: Sehen Sie den Boden unter ihm, tragen Sie ihn auf einen helleren Boden, dann Safe aktivieren.</translation>
+    </message>
+    <message>
+        <source>Cleaning (its own program) · Space stops it</source>
+        <translation>Reinigt (sein eigenes Programm) · Leertaste hält ihn an</translation>
+    </message>
+    <message>
+        <source>Seeking its dock (its own program) · Space stops it</source>
+        <translation>Sucht seine Ladestation (sein eigenes Programm) · Leertaste hält ihn an</translation>
+    </message>
+    <message>
+        <source>Running a demo (its own program) · Space stops it</source>
+        <translation>Führt eine Demo aus (sein eigenes Programm) · Leertaste hält ihn an</translation>
+    </message>
+    <message>
+        <source>cleaning</source>
+        <translation>reinigt</translation>
+    </message>
+    <message>
+        <source>seeking its dock</source>
+        <translation>sucht die Ladestation</translation>
+    </message>
+    <message>
+        <source>running a demo</source>
+        <translation>führt eine Demo aus</translation>
+    </message>
+    <message>
+        <source>the robot is off the floor: Full mode would drive its wheels in your hands</source>
+        <translation>der Roboter steht nicht auf dem Boden: Im Full-Modus würden sich seine Räder in Ihren Händen drehen</translation>
+    </message>
+    <message>
+        <source>battery nearly flat</source>
+        <translation>Akku fast leer</translation>
+    </message>
+    <message>
+        <source>%1 (it fell to Passive at %2).</source>
+        <translation>%1 (um %2 in Passive gefallen).</translation>
+    </message>
+    <message>
+        <source>Put it on its dock in Passive to charge it; it drives again once charged.</source>
+        <translation>Stellen Sie ihn in Passive auf seine Ladestation, damit er lädt; geladen fährt er wieder.</translation>
     </message>
 </context>
 <context>
@@ -4536,6 +4966,22 @@ Doppelklick zum Umbenennen</translation>
     <message>
         <source>This robot reports its mode one too high (Passive as Safe, as some Wi-Fi Roomba 600s do): the true mode is shown from now on, and remembered for this robot.</source>
         <translation>Dieser Roboter meldet seinen Modus um eins zu hoch (Passive als Safe, wie manche WLAN-Roomba-600): Ab jetzt wird der wahre Modus gezeigt und für diesen Roboter gemerkt.</translation>
+    </message>
+    <message>
+        <source>Not sent: %1. Put it down on the floor first.</source>
+        <translation>Nicht gesendet: %1. Stellen Sie ihn zuerst auf den Boden.</translation>
+    </message>
+    <message>
+        <source>Motion sent with the %1.</source>
+        <translation>Fahrbefehl gesendet, aber: %1.</translation>
+    </message>
+    <message>
+        <source>Motion stopped: %1. Put it down on the floor first.</source>
+        <translation>Fahrt angehalten: %1. Stellen Sie ihn zuerst auf den Boden.</translation>
+    </message>
+    <message>
+        <source>The charge fell from %1 % to %2 % as the robot guessed it again from its voltage at boot. A pack that reads full on the charger and much lower under load is worn: see Battery in the gauges.</source>
+        <translation>Die Ladung fiel von %1 % auf %2 %, als der Roboter sie beim Start erneut aus seiner Spannung schätzte. Ein Akku, der am Ladegerät voll anzeigt und unter Last viel weniger, ist verschlissen: siehe Akku in den Messanzeigen.</translation>
     </message>
 </context>
 <context>
@@ -4611,6 +5057,34 @@ Doppelklick zum Umbenennen</translation>
     <message>
         <source>  REPLAY FINISHED  </source>
         <translation>  WIEDERGABE BEENDET  </translation>
+    </message>
+    <message>
+        <source>not connected</source>
+        <translation>nicht verbunden</translation>
+    </message>
+    <message>
+        <source>replay finished</source>
+        <translation>Wiedergabe beendet</translation>
+    </message>
+    <message>
+        <source>replaying</source>
+        <translation>Wiedergabe läuft</translation>
+    </message>
+    <message>
+        <source>replay paused</source>
+        <translation>Wiedergabe angehalten</translation>
+    </message>
+    <message>
+        <source>Link: replay finished</source>
+        <translation>Verbindung: Wiedergabe beendet</translation>
+    </message>
+    <message>
+        <source>Link: replaying a recording</source>
+        <translation>Verbindung: Wiedergabe einer Aufzeichnung</translation>
+    </message>
+    <message>
+        <source>%1, %2</source>
+        <translation>%1, %2</translation>
     </message>
 </context>
 <context>
@@ -5236,11 +5710,19 @@ Gesendet: %2</translation>
     </message>
     <message>
         <source>Asking for the robot&apos;s script…</source>
-        <translation>Frage den Roboter nach seinem Skript…</translation>
+        <translation>Der Roboter wird nach seinem Skript gefragt…</translation>
     </message>
     <message>
         <source>No script came back: %1</source>
         <translation>Kein Skript kam zurück: %1</translation>
+    </message>
+    <message>
+        <source>Uploaded (152): %1 / %2 bytes. Play (153) runs the script; Show Script (154) reads it back.</source>
+        <translation>Hochgeladen (152): %1 / %2 Bytes. Play (153) führt das Skript aus; Show Script (154) liest es zurück.</translation>
+    </message>
+    <message>
+        <source>Play (153) sent. While the script waits (155–158) the Create hears no command, not even a stop; it listens again when the script ends.</source>
+        <translation>Play (153) gesendet. Während das Skript wartet (155–158), hört der Create keinen Befehl, nicht einmal einen Halt; er hört wieder zu, wenn das Skript endet.</translation>
     </message>
 </context>
 <context>
@@ -5476,6 +5958,34 @@ Gesendet: %2</translation>
         <source>REPLAY FINISHED — the recording has ended</source>
         <translation>WIEDERGABE BEENDET — die Aufzeichnung ist zu Ende</translation>
     </message>
+    <message>
+        <source>%1 mΩ</source>
+        <translation>%1 mΩ</translation>
+    </message>
+    <message>
+        <source>, </source>
+        <translation>, </translation>
+    </message>
+    <message>
+        <source>Measured %1, on an earlier connection.</source>
+        <translation>Gemessen %1, bei einer früheren Verbindung.</translation>
+    </message>
+    <message>
+        <source>Capacity measured so far: %1.</source>
+        <translation>Bisher gemessene Kapazität: %1.</translation>
+    </message>
+    <message>
+        <source>Pack health</source>
+        <translation>Akkuzustand</translation>
+    </message>
+    <message>
+        <source>%1, estimated from voltage</source>
+        <translation>%1, aus der Spannung geschätzt</translation>
+    </message>
+    <message>
+        <source>The robot guessed this charge from its voltage as it booted: until a full charge it is an estimate, and a worn pack&apos;s voltage sags under load, so it reads low.</source>
+        <translation>Der Roboter hat diese Ladung beim Start aus seiner Spannung geschätzt: Bis zu einer Vollladung ist sie nur eine Schätzung, und die Spannung eines verschlissenen Akkus sackt unter Last ab, sodass sie zu niedrig anzeigt.</translation>
+    </message>
 </context>
 <context>
     <name>SensorHistory</name>
@@ -5593,6 +6103,10 @@ Gesendet: %2</translation>
     <message>
         <source>Replay finished</source>
         <translation>Wiedergabe beendet</translation>
+    </message>
+    <message>
+        <source>Replay, not live</source>
+        <translation>Wiedergabe, nicht live</translation>
     </message>
 </context>
 <context>
@@ -5817,8 +6331,8 @@ Gesendet: %2</translation>
         <translation>Abspielen</translation>
     </message>
     <message>
-        <source>Play this slot on the robot (141)</source>
-        <translation>Diesen Platz auf dem Roboter abspielen (141)</translation>
+        <source>Upload this slot&apos;s song and play it on the robot (140, 141)</source>
+        <translation>Das Lied dieses Platzes hochladen und auf dem Roboter abspielen (140, 141)</translation>
     </message>
     <message>
         <source>Stop preview</source>
@@ -6019,8 +6533,8 @@ Gesendet: %2</translation>
         <translation>%1 abgelehnt: %2</translation>
     </message>
     <message>
-        <source>%1 sent. Warning: %2</source>
-        <translation>%1 gesendet. Warnung: %2</translation>
+        <source>%1 Warning: %2</source>
+        <translation>%1 Warnung: %2</translation>
     </message>
     <message>
         <source>%1 sent.</source>
@@ -6060,11 +6574,11 @@ Gesendet: %2</translation>
     </message>
     <message>
         <source>Playing song %1: %2 of %3 s</source>
-        <translation>Spiele Lied %1: %2 von %3 s</translation>
+        <translation>Lied %1 wird gespielt: %2 von %3 s</translation>
     </message>
     <message>
         <source>Playing song %1</source>
-        <translation>Spiele Lied %1</translation>
+        <translation>Lied %1 wird gespielt</translation>
     </message>
     <message>
         <source>Saved %1.</source>
@@ -6133,6 +6647,14 @@ Gesendet: %2</translation>
     <message>
         <source>song slot 4 may not play on some firmware (ERRATA 13)</source>
         <translation>Liedplatz 4 spielt auf mancher Firmware nicht (ERRATA 13)</translation>
+    </message>
+    <message>
+        <source>Nothing to play: slot %1 has no notes.</source>
+        <translation>Nichts abzuspielen: Platz %1 hat keine Noten.</translation>
+    </message>
+    <message>
+        <source>Song %1 as shown: uploaded (140) and played (141).</source>
+        <translation>Lied %1 wie angezeigt: hochgeladen (140) und abgespielt (141).</translation>
     </message>
 </context>
 <context>
@@ -6229,12 +6751,16 @@ Umschalt+Esc tut dasselbe aus jedem Fenster; Leertaste oder Esc hält den ausgew
         <translation>Fährt nicht: keine Live-Daten vom Roboter, niemand könnte ihn fahren sehen. Warten Sie, bis er Daten sendet.</translation>
     </message>
     <message>
-        <source>Not driving: %1 %2</source>
-        <translation>Fährt nicht: %1 %2</translation>
+        <source>Not driving: %1</source>
+        <translation>Fährt nicht: %1</translation>
     </message>
     <message>
         <source>Not driving: the robot is in Passive mode and ignores motion. Press Enter Safe to drive.</source>
         <translation>Fährt nicht: Der Roboter ist im Passive-Modus und ignoriert Fahrbefehle. Drücken Sie „Safe aktivieren“, um zu fahren.</translation>
+    </message>
+    <message>
+        <source>Not driving: %1. Put it down on the floor to drive.</source>
+        <translation>Fährt nicht: %1. Stellen Sie ihn zum Fahren auf den Boden.</translation>
     </message>
 </context>
 <context>
@@ -6403,6 +6929,14 @@ Umschalt+Esc tut dasselbe aus jedem Fenster; Leertaste oder Esc hält den ausgew
         <source>It prints its charging status (&quot;%1&quot;): it is on its dock.</source>
         <translation>Er schreibt seinen Ladezustand (&quot;%1&quot;): er steht auf seiner Ladestation.</translation>
     </message>
+    <message>
+        <source>It answers Sensors 0 but has no packet 35 (OI mode): a Roomba 400 series, which speaks the older SCI (2005).</source>
+        <translation>Er antwortet auf Sensors 0, hat aber kein Paket 35 (OI-Modus): ein Roomba der 400er-Serie, der das ältere SCI (2005) spricht.</translation>
+    </message>
+    <message>
+        <source>It printed &quot;%1&quot;: the text a Roomba 400 prints as it starts up, not a charging status.</source>
+        <translation>Er schrieb &quot;%1&quot;: den Text, den ein Roomba 400 beim Starten schreibt, keinen Ladezustand.</translation>
+    </message>
 </context>
 <context>
     <name>oilink::ReplayTransport</name>
@@ -6414,104 +6948,8 @@ Umschalt+Esc tut dasselbe aus jedem Fenster; Leertaste oder Esc hält den ausgew
 <context>
     <name>oilink::RobotLink</name>
     <message>
-        <source>Not sent: %1</source>
-        <translation>Nicht gesendet: %1</translation>
-    </message>
-    <message>
-        <source>%1: no data: is the robot on, and is the baud right?</source>
-        <translation>%1: keine Daten: Ist der Roboter eingeschaltet und stimmt die Baudrate?</translation>
-    </message>
-    <message>
-        <source>no packet fits in a 15 ms frame at %1 baud</source>
-        <translation>bei %1 Baud passt kein Paket in einen 15-ms-Frame</translation>
-    </message>
-    <message>
-        <source>%1: cannot stream: %2</source>
-        <translation>%1: Datenstrom nicht möglich: %2</translation>
-    </message>
-    <message>
-        <source>not connected: the command was not sent</source>
-        <translation>nicht verbunden: der Befehl wurde nicht gesendet</translation>
-    </message>
-    <message>
-        <source>%1: write failed</source>
-        <translation>%1: Schreiben fehlgeschlagen</translation>
-    </message>
-    <message>
-        <source>not connected: the sensor query was not sent</source>
-        <translation>nicht verbunden: die Sensorabfrage wurde nicht gesendet</translation>
-    </message>
-    <message>
-        <source>sensor query: %1 is not a packet or group of the %2</source>
-        <translation>Sensorabfrage: %1 ist kein Paket und keine Gruppe des %2</translation>
-    </message>
-    <message>
-        <source>sensor query: ask for 1 to 255 packets</source>
-        <translation>Sensorabfrage: 1 bis 255 Pakete anfordern</translation>
-    </message>
-    <message>
-        <source>%1: the stream did not pause; the sensor query was not sent</source>
-        <translation>%1: der Datenstrom hielt nicht an; die Sensorabfrage wurde nicht gesendet</translation>
-    </message>
-    <message>
-        <source>%1: no reply to the sensor query</source>
-        <translation>%1: keine Antwort auf die Sensorabfrage</translation>
-    </message>
-    <message>
-        <source>%1: no transport for this kind of connection</source>
-        <translation>%1: für diese Art Verbindung gibt es keinen Transport</translation>
-    </message>
-    <message>
-        <source>(If it is asleep: %1.)</source>
-        <translation>(Falls er schläft: %1.)</translation>
-    </message>
-    <message>
-        <source>not connected: Show Script was not sent</source>
-        <translation>nicht verbunden: Show Script wurde nicht gesendet</translation>
-    </message>
-    <message>
-        <source>the %1 has no scripts</source>
-        <translation>der %1 hat keine Skripte</translation>
-    </message>
-    <message>
-        <source>%1: no reply to Show Script</source>
-        <translation>%1: keine Antwort auf Show Script</translation>
-    </message>
-    <message>
-        <source>%1: the connection ended during the check</source>
-        <translation>%1: die Verbindung endete während der Prüfung</translation>
-    </message>
-    <message>
-        <source>the connection check is running: the command was not sent</source>
-        <translation>die Verbindungsprüfung läuft: der Befehl wurde nicht gesendet</translation>
-    </message>
-    <message>
-        <source>not connected: there is nothing to check</source>
-        <translation>nicht verbunden: es gibt nichts zu prüfen</translation>
-    </message>
-    <message>
-        <source>%1: the port is not open yet</source>
-        <translation>%1: der Anschluss ist noch nicht geöffnet</translation>
-    </message>
-    <message>
-        <source>%1: the robot stopped sending and does not answer Start: is it still switched on, is its battery charged, and is the cable in?</source>
-        <translation>%1: Der Roboter sendet nicht mehr und antwortet nicht auf Start: Ist er noch eingeschaltet, ist sein Akku geladen und steckt das Kabel?</translation>
-    </message>
-    <message>
-        <source>%1: the robot stopped sending: it is probably asleep (a %2 sleeps after 5 minutes in Passive), and no pulse can wake it here: %3. Press Clean to wake it; the link streams again once it is awake. To wake it from here, wire its BRC pin to the adapter&apos;s RTS or DTR line and set that wake line.</source>
-        <translation>%1: Der Roboter sendet nicht mehr: Er schläft wahrscheinlich (ein %2 schläft nach 5 Minuten in Passive), und hier kann ihn kein Impuls wecken: %3. Drücken Sie Clean, um ihn zu wecken; die Verbindung sendet wieder, sobald er wach ist. Um ihn von hier aus zu wecken, verbinden Sie seinen BRC-Pin mit der RTS- oder DTR-Leitung des Adapters und stellen Sie diese Weckleitung ein.</translation>
-    </message>
-    <message>
-        <source>the port is closed</source>
-        <translation>der Anschluss ist geschlossen</translation>
-    </message>
-    <message>
-        <source>%1: the robot is asleep on its dock, and a BRC pulse did not wake it: firmware older than release-3.8.2 (release-stm32-3.7.7) is not woken by a pulse on the dock. Press Clean or lift it off the dock; the link streams again once it is awake.</source>
-        <translation>%1: Der Roboter schläft auf seiner Ladestation, und ein BRC-Impuls hat ihn nicht geweckt: Firmware älter als release-3.8.2 (release-stm32-3.7.7) wacht auf der Station nicht durch einen Impuls auf. Drücken Sie Clean oder heben Sie ihn von der Station; die Verbindung sendet wieder, sobald er wach ist.</translation>
-    </message>
-    <message>
-        <source>%1: the robot stopped sending and did not wake when its wake line (%2) was pulsed: it is asleep and the pulse does not reach it. The cable may carry the BRC pin on the other line (set the wake line to DTR, RTS or both; the connection check tries each) or not at all. On its dock, firmware older than release-3.8.2 is not woken by a pulse: press Clean or lift it off the dock; the link streams again once it is awake.</source>
-        <translation>%1: Der Roboter sendet nicht mehr und ist nicht aufgewacht, als seine Weckleitung (%2) gepulst wurde: Er schläft, und der Impuls erreicht ihn nicht. Vielleicht führt das Kabel den BRC-Pin auf der anderen Leitung (stellen Sie die Weckleitung auf DTR, RTS oder beide; die Verbindungsprüfung probiert jede) oder gar nicht. Auf der Ladestation wacht Firmware älter als release-3.8.2 nicht durch einen Impuls auf: Drücken Sie Clean oder heben Sie ihn von der Station; die Verbindung sendet wieder, sobald er wach ist.</translation>
+        <source>bunched link (frames every %1 s)</source>
+        <translation>gebündelte Verbindung (Frames alle %1 s)</translation>
     </message>
 </context>
 <context>
@@ -6531,6 +6969,10 @@ Umschalt+Esc tut dasselbe aus jedem Fenster; Leertaste oder Esc hält den ausgew
     <message>
         <source>not connected: there is nothing to check</source>
         <translation>nicht verbunden: es gibt nichts zu prüfen</translation>
+    </message>
+    <message>
+        <source>not connected: there is nothing to wake</source>
+        <translation>nicht verbunden: es gibt nichts zu wecken</translation>
     </message>
 </context>
 <context>
@@ -6608,44 +7050,6 @@ Umschalt+Esc tut dasselbe aus jedem Fenster; Leertaste oder Esc hält den ausgew
     <message>
         <source>%1: the wake line is set to none, so the cable is taken to have no BRC wire</source>
         <translation>%1: Die Weckleitung ist auf keine gestellt, das Kabel gilt also als ohne BRC-Ader</translation>
-    </message>
-</context>
-<context>
-    <name>BoundedFile</name>
-    <message>
-        <source>not a regular file but a named pipe</source>
-        <translation>keine gewöhnliche Datei, sondern eine benannte Pipe</translation>
-    </message>
-    <message>
-        <source>not a regular file but a folder</source>
-        <translation>keine gewöhnliche Datei, sondern ein Ordner</translation>
-    </message>
-    <message>
-        <source>not a regular file but a device</source>
-        <translation>keine gewöhnliche Datei, sondern ein Gerät</translation>
-    </message>
-    <message>
-        <source>not a regular file</source>
-        <translation>keine gewöhnliche Datei</translation>
-    </message>
-    <message>
-        <source>%1, larger than the %2 this program reads of such a file</source>
-        <translation>%1, größer als die %2, die dieses Programm von einer solchen Datei liest</translation>
-    </message>
-    <message>
-        <source>larger than the %1 this program reads of such a file</source>
-        <translation>größer als die %1, die dieses Programm von einer solchen Datei liest</translation>
-    </message>
-    <message>
-        <source>%1 bytes</source>
-        <translation>%1 Bytes</translation>
-    </message>
-</context>
-<context>
-    <name>RecordingMarkers</name>
-    <message>
-        <source>%1 markers beyond the first %2 were left out: a recording holds at most %2</source>
-        <translation>%1 Markierungen nach den ersten %2 wurden ausgelassen: eine Aufzeichnung fasst höchstens %2</translation>
     </message>
 </context>
 </TS>

@@ -21,6 +21,89 @@
     </message>
 </context>
 <context>
+    <name>BatteryHealth</name>
+    <message>
+        <source>holds %1 of the %2 mAh it claims (%3 %)</source>
+        <translation>retiene %1 de los %2 mAh que declara (%3 %)</translation>
+    </message>
+    <message>
+        <source>resistance %1 mΩ, %2 times a new pack&apos;s</source>
+        <translation>resistencia de %1 mΩ, %2 veces la de una batería nueva</translation>
+    </message>
+    <message>
+        <source>it needs a drive started and stopped a few times, and part of a discharge or a charge</source>
+        <translation>necesita arrancar y detener la marcha unas cuantas veces, y parte de una descarga o de una carga</translation>
+    </message>
+    <message>
+        <source>; </source>
+        <translation>; </translation>
+    </message>
+    <message>
+        <source>; capacity not measured yet</source>
+        <translation>; capacidad aún sin medir</translation>
+    </message>
+    <message>
+        <source>Good</source>
+        <translation>Buena</translation>
+    </message>
+    <message>
+        <source>Worn</source>
+        <translation>Gastada</translation>
+    </message>
+    <message>
+        <source>Replace</source>
+        <translation>Cambiar</translation>
+    </message>
+    <message>
+        <source>Not measured yet</source>
+        <translation>Aún sin medir</translation>
+    </message>
+    <message>
+        <source>%1 % of a cycle seen, %2 resistance samples</source>
+        <translation>%1 % de un ciclo visto, %2 muestras de resistencia</translation>
+    </message>
+    <message>
+        <source>%1 mAh (%2)</source>
+        <translation>%1 mAh (%2)</translation>
+    </message>
+    <message>
+        <source>, </source>
+        <translation>, </translation>
+    </message>
+    <message>
+        <source>%1 %, %2 V</source>
+        <translation>%1 %, %2 V</translation>
+    </message>
+    <message>
+        <source>%1 V</source>
+        <translation>%1 V</translation>
+    </message>
+    <message>
+        <source>battery nearly flat (%1): the robot leaves Safe or Full by itself under load; charge it</source>
+        <translation>batería casi agotada (%1): el robot sale solo de Safe o Full bajo carga; póngalo a cargar</translation>
+    </message>
+    <message>
+        <source>Charging fault: the robot will not charge. Usually the charging contacts are dirty (on the robot or the dock), the supply is not the robot&apos;s own, or the pack was run deeply flat (Safe or Full left on the dock drains it). Clean the contacts, reseat the pack, then reset the charger: hold Spot and Dock together for 10 seconds, and put it back on the dock.</source>
+        <translation>Fallo de carga: el robot no carga. Normalmente los contactos de carga están sucios (en el robot o en la base), la fuente de alimentación no es la del robot, o la batería se descargó a fondo (Safe o Full en la base la descarga). Limpie los contactos, vuelva a colocar la batería y reinicie el cargador: mantenga pulsados Spot y Dock a la vez durante 10 segundos, y vuelva a ponerlo en la base.</translation>
+    </message>
+    <message>
+        <source>%1: %2 (%3)</source>
+        <translation>%1: %2 (%3)</translation>
+    </message>
+    <message>
+        <source>; measured %1</source>
+        <translation>; medido el %1</translation>
+    </message>
+    <message>
+        <source>; the charge is estimated from voltage since the robot booted</source>
+        <translation>; la carga se estima a partir de la tensión desde que arrancó el robot</translation>
+    </message>
+    <message>
+        <source>; capacity so far: %1</source>
+        <translation>; capacidad hasta ahora: %1</translation>
+    </message>
+</context>
+<context>
     <name>BitName</name>
     <message>
         <source>Advance</source>
@@ -161,6 +244,37 @@
     <message>
         <source>Wheel Drop Right</source>
         <translation>Caída de rueda derecha</translation>
+    </message>
+</context>
+<context>
+    <name>BoundedFile</name>
+    <message>
+        <source>not a regular file but a named pipe</source>
+        <translation>no es un archivo normal, sino una tubería con nombre</translation>
+    </message>
+    <message>
+        <source>not a regular file but a folder</source>
+        <translation>no es un archivo normal, sino una carpeta</translation>
+    </message>
+    <message>
+        <source>not a regular file but a device</source>
+        <translation>no es un archivo normal, sino un dispositivo</translation>
+    </message>
+    <message>
+        <source>not a regular file</source>
+        <translation>no es un archivo normal</translation>
+    </message>
+    <message>
+        <source>%1, larger than the %2 this program reads of such a file</source>
+        <translation>%1, más que los %2 que este programa lee de un archivo así</translation>
+    </message>
+    <message>
+        <source>larger than the %1 this program reads of such a file</source>
+        <translation>más que los %1 que este programa lee de un archivo así</translation>
+    </message>
+    <message>
+        <source>%1 bytes</source>
+        <translation>%1 bytes</translation>
     </message>
 </context>
 <context>
@@ -958,6 +1072,14 @@
         <source>The adapter&apos;s line wired to the robot&apos;s BRC pin, pulsed to wake it and keep it awake. Many cables use RTS, some DTR; both pulses the two; none: the cable has no BRC wire.</source>
         <translation>La línea del adaptador conectada al pin BRC del robot, que se pulsa para despertarlo y mantenerlo despierto. Muchos cables usan RTS, algunos DTR; ambas pulsa las dos; ninguna: el cable no tiene hilo BRC.</translation>
     </message>
+    <message>
+        <source>Wake</source>
+        <translation>Despertar</translation>
+    </message>
+    <message>
+        <source>Pulse the robot&apos;s BRC pin: switches on a robot switched off at its power button</source>
+        <translation>Envía un pulso al pin BRC del robot: enciende un robot apagado con su botón de encendido</translation>
+    </message>
 </context>
 <context>
     <name>ConnectionCheckup</name>
@@ -1142,6 +1264,32 @@ sistema.
     <message>
         <source>--foxglove: %1</source>
         <translation>--foxglove: %1</translation>
+    </message>
+    <message>
+        <source>
+  --battery-fade PCT[,PCT...], --battery-resistance MOHM[,MOHM...]
+                     with --sim: aged packs, one figure per robot (the last for
+                     the rest): the share of its 3000 mAh lost (0 to 90) and its
+                     internal resistance (50 to 5000 mΩ; a new pack 250)
+</source>
+        <translation>
+  --battery-fade PORC[,PORC...], --battery-resistance MOHM[,MOHM...]
+                     con --sim: baterías envejecidas, una cifra por robot (la última
+                     para el resto): la parte perdida de sus 3000 mAh (0 a 90) y su
+                     resistencia interna (50 a 5000 mΩ; una batería nueva, 250)
+</translation>
+    </message>
+    <message>
+        <source>--battery-fade: &apos;%1&apos; is not a share from 0 to 90 %</source>
+        <translation>--battery-fade: &apos;%1&apos; no es una proporción de 0 a 90 %</translation>
+    </message>
+    <message>
+        <source>--battery-resistance: &apos;%1&apos; is not a resistance from 50 to 5000 mΩ</source>
+        <translation>--battery-resistance: &apos;%1&apos; no es una resistencia de 50 a 5000 mΩ</translation>
+    </message>
+    <message>
+        <source>--battery-fade and --battery-resistance go with --sim</source>
+        <translation>--battery-fade y --battery-resistance van con --sim</translation>
     </message>
 </context>
 <context>
@@ -1382,10 +1530,10 @@ sistema.
         <translation>Reiniciar el robot seleccionado para leer la versión de su firmware y, con ella, qué datos da mal</translation>
     </message>
     <message>
-        <source>The firmware version is printed only when the robot starts up, so %1 will be reset (Reset, opcode 7): it stops, leaves its mode and reboots as if its battery had been taken out. Put it back in Safe or Full mode afterwards if you were driving it.
+        <source>The firmware version is printed only when the robot starts up, so %1 will be reset (Reset, opcode 7): it stops, leaves its mode and reboots as if its battery had been taken out. Enter Safe again afterwards if you were driving it.
 
 Reset %1 now?</source>
-        <translation>La versión del firmware solo se imprime al arrancar el robot, así que %1 se reiniciará (Reset, código 7): se detiene, sale de su modo y arranca de nuevo como si se le hubiera quitado la batería. Después vuelva a ponerlo en modo Safe o Full si lo estaba conduciendo.
+        <translation>La versión del firmware solo se imprime al arrancar el robot, así que %1 se reiniciará (Reset, código 7): se detiene, sale de su modo y arranca de nuevo como si se le hubiera quitado la batería. Después vuelva a pasar a Safe si lo estaba conduciendo.
 
 ¿Reiniciar %1 ahora?</translation>
     </message>
@@ -1419,6 +1567,22 @@ Imprimió: %5</translation>
     <message>
         <source>%1 · not connected: %2</source>
         <translation>%1 · sin conexión: %2</translation>
+    </message>
+    <message>
+        <source>this window</source>
+        <translation>esta ventana</translation>
+    </message>
+    <message>
+        <source>Stopped the robot at %1</source>
+        <translation>Robot detenido a las %1</translation>
+    </message>
+    <message>
+        <source>Stopped all %1 robots at %2</source>
+        <translation>Detenidos los %1 robots a las %2</translation>
+    </message>
+    <message>
+        <source>%1 · connection lost at %2, trying again…</source>
+        <translation>%1 · conexión perdida a las %2, reintentando…</translation>
     </message>
 </context>
 <context>
@@ -1536,6 +1700,74 @@ Haga clic para seleccionar este robot: todos los paneles lo muestran</translatio
         <source>%1&apos;s program %2</source>
         <translation>programa %2 de %1</translation>
     </message>
+    <message>
+        <source>MAY STILL BE MOVING</source>
+        <translation>QUIZÁ AÚN SE MUEVE</translation>
+    </message>
+    <message>
+        <source>pack %1, %2 mAh</source>
+        <translation>batería: %1, %2 mAh</translation>
+    </message>
+    <message>
+        <source>pack %1</source>
+        <translation>batería: %1</translation>
+    </message>
+    <message>
+        <source>%1 % · %2</source>
+        <translation>%1 % · %2</translation>
+    </message>
+    <message>
+        <source>pick it up, switch it off</source>
+        <translation>levántelo y apáguelo</translation>
+    </message>
+    <message>
+        <source>bridge offline since %1</source>
+        <translation>puente caído desde las %1</translation>
+    </message>
+    <message>
+        <source>bridge offline</source>
+        <translation>puente caído</translation>
+    </message>
+    <message>
+        <source>robot not answering</source>
+        <translation>robot sin respuesta</translation>
+    </message>
+    <message>
+        <source>robot silent (link stale)</source>
+        <translation>robot mudo (enlace obsoleto)</translation>
+    </message>
+    <message>
+        <source>%1 cut off</source>
+        <translation>se cortó a %1</translation>
+    </message>
+    <message>
+        <source>%1&apos;s program cut off</source>
+        <translation>se cortó el programa de %1</translation>
+    </message>
+    <message>
+        <source>, cutting off %1</source>
+        <translation>, lo que cortó a %1</translation>
+    </message>
+    <message>
+        <source>, cutting off %1&apos;s program %2</source>
+        <translation>, lo que cortó el programa %2 de %1</translation>
+    </message>
+    <message>
+        <source>%1&apos;s bridge went offline at %2 while the robot was driving%3. A real robot keeps its last drive when its bridge dies: pick it up and hold its power button to switch it off, then restart the bridge on the computer beside it.</source>
+        <translation>El puente de %1 se cayó a las %2 mientras el robot conducía%3. Un robot real mantiene su última orden de marcha cuando su puente falla: levántelo y mantenga pulsado su botón de encendido para apagarlo, y luego reinicie el puente en el equipo que tiene al lado.</translation>
+    </message>
+    <message>
+        <source>%1&apos;s bridge went offline at %2%3 (the broker is fine): check the bridge on the computer beside the robot, and restart it.</source>
+        <translation>El puente de %1 se cayó a las %2%3 (el bróker funciona): compruebe el puente en el equipo que hay junto al robot y reinícielo.</translation>
+    </message>
+    <message>
+        <source>%1
+%2
+Click to select this robot: every dock shows it</source>
+        <translation>%1
+%2
+Haga clic para seleccionar este robot: todos los paneles lo muestran</translation>
+    </message>
 </context>
 <context>
     <name>FleetView</name>
@@ -1566,6 +1798,18 @@ Haga clic para seleccionar este robot: todos los paneles lo muestran</translatio
     <message>
         <source>Another broker…</source>
         <translation>Otro bróker…</translation>
+    </message>
+    <message>
+        <source>By name</source>
+        <translation>Por nombre</translation>
+    </message>
+    <message>
+        <source>By pack health</source>
+        <translation>Por estado de la batería</translation>
+    </message>
+    <message>
+        <source>The order of the tiles: by name, or by the health of each robot&apos;s battery pack, the one to replace first.</source>
+        <translation>El orden de las fichas: por nombre o por el estado de la batería de cada robot, primero la que antes hay que cambiar.</translation>
     </message>
 </context>
 <context>
@@ -2101,6 +2345,18 @@ Haga clic para seleccionar este robot: todos los paneles lo muestran</translatio
         <source>Send the changes shown under &quot;Will send&quot;</source>
         <translation>Envía los cambios que aparecen en «Enviará»</translation>
     </message>
+    <message>
+        <source>Dirt Detect</source>
+        <translation>Detección de suciedad</translation>
+    </message>
+    <message>
+        <source>Max</source>
+        <translation>Máx.</translation>
+    </message>
+    <message>
+        <source>Clean</source>
+        <translation>Limpiar</translation>
+    </message>
 </context>
 <context>
     <name>Lesson</name>
@@ -2225,8 +2481,8 @@ Haga clic para seleccionar este robot: todos los paneles lo muestran</translatio
         <translation>Dejarlo en un sitio despejado</translation>
     </message>
     <message>
-        <source>Drive slowly towards the edge of a table or a step, in Safe mode, or lift the front of the robot a little. On the virtual robot, carry it to the stage edge with the button below, then drive forward (Up arrow). When a front sensor loses the floor, the robot sets its cliff flag and, in Safe mode, stops and drops to Passive. A dark rug does the same, though the floor is there: then the signals stay low but well above 0 and no wheel drops. Drive off it in Full mode, or move the robot.</source>
-        <translation>Conduce despacio hacia el borde de una mesa o un escalón, en modo Safe, o levanta un poco la parte delantera del robot. Con el robot virtual, llévalo al borde del escenario con el botón de abajo y conduce hacia delante (flecha arriba). Cuando un sensor delantero pierde el suelo, el robot activa su indicador de desnivel y, en modo Safe, se detiene y pasa a Passive. Una alfombra oscura hace lo mismo, aunque el suelo esté ahí: entonces las señales se quedan bajas pero muy por encima de 0 y ninguna rueda cae. Sal de ella en modo Full o mueve el robot.</translation>
+        <source>Drive slowly towards the edge of a table or a step, in Safe mode, or lift the front of the robot a little. On the virtual robot, carry it to the stage edge with the button below, then drive forward (Up arrow). When a front sensor loses the floor, the robot sets its cliff flag and, in Safe mode, stops and drops to Passive. A dark rug does the same, though the floor is there: then the signals stay low but well above 0 and no wheel drops. Either way, carry the robot back onto a light floor before you drive again.</source>
+        <translation>Conduce despacio hacia el borde de una mesa o un escalón, en modo Safe, o levanta un poco la parte delantera del robot. Con el robot virtual, llévalo al borde del escenario con el botón de abajo y conduce hacia delante (flecha arriba). Cuando un sensor delantero pierde el suelo, el robot activa su indicador de desnivel y, en modo Safe, se detiene y pasa a Passive. Una alfombra oscura hace lo mismo, aunque el suelo esté ahí: entonces las señales se quedan bajas pero muy por encima de 0 y ninguna rueda cae. En ambos casos, lleva el robot a un suelo claro antes de volver a conducir.</translation>
     </message>
     <message>
         <source>Look at the signal behind the flag: over the edge almost no light comes back. The robot stopped, as the yellow line says; leave it in Passive for now and hold it a little further over the edge, so that a front signal stays under 500 for half a second. On the virtual robot, use the button below.</source>
@@ -2306,10 +2562,6 @@ Haga clic para seleccionar este robot: todos los paneles lo muestran</translatio
     <message>
         <source>%1 is not a version this program reads (it reads %2)</source>
         <translation>%1 no es una versión que este programa lea (lee la %2)</translation>
-    </message>
-    <message>
-        <source>%1 is not a robot (roomba500, create2 or create1)</source>
-        <translation>%1 no es un robot (roomba500, create2 o create1)</translation>
     </message>
     <message>
         <source>must be a list of at least one step</source>
@@ -2414,6 +2666,14 @@ Haga clic para seleccionar este robot: todos los paneles lo muestran</translatio
     <message>
         <source>must be true or false</source>
         <translation>debe ser true o false</translation>
+    </message>
+    <message>
+        <source>%1 or %2</source>
+        <translation>%1 o %2</translation>
+    </message>
+    <message>
+        <source>%1 is not a robot (%2)</source>
+        <translation>%1 no es un robot (%2)</translation>
     </message>
 </context>
 <context>
@@ -2608,10 +2868,6 @@ Haga clic para seleccionar este robot: todos los paneles lo muestran</translatio
         <translation>Servidor de datos en vivo: %1 rechazado (%2); Foxglove, Lichtblick y PlotJuggler ofrecen el protocolo correcto</translation>
     </message>
     <message>
-        <source>Live data server: %1. Choose another port in View → Live data server….</source>
-        <translation>Servidor de datos en vivo: %1. Elija otro puerto en Ver → Servidor de datos en vivo….</translation>
-    </message>
-    <message>
         <source>Live data server on %1: connect Foxglove or Lichtblick to it.</source>
         <translation>Servidor de datos en vivo en %1: conecte Foxglove o Lichtblick a él.</translation>
     </message>
@@ -2674,6 +2930,10 @@ Haga clic para seleccionar este robot: todos los paneles lo muestran</translatio
     <message>
         <source>Messages a second per channel:</source>
         <translation>Mensajes por segundo y canal:</translation>
+    </message>
+    <message>
+        <source>Live data server: %1. The robots go on without it; choose another port in View → Live data server….</source>
+        <translation>Servidor de datos en vivo: %1. Los robots siguen sin él; elija otro puerto en Ver → Servidor de datos en vivo….</translation>
     </message>
 </context>
 <context>
@@ -2793,10 +3053,6 @@ GPL-3.0-or-later.</translation>
     <message>
         <source>Typed into “%1”: click the robot diagram or press Esc to drive with the keys</source>
         <translation>Escrito en «%1»: haga clic en el dibujo del robot o pulse Esc para conducir con las teclas</translation>
-    </message>
-    <message>
-        <source>%1: the robot runs its own program, in Passive. Space or Stop all ends it.</source>
-        <translation>%1: el robot ejecuta su propio programa, en modo Passive. La barra espaciadora o «Detener todos» lo termina.</translation>
     </message>
 </context>
 <context>
@@ -3988,6 +4244,13 @@ GPL-3.0-or-later.</translation>
     </message>
 </context>
 <context>
+    <name>RecordingMarkers</name>
+    <message>
+        <source>%1 markers beyond the first %2 were left out: a recording holds at most %2</source>
+        <translation>se omitieron %1 marcas después de las primeras %2: una grabación admite como máximo %2</translation>
+    </message>
+</context>
+<context>
     <name>RemoteRobot</name>
     <message>
         <source>state: &quot;%1&quot; must be a string</source>
@@ -4004,6 +4267,10 @@ GPL-3.0-or-later.</translation>
     <message>
         <source>state: &quot;mode_cause&quot; must be a list of words</source>
         <translation>estado: «mode_cause» debe ser una lista de palabras</translation>
+    </message>
+    <message>
+        <source>state: &quot;battery&quot; must be an object</source>
+        <translation>estado: «battery» debe ser un objeto</translation>
     </message>
 </context>
 <context>
@@ -4101,10 +4368,6 @@ GPL-3.0-or-later.</translation>
     <message>
         <source>Recording of %1</source>
         <translation>Grabación de un %1</translation>
-    </message>
-    <message>
-        <source>not connected</source>
-        <translation>sin conexión</translation>
     </message>
     <message>
         <source>&amp;Stop all robots	Shift+Esc</source>
@@ -4326,6 +4589,133 @@ Doble clic para renombrar</translation>
     </message>
 </context>
 <context>
+    <name>RobotLink</name>
+    <message>
+        <source>%1: no transport for this kind of connection</source>
+        <translation>%1: no hay transporte para este tipo de conexión</translation>
+    </message>
+    <message>
+        <source>%1: the connection ended during the check</source>
+        <translation>%1: la conexión terminó durante la comprobación</translation>
+    </message>
+    <message>
+        <source>%1: switched off at its power button; press it or use Wake (roomba-ctl wake, or Connect again in the dashboard). The link streams again once it is on.</source>
+        <translation>%1: apagado con su botón de encendido; púlselo o use «Despertar» (roomba-ctl wake, o «Conectar» de nuevo en el panel). El enlace vuelve a transmitir cuando esté encendido.</translation>
+    </message>
+    <message>
+        <source>%1: the robot stopped sending and does not answer Start: is it still switched on, is its battery charged, and is the cable in?</source>
+        <translation>%1: el robot dejó de enviar y no responde a Start: ¿sigue encendido, tiene la batería cargada y está el cable conectado?</translation>
+    </message>
+    <message>
+        <source>%1: the robot stopped sending: it is probably asleep (a %2 sleeps after 5 minutes in Passive), and no pulse can wake it here: %3. Press Clean to wake it; the link streams again once it is awake. To wake it from here, wire its BRC pin to the adapter&apos;s RTS or DTR line and set that wake line.</source>
+        <translation>%1: el robot dejó de enviar: probablemente duerme (un %2 se duerme tras 5 minutos en Passive), y aquí ningún pulso puede despertarlo: %3. Pulse Clean para despertarlo; el enlace vuelve a transmitir cuando esté despierto. Para despertarlo desde aquí, conecte su pin BRC a la línea RTS o DTR del adaptador y elija esa línea de despertar.</translation>
+    </message>
+    <message>
+        <source>the port is closed</source>
+        <translation>el puerto está cerrado</translation>
+    </message>
+    <message>
+        <source>%1: the robot is asleep on its dock, and a BRC pulse did not wake it: firmware older than release-3.8.2 (release-stm32-3.7.7) is not woken by a pulse on the dock. Press Clean or lift it off the dock; the link streams again once it is awake.</source>
+        <translation>%1: el robot duerme en su base y un pulso BRC no lo despertó: un firmware anterior a release-3.8.2 (release-stm32-3.7.7) no despierta por un pulso en la base. Pulse Clean o levántelo de la base; el enlace vuelve a transmitir cuando esté despierto.</translation>
+    </message>
+    <message>
+        <source>%1: the robot stopped sending and did not wake when its wake line (%2) was pulsed: it is asleep and the pulse does not reach it. The cable may carry the BRC pin on the other line (set the wake line to DTR, RTS or both; the connection check tries each) or not at all. On its dock, firmware older than release-3.8.2 is not woken by a pulse: press Clean or lift it off the dock; the link streams again once it is awake.</source>
+        <translation>%1: el robot dejó de enviar y no despertó al pulsar su línea de despertar (%2): duerme y el pulso no le llega. Puede que el cable lleve el pin BRC en la otra línea (ponga la línea de despertar en DTR, RTS o ambas; la comprobación de conexión prueba cada una) o que no lo lleve. En su base, un firmware anterior a release-3.8.2 no despierta por un pulso: pulse Clean o levántelo de la base; el enlace vuelve a transmitir cuando esté despierto.</translation>
+    </message>
+    <message>
+        <source>%1: no data: is the robot on, and is the baud right?</source>
+        <translation>%1: sin datos: ¿está encendido el robot y es correcta la velocidad en baudios?</translation>
+    </message>
+    <message>
+        <source>(If it is asleep: %1.)</source>
+        <translation>(Si está dormido: %1.)</translation>
+    </message>
+    <message>
+        <source>no packet fits in a 15 ms frame at %1 baud</source>
+        <translation>ningún paquete cabe en una trama de 15 ms a %1 baudios</translation>
+    </message>
+    <message>
+        <source>%1: cannot stream: %2</source>
+        <translation>%1: no se puede transmitir: %2</translation>
+    </message>
+    <message>
+        <source>not connected: the command was not sent</source>
+        <translation>sin conexión: la orden no se envió</translation>
+    </message>
+    <message>
+        <source>the connection check is running: the command was not sent</source>
+        <translation>la comprobación de la conexión está en curso: no se envió la orden</translation>
+    </message>
+    <message>
+        <source>%1: Reset put the robot back at its default %2 baud, which this connection cannot follow from %3: %4</source>
+        <translation>%1: Reset devolvió el robot a su velocidad por defecto de %2 baudios, que esta conexión no puede seguir desde %3: %4</translation>
+    </message>
+    <message>
+        <source>%1: Reset put the robot back at its default %2 baud: the port now talks at %2 too (it was %3).</source>
+        <translation>%1: Reset devolvió el robot a su velocidad por defecto de %2 baudios: el puerto ahora también habla a %2 (antes, a %3).</translation>
+    </message>
+    <message>
+        <source>Not sent: %1</source>
+        <translation>No enviado: %1</translation>
+    </message>
+    <message>
+        <source>%1: write failed</source>
+        <translation>%1: error de escritura</translation>
+    </message>
+    <message>
+        <source>not connected: the sensor query was not sent</source>
+        <translation>sin conexión: la consulta de sensores no se envió</translation>
+    </message>
+    <message>
+        <source>sensor query: %1 is not a packet or group of the %2</source>
+        <translation>consulta de sensores: %1 no es un paquete ni un grupo del %2</translation>
+    </message>
+    <message>
+        <source>sensor query: ask for 1 to 255 packets</source>
+        <translation>consulta de sensores: pida de 1 a 255 paquetes</translation>
+    </message>
+    <message>
+        <source>sensor query: the %1 has no Query List; ask for one group at a time (0 is every packet)</source>
+        <translation>consulta de sensores: el %1 no tiene Query List; pida un grupo cada vez (0 son todos los paquetes)</translation>
+    </message>
+    <message>
+        <source>not connected: Show Script was not sent</source>
+        <translation>sin conexión: Show Script no se envió</translation>
+    </message>
+    <message>
+        <source>the %1 has no scripts</source>
+        <translation>el %1 no tiene scripts</translation>
+    </message>
+    <message>
+        <source>%1: the stream did not pause; the sensor query was not sent</source>
+        <translation>%1: el flujo de datos no se pausó; la consulta de sensores no se envió</translation>
+    </message>
+    <message>
+        <source>%1: no reply to Show Script</source>
+        <translation>%1: sin respuesta a Show Script</translation>
+    </message>
+    <message>
+        <source>%1: no reply to the sensor query</source>
+        <translation>%1: sin respuesta a la consulta de sensores</translation>
+    </message>
+    <message>
+        <source>not connected: there is nothing to wake</source>
+        <translation>sin conexión: no hay nada que despertar</translation>
+    </message>
+    <message>
+        <source>%1: no pulse can wake the robot here: %2. Press its power button (Clean).</source>
+        <translation>%1: aquí ningún pulso puede despertar al robot: %2. Pulse su botón de encendido (Clean).</translation>
+    </message>
+    <message>
+        <source>not connected: there is nothing to check</source>
+        <translation>sin conexión: no hay nada que comprobar</translation>
+    </message>
+    <message>
+        <source>%1: the port is not open yet</source>
+        <translation>%1: el puerto aún no está abierto</translation>
+    </message>
+</context>
+<context>
     <name>RobotList</name>
     <message>
         <source>Add robot</source>
@@ -4506,12 +4896,52 @@ Doble clic para renombrar</translation>
         <translation>Entra en Passive para cargarlo, o sácalo de la base conduciendo.</translation>
     </message>
     <message>
-        <source>Use Full to drive it off the dock, or lift it off.</source>
-        <translation>Usa Full para sacarlo de la base conduciendo, o levántalo.</translation>
+        <source>Lift it off the dock, or drive it off in Full (Full does not stop at cliffs or wheel drops).</source>
+        <translation>Levántelo de la base, o sáquelo conduciendo en Full (Full no se detiene ante desniveles ni ruedas caídas).</translation>
     </message>
     <message>
-        <source>Carry it back from the edge, then Enter Safe. No edge there? Its cliff signals read %1 of 4095, low but not the near 0 of a drop, and no wheel dropped: a dark rug or floor reads as a cliff. Drive it off in Full, or move it to a lighter floor.</source>
-        <translation>Apártelo del borde y pase a Safe. ¿No hay borde? Sus señales de desnivel leen %1 de 4095, bajas pero no el casi 0 de un desnivel, y ninguna rueda cayó: una alfombra o un suelo oscuro se lee como un desnivel. Sáquelo en modo Full o póngalo en un suelo más claro.</translation>
+        <source>Carry it back from the edge, then Enter Safe. Its cliff signals read %1 of 4095, as over a dark rug: if you can see the floor under it, carry it to a lighter floor, then Enter Safe.</source>
+        <translation>Apártelo del borde y pase a Safe. Sus señales de desnivel leen %1 de 4095, como sobre una alfombra oscura: si ve el suelo debajo, llévelo a un suelo más claro y pase a Safe.</translation>
+    </message>
+    <message>
+        <source>Cleaning (its own program) · Space stops it</source>
+        <translation>Limpiando (su propio programa) · Espacio lo detiene</translation>
+    </message>
+    <message>
+        <source>Seeking its dock (its own program) · Space stops it</source>
+        <translation>Buscando su base (su propio programa) · Espacio lo detiene</translation>
+    </message>
+    <message>
+        <source>Running a demo (its own program) · Space stops it</source>
+        <translation>Ejecutando una demo (su propio programa) · Espacio lo detiene</translation>
+    </message>
+    <message>
+        <source>cleaning</source>
+        <translation>limpiando</translation>
+    </message>
+    <message>
+        <source>seeking its dock</source>
+        <translation>buscando su base</translation>
+    </message>
+    <message>
+        <source>running a demo</source>
+        <translation>ejecutando una demo</translation>
+    </message>
+    <message>
+        <source>the robot is off the floor: Full mode would drive its wheels in your hands</source>
+        <translation>el robot no está en el suelo: en modo Full sus ruedas girarían mientras lo sostiene</translation>
+    </message>
+    <message>
+        <source>battery nearly flat</source>
+        <translation>batería casi agotada</translation>
+    </message>
+    <message>
+        <source>%1 (it fell to Passive at %2).</source>
+        <translation>%1 (pasó a Passive a las %2).</translation>
+    </message>
+    <message>
+        <source>Put it on its dock in Passive to charge it; it drives again once charged.</source>
+        <translation>Póngalo en su base en Passive para cargarlo; volverá a conducir cuando esté cargado.</translation>
     </message>
 </context>
 <context>
@@ -4535,6 +4965,22 @@ Doble clic para renombrar</translation>
     <message>
         <source>This robot reports its mode one too high (Passive as Safe, as some Wi-Fi Roomba 600s do): the true mode is shown from now on, and remembered for this robot.</source>
         <translation>Este robot informa su modo uno más alto (Passive como Safe, como algunos Roomba 600 con Wi-Fi): desde ahora se muestra el modo real y se recuerda para este robot.</translation>
+    </message>
+    <message>
+        <source>Not sent: %1. Put it down on the floor first.</source>
+        <translation>No enviado: %1. Póngalo antes en el suelo.</translation>
+    </message>
+    <message>
+        <source>Motion sent with the %1.</source>
+        <translation>Movimiento enviado con la %1.</translation>
+    </message>
+    <message>
+        <source>Motion stopped: %1. Put it down on the floor first.</source>
+        <translation>Movimiento detenido: %1. Póngalo antes en el suelo.</translation>
+    </message>
+    <message>
+        <source>The charge fell from %1 % to %2 % as the robot guessed it again from its voltage at boot. A pack that reads full on the charger and much lower under load is worn: see Battery in the gauges.</source>
+        <translation>La carga bajó del %1 % al %2 % cuando el robot volvió a estimarla a partir de su tensión al arrancar. Una batería que marca llena en el cargador y mucho menos bajo carga está gastada: vea Batería en los indicadores.</translation>
     </message>
 </context>
 <context>
@@ -4610,6 +5056,34 @@ Doble clic para renombrar</translation>
     <message>
         <source>  REPLAY FINISHED  </source>
         <translation>  REPRODUCCIÓN TERMINADA  </translation>
+    </message>
+    <message>
+        <source>not connected</source>
+        <translation>sin conexión</translation>
+    </message>
+    <message>
+        <source>replay finished</source>
+        <translation>reproducción terminada</translation>
+    </message>
+    <message>
+        <source>replaying</source>
+        <translation>reproduciendo</translation>
+    </message>
+    <message>
+        <source>replay paused</source>
+        <translation>reproducción en pausa</translation>
+    </message>
+    <message>
+        <source>Link: replay finished</source>
+        <translation>Enlace: reproducción terminada</translation>
+    </message>
+    <message>
+        <source>Link: replaying a recording</source>
+        <translation>Enlace: reproduciendo una grabación</translation>
+    </message>
+    <message>
+        <source>%1, %2</source>
+        <translation>%1, %2</translation>
     </message>
 </context>
 <context>
@@ -5241,6 +5715,14 @@ Enviado: %2</translation>
         <source>No script came back: %1</source>
         <translation>No volvió ningún script: %1</translation>
     </message>
+    <message>
+        <source>Uploaded (152): %1 / %2 bytes. Play (153) runs the script; Show Script (154) reads it back.</source>
+        <translation>Subido (152): %1 / %2 bytes. Play (153) ejecuta el script; Show Script (154) lo lee de vuelta.</translation>
+    </message>
+    <message>
+        <source>Play (153) sent. While the script waits (155–158) the Create hears no command, not even a stop; it listens again when the script ends.</source>
+        <translation>Play (153) enviado. Mientras el script espera (155–158), el Create no oye ninguna orden, ni siquiera una parada; vuelve a escuchar cuando el script termina.</translation>
+    </message>
 </context>
 <context>
     <name>SelectedRobotView</name>
@@ -5475,6 +5957,34 @@ Enviado: %2</translation>
         <source>REPLAY FINISHED — the recording has ended</source>
         <translation>REPRODUCCIÓN TERMINADA — la grabación ha terminado</translation>
     </message>
+    <message>
+        <source>%1 mΩ</source>
+        <translation>%1 mΩ</translation>
+    </message>
+    <message>
+        <source>, </source>
+        <translation>, </translation>
+    </message>
+    <message>
+        <source>Measured %1, on an earlier connection.</source>
+        <translation>Medido el %1, en una conexión anterior.</translation>
+    </message>
+    <message>
+        <source>Capacity measured so far: %1.</source>
+        <translation>Capacidad medida hasta ahora: %1.</translation>
+    </message>
+    <message>
+        <source>Pack health</source>
+        <translation>Estado de la batería</translation>
+    </message>
+    <message>
+        <source>%1, estimated from voltage</source>
+        <translation>%1, estimado a partir de la tensión</translation>
+    </message>
+    <message>
+        <source>The robot guessed this charge from its voltage as it booted: until a full charge it is an estimate, and a worn pack&apos;s voltage sags under load, so it reads low.</source>
+        <translation>El robot estimó esta carga a partir de su tensión al arrancar: hasta una carga completa es una estimación, y la tensión de una batería gastada cae bajo carga, así que marca de menos.</translation>
+    </message>
 </context>
 <context>
     <name>SensorHistory</name>
@@ -5592,6 +6102,10 @@ Enviado: %2</translation>
     <message>
         <source>Replay finished</source>
         <translation>Reproducción terminada</translation>
+    </message>
+    <message>
+        <source>Replay, not live</source>
+        <translation>Reproducción, no en vivo</translation>
     </message>
 </context>
 <context>
@@ -5816,8 +6330,8 @@ Enviado: %2</translation>
         <translation>Reproducir</translation>
     </message>
     <message>
-        <source>Play this slot on the robot (141)</source>
-        <translation>Reproduce esta ranura en el robot (141)</translation>
+        <source>Upload this slot&apos;s song and play it on the robot (140, 141)</source>
+        <translation>Sube la canción de esta ranura y la reproduce en el robot (140, 141)</translation>
     </message>
     <message>
         <source>Stop preview</source>
@@ -6018,8 +6532,8 @@ Enviado: %2</translation>
         <translation>%1 rechazado: %2</translation>
     </message>
     <message>
-        <source>%1 sent. Warning: %2</source>
-        <translation>%1 enviado. Advertencia: %2</translation>
+        <source>%1 Warning: %2</source>
+        <translation>%1 Advertencia: %2</translation>
     </message>
     <message>
         <source>%1 sent.</source>
@@ -6133,6 +6647,14 @@ Enviado: %2</translation>
         <source>song slot 4 may not play on some firmware (ERRATA 13)</source>
         <translation>la ranura de canción 4 puede no sonar en algunos firmwares (ERRATA 13)</translation>
     </message>
+    <message>
+        <source>Nothing to play: slot %1 has no notes.</source>
+        <translation>Nada que reproducir: la ranura %1 no tiene notas.</translation>
+    </message>
+    <message>
+        <source>Song %1 as shown: uploaded (140) and played (141).</source>
+        <translation>Canción %1 tal como se ve: subida (140) y reproducida (141).</translation>
+    </message>
 </context>
 <context>
     <name>SongFiles</name>
@@ -6228,12 +6750,16 @@ Mayús+Esc hace lo mismo desde cualquier ventana; Espacio o Esc detiene el robot
         <translation>No se mueve: no llegan datos en vivo del robot, nadie podría verlo moverse. Espere a que envíe datos.</translation>
     </message>
     <message>
-        <source>Not driving: %1 %2</source>
-        <translation>No se mueve: %1 %2</translation>
+        <source>Not driving: %1</source>
+        <translation>No se mueve: %1</translation>
     </message>
     <message>
         <source>Not driving: the robot is in Passive mode and ignores motion. Press Enter Safe to drive.</source>
         <translation>No se mueve: el robot está en modo Passive e ignora el movimiento. Pulse «Pasar a Safe» para conducir.</translation>
+    </message>
+    <message>
+        <source>Not driving: %1. Put it down on the floor to drive.</source>
+        <translation>No se mueve: %1. Póngalo en el suelo para conducir.</translation>
     </message>
 </context>
 <context>
@@ -6402,6 +6928,14 @@ Mayús+Esc hace lo mismo desde cualquier ventana; Espacio o Esc detiene el robot
         <source>It prints its charging status (&quot;%1&quot;): it is on its dock.</source>
         <translation>Escribe su estado de carga (&quot;%1&quot;): está en su base.</translation>
     </message>
+    <message>
+        <source>It answers Sensors 0 but has no packet 35 (OI mode): a Roomba 400 series, which speaks the older SCI (2005).</source>
+        <translation>Responde a Sensors 0 pero no tiene el paquete 35 (modo OI): un Roomba de la serie 400, que habla el SCI, más antiguo (2005).</translation>
+    </message>
+    <message>
+        <source>It printed &quot;%1&quot;: the text a Roomba 400 prints as it starts up, not a charging status.</source>
+        <translation>Escribió &quot;%1&quot;: el texto que escribe un Roomba 400 al arrancar, no un estado de carga.</translation>
+    </message>
 </context>
 <context>
     <name>oilink::ReplayTransport</name>
@@ -6413,104 +6947,8 @@ Mayús+Esc hace lo mismo desde cualquier ventana; Espacio o Esc detiene el robot
 <context>
     <name>oilink::RobotLink</name>
     <message>
-        <source>Not sent: %1</source>
-        <translation>No enviado: %1</translation>
-    </message>
-    <message>
-        <source>%1: no data: is the robot on, and is the baud right?</source>
-        <translation>%1: sin datos: ¿está encendido el robot y es correcta la velocidad en baudios?</translation>
-    </message>
-    <message>
-        <source>no packet fits in a 15 ms frame at %1 baud</source>
-        <translation>ningún paquete cabe en una trama de 15 ms a %1 baudios</translation>
-    </message>
-    <message>
-        <source>%1: cannot stream: %2</source>
-        <translation>%1: no se puede transmitir: %2</translation>
-    </message>
-    <message>
-        <source>not connected: the command was not sent</source>
-        <translation>sin conexión: la orden no se envió</translation>
-    </message>
-    <message>
-        <source>%1: write failed</source>
-        <translation>%1: error de escritura</translation>
-    </message>
-    <message>
-        <source>not connected: the sensor query was not sent</source>
-        <translation>sin conexión: la consulta de sensores no se envió</translation>
-    </message>
-    <message>
-        <source>sensor query: %1 is not a packet or group of the %2</source>
-        <translation>consulta de sensores: %1 no es un paquete ni un grupo del %2</translation>
-    </message>
-    <message>
-        <source>sensor query: ask for 1 to 255 packets</source>
-        <translation>consulta de sensores: pida de 1 a 255 paquetes</translation>
-    </message>
-    <message>
-        <source>%1: the stream did not pause; the sensor query was not sent</source>
-        <translation>%1: el flujo de datos no se pausó; la consulta de sensores no se envió</translation>
-    </message>
-    <message>
-        <source>%1: no reply to the sensor query</source>
-        <translation>%1: sin respuesta a la consulta de sensores</translation>
-    </message>
-    <message>
-        <source>%1: no transport for this kind of connection</source>
-        <translation>%1: no hay transporte para este tipo de conexión</translation>
-    </message>
-    <message>
-        <source>(If it is asleep: %1.)</source>
-        <translation>(Si está dormido: %1.)</translation>
-    </message>
-    <message>
-        <source>not connected: Show Script was not sent</source>
-        <translation>sin conexión: Show Script no se envió</translation>
-    </message>
-    <message>
-        <source>the %1 has no scripts</source>
-        <translation>el %1 no tiene scripts</translation>
-    </message>
-    <message>
-        <source>%1: no reply to Show Script</source>
-        <translation>%1: sin respuesta a Show Script</translation>
-    </message>
-    <message>
-        <source>%1: the connection ended during the check</source>
-        <translation>%1: la conexión terminó durante la comprobación</translation>
-    </message>
-    <message>
-        <source>the connection check is running: the command was not sent</source>
-        <translation>la comprobación de la conexión está en curso: no se envió la orden</translation>
-    </message>
-    <message>
-        <source>not connected: there is nothing to check</source>
-        <translation>sin conexión: no hay nada que comprobar</translation>
-    </message>
-    <message>
-        <source>%1: the port is not open yet</source>
-        <translation>%1: el puerto aún no está abierto</translation>
-    </message>
-    <message>
-        <source>%1: the robot stopped sending and does not answer Start: is it still switched on, is its battery charged, and is the cable in?</source>
-        <translation>%1: el robot dejó de enviar y no responde a Start: ¿sigue encendido, tiene la batería cargada y está el cable conectado?</translation>
-    </message>
-    <message>
-        <source>%1: the robot stopped sending: it is probably asleep (a %2 sleeps after 5 minutes in Passive), and no pulse can wake it here: %3. Press Clean to wake it; the link streams again once it is awake. To wake it from here, wire its BRC pin to the adapter&apos;s RTS or DTR line and set that wake line.</source>
-        <translation>%1: el robot dejó de enviar: probablemente duerme (un %2 se duerme tras 5 minutos en Passive), y aquí ningún pulso puede despertarlo: %3. Pulse Clean para despertarlo; el enlace vuelve a transmitir cuando esté despierto. Para despertarlo desde aquí, conecte su pin BRC a la línea RTS o DTR del adaptador y elija esa línea de despertar.</translation>
-    </message>
-    <message>
-        <source>the port is closed</source>
-        <translation>el puerto está cerrado</translation>
-    </message>
-    <message>
-        <source>%1: the robot is asleep on its dock, and a BRC pulse did not wake it: firmware older than release-3.8.2 (release-stm32-3.7.7) is not woken by a pulse on the dock. Press Clean or lift it off the dock; the link streams again once it is awake.</source>
-        <translation>%1: el robot duerme en su base y un pulso BRC no lo despertó: un firmware anterior a release-3.8.2 (release-stm32-3.7.7) no despierta por un pulso en la base. Pulse Clean o levántelo de la base; el enlace vuelve a transmitir cuando esté despierto.</translation>
-    </message>
-    <message>
-        <source>%1: the robot stopped sending and did not wake when its wake line (%2) was pulsed: it is asleep and the pulse does not reach it. The cable may carry the BRC pin on the other line (set the wake line to DTR, RTS or both; the connection check tries each) or not at all. On its dock, firmware older than release-3.8.2 is not woken by a pulse: press Clean or lift it off the dock; the link streams again once it is awake.</source>
-        <translation>%1: el robot dejó de enviar y no despertó al pulsar su línea de despertar (%2): duerme y el pulso no le llega. Puede que el cable lleve el pin BRC en la otra línea (ponga la línea de despertar en DTR, RTS o ambas; la comprobación de conexión prueba cada una) o que no lo lleve. En su base, un firmware anterior a release-3.8.2 no despierta por un pulso: pulse Clean o levántelo de la base; el enlace vuelve a transmitir cuando esté despierto.</translation>
+        <source>bunched link (frames every %1 s)</source>
+        <translation>enlace a ráfagas (tramas cada %1 s)</translation>
     </message>
 </context>
 <context>
@@ -6530,6 +6968,10 @@ Mayús+Esc hace lo mismo desde cualquier ventana; Espacio o Esc detiene el robot
     <message>
         <source>not connected: there is nothing to check</source>
         <translation>sin conexión: no hay nada que comprobar</translation>
+    </message>
+    <message>
+        <source>not connected: there is nothing to wake</source>
+        <translation>sin conexión: no hay nada que despertar</translation>
     </message>
 </context>
 <context>
@@ -6607,44 +7049,6 @@ Mayús+Esc hace lo mismo desde cualquier ventana; Espacio o Esc detiene el robot
     <message>
         <source>%1: the wake line is set to none, so the cable is taken to have no BRC wire</source>
         <translation>%1: la línea de despertar está en ninguna, así que se toma el cable como sin hilo BRC</translation>
-    </message>
-</context>
-<context>
-    <name>BoundedFile</name>
-    <message>
-        <source>not a regular file but a named pipe</source>
-        <translation>no es un archivo normal, sino una tubería con nombre</translation>
-    </message>
-    <message>
-        <source>not a regular file but a folder</source>
-        <translation>no es un archivo normal, sino una carpeta</translation>
-    </message>
-    <message>
-        <source>not a regular file but a device</source>
-        <translation>no es un archivo normal, sino un dispositivo</translation>
-    </message>
-    <message>
-        <source>not a regular file</source>
-        <translation>no es un archivo normal</translation>
-    </message>
-    <message>
-        <source>%1, larger than the %2 this program reads of such a file</source>
-        <translation>%1, más que los %2 que este programa lee de un archivo así</translation>
-    </message>
-    <message>
-        <source>larger than the %1 this program reads of such a file</source>
-        <translation>más que los %1 que este programa lee de un archivo así</translation>
-    </message>
-    <message>
-        <source>%1 bytes</source>
-        <translation>%1 bytes</translation>
-    </message>
-</context>
-<context>
-    <name>RecordingMarkers</name>
-    <message>
-        <source>%1 markers beyond the first %2 were left out: a recording holds at most %2</source>
-        <translation>se omitieron %1 marcas después de las primeras %2: una grabación admite como máximo %2</translation>
     </message>
 </context>
 </TS>

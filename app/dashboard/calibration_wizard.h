@@ -66,6 +66,8 @@ private:
     void apply();
     void resetToDocumented();
     QString appliedText() const;
+    // A number as typed in the user's language, or as C writes it.
+    static std::optional<double> parseTyped(const QString &text);
     // The typed measurement, or nullopt after showing why it cannot be one.
     std::optional<double> readMeasurement(QLineEdit *edit, double expected, const QString &what, const QString &unit);
 

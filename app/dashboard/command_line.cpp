@@ -78,8 +78,13 @@ QString DashboardCommandLine::usage()
               "those virtual robots) and keeps the saved list for next time. Shift+Esc stops\n"
               "every robot. Without --lang it speaks the language chosen in its View menu,\n"
               "or the system's.\n")
-        .arg(languageCodes())
-        .arg(kMaxVirtualRobots);
+               .arg(languageCodes())
+               .arg(kMaxVirtualRobots)
+           + tr("\n"
+                "  --battery-fade PCT[,PCT...], --battery-resistance MOHM[,MOHM...]\n"
+                "                     with --sim: aged packs, one figure per robot (the last for\n"
+                "                     the rest): the share of its 3000 mAh lost (0 to 90) and its\n"
+                "                     internal resistance (50 to 5000 mΩ; a new pack 250)\n");
 }
 
 DashboardCommandLine DashboardCommandLine::parse(const QStringList &arguments)
@@ -100,8 +105,9 @@ DashboardCommandLine DashboardCommandLine::parse(const QStringList &arguments)
         const QString name = a.startsWith(QLatin1String("--")) ? a.mid(2) : QString();
         const bool wheelOption = a == "--wheel-diameter" || a == "--left-wheel-diameter"
                                  || a == "--right-wheel-diameter" || a == "--wheel-base";
+        const bool batteryOption = a == "--battery-fade" || a == "--battery-resistance";
         const bool takesValue = oilink::RobotAddress::takesValue(name) || a == "--replay" || a == "--record"
-                                || a == "--lang" || wheelOption;
+                                || a == "--lang" || wheelOption || batteryOption;
         if (takesValue && i + 1 >= arguments.size())
             return fail(tr("%1 needs a value; see --help").arg(a));
         const QString value = takesValue ? arguments[++i] : QString();
@@ -145,6 +151,18 @@ DashboardCommandLine DashboardCommandLine::parse(const QStringList &arguments)
             else
                 (a == "--left-wheel-diameter" ? leftWheel : rightWheel) = mm;
             wheelsGiven = true;
+        } else if (batteryOption) {
+            const bool fade = a == "--battery-fade";
+            QList<double> &figures = fade ? line.batteryFadePercent : line.batteryResistanceMohm;
+            figures.clear();
+            for (const QString &part : value.split(QLatin1Char(','))) {
+                bool ok = false;
+                const double x = part.toDouble(&ok);
+                if (!ok || (fade ? x < 0 || x > 90 : x < 50 || x > 5000))
+                    return fail(fade ? tr("--battery-fade: '%1' is not a share from 0 to 90 %").arg(part.left(40))
+                                     : tr("--battery-resistance: '%1' is not a resistance from 50 to 5000 mΩ").arg(part.left(40)));
+                figures << x;
+            }
         } else if (a == "--foxglove") {
             // An optional [ADDRESS:]PORT: --foxglove alone serves on 127.0.0.1:8765.
             line.liveServer = foxglove::ServerAddress();
@@ -165,6 +183,8 @@ DashboardCommandLine DashboardCommandLine::parse(const QStringList &arguments)
     const bool onSim = robot.namesRobot() && robot.settings().transport == oilink::TransportKind::Virtual;
     if (wheelsGiven && !onSim)
         return fail(tr("--wheel-diameter, --left-wheel-diameter, --right-wheel-diameter and --wheel-base go with --sim"));
+    if ((!line.batteryFadePercent.isEmpty() || !line.batteryResistanceMohm.isEmpty()) && !onSim)
+        return fail(tr("--battery-fade and --battery-resistance go with --sim"));
     wheels.leftDiameterMm = leftWheel.value_or(bothWheels);
     wheels.rightDiameterMm = rightWheel.value_or(bothWheels);
     if (!replayPath.isEmpty()) {

@@ -19,6 +19,9 @@ struct DashboardCommandLine {
 
     std::optional<oilink::LinkSettings> connection; // nullopt: the saved robots
     int robotCount = 1; // --sim N: this many virtual robots, in one room
+    // --battery-fade, --battery-resistance: the virtual robots' packs, one
+    // figure per robot (the last goes on for the rest); empty: new packs.
+    QList<double> batteryFadePercent, batteryResistanceMohm;
     QString recordPath; // record the link's bytes from the start
     QString language;   // a code from uiLanguages(); empty: the saved choice
     std::optional<foxglove::ServerAddress> liveServer; // --foxglove: serve the robots live

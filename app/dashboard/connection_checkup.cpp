@@ -38,9 +38,10 @@ ConnectionCheckup::ConnectionCheckup(RobotSession &session, DoctorDetails &detai
             m_details.clear();
             m_checkedThisConnection = false;
         }
-        // A profile named for this port is the answer from now on.
+        // A profile named for this port is the answer from now on, where
+        // the probe alone could not tell it from a lookalike.
         const oilink::LinkSettings &s = m_session.settings();
-        if (state == oilink::LinkState::Streaming && s.profile && *s.profile != oi::ProfileId::Create1
+        if (state == oilink::LinkState::Streaming && s.profile && oi::profile(*s.profile).hasLookalike()
             && (s.transport == oilink::TransportKind::Serial || s.transport == oilink::TransportKind::Tcp))
             rememberProfile(s, *s.profile);
     });

@@ -32,6 +32,15 @@ QStringList ConnectionNextSteps::forSerialPort(const QString &path)
     return steps;
 }
 
+QString ConnectionNextSteps::forLinkError(const oilink::LinkSettings &settings, const QString &error)
+{
+    if (settings.transport != oilink::TransportKind::Serial || QFileInfo::exists(settings.portPath))
+        return error;
+    QStringList shown{error.endsWith(QLatin1Char('.')) ? error : error + QLatin1Char('.')};
+    shown << forSerialPort(settings.portPath);
+    return shown.join(QLatin1Char(' '));
+}
+
 QStringList ConnectionNextSteps::forReport(const oilink::LinkSettings &settings, const oilink::ConnectionDoctor::Report &report)
 {
     using F = oilink::ConnectionDoctor::Finding;

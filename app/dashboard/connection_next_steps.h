@@ -14,6 +14,10 @@ class ConnectionNextSteps {
     Q_DECLARE_TR_FUNCTIONS(ConnectionNextSteps)
 public:
     static QStringList forReport(const oilink::LinkSettings &settings, const oilink::ConnectionDoctor::Report &report);
+    // A link's error as shown: one about a serial port that is not there
+    // gets the ports this computer has ("/dev/ttyUSB0: no such port. The
+    // serial ports on this computer: /dev/ttyUSB1. Choose one …").
+    static QString forLinkError(const oilink::LinkSettings &settings, const QString &error);
 
 private:
     static QStringList forSerialPort(const QString &path);

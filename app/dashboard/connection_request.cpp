@@ -9,7 +9,7 @@ oilink::LinkSettings linkSettingsFor(const ConnectionRequest &r)
     oilink::LinkSettings s;
     switch (r.transport) {
     case T::Virtual:
-        s = oilink::LinkSettings::virtualRobotOf(r.profile.value_or(oi::ProfileId::Create2), r.profile);
+        s = oilink::LinkSettings::virtualRobotOf(r.profile.value_or(oilink::LinkSettings::kAutoVirtualRobot), r.profile);
         break;
     case T::Serial:
         s = oilink::LinkSettings::serial(r.portPath, r.profile, r.baud);
@@ -47,7 +47,7 @@ ConnectionRequest requestFor(const oilink::LinkSettings &s)
     case oilink::TransportKind::Virtual:
         r.transport = T::Virtual;
         // Auto on the virtual robot plays a Create 2 (see linkSettingsFor).
-        if (!s.profile && s.virtualRobot != oi::ProfileId::Create2)
+        if (!s.profile && s.virtualRobot != oilink::LinkSettings::kAutoVirtualRobot)
             r.profile = s.virtualRobot;
         break;
     case oilink::TransportKind::Replay:

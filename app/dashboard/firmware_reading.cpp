@@ -30,8 +30,8 @@ void FirmwareReading::read()
         return;
     const QString question =
         tr("The firmware version is printed only when the robot starts up, so %1 will be reset (Reset, opcode 7): "
-           "it stops, leaves its mode and reboots as if its battery had been taken out. Put it back in Safe or "
-           "Full mode afterwards if you were driving it.\n\nReset %1 now?")
+           "it stops, leaves its mode and reboots as if its battery had been taken out. Enter Safe again "
+           "afterwards if you were driving it.\n\nReset %1 now?")
             .arg(robot->name());
     if (!m_confirm(m_dialogParent, question))
         return;

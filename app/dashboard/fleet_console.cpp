@@ -6,6 +6,9 @@
 #include "robot_fleet.h"
 #include "robot_mode.h"
 #include "robot_session.h"
+#include "robot_status_bar.h"
+
+#include <QTime>
 
 #include <cmath>
 #include <utility>
@@ -41,16 +44,29 @@ FleetConsole::FleetConsole(RobotFleet &fleet, FleetView &view, QObject *parent)
         emit message(text);
     });
     connect(&m_directory, &FleetDirectory::connectionChanged, this, [this](bool connected) {
-        if (!connected)
+        if (!connected) {
+            // Said at once; what to check follows when it has not come back (MqttClient::kNoAnswerMs).
+            if (m_directory.hasBroker() && m_lostAt.isNull())
+                m_lostAt = QTime::currentTime();
             return;
+        }
+        m_lostAt = {};
         m_brokerProblem.clear();
         for (const QString &text : std::exchange(m_saidWhileDown, {}))
             emit messageWithdrawn(text);
     });
     connect(&m_directory, &FleetDirectory::loginRefused, this,
             [this](const QString &text) { emit loginRefused(m_directory.broker(), text); });
+    connect(&m_directory, &FleetDirectory::bridgeLost, this, [this](const QString &name) {
+        if (const RemoteRobot *robot = m_directory.robot(name))
+            emit message(FleetTile::bridgeLostText(tileValues(name, *robot)));
+        refresh();
+    });
     connect(&m_view, &FleetView::robotClicked, this, &FleetConsole::select);
     connect(&m_fleet, &RobotFleet::stoppedAll, &m_directory, &FleetDirectory::stopAll);
+    connect(&m_fleet, &RobotFleet::stoppedAll, this, &FleetConsole::reportStopAll);
+    // The window's own robots change without the broker: the view follows them too.
+    m_refresh.start();
     connect(&m_fleet, &RobotFleet::selectionChanged, this, &FleetConsole::showSelection);
     refresh();
 }
@@ -58,6 +74,7 @@ FleetConsole::FleetConsole(RobotFleet &fleet, FleetView &view, QObject *parent)
 bool FleetConsole::connectToBroker(const mqtt::BrokerAddress &address)
 {
     m_brokerProblem.clear();
+    m_lostAt = {};
     const bool ok = m_directory.connectToBroker(address);
     m_refresh.start();
     refresh();
@@ -67,8 +84,57 @@ bool FleetConsole::connectToBroker(const mqtt::BrokerAddress &address)
 void FleetConsole::disconnectFromBroker()
 {
     m_directory.disconnectFromBroker();
-    m_refresh.stop();
     refresh();
+}
+
+QList<RobotSession *> FleetConsole::ownRobots() const
+{
+    QList<RobotSession *> own;
+    for (RobotSession *r : m_fleet.robots())
+        if (r->settings().transport != oilink::TransportKind::Network)
+            own << r;
+    return own;
+}
+
+FleetTileValues FleetConsole::tileValues(const RobotSession &robot)
+{
+    FleetTileValues v;
+    v.name = robot.name();
+    v.online = robot.isConnected();
+    if (robot.isConnected() && robot.mode().reported()) {
+        v.mode = oitext::modeName(*robot.mode().reported());
+        v.modeReason = robot.mode().shortReason();
+    }
+    const oi::SensorSnapshot &p = robot.latest();
+    if (robot.snapshotCount() > 0)
+        if (const auto percent = p.batteryPercent())
+            v.batteryPercent = int(std::lround(*percent));
+    v.bumpRight = p.bumpRight();
+    v.bumpLeft = p.bumpLeft();
+    v.wheelDrop = p.wheelDropLeft() || p.wheelDropRight() || p.wheelDropCaster();
+    for (oi::CliffSensor c : {oi::CliffSensor::Left, oi::CliffSensor::FrontLeft, oi::CliffSensor::FrontRight,
+                              oi::CliffSensor::Right})
+        v.cliffs += p.cliff(c) ? 1 : 0;
+    v.link = RobotStatusBar::linkText(robot);
+    v.linkHealthy = robot.isLive();
+    if (robot.isLive())
+        v.framesPerSecond = int(std::lround(robot.statistics().framesPerSecond));
+    v.controller = tr("this window");
+    return v;
+}
+
+void FleetConsole::reportStopAll()
+{
+    int robots = 0;
+    for (const RobotSession *r : ownRobots())
+        robots += r->isConnected() ? 1 : 0;
+    if (m_directory.isConnected())
+        robots += int(m_directory.names().size());
+    const QString at = QTime::currentTime().toString(QStringLiteral("HH:mm"));
+    const QString text = robots == 1 ? tr("Stopped the robot at %1").arg(at)
+                                     : tr("Stopped all %1 robots at %2").arg(robots).arg(at);
+    m_view.setStopReport(text);
+    emit message(text);
 }
 
 FleetTileValues FleetConsole::tileValues(const QString &name, const RemoteRobot &robot, bool brokerReachable)
@@ -85,6 +151,9 @@ FleetTileValues FleetConsole::tileValues(const QString &name, const RemoteRobot 
     v.modeReason = s.modeCause.isEmpty() ? s.modeReason : RobotMode::shortReasonOf(s.modeCause);
     if (s.batteryPercent >= 0)
         v.batteryPercent = int(std::lround(s.batteryPercent));
+    v.packCondition = BatteryHealth::conditionOfKey(s.batteryCondition).value_or(BatteryCondition::Unknown);
+    if (s.batteryCapacityMah > 0)
+        v.packCapacityMah = int(std::lround(s.batteryCapacityMah));
     const oi::SensorSnapshot &p = robot.latest;
     // Packet 7: bit 0 right bump, bit 1 left bump, bits 2.. wheel drops.
     v.bumpRight = p.raw(7) & 0x01;
@@ -98,25 +167,41 @@ FleetTileValues FleetConsole::tileValues(const QString &name, const RemoteRobot 
         v.framesPerSecond = int(std::lround(robot.stats.framesPerSecond));
     v.controller = s.controller;
     v.program = s.program;
+    if (!s.online && robot.bridgeLoss) {
+        v.bridgeLostAt = robot.bridgeLoss->at.time();
+        v.cutOffController = robot.bridgeLoss->controller;
+        v.cutOffProgram = robot.bridgeLoss->program;
+        v.mayBeMoving = robot.bridgeLoss->mayBeMoving;
+    }
     return v;
+}
+
+QString FleetConsole::brokerLine() const
+{
+    if (!m_directory.hasBroker())
+        return {};
+    const QString url = m_directory.broker().displayUrl();
+    if (m_directory.isConnected())
+        return tr("%1 · robots: %2 · speaking as %3").arg(url).arg(m_directory.names().size()).arg(m_directory.clientName());
+    if (!m_brokerProblem.isEmpty())
+        return tr("%1 · not connected: %2").arg(url, m_brokerProblem);
+    if (m_lostAt.isValid())
+        return tr("%1 · connection lost at %2, trying again…").arg(url, m_lostAt.toString(QStringLiteral("HH:mm:ss")));
+    return tr("%1 · connecting…").arg(url);
 }
 
 void FleetConsole::refresh()
 {
-    if (m_directory.hasBroker())
-        m_view.setBrokerText(m_directory.isConnected()
-                                 ? tr("%1 · robots: %2 · speaking as %3")
-                                       .arg(m_directory.broker().displayUrl())
-                                       .arg(m_directory.names().size())
-                                       .arg(m_directory.clientName())
-                                 : m_brokerProblem.isEmpty()
-                                     ? tr("%1 · connecting…").arg(m_directory.broker().displayUrl())
-                                     : tr("%1 · not connected: %2").arg(m_directory.broker().displayUrl(), m_brokerProblem),
-                             m_directory.isConnected());
-    else
-        m_view.setBrokerText({}, false);
+    m_view.setBrokerText(brokerLine(), m_directory.isConnected());
     QList<FleetTileValues> tiles;
-    tiles.reserve(m_directory.names().size());
+    QStringList own;
+    for (const RobotSession *r : ownRobots()) {
+        tiles << tileValues(*r);
+        own << r->name();
+    }
+    for (const QString &gone : std::exchange(m_ownShown, own))
+        if (!own.contains(gone) && !m_directory.names().contains(gone))
+            m_view.removeTile(gone);
     for (const QString &name : m_directory.names())
         tiles << tileValues(name, *m_directory.robot(name), !m_directory.hasBroker() || m_directory.isConnected());
     m_view.setTiles(tiles);
@@ -135,6 +220,12 @@ RobotSession *FleetConsole::robotFor(const QString &name)
 
 void FleetConsole::select(const QString &name)
 {
+    for (RobotSession *own : ownRobots())
+        if (own->name() == name) {
+            m_fleet.select(own);
+            showSelection();
+            return;
+        }
     if (RobotSession *robot = robotFor(name))
         m_fleet.select(robot);
     showSelection();
@@ -143,9 +234,10 @@ void FleetConsole::select(const QString &name)
 void FleetConsole::showSelection()
 {
     const RobotSession *selected = m_fleet.selected();
-    m_view.setSelected(selected && selected->settings().transport == oilink::TransportKind::Network
+    m_view.setSelected(!selected ? QString()
+                       : selected->settings().transport == oilink::TransportKind::Network
                            ? selected->settings().networkRobot
-                           : QString());
+                           : selected->name());
 }
 
 #include "moc_fleet_console.cpp"

@@ -5,6 +5,7 @@
 #include "fleet_tile.h"
 
 #include <QObject>
+#include <QTime>
 #include <QTimer>
 
 class FleetView;
@@ -34,6 +35,8 @@ public:
     // While the broker is out of reach, it says so instead of what the
     // robot last said about its link: the robot is probably fine.
     static FleetTileValues tileValues(const QString &name, const RemoteRobot &robot, bool brokerReachable = true);
+    // What a tile shows of one of this window's own robots (not on the broker).
+    static FleetTileValues tileValues(const RobotSession &robot);
 
     void refresh(); // what the timer does
 
@@ -47,12 +50,20 @@ signals:
     void loginRefused(const mqtt::BrokerAddress &address, const QString &message);
 
 private:
+    // The fleet view's broker line: where, and whether connected or why not.
+    QString brokerLine() const;
     void showSelection();
+    // This window's robots that are not the broker's: shown beside them.
+    QList<RobotSession *> ownRobots() const;
+    // Said on the fleet view and in the status bar: how many robots Stop all reached, and when.
+    void reportStopAll();
 
     RobotFleet &m_fleet;
     FleetView &m_view;
     FleetDirectory m_directory;
     QTimer m_refresh;
     QString m_brokerProblem; // the last word on why the broker is not connected
+    QTime m_lostAt;          // when the connection to the broker was lost; null: connected, or never was
     QStringList m_saidWhileDown; // what message() said of it, forgotten once connected
+    QStringList m_ownShown;      // the names of the window's own robots on the view
 };

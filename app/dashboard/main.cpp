@@ -80,6 +80,7 @@ int main(int argc, char **argv)
         window.showMaximized();
     else
         window.show();
+    window.setVirtualPacks(line.batteryFadePercent, line.batteryResistanceMohm);
     window.start(line.connection, line.robotCount);
     if (!line.recordPath.isEmpty())
         window.startRecording(line.recordPath);

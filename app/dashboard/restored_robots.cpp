@@ -19,7 +19,7 @@ std::optional<oilink::LinkSettings> singleSavedConnection(const QSettings &s)
     r.host = s.value("connection/host").toString();
     r.tcpPort = quint16(s.value("connection/tcpPort", 0).toUInt());
     const int profile = s.value("connection/profile", -1).toInt();
-    if (profile >= 0 && profile <= int(oi::ProfileId::Create1))
+    if (oi::isProfileId(profile))
         r.profile = oi::ProfileId(profile);
     r.baud = s.value("connection/baud", 0).toInt();
     return connection::linkSettingsFor(r);

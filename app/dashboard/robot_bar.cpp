@@ -74,7 +74,7 @@ void RobotBar::refresh()
         c.live = robot->isLive();
         if (robot->isReplay())
             c.profile = tr("Recording of %1").arg(c.profile);
-        if (robot->mode().reported()) {
+        if (robot->isConnected() && robot->mode().reported()) {
             c.mode = oitext::modeName(*robot->mode().reported());
             if (const QString why = robot->mode().shortReason(); !why.isEmpty())
                 c.mode = tr("%1: %2").arg(c.mode, why);
@@ -83,7 +83,7 @@ void RobotBar::refresh()
             if (const auto percent = robot->latest().batteryPercent())
                 c.batteryPercent = int(std::lround(*percent));
         }
-        c.link = robot->isConnected() ? RobotStatusBar::linkStateText(robot->state()) : tr("not connected");
+        c.link = RobotStatusBar::linkText(*robot);
         cards << c;
     }
     m_list->setCards(cards);

@@ -8,16 +8,24 @@
 
 #include <QDir>
 #include <QFileInfo>
+#include <QHBoxLayout>
 #include <QLabel>
 #include <QStatusBar>
 
 RobotStatusBar::RobotStatusBar(QStatusBar *bar) : QObject(bar), m_bar(bar)
 {
-    auto label = [this](const char *name) {
-        auto *l = new QLabel(m_bar);
+    // The right-hand labels in one widget, which a long message can hide.
+    m_linkLabels = new QWidget(m_bar);
+    m_linkLabels->setObjectName("linkLabels");
+    auto *row = new QHBoxLayout(m_linkLabels);
+    row->setContentsMargins(0, 0, 0, 0);
+    row->setSpacing(12);
+    m_bar->addPermanentWidget(m_linkLabels);
+    auto label = [this, row](const char *name) {
+        auto *l = new QLabel(m_linkLabels);
         l->setObjectName(name);
         l->setTextFormat(Qt::PlainText); // names of files and robots, as written
-        m_bar->addPermanentWidget(l);
+        row->addWidget(l);
         return l;
     };
     m_robot = new QLabel(m_bar);
@@ -45,11 +53,27 @@ RobotStatusBar::RobotStatusBar(QStatusBar *bar) : QObject(bar), m_bar(bar)
     m_recording->setVisible(false);
     m_recording->setStyleSheet(QString("QLabel { color: %1; font-weight: bold; }")
                                    .arg(display::stateColor(alert, m_bar->palette()).name()));
+    connect(m_bar, &QStatusBar::messageChanged, this, &RobotStatusBar::showLeftLabels);
+}
+
+void RobotStatusBar::showLeftLabels()
+{
+    const QString text = m_bar->currentMessage();
+    const bool message = !text.isEmpty();
+    m_robot->setVisible(m_nameRobot && !message);
+    m_stale->setVisible(m_showStale && !message);
+    m_modeReason->setVisible(!m_modeReason->text().isEmpty() && !message);
+    // QStatusBar cuts a message off where the right-hand labels begin, mid
+    // word and against their text: one too long for that space has the
+    // whole bar while it is up.
+    const int beside = m_bar->width() - m_linkLabels->sizeHint().width() - kMessageRoom;
+    m_linkLabels->setVisible(!message || m_bar->fontMetrics().horizontalAdvance(text) <= beside);
 }
 
 void RobotStatusBar::showRobot(const RobotSession &robot, bool nameIt)
 {
-    m_robot->setVisible(nameIt);
+    m_nameRobot = nameIt;
+    showLeftLabels();
     m_robot->setText(robot.name());
     m_robot->setStyleSheet(QString("QLabel { border-left: 8px solid %1; padding-left: 4px; font-weight: bold; }")
                                .arg(robot.colour().name()));
@@ -76,10 +100,23 @@ QString RobotStatusBar::linkStateText(oilink::LinkState state)
     return QString();
 }
 
+QString RobotStatusBar::linkText(const RobotSession &robot)
+{
+    if (!robot.isConnected())
+        return tr("not connected");
+    if (robot.isReplay())
+        return robot.replay().finished  ? tr("replay finished")
+               : robot.replay().playing ? tr("replaying")
+                                        : tr("replay paused");
+    return linkStateText(robot.state());
+}
+
 void RobotStatusBar::showState(oilink::LinkState state)
 {
     m_shownState = state;
-    m_state->setText(tr("Link: %1").arg(linkStateText(state)));
+    m_state->setText(m_replayEnded ? tr("Link: replay finished")
+                     : m_replay    ? tr("Link: replaying a recording")
+                                   : tr("Link: %1").arg(linkStateText(state)));
     showRate();
 }
 
@@ -99,8 +136,12 @@ void RobotStatusBar::showRate()
 {
     const oilink::LinkStats &stats = m_shownStats;
     m_rate->setVisible(m_shownState == oilink::LinkState::Streaming || m_shownState == oilink::LinkState::Stale);
-    setLiveText(m_rate, m_overNetwork ? tr("%1 messages/s from the bridge").arg(stats.framesPerSecond, 0, 'f', 1)
-                                  : tr("%1 frames/s").arg(stats.framesPerSecond, 0, 'f', 1));
+    QString rate = m_overNetwork ? tr("%1 messages/s from the bridge").arg(stats.framesPerSecond, 0, 'f', 1)
+                                 : tr("%1 frames/s").arg(stats.framesPerSecond, 0, 'f', 1);
+    // Frames on time but in bunches (a Bluetooth adapter, a Wi-Fi bridge): said, not shown as stale.
+    if (const QString bunched = oilink::bunchedLinkText(stats); !bunched.isEmpty())
+        rate = tr("%1, %2").arg(rate, bunched);
+    setLiveText(m_rate, rate);
     m_rate->setToolTip(m_overNetwork ? tr("Telemetry messages from the robot's bridge, which sends only what changed. "
                                           "The robot's own frame rate is on its tile in the fleet view.")
                                      : QString());
@@ -143,7 +184,9 @@ void RobotStatusBar::showLive(bool live, bool replay, bool replayEnded)
     m_stale->setText(m_replayEnded ? tr("  REPLAY FINISHED  ")
                      : replay      ? tr("  REPLAY, NOT LIVE  ")
                                    : tr("  NO LIVE DATA  "));
-    m_stale->setVisible(!live || replay);
+    m_showStale = !live || replay;
+    showLeftLabels();
+    showState(m_shownState);
 }
 
 void RobotStatusBar::retranslate()
@@ -158,14 +201,16 @@ void RobotStatusBar::retranslate()
 void RobotStatusBar::showModeReason(const QString &reason)
 {
     m_modeReason->setText(reason);
-    m_modeReason->setVisible(!reason.isEmpty());
+    showLeftLabels();
 }
 
 QString RobotStatusBar::text() const
 {
     QStringList parts;
-    for (QLabel *l : {m_robot, m_stale, m_modeReason})
-        if (!l->isHidden() && !l->text().trimmed().isEmpty())
+    // The left labels as they show once any temporary message is gone.
+    for (auto [l, shown] : {std::pair{m_robot, m_nameRobot}, std::pair{m_stale, m_showStale},
+                            std::pair{m_modeReason, true}})
+        if (shown && !l->text().trimmed().isEmpty())
             parts << l->text().trimmed();
     for (QLabel *l : {m_state, m_profile, m_firmware, m_rate, m_errors})
         if (!l->isHidden() && !l->text().isEmpty())

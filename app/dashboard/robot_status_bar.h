@@ -8,6 +8,7 @@
 
 class QLabel;
 class QStatusBar;
+class QWidget;
 class RobotSession;
 
 // The status bar's view of the selected robot: which robot it is, the link,
@@ -37,13 +38,24 @@ public:
     QString text() const;
     // "streaming", "lost", ...
     static QString linkStateText(oilink::LinkState state);
+    // What a robot's card says of its link: its state, or where its replay
+    // is (a replay that pauses or ends is not a stale robot).
+    static QString linkText(const RobotSession &robot);
     // "Create 2", or "Roomba 500 or Create 2? (not yet identified)".
     static QString profileText(const RobotSession &robot);
 
 private:
     void showRate();
+    // One message at a time: while a temporary message (showMessage()) is
+    // up, the labels it would be painted over are hidden, and come back after.
+    void showLeftLabels();
+
+    // Beside a message: QStatusBar's margins and gaps, and a space before
+    // the right-hand labels.
+    static constexpr int kMessageRoom = 40;
 
     QStatusBar *m_bar;
+    QWidget *m_linkLabels = nullptr; // the labels from linkState on, at the right
     QLabel *m_robot = nullptr;
     QLabel *m_stale = nullptr;
     QLabel *m_modeReason = nullptr;
@@ -62,4 +74,6 @@ private:
     bool m_live = false;
     bool m_replay = false;
     bool m_replayEnded = false;
+    bool m_nameRobot = false; // the left labels as they show without a message
+    bool m_showStale = false;
 };

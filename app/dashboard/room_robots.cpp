@@ -2,6 +2,7 @@
 #include "room_robots.h"
 
 #include "lesson.h"
+#include "lesson_step_view.h"
 #include "odometry_map.h"
 #include "robot_fleet.h"
 #include "robot_session.h"
@@ -68,6 +69,12 @@ void RoomRobots::carry(const RobotSession *robot, const LessonPlacement &placeme
         m_room->moveRobot(place, lesson::placedPose(placement, where->pose));
     if (placement.lift)
         m_room->setLifted(place, *placement.lift);
+}
+
+void RoomRobots::carryAsked(LessonStepView *step)
+{
+    connect(step, &LessonStepView::placementRequested, this,
+            [this](const LessonPlacement &placement) { carry(m_fleet.selected(), placement); });
 }
 
 void RoomRobots::showOn(OdometryMap &map, const RobotSession *selectedRobot)

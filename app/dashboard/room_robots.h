@@ -22,6 +22,8 @@ class RobotSession;
 // The window's virtual robots in the room they share: each robot's place
 // in it, the transports that put a virtual robot there (and every other
 // kind the window knows), and the room as the map shows it.
+class LessonStepView;
+
 class RoomRobots : public QObject {
     Q_OBJECT
 public:
@@ -40,6 +42,9 @@ public:
     // A lesson step's hand on a virtual robot: carried, held or lifted as
     // it says. Nothing for a robot that is not virtual.
     void carry(const RobotSession *robot, const LessonPlacement &placement);
+    // A lesson step's button does what a hand would, on the selected robot,
+    // from the panel or the projector.
+    void carryAsked(LessonStepView *step);
     // The floor and every virtual robot in it, in its robot's colour, the
     // selected one highlighted; nothing for a robot that is not virtual.
     void showOn(OdometryMap &map, const RobotSession *selected);

@@ -40,6 +40,7 @@ const QStringList &BridgeConfig::keys()
         QStringLiteral("allow-schedule"), QStringLiteral("brc-line"),  QStringLiteral("baud"),
         QStringLiteral("foxglove"), QStringLiteral("foxglove-rate"),
         QStringLiteral("room"),     QStringLiteral("record"),
+        QStringLiteral("battery-fade"), QStringLiteral("battery-resistance"), QStringLiteral("battery-charge"),
     };
     return k;
 }
@@ -185,6 +186,24 @@ std::optional<BridgeConfig> BridgeConfig::fromSettings(const QList<Setting> &set
     }
     if (has("record"))
         c.recordFile = value("record");
+    // The virtual robot's pack: its fade (%), resistance (mΩ) and starting charge (%).
+    const struct {
+        const char *key;
+        double low, high;
+        double *figure;
+    } pack[] = {{"battery-fade", 0, 90, &c.link.virtualBatteryFadePercent},
+                {"battery-resistance", 50, 5000, &c.link.virtualBatteryResistanceMohm},
+                {"battery-charge", 0, 100, &c.link.virtualBatteryChargePercent}};
+    for (const auto &p : pack) {
+        if (!has(p.key))
+            continue;
+        if (!onSim)
+            return fail(QLatin1String(p.key), QStringLiteral("only the virtual robot (sim) has a pack to age"));
+        bool ok = false;
+        *p.figure = value(p.key).toDouble(&ok);
+        if (!ok || !(*p.figure >= p.low && *p.figure <= p.high))
+            return fail(QLatin1String(p.key), QStringLiteral("'%1' is not a figure from %2 to %3").arg(value(p.key)).arg(p.low).arg(p.high));
+    }
 
     if (has("rate")) {
         bool ok = false;

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include "classroom_protocol.h"
 #include "link_clock.h"
 
 #include <QHash>
@@ -17,7 +18,7 @@
 class ControlLease : public QObject {
     Q_OBJECT
 public:
-    static constexpr int kHeartbeatTimeoutMs = 300;
+    static constexpr int kHeartbeatTimeoutMs = classroom::kLeaseMs;
 
     // The lease's times are `clock`'s (which the MQTT network thread also
     // reads, to time messages as they arrive).
@@ -34,7 +35,7 @@ public:
     // second for the two clocks' drift, and is kept per client from one
     // control to the next; a heartbeat never counts later than its arrival. So a heartbeat that waited behind a flood or a huge
     // message in the broker's queue counts from when it was sent, and the
-    // lease ends 300 ms after the holder's last heartbeat left it.
+    // lease ends kHeartbeatTimeoutMs after the holder's last heartbeat left it.
     struct Beat {
         std::optional<qint64> arrivedMs;
         std::optional<qint64> sentMs;

@@ -1,60 +1,79 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "goal_command.h"
 
+#include "classroom_protocol.h"
+
 #include <QStringList>
 
 #include <cmath>
 
 namespace {
 
-struct Field {
-    const char *name;
-    double *value;
-    double min, max;
-    const char *unit;
-};
-
 QString number(double v) { return QString::number(v, 'g', 6); }
+QString text(std::string_view s) { return QString::fromUtf8(s.data(), qsizetype(s.size())); }
 
-bool readFields(const mqtt::CommandMessage &m, std::initializer_list<Field> fields, QString *error)
+// Where each of the table's fields goes in a goal.
+constexpr double MotionGoal::*memberFor(std::string_view field)
+{
+    if (field == "distance")
+        return &MotionGoal::distanceMm;
+    if (field == "speed")
+        return &MotionGoal::speedMmPerS;
+    if (field == "angle")
+        return &MotionGoal::angleDeg;
+    if (field == "rate")
+        return &MotionGoal::rateDegPerS;
+    if (field == "radius")
+        return &MotionGoal::radiusMm;
+    return nullptr;
+}
+
+consteval bool everyFieldHasAMember()
+{
+    for (const classroom::GoalCommand &row : classroom::kGoalCommands)
+        for (const classroom::GoalField &f : row.fields)
+            if (!memberFor(f.field))
+                return false;
+    return true;
+}
+static_assert(everyFieldHasAMember(), "a goal field of classroom_protocol.json has no place in MotionGoal");
+
+bool readFields(const mqtt::CommandMessage &m, const classroom::GoalCommand &row, MotionGoal &goal, QString *error)
 {
     QStringList names;
-    for (const Field &f : fields)
-        names << QLatin1String(f.name);
+    for (const classroom::GoalField &f : row.fields)
+        names << text(f.field);
     for (auto it = m.fields.begin(); it != m.fields.end(); ++it)
         if (!names.contains(it.key())) {
             *error = QStringLiteral("%1 has no field \"%2\": its fields are %3")
                          .arg(m.command, it.key().left(40), names.join(QLatin1String(", ")));
             return false;
         }
-    for (const Field &f : fields) {
-        const QJsonValue v = m.fields.value(QLatin1String(f.name));
+    for (const classroom::GoalField &f : row.fields) {
+        const QJsonValue v = m.fields.value(text(f.field));
         if (v.isUndefined()) {
             *error = QStringLiteral("%1 needs \"%2\" in \"fields\": its fields are %3")
-                         .arg(m.command, QLatin1String(f.name), names.join(QLatin1String(", ")));
+                         .arg(m.command, text(f.field), names.join(QLatin1String(", ")));
             return false;
         }
         if (!v.isDouble() || !std::isfinite(v.toDouble())) {
-            *error = QStringLiteral("\"%1\" must be a number").arg(QLatin1String(f.name));
+            *error = QStringLiteral("\"%1\" must be a number").arg(text(f.field));
             return false;
         }
         const double d = v.toDouble();
         if (d < f.min || d > f.max) {
             *error = QStringLiteral("%1: %2 is outside %3..%4 %5")
-                         .arg(QLatin1String(f.name), number(d), number(f.min), number(f.max), QLatin1String(f.unit));
+                         .arg(text(f.field), number(d), number(f.min), number(f.max), text(f.unit));
             return false;
         }
-        *f.value = d;
+        goal.*memberFor(f.field) = d;
     }
     return true;
 }
 
 } // namespace
 
-bool isGoalCommand(const QString &name)
-{
-    return name == QLatin1String("straight") || name == QLatin1String("turn") || name == QLatin1String("arc");
-}
+bool isGoalCommand(const QString &name) { return classroom::goalCommand(name.toStdString()) != nullptr; }
 
 std::optional<MotionGoal> goalFromMessage(const mqtt::CommandMessage &m, QString *error)
 {
@@ -67,29 +86,17 @@ std::optional<MotionGoal> goalFromMessage(const mqtt::CommandMessage &m, QString
                      : QStringLiteral("%1 has no \"data\": only song, stream, query-list and script do").arg(m.command);
         return std::nullopt;
     }
-    G goal;
-    if (m.command == QLatin1String("straight")) {
-        goal.kind = G::Kind::Straight;
-        if (!readFields(m, {{"distance", &goal.distanceMm, -G::kMaxDistanceMm, G::kMaxDistanceMm, "mm"},
-                            {"speed", &goal.speedMmPerS, G::kMinSpeedMmPerS, G::kMaxWheelSpeedMmPerS, "mm/s"}},
-                        error))
-            return std::nullopt;
-        return goal;
-    }
-    if (m.command == QLatin1String("turn")) {
-        goal.kind = G::Kind::Turn;
-        if (!readFields(m, {{"angle", &goal.angleDeg, -G::kMaxAngleDeg, G::kMaxAngleDeg, "degrees"},
-                            {"rate", &goal.rateDegPerS, G::kMinRateDegPerS, G::kMaxRateDegPerS, "degrees/s"}},
-                        error))
-            return std::nullopt;
-        return goal;
-    }
-    goal.kind = G::Kind::Arc;
-    if (!readFields(m, {{"radius", &goal.radiusMm, G::kMinRadiusMm, G::kMaxRadiusMm, "mm"},
-                        {"angle", &goal.angleDeg, -G::kMaxAngleDeg, G::kMaxAngleDeg, "degrees"},
-                        {"speed", &goal.speedMmPerS, G::kMinSpeedMmPerS, G::kMaxWheelSpeedMmPerS, "mm/s"}},
-                    error))
+    const classroom::GoalCommand *row = classroom::goalCommand(m.command.toStdString());
+    if (!row) {
+        *error = QStringLiteral("\"%1\" is not a move with a goal").arg(m.command.left(40));
         return std::nullopt;
+    }
+    G goal;
+    goal.kind = classroom::kindOf(*row);
+    if (!readFields(m, *row, goal, error))
+        return std::nullopt;
+    if (goal.kind != G::Kind::Arc)
+        return goal;
     // The outer wheel goes faster than the centre, and no wheel may pass 500 mm/s.
     const double fastest = std::floor(G::maxArcSpeedMmPerS(goal.radiusMm));
     if (goal.speedMmPerS > fastest) {

@@ -10,7 +10,9 @@
 
 // The moves with a goal in a version 2 command message (docs/mqtt.md,
 // "Moves with a goal"): "straight" {distance, speed}, "turn" {angle, rate}
-// and "arc" {radius, angle, speed}, in millimetres, degrees and seconds.
+// and "arc" {radius, angle, speed}, in millimetres, degrees and seconds:
+// the rows of the classroom protocol's table (classroom_protocol.h), which
+// give each field's range.
 // They are not Open Interface commands: the bridge runs them on the robot's
 // odometry (GoalDrive).
 bool isGoalCommand(const QString &name);

@@ -6,6 +6,7 @@
 #include "bridge_config.h"
 #include "live_robots.h"
 #include "name_claim.h"
+#include "program_command_line.h"
 #include "robot_bridge.h"
 #include "robot_session.h"
 #include "room_file.h"
@@ -27,7 +28,7 @@ namespace {
 // not exit for a broker that is not up yet or restarts, or for a robot that
 // does not answer: it goes on trying. Nor for a live data server it cannot
 // serve (a port in use): it goes on without it and says why.
-constexpr int kUsageError = 2;
+constexpr int kUsageError = ProgramCommandLine::kUsageError;
 
 int fail(const QString &message)
 {
@@ -43,17 +44,12 @@ int main(int argc, char *argv[])
     // to serve, and GLib's loop costs more at each of its 67 wake-ups a second.
     qputenv("QT_NO_GLIB", "1");
     QCoreApplication app(argc, argv);
-    QCoreApplication::setApplicationName(QStringLiteral("roomba-bridge"));
-    QCoreApplication::setApplicationVersion(QStringLiteral(ROOMBA_VERSION));
-
     QCommandLineParser parser;
-    parser.setApplicationDescription(QStringLiteral(
+    const ProgramCommandLine commandLine(parser, QStringLiteral("roomba-bridge"), QStringLiteral(ROOMBA_VERSION), QStringLiteral(
         "One robot on an MQTT broker: its state (retained), telemetry and link statistics\n"
         "under roomba/NAME/, commands from the client that holds control, stop all.\n"
         "Topics and messages: docs/mqtt.md. Logs one line per event (category\n"
         "roomba.bridge; QT_LOGGING_RULES applies)."));
-    const QCommandLineOption helpOption = parser.addHelpOption();
-    const QCommandLineOption versionOption = parser.addVersionOption();
     const QCommandLineOption configOption(QStringLiteral("config"),
                                           QStringLiteral("Read settings from FILE (key = value; the keys are these options' names). Options given here win."),
                                           QStringLiteral("FILE"));
@@ -80,19 +76,14 @@ int main(int argc, char *argv[])
         {QStringLiteral("foxglove"), QStringLiteral("Serve the robot live to Foxglove, Lichtblick and PlotJuggler (Foxglove WebSocket protocol) on [ADDRESS:]PORT: 8765 is the usual port, 127.0.0.1 (this computer only) the default address; 0.0.0.0 lets every network in."), QStringLiteral("[ADDRESS:]PORT")},
         {QStringLiteral("foxglove-rate"), QStringLiteral("The live data server's messages a second per channel, each a whole frame (default 50)."), QStringLiteral("HZ")},
         {QStringLiteral("room"), QStringLiteral("With --sim: the room the virtual robot drives in, a room file (protocol/sim/room_format.md). Default the classroom."), QStringLiteral("FILE")},
+        {QStringLiteral("battery-fade"), QStringLiteral("With --sim: an aged pack, holding PCT % less than the 3000 mAh the robot claims (0 to 90)."), QStringLiteral("PCT")},
+        {QStringLiteral("battery-resistance"), QStringLiteral("With --sim: the pack's internal resistance in mΩ (50 to 5000; a new pack 250)."), QStringLiteral("MOHM")},
+        {QStringLiteral("battery-charge"), QStringLiteral("With --sim: how full the pack starts, in % of what it holds (default 90)."), QStringLiteral("PCT")},
         {QStringLiteral("record"), QStringLiteral("Record every byte of the robot's link into FILE (.oirec), with a virtual robot's true pose, as the dashboard records."), QStringLiteral("FILE")},
         {QStringLiteral("allow-schedule"), QStringLiteral("Let the client in control send schedule and set-day-time. A Roomba 600 / Create 2 then starts cleaning at the set times by itself, with nobody in control.")},
     });
-    if (!parser.parse(QCoreApplication::arguments()))
-        return fail(parser.errorText());
-    if (parser.isSet(helpOption)) {
-        std::fputs(qPrintable(parser.helpText()), stdout);
-        return 0;
-    }
-    if (parser.isSet(versionOption)) {
-        std::printf("roomba-bridge %s\n", ROOMBA_VERSION);
-        return 0;
-    }
+    if (const std::optional<int> status = commandLine.parse())
+        return *status;
     if (!parser.positionalArguments().isEmpty())
         return fail(QStringLiteral("unexpected argument '%1'").arg(parser.positionalArguments().first()));
 
@@ -124,15 +115,15 @@ int main(int argc, char *argv[])
     // Its thread does little else; with the link on it, it wakes once a
     // frame. A Pi Zero 2 has four slow cores to spare none of.
     robot.setLinkOnThisThread(true);
-    if (config->roomFile.isEmpty()) {
-        robot.setTransportFactory(transports::transportFactory());
-    } else {
-        const std::optional<sim::World> world = sim::loadRoomFile(config->roomFile, &error);
-        if (!world)
-            return fail(QStringLiteral("room: %1").arg(error));
-        const auto room = std::make_shared<sim::Room>(*world);
-        robot.setTransportFactory(transports::transportFactory(room, room->placeNewRobot()));
-    }
+    // A virtual robot drives in a room of the bridge's, which knows where it
+    // truly is (the live data's true pose); the classroom unless told.
+    const std::optional<sim::World> world =
+        config->roomFile.isEmpty() ? sim::World::classroom() : sim::loadRoomFile(config->roomFile, &error);
+    if (!world)
+        return fail(QStringLiteral("room: %1").arg(error));
+    const auto room = std::make_shared<sim::Room>(*world);
+    const sim::RobotId place = room->placeNewRobot();
+    robot.setTransportFactory(transports::transportFactory(room, place));
     // With an account, the id is the account's name, as the classroom's
     // broker makes it anyway (use_username_as_clientid).
     mqtt::MqttClient broker(config->broker.username.isEmpty() ? QStringLiteral("roomba-bridge-%1").arg(config->name)
@@ -204,6 +195,12 @@ int main(int argc, char *argv[])
     // The live data server: the robot's channels for Foxglove, Lichtblick and PlotJuggler.
     foxglove::Server liveServer(QStringLiteral("roomba-bridge %1").arg(config->name));
     LiveRobots live(liveServer);
+    live.setTruePose([&](const RobotSession *) -> std::optional<oi::Pose> {
+        if (config->link.transport != oilink::TransportKind::Virtual)
+            return std::nullopt;
+        const auto where = room->robot(place);
+        return where ? std::optional(where->pose) : std::nullopt;
+    });
     if (config->liveServer) {
         liveServer.setLimits({config->liveRateHz, liveServer.limits().queuedBytes});
         // The live data is for watching: without it the robot, its safety

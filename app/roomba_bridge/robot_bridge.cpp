@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "robot_bridge.h"
 
+#include "battery_json.h"
 #include "command_catalog.h"
 #include "command_message.h"
 #include "command_modes.h"
@@ -98,6 +99,14 @@ RobotBridge::RobotBridge(RobotSession &robot, mqtt::MqttClient &broker, oilink::
         publishState();
     });
     connect(&m_robot, &RobotSession::firmwareChanged, this, [this] { publishState(); });
+    connect(&m_robot, &RobotSession::batteryHealthChanged, this, [this] {
+        const QString condition = BatteryHealth::conditionKey(m_robot.batteryHealth().condition);
+        if (condition == m_publishedHealth && m_clock.nowMs() - m_healthPublishedMs < kHealthEveryMs)
+            return;
+        m_publishedHealth = condition;
+        m_healthPublishedMs = m_clock.nowMs();
+        publishState();
+    });
     connect(&m_robot, &RobotSession::errorOccurred, this,
             [](const QString &message) { qCWarning(lcBridge, "robot: %s", qPrintable(message)); });
 
@@ -219,6 +228,12 @@ QJsonObject RobotBridge::state() const
                   {"program", m_program.isEmpty() ? QJsonValue() : m_program}};
     const std::optional<double> battery = batteryShown();
     o.insert(QLatin1String("battery_percent"), battery ? QJsonValue(*battery) : QJsonValue());
+    // The pack's health, without what changes with every drive (the samples, the kept trend).
+    QJsonObject health = batteryHealthToJson(m_robot.batteryHealth());
+    health.remove(QLatin1String("resistance_samples"));
+    o.insert(QLatin1String("battery"), health);
+    const QString low = m_robot.lowBatteryWarning();
+    o.insert(QLatin1String("battery_low"), low.isEmpty() ? QJsonValue() : low);
     return o;
 }
 
@@ -417,10 +432,16 @@ void RobotBridge::handleCommand(const BridgeInbox::Message &message)
         return refuse(QString::fromStdString(why->describe()));
     if (const QString why = controlRefusal(client); !why.isEmpty())
         return refuse(why, {{"controller", m_lease.holder().isEmpty() ? QJsonValue() : m_lease.holder()}});
+    // Motion on a nearly flat pack goes, with the warning in the reply.
+    const std::optional<MotionCommand> motion = MotionCommand::fromCommand(*command);
+    const QString low = motion && !motion->isStop() ? m_robot.lowBatteryWarning() : QString();
     error = sendValidated(*command);
     if (!error.isEmpty())
         return refuse(error);
-    reply(client, {{"id", id}, {"ok", true}});
+    QJsonObject answer{{"id", id}, {"ok", true}};
+    if (!low.isEmpty())
+        answer.insert(QLatin1String("warning"), low);
+    reply(client, answer);
 }
 
 QString RobotBridge::sendValidated(const oi::OiCommand &command)
@@ -645,7 +666,7 @@ void RobotBridge::handleGoal(const QString &client, const QString &id, const mqt
     m_goal.start(*goal);
 }
 
-void RobotBridge::endGoal(const char *stop, const QString &error, const QString &by)
+void RobotBridge::endGoal(classroom::StopReason stop, const QString &error, const QString &by)
 {
     if (const std::optional<GoalDrive::Result> result = m_goal.cancel())
         replyGoal(*result, stop, error, by);
@@ -662,18 +683,21 @@ void RobotBridge::onGoalEnded(const GoalDrive::Result &r)
     case E::Stopped: return replyGoal(r, "stopped", QStringLiteral("the robot's motion was stopped"));
     case E::TimedOut:
         return replyGoal(r, "timeout",
-                         QStringLiteral("the move did not end in %1 s (twice its time and 2 s): the robot was "
-                                        "stopped. Is it pushing against something?")
-                             .arg(r.seconds, 0, 'f', 1));
+                         QStringLiteral("the move did not end in %1 s (%2 times its time and %3 s): the robot "
+                                        "was stopped. Is it pushing against something?")
+                             .arg(r.seconds, 0, 'f', 1)
+                             .arg(classroom::kTimeLimitFactor)
+                             .arg(classroom::kTimeLimitExtraS));
     case E::NoData:
         return replyGoal(r, "no-data", QStringLiteral("no fresh data from the robot (link %1): the robot was stopped")
                                            .arg(linkWord(m_robot.state())));
     }
 }
 
-void RobotBridge::replyGoal(const GoalDrive::Result &r, const char *stop, const QString &error, const QString &by,
-                            const QStringList &cause)
+void RobotBridge::replyGoal(const GoalDrive::Result &r, classroom::StopReason stopReason, const QString &error,
+                            const QString &by, const QStringList &cause)
 {
+    const char *stop = stopReason.word();
     QJsonObject answer{{"id", m_goalId},
                        {"ok", stop == nullptr},
                        {"distance_mm", std::round(r.travelledMm * 10) / 10},

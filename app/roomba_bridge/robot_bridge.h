@@ -100,8 +100,8 @@ private:
     // Ends a running goal because the bridge stops the robot (it stops it
     // next) and tells the client that asked for it: `stop` is the reason as
     // a word a program reads, `error` the same in words, `by` who stopped it.
-    void endGoal(const char *stop, const QString &error, const QString &by = {});
-    void replyGoal(const GoalDrive::Result &result, const char *stop, const QString &error, const QString &by = {},
+    void endGoal(classroom::StopReason stop, const QString &error, const QString &by = {});
+    void replyGoal(const GoalDrive::Result &result, classroom::StopReason stop, const QString &error, const QString &by = {},
                    const QStringList &cause = {});
     void onGoalEnded(const GoalDrive::Result &result);
     // Why a client may not drive now (it does not hold control), or empty;
@@ -159,5 +159,9 @@ private:
     QJsonObject m_publishedState;
     QString m_loggedModeReason;
     std::optional<double> m_publishedBattery;
+    // The pack's health goes out when its verdict changes, else its figures every kHealthEveryMs at most.
+    static constexpr qint64 kHealthEveryMs = 10'000;
+    QString m_publishedHealth; // the condition's key
+    qint64 m_healthPublishedMs = -kHealthEveryMs;
     bool m_stateUnsent = false; // the broker refused the last one: try again
 };

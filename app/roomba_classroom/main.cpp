@@ -3,6 +3,7 @@
 // "Classroom over MQTT"; docs/mqtt.md).
 
 #include "classroom_setup.h"
+#include "program_command_line.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
@@ -12,7 +13,7 @@
 
 namespace {
 
-constexpr int kUsageError = 2;
+constexpr int kUsageError = ProgramCommandLine::kUsageError;
 
 int fail(const QString &message, int status = kUsageError)
 {
@@ -33,11 +34,8 @@ QStringList listOf(const QString &value)
 int main(int argc, char *argv[])
 {
     QCoreApplication app(argc, argv);
-    QCoreApplication::setApplicationName(QStringLiteral("roomba-classroom"));
-    QCoreApplication::setApplicationVersion(QStringLiteral(ROOMBA_VERSION));
-
     QCommandLineParser parser;
-    parser.setApplicationDescription(QStringLiteral(
+    const ProgramCommandLine commandLine(parser, QStringLiteral("roomba-classroom"), QStringLiteral(ROOMBA_VERSION), QStringLiteral(
         "roomba-classroom init DIR --robots r1,r2,r3 --students alice,bob [options]\n\n"
         "Writes a ready classroom broker into DIR (new or empty): mosquitto.conf (TLS on\n"
         "port 8883 with a CA and a server certificate made here), the password file with\n"
@@ -46,8 +44,6 @@ int main(int argc, char *argv[])
         "bridges/NAME.conf for each robot's bridge, and students/NAME.json, each student's\n"
         "connection file for Python programs. Then: mosquitto -c DIR/mosquitto.conf\n"
         "Names: 1 to 64 letters, digits, '-' or '_'."));
-    const QCommandLineOption helpOption = parser.addHelpOption();
-    const QCommandLineOption versionOption = parser.addVersionOption();
     parser.addPositionalArgument(QStringLiteral("init"), QStringLiteral("The command: init."));
     parser.addPositionalArgument(QStringLiteral("DIR"), QStringLiteral("The folder to write (new or empty)."));
     parser.addOptions({
@@ -59,16 +55,8 @@ int main(int argc, char *argv[])
                                                 "(default 127.0.0.1: this machine only)."), QStringLiteral("ADDRESS")},
         {QStringLiteral("port"), QStringLiteral("The broker's TLS port (default 8883)."), QStringLiteral("PORT")},
     });
-    if (!parser.parse(QCoreApplication::arguments()))
-        return fail(parser.errorText() + QStringLiteral(" (roomba-classroom --help)"));
-    if (parser.isSet(helpOption)) {
-        std::fputs(qPrintable(parser.helpText()), stdout);
-        return 0;
-    }
-    if (parser.isSet(versionOption)) {
-        std::printf("roomba-classroom %s\n", ROOMBA_VERSION);
-        return 0;
-    }
+    if (const std::optional<int> status = commandLine.parse(QStringLiteral(" (roomba-classroom --help)")))
+        return *status;
     const QStringList args = parser.positionalArguments();
     if (args.value(0) != QLatin1String("init"))
         return fail(QStringLiteral("say what to do: roomba-classroom init DIR --robots r1,r2 --students alice,bob"));

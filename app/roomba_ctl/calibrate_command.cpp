@@ -7,7 +7,8 @@
 #include "ctl_command_line.h"
 #include "odometry_calibration.h"
 #include "oi_command.h"
-#include "robot_link_thread.h"
+#include "local_robot_port.h"
+#include "stream_packets.h"
 #include "termination_signals.h"
 #include "transport_factory.h"
 
@@ -19,6 +20,7 @@
 #include <cmath>
 #include <iostream>
 #include <optional>
+#include <string>
 
 namespace ctl {
 
@@ -66,6 +68,9 @@ bool readRunSizes(const std::optional<std::string> &straight, const std::optiona
 }
 
 constexpr double kTwoPi = 2 * 3.14159265358979323846;
+constexpr double kFrameSeconds = 0.015;
+// A Create 1 stands still this many frames before its last angle is asked.
+constexpr int kStandStillFrames = 20;
 
 int computeCalibration(const QCommandLineParser &parser)
 {
@@ -142,7 +147,7 @@ int driveCalibrationRun(int argc, char **argv, const QCommandLineParser &parser)
     oi::EncoderRun run(kind, straightMm ? *straightMm : *turnCount * kTwoPi, oi::WheelGeometry{});
 
     QCoreApplication app(argc, argv);
-    oilink::RobotLinkThread link;
+    oilink::LocalRobotPort link;
     link.setTransportFactory(transports::transportFactory());
     const oi::RobotProfile *profile = nullptr;
     int frames = 0, status = 0;
@@ -150,7 +155,7 @@ int driveCalibrationRun(int argc, char **argv, const QCommandLineParser &parser)
     std::optional<oi::WheelSpeeds> sent;
     const auto stopRobot = [&] {
         if (profile)
-            link.send(oi::stopMotionCommands(*profile));
+            link.post(oilink::request::Send{oi::stopMotionCommands(*profile)});
     };
     const auto finish = [&](int code, const std::string &message) {
         if (finished)
@@ -166,16 +171,31 @@ int driveCalibrationRun(int argc, char **argv, const QCommandLineParser &parser)
     QObject::connect(&termination, &TerminationSignals::requested, &app, [&](int signal) {
         finish(TerminationSignals::exitStatusFor(signal), "interrupted: the robot is stopped");
     });
-    QObject::connect(&link, &oilink::RobotLinkThread::profileAssumed, &app, [&] {
+    oilink::connectEvent<oilink::event::ProfileAssumed>(&link, &app, [&] {
         finish(2, toStd(CommandSender::roombaOrCreate2Note(o.settings.describe(), false)));
     });
-    QObject::connect(&link, &oilink::RobotLinkThread::errorOccurred, &app,
+    oilink::connectEvent<oilink::event::Error>(&link, &app,
                      [&](const QString &message) { finish(1, toStd(message)); });
-    QObject::connect(&link, &oilink::RobotLinkThread::streamStarted, &app, [&](oi::ProfileId id, int, const QList<int> &) {
-        profile = &oi::profile(id);
-        link.send({oi::OiCommand{oi::Command::Safe, {}, {}}});
+    // A Create 1 streams no angle (it would lose its fractions): it is
+    // asked for twice a second while the run drives, and once at its end.
+    bool angleApart = false, finalAngleAsked = false, finalAngleRead = false;
+    int drivingFrames = 0, standingFrames = 0;
+    QTimer angleTimer;
+    angleTimer.setInterval(500);
+    QObject::connect(&angleTimer, &QTimer::timeout, &app, [&] { link.post(oilink::request::QuerySensors{{20}}); });
+    oilink::connectEvent<oilink::event::SensorReply>(&link, &app, [&](const oi::SensorSnapshot &reply) {
+        if (finished)
+            return;
+        run.update(reply);
+        if (finalAngleAsked)
+            finalAngleRead = true;
     });
-    QObject::connect(&link, &oilink::RobotLinkThread::snapshot, &app, [&](const oi::SensorSnapshot &frame) {
+    oilink::connectEvent<oilink::event::StreamStarted>(&link, &app, [&](oi::ProfileId id, int, const QList<int> &ids) {
+        profile = &oi::profile(id);
+        angleApart = oilink::readsAngleApart(*profile, {ids.constData(), std::size_t(ids.size())});
+        link.post(oilink::request::Send{{oi::OiCommand{oi::Command::Safe, {}, {}}}});
+    });
+    oilink::connectEvent<oilink::event::Frame>(&link, &app, [&](const oi::SensorSnapshot &frame) {
         if (finished || !profile)
             return;
         const oi::OiMode mode = frame.oiMode();
@@ -186,11 +206,17 @@ int driveCalibrationRun(int argc, char **argv, const QCommandLineParser &parser)
         }
         if (const std::string hazard = oi::runHazard(frame); !hazard.empty())
             return finish(1, hazard + ": the run stopped before the end; clear the way and run it again");
+        if (!run.reached() && ++drivingFrames * kFrameSeconds > run.timeLimitSeconds())
+            return finish(1, "the run did not reach its end in " + std::to_string(std::lround(drivingFrames * kFrameSeconds))
+                                 + " s: the robot counted " + std::to_string(run.percentDone())
+                                 + " % of it. Is a wheel slipping or held? Check the floor and the wheels, and run it again");
+        if (angleApart && !angleTimer.isActive() && !run.reached())
+            angleTimer.start();
         const oi::WheelSpeeds speeds = run.update(frame);
         if (!run.reached()) {
             if (!sent || sent->left != speeds.left || sent->right != speeds.right)
-                link.send({oi::OiCommand{oi::Command::DriveDirect,
-                                         {int(std::lround(speeds.right)), int(std::lround(speeds.left))}, {}}});
+                link.post(oilink::request::Send{{oi::OiCommand{oi::Command::DriveDirect,
+                                         {int(std::lround(speeds.right)), int(std::lround(speeds.left))}, {}}}});
             sent = speeds;
             return;
         }
@@ -198,8 +224,21 @@ int driveCalibrationRun(int argc, char **argv, const QCommandLineParser &parser)
             stopRobot();
             sent.reset();
         }
-        if (!run.settled())
+        angleTimer.stop();
+        if (angleApart) {
+            // Its last turn is in its angle, read once it stands still.
+            if (++standingFrames >= kStandStillFrames && !finalAngleAsked) {
+                finalAngleAsked = true;
+                link.post(oilink::request::QuerySensors{{20}});
+            }
+            if (!finalAngleRead) {
+                if (standingFrames > kStandStillFrames + 70)
+                    finish(1, "the robot did not report its angle after the run: run it again");
+                return;
+            }
+        } else if (!run.settled()) {
             return;
+        }
         const oi::WheelGeometry documented;
         const QJsonObject out{
             {"run", kind == oi::EncoderRun::Kind::Straight ? "straight" : "turn"},
@@ -220,7 +259,7 @@ int driveCalibrationRun(int argc, char **argv, const QCommandLineParser &parser)
         if (!profile)
             finish(1, toStd(o.settings.describe()) + ": no data: is the robot on, and is the baud right?");
     });
-    link.open(o.settings);
+    link.post(oilink::request::Open{o.settings});
     QCoreApplication::exec();
     link.stop();
     return status;

@@ -1,6 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "command_sender.h"
 
+#include "robot_mode.h"
+#include "battery_health.h"
+#include "motion_command.h"
+
 #include "command_catalog.h"
 #include "oi_command.h"
 #include "command_modes.h"
@@ -14,8 +18,10 @@
 
 namespace {
 
-// Mode, song playing, bumps and wheel drops, the four cliffs, charging sources.
-const QList<int> kStateIds{35, 37, 7, 9, 10, 11, 12, 34};
+// Mode, song playing, bumps and wheel drops, the four cliffs and their
+// signals (a dark floor reads as one), charging sources, and the battery
+// (voltage, charge, capacity).
+const QList<int> kStateIds{35, 37, 7, 9, 10, 11, 12, 28, 29, 30, 31, 34, 22, 25, 26};
 
 bool isMotion(oi::Command c)
 {
@@ -134,7 +140,9 @@ void CommandSender::useProfile(oi::ProfileId id)
 void CommandSender::askState()
 {
     m_phase = Phase::AskingState;
-    m_link.querySensors(kStateIds);
+    // The SCI answers one group at a time: group 0 holds all it has.
+    const oi::RobotProfile *profile = m_link.robotProfile();
+    m_link.querySensors(profile && !profile->has(oi::Command::QueryList) ? QList<int>{0} : kStateIds);
 }
 
 void CommandSender::onReply(const oi::SensorSnapshot &reply)
@@ -176,7 +184,9 @@ void CommandSender::decide(const oi::SensorSnapshot &state)
 {
     const oi::Command command = m_command.command;
     const QString name = fromStd(m_order.name);
-    oi::OiMode mode = state.oiMode();
+    // The SCI reports no mode: taken as Passive, so Safe goes first (130
+    // 131 keeps Safe as it is and takes Full to Safe).
+    oi::OiMode mode = state.has(35) ? state.oiMode() : oi::OiMode::Passive;
     const bool onDock = state.chargingSource(oi::ChargingSource::HomeBase)
                         || state.chargingSource(oi::ChargingSource::InternalCharger);
     if (command == oi::Command::Safe && onDock) {
@@ -208,6 +218,11 @@ void CommandSender::decide(const oi::SensorSnapshot &state)
         // (which a robot in Passive ignores only until the next Safe).
         send({oi::Command::Safe, {}, {}});
     }
+    if (RobotMode::drivesWheels(command) && mode == oi::OiMode::Full && RobotMode::offTheFloor(state)) {
+        finish(1, QStringLiteral("%1: %2 not sent: %3. Put it down on the floor, then send it again.")
+                      .arg(m_order.settings.describe(), name, RobotMode::offTheFloorWords()));
+        return;
+    }
     if (isMotion(command) && mode == oi::OiMode::Safe) {
         const bool cliff = state.cliff(oi::CliffSensor::Left) || state.cliff(oi::CliffSensor::FrontLeft)
                            || state.cliff(oi::CliffSensor::FrontRight) || state.cliff(oi::CliffSensor::Right);
@@ -217,12 +232,23 @@ void CommandSender::decide(const oi::SensorSnapshot &state)
             emit warning(QStringLiteral("the robot is on its dock: Safe mode ignores %1 and falls back to Passive; "
                                         "use Full to drive it off the dock (send full), or lift it off")
                              .arg(name));
+        else if (cliff && RobotMode::darkFloorSignals(state))
+            emit warning(QStringLiteral("a cliff sensor reads a cliff: Safe mode stops %1 toward it and falls back to "
+                                        "Passive. No edge there? Its signals are low but not the near 0 of a drop, and "
+                                        "no wheel dropped: a dark rug or floor reads as a cliff; move it to a lighter "
+                                        "floor")
+                             .arg(name));
         else if (cliff)
             emit warning(QStringLiteral("a cliff sensor sees a drop: Safe mode stops %1 toward it and falls back to Passive")
                              .arg(name));
     }
-    if (command == oi::Command::Play && state.songPlaying() && m_profile->id == oi::ProfileId::Create1)
-        emit warning(QStringLiteral("a song is playing: the Create ignores Play until it ends"));
+    // Nearly flat, the robot leaves Safe or Full by itself as soon as it pulls.
+    if (const std::optional<MotionCommand> motion = MotionCommand::fromCommand(m_command); motion && !motion->isStop())
+        if (const std::optional<BatteryHealth::LowBattery> low = BatteryHealth::nearlyFlat(state))
+            emit warning(BatteryHealth::nearlyFlatWords(*low));
+    if (command == oi::Command::Play && state.songPlaying() && m_profile->caps.playWaitsForSong)
+        emit warning(QStringLiteral("a song is playing: the %1 ignores Play until it ends")
+                         .arg(QString::fromUtf8(m_profile->name.data(), qsizetype(m_profile->name.size()))));
     sendCommand();
 }
 
@@ -231,8 +257,15 @@ void CommandSender::sendCommand()
     if (m_command.command == oi::Command::Baud) // the port stays at its rate; the robot does not
         emit note(QStringLiteral("the robot now talks at %1 baud: give the next command --baud %1")
                       .arg(oi::baudForCode(m_command.fields[0])));
+    // The documents: after Reset the robot talks at its default rate again
+    // (the link's port follows, and says so to its other readers).
+    if (m_command.command == oi::Command::Reset && m_link.baud() != m_profile->defaultBaud)
+        emit note(QStringLiteral("Reset puts the robot back at its default %1 baud: give the next command --baud %1, "
+                                 "or leave --baud out")
+                      .arg(m_profile->defaultBaud));
     const QList<int> asked = packetsAsked(m_command);
     if (asked.isEmpty()) {
+        m_phase = Phase::AwaitingReply; // what the link says of the command is not a failure to open
         send(m_command);
         // Nothing comes back from the robot: say what went, so success is seen.
         emit note(QStringLiteral("sent %1 to %2").arg(QString::fromStdString(m_order.name), m_order.settings.describe()));

@@ -3,10 +3,13 @@
 
 #include "recording_markers.h"
 #include "robot_address.h"
+#include "local_robot_port.h"
 #include "snapshot_json.h"
 
+#include <QCoreApplication>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QTimer>
 
 #include <iostream>
 
@@ -91,6 +94,32 @@ void addLinkOptions(QCommandLineParser &parser)
         {QStringLiteral("baud"), QString(), QStringLiteral("B")},
         {QStringLiteral("brc-line"), QString(), QStringLiteral("L")},
     });
+}
+
+void LoopEnd::operator()(int code, const std::string &message)
+{
+    if (finished)
+        return;
+    finished = true;
+    status = code;
+    if (!message.empty())
+        std::cerr << "roomba-ctl: " << message << "\n";
+    QCoreApplication::exit(code);
+}
+
+int runStreaming(oilink::LocalRobotPort &link, const oilink::LinkSettings &settings, QTimer &silence, LoopEnd &finish,
+                 const QString *linkSaid)
+{
+    QObject::connect(&silence, &QTimer::timeout, &link, [&] {
+        finish(1, linkSaid && !linkSaid->isEmpty()
+                      ? std::string()
+                      : toStd(settings.describe()) + ": no data: is the robot on, and is the baud right?");
+    });
+    silence.start(kFirstFrameTimeoutMs);
+    link.post(oilink::request::Open{settings});
+    QCoreApplication::exec();
+    link.stop();
+    return finish.status;
 }
 
 bool readLinkOptions(const QCommandLineParser &parser, const std::string &command, LinkOptions &o)

@@ -16,6 +16,11 @@
 #include <string>
 #include <vector>
 
+namespace oilink {
+class LocalRobotPort;
+}
+class QTimer;
+
 namespace ctl {
 
 // The command's words, its name first ("encode", "--hex", "drive", ...).
@@ -59,6 +64,20 @@ bool readLinkOptions(const QCommandLineParser &parser, const std::string &comman
 
 constexpr int kFirstFrameTimeoutMs = 20000; // covers probing three bauds, twice
 
+// How a command that runs the event loop ends: once, with its status and any
+// message on standard error ("roomba-ctl: MESSAGE").
+struct LoopEnd {
+    int status = 0;
+    bool finished = false;
+    void operator()(int code, const std::string &message);
+};
+// Opens the link and runs the event loop until `finish`; `silence` (a
+// single shot each frame restarts) ends it when no data comes. The link is
+// stopped, the robot in Passive; returns the status. When `linkSaid` holds
+// the link's own last words (already printed), they are the reason given.
+int runStreaming(oilink::LocalRobotPort &link, const oilink::LinkSettings &settings, QTimer &silence, LoopEnd &finish,
+                 const QString *linkSaid = nullptr);
+
 // The commands, each in a file of its own.
 int encode(const Arguments &args);
 int decode(const Arguments &args);
@@ -68,8 +87,11 @@ int listPackets(const Arguments &args);
 int streamSensors(int argc, char **argv, const Arguments &args);
 int sendToRobot(int argc, char **argv, const Arguments &args);
 int runDoctor(int argc, char **argv, const Arguments &args);
+int wakeRobot(int argc, char **argv, const Arguments &args);
 int calibrate(int argc, char **argv, const Arguments &args);
+int batteryHealth(int argc, char **argv, const Arguments &args);
 int recordingCsv(const Arguments &args);
 int recordingMcap(const Arguments &args);
+int serveRecording(int argc, char **argv, const Arguments &args);
 
 } // namespace ctl

@@ -63,6 +63,12 @@ Commands:
       or Create 2 found without --profile is named on standard error with
       the flag to give), 1 with what to change on the last line.
         roomba-ctl doctor --port /dev/ttyUSB0
+  wake ROBOT [--profile P] [--brc-line L]
+      Pulse the robot's BRC pin: wakes a Roomba 500 or Create 2 that sleeps,
+      and switches on one switched off at its power button (the link never
+      does that by itself). Then sends Start (Passive mode) and asks its
+      mode; exit status 0 when it answers.
+        roomba-ctl wake --port /dev/ttyUSB0
   calibrate ROBOT [--profile P] [--baud B] (--straight MM | --turns N)
       Drive one calibration run by the wheel encoders, counted with the
       documented 72 mm wheels and 235 mm wheel base, in Safe mode, slowly
@@ -78,6 +84,17 @@ Commands:
       (left, right), their scale against the documented 72 mm, the wheel base,
       and the error of a 1 m square before and after, as one JSON line.
         roomba-ctl calibrate --compute --straight 1000 --measured 1040 --turns 2 --measured-angle 700
+  battery [ROBOT] [--watch] [--text] [--seconds N]
+      The health of each robot's pack, as the dashboard measured and kept
+      it per robot: good, worn or replace, with the measured capacity
+      against what the robot claims, the internal resistance, how much of
+      a cycle was seen and the trend, as one JSON line per robot (--text:
+      a line of words). With ROBOT, measures that robot from its stream for
+      N seconds (default 10) and prints it; --watch prints it every N
+      seconds (default 5) until Ctrl+C. Measuring needs the robot to drive
+      (resistance) and part of a discharge or charge (capacity).
+        roomba-ctl battery --text
+        roomba-ctl battery --port /dev/ttyUSB0 --watch
   csv RECORDING
       Print a recording (.oirec, from the dashboard or its --record) as CSV:
       time_s, then one column per packet (key[unit]), one row per stream frame. A damaged
@@ -88,6 +105,13 @@ Commands:
       ways, events and mode changes as log messages (docs/mcap.md). zstd is
       the default. A damaged recording is exported up to the damage, which
       is named on stderr (exit status 1); OUT.mcap is never left half-written.
+  serve RECORDING --foxglove [ADDRESS:]PORT
+      Serve a recording live over the Foxglove WebSocket protocol, as the
+      dashboard serves its robots (docs/foxglove.md), with its time range:
+      Foxglove's timeline plays, pauses, seeks and sets the speed of the
+      replay. 127.0.0.1 (this computer only) unless ADDRESS is given.
+      Ctrl+C ends.
+        roomba-ctl serve run.oirec --foxglove 8765
   --help, --version
 
 ROBOT is one of:
@@ -108,7 +132,8 @@ other way round: found without --profile, they are taken for a create2 and
 say so on standard error; sensors leaves 43 and 44 out, and send refuses to
 ask for them (or for groups 100 and 101). Name the robot with --profile.
 
-Profiles: roomba500, create2 (also roomba600), create1 (also create).
+Profiles: roomba500, create2 (also roomba600), create1 (also create),
+roomba400 (also sci, discovery, dirtdog: the 2005 SCI, polled).
 The default profile is create2 (encode, decode, --sim).
 )";
 
@@ -144,11 +169,17 @@ int main(int argc, char **argv)
         return ctl::sendToRobot(argc, argv, args);
     if (command == "doctor")
         return ctl::runDoctor(argc, argv, args);
+    if (command == "wake")
+        return ctl::wakeRobot(argc, argv, args);
     if (command == "calibrate")
         return ctl::calibrate(argc, argv, args);
+    if (command == "battery")
+        return ctl::batteryHealth(argc, argv, args);
     if (command == "csv")
         return ctl::recordingCsv(args);
     if (command == "mcap")
         return ctl::recordingMcap(args);
+    if (command == "serve")
+        return ctl::serveRecording(argc, argv, args);
     return ctl::fail("unknown command '" + command + "'; try --help");
 }

@@ -4,7 +4,7 @@
 #include "command_catalog.h"
 #include "command_sender.h"
 #include "ctl_command_line.h"
-#include "robot_link_thread.h"
+#include "local_robot_port.h"
 #include "snapshot_json.h"
 #include "termination_signals.h"
 #include "transport_factory.h"
@@ -16,12 +16,15 @@
 #include <QTimer>
 
 #include <iostream>
+#include <utility>
 
 namespace ctl {
 
 namespace {
 
 constexpr int kFrameSilenceMs = 5000;
+// After the link said why no frame came: its own tries to bring the stream back.
+constexpr int kRecoveryMs = 4000;
 
 std::string statisticsJson(const oilink::LinkStats &st, const std::string &profileKey, int baud,
                            const QList<int> &packets, bool profileAssumed)
@@ -56,25 +59,15 @@ int streamSensors(int argc, char **argv, const Arguments &args)
         return fail("sensors takes no arguments besides its options");
 
     QCoreApplication app(argc, argv);
-    oilink::RobotLinkThread link;
+    oilink::LocalRobotPort link;
     link.setTransportFactory(transports::transportFactory());
     long long received = 0;
-    int status = 0;
-    bool finished = false;
     std::string profileKey;
     int baud = 0;
     QList<int> packets;
     QTimer silence;
     silence.setSingleShot(true);
-    const auto finish = [&](int code, const std::string &message) {
-        if (finished)
-            return;
-        finished = true;
-        status = code;
-        if (!message.empty())
-            std::cerr << "roomba-ctl: " << message << "\n";
-        QCoreApplication::exit(code);
-    };
+    LoopEnd finish;
     // Killed or hung up: the link still stops the robot and leaves it in Passive.
     TerminationSignals termination;
     QObject::connect(&termination, &TerminationSignals::requested, &app,
@@ -82,13 +75,13 @@ int streamSensors(int argc, char **argv, const Arguments &args)
     // A Roomba 500 or a Create 2 found without --profile: said so, and
     // its encoder counts, which may read mirrored, are left out.
     bool assumed = false;
-    QObject::connect(&link, &oilink::RobotLinkThread::profileAssumed, &app, [&] {
+    oilink::connectEvent<oilink::event::ProfileAssumed>(&link, &app, [&] {
         assumed = true;
         std::cerr << "roomba-ctl: " << toStd(CommandSender::roombaOrCreate2Note(o.settings.describe(), true))
                   << " Until then packets 43 and 44 are left out.\n";
     });
-    QObject::connect(&link, &oilink::RobotLinkThread::snapshot, &app, [&](const oi::SensorSnapshot &s) {
-        if (finished)
+    oilink::connectEvent<oilink::event::Frame>(&link, &app, [&](const oi::SensorSnapshot &s) {
+        if (finish.finished)
             return;
         oi::SensorSnapshot shown = s;
         for (int id : {43, 44})
@@ -99,22 +92,36 @@ int streamSensors(int argc, char **argv, const Arguments &args)
         if (++received >= count)
             finish(0, {});
     });
-    QObject::connect(&link, &oilink::RobotLinkThread::errorOccurred, &app,
-                     [&](const QString &message) { finish(1, toStd(message)); });
-    QObject::connect(&link, &oilink::RobotLinkThread::streamStarted, &app,
+    // Frames on time but in bunches: said once, so gaps between them are not taken for a fault.
+    bool bunchedSaid = false;
+    oilink::connectEvent<oilink::event::Statistics>(&link, &app, [&](const oilink::LinkStats &stats) {
+        if (const QString bunched = oilink::bunchedLinkText(stats); !bunched.isEmpty() && !std::exchange(bunchedSaid, true))
+            std::cerr << "roomba-ctl: " << toStd(o.settings.describe()) << ": " << toStd(bunched) << "\n";
+    });
+    // Before the stream starts, an error ends the command. After it, the
+    // link recovers by itself where it can (a robot left inside a command,
+    // asleep, or slow): its words are said and it has until the silence
+    // limit to bring the frames back.
+    bool streamAsked = false;
+    QString lastError;
+    oilink::connectEvent<oilink::event::Error>(&link, &app, [&](const QString &message) {
+        if (!streamAsked) {
+            finish(1, toStd(message));
+        } else if (message != std::exchange(lastError, message)) {
+            std::cerr << "roomba-ctl: " << toStd(message) << "\n";
+            // Time for the link's next tries (Start and Stream again after 1 s, then 2 s more).
+            if (received == 0)
+                silence.start(kRecoveryMs);
+        }
+    });
+    oilink::connectEvent<oilink::event::StreamStarted>(&link, &app,
                      [&](oi::ProfileId id, int rate, const QList<int> &ids) {
+                         streamAsked = true;
                          profileKey = oi::profile(id).key;
                          baud = rate;
                          packets = ids;
                      });
-    QObject::connect(&silence, &QTimer::timeout, &app, [&] {
-        finish(1, toStd(o.settings.describe()) + ": no data: is the robot on, and is the baud right?");
-    });
-    silence.start(kFirstFrameTimeoutMs);
-    link.open(o.settings);
-    QCoreApplication::exec();
-    link.stop();
-    if (status != 0)
+    if (const int status = runStreaming(link, o.settings, silence, finish, &lastError); status != 0)
         return status;
     std::cout << statisticsJson(link.lastStatistics(), profileKey, baud, packets, assumed) << std::endl;
     return 0;

@@ -6,6 +6,7 @@
 #include "firmware_banner.h"
 #include "odometry_calibration.h"
 #include "pose_report.h"
+#include "program_command_line.h"
 #include "pty_robot_server.h"
 #include "real_time_robot.h"
 #include "room_file.h"
@@ -30,7 +31,7 @@
 
 namespace {
 
-constexpr int kUsageError = 2;
+constexpr int kUsageError = ProgramCommandLine::kUsageError;
 constexpr int kRuntimeError = 1;
 
 int fail(int status, const QString &message)
@@ -110,11 +111,8 @@ bool makeLink(const QString &linkPath, const QString &target, QString &message)
 int main(int argc, char *argv[])
 {
     QCoreApplication app(argc, argv);
-    QCoreApplication::setApplicationName(QStringLiteral("roomba-sim"));
-    QCoreApplication::setApplicationVersion(QStringLiteral(ROOMBA_VERSION));
-
     QCommandLineParser parser;
-    parser.setApplicationDescription(QStringLiteral(
+    const ProgramCommandLine commandLine(parser, QStringLiteral("roomba-sim"), QStringLiteral(ROOMBA_VERSION), QStringLiteral(
         "A virtual iRobot Open Interface robot on a pseudo-terminal.\n"
         "Prints the device to open (or tcp://ADDRESS:PORT) on the first line of\n"
         "standard output, then runs until interrupted.\n"
@@ -127,10 +125,8 @@ int main(int argc, char *argv[])
         "Clean, Spot, Max and Seek Dock run a simple program of the robot's own in\n"
         "Passive (bouncing off bumps and cliffs, a spiral, straight to the dock)\n"
         "until another command ends it."));
-    const QCommandLineOption helpOption = parser.addHelpOption();
-    const QCommandLineOption versionOption = parser.addVersionOption();
     parser.addOptions({
-        {QStringLiteral("profile"), QStringLiteral("Robot: roomba500, create2 (also roomba600) or create1 (also create). Default create2."), QStringLiteral("PROFILE"), QStringLiteral("create2")},
+        {QStringLiteral("profile"), QStringLiteral("Robot: roomba500, create2 (also roomba600), create1 (also create) or roomba400 (also sci, discovery, dirtdog: the 2005 SCI, polled). Default create2."), QStringLiteral("PROFILE"), QStringLiteral("create2")},
         {QStringLiteral("firmware"), QStringLiteral("Firmware release printed after Reset (7), e.g. release-3.4.1 (Roomba 500 and Create 2)."), QStringLiteral("RELEASE")},
         {QStringLiteral("seed"), QStringLiteral("Seed of the fault injection (default 1)."), QStringLiteral("N"), QStringLiteral("1")},
         {QStringLiteral("corrupt"), QStringLiteral("Probability that a byte the robot sends is replaced by a random one."), QStringLiteral("P")},
@@ -147,6 +143,10 @@ int main(int argc, char *argv[])
         {QStringLiteral("sleeps-while-pulsed"), QStringLiteral("Play firmware release-3.2.x: sleep after 5 minutes in Passive whatever BRC pulses come (a pulse still wakes it, except on the dock). Its banner says release-3.2.1 unless --firmware names another; --firmware release-3.2.x alone does the same (Roomba 500 and Create 2).")},
         {QStringLiteral("brc-wired"), QStringLiteral("The cable's wake line: which adapter line reaches the robot's BRC pin, rts (default), dtr, or none (a cable without the BRC wire: no pulse wakes it). For the pseudo-terminal's control socket and RFC 2217."), QStringLiteral("LINE"), QStringLiteral("rts")},
         {QStringLiteral("wake-time"), QStringLiteral("How long after a BRC pulse wakes it the robot listens, in ms (default 300; robots in the field take up to 2000). Bytes sent sooner are lost."), QStringLiteral("MS"), QString::number(oi::RobotProfile::kWakeMs)},
+        {QStringLiteral("bunch"), QStringLiteral("Play a Bluetooth serial adapter or Wi-Fi bridge that hands on what the robot says in bunches MS apart (e.g. 300): frames on time but held. 16 is an FTDI adapter's latency timer."), QStringLiteral("MS"), QStringLiteral("0")},
+        {QStringLiteral("power-off-after"), QStringLiteral("Hold the Clean/Power button S seconds after the start, for 2.5 s: the robot switches off (Roomba 500 and Create 2) until its BRC pin is pulsed (roomba-ctl wake)."), QStringLiteral("S")},
+        {QStringLiteral("half-song"), QStringLiteral("Start inside a Song command (140 0 16) whose notes never came, as an earlier program that stopped halfway leaves a robot: its next 32 bytes are taken as notes.")},
+        {QStringLiteral("in-the-air"), QStringLiteral("Start picked up: both wheels dropped (and a Create's caster), as in the hands of someone holding it.")},
         {QStringLiteral("mode-off-by-one"), QStringLiteral("Play a Wi-Fi Roomba 600 that reports its OI mode (packet 35) one too high: Passive 2, Safe 3, Full 4.")},
         {QStringLiteral("charge-above-capacity"), QStringLiteral("Play a battery gauge gone wrong: the charge (packet 25) reads more than the capacity (26), a reading that cannot be true.")},
         {QStringLiteral("wheel-diameter"), QStringLiteral("The real diameter of both drive wheels in mm (documents: 72). The firmware counts by 72 mm, so the encoders lie as a real robot's do: practise calibrating."), QStringLiteral("MM")},
@@ -154,24 +154,19 @@ int main(int argc, char *argv[])
         {QStringLiteral("right-wheel-diameter"), QStringLiteral("The real diameter of the right wheel in mm (overrides --wheel-diameter)."), QStringLiteral("MM")},
         {QStringLiteral("report-pose"), QStringLiteral("Print the robot's true pose once a second on standard output, after the first line: position in the room, the distance from where it stood at the start, how far off its starting line and how far it turned (e.g. to check a calibration with no tape measure). Press Enter for a line at once.")},
         {QStringLiteral("wheel-base"), QStringLiteral("The real distance between the wheels in mm (documents: 235)."), QStringLiteral("MM")},
+        {QStringLiteral("battery-fade"), QStringLiteral("An aged pack: it holds PCT % less than the 3000 mAh the robot claims (0 to 90, default 0). Its gauge, re-seeded from the voltage at Reset, reads wrong, as a worn pack's does."), QStringLiteral("PCT"), QStringLiteral("0")},
+        {QStringLiteral("battery-resistance"), QStringLiteral("The pack's internal resistance in mΩ (50 to 5000; a new pack 250): its voltage sags under load, and nearly flat it drops Safe or Full to Passive. Run flat and docked, it shows a charging fault until Reset."), QStringLiteral("MOHM"), QString::number(sim::VirtualRobot::kNewPackResistanceMohm)},
+        {QStringLiteral("battery-charge"), QStringLiteral("How full the pack starts, in % of what it holds (default 90)."), QStringLiteral("PCT"), QStringLiteral("90")}
     });
 
-    if (!parser.parse(QCoreApplication::arguments()))
-        return fail(kUsageError, parser.errorText());
-    if (parser.isSet(helpOption)) {
-        std::fputs(qPrintable(parser.helpText()), stdout);
-        return 0;
-    }
-    if (parser.isSet(versionOption)) {
-        std::printf("roomba-sim %s\n", ROOMBA_VERSION);
-        return 0;
-    }
+    if (const std::optional<int> status = commandLine.parse())
+        return *status;
     if (!parser.positionalArguments().isEmpty())
         return fail(kUsageError, QStringLiteral("unexpected argument '%1'").arg(parser.positionalArguments().first()));
 
     const oi::RobotProfile *profile = oi::profileByKey(parser.value(QStringLiteral("profile")).toStdString());
     if (!profile)
-        return fail(kUsageError, QStringLiteral("--profile: '%1' is not a robot (roomba500, create2, create1)")
+        return fail(kUsageError, QStringLiteral("--profile: '%1' is not a robot (roomba500, create2, create1, roomba400)")
                                      .arg(parser.value(QStringLiteral("profile"))));
 
     bool ok = false;
@@ -190,8 +185,8 @@ int main(int argc, char *argv[])
     QString firmware;
     if (parser.isSet(QStringLiteral("firmware"))) {
         firmware = parser.value(QStringLiteral("firmware"));
-        if (profile->id == oi::ProfileId::Create1)
-            return fail(kUsageError, QStringLiteral("--firmware: the Create has no Reset banner; use it with roomba500 or create2"));
+        if (!profile->caps.firmwareBanner)
+            return fail(kUsageError, QStringLiteral("--firmware: the %1 has no release banner; use it with roomba500 or create2").arg(QString::fromUtf8(profile->name.data(), qsizetype(profile->name.size()))));
         if (!oi::parseFirmwareBanner("r3_robot/tags/" + firmware.toStdString() + ":"))
             return fail(kUsageError, QStringLiteral("--firmware: '%1' is not a release name like release-3.8.2 or release-stm32-3.7.7").arg(firmware));
     }
@@ -253,6 +248,15 @@ int main(int argc, char *argv[])
     robot->joinRoom(room, room->placeNewRobot());
     robot->setFaultRates(rates);
     robot->setWheels(wheels);
+    const double fade = parser.value(QStringLiteral("battery-fade")).toDouble(&ok);
+    const double resistance = ok ? parser.value(QStringLiteral("battery-resistance")).toDouble(&ok) : 0;
+    if (!ok || !robot->setBattery({fade, resistance}))
+        return fail(kUsageError, QStringLiteral("--battery-fade takes 0 to 90 (%), --battery-resistance 50 to 5000 (mΩ): not '%1' and '%2'")
+                                     .arg(parser.value(QStringLiteral("battery-fade")).left(40), parser.value(QStringLiteral("battery-resistance")).left(40)));
+    const double charged = parser.value(QStringLiteral("battery-charge")).toDouble(&ok);
+    if (!ok || !(charged >= 0 && charged <= 100))
+        return fail(kUsageError, QStringLiteral("--battery-charge: '%1' is not a share from 0 to 100 %").arg(parser.value(QStringLiteral("battery-charge")).left(40)));
+    robot->setBatteryChargeMah(30 * charged * (1 - fade / 100));
     if (parser.isSet(QStringLiteral("on-dock"))) {
         // Nose first onto the contacts, facing the way the dock does not.
         const sim::World::Dock dock = *robot->world().dock;
@@ -272,11 +276,39 @@ int main(int argc, char *argv[])
     const int wakeMs = wakeText.toInt(&ok);
     if (!ok || wakeMs < 0 || wakeMs > 10'000)
         return fail(kUsageError, QStringLiteral("--wake-time: '%1' is not a time in ms from 0 to 10000").arg(wakeText.left(40)));
+    const QString bunchText = parser.value(QStringLiteral("bunch"));
+    const int bunchMs = bunchText.toInt(&ok);
+    if (!ok || bunchMs < 0 || bunchMs > 5'000)
+        return fail(kUsageError, QStringLiteral("--bunch: '%1' is not a time in ms from 0 to 5000").arg(bunchText.left(40)));
     robot->setQuirks({.sleepsWhilePulsed = parser.isSet(QStringLiteral("sleeps-while-pulsed")),
                       .reportsModeOneHigh = parser.isSet(QStringLiteral("mode-off-by-one")),
                       .brcWiredTo = *brcWiredTo,
                       .wakeTime = std::chrono::milliseconds(wakeMs),
-                      .reportsChargeAboveCapacity = parser.isSet(QStringLiteral("charge-above-capacity"))});
+                      .reportsChargeAboveCapacity = parser.isSet(QStringLiteral("charge-above-capacity")),
+                      .bunch = std::chrono::milliseconds(bunchMs)});
+    QTimer powerButton;
+    if (parser.isSet(QStringLiteral("power-off-after"))) {
+        const double after = parser.value(QStringLiteral("power-off-after")).toDouble(&ok);
+        if (!ok || !std::isfinite(after) || after < 0 || after > 86'400)
+            return fail(kUsageError, QStringLiteral("--power-off-after: '%1' is not a time in seconds from 0 to 86400").arg(parser.value(QStringLiteral("power-off-after")).left(40)));
+        if (!profile->caps.powerButtonInSensors)
+            return fail(kUsageError, QStringLiteral("--power-off-after: the %1's power button is not in its sensors; use it with roomba500 or create2").arg(QString::fromUtf8(profile->name.data(), qsizetype(profile->name.size()))));
+        // Pressed, then let go once the robot is off; robot time runs `speed` times faster.
+        powerButton.setSingleShot(true);
+        QObject::connect(&powerButton, &QTimer::timeout, &app, [robot, &powerButton, speed, held = false]() mutable {
+            held = !held;
+            robot->pressButtons(held ? oi::bit::ButtonClean : 0);
+            if (held)
+                powerButton.start(int(2500 / speed));
+        });
+        powerButton.start(int(after * 1000 / speed));
+    }
+    if (parser.isSet(QStringLiteral("in-the-air")))
+        robot->setWheelsLifted(true, true, profile->caps.casterWheelDrop);
+    if (parser.isSet(QStringLiteral("half-song"))) {
+        const std::uint8_t halfSong[] = {140, 0, 16};
+        robot->receive(halfSong);
+    }
     if (parser.isSet(QStringLiteral("asleep"))) {
         const std::uint8_t startAndPower[] = {128, 133};
         robot->receive(startAndPower);

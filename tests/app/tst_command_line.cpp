@@ -59,6 +59,11 @@ private slots:
         const auto worn = parse("--sim --wheel-diameter 74.88 --right-wheel-diameter 73 --wheel-base 228");
         QVERIFY2(worn.error.isEmpty(), qPrintable(worn.error));
         QCOMPARE(worn.connection->virtualWheels, (oi::WheelGeometry{74.88, 73, 228}));
+        // The virtual robots' packs, one figure per robot.
+        const auto packs = parse("--sim 3 --battery-fade 0,20,55 --battery-resistance 250,500,900");
+        QVERIFY2(packs.error.isEmpty(), qPrintable(packs.error));
+        QCOMPARE(packs.batteryFadePercent, (QList<double>{0, 20, 55}));
+        QCOMPARE(packs.batteryResistanceMohm, (QList<double>{250, 500, 900}));
 
         // The live data server: on this machine at 8765 unless told otherwise.
         QVERIFY(!parse("--sim").liveServer);
@@ -138,6 +143,9 @@ private slots:
         QTest::newRow("wheel absurd") << "--sim --left-wheel-diameter 200" << "within half of the documents' 72 mm";
         QTest::newRow("wheel base of nothing") << "--sim --wheel-base 0" << "--wheel-base: '0'";
         QTest::newRow("wheels of a real robot") << "--port /dev/ttyUSB0 --wheel-diameter 74" << "go with --sim";
+        QTest::newRow("pack faded past use") << "--sim --battery-fade 95" << "--battery-fade: '95' is not a share from 0 to 90 %";
+        QTest::newRow("pack of no resistance") << "--sim --battery-resistance 10,x" << "--battery-resistance: '10' is not a resistance";
+        QTest::newRow("a real robot's pack") << "--port /dev/ttyUSB0 --battery-fade 20" << "--battery-fade and --battery-resistance go with --sim";
     }
     void badArguments()
     {

@@ -52,6 +52,16 @@ QJsonObject telemetry(int bumps, std::initializer_list<int> cliffs, int mode = 2
     return oilink::snapshotToJson(s);
 }
 
+// Into ROOMBA_SCREENSHOTS, when set.
+void saveShot(QWidget &widget, const char *name)
+{
+    const QString dir = qEnvironmentVariable("ROOMBA_SCREENSHOTS");
+    if (dir.isEmpty())
+        return;
+    QDir().mkpath(dir);
+    widget.grab().save(QDir(dir).filePath(QString::fromLatin1(name)));
+}
+
 } // namespace
 
 class TestFleetConsole : public QObject {
@@ -81,14 +91,14 @@ private slots:
         {
             MainWindow window;
             window.start();
-            QVERIFY(window.fleetView()->tiles().isEmpty()); // not connected before
+            QVERIFY(!window.fleetView()->tile("r1")); // not connected before
             QVERIFY(window.connectToBroker(address));
-            QTRY_COMPARE_WITH_TIMEOUT(window.fleetView()->tiles().size(), 1, 5000);
+            QTRY_VERIFY_WITH_TIMEOUT(window.fleetView()->tile("r1"), 5000);
             window.close();
         }
         MainWindow again;
         again.start();
-        QTRY_COMPARE_WITH_TIMEOUT(again.fleetView()->tiles().size(), 1, 5000);
+        QTRY_VERIFY_WITH_TIMEOUT(again.fleetView()->tile("r1"), 5000);
         again.close();
 
         // A login whose password was not kept is not tried.
@@ -217,6 +227,116 @@ private slots:
         window.close();
     }
 
+    // A bridge that dies is named, not the robot's link: killed while its
+    // robot drove (the robot may drive on; its driver was cut off), and
+    // killed with the robot standing.
+    void aKilledBridgeIsNamedAndItsRobotMayDriveOn()
+    {
+        MosquittoBroker broker;
+        QVERIFY2(broker.start(), qPrintable(broker.error()));
+        FakeBridge r3(QStringLiteral("r3"));
+        QVERIFY(r3.start(broker.port()));
+        r3.publishState();
+        // r1 and r2's bridges: processes of their own, killed as a crash would.
+        std::vector<std::unique_ptr<QProcess>> bridgeProcesses;
+        const auto bridgeProcess = [&](const QString &name) {
+            auto process = std::make_unique<QProcess>();
+            process->start("/usr/bin/stdbuf", {"-oL", "/usr/bin/mosquitto_sub", "-d", "-p", QString::number(broker.port()),
+                                               "-h", "127.0.0.1", "-t", "x", "--will-topic", "roomba/" + name + "/state",
+                                               "--will-payload", QStringLiteral(R"({"online":false,"name":"%1"})").arg(name),
+                                               "--will-retain"});
+            QByteArray said;
+            const bool up = process->waitForStarted()
+                            && QTest::qWaitFor([&] { return (said += process->readAllStandardOutput()).contains("CONNACK"); },
+                                               5000);
+            bridgeProcesses.push_back(std::move(process));
+            return up;
+        };
+        QVERIFY(bridgeProcess("r1"));
+        QVERIFY(bridgeProcess("r2"));
+        r3.publishRaw("roomba/r1/state", R"({"online":true,"name":"r1","mode":"safe","link":"streaming",)"
+                                         R"("battery_percent":80,"controller":"alice","program":"square.py"})", true);
+        r3.publishRaw("roomba/r2/state", R"({"online":true,"name":"r2","mode":"safe","link":"streaming","battery_percent":70})",
+                      true);
+        MainWindow window;
+        window.start();
+        QSignalSpy said(window.fleetConsole(), &FleetConsole::message);
+        QVERIFY(window.connectToBroker(*mqtt::BrokerAddress::fromUrl(broker.url(), nullptr)));
+        FleetView &view = *window.fleetView();
+        QTRY_VERIFY_WITH_TIMEOUT(view.tile("r1") && view.tile("r2") && view.tile("r3"), 5000);
+        // r1 drives at 200 mm/s (packets 39, 41, 42: the drive it was asked for).
+        QJsonObject driving = telemetry(0, {});
+        for (const char *key : {"requested_velocity", "requested_right_velocity", "requested_left_velocity"})
+            driving[key] = 200;
+        r3.publishRaw("roomba/r1/telemetry", QJsonDocument(driving).toJson(QJsonDocument::Compact));
+        r3.publishRaw("roomba/r2/telemetry", QJsonDocument(telemetry(0, {})).toJson(QJsonDocument::Compact));
+        QTRY_COMPARE_WITH_TIMEOUT(view.tile("r1")->controlText(), QStringLiteral("alice's program square.py"), 5000);
+        QTRY_VERIFY_WITH_TIMEOUT(window.fleetConsole()->directory().robot("r1")->latest.raw(41) == 200, 5000);
+
+        bridgeProcesses[0]->kill();
+        QTRY_COMPARE_WITH_TIMEOUT(view.tile("r1")->statusText(), QStringLiteral("OFFLINE"), 5000);
+        const FleetTile &r1 = *view.tile("r1");
+        QCOMPARE(r1.modeOnlyText(), QStringLiteral("MAY STILL BE MOVING"));
+        QCOMPARE(r1.hazardText(), QStringLiteral("pick it up, switch it off"));
+        QVERIFY2(r1.linkText().startsWith(QStringLiteral("bridge offline since ")), qPrintable(r1.linkText()));
+        QCOMPARE(r1.controlText(), QStringLiteral("alice's program cut off"));
+        QTRY_VERIFY_WITH_TIMEOUT(!said.isEmpty(), 5000);
+        const QString r1Said = said.last().at(0).toString();
+        QVERIFY2(r1Said.startsWith(QStringLiteral("r1's bridge went offline at "))
+                     && r1Said.contains(QStringLiteral("while the robot was driving, cutting off alice's program square.py"))
+                     && r1Said.contains(QStringLiteral("A real robot keeps its last drive when its bridge dies: pick it "
+                                                       "up and hold its power button to switch it off")),
+                 qPrintable(r1Said));
+        QVERIFY(r1.toolTip().contains(r1Said));
+
+        bridgeProcesses[1]->kill();
+        QTRY_COMPARE_WITH_TIMEOUT(view.tile("r2")->statusText(), QStringLiteral("OFFLINE"), 5000);
+        const FleetTile &r2 = *view.tile("r2");
+        QVERIFY2(r2.linkText().startsWith(QStringLiteral("bridge offline since ")), qPrintable(r2.linkText()));
+        QCOMPARE(r2.controlText(), QStringLiteral("nobody in control"));
+        QVERIFY(r2.modeOnlyText() != QStringLiteral("MAY STILL BE MOVING"));
+        QTRY_VERIFY_WITH_TIMEOUT(said.last().at(0).toString().startsWith(QStringLiteral("r2's bridge went offline")), 5000);
+        QVERIFY2(said.last().at(0).toString().contains(QStringLiteral("(the broker is fine): check the bridge on the "
+                                                                      "computer beside the robot")),
+                 qPrintable(said.last().at(0).toString()));
+        saveShot(view, "fleet_bridges_killed.png");
+
+        window.close();
+    }
+
+    // The broker shuts down: the header says so at once, and what to check
+    // within seconds; r1's bridge, whose last will the broker sends as it
+    // goes, is not called offline.
+    void aBrokerShutDownIsNotItsBridgesGone()
+    {
+        MosquittoBroker broker;
+        QVERIFY2(broker.start(), qPrintable(broker.error()));
+        FakeBridge r1(QStringLiteral("r1"));
+        QVERIFY(r1.start(broker.port()));
+        r1.publishState();
+        MainWindow window;
+        window.start();
+        QSignalSpy said(window.fleetConsole(), &FleetConsole::message);
+        QVERIFY(window.connectToBroker(*mqtt::BrokerAddress::fromUrl(broker.url(), nullptr)));
+        FleetView &view = *window.fleetView();
+        QTRY_VERIFY_WITH_TIMEOUT(view.tile("r1") && view.tile("r1")->values().online, 5000);
+
+        broker.stop();
+        QTRY_VERIFY_WITH_TIMEOUT(view.brokerText().contains(QStringLiteral("connection lost at ")), 2000);
+        QVERIFY(view.tile("r1")->values().online);
+        QTRY_VERIFY_WITH_TIMEOUT(view.brokerText().contains(QStringLiteral("stopped answering at")), 6000);
+        QVERIFY2(view.brokerText().contains(QStringLiteral("is it still running (a classroom's, on the teacher's "
+                                                           "machine), and is this computer still on its network?")),
+                 qPrintable(view.brokerText()));
+        QCOMPARE(view.tile("r1")->statusText(), QStringLiteral("NO BROKER"));
+        QVERIFY(view.tile("r1")->values().online);
+        QCOMPARE(view.tile("r1")->linkText(), QStringLiteral("broker unreachable"));
+        for (const QList<QVariant> &args : said)
+            QVERIFY2(!args.at(0).toString().contains(QStringLiteral("r1's bridge")), qPrintable(args.at(0).toString()));
+        saveShot(view, "fleet_broker_killed.png");
+        window.close();
+    }
+
     void aClassroomOnOneBroker()
     {
         MosquittoBroker broker;
@@ -244,7 +364,10 @@ private slots:
         FleetView &view = *window.fleetView();
         QVERIFY(view.isVisible());
         QVERIFY(view.isWindow());
-        QTRY_COMPARE_WITH_TIMEOUT(view.tiles().size(), 12, 5000);
+        // The broker's twelve beside the window's own robot.
+        QTRY_COMPARE_WITH_TIMEOUT(view.tiles().size(), 13, 5000);
+        QVERIFY(view.tile(local->name()));
+        QCOMPARE(view.tile(local->name())->values().controller, QString("this window"));
 
         // Telemetry and stats: one bumped, one at a cliff, every tile live.
         for (const auto &b : bridges) {

@@ -29,7 +29,7 @@ struct ProjectorClass {
     MainWindow window;
     ProjectorView *projector = nullptr;
 
-    const LessonRunner &runner() { return window.lessonPanel()->runner(); }
+    const LessonRunner &runner() { return window.dock<LessonPanel>()->runner(); }
 
     bool start(const QString &lesson)
     {
@@ -38,7 +38,7 @@ struct ProjectorClass {
         window.start(oilink::LinkSettings::virtualRobotOf(oi::ProfileId::Create2, oi::ProfileId::Create2));
         if (!QTest::qWaitFor([this] { return window.session().state() == oilink::LinkState::Streaming; }, 10000))
             return false;
-        if (!window.lessonPanel()->openLesson(QStringLiteral(":/lessons/%1.json").arg(lesson)))
+        if (!window.dock<LessonPanel>()->openLesson(QStringLiteral(":/lessons/%1.json").arg(lesson)))
             return false;
         window.setProjectorView(true);
         projector = window.projectorView();

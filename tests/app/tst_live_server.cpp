@@ -4,7 +4,10 @@
 // and the window's robots advertised and withdrawn as they come and go.
 
 #include "live_server_actions.h"
+#include "display_tick.h"
 #include "main_window.h"
+#include "replay_bar.h"
+#include "robot_fleet.h"
 
 #include <QCheckBox>
 #include <QDialog>
@@ -18,6 +21,13 @@
 #include <QTest>
 #include <QWebSocket>
 #include <QWebSocketHandshakeOptions>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QRegularExpression>
+#include <QTemporaryDir>
+#include <QTimer>
+#include <QtEndian>
 
 namespace {
 
@@ -36,6 +46,70 @@ QString texts(QDialog *dialog)
     for (const QLabel *label : dialog->findChildren<QLabel *>())
         all << label->text();
     return all.join('\n');
+}
+
+// A client that reads one topic and keeps each message's time.
+struct TopicReader {
+    QWebSocket socket;
+    QString topic;
+    QList<quint64> timesNs;
+
+    TopicReader(const QString &url, const QString &topicToRead) : topic(topicToRead)
+    {
+        QObject::connect(&socket, &QWebSocket::textMessageReceived, [this](const QString &text) {
+            const QJsonObject message = QJsonDocument::fromJson(text.toUtf8()).object();
+            if (message.value("op").toString() != "advertise")
+                return;
+            for (const QJsonValue &channel : message.value("channels").toArray())
+                if (channel.toObject().value("topic").toString() == topic) {
+                    const QJsonObject subscribe{
+                        {"op", "subscribe"},
+                        {"subscriptions", QJsonArray{QJsonObject{{"id", 1}, {"channelId", channel.toObject().value("id")}}}}};
+                    socket.sendTextMessage(QString::fromUtf8(QJsonDocument(subscribe).toJson(QJsonDocument::Compact)));
+                }
+        });
+        QObject::connect(&socket, &QWebSocket::binaryMessageReceived, [this](const QByteArray &message) {
+            if (message.size() >= 13 && message.at(0) == 1)
+                timesNs << qFromLittleEndian<quint64>(message.constData() + 5);
+        });
+        QWebSocketHandshakeOptions options;
+        options.setSubprotocols({foxglove::kSubprotocol});
+        socket.open(QUrl(url), options);
+    }
+    // Messages a second, by their own times (the frames' read times).
+    double rate() const
+    {
+        return timesNs.size() < 2 ? 0 : (timesNs.size() - 1) / (double(timesNs.last() - timesNs.first()) / 1e9);
+    }
+};
+
+// The viewer's side of playbackControl: its requests, the server's states.
+struct PlaybackState {
+    int status = -1;
+    quint64 currentNs = 0;
+    float speed = 0;
+    bool didSeek = false;
+    QByteArray requestId;
+};
+QList<PlaybackState> playbackStates(const QList<QByteArray> &binaries)
+{
+    QList<PlaybackState> states;
+    for (const QByteArray &b : binaries)
+        if (b.size() >= 19 && b.at(0) == 5)
+            states << PlaybackState{b.at(1), qFromLittleEndian<quint64>(b.constData() + 2),
+                                    qFromLittleEndian<float>(b.constData() + 10), b.at(14) != 0, b.mid(19)};
+    return states;
+}
+QByteArray playbackRequest(bool play, float speed, std::optional<quint64> seekNs, const QByteArray &id)
+{
+    QByteArray m(1 + 1 + 4 + 1 + 8 + 4, '\0');
+    m[0] = 3;
+    m[1] = play ? 0 : 1;
+    qToLittleEndian<float>(speed, m.data() + 2);
+    m[6] = seekNs ? 1 : 0;
+    qToLittleEndian<quint64>(seekNs.value_or(0), m.data() + 7);
+    qToLittleEndian<quint32>(quint32(id.size()), m.data() + 15);
+    return m + id;
 }
 
 } // namespace
@@ -137,6 +211,116 @@ private slots:
         dialog->findChild<QCheckBox *>()->setChecked(true);
         QVERIFY(live->server().isListening());
         QVERIFY(texts(dialog).contains(live->server().url()));
+    }
+
+    // A client of the live data gets each frame when the link read it, not
+    // the last of each batch the display takes at its tick. With the window
+    // held at its quiet pace (a tick every 198 ms, as when nothing moves),
+    // display-paced data came at about 12 a second; fed at read time it
+    // fills most of the 50 a second the server sends, even on a busy machine.
+    void theLiveDataKeepsTheRobotsPaceWhateverTheWindowKeeps()
+    {
+        MainWindow window;
+        window.show();
+        foxglove::ServerAddress address;
+        address.port = 0;
+        QVERIFY(window.liveServer()->start(address));
+        window.start(oilink::LinkSettings::virtualRobotOf(oi::ProfileId::Create2, oi::ProfileId::Create2));
+        QTRY_VERIFY_WITH_TIMEOUT(window.fleet().selected() && window.fleet().selected()->isLive(), 10000);
+        // The window slows its display when the frames stop changing; here
+        // it is held there whatever they do.
+        QTimer holdQuiet;
+        QObject::connect(&holdQuiet, &QTimer::timeout, [] { DisplayTick::instance().setQuiet(true); });
+        holdQuiet.start(20);
+        TopicReader reader(window.liveServer()->server().url(), "/r1/telemetry");
+        QTRY_VERIFY_WITH_TIMEOUT(reader.timesNs.size() >= 150, 30000);
+        QVERIFY(DisplayTick::instance().isQuiet());
+        qInfo("%.1f telemetry messages a second at the client", reader.rate());
+        QVERIFY2(reader.rate() >= 30, qPrintable(QStringLiteral("%1 messages a second").arg(reader.rate())));
+    }
+
+    // A replay served live: the viewer's timeline seeks, pauses, plays and
+    // sets the speed as the replay bar does, and the replay bar's own moves
+    // and the replay's end are said back.
+    void theViewersTimelineDrivesTheReplay()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath("run.oirec");
+        MainWindow window;
+        window.show();
+        window.start(oilink::LinkSettings::virtualRobotOf(oi::ProfileId::Create2, oi::ProfileId::Create2));
+        QTRY_COMPARE_WITH_TIMEOUT(window.session().state(), oilink::LinkState::Streaming, 10000);
+        window.startRecording(path);
+        QTRY_VERIFY_WITH_TIMEOUT(window.session().recording().bytesWritten > 20000, 20000);
+        window.stopRecording();
+        QTRY_VERIFY_WITH_TIMEOUT(!window.session().recording().active, 10000);
+        RobotSession *recorded = &window.session();
+        QString error;
+        QVERIFY2(window.openRecording(path, &error), qPrintable(error));
+        QVERIFY(window.fleet().removeRobot(recorded)); // the replay alone is served
+        QVERIFY(window.session().isReplay());
+        QTRY_VERIFY_WITH_TIMEOUT(window.replayBar()->position().durationUs > 2'000'000, 10000);
+        foxglove::ServerAddress address;
+        address.port = 0;
+        QVERIFY(window.liveServer()->start(address));
+
+        const QStringList telemetry = topicsOf(window.liveServer()->server()).filter(QRegularExpression("^/r\\d+/telemetry$"));
+        QCOMPARE(telemetry.size(), 1); // the replay's
+        TopicReader viewer(window.liveServer()->server().url(), telemetry.first());
+        QList<QByteArray> binaries;
+        QJsonObject info;
+        QObject::connect(&viewer.socket, &QWebSocket::binaryMessageReceived, [&](const QByteArray &b) { binaries << b; });
+        QObject::connect(&viewer.socket, &QWebSocket::textMessageReceived, [&](const QString &text) {
+            const QJsonObject m = QJsonDocument::fromJson(text.toUtf8()).object();
+            if (m.value("op").toString() == "serverInfo")
+                info = m;
+        });
+        QTRY_VERIFY_WITH_TIMEOUT(info.value("capabilities").toArray().contains("playbackControl"), 10000);
+        const QJsonObject start = info.value("dataStartTime").toObject();
+        const quint64 startNs = quint64(start.value("sec").toInteger()) * 1'000'000'000 + quint64(start.value("nsec").toInteger());
+        const QJsonObject end = info.value("dataEndTime").toObject();
+        const quint64 endNs = quint64(end.value("sec").toInteger()) * 1'000'000'000 + quint64(end.value("nsec").toInteger());
+        QCOMPARE(qint64(endNs - startNs) / 1000, window.replayBar()->position().durationUs);
+
+        // Paused at 1 s: answered, and the next message is the first frame from then.
+        const quint64 seekNs = startNs + 1'000'000'000;
+        const qsizetype heard = viewer.timesNs.size();
+        viewer.socket.sendBinaryMessage(playbackRequest(false, 1, seekNs, "seek-1"));
+        const auto answerTo = [&](const QByteArray &id) {
+            for (const PlaybackState &state : playbackStates(binaries))
+                if (state.requestId == id)
+                    return std::optional(state);
+            return std::optional<PlaybackState>();
+        };
+        QTRY_VERIFY_WITH_TIMEOUT(answerTo("seek-1"), 5000);
+        QVERIFY(answerTo("seek-1")->didSeek);
+        QCOMPARE(answerTo("seek-1")->status, 1); // paused
+        QCOMPARE(answerTo("seek-1")->currentNs, seekNs);
+        QTRY_VERIFY2_WITH_TIMEOUT(viewer.timesNs.size() > heard && viewer.timesNs.last() >= seekNs,
+                                  qPrintable(QStringLiteral("%1 messages, %2 before; the last %3 ms from the seek")
+                                                 .arg(viewer.timesNs.size())
+                                                 .arg(heard)
+                                                 .arg((qint64(viewer.timesNs.value(viewer.timesNs.size() - 1)) - qint64(seekNs)) / 1e6)),
+                                  5000);
+        QVERIFY2(viewer.timesNs.last() < seekNs + 100'000'000, qPrintable(QString::number(viewer.timesNs.last() - seekNs)));
+        QTRY_VERIFY_WITH_TIMEOUT(!window.replayBar()->position().playing
+                                     && std::abs(window.replayBar()->position().positionUs - 1'000'000) < 100'000,
+                                 5000);
+
+        // Played at 4×: the replay bar says so.
+        viewer.socket.sendBinaryMessage(playbackRequest(true, 4, std::nullopt, "play-4"));
+        QTRY_VERIFY_WITH_TIMEOUT(window.replayBar()->position().playing && window.replayBar()->position().speed == 4, 5000);
+        QTRY_VERIFY_WITH_TIMEOUT(answerTo("play-4"), 5000); // the answer crosses the socket after the bar moved
+        QCOMPARE(answerTo("play-4")->speed, 4.0f);
+
+        // The replay bar jumps back: the viewer's panels start afresh.
+        const qsizetype states = playbackStates(binaries).size();
+        window.session().controlReplay(oilink::ReplayCommand::seek(0));
+        QTRY_VERIFY_WITH_TIMEOUT(playbackStates(binaries).size() > states && playbackStates(binaries).last().didSeek, 5000);
+        QVERIFY(playbackStates(binaries).last().requestId.isEmpty());
+
+        // Played to its end: said.
+        QTRY_VERIFY_WITH_TIMEOUT(playbackStates(binaries).last().status == 3, 20000);
     }
 
     void theWindowsRobotsAreAdvertisedAndWithdrawn()

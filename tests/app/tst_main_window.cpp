@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The assembled window: connecting to the virtual robot, mode buttons down
 // to the bytes, settings, and a bad port.
+#include "profile_probe.h"
 #include "main_window.h"
 #include "comparison_bar.h"
 #include "crowded_recording.h" // tests/common
@@ -11,6 +12,8 @@
 #include "recording_actions.h"
 #include "room_actions.h"
 #include "connection_bar.h"
+#include "drive_pad.h"
+#include "robot_list.h"
 #include "mode_panel.h"
 #include "lesson_panel.h"
 #include "lesson_runner.h"
@@ -18,6 +21,7 @@
 #include "projector_view.h"
 #include "recording_transport.h"
 #include "robot_diagram.h"
+#include "robot_view.h"
 #include "odometry_map.h"
 #include "display_tick.h"
 #include "on_screen.h"
@@ -97,6 +101,41 @@ private:
     Recording *m_recording;
 };
 
+// A dock that only a row of the dock table adds: it says which robot and
+// profile it was shown, and keeps the display frames of its ticks.
+class CountingView : public QLabel, public RobotView {
+    Q_OBJECT
+public:
+    using QLabel::QLabel;
+    void showProfile(const oi::RobotProfile &profile) override { shownProfile = profile.id; }
+    void tick(quint64 frame) override { ticks << frame; }
+    QString shownRobot;
+    std::optional<oi::ProfileId> shownProfile;
+    QList<quint64> ticks;
+
+protected:
+    void showRobot(RobotSession &robot) override { shownRobot = robot.name(); }
+};
+
+const DockRow kCountingRow{.objectName = "countingDock",
+                           .title = "Counting",
+                           .area = Qt::BottomDockWidgetArea,
+                           .make =
+                               [](const DockContext &c) {
+                                   auto *view = new CountingView(c.window);
+                                   return DockPane{view, view};
+                               },
+                           .lazy = true,
+                           .refreshEveryFrames = 4};
+
+QMenu *viewMenu(MainWindow &window)
+{
+    for (QAction *entry : window.menuBar()->actions())
+        if (entry->menu() && entry->menu()->title() == "&View")
+            return entry->menu();
+    return nullptr;
+}
+
 } // namespace
 
 class TestMainWindow : public QObject {
@@ -122,12 +161,12 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(window.statusText().contains("frames/s"), 10000);
 
         // Safe mode, as the robot reports it back.
-        QTest::mouseClick(window.modePanel()->button("safe"), Qt::LeftButton);
+        QTest::mouseClick(window.dock<ModePanel>()->button("safe"), Qt::LeftButton);
         QTRY_COMPARE_WITH_TIMEOUT(window.session().latest().oiMode(), oi::OiMode::Safe, 10000);
         window.refreshDisplay();
-        QCOMPARE(window.modePanel()->highlightedMode(), std::optional<oi::OiMode>(oi::OiMode::Safe));
+        QCOMPARE(window.dock<ModePanel>()->highlightedMode(), std::optional<oi::OiMode>(oi::OiMode::Safe));
 
-        QTest::mouseClick(window.connectionBar()->findChild<QPushButton *>("disconnect"), Qt::LeftButton);
+        QTest::mouseClick(window.dock<ConnectionBar>()->findChild<QPushButton *>("disconnect"), Qt::LeftButton);
         QTRY_COMPARE_WITH_TIMEOUT(window.session().state(), oilink::LinkState::Closed, 10000);
         window.refreshDisplay();
         QVERIFY(window.statusText().contains("NO LIVE DATA"));
@@ -151,15 +190,16 @@ private slots:
         const quint64 frames = window.session().snapshotCount();
         QTRY_VERIFY_WITH_TIMEOUT(window.session().snapshotCount() > frames + 10, 10000);
 
-        QTest::mouseClick(window.modePanel()->button("safe"), Qt::LeftButton);
+        QTest::mouseClick(window.dock<ModePanel>()->button("safe"), Qt::LeftButton);
         QTRY_VERIFY_WITH_TIMEOUT(!tick.isQuiet(), 10000);
-        QTRY_COMPARE_WITH_TIMEOUT(window.modePanel()->highlightedMode(), std::optional<oi::OiMode>(oi::OiMode::Safe),
+        QTRY_COMPARE_WITH_TIMEOUT(window.dock<ModePanel>()->highlightedMode(), std::optional<oi::OiMode>(oi::OiMode::Safe),
                                   10000);
         window.close();
     }
 
     // Clean on the virtual robot: it runs its own program, and the window
-    // says what is happening and how to end it.
+    // says what is happening and how to end it, on every view, for as long
+    // as it runs, and only that; after Disconnect no mode is shown at all.
     void cleanRunsTheRobotsOwnProgram()
     {
         MainWindow window;
@@ -168,18 +208,35 @@ private slots:
         QTRY_COMPARE_WITH_TIMEOUT(window.session().state(), oilink::LinkState::Streaming, 10000);
         window.room()->moveRobot(window.roomRobot(), {0, 0, 0, 0});
         QTRY_VERIFY_WITH_TIMEOUT(window.room()->robot(window.roomRobot())->pose.xMm == 0, 10000);
-        QTest::mouseClick(window.modePanel()->button("clean"), Qt::LeftButton);
-        const QString said = window.statusBar()->currentMessage();
-        QVERIFY2(said.contains("its own program") && said.contains("Space"), qPrintable(said));
+        QTest::mouseClick(window.dock<ModePanel>()->button("clean"), Qt::LeftButton);
         QTRY_VERIFY_WITH_TIMEOUT(window.room()->robot(window.roomRobot())->pose.xMm > 100, 10000);
         QCOMPARE(window.session().mode().reported(), std::optional(oi::OiMode::Passive));
-        // Stop all ends the program (Drive alone is ignored in Passive): Safe, and still.
-        QTest::keyClick(window.robotDiagram(), Qt::Key_Escape, Qt::ShiftModifier);
+        const QString cleaning = "Cleaning (its own program) · Space stops it";
+        window.refreshDisplay();
+        QCOMPARE(window.dock<ModePanel>()->safetyMessage(), cleaning);
+        QCOMPARE(window.dock<DrivePad>()->passiveText(), cleaning);
+        QVERIFY2(window.statusText().contains(cleaning), qPrintable(window.statusText()));
+        QVERIFY2(!window.statusText().contains("You asked for Passive"), qPrintable(window.statusText()));
+        // No other message is put over it.
+        QCOMPARE(window.statusBar()->currentMessage(), QString());
+        // Space, as said, ends the program (Drive alone is ignored in Passive): Safe, and still.
+        window.robotDiagram()->setFocus();
+        QTest::keyClick(window.robotDiagram(), Qt::Key_Space);
         QTRY_COMPARE_WITH_TIMEOUT(window.session().mode().reported(), std::optional(oi::OiMode::Safe), 10000);
+        window.refreshDisplay();
+        QCOMPARE(window.dock<ModePanel>()->safetyMessage(), QString());
         const quint64 frames = window.session().snapshotCount();
         const double x = window.room()->robot(window.roomRobot())->pose.xMm;
         QTRY_VERIFY_WITH_TIMEOUT(window.session().snapshotCount() > frames + 20, 10000);
         QCOMPARE(window.room()->robot(window.roomRobot())->pose.xMm, x);
+
+        // Disconnected, the robot's mode is not known: nothing shows one as current.
+        QTest::mouseClick(window.dock<ConnectionBar>()->findChild<QPushButton *>("disconnect"), Qt::LeftButton);
+        QTRY_COMPARE_WITH_TIMEOUT(window.session().state(), oilink::LinkState::Closed, 10000);
+        window.refreshDisplay();
+        QCOMPARE(window.dock<ModePanel>()->highlightedMode(), std::nullopt);
+        QCOMPARE(window.findChild<QLabel *>("modeLabel")->text(), QString("Mode: unknown"));
+        QTRY_COMPARE_WITH_TIMEOUT((window.refreshDisplay(), window.robotList()->card(0)->values().mode), QString(), 5000);
     }
 
     // A view behind another dock's tab keeps what comes and draws none of
@@ -195,14 +252,14 @@ private slots:
         window.start(oilink::LinkSettings::virtualRobotOf(oi::ProfileId::Create2, oi::ProfileId::Create2));
         QTRY_VERIFY_WITH_TIMEOUT(window.session().snapshotCount() > 10, 10000);
         // Behind the plots' tab: visible to Qt, nothing of it on screen.
-        ByteInspector *inspector = window.byteInspector();
+        ByteInspector *inspector = window.dock<ByteInspector>();
         const QAbstractItemModel *log = inspector->findChild<QAbstractItemView *>("byteLog")->model();
         const DisplayTick &tick = DisplayTick::instance();
-        const OdometryMap *map = window.odometryMap();
+        const OdometryMap *map = window.dock<OdometryMap>();
         QVERIFY(inspector->isVisible());
         QVERIFY(!isOnScreen(inspector));
-        QVERIFY(!isOnScreen(window.odometryMap()));
-        QVERIFY(isOnScreen(window.sensorPlots()));
+        QVERIFY(!isOnScreen(window.dock<OdometryMap>()));
+        QVERIFY(isOnScreen(window.dock<SensorPlots>()));
         const qsizetype entries = inspector->lastEntries(1000).size();
         QTRY_VERIFY_WITH_TIMEOUT(inspector->lastEntries(1000).size() > entries + 10, 10000);
         QCOMPARE(log->rowCount(), 0);
@@ -217,15 +274,15 @@ private slots:
         QTRY_VERIFY(inspector->packetTable()->model()->rowCount() > 10);
         const int rows = log->rowCount();
         QTRY_VERIFY(log->rowCount() > rows);
-        QVERIFY(!isOnScreen(window.sensorPlots()));
+        QVERIFY(!isOnScreen(window.dock<SensorPlots>()));
 
         // Each stops at its first tick behind another tab.
         window.findChild<QDockWidget *>("mapDock")->raise();
-        QTRY_VERIFY(isOnScreen(window.odometryMap()));
+        QTRY_VERIFY(isOnScreen(window.dock<OdometryMap>()));
         QVERIFY(tick.isListening(map));
         QTRY_VERIFY(!tick.hasFrameFor(inspector));
         window.findChild<QDockWidget *>("plotsDock")->raise();
-        QTRY_VERIFY(!isOnScreen(window.odometryMap()));
+        QTRY_VERIFY(!isOnScreen(window.dock<OdometryMap>()));
         QTRY_VERIFY(!tick.isListening(map));
     }
 
@@ -238,15 +295,19 @@ private slots:
         oilink::LinkSettings settings = oilink::LinkSettings::serial("/dev/recording", oi::ProfileId::Create2);
         window.show();
         window.start(settings);
-        // Opening sends a stop and Start, then the stream.
+        // Opening sends a stop, the Starts that finish a command an earlier
+        // program left half sent, then a stop and Start, then the stream.
         QTRY_COMPARE_WITH_TIMEOUT(window.session().state(), oilink::LinkState::Streaming, 10000);
         const QList<QByteArray> opening = recording.take();
-        QCOMPARE(text(opening.first()), QString("137 0 0 0 0 138 0 128"));
-        window.modePanel()->setFullModeConfirmation([](QWidget *) { return true; });
+        QVERIFY(opening.size() >= 3);
+        QCOMPARE(text(opening.at(0)), QString("137 0 0 0 0 138 0"));
+        QCOMPARE(opening.at(1), QByteArray(qsizetype(oilink::ProfileProbe::finishingStarts().size()), char(128)));
+        QCOMPARE(text(opening.at(2)), QString("137 0 0 0 0 138 0 128"));
+        window.dock<ModePanel>()->setFullModeConfirmation([](QWidget *) { return true; });
         const std::pair<const char *, const char *> buttons[] = {
             {"safe", "131"}, {"full", "132"}, {"passive", "128"}, {"seek-dock", "143"}, {"stop", "173"}};
         for (const auto &[name, bytes] : buttons) {
-            QTest::mouseClick(window.modePanel()->button(name), Qt::LeftButton);
+            QTest::mouseClick(window.dock<ModePanel>()->button(name), Qt::LeftButton);
             QTRY_COMPARE_WITH_TIMEOUT(recording.count(), qsizetype(1), 5000);
             QCOMPARE(text(recording.take().first()), QString(bytes));
         }
@@ -267,16 +328,53 @@ private slots:
         QCOMPARE(text(recording.take().join()), QString("150 0 137 0 0 0 0 138 0 128"));
         // No link now: the mode buttons are off and say why, and send nothing.
         window.refreshDisplay();
-        QVERIFY(!window.modePanel()->button("safe")->isEnabled());
-        QVERIFY2(window.modePanel()->button("safe")->toolTip().contains("Not connected"),
-                 qPrintable(window.modePanel()->button("safe")->toolTip()));
-        QTest::mouseClick(window.modePanel()->button("safe"), Qt::LeftButton);
+        QVERIFY(!window.dock<ModePanel>()->button("safe")->isEnabled());
+        QVERIFY2(window.dock<ModePanel>()->button("safe")->toolTip().contains("Not connected"),
+                 qPrintable(window.dock<ModePanel>()->button("safe")->toolTip()));
+        QTest::mouseClick(window.dock<ModePanel>()->button("safe"), Qt::LeftButton);
         QCOMPARE(recording.count(), qsizetype(0));
     }
 
     // Robot → Read firmware version… on the virtual robot: it asks first,
     // saying the robot will be reset; declined, nothing is sent; agreed, a
     // Reset (7) goes out and the banner's version and its corrections show.
+    // The robot goes silent right after its Clean/Power button was held:
+    // switched off. The connection bar says so with a Wake button beside
+    // the words; pressed, it pulses the BRC pin, and once the robot listens
+    // the link sends Start and the stream again.
+    void wakeButtonSwitchesOnARobotSwitchedOffAtItsButton()
+    {
+        Recording recording;
+        recording.brcInReach = true;
+        recording.mode = 1;
+        MainWindow window;
+        window.fleet().setTransportFactory(
+            [&recording](const oilink::LinkSettings &) { return new RecordingTransport(&recording); });
+        window.show();
+        window.start(oilink::LinkSettings::serial("/dev/recording", oi::ProfileId::Create2));
+        QTRY_COMPARE_WITH_TIMEOUT(window.session().state(), oilink::LinkState::Streaming, 10000);
+        QVERIFY(!window.dock<ConnectionBar>()->wakeOffered());
+        recording.buttons = oi::bit::ButtonClean;
+        QTRY_VERIFY_WITH_TIMEOUT(window.session().latest().button(oi::Button::Clean), 5000);
+        const int pullsBeforeOff = recording.brcPulls;
+        recording.streaming = false; // switched off
+        QTRY_VERIFY_WITH_TIMEOUT(window.dock<ConnectionBar>()->wakeOffered(), 5000);
+        QVERIFY2(window.dock<ConnectionBar>()->errorText().contains("switched off at its power button"),
+                 qPrintable(window.dock<ConnectionBar>()->errorText()));
+        QCOMPARE(recording.brcPulls, pullsBeforeOff); // no pulse of the link's own
+        recording.take();
+        QPushButton *wake = window.dock<ConnectionBar>()->findChild<QPushButton *>("wake");
+        QVERIFY(wake && wake->isVisible());
+        QTest::mouseClick(wake, Qt::LeftButton);
+        QTRY_COMPARE_WITH_TIMEOUT(recording.brcPulls, pullsBeforeOff + 1, 5000);
+        // Awake: Start and Stream follow.
+        QTRY_VERIFY_WITH_TIMEOUT(text(recording.written()).contains(QString("128 148")), 5000);
+        recording.buttons = 0;
+        recording.streaming = true;
+        QTRY_COMPARE_WITH_TIMEOUT(window.session().state(), oilink::LinkState::Streaming, 10000);
+        QTRY_VERIFY_WITH_TIMEOUT(!window.dock<ConnectionBar>()->wakeOffered(), 5000);
+    }
+
     void readFirmwareVersionOnTheVirtualRobot()
     {
         Recording recording;
@@ -313,7 +411,7 @@ private slots:
         QVERIFY2(answer.contains("nothing needs correcting"), qPrintable(answer));
         QVERIFY2(answer.contains("r3_robot/tags/release-3.8.2"), qPrintable(answer));
         QCOMPARE(window.session().firmwareRelease(), QString("release-3.8.2"));
-        QVERIFY(!window.sensorGauges()->gauge("requested_radius")->isGreyed());
+        QVERIFY(!window.dock<SensorGauges>()->gauge("requested_radius")->isGreyed());
     }
 
     // Firmware before 3.3.0 reports the requested radius wrongly: once the
@@ -331,7 +429,7 @@ private slots:
         window.show();
         window.start(oilink::LinkSettings::serial("/dev/recording", oi::ProfileId::Create2));
         QTRY_COMPARE_WITH_TIMEOUT(window.session().state(), oilink::LinkState::Streaming, 10000);
-        ValueGauge *radius = window.sensorGauges()->gauge("requested_radius");
+        ValueGauge *radius = window.dock<SensorGauges>()->gauge("requested_radius");
         QVERIFY(!radius->isGreyed());
         window.firmwareReading()->setConfirmation([](QWidget *, const QString &) { return true; });
         window.firmwareReading()->action()->trigger();
@@ -382,7 +480,7 @@ private slots:
         send(encoder.safe());
         send(encoder.drive(100, oi::kRadiusStraight));
         QTRY_COMPARE_WITH_TIMEOUT(window.session().latest().oiMode(), oi::OiMode::Passive, 10000);
-        QTRY_VERIFY_WITH_TIMEOUT((window.refreshDisplay(), window.modePanel()->safetyMessage().contains("cliff")), 5000);
+        QTRY_VERIFY_WITH_TIMEOUT((window.refreshDisplay(), window.dock<ModePanel>()->safetyMessage().contains("cliff")), 5000);
         const oi::SensorSnapshot &s = window.session().latest();
         QVERIFY(s.cliff(oi::CliffSensor::FrontLeft) || s.cliff(oi::CliffSensor::FrontRight)
                 || s.cliff(oi::CliffSensor::Left) || s.cliff(oi::CliffSensor::Right));
@@ -395,7 +493,7 @@ private slots:
 
         // The map shows the virtual robot's true pose beside the odometry.
         window.findChild<QDockWidget *>("mapDock")->raise();
-        QTRY_VERIFY_WITH_TIMEOUT(window.odometryMap()->poseText().contains("drift"), 5000);
+        QTRY_VERIFY_WITH_TIMEOUT(window.dock<OdometryMap>()->poseText().contains("drift"), 5000);
 
         // Each editor in its tab.
         for (const char *dock : {"songsDock", "ledsDock", "scheduleDock", "scriptDock", "inspectorDock", "motorsDock",
@@ -420,7 +518,7 @@ private slots:
         QTemporaryDir scratch;
         const QString dir = screenshotDir(scratch);
 
-        LessonPanel *lessons = window.lessonPanel();
+        LessonPanel *lessons = window.dock<LessonPanel>();
         window.findChild<QDockWidget *>("lessonDock")->raise();
         QVERIFY(lessons->openLesson(":/lessons/encoders_distance_angle.json"));
         const oi::CommandEncoder encoder(oi::profile(oi::ProfileId::Create2));
@@ -474,7 +572,7 @@ private slots:
         window.show();
         window.start(oilink::LinkSettings::virtualRobotOf(oi::ProfileId::Create2, oi::ProfileId::Create2));
         QTRY_COMPARE_WITH_TIMEOUT(window.session().state(), oilink::LinkState::Streaming, 10000);
-        LessonPanel *lessons = window.lessonPanel();
+        LessonPanel *lessons = window.dock<LessonPanel>();
         window.findChild<QDockWidget *>("lessonDock")->raise();
         QVERIFY(lessons->openLesson(":/lessons/cliff_sensors.json"));
         lessons->nextStep();
@@ -546,7 +644,7 @@ private slots:
         QTRY_COMPARE_WITH_TIMEOUT(window.session().latest().lightBumpSignal(oi::LightBumper::CenterLeft), 0, 5000);
 
         window.findChild<QDockWidget *>("mapDock")->raise();
-        OdometryMap *map = window.odometryMap();
+        OdometryMap *map = window.dock<OdometryMap>();
         QTRY_VERIFY(map->isVisible());
         map->setScale(0.12);
         map->setViewCentreMm({1000, 1100}); // the wall and where it goes, in a map of any height
@@ -621,6 +719,41 @@ private slots:
         QVERIFY(!again.findChild<ScheduleEditor *>());
     }
 
+    // A dock added by its row alone: an entry in the View menu, a place in
+    // the saved layout, its pane made when first shown and showing the
+    // selected robot, and its view ticked as often as the row says.
+    void aDockAddedByItsRowAlone()
+    {
+        {
+            MainWindow window(dashboardDocks() << kCountingRow);
+            window.show();
+            window.start();
+            QAction *entry = window.findChild<QAction *>("countingDockViewAction");
+            QVERIFY(entry);
+            QVERIFY(viewMenu(window)->actions().contains(entry));
+            QCOMPARE(entry->text(), QString("Counting"));
+            QVERIFY(!window.dock<CountingView>()); // tabbed behind the plots at first
+            entry->trigger();
+            auto *view = window.dock<CountingView>();
+            QVERIFY(view);
+            QCOMPARE(view->shownRobot, window.session().name());
+            QCOMPARE(view->shownProfile, std::optional(window.session().robotProfile().id));
+            DisplayTick::instance().setQuiet(false); // a frame a tick
+            view->ticks.clear();
+            for (int i = 0; i < 8; ++i)
+                window.refreshDisplay();
+            QCOMPARE(view->ticks.size(), 2);
+            QCOMPARE(view->ticks[1] - view->ticks[0], quint64(4));
+            window.close();
+        }
+        // The layout saved with its tab in front: restored so, and made at start.
+        MainWindow again(dashboardDocks() << kCountingRow);
+        again.show();
+        again.start();
+        QTRY_VERIFY(again.dock<CountingView>());
+        QVERIFY(again.findChild<QDockWidget *>("countingDock")->isVisible());
+    }
+
     void settingsRestore()
     {
         {
@@ -632,14 +765,14 @@ private slots:
             r.transport = ConnectionRequest::Transport::Virtual;
             r.profile = oi::ProfileId::Create1;
             // The robot is reconnected there, and that is what is kept.
-            emit window.connectionBar()->connectRequested(r);
+            emit window.dock<ConnectionBar>()->connectRequested(r);
             window.close();
         }
         MainWindow again;
         again.show();
         again.start();
         QVERIFY(again.findChild<QDockWidget *>("inspectorDock")->isHidden());
-        QCOMPARE(again.connectionBar()->request().profile, std::optional<oi::ProfileId>(oi::ProfileId::Create1));
+        QCOMPARE(again.dock<ConnectionBar>()->request().profile, std::optional<oi::ProfileId>(oi::ProfileId::Create1));
         QTRY_COMPARE_WITH_TIMEOUT(again.session().robotProfile().id, oi::ProfileId::Create1, 10000);
         again.resetLayout();
         QVERIFY(!again.findChild<QDockWidget *>("inspectorDock")->isHidden());
@@ -650,8 +783,8 @@ private slots:
         MainWindow window;
         window.show();
         window.start(oilink::LinkSettings::serial("/dev/roomba-does-not-exist", oi::ProfileId::Create2));
-        QTRY_VERIFY_WITH_TIMEOUT(!window.connectionBar()->errorText().isEmpty(), 10000);
-        const QString error = window.connectionBar()->errorText();
+        QTRY_VERIFY_WITH_TIMEOUT(!window.dock<ConnectionBar>()->errorText().isEmpty(), 10000);
+        const QString error = window.dock<ConnectionBar>()->errorText();
         QVERIFY2(error.contains("/dev/roomba-does-not-exist"), qPrintable(error));
         // One line; the connection check then says why in the status bar.
         QCOMPARE(error.count('\n'), 0);
@@ -701,14 +834,18 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(window.session().snapshotCount() > 5, 10000);
         window.refreshDisplay();
         QVERIFY2(window.statusText().contains("REPLAY"), qPrintable(window.statusText()));
+        // Recorded data is never called live, even while it plays.
+        QCOMPARE(window.dock<SensorPlots>()->statusText(), QStringLiteral("Replay, not live"));
+        QTRY_COMPARE_WITH_TIMEOUT((window.refreshDisplay(), window.robotList()->card(int(window.fleet().indexOf(&window.session())))->values().link),
+                                  QStringLiteral("replaying"), 5000);
         // A replay has no robot to command: the mode buttons say so, the
         // projector view offers no Enter Safe, and none is sent.
         QCOMPARE(window.session().mode().reported(), std::optional(oi::OiMode::Passive));
         QVERIFY(!window.projectorView()->enterSafeButton()->isVisibleTo(window.projectorView()));
         QVERIFY(!window.session().requestMode(oi::Command::Safe));
-        QVERIFY(!window.modePanel()->button("safe")->isEnabled());
-        QVERIFY2(window.modePanel()->button("safe")->toolTip().contains("recording"),
-                 qPrintable(window.modePanel()->button("safe")->toolTip()));
+        QVERIFY(!window.dock<ModePanel>()->button("safe")->isEnabled());
+        QVERIFY2(window.dock<ModePanel>()->button("safe")->toolTip().contains("recording"),
+                 qPrintable(window.dock<ModePanel>()->button("safe")->toolTip()));
 
         // Pause, then a frame forward and back with the bar's own buttons.
         auto *playPause = window.replayBar()->findChild<QToolButton *>("replayPlayPause");
@@ -729,6 +866,7 @@ private slots:
         QVERIFY(tenfold >= 0);
         speed->setCurrentIndex(tenfold);
         emit speed->activated(tenfold);
+        QSignalSpy errors(&window.session(), &RobotSession::errorOccurred);
         QTest::mouseClick(playPause, Qt::LeftButton);
         QTRY_VERIFY_WITH_TIMEOUT(window.replayBar()->position().finished, 20000);
         QCOMPARE(window.replayBar()->position().speed, 10.0);
@@ -736,11 +874,18 @@ private slots:
         // badge and the status bar say together that the replay has ended.
         QTRY_VERIFY_WITH_TIMEOUT(window.robotDiagram()->isStale(), 10000);
         window.refreshDisplay();
-        QCOMPARE(window.sensorPlots()->statusText(), QStringLiteral("Replay finished"));
+        QCOMPARE(window.dock<SensorPlots>()->statusText(), QStringLiteral("Replay finished"));
         QVERIFY2(window.statusText().contains("REPLAY FINISHED"), qPrintable(window.statusText()));
         auto *banner = window.findChild<QLabel *>("staleBanner");
         QVERIFY(banner && banner->isVisible());
         QVERIFY2(banner->text().contains("recording has ended"), qPrintable(banner->text()));
+        // The end is said as the end and nothing else (the link's side, on a
+        // clock the test advances, is tst_recording's aReplaysEndIsNotARobotAsleep).
+        QVERIFY2(errors.isEmpty(), qPrintable(errors.isEmpty() ? QString() : errors.first().first().toString()));
+        QCOMPARE(window.dock<ConnectionBar>()->errorText(), QString());
+        QTRY_COMPARE_WITH_TIMEOUT((window.refreshDisplay(), window.robotList()->card(int(window.fleet().indexOf(&window.session())))->values().link),
+                                  QStringLiteral("replay finished"), 5000);
+        QVERIFY2(window.statusText().contains("Link: replay finished"), qPrintable(window.statusText()));
         const double duration = window.replayBar()->position().durationUs / 1e6;
         QVERIFY2(std::abs(window.history().newestTime() - duration) < 0.15,
                  qPrintable(QString("newest sample at %1 s, recording %2 s long").arg(window.history().newestTime()).arg(duration)));
@@ -803,7 +948,7 @@ private slots:
         QSignalSpy said(window.markerActions(), &MarkerActions::message);
         window.show();
         window.start(oilink::LinkSettings::replayOf(path, oi::ProfileId::Create2, 115200, {7}));
-        QTRY_COMPARE_WITH_TIMEOUT(window.sensorPlots()->stack()->markers().size(), oilink::kMaxMarkers, 10000);
+        QTRY_COMPARE_WITH_TIMEOUT(window.dock<SensorPlots>()->stack()->markers().size(), oilink::kMaxMarkers, 10000);
         QCOMPARE(window.markerActions()->list()->table()->rowCount(), oilink::kMaxMarkers);
         QCOMPARE(said.size(), 1);
         QCOMPARE(said[0][0].toString(),
@@ -840,9 +985,9 @@ private slots:
         QTest::keyClick(note, Qt::Key_Return);
         QCOMPARE(window.session().markers().list().first().note, QString("hit the table leg"));
         QTRY_VERIFY(!note->isVisible()); // the toolbar lays itself out anew
-        QCOMPARE(window.sensorPlots()->stack()->markers().size(), 1);
-        QCOMPARE(window.sensorPlots()->stack()->markers().first().label, QString("hit the table leg"));
-        QCOMPARE(window.sensorPlots()->stack()->markers().first().seconds,
+        QCOMPARE(window.dock<SensorPlots>()->stack()->markers().size(), 1);
+        QCOMPARE(window.dock<SensorPlots>()->stack()->markers().first().label, QString("hit the table leg"));
+        QCOMPARE(window.dock<SensorPlots>()->stack()->markers().first().seconds,
                  window.session().markers().seconds(window.session().markers().list().first()));
         QCOMPARE(markers->list()->table()->item(0, 1)->text(), QString("hit the table leg"));
         for (int i = 0; i < 2; ++i) {
@@ -878,18 +1023,18 @@ private slots:
         QVERIFY2(error.contains("missing.oirec"), qPrintable(error));
         QVERIFY2(comparison->open(path, &error), qPrintable(error));
         QTRY_VERIFY(comparison->bar()->isVisible());
-        QCOMPARE(window.sensorPlots()->stack()->comparisonHistory(), &comparison->run()->history());
-        QVERIFY(!window.odometryMap()->comparisonPath().isEmpty());
+        QCOMPARE(window.dock<SensorPlots>()->stack()->comparisonHistory(), &comparison->run()->history());
+        QVERIFY(!window.dock<OdometryMap>()->comparisonPath().isEmpty());
         QCOMPARE(comparison->sharedMarkers(), (QStringList{"hit the table leg", "#2", "#3"}));
         QComboBox *align = comparison->bar()->alignment();
         QCOMPARE(align->count(), 4);
         align->setCurrentIndex(1);
         emit align->activated(1);
         QCOMPARE(comparison->alignedAt(), QString("hit the table leg"));
-        QCOMPARE(window.sensorPlots()->stack()->comparisonShiftSeconds(), 0.0);
+        QCOMPARE(window.dock<SensorPlots>()->stack()->comparisonShiftSeconds(), 0.0);
         QTest::mouseClick(comparison->bar()->closeButton(), Qt::LeftButton);
-        QCOMPARE(window.sensorPlots()->stack()->comparisonHistory(), nullptr);
-        QVERIFY(window.odometryMap()->comparisonPath().isEmpty());
+        QCOMPARE(window.dock<SensorPlots>()->stack()->comparisonHistory(), nullptr);
+        QVERIFY(window.dock<OdometryMap>()->comparisonPath().isEmpty());
         QTRY_VERIFY(!comparison->bar()->isVisible());
     }
 
@@ -970,8 +1115,8 @@ private slots:
         window.show();
         window.setLanguage("de");
         window.start(oilink::LinkSettings::serial("/dev/roomba-does-not-exist", oi::ProfileId::Create2));
-        QTRY_VERIFY_WITH_TIMEOUT(!window.connectionBar()->errorText().isEmpty(), 10000);
-        const QString error = window.connectionBar()->errorText();
+        QTRY_VERIFY_WITH_TIMEOUT(!window.dock<ConnectionBar>()->errorText().isEmpty(), 10000);
+        const QString error = window.dock<ConnectionBar>()->errorText();
         QVERIFY2(error.contains("/dev/roomba-does-not-exist: Anschluss nicht vorhanden"), qPrintable(error));
         window.setLanguage(QString());
     }
@@ -1021,8 +1166,8 @@ private slots:
         window.refreshDisplay();
         // Brand names, languages in their own words, and the example songs'
         // titles, which are the files' content.
-        const QStringList never{"Roomba 600 / Create 2", "Roomba 500", "Create", "English", "Deutsch", "Español",
-                                "C major scale", "Charge fanfare", "Happy birthday", "Ode to joy"};
+        const QStringList never{"Roomba 600 / Create 2", "Roomba 500", "Create", "Roomba 400-series (SCI, 2005)",
+                                "English", "Deutsch", "Español", "C major scale", "Charge fanfare", "Happy birthday", "Ode to joy"};
         QStringList missed;
         {
             ScopedPseudoTranslation pseudo;

@@ -111,7 +111,7 @@ private slots:
         window.resize(1280, 720);
         window.show();
         window.start();
-        QVERIFY(window.lessonPanel()->openLesson(":/lessons/cliff_sensors.json"));
+        QVERIFY(window.dock<LessonPanel>()->openLesson(":/lessons/cliff_sensors.json"));
         window.setProjectorView(true);
         ProjectorView *view = window.projectorView();
         // The offscreen screen is smaller: the view as a 1280×720 projector shows it.

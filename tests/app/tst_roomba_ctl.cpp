@@ -1,8 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // roomba-ctl as a script sees it: output, standard error and exit status.
+#include "process_run.h"
+
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QProcess>
+#include <QSettings>
+#include <QTemporaryDir>
 #include <QTest>
 
 #include <cmath>
@@ -17,22 +21,8 @@ struct Outcome {
 
 Outcome run(const QStringList &args, const QByteArray &input = {})
 {
-    QProcess p;
-    p.start(ROOMBA_CTL_PATH, args);
-    if (!p.waitForStarted())
-        return {};
-    p.write(input);
-    p.closeWriteChannel();
-    p.waitForFinished(30000);
-    return {p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1,
-            QString::fromUtf8(p.readAllStandardOutput()), QString::fromUtf8(p.readAllStandardError())};
-}
-
-QJsonObject json(const QString &line)
-{
-    QJsonParseError error;
-    const QJsonDocument doc = QJsonDocument::fromJson(line.toUtf8(), &error);
-    return error.error == QJsonParseError::NoError ? doc.object() : QJsonObject();
+    const ProcessRun r = runProcess(QStringLiteral(ROOMBA_CTL_PATH), args, {}, 30000, input);
+    return {r.exitCode, QString::fromUtf8(r.out), QString::fromUtf8(r.err)};
 }
 
 } // namespace
@@ -117,13 +107,59 @@ private slots:
             QCOMPARE(o.err.count('\n'), 1); // one line
     }
 
+    // What the dashboard kept per robot, read back as one JSON line per
+    // robot (or words); a robot measured for a moment is not measured yet.
+    void batteryHealth()
+    {
+        QTemporaryDir config;
+        qputenv("XDG_CONFIG_HOME", config.path().toUtf8());
+        const Outcome none = run({"battery"});
+        QCOMPARE(none.status, 1);
+        QVERIFY2(none.err.contains("no robot's battery has been measured yet"), qPrintable(none.err));
+        {
+            QSettings kept(QStringLiteral("RoombaDashboard"), QStringLiteral("roomba-dashboard"));
+            kept.beginGroup(QStringLiteral("battery/serial%3A%2Fdev%2FttyUSB0"));
+            kept.setValue("robotName", "Robot 3");
+            kept.beginWriteArray("measurements", 1);
+            kept.setArrayIndex(0);
+            kept.setValue("at", "2026-12-01T10:00:00");
+            kept.setValue("claimedCapacityMah", 3000);
+            kept.setValue("capacityMah", 1350.4);
+            kept.setValue("resistanceMohm", 900);
+            kept.setValue("resistanceSamples", 12);
+            kept.setValue("cycleSeen", 0.4);
+            kept.endArray();
+            kept.endGroup();
+        }
+        const Outcome kept = run({"battery"});
+        QCOMPARE(kept.status, 0);
+        const QJsonObject o = jsonObjectOf(kept.out.trimmed());
+        QCOMPARE(o.value("robot").toString(), QString("serial:/dev/ttyUSB0"));
+        QCOMPARE(o.value("name").toString(), QString("Robot 3"));
+        QCOMPARE(o.value("condition").toString(), QString("replace"));
+        QCOMPARE(o.value("capacity_mah").toInt(), 1350);
+        QCOMPARE(o.value("resistance_mohm").toInt(), 900);
+        QVERIFY(o.value("earlier_session").toBool());
+        const Outcome text = run({"battery", "--text"});
+        QVERIFY2(text.out.startsWith("serial:/dev/ttyUSB0 (Robot 3): Replace: holds 1350 of the 3000 mAh it claims (45 %)"),
+                 qPrintable(text.out));
+
+        const Outcome sim = run({"battery", "--sim", "--seconds", "1"});
+        QCOMPARE(sim.status, 0);
+        const QJsonObject measured = jsonObjectOf(sim.out.trimmed());
+        QCOMPARE(measured.value("condition").toString(), QString("unknown"));
+        QCOMPARE(measured.value("claimed_capacity_mah").toInt(), 3000);
+        QCOMPARE(run({"battery", "--watch"}).status, 2);
+        qunsetenv("XDG_CONFIG_HOME");
+    }
+
     void calibrateCompute()
     {
         const Outcome o = run({"calibrate", "--compute", "--straight", "1000", "--measured", "1040", "--turns", "2",
                                "--measured-angle", "700"});
         QCOMPARE(o.status, 0);
         QCOMPARE(o.err, QString());
-        const QJsonObject result = json(o.out);
+        const QJsonObject result = jsonObjectOf(o.out);
         // 4 % farther than counted: wheels 4 % larger; 700 of 720 degrees with them: a wider base.
         QVERIFY(std::abs(result["leftWheelDiameterMm"].toDouble() - 74.88) < 1e-6);
         QVERIFY(std::abs(result["rightWheelDiameterMm"].toDouble() - 74.88) < 1e-6);
@@ -151,12 +187,12 @@ private slots:
         const QStringList lines = o.out.split('\n', Qt::SkipEmptyParts);
         QCOMPARE(lines.size(), 3);
         for (int i = 0; i < 2; ++i) {
-            const QJsonObject frame = json(lines[i]);
+            const QJsonObject frame = jsonObjectOf(lines[i]);
             QCOMPARE(frame["kind"].toString(), QString("stream"));
             QCOMPARE(frame["packets"].toObject()["cliff_front_left_signal"].toInt(), 537);
             QCOMPARE(frame["packets"].toObject()["virtual_wall"].toInt(), 0);
         }
-        const QJsonObject counters = json(lines[2])["counters"].toObject();
+        const QJsonObject counters = jsonObjectOf(lines[2])["counters"].toObject();
         QCOMPARE(counters["frames_good"].toInt(), 2);
         QCOMPARE(counters["checksum_failures"].toInt(), 1);
         QCOMPARE(counters["length_mismatches"].toInt(), 0);
@@ -173,8 +209,8 @@ private slots:
         QCOMPARE(o.status, 0);
         const QStringList lines = o.out.split('\n', Qt::SkipEmptyParts);
         QCOMPARE(lines.size(), 3);
-        QCOMPARE(json(lines[1])["packets"].toObject()["cliff_front_left_signal"].toInt(), 537);
-        const QJsonObject counters = json(lines[2])["counters"].toObject();
+        QCOMPARE(jsonObjectOf(lines[1])["packets"].toObject()["cliff_front_left_signal"].toInt(), 537);
+        const QJsonObject counters = jsonObjectOf(lines[2])["counters"].toObject();
         QCOMPARE(counters["frames_good"].toInt(), 2);
         QCOMPARE(counters["bytes_discarded"].toInt(), 2);
         QCOMPARE(counters["bytes_pending"].toInt(), 0);
@@ -186,12 +222,12 @@ private slots:
         QCOMPARE(o.status, 0);
         const QStringList lines = o.out.split('\n', Qt::SkipEmptyParts);
         QCOMPARE(lines.size(), 3);
-        const QJsonObject first = json(lines[0]);
+        const QJsonObject first = jsonObjectOf(lines[0]);
         QCOMPARE(first["kind"].toString(), QString("reply"));
         QCOMPARE(first["packets"].toObject()["bumps_wheel_drops"].toInt(), 3);
         QCOMPARE(first["packets"].toObject()["voltage"].toInt(), 16000);
-        QCOMPARE(json(lines[1])["packets"].toObject()["voltage"].toInt(), 2);
-        QCOMPARE(json(lines[2])["counters"].toObject()["replies_good"].toInt(), 2);
+        QCOMPARE(jsonObjectOf(lines[1])["packets"].toObject()["voltage"].toInt(), 2);
+        QCOMPARE(jsonObjectOf(lines[2])["counters"].toObject()["replies_good"].toInt(), 2);
     }
 
     void decodeBadText()

@@ -6,6 +6,8 @@
 #include "lesson_panel.h"
 #include "lesson_step_view.h"
 #include "main_window.h"
+#include "projector_view.h"
+#include "value_gauge.h"
 #include "plot_stack.h"
 #include "sensor_plots.h"
 #include "robot_card.h"
@@ -21,6 +23,9 @@
 #include "custom_plot.h"
 #include <QStandardPaths>
 #include <QStatusBar>
+#include <QAction>
+#include <QMenu>
+#include <QMenuBar>
 #include <QTabBar>
 #include <QTemporaryDir>
 #include <QTest>
@@ -336,9 +341,29 @@ private slots:
         window.start(oilink::LinkSettings::virtualRobotOf(oi::ProfileId::Create2, oi::ProfileId::Create2));
         QTRY_COMPARE_WITH_TIMEOUT(window.session().state(), oilink::LinkState::Streaming, 10000);
         auto *lessonDock = window.findChild<QDockWidget *>("lessonDock");
-        lessonDock->raise();
-        QVERIFY(window.lessonPanel()->openLesson(":/lessons/cliff_sensors.json"));
-        QTRY_VERIFY(window.lessonPanel()->stepView()->isVisible());
+        QApplication::processEvents();
+        // Its tab is in view, one click away, not scrolled off the bar's end.
+        bool tabInView = false;
+        for (QTabBar *bar : window.findChildren<QTabBar *>())
+            for (int i = 0; i < bar->count(); ++i)
+                if (bar->isVisible() && bar->tabText(i) == lessonDock->windowTitle()) {
+                    const int arrows = bar->sizeHint().width() > bar->width() ? 2 * bar->height() : 0;
+                    tabInView = bar->tabRect(i).left() >= 0 && bar->tabRect(i).right() <= bar->width() - arrows;
+                }
+        QVERIFY2(tabInView, qPrintable(lessonDock->windowTitle()));
+        // Open behind the plots' tab, its View menu entry (ticked) brings it to the front.
+        QVERIFY(lessonDock->visibleRegion().isEmpty());
+        QAction *entry = window.findChild<QAction *>("lessonDockViewAction");
+        QVERIFY(entry && entry->isChecked());
+        bool inMenu = false;
+        for (QAction *top : window.menuBar()->actions())
+            inMenu = inMenu || (top->menu() && top->menu()->actions().contains(entry));
+        QVERIFY(inMenu);
+        entry->trigger();
+        QTRY_VERIFY(!lessonDock->visibleRegion().isEmpty());
+        QVERIFY(entry->isChecked());
+        QVERIFY(window.dock<LessonPanel>()->openLesson(":/lessons/cliff_sensors.json"));
+        QTRY_VERIFY(window.dock<LessonPanel>()->stepView()->isVisible());
         window.refreshDisplay();
         window.refreshDisplay();
         QApplication::processEvents();
@@ -349,6 +374,73 @@ private slots:
         if (!language.isEmpty())
             window.setLanguage(QString(), false);
         found.removeDuplicates();
+        QVERIFY2(found.isEmpty(), qPrintable(found.join('\n')));
+    }
+
+    // The projector's readouts, however many a step shows, at 1280x720 and
+    // 1920x1080 in every shipped language: each value shows whole, and its
+    // title neither runs into it nor is cut off.
+    void projectorReadoutsFit_data()
+    {
+        QTest::addColumn<QSize>("screen");
+        QTest::addColumn<QString>("language");
+        for (const QSize screen : {QSize(1280, 720), QSize(1920, 1080)})
+            for (const char *language : {"en", "de", "es"})
+                QTest::addRow("%dx%d %s", screen.width(), screen.height(), language) << screen << QString(language);
+    }
+    void projectorReadoutsFit()
+    {
+        QFETCH(QSize, screen);
+        QFETCH(QString, language);
+        MainWindow window;
+        window.setLanguage(language == "en" ? QString() : language, false);
+        window.resize(screen.width(), screen.height() - kTitleBar);
+        window.show();
+        window.start(oilink::LinkSettings::virtualRobotOf(oi::ProfileId::Create2, oi::ProfileId::Create2));
+        QTRY_COMPARE_WITH_TIMEOUT(window.session().state(), oilink::LinkState::Streaming, 10000);
+        window.setProjectorView(true);
+        // Full screen is the test screen's size: the projector's here is the screen's.
+        window.setWindowState(Qt::WindowNoState);
+        window.resize(screen);
+        QTRY_COMPARE(window.projectorView()->size(), screen);
+        QStringList found;
+        // The robot alone (its readouts), then the cliff lesson's steps of four.
+        for (int step = -1; step < 2; ++step) {
+            if (step == 0)
+                QVERIFY(window.dock<LessonPanel>()->openLesson(":/lessons/cliff_sensors.json"));
+            if (step == 1)
+                window.fleet().lesson().runner().goToStep(1);
+            for (int i = 0; i < 3; ++i) {
+                window.refreshDisplay();
+                QApplication::processEvents();
+            }
+            const QList<ValueGauge *> gauges = window.projectorView()->findChildren<ValueGauge *>();
+            int shown = 0;
+            for (ValueGauge *g : gauges) {
+                if (!g->isVisible() || !g->objectName().startsWith("readout_"))
+                    continue;
+                ++shown;
+                auto *title = g->findChild<QLabel *>("title");
+                auto *value = g->findChild<QWidget *>("value");
+                const QString where = QStringLiteral("step %1, %2 \"%3\"").arg(step + 1).arg(g->objectName(), title->text());
+                if (value->height() < value->sizeHint().height())
+                    found << where + QStringLiteral(": value %1 px of %2").arg(value->height()).arg(value->sizeHint().height());
+                if (title->heightForWidth(title->width()) > title->height())
+                    found << where + QStringLiteral(": title %1 px of %2").arg(title->height()).arg(title->heightForWidth(title->width()));
+                if (title->geometry().intersects(value->geometry()))
+                    found << where + QStringLiteral(": title over the value");
+                const QRect at(g->mapTo(window.projectorView(), QPoint(0, 0)), g->size());
+                if (!window.projectorView()->rect().contains(at))
+                    found << where + QStringLiteral(": outside the view");
+            }
+            QVERIFY2(shown >= 4, qPrintable(QString::number(shown)));
+            QTemporaryDir scratch;
+            QVERIFY(window.grab().save(QDir(screenshotDir(scratch))
+                                           .filePath(QStringLiteral("projector_readouts_%1x%2_%3_%4.png")
+                                                         .arg(screen.width()).arg(screen.height()).arg(language)
+                                                         .arg(step + 1))));
+        }
+        window.setLanguage(QString(), false);
         QVERIFY2(found.isEmpty(), qPrintable(found.join('\n')));
     }
 };

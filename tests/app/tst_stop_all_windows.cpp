@@ -13,9 +13,13 @@
 #include "projector_view.h"
 #include "recording_transport.h"
 #include "robot_diagram.h"
+#include "robot_session.h"
 #include "sent_before_barrier.h"
 
 #include <QApplication>
+#include <QLabel>
+#include <QRegularExpression>
+#include <QStatusBar>
 #include <QPushButton>
 #include <QSettings>
 #include <QStandardPaths>
@@ -118,7 +122,10 @@ private slots:
         QVERIFY(rig.start());
         QVERIFY(rig.window.connectToBroker(*mqtt::BrokerAddress::fromUrl(broker.url(), nullptr)));
         FleetView &view = *rig.window.fleetView();
-        QTRY_COMPARE_WITH_TIMEOUT(view.tiles().size(), 2, 5000);
+        // The window's own two robots beside the broker's two.
+        QTRY_COMPARE_WITH_TIMEOUT(view.tiles().size(), 4, 5000);
+        for (const RobotSession *own : rig.window.fleet().robots())
+            QVERIFY2(view.tile(own->name()), qPrintable(own->name()));
         view.activateWindow();
         QVERIFY(QTest::qWaitForWindowActive(&view));
         QVERIFY(!rig.window.isActiveWindow());
@@ -149,6 +156,11 @@ private slots:
         QCOMPARE(rig.sent(0), stop);
         QCOMPARE(rig.sent(1), stop);
         QVERIFY(stopsPublished(1));
+        // Confirmed where it was pressed, and in the window's status bar.
+        QVERIFY2(QRegularExpression("^Stopped all 4 robots at \\d\\d:\\d\\d$").match(view.stopReport()).hasMatch(),
+                 qPrintable(view.stopReport()));
+        QVERIFY(view.findChild<QLabel *>("fleetStopped")->isVisible());
+        QCOMPARE(rig.window.statusBar()->currentMessage(), view.stopReport());
         QCOMPARE(bridges.front()->receivedOn(mqtt::topics::Kind::StopAll).first().payload.value("client").toString(),
                  rig.window.fleetConsole()->directory().clientName());
 

@@ -65,10 +65,12 @@ QString expectedDrive(QPointF k, int limit = DrivePad::kDefaultSpeedLimit)
 struct Rig {
     Recording recording;
     MainWindow window;
+    ManualClock *m_linkClock = nullptr;
 
     explicit Rig(oi::OiMode mode = oi::OiMode::Safe, ManualClock *linkClock = nullptr)
     {
         recording.mode = int(mode);
+        m_linkClock = linkClock;
         if (linkClock)
             window.fleet().setLinkClock(*linkClock);
         window.fleet().setTransportFactory(
@@ -82,9 +84,14 @@ struct Rig {
     {
         if (!QTest::qWaitForWindowActive(&window))
             return false;
+        // On the link's clock, the link waits for what its first Starts bring back.
         const bool streaming = QTest::qWaitFor(
-            [this] { return window.session().state() == oilink::LinkState::Streaming
-                            && int(window.session().latest().oiMode()) == recording.mode; }, 10000);
+            [this] {
+                if (m_linkClock && window.session().state() != oilink::LinkState::Streaming)
+                    m_linkClock->advance(1);
+                return window.session().state() == oilink::LinkState::Streaming
+                       && int(window.session().latest().oiMode()) == recording.mode;
+            }, 10000);
         window.refreshDisplay();
         window.findChild<QDockWidget *>("driveDock")->raise();
         if (!QTest::qWaitFor([this] { return area()->isVisible(); }, 2000))
@@ -95,8 +102,8 @@ struct Rig {
         recording.take(); // Start and the stream request
         return streaming;
     }
-    DrivePad *pad() const { return window.drivePad(); }
-    QWidget *area() const { return window.drivePad()->padArea(); }
+    DrivePad *pad() const { return window.dock<DrivePad>(); }
+    QWidget *area() const { return window.dock<DrivePad>()->padArea(); }
     QPoint at(QPointF knob) const { return pad()->areaPointFor(knob); }
     QPointF knobAt(QPointF knob) const { return pad()->knobAt(at(knob)); }
     // Waits for exactly one more write and returns it, with anything else
@@ -400,7 +407,7 @@ private slots:
         QTest::keyClick(rig.area(), Qt::Key_Space);
         QCOMPARE(rig.next(), kStop);
         // ...but inside the plots it pauses them, as it did before.
-        SensorPlots *plots = rig.window.sensorPlots();
+        SensorPlots *plots = rig.window.dock<SensorPlots>();
         QWidget *inside = nullptr;
         for (QWidget *w : plots->findChildren<QWidget *>())
             if (!inside && w->isVisible() && w->focusPolicy() != Qt::NoFocus)
@@ -436,7 +443,7 @@ private slots:
         QTest::keyClick(view, Qt::Key_F11);
         QVERIFY(!rig.window.isProjectorView());
         QVERIFY(!(rig.window.windowState() & Qt::WindowFullScreen));
-        QTest::keyClick(rig.window.drivePad()->padArea(), Qt::Key_F11);
+        QTest::keyClick(rig.window.dock<DrivePad>()->padArea(), Qt::Key_F11);
         QVERIFY(rig.window.isProjectorView());
         QVERIFY(rig.window.windowState() & Qt::WindowFullScreen);
         rig.sentSoFar();

@@ -92,7 +92,7 @@ struct OneRobot {
 
 QPushButton *button(const MainWindow &window, const QString &text)
 {
-    for (QPushButton *b : window.connectionBar()->findChildren<QPushButton *>())
+    for (QPushButton *b : window.dock<ConnectionBar>()->findChildren<QPushButton *>())
         if (b->text() == text && b->isVisible())
             return b;
     return nullptr;
@@ -108,7 +108,7 @@ QLineEdit *visibleLineEdit(QWidget *in)
 
 QComboBox *portBox(const MainWindow &window)
 {
-    for (QComboBox *combo : window.connectionBar()->findChildren<QComboBox *>())
+    for (QComboBox *combo : window.dock<ConnectionBar>()->findChildren<QComboBox *>())
         if (combo->isEditable() && combo->isVisible())
             return combo;
     return nullptr;

@@ -2,11 +2,11 @@
 // Latency of the robot link: from the moment the last byte of a stream frame
 // is written into a pseudo-terminal to the moment its snapshot arrives on the
 // receiving (GUI-like) thread, through SerialTransport, StreamParser and the
-// queued signal of RobotLinkThread. Also the link thread's CPU time per
+// queued signal of LocalRobotPort. Also the link thread's CPU time per
 // second of streaming. Not a test: run it by hand on a quiet machine.
 //
 //   bench_link_latency [--frames N] [--interval-us U] [--cpu-seconds S]
-#include "robot_link_thread.h"
+#include "local_robot_port.h"
 
 #include <QCoreApplication>
 #include <QTimer>
@@ -204,18 +204,18 @@ int main(int argc, char **argv)
     run.written.resize(static_cast<std::size_t>(options.frames + realFrames));
     run.received.resize(run.written.size());
 
-    oilink::RobotLinkThread link;
-    QObject::connect(&link, &oilink::RobotLinkThread::snapshot, &app, [&run](const oi::SensorSnapshot &s) {
+    oilink::LocalRobotPort link;
+    oilink::connectEvent<oilink::event::Frame>(&link, &app, [&run](const oi::SensorSnapshot &s) {
         const std::uint32_t sequence = FrameMaker::sequenceOf(s);
         if (sequence < run.received.size()) {
             run.received[sequence] = Clock::now();
             ++run.receivedCount;
         }
     });
-    QObject::connect(&link, &oilink::RobotLinkThread::errorOccurred, &app, [](const QString &message) {
+    oilink::connectEvent<oilink::event::Error>(&link, &app, [](const QString &message) {
         std::fprintf(stderr, "bench_link_latency: %s\n", qPrintable(message));
     });
-    link.open(oilink::LinkSettings::serial(slave, oi::ProfileId::Create2));
+    link.post(oilink::request::Open{oilink::LinkSettings::serial(slave, oi::ProfileId::Create2)});
     if (!waitForStream(master)) {
         std::fprintf(stderr, "bench_link_latency: the link did not start a stream on %s\n", qPrintable(slave));
         return 1;

@@ -1,52 +1,65 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // What the live data server costs and how late it is: robots on the virtual
-// robot (66.7 frames a second each) served by the classes the dashboard and
-// the bridge serve them with (RobotSession, LiveRobots, foxglove::Server),
-// and clients in processes of their own (this program with --client), each
-// subscribed to every channel, for --seconds per phase (default 10).
+// robot (66.7 frames a second each) served by the classes the bridge serves
+// them with (RobotSession, LiveRobots, foxglove::Server), or, with
+// --dashboard, by the dashboard's own window (its robots, its display's
+// pacing, its live server), and clients in processes of their own (this
+// program with --client), for --seconds per phase (default 10).
 //
 //   1. No client: the robots alone, for the CPU they cost without a server's work.
 //   2. The clients connected, subscribed to nothing: messages made (0 expected).
-//   3. The clients subscribed to everything: the CPU added over phase 1, as a
-//      share of one core, and for each telemetry message the time from the
-//      robot's model receiving the frame to a client receiving it (p50, p95).
+//   3. The clients subscribed: the CPU added over phase 1, as a share of one
+//      core; each robot's telemetry messages a second as its client counts
+//      them; and for each telemetry message the time from the link reading
+//      the frame (the message's own time) to a client receiving it (p50, p95,
+//      p99), on this machine's clock.
 //
-// The rate limit (--rate, 50 messages a second per channel as shipped; 0 for
-// none) holds back a frame that comes sooner than 20 ms after the last one
-// sent, so part of the latency at 66.7 frames a second is that wait.
+// Without --dashboard each client subscribes to every channel; with it, like
+// Foxglove Studio with the shipped layout, client N reads robot rN's
+// telemetry, pose and transform. The rate limit (--rate, 50 messages a
+// second per channel as shipped; 0 for none) holds back a frame that comes
+// sooner than 20 ms after the last one sent, so part of the latency at 66.7
+// frames a second is that wait.
 //
 //   bench_live_server [--robots N (4)] [--clients N (5)] [--seconds S (10)] [--rate HZ (50)]
+//   bench_live_server --dashboard [--robots N (1)] [--seconds S (10)]   (clients: one a robot)
 #include "foxglove_server.h"
 #include "link_status.h"
 #include "live_robots.h"
+#include "live_server_actions.h"
+#include "main_window.h"
 #include "robot_session.h"
 #include "transport_factory.h"
 
-#include <QCoreApplication>
+#include <QApplication>
 #include <QEventLoop>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QProcess>
+#include <QSocketNotifier>
 #include <QTimer>
 #include <QWebSocket>
 #include <QWebSocketHandshakeOptions>
 #include <QtEndian>
 
 #include <sys/resource.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <memory>
-#include <unordered_map>
+#include <string_view>
+#include <tuple>
 #include <vector>
 
 namespace {
 
-qint64 steadyNs()
+// The clock the messages' times are on (the frames' read times, since the epoch).
+qint64 epochNs()
 {
-    return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now().time_since_epoch())
+    return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::system_clock::now().time_since_epoch())
         .count();
 }
 
@@ -65,22 +78,29 @@ void runFor(double seconds)
     loop.exec();
 }
 
-// A client: subscribes to everything unless told not to, and prints each
-// telemetry message's time and when it arrived (steady ns) at the end.
-int client(const QString &url, bool subscribe, double seconds)
+// A client: subscribes to everything, to robot `robot`'s telemetry, pose
+// and transform ("r1"), or to nothing ("none"); says "connected" once its
+// handshake is done, and when its standard input closes prints each
+// telemetry message's topic, time and when it arrived (ns since the epoch).
+int client(const QString &url, const QString &subscribe)
 {
     QWebSocket socket;
     QHash<quint32, QString> topics; // subscription id (= channel id) → topic
-    std::vector<std::pair<quint64, qint64>> arrivals;
+    std::vector<std::tuple<QString, quint64, qint64>> arrivals;
     arrivals.reserve(100000);
     QObject::connect(&socket, &QWebSocket::textMessageReceived, [&](const QString &text) {
         const QJsonObject m = QJsonDocument::fromJson(text.toUtf8()).object();
-        if (m.value("op").toString() != QLatin1String("advertise") || !subscribe)
+        if (m.value("op").toString() != QLatin1String("advertise") || subscribe == QLatin1String("none"))
             return;
         QJsonArray subscriptions;
         for (const QJsonValue &c : m.value("channels").toArray()) {
             const qint64 id = c.toObject().value("id").toInteger();
-            topics.insert(quint32(id), c.toObject().value("topic").toString());
+            const QString topic = c.toObject().value("topic").toString();
+            const QString prefix = QLatin1Char('/') + subscribe + QLatin1Char('/');
+            if (subscribe != QLatin1String("all")
+                && !(topic == prefix + "telemetry" || topic == prefix + "pose" || topic == prefix + "transform"))
+                continue;
+            topics.insert(quint32(id), topic);
             subscriptions.append(QJsonObject{{"id", id}, {"channelId", id}});
         }
         socket.sendTextMessage(QString::fromUtf8(
@@ -89,15 +109,29 @@ int client(const QString &url, bool subscribe, double seconds)
     QObject::connect(&socket, &QWebSocket::binaryMessageReceived, [&](const QByteArray &b) {
         if (b.size() < 13 || b.at(0) != 1)
             return;
-        if (topics.value(qFromLittleEndian<quint32>(b.constData() + 1)).endsWith(QLatin1String("/telemetry")))
-            arrivals.emplace_back(qFromLittleEndian<quint64>(b.constData() + 5), steadyNs());
+        const QString topic = topics.value(qFromLittleEndian<quint32>(b.constData() + 1));
+        if (topic.endsWith(QLatin1String("/telemetry")))
+            arrivals.emplace_back(topic, qFromLittleEndian<quint64>(b.constData() + 5), epochNs());
     });
     QWebSocketHandshakeOptions options;
     options.setSubprotocols({foxglove::kSdkSubprotocol});
+    QObject::connect(&socket, &QWebSocket::connected, [] {
+        std::printf("connected\n");
+        std::fflush(stdout);
+    });
     socket.open(QUrl(url), options);
-    runFor(seconds);
-    for (const auto &[time, arrived] : arrivals)
-        std::printf("%llu %lld\n", static_cast<unsigned long long>(time), static_cast<long long>(arrived));
+    // Runs until the bench closes its standard input.
+    QEventLoop loop;
+    QSocketNotifier input(STDIN_FILENO, QSocketNotifier::Read);
+    QObject::connect(&input, &QSocketNotifier::activated, [&] {
+        char c;
+        if (::read(STDIN_FILENO, &c, 1) <= 0)
+            loop.quit();
+    });
+    loop.exec();
+    for (const auto &[topic, time, arrived] : arrivals)
+        std::printf("%s %llu %lld\n", qPrintable(topic), static_cast<unsigned long long>(time),
+                    static_cast<long long>(arrived));
     return 0;
 }
 
@@ -113,45 +147,62 @@ double percentile(std::vector<double> v, double p)
 
 int main(int argc, char *argv[])
 {
-    QCoreApplication app(argc, argv);
+    const bool dashboard = std::find_if(argv, argv + argc, [](const char *a) {
+                               return std::string_view(a) == "--dashboard";
+                           }) != argv + argc;
+    if (dashboard && qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
+        qputenv("QT_QPA_PLATFORM", "offscreen");
+    std::unique_ptr<QCoreApplication> app = dashboard ? std::make_unique<QApplication>(argc, argv)
+                                                      : std::make_unique<QCoreApplication>(argc, argv);
     oilink::registerLinkMetaTypes();
-    const QStringList a = app.arguments();
+    const QStringList a = app->arguments();
     const auto option = [&](const char *name, double fallback) {
         const qsizetype i = a.indexOf(QLatin1String(name));
         return i > 0 && i + 1 < a.size() ? a[i + 1].toDouble() : fallback;
     };
     const double seconds = option("--seconds", 10);
     if (a.value(1) == QLatin1String("--client"))
-        return client(a.value(2), a.value(3) == QLatin1String("subscribe"), a.value(4).toDouble());
-    const int robotCount = int(option("--robots", 4));
-    const int clientCount = int(option("--clients", 5));
+        return client(a.value(2), a.value(3));
+    const int robotCount = int(option("--robots", dashboard ? 1 : 4));
+    const int clientCount = dashboard ? robotCount : int(option("--clients", 5));
 
-    foxglove::Server server(QStringLiteral("bench"));
-    server.setLimits({option("--rate", 50), server.limits().queuedBytes});
     foxglove::ServerAddress address;
     address.port = 0;
-    if (!server.listen(address)) {
-        std::fprintf(stderr, "%s\n", qPrintable(server.errorString()));
-        return 1;
-    }
-    // Before the robots, which may still hand over a frame as they close.
-    std::unordered_map<quint64, qint64> framesAt; // a frame's time in the protocol → when the model had it
-    LiveRobots live(server);
+    // The dashboard's window and its server, or the bridge's classes.
+    std::unique_ptr<MainWindow> window;
+    std::unique_ptr<foxglove::Server> ownServer;
+    std::unique_ptr<LiveRobots> live;
     std::vector<std::unique_ptr<RobotSession>> robots;
-    for (int i = 0; i < robotCount; ++i) {
-        auto robot = std::make_unique<RobotSession>();
-        robot->setTransportFactory(transports::transportFactory());
-        robot->setHistoryCapacity(0);
-        RobotSession *r = robot.get();
-        // Before LiveRobots' own connection: the moment the model has the frame.
-        QObject::connect(r, &RobotSession::frameReceived, [&framesAt, r](double readSeconds, const oi::SensorSnapshot &) {
-            framesAt[quint64(r->connectedAtMs()) * 1000000 + quint64(std::max(readSeconds, 0.0) * 1e9)] = steadyNs();
-        });
-        live.add(r);
-        auto settings = oilink::LinkSettings::virtualRobotOf(oi::ProfileId::Create2, oi::ProfileId::Create2);
-        settings.virtualSeed = std::uint32_t(i + 1);
-        r->connectTo(settings);
-        robots.push_back(std::move(robot));
+    foxglove::Server *server = nullptr;
+    if (dashboard) {
+        window = std::make_unique<MainWindow>();
+        window->show();
+        server = &window->liveServer()->server();
+        server->setLimits({option("--rate", 50), server->limits().queuedBytes});
+        if (!window->liveServer()->start(address)) {
+            std::fprintf(stderr, "%s\n", qPrintable(server->errorString()));
+            return 1;
+        }
+        window->start(oilink::LinkSettings::virtualRobotOf(oi::ProfileId::Create2, oi::ProfileId::Create2), robotCount);
+    } else {
+        ownServer = std::make_unique<foxglove::Server>(QStringLiteral("bench"));
+        server = ownServer.get();
+        server->setLimits({option("--rate", 50), server->limits().queuedBytes});
+        if (!server->listen(address)) {
+            std::fprintf(stderr, "%s\n", qPrintable(server->errorString()));
+            return 1;
+        }
+        live = std::make_unique<LiveRobots>(*server);
+        for (int i = 0; i < robotCount; ++i) {
+            auto robot = std::make_unique<RobotSession>();
+            robot->setTransportFactory(transports::transportFactory());
+            robot->setHistoryCapacity(0);
+            live->add(robot.get());
+            auto settings = oilink::LinkSettings::virtualRobotOf(oi::ProfileId::Create2, oi::ProfileId::Create2);
+            settings.virtualSeed = std::uint32_t(i + 1);
+            robot->connectTo(settings);
+            robots.push_back(std::move(robot));
+        }
     }
     runFor(2); // streaming
 
@@ -159,50 +210,78 @@ int main(int argc, char *argv[])
         std::vector<std::unique_ptr<QProcess>> list;
         for (int i = 0; i < clientCount; ++i) {
             list.push_back(std::make_unique<QProcess>());
-            list.back()->start(a.first(), {"--client", server.url(), subscribe ? "subscribe" : "none",
-                                           QString::number(seconds + 2)});
+            const QString what = !subscribe ? "none" : dashboard ? QStringLiteral("r%1").arg(i + 1) : "all";
+            list.back()->start(a.first(), {"--client", server->url(), what});
+            // In turn: the server finishes a few handshakes per address at once.
+            QProcess &started = *list.back();
+            QEventLoop loop;
+            QObject::connect(&started, &QProcess::readyReadStandardOutput, &loop, [&] {
+                if (started.canReadLine())
+                    loop.quit();
+            });
+            QObject::connect(&started, &QProcess::finished, &loop, &QEventLoop::quit);
+            QTimer::singleShot(10000, &loop, &QEventLoop::quit);
+            if (!started.canReadLine())
+                loop.exec();
+            if (started.readLine().trimmed() != "connected")
+                std::fprintf(stderr, "client %d did not connect\n", i + 1);
         }
         return list;
     };
 
-    framesAt.clear();
     double cpu = cpuSeconds();
     runFor(seconds);
     const double alone = (cpuSeconds() - cpu) / seconds;
 
     auto idle = clients(false);
     runFor(2); // connected
-    const quint64 encodesBefore = server.encodeCount();
+    const quint64 encodesBefore = server->encodeCount();
     runFor(seconds);
-    const quint64 unsubscribedEncodes = server.encodeCount() - encodesBefore;
+    const quint64 unsubscribedEncodes = server->encodeCount() - encodesBefore;
     for (auto &p : idle)
-        p->waitForFinished(int(seconds * 1000) + 10000);
+        p->closeWriteChannel();
+    for (auto &p : idle)
+        p->waitForFinished(10000);
 
-    framesAt.clear();
     auto watching = clients(true);
     runFor(1); // connected and subscribed
     cpu = cpuSeconds();
+    const qint64 fromNs = epochNs();
     runFor(seconds);
+    const qint64 toNs = epochNs();
     const double served = (cpuSeconds() - cpu) / seconds;
     std::vector<double> latencyMs;
+    QHash<QString, int> perTopic; // telemetry messages in the measured phase
+    for (auto &p : watching)
+        p->closeWriteChannel();
     for (auto &p : watching) {
-        p->waitForFinished(int(seconds * 1000) + 10000);
+        p->waitForFinished(10000);
         for (const QByteArray &line : p->readAllStandardOutput().split('\n')) {
             const QList<QByteArray> f = line.split(' ');
-            if (f.size() != 2)
+            if (f.size() != 3)
                 continue;
-            const auto it = framesAt.find(f[0].toULongLong());
-            if (it != framesAt.end())
-                latencyMs.push_back(double(f[1].toLongLong() - it->second) / 1e6);
+            const qint64 arrived = f[2].toLongLong();
+            if (arrived < fromNs || arrived >= toNs)
+                continue;
+            ++perTopic[QString::fromUtf8(f[0])];
+            latencyMs.push_back(double(arrived - qint64(f[1].toULongLong())) / 1e6);
         }
     }
-    std::printf("live data server: %d robots, %d clients, %.0f s a phase, at most %.0f messages a second a channel\n",
-                robotCount, clientCount, seconds, server.limits().messagesPerSecond);
+    std::vector<double> rates;
+    for (const int count : std::as_const(perTopic))
+        rates.push_back(count / seconds);
+    std::printf("live data server%s: %d robots, %d clients, %.0f s a phase, at most %.0f messages a second a channel\n",
+                dashboard ? " in the dashboard's window" : "", robotCount, clientCount, seconds,
+                server->limits().messagesPerSecond);
     std::printf("  CPU, robots alone:          %5.1f %% of one core\n", alone * 100);
-    std::printf("  CPU, clients subscribed:    %5.1f %% of one core (added: %.1f %%)\n", served * 100,
-                (served - alone) * 100);
+    std::printf("  CPU, clients subscribed:    %5.1f %% of one core (added: %.1f %%, %.2f %% a robot)\n",
+                served * 100, (served - alone) * 100, (served - alone) * 100 / robotCount);
     std::printf("  messages made while nobody subscribed: %llu\n", static_cast<unsigned long long>(unsubscribedEncodes));
-    std::printf("  frame received by the model → client received: p50 %.2f ms, p95 %.2f ms, max %.2f ms (%zu messages)\n",
-                percentile(latencyMs, 0.5), percentile(latencyMs, 0.95), percentile(latencyMs, 1.0), latencyMs.size());
+    std::printf("  telemetry messages a second a robot: lowest %.1f, median %.1f (%zu robots heard)\n",
+                percentile(rates, 0), percentile(rates, 0.5), rates.size());
+    std::printf("  frame read by the link → client received: p50 %.2f ms, p95 %.2f ms, p99 %.2f ms, max %.2f ms (%zu "
+                "messages)\n",
+                percentile(latencyMs, 0.5), percentile(latencyMs, 0.95), percentile(latencyMs, 0.99),
+                percentile(latencyMs, 1.0), latencyMs.size());
     return 0;
 }

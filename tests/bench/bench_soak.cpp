@@ -16,7 +16,7 @@
 // the live count.
 #include "pty_robot_server.h"
 #include "recording_file.h"
-#include "robot_link_thread.h"
+#include "local_robot_port.h"
 #include "stream_parser.h"
 
 #include <QCoreApplication>
@@ -104,15 +104,15 @@ public:
         });
         m_recording = options.recording.isEmpty() ? QDir(dir).filePath(QStringLiteral("soak.oirec"))
                                                   : options.recording;
-        connect(&m_link, &oilink::RobotLinkThread::snapshot, this, [this] {
+        oilink::connectEvent<oilink::event::Frame>(&m_link, this, [this] {
             ++m_live;
             if (m_plugged)
                 ++m_sessions.back().received;
             else
                 ++m_receivedUnplugged;
         });
-        connect(&m_link, &oilink::RobotLinkThread::errorOccurred, this, [this] { ++m_errors; });
-        connect(&m_link, &oilink::RobotLinkThread::streamStarted, this,
+        oilink::connectEvent<oilink::event::Error>(&m_link, this, [this] { ++m_errors; });
+        oilink::connectEvent<oilink::event::StreamStarted>(&m_link, this,
                 [this](oi::ProfileId, int, const QList<int> &packets) {
                     if (packets != QList<int>{kStreamGroup})
                         std::printf("warning: the link streams other packets than group %d\n", kStreamGroup);
@@ -124,8 +124,8 @@ public:
         if (!plugIn())
             return false;
         m_clock.start();
-        m_link.open(oilink::LinkSettings::serial(m_symlink, oi::ProfileId::Create2));
-        m_link.startRecording(m_recording);
+        m_link.post(oilink::request::Open{oilink::LinkSettings::serial(m_symlink, oi::ProfileId::Create2)});
+        m_link.post(oilink::request::StartRecording{m_recording});
         const int totalMs = int(m_options.minutes * 60000);
         QTimer::singleShot(2000, this, [this] { m_rssStart = residentKiB(); });
         QTimer::singleShot(totalMs / 2, this, [this] { m_rssMiddle = residentKiB(); });
@@ -257,7 +257,7 @@ private:
     QString m_recording;
     std::unique_ptr<sim::PtyRobotServer> m_server;
     oi::StreamParser m_robotSide; // the robot's own output, read as the link should read it
-    oilink::RobotLinkThread m_link;
+    oilink::LocalRobotPort m_link;
     std::vector<Session> m_sessions;
     bool m_plugged = false;
     quint64 m_live = 0;

@@ -12,7 +12,7 @@
 //   bench_teleop_latency [--events N]    (N per input kind, default 1000)
 //
 // Runs on the offscreen platform unless QT_QPA_PLATFORM says otherwise.
-#include "../app/recording_transport.h"
+#include "../common/recording_transport.h"
 #include "drive_pad.h"
 #include "main_window.h"
 
@@ -93,7 +93,7 @@ int main(int argc, char **argv)
         QCoreApplication::processEvents(QEventLoop::AllEvents, 5);
     }
     window.refreshDisplay();
-    QWidget *area = window.drivePad()->padArea();
+    QWidget *area = window.dock<DrivePad>()->padArea();
     area->setFocus();
 
     // The input's thread: a press on the pad, moves between two positions
@@ -104,8 +104,8 @@ int main(int argc, char **argv)
     std::vector<double> keys;
     int mouseLost = 0;
     int keysLost = 0;
-    const QPoint a = window.drivePad()->areaPointFor({0, 0.5});
-    const QPoint b = window.drivePad()->areaPointFor({0.3, 0.5});
+    const QPoint a = window.dock<DrivePad>()->areaPointFor({0, 0.5});
+    const QPoint b = window.dock<DrivePad>()->areaPointFor({0.3, 0.5});
     const QPointF globalA = area->mapToGlobal(QPointF(a));
     const QPointF globalB = area->mapToGlobal(QPointF(b));
     // An event made without a device names the primary one, which is made

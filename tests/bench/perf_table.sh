@@ -43,9 +43,9 @@ python=/usr/bin/python3
 [ -x "$python" ] || python=python3
 
 # The benchmarks are built only when asked for: turn them on in the build
-# directory and build the four this table runs (quick when they are current).
+# directory and build the ones this table runs (quick when they are current).
 bench="$build/tests/bench"
-benchmarks=(bench_dashboard bench_recording bench_history_memory bench_teleop_latency bench_wake_cost)
+benchmarks=(bench_dashboard bench_recording bench_history_memory bench_teleop_latency bench_wake_cost bench_battery_health)
 generator=()
 [ -f "$build/CMakeCache.txt" ] || generator=(-G Ninja)
 cmake -S . -B "$build" "${generator[@]}" -DROOMBA_BUILD_BENCHMARKS=ON > /dev/null
@@ -74,6 +74,7 @@ QT_QPA_PLATFORM=offscreen "$bench/bench_teleop_latency" > "$log/teleop_quiet.txt
 
 "$bench/bench_recording" > "$log/recording.txt"
 "$bench/bench_wake_cost" > "$log/wake.txt"
+"$bench/bench_battery_health" > "$log/battery.txt"
 "$bench/bench_history_memory" --minutes 60 --robots 30 > "$log/history.txt"
 
 cpu_one=$(field "$log/one.txt" '^result:.* cpu ([0-9.]+) %.*')
@@ -102,6 +103,9 @@ wake_bare=$(field "$log/wake.txt" '^result: wake-up ([0-9.]+) us bare.*')
 wake_qt=$(field "$log/wake.txt" '^result: .* ([0-9.]+) us in a Qt event loop.*')
 echo "A wake-up costs ${wake_bare} us of CPU here (${wake_qt} us in a Qt event loop): one robot's ~72 a second" \
     "are $("$python" -c "print(f'{71.7 * $wake_qt / 1e4:.2f}')") % of a core before any work"
+battery_ns=$(field "$log/battery.txt" '^result: battery health ([0-9.]+) ns per frame.*')
+battery_us=$(field "$log/battery.txt" '^result: .* ([0-9.]+) us per report.*')
+echo "The pack's health costs ${battery_ns} ns per frame (${battery_us} us for the report, once a second)"
 if [ "$keep" = 1 ]; then
     "$python" tests/bench/perf_budget.py keep tests/bench/perf_budget.json README.md "${figures[@]}" \
         --date "$(date -u +%Y-%m-%d)" --commit "$(git rev-parse --short HEAD 2>/dev/null || echo '?')" \

@@ -8,8 +8,8 @@
             robot.turn_left(90)
 """
 
-from .errors import ConnectionLost, MotionTimeout, RobotError, SafetyStop, Stopped
+from .errors import BatteryLow, ConnectionLost, MotionTimeout, RobotError, SafetyStop, Stopped
 from .robot import Robot
 
-__all__ = ["Robot", "RobotError", "SafetyStop", "Stopped", "ConnectionLost", "MotionTimeout"]
+__all__ = ["Robot", "RobotError", "SafetyStop", "Stopped", "ConnectionLost", "MotionTimeout", "BatteryLow"]
 __version__ = "0.1.0"

@@ -24,6 +24,16 @@ class SafetyStop(RobotError):
         self.cause = list(cause or [])
 
 
+class BatteryLow(RobotError):
+    """The robot's battery is nearly flat: it would leave Safe mode by itself
+    as soon as it drove, so it was not moved. `words` holds the bridge's
+    sentence, with the charge and voltage."""
+
+    def __init__(self, message, robot=None, command=None, words=None):
+        super().__init__(message, robot, command)
+        self.words = words
+
+
 class Stopped(RobotError):
     """Stop all, a takeover or someone's stop: `by` names who, when known."""
 
@@ -33,7 +43,14 @@ class Stopped(RobotError):
 
 
 class ConnectionLost(RobotError):
-    """No fresh data from the robot, or its bridge went offline."""
+    """The program lost its robot. `part` names what failed: "broker" (the
+    program's connection to the classroom broker), "bridge" (the robot's
+    bridge went offline, the broker fine), "robot" (the bridge runs, its
+    robot does not answer) or "network" (data came late, every part up)."""
+
+    def __init__(self, message, robot=None, command=None, part=None):
+        super().__init__(message, robot, command)
+        self.part = part
 
 
 class MotionTimeout(RobotError):

@@ -16,16 +16,20 @@ import weakref
 
 import paho.mqtt.client as mqtt
 
-from . import connection, sensors
-from .errors import ConnectionLost, MotionTimeout, RobotError, SafetyStop, Stopped
+from . import connection, protocol, sensors
+from .errors import BatteryLow, ConnectionLost, MotionTimeout, RobotError, SafetyStop, Stopped
 from .song import parse_song
 
-# The bridge frees control 300 ms after the last heartbeat; one every 100 ms
-# keeps it (docs/mqtt.md, "Control").
-HEARTBEAT_S = 0.1
+# The bridge frees control when heartbeats stop for its lease (docs/mqtt.md,
+# "Control"); one every HEARTBEAT_S keeps it.
+HEARTBEAT_S = protocol.HEARTBEAT_S
 # The bridge sends telemetry at least every 45 ms: data older than this is
 # stale, and nothing the program reads or does can trust it.
 STALE_AFTER_S = 0.5
+# A broker that shuts down sends every bridge's last will ("online": false)
+# before it closes this program's connection: an offline state is judged this
+# long after it came, so that a broker gone is not taken for a bridge gone.
+BROKER_GONE_GRACE_S = protocol.figure("will_grace_ms") / 1000
 # Connecting, seeing the robot online and its first telemetry.
 CONNECT_TIMEOUT_S = 10.0
 # A quick command's answer (control, Safe, a drive).
@@ -37,14 +41,8 @@ ODOMETRY_LAG_S = 0.12
 # A move's answer may come this much after the bridge's own time limit.
 MOVE_MARGIN_S = 3.0
 
-WHEEL_BASE_MM = 235.0
-MAX_WHEEL_SPEED = 500.0
-# The ranges the bridge checks (app/roomba_bridge/goal_command.cpp).
-MAX_DISTANCE_MM = 10000
-MIN_SPEED = 30  # a Create 2 holds wheel speeds in steps of 28.5 mm/s
-MAX_ANGLE_DEG = 3600
-MIN_RATE, MAX_RATE = 15, 240
-MIN_RADIUS, MAX_RADIUS = 50, 10000
+WHEEL_BASE_MM = protocol.WHEEL_BASE_MM
+MAX_WHEEL_SPEED = protocol.MAX_WHEEL_SPEED
 
 # OI mode (packet 35).
 MODE_PASSIVE, MODE_SAFE, MODE_FULL = 1, 2, 3
@@ -58,6 +56,7 @@ CAUSE_WORDS = {
     "wheel_drop_right": "its right wheel dropped",
     "wheel_drop_caster": "its front wheel dropped",
     "charger": "it is on its charger",
+    "battery_low": "its battery is nearly flat",
 }
 
 
@@ -74,6 +73,43 @@ def _check_range(name, value, low, high, unit):
     return v
 
 
+def _check_goal_field(command, field, value):
+    """A goal command's field, within the range the bridge checks (the protocol's table)."""
+    low, high, unit = protocol.goal_range(command, field)
+    return _check_range(field, value, low, high, unit)
+
+
+# A move's time, as the bridge plans it (robot/motion_goal.cpp), on the figures of the protocol's table.
+
+def max_arc_speed(radius):
+    """The fastest the robot's centre may go on an arc: its outer wheel at the wheels' limit
+    (MotionGoal::maxArcSpeedMmPerS)."""
+    return MAX_WHEEL_SPEED * radius / (radius + WHEEL_BASE_MM / 2)
+
+
+def kinematic_seconds(command, f):
+    """The time an ideal robot takes (MotionGoal::kinematicSeconds): the lead wheel from a creep up to
+    its top speed and back down to a creep, the top speed between."""
+    arm = WHEEL_BASE_MM / 2
+    if command == "straight":
+        length, top = abs(f["distance"]), f["speed"]
+    elif command == "turn":
+        length, top = math.radians(abs(f["angle"])) * arm, math.radians(f["rate"]) * arm
+    else:
+        length = math.radians(abs(f["angle"])) * (f["radius"] + arm)
+        top = f["speed"] * (f["radius"] + arm) / f["radius"]
+    a, creep = protocol.ACCELERATION, min(protocol.CREEP, top)
+    ramp = (top * top - creep * creep) / (2 * a)
+    if length >= 2 * ramp:
+        return 2 * (top - creep) / a + (length - 2 * ramp) / top
+    return 2 * (math.sqrt(creep * creep + a * length) - creep) / a
+
+
+def time_limit_seconds(command, fields):
+    """When the bridge gives up a move that has not ended (MotionGoal::timeLimitSeconds)."""
+    return protocol.TIME_LIMIT_FACTOR * kinematic_seconds(command, fields) + protocol.TIME_LIMIT_EXTRA_S
+
+
 def _safety_words(cause):
     words = [CAUSE_WORDS.get(c, c.replace("_", " ")) for c in cause if c != "safety"]
     return " and ".join(words) if words else "a safety sensor"
@@ -86,6 +122,8 @@ def _safety_fix(cause):
         return "Put it back flat on the floor, then run your program again."
     if "charger" in cause:
         return "Lift it off its dock, then run your program again."
+    if "battery_low" in cause:
+        return "Put it on its dock to charge, then run your program again."
     return "Check the robot, then run your program again."
 
 
@@ -293,8 +331,46 @@ class Robot:
             self._connected = False
             self._cond.notify_all()
         if was and not self._closed:
-            self._deliver(ConnectionLost("%s: the connection to the broker %s was lost. Check the network, then "
-                                         "run your program again." % (self.name, self._conn.url), self.name))
+            self._deliver(self._lost("broker"))
+
+    # ----- which part failed -----
+
+    def _failed_part(self):
+        """What the program knows failed: its broker, the robot's bridge, the robot, or only the data's pace."""
+        if not self._connected:
+            return "broker"
+        state = self._state or {}
+        if not state.get("online", True):
+            return "bridge"
+        if state.get("link") not in (None, "streaming"):
+            return "robot"
+        return "network"
+
+    def _lost(self, part=None):
+        """ConnectionLost naming the part that failed and what to check next."""
+        part = part or self._failed_part()
+        name = self.name
+        if part == "broker":
+            message = ("The classroom broker at %s:%d is not answering: is it running on the teacher's machine, and "
+                       "is this computer on the classroom network? Your program stopped; %s stops within %g s "
+                       "without its heartbeat. Run your program again once the broker is back."
+                       % (self._conn.host, self._conn.port, name, protocol.LEASE_S))
+        elif part == "bridge" and self._moving:
+            message = ("Robot %s's bridge went offline while you drove it: a real robot keeps its last drive when "
+                       "its bridge dies. Pick it up and hold its power button to switch it off, then ask your "
+                       "teacher to restart its bridge and run your program again." % name)
+        elif part == "bridge":
+            message = ("Robot %s's bridge went offline (the broker is fine): ask your teacher to check the bridge "
+                       "on the computer beside the robot, then run your program again." % name)
+        elif part == "robot":
+            message = ("Robot %s does not answer its bridge (its link is %s): is it switched on and charged, and is "
+                       "its cable plugged in? Its bridge stopped it; run your program again once it answers."
+                       % (name, (self._state or {}).get("link")))
+        else:
+            message = ("Robot %s sent no data for more than %g s while the broker and its bridge still count as up: "
+                       "the network is slow, or the bridge's computer lost it. Check the network, then run your "
+                       "program again." % (name, STALE_AFTER_S))
+        return ConnectionLost(message, name, part=part)
 
     # ----- what the bridge says -----
 
@@ -326,14 +402,21 @@ class Robot:
             self._state = state
             self._cond.notify_all()
         if not state.get("online"):
-            self._deliver(ConnectionLost("%s: its bridge went offline, so the robot cannot be driven. Ask your "
-                                         "teacher to check it, then run your program again." % robot, robot),
-                          only_in_control=False)
+            timer = threading.Timer(BROKER_GONE_GRACE_S, self._judge_offline)
+            timer.daemon = True
+            timer.start()
         elif self._moving and state.get("mode") == "passive" and (state.get("mode_cause") or [None])[0] == "safety":
             # Safe fell back to Passive while the robot drove: it stopped itself.
             cause = state.get("mode_cause")
             self._deliver(SafetyStop("%s stopped itself: %s. %s" % (robot, _safety_words(cause), _safety_fix(cause)),
                                      robot, "drive", cause))
+
+    def _judge_offline(self):
+        # Still connected, and the bridge still offline: the bridge went, not the broker.
+        with self._cond:
+            gone = self._connected and not (self._state or {}).get("online")
+        if gone:
+            self._deliver(self._lost("bridge"), only_in_control=False)
 
     def _on_telemetry(self, packets):
         with self._cond:
@@ -365,7 +448,7 @@ class Robot:
             stop = reply.get("stop")
             if stop is not None:
                 self._moving = False  # the answer tells why it stopped; the state need not
-            if stop in ("stop-all", "takeover", "heartbeat", "released"):
+            if stop in protocol.CONTROL_LOST:
                 self._swallow.add("control")
             elif stop == "stopped" and reply.get("by") and reply.get("by") != self._client_name:
                 self._swallow.add("stopped")
@@ -402,8 +485,9 @@ class Robot:
             return Stopped("%s took control of %s: your program ends here. Run it again when the robot is free."
                            % (controller, self.name), self.name, command, controller)
         if error.startswith("no heartbeat"):
-            return ConnectionLost("%s's bridge heard nothing from your program for 0.3 s, so it stopped the robot "
-                                  "(a slow network, or a program that was stuck). Run it again." % self.name,
+            return ConnectionLost("%s's bridge heard nothing from your program for %g s, so it stopped the robot "
+                                  "(a slow network, or a program that was stuck). Run it again."
+                                  % (self.name, protocol.LEASE_S),
                                   self.name, command)
         return ConnectionLost("%s: %s" % (self.name, error), self.name, command)
 
@@ -451,9 +535,7 @@ class Robot:
 
     def _check_fresh_locked(self):
         if self._telemetry_at is None or time.monotonic() - self._telemetry_at > STALE_AFTER_S:
-            raise ConnectionLost("%s sent no data for more than %g s: its bridge, the network or the broker "
-                                 "is down. Check them, then run your program again." % (self.name, STALE_AFTER_S),
-                                 self.name)
+            raise self._lost()
 
     class _Call:
         """The library at work in this thread: a stop arriving now is raised by its wait, not by a signal."""
@@ -492,11 +574,10 @@ class Robot:
             if self._control is True:
                 stale = self._telemetry_at is None or time.monotonic() - self._telemetry_at > STALE_AFTER_S
                 if stale:
+                    lost = self._lost()  # before the release forgets that it moved
                     self._publish_command("stop", None, qos=1)
                     self._release()
-                    self._deliver(ConnectionLost("%s sent no data for more than %g s: the robot was stopped. Check "
-                                                 "the network, then run your program again." % (
-                                                     self.name, STALE_AFTER_S), self.name), only_in_control=False)
+                    self._deliver(lost, only_in_control=False)
                     continue
                 self._publish_control("keep")
 
@@ -575,6 +656,10 @@ class Robot:
         """Control taken, Safe entered (never Full), fresh data."""
         with self._cond:
             self._check_fresh_locked()
+            low = (self._state or {}).get("battery_low")
+        if low:
+            # Warned before anything is sent: it would fall out of Safe under load.
+            raise BatteryLow("%s was not moved: %s." % (self.name, low.rstrip(".")), self.name, command, low)
         self._take_control(command)
         mode = self._packets.get("oi_mode")
         if mode in (MODE_SAFE, MODE_FULL):
@@ -592,17 +677,17 @@ class Robot:
     # ----- moves -----
 
     def _move(self, command, fields, call):
-        goal_seconds = self._kinematic_seconds(command, fields)
+        limit_seconds = time_limit_seconds(command, fields)
         with self._call():
             self._ready_to_drive(call)
             self._moving = True
             try:
-                reply = self._ask(command, fields, timeout=2 * goal_seconds + 2 + MOVE_MARGIN_S)
+                reply = self._ask(command, fields, timeout=limit_seconds + MOVE_MARGIN_S)
             except RobotError as e:
                 if type(e) is RobotError and "did not answer" in str(e):
                     self._urgent.put("stop")
                     raise MotionTimeout("%s: %s did not end in %.1f s: the robot was stopped. Is it pushing "
-                                        "against something?" % (self.name, call, 2 * goal_seconds + 2),
+                                        "against something?" % (self.name, call, limit_seconds),
                                         self.name, call) from None
                 raise
             finally:
@@ -625,7 +710,7 @@ class Robot:
             return MotionTimeout("%s: %s did not end in time (it went %s): the robot was stopped. Is it pushing "
                                  "against a wall or stuck? Move it, then run your program again." % (
                                      self.name, call, self._measured(reply)), self.name, call)
-        if stop in ("stop-all", "takeover", "heartbeat", "released"):
+        if stop in protocol.CONTROL_LOST:
             with self._cond:
                 self._control = False
             return self._control_lost("stop all" if stop == "stop-all" else error, by, call)
@@ -640,36 +725,19 @@ class Robot:
     def _measured(reply):
         return "%.0f mm and %.0f degrees" % (reply.get("distance_mm", 0), reply.get("angle_deg", 0))
 
-    @staticmethod
-    def _kinematic_seconds(command, f):
-        # As MotionGoal::kinematicSeconds() in the bridge: ramps at 1000 mm/s², the top speed between.
-        arm = WHEEL_BASE_MM / 2
-        if command == "straight":
-            length, top = abs(f["distance"]), f["speed"]
-        elif command == "turn":
-            length, top = math.radians(abs(f["angle"])) * arm, math.radians(f["rate"]) * arm
-        else:
-            length = math.radians(abs(f["angle"])) * (f["radius"] + arm)
-            top = f["speed"] * (f["radius"] + arm) / f["radius"]
-        a, creep = 1000.0, min(30.0, top)  # from and to a creep
-        ramp = (top * top - creep * creep) / (2 * a)
-        if length >= 2 * ramp:
-            return 2 * (top - creep) / a + (length - 2 * ramp) / top
-        return 2 * (math.sqrt(creep * creep + a * length) - creep) / a
-
     def straight(self, distance, speed=200):
         """Drives `distance` mm straight ahead (backwards if negative) at `speed` mm/s, and returns
         the distance the robot measured."""
-        distance = _check_range("distance", distance, -MAX_DISTANCE_MM, MAX_DISTANCE_MM, "mm")
-        speed = _check_range("speed", speed, MIN_SPEED, MAX_WHEEL_SPEED, "mm/s")
+        distance = _check_goal_field("straight", "distance", distance)
+        speed = _check_goal_field("straight", "speed", speed)
         call = "straight(%g)" % distance
         return self._move("straight", {"distance": distance, "speed": speed}, call)["distance_mm"]
 
     def turn(self, angle, rate=90):
         """Turns on the spot by `angle` degrees, counter-clockwise (left) if positive, at `rate`
         degrees a second, and returns the angle the robot measured."""
-        angle = _check_range("angle", angle, -MAX_ANGLE_DEG, MAX_ANGLE_DEG, "degrees")
-        rate = _check_range("rate", rate, MIN_RATE, MAX_RATE, "degrees a second")
+        angle = _check_goal_field("turn", "angle", angle)
+        rate = _check_goal_field("turn", "rate", rate)
         return self._move("turn", {"angle": angle, "rate": rate}, "turn(%g)" % angle)["angle_deg"]
 
     def turn_left(self, angle=90, rate=90):
@@ -683,10 +751,11 @@ class Robot:
     def arc(self, radius, angle, speed=200):
         """Drives along a circle of `radius` mm until the robot has turned `angle` degrees (left if
         positive), at `speed` mm/s; returns the angle the robot measured."""
-        radius = _check_range("radius", radius, MIN_RADIUS, MAX_RADIUS, "mm")
-        angle = _check_range("angle", angle, -MAX_ANGLE_DEG, MAX_ANGLE_DEG, "degrees")
-        fastest = math.floor(MAX_WHEEL_SPEED * radius / (radius + WHEEL_BASE_MM / 2))
-        speed = _check_range("speed", speed, MIN_SPEED, fastest, "mm/s on an arc of radius %g mm" % radius)
+        radius = _check_goal_field("arc", "radius", radius)
+        angle = _check_goal_field("arc", "angle", angle)
+        low, _, unit = protocol.goal_range("arc", "speed")
+        fastest = math.floor(max_arc_speed(radius))
+        speed = _check_range("speed", speed, low, fastest, "%s on an arc of radius %g mm" % (unit, radius))
         return self._move("arc", {"radius": radius, "angle": angle, "speed": speed},
                           "arc(%g, %g)" % (radius, angle))["angle_deg"]
 
@@ -699,7 +768,7 @@ class Robot:
         if abs(speed) + abs(spin) > MAX_WHEEL_SPEED:
             most = math.degrees((MAX_WHEEL_SPEED - abs(speed)) / (WHEEL_BASE_MM / 2))
             raise ValueError("turn_rate must be from %.0f to %.0f degrees a second at speed %g mm/s (no wheel "
-                             "goes faster than 500 mm/s), not %g" % (-most, most, speed, turn_rate))
+                             "goes faster than %g mm/s), not %g" % (-most, most, speed, MAX_WHEEL_SPEED, turn_rate))
         fields = {"right-velocity": round(speed + spin), "left-velocity": round(speed - spin)}
         with self._call():
             self._ready_to_drive("drive")

@@ -29,6 +29,7 @@ import paho.mqtt.client as mqtt  # noqa: E402
 
 BRIDGE = os.environ.get("ROOMBA_BRIDGE", os.path.join(SOURCE, "build", "app", "roomba-bridge"))
 CLASSROOM = os.environ.get("ROOMBA_CLASSROOM", os.path.join(SOURCE, "build", "app", "roomba-classroom"))
+SIM = os.environ.get("ROOMBA_SIM", os.path.join(SOURCE, "build", "app", "roomba-sim"))
 MOSQUITTO = "/usr/sbin/mosquitto"
 PYTHON = "/usr/bin/python3"
 
@@ -119,10 +120,13 @@ class Watcher:
 
 
 class Bridge:
-    def __init__(self, folder, broker, name, room=None, extra=()):
+    """A bridge to its own virtual robot (--sim), or to the robot on serial port `port`."""
+
+    def __init__(self, folder, broker, name, room=None, extra=(), port=None):
         self.name = name
         self.record = os.path.join(folder, "%s.oirec" % name)
-        args = [BRIDGE, "--sim", "--name", name, "--record", self.record] + list(extra)
+        robot = ["--port", port, "--profile", "create2"] if port else ["--sim"]
+        args = [BRIDGE] + robot + ["--name", name, "--record", self.record] + list(extra)
         if broker is not None:
             args += ["--broker", broker.url]
         if room:
@@ -152,6 +156,20 @@ class Bridge:
             self.process.terminate()
             self.process.wait(10)
         self.log.close()
+
+
+class VirtualRobot:
+    """roomba-sim on a pseudo-terminal: a robot apart from its bridge, which a test can freeze."""
+
+    def __init__(self):
+        self.process = subprocess.Popen([SIM, "--profile", "create2"], stdout=subprocess.PIPE,
+                                        stderr=subprocess.DEVNULL, text=True)
+        self.port = self.process.stdout.readline().strip()
+
+    def stop(self):
+        self.process.send_signal(signal.SIGCONT)
+        self.process.terminate()
+        self.process.wait(10)
 
 
 class Program:
@@ -282,5 +300,5 @@ def moving_since(bridge):
     return last
 
 
-__all__ = ["Broker", "Bridge", "Program", "Watcher", "room_file", "wait_for", "first_stop_after",
+__all__ = ["Broker", "Bridge", "Program", "VirtualRobot", "Watcher", "room_file", "wait_for", "first_stop_after",
            "wait_for_recorded_stop", "moving_since", "signal", "PYTHON", "CLASSROOM"]

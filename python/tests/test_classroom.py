@@ -37,7 +37,9 @@ print("robot", robot.name, round(robot.straight(50)), flush=True)
 """, env=connection)
         status, lines, errors = program.finish(30)
         assert status == 0, errors
-        assert lines == ["robot r1 50"]  # the connection file's robot
+        # The connection file's robot; a move ends within about a millimetre (docs/python.md).
+        assert len(lines) == 1 and lines[0].split()[:2] == ["robot", "r1"], lines
+        assert abs(int(lines[0].split()[2]) - 50) <= 1, lines
 
         program = run_program("""
 from roomba import Robot, RobotError

@@ -9,6 +9,7 @@ import pytest
 from conftest import wait_for
 from oirec import travel
 from programs import SQUARES
+from roomba.robot import kinematic_seconds as planned_seconds
 
 
 
@@ -65,12 +66,9 @@ def test_a_1_m_square_closes_within_20_mm(square_run):
     assert gap <= 20
 
 
-def kinematic_seconds(length, top, a=1000.0, creep=30.0):
-    # MotionGoal::kinematicSeconds(): from a creep to the top speed and back at 1000 mm/s².
-    ramp = (top * top - creep * creep) / (2 * a)
-    if length >= 2 * ramp:
-        return 2 * (top - creep) / a + (length - 2 * ramp) / top
-    return 2 * (math.sqrt(creep * creep + a * length) - creep) / a
+def kinematic_seconds(length, top):
+    # MotionGoal::kinematicSeconds(), with the protocol's table's figures.
+    return planned_seconds("straight", {"distance": length, "speed": top})
 
 
 def test_ten_short_moves_take_at_most_half_a_second_beyond_their_kinematic_time(start_bridge, run_program):

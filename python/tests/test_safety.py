@@ -86,3 +86,13 @@ print("moved", robot.odometry.x_mm, robot.odometry.heading_deg)
     assert "H9" in refused[7]
     # Nothing was clamped and sent instead.
     assert lines[-1] == "moved 0.0 0.0"
+
+
+def test_a_nearly_flat_battery_raises_battery_low_before_the_robot_moves(start_bridge, run_program):
+    # 5 % charged: the robot would leave Safe by itself as soon as it pulled.
+    start_bridge("r1", extra=["--battery-charge", "5"])
+    program = run_program(CATCHING % "robot.straight(300)")
+    _, kind, _, message = raised(program)
+    assert kind == "BatteryLow"
+    assert "battery nearly flat (5 %" in message and "charge it" in message
+    print(message)

@@ -212,7 +212,9 @@ int slow(qint64 queueBytes)
 {
     SteppedSession s(oi::ProfileId::Create2);
     foxglove::Server server(QStringLiteral("live_rig"), s.clock);
-    server.setLimits({50, queueBytes});
+    // Its slow client stops reading for a minute: past the 30 s after which
+    // a silent client is closed (tst_foxglove_server holds that rule).
+    server.setLimits({50, queueBytes, 120000});
     LiveRobots live(server);
     live.add(&s.robot);
     if (!s.live() || !listen(server))

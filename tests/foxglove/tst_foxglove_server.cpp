@@ -373,7 +373,7 @@ private slots:
     // it gets is the newest.
     void aSlowReaderGetsTheNewestFrame()
     {
-        m_server->setLimits({50, kLimit});
+        m_server->setLimits({50, kLimit, 120000}); // it stops reading for longer than a silent client is given
         QSignalSpy dropped(m_server.get(), &foxglove::Server::clientDropped);
         StalledClient client(m_server->port());
         QTRY_COMPARE_WITH_TIMEOUT(m_server->clientCount(), 1, kTimeoutMs);
@@ -504,6 +504,111 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(client->last("serverInfo").value("sessionId").toString() != before, kTimeoutMs);
         QCOMPARE(client->last("serverInfo").value("metadata").toObject().value("r1.profile").toString(),
                  QString("create2"));
+    }
+
+    // Foxglove starts its timeline at the first time it hears: a client
+    // hears the server's time before any message, even one that connects
+    // between two time messages.
+    void aClientHearsTheTimeBeforeItsFirstMessage()
+    {
+        auto first = connected();
+        QVERIFY(first);
+        m_server->setTime(5'000'000'000); // sent to the first client, and not again for 20 ms
+        auto client = connected();
+        QVERIFY(client);
+        QVERIFY(subscribed(*client, 1, m_frames));
+        m_clock.advance(5); // within the time's rate limit: no time message of its own
+        m_server->setTime(5'005'000'000);
+        m_server->publish(m_frames, 5'005'000'000, [] { return QByteArray("{}"); });
+        QTRY_VERIFY_WITH_TIMEOUT(!client->payloads().isEmpty(), kTimeoutMs);
+        QVERIFY(!client->binaries.isEmpty());
+        QCOMPARE(int(client->binaries.first().at(0)), 2); // the time first
+        QCOMPARE(qFromLittleEndian<quint64>(client->binaries.first().constData() + 1), quint64(5'000'000'000));
+    }
+
+    // A client that sends nothing and answers no ping for 30 s is closed;
+    // one that talks stays, however long.
+    void aClientNeverHeardFromIsClosedAfterThirtySeconds()
+    {
+        QSignalSpy dropped(m_server.get(), &foxglove::Server::clientDropped);
+        auto talking = connected();
+        QVERIFY(talking);
+        StalledClient silent(m_server->port());
+        QTRY_COMPARE_WITH_TIMEOUT(m_server->clientCount(), 2, kTimeoutMs);
+        for (int second = 0; second < 40; second += 5) {
+            const qsizetype heard = talking->texts.size();
+            talking->send({{"op", "hello"}}); // answered with a status
+            QTRY_VERIFY_WITH_TIMEOUT(talking->texts.size() > heard, kTimeoutMs);
+            m_clock.advance(5000);
+            QCoreApplication::processEvents();
+        }
+        QTRY_COMPARE_WITH_TIMEOUT(dropped.count(), 1, kTimeoutMs);
+        QVERIFY2(dropped.first().at(1).toString().contains("for 30 s"), qPrintable(dropped.first().at(1).toString()));
+        QCOMPARE(m_server->clientCount(), 1);
+        QCOMPARE(talking->socket.state(), QAbstractSocket::ConnectedState);
+    }
+
+    // playbackControl: said with the range in serverInfo; a request read
+    // field by field; a bad one refused with the reason; the state sent back.
+    void aViewersTimelineRequestIsReadAndAnswered()
+    {
+        auto client = connected();
+        QVERIFY(client);
+        QVERIFY(!client->last("serverInfo").value("capabilities").toArray().contains("playbackControl"));
+        const auto request = [](quint8 command, float speed, std::optional<quint64> seek, const QByteArray &id) {
+            QByteArray m(1 + 1 + 4 + 1 + 8 + 4, '\0');
+            m[0] = 3;
+            m[1] = char(command);
+            qToLittleEndian<float>(speed, m.data() + 2);
+            m[6] = seek ? 1 : 0;
+            qToLittleEndian<quint64>(seek.value_or(0), m.data() + 7);
+            qToLittleEndian<quint32>(quint32(id.size()), m.data() + 15);
+            return m + id;
+        };
+        // Nothing to control yet.
+        client->socket.sendBinaryMessage(request(0, 1, std::nullopt, "a"));
+        QTRY_VERIFY_WITH_TIMEOUT(client->last("status").value("message").toString().contains("no replay"), kTimeoutMs);
+
+        m_server->setPlaybackRange(std::pair(quint64(1'000'000'000), quint64(61'500'000'000)));
+        QTRY_VERIFY_WITH_TIMEOUT(
+            client->last("serverInfo").value("capabilities").toArray().contains("playbackControl"), kTimeoutMs);
+        const QJsonObject info = client->last("serverInfo");
+        QCOMPARE(info.value("dataStartTime").toObject(), (QJsonObject{{"sec", 1}, {"nsec", 0}}));
+        QCOMPARE(info.value("dataEndTime").toObject(), (QJsonObject{{"sec", 61}, {"nsec", 500'000'000}}));
+
+        QSignalSpy asked(m_server.get(), &foxglove::Server::playbackRequested);
+        client->socket.sendBinaryMessage(request(0, 4, quint64(30'000'000'000), "seek-1"));
+        QVERIFY(asked.wait(kTimeoutMs));
+        const auto got = asked.first().at(0).value<foxglove::PlaybackRequest>();
+        QVERIFY(got.play);
+        QCOMPARE(got.speed, 4.0f);
+        QCOMPARE(got.seekNs, std::optional<quint64>(30'000'000'000));
+        QCOMPARE(got.requestId, QString("seek-1"));
+
+        for (const QByteArray &bad : {request(7, 1, std::nullopt, "x"), request(1, 0, std::nullopt, "x"),
+                                      request(1, 1, std::nullopt, "x").left(12), request(1, 1, std::nullopt, "xy").chopped(1)}) {
+            const qsizetype before = client->texts.size();
+            client->socket.sendBinaryMessage(bad);
+            QTRY_VERIFY_WITH_TIMEOUT(client->texts.size() > before, kTimeoutMs);
+            QCOMPARE(client->texts.last().value("op").toString(), QString("status"));
+        }
+        QCOMPARE(asked.count(), 1);
+
+        foxglove::PlaybackState state;
+        state.status = foxglove::PlaybackState::Status::Playing;
+        state.currentNs = 30'000'000'000;
+        state.speed = 4;
+        state.didSeek = true;
+        state.requestId = "seek-1";
+        m_server->sendPlaybackState(state);
+        QTRY_VERIFY_WITH_TIMEOUT(!client->binaries.isEmpty() && client->binaries.last().at(0) == 5, kTimeoutMs);
+        const QByteArray answer = client->binaries.last();
+        QCOMPARE(int(answer.at(1)), 0); // playing
+        QCOMPARE(qFromLittleEndian<quint64>(answer.constData() + 2), quint64(30'000'000'000));
+        QCOMPARE(qFromLittleEndian<float>(answer.constData() + 10), 4.0f);
+        QCOMPARE(int(answer.at(14)), 1);
+        QCOMPARE(qFromLittleEndian<quint32>(answer.constData() + 15), quint32(6));
+        QCOMPARE(answer.mid(19), QByteArray("seek-1"));
     }
 
     void addressesAreReadOrRefused_data()

@@ -92,6 +92,7 @@ void VirtualRobot::State::pressButtons(std::uint8_t bits)
     if (is) {
         powerPressedAt = now;
         powerPressSwitchesOn = asleep;
+        powerPressSwitchedOff = false;
     } else if (powerPressSwitchesOn && asleep) {
         // Switched on: the OI in Off mode, waiting for Start.
         asleep = waking = switchedOff = false;
@@ -103,9 +104,10 @@ void VirtualRobot::State::pressButtons(std::uint8_t bits)
 
 void VirtualRobot::State::switchOffIfPowerHeld()
 {
-    if ((heldButtons & oi::bit::ButtonClean) && hasPowerButton() && !asleep && now - powerPressedAt >= kPowerOffHold) {
+    if ((heldButtons & oi::bit::ButtonClean) && hasPowerButton() && !asleep && !powerPressSwitchedOff
+        && now - powerPressedAt >= kPowerOffHold) {
         fallAsleep(); // silent and deaf, as asleep; a BRC pulse switches it on too
-        switchedOff = true;
+        switchedOff = powerPressSwitchedOff = true;
     }
 }
 

@@ -31,6 +31,7 @@ struct PowerState {
     // off, it switches it on as it is let go.
     Microseconds powerPressedAt{0};
     bool powerPressSwitchesOn = false;
+    bool powerPressSwitchedOff = false; // one hold switches off once: woken meanwhile, it stays on
     bool switchedOff = false;
 };
 

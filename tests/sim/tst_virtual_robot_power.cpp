@@ -114,6 +114,26 @@ private slots:
         QCOMPARE(b.value(35), int(OiMode::Passive));
     }
 
+    // One hold switches it off once: woken by BRC while the same press is
+    // still held, it stays on (roomba-sim lets go only 2.5 s after pressing).
+    void wokenWhileTheButtonIsStillHeldItStaysOn()
+    {
+        Bench b(profile(ProfileId::Create2));
+        b.send(b.encoder.start());
+        b.robot.pressButtons(bit::ButtonClean);
+        b.run(2s);
+        QVERIFY(b.robot.switchedOff());
+        b.robot.setBrcLow(true);
+        b.run(100ms);
+        b.robot.setBrcLow(false);
+        b.run(kWake);
+        QVERIFY(!b.robot.asleep());
+        b.run(1s);
+        QVERIFY(!b.robot.asleep());
+        b.send(b.encoder.start());
+        QCOMPARE(b.value(35), int(OiMode::Passive));
+    }
+
     // The Create's packet 18 has no power button: holding its bit does nothing.
     void theCreateHasNoPowerButton()
     {

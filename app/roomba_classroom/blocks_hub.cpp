@@ -76,7 +76,7 @@ bool BlocksHub::listen(const QHostAddress &address, quint16 port, QString *error
             return;
         }
         ++m_sessions;
-        auto *session = new HubSession(socket, m_settings, m_runs, this);
+        auto *session = new HubSession(socket, m_settings, {m_runs, m_failedSignIns}, this);
         connect(session, &HubSession::closed, this, [this, session] {
             --m_sessions;
             session->deleteLater();

@@ -45,6 +45,7 @@ private:
     PageFolder m_page;
     HttpsServer *m_server = nullptr;
     RunTable m_runs;
+    FailedSignIns m_failedSignIns;
     QStringList m_certificateNames;
     int m_sessions = 0;
 };

@@ -10,21 +10,21 @@
 #include <QJsonDocument>
 #include <QWebSocket>
 
+#include <algorithm>
+
 namespace classroom {
 
 namespace {
 
-constexpr qint64 kMinuteMs = 60 * 1000;
 constexpr int kMaxPasswordChars = 256;
 constexpr int kMaxWhyChars = 200;
 
 } // namespace
 
-HubSession::HubSession(QWebSocket *socket, const HubSettings &settings, RunTable &runs, QObject *parent)
-    : QObject(parent), m_socket(socket), m_settings(settings), m_runs(runs)
+HubSession::HubSession(QWebSocket *socket, const HubSettings &settings, HubTables tables, QObject *parent)
+    : QObject(parent), m_socket(socket), m_settings(settings), m_runs(tables.runs), m_failedSignIns(tables.failedSignIns)
 {
     m_socket->setParent(this);
-    m_clock.start();
     connect(m_socket, &QWebSocket::textMessageReceived, this, &HubSession::onText);
     connect(m_socket, &QWebSocket::binaryMessageReceived, this,
             [this] { error(QStringLiteral("the hub reads text frames of JSON, not binary ones")); });
@@ -102,20 +102,17 @@ void HubSession::signIn(const QJsonObject &message)
     const QString password = message.value(QLatin1String("password")).toString();
     if (!mqtt::topics::isValidName(user) || password.isEmpty() || password.size() > kMaxPasswordChars)
         return error(QStringLiteral("sign-in takes \"user\" (an account's name) and \"password\""));
-    const qint64 now = m_clock.elapsed();
-    m_signIns.removeIf([now](qint64 at) { return now - at >= kMinuteMs; });
-    if (m_signIns.size() >= kSignInsPerMinute) {
+    const qint64 now = m_failedSignIns.nowMs();
+    const int wait = std::max(m_signIns.secondsToWait(now), m_failedSignIns.secondsToWait(peer()));
+    if (wait > 0) {
         hubLog(QStringLiteral("sign-in as %1 from %2 refused: too many attempts").arg(user, peer()));
-        return refuse(QStringLiteral("too many sign-in attempts: try again in %1 s")
-                          .arg((kMinuteMs - (now - m_signIns.first())) / 1000 + 1));
+        return refuse(QStringLiteral("too many sign-in attempts: try again in %1 s").arg(wait));
     }
-    m_signIns.append(now);
+    m_signIns.add(now);
     m_user = user;
     // Only people sign in here: a bridge's account would knock its bridge off the broker.
-    if (!m_settings.classroom.isPerson(user)) {
-        hubLog(QStringLiteral("sign-in as %1 from %2 refused: no such person in the classroom").arg(user, peer()));
-        return refuse(QStringLiteral("wrong user name or password"));
-    }
+    if (!m_settings.classroom.isPerson(user))
+        return refuseLogin(QStringLiteral("(no such person in the classroom)"));
     mqtt::BrokerAddress address = m_settings.classroom.broker();
     address.username = user;
     address.password = password;
@@ -124,19 +121,16 @@ void HubSession::signIn(const QJsonObject &message)
     m_mqtt = std::make_unique<mqtt::MqttClient>(user);
     m_mqtt->setMaxPayloadBytes(kMaxMessageBytes);
     connect(m_mqtt.get(), &mqtt::MqttClient::connected, this, &HubSession::signedIn);
-    connect(m_mqtt.get(), &mqtt::MqttClient::loginRefused, this, [this] {
-        hubLog(QStringLiteral("sign-in as %1 from %2 refused by the broker").arg(m_user, peer()));
-        refuse(QStringLiteral("wrong user name or password"));
-    });
+    connect(m_mqtt.get(), &mqtt::MqttClient::loginRefused, this, [this] { refuseLogin(QStringLiteral("by the broker")); });
     // Any other error before the broker accepts ends the sign-in, after a
     // refused login has had its say (loginRefused follows errorOccurred).
     connect(m_mqtt.get(), &mqtt::MqttClient::errorOccurred, this, [this, attempt](const QString &why) {
         QMetaObject::invokeMethod(this, [this, attempt, why] {
             if (m_state != State::SigningIn || attempt != m_attempt)
                 return;
-            hubLog(QStringLiteral("sign-in as %1 from %2: %3").arg(m_user, peer(), why));
-            refuse(QStringLiteral("the classroom's broker did not let you in: %1")
-                       .arg(QString(why).remove(QStringLiteral(" Still trying."))));
+            const QString said = QString(why).remove(QStringLiteral(" Still trying."));
+            hubLog(QStringLiteral("sign-in as %1 from %2: %3").arg(m_user, peer(), said));
+            refuse(QStringLiteral("cannot reach the classroom's broker: %1").arg(said));
         }, Qt::QueuedConnection);
     });
     connect(m_mqtt.get(), &mqtt::MqttClient::disconnected, this, [this](const QString &why) {
@@ -177,6 +171,15 @@ void HubSession::refuse(const QString &why)
     dropMqtt();
     m_state = State::SignedOut;
     send({{QStringLiteral("op"), QStringLiteral("refused")}, {QStringLiteral("why"), why}});
+}
+
+// A wrong name or password, said alike so that a guesser learns nothing of
+// which names exist, and counted against the address it came from.
+void HubSession::refuseLogin(const QString &log)
+{
+    hubLog(QStringLiteral("sign-in as %1 from %2 refused %3").arg(m_user, peer(), log));
+    m_failedSignIns.failed(peer());
+    refuse(QStringLiteral("wrong user name or password"));
 }
 
 void HubSession::signedIn()

@@ -2,8 +2,8 @@
 #pragma once
 
 #include "classroom_dir.h"
+#include "sign_in_limits.h"
 
-#include <QElapsedTimer>
 #include <QJsonObject>
 #include <QList>
 #include <QObject>
@@ -30,6 +30,12 @@ struct HubSettings {
     QJsonObject protocol; // classroom_protocol.json
 };
 
+// What the sessions keep together: who runs what, and failed sign-ins.
+struct HubTables {
+    RunTable &runs;
+    FailedSignIns &failedSignIns;
+};
+
 // One page's WebSocket (docs/blocks.md, "The hub"): signed in, it is an
 // MQTT connection to the classroom's broker as that student, relaying what
 // the page subscribes to and publishes; the broker's ACL decides what gets
@@ -38,7 +44,7 @@ struct HubSettings {
 class HubSession : public QObject {
     Q_OBJECT
 public:
-    HubSession(QWebSocket *socket, const HubSettings &settings, RunTable &runs, QObject *parent = nullptr);
+    HubSession(QWebSocket *socket, const HubSettings &settings, HubTables tables, QObject *parent = nullptr);
     ~HubSession() override;
 
     QString user() const { return m_state == State::SignedIn ? m_user : QString(); }
@@ -59,6 +65,7 @@ private:
     void onText(const QString &text);
     void signIn(const QJsonObject &message);
     void refuse(const QString &why);
+    void refuseLogin(const QString &log);
     void signedIn();
     void endMqtt(const QString &why);
     void dropMqtt();
@@ -77,8 +84,8 @@ private:
     QString m_user;
     std::unique_ptr<mqtt::MqttClient> m_mqtt;
     int m_attempt = 0; // the sign-in under way, so that a late answer to an earlier one is ignored
-    QElapsedTimer m_clock;
-    QList<qint64> m_signIns; // when, on m_clock
+    FailedSignIns &m_failedSignIns;
+    PerMinute m_signIns{kSignInsPerMinute}; // tried on this socket
     qint64 m_dropped = 0;
 };
 

@@ -31,6 +31,7 @@ class TestBlocksHub : public QObject {
     MosquittoBroker m_broker;
     ServeProcess m_hub;
     QString m_class, m_page, m_ca;
+    QString m_other; // another classroom, its broker not running
     QString m_accounts;
 
     QString passwordOf(const QString &account) const { return passwordIn(m_accounts, account); }
@@ -96,6 +97,12 @@ private slots:
         QVERIFY(writeFile(m_dir.filePath(QStringLiteral("secret.txt")), "the secret"));
         QVERIFY(QFile::link(m_dir.filePath(QStringLiteral("secret.txt")), m_page + QStringLiteral("/out.txt")));
         QVERIFY2(m_hub.start({m_class, "--page", m_page, "--blocks", "move,sound"}), m_hub.said().constData());
+
+        m_other = m_dir.filePath(QStringLiteral("other"));
+        const MosquittoBroker notStarted; // a free port, where nothing listens
+        const ProcessRun other = runProcess(QStringLiteral(ROOMBA_CLASSROOM_PATH), {"init", m_other, "--robots", "r1", "--students", "eve",
+                                                                                   "--port", QString::number(notStarted.port())});
+        QVERIFY2(other.exitCode == 0, other.err.constData());
     }
 
     void thePageFilesAreServedWithTheirTypes()
@@ -410,9 +417,13 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(bridgeSaid.contains("straight"), 15000);
         QVERIFY2(replyTo(QStringLiteral("m")).isEmpty(), "the move ended before the page closed");
 
-        // The tab closes: the hub ends alice's connection at once, and her heartbeats with it.
+        // The tab closes: the hub ends alice's connection at once (the broker
+        // says she said goodbye), and her heartbeats with it.
         keep.stop();
+        m_broker.readOutput();
         alice->socket().close();
+        QByteArray brokerSaid;
+        QTRY_VERIFY_WITH_TIMEOUT((brokerSaid += m_broker.readOutput()).contains("Client alice disconnected."), 15000);
         QTRY_VERIFY_WITH_TIMEOUT(!replyTo(QStringLiteral("m")).isEmpty(), 15000);
         QCOMPARE(replyTo(QStringLiteral("m")).value(QLatin1String("stop")).toString(), QStringLiteral("heartbeat"));
         QVERIFY(m_hub.waitToSay("alice signed out (the page closed)"));
@@ -422,11 +433,8 @@ private slots:
 
     void aClientThatDoesNotTrustTheClassroomsCaGetsNothing()
     {
-        const QString other = m_dir.filePath(QStringLiteral("other"));
-        const ProcessRun init = runProcess(QStringLiteral(ROOMBA_CLASSROOM_PATH),
-                                           {"init", other, "--robots", "r1", "--students", "eve"});
-        QVERIFY2(init.exitCode == 0, init.err.constData());
-        HubClient page(QDir(other).filePath(QStringLiteral("ca.crt")));
+        const QString otherCa = QDir(m_other).filePath(QStringLiteral("ca.crt"));
+        HubClient page(otherCa);
         QSignalSpy sslErrors(&page.socket(), &QWebSocket::sslErrors);
         QSignalSpy connected(&page.socket(), &QWebSocket::connected);
         QSignalSpy disconnected(&page.socket(), &QWebSocket::disconnected);
@@ -435,7 +443,41 @@ private slots:
         QVERIFY(!sslErrors.isEmpty());
         QCOMPARE(connected.count(), 0);
         QVERIFY(page.received().isEmpty());
-        QCOMPARE(httpsGet(m_hub.port(), QDir(other).filePath(QStringLiteral("ca.crt")), "/").status, 0);
+        QCOMPARE(httpsGet(m_hub.port(), otherCa, "/").status, 0);
+    }
+
+    void aBrokerThatIsDownRefusesTheSignIn()
+    {
+        ServeProcess hub;
+        QVERIFY2(hub.start({m_other}), hub.said().constData());
+        HubClient page(QDir(m_other).filePath(QStringLiteral("ca.crt")));
+        QVERIFY(page.open(hub.hubUrl()));
+        QCOMPARE(page.signIn(QStringLiteral("eve"), passwordIn(accountsIn(m_other), QStringLiteral("eve"))), QStringLiteral("refused"));
+        const QString why = page.signedIn().value(QLatin1String("why")).toString();
+        QVERIFY2(why.startsWith(QLatin1String("cannot reach the classroom's broker: ")), qPrintable(why));
+        QVERIFY2(!why.contains(QLatin1String("Still trying")), qPrintable(why));
+    }
+
+    // A guesser who opens socket after socket is slowed by the address it
+    // comes from. (A hub of its own: the address is slowed for a minute.)
+    void aGuesserOnManySocketsIsSlowed()
+    {
+        ServeProcess hub;
+        QVERIFY2(hub.start({m_class}), hub.said().constData());
+        std::vector<std::unique_ptr<HubClient>> pages;
+        for (int failed = 0; failed < 30; ++failed) {
+            if (failed % 5 == 0) {
+                pages.push_back(std::make_unique<HubClient>(m_ca));
+                QVERIFY(pages.back()->open(hub.hubUrl()));
+            }
+            QCOMPARE(pages.back()->signIn(QStringLiteral("bob"), QStringLiteral("guess-%1").arg(failed)), QStringLiteral("refused"));
+            QCOMPARE(pages.back()->signedIn().value(QLatin1String("why")).toString(), QStringLiteral("wrong user name or password"));
+        }
+        HubClient fresh(m_ca);
+        QVERIFY(fresh.open(hub.hubUrl()));
+        QCOMPARE(fresh.signIn(QStringLiteral("bob"), passwordOf(QStringLiteral("bob"))), QStringLiteral("refused"));
+        QVERIFY2(fresh.signedIn().value(QLatin1String("why")).toString().startsWith(QLatin1String("too many sign-in attempts")),
+                 qPrintable(fresh.signedIn().value(QLatin1String("why")).toString()));
     }
 };
 

@@ -94,6 +94,11 @@ QString BlocksHub::url() const
     return m_server ? m_server->url() : QString();
 }
 
+quint16 BlocksHub::port() const
+{
+    return m_server ? m_server->port() : 0;
+}
+
 QStringList BlocksHub::certificateNames() const
 {
     return m_certificateNames;

@@ -34,6 +34,7 @@ public:
     // address cannot be listened on.
     bool listen(const QHostAddress &address, quint16 port, QString *error);
     QString url() const;
+    quint16 port() const;
     // The names the server's certificate is for; a browser refuses the
     // page at any other.
     QStringList certificateNames() const;

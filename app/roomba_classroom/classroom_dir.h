@@ -40,15 +40,14 @@ public:
     // The account that may write roomba/fleet/stop; empty if none.
     QString teacher() const { return m_teacher; }
 
-    // The ACL's text read into blocks (mosquitto's `user` and `topic`
-    // lines); public for the test of the parser.
+private:
+    // The ACL's text read into blocks (mosquitto's `user` and `topic` lines).
     struct Rights {
         QStringList writes; // in the file's order
         QSet<QString> reads;
     };
     static QHash<QString, Rights> readAcl(const QByteArray &acl);
 
-private:
     QString m_path;
     mqtt::BrokerAddress m_broker;
     int m_maxPacketBytes = 0;

@@ -151,7 +151,9 @@ void HttpsServer::readHead(QSslSocket *socket)
             answer(socket, 403, "text/plain; charset=utf-8", "The hub serves its own page only.\n", host);
             return;
         }
+        // The WebSocket owns it from here, whatever becomes of this server.
         disconnect(socket, &QTcpSocket::disconnected, socket, &QObject::deleteLater);
+        socket->setParent(nullptr);
         m_webSockets->handleConnection(socket);
         return;
     }

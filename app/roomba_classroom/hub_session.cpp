@@ -86,10 +86,14 @@ void HubSession::onText(const QString &text)
     const QString topic = message.value(QLatin1String("topic")).toString();
     if (!mqtt::MqttClient::isValidTopicFilter(topic))
         return error(QStringLiteral("\"topic\" must be an MQTT topic filter"));
-    if (op == QLatin1String("subscribe"))
-        m_mqtt->subscribe(topic);
-    else
-        m_mqtt->unsubscribe(topic);
+    if (op == QLatin1String("unsubscribe")) {
+        m_subscriptions.remove(topic);
+        return m_mqtt->unsubscribe(topic);
+    }
+    if (m_subscriptions.size() >= kMaxSubscriptions && !m_subscriptions.contains(topic))
+        return error(QStringLiteral("a page subscribes to at most %1 topic filters at once").arg(kMaxSubscriptions));
+    m_subscriptions.insert(topic);
+    m_mqtt->subscribe(topic);
 }
 
 void HubSession::signIn(const QJsonObject &message)
@@ -204,6 +208,7 @@ void HubSession::endMqtt(const QString &why)
     if (m_state == State::SignedIn)
         hubLog(QStringLiteral("%1 signed out (%2)").arg(m_user, why));
     dropMqtt();
+    m_subscriptions.clear();
     m_state = State::SignedOut;
 }
 

@@ -7,6 +7,7 @@
 #include <QJsonObject>
 #include <QList>
 #include <QObject>
+#include <QSet>
 #include <QString>
 #include <QStringList>
 
@@ -51,6 +52,7 @@ public:
 
     static constexpr qint64 kMaxMessageBytes = 64 * 1024;
     static constexpr int kSignInsPerMinute = 5;
+    static constexpr int kMaxSubscriptions = 100;
     // What may wait to go to a page that reads slowly; MQTT messages past
     // it are dropped, not queued.
     static constexpr qint64 kMaxQueuedBytes = 4 * 1024 * 1024;
@@ -87,6 +89,7 @@ private:
     FailedSignIns &m_failedSignIns;
     PerMinute m_signIns{kSignInsPerMinute}; // tried on this socket
     qint64 m_dropped = 0;
+    QSet<QString> m_subscriptions;
 };
 
 } // namespace classroom

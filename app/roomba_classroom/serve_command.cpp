@@ -90,13 +90,20 @@ int serveCommand()
                                                                   : PageFolder::defaultFolder()));
     if (!hub.listen(address, port, &error))
         return fail(error, 1);
-    std::printf("The blocks page: %s%s\n", qPrintable(hub.url()),
-                address.isLoopback() ? " (this machine only; --listen ADDRESS opens it to a network)"
-                                     : " (reachable from the network, as asked)");
-    if (!address.isLoopback() && !hub.certificateNames().contains(address.toString()))
+    const QString names = hub.certificateNames().join(QStringLiteral(", "));
+    const bool everyAddress = address == QHostAddress::AnyIPv4 || address == QHostAddress::AnyIPv6 || address == QHostAddress::Any;
+    if (everyAddress)
+        std::printf("The blocks page: on every address of this machine, port %d (reachable from the network, as "
+                    "asked): https://ADDRESS:%d/ with an address the certificate names: %s\n",
+                    int(hub.port()), int(hub.port()), qPrintable(names));
+    else
+        std::printf("The blocks page: %s%s\n", qPrintable(hub.url()),
+                    address.isLoopback() ? " (this machine only; --listen ADDRESS opens it to a network)"
+                                         : " (reachable from the network, as asked)");
+    if (!address.isLoopback() && !everyAddress && !hub.certificateNames().contains(address.toString()))
         std::printf("Warning: the server certificate names %s, not %s: browsers will refuse the page there. "
                     "Make the classroom with init --host %s.\n",
-                    qPrintable(hub.certificateNames().join(QStringLiteral(", "))), qPrintable(address.toString()),
+                    qPrintable(names), qPrintable(address.toString()),
                     qPrintable(address.toString()));
     std::fflush(stdout);
     QObject::connect(&termination, &TerminationSignals::requested, qApp,

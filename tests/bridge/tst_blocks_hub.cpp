@@ -252,6 +252,12 @@ private slots:
         QVERIFY(why().startsWith(QLatin1String("too big for the classroom's broker")));
         page.send({{"op", "sign-in"}, {"user", "bob"}, {"password", "x"}});
         QCOMPARE(why(), QStringLiteral("already signed in as bob"));
+        for (int i = 0; i < 100; ++i)
+            page.send({{"op", "subscribe"}, {"topic", QStringLiteral("roomba/r%1/state").arg(i)}});
+        page.send({{"op", "subscribe"}, {"topic", "roomba/one-too-many/state"}});
+        QCOMPARE(why(), QStringLiteral("a page subscribes to at most 100 topic filters at once"));
+        for (int i = 0; i < 100; ++i)
+            page.send({{"op", "unsubscribe"}, {"topic", QStringLiteral("roomba/r%1/state").arg(i)}});
 
         // Still relaying: what the teacher sends on r2 reaches bob's page.
         page.send({{"op", "subscribe"}, {"topic", "roomba/r2/control/teacher"}});

@@ -26,12 +26,23 @@ HubSession::HubSession(QWebSocket *socket, const HubSettings &settings, HubTable
 {
     m_socket->setParent(this);
     connect(m_socket, &QWebSocket::textMessageReceived, this, &HubSession::onText);
-    connect(m_socket, &QWebSocket::binaryMessageReceived, this,
-            [this] { error(QStringLiteral("the hub reads text frames of JSON, not binary ones")); });
+    connect(m_socket, &QWebSocket::binaryMessageReceived, this, [this] {
+        m_heard.restart();
+        error(QStringLiteral("the hub reads text frames of JSON, not binary ones"));
+    });
     connect(m_socket, &QWebSocket::disconnected, this, [this] {
         endMqtt(QStringLiteral("the page closed"));
         emit closed();
     });
+    m_heard.start();
+    connect(m_socket, &QWebSocket::pong, this, [this] { m_heard.restart(); });
+    connect(&m_ping, &QTimer::timeout, this, [this] {
+        if (m_heard.elapsed() < kSilentMs)
+            return m_socket->ping();
+        hubLog(QStringLiteral("%1 answered nothing for %2 s: closed").arg(peer()).arg(kSilentMs / 1000));
+        m_socket->abort();
+    });
+    m_ping.start(kPingMs);
 }
 
 HubSession::~HubSession()
@@ -57,6 +68,7 @@ void HubSession::error(const QString &why)
 
 void HubSession::onText(const QString &text)
 {
+    m_heard.restart();
     if (text.size() > kMaxMessageBytes || text.toUtf8().size() > kMaxMessageBytes)
         return error(QStringLiteral("a message to the hub is at most %1 KiB").arg(kMaxMessageBytes / 1024));
     QJsonParseError parseError;

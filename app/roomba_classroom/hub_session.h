@@ -6,10 +6,12 @@
 
 #include <QJsonObject>
 #include <QList>
+#include <QElapsedTimer>
 #include <QObject>
 #include <QSet>
 #include <QString>
 #include <QStringList>
+#include <QTimer>
 
 #include <memory>
 
@@ -53,6 +55,11 @@ public:
     static constexpr qint64 kMaxMessageBytes = 64 * 1024;
     static constexpr int kSignInsPerMinute = 5;
     static constexpr int kMaxSubscriptions = 100;
+    // A page is pinged this often, and closed when nothing has come from
+    // it (a pong, a message) for kSilentMs: a laptop gone from the network
+    // says no goodbye, and its student's connection would stay open.
+    static constexpr int kPingMs = 15000;
+    static constexpr int kSilentMs = 45000;
     // What may wait to go to a page that reads slowly; MQTT messages past
     // it are dropped, not queued.
     static constexpr qint64 kMaxQueuedBytes = 4 * 1024 * 1024;
@@ -90,6 +97,8 @@ private:
     PerMinute m_signIns{kSignInsPerMinute}; // tried on this socket
     qint64 m_dropped = 0;
     QSet<QString> m_subscriptions;
+    QTimer m_ping;
+    QElapsedTimer m_heard; // since anything came from the page
 };
 
 } // namespace classroom

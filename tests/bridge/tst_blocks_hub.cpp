@@ -464,6 +464,28 @@ private slots:
         QVERIFY2(!why.contains(QLatin1String("Still trying")), qPrintable(why));
     }
 
+    void aBrokerGoneIsSaidAndTheSessionSignedOut()
+    {
+        MosquittoBroker broker;
+        const QString lost = m_dir.filePath(QStringLiteral("lost"));
+        const ProcessRun init = runProcess(QStringLiteral(ROOMBA_CLASSROOM_PATH), {"init", lost, "--robots", "r1", "--students", "eve",
+                                                                                  "--port", QString::number(broker.port())});
+        QVERIFY2(init.exitCode == 0, init.err.constData());
+        QVERIFY2(broker.startWith(QDir(lost).filePath(QStringLiteral("mosquitto.conf"))), qPrintable(broker.error()));
+        ServeProcess hub;
+        QVERIFY2(hub.start({lost}), hub.said().constData());
+        HubClient page(QDir(lost).filePath(QStringLiteral("ca.crt")));
+        QVERIFY(page.open(hub.hubUrl()));
+        QCOMPARE(page.signIn(QStringLiteral("eve"), passwordIn(accountsIn(lost), QStringLiteral("eve"))), QStringLiteral("signed-in"));
+        broker.kill();
+        const std::optional<QJsonObject> gone = page.next(QStringLiteral("broker-lost"));
+        QVERIFY(gone);
+        QVERIFY2(!gone->value(QLatin1String("why")).toString().isEmpty(), "broker-lost says why");
+        // Signed out: the page signs in again to go on.
+        page.send({{"op", "subscribe"}, {"topic", "roomba/#"}});
+        QCOMPARE(page.next(QStringLiteral("error"))->value(QLatin1String("why")).toString(), QStringLiteral("sign in first"));
+    }
+
     // A guesser who opens socket after socket is slowed by the address it
     // comes from. (A hub of its own: the address is slowed for a minute.)
     void aGuesserOnManySocketsIsSlowed()

@@ -397,6 +397,8 @@ private slots:
         watcher.subscribe(topics::state(QStringLiteral("r1")));
         QVERIFY(watcher.connectToBroker(as(QStringLiteral("teacher"))));
         QTRY_VERIFY_WITH_TIMEOUT(online, 30000);
+        // Nobody takes control until the bridge hears stop all.
+        QTRY_VERIFY_WITH_TIMEOUT(bridgeSaid.contains("stop line: listening for stop all and takeovers"), 30000);
 
         const std::unique_ptr<HubClient> alice = signedIn(QStringLiteral("alice"));
         QVERIFY(alice);
@@ -416,7 +418,8 @@ private slots:
         connect(&keep, &QTimer::timeout, this, [&] { publish(control, "{\"action\": \"keep\"}"); });
         publish(control, "{\"action\": \"take\", \"program\": \"blocks\"}");
         keep.start(50);
-        QTRY_VERIFY_WITH_TIMEOUT(replyTo(QStringLiteral("control")).value(QLatin1String("ok")).toBool(), 15000);
+        QTRY_VERIFY2_WITH_TIMEOUT(replyTo(QStringLiteral("control")).value(QLatin1String("ok")).toBool(),
+                                  QJsonDocument(replyTo(QStringLiteral("control"))).toJson().constData(), 30000);
         publish(command, "{\"v\": 2, \"id\": \"safe\", \"command\": \"safe\"}");
         QTRY_VERIFY_WITH_TIMEOUT(replyTo(QStringLiteral("safe")).value(QLatin1String("ok")).toBool(), 15000);
         publish(command, "{\"v\": 2, \"id\": \"m\", \"command\": \"straight\", \"fields\": {\"distance\": 3000, \"speed\": 100}}");

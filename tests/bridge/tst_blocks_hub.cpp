@@ -363,6 +363,11 @@ private slots:
         QCOMPARE(rows[0][QLatin1String("program")].toString(), QStringLiteral("from roomba import Robot\nr = Robot('r1')\nr.forward(500)"));
         QVERIFY(QDateTime::fromString(rows[0][QLatin1String("since")].toString(), Qt::ISODateWithMs).isValid());
         QVERIFY(m_hub.waitToSay("alice runs a program on r1: from roomba import Robot | r = Robot('r1') | r.forward(500)"));
+        // What a student writes reaches the teacher's terminal as text, never as an escape sequence.
+        alice->send({{"op", "running"}, {"robot", "r1"}, {"program", "print('\x1b]0;pwned\x07')"}});
+        QVERIFY(m_hub.waitToSay("alice runs a program on r1: print('\xef\xbf\xbd]0;pwned\xef\xbf\xbd')"));
+        QVERIFY(!m_hub.said().contains('\x1b'));
+        QCOMPARE(teacher->next(QStringLiteral("runs"))->value(QLatin1String("runs")).toArray().size(), 1);
         alice->send({{"op", "ended"}, {"robot", "r1"}, {"why", "finished"}});
         QCOMPARE(teacher->next(QStringLiteral("runs"))->value(QLatin1String("runs")).toArray(), QJsonArray());
         QVERIFY(m_hub.waitToSay("alice's program on r1 ended: finished"));

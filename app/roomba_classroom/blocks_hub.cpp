@@ -35,7 +35,8 @@ std::optional<QStringList> BlocksHub::blockSets(const QString &names, QString *e
 }
 
 BlocksHub::BlocksHub(HubSettings settings, PageFolder page, QObject *parent)
-    : QObject(parent), m_settings(std::move(settings)), m_page(std::move(page))
+    : QObject(parent), m_settings(std::move(settings)), m_page(std::move(page)),
+      m_teacherView(m_settings.classroom, m_runs, m_failedSignIns)
 {
 }
 
@@ -69,6 +70,10 @@ bool BlocksHub::listen(const QHostAddress &address, quint16 port, QString *error
     m_server = new HttpsServer(m_page, this);
     if (!m_server->listen(address, port, tls, error))
         return false;
+    for (const auto &[path, form] : {std::pair{"/teacher", TeacherView::Form::Html}, std::pair{"/teacher.json", TeacherView::Form::Json}})
+        m_server->route(path, [this, form](const QByteArray &authorization, const QString &peer) {
+            return m_teacherView.answer(form, authorization, peer);
+        });
     connect(m_server, &HttpsServer::webSocketOpened, this, [this](QWebSocket *socket) {
         if (m_sessions >= kMaxSessions) {
             socket->close(QWebSocketProtocol::CloseCodeAbnormalDisconnection, QStringLiteral("the hub is full"));

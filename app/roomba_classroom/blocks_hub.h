@@ -4,6 +4,7 @@
 #include "hub_session.h"
 #include "page_folder.h"
 #include "run_table.h"
+#include "teacher_view.h"
 
 #include <QHostAddress>
 #include <QObject>
@@ -47,6 +48,7 @@ private:
     HttpsServer *m_server = nullptr;
     RunTable m_runs;
     FailedSignIns m_failedSignIns;
+    TeacherView m_teacherView;
     QStringList m_certificateNames;
     int m_sessions = 0;
 };

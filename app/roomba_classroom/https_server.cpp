@@ -18,8 +18,10 @@ QByteArray reasonOf(int status)
     case 200: return "OK";
     case 400: return "Bad Request";
     case 403: return "Forbidden";
+    case 401: return "Unauthorized";
     case 404: return "Not Found";
     case 405: return "Method Not Allowed";
+    case 429: return "Too Many Requests";
     case 431: return "Request Header Fields Too Large";
     case 503: return "Service Unavailable";
     default: return "Internal Server Error";
@@ -119,14 +121,14 @@ void HttpsServer::readHead(QSslSocket *socket)
     const QByteArray text = socket->peek(kMaxHeadBytes);
     if (!text.contains("\r\n\r\n")) {
         if (text.size() >= kMaxHeadBytes)
-            answer(socket, 431, "text/plain; charset=utf-8", "The request's head is too large.\n", {});
+            answer(socket, {431, "text/plain; charset=utf-8", "The request's head is too large.\n", {}}, {});
         return;
     }
     m_reading.removeOne(socket);
     socket->disconnect(this);
     const std::optional<Head> head = parseHead(text);
     if (!head) {
-        answer(socket, 400, "text/plain; charset=utf-8", "Not an HTTP/1 request.\n", {});
+        answer(socket, {400, "text/plain; charset=utf-8", "Not an HTTP/1 request.\n", {}}, {});
         return;
     }
     // The Host as the browser wrote it names the page's own origin, for the
@@ -135,20 +137,20 @@ void HttpsServer::readHead(QSslSocket *socket)
     const QByteArray hostField = head->fields.value("host");
     const QByteArray host = hostName.match(QString::fromLatin1(hostField)).hasMatch() ? hostField : QByteArray();
     if (head->method != "GET") {
-        answer(socket, 405, "text/plain; charset=utf-8", "Only GET is served here.\n", host);
+        answer(socket, {405, "text/plain; charset=utf-8", "Only GET is served here.\n", {}}, host);
         return;
     }
     QByteArray path = head->target;
     path.truncate(path.indexOf('?') < 0 ? path.size() : path.indexOf('?'));
     if (path == "/hub") {
         if (!head->fields.value("upgrade").toLower().contains("websocket")) {
-            answer(socket, 400, "text/plain; charset=utf-8", "/hub is the blocks page's WebSocket.\n", host);
+            answer(socket, {400, "text/plain; charset=utf-8", "/hub is the blocks page's WebSocket.\n", {}}, host);
             return;
         }
         // A page of another site must not reach the hub with a student's browser.
         const QByteArray origin = head->fields.value("origin");
         if (!origin.isEmpty() && (host.isEmpty() || origin != "https://" + host)) {
-            answer(socket, 403, "text/plain; charset=utf-8", "The hub serves its own page only.\n", host);
+            answer(socket, {403, "text/plain; charset=utf-8", "The hub serves its own page only.\n", {}}, host);
             return;
         }
         // The WebSocket owns it from here, whatever becomes of this server.
@@ -157,8 +159,9 @@ void HttpsServer::readHead(QSslSocket *socket)
         m_webSockets->handleConnection(socket);
         return;
     }
-    const PageFolder::Reply reply = m_page.get(head->target);
-    answer(socket, reply.status, reply.contentType, reply.body, host);
+    if (const auto route = m_routes.constFind(path); route != m_routes.cend())
+        return answer(socket, (*route)(head->fields.value("authorization"), socket->peerAddress().toString()), host);
+    answer(socket, m_page.get(head->target), host);
 }
 
 QByteArray HttpsServer::securityHeaders(const QByteArray &host) const
@@ -175,17 +178,16 @@ QByteArray HttpsServer::securityHeaders(const QByteArray &host) const
              "Cache-Control: no-cache\r\n";
 }
 
-void HttpsServer::answer(QSslSocket *socket, int status, const QByteArray &contentType, const QByteArray &body,
-                         const QByteArray &host)
+void HttpsServer::answer(QSslSocket *socket, const PageFolder::Reply &reply, const QByteArray &host)
 {
     m_reading.removeOne(socket);
     socket->disconnect(this);
-    QByteArray reply = "HTTP/1.1 " + QByteArray::number(status) + ' ' + reasonOf(status) + "\r\n";
-    if (status == 405)
-        reply += "Allow: GET\r\n";
-    reply += "Content-Type: " + contentType + "\r\nContent-Length: " + QByteArray::number(body.size())
-             + "\r\nConnection: close\r\n" + securityHeaders(host) + "\r\n" + body;
-    socket->write(reply);
+    QByteArray text = "HTTP/1.1 " + QByteArray::number(reply.status) + ' ' + reasonOf(reply.status) + "\r\n";
+    if (reply.status == 405)
+        text += "Allow: GET\r\n";
+    text += "Content-Type: " + reply.contentType + "\r\nContent-Length: " + QByteArray::number(reply.body.size())
+            + "\r\nConnection: close\r\n" + reply.headers + securityHeaders(host) + "\r\n" + reply.body;
+    socket->write(text);
     socket->disconnectFromHost();
 }
 

@@ -4,9 +4,12 @@
 #include "page_folder.h"
 
 #include <QHostAddress>
+#include <QHash>
 #include <QList>
 #include <QObject>
 #include <QSslConfiguration>
+
+#include <functional>
 
 class QSslServer;
 class QSslSocket;
@@ -29,6 +32,10 @@ public:
     // False with `error` naming the address and why.
     bool listen(const QHostAddress &address, quint16 port, const QSslConfiguration &tls, QString *error);
     quint16 port() const;
+    // GET `path` (without its query) is answered by `answer`, given the
+    // request's Authorization field and the peer's address.
+    using Route = std::function<PageFolder::Reply(const QByteArray &authorization, const QString &peer)>;
+    void route(const QByteArray &path, Route answer) { m_routes.insert(path, std::move(answer)); }
     // https://ADDRESS:PORT/
     QString url() const;
 
@@ -46,14 +53,14 @@ signals:
 private:
     void onEncrypted();
     void readHead(QSslSocket *socket);
-    void answer(QSslSocket *socket, int status, const QByteArray &contentType, const QByteArray &body,
-                const QByteArray &host);
+    void answer(QSslSocket *socket, const PageFolder::Reply &reply, const QByteArray &host);
     QByteArray securityHeaders(const QByteArray &host) const;
 
     PageFolder m_page;
     QSslServer *m_tls = nullptr;
     QWebSocketServer *m_webSockets = nullptr;
     QList<QSslSocket *> m_reading;
+    QHash<QByteArray, Route> m_routes;
 };
 
 } // namespace classroom

@@ -81,7 +81,7 @@ void HubSession::onText(const QString &text)
     if (op == QLatin1String("sign-in"))
         return signIn(message);
     static const QStringList known{QStringLiteral("subscribe"), QStringLiteral("unsubscribe"), QStringLiteral("publish"),
-                                   QStringLiteral("running"), QStringLiteral("ended"), QStringLiteral("runs")};
+                                   QStringLiteral("running"), QStringLiteral("ended")};
     if (!known.contains(op))
         return error(op.isEmpty() ? QStringLiteral("a message to the hub names its \"op\"")
                                   : QStringLiteral("unknown op \"%1\"").arg(op.left(64)));
@@ -93,8 +93,6 @@ void HubSession::onText(const QString &text)
         return running(message);
     if (op == QLatin1String("ended"))
         return ended(message);
-    if (op == QLatin1String("runs"))
-        return sendRuns();
     const QString topic = message.value(QLatin1String("topic")).toString();
     if (!mqtt::MqttClient::isValidTopicFilter(topic))
         return error(QStringLiteral("\"topic\" must be an MQTT topic filter"));
@@ -209,13 +207,10 @@ void HubSession::signedIn()
           {QStringLiteral("robots"), QJsonArray::fromStringList(m_settings.classroom.robotsFor(m_user))},
           {QStringLiteral("blocks"), QJsonArray::fromStringList(m_settings.blocks)},
           {QStringLiteral("protocol"), m_settings.protocol}});
-    if (m_user == m_settings.classroom.teacher())
-        connect(&m_runs, &RunTable::changed, this, &HubSession::sendRuns);
 }
 
 void HubSession::endMqtt(const QString &why)
 {
-    m_runs.disconnect(this);
     m_runs.endAll(this, why);
     if (m_state == State::SignedIn)
         hubLog(QStringLiteral("%1 signed out (%2)").arg(m_user, why));
@@ -266,13 +261,6 @@ void HubSession::ended(const QJsonObject &message)
         why = why.left(kMaxWhyChars - 1) + QChar(0x2026);
     if (!m_runs.ended(m_user, robot, why.isEmpty() ? QStringLiteral("(no reason given)") : why))
         error(QStringLiteral("you run nothing on \"%1\"").arg(robot.left(64)));
-}
-
-void HubSession::sendRuns()
-{
-    if (m_user != m_settings.classroom.teacher())
-        return error(QStringLiteral("only the teacher sees who runs what"));
-    send({{QStringLiteral("op"), QStringLiteral("runs")}, {QStringLiteral("runs"), m_runs.toJson()}});
 }
 
 } // namespace classroom

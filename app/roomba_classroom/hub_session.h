@@ -81,7 +81,6 @@ private:
     void publish(const QJsonObject &message);
     void running(const QJsonObject &message);
     void ended(const QJsonObject &message);
-    void sendRuns();
     void send(const QJsonObject &message);
     void error(const QString &why);
     QString peer() const;

@@ -9,13 +9,13 @@
 
 namespace classroom {
 
-namespace {
-
-PageFolder::Reply plain(int status, const QString &text)
+PageFolder::Reply PageFolder::Reply::plain(int status, const QString &text, const QByteArray &headers)
 {
-    return {status, QByteArrayLiteral("text/plain; charset=utf-8"), (text + QLatin1Char('\n')).toUtf8()};
+    return {status, QByteArrayLiteral("text/plain; charset=utf-8"), (text + QLatin1Char('\n')).toUtf8(), headers};
 }
 
+namespace {
+using Reply = PageFolder::Reply;
 } // namespace
 
 PageFolder::PageFolder(QString folder) : m_folder(QDir(folder).absolutePath()) {}
@@ -70,24 +70,25 @@ PageFolder::Reply PageFolder::get(const QByteArray &target) const
                                "<p>roomba-classroom serve looks for it in %1, which has no index.html. "
                                "Install the page (or build it), or name its folder with serve --page DIR.</p>\n")
                     .arg(m_folder.toHtmlEscaped())
-                    .toUtf8()};
+                    .toUtf8(),
+                {}};
     QByteArray path = target;
     if (const qsizetype end = path.indexOf('?'); end >= 0)
         path.truncate(end);
     if (!path.startsWith('/'))
-        return plain(400, QStringLiteral("a path starts with /"));
+        return Reply::plain(400, QStringLiteral("a path starts with /"));
     // An encoded slash, backslash or NUL could walk where a plain one may not.
     const QByteArray lower = path.toLower();
     for (const char *encoded : {"%2f", "%5c", "%00"})
         if (lower.contains(encoded))
-            return plain(400, QStringLiteral("no encoded slashes, backslashes or NULs in a path"));
+            return Reply::plain(400, QStringLiteral("no encoded slashes, backslashes or NULs in a path"));
     const QString decoded = QString::fromUtf8(QByteArray::fromPercentEncoding(path));
     if (decoded.contains(QLatin1Char('\\')) || decoded.contains(QChar(0)))
-        return plain(400, QStringLiteral("no backslashes in a path"));
+        return Reply::plain(400, QStringLiteral("no backslashes in a path"));
     QStringList parts = decoded.split(QLatin1Char('/'), Qt::SkipEmptyParts);
     for (const QString &part : parts)
         if (part.startsWith(QLatin1Char('.')))
-            return plain(part == QLatin1String("..") ? 400 : 404,
+            return Reply::plain(part == QLatin1String("..") ? 400 : 404,
                          part == QLatin1String("..") ? QStringLiteral("no .. in a path") : QStringLiteral("not found"));
     const QString root = QDir(m_folder).canonicalPath();
     QFileInfo file(QDir(root).filePath(parts.join(QLatin1Char('/'))));
@@ -96,15 +97,15 @@ PageFolder::Reply PageFolder::get(const QByteArray &target) const
     // Whatever the name, the file itself must lie inside: a symbolic link out is not served.
     const QString real = file.canonicalFilePath();
     if (real.isEmpty() || !file.isFile())
-        return plain(404, QStringLiteral("not found"));
+        return Reply::plain(404, QStringLiteral("not found"));
     if (!real.startsWith(root + QLatin1Char('/')))
-        return plain(403, QStringLiteral("not served: it lies outside the page's folder"));
+        return Reply::plain(403, QStringLiteral("not served: it lies outside the page's folder"));
     if (file.size() > kMaxFileBytes)
-        return plain(500, QStringLiteral("too large to serve"));
+        return Reply::plain(500, QStringLiteral("too large to serve"));
     QFile f(real);
     if (!f.open(QIODevice::ReadOnly))
-        return plain(403, QStringLiteral("cannot be read"));
-    return {200, contentType(real), f.readAll()};
+        return Reply::plain(403, QStringLiteral("cannot be read"));
+    return {200, contentType(real), f.readAll(), {}};
 }
 
 } // namespace classroom

@@ -23,6 +23,10 @@ public:
         int status = 200;
         QByteArray contentType;
         QByteArray body;
+        QByteArray headers; // more header lines, each ending in CRLF
+
+        // A line of plain text.
+        static Reply plain(int status, const QString &text, const QByteArray &headers = {});
     };
     // The answer to GET `target` (as the request line has it, query and all).
     Reply get(const QByteArray &target) const;

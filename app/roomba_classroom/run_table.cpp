@@ -33,7 +33,6 @@ void RunTable::running(const void *owner, const QString &user, const QString &ro
     m_runs.append({user, robot, QDateTime::currentDateTimeUtc(), first, owner});
     hubLog(QStringLiteral("%1 runs a program on %2: %3")
             .arg(user, robot, first.isEmpty() ? QStringLiteral("(empty)") : QString(first).replace(QLatin1Char('\n'), QStringLiteral(" | "))));
-    emit changed();
 }
 
 bool RunTable::ended(const QString &user, const QString &robot, const QString &why)
@@ -41,7 +40,6 @@ bool RunTable::ended(const QString &user, const QString &robot, const QString &w
     if (m_runs.removeIf([&](const Run &r) { return r.user == user && r.robot == robot; }) == 0)
         return false;
     hubLog(QStringLiteral("%1's program on %2 ended: %3").arg(user, robot, why));
-    emit changed();
     return true;
 }
 

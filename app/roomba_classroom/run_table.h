@@ -4,7 +4,6 @@
 #include <QDateTime>
 #include <QJsonArray>
 #include <QList>
-#include <QObject>
 #include <QString>
 
 namespace classroom {
@@ -12,11 +11,8 @@ namespace classroom {
 // The teacher's view of who runs what: a row per program a student's page
 // said it runs (`running`) until it says it ended (`ended`), or the page
 // goes. Each change is a line on standard output.
-class RunTable : public QObject {
-    Q_OBJECT
+class RunTable {
 public:
-    using QObject::QObject;
-
     struct Run {
         QString user, robot;
         QDateTime since;
@@ -37,9 +33,6 @@ public:
 
     static constexpr int kFirstLines = 3;
     static constexpr int kLineChars = 120;
-
-signals:
-    void changed();
 
 private:
     QList<Run> m_runs;

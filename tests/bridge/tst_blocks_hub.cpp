@@ -327,10 +327,6 @@ private slots:
         again.stop();
         for (const QJsonObject &m : alice->received())
             QVERIFY2(m.value(QLatin1String("payload")) != QLatin1String("for bob"), "alice got bob's message");
-        // Who runs what is the teacher's to see.
-        alice->send({{"op", "runs"}});
-        QCOMPARE(alice->next(QStringLiteral("error"))->value(QLatin1String("why")).toString(),
-                 QStringLiteral("only the teacher sees who runs what"));
         for (const QString &account : {QStringLiteral("alice"), QStringLiteral("bob")}) {
             QVERIFY(!alice->everything().contains(passwordOf(QStringLiteral("bob"))));
             QVERIFY(!bob->everything().contains(passwordOf(QStringLiteral("alice"))));
@@ -341,42 +337,68 @@ private slots:
         QVERIFY(!m_hub.said().contains("not-alices-password"));
     }
 
+    // GET /teacher.json (and /teacher, a page) as the teacher, with basic authentication.
+    HttpsReply teachersView(const QByteArray &path, const QByteArray &user, const QByteArray &password) const
+    {
+        return httpsRequest(m_hub.port(), m_ca,
+                            "GET " + path + " HTTP/1.1\r\nHost: 127.0.0.1:" + QByteArray::number(m_hub.port())
+                                + "\r\nAuthorization: Basic " + (user + ':' + password).toBase64() + "\r\n\r\n");
+    }
+    QJsonArray runsSeen() const
+    {
+        const HttpsReply r = teachersView("/teacher.json", "teacher", passwordOf(QStringLiteral("teacher")).toUtf8());
+        return r.status == 200 ? QJsonDocument::fromJson(r.body).object().value(QLatin1String("runs")).toArray()
+                               : QJsonArray({QStringLiteral("(status %1)").arg(r.status)});
+    }
+
     void theTeacherSeesWhoRunsWhat()
     {
+        // The teacher's account alone, by its password in accounts.txt.
+        const HttpsReply anyone = httpsGet(m_hub.port(), m_ca, "/teacher");
+        QCOMPARE(anyone.status, 401);
+        QVERIFY(anyone.field("WWW-Authenticate").startsWith("Basic realm="));
+        QCOMPARE(teachersView("/teacher", "teacher", "not-the-password").status, 401);
+        QCOMPARE(teachersView("/teacher.json", "alice", passwordOf(QStringLiteral("alice")).toUtf8()).status, 401);
+        QCOMPARE(runsSeen(), QJsonArray());
+
         const std::unique_ptr<HubClient> alice = signedIn(QStringLiteral("alice"));
-        const std::unique_ptr<HubClient> teacher = signedIn(QStringLiteral("teacher"));
-        QVERIFY(alice && teacher);
-        QCOMPARE(robotsOf(teacher->signedIn()), QStringList({"r1", "r2"}));
-        teacher->send({{"op", "runs"}});
-        QCOMPARE(teacher->next(QStringLiteral("runs"))->value(QLatin1String("runs")).toArray(), QJsonArray());
+        QVERIFY(alice);
         alice->send({{"op", "running"}, {"robot", "r2"}, {"program", "print(1)"}});
         QCOMPARE(alice->next(QStringLiteral("error"))->value(QLatin1String("why")).toString(),
                  QStringLiteral("\"robot\" must be a robot you may drive"));
+        alice->send({{"op", "runs"}});
+        QCOMPARE(alice->next(QStringLiteral("error"))->value(QLatin1String("why")).toString(), QStringLiteral("unknown op \"runs\""));
         alice->send({{"op", "running"}, {"robot", "r1"}, {"program", "from roomba import Robot\n\nr = Robot('r1')\nr.forward(500)\nr.turn(90)\n"}});
-        // Each change comes to the teacher's page as it happens, and to the terminal.
-        const std::optional<QJsonObject> runs = teacher->next(QStringLiteral("runs"));
-        QVERIFY(runs);
-        const QJsonArray rows = runs->value(QLatin1String("runs")).toArray();
+        // Each change is a line on the terminal as it happens, and in the table.
+        QVERIFY(m_hub.waitToSay("alice runs a program on r1: from roomba import Robot | r = Robot('r1') | r.forward(500)"));
+        const QJsonArray rows = runsSeen();
         QCOMPARE(rows.size(), 1);
         QCOMPARE(rows[0][QLatin1String("user")].toString(), QStringLiteral("alice"));
         QCOMPARE(rows[0][QLatin1String("robot")].toString(), QStringLiteral("r1"));
         QCOMPARE(rows[0][QLatin1String("program")].toString(), QStringLiteral("from roomba import Robot\nr = Robot('r1')\nr.forward(500)"));
         QVERIFY(QDateTime::fromString(rows[0][QLatin1String("since")].toString(), Qt::ISODateWithMs).isValid());
-        QVERIFY(m_hub.waitToSay("alice runs a program on r1: from roomba import Robot | r = Robot('r1') | r.forward(500)"));
-        // What a student writes reaches the teacher's terminal as text, never as an escape sequence.
-        alice->send({{"op", "running"}, {"robot", "r1"}, {"program", "print('\x1b]0;pwned\x07')"}});
-        QVERIFY(m_hub.waitToSay("alice runs a program on r1: print('\xef\xbf\xbd]0;pwned\xef\xbf\xbd')"));
+        const HttpsReply page = teachersView("/teacher", "teacher", passwordOf(QStringLiteral("teacher")).toUtf8());
+        QCOMPARE(page.status, 200);
+        QCOMPARE(page.field("Content-Type"), QByteArray("text/html; charset=utf-8"));
+        QVERIFY2(page.body.contains("<td>alice<td>r1<td>") && page.body.contains("<pre>from roomba import Robot\nr = Robot('r1')"),
+                 page.body.constData());
+        // What a student writes reaches the teacher as text: never an escape
+        // sequence on the terminal, never markup on the page.
+        alice->send({{"op", "running"}, {"robot", "r1"}, {"program", "print('\x1b]0;pwned\x07') # <script>"}});
+        QVERIFY(m_hub.waitToSay("alice runs a program on r1: print('\xef\xbf\xbd]0;pwned\xef\xbf\xbd') # <script>"));
         QVERIFY(!m_hub.said().contains('\x1b'));
-        QCOMPARE(teacher->next(QStringLiteral("runs"))->value(QLatin1String("runs")).toArray().size(), 1);
+        const HttpsReply escaped = teachersView("/teacher", "teacher", passwordOf(QStringLiteral("teacher")).toUtf8());
+        QVERIFY2(escaped.body.contains("# &lt;script&gt;") && !escaped.body.contains("<script>"), escaped.body.constData());
         alice->send({{"op", "ended"}, {"robot", "r1"}, {"why", "finished"}});
-        QCOMPARE(teacher->next(QStringLiteral("runs"))->value(QLatin1String("runs")).toArray(), QJsonArray());
         QVERIFY(m_hub.waitToSay("alice's program on r1 ended: finished"));
+        QCOMPARE(runsSeen(), QJsonArray());
         // A page that closes ends what it ran.
         alice->send({{"op", "running"}, {"robot", "r1"}, {"program", "r.spin()"}});
-        QCOMPARE(teacher->next(QStringLiteral("runs"))->value(QLatin1String("runs")).toArray().size(), 1);
+        QVERIFY(m_hub.waitToSay("alice runs a program on r1: r.spin()"));
+        QCOMPARE(runsSeen().size(), 1);
         alice->socket().close();
-        QCOMPARE(teacher->next(QStringLiteral("runs"))->value(QLatin1String("runs")).toArray(), QJsonArray());
         QVERIFY(m_hub.waitToSay("alice's program on r1 ended: the page closed"));
+        QCOMPARE(runsSeen(), QJsonArray());
     }
 
     void aClosedPageStopsTheRobotItDrove()

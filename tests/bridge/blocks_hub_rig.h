@@ -5,7 +5,10 @@
 // classroom that init wrote, a page's WebSocket to its hub, and HTTPS
 // requests written byte for byte (as no browser would send them).
 
+#include <QDir>
 #include <QFile>
+#include <QFileInfo>
+#include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QProcess>
@@ -16,6 +19,23 @@
 
 #include <functional>
 #include <optional>
+
+// Writes `contents` to `path`, making its folder.
+inline bool writeTextFile(const QString &path, const QByteArray &contents)
+{
+    QDir().mkpath(QFileInfo(path).absolutePath());
+    QFile f(path);
+    return f.open(QIODevice::WriteOnly | QIODevice::Truncate) && f.write(contents) == contents.size();
+}
+
+// The robots a signed-in message gives.
+inline QStringList robotsIn(const QJsonObject &signedIn)
+{
+    QStringList robots;
+    for (const QJsonValue &r : signedIn.value(QLatin1String("robots")).toArray())
+        robots << r.toString();
+    return robots;
+}
 
 // TLS that trusts `caFile` alone.
 inline QSslConfiguration trusting(const QString &caFile)
@@ -175,4 +195,13 @@ inline HttpsReply httpsRequest(int port, const QString &caFile, const QByteArray
 inline HttpsReply httpsGet(int port, const QString &caFile, const QByteArray &target)
 {
     return httpsRequest(port, caFile, "GET " + target + " HTTP/1.1\r\nHost: 127.0.0.1:" + QByteArray::number(port) + "\r\n\r\n");
+}
+
+// GET `target` with HTTP basic authentication as `user`.
+inline HttpsReply httpsGetAs(int port, const QString &caFile, const QByteArray &target, const QByteArray &user,
+                             const QByteArray &password)
+{
+    return httpsRequest(port, caFile,
+                        "GET " + target + " HTTP/1.1\r\nHost: 127.0.0.1:" + QByteArray::number(port)
+                            + "\r\nAuthorization: Basic " + (user + ':' + password).toBase64() + "\r\n\r\n");
 }

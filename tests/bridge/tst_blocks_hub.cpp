@@ -35,12 +35,6 @@ class TestBlocksHub : public QObject {
     QString m_accounts;
 
     QString passwordOf(const QString &account) const { return passwordIn(m_accounts, account); }
-    static bool writeFile(const QString &path, const QByteArray &contents)
-    {
-        QDir().mkpath(QFileInfo(path).absolutePath());
-        QFile f(path);
-        return f.open(QIODevice::WriteOnly | QIODevice::Truncate) && f.write(contents) == contents.size();
-    }
     BrokerAddress as(const QString &account) const
     {
         return classroomBroker(m_broker.port(), account, passwordOf(account), m_ca);
@@ -53,14 +47,6 @@ class TestBlocksHub : public QObject {
             return nullptr;
         return page;
     }
-    static QStringList robotsOf(const QJsonObject &signedIn)
-    {
-        QStringList robots;
-        for (const QJsonValue &r : signedIn.value(QLatin1String("robots")).toArray())
-            robots << r.toString();
-        return robots;
-    }
-
 private slots:
     void initTestCase()
     {
@@ -89,12 +75,12 @@ private slots:
 
         // A page, with a secret beside its folder and a link out of it.
         m_page = m_dir.filePath(QStringLiteral("page"));
-        QVERIFY(writeFile(m_page + QStringLiteral("/index.html"), "<!doctype html><title>blocks</title>"));
-        QVERIFY(writeFile(m_page + QStringLiteral("/app.js"), "console.log('blocks');"));
-        QVERIFY(writeFile(m_page + QStringLiteral("/style.css"), "body {}"));
-        QVERIFY(writeFile(m_page + QStringLiteral("/media/sprites.png"), "\x89PNG\r\n"));
-        QVERIFY(writeFile(m_page + QStringLiteral("/.hidden"), "hidden"));
-        QVERIFY(writeFile(m_dir.filePath(QStringLiteral("secret.txt")), "the secret"));
+        QVERIFY(writeTextFile(m_page + QStringLiteral("/index.html"), "<!doctype html><title>blocks</title>"));
+        QVERIFY(writeTextFile(m_page + QStringLiteral("/app.js"), "console.log('blocks');"));
+        QVERIFY(writeTextFile(m_page + QStringLiteral("/style.css"), "body {}"));
+        QVERIFY(writeTextFile(m_page + QStringLiteral("/media/sprites.png"), "\x89PNG\r\n"));
+        QVERIFY(writeTextFile(m_page + QStringLiteral("/.hidden"), "hidden"));
+        QVERIFY(writeTextFile(m_dir.filePath(QStringLiteral("secret.txt")), "the secret"));
         QVERIFY(QFile::link(m_dir.filePath(QStringLiteral("secret.txt")), m_page + QStringLiteral("/out.txt")));
         QVERIFY2(m_hub.start({m_class, "--page", m_page, "--blocks", "move,sound"}), m_hub.said().constData());
 
@@ -189,7 +175,7 @@ private slots:
         QCOMPARE(page.signIn(QStringLiteral("alice"), passwordOf(QStringLiteral("alice"))), QStringLiteral("signed-in"));
         const QJsonObject welcome = page.signedIn();
         QCOMPARE(welcome.value(QLatin1String("user")).toString(), QStringLiteral("alice"));
-        QCOMPARE(robotsOf(welcome), QStringList{QStringLiteral("r1")});
+        QCOMPARE(robotsIn(welcome), QStringList{QStringLiteral("r1")});
         QCOMPARE(welcome.value(QLatin1String("blocks")).toArray(), QJsonArray({"move", "sound"}));
         QFile table(QStringLiteral(ROOMBA_CLASSROOM_PROTOCOL_JSON));
         QVERIFY(table.open(QIODevice::ReadOnly));
@@ -197,10 +183,10 @@ private slots:
 
         const std::unique_ptr<HubClient> bob = signedIn(QStringLiteral("bob"));
         QVERIFY(bob);
-        QCOMPARE(robotsOf(bob->signedIn()), QStringList({"r1", "r2"}));
+        QCOMPARE(robotsIn(bob->signedIn()), QStringList({"r1", "r2"}));
         const std::unique_ptr<HubClient> guest = signedIn(QStringLiteral("guest"));
         QVERIFY(guest);
-        QCOMPARE(robotsOf(guest->signedIn()), QStringList());
+        QCOMPARE(robotsIn(guest->signedIn()), QStringList());
         // A bridge's account is no person's: it would knock its bridge off the broker.
         HubClient bridge(m_ca);
         QVERIFY(bridge.open(m_hub.hubUrl()));
@@ -337,12 +323,9 @@ private slots:
         QVERIFY(!m_hub.said().contains("not-alices-password"));
     }
 
-    // GET /teacher.json (and /teacher, a page) as the teacher, with basic authentication.
     HttpsReply teachersView(const QByteArray &path, const QByteArray &user, const QByteArray &password) const
     {
-        return httpsRequest(m_hub.port(), m_ca,
-                            "GET " + path + " HTTP/1.1\r\nHost: 127.0.0.1:" + QByteArray::number(m_hub.port())
-                                + "\r\nAuthorization: Basic " + (user + ':' + password).toBase64() + "\r\n\r\n");
+        return httpsGetAs(m_hub.port(), m_ca, path, user, password);
     }
     QJsonArray runsSeen() const
     {

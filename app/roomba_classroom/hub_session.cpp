@@ -89,10 +89,14 @@ void HubSession::onText(const QString &text)
         return error(QStringLiteral("sign in first"));
     if (op == QLatin1String("publish"))
         return publish(message);
-    if (op == QLatin1String("running"))
-        return running(message);
-    if (op == QLatin1String("ended"))
-        return ended(message);
+    if (op == QLatin1String("running") || op == QLatin1String("ended")) {
+        // On the hub's clock, which the failed sign-ins keep.
+        const qint64 now = m_failedSignIns.nowMs();
+        if (m_runsSaid.secondsToWait(now) > 0)
+            return error(QStringLiteral("at most %1 running and ended a minute").arg(kRunsSaidPerMinute));
+        m_runsSaid.add(now);
+        return op == QLatin1String("running") ? running(message) : ended(message);
+    }
     const QString topic = message.value(QLatin1String("topic")).toString();
     if (!mqtt::MqttClient::isValidTopicFilter(topic))
         return error(QStringLiteral("\"topic\" must be an MQTT topic filter"));

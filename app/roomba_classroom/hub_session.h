@@ -55,6 +55,8 @@ public:
     static constexpr qint64 kMaxMessageBytes = 64 * 1024;
     static constexpr int kSignInsPerMinute = 5;
     static constexpr int kMaxSubscriptions = 100;
+    // running and ended together: each is a line on the teacher's terminal.
+    static constexpr int kRunsSaidPerMinute = 60;
     // A page is pinged this often, and closed when nothing has come from
     // it (a pong, a message) for kSilentMs: a laptop gone from the network
     // says no goodbye, and its student's connection would stay open.
@@ -94,6 +96,7 @@ private:
     int m_attempt = 0; // the sign-in under way, so that a late answer to an earlier one is ignored
     FailedSignIns &m_failedSignIns;
     PerMinute m_signIns{kSignInsPerMinute}; // tried on this socket
+    PerMinute m_runsSaid{kRunsSaidPerMinute};
     qint64 m_dropped = 0;
     QSet<QString> m_subscriptions;
     QTimer m_ping;

@@ -4,9 +4,8 @@
 #include "classroom_dir.h"
 #include "sign_in_limits.h"
 
-#include <QJsonObject>
-#include <QList>
 #include <QElapsedTimer>
+#include <QJsonObject>
 #include <QObject>
 #include <QSet>
 #include <QString>
@@ -49,8 +48,6 @@ class HubSession : public QObject {
 public:
     HubSession(QWebSocket *socket, const HubSettings &settings, HubTables tables, QObject *parent = nullptr);
     ~HubSession() override;
-
-    QString user() const { return m_state == State::SignedIn ? m_user : QString(); }
 
     static constexpr qint64 kMaxMessageBytes = 64 * 1024;
     static constexpr int kSignInsPerMinute = 5;

@@ -42,7 +42,8 @@ BlocksHub::BlocksHub(HubSettings settings, PageFolder page, QObject *parent)
 
 BlocksHub::~BlocksHub()
 {
-    // The sessions first: they end their runs in the table.
+    // No new sessions; then the sessions, which end their runs in the table
+    // and their MQTT connections while both still exist.
     delete m_server;
     qDeleteAll(findChildren<HubSession *>(Qt::FindDirectChildrenOnly));
 }

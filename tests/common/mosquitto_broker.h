@@ -108,6 +108,10 @@ public:
         m_process.waitForFinished(5000);
     }
 
+    // What the broker logged since the last call (its connections and
+    // disconnections among it), once start() has returned.
+    QByteArray readOutput() { return m_process.readAll(); }
+
     // The broker's process, for a test that freezes it (SIGSTOP).
     qint64 processId() const { return m_process.processId(); }
 

@@ -1,0 +1,9 @@
+# Made with the blocks page. At home: python3 -m roomba.practice THIS_FILE.py
+from roomba import Robot
+
+
+
+with Robot() as robot:
+    for count in range(2):
+        robot.arc(300, 360, speed=200)
+        robot.arc(300, -360, speed=200)

@@ -1,0 +1,73 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Runs a block program on a Robot (robot.js): the block that runs is
+// highlighted, and whatever ends the program (a stop of the bridge's, the
+// Stop button, a value out of range) is shown on that block in the library's
+// words, as Python prints it ("Stopped: Stop all: your teacher ...").
+
+const AsyncFunction = (async () => {}).constructor;
+// How many steps run before the page is given time to draw and hear the hub.
+const STEPS_PER_BREATH = 25;
+
+const breath = () => new Promise(resolve => setTimeout(resolve, 0));
+
+export class Runner {
+    // workspace: the Blockly workspace; toJavascript: javascript.js's generator.
+    constructor(workspace, toJavascript) {
+        this.workspace = workspace;
+        this.toJavascript = toJavascript;
+        this.running = false;
+        this.blockId = null;
+    }
+
+    // Runs the workspace's program on robot; returns null when it finished, or
+    // { words, blockId } for what ended it.
+    async run(robot) {
+        const code = this.toJavascript.workspaceToCode(this.workspace);
+        const program = new AsyncFunction('robot', 'step', 'tick', code);
+        let steps = 0;
+        const step = async id => {
+            this.blockId = id;
+            this.workspace.highlightBlock(id);
+            robot.checkPending();
+            if (++steps % STEPS_PER_BREATH === 0)
+                await breath();
+        };
+        const tick = async () => {
+            robot.checkPending();
+            await breath();
+        };
+        this.running = true;
+        this.blockId = null;
+        this.clearWords();
+        try {
+            await robot.start();
+            await program(robot, step, tick);
+            return null;
+        } catch (e) {
+            const words = `${e.name}: ${e.message}`;
+            this.showWords(this.blockId, words);
+            return { words, blockId: this.blockId };
+        } finally {
+            robot.close();
+            this.running = false;
+            this.workspace.highlightBlock(null);
+        }
+    }
+
+    showWords(blockId, words) {
+        const block = blockId && this.workspace.getBlockById(blockId);
+        if (!block)
+            return;
+        block.setWarningText(words, 'run');
+        block.select();
+        const icon = block.getIcon?.(window.Blockly.icons.IconType.WARNING);
+        icon?.setBubbleVisible?.(true);
+        this.shownOn = block;
+    }
+
+    clearWords() {
+        if (this.shownOn && !this.shownOn.isDisposed())
+            this.shownOn.setWarningText(null, 'run');
+        this.shownOn = null;
+    }
+}

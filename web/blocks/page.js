@@ -85,7 +85,7 @@ function makeWorkspace(sets) {
     rangeTooltips(Blockly, page.table);
     page.workspace = Blockly.inject($('workspace'), {
         toolbox: toolbox(sets), media: 'node_modules/blockly/media/', trashcan: true, sounds: false,
-        zoom: { controls: true, wheel: true, startScale: 1.0 }, grid: { spacing: 24, length: 3, colour: '#ddd' },
+        zoom: { controls: true, wheel: true, startScale: innerWidth >= 1800 ? 1.35 : 1.0 }, grid: { spacing: 24, length: 3, colour: '#ddd' },
         renderer: 'zelos',
     });
     page.toPython = makePythonGenerator(Blockly, python);
@@ -157,7 +157,7 @@ function showSensors(robot) {
     $('s-battery').textContent = percent != null
         ? `${percent.toFixed(0)} %${p.voltage ? `, ${(p.voltage / 1000).toFixed(1)} V` : ''}` : 'unknown';
     const pose = robot.odometrySum.value();
-    $('s-pose').textContent = `x ${pose.x_mm.toFixed(0)} mm, y ${pose.y_mm.toFixed(0)} mm, heading ${pose.heading_deg.toFixed(0)}°`;
+    $('s-pose').textContent = `x ${pose.x_mm.toFixed(0)}, y ${pose.y_mm.toFixed(0)} mm, ${pose.heading_deg.toFixed(0)}°`;
     $('s-state').textContent = !state.online ? 'offline'
         : `${state.mode || 'online'}${state.controller ? `, driven by ${state.controller}` : ''}`;
 }

@@ -4,7 +4,7 @@
 
 import { SENSORS, STATEMENTS } from './calls.js';
 
-export const HEADER = '# Made with the blocks page. At home: python3 -m roomba.practice THIS_FILE.py\n'
+export const HEADER = '# Made with blocks. At home: python3 -m roomba.practice FILE.py\n'
     + 'from roomba import Robot\n';
 
 // A Python generator for the blocks: Blockly's own for the standard blocks.
@@ -24,7 +24,7 @@ export function makePythonGenerator(Blockly, python) {
         // `with Robot() as robot:`, so that the robot stops at its end.
         finish(code) {
             const imports = [], definitions = [];
-            for (const d of Object.values(this.definitions_))
+            for (const d of Object.values(this.definitions_).filter(d => d.trim()))
                 (/^(from\s+\S+\s+)?import\s+\S+/.test(d) ? imports : definitions).push(d);
             Blockly.CodeGenerator.prototype.finish.call(this, code);
             this.isInitialized = false;

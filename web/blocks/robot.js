@@ -63,18 +63,22 @@ function safetyFix(cause) {
     return 'Check the robot, then run your program again.';
 }
 
-// A timer the browser does not slow down in a tab behind others (a worker's),
-// so that the heartbeat keeps control.
+// Calls tick every ms: from the page's own timer, and from a worker's, which
+// the browser does not slow down in a tab behind others (but which takes a
+// while to start), so that the heartbeat keeps control either way.
 function everyMs(ms, tick) {
+    const id = setInterval(tick, ms);
+    let worker = null;
     try {
-        const source = URL.createObjectURL(new Blob([`setInterval(() => postMessage(0), ${ms});`]));
-        const worker = new Worker(source);
+        worker = new Worker(URL.createObjectURL(new Blob([`setInterval(() => postMessage(0), ${ms});`])));
         worker.onmessage = tick;
-        return () => worker.terminate();
     } catch {
-        const id = setInterval(tick, ms);
-        return () => clearInterval(id);
+        // the page's timer alone
     }
+    return () => {
+        clearInterval(id);
+        worker?.terminate();
+    };
 }
 
 export class Robot {
@@ -409,6 +413,10 @@ export class Robot {
     _heartbeat() {
         if (this.closed || this.control !== true)
             return;
+        // Two timers call this: one keep per half heartbeat is enough.
+        if (now() - (this.keptAt || 0) < this.heartbeatMs / 2)
+            return;
+        this.keptAt = now();
         if (this.telemetryAt === null || now() - this.telemetryAt > STALE_AFTER_MS) {
             const lost = this._lost();
             this._publishCommand('stop', null);
@@ -420,7 +428,9 @@ export class Robot {
     }
 
     _publishControl(action, qos) {
-        const message = { action, sent_ms: Math.trunc(now()) };
+        // A clock that never goes back, from one page to the next of the same
+        // account: the bridge counts the lease from it (docs/mqtt.md, "Control").
+        const message = { action, sent_ms: Math.trunc(performance.timeOrigin + now()) };
         if (action === 'take')
             message.program = 'blocks';
         this.hub.publish(`roomba/${this.name}/control/${this.clientName}`, JSON.stringify(message), qos);

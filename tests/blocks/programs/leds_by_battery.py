@@ -1,4 +1,4 @@
-# Made with the blocks page. At home: python3 -m roomba.practice THIS_FILE.py
+# Made with blocks. At home: python3 -m roomba.practice FILE.py
 from roomba import Robot
 import math
 

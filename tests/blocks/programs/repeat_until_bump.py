@@ -1,7 +1,5 @@
-# Made with the blocks page. At home: python3 -m roomba.practice THIS_FILE.py
+# Made with blocks. At home: python3 -m roomba.practice FILE.py
 from roomba import Robot
-
-
 
 with Robot() as robot:
     while not robot.bumper.any:

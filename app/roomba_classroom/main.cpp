@@ -1,110 +1,15 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// roomba-classroom: sets up a classroom's broker in one command (docs/classroom.md,
-// "Classroom over MQTT"; docs/mqtt.md).
+// roomba-classroom: a classroom's broker in one command (init), and the
+// blocks page with its hub (serve). docs/classroom.md, docs/blocks.md.
 
-#include "classroom_setup.h"
-#include "program_command_line.h"
+#include "classroom_commands.h"
 
-#include <QCommandLineParser>
 #include <QCoreApplication>
-#include <QDir>
-
-#include <cstdio>
-
-namespace {
-
-constexpr int kUsageError = ProgramCommandLine::kUsageError;
-
-int fail(const QString &message, int status = kUsageError)
-{
-    std::fprintf(stderr, "roomba-classroom: %s\n", qPrintable(message));
-    return status;
-}
-
-QStringList listOf(const QString &value)
-{
-    QStringList names;
-    for (const QString &n : value.split(QLatin1Char(',')))
-        names << n.trimmed();
-    return value.trimmed().isEmpty() ? QStringList() : names;
-}
-
-} // namespace
 
 int main(int argc, char *argv[])
 {
     QCoreApplication app(argc, argv);
-    QCommandLineParser parser;
-    const ProgramCommandLine commandLine(parser, QStringLiteral("roomba-classroom"), QStringLiteral(ROOMBA_VERSION), QStringLiteral(
-        "roomba-classroom init DIR --robots r1,r2,r3 --students alice,bob [options]\n\n"
-        "Writes a ready classroom broker into DIR (new or empty): mosquitto.conf (TLS on\n"
-        "port 8883 with a CA and a server certificate made here), the password file with\n"
-        "strong random passwords, the ACL, accounts.txt with every account and password\n"
-        "(readable by you alone; init prints no password),\n"
-        "bridges/NAME.conf for each robot's bridge, and students/NAME.json, each student's\n"
-        "connection file for Python programs. Then: mosquitto -c DIR/mosquitto.conf\n"
-        "Names: 1 to 64 letters, digits, '-' or '_'."));
-    parser.addPositionalArgument(QStringLiteral("init"), QStringLiteral("The command: init."));
-    parser.addPositionalArgument(QStringLiteral("DIR"), QStringLiteral("The folder to write (new or empty)."));
-    parser.addOptions({
-        {QStringLiteral("robots"), QStringLiteral("The robots' names, comma-separated; each gets a bridge account bridge-NAME."), QStringLiteral("NAMES")},
-        {QStringLiteral("students"), QStringLiteral("The students' accounts, comma-separated: they watch and drive."), QStringLiteral("NAMES")},
-        {QStringLiteral("spectators"), QStringLiteral("Accounts that only watch, comma-separated."), QStringLiteral("NAMES")},
-        {QStringLiteral("teacher"), QStringLiteral("The teacher's account (default teacher): takes control from anyone, stops all."), QStringLiteral("NAME")},
-        {QStringLiteral("host"), QStringLiteral("This machine's address on the classroom network; the broker listens there "
-                                                "(default 127.0.0.1: this machine only)."), QStringLiteral("ADDRESS")},
-        {QStringLiteral("port"), QStringLiteral("The broker's TLS port (default 8883)."), QStringLiteral("PORT")},
-    });
-    if (const std::optional<int> status = commandLine.parse(QStringLiteral(" (roomba-classroom --help)")))
-        return *status;
-    const QStringList args = parser.positionalArguments();
-    if (args.value(0) != QLatin1String("init"))
-        return fail(QStringLiteral("say what to do: roomba-classroom init DIR --robots r1,r2 --students alice,bob"));
-    if (args.size() != 2)
-        return fail(args.size() < 2 ? QStringLiteral("say where: roomba-classroom init DIR ...")
-                                    : QStringLiteral("unexpected argument '%1': init takes one folder").arg(args.value(2)));
-
-    classroom::Request r;
-    r.dir = args[1];
-    r.robots = listOf(parser.value(QStringLiteral("robots")));
-    r.students = listOf(parser.value(QStringLiteral("students")));
-    r.spectators = listOf(parser.value(QStringLiteral("spectators")));
-    if (parser.isSet(QStringLiteral("teacher")))
-        r.teacher = parser.value(QStringLiteral("teacher")).trimmed();
-    if (parser.isSet(QStringLiteral("host")))
-        r.host = parser.value(QStringLiteral("host")).trimmed();
-    if (parser.isSet(QStringLiteral("port"))) {
-        bool ok = false;
-        r.port = parser.value(QStringLiteral("port")).toInt(&ok);
-        if (!ok)
-            return fail(QStringLiteral("--port: '%1' is not a port number from 1 to 65535").arg(parser.value(QStringLiteral("port"))));
-    }
-
-    QString error;
-    const std::optional<QList<classroom::Account>> accounts = classroom::init(r, &error);
-    if (!accounts)
-        return fail(error, classroom::check(r).isEmpty() && classroom::missingTools().isEmpty() ? 1 : kUsageError);
-
-    // Passwords go to files readable by their owner alone, never to the
-    // terminal, where scrollback, screen sharing and logs would keep them.
-    const QString dir = QDir(r.dir).absolutePath();
-    QStringList names;
-    for (const classroom::Account &a : *accounts)
-        names << a.name;
-    std::printf("A classroom broker is in %s.\n"
-                "Accounts: %s.\n"
-                "Their passwords are in %s/accounts.txt, and each bridge's in its\n"
-                "bridges/NAME.conf: files only their owner can read. Keep them to yourself.\n\n",
-                qPrintable(dir), qPrintable(names.join(QStringLiteral(", "))), qPrintable(dir));
-    std::printf("Start the broker:  mosquitto -c %s/mosquitto.conf\n"
-                "Each robot's Pi:   copy bridges/NAME.conf and bridges/ca.crt to /etc/roomba-bridge/,\n"
-                "                   then systemctl enable --now roomba-bridge@NAME\n"
-                "A virtual robot:   roomba-bridge --config %s/bridges/%s.conf --sim\n"
-                "The dashboard:     File > Connect to broker: %s, port %d, TLS, CA file %s/ca.crt,\n"
-                "                   user %s and its password in accounts.txt\n"
-                "Each student:      hand out students/NAME.json (their account, password and robot) for\n"
-                "                   Python programs (docs/python.md): ROOMBA_CONFIG=NAME.json python3 square.py\n",
-                qPrintable(dir), qPrintable(dir), qPrintable(r.robots.first()), qPrintable(r.host), r.port,
-                qPrintable(dir), qPrintable(r.teacher));
-    return 0;
+    if (QCoreApplication::arguments().value(1) == QLatin1String("serve"))
+        return classroom::serveCommand();
+    return classroom::initCommand(); // init, --help, --version and mistakes
 }

@@ -9,6 +9,7 @@
 
 #include <mosquitto.h>
 
+#include <algorithm>
 #include <cstring>
 
 #include <sys/resource.h>
@@ -249,6 +250,31 @@ void MqttClient::subscribe(const QString &topicFilter, int qos)
     m_subscriptions.append({topicFilter, qos});
     if (m_connected)
         sendSubscription(topicFilter, qos);
+}
+
+void MqttClient::unsubscribe(const QString &topicFilter)
+{
+    const auto kept = std::find_if(m_subscriptions.cbegin(), m_subscriptions.cend(),
+                                   [&topicFilter](const auto &s) { return s.first == topicFilter; });
+    if (kept == m_subscriptions.cend())
+        return;
+    m_subscriptions.erase(kept);
+    if (m_connected)
+        mosquitto_unsubscribe(m_mosq, nullptr, topicFilter.toUtf8().constData());
+}
+
+bool MqttClient::isValidTopicFilter(const QString &topicFilter)
+{
+    const QByteArray t = topicFilter.toUtf8();
+    return !t.isEmpty() && mosquitto_sub_topic_check(t.constData()) == MOSQ_ERR_SUCCESS
+           && mosquitto_validate_utf8(t.constData(), int(t.size())) == MOSQ_ERR_SUCCESS;
+}
+
+bool MqttClient::isValidTopic(const QString &topic)
+{
+    const QByteArray t = topic.toUtf8();
+    return !t.isEmpty() && mosquitto_pub_topic_check(t.constData()) == MOSQ_ERR_SUCCESS
+           && mosquitto_validate_utf8(t.constData(), int(t.size())) == MOSQ_ERR_SUCCESS;
 }
 
 void MqttClient::sendSubscription(const QString &topicFilter, int qos)

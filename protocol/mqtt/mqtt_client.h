@@ -90,6 +90,11 @@ public:
 
     // Kept and made again after each reconnect. Wildcards + and # allowed.
     void subscribe(const QString &topicFilter, int qos = 0);
+    // No longer kept; the broker is told at once if connected.
+    void unsubscribe(const QString &topicFilter);
+    // What MQTT accepts as a filter to subscribe to, and as a topic to publish on.
+    static bool isValidTopicFilter(const QString &topicFilter);
+    static bool isValidTopic(const QString &topic);
     // Connected, and the broker has acknowledged every subscription: from
     // here on nothing sent to them is missed.
     bool isSubscribed() const { return m_connected && m_unacknowledged == 0; }

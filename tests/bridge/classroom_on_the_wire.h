@@ -14,6 +14,7 @@
 // be written, one core shared with two busy loops.
 
 #include "bridge_rig.h"
+#include "classroom_accounts.h"
 #include "command_encoder.h"
 #include "robot_profile.h"
 
@@ -210,23 +211,9 @@ public:
 
     mqtt::BrokerAddress as(const QString &account) const
     {
-        mqtt::BrokerAddress a;
-        a.port = m_broker.port();
-        a.tls = true;
-        a.caFile = QDir(m_class).filePath(QStringLiteral("ca.crt"));
-        a.username = account;
-        a.password = passwordOf(account);
-        return a;
+        return classroomBroker(m_broker.port(), account, passwordOf(account), QDir(m_class).filePath(QStringLiteral("ca.crt")));
     }
-    QString passwordOf(const QString &account) const
-    {
-        for (const QString &line : m_accounts.split(QLatin1Char('\n'))) {
-            const QStringList f = line.split(QLatin1Char(' '), Qt::SkipEmptyParts);
-            if (f.size() == 3 && f[1] == account)
-                return f[2];
-        }
-        return {};
-    }
+    QString passwordOf(const QString &account) const { return passwordIn(m_accounts, account); }
 
     // mosquitto_pub as `account`, with the rest of its arguments.
     QString publisher(const QString &account, const QString &rest) const

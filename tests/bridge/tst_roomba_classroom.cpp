@@ -8,6 +8,7 @@
 // leave nothing behind.
 
 #include "bridge_rig.h"
+#include "classroom_accounts.h"
 #include "fleet_directory.h"
 #include "process_run.h"
 
@@ -38,21 +39,6 @@ class TestRoombaClassroom : public QObject {
         const ProcessRun r = runProcess(QStringLiteral(ROOMBA_CLASSROOM_PATH), args, {}, 60000, {}, env);
         return {r.exitCode, QString::fromUtf8(r.out), QString::fromUtf8(r.err)};
     }
-    static QString accountsOf(const QString &dir)
-    {
-        QFile f(QDir(dir).filePath(QStringLiteral("accounts.txt")));
-        return f.open(QIODevice::ReadOnly) ? QString::fromUtf8(f.readAll()) : QString();
-    }
-    // An account's password in accounts.txt: "ROLE  ACCOUNT  PASSWORD".
-    static QString passwordOf(const QString &accounts, const QString &account)
-    {
-        for (const QString &line : accounts.split(QLatin1Char('\n'))) {
-            const QStringList f = line.split(QLatin1Char(' '), Qt::SkipEmptyParts);
-            if (f.size() == 3 && f[1] == account)
-                return f[2];
-        }
-        return {};
-    }
     // What docs/mqtt.md lets an account write ("Accounts and names").
     static bool allowed(const QString &account, const QString &topic)
     {
@@ -71,16 +57,6 @@ class TestRoombaClassroom : public QObject {
             return kind == QLatin1String("state") || kind == QLatin1String("telemetry") || kind == QLatin1String("stats")
                    || kind == QLatin1String("reply");
         return false; // spectators, stop lines, and a bridge on another robot
-    }
-    static BrokerAddress tlsAddress(int port, const QString &user, const QString &password, const QString &ca)
-    {
-        BrokerAddress a;
-        a.port = port;
-        a.tls = true;
-        a.caFile = ca;
-        a.username = user;
-        a.password = password;
-        return a;
     }
 
     // r1's bridge with the config init wrote, on a virtual robot; what it
@@ -115,8 +91,8 @@ private slots:
                                  "server.key", "bridges/r1.conf", "bridges/r2.conf", "bridges/ca.crt",
                                  "students/alice.json", "students/bob.json"})
             QVERIFY2(QFile::exists(QDir(dir).filePath(QLatin1String(file))), file);
-        const QString accounts = accountsOf(dir);
-        const QString alice = passwordOf(accounts, QStringLiteral("alice"));
+        const QString accounts = accountsIn(dir);
+        const QString alice = passwordIn(accounts, QStringLiteral("alice"));
         QCOMPARE(alice.size(), 20);
         // Each student's connection file: the broker, the CA, the account, and a robot each in turn.
         for (const auto &[student, robot] : {std::pair{"alice", "r1"}, std::pair{"bob", "r2"}}) {
@@ -125,11 +101,11 @@ private slots:
             const QJsonObject c = QJsonDocument::fromJson(f.readAll()).object();
             QCOMPARE(c.value(QLatin1String("broker")).toString(), QStringLiteral("mqtts://127.0.0.1:%1").arg(broker.port()));
             QCOMPARE(c.value(QLatin1String("username")).toString(), QLatin1String(student));
-            QCOMPARE(c.value(QLatin1String("password")).toString(), passwordOf(accounts, QLatin1String(student)));
+            QCOMPARE(c.value(QLatin1String("password")).toString(), passwordIn(accounts, QLatin1String(student)));
             QCOMPARE(c.value(QLatin1String("robot")).toString(), QLatin1String(robot));
             QVERIFY(c.value(QLatin1String("ca")).toString().startsWith(QLatin1String("-----BEGIN CERTIFICATE-----")));
         }
-        QVERIFY(passwordOf(accounts, QStringLiteral("bob")) != alice);
+        QVERIFY(passwordIn(accounts, QStringLiteral("bob")) != alice);
         // The secrets are the owner's alone.
         for (const char *secret :
              {"passwords", "accounts.txt", "acl", "server.key", "ca.key", "bridges/r1.conf", "students/alice.json"})
@@ -144,11 +120,11 @@ private slots:
         // A student logs in over TLS with the password from accounts.txt; a wrong one is refused.
         MqttClient student(QStringLiteral("alice"));
         QSignalSpy studentUp(&student, &MqttClient::connected);
-        QVERIFY(student.connectToBroker(tlsAddress(broker.port(), QStringLiteral("alice"), alice, ca)));
+        QVERIFY(student.connectToBroker(classroomBroker(broker.port(), QStringLiteral("alice"), alice, ca)));
         QTRY_COMPARE_WITH_TIMEOUT(studentUp.count(), 1, 10000);
         MqttClient guesser(QStringLiteral("bob"));
         QSignalSpy guesserErrors(&guesser, &MqttClient::errorOccurred);
-        QVERIFY(guesser.connectToBroker(tlsAddress(broker.port(), QStringLiteral("bob"), QStringLiteral("bob-pw"), ca)));
+        QVERIFY(guesser.connectToBroker(classroomBroker(broker.port(), QStringLiteral("bob"), QStringLiteral("bob-pw"), ca)));
         QTRY_VERIFY_WITH_TIMEOUT(!guesserErrors.isEmpty(), 10000);
         QVERIFY2(guesserErrors[0][0].toString().contains(QLatin1String("not authorised"))
                      || guesserErrors[0][0].toString().contains(QLatin1String("wrong user name or password")),
@@ -164,7 +140,7 @@ private slots:
         FleetDirectory console;
         QSignalSpy frames(&console, &FleetDirectory::telemetryReceived);
         QVERIFY(console.connectToBroker(
-            tlsAddress(broker.port(), QStringLiteral("teacher"), passwordOf(accounts, QStringLiteral("teacher")), ca)));
+            classroomBroker(broker.port(), QStringLiteral("teacher"), passwordIn(accounts, QStringLiteral("teacher")), ca)));
         QTRY_VERIFY_WITH_TIMEOUT(console.robot(QStringLiteral("r1")) && console.robot(QStringLiteral("r1"))->state.online, 15000);
         console.follow(QStringLiteral("r1"), true);
         QTRY_VERIFY_WITH_TIMEOUT(!frames.isEmpty(), 10000);
@@ -194,9 +170,9 @@ private slots:
         const QString config = QDir(dir).filePath(QStringLiteral("mosquitto.conf"));
         QVERIFY2(broker.startWith(config), qPrintable(broker.error()));
         const QString ca = QDir(dir).filePath(QStringLiteral("ca.crt"));
-        const QString accounts = accountsOf(dir);
+        const QString accounts = accountsIn(dir);
         const auto as = [&](const QString &account) {
-            return tlsAddress(broker.port(), account, passwordOf(accounts, account), ca);
+            return classroomBroker(broker.port(), account, passwordIn(accounts, account), ca);
         };
 
         QProcess bridge;
@@ -260,9 +236,9 @@ private slots:
         QVERIFY2(init.status == 0, qPrintable(init.err));
         QVERIFY2(broker.startWith(QDir(dir).filePath(QStringLiteral("mosquitto.conf"))), qPrintable(broker.error()));
         const QString ca = QDir(dir).filePath(QStringLiteral("ca.crt"));
-        const QString accounts = accountsOf(dir);
+        const QString accounts = accountsIn(dir);
         const auto as = [&](const QString &account) {
-            return tlsAddress(broker.port(), account, passwordOf(accounts, account), ca);
+            return classroomBroker(broker.port(), account, passwordIn(accounts, account), ca);
         };
 
         // The teacher reads everything.
@@ -338,9 +314,9 @@ private slots:
         const Run init = classroom({"init", dir, "--robots", "r1", "--students", "alice", "--spectators", "guest"});
         QVERIFY2(init.status == 0, qPrintable(init.err));
         QVERIFY2(init.out.contains(QDir(dir).filePath(QStringLiteral("accounts.txt"))), qPrintable(init.out));
-        const QString accounts = accountsOf(dir);
+        const QString accounts = accountsIn(dir);
         for (const char *account : {"teacher", "alice", "guest", "bridge-r1", "bridge-r1-stops"}) {
-            const QString password = passwordOf(accounts, QLatin1String(account));
+            const QString password = passwordIn(accounts, QLatin1String(account));
             QCOMPARE(password.size(), 20);
             QVERIFY2(!init.out.contains(password) && !init.err.contains(password), account);
         }
@@ -398,7 +374,7 @@ private slots:
         MqttClient student(QStringLiteral("alice"));
         QSignalSpy errors(&student, &MqttClient::errorOccurred), up(&student, &MqttClient::connected);
         QVERIFY(student.connectToBroker(
-            tlsAddress(broker.port(), QStringLiteral("alice"), passwordOf(accountsOf(dir), QStringLiteral("alice")), wrongCa)));
+            classroomBroker(broker.port(), QStringLiteral("alice"), passwordIn(accountsIn(dir), QStringLiteral("alice")), wrongCa)));
         QTRY_VERIFY_WITH_TIMEOUT(!errors.isEmpty(), 10000);
         const QString message = errors[0][0].toString();
         QVERIFY2(message.contains(QStringLiteral("is not signed by the CA in %1").arg(wrongCa))

@@ -28,9 +28,9 @@ async function load(page, file) {
 }
 
 async function runToEnd(page, timeout) {
+    const before = await page.evaluate(() => window.blocksPage.runs || 0);
     await page.click('#run');
-    await page.waitForFunction(() => window.blocksPage.runner.running, null, { timeout: 5000 });
-    await page.waitForFunction(() => !window.blocksPage.runner.running, null, { timeout });
+    await page.waitForFunction(n => (window.blocksPage.runs || 0) > n, before, { timeout });
     return page.evaluate(() => window.blocksPage.lastEnd);
 }
 
@@ -48,7 +48,7 @@ async function main() {
             await signIn(page);
             await load(page, options.program);
             const python = await page.textContent('#python');
-            const ended = await runToEnd(page, 60000);
+            const ended = await runToEnd(page, 50000);
             const pose = await page.evaluate(() => window.blocksPage.robot.odometrySum.value());
             say({ ended, pose, python, problems });
         } else if (scenario === 'stop-all') {
@@ -85,6 +85,9 @@ async function main() {
         } else {
             throw new Error(`no scenario ${scenario}`);
         }
+    } catch (e) {
+        const status = await page.textContent('#status').catch(() => '(no page)');
+        throw new Error(`${e.message}\nthe page said: ${status}\nerrors: ${problems.join('; ')}`);
     } finally {
         await browser.close();
     }

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Which library call each block is, in one place: the Python generator
-// writes it as Python (robot.straight(500, speed=200)), the runtime's as
-// JavaScript (await robot.straight(500, 200)), so a block does in the
-// browser what its line of Python does.
+// writes it as Python (robot.straight(500, speed=200)) and the page's
+// interpreter makes the same call on its Robot (robot.js), so a block does
+// in the browser what its line of Python does.
 
 const value = (input, keyword = null) => ({ value: input, keyword });
 const flag = (field, keyword) => ({ flag: field, keyword });

@@ -9,32 +9,47 @@ export class Hub {
         this.events = events;
         this.signedIn = false;
         this.listeners = new Set();
-        this.socket = null;
+        this.worker = null;
+        this.open_ = false;
         this.queue = [];
     }
 
+    // The socket lives in a worker (hub_worker.js), which also sends the
+    // heartbeat while a program holds control.
     open() {
-        this.socket = new WebSocket(this.url);
-        this.socket.onopen = () => {
-            for (const text of this.queue.splice(0))
-                this.socket.send(text);
+        this.worker = new Worker(new URL('./hub_worker.js', import.meta.url));
+        this.worker.onmessage = ({ data }) => {
+            if (data.opened) {
+                this.open_ = true;
+                for (const text of this.queue.splice(0))
+                    this.worker.postMessage({ send: text });
+            } else if ('received' in data) {
+                this._received(data.received);
+            } else if (data.closed) {
+                const was = this.signedIn;
+                this.signedIn = false;
+                if (was)
+                    this.listeners.forEach(l => l.brokerLost());
+                this.events.closed('the page lost its connection to the classroom hub');
+            } else if (data.stale) {
+                this.listeners.forEach(l => l.heartbeatStale?.());
+            }
         };
-        this.socket.onmessage = event => this._received(event.data);
-        this.socket.onclose = () => {
-            const was = this.signedIn;
-            this.signedIn = false;
-            if (was)
-                this.listeners.forEach(l => l.brokerLost());
-            this.events.closed('the page lost its connection to the classroom hub');
-        };
+        this.worker.postMessage({ open: this.url });
     }
 
     send(message) {
         const text = JSON.stringify(message);
-        if (this.socket.readyState === WebSocket.OPEN)
-            this.socket.send(text);
+        if (this.open_)
+            this.worker.postMessage({ send: text });
         else
             this.queue.push(text);
+    }
+
+    // Keeps control of robot as client, with a keep every heartbeatMs while
+    // telemetry comes within staleMs; null stops.
+    keep(keeping) {
+        this.worker.postMessage({ keep: keeping });
     }
 
     signIn(user, password) {

@@ -2,7 +2,6 @@
 // The blocks page: sign in to the classroom hub, choose a robot, program it
 // with blocks, see the Python they make, run them and watch its sensors.
 
-import { makeJavascriptGenerator } from './javascript.js';
 import { defineBlocks, rangeTooltips, rangeWarnings, toolbox } from './blocks.js';
 import { Hub } from './hub.js';
 import { makePythonGenerator, pythonProgram } from './python.js';
@@ -11,7 +10,7 @@ import { Runner } from './runner.js';
 import { ProtocolTable } from './table.js';
 
 const $ = id => document.getElementById(id);
-const { Blockly, python, javascript } = window;
+const { Blockly, python } = window;
 const page = { hub: null, user: null, robot: null, workspace: null, runner: null, table: null, toPython: null };
 window.blocksPage = page; // for the page's own tests
 
@@ -21,7 +20,7 @@ function say(text, kind = '') {
 }
 
 function start() {
-    if (!Blockly || !python || !javascript) {
+    if (!Blockly || !python) {
         say('Blockly is missing: the page was built without it (npm could not fetch it). Ask your teacher to '
             + 'build the dashboard again with the network reachable.', 'problem');
         $('sign-in').hidden = true;
@@ -89,7 +88,7 @@ function makeWorkspace(sets) {
         renderer: 'zelos',
     });
     page.toPython = makePythonGenerator(Blockly, python);
-    page.runner = new Runner(page.workspace, makeJavascriptGenerator(javascript));
+    page.runner = new Runner(page.workspace);
     const saved = localStorage.getItem(storageKey());
     if (saved) {
         try {
@@ -173,6 +172,7 @@ async function run() {
     const ended = await page.runner.run(robot);
     page.hub.send({ op: 'ended', robot: robot.name, why: ended ? ended.words : 'finished' });
     page.lastEnd = ended;
+    page.runs = (page.runs || 0) + 1;
     say(ended ? ended.words : `Your program finished on ${robot.name}.`, ended ? 'problem' : '');
     $('run').disabled = false;
     $('stop').disabled = true;

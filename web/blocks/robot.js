@@ -63,24 +63,6 @@ function safetyFix(cause) {
     return 'Check the robot, then run your program again.';
 }
 
-// Calls tick every ms: from the page's own timer, and from a worker's, which
-// the browser does not slow down in a tab behind others (but which takes a
-// while to start), so that the heartbeat keeps control either way.
-function everyMs(ms, tick) {
-    const id = setInterval(tick, ms);
-    let worker = null;
-    try {
-        worker = new Worker(URL.createObjectURL(new Blob([`setInterval(() => postMessage(0), ${ms});`])));
-        worker.onmessage = tick;
-    } catch {
-        // the page's timer alone
-    }
-    return () => {
-        clearInterval(id);
-        worker?.terminate();
-    };
-}
-
 export class Robot {
     // hub: the page's Hub (subscribe, publish, listen); user: the account,
     // which the broker makes the client id; table: a ProtocolTable.
@@ -130,7 +112,6 @@ export class Robot {
             `robot ${this.name} is not on the broker: is its bridge running, and is the name right?`, false);
         await this._wait(() => this.keyFrameSeen, deadline,
             `robot ${this.name} sends no data: is it switched on and connected to its bridge?`, false);
-        this.stopHeartbeat = everyMs(this.heartbeatMs, () => this._heartbeat());
     }
 
     // What the end of a Python program does (close()): stops the robot if it
@@ -144,8 +125,6 @@ export class Robot {
             this._release();
         }
         this.closed = true;
-        this.stopHeartbeat?.();
-        this.stopHeartbeat = null;
     }
 
     // The Stop button, as Ctrl-C: the robot stops at once, the program ends.
@@ -300,6 +279,13 @@ export class Robot {
         return this.swallow.delete(notice);
     }
 
+    // Control gone, however it went: the worker stops keeping it.
+    _loseControl() {
+        if (this.control === true)
+            this._keep(false);
+        this.control = false;
+    }
+
     _onControlReply(reply) {
         const answersTake = !reply.ok || reply.controller === this.clientName;
         if (this.takeAnswer === null && this.control === 'taking' && answersTake) {
@@ -309,7 +295,7 @@ export class Robot {
         }
         if (reply.ok || !this.control)
             return;
-        this.control = false;
+        this._loseControl();
         this.moving = false;
         this._notify();
         if (this._swallowed('control'))
@@ -410,27 +396,26 @@ export class Robot {
 
     // ----- control, and the heartbeat -----
 
-    _heartbeat() {
+    // The hub's worker keeps control while this holds it (Python's heartbeat
+    // thread); when the telemetry goes stale it stops keeping and says so.
+    _keep(on) {
+        this.hub.keep(on ? { robot: this.name, client: this.clientName, heartbeatMs: this.heartbeatMs,
+                             staleMs: STALE_AFTER_MS } : null);
+    }
+
+    heartbeatStale() {
         if (this.closed || this.control !== true)
             return;
-        // Two timers call this: one keep per half heartbeat is enough.
-        if (now() - (this.keptAt || 0) < this.heartbeatMs / 2)
-            return;
-        this.keptAt = now();
-        if (this.telemetryAt === null || now() - this.telemetryAt > STALE_AFTER_MS) {
-            const lost = this._lost();
-            this._publishCommand('stop', null);
-            this._release();
-            this._deliver(lost, false);
-            return;
-        }
-        this._publishControl('keep', 0);
+        const lost = this._lost(); // before the release forgets that it moved
+        this._publishCommand('stop', null);
+        this._release();
+        this._deliver(lost, false);
     }
 
     _publishControl(action, qos) {
         // A clock that never goes back, from one page to the next of the same
         // account: the bridge counts the lease from it (docs/mqtt.md, "Control").
-        const message = { action, sent_ms: Math.trunc(performance.timeOrigin + now()) };
+        const message = { action, sent_ms: Math.trunc(performance.timeOrigin + now()) }; // as hub_worker.js
         if (action === 'take')
             message.program = 'blocks';
         this.hub.publish(`roomba/${this.name}/control/${this.clientName}`, JSON.stringify(message), qos);
@@ -459,6 +444,7 @@ export class Robot {
         } finally {
             if (this.control === 'taking')
                 this.control = Boolean(this.takeAnswer?.ok);
+            this._keep(this.control === true);
         }
         if (!answer)
             throw new RobotError(`${this.name} did not answer when ${this.clientName} asked to drive it: your account may `
@@ -474,7 +460,7 @@ export class Robot {
 
     _release() {
         const had = this.control === true;
-        this.control = false;
+        this._loseControl();
         this.moving = false;
         if (had)
             this._publishControl('release', 1);
@@ -590,7 +576,7 @@ export class Robot {
                 + `robot was stopped. Is it pushing against a wall or stuck? Move it, then run your program again.`,
                 this.name, call);
         if (this.table.controlLost.has(stop)) {
-            this.control = false;
+            this._loseControl();
             return this._controlLost(stop === 'stop-all' ? 'stop all' : error, by, call);
         }
         if (stop === 'stopped' && by)

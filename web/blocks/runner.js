@@ -4,17 +4,16 @@
 // Stop button, a value out of range) is shown on that block in the library's
 // words, as Python prints it ("Stopped: Stop all: your teacher ...").
 
-const AsyncFunction = (async () => {}).constructor;
+import { BlockError, Interpreter, knows } from './interpreter.js';
+
 // How many steps run before the page is given time to draw and hear the hub.
 const STEPS_PER_BREATH = 25;
 
 const breath = () => new Promise(resolve => setTimeout(resolve, 0));
 
 export class Runner {
-    // workspace: the Blockly workspace; toJavascript: javascript.js's generator.
-    constructor(workspace, toJavascript) {
+    constructor(workspace) {
         this.workspace = workspace;
-        this.toJavascript = toJavascript;
         this.running = false;
         this.blockId = null;
     }
@@ -22,26 +21,25 @@ export class Runner {
     // Runs the workspace's program on robot; returns null when it finished, or
     // { words, blockId } for what ended it.
     async run(robot) {
-        const code = this.toJavascript.workspaceToCode(this.workspace);
-        const program = new AsyncFunction('robot', 'step', 'tick', code);
         let steps = 0;
-        const step = async id => {
-            this.blockId = id;
-            this.workspace.highlightBlock(id);
+        const step = async block => {
+            this.blockId = block.id;
+            this.workspace.highlightBlock(block.id);
             robot.checkPending();
             if (++steps % STEPS_PER_BREATH === 0)
                 await breath();
-        };
-        const tick = async () => {
-            robot.checkPending();
-            await breath();
         };
         this.running = true;
         this.blockId = null;
         this.clearWords();
         try {
+            const unknown = this.workspace.getAllBlocks(false).find(b => !knows(b.type));
+            if (unknown) {
+                this.blockId = unknown.id;
+                throw new BlockError(`the page cannot run a "${unknown.type}" block`);
+            }
             await robot.start();
-            await program(robot, step, tick);
+            await new Interpreter(robot, step).runWorkspace(this.workspace);
             return null;
         } catch (e) {
             const words = `${e.name}: ${e.message}`;

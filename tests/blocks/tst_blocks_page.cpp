@@ -123,12 +123,14 @@ private slots:
         QCOMPARE(seen.value(QLatin1String("python")).toString(), QString::fromUtf8(golden.readAll()));
 
         int straights = 0, turns = 0;
+        double turned = 0; // what the bridge measured, beside the page's own odometry
         for (const QJsonObject &reply : m_aliceReplies) {
             if (!reply.contains(QLatin1String("seconds")))
                 continue; // not a move's answer
             QVERIFY2(reply.value(QLatin1String("ok")).toBool(), QJsonDocument(reply).toJson().constData());
             const double distance = reply.value(QLatin1String("distance_mm")).toDouble();
             const double angle = reply.value(QLatin1String("angle_deg")).toDouble();
+            turned += angle;
             if (std::abs(distance - 500) < 5 && std::abs(angle) < 2)
                 ++straights;
             else if (std::abs(angle - 90) < 2 && std::abs(distance) < 5)
@@ -140,9 +142,11 @@ private slots:
         QVERIFY2(straights == 4, replies.constData());
         QCOMPARE(turns, 4);
         const QJsonObject pose = seen.value(QLatin1String("pose")).toObject();
+        qInfo("the moves turned %.2f degrees in all", turned);
         QVERIFY2(std::hypot(pose.value(QLatin1String("x_mm")).toDouble(), pose.value(QLatin1String("y_mm")).toDouble()) < 30,
                  r.out.constData());
-        QVERIFY2(std::abs(pose.value(QLatin1String("heading_deg")).toDouble()) < 3, r.out.constData());
+        QVERIFY2(std::abs(pose.value(QLatin1String("heading_deg")).toDouble()) < 5, r.out.constData());
+        QVERIFY2(std::abs(turned - 360) < 3, qPrintable(QString::number(turned)));
     }
 
     // Stop all while the page's program waits for the bumper: the program ends

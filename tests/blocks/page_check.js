@@ -62,7 +62,11 @@ async function main() {
             const shown = await page.evaluate(() => {
                 const { lastEnd, workspace } = window.blocksPage;
                 const block = lastEnd && workspace.getBlockById(lastEnd.blockId);
-                const bubbles = [...document.querySelectorAll('.blocklyBubble')].map(b => b.textContent);
+                // A bubble's lines, joined as the words were before they were wrapped.
+                const bubbles = [...document.querySelectorAll('.blocklyBubble')].map(b => {
+                    const lines = [...b.querySelectorAll('text')].map(t => t.textContent);
+                    return lines.length ? lines.join(' ') : b.textContent;
+                });
                 return { lastEnd, blockType: block?.type, bubbles,
                          status: document.getElementById('status').textContent };
             });

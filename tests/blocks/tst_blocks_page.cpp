@@ -15,6 +15,7 @@
 
 #include <QDir>
 #include <QFile>
+#include <QFileInfo>
 #include <QJsonArray>
 #include <QTemporaryDir>
 
@@ -176,6 +177,23 @@ private slots:
         QCOMPARE(seen.value(QLatin1String("status")).toString(), words);
         // The teacher's view heard how it ended.
         QVERIFY2(m_hub.waitToSay(words.toUtf8().left(40)), m_hub.said().constData());
+    }
+
+    // The page at a laptop's and a projector's size, signed in with a program
+    // (PNGs in the check's folder, for docs/images): no error on the page.
+    void screenshotsAtLaptopAndProjectorSizes()
+    {
+        QStringList arguments = checkArguments("screenshots", "cliff_safe_wander.json");
+        arguments << QStringLiteral("out=%1").arg(m_checkDir);
+        QProcess check;
+        check.setWorkingDirectory(m_checkDir);
+        check.start(QStringLiteral("node"), arguments);
+        QVERIFY(check.waitForFinished(60000));
+        const QByteArray out = check.readAllStandardOutput();
+        QVERIFY2(check.exitCode() == 0, check.readAllStandardError().constData());
+        QVERIFY2(lastLine(out).value(QLatin1String("problems")).toArray().isEmpty(), out.constData());
+        for (const char *name : {"blocks-1280x720.png", "blocks-1920x1080.png"})
+            QVERIFY2(QFileInfo(QDir(m_checkDir).filePath(QLatin1String(name))).size() > 10000, name);
     }
 
     void cleanupTestCase()

@@ -156,7 +156,7 @@ function showSensors(robot) {
     $('s-battery').textContent = percent != null
         ? `${percent.toFixed(0)} %${p.voltage ? `, ${(p.voltage / 1000).toFixed(1)} V` : ''}` : 'unknown';
     const pose = robot.odometrySum.value();
-    $('s-pose').textContent = `x ${pose.x_mm.toFixed(0)}, y ${pose.y_mm.toFixed(0)} mm, ${pose.heading_deg.toFixed(0)}°`;
+    $('s-pose').textContent = `${pose.x_mm.toFixed(0)}, ${pose.y_mm.toFixed(0)} mm, ${pose.heading_deg.toFixed(0)}°`;
     $('s-state').textContent = !state.online ? 'offline'
         : `${state.mode || 'online'}${state.controller ? `, driven by ${state.controller}` : ''}`;
 }

@@ -9,6 +9,17 @@ import { BlockError, Interpreter, knows } from './interpreter.js';
 // How many steps run before the page is given time to draw and hear the hub.
 const STEPS_PER_BREATH = 25;
 
+// A block's bubble does not wrap its text: lines of a readable length.
+function wrapped(words, width = 56) {
+    const lines = [''];
+    for (const word of words.split(' ')) {
+        if (lines.at(-1) && lines.at(-1).length + word.length + 1 > width)
+            lines.push('');
+        lines[lines.length - 1] += (lines.at(-1) ? ' ' : '') + word;
+    }
+    return lines.join('\n');
+}
+
 const breath = () => new Promise(resolve => setTimeout(resolve, 0));
 
 export class Runner {
@@ -56,7 +67,7 @@ export class Runner {
         const block = blockId && this.workspace.getBlockById(blockId);
         if (!block)
             return;
-        block.setWarningText(words, 'run');
+        block.setWarningText(wrapped(words), 'run');
         block.select();
         const icon = block.getIcon?.(window.Blockly.icons.IconType.WARNING);
         icon?.setBubbleVisible?.(true);

@@ -18,8 +18,8 @@ async function signIn(page) {
     await page.goto(`${url}/#user=${options.user}`);
     await page.fill('#password', options.password);
     await page.click('#sign-in button[type=submit]');
-    await page.waitForSelector('#work:not([hidden])', { timeout: 15000 });
-    await page.waitForFunction(() => window.blocksPage.robot?.keyFrameSeen, null, { timeout: 15000 });
+    await page.waitForSelector('#work:not([hidden])', { timeout: 30000 });
+    await page.waitForFunction(() => window.blocksPage.robot?.keyFrameSeen, null, { timeout: 30000 });
 }
 
 async function load(page, file) {
@@ -56,7 +56,7 @@ async function main() {
             await load(page, options.program);
             await page.click('#run');
             // Moving: the robot holds control for this program.
-            await page.waitForFunction(() => window.blocksPage.robot.moving, null, { timeout: 15000 });
+            await page.waitForFunction(() => window.blocksPage.robot.moving, null, { timeout: 30000 });
             say({ running: true });
             await page.waitForFunction(() => !window.blocksPage.runner.running, null, { timeout: 30000 });
             const shown = await page.evaluate(() => {

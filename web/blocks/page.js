@@ -125,15 +125,17 @@ function chooseRobot(name) {
     $('run').disabled = false;
 }
 
+// Ten times a second is enough to read, and leaves the machine to the program.
+const SENSOR_VIEW_MS = 100;
 let drawing = false;
 function showSensorsSoon(robot) {
     if (drawing)
         return;
     drawing = true;
-    requestAnimationFrame(() => {
+    setTimeout(() => requestAnimationFrame(() => {
         drawing = false;
         showSensors(robot);
-    });
+    }), SENSOR_VIEW_MS);
 }
 
 const yes = (on, word) => on ? `<span class="on">${word}</span>` : '';

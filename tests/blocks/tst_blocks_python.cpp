@@ -3,7 +3,7 @@
 // as the page saves them): the Python it makes (generate.mjs, in node with
 // Blockly's headless workspace) equals programs/*.py, which compile and
 // speak the roomba library (check_program.py binds every call to Robot's
-// own signature).
+// own signature); the page's Robot refuses bad values in the library's words.
 
 #include "process_run.h" // tests/common
 
@@ -83,6 +83,26 @@ private slots:
                                               QStringList{QStringLiteral(BLOCKS_SOURCE "/check_program.py")} + files,
                                               {}, 30000, {}, environment);
         QVERIFY2(checked.exitCode == 0, (checked.out + checked.err).constData());
+    }
+
+    // The page's Robot refuses what the library refuses, in the same words,
+    // and plans a move's time as the library (and the bridge) does.
+    void pageRobotSaysWhatTheLibrarySays()
+    {
+        const ProcessRun page = runProcess(QStringLiteral("node"),
+                                           {QStringLiteral(BLOCKS_SOURCE "/value_errors.mjs"), QStringLiteral(BLOCKS_PAGE_DIR),
+                                            QStringLiteral(PROTOCOL_JSON)},
+                                           {}, 30000);
+        QVERIFY2(page.exitCode == 0, page.err.constData());
+        QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
+        environment.insert(QStringLiteral("PYTHONPATH"), QStringLiteral(PYTHON_LIBRARY));
+        environment.insert(QStringLiteral("PYTHONDONTWRITEBYTECODE"), QStringLiteral("1"));
+        const ProcessRun library = runProcess(QStringLiteral(DEBIAN_PYTHON),
+                                              {QStringLiteral(BLOCKS_SOURCE "/value_errors.py"), QStringLiteral(PROTOCOL_JSON)},
+                                              {}, 30000, {}, environment);
+        QVERIFY2(library.exitCode == 0, library.err.constData());
+        QVERIFY(library.out.count('\n') >= 17);
+        QCOMPARE(QString::fromUtf8(page.out), QString::fromUtf8(library.out));
     }
 };
 

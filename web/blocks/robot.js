@@ -719,7 +719,8 @@ export class Robot {
 
     digits(text) {
         if (typeof text !== 'string' || text.length > 4 || [...text].some(c => c.charCodeAt(0) < 32 || c.charCodeAt(0) > 126))
-            throw new ValueError(`digits() shows 0 to 4 letters, digits or signs, like "HI", not ${JSON.stringify(text)}`);
+            throw new ValueError(`digits() shows 0 to 4 letters, digits or signs, like "HI", not ${
+                typeof text === 'string' ? `'${text}'` : String(text)}`);
         const padded = text.toUpperCase().padEnd(4);
         const fields = Object.fromEntries([...padded].map((c, i) => [`digit-${3 - i}`, c.charCodeAt(0)]));
         return this._simple('digit-leds-ascii', fields, 'digits');

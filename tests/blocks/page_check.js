@@ -4,7 +4,8 @@
 // SCENARIO: "square" (sign in from the link, load programs/square.json, run
 // it, print the pose the page read at its end as JSON), "stop-all" (run a
 // long program; the test sends Stop all once this prints "running"; print
-// the words on the block and the status line), "screenshots" (out=DIR).
+// the words on the block and the status line), "stop-button" (the same,
+// the page's own Stop button pressed), "screenshots" (out=DIR).
 'use strict';
 const { chromium } = require('playwright-core');
 const fs = require('fs');
@@ -51,13 +52,15 @@ async function main() {
             const ended = await runToEnd(page, 50000);
             const pose = await page.evaluate(() => window.blocksPage.robot.odometrySum.value());
             say({ ended, pose, python, problems });
-        } else if (scenario === 'stop-all') {
+        } else if (scenario === 'stop-all' || scenario === 'stop-button') {
             await signIn(page);
             await load(page, options.program);
             await page.click('#run');
             // Moving: the robot holds control for this program.
             await page.waitForFunction(() => window.blocksPage.robot.moving, null, { timeout: 30000 });
             say({ running: true });
+            if (scenario === 'stop-button')
+                await page.click('#stop');
             await page.waitForFunction(() => !window.blocksPage.runner.running, null, { timeout: 30000 });
             const shown = await page.evaluate(() => {
                 const { lastEnd, workspace } = window.blocksPage;
@@ -70,7 +73,7 @@ async function main() {
                 return { lastEnd, blockType: block?.type, bubbles,
                          status: document.getElementById('status').textContent };
             });
-            if (options.out)
+            if (options.out && scenario === 'stop-all')
                 await page.screenshot({ path: path.join(options.out, 'blocks-stopped.png') });
             say({ ...shown, problems });
         } else if (scenario === 'screenshots') {

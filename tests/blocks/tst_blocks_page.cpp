@@ -3,8 +3,8 @@
 // its mosquitto over TLS, roomba-bridge --sim as r1 and roomba-classroom
 // serve with the page the build made; Debian's Chromium (page_check.js,
 // playwright-core) signs alice in from her link, runs the square and the
-// teacher's Stop all ends a running program with the library's words on
-// the block that ran.
+// teacher's Stop all, and the page's Stop button, end a running program
+// with the library's words on the block that ran.
 
 #include "blocks_hub_rig.h"  // tests/bridge
 #include "classroom_accounts.h"
@@ -32,6 +32,8 @@ class TestBlocksPage : public QObject {
     MqttClient m_teacher{QStringLiteral("teacher")};
     QList<QJsonObject> m_aliceReplies;
     bool m_online = false;
+    QString m_controller;     // who holds r1, from its state
+    QStringList m_controllers; // each one its state said
     QString m_class, m_accounts, m_checkDir;
 
     QStringList checkArguments(const char *scenario, const char *program) const
@@ -94,9 +96,12 @@ private slots:
             const QJsonObject o = QJsonDocument::fromJson(payload).object();
             if (topic == topics::reply(QStringLiteral("r1"), QStringLiteral("alice")))
                 m_aliceReplies << o;
-            else if (topic == topics::state(QStringLiteral("r1")))
+            else if (topic == topics::state(QStringLiteral("r1"))) {
                 m_online = o.value(QLatin1String("online")).toBool()
                            && o.value(QLatin1String("link")) == QLatin1String("streaming");
+                m_controller = o.value(QLatin1String("controller")).toString();
+                m_controllers << m_controller;
+            }
         });
         m_teacher.subscribe(topics::reply(QStringLiteral("r1"), QStringLiteral("alice")));
         m_teacher.subscribe(topics::state(QStringLiteral("r1")));
@@ -177,6 +182,22 @@ private slots:
         QCOMPARE(seen.value(QLatin1String("status")).toString(), words);
         // The teacher's view heard how it ended.
         QVERIFY2(m_hub.waitToSay(words.toUtf8().left(40)), m_hub.said().constData());
+    }
+
+    // The page's Stop button, as Ctrl-C in Python: the robot stops, the
+    // program ends with Ctrl-C's words on its block, control goes back.
+    void theStopButtonEndsTheProgram()
+    {
+        m_controllers.clear();
+        const ProcessRun r = runChecking("stop-button", "drive_until_bump.json");
+        QVERIFY2(r.exitCode == 0, r.err.constData());
+        const QJsonObject seen = lastLine(r.out);
+        const QString words = QStringLiteral("Stopped with the Stop button: the robot was stopped.");
+        QCOMPARE(seen.value(QLatin1String("blockType")).toString(), QStringLiteral("roomba_wait_until"));
+        QCOMPARE(seen.value(QLatin1String("status")).toString(), words);
+        QVERIFY2(seen.value(QLatin1String("bubbles")).toArray().contains(words), r.out.constData());
+        QVERIFY2(m_controllers.contains(QStringLiteral("alice")), qPrintable(m_controllers.join(',')));
+        QTRY_VERIFY_WITH_TIMEOUT(m_controller.isEmpty(), 10000);
     }
 
     // The page at a laptop's and a projector's size, signed in with a program

@@ -4,6 +4,7 @@
 // Stop button, a value out of range) is shown on that block in the library's
 // words, as Python prints it ("Stopped: Stop all: your teacher ...").
 
+import { StopButton } from './errors.js';
 import { BlockError, Interpreter, knows } from './interpreter.js';
 
 // How many steps run before the page is given time to draw and hear the hub.
@@ -53,7 +54,8 @@ export class Runner {
             await new Interpreter(robot, step).runWorkspace(this.workspace);
             return null;
         } catch (e) {
-            const words = `${e.name}: ${e.message}`;
+            // As Python prints them: Ctrl-C's words alone, an exception's after its name.
+            const words = e instanceof StopButton ? e.message : `${e.name}: ${e.message}`;
             this.showWords(this.blockId, words);
             return { words, blockId: this.blockId };
         } finally {

@@ -5,7 +5,8 @@
 // it, print the pose the page read at its end as JSON), "stop-all" (run a
 // long program; the test sends Stop all once this prints "running"; print
 // the words on the block and the status line), "stop-button" (the same,
-// the page's own Stop button pressed), "screenshots" (out=DIR).
+// the page's own Stop button pressed), "toolbox" (the categories shown),
+// "screenshots" (out=DIR).
 'use strict';
 const { chromium } = require('playwright-core');
 const fs = require('fs');
@@ -76,6 +77,11 @@ async function main() {
             if (options.out && scenario === 'stop-all')
                 await page.screenshot({ path: path.join(options.out, 'blocks-stopped.png') });
             say({ ...shown, problems });
+        } else if (scenario === 'toolbox') {
+            await signIn(page);
+            const categories = await page.evaluate(() =>
+                window.blocksPage.workspace.getToolbox().getToolboxItems().map(item => item.getName?.()).filter(Boolean));
+            say({ categories, problems });
         } else if (scenario === 'screenshots') {
             // A page opened at each size, as a laptop and a projector open it.
             for (const [width, height] of [[1280, 720], [1920, 1080]]) {

@@ -200,6 +200,26 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(m_controller.isEmpty(), 10000);
     }
 
+    // The block sets the teacher chose (serve --blocks), and only those, with
+    // numbers and variables always.
+    void onlyTheTeachersBlockSetsAreShown()
+    {
+        QCOMPARE(lastLine(runChecking("toolbox", "square.json").out).value(QLatin1String("categories")).toArray(),
+                 QJsonArray({"Move", "Sensors", "Sound", "Lights", "Control", "Numbers", "Variables"}));
+        ServeProcess chosen;
+        QVERIFY2(chosen.start({m_class, "--page", BLOCKS_PAGE_DIR, "--blocks", "move,sound"}), chosen.said().constData());
+        QStringList arguments = checkArguments("toolbox", "square.json");
+        arguments[2] = QStringLiteral("https://127.0.0.1:%1").arg(chosen.port());
+        QProcess check;
+        check.setWorkingDirectory(m_checkDir);
+        check.start(QStringLiteral("node"), arguments);
+        QTRY_VERIFY_WITH_TIMEOUT(check.state() == QProcess::NotRunning, 60000);
+        const QByteArray out = check.readAllStandardOutput();
+        QVERIFY2(check.exitCode() == 0, check.readAllStandardError().constData());
+        QCOMPARE(lastLine(out).value(QLatin1String("categories")).toArray(),
+                 QJsonArray({"Move", "Sound", "Numbers", "Variables"}));
+    }
+
     // The page at a laptop's and a projector's size, signed in with a program
     // (PNGs in the check's folder, for docs/images): no error on the page.
     void screenshotsAtLaptopAndProjectorSizes()

@@ -79,6 +79,7 @@ void ControlLease::grant(const QString &client, Beat beat)
     m_holder = client;
     if (changed)
         m_lastBeatMs = 0;
+    m_transits.remove(client); // its clock may be another program's
     keep(client, beat); // taking control is the first heartbeat
     if (changed)
         emit holderChanged(m_holder);

@@ -32,8 +32,10 @@ public:
     // or, when the client says when it sent it (`sentMs`, on its own clock),
     // when it was sent. The client's clock is put on this one by the
     // shortest transit seen (arrival minus sending), which may grow 1 ms a
-    // second for the two clocks' drift, and is kept per client from one
-    // control to the next; a heartbeat never counts later than its arrival. So a heartbeat that waited behind a flood or a huge
+    // second for the two clocks' drift. It is measured afresh at each take:
+    // the same account may take control from another program, on another
+    // clock (a page, then a Python program). A heartbeat never counts later
+    // than its arrival. So a heartbeat that waited behind a flood or a huge
     // message in the broker's queue counts from when it was sent, and the
     // lease ends kHeartbeatTimeoutMs after the holder's last heartbeat left it.
     struct Beat {

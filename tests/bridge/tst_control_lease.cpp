@@ -75,6 +75,29 @@ private slots:
         QCOMPARE(expired.count(), 1);
     }
 
+    // The same account takes control again from another program, whose
+    // clock is far behind the first one's: its heartbeats count from their
+    // own program's clock, not from the first program's transit.
+    void aNewTakeMeasuresTheClientsClockAfresh()
+    {
+        ManualClock clock;
+        ControlLease lease(clock);
+        QSignalSpy expired(&lease, &ControlLease::expired);
+        const qint64 start = clock.nowMs();
+        QVERIFY(lease.take(QStringLiteral("alice"), {start + 4, start}));
+        QVERIFY(lease.release(QStringLiteral("alice")));
+        clock.advance(1000);
+        const qint64 laterClock = -1'000'000; // the second program's clock started long after
+        QVERIFY(lease.take(QStringLiteral("alice"), {start + 1004, start + 1000 + laterClock}));
+        clock.advance(100);
+        QVERIFY(lease.keep(QStringLiteral("alice"), {start + 1104, start + 1100 + laterClock}));
+        clock.advance(303); // 1403: 299 ms after the keep arrived
+        QCOMPARE(expired.count(), 0);
+        QCOMPARE(lease.holder(), QStringLiteral("alice"));
+        clock.advance(1);
+        QCOMPARE(expired.count(), 1);
+    }
+
     // A client cannot stretch its lease by saying it sent a heartbeat later
     // than it did: a heartbeat never counts later than its arrival.
     void aHeartbeatNeverCountsLaterThanItsArrival()

@@ -7,6 +7,7 @@
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
+#include <QHostAddress>
 #include <QDir>
 
 #include <cstdio>
@@ -103,6 +104,10 @@ int initCommand()
                 "                   Python programs (docs/python.md): ROOMBA_CONFIG=NAME.json python3 square.py\n",
                 qPrintable(dir), qPrintable(dir), qPrintable(r.robots.first()), qPrintable(r.host), r.port,
                 qPrintable(dir), qPrintable(r.teacher));
+    const bool loopback = QHostAddress(r.host).isLoopback();
+    std::printf("Blocks:            roomba-classroom serve %s%s, then each student opens\n"
+                "                   https://%s:8443/#user=NAME in a browser (docs/blocks.md)\n",
+                qPrintable(dir), loopback ? "" : qPrintable(QStringLiteral(" --listen ") + r.host), qPrintable(r.host));
     return 0;
 }
 

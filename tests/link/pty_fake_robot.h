@@ -66,6 +66,16 @@ public:
     QString path() const { return m_path; }
     bool ok() const { return m_master >= 0 && m_brc.isListening(); }
 
+    // Counts every BRC line written so far: the link's channel waits until
+    // its bytes are in the socket, so a count made after this misses none.
+    void readBrcWritten()
+    {
+        m_brc.waitForNewConnection(0); // a connection not yet taken is taken now
+        for (QLocalSocket *socket : m_brc.findChildren<QLocalSocket *>())
+            while (socket->waitForReadyRead(0)) {
+            }
+    }
+
     // Writes all of `bytes`; while the pty's buffer is full, lets this
     // thread's link read it. False if it never takes them.
     bool say(const QByteArray &bytes)

@@ -233,14 +233,13 @@ private slots:
             t.clock.advance(5);
             QCoreApplication::processEvents();
         }
-        // The pulse goes over a local socket: let it arrive before counting.
-        QTest::qWait(0);
-        QCoreApplication::processEvents();
+        // The pulse goes over a local socket: read what was written before counting.
+        t.robot.readBrcWritten();
         QCOMPARE(t.log.said(kSwitchedOff), buttonHeld);
         if (buttonHeld)
             QCOMPARE(t.robot.brcAsserts, assertsBefore);
         else
-            QTRY_VERIFY(t.robot.brcAsserts > assertsBefore);
+            QVERIFY(t.robot.brcAsserts > assertsBefore);
         t.link.close();
     }
 
